@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QMap>
+#include <QSet>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <string>
+
+namespace xyt::cli {
+
+/**
+ * The arguments of one xytune-cli command: `--name value` pairs, boolean `--flag`s and
+ * positional words. Every accessor that fails throws xyt::InvalidInput whose field is the
+ * argument as typed ("--wn"), so main() can print one line naming it and exit with code 2.
+ */
+class CliArgs {
+public:
+    /// @param booleanFlags names (without --) that take no value.
+    /// @throws InvalidInput for an option without a value or given twice.
+    static CliArgs parse(const QStringList& args, const QSet<QString>& booleanFlags = {});
+
+    bool has(const QString& name) const { return values_.contains(name) || flags_.contains(name); }
+    bool flag(const QString& name) const { return flags_.contains(name); }
+    std::optional<QString> value(const QString& name) const;
+    QString text(const QString& name, const QString& fallback) const;
+    /// A finite number. Without @p fallback the argument is required.
+    double number(const QString& name, std::optional<double> fallback = std::nullopt) const;
+    /// A positive whole number.
+    int count(const QString& name, int fallback, int maxValue) const;
+    const QStringList& positional() const { return positional_; }
+    /// @throws InvalidInput naming the first option not in @p allowed.
+    void allowOnly(const QStringList& allowed) const;
+
+    /// "--name" as printed in messages.
+    static std::string field(const QString& name) { return ("--" + name).toStdString(); }
+
+private:
+    QMap<QString, QString> values_;
+    QSet<QString> flags_;
+    QStringList positional_;
+    QStringList order_;
+};
+
+} // namespace xyt::cli

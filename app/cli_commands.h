@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QStringList>
+
+namespace xyt::cli {
+
+// Each command takes the arguments after its name and returns the process exit code. Invalid
+// input is thrown as xyt::InvalidInput (main prints it and exits with 2).
+int runGt(const QStringList& args);
+int runSimulate(const QStringList& args);
+int runReport(const QStringList& args);
+
+} // namespace xyt::cli

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/metrics.h"
+#include "core/polynomial.h"
+#include "core/transfer_function.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QJsonValue>
+
+#include <complex>
+#include <vector>
+
+namespace xyt::cli {
+
+/// A JSON number, or null for NaN/infinity (JSON has no such numbers; never print NaN).
+QJsonValue number(double v);
+QJsonArray numbers(const std::vector<double>& v);
+/// Coefficients highest power first (the CLI's convention for polynomials of s).
+QJsonArray descending(const Polynomial& p);
+/// Coefficients in ascending order (the CLI's convention for polynomials of z^-1).
+QJsonArray ascending(const Polynomial& p);
+/// [[re, im], ...]
+QJsonArray complexPairs(const std::vector<std::complex<double>>& roots);
+/// {num, den} of a continuous transfer function, descending powers of s.
+QJsonObject continuousTf(const TransferFunction& tf);
+/// {rmse, max_abs_error, ..., settling_time, overshoot_pct, itae}: the metric names of the CLI.
+QJsonObject metricsJson(const TrackingMetrics& m, const StepCharacteristics& step);
+/// Writes the object to stdout, indented, with a newline.
+void print(const QJsonObject& object);
+
+} // namespace xyt::cli

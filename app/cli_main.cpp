@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// xytune-cli: the headless face of XY Tune. JSON on stdout; bad input -> one line on stderr
+// naming the argument, exit code 2.
+#include "app/cli_commands.h"
+
+#include "core/errors.h"
+
+#include <QCoreApplication>
+
+#include <cstdio>
+#include <functional>
+#include <map>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: xytune-cli COMMAND [OPTIONS]\n"
+    "\n"
+    "Commands (JSON on stdout; polynomials of s in descending powers):\n"
+    "  gt        Guillemin-Truxal PI design: [--preset lower-base|upper-base]\n"
+    "            [--k0 K --a1 A --a2 A] --wn W --kp K\n"
+    "  simulate  the design on a trajectory: design options plus\n"
+    "            --trajectory cubic --xf X --tf T [--x0 --t0 --v0 --vf]  or\n"
+    "            --trajectory sine --amplitude A --omega W [--phase-deg P --ramp-in S]\n"
+    "            [--duration S] [--dt 0.01] [--umax 2.5] [--csv FILE]\n"
+    "  report    text report of the default design (both bases of paper 000)\n"
+    "\n"
+    "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    QCoreApplication app(argc, argv);
+    QStringList args = QCoreApplication::arguments().mid(1);
+    if (args.isEmpty() || args.first() == "--help" || args.first() == "-h" ||
+        args.first() == "help") {
+        std::fputs(kUsage, args.isEmpty() ? stderr : stdout);
+        return args.isEmpty() ? 2 : 0;
+    }
+    const std::map<QString, std::function<int(const QStringList&)>> commands = {
+        {"gt", xyt::cli::runGt},
+        {"simulate", xyt::cli::runSimulate},
+        {"report", xyt::cli::runReport},
+    };
+    const QString name = args.takeFirst();
+    const auto it = commands.find(name);
+    if (it == commands.end()) {
+        std::fprintf(stderr, "xytune-cli: unknown command '%s' (see xytune-cli --help)\n",
+                     qPrintable(name));
+        return 2;
+    }
+    if (args.contains("--help")) {
+        std::fputs(kUsage, stdout);
+        return 0;
+    }
+    try {
+        return it->second(args);
+    } catch (const xyt::InvalidInput& e) {
+        std::fprintf(stderr, "xytune-cli %s: %s\n", qPrintable(name), e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "xytune-cli %s: internal error: %s\n", qPrintable(name), e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace xyt {
+
+/**
+ * Invalid input to a core function: a NaN, a zero denominator, a wrong size, a value out of
+ * range. what() reads "<field>: <reason>" so a caller can show it next to the field.
+ */
+class InvalidInput : public std::invalid_argument {
+public:
+    InvalidInput(std::string field, const std::string& reason);
+    /// The name of the offending input, e.g. "kp" or "plant.den".
+    const std::string& field() const noexcept { return field_; }
+    /// The reason alone, without the field prefix.
+    const std::string& reason() const noexcept { return reason_; }
+
+private:
+    std::string field_;
+    std::string reason_;
+};
+
+/// @throws InvalidInput when @p value is NaN or infinite.
+void requireFinite(double value, const std::string& field);
+/// @throws InvalidInput unless @p value is finite and > 0.
+void requirePositive(double value, const std::string& field);
+/// @throws InvalidInput unless @p value is finite and nonzero.
+void requireNonZero(double value, const std::string& field);
+
+} // namespace xyt
