@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// xytune-bench: the one benchmark program (not part of the test run). One line per figure:
+//   name: median_us=... min_us=... max_us=... runs=...
+// Optional argument: a substring; only figures whose name contains it are run.
+#include "core/guillemin_truxal.h"
+#include "core/simulation.h"
+#include "core/trajectory.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// Runs @p body until both minRuns and minSeconds are reached (after one warm-up run).
+void benchmark(const char* filter, const std::string& name, const std::function<void()>& body,
+               int minRuns = 20, double minSeconds = 0.5) {
+    if (filter && name.find(filter) == std::string::npos)
+        return;
+    using Clock = std::chrono::steady_clock;
+    body();
+    std::vector<double> us;
+    const auto start = Clock::now();
+    while (static_cast<int>(us.size()) < minRuns ||
+           std::chrono::duration<double>(Clock::now() - start).count() < minSeconds) {
+        const auto t0 = Clock::now();
+        body();
+        us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t0).count());
+        if (us.size() >= 100000)
+            break;
+    }
+    std::sort(us.begin(), us.end());
+    const std::size_t n = us.size();
+    const double median = n % 2 ? us[n / 2] : 0.5 * (us[n / 2 - 1] + us[n / 2]);
+    std::printf("%s: median_us=%.1f min_us=%.1f max_us=%.1f runs=%zu\n", name.c_str(), median,
+                us.front(), us.back(), n);
+    std::fflush(stdout);
+}
+
+volatile double sink = 0.0; // keeps results alive so the optimizer cannot drop the work
+
+} // namespace
+
+int main(int argc, char* argv[]) {
+    const char* filter = argc > 1 ? argv[1] : nullptr;
+    const xyt::GtPreset lower = *xyt::findGtPreset("lower-base");
+
+    benchmark(filter, "gt_design", [&] {
+        const auto d = xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp);
+        sink = sink + d.ki;
+    });
+
+    {
+        const xyt::CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
+        const auto times = xyt::sampleTimes(130.0, 0.01);
+        const auto reference = xyt::sampled([&](double t) { return cubic.position(t); }, times);
+        const auto design = xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp);
+        xyt::LoopSimulationOptions options;
+        options.umaxVolts = 2.5;
+        options.modelUnitsPerPositionUnit = lower.modelUnitsPerPositionUnit;
+        const auto plant = lower.plant.transferFunction();
+        benchmark(filter, "simulate_cubic_130s_dt0.01", [&] {
+            const auto run = xyt::simulateLoop(plant, design.controller, reference, options);
+            sink = sink + run.y.back();
+        });
+    }
+    return 0;
+}
