@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// Runs the built xytune-cli (path from the XYT_CLI_PATH compile definition) and captures what
+// it printed, for the CLI contract tests.
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+namespace xyt::test {
+
+struct CliRun {
+    int exitCode = -1;
+    bool finished = false; ///< false when it crashed or did not finish within the time bound
+    QByteArray out;
+    QByteArray err;
+    /// stdout parsed as a JSON object (empty when it is not one).
+    QJsonObject json() const { return QJsonDocument::fromJson(out).object(); }
+};
+
+inline CliRun runCli(const QStringList& args, int timeoutMs = 60000) {
+    QProcess p;
+    p.start(QStringLiteral(XYT_CLI_PATH), args);
+    CliRun r;
+    if (!p.waitForStarted(10000))
+        return r;
+    r.finished = p.waitForFinished(timeoutMs) && p.exitStatus() == QProcess::NormalExit;
+    if (!r.finished)
+        p.kill();
+    r.exitCode = p.exitCode();
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+} // namespace xyt::test
