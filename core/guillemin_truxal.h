@@ -19,6 +19,7 @@ struct ThirdOrderPlant {
     /// @throws InvalidInput "k0" (finite, nonzero), "a1", "a2" (finite).
     void validate() const;
     TransferFunction transferFunction() const;
+    friend bool operator==(const ThirdOrderPlant&, const ThirdOrderPlant&) = default;
 };
 
 /**

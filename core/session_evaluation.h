@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/contour_error.h"
+#include "core/guillemin_truxal.h"
+#include "core/metrics.h"
+#include "core/session.h"
+#include "core/simulation.h"
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/// Everything computed for one axis of a session: the design, the run and its figures.
+struct AxisEvaluation {
+    bool ok = false;
+    std::string errorField; ///< when !ok: the invalid setting, e.g. "axes[0].gt.kp"
+    std::string error;      ///< when !ok: the reason
+    DesignMethod method = DesignMethod::GuilleminTruxal;
+    std::optional<GtDesign> gt;
+    SimulationResult run;
+    TrackingMetrics metrics;
+    StepCharacteristics step;
+    std::vector<std::string> warnings;
+};
+
+struct SessionEvaluation {
+    std::array<AxisEvaluation, 2> axes;
+    /// Radial error of the traced circle (circle trajectories with both axes valid).
+    std::optional<ContourError> contour;
+};
+
+/// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows.
+std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex);
+
+/// Designs and simulates one axis. Invalid settings give ok = false with the field named (the
+/// GUI shows it at the field); an unstable design is ok, with step.stable false.
+AxisEvaluation evaluateAxis(const Session& session, int axisIndex);
+SessionEvaluation evaluateSession(const Session& session);
+
+/// y sampled at the times @p t by linear interpolation in (ts, ys) (held at the ends), so that
+/// axes with different sample times can be paired for the XY contour.
+std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vector<double>& ys,
+                                   const std::vector<double>& t);
+
+} // namespace xyt

@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/main_window.h"
+
+#include "core/errors.h"
+#include "ui/contour_plot.h"
+#include "ui/equations_panel.h"
+#include "ui/metrics_panel.h"
+#include "ui/number_field.h"
+#include "ui/parameter_slider.h"
+#include "ui/plant_editor.h"
+#include "ui/plot_tools.h"
+#include "ui/time_response_plot.h"
+#include "ui/trajectory_editor.h"
+#include "ui/tuning_session.h"
+
+#include <QApplication>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+namespace xyt::ui {
+
+MainWindow::MainWindow(TuningSession* session, QWidget* parent)
+    : QMainWindow(parent), session_(session) {
+    setWindowTitle(tr("XY Tune"));
+    auto* controls = buildControls();
+    auto* controlScroll = new QScrollArea(this);
+    controlScroll->setWidget(controls);
+    controlScroll->setWidgetResizable(true);
+    controlScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    controlScroll->setMinimumWidth(controls->sizeHint().width() + 20);
+
+    timePlot_ = new TimeResponsePlot(this);
+    contourPlot_ = new ContourPlot(this);
+    upperTabs_ = new QTabWidget(this);
+    lowerTabs_ = new QTabWidget(this);
+    upperTabs_->addTab(timePlot_, tr("&Time response"));
+    lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
+    plotSplitter_ = new QSplitter(Qt::Vertical, this);
+    plotSplitter_->addWidget(upperTabs_);
+    plotSplitter_->addWidget(lowerTabs_);
+    plotSplitter_->setChildrenCollapsible(false);
+
+    auto* right = new QWidget(this);
+    auto* rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(4, 4, 4, 4);
+    auto* metricsBox = new QGroupBox(tr("Metrics"), right);
+    auto* metricsLayout = new QVBoxLayout(metricsBox);
+    metrics_ = new MetricsPanel(metricsBox);
+    metricsLayout->addWidget(metrics_);
+    auto* equationsBox = new QGroupBox(tr("Equations"), right);
+    auto* equationsLayout = new QVBoxLayout(equationsBox);
+    equations_ = new EquationsPanel(equationsBox);
+    auto* equationsScroll = new QScrollArea(equationsBox);
+    equationsScroll->setWidget(equations_);
+    equationsScroll->setWidgetResizable(true);
+    equationsScroll->setFrameShape(QFrame::NoFrame);
+    equationsLayout->addWidget(equationsScroll);
+    rightLayout->addWidget(metricsBox);
+    rightLayout->addWidget(equationsBox, 1);
+    right->setMinimumWidth(300);
+
+    mainSplitter_ = new QSplitter(Qt::Horizontal, this);
+    mainSplitter_->addWidget(controlScroll);
+    mainSplitter_->addWidget(plotSplitter_);
+    mainSplitter_->addWidget(right);
+    mainSplitter_->setStretchFactor(0, 0);
+    mainSplitter_->setStretchFactor(1, 1);
+    mainSplitter_->setStretchFactor(2, 0);
+    mainSplitter_->setChildrenCollapsible(false);
+    setCentralWidget(mainSplitter_);
+
+    status_ = new QLabel(this);
+    statusBar()->addPermanentWidget(status_);
+    buildMenus();
+
+    connect(session_, &TuningSession::designChanged, this, &MainWindow::refresh);
+    connect(session_, &TuningSession::currentAxisChanged, this, &MainWindow::refresh);
+    resize(1366, 768);
+    restoreLayout();
+    refresh();
+}
+
+QWidget* MainWindow::buildControls() {
+    auto* panel = new QWidget(this);
+    auto* layout = new QVBoxLayout(panel);
+
+    axisTabs_ = new QTabBar(panel);
+    for (const AxisSettings& a : session_->session().axes)
+        axisTabs_->addTab(tr("Axis %1").arg(QString::fromStdString(a.id).toUpper()));
+    axisTabs_->setExpanding(true);
+    axisTabs_->setAccessibleName(tr("Axis"));
+    layout->addWidget(axisTabs_);
+    connect(axisTabs_, &QTabBar::currentChanged, session_, &TuningSession::setCurrentAxis);
+
+    auto* designBox = new QGroupBox(tr("Design"), panel);
+    auto* designLayout = new QVBoxLayout(designBox);
+    method_ = new QComboBox(designBox);
+    method_->addItem(tr("Guillemin–Truxal PI (continuous)"));
+    method_->setAccessibleName(tr("Design method"));
+    designLayout->addWidget(method_);
+    plantEditor_ = new PlantEditor(designBox);
+    designLayout->addWidget(plantEditor_);
+    omegaN_ = new ParameterSlider(tr("ω&n"), tr("rad/s"), 0.05, 20.0, true, designBox);
+    kp_ = new ParameterSlider(tr("k&p"), tr("V/m"), 0.1, 1000.0, true, designBox);
+    designLayout->addWidget(omegaN_);
+    designLayout->addWidget(kp_);
+    layout->addWidget(designBox);
+
+    auto* trajectoryBox = new QGroupBox(tr("Trajectory"), panel);
+    auto* trajectoryLayout = new QVBoxLayout(trajectoryBox);
+    trajectoryEditor_ = new TrajectoryEditor(trajectoryBox);
+    trajectoryLayout->addWidget(trajectoryEditor_);
+    layout->addWidget(trajectoryBox);
+
+    auto* actuatorBox = new QGroupBox(tr("Actuator"), panel);
+    auto* actuatorForm = new QFormLayout(actuatorBox);
+    umax_ = new NumberField("umax", [](double v) { requirePositive(v, "umax"); }, actuatorBox);
+    actuatorForm->addRow(tr("|u| limit (V)"), umax_);
+    layout->addWidget(actuatorBox);
+    layout->addStretch(1);
+
+    connect(omegaN_, &ParameterSlider::valueChanged, this,
+            [this](double v) { session_->setOmegaN(session_->currentAxis(), v); });
+    connect(kp_, &ParameterSlider::valueChanged, this,
+            [this](double v) { session_->setKp(session_->currentAxis(), v); });
+    connect(plantEditor_, &PlantEditor::plantEdited, this,
+            [this](const ThirdOrderPlant& p) { session_->setPlant(session_->currentAxis(), p); });
+    connect(plantEditor_, &PlantEditor::modelUnitEdited, this,
+            [this](double v) { session_->setModelUnitScale(session_->currentAxis(), v); });
+    connect(plantEditor_, &PlantEditor::presetChosen, this, [this](const GtPreset& preset) {
+        Session next = session_->session();
+        auto& gt = next.axes.at(static_cast<std::size_t>(session_->currentAxis())).gt;
+        gt = {preset.plant, preset.omegaNRadPerSec, preset.kp, preset.modelUnitsPerPositionUnit};
+        session_->apply(next, tr("Load preset %1").arg(QString::fromStdString(preset.name)));
+    });
+    connect(trajectoryEditor_, &TrajectoryEditor::trajectoryEdited, session_,
+            &TuningSession::setTrajectory);
+    connect(umax_, &NumberField::valueAccepted, this, [this](double v) {
+        if (v != session_->session().umaxVolts)
+            session_->setUmax(v);
+    });
+    return panel;
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = session_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = session_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(tr("&Reset plot views"), QKeySequence(tr("Ctrl+0")), this, [this] {
+        resetView(timePlot_);
+        resetView(contourPlot_);
+    });
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About XY Tune"), this, [this] {
+        QMessageBox::about(this, tr("About XY Tune"),
+                           tr("<b>XY Tune</b> %1<br>Tuning workbench for XY coordinate-table "
+                              "position controllers.<br>GPL-3.0-or-later.")
+                               .arg(QApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::syncControls() {
+    const int axis = session_->currentAxis();
+    const Session& s = session_->session();
+    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    const QSignalBlocker blockTabs(axisTabs_);
+    axisTabs_->setCurrentIndex(axis);
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& ai = s.axes.at(static_cast<std::size_t>(i));
+        axisTabs_->setTabText(i, tr("%1: %2").arg(QString::fromStdString(ai.id).toUpper(),
+                                                  QString::fromStdString(ai.label)));
+    }
+    {
+        const QSignalBlocker b1(omegaN_), b2(kp_);
+        omegaN_->setValue(a.gt.omegaNRadPerSec);
+        kp_->setValue(a.gt.kp);
+    }
+    plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
+    trajectoryEditor_->setTrajectory(s.trajectory);
+    umax_->setValue(s.umaxVolts);
+}
+
+void MainWindow::refresh() {
+    QElapsedTimer timer;
+    timer.start();
+    syncControls();
+    const int axis = session_->currentAxis();
+    const Session& s = session_->session();
+    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    const AxisEvaluation& e = session_->axisEvaluation(axis);
+    const QString title = tr("Axis %1 (%2)").arg(QString::fromStdString(a.id).toUpper(),
+                                                  QString::fromStdString(a.label));
+    timePlot_->showAxis(e, title, s.umaxVolts);
+    contourPlot_->showSession(s, session_->evaluation());
+    metrics_->showEvaluation(s, session_->evaluation());
+    equations_->showAxis(a, e);
+    QString state;
+    for (int i = 0; i < 2; ++i) {
+        const AxisEvaluation& ai = session_->axisEvaluation(i);
+        const QString id = QString::fromStdString(s.axes.at(static_cast<std::size_t>(i)).id).toUpper();
+        if (!ai.ok)
+            state += tr("%1: invalid (%2)  ").arg(id, QString::fromStdString(ai.errorField));
+        else if (!ai.step.stable)
+            state += tr("%1: UNSTABLE  ").arg(id);
+        else
+            state += tr("%1: stable  ").arg(id);
+    }
+    lastRefreshMs_ = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+    status_->setText(state + tr("| updated in %1 ms").arg(lastRefreshMs_, 0, 'f', 1));
+    setWindowModified(session_->isModified());
+}
+
+void MainWindow::restoreLayout() {
+    QSettings settings;
+    if (settings.contains("window/geometry"))
+        restoreGeometry(settings.value("window/geometry").toByteArray());
+    if (settings.contains("window/mainSplitter"))
+        mainSplitter_->restoreState(settings.value("window/mainSplitter").toByteArray());
+    if (settings.contains("window/plotSplitter"))
+        plotSplitter_->restoreState(settings.value("window/plotSplitter").toByteArray());
+}
+
+void MainWindow::saveLayout() const {
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/mainSplitter", mainSplitter_->saveState());
+    settings.setValue("window/plotSplitter", plotSplitter_->saveState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    saveLayout();
+    event->accept();
+}
+
+} // namespace xyt::ui

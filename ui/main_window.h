@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QMainWindow>
+
+class QComboBox;
+class QLabel;
+class QSplitter;
+class QTabBar;
+class QTabWidget;
+
+namespace xyt::ui {
+
+class ContourPlot;
+class EquationsPanel;
+class MetricsPanel;
+class NumberField;
+class ParameterSlider;
+class PlantEditor;
+class TimeResponsePlot;
+class TrajectoryEditor;
+class TuningSession;
+
+/**
+ * The workbench window: axis and design controls on the left, plots in the middle, figures and
+ * equations on the right. It only wires widgets to the TuningSession presenter and redraws from
+ * it on designChanged().
+ */
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(TuningSession* session, QWidget* parent = nullptr);
+
+    ParameterSlider* omegaNSlider() const { return omegaN_; }
+    ParameterSlider* kpSlider() const { return kp_; }
+    PlantEditor* plantEditor() const { return plantEditor_; }
+    TrajectoryEditor* trajectoryEditor() const { return trajectoryEditor_; }
+    TimeResponsePlot* timePlot() const { return timePlot_; }
+    ContourPlot* contourPlot() const { return contourPlot_; }
+    MetricsPanel* metricsPanel() const { return metrics_; }
+    EquationsPanel* equationsPanel() const { return equations_; }
+    QTabBar* axisTabs() const { return axisTabs_; }
+    /// Time of the last full refresh of every view, in milliseconds.
+    double lastRefreshMs() const { return lastRefreshMs_; }
+
+public slots:
+    /// Redraws every view from the presenter.
+    void refresh();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    QWidget* buildControls();
+    void buildMenus();
+    void syncControls();
+    void restoreLayout();
+    void saveLayout() const;
+
+    TuningSession* session_;
+    QTabBar* axisTabs_ = nullptr;
+    QComboBox* method_ = nullptr;
+    PlantEditor* plantEditor_ = nullptr;
+    ParameterSlider* omegaN_ = nullptr;
+    ParameterSlider* kp_ = nullptr;
+    TrajectoryEditor* trajectoryEditor_ = nullptr;
+    NumberField* umax_ = nullptr;
+    QTabWidget* upperTabs_ = nullptr;
+    QTabWidget* lowerTabs_ = nullptr;
+    QSplitter* mainSplitter_ = nullptr;
+    QSplitter* plotSplitter_ = nullptr;
+    TimeResponsePlot* timePlot_ = nullptr;
+    ContourPlot* contourPlot_ = nullptr;
+    MetricsPanel* metrics_ = nullptr;
+    EquationsPanel* equations_ = nullptr;
+    QLabel* status_ = nullptr;
+    double lastRefreshMs_ = 0.0;
+};
+
+} // namespace xyt::ui

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QLineEdit>
+
+#include <functional>
+
+namespace xyt::ui {
+
+/**
+ * A line edit for one number. The text is parsed by the core's parser and checked by an optional
+ * validator (which throws xyt::InvalidInput); an invalid entry is shown at the field (red frame,
+ * tooltip with the reason), never applied, and `valueAccepted` is emitted only for valid ones.
+ */
+class NumberField : public QLineEdit {
+    Q_OBJECT
+public:
+    using Validator = std::function<void(double)>;
+    NumberField(const QString& fieldName, Validator validator = {}, QWidget* parent = nullptr);
+
+    double value() const { return value_; }
+    /// Shows @p v without emitting valueAccepted.
+    void setValue(double v);
+    bool hasError() const { return hasError_; }
+    QString errorText() const { return errorText_; }
+    /// Parses and validates the current text: emits valueAccepted or shows the error.
+    bool commit();
+
+signals:
+    void valueAccepted(double value);
+
+private:
+    void showError(const QString& message);
+    void clearError();
+
+    QString fieldName_;
+    Validator validator_;
+    double value_ = 0.0;
+    bool hasError_ = false;
+    QString errorText_;
+    QString normalToolTip_;
+};
+
+/// Formats a number for display with up to 10 significant digits.
+QString formatNumber(double v);
+
+} // namespace xyt::ui

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QColor>
+#include <QString>
+
+class QCustomPlot;
+class QCPAxisRect;
+
+namespace xyt::ui {
+
+/// The workbench's palette, so every plot uses the same colours for the same things.
+namespace colors {
+inline const QColor reference{0x55, 0x55, 0x55};
+inline const QColor output{0x1f, 0x77, 0xb4};
+inline const QColor error{0xd6, 0x27, 0x28};
+inline const QColor control{0x2c, 0xa0, 0x2c};
+inline const QColor limit{0xd6, 0x27, 0x28};
+inline const QColor snapshot{0xa0, 0xa0, 0xa0};
+inline const QColor axisX{0x1f, 0x77, 0xb4};
+inline const QColor axisY{0xff, 0x7f, 0x0e};
+} // namespace colors
+
+/**
+ * Common behaviour of every plot: drag to pan, wheel to zoom, double-click to reset the view,
+ * and a context menu with "Reset view", "Save as PNG..." and "Save as PDF...".
+ */
+void setupInteractivePlot(QCustomPlot* plot);
+/// Rescales every axis rect to its visible data (with a small margin).
+void resetView(QCustomPlot* plot);
+/// Asks for a file name and saves the plot; the format follows the extension (.png or .pdf).
+void savePlotDialog(QCustomPlot* plot, const QString& suggestedName);
+/// Saves to @p path (png or pdf by extension). Returns false and sets @p error on failure.
+bool savePlot(QCustomPlot* plot, const QString& path, QString* error = nullptr);
+/// Readable fonts and light grid for an axis rect.
+void styleAxisRect(QCPAxisRect* rect);
+
+} // namespace xyt::ui

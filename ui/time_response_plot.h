@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/session_evaluation.h"
+
+#include <qcustomplot.h>
+
+namespace xyt::ui {
+
+/**
+ * Time plots of one axis, three stacked panels sharing the time axis: reference and output,
+ * tracking error, and control effort with the +-umax band and the clipped intervals shaded.
+ * Only converts an AxisEvaluation into QCustomPlot data; computes nothing.
+ */
+class TimeResponsePlot : public QCustomPlot {
+    Q_OBJECT
+public:
+    explicit TimeResponsePlot(QWidget* parent = nullptr);
+
+    /// Shows @p run (which may be invalid: the plots are cleared and the reason shown).
+    void showAxis(const AxisEvaluation& axis, const QString& axisTitle, double umaxVolts);
+    /// A muted overlay of a stored design's output and control (empty run hides it).
+    void showSnapshot(const SimulationResult& run, const QString& name);
+
+    QCPGraph* referenceGraph() const { return reference_; }
+    QCPGraph* outputGraph() const { return output_; }
+    QCPGraph* errorGraph() const { return error_; }
+    QCPGraph* controlGraph() const { return control_; }
+
+private:
+    QCPAxisRect* positionRect_;
+    QCPAxisRect* errorRect_;
+    QCPAxisRect* controlRect_;
+    QCPGraph* reference_;
+    QCPGraph* output_;
+    QCPGraph* snapshotOutput_;
+    QCPGraph* error_;
+    QCPGraph* control_;
+    QCPGraph* snapshotControl_;
+    QCPGraph* clipUpper_;
+    QCPGraph* clipLower_;
+    QCPItemStraightLine* upperLimit_;
+    QCPItemStraightLine* lowerLimit_;
+    QCPTextElement* title_;
+    bool autoRange_ = true;
+};
+
+} // namespace xyt::ui
