@@ -15,6 +15,18 @@ double TrajectorySettings::effectiveDurationSeconds() const {
     return (w > 0.0 ? 2.0 * std::numbers::pi / w : 0.0) + rampInSeconds;
 }
 
+DesignSnapshot Session::snapshot(const std::string& name) const {
+    return {name, axes, trajectory, umaxVolts};
+}
+
+Session Session::withDesign(const DesignSnapshot& snapshot) const {
+    Session s = *this;
+    s.axes = snapshot.axes;
+    s.trajectory = snapshot.trajectory;
+    s.umaxVolts = snapshot.umaxVolts;
+    return s;
+}
+
 Session Session::paperDefault() {
     Session s;
     const GtPreset lower = *findGtPreset("lower-base");

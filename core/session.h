@@ -61,6 +61,15 @@ struct TrajectorySettings {
     friend bool operator==(const TrajectorySettings&, const TrajectorySettings&) = default;
 };
 
+/// A named copy of a design, stored in the session to compare against and to go back to.
+struct DesignSnapshot {
+    std::string name;
+    std::array<AxisSettings, 2> axes;
+    TrajectorySettings trajectory;
+    double umaxVolts = 2.5;
+    friend bool operator==(const DesignSnapshot&, const DesignSnapshot&) = default;
+};
+
 /// The whole design: two axes, the motion, the actuator limit.
 struct Session {
     std::array<AxisSettings, 2> axes;
@@ -68,6 +77,12 @@ struct Session {
     double umaxVolts = 2.5;
     /// Sample time of the digital PI when a continuous design is exported (Tustin by default).
     double controllerTsSeconds = 0.01;
+    std::vector<DesignSnapshot> snapshots;
+
+    /// The current design as a snapshot named @p name.
+    DesignSnapshot snapshot(const std::string& name) const;
+    /// This session with the design of @p snapshot (snapshots and export settings kept).
+    Session withDesign(const DesignSnapshot& snapshot) const;
 
     /// The paper 000 design: x is the lower base, y the upper base, cubic 0 -> 600 mm in 130 s.
     static Session paperDefault();
