@@ -10,11 +10,13 @@ CliArgs CliArgs::parse(const QStringList& args, const QSet<QString>& booleanFlag
     CliArgs out;
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString& a = args[i];
-        if (!a.startsWith("--") || a.size() == 2) {
+        // "-o FILE" is the one short option: a dash and a single letter.
+        const bool shortOption = a.size() == 2 && a[0] == '-' && a[1].isLetter();
+        if (!shortOption && (!a.startsWith("--") || a.size() == 2)) {
             out.positional_ << a;
             continue;
         }
-        QString name = a.mid(2);
+        QString name = a.mid(shortOption ? 1 : 2);
         QString value;
         bool hasInlineValue = false;
         if (const qsizetype eq = name.indexOf('='); eq >= 0) {

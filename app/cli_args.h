@@ -35,7 +35,9 @@ public:
     void allowOnly(const QStringList& allowed) const;
 
     /// "--name" as printed in messages.
-    static std::string field(const QString& name) { return ("--" + name).toStdString(); }
+    static std::string field(const QString& name) {
+        return ((name.size() == 1 ? "-" : "--") + name).toStdString();
+    }
 
 private:
     QMap<QString, QString> values_;

@@ -10,5 +10,9 @@ namespace xyt::cli {
 int runGt(const QStringList& args);
 int runSimulate(const QStringList& args);
 int runReport(const QStringList& args);
+int runNew(const QStringList& args);
+int runExport(const QStringList& args);
+/// The report of a saved session (xytune-cli report SESSION.json).
+int runSessionReport(const QString& path);
 
 } // namespace xyt::cli

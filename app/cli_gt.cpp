@@ -246,8 +246,10 @@ void reportAxis(QTextStream& out, const GtPreset& preset, const Sinusoid& circle
 int runReport(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
     args.allowOnly({});
-    if (!args.positional().isEmpty())
-        throw InvalidInput("session", "reading a session file needs the sessions feature");
+    if (args.positional().size() > 1)
+        throw InvalidInput("SESSION", "report takes at most one session file");
+    if (args.positional().size() == 1)
+        return runSessionReport(args.positional().first());
     QString text;
     QTextStream out(&text);
     out << "XY Tune report: the Guillemin-Truxal PI design of paper 000 (default design)\n";

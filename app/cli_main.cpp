@@ -23,7 +23,13 @@ constexpr const char* kUsage =
     "            --trajectory cubic --xf X --tf T [--x0 --t0 --v0 --vf]  or\n"
     "            --trajectory sine --amplitude A --omega W [--phase-deg P --ramp-in S]\n"
     "            [--duration S] [--dt 0.01] [--umax 2.5] [--csv FILE]\n"
-    "  report    text report of the default design (both bases of paper 000)\n"
+    "  report [SESSION.json]  text report of a session, or of the default design\n"
+    "            (both bases of paper 000) when no file is given\n"
+    "  new -o FILE             write the default session (paper 000: x = lower base,\n"
+    "            y = upper base, controller sample time 0.01 s)\n"
+    "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
+    "            tustin|backward-euler]  controller coefficients (JSON, C header,\n"
+    "            Octave/MATLAB script) or simulated signals (CSV)\n"
     "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
 
@@ -41,6 +47,8 @@ int main(int argc, char* argv[]) {
         {"gt", xyt::cli::runGt},
         {"simulate", xyt::cli::runSimulate},
         {"report", xyt::cli::runReport},
+        {"new", xyt::cli::runNew},
+        {"export", xyt::cli::runExport},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// xytune-cli new | export, and report SESSION.json: session files and coefficient exports.
+#include "app/cli_args.h"
+#include "app/cli_commands.h"
+
+#include "core/errors.h"
+#include "core/export_text.h"
+#include "core/session_evaluation.h"
+#include "ui/coefficient_json.h"
+#include "ui/session_file.h"
+
+#include <QJsonDocument>
+#include <QTextStream>
+
+#include <cmath>
+#include <cstdio>
+
+namespace xyt::cli {
+
+namespace {
+
+Session loadOrThrow(const QString& path) {
+    const ui::SessionLoadResult r = ui::loadSessionFile(path);
+    for (const QString& w : r.warnings)
+        std::fprintf(stderr, "xytune-cli: warning: %s\n", qPrintable(w));
+    if (!r.ok)
+        throw InvalidInput(path.toStdString(), r.message().toStdString());
+    return r.session;
+}
+
+void writeOrThrow(const QString& path, const QByteArray& bytes) {
+    QString error;
+    if (!ui::writeFileAtomically(path, bytes, &error))
+        throw InvalidInput("-o", error.toStdString());
+}
+
+QString outputPath(const CliArgs& args) {
+    const auto o = args.value("o");
+    if (!o || o->isEmpty())
+        throw InvalidInput("-o", "an output file is required (-o FILE)");
+    return *o;
+}
+
+QString number(double v, int decimals = 4) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("n/a");
+}
+
+} // namespace
+
+int runNew(const QStringList& argv) {
+    const CliArgs args = CliArgs::parse(argv);
+    args.allowOnly({"o"});
+    const QString path = outputPath(args);
+    writeOrThrow(path, QJsonDocument(ui::sessionToJson(Session::paperDefault())).toJson());
+    std::printf("%s\n", qPrintable(path));
+    return 0;
+}
+
+int runSessionReport(const QString& path) {
+    const Session session = loadOrThrow(path);
+    const SessionEvaluation evaluation = evaluateSession(session);
+    QString text;
+    QTextStream out(&text);
+    const TrajectorySettings& t = session.trajectory;
+    out << "XY Tune report: " << path << "\n";
+    if (t.kind == TrajectoryKind::Cubic)
+        out << "Trajectory: cubic " << t.x0 << " -> " << t.xf << " mm from " << t.t0Seconds
+            << " s to " << t.tfSeconds << " s";
+    else
+        out << "Trajectory: circle R = " << t.radius << " mm at " << t.omegaRadPerSec
+            << " rad/s, ramp-in " << t.rampInSeconds << " s";
+    out << "; duration " << t.effectiveDurationSeconds() << " s, |u| <= " << session.umaxVolts
+        << " V\n";
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& s = session.axes[static_cast<std::size_t>(i)];
+        const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
+        out << "\n== Axis " << QString::fromStdString(s.id) << " ("
+            << QString::fromStdString(s.label) << "): " << ui::methodName(s.method) << "\n";
+        if (!a.ok) {
+            out << "  not designed: " << QString::fromStdString(a.errorField) << ": "
+                << QString::fromStdString(a.error) << "\n";
+            continue;
+        }
+        if (a.gt)
+            out << "  wn = " << a.gt->omegaNRadPerSec << " rad/s, kp = " << a.gt->kp
+                << ", ki = " << QString::number(a.gt->ki, 'g', 8) << (a.gt->stable ? "" : "  UNSTABLE")
+                << "\n";
+        const auto& m = a.metrics;
+        out << "  RMSE " << number(m.rmse) << " mm, max |e| " << number(m.maxAbsError) << " mm ("
+            << number(m.maxAbsErrorPct, 3) << " % of travel), max |u| " << number(m.maxAbsU)
+            << " V, saturated " << (m.saturated ? "yes" : "no") << ", settling "
+            << (a.step.stable ? number(a.step.settlingTimeSeconds, 2) + " s" : QString("unstable"))
+            << ", overshoot "
+            << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable"))
+            << ", ITAE " << number(m.itae, 1) << "\n";
+        for (const auto& w : a.warnings)
+            out << "  warning: " << QString::fromStdString(w) << "\n";
+    }
+    if (evaluation.contour)
+        out << "\n== Circle contour: radial error max " << number(evaluation.contour->maxAbs)
+            << " mm, RMS " << number(evaluation.contour->rms) << " mm\n";
+    out.flush();
+    std::fputs(text.toUtf8().constData(), stdout);
+    return 0;
+}
+
+int runExport(const QStringList& argv) {
+    const CliArgs args = CliArgs::parse(argv);
+    args.allowOnly({"format", "o", "discretization"});
+    if (args.positional().size() != 1)
+        throw InvalidInput("SESSION", "export takes exactly one session file");
+    const QString format = args.text("format", "");
+    if (!QStringList{"json", "c", "m", "csv"}.contains(format))
+        throw InvalidInput("--format", "must be json, c, m or csv");
+    const QString path = outputPath(args);
+    ExportOptions options;
+    const QString method = args.text("discretization", "tustin");
+    if (method == "tustin")
+        options.piMethod = PiDiscretization::Tustin;
+    else if (method == "backward-euler")
+        options.piMethod = PiDiscretization::BackwardEuler;
+    else
+        throw InvalidInput("--discretization", "must be tustin or backward-euler");
+    const Session session = loadOrThrow(args.positional().first());
+    const SessionEvaluation evaluation = evaluateSession(session);
+    QByteArray bytes;
+    if (format == "json")
+        bytes = QJsonDocument(ui::coefficientsJson(session, evaluation, options)).toJson();
+    else if (format == "c")
+        bytes = QByteArray::fromStdString(exportCHeader(session, evaluation, options));
+    else if (format == "m")
+        bytes = QByteArray::fromStdString(exportOctaveScript(session, evaluation, options));
+    else
+        bytes = QByteArray::fromStdString(exportCsv(session, evaluation));
+    writeOrThrow(path, bytes);
+    std::printf("%s\n", qPrintable(path));
+    return 0;
+}
+
+} // namespace xyt::cli

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/export_text.h"
+
+#include "core/errors.h"
+#include "core/trajectory.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <sstream>
+
+namespace xyt {
+
+std::string exactNumber(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+namespace {
+
+std::string upper(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return s;
+}
+
+const AxisEvaluation& validAxis(const SessionEvaluation& evaluation, int axisIndex) {
+    const AxisEvaluation& a = evaluation.axes.at(static_cast<std::size_t>(axisIndex));
+    if (!a.ok)
+        throw InvalidInput("axes[" + std::to_string(axisIndex) + "]",
+                           "cannot be exported: " + a.errorField + ": " + a.error);
+    return a;
+}
+
+std::string joined(const std::vector<double>& v, const std::string& separator) {
+    std::string out;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out += (i ? separator : "") + exactNumber(v[i]);
+    return out;
+}
+
+} // namespace
+
+DigitalController axisDigitalController(const Session& session, const SessionEvaluation& evaluation,
+                                        int axisIndex, const ExportOptions& options) {
+    const AxisEvaluation& a = validAxis(evaluation, axisIndex);
+    if (a.gt)
+        return discretizePi(a.gt->kp, a.gt->ki, session.controllerTsSeconds, options.piMethod);
+    throw InvalidInput("axes[" + std::to_string(axisIndex) + "].method",
+                       "this axis has no digital controller to export");
+}
+
+std::string exportCHeader(const Session& session, const SessionEvaluation& evaluation,
+                          const ExportOptions& options) {
+    std::ostringstream out;
+    out << "/* XY Tune: controller coefficients for firmware (generated file).\n"
+           " * Coefficient order: ascending powers of z^-1. Each axis runs\n"
+           " *   u[k] = sum_i NUM[i] e[k-i] - sum_{i>=1} DEN[i] u[k-i],   e = r - y,\n"
+           " * every TS seconds (DEN[0] is 1). u is the motor command in volts; clamp it to\n"
+           " * +-" << exactNumber(session.umaxVolts) << " V as the design assumed.\n */\n"
+        << "#ifndef XYT_CONTROLLER_COEFFICIENTS_H\n#define XYT_CONTROLLER_COEFFICIENTS_H\n\n"
+        << "#if defined(__GNUC__)\n#define XYT_MAYBE_UNUSED __attribute__((unused))\n#else\n"
+           "#define XYT_MAYBE_UNUSED\n#endif\n\n"
+        << "#define XYT_UMAX_VOLTS " << exactNumber(session.umaxVolts) << "\n\n";
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        const std::string id = upper(axis.id);
+        const DigitalController c = axisDigitalController(session, evaluation, i, options);
+        const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
+        out << "/* Axis " << axis.id << (axis.label.empty() ? "" : " (" + axis.label + ")") << ": ";
+        if (a.gt)
+            out << "Guillemin-Truxal PI, kp = " << exactNumber(a.gt->kp)
+                << " V/model unit, ki = " << exactNumber(a.gt->ki) << " V/(model unit s),\n * "
+                << discretizationName(options.piMethod) << " discretization at Ts = "
+                << exactNumber(c.tsSeconds) << " s. Position in model units ("
+                << exactNumber(axis.gt.modelUnitsPerPositionUnit) << " per mm).\n";
+        out << " *   u[k] = ";
+        for (std::size_t k = 1; k < c.den.size(); ++k)
+            out << "- XYT_" << id << "_DEN[" << k << "] u[k-" << k << "] ";
+        for (std::size_t k = 0; k < c.num.size(); ++k)
+            out << "+ XYT_" << id << "_NUM[" << k << "] e[k" << (k ? "-" + std::to_string(k) : "") << "] ";
+        out << "\n */\n";
+        out << "#define XYT_" << id << "_NUM_LEN " << c.num.size() << "\n";
+        out << "#define XYT_" << id << "_DEN_LEN " << c.den.size() << "\n";
+        out << "static const double XYT_" << id << "_NUM[XYT_" << id << "_NUM_LEN] XYT_MAYBE_UNUSED = {"
+            << joined(c.num, ", ") << "};\n";
+        out << "static const double XYT_" << id << "_DEN[XYT_" << id << "_DEN_LEN] XYT_MAYBE_UNUSED = {"
+            << joined(c.den, ", ") << "};\n";
+        out << "static const double XYT_" << id << "_TS XYT_MAYBE_UNUSED = " << exactNumber(c.tsSeconds)
+            << ";\n\n";
+    }
+    out << "#endif /* XYT_CONTROLLER_COEFFICIENTS_H */\n";
+    return out.str();
+}
+
+namespace {
+
+/// Octave/MATLAB expression lines computing r_<id> on the vector t.
+std::string trajectoryLines(const TrajectorySettings& t, int axisIndex, const std::string& id) {
+    std::ostringstream out;
+    if (t.kind == TrajectoryKind::Cubic) {
+        const CubicTrajectory cubic(t.x0, t.xf, t.t0Seconds, t.tfSeconds, t.v0, t.vf);
+        const auto& l = cubic.localCoefficients();
+        out << "tau = min(max(t - " << exactNumber(t.t0Seconds) << ", 0), "
+            << exactNumber(t.tfSeconds - t.t0Seconds) << ");\n";
+        out << "r_" << id << " = " << exactNumber(l[0]) << " + " << exactNumber(l[1]) << " * tau + "
+            << exactNumber(l[2]) << " * tau.^2 + " << exactNumber(l[3])
+            << " * tau.^3;  % cubic point-to-point (paper 000 Eq. 4)\n";
+    } else {
+        out << "envelope = " << (t.rampInSeconds > 0 ? "min(t / " + exactNumber(t.rampInSeconds) + ", 1)" : "ones(size(t))")
+            << ";\n";
+        out << "r_" << id << " = " << exactNumber(t.radius) << " * envelope .* "
+            << (axisIndex == 0 ? "sin" : "cos") << "(" << exactNumber(t.omegaRadPerSec)
+            << " * t);  % circle (paper 000 Eq. 23-24)\n";
+    }
+    return out.str();
+}
+
+} // namespace
+
+std::string exportOctaveScript(const Session& session, const SessionEvaluation& evaluation,
+                               const ExportOptions& options) {
+    std::ostringstream out;
+    out << "% XY Tune: plant, controller and closed loop of each axis (generated script).\n"
+           "% Runs in GNU Octave (with the control package) and in MATLAB.\n"
+           "if exist('OCTAVE_VERSION', 'builtin')\n  pkg load control\nend\n\n";
+    const double duration = session.trajectory.effectiveDurationSeconds();
+    out << "t = (0:" << exactNumber(session.trajectory.dtSeconds) << ":" << exactNumber(duration)
+        << ")';\n\n";
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        const AxisEvaluation& a = validAxis(evaluation, i);
+        const std::string& id = axis.id;
+        out << "% Axis " << id << (axis.label.empty() ? "" : " (" + axis.label + ")") << "\n";
+        if (a.gt) {
+            const auto& p = axis.gt.plant;
+            out << "plant_" << id << " = tf(" << exactNumber(p.k0) << ", [1 " << exactNumber(p.a1)
+                << " " << exactNumber(p.a2) << " 0]);\n";
+            out << "controller_" << id << " = tf([" << exactNumber(a.gt->kp) << " "
+                << exactNumber(a.gt->ki) << "], [1 0]);  % kp + ki/s\n";
+            out << "closed_loop_" << id << " = feedback(controller_" << id << " * plant_" << id
+                << ", 1);\n";
+            out << "% The same PI as the firmware runs it (" << discretizationName(options.piMethod)
+                << ", Ts = " << exactNumber(session.controllerTsSeconds) << " s):\n";
+            const DigitalController c = axisDigitalController(session, evaluation, i, options);
+            out << "digital_controller_" << id << " = filt([" << joined(c.num, " ") << "], ["
+                << joined(c.den, " ") << "], " << exactNumber(c.tsSeconds) << ");  % in z^-1\n";
+            out << trajectoryLines(session.trajectory, i, id);
+            out << "unit_" << id << " = " << exactNumber(axis.gt.modelUnitsPerPositionUnit)
+                << ";  % model units per mm\n";
+            out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << " * unit_" << id
+                << ", t) / unit_" << id << ";\n\n";
+        }
+    }
+    out << "figure;\n";
+    for (int i = 0; i < 2; ++i) {
+        const std::string& id = session.axes[static_cast<std::size_t>(i)].id;
+        out << "subplot(2, 1, " << (i + 1) << ");\nplot(t, r_" << id << ", '--', t, y_" << id
+            << ");\ngrid on;\nxlabel('time (s)');\nylabel('" << id << " (mm)');\nlegend('reference', 'output');\n";
+    }
+    return out.str();
+}
+
+std::string exportCsv(const Session& session, const SessionEvaluation& evaluation) {
+    const AxisEvaluation& x = validAxis(evaluation, 0);
+    const AxisEvaluation& y = validAxis(evaluation, 1);
+    const std::string& ix = session.axes[0].id;
+    const std::string& iy = session.axes[1].id;
+    const auto ry = resampleLinear(y.run.t, y.run.r, x.run.t);
+    const auto yy = resampleLinear(y.run.t, y.run.y, x.run.t);
+    const auto ey = resampleLinear(y.run.t, y.run.e, x.run.t);
+    const auto uy = resampleLinear(y.run.t, y.run.u, x.run.t);
+    std::ostringstream out;
+    out << "t,r_" << ix << ",y_" << ix << ",e_" << ix << ",u_" << ix << ",r_" << iy << ",y_" << iy
+        << ",e_" << iy << ",u_" << iy << "\n";
+    char line[256];
+    for (std::size_t k = 0; k < x.run.t.size(); ++k) {
+        std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n",
+                      x.run.t[k], x.run.r[k], x.run.y[k], x.run.e[k], x.run.u[k], ry[k], yy[k],
+                      ey[k], uy[k]);
+        out << line;
+    }
+    return out.str();
+}
+
+} // namespace xyt
