@@ -2,11 +2,14 @@
 // xytune: the tuning workbench. `xytune --screenshot FILE.png [--size WxH]` renders the main
 // window with the default design offscreen and exits.
 #include "ui/main_window.h"
+#include "ui/session_file.h"
+#include "ui/session_file_controller.h"
 #include "ui/tuning_session.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QPixmap>
+#include <QSettings>
 #include <QTimer>
 
 #include <cstdio>
@@ -41,6 +44,7 @@ int main(int argc, char* argv[]) {
     QCommandLineOption size("size", "Window size for --screenshot, WxH (default 1366x768).", "WxH", "1366x768");
     parser.addOption(screenshot);
     parser.addOption(size);
+    parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
     parser.process(app);
 
     xyt::ui::TuningSession session;
@@ -70,7 +74,16 @@ int main(int argc, char* argv[]) {
         std::printf("%s\n", qPrintable(path));
         return 0;
     }
+    // Start where the user left off: the last design comes back from the settings.
+    const QByteArray last = QSettings().value("session/last").toByteArray();
+    if (!last.isEmpty()) {
+        const auto restored = xyt::ui::sessionFromBytes(last);
+        if (restored.ok)
+            session.reset(restored.session);
+    }
     xyt::ui::MainWindow window(&session);
+    if (!parser.positionalArguments().isEmpty())
+        window.files()->openFile(parser.positionalArguments().first());
     window.show();
     return QApplication::exec();
 }

@@ -9,6 +9,9 @@
 #include "ui/parameter_slider.h"
 #include "ui/plant_editor.h"
 #include "ui/plot_tools.h"
+#include "ui/session_file.h"
+#include "ui/session_file_controller.h"
+#include "ui/snapshot_compare_dialog.h"
 #include "ui/time_response_plot.h"
 #include "ui/trajectory_editor.h"
 #include "ui/tuning_session.h"
@@ -18,8 +21,11 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QInputDialog>
+#include <QJsonDocument>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -85,7 +91,13 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
 
     status_ = new QLabel(this);
     statusBar()->addPermanentWidget(status_);
+    files_ = new SessionFileController(session_, this);
+    connect(files_, &SessionFileController::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(files_, &SessionFileController::currentFileChanged, this, &MainWindow::updateTitle);
+    connect(session_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     buildMenus();
+    updateTitle();
 
     connect(session_, &TuningSession::designChanged, this, &MainWindow::refresh);
     connect(session_, &TuningSession::currentAxisChanged, this, &MainWindow::refresh);
@@ -158,6 +170,8 @@ QWidget* MainWindow::buildControls() {
 
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    files_->populateMenu(file);
+    file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     QAction* undo = session_->undoStack()->createUndoAction(this, tr("&Undo"));
@@ -166,6 +180,20 @@ void MainWindow::buildMenus() {
     redo->setShortcut(QKeySequence::Redo);
     edit->addAction(undo);
     edit->addAction(redo);
+    QMenu* design = menuBar()->addMenu(tr("&Design"));
+    design->addAction(tr("&Store snapshot..."), QKeySequence(tr("Ctrl+T")), this, [this] {
+        bool ok = false;
+        const QString name = QInputDialog::getText(
+            this, tr("Store snapshot"), tr("Name of the snapshot:"), QLineEdit::Normal,
+            tr("design %1").arg(session_->session().snapshots.size() + 1), &ok);
+        if (ok && !name.trimmed().isEmpty())
+            storeSnapshot(name.trimmed());
+    });
+    design->addAction(tr("&Compare designs..."), this, [this] {
+        SnapshotCompareDialog dialog(session_->session(), this);
+        dialog.exec();
+    });
+    overlayMenu_ = design->addMenu(tr("&Overlay snapshot"));
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Reset plot views"), QKeySequence(tr("Ctrl+0")), this, [this] {
         resetView(timePlot_);
@@ -226,8 +254,52 @@ void MainWindow::refresh() {
         else
             state += tr("%1: stable  ").arg(id);
     }
+    rebuildOverlayMenu();
+    if (overlay_ >= 0) {
+        const auto& snap = s.snapshots.at(static_cast<std::size_t>(overlay_));
+        const AxisEvaluation overlay = evaluateAxis(s.withDesign(snap), axis);
+        timePlot_->showSnapshot(overlay.ok ? overlay.run : SimulationResult{},
+                                QString::fromStdString(snap.name));
+    } else {
+        timePlot_->showSnapshot(SimulationResult{}, QString());
+    }
     lastRefreshMs_ = static_cast<double>(timer.nsecsElapsed()) / 1e6;
     status_->setText(state + tr("| updated in %1 ms").arg(lastRefreshMs_, 0, 'f', 1));
+    setWindowModified(session_->isModified());
+}
+
+void MainWindow::storeSnapshot(const QString& name) {
+    Session next = session_->session();
+    next.snapshots.push_back(next.snapshot(name.toStdString()));
+    session_->apply(next, tr("Store snapshot %1").arg(name));
+}
+
+void MainWindow::setOverlaySnapshot(int index) {
+    overlay_ = index;
+    refresh();
+}
+
+void MainWindow::rebuildOverlayMenu() {
+    if (!overlayMenu_)
+        return;
+    overlayMenu_->clear();
+    const auto& snapshots = session_->session().snapshots;
+    if (overlay_ >= static_cast<int>(snapshots.size()))
+        overlay_ = -1;
+    QAction* none = overlayMenu_->addAction(tr("None"), this, [this] { setOverlaySnapshot(-1); });
+    none->setCheckable(true);
+    none->setChecked(overlay_ < 0);
+    for (int i = 0; i < static_cast<int>(snapshots.size()); ++i) {
+        QAction* a = overlayMenu_->addAction(QString::fromStdString(snapshots[static_cast<std::size_t>(i)].name),
+                                             this, [this, i] { setOverlaySnapshot(i); });
+        a->setCheckable(true);
+        a->setChecked(overlay_ == i);
+    }
+}
+
+void MainWindow::updateTitle() {
+    const QString file = files_->currentFile();
+    setWindowTitle(tr("%1[*] — XY Tune").arg(file.isEmpty() ? tr("untitled") : QFileInfo(file).fileName()));
     setWindowModified(session_->isModified());
 }
 
@@ -249,7 +321,13 @@ void MainWindow::saveLayout() const {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!files_->maybeSave()) {
+        event->ignore();
+        return;
+    }
     saveLayout();
+    // The last values come back on the next start.
+    QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
     event->accept();
 }
 

@@ -17,6 +17,7 @@ class MetricsPanel;
 class NumberField;
 class ParameterSlider;
 class PlantEditor;
+class SessionFileController;
 class TimeResponsePlot;
 class TrajectoryEditor;
 class TuningSession;
@@ -40,6 +41,12 @@ public:
     MetricsPanel* metricsPanel() const { return metrics_; }
     EquationsPanel* equationsPanel() const { return equations_; }
     QTabBar* axisTabs() const { return axisTabs_; }
+    SessionFileController* files() const { return files_; }
+    /// Stores the current design as a snapshot named @p name (undoable).
+    void storeSnapshot(const QString& name);
+    /// Overlays snapshot @p index on the time plot (-1: none).
+    void setOverlaySnapshot(int index);
+    int overlaySnapshot() const { return overlay_; }
     /// Time of the last full refresh of every view, in milliseconds.
     double lastRefreshMs() const { return lastRefreshMs_; }
 
@@ -75,6 +82,11 @@ private:
     EquationsPanel* equations_ = nullptr;
     QLabel* status_ = nullptr;
     double lastRefreshMs_ = 0.0;
+    SessionFileController* files_ = nullptr;
+    QMenu* overlayMenu_ = nullptr;
+    int overlay_ = -1;
+    void updateTitle();
+    void rebuildOverlayMenu();
 };
 
 } // namespace xyt::ui
