@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/session_file.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+class TstSessionFile : public QObject {
+    Q_OBJECT
+private slots:
+    void roundTripDefault();
+    void roundTripEveryField();
+    void malformed_data();
+    void malformed();
+    void unknownFieldsAreReported();
+    void newerVersionIsRefused();
+    void fileErrors();
+    void failedSaveKeepsOldFile();
+};
+
+namespace {
+
+QJsonObject defaultJson() { return sessionToJson(Session::paperDefault()); }
+
+/// Sets the value at a dotted path with [i] indices in a copy of @p root.
+QJsonValue setPath(QJsonValue node, QStringList keys, const QJsonValue& value) {
+    if (keys.isEmpty())
+        return value;
+    const QString key = keys.takeFirst();
+    if (key.startsWith('[')) {
+        QJsonArray a = node.toArray();
+        const int i = key.mid(1, key.size() - 2).toInt();
+        a[i] = setPath(a[i], keys, value);
+        return a;
+    }
+    QJsonObject o = node.toObject();
+    if (value.isUndefined() && keys.isEmpty())
+        o.remove(key);
+    else
+        o[key] = setPath(o.value(key), keys, value);
+    return o;
+}
+
+QStringList splitPath(const QString& path) {
+    QStringList out;
+    for (const QString& part : path.split('.')) {
+        const qsizetype b = part.indexOf('[');
+        if (b < 0) {
+            out << part;
+            continue;
+        }
+        out << part.left(b);
+        for (const QString& idx : part.mid(b).split('[', Qt::SkipEmptyParts))
+            out << "[" + idx;
+    }
+    return out;
+}
+
+} // namespace
+
+void TstSessionFile::roundTripDefault() {
+    // Invariant: load(save(s)) == s, field by field (Session has a defaulted operator==).
+    const Session s = Session::paperDefault();
+    const auto r = sessionFromBytes(QJsonDocument(sessionToJson(s)).toJson());
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s);
+    QVERIFY(r.warnings.isEmpty());
+}
+
+void TstSessionFile::roundTripEveryField() {
+    Session s = Session::paperDefault();
+    s.axes[1].method = DesignMethod::PolePlacementZpetc;
+    s.axes[1].pp.t1 = -0.35;
+    s.axes[1].pp.zpetcEnabled = false;
+    s.axes[0].gt.kp = 12.345678901234567;
+    s.trajectory.kind = TrajectoryKind::Circle;
+    s.trajectory.radius = 30.0;
+    s.trajectory.durationSeconds = 77.5;
+    s.umaxVolts = 10.0;
+    s.controllerTsSeconds = 0.002;
+    s.snapshots.push_back(s.snapshot("first"));
+    s.snapshots.back().axes[0].gt.omegaNRadPerSec = 3.25;
+    QTemporaryDir dir;
+    const QString path = dir.filePath("s.json");
+    QString error;
+    QVERIFY2(saveSessionFile(s, path, &error), qPrintable(error));
+    const auto r = loadSessionFile(path);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s); // doubles survive exactly: Qt writes the shortest round-trip form
+}
+
+void TstSessionFile::malformed_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("expectedPath");
+    QTest::addColumn<QString>("expectedReason");
+    QTest::newRow("NaN as a string") << "axes[1].gt.plant.a2" << QJsonValue("NaN")
+                                     << "axes[1].gt.plant.a2" << "must be a finite number";
+    QTest::newRow("wrong type") << "axes[0].gt.kp" << QJsonValue(true) << "axes[0].gt.kp"
+                                << "must be a finite number";
+    QTest::newRow("negative kp") << "axes[0].gt.kp" << QJsonValue(-3) << "axes[0].gt.kp"
+                                 << "must be greater than zero";
+    QTest::newRow("zero k0") << "axes[0].gt.plant.k0" << QJsonValue(0) << "axes[0].gt.plant.k0"
+                             << "must be nonzero";
+    QTest::newRow("missing field") << "trajectory.dt" << QJsonValue(QJsonValue::Undefined)
+                                   << "trajectory.dt" << "is missing";
+    QTest::newRow("unknown method") << "axes[0].method" << QJsonValue("pid") << "axes[0].method"
+                                    << "must be \"guillemin-truxal\" or \"pole-placement-zpetc\"";
+    QJsonArray huge;
+    for (int i = 0; i < 100000; ++i)
+        huge.append(1.0);
+    QTest::newRow("huge array") << "axes[1].pp.a" << QJsonValue(huge) << "axes[1].pp.a"
+                                << "has 100000 entries; at most 64 are allowed";
+    QTest::newRow("empty array") << "axes[1].pp.b" << QJsonValue(QJsonArray()) << "axes[1].pp.b"
+                                 << "must not be empty";
+    QTest::newRow("one axis") << "axes" << QJsonValue(QJsonArray{defaultJson()["axes"].toArray()[0]})
+                              << "axes" << "must be an array of exactly two axes";
+    QTest::newRow("tf before t0") << "trajectory.cubic.tf" << QJsonValue(-1) << "trajectory.cubic.tf"
+                                  << "must be later than t0";
+    QTest::newRow("object expected") << "trajectory" << QJsonValue(3) << "trajectory"
+                                     << "must be an object";
+    QTest::newRow("duration too long") << "trajectory.duration" << QJsonValue(1e12)
+                                       << "trajectory.duration"
+                                       << "needs more than 20000000 samples at this dt";
+}
+
+void TstSessionFile::malformed() {
+    QFETCH(QString, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, expectedPath);
+    QFETCH(QString, expectedReason);
+    const QJsonObject root = setPath(defaultJson(), splitPath(path), value).toObject();
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, expectedPath);
+    QCOMPARE(r.error, expectedReason);
+}
+
+void TstSessionFile::unknownFieldsAreReported() {
+    QJsonObject root = defaultJson();
+    root["comment"] = "hand-written";
+    QJsonArray axes = root["axes"].toArray();
+    QJsonObject x = axes[0].toObject();
+    x["colour"] = "red";
+    axes[0] = x;
+    root["axes"] = axes;
+    const auto r = sessionFromJson(root);
+    QVERIFY(r.ok);
+    QCOMPARE(r.warnings.size(), 2);
+    QVERIFY(r.warnings.contains("comment: unknown field ignored"));
+    QVERIFY(r.warnings.contains("axes[0].colour: unknown field ignored"));
+}
+
+void TstSessionFile::newerVersionIsRefused() {
+    QJsonObject root = defaultJson();
+    root["version"] = kSessionFormatVersion + 1;
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, QString("version"));
+    QVERIFY(r.error.contains("please update XY Tune"));
+}
+
+void TstSessionFile::fileErrors() {
+    QTemporaryDir dir;
+    auto r = loadSessionFile(dir.path());
+    QVERIFY(!r.ok);
+    QVERIFY2(r.error.contains("is a directory"), qPrintable(r.error));
+    r = loadSessionFile(dir.filePath("missing.json"));
+    QVERIFY(r.error.contains("no such file"));
+    QFile truncated(dir.filePath("t.json"));
+    QVERIFY(truncated.open(QIODevice::WriteOnly));
+    truncated.write(QJsonDocument(defaultJson()).toJson().left(200));
+    truncated.close();
+    r = loadSessionFile(truncated.fileName());
+    QVERIFY(!r.ok);
+    QVERIFY2(r.error.startsWith("not valid JSON"), qPrintable(r.error));
+    r = sessionFromBytes("[1, 2]");
+    QVERIFY(r.error.contains("must be a JSON object"));
+}
+
+void TstSessionFile::failedSaveKeepsOldFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("keep.json");
+    QString error;
+    QVERIFY(saveSessionFile(Session::paperDefault(), path, &error));
+    const QByteArray before = [&] {
+        QFile f(path);
+        f.open(QIODevice::ReadOnly);
+        return f.readAll();
+    }();
+    // A directory where the file should go, and a read-only directory: both fail cleanly.
+    QVERIFY(!saveSessionFile(Session::paperDefault(), dir.path(), &error));
+    QVERIFY(error.contains("is a directory"));
+    Session changed = Session::paperDefault();
+    changed.umaxVolts = 7.0;
+    QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner);
+    const bool saved = saveSessionFile(changed, path, &error);
+    QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+    if (saved)
+        QSKIP("running as root: a read-only directory does not stop the write");
+    QVERIFY(!error.isEmpty());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), before);
+}
+
+QTEST_APPLESS_MAIN(TstSessionFile)
+#include "tst_session_file.moc"
