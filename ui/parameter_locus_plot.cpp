@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/parameter_locus_plot.h"
+
+#include "ui/plot_tools.h"
+
+#include <cmath>
+
+namespace xyt::ui {
+
+ParameterLocusPlot::ParameterLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
+    setObjectName("parameter-locus");
+    addLayer("grid", layer("main"), QCustomPlot::limBelow);
+    plotLayout()->insertRow(0);
+    title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));
+    plotLayout()->addElement(0, 0, title_);
+    styleAxisRect(axisRect());
+    xAxis->setLabel(tr("real"));
+    yAxis->setLabel(tr("imaginary"));
+    current_ = addGraph();
+    current_->setLineStyle(QCPGraph::lsNone);
+    current_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(colors::error, 1.5),
+                                              QBrush(colors::error), 10));
+    current_->setName(tr("current design"));
+    ends_ = addGraph();
+    ends_->setLineStyle(QCPGraph::lsNone);
+    ends_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(Qt::black, 1.2), Qt::NoBrush, 6));
+    ends_->setName(tr("start of the sweep"));
+    legend->setVisible(true);
+    legend->setFont(QFont(font().family(), 8));
+    legend->setBrush(QColor(255, 255, 255, 210));
+    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    setupInteractivePlot(this);
+}
+
+void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
+                                   const std::vector<std::complex<double>>& current,
+                                   const QString& title) {
+    title_->setText(title);
+    while (branches_.size() > locus.branches.size()) {
+        removePlottable(branches_.back());
+        branches_.pop_back();
+    }
+    while (branches_.size() < locus.branches.size()) {
+        auto* c = new QCPCurve(xAxis, yAxis);
+        c->setPen(QPen(colors::output, 1.6));
+        c->removeFromLegend();
+        branches_.push_back(c);
+    }
+    std::vector<std::complex<double>> starts;
+    double extent = 1e-6;
+    for (std::size_t b = 0; b < locus.branches.size(); ++b) {
+        const auto& roots = locus.branches[b];
+        QVector<QCPCurveData> data;
+        for (std::size_t i = 0; i < roots.size(); ++i) {
+            data.append(QCPCurveData(static_cast<double>(i), roots[i].real(), roots[i].imag()));
+            extent = std::max(extent, std::abs(roots[i]));
+        }
+        branches_[b]->data()->set(data, true);
+        if (!roots.empty())
+            starts.push_back(roots.front());
+    }
+    setComplexPoints(current_, current);
+    setComplexPoints(ends_, starts);
+    grid_.show(0.0, extent);
+    if (!ranged_) {
+        rescaleAxes();
+        ranged_ = true;
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+} // namespace xyt::ui

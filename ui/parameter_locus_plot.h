@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/parameter_locus.h"
+#include "ui/plane_grid.h"
+
+#include <qcustomplot.h>
+
+namespace xyt::ui {
+
+/**
+ * The closed-loop poles of the Guillemin-Truxal design as omega_n or kp sweeps (the other held
+ * at its current value), with the current design's poles marked: what the sliders move.
+ */
+class ParameterLocusPlot : public QCustomPlot {
+    Q_OBJECT
+public:
+    explicit ParameterLocusPlot(QWidget* parent = nullptr);
+    void showLocus(const ParameterLocus& locus, const std::vector<std::complex<double>>& current,
+                   const QString& title);
+    int branchCount() const { return static_cast<int>(branches_.size()); }
+    QCPGraph* currentGraph() const { return current_; }
+
+private:
+    std::vector<QCPCurve*> branches_;
+    QCPGraph* current_;
+    QCPGraph* ends_;
+    QCPTextElement* title_;
+    PlaneGrid grid_;
+    bool ranged_ = false;
+};
+
+} // namespace xyt::ui

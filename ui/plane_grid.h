@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <qcustomplot.h>
+
+#include <complex>
+#include <vector>
+
+namespace xyt::ui {
+
+/**
+ * The constant-damping / constant-frequency grid behind the s- or z-plane plots (and the unit
+ * circle for the z-plane), drawn from the core's DampingGrid. Owns its curves in @p plot.
+ */
+class PlaneGrid {
+public:
+    explicit PlaneGrid(QCustomPlot* plot);
+    /// Rebuilds the grid for the sample time (0: s-plane) and the largest frequency shown.
+    void show(double tsSeconds, double maxOmegaRadPerSec);
+    void setVisible(bool visible);
+
+private:
+    void clear();
+    QCustomPlot* plot_;
+    std::vector<QCPCurve*> curves_;
+    std::vector<QCPItemText*> labels_;
+    double ts_ = -1.0;
+    double maxOmega_ = -1.0;
+    bool visible_ = true;
+};
+
+/// A polyline of complex points as a curve (real part horizontal).
+QCPCurve* addComplexCurve(QCustomPlot* plot, const std::vector<std::complex<double>>& points,
+                          const QPen& pen);
+/// Replaces the data of a point graph with the complex points.
+void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& points);
+
+} // namespace xyt::ui

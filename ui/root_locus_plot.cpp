@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/root_locus_plot.h"
+
+#include "ui/plot_tools.h"
+
+#include <cmath>
+
+namespace xyt::ui {
+
+namespace {
+const QList<QColor> kBranchColors = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
+                                     QColor(0x94, 0x67, 0xbd), QColor(0x8c, 0x56, 0x4b),
+                                     QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf),
+                                     QColor(0xbc, 0xbd, 0x22), QColor(0x7f, 0x7f, 0x7f)};
+
+QCPGraph* scatterGraph(QCustomPlot* plot, QCPScatterStyle style, const QString& name) {
+    QCPGraph* g = plot->addGraph();
+    g->setLineStyle(QCPGraph::lsNone);
+    g->setScatterStyle(style);
+    g->setName(name);
+    return g;
+}
+
+QString formatGain(double k) { return QString::number(k, 'g', 5); }
+} // namespace
+
+RootLocusPlot::RootLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
+    setObjectName("root-locus");
+    addLayer("grid", layer("main"), QCustomPlot::limBelow);
+    plotLayout()->insertRow(0);
+    title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));
+    plotLayout()->addElement(0, 0, title_);
+    styleAxisRect(axisRect());
+    xAxis->setLabel(tr("real"));
+    yAxis->setLabel(tr("imaginary"));
+    poles_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCross, QPen(Qt::black, 2), Qt::NoBrush, 10),
+                          tr("open-loop poles"));
+    zeros_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 2), Qt::NoBrush, 9),
+                          tr("open-loop zeros"));
+    current_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(colors::error, 1.5),
+                                                  QBrush(colors::error), 10),
+                            tr("closed-loop poles (design)"));
+    hover_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5),
+                                                QBrush(QColor(255, 255, 0, 200)), 9),
+                          QString());
+    hover_->removeFromLegend();
+    readout_ = new QCPItemText(this);
+    readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
+    readout_->position->setCoords(0.01, 0.01);
+    readout_->setPositionAlignment(Qt::AlignTop | Qt::AlignLeft);
+    readout_->setTextAlignment(Qt::AlignLeft);
+    readout_->setBrush(QColor(255, 255, 255, 220));
+    readout_->setPadding(QMargins(4, 2, 4, 2));
+    readout_->setFont(QFont(font().family(), 8));
+    readout_->setText(tr("hover a branch: K, ζ, ωn; click: use that gain"));
+    legend->setVisible(true);
+    legend->setFont(QFont(font().family(), 8));
+    legend->setBrush(QColor(255, 255, 255, 210));
+    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    setupInteractivePlot(this);
+    connect(this, &QCustomPlot::mouseMove, this, &RootLocusPlot::onMouseMove);
+    connect(this, &QCustomPlot::mousePress, this, &RootLocusPlot::onMousePress);
+    connect(this, &QCustomPlot::mouseRelease, this, &RootLocusPlot::onMouseRelease);
+}
+
+void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::complex<double>>& currentPoles,
+                              const QString& title) {
+    const bool newPlane = !hasLocus_ || locus.tsSeconds != lastTs_;
+    locus_ = locus;
+    hasLocus_ = true;
+    lastTs_ = locus.tsSeconds;
+    title_->setText(title);
+    while (branches_.size() > locus.branches.size()) {
+        removePlottable(branches_.back());
+        branches_.pop_back();
+    }
+    while (branches_.size() < locus.branches.size()) {
+        auto* c = new QCPCurve(xAxis, yAxis);
+        c->setPen(QPen(kBranchColors[static_cast<int>(branches_.size()) % kBranchColors.size()], 1.6));
+        c->removeFromLegend();
+        branches_.push_back(c);
+    }
+    for (std::size_t b = 0; b < locus.branches.size(); ++b) {
+        const auto& roots = locus.branches[b].roots;
+        QVector<QCPCurveData> data;
+        data.reserve(static_cast<qsizetype>(roots.size()));
+        for (std::size_t i = 0; i < roots.size(); ++i)
+            data.append(QCPCurveData(static_cast<double>(i), roots[i].real(), roots[i].imag()));
+        branches_[b]->data()->set(data, true);
+    }
+    setComplexPoints(poles_, locus.poles);
+    setComplexPoints(zeros_, locus.zeros);
+    setComplexPoints(current_, currentPoles);
+    hover_->data()->clear();
+    const LocusView& v = locus.view;
+    grid_.show(locus.tsSeconds, std::max({std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin),
+                                          std::abs(v.imMax), 1e-6}));
+    if (newPlane) {
+        xAxis->setRange(v.reMin, v.reMax);
+        yAxis->setRange(v.imMin, v.imMax);
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+std::optional<LocusPick> RootLocusPlot::pickAtPixel(const QPointF& pixel, double maxPixels) const {
+    if (!hasLocus_)
+        return std::nullopt;
+    const std::complex<double> clicked(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
+    if (!std::isfinite(clicked.real()) || !std::isfinite(clicked.imag()))
+        return std::nullopt;
+    const auto pick = pickLocusPoint(locus_, clicked);
+    if (!pick)
+        return std::nullopt;
+    const QPointF at(xAxis->coordToPixel(pick->point.real()), yAxis->coordToPixel(pick->point.imag()));
+    if (std::hypot(at.x() - pixel.x(), at.y() - pixel.y()) > maxPixels)
+        return std::nullopt;
+    return pick;
+}
+
+void RootLocusPlot::onMouseMove(QMouseEvent* event) {
+    if (event->buttons() != Qt::NoButton)
+        return; // dragging pans the view
+    const auto pick = pickAtPixel(event->position());
+    if (!pick) {
+        if (!hover_->data()->isEmpty()) {
+            hover_->data()->clear();
+            replot(QCustomPlot::rpQueuedReplot);
+        }
+        return;
+    }
+    setComplexPoints(hover_, {pick->point});
+    readout_->setText(tr("K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j")
+                          .arg(formatGain(pick->gain))
+                          .arg(pick->damping.zeta, 0, 'f', 3)
+                          .arg(QString::number(pick->damping.omegaNRadPerSec, 'g', 4))
+                          .arg(QString::number(pick->point.real(), 'g', 4))
+                          .arg(pick->point.imag() < 0 ? "−" : "+")
+                          .arg(QString::number(std::abs(pick->point.imag()), 'g', 4)));
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void RootLocusPlot::onMousePress(QMouseEvent* event) { pressPos_ = event->pos(); }
+
+void RootLocusPlot::onMouseRelease(QMouseEvent* event) {
+    if (event->button() != Qt::LeftButton || (event->pos() - pressPos_).manhattanLength() > 4)
+        return; // a drag, not a click
+    const auto pick = pickAtPixel(event->position());
+    if (pick && pick->gain > 0.0 && std::isfinite(pick->gain))
+        emit gainPicked(pick->gain);
+}
+
+} // namespace xyt::ui
