@@ -24,6 +24,10 @@ constexpr const char* kUsage =
     "            --trajectory sine --amplitude A --omega W [--phase-deg P --ramp-in S]\n"
     "            [--duration S] [--dt 0.01] [--umax 2.5] [--csv FILE]\n"
     "  report    text report of the default design (both bases of paper 000)\n"
+    "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
+    "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
+    "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"
+    "            [--kmax K] [--max-step 0.01 (fraction of the view)] [--max-points 5000]\n"
     "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
 
@@ -41,6 +45,7 @@ int main(int argc, char* argv[]) {
         {"gt", xyt::cli::runGt},
         {"simulate", xyt::cli::runSimulate},
         {"report", xyt::cli::runReport},
+        {"rlocus", xyt::cli::runRlocus},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

@@ -95,11 +95,15 @@ struct RootLocus {
 };
 
 /**
- * Traces the root locus of 1 + K N/D = 0 from K = 0 with adaptive gain steps: each step is
- * predicted from the root velocities dr/dK = -N(r)/(D'(r) + K N'(r)) so that no root inside
- * the view moves more than min(maxStep, approachFraction * distance to its nearest neighbour)
- * (floored at minStepFraction * maxStep), and halved until the roots of D + K N (companion
- * eigenvalues) matched to the previous ones (matchRoots: least total displacement) satisfy it.
+ * Traces the root locus of 1 + K N/D = 0 from K = 0 with adaptive gain steps. Each root r
+ * inside the view may move at most delta = min(maxStep, approachFraction * distance to its
+ * nearest neighbour), floored at minStepFraction * maxStep; the gain step is predicted as
+ * min over roots of |D(r + delta) + K N(r + delta)| / |N(r + delta)| (to first order
+ * delta / |dr/dK| with dr/dK = -N/(D' + K N'), and still right at a multiple root, where the
+ * velocity is infinite), then shrunk until the new roots of D + K N, matched to the previous
+ * ones (matchRoots: least total displacement), satisfy every bound. The new roots come from
+ * Aberth corrections of the previous ones, or the companion eigenvalues when those do not
+ * converge.
  * The features (asymptotes, breakaways, crossings) are computed algebraically for all K > 0,
  * independently of the traced range.
  *
