@@ -3,6 +3,7 @@
 //   name: median_us=... min_us=... max_us=... runs=...
 // Optional argument: a substring; only figures whose name contains it are run.
 #include "core/guillemin_truxal.h"
+#include "core/root_locus.h"
 #include "core/simulation.h"
 #include "core/trajectory.h"
 
@@ -66,6 +67,16 @@ int main(int argc, char* argv[]) {
         benchmark(filter, "simulate_cubic_130s_dt0.01", [&] {
             const auto run = xyt::simulateLoop(plant, design.controller, reference, options);
             sink = sink + run.y.back();
+        });
+    }
+
+    {
+        // One full automatic root locus of the 4th-order GT loop (lower base, wn 2, kp 30):
+        // K from 0 until every branch reached its zero or left the computed view.
+        const auto design = xyt::designGuilleminTruxal(lower.plant, 2.0, 30.0);
+        benchmark(filter, "root_locus_gt4", [&] {
+            const auto locus = xyt::rootLocus(design.openLoop);
+            sink = sink + locus.gains.back();
         });
     }
     return 0;

@@ -14,5 +14,6 @@ int runNew(const QStringList& args);
 int runExport(const QStringList& args);
 /// The report of a saved session (xytune-cli report SESSION.json).
 int runSessionReport(const QString& path);
+int runRlocus(const QStringList& args);
 
 } // namespace xyt::cli

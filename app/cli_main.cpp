@@ -30,6 +30,10 @@ constexpr const char* kUsage =
     "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
     "            tustin|backward-euler]  controller coefficients (JSON, C header,\n"
     "            Octave/MATLAB script) or simulated signals (CSV)\n"
+    "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
+    "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
+    "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"
+    "            [--kmax K] [--max-step 0.01 (fraction of the view)] [--max-points 5000]\n"
     "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
 
@@ -49,6 +53,7 @@ int main(int argc, char* argv[]) {
         {"report", xyt::cli::runReport},
         {"new", xyt::cli::runNew},
         {"export", xyt::cli::runExport},
+        {"rlocus", xyt::cli::runRlocus},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);
