@@ -33,7 +33,7 @@ for ts = [0.01 0.07]
     n = [zeros(1, numel(d) - numel(n)) n];          % pad the numerator to the denominator's length
     for part = {'num', 'den'}
       if strcmp(part{1}, 'num'); v = n; else; v = d; end
-      v = [v zeros(1, 5 - numel(v))];
+      v = [zeros(1, 5 - numel(v)) v];                % leading zeros: same polynomial
       fprintf(fid, '%s,%.2f,%s', labels{j}, ts, part{1});
       fprintf(fid, ',%.17g', v);
       fprintf(fid, '\n');
