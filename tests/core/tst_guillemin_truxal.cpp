@@ -3,6 +3,7 @@
 // published numbers, after checking each published number against its own equation.
 #include "core/errors.h"
 #include "core/guillemin_truxal.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -14,18 +15,11 @@ using xyt::GtDesign;
 using xyt::Polynomial;
 using xyt::ThirdOrderPlant;
 using xyt::TransferFunction;
+using xyt::test::comparePolynomials;
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// Coefficient-wise comparison of two polynomials, relative to the largest coefficient.
-void comparePolynomials(const Polynomial& actual, const Polynomial& expected, double relTol) {
-    QCOMPARE(actual.degree(), expected.degree());
-    const double scale = expected.maxAbsCoefficient();
-    for (int i = 0; i <= expected.degree(); ++i)
-        XYT_COMPARE_NEAR(actual.coefficient(i), expected.coefficient(i), 0.0, relTol * scale);
-}
 } // namespace
 
 class TstGuilleminTruxal : public QObject {
@@ -237,12 +231,8 @@ void TstGuilleminTruxal::badInputsNameTheField() {
     QFETCH(double, wn);
     QFETCH(double, kp);
     QFETCH(QString, field);
-    try {
-        xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp);
-        QFAIL("accepted");
-    } catch (const xyt::InvalidInput& e) {
-        QCOMPARE(QString::fromStdString(e.field()), field);
-    }
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp); }),
+             field);
 }
 
 QTEST_APPLESS_MAIN(TstGuilleminTruxal)

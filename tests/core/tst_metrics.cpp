@@ -5,6 +5,7 @@
 #include "core/guillemin_truxal.h"
 #include "core/metrics.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -205,25 +206,18 @@ void TstMetrics::unstableIsReportedNotThrown() {
 }
 
 void TstMetrics::errorsNameTheField() {
-    auto field = [](auto&& f) {
-        try {
-            f();
-        } catch (const xyt::InvalidInput& e) {
-            return QString::fromStdString(e.field());
-        }
-        return QString("<no exception>");
-    };
+    using xyt::test::invalidInputField;
     const TransferFunction g = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
-    QCOMPARE(field([&] { xyt::stepCharacteristics(g, 0.0); }), QString("band"));
-    QCOMPARE(field([&] { xyt::stepCharacteristics(g, 1.0); }), QString("band"));
-    QCOMPARE(field([&] { xyt::stepCharacteristics(g, std::nan("")); }), QString("band"));
-    QCOMPARE(field([&] { xyt::stepCharacteristics(g, 0.02, 10); }), QString("samples"));
-    QCOMPARE(field([] { xyt::stepCharacteristics(TransferFunction::fromDescending({1.0, 0.0}, {1.0})); }),
+    QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, 0.0); }), QString("band"));
+    QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, 1.0); }), QString("band"));
+    QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, std::nan("")); }), QString("band"));
+    QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, 0.02, 10); }), QString("samples"));
+    QCOMPARE(invalidInputField([] { xyt::stepCharacteristics(TransferFunction::fromDescending({1.0, 0.0}, {1.0})); }),
              QString("system"));
-    QCOMPARE(field([] { xyt::trackingMetrics(SimulationResult{}); }), QString("result"));
+    QCOMPARE(invalidInputField([] { xyt::trackingMetrics(SimulationResult{}); }), QString("result"));
     SimulationResult bad = runWithError({1.0, 2.0}, 0.1);
     bad.u.pop_back();
-    QCOMPARE(field([&] { xyt::trackingMetrics(bad); }), QString("result"));
+    QCOMPARE(invalidInputField([&] { xyt::trackingMetrics(bad); }), QString("result"));
 }
 
 QTEST_APPLESS_MAIN(TstMetrics)

@@ -7,6 +7,7 @@
 #include "core/state_space.h"
 #include "core/trajectory.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -38,15 +39,6 @@ double maxAbs(const std::vector<double>& v) {
     for (double x : v)
         m = std::max(m, std::abs(x));
     return m;
-}
-
-template <class F> QString fieldOf(F&& f) {
-    try {
-        f();
-    } catch (const xyt::InvalidInput& e) {
-        return QString::fromStdString(e.field());
-    }
-    return QStringLiteral("<no exception>");
 }
 } // namespace
 
@@ -214,7 +206,7 @@ void TstSimulation::initialOutputAtRest() {
     }
     // A plant without a pole at 0 cannot rest away from 0.
     const TransferFunction lag = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(lag, d.controller, r, options); }), QString("initial_output"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(lag, d.controller, r, options); }), QString("initial_output"));
 }
 
 void TstSimulation::unitScaleInvariance() {
@@ -262,23 +254,23 @@ void TstSimulation::errorsNameTheField() {
     const TransferFunction biproper = TransferFunction::fromDescending({1.0, 0.0}, {1.0, 1.0});
     const TransferFunction improper = TransferFunction::fromDescending({1.0, 0.0, 0.0}, {1.0, 1.0});
     const TransferFunction discrete = xyt::c2dZoh(g, 0.01);
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(biproper, c, r, ok); }), QString("plant"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(discrete, c, r, ok); }), QString("plant"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, improper, r, ok); }), QString("controller"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, {}, ok); }), QString("reference"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, {0.0, std::nan("")}, ok); }), QString("reference"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, {0.0, kInf}, ok); }), QString("reference"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = 0.0; })); }), QString("dt"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = -1.0; })); }), QString("dt"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = 0.0; })); }), QString("umax"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = std::nan(""); })); }), QString("umax"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.initialOutput = kInf; })); }),
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(biproper, c, r, ok); }), QString("plant"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(discrete, c, r, ok); }), QString("plant"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, improper, r, ok); }), QString("controller"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {}, ok); }), QString("reference"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {0.0, std::nan("")}, ok); }), QString("reference"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {0.0, kInf}, ok); }), QString("reference"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = 0.0; })); }), QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = -1.0; })); }), QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = 0.0; })); }), QString("umax"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = std::nan(""); })); }), QString("umax"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.initialOutput = kInf; })); }),
              QString("initial_output"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.modelUnitsPerPositionUnit = 0.0; })); }),
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.modelUnitsPerPositionUnit = 0.0; })); }),
              QString("model_unit_scale"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLinear(improper, r, 0.01); }), QString("system"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLinear(g, {}, 0.01); }), QString("input"));
-    QCOMPARE(fieldOf([&] { xyt::simulateLinear(g, r, 0.0); }), QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(improper, r, 0.01); }), QString("system"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, {}, 0.01); }), QString("input"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, r, 0.0); }), QString("dt"));
 }
 
 QTEST_APPLESS_MAIN(TstSimulation)

@@ -5,6 +5,7 @@
 #include "core/guillemin_truxal.h"
 #include "core/state_space.h"
 #include "tests/support/reference_data.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <Eigen/Dense>
@@ -194,22 +195,15 @@ void TstStateSpace::characteristicPolynomialOfKnownMatrix() {
 
 void TstStateSpace::errorsNameTheField() {
     const TransferFunction g = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
-    auto field = [](auto&& f) {
-        try {
-            f();
-        } catch (const xyt::InvalidInput& e) {
-            return QString::fromStdString(e.field());
-        }
-        return QString("<no exception>");
-    };
-    QCOMPARE(field([] { xyt::realize(TransferFunction::fromDescending({1.0, 0.0}, {1.0})); }), QString("num"));
-    QCOMPARE(field([&] { xyt::c2dZoh(g, 0.0); }), QString("ts"));
-    QCOMPARE(field([&] { xyt::c2dZoh(g, -0.01); }), QString("ts"));
-    QCOMPARE(field([&] { xyt::c2dZoh(g, std::nan("")); }), QString("ts"));
-    QCOMPARE(field([&] { xyt::c2dZoh(xyt::c2dZoh(g, 0.1), 0.1); }), QString("system"));
-    QCOMPARE(field([&] { xyt::discretizeZoh(xyt::discretizeZoh(xyt::realize(g), 0.1), 0.1); }),
+    using xyt::test::invalidInputField;
+    QCOMPARE(invalidInputField([] { xyt::realize(TransferFunction::fromDescending({1.0, 0.0}, {1.0})); }), QString("num"));
+    QCOMPARE(invalidInputField([&] { xyt::c2dZoh(g, 0.0); }), QString("ts"));
+    QCOMPARE(invalidInputField([&] { xyt::c2dZoh(g, -0.01); }), QString("ts"));
+    QCOMPARE(invalidInputField([&] { xyt::c2dZoh(g, std::nan("")); }), QString("ts"));
+    QCOMPARE(invalidInputField([&] { xyt::c2dZoh(xyt::c2dZoh(g, 0.1), 0.1); }), QString("system"));
+    QCOMPARE(invalidInputField([&] { xyt::discretizeZoh(xyt::discretizeZoh(xyt::realize(g), 0.1), 0.1); }),
              QString("system"));
-    QCOMPARE(field([] { xyt::discretizeFoh(Eigen::MatrixXd::Zero(1, 1), Eigen::MatrixXd::Ones(1, 1), 0.0); }),
+    QCOMPARE(invalidInputField([] { xyt::discretizeFoh(Eigen::MatrixXd::Zero(1, 1), Eigen::MatrixXd::Ones(1, 1), 0.0); }),
              QString("ts"));
 }
 

@@ -3,6 +3,7 @@
 // the circle contour (Eq. 23-24).
 #include "core/errors.h"
 #include "core/trajectory.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <Eigen/Dense>
@@ -32,15 +33,6 @@ double evalAbsolute(const std::array<double, 4>& p, double t) {
 }
 double evalAbsoluteSlope(const std::array<double, 4>& p, double t) {
     return p[1] + t * (2.0 * p[2] + t * 3.0 * p[3]);
-}
-
-template <class F> QString fieldOf(F&& f) {
-    try {
-        f();
-    } catch (const xyt::InvalidInput& e) {
-        return QString::fromStdString(e.field());
-    }
-    return QStringLiteral("<no exception>");
 }
 } // namespace
 
@@ -203,34 +195,34 @@ void TstTrajectory::sampleTimesLimits() {
     QCOMPARE(xyt::sampleTimes(0.3, 0.1).size(), std::size_t(4)); // 0.3/0.1 = 2.9999999999999996
     // A duration whose samples do not fit: kMaxSamples + 1 samples are refused, naming duration.
     const double tooLong = static_cast<double>(xyt::kMaxSamples) * 0.01;
-    QCOMPARE(fieldOf([&] { xyt::sampleTimes(tooLong, 0.01); }), QString("duration"));
-    QCOMPARE(fieldOf([] { xyt::sampleTimes(1e300, 1e-300); }), QString("duration"));
-    QCOMPARE(fieldOf([] { xyt::sampleTimes(10.0, 0.0); }), QString("dt"));
-    QCOMPARE(fieldOf([] { xyt::sampleTimes(10.0, -0.01); }), QString("dt"));
-    QCOMPARE(fieldOf([] { xyt::sampleTimes(-1.0, 0.01); }), QString("duration"));
-    QCOMPARE(fieldOf([] { xyt::sampleTimes(std::nan(""), 0.01); }), QString("duration"));
-    QCOMPARE(fieldOf([] { xyt::sampleTimes(10.0, std::numeric_limits<double>::infinity()); }),
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::sampleTimes(tooLong, 0.01); }), QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(1e300, 1e-300); }), QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(10.0, 0.0); }), QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(10.0, -0.01); }), QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(-1.0, 0.01); }), QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(std::nan(""), 0.01); }), QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(10.0, std::numeric_limits<double>::infinity()); }),
              QString("dt"));
 }
 
 void TstTrajectory::errorsNameTheField() {
     const double nan = std::nan("");
-    QCOMPARE(fieldOf([] { CubicTrajectory(0.0, 1.0, 5.0, 5.0); }), QString("tf"));
-    QCOMPARE(fieldOf([] { CubicTrajectory(0.0, 1.0, 5.0, 1.0); }), QString("tf"));
-    QCOMPARE(fieldOf([&] { CubicTrajectory(nan, 1.0, 0.0, 1.0); }), QString("x0"));
-    QCOMPARE(fieldOf([&] { CubicTrajectory(0.0, nan, 0.0, 1.0); }), QString("xf"));
-    QCOMPARE(fieldOf([&] { CubicTrajectory(0.0, 1.0, nan, 1.0); }), QString("t0"));
-    QCOMPARE(fieldOf([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, nan); }), QString("v0"));
-    QCOMPARE(fieldOf([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, 0.0, HUGE_VAL); }), QString("vf"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 5.0, 5.0); }), QString("tf"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 5.0, 1.0); }), QString("tf"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(nan, 1.0, 0.0, 1.0); }), QString("x0"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, nan, 0.0, 1.0); }), QString("xf"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, nan, 1.0); }), QString("t0"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, nan); }), QString("v0"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, 0.0, HUGE_VAL); }), QString("vf"));
     xyt::Sinusoid s;
     s.rampInSeconds = -1.0;
-    QCOMPARE(fieldOf([&] { s.validate(); }), QString("ramp_in"));
+    QCOMPARE(xyt::test::invalidInputField([&] { s.validate(); }), QString("ramp_in"));
     s.rampInSeconds = 0.0;
     s.amplitude = nan;
-    QCOMPARE(fieldOf([&] { s.validate(); }), QString("amplitude"));
+    QCOMPARE(xyt::test::invalidInputField([&] { s.validate(); }), QString("amplitude"));
     xyt::Circle c;
     c.omegaRadPerSec = 0.0;
-    QCOMPARE(fieldOf([&] { c.periodSeconds(); }), QString("omega"));
+    QCOMPARE(xyt::test::invalidInputField([&] { c.periodSeconds(); }), QString("omega"));
 }
 
 QTEST_APPLESS_MAIN(TstTrajectory)

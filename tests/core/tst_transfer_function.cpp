@@ -3,6 +3,7 @@
 // closed forms; the z^-1 form round trip; errors that name the field.
 #include "core/errors.h"
 #include "core/transfer_function.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -25,19 +26,7 @@ TransferFunction tf(const std::vector<double>& num, const std::vector<double>& d
 
 /// Coefficients descending, compared to 1e-14 of the largest (a few products and sums).
 void compareDescending(const Polynomial& p, const std::vector<double>& expected) {
-    const Polynomial e = Polynomial::fromDescending(expected);
-    QCOMPARE(p.degree(), e.degree());
-    for (int i = 0; i <= e.degree(); ++i)
-        XYT_COMPARE_NEAR(p.coefficient(i), e.coefficient(i), 0.0, 1e-14 * e.maxAbsCoefficient());
-}
-
-template <class F> QString fieldOf(F&& f) {
-    try {
-        f();
-    } catch (const xyt::InvalidInput& e) {
-        return QString::fromStdString(e.field());
-    }
-    return QStringLiteral("<no exception>");
+    xyt::test::comparePolynomials(p, Polynomial::fromDescending(expected), 1e-14);
 }
 } // namespace
 
@@ -253,29 +242,29 @@ void TstTransferFunction::stability() {
 }
 
 void TstTransferFunction::errorsNameTheField() {
-    QCOMPARE(fieldOf([] { TransferFunction(Polynomial::constant(1.0), Polynomial()); }), QString("den"));
-    QCOMPARE(fieldOf([] { TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), -0.1); }),
+    QCOMPARE(xyt::test::invalidInputField([] { TransferFunction(Polynomial::constant(1.0), Polynomial()); }), QString("den"));
+    QCOMPARE(xyt::test::invalidInputField([] { TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), -0.1); }),
              QString("ts"));
-    QCOMPARE(fieldOf([] { TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), kNaN); }),
+    QCOMPARE(xyt::test::invalidInputField([] { TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), kNaN); }),
              QString("ts"));
-    QCOMPARE(fieldOf([] { tf({1.0, kNaN}, {1.0, 1.0}); }), QString("num[1]"));
-    QCOMPARE(fieldOf([] { tf({1.0}, {1.0, kInf}); }), QString("den[1]"));
-    QCOMPARE(fieldOf([] { tf({1.0}, {0.0, 0.0}); }), QString("den"));
+    QCOMPARE(xyt::test::invalidInputField([] { tf({1.0, kNaN}, {1.0, 1.0}); }), QString("num[1]"));
+    QCOMPARE(xyt::test::invalidInputField([] { tf({1.0}, {1.0, kInf}); }), QString("den[1]"));
+    QCOMPARE(xyt::test::invalidInputField([] { tf({1.0}, {0.0, 0.0}); }), QString("den"));
     const Polynomial one = Polynomial::constant(1.0);
-    QCOMPARE(fieldOf([&] { TransferFunction::fromZInverse(one, Polynomial::fromAscending({0.0, 1.0}), 0.1); }),
+    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, Polynomial::fromAscending({0.0, 1.0}), 0.1); }),
              QString("den"));
-    QCOMPARE(fieldOf([&] { TransferFunction::fromZInverse(one, one, 0.0); }), QString("ts"));
-    QCOMPARE(fieldOf([&] { TransferFunction::fromZInverse(one, Polynomial(), 0.1); }), QString("den"));
-    QCOMPARE(fieldOf([] { tf({1.0}, {1.0, 1.0}).numZInverse(); }), QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, one, 0.0); }), QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, Polynomial(), 0.1); }), QString("den"));
+    QCOMPARE(xyt::test::invalidInputField([] { tf({1.0}, {1.0, 1.0}).numZInverse(); }), QString("ts"));
     const TransferFunction d1(one, Polynomial::fromAscending({-0.5, 1.0}), 0.1);
     const TransferFunction d2(one, Polynomial::fromAscending({-0.5, 1.0}), 0.2);
-    QCOMPARE(fieldOf([&] { xyt::series(d1, d2); }), QString("ts"));
-    QCOMPARE(fieldOf([&] { xyt::parallel(d1, tf({1.0}, {1.0, 1.0})); }), QString("ts"));
-    QCOMPARE(fieldOf([&] { xyt::feedback(d1, d1, 0); }), QString("sign"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::series(d1, d2); }), QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::parallel(d1, tf({1.0}, {1.0, 1.0})); }), QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::feedback(d1, d1, 0); }), QString("sign"));
     // An improper discrete system has no causal z^-1 form.
     const TransferFunction improper(Polynomial::fromAscending({0.0, 0.0, 1.0}),
                                     Polynomial::fromAscending({-0.5, 1.0}), 0.1);
-    QCOMPARE(fieldOf([&] { improper.numZInverse(); }), QString("num"));
+    QCOMPARE(xyt::test::invalidInputField([&] { improper.numZInverse(); }), QString("num"));
 }
 
 QTEST_APPLESS_MAIN(TstTransferFunction)
