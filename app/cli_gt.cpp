@@ -94,13 +94,24 @@ struct Reference {
     QString description;
 };
 
+/// Runs @p f, reporting a core InvalidInput on field "x" as the CLI argument "--x" (the core
+/// names its fields like the options: tf, duration, ...).
+template <class F> auto asArgument(F&& f) {
+    try {
+        return f();
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("--" + e.field(), e.reason());
+    }
+}
+
 Reference parseTrajectory(const CliArgs& args) {
     const QString kind = args.text("trajectory", "");
     if (kind == "cubic") {
         const double t0 = args.number("t0", 0.0);
-        const CubicTrajectory cubic(args.number("x0", 0.0), args.number("xf"), t0,
-                                    args.number("tf"), args.number("v0", 0.0),
-                                    args.number("vf", 0.0));
+        const double x0 = args.number("x0", 0.0), xf = args.number("xf"), tf = args.number("tf");
+        const double v0 = args.number("v0", 0.0), vf = args.number("vf", 0.0);
+        const CubicTrajectory cubic =
+            asArgument([&] { return CubicTrajectory(x0, xf, t0, tf, v0, vf); });
         return {[cubic](double t) { return cubic.position(t); }, cubic.tf(), "cubic"};
     }
     if (kind == "sine") {
@@ -168,12 +179,8 @@ int runSimulate(const QStringList& argv) {
     const double duration = args.number("duration", ref.defaultDuration);
     if (!(duration > 0.0))
         throw InvalidInput("--duration", "must be greater than zero");
-    std::vector<double> times;
-    try {
-        times = sampleTimes(duration, options.dtSeconds);
-    } catch (const InvalidInput& e) {
-        throw InvalidInput("--" + e.field(), e.reason());
-    }
+    const std::vector<double> times =
+        asArgument([&] { return sampleTimes(duration, options.dtSeconds); });
     const GtDesign design = designGuilleminTruxal(in.plant, in.wn, in.kp);
     const SimulationResult run = simulateLoop(in.plant.transferFunction(), design.controller,
                                               sampled(ref.at, times), options);

@@ -1,36 +1,265 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The CLI contract of issue 2 for gt / simulate / report: keys, values equal to the core's,
+// the CSV columns, and exit code 2 with one stderr line naming the argument for bad input.
+#include "core/guillemin_truxal.h"
+#include "core/metrics.h"
+#include "core/simulation.h"
+#include "core/trajectory.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance.h"
 
+#include <QFile>
 #include <QJsonArray>
+#include <QTemporaryDir>
 #include <QTest>
+
+#include <numbers>
+
+namespace {
+std::vector<double> jsonNumbers(const QJsonValue& v) {
+    std::vector<double> out;
+    for (const QJsonValue& x : v.toArray())
+        out.push_back(x.toDouble());
+    return out;
+}
+
+/// Qt prints JSON doubles in the shortest form that reads back exactly, so values equal the
+/// core's to the last bit; 1e-15 relative only allows for the text round trip.
+void compareArray(const QJsonValue& v, const std::vector<double>& expected) {
+    const std::vector<double> got = jsonNumbers(v);
+    QCOMPARE(got.size(), expected.size());
+    for (std::size_t i = 0; i < got.size(); ++i)
+        XYT_COMPARE_NEAR(got[i], expected[i], 1e-15, 0.0);
+}
+
+void requireNoNonFinite(const QByteArray& out) {
+    const QByteArray lower = out.toLower();
+    QVERIFY2(!lower.contains("nan") && !lower.contains("inf"), out.constData());
+}
+} // namespace
 
 class TstCliGt : public QObject {
     Q_OBJECT
 private slots:
-    void gtLowerBaseKeys();
-    void badArgumentExitsWithTwo();
+    void gtMatchesCore_data();
+    void gtMatchesCore();
+    void simulateMatchesCoreAndWritesCsv_data();
+    void simulateMatchesCoreAndWritesCsv();
+    void unstableDesignIsNotAnError();
+    void reportReadsTheDefaultDesign();
+    void badInputExitsWithTwo_data();
+    void badInputExitsWithTwo();
 };
 
-void TstCliGt::gtLowerBaseKeys() {
-    const auto run = xyt::test::runCli({"gt", "--preset", "lower-base", "--wn", "2", "--kp", "30"});
-    QVERIFY(run.finished);
-    QCOMPARE(run.exitCode, 0);
-    const QJsonObject o = run.json();
-    for (const char* key : {"f1", "f2", "f3", "psi1", "psi2", "kp", "ki", "reference_model",
-                            "controller", "closed_loop"})
-        QVERIFY2(o.contains(key), key);
-    // Paper 000 Eq. 20: ki = 30 * 2^4 / (30 * 77.8) = 0.205656 (printed 0.20566, 5 digits).
-    XYT_COMPARE_NEAR(o["ki"].toDouble(), 16.0 / 77.8, 1e-12, 0.0);
-    QCOMPARE(o["closed_loop"].toObject()["poles"].toArray().size(), 4);
+void TstCliGt::gtMatchesCore_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<double>("k0");
+    QTest::addColumn<double>("a1");
+    QTest::addColumn<double>("a2");
+    QTest::addColumn<double>("wn");
+    QTest::addColumn<double>("kp");
+    QTest::newRow("paper 000 lower base") << QStringList{"--preset", "lower-base", "--wn", "2", "--kp", "30"}
+                                          << 77.8 << 125.3 << 3665.0 << 2.0 << 30.0;
+    QTest::newRow("upper base, preset defaults") << QStringList{"--preset", "upper-base"}
+                                                 << 24.44 << 68.18 << 863.0 << 1.0 << 30.0;
+    QTest::newRow("explicit plant, --name=value") << QStringList{"--k0=10", "--a1", "5", "--a2", "6", "--wn", "0.5", "--kp", "2"}
+                                                  << 10.0 << 5.0 << 6.0 << 0.5 << 2.0;
+    QTest::newRow("preset with a1 overridden") << QStringList{"--preset", "lower-base", "--a1", "100"}
+                                               << 77.8 << 100.0 << 3665.0 << 2.0 << 30.0;
 }
 
-void TstCliGt::badArgumentExitsWithTwo() {
-    const auto run = xyt::test::runCli({"gt", "--preset", "lower-base", "--wn", "-1"});
+void TstCliGt::gtMatchesCore() {
+    QFETCH(QStringList, args);
+    QFETCH(double, k0);
+    QFETCH(double, a1);
+    QFETCH(double, a2);
+    QFETCH(double, wn);
+    QFETCH(double, kp);
+    const auto run = xyt::test::runCli(QStringList{"gt"} + args);
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY(run.err.isEmpty());
+    requireNoNonFinite(run.out);
+    const QJsonObject o = run.json();
+    const xyt::GtDesign d = xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp);
+    const std::pair<const char*, double> scalars[] = {{"f1", d.f1},   {"f2", d.f2},     {"f3", d.f3},
+                                                      {"psi1", d.psi1}, {"psi2", d.psi2}, {"kp", d.kp},
+                                                      {"ki", d.ki}};
+    for (const auto& [key, value] : scalars) {
+        QVERIFY2(o.contains(key), key);
+        XYT_COMPARE_NEAR(o[key].toDouble(), value, 1e-15, 0.0);
+    }
+    // Polynomials of s in descending powers (the CLI convention).
+    compareArray(o["reference_model"].toObject()["num"], d.referenceModel.num().descending());
+    compareArray(o["reference_model"].toObject()["den"], d.referenceModel.den().descending());
+    compareArray(o["controller"].toObject()["num"], d.controller.num().descending());
+    compareArray(o["controller"].toObject()["den"], d.controller.den().descending());
+    const QJsonObject cl = o["closed_loop"].toObject();
+    compareArray(cl["num"], d.closedLoop.num().descending());
+    compareArray(cl["den"], d.closedLoop.den().descending());
+    const QJsonArray poles = cl["poles"].toArray();
+    QCOMPARE(poles.size(), qsizetype(4));
+    for (qsizetype i = 0; i < poles.size(); ++i) {
+        XYT_COMPARE_NEAR(poles[i].toArray()[0].toDouble(), d.closedLoopPoles[std::size_t(i)].real(), 1e-15, 0.0);
+        XYT_COMPARE_NEAR(poles[i].toArray()[1].toDouble(), d.closedLoopPoles[std::size_t(i)].imag(), 1e-15, 0.0);
+    }
+    QCOMPARE(o["stable"].toBool(), d.stable);
+}
+
+void TstCliGt::simulateMatchesCoreAndWritesCsv_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<bool>("cubic");
+    QTest::addColumn<double>("dt");
+    QTest::addColumn<double>("duration");
+    QTest::newRow("paper cubic 0 -> 600 in 130 s, lower base")
+        << QStringList{"--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--tf", "130"}
+        << true << 0.01 << 130.0;
+    QTest::newRow("circle axis: 25 mm sine at 0.06 rad/s, upper base, ramp-in 10 s")
+        << QStringList{"--preset", "upper-base", "--trajectory", "sine", "--amplitude", "25", "--omega",
+                       "0.06", "--phase-deg", "90", "--ramp-in", "10", "--duration", "60", "--dt", "0.02"}
+        << false << 0.02 << 60.0;
+}
+
+void TstCliGt::simulateMatchesCoreAndWritesCsv() {
+    QFETCH(QStringList, args);
+    QFETCH(bool, cubic);
+    QFETCH(double, dt);
+    QFETCH(double, duration);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString csvPath = dir.filePath("run.csv");
+    const auto run = xyt::test::runCli(QStringList{"simulate"} + args + QStringList{"--csv", csvPath});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    requireNoNonFinite(run.out);
+    const QJsonObject m = run.json()["metrics"].toObject();
+    for (const char* key : {"rmse", "max_abs_error", "max_abs_error_pct", "max_abs_u", "saturated",
+                            "saturated_time", "settling_time", "overshoot_pct", "itae"})
+        QVERIFY2(m.contains(key), key);
+
+    // The same run through the core: the preset's unit scale (0.001 m per mm), umax 2.5 V.
+    const auto preset = xyt::findGtPreset(args[1].toStdString());
+    const xyt::GtDesign d = xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp);
+    xyt::LoopSimulationOptions options;
+    options.dtSeconds = dt;
+    options.umaxVolts = 2.5;
+    options.modelUnitsPerPositionUnit = preset->modelUnitsPerPositionUnit;
+    const auto times = xyt::sampleTimes(duration, dt);
+    const xyt::CubicTrajectory c(0.0, 600.0, 0.0, 130.0);
+    const xyt::Sinusoid s{25.0, 0.06, std::numbers::pi / 2.0, 0.0, 10.0};
+    const std::vector<double> r =
+        cubic ? xyt::sampled([&](double t) { return c.position(t); }, times)
+              : xyt::sampled([&](double t) { return s.value(t); }, times);
+    const xyt::SimulationResult core = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
+    const xyt::TrackingMetrics tm = xyt::trackingMetrics(core);
+    const xyt::StepCharacteristics step = xyt::stepCharacteristics(d.closedLoop);
+    // Same computation, same binary code path: exact up to the JSON text round trip, except
+    // the phase (90 degrees -> rad, 1 ulp): 1e-12 relative.
+    XYT_COMPARE_NEAR(m["rmse"].toDouble(), tm.rmse, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(m["max_abs_error"].toDouble(), tm.maxAbsError, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(m["max_abs_error_pct"].toDouble(), tm.maxAbsErrorPct, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(m["max_abs_u"].toDouble(), tm.maxAbsU, 1e-12, 0.0);
+    QCOMPARE(m["saturated"].toBool(), tm.saturated);
+    XYT_COMPARE_NEAR(m["saturated_time"].toDouble(), tm.saturatedTimeSeconds, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(m["settling_time"].toDouble(), step.settlingTimeSeconds, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(m["overshoot_pct"].toDouble(), step.overshootPct, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(m["itae"].toDouble(), tm.itae, 1e-12, 0.0);
+    if (cubic)
+        QVERIFY(!tm.saturated); // paper 000: no saturation on the cubic (0.33 V, see tst_simulation)
+
+    // The CSV: header t,r,y,e,u and one row per sample, written with 10 significant digits.
+    QFile file(csvPath);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    QCOMPARE(file.readLine().trimmed(), QByteArray("t,r,y,e,u"));
+    std::size_t k = 0;
+    while (!file.atEnd()) {
+        const QList<QByteArray> cells = file.readLine().trimmed().split(',');
+        QCOMPARE(cells.size(), qsizetype(5));
+        QVERIFY(k < core.t.size());
+        const double expected[] = {core.t[k], core.r[k], core.y[k], core.e[k], core.u[k]};
+        for (int j = 0; j < 5; ++j)
+            XYT_COMPARE_NEAR(cells[j].toDouble(), expected[j], 1e-9, 1e-12);
+        ++k;
+    }
+    QCOMPARE(k, core.t.size());
+}
+
+void TstCliGt::unstableDesignIsNotAnError() {
+    // kp = 10000 is past the Routh bound kp < a1 a2 / k0 = 5903 of the lower base: exit 0, the
+    // result says stable: false, step figures are null, every number is finite.
+    const auto run = xyt::test::runCli({"simulate", "--preset", "lower-base", "--kp", "10000",
+                                        "--trajectory", "cubic", "--xf", "600", "--tf", "130"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    requireNoNonFinite(run.out);
+    const QJsonObject o = run.json();
+    QCOMPARE(o["stable"].toBool(true), false);
+    QVERIFY(o["metrics"].toObject()["settling_time"].isNull());
+    QVERIFY(o["metrics"].toObject()["overshoot_pct"].isNull());
+    QVERIFY(o["metrics"].toObject()["rmse"].isDouble());
+    const auto gt = xyt::test::runCli({"gt", "--preset", "lower-base", "--kp", "10000"});
+    QCOMPARE(gt.exitCode, 0);
+    QCOMPARE(gt.json()["stable"].toBool(true), false);
+}
+
+void TstCliGt::reportReadsTheDefaultDesign() {
+    const auto run = xyt::test::runCli({"report"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    requireNoNonFinite(run.out);
+    const QString text = QString::fromUtf8(run.out);
+    // Both bases with the values of Eq. 17-18 and 15 (upper f1 = 68.18, not the printed 64.18).
+    QVERIFY2(text.contains("f1 = 62.6500  f2 = 916.2500  f3 = 291.7500"), qPrintable(text));
+    QVERIFY2(text.contains("f1 = 68.1800  f2 = 863.0000  f3 = 733.2000"), qPrintable(text));
+    QVERIFY(text.contains("cubic 0 -> 600 in 130 s"));
+    QVERIFY(text.contains("saturated no"));
+    QVERIFY(text.contains("Circle contour"));
+}
+
+void TstCliGt::badInputExitsWithTwo_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("argument");
+    const QStringList cubic{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--tf", "130"};
+    QTest::newRow("wn < 0") << QStringList{"gt", "--preset", "lower-base", "--wn", "-1"} << "--wn";
+    QTest::newRow("wn = 0") << QStringList{"gt", "--preset", "lower-base", "--wn", "0"} << "--wn";
+    QTest::newRow("wn NaN as text") << QStringList{"gt", "--preset", "lower-base", "--wn", "nan"} << "--wn";
+    QTest::newRow("kp inf as text") << QStringList{"gt", "--preset", "lower-base", "--kp", "inf"} << "--kp";
+    QTest::newRow("kp = 0") << QStringList{"gt", "--preset", "lower-base", "--kp", "0"} << "--kp";
+    QTest::newRow("kp not a number") << QStringList{"gt", "--preset", "lower-base", "--kp", "thirty"} << "--kp";
+    QTest::newRow("k0 = 0") << QStringList{"gt", "--k0", "0", "--a1", "1", "--a2", "1", "--wn", "1", "--kp", "1"} << "--k0";
+    QTest::newRow("a1 -Infinity") << QStringList{"gt", "--preset", "upper-base", "--a1", "-Infinity"} << "--a1";
+    QTest::newRow("a2 missing without preset") << QStringList{"gt", "--k0", "1", "--a1", "1", "--wn", "1", "--kp", "1"} << "--a2";
+    QTest::newRow("unknown preset") << QStringList{"gt", "--preset", "middle-base"} << "--preset";
+    QTest::newRow("unknown option") << QStringList{"gt", "--preset", "lower-base", "--kd", "1"} << "--kd";
+    QTest::newRow("option given twice") << QStringList{"gt", "--preset", "lower-base", "--wn", "1", "--wn", "2"} << "--wn";
+    QTest::newRow("option without value") << QStringList{"gt", "--preset", "lower-base", "--wn"} << "--wn";
+    QTest::newRow("dt = 0") << cubic + QStringList{"--dt", "0"} << "--dt";
+    QTest::newRow("dt < 0") << cubic + QStringList{"--dt", "-0.01"} << "--dt";
+    QTest::newRow("duration too long for memory") << cubic + QStringList{"--duration", "1e9"} << "--duration";
+    QTest::newRow("duration NaN") << cubic + QStringList{"--duration", "NaN"} << "--duration";
+    QTest::newRow("duration = 0") << cubic + QStringList{"--duration", "0"} << "--duration";
+    QTest::newRow("umax = 0") << cubic + QStringList{"--umax", "0"} << "--umax";
+    QTest::newRow("umax inf") << cubic + QStringList{"--umax", "inf"} << "--umax";
+    QTest::newRow("xf NaN") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "nan", "--tf", "130"} << "--xf";
+    // Regression: the core's "tf" used to reach stderr without the "--" of the argument.
+    QTest::newRow("tf before t0") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--t0", "100", "--tf", "50"} << "--tf";
+    QTest::newRow("missing trajectory") << QStringList{"simulate", "--preset", "lower-base"} << "--trajectory";
+    QTest::newRow("unknown trajectory") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "spiral"} << "--trajectory";
+    QTest::newRow("sine omega = 0") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude", "25", "--omega", "0"} << "--omega";
+    QTest::newRow("sine ramp-in < 0") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude", "25", "--omega", "0.06", "--ramp-in", "-1"} << "--ramp-in";
+    QTest::newRow("unit scale = 0") << cubic + QStringList{"--model-unit-scale", "0"} << "--model-unit-scale";
+    QTest::newRow("csv not writable") << cubic + QStringList{"--csv", "/nonexistent-dir/run.csv"} << "--csv";
+    QTest::newRow("report takes no option") << QStringList{"report", "--wn", "2"} << "--wn";
+}
+
+void TstCliGt::badInputExitsWithTwo() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, argument);
+    const auto run = xyt::test::runCli(args);
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 2);
-    QVERIFY2(run.err.contains("--wn"), run.err.constData());
     QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY2(run.err.contains((argument + ":").toUtf8()), run.err.constData());
     QVERIFY(run.out.isEmpty());
 }
 

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// Checks shared by the core tests: which field an InvalidInput names, and coefficient-wise
+// polynomial comparison.
+
+#include "core/errors.h"
+#include "core/polynomial.h"
+#include "tests/support/tolerance.h"
+
+#include <QString>
+
+namespace xyt::test {
+
+/// The field of the InvalidInput that @p f throws, or "<no exception>".
+template <class F> QString invalidInputField(F&& f) {
+    try {
+        f();
+    } catch (const xyt::InvalidInput& e) {
+        return QString::fromStdString(e.field());
+    }
+    return QStringLiteral("<no exception>");
+}
+
+/// Same degree and every coefficient within relTol of the largest expected coefficient.
+inline void comparePolynomials(const Polynomial& actual, const Polynomial& expected, double relTol) {
+    QCOMPARE(actual.degree(), expected.degree());
+    const double scale = expected.maxAbsCoefficient();
+    for (int i = 0; i <= expected.degree(); ++i)
+        XYT_COMPARE_NEAR(actual.coefficient(i), expected.coefficient(i), 0.0, relTol * scale);
+}
+
+} // namespace xyt::test
