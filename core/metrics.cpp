@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 
 namespace xyt {
@@ -58,7 +59,9 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, doub
         throw InvalidInput("samples", "must be at least 100");
     StepCharacteristics out;
     const auto poles = closedLoop.poles();
-    out.stable = closedLoop.isStable();
+    // Same test as TransferFunction::isStable (real part < 0), on the poles already at hand.
+    out.stable = std::all_of(poles.begin(), poles.end(),
+                             [](const std::complex<double>& p) { return p.real() < 0.0; });
     if (!out.stable)
         return out;
     out.finalValue = closedLoop.dcGain();
@@ -68,30 +71,57 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, doub
     const StateSpace ss = realize(closedLoop);
     const Eigen::Index n = ss.states();
     const double scale = std::max(std::abs(out.finalValue), 1e-300);
+    const double direct = ss.d(0, 0);
     double horizon = poles.empty() ? 1.0 : 12.0 / slowest;
+
+    // The recursion runs on raw arrays: this is called for every point of a design sweep, and
+    // Eigen's dynamic temporaries would allocate at every sample.
+    const auto un = static_cast<std::size_t>(n);
+    std::vector<double> c(un), x(un), next(un), xOutside(un), phi(un * un), gamma(un);
+    for (std::size_t j = 0; j < un; ++j)
+        c[j] = ss.c(0, static_cast<Eigen::Index>(j));
+    auto output = [&](const std::vector<double>& state) {
+        double acc = direct;
+        for (std::size_t j = 0; j < un; ++j)
+            acc += c[j] * state[j];
+        return acc;
+    };
+    auto advance = [&](const std::vector<double>& from, std::vector<double>& to) {
+        for (std::size_t i = 0; i < un; ++i) {
+            double acc = gamma[i];
+            for (std::size_t j = 0; j < un; ++j)
+                acc += phi[i * un + j] * from[j];
+            to[i] = acc;
+        }
+    };
 
     for (int attempt = 0; attempt < 6; ++attempt, horizon *= 2.0) {
         const double dt = horizon / samples;
         const StateSpace d = discretizeZoh(ss, dt);
-        Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-        double peak = ss.d(0, 0);
+        for (std::size_t i = 0; i < un; ++i) {
+            gamma[i] = d.b(static_cast<Eigen::Index>(i), 0);
+            for (std::size_t j = 0; j < un; ++j)
+                phi[i * un + j] = d.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+        }
+        std::fill(x.begin(), x.end(), 0.0);
+        double peak = direct;
         double peakTime = 0.0;
-        // Last sample index outside the band, with the sample after it.
+        // Last sample index outside the band, with its state (the sample after it is recomputed).
         int lastOutside = -1;
-        std::vector<double> y(static_cast<std::size_t>(samples) + 1);
-        std::vector<Eigen::VectorXd> states;
-        states.reserve(y.size());
+        double yOutside = 0.0;
         for (int k = 0; k <= samples; ++k) {
-            const double yk = (ss.c * x)(0) + ss.d(0, 0);
-            y[static_cast<std::size_t>(k)] = yk;
-            states.push_back(x);
+            const double yk = output(x);
             if (yk > peak) {
                 peak = yk;
                 peakTime = k * dt;
             }
-            if (std::abs(yk - out.finalValue) > band * scale)
+            if (std::abs(yk - out.finalValue) > band * scale) {
                 lastOutside = k;
-            x = d.a * x + d.b.col(0);
+                yOutside = yk;
+                xOutside = x;
+            }
+            advance(x, next);
+            x.swap(next);
         }
         if (lastOutside == samples)
             continue; // still outside the band at the horizon: look further
@@ -103,11 +133,21 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, doub
         }
         // Hermite interpolation on [t_k, t_k+1] of y - final crossing +-band*scale.
         const int k = lastOutside;
-        auto slope = [&](int i) {
-            return (ss.c * (ss.a * states[static_cast<std::size_t>(i)] + ss.b.col(0)))(0);
+        std::vector<double>& xAfter = next;
+        advance(xOutside, xAfter);
+        auto slope = [&](const std::vector<double>& state) {
+            double acc = 0.0; // y' = C (A x + B)
+            for (std::size_t i = 0; i < un; ++i) {
+                double dx = ss.b(static_cast<Eigen::Index>(i), 0);
+                for (std::size_t j = 0; j < un; ++j)
+                    dx += ss.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) *
+                          state[j];
+                acc += c[i] * dx;
+            }
+            return acc;
         };
-        const double y0 = y[static_cast<std::size_t>(k)], y1 = y[static_cast<std::size_t>(k + 1)];
-        const double m0 = slope(k) * dt, m1 = slope(k + 1) * dt;
+        const double y0 = yOutside, y1 = output(xAfter);
+        const double m0 = slope(xOutside) * dt, m1 = slope(xAfter) * dt;
         const double target = out.finalValue + std::copysign(band * scale, y0 - out.finalValue);
         auto h = [&](double s) {
             const double s2 = s * s, s3 = s2 * s;
