@@ -49,6 +49,92 @@ TrackingMetrics trackingMetrics(const SimulationResult& run) {
     return m;
 }
 
+namespace {
+
+/// Where the step response leaves the band for the last time, and its largest sample.
+struct StepScan {
+    double peak = 0.0, peakTime = 0.0;
+    double tOutside = -1.0; ///< < 0: never outside the band
+    double yOutside = 0.0, yAfter = 0.0, slopeOutside = 0.0, slopeAfter = 0.0, dtOutside = 0.0;
+    double tEnd = 0.0;
+    bool outsideAtEnd = false;
+};
+
+/**
+ * The sampled step response on the multi-scale grid of stepCharacteristics, with fixed-size
+ * matrices when the order is known at compile time (N = 4: every Guillemin-Truxal closed loop,
+ * which a design sweep evaluates thousands of times) and dynamic ones otherwise; no allocation
+ * inside the recursion either way.
+ */
+template <int N>
+StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, double firstSpan,
+                  double horizon, double longestHorizon, int samples) {
+    using Matrix = Eigen::Matrix<double, N, N>;
+    using Vector = Eigen::Matrix<double, N, 1>;
+    const Eigen::Index n = ss.states();
+    const Matrix a = ss.a;
+    const Vector b = ss.b.col(0);
+    const Vector c = ss.c.row(0).transpose();
+    const double direct = ss.d(0, 0);
+    Matrix phi(n, n);
+    Vector gamma(n), x = Vector::Zero(n), next(n), xOutside(n);
+    auto discretize = [&](double dt) {
+        const StateSpace d = discretizeZoh(ss, dt);
+        phi = d.a;
+        gamma = d.b.col(0);
+    };
+    auto output = [&](const Vector& state) { return direct + c.dot(state); };
+    auto slope = [&](const Vector& state) { return c.dot(a * state + b); }; // y' = C (A x + B)
+
+    StepScan scan;
+    scan.peak = direct;
+    double spanEnd = firstSpan;
+    double dt = firstSpan / samples;
+    double t = 0.0;
+    discretize(dt);
+    for (;;) {
+        for (int k = 0; k < samples; ++k) {
+            const double yk = output(x);
+            if (yk > scan.peak) {
+                scan.peak = yk;
+                scan.peakTime = t;
+            }
+            if (std::abs(yk - finalValue) > bandAbs) {
+                scan.tOutside = t;
+                scan.yOutside = yk;
+                scan.dtOutside = dt;
+                xOutside = x;
+            }
+            next.noalias() = phi * x;
+            x = next + gamma;
+            t = spanEnd - (samples - 1 - k) * dt; // exact at the span end, no drift
+        }
+        scan.outsideAtEnd = std::abs(output(x) - finalValue) > bandAbs;
+        if (spanEnd >= longestHorizon || (spanEnd >= horizon && !scan.outsideAtEnd))
+            break;
+        dt = 3.0 * spanEnd / samples; // the next span quadruples the time reached
+        spanEnd *= 4.0;
+        discretize(dt);
+    }
+    const double yEnd = output(x);
+    if (yEnd > scan.peak) {
+        scan.peak = yEnd;
+        scan.peakTime = t;
+    }
+    scan.tEnd = spanEnd;
+    if (scan.tOutside >= 0.0 && !scan.outsideAtEnd) {
+        discretize(scan.dtOutside);
+        next.noalias() = phi * xOutside;
+        next += gamma;
+        scan.yAfter = output(next);
+        scan.slopeOutside = slope(xOutside);
+        scan.slopeAfter = slope(next);
+    }
+    return scan;
+}
+
+} // namespace
+
 StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, double band,
                                         int samples) {
     if (closedLoop.isDiscrete() || !closedLoop.isProper())
@@ -66,108 +152,59 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, doub
         return out;
     out.finalValue = closedLoop.dcGain();
     double slowest = std::numeric_limits<double>::infinity();
-    for (const auto& p : poles)
+    double fastest = 0.0;
+    for (const auto& p : poles) {
         slowest = std::min(slowest, -p.real());
+        fastest = std::max(fastest, std::abs(p));
+    }
     const StateSpace ss = realize(closedLoop);
-    const Eigen::Index n = ss.states();
     const double scale = std::max(std::abs(out.finalValue), 1e-300);
-    const double direct = ss.d(0, 0);
-    double horizon = poles.empty() ? 1.0 : 12.0 / slowest;
-
-    // The recursion runs on raw arrays: this is called for every point of a design sweep, and
-    // Eigen's dynamic temporaries would allocate at every sample.
-    const auto un = static_cast<std::size_t>(n);
-    std::vector<double> c(un), x(un), next(un), xOutside(un), phi(un * un), gamma(un);
-    for (std::size_t j = 0; j < un; ++j)
-        c[j] = ss.c(0, static_cast<Eigen::Index>(j));
-    auto output = [&](const std::vector<double>& state) {
-        double acc = direct;
-        for (std::size_t j = 0; j < un; ++j)
-            acc += c[j] * state[j];
-        return acc;
-    };
-    auto advance = [&](const std::vector<double>& from, std::vector<double>& to) {
-        for (std::size_t i = 0; i < un; ++i) {
-            double acc = gamma[i];
-            for (std::size_t j = 0; j < un; ++j)
-                acc += phi[i * un + j] * from[j];
-            to[i] = acc;
-        }
-    };
-
-    for (int attempt = 0; attempt < 6; ++attempt, horizon *= 2.0) {
-        const double dt = horizon / samples;
-        const StateSpace d = discretizeZoh(ss, dt);
-        for (std::size_t i = 0; i < un; ++i) {
-            gamma[i] = d.b(static_cast<Eigen::Index>(i), 0);
-            for (std::size_t j = 0; j < un; ++j)
-                phi[i * un + j] = d.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
-        }
-        std::fill(x.begin(), x.end(), 0.0);
-        double peak = direct;
-        double peakTime = 0.0;
-        // Last sample index outside the band, with its state (the sample after it is recomputed).
-        int lastOutside = -1;
-        double yOutside = 0.0;
-        for (int k = 0; k <= samples; ++k) {
-            const double yk = output(x);
-            if (yk > peak) {
-                peak = yk;
-                peakTime = k * dt;
-            }
-            if (std::abs(yk - out.finalValue) > band * scale) {
-                lastOutside = k;
-                yOutside = yk;
-                xOutside = x;
-            }
-            advance(x, next);
-            x.swap(next);
-        }
-        if (lastOutside == samples)
-            continue; // still outside the band at the horizon: look further
-        out.overshootPct = std::max(0.0, (peak - out.finalValue) / scale * 100.0);
-        out.peakTimeSeconds = peakTime;
-        if (lastOutside < 0) {
-            out.settlingTimeSeconds = 0.0;
-            return out;
-        }
-        // Hermite interpolation on [t_k, t_k+1] of y - final crossing +-band*scale.
-        const int k = lastOutside;
-        std::vector<double>& xAfter = next;
-        advance(xOutside, xAfter);
-        auto slope = [&](const std::vector<double>& state) {
-            double acc = 0.0; // y' = C (A x + B)
-            for (std::size_t i = 0; i < un; ++i) {
-                double dx = ss.b(static_cast<Eigen::Index>(i), 0);
-                for (std::size_t j = 0; j < un; ++j)
-                    dx += ss.a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) *
-                          state[j];
-                acc += c[i] * dx;
-            }
-            return acc;
-        };
-        const double y0 = yOutside, y1 = output(xAfter);
-        const double m0 = slope(xOutside) * dt, m1 = slope(xAfter) * dt;
-        const double target = out.finalValue + std::copysign(band * scale, y0 - out.finalValue);
-        auto h = [&](double s) {
-            const double s2 = s * s, s3 = s2 * s;
-            return (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * y1 +
-                   (s3 - s2) * m1 - target;
-        };
-        double lo = 0.0, hi = 1.0;
-        const double sign0 = h(lo);
-        for (int it = 0; it < 60; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            if ((h(mid) > 0) == (sign0 > 0))
-                lo = mid;
-            else
-                hi = mid;
-        }
-        out.settlingTimeSeconds = (k + 0.5 * (lo + hi)) * dt;
+    const double bandAbs = band * scale;
+    const double horizon = poles.empty() ? 1.0 : 12.0 / slowest;
+    // Never inside the band within 12 * 32 time constants: then the horizon reached is reported.
+    const double longestHorizon = horizon * 32.0;
+    // Multi-scale time grid: a closed loop with a slow pole-zero pair (the PI zero of paper 000
+    // with its nearby pole) settles on the time scale of its fast poles but needs a horizon set
+    // by the slow one, up to 1e7 times longer. The first span [0, T0] has T0 = 50 / |p|max
+    // (>= 125 samples per period of the fastest oscillation with the default 500); each later
+    // span quadruples the time reached, with @p samples steps (dt = 3 t / samples).
+    const double firstSpan = fastest > 0.0 ? std::min(horizon, 50.0 / fastest) : horizon;
+    const StepScan scan =
+        ss.states() == 4
+            ? scanStep<4>(ss, out.finalValue, bandAbs, firstSpan, horizon, longestHorizon, samples)
+            : scanStep<Eigen::Dynamic>(ss, out.finalValue, bandAbs, firstSpan, horizon,
+                                       longestHorizon, samples);
+    out.overshootPct = std::max(0.0, (scan.peak - out.finalValue) / scale * 100.0);
+    out.peakTimeSeconds = scan.peakTime;
+    if (scan.outsideAtEnd) {
+        out.settlingTimeSeconds = scan.tEnd; // the horizon reached
         return out;
     }
-    // Never inside the band within 12 * 2^5 time constants: report the horizon reached.
-    out.settlingTimeSeconds = horizon;
+    if (scan.tOutside < 0.0) {
+        out.settlingTimeSeconds = 0.0;
+        return out;
+    }
+    // Hermite interpolation on [t_k, t_k + dt] of y - final crossing +-band*scale, with the
+    // exact derivative at both ends.
+    const double dt = scan.dtOutside;
+    const double y0 = scan.yOutside, y1 = scan.yAfter;
+    const double m0 = scan.slopeOutside * dt, m1 = scan.slopeAfter * dt;
+    const double target = out.finalValue + std::copysign(bandAbs, y0 - out.finalValue);
+    auto h = [&](double s) {
+        const double s2 = s * s, s3 = s2 * s;
+        return (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * y1 +
+               (s3 - s2) * m1 - target;
+    };
+    double lo = 0.0, hi = 1.0;
+    const double sign0 = h(lo);
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if ((h(mid) > 0) == (sign0 > 0))
+            lo = mid;
+        else
+            hi = mid;
+    }
+    out.settlingTimeSeconds = scan.tOutside + 0.5 * (lo + hi) * dt;
     return out;
 }
 
