@@ -10,5 +10,6 @@ namespace xyt::cli {
 int runGt(const QStringList& args);
 int runSimulate(const QStringList& args);
 int runReport(const QStringList& args);
+int runSweep(const QStringList& args);
 
 } // namespace xyt::cli
