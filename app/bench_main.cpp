@@ -2,6 +2,7 @@
 // xytune-bench: the one benchmark program (not part of the test run). One line per figure:
 //   name: median_us=... min_us=... max_us=... runs=...
 // Optional argument: a substring; only figures whose name contains it are run.
+#include "core/design_sweep.h"
 #include "core/guillemin_truxal.h"
 #include "core/root_locus.h"
 #include "core/simulation.h"
@@ -78,6 +79,31 @@ int main(int argc, char* argv[]) {
             const auto locus = xyt::rootLocus(design.openLoop);
             sink = sink + locus.gains.back();
         });
+        // The design-space study of paper 000: 100 x 100 log grid around the lower-base design
+        // (wn 0.2..20 rad/s, kp 3..3000), cubic 0 -> 600 mm in 130 s at dt 0.01, |u| <= 2.5 V,
+        // the paper's specification, ITAE criterion, with refinement when a point is feasible.
+        const xyt::CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
+        xyt::DesignProblem problem;
+        problem.plant = lower.plant;
+        problem.modelUnitsPerPositionUnit = lower.modelUnitsPerPositionUnit;
+        problem.dtSeconds = 0.01;
+        problem.reference = xyt::sampled([&](double t) { return cubic.position(t); },
+                                         xyt::sampleTimes(130.0, 0.01));
+        const xyt::SweepAxis wn{0.2, 20.0, 100, true}, kp{3.0, 3000.0, 100, true};
+        for (const int threads : {0, 1}) {
+            xyt::SweepOptions options;
+            options.threads = threads;
+            benchmark(filter, threads == 0 ? "sweep_100x100" : "sweep_100x100_1thread", [&] {
+                const auto r = xyt::sweepDesignSpace(problem, wn, kp, options);
+                sink = sink + r.feasibleCount;
+            }, 3, 0.0);
+        }
+        // The same with the overshoot limit at 1 %, so that refinement runs too.
+        problem.spec.maxOvershootPct = 1.0;
+        benchmark(filter, "sweep_100x100_overshoot1pct_refined", [&] {
+            const auto r = xyt::sweepDesignSpace(problem, wn, kp, {});
+            sink = sink + r.feasibleCount;
+        }, 3, 0.0);
     }
     return 0;
 }

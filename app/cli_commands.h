@@ -15,5 +15,6 @@ int runExport(const QStringList& args);
 /// The report of a saved session (xytune-cli report SESSION.json).
 int runSessionReport(const QString& path);
 int runRlocus(const QStringList& args);
+int runSweep(const QStringList& args);
 
 } // namespace xyt::cli

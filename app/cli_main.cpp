@@ -34,6 +34,14 @@ constexpr const char* kUsage =
     "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
     "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"
     "            [--kmax K] [--max-step 0.01 (fraction of the view)] [--max-points 5000]\n"
+    "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
+    "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
+    "            [--criterion itae|max_error|rmse|max_u] [--threads N] [--csv FILE]\n"
+    "            [--max-settling 100] [--max-overshoot 0] [--max-error 2] (spec; --umax too).\n"
+    "            JSON: best {wn, kp, ki, metrics, checks, index [i_wn, i_kp]} and refined\n"
+    "            {...} (null when nothing is feasible), feasible_count, grid {wn, kp},\n"
+    "            points[i_wn][i_kp] (rows over wn, columns over kp). CSV: one row per point in\n"
+    "            the same order (wn outer, kp inner); undefined metrics are empty fields.\n"
     "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
 
@@ -54,6 +62,7 @@ int main(int argc, char* argv[]) {
         {"new", xyt::cli::runNew},
         {"export", xyt::cli::runExport},
         {"rlocus", xyt::cli::runRlocus},
+        {"sweep", xyt::cli::runSweep},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

@@ -34,13 +34,21 @@ struct StepCharacteristics {
 
 /**
  * Settling time (band 2 % by default) and overshoot of the unit step response, computed exactly
- * at @p samples points (zero-order-hold discretization is exact for a step) over a horizon of
- * 12 time constants of the slowest pole (extended while the response is still outside the band),
- * with the settling instant interpolated between samples by a cubic Hermite polynomial using the
- * exact derivative y' = C (A x + B).
- * @throws InvalidInput "system" unless continuous and proper, "band" unless in (0, 1).
+ * at the samples (zero-order-hold discretization is exact for a step) of a multi-scale time grid:
+ * a first span of 50 / |p|max seconds (|p|max the largest pole modulus), then spans that each
+ * quadruple the time reached, every span with @p samples steps (so dt <= 3 t / samples after
+ * the first span), up to a horizon of 12 time constants of the slowest pole (extended, by
+ * further spans, to at most 12 * 32, while the response is still outside the band). The settling instant is
+ * interpolated inside its step by a cubic Hermite polynomial using the exact derivative
+ * y' = C (A x + B); the overshoot and peak time are those of the largest sample.
+ *
+ * Why multi-scale: with the slow pole-zero pair of a PI design (paper 000, zero at -psi1 with a
+ * pole next to it) the slowest time constant is up to 1e7 times the settling time; a uniform
+ * grid over 12 slow time constants would step over the whole transient.
+ * @throws InvalidInput "system" unless continuous and proper, "band" unless in (0, 1),
+ *         "samples" unless >= 100.
  */
 StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, double band = 0.02,
-                                        int samples = 4000);
+                                        int samples = 500);
 
 } // namespace xyt

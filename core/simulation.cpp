@@ -45,13 +45,46 @@ StepMatrices fohStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double 
 
 } // namespace
 
-SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,
-                              const std::vector<double>& reference,
-                              const LoopSimulationOptions& options) {
+LoopModes loopModes(const TransferFunction& plant, const TransferFunction& controller) {
     if (plant.isDiscrete() || !plant.isStrictlyProper())
         throw InvalidInput("plant", "must be a continuous, strictly proper transfer function");
     if (controller.isDiscrete() || !controller.isProper())
         throw InvalidInput("controller", "must be a continuous, proper transfer function");
+    const StateSpace p = realize(plant);
+    const StateSpace c = realize(controller);
+    LoopModes m;
+    const Eigen::Index np = m.plantStates = p.states();
+    const Eigen::Index nc = m.controllerStates = c.states();
+    const Eigen::Index n = np + nc;
+    const double dc = m.controllerD = c.d(0, 0);
+    m.plantA = p.a;
+    m.plantC = p.c.row(0);
+    m.controllerC = c.c.row(0);
+
+    // Linear mode: u = Cc xc + Dc (r - Cp xp).
+    m.aLinear = Eigen::MatrixXd::Zero(n, n);
+    m.aLinear.topLeftCorner(np, np) = p.a - dc * p.b * p.c;
+    m.aLinear.topRightCorner(np, nc) = p.b * c.c;
+    m.aLinear.bottomLeftCorner(nc, np) = -c.b * p.c;
+    m.aLinear.bottomRightCorner(nc, nc) = c.a;
+    m.bLinear.resize(n, 1);
+    m.bLinear << dc * p.b, c.b;
+
+    // Saturated mode: inputs [r, u] with u held at +-umax over the step.
+    m.aClipped = Eigen::MatrixXd::Zero(n, n);
+    m.aClipped.topLeftCorner(np, np) = p.a;
+    m.aClipped.bottomLeftCorner(nc, np) = -c.b * p.c;
+    m.aClipped.bottomRightCorner(nc, nc) = c.a;
+    m.bClipped = Eigen::MatrixXd::Zero(n, 2);
+    m.bClipped.bottomLeftCorner(nc, 1) = c.b;
+    m.bClipped.topRightCorner(np, 1) = p.b;
+    return m;
+}
+
+SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,
+                              const std::vector<double>& reference,
+                              const LoopSimulationOptions& options) {
+    const LoopModes modes = loopModes(plant, controller);
     requirePositive(options.dtSeconds, "dt");
     if (std::isnan(options.umaxVolts) || !(options.umaxVolts > 0.0))
         throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
@@ -60,42 +93,21 @@ SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunct
     requireFiniteSignal(reference, "reference");
     const double unit = options.modelUnitsPerPositionUnit;
 
-    const StateSpace p = realize(plant);
-    const StateSpace c = realize(controller);
-    const Eigen::Index np = p.states();
-    const Eigen::Index nc = c.states();
+    const Eigen::Index np = modes.plantStates;
+    const Eigen::Index nc = modes.controllerStates;
     const Eigen::Index n = np + nc;
-    const double dc = c.d(0, 0);
-
-    // Linear mode: u = Cc xc + Dc (r - Cp xp).
-    Eigen::MatrixXd aLin = Eigen::MatrixXd::Zero(n, n);
-    aLin.topLeftCorner(np, np) = p.a - dc * p.b * p.c;
-    aLin.topRightCorner(np, nc) = p.b * c.c;
-    aLin.bottomLeftCorner(nc, np) = -c.b * p.c;
-    aLin.bottomRightCorner(nc, nc) = c.a;
-    Eigen::MatrixXd bLin(n, 1);
-    bLin << dc * p.b, c.b;
-    const StepMatrices linear = fohStep(aLin, bLin, options.dtSeconds);
-
-    // Saturated mode: inputs [r, u] with u held at +-umax over the step.
+    const double dc = modes.controllerD;
+    const StepMatrices linear = fohStep(modes.aLinear, modes.bLinear, options.dtSeconds);
     const bool limited = std::isfinite(options.umaxVolts);
     StepMatrices clipped;
-    if (limited) {
-        Eigen::MatrixXd aSat = Eigen::MatrixXd::Zero(n, n);
-        aSat.topLeftCorner(np, np) = p.a;
-        aSat.bottomLeftCorner(nc, np) = -c.b * p.c;
-        aSat.bottomRightCorner(nc, nc) = c.a;
-        Eigen::MatrixXd bSat = Eigen::MatrixXd::Zero(n, 2);
-        bSat.bottomLeftCorner(nc, 1) = c.b;
-        bSat.topRightCorner(np, 1) = p.b;
-        clipped = fohStep(aSat, bSat, options.dtSeconds);
-    }
+    if (limited)
+        clipped = fohStep(modes.aClipped, modes.bClipped, options.dtSeconds);
 
     std::vector<double> x(static_cast<std::size_t>(n), 0.0), next(x.size());
     if (options.initialOutput != 0.0) {
         // At rest with output y0: A_p x = 0 and C_p x = y0 (only possible with a pole at 0).
         Eigen::MatrixXd m(np + 1, np);
-        m << p.a, p.c;
+        m << modes.plantA, modes.plantC;
         Eigen::VectorXd rhs = Eigen::VectorXd::Zero(np + 1);
         rhs(np) = options.initialOutput * unit;
         const Eigen::VectorXd xp = m.completeOrthogonalDecomposition().solve(rhs);
@@ -119,11 +131,11 @@ SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunct
     for (std::size_t k = 0; k < count; ++k) {
         double y = 0.0;
         for (Eigen::Index j = 0; j < np; ++j)
-            y += p.c(0, j) * x[static_cast<std::size_t>(j)];
+            y += modes.plantC(j) * x[static_cast<std::size_t>(j)];
         const double rk = reference[k] * unit;
         double v = dc * (rk - y);
         for (Eigen::Index j = 0; j < nc; ++j)
-            v += c.c(0, j) * x[static_cast<std::size_t>(np + j)];
+            v += modes.controllerC(j) * x[static_cast<std::size_t>(np + j)];
         const bool clip = limited && std::abs(v) > options.umaxVolts;
         const double u = clip ? std::copysign(options.umaxVolts, v) : v;
         out.t[k] = static_cast<double>(k) * options.dtSeconds;

@@ -3,6 +3,8 @@
 
 #include "core/transfer_function.h"
 
+#include <Eigen/Core>
+
 #include <limits>
 #include <vector>
 
@@ -32,6 +34,30 @@ struct SimulationResult {
     double dtSeconds = 0.0;
     double umaxVolts = std::numeric_limits<double>::infinity();
 };
+
+/**
+ * The two linear modes of the loop of simulateLoop, in the state x = [x_p; x_c] (plant states
+ * first, then controller states, both in the controllable canonical form of realize()):
+ *   inside the limits  x' = A_lin x + B_lin r,       u = C_c x_c + D_c (r - C_p x_p),
+ *   clipped            x' = A_sat x + B_sat [r; u],  u = +-umax held,
+ * with A_lin = [A_p - D_c B_p C_p, B_p C_c; -B_c C_p, A_c], B_lin = [D_c B_p; B_c],
+ * A_sat = [A_p, 0; -B_c C_p, A_c], B_sat = [0, B_p; B_c, 0]. The plant output is y = C_p x_p.
+ * Shared by simulateLoop and the fast tracking kernel of the design sweep, so both integrate
+ * the very same equations.
+ * @throws InvalidInput "plant" unless strictly proper and continuous, "controller" unless
+ *         proper and continuous.
+ */
+struct LoopModes {
+    Eigen::MatrixXd aLinear, bLinear;   ///< n x n, n x 1
+    Eigen::MatrixXd aClipped, bClipped; ///< n x n, n x 2 (inputs r, u)
+    Eigen::MatrixXd plantA;             ///< A_p, for initial conditions
+    Eigen::RowVectorXd plantC;          ///< C_p
+    Eigen::RowVectorXd controllerC;     ///< C_c
+    double controllerD = 0.0;           ///< D_c
+    Eigen::Index plantStates = 0;
+    Eigen::Index controllerStates = 0;
+};
+LoopModes loopModes(const TransferFunction& plant, const TransferFunction& controller);
 
 /**
  * Time simulation of the unity-feedback loop r -> e = r - y -> controller -> sat(., umax) ->

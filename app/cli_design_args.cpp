@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli_design_args.h"
+
+#include "app/cli_json.h"
+
+#include "core/errors.h"
+#include "core/trajectory.h"
+
+#include <QSaveFile>
+#include <QTextStream>
+
+#include <cmath>
+#include <numbers>
+
+namespace xyt::cli {
+
+const QStringList kPlantOptions = {"preset", "k0", "a1", "a2"};
+const QStringList kDesignOptions = kPlantOptions + QStringList{"wn", "kp"};
+const QString kUnitOption = "model-unit-scale";
+const QStringList kTrajectoryOptions = {"trajectory", "x0", "xf", "t0", "tf", "v0", "vf",
+                                        "amplitude", "omega", "phase-deg", "ramp-in",
+                                        "duration", "dt", "umax", "csv"};
+
+PlantInput parsePlant(const CliArgs& args) {
+    PlantInput in{};
+    if (const auto name = args.value("preset")) {
+        in.preset = findGtPreset(name->toStdString());
+        if (!in.preset)
+            throw InvalidInput("--preset", "unknown preset '" + name->toStdString() +
+                                               "' (lower-base or upper-base)");
+        in.plant = in.preset->plant;
+        in.modelUnitsPerPositionUnit = in.preset->modelUnitsPerPositionUnit;
+    } else if (!args.has("k0") || !args.has("a1") || !args.has("a2")) {
+        throw InvalidInput(args.has("k0") ? (args.has("a1") ? "--a2" : "--a1") : "--k0",
+                           "is required without --preset");
+    }
+    in.plant.k0 = args.number("k0", in.plant.k0);
+    in.plant.a1 = args.number("a1", in.plant.a1);
+    in.plant.a2 = args.number("a2", in.plant.a2);
+    if (in.plant.k0 == 0.0)
+        throw InvalidInput("--k0", "must be nonzero");
+    return in;
+}
+
+DesignInput parseDesign(const CliArgs& args) {
+    const PlantInput plant = parsePlant(args);
+    const auto& preset = plant.preset;
+    DesignInput in{plant.plant, 0.0, 0.0, plant.modelUnitsPerPositionUnit};
+    in.wn = args.number("wn", preset ? std::optional<double>(preset->omegaNRadPerSec) : std::nullopt);
+    in.kp = args.number("kp", preset ? std::optional<double>(preset->kp) : std::nullopt);
+    if (!(in.wn > 0.0))
+        throw InvalidInput("--wn", "must be greater than zero");
+    if (!(in.kp > 0.0))
+        throw InvalidInput("--kp", "must be greater than zero");
+    return in;
+}
+
+QJsonObject plantJson(const ThirdOrderPlant& plant) {
+    return {{"k0", plant.k0}, {"a1", plant.a1}, {"a2", plant.a2},
+            {"tf", continuousTf(plant.transferFunction())}};
+}
+
+QJsonObject designJson(const GtDesign& d) {
+    return {{"plant", plantJson(d.plant)},
+            {"wn", number(d.omegaNRadPerSec)},
+            {"f1", number(d.f1)},
+            {"f2", number(d.f2)},
+            {"f3", number(d.f3)},
+            {"psi1", number(d.psi1)},
+            {"psi2", number(d.psi2)},
+            {"kp", number(d.kp)},
+            {"ki", number(d.ki)},
+            {"reference_model", continuousTf(d.referenceModel)},
+            {"controller", continuousTf(d.controller)},
+            {"closed_loop",
+             QJsonObject{{"num", descending(d.closedLoop.num())},
+                         {"den", descending(d.closedLoop.den())},
+                         {"poles", complexPairs(d.closedLoopPoles)}}},
+            {"stable", d.stable}};
+}
+
+namespace {
+/// Runs @p f, re-throwing a core field error as the CLI argument of that name ("tf" -> "--tf").
+template <class F> auto asArgument(F&& f) {
+    try {
+        return f();
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("--" + e.field(), e.reason());
+    }
+}
+} // namespace
+
+Reference parseTrajectory(const CliArgs& args) {
+    const QString kind = args.text("trajectory", "");
+    if (kind == "cubic") {
+        const double t0 = args.number("t0", 0.0);
+        const double x0 = args.number("x0", 0.0), xf = args.number("xf"), tf = args.number("tf");
+        const double v0 = args.number("v0", 0.0), vf = args.number("vf", 0.0);
+        const CubicTrajectory cubic =
+            asArgument([&] { return CubicTrajectory(x0, xf, t0, tf, v0, vf); });
+        return {[cubic](double t) { return cubic.position(t); }, cubic.tf(), "cubic"};
+    }
+    if (kind == "sine") {
+        Sinusoid s;
+        s.amplitude = args.number("amplitude");
+        s.omegaRadPerSec = args.number("omega");
+        s.phaseRad = args.number("phase-deg", 0.0) * std::numbers::pi / 180.0;
+        s.rampInSeconds = args.number("ramp-in", 0.0);
+        if (s.rampInSeconds < 0.0)
+            throw InvalidInput("--ramp-in", "must be >= 0");
+        if (s.omegaRadPerSec == 0.0)
+            throw InvalidInput("--omega", "must be nonzero");
+        const double period = 2.0 * std::numbers::pi / std::abs(s.omegaRadPerSec);
+        return {[s](double t) { return s.value(t); }, period + s.rampInSeconds, "sine"};
+    }
+    if (kind.isEmpty())
+        throw InvalidInput("--trajectory", "is required (cubic or sine)");
+    throw InvalidInput("--trajectory", "must be cubic or sine, got '" + kind.toStdString() + "'");
+}
+
+double positiveNumber(const CliArgs& args, const QString& name, double fallback) {
+    const double v = args.number(name, fallback);
+    if (!(v > 0.0))
+        throw InvalidInput(CliArgs::field(name), "must be greater than zero");
+    return v;
+}
+
+SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plant) {
+    SimulationSetup s;
+    s.options.modelUnitsPerPositionUnit =
+        positiveNumber(args, kUnitOption, plant.modelUnitsPerPositionUnit);
+    s.trajectory = parseTrajectory(args);
+    s.options.dtSeconds = positiveNumber(args, "dt", 0.01);
+    s.options.umaxVolts = positiveNumber(args, "umax", 2.5);
+    s.durationSeconds = args.number("duration", s.trajectory.defaultDuration);
+    if (!(s.durationSeconds > 0.0))
+        throw InvalidInput("--duration", "must be greater than zero");
+    std::vector<double> times;
+    times = asArgument([&] { return sampleTimes(s.durationSeconds, s.options.dtSeconds); });
+    s.reference = sampled(s.trajectory.at, times);
+    return s;
+}
+
+void insertSetupJson(QJsonObject& out, const SimulationSetup& setup) {
+    out.insert("trajectory", setup.trajectory.description);
+    out.insert("duration", number(setup.durationSeconds));
+    out.insert("dt", number(setup.options.dtSeconds));
+    out.insert("umax", number(setup.options.umaxVolts));
+    out.insert("model_unit_scale", number(setup.options.modelUnitsPerPositionUnit));
+    out.insert("samples", static_cast<qint64>(setup.reference.size()));
+}
+
+void writeTextFile(const QString& path, const QString& text) {
+    QSaveFile file(path);
+    const auto fail = [&] {
+        return InvalidInput("--csv", "cannot write '" + path.toStdString() +
+                                         "': " + file.errorString().toStdString());
+    };
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+        throw fail();
+    const QByteArray bytes = text.toUtf8();
+    if (file.write(bytes) != bytes.size() || !file.commit())
+        throw fail();
+}
+
+void writeCsv(const QString& path, const SimulationResult& run) {
+    QString text;
+    QTextStream out(&text);
+    out.setRealNumberPrecision(10);
+    out << "t,r,y,e,u\n";
+    for (std::size_t k = 0; k < run.t.size(); ++k)
+        out << run.t[k] << ',' << run.r[k] << ',' << run.y[k] << ',' << run.e[k] << ','
+            << run.u[k] << '\n';
+    out.flush();
+    writeTextFile(path, text);
+}
+
+} // namespace xyt::cli

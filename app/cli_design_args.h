@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// Argument parsing shared by the commands on the Guillemin-Truxal design of paper 000
+// (gt, simulate, sweep): the plant, the design point, the trajectory and the simulation setup.
+
+#include "app/cli_args.h"
+
+#include "core/guillemin_truxal.h"
+#include "core/simulation.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <vector>
+
+namespace xyt::cli {
+
+/// --preset, --k0, --a1, --a2: the plant.
+extern const QStringList kPlantOptions;
+/// kPlantOptions plus --wn, --kp: one design.
+extern const QStringList kDesignOptions;
+/// Only for commands that simulate: model units per trajectory unit.
+extern const QString kUnitOption;
+/// The trajectory and simulation options (--trajectory ... --dt --umax --csv).
+extern const QStringList kTrajectoryOptions;
+
+/// The plant from --preset and/or --k0 --a1 --a2 (explicit values override the preset's).
+struct PlantInput {
+    ThirdOrderPlant plant;
+    double modelUnitsPerPositionUnit = 1.0; ///< the preset's (0.001: m per mm), else 1
+    std::optional<GtPreset> preset;
+};
+PlantInput parsePlant(const CliArgs& args);
+
+/// The plant plus --wn --kp (defaulting to the preset's design).
+struct DesignInput {
+    ThirdOrderPlant plant;
+    double wn;
+    double kp;
+    double modelUnitsPerPositionUnit = 1.0;
+};
+DesignInput parseDesign(const CliArgs& args);
+
+QJsonObject plantJson(const ThirdOrderPlant& plant);
+QJsonObject designJson(const GtDesign& d);
+
+/// A reference signal and its default duration.
+struct Reference {
+    std::function<double(double)> at;
+    double defaultDuration;
+    QString description;
+};
+/// --trajectory cubic|sine and its parameters.
+Reference parseTrajectory(const CliArgs& args);
+
+/// The sampled trajectory and loop options of a simulating command: --dt (0.01), --umax (2.5),
+/// --duration (the trajectory's default), --model-unit-scale (the plant's default).
+struct SimulationSetup {
+    Reference trajectory;
+    std::vector<double> reference;
+    double durationSeconds = 0.0;
+    LoopSimulationOptions options;
+};
+SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plant);
+/// The setup's description keys: trajectory, duration, dt, umax, model_unit_scale, samples.
+void insertSetupJson(QJsonObject& out, const SimulationSetup& setup);
+
+/// A number > 0 from --name, or @p fallback.
+double positiveNumber(const CliArgs& args, const QString& name, double fallback);
+
+/// Writes @p text to @p path atomically. @throws InvalidInput "--csv" when it cannot.
+void writeTextFile(const QString& path, const QString& text);
+/// t,r,y,e,u of one run.
+void writeCsv(const QString& path, const SimulationResult& run);
+
+} // namespace xyt::cli

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// xytune-cli sweep: the design-space study of paper 000 (wn x kp grid, feasibility, best design).
+#include "app/cli_args.h"
+#include "app/cli_commands.h"
+#include "app/cli_design_args.h"
+#include "app/cli_json.h"
+
+#include "core/coefficient_parser.h"
+#include "core/design_sweep.h"
+#include "core/errors.h"
+
+#include <QTextStream>
+
+#include <cmath>
+
+namespace xyt::cli {
+
+namespace {
+
+const QStringList kSweepOptions = {"log", "criterion", "threads", "max-settling",
+                                   "max-overshoot", "max-error"};
+
+/// "MIN:MAX:N" of --wn or --kp.
+SweepAxis parseAxis(const CliArgs& args, const QString& name, bool logarithmic) {
+    const std::string field = CliArgs::field(name);
+    const auto text = args.value(name);
+    if (!text)
+        throw InvalidInput(field, "is required (MIN:MAX:N)");
+    const QStringList parts = text->split(':');
+    if (parts.size() != 3)
+        throw InvalidInput(field, "must be MIN:MAX:N, got '" + text->toStdString() + "'");
+    SweepAxis axis;
+    axis.logarithmic = logarithmic;
+    axis.minValue = parseNumber(parts[0].toStdString(), field);
+    axis.maxValue = parseNumber(parts[1].toStdString(), field);
+    bool ok = false;
+    axis.count = parts[2].toInt(&ok);
+    if (!ok)
+        throw InvalidInput(field, "N must be a whole number, got '" + parts[2].toStdString() + "'");
+    if (logarithmic && !(axis.minValue > 0.0 && axis.maxValue > 0.0))
+        throw InvalidInput(field, "a logarithmic axis needs MIN and MAX greater than zero");
+    axis.validate(field);
+    return axis;
+}
+
+QJsonObject pointJson(const DesignPoint& p) {
+    return {{"wn", number(p.wn)},
+            {"kp", number(p.kp)},
+            {"ki", number(p.ki)},
+            {"stable", p.stable},
+            {"feasible", p.feasible},
+            {"metrics", metricsJson(p.tracking, p.step)}};
+}
+
+QJsonObject checkJson(const SpecificationCheck& c) {
+    return {{"stable", c.stable},
+            {"settling_time", c.settlingTime},
+            {"overshoot", c.overshoot},
+            {"no_saturation", c.noSaturation},
+            {"tracking_error", c.trackingError}};
+}
+
+/// One CSV field: the number, or empty when it is not finite or not defined.
+QString field(double v, bool defined = true) {
+    return defined && std::isfinite(v) ? QString::number(v, 'g', 12) : QString();
+}
+
+QString sweepCsv(const DesignSweepResult& r) {
+    QString text;
+    QTextStream out(&text);
+    out << "i_wn,i_kp,wn,kp,ki,stable,feasible,rmse,max_abs_error,max_abs_error_pct,max_abs_u,"
+           "saturated,saturated_time,settling_time,overshoot_pct,itae\n";
+    for (std::size_t i = 0; i < r.wnValues.size(); ++i)
+        for (std::size_t j = 0; j < r.kpValues.size(); ++j) {
+            const DesignPoint& p = r.at(i, j);
+            const TrackingMetrics& m = p.tracking;
+            out << i << ',' << j << ',' << field(p.wn) << ',' << field(p.kp) << ','
+                << field(p.ki) << ',' << int(p.stable) << ',' << int(p.feasible) << ','
+                << field(m.rmse) << ',' << field(m.maxAbsError) << ','
+                << field(m.maxAbsErrorPct) << ',' << field(m.maxAbsU) << ','
+                << int(m.saturated) << ',' << field(m.saturatedTimeSeconds) << ','
+                << field(p.step.settlingTimeSeconds, p.step.stable) << ','
+                << field(p.step.overshootPct, p.step.stable) << ',' << field(m.itae) << '\n';
+        }
+    out.flush();
+    return text;
+}
+
+} // namespace
+
+int runSweep(const QStringList& argv) {
+    const CliArgs args = CliArgs::parse(argv, {"log"});
+    args.allowOnly(kPlantOptions + QStringList{"wn", "kp", kUnitOption} + kTrajectoryOptions +
+                   kSweepOptions);
+    const PlantInput plant = parsePlant(args);
+    const bool logarithmic = args.flag("log");
+    const SweepAxis wnAxis = parseAxis(args, "wn", logarithmic);
+    const SweepAxis kpAxis = parseAxis(args, "kp", logarithmic);
+    const SimulationSetup setup = parseSimulationSetup(args, plant);
+
+    DesignProblem problem;
+    problem.plant = plant.plant;
+    problem.modelUnitsPerPositionUnit = setup.options.modelUnitsPerPositionUnit;
+    problem.reference = setup.reference;
+    problem.dtSeconds = setup.options.dtSeconds;
+    problem.spec.umaxVolts = setup.options.umaxVolts;
+    problem.spec.maxSettlingTimeSeconds =
+        positiveNumber(args, "max-settling", problem.spec.maxSettlingTimeSeconds);
+    problem.spec.maxOvershootPct = args.number("max-overshoot", problem.spec.maxOvershootPct);
+    if (problem.spec.maxOvershootPct < 0.0)
+        throw InvalidInput("--max-overshoot", "must be zero or more");
+    problem.spec.maxErrorPct = positiveNumber(args, "max-error", problem.spec.maxErrorPct);
+
+    SweepOptions options;
+    const QString criterion = args.text("criterion", "itae");
+    const auto parsed = parseCriterion(criterion.toStdString());
+    if (!parsed)
+        throw InvalidInput("--criterion", "must be itae, max_error, rmse or max_u, got '" +
+                                              criterion.toStdString() + "'");
+    options.criterion = *parsed;
+    options.threads = args.count("threads", 0, 1024);
+    const DesignSweepResult r = sweepDesignSpace(problem, wnAxis, kpAxis, options);
+    if (const auto csv = args.value("csv"))
+        writeTextFile(*csv, sweepCsv(r));
+
+    QJsonObject out;
+    out.insert("plant", plantJson(problem.plant));
+    insertSetupJson(out, setup);
+    out.insert("criterion", QString::fromStdString(criterionName(r.criterion)));
+    out.insert("specification", QJsonObject{{"max_settling_time", problem.spec.maxSettlingTimeSeconds},
+                                            {"max_overshoot_pct", problem.spec.maxOvershootPct},
+                                            {"umax", problem.spec.umaxVolts},
+                                            {"max_error_pct", problem.spec.maxErrorPct}});
+    out.insert("grid", QJsonObject{{"rows", "wn"},
+                                   {"columns", "kp"},
+                                   {"log", logarithmic},
+                                   {"wn", numbers(r.wnValues)},
+                                   {"kp", numbers(r.kpValues)}});
+    out.insert("threads", r.threadsUsed);
+    out.insert("stable_count", r.stableCount);
+    out.insert("feasible_count", r.feasibleCount);
+    if (r.bestIndex) {
+        const DesignPoint& b = r.points[*r.bestIndex];
+        QJsonObject best = pointJson(b);
+        best.insert("index", QJsonArray{static_cast<qint64>(*r.bestIndex / r.kpValues.size()),
+                                        static_cast<qint64>(*r.bestIndex % r.kpValues.size())});
+        best.insert("checks", checkJson(b.check));
+        out.insert("best", best);
+    } else {
+        out.insert("best", QJsonValue());
+    }
+    if (r.refined) {
+        QJsonObject refined = pointJson(r.refined->point);
+        refined.insert("checks", checkJson(r.refined->point.check));
+        refined.insert("evaluations", r.refined->evaluations);
+        refined.insert("improved", r.refined->improved);
+        out.insert("refined", refined);
+    } else {
+        out.insert("refined", QJsonValue());
+    }
+    QJsonArray rows;
+    for (std::size_t i = 0; i < r.wnValues.size(); ++i) {
+        QJsonArray row;
+        for (std::size_t j = 0; j < r.kpValues.size(); ++j)
+            row.append(pointJson(r.at(i, j)));
+        rows.append(row);
+    }
+    out.insert("points", rows);
+    QJsonArray warnings;
+    for (const auto& w : r.warnings)
+        warnings.append(QString::fromStdString(w));
+    out.insert("warnings", warnings);
+    print(out);
+    return 0;
+}
+
+} // namespace xyt::cli

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/specification.h"
+
+#include "core/errors.h"
+
+#include <cmath>
+
+namespace xyt {
+
+namespace {
+
+void requireNonNegative(double value, const std::string& field) {
+    requireFinite(value, field);
+    if (value < 0.0)
+        throw InvalidInput(field, "must be zero or more");
+}
+
+/// Comparisons written so that NaN fails: !(NaN <= x) is true.
+bool atMost(double value, double limit) { return std::isfinite(value) && value <= limit; }
+
+} // namespace
+
+void Specification::validate() const {
+    requirePositive(maxSettlingTimeSeconds, "max_settling_time");
+    requireNonNegative(maxOvershootPct, "max_overshoot_pct");
+    requirePositive(umaxVolts, "umax");
+    requirePositive(maxErrorPct, "max_error_pct");
+}
+
+SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
+                                      const StepCharacteristics& step) {
+    spec.validate();
+    SpecificationCheck c;
+    c.stable = step.stable;
+    c.settlingTime = step.stable && atMost(step.settlingTimeSeconds, spec.maxSettlingTimeSeconds);
+    c.overshoot = step.stable && atMost(step.overshootPct, spec.maxOvershootPct +
+                                                               Specification::kOvershootRoundOffPct);
+    c.noSaturation = !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
+    c.trackingError = atMost(tracking.maxAbsErrorPct, spec.maxErrorPct);
+    return c;
+}
+
+} // namespace xyt

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tests/support/cli_runner.h"
+#include "tests/support/tolerance.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+const QStringList kLowerCubic = {"sweep", "--preset", "lower-base", "--trajectory", "cubic",
+                                 "--xf", "600", "--tf", "130"};
+
+} // namespace
+
+class TstCliSweep : public QObject {
+    Q_OBJECT
+private slots:
+    void contractKeysAndCsv();
+    void strictSpecHasNoBest();
+    void badGridExitsWithTwo_data();
+    void badGridExitsWithTwo();
+};
+
+void TstCliSweep::contractKeysAndCsv() {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("sweep.csv");
+    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "0.5:4:4", "--kp", "10:200:5",
+                                                                 "--log", "--max-overshoot", "1",
+                                                                 "--csv", csv, "--threads", "2"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    for (const char* key : {"best", "refined", "feasible_count", "points", "grid", "criterion",
+                            "specification", "threads"})
+        QVERIFY2(o.contains(key), key);
+    QCOMPARE(o["criterion"].toString(), QString("itae"));
+    QCOMPARE(o["threads"].toInt(), 2);
+    const QJsonObject best = o["best"].toObject();
+    for (const char* key : {"wn", "kp", "ki", "metrics"})
+        QVERIFY2(best.contains(key), key);
+    QVERIFY(best["feasible"].toBool());
+    // ki = wn^4 / k0 (paper 000 Eq. 11 and 16), k0 = 77.8.
+    const double wn = best["wn"].toDouble();
+    XYT_COMPARE_NEAR(best["ki"].toDouble(), wn * wn * wn * wn / 77.8, 1e-12, 0.0);
+    const QJsonObject refined = o["refined"].toObject();
+    for (const char* key : {"wn", "kp", "ki", "metrics"})
+        QVERIFY2(refined.contains(key), key);
+    QVERIFY(refined["metrics"].toObject()["itae"].toDouble() <=
+            best["metrics"].toObject()["itae"].toDouble());
+    // points[i_wn][i_kp]: 4 rows over wn, 5 columns over kp.
+    const QJsonArray points = o["points"].toArray();
+    QCOMPARE(points.size(), 4);
+    int feasible = 0;
+    for (qsizetype i = 0; i < points.size(); ++i) {
+        const QJsonArray row = points[i].toArray();
+        QCOMPARE(row.size(), 5);
+        for (qsizetype j = 0; j < row.size(); ++j) {
+            const QJsonObject p = row[j].toObject();
+            // Grid values: log axes, closed form min (max/min)^(i/(n-1)).
+            XYT_COMPARE_NEAR(p["wn"].toDouble(), 0.5 * std::pow(8.0, i / 3.0), 1e-14, 0.0);
+            XYT_COMPARE_NEAR(p["kp"].toDouble(), 10.0 * std::pow(20.0, j / 4.0), 1e-14, 0.0);
+            feasible += p["feasible"].toBool() ? 1 : 0;
+        }
+    }
+    QCOMPARE(o["feasible_count"].toInt(), feasible);
+    // The CSV: a header and one row per grid point, in the same order (wn outer, kp inner).
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines.size(), 1 + 4 * 5);
+    QVERIFY(lines[0].startsWith("i_wn,i_kp,wn,kp,ki,stable,feasible,"));
+    QVERIFY(lines[0].contains("itae"));
+    QVERIFY(lines[1 + 1 * 5 + 2].startsWith("1,2,"));
+}
+
+void TstCliSweep::strictSpecHasNoBest() {
+    // Paper 000's strict "no overshoot": no type-2 design meets it (see core/specification.h).
+    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "1:3:3", "--kp", "10:50:3"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    QCOMPARE(o["feasible_count"].toInt(), 0);
+    QVERIFY(o["best"].isNull());
+    QVERIFY(o["refined"].isNull());
+    QCOMPARE(o["warnings"].toArray().size(), 1);
+}
+
+void TstCliSweep::badGridExitsWithTwo_data() {
+    QTest::addColumn<QStringList>("grid");
+    QTest::addColumn<QString>("argument");
+    QTest::newRow("min > max") << QStringList{"--wn", "5:1:3", "--kp", "1:2:3"} << "--wn";
+    QTest::newRow("N = 0") << QStringList{"--wn", "1:5:3", "--kp", "1:2:0"} << "--kp";
+    QTest::newRow("N = 501") << QStringList{"--wn", "1:5:501", "--kp", "1:2:3"} << "--wn";
+    QTest::newRow("not a number") << QStringList{"--wn", "1:x:3", "--kp", "1:2:3"} << "--wn";
+    QTest::newRow("N not whole") << QStringList{"--wn", "1:5:3", "--kp", "1:2:2.5"} << "--kp";
+    QTest::newRow("two fields") << QStringList{"--wn", "1:5", "--kp", "1:2:3"} << "--wn";
+    QTest::newRow("zero with --log") << QStringList{"--wn", "1:5:3", "--kp", "0:2:3", "--log"} << "--kp";
+    QTest::newRow("negative linear") << QStringList{"--wn", "-1:5:3", "--kp", "1:2:3"} << "--wn";
+    QTest::newRow("missing --kp") << QStringList{"--wn", "1:5:3"} << "--kp";
+    QTest::newRow("bad criterion") << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--criterion", "iae"}
+                                   << "--criterion";
+    QTest::newRow("bad threads") << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--threads", "0"}
+                                 << "--threads";
+}
+
+void TstCliSweep::badGridExitsWithTwo() {
+    QFETCH(QStringList, grid);
+    QFETCH(QString, argument);
+    const auto run = xyt::test::runCli(kLowerCubic + grid);
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains(argument.toUtf8()), run.err.constData());
+    QCOMPARE(run.err.count('\n'), 1);
+    QVERIFY(run.out.isEmpty());
+}
+
+QTEST_APPLESS_MAIN(TstCliSweep)
+#include "tst_cli_sweep.moc"
