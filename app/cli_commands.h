@@ -10,5 +10,8 @@ namespace xyt::cli {
 int runGt(const QStringList& args);
 int runSimulate(const QStringList& args);
 int runReport(const QStringList& args);
+int runPp(const QStringList& args);
+int runZpetc(const QStringList& args);
+int runContour(const QStringList& args);
 
 } // namespace xyt::cli
