@@ -3,8 +3,11 @@
 //   name: median_us=... min_us=... max_us=... runs=...
 // Optional argument: a substring; only figures whose name contains it are run.
 #include "core/guillemin_truxal.h"
+#include "core/pole_placement.h"
 #include "core/simulation.h"
 #include "core/trajectory.h"
+#include "core/zpetc.h"
+#include "core/zpetc_tracking.h"
 
 #include <algorithm>
 #include <chrono>
@@ -66,6 +69,22 @@ int main(int argc, char* argv[]) {
         benchmark(filter, "simulate_cubic_130s_dt0.01", [&] {
             const auto run = xyt::simulateLoop(plant, design.controller, reference, options);
             sink = sink + run.y.back();
+        });
+    }
+
+    {
+        // Paper 001: x-axis pole placement + ZPETC + one revolution of 30 sin(0.1 t) at 70 ms
+        // (898 samples), all three structures.
+        const xyt::PolePlacementPreset x = *xyt::findPolePlacementPreset("x-axis");
+        xyt::Circle circle;
+        circle.radius = 30.0;
+        circle.omegaRadPerSec = 0.1;
+        benchmark(filter, "pp_zpetc_revolution", [&] {
+            const auto loop = xyt::designPolePlacement(x.a, x.b, x.t, x.tsSeconds);
+            const auto zpetc = xyt::designZpetc(loop);
+            const auto run =
+                xyt::runZpetcTracking(loop, zpetc, circle.xAxis(), circle.periodSeconds());
+            sink = sink + run.rmseWithFf;
         });
     }
     return 0;

@@ -103,7 +103,7 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b, c
         std::string where = pair.found ? "the root z = " + formatComplex(0.5 * (pair.pole + pair.zero))
                                        : "a root";
         throw InvalidInput("b", "shares " + where +
-                                    " with a (common factor of A and B): A F + B G = T has no "
+                                    " with A (common factor of A and B): A F + B G = T has no "
                                     "solution (Sylvester condition number " +
                                     formatNumber(condition) + ")");
     }
