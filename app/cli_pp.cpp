@@ -39,8 +39,8 @@ template <class F> auto namingArguments(F body) {
 
 Polynomial coefficients(const CliArgs& args, const QString& name) {
     const std::string field = CliArgs::field(name);
-    return Polynomial::fromAscending(
-        parseCoefficientList(args.value(name)->toStdString(), field), field);
+    return Polynomial::fromAscending(parseCoefficientList(args.value(name)->toStdString(), field),
+                                     field);
 }
 
 /// The axis model from --preset and/or --a --b --t --ts (explicit values override the preset's).
@@ -49,8 +49,8 @@ PolePlacementDesign parseDesign(const CliArgs& args) {
     if (const auto name = args.value("preset")) {
         preset = findPolePlacementPreset(name->toStdString());
         if (!preset)
-            throw InvalidInput("--preset", "unknown preset '" + name->toStdString() +
-                                               "' (x-axis or y-axis)");
+            throw InvalidInput("--preset",
+                               "unknown preset '" + name->toStdString() + "' (x-axis or y-axis)");
     } else {
         for (const char* name : {"a", "b", "t"})
             if (!args.has(name))
@@ -81,8 +81,8 @@ QJsonObject designJson(const PolePlacementDesign& d) {
             {"Kf", number(d.kf)},
             {"residual", number(d.residual)},
             {"sylvester_condition", number(d.conditionNumber)},
-            {"closed_loop", QJsonObject{{"num", ascending(d.closedLoopNum)},
-                                        {"den", ascending(d.closedLoopDen)}}},
+            {"closed_loop",
+             QJsonObject{{"num", ascending(d.closedLoopNum)}, {"den", ascending(d.closedLoopDen)}}},
             {"plant_poles", complexPairs(d.plantPoles)},
             {"plant_zeros", complexPairs(d.plantZeros)},
             {"warnings", strings(d.warnings)}};
@@ -211,8 +211,8 @@ int runContour(const QStringList& argv) {
     args.allowOnly({"preset", "radius", "omega", "duration", "start", "margin"});
     const QString preset = args.text("preset", "paper-zpetc");
     if (preset != "paper-zpetc")
-        throw InvalidInput("--preset", "unknown preset pair '" + preset.toStdString() +
-                                           "' (paper-zpetc)");
+        throw InvalidInput("--preset",
+                           "unknown preset pair '" + preset.toStdString() + "' (paper-zpetc)");
     Circle circle;
     circle.radius = args.number("radius", 30.0);
     if (!(circle.radius > 0.0))
@@ -241,10 +241,10 @@ int runContour(const QStringList& argv) {
            {"omega", number(circle.omegaRadPerSec)},
            {"duration", number(duration)},
            {"start", startName(start)},
-           {"x_axis", QJsonObject{{"metrics", trackingJson(run.x)},
-                                  {"preview_steps", xZ.previewSteps}}},
-           {"y_axis", QJsonObject{{"metrics", trackingJson(run.y)},
-                                  {"preview_steps", yZ.previewSteps}}},
+           {"x_axis",
+            QJsonObject{{"metrics", trackingJson(run.x)}, {"preview_steps", xZ.previewSteps}}},
+           {"y_axis",
+            QJsonObject{{"metrics", trackingJson(run.y)}, {"preview_steps", yZ.previewSteps}}},
            {"contour_error", QJsonObject{{"without_ff", contourJson(run.contourWithoutFf)},
                                          {"with_ff", contourJson(run.contourWithFf)}}}});
     return 0;

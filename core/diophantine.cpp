@@ -2,32 +2,17 @@
 #include "core/diophantine.h"
 
 #include "core/errors.h"
+#include "core/number_format.h"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 namespace xyt {
 
 namespace {
-
-std::string formatComplex(std::complex<double> z) {
-    char buf[96];
-    if (std::abs(z.imag()) <= 1e-12 * std::max(1.0, std::abs(z.real())))
-        std::snprintf(buf, sizeof buf, "%.6g", z.real());
-    else
-        std::snprintf(buf, sizeof buf, "%.6g%+.6gj", z.real(), z.imag());
-    return buf;
-}
-
-std::string formatNumber(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
 
 /// The pole of A and the zero of B (both in z) closest to each other.
 struct ClosestPair {
@@ -61,7 +46,8 @@ std::vector<std::complex<double>> zInverseRoots(const Polynomial& p) {
     return r;
 }
 
-DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b, const Polynomial& t) {
+DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b,
+                                     const Polynomial& t) {
     if (a.isZero())
         throw InvalidInput("a", "must be nonzero");
     if (a.coefficient(0) == 0.0)
@@ -100,12 +86,12 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b, c
 
     if (!(condition <= kCommonFactorCondition)) {
         const ClosestPair pair = closestPoleZero(a, b);
-        std::string where = pair.found ? "the root z = " + formatComplex(0.5 * (pair.pole + pair.zero))
-                                       : "a root";
+        std::string where =
+            pair.found ? "the root z = " + formatComplex(0.5 * (pair.pole + pair.zero)) : "a root";
         throw InvalidInput("b", "shares " + where +
                                     " with A (common factor of A and B): A F + B G = T has no "
                                     "solution (Sylvester condition number " +
-                                    formatNumber(condition) + ")");
+                                    formatNumber(condition, 3) + ")");
     }
 
     const Eigen::VectorXd m = svd.solve(d);
@@ -125,10 +111,10 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b, c
         const ClosestPair pair = closestPoleZero(a, b);
         std::string what = "near-common factor of A and B";
         if (pair.found)
-            what += ": pole z = " + formatComplex(pair.pole) + " and zero z = " +
-                    formatComplex(pair.zero) + " are " + formatNumber(std::abs(pair.pole - pair.zero)) +
-                    " apart";
-        out.warnings.push_back(what + "; Sylvester condition number " + formatNumber(condition) +
+            what += ": pole z = " + formatComplex(pair.pole) +
+                    " and zero z = " + formatComplex(pair.zero) + " are " +
+                    formatNumber(std::abs(pair.pole - pair.zero), 3) + " apart";
+        out.warnings.push_back(what + "; Sylvester condition number " + formatNumber(condition, 3) +
                                ", F and G are large and sensitive");
     }
     return out;

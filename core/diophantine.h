@@ -51,7 +51,8 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b, c
 
 /// The finite nonzero roots in z of p(z^-1) given in ascending powers of z^-1: the roots of
 /// z^n p(1/z), n = deg p. A delay (leading zero coefficients, p = z^-d p') only shifts the
-/// polynomial and gives no root. Sorted with sortRoots. @throws InvalidInput for the zero polynomial.
+/// polynomial and gives no root. Sorted with sortRoots. @throws InvalidInput for the zero
+/// polynomial.
 std::vector<std::complex<double>> zInverseRoots(const Polynomial& p);
 
 } // namespace xyt

@@ -3,21 +3,11 @@
 
 #include "core/diophantine.h"
 #include "core/errors.h"
+#include "core/number_format.h"
 
 #include <cmath>
-#include <cstdio>
 
 namespace xyt {
-
-namespace {
-
-std::string formatNumber(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
-
-} // namespace
 
 TransferFunction PolePlacementDesign::closedLoop() const {
     return TransferFunction::fromZInverse(closedLoopNum, closedLoopDen, tsSeconds);
@@ -37,8 +27,7 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
         throw InvalidInput("t", "T(0), the z^0 coefficient, must be 1");
     for (const auto& r : zInverseRoots(t))
         if (!(std::abs(r) < 1.0))
-            throw InvalidInput("t", "root z = " + formatNumber(r.real()) +
-                                        (r.imag() != 0.0 ? " (complex)" : "") +
+            throw InvalidInput("t", "root z = " + formatComplex(r) +
                                         " is not inside the unit circle: the closed loop would "
                                         "be unstable");
 

@@ -19,8 +19,8 @@ ZpetcDesign designZpetc(const PolePlacementDesign& loop, double margin) {
 
     // Bc(z^-1) = Kf B(z^-1) / z^-d: drop the delay's leading zeros.
     const auto& c = loop.closedLoopNum.ascending();
-    const Polynomial bc = Polynomial::fromAscending(
-        std::vector<double>(c.begin() + loop.delay, c.end()), "b");
+    const Polynomial bc =
+        Polynomial::fromAscending(std::vector<double>(c.begin() + loop.delay, c.end()), "b");
     std::vector<std::complex<double>> inside, outside;
     if (bc.degree() > 0) {
         for (const auto& root : zInverseRoots(bc)) {

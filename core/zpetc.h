@@ -37,16 +37,16 @@ struct ZpetcZero {
  * All polynomials in ascending powers of z^-1.
  */
 struct ZpetcDesign {
-    int delay = 0;            ///< d
+    int delay = 0; ///< d
     double margin = kDefaultZpetcMargin;
-    Polynomial bPlus;         ///< B+(z^-1), B+(0) = 1
-    Polynomial bMinus;        ///< B-(z^-1), with the gain: z^-d B+ B- = Kf B
+    Polynomial bPlus;             ///< B+(z^-1), B+(0) = 1
+    Polynomial bMinus;            ///< B-(z^-1), with the gain: z^-d B+ B- = Kf B
     std::vector<ZpetcZero> zeros; ///< all zeros of Kf B in z, sorted
-    double gainFactor = 0.0;  ///< [B-(1)]^2, the paper's low-frequency scaling factor
-    int previewSteps = 0;     ///< p = d + deg B-: how far ahead the reference is read
-    Polynomial feedforwardNum; ///< N_ff = A_c B-*
-    Polynomial feedforwardDen; ///< D_ff = B+ [B-(1)]^2
-    Polynomial overallFir;    ///< h = B- B-* / [B-(1)]^2, applied to r(k + deg B-)
+    double gainFactor = 0.0;      ///< [B-(1)]^2, the paper's low-frequency scaling factor
+    int previewSteps = 0;         ///< p = d + deg B-: how far ahead the reference is read
+    Polynomial feedforwardNum;    ///< N_ff = A_c B-*
+    Polynomial feedforwardDen;    ///< D_ff = B+ [B-(1)]^2
+    Polynomial overallFir;        ///< h = B- B-* / [B-(1)]^2, applied to r(k + deg B-)
 };
 
 /**
@@ -61,7 +61,7 @@ ZpetcDesign designZpetc(const PolePlacementDesign& loop, double margin = kDefaul
 /// Kf B / T, computed from the two filters, not from the FIR shortcut).
 struct ZpetcFrequencyResponse {
     std::vector<double> omegaRadPerSec;
-    std::vector<double> gainWithoutFf;  ///< |H(e^{j w Ts})|
+    std::vector<double> gainWithoutFf; ///< |H(e^{j w Ts})|
     std::vector<double> gainWithFf;
     std::vector<double> phaseWithoutFfRad; ///< arg H, in (-pi, pi]
     std::vector<double> phaseWithFfRad;    ///< ~0 at every frequency (zero phase error)

@@ -56,8 +56,7 @@ ZpetcTrackingRun runZpetcTracking(const PolePlacementDesign& loop, const ZpetcDe
 
 ZpetcCircleRun runZpetcCircle(const PolePlacementDesign& xLoop, const ZpetcDesign& xZpetc,
                               const PolePlacementDesign& yLoop, const ZpetcDesign& yZpetc,
-                              const Circle& circle, double durationSeconds,
-                              StartCondition start) {
+                              const Circle& circle, double durationSeconds, StartCondition start) {
     if (xLoop.tsSeconds != yLoop.tsSeconds)
         throw InvalidInput("ts", "the two axes must share one sample time");
     ZpetcCircleRun out;

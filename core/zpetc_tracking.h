@@ -13,14 +13,14 @@ namespace xyt {
 
 /// One axis tracking a reference with the pole-placement loop alone and with the ZPETC.
 struct ZpetcTrackingRun {
-    std::vector<double> t;         ///< k Ts, k = 0 .. n-1 (s)
-    std::vector<double> r;         ///< reference (position units, e.g. mm)
-    DiscreteRun feedbackOnly;      ///< structure (1)
-    DiscreteRun withZpetc;         ///< structure (2)
-    DiscreteRun trajectoryZpetc;   ///< structure (3)
-    double rmseWithoutFf = 0.0;    ///< sqrt(mean (r - y1)^2)
-    double rmseWithFf = 0.0;       ///< sqrt(mean (r - y2)^2)
-    double improvementPct = 0.0;   ///< 100 (1 - rmseWithFf / rmseWithoutFf), paper 001 Table 1
+    std::vector<double> t;       ///< k Ts, k = 0 .. n-1 (s)
+    std::vector<double> r;       ///< reference (position units, e.g. mm)
+    DiscreteRun feedbackOnly;    ///< structure (1)
+    DiscreteRun withZpetc;       ///< structure (2)
+    DiscreteRun trajectoryZpetc; ///< structure (3)
+    double rmseWithoutFf = 0.0;  ///< sqrt(mean (r - y1)^2)
+    double rmseWithFf = 0.0;     ///< sqrt(mean (r - y2)^2)
+    double improvementPct = 0.0; ///< 100 (1 - rmseWithFf / rmseWithoutFf), paper 001 Table 1
     double maxAbsErrorWithoutFf = 0.0;
     double maxAbsErrorWithFf = 0.0;
 };

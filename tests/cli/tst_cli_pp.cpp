@@ -36,8 +36,8 @@ void TstCliPp::ppPresetKeys() {
 
 void TstCliPp::ppExplicitCoefficients() {
     // The y-axis model typed by hand, comma-separated: same design as the preset.
-    const auto run = xyt::test::runCli({"pp", "--a", "1, -1.4590, 0.4587", "--b",
-                                        "0 0.0352 0.0599 -0.0067", "--t", "1 -0.2"});
+    const auto run = xyt::test::runCli(
+        {"pp", "--a", "1, -1.4590, 0.4587", "--b", "0 0.0352 0.0599 -0.0067", "--t", "1 -0.2"});
     QCOMPARE(run.exitCode, 0);
     // Kf = 0.8/0.0884 (paper Eq. 10 prints 9.0509).
     XYT_COMPARE_NEAR(run.json()["Kf"].toDouble(), 0.8 / 0.0884, 1e-14, 0.0);
@@ -81,16 +81,17 @@ void TstCliPp::contourKeys() {
 void TstCliPp::badInput_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("argument");
-    QTest::newRow("common root") << QStringList{"pp", "--a", "1 -1.4 0.45", "--b", "0 0.1 -0.05",
-                                                "--t", "1 -0.2"}
+    QTest::newRow("common root") << QStringList{"pp",          "--a", "1 -1.4 0.45", "--b",
+                                                "0 0.1 -0.05", "--t", "1 -0.2"}
                                  << "--b";
-    QTest::newRow("not a number") << QStringList{"pp", "--preset", "x-axis", "--a", "1 abc"} << "--a";
+    QTest::newRow("not a number") << QStringList{"pp", "--preset", "x-axis", "--a", "1 abc"}
+                                  << "--a";
     QTest::newRow("empty list") << QStringList{"pp", "--preset", "x-axis", "--b", ""} << "--b";
     QTest::newRow("T(0) != 1") << QStringList{"pp", "--preset", "x-axis", "--t", "2 -0.2"} << "--t";
     QTest::newRow("ts <= 0") << QStringList{"pp", "--preset", "x-axis", "--ts", "0"} << "--ts";
     QTest::newRow("ts NaN") << QStringList{"pp", "--preset", "x-axis", "--ts", "nan"} << "--ts";
-    QTest::newRow("NaN coefficient") << QStringList{"pp", "--preset", "y-axis", "--a", "1 nan"}
-                                     << "--a";
+    QTest::newRow("NaN coefficient")
+        << QStringList{"pp", "--preset", "y-axis", "--a", "1 nan"} << "--a";
     QTest::newRow("no delay") << QStringList{"pp", "--preset", "x-axis", "--b", "0.1 0.2"} << "--b";
     QTest::newRow("missing b") << QStringList{"pp", "--a", "1 -0.5", "--t", "1"} << "--b";
     QTest::newRow("unknown preset") << QStringList{"pp", "--preset", "z-axis"} << "--preset";

@@ -17,7 +17,9 @@ using xyt::Polynomial;
 
 namespace {
 
-Polynomial poly(std::vector<double> c) { return Polynomial::fromAscending(std::move(c)); }
+Polynomial poly(std::vector<double> c) {
+    return Polynomial::fromAscending(std::move(c));
+}
 
 std::vector<double> toVector(const QJsonArray& a) {
     std::vector<double> v;
@@ -65,19 +67,15 @@ void TstDiophantine::paperDesign_data() {
     // G = 12.4613 + 0.9537 z^-1; these are WRONG (they leave a residual of 0.217 in
     // A F + B G - T, see paperPrintedControllerResidual). Correct: Kf = 0.8/0.0595 = 13.4454
     // (paper 0.0203 low), f2 = +0.0720 (paper -0.0657).
-    QTest::newRow("x-axis (Eq. 1, 9)") << "x-axis"
-                                       << std::vector<double>{1.0, 0.93631022836115441,
-                                                              0.071970436540917365}
-                                       << std::vector<double>{12.391681036552121, 1.0435713298433054}
-                                       << 0.8 / 0.0595;
+    QTest::newRow("x-axis (Eq. 1, 9)")
+        << "x-axis" << std::vector<double>{1.0, 0.93631022836115441, 0.071970436540917365}
+        << std::vector<double>{12.391681036552121, 1.0435713298433054} << 0.8 / 0.0595;
     // Y axis: Eq. 10 prints Kf = 9.0509 (correct 0.8/0.0884 = 9.04977, 0.0011 high),
     // F = 1 + 0.7284 z^-1 - 0.0879 z^-2, G = 15.0910 - 6.0346 z^-1: close, but off by up to
     // 3e-3 in g0, beyond the 4 printed decimals.
-    QTest::newRow("y-axis (Eq. 3, 10)") << "y-axis"
-                                        << std::vector<double>{1.0, 0.72790003440297124,
-                                                               -0.088117029536019437}
-                                        << std::vector<double>{15.088067204461028, -6.0327285743540289}
-                                        << 0.8 / 0.0884;
+    QTest::newRow("y-axis (Eq. 3, 10)")
+        << "y-axis" << std::vector<double>{1.0, 0.72790003440297124, -0.088117029536019437}
+        << std::vector<double>{15.088067204461028, -6.0327285743540289} << 0.8 / 0.0884;
 }
 
 void TstDiophantine::paperDesign() {

@@ -119,8 +119,7 @@ void TstZpetc::factorization() {
     XYT_COMPARE_NEAR(z.gainFactor, bMinusAtOne * bMinusAtOne, 1e-12, 0.0);
     QCOMPARE(z.previewSteps, 2);
     // Invariant (paper Eq. 6): z^-d B+ B- = Kf B, coefficients of order 1 (round-off).
-    const xyt::Polynomial product =
-        xyt::Polynomial::fromAscending({0.0, 1.0}) * z.bPlus * z.bMinus;
+    const xyt::Polynomial product = xyt::Polynomial::fromAscending({0.0, 1.0}) * z.bPlus * z.bMinus;
     QCOMPARE(product.degree(), loop.closedLoopNum.degree());
     for (int i = 0; i <= product.degree(); ++i)
         XYT_COMPARE_NEAR(product.coefficient(i), loop.closedLoopNum.coefficient(i), 0.0, 1e-13);
@@ -162,7 +161,8 @@ void TstZpetc::zeroPhaseResponse() {
         // Gain with ZPETC, closed form |B-(e^{jθ})|^2 / B-(1)^2 for B- = c (1 - zn z^-1):
         // (1 + zn^2 - 2 zn cos θ) / (1 - zn)^2.
         const double theta = w[i] * loop.tsSeconds;
-        const double expected = (1.0 + zn * zn - 2.0 * zn * std::cos(theta)) / ((1.0 - zn) * (1.0 - zn));
+        const double expected =
+            (1.0 + zn * zn - 2.0 * zn * std::cos(theta)) / ((1.0 - zn) * (1.0 - zn));
         XYT_COMPARE_NEAR(f.gainWithFf[i], expected, 1e-12, 0.0);
     }
     // The remaining high-frequency gain error of the NMP zero: at Nyquist (1+zn)^2/(1-zn)^2
@@ -188,7 +188,8 @@ void TstZpetc::runs() {
     QVERIFY(!cols.isEmpty());
     const auto loop = presetDesign(axis + "-axis");
     const auto z = xyt::designZpetc(loop);
-    const auto run = xyt::runZpetcTracking(loop, z, axisReference(axis), kRevolution, startOf(start));
+    const auto run =
+        xyt::runZpetcTracking(loop, z, axisReference(axis), kRevolution, startOf(start));
     QCOMPARE(run.t.size(), std::size_t(898)); // floor(62.83 / 0.07) + 1
     const auto& r = cols[axis + "_r"];
     // Reference against numpy's sin/cos at k Ts: 30 mm amplitude, 1e-12 covers argument round-off.
@@ -254,8 +255,8 @@ void TstZpetc::circleContour() {
     xyt::Circle circle;
     circle.radius = 30.0;
     circle.omegaRadPerSec = 0.1;
-    const auto run = xyt::runZpetcCircle(x, xyt::designZpetc(x), y, xyt::designZpetc(y), circle,
-                                         kRevolution);
+    const auto run =
+        xyt::runZpetcCircle(x, xyt::designZpetc(x), y, xyt::designZpetc(y), circle, kRevolution);
     // Radial deviation recomputed from the scipy columns: hypot(x, y) - 30.
     const auto cols = paperCsv();
     const auto radial = [&](const QString& which) {
