@@ -24,11 +24,11 @@ struct PolePlacementDesign {
     Polynomial b; ///< B(z^-1) as used (divided by the typed A(0) when that was not 1)
     Polynomial t; ///< T(z^-1), T(0) = 1: the desired closed-loop denominator
     double tsSeconds = 0.0;
-    int delay = 0;                ///< d >= 1: the number of leading zero coefficients of B
-    Polynomial f;                 ///< F(z^-1), monic, degree max(nb - 1, nt - na)
-    Polynomial g;                 ///< G(z^-1), degree na - 1
-    double kf = 0.0;              ///< T(1) / B(1) (paper Eq. 7, Kf = sum T / sum B)
-    double residual = 0.0;        ///< max |coefficient of A F + B G - T|
+    int delay = 0;         ///< d >= 1: the number of leading zero coefficients of B
+    Polynomial f;          ///< F(z^-1), degree max(nb - 1, nt - na); F(0) = 1 up to round-off
+    Polynomial g;          ///< G(z^-1), degree na - 1
+    double kf = 0.0;       ///< T(1) / B(1) (paper Eq. 7, Kf = sum T / sum B)
+    double residual = 0.0; ///< max |coefficient of A F + B G - T|
     double conditionNumber = 0.0; ///< of the scaled Sylvester matrix (see solveDiophantine)
     Polynomial closedLoopNum;     ///< Kf B(z^-1)
     Polynomial closedLoopDen;     ///< T(z^-1)

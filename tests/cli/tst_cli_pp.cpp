@@ -6,6 +6,8 @@
 #include <QJsonArray>
 #include <QTest>
 
+#include <numbers>
+
 class TstCliPp : public QObject {
     Q_OBJECT
 private slots:
@@ -13,6 +15,7 @@ private slots:
     void ppExplicitCoefficients();
     void zpetcKeys();
     void contourKeys();
+    void zpetcFrequencyResponse();
     void badInput_data();
     void badInput();
 };
@@ -76,6 +79,21 @@ void TstCliPp::contourKeys() {
     QVERIFY(ce["with_ff"].toObject()["max"].toDouble() <
             ce["without_ff"].toObject()["max"].toDouble());
     QCOMPARE(o["x_axis"].toObject()["metrics"].toObject()["samples"].toInt(), 898);
+}
+
+void TstCliPp::zpetcFrequencyResponse() {
+    const auto run = xyt::test::runCli({"zpetc", "--preset", "x-axis", "--frequency-points", "7"});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject f = run.json()["frequency_response"].toObject();
+    QCOMPARE(f["omega"].toArray().size(), 7);
+    // Zero phase error with ZPETC at every frequency (round-off, 1e-12 rad); the grid ends at
+    // Nyquist pi/0.07 where the gain is (1 + zn)^2/(1 - zn)^2 = 0.1147 (zn = -2.0244).
+    for (const auto& p : f["phase_with_ff_rad"].toArray())
+        XYT_COMPARE_NEAR(p.toDouble(), 0.0, 0.0, 1e-12);
+    const double zn = -2.0243841653913899;
+    XYT_COMPARE_NEAR(f["gain_with_ff"].toArray().last().toDouble(),
+                     (1 + zn) * (1 + zn) / ((1 - zn) * (1 - zn)), 1e-12, 0.0);
+    XYT_COMPARE_NEAR(f["omega"].toArray().last().toDouble(), std::numbers::pi / 0.07, 1e-15, 0.0);
 }
 
 void TstCliPp::badInput_data() {
