@@ -43,7 +43,7 @@ struct DiophantineSolution {
  * @throws InvalidInput "a" when A is zero or A(0) = 0; "b" when B is zero; "t" when T is zero;
  *         "b" when A and B share a root (Sylvester condition number above kCommonFactorCondition):
  *         the message names the common root in z (pole of A = zero of B) because then
- *         A F + B G = T has no solution for T without that root.
+ *         A F + B G = T has no solution (no unique one when T has that root too).
  * A condition number above kNearCommonFactorCondition adds a warning naming the closest
  * pole-zero pair and the condition number.
  */
