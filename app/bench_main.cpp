@@ -5,8 +5,11 @@
 #include "core/design_sweep.h"
 #include "core/guillemin_truxal.h"
 #include "core/root_locus.h"
+#include "core/pole_placement.h"
 #include "core/simulation.h"
 #include "core/trajectory.h"
+#include "core/zpetc.h"
+#include "core/zpetc_tracking.h"
 
 #include <algorithm>
 #include <chrono>
@@ -104,6 +107,19 @@ int main(int argc, char* argv[]) {
             const auto r = xyt::sweepDesignSpace(problem, wn, kp, {});
             sink = sink + r.feasibleCount;
         }, 3, 0.0);
+        // Paper 001: x-axis pole placement + ZPETC + one revolution of 30 sin(0.1 t) at 70 ms
+        // (898 samples), all three structures.
+        const xyt::PolePlacementPreset x = *xyt::findPolePlacementPreset("x-axis");
+        xyt::Circle circle;
+        circle.radius = 30.0;
+        circle.omegaRadPerSec = 0.1;
+        benchmark(filter, "pp_zpetc_revolution", [&] {
+            const auto loop = xyt::designPolePlacement(x.a, x.b, x.t, x.tsSeconds);
+            const auto zpetc = xyt::designZpetc(loop);
+            const auto run =
+                xyt::runZpetcTracking(loop, zpetc, circle.xAxis(), circle.periodSeconds());
+            sink = sink + run.rmseWithFf;
+        });
     }
     return 0;
 }

@@ -10,8 +10,8 @@ CliArgs CliArgs::parse(const QStringList& args, const QSet<QString>& booleanFlag
     CliArgs out;
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString& a = args[i];
-        // "-o FILE" is the one short option: a dash and a single letter.
-        const bool shortOption = a.size() == 2 && a[0] == '-' && a[1].isLetter();
+        // "-o FILE" is the one short option.
+        const bool shortOption = a == "-o";
         if (!shortOption && (!a.startsWith("--") || a.size() == 2)) {
             out.positional_ << a;
             continue;

@@ -34,9 +34,9 @@ public:
     /// @throws InvalidInput naming the first option not in @p allowed.
     void allowOnly(const QStringList& allowed) const;
 
-    /// "--name" as printed in messages.
+    /// "--name" as printed in messages ("-o" for the one short option).
     static std::string field(const QString& name) {
-        return ((name.size() == 1 ? "-" : "--") + name).toStdString();
+        return ((name == "o" ? "-" : "--") + name).toStdString();
     }
 
 private:

@@ -16,5 +16,8 @@ int runExport(const QStringList& args);
 int runSessionReport(const QString& path);
 int runRlocus(const QStringList& args);
 int runSweep(const QStringList& args);
+int runPp(const QStringList& args);
+int runZpetc(const QStringList& args);
+int runContour(const QStringList& args);
 
 } // namespace xyt::cli

@@ -43,6 +43,23 @@ constexpr const char* kUsage =
     "            points[i_wn][i_kp] (rows over wn, columns over kp). CSV: one row per point in\n"
     "            the same order (wn outer, kp inner); undefined metrics are empty fields.\n"
     "\n"
+    "Discrete pole placement and ZPETC of paper 001 (polynomials of z^-1 in ascending powers,\n"
+    "as space- or comma-separated lists, e.g. --a \"1 -1.6580 0.6583\"):\n"
+    "  pp        RST design A F + B G = T, Kf = T(1)/B(1): [--preset x-axis|y-axis]\n"
+    "            [--a A --b B] --t T [--ts 0.07]; A(0) != 1 is normalized (warning),\n"
+    "            B(0) must be 0 (delay), T(0) must be 1. Keys F, G, Kf, residual,\n"
+    "            closed_loop {num = Kf B, den = T}, plant_poles, plant_zeros, warnings\n"
+    "  zpetc     pp options plus [--amplitude 30 --omega 0.1 --phase-deg 0 --duration S]\n"
+    "            [--start reference|origin] [--margin 0.05] [--frequency-points N]:\n"
+    "            reference amplitude sin(omega t + phase), one period by default. Zeros with\n"
+    "            |z| < 1 - margin are cancelled (B+); the rest (B-) are listed in nmp_zeros.\n"
+    "            feedforward {num, den}: u_ff(k) = num(z^-1)/den(z^-1) r(k + preview_steps),\n"
+    "            u_ff is the loop's reference input; gain_factor = [B-(1)]^2;\n"
+    "            metrics {rmse_without_ff, rmse_with_ff, improvement_pct}\n"
+    "  contour   both axes on the circle: [--preset paper-zpetc] [--radius 30 --omega 0.1]\n"
+    "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
+    "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"
+    "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
 
 } // namespace
@@ -63,6 +80,9 @@ int main(int argc, char* argv[]) {
         {"export", xyt::cli::runExport},
         {"rlocus", xyt::cli::runRlocus},
         {"sweep", xyt::cli::runSweep},
+        {"pp", xyt::cli::runPp},
+        {"zpetc", xyt::cli::runZpetc},
+        {"contour", xyt::cli::runContour},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

@@ -2,6 +2,7 @@
 #include "core/polynomial.h"
 
 #include "core/errors.h"
+#include "core/number_format.h"
 
 #include <Eigen/Core>
 #include <unsupported/Eigen/Polynomials>
@@ -212,14 +213,6 @@ void Polynomial::divide(const Polynomial& a, const Polynomial& b, Polynomial& qu
     quotient = Polynomial(std::move(q));
     remainder = Polynomial(std::move(rem));
 }
-
-namespace {
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
-} // namespace
 
 std::string Polynomial::toString(const std::string& variable) const {
     if (isZero())

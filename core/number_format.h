@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <complex>
+#include <string>
+
+namespace xyt {
+
+/// printf "%.<digits>g" of @p v, for messages, warnings and equations (e.g. "0.5", "1.3e+04").
+std::string formatNumber(double v, int significantDigits = 6);
+/// "0.5" for a real value (|imag| <= 1e-12 |real|), else "0.5+0.2j".
+std::string formatComplex(std::complex<double> z, int significantDigits = 6);
+
+} // namespace xyt
