@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/guillemin_truxal.h"
+#include "core/specification.h"
 
 #include <array>
 #include <string>
@@ -77,6 +78,9 @@ struct Session {
     double umaxVolts = 2.5;
     /// Sample time of the digital PI when a continuous design is exported (Tustin by default).
     double controllerTsSeconds = 0.01;
+    /// What the design must meet (paper 000: settling <= 100 s, no overshoot, no saturation,
+    /// max error <= 2 %). Its umaxVolts is ignored: the session's umaxVolts is the limit.
+    Specification spec;
     std::vector<DesignSnapshot> snapshots;
 
     /// The current design as a snapshot named @p name.

@@ -4,6 +4,9 @@
 #include "core/contour_error.h"
 #include "core/guillemin_truxal.h"
 #include "core/metrics.h"
+#include "core/pole_placement.h"
+#include "core/specification.h"
+#include "core/zpetc.h"
 #include "core/session.h"
 #include "core/simulation.h"
 
@@ -22,10 +25,26 @@ struct AxisEvaluation {
     std::string error;      ///< when !ok: the reason
     DesignMethod method = DesignMethod::GuilleminTruxal;
     std::optional<GtDesign> gt;
+    /// Discrete designs: the pole-placement loop and its ZPETC feedforward.
+    std::optional<PolePlacementDesign> pp;
+    std::optional<ZpetcDesign> zpetc;
+    /// Discrete designs: the run of the feedback loop alone (Kf r), for comparison.
+    SimulationResult feedbackOnlyRun;
+    double rmseWithoutFf = 0.0;  ///< discrete designs: RMSE of the loop alone
+    double improvementPct = 0.0; ///< 100 (1 - RMSE with ZPETC / RMSE without)
+    /// The run shown: continuous designs simulate the loop with saturation; discrete designs the
+    /// linear loop with ZPETC when enabled (else alone), sampled at Ts, with `clipped` marking
+    /// samples where |u| exceeds umax (paper 001's loop has no limit, so it is flagged, not
+    /// applied).
     SimulationResult run;
     TrackingMetrics metrics;
     StepCharacteristics step;
+    /// Pass/fail of each criterion of the session's specification.
+    SpecificationCheck check;
     std::vector<std::string> warnings;
+
+    /// The closed loop of the design (G_R for GT, Kf B / T for pole placement).
+    TransferFunction closedLoop() const;
 };
 
 struct SessionEvaluation {

@@ -35,6 +35,7 @@ struct Specification {
     /// @throws InvalidInput "max_settling_time", "max_overshoot_pct", "max_error_pct" (finite,
     ///         >= 0; settling and error > 0), "umax" (finite, > 0).
     void validate() const;
+    friend bool operator==(const Specification&, const Specification&) = default;
 };
 
 /// Pass/fail of each criterion of a Specification. A failed criterion says nothing about the

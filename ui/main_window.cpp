@@ -8,7 +8,11 @@
 #include "ui/number_field.h"
 #include "ui/parameter_slider.h"
 #include "ui/plant_editor.h"
+#include "ui/parameter_locus_plot.h"
 #include "ui/plot_tools.h"
+#include "ui/pole_zero_plot.h"
+#include "ui/pp_editor.h"
+#include "ui/root_locus_plot.h"
 #include "ui/session_file.h"
 #include "ui/session_file_controller.h"
 #include "ui/snapshot_compare_dialog.h"
@@ -32,10 +36,13 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QVBoxLayout>
+
+#include <qcustomplot.h>
 
 namespace xyt::ui {
 
@@ -51,14 +58,37 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
 
     timePlot_ = new TimeResponsePlot(this);
     contourPlot_ = new ContourPlot(this);
+    rootLocusPlot_ = new RootLocusPlot(this);
+    poleZeroPlot_ = new PoleZeroPlot(this);
+    parameterLocusPlot_ = new ParameterLocusPlot(this);
     upperTabs_ = new QTabWidget(this);
     lowerTabs_ = new QTabWidget(this);
-    upperTabs_->addTab(timePlot_, tr("&Time response"));
+    upperTabs_->addTab(rootLocusPlot_, tr("&Root locus"));
+    upperTabs_->addTab(parameterLocusPlot_, tr("P&arameter locus"));
+    upperTabs_->addTab(poleZeroPlot_, tr("&Pole-zero map"));
+    sweptParameter_ = new QComboBox(this);
+    sweptParameter_->addItem(tr("sweep ωn (kp fixed)"));
+    sweptParameter_->addItem(tr("sweep kp (ωn fixed)"));
+    sweptParameter_->setAccessibleName(tr("Swept parameter"));
+    upperTabs_->setCornerWidget(sweptParameter_, Qt::TopRightCorner);
+    connect(sweptParameter_, &QComboBox::currentIndexChanged, this, &MainWindow::refresh);
+    lowerTabs_->addTab(timePlot_, tr("&Time response"));
     lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
+    connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
+    connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
+    connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {
+        if (!session_->applyLoopGain(session_->currentAxis(), gain))
+            statusBar()->showMessage(
+                tr("Picking a gain sets kp and ωn of a Guillemin–Truxal axis; a pole-placement "
+                   "axis is tuned with t1."), 6000);
+        else
+            statusBar()->showMessage(tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4), 5000);
+    });
     plotSplitter_ = new QSplitter(Qt::Vertical, this);
     plotSplitter_->addWidget(upperTabs_);
     plotSplitter_->addWidget(lowerTabs_);
     plotSplitter_->setChildrenCollapsible(false);
+    plotSplitter_->setSizes({330, 400});
 
     auto* right = new QWidget(this);
     auto* rightLayout = new QVBoxLayout(right);
@@ -67,6 +97,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     auto* metricsLayout = new QVBoxLayout(metricsBox);
     metrics_ = new MetricsPanel(metricsBox);
     metricsLayout->addWidget(metrics_);
+    connect(metrics_, &MetricsPanel::specificationEdited, session_, &TuningSession::setSpecification);
     auto* equationsBox = new QGroupBox(tr("Equations"), right);
     auto* equationsLayout = new QVBoxLayout(equationsBox);
     equations_ = new EquationsPanel(equationsBox);
@@ -77,7 +108,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     equationsLayout->addWidget(equationsScroll);
     rightLayout->addWidget(metricsBox);
     rightLayout->addWidget(equationsBox, 1);
-    right->setMinimumWidth(300);
+    right->setMinimumWidth(390);
 
     mainSplitter_ = new QSplitter(Qt::Horizontal, this);
     mainSplitter_->addWidget(controlScroll);
@@ -122,14 +153,31 @@ QWidget* MainWindow::buildControls() {
     auto* designLayout = new QVBoxLayout(designBox);
     method_ = new QComboBox(designBox);
     method_->addItem(tr("Guillemin–Truxal PI (continuous)"));
+    method_->addItem(tr("Pole placement + ZPETC (discrete)"));
     method_->setAccessibleName(tr("Design method"));
     designLayout->addWidget(method_);
-    plantEditor_ = new PlantEditor(designBox);
-    designLayout->addWidget(plantEditor_);
-    omegaN_ = new ParameterSlider(tr("ω&n"), tr("rad/s"), 0.05, 20.0, true, designBox);
-    kp_ = new ParameterSlider(tr("k&p"), tr("V/m"), 0.1, 1000.0, true, designBox);
-    designLayout->addWidget(omegaN_);
-    designLayout->addWidget(kp_);
+    methodPages_ = new QStackedWidget(designBox);
+    auto* gtPage = new QWidget(methodPages_);
+    auto* gtLayout = new QVBoxLayout(gtPage);
+    gtLayout->setContentsMargins(0, 0, 0, 0);
+    plantEditor_ = new PlantEditor(gtPage);
+    gtLayout->addWidget(plantEditor_);
+    omegaN_ = new ParameterSlider(tr("ω&n"), tr("rad/s"), 0.05, 20.0, true, gtPage);
+    kp_ = new ParameterSlider(tr("k&p"), tr("V/m"), 0.1, 1000.0, true, gtPage);
+    gtLayout->addWidget(omegaN_);
+    gtLayout->addWidget(kp_);
+    gtLayout->addStretch(1);
+    ppEditor_ = new PpEditor(methodPages_);
+    methodPages_->addWidget(gtPage);
+    methodPages_->addWidget(ppEditor_);
+    designLayout->addWidget(methodPages_);
+    connect(method_, &QComboBox::activated, this, [this](int index) {
+        session_->setMethod(session_->currentAxis(), index == 0 ? DesignMethod::GuilleminTruxal
+                                                                : DesignMethod::PolePlacementZpetc);
+    });
+    connect(ppEditor_, &PpEditor::settingsEdited, this, [this](const PpAxisSettings& pp, int mergeKey) {
+        session_->setPp(session_->currentAxis(), pp, mergeKey);
+    });
     layout->addWidget(designBox);
 
     auto* trajectoryBox = new QGroupBox(tr("Trajectory"), panel);
@@ -196,8 +244,8 @@ void MainWindow::buildMenus() {
     overlayMenu_ = design->addMenu(tr("&Overlay snapshot"));
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Reset plot views"), QKeySequence(tr("Ctrl+0")), this, [this] {
-        resetView(timePlot_);
-        resetView(contourPlot_);
+        for (QCustomPlot* plot : findChildren<QCustomPlot*>())
+            resetView(plot);
     });
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About XY Tune"), this, [this] {
@@ -220,10 +268,14 @@ void MainWindow::syncControls() {
                                                   QString::fromStdString(ai.label)));
     }
     {
-        const QSignalBlocker b1(omegaN_), b2(kp_);
+        const QSignalBlocker b1(omegaN_), b2(kp_), b3(method_);
         omegaN_->setValue(a.gt.omegaNRadPerSec);
         kp_->setValue(a.gt.kp);
+        const int page = a.method == DesignMethod::GuilleminTruxal ? 0 : 1;
+        method_->setCurrentIndex(page);
+        methodPages_->setCurrentIndex(page);
     }
+    ppEditor_->setSettings(a.pp);
     plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
     trajectoryEditor_->setTrajectory(s.trajectory);
     umax_->setValue(s.umaxVolts);
@@ -239,8 +291,37 @@ void MainWindow::refresh() {
     const AxisEvaluation& e = session_->axisEvaluation(axis);
     const QString title = tr("Axis %1 (%2)").arg(QString::fromStdString(a.id).toUpper(),
                                                   QString::fromStdString(a.label));
-    timePlot_->showAxis(e, title, s.umaxVolts);
-    contourPlot_->showSession(s, session_->evaluation());
+    // Plots that are not on screen are redrawn when their tab is shown (the tabs' currentChanged
+    // calls refresh), so a slider drag only pays for what the user sees.
+    if (timePlot_->isVisible() || !isVisible())
+        timePlot_->showAxis(e, title, s.umaxVolts);
+    if (contourPlot_->isVisible() || !isVisible())
+        contourPlot_->showSession(s, session_->evaluation());
+    if (e.ok) {
+        std::vector<std::complex<double>> poles;
+        try {
+            poles = e.closedLoop().poles();
+        } catch (const std::exception&) {
+            poles.clear();
+        }
+        if (rootLocusPlot_->isVisible() || !isVisible())
+            rootLocusPlot_->showLocus(session_->rootLocus(axis), poles,
+                                      tr("Root locus of %1 (K = 1: the design)").arg(title));
+        if (poleZeroPlot_->isVisible() || !isVisible())
+            poleZeroPlot_->showSets(session_->poleZeroSets(axis), tr("Pole-zero map of %1").arg(title));
+        if ((parameterLocusPlot_->isVisible() || !isVisible()) && a.method == DesignMethod::GuilleminTruxal) {
+            const bool kp = sweptParameter_->currentIndex() == 1;
+            parameterLocusPlot_->showLocus(
+                session_->parameterLocus(axis, kp ? GtSweptParameter::Kp : GtSweptParameter::OmegaN),
+                poles,
+                kp ? tr("Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)")
+                         .arg(a.gt.kp / 10, 0, 'g', 3).arg(a.gt.kp * 10, 0, 'g', 3).arg(a.gt.omegaNRadPerSec)
+                   : tr("Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)")
+                         .arg(a.gt.omegaNRadPerSec / 10, 0, 'g', 3)
+                         .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3).arg(a.gt.kp));
+        }
+    }
+    sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
     metrics_->showEvaluation(s, session_->evaluation());
     equations_->showAxis(a, e);
     QString state;

@@ -6,6 +6,7 @@
 class QComboBox;
 class QLabel;
 class QSplitter;
+class QStackedWidget;
 class QTabBar;
 class QTabWidget;
 
@@ -17,6 +18,10 @@ class MetricsPanel;
 class NumberField;
 class ParameterSlider;
 class PlantEditor;
+class ParameterLocusPlot;
+class PoleZeroPlot;
+class PpEditor;
+class RootLocusPlot;
 class SessionFileController;
 class TimeResponsePlot;
 class TrajectoryEditor;
@@ -37,6 +42,13 @@ public:
     PlantEditor* plantEditor() const { return plantEditor_; }
     TrajectoryEditor* trajectoryEditor() const { return trajectoryEditor_; }
     TimeResponsePlot* timePlot() const { return timePlot_; }
+    RootLocusPlot* rootLocusPlot() const { return rootLocusPlot_; }
+    PoleZeroPlot* poleZeroPlot() const { return poleZeroPlot_; }
+    ParameterLocusPlot* parameterLocusPlot() const { return parameterLocusPlot_; }
+    PpEditor* ppEditor() const { return ppEditor_; }
+    QComboBox* methodBox() const { return method_; }
+    QTabWidget* upperTabs() const { return upperTabs_; }
+    QTabWidget* lowerTabs() const { return lowerTabs_; }
     ContourPlot* contourPlot() const { return contourPlot_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
     EquationsPanel* equationsPanel() const { return equations_; }
@@ -77,6 +89,12 @@ private:
     QSplitter* mainSplitter_ = nullptr;
     QSplitter* plotSplitter_ = nullptr;
     TimeResponsePlot* timePlot_ = nullptr;
+    RootLocusPlot* rootLocusPlot_ = nullptr;
+    PoleZeroPlot* poleZeroPlot_ = nullptr;
+    ParameterLocusPlot* parameterLocusPlot_ = nullptr;
+    QComboBox* sweptParameter_ = nullptr;
+    PpEditor* ppEditor_ = nullptr;
+    QStackedWidget* methodPages_ = nullptr;
     ContourPlot* contourPlot_ = nullptr;
     MetricsPanel* metrics_ = nullptr;
     EquationsPanel* equations_ = nullptr;

@@ -3,26 +3,39 @@
 
 #include "core/session_evaluation.h"
 
+#include <QMap>
 #include <QWidget>
 
 class QTableWidget;
 
 namespace xyt::ui {
+class NumberField;
+}
+
+namespace xyt::ui {
 
 /// The figures of both axes side by side (RMSE, max error, max |u|, saturation, settling,
-/// overshoot, ITAE). Values that are not finite show as "n/a", never as NaN.
+/// overshoot, ITAE, ZPETC improvement) against the editable specification, with a pass/fail
+/// mark on each judged figure. Values that are not finite show as "n/a", never as NaN.
 class MetricsPanel : public QWidget {
     Q_OBJECT
 public:
     explicit MetricsPanel(QWidget* parent = nullptr);
     void showEvaluation(const Session& session, const SessionEvaluation& evaluation);
     QTableWidget* table() const { return table_; }
+    NumberField* specField(const QString& name) const { return spec_.value(name); }
 
     /// Row order of the table.
-    enum Row { Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Settling, Overshoot, Itae, RowCount };
+    enum Row { Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Settling, Overshoot, Itae,
+               Improvement, RowCount };
+
+signals:
+    void specificationEdited(const Specification& spec);
 
 private:
     QTableWidget* table_;
+    QMap<QString, NumberField*> spec_;
+    Specification current_;
 };
 
 /// "1.2345" or "n/a" for non-finite values.

@@ -39,13 +39,22 @@ bool NumberField::commit() {
     }
 }
 
+void markFieldError(QLineEdit* field, const QString& message) {
+    field->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid #d32f2f; background: #fff3f3; }"));
+    field->setToolTip(message);
+}
+
+void clearFieldError(QLineEdit* field, const QString& normalToolTip) {
+    field->setStyleSheet(QString());
+    field->setToolTip(normalToolTip);
+}
+
 void NumberField::showError(const QString& message) {
     if (!hasError_)
         normalToolTip_ = toolTip();
     hasError_ = true;
     errorText_ = tr("%1: %2").arg(fieldName_, message);
-    setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid #d32f2f; background: #fff3f3; }"));
-    setToolTip(errorText_);
+    markFieldError(this, errorText_);
 }
 
 void NumberField::clearError() {
@@ -53,8 +62,7 @@ void NumberField::clearError() {
         return;
     hasError_ = false;
     errorText_.clear();
-    setStyleSheet(QString());
-    setToolTip(normalToolTip_);
+    clearFieldError(this, normalToolTip_);
 }
 
 } // namespace xyt::ui

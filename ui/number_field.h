@@ -41,6 +41,11 @@ private:
     QString normalToolTip_;
 };
 
+/// Shows an input error at a line edit: red frame and the reason as its tooltip.
+void markFieldError(QLineEdit* field, const QString& message);
+/// Removes the error marking (the tooltip becomes @p normalToolTip).
+void clearFieldError(QLineEdit* field, const QString& normalToolTip);
+
 /// Formats a number for display with up to 10 significant digits.
 QString formatNumber(double v);
 

@@ -259,6 +259,9 @@ QJsonObject sessionToJson(const Session& s) {
             {"trajectory", trajectoryToJson(s.trajectory)},
             {"umax", s.umaxVolts},
             {"controller_ts", s.controllerTsSeconds},
+            {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
+                                          {"max_overshoot_pct", s.spec.maxOvershootPct},
+                                          {"max_error_pct", s.spec.maxErrorPct}}},
             {"snapshots", snapshots}};
 }
 
@@ -308,6 +311,15 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
         s.trajectory = readTrajectory(r.child("trajectory"));
         s.umaxVolts = readUmax(r);
         s.controllerTsSeconds = r.positive("controller_ts");
+        {
+            ObjectReader spec = r.child("specification");
+            s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");
+            s.spec.maxOvershootPct = spec.number("max_overshoot_pct");
+            if (s.spec.maxOvershootPct < 0)
+                throw FormatError{"specification.max_overshoot_pct", QStringLiteral("must be >= 0")};
+            s.spec.maxErrorPct = spec.positive("max_error_pct");
+            spec.finish();
+        }
         const QJsonValue snaps = r.get("snapshots");
         if (!snaps.isArray())
             throw FormatError{"snapshots", QStringLiteral("must be an array")};

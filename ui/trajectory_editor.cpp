@@ -77,6 +77,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
             throw InvalidInput("duration", "must be at most 100000 s");
     }, this);
     duration->setToolTip(tr("0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle"));
+    duration->setProperty("normalToolTip", duration->toolTip());
     fields_.insert("dt", dt);
     fields_.insert("duration", duration);
     common->addRow(tr("Step dt (s)"), dt);
@@ -129,23 +130,19 @@ void TrajectoryEditor::emitIfValid() {
     t.dtSeconds = fields_["dt"]->value();
     t.durationSeconds = fields_["duration"]->value();
     if (t.kind == TrajectoryKind::Cubic && !(t.tfSeconds > t.t0Seconds)) {
-        fields_["tf"]->setStyleSheet(
-            QStringLiteral("QLineEdit { border: 2px solid #d32f2f; background: #fff3f3; }"));
-        fields_["tf"]->setToolTip(tr("tf: must be later than t0"));
+        markFieldError(fields_["tf"], tr("tf: must be later than t0"));
         return;
     }
-    fields_["tf"]->setStyleSheet(QString());
+    clearFieldError(fields_["tf"], QString());
     try {
         const double samples = t.effectiveDurationSeconds() / t.dtSeconds;
         if (samples > static_cast<double>(kMaxSamples))
             throw InvalidInput("duration", "too many samples for this dt");
     } catch (const InvalidInput& e) {
-        fields_["duration"]->setToolTip(QString::fromStdString(e.what()));
-        fields_["duration"]->setStyleSheet(
-            QStringLiteral("QLineEdit { border: 2px solid #d32f2f; background: #fff3f3; }"));
+        markFieldError(fields_["duration"], QString::fromStdString(e.what()));
         return;
     }
-    fields_["duration"]->setStyleSheet(QString());
+    clearFieldError(fields_["duration"], fields_["duration"]->property("normalToolTip").toString());
     if (t == current_)
         return;
     current_ = t;

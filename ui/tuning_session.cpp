@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/tuning_session.h"
 
+#include "core/errors.h"
+
 #include <QUndoCommand>
+
+#include <cmath>
 
 namespace xyt::ui {
 
@@ -42,6 +46,8 @@ const AxisEvaluation& TuningSession::axisEvaluation(int axis) const {
 void TuningSession::assign(const Session& next) {
     session_ = next;
     evaluation_ = evaluateSession(session_);
+    locus_ = {};
+    parameterLocus_ = {};
     emit designChanged();
 }
 
@@ -104,6 +110,96 @@ void TuningSession::setUmax(double umaxVolts) {
     Session next = session_;
     next.umaxVolts = umaxVolts;
     apply(next, tr("Set the actuator limit to %1 V").arg(umaxVolts));
+}
+
+} // namespace xyt::ui
+
+namespace xyt::ui {
+
+const RootLocus& TuningSession::rootLocus(int axis) const {
+    auto& cached = locus_.at(static_cast<std::size_t>(axis));
+    if (!cached) {
+        const AxisEvaluation& e = axisEvaluation(axis);
+        if (e.gt) {
+            cached = xyt::rootLocus(e.gt->openLoop);
+        } else if (e.pp) {
+            // The feedback path: F u = -G y around A y = B u gives 1 + B G / (A F) = 0.
+            const TransferFunction loop = TransferFunction::fromZInverse(
+                e.pp->b * e.pp->g, e.pp->a * e.pp->f, e.pp->tsSeconds);
+            cached = xyt::rootLocus(loop);
+        } else {
+            cached = RootLocus{};
+        }
+    }
+    return *cached;
+}
+
+const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter parameter) const {
+    auto& cached = parameterLocus_.at(static_cast<std::size_t>(axis * 2 + (parameter == GtSweptParameter::Kp)));
+    if (!cached) {
+        const GtAxisSettings& gt = session_.axes.at(static_cast<std::size_t>(axis)).gt;
+        ParameterSweep sweep;
+        sweep.logSpacing = true;
+        const double centre = parameter == GtSweptParameter::OmegaN ? gt.omegaNRadPerSec : gt.kp;
+        sweep.from = centre / 10.0;
+        sweep.to = centre * 10.0;
+        sweep.count = 80;
+        try {
+            cached = gtParameterLocus(gt.plant, parameter, sweep,
+                                      parameter == GtSweptParameter::OmegaN ? gt.kp : gt.omegaNRadPerSec);
+        } catch (const InvalidInput&) {
+            cached = ParameterLocus{};
+        }
+    }
+    return *cached;
+}
+
+std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
+    const AxisEvaluation& e = axisEvaluation(axis);
+    if (e.gt)
+        return gtPoleZeroSets(*e.gt);
+    std::vector<PoleZeroSet> sets;
+    if (e.pp) {
+        const double ts = e.pp->tsSeconds;
+        sets.push_back(poleZeroSet("plant B/A", TransferFunction::fromZInverse(e.pp->b, e.pp->a, ts)));
+        sets.push_back(poleZeroSet("feedback G/F", TransferFunction::fromZInverse(e.pp->g, e.pp->f, ts)));
+        sets.push_back(poleZeroSet("closed loop Kf B/T", e.pp->closedLoop()));
+        if (e.zpetc)
+            sets.push_back(poleZeroSet("ZPETC feedforward",
+                                       TransferFunction::fromZInverse(e.zpetc->feedforwardNum,
+                                                                      e.zpetc->feedforwardDen, ts)));
+    }
+    return sets;
+}
+
+bool TuningSession::applyLoopGain(int axis, double gain) {
+    const AxisSettings& a = session_.axes.at(static_cast<std::size_t>(axis));
+    if (a.method != DesignMethod::GuilleminTruxal || !(gain > 0.0) || !std::isfinite(gain))
+        return false;
+    Session next = session_;
+    auto& gt = next.axes.at(static_cast<std::size_t>(axis)).gt;
+    gt.kp *= gain;
+    gt.omegaNRadPerSec *= std::pow(gain, 0.25);
+    apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4));
+    return true;
+}
+
+void TuningSession::setMethod(int axis, DesignMethod method) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).method = method;
+    apply(next, tr("Change the design method"));
+}
+
+void TuningSession::setPp(int axis, const PpAxisSettings& pp, int mergeKey) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).pp = pp;
+    apply(next, tr("Change the pole-placement design"), mergeKey < 0 ? -1 : mergeKey + axis);
+}
+
+void TuningSession::setSpecification(const Specification& spec) {
+    Session next = session_;
+    next.spec = spec;
+    apply(next, tr("Change the specification"));
 }
 
 } // namespace xyt::ui

@@ -2,11 +2,17 @@
 #pragma once
 
 #include "core/session.h"
+#include "core/parameter_locus.h"
+#include "core/pole_zero_map.h"
+#include "core/root_locus.h"
 #include "core/session_evaluation.h"
 
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
+
+#include <array>
+#include <optional>
 
 namespace xyt::ui {
 
@@ -41,7 +47,29 @@ public:
     /// Marks the current state as saved.
     void markSaved() { undo_.setClean(); }
 
+    /**
+     * The root locus of the axis' loop, 1 + K L = 0 with K = 1 the design: L = G_c G for a
+     * continuous design, L = B G / (A F) (the feedback path) for a discrete one. Computed on
+     * first use after each change (cached).
+     */
+    const RootLocus& rootLocus(int axis) const;
+    /// The closed-loop poles of a GT axis as wn or kp sweeps a decade each way (cached).
+    const ParameterLocus& parameterLocus(int axis, GtSweptParameter parameter) const;
+    /// Pole-zero sets of the axis: plant, controller, open loop, closed loop, reference model
+    /// (GT) or plant, feedback, closed loop, ZPETC feedforward (discrete).
+    std::vector<PoleZeroSet> poleZeroSets(int axis) const;
+
+    /**
+     * Uses the loop gain K picked on the root locus of a GT axis: the controller becomes
+     * K (kp + ki/s), i.e. kp' = K kp and, since ki = wn^4/k0 (Eq. 11, 16), wn' = K^(1/4) wn.
+     * Returns false (and changes nothing) for a discrete axis or a gain that is not > 0.
+     */
+    bool applyLoopGain(int axis, double gain);
+
     // Convenience setters (each one apply() step). Axis index 0 = x, 1 = y.
+    void setMethod(int axis, DesignMethod method);
+    void setPp(int axis, const PpAxisSettings& pp, int mergeKey = -1);
+    void setSpecification(const Specification& spec);
     void setOmegaN(int axis, double omegaNRadPerSec);
     void setKp(int axis, double kp);
     void setPlant(int axis, const ThirdOrderPlant& plant);
@@ -64,6 +92,8 @@ private:
 
     Session session_;
     SessionEvaluation evaluation_;
+    mutable std::array<std::optional<RootLocus>, 2> locus_;
+    mutable std::array<std::optional<ParameterLocus>, 4> parameterLocus_;
     QUndoStack undo_;
     int currentAxis_ = 0;
 };
