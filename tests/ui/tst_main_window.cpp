@@ -7,6 +7,8 @@
 #include "ui/number_field.h"
 #include "ui/parameter_slider.h"
 #include "ui/plant_editor.h"
+#include "ui/pp_editor.h"
+#include "ui/root_locus_plot.h"
 #include "ui/time_response_plot.h"
 #include "ui/trajectory_editor.h"
 #include "ui/tuning_session.h"
@@ -30,6 +32,9 @@ private slots:
     void contourPlotHoldsTheSimulatedData();
     void timePlotShowsTheRun();
     void undoRestoresTheSlider();
+    void clickOnRootLocusSetsTheGain();
+    void switchingToPolePlacement();
+    void invalidCoefficientListIsRejectedAtTheField();
 
 private:
     std::unique_ptr<TuningSession> session_;
@@ -102,6 +107,7 @@ void TstMainWindow::validPlantValueIsApplied() {
 }
 
 void TstMainWindow::contourPlotHoldsTheSimulatedData() {
+    window_->lowerTabs()->setCurrentWidget(window_->contourPlot());
     QComboBox* kind = window_->trajectoryEditor()->kindBox();
     kind->setFocus();
     QTest::keyClick(kind, Qt::Key_Down); // cubic -> circle
@@ -130,6 +136,76 @@ void TstMainWindow::undoRestoresTheSlider() {
     session_->undoStack()->undo();
     QCOMPARE(window_->omegaNSlider()->value(), 2.0);
     QCOMPARE(window_->omegaNSlider()->spinBox()->value(), 2.0);
+}
+
+void TstMainWindow::clickOnRootLocusSetsTheGain() {
+    RootLocusPlot* plot = window_->rootLocusPlot();
+    window_->upperTabs()->setCurrentWidget(plot);
+    plot->replot();
+    // A point on the branch that leaves the origin pole pair, about a third of the way along:
+    // click exactly on its pixel (the plot's own axes convert coordinates to pixels).
+    const RootLocus& locus = plot->locus();
+    QVERIFY(!locus.branches.empty());
+    std::size_t branch = 0, index = 0;
+    double best = -1.0;
+    for (std::size_t b = 0; b < locus.branches.size(); ++b)
+        for (std::size_t i = 0; i < locus.branches[b].roots.size(); ++i) {
+            const auto r = locus.branches[b].roots[i];
+            const double g = locus.gains[i];
+            if (plot->xAxis->range().contains(r.real()) && plot->yAxis->range().contains(r.imag()) &&
+                std::abs(r.imag()) > 20 && g > best && g < 50) {
+                best = g;
+                branch = b;
+                index = i;
+            }
+        }
+    QVERIFY2(best > 0, "no visible complex locus point");
+    const auto point = locus.branches[branch].roots[index];
+    const QPoint pixel(qRound(plot->xAxis->coordToPixel(point.real())),
+                       qRound(plot->yAxis->coordToPixel(point.imag())));
+    const auto pick = plot->pickAtPixel(pixel);
+    QVERIFY(pick.has_value());
+    const double gain = pick->gain;
+    QTest::mouseClick(plot, Qt::LeftButton, Qt::NoModifier, pixel);
+    // The controller becomes K (kp + ki/s): kp' = K kp, wn' = K^(1/4) wn (ki = wn^4/k0).
+    XYT_COMPARE_NEAR(session_->session().axes[0].gt.kp, 30.0 * gain, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(session_->session().axes[0].gt.omegaNRadPerSec, 2.0 * std::pow(gain, 0.25), 1e-12, 0.0);
+    // Invariant: the picked point is now a closed-loop pole of the new design.
+    double nearest = 1e300;
+    for (const auto& p : session_->axisEvaluation(0).gt->closedLoopPoles)
+        nearest = std::min(nearest, std::abs(p - pick->point));
+    QVERIFY2(nearest < 1e-6 * std::abs(pick->point), qPrintable(QString::number(nearest)));
+}
+
+void TstMainWindow::switchingToPolePlacement() {
+    session_->setCurrentAxis(1);
+    QComboBox* method = window_->methodBox();
+    method->setFocus();
+    QTest::keyClick(method, Qt::Key_Down);
+    QTRY_VERIFY(session_->session().axes[1].method == DesignMethod::PolePlacementZpetc);
+    const AxisEvaluation& e = session_->axisEvaluation(1);
+    QVERIFY(e.ok);
+    QVERIFY(e.pp.has_value());
+    // T(1)/B(1) = 0.8 / (0.0352 + 0.0599 - 0.0067) (paper 001 Eq. 7, y-axis B).
+    XYT_COMPARE_NEAR(e.pp->kf, 0.8 / 0.0884, 1e-12, 0.0);
+    // The t1 slider is a design parameter: moving it re-solves the Diophantine equation.
+    window_->ppEditor()->t1Slider()->spinBox()->setValue(-0.5);
+    QCOMPARE(session_->session().axes[1].pp.t1, -0.5);
+    XYT_COMPARE_NEAR(session_->axisEvaluation(1).pp->kf, 0.5 / 0.0884, 1e-12, 0.0);
+    QCOMPARE(window_->rootLocusPlot()->locus().tsSeconds, 0.07);
+}
+
+void TstMainWindow::invalidCoefficientListIsRejectedAtTheField() {
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    QLineEdit* a = window_->ppEditor()->aField();
+    const auto before = session_->session().axes[0].pp;
+    a->setFocus();
+    a->selectAll();
+    QTest::keyClicks(a, "1 -1.658 x");
+    QTest::keyClick(a, Qt::Key_Return);
+    QVERIFY2(a->toolTip().contains("A[2]") && a->toolTip().contains("not a number"),
+             qPrintable(a->toolTip()));
+    QVERIFY(session_->session().axes[0].pp == before);
 }
 
 QTEST_MAIN(TstMainWindow)
