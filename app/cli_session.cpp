@@ -85,6 +85,20 @@ int runSessionReport(const QString& path) {
             out << "  wn = " << a.gt->omegaNRadPerSec << " rad/s, kp = " << a.gt->kp
                 << ", ki = " << QString::number(a.gt->ki, 'g', 8) << (a.gt->stable ? "" : "  UNSTABLE")
                 << "\n";
+        if (a.pp) {
+            auto poly = [](const Polynomial& p) {
+                QStringList parts;
+                for (double c : p.ascending())
+                    parts << QString::number(c, 'g', 6);
+                return "[" + parts.join(" ") + "]";
+            };
+            out << "  F = " << poly(a.pp->f) << ", G = " << poly(a.pp->g) << " (ascending z^-1), Kf = "
+                << QString::number(a.pp->kf, 'g', 6) << ", Ts = " << a.pp->tsSeconds << " s\n";
+            if (s.pp.zpetcEnabled && a.zpetc)
+                out << "  ZPETC: preview " << a.zpetc->previewSteps << " samples; RMSE without "
+                    << number(a.rmseWithoutFf, 5) << " mm, with " << number(a.metrics.rmse, 5)
+                    << " mm (improvement " << number(a.improvementPct, 2) << " %)\n";
+        }
         const auto& m = a.metrics;
         out << "  RMSE " << number(m.rmse) << " mm, max |e| " << number(m.maxAbsError) << " mm ("
             << number(m.maxAbsErrorPct, 3) << " % of travel), max |u| " << number(m.maxAbsU)

@@ -2,9 +2,11 @@
 #include "core/export_text.h"
 
 #include "core/errors.h"
+#include "core/pole_placement.h"
 #include "core/trajectory.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <cstdio>
 #include <sstream>
@@ -40,6 +42,40 @@ std::string joined(const std::vector<double>& v, const std::string& separator) {
     return out;
 }
 
+std::string cArray(const std::string& name, const std::vector<double>& v) {
+    return "#define " + name + "_LEN " + std::to_string(v.size()) + "\nstatic const double " + name +
+           "[" + name + "_LEN] XYT_MAYBE_UNUSED = {" + joined(v, ", ") + "};\n";
+}
+
+/// The RST law and ZPETC filter of a pole-placement axis as C arrays.
+std::string rstHeaderBlock(const AxisSettings& axis, const AxisEvaluation& a, const std::string& id) {
+    const PolePlacementDesign& pp = *a.pp;
+    std::ostringstream out;
+    out << "/* Axis " << axis.id << (axis.label.empty() ? "" : " (" + axis.label + ")")
+        << ": pole placement (paper 001), Ts = " << exactNumber(pp.tsSeconds) << " s, T = 1 "
+        << (pp.t.coefficient(1) < 0 ? "- " : "+ ") << exactNumber(std::abs(pp.t.coefficient(1)))
+        << " z^-1. Every Ts:\n"
+        << " *   F(z^-1) u[k] = KF w[k] - G(z^-1) y[k], i.e. (F[0] is 1 up to round-off)\n"
+        << " *   u[k] = (KF w[k] - sum_i G[i] y[k-i] - sum_{i>=1} F[i] u[k-i]) / F[0]\n";
+    if (axis.pp.zpetcEnabled && a.zpetc)
+        out << " * with the ZPETC feedforward reading the reference PREVIEW samples ahead:\n"
+            << " *   sum_i FF_DEN[i] w[k-i] = sum_i FF_NUM[i] r[k + PREVIEW - i]\n";
+    else
+        out << " * with w = r (no feedforward).\n";
+    out << " */\n";
+    out << "#define XYT_" << id << "_TS " << exactNumber(pp.tsSeconds) << "\n";
+    out << "static const double XYT_" << id << "_KF XYT_MAYBE_UNUSED = " << exactNumber(pp.kf) << ";\n";
+    out << cArray("XYT_" + id + "_F", pp.f.ascending());
+    out << cArray("XYT_" + id + "_G", pp.g.ascending());
+    if (axis.pp.zpetcEnabled && a.zpetc) {
+        out << "#define XYT_" << id << "_PREVIEW " << a.zpetc->previewSteps << "\n";
+        out << cArray("XYT_" + id + "_FF_NUM", a.zpetc->feedforwardNum.ascending());
+        out << cArray("XYT_" + id + "_FF_DEN", a.zpetc->feedforwardDen.ascending());
+    }
+    out << "\n";
+    return out.str();
+}
+
 } // namespace
 
 DigitalController axisDigitalController(const Session& session, const SessionEvaluation& evaluation,
@@ -66,8 +102,12 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
         const std::string id = upper(axis.id);
+        const AxisEvaluation& a = validAxis(evaluation, i);
+        if (a.pp) {
+            out << rstHeaderBlock(axis, a, id);
+            continue;
+        }
         const DigitalController c = axisDigitalController(session, evaluation, i, options);
-        const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
         out << "/* Axis " << axis.id << (axis.label.empty() ? "" : " (" + axis.label + ")") << ": ";
         if (a.gt)
             out << "Guillemin-Truxal PI, kp = " << exactNumber(a.gt->kp)
@@ -151,12 +191,33 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
                 << ";  % model units per mm\n";
             out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << " * unit_" << id
                 << ", t) / unit_" << id << ";\n\n";
+        } else if (a.pp) {
+            const PolePlacementDesign& pp = *a.pp;
+            const std::string ts = exactNumber(pp.tsSeconds);
+            out << "Ts_" << id << " = " << ts << ";\n";
+            out << "plant_" << id << " = filt([" << joined(pp.b.ascending(), " ") << "], ["
+                << joined(pp.a.ascending(), " ") << "], Ts_" << id << ");  % B/A in z^-1\n";
+            out << "% RST pole placement: F u = Kf w - G y (paper 001 Eq. 7-8)\n";
+            out << "F_" << id << " = [" << joined(pp.f.ascending(), " ") << "];\n";
+            out << "G_" << id << " = [" << joined(pp.g.ascending(), " ") << "];\n";
+            out << "Kf_" << id << " = " << exactNumber(pp.kf) << ";\n";
+            out << "controller_" << id << " = filt(G_" << id << ", F_" << id << ", Ts_" << id
+                << ");  % feedback path G/F\n";
+            out << "closed_loop_" << id << " = Kf_" << id << " * feedback(plant_" << id
+                << " * filt(1, F_" << id << ", Ts_" << id << "), filt(G_" << id << ", 1, Ts_" << id
+                << "));  % = Kf B / T\n";
+            out << "t_" << id << " = (0:Ts_" << id << ":" << exactNumber(duration) << ")';\n";
+            out << "t_saved = t; t = t_" << id << ";\n" << trajectoryLines(session.trajectory, i, id)
+                << "t = t_saved;\n";
+            out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << ", t_" << id
+                << ");  % the loop alone, without the ZPETC feedforward\n\n";
         }
     }
     out << "figure;\n";
     for (int i = 0; i < 2; ++i) {
         const std::string& id = session.axes[static_cast<std::size_t>(i)].id;
-        out << "subplot(2, 1, " << (i + 1) << ");\nplot(t, r_" << id << ", '--', t, y_" << id
+        const std::string tt = evaluation.axes[static_cast<std::size_t>(i)].pp ? "t_" + id : "t";
+        out << "subplot(2, 1, " << (i + 1) << ");\nplot(" << tt << ", r_" << id << ", '--', " << tt << ", y_" << id
             << ");\ngrid on;\nxlabel('time (s)');\nylabel('" << id << " (mm)');\nlegend('reference', 'output');\n";
     }
     return out.str();

@@ -21,11 +21,33 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
     QJsonArray axes;
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& settings = session.axes[static_cast<std::size_t>(i)];
-        const DigitalController digital = axisDigitalController(session, evaluation, i, options);
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
         QJsonObject axis{{"id", QString::fromStdString(settings.id)},
                          {"label", QString::fromStdString(settings.label)},
                          {"method", methodName(settings.method)}};
+        if (a.ok && a.pp) {
+            axis.insert("position_unit", "mm (the ARX model's units)");
+            axis.insert("rst", QJsonObject{
+                {"F", array(a.pp->f.ascending())},
+                {"G", array(a.pp->g.ascending())},
+                {"Kf", a.pp->kf},
+                {"T", array(a.pp->t.ascending())},
+                {"ts", a.pp->tsSeconds},
+                {"order", "ascending powers of z^-1"},
+                {"law", "F(z^-1) u[k] = Kf w[k] - G(z^-1) y[k]; w = r, or the ZPETC output"},
+                {"units", "ts in s, u in the ARX model's input units"}});
+            if (settings.pp.zpetcEnabled && a.zpetc)
+                axis.insert("zpetc", QJsonObject{
+                    {"num", array(a.zpetc->feedforwardNum.ascending())},
+                    {"den", array(a.zpetc->feedforwardDen.ascending())},
+                    {"preview_steps", a.zpetc->previewSteps},
+                    {"gain_factor", a.zpetc->gainFactor},
+                    {"order", "ascending powers of z^-1"},
+                    {"law", "den(z^-1) w[k] = num(z^-1) r[k + preview_steps]"}});
+            axes.append(axis);
+            continue;
+        }
+        const DigitalController digital = axisDigitalController(session, evaluation, i, options);
         if (a.gt) {
             axis.insert("position_unit", QStringLiteral("model unit (%1 per mm of trajectory)")
                                              .arg(settings.gt.modelUnitsPerPositionUnit));

@@ -25,6 +25,7 @@ private slots:
     void jsonParsesBack();
     void octaveScriptDefinesTheTfObjects();
     void csvColumnsAndRows();
+    void polePlacementAxisExports();
 };
 
 void TstCoefficientExport::tustinAndBackwardEulerClosedForms() {
@@ -142,6 +143,39 @@ void TstCoefficientExport::csvColumnsAndRows() {
     const QList<QByteArray> last = lines.back().split(',');
     XYT_COMPARE_NEAR(last[0].toDouble(), 130.0, 1e-12, 0.0);
     XYT_COMPARE_NEAR(last[1].toDouble(), 600.0, 1e-9, 0.0); // 10 printed digits
+}
+
+void TstCoefficientExport::polePlacementAxisExports() {
+    Session s = Session::paperDefault();
+    s.axes[1].method = DesignMethod::PolePlacementZpetc; // the y-axis ARX model of paper 001
+    const SessionEvaluation e = evaluateSession(s);
+    QVERIFY(e.axes[1].ok);
+    const QJsonObject y = ui::coefficientsJson(s, e)["axes"].toArray()[1].toObject();
+    const QJsonObject rst = y["rst"].toObject();
+    // The RST polynomials are the core's, exactly (JSON keeps the shortest round-trip digits).
+    QCOMPARE(rst["Kf"].toDouble(), e.axes[1].pp->kf);
+    QCOMPARE(rst["G"].toArray()[0].toDouble(), e.axes[1].pp->g.coefficient(0));
+    QCOMPARE(y["zpetc"].toObject()["preview_steps"].toInt(), e.axes[1].zpetc->previewSteps);
+    const std::string header = exportCHeader(s, e);
+    QVERIFY(header.find("XYT_Y_KF") != std::string::npos);
+    QVERIFY(header.find("XYT_Y_FF_NUM") != std::string::npos);
+    QVERIFY(header.find("#define XYT_Y_PREVIEW 2") != std::string::npos);
+    const QString cc = QStandardPaths::findExecutable("cc");
+    if (cc.isEmpty())
+        QSKIP("no C compiler (cc) on this machine");
+    QTemporaryDir dir;
+    QFile f(dir.filePath("pp.h"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(header));
+    f.close();
+    QProcess compile;
+    compile.setWorkingDirectory(dir.path());
+    compile.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "pp.h"});
+    QVERIFY(compile.waitForFinished(60000));
+    QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
+    const std::string m = exportOctaveScript(s, e);
+    QVERIFY(m.find("plant_y = filt([0 0.035200000000000002 0.059900000000000002 -0.0067000000000000002]") != std::string::npos);
+    QVERIFY(m.find("closed_loop_y = Kf_y * feedback(") != std::string::npos);
 }
 
 QTEST_APPLESS_MAIN(TstCoefficientExport)
