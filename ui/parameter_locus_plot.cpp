@@ -36,26 +36,12 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
                                    const std::vector<std::complex<double>>& current,
                                    const QString& title) {
     title_->setText(title);
-    while (branches_.size() > locus.branches.size()) {
-        removePlottable(branches_.back());
-        branches_.pop_back();
-    }
-    while (branches_.size() < locus.branches.size()) {
-        auto* c = new QCPCurve(xAxis, yAxis);
-        c->setPen(QPen(colors::output, 1.6));
-        c->removeFromLegend();
-        branches_.push_back(c);
-    }
+    showBranches(this, branches_, locus.branches, [](std::size_t) { return QPen(colors::output, 1.6); });
     std::vector<std::complex<double>> starts;
     double extent = 1e-6;
-    for (std::size_t b = 0; b < locus.branches.size(); ++b) {
-        const auto& roots = locus.branches[b];
-        QVector<QCPCurveData> data;
-        for (std::size_t i = 0; i < roots.size(); ++i) {
-            data.append(QCPCurveData(static_cast<double>(i), roots[i].real(), roots[i].imag()));
-            extent = std::max(extent, std::abs(roots[i]));
-        }
-        branches_[b]->data()->set(data, true);
+    for (const auto& roots : locus.branches) {
+        for (const auto& r : roots)
+            extent = std::max(extent, std::abs(r));
         if (!roots.empty())
             starts.push_back(roots.front());
     }

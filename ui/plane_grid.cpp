@@ -22,6 +22,29 @@ QCPCurve* addComplexCurve(QCustomPlot* plot, const std::vector<std::complex<doub
     return curve;
 }
 
+void showBranches(QCustomPlot* plot, std::vector<QCPCurve*>& curves,
+                  const std::vector<std::vector<std::complex<double>>>& branches,
+                  const std::function<QPen(std::size_t)>& penFor) {
+    while (curves.size() > branches.size()) {
+        plot->removePlottable(curves.back());
+        curves.pop_back();
+    }
+    while (curves.size() < branches.size()) {
+        auto* c = new QCPCurve(plot->xAxis, plot->yAxis);
+        c->setPen(penFor(curves.size()));
+        c->removeFromLegend();
+        curves.push_back(c);
+    }
+    for (std::size_t b = 0; b < branches.size(); ++b) {
+        const auto& roots = branches[b];
+        QVector<QCPCurveData> data;
+        data.reserve(static_cast<qsizetype>(roots.size()));
+        for (std::size_t i = 0; i < roots.size(); ++i)
+            data.append(QCPCurveData(static_cast<double>(i), roots[i].real(), roots[i].imag()));
+        curves[b]->data()->set(data, true);
+    }
+}
+
 void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& points) {
     // QCPGraph sorts by key; points with equal real parts are kept (it is a scatter only).
     QVector<QCPGraphData> data;

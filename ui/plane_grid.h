@@ -4,6 +4,7 @@
 #include <qcustomplot.h>
 
 #include <complex>
+#include <functional>
 #include <vector>
 
 namespace xyt::ui {
@@ -32,6 +33,14 @@ private:
 /// A polyline of complex points as a curve (real part horizontal).
 QCPCurve* addComplexCurve(QCustomPlot* plot, const std::vector<std::complex<double>>& points,
                           const QPen& pen);
+/**
+ * Shows one curve per branch of complex points in @p curves (created or removed as the branch
+ * count changes; @p penFor gives the pen of the curve with that index).
+ */
+void showBranches(QCustomPlot* plot, std::vector<QCPCurve*>& curves,
+                  const std::vector<std::vector<std::complex<double>>>& branches,
+                  const std::function<QPen(std::size_t)>& penFor);
+
 /// Replaces the data of a point graph with the complex points.
 void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& points);
 

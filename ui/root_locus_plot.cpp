@@ -70,24 +70,13 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     hasLocus_ = true;
     lastTs_ = locus.tsSeconds;
     title_->setText(title);
-    while (branches_.size() > locus.branches.size()) {
-        removePlottable(branches_.back());
-        branches_.pop_back();
-    }
-    while (branches_.size() < locus.branches.size()) {
-        auto* c = new QCPCurve(xAxis, yAxis);
-        c->setPen(QPen(kBranchColors[static_cast<int>(branches_.size()) % kBranchColors.size()], 1.6));
-        c->removeFromLegend();
-        branches_.push_back(c);
-    }
-    for (std::size_t b = 0; b < locus.branches.size(); ++b) {
-        const auto& roots = locus.branches[b].roots;
-        QVector<QCPCurveData> data;
-        data.reserve(static_cast<qsizetype>(roots.size()));
-        for (std::size_t i = 0; i < roots.size(); ++i)
-            data.append(QCPCurveData(static_cast<double>(i), roots[i].real(), roots[i].imag()));
-        branches_[b]->data()->set(data, true);
-    }
+    std::vector<std::vector<std::complex<double>>> branches;
+    branches.reserve(locus.branches.size());
+    for (const auto& b : locus.branches)
+        branches.push_back(b.roots);
+    showBranches(this, branches_, branches, [](std::size_t i) {
+        return QPen(kBranchColors[static_cast<int>(i) % kBranchColors.size()], 1.6);
+    });
     setComplexPoints(poles_, locus.poles);
     setComplexPoints(zeros_, locus.zeros);
     setComplexPoints(current_, currentPoles);
