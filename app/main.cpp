@@ -59,6 +59,14 @@ int main(int argc, char* argv[]) {
             return 2;
         }
         QApplication::setOrganizationName("xytune-screenshot"); // never the user's layout
+        if (!parser.positionalArguments().isEmpty()) {
+            const auto loaded = xyt::ui::loadSessionFile(parser.positionalArguments().first());
+            if (!loaded.ok) {
+                std::fprintf(stderr, "xytune: %s\n", qPrintable(loaded.message()));
+                return 2;
+            }
+            session.reset(loaded.session);
+        }
         xyt::ui::MainWindow window(&session);
         window.resize(w, h);
         window.show();

@@ -29,6 +29,22 @@ QString polynomialHtml(const Polynomial& p, const QString& variable) {
     return out;
 }
 
+QString zInverseHtml(const Polynomial& p) {
+    QString out;
+    bool first = true;
+    for (int i = 0; i <= p.degree(); ++i) {
+        const double c = p.coefficient(i);
+        if (c == 0.0)
+            continue;
+        out += first ? (c < 0 ? "−" : "") : (c < 0 ? " − " : " + ");
+        out += num(std::abs(c));
+        if (i > 0)
+            out += QStringLiteral(" z<sup>−%1</sup>").arg(i);
+        first = false;
+    }
+    return first ? QStringLiteral("0") : out;
+}
+
 EquationsPanel::EquationsPanel(QWidget* parent) : QLabel(parent) {
     setTextFormat(Qt::RichText);
     setWordWrap(true);
@@ -42,6 +58,30 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
     if (!axis.ok) {
         setText(tr("<b>Axis %1</b>: %2: %3")
                     .arg(id, QString::fromStdString(axis.errorField), QString::fromStdString(axis.error)));
+        return;
+    }
+    if (axis.pp) {
+        const PolePlacementDesign& pp = *axis.pp;
+        QString html = tr("<b>Axis %1 — pole placement + ZPETC</b> (T<sub>s</sub> = %2 s)<br>")
+                   .arg(id, num(pp.tsSeconds));
+        html += tr("A F + B G = T (Diophantine, paper 001 Eq. 8)<br>");
+        html += tr("A = %1<br>B = %2<br>T = %3<br>")
+                    .arg(zInverseHtml(pp.a), zInverseHtml(pp.b), zInverseHtml(pp.t));
+        html += tr("F = %1<br>G = %2<br>").arg(zInverseHtml(pp.f), zInverseHtml(pp.g));
+        html += tr("K<sub>f</sub> = T(1)/B(1) = %1, residual %2<br>")
+                    .arg(num(pp.kf), QString::number(pp.residual, 'g', 2));
+        html += tr("control law: F u = K<sub>f</sub> w − G y<br>");
+        if (axis.zpetc && settings.pp.zpetcEnabled) {
+            const ZpetcDesign& z = *axis.zpetc;
+            html += tr("ZPETC: w(k) = N/D · r(k + %1), [B<sup>−</sup>(1)]<sup>2</sup> = %2<br>")
+                        .arg(z.previewSteps)
+                        .arg(num(z.gainFactor));
+            html += tr("N = %1<br>D = %2").arg(zInverseHtml(z.feedforwardNum),
+                                                zInverseHtml(z.feedforwardDen));
+        } else {
+            html += tr("no feedforward: w = r");
+        }
+        setText(html);
         return;
     }
     if (!axis.gt) {

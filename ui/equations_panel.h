@@ -16,6 +16,8 @@ public:
     void showAxis(const AxisSettings& settings, const AxisEvaluation& axis);
 };
 
+/// HTML of a polynomial in z^-1, ascending powers as typed in paper 001.
+QString zInverseHtml(const Polynomial& p);
 /// HTML of a polynomial in @p variable with superscript powers.
 QString polynomialHtml(const Polynomial& p, const QString& variable);
 

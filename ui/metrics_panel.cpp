@@ -17,7 +17,7 @@ QString displayNumber(double v, int decimals) {
     if (!std::isfinite(v))
         return QObject::tr("n/a");
     if (v != 0.0 && (std::abs(v) >= 1e6 || std::abs(v) < 1e-3))
-        return QString::number(v, 'g', decimals + 1);
+        return QString::number(v, 'g', 3);
     return QString::number(v, 'f', decimals);
 }
 
@@ -32,8 +32,8 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
                                      tr("ZPETC gain (%)")});
     table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table_->setWordWrap(false);
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->setAccessibleName(tr("Metrics"));
