@@ -143,10 +143,34 @@ QCPGraph* marker(QCustomPlot* plot, const QCPScatterStyle& style, const QString&
     return g;
 }
 
+/// Log ticks at 1, 2, 5 x 10^k when the range spans fewer than three decades (a decade-only
+/// ticker labels just "1" and "10" on the default wn range), at the decades otherwise.
+class OneTwoFiveLogTicker : public QCPAxisTickerLog {
+protected:
+    QVector<double> createTickVector(double tickStep, const QCPRange& range) override {
+        oneTwoFive_ = range.lower > 0.0 && range.upper / range.lower < 1e3;
+        if (!oneTwoFive_)
+            return QCPAxisTickerLog::createTickVector(tickStep, range);
+        QVector<double> ticks;
+        for (double decade = std::pow(10.0, std::floor(std::log10(range.lower)));
+             decade <= range.upper; decade *= 10.0)
+            for (double m : {1.0, 2.0, 5.0})
+                if (m * decade >= range.lower && m * decade <= range.upper)
+                    ticks.append(m * decade);
+        return ticks;
+    }
+    int getSubTickCount(double tickStep) override {
+        return oneTwoFive_ ? 0 : QCPAxisTickerLog::getSubTickCount(tickStep);
+    }
+
+private:
+    bool oneTwoFive_ = false;
+};
+
 void setScale(QCPAxis* axis, bool logarithmic) {
     axis->setScaleType(logarithmic ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
     if (logarithmic) {
-        auto ticker = QSharedPointer<QCPAxisTickerLog>::create();
+        auto ticker = QSharedPointer<OneTwoFiveLogTicker>::create();
         ticker->setSubTickCount(8);
         axis->setTicker(ticker);
         axis->setNumberFormat("g");
@@ -214,10 +238,15 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
     addLayer("markers", layer("overlay-grid"), QCustomPlot::limAbove);
     for (QCPGraph* g : {current_, best_, refined_})
         g->setLayer("markers");
+    // The legend goes in a row under the map, where it hides no cell.
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
-    legend->setBrush(QColor(255, 255, 255, 220));
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    legend->setBorderPen(Qt::NoPen);
+    legend->setWrap(2);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    axisRect()->insetLayout()->take(legend);
+    plotLayout()->addElement(2, 0, legend);
+    plotLayout()->setRowStretchFactor(2, 0.001);
 
     setupInteractivePlot(this);
     // The shared "reset view" rescales with a linear margin, which goes below zero on the log
@@ -289,6 +318,13 @@ void DesignSpacePlot::showResult(const DesignSweepResult& result, bool logGrid, 
     refined_->data()->clear();
     if (result.refined)
         refined_->addData(result.refined->point.wn, result.refined->point.kp);
+    // The legend lists only the markers drawn.
+    for (QCPGraph* g : {best_, refined_}) {
+        if (g->dataCount() > 0)
+            g->addToLegend();
+        else
+            g->removeFromLegend();
+    }
     showWholeGrid();
 }
 
@@ -350,12 +386,12 @@ void DesignSpacePlot::drawOutline() {
         // A dark halo under a white line: visible on every colour of the map.
         auto* halo = new QCPCurve(xAxis, yAxis);
         halo->setPen(QPen(QColor(0, 0, 0, 200), 4.5));
-        halo->removeFromLegend();
+        halo->setName(tr("feasible region"));
+        if (!outline_.empty())
+            halo->removeFromLegend();
         auto* line = new QCPCurve(xAxis, yAxis);
         line->setPen(QPen(Qt::white, 2.0));
-        line->setName(tr("feasible region"));
-        if (!outline_.empty())
-            line->removeFromLegend();
+        line->removeFromLegend();
         outlineHalo_.push_back(halo);
         outline_.push_back(line);
     }

@@ -43,7 +43,7 @@ QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int deci
     box->setValue(value);
     box->setSuffix(suffix);
     box->setKeyboardTracking(false);
-    box->setMinimumWidth(70);
+    box->setMinimumWidth(64);
     return box;
 }
 
@@ -121,12 +121,15 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     const Specification spec = initialSpecification(session_->session());
     lastUmaxVolts_ = session_->session().umaxVolts;
 
-    wnMin_ = numberBox(0.2, 1e-4, 1e4, 4, QString());
-    wnMax_ = numberBox(20.0, 1e-4, 1e4, 4, QString());
+    wnMin_ = numberBox(0.2, 1e-3, 1e4, 3, QString());
+    wnMax_ = numberBox(20.0, 1e-3, 1e4, 3, QString());
     wnCount_ = countBox(60);
-    kpMin_ = numberBox(3.0, 1e-4, 1e7, 4, QString());
-    kpMax_ = numberBox(3000.0, 1e-4, 1e7, 4, QString());
+    kpMin_ = numberBox(3.0, 1e-3, 1e7, 3, QString());
+    kpMax_ = numberBox(3000.0, 1e-3, 1e7, 3, QString());
     kpCount_ = countBox(60);
+    // Range bounds are typed; the arrows only crowd the row.
+    for (QDoubleSpinBox* box : {wnMin_, wnMax_, kpMin_, kpMax_})
+        box->setButtonSymbols(QAbstractSpinBox::NoButtons);
     logGrid_ = new QCheckBox(tr("logarithmic spacing"));
     logGrid_->setChecked(true);
     auto* grid = new QGroupBox(tr("Grid"));
@@ -194,8 +197,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design."));
     readout_->setWordWrap(true);
     readout_->setMinimumHeight(2 * readout_->fontMetrics().lineSpacing() + 4);
-    auto* legendNote = new QLabel(tr("<small>veiled: infeasible · grey: unstable or diverged · light grey: not "
-                                     "computed · white outline: feasible region</small>"));
+    auto* legendNote = new QLabel(tr("<small>bright: feasible (outlined) · veiled: infeasible · grey: unstable "
+                                     "or diverged · light grey: not computed (cancelled)</small>"));
     legendNote->setWordWrap(true);
     auto* right = new QVBoxLayout;
     right->addWidget(plot_, 1);
