@@ -92,17 +92,10 @@ QString metricLabel(SweepCriterion metric) {
 }
 
 QString metricAxisLabel(SweepCriterion metric) {
-    switch (metric) {
-    case SweepCriterion::Itae:
-        return QObject::tr("ITAE ∫t|e|dt (mm·s²)");
-    case SweepCriterion::MaxError:
-        return QObject::tr("max |e| (mm)");
-    case SweepCriterion::Rmse:
-        return QObject::tr("RMSE (mm)");
-    case SweepCriterion::MaxU:
-        return QObject::tr("max |u| (V)");
-    }
-    return {};
+    // ITAE = integral of t |e| dt: trajectory unit (mm) times s^2.
+    const bool itae = metric == SweepCriterion::Itae;
+    const QString unit = itae ? QObject::tr("mm·s²") : metric == SweepCriterion::MaxU ? QObject::tr("V") : QObject::tr("mm");
+    return QObject::tr("%1%2 (%3)").arg(metricLabel(metric), itae ? QObject::tr(" ∫t|e|dt") : QString(), unit);
 }
 
 namespace {
