@@ -1,0 +1,382 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// GUI tests of the design-space view: drive the real buttons and the plot offscreen; compare the
+// heat map with the core's sweepDesignSpace called directly on the same problem.
+#include "ui/design_space_plot.h"
+#include "ui/design_space_view.h"
+#include "ui/tuning_session.h"
+#include "core/session_evaluation.h"
+#include "core/trajectory.h"
+#include "tests/support/tolerance.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTest>
+
+#include <cmath>
+#include <set>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+Q_DECLARE_METATYPE(std::vector<std::uint8_t>)
+
+namespace {
+// A study of a few thousand points takes seconds on the shared 2-core machine; leave room.
+constexpr int kStudyTimeoutMs = 120000;
+
+/// The problem the view must build for axis @p axis, assembled here from the session as the
+/// issue describes it (independently of the view's code).
+DesignProblem expectedProblem(const Session& s, int axis, double maxOvershootPct) {
+    DesignProblem p;
+    p.plant = s.axes[static_cast<std::size_t>(axis)].gt.plant;
+    p.modelUnitsPerPositionUnit = s.axes[static_cast<std::size_t>(axis)].gt.modelUnitsPerPositionUnit;
+    p.dtSeconds = s.trajectory.dtSeconds;
+    p.reference = sampled(axisReference(s.trajectory, axis),
+                          sampleTimes(s.trajectory.effectiveDurationSeconds(), s.trajectory.dtSeconds));
+    p.spec.umaxVolts = s.umaxVolts;
+    p.spec.maxOvershootPct = maxOvershootPct;
+    return p;
+}
+} // namespace
+
+class TstDesignSpaceView : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void cleanup();
+    void defaultsFollowTheIssue();
+    void heatMapHoldsTheCoreValues();
+    void mapCellsLineUpWithTheLogGrid();
+    void clickOnACellLoadsThatDesign();
+    void hoverShowsTheFiguresAndFailures();
+    void overshootOnlyFailureIsExplained();
+    void cancelStopsAStudyAndKeepsTheWindowResponsive();
+    void newRunReplacesARunningOne();
+    void destroyingWhileRunningIsSafe();
+    void currentDesignMarkerFollowsTheSession();
+    void outlineEnclosesTheFeasibleCells_data();
+    void outlineEnclosesTheFeasibleCells();
+    void cellEdgesAreMidpointsInTheAxisScale();
+
+private:
+    void setSmallGrid(int n, double overshootPct);
+    void runAndWait();
+
+    std::unique_ptr<TuningSession> session_;
+    std::unique_ptr<DesignSpaceView> view_;
+};
+
+void TstDesignSpaceView::init() {
+    session_ = std::make_unique<TuningSession>();
+    view_ = std::make_unique<DesignSpaceView>(session_.get());
+    view_->resize(900, 600);
+    view_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(view_.get()));
+}
+
+void TstDesignSpaceView::cleanup() {
+    view_.reset();
+    session_.reset();
+}
+
+void TstDesignSpaceView::setSmallGrid(int n, double overshootPct) {
+    view_->wnCountBox()->setValue(n);
+    view_->kpCountBox()->setValue(n);
+    view_->overshootBox()->setValue(overshootPct);
+}
+
+void TstDesignSpaceView::runAndWait() {
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QVERIFY(view_->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(!view_->isRunning(), kStudyTimeoutMs);
+    QVERIFY(view_->result().has_value());
+    view_->plot()->replot(); // lay out the axes now, so that coordToPixel is current
+}
+
+void TstDesignSpaceView::defaultsFollowTheIssue() {
+    // Issue 7: wn 0.2-20 rad/s, kp 3-3000, 60 x 60, log grid; the paper's specification with the
+    // session's actuator limit (Session holds no specification, so the overshoot limit is 0 %).
+    QCOMPARE(view_->wnMinBox()->value(), 0.2);
+    QCOMPARE(view_->wnMaxBox()->value(), 20.0);
+    QCOMPARE(view_->kpMinBox()->value(), 3.0);
+    QCOMPARE(view_->kpMaxBox()->value(), 3000.0);
+    QCOMPARE(view_->wnCountBox()->value(), 60);
+    QCOMPARE(view_->kpCountBox()->value(), 60);
+    QVERIFY(view_->logGridBox()->isChecked());
+    QCOMPARE(view_->settlingBox()->value(), 100.0);
+    QCOMPARE(view_->overshootBox()->value(), 0.0);
+    QCOMPARE(view_->errorBox()->value(), 2.0);
+    QCOMPARE(view_->umaxBox()->value(), session_->session().umaxVolts);
+    QVERIFY(!view_->cancelButton()->isEnabled());
+}
+
+void TstDesignSpaceView::heatMapHoldsTheCoreValues() {
+    // Overshoot <= 2 %: the paper's lower-base design overshoots 0.997 % (specification.h), so
+    // the grid has feasible designs and a best one.
+    setSmallGrid(8, 2.0);
+    runAndWait();
+    QCOMPARE(view_->progressBar()->value(), 100);
+
+    const DesignProblem problem = expectedProblem(session_->session(), 0, 2.0);
+    const SweepAxis wn{0.2, 20.0, 8, true}, kp{3.0, 3000.0, 8, true};
+    const DesignSweepResult expected = sweepDesignSpace(problem, wn, kp, {});
+    const DesignSweepResult& actual = *view_->result();
+    QCOMPARE(actual.status, SweepStatus::Completed);
+    QCOMPARE(actual.feasibleCount, expected.feasibleCount);
+    QVERIFY(expected.feasibleCount > 0);
+    QVERIFY(expected.bestIndex.has_value());
+
+    QCPColorMapData* map = view_->plot()->colorMap()->data();
+    QCPColorMapData* status = view_->plot()->statusMap()->data();
+    QCOMPARE(map->keySize(), 8);
+    QCOMPARE(map->valueSize(), 8);
+    for (std::size_t i = 0; i < 8; ++i)
+        for (std::size_t j = 0; j < 8; ++j) {
+            const DesignPoint& p = expected.at(i, j);
+            const double value = criterionValue(p, SweepCriterion::Itae);
+            const double cell = map->cell(static_cast<int>(i), static_cast<int>(j));
+            // The core is deterministic bit for bit whatever the thread count (design_sweep.h),
+            // so the map holds exactly the directly computed ITAE; non-finite ones are NaN (the
+            // status layer draws them).
+            if (std::isfinite(value))
+                XYT_COMPARE_NEAR(cell, value, 0.0, 0.0);
+            else
+                QVERIFY(std::isnan(cell));
+            const int expectedStatus = !p.stable || !p.metricsFinite ? DesignSpacePlot::Failed
+                                       : p.feasible                  ? DesignSpacePlot::Feasible
+                                                                     : DesignSpacePlot::Infeasible;
+            QCOMPARE(static_cast<int>(status->cell(static_cast<int>(i), static_cast<int>(j))), expectedStatus);
+        }
+    // The star sits on the core's best grid point, the diamond on its refined best.
+    const DesignPoint& best = expected.points[*expected.bestIndex];
+    QCOMPARE(view_->plot()->bestMarker()->dataCount(), 1);
+    XYT_COMPARE_NEAR(view_->plot()->bestMarker()->data()->at(0)->key, best.wn, 0.0, 0.0);
+    XYT_COMPARE_NEAR(view_->plot()->bestMarker()->data()->at(0)->value, best.kp, 0.0, 0.0);
+    QVERIFY(expected.refined.has_value());
+    QCOMPARE(view_->plot()->refinedMarker()->dataCount(), 1);
+    XYT_COMPARE_NEAR(view_->plot()->refinedMarker()->data()->at(0)->key, expected.refined->point.wn, 0.0, 0.0);
+    XYT_COMPARE_NEAR(view_->plot()->refinedMarker()->data()->at(0)->value, expected.refined->point.kp, 0.0, 0.0);
+    QVERIFY(view_->plot()->outlineCount() >= 1);
+    QVERIFY2(view_->statusText().contains("feasible"), qPrintable(view_->statusText()));
+
+    // The metric selector redraws the held result: max |u| of every point.
+    view_->metricBox()->setCurrentIndex(3);
+    for (std::size_t i = 0; i < 8; ++i)
+        for (std::size_t j = 0; j < 8; ++j) {
+            const double value = criterionValue(expected.at(i, j), SweepCriterion::MaxU);
+            if (std::isfinite(value))
+                XYT_COMPARE_NEAR(map->cell(static_cast<int>(i), static_cast<int>(j)), value, 0.0, 0.0);
+        }
+}
+
+void TstDesignSpaceView::mapCellsLineUpWithTheLogGrid() {
+    setSmallGrid(6, 2.0);
+    runAndWait();
+    DesignSpacePlot* plot = view_->plot();
+    QCOMPARE(plot->xAxis->scaleType(), QCPAxis::stLogarithmic);
+    QCOMPARE(plot->yAxis->scaleType(), QCPAxis::stLogarithmic);
+    // Render the metric layer alone and read the colour at each grid point's pixel: it must be
+    // the gradient's colour of that cell's value (a misaligned map shows a neighbour's colour).
+    plot->statusMap()->setVisible(false);
+    for (int i = 0; i < plot->outlineCount(); ++i)
+        plot->outlineCurve(i)->setVisible(false);
+    for (QCPGraph* g : {plot->bestMarker(), plot->refinedMarker(), plot->currentMarker()})
+        g->setVisible(false);
+    plot->legend->setVisible(false);
+    plot->xAxis->grid()->setVisible(false);
+    plot->yAxis->grid()->setVisible(false);
+    plot->replot();
+    const QImage image = plot->toPixmap(plot->width(), plot->height(), 1.0).toImage();
+    const QCPColorMap* map = plot->colorMap();
+    int checked = 0;
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+            const double v = map->data()->cell(i, j);
+            if (std::isnan(v))
+                continue;
+            const QPoint px = plot->pixelOfCell(static_cast<std::size_t>(i), static_cast<std::size_t>(j)).toPoint();
+            const QColor want = QColor::fromRgba(map->gradient().color(v, map->dataRange(), true));
+            const QColor got = image.pixelColor(px);
+            // One unit per channel: the gradient's 256 levels are looked up identically, the
+            // slack only covers the image's colour conversion.
+            QVERIFY2(std::abs(got.red() - want.red()) <= 1 && std::abs(got.green() - want.green()) <= 1 &&
+                         std::abs(got.blue() - want.blue()) <= 1,
+                     qPrintable(QString("cell %1,%2: got %3 want %4").arg(i).arg(j).arg(got.name(), want.name())));
+            // And the cell lookup used for hover and click agrees.
+            const auto cell = plot->cellAtPixel(px);
+            QVERIFY(cell.has_value());
+            QCOMPARE(cell->first, static_cast<std::size_t>(i));
+            QCOMPARE(cell->second, static_cast<std::size_t>(j));
+            ++checked;
+        }
+    QVERIFY(checked > 18);
+}
+
+void TstDesignSpaceView::clickOnACellLoadsThatDesign() {
+    setSmallGrid(8, 2.0);
+    runAndWait();
+    const DesignSweepResult& r = *view_->result();
+    const double wnBefore = session_->session().axes[0].gt.omegaNRadPerSec;
+    const QPoint px = view_->plot()->pixelOfCell(5, 2).toPoint();
+    QTest::mouseClick(view_->plot(), Qt::LeftButton, Qt::NoModifier, px);
+    // The click copies the grid values into the session's current axis (x).
+    QTRY_VERIFY(session_->session().axes[0].gt.omegaNRadPerSec != wnBefore);
+    XYT_COMPARE_NEAR(session_->session().axes[0].gt.omegaNRadPerSec, r.wnValues[5], 0.0, 0.0);
+    XYT_COMPARE_NEAR(session_->session().axes[0].gt.kp, r.kpValues[2], 0.0, 0.0);
+    QCOMPARE(session_->undoStack()->undoText(), QString("Load design from the design space"));
+    // The cross follows the session.
+    XYT_COMPARE_NEAR(view_->plot()->currentMarker()->data()->at(0)->key, r.wnValues[5], 0.0, 0.0);
+    session_->undoStack()->undo();
+    XYT_COMPARE_NEAR(session_->session().axes[0].gt.omegaNRadPerSec, wnBefore, 0.0, 0.0);
+}
+
+void TstDesignSpaceView::hoverShowsTheFiguresAndFailures() {
+    setSmallGrid(8, 0.0);
+    runAndWait();
+    const DesignSweepResult& r = *view_->result();
+    QTest::mouseMove(view_->plot(), view_->plot()->pixelOfCell(4, 1).toPoint());
+    QTRY_VERIFY(view_->readoutText().contains(QString("ωn = %1").arg(QString::number(r.wnValues[4], 'g', 4))));
+    const QString text = view_->readoutText();
+    QVERIFY2(text.contains(QString("kp = %1").arg(QString::number(r.kpValues[1], 'g', 4))), qPrintable(text));
+    // With a 0 % limit no design is feasible (specification.h: G_R is type 2).
+    QVERIFY2(text.contains("feasible: no") && text.contains("overshoot"), qPrintable(text));
+}
+
+void TstDesignSpaceView::overshootOnlyFailureIsExplained() {
+    setSmallGrid(8, 0.0);
+    runAndWait();
+    QCOMPARE(view_->result()->feasibleCount, 0);
+    QVERIFY2(view_->statusText().contains("every GT design overshoots; relax the overshoot limit"),
+             qPrintable(view_->statusText()));
+    QCOMPARE(view_->plot()->bestMarker()->dataCount(), 0);
+    QCOMPARE(view_->plot()->outlineCount(), 0);
+}
+
+void TstDesignSpaceView::cancelStopsAStudyAndKeepsTheWindowResponsive() {
+    // 500 x 500 = 250000 designs: minutes of work, so the cancel surely comes first.
+    setSmallGrid(500, 2.0);
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QVERIFY(view_->isRunning());
+    QVERIFY(view_->cancelButton()->isEnabled());
+    // The event loop keeps turning while the workers run: progress arrives through it, and each
+    // processEvents() returns.
+    QElapsedTimer clock;
+    clock.start();
+    int turns = 0;
+    while (view_->progressBar()->value() < 1 && clock.elapsed() < kStudyTimeoutMs) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        ++turns;
+    }
+    QVERIFY(view_->progressBar()->value() >= 1);
+    QVERIFY(turns > 1);
+    QTest::mouseClick(view_->cancelButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(view_->statusText().contains("Cancelled"), kStudyTimeoutMs);
+    QVERIFY(!view_->isRunning());
+    QCOMPARE(view_->result()->status, SweepStatus::Cancelled);
+    QVERIFY(view_->result()->computedCount < 250000);
+    QVERIFY(view_->progressBar()->value() < 100);
+}
+
+void TstDesignSpaceView::newRunReplacesARunningOne() {
+    setSmallGrid(500, 2.0);
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QVERIFY(view_->isRunning());
+    setSmallGrid(5, 2.0);
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!view_->isRunning(), kStudyTimeoutMs);
+    // Only the second study's result arrives.
+    QCOMPARE(view_->result()->status, SweepStatus::Completed);
+    QCOMPARE(view_->result()->points.size(), std::size_t(25));
+    QCOMPARE(view_->progressBar()->value(), 100);
+}
+
+void TstDesignSpaceView::destroyingWhileRunningIsSafe() {
+    setSmallGrid(500, 2.0);
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QVERIFY(view_->isRunning());
+    QTest::qWait(100);
+    view_.reset(); // cancels and joins; queued progress events die with the widget
+    QTest::qWait(100);
+    QVERIFY(!view_);
+}
+
+void TstDesignSpaceView::currentDesignMarkerFollowsTheSession() {
+    session_->setOmegaN(0, 3.5);
+    QCOMPARE(view_->plot()->currentMarker()->dataCount(), 1);
+    XYT_COMPARE_NEAR(view_->plot()->currentMarker()->data()->at(0)->key, 3.5, 0.0, 0.0);
+}
+
+void TstDesignSpaceView::outlineEnclosesTheFeasibleCells_data() {
+    QTest::addColumn<int>("wnCount");
+    QTest::addColumn<int>("kpCount");
+    QTest::addColumn<std::vector<std::uint8_t>>("mask");
+    QTest::addColumn<int>("loops");
+    // Rows are wn, columns kp (DesignSweepResult indexing).
+    QTest::newRow("one cell: one square") << 3 << 3 << std::vector<std::uint8_t>{0, 0, 0, 0, 1, 0, 0, 0, 0} << 1;
+    QTest::newRow("all feasible: the grid's border") << 2 << 3 << std::vector<std::uint8_t>(6, 1) << 1;
+    QTest::newRow("ring: outer and inner loop") << 3 << 3 << std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1} << 2;
+    QTest::newRow("two apart") << 1 << 3 << std::vector<std::uint8_t>{1, 0, 1} << 2;
+    QTest::newRow("diagonal pair touching at a corner") << 2 << 2 << std::vector<std::uint8_t>{1, 0, 0, 1} << 2;
+    QTest::newRow("none") << 2 << 2 << std::vector<std::uint8_t>(4, 0) << 0;
+}
+
+void TstDesignSpaceView::outlineEnclosesTheFeasibleCells() {
+    QFETCH(int, wnCount);
+    QFETCH(int, kpCount);
+    QFETCH(std::vector<std::uint8_t>, mask);
+    QFETCH(int, loops);
+    const auto feasible = [&](int a, int b) {
+        return a >= 0 && b >= 0 && a < wnCount && b < kpCount && mask[static_cast<std::size_t>(a * kpCount + b)];
+    };
+    // Invariant: the outline's unit edges are exactly the sides between a feasible cell and a
+    // non-feasible cell or the outside, each once, and every loop is closed.
+    int perimeter = 0;
+    for (int a = 0; a < wnCount; ++a)
+        for (int b = 0; b < kpCount; ++b)
+            if (feasible(a, b))
+                perimeter += !feasible(a - 1, b) + !feasible(a + 1, b) + !feasible(a, b - 1) + !feasible(a, b + 1);
+    const auto outline = feasibleOutline(mask, wnCount, kpCount);
+    QCOMPARE(static_cast<int>(outline.size()), loops);
+    std::set<std::pair<std::pair<int, int>, std::pair<int, int>>> seen;
+    int edges = 0;
+    for (const auto& loop : outline) {
+        QVERIFY(loop.size() >= 5);
+        QVERIFY(loop.front() == loop.back());
+        for (std::size_t k = 0; k + 1 < loop.size(); ++k) {
+            const int da = loop[k + 1].iWn - loop[k].iWn, db = loop[k + 1].iKp - loop[k].iKp;
+            QCOMPARE(std::abs(da) + std::abs(db), 1);
+            // The feasible cell lies on the left of the edge (counter-clockwise in wn x kp).
+            const int a0 = loop[k].iWn, b0 = loop[k].iKp;
+            const int cellA = da == 1 || db == -1 ? a0 : a0 - 1;
+            const int cellB = da == 1 || db == 1 ? b0 : b0 - 1;
+            QVERIFY2(feasible(cellA, cellB), qPrintable(QString("edge %1 of a loop").arg(k)));
+            QVERIFY(seen.insert({{loop[k].iWn, loop[k].iKp}, {loop[k + 1].iWn, loop[k + 1].iKp}}).second);
+            ++edges;
+        }
+    }
+    QCOMPARE(edges, perimeter);
+}
+
+void TstDesignSpaceView::cellEdgesAreMidpointsInTheAxisScale() {
+    // Closed forms: log grid 1, 10, 100 -> geometric means sqrt(10), sqrt(1000) and mirrored
+    // outer edges 1/sqrt(10), 1000/sqrt(10); linear grid 1, 2, 4 -> 1.5, 3 and 0.5, 5.
+    const auto logEdges = cellEdges({1.0, 10.0, 100.0}, true);
+    const std::vector<double> logExpected{1.0 / std::sqrt(10.0), std::sqrt(10.0), std::sqrt(1000.0),
+                                          1000.0 / std::sqrt(10.0)};
+    const auto linEdges = cellEdges({1.0, 2.0, 4.0}, false);
+    const std::vector<double> linExpected{0.5, 1.5, 3.0, 5.0};
+    QCOMPARE(logEdges.size(), std::size_t(4));
+    QCOMPARE(linEdges.size(), std::size_t(4));
+    for (std::size_t i = 0; i < 4; ++i) {
+        // A square root and a division: a few ulps.
+        XYT_COMPARE_NEAR(logEdges[i], logExpected[i], 1e-15, 0.0);
+        XYT_COMPARE_NEAR(linEdges[i], linExpected[i], 1e-15, 0.0);
+    }
+}
+
+QTEST_MAIN(TstDesignSpaceView)
+#include "tst_design_space_view.moc"

@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/design_space_view.h"
+
+#include "core/errors.h"
+#include "core/session_evaluation.h"
+#include "core/trajectory.h"
+#include "ui/design_space_plot.h"
+#include "ui/tuning_session.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace xyt::ui {
+
+Specification initialSpecification(const Session& session) {
+    Specification spec;
+    spec.umaxVolts = session.umaxVolts;
+    return spec;
+}
+
+namespace {
+
+const SweepCriterion kCriteria[] = {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
+                                    SweepCriterion::MaxU};
+
+QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int decimals, const QString& suffix) {
+    auto* box = new QDoubleSpinBox;
+    box->setRange(minimum, maximum);
+    box->setDecimals(decimals);
+    box->setValue(value);
+    box->setSuffix(suffix);
+    box->setKeyboardTracking(false);
+    box->setMinimumWidth(64);
+    return box;
+}
+
+QSpinBox* countBox(int value) {
+    auto* box = new QSpinBox;
+    // The heat map needs at least two values per axis to size its cells.
+    box->setRange(2, SweepAxis::kMaxCount);
+    box->setValue(value);
+    box->setPrefix(QStringLiteral("N "));
+    return box;
+}
+
+QComboBox* criterionCombo() {
+    auto* box = new QComboBox;
+    for (SweepCriterion c : kCriteria)
+        box->addItem(metricLabel(c), static_cast<int>(c));
+    return box;
+}
+
+SweepCriterion selected(const QComboBox* box) { return static_cast<SweepCriterion>(box->currentData().toInt()); }
+
+QString num(double v, int digits = 4) { return QString::number(v, 'g', digits); }
+
+QString axisName(const Session& s, int axis) {
+    return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
+}
+
+/// What the study of @p axis depends on in the session (everything but wn and kp).
+bool sameStudySettings(const Session& a, const Session& b, int axis) {
+    const GtAxisSettings& ga = a.axes.at(static_cast<std::size_t>(axis)).gt;
+    const GtAxisSettings& gb = b.axes.at(static_cast<std::size_t>(axis)).gt;
+    return ga.plant == gb.plant &&
+           ga.modelUnitsPerPositionUnit == gb.modelUnitsPerPositionUnit && a.trajectory == b.trajectory;
+}
+
+/// The criteria a design fails, for the readout.
+QStringList failures(const DesignPoint& p, const Specification& spec) {
+    QStringList out;
+    if (!p.computed)
+        return {QObject::tr("not computed (the study was cancelled)")};
+    if (!p.stable)
+        out << QObject::tr("unstable closed loop");
+    if (!p.metricsFinite)
+        out << QObject::tr("the run diverged");
+    if (p.stable && !p.check.settlingTime)
+        out << QObject::tr("settling %1 s > %2 s").arg(num(p.step.settlingTimeSeconds)).arg(num(spec.maxSettlingTimeSeconds));
+    if (p.stable && !p.check.overshoot)
+        out << QObject::tr("overshoot %1 % > %2 %").arg(num(p.step.overshootPct)).arg(num(spec.maxOvershootPct));
+    if (p.metricsFinite && !p.check.noSaturation)
+        out << (p.tracking.saturated ? QObject::tr("|u| saturates at %1 V").arg(num(spec.umaxVolts))
+                                     : QObject::tr("|u| %1 V > %2 V").arg(num(p.tracking.maxAbsU)).arg(num(spec.umaxVolts)));
+    if (p.metricsFinite && !p.check.trackingError)
+        out << QObject::tr("max error %1 % > %2 %").arg(num(p.tracking.maxAbsErrorPct)).arg(num(spec.maxErrorPct));
+    return out;
+}
+
+QString describePoint(const DesignPoint& p, const Specification& spec, SweepCriterion metric) {
+    const QString value = std::isfinite(criterionValue(p, metric)) ? num(criterionValue(p, metric))
+                                                                   : QObject::tr("—");
+    QString text = QObject::tr("ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5")
+                       .arg(num(p.wn))
+                       .arg(num(p.kp))
+                       .arg(metricLabel(metric))
+                       .arg(value)
+                       .arg(p.feasible ? QObject::tr("yes") : QObject::tr("no"));
+    if (!p.feasible)
+        text += QObject::tr("\nfails: %1").arg(failures(p, spec).join(QStringLiteral("; ")));
+    return text;
+}
+
+} // namespace
+
+DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
+    : QWidget(parent), session_(session) {
+    const Specification spec = initialSpecification(session_->session());
+    lastUmaxVolts_ = session_->session().umaxVolts;
+
+    wnMin_ = numberBox(0.2, 1e-3, 1e4, 3, QString());
+    wnMax_ = numberBox(20.0, 1e-3, 1e4, 3, QString());
+    wnCount_ = countBox(60);
+    kpMin_ = numberBox(3.0, 1e-3, 1e7, 3, QString());
+    kpMax_ = numberBox(3000.0, 1e-3, 1e7, 3, QString());
+    kpCount_ = countBox(60);
+    // Range bounds are typed; the arrows only crowd the row.
+    for (QDoubleSpinBox* box : {wnMin_, wnMax_, kpMin_, kpMax_})
+        box->setButtonSymbols(QAbstractSpinBox::NoButtons);
+    logGrid_ = new QCheckBox(tr("logarithmic spacing"));
+    logGrid_->setChecked(true);
+    auto* grid = new QGroupBox(tr("Grid"));
+    auto* gridForm = new QFormLayout(grid);
+    const auto rangeRow = [](QWidget* a, QWidget* b, QWidget* c) {
+        auto* row = new QHBoxLayout;
+        row->addWidget(a);
+        row->addWidget(new QLabel(QStringLiteral("–")));
+        row->addWidget(b);
+        row->addWidget(c);
+        return row;
+    };
+    gridForm->addRow(tr("ωn (rad/s)"), rangeRow(wnMin_, wnMax_, wnCount_));
+    gridForm->addRow(tr("kp"), rangeRow(kpMin_, kpMax_, kpCount_));
+    gridForm->addRow(logGrid_);
+
+    criterion_ = criterionCombo();
+    metric_ = criterionCombo();
+    logColor_ = new QCheckBox(tr("logarithmic colour scale"));
+    logColor_->setChecked(true);
+    auto* choice = new QGroupBox(tr("Choice"));
+    auto* choiceForm = new QFormLayout(choice);
+    choiceForm->addRow(tr("Best design minimizes"), criterion_);
+    choiceForm->addRow(tr("Heat map shows"), metric_);
+    choiceForm->addRow(logColor_);
+
+    settling_ = numberBox(spec.maxSettlingTimeSeconds, 0.001, 1e6, 3, tr(" s"));
+    overshoot_ = numberBox(spec.maxOvershootPct, 0.0, 1000.0, 3, tr(" %"));
+    error_ = numberBox(spec.maxErrorPct, 0.001, 1000.0, 3, tr(" %"));
+    umax_ = numberBox(spec.umaxVolts, 0.001, 1e4, 3, tr(" V"));
+    auto* specBox = new QGroupBox(tr("Specification"));
+    auto* specForm = new QFormLayout(specBox);
+    specForm->addRow(tr("settling time ≤"), settling_);
+    specForm->addRow(tr("step overshoot ≤"), overshoot_);
+    specForm->addRow(tr("max tracking error ≤"), error_);
+    specForm->addRow(tr("|u| ≤ (actuator limit)"), umax_);
+
+    run_ = new QPushButton(tr("Run"));
+    run_->setDefault(true);
+    cancel_ = new QPushButton(tr("Cancel"));
+    cancel_->setEnabled(false);
+    progress_ = new QProgressBar;
+    progress_->setRange(0, 100);
+    progress_->setValue(0);
+    status_ = new QLabel(tr("Set the grid and press Run to study the current axis."));
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(run_);
+    buttons->addWidget(cancel_);
+
+    auto* controls = new QVBoxLayout;
+    controls->addWidget(grid);
+    controls->addWidget(choice);
+    controls->addWidget(specBox);
+    controls->addLayout(buttons);
+    controls->addWidget(progress_);
+    controls->addWidget(status_);
+    controls->addStretch(1);
+    auto* controlPanel = new QWidget;
+    controlPanel->setLayout(controls);
+    controlPanel->setMaximumWidth(330);
+
+    plot_ = new DesignSpacePlot;
+    readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design."));
+    readout_->setWordWrap(true);
+    readout_->setMinimumHeight(2 * readout_->fontMetrics().lineSpacing() + 4);
+    auto* legendNote = new QLabel(tr("<small>bright: feasible (outlined) · veiled: infeasible · grey: unstable "
+                                     "or diverged · light grey: not computed (cancelled)</small>"));
+    legendNote->setWordWrap(true);
+    auto* right = new QVBoxLayout;
+    right->addWidget(plot_, 1);
+    right->addWidget(legendNote);
+    right->addWidget(readout_);
+
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(controlPanel);
+    layout->addLayout(right, 1);
+
+    connect(run_, &QPushButton::clicked, this, &DesignSpaceView::run);
+    connect(cancel_, &QPushButton::clicked, this, &DesignSpaceView::cancel);
+    const auto redraw = [this] { plot_->setMetric(selected(metric_), logColor_->isChecked()); };
+    connect(metric_, &QComboBox::currentIndexChanged, this, [this, redraw] {
+        // ITAE spans decades over the grid; the other figures rarely do.
+        logColor_->setChecked(selected(metric_) == SweepCriterion::Itae);
+        redraw();
+    });
+    connect(logColor_, &QCheckBox::toggled, this, redraw);
+    connect(plot_, &DesignSpacePlot::cellHovered, this, &DesignSpaceView::showHover);
+    connect(plot_, &DesignSpacePlot::cellClicked, this, &DesignSpaceView::loadCell);
+    connect(session_, &TuningSession::designChanged, this, &DesignSpaceView::updateCurrentDesign);
+    updateCurrentDesign();
+}
+
+DesignSpaceView::~DesignSpaceView() { stopJob(); }
+
+QString DesignSpaceView::statusText() const { return status_->text(); }
+QString DesignSpaceView::readoutText() const { return readout_->text(); }
+
+void DesignSpaceView::setStatus(const QString& text, bool isError) {
+    status_->setText(text);
+    status_->setStyleSheet(isError ? QStringLiteral("color: #b00020;") : QString());
+}
+
+void DesignSpaceView::stopJob() {
+    if (!job_)
+        return;
+    // The workers stop after the design each is computing; the join is that short.
+    job_->cancel = true;
+    if (job_->thread.joinable())
+        job_->thread.join();
+    job_.reset();
+}
+
+void DesignSpaceView::run() {
+    stopJob();
+    const int axis = session_->currentAxis();
+    const Session& s = session_->session();
+    const AxisSettings& settings = s.axes.at(static_cast<std::size_t>(axis));
+    if (settings.method != DesignMethod::GuilleminTruxal) {
+        setStatus(tr("The design space applies to Guillemin–Truxal axes; axis %1 uses pole placement.")
+                      .arg(axisName(s, axis)),
+                  true);
+        return;
+    }
+    DesignProblem problem;
+    SweepAxis wnAxis{wnMin_->value(), wnMax_->value(), wnCount_->value(), logGrid_->isChecked()};
+    SweepAxis kpAxis{kpMin_->value(), kpMax_->value(), kpCount_->value(), logGrid_->isChecked()};
+    try {
+        wnAxis.validate("ωn range");
+        kpAxis.validate("kp range");
+        problem.plant = settings.gt.plant;
+        problem.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
+        problem.dtSeconds = s.trajectory.dtSeconds;
+        problem.reference = sampled(axisReference(s.trajectory, axis),
+                                    sampleTimes(s.trajectory.effectiveDurationSeconds(), s.trajectory.dtSeconds));
+        problem.spec.maxSettlingTimeSeconds = settling_->value();
+        problem.spec.maxOvershootPct = overshoot_->value();
+        problem.spec.maxErrorPct = error_->value();
+        problem.spec.umaxVolts = umax_->value();
+        problem.spec.validate();
+    } catch (const InvalidInput& e) {
+        setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
+        return;
+    }
+    SweepOptions options;
+    options.criterion = selected(criterion_);
+
+    pendingProblem_ = problem;
+    pendingSession_ = s;
+    pendingAxis_ = axis;
+    pendingLogGrid_ = logGrid_->isChecked();
+    job_ = std::make_unique<Job>();
+    const int id = job_->id = ++lastJobId_;
+    std::atomic<bool>* cancelFlag = &job_->cancel;
+    // The worker only posts to this widget; the destructor joins it before the QObject goes, and
+    // ~QObject drops the events still queued.
+    job_->thread = std::thread([this, id, cancelFlag, problem, wnAxis, kpAxis, options]() mutable {
+        options.progress = [this, id, cancelFlag](double fraction) {
+            QMetaObject::invokeMethod(this, [this, id, fraction] { onProgress(id, fraction); }, Qt::QueuedConnection);
+            return !cancelFlag->load();
+        };
+        auto result = std::make_shared<DesignSweepResult>();
+        QString error;
+        try {
+            *result = sweepDesignSpace(problem, wnAxis, kpAxis, options);
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(this, [this, id, result, error] { onFinished(id, result, error); },
+                                  Qt::QueuedConnection);
+    });
+    progress_->setValue(0);
+    cancel_->setEnabled(true);
+    setStatus(tr("Studying %1 × %2 designs of axis %3…")
+                  .arg(wnAxis.count)
+                  .arg(kpAxis.count)
+                  .arg(axisName(s, axis)));
+}
+
+void DesignSpaceView::cancel() {
+    if (!job_)
+        return;
+    job_->cancel = true;
+    cancel_->setEnabled(false);
+    setStatus(tr("Cancelling…"));
+}
+
+void DesignSpaceView::onProgress(int jobId, double fraction) {
+    if (job_ && job_->id == jobId)
+        progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
+}
+
+void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error) {
+    if (!job_ || job_->id != jobId)
+        return; // a study replaced by a newer one
+    job_->thread.join(); // posting this was the worker's last act
+    job_.reset();
+    cancel_->setEnabled(false);
+    if (!error.isEmpty()) {
+        progress_->setValue(0);
+        setStatus(tr("The study failed: %1").arg(error), true);
+        return;
+    }
+    result_ = std::move(*result);
+    problem_ = pendingProblem_;
+    studiedSession_ = pendingSession_;
+    studiedAxis_ = pendingAxis_;
+    studiedLogGrid_ = pendingLogGrid_;
+    const Session& s = session_->session();
+    plot_->showResult(*result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
+                      tr("%1 over ωn × kp, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
+    updateCurrentDesign();
+    showOutcome();
+}
+
+void DesignSpaceView::showOutcome() {
+    const DesignSweepResult& r = *result_;
+    const int total = static_cast<int>(r.points.size());
+    const QString crit = metricLabel(r.criterion);
+    if (r.status == SweepStatus::Cancelled) {
+        progress_->setValue(total > 0 ? 100 * r.computedCount / total : 0);
+        setStatus(tr("Cancelled: %1 of %2 designs computed, %3 feasible.")
+                      .arg(r.computedCount)
+                      .arg(total)
+                      .arg(r.feasibleCount));
+        return;
+    }
+    progress_->setValue(100);
+    QString text = tr("Done: %1 designs, %2 stable, %3 feasible.").arg(total).arg(r.stableCount).arg(r.feasibleCount);
+    if (r.bestIndex) {
+        const DesignPoint& b = r.points[*r.bestIndex];
+        text += tr("\nBest on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.")
+                    .arg(num(b.wn), num(b.kp), crit, num(criterionValue(b, r.criterion)));
+        if (r.refined && r.refined->improved) {
+            const DesignPoint& p = r.refined->point;
+            text += tr("\nRefined (◆): ωn = %1 rad/s, kp = %2, %3 = %4.")
+                        .arg(num(p.wn), num(p.kp), crit, num(criterionValue(p, r.criterion)));
+        }
+        text += tr("\nClick a cell to load its design.");
+        setStatus(text);
+        return;
+    }
+    // No feasible design: say which limit is to blame.
+    int onlyOvershoot = 0;
+    double smallestOvershoot = std::numeric_limits<double>::infinity();
+    int pass[4] = {0, 0, 0, 0};
+    for (const DesignPoint& p : r.points) {
+        const SpecificationCheck& c = p.check;
+        pass[0] += c.settlingTime;
+        pass[1] += c.overshoot;
+        pass[2] += c.noSaturation;
+        pass[3] += c.trackingError;
+        if (p.computed && p.metricsFinite && c.stable && c.settlingTime && c.noSaturation && c.trackingError &&
+            !c.overshoot) {
+            ++onlyOvershoot;
+            smallestOvershoot = std::min(smallestOvershoot, p.step.overshootPct);
+        }
+    }
+    if (onlyOvershoot > 0) {
+        text += tr("\nNo feasible design: every GT design overshoots; relax the overshoot limit. "
+                   "%1 designs meet every other criterion, the least overshoot among them is %2 %.")
+                    .arg(onlyOvershoot)
+                    .arg(num(smallestOvershoot, 3));
+    } else {
+        text += tr("\nNo feasible design in this grid. Designs passing each criterion: settling %1, "
+                   "overshoot %2, |u| %3, error %4 (of %5). Widen the ranges or relax the limits.")
+                    .arg(pass[0])
+                    .arg(pass[1])
+                    .arg(pass[2])
+                    .arg(pass[3])
+                    .arg(total);
+    }
+    setStatus(text, true);
+}
+
+void DesignSpaceView::updateCurrentDesign() {
+    const Session& s = session_->session();
+    if (s.umaxVolts != lastUmaxVolts_) {
+        lastUmaxVolts_ = s.umaxVolts;
+        umax_->setValue(s.umaxVolts);
+    }
+    const int axis = result_ ? studiedAxis_ : session_->currentAxis();
+    const GtAxisSettings& gt = s.axes.at(static_cast<std::size_t>(axis)).gt;
+    plot_->setCurrentDesign(gt.omegaNRadPerSec, gt.kp);
+    const QString staleNote = tr("The plant or trajectory of this axis changed since the study: run it again.");
+    if (result_ && !isRunning()) {
+        if (!sameStudySettings(s, studiedSession_, studiedAxis_))
+            setStatus(staleNote, true);
+        else if (status_->text() == staleNote)
+            showOutcome(); // undone back to the studied settings
+    }
+}
+
+void DesignSpaceView::showHover(std::optional<std::pair<std::size_t, std::size_t>> cell) {
+    if (!cell || !result_)
+        return;
+    readout_->setText(describePoint(result_->at(cell->first, cell->second), problem_->spec, selected(metric_)));
+}
+
+void DesignSpaceView::loadCell(std::size_t iWn, std::size_t iKp) {
+    if (!result_)
+        return;
+    Session next = session_->session();
+    GtAxisSettings& gt = next.axes.at(static_cast<std::size_t>(studiedAxis_)).gt;
+    gt.omegaNRadPerSec = result_->wnValues.at(iWn);
+    gt.kp = result_->kpValues.at(iKp);
+    session_->apply(next, tr("Load design from the design space"));
+}
+
+} // namespace xyt::ui
