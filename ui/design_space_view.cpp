@@ -26,7 +26,7 @@
 namespace xyt::ui {
 
 Specification initialSpecification(const Session& session) {
-    Specification spec;
+    Specification spec = session.spec; // the session's limits; its actuator limit is umax
     spec.umaxVolts = session.umaxVolts;
     return spec;
 }

@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 #include "ui/contour_plot.h"
+#include "ui/design_space_view.h"
 #include "ui/equations_panel.h"
 #include "ui/metrics_panel.h"
 #include "ui/number_field.h"
@@ -74,6 +75,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     connect(sweptParameter_, &QComboBox::currentIndexChanged, this, &MainWindow::refresh);
     lowerTabs_->addTab(timePlot_, tr("&Time response"));
     lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
+    lowerTabs_->addTab(new DesignSpaceView(session_, this), tr("&Design space"));
     connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {
