@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune: the tuning workbench. `xytune --screenshot FILE.png [--size WxH]` renders the main
 // window with the default design offscreen and exits.
+#include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/session_file.h"
 #include "ui/session_file_controller.h"
@@ -9,7 +10,9 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QPixmap>
+#include <QElapsedTimer>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTimer>
 
 #include <cstdio>
@@ -42,8 +45,11 @@ int main(int argc, char* argv[]) {
     parser.addVersionOption();
     QCommandLineOption screenshot("screenshot", "Render the main window to FILE.png and exit.", "FILE");
     QCommandLineOption size("size", "Window size for --screenshot, WxH (default 1366x768).", "WxH", "1366x768");
+    QCommandLineOption tab("tab", "With --screenshot: show this tab first (e.g. \"Design space\"; "
+                                  "a design-space study is run before the picture).", "NAME");
     parser.addOption(screenshot);
     parser.addOption(size);
+    parser.addOption(tab);
     parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
     parser.process(app);
 
@@ -72,6 +78,27 @@ int main(int argc, char* argv[]) {
         window.show();
         for (int i = 0; i < 5; ++i)
             QApplication::processEvents();
+        if (parser.isSet(tab)) {
+            const QString wanted = parser.value(tab);
+            bool found = false;
+            for (QTabWidget* tabs : window.findChildren<QTabWidget*>())
+                for (int i = 0; i < tabs->count(); ++i)
+                    if (tabs->tabText(i).remove('&').compare(wanted, Qt::CaseInsensitive) == 0) {
+                        tabs->setCurrentIndex(i);
+                        found = true;
+                    }
+            if (!found) {
+                std::fprintf(stderr, "xytune: --tab: no tab named '%s'\n", qPrintable(wanted));
+                return 2;
+            }
+            if (auto* space = window.findChild<xyt::ui::DesignSpaceView*>(); space && space->isVisible()) {
+                space->run();
+                QElapsedTimer waited;
+                waited.start();
+                while (space->isRunning() && waited.elapsed() < 120000)
+                    QApplication::processEvents(QEventLoop::AllEvents, 50);
+            }
+        }
         window.refresh();
         QApplication::processEvents();
         const QString path = parser.value(screenshot);

@@ -139,9 +139,16 @@ QCPGraph* marker(QCustomPlot* plot, const QCPScatterStyle& style, const QString&
 /// Log ticks at 1, 2, 5 x 10^k when the range spans fewer than three decades (a decade-only
 /// ticker labels just "1" and "10" on the default wn range), at the decades otherwise.
 class OneTwoFiveLogTicker : public QCPAxisTickerLog {
+public:
+    explicit OneTwoFiveLogTicker(QCPAxis* axis) : axis_(axis) {}
+
 protected:
     QVector<double> createTickVector(double tickStep, const QCPRange& range) override {
-        oneTwoFive_ = range.lower > 0.0 && range.upper / range.lower < 1e3;
+        // 1-2-5 labels need room: about 110 px per decade, else they run into each other.
+        const double decades = range.lower > 0.0 ? std::log10(range.upper / range.lower) : 0.0;
+        const double pixels = axis_->orientation() == Qt::Horizontal ? axis_->axisRect()->width()
+                                                                     : axis_->axisRect()->height();
+        oneTwoFive_ = range.lower > 0.0 && decades < 3.0 && pixels >= 110.0 * decades;
         if (!oneTwoFive_)
             return QCPAxisTickerLog::createTickVector(tickStep, range);
         QVector<double> ticks;
@@ -157,13 +164,14 @@ protected:
     }
 
 private:
+    QCPAxis* axis_;
     bool oneTwoFive_ = false;
 };
 
 void setScale(QCPAxis* axis, bool logarithmic) {
     axis->setScaleType(logarithmic ? QCPAxis::stLogarithmic : QCPAxis::stLinear);
     if (logarithmic) {
-        auto ticker = QSharedPointer<OneTwoFiveLogTicker>::create();
+        auto ticker = QSharedPointer<OneTwoFiveLogTicker>::create(axis);
         ticker->setSubTickCount(8);
         axis->setTicker(ticker);
         axis->setNumberFormat("g");

@@ -17,6 +17,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -134,6 +135,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     logGrid_->setChecked(true);
     auto* grid = new QGroupBox(tr("Grid"));
     auto* gridForm = new QFormLayout(grid);
+    gridForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
     const auto rangeRow = [](QWidget* a, QWidget* b, QWidget* c) {
         auto* row = new QHBoxLayout;
         row->addWidget(a);
@@ -152,6 +154,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     logColor_->setChecked(true);
     auto* choice = new QGroupBox(tr("Choice"));
     auto* choiceForm = new QFormLayout(choice);
+    choiceForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
     choiceForm->addRow(tr("Best design minimizes"), criterion_);
     choiceForm->addRow(tr("Heat map shows"), metric_);
     choiceForm->addRow(logColor_);
@@ -162,6 +165,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     umax_ = numberBox(spec.umaxVolts, 0.001, 1e4, 3, tr(" V"));
     auto* specBox = new QGroupBox(tr("Specification"));
     auto* specForm = new QFormLayout(specBox);
+    specForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
     specForm->addRow(tr("settling time ≤"), settling_);
     specForm->addRow(tr("step overshoot ≤"), overshoot_);
     specForm->addRow(tr("max tracking error ≤"), error_);
@@ -189,9 +193,15 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     controls->addWidget(progress_);
     controls->addWidget(status_);
     controls->addStretch(1);
-    auto* controlPanel = new QWidget;
-    controlPanel->setLayout(controls);
-    controlPanel->setMaximumWidth(330);
+    auto* controlContent = new QWidget;
+    controlContent->setLayout(controls);
+    // In a scroll area, so the view fits a 1366x768 window: the controls scroll, the map stays.
+    auto* controlPanel = new QScrollArea;
+    controlPanel->setWidget(controlContent);
+    controlPanel->setWidgetResizable(true);
+    controlPanel->setFrameShape(QFrame::NoFrame);
+    controlPanel->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    controlPanel->setFixedWidth(290);
 
     plot_ = new DesignSpacePlot;
     readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design."));
@@ -341,7 +351,7 @@ void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> r
     studiedLogGrid_ = pendingLogGrid_;
     const Session& s = session_->session();
     plot_->showResult(*result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
-                      tr("%1 over ωn × kp, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
+                      tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
     updateCurrentDesign();
     showOutcome();
 }

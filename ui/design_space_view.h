@@ -124,8 +124,8 @@ private:
     QDoubleSpinBox* umax_;
 };
 
-/// The specification the view starts with for @p session: the paper's (Specification defaults,
-/// overshoot 0 %) with the session's actuator limit. A Session holds no specification yet.
+/// The specification the view starts with for @p session: the session's (the paper's by
+/// default: overshoot 0 %), with the session's actuator limit.
 Specification initialSpecification(const Session& session);
 
 } // namespace xyt::ui
