@@ -127,15 +127,17 @@ int runExport(const QStringList& argv) {
     if (!QStringList{"json", "c", "m", "csv"}.contains(format))
         throw InvalidInput("--format", "must be json, c, m or csv");
     const QString path = outputPath(args);
-    ExportOptions options;
-    const QString method = args.text("discretization", "tustin");
-    if (method == "tustin")
-        options.piMethod = PiDiscretization::Tustin;
-    else if (method == "backward-euler")
-        options.piMethod = PiDiscretization::BackwardEuler;
-    else
-        throw InvalidInput("--discretization", "must be tustin or backward-euler");
     const Session session = loadOrThrow(args.positional().first());
+    ExportOptions options;
+    options.piMethod = session.piDiscretization; // the session's choice unless overridden
+    if (const auto method = args.value("discretization")) {
+        if (*method == "tustin")
+            options.piMethod = PiDiscretization::Tustin;
+        else if (*method == "backward-euler")
+            options.piMethod = PiDiscretization::BackwardEuler;
+        else
+            throw InvalidInput("--discretization", "must be tustin or backward-euler");
+    }
     const SessionEvaluation evaluation = evaluateSession(session);
     QByteArray bytes;
     if (format == "json")

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/digital_controller.h"
 #include "core/guillemin_truxal.h"
 #include "core/specification.h"
 
@@ -78,6 +79,8 @@ struct Session {
     double umaxVolts = 2.5;
     /// Sample time of the digital PI when a continuous design is exported (Tustin by default).
     double controllerTsSeconds = 0.01;
+    /// How that PI is discretized (Tustin by default).
+    PiDiscretization piDiscretization = PiDiscretization::Tustin;
     /// What the design must meet (paper 000: settling <= 100 s, no overshoot, no saturation,
     /// max error <= 2 %). Its umaxVolts is ignored: the session's umaxVolts is the limit.
     Specification spec;

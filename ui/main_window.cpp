@@ -75,6 +75,15 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     connect(sweptParameter_, &QComboBox::currentIndexChanged, this, &MainWindow::refresh);
     lowerTabs_->addTab(timePlot_, tr("&Time response"));
     lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
+    magnification_ = new QDoubleSpinBox(this);
+    magnification_->setRange(1.0, 10000.0);
+    magnification_->setDecimals(0);
+    magnification_->setValue(contourPlot_->magnification());
+    magnification_->setPrefix(tr("error × "));
+    magnification_->setAccessibleName(tr("Contour error magnification"));
+    magnification_->setToolTip(tr("Magnification of the contour error in the XY plot (as a ballbar plot)"));
+    lowerTabs_->setCornerWidget(magnification_, Qt::TopRightCorner);
+    connect(magnification_, &QDoubleSpinBox::valueChanged, contourPlot_, &ContourPlot::setMagnification);
     lowerTabs_->addTab(new DesignSpaceView(session_, this), tr("&Design space"));
     connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
@@ -192,6 +201,29 @@ QWidget* MainWindow::buildControls() {
     auto* actuatorForm = new QFormLayout(actuatorBox);
     umax_ = new NumberField("umax", [](double v) { requirePositive(v, "umax"); }, actuatorBox);
     actuatorForm->addRow(tr("|u| limit (V)"), umax_);
+    controllerTs_ = new NumberField("controller Ts", [](double v) {
+        requirePositive(v, "controller Ts");
+    }, actuatorBox);
+    controllerTs_->setToolTip(tr("Sample time of the digital PI in the exports"));
+    discretization_ = new QComboBox(actuatorBox);
+    discretization_->addItem(tr("Tustin"));
+    discretization_->addItem(tr("backward Euler"));
+    discretization_->setAccessibleName(tr("PI discretization"));
+    actuatorForm->addRow(tr("Controller Ts (s)"), controllerTs_);
+    actuatorForm->addRow(tr("PI discretization"), discretization_);
+    connect(controllerTs_, &NumberField::valueAccepted, this, [this](double v) {
+        if (v == session_->session().controllerTsSeconds)
+            return;
+        Session next = session_->session();
+        next.controllerTsSeconds = v;
+        session_->apply(next, tr("Set the controller sample time to %1 s").arg(v));
+    });
+    connect(discretization_, &QComboBox::activated, this, [this](int index) {
+        Session next = session_->session();
+        next.piDiscretization = index == 0 ? PiDiscretization::Tustin : PiDiscretization::BackwardEuler;
+        if (next.piDiscretization != session_->session().piDiscretization)
+            session_->apply(next, tr("Change the PI discretization"));
+    });
     layout->addWidget(actuatorBox);
     layout->addStretch(1);
 
@@ -281,6 +313,9 @@ void MainWindow::syncControls() {
     plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
     trajectoryEditor_->setTrajectory(s.trajectory);
     umax_->setValue(s.umaxVolts);
+    controllerTs_->setValue(s.controllerTsSeconds);
+    const QSignalBlocker blockDiscretization(discretization_);
+    discretization_->setCurrentIndex(s.piDiscretization == PiDiscretization::Tustin ? 0 : 1);
 }
 
 void MainWindow::refresh() {

@@ -4,6 +4,7 @@
 #include <QMainWindow>
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QSplitter;
 class QStackedWidget;
@@ -84,6 +85,9 @@ private:
     ParameterSlider* kp_ = nullptr;
     TrajectoryEditor* trajectoryEditor_ = nullptr;
     NumberField* umax_ = nullptr;
+    NumberField* controllerTs_ = nullptr;
+    QComboBox* discretization_ = nullptr;
+    QDoubleSpinBox* magnification_ = nullptr;
     QTabWidget* upperTabs_ = nullptr;
     QTabWidget* lowerTabs_ = nullptr;
     QSplitter* mainSplitter_ = nullptr;

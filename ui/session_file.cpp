@@ -259,6 +259,7 @@ QJsonObject sessionToJson(const Session& s) {
             {"trajectory", trajectoryToJson(s.trajectory)},
             {"umax", s.umaxVolts},
             {"controller_ts", s.controllerTsSeconds},
+            {"pi_discretization", QString::fromStdString(discretizationName(s.piDiscretization))},
             {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
                                           {"max_overshoot_pct", s.spec.maxOvershootPct},
                                           {"max_error_pct", s.spec.maxErrorPct}}},
@@ -311,6 +312,13 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
         s.trajectory = readTrajectory(r.child("trajectory"));
         s.umaxVolts = readUmax(r);
         s.controllerTsSeconds = r.positive("controller_ts");
+        const QString discretization = r.string("pi_discretization");
+        if (discretization == "tustin")
+            s.piDiscretization = PiDiscretization::Tustin;
+        else if (discretization == "backward-euler")
+            s.piDiscretization = PiDiscretization::BackwardEuler;
+        else
+            throw FormatError{"pi_discretization", QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
         {
             ObjectReader spec = r.child("specification");
             s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");

@@ -115,12 +115,14 @@ bool SessionFileController::exportTo(const QString& format, const QString& path)
     try {
         const Session& s = session_->session();
         const SessionEvaluation& e = session_->evaluation();
+        ExportOptions options;
+        options.piMethod = s.piDiscretization;
         if (format == "json")
-            bytes = QJsonDocument(coefficientsJson(s, e)).toJson();
+            bytes = QJsonDocument(coefficientsJson(s, e, options)).toJson();
         else if (format == "c")
-            bytes = QByteArray::fromStdString(exportCHeader(s, e));
+            bytes = QByteArray::fromStdString(exportCHeader(s, e, options));
         else if (format == "m")
-            bytes = QByteArray::fromStdString(exportOctaveScript(s, e));
+            bytes = QByteArray::fromStdString(exportOctaveScript(s, e, options));
         else
             bytes = QByteArray::fromStdString(exportCsv(s, e));
     } catch (const InvalidInput& e) {

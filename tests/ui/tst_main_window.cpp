@@ -15,6 +15,7 @@
 #include "tests/support/tolerance.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QSlider>
 #include <QTest>
 
@@ -116,6 +117,19 @@ void TstMainWindow::contourPlotHoldsTheSimulatedData() {
     const auto& y = session_->axisEvaluation(1).run;
     QCPCurve* traced = window_->contourPlot()->tracedCurve();
     QCOMPARE(traced->data()->size(), static_cast<int>(x.t.size()));
+    // The magnified path of a circle is R + factor (rho - R) along each traced point's angle.
+    auto* factor = window_->lowerTabs()->cornerWidget(Qt::TopRightCorner)->findChild<QDoubleSpinBox*>();
+    if (!factor)
+        factor = qobject_cast<QDoubleSpinBox*>(window_->lowerTabs()->cornerWidget(Qt::TopRightCorner));
+    QVERIFY(factor);
+    factor->setValue(50.0);
+    {
+        const std::size_t k = x.t.size() - 1;
+        const double rho = std::hypot(x.y[k], y.y[k]);
+        const double expected = 25.0 + 50.0 * (rho - 25.0);
+        const auto m = window_->contourPlot()->magnifiedCurve()->data()->at(static_cast<int>(k));
+        XYT_COMPARE_NEAR(std::hypot(m->key, m->value), expected, 1e-12, 1e-12);
+    }
     // Both axes share dt here, so the traced point k is (x_k, y_k) exactly.
     for (int k : {0, 1000, static_cast<int>(x.t.size()) - 1}) {
         const auto point = traced->data()->at(k);

@@ -84,6 +84,8 @@ void TstSessionFile::roundTripEveryField() {
     s.trajectory.durationSeconds = 77.5;
     s.umaxVolts = 10.0;
     s.controllerTsSeconds = 0.002;
+    s.piDiscretization = PiDiscretization::BackwardEuler;
+    s.spec.maxOvershootPct = 1.5;
     s.snapshots.push_back(s.snapshot("first"));
     s.snapshots.back().axes[0].gt.omegaNRadPerSec = 3.25;
     QTemporaryDir dir;
