@@ -111,7 +111,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << "--duration";
     QTest::newRow("simulate dt needing gigabytes")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-9"}
-        << "--dt";
+        << "--dt"; // not --duration: the user did not type it
     QTest::newRow("simulate umax zero")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--umax", "0"}
         << "--umax";
@@ -128,7 +128,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("simulate sine omega tiny (period needing gigabytes)")
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
                        "25", "--omega", "1e-300"}
-        << "--duration";
+        << "--omega";
     QTest::newRow("simulate csv into a directory")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--csv", "{dir}"}
         << "--csv";
@@ -254,7 +254,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("zpetc omega zero") << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "0"}
                                       << "--omega";
     QTest::newRow("zpetc omega tiny (one period needing gigabytes)")
-        << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "1e-300"} << "--duration";
+        << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "1e-300"} << "--omega";
     QTest::newRow("zpetc amplitude NaN")
         << QStringList{"zpetc"} + kPpX + QStringList{"--amplitude", "nan"} << "--amplitude";
     QTest::newRow("zpetc unknown start")
