@@ -68,9 +68,9 @@ void guilleminTruxal(FuzzInput& in) {
     XYT_FUZZ_REQUIRE(run.y.size() == reference.size());
     // A stable linear loop stays finite over a bounded time. With saturation the plant runs open
     // loop while clipped, so finiteness is only promised when the plant itself is not unstable.
-    const bool plantNotUnstable = std::all_of(
-        plantTf.poles().begin(), plantTf.poles().end(),
-        [](std::complex<double> p) { return p.real() <= 0.0; });
+    const auto plantPoles = plantTf.poles();
+    const bool plantNotUnstable = std::all_of(plantPoles.begin(), plantPoles.end(),
+                                              [](std::complex<double> p) { return p.real() <= 0.0; });
     if (d.stable && (!std::isfinite(options.umaxVolts) || plantNotUnstable)) {
         XYT_FUZZ_REQUIRE_FINITE(run.y);
         XYT_FUZZ_REQUIRE_FINITE(run.u);
