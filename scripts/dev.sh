@@ -55,7 +55,6 @@ case "$mode" in
         cmake --build "$asan_build" -j "$jobs"
         ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_init_order=1:check_initialization_order=1:detect_stack_use_after_return=1" \
         UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1" \
-        LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0" \
             ctest --test-dir "$asan_build" --output-on-failure -j "$jobs"
 
         # Every fuzz harness for a short, bounded time (a crash fails the run).
