@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-bench: the one benchmark program (not part of the test run). One line per figure:
 //   name: median_us=... min_us=... max_us=... runs=...
-// Optional argument: a substring; only figures whose name contains it are run.
+// Optional argument: a substring; only figures whose name contains it are run. The core figures
+// come first; gui_slider_to_repaint (last) times the widgets on the offscreen platform.
 #include "core/design_sweep.h"
 #include "core/guillemin_truxal.h"
 #include "core/root_locus.h"
@@ -10,6 +11,13 @@
 #include "core/trajectory.h"
 #include "core/zpetc.h"
 #include "core/zpetc_tracking.h"
+#include "ui/main_window.h"
+#include "ui/parameter_slider.h"
+#include "ui/tuning_session.h"
+
+#include <QApplication>
+#include <QSlider>
+#include <qcustomplot.h>
 
 #include <algorithm>
 #include <chrono>
@@ -47,6 +55,36 @@ void benchmark(const char* filter, const std::string& name, const std::function<
 }
 
 volatile double sink = 0.0; // keeps results alive so the optimizer cannot drop the work
+
+/// The workbench's reaction to a slider drag: one value change of the omega_n slider (the
+/// session redesigns, re-simulates and updates every view through its signals), then every
+/// visible plot repainted at once, then the event queue drained. Offscreen at 1366 x 768.
+void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
+    if (filter && std::string("gui_slider_to_repaint").find(filter) == std::string::npos)
+        return;
+    if (!qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    xyt::ui::TuningSession session;
+    xyt::ui::MainWindow window(&session);
+    window.resize(1366, 768);
+    window.show();
+    QApplication::processEvents();
+    QSlider* slider = window.omegaNSlider()->slider();
+    // Two positions a quarter of the range either side of the middle, alternating, so every
+    // run changes the design.
+    const int span = slider->maximum() - slider->minimum();
+    const int positions[2] = {slider->minimum() + span / 4, slider->minimum() + 3 * span / 4};
+    int next = 0;
+    benchmark(filter, "gui_slider_to_repaint", [&] {
+        slider->setValue(positions[next]);
+        next = 1 - next;
+        for (QCustomPlot* plot : window.findChildren<QCustomPlot*>())
+            if (plot->isVisible())
+                plot->replot(QCustomPlot::rpImmediateRefresh);
+        QApplication::processEvents();
+    });
+}
 
 } // namespace
 
@@ -121,5 +159,6 @@ int main(int argc, char* argv[]) {
             sink = sink + run.rmseWithFf;
         });
     }
+    guiSliderToRepaint(filter, argc, argv);
     return 0;
 }

@@ -136,7 +136,17 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
     if (!(s.durationSeconds > 0.0))
         throw InvalidInput("--duration", "must be greater than zero");
     std::vector<double> times;
-    times = asArgument([&] { return sampleTimes(s.durationSeconds, s.options.dtSeconds); });
+    try {
+        times = sampleTimes(s.durationSeconds, s.options.dtSeconds);
+    } catch (const InvalidInput& e) {
+        // Too many samples: blame what the user typed (--duration, else --dt, else the
+        // trajectory argument that set the default duration).
+        const std::string culprit = args.has("duration") ? "--duration"
+                                    : args.has("dt")     ? "--dt"
+                                    : s.trajectory.description == "cubic" ? "--tf"
+                                                                          : "--omega";
+        throw InvalidInput(e.field() == "duration" ? culprit : "--" + e.field(), e.reason());
+    }
     s.reference = sampled(s.trajectory.at, times);
     return s;
 }

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <functional>
 #include <map>
+#include <string>
 
 namespace {
 
@@ -62,6 +63,15 @@ constexpr const char* kUsage =
     "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
 
+/// The message as one printable line: arguments quoted in messages may hold newlines or other
+/// control characters (a pasted list, a file name), and the contract is one line on stderr.
+std::string oneLine(std::string message) {
+    for (char& c : message)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            c = '?';
+    return message;
+}
+
 } // namespace
 
 int main(int argc, char* argv[]) {
@@ -88,7 +98,7 @@ int main(int argc, char* argv[]) {
     const auto it = commands.find(name);
     if (it == commands.end()) {
         std::fprintf(stderr, "xytune-cli: unknown command '%s' (see xytune-cli --help)\n",
-                     qPrintable(name));
+                     oneLine(name.toStdString()).c_str());
         return 2;
     }
     if (args.contains("--help")) {
@@ -98,10 +108,11 @@ int main(int argc, char* argv[]) {
     try {
         return it->second(args);
     } catch (const xyt::InvalidInput& e) {
-        std::fprintf(stderr, "xytune-cli %s: %s\n", qPrintable(name), e.what());
+        std::fprintf(stderr, "xytune-cli %s: %s\n", qPrintable(name), oneLine(e.what()).c_str());
         return 2;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "xytune-cli %s: internal error: %s\n", qPrintable(name), e.what());
+        std::fprintf(stderr, "xytune-cli %s: internal error: %s\n", qPrintable(name),
+                     oneLine(e.what()).c_str());
         return 1;
     }
 }

@@ -101,6 +101,12 @@ StartCondition parseStart(const CliArgs& args) {
     throw InvalidInput("--start", "must be reference or origin, got '" + s.toStdString() + "'");
 }
 
+/// The argument to blame when the run would need too many samples: --duration when typed, else
+/// --omega, whose period set the duration.
+std::string durationField(const CliArgs& args) {
+    return args.has("duration") ? "--duration" : "--omega";
+}
+
 double parseDuration(const CliArgs& args, double omega) {
     const double duration = args.number("duration", 2.0 * std::numbers::pi / std::abs(omega));
     if (!(duration > 0.0))
@@ -186,7 +192,7 @@ int runZpetc(const QStringList& argv) {
         try {
             return runZpetcTracking(loop, z, reference, duration, start);
         } catch (const InvalidInput& e) {
-            throw InvalidInput("--duration", e.reason());
+            throw InvalidInput(durationField(args), e.reason());
         }
     });
     QJsonObject out = designJson(loop);
@@ -233,7 +239,7 @@ int runContour(const QStringList& argv) {
         try {
             return runZpetcCircle(xLoop, xZ, yLoop, yZ, circle, duration, start);
         } catch (const InvalidInput& e) {
-            throw InvalidInput("--duration", e.reason());
+            throw InvalidInput(durationField(args), e.reason());
         }
     }();
     print({{"preset", preset},

@@ -57,6 +57,12 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     d.conditionNumber = s.conditionNumber;
     d.warnings.insert(d.warnings.end(), s.warnings.begin(), s.warnings.end());
     d.kf = d.t(1.0) / b1;
+    // B(1) can be nonzero relative to B's coefficients and still so small (B ~ 1e-313 after
+    // the division by A(0)) that Kf overflows (found by fuzz_design, regression input
+    // tests/fuzz/corpus/fuzz_design/crash-kf-overflow).
+    if (!std::isfinite(d.kf))
+        throw InvalidInput("b", "B(1) = " + formatNumber(b1) +
+                                    " is too small: Kf = T(1)/B(1) overflows a double");
     d.closedLoopNum = d.kf * d.b;
     d.closedLoopDen = d.t;
     if (d.a.degree() > 0)

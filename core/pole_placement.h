@@ -45,7 +45,8 @@ struct PolePlacementDesign {
  * A typed with A(0) != 1 is normalized (A and B divided by A(0): the same plant), with a warning.
  * @throws InvalidInput "ts" unless ts > 0; "a" for a zero A or A(0) = 0; "b" when B(0) != 0
  *         (no delay: the loop would be algebraic), when B(1) = 0 (a zero at z = 1, no
- *         steady-state gain) or when A and B share a root (the message names it); "t" unless
+ *         steady-state gain), when B(1) is so small that Kf = T(1)/B(1) overflows, or when A
+ *         and B share a root (the message names it); "t" unless
  *         T(0) = 1 or when a root of T is not strictly inside the unit circle.
  */
 PolePlacementDesign designPolePlacement(const Polynomial& a, const Polynomial& b,

@@ -160,6 +160,14 @@ std::vector<Polynomial::Complex> Polynomial::roots() const {
             result.push_back(r);
         }
     }
+    // A negligible leading coefficient (say 5e-324 against 1e-6) puts a root beyond the range
+    // of double, and an overflowing companion matrix gives NaN: such a polynomial is not a
+    // usable model, so it is rejected rather than handed on as roots nobody can plot (found by
+    // fuzz_design, tests/fuzz/corpus/fuzz_design/crash-root-beyond-double).
+    for (const Complex& r : result)
+        if (!std::isfinite(r.real()) || !std::isfinite(r.imag()))
+            throw InvalidInput("polynomial", "has a root beyond the range of a double (its leading "
+                                             "coefficient is negligible against the others)");
     return result;
 }
 

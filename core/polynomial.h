@@ -64,7 +64,8 @@ public:
      * All complex roots (degree() of them, with multiplicity). Exact zero roots are split off
      * first; the rest come from the eigenvalues of the companion matrix (Eigen's
      * PolynomialSolver), each polished by Newton steps on the original polynomial while the
-     * residual decreases. @throws InvalidInput for the zero polynomial.
+     * residual decreases. @throws InvalidInput for the zero polynomial, and when a root is
+     * not finite (a leading coefficient negligible against the others, e.g. 5e-324 s^3 + ...).
      */
     std::vector<Complex> roots() const;
 

@@ -481,8 +481,15 @@ RootLocus rootLocus(const Polynomial& num, const Polynomial& den, double tsSecon
     validateOptions(options);
     RootLocus r;
     r.tsSeconds = tsSeconds;
-    r.poles = den.roots();
-    r.zeros = num.degree() > 0 ? num.roots() : std::vector<Complex>{};
+    const auto rootsOf = [](const Polynomial& p, const char* field) {
+        try {
+            return p.roots();
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(field, e.reason());
+        }
+    };
+    r.poles = rootsOf(den, "den");
+    r.zeros = num.degree() > 0 ? rootsOf(num, "num") : std::vector<Complex>{};
     sortRoots(r.poles);
     sortRoots(r.zeros);
     for (const Complex& p : r.poles)

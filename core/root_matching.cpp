@@ -4,10 +4,33 @@
 #include "core/errors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
 namespace xyt {
+
+namespace {
+
+/// Every assignment cost is clamped to this finite bound. An infinite or NaN cost (the squared
+/// norm overflows for roots beyond about 1e154; a root finder can return NaN for an extreme
+/// polynomial) makes every comparison in the augmenting-path search false, so it never found a
+/// column and looped forever (found by fuzz_design, regression input
+/// tests/fuzz/corpus/fuzz_design/hang-root-matching-overflow). With n <= 64 roots, sums of a
+/// few such costs stay far below the largest double.
+constexpr double kMaxMatchingCost = 1e300;
+
+double matchingCost(std::complex<double> a, std::complex<double> b) {
+    // sqrt(norm) in the common case: std::abs's hypot is several times slower, and this is the
+    // inner loop of every locus step.
+    const double fast = std::sqrt(std::norm(a - b));
+    if (fast <= kMaxMatchingCost) // false for NaN and infinity
+        return fast;
+    const double exact = std::abs(a - b); // hypot: no overflow of the square
+    return exact <= kMaxMatchingCost ? exact : kMaxMatchingCost;
+}
+
+} // namespace
 
 std::vector<std::size_t> matchRoots(const std::vector<std::complex<double>>& previous,
                                     const std::vector<std::complex<double>>& next) {
@@ -36,9 +59,7 @@ std::vector<std::size_t> matchRoots(const std::vector<std::complex<double>>& pre
             for (std::size_t j = 1; j <= n; ++j) {
                 if (used[j])
                     continue;
-                // |a - b| as sqrt(norm): std::abs's hypot is several times slower, and this is
-                // the inner loop of every locus step.
-                const double cur = std::sqrt(std::norm(previous[i0 - 1] - next[j - 1])) - u[i0] - v[j];
+                const double cur = matchingCost(previous[i0 - 1], next[j - 1]) - u[i0] - v[j];
                 if (cur < minv[j]) {
                     minv[j] = cur;
                     way[j] = j0;

@@ -37,6 +37,14 @@ ZpetcTrackingRun runZpetcTracking(const PolePlacementDesign& loop, const ZpetcDe
     run.t = sampleTimes(durationSeconds, loop.tsSeconds);
     const std::size_t n = run.t.size();
     const auto p = static_cast<std::size_t>(zpetc.previewSteps);
+    // The last time read (preview included) and its phase omega t must be finite, or sin() gives
+    // NaN for a run that looks valid (found by fuzz_design with Ts = 1.8e308; regression input
+    // tests/fuzz/corpus/fuzz_design/crash-sample-time-overflow).
+    const double lastTime = static_cast<double>(n + p) * loop.tsSeconds;
+    if (!std::isfinite(lastTime) ||
+        !std::isfinite(reference.omegaRadPerSec * lastTime + reference.phaseRad))
+        throw InvalidInput("duration", "the last sample time of the run, or omega times it, "
+                                       "overflows a double");
     std::vector<double> previewed(n + p);
     for (std::size_t k = 0; k < n + p; ++k)
         previewed[k] = reference.value(static_cast<double>(k) * loop.tsSeconds);

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Builds the libFuzzer harnesses of tests/fuzz/ with clang (-DXYT_FUZZ=ON, in build-fuzz) and runs
+# each for a bounded time:   scripts/fuzz.sh [seconds per harness, default 20]
+# Starts from the committed corpus tests/fuzz/corpus/<harness>/ (read only); new inputs go to
+# build-fuzz/corpus/<harness>/. A crash, a sanitizer report, a NaN in a valid result, a hang
+# (> 10 s on one input) or more than 2 GB of memory stops the run with a non-zero exit; the
+# input is saved as build-fuzz/artifacts/<harness>/crash-*: fix the defect and commit the input
+# to tests/fuzz/corpus/<harness>/ so that ctest replays it (replay_<harness>) from then on.
+set -euo pipefail
+
+seconds="${1:-20}"
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${XYT_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+harnesses=(fuzz_coefficients fuzz_design fuzz_session_loader)
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DXYT_FUZZ=ON \
+      -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+cmake --build "$build" -j "$jobs" --target "${harnesses[@]}"
+
+for h in "${harnesses[@]}"; do
+    mkdir -p "$build/corpus/$h" "$build/artifacts/$h"
+    echo "== $h: ${seconds} s"
+    "$build/tests/fuzz/$h" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+        -artifact_prefix="$build/artifacts/$h/" -print_final_stats=1 \
+        "$build/corpus/$h" "$root/tests/fuzz/corpus/$h"
+done
+echo "fuzz: every harness ran ${seconds} s without a failure"

@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Issue 8: every xytune-cli command on a table of bad inputs (non-numbers, empty lists, huge
+// orders, Inf/NaN, zero leading coefficients, negative times, durations that would need
+// gigabytes, bad grid specs, a directory or a truncated file as the session). The contract
+// (app/cli_main.cpp): exit code 2, exactly one line on stderr naming the argument, nothing on
+// stdout, and a prompt answer: each run must finish within 20 s (the bound only catches hangs
+// and runaway allocations; normal runs take well under a second, even under ASan).
+#include "tests/support/cli_runner.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+constexpr int kTimeBoundMs = 20000;
+
+/// n coefficients "1 1 1 ..." (65 is one more than kMaxCoefficients).
+QString manyCoefficients(int n) {
+    QStringList c;
+    for (int i = 0; i < n; ++i)
+        c << QStringLiteral("1");
+    return c.join(' ');
+}
+
+const QStringList kGt = {"gt", "--preset", "lower-base"};
+const QStringList kCubic = {"--trajectory", "cubic", "--xf", "600", "--tf", "130"};
+const QStringList kPpX = {"--a", "1 -1.6580 0.6583", "--b", "0 0.0421 0.0628 -0.0454",
+                          "--t", "1 -0.2"};
+
+} // namespace
+
+class TstCliBadInput : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void badInputExitsWithTwoAndNamesTheArgument_data();
+    void badInputExitsWithTwoAndNamesTheArgument();
+
+private:
+    QTemporaryDir dir_;
+    QString defaultSession_, truncatedSession_, binarySession_;
+};
+
+void TstCliBadInput::initTestCase() {
+    QVERIFY(dir_.isValid());
+    defaultSession_ = dir_.filePath("default.json");
+    const auto created = xyt::test::runCli({"new", "-o", defaultSession_}, kTimeBoundMs);
+    QVERIFY2(created.finished && created.exitCode == 0, created.err.constData());
+    QFile full(defaultSession_);
+    QVERIFY(full.open(QIODevice::ReadOnly));
+    const QByteArray bytes = full.readAll();
+    QVERIFY(bytes.size() > 100);
+    // Cut in the middle of the document, as a crash during a save by another program would.
+    truncatedSession_ = dir_.filePath("truncated.json");
+    QFile truncated(truncatedSession_);
+    QVERIFY(truncated.open(QIODevice::WriteOnly));
+    truncated.write(bytes.left(bytes.size() / 2));
+    binarySession_ = dir_.filePath("binary.json");
+    QFile binary(binarySession_);
+    QVERIFY(binary.open(QIODevice::WriteOnly));
+    binary.write(QByteArray("\x00\xff\xfe{\x01\n\x02", 7));
+}
+
+void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
+    QTest::addColumn<QStringList>("args");
+    // A substring of the one stderr line: the argument as typed ("--wn"), or the file path
+    // ("{dir}" etc. are replaced by the files made in initTestCase).
+    QTest::addColumn<QString>("names");
+
+    const QString huge = manyCoefficients(65);
+
+    // gt
+    QTest::newRow("gt wn not a number") << kGt + QStringList{"--wn", "abc"} << "--wn";
+    QTest::newRow("gt wn empty") << kGt + QStringList{"--wn", ""} << "--wn";
+    QTest::newRow("gt kp NaN") << kGt + QStringList{"--kp", "nan"} << "--kp";
+    QTest::newRow("gt kp Inf") << kGt + QStringList{"--kp", "inf"} << "--kp";
+    QTest::newRow("gt kp overflows a double") << kGt + QStringList{"--kp", "1e999"} << "--kp";
+    QTest::newRow("gt wn negative") << kGt + QStringList{"--wn", "-2"} << "--wn";
+    QTest::newRow("gt k0 zero (leading coefficient of the plant)")
+        << QStringList{"gt", "--k0", "0", "--a1", "125.3", "--a2", "3665", "--wn", "2", "--kp", "30"}
+        << "--k0";
+    QTest::newRow("gt a1 -Inf")
+        << QStringList{"gt", "--k0", "77.8", "--a1", "-inf", "--a2", "3665", "--wn", "2", "--kp", "30"}
+        << "--a1";
+    QTest::newRow("gt unknown preset") << QStringList{"gt", "--preset", "middle"} << "--preset";
+    QTest::newRow("gt unknown option") << kGt + QStringList{"--bogus", "1"} << "--bogus";
+    QTest::newRow("gt option without value") << kGt + QStringList{"--wn"} << "--wn";
+    QTest::newRow("gt option twice") << kGt + QStringList{"--wn", "2", "--wn", "3"} << "--wn";
+    QTest::newRow("gt control characters in a value")
+        << kGt + QStringList{"--preset", "a\nb\rc"} << "--preset";
+
+    // simulate
+    QTest::newRow("simulate negative tf")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600",
+                       "--tf", "-130"}
+        << "--tf";
+    QTest::newRow("simulate negative dt")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "-0.01"}
+        << "--dt";
+    QTest::newRow("simulate zero dt")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "0"}
+        << "--dt";
+    QTest::newRow("simulate negative duration")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--duration", "-1"}
+        << "--duration";
+    QTest::newRow("simulate duration needing gigabytes")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic +
+               QStringList{"--duration", "1e9"}
+        << "--duration";
+    QTest::newRow("simulate dt needing gigabytes")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-9"}
+        << "--dt"; // not --duration: the user did not type it
+    QTest::newRow("simulate umax zero")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--umax", "0"}
+        << "--umax";
+    QTest::newRow("simulate umax NaN")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--umax", "NaN"}
+        << "--umax";
+    QTest::newRow("simulate unknown trajectory")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "square"}
+        << "--trajectory";
+    QTest::newRow("simulate sine omega Inf")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
+                       "25", "--omega", "Infinity"}
+        << "--omega";
+    QTest::newRow("simulate sine omega tiny (period needing gigabytes)")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
+                       "25", "--omega", "1e-300"}
+        << "--omega";
+    QTest::newRow("simulate csv into a directory")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--csv", "{dir}"}
+        << "--csv";
+
+    // report, new, export: session files
+    QTest::newRow("report directory") << QStringList{"report", "{dir}"} << "{dir}";
+    QTest::newRow("report truncated file") << QStringList{"report", "{truncated}"} << "{truncated}";
+    QTest::newRow("report binary file") << QStringList{"report", "{binary}"} << "{binary}";
+    QTest::newRow("report missing file") << QStringList{"report", "{dir}/missing.json"}
+                                         << "{dir}/missing.json";
+    QTest::newRow("report two files") << QStringList{"report", "{default}", "{default}"}
+                                      << "SESSION";
+    QTest::newRow("new without output") << QStringList{"new"} << "-o";
+    QTest::newRow("new into a directory") << QStringList{"new", "-o", "{dir}"} << "-o";
+    QTest::newRow("export directory")
+        << QStringList{"export", "{dir}", "--format", "json", "-o", "{dir}/out.json"} << "{dir}";
+    QTest::newRow("export truncated file")
+        << QStringList{"export", "{truncated}", "--format", "c", "-o", "{dir}/out.h"}
+        << "{truncated}";
+    QTest::newRow("export unknown format")
+        << QStringList{"export", "{default}", "--format", "xls", "-o", "{dir}/out.xls"}
+        << "--format";
+    QTest::newRow("export into a directory")
+        << QStringList{"export", "{default}", "--format", "m", "-o", "{dir}"} << "-o";
+    QTest::newRow("export unknown discretization")
+        << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json",
+                       "--discretization", "zoh"}
+        << "--discretization";
+
+    // rlocus
+    QTest::newRow("rlocus empty num") << QStringList{"rlocus", "--num", "", "--den", "1 2 0"}
+                                      << "--num";
+    QTest::newRow("rlocus separators only") << QStringList{"rlocus", "--num", " , ;", "--den", "1 2"}
+                                            << "--num";
+    QTest::newRow("rlocus den not a number")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 two 3"} << "--den";
+    QTest::newRow("rlocus den 65 coefficients") << QStringList{"rlocus", "--num", "1", "--den", huge}
+                                                << "--den";
+    QTest::newRow("rlocus num Inf") << QStringList{"rlocus", "--num", "1 inf", "--den", "1 2 3"}
+                                    << "--num";
+    QTest::newRow("rlocus den NaN") << QStringList{"rlocus", "--num", "1", "--den", "1 nan 3"}
+                                    << "--den";
+    QTest::newRow("rlocus den zero") << QStringList{"rlocus", "--num", "1", "--den", "0 0"}
+                                     << "--den";
+    QTest::newRow("rlocus improper after a zero leading coefficient")
+        << QStringList{"rlocus", "--num", "1 2 3", "--den", "0 1 2"} << "--num";
+    QTest::newRow("rlocus unbalanced bracket")
+        << QStringList{"rlocus", "--num", "[1 2", "--den", "1 2 3"} << "--num";
+    QTest::newRow("rlocus negative ts")
+        << QStringList{"rlocus", "--num", "0 1", "--den", "1 -0.5", "--ts", "-0.1"} << "--ts";
+    QTest::newRow("rlocus kmax negative")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 2 0", "--kmax", "-1"} << "--kmax";
+    QTest::newRow("rlocus max-step zero")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 2 0", "--max-step", "0"} << "--max-step";
+    QTest::newRow("rlocus max-step NaN")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 2 0", "--max-step", "nan"}
+        << "--max-step";
+    QTest::newRow("rlocus max-points zero")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 2 0", "--max-points", "0"}
+        << "--max-points";
+    QTest::newRow("rlocus max-points huge")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 2 0", "--max-points", "99999999999"}
+        << "--max-points";
+    QTest::newRow("rlocus gt preset with wn Inf")
+        << QStringList{"rlocus", "--gt-preset", "lower-base", "--wn", "inf"} << "--wn";
+
+    // sweep
+    const QStringList sweep = QStringList{"sweep", "--preset", "lower-base"} + kCubic;
+    QTest::newRow("sweep grid without N") << sweep + QStringList{"--wn", "1:2", "--kp", "10:20:3"}
+                                          << "--wn";
+    QTest::newRow("sweep grid N zero") << sweep + QStringList{"--wn", "1:2:0", "--kp", "10:20:3"}
+                                       << "--wn";
+    QTest::newRow("sweep grid N huge") << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:100000"}
+                                       << "--kp";
+    QTest::newRow("sweep grid N not whole") << sweep + QStringList{"--wn", "1:2:2.5", "--kp", "1:2:3"}
+                                            << "--wn";
+    QTest::newRow("sweep grid NaN") << sweep + QStringList{"--wn", "nan:2:3", "--kp", "10:20:3"}
+                                    << "--wn";
+    QTest::newRow("sweep grid Inf") << sweep + QStringList{"--wn", "1:inf:3", "--kp", "10:20:3"}
+                                    << "--wn";
+    QTest::newRow("sweep grid words") << sweep + QStringList{"--wn", "a:b:c", "--kp", "10:20:3"}
+                                      << "--wn";
+    QTest::newRow("sweep log grid through zero")
+        << sweep + QStringList{"--wn", "0:2:3", "--kp", "10:20:3", "--log"} << "--wn";
+    QTest::newRow("sweep negative wn") << sweep + QStringList{"--wn", "-2:-1:3", "--kp", "10:20:3"}
+                                       << "--wn";
+    QTest::newRow("sweep threads zero")
+        << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:3", "--threads", "0"} << "--threads";
+    QTest::newRow("sweep unknown criterion")
+        << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:3", "--criterion", "fast"}
+        << "--criterion";
+    QTest::newRow("sweep duration needing gigabytes")
+        << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:3", "--duration", "1e10"}
+        << "--duration";
+
+    // pp, zpetc, contour
+    QTest::newRow("pp a leading zero")
+        << QStringList{"pp", "--a", "0 1 0.5", "--b", "0 0.04 0.06", "--t", "1 -0.2"} << "--a";
+    QTest::newRow("pp b without delay")
+        << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0.04 0.06", "--t", "1 -0.2"} << "--b";
+    QTest::newRow("pp b all zero")
+        << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0 0", "--t", "1 -0.2"} << "--b";
+    QTest::newRow("pp t not monic")
+        << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0 0.04", "--t", "2 -0.2"} << "--t";
+    QTest::newRow("pp empty a") << QStringList{"pp", "--a", "", "--b", "0 0.04", "--t", "1"}
+                                << "--a";
+    QTest::newRow("pp a 65 coefficients")
+        << QStringList{"pp", "--a", huge, "--b", "0 0.04", "--t", "1"} << "--a";
+    QTest::newRow("pp b NaN") << QStringList{"pp", "--a", "1 -0.5", "--b", "0 nan", "--t", "1"}
+                              << "--b";
+    QTest::newRow("pp negative ts") << QStringList{"pp", "--preset", "x-axis", "--ts", "-0.07"}
+                                    << "--ts";
+    QTest::newRow("pp ts Inf") << QStringList{"pp", "--preset", "x-axis", "--ts", "inf"} << "--ts";
+    QTest::newRow("pp unknown preset") << QStringList{"pp", "--preset", "z-axis"} << "--preset";
+    QTest::newRow("zpetc margin one") << QStringList{"zpetc"} + kPpX + QStringList{"--margin", "1"}
+                                      << "--margin";
+    QTest::newRow("zpetc margin negative")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--margin", "-0.1"} << "--margin";
+    QTest::newRow("zpetc negative duration")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "-5"} << "--duration";
+    QTest::newRow("zpetc duration needing gigabytes")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "1e12"} << "--duration";
+    QTest::newRow("zpetc omega zero") << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "0"}
+                                      << "--omega";
+    QTest::newRow("zpetc omega tiny (one period needing gigabytes)")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "1e-300"} << "--omega";
+    QTest::newRow("zpetc amplitude NaN")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--amplitude", "nan"} << "--amplitude";
+    QTest::newRow("zpetc unknown start")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--start", "middle"} << "--start";
+    QTest::newRow("zpetc frequency points zero")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--frequency-points", "0"}
+        << "--frequency-points";
+    QTest::newRow("contour negative radius") << QStringList{"contour", "--radius", "-30"}
+                                             << "--radius";
+    QTest::newRow("contour omega NaN") << QStringList{"contour", "--omega", "nan"} << "--omega";
+    QTest::newRow("contour duration needing gigabytes")
+        << QStringList{"contour", "--duration", "1e12"} << "--duration";
+    QTest::newRow("contour unknown preset") << QStringList{"contour", "--preset", "square"}
+                                            << "--preset";
+}
+
+void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, names);
+    const auto substitute = [&](QString s) {
+        return s.replace("{default}", defaultSession_)
+            .replace("{truncated}", truncatedSession_)
+            .replace("{binary}", binarySession_)
+            .replace("{dir}", dir_.path());
+    };
+    for (QString& a : args)
+        a = substitute(a);
+    names = substitute(names);
+
+    const auto run = xyt::test::runCli(args, kTimeBoundMs);
+    QVERIFY2(run.finished, "did not finish within 20 s (or crashed)");
+    const QByteArray diagnostic = "stderr: " + run.err + " stdout: " + run.out.left(200);
+    QVERIFY2(run.exitCode == 2, diagnostic.constData());
+    QVERIFY2(run.err.endsWith('\n') && run.err.count('\n') == 1 && !run.err.contains('\r'),
+             diagnostic.constData());
+    QVERIFY2(run.err.contains(names.toUtf8()), diagnostic.constData());
+    QVERIFY2(run.out.isEmpty(), diagnostic.constData());
+}
+
+QTEST_APPLESS_MAIN(TstCliBadInput)
+#include "tst_cli_bad_input.moc"

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// libFuzzer harness: the session file loader (ui/session_file.h sessionFromBytes) on arbitrary
+// bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
+// accepts must hold finite numbers and survive a save/load round trip unchanged.
+#include "tests/fuzz/fuzz_support.h"
+
+#include "ui/session_file.h"
+
+#include <QByteArray>
+#include <QJsonDocument>
+
+#include <cstdint>
+
+namespace {
+
+void requireFinite(const xyt::AxisSettings& axis) {
+    XYT_FUZZ_REQUIRE_FINITE(axis.gt.plant.k0);
+    XYT_FUZZ_REQUIRE_FINITE(axis.gt.plant.a1);
+    XYT_FUZZ_REQUIRE_FINITE(axis.gt.plant.a2);
+    XYT_FUZZ_REQUIRE_FINITE(axis.gt.omegaNRadPerSec);
+    XYT_FUZZ_REQUIRE_FINITE(axis.gt.kp);
+    XYT_FUZZ_REQUIRE_FINITE(axis.gt.modelUnitsPerPositionUnit);
+    XYT_FUZZ_REQUIRE_FINITE(axis.pp.a);
+    XYT_FUZZ_REQUIRE_FINITE(axis.pp.b);
+    XYT_FUZZ_REQUIRE_FINITE(axis.pp.t1);
+    XYT_FUZZ_REQUIRE_FINITE(axis.pp.tsSeconds);
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const QByteArray bytes(reinterpret_cast<const char*>(data), static_cast<qsizetype>(size));
+    const xyt::ui::SessionLoadResult loaded = xyt::ui::sessionFromBytes(bytes);
+    if (!loaded.ok) {
+        XYT_FUZZ_REQUIRE(!loaded.message().isEmpty());
+        return 0;
+    }
+    const xyt::Session& s = loaded.session;
+    for (const auto& axis : s.axes)
+        requireFinite(axis);
+    XYT_FUZZ_REQUIRE_FINITE(s.umaxVolts);
+    XYT_FUZZ_REQUIRE_FINITE(s.controllerTsSeconds);
+    XYT_FUZZ_REQUIRE_FINITE(s.trajectory.effectiveDurationSeconds());
+    XYT_FUZZ_REQUIRE_FINITE(s.trajectory.dtSeconds);
+    for (const auto& snapshot : s.snapshots)
+        for (const auto& axis : snapshot.axes)
+            requireFinite(axis);
+
+    // What the workbench saves from an accepted session must load back to the same session.
+    const QByteArray saved = QJsonDocument(xyt::ui::sessionToJson(s)).toJson();
+    const xyt::ui::SessionLoadResult reloaded = xyt::ui::sessionFromBytes(saved);
+    XYT_FUZZ_REQUIRE(reloaded.ok);
+    XYT_FUZZ_REQUIRE(reloaded.session == s);
+    return 0;
+}
