@@ -57,8 +57,10 @@ void benchmark(const char* filter, const std::string& name, const std::function<
 volatile double sink = 0.0; // keeps results alive so the optimizer cannot drop the work
 
 /// The workbench's reaction to a slider drag: one value change of the omega_n slider (the
-/// session redesigns, re-simulates and updates every view through its signals), then every
-/// visible plot repainted at once, then the event queue drained. Offscreen at 1366 x 768.
+/// session redesigns, re-simulates and updates every view through its signals; each visible
+/// plot queues one replot), then the event queue drained twice: the queued replots render the
+/// plots, and the paint events they post put them on the (offscreen) window. Offscreen at
+/// 1366 x 768, default tabs (root locus above, time response below).
 void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
     if (filter && std::string("gui_slider_to_repaint").find(filter) == std::string::npos)
         return;
@@ -79,9 +81,7 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
     benchmark(filter, "gui_slider_to_repaint", [&] {
         slider->setValue(positions[next]);
         next = 1 - next;
-        for (QCustomPlot* plot : window.findChildren<QCustomPlot*>())
-            if (plot->isVisible())
-                plot->replot(QCustomPlot::rpImmediateRefresh);
+        QApplication::processEvents();
         QApplication::processEvents();
     });
 }

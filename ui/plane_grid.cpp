@@ -83,7 +83,7 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
     clear();
     ts_ = tsSeconds;
     maxOmega_ = maxOmegaRadPerSec;
-    const QPen pen(QColor(0xc8, 0xc8, 0xc8), 0, Qt::DotLine);
+    const QPen pen(QColor(0xdc, 0xdc, 0xdc), 0, Qt::SolidLine); // solid: dotted pens rasterize slowly
     const DampingGrid grid = tsSeconds > 0.0
                                  ? zPlaneDampingGrid(defaultGridZetas(), defaultZGridFrequencies(tsSeconds), tsSeconds)
                                  : sPlaneDampingGrid(defaultGridZetas(),
