@@ -107,6 +107,11 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b,
     out.g = Polynomial::fromAscending(gc, "g");
     out.conditionNumber = condition;
     out.residual = (a * out.f + b * out.g - t).maxAbsCoefficient();
+    if (!std::isfinite(out.residual))
+        // F and G are finite but A F + B G overflows: coefficients near the double range
+        // (found by fuzz_design, input kept in tests/fuzz/corpus/fuzz_design).
+        throw InvalidInput("b", "the coefficients of A and B are too large in magnitude: "
+                                "A F + B G overflows a double");
     if (condition > kNearCommonFactorCondition) {
         const ClosestPair pair = closestPoleZero(a, b);
         std::string what = "near-common factor of A and B";
