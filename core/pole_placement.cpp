@@ -43,7 +43,9 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     }
     d.t = t;
     d.tsSeconds = tsSeconds;
-    while (d.b.coefficient(d.delay) == 0.0)
+    if (d.b.isZero())
+        throw InvalidInput("b", "B is zero: the plant has no input");
+    while (d.delay < d.b.degree() && d.b.coefficient(d.delay) == 0.0)
         ++d.delay;
     const double b1 = d.b(1.0);
     if (std::abs(b1) <= 1e-12 * d.b.maxAbsCoefficient())
