@@ -4,8 +4,8 @@
 #   scripts/dev.sh run    starts the workbench (or the headless report without a display)
 #   scripts/dev.sh test   runs every test: the normal build, then the whole suite again in an
 #                         AddressSanitizer + UndefinedBehaviorSanitizer build (build-asan; any
-#                         sanitizer report fails), then each libFuzzer harness for 15 s
-#                         (scripts/fuzz.sh, clang build in build-fuzz)
+#                         sanitizer report fails), then each libFuzzer harness on 8000
+#                         inputs from a fixed seed (scripts/fuzz.sh, clang build in build-fuzz)
 #   scripts/dev.sh bench  builds and runs the benchmark program
 set -euo pipefail
 
