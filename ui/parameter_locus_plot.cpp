@@ -9,7 +9,6 @@ namespace xyt::ui {
 
 ParameterLocusPlot::ParameterLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
     setObjectName("parameter-locus");
-    addLayer("grid", layer("main"), QCustomPlot::limBelow);
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));
     plotLayout()->addElement(0, 0, title_);

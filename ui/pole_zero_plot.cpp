@@ -15,7 +15,6 @@ const QList<QColor> kSetColors = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0
 
 PoleZeroPlot::PoleZeroPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
     setObjectName("pole-zero");
-    addLayer("grid", layer("main"), QCustomPlot::limBelow);
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Pole-zero map"), QFont(font().family(), 10, QFont::Bold));
     plotLayout()->addElement(0, 0, title_);

@@ -26,7 +26,6 @@ QString formatGain(double k) { return QString::number(k, 'g', 5); }
 
 RootLocusPlot::RootLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
     setObjectName("root-locus");
-    addLayer("grid", layer("main"), QCustomPlot::limBelow);
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));
     plotLayout()->addElement(0, 0, title_);
