@@ -3,6 +3,7 @@
 // window with the default design offscreen and exits.
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
+#include "ui/recovery_store.h"
 #include "ui/session_file.h"
 #include "ui/session_file_controller.h"
 #include "ui/tuning_session.h"
@@ -120,5 +121,10 @@ int main(int argc, char* argv[]) {
     if (!parser.positionalArguments().isEmpty())
         window.files()->openFile(parser.positionalArguments().first());
     window.show();
+    // Work left unsaved by an instance that crashed or was killed is offered once the window is up.
+    QTimer::singleShot(0, &window, [&window, &session] {
+        xyt::ui::offerRecovery(&window, &session, window.files(),
+                               xyt::ui::RecoveryStore::defaultDirectory());
+    });
     return QApplication::exec();
 }

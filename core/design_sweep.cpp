@@ -276,6 +276,42 @@ double logSpacing(const std::vector<double>& values, std::size_t i) {
 
 } // namespace
 
+void tallyDesignSpace(DesignSweepResult& result) {
+    const std::size_t total = result.points.size();
+    result.feasibleMask.assign(total, 0);
+    result.computedCount = result.feasibleCount = result.stableCount = 0;
+    result.bestIndex.reset();
+    double bestValue = kInf;
+    for (std::size_t i = 0; i < total; ++i) {
+        const DesignPoint& p = result.points[i];
+        if (!p.computed)
+            continue;
+        ++result.computedCount;
+        result.stableCount += p.stable ? 1 : 0;
+        if (!p.feasible)
+            continue;
+        result.feasibleMask[i] = 1;
+        ++result.feasibleCount;
+        const double value = criterionValue(p, result.criterion);
+        if (!result.bestIndex || value < bestValue) {
+            bestValue = value;
+            result.bestIndex = i;
+        }
+    }
+}
+
+void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
+    spec.validate();
+    for (DesignPoint& p : result.points) {
+        if (!p.computed)
+            continue;
+        p.check = checkSpecification(spec, p.tracking, p.step);
+        p.feasible = p.metricsFinite && p.check.allPassed();
+    }
+    tallyDesignSpace(result);
+    result.refined.reset();
+}
+
 DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis& wnAxis,
                                    const SweepAxis& kpAxis, const SweepOptions& options) {
     if (options.threads < 0 || options.threads > 1024)
@@ -356,24 +392,7 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
     if (failure)
         std::rethrow_exception(failure);
 
-    result.feasibleMask.assign(total, 0);
-    double bestValue = kInf;
-    for (std::size_t i = 0; i < total; ++i) {
-        const DesignPoint& p = result.points[i];
-        if (!p.computed)
-            continue;
-        ++result.computedCount;
-        result.stableCount += p.stable ? 1 : 0;
-        if (!p.feasible)
-            continue;
-        result.feasibleMask[i] = 1;
-        ++result.feasibleCount;
-        const double value = criterionValue(p, options.criterion);
-        if (!result.bestIndex || value < bestValue) {
-            bestValue = value;
-            result.bestIndex = i;
-        }
-    }
+    tallyDesignSpace(result);
     if (cancel.load() || result.computedCount < static_cast<int>(total)) {
         result.status = SweepStatus::Cancelled;
         result.warnings.push_back("cancelled: " + std::to_string(result.computedCount) + " of " +

@@ -184,6 +184,19 @@ struct DesignSweepResult {
     const DesignPoint& at(std::size_t iWn, std::size_t iKp) const { return points[index(iWn, iKp)]; }
 };
 
+/// Recounts computedCount, stableCount, feasibleMask, feasibleCount and bestIndex (for
+/// result.criterion) from the points' `computed`, `stable` and `feasible`.
+void tallyDesignSpace(DesignSweepResult& result);
+
+/**
+ * Judges every computed point of @p result again against @p spec, which must have the study's
+ * actuator limit (the runs depend on it; on the other limits they do not, so this is exact):
+ * check, feasible and the tally (tallyDesignSpace) are recomputed. The refinement searched
+ * under the old limits and is dropped.
+ * @throws InvalidInput from Specification::validate.
+ */
+void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec);
+
 /**
  * Evaluates every (wn, kp) of the grid (DesignEvaluator::evaluate), on all cores, then picks
  * the best feasible design and refines it inside the grid's box (refineDesign, starting with

@@ -29,6 +29,17 @@ TrackingMetrics trackingMetrics(const SimulationResult& run) {
         run.clipped.size() != n)
         throw InvalidInput("result", "signals of different lengths");
     TrackingMetrics m;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!std::isfinite(run.y[k]) || !std::isfinite(run.e[k]) || !std::isfinite(run.u[k])) {
+            // std::max ignores NaN, so a maximum over a diverged run would read as a small, finite
+            // figure; a diverged run has no figures at all.
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            m.rmse = m.maxAbsError = m.maxAbsErrorPct = m.maxAbsU = m.itae = nan;
+            m.saturatedTimeSeconds = nan;
+            m.diverged = true;
+            return m;
+        }
+    }
     m.rmse = rootMeanSquare(run.e);
     double rMin = run.r[0], rMax = run.r[0];
     std::size_t clippedCount = 0;

@@ -15,8 +15,13 @@ struct TrackingMetrics {
     bool saturated = false;       ///< some sample was clipped at +-umax
     double saturatedTimeSeconds = 0.0; ///< clipped samples * dt
     double itae = 0.0;            ///< integral of t |e(t)| dt, trapezoidal rule (paper 000's AEMT)
+    /// Some sample of y, e or u is not finite (the run diverged): every figure above is then NaN
+    /// ("n/a"), `saturated` is false but means nothing, and the run fails every criterion.
+    bool diverged = false;
 };
 
+/// A diverged run (a non-finite sample) gives NaN figures and `diverged`, never a partial
+/// maximum over its finite samples.
 /// @throws InvalidInput "result" when the run is empty or its signals differ in length.
 TrackingMetrics trackingMetrics(const SimulationResult& run);
 

@@ -162,6 +162,9 @@ AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
             evaluateGt(session, axis, axisIndex, out);
         else
             evaluatePp(session, axis, axisIndex, out);
+        if (out.metrics.diverged)
+            out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
+                                   "it has no tracking figures");
         Specification spec = session.spec;
         spec.umaxVolts = session.umaxVolts;
         out.check = checkSpecification(spec, out.metrics, out.step);

@@ -35,8 +35,9 @@ SpecificationCheck checkSpecification(const Specification& spec, const TrackingM
     c.settlingTime = step.stable && atMost(step.settlingTimeSeconds, spec.maxSettlingTimeSeconds);
     c.overshoot = step.stable && atMost(step.overshootPct, spec.maxOvershootPct +
                                                                Specification::kOvershootRoundOffPct);
-    c.noSaturation = !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
-    c.trackingError = atMost(tracking.maxAbsErrorPct, spec.maxErrorPct);
+    // A diverged run has no figures: it fails both tracking criteria (atMost(NaN) is false too).
+    c.noSaturation = !tracking.diverged && !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
+    c.trackingError = !tracking.diverged && atMost(tracking.maxAbsErrorPct, spec.maxErrorPct);
     return c;
 }
 

@@ -76,8 +76,9 @@ QString axisName(const Session& s, int axis) {
 bool sameStudySettings(const Session& a, const Session& b, int axis) {
     const GtAxisSettings& ga = a.axes.at(static_cast<std::size_t>(axis)).gt;
     const GtAxisSettings& gb = b.axes.at(static_cast<std::size_t>(axis)).gt;
-    return ga.plant == gb.plant &&
-           ga.modelUnitsPerPositionUnit == gb.modelUnitsPerPositionUnit && a.trajectory == b.trajectory;
+    // The runs depend on the actuator limit too; the other limits only judge them.
+    return ga.plant == gb.plant && ga.modelUnitsPerPositionUnit == gb.modelUnitsPerPositionUnit &&
+           a.trajectory == b.trajectory && a.umaxVolts == b.umaxVolts;
 }
 
 /// The criteria a design fails, for the readout.
@@ -170,6 +171,11 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     specForm->addRow(tr("step overshoot ≤"), overshoot_);
     specForm->addRow(tr("max tracking error ≤"), error_);
     specForm->addRow(tr("|u| ≤ (actuator limit)"), umax_);
+
+    specForm->addRow(new QLabel(tr("<i>The session's specification, shared with the metrics panel.</i>")));
+    // One specification: the boxes edit the session's (an undoable step), and show it.
+    for (QDoubleSpinBox* box : {settling_, overshoot_, error_, umax_})
+        connect(box, &QDoubleSpinBox::editingFinished, this, &DesignSpaceView::applySpecification);
 
     run_ = new QPushButton(tr("Run"));
     run_->setDefault(true);
@@ -276,10 +282,8 @@ void DesignSpaceView::run() {
         problem.dtSeconds = s.trajectory.dtSeconds;
         problem.reference = sampled(axisReference(s.trajectory, axis),
                                     sampleTimes(s.trajectory.effectiveDurationSeconds(), s.trajectory.dtSeconds));
-        problem.spec.maxSettlingTimeSeconds = settling_->value();
-        problem.spec.maxOvershootPct = overshoot_->value();
-        problem.spec.maxErrorPct = error_->value();
-        problem.spec.umaxVolts = umax_->value();
+        problem.spec = s.spec; // the one specification of the session
+        problem.spec.umaxVolts = s.umaxVolts;
         problem.spec.validate();
     } catch (const InvalidInput& e) {
         setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
@@ -416,16 +420,49 @@ void DesignSpaceView::showOutcome() {
     setStatus(text, true);
 }
 
+void DesignSpaceView::applySpecification() {
+    Session next = session_->session();
+    next.spec.maxSettlingTimeSeconds = settling_->value();
+    next.spec.maxOvershootPct = overshoot_->value();
+    next.spec.maxErrorPct = error_->value();
+    next.umaxVolts = umax_->value();
+    if (next.spec == session_->session().spec && next.umaxVolts == session_->session().umaxVolts)
+        return;
+    session_->apply(next, tr("Change the specification"));
+}
+
 void DesignSpaceView::updateCurrentDesign() {
     const Session& s = session_->session();
-    if (s.umaxVolts != lastUmaxVolts_) {
-        lastUmaxVolts_ = s.umaxVolts;
+    {
+        const QSignalBlocker b1(settling_), b2(overshoot_), b3(error_), b4(umax_);
+        settling_->setValue(s.spec.maxSettlingTimeSeconds);
+        overshoot_->setValue(s.spec.maxOvershootPct);
+        error_->setValue(s.spec.maxErrorPct);
         umax_->setValue(s.umaxVolts);
+    }
+    lastUmaxVolts_ = s.umaxVolts;
+    // A study stays judged by the session's specification: when only its limits changed (the
+    // runs did not), every design is judged again (exact; the refinement is dropped).
+    if (result_ && problem_ && !isRunning() && s.umaxVolts == problem_->spec.umaxVolts) {
+        Specification spec = s.spec;
+        spec.umaxVolts = s.umaxVolts;
+        if (!(spec == problem_->spec)) {
+            try {
+                rejudgeDesignSpace(*result_, spec);
+                problem_->spec = spec;
+                plot_->showResult(*result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
+                                  tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
+                showOutcome();
+            } catch (const InvalidInput& e) {
+                setStatus(tr("Cannot judge the study: %1").arg(QString::fromStdString(e.what())), true);
+            }
+        }
     }
     const int axis = result_ ? studiedAxis_ : session_->currentAxis();
     const GtAxisSettings& gt = s.axes.at(static_cast<std::size_t>(axis)).gt;
     plot_->setCurrentDesign(gt.omegaNRadPerSec, gt.kp);
-    const QString staleNote = tr("The plant or trajectory of this axis changed since the study: run it again.");
+    const QString staleNote =
+        tr("The plant, the trajectory or the actuator limit changed since the study: run it again.");
     if (result_ && !isRunning()) {
         if (!sameStudySettings(s, studiedSession_, studiedAxis_))
             setStatus(staleNote, true);

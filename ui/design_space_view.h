@@ -84,6 +84,7 @@ private:
     void onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error);
     void showOutcome();
     void updateCurrentDesign();
+    void applySpecification();
     void showHover(std::optional<std::pair<std::size_t, std::size_t>> cell);
     void loadCell(std::size_t iWn, std::size_t iKp);
     void setStatus(const QString& text, bool isError = false);

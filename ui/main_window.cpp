@@ -13,6 +13,7 @@
 #include "ui/plot_tools.h"
 #include "ui/pole_zero_plot.h"
 #include "ui/pp_editor.h"
+#include "ui/recovery_store.h"
 #include "ui/root_locus_plot.h"
 #include "ui/session_file.h"
 #include "ui/session_file_controller.h"
@@ -31,6 +32,8 @@
 #include <QGroupBox>
 #include <QInputDialog>
 #include <QJsonDocument>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -137,6 +140,8 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     connect(files_, &SessionFileController::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(files_, &SessionFileController::currentFileChanged, this, &MainWindow::updateTitle);
+    recovery_ = new RecoveryStore(session_, RecoveryStore::defaultDirectory(), this);
+    connect(files_, &SessionFileController::currentFileChanged, recovery_, &RecoveryStore::setSessionFile);
     connect(session_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     buildMenus();
     updateTitle();
@@ -145,7 +150,21 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     connect(session_, &TuningSession::currentAxisChanged, this, &MainWindow::refresh);
     resize(1366, 768);
     restoreLayout();
+    for (QLineEdit* field : findChildren<QLineEdit*>())
+        field->installEventFilter(this);
     refresh();
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::ShortcutOverride) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo)) {
+            // Left unaccepted, the override lets the shortcut reach the Edit menu's action.
+            event->ignore();
+            return true;
+        }
+    }
+    return QMainWindow::eventFilter(watched, event);
 }
 
 QWidget* MainWindow::buildControls() {
@@ -330,10 +349,13 @@ void MainWindow::refresh() {
                                                   QString::fromStdString(a.label));
     // Plots that are not on screen are redrawn when their tab is shown (the tabs' currentChanged
     // calls refresh), so a slider drag only pays for what the user sees.
-    if (timePlot_->isVisible() || !isVisible())
-        timePlot_->showAxis(e, title, s.umaxVolts);
-    if (contourPlot_->isVisible() || !isVisible())
-        contourPlot_->showSession(s, session_->evaluation());
+    const auto shown = [this](QWidget* w) { return w->isVisible() || !isVisible(); };
+    const QStringList liveNotices =
+        session_->liveNotice().isEmpty() ? QStringList{} : QStringList{session_->liveNotice()};
+    if (shown(timePlot_))
+        timePlot_->showAxis(e, title, s.umaxVolts, liveNotices);
+    if (shown(contourPlot_))
+        contourPlot_->showSession(session_->liveSession(), session_->evaluation());
     if (e.ok) {
         std::vector<std::complex<double>> poles;
         try {
@@ -341,25 +363,43 @@ void MainWindow::refresh() {
         } catch (const std::exception&) {
             poles.clear();
         }
-        if (rootLocusPlot_->isVisible() || !isVisible())
+        if (shown(rootLocusPlot_))
             rootLocusPlot_->showLocus(session_->rootLocus(axis), poles,
                                       tr("Root locus of %1 (K = 1: the design)").arg(title));
-        if (poleZeroPlot_->isVisible() || !isVisible())
+        if (shown(poleZeroPlot_))
             poleZeroPlot_->showSets(session_->poleZeroSets(axis), tr("Pole-zero map of %1").arg(title));
-        if ((parameterLocusPlot_->isVisible() || !isVisible()) && a.method == DesignMethod::GuilleminTruxal) {
-            const bool kp = sweptParameter_->currentIndex() == 1;
-            parameterLocusPlot_->showLocus(
-                session_->parameterLocus(axis, kp ? GtSweptParameter::Kp : GtSweptParameter::OmegaN),
-                poles,
-                kp ? tr("Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)")
-                         .arg(a.gt.kp / 10, 0, 'g', 3).arg(a.gt.kp * 10, 0, 'g', 3).arg(a.gt.omegaNRadPerSec)
-                   : tr("Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)")
-                         .arg(a.gt.omegaNRadPerSec / 10, 0, 'g', 3)
-                         .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3).arg(a.gt.kp));
+        if (shown(parameterLocusPlot_)) {
+            if (a.method == DesignMethod::GuilleminTruxal) {
+                const bool kp = sweptParameter_->currentIndex() == 1;
+                parameterLocusPlot_->showLocus(
+                    session_->parameterLocus(axis, kp ? GtSweptParameter::Kp : GtSweptParameter::OmegaN),
+                    poles,
+                    kp ? tr("Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)")
+                             .arg(a.gt.kp / 10, 0, 'g', 3).arg(a.gt.kp * 10, 0, 'g', 3).arg(a.gt.omegaNRadPerSec)
+                       : tr("Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)")
+                             .arg(a.gt.omegaNRadPerSec / 10, 0, 'g', 3)
+                             .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3).arg(a.gt.kp));
+            } else {
+                parameterLocusPlot_->showNoResult(
+                    tr("Parameter locus of %1").arg(title),
+                    tr("The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis "
+                       "uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ "
+                       "(pole at z = %1), placed directly by t1.").arg(-a.pp.t1, 0, 'g', 4));
+            }
         }
+    } else {
+        // An invalid or failed axis has no locus and no pole-zero map: never an earlier one.
+        const QString reason = tr("No design: %1: %2").arg(QString::fromStdString(e.errorField),
+                                                          QString::fromStdString(e.error));
+        if (shown(rootLocusPlot_))
+            rootLocusPlot_->showNoResult(tr("Root locus of %1").arg(title), reason);
+        if (shown(poleZeroPlot_))
+            poleZeroPlot_->showNoResult(tr("Pole-zero map of %1").arg(title), reason);
+        if (shown(parameterLocusPlot_))
+            parameterLocusPlot_->showNoResult(tr("Parameter locus of %1").arg(title), reason);
     }
     sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
-    metrics_->showEvaluation(s, session_->evaluation());
+    metrics_->showEvaluation(s, session_->evaluation(), session_->liveNotice());
     equations_->showAxis(a, e);
     QString state;
     for (int i = 0; i < 2; ++i) {
@@ -375,7 +415,9 @@ void MainWindow::refresh() {
     rebuildOverlayMenu();
     if (overlay_ >= 0) {
         const auto& snap = s.snapshots.at(static_cast<std::size_t>(overlay_));
-        const AxisEvaluation overlay = evaluateAxis(s.withDesign(snap), axis);
+        QString ignored;
+        const AxisEvaluation overlay =
+            evaluateAxis(TuningSession::liveSessionOf(s.withDesign(snap), ignored), axis);
         timePlot_->showSnapshot(overlay.ok ? overlay.run : SimulationResult{},
                                 QString::fromStdString(snap.name));
     } else {
@@ -444,6 +486,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         return;
     }
     saveLayout();
+    recovery_->discard(); // saved or deliberately discarded: nothing to recover
     // The last values come back on the next start.
     QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
     event->accept();

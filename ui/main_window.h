@@ -14,6 +14,7 @@ class QTabWidget;
 namespace xyt::ui {
 
 class ContourPlot;
+class RecoveryStore;
 class EquationsPanel;
 class MetricsPanel;
 class NumberField;
@@ -55,6 +56,7 @@ public:
     EquationsPanel* equationsPanel() const { return equations_; }
     QTabBar* axisTabs() const { return axisTabs_; }
     SessionFileController* files() const { return files_; }
+    RecoveryStore* recovery() const { return recovery_; }
     /// Stores the current design as a snapshot named @p name (undoable).
     void storeSnapshot(const QString& name);
     /// Overlays snapshot @p index on the time plot (-1: none).
@@ -69,6 +71,9 @@ public slots:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// Ctrl+Z / Ctrl+Shift+Z in a text field undo and redo the session, as the Edit menu does
+    /// (not the field's own text history).
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     QWidget* buildControls();
@@ -105,6 +110,7 @@ private:
     QLabel* status_ = nullptr;
     double lastRefreshMs_ = 0.0;
     SessionFileController* files_ = nullptr;
+    RecoveryStore* recovery_ = nullptr;
     QMenu* overlayMenu_ = nullptr;
     int overlay_ = -1;
     void updateTitle();

@@ -6,6 +6,7 @@
 
 #include <QFormLayout>
 #include <QHeaderView>
+#include <QLabel>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -39,6 +40,14 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setAccessibleName(tr("Metrics"));
     table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     layout->addWidget(table_);
+    notices_ = new QLabel(this);
+    notices_->setWordWrap(true);
+    notices_->setTextFormat(Qt::PlainText);
+    notices_->setStyleSheet(QStringLiteral(
+        "QLabel { background: #fff4d6; border: 1px solid #e0b24a; border-radius: 3px; padding: 3px; }"));
+    notices_->setAccessibleName(tr("Warnings"));
+    notices_->setVisible(false);
+    layout->addWidget(notices_);
     auto* form = new QFormLayout;
     auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
     spec_.insert("settling", new NumberField("max settling time", positive("max settling time"), this));
@@ -65,7 +74,13 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         });
 }
 
-void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluation& evaluation) {
+QString MetricsPanel::noticeText() const { return notices_->text(); }
+
+void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluation& evaluation,
+                                  const QString& liveNotice) {
+    QStringList notices;
+    if (!liveNotice.isEmpty())
+        notices << liveNotice;
     current_ = session.spec;
     spec_["settling"]->setValue(session.spec.maxSettlingTimeSeconds);
     spec_["overshoot"]->setValue(session.spec.maxOvershootPct);
@@ -92,7 +107,10 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             const auto& m = a.metrics;
             values << displayNumber(m.rmse) << displayNumber(m.maxAbsError)
                    << displayNumber(m.maxAbsErrorPct, 3) << displayNumber(m.maxAbsU)
-                   << (m.saturated ? displayNumber(m.saturatedTimeSeconds, 2) : tr("no"))
+                   << (m.diverged    ? tr("n/a")
+                       : !m.saturated ? tr("no")
+                       : a.pp         ? tr("%1 (not applied)").arg(displayNumber(m.saturatedTimeSeconds, 2))
+                                      : displayNumber(m.saturatedTimeSeconds, 2))
                    << (a.step.stable ? displayNumber(a.step.settlingTimeSeconds, 2) : tr("unstable"))
                    << (a.step.stable ? displayNumber(a.step.overshootPct, 3) : tr("unstable"))
                    << displayNumber(m.itae, 1)
@@ -100,6 +118,11 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                            ? displayNumber(a.improvementPct, 2)
                            : tr("—"));
         }
+        if (!a.ok)
+            notices << tr("%1: no design (%2: %3)").arg(header, QString::fromStdString(a.errorField),
+                                                      QString::fromStdString(a.error));
+        for (const std::string& w : a.warnings)
+            notices << tr("%1: %2").arg(header, QString::fromStdString(w));
         // Which rows the specification judges, and whether this axis passes them.
         const QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
                                         {MaxU, a.check.noSaturation},
@@ -122,6 +145,8 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             table_->setItem(r, c, item);
         }
     }
+    notices_->setText(notices.join(QLatin1Char('\n')));
+    notices_->setVisible(!notices.isEmpty());
 }
 
 } // namespace xyt::ui

@@ -6,6 +6,7 @@
 #include <QMap>
 #include <QWidget>
 
+class QLabel;
 class QTableWidget;
 
 namespace xyt::ui {
@@ -21,9 +22,13 @@ class MetricsPanel : public QWidget {
     Q_OBJECT
 public:
     explicit MetricsPanel(QWidget* parent = nullptr);
-    void showEvaluation(const Session& session, const SessionEvaluation& evaluation);
+    /// Shows both axes' figures and warnings; @p liveNotice says what the live view limited.
+    void showEvaluation(const Session& session, const SessionEvaluation& evaluation,
+                        const QString& liveNotice = QString());
     QTableWidget* table() const { return table_; }
     NumberField* specField(const QString& name) const { return spec_.value(name); }
+    /// The warnings of both axes and of the live view, one per line ("" when there are none).
+    QString noticeText() const;
 
     /// Row order of the table.
     enum Row { Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Settling, Overshoot, Itae,
@@ -34,6 +39,7 @@ signals:
 
 private:
     QTableWidget* table_;
+    QLabel* notices_;
     QMap<QString, NumberField*> spec_;
     Specification current_;
 };

@@ -7,7 +7,8 @@
 
 namespace xyt::ui {
 
-ParameterLocusPlot::ParameterLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
+ParameterLocusPlot::ParameterLocusPlot(QWidget* parent)
+    : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("parameter-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));
@@ -35,6 +36,13 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
                                    const std::vector<std::complex<double>>& current,
                                    const QString& title) {
     title_->setText(title);
+    title_->setTextColor(palette().color(QPalette::WindowText));
+    hasResult_ = true;
+    QStringList warnings;
+    for (const std::string& w : locus.warnings)
+        warnings << QString::fromStdString(w);
+    notice_.setSevere(false);
+    notice_.setLines(warnings);
     showBranches(this, branches_, locus.branches, [](std::size_t) { return QPen(colors::output, 1.6); });
     std::vector<std::complex<double>> starts;
     double extent = 1e-6;
@@ -47,10 +55,28 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
     setComplexPoints(current_, current);
     setComplexPoints(ends_, starts);
     grid_.show(0.0, extent);
-    if (!ranged_) {
-        rescaleAxes();
+    // Keep the user's zoom while the current poles and the sweep's ends stay in view.
+    std::vector<std::complex<double>> markers = current;
+    markers.insert(markers.end(), starts.begin(), starts.end());
+    if (!ranged_ || anyOutsideView(this, markers)) {
+        std::vector<std::complex<double>> all = markers;
+        for (const auto& roots : locus.branches)
+            all.insert(all.end(), roots.begin(), roots.end());
+        setView(this, fittedBox({}, all));
         ranged_ = true;
     }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void ParameterLocusPlot::showNoResult(const QString& title, const QString& reason) {
+    hasResult_ = false;
+    title_->setText(title);
+    title_->setTextColor(colors::error);
+    showBranches(this, branches_, {}, [](std::size_t) { return QPen(); });
+    current_->data()->clear();
+    ends_->data()->clear();
+    notice_.setSevere(true);
+    notice_.setLines({reason});
     replot(QCustomPlot::rpQueuedReplot);
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/parameter_locus.h"
 #include "ui/plane_grid.h"
+#include "ui/plot_notice.h"
 
 #include <qcustomplot.h>
 
@@ -18,6 +19,12 @@ public:
     explicit ParameterLocusPlot(QWidget* parent = nullptr);
     void showLocus(const ParameterLocus& locus, const std::vector<std::complex<double>>& current,
                    const QString& title);
+    /// Clears the plot and says why there is no parameter locus (an invalid design, or a
+    /// pole-placement axis, whose closed-loop poles are the roots of T, placed directly).
+    void showNoResult(const QString& title, const QString& reason);
+    bool hasResult() const { return hasResult_; }
+    QString noticeText() const { return notice_.text(); }
+    const std::vector<QCPCurve*>& branchCurves() const { return branches_; }
     int branchCount() const { return static_cast<int>(branches_.size()); }
     QCPGraph* currentGraph() const { return current_; }
 
@@ -27,7 +34,9 @@ private:
     QCPGraph* ends_;
     QCPTextElement* title_;
     PlaneGrid grid_;
+    PlotNotice notice_;
     bool ranged_ = false;
+    bool hasResult_ = false;
 };
 
 } // namespace xyt::ui

@@ -3,6 +3,7 @@
 
 #include "core/damping_grid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -53,6 +54,46 @@ void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& 
         if (std::isfinite(p.real()) && std::isfinite(p.imag()))
             data.append(QCPGraphData(p.real(), p.imag()));
     graph->data()->set(data, false);
+}
+
+bool anyOutsideView(const QCustomPlot* plot, const std::vector<std::complex<double>>& points) {
+    const QCPRange re = plot->xAxis->range(), im = plot->yAxis->range();
+    for (const auto& p : points)
+        if (std::isfinite(p.real()) && std::isfinite(p.imag()) &&
+            (!re.contains(p.real()) || !im.contains(p.imag())))
+            return true;
+    return false;
+}
+
+PlaneBox fittedBox(PlaneBox base, const std::vector<std::complex<double>>& points) {
+    PlaneBox b = base;
+    bool first = !(b.reMax > b.reMin && b.imMax > b.imMin);
+    for (const auto& p : points) {
+        if (!std::isfinite(p.real()) || !std::isfinite(p.imag()))
+            continue;
+        if (first) {
+            b = {p.real(), p.real(), p.imag(), p.imag()};
+            first = false;
+            continue;
+        }
+        b.reMin = std::min(b.reMin, p.real());
+        b.reMax = std::max(b.reMax, p.real());
+        b.imMin = std::min(b.imMin, p.imag());
+        b.imMax = std::max(b.imMax, p.imag());
+    }
+    if (first)
+        return {-1.0, 1.0, -1.0, 1.0};
+    const double extent = std::max({b.reMax - b.reMin, b.imMax - b.imMin,
+                                    1e-3 * std::max({std::abs(b.reMin), std::abs(b.reMax), 1.0})});
+    const double pad = 0.08 * extent;
+    // Keep the imaginary axis symmetric: conjugate pairs then sit at equal heights.
+    const double im = std::max(std::abs(b.imMin), std::abs(b.imMax)) + pad;
+    return {b.reMin - pad, b.reMax + pad, -std::max(im, 0.3 * extent), std::max(im, 0.3 * extent)};
+}
+
+void setView(QCustomPlot* plot, const PlaneBox& box) {
+    plot->xAxis->setRange(box.reMin, box.reMax);
+    plot->yAxis->setRange(box.imMin, box.imMax);
 }
 
 PlaneGrid::PlaneGrid(QCustomPlot* plot) : plot_(plot) {}

@@ -41,6 +41,23 @@ void showBranches(QCustomPlot* plot, std::vector<QCPCurve*>& curves,
                   const std::vector<std::vector<std::complex<double>>>& branches,
                   const std::function<QPen(std::size_t)>& penFor);
 
+/// The rectangle of the complex plane a view should show.
+struct PlaneBox {
+    double reMin = 0.0, reMax = 0.0, imMin = 0.0, imMax = 0.0;
+};
+
+/// True when some finite point of @p points lies outside the plot's current view.
+bool anyOutsideView(const QCustomPlot* plot, const std::vector<std::complex<double>>& points);
+
+/**
+ * The box around @p base and every finite point of @p points, with 8 % margins on each side
+ * (and at least a small extent, so a single point gets a readable view).
+ */
+PlaneBox fittedBox(PlaneBox base, const std::vector<std::complex<double>>& points);
+
+/// Sets the plot's view to @p box.
+void setView(QCustomPlot* plot, const PlaneBox& box);
+
 /// Replaces the data of a point graph with the complex points.
 void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& points);
 

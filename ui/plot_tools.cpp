@@ -7,7 +7,73 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace xyt::ui {
+
+namespace {
+std::size_t bucketSize(std::size_t n, int buckets) {
+    return buckets > 0 ? (n + static_cast<std::size_t>(buckets) - 1) / static_cast<std::size_t>(buckets) : n;
+}
+} // namespace
+
+QVector<QCPGraphData> minMaxDecimated(const std::vector<double>& t, const std::vector<double>& y,
+                                      int buckets) {
+    const std::size_t n = std::min(t.size(), y.size());
+    QVector<QCPGraphData> out;
+    if (n <= 2 * static_cast<std::size_t>(std::max(buckets, 1))) {
+        out.reserve(static_cast<qsizetype>(n));
+        for (std::size_t k = 0; k < n; ++k)
+            out.append(QCPGraphData(t[k], y[k]));
+        return out;
+    }
+    const std::size_t size = bucketSize(n, buckets);
+    out.reserve(2 * buckets + 2);
+    for (std::size_t begin = 0; begin < n; begin += size) {
+        const std::size_t end = std::min(n, begin + size);
+        std::size_t lo = begin, hi = begin;
+        for (std::size_t k = begin; k < end; ++k) {
+            // A non-finite sample is kept as such: the line shows a gap, not a made-up value.
+            if (!std::isfinite(y[k])) {
+                lo = hi = k;
+                break;
+            }
+            if (y[k] < y[lo])
+                lo = k;
+            if (y[k] > y[hi])
+                hi = k;
+        }
+        const std::size_t first = std::min(lo, hi), second = std::max(lo, hi);
+        out.append(QCPGraphData(t[first], y[first]));
+        if (second != first)
+            out.append(QCPGraphData(t[second], y[second]));
+    }
+    // The last sample ends the line where the run ends.
+    if (out.last().key != t[n - 1])
+        out.append(QCPGraphData(t[n - 1], y[n - 1]));
+    return out;
+}
+
+QVector<QCPGraphData> flagDecimated(const std::vector<double>& t, const std::vector<bool>& flags,
+                                    double valueWhenSet, int buckets) {
+    const std::size_t n = std::min(t.size(), flags.size());
+    const bool decimate = n > 2 * static_cast<std::size_t>(std::max(buckets, 1));
+    const std::size_t size = decimate ? bucketSize(n, buckets) : 1;
+    QVector<QCPGraphData> out;
+    out.reserve(static_cast<qsizetype>(decimate ? 2 * buckets + 2 : n));
+    for (std::size_t begin = 0; begin < n; begin += size) {
+        const std::size_t end = std::min(n, begin + size);
+        bool any = false;
+        for (std::size_t k = begin; k < end && !any; ++k)
+            any = flags[k];
+        const double v = any ? valueWhenSet : qQNaN();
+        out.append(QCPGraphData(t[begin], v));
+        if (end - 1 != begin)
+            out.append(QCPGraphData(t[end - 1], v));
+    }
+    return out;
+}
 
 void styleAxisRect(QCPAxisRect* rect) {
     for (QCPAxis* axis : rect->axes()) {

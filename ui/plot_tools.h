@@ -3,9 +3,13 @@
 
 #include <QColor>
 #include <QString>
+#include <QVector>
+
+#include <vector>
 
 class QCustomPlot;
 class QCPAxisRect;
+class QCPGraphData;
 
 namespace xyt::ui {
 
@@ -32,6 +36,20 @@ void resetView(QCustomPlot* plot);
 void savePlotDialog(QCustomPlot* plot, const QString& suggestedName);
 /// Saves to @p path (png or pdf by extension). Returns false and sets @p error on failure.
 bool savePlot(QCustomPlot* plot, const QString& path, QString* error = nullptr);
+/**
+ * Samples (t_k, y_k) for a line plot of at most about 2 @p buckets points: all of them when
+ * there are few enough, else, per bucket of consecutive samples, its smallest and largest value
+ * in time order. The drawn line then has the same extremes as the full one at any zoom that
+ * shows a bucket as a pixel or less, at a cost bounded by the bucket count (a 13-million-sample
+ * run is not copied into the plot).
+ */
+QVector<QCPGraphData> minMaxDecimated(const std::vector<double>& t, const std::vector<double>& y,
+                                      int buckets = 8192);
+/// A flag signal as a band height: @p valueWhenSet where set, NaN (a gap) elsewhere; decimated
+/// per bucket (first and last time of the bucket, set when any sample in it is set).
+QVector<QCPGraphData> flagDecimated(const std::vector<double>& t, const std::vector<bool>& flags,
+                                    double valueWhenSet, int buckets = 8192);
+
 /// Readable fonts and light grid for an axis rect.
 void styleAxisRect(QCPAxisRect* rect);
 

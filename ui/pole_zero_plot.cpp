@@ -13,7 +13,8 @@ const QList<QColor> kSetColors = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0
                                   QColor(0x94, 0x67, 0xbd), QColor(0xff, 0x7f, 0x0e)};
 }
 
-PoleZeroPlot::PoleZeroPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
+PoleZeroPlot::PoleZeroPlot(QWidget* parent)
+    : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("pole-zero");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Pole-zero map"), QFont(font().family(), 10, QFont::Bold));
@@ -64,8 +65,25 @@ void PoleZeroPlot::setSetVisible(const QString& name, bool visible) {
     replot(QCustomPlot::rpQueuedReplot);
 }
 
+void PoleZeroPlot::showNoResult(const QString& title, const QString& reason) {
+    title_->setText(title);
+    title_->setTextColor(colors::error);
+    for (const SetGraphs& g : graphs_) {
+        removePlottable(g.poles);
+        removePlottable(g.zeros);
+    }
+    graphs_.clear();
+    notice_.setSevere(true);
+    notice_.setLines({reason});
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
 void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString& title) {
     title_->setText(title);
+    title_->setTextColor(palette().color(QPalette::WindowText));
+    notice_.setSevere(false);
+    notice_.setLines({});
+    std::vector<std::complex<double>> all;
     QSet<QString> names;
     double extent = 1e-6;
     double ts = 0.0;
@@ -90,8 +108,10 @@ void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString&
         setComplexPoints(graphs_[name].zeros, set.zeros);
         for (const auto* list : {&set.poles, &set.zeros})
             for (const auto& p : *list)
-                if (std::isfinite(std::abs(p)))
+                if (std::isfinite(std::abs(p))) {
                     extent = std::max(extent, std::abs(p));
+                    all.push_back(p);
+                }
     }
     for (auto it = graphs_.begin(); it != graphs_.end();) {
         if (!names.contains(it.key())) {
@@ -103,11 +123,12 @@ void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString&
         }
     }
     grid_.show(ts, ts > 0 ? M_PI / ts : 1.2 * extent);
-    if (ts != lastTs_) {
+    // The default view on a change of plane; afterwards the user's zoom is kept until some pole
+    // or zero leaves it (a pole at -103 must not stay off-screen).
+    if (ts != lastTs_ || anyOutsideView(this, all)) {
         lastTs_ = ts;
         const double r = ts > 0 ? std::max(1.2, 1.1 * extent) : 1.15 * extent;
-        xAxis->setRange(-r, ts > 0 ? r : 0.25 * r);
-        yAxis->setRange(-0.6 * r, 0.6 * r);
+        setView(this, fittedBox({-r, ts > 0 ? r : 0.25 * r, -0.6 * r, 0.6 * r}, all));
     }
     replot(QCustomPlot::rpQueuedReplot);
 }

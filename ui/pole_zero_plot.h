@@ -3,6 +3,7 @@
 
 #include "core/pole_zero_map.h"
 #include "ui/plane_grid.h"
+#include "ui/plot_notice.h"
 
 #include <qcustomplot.h>
 
@@ -22,6 +23,10 @@ public:
     QCPGraph* polesGraph(const QString& name) const;
     QCPGraph* zerosGraph(const QString& name) const;
     void setSetVisible(const QString& name, bool visible);
+    /// Clears the map and says why there is nothing to show (invalid or failed design).
+    void showNoResult(const QString& title, const QString& reason);
+    bool hasResult() const { return !graphs_.isEmpty(); }
+    QString noticeText() const { return notice_.text(); }
 
 private:
     struct SetGraphs {
@@ -32,6 +37,7 @@ private:
     QSet<QString> hidden_;
     PlaneGrid grid_;
     QCPTextElement* title_;
+    PlotNotice notice_;
     double lastTs_ = -1.0;
 };
 

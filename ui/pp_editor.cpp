@@ -71,10 +71,10 @@ PpEditor::PpEditor(QWidget* parent) : QWidget(parent) {
 
 void PpEditor::setSettings(const PpAxisSettings& s) {
     current_ = s;
-    if (!a_->hasFocus())
-        a_->setText(listText(s.a));
-    if (!b_->hasFocus())
-        b_->setText(listText(s.b));
+    // Always the presenter's value, focused or not: after an undo, redo or load a field must not
+    // keep showing (and later re-apply) text the session no longer has.
+    a_->setText(listText(s.a));
+    b_->setText(listText(s.b));
     clearFieldError(a_, a_->property("normalToolTip").toString());
     clearFieldError(b_, b_->property("normalToolTip").toString());
     {

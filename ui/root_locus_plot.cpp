@@ -24,7 +24,8 @@ QCPGraph* scatterGraph(QCustomPlot* plot, QCPScatterStyle style, const QString& 
 QString formatGain(double k) { return QString::number(k, 'g', 5); }
 } // namespace
 
-RootLocusPlot::RootLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this) {
+RootLocusPlot::RootLocusPlot(QWidget* parent)
+    : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("root-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));
@@ -51,7 +52,7 @@ RootLocusPlot::RootLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this)
     readout_->setBrush(QColor(255, 255, 255, 220));
     readout_->setPadding(QMargins(4, 2, 4, 2));
     readout_->setFont(QFont(font().family(), 8));
-    readout_->setText(tr("hover a branch: K, ζ, ωn; click: use that gain"));
+    readout_->setText(readoutHint());
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
     legend->setBrush(QColor(255, 255, 255, 210));
@@ -62,6 +63,8 @@ RootLocusPlot::RootLocusPlot(QWidget* parent) : QCustomPlot(parent), grid_(this)
     connect(this, &QCustomPlot::mouseRelease, this, &RootLocusPlot::onMouseRelease);
 }
 
+QString RootLocusPlot::readoutHint() { return tr("hover a branch: K, ζ, ωn; click: use that gain"); }
+
 void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::complex<double>>& currentPoles,
                               const QString& title) {
     const bool newPlane = !hasLocus_ || locus.tsSeconds != lastTs_;
@@ -69,6 +72,7 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     hasLocus_ = true;
     lastTs_ = locus.tsSeconds;
     title_->setText(title);
+    title_->setTextColor(palette().color(QPalette::WindowText));
     std::vector<std::vector<std::complex<double>>> branches;
     branches.reserve(locus.branches.size());
     for (const auto& b : locus.branches)
@@ -79,15 +83,54 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     setComplexPoints(poles_, locus.poles);
     setComplexPoints(zeros_, locus.zeros);
     setComplexPoints(current_, currentPoles);
-    hover_->data()->clear();
+    // A readout of K belongs to the locus it was read on: any new locus (design, axis or plane
+    // changed) starts without one.
+    clearHover();
+    QStringList warnings;
+    for (const std::string& w : locus.warnings)
+        warnings << QString::fromStdString(w);
+    if (locus.status != RootLocusStatus::Complete && warnings.isEmpty())
+        warnings << tr("the locus is incomplete");
+    notice_.setSevere(false);
+    notice_.setLines(warnings);
     const LocusView& v = locus.view;
     grid_.show(locus.tsSeconds, std::max({std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin),
                                           std::abs(v.imMax), 1e-6}));
-    if (newPlane) {
-        xAxis->setRange(v.reMin, v.reMax);
-        yAxis->setRange(v.imMin, v.imMax);
-    }
+    // Keep the user's zoom while the poles and zeros stay in view; re-fit when any of them (or
+    // the design's closed-loop poles) moves out of it, and on a change of plane.
+    std::vector<std::complex<double>> markers = locus.poles;
+    markers.insert(markers.end(), locus.zeros.begin(), locus.zeros.end());
+    markers.insert(markers.end(), currentPoles.begin(), currentPoles.end());
+    if (newPlane || anyOutsideView(this, markers))
+        setView(this, fittedBox({v.reMin, v.reMax, v.imMin, v.imMax}, markers));
     replot(QCustomPlot::rpQueuedReplot);
+}
+
+void RootLocusPlot::showNoResult(const QString& title, const QString& reason) {
+    hasLocus_ = false;
+    locus_ = RootLocus{};
+    title_->setText(title);
+    title_->setTextColor(colors::error);
+    showBranches(this, branches_, {}, [](std::size_t) { return QPen(); });
+    for (QCPGraph* g : {poles_, zeros_, current_})
+        g->data()->clear();
+    clearHover();
+    notice_.setSevere(true);
+    notice_.setLines({reason});
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void RootLocusPlot::clearHover() {
+    hover_->data()->clear();
+    readout_->setText(readoutHint());
+}
+
+void RootLocusPlot::leaveEvent(QEvent* event) {
+    QCustomPlot::leaveEvent(event);
+    if (!hover_->data()->isEmpty() || readout_->text() != readoutHint()) {
+        clearHover();
+        replot(QCustomPlot::rpQueuedReplot);
+    }
 }
 
 std::optional<LocusPick> RootLocusPlot::pickAtPixel(const QPointF& pixel, double maxPixels) const {
@@ -110,8 +153,8 @@ void RootLocusPlot::onMouseMove(QMouseEvent* event) {
         return; // dragging pans the view
     const auto pick = pickAtPixel(event->position());
     if (!pick) {
-        if (!hover_->data()->isEmpty()) {
-            hover_->data()->clear();
+        if (!hover_->data()->isEmpty() || readout_->text() != readoutHint()) {
+            clearHover();
             replot(QCustomPlot::rpQueuedReplot);
         }
         return;

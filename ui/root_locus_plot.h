@@ -3,6 +3,7 @@
 
 #include "core/root_locus.h"
 #include "ui/plane_grid.h"
+#include "ui/plot_notice.h"
 
 #include <qcustomplot.h>
 
@@ -23,6 +24,14 @@ public:
 
     void showLocus(const RootLocus& locus, const std::vector<std::complex<double>>& currentPoles,
                    const QString& title);
+    /// Clears the plot and says why there is no locus (invalid or failed design): never the
+    /// locus of an earlier design.
+    void showNoResult(const QString& title, const QString& reason);
+    bool hasResult() const { return hasLocus_; }
+    /// The warnings shown with the locus (the core's, e.g. a truncated locus).
+    QString noticeText() const { return notice_.text(); }
+    /// The hint shown in the readout while no branch is hovered.
+    static QString readoutHint();
     /// The locus point nearest to a pixel, when within @p maxPixels of it.
     std::optional<LocusPick> pickAtPixel(const QPointF& pixel, double maxPixels = 12.0) const;
     const RootLocus& locus() const { return locus_; }
@@ -35,7 +44,11 @@ signals:
     /// The user clicked on a branch: the loop gain K at that point (K = 1 is the current design).
     void gainPicked(double gain);
 
+protected:
+    void leaveEvent(QEvent* event) override;
+
 private:
+    void clearHover();
     void onMouseMove(QMouseEvent* event);
     void onMousePress(QMouseEvent* event);
     void onMouseRelease(QMouseEvent* event);
@@ -49,6 +62,7 @@ private:
     QCPGraph* hover_;
     QCPItemText* readout_;
     QCPTextElement* title_;
+    PlotNotice notice_;
     QPoint pressPos_;
     bool hasLocus_ = false;
     double lastTs_ = -1.0;

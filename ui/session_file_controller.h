@@ -29,6 +29,8 @@ public:
     bool maybeSave();
 
     bool openFile(const QString& path);
+    /// Makes @p path the current file without reading it (recovered work that belongs to it).
+    void adoptFile(const QString& path) { setCurrentFile(path); }
     bool saveTo(const QString& path);
     /// Writes an export (json, c, m, csv) to @p path; false with a message box on failure.
     bool exportTo(const QString& format, const QString& path);

@@ -62,10 +62,11 @@ SnapshotCompareDialog::SnapshotCompareDialog(const Session& session, QWidget* pa
         box->addItem(tr("Current design"));
         for (const DesignSnapshot& s : session.snapshots)
             box->addItem(QString::fromStdString(s.name));
-        connect(box, &QComboBox::currentIndexChanged, this, &SnapshotCompareDialog::rebuild);
     }
+    // Compare with the newest snapshot. Set before the signals are connected: rebuild() needs
+    // the table, which does not exist yet.
     if (right_->count() > 1)
-        right_->setCurrentIndex(1);
+        right_->setCurrentIndex(right_->count() - 1);
     pick->addWidget(new QLabel(tr("Compare"), this));
     pick->addWidget(left_, 1);
     pick->addWidget(new QLabel(tr("with"), this));
@@ -75,6 +76,8 @@ SnapshotCompareDialog::SnapshotCompareDialog(const Session& session, QWidget* pa
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     layout->addWidget(table_);
+    for (QComboBox* box : {left_, right_})
+        connect(box, &QComboBox::currentIndexChanged, this, &SnapshotCompareDialog::rebuild);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);

@@ -25,9 +25,9 @@ private:
     Session designAt(int index) const;
 
     Session session_;
-    QComboBox* left_;
-    QComboBox* right_;
-    QTableWidget* table_;
+    QComboBox* left_ = nullptr;
+    QComboBox* right_ = nullptr;
+    QTableWidget* table_ = nullptr;
 };
 
 /// The rows of the comparison for one design: (label, value) pairs.

@@ -6,8 +6,6 @@
 namespace xyt::ui {
 
 namespace {
-QVector<double> toVector(const std::vector<double>& v) { return {v.begin(), v.end()}; }
-
 QCPGraph* makeGraph(QCPAxisRect* rect, const QColor& color, const QString& name, qreal width = 1.5) {
     auto* g = new QCPGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
     g->setPen(QPen(color, width));
@@ -61,6 +59,10 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : QCustomPlot(parent) {
     clipUpper_->setAdaptiveSampling(false);
     clipLower_->setAdaptiveSampling(false);
     snapshotControl_ = makeGraph(controlRect_, colors::snapshot, tr("snapshot u"), 1.2);
+    snapshotError_ = makeGraph(errorRect_, colors::snapshot, tr("snapshot e"), 1.2);
+    for (QCPGraph* g : {snapshotOutput_, snapshotControl_, snapshotError_})
+        g->setPen(QPen(colors::snapshot, 1.4, Qt::DashLine));
+    error_->setLayer(QStringLiteral("main")); // drawn over the snapshot's error
     control_ = makeGraph(controlRect_, colors::control, tr("control u"));
     upperLimit_ = new QCPItemStraightLine(this);
     lowerLimit_ = new QCPItemStraightLine(this);
@@ -72,19 +74,35 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : QCustomPlot(parent) {
     }
     snapshotOutput_->setVisible(false);
     snapshotControl_->setVisible(false);
+    snapshotError_->setVisible(false);
 
     auto* legend = new QCPLegend;
+    legend_ = legend;
     positionRect_->insetLayout()->addElement(legend, Qt::AlignBottom | Qt::AlignRight);
     legend->setLayer("legend");
     legend->setFont(QFont(font().family(), 8));
     legend->setBrush(QColor(255, 255, 255, 210));
     legend->addItem(new QCPPlottableLegendItem(legend, reference_));
     legend->addItem(new QCPPlottableLegendItem(legend, output_));
+    notice_ = std::make_unique<PlotNotice>(this, positionRect_, Qt::AlignTop | Qt::AlignLeft);
+    controlNotice_ = std::make_unique<PlotNotice>(this, controlRect_, Qt::AlignTop | Qt::AlignLeft);
     setupInteractivePlot(this);
 }
 
 void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisTitle,
-                                double umaxVolts) {
+                                double umaxVolts, const QStringList& extraNotices) {
+    QStringList notices = extraNotices;
+    for (const std::string& w : axis.warnings)
+        notices << QString::fromStdString(w);
+    notice_->setSevere(!axis.ok || axis.metrics.diverged);
+    notice_->setLines(notices);
+    // Paper 001's loop has no actuator limit: the command is shown unclipped, and says so where
+    // the user reads it.
+    controlNotice_->setLines(axis.ok && axis.pp && axis.metrics.saturated
+                                 ? QStringList{tr("linear loop: |u| is not clipped at ±%1 V here "
+                                                  "(the shaded time would saturate)")
+                                                   .arg(umaxVolts)}
+                                 : QStringList{});
     if (!axis.ok) {
         title_->setText(tr("%1: not simulated (%2: %3)")
                             .arg(axisTitle, QString::fromStdString(axis.errorField),
@@ -101,21 +119,15 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
         title += tr("  (UNSTABLE closed loop)");
     title_->setText(title);
     title_->setTextColor(axis.step.stable ? palette().color(QPalette::WindowText) : colors::error);
-    const QVector<double> t = toVector(run.t);
-    reference_->setData(t, toVector(run.r), true);
-    output_->setData(t, toVector(run.y), true);
-    error_->setData(t, toVector(run.e), true);
-    control_->setData(t, toVector(run.u), true);
+    // At most a few thousand points per line whatever the run's length (minMaxDecimated).
+    reference_->data()->set(minMaxDecimated(run.t, run.r), true);
+    output_->data()->set(minMaxDecimated(run.t, run.y), true);
+    error_->data()->set(minMaxDecimated(run.t, run.e), true);
+    control_->data()->set(minMaxDecimated(run.t, run.u), true);
     // Shade the clipped samples: a band from -1.1 umax to 1.1 umax, NaN (a gap) elsewhere.
-    QVector<double> up(t.size()), low(t.size());
     const double band = std::isfinite(umaxVolts) ? 1.1 * umaxVolts : 0.0;
-    for (qsizetype k = 0; k < t.size(); ++k) {
-        const bool clipped = run.clipped[static_cast<std::size_t>(k)];
-        up[k] = clipped ? band : qQNaN();
-        low[k] = clipped ? -band : qQNaN();
-    }
-    clipUpper_->setData(t, up, true);
-    clipLower_->setData(t, low, true);
+    clipUpper_->data()->set(flagDecimated(run.t, run.clipped, band), true);
+    clipLower_->data()->set(flagDecimated(run.t, run.clipped, -band), true);
     const bool limited = std::isfinite(umaxVolts);
     upperLimit_->setVisible(limited);
     lowerLimit_->setVisible(limited);
@@ -144,13 +156,20 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
 
 void TimeResponsePlot::showSnapshot(const SimulationResult& run, const QString& name) {
     const bool show = !run.t.empty();
-    snapshotOutput_->setVisible(show);
-    snapshotControl_->setVisible(show);
+    for (QCPGraph* g : {snapshotOutput_, snapshotError_, snapshotControl_}) {
+        g->setVisible(show);
+        if (!show)
+            g->data()->clear();
+    }
     if (show) {
-        const QVector<double> t = toVector(run.t);
-        snapshotOutput_->setData(t, toVector(run.y), true);
-        snapshotControl_->setData(t, toVector(run.u), true);
-        snapshotOutput_->setName(tr("snapshot: %1").arg(name));
+        snapshotOutput_->data()->set(minMaxDecimated(run.t, run.y), true);
+        snapshotError_->data()->set(minMaxDecimated(run.t, run.e), true);
+        snapshotControl_->data()->set(minMaxDecimated(run.t, run.u), true);
+        snapshotOutput_->setName(tr("snapshot «%1» (y, e, u)").arg(name));
+        if (!legend_->hasItemWithPlottable(snapshotOutput_))
+            legend_->addItem(new QCPPlottableLegendItem(legend_, snapshotOutput_));
+    } else if (legend_->hasItemWithPlottable(snapshotOutput_)) {
+        legend_->removeItem(legend_->itemWithPlottable(snapshotOutput_));
     }
     replot(QCustomPlot::rpQueuedReplot);
 }

@@ -3,7 +3,11 @@
 
 #include "core/session_evaluation.h"
 
+#include "ui/plot_notice.h"
+
 #include <qcustomplot.h>
+
+#include <memory>
 
 namespace xyt::ui {
 
@@ -17,15 +21,25 @@ class TimeResponsePlot : public QCustomPlot {
 public:
     explicit TimeResponsePlot(QWidget* parent = nullptr);
 
-    /// Shows @p run (which may be invalid: the plots are cleared and the reason shown).
-    void showAxis(const AxisEvaluation& axis, const QString& axisTitle, double umaxVolts);
-    /// A muted overlay of a stored design's output and control (empty run hides it).
+    /// Shows @p run (which may be invalid: the plots are cleared and the reason shown), with the
+    /// axis' warnings and @p extraNotices (what the live view limited) in a notice box.
+    void showAxis(const AxisEvaluation& axis, const QString& axisTitle, double umaxVolts,
+                  const QStringList& extraNotices = {});
+    /// A muted overlay of a stored design's output, error and control in all three panels, with
+    /// a legend entry (an empty run hides it).
     void showSnapshot(const SimulationResult& run, const QString& name);
 
     QCPGraph* referenceGraph() const { return reference_; }
     QCPGraph* outputGraph() const { return output_; }
     QCPGraph* errorGraph() const { return error_; }
     QCPGraph* controlGraph() const { return control_; }
+    QCPGraph* snapshotOutputGraph() const { return snapshotOutput_; }
+    QCPGraph* snapshotErrorGraph() const { return snapshotError_; }
+    QCPGraph* snapshotControlGraph() const { return snapshotControl_; }
+    QCPLegend* positionLegend() const { return legend_; }
+    /// The warnings shown over the position panel, and the note in the control panel.
+    QString noticeText() const { return notice_->text(); }
+    QString controlNoticeText() const { return controlNotice_->text(); }
 
 private:
     QCPAxisRect* positionRect_;
@@ -37,6 +51,10 @@ private:
     QCPGraph* error_;
     QCPGraph* control_;
     QCPGraph* snapshotControl_;
+    QCPGraph* snapshotError_;
+    QCPLegend* legend_;
+    std::unique_ptr<PlotNotice> notice_;
+    std::unique_ptr<PlotNotice> controlNotice_;
     QCPGraph* clipUpper_;
     QCPGraph* clipLower_;
     QCPItemStraightLine* upperLimit_;

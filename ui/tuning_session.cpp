@@ -3,6 +3,7 @@
 
 #include "core/errors.h"
 
+#include <QLocale>
 #include <QUndoCommand>
 
 #include <cmath>
@@ -24,6 +25,8 @@ public:
         if (other->id() != id() || mergeKey_ < 0)
             return false;
         after_ = static_cast<const SessionCommand*>(other)->after_;
+        // The entry names where the drag ended, not its first step.
+        setText(other->text());
         return true;
     }
 
@@ -34,9 +37,29 @@ private:
     int mergeKey_;
 };
 
+Session TuningSession::liveSessionOf(const Session& s, QString& notice) {
+    notice.clear();
+    Session live = s;
+    const double duration = s.trajectory.effectiveDurationSeconds();
+    const double dt = s.trajectory.dtSeconds;
+    if (!(duration > 0.0) || !(dt > 0.0) || !std::isfinite(duration / dt))
+        return live; // the evaluation names the bad field
+    const double samples = duration / dt + 1.0;
+    if (samples <= TuningSession::kLiveSampleLimit)
+        return live;
+    live.trajectory.dtSeconds = duration / (TuningSession::kLiveSampleLimit - 1.0);
+    notice = QObject::tr("live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live "
+                         "limit of %4 (the exports and the report use dt = %2 s)")
+                 .arg(QString::number(live.trajectory.dtSeconds, 'g', 3), QString::number(dt, 'g', 6),
+                      QLocale().toString(samples, 'f', 0),
+                      QLocale().toString(TuningSession::kLiveSampleLimit, 'f', 0));
+    return live;
+}
+
 TuningSession::TuningSession(QObject* parent) : QObject(parent) {
     session_ = Session::paperDefault();
-    evaluation_ = evaluateSession(session_);
+    live_ = liveSessionOf(session_, liveNotice_);
+    evaluation_ = evaluateSession(live_);
 }
 
 const AxisEvaluation& TuningSession::axisEvaluation(int axis) const {
@@ -45,13 +68,16 @@ const AxisEvaluation& TuningSession::axisEvaluation(int axis) const {
 
 void TuningSession::assign(const Session& next) {
     session_ = next;
-    evaluation_ = evaluateSession(session_);
+    live_ = liveSessionOf(session_, liveNotice_);
+    evaluation_ = evaluateSession(live_);
     locus_ = {};
     parameterLocus_ = {};
     emit designChanged();
 }
 
 void TuningSession::apply(const Session& next, const QString& description, int mergeKey) {
+    if (next == session_)
+        return; // no undo step (nor a modified flag) for a change that changes nothing
     undo_.push(new SessionCommand(this, session_, next, description, mergeKey));
 }
 
@@ -147,8 +173,9 @@ const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter p
         try {
             cached = gtParameterLocus(gt.plant, parameter, sweep,
                                       parameter == GtSweptParameter::OmegaN ? gt.kp : gt.omegaNRadPerSec);
-        } catch (const InvalidInput&) {
+        } catch (const InvalidInput& e) {
             cached = ParameterLocus{};
+            cached->warnings.push_back(e.what());
         }
     }
     return *cached;

@@ -34,6 +34,21 @@ public:
     QUndoStack* undoStack() { return &undo_; }
 
     int currentAxis() const { return currentAxis_; }
+
+    /**
+     * Samples per axis that one live refresh may simulate. A run that needs more (dt = 1e-5 s on
+     * a 130 s move is 13 million samples, 0.6 GB and over a second per axis) is evaluated at the
+     * coarser dt = duration / kLiveSampleLimit and the views say so (liveNotice); the exports and
+     * the report still use the session's dt. One million samples take about 50 ms per axis.
+     */
+    static constexpr double kLiveSampleLimit = 1'000'000;
+    /// The session as the live views evaluate it (its dt raised to the live limit when needed).
+    const Session& liveSession() const { return live_; }
+    /// The live version of any session @p s (a snapshot's too): its dt raised so that a run
+    /// needs at most kLiveSampleLimit samples; @p notice says what was changed ("" if nothing).
+    static Session liveSessionOf(const Session& s, QString& notice);
+    /// What the live evaluation changed, for the views ("" when it is the session itself).
+    const QString& liveNotice() const { return liveNotice_; }
     /// True when the session differs from the last saved or loaded state.
     bool isModified() const { return !undo_.isClean(); }
 
@@ -91,6 +106,8 @@ private:
     void assign(const Session& next);
 
     Session session_;
+    Session live_;
+    QString liveNotice_;
     SessionEvaluation evaluation_;
     mutable std::array<std::optional<RootLocus>, 2> locus_;
     mutable std::array<std::optional<ParameterLocus>, 4> parameterLocus_;

@@ -86,7 +86,10 @@ void TstDesignSpaceView::cleanup() {
 void TstDesignSpaceView::setSmallGrid(int n, double overshootPct) {
     view_->wnCountBox()->setValue(n);
     view_->kpCountBox()->setValue(n);
+    // The box edits the session's one specification when its editing finishes.
     view_->overshootBox()->setValue(overshootPct);
+    emit view_->overshootBox()->editingFinished();
+    QCOMPARE(session_->session().spec.maxOvershootPct, overshootPct);
 }
 
 void TstDesignSpaceView::runAndWait() {

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <Qt>
+
+class QCustomPlot;
+class QCPAxisRect;
+class QCPItemText;
+
+namespace xyt::ui {
+
+/**
+ * A notice box inside a plot's axis rect: the core's warnings about what the plot shows (locus
+ * truncated, run diverged, loop simulated without saturation, view limited, no design), on a
+ * pale amber background so it reads as a remark about the data, not as data. Hidden when empty.
+ */
+class PlotNotice {
+public:
+    /// A box in @p rect, anchored at @p corner (e.g. Qt::AlignTop | Qt::AlignRight).
+    PlotNotice(QCustomPlot* plot, QCPAxisRect* rect, Qt::Alignment corner);
+    /// Shows the lines (one per warning); an empty list hides the box.
+    void setLines(const QStringList& lines);
+    /// A strong notice (no result at all): red text instead of the amber box's dark text.
+    void setSevere(bool severe);
+    QString text() const;
+    bool isShown() const;
+
+private:
+    QCPItemText* item_;
+};
+
+} // namespace xyt::ui
