@@ -295,6 +295,8 @@ void MainWindow::buildMenus() {
         dialog.exec();
     });
     overlayMenu_ = design->addMenu(tr("&Overlay snapshot"));
+    // Filled when shown: never rebuilt (its actions deleted) while one of them runs.
+    connect(overlayMenu_, &QMenu::aboutToShow, this, &MainWindow::rebuildOverlayMenu);
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Reset plot views"), QKeySequence(tr("Ctrl+0")), this, [this] {
         for (QCustomPlot* plot : findChildren<QCustomPlot*>())
@@ -412,7 +414,9 @@ void MainWindow::refresh() {
         else
             state += tr("%1: stable  ").arg(id);
     }
-    rebuildOverlayMenu();
+    if (overlay_ >= static_cast<int>(s.snapshots.size()))
+        overlay_ = -1; // its snapshot was removed (undo, load)
+    overlayMenu_->setEnabled(!s.snapshots.empty());
     if (overlay_ >= 0) {
         const auto& snap = s.snapshots.at(static_cast<std::size_t>(overlay_));
         QString ignored;

@@ -56,8 +56,9 @@ RecoveryStore::RecoveryStore(TuningSession* session, const QString& directory, Q
 RecoveryStore::~RecoveryStore() = default; // the copy stays: only discard() removes it
 
 void RecoveryStore::onChanged() {
-    if (session_->isModified())
-        timer_.start();
+    // designChanged comes before the undo stack updates its clean state, so whether there is
+    // unsaved work is decided when the timer fires (writeNow), not here.
+    timer_.start();
 }
 
 bool RecoveryStore::writeNow(QString* error) {
@@ -90,11 +91,9 @@ void RecoveryStore::discard() {
 std::vector<RecoveredWork> RecoveryStore::findOrphans(const QString& directory) {
     std::vector<RecoveredWork> out;
     const QDir dir(directory);
-    const QString ownPid = QString::number(QCoreApplication::applicationPid());
     for (const QFileInfo& info : dir.entryInfoList({QStringLiteral("session-*.json")}, QDir::Files)) {
-        if (info.completeBaseName() == QStringLiteral("session-") + ownPid)
-            continue;
-        // A copy whose lock is held by a running instance is that instance's live work.
+        // A copy whose lock is held by a running instance (this one included) is that
+        // instance's live work.
         QLockFile lock(lockPathOf(info.absoluteFilePath()));
         lock.setStaleLockTime(0);
         if (!lock.tryLock(0))

@@ -27,6 +27,8 @@ void SessionFileController::populateMenu(QMenu* file) {
     file->addAction(tr("&New"), QKeySequence::New, this, &SessionFileController::newSession);
     file->addAction(tr("&Open..."), QKeySequence::Open, this, &SessionFileController::open);
     recentMenu_ = file->addMenu(tr("Open &Recent"));
+    // Filled when shown: never rebuilt (its actions deleted) while one of them runs.
+    connect(recentMenu_, &QMenu::aboutToShow, this, &SessionFileController::rebuildRecentMenu);
     rebuildRecentMenu();
     file->addAction(tr("&Save"), QKeySequence::Save, this, &SessionFileController::save);
     file->addAction(tr("Save &As..."), QKeySequence::SaveAs, this, &SessionFileController::saveAs);
@@ -165,7 +167,8 @@ void SessionFileController::rememberRecent(const QString& path) {
     while (list.size() > kMaxRecent)
         list.removeLast();
     QSettings().setValue("session/recentFiles", list);
-    rebuildRecentMenu();
+    if (recentMenu_)
+        recentMenu_->setEnabled(!recentFiles().isEmpty());
 }
 
 void SessionFileController::rebuildRecentMenu() {

@@ -134,15 +134,25 @@ void TrajectoryEditor::emitIfValid() {
         return;
     }
     clearFieldError(fields_["tf"], QString());
-    try {
-        const double samples = t.effectiveDurationSeconds() / t.dtSeconds;
-        if (samples > static_cast<double>(kMaxSamples))
-            throw InvalidInput("duration", "too many samples for this dt");
-    } catch (const InvalidInput& e) {
-        markFieldError(fields_["duration"], QString::fromStdString(e.what()));
+    // A run that cannot fit in memory is refused at the field the user just edited (dt unless it
+    // was a time field), naming the count, never simulated.
+    auto* edited = qobject_cast<NumberField*>(sender());
+    NumberField* blamed = edited && QStringList{"duration", "tf", "t0", "dt"}.contains(edited->accessibleName())
+                              ? edited
+                              : fields_["dt"];
+    const double samples = t.effectiveDurationSeconds() / t.dtSeconds + 1.0;
+    if (!(samples <= static_cast<double>(kMaxSamples))) {
+        markFieldError(blamed, tr("%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory")
+                                   .arg(blamed->accessibleName())
+                                   .arg(t.effectiveDurationSeconds(), 0, 'g', 6)
+                                   .arg(t.dtSeconds, 0, 'g', 6)
+                                   .arg(samples, 0, 'g', 3)
+                                   .arg(static_cast<double>(kMaxSamples), 0, 'g', 3));
         return;
     }
-    clearFieldError(fields_["duration"], fields_["duration"]->property("normalToolTip").toString());
+    for (const char* name : {"duration", "tf", "t0", "dt"})
+        if (!fields_[name]->hasError())
+            clearFieldError(fields_[name], fields_[name]->property("normalToolTip").toString());
     if (t == current_)
         return;
     current_ = t;

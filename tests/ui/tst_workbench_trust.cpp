@@ -1,0 +1,465 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Issue 15: the workbench never crashes, never loses work and never shows a stale or false
+// result. Each test drives the real widgets and names the defect it pins down.
+#include "core/root_locus.h"
+#include "ui/design_space_view.h"
+#include "ui/main_window.h"
+#include "ui/metrics_panel.h"
+#include "ui/number_field.h"
+#include "ui/parameter_locus_plot.h"
+#include "ui/parameter_slider.h"
+#include "ui/plant_editor.h"
+#include "ui/pole_zero_plot.h"
+#include "ui/pp_editor.h"
+#include "ui/recovery_store.h"
+#include "ui/root_locus_plot.h"
+#include "ui/session_file.h"
+#include "ui/session_file_controller.h"
+#include "ui/time_response_plot.h"
+#include "ui/trajectory_editor.h"
+#include "ui/tuning_session.h"
+#include "tests/support/gui_checks.h"
+#include "tests/support/tolerance.h"
+
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLineEdit>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+class TstWorkbenchTrust : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    // Loss of work
+    void recoveryCopyFollowsUnsavedWork();
+    void recoveryIsOfferedAfterACrash();
+    void runningInstanceCopyIsNotOffered();
+    // Stale plots
+    void parameterLocusOfPolePlacementAxisIsNotTheOldSweep();
+    void invalidAxisShowsNoOldLocus();
+    void hoverReadoutEndsWithTheHover();
+    void viewRefitsWhenAPoleLeavesIt();
+    void userZoomIsKeptWhileThePolesStayInView();
+    void snapshotOverlayInEveryPanelWithLegend();
+    void plotsEqualTheCoreAfterEveryKindOfChange();
+    // Silent failures
+    void truncatedLocusIsSaidAtThePlot();
+    void unsaturatedDiscreteLoopIsSaid();
+    void divergedRunIsNotApplicableAndFails();
+    // One specification
+    void oneSpecificationForMetricsAndDesignSpace();
+    // Undo and fields
+    void focusedFieldFollowsUndo();
+    void ctrlZInAFieldUndoesTheSession();
+    void dragUndoEntryNamesTheFinalValue();
+    // Freezes
+    void liveRefreshIsBounded();
+    void runThatCannotFitIsRefusedAtTheField();
+
+private:
+    QString rowText(int row, int column) const;
+    void setPpB(int axis, const QString& text);
+
+    std::unique_ptr<TuningSession> session_;
+    std::unique_ptr<MainWindow> window_;
+};
+
+void TstWorkbenchTrust::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("xytune-tests");
+}
+
+void TstWorkbenchTrust::init() {
+    session_ = std::make_unique<TuningSession>();
+    window_ = std::make_unique<MainWindow>(session_.get());
+    window_->resize(1366, 768);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+}
+
+void TstWorkbenchTrust::cleanup() {
+    window_->recovery()->discard();
+    window_.reset();
+    session_.reset();
+}
+
+QString TstWorkbenchTrust::rowText(int row, int column) const {
+    return window_->metricsPanel()->table()->item(row, column)->text();
+}
+
+void TstWorkbenchTrust::setPpB(int axis, const QString& text) {
+    session_->setCurrentAxis(axis);
+    if (session_->session().axes[static_cast<std::size_t>(axis)].method != DesignMethod::PolePlacementZpetc)
+        session_->setMethod(axis, DesignMethod::PolePlacementZpetc);
+    QLineEdit* b = window_->ppEditor()->bField();
+    test::typeInto(b, text);
+}
+
+// ---- Loss of work ---------------------------------------------------------------------------
+
+void TstWorkbenchTrust::recoveryCopyFollowsUnsavedWork() {
+    QTemporaryDir dir;
+    RecoveryStore store(session_.get(), dir.path());
+    store.setDelayMs(10);
+    QVERIFY(!QFile::exists(store.copyPath()));
+    window_->kpSlider()->spinBox()->setValue(45.0);
+    // Written a few milliseconds after the change, atomically, as a session document.
+    QTRY_VERIFY2(QFile::exists(store.copyPath()), qPrintable(store.copyPath() + ": " + store.lastError()));
+    QFile file(store.copyPath());
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+    const SessionLoadResult copy = sessionFromJson(root.value("session").toObject());
+    QVERIFY2(copy.ok, qPrintable(copy.message()));
+    QVERIFY(copy.session == session_->session());
+    // Undoing back to the saved state leaves nothing to recover.
+    session_->undoStack()->undo();
+    QVERIFY(!session_->isModified());
+    QVERIFY(!QFile::exists(store.copyPath()));
+    // A clean save removes it too.
+    session_->setKp(0, 50.0);
+    QTRY_VERIFY(QFile::exists(store.copyPath()));
+    session_->markSaved();
+    QVERIFY(!QFile::exists(store.copyPath()));
+}
+
+void TstWorkbenchTrust::recoveryIsOfferedAfterACrash() {
+    QTemporaryDir dir;
+    Session lost;
+    {
+        // An instance that dies: its store goes without discard() (as in a crash or a kill, whose
+        // lock file QLockFile then finds stale).
+        TuningSession crashed;
+        RecoveryStore store(&crashed, dir.path());
+        store.setSessionFile("/home/user/table.json");
+        crashed.setKp(0, 61.0);
+        crashed.setOmegaN(1, 1.5);
+        QVERIFY(store.writeNow());
+        lost = crashed.session();
+    }
+    const auto orphans = RecoveryStore::findOrphans(dir.path());
+    QCOMPARE(orphans.size(), std::size_t(1));
+    QVERIFY(orphans[0].session == lost);
+    QCOMPARE(orphans[0].sessionFile, QStringLiteral("/home/user/table.json"));
+    // The next start offers it; Restore brings it back as unsaved work of that file.
+    test::DialogAnswerer answer(test::DialogAnswerer::Mode::Accept);
+    QVERIFY(offerRecovery(window_.get(), session_.get(), window_->files(), dir.path()));
+    QVERIFY(session_->session() == lost);
+    QVERIFY(session_->isModified());
+    QCOMPARE(window_->files()->currentFile(), QStringLiteral("/home/user/table.json"));
+    QCOMPARE(window_->kpSlider()->value(), 61.0); // the widgets show it
+    QVERIFY(RecoveryStore::findOrphans(dir.path()).empty()); // offered once
+}
+
+void TstWorkbenchTrust::runningInstanceCopyIsNotOffered() {
+    QTemporaryDir dir;
+    TuningSession other;
+    RecoveryStore running(&other, dir.path());
+    other.setKp(0, 70.0);
+    QVERIFY(running.writeNow());
+    // Its lock is held by a live process (this one): the copy is that instance's live work.
+    QLockFile probe(running.copyPath().chopped(5) + ".lock");
+    QVERIFY(!probe.tryLock(0));
+    running.discard();
+}
+
+// ---- Stale plots ----------------------------------------------------------------------------
+
+void TstWorkbenchTrust::parameterLocusOfPolePlacementAxisIsNotTheOldSweep() {
+    ParameterLocusPlot* plot = window_->parameterLocusPlot();
+    window_->upperTabs()->setCurrentWidget(plot);
+    QVERIFY(plot->hasResult());
+    QVERIFY(plot->branchCount() > 0);
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    // Before the fix the GT kp sweep stayed on screen, in the s-plane.
+    QVERIFY(!plot->hasResult());
+    QCOMPARE(plot->branchCount(), 0);
+    QVERIFY(plot->currentGraph()->data()->isEmpty());
+    QVERIFY2(plot->noticeText().contains("pole placement"), qPrintable(plot->noticeText()));
+    session_->undoStack()->undo();
+    QVERIFY(plot->hasResult());
+    QVERIFY(plot->branchCount() > 0);
+}
+
+void TstWorkbenchTrust::invalidAxisShowsNoOldLocus() {
+    RootLocusPlot* rl = window_->rootLocusPlot();
+    setPpB(0, "0 0 0");
+    QVERIFY(!session_->axisEvaluation(0).ok);
+    window_->upperTabs()->setCurrentWidget(rl);
+    QVERIFY(!rl->hasResult());
+    QCOMPARE(rl->branchCurveCount(), 0);
+    QVERIFY(rl->currentPolesGraph()->data()->isEmpty());
+    QVERIFY2(rl->noticeText().contains("No design"), qPrintable(rl->noticeText()));
+    window_->upperTabs()->setCurrentWidget(window_->poleZeroPlot());
+    QVERIFY(!window_->poleZeroPlot()->hasResult());
+    QVERIFY(window_->poleZeroPlot()->noticeText().contains("No design"));
+    QVERIFY(window_->timePlot()->outputGraph()->data()->isEmpty());
+}
+
+void TstWorkbenchTrust::hoverReadoutEndsWithTheHover() {
+    RootLocusPlot* plot = window_->rootLocusPlot();
+    window_->upperTabs()->setCurrentWidget(plot);
+    plot->replot();
+    // Hover a visible point of a complex branch (its pixel from the plot's own axes).
+    const RootLocus& locus = plot->locus();
+    QPoint pixel;
+    bool found = false;
+    for (const auto& b : locus.branches)
+        for (const auto& r : b.roots)
+            if (!found && std::abs(r.imag()) > 5 && plot->xAxis->range().contains(r.real()) &&
+                plot->yAxis->range().contains(r.imag())) {
+                pixel = QPoint(qRound(plot->xAxis->coordToPixel(r.real())), qRound(plot->yAxis->coordToPixel(r.imag())));
+                found = plot->pickAtPixel(pixel).has_value();
+            }
+    QVERIFY(found);
+    QTest::mouseMove(plot, pixel);
+    QTRY_VERIFY(plot->readoutText().startsWith("K = "));
+    // Leaving the plot ends the readout (before the fix "K = …" stayed).
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(plot, &leave);
+    QCOMPARE(plot->readoutText(), RootLocusPlot::readoutHint());
+    // So does a change of axis, after another hover.
+    QTest::mouseMove(plot, pixel + QPoint(1, 0));
+    QTest::mouseMove(plot, pixel);
+    QTRY_VERIFY(plot->readoutText().startsWith("K = "));
+    session_->setCurrentAxis(1);
+    QCOMPARE(plot->readoutText(), RootLocusPlot::readoutHint());
+}
+
+void TstWorkbenchTrust::viewRefitsWhenAPoleLeavesIt() {
+    PoleZeroPlot* pz = window_->poleZeroPlot();
+    window_->upperTabs()->setCurrentWidget(pz);
+    // a1 = 140: s^2 + 140 s + 3665 has a root at -105.1, far outside the default view.
+    NumberField* a1 = window_->plantEditor()->a1Field();
+    test::typeInto(a1, "140");
+    QCOMPARE(session_->session().axes[0].gt.plant.a1, 140.0);
+    double leftmost = 0.0;
+    for (const PoleZeroSet& set : session_->poleZeroSets(0))
+        for (const auto& p : set.poles)
+            leftmost = std::min(leftmost, p.real());
+    QVERIFY(leftmost < -100.0);
+    QVERIFY2(pz->xAxis->range().contains(leftmost), qPrintable(QString::number(pz->xAxis->range().lower)));
+    window_->upperTabs()->setCurrentWidget(window_->parameterLocusPlot());
+    for (const auto& p : session_->axisEvaluation(0).gt->closedLoopPoles)
+        QVERIFY(window_->parameterLocusPlot()->xAxis->range().contains(p.real()));
+    window_->upperTabs()->setCurrentWidget(window_->rootLocusPlot());
+    for (const auto& p : session_->rootLocus(0).poles)
+        QVERIFY(window_->rootLocusPlot()->xAxis->range().contains(p.real()));
+}
+
+void TstWorkbenchTrust::userZoomIsKeptWhileThePolesStayInView() {
+    PoleZeroPlot* pz = window_->poleZeroPlot();
+    window_->upperTabs()->setCurrentWidget(pz);
+    // The user zooms out (every pole stays in view); a small kp step keeps that view.
+    const QCPRange wide(pz->xAxis->range().lower * 3, pz->xAxis->range().upper * 3 + 1);
+    pz->xAxis->setRange(wide);
+    pz->yAxis->setRange(pz->yAxis->range().lower * 3, pz->yAxis->range().upper * 3);
+    window_->kpSlider()->spinBox()->setValue(31.0);
+    QCOMPARE(pz->xAxis->range(), wide);
+}
+
+void TstWorkbenchTrust::snapshotOverlayInEveryPanelWithLegend() {
+    window_->storeSnapshot("paper");
+    session_->setKp(0, 80.0);
+    window_->setOverlaySnapshot(0);
+    TimeResponsePlot* plot = window_->timePlot();
+    const AxisEvaluation snap = evaluateAxis(session_->session().withDesign(session_->session().snapshots[0]), 0);
+    QVERIFY(test::sameSignal(plot->snapshotOutputGraph()->data(), snap.run.t, snap.run.y));
+    QVERIFY(test::sameSignal(plot->snapshotErrorGraph()->data(), snap.run.t, snap.run.e));
+    QVERIFY(test::sameSignal(plot->snapshotControlGraph()->data(), snap.run.t, snap.run.u));
+    QVERIFY(plot->positionLegend()->hasItemWithPlottable(plot->snapshotOutputGraph()));
+    QVERIFY(plot->snapshotOutputGraph()->name().contains("paper"));
+    window_->setOverlaySnapshot(-1);
+    QVERIFY(!plot->positionLegend()->hasItemWithPlottable(plot->snapshotOutputGraph()));
+    QVERIFY(plot->snapshotErrorGraph()->data()->isEmpty());
+}
+
+void TstWorkbenchTrust::plotsEqualTheCoreAfterEveryKindOfChange() {
+    const auto check = [this](const char* change) {
+        const QString mismatch = test::plotsMismatch(window_.get(), session_.get());
+        QVERIFY2(mismatch.isEmpty(), qPrintable(QString("%1: %2").arg(change, mismatch)));
+    };
+    check("start");
+    QTest::keyClick(window_->omegaNSlider()->slider(), Qt::Key_PageUp);
+    check("slider");
+    NumberField* a2 = window_->plantEditor()->a2Field();
+    test::typeInto(a2, "20");
+    check("field");
+    session_->setCurrentAxis(1);
+    check("axis switch");
+    window_->methodBox()->setFocus();
+    QTest::keyClick(window_->methodBox(), Qt::Key_Down);
+    QTRY_VERIFY(session_->session().axes[1].method == DesignMethod::PolePlacementZpetc);
+    check("method switch");
+    setPpB(1, "0 0 0");
+    check("invalid axis");
+    session_->undoStack()->undo();
+    check("undo");
+    session_->undoStack()->redo();
+    check("redo");
+    session_->undoStack()->undo();
+    session_->undoStack()->undo();
+    check("undo to GT");
+    QTemporaryDir dir;
+    Session other = Session::paperDefault();
+    other.axes[0].method = DesignMethod::PolePlacementZpetc;
+    other.axes[1].gt.kp = 55.0;
+    const QString path = dir.filePath("other.json");
+    QString error;
+    QVERIFY2(saveSessionFile(other, path, &error), qPrintable(error));
+    QVERIFY(window_->files()->openFile(path));
+    check("load");
+    session_->setCurrentAxis(0);
+    check("axis switch after load");
+}
+
+// ---- Silent failures ------------------------------------------------------------------------
+
+void TstWorkbenchTrust::truncatedLocusIsSaidAtThePlot() {
+    // kp = 1000 at wn = 3: the core's locus stops at its point limit and says so.
+    session_->setKp(0, 1000.0);
+    session_->setOmegaN(0, 3.0);
+    const RootLocus& locus = session_->rootLocus(0);
+    QVERIFY(locus.status != RootLocusStatus::Complete);
+    QVERIFY(!locus.warnings.empty());
+    window_->upperTabs()->setCurrentWidget(window_->rootLocusPlot());
+    const QString notice = window_->rootLocusPlot()->noticeText();
+    QVERIFY2(notice.contains(QString::fromStdString(locus.warnings.front())), qPrintable(notice));
+}
+
+void TstWorkbenchTrust::unsaturatedDiscreteLoopIsSaid() {
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    Session next = session_->session();
+    next.umaxVolts = 0.5; // below what the paper's loop needs on the 600 mm cubic
+    session_->apply(next, "tight limit");
+    const AxisEvaluation& e = session_->axisEvaluation(0);
+    QVERIFY(e.metrics.saturated);
+    QVERIFY(window_->timePlot()->controlNoticeText().contains("not clipped"));
+    QVERIFY(window_->metricsPanel()->noticeText().contains("without saturation"));
+    QVERIFY(rowText(MetricsPanel::Saturated, 0).contains("not applied"));
+}
+
+void TstWorkbenchTrust::divergedRunIsNotApplicableAndFails() {
+    ThirdOrderPlant plant = session_->session().axes[0].gt.plant;
+    plant.a2 = 1e300;
+    session_->setPlant(0, plant);
+    const AxisEvaluation& e = session_->axisEvaluation(0);
+    QVERIFY(e.metrics.diverged);
+    // Before the fix: "0.0000 ✓" for max |e| and max |u| and "no ✓" for saturated.
+    for (int row : {MetricsPanel::Rmse, MetricsPanel::MaxError, MetricsPanel::MaxErrorPct, MetricsPanel::MaxU,
+                    MetricsPanel::Saturated, MetricsPanel::Itae}) {
+        const QString text = rowText(row, 0);
+        QVERIFY2(text.startsWith("n/a") || text.startsWith("unstable"), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("✓")), qPrintable(text));
+    }
+    QVERIFY(window_->metricsPanel()->noticeText().contains("diverged"));
+    QVERIFY(window_->timePlot()->noticeText().contains("diverged"));
+}
+
+// ---- One specification ----------------------------------------------------------------------
+
+void TstWorkbenchTrust::oneSpecificationForMetricsAndDesignSpace() {
+    auto* space = window_->findChild<DesignSpaceView*>();
+    QVERIFY(space);
+    NumberField* overshoot = window_->metricsPanel()->specField("overshoot");
+    test::typeInto(overshoot, "2.5");
+    QCOMPARE(session_->session().spec.maxOvershootPct, 2.5);
+    QCOMPARE(space->overshootBox()->value(), 2.5);
+    window_->lowerTabs()->setCurrentWidget(space);
+    QDoubleSpinBox* settling = space->settlingBox();
+    test::typeInto(settling, "80");
+    QCOMPARE(session_->session().spec.maxSettlingTimeSeconds, 80.0);
+    QCOMPARE(window_->metricsPanel()->specField("settling")->value(), 80.0);
+    session_->undoStack()->undo();
+    QCOMPARE(space->settlingBox()->value(), 100.0);
+}
+
+// ---- Undo and fields ------------------------------------------------------------------------
+
+void TstWorkbenchTrust::focusedFieldFollowsUndo() {
+    const QString before = window_->ppEditor()->bField()->text();
+    setPpB(0, "0 0 0");
+    QLineEdit* b = window_->ppEditor()->bField();
+    QVERIFY(b->hasFocus());
+    const auto pp = session_->session().axes[0].pp;
+    QCOMPARE(pp.b, (std::vector<double>{0.0, 0.0, 0.0}));
+    session_->undoStack()->undo();
+    // Before the fix the focused field kept "0 0 0" (and re-applied it when focus left).
+    QVERIFY(b->text() != "0 0 0");
+    QCOMPARE(session_->session().axes[0].pp.b, PpAxisSettings{}.b);
+    const int steps = session_->undoStack()->count();
+    window_->kpSlider()->spinBox()->setFocus();
+    QCOMPARE(session_->undoStack()->count(), steps);
+    Q_UNUSED(before);
+}
+
+void TstWorkbenchTrust::ctrlZInAFieldUndoesTheSession() {
+    NumberField* a2 = window_->plantEditor()->a2Field();
+    test::typeInto(a2, "20");
+    QCOMPARE(session_->session().axes[0].gt.plant.a2, 20.0);
+    // The platform's own bindings (Ctrl+Z and, on X11, Ctrl+Shift+Z for redo).
+    const QKeyCombination undo = QKeySequence(QKeySequence::Undo)[0];
+    const QKeyCombination redo = QKeySequence(QKeySequence::Redo)[0];
+    QTest::keyClick(a2, undo.key(), undo.keyboardModifiers());
+    QCOMPARE(session_->session().axes[0].gt.plant.a2, Session::paperDefault().axes[0].gt.plant.a2);
+    QCOMPARE(a2->value(), Session::paperDefault().axes[0].gt.plant.a2);
+    QTest::keyClick(a2, redo.key(), redo.keyboardModifiers());
+    QCOMPARE(session_->session().axes[0].gt.plant.a2, 20.0);
+}
+
+void TstWorkbenchTrust::dragUndoEntryNamesTheFinalValue() {
+    QSlider* slider = window_->omegaNSlider()->slider();
+    // A drag: several positions in a row merge into one undo step.
+    for (int step = 0; step < 5; ++step)
+        slider->setValue(slider->value() + 40);
+    const double last = session_->session().axes[0].gt.omegaNRadPerSec;
+    QCOMPARE(session_->undoStack()->count(), 1);
+    const QString text = session_->undoStack()->undoText();
+    QVERIFY2(text.endsWith(QString::number(last)), qPrintable(text + " / " + QString::number(last)));
+}
+
+// ---- Freezes --------------------------------------------------------------------------------
+
+void TstWorkbenchTrust::liveRefreshIsBounded() {
+    NumberField* dt = window_->trajectoryEditor()->field("dt");
+    test::typeInto(dt, "1e-5");
+    QCOMPARE(session_->session().trajectory.dtSeconds, 1e-5); // the session keeps what was typed
+    // 130 s / 1e-5 s = 13 million samples: the live views run at most a million.
+    const double duration = session_->session().trajectory.effectiveDurationSeconds();
+    XYT_COMPARE_NEAR(session_->liveSession().trajectory.dtSeconds, duration / (TuningSession::kLiveSampleLimit - 1), 1e-15, 0.0);
+    QVERIFY(session_->axisEvaluation(0).run.t.size() <= static_cast<std::size_t>(TuningSession::kLiveSampleLimit));
+    QVERIFY(window_->metricsPanel()->noticeText().contains("live view"));
+    QVERIFY(window_->timePlot()->noticeText().contains("live view"));
+    // The plot holds the run's extremes, not a million points.
+    const auto& run = session_->axisEvaluation(0).run;
+    auto data = window_->timePlot()->errorGraph()->data();
+    QVERIFY(data->size() <= 2 * 8192 + 1);
+    double drawnMax = -1e300, runMax = -1e300;
+    for (auto it = data->constBegin(); it != data->constEnd(); ++it)
+        drawnMax = std::max(drawnMax, it->value);
+    for (double v : run.e)
+        runMax = std::max(runMax, v);
+    QCOMPARE(drawnMax, runMax);
+}
+
+void TstWorkbenchTrust::runThatCannotFitIsRefusedAtTheField() {
+    const double before = session_->session().trajectory.dtSeconds;
+    NumberField* dt = window_->trajectoryEditor()->field("dt");
+    test::typeInto(dt, "1e-9");
+    QCOMPARE(session_->session().trajectory.dtSeconds, before);
+    QVERIFY2(dt->toolTip().contains("samples") && dt->toolTip().startsWith("dt"), qPrintable(dt->toolTip()));
+}
+
+QTEST_MAIN(TstWorkbenchTrust)
+#include "tst_workbench_trust.moc"
