@@ -109,7 +109,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                    << displayNumber(m.maxAbsErrorPct, 3) << displayNumber(m.maxAbsU)
                    << (m.diverged    ? tr("n/a")
                        : !m.saturated ? tr("no")
-                       : a.pp         ? tr("%1 (not applied)").arg(displayNumber(m.saturatedTimeSeconds, 2))
+                       : a.pp         ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds, 2))
                                       : displayNumber(m.saturatedTimeSeconds, 2))
                    << (a.step.stable ? displayNumber(a.step.settlingTimeSeconds, 2) : tr("unstable"))
                    << (a.step.stable ? displayNumber(a.step.overshootPct, 3) : tr("unstable"))
@@ -142,6 +142,9 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             if (!a.ok)
                 item->setToolTip(QString::fromStdString(a.errorField + ": " + a.error));
+            if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
+                item->setToolTip(tr("* not applied: the discrete loop of paper 001 is simulated "
+                                    "without a limit; |u| would be clipped this long"));
             table_->setItem(r, c, item);
         }
     }

@@ -41,6 +41,7 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
     QStringList warnings;
     for (const std::string& w : locus.warnings)
         warnings << QString::fromStdString(w);
+    legend->setVisible(true);
     notice_.setSevere(false);
     notice_.setLines(warnings);
     showBranches(this, branches_, locus.branches, [](std::size_t) { return QPen(colors::output, 1.6); });
@@ -75,6 +76,7 @@ void ParameterLocusPlot::showNoResult(const QString& title, const QString& reaso
     showBranches(this, branches_, {}, [](std::size_t) { return QPen(); });
     current_->data()->clear();
     ends_->data()->clear();
+    legend->setVisible(false);
     notice_.setSevere(true);
     notice_.setLines({reason});
     replot(QCustomPlot::rpQueuedReplot);

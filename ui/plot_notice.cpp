@@ -26,8 +26,30 @@ PlotNotice::PlotNotice(QCustomPlot* plot, QCPAxisRect* rect, Qt::Alignment corne
     item_->setVisible(false);
 }
 
+namespace {
+/// Breaks a line at spaces so that no piece is longer than @p width characters (a long word
+/// stays whole): the box must fit a plot of a 1366 x 768 window.
+QStringList wrapped(const QString& line, int width) {
+    QStringList out;
+    QString current;
+    for (const QString& word : line.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        if (!current.isEmpty() && current.size() + 1 + word.size() > width) {
+            out << current;
+            current.clear();
+        }
+        current += (current.isEmpty() ? QString() : QStringLiteral(" ")) + word;
+    }
+    if (!current.isEmpty())
+        out << current;
+    return out;
+}
+} // namespace
+
 void PlotNotice::setLines(const QStringList& lines) {
-    item_->setText(lines.join(QLatin1Char('\n')));
+    QStringList shown;
+    for (const QString& line : lines)
+        shown << wrapped(line, 64).join(QStringLiteral("\n    "));
+    item_->setText(shown.join(QLatin1Char('\n')));
     item_->setVisible(!lines.isEmpty());
 }
 

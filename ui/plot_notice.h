@@ -20,7 +20,7 @@ class PlotNotice {
 public:
     /// A box in @p rect, anchored at @p corner (e.g. Qt::AlignTop | Qt::AlignRight).
     PlotNotice(QCustomPlot* plot, QCPAxisRect* rect, Qt::Alignment corner);
-    /// Shows the lines (one per warning); an empty list hides the box.
+    /// Shows the lines (one per warning, wrapped at 64 characters); an empty list hides the box.
     void setLines(const QStringList& lines);
     /// A strong notice (no result at all): red text instead of the amber box's dark text.
     void setSevere(bool severe);

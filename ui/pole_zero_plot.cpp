@@ -73,6 +73,7 @@ void PoleZeroPlot::showNoResult(const QString& title, const QString& reason) {
         removePlottable(g.zeros);
     }
     graphs_.clear();
+    legend->setVisible(false);
     notice_.setSevere(true);
     notice_.setLines({reason});
     replot(QCustomPlot::rpQueuedReplot);
@@ -81,6 +82,7 @@ void PoleZeroPlot::showNoResult(const QString& title, const QString& reason) {
 void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString& title) {
     title_->setText(title);
     title_->setTextColor(palette().color(QPalette::WindowText));
+    legend->setVisible(true);
     notice_.setSevere(false);
     notice_.setLines({});
     std::vector<std::complex<double>> all;

@@ -46,8 +46,8 @@ RootLocusPlot::RootLocusPlot(QWidget* parent)
     hover_->removeFromLegend();
     readout_ = new QCPItemText(this);
     readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
-    readout_->position->setCoords(0.01, 0.01);
-    readout_->setPositionAlignment(Qt::AlignTop | Qt::AlignLeft);
+    readout_->position->setCoords(0.01, 0.99); // bottom left: the notices take the top right
+    readout_->setPositionAlignment(Qt::AlignBottom | Qt::AlignLeft);
     readout_->setTextAlignment(Qt::AlignLeft);
     readout_->setBrush(QColor(255, 255, 255, 220));
     readout_->setPadding(QMargins(4, 2, 4, 2));
@@ -86,6 +86,8 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     // A readout of K belongs to the locus it was read on: any new locus (design, axis or plane
     // changed) starts without one.
     clearHover();
+    readout_->setVisible(true);
+    legend->setVisible(true);
     QStringList warnings;
     for (const std::string& w : locus.warnings)
         warnings << QString::fromStdString(w);
@@ -115,6 +117,8 @@ void RootLocusPlot::showNoResult(const QString& title, const QString& reason) {
     for (QCPGraph* g : {poles_, zeros_, current_})
         g->data()->clear();
     clearHover();
+    readout_->setVisible(false);
+    legend->setVisible(false);
     notice_.setSevere(true);
     notice_.setLines({reason});
     replot(QCustomPlot::rpQueuedReplot);

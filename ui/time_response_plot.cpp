@@ -110,9 +110,13 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
         title_->setTextColor(colors::error);
         for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_})
             g->data()->clear();
+        upperLimit_->setVisible(false);
+        lowerLimit_->setVisible(false);
+        legend_->setVisible(false);
         replot(QCustomPlot::rpQueuedReplot);
         return;
     }
+    legend_->setVisible(true);
     const SimulationResult& run = axis.run;
     QString title = tr("%1 — time response").arg(axisTitle);
     if (!axis.step.stable)
