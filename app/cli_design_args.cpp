@@ -147,6 +147,12 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
                                                                           : "--omega";
         throw InvalidInput(e.field() == "duration" ? culprit : "--" + e.field(), e.reason());
     }
+    if (times.size() < 2) // one sample: every metric would read 0, which is not a result
+        throw InvalidInput(args.has("dt") ? "--dt" : args.has("duration") ? "--duration"
+                           : s.trajectory.description == "cubic" ? "--tf" : "--omega",
+                           "gives a single sample (dt " + QString::number(s.options.dtSeconds).toStdString() +
+                               " s, duration " + QString::number(s.durationSeconds).toStdString() +
+                               " s); at least two samples are needed for the metrics");
     s.reference = sampled(s.trajectory.at, times);
     return s;
 }
