@@ -4,12 +4,12 @@
 #include "app/cli_json.h"
 
 #include "core/errors.h"
+#include "core/file_io.h"
 #include "core/trajectory.h"
 
-#include <QSaveFile>
-#include <QTextStream>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace xyt::cli {
@@ -147,6 +147,12 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
                                                                           : "--omega";
         throw InvalidInput(e.field() == "duration" ? culprit : "--" + e.field(), e.reason());
     }
+    if (times.size() < 2) // one sample: every metric would read 0, which is not a result
+        throw InvalidInput(args.has("dt") ? "--dt" : args.has("duration") ? "--duration"
+                           : s.trajectory.description == "cubic" ? "--tf" : "--omega",
+                           "gives a single sample (dt " + QString::number(s.options.dtSeconds).toStdString() +
+                               " s, duration " + QString::number(s.durationSeconds).toStdString() +
+                               " s); at least two samples are needed for the metrics");
     s.reference = sampled(s.trajectory.at, times);
     return s;
 }
@@ -160,29 +166,46 @@ void insertSetupJson(QJsonObject& out, const SimulationSetup& setup) {
     out.insert("samples", static_cast<qint64>(setup.reference.size()));
 }
 
-void writeTextFile(const QString& path, const QString& text) {
-    QSaveFile file(path);
-    const auto fail = [&] {
-        return InvalidInput("--csv", "cannot write '" + path.toStdString() +
-                                         "': " + file.errorString().toStdString());
-    };
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-        throw fail();
-    const QByteArray bytes = text.toUtf8();
-    if (file.write(bytes) != bytes.size() || !file.commit())
-        throw fail();
+namespace {
+/// A CSV of inf/nan cells is not a result: refuse it, saying which signal and from when.
+void requireFiniteSignals(const SimulationResult& run, const std::string& field) {
+    const std::pair<const char*, const std::vector<double>*> columns[] = {
+        {"r", &run.r}, {"y", &run.y}, {"e", &run.e}, {"u", &run.u}};
+    for (const auto& [name, v] : columns)
+        for (std::size_t k = 0; k < v->size(); ++k)
+            if (!std::isfinite((*v)[k]))
+                throw InvalidInput(field, std::string("the simulated ") + name + " is not finite from t = " +
+                                              std::to_string(run.t[k]) +
+                                              " s (an unstable loop or values out of range); no CSV was written");
+}
+} // namespace
+
+void writeFile(const std::string& argument, const QString& path,
+               const std::function<void(const ByteSink&)>& produce) {
+    try {
+        writeFileAtomically(path.toStdString(), produce);
+    } catch (const FileError& e) {
+        throw InvalidInput(argument, "cannot write " + std::string(e.what()) +
+                                         "; nothing was written, an existing file is unchanged");
+    }
+}
+
+void writeTextFile(const std::string& argument, const QString& path, const QString& text) {
+    const std::string bytes = text.toStdString();
+    writeFile(argument, path, [&bytes](const ByteSink& sink) { sink(bytes); });
 }
 
 void writeCsv(const QString& path, const SimulationResult& run) {
-    QString text;
-    QTextStream out(&text);
-    out.setRealNumberPrecision(10);
-    out << "t,r,y,e,u\n";
-    for (std::size_t k = 0; k < run.t.size(); ++k)
-        out << run.t[k] << ',' << run.r[k] << ',' << run.y[k] << ',' << run.e[k] << ','
-            << run.u[k] << '\n';
-    out.flush();
-    writeTextFile(path, text);
+    requireFiniteSignals(run, "--csv");
+    writeFile("--csv", path, [&run](const ByteSink& sink) {
+        sink("t,r,y,e,u\n");
+        char line[160];
+        for (std::size_t k = 0; k < run.t.size(); ++k) {
+            const int n = std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g\n", run.t[k],
+                                        run.r[k], run.y[k], run.e[k], run.u[k]);
+            sink(std::string_view(line, static_cast<std::size_t>(n)));
+        }
+    });
 }
 
 } // namespace xyt::cli

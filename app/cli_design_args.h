@@ -6,6 +6,7 @@
 
 #include "app/cli_args.h"
 
+#include "core/file_io.h"
 #include "core/guillemin_truxal.h"
 #include "core/simulation.h"
 
@@ -71,9 +72,16 @@ void insertSetupJson(QJsonObject& out, const SimulationSetup& setup);
 /// A number > 0 from --name, or @p fallback.
 double positiveNumber(const CliArgs& args, const QString& name, double fallback);
 
-/// Writes @p text to @p path atomically. @throws InvalidInput "--csv" when it cannot.
-void writeTextFile(const QString& path, const QString& text);
-/// t,r,y,e,u of one run.
+/**
+ * Writes @p path atomically (xyt::writeFileAtomically), the content streamed by @p produce.
+ * @throws InvalidInput naming @p argument ("-o", "--csv") with the path and the system's
+ *         reason when the file cannot be written; the old file is then unchanged.
+ */
+void writeFile(const std::string& argument, const QString& path,
+               const std::function<void(const ByteSink&)>& produce);
+/// The same for a text held in memory.
+void writeTextFile(const std::string& argument, const QString& path, const QString& text);
+/// t,r,y,e,u of one run, streamed. @throws InvalidInput @p field when a signal is not finite.
 void writeCsv(const QString& path, const SimulationResult& run);
 
 } // namespace xyt::cli

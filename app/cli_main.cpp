@@ -4,6 +4,8 @@
 #include "app/cli_commands.h"
 
 #include "core/errors.h"
+#include "core/file_io.h"
+#include "core/text_escape.h"
 
 #include <QCoreApplication>
 
@@ -61,16 +63,14 @@ constexpr const char* kUsage =
     "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
     "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"
     "\n"
-    "Exit codes: 0 success, 2 invalid input (message names the argument), 1 internal error.\n";
+    "Exit codes: 0 success, 2 invalid input (message names the argument), 1 a file that\n"
+    "could not be written (path and system reason; the old file is unchanged) or an internal\n"
+    "error.\n";
 
 /// The message as one printable line: arguments quoted in messages may hold newlines or other
-/// control characters (a pasted list, a file name), and the contract is one line on stderr.
-std::string oneLine(std::string message) {
-    for (char& c : message)
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-            c = '?';
-    return message;
-}
+/// control characters (a pasted list, a file name, a session label), and the contract is one
+/// line on stderr that cannot drive the terminal.
+std::string oneLine(const std::string& message) { return xyt::terminalText(message); }
 
 } // namespace
 
@@ -107,6 +107,11 @@ int main(int argc, char* argv[]) {
     }
     try {
         return it->second(args);
+    } catch (const xyt::FileError& e) {
+        // Every write is atomic (core/file_io.h): a failed one leaves any old file as it was.
+        std::fprintf(stderr, "xytune-cli %s: cannot write %s; nothing was written, an existing file is unchanged\n",
+                     qPrintable(name), oneLine(e.what()).c_str());
+        return 1;
     } catch (const xyt::InvalidInput& e) {
         std::fprintf(stderr, "xytune-cli %s: %s\n", qPrintable(name), oneLine(e.what()).c_str());
         return 2;

@@ -2,9 +2,12 @@
 // xytune-cli new | export, and report SESSION.json: session files and coefficient exports.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
+#include "app/cli_design_args.h"
 
 #include "core/errors.h"
 #include "core/export_text.h"
+#include "core/file_io.h"
+#include "core/text_escape.h"
 #include "core/session_evaluation.h"
 #include "ui/coefficient_json.h"
 #include "ui/session_file.h"
@@ -29,10 +32,13 @@ Session loadOrThrow(const QString& path) {
 }
 
 void writeOrThrow(const QString& path, const QByteArray& bytes) {
-    QString error;
-    if (!ui::writeFileAtomically(path, bytes, &error))
-        throw InvalidInput("-o", error.toStdString());
+    writeFile("-o", path, [&bytes](const ByteSink& sink) {
+        sink(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    });
 }
+
+/// User text (a label, a file name) as the terminal may show it: controls escaped.
+QString shown(const std::string& text) { return QString::fromStdString(terminalText(text)); }
 
 QString outputPath(const CliArgs& args) {
     const auto o = args.value("o");
@@ -52,7 +58,7 @@ int runNew(const QStringList& argv) {
     args.allowOnly({"o"});
     const QString path = outputPath(args);
     writeOrThrow(path, QJsonDocument(ui::sessionToJson(Session::paperDefault())).toJson());
-    std::printf("%s\n", qPrintable(path));
+    std::printf("%s\n", terminalText(path.toStdString()).c_str());
     return 0;
 }
 
@@ -62,7 +68,7 @@ int runSessionReport(const QString& path) {
     QString text;
     QTextStream out(&text);
     const TrajectorySettings& t = session.trajectory;
-    out << "XY Tune report: " << path << "\n";
+    out << "XY Tune report: " << shown(path.toStdString()) << "\n";
     if (t.kind == TrajectoryKind::Cubic)
         out << "Trajectory: cubic " << t.x0 << " -> " << t.xf << " mm from " << t.t0Seconds
             << " s to " << t.tfSeconds << " s";
@@ -74,11 +80,10 @@ int runSessionReport(const QString& path) {
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& s = session.axes[static_cast<std::size_t>(i)];
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
-        out << "\n== Axis " << QString::fromStdString(s.id) << " ("
-            << QString::fromStdString(s.label) << "): " << ui::methodName(s.method) << "\n";
+        out << "\n== Axis " << QString::fromStdString(s.id) << " (" << shown(s.label)
+            << "): " << ui::methodName(s.method) << "\n";
         if (!a.ok) {
-            out << "  not designed: " << QString::fromStdString(a.errorField) << ": "
-                << QString::fromStdString(a.error) << "\n";
+            out << "  not designed: " << shown(a.errorField) << ": " << shown(a.error) << "\n";
             continue;
         }
         if (a.gt)
@@ -108,13 +113,14 @@ int runSessionReport(const QString& path) {
             << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable"))
             << ", ITAE " << number(m.itae, 1) << "\n";
         for (const auto& w : a.warnings)
-            out << "  warning: " << QString::fromStdString(w) << "\n";
+            out << "  warning: " << shown(w) << "\n";
     }
     if (evaluation.contour)
         out << "\n== Circle contour: radial error max " << number(evaluation.contour->maxAbs)
             << " mm, RMS " << number(evaluation.contour->rms) << " mm\n";
     out.flush();
-    std::fputs(text.toUtf8().constData(), stdout);
+    const QByteArray bytes = text.toUtf8();
+    std::fwrite(bytes.constData(), 1, static_cast<std::size_t>(bytes.size()), stdout);
     return 0;
 }
 
@@ -139,17 +145,17 @@ int runExport(const QStringList& argv) {
             throw InvalidInput("--discretization", "must be tustin or backward-euler");
     }
     const SessionEvaluation evaluation = evaluateSession(session);
-    QByteArray bytes;
-    if (format == "json")
-        bytes = QJsonDocument(ui::coefficientsJson(session, evaluation, options)).toJson();
+    if (format == "csv") // streamed: a long simulation is never held as text
+        writeFile("-o", path, [&](const ByteSink& sink) {
+            exportCsv(session, evaluation, sink);
+        });
+    else if (format == "json")
+        writeOrThrow(path, QJsonDocument(ui::coefficientsJson(session, evaluation, options)).toJson());
     else if (format == "c")
-        bytes = QByteArray::fromStdString(exportCHeader(session, evaluation, options));
-    else if (format == "m")
-        bytes = QByteArray::fromStdString(exportOctaveScript(session, evaluation, options));
+        writeOrThrow(path, QByteArray::fromStdString(exportCHeader(session, evaluation, options)));
     else
-        bytes = QByteArray::fromStdString(exportCsv(session, evaluation));
-    writeOrThrow(path, bytes);
-    std::printf("%s\n", qPrintable(path));
+        writeOrThrow(path, QByteArray::fromStdString(exportOctaveScript(session, evaluation, options)));
+    std::printf("%s\n", terminalText(path.toStdString()).c_str());
     return 0;
 }
 

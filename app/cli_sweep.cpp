@@ -121,7 +121,7 @@ int runSweep(const QStringList& argv) {
     options.threads = args.count("threads", 0, 1024);
     const DesignSweepResult r = sweepDesignSpace(problem, wnAxis, kpAxis, options);
     if (const auto csv = args.value("csv"))
-        writeTextFile(*csv, sweepCsv(r));
+        writeTextFile("--csv", *csv, sweepCsv(r));
 
     QJsonObject out;
     out.insert("plant", plantJson(problem.plant));

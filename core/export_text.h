@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/digital_controller.h"
+#include "core/file_io.h"
 #include "core/session.h"
 #include "core/session_evaluation.h"
 
@@ -19,6 +20,10 @@ struct ExportOptions {
 /// @throws InvalidInput when the axis could not be designed.
 DigitalController axisDigitalController(const Session& session, const SessionEvaluation& evaluation,
                                         int axisIndex, const ExportOptions& options);
+
+// Every export copies user text (axis labels) only as escaped comment text (core/text_escape.h),
+// so a session file cannot put code into a header or script, and refuses a non-finite number
+// with InvalidInput naming the session field it comes from.
 
 /**
  * A C99 header for firmware: per axis `static const double XYT_<AXIS>_NUM[]`, `XYT_<AXIS>_DEN[]`
@@ -40,8 +45,11 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
 /**
  * The simulated signals as CSV: t,r_<x>,y_<x>,e_<x>,u_<x>,r_<y>,... on the first axis' time
  * base (the second axis is linearly interpolated onto it when its sample time differs).
- * @throws InvalidInput "axes[i]" when an axis has no simulation.
+ * @throws InvalidInput "axes[i]" when an axis has no simulation or a simulated signal is not
+ *         finite (before anything is written to @p sink).
  */
+void exportCsv(const Session& session, const SessionEvaluation& evaluation, const ByteSink& sink);
+/// The same CSV as one string (for small sessions; files are streamed with the sink form).
 std::string exportCsv(const Session& session, const SessionEvaluation& evaluation);
 
 /// A double with 17 significant digits ("%.17g").

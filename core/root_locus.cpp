@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -230,6 +231,16 @@ public:
                                       std::to_string(k) + " before every branch converged");
                 break;
             }
+            if (work_ > kMaxWork) {
+                r_.status = RootLocusStatus::PointLimitReached;
+                r_.warnings.push_back("stopped at the work bound (about " +
+                                      std::to_string(static_cast<long long>(kMaxWork / 1e6)) +
+                                      " million operations, " + std::to_string(r_.gains.size()) +
+                                      " points) at K = " + std::to_string(k) +
+                                      " before every branch converged: the loop's order " +
+                                      std::to_string(n_) + " makes each point expensive");
+                break;
+            }
             if (k > 1e250) {
                 r_.status = RootLocusStatus::GainLimitReached;
                 r_.warnings.push_back("stopped at K > 1e250 before every branch converged");
@@ -291,11 +302,19 @@ private:
         const Polynomial p = den_ + k * num_;
         if (p.degree() != n_)
             return {};
+        const double n = static_cast<double>(n_);
+        work_ += 20.0 * n * n; // a few Newton sweeps over n roots of degree n
         std::vector<Complex> roots = guess;
         if (refineAllRoots(p, dDen_ + k * dNum_, roots, 1e-6 * maxStep_))
             return roots;
+        work_ += 10.0 * n * n * n; // the companion-matrix eigenvalue solve
         return p.roots();
     }
+
+    /// Operations spent on root finding, and the bound that keeps any loop to a few seconds
+    /// (the 4th-order GT locus uses about 1e6; a 40th-order one ran for minutes).
+    mutable double work_ = 0.0;
+    static constexpr double kMaxWork = 2e9;
 
     std::optional<Complex> nearZero(Complex root) const {
         std::optional<Complex> best;
@@ -466,6 +485,59 @@ std::vector<LocusFeature> locusCrossings(const Polynomial& num, const Polynomial
     return result;
 }
 
+namespace {
+
+/**
+ * Warns when computed roots cannot be trusted. A root r is moved by a relative coefficient
+ * perturbation eps (round-off) by about min over m of (eps S / |c_m|)^(1/m), where
+ * p(r + d) = sum_m c_m d^m (Taylor coefficients at r) and S = sum |a_i| |r|^i: the first-order
+ * condition number for a simple root (m = 1; Higham, "Accuracy and Stability of Numerical
+ * Algorithms", Sec. 26.3), the eps^(1/m) law for a cluster of m roots. (s+1)^40 is computed
+ * with poles at -2.28 instead of -1; a double pole of a discrete loop (about 1e-8) is fine.
+ * We warn when the estimate exceeds 1e-6 relative.
+ */
+void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots,
+                        const std::string& what, std::vector<std::string>& warnings) {
+    const auto& a = p.ascending();
+    const double eps = std::numeric_limits<double>::epsilon();
+    double worst = 0.0;
+    Complex where{};
+    for (const Complex& r : roots) {
+        const double magnitude = std::abs(r);
+        if (magnitude == 0.0)
+            continue; // exact zero roots are split off exactly
+        double scale = 0.0, power = 1.0;
+        for (const double c : a) {
+            scale += std::abs(c) * power;
+            power *= magnitude;
+        }
+        // Taylor coefficients at r by repeated synthetic division (Horner), O(n^2).
+        std::vector<Complex> b(a.begin(), a.end());
+        double move = std::numeric_limits<double>::infinity();
+        for (std::size_t m = 0; m < a.size(); ++m) {
+            for (std::size_t i = b.size() - 1; i > m; --i)
+                b[i - 1] += r * b[i];
+            if (m > 0 && std::abs(b[m]) > 0.0)
+                move = std::min(move, std::pow(eps * scale / std::abs(b[m]), 1.0 / static_cast<double>(m)));
+        }
+        const double relative = move / magnitude;
+        if (!(relative <= worst)) {
+            worst = relative;
+            where = r;
+        }
+    }
+    if (!(worst <= 1e-6)) {
+        char size[32];
+        std::snprintf(size, sizeof size, "%.2g", worst);
+        warnings.push_back("the " + what + " near " + formatComplex(where) +
+                           " are ill-conditioned (clustered or multiple roots): round-off alone "
+                           "can move them by about " + size +
+                           " of their size, so they and the locus near them may be wrong");
+    }
+}
+
+} // namespace
+
 RootLocus rootLocus(const Polynomial& num, const Polynomial& den, double tsSeconds,
                     const RootLocusOptions& options) {
     if (!(tsSeconds >= 0.0) || !std::isfinite(tsSeconds))
@@ -490,6 +562,8 @@ RootLocus rootLocus(const Polynomial& num, const Polynomial& den, double tsSecon
     };
     r.poles = rootsOf(den, "den");
     r.zeros = num.degree() > 0 ? rootsOf(num, "num") : std::vector<Complex>{};
+    warnIllConditioned(den, r.poles, "open-loop poles", r.warnings);
+    warnIllConditioned(num, r.zeros, "open-loop zeros", r.warnings);
     sortRoots(r.poles);
     sortRoots(r.zeros);
     for (const Complex& p : r.poles)

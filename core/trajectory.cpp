@@ -4,6 +4,7 @@
 #include "core/errors.h"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -84,10 +85,14 @@ std::vector<double> sampleTimes(double durationSeconds, double dtSeconds) {
     if (durationSeconds < 0.0)
         throw InvalidInput("duration", "must be >= 0");
     const double count = std::floor(durationSeconds / dtSeconds + 1e-9) + 1.0;
-    if (count > static_cast<double>(kMaxSamples))
-        throw InvalidInput("duration", "needs " + std::to_string(static_cast<long long>(count)) +
+    if (!(count <= static_cast<double>(kMaxSamples))) { // also inf (dt = 5e-324)
+        char needs[32];
+        std::snprintf(needs, sizeof needs, "%.3g", count); // never cast an out-of-range count
+        throw InvalidInput("duration", std::string("needs ") +
+                                           (std::isfinite(count) ? needs : "more than 1e308") +
                                            " samples at this dt; the limit is " +
                                            std::to_string(kMaxSamples));
+    }
     std::vector<double> t(static_cast<std::size_t>(count));
     for (std::size_t k = 0; k < t.size(); ++k)
         t[k] = static_cast<double>(k) * dtSeconds;

@@ -38,12 +38,24 @@ ZpetcDesign designZpetc(const PolePlacementDesign& loop, double margin) {
     if (std::abs(bMinusAtOne) <= 1e-12 * z.bMinus.maxAbsCoefficient())
         throw InvalidInput("b", "B-(1) = 0 (a zero at z = 1): ZPETC cannot normalize the gain");
     z.gainFactor = bMinusAtOne * bMinusAtOne;
+    // The relative check above passes for a B- whose coefficients are all tiny (B-(1) ~ 2e-307):
+    // the square then underflows to a subnormal or 0, and 1/[B-(1)]^2 to inf, so the filter
+    // would hold NaN. Refuse a gain that is not a normal double with a finite inverse.
+    if (!std::isnormal(z.gainFactor) || !std::isfinite(1.0 / z.gainFactor))
+        throw InvalidInput("b", "B-(1) = " + std::to_string(bMinusAtOne) +
+                                    " is too small (or too large) to square in double precision: "
+                                    "scale B, ZPETC cannot normalize its gain");
     const int s = z.bMinus.degree();
     z.previewSteps = z.delay + s;
     const Polynomial bMinusStar = z.bMinus.reversed(s);
     z.feedforwardNum = loop.closedLoopDen * bMinusStar;
     z.feedforwardDen = z.gainFactor * z.bPlus;
     z.overallFir = (1.0 / z.gainFactor) * (z.bMinus * bMinusStar);
+    for (const Polynomial* p : {&z.feedforwardNum, &z.feedforwardDen, &z.overallFir})
+        for (const double c : p->ascending())
+            if (!std::isfinite(c))
+                throw InvalidInput("b", "the ZPETC filter overflows in double precision for this "
+                                        "B and T: scale B");
     return z;
 }
 

@@ -2,13 +2,12 @@
 #include "ui/session_file.h"
 
 #include "core/coefficient_parser.h"
+#include "core/file_io.h"
+#include "core/json_duplicate_keys.h"
 #include "core/trajectory.h"
 
-#include <QFile>
-#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cctype>
@@ -366,6 +365,12 @@ SessionLoadResult sessionFromBytes(const QByteArray& bytes) {
                       .arg(parseError.offset);
         return r;
     }
+    if (const auto duplicate = findDuplicateJsonKey(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
+        SessionLoadResult r;
+        r.errorPath = QString::fromStdString(*duplicate);
+        r.error = QStringLiteral("appears more than once in its object; a key may be given only once");
+        return r;
+    }
     if (!doc.isObject()) {
         SessionLoadResult r;
         r.error = QStringLiteral("not a session: the document must be a JSON object");
@@ -375,50 +380,27 @@ SessionLoadResult sessionFromBytes(const QByteArray& bytes) {
 }
 
 SessionLoadResult loadSessionFile(const QString& path) {
-    SessionLoadResult r;
-    const QFileInfo info(path);
-    if (!info.exists()) {
-        r.error = QStringLiteral("%1: no such file").arg(path);
+    std::string bytes;
+    try {
+        bytes = readRegularFile(path.toStdString(), static_cast<std::size_t>(kMaxSessionFileBytes));
+    } catch (const FileError& e) {
+        SessionLoadResult r;
+        r.error = QString::fromStdString(e.what());
         return r;
     }
-    if (info.isDir()) {
-        r.error = QStringLiteral("%1: is a directory, not a session file").arg(path);
-        return r;
-    }
-    if (info.size() > kMaxSessionFileBytes) {
-        r.error = QStringLiteral("%1: %2 bytes is too large for a session file (limit %3)")
-                      .arg(path)
-                      .arg(info.size())
-                      .arg(kMaxSessionFileBytes);
-        return r;
-    }
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        r.error = QStringLiteral("%1: %2").arg(path, file.errorString());
-        return r;
-    }
-    return sessionFromBytes(file.readAll());
+    return sessionFromBytes(QByteArray::fromStdString(bytes));
 }
 
 bool writeFileAtomically(const QString& path, const QByteArray& bytes, QString* error) {
-    if (QFileInfo(path).isDir()) {
+    try {
+        xyt::writeFileAtomically(path.toStdString(),
+                                 std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        return true;
+    } catch (const FileError& e) {
         if (error)
-            *error = QStringLiteral("%1: is a directory").arg(path);
+            *error = QString::fromStdString(e.what());
         return false;
     }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error)
-            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
-        return false;
-    }
-    if (file.write(bytes) != bytes.size() || !file.commit()) {
-        if (error)
-            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
-        file.cancelWriting();
-        return false;
-    }
-    return true;
 }
 
 bool saveSessionFile(const Session& session, const QString& path, QString* error) {

@@ -31,11 +31,13 @@ QJsonObject sessionToJson(const Session& session);
 /// Validates everything before returning; nothing is half-applied.
 SessionLoadResult sessionFromJson(const QJsonObject& root);
 SessionLoadResult sessionFromBytes(const QByteArray& bytes);
-/// Reads and validates @p path (missing file, a directory, too large, not JSON: clear errors).
+/// Reads and validates @p path (missing file, a directory, a FIFO or device, too large, not
+/// JSON: clear errors). Never blocks on a special file nor reads more than the size limit.
 SessionLoadResult loadSessionFile(const QString& path);
-/// Atomic save (QSaveFile): on failure the old file is left intact and @p error says why.
+/// Atomic save (xyt::writeFileAtomically): every write and the commit are checked; on failure
+/// the old file is left intact and @p error says "<path>: <system reason>".
 bool saveSessionFile(const Session& session, const QString& path, QString* error);
-/// Atomic write of any bytes, with the same guarantees.
+/// Atomic write of any bytes, with the same guarantees (refuses to replace a non-regular file).
 bool writeFileAtomically(const QString& path, const QByteArray& bytes, QString* error);
 
 /// "guillemin-truxal" / "pole-placement-zpetc".

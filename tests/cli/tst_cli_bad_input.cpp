@@ -267,6 +267,18 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("contour omega NaN") << QStringList{"contour", "--omega", "nan"} << "--omega";
     QTest::newRow("contour duration needing gigabytes")
         << QStringList{"contour", "--duration", "1e12"} << "--duration";
+    // Issue 20: no nonsense counts ("needs -9223372036854775808 samples"), no all-zero metrics
+    // from a single sample; the message names what the user typed.
+    const QStringList move = {"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                              "--xf", "600", "--tf", "130"};
+    QTest::newRow("simulate dt subnormal") << move + QStringList{"--dt", "5e-324"}
+                                           << "--dt: needs more than 1e308 samples";
+    QTest::newRow("simulate dt longer than the move (one sample)")
+        << move + QStringList{"--dt", "1000"} << "--dt: gives a single sample";
+    QTest::newRow("simulate sine omega 1e300 (one sample)")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine",
+                       "--amplitude", "25", "--omega", "1e300"}
+        << "--omega: gives a single sample";
     QTest::newRow("contour unknown preset") << QStringList{"contour", "--preset", "square"}
                                             << "--preset";
 }

@@ -84,6 +84,7 @@ private slots:
     void startCondition();
     void circleContour();
     void invalidInput();
+    void tinyBMinusIsRefusedNotNaN();
 };
 
 void TstZpetc::factorization_data() {
@@ -293,6 +294,28 @@ void TstZpetc::invalidInput() {
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
                              xyt::simulateFeedbackLoop(loop, std::vector<double>{}));
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::zpetcFrequencyResponse(loop, z, {-1.0}));
+}
+
+void TstZpetc::tinyBMinusIsRefusedNotNaN() {
+    // Issue 20 (fuzz_design): B- whose coefficients are all ~1e-300 passes the relative check
+    // |B-(1)| > 1e-12 max|B-|, but [B-(1)]^2 underflows to 0 and the FIR became NaN.
+    // Closed form: Kf B / z^-1 = 1e-300 (1 - 3 z^-1): one zero at z = 3 (outside, kept in B-),
+    // B-(1) = -2e-300, whose square 4e-600 is below the smallest double.
+    xyt::PolePlacementDesign loop = presetDesign("x-axis");
+    loop.closedLoopNum = xyt::Polynomial::fromAscending({0.0, 1e-300, -3e-300});
+    try {
+        const auto z = xyt::designZpetc(loop);
+        for (double c : z.overallFir.ascending())
+            QVERIFY2(std::isfinite(c), "NaN/inf in the ZPETC filter");
+        QFAIL("a B- too small to square was accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(QString::fromStdString(e.field()), QStringLiteral("b"));
+        QVERIFY2(QString::fromStdString(e.reason()).contains("too small"), e.what());
+    }
+    // The same shape at a normal scale is designed: FIR finite, gain factor [B-(1)]^2 = 4.
+    loop.closedLoopNum = xyt::Polynomial::fromAscending({0.0, 1.0, -3.0});
+    const auto z = xyt::designZpetc(loop);
+    XYT_COMPARE_NEAR(z.gainFactor, 4.0, 1e-12, 0.0);
 }
 
 QTEST_APPLESS_MAIN(TstZpetc)

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer harness: the session file loader (ui/session_file.h sessionFromBytes) on arbitrary
 // bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
-// accepts must hold finite numbers and survive a save/load round trip unchanged.
+// accepts must hold finite numbers and survive a save/load round trip unchanged, and its labels
+// must reach the exports only as text that cannot end a comment or drive a terminal (issue 20).
 #include "tests/fuzz/fuzz_support.h"
 
+#include "core/text_escape.h"
 #include "ui/session_file.h"
 
 #include <QByteArray>
@@ -26,6 +28,18 @@ void requireFinite(const xyt::AxisSettings& axis) {
     XYT_FUZZ_REQUIRE_FINITE(axis.pp.tsSeconds);
 }
 
+/// What the exports make of a label: one comment line that no comment syntax can end early,
+/// and terminal text of printable characters.
+void requireInertLabel(const std::string& label) {
+    const std::string c = xyt::commentText(label, xyt::CommentSyntax::C);
+    XYT_FUZZ_REQUIRE(c.find("*/") == std::string::npos && c.find("/*") == std::string::npos &&
+                     c.find("??") == std::string::npos);
+    for (const std::string& text : {c, xyt::commentText(label, xyt::CommentSyntax::Octave),
+                                    xyt::terminalText(label)})
+        for (const char ch : text)
+            XYT_FUZZ_REQUIRE(static_cast<unsigned char>(ch) >= 0x20 && ch != 0x7f);
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -36,8 +50,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     }
     const xyt::Session& s = loaded.session;
-    for (const auto& axis : s.axes)
+    for (const auto& axis : s.axes) {
         requireFinite(axis);
+        requireInertLabel(axis.label);
+    }
     XYT_FUZZ_REQUIRE_FINITE(s.umaxVolts);
     XYT_FUZZ_REQUIRE_FINITE(s.controllerTsSeconds);
     XYT_FUZZ_REQUIRE_FINITE(s.trajectory.effectiveDurationSeconds());

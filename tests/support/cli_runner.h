@@ -21,8 +21,16 @@ struct CliRun {
     QJsonObject json() const { return QJsonDocument::fromJson(out).object(); }
 };
 
-inline CliRun runCli(const QStringList& args, int timeoutMs = 60000) {
+/// @param environment added to the test's own (e.g. XYT_TEST_FAIL_WRITE=write).
+inline CliRun runCli(const QStringList& args, int timeoutMs = 60000,
+                     const QStringList& environment = {}) {
     QProcess p;
+    if (!environment.isEmpty()) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const QString& e : environment)
+            env.insert(e.section('=', 0, 0), e.section('=', 1));
+        p.setProcessEnvironment(env);
+    }
     p.start(QStringLiteral(XYT_CLI_PATH), args);
     CliRun r;
     if (!p.waitForStarted(10000))

@@ -1,12 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/session_file.h"
 
+#include "core/file_io.h"
+#include "tests/support/small_filesystem.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cerrno>
+#include <cstring>
+
+#include <sys/stat.h>
 
 using namespace xyt;
 using namespace xyt::ui;
@@ -22,9 +31,19 @@ private slots:
     void newerVersionIsRefused();
     void fileErrors();
     void failedSaveKeepsOldFile();
+    void duplicateKeysAreRefused_data();
+    void duplicateKeysAreRefused();
+    void specialFilesAreRefused();
+    void injectedWriteFailureKeepsOldFile();
+    void fullDiskKeepsOldFile(); // last: it moves the process into its own mount namespace
 };
 
 namespace {
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
+}
 
 QJsonObject defaultJson() { return sessionToJson(Session::paperDefault()); }
 
@@ -210,6 +229,83 @@ void TstSessionFile::failedSaveKeepsOldFile() {
     QFile f(path);
     QVERIFY(f.open(QIODevice::ReadOnly));
     QCOMPARE(f.readAll(), before);
+}
+
+void TstSessionFile::duplicateKeysAreRefused_data() {
+    // Qt's reader keeps the last of two equal keys, others the first: the file means two
+    // sessions. The key is named by its JSON path, after decoding escapes.
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("path");
+    QTest::newRow("top level") << QByteArray(R"({"umax": 2.5, "format": 1, "umax": 250})") << "umax";
+    QTest::newRow("nested in an array")
+        << QByteArray(R"({"axes": [{}, {"gt": {"plant": {"k0": 1, "a1": 2, "k0": 3}}}]})")
+        << "axes[1].gt.plant.k0";
+    QTest::newRow("escaped spelling of the same key")
+        << QByteArray(R"({"a": [1, [2, {}]], "snapshots": [{"name": "a", "n\u0061me": "b"}]})")
+        << "snapshots[0].name";
+}
+
+void TstSessionFile::duplicateKeysAreRefused() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, path);
+    const SessionLoadResult r = sessionFromBytes(json);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, path);
+    QVERIFY2(r.error.contains("more than once"), qPrintable(r.message()));
+    // The saved default session has no duplicates and loads.
+    QVERIFY(sessionFromBytes(QJsonDocument(defaultJson()).toJson()).ok);
+}
+
+void TstSessionFile::specialFilesAreRefused() {
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath("pipe");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    for (const QString& path : {fifo, QStringLiteral("/dev/zero")}) {
+        const SessionLoadResult r = loadSessionFile(path); // returns: no blocking, no bad_alloc
+        QVERIFY(!r.ok);
+        QVERIFY2(r.error.contains("not a regular file"), qPrintable(r.error));
+    }
+    // A GUI save over a FIFO does not replace it.
+    QString error;
+    QVERIFY(!saveSessionFile(Session::paperDefault(), fifo, &error));
+    QVERIFY2(error.contains("not a regular file"), qPrintable(error));
+}
+
+void TstSessionFile::injectedWriteFailureKeepsOldFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("keep.json");
+    QString error;
+    QVERIFY(saveSessionFile(Session::paperDefault(), path, &error));
+    const QByteArray before = readAll(path);
+    Session changed = Session::paperDefault();
+    changed.umaxVolts = 7.0;
+    for (const auto& [step, reason] : {std::pair{WriteStep::Write, ENOSPC}, std::pair{WriteStep::Sync, EIO},
+                                       std::pair{WriteStep::Rename, EIO}}) {
+        injectWriteFailureForTesting(step);
+        const bool saved = saveSessionFile(changed, path, &error);
+        injectWriteFailureForTesting(WriteStep::None);
+        QVERIFY(!saved);
+        QCOMPARE(error, path + ": " + QString::fromUtf8(std::strerror(reason)));
+        QCOMPARE(readAll(path), before);
+    }
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"keep.json"});
+}
+
+void TstSessionFile::fullDiskKeepsOldFile() {
+    QTemporaryDir dir;
+    if (const QString why = xyt::test::mountSmallFilesystem(dir.path(), 64); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const auto unmount = qScopeGuard([&] { xyt::test::unmountSmallFilesystem(dir.path()); });
+    const QString path = dir.filePath("keep.json");
+    QString error;
+    QVERIFY(saveSessionFile(Session::paperDefault(), path, &error));
+    const QByteArray before = readAll(path);
+    xyt::test::fillFilesystem(dir.path());
+    Session changed = Session::paperDefault();
+    changed.umaxVolts = 7.0;
+    QVERIFY(!saveSessionFile(changed, path, &error));
+    QCOMPARE(error, path + ": " + QString::fromUtf8(std::strerror(ENOSPC)));
+    QCOMPARE(readAll(path), before);
 }
 
 QTEST_APPLESS_MAIN(TstSessionFile)

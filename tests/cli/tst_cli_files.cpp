@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Issue 20, the files side of xytune-cli: every write (export json|c|m|csv, new -o, simulate
+// --csv, sweep --csv) leaves the old file intact when the write or the commit fails and says
+// why (exit 2, the argument, the path, the system's reason); special files are neither replaced
+// nor read; the report shows hostile labels escaped; duplicate keys are refused.
+#include "tests/support/cli_runner.h"
+#include "tests/support/small_filesystem.h"
+
+#include <QFile>
+#include <QScopeGuard>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cerrno>
+#include <cstring>
+
+#include <sys/stat.h>
+
+using xyt::test::runCli;
+
+class TstCliFiles : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void failedWriteKeepsOldFile_data();
+    void failedWriteKeepsOldFile();
+    void specialFilesAreNotReplaced();
+    void specialFilesAreNotRead();
+    void reportEscapesLabels();
+    void duplicateKeyIsRefused();
+    void fullDiskKeepsOldFile(); // last: it moves the process into its own mount namespace
+
+private:
+    QTemporaryDir dir_;
+    QString session_;
+};
+
+namespace {
+
+QByteArray contents(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
+}
+
+void put(const QString& path, const QByteArray& bytes) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(bytes);
+}
+
+const QStringList kCubic = {"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                            "--xf", "600", "--tf", "130"};
+
+/// Each writing command with {out} for the file it writes and the argument that names it.
+void addWriterRows() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("argument");
+    for (const QString format : {"json", "c", "m", "csv"})
+        QTest::newRow(qPrintable("export " + format))
+            << QStringList{"export", "{session}", "--format", format, "-o", "{out}"} << "-o";
+    QTest::newRow("new") << QStringList{"new", "-o", "{out}"} << "-o";
+    QTest::newRow("simulate --csv") << kCubic + QStringList{"--csv", "{out}"} << "--csv";
+    QTest::newRow("sweep --csv") << QStringList{"sweep", "--preset", "lower-base", "--wn", "1:3:2",
+                                               "--kp", "20:40:2", "--trajectory", "cubic", "--xf",
+                                               "600", "--tf", "130", "--csv", "{out}"}
+                                 << "--csv";
+}
+
+QStringList substituted(QStringList args, const QString& session, const QString& out) {
+    for (QString& a : args)
+        a = a.replace("{session}", session).replace("{out}", out);
+    return args;
+}
+
+} // namespace
+
+void TstCliFiles::initTestCase() {
+    session_ = dir_.filePath("session.json");
+    const auto run = runCli({"new", "-o", session_});
+    QCOMPARE(run.exitCode, 0);
+}
+
+void TstCliFiles::failedWriteKeepsOldFile_data() {
+    addWriterRows();
+}
+
+void TstCliFiles::failedWriteKeepsOldFile() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, argument);
+    // The injected failure at each step of the write (core/file_io.h test hook).
+    const std::pair<QString, int> steps[] = {{"write", ENOSPC}, {"sync", EIO}, {"rename", EIO}};
+    for (const auto& [step, error] : steps) {
+        const QString out = dir_.filePath("out-" + step);
+        put(out, "old content\n");
+        const auto run = runCli(substituted(args, session_, out), 60000,
+                                {"XYT_TEST_FAIL_WRITE=" + step});
+        QVERIFY(run.finished);
+        const QByteArray diagnostic = step.toUtf8() + ": " + run.err;
+        QVERIFY2(run.exitCode == 2, diagnostic.constData());
+        QVERIFY2(run.err.count('\n') == 1, diagnostic.constData());
+        QVERIFY2(run.err.contains((argument + ": cannot write " + out + ": ").toUtf8()),
+                 diagnostic.constData());
+        QVERIFY2(run.err.contains(std::strerror(error)), diagnostic.constData());
+        QVERIFY2(run.out.isEmpty(), run.out.constData()); // no path printed as if it succeeded
+        QCOMPARE(contents(out), QByteArray("old content\n"));
+    }
+    // Without the injected failure the same command writes the file.
+    const QString out = dir_.filePath("out-ok");
+    QCOMPARE(runCli(substituted(args, session_, out)).exitCode, 0);
+    QVERIFY(QFile(out).size() > 0);
+}
+
+void TstCliFiles::specialFilesAreNotReplaced() {
+    // A FIFO stands for any special file (/dev/null as root was replaced by a regular file).
+    const QString fifo = dir_.filePath("pipe-out");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    for (const QStringList& args : {QStringList{"new", "-o", fifo},
+                                    QStringList{"export", session_, "--format", "c", "-o", fifo}}) {
+        const auto run = runCli(args, 20000);
+        QVERIFY2(run.finished && run.exitCode == 2, run.err.constData());
+        QVERIFY2(run.err.contains("not a regular file"), run.err.constData());
+        struct stat st {};
+        QVERIFY(::stat(QFile::encodeName(fifo).constData(), &st) == 0 && S_ISFIFO(st.st_mode));
+    }
+}
+
+void TstCliFiles::specialFilesAreNotRead() {
+    // A FIFO without a writer blocked forever; /dev/zero was read until bad_alloc (2.1 GB).
+    const QString fifo = dir_.filePath("pipe-in");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    for (const QString& path : {fifo, QStringLiteral("/dev/zero"), QStringLiteral("/dev/urandom")}) {
+        const auto run = runCli({"report", path}, 10000);
+        QVERIFY2(run.finished, qPrintable(path + " was still being read after 10 s"));
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains("not a regular file"), run.err.constData());
+    }
+}
+
+void TstCliFiles::reportEscapesLabels() {
+    // NUL cut the report short; ESC, BEL and CR reached the terminal raw.
+    QByteArray json = contents(session_);
+    const qsizetype at = json.indexOf("\"label\": \"");
+    QVERIFY(at > 0);
+    const qsizetype end = json.indexOf('"', at + 10);
+    json.replace(at, end - at + 1, R"("label": "a\u0000b\u001b[2J\u0007\rZ")");
+    const QString path = dir_.filePath("hostile.json");
+    put(path, json);
+    const auto run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 0);
+    for (const char c : run.out)
+        QVERIFY2(static_cast<unsigned char>(c) >= 0x20 || c == '\n',
+                 qPrintable(QStringLiteral("control byte %1 in the report").arg(int(c))));
+    QVERIFY2(run.out.contains("a\\x00b\\x1b[2J\\x07\\x0dZ"), run.out.constData());
+    QVERIFY(run.out.contains("== Axis y")); // the report goes on past the NUL
+}
+
+void TstCliFiles::duplicateKeyIsRefused() {
+    // Qt keeps the last of two equal keys, other readers the first: refuse, naming the key.
+    QByteArray json = contents(session_);
+    const qsizetype at = json.indexOf("\"umax\":");
+    QVERIFY(at > 0);
+    json.insert(at, "\"umax\": 250,\n    ");
+    const QString path = dir_.filePath("duplicate.json");
+    put(path, json);
+    const auto run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains("umax: appears more than once"), run.err.constData());
+}
+
+void TstCliFiles::fullDiskKeepsOldFile() {
+    QTemporaryDir disk;
+    if (const QString why = xyt::test::mountSmallFilesystem(disk.path(), 64); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const auto unmount = qScopeGuard([&] { xyt::test::unmountSmallFilesystem(disk.path()); });
+    // The session itself on the full disk, so that export replaces it in place as in the issue.
+    const QString session = disk.filePath("s.json");
+    QCOMPARE(runCli({"new", "-o", session}).exitCode, 0);
+    const QByteArray before = contents(session);
+    xyt::test::fillFilesystem(disk.path());
+    for (const QString format : {"c", "json", "m", "csv"}) {
+        const auto run = runCli({"export", session, "--format", format, "-o", session});
+        QVERIFY2(run.exitCode == 2, run.err.constData());
+        QVERIFY2(run.err.contains(std::strerror(ENOSPC)), run.err.constData());
+        QCOMPARE(contents(session), before);
+    }
+    const auto run = runCli({"new", "-o", session});
+    QVERIFY2(run.exitCode == 2 && run.err.contains(std::strerror(ENOSPC)), run.err.constData());
+    QCOMPARE(contents(session), before);
+}
+
+QTEST_APPLESS_MAIN(TstCliFiles)
+#include "tst_cli_files.moc"
