@@ -65,6 +65,15 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     if (!std::isfinite(d.kf))
         throw InvalidInput("b", "B(1) = " + formatNumber(b1) +
                                     " is too small: Kf = T(1)/B(1) overflows a double");
+    // Finite is not enough: with B scaled down to ~1e-307 (A(0) = -DBL_MAX) Kf and G reach
+    // ~1e306, and Kf r or G y overflow within a few samples of a stable loop (found by
+    // fuzz_design, regression input tests/fuzz/corpus/fuzz_design/crash-kf-command-overflow).
+    // No physical axis needs a gain beyond 1e100: that still leaves 200 decades of headroom for
+    // references up to 1e6 mm and the loop's transient growth.
+    constexpr double kMaxGain = 1e100;
+    if (std::abs(d.kf) > kMaxGain || d.g.maxAbsCoefficient() > kMaxGain || d.f.maxAbsCoefficient() > kMaxGain)
+        throw InvalidInput("b", "B(1) = " + formatNumber(b1) + " is negligible: the controller "
+                                    "(Kf = " + formatNumber(d.kf) + ") would need gains beyond 1e100");
     d.closedLoopNum = d.kf * d.b;
     d.closedLoopDen = d.t;
     if (d.a.degree() > 0)
