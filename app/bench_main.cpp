@@ -3,17 +3,17 @@
 //   name: median_us=... min_us=... max_us=... runs=...
 // Optional argument: a substring; only figures whose name contains it are run. The core figures
 // come first; gui_slider_to_repaint (last) times the widgets on the offscreen platform.
-#include "core/design_sweep.h"
-#include "core/guillemin_truxal.h"
-#include "core/root_locus.h"
-#include "core/pole_placement.h"
-#include "core/simulation.h"
-#include "core/trajectory.h"
-#include "core/zpetc.h"
-#include "core/zpetc_tracking.h"
+#include "core/study/design_sweep.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/analysis/root_locus.h"
+#include "core/design/pole_placement.h"
+#include "core/simulation/simulation.h"
+#include "core/simulation/trajectory.h"
+#include "core/design/zpetc.h"
+#include "core/simulation/zpetc_tracking.h"
 #include "ui/main_window.h"
-#include "ui/parameter_slider.h"
-#include "ui/tuning_session.h"
+#include "ui/panels/parameter_slider.h"
+#include "ui/session/tuning_session.h"
 
 #include <QApplication>
 #include <QSlider>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli_args.h"
 
-#include "core/coefficient_parser.h"
-#include "core/errors.h"
+#include "core/model/coefficient_parser.h"
+#include "core/model/errors.h"
 
 namespace xyt::cli {
 

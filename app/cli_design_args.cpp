@@ -3,9 +3,9 @@
 
 #include "app/cli_json.h"
 
-#include "core/errors.h"
-#include "core/file_io.h"
-#include "core/trajectory.h"
+#include "core/model/errors.h"
+#include "core/io/file_io.h"
+#include "core/simulation/trajectory.h"
 
 
 #include <cmath>

@@ -6,9 +6,9 @@
 
 #include "app/cli_args.h"
 
-#include "core/file_io.h"
-#include "core/guillemin_truxal.h"
-#include "core/simulation.h"
+#include "core/io/file_io.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/simulation/simulation.h"
 
 #include <QJsonObject>
 #include <QString>

@@ -5,12 +5,12 @@
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
-#include "core/contour_error.h"
-#include "core/errors.h"
-#include "core/guillemin_truxal.h"
-#include "core/metrics.h"
-#include "core/simulation.h"
-#include "core/trajectory.h"
+#include "core/simulation/contour_error.h"
+#include "core/model/errors.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/simulation/metrics.h"
+#include "core/simulation/simulation.h"
+#include "core/simulation/trajectory.h"
 
 #include <QTextStream>
 

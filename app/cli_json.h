@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/metrics.h"
-#include "core/polynomial.h"
-#include "core/transfer_function.h"
+#include "core/simulation/metrics.h"
+#include "core/model/polynomial.h"
+#include "core/model/transfer_function.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

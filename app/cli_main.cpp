@@ -3,9 +3,9 @@
 // naming the argument, exit code 2.
 #include "app/cli_commands.h"
 
-#include "core/errors.h"
-#include "core/file_io.h"
-#include "core/text_escape.h"
+#include "core/model/errors.h"
+#include "core/io/file_io.h"
+#include "core/io/text_escape.h"
 
 #include <QCoreApplication>
 
@@ -108,7 +108,7 @@ int main(int argc, char* argv[]) {
     try {
         return it->second(args);
     } catch (const xyt::FileError& e) {
-        // Every write is atomic (core/file_io.h): a failed one leaves any old file as it was.
+        // Every write is atomic (core/io/file_io.h): a failed one leaves any old file as it was.
         std::fprintf(stderr, "xytune-cli %s: cannot write %s; nothing was written, an existing file is unchanged\n",
                      qPrintable(name), oneLine(e.what()).c_str());
         return 1;

@@ -4,12 +4,12 @@
 #include "app/cli_commands.h"
 #include "app/cli_json.h"
 
-#include "core/coefficient_parser.h"
-#include "core/errors.h"
-#include "core/pole_placement.h"
-#include "core/trajectory.h"
-#include "core/zpetc.h"
-#include "core/zpetc_tracking.h"
+#include "core/model/coefficient_parser.h"
+#include "core/model/errors.h"
+#include "core/design/pole_placement.h"
+#include "core/simulation/trajectory.h"
+#include "core/design/zpetc.h"
+#include "core/simulation/zpetc_tracking.h"
 
 #include <QJsonArray>
 

@@ -5,10 +5,10 @@
 #include "app/cli_commands.h"
 #include "app/cli_json.h"
 
-#include "core/coefficient_parser.h"
-#include "core/errors.h"
-#include "core/guillemin_truxal.h"
-#include "core/root_locus.h"
+#include "core/model/coefficient_parser.h"
+#include "core/model/errors.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/analysis/root_locus.h"
 
 #include <map>
 #include <optional>

@@ -4,13 +4,13 @@
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
 
-#include "core/errors.h"
-#include "core/export_text.h"
-#include "core/file_io.h"
-#include "core/text_escape.h"
-#include "core/session_evaluation.h"
-#include "ui/coefficient_json.h"
-#include "ui/session_file.h"
+#include "core/model/errors.h"
+#include "core/session/export_text.h"
+#include "core/io/file_io.h"
+#include "core/io/text_escape.h"
+#include "core/session/session_evaluation.h"
+#include "ui/session/coefficient_json.h"
+#include "ui/session/session_file.h"
 
 #include <QJsonDocument>
 #include <QTextStream>

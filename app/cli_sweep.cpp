@@ -5,9 +5,9 @@
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
-#include "core/coefficient_parser.h"
-#include "core/design_sweep.h"
-#include "core/errors.h"
+#include "core/model/coefficient_parser.h"
+#include "core/study/design_sweep.h"
+#include "core/model/errors.h"
 
 #include <QTextStream>
 

@@ -3,10 +3,10 @@
 // window with the default design offscreen and exits.
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
-#include "ui/recovery_store.h"
-#include "ui/session_file.h"
-#include "ui/session_file_controller.h"
-#include "ui/tuning_session.h"
+#include "ui/session/recovery_store.h"
+#include "ui/session/session_file.h"
+#include "ui/session/session_file_controller.h"
+#include "ui/session/tuning_session.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

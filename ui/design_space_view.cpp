@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/design_space_view.h"
 
-#include "core/errors.h"
-#include "core/session_evaluation.h"
-#include "core/trajectory.h"
-#include "ui/design_space_plot.h"
-#include "ui/tuning_session.h"
+#include "core/model/errors.h"
+#include "core/session/session_evaluation.h"
+#include "core/simulation/trajectory.h"
+#include "ui/plots/design_space_plot.h"
+#include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
 #include <QComboBox>

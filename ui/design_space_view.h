@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/design_sweep.h"
-#include "core/session.h"
+#include "core/study/design_sweep.h"
+#include "core/session/session.h"
 
 #include <QWidget>
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/snapshot_compare_dialog.h"
 
-#include "core/session_evaluation.h"
-#include "ui/metrics_panel.h"
+#include "core/session/session_evaluation.h"
+#include "ui/panels/metrics_panel.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

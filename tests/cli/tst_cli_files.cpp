@@ -87,7 +87,7 @@ void TstCliFiles::failedWriteKeepsOldFile_data() {
 void TstCliFiles::failedWriteKeepsOldFile() {
     QFETCH(QStringList, args);
     QFETCH(QString, argument);
-    // The injected failure at each step of the write (core/file_io.h test hook).
+    // The injected failure at each step of the write (core/io/file_io.h test hook).
     const std::pair<QString, int> steps[] = {{"write", ENOSPC}, {"sync", EIO}, {"rename", EIO}};
     for (const auto& [step, error] : steps) {
         const QString out = dir_.filePath("out-" + step);

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The CLI contract of issue 2 for gt / simulate / report: keys, values equal to the core's,
 // the CSV columns, and exit code 2 with one stderr line naming the argument for bad input.
-#include "core/guillemin_truxal.h"
-#include "core/metrics.h"
-#include "core/simulation.h"
-#include "core/trajectory.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/simulation/metrics.h"
+#include "core/simulation/simulation.h"
+#include "core/simulation/trajectory.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance.h"
 

@@ -76,7 +76,7 @@ void TstCliSweep::contractKeysAndCsv() {
 }
 
 void TstCliSweep::strictSpecHasNoBest() {
-    // Paper 000's strict "no overshoot": no type-2 design meets it (see core/specification.h).
+    // Paper 000's strict "no overshoot": no type-2 design meets it (see core/study/specification.h).
     const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "1:3:3", "--kp", "10:50:3"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);

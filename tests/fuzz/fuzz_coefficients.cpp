@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// libFuzzer harness: the coefficient parser (core/coefficient_parser.h) on arbitrary text, as
+// libFuzzer harness: the coefficient parser (core/model/coefficient_parser.h) on arbitrary text, as
 // pasted from a paper or MATLAB. Either the text is rejected with xyt::InvalidInput whose message
 // is one printable line (the CLI prints it as its single stderr line), or the result holds
 // 1..kMaxCoefficients finite values that survive a print/parse round trip exactly.
 #include "tests/fuzz/fuzz_support.h"
 
-#include "core/coefficient_parser.h"
-#include "core/errors.h"
+#include "core/model/coefficient_parser.h"
+#include "core/model/errors.h"
 
 #include <cstdint>
 #include <cstdio>

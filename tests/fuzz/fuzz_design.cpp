@@ -6,15 +6,15 @@
 // hundred samples per simulation, a few thousand locus points), so a hang is a real defect.
 #include "tests/fuzz/fuzz_support.h"
 
-#include "core/diophantine.h"
-#include "core/errors.h"
-#include "core/guillemin_truxal.h"
-#include "core/pole_placement.h"
-#include "core/root_locus.h"
-#include "core/simulation.h"
-#include "core/trajectory.h"
-#include "core/zpetc.h"
-#include "core/zpetc_tracking.h"
+#include "core/design/diophantine.h"
+#include "core/model/errors.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/design/pole_placement.h"
+#include "core/analysis/root_locus.h"
+#include "core/simulation/simulation.h"
+#include "core/simulation/trajectory.h"
+#include "core/design/zpetc.h"
+#include "core/simulation/zpetc_tracking.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// libFuzzer harness: the session file loader (ui/session_file.h sessionFromBytes) on arbitrary
+// libFuzzer harness: the session file loader (ui/session/session_file.h sessionFromBytes) on arbitrary
 // bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
 // accepts must hold finite numbers and survive a save/load round trip unchanged, and its labels
 // must reach the exports only as text that cannot end a comment or drive a terminal (issue 20).
 #include "tests/fuzz/fuzz_support.h"
 
-#include "core/text_escape.h"
-#include "ui/session_file.h"
+#include "core/io/text_escape.h"
+#include "ui/session/session_file.h"
 
 #include <QByteArray>
 #include <QJsonDocument>

@@ -5,8 +5,8 @@
 // parameters, and checks that abort() (so libFuzzer and the replay test report a crash) when a
 // result that the code reported as valid holds NaN or infinity.
 
-#include "core/polynomial.h"
-#include "core/transfer_function.h"
+#include "core/model/polynomial.h"
+#include "core/model/transfer_function.h"
 
 #include <cmath>
 #include <complex>

@@ -4,8 +4,8 @@
 // Checks shared by the core tests: which field an InvalidInput names, and coefficient-wise
 // polynomial comparison.
 
-#include "core/errors.h"
-#include "core/polynomial.h"
+#include "core/model/errors.h"
+#include "core/model/polynomial.h"
 #include "tests/support/tolerance.h"
 
 #include <QString>

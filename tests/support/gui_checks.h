@@ -2,16 +2,16 @@
 #pragma once
 // GUI test helpers: answer every modal dialog and popup a test opens, and check that what the
 // workbench's plots hold is what the core computes for the presenter's state.
-#include "core/parameter_locus.h"
-#include "core/pole_zero_map.h"
-#include "core/root_locus.h"
-#include "core/session_evaluation.h"
+#include "core/analysis/parameter_locus.h"
+#include "core/analysis/pole_zero_map.h"
+#include "core/analysis/root_locus.h"
+#include "core/session/session_evaluation.h"
 #include "ui/main_window.h"
-#include "ui/parameter_locus_plot.h"
-#include "ui/pole_zero_plot.h"
-#include "ui/root_locus_plot.h"
-#include "ui/time_response_plot.h"
-#include "ui/tuning_session.h"
+#include "ui/plots/parameter_locus_plot.h"
+#include "ui/plots/pole_zero_plot.h"
+#include "ui/plots/root_locus_plot.h"
+#include "ui/plots/time_response_plot.h"
+#include "ui/session/tuning_session.h"
 #include "tests/support/tolerance.h"
 
 #include <QAbstractButton>

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // GUI tests of the design-space view: drive the real buttons and the plot offscreen; compare the
 // heat map with the core's sweepDesignSpace called directly on the same problem.
-#include "ui/design_space_plot.h"
+#include "ui/plots/design_space_plot.h"
 #include "ui/design_space_view.h"
-#include "ui/tuning_session.h"
-#include "core/session_evaluation.h"
-#include "core/trajectory.h"
+#include "ui/session/tuning_session.h"
+#include "core/session/session_evaluation.h"
+#include "core/simulation/trajectory.h"
 #include "tests/support/tolerance.h"
 
 #include <QCheckBox>

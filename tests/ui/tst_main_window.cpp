@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // GUI tests: drive the real widgets offscreen and assert on the presenter's state and the plots'
 // data, not on pixels.
-#include "ui/contour_plot.h"
-#include "ui/equations_panel.h"
+#include "ui/plots/contour_plot.h"
+#include "ui/panels/equations_panel.h"
 #include "ui/main_window.h"
-#include "ui/number_field.h"
-#include "ui/parameter_slider.h"
-#include "ui/plant_editor.h"
-#include "ui/pp_editor.h"
-#include "ui/root_locus_plot.h"
-#include "ui/time_response_plot.h"
-#include "ui/trajectory_editor.h"
-#include "ui/tuning_session.h"
+#include "ui/panels/number_field.h"
+#include "ui/panels/parameter_slider.h"
+#include "ui/panels/plant_editor.h"
+#include "ui/panels/pp_editor.h"
+#include "ui/plots/root_locus_plot.h"
+#include "ui/plots/time_response_plot.h"
+#include "ui/panels/trajectory_editor.h"
+#include "ui/session/tuning_session.h"
 #include "tests/support/tolerance.h"
 
 #include <QComboBox>

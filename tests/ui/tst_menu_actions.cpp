@@ -4,9 +4,9 @@
 // also runs instrumented) wherever a menu or dialog mishandles a state: the class of defect that
 // made Design > Compare designs... segfault with one snapshot stored (issue 15).
 #include "ui/main_window.h"
-#include "ui/plot_tools.h"
+#include "ui/plots/plot_tools.h"
 #include "ui/snapshot_compare_dialog.h"
-#include "ui/tuning_session.h"
+#include "ui/session/tuning_session.h"
 #include "tests/support/gui_checks.h"
 
 #include <QMenuBar>

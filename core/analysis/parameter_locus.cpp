@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/analysis/parameter_locus.h"
+
+#include "core/model/errors.h"
+#include "core/model/root_matching.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace xyt {
+
+namespace {
+
+using Complex = std::complex<double>;
+
+struct Sample {
+    double value;
+    std::vector<Complex> roots;
+};
+
+double maxDisplacement(const std::vector<Complex>& a, const std::vector<Complex>& b) {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        worst = std::max(worst, std::abs(a[i] - b[i]));
+    return worst;
+}
+
+class Refiner {
+public:
+    Refiner(const ParameterSweep& sweep,
+            const std::function<std::vector<Complex>(double)>& poles, double bound)
+        : sweep_(sweep), poles_(poles), bound_(bound) {}
+
+    /// Appends the samples after out.back() up to and including @p end, refined, matched.
+    void extend(std::vector<Sample>& out, const Sample& end, int depth) const {
+        const Sample& start = out.back();
+        std::vector<Complex> matched = continueBranches(start.roots, end.roots);
+        if (depth >= sweep_.maxRefinements || maxDisplacement(start.roots, matched) <= bound_) {
+            out.push_back({end.value, std::move(matched)});
+            return;
+        }
+        const double mid = sweep_.logSpacing ? std::sqrt(start.value * end.value)
+                                              : 0.5 * (start.value + end.value);
+        std::vector<Complex> midRoots = poles_(mid);
+        if (midRoots.size() != start.roots.size()) {
+            out.push_back({end.value, std::move(matched)});
+            return;
+        }
+        extend(out, Sample{mid, std::move(midRoots)}, depth + 1);
+        extend(out, end, depth + 1);
+    }
+
+private:
+    const ParameterSweep& sweep_;
+    const std::function<std::vector<Complex>(double)>& poles_;
+    double bound_;
+};
+
+} // namespace
+
+std::vector<double> sweepValues(const ParameterSweep& s) {
+    requireFinite(s.from, "from");
+    requireFinite(s.to, "to");
+    if (s.from == s.to)
+        throw InvalidInput("to", "must differ from 'from'");
+    if (s.logSpacing) {
+        requirePositive(s.from, "from");
+        requirePositive(s.to, "to");
+    }
+    if (s.count < 2 || s.count > 100000)
+        throw InvalidInput("count", "must be in 2..100000");
+    if (!(s.maxStepFraction > 0.0 && s.maxStepFraction <= 1.0))
+        throw InvalidInput("maxStepFraction", "must be in (0, 1]");
+    if (s.maxRefinements < 0 || s.maxRefinements > 20)
+        throw InvalidInput("maxRefinements", "must be in 0..20");
+    std::vector<double> v(static_cast<std::size_t>(s.count));
+    for (int i = 0; i < s.count; ++i) {
+        const double t = static_cast<double>(i) / (s.count - 1);
+        v[static_cast<std::size_t>(i)] =
+            s.logSpacing ? s.from * std::pow(s.to / s.from, t) : s.from + t * (s.to - s.from);
+    }
+    v.back() = s.to; // exact end despite round-off
+    return v;
+}
+
+ParameterLocus parameterLocus(const std::string& parameterName, const ParameterSweep& sweep,
+                              const std::function<std::vector<std::complex<double>>(double)>& poles) {
+    const std::vector<double> values = sweepValues(sweep);
+    ParameterLocus locus;
+    locus.parameterName = parameterName;
+    std::vector<Sample> base;
+    for (double v : values) {
+        std::vector<Complex> roots = poles(v);
+        if (!base.empty() && roots.size() != base.front().roots.size()) {
+            locus.warnings.push_back(parameterName + " = " + std::to_string(v) +
+                                     ": skipped, the pole count changed");
+            continue;
+        }
+        base.push_back({v, std::move(roots)});
+    }
+    // The step bound is a fraction of the extent of all base poles (the view they need).
+    double reMin = std::numeric_limits<double>::infinity(), reMax = -reMin, imAbs = 0.0;
+    for (const Sample& s : base)
+        for (const Complex& r : s.roots) {
+            reMin = std::min(reMin, r.real());
+            reMax = std::max(reMax, r.real());
+            imAbs = std::max(imAbs, std::abs(r.imag()));
+        }
+    const double extent = std::max(reMax - reMin, 2.0 * imAbs);
+    const Refiner refiner(sweep, poles, sweep.maxStepFraction * extent);
+    std::vector<Sample> samples{base.front()};
+    for (std::size_t i = 1; i < base.size(); ++i)
+        refiner.extend(samples, base[i], 0);
+    locus.branches.assign(samples.front().roots.size(), {});
+    for (const Sample& s : samples) {
+        locus.values.push_back(s.value);
+        for (std::size_t b = 0; b < s.roots.size(); ++b)
+            locus.branches[b].push_back(s.roots[b]);
+    }
+    return locus;
+}
+
+ParameterLocus gtParameterLocus(const ThirdOrderPlant& plant, GtSweptParameter parameter,
+                                const ParameterSweep& sweep, double fixedValue) {
+    plant.validate();
+    const bool sweepsOmega = parameter == GtSweptParameter::OmegaN;
+    requirePositive(fixedValue, sweepsOmega ? "kp" : "wn");
+    const std::string name = sweepsOmega ? "wn" : "kp";
+    if (!(std::min(sweep.from, sweep.to) > 0.0))
+        throw InvalidInput(name, "the swept values must be > 0");
+    return parameterLocus(name, sweep, [&](double value) {
+        const GtDesign d = sweepsOmega ? designGuilleminTruxal(plant, value, fixedValue)
+                                       : designGuilleminTruxal(plant, fixedValue, value);
+        return d.closedLoopPoles;
+    });
+}
+
+} // namespace xyt

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/design/guillemin_truxal.h"
+
+#include "core/model/errors.h"
+
+namespace xyt {
+
+void ThirdOrderPlant::validate() const {
+    requireNonZero(k0, "k0");
+    requireFinite(a1, "a1");
+    requireFinite(a2, "a2");
+}
+
+TransferFunction ThirdOrderPlant::transferFunction() const {
+    validate();
+    return TransferFunction::fromDescending({k0}, {1.0, a1, a2, 0.0});
+}
+
+GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPerSec, double kp) {
+    plant.validate();
+    requirePositive(omegaNRadPerSec, "wn");
+    requirePositive(kp, "kp");
+    const double wn = omegaNRadPerSec;
+    const double wn2 = wn * wn, wn3 = wn2 * wn, wn4 = wn2 * wn2;
+    GtDesign d;
+    d.plant = plant;
+    d.omegaNRadPerSec = wn;
+    d.kp = kp;
+    d.f1 = plant.a1 / wn;                 // Eq. 17 (Eq. 14 with psi2 = 0)
+    d.f2 = plant.a2 / wn2;                // Eq. 18
+    d.f3 = kp * plant.k0 / wn3;           // Eq. 15
+    d.psi2 = 0.0;                         // Eq. 12 with Eq. 15
+    d.psi1 = wn4 / (kp * plant.k0);       // Eq. 11
+    d.ki = kp * d.psi1;                   // Eq. 16
+    d.referenceModel = TransferFunction::fromDescending(
+        {d.f3 * wn3, wn4}, {1.0, d.f1 * wn, d.f2 * wn2, d.f3 * wn3, wn4});
+    d.controller = TransferFunction::fromDescending({kp, d.ki}, {1.0, 0.0});
+    d.openLoop = series(d.controller, plant.transferFunction());
+    d.closedLoop = feedback(d.openLoop);
+    d.closedLoopPoles = d.closedLoop.poles();
+    d.stable = d.closedLoop.isStable();
+    return d;
+}
+
+const std::vector<GtPreset>& gtPresets() {
+    static const std::vector<GtPreset> presets = {
+        {"lower-base", "Lower base, paper 000 Eq. 2 (design of Sec. 3.1)", {77.8, 125.3, 3665.0},
+         2.0, 30.0, 0.001},
+        {"upper-base", "Upper base, paper 000 Eq. 1 (design of Sec. 3.2)", {24.44, 68.18, 863.0},
+         1.0, 30.0, 0.001},
+    };
+    return presets;
+}
+
+std::optional<GtPreset> findGtPreset(const std::string& name) {
+    for (const auto& p : gtPresets())
+        if (p.name == name)
+            return p;
+    return std::nullopt;
+}
+
+} // namespace xyt

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/model/transfer_function.h"
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/// G(s) = k0 / (s^3 + a1 s^2 + a2 s), paper 000 Eq. 9 (a DC motor base with an integrator).
+struct ThirdOrderPlant {
+    double k0 = 0.0;
+    double a1 = 0.0;
+    double a2 = 0.0;
+
+    /// @throws InvalidInput "k0" (finite, nonzero), "a1", "a2" (finite).
+    void validate() const;
+    TransferFunction transferFunction() const;
+    friend bool operator==(const ThirdOrderPlant&, const ThirdOrderPlant&) = default;
+};
+
+/**
+ * The Guillemin-Truxal PI design of paper 000. With the controller G_c = k (s + psi1)/(s + psi2)
+ * (Eq. 8) the closed loop is Eq. 10; matching it to the type-2 reference model
+ *   G_R(s) = (f3 wn^3 s + wn^4) / (s^4 + f1 wn s^3 + f2 wn^2 s^2 + f3 wn^3 s + wn^4)
+ * (Eq. 7, whose s^2 the paper misprints as s) gives, by Eq. 11-18:
+ *   psi2 = 0, f1 = a1/wn, f2 = a2/wn^2, f3 = kp k0/wn^3, psi1 = wn^4/(kp k0), ki = kp psi1,
+ * so G_c(s) = kp + ki/s (Eq. 16) and the closed loop equals G_R exactly.
+ */
+struct GtDesign {
+    ThirdOrderPlant plant;
+    double omegaNRadPerSec = 0.0;
+    double f1 = 0.0, f2 = 0.0, f3 = 0.0;
+    double psi1 = 0.0, psi2 = 0.0;
+    double kp = 0.0, ki = 0.0;
+    TransferFunction referenceModel; ///< G_R(s), Eq. 7
+    TransferFunction controller;     ///< (kp s + ki)/s, Eq. 16
+    TransferFunction openLoop;       ///< G_c G
+    TransferFunction closedLoop;     ///< feedback(G_c G), which equals G_R
+    std::vector<std::complex<double>> closedLoopPoles;
+    bool stable = false; ///< an unstable result is returned, not thrown: a slider can reach it
+};
+
+/// @throws InvalidInput "wn" or "kp" unless finite and > 0, and the plant's fields.
+GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPerSec, double kp);
+
+/// A named plant and design of paper 000.
+struct GtPreset {
+    std::string name;
+    std::string description;
+    ThirdOrderPlant plant;
+    double omegaNRadPerSec;
+    double kp;
+    /// Model output units per trajectory unit: the paper's models are in metres and its
+    /// trajectories in millimetres (see LoopSimulationOptions::modelUnitsPerPositionUnit).
+    double modelUnitsPerPositionUnit;
+};
+
+/// "lower-base" (Eq. 2: k0 77.8, a1 125.3, a2 3665; wn 2, kp 30) and "upper-base" (Eq. 1:
+/// k0 24.44, a1 68.18, a2 863; wn 1, kp 30).
+const std::vector<GtPreset>& gtPresets();
+std::optional<GtPreset> findGtPreset(const std::string& name);
+
+} // namespace xyt

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/model/state_space.h"
+
+#include "core/model/errors.h"
+
+#include <Eigen/Eigenvalues>
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace xyt {
+
+StateSpace realize(const TransferFunction& tf) {
+    if (!tf.isProper())
+        throw InvalidInput("num", "an improper transfer function has no state-space realization");
+    const int n = tf.den().degree();
+    Polynomial direct, rest;
+    Polynomial::divide(tf.num(), tf.den(), direct, rest);
+    StateSpace ss;
+    ss.tsSeconds = tf.tsSeconds();
+    ss.a = Eigen::MatrixXd::Zero(n, n);
+    ss.b = Eigen::MatrixXd::Zero(n, 1);
+    ss.c = Eigen::MatrixXd::Zero(1, n);
+    ss.d = Eigen::MatrixXd::Constant(1, 1, direct.coefficient(0));
+    for (int i = 0; i + 1 < n; ++i)
+        ss.a(i, i + 1) = 1.0;
+    for (int j = 0; j < n; ++j) {
+        ss.a(n - 1, j) = -tf.den().coefficient(j); // the denominator is monic
+        ss.c(0, j) = rest.coefficient(j);
+    }
+    if (n > 0)
+        ss.b(n - 1, 0) = 1.0;
+    return ss;
+}
+
+StateSpace discretizeZoh(const StateSpace& continuous, double tsSeconds) {
+    requirePositive(tsSeconds, "ts");
+    if (continuous.tsSeconds > 0.0)
+        throw InvalidInput("system", "is already discrete");
+    const Eigen::Index n = continuous.states();
+    const Eigen::Index m = continuous.b.cols();
+    Eigen::MatrixXd aug = Eigen::MatrixXd::Zero(n + m, n + m);
+    aug.topLeftCorner(n, n) = continuous.a * tsSeconds;
+    aug.topRightCorner(n, m) = continuous.b * tsSeconds;
+    const Eigen::MatrixXd e = aug.exp();
+    StateSpace d = continuous;
+    d.tsSeconds = tsSeconds;
+    d.a = e.topLeftCorner(n, n);
+    d.b = e.topRightCorner(n, m);
+    return d;
+}
+
+Polynomial characteristicPolynomial(const Eigen::MatrixXd& m) {
+    if (m.rows() == 0)
+        return Polynomial::constant(1.0);
+    Eigen::EigenSolver<Eigen::MatrixXd> solver(m, false);
+    const Eigen::VectorXcd ev = solver.eigenvalues();
+    std::vector<std::complex<double>> roots(ev.data(), ev.data() + ev.size());
+    return Polynomial::fromRoots(roots);
+}
+
+TransferFunction c2dZoh(const TransferFunction& continuous, double tsSeconds) {
+    if (continuous.isDiscrete())
+        throw InvalidInput("system", "is already discrete");
+    const StateSpace d = discretizeZoh(realize(continuous), tsSeconds);
+    const Polynomial den = characteristicPolynomial(d.a);
+    const Polynomial closed = characteristicPolynomial(d.a - d.b * d.c);
+    const Polynomial num = closed - den + d.d(0, 0) * den;
+    return TransferFunction(num, den, tsSeconds);
+}
+
+FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b,
+                                double tsSeconds) {
+    requirePositive(tsSeconds, "ts");
+    const Eigen::Index n = a.rows();
+    const Eigen::Index m = b.cols();
+    // Augmented state [x; w; rho] with w the input and rho its slope: x' = A x + B w, w' = rho.
+    Eigen::MatrixXd aug = Eigen::MatrixXd::Zero(n + 2 * m, n + 2 * m);
+    aug.block(0, 0, n, n) = a;
+    aug.block(0, n, n, m) = b;
+    aug.block(n, n + m, m, m) = Eigen::MatrixXd::Identity(m, m);
+    const Eigen::MatrixXd e = (aug * tsSeconds).exp();
+    FohDiscretization foh;
+    foh.phi = e.block(0, 0, n, n);
+    foh.gamma0 = e.block(0, n, n, m);
+    foh.gamma1 = e.block(0, n + m, n, m); // multiplies the slope rho = (u[k+1] - u[k]) / Ts
+    return foh;
+}
+
+} // namespace xyt

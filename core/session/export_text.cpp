@@ -1,0 +1,301 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/export_text.h"
+
+#include "core/model/errors.h"
+#include "core/design/pole_placement.h"
+#include "core/io/text_escape.h"
+#include "core/simulation/trajectory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cctype>
+#include <cstdio>
+#include <sstream>
+
+namespace xyt {
+
+std::string exactNumber(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+namespace {
+
+std::string upper(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return s;
+}
+
+/// A number for an export, or the reason it cannot be one. A generated header or script with
+/// "inf" or "nan" in it does not compile, or computes something the session does not mean.
+std::string num(double v, const std::string& field) {
+    if (!std::isfinite(v))
+        throw InvalidInput(field, "gives " + exactNumber(v) +
+                                      " in the export, not a finite number; nothing was exported");
+    return exactNumber(v);
+}
+
+std::string axisField(int axisIndex, const std::string& part) {
+    return "axes[" + std::to_string(axisIndex) + "]" + (part.empty() ? "" : "." + part);
+}
+
+/// " (label)" as safe comment text, or nothing for an empty label.
+std::string labelComment(const AxisSettings& axis, CommentSyntax syntax) {
+    return axis.label.empty() ? "" : " (" + commentText(axis.label, syntax) + ")";
+}
+
+const AxisEvaluation& validAxis(const SessionEvaluation& evaluation, int axisIndex) {
+    const AxisEvaluation& a = evaluation.axes.at(static_cast<std::size_t>(axisIndex));
+    if (!a.ok)
+        throw InvalidInput("axes[" + std::to_string(axisIndex) + "]",
+                           "cannot be exported: " + a.errorField + ": " + a.error);
+    return a;
+}
+
+std::string joined(const std::vector<double>& v, const std::string& separator,
+                   const std::string& field) {
+    std::string out;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out += (i ? separator : "") + num(v[i], field);
+    return out;
+}
+
+std::string cArray(const std::string& name, const std::vector<double>& v, const std::string& field) {
+    return "#define " + name + "_LEN " + std::to_string(v.size()) + "\nstatic const double " + name +
+           "[" + name + "_LEN] XYT_MAYBE_UNUSED = {" + joined(v, ", ", field) + "};\n";
+}
+
+/// The RST law and ZPETC filter of a pole-placement axis as C arrays.
+std::string rstHeaderBlock(const AxisSettings& axis, const AxisEvaluation& a, const std::string& id,
+                           int axisIndex) {
+    const PolePlacementDesign& pp = *a.pp;
+    const std::string field = axisField(axisIndex, "pp");
+    std::ostringstream out;
+    out << "/* Axis " << axis.id << labelComment(axis, CommentSyntax::C)
+        << ": pole placement (paper 001), Ts = " << num(pp.tsSeconds, field + ".ts") << " s, T = 1 "
+        << (pp.t.coefficient(1) < 0 ? "- " : "+ ") << num(std::abs(pp.t.coefficient(1)), field + ".t1")
+        << " z^-1. Every Ts:\n"
+        << " *   F(z^-1) u[k] = KF w[k] - G(z^-1) y[k], i.e. (F[0] is 1 up to round-off)\n"
+        << " *   u[k] = (KF w[k] - sum_i G[i] y[k-i] - sum_{i>=1} F[i] u[k-i]) / F[0]\n";
+    if (axis.pp.zpetcEnabled && a.zpetc)
+        out << " * with the ZPETC feedforward reading the reference PREVIEW samples ahead:\n"
+            << " *   sum_i FF_DEN[i] w[k-i] = sum_i FF_NUM[i] r[k + PREVIEW - i]\n";
+    else
+        out << " * with w = r (no feedforward).\n";
+    out << " */\n";
+    out << "#define XYT_" << id << "_TS " << num(pp.tsSeconds, field + ".ts") << "\n";
+    out << "static const double XYT_" << id << "_KF XYT_MAYBE_UNUSED = " << num(pp.kf, field + " (Kf)") << ";\n";
+    out << cArray("XYT_" + id + "_F", pp.f.ascending(), field + " (F)");
+    out << cArray("XYT_" + id + "_G", pp.g.ascending(), field + " (G)");
+    if (axis.pp.zpetcEnabled && a.zpetc) {
+        out << "#define XYT_" << id << "_PREVIEW " << a.zpetc->previewSteps << "\n";
+        out << cArray("XYT_" + id + "_FF_NUM", a.zpetc->feedforwardNum.ascending(), field + ".zpetc (feedforward)");
+        out << cArray("XYT_" + id + "_FF_DEN", a.zpetc->feedforwardDen.ascending(), field + ".zpetc (feedforward)");
+    }
+    out << "\n";
+    return out.str();
+}
+
+} // namespace
+
+DigitalController axisDigitalController(const Session& session, const SessionEvaluation& evaluation,
+                                        int axisIndex, const ExportOptions& options) {
+    const AxisEvaluation& a = validAxis(evaluation, axisIndex);
+    if (a.gt)
+        return discretizePi(a.gt->kp, a.gt->ki, session.controllerTsSeconds, options.piMethod);
+    throw InvalidInput("axes[" + std::to_string(axisIndex) + "].method",
+                       "this axis has no digital controller to export");
+}
+
+std::string exportCHeader(const Session& session, const SessionEvaluation& evaluation,
+                          const ExportOptions& options) {
+    std::ostringstream out;
+    out << "/* XY Tune: controller coefficients for firmware (generated file).\n"
+           " * Coefficient order: ascending powers of z^-1. Each axis runs\n"
+           " *   u[k] = sum_i NUM[i] e[k-i] - sum_{i>=1} DEN[i] u[k-i],   e = r - y,\n"
+           " * every TS seconds (DEN[0] is 1). u is the motor command in volts; clamp it to\n"
+           " * +-" << num(session.umaxVolts, "umax") << " V as the design assumed.\n */\n"
+        << "#ifndef XYT_CONTROLLER_COEFFICIENTS_H\n#define XYT_CONTROLLER_COEFFICIENTS_H\n\n"
+        << "#if defined(__GNUC__)\n#define XYT_MAYBE_UNUSED __attribute__((unused))\n#else\n"
+           "#define XYT_MAYBE_UNUSED\n#endif\n\n"
+        << "#define XYT_UMAX_VOLTS " << num(session.umaxVolts, "umax") << "\n\n";
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        const std::string id = upper(axis.id);
+        const AxisEvaluation& a = validAxis(evaluation, i);
+        if (a.pp) {
+            out << rstHeaderBlock(axis, a, id, i);
+            continue;
+        }
+        const DigitalController c = axisDigitalController(session, evaluation, i, options);
+        const std::string gt = axisField(i, "gt");
+        const std::string pi = gt + " (digital PI at controller_ts)";
+        out << "/* Axis " << axis.id << labelComment(axis, CommentSyntax::C) << ": ";
+        if (a.gt)
+            out << "Guillemin-Truxal PI, kp = " << num(a.gt->kp, gt + ".kp")
+                << " V/model unit, ki = " << num(a.gt->ki, gt + " (ki)") << " V/(model unit s),\n * "
+                << discretizationName(options.piMethod) << " discretization at Ts = "
+                << num(c.tsSeconds, "controller_ts") << " s. Position in model units ("
+                << num(axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale") << " per mm).\n";
+        out << " *   u[k] = ";
+        for (std::size_t k = 1; k < c.den.size(); ++k)
+            out << "- XYT_" << id << "_DEN[" << k << "] u[k-" << k << "] ";
+        for (std::size_t k = 0; k < c.num.size(); ++k)
+            out << "+ XYT_" << id << "_NUM[" << k << "] e[k" << (k ? "-" + std::to_string(k) : "") << "] ";
+        out << "\n */\n";
+        out << "#define XYT_" << id << "_NUM_LEN " << c.num.size() << "\n";
+        out << "#define XYT_" << id << "_DEN_LEN " << c.den.size() << "\n";
+        out << "static const double XYT_" << id << "_NUM[XYT_" << id << "_NUM_LEN] XYT_MAYBE_UNUSED = {"
+            << joined(c.num, ", ", pi) << "};\n";
+        out << "static const double XYT_" << id << "_DEN[XYT_" << id << "_DEN_LEN] XYT_MAYBE_UNUSED = {"
+            << joined(c.den, ", ", pi) << "};\n";
+        out << "static const double XYT_" << id << "_TS XYT_MAYBE_UNUSED = " << num(c.tsSeconds, "controller_ts")
+            << ";\n\n";
+    }
+    out << "#endif /* XYT_CONTROLLER_COEFFICIENTS_H */\n";
+    return out.str();
+}
+
+namespace {
+
+/// Octave/MATLAB expression lines computing r_<id> on the vector t.
+std::string trajectoryLines(const TrajectorySettings& t, int axisIndex, const std::string& id) {
+    std::ostringstream out;
+    if (t.kind == TrajectoryKind::Cubic) {
+        const CubicTrajectory cubic(t.x0, t.xf, t.t0Seconds, t.tfSeconds, t.v0, t.vf);
+        const auto& l = cubic.localCoefficients();
+        const std::string f = "trajectory.cubic (tf - t0 too short for the move?)";
+        out << "tau = min(max(t - " << num(t.t0Seconds, "trajectory.cubic.t0") << ", 0), "
+            << num(t.tfSeconds - t.t0Seconds, "trajectory.cubic.tf") << ");\n";
+        out << "r_" << id << " = " << num(l[0], f) << " + " << num(l[1], f) << " * tau + "
+            << num(l[2], f) << " * tau.^2 + " << num(l[3], f)
+            << " * tau.^3;  % cubic point-to-point (paper 000 Eq. 4)\n";
+    } else {
+        out << "envelope = " << (t.rampInSeconds > 0 ? "min(t / " + num(t.rampInSeconds, "trajectory.circle.ramp_in") + ", 1)" : "ones(size(t))")
+            << ";\n";
+        out << "r_" << id << " = " << num(t.radius, "trajectory.circle.radius") << " * envelope .* "
+            << (axisIndex == 0 ? "sin" : "cos") << "(" << num(t.omegaRadPerSec, "trajectory.circle.omega")
+            << " * t);  % circle (paper 000 Eq. 23-24)\n";
+    }
+    return out.str();
+}
+
+} // namespace
+
+std::string exportOctaveScript(const Session& session, const SessionEvaluation& evaluation,
+                               const ExportOptions& options) {
+    std::ostringstream out;
+    out << "% XY Tune: plant, controller and closed loop of each axis (generated script).\n"
+           "% Runs in GNU Octave (with the control package) and in MATLAB.\n"
+           "if exist('OCTAVE_VERSION', 'builtin')\n  pkg load control\nend\n\n";
+    const double duration = session.trajectory.effectiveDurationSeconds();
+    out << "t = (0:" << num(session.trajectory.dtSeconds, "trajectory.dt") << ":"
+        << num(duration, "trajectory.duration")
+        << ")';\n\n";
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        const AxisEvaluation& a = validAxis(evaluation, i);
+        const std::string& id = axis.id;
+        out << "% Axis " << id << labelComment(axis, CommentSyntax::Octave) << "\n";
+        const std::string gt = axisField(i, "gt"), ppField = axisField(i, "pp");
+        if (a.gt) {
+            const auto& p = axis.gt.plant;
+            out << "plant_" << id << " = tf(" << num(p.k0, gt + ".plant.k0") << ", [1 " << num(p.a1, gt + ".plant.a1")
+                << " " << num(p.a2, gt + ".plant.a2") << " 0]);\n";
+            out << "controller_" << id << " = tf([" << num(a.gt->kp, gt + ".kp") << " "
+                << num(a.gt->ki, gt + " (ki)") << "], [1 0]);  % kp + ki/s\n";
+            out << "closed_loop_" << id << " = feedback(controller_" << id << " * plant_" << id
+                << ", 1);\n";
+            out << "% The same PI as the firmware runs it (" << discretizationName(options.piMethod)
+                << ", Ts = " << num(session.controllerTsSeconds, "controller_ts") << " s):\n";
+            const DigitalController c = axisDigitalController(session, evaluation, i, options);
+            out << "digital_controller_" << id << " = filt([" << joined(c.num, " ", gt + " (digital PI)") << "], ["
+                << joined(c.den, " ", gt + " (digital PI)") << "], " << num(c.tsSeconds, "controller_ts") << ");  % in z^-1\n";
+            out << trajectoryLines(session.trajectory, i, id);
+            out << "unit_" << id << " = " << num(axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale")
+                << ";  % model units per mm\n";
+            out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << " * unit_" << id
+                << ", t) / unit_" << id << ";\n\n";
+        } else if (a.pp) {
+            const PolePlacementDesign& pp = *a.pp;
+            const std::string ts = num(pp.tsSeconds, ppField + ".ts");
+            out << "Ts_" << id << " = " << ts << ";\n";
+            out << "plant_" << id << " = filt([" << joined(pp.b.ascending(), " ", ppField + ".b") << "], ["
+                << joined(pp.a.ascending(), " ", ppField + ".a") << "], Ts_" << id << ");  % B/A in z^-1\n";
+            out << "% RST pole placement: F u = Kf w - G y (paper 001 Eq. 7-8)\n";
+            out << "F_" << id << " = [" << joined(pp.f.ascending(), " ", ppField + " (F)") << "];\n";
+            out << "G_" << id << " = [" << joined(pp.g.ascending(), " ", ppField + " (G)") << "];\n";
+            out << "Kf_" << id << " = " << num(pp.kf, ppField + " (Kf)") << ";\n";
+            out << "controller_" << id << " = filt(G_" << id << ", F_" << id << ", Ts_" << id
+                << ");  % feedback path G/F\n";
+            out << "closed_loop_" << id << " = Kf_" << id << " * feedback(plant_" << id
+                << " * filt(1, F_" << id << ", Ts_" << id << "), filt(G_" << id << ", 1, Ts_" << id
+                << "));  % = Kf B / T\n";
+            out << "t_" << id << " = (0:Ts_" << id << ":" << num(duration, "trajectory.duration") << ")';\n";
+            out << "t_saved = t; t = t_" << id << ";\n" << trajectoryLines(session.trajectory, i, id)
+                << "t = t_saved;\n";
+            out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << ", t_" << id
+                << ");  % the loop alone, without the ZPETC feedforward\n\n";
+        }
+    }
+    out << "figure;\n";
+    for (int i = 0; i < 2; ++i) {
+        const std::string& id = session.axes[static_cast<std::size_t>(i)].id;
+        const std::string tt = evaluation.axes[static_cast<std::size_t>(i)].pp ? "t_" + id : "t";
+        out << "subplot(2, 1, " << (i + 1) << ");\nplot(" << tt << ", r_" << id << ", '--', " << tt << ", y_" << id
+            << ");\ngrid on;\nxlabel('time (s)');\nylabel('" << id << " (mm)');\nlegend('reference', 'output');\n";
+    }
+    return out.str();
+}
+
+void exportCsv(const Session& session, const SessionEvaluation& evaluation, const ByteSink& sink) {
+    const AxisEvaluation& x = validAxis(evaluation, 0);
+    const AxisEvaluation& y = validAxis(evaluation, 1);
+    const std::string& ix = session.axes[0].id;
+    const std::string& iy = session.axes[1].id;
+    // Refuse before writing anything: an unstable loop or an overflowing unit scale gives
+    // inf/nan samples, and a CSV of them is not a result.
+    for (int i = 0; i < 2; ++i) {
+        const SimulationResult& run = (i == 0 ? x : y).run;
+        const std::string& id = session.axes[static_cast<std::size_t>(i)].id;
+        const std::pair<const char*, const std::vector<double>*> columns[] = {
+            {"r", &run.r}, {"y", &run.y}, {"e", &run.e}, {"u", &run.u}};
+        for (const auto& [name, v] : columns)
+            for (std::size_t k = 0; k < v->size(); ++k)
+                if (!std::isfinite((*v)[k]))
+                    throw InvalidInput(axisField(i, ""),
+                                       std::string("the simulated ") + name + "_" + id + " is " +
+                                           exactNumber((*v)[k]) + " at t = " + exactNumber(run.t[k]) +
+                                           " s (an unstable loop, or model_unit_scale or the "
+                                           "trajectory out of range); nothing was exported");
+    }
+    // The second axis on the first one's time base (copied only when the bases differ).
+    const bool sameBase = y.run.t == x.run.t;
+    const auto onX = [&](const std::vector<double>& v) {
+        return sameBase ? std::vector<double>() : resampleLinear(y.run.t, v, x.run.t);
+    };
+    const std::vector<double> ry = onX(y.run.r), yy = onX(y.run.y), ey = onX(y.run.e), uy = onX(y.run.u);
+    const auto at = [&](const std::vector<double>& resampled, const std::vector<double>& own,
+                        std::size_t k) { return sameBase ? own[k] : resampled[k]; };
+    sink("t,r_" + ix + ",y_" + ix + ",e_" + ix + ",u_" + ix + ",r_" + iy + ",y_" + iy + ",e_" + iy +
+         ",u_" + iy + "\n");
+    char line[320];
+    for (std::size_t k = 0; k < x.run.t.size(); ++k) {
+        const int n = std::snprintf(line, sizeof line,
+                                    "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n",
+                                    x.run.t[k], x.run.r[k], x.run.y[k], x.run.e[k], x.run.u[k],
+                                    at(ry, y.run.r, k), at(yy, y.run.y, k), at(ey, y.run.e, k),
+                                    at(uy, y.run.u, k));
+        sink(std::string_view(line, static_cast<std::size_t>(n)));
+    }
+}
+
+std::string exportCsv(const Session& session, const SessionEvaluation& evaluation) {
+    std::string out;
+    exportCsv(session, evaluation, [&out](std::string_view bytes) { out.append(bytes); });
+    return out;
+}
+
+} // namespace xyt

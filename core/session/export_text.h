@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/design/digital_controller.h"
+#include "core/io/file_io.h"
+#include "core/session/session.h"
+#include "core/session/session_evaluation.h"
+
+#include <string>
+
+namespace xyt {
+
+/// Options shared by the coefficient exports.
+struct ExportOptions {
+    PiDiscretization piMethod = PiDiscretization::Tustin;
+};
+
+/// The digital controller that the firmware runs for one axis: the PI of a continuous design
+/// discretized at session.controllerTsSeconds, or the feedback part of a discrete design.
+/// @throws InvalidInput when the axis could not be designed.
+DigitalController axisDigitalController(const Session& session, const SessionEvaluation& evaluation,
+                                        int axisIndex, const ExportOptions& options);
+
+// Every export copies user text (axis labels) only as escaped comment text (core/io/text_escape.h),
+// so a session file cannot put code into a header or script, and refuses a non-finite number
+// with InvalidInput naming the session field it comes from.
+
+/**
+ * A C99 header for firmware: per axis `static const double XYT_<AXIS>_NUM[]`, `XYT_<AXIS>_DEN[]`
+ * (ascending powers of z^-1), `XYT_<AXIS>_TS`, the lengths as macros, and a comment with the
+ * difference equation. Compiles standalone with `cc -std=c99 -Wall -Wextra -Werror`. Numbers are
+ * printed with 17 significant digits, so they read back exactly.
+ */
+std::string exportCHeader(const Session& session, const SessionEvaluation& evaluation,
+                          const ExportOptions& options = {});
+
+/**
+ * A GNU Octave / MATLAB script defining per axis `plant_<axis>`, `controller_<axis>` and
+ * `closed_loop_<axis>` as tf objects, then plotting the closed-loop response to the session's
+ * trajectory (linear: lsim, no actuator limit). Runs with `pkg load control` in Octave.
+ */
+std::string exportOctaveScript(const Session& session, const SessionEvaluation& evaluation,
+                               const ExportOptions& options = {});
+
+/**
+ * The simulated signals as CSV: t,r_<x>,y_<x>,e_<x>,u_<x>,r_<y>,... on the first axis' time
+ * base (the second axis is linearly interpolated onto it when its sample time differs).
+ * @throws InvalidInput "axes[i]" when an axis has no simulation or a simulated signal is not
+ *         finite (before anything is written to @p sink).
+ */
+void exportCsv(const Session& session, const SessionEvaluation& evaluation, const ByteSink& sink);
+/// The same CSV as one string (for small sessions; files are streamed with the sink form).
+std::string exportCsv(const Session& session, const SessionEvaluation& evaluation);
+
+/// A double with 17 significant digits ("%.17g").
+std::string exactNumber(double v);
+
+} // namespace xyt

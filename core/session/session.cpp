@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/session.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace xyt {
+
+double TrajectorySettings::effectiveDurationSeconds() const {
+    if (durationSeconds > 0.0)
+        return durationSeconds;
+    if (kind == TrajectoryKind::Cubic)
+        return tfSeconds;
+    const double w = std::abs(omegaRadPerSec);
+    return (w > 0.0 ? 2.0 * std::numbers::pi / w : 0.0) + rampInSeconds;
+}
+
+DesignSnapshot Session::snapshot(const std::string& name) const {
+    return {name, axes, trajectory, umaxVolts};
+}
+
+Session Session::withDesign(const DesignSnapshot& snapshot) const {
+    Session s = *this;
+    s.axes = snapshot.axes;
+    s.trajectory = snapshot.trajectory;
+    s.umaxVolts = snapshot.umaxVolts;
+    return s;
+}
+
+Session Session::paperDefault() {
+    Session s;
+    const GtPreset lower = *findGtPreset("lower-base");
+    const GtPreset upper = *findGtPreset("upper-base");
+    s.axes[0].id = "x";
+    s.axes[0].label = "lower base";
+    s.axes[0].gt = {lower.plant, lower.omegaNRadPerSec, lower.kp, lower.modelUnitsPerPositionUnit};
+    s.axes[1].id = "y";
+    s.axes[1].label = "upper base";
+    s.axes[1].gt = {upper.plant, upper.omegaNRadPerSec, upper.kp, upper.modelUnitsPerPositionUnit};
+    s.axes[1].pp.a = {1.0, -1.4590, 0.4587};
+    s.axes[1].pp.b = {0.0, 0.0352, 0.0599, -0.0067};
+    return s;
+}
+
+} // namespace xyt

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/design/digital_controller.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/study/specification.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/// How an axis is controlled.
+enum class DesignMethod {
+    GuilleminTruxal,   ///< continuous PI by the reference-model method (paper 000)
+    PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (paper 001)
+};
+
+/// The Guillemin-Truxal parameters of one axis.
+struct GtAxisSettings {
+    ThirdOrderPlant plant{77.8, 125.3, 3665.0};
+    double omegaNRadPerSec = 2.0;
+    double kp = 30.0;
+    /// Model output units per trajectory unit (0.001 for the paper's metre models, mm paths).
+    double modelUnitsPerPositionUnit = 0.001;
+    friend bool operator==(const GtAxisSettings&, const GtAxisSettings&) = default;
+};
+
+/// The discrete pole-placement + ZPETC parameters of one axis (polynomials in ascending z^-1).
+struct PpAxisSettings {
+    std::vector<double> a{1.0, -1.6580, 0.6583};
+    std::vector<double> b{0.0, 0.0421, 0.0628, -0.0454};
+    double t1 = -0.2; ///< desired closed-loop polynomial T = 1 + t1 z^-1
+    double tsSeconds = 0.07;
+    bool zpetcEnabled = true;
+    friend bool operator==(const PpAxisSettings&, const PpAxisSettings&) = default;
+};
+
+struct AxisSettings {
+    std::string id = "x"; ///< "x" or "y": names the axis in exports (XYT_X_NUM, plant_x)
+    std::string label;    ///< free text, e.g. "lower base"
+    DesignMethod method = DesignMethod::GuilleminTruxal;
+    GtAxisSettings gt;
+    PpAxisSettings pp;
+    friend bool operator==(const AxisSettings&, const AxisSettings&) = default;
+};
+
+enum class TrajectoryKind { Cubic, Circle };
+
+/// The commanded motion. A cubic drives both axes with the same profile (a diagonal move, as
+/// paper 000 Fig. 8); the circle drives x with R sin(w t) and y with R cos(w t).
+struct TrajectorySettings {
+    TrajectoryKind kind = TrajectoryKind::Cubic;
+    double x0 = 0.0, xf = 600.0, t0Seconds = 0.0, tfSeconds = 130.0, v0 = 0.0, vf = 0.0;
+    double radius = 25.0, omegaRadPerSec = 0.06, rampInSeconds = 10.0;
+    /// 0: automatic (tf for a cubic, one revolution plus the ramp-in for the circle).
+    double durationSeconds = 0.0;
+    /// Simulation step of continuous axes (discrete axes use their own sample time).
+    double dtSeconds = 0.01;
+
+    double effectiveDurationSeconds() const;
+    friend bool operator==(const TrajectorySettings&, const TrajectorySettings&) = default;
+};
+
+/// A named copy of a design, stored in the session to compare against and to go back to.
+struct DesignSnapshot {
+    std::string name;
+    std::array<AxisSettings, 2> axes;
+    TrajectorySettings trajectory;
+    double umaxVolts = 2.5;
+    friend bool operator==(const DesignSnapshot&, const DesignSnapshot&) = default;
+};
+
+/// The whole design: two axes, the motion, the actuator limit.
+struct Session {
+    std::array<AxisSettings, 2> axes;
+    TrajectorySettings trajectory;
+    double umaxVolts = 2.5;
+    /// Sample time of the digital PI when a continuous design is exported (Tustin by default).
+    double controllerTsSeconds = 0.01;
+    /// How that PI is discretized (Tustin by default).
+    PiDiscretization piDiscretization = PiDiscretization::Tustin;
+    /// What the design must meet (paper 000: settling <= 100 s, no overshoot, no saturation,
+    /// max error <= 2 %). Its umaxVolts is ignored: the session's umaxVolts is the limit.
+    Specification spec;
+    std::vector<DesignSnapshot> snapshots;
+
+    /// The current design as a snapshot named @p name.
+    DesignSnapshot snapshot(const std::string& name) const;
+    /// This session with the design of @p snapshot (snapshots and export settings kept).
+    Session withDesign(const DesignSnapshot& snapshot) const;
+
+    /// The paper 000 design: x is the lower base, y the upper base, cubic 0 -> 600 mm in 130 s.
+    static Session paperDefault();
+    friend bool operator==(const Session&, const Session&) = default;
+};
+
+} // namespace xyt

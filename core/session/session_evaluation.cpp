@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/session_evaluation.h"
+
+#include "core/simulation/discrete_simulation.h"
+#include "core/model/errors.h"
+#include "core/simulation/trajectory.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace xyt {
+
+std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex) {
+    if (trajectory.kind == TrajectoryKind::Cubic) {
+        const CubicTrajectory cubic(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
+                                    trajectory.tfSeconds, trajectory.v0, trajectory.vf);
+        return [cubic](double t) { return cubic.position(t); };
+    }
+    requirePositive(trajectory.radius, "radius");
+    requireNonZero(trajectory.omegaRadPerSec, "omega");
+    const Circle circle{trajectory.radius, trajectory.omegaRadPerSec, 0.0, 0.0,
+                        trajectory.rampInSeconds};
+    Sinusoid s = axisIndex == 0 ? circle.xAxis() : circle.yAxis();
+    s.validate();
+    return [s](double t) { return s.value(t); };
+}
+
+namespace {
+
+void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
+                AxisEvaluation& out) {
+    const GtAxisSettings& gt = axis.gt;
+    out.gt = designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
+    LoopSimulationOptions options;
+    options.dtSeconds = session.trajectory.dtSeconds;
+    options.umaxVolts = session.umaxVolts;
+    options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
+    const auto times =
+        sampleTimes(session.trajectory.effectiveDurationSeconds(), options.dtSeconds);
+    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
+                           sampled(axisReference(session.trajectory, axisIndex), times), options);
+    out.metrics = trackingMetrics(out.run);
+    out.step = stepCharacteristics(out.gt->closedLoop);
+    if (!out.gt->stable)
+        out.warnings.push_back("the closed loop is unstable");
+}
+
+SimulationResult discreteRun(const std::vector<double>& t, const std::vector<double>& r,
+                             const DiscreteRun& run, double umaxVolts, double ts) {
+    SimulationResult out;
+    out.t = t;
+    out.r.assign(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(t.size()));
+    out.y = run.y;
+    out.u = run.u;
+    out.e.resize(t.size());
+    out.clipped.resize(t.size());
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        out.e[k] = out.r[k] - out.y[k];
+        out.clipped[k] = k < out.u.size() && std::abs(out.u[k]) > umaxVolts;
+    }
+    if (out.u.size() < t.size())
+        out.u.resize(t.size(), 0.0);
+    out.dtSeconds = ts;
+    out.umaxVolts = umaxVolts;
+    return out;
+}
+
+/// Step figures of a discrete closed loop from its exact sampled step response.
+StepCharacteristics discreteStep(const PolePlacementDesign& loop) {
+    StepCharacteristics out;
+    const TransferFunction cl = loop.closedLoop();
+    out.stable = cl.isStable();
+    if (!out.stable)
+        return out;
+    out.finalValue = cl.dcGain();
+    // The slowest pole decides how long the response takes: 12 time constants of it.
+    double slowest = 0.0;
+    for (const auto& p : cl.poles())
+        slowest = std::max(slowest, std::abs(p));
+    const double decay = slowest > 0.0 ? -std::log(slowest) : 10.0;
+    const std::size_t n = static_cast<std::size_t>(std::clamp(12.0 / std::max(decay, 1e-3), 50.0, 1e6));
+    const auto y = filterZInverse(loop.closedLoopNum, loop.closedLoopDen, std::vector<double>(n, 1.0));
+    const double scale = std::max(std::abs(out.finalValue), 1e-300);
+    double peak = y[0];
+    std::size_t lastOutside = 0;
+    bool everOutside = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (y[k] > peak) {
+            peak = y[k];
+            out.peakTimeSeconds = static_cast<double>(k) * loop.tsSeconds;
+        }
+        if (std::abs(y[k] - out.finalValue) > 0.02 * scale) {
+            lastOutside = k;
+            everOutside = true;
+        }
+    }
+    out.overshootPct = std::max(0.0, (peak - out.finalValue) / scale * 100.0);
+    // A sampled response settles at the first sample inside the band for good.
+    out.settlingTimeSeconds = everOutside ? static_cast<double>(lastOutside + 1) * loop.tsSeconds : 0.0;
+    return out;
+}
+
+Polynomial fromCoefficients(const std::vector<double>& c, const std::string& field) {
+    return Polynomial::fromAscending(c, field);
+}
+
+void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
+                AxisEvaluation& out) {
+    const PpAxisSettings& pp = axis.pp;
+    requireFinite(pp.t1, "t1");
+    if (std::abs(pp.t1) >= 1.0)
+        throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
+    out.pp = designPolePlacement(fromCoefficients(pp.a, "a"), fromCoefficients(pp.b, "b"),
+                                 Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
+    out.zpetc = designZpetc(*out.pp);
+    for (const auto& w : out.pp->warnings)
+        out.warnings.push_back(w);
+    const auto times = sampleTimes(session.trajectory.effectiveDurationSeconds(), pp.tsSeconds);
+    const std::size_t n = times.size();
+    const auto reference = axisReference(session.trajectory, axisIndex);
+    std::vector<double> r(n + static_cast<std::size_t>(out.zpetc->previewSteps));
+    for (std::size_t k = 0; k < r.size(); ++k)
+        r[k] = reference(static_cast<double>(k) * pp.tsSeconds);
+    const std::vector<double> rLoop(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n));
+    out.feedbackOnlyRun = discreteRun(times, r, simulateFeedbackLoop(*out.pp, rLoop),
+                                      session.umaxVolts, pp.tsSeconds);
+    out.rmseWithoutFf = rootMeanSquare(out.feedbackOnlyRun.e);
+    if (pp.zpetcEnabled) {
+        out.run = discreteRun(times, r, simulateZpetcLoop(*out.pp, *out.zpetc, r, n),
+                              session.umaxVolts, pp.tsSeconds);
+        const double with = rootMeanSquare(out.run.e);
+        out.improvementPct = out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - with / out.rmseWithoutFf) : 0.0;
+    } else {
+        out.run = out.feedbackOnlyRun;
+    }
+    out.metrics = trackingMetrics(out.run);
+    out.step = discreteStep(*out.pp);
+    if (!out.step.stable)
+        out.warnings.push_back("the closed loop is unstable");
+    if (out.metrics.saturated)
+        out.warnings.push_back("|u| exceeds the actuator limit (the discrete loop is simulated "
+                               "without saturation)");
+}
+
+} // namespace
+
+TransferFunction AxisEvaluation::closedLoop() const {
+    if (gt)
+        return gt->closedLoop;
+    if (pp)
+        return pp->closedLoop();
+    throw InvalidInput("axis", "has no design");
+}
+
+AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
+    AxisEvaluation out;
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+    out.method = axis.method;
+    try {
+        requirePositive(session.umaxVolts, "umax");
+        if (axis.method == DesignMethod::GuilleminTruxal)
+            evaluateGt(session, axis, axisIndex, out);
+        else
+            evaluatePp(session, axis, axisIndex, out);
+        if (out.metrics.diverged)
+            out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
+                                   "it has no tracking figures");
+        Specification spec = session.spec;
+        spec.umaxVolts = session.umaxVolts;
+        out.check = checkSpecification(spec, out.metrics, out.step);
+        out.ok = true;
+    } catch (const InvalidInput& e) {
+        out.ok = false;
+        out.errorField = e.field();
+        out.error = e.reason();
+    }
+    return out;
+}
+
+std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vector<double>& ys,
+                                   const std::vector<double>& t) {
+    std::vector<double> out(t.size());
+    if (ts.empty())
+        return out;
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        while (j + 1 < ts.size() && ts[j + 1] <= t[k])
+            ++j;
+        if (t[k] <= ts.front())
+            out[k] = ys.front();
+        else if (j + 1 >= ts.size())
+            out[k] = ys.back();
+        else {
+            const double w = (t[k] - ts[j]) / (ts[j + 1] - ts[j]);
+            out[k] = ys[j] + w * (ys[j + 1] - ys[j]);
+        }
+    }
+    return out;
+}
+
+SessionEvaluation evaluateSession(const Session& session) {
+    SessionEvaluation out;
+    for (int i = 0; i < 2; ++i)
+        out.axes[static_cast<std::size_t>(i)] = evaluateAxis(session, i);
+    const auto& x = out.axes[0];
+    const auto& y = out.axes[1];
+    if (session.trajectory.kind == TrajectoryKind::Circle && x.ok && y.ok) {
+        const Circle circle{session.trajectory.radius, session.trajectory.omegaRadPerSec, 0.0,
+                            0.0, session.trajectory.rampInSeconds};
+        const std::vector<double> yOnX = resampleLinear(y.run.t, y.run.y, x.run.t);
+        try {
+            out.contour = circleContourError(x.run.t, x.run.y, yOnX, circle);
+        } catch (const InvalidInput&) {
+            out.contour.reset(); // the run ended inside the ramp-in: no contour to judge
+        }
+    }
+    return out;
+}
+
+} // namespace xyt

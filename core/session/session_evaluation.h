@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/simulation/contour_error.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/simulation/metrics.h"
+#include "core/design/pole_placement.h"
+#include "core/study/specification.h"
+#include "core/design/zpetc.h"
+#include "core/session/session.h"
+#include "core/simulation/simulation.h"
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/// Everything computed for one axis of a session: the design, the run and its figures.
+struct AxisEvaluation {
+    bool ok = false;
+    std::string errorField; ///< when !ok: the invalid setting, e.g. "axes[0].gt.kp"
+    std::string error;      ///< when !ok: the reason
+    DesignMethod method = DesignMethod::GuilleminTruxal;
+    std::optional<GtDesign> gt;
+    /// Discrete designs: the pole-placement loop and its ZPETC feedforward.
+    std::optional<PolePlacementDesign> pp;
+    std::optional<ZpetcDesign> zpetc;
+    /// Discrete designs: the run of the feedback loop alone (Kf r), for comparison.
+    SimulationResult feedbackOnlyRun;
+    double rmseWithoutFf = 0.0;  ///< discrete designs: RMSE of the loop alone
+    double improvementPct = 0.0; ///< 100 (1 - RMSE with ZPETC / RMSE without)
+    /// The run shown: continuous designs simulate the loop with saturation; discrete designs the
+    /// linear loop with ZPETC when enabled (else alone), sampled at Ts, with `clipped` marking
+    /// samples where |u| exceeds umax (paper 001's loop has no limit, so it is flagged, not
+    /// applied).
+    SimulationResult run;
+    TrackingMetrics metrics;
+    StepCharacteristics step;
+    /// Pass/fail of each criterion of the session's specification.
+    SpecificationCheck check;
+    std::vector<std::string> warnings;
+
+    /// The closed loop of the design (G_R for GT, Kf B / T for pole placement).
+    TransferFunction closedLoop() const;
+};
+
+struct SessionEvaluation {
+    std::array<AxisEvaluation, 2> axes;
+    /// Radial error of the traced circle (circle trajectories with both axes valid).
+    std::optional<ContourError> contour;
+};
+
+/// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows.
+std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex);
+
+/// Designs and simulates one axis. Invalid settings give ok = false with the field named (the
+/// GUI shows it at the field); an unstable design is ok, with step.stable false.
+AxisEvaluation evaluateAxis(const Session& session, int axisIndex);
+SessionEvaluation evaluateSession(const Session& session);
+
+/// y sampled at the times @p t by linear interpolation in (ts, ys) (held at the ends), so that
+/// axes with different sample times can be paired for the XY contour.
+std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vector<double>& ys,
+                                   const std::vector<double>& t);
+
+} // namespace xyt

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/simulation/discrete_simulation.h"
+
+#include "core/model/errors.h"
+
+#include <algorithm>
+
+namespace xyt {
+
+namespace {
+
+/// A signal with `history` samples of its past stored ahead of k = 0, so that index
+/// k - i for i <= history reads the past value without a branch.
+class History {
+public:
+    History(std::size_t history, std::size_t samples, double past)
+        : offset_(history), v_(history + samples, past) {}
+    double& operator[](std::ptrdiff_t k) { return v_[static_cast<std::size_t>(k + offset_)]; }
+    std::vector<double> present() const {
+        return {v_.begin() + static_cast<std::ptrdiff_t>(offset_), v_.end()};
+    }
+
+private:
+    std::ptrdiff_t offset_;
+    std::vector<double> v_;
+};
+
+std::size_t maxDegree(std::initializer_list<const Polynomial*> ps) {
+    int n = 0;
+    for (const Polynomial* p : ps)
+        n = std::max(n, p->degree());
+    return static_cast<std::size_t>(n);
+}
+
+/// The RST loop on the loop input v(0 .. n-1), histories at the steady state of v = rest (the
+/// closed loop has unity DC gain, so y = rest and u = A(1)/B(1) rest) or zero.
+DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& v, double rest) {
+    const std::size_t n = v.size();
+    const std::size_t h = maxDegree({&d.a, &d.b, &d.f, &d.g});
+    const double uRest = d.a(1.0) / d.b(1.0) * rest;
+    History y(h, n, rest), u(h, n, uRest);
+    const auto& a = d.a.ascending();
+    const auto& b = d.b.ascending();
+    const auto& f = d.f.ascending();
+    const auto& g = d.g.ascending();
+    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
+        // Plant A y = B u with A(0) = 1 and B(0) = 0: y(k) from the past only.
+        double yk = 0.0;
+        for (std::size_t i = 1; i < b.size(); ++i)
+            yk += b[i] * u[k - static_cast<std::ptrdiff_t>(i)];
+        for (std::size_t i = 1; i < a.size(); ++i)
+            yk -= a[i] * y[k - static_cast<std::ptrdiff_t>(i)];
+        y[k] = yk;
+        // Controller F u = Kf v - G y with F(0) = 1.
+        double uk = d.kf * v[static_cast<std::size_t>(k)];
+        for (std::size_t i = 0; i < g.size(); ++i)
+            uk -= g[i] * y[k - static_cast<std::ptrdiff_t>(i)];
+        for (std::size_t i = 1; i < f.size(); ++i)
+            uk -= f[i] * u[k - static_cast<std::ptrdiff_t>(i)];
+        u[k] = uk / f[0];
+    }
+    return {y.present(), u.present()};
+}
+
+void requireReference(const std::vector<double>& r, std::size_t samples, std::size_t needed) {
+    if (samples == 0)
+        throw InvalidInput("reference", "needs at least one sample");
+    if (r.size() < needed)
+        throw InvalidInput("reference", "needs " + std::to_string(needed) +
+                                            " samples (run length plus preview), got " +
+                                            std::to_string(r.size()));
+}
+
+} // namespace
+
+std::vector<double> filterZInverse(const Polynomial& num, const Polynomial& den,
+                                   const std::vector<double>& x, double pastInput,
+                                   double pastOutput) {
+    const double d0 = den.coefficient(0);
+    if (d0 == 0.0)
+        throw InvalidInput("den", "the z^0 coefficient must be nonzero (causal filter)");
+    const std::size_t h = maxDegree({&num, &den});
+    History in(h, x.size(), pastInput), out(h, x.size(), pastOutput);
+    const auto& nc = num.ascending();
+    const auto& dc = den.ascending();
+    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(x.size()); ++k) {
+        in[k] = x[static_cast<std::size_t>(k)];
+        double acc = 0.0;
+        for (std::size_t i = 0; i < nc.size(); ++i)
+            acc += nc[i] * in[k - static_cast<std::ptrdiff_t>(i)];
+        for (std::size_t i = 1; i < dc.size(); ++i)
+            acc -= dc[i] * out[k - static_cast<std::ptrdiff_t>(i)];
+        out[k] = acc / d0;
+    }
+    return out.present();
+}
+
+DiscreteRun simulateFeedbackLoop(const PolePlacementDesign& loop, const std::vector<double>& r,
+                                 StartCondition start) {
+    requireReference(r, r.size(), 1);
+    return runRstLoop(loop, r, start == StartCondition::AtReference ? r.front() : 0.0);
+}
+
+DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
+                              const std::vector<double>& r, std::size_t samples,
+                              StartCondition start) {
+    const auto p = static_cast<std::size_t>(zpetc.previewSteps);
+    requireReference(r, samples, samples + p);
+    // Run on k = -p .. samples-1: the feedforward input at k is r(k + p) = r[k + p].
+    const std::vector<double> w(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(samples + p));
+    // Both the feedforward filter and the loop have unity DC gain: at rest every signal is r(0)
+    // (u_ff included), so the steady state of the extended reference is the histories' value.
+    const double rest = start == StartCondition::AtReference ? r.front() : 0.0;
+    const std::vector<double> uff =
+        filterZInverse(zpetc.feedforwardNum, zpetc.feedforwardDen, w, rest, rest);
+    DiscreteRun run = runRstLoop(loop, uff, rest);
+    run.y.erase(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(p));
+    run.u.erase(run.u.begin(), run.u.begin() + static_cast<std::ptrdiff_t>(p));
+    return run;
+}
+
+DiscreteRun simulateTrajectoryZpetc(const ZpetcDesign& zpetc, const std::vector<double>& r,
+                                    std::size_t samples, StartCondition start) {
+    const auto s = static_cast<std::size_t>(zpetc.bMinus.degree());
+    requireReference(r, samples, samples + s);
+    const std::vector<double> w(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(samples + s));
+    const double rest = start == StartCondition::AtReference ? r.front() : 0.0;
+    // y(k) = sum_j h_j r(k + s - j): the FIR on the input r(k + s), output index k.
+    DiscreteRun run;
+    run.y = filterZInverse(zpetc.overallFir, Polynomial::constant(1.0), w, rest, rest);
+    // The FIR output at input index i belongs to time k = i - s.
+    run.y.erase(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(s));
+    return run;
+}
+
+} // namespace xyt

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/design/pole_placement.h"
+#include "core/design/zpetc.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace xyt {
+
+/**
+ * The state before k = 0. Signals before k = 0 are those of a reference extended backwards:
+ * r(j) = r(0) for j < 0 (AtReference) or r(j) = 0 with every state zero (AtOrigin).
+ *  - AtReference (default): the table rests at r(0) with every signal in the steady state of
+ *    the constant reference r(0), as if it had been there forever. The same extended reference
+ *    drives all three structures, so with a perfect model they agree to round-off.
+ *  - AtOrigin: zero state (table at 0), to show the start-up transient of a reference that does
+ *    not start at 0 (y = 30 cos(0.1 t) starts at 30 mm).
+ * With a preview of p samples the feedforward already reads r(0 .. p-1) at k = -p .. -1, so the
+ * table may leave its rest position up to deg B- - 1 samples before k = 0 (inherent to a
+ * zero-phase, non-causal overall response); the runs report k >= 0 only.
+ */
+enum class StartCondition { AtReference, AtOrigin };
+
+/// Output and control samples k = 0 .. n-1 of one discrete run (u empty when there is no loop).
+struct DiscreteRun {
+    std::vector<double> y;
+    std::vector<double> u;
+};
+
+/**
+ * Runs the difference equation D(z^-1) y = N(z^-1) x (ascending powers of z^-1, D(0) != 0) on
+ * x(0 .. n-1), with x(j) = pastInput and y(j) = pastOutput for j < 0.
+ * @throws InvalidInput "den" when D(0) = 0.
+ */
+std::vector<double> filterZInverse(const Polynomial& num, const Polynomial& den,
+                                   const std::vector<double>& x, double pastInput = 0.0,
+                                   double pastOutput = 0.0);
+
+/**
+ * Structure (1): the pole-placement loop alone (paper Fig. 9), F u = Kf r - G y, A y = B u,
+ * driven by r(0 .. n-1). Returns y and u for k = 0 .. n-1.
+ * @throws InvalidInput "reference" when empty.
+ */
+DiscreteRun simulateFeedbackLoop(const PolePlacementDesign& loop, const std::vector<double>& r,
+                                 StartCondition start = StartCondition::AtReference);
+
+/**
+ * Structure (2): the ZPETC (paper Fig. 6) ahead of the pole-placement loop (Fig. 9): the loop's
+ * reference input is u_ff(k) = N_ff/D_ff r(k + p). @p r holds r(0 .. samples + p - 1).
+ * Returns y and the plant input u for k = 0 .. samples-1.
+ * @throws InvalidInput "reference" when r is shorter than samples + p or samples is 0.
+ */
+DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
+                              const std::vector<double>& r, std::size_t samples,
+                              StartCondition start = StartCondition::AtReference);
+
+/**
+ * Structure (3), the trajectory ZPETC of paper Fig. 8: y = B-(z^-1) B-(z) / [B-(1)]^2 r, i.e.
+ * y(k) = sum_j h_j r(k + s - j), s = deg B-. @p r holds r(0 .. samples + s - 1) at least.
+ * Returns y for k = 0 .. samples-1 (u empty).
+ * @throws InvalidInput "reference" when r is too short or samples is 0.
+ */
+DiscreteRun simulateTrajectoryZpetc(const ZpetcDesign& zpetc, const std::vector<double>& r,
+                                    std::size_t samples,
+                                    StartCondition start = StartCondition::AtReference);
+
+} // namespace xyt

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/model/transfer_function.h"
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <vector>
+
+namespace xyt {
+
+struct LoopSimulationOptions {
+    double dtSeconds = 0.01;
+    /// Actuator limit |u| <= umax (2.5 V in paper 000); infinity for none.
+    double umaxVolts = std::numeric_limits<double>::infinity();
+    /// The plant starts at rest at this output. Nonzero values need a plant with a pole at s = 0.
+    double initialOutput = 0.0;
+    /**
+     * Plant output units per reference unit. The identified models of paper 000 map volts to
+     * metres (their velocity gain k0/a2 is 0.021 m/s per volt) while trajectories are typed in
+     * millimetres, so the presets use 0.001: the reference is multiplied by this before it
+     * enters the loop, and y and e are divided by it on the way out (u is unchanged).
+     * initialOutput is in reference units.
+     */
+    double modelUnitsPerPositionUnit = 1.0;
+};
+
+/// Sampled signals of one run: t, reference r, output y, error e = r - y, actuator command u
+/// (after saturation) and whether u was clipped at each sample.
+struct SimulationResult {
+    std::vector<double> t, r, y, e, u;
+    std::vector<bool> clipped;
+    double dtSeconds = 0.0;
+    double umaxVolts = std::numeric_limits<double>::infinity();
+};
+
+/**
+ * The two linear modes of the loop of simulateLoop, in the state x = [x_p; x_c] (plant states
+ * first, then controller states, both in the controllable canonical form of realize()):
+ *   inside the limits  x' = A_lin x + B_lin r,       u = C_c x_c + D_c (r - C_p x_p),
+ *   clipped            x' = A_sat x + B_sat [r; u],  u = +-umax held,
+ * with A_lin = [A_p - D_c B_p C_p, B_p C_c; -B_c C_p, A_c], B_lin = [D_c B_p; B_c],
+ * A_sat = [A_p, 0; -B_c C_p, A_c], B_sat = [0, B_p; B_c, 0]. The plant output is y = C_p x_p.
+ * Shared by simulateLoop and the fast tracking kernel of the design sweep, so both integrate
+ * the very same equations.
+ * @throws InvalidInput "plant" unless strictly proper and continuous, "controller" unless
+ *         proper and continuous.
+ */
+struct LoopModes {
+    Eigen::MatrixXd aLinear, bLinear;   ///< n x n, n x 1
+    Eigen::MatrixXd aClipped, bClipped; ///< n x n, n x 2 (inputs r, u)
+    Eigen::MatrixXd plantA;             ///< A_p, for initial conditions
+    Eigen::RowVectorXd plantC;          ///< C_p
+    Eigen::RowVectorXd controllerC;     ///< C_c
+    double controllerD = 0.0;           ///< D_c
+    Eigen::Index plantStates = 0;
+    Eigen::Index controllerStates = 0;
+};
+LoopModes loopModes(const TransferFunction& plant, const TransferFunction& controller);
+
+/**
+ * Time simulation of the unity-feedback loop r -> e = r - y -> controller -> sat(., umax) ->
+ * continuous plant -> y, with the reference linear between its samples (first-order hold).
+ *
+ * The loop is piecewise linear: while the controller output v is inside the limits, the closed
+ * loop x' = A_cl x + B_cl r is linear; while it is clipped, the plant sees a constant u = +-umax
+ * and the controller still integrates e. Both modes are discretized exactly (matrix exponential,
+ * first-order hold on r), and the mode is chosen from v at the start of each step. So with no
+ * saturation the result equals the linear closed loop at the samples to round-off, and the only
+ * approximation is that a switch between modes happens at the sample instant (error O(dt) at
+ * switches, as in a real digital loop).
+ *
+ * @param reference r(k dt) for k = 0..n-1
+ * @throws InvalidInput "plant" unless strictly proper and continuous, "controller" unless proper
+ *         and continuous, "reference" when empty or not finite, "dt", "umax" (must be > 0),
+ *         "initial_output".
+ */
+SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,
+                              const std::vector<double>& reference,
+                              const LoopSimulationOptions& options);
+
+/**
+ * Output of a continuous linear system from zero initial state driven by an input that is linear
+ * between its samples u(k dt): exact at the samples (first-order-hold discretization).
+ * @throws InvalidInput "system" unless proper and continuous, "input", "dt".
+ */
+std::vector<double> simulateLinear(const TransferFunction& system, const std::vector<double>& input,
+                                   double dtSeconds);
+
+} // namespace xyt

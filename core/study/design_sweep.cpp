@@ -1,0 +1,416 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/design_sweep.h"
+
+#include "core/model/errors.h"
+#include "core/simulation/simulation.h"
+#include "core/model/state_space.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace xyt {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// A third-order plant in series with a PI controller: 3 + 1 states.
+constexpr int kLoopStates = 4;
+using LoopMatrix = Eigen::Matrix<double, kLoopStates, kLoopStates>;
+using LoopVector = Eigen::Matrix<double, kLoopStates, 1>;
+
+/// x[k+1] = phi x + g0 w + g1 rho for the FOH step of one mode, with fixed sizes.
+template <int Inputs> struct FixedStep {
+    LoopMatrix phi;
+    Eigen::Matrix<double, kLoopStates, Inputs> g0, g1;
+
+    FixedStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double dt) {
+        const FohDiscretization foh = discretizeFoh(a, b, dt);
+        phi = foh.phi;
+        g0 = foh.gamma0;
+        g1 = foh.gamma1;
+    }
+};
+
+/**
+ * The recursion of simulateLoop (same modes, same mode choice from v at the start of each step,
+ * zero initial state) for a 4-state loop, accumulating trackingMetrics' figures on the fly with
+ * the same formulas and summation order. Returns nullopt when the state stops being finite.
+ */
+std::optional<TrackingMetrics> trackLoop(const LoopModes& modes, const std::vector<double>& ref,
+                                         double dt, double umax, double unit, double travel) {
+    if (modes.plantStates + modes.controllerStates != kLoopStates || modes.controllerStates != 1)
+        throw std::logic_error("trackLoop: expected a third-order plant and a PI controller");
+    const FixedStep<1> linear(modes.aLinear, modes.bLinear, dt);
+    std::optional<FixedStep<2>> clipped; // computed at the first clipped sample only
+    const Eigen::Vector3d cp = modes.plantC.transpose();
+    const double cc = modes.controllerC(0);
+    const double dc = modes.controllerD;
+
+    LoopVector x = LoopVector::Zero();
+    TrackingMetrics m;
+    double sumSquares = 0.0;
+    double previousTimeAbsError = 0.0; // t_{k-1} |e_{k-1}|
+    double previousTime = 0.0;
+    std::size_t clippedCount = 0;
+    const std::size_t count = ref.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const double y = cp.dot(x.head<3>());
+        if (!std::isfinite(y))
+            return std::nullopt;
+        const double rk = ref[k] * unit;
+        const double v = dc * (rk - y) + cc * x(3);
+        const bool clip = std::abs(v) > umax;
+        const double u = clip ? std::copysign(umax, v) : v;
+        const double e = ref[k] - y / unit;
+        const double absE = std::abs(e);
+        const double t = static_cast<double>(k) * dt;
+        sumSquares += e * e;
+        m.maxAbsError = std::max(m.maxAbsError, absE);
+        m.maxAbsU = std::max(m.maxAbsU, std::abs(u));
+        if (clip)
+            ++clippedCount;
+        if (k > 0)
+            m.itae += 0.5 * (t - previousTime) * (t * absE + previousTimeAbsError);
+        previousTime = t;
+        previousTimeAbsError = t * absE;
+        if (k + 1 == count)
+            break;
+        const double slope = (ref[k + 1] - ref[k]) * unit / dt;
+        if (clip) {
+            if (!clipped)
+                clipped.emplace(modes.aClipped, modes.bClipped, dt);
+            x = clipped->phi * x + clipped->g0 * Eigen::Vector2d(rk, u) +
+                clipped->g1.col(0) * slope;
+        } else {
+            x = linear.phi * x + linear.g0 * rk + linear.g1 * slope;
+        }
+    }
+    m.rmse = std::sqrt(sumSquares / static_cast<double>(count));
+    m.maxAbsErrorPct = travel > 0.0 ? 100.0 * m.maxAbsError / travel : 0.0;
+    m.saturated = clippedCount > 0;
+    m.saturatedTimeSeconds = static_cast<double>(clippedCount) * dt;
+    if (!std::isfinite(m.rmse) || !std::isfinite(m.itae) || !std::isfinite(m.maxAbsU))
+        return std::nullopt;
+    return m;
+}
+
+bool stepFiguresFinite(const StepCharacteristics& s) {
+    return !s.stable || (std::isfinite(s.finalValue) && std::isfinite(s.settlingTimeSeconds) &&
+                         std::isfinite(s.overshootPct) && std::isfinite(s.peakTimeSeconds));
+}
+
+} // namespace
+
+std::string criterionName(SweepCriterion criterion) {
+    switch (criterion) {
+    case SweepCriterion::Itae: return "itae";
+    case SweepCriterion::MaxError: return "max_error";
+    case SweepCriterion::Rmse: return "rmse";
+    case SweepCriterion::MaxU: return "max_u";
+    }
+    return "itae";
+}
+
+std::optional<SweepCriterion> parseCriterion(const std::string& name) {
+    for (SweepCriterion c : {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
+                             SweepCriterion::MaxU})
+        if (criterionName(c) == name)
+            return c;
+    return std::nullopt;
+}
+
+void SweepAxis::validate(const std::string& field) const {
+    if (!std::isfinite(minValue) || !std::isfinite(maxValue))
+        throw InvalidInput(field, "the bounds must be finite numbers");
+    if (!(minValue > 0.0))
+        throw InvalidInput(field, "the minimum must be greater than zero");
+    if (minValue > maxValue)
+        throw InvalidInput(field, "the minimum is greater than the maximum");
+    if (count < 1 || count > kMaxCount)
+        throw InvalidInput(field, "the count must be from 1 to " + std::to_string(kMaxCount));
+}
+
+std::vector<double> SweepAxis::values(const std::string& field) const {
+    validate(field);
+    std::vector<double> v(static_cast<std::size_t>(count));
+    v[0] = minValue;
+    if (count == 1)
+        return v;
+    const double last = count - 1;
+    for (int i = 1; i + 1 < count; ++i) {
+        const double f = i / last;
+        v[static_cast<std::size_t>(i)] =
+            logarithmic ? minValue * std::pow(maxValue / minValue, f)
+                        : minValue + (maxValue - minValue) * f;
+    }
+    v.back() = maxValue;
+    return v;
+}
+
+double criterionValue(const DesignPoint& point, SweepCriterion criterion) {
+    if (!point.computed || !point.metricsFinite)
+        return kInf;
+    switch (criterion) {
+    case SweepCriterion::Itae: return point.tracking.itae;
+    case SweepCriterion::MaxError: return point.tracking.maxAbsError;
+    case SweepCriterion::Rmse: return point.tracking.rmse;
+    case SweepCriterion::MaxU: return point.tracking.maxAbsU;
+    }
+    return kInf;
+}
+
+DesignEvaluator::DesignEvaluator(DesignProblem problem) : problem_(std::move(problem)) {
+    plantTf_ = problem_.plant.transferFunction(); // validates the plant
+    requirePositive(problem_.modelUnitsPerPositionUnit, "model_unit_scale");
+    requirePositive(problem_.dtSeconds, "dt");
+    problem_.spec.validate();
+    if (problem_.reference.empty())
+        throw InvalidInput("reference", "has no samples");
+    for (double r : problem_.reference)
+        requireFinite(r, "reference");
+    const auto [lo, hi] = std::minmax_element(problem_.reference.begin(), problem_.reference.end());
+    travel_ = *hi - *lo;
+}
+
+DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
+    const GtDesign design = designGuilleminTruxal(problem_.plant, wn, kp);
+    DesignPoint p;
+    p.wn = wn;
+    p.kp = kp;
+    p.ki = design.ki;
+    p.stable = design.stable;
+    const std::optional<TrackingMetrics> tracking =
+        trackLoop(loopModes(plantTf_, design.controller), problem_.reference, problem_.dtSeconds,
+                  problem_.spec.umaxVolts, problem_.modelUnitsPerPositionUnit, travel_);
+    p.step = stepCharacteristics(design.closedLoop);
+    p.metricsFinite = tracking.has_value() && stepFiguresFinite(p.step);
+    if (tracking) {
+        p.tracking = *tracking;
+    } else {
+        // Diverged: say so with infinities (JSON null), never with NaN taken for a number.
+        p.tracking.rmse = p.tracking.maxAbsError = p.tracking.maxAbsErrorPct = kInf;
+        p.tracking.maxAbsU = p.tracking.itae = kInf;
+        p.tracking.saturated = true;
+        p.tracking.saturatedTimeSeconds = kInf;
+    }
+    p.check = checkSpecification(problem_.spec, p.tracking, p.step);
+    p.computed = true;
+    p.feasible = p.metricsFinite && p.check.allPassed();
+    return p;
+}
+
+RefinementResult refineDesign(const DesignEvaluator& evaluator, const DesignPoint& start,
+                              SweepCriterion criterion, double wnMin, double wnMax, double kpMin,
+                              double kpMax, double wnStepLog, double kpStepLog, int maxEvaluations,
+                              double toleranceLog) {
+    if (!start.feasible)
+        throw InvalidInput("start", "the search starts from a feasible design");
+    if (!(start.wn >= wnMin && start.wn <= wnMax && start.kp >= kpMin && start.kp <= kpMax))
+        throw InvalidInput("start", "is outside the search box");
+    if (!(wnStepLog >= 0.0 && std::isfinite(wnStepLog) && kpStepLog >= 0.0 &&
+          std::isfinite(kpStepLog)))
+        throw InvalidInput("step", "the steps must be finite and >= 0");
+    if (maxEvaluations < 0)
+        throw InvalidInput("max_evaluations", "must be >= 0");
+    RefinementResult r;
+    r.point = start;
+    double best = criterionValue(start, criterion);
+    const double startValue = best;
+    double du = wnStepLog, dv = kpStepLog;
+    // The 8 compass and diagonal directions: the optimum usually lies on the boundary of the
+    // feasible set, which is rarely aligned with an axis; diagonals let the search slide along it.
+    static constexpr std::array<std::array<int, 2>, 8> kDirections = {
+        {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {1, -1}, {-1, 1}, {-1, -1}}};
+    while ((du > toleranceLog || dv > toleranceLog) && r.evaluations < maxEvaluations) {
+        std::optional<DesignPoint> bestPoll;
+        double bestPollValue = best;
+        for (const auto& dir : kDirections) {
+            if (r.evaluations >= maxEvaluations)
+                break;
+            const double wn = std::clamp(r.point.wn * std::exp(dir[0] * du), wnMin, wnMax);
+            const double kp = std::clamp(r.point.kp * std::exp(dir[1] * dv), kpMin, kpMax);
+            if (wn == r.point.wn && kp == r.point.kp)
+                continue;
+            const DesignPoint candidate = evaluator.evaluate(wn, kp);
+            ++r.evaluations;
+            const double value = criterionValue(candidate, criterion);
+            if (candidate.feasible && value < bestPollValue) {
+                bestPollValue = value;
+                bestPoll = candidate;
+            }
+        }
+        if (bestPoll) {
+            r.point = *bestPoll;
+            best = bestPollValue;
+        } else {
+            du *= 0.5;
+            dv *= 0.5;
+        }
+    }
+    r.improved = best < startValue;
+    return r;
+}
+
+namespace {
+
+/// The grid spacing around index i of an axis, in log units (0 for a single value).
+double logSpacing(const std::vector<double>& values, std::size_t i) {
+    if (values.size() < 2)
+        return 0.0;
+    const std::size_t lo = i > 0 ? i - 1 : i;
+    const std::size_t hi = i + 1 < values.size() ? i + 1 : i;
+    return std::log(values[hi] / values[lo]) / static_cast<double>(hi - lo);
+}
+
+} // namespace
+
+void tallyDesignSpace(DesignSweepResult& result) {
+    const std::size_t total = result.points.size();
+    result.feasibleMask.assign(total, 0);
+    result.computedCount = result.feasibleCount = result.stableCount = 0;
+    result.bestIndex.reset();
+    double bestValue = kInf;
+    for (std::size_t i = 0; i < total; ++i) {
+        const DesignPoint& p = result.points[i];
+        if (!p.computed)
+            continue;
+        ++result.computedCount;
+        result.stableCount += p.stable ? 1 : 0;
+        if (!p.feasible)
+            continue;
+        result.feasibleMask[i] = 1;
+        ++result.feasibleCount;
+        const double value = criterionValue(p, result.criterion);
+        if (!result.bestIndex || value < bestValue) {
+            bestValue = value;
+            result.bestIndex = i;
+        }
+    }
+}
+
+void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
+    spec.validate();
+    for (DesignPoint& p : result.points) {
+        if (!p.computed)
+            continue;
+        p.check = checkSpecification(spec, p.tracking, p.step);
+        p.feasible = p.metricsFinite && p.check.allPassed();
+    }
+    tallyDesignSpace(result);
+    result.refined.reset();
+}
+
+DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis& wnAxis,
+                                   const SweepAxis& kpAxis, const SweepOptions& options) {
+    if (options.threads < 0 || options.threads > 1024)
+        throw InvalidInput("threads", "must be from 0 (all cores) to 1024");
+    if (options.maxRefineEvaluations < 0)
+        throw InvalidInput("max_refine_evaluations", "must be >= 0");
+    DesignSweepResult result;
+    result.criterion = options.criterion;
+    result.wnValues = wnAxis.values("wn");
+    result.kpValues = kpAxis.values("kp");
+    const DesignEvaluator evaluator(problem);
+    const std::size_t nKp = result.kpValues.size();
+    const std::size_t total = result.wnValues.size() * nKp;
+    result.points.resize(total);
+
+    const int hardware = static_cast<int>(std::thread::hardware_concurrency());
+    const int wanted = options.threads > 0 ? options.threads : std::max(1, hardware);
+    const int threadCount = static_cast<int>(std::min<std::size_t>(wanted, total));
+    result.threadsUsed = threadCount;
+
+    std::atomic<std::size_t> next{0};
+    std::atomic<std::size_t> done{0};
+    std::atomic<bool> cancel{false};
+    std::mutex mutex;
+    std::condition_variable finishedSignal;
+    int finishedWorkers = 0;
+    std::exception_ptr failure;
+
+    const auto& progress = options.progress;
+    if (progress && !progress(0.0))
+        cancel = true;
+
+    // Each point is computed independently by the same code into its own slot, so the result
+    // is the same bit for bit whatever the number of threads and the order they take points in.
+    auto worker = [&] {
+        try {
+            while (!cancel.load(std::memory_order_relaxed)) {
+                const std::size_t i = next.fetch_add(1);
+                if (i >= total)
+                    break;
+                result.points[i] = evaluator.evaluate(result.wnValues[i / nKp], result.kpValues[i % nKp]);
+                done.fetch_add(1, std::memory_order_release);
+            }
+        } catch (...) {
+            const std::lock_guard lock(mutex);
+            if (!failure)
+                failure = std::current_exception();
+            cancel = true;
+        }
+        {
+            const std::lock_guard lock(mutex);
+            ++finishedWorkers;
+        }
+        finishedSignal.notify_all();
+    };
+    std::vector<std::thread> workers;
+    workers.reserve(static_cast<std::size_t>(threadCount));
+    for (int i = 0; i < threadCount; ++i)
+        workers.emplace_back(worker);
+
+    // The calling thread only reports progress, so the callback never runs on a worker.
+    const double units = static_cast<double>(total) + 1.0; // + 1 for the refinement
+    {
+        std::unique_lock lock(mutex);
+        while (!finishedSignal.wait_for(lock, std::chrono::milliseconds(20),
+                                        [&] { return finishedWorkers == threadCount; })) {
+            if (!progress || cancel.load())
+                continue;
+            lock.unlock();
+            const bool goOn = progress(static_cast<double>(done.load(std::memory_order_acquire)) / units);
+            lock.lock();
+            if (!goOn)
+                cancel = true;
+        }
+    }
+    for (auto& t : workers)
+        t.join();
+    if (failure)
+        std::rethrow_exception(failure);
+
+    tallyDesignSpace(result);
+    if (cancel.load() || result.computedCount < static_cast<int>(total)) {
+        result.status = SweepStatus::Cancelled;
+        result.warnings.push_back("cancelled: " + std::to_string(result.computedCount) + " of " +
+                                  std::to_string(total) + " grid points computed, no refinement");
+        return result;
+    }
+    if (!result.bestIndex)
+        result.warnings.push_back("no design of the grid meets the specification");
+    if (options.refine && result.bestIndex) {
+        const std::size_t b = *result.bestIndex;
+        result.refined = refineDesign(
+            evaluator, result.points[b], options.criterion, wnAxis.minValue, wnAxis.maxValue,
+            kpAxis.minValue, kpAxis.maxValue, logSpacing(result.wnValues, b / nKp),
+            logSpacing(result.kpValues, b % nKp), options.maxRefineEvaluations);
+    }
+    if (progress)
+        progress(1.0);
+    return result;
+}
+
+} // namespace xyt

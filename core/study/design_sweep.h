@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/design/guillemin_truxal.h"
+#include "core/simulation/metrics.h"
+#include "core/study/specification.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/**
+ * The design-space study of paper 000 (Sec. 3, script steps 1-7): vary wn and kp, compute the
+ * Guillemin-Truxal reference model G_R and PI controller for each pair, simulate the loop with
+ * the actuator limit on the trajectory, and keep the design that best meets the specification,
+ * with the ITAE (the paper's "AEMT") as the default guide.
+ */
+
+/// What "best" means among the feasible designs: the smallest value of this metric.
+enum class SweepCriterion {
+    Itae,     ///< integral of t |e| dt (TrackingMetrics::itae)
+    MaxError, ///< max |e| (TrackingMetrics::maxAbsError)
+    Rmse,     ///< TrackingMetrics::rmse
+    MaxU,     ///< max |u| (TrackingMetrics::maxAbsU): the gentlest feasible design
+};
+/// "itae", "max_error", "rmse", "max_u".
+std::string criterionName(SweepCriterion criterion);
+/// The inverse of criterionName; nullopt for an unknown name.
+std::optional<SweepCriterion> parseCriterion(const std::string& name);
+
+/**
+ * One axis of the grid: @p count values from minValue to maxValue, both included, evenly spaced
+ * (linear) or evenly spaced in log (logarithmic: v_i = min (max/min)^(i/(count-1))). count = 1
+ * gives minValue alone. Values must be > 0 on both kinds of axis: wn and kp of the design are.
+ */
+struct SweepAxis {
+    double minValue = 1.0;
+    double maxValue = 1.0;
+    int count = 1;
+    bool logarithmic = false;
+
+    static constexpr int kMaxCount = 500;
+
+    /// @throws InvalidInput @p field when a bound is not finite or not > 0, min > max, or count
+    ///         is outside [1, kMaxCount].
+    void validate(const std::string& field) const;
+    /// The values, first exactly minValue and (count > 1) last exactly maxValue.
+    /// @throws InvalidInput as validate.
+    std::vector<double> values(const std::string& field = "axis") const;
+};
+
+/// What is studied: one plant, one sampled trajectory, one specification.
+struct DesignProblem {
+    ThirdOrderPlant plant;
+    /// Plant output units per trajectory unit (0.001 for the paper's presets: m per mm), as
+    /// LoopSimulationOptions::modelUnitsPerPositionUnit.
+    double modelUnitsPerPositionUnit = 1.0;
+    std::vector<double> reference; ///< r(k dt), trajectory units, the loop starts at rest at 0
+    double dtSeconds = 0.01;
+    /// spec.umaxVolts is also the actuator limit of every simulation.
+    Specification spec;
+};
+
+/// Everything known about one design (wn, kp).
+struct DesignPoint {
+    double wn = 0.0; ///< rad/s
+    double kp = 0.0; ///< V per model unit
+    double ki = 0.0; ///< kp psi1 = wn^4 / k0 (paper 000 Eq. 11, 16)
+    bool computed = false; ///< false for points a cancelled sweep never reached
+    bool stable = false;   ///< closed loop (= G_R) asymptotically stable
+    /// Every tracking figure is finite and, for a stable loop, the step figures too. When false
+    /// the run diverged: the tracking figures are set to +infinity (never NaN) and the point is
+    /// infeasible.
+    bool metricsFinite = false;
+    TrackingMetrics tracking;  ///< on the problem's trajectory, with the actuator limit
+    StepCharacteristics step;  ///< of the closed loop (unset when unstable, see its doc)
+    SpecificationCheck check;
+    bool feasible = false; ///< computed && metricsFinite && check.allPassed()
+};
+
+/// The value minimized by @p criterion; +infinity for a point not computed or not finite.
+double criterionValue(const DesignPoint& point, SweepCriterion criterion);
+
+/**
+ * Evaluates designs of one DesignProblem. Equivalent, to round-off, to
+ *   d = designGuilleminTruxal(plant, wn, kp);
+ *   run = simulateLoop(plant.transferFunction(), d.controller, reference, {dt, spec.umaxVolts, 0, unit});
+ *   trackingMetrics(run), stepCharacteristics(d.closedLoop), checkSpecification(...)
+ * but faster: the loop of a third-order plant and a PI controller has 4 states, so the
+ * recursion runs on fixed-size matrices, the metrics are accumulated on the fly instead of
+ * storing the signals, and the clipped-mode matrices (a second matrix exponential) are computed
+ * only when the command first reaches the limit. Up to that instant the loop is linear and
+ * equals G_R (paper 000 Eq. 3); from it on, the piecewise-linear simulation of simulateLoop is
+ * continued from the same state, so saturated runs are exact in the same sense as simulateLoop.
+ *
+ * evaluate() is const and keeps no state: it may be called from several threads at once.
+ */
+class DesignEvaluator {
+public:
+    /// @throws InvalidInput "plant" fields (ThirdOrderPlant::validate), "model_unit_scale",
+    ///         "dt", "reference" (empty or not finite), the spec's fields.
+    explicit DesignEvaluator(DesignProblem problem);
+
+    /// @throws InvalidInput "wn" or "kp" unless finite and > 0.
+    DesignPoint evaluate(double wn, double kp) const;
+
+    const DesignProblem& problem() const { return problem_; }
+
+private:
+    DesignProblem problem_;
+    TransferFunction plantTf_;
+    double travel_ = 0.0; ///< max r - min r, for maxAbsErrorPct
+};
+
+/// Result of the local search around the best grid point.
+struct RefinementResult {
+    DesignPoint point;    ///< the refined design (the start point when nothing better was found)
+    int evaluations = 0;  ///< designs evaluated by the search
+    bool improved = false; ///< the criterion is strictly lower than at the start
+};
+
+/**
+ * Compass (pattern) search in (ln wn, ln kp) from @p start, which must be feasible: polls the
+ * 8 neighbours at the current steps, moves to the best feasible one that lowers the criterion,
+ * halves the steps when none does, and stops when both steps are below @p toleranceLog (a
+ * relative change of about that much in wn and kp) or after @p maxEvaluations designs. Never
+ * leaves [wnMin, wnMax] x [kpMin, kpMax] nor the feasible set, and never returns a point worse
+ * than @p start. Deterministic.
+ * @throws InvalidInput "start" unless it is feasible and inside the box, "step" unless the steps
+ *         are >= 0 and finite, "max_evaluations" unless >= 0.
+ */
+RefinementResult refineDesign(const DesignEvaluator& evaluator, const DesignPoint& start,
+                              SweepCriterion criterion, double wnMin, double wnMax, double kpMin,
+                              double kpMax, double wnStepLog, double kpStepLog,
+                              int maxEvaluations = 400, double toleranceLog = 1e-4);
+
+struct SweepOptions {
+    SweepCriterion criterion = SweepCriterion::Itae;
+    /// Worker threads; 0 means std::thread::hardware_concurrency() (at least 1). Never more
+    /// than the number of grid points. The result does not depend on it, bit for bit.
+    int threads = 0;
+    bool refine = true;
+    int maxRefineEvaluations = 400;
+    /**
+     * Called with the fraction done, in [0, 1], non-decreasing, ALWAYS ON THE THREAD THAT CALLED
+     * sweepDesignSpace (never on a worker), about every 20 ms while the grid is computed, and
+     * once with exactly 1 when everything, refinement included, is finished. Return false to
+     * cancel: the workers stop after the point each is computing, the result says Cancelled.
+     * The grid counts as N points and the refinement as one more, so grid progress stays < 1.
+     */
+    std::function<bool(double fraction)> progress;
+};
+
+enum class SweepStatus { Completed, Cancelled };
+
+/**
+ * The grid: points[index(iWn, iKp)] with index = iWn * kpValues.size() + iKp (row-major, one row
+ * per wn value, columns over kp), so a heat map is rows = wn, columns = kp.
+ */
+struct DesignSweepResult {
+    SweepStatus status = SweepStatus::Completed;
+    SweepCriterion criterion = SweepCriterion::Itae;
+    std::vector<double> wnValues;
+    std::vector<double> kpValues;
+    std::vector<DesignPoint> points;
+    std::vector<std::uint8_t> feasibleMask; ///< 1 where points[i].feasible, same indexing
+    int computedCount = 0;
+    int feasibleCount = 0;
+    int stableCount = 0;
+    /// argmin of criterionValue over the feasible computed points (ties: the lowest index);
+    /// nullopt when no point is feasible.
+    std::optional<std::size_t> bestIndex;
+    /// The refined best (Completed sweeps with a best point and options.refine only).
+    std::optional<RefinementResult> refined;
+    int threadsUsed = 0;
+    std::vector<std::string> warnings;
+
+    std::size_t index(std::size_t iWn, std::size_t iKp) const { return iWn * kpValues.size() + iKp; }
+    const DesignPoint& at(std::size_t iWn, std::size_t iKp) const { return points[index(iWn, iKp)]; }
+};
+
+/// Recounts computedCount, stableCount, feasibleMask, feasibleCount and bestIndex (for
+/// result.criterion) from the points' `computed`, `stable` and `feasible`.
+void tallyDesignSpace(DesignSweepResult& result);
+
+/**
+ * Judges every computed point of @p result again against @p spec, which must have the study's
+ * actuator limit (the runs depend on it; on the other limits they do not, so this is exact):
+ * check, feasible and the tally (tallyDesignSpace) are recomputed. The refinement searched
+ * under the old limits and is dropped.
+ * @throws InvalidInput from Specification::validate.
+ */
+void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec);
+
+/**
+ * Evaluates every (wn, kp) of the grid (DesignEvaluator::evaluate), on all cores, then picks
+ * the best feasible design and refines it inside the grid's box (refineDesign, starting with
+ * the grid spacing at the best point as steps).
+ * @throws InvalidInput from DesignEvaluator, "wn" / "kp" for a bad axis, "threads" unless
+ *         0 <= threads <= 1024, "max_refine_evaluations" unless >= 0.
+ */
+DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis& wnAxis,
+                                   const SweepAxis& kpAxis, const SweepOptions& options = {});
+
+} // namespace xyt

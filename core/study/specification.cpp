@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/specification.h"
+
+#include "core/model/errors.h"
+
+#include <cmath>
+
+namespace xyt {
+
+namespace {
+
+void requireNonNegative(double value, const std::string& field) {
+    requireFinite(value, field);
+    if (value < 0.0)
+        throw InvalidInput(field, "must be zero or more");
+}
+
+/// Comparisons written so that NaN fails: !(NaN <= x) is true.
+bool atMost(double value, double limit) { return std::isfinite(value) && value <= limit; }
+
+} // namespace
+
+void Specification::validate() const {
+    requirePositive(maxSettlingTimeSeconds, "max_settling_time");
+    requireNonNegative(maxOvershootPct, "max_overshoot_pct");
+    requirePositive(umaxVolts, "umax");
+    requirePositive(maxErrorPct, "max_error_pct");
+}
+
+SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
+                                      const StepCharacteristics& step) {
+    spec.validate();
+    SpecificationCheck c;
+    c.stable = step.stable;
+    c.settlingTime = step.stable && atMost(step.settlingTimeSeconds, spec.maxSettlingTimeSeconds);
+    c.overshoot = step.stable && atMost(step.overshootPct, spec.maxOvershootPct +
+                                                               Specification::kOvershootRoundOffPct);
+    // A diverged run has no figures: it fails both tracking criteria (atMost(NaN) is false too).
+    c.noSaturation = !tracking.diverged && !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
+    c.trackingError = !tracking.diverged && atMost(tracking.maxAbsErrorPct, spec.maxErrorPct);
+    return c;
+}
+
+} // namespace xyt

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/simulation/metrics.h"
+
+namespace xyt {
+
+/**
+ * The performance specification of paper 000 (Sec. 3): settling time of 100 s, no overshoot,
+ * the control voltage never saturating at +-2.5 V, and a tracking error below 2 %.
+ *
+ * Overshoot and settling time are those of the closed loop's unit step response
+ * (stepCharacteristics, 2 % band); the error and the control voltage are those of one tracking
+ * run (trackingMetrics), the error as max |e| / travel * 100.
+ */
+struct Specification {
+    double maxSettlingTimeSeconds = 100.0;
+    double maxOvershootPct = 0.0; ///< the paper's "no overshoot"
+    double umaxVolts = 2.5;       ///< |u| must stay within this and never be clipped
+    double maxErrorPct = 2.0;     ///< max |e| as % of the travel
+
+    /**
+     * Slack on the overshoot criterion, in percent, for round-off only. The sampled step
+     * response is a recursion of some 10^4 steps, so its samples carry a relative round-off of
+     * about 1e4 * 1.1e-16 ~ 1e-12 (1e-10 %); 1e-9 % sits above that and is 6 pm on a 600 mm move.
+     *
+     * Note that no Guillemin-Truxal design of paper 000 has zero step overshoot: G_R is type 2
+     * (Eq. 7), so the step error E(s) = s (s^2 + a1 s + a2) / D(s) has integral E(0) = 0; it
+     * starts at 1, so it must go negative, i.e. y overshoots. With maxOvershootPct = 0 every
+     * design fails the overshoot criterion (the paper's own lower-base design overshoots 0.997 %,
+     * through its slow pole-zero pair); that is reported, not hidden by a larger tolerance.
+     */
+    static constexpr double kOvershootRoundOffPct = 1e-9;
+
+    /// @throws InvalidInput "max_settling_time", "max_overshoot_pct", "max_error_pct" (finite,
+    ///         >= 0; settling and error > 0), "umax" (finite, > 0).
+    void validate() const;
+    friend bool operator==(const Specification&, const Specification&) = default;
+};
+
+/// Pass/fail of each criterion of a Specification. A failed criterion says nothing about the
+/// others; a metric that is not finite fails its criterion.
+struct SpecificationCheck {
+    bool stable = false;       ///< closed loop asymptotically stable (needed by the step figures)
+    bool settlingTime = false; ///< settlingTimeSeconds <= maxSettlingTimeSeconds
+    bool overshoot = false;    ///< overshootPct <= maxOvershootPct + kOvershootRoundOffPct
+    bool noSaturation = false; ///< no clipped sample and maxAbsU <= umaxVolts
+    bool trackingError = false; ///< maxAbsErrorPct <= maxErrorPct
+
+    bool allPassed() const {
+        return stable && settlingTime && overshoot && noSaturation && trackingError;
+    }
+};
+
+/**
+ * Checks one design against @p spec. An unstable closed loop fails `stable`, `settlingTime` and
+ * `overshoot` (its step figures are undefined); the tracking criteria are still judged on the run.
+ * @throws InvalidInput from Specification::validate.
+ */
+SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
+                                      const StepCharacteristics& step);
+
+} // namespace xyt

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Export tests: the C header compiles standalone and its controller reproduces the core's
+// difference equation; the JSON parses back to the design; the script and CSV carry the design.
+#include "core/design/digital_controller.h"
+#include "core/session/export_text.h"
+#include "core/session/session_evaluation.h"
+#include "ui/session/coefficient_json.h"
+#include "tests/support/tolerance.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace xyt;
+
+class TstCoefficientExport : public QObject {
+    Q_OBJECT
+private slots:
+    void tustinAndBackwardEulerClosedForms();
+    void cHeaderCompilesAndMatchesCore();
+    void jsonParsesBack();
+    void octaveScriptDefinesTheTfObjects();
+    void csvColumnsAndRows();
+    void polePlacementAxisExports();
+};
+
+void TstCoefficientExport::tustinAndBackwardEulerClosedForms() {
+    // Closed forms: Tustin PI = [(kp + ki T/2) + (ki T/2 - kp) z^-1] / (1 - z^-1).
+    const auto t = discretizePi(30.0, 0.2, 0.01, PiDiscretization::Tustin);
+    XYT_COMPARE_NEAR(t.num[0], 30.001, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(t.num[1], -29.999, 1e-15, 0.0);
+    QCOMPARE(t.den, (std::vector<double>{1.0, -1.0}));
+    const auto b = discretizePi(30.0, 0.2, 0.01, PiDiscretization::BackwardEuler);
+    XYT_COMPARE_NEAR(b.num[0], 30.002, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(b.num[1], -30.0, 1e-15, 0.0);
+    // Invariant: the step response of a PI grows by ki*T per sample after the first.
+    const auto step = filterDifferenceEquation(t.num, t.den, std::vector<double>(5, 1.0));
+    for (std::size_t k = 2; k < step.size(); ++k)
+        XYT_COMPARE_NEAR(step[k] - step[k - 1], 0.2 * 0.01, 1e-9, 0.0);
+}
+
+void TstCoefficientExport::cHeaderCompilesAndMatchesCore() {
+    const QString cc = QStandardPaths::findExecutable("cc");
+    if (cc.isEmpty())
+        QSKIP("no C compiler (cc) on this machine");
+    const Session s = Session::paperDefault();
+    const SessionEvaluation e = evaluateSession(s);
+    QTemporaryDir dir;
+    QFile header(dir.filePath("xyt.h"));
+    QVERIFY(header.open(QIODevice::WriteOnly));
+    header.write(QByteArray::fromStdString(exportCHeader(s, e)));
+    header.close();
+    // A firmware-like loop: the difference equation on a unit step of the error, both axes.
+    QFile program(dir.filePath("main.c"));
+    QVERIFY(program.open(QIODevice::WriteOnly));
+    program.write(R"(#include <stdio.h>
+#include "xyt.h"
+static void run(const double* num, int nn, const double* den, int nd) {
+    double e[50], u[50];
+    for (int k = 0; k < 50; ++k) {
+        e[k] = 1.0;
+        double acc = 0.0;
+        for (int i = 0; i < nn && i <= k; ++i) acc += num[i] * e[k - i];
+        for (int i = 1; i < nd && i <= k; ++i) acc -= den[i] * u[k - i];
+        u[k] = acc / den[0];
+        printf("%.17g\n", u[k]);
+    }
+}
+int main(void) {
+    run(XYT_X_NUM, XYT_X_NUM_LEN, XYT_X_DEN, XYT_X_DEN_LEN);
+    run(XYT_Y_NUM, XYT_Y_NUM_LEN, XYT_Y_DEN, XYT_Y_DEN_LEN);
+    printf("%.17g %.17g\n", XYT_X_TS, XYT_Y_TS);
+    return 0;
+}
+)");
+    program.close();
+    QProcess compile;
+    compile.setWorkingDirectory(dir.path());
+    compile.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "main.c", "-o", "main"});
+    QVERIFY(compile.waitForFinished(60000));
+    QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
+    // The header alone, as a translation unit, must also compile warning-free.
+    QProcess alone;
+    alone.setWorkingDirectory(dir.path());
+    alone.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "xyt.h"});
+    QVERIFY(alone.waitForFinished(60000));
+    QVERIFY2(alone.exitCode() == 0, alone.readAllStandardError().constData());
+    QProcess run;
+    run.start(dir.filePath("main"), {});
+    QVERIFY(run.waitForFinished(60000));
+    const QList<QByteArray> lines = run.readAllStandardOutput().split('\n');
+    QVERIFY(lines.size() >= 101);
+    for (int axis = 0; axis < 2; ++axis) {
+        const auto& gt = *e.axes[static_cast<std::size_t>(axis)].gt;
+        const auto c = discretizePi(gt.kp, gt.ki, s.controllerTsSeconds, PiDiscretization::Tustin);
+        const auto expected = filterDifferenceEquation(c.num, c.den, std::vector<double>(50, 1.0));
+        for (int k = 0; k < 50; ++k)
+            // 17 printed digits round-trip exactly; the sums differ only in evaluation order.
+            XYT_COMPARE_NEAR(lines[axis * 50 + k].toDouble(), expected[static_cast<std::size_t>(k)], 1e-14, 1e-14);
+    }
+    QCOMPARE(lines[100].trimmed(), QByteArray("0.01 0.01"));
+}
+
+void TstCoefficientExport::jsonParsesBack() {
+    const Session s = Session::paperDefault();
+    const SessionEvaluation e = evaluateSession(s);
+    const QJsonObject json = QJsonDocument::fromJson(
+        QJsonDocument(ui::coefficientsJson(s, e)).toJson()).object();
+    QCOMPARE(json["format"].toString(), QString("xytune-coefficients"));
+    const QJsonArray axes = json["axes"].toArray();
+    QCOMPARE(axes.size(), 2);
+    const QJsonObject x = axes[0].toObject();
+    QCOMPARE(x["id"].toString(), QString("x"));
+    QCOMPARE(x["continuous_pi"].toObject()["ki"].toDouble(), e.axes[0].gt->ki);
+    QCOMPARE(x["digital_controller"].toObject()["order"].toString(), QString("ascending powers of z^-1"));
+    const QJsonArray den = x["reference_model"].toObject()["den"].toArray();
+    // Paper 000 Eq. 19: s^4 + 125.3 s^3 + 3665 s^2 + 2334 s + 16.
+    QCOMPARE(den.size(), 5);
+    XYT_COMPARE_NEAR(den[3].toDouble(), 2334.0, 1e-14, 0.0);
+    XYT_COMPARE_NEAR(den[4].toDouble(), 16.0, 1e-14, 0.0);
+}
+
+void TstCoefficientExport::octaveScriptDefinesTheTfObjects() {
+    const Session s = Session::paperDefault();
+    const std::string m = exportOctaveScript(s, evaluateSession(s));
+    for (const char* needle : {"pkg load control", "plant_x = tf(77.799999999999997, [1 125.3 3665 0]);",
+                               "controller_x = tf([30 ", "closed_loop_x = feedback(controller_x * plant_x, 1);",
+                               "plant_y = tf(24.440000000000001, [1 68.180000000000007 863 0]);",
+                               "closed_loop_y", "lsim(closed_loop_y"})
+        QVERIFY2(m.find(needle) != std::string::npos, needle);
+}
+
+void TstCoefficientExport::csvColumnsAndRows() {
+    const Session s = Session::paperDefault();
+    const SessionEvaluation e = evaluateSession(s);
+    const QList<QByteArray> lines = QByteArray::fromStdString(exportCsv(s, e)).trimmed().split('\n');
+    QCOMPARE(lines[0], QByteArray("t,r_x,y_x,e_x,u_x,r_y,y_y,e_y,u_y"));
+    QCOMPARE(lines.size(), 1 + 13001); // 130 s at 0.01 s, both ends
+    const QList<QByteArray> last = lines.back().split(',');
+    XYT_COMPARE_NEAR(last[0].toDouble(), 130.0, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(last[1].toDouble(), 600.0, 1e-9, 0.0); // 10 printed digits
+}
+
+void TstCoefficientExport::polePlacementAxisExports() {
+    Session s = Session::paperDefault();
+    s.axes[1].method = DesignMethod::PolePlacementZpetc; // the y-axis ARX model of paper 001
+    const SessionEvaluation e = evaluateSession(s);
+    QVERIFY(e.axes[1].ok);
+    const QJsonObject y = ui::coefficientsJson(s, e)["axes"].toArray()[1].toObject();
+    const QJsonObject rst = y["rst"].toObject();
+    // The RST polynomials are the core's, exactly (JSON keeps the shortest round-trip digits).
+    QCOMPARE(rst["Kf"].toDouble(), e.axes[1].pp->kf);
+    QCOMPARE(rst["G"].toArray()[0].toDouble(), e.axes[1].pp->g.coefficient(0));
+    QCOMPARE(y["zpetc"].toObject()["preview_steps"].toInt(), e.axes[1].zpetc->previewSteps);
+    const std::string header = exportCHeader(s, e);
+    QVERIFY(header.find("XYT_Y_KF") != std::string::npos);
+    QVERIFY(header.find("XYT_Y_FF_NUM") != std::string::npos);
+    QVERIFY(header.find("#define XYT_Y_PREVIEW 2") != std::string::npos);
+    const QString cc = QStandardPaths::findExecutable("cc");
+    if (cc.isEmpty())
+        QSKIP("no C compiler (cc) on this machine");
+    QTemporaryDir dir;
+    QFile f(dir.filePath("pp.h"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(header));
+    f.close();
+    QProcess compile;
+    compile.setWorkingDirectory(dir.path());
+    compile.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "pp.h"});
+    QVERIFY(compile.waitForFinished(60000));
+    QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
+    const std::string m = exportOctaveScript(s, e);
+    QVERIFY(m.find("plant_y = filt([0 0.035200000000000002 0.059900000000000002 -0.0067000000000000002]") != std::string::npos);
+    QVERIFY(m.find("closed_loop_y = Kf_y * feedback(") != std::string::npos);
+}
+
+QTEST_APPLESS_MAIN(TstCoefficientExport)
+#include "tst_coefficient_export.moc"

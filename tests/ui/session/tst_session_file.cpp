@@ -1,0 +1,312 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/session/session_file.h"
+
+#include "core/io/file_io.h"
+#include "tests/support/small_filesystem.h"
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QScopeGuard>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cerrno>
+#include <cstring>
+
+#include <sys/stat.h>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+class TstSessionFile : public QObject {
+    Q_OBJECT
+private slots:
+    void roundTripDefault();
+    void roundTripEveryField();
+    void malformed_data();
+    void malformed();
+    void unknownFieldsAreReported();
+    void newerVersionIsRefused();
+    void fileErrors();
+    void failedSaveKeepsOldFile();
+    void duplicateKeysAreRefused_data();
+    void duplicateKeysAreRefused();
+    void specialFilesAreRefused();
+    void injectedWriteFailureKeepsOldFile();
+    void fullDiskKeepsOldFile(); // last: it moves the process into its own mount namespace
+};
+
+namespace {
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
+}
+
+QJsonObject defaultJson() { return sessionToJson(Session::paperDefault()); }
+
+/// Sets the value at a dotted path with [i] indices in a copy of @p root.
+QJsonValue setPath(QJsonValue node, QStringList keys, const QJsonValue& value) {
+    if (keys.isEmpty())
+        return value;
+    const QString key = keys.takeFirst();
+    if (key.startsWith('[')) {
+        QJsonArray a = node.toArray();
+        const int i = key.mid(1, key.size() - 2).toInt();
+        a[i] = setPath(a[i], keys, value);
+        return a;
+    }
+    QJsonObject o = node.toObject();
+    if (value.isUndefined() && keys.isEmpty())
+        o.remove(key);
+    else
+        o[key] = setPath(o.value(key), keys, value);
+    return o;
+}
+
+QStringList splitPath(const QString& path) {
+    QStringList out;
+    for (const QString& part : path.split('.')) {
+        const qsizetype b = part.indexOf('[');
+        if (b < 0) {
+            out << part;
+            continue;
+        }
+        out << part.left(b);
+        for (const QString& idx : part.mid(b).split('[', Qt::SkipEmptyParts))
+            out << "[" + idx;
+    }
+    return out;
+}
+
+} // namespace
+
+void TstSessionFile::roundTripDefault() {
+    // Invariant: load(save(s)) == s, field by field (Session has a defaulted operator==).
+    const Session s = Session::paperDefault();
+    const auto r = sessionFromBytes(QJsonDocument(sessionToJson(s)).toJson());
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s);
+    QVERIFY(r.warnings.isEmpty());
+}
+
+void TstSessionFile::roundTripEveryField() {
+    Session s = Session::paperDefault();
+    s.axes[1].method = DesignMethod::PolePlacementZpetc;
+    s.axes[1].pp.t1 = -0.35;
+    s.axes[1].pp.zpetcEnabled = false;
+    s.axes[0].gt.kp = 12.345678901234567;
+    s.trajectory.kind = TrajectoryKind::Circle;
+    s.trajectory.radius = 30.0;
+    s.trajectory.durationSeconds = 77.5;
+    s.umaxVolts = 10.0;
+    s.controllerTsSeconds = 0.002;
+    s.piDiscretization = PiDiscretization::BackwardEuler;
+    s.spec.maxOvershootPct = 1.5;
+    s.snapshots.push_back(s.snapshot("first"));
+    s.snapshots.back().axes[0].gt.omegaNRadPerSec = 3.25;
+    QTemporaryDir dir;
+    const QString path = dir.filePath("s.json");
+    QString error;
+    QVERIFY2(saveSessionFile(s, path, &error), qPrintable(error));
+    const auto r = loadSessionFile(path);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s); // doubles survive exactly: Qt writes the shortest round-trip form
+}
+
+void TstSessionFile::malformed_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("expectedPath");
+    QTest::addColumn<QString>("expectedReason");
+    QTest::newRow("NaN as a string") << "axes[1].gt.plant.a2" << QJsonValue("NaN")
+                                     << "axes[1].gt.plant.a2" << "must be a finite number";
+    QTest::newRow("wrong type") << "axes[0].gt.kp" << QJsonValue(true) << "axes[0].gt.kp"
+                                << "must be a finite number";
+    QTest::newRow("negative kp") << "axes[0].gt.kp" << QJsonValue(-3) << "axes[0].gt.kp"
+                                 << "must be greater than zero";
+    QTest::newRow("zero k0") << "axes[0].gt.plant.k0" << QJsonValue(0) << "axes[0].gt.plant.k0"
+                             << "must be nonzero";
+    QTest::newRow("missing field") << "trajectory.dt" << QJsonValue(QJsonValue::Undefined)
+                                   << "trajectory.dt" << "is missing";
+    QTest::newRow("unknown method") << "axes[0].method" << QJsonValue("pid") << "axes[0].method"
+                                    << "must be \"guillemin-truxal\" or \"pole-placement-zpetc\"";
+    QJsonArray huge;
+    for (int i = 0; i < 100000; ++i)
+        huge.append(1.0);
+    QTest::newRow("huge array") << "axes[1].pp.a" << QJsonValue(huge) << "axes[1].pp.a"
+                                << "has 100000 entries; at most 64 are allowed";
+    QTest::newRow("empty array") << "axes[1].pp.b" << QJsonValue(QJsonArray()) << "axes[1].pp.b"
+                                 << "must not be empty";
+    QTest::newRow("one axis") << "axes" << QJsonValue(QJsonArray{defaultJson()["axes"].toArray()[0]})
+                              << "axes" << "must be an array of exactly two axes";
+    QTest::newRow("tf before t0") << "trajectory.cubic.tf" << QJsonValue(-1) << "trajectory.cubic.tf"
+                                  << "must be later than t0";
+    QTest::newRow("object expected") << "trajectory" << QJsonValue(3) << "trajectory"
+                                     << "must be an object";
+    QTest::newRow("duration too long") << "trajectory.duration" << QJsonValue(1e12)
+                                       << "trajectory.duration"
+                                       << "needs more than 20000000 samples at this dt";
+}
+
+void TstSessionFile::malformed() {
+    QFETCH(QString, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, expectedPath);
+    QFETCH(QString, expectedReason);
+    const QJsonObject root = setPath(defaultJson(), splitPath(path), value).toObject();
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, expectedPath);
+    QCOMPARE(r.error, expectedReason);
+}
+
+void TstSessionFile::unknownFieldsAreReported() {
+    QJsonObject root = defaultJson();
+    root["comment"] = "hand-written";
+    QJsonArray axes = root["axes"].toArray();
+    QJsonObject x = axes[0].toObject();
+    x["colour"] = "red";
+    axes[0] = x;
+    root["axes"] = axes;
+    const auto r = sessionFromJson(root);
+    QVERIFY(r.ok);
+    QCOMPARE(r.warnings.size(), 2);
+    QVERIFY(r.warnings.contains("comment: unknown field ignored"));
+    QVERIFY(r.warnings.contains("axes[0].colour: unknown field ignored"));
+}
+
+void TstSessionFile::newerVersionIsRefused() {
+    QJsonObject root = defaultJson();
+    root["version"] = kSessionFormatVersion + 1;
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, QString("version"));
+    QVERIFY(r.error.contains("please update XY Tune"));
+}
+
+void TstSessionFile::fileErrors() {
+    QTemporaryDir dir;
+    auto r = loadSessionFile(dir.path());
+    QVERIFY(!r.ok);
+    QVERIFY2(r.error.contains("is a directory"), qPrintable(r.error));
+    r = loadSessionFile(dir.filePath("missing.json"));
+    QVERIFY(r.error.contains("no such file"));
+    QFile truncated(dir.filePath("t.json"));
+    QVERIFY(truncated.open(QIODevice::WriteOnly));
+    truncated.write(QJsonDocument(defaultJson()).toJson().left(200));
+    truncated.close();
+    r = loadSessionFile(truncated.fileName());
+    QVERIFY(!r.ok);
+    QVERIFY2(r.error.startsWith("not valid JSON"), qPrintable(r.error));
+    r = sessionFromBytes("[1, 2]");
+    QVERIFY(r.error.contains("must be a JSON object"));
+}
+
+void TstSessionFile::failedSaveKeepsOldFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("keep.json");
+    QString error;
+    QVERIFY(saveSessionFile(Session::paperDefault(), path, &error));
+    const QByteArray before = [&] {
+        QFile f(path);
+        f.open(QIODevice::ReadOnly);
+        return f.readAll();
+    }();
+    // A directory where the file should go, and a read-only directory: both fail cleanly.
+    QVERIFY(!saveSessionFile(Session::paperDefault(), dir.path(), &error));
+    QVERIFY(error.contains("is a directory"));
+    Session changed = Session::paperDefault();
+    changed.umaxVolts = 7.0;
+    QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner);
+    const bool saved = saveSessionFile(changed, path, &error);
+    QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+    if (saved)
+        QSKIP("running as root: a read-only directory does not stop the write");
+    QVERIFY(!error.isEmpty());
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), before);
+}
+
+void TstSessionFile::duplicateKeysAreRefused_data() {
+    // Qt's reader keeps the last of two equal keys, others the first: the file means two
+    // sessions. The key is named by its JSON path, after decoding escapes.
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("path");
+    QTest::newRow("top level") << QByteArray(R"({"umax": 2.5, "format": 1, "umax": 250})") << "umax";
+    QTest::newRow("nested in an array")
+        << QByteArray(R"({"axes": [{}, {"gt": {"plant": {"k0": 1, "a1": 2, "k0": 3}}}]})")
+        << "axes[1].gt.plant.k0";
+    QTest::newRow("escaped spelling of the same key")
+        << QByteArray(R"({"a": [1, [2, {}]], "snapshots": [{"name": "a", "n\u0061me": "b"}]})")
+        << "snapshots[0].name";
+}
+
+void TstSessionFile::duplicateKeysAreRefused() {
+    QFETCH(QByteArray, json);
+    QFETCH(QString, path);
+    const SessionLoadResult r = sessionFromBytes(json);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, path);
+    QVERIFY2(r.error.contains("more than once"), qPrintable(r.message()));
+    // The saved default session has no duplicates and loads.
+    QVERIFY(sessionFromBytes(QJsonDocument(defaultJson()).toJson()).ok);
+}
+
+void TstSessionFile::specialFilesAreRefused() {
+    QTemporaryDir dir;
+    const QString fifo = dir.filePath("pipe");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    for (const QString& path : {fifo, QStringLiteral("/dev/zero")}) {
+        const SessionLoadResult r = loadSessionFile(path); // returns: no blocking, no bad_alloc
+        QVERIFY(!r.ok);
+        QVERIFY2(r.error.contains("not a regular file"), qPrintable(r.error));
+    }
+    // A GUI save over a FIFO does not replace it.
+    QString error;
+    QVERIFY(!saveSessionFile(Session::paperDefault(), fifo, &error));
+    QVERIFY2(error.contains("not a regular file"), qPrintable(error));
+}
+
+void TstSessionFile::injectedWriteFailureKeepsOldFile() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("keep.json");
+    QString error;
+    QVERIFY(saveSessionFile(Session::paperDefault(), path, &error));
+    const QByteArray before = readAll(path);
+    Session changed = Session::paperDefault();
+    changed.umaxVolts = 7.0;
+    for (const auto& [step, reason] : {std::pair{WriteStep::Write, ENOSPC}, std::pair{WriteStep::Sync, EIO},
+                                       std::pair{WriteStep::Rename, EIO}}) {
+        injectWriteFailureForTesting(step);
+        const bool saved = saveSessionFile(changed, path, &error);
+        injectWriteFailureForTesting(WriteStep::None);
+        QVERIFY(!saved);
+        QCOMPARE(error, path + ": " + QString::fromUtf8(std::strerror(reason)));
+        QCOMPARE(readAll(path), before);
+    }
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"keep.json"});
+}
+
+void TstSessionFile::fullDiskKeepsOldFile() {
+    QTemporaryDir dir;
+    if (const QString why = xyt::test::mountSmallFilesystem(dir.path(), 64); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const auto unmount = qScopeGuard([&] { xyt::test::unmountSmallFilesystem(dir.path()); });
+    const QString path = dir.filePath("keep.json");
+    QString error;
+    QVERIFY(saveSessionFile(Session::paperDefault(), path, &error));
+    const QByteArray before = readAll(path);
+    xyt::test::fillFilesystem(dir.path());
+    Session changed = Session::paperDefault();
+    changed.umaxVolts = 7.0;
+    QVERIFY(!saveSessionFile(changed, path, &error));
+    QCOMPARE(error, path + ": " + QString::fromUtf8(std::strerror(ENOSPC)));
+    QCOMPARE(readAll(path), before);
+}
+
+QTEST_APPLESS_MAIN(TstSessionFile)
+#include "tst_session_file.moc"

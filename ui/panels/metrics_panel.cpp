@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/panels/metrics_panel.h"
+
+#include "core/model/errors.h"
+#include "ui/panels/number_field.h"
+
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace xyt::ui {
+
+QString displayNumber(double v, int decimals) {
+    if (!std::isfinite(v))
+        return QObject::tr("n/a");
+    if (v != 0.0 && (std::abs(v) >= 1e6 || std::abs(v) < 1e-3))
+        return QString::number(v, 'g', 3);
+    return QString::number(v, 'f', decimals);
+}
+
+MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    table_ = new QTableWidget(RowCount, 3, this);
+    table_->setHorizontalHeaderLabels({tr("X"), tr("Y"), tr("spec")});
+    table_->setVerticalHeaderLabels({tr("RMSE (mm)"), tr("max |e| (mm)"), tr("max |e| (% travel)"),
+                                     tr("max |u| (V)"), tr("saturated (s)"),
+                                     tr("settling 2 % (s)"), tr("overshoot (%)"), tr("ITAE"),
+                                     tr("ZPETC gain (%)")});
+    table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    table_->setWordWrap(false);
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->setAccessibleName(tr("Metrics"));
+    table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    layout->addWidget(table_);
+    notices_ = new QLabel(this);
+    notices_->setWordWrap(true);
+    notices_->setTextFormat(Qt::PlainText);
+    notices_->setStyleSheet(QStringLiteral(
+        "QLabel { background: #fff4d6; border: 1px solid #e0b24a; border-radius: 3px; padding: 3px; }"));
+    notices_->setAccessibleName(tr("Warnings"));
+    notices_->setVisible(false);
+    layout->addWidget(notices_);
+    auto* form = new QFormLayout;
+    auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
+    spec_.insert("settling", new NumberField("max settling time", positive("max settling time"), this));
+    spec_.insert("overshoot", new NumberField("max overshoot", [](double v) {
+        requireFinite(v, "max overshoot");
+        if (v < 0)
+            throw InvalidInput("max overshoot", "must be >= 0");
+    }, this));
+    spec_.insert("error", new NumberField("max error", positive("max error"), this));
+    form->addRow(tr("Spec: settling ≤ (s)"), spec_["settling"]);
+    form->addRow(tr("overshoot ≤ (%)"), spec_["overshoot"]);
+    form->addRow(tr("max |e| ≤ (% travel)"), spec_["error"]);
+    spec_["overshoot"]->setToolTip(tr("Every Guillemin–Truxal design overshoots a little on a step "
+                                      "(its reference model is type 2), so 0 % fails them all."));
+    layout->addLayout(form);
+    for (NumberField* f : spec_)
+        connect(f, &NumberField::valueAccepted, this, [this] {
+            Specification next = current_;
+            next.maxSettlingTimeSeconds = spec_["settling"]->value();
+            next.maxOvershootPct = spec_["overshoot"]->value();
+            next.maxErrorPct = spec_["error"]->value();
+            if (!(next == current_))
+                emit specificationEdited(next);
+        });
+}
+
+QString MetricsPanel::noticeText() const { return notices_->text(); }
+
+void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluation& evaluation,
+                                  const QString& liveNotice) {
+    QStringList notices;
+    if (!liveNotice.isEmpty())
+        notices << liveNotice;
+    current_ = session.spec;
+    spec_["settling"]->setValue(session.spec.maxSettlingTimeSeconds);
+    spec_["overshoot"]->setValue(session.spec.maxOvershootPct);
+    spec_["error"]->setValue(session.spec.maxErrorPct);
+    const QStringList specText = {QString(), QString(),
+                                  tr("≤ %1").arg(session.spec.maxErrorPct),
+                                  tr("≤ %1").arg(session.umaxVolts), tr("no"),
+                                  tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds),
+                                  tr("≤ %1").arg(session.spec.maxOvershootPct), QString(), QString()};
+    for (int r = 0; r < RowCount; ++r) {
+        auto* item = new QTableWidgetItem(specText[r]);
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table_->setItem(r, 2, item);
+    }
+    for (int c = 0; c < 2; ++c) {
+        const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(c)];
+        const QString header = QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
+        table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
+        QStringList values;
+        if (!a.ok) {
+            for (int r = 0; r < RowCount; ++r)
+                values << tr("—");
+        } else {
+            const auto& m = a.metrics;
+            values << displayNumber(m.rmse) << displayNumber(m.maxAbsError)
+                   << displayNumber(m.maxAbsErrorPct, 3) << displayNumber(m.maxAbsU)
+                   << (m.diverged    ? tr("n/a")
+                       : !m.saturated ? tr("no")
+                       : a.pp         ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds, 2))
+                                      : displayNumber(m.saturatedTimeSeconds, 2))
+                   << (a.step.stable ? displayNumber(a.step.settlingTimeSeconds, 2) : tr("unstable"))
+                   << (a.step.stable ? displayNumber(a.step.overshootPct, 3) : tr("unstable"))
+                   << displayNumber(m.itae, 1)
+                   << (a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
+                           ? displayNumber(a.improvementPct, 2)
+                           : tr("—"));
+        }
+        if (!a.ok)
+            notices << tr("%1: no design (%2: %3)").arg(header, QString::fromStdString(a.errorField),
+                                                      QString::fromStdString(a.error));
+        for (const std::string& w : a.warnings)
+            notices << tr("%1: %2").arg(header, QString::fromStdString(w));
+        // Which rows the specification judges, and whether this axis passes them.
+        const QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
+                                        {MaxU, a.check.noSaturation},
+                                        {Saturated, a.check.noSaturation},
+                                        {Settling, a.check.settlingTime},
+                                        {Overshoot, a.check.overshoot}};
+        for (int r = 0; r < RowCount; ++r) {
+            QString text = values[r];
+            auto* item = new QTableWidgetItem;
+            if (a.ok && judged.contains(r)) {
+                const bool pass = judged[r];
+                text += pass ? QStringLiteral("  ✓") : QStringLiteral("  ✗");
+                item->setForeground(pass ? QColor(0x1b, 0x7f, 0x2a) : QColor(0xc6, 0x28, 0x28));
+                item->setToolTip(pass ? tr("meets the specification") : tr("fails the specification"));
+            }
+            item->setText(text);
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            if (!a.ok)
+                item->setToolTip(QString::fromStdString(a.errorField + ": " + a.error));
+            if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
+                item->setToolTip(tr("* not applied: the discrete loop of paper 001 is simulated "
+                                    "without a limit; |u| would be clipped this long"));
+            table_->setItem(r, c, item);
+        }
+    }
+    notices_->setText(notices.join(QLatin1Char('\n')));
+    notices_->setVisible(!notices.isEmpty());
+}
+
+} // namespace xyt::ui

@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/plots/plane_grid.h"
+
+#include "core/analysis/damping_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace xyt::ui {
+
+QCPCurve* addComplexCurve(QCustomPlot* plot, const std::vector<std::complex<double>>& points,
+                          const QPen& pen) {
+    auto* curve = new QCPCurve(plot->xAxis, plot->yAxis);
+    QVector<double> t(static_cast<qsizetype>(points.size())), x(t.size()), y(t.size());
+    for (qsizetype i = 0; i < t.size(); ++i) {
+        t[i] = static_cast<double>(i);
+        x[i] = points[static_cast<std::size_t>(i)].real();
+        y[i] = points[static_cast<std::size_t>(i)].imag();
+    }
+    curve->setData(t, x, y, true);
+    curve->setPen(pen);
+    return curve;
+}
+
+void showBranches(QCustomPlot* plot, std::vector<QCPCurve*>& curves,
+                  const std::vector<std::vector<std::complex<double>>>& branches,
+                  const std::function<QPen(std::size_t)>& penFor) {
+    while (curves.size() > branches.size()) {
+        plot->removePlottable(curves.back());
+        curves.pop_back();
+    }
+    while (curves.size() < branches.size()) {
+        auto* c = new QCPCurve(plot->xAxis, plot->yAxis);
+        c->setPen(penFor(curves.size()));
+        c->removeFromLegend();
+        curves.push_back(c);
+    }
+    for (std::size_t b = 0; b < branches.size(); ++b) {
+        const auto& roots = branches[b];
+        QVector<QCPCurveData> data;
+        data.reserve(static_cast<qsizetype>(roots.size()));
+        for (std::size_t i = 0; i < roots.size(); ++i)
+            data.append(QCPCurveData(static_cast<double>(i), roots[i].real(), roots[i].imag()));
+        curves[b]->data()->set(data, true);
+    }
+}
+
+void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& points) {
+    // QCPGraph sorts by key; points with equal real parts are kept (it is a scatter only).
+    QVector<QCPGraphData> data;
+    data.reserve(static_cast<qsizetype>(points.size()));
+    for (const auto& p : points)
+        if (std::isfinite(p.real()) && std::isfinite(p.imag()))
+            data.append(QCPGraphData(p.real(), p.imag()));
+    graph->data()->set(data, false);
+}
+
+bool anyOutsideView(const QCustomPlot* plot, const std::vector<std::complex<double>>& points) {
+    const QCPRange re = plot->xAxis->range(), im = plot->yAxis->range();
+    for (const auto& p : points)
+        if (std::isfinite(p.real()) && std::isfinite(p.imag()) &&
+            (!re.contains(p.real()) || !im.contains(p.imag())))
+            return true;
+    return false;
+}
+
+PlaneBox fittedBox(PlaneBox base, const std::vector<std::complex<double>>& points) {
+    PlaneBox b = base;
+    bool first = !(b.reMax > b.reMin && b.imMax > b.imMin);
+    for (const auto& p : points) {
+        if (!std::isfinite(p.real()) || !std::isfinite(p.imag()))
+            continue;
+        if (first) {
+            b = {p.real(), p.real(), p.imag(), p.imag()};
+            first = false;
+            continue;
+        }
+        b.reMin = std::min(b.reMin, p.real());
+        b.reMax = std::max(b.reMax, p.real());
+        b.imMin = std::min(b.imMin, p.imag());
+        b.imMax = std::max(b.imMax, p.imag());
+    }
+    if (first)
+        return {-1.0, 1.0, -1.0, 1.0};
+    const double extent = std::max({b.reMax - b.reMin, b.imMax - b.imMin,
+                                    1e-3 * std::max({std::abs(b.reMin), std::abs(b.reMax), 1.0})});
+    const double pad = 0.08 * extent;
+    // Keep the imaginary axis symmetric: conjugate pairs then sit at equal heights.
+    const double im = std::max(std::abs(b.imMin), std::abs(b.imMax)) + pad;
+    return {b.reMin - pad, b.reMax + pad, -std::max(im, 0.3 * extent), std::max(im, 0.3 * extent)};
+}
+
+void setView(QCustomPlot* plot, const PlaneBox& box) {
+    plot->xAxis->setRange(box.reMin, box.reMax);
+    plot->yAxis->setRange(box.imMin, box.imMax);
+}
+
+PlaneGrid::PlaneGrid(QCustomPlot* plot) : plot_(plot) {}
+
+void PlaneGrid::clear() {
+    for (QCPCurve* c : curves_)
+        plot_->removePlottable(c);
+    for (QCPItemText* t : labels_)
+        plot_->removeItem(t);
+    curves_.clear();
+    labels_.clear();
+}
+
+void PlaneGrid::setVisible(bool visible) {
+    visible_ = visible;
+    for (QCPCurve* c : curves_)
+        c->setVisible(visible);
+    for (QCPItemText* t : labels_)
+        t->setVisible(visible);
+}
+
+void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
+    // Rebuild only when the plane or the frequency scale changes by more than a factor 2:
+    // a slider drag must not rebuild the grid on every step.
+    if (tsSeconds == ts_ && maxOmega_ > 0 && maxOmegaRadPerSec <= maxOmega_ &&
+        maxOmegaRadPerSec > maxOmega_ / 2)
+        return;
+    clear();
+    ts_ = tsSeconds;
+    maxOmega_ = maxOmegaRadPerSec;
+    const QPen pen(QColor(0xdc, 0xdc, 0xdc), 0, Qt::SolidLine); // solid: dotted pens rasterize slowly
+    const DampingGrid grid = tsSeconds > 0.0
+                                 ? zPlaneDampingGrid(defaultGridZetas(), defaultZGridFrequencies(tsSeconds), tsSeconds)
+                                 : sPlaneDampingGrid(defaultGridZetas(),
+                                                     niceGridFrequencies(maxOmegaRadPerSec),
+                                                     maxOmegaRadPerSec);
+    for (const GridLine& line : grid.dampingLines)
+        curves_.push_back(addComplexCurve(plot_, line.points, pen));
+    for (const GridLine& line : grid.frequencyLines)
+        curves_.push_back(addComplexCurve(plot_, line.points, pen));
+    if (tsSeconds > 0.0) {
+        std::vector<std::complex<double>> circle;
+        for (int i = 0; i <= 180; ++i)
+            circle.push_back(std::polar(1.0, 2.0 * std::numbers::pi * i / 180.0));
+        curves_.push_back(addComplexCurve(plot_, circle, QPen(QColor(0x60, 0x60, 0x60), 1.2)));
+    }
+    for (const GridLine& line : grid.dampingLines) {
+        if (line.points.empty())
+            continue;
+        auto* label = new QCPItemText(plot_);
+        const auto& p = line.points.front();
+        label->position->setCoords(p.real(), p.imag());
+        label->setText(QStringLiteral("ζ=%1").arg(line.value));
+        label->setColor(QColor(0x9a, 0x9a, 0x9a));
+        label->setFont(QFont(plot_->font().family(), 7));
+        label->setClipToAxisRect(true);
+        labels_.push_back(label);
+    }
+    for (QCPCurve* c : curves_) {
+        c->setLayer("grid");
+        c->removeFromLegend();
+        c->setSelectable(QCP::stNone);
+    }
+    setVisible(visible_);
+}
+
+} // namespace xyt::ui

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/plots/plot_tools.h"
+
+#include <QFileDialog>
+#include <QMenu>
+#include <QMessageBox>
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace xyt::ui {
+
+namespace {
+std::size_t bucketSize(std::size_t n, int buckets) {
+    return buckets > 0 ? (n + static_cast<std::size_t>(buckets) - 1) / static_cast<std::size_t>(buckets) : n;
+}
+} // namespace
+
+QVector<QCPGraphData> minMaxDecimated(const std::vector<double>& t, const std::vector<double>& y,
+                                      int buckets) {
+    const std::size_t n = std::min(t.size(), y.size());
+    QVector<QCPGraphData> out;
+    if (n <= 2 * static_cast<std::size_t>(std::max(buckets, 1))) {
+        out.reserve(static_cast<qsizetype>(n));
+        for (std::size_t k = 0; k < n; ++k)
+            out.append(QCPGraphData(t[k], y[k]));
+        return out;
+    }
+    const std::size_t size = bucketSize(n, buckets);
+    out.reserve(2 * buckets + 2);
+    for (std::size_t begin = 0; begin < n; begin += size) {
+        const std::size_t end = std::min(n, begin + size);
+        std::size_t lo = begin, hi = begin;
+        for (std::size_t k = begin; k < end; ++k) {
+            // A non-finite sample is kept as such: the line shows a gap, not a made-up value.
+            if (!std::isfinite(y[k])) {
+                lo = hi = k;
+                break;
+            }
+            if (y[k] < y[lo])
+                lo = k;
+            if (y[k] > y[hi])
+                hi = k;
+        }
+        const std::size_t first = std::min(lo, hi), second = std::max(lo, hi);
+        out.append(QCPGraphData(t[first], y[first]));
+        if (second != first)
+            out.append(QCPGraphData(t[second], y[second]));
+    }
+    // The last sample ends the line where the run ends.
+    if (out.last().key != t[n - 1])
+        out.append(QCPGraphData(t[n - 1], y[n - 1]));
+    return out;
+}
+
+QVector<QCPGraphData> flagDecimated(const std::vector<double>& t, const std::vector<bool>& flags,
+                                    double valueWhenSet, int buckets) {
+    const std::size_t n = std::min(t.size(), flags.size());
+    const bool decimate = n > 2 * static_cast<std::size_t>(std::max(buckets, 1));
+    const std::size_t size = decimate ? bucketSize(n, buckets) : 1;
+    QVector<QCPGraphData> out;
+    out.reserve(static_cast<qsizetype>(decimate ? 2 * buckets + 2 : n));
+    for (std::size_t begin = 0; begin < n; begin += size) {
+        const std::size_t end = std::min(n, begin + size);
+        bool any = false;
+        for (std::size_t k = begin; k < end && !any; ++k)
+            any = flags[k];
+        const double v = any ? valueWhenSet : qQNaN();
+        out.append(QCPGraphData(t[begin], v));
+        if (end - 1 != begin)
+            out.append(QCPGraphData(t[end - 1], v));
+    }
+    return out;
+}
+
+void styleAxisRect(QCPAxisRect* rect) {
+    for (QCPAxis* axis : rect->axes()) {
+        // Solid, light grid lines: dotted pens are several times slower to rasterize.
+        axis->grid()->setPen(QPen(QColor(0xe6, 0xe6, 0xe6), 0, Qt::SolidLine));
+        axis->grid()->setZeroLinePen(QPen(QColor(0xb0, 0xb0, 0xb0)));
+        QFont f = axis->labelFont();
+        f.setPointSizeF(9);
+        axis->setLabelFont(f);
+        axis->setTickLabelFont(f);
+    }
+}
+
+void resetView(QCustomPlot* plot) {
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        bool any = false;
+        for (QCPAxis* axis : rect->axes())
+            for (QCPAbstractPlottable* p : axis->plottables())
+                if (p->visible()) {
+                    any = true;
+                    break;
+                }
+        if (!any)
+            continue;
+        for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)}) {
+            axis->rescale(true);
+            const QCPRange r = axis->range();
+            const double pad = r.size() > 0 ? 0.05 * r.size() : 1.0;
+            axis->setRange(r.lower - pad, r.upper + pad);
+        }
+    }
+    plot->replot();
+}
+
+bool savePlot(QCustomPlot* plot, const QString& path, QString* error) {
+    const bool pdf = path.endsWith(".pdf", Qt::CaseInsensitive);
+    const bool ok = pdf ? plot->savePdf(path) : plot->savePng(path, 0, 0, 2.0);
+    if (!ok && error)
+        *error = QObject::tr("Could not write %1").arg(path);
+    return ok;
+}
+
+void savePlotDialog(QCustomPlot* plot, const QString& suggestedName) {
+    const QString path = QFileDialog::getSaveFileName(
+        plot, QObject::tr("Save plot"), suggestedName,
+        QObject::tr("PNG image (*.png);;PDF document (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!savePlot(plot, path, &error))
+        QMessageBox::warning(plot, QObject::tr("Save plot"), error);
+}
+
+void setupInteractivePlot(QCustomPlot* plot) {
+    plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    // Fast polylines: a slider drag redraws several 13 000-point graphs per step.
+    plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
+    plot->setNotAntialiasedElements(QCP::aePlottables);
+    plot->setContextMenuPolicy(Qt::CustomContextMenu);
+    plot->setMinimumSize(240, 180);
+    plot->setNoAntialiasingOnDrag(true);
+    QObject::connect(plot, &QCustomPlot::mouseDoubleClick, plot,
+                     [plot](QMouseEvent*) { resetView(plot); });
+    QObject::connect(plot, &QWidget::customContextMenuRequested, plot, [plot](const QPoint& pos) {
+        QMenu menu(plot);
+        menu.addAction(QObject::tr("Reset view"), plot, [plot] { resetView(plot); });
+        menu.addSeparator();
+        menu.addAction(QObject::tr("Save as PNG..."), plot,
+                       [plot] { savePlotDialog(plot, plot->objectName() + ".png"); });
+        menu.addAction(QObject::tr("Save as PDF..."), plot,
+                       [plot] { savePlotDialog(plot, plot->objectName() + ".pdf"); });
+        menu.exec(plot->mapToGlobal(pos));
+    });
+}
+
+} // namespace xyt::ui

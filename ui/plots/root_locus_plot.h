@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/analysis/root_locus.h"
+#include "ui/plots/plane_grid.h"
+#include "ui/plots/plot_notice.h"
+
+#include <qcustomplot.h>
+
+#include <optional>
+
+namespace xyt::ui {
+
+/**
+ * The root locus of 1 + K L(s) = 0 (or in z) with the open-loop poles (x) and zeros (o), the
+ * current closed-loop poles (filled diamonds, K = 1 is the design), the zeta/omega_n grid, a
+ * hover readout of K, zeta and omega_n, and a click on a branch that picks that gain.
+ * Draws a core RootLocus; computes nothing but the pick (core pickLocusPoint).
+ */
+class RootLocusPlot : public QCustomPlot {
+    Q_OBJECT
+public:
+    explicit RootLocusPlot(QWidget* parent = nullptr);
+
+    void showLocus(const RootLocus& locus, const std::vector<std::complex<double>>& currentPoles,
+                   const QString& title);
+    /// Clears the plot and says why there is no locus (invalid or failed design): never the
+    /// locus of an earlier design.
+    void showNoResult(const QString& title, const QString& reason);
+    bool hasResult() const { return hasLocus_; }
+    /// The warnings shown with the locus (the core's, e.g. a truncated locus).
+    QString noticeText() const { return notice_.text(); }
+    /// The hint shown in the readout while no branch is hovered.
+    static QString readoutHint();
+    /// The locus point nearest to a pixel, when within @p maxPixels of it.
+    std::optional<LocusPick> pickAtPixel(const QPointF& pixel, double maxPixels = 12.0) const;
+    const RootLocus& locus() const { return locus_; }
+    QString readoutText() const { return readout_->text(); }
+    int branchCurveCount() const { return static_cast<int>(branches_.size()); }
+    QCPCurve* branchCurve(int i) const { return branches_.at(static_cast<std::size_t>(i)); }
+    QCPGraph* currentPolesGraph() const { return current_; }
+
+signals:
+    /// The user clicked on a branch: the loop gain K at that point (K = 1 is the current design).
+    void gainPicked(double gain);
+
+protected:
+    void leaveEvent(QEvent* event) override;
+
+private:
+    void clearHover();
+    void onMouseMove(QMouseEvent* event);
+    void onMousePress(QMouseEvent* event);
+    void onMouseRelease(QMouseEvent* event);
+
+    RootLocus locus_;
+    PlaneGrid grid_;
+    std::vector<QCPCurve*> branches_;
+    QCPGraph* poles_;
+    QCPGraph* zeros_;
+    QCPGraph* current_;
+    QCPGraph* hover_;
+    QCPItemText* readout_;
+    QCPTextElement* title_;
+    PlotNotice notice_;
+    QPoint pressPos_;
+    bool hasLocus_ = false;
+    double lastTs_ = -1.0;
+};
+
+} // namespace xyt::ui

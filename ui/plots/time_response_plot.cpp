@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/plots/time_response_plot.h"
+
+#include "ui/plots/plot_tools.h"
+
+namespace xyt::ui {
+
+namespace {
+QCPGraph* makeGraph(QCPAxisRect* rect, const QColor& color, const QString& name, qreal width = 1.5) {
+    auto* g = new QCPGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    g->setPen(QPen(color, width));
+    g->setName(name);
+    g->setAdaptiveSampling(true);
+    return g;
+}
+} // namespace
+
+TimeResponsePlot::TimeResponsePlot(QWidget* parent) : QCustomPlot(parent) {
+    setObjectName("time-response");
+    plotLayout()->clear();
+    title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));
+    plotLayout()->addElement(0, 0, title_);
+    positionRect_ = new QCPAxisRect(this);
+    errorRect_ = new QCPAxisRect(this);
+    controlRect_ = new QCPAxisRect(this);
+    plotLayout()->addElement(1, 0, positionRect_);
+    plotLayout()->addElement(2, 0, errorRect_);
+    plotLayout()->addElement(3, 0, controlRect_);
+    plotLayout()->setRowStretchFactor(0, 0.01);
+    plotLayout()->setRowStretchFactor(1, 1.4);
+    auto* margins = new QCPMarginGroup(this);
+    for (QCPAxisRect* rect : {positionRect_, errorRect_, controlRect_}) {
+        rect->setMarginGroup(QCP::msLeft | QCP::msRight, margins);
+        rect->setRangeDrag(Qt::Horizontal | Qt::Vertical);
+        rect->setRangeZoom(Qt::Horizontal | Qt::Vertical);
+        styleAxisRect(rect);
+        // Shared time axis: panning or zooming one panel moves all three.
+        connect(rect->axis(QCPAxis::atBottom), qOverload<const QCPRange&>(&QCPAxis::rangeChanged),
+                this, [this, rect](const QCPRange& r) {
+                    for (QCPAxisRect* other : {positionRect_, errorRect_, controlRect_})
+                        if (other != rect && other->axis(QCPAxis::atBottom)->range() != r)
+                            other->axis(QCPAxis::atBottom)->setRange(r);
+                });
+    }
+    positionRect_->axis(QCPAxis::atLeft)->setLabel(tr("position (mm)"));
+    errorRect_->axis(QCPAxis::atLeft)->setLabel(tr("error (mm)"));
+    controlRect_->axis(QCPAxis::atLeft)->setLabel(tr("u (V)"));
+    controlRect_->axis(QCPAxis::atBottom)->setLabel(tr("time (s)"));
+
+    reference_ = makeGraph(positionRect_, colors::reference, tr("reference r"), 1.2);
+    reference_->setPen(QPen(colors::reference, 1.2, Qt::DashLine));
+    snapshotOutput_ = makeGraph(positionRect_, colors::snapshot, tr("snapshot"), 1.2);
+    output_ = makeGraph(positionRect_, colors::output, tr("output y"));
+    error_ = makeGraph(errorRect_, colors::error, tr("error e"));
+    clipUpper_ = makeGraph(controlRect_, Qt::transparent, tr("clipped"));
+    clipLower_ = makeGraph(controlRect_, Qt::transparent, QString());
+    clipUpper_->setBrush(QColor(0xd6, 0x27, 0x28, 50));
+    clipUpper_->setChannelFillGraph(clipLower_);
+    clipUpper_->setAdaptiveSampling(false);
+    clipLower_->setAdaptiveSampling(false);
+    snapshotControl_ = makeGraph(controlRect_, colors::snapshot, tr("snapshot u"), 1.2);
+    snapshotError_ = makeGraph(errorRect_, colors::snapshot, tr("snapshot e"), 1.2);
+    for (QCPGraph* g : {snapshotOutput_, snapshotControl_, snapshotError_})
+        g->setPen(QPen(colors::snapshot, 1.4, Qt::DashLine));
+    error_->setLayer(QStringLiteral("main")); // drawn over the snapshot's error
+    control_ = makeGraph(controlRect_, colors::control, tr("control u"));
+    upperLimit_ = new QCPItemStraightLine(this);
+    lowerLimit_ = new QCPItemStraightLine(this);
+    for (QCPItemStraightLine* line : {upperLimit_, lowerLimit_}) {
+        line->setClipAxisRect(controlRect_);
+        line->point1->setAxes(controlRect_->axis(QCPAxis::atBottom), controlRect_->axis(QCPAxis::atLeft));
+        line->point2->setAxes(controlRect_->axis(QCPAxis::atBottom), controlRect_->axis(QCPAxis::atLeft));
+        line->setPen(QPen(colors::limit, 1, Qt::DashDotLine));
+    }
+    snapshotOutput_->setVisible(false);
+    snapshotControl_->setVisible(false);
+    snapshotError_->setVisible(false);
+
+    auto* legend = new QCPLegend;
+    legend_ = legend;
+    positionRect_->insetLayout()->addElement(legend, Qt::AlignBottom | Qt::AlignRight);
+    legend->setLayer("legend");
+    legend->setFont(QFont(font().family(), 8));
+    legend->setBrush(QColor(255, 255, 255, 210));
+    legend->addItem(new QCPPlottableLegendItem(legend, reference_));
+    legend->addItem(new QCPPlottableLegendItem(legend, output_));
+    notice_ = std::make_unique<PlotNotice>(this, positionRect_, Qt::AlignTop | Qt::AlignLeft);
+    controlNotice_ = std::make_unique<PlotNotice>(this, controlRect_, Qt::AlignTop | Qt::AlignLeft);
+    setupInteractivePlot(this);
+}
+
+void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisTitle,
+                                double umaxVolts, const QStringList& extraNotices) {
+    QStringList notices = extraNotices;
+    for (const std::string& w : axis.warnings)
+        notices << QString::fromStdString(w);
+    notice_->setSevere(!axis.ok || axis.metrics.diverged);
+    notice_->setLines(notices);
+    // Paper 001's loop has no actuator limit: the command is shown unclipped, and says so where
+    // the user reads it.
+    controlNotice_->setLines(axis.ok && axis.pp && axis.metrics.saturated
+                                 ? QStringList{tr("linear loop: |u| is not clipped at ±%1 V here "
+                                                  "(the shaded time would saturate)")
+                                                   .arg(umaxVolts)}
+                                 : QStringList{});
+    if (!axis.ok) {
+        title_->setText(tr("%1: not simulated (%2: %3)")
+                            .arg(axisTitle, QString::fromStdString(axis.errorField),
+                                 QString::fromStdString(axis.error)));
+        title_->setTextColor(colors::error);
+        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_})
+            g->data()->clear();
+        upperLimit_->setVisible(false);
+        lowerLimit_->setVisible(false);
+        legend_->setVisible(false);
+        replot(QCustomPlot::rpQueuedReplot);
+        return;
+    }
+    legend_->setVisible(true);
+    const SimulationResult& run = axis.run;
+    QString title = tr("%1 — time response").arg(axisTitle);
+    if (!axis.step.stable)
+        title += tr("  (UNSTABLE closed loop)");
+    title_->setText(title);
+    title_->setTextColor(axis.step.stable ? palette().color(QPalette::WindowText) : colors::error);
+    // At most a few thousand points per line whatever the run's length (minMaxDecimated).
+    reference_->data()->set(minMaxDecimated(run.t, run.r), true);
+    output_->data()->set(minMaxDecimated(run.t, run.y), true);
+    error_->data()->set(minMaxDecimated(run.t, run.e), true);
+    control_->data()->set(minMaxDecimated(run.t, run.u), true);
+    // Shade the clipped samples: a band from -1.1 umax to 1.1 umax, NaN (a gap) elsewhere.
+    const double band = std::isfinite(umaxVolts) ? 1.1 * umaxVolts : 0.0;
+    clipUpper_->data()->set(flagDecimated(run.t, run.clipped, band), true);
+    clipLower_->data()->set(flagDecimated(run.t, run.clipped, -band), true);
+    const bool limited = std::isfinite(umaxVolts);
+    upperLimit_->setVisible(limited);
+    lowerLimit_->setVisible(limited);
+    if (limited) {
+        upperLimit_->point1->setCoords(0, umaxVolts);
+        upperLimit_->point2->setCoords(1, umaxVolts);
+        lowerLimit_->point1->setCoords(0, -umaxVolts);
+        lowerLimit_->point2->setCoords(1, -umaxVolts);
+    }
+    for (QCPAxisRect* rect : {positionRect_, errorRect_, controlRect_}) {
+        rect->axis(QCPAxis::atBottom)->setRange(run.t.front(), run.t.back());
+        rect->axis(QCPAxis::atLeft)->rescale(true);
+        const QCPRange r = rect->axis(QCPAxis::atLeft)->range();
+        const double pad = r.size() > 0 ? 0.08 * r.size() : 1.0;
+        rect->axis(QCPAxis::atLeft)->setRange(r.lower - pad, r.upper + pad);
+    }
+    if (limited) {
+        // Keep the limit band in view so the margin to saturation is readable.
+        QCPAxis* u = controlRect_->axis(QCPAxis::atLeft);
+        const double top = std::max(u->range().upper, 1.15 * umaxVolts);
+        const double bottom = std::min(u->range().lower, -1.15 * umaxVolts);
+        u->setRange(bottom, top);
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void TimeResponsePlot::showSnapshot(const SimulationResult& run, const QString& name) {
+    const bool show = !run.t.empty();
+    for (QCPGraph* g : {snapshotOutput_, snapshotError_, snapshotControl_}) {
+        g->setVisible(show);
+        if (!show)
+            g->data()->clear();
+    }
+    if (show) {
+        snapshotOutput_->data()->set(minMaxDecimated(run.t, run.y), true);
+        snapshotError_->data()->set(minMaxDecimated(run.t, run.e), true);
+        snapshotControl_->data()->set(minMaxDecimated(run.t, run.u), true);
+        snapshotOutput_->setName(tr("snapshot «%1» (y, e, u)").arg(name));
+        if (!legend_->hasItemWithPlottable(snapshotOutput_))
+            legend_->addItem(new QCPPlottableLegendItem(legend_, snapshotOutput_));
+    } else if (legend_->hasItemWithPlottable(snapshotOutput_)) {
+        legend_->removeItem(legend_->itemWithPlottable(snapshotOutput_));
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+} // namespace xyt::ui

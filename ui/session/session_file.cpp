@@ -1,0 +1,411 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/session/session_file.h"
+
+#include "core/model/coefficient_parser.h"
+#include "core/io/file_io.h"
+#include "core/io/json_duplicate_keys.h"
+#include "core/simulation/trajectory.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace xyt::ui {
+
+namespace {
+
+constexpr int kMaxSnapshots = 200;
+
+/// A bad value at a JSON path.
+struct FormatError {
+    QString path;
+    QString reason;
+};
+
+QString join(const QString& path, const QString& key) {
+    return path.isEmpty() ? key : path + "." + key;
+}
+
+/// Reads one JSON object, remembering its path and which keys were used, so that unknown keys
+/// can be reported.
+class ObjectReader {
+public:
+    ObjectReader(const QJsonValue& value, QString path, QStringList* warnings)
+        : path_(std::move(path)), warnings_(warnings) {
+        if (!value.isObject())
+            throw FormatError{path_, QStringLiteral("must be an object")};
+        object_ = value.toObject();
+    }
+    ~ObjectReader() = default;
+
+    const QString& path() const { return path_; }
+    bool has(const QString& key) const { return object_.contains(key); }
+
+    QJsonValue get(const QString& key) {
+        used_ << key;
+        if (!object_.contains(key))
+            throw FormatError{join(path_, key), QStringLiteral("is missing")};
+        return object_.value(key);
+    }
+    double number(const QString& key) {
+        const QJsonValue v = get(key);
+        if (!v.isDouble() || !std::isfinite(v.toDouble()))
+            throw FormatError{join(path_, key), QStringLiteral("must be a finite number")};
+        return v.toDouble();
+    }
+    double positive(const QString& key) {
+        const double v = number(key);
+        if (!(v > 0.0))
+            throw FormatError{join(path_, key), QStringLiteral("must be greater than zero")};
+        return v;
+    }
+    QString string(const QString& key) {
+        const QJsonValue v = get(key);
+        if (!v.isString())
+            throw FormatError{join(path_, key), QStringLiteral("must be a string")};
+        return v.toString();
+    }
+    bool boolean(const QString& key) {
+        const QJsonValue v = get(key);
+        if (!v.isBool())
+            throw FormatError{join(path_, key), QStringLiteral("must be true or false")};
+        return v.toBool();
+    }
+    std::vector<double> coefficients(const QString& key) {
+        const QJsonValue v = get(key);
+        const QString p = join(path_, key);
+        if (!v.isArray())
+            throw FormatError{p, QStringLiteral("must be an array of numbers")};
+        const QJsonArray a = v.toArray();
+        if (a.isEmpty())
+            throw FormatError{p, QStringLiteral("must not be empty")};
+        if (a.size() > static_cast<qsizetype>(kMaxCoefficients))
+            throw FormatError{p, QStringLiteral("has %1 entries; at most %2 are allowed")
+                                     .arg(a.size())
+                                     .arg(kMaxCoefficients)};
+        std::vector<double> out;
+        for (qsizetype i = 0; i < a.size(); ++i) {
+            if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()))
+                throw FormatError{QStringLiteral("%1[%2]").arg(p).arg(i),
+                                  QStringLiteral("must be a finite number")};
+            out.push_back(a[i].toDouble());
+        }
+        return out;
+    }
+    ObjectReader child(const QString& key) { return ObjectReader(get(key), join(path_, key), warnings_); }
+
+    /// Reports keys that were never read.
+    void finish() const {
+        for (const QString& key : object_.keys())
+            if (!used_.contains(key))
+                warnings_->append(QStringLiteral("%1: unknown field ignored").arg(join(path_, key)));
+    }
+
+private:
+    QJsonObject object_;
+    QString path_;
+    QStringList* warnings_;
+    QStringList used_;
+};
+
+QJsonArray toArray(const std::vector<double>& v) {
+    QJsonArray a;
+    for (double x : v)
+        a.append(x);
+    return a;
+}
+
+QJsonObject axisToJson(const AxisSettings& a) {
+    return {
+        {"id", QString::fromStdString(a.id)},
+        {"label", QString::fromStdString(a.label)},
+        {"method", methodName(a.method)},
+        {"gt", QJsonObject{{"plant", QJsonObject{{"k0", a.gt.plant.k0},
+                                                 {"a1", a.gt.plant.a1},
+                                                 {"a2", a.gt.plant.a2}}},
+                           {"wn", a.gt.omegaNRadPerSec},
+                           {"kp", a.gt.kp},
+                           {"model_unit_scale", a.gt.modelUnitsPerPositionUnit}}},
+        {"pp", QJsonObject{{"a", toArray(a.pp.a)},
+                           {"b", toArray(a.pp.b)},
+                           {"t1", a.pp.t1},
+                           {"ts", a.pp.tsSeconds},
+                           {"zpetc", a.pp.zpetcEnabled}}},
+    };
+}
+
+QJsonObject trajectoryToJson(const TrajectorySettings& t) {
+    return {{"kind", t.kind == TrajectoryKind::Cubic ? "cubic" : "circle"},
+            {"cubic", QJsonObject{{"x0", t.x0}, {"xf", t.xf}, {"t0", t.t0Seconds},
+                                  {"tf", t.tfSeconds}, {"v0", t.v0}, {"vf", t.vf}}},
+            {"circle", QJsonObject{{"radius", t.radius}, {"omega", t.omegaRadPerSec},
+                                   {"ramp_in", t.rampInSeconds}}},
+            {"duration", t.durationSeconds},
+            {"dt", t.dtSeconds}};
+}
+
+QJsonArray axesToJson(const std::array<AxisSettings, 2>& axes) {
+    return QJsonArray{axisToJson(axes[0]), axisToJson(axes[1])};
+}
+
+AxisSettings readAxis(ObjectReader r) {
+    AxisSettings a;
+    a.id = r.string("id").toStdString();
+    if (a.id.empty() || a.id.size() > 16 ||
+        !std::all_of(a.id.begin(), a.id.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)); }))
+        throw FormatError{join(r.path(), "id"),
+                          QStringLiteral("must be 1 to 16 lower-case letters or digits")};
+    if (r.has("label"))
+        a.label = r.string("label").toStdString();
+    const QString method = r.string("method");
+    if (method == methodName(DesignMethod::GuilleminTruxal))
+        a.method = DesignMethod::GuilleminTruxal;
+    else if (method == methodName(DesignMethod::PolePlacementZpetc))
+        a.method = DesignMethod::PolePlacementZpetc;
+    else
+        throw FormatError{join(r.path(), "method"),
+                          QStringLiteral("must be \"guillemin-truxal\" or \"pole-placement-zpetc\"")};
+    {
+        ObjectReader gt = r.child("gt");
+        ObjectReader plant = gt.child("plant");
+        a.gt.plant.k0 = plant.number("k0");
+        if (a.gt.plant.k0 == 0.0)
+            throw FormatError{join(plant.path(), "k0"), QStringLiteral("must be nonzero")};
+        a.gt.plant.a1 = plant.number("a1");
+        a.gt.plant.a2 = plant.number("a2");
+        plant.finish();
+        a.gt.omegaNRadPerSec = gt.positive("wn");
+        a.gt.kp = gt.positive("kp");
+        a.gt.modelUnitsPerPositionUnit = gt.positive("model_unit_scale");
+        gt.finish();
+    }
+    {
+        ObjectReader pp = r.child("pp");
+        a.pp.a = pp.coefficients("a");
+        if (a.pp.a[0] == 0.0)
+            throw FormatError{join(pp.path(), "a[0]"), QStringLiteral("must be nonzero (A is monic)")};
+        a.pp.b = pp.coefficients("b");
+        a.pp.t1 = pp.number("t1");
+        a.pp.tsSeconds = pp.positive("ts");
+        a.pp.zpetcEnabled = pp.boolean("zpetc");
+        pp.finish();
+    }
+    r.finish();
+    return a;
+}
+
+TrajectorySettings readTrajectory(ObjectReader r) {
+    TrajectorySettings t;
+    const QString kind = r.string("kind");
+    if (kind == "cubic")
+        t.kind = TrajectoryKind::Cubic;
+    else if (kind == "circle")
+        t.kind = TrajectoryKind::Circle;
+    else
+        throw FormatError{join(r.path(), "kind"), QStringLiteral("must be \"cubic\" or \"circle\"")};
+    {
+        ObjectReader c = r.child("cubic");
+        t.x0 = c.number("x0");
+        t.xf = c.number("xf");
+        t.t0Seconds = c.number("t0");
+        t.tfSeconds = c.number("tf");
+        if (!(t.tfSeconds > t.t0Seconds))
+            throw FormatError{join(c.path(), "tf"), QStringLiteral("must be later than t0")};
+        t.v0 = c.number("v0");
+        t.vf = c.number("vf");
+        c.finish();
+    }
+    {
+        ObjectReader c = r.child("circle");
+        t.radius = c.positive("radius");
+        t.omegaRadPerSec = c.positive("omega");
+        t.rampInSeconds = c.number("ramp_in");
+        if (t.rampInSeconds < 0)
+            throw FormatError{join(c.path(), "ramp_in"), QStringLiteral("must be >= 0")};
+        c.finish();
+    }
+    t.durationSeconds = r.number("duration");
+    if (t.durationSeconds < 0)
+        throw FormatError{join(r.path(), "duration"), QStringLiteral("must be >= 0 (0 = automatic)")};
+    t.dtSeconds = r.positive("dt");
+    if (t.effectiveDurationSeconds() / t.dtSeconds > static_cast<double>(kMaxSamples))
+        throw FormatError{join(r.path(), "duration"),
+                          QStringLiteral("needs more than %1 samples at this dt").arg(kMaxSamples)};
+    r.finish();
+    return t;
+}
+
+} // namespace
+
+QString methodName(DesignMethod method) {
+    return method == DesignMethod::GuilleminTruxal ? QStringLiteral("guillemin-truxal")
+                                                   : QStringLiteral("pole-placement-zpetc");
+}
+
+QJsonObject sessionToJson(const Session& s) {
+    QJsonArray snapshots;
+    for (const DesignSnapshot& snap : s.snapshots)
+        snapshots.append(QJsonObject{{"name", QString::fromStdString(snap.name)},
+                                     {"axes", axesToJson(snap.axes)},
+                                     {"trajectory", trajectoryToJson(snap.trajectory)},
+                                     {"umax", snap.umaxVolts}});
+    return {{"format", kSessionFormatName},
+            {"version", kSessionFormatVersion},
+            {"axes", axesToJson(s.axes)},
+            {"trajectory", trajectoryToJson(s.trajectory)},
+            {"umax", s.umaxVolts},
+            {"controller_ts", s.controllerTsSeconds},
+            {"pi_discretization", QString::fromStdString(discretizationName(s.piDiscretization))},
+            {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
+                                          {"max_overshoot_pct", s.spec.maxOvershootPct},
+                                          {"max_error_pct", s.spec.maxErrorPct}}},
+            {"snapshots", snapshots}};
+}
+
+namespace {
+
+std::array<AxisSettings, 2> readAxisPair(ObjectReader& r, QStringList* warnings) {
+    const QJsonValue v = r.get("axes");
+    const QString path = join(r.path(), "axes");
+    if (!v.isArray() || v.toArray().size() != 2)
+        throw FormatError{path, QStringLiteral("must be an array of exactly two axes")};
+    const QJsonArray a = v.toArray();
+    std::array<AxisSettings, 2> axes;
+    for (qsizetype i = 0; i < 2; ++i)
+        axes[static_cast<std::size_t>(i)] =
+            readAxis(ObjectReader(a[i], QStringLiteral("%1[%2]").arg(path).arg(i), warnings));
+    if (axes[0].id == axes[1].id)
+        throw FormatError{path + "[1].id", QStringLiteral("must differ from axes[0].id")};
+    return axes;
+}
+
+double readUmax(ObjectReader& r) {
+    const double u = r.positive("umax");
+    return u;
+}
+
+} // namespace
+
+SessionLoadResult sessionFromJson(const QJsonObject& root) {
+    SessionLoadResult result;
+    try {
+        ObjectReader r(root, QString(), &result.warnings);
+        const QJsonValue format = r.get("format");
+        if (format.toString() != kSessionFormatName)
+            throw FormatError{"format", QStringLiteral("must be \"%1\"").arg(kSessionFormatName)};
+        const QJsonValue version = r.get("version");
+        if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble()) ||
+            version.toDouble() < 1)
+            throw FormatError{"version", QStringLiteral("must be a whole number >= 1")};
+        if (version.toDouble() > kSessionFormatVersion)
+            throw FormatError{"version",
+                              QStringLiteral("the file has format version %1; this XY Tune reads "
+                                             "version %2 and older: please update XY Tune")
+                                  .arg(version.toDouble())
+                                  .arg(kSessionFormatVersion)};
+        Session s;
+        s.axes = readAxisPair(r, &result.warnings);
+        s.trajectory = readTrajectory(r.child("trajectory"));
+        s.umaxVolts = readUmax(r);
+        s.controllerTsSeconds = r.positive("controller_ts");
+        const QString discretization = r.string("pi_discretization");
+        if (discretization == "tustin")
+            s.piDiscretization = PiDiscretization::Tustin;
+        else if (discretization == "backward-euler")
+            s.piDiscretization = PiDiscretization::BackwardEuler;
+        else
+            throw FormatError{"pi_discretization", QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
+        {
+            ObjectReader spec = r.child("specification");
+            s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");
+            s.spec.maxOvershootPct = spec.number("max_overshoot_pct");
+            if (s.spec.maxOvershootPct < 0)
+                throw FormatError{"specification.max_overshoot_pct", QStringLiteral("must be >= 0")};
+            s.spec.maxErrorPct = spec.positive("max_error_pct");
+            spec.finish();
+        }
+        const QJsonValue snaps = r.get("snapshots");
+        if (!snaps.isArray())
+            throw FormatError{"snapshots", QStringLiteral("must be an array")};
+        const QJsonArray list = snaps.toArray();
+        if (list.size() > kMaxSnapshots)
+            throw FormatError{"snapshots",
+                              QStringLiteral("has %1 entries; at most %2 are allowed").arg(list.size()).arg(kMaxSnapshots)};
+        for (qsizetype i = 0; i < list.size(); ++i) {
+            ObjectReader sr(list[i], QStringLiteral("snapshots[%1]").arg(i), &result.warnings);
+            DesignSnapshot snap;
+            snap.name = sr.string("name").toStdString();
+            snap.axes = readAxisPair(sr, &result.warnings);
+            snap.trajectory = readTrajectory(sr.child("trajectory"));
+            snap.umaxVolts = readUmax(sr);
+            sr.finish();
+            s.snapshots.push_back(std::move(snap));
+        }
+        r.finish();
+        result.session = std::move(s);
+        result.ok = true;
+    } catch (const FormatError& e) {
+        result.ok = false;
+        result.errorPath = e.path;
+        result.error = e.reason;
+    }
+    return result;
+}
+
+SessionLoadResult sessionFromBytes(const QByteArray& bytes) {
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        SessionLoadResult r;
+        r.error = QStringLiteral("not valid JSON: %1 at byte %2")
+                      .arg(parseError.errorString())
+                      .arg(parseError.offset);
+        return r;
+    }
+    if (const auto duplicate = findDuplicateJsonKey(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
+        SessionLoadResult r;
+        r.errorPath = QString::fromStdString(*duplicate);
+        r.error = QStringLiteral("appears more than once in its object; a key may be given only once");
+        return r;
+    }
+    if (!doc.isObject()) {
+        SessionLoadResult r;
+        r.error = QStringLiteral("not a session: the document must be a JSON object");
+        return r;
+    }
+    return sessionFromJson(doc.object());
+}
+
+SessionLoadResult loadSessionFile(const QString& path) {
+    std::string bytes;
+    try {
+        bytes = readRegularFile(path.toStdString(), static_cast<std::size_t>(kMaxSessionFileBytes));
+    } catch (const FileError& e) {
+        SessionLoadResult r;
+        r.error = QString::fromStdString(e.what());
+        return r;
+    }
+    return sessionFromBytes(QByteArray::fromStdString(bytes));
+}
+
+bool writeFileAtomically(const QString& path, const QByteArray& bytes, QString* error) {
+    try {
+        xyt::writeFileAtomically(path.toStdString(),
+                                 std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        return true;
+    } catch (const FileError& e) {
+        if (error)
+            *error = QString::fromStdString(e.what());
+        return false;
+    }
+}
+
+bool saveSessionFile(const Session& session, const QString& path, QString* error) {
+    return writeFileAtomically(path, QJsonDocument(sessionToJson(session)).toJson(QJsonDocument::Indented),
+                               error);
+}
+
+} // namespace xyt::ui

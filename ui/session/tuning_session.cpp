@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/session/tuning_session.h"
+
+#include "core/model/errors.h"
+
+#include <QLocale>
+#include <QUndoCommand>
+
+#include <cmath>
+
+namespace xyt::ui {
+
+/// One undo step: the whole session before and after (the session is a few hundred bytes).
+class SessionCommand : public QUndoCommand {
+public:
+    SessionCommand(TuningSession* owner, Session before, Session after, const QString& text,
+                   int mergeKey)
+        : QUndoCommand(text), owner_(owner), before_(std::move(before)), after_(std::move(after)),
+          mergeKey_(mergeKey) {}
+
+    void undo() override { owner_->assign(before_); }
+    void redo() override { owner_->assign(after_); }
+    int id() const override { return mergeKey_; }
+    bool mergeWith(const QUndoCommand* other) override {
+        if (other->id() != id() || mergeKey_ < 0)
+            return false;
+        after_ = static_cast<const SessionCommand*>(other)->after_;
+        // The entry names where the drag ended, not its first step.
+        setText(other->text());
+        return true;
+    }
+
+private:
+    TuningSession* owner_;
+    Session before_;
+    Session after_;
+    int mergeKey_;
+};
+
+Session TuningSession::liveSessionOf(const Session& s, QString& notice) {
+    notice.clear();
+    Session live = s;
+    const double duration = s.trajectory.effectiveDurationSeconds();
+    const double dt = s.trajectory.dtSeconds;
+    if (!(duration > 0.0) || !(dt > 0.0) || !std::isfinite(duration / dt))
+        return live; // the evaluation names the bad field
+    const double samples = duration / dt + 1.0;
+    if (samples <= TuningSession::kLiveSampleLimit)
+        return live;
+    live.trajectory.dtSeconds = duration / (TuningSession::kLiveSampleLimit - 1.0);
+    notice = QObject::tr("live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live "
+                         "limit of %4 (the exports and the report use dt = %2 s)")
+                 .arg(QString::number(live.trajectory.dtSeconds, 'g', 3), QString::number(dt, 'g', 6),
+                      QLocale().toString(samples, 'f', 0),
+                      QLocale().toString(TuningSession::kLiveSampleLimit, 'f', 0));
+    return live;
+}
+
+TuningSession::TuningSession(QObject* parent) : QObject(parent) {
+    session_ = Session::paperDefault();
+    live_ = liveSessionOf(session_, liveNotice_);
+    evaluation_ = evaluateSession(live_);
+}
+
+const AxisEvaluation& TuningSession::axisEvaluation(int axis) const {
+    return evaluation_.axes.at(static_cast<std::size_t>(axis));
+}
+
+void TuningSession::assign(const Session& next) {
+    session_ = next;
+    live_ = liveSessionOf(session_, liveNotice_);
+    evaluation_ = evaluateSession(live_);
+    locus_ = {};
+    parameterLocus_ = {};
+    emit designChanged();
+}
+
+void TuningSession::apply(const Session& next, const QString& description, int mergeKey) {
+    if (next == session_)
+        return; // no undo step (nor a modified flag) for a change that changes nothing
+    undo_.push(new SessionCommand(this, session_, next, description, mergeKey));
+}
+
+void TuningSession::reset(const Session& next) {
+    undo_.clear();
+    assign(next);
+    undo_.setClean();
+}
+
+void TuningSession::setCurrentAxis(int axis) {
+    if (axis == currentAxis_ || axis < 0 || axis > 1)
+        return;
+    currentAxis_ = axis;
+    emit currentAxisChanged(axis);
+}
+
+namespace {
+QString axisName(const Session& s, int axis) {
+    return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
+}
+} // namespace
+
+void TuningSession::setOmegaN(int axis, double omegaNRadPerSec) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).gt.omegaNRadPerSec = omegaNRadPerSec;
+    apply(next, tr("Set ωn of %1 to %2").arg(axisName(next, axis)).arg(omegaNRadPerSec),
+          kMergeOmegaN + axis);
+}
+
+void TuningSession::setKp(int axis, double kp) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).gt.kp = kp;
+    apply(next, tr("Set kp of %1 to %2").arg(axisName(next, axis)).arg(kp), kMergeKp + axis);
+}
+
+void TuningSession::setPlant(int axis, const ThirdOrderPlant& plant) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).gt.plant = plant;
+    apply(next, tr("Change the plant of %1").arg(axisName(next, axis)));
+}
+
+void TuningSession::setModelUnitScale(int axis, double modelUnitsPerPositionUnit) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).gt.modelUnitsPerPositionUnit =
+        modelUnitsPerPositionUnit;
+    apply(next, tr("Change the model unit of %1").arg(axisName(next, axis)));
+}
+
+void TuningSession::setTrajectory(const TrajectorySettings& trajectory) {
+    Session next = session_;
+    next.trajectory = trajectory;
+    apply(next, tr("Change the trajectory"));
+}
+
+void TuningSession::setUmax(double umaxVolts) {
+    Session next = session_;
+    next.umaxVolts = umaxVolts;
+    apply(next, tr("Set the actuator limit to %1 V").arg(umaxVolts));
+}
+
+} // namespace xyt::ui
+
+namespace xyt::ui {
+
+const RootLocus& TuningSession::rootLocus(int axis) const {
+    auto& cached = locus_.at(static_cast<std::size_t>(axis));
+    if (!cached) {
+        const AxisEvaluation& e = axisEvaluation(axis);
+        if (e.gt) {
+            cached = xyt::rootLocus(e.gt->openLoop);
+        } else if (e.pp) {
+            // The feedback path: F u = -G y around A y = B u gives 1 + B G / (A F) = 0.
+            const TransferFunction loop = TransferFunction::fromZInverse(
+                e.pp->b * e.pp->g, e.pp->a * e.pp->f, e.pp->tsSeconds);
+            cached = xyt::rootLocus(loop);
+        } else {
+            cached = RootLocus{};
+        }
+    }
+    return *cached;
+}
+
+const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter parameter) const {
+    auto& cached = parameterLocus_.at(static_cast<std::size_t>(axis * 2 + (parameter == GtSweptParameter::Kp)));
+    if (!cached) {
+        const GtAxisSettings& gt = session_.axes.at(static_cast<std::size_t>(axis)).gt;
+        ParameterSweep sweep;
+        sweep.logSpacing = true;
+        const double centre = parameter == GtSweptParameter::OmegaN ? gt.omegaNRadPerSec : gt.kp;
+        sweep.from = centre / 10.0;
+        sweep.to = centre * 10.0;
+        sweep.count = 80;
+        try {
+            cached = gtParameterLocus(gt.plant, parameter, sweep,
+                                      parameter == GtSweptParameter::OmegaN ? gt.kp : gt.omegaNRadPerSec);
+        } catch (const InvalidInput& e) {
+            cached = ParameterLocus{};
+            cached->warnings.push_back(e.what());
+        }
+    }
+    return *cached;
+}
+
+std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
+    const AxisEvaluation& e = axisEvaluation(axis);
+    if (e.gt)
+        return gtPoleZeroSets(*e.gt);
+    std::vector<PoleZeroSet> sets;
+    if (e.pp) {
+        const double ts = e.pp->tsSeconds;
+        sets.push_back(poleZeroSet("plant B/A", TransferFunction::fromZInverse(e.pp->b, e.pp->a, ts)));
+        sets.push_back(poleZeroSet("feedback G/F", TransferFunction::fromZInverse(e.pp->g, e.pp->f, ts)));
+        sets.push_back(poleZeroSet("closed loop Kf B/T", e.pp->closedLoop()));
+        if (e.zpetc)
+            sets.push_back(poleZeroSet("ZPETC feedforward",
+                                       TransferFunction::fromZInverse(e.zpetc->feedforwardNum,
+                                                                      e.zpetc->feedforwardDen, ts)));
+    }
+    return sets;
+}
+
+bool TuningSession::applyLoopGain(int axis, double gain) {
+    const AxisSettings& a = session_.axes.at(static_cast<std::size_t>(axis));
+    if (a.method != DesignMethod::GuilleminTruxal || !(gain > 0.0) || !std::isfinite(gain))
+        return false;
+    Session next = session_;
+    auto& gt = next.axes.at(static_cast<std::size_t>(axis)).gt;
+    gt.kp *= gain;
+    gt.omegaNRadPerSec *= std::pow(gain, 0.25);
+    apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4));
+    return true;
+}
+
+void TuningSession::setMethod(int axis, DesignMethod method) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).method = method;
+    apply(next, tr("Change the design method"));
+}
+
+void TuningSession::setPp(int axis, const PpAxisSettings& pp, int mergeKey) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).pp = pp;
+    apply(next, tr("Change the pole-placement design"), mergeKey < 0 ? -1 : mergeKey + axis);
+}
+
+void TuningSession::setSpecification(const Specification& spec) {
+    Session next = session_;
+    next.spec = spec;
+    apply(next, tr("Change the specification"));
+}
+
+} // namespace xyt::ui

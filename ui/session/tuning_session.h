@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/session/session.h"
+#include "core/analysis/parameter_locus.h"
+#include "core/analysis/pole_zero_map.h"
+#include "core/analysis/root_locus.h"
+#include "core/session/session_evaluation.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <array>
+#include <optional>
+
+namespace xyt::ui {
+
+/**
+ * The presenter of the workbench: owns the design (a core `Session`), its evaluation, and the
+ * undo stack. Widgets call the setters and observe `designChanged()`; nothing is computed in a
+ * widget. Every change goes through `apply()`, which pushes an undoable command holding the
+ * session before and after; consecutive changes with the same merge key (one slider drag) merge
+ * into one undo step.
+ */
+class TuningSession : public QObject {
+    Q_OBJECT
+public:
+    explicit TuningSession(QObject* parent = nullptr);
+
+    const Session& session() const { return session_; }
+    const SessionEvaluation& evaluation() const { return evaluation_; }
+    const AxisEvaluation& axisEvaluation(int axis) const;
+    QUndoStack* undoStack() { return &undo_; }
+
+    int currentAxis() const { return currentAxis_; }
+
+    /**
+     * Samples per axis that one live refresh may simulate. A run that needs more (dt = 1e-5 s on
+     * a 130 s move is 13 million samples, 0.6 GB and over a second per axis) is evaluated at the
+     * coarser dt = duration / kLiveSampleLimit and the views say so (liveNotice); the exports and
+     * the report still use the session's dt. One million samples take about 50 ms per axis.
+     */
+    static constexpr double kLiveSampleLimit = 1'000'000;
+    /// The session as the live views evaluate it (its dt raised to the live limit when needed).
+    const Session& liveSession() const { return live_; }
+    /// The live version of any session @p s (a snapshot's too): its dt raised so that a run
+    /// needs at most kLiveSampleLimit samples; @p notice says what was changed ("" if nothing).
+    static Session liveSessionOf(const Session& s, QString& notice);
+    /// What the live evaluation changed, for the views ("" when it is the session itself).
+    const QString& liveNotice() const { return liveNotice_; }
+    /// True when the session differs from the last saved or loaded state.
+    bool isModified() const { return !undo_.isClean(); }
+
+    /**
+     * Replaces the whole session as one undoable step named @p description. A change whose
+     * @p mergeKey equals the previous command's merges with it (slider drags); -1 never merges.
+     */
+    void apply(const Session& next, const QString& description, int mergeKey = -1);
+    /// Replaces the session without an undo step (load, new) and marks it clean.
+    void reset(const Session& next);
+    /// Marks the current state as saved.
+    void markSaved() { undo_.setClean(); }
+
+    /**
+     * The root locus of the axis' loop, 1 + K L = 0 with K = 1 the design: L = G_c G for a
+     * continuous design, L = B G / (A F) (the feedback path) for a discrete one. Computed on
+     * first use after each change (cached).
+     */
+    const RootLocus& rootLocus(int axis) const;
+    /// The closed-loop poles of a GT axis as wn or kp sweeps a decade each way (cached).
+    const ParameterLocus& parameterLocus(int axis, GtSweptParameter parameter) const;
+    /// Pole-zero sets of the axis: plant, controller, open loop, closed loop, reference model
+    /// (GT) or plant, feedback, closed loop, ZPETC feedforward (discrete).
+    std::vector<PoleZeroSet> poleZeroSets(int axis) const;
+
+    /**
+     * Uses the loop gain K picked on the root locus of a GT axis: the controller becomes
+     * K (kp + ki/s), i.e. kp' = K kp and, since ki = wn^4/k0 (Eq. 11, 16), wn' = K^(1/4) wn.
+     * Returns false (and changes nothing) for a discrete axis or a gain that is not > 0.
+     */
+    bool applyLoopGain(int axis, double gain);
+
+    // Convenience setters (each one apply() step). Axis index 0 = x, 1 = y.
+    void setMethod(int axis, DesignMethod method);
+    void setPp(int axis, const PpAxisSettings& pp, int mergeKey = -1);
+    void setSpecification(const Specification& spec);
+    void setOmegaN(int axis, double omegaNRadPerSec);
+    void setKp(int axis, double kp);
+    void setPlant(int axis, const ThirdOrderPlant& plant);
+    void setModelUnitScale(int axis, double modelUnitsPerPositionUnit);
+    void setTrajectory(const TrajectorySettings& trajectory);
+    void setUmax(double umaxVolts);
+
+public slots:
+    void setCurrentAxis(int axis);
+
+signals:
+    /// The session or its evaluation changed: every view redraws from the getters.
+    void designChanged();
+    void currentAxisChanged(int axis);
+
+private:
+    friend class SessionCommand;
+    /// Sets the session and re-evaluates it (used by the undo commands).
+    void assign(const Session& next);
+
+    Session session_;
+    Session live_;
+    QString liveNotice_;
+    SessionEvaluation evaluation_;
+    mutable std::array<std::optional<RootLocus>, 2> locus_;
+    mutable std::array<std::optional<ParameterLocus>, 4> parameterLocus_;
+    QUndoStack undo_;
+    int currentAxis_ = 0;
+};
+
+/// Merge keys for slider drags: one per parameter and axis.
+enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300 };
+
+} // namespace xyt::ui
