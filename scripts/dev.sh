@@ -2,10 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # XY Tune set-up: installs the Debian 12 packages that are missing, builds, then
 #   scripts/dev.sh run    starts the workbench (or the headless report without a display)
-#   scripts/dev.sh test   runs every test: the normal build, then the whole suite again in an
-#                         AddressSanitizer + UndefinedBehaviorSanitizer build (build-asan; any
-#                         sanitizer report fails), then each libFuzzer harness on 8000
-#                         inputs from a fixed seed (scripts/fuzz.sh, clang build in build-fuzz)
+#   scripts/dev.sh test   runs every test: the normal build, then one clang build with
+#                         AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer coverage
+#                         (build-fuzz) in which the whole suite runs again (any sanitizer report
+#                         fails) and each libFuzzer harness runs on 8000 inputs from a fixed seed
 #   scripts/dev.sh bench  builds and runs the benchmark program
 set -euo pipefail
 
@@ -45,26 +45,23 @@ case "$mode" in
     test)
         ctest --test-dir "$build" --output-on-failure -j "$jobs"
 
-        # The same suite, GUI tests included (offscreen), instrumented with ASan + UBSan.
-        # RelWithDebInfo rather than Debug: unoptimized Eigen under ASan makes the sweep and
-        # simulation tests many times slower without finding more. -fno-sanitize-recover=all
-        # (CMakeLists.txt) makes every UBSan report fatal; halt_on_error does the same for ASan,
-        # and a leak report makes the process exit non-zero, so any report fails its test.
-        asan_build="${XYT_ASAN_BUILD_DIR:-$root/build-asan}"
-        cmake -S "$root" -B "$asan_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DXYT_SANITIZE=ON
-        cmake --build "$asan_build" -j "$jobs"
-        ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_init_order=1:check_initialization_order=1:detect_stack_use_after_return=1" \
-        UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1" \
-            ctest --test-dir "$asan_build" --output-on-failure -j "$jobs"
+        # One instrumented build for two jobs: clang with AddressSanitizer + UBSan and libFuzzer's
+        # coverage instrumentation (-DXYT_FUZZ=ON, in build-fuzz). The whole suite, GUI tests
+        # included (offscreen), runs again in it (coverage does not stop a test from running),
+        # then each libFuzzer harness. -fno-sanitize-recover=all (CMakeLists.txt) makes every
+        # UBSan report fatal; halt_on_error does the same for ASan, and a leak report makes the
+        # process exit non-zero, so any report fails its test.
+        fuzz_build="${XYT_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+        sanitizer_env=(ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_init_order=1:check_initialization_order=1:detect_stack_use_after_return=1"
+                       UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1")
+        cmake -S "$root" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DXYT_FUZZ=ON \
+              -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+        cmake --build "$fuzz_build" -j "$jobs"
+        env "${sanitizer_env[@]}" ctest --test-dir "$fuzz_build" --output-on-failure -j "$jobs"
 
-        # Every fuzz harness for a short, bounded time (a crash fails the run).
-        if command -v clang++ >/dev/null 2>&1; then
-            # A fixed seed and input count: reproducible, so a red run is a real regression.
-            # Open-ended exploration: scripts/fuzz.sh SECONDS without XYT_FUZZ_RUNS.
-            XYT_FUZZ_RUNS=8000 bash "$root/scripts/fuzz.sh" 120
-        else
-            echo "clang++ not found: skipping the libFuzzer runs (the corpora were replayed by ctest)" >&2
-        fi
+        # Every fuzz harness on a fixed seed and input count: reproducible, so a red run is a
+        # real regression (open-ended exploration: scripts/fuzz.sh SECONDS without XYT_FUZZ_RUNS).
+        XYT_FUZZ_RUNS=8000 XYT_FUZZ_BUILD_DIR="$fuzz_build" bash "$root/scripts/fuzz.sh" 120
         ;;
     bench)
         cmake --build "$build" --target xytune-bench -j "$jobs"

@@ -2,6 +2,7 @@
 #include "core/model/state_space.h"
 
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 
 #include <Eigen/Eigenvalues>
 #include <unsupported/Eigen/MatrixFunctions>
@@ -82,6 +83,13 @@ FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
     foh.phi = e.block(0, 0, n, n);
     foh.gamma0 = e.block(0, n, n, m);
     foh.gamma1 = e.block(0, n + m, n, m); // multiplies the slope rho = (u[k+1] - u[k]) / Ts
+    // A very stiff system (a pole near -8e11 at Ts = 0.04 s, found by fuzz_design, input kept
+    // as crash-stiff-discretization) makes the scaling and squaring of exp() overflow on the way
+    // (transient growth of a non-normal matrix) although the exact result is finite.
+    if (!e.allFinite())
+        throw InvalidInput("ts", "the exact discretization over " + formatNumber(tsSeconds) +
+                                     " s overflows double precision (a very fast pole): use a "
+                                     "smaller sample time");
     return foh;
 }
 

@@ -39,8 +39,12 @@ struct StepMatrices {
 };
 
 StepMatrices fohStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double dt) {
-    FohDiscretization foh = discretizeFoh(a, b, dt);
-    return {std::move(foh.phi), std::move(foh.gamma0), std::move(foh.gamma1)};
+    try {
+        FohDiscretization foh = discretizeFoh(a, b, dt);
+        return {std::move(foh.phi), std::move(foh.gamma0), std::move(foh.gamma1)};
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("dt", e.reason()); // the simulation's step is the user's dt
+    }
 }
 
 } // namespace

@@ -205,6 +205,13 @@ void TstStateSpace::errorsNameTheField() {
              QString("system"));
     QCOMPARE(invalidInputField([] { xyt::discretizeFoh(Eigen::MatrixXd::Zero(1, 1), Eigen::MatrixXd::Ones(1, 1), 0.0); }),
              QString("ts"));
+    // Regression (fuzz_design, crash-stiff-discretization): the companion form of
+    // s (s^2 + a1 s + a2) with a1 = 1e300 overflows exp()'s scaling and squaring; refused, never
+    // a NaN step matrix.
+    Eigen::MatrixXd stiff(3, 3);
+    stiff << 0, 1, 0, 0, 0, 1, 0, -1e300, -1e300;
+    QCOMPARE(invalidInputField([&] { xyt::discretizeFoh(stiff, Eigen::MatrixXd::Ones(3, 1), 0.01); }),
+             QString("ts"));
 }
 
 QTEST_APPLESS_MAIN(TstStateSpace)
