@@ -172,7 +172,9 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     specForm->addRow(tr("max tracking error ≤"), error_);
     specForm->addRow(tr("|u| ≤ (actuator limit)"), umax_);
 
-    specForm->addRow(new QLabel(tr("<i>The session's specification, shared with the metrics panel.</i>")));
+    auto* shared = new QLabel(tr("<i>The session's specification, shared with the metrics panel.</i>"));
+    shared->setWordWrap(true); // the column is narrow: never let the note widen it
+    specForm->addRow(shared);
     // One specification: the boxes edit the session's (an undoable step), and show it.
     for (QDoubleSpinBox* box : {settling_, overshoot_, error_, umax_})
         connect(box, &QDoubleSpinBox::editingFinished, this, &DesignSpaceView::applySpecification);
