@@ -42,6 +42,17 @@ PlantInput parsePlant(const CliArgs& args) {
     return in;
 }
 
+namespace {
+/// Runs @p f, re-throwing a core field error as the CLI argument of that name ("tf" -> "--tf").
+template <class F> auto asArgument(F&& f) {
+    try {
+        return f();
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("--" + e.field(), e.reason());
+    }
+}
+} // namespace
+
 DesignInput parseDesign(const CliArgs& args) {
     const PlantInput plant = parsePlant(args);
     const auto& preset = plant.preset;
@@ -52,6 +63,9 @@ DesignInput parseDesign(const CliArgs& args) {
         throw InvalidInput("--wn", "must be greater than zero");
     if (!(in.kp > 0.0))
         throw InvalidInput("--kp", "must be greater than zero");
+    // Values the design cannot represent (wn^4 overflowing for --wn 1e300) are refused here,
+    // naming the argument, before any command uses them.
+    asArgument([&] { return designGuilleminTruxal(in.plant, in.wn, in.kp); });
     return in;
 }
 
@@ -79,16 +93,6 @@ QJsonObject designJson(const GtDesign& d) {
             {"stable", d.stable}};
 }
 
-namespace {
-/// Runs @p f, re-throwing a core field error as the CLI argument of that name ("tf" -> "--tf").
-template <class F> auto asArgument(F&& f) {
-    try {
-        return f();
-    } catch (const InvalidInput& e) {
-        throw InvalidInput("--" + e.field(), e.reason());
-    }
-}
-} // namespace
 
 Reference parseTrajectory(const CliArgs& args) {
     const QString kind = args.text("trajectory", "");
@@ -103,6 +107,7 @@ Reference parseTrajectory(const CliArgs& args) {
     if (kind == "sine") {
         Sinusoid s;
         s.amplitude = args.number("amplitude");
+        requirePosition(s.amplitude, "--amplitude");
         s.omegaRadPerSec = args.number("omega");
         s.phaseRad = args.number("phase-deg", 0.0) * std::numbers::pi / 180.0;
         s.rampInSeconds = args.number("ramp-in", 0.0);

@@ -101,10 +101,26 @@ StartCondition parseStart(const CliArgs& args) {
     throw InvalidInput("--start", "must be reference or origin, got '" + s.toStdString() + "'");
 }
 
-/// The argument to blame when the run would need too many samples: --duration when typed, else
-/// --omega, whose period set the duration.
+/// The argument to blame when the run would need too many samples or hold a single one:
+/// --duration when typed, else --omega, whose period set the duration.
 std::string durationField(const CliArgs& args) {
     return args.has("duration") ? "--duration" : "--omega";
+}
+
+/// Runs a tracking run, naming the argument the user typed for a refusal about the run's
+/// length ("duration") or its reference ("amplitude", "omega"; contour: @p amplitudeArgument).
+template <class F> auto namingRunArguments(const CliArgs& args, const std::string& amplitudeArgument, F run) {
+    try {
+        return run();
+    } catch (const InvalidInput& e) {
+        if (e.field() == "duration")
+            throw InvalidInput(durationField(args), e.reason());
+        if (e.field() == "amplitude")
+            throw InvalidInput(amplitudeArgument, e.reason());
+        if (e.field() == "omega")
+            throw InvalidInput("--omega", e.reason());
+        throw;
+    }
 }
 
 double parseDuration(const CliArgs& args, double omega) {
@@ -184,16 +200,15 @@ int runZpetc(const QStringList& argv) {
     const ZpetcDesign z = namingArguments([&] { return designZpetc(loop, parseMargin(args)); });
     Sinusoid reference;
     reference.amplitude = args.number("amplitude", 30.0);
+    requirePosition(reference.amplitude, "--amplitude");
     reference.omegaRadPerSec = parseOmega(args, 0.1);
     reference.phaseRad = args.number("phase-deg", 0.0) * std::numbers::pi / 180.0;
     const double duration = parseDuration(args, reference.omegaRadPerSec);
     const StartCondition start = parseStart(args);
     const ZpetcTrackingRun run = namingArguments([&] {
-        try {
+        return namingRunArguments(args, "--amplitude", [&] {
             return runZpetcTracking(loop, z, reference, duration, start);
-        } catch (const InvalidInput& e) {
-            throw InvalidInput(durationField(args), e.reason());
-        }
+        });
     });
     QJsonObject out = designJson(loop);
     const QJsonObject zpetcKeys = zpetcJson(z);
@@ -223,6 +238,7 @@ int runContour(const QStringList& argv) {
     circle.radius = args.number("radius", 30.0);
     if (!(circle.radius > 0.0))
         throw InvalidInput("--radius", "must be greater than zero");
+    requirePosition(circle.radius, "--radius");
     circle.omegaRadPerSec = parseOmega(args, 0.1);
     const double duration = parseDuration(args, circle.omegaRadPerSec);
     const StartCondition start = parseStart(args);
@@ -235,13 +251,9 @@ int runContour(const QStringList& argv) {
     const PolePlacementDesign yLoop = design("y-axis");
     const ZpetcDesign xZ = namingArguments([&] { return designZpetc(xLoop, margin); });
     const ZpetcDesign yZ = namingArguments([&] { return designZpetc(yLoop, margin); });
-    const ZpetcCircleRun run = [&] {
-        try {
-            return runZpetcCircle(xLoop, xZ, yLoop, yZ, circle, duration, start);
-        } catch (const InvalidInput& e) {
-            throw InvalidInput(durationField(args), e.reason());
-        }
-    }();
+    const ZpetcCircleRun run = namingRunArguments(args, "--radius", [&] {
+        return runZpetcCircle(xLoop, xZ, yLoop, yZ, circle, duration, start);
+    });
     print({{"preset", preset},
            {"radius", number(circle.radius)},
            {"omega", number(circle.omegaRadPerSec)},

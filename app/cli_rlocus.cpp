@@ -21,7 +21,8 @@ namespace {
 InvalidInput asArgument(const InvalidInput& e) {
     static const std::map<std::string, std::string> arguments = {
         {"num", "--num"}, {"den", "--den"}, {"ts", "--ts"}, {"kMax", "--kmax"},
-        {"maxStepFraction", "--max-step"}, {"maxPoints", "--max-points"}};
+        {"maxStepFraction", "--max-step"}, {"maxPoints", "--max-points"},
+        {"wn", "--wn"}, {"kp", "--kp"}};
     const auto it = arguments.find(e.field());
     return InvalidInput(it != arguments.end() ? it->second : e.field(), e.reason());
 }
@@ -48,7 +49,11 @@ LoopInput parseLoop(const CliArgs& args) {
             throw InvalidInput("--wn", "must be greater than zero");
         if (!(kp > 0.0))
             throw InvalidInput("--kp", "must be greater than zero");
-        in.design = designGuilleminTruxal(preset->plant, wn, kp);
+        try {
+            in.design = designGuilleminTruxal(preset->plant, wn, kp);
+        } catch (const InvalidInput& e) {
+            throw asArgument(e);
+        }
         in.num = in.design->openLoop.num();
         in.den = in.design->openLoop.den();
         return in;

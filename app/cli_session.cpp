@@ -47,6 +47,14 @@ QString outputPath(const CliArgs& args) {
     return *o;
 }
 
+/// A session whose run itself was refused (trajectory out of range, too many samples, a single
+/// sample) has nothing to report or export: exit 2 naming the session field, as for bad input.
+void refuseRefusedRun(const SessionEvaluation& evaluation) {
+    for (const AxisEvaluation& a : evaluation.axes)
+        if (!a.ok && a.runRefused)
+            throw InvalidInput(a.errorField, a.error);
+}
+
 QString number(double v, int decimals = 4) {
     return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("n/a");
 }
@@ -65,6 +73,7 @@ int runNew(const QStringList& argv) {
 int runSessionReport(const QString& path) {
     const Session session = loadOrThrow(path);
     const SessionEvaluation evaluation = evaluateSession(session);
+    refuseRefusedRun(evaluation);
     QString text;
     QTextStream out(&text);
     const TrajectorySettings& t = session.trajectory;
@@ -145,6 +154,7 @@ int runExport(const QStringList& argv) {
             throw InvalidInput("--discretization", "must be tustin or backward-euler");
     }
     const SessionEvaluation evaluation = evaluateSession(session);
+    refuseRefusedRun(evaluation);
     if (format == "csv") // streamed: a long simulation is never held as text
         writeFile("-o", path, [&](const ByteSink& sink) {
             exportCsv(session, evaluation, sink);

@@ -119,7 +119,15 @@ int runSweep(const QStringList& argv) {
                                               criterion.toStdString() + "'");
     options.criterion = *parsed;
     options.threads = args.count("threads", 0, 1024);
-    const DesignSweepResult r = sweepDesignSpace(problem, wnAxis, kpAxis, options);
+    const DesignSweepResult r = [&] {
+        try {
+            return sweepDesignSpace(problem, wnAxis, kpAxis, options);
+        } catch (const InvalidInput& e) { // a grid value the design cannot represent (wn 1e300)
+            if (e.field() == "wn" || e.field() == "kp")
+                throw InvalidInput("--" + e.field(), e.reason());
+            throw;
+        }
+    }();
     if (const auto csv = args.value("csv"))
         writeTextFile("--csv", *csv, sweepCsv(r));
 

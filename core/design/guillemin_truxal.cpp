@@ -2,6 +2,9 @@
 #include "core/design/guillemin_truxal.h"
 
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
+
+#include <cmath>
 
 namespace xyt {
 
@@ -32,6 +35,21 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     d.psi2 = 0.0;                         // Eq. 12 with Eq. 15
     d.psi1 = wn4 / (kp * plant.k0);       // Eq. 11
     d.ki = kp * d.psi1;                   // Eq. 16
+    // omega_n enters as wn^4 (Eq. 11) and as a1/wn, a2/wn^2 (Eq. 17-18): above ~1e77 rad/s wn^4
+    // overflows, below ~1e-154 rad/s wn^2 underflows to 0 and f2 overflows. Refuse naming the
+    // input instead of handing inf/NaN coefficients on ("den[2]: must be a number, got NaN" was
+    // the message for wn = 1e300). What still overflows with a representable wn is kp's doing
+    // (kp k0, or wn^4/(kp k0) for a tiny kp).
+    const auto representable = [](double v) { return std::isfinite(v) && v != 0.0; };
+    if (!representable(wn4) || !std::isfinite(d.f1) || !std::isfinite(d.f2))
+        throw InvalidInput("wn", formatNumber(wn) + " rad/s is out of range: wn^4 = " + formatNumber(wn4) +
+                                     " and a2/wn^2 = " + formatNumber(d.f2) +
+                                     " must be finite nonzero numbers for the reference model (paper 000 Eq. 11-18)");
+    if (!std::isfinite(d.f3) || !representable(d.psi1) || !representable(d.ki) ||
+        !std::isfinite(d.f3 * wn3))
+        throw InvalidInput("kp", formatNumber(kp) + " is out of range with this plant and wn: psi1 = wn^4/(kp k0) = " +
+                                     formatNumber(d.psi1) + " and ki = kp psi1 = " + formatNumber(d.ki) +
+                                     " must be finite nonzero numbers (paper 000 Eq. 11, 16)");
     d.referenceModel = TransferFunction::fromDescending(
         {d.f3 * wn3, wn4}, {1.0, d.f1 * wn, d.f2 * wn2, d.f3 * wn3, wn4});
     d.controller = TransferFunction::fromDescending({kp, d.ki}, {1.0, 0.0});

@@ -44,7 +44,9 @@ struct GtDesign {
     bool stable = false; ///< an unstable result is returned, not thrown: a slider can reach it
 };
 
-/// @throws InvalidInput "wn" or "kp" unless finite and > 0, and the plant's fields.
+/// @throws InvalidInput "wn" or "kp" unless finite and > 0, "wn" when wn^4 or a2/wn^2 is not a
+///         finite nonzero double (wn beyond ~1e77 or below ~1e-154 rad/s), "kp" when ki overflows
+///         or vanishes, and the plant's fields.
 GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPerSec, double kp);
 
 /// A named plant and design of paper 000.

@@ -20,6 +20,13 @@ std::string exactNumber(double v) {
     return buf;
 }
 
+double exportableNumber(double v, const std::string& field) {
+    if (!std::isfinite(v))
+        throw InvalidInput(field, "gives " + exactNumber(v) +
+                                      " in the export, not a finite number; nothing was exported");
+    return v;
+}
+
 namespace {
 
 std::string upper(std::string s) {
@@ -28,13 +35,9 @@ std::string upper(std::string s) {
     return s;
 }
 
-/// A number for an export, or the reason it cannot be one. A generated header or script with
-/// "inf" or "nan" in it does not compile, or computes something the session does not mean.
+/// A number for an export, or the reason it cannot be one (exportableNumber).
 std::string num(double v, const std::string& field) {
-    if (!std::isfinite(v))
-        throw InvalidInput(field, "gives " + exactNumber(v) +
-                                      " in the export, not a finite number; nothing was exported");
-    return exactNumber(v);
+    return exactNumber(exportableNumber(v, field));
 }
 
 std::string axisField(int axisIndex, const std::string& part) {

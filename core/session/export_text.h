@@ -55,4 +55,9 @@ std::string exportCsv(const Session& session, const SessionEvaluation& evaluatio
 /// A double with 17 significant digits ("%.17g").
 std::string exactNumber(double v);
 
+/// @p v itself when it may go into an export. A header, script or JSON file with inf or NaN in
+/// it does not compile, does not parse (JSON writes null), or means something the session does not.
+/// @throws InvalidInput naming @p field (the session path it comes from) when @p v is not finite.
+double exportableNumber(double v, const std::string& field);
+
 } // namespace xyt

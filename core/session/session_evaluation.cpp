@@ -3,6 +3,7 @@
 
 #include "core/simulation/discrete_simulation.h"
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 #include "core/simulation/trajectory.h"
 
 #include <algorithm>
@@ -11,21 +12,68 @@
 namespace xyt {
 
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex) {
-    if (trajectory.kind == TrajectoryKind::Cubic) {
-        const CubicTrajectory cubic(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
-                                    trajectory.tfSeconds, trajectory.v0, trajectory.vf);
-        return [cubic](double t) { return cubic.position(t); };
+    // Core checks name their own argument ("xf", "radius"); the session's user knows the path.
+    try {
+        if (trajectory.kind == TrajectoryKind::Cubic) {
+            const CubicTrajectory cubic(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
+                                        trajectory.tfSeconds, trajectory.v0, trajectory.vf);
+            return [cubic](double t) { return cubic.position(t); };
+        }
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("trajectory.cubic." + e.field(), e.reason());
     }
-    requirePositive(trajectory.radius, "radius");
-    requireNonZero(trajectory.omegaRadPerSec, "omega");
-    const Circle circle{trajectory.radius, trajectory.omegaRadPerSec, 0.0, 0.0,
-                        trajectory.rampInSeconds};
-    Sinusoid s = axisIndex == 0 ? circle.xAxis() : circle.yAxis();
-    s.validate();
-    return [s](double t) { return s.value(t); };
+    try {
+        requirePositive(trajectory.radius, "radius");
+        requirePosition(trajectory.radius, "radius");
+        requireNonZero(trajectory.omegaRadPerSec, "omega");
+        const Circle circle{trajectory.radius, trajectory.omegaRadPerSec, 0.0, 0.0,
+                            trajectory.rampInSeconds};
+        Sinusoid s = axisIndex == 0 ? circle.xAxis() : circle.yAxis();
+        s.validate();
+        return [s](double t) { return s.value(t); };
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("trajectory.circle." + e.field(), e.reason());
+    }
 }
 
 namespace {
+
+/// A refusal of the run itself (AxisEvaluation::runRefused), not of one axis' design.
+struct RunRefused : InvalidInput {
+    using InvalidInput::InvalidInput;
+};
+
+/// axisReference, its refusals marked as refusals of the run.
+std::function<double(double)> sessionReference(const TrajectorySettings& trajectory, int axisIndex) {
+    try {
+        return axisReference(trajectory, axisIndex);
+    } catch (const InvalidInput& e) {
+        throw RunRefused(e.field(), e.reason());
+    }
+}
+
+/**
+ * The sample times of one axis (step @p dt, named @p dtField in the session), refused naming
+ * the session field when the run would not fit in memory or would hold a single sample (every
+ * metric would read 0, which is not a result). The duration is blamed when the session sets it,
+ * else the step.
+ */
+std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double dt,
+                                    const std::string& dtField) {
+    const double duration = trajectory.effectiveDurationSeconds();
+    const std::string culprit = trajectory.durationSeconds > 0.0 ? "trajectory.duration" : dtField;
+    std::vector<double> times;
+    try {
+        times = sampleTimes(duration, dt);
+    } catch (const InvalidInput& e) {
+        throw RunRefused(e.field() == "dt" ? dtField : culprit, e.reason());
+    }
+    if (times.size() < 2)
+        throw RunRefused(culprit, "gives a single sample (step " + formatNumber(dt) + " s, duration " +
+                                        formatNumber(duration) +
+                                        " s); at least two samples are needed for the metrics");
+    return times;
+}
 
 void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
                 AxisEvaluation& out) {
@@ -35,10 +83,9 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     options.dtSeconds = session.trajectory.dtSeconds;
     options.umaxVolts = session.umaxVolts;
     options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
-    const auto times =
-        sampleTimes(session.trajectory.effectiveDurationSeconds(), options.dtSeconds);
+    const auto times = axisSampleTimes(session.trajectory, options.dtSeconds, "trajectory.dt");
     out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
-                           sampled(axisReference(session.trajectory, axisIndex), times), options);
+                           sampled(sessionReference(session.trajectory, axisIndex), times), options);
     out.metrics = trackingMetrics(out.run);
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
@@ -115,9 +162,10 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     out.zpetc = designZpetc(*out.pp);
     for (const auto& w : out.pp->warnings)
         out.warnings.push_back(w);
-    const auto times = sampleTimes(session.trajectory.effectiveDurationSeconds(), pp.tsSeconds);
+    const auto times = axisSampleTimes(session.trajectory, pp.tsSeconds,
+                                       "axes[" + std::to_string(axisIndex) + "].pp.ts");
     const std::size_t n = times.size();
-    const auto reference = axisReference(session.trajectory, axisIndex);
+    const auto reference = sessionReference(session.trajectory, axisIndex);
     std::vector<double> r(n + static_cast<std::size_t>(out.zpetc->previewSteps));
     for (std::size_t k = 0; k < r.size(); ++k)
         r[k] = reference(static_cast<double>(k) * pp.tsSeconds);
@@ -173,6 +221,7 @@ AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
         out.ok = false;
         out.errorField = e.field();
         out.error = e.reason();
+        out.runRefused = dynamic_cast<const RunRefused*>(&e) != nullptr;
     }
     return out;
 }

@@ -23,6 +23,10 @@ struct AxisEvaluation {
     bool ok = false;
     std::string errorField; ///< when !ok: the invalid setting, e.g. "axes[0].gt.kp"
     std::string error;      ///< when !ok: the reason
+    /// When !ok because the run itself was refused (its trajectory is invalid, it would not fit
+    /// in memory or would hold a single sample): no figure of this session means anything, and
+    /// a report or an export must refuse it, naming errorField (e.g. "trajectory.dt").
+    bool runRefused = false;
     DesignMethod method = DesignMethod::GuilleminTruxal;
     std::optional<GtDesign> gt;
     /// Discrete designs: the pole-placement loop and its ZPETC feedforward.
@@ -54,6 +58,8 @@ struct SessionEvaluation {
 };
 
 /// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows.
+/// @throws InvalidInput naming the session path ("trajectory.cubic.xf", "trajectory.circle.radius")
+///         for a non-finite value or a position beyond kMaxPositionMm.
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex);
 
 /// Designs and simulates one axis. Invalid settings give ok = false with the field named (the

@@ -5,8 +5,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <string>
+
+#include <unistd.h>
 
 namespace xyt {
 
@@ -19,6 +22,10 @@ CubicTrajectory::CubicTrajectory(double x0, double xf, double t0Seconds, double 
     requireFinite(tfSeconds, "tf");
     requireFinite(v0, "v0");
     requireFinite(vf, "vf");
+    requirePosition(x0, "x0");
+    requirePosition(xf, "xf");
+    requirePosition(v0, "v0");
+    requirePosition(vf, "vf");
     if (!(tfSeconds > t0Seconds))
         throw InvalidInput("tf", "must be later than t0");
     const double T = tfSeconds - t0Seconds;
@@ -57,6 +64,8 @@ void Sinusoid::validate() const {
     requireFinite(phaseRad, "phase");
     requireFinite(offset, "offset");
     requireFinite(rampInSeconds, "ramp_in");
+    requirePosition(amplitude, "amplitude");
+    requirePosition(offset, "offset");
     if (rampInSeconds < 0.0)
         throw InvalidInput("ramp_in", "must be >= 0");
 }
@@ -79,19 +88,57 @@ double Circle::periodSeconds() const {
     return 2.0 * std::numbers::pi / std::abs(omegaRadPerSec);
 }
 
+void requirePosition(double value, const std::string& field) {
+    requireFinite(value, field);
+    if (!(std::abs(value) <= kMaxPositionMm)) {
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%.6g", value);
+        throw InvalidInput(field, std::string(shown) + " is beyond the 1e9 mm (1000 km) that any "
+                                                       "table could move; refused before it overflows the simulation");
+    }
+}
+
+std::size_t sampleLimitForMemory(double memoryBytes) {
+    if (!(memoryBytes > 0.0) || !std::isfinite(memoryBytes))
+        return kMaxSamples;
+    const double fits = std::floor(kSampleMemoryFraction * memoryBytes / kBytesPerSample);
+    return fits < static_cast<double>(kMaxSamples) ? static_cast<std::size_t>(fits) : kMaxSamples;
+}
+
+double physicalMemoryBytes() {
+    if (const char* injected = std::getenv("XYT_TEST_PHYSICAL_MEMORY_BYTES"))
+        return std::strtod(injected, nullptr);
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long pageSize = sysconf(_SC_PAGESIZE);
+    return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0.0;
+}
+
+std::size_t sampleLimit() {
+    static const std::size_t limit = sampleLimitForMemory(physicalMemoryBytes());
+    return limit;
+}
+
 std::vector<double> sampleTimes(double durationSeconds, double dtSeconds) {
     requirePositive(dtSeconds, "dt");
     requireFinite(durationSeconds, "duration");
     if (durationSeconds < 0.0)
         throw InvalidInput("duration", "must be >= 0");
     const double count = std::floor(durationSeconds / dtSeconds + 1e-9) + 1.0;
-    if (!(count <= static_cast<double>(kMaxSamples))) { // also inf (dt = 5e-324)
-        char needs[32];
+    const std::size_t limit = sampleLimit();
+    if (!(count <= static_cast<double>(limit))) { // also inf (dt = 5e-324)
+        char needs[32], memory[32];
         std::snprintf(needs, sizeof needs, "%.3g", count); // never cast an out-of-range count
+        std::snprintf(memory, sizeof memory, "%.3g", physicalMemoryBytes() / 1e9);
         throw InvalidInput("duration", std::string("needs ") +
                                            (std::isfinite(count) ? needs : "more than 1e308") +
-                                           " samples at this dt; the limit is " +
-                                           std::to_string(kMaxSamples));
+                                           " samples at this dt; the limit is " + std::to_string(limit) +
+                                           (limit < kMaxSamples
+                                                ? std::string(" on this machine (") +
+                                                      std::to_string(static_cast<int>(kSampleMemoryFraction * 100)) +
+                                                      " % of its " + memory + " GB of memory at " +
+                                                      std::to_string(static_cast<int>(kBytesPerSample)) +
+                                                      " bytes per sample)"
+                                                : std::string()));
     }
     std::vector<double> t(static_cast<std::size_t>(count));
     for (std::size_t k = 0; k < t.size(); ++k)

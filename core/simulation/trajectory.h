@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <string>
 #include <vector>
 
 namespace xyt {
@@ -74,9 +76,24 @@ struct Circle {
     double periodSeconds() const;
 };
 
+/**
+ * The largest position, velocity (per second), amplitude or radius a trajectory may have:
+ * 1e9 mm (1000 km). No XY table spans more than a few metres (1e3..1e4 mm), so this leaves five
+ * decades for experiments in finer units (um, nm), yet keeps everything the simulation and the
+ * metrics compute from it far from overflow: a squared error is at most ~1e18, an ITAE sum over
+ * kMaxSamples samples of 1e9 mm for 1e9 s below 1e36, and a pole-placement command (gains are
+ * bounded by 1e100 in pole_placement.cpp) below 1e109, where 1e308 is the double's limit.
+ * A larger value (xf = 1e308) used to overflow the reference or give null metrics beside finite
+ * ones; it is refused up front instead.
+ */
+inline constexpr double kMaxPositionMm = 1e9;
+
+/// @throws InvalidInput naming @p field unless @p value is finite and |value| <= kMaxPositionMm.
+void requirePosition(double value, const std::string& field);
+
 /// Samples f(k dt) for k = 0 .. n-1 where n = floor(duration/dt + 1e-9) + 1.
 /// @throws InvalidInput "dt" unless dt > 0, "duration" unless >= 0 and the sample count fits in
-///         memory (at most kMaxSamples).
+///         this machine's memory (at most sampleLimit(), see there).
 std::vector<double> sampleTimes(double durationSeconds, double dtSeconds);
 template <class F> std::vector<double> sampled(const F& f, const std::vector<double>& times) {
     std::vector<double> v(times.size());
@@ -85,7 +102,33 @@ template <class F> std::vector<double> sampled(const F& f, const std::vector<dou
     return v;
 }
 
-/// The most samples one simulation may hold (each sample stores a few doubles): 20 million.
+/// The most samples one simulation may hold on any machine: 20 million.
 inline constexpr std::size_t kMaxSamples = 20'000'000;
+
+/**
+ * What one time sample costs the heaviest user, in bytes: peak resident memory of
+ * `xytune-cli report` (and `export`, which holds the same evaluation) on a session of two
+ * pole-placement + ZPETC axes was 200.5 B per sample above the program's own 10 MB (2 000 001
+ * samples: 401 848 KB; two GT axes take 94 B, `contour` 144 B, `zpetc` 88 B, measured the same
+ * way with GNU time). Rounded up to 256 B for the GUI's plot copies of the same run.
+ */
+inline constexpr double kBytesPerSample = 256.0;
+
+/// The share of physical memory one run may take: a quarter, so that the GUI (which keeps a
+/// snapshot beside the session), the desktop and a second program still fit.
+inline constexpr double kSampleMemoryFraction = 0.25;
+
+/// floor(kSampleMemoryFraction * memoryBytes / kBytesPerSample), never above kMaxSamples
+/// (kMaxSamples when memoryBytes is not a positive number).
+std::size_t sampleLimitForMemory(double memoryBytes);
+
+/// Physical memory of this machine, sysconf(_SC_PHYS_PAGES) * sysconf(_SC_PAGESIZE) in bytes
+/// (0 when unknown). The environment variable XYT_TEST_PHYSICAL_MEMORY_BYTES replaces it, so
+/// that tests can play a smaller machine.
+double physicalMemoryBytes();
+
+/// The most samples a run may hold on this machine: sampleLimitForMemory(physicalMemoryBytes()),
+/// read once per process.
+std::size_t sampleLimit();
 
 } // namespace xyt

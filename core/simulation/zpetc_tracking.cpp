@@ -2,6 +2,7 @@
 #include "core/simulation/zpetc_tracking.h"
 
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,10 @@ ZpetcTrackingRun runZpetcTracking(const PolePlacementDesign& loop, const ZpetcDe
     ZpetcTrackingRun run;
     run.t = sampleTimes(durationSeconds, loop.tsSeconds);
     const std::size_t n = run.t.size();
+    if (n < 2) // one sample: every error figure would read 0, which is not a result
+        throw InvalidInput("duration", "gives a single sample (Ts " + formatNumber(loop.tsSeconds) +
+                                           " s, duration " + formatNumber(durationSeconds) +
+                                           " s); at least two samples are needed for the metrics");
     const auto p = static_cast<std::size_t>(zpetc.previewSteps);
     // The last time read (preview included) and its phase omega t must be finite, or sin() gives
     // NaN for a run that looks valid (found by fuzz_design with Ts = 1.8e308; regression input

@@ -28,8 +28,10 @@ struct ZpetcTrackingRun {
 /**
  * Samples @p reference at k Ts for k = 0 .. n-1 (n = floor(duration/Ts) + 1, plus the preview
  * samples the ZPETC reads beyond the end) and runs the three structures of discrete_simulation.h.
- * @throws InvalidInput "duration" unless duration >= 0 (see sampleTimes), and when the last
- *         sample time (preview included) or omega times it overflows a double.
+ * @throws InvalidInput "duration" unless duration >= 0 and the run fits in memory (see
+ *         sampleTimes), when it holds a single sample, and when the last sample time (preview
+ *         included) or omega times it overflows a double; "amplitude"/"offset" beyond
+ *         kMaxPositionMm (Sinusoid::validate).
  */
 ZpetcTrackingRun runZpetcTracking(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
                                   const Sinusoid& reference, double durationSeconds,

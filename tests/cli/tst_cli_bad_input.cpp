@@ -9,6 +9,12 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QMap>
+
+#include <functional>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -37,10 +43,19 @@ private slots:
     void initTestCase();
     void badInputExitsWithTwoAndNamesTheArgument_data();
     void badInputExitsWithTwoAndNamesTheArgument();
+    void sampleCountBoundedByPhysicalMemory_data();
+    void sampleCountBoundedByPhysicalMemory();
 
 private:
+    /// @p s with "{default}", "{dir}", "{one-sample}" ... replaced by the files of initTestCase.
+    QString substitute(QString s) const;
+    /// Runs the CLI on @p args after substitute(); @p names is substituted in place.
+    xyt::test::CliRun runWithFiles(QStringList args, QString& names, const QStringList& environment) const;
+
     QTemporaryDir dir_;
     QString defaultSession_, truncatedSession_, binarySession_;
+    /// Issue 20: sessions derived from the default one ("{name}" in the table), see initTestCase.
+    QMap<QString, QString> variants_;
 };
 
 void TstCliBadInput::initTestCase() {
@@ -61,6 +76,69 @@ void TstCliBadInput::initTestCase() {
     QFile binary(binarySession_);
     QVERIFY(binary.open(QIODevice::WriteOnly));
     binary.write(QByteArray("\x00\xff\xfe{\x01\n\x02", 7));
+
+    // Issue 20: sessions whose run is refused (one sample, a position out of range, a run that
+    // does not fit in memory) or whose export would carry inf.
+    const QJsonObject base = QJsonDocument::fromJson(bytes).object();
+    const auto variant = [&](const QString& name, const std::function<void(QJsonObject&)>& edit) {
+        QJsonObject s = base;
+        edit(s);
+        const QString path = dir_.filePath(name + ".json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QJsonDocument(s).toJson());
+        variants_.insert("{" + name + "}", path);
+    };
+    const auto setIn = [](QJsonObject& o, const QStringList& path, double v) {
+        // o[path[0]]...[path[n-1]] = v (objects only)
+        std::function<void(QJsonObject&, int)> go = [&](QJsonObject& at, int i) {
+            if (i + 1 == path.size()) {
+                at.insert(path[i], v);
+                return;
+            }
+            QJsonObject child = at.value(path[i]).toObject();
+            go(child, i + 1);
+            at.insert(path[i], child);
+        };
+        go(o, 0);
+    };
+    variant("one-sample", [&](QJsonObject& s) { setIn(s, {"trajectory", "dt"}, 1000.0); });
+    variant("xf-1e308", [&](QJsonObject& s) { setIn(s, {"trajectory", "cubic", "xf"}, 1e308); });
+    variant("radius-1e308", [&](QJsonObject& s) {
+        QJsonObject t = s.value("trajectory").toObject();
+        t.insert("kind", "circle");
+        s.insert("trajectory", t);
+        setIn(s, {"trajectory", "circle", "radius"}, 1e308);
+    });
+    const auto ppAxes = [](QJsonObject& s) {
+        QJsonArray axes = s.value("axes").toArray();
+        for (qsizetype i = 0; i < axes.size(); ++i) {
+            QJsonObject a = axes[i].toObject();
+            a.insert("method", "pole-placement-zpetc");
+            axes[i] = a;
+        }
+        s.insert("axes", axes);
+    };
+    variant("pp-one-sample", [&](QJsonObject& s) {
+        ppAxes(s);
+        setIn(s, {"trajectory", "duration"}, 0.01); // shorter than Ts = 0.07 s
+    });
+    // 1e8 samples at the session's dt 0.01 (refused at load), 14.3 million at the axes' Ts 0.07.
+    variant("pp-long", [&](QJsonObject& s) {
+        ppAxes(s);
+        setIn(s, {"trajectory", "duration"}, 1e6);
+    });
+    // kp + ki Ts/2 of the Tustin PI overflows with Ts = 1e308 (ki = wn^4/k0 = 128.5 at wn 10).
+    variant("digital-pi-inf", [&](QJsonObject& s) {
+        setIn(s, {"controller_ts"}, 1e308);
+        QJsonArray axes = s.value("axes").toArray();
+        QJsonObject x = axes[0].toObject();
+        QJsonObject gt = x.value("gt").toObject();
+        gt.insert("wn", 10.0);
+        x.insert("gt", gt);
+        axes[0] = x;
+        s.insert("axes", axes);
+    });
 }
 
 void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
@@ -281,22 +359,99 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << "--omega: gives a single sample";
     QTest::newRow("contour unknown preset") << QStringList{"contour", "--preset", "square"}
                                             << "--preset";
+
+    // Issue 20, second pass. Overflowing design inputs name the argument, not an internal
+    // coefficient ("den[2]: must be a number, got NaN" for wn = 1e300: wn^4 overflows).
+    QTest::newRow("gt wn 1e300 (wn^4 overflows)") << kGt + QStringList{"--wn", "1e300"}
+                                                  << "--wn: 1e+300 rad/s is out of range";
+    QTest::newRow("gt wn 1e-200 (wn^2 underflows)") << kGt + QStringList{"--wn", "1e-200"}
+                                                    << "--wn: 1e-200 rad/s is out of range";
+    QTest::newRow("gt kp 1e308 (psi1 underflows)") << kGt + QStringList{"--kp", "1e308"}
+                                                   << "--kp: 1e+308 is out of range";
+    QTest::newRow("simulate wn 1e300") << move + QStringList{"--wn", "1e300"} << "--wn";
+    QTest::newRow("rlocus gt preset wn 1e300")
+        << QStringList{"rlocus", "--gt-preset", "lower-base", "--wn", "1e300"} << "--wn";
+    QTest::newRow("sweep wn grid to 1e300")
+        << sweep + QStringList{"--wn", "1e299:1e300:2", "--kp", "10:20:2"} << "--wn";
+    QTest::newRow("pp b negligible (0 1e-300)")
+        << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0 1e-300", "--t", "1 -0.2"}
+        << "--b: B(1) = 1e-300 is negligible";
+    // Positions beyond kMaxPositionMm = 1e9 mm are refused before they overflow the run.
+    QTest::newRow("simulate xf 1e308") << QStringList{"simulate", "--preset", "lower-base",
+                                                      "--trajectory", "cubic", "--xf", "1e308",
+                                                      "--tf", "130"}
+                                       << "--xf: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("simulate sine amplitude 1e308")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine",
+                       "--amplitude", "1e308", "--omega", "0.1"}
+        << "--amplitude: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("zpetc amplitude 1e308") << QStringList{"zpetc"} + kPpX + QStringList{"--amplitude", "1e308"}
+                                           << "--amplitude: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("contour radius 1e308") << QStringList{"contour", "--radius", "1e308"}
+                                          << "--radius: 1e+308 is beyond the 1e9 mm";
+    // One-sample runs: every metric would read 0.
+    QTest::newRow("simulate tf 1e-300 (one sample)")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
+                       "600", "--tf", "1e-300"}
+        << "--tf: gives a single sample";
+    QTest::newRow("zpetc duration shorter than Ts (one sample)")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "0.01"}
+        << "--duration: gives a single sample";
+    QTest::newRow("zpetc omega 1e300 (one sample)")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "1e300"}
+        << "--omega: gives a single sample";
+    QTest::newRow("contour duration shorter than Ts (one sample)")
+        << QStringList{"contour", "--duration", "0.01"} << "--duration: gives a single sample";
+    QTest::newRow("contour omega 1e300 (one sample)")
+        << QStringList{"contour", "--omega", "1e300"} << "--omega: gives a single sample";
+    // Sessions: the message names the session field.
+    QTest::newRow("report dt longer than the move (one sample)")
+        << QStringList{"report", "{one-sample}"} << "trajectory.dt: gives a single sample";
+    QTest::newRow("report pole placement duration shorter than Ts (one sample)")
+        << QStringList{"report", "{pp-one-sample}"} << "trajectory.duration: gives a single sample";
+    QTest::newRow("export csv one sample")
+        << QStringList{"export", "{one-sample}", "--format", "csv", "-o", "{dir}/o.csv"}
+        << "trajectory.dt: gives a single sample";
+    QTest::newRow("export json one sample")
+        << QStringList{"export", "{pp-one-sample}", "--format", "json", "-o", "{dir}/o.json"}
+        << "trajectory.duration: gives a single sample";
+    QTest::newRow("report xf 1e308") << QStringList{"report", "{xf-1e308}"}
+                                     << "trajectory.cubic.xf: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("export c xf 1e308")
+        << QStringList{"export", "{xf-1e308}", "--format", "c", "-o", "{dir}/o.h"}
+        << "trajectory.cubic.xf: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("report circle radius 1e308") << QStringList{"report", "{radius-1e308}"}
+                                                << "trajectory.circle.radius: 1e+308 is beyond";
+    // No export writes a non-finite number: JSON used to write null.
+    QTest::newRow("export json digital PI overflows")
+        << QStringList{"export", "{digital-pi-inf}", "--format", "json", "-o", "{dir}/o.json"}
+        << "axes[0].gt (digital PI at controller_ts): gives inf in the export";
+}
+
+QString TstCliBadInput::substitute(QString s) const {
+    for (auto it = variants_.cbegin(); it != variants_.cend(); ++it)
+        s.replace(it.key(), it.value());
+    return s.replace("{default}", defaultSession_)
+        .replace("{truncated}", truncatedSession_)
+        .replace("{binary}", binarySession_)
+        .replace("{dir}", dir_.path());
+}
+
+xyt::test::CliRun TstCliBadInput::runWithFiles(QStringList args, QString& names,
+                                               const QStringList& environment) const {
+    for (QString& a : args)
+        a = substitute(a);
+    names = substitute(names);
+    const auto run = xyt::test::runCli(args, kTimeBoundMs, environment);
+    if (!run.finished)
+        qWarning("did not finish within 20 s (or crashed)");
+    return run;
 }
 
 void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument() {
     QFETCH(QStringList, args);
     QFETCH(QString, names);
-    const auto substitute = [&](QString s) {
-        return s.replace("{default}", defaultSession_)
-            .replace("{truncated}", truncatedSession_)
-            .replace("{binary}", binarySession_)
-            .replace("{dir}", dir_.path());
-    };
-    for (QString& a : args)
-        a = substitute(a);
-    names = substitute(names);
-
-    const auto run = xyt::test::runCli(args, kTimeBoundMs);
+    const auto run = runWithFiles(args, names, {});
     QVERIFY2(run.finished, "did not finish within 20 s (or crashed)");
     const QByteArray diagnostic = "stderr: " + run.err + " stdout: " + run.out.left(200);
     QVERIFY2(run.exitCode == 2, diagnostic.constData());
@@ -304,6 +459,40 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument() {
              diagnostic.constData());
     QVERIFY2(run.err.contains(names.toUtf8()), diagnostic.constData());
     QVERIFY2(run.out.isEmpty(), diagnostic.constData());
+}
+
+void TstCliBadInput::sampleCountBoundedByPhysicalMemory_data() {
+    // On a machine with 4 GB (XYT_TEST_PHYSICAL_MEMORY_BYTES), a run may hold
+    // floor(0.25 * 4e9 / 256) = 3 906 250 samples (core/trajectory.h: a quarter of the memory at
+    // the 256 B per sample measured for the heaviest user). Each of these needs more: before,
+    // they were bounded only by a fixed 20 million and took 1-3 GB.
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("names");
+    QTest::newRow("contour duration 1e6 (14.3 million samples at Ts 0.07)")
+        << QStringList{"contour", "--duration", "1e6"} << "--duration: needs 1.43e+07 samples";
+    QTest::newRow("zpetc duration 1e6")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "1e6"} << "--duration: needs 1.43e+07 samples";
+    QTest::newRow("simulate dt 1e-5 (13 million samples)")
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-5"}
+        << "--dt: needs 1.3e+07 samples";
+    QTest::newRow("report of a 14.3-million-sample session")
+        << QStringList{"report", "{pp-long}"} << "trajectory.duration: needs 1e+08 samples"; // at dt 0.01
+    QTest::newRow("export csv of a 14.3-million-sample session")
+        << QStringList{"export", "{pp-long}", "--format", "csv", "-o", "{dir}/long.csv"}
+        << "trajectory.duration: needs 1e+08 samples";
+}
+
+void TstCliBadInput::sampleCountBoundedByPhysicalMemory() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, names);
+    const auto run = runWithFiles(args, names, {"XYT_TEST_PHYSICAL_MEMORY_BYTES=4e9"});
+    QVERIFY2(run.finished, "did not finish within 20 s (or crashed)");
+    const QByteArray diagnostic = "stderr: " + run.err + " stdout: " + run.out.left(200);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.count('\n') == 1, diagnostic.constData());
+    QVERIFY2(run.err.contains(names.toUtf8()), diagnostic.constData());
+    QVERIFY2(run.err.contains("the limit is 3906250 on this machine"), diagnostic.constData());
+    QVERIFY(!QFile::exists(dir_.filePath("long.csv")));
 }
 
 QTEST_APPLESS_MAIN(TstCliBadInput)

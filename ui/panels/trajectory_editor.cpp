@@ -141,13 +141,13 @@ void TrajectoryEditor::emitIfValid() {
                               ? edited
                               : fields_["dt"];
     const double samples = t.effectiveDurationSeconds() / t.dtSeconds + 1.0;
-    if (!(samples <= static_cast<double>(kMaxSamples))) {
+    if (!(samples <= static_cast<double>(sampleLimit()))) {
         markFieldError(blamed, tr("%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory")
                                    .arg(blamed->accessibleName())
                                    .arg(t.effectiveDurationSeconds(), 0, 'g', 6)
                                    .arg(t.dtSeconds, 0, 'g', 6)
                                    .arg(samples, 0, 'g', 3)
-                                   .arg(static_cast<double>(kMaxSamples), 0, 'g', 3));
+                                   .arg(static_cast<double>(sampleLimit()), 0, 'g', 3));
         return;
     }
     for (const char* name : {"duration", "tf", "t0", "dt"})

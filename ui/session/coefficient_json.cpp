@@ -8,11 +8,19 @@
 namespace xyt::ui {
 
 namespace {
-QJsonArray array(const std::vector<double>& v) {
+/// Every number of the export passes exportableNumber: QJsonValue writes inf and NaN as null,
+/// which firmware tooling reads as 0 or fails on. @p field names the session path it comes from.
+double finite(double v, const std::string& field) { return exportableNumber(v, field); }
+
+QJsonArray array(const std::vector<double>& v, const std::string& field) {
     QJsonArray a;
     for (double x : v)
-        a.append(x);
+        a.append(finite(x, field));
     return a;
+}
+
+std::string axisField(int axisIndex, const std::string& part) {
+    return "axes[" + std::to_string(axisIndex) + "]." + part;
 }
 } // namespace
 
@@ -25,23 +33,24 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
         QJsonObject axis{{"id", QString::fromStdString(settings.id)},
                          {"label", QString::fromStdString(settings.label)},
                          {"method", methodName(settings.method)}};
+        const std::string ppField = axisField(i, "pp"), gtField = axisField(i, "gt");
         if (a.ok && a.pp) {
             axis.insert("position_unit", "mm (the ARX model's units)");
             axis.insert("rst", QJsonObject{
-                {"F", array(a.pp->f.ascending())},
-                {"G", array(a.pp->g.ascending())},
-                {"Kf", a.pp->kf},
-                {"T", array(a.pp->t.ascending())},
-                {"ts", a.pp->tsSeconds},
+                {"F", array(a.pp->f.ascending(), ppField + " (F)")},
+                {"G", array(a.pp->g.ascending(), ppField + " (G)")},
+                {"Kf", finite(a.pp->kf, ppField + " (Kf)")},
+                {"T", array(a.pp->t.ascending(), ppField + ".t1")},
+                {"ts", finite(a.pp->tsSeconds, ppField + ".ts")},
                 {"order", "ascending powers of z^-1"},
                 {"law", "F(z^-1) u[k] = Kf w[k] - G(z^-1) y[k]; w = r, or the ZPETC output"},
                 {"units", "ts in s, u in the ARX model's input units"}});
             if (settings.pp.zpetcEnabled && a.zpetc)
                 axis.insert("zpetc", QJsonObject{
-                    {"num", array(a.zpetc->feedforwardNum.ascending())},
-                    {"den", array(a.zpetc->feedforwardDen.ascending())},
+                    {"num", array(a.zpetc->feedforwardNum.ascending(), ppField + ".zpetc (feedforward)")},
+                    {"den", array(a.zpetc->feedforwardDen.ascending(), ppField + ".zpetc (feedforward)")},
                     {"preview_steps", a.zpetc->previewSteps},
-                    {"gain_factor", a.zpetc->gainFactor},
+                    {"gain_factor", finite(a.zpetc->gainFactor, ppField + ".zpetc (gain factor)")},
                     {"order", "ascending powers of z^-1"},
                     {"law", "den(z^-1) w[k] = num(z^-1) r[k + preview_steps]"}});
             axes.append(axis);
@@ -50,21 +59,21 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
         const DigitalController digital = axisDigitalController(session, evaluation, i, options);
         if (a.gt) {
             axis.insert("position_unit", QStringLiteral("model unit (%1 per mm of trajectory)")
-                                             .arg(settings.gt.modelUnitsPerPositionUnit));
+                                             .arg(finite(settings.gt.modelUnitsPerPositionUnit, gtField + ".model_unit_scale")));
             axis.insert("continuous_pi",
-                        QJsonObject{{"kp", a.gt->kp},
-                                    {"ki", a.gt->ki},
+                        QJsonObject{{"kp", finite(a.gt->kp, gtField + ".kp")},
+                                    {"ki", finite(a.gt->ki, gtField + " (ki)")},
                                     {"form", "u(s) = (kp + ki/s) e(s)"},
                                     {"units", "kp in V per model unit, ki in V per model unit per s"}});
             axis.insert("reference_model",
-                        QJsonObject{{"num", array(a.gt->referenceModel.num().descending())},
-                                    {"den", array(a.gt->referenceModel.den().descending())},
+                        QJsonObject{{"num", array(a.gt->referenceModel.num().descending(), gtField + " (reference model)")},
+                                    {"den", array(a.gt->referenceModel.den().descending(), gtField + " (reference model)")},
                                     {"order", "descending powers of s"}});
         }
         axis.insert("digital_controller",
-                    QJsonObject{{"num", array(digital.num)},
-                                {"den", array(digital.den)},
-                                {"ts", digital.tsSeconds},
+                    QJsonObject{{"num", array(digital.num, gtField + " (digital PI at controller_ts)")},
+                                {"den", array(digital.den, gtField + " (digital PI at controller_ts)")},
+                                {"ts", finite(digital.tsSeconds, "controller_ts")},
                                 {"discretization", QString::fromStdString(discretizationName(options.piMethod))},
                                 {"order", "ascending powers of z^-1"},
                                 {"difference_equation",
@@ -74,7 +83,7 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
     }
     return {{"format", "xytune-coefficients"},
             {"version", 1},
-            {"umax_volts", session.umaxVolts},
+            {"umax_volts", finite(session.umaxVolts, "umax")},
             {"axes", axes}};
 }
 

@@ -231,9 +231,12 @@ TrajectorySettings readTrajectory(ObjectReader r) {
     if (t.durationSeconds < 0)
         throw FormatError{join(r.path(), "duration"), QStringLiteral("must be >= 0 (0 = automatic)")};
     t.dtSeconds = r.positive("dt");
-    if (t.effectiveDurationSeconds() / t.dtSeconds > static_cast<double>(kMaxSamples))
+    const double samples = std::floor(t.effectiveDurationSeconds() / t.dtSeconds) + 1.0;
+    if (!(samples <= static_cast<double>(sampleLimit()))) // the limit follows the memory (trajectory.h)
         throw FormatError{join(r.path(), "duration"),
-                          QStringLiteral("needs more than %1 samples at this dt").arg(kMaxSamples)};
+                          QStringLiteral("needs %1 samples at this dt; the limit is %2 on this machine")
+                              .arg(samples, 0, 'g', 3)
+                              .arg(sampleLimit())};
     r.finish();
     return t;
 }

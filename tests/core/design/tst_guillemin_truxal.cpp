@@ -34,6 +34,7 @@ private slots:
     void paperUpperBaseEq21And22();
     void presets();
     void unstableDesignIsFlaggedNotThrown();
+    void unrepresentableWnOrKpIsRefusedNamingIt();
     void badInputsNameTheField_data();
     void badInputsNameTheField();
 };
@@ -233,6 +234,21 @@ void TstGuilleminTruxal::badInputsNameTheField() {
     QFETCH(QString, field);
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp); }),
              field);
+}
+
+void TstGuilleminTruxal::unrepresentableWnOrKpIsRefusedNamingIt() {
+    // Issue 20: wn = 1e300 made wn^4 overflow and the reference model's constructor reported
+    // "den[2]: must be a number, got NaN". Bounds from the closed forms (paper 000 Eq. 11-18):
+    // wn^4 overflows above DBL_MAX^(1/4) = 1.34e77 rad/s, wn^2 underflows to 0 below ~1.5e-162.
+    const ThirdOrderPlant lower{77.8, 125.3, 3665.0};
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e300, 30.0); }), QString("wn"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2e77, 30.0); }), QString("wn"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e-200, 30.0); }), QString("wn"));
+    // psi1 = wn^4/(kp k0) underflows to 0 for kp = 1e308 (kp k0 overflows).
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2.0, 1e308); }), QString("kp"));
+    // Still representable: wn = 1e70 (wn^4 = 1e280) gives finite coefficients.
+    const GtDesign d = xyt::designGuilleminTruxal(lower, 1e70, 30.0);
+    QVERIFY(std::isfinite(d.ki) && d.ki > 0.0);
 }
 
 QTEST_APPLESS_MAIN(TstGuilleminTruxal)

@@ -48,6 +48,8 @@ private slots:
     void circleIdentities();
     void sampleTimesLimits();
     void errorsNameTheField();
+    void sampleLimitFollowsMemory();
+    void positionsBeyondTheBoundAreRefused();
 };
 
 void TstTrajectory::paperEq6() {
@@ -223,6 +225,33 @@ void TstTrajectory::errorsNameTheField() {
     xyt::Circle c;
     c.omegaRadPerSec = 0.0;
     QCOMPARE(xyt::test::invalidInputField([&] { c.periodSeconds(); }), QString("omega"));
+}
+
+void TstTrajectory::sampleLimitFollowsMemory() {
+    // Closed form (core/trajectory.h): floor(0.25 * memory / 256 B), at most 20 million.
+    QCOMPARE(xyt::sampleLimitForMemory(4e9), std::size_t(3906250));
+    QCOMPARE(xyt::sampleLimitForMemory(1024.0 * 1024 * 1024), std::size_t(1048576));
+    QCOMPARE(xyt::sampleLimitForMemory(64e9), xyt::kMaxSamples); // 62.5 million capped
+    QCOMPARE(xyt::sampleLimitForMemory(0.0), xyt::kMaxSamples);  // unknown memory
+    QCOMPARE(xyt::sampleLimitForMemory(std::nan("")), xyt::kMaxSamples);
+    QVERIFY(xyt::sampleLimit() <= xyt::kMaxSamples);
+    QVERIFY(xyt::sampleLimit() == xyt::sampleLimitForMemory(xyt::physicalMemoryBytes()));
+}
+
+void TstTrajectory::positionsBeyondTheBoundAreRefused() {
+    // Issue 20: xf = 1e308 overflowed the reference ("reference: sample 1 is not a finite
+    // number"); amplitude 1e308 gave null metrics beside finite ones. kMaxPositionMm = 1e9.
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1e308, 0.0, 130.0); }), QString("xf"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(-2e9, 0.0, 0.0, 130.0); }), QString("x0"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 0.0, 130.0, 1e10); }), QString("v0"));
+    const CubicTrajectory atBound(-1e9, 1e9, 0.0, 130.0); // the bound itself is accepted
+    QCOMPARE(atBound.position(130.0), 1e9);
+    xyt::Sinusoid s;
+    s.amplitude = 1e308;
+    QCOMPARE(xyt::test::invalidInputField([&] { s.validate(); }), QString("amplitude"));
+    s.amplitude = 25.0;
+    s.offset = -1e300;
+    QCOMPARE(xyt::test::invalidInputField([&] { s.validate(); }), QString("offset"));
 }
 
 QTEST_APPLESS_MAIN(TstTrajectory)

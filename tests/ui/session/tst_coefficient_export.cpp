@@ -5,6 +5,7 @@
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
 #include "ui/session/coefficient_json.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QFile>
@@ -26,6 +27,7 @@ private slots:
     void octaveScriptDefinesTheTfObjects();
     void csvColumnsAndRows();
     void polePlacementAxisExports();
+    void jsonRefusesNonFiniteNumbers();
 };
 
 void TstCoefficientExport::tustinAndBackwardEulerClosedForms() {
@@ -179,4 +181,20 @@ void TstCoefficientExport::polePlacementAxisExports() {
 }
 
 QTEST_APPLESS_MAIN(TstCoefficientExport)
+void TstCoefficientExport::jsonRefusesNonFiniteNumbers() {
+    // Issue 20: QJsonValue writes inf as null, so the JSON export used to succeed with null
+    // coefficients. Closed form: ki = wn^4/k0 = 1e4/77.8 = 128.5 at wn 10, and the Tustin
+    // kp + ki Ts/2 overflows a double at Ts = 1e308.
+    Session s = Session::paperDefault();
+    s.axes[0].gt.omegaNRadPerSec = 10.0;
+    s.controllerTsSeconds = 1e308;
+    const SessionEvaluation e = evaluateSession(s);
+    QVERIFY(e.axes[0].ok);
+    QCOMPARE(xyt::test::invalidInputField([&] { ui::coefficientsJson(s, e); }),
+             QString("axes[0].gt (digital PI at controller_ts)"));
+    // The C header names the same field (the same check, exportableNumber).
+    QCOMPARE(xyt::test::invalidInputField([&] { exportCHeader(s, e); }),
+             QString("axes[0].gt (digital PI at controller_ts)"));
+}
+
 #include "tst_coefficient_export.moc"
