@@ -96,6 +96,8 @@ void validateOptions(const RootLocusOptions& o) {
         throw InvalidInput("minStepFraction", "must be in (0, 1]");
     if (o.maxPoints < 2)
         throw InvalidInput("maxPoints", "must be at least 2");
+    if (!(o.maxWork > 0.0))
+        throw InvalidInput("maxWork", "must be positive");
 }
 
 /**
@@ -231,10 +233,10 @@ public:
                                       std::to_string(k) + " before every branch converged");
                 break;
             }
-            if (work_ > kMaxWork) {
+            if (work_ > o_.maxWork) {
                 r_.status = RootLocusStatus::PointLimitReached;
                 r_.warnings.push_back("stopped at the work bound (about " +
-                                      std::to_string(static_cast<long long>(kMaxWork / 1e6)) +
+                                      std::to_string(static_cast<long long>(o_.maxWork / 1e6)) +
                                       " million operations, " + std::to_string(r_.gains.size()) +
                                       " points) at K = " + std::to_string(k) +
                                       " before every branch converged: the loop's order " +
@@ -285,6 +287,7 @@ public:
             current = std::move(next);
             append(k, current);
         }
+        r_.work = work_;
         r_.branches.resize(columns.size());
         for (std::size_t i = 0; i < columns.size(); ++i) {
             LocusBranch& b = r_.branches[i];
@@ -311,10 +314,8 @@ private:
         return p.roots();
     }
 
-    /// Operations spent on root finding, and the bound that keeps any loop to a few seconds
-    /// (the 4th-order GT locus uses about 1e6; a 40th-order one ran for minutes).
+    /// Operations spent on root finding (bounded by RootLocusOptions::maxWork).
     mutable double work_ = 0.0;
-    static constexpr double kMaxWork = 2e9;
 
     std::optional<Complex> nearZero(Complex root) const {
         std::optional<Complex> best;

@@ -6,7 +6,6 @@
 #include "tests/support/small_filesystem.h"
 
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QScopeGuard>
 #include <QTemporaryDir>
@@ -140,9 +139,8 @@ void TstFileIo::readRefusesSpecialFiles() {
     QTemporaryDir dir;
     const QString fifo = dir.filePath("pipe");
     QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
-    QElapsedTimer timer;
-    timer.start();
-    // A FIFO without a writer used to block forever; /dev/zero was read until bad_alloc.
+    // A FIFO without a writer used to block forever (the test's ctest timeout would fail it);
+    // /dev/zero was read until bad_alloc.
     for (const QString& path : {fifo, QStringLiteral("/dev/zero"), QStringLiteral("/dev/urandom")}) {
         try {
             readRegularFile(path.toStdString(), 8 * 1024 * 1024);
@@ -151,7 +149,6 @@ void TstFileIo::readRefusesSpecialFiles() {
             QVERIFY2(QString::fromStdString(e.reason()).contains("not a regular file"), e.what());
         }
     }
-    QVERIFY(timer.elapsed() < 5000);
     QVERIFY_THROWS_EXCEPTION(FileError, readRegularFile(dir.filePath("missing").toStdString(), 10));
 }
 
