@@ -12,6 +12,7 @@
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/pole_zero_plot.h"
+#include "ui/panels/fitted_stack.h"
 #include "ui/panels/pp_editor.h"
 #include "ui/session/recovery_store.h"
 #include "ui/plots/root_locus_plot.h"
@@ -200,6 +201,7 @@ QWidget* MainWindow::buildControls() {
     ppEditor_ = new PpEditor(methodPages_);
     methodPages_->addWidget(gtPage);
     methodPages_->addWidget(ppEditor_);
+    fitStackToCurrentPage(methodPages_);
     designLayout->addWidget(methodPages_);
     connect(method_, &QComboBox::activated, this, [this](int index) {
         session_->setMethod(session_->currentAxis(), index == 0 ? DesignMethod::GuilleminTruxal
@@ -400,7 +402,10 @@ void MainWindow::refresh() {
         if (shown(parameterLocusPlot_))
             parameterLocusPlot_->showNoResult(tr("Parameter locus of %1").arg(title), reason);
     }
+    // Controls that act on one tab are shown with that tab only.
+    sweptParameter_->setVisible(upperTabs_->currentWidget() == parameterLocusPlot_);
     sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
+    magnification_->setVisible(lowerTabs_->currentWidget() == contourPlot_);
     metrics_->showEvaluation(s, session_->evaluation(), session_->liveNotice());
     equations_->showAxis(a, e);
     QString state;

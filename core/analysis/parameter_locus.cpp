@@ -113,6 +113,44 @@ ParameterLocus parameterLocus(const std::string& parameterName, const ParameterS
     for (std::size_t i = 1; i < base.size(); ++i)
         refiner.extend(samples, base[i], 0);
     locus.branches.assign(samples.front().roots.size(), {});
+    const auto maxRe = [](const std::vector<Complex>& roots) {
+        double m = -std::numeric_limits<double>::infinity();
+        for (const Complex& r : roots)
+            m = std::max(m, r.real());
+        return m;
+    };
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+        const bool stableBefore = maxRe(samples[i - 1].roots) < 0.0;
+        if (stableBefore == (maxRe(samples[i].roots) < 0.0))
+            continue;
+        // Bisection on the value: 200 halvings reach adjacent doubles from any interval.
+        double lo = samples[i - 1].value, hi = samples[i].value;
+        std::vector<Complex> atHi = samples[i].roots;
+        for (int k = 0; k < 200; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            if (!(mid > std::min(lo, hi) && mid < std::max(lo, hi)))
+                break;
+            std::vector<Complex> r = poles(mid);
+            if ((maxRe(r) < 0.0) == stableBefore)
+                lo = mid;
+            else {
+                hi = mid;
+                atHi = std::move(r);
+            }
+            if (std::abs(hi - lo) <= 1e-13 * std::abs(hi))
+                break;
+        }
+        StabilityChange change;
+        change.value = 0.5 * (lo + hi);
+        change.becomesUnstable = stableBefore == (samples[i].value > samples[i - 1].value);
+        double best = std::numeric_limits<double>::infinity();
+        for (const Complex& r : atHi)
+            if (std::abs(r.real()) < best && r.imag() >= 0.0) {
+                best = std::abs(r.real());
+                change.pole = r;
+            }
+        locus.stabilityChanges.push_back(change);
+    }
     for (const Sample& s : samples) {
         locus.values.push_back(s.value);
         for (std::size_t b = 0; b < s.roots.size(); ++b)

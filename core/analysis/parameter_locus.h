@@ -28,12 +28,23 @@ struct ParameterSweep {
 ///         <= 100000), "maxStepFraction" (in (0, 1]), "maxRefinements" (0..20).
 std::vector<double> sweepValues(const ParameterSweep& sweep);
 
+/// Where the swept loop crosses the stability boundary (a pole crosses Re s = 0).
+struct StabilityChange {
+    double value = 0.0;              ///< the parameter value, to a relative 1e-12 (bisection)
+    std::complex<double> pole;       ///< the crossing pole at that value (upper half-plane)
+    bool becomesUnstable = false;    ///< stable below the value, unstable above it
+};
+
 /// Closed-loop poles traced as one parameter sweeps: branches[b][i] is a pole at values[i].
 struct ParameterLocus {
     std::string parameterName;
     std::vector<double> values;
     std::vector<std::vector<std::complex<double>>> branches;
     std::vector<std::string> warnings; ///< samples skipped because the pole count changed
+    /// Every change of stability between consecutive samples (max Re of the poles changes
+    /// sign), located by bisection on the parameter. A change between two samples that
+    /// undoes itself (unstable and back within one interval) is not seen.
+    std::vector<StabilityChange> stabilityChanges;
 };
 
 /**

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"
+#include "ui/panels/fitted_stack.h"
 #include "ui/panels/number_field.h"
 
 #include <QComboBox>
@@ -62,6 +63,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     }
     pages_->addWidget(cubic);
     pages_->addWidget(circle);
+    fitStackToCurrentPage(pages_);
 
     auto* common = new QFormLayout;
     auto* dt = new NumberField("dt", [](double v) {

@@ -27,11 +27,20 @@ public:
     const std::vector<QCPCurve*>& branchCurves() const { return branches_; }
     int branchCount() const { return static_cast<int>(branches_.size()); }
     QCPGraph* currentGraph() const { return current_; }
+    /// The marks where the loop crosses the stability boundary (crossing poles, both halves).
+    QCPGraph* boundaryGraph() const { return boundary_; }
+    /// The texts of the parameter labels along the branches and at the boundary, as drawn.
+    QStringList labelTexts() const;
+    /// The branches the view was fitted on (those that move with the parameter).
+    int framedBranchCount() const { return framedBranches_; }
 
 private:
     std::vector<QCPCurve*> branches_;
     QCPGraph* current_;
     QCPGraph* ends_;
+    QCPGraph* boundary_;
+    std::vector<QCPItemText*> labels_;
+    int framedBranches_ = 0;
     QCPTextElement* title_;
     PlaneGrid grid_;
     PlotNotice notice_;

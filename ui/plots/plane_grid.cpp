@@ -91,9 +91,78 @@ PlaneBox fittedBox(PlaneBox base, const std::vector<std::complex<double>>& point
     return {b.reMin - pad, b.reMax + pad, -std::max(im, 0.3 * extent), std::max(im, 0.3 * extent)};
 }
 
-void setView(QCustomPlot* plot, const PlaneBox& box) {
-    plot->xAxis->setRange(box.reMin, box.reMax);
-    plot->yAxis->setRange(box.imMin, box.imMax);
+namespace {
+/**
+ * Keeps a complex-plane view at equal aspect (one unit is as many pixels on both axes, so the
+ * unit circle is a circle and the damping lines have their true angles). It remembers the box
+ * wanted (the last fit, or the user's drag and zoom) and shows the smallest equal-aspect view
+ * around it, again whenever the plot's size changes.
+ */
+class AspectKeeper : public QObject {
+public:
+    explicit AspectKeeper(QCustomPlot* plot) : QObject(plot), plot_(plot) {
+        setObjectName(QStringLiteral("xyt-aspect-keeper"));
+        const auto userChange = [this] {
+            if (!applying_)
+                wanted_ = current();
+        };
+        connect(plot->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, userChange);
+        connect(plot->yAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, userChange);
+        connect(plot, &QCustomPlot::afterLayout, this, [this] {
+            if (plot_->axisRect()->size() != lastSize_)
+                apply();
+        });
+    }
+    void fit(const PlaneBox& box) {
+        fitted_ = wanted_ = box;
+        apply();
+    }
+    void reset() { fit(fitted_); }
+
+private:
+    PlaneBox current() const {
+        const QCPRange x = plot_->xAxis->range(), y = plot_->yAxis->range();
+        return {x.lower, x.upper, y.lower, y.upper};
+    }
+    void apply() {
+        applying_ = true;
+        const QSize px = plot_->axisRect()->size();
+        lastSize_ = px;
+        PlaneBox b = wanted_;
+        if (px.width() > 10 && px.height() > 10) {
+            const double unitsPerPixel = std::max((b.reMax - b.reMin) / px.width(),
+                                                  (b.imMax - b.imMin) / px.height());
+            const double cx = 0.5 * (b.reMin + b.reMax), cy = 0.5 * (b.imMin + b.imMax);
+            const double hx = 0.5 * unitsPerPixel * px.width(), hy = 0.5 * unitsPerPixel * px.height();
+            b = {cx - hx, cx + hx, cy - hy, cy + hy};
+        }
+        plot_->xAxis->setRange(b.reMin, b.reMax);
+        plot_->yAxis->setRange(b.imMin, b.imMax);
+        applying_ = false;
+    }
+    QCustomPlot* plot_;
+    PlaneBox fitted_{-1.0, 1.0, -1.0, 1.0}, wanted_ = fitted_;
+    QSize lastSize_;
+    bool applying_ = false;
+};
+
+AspectKeeper* keeperOf(QCustomPlot* plot) {
+    if (auto* k = plot->findChild<AspectKeeper*>(QStringLiteral("xyt-aspect-keeper"),
+                                                 Qt::FindDirectChildrenOnly))
+        return k;
+    return new AspectKeeper(plot);
+}
+} // namespace
+
+void setView(QCustomPlot* plot, const PlaneBox& box) { keeperOf(plot)->fit(box); }
+
+bool resetPlaneView(QCustomPlot* plot) {
+    auto* k = plot->findChild<AspectKeeper*>(QStringLiteral("xyt-aspect-keeper"),
+                                             Qt::FindDirectChildrenOnly);
+    if (!k)
+        return false;
+    k->reset();
+    return true;
 }
 
 PlaneGrid::PlaneGrid(QCustomPlot* plot) : plot_(plot) {}
@@ -144,7 +213,12 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
         if (line.points.empty())
             continue;
         auto* label = new QCPItemText(plot_);
-        const auto& p = line.points.front();
+        // s-plane: the outer end of the ray. z-plane: every line starts at z = 1 (s = 0), where
+        // the labels would pile up; the top of each spiral is a point of its own.
+        auto p = line.points.front();
+        if (tsSeconds > 0.0)
+            p = *std::max_element(line.points.begin(), line.points.end(),
+                                  [](const auto& a, const auto& b) { return a.imag() < b.imag(); });
         label->position->setCoords(p.real(), p.imag());
         label->setText(QStringLiteral("ζ=%1").arg(line.value));
         label->setColor(QColor(0x9a, 0x9a, 0x9a));

@@ -55,8 +55,14 @@ bool anyOutsideView(const QCustomPlot* plot, const std::vector<std::complex<doub
  */
 PlaneBox fittedBox(PlaneBox base, const std::vector<std::complex<double>>& points);
 
-/// Sets the plot's view to @p box.
+/**
+ * Sets the plot's view to the smallest equal-aspect view around @p box (one unit spans as many
+ * pixels on both axes: circles stay circles), kept so when the plot is resized.
+ */
 void setView(QCustomPlot* plot, const PlaneBox& box);
+
+/// Returns to the last box given to setView (false for a plot that never had one).
+bool resetPlaneView(QCustomPlot* plot);
 
 /// Replaces the data of a point graph with the complex points.
 void setComplexPoints(QCPGraph* graph, const std::vector<std::complex<double>>& points);

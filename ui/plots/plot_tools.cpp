@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/plot_tools.h"
 
+#include "ui/plots/plane_grid.h"
+
 #include <QFileDialog>
 #include <QMenu>
 #include <QMessageBox>
@@ -88,6 +90,10 @@ void styleAxisRect(QCPAxisRect* rect) {
 }
 
 void resetView(QCustomPlot* plot) {
+    if (resetPlaneView(plot)) { // a complex plane returns to its fitted, equal-aspect view
+        plot->replot();
+        return;
+    }
     for (QCPAxisRect* rect : plot->axisRects()) {
         bool any = false;
         for (QCPAxis* axis : rect->axes())
@@ -125,6 +131,18 @@ void savePlotDialog(QCustomPlot* plot, const QString& suggestedName) {
     QString error;
     if (!savePlot(plot, path, &error))
         QMessageBox::warning(plot, QObject::tr("Save plot"), error);
+}
+
+void placeLegendBelow(QCustomPlot* plot, int row, int columns) {
+    QCPLegend* legend = plot->legend;
+    legend->setVisible(true);
+    legend->setFont(QFont(plot->font().family(), 8));
+    legend->setBorderPen(Qt::NoPen);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    legend->setWrap(columns);
+    plot->axisRect()->insetLayout()->take(legend);
+    plot->plotLayout()->addElement(row, 0, legend);
+    plot->plotLayout()->setRowStretchFactor(row, 0.001);
 }
 
 void setupInteractivePlot(QCustomPlot* plot) {

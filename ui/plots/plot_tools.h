@@ -51,6 +51,13 @@ QVector<QCPGraphData> flagDecimated(const std::vector<double>& t, const std::vec
                                     double valueWhenSet, int buckets = 8192);
 
 /// Readable fonts and light grid for an axis rect.
+/**
+ * Moves the plot's legend out of the axis rect into a row of its own under it (row @p row of
+ * the plot layout), borderless and filled across in up to @p columns columns: there it can
+ * hide no data, whatever the data does.
+ */
+void placeLegendBelow(QCustomPlot* plot, int row, int columns = 3);
+
 void styleAxisRect(QCPAxisRect* rect);
 
 } // namespace xyt::ui

@@ -11,7 +11,26 @@ namespace {
 const QList<QColor> kSetColors = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0x2c),
                                   QColor(0x7f, 0x7f, 0x7f), QColor(0xd6, 0x27, 0x28),
                                   QColor(0x94, 0x67, 0xbd), QColor(0xff, 0x7f, 0x0e)};
+
+/**
+ * Marks by set index, so that sets sharing a pole stay distinguishable: the Guillemin-Truxal
+ * closed loop IS the reference model (paper 000 Eq. 3), so its crosses sit exactly on the
+ * model's poles. Each set gets its own pole shape and a zero ring of its own size (coincident
+ * zeros become concentric rings).
+ */
+QCPScatterStyle poleStyle(int index, const QColor& color) {
+    static const QList<QCPScatterStyle::ScatterShape> shapes = {
+        QCPScatterStyle::ssCross, QCPScatterStyle::ssPlus, QCPScatterStyle::ssStar,
+        QCPScatterStyle::ssCross, QCPScatterStyle::ssSquare, QCPScatterStyle::ssTriangle};
+    static const QList<double> sizes = {10, 10, 11, 9, 15, 13};
+    return QCPScatterStyle(shapes[index % shapes.size()], QPen(color, 2), Qt::NoBrush,
+                           sizes[index % sizes.size()]);
 }
+
+QCPScatterStyle zeroStyle(int index, const QColor& color) {
+    return QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(color, 2), Qt::NoBrush, 7 + 3 * (index % 6));
+}
+} // namespace
 
 PoleZeroPlot::PoleZeroPlot(QWidget* parent)
     : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
@@ -22,11 +41,9 @@ PoleZeroPlot::PoleZeroPlot(QWidget* parent)
     styleAxisRect(axisRect());
     xAxis->setLabel(tr("real"));
     yAxis->setLabel(tr("imaginary"));
-    legend->setVisible(true);
-    legend->setFont(QFont(font().family(), 8));
-    legend->setBrush(QColor(255, 255, 255, 210));
+    // The legend sits in a row under the plane, where it hides no branch or pole.
+    placeLegendBelow(this, 2);
     legend->setSelectableParts(QCPLegend::spItems);
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignLeft);
     setupInteractivePlot(this);
     setInteraction(QCP::iSelectLegend, true);
     connect(this, &QCustomPlot::legendClick, this,
@@ -95,14 +112,15 @@ void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString&
         names.insert(name);
         ts = set.tsSeconds;
         if (!graphs_.contains(name)) {
-            const QColor color = kSetColors[static_cast<int>(graphs_.size()) % kSetColors.size()];
+            const int index = static_cast<int>(i);
+            const QColor color = kSetColors[index % kSetColors.size()];
             QCPGraph* poles = addGraph();
             poles->setLineStyle(QCPGraph::lsNone);
-            poles->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(color, 2), Qt::NoBrush, 10));
+            poles->setScatterStyle(poleStyle(index, color));
             poles->setName(name);
             QCPGraph* zeros = addGraph();
             zeros->setLineStyle(QCPGraph::lsNone);
-            zeros->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(color, 2), Qt::NoBrush, 9));
+            zeros->setScatterStyle(zeroStyle(index, color));
             zeros->removeFromLegend();
             graphs_.insert(name, {poles, zeros});
         }

@@ -44,19 +44,14 @@ RootLocusPlot::RootLocusPlot(QWidget* parent)
                                                 QBrush(QColor(255, 255, 0, 200)), 9),
                           QString());
     hover_->removeFromLegend();
-    readout_ = new QCPItemText(this);
-    readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
-    readout_->position->setCoords(0.01, 0.99); // bottom left: the notices take the top right
-    readout_->setPositionAlignment(Qt::AlignBottom | Qt::AlignLeft);
-    readout_->setTextAlignment(Qt::AlignLeft);
-    readout_->setBrush(QColor(255, 255, 255, 220));
-    readout_->setPadding(QMargins(4, 2, 4, 2));
-    readout_->setFont(QFont(font().family(), 8));
-    readout_->setText(readoutHint());
-    legend->setVisible(true);
-    legend->setFont(QFont(font().family(), 8));
-    legend->setBrush(QColor(255, 255, 255, 210));
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignBottom | Qt::AlignRight);
+    // Under the plane, in rows of their own, the legend and then the hover readout: there
+    // they can hide neither a branch nor a damping label.
+    placeLegendBelow(this, 2);
+    readout_ = new QCPTextElement(this, readoutHint(), QFont(font().family(), 8));
+    readout_->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
+    readout_->setMargins(QMargins(8, 0, 8, 2));
+    plotLayout()->addElement(3, 0, readout_);
+    plotLayout()->setRowStretchFactor(3, 0.001);
     setupInteractivePlot(this);
     connect(this, &QCustomPlot::mouseMove, this, &RootLocusPlot::onMouseMove);
     connect(this, &QCustomPlot::mousePress, this, &RootLocusPlot::onMousePress);

@@ -60,7 +60,7 @@ private:
     QCPGraph* zeros_;
     QCPGraph* current_;
     QCPGraph* hover_;
-    QCPItemText* readout_;
+    QCPTextElement* readout_;
     QCPTextElement* title_;
     PlotNotice notice_;
     QPoint pressPos_;

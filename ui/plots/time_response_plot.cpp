@@ -3,6 +3,8 @@
 
 #include "ui/plots/plot_tools.h"
 
+#include <algorithm>
+
 namespace xyt::ui {
 
 namespace {
@@ -42,6 +44,12 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : QCustomPlot(parent) {
                             other->axis(QCPAxis::atBottom)->setRange(r);
                 });
     }
+    // Value ticks by the panel's height (about one per 30 px): the short u and error panels at
+    // 1366x768 would otherwise crowd five labels into 60 px.
+    connect(this, &QCustomPlot::afterLayout, this, [this] {
+        for (QCPAxisRect* rect : {positionRect_, errorRect_, controlRect_})
+            rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(std::clamp(rect->height() / 30, 2, 5));
+    });
     positionRect_->axis(QCPAxis::atLeft)->setLabel(tr("position (mm)"));
     errorRect_->axis(QCPAxis::atLeft)->setLabel(tr("error (mm)"));
     controlRect_->axis(QCPAxis::atLeft)->setLabel(tr("u (V)"));

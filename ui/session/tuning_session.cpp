@@ -191,7 +191,9 @@ std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
         sets.push_back(poleZeroSet("plant B/A", TransferFunction::fromZInverse(e.pp->b, e.pp->a, ts)));
         sets.push_back(poleZeroSet("feedback G/F", TransferFunction::fromZInverse(e.pp->g, e.pp->f, ts)));
         sets.push_back(poleZeroSet("closed loop Kf B/T", e.pp->closedLoop()));
-        if (e.zpetc)
+        // The feedforward is computed for the with/without comparison even when switched off;
+        // the map shows what runs.
+        if (e.zpetc && session().axes.at(static_cast<std::size_t>(axis)).pp.zpetcEnabled)
             sets.push_back(poleZeroSet("ZPETC feedforward",
                                        TransferFunction::fromZInverse(e.zpetc->feedforwardNum,
                                                                       e.zpetc->feedforwardDen, ts)));

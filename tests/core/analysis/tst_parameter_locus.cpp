@@ -18,6 +18,7 @@ private slots:
     void gtSweepPolesSatisfyEq7();
     void branchesAreContinuous();
     void invalidSweepThrows();
+    void stabilityChangesMatchRouth();
 };
 
 void TstParameterLocus::sweepValuesLinearAndLog() {
@@ -127,6 +128,52 @@ void TstParameterLocus::invalidSweepThrows() {
     QCOMPARE(fieldOf({1.0, 2.0, 10, false}, GtSweptParameter::OmegaN, -1.0), std::string("kp"));
     QCOMPARE(fieldOf({1.0, 2.0, 1, false}, GtSweptParameter::Kp, 2.0), std::string("count"));
     QCOMPARE(fieldOf({1.0, 1.0, 10, false}, GtSweptParameter::Kp, 2.0), std::string("to"));
+}
+
+
+void TstParameterLocus::stabilityChangesMatchRouth() {
+    // The GT closed loop s^4 + a s^3 + b s^2 + c s + d (c = kp k0, d = wn^4; paper 000 Eq. 7,
+    // 15-18) is Hurwitz iff a, b, c, d > 0, ab - c > 0 and c (ab - c) - a^2 d > 0 (Routh).
+    // Lower base of paper 000: a = 125.3, b = 3665, k0 = 77.8.
+    const ThirdOrderPlant plant{77.8, 125.3, 3665.0};
+    const double a = plant.a1, b = plant.a2;
+    {   // wn sweeps at kp = 30: one change, unstable above wn* = (c (ab - c) / a^2)^(1/4).
+        const double c = 30.0 * plant.k0;
+        const double wnStar = std::pow(c * (a * b - c) / (a * a), 0.25);
+        const ParameterLocus l =
+            gtParameterLocus(plant, GtSweptParameter::OmegaN, {0.2, 20.0, 100, true}, 30.0);
+        QCOMPARE(l.stabilityChanges.size(), std::size_t(1));
+        // Bisection to 1e-13 relative; the root finder's error on the crossing pole's real
+        // part (~1e-15 of |p| ~ 10) moves the boundary by far less than 1e-9.
+        XYT_COMPARE_NEAR(l.stabilityChanges[0].value, wnStar, 1e-9, 0.0);
+        QVERIFY(l.stabilityChanges[0].becomesUnstable);
+        // The crossing pole is on the imaginary axis at omega^2 = c / a (Routh auxiliary row).
+        XYT_COMPARE_NEAR(l.stabilityChanges[0].pole.imag(), std::sqrt(c / a), 1e-6, 0.0);
+        XYT_COMPARE_NEAR(l.stabilityChanges[0].pole.real(), 0.0, 0.0, 1e-6);
+        // Swept downwards the same boundary is found, with the same sense (stable below).
+        const ParameterLocus down =
+            gtParameterLocus(plant, GtSweptParameter::OmegaN, {20.0, 0.2, 100, true}, 30.0);
+        QCOMPARE(down.stabilityChanges.size(), std::size_t(1));
+        XYT_COMPARE_NEAR(down.stabilityChanges[0].value, wnStar, 1e-9, 0.0);
+        QVERIFY(down.stabilityChanges[0].becomesUnstable);
+    }
+    {   // kp sweeps at wn = 10: stable for c between the roots of c^2 - ab c + a^2 d = 0.
+        const double d = 1e4;
+        const double disc = std::sqrt(a * a * b * b - 4.0 * a * a * d);
+        const double kp1 = 0.5 * (a * b - disc) / plant.k0, kp2 = 0.5 * (a * b + disc) / plant.k0;
+        const ParameterLocus l = gtParameterLocus(plant, GtSweptParameter::Kp,
+                                                  {0.1 * kp1, 2.0 * kp2, 200, true}, 10.0);
+        QCOMPARE(l.stabilityChanges.size(), std::size_t(2));
+        XYT_COMPARE_NEAR(l.stabilityChanges[0].value, kp1, 1e-9, 0.0);
+        QVERIFY(!l.stabilityChanges[0].becomesUnstable);
+        XYT_COMPARE_NEAR(l.stabilityChanges[1].value, kp2, 1e-9, 0.0);
+        QVERIFY(l.stabilityChanges[1].becomesUnstable);
+    }
+    {   // Invariant: a sweep that stays stable reports no change.
+        const ParameterLocus l =
+            gtParameterLocus(plant, GtSweptParameter::OmegaN, {0.2, 5.0, 50, true}, 30.0);
+        QVERIFY(l.stabilityChanges.empty());
+    }
 }
 
 QTEST_APPLESS_MAIN(TstParameterLocus)

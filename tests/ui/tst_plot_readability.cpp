@@ -1,0 +1,328 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Issue 19, what a new user sees on the plots: planes at equal aspect, legends and hints that
+// hide nothing, a parameter locus framed on the poles that move with the stability boundary
+// marked, distinguishable pole sets, controls only on the tabs they act on, panels without
+// gaps and axes without crowded ticks. Each test drives the real window at 1366x768 and, where
+// it matters, at 1600x1000.
+#include "core/design/guillemin_truxal.h"
+#include "ui/main_window.h"
+#include "ui/panels/trajectory_editor.h"
+#include "ui/plots/contour_plot.h"
+#include "ui/plots/parameter_locus_plot.h"
+#include "ui/plots/pole_zero_plot.h"
+#include "ui/plots/root_locus_plot.h"
+#include "ui/plots/time_response_plot.h"
+#include "ui/session/recovery_store.h"
+#include "ui/session/tuning_session.h"
+#include "tests/support/tolerance.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QStackedWidget>
+#include <QStandardPaths>
+#include <QTabWidget>
+#include <QTest>
+
+#include <cmath>
+#include <memory>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+class TstPlotReadability : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void planesHaveEqualAspect_data();
+    void planesHaveEqualAspect();
+    void legendsAndHintSitOutsideThePlane();
+    void zPlaneDampingLabelsDoNotPileUp();
+    void parameterLocusFramesTheMovingPolesAndMarksTheBoundary();
+    void parameterLocusBoundaryFollowsKp();
+    void coincidentPoleSetsAreDistinguishable();
+    void zpetcLeavesTheLegendWhenSwitchedOff();
+    void cornerControlsOnlyOnTheirTab();
+    void leftPanelHasNoGapForTheShortPage();
+    void valueTicksFitTheirPanel();
+
+private:
+    void usePolePlacement(int axis);
+    std::unique_ptr<TuningSession> session_;
+    std::unique_ptr<MainWindow> window_;
+};
+
+void TstPlotReadability::initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("xytune-tests");
+}
+
+void TstPlotReadability::init() {
+    session_ = std::make_unique<TuningSession>();
+    window_ = std::make_unique<MainWindow>(session_.get());
+    window_->resize(1366, 768);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+}
+
+void TstPlotReadability::cleanup() {
+    window_->recovery()->discard();
+    window_.reset();
+    session_.reset();
+}
+
+void TstPlotReadability::usePolePlacement(int axis) {
+    session_->setCurrentAxis(axis);
+    session_->setMethod(axis, DesignMethod::PolePlacementZpetc);
+}
+
+namespace {
+/// Pixels per unit along x and y of a plot's main axes, after a synchronous replot.
+std::pair<double, double> pixelsPerUnit(QCustomPlot* plot) {
+    plot->replot(QCustomPlot::rpImmediateRefresh);
+    const QCPRange x = plot->xAxis->range(), y = plot->yAxis->range();
+    return {plot->axisRect()->width() / x.size(), plot->axisRect()->height() / y.size()};
+}
+} // namespace
+
+void TstPlotReadability::planesHaveEqualAspect_data() {
+    QTest::addColumn<int>("tab");
+    QTest::addColumn<bool>("discrete");
+    QTest::newRow("root locus, s-plane") << 0 << false;
+    QTest::newRow("root locus, z-plane") << 0 << true;
+    QTest::newRow("parameter locus") << 1 << false;
+    QTest::newRow("pole-zero, s-plane") << 2 << false;
+    QTest::newRow("pole-zero, z-plane") << 2 << true;
+}
+
+void TstPlotReadability::planesHaveEqualAspect() {
+    // The z-plane's unit circle was drawn as an ellipse: a unit must span as many pixels on
+    // both axes (to the pixel rounding of the axis rect, < 1 %), at both window sizes.
+    QFETCH(int, tab);
+    QFETCH(bool, discrete);
+    if (discrete)
+        usePolePlacement(0);
+    window_->upperTabs()->setCurrentIndex(tab);
+    auto* plot = qobject_cast<QCustomPlot*>(window_->upperTabs()->currentWidget());
+    QVERIFY(plot);
+    for (const QSize size : {QSize(1366, 768), QSize(1600, 1000), QSize(1366, 768)}) {
+        window_->resize(size);
+        QTest::qWait(50);
+        const auto [px, py] = pixelsPerUnit(plot);
+        QVERIFY2(std::abs(px / py - 1.0) < 0.01,
+                 qPrintable(QString("%1x%2: %3 vs %4 px per unit").arg(size.width()).arg(size.height()).arg(px).arg(py)));
+    }
+    // The reset view (double click, context menu) keeps it.
+    plot->xAxis->setRange(-1, 100);
+    QTest::mouseDClick(plot, Qt::LeftButton, {}, plot->axisRect()->center());
+    const auto [px, py] = pixelsPerUnit(plot);
+    QVERIFY2(std::abs(px / py - 1.0) < 0.01, qPrintable(QString("%1 vs %2").arg(px).arg(py)));
+}
+
+void TstPlotReadability::legendsAndHintSitOutsideThePlane() {
+    // The locus legend hid the lower branch, and the hover hint sat on the damping labels:
+    // both now live in rows under the plane, so no pixel of the axis rect is theirs.
+    for (int tab = 0; tab < 3; ++tab) {
+        window_->upperTabs()->setCurrentIndex(tab);
+        auto* plot = qobject_cast<QCustomPlot*>(window_->upperTabs()->currentWidget());
+        plot->replot(QCustomPlot::rpImmediateRefresh);
+        QVERIFY(plot->legend->visible());
+        QVERIFY2(!plot->legend->outerRect().intersects(plot->axisRect()->outerRect().adjusted(0, 0, 0, -1)),
+                 qPrintable(plot->objectName()));
+        QVERIFY(plot->legend->outerRect().top() >= plot->axisRect()->outerRect().bottom() - 1);
+    }
+    RootLocusPlot* rl = window_->rootLocusPlot();
+    auto* hint = qobject_cast<QCPTextElement*>(rl->plotLayout()->element(3, 0));
+    QVERIFY(hint);
+    QCOMPARE(hint->text(), RootLocusPlot::readoutHint());
+    QVERIFY(hint->outerRect().top() >= rl->legend->outerRect().bottom() - 1);
+}
+
+void TstPlotReadability::zPlaneDampingLabelsDoNotPileUp() {
+    // Every z-plane damping line starts at z = 1, where all the ζ labels used to sit.
+    usePolePlacement(0);
+    window_->upperTabs()->setCurrentIndex(0);
+    RootLocusPlot* plot = window_->rootLocusPlot();
+    plot->replot(QCustomPlot::rpImmediateRefresh);
+    QList<QPointF> at;
+    for (int i = 0; i < plot->itemCount(); ++i)
+        if (auto* t = qobject_cast<QCPItemText*>(plot->item(i)); t && t->text().startsWith("ζ="))
+            at << t->position->coords();
+    QVERIFY(at.size() >= 5);
+    for (int i = 0; i < at.size(); ++i)
+        for (int j = i + 1; j < at.size(); ++j)
+            QVERIFY2(QLineF(at[i], at[j]).length() > 1e-3,
+                     qPrintable(QString("labels %1 and %2 at the same point").arg(i).arg(j)));
+    // Each sits on its own spiral inside the unit disc.
+    for (const QPointF& p : at)
+        QVERIFY(std::hypot(p.x(), p.y()) <= 1.0 + 1e-9);
+}
+
+void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary() {
+    // Default session, X axis: wn sweeps 0.2 ... 20 rad/s at kp = 30 (paper 000 lower base).
+    // Routh on s^4 + a1 s^3 + a2 s^2 + kp k0 s + wn^4: unstable above
+    // wn* = (c (a1 a2 - c) / a1^2)^(1/4), c = kp k0, crossing at omega = sqrt(c / a1).
+    window_->upperTabs()->setCurrentIndex(1);
+    ParameterLocusPlot* plot = window_->parameterLocusPlot();
+    plot->replot(QCustomPlot::rpImmediateRefresh);
+    const ThirdOrderPlant p = session_->session().axes[0].gt.plant;
+    const double c = session_->session().axes[0].gt.kp * p.k0;
+    const double wnStar = std::pow(c * (p.a1 * p.a2 - c) / (p.a1 * p.a1), 0.25);
+    QCOMPARE(plot->boundaryGraph()->data()->size(), 2);
+    const double omegaCross = std::sqrt(c / p.a1);
+    XYT_COMPARE_NEAR(std::abs(plot->boundaryGraph()->data()->at(0)->value), omegaCross, 1e-6, 0.0);
+    QVERIFY2(plot->labelTexts().contains(QString("unstable above ωn = %1").arg(QString::number(wnStar, 'g', 3))),
+             qPrintable(plot->labelTexts().join(" | ")));
+    // Framed on the two dominant branches (the plant's fast poles barely move), with both
+    // half-planes and the crossing in view.
+    QCOMPARE(plot->framedBranchCount(), 2);
+    QVERIFY(plot->xAxis->range().lower < 0.0 && plot->xAxis->range().upper > 0.0);
+    QVERIFY(plot->yAxis->range().contains(omegaCross));
+    // The dominant poles of the design take more than a pixel: the view spans tens of rad/s,
+    // not the 80 of the fast plant pole.
+    QVERIFY2(plot->xAxis->range().size() < 0.8 * 80.0, qPrintable(QString::number(plot->xAxis->range().size())));
+    QVERIFY(plot->noticeText().contains("barely move"));
+    // A few parameter values are written along the branches.
+    int valueLabels = 0;
+    for (const QString& t : plot->labelTexts())
+        valueLabels += t.startsWith("ωn=") ? 1 : 0;
+    QVERIFY2(valueLabels >= 2, qPrintable(plot->labelTexts().join(" | ")));
+}
+
+void TstPlotReadability::parameterLocusBoundaryFollowsKp() {
+    // kp sweeping (kp/10 ... 10 kp around kp = 30) at wn = 10: Routh gives a stable loop for
+    // c = kp k0 between the roots of c^2 - a1 a2 c + a1^2 wn^4 = 0, i.e. kp in about
+    // (4.4, 5900) V/m for the lower base: one boundary inside the sweep, at the lower root.
+    window_->upperTabs()->setCurrentIndex(1);
+    QComboBox* swept = nullptr;
+    for (QComboBox* box : window_->findChildren<QComboBox*>())
+        if (box->accessibleName() == "Swept parameter")
+            swept = box;
+    QVERIFY(swept && swept->isVisible());
+    session_->setOmegaN(0, 10.0);
+    swept->setCurrentIndex(1);
+    ParameterLocusPlot* plot = window_->parameterLocusPlot();
+    const ThirdOrderPlant p = session_->session().axes[0].gt.plant;
+    const double a = p.a1, b = p.a2, d = 1e4;
+    const double kpLow = 0.5 * (a * b - std::sqrt(a * a * b * b - 4 * a * a * d)) / p.k0;
+    QVERIFY(kpLow > 3.0 && kpLow < 300.0);
+    QStringList boundary;
+    for (const QString& t : plot->labelTexts())
+        if (t.startsWith("unstable"))
+            boundary << t;
+    QCOMPARE(boundary, QStringList{QString("unstable below kp = %1").arg(QString::number(kpLow, 'g', 3))});
+    QCOMPARE(plot->boundaryGraph()->data()->size(), 2);
+}
+
+void TstPlotReadability::coincidentPoleSetsAreDistinguishable() {
+    // The GT closed loop equals the reference model (paper 000 Eq. 3): their poles coincide, so
+    // the two sets must differ in shape, not only in colour, or one hides under the other.
+    window_->upperTabs()->setCurrentIndex(2);
+    PoleZeroPlot* plot = window_->poleZeroPlot();
+    QCPGraph* closed = plot->polesGraph("closed loop");
+    QCPGraph* model = plot->polesGraph("reference model");
+    QVERIFY(closed && model);
+    QCOMPARE(closed->data()->size(), model->data()->size());
+    QVERIFY(closed->scatterStyle().shape() != model->scatterStyle().shape());
+    // Every set has a pole mark of its own (shape and size).
+    QSet<QString> marks;
+    for (const QString& name : {"plant", "controller", "open loop", "closed loop", "reference model"}) {
+        QCPGraph* g = plot->polesGraph(name);
+        QVERIFY2(g, qPrintable(name));
+        marks.insert(QString("%1/%2").arg(g->scatterStyle().shape()).arg(g->scatterStyle().size()));
+    }
+    QCOMPARE(marks.size(), 5);
+}
+
+void TstPlotReadability::zpetcLeavesTheLegendWhenSwitchedOff() {
+    usePolePlacement(0);
+    window_->upperTabs()->setCurrentIndex(2);
+    PoleZeroPlot* plot = window_->poleZeroPlot();
+    const auto legendNames = [plot] {
+        QStringList names;
+        for (int i = 0; i < plot->legend->itemCount(); ++i)
+            if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot->legend->item(i)))
+                names << item->plottable()->name();
+        return names;
+    };
+    QVERIFY(legendNames().contains("ZPETC feedforward"));
+    PpAxisSettings pp = session_->session().axes[0].pp;
+    pp.zpetcEnabled = false;
+    session_->setPp(0, pp);
+    QVERIFY2(!legendNames().contains("ZPETC feedforward"), qPrintable(legendNames().join(", ")));
+    QVERIFY(plot->polesGraph("ZPETC feedforward") == nullptr);
+    session_->undoStack()->undo();
+    QVERIFY(legendNames().contains("ZPETC feedforward"));
+}
+
+void TstPlotReadability::cornerControlsOnlyOnTheirTab() {
+    // "sweep ωn" acts on the parameter locus, "error × N" on the XY contour: elsewhere they
+    // did nothing and confused.
+    QComboBox* swept = nullptr;
+    for (QComboBox* box : window_->findChildren<QComboBox*>())
+        if (box->accessibleName() == "Swept parameter")
+            swept = box;
+    QDoubleSpinBox* magnification = nullptr;
+    for (QDoubleSpinBox* box : window_->findChildren<QDoubleSpinBox*>())
+        if (box->accessibleName() == "Contour error magnification")
+            magnification = box;
+    QVERIFY(swept && magnification);
+    for (int upper = 0; upper < 3; ++upper)
+        for (int lower = 0; lower < 3; ++lower) {
+            window_->upperTabs()->setCurrentIndex(upper);
+            window_->lowerTabs()->setCurrentIndex(lower);
+            QCOMPARE(swept->isVisible(), upper == 1);
+            QCOMPARE(magnification->isVisible(), lower == 1);
+        }
+    // On a pole-placement axis the parameter locus has no parameter to sweep: shown, disabled.
+    usePolePlacement(0);
+    window_->upperTabs()->setCurrentIndex(1);
+    QVERIFY(swept->isVisible());
+    QVERIFY(!swept->isEnabled());
+}
+
+void TstPlotReadability::leftPanelHasNoGapForTheShortPage() {
+    // The circle's three fields sat above an empty gap as tall as the cubic's six.
+    TrajectoryEditor* editor = window_->trajectoryEditor();
+    auto* pages = editor->findChild<QStackedWidget*>();
+    QVERIFY(pages);
+    TrajectorySettings t = session_->session().trajectory;
+    const int cubicHeight = pages->sizeHint().height();
+    t.kind = TrajectoryKind::Circle;
+    session_->setTrajectory(t);
+    const int circleHeight = pages->sizeHint().height();
+    QCOMPARE(circleHeight, pages->currentWidget()->sizeHint().height());
+    QVERIFY2(circleHeight < cubicHeight, qPrintable(QString("%1 vs %2").arg(circleHeight).arg(cubicHeight)));
+    // The width stays that of the widest page, so nothing is clipped on either.
+    QVERIFY(pages->sizeHint().width() >= pages->widget(0)->sizeHint().width());
+    // The design stack too: the pole-placement page is shorter than the GT page.
+    usePolePlacement(0);
+    for (QStackedWidget* stack : window_->findChildren<QStackedWidget*>())
+        if (stack != pages && stack->count() == 2 && stack->currentIndex() == 1 &&
+            stack->currentWidget()->metaObject()->className() == QByteArray("xyt::ui::PpEditor"))
+            QCOMPARE(stack->sizeHint().height(), stack->currentWidget()->sizeHint().height());
+}
+
+void TstPlotReadability::valueTicksFitTheirPanel() {
+    // At 1366x768 the u panel is about 60 px tall: five tick labels crowded it.
+    TimeResponsePlot* plot = window_->timePlot();
+    window_->lowerTabs()->setCurrentIndex(0);
+    plot->replot(QCustomPlot::rpImmediateRefresh);
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        QCPAxis* axis = rect->axis(QCPAxis::atLeft);
+        plot->replot(QCustomPlot::rpImmediateRefresh);
+        QVector<double> inside;
+        for (double v : axis->tickVector())
+            if (axis->range().contains(v))
+                inside << axis->coordToPixel(v);
+        QVERIFY(inside.size() >= 2);
+        // At least 16 px from label to label: an 8-9 pt tick label is about 12 px tall.
+        for (int i = 1; i < inside.size(); ++i)
+            QVERIFY2(std::abs(inside[i] - inside[i - 1]) >= 16.0,
+                     qPrintable(QString("%1 ticks in %2 px").arg(inside.size()).arg(rect->height())));
+    }
+}
+
+QTEST_MAIN(TstPlotReadability)
+#include "tst_plot_readability.moc"
