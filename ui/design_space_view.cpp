@@ -8,6 +8,7 @@
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -18,6 +19,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -189,43 +191,70 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     status_ = new QLabel(tr("Set the grid and press Run to study the current axis."));
     status_->setWordWrap(true);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(run_);
-    buttons->addWidget(cancel_);
+    // Run, Cancel and the progress stay at the top of the tab, outside the scrolling controls:
+    // in reach at 1366x768, and never moved by the text of a result.
+    auto* actions = new QHBoxLayout;
+    actions->addWidget(run_);
+    actions->addWidget(cancel_);
+    actions->addWidget(progress_, 1);
 
     auto* controls = new QVBoxLayout;
     controls->addWidget(grid);
     controls->addWidget(choice);
     controls->addWidget(specBox);
-    controls->addLayout(buttons);
-    controls->addWidget(progress_);
-    controls->addWidget(status_);
     controls->addStretch(1);
     auto* controlContent = new QWidget;
     controlContent->setLayout(controls);
     // In a scroll area, so the view fits a 1366x768 window: the controls scroll, the map stays.
-    auto* controlPanel = new QScrollArea;
-    controlPanel->setWidget(controlContent);
-    controlPanel->setWidgetResizable(true);
-    controlPanel->setFrameShape(QFrame::NoFrame);
-    controlPanel->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    controlPanel->setFixedWidth(290);
+    controlPanel_ = new QScrollArea;
+    controlPanel_->setWidget(controlContent);
+    controlPanel_->setWidgetResizable(true);
+    controlPanel_->setFrameShape(QFrame::NoFrame);
+    controlPanel_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    controlPanel_->setFixedWidth(250);
+    // The wheel over a field that has no focus scrolls the panel; it changes a value only in the
+    // field being edited (a scroll through the panel must not retune the study).
+    for (QAbstractSpinBox* box : controlContent->findChildren<QAbstractSpinBox*>()) {
+        box->setFocusPolicy(Qt::StrongFocus);
+        box->installEventFilter(this);
+    }
+    for (QComboBox* box : controlContent->findChildren<QComboBox*>()) {
+        box->setFocusPolicy(Qt::StrongFocus);
+        box->installEventFilter(this);
+    }
 
     plot_ = new DesignSpacePlot;
     readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design."));
     readout_->setWordWrap(true);
-    readout_->setMinimumHeight(2 * readout_->fontMetrics().lineSpacing() + 4);
+    readout_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    readout_->setToolTip(tr("bright: feasible (outlined) · veiled: infeasible · grey: unstable or "
+                            "diverged · light grey: not computed (cancelled)"));
+    // Status and readout share one strip of fixed height under the map (four lines,
+    // side by side): a longer text never pushes the map or the buttons.
+    const int lines = 4 * status_->fontMetrics().lineSpacing() + 6;
+    for (QLabel* label : {status_, readout_}) {
+        label->setFixedHeight(lines);
+        label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    }
+    auto* texts = new QHBoxLayout;
+    texts->addWidget(status_, 3);
+    texts->addWidget(readout_, 2);
     auto* legendNote = new QLabel(tr("<small>bright: feasible (outlined) · veiled: infeasible · grey: unstable "
-                                     "or diverged · light grey: not computed (cancelled)</small>"));
+                                     "or diverged · light grey: not computed</small>"));
     legendNote->setWordWrap(true);
+    legendNote->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     auto* right = new QVBoxLayout;
     right->addWidget(plot_, 1);
     right->addWidget(legendNote);
-    right->addWidget(readout_);
 
-    auto* layout = new QHBoxLayout(this);
-    layout->addWidget(controlPanel);
-    layout->addLayout(right, 1);
+    auto* middle = new QHBoxLayout;
+    middle->addWidget(controlPanel_);
+    middle->addLayout(right, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(actions);
+    layout->addLayout(middle, 1);
+    layout->addLayout(texts);
 
     connect(run_, &QPushButton::clicked, this, &DesignSpaceView::run);
     connect(cancel_, &QPushButton::clicked, this, &DesignSpaceView::cancel);
@@ -245,10 +274,22 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
 DesignSpaceView::~DesignSpaceView() { stopJob(); }
 
 QString DesignSpaceView::statusText() const { return status_->text(); }
+
+bool DesignSpaceView::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Wheel) {
+        auto* field = qobject_cast<QWidget*>(watched);
+        if (field && !field->hasFocus()) {
+            QCoreApplication::sendEvent(controlPanel_->verticalScrollBar(), event);
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
 QString DesignSpaceView::readoutText() const { return readout_->text(); }
 
 void DesignSpaceView::setStatus(const QString& text, bool isError) {
     status_->setText(text);
+    status_->setToolTip(text); // the strip shows three lines; the whole text is one hover away
     status_->setStyleSheet(isError ? QStringLiteral("color: #b00020;") : QString());
 }
 

@@ -17,6 +17,7 @@ class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QScrollArea;
 class QSpinBox;
 
 namespace xyt::ui {
@@ -72,6 +73,10 @@ public:
     QDoubleSpinBox* errorBox() const { return error_; }
     QDoubleSpinBox* umaxBox() const { return umax_; }
 
+protected:
+    /// Wheel events over an unfocused field of the control panel scroll the panel.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     struct Job {
         int id = 0;
@@ -105,6 +110,7 @@ private:
 
     DesignSpacePlot* plot_;
     QLabel* readout_;
+    QScrollArea* controlPanel_ = nullptr;
     QLabel* status_;
     QPushButton* run_;
     QPushButton* cancel_;

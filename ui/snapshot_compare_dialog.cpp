@@ -43,10 +43,10 @@ QList<QPair<QString, QString>> comparisonRows(const Session& design) {
         rows.append({QObject::tr("%1 max |e| (mm)").arg(id), displayNumber(a.metrics.maxAbsError)});
         rows.append({QObject::tr("%1 max |u| (V)").arg(id), displayNumber(a.metrics.maxAbsU)});
         rows.append({QObject::tr("%1 settling (s)").arg(id),
-                     a.step.stable ? displayNumber(a.step.settlingTimeSeconds, 2) : QObject::tr("unstable")});
+                     a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : QObject::tr("unstable")});
         rows.append({QObject::tr("%1 overshoot (%)").arg(id),
-                     a.step.stable ? displayNumber(a.step.overshootPct, 3) : QObject::tr("unstable")});
-        rows.append({QObject::tr("%1 ITAE").arg(id), displayNumber(a.metrics.itae, 1)});
+                     a.step.stable ? displayNumber(a.step.overshootPct) : QObject::tr("unstable")});
+        rows.append({QObject::tr("%1 ITAE").arg(id), displayNumber(a.metrics.itae)});
     }
     return rows;
 }

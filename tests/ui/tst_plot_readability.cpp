@@ -6,6 +6,7 @@
 // it matters, at 1600x1000.
 #include "core/design/guillemin_truxal.h"
 #include "ui/main_window.h"
+#include "ui/panels/metrics_panel.h"
 #include "ui/panels/trajectory_editor.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/parameter_locus_plot.h"
@@ -20,6 +21,9 @@
 #include <QDoubleSpinBox>
 #include <QStackedWidget>
 #include <QStandardPaths>
+#include <QHeaderView>
+#include <QRegularExpression>
+#include <QTableWidget>
 #include <QTabWidget>
 #include <QTest>
 
@@ -46,6 +50,9 @@ private slots:
     void cornerControlsOnlyOnTheirTab();
     void leftPanelHasNoGapForTheShortPage();
     void valueTicksFitTheirPanel();
+    void displayNumberHasSignificantDigits();
+    void metricsAreGroupedAndNeverCut_data();
+    void metricsAreGroupedAndNeverCut();
 
 private:
     void usePolePlacement(int axis);
@@ -322,6 +329,76 @@ void TstPlotReadability::valueTicksFitTheirPanel() {
             QVERIFY2(std::abs(inside[i] - inside[i - 1]) >= 16.0,
                      qPrintable(QString("%1 ticks in %2 px").arg(inside.size()).arg(rect->height())));
     }
+}
+
+void TstPlotReadability::displayNumberHasSignificantDigits() {
+    // Four significant digits in fixed notation from 1e-4 to 1e6 (rounded half away from zero
+    // by QString::number), exponent notation outside; n/a for what is not a number.
+    QCOMPARE(displayNumber(40552.6), QString("40553"));
+    QCOMPARE(displayNumber(5.87354), QString("5.874"));
+    QCOMPARE(displayNumber(0.00056191), QString("0.0005619"));
+    QCOMPARE(displayNumber(-0.40883), QString("-0.4088"));
+    QCOMPARE(displayNumber(9.99996), QString("10.00")); // the carry does not add a fifth digit
+    QCOMPARE(displayNumber(0.0), QString("0"));
+    QCOMPARE(displayNumber(2.5e6), QString("2.5e+06"));
+    QCOMPARE(displayNumber(1.234e-5), QString("1.234e-05"));
+    QCOMPARE(displayNumber(std::nan("")), QString("n/a"));
+    QCOMPARE(displayNumber(-INFINITY), QString("n/a"));
+}
+
+void TstPlotReadability::metricsAreGroupedAndNeverCut_data() {
+    QTest::addColumn<bool>("polePlacement");
+    QTest::addColumn<QSize>("size");
+    QTest::newRow("GT 1366x768") << false << QSize(1366, 768);
+    QTest::newRow("GT 1600x1000") << false << QSize(1600, 1000);
+    QTest::newRow("paper-001 1366x768") << true << QSize(1366, 768);
+    QTest::newRow("paper-001 1600x1000") << true << QSize(1600, 1000);
+}
+
+void TstPlotReadability::metricsAreGroupedAndNeverCut() {
+    // "0.000562..." was cut in the Y column at 1600x1000, and ITAE printed 0.4 for both
+    // paper-001 axes; the step figures stood among the tracking figures without a word.
+    QFETCH(bool, polePlacement);
+    QFETCH(QSize, size);
+    if (polePlacement) {
+        usePolePlacement(0);
+        usePolePlacement(1);
+        TrajectorySettings t = session_->session().trajectory;
+        t.kind = TrajectoryKind::Circle;
+        t.radius = 30.0;
+        t.omegaRadPerSec = 0.1;
+        t.rampInSeconds = 0.0;
+        session_->setTrajectory(t);
+    }
+    window_->resize(size);
+    QTest::qWait(50);
+    QTableWidget* table = window_->metricsPanel()->table();
+    QCOMPARE(table->item(MetricsPanel::TrackingGroup, 0)->text(), QString("Tracking the trajectory"));
+    QCOMPARE(table->item(MetricsPanel::StepGroup, 0)->text(), QString("Unit step of the closed loop"));
+    QCOMPARE(table->columnSpan(MetricsPanel::StepGroup, 0), 3);
+    // Every figure fits its column: no elided text, and the table fits its viewport.
+    const int width = table->verticalHeader()->width() + table->horizontalHeader()->length();
+    QString widths;
+    for (int c = 0; c < 3; ++c)
+        widths += QString(" %1").arg(table->columnWidth(c));
+    QVERIFY2(width <= table->width(), qPrintable(QString("%1 > %2: header %3, columns%4")
+                                                     .arg(width).arg(table->width())
+                                                     .arg(table->verticalHeader()->width()).arg(widths)));
+    const QFontMetrics fm(table->font());
+    for (int r = 0; r < MetricsPanel::RowCount; ++r)
+        for (int c = 0; c < 3 && !MetricsPanel::isGroupRow(r); ++c) {
+            const QString text = table->item(r, c)->text();
+            QVERIFY2(fm.horizontalAdvance(text) + 6 <= table->columnWidth(c),
+                     qPrintable(QString("row %1 col %2 '%3' in %4 px").arg(r).arg(c).arg(text).arg(table->columnWidth(c))));
+            QVERIFY(!text.contains("nan", Qt::CaseInsensitive));
+        }
+    // Four significant digits: the ITAE of the two paper-001 axes (0.4088 and 0.4228 from the
+    // core) differ on the panel as they do in the core.
+    const AxisEvaluation& x = session_->axisEvaluation(0);
+    QCOMPARE(table->item(MetricsPanel::Itae, 0)->text(), displayNumber(x.metrics.itae));
+    QVERIFY(displayNumber(x.metrics.itae).remove('.').remove('-').remove(QRegularExpression("^0+")).size() >= 4);
+    if (polePlacement)
+        QVERIFY(table->item(MetricsPanel::Itae, 0)->text() != table->item(MetricsPanel::Itae, 1)->text());
 }
 
 QTEST_MAIN(TstPlotReadability)

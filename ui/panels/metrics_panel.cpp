@@ -14,12 +14,20 @@
 
 namespace xyt::ui {
 
-QString displayNumber(double v, int decimals) {
+QString displayNumber(double v, int significant) {
     if (!std::isfinite(v))
         return QObject::tr("n/a");
-    if (v != 0.0 && (std::abs(v) >= 1e6 || std::abs(v) < 1e-3))
-        return QString::number(v, 'g', 3);
-    return QString::number(v, 'f', decimals);
+    if (v == 0.0)
+        return QStringLiteral("0");
+    const double magnitude = std::abs(v);
+    if (magnitude >= 1e6 || magnitude < 1e-4)
+        return QString::number(v, 'g', significant);
+    const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
+    QString text = QString::number(v, 'f', std::max(0, significant - 1 - exponent));
+    // Rounding may carry into a new digit (9.9996 -> "10.000"): drop the extra one.
+    if (std::abs(text.toDouble()) >= std::pow(10.0, exponent + 1) && significant - 2 - exponent >= 0)
+        text = QString::number(v, 'f', significant - 2 - exponent);
+    return text;
 }
 
 MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
@@ -27,13 +35,38 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(0, 0, 0, 0);
     table_ = new QTableWidget(RowCount, 3, this);
     table_->setHorizontalHeaderLabels({tr("X"), tr("Y"), tr("spec")});
-    table_->setVerticalHeaderLabels({tr("RMSE (mm)"), tr("max |e| (mm)"), tr("max |e| (% travel)"),
-                                     tr("max |u| (V)"), tr("saturated (s)"),
-                                     tr("settling 2 % (s)"), tr("overshoot (%)"), tr("ITAE"),
-                                     tr("ZPETC gain (%)")});
+    table_->setVerticalHeaderLabels({QString(), tr("RMSE (mm)"), tr("max |e| (mm)"),
+                                     tr("max |e| (%)"), tr("max |u| (V)"), tr("saturated (s)"),
+                                     tr("ITAE (mm·s²)"), tr("ZPETC gain (%)"), QString(),
+                                     tr("settling 2 % (s)"), tr("overshoot (%)")});
     table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
+    table_->verticalHeaderItem(Itae)->setToolTip(tr("integral of t·|e(t)| over the run"));
+    table_->verticalHeaderItem(MaxErrorPct)->setToolTip(tr("max |e| as a percentage of the travel"));
+    // Group titles: which system and which signal each block of figures belongs to.
+    const QList<QPair<int, QString>> groups = {
+        {TrackingGroup, tr("Tracking the trajectory")},
+        {StepGroup, tr("Unit step of the closed loop")}};
+    for (const auto& [row, title] : groups) {
+        table_->setSpan(row, 0, 1, 3);
+        auto* item = new QTableWidgetItem(title);
+        QFont bold = item->font();
+        bold.setBold(true);
+        item->setFont(bold);
+        item->setBackground(QColor(0xee, 0xee, 0xee));
+        item->setFlags(Qt::ItemIsEnabled);
+        table_->setItem(row, 0, item);
+        table_->verticalHeaderItem(row)->setText(QString());
+    }
+    table_->item(StepGroup, 0)->setToolTip(
+        tr("Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the "
+           "step of the feedback loop Kf·B/T alone, without the ZPETC feedforward."));
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    // Columns as wide as their figures (nothing cut to "0.000562..."); the spec column takes
+    // what is left.
+    table_->horizontalHeader()->setMinimumSectionSize(36);
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
     table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table_->setWordWrap(false);
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -85,13 +118,15 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     spec_["settling"]->setValue(session.spec.maxSettlingTimeSeconds);
     spec_["overshoot"]->setValue(session.spec.maxOvershootPct);
     spec_["error"]->setValue(session.spec.maxErrorPct);
-    const QStringList specText = {QString(), QString(),
-                                  tr("≤ %1").arg(session.spec.maxErrorPct),
-                                  tr("≤ %1").arg(session.umaxVolts), tr("no"),
-                                  tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds),
-                                  tr("≤ %1").arg(session.spec.maxOvershootPct), QString(), QString()};
+    QMap<int, QString> specText = {{MaxErrorPct, tr("≤ %1").arg(session.spec.maxErrorPct)},
+                                   {MaxU, tr("≤ %1").arg(session.umaxVolts)},
+                                   {Saturated, tr("no")},
+                                   {Settling, tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds)},
+                                   {Overshoot, tr("≤ %1").arg(session.spec.maxOvershootPct)}};
     for (int r = 0; r < RowCount; ++r) {
-        auto* item = new QTableWidgetItem(specText[r]);
+        if (isGroupRow(r))
+            continue;
+        auto* item = new QTableWidgetItem(specText.value(r));
         item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         table_->setItem(r, 2, item);
     }
@@ -99,24 +134,26 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(c)];
         const QString header = QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
         table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
-        QStringList values;
+        QMap<int, QString> values;
         if (!a.ok) {
             for (int r = 0; r < RowCount; ++r)
-                values << tr("—");
+                values[r] = tr("—");
         } else {
             const auto& m = a.metrics;
-            values << displayNumber(m.rmse) << displayNumber(m.maxAbsError)
-                   << displayNumber(m.maxAbsErrorPct, 3) << displayNumber(m.maxAbsU)
-                   << (m.diverged    ? tr("n/a")
-                       : !m.saturated ? tr("no")
-                       : a.pp         ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds, 2))
-                                      : displayNumber(m.saturatedTimeSeconds, 2))
-                   << (a.step.stable ? displayNumber(a.step.settlingTimeSeconds, 2) : tr("unstable"))
-                   << (a.step.stable ? displayNumber(a.step.overshootPct, 3) : tr("unstable"))
-                   << displayNumber(m.itae, 1)
-                   << (a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
-                           ? displayNumber(a.improvementPct, 2)
-                           : tr("—"));
+            values[Rmse] = displayNumber(m.rmse);
+            values[MaxError] = displayNumber(m.maxAbsError);
+            values[MaxErrorPct] = displayNumber(m.maxAbsErrorPct);
+            values[MaxU] = displayNumber(m.maxAbsU);
+            values[Saturated] = m.diverged    ? tr("n/a")
+                                : !m.saturated ? tr("no")
+                                : a.pp         ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds))
+                                               : displayNumber(m.saturatedTimeSeconds);
+            values[Itae] = displayNumber(m.itae);
+            values[Improvement] = a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
+                                      ? displayNumber(a.improvementPct)
+                                      : tr("—");
+            values[Settling] = a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
+            values[Overshoot] = a.step.stable ? displayNumber(a.step.overshootPct) : tr("unstable");
         }
         if (!a.ok)
             notices << tr("%1: no design (%2: %3)").arg(header, QString::fromStdString(a.errorField),
@@ -130,11 +167,13 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                         {Settling, a.check.settlingTime},
                                         {Overshoot, a.check.overshoot}};
         for (int r = 0; r < RowCount; ++r) {
-            QString text = values[r];
+            if (isGroupRow(r))
+                continue;
+            QString text = values.value(r);
             auto* item = new QTableWidgetItem;
             if (a.ok && judged.contains(r)) {
                 const bool pass = judged[r];
-                text += pass ? QStringLiteral("  ✓") : QStringLiteral("  ✗");
+                text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
                 item->setForeground(pass ? QColor(0x1b, 0x7f, 0x2a) : QColor(0xc6, 0x28, 0x28));
                 item->setToolTip(pass ? tr("meets the specification") : tr("fails the specification"));
             }

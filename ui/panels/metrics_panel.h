@@ -15,9 +15,11 @@ class NumberField;
 
 namespace xyt::ui {
 
-/// The figures of both axes side by side (RMSE, max error, max |u|, saturation, settling,
-/// overshoot, ITAE, ZPETC improvement) against the editable specification, with a pass/fail
-/// mark on each judged figure. Values that are not finite show as "n/a", never as NaN.
+/// The figures of both axes side by side against the editable specification, in labelled
+/// groups: the tracking of the trajectory (RMSE, max error, max |u|, saturation, ITAE, ZPETC
+/// improvement) and the unit step of the closed loop (settling, overshoot), with a pass/fail
+/// mark on each judged figure. Every figure has four significant digits; values that are not
+/// finite show as "n/a", never as NaN.
 class MetricsPanel : public QWidget {
     Q_OBJECT
 public:
@@ -30,9 +32,10 @@ public:
     /// The warnings of both axes and of the live view, one per line ("" when there are none).
     QString noticeText() const;
 
-    /// Row order of the table.
-    enum Row { Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Settling, Overshoot, Itae,
-               Improvement, RowCount };
+    /// Row order of the table: a group title row (spanning the columns) before each group.
+    enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
+               StepGroup, Settling, Overshoot, RowCount };
+    static bool isGroupRow(int row) { return row == TrackingGroup || row == StepGroup; }
 
 signals:
     void specificationEdited(const Specification& spec);
@@ -44,7 +47,8 @@ private:
     Specification current_;
 };
 
-/// "1.2345" or "n/a" for non-finite values.
-QString displayNumber(double v, int decimals = 4);
+/// @p v with @p significant digits, in fixed notation from 1e-4 to 1e6 ("40553", "5.874",
+/// "0.0005620"), in exponent notation beyond; "n/a" for non-finite values.
+QString displayNumber(double v, int significant = 4);
 
 } // namespace xyt::ui

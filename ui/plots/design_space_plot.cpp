@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/design_space_plot.h"
 
+#include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_tools.h"
 
 #include <algorithm>
@@ -249,6 +250,13 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
     plotLayout()->addElement(2, 0, legend);
     plotLayout()->setRowStretchFactor(2, 0.001);
 
+    // Until a study has run there is no map to show: no cells, no colour scale, and a notice.
+    map_->setVisible(false);
+    status_->setVisible(false);
+    scale_->setVisible(false);
+    notice_ = std::make_unique<PlotNotice>(this, axisRect(), Qt::AlignCenter);
+    notice_->setLines({tr("Not computed yet: set the grid and press Run.")});
+
     setupInteractivePlot(this);
     // The shared "reset view" rescales with a linear margin, which goes below zero on the log
     // axes of this plot: use the grid's own extent instead.
@@ -269,6 +277,8 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
     });
 }
 
+QString DesignSpacePlot::noticeText() const { return notice_->text(); }
+
 void DesignSpacePlot::showContextMenu(const QPoint& pos) {
     QMenu menu(this);
     menu.addAction(tr("Show the whole grid"), this, [this] { showWholeGrid(); });
@@ -282,6 +292,10 @@ void DesignSpacePlot::showResult(const DesignSweepResult& result, bool logGrid, 
                                  bool logColor, const QString& title) {
     result_ = result;
     hasResult_ = true;
+    map_->setVisible(true);
+    status_->setVisible(true);
+    scale_->setVisible(true);
+    notice_->setLines({});
     logGrid_ = logGrid;
     metric_ = metric;
     logColor_ = logColor;

@@ -3,10 +3,13 @@
 
 #include "core/study/design_sweep.h"
 
+#include "ui/plots/plot_notice.h"
+
 #include <qcustomplot.h>
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -66,6 +69,8 @@ public:
     QCPColorMap* colorMap() const { return map_; }
     QCPColorMap* statusMap() const { return status_; }
     QCPColorScale* colorScale() const { return scale_; }
+    /// The notice over the map ("not computed yet" before the first study).
+    QString noticeText() const;
     QCPGraph* bestMarker() const { return best_; }
     QCPGraph* refinedMarker() const { return refined_; }
     QCPGraph* currentMarker() const { return current_; }
@@ -99,6 +104,7 @@ private:
     QCPColorMap* map_;
     QCPColorMap* status_;
     QCPColorScale* scale_;
+    std::unique_ptr<PlotNotice> notice_;
     std::vector<QCPCurve*> outline_;
     std::vector<QCPCurve*> outlineHalo_;
     QCPGraph* best_;
