@@ -55,6 +55,12 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     : QMainWindow(parent), session_(session) {
     setWindowTitle(tr("XY Tune"));
     auto* controls = buildControls();
+    // Compact rows: the whole left panel (design, trajectory, actuator) fits a 1366x768 window
+    // without scrolling for the default cubic session.
+    for (QFormLayout* form : controls->findChildren<QFormLayout*>())
+        form->setVerticalSpacing(2);
+    for (QVBoxLayout* box : controls->findChildren<QVBoxLayout*>())
+        box->setSpacing(3);
     auto* controlScroll = new QScrollArea(this);
     controlScroll->setWidget(controls);
     controlScroll->setWidgetResizable(true);

@@ -23,6 +23,8 @@
 #include <QStandardPaths>
 #include <QHeaderView>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QTableWidget>
 #include <QTabWidget>
 #include <QTest>
@@ -49,6 +51,7 @@ private slots:
     void zpetcLeavesTheLegendWhenSwitchedOff();
     void cornerControlsOnlyOnTheirTab();
     void leftPanelHasNoGapForTheShortPage();
+    void leftPanelFitsA1366x768Window();
     void valueTicksFitTheirPanel();
     void displayNumberHasSignificantDigits();
     void metricsAreGroupedAndNeverCut_data();
@@ -309,6 +312,18 @@ void TstPlotReadability::leftPanelHasNoGapForTheShortPage() {
         if (stack != pages && stack->count() == 2 && stack->currentIndex() == 1 &&
             stack->currentWidget()->metaObject()->className() == QByteArray("xyt::ui::PpEditor"))
             QCOMPARE(stack->sizeHint().height(), stack->currentWidget()->sizeHint().height());
+}
+
+void TstPlotReadability::leftPanelFitsA1366x768Window() {
+    // At 1366x768 the left panel was cut off at "Controller Ts": every control of the default
+    // session (design, cubic trajectory, actuator) is now visible without scrolling.
+    QScrollArea* panel = nullptr;
+    for (QScrollArea* area : window_->findChildren<QScrollArea*>())
+        if (area->widget() && area->widget()->isAncestorOf(window_->trajectoryEditor()))
+            panel = area;
+    QVERIFY(panel);
+    QTest::qWait(50);
+    QCOMPARE(panel->verticalScrollBar()->maximum(), 0);
 }
 
 void TstPlotReadability::valueTicksFitTheirPanel() {
