@@ -209,9 +209,11 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
             circle.push_back(std::polar(1.0, 2.0 * std::numbers::pi * i / 180.0));
         curves_.push_back(addComplexCurve(plot_, circle, QPen(QColor(0x60, 0x60, 0x60), 1.2)));
     }
+    int labelIndex = 0;
     for (const GridLine& line : grid.dampingLines) {
         if (line.points.empty())
             continue;
+        ++labelIndex;
         auto* label = new QCPItemText(plot_);
         // s-plane: the outer end of the ray. z-plane: every line starts at z = 1 (s = 0), where
         // the labels would pile up; the top of each spiral is a point of its own.
@@ -219,6 +221,8 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
         if (tsSeconds > 0.0)
             p = *std::max_element(line.points.begin(), line.points.end(),
                                   [](const auto& a, const auto& b) { return a.imag() < b.imag(); });
+        else if (labelIndex % 2 == 0)
+            p *= 0.8; // the light-damping rays converge near the imaginary axis: stagger them
         label->position->setCoords(p.real(), p.imag());
         label->setText(QStringLiteral("ζ=%1").arg(line.value));
         label->setColor(QColor(0x9a, 0x9a, 0x9a));
