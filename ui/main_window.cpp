@@ -9,6 +9,8 @@
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/panels/plant_editor.h"
+#include "ui/plots/bode_plot.h"
+#include "ui/plots/nyquist_plot.h"
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/pole_zero_plot.h"
@@ -72,11 +74,15 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     rootLocusPlot_ = new RootLocusPlot(this);
     poleZeroPlot_ = new PoleZeroPlot(this);
     parameterLocusPlot_ = new ParameterLocusPlot(this);
+    bodePlot_ = new BodePlot(this);
+    nyquistPlot_ = new NyquistPlot(this);
     upperTabs_ = new QTabWidget(this);
     lowerTabs_ = new QTabWidget(this);
     upperTabs_->addTab(rootLocusPlot_, tr("&Root locus"));
     upperTabs_->addTab(parameterLocusPlot_, tr("P&arameter locus"));
     upperTabs_->addTab(poleZeroPlot_, tr("&Pole-zero map"));
+    upperTabs_->addTab(bodePlot_, tr("&Bode"));
+    upperTabs_->addTab(nyquistPlot_, tr("&Nyquist"));
     sweptParameter_ = new QComboBox(this);
     sweptParameter_->addItem(tr("sweep ωn (kp fixed)"));
     sweptParameter_->addItem(tr("sweep kp (ωn fixed)"));
@@ -408,11 +414,33 @@ void MainWindow::refresh() {
         if (shown(parameterLocusPlot_))
             parameterLocusPlot_->showNoResult(tr("Parameter locus of %1").arg(title), reason);
     }
+    // The frequency domain (issue 17): drawn from the core's analysis, or its reason.
+    if (shown(bodePlot_) || shown(nyquistPlot_)) {
+        const AxisFrequencyAnalysis& f = session_->frequencyAnalysis(axis);
+        const QString reason = e.ok ? tr("No frequency analysis: %1").arg(QString::fromStdString(f.error))
+                                    : tr("No design: %1: %2").arg(QString::fromStdString(e.errorField),
+                                                                 QString::fromStdString(e.error));
+        if (shown(bodePlot_)) {
+            if (e.ok && f.ok)
+                bodePlot_->showAnalysis(f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled,
+                                        tr("Bode diagram of %1").arg(title));
+            else
+                bodePlot_->showNoResult(tr("Bode diagram of %1").arg(title), reason);
+        }
+        if (shown(nyquistPlot_)) {
+            if (e.ok && f.ok)
+                nyquistPlot_->showCurve(f.nyquist, f.margins, tr("Nyquist diagram of %1 (open loop L)").arg(title));
+            else
+                nyquistPlot_->showNoResult(tr("Nyquist diagram of %1").arg(title), reason);
+        }
+    }
     // Controls that act on one tab are shown with that tab only.
     sweptParameter_->setVisible(upperTabs_->currentWidget() == parameterLocusPlot_);
     sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
     magnification_->setVisible(lowerTabs_->currentWidget() == contourPlot_);
     metrics_->showEvaluation(s, session_->evaluation(), session_->liveNotice());
+    for (int i = 0; i < 2; ++i)
+        metrics_->showMargins(i, session_->frequencyAnalysis(i));
     equations_->showAxis(a, e);
     QString state;
     for (int i = 0; i < 2; ++i) {

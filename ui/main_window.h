@@ -21,6 +21,8 @@ class NumberField;
 class ParameterSlider;
 class PlantEditor;
 class ParameterLocusPlot;
+class BodePlot;
+class NyquistPlot;
 class PoleZeroPlot;
 class PpEditor;
 class RootLocusPlot;
@@ -47,6 +49,8 @@ public:
     RootLocusPlot* rootLocusPlot() const { return rootLocusPlot_; }
     PoleZeroPlot* poleZeroPlot() const { return poleZeroPlot_; }
     ParameterLocusPlot* parameterLocusPlot() const { return parameterLocusPlot_; }
+    BodePlot* bodePlot() const { return bodePlot_; }
+    NyquistPlot* nyquistPlot() const { return nyquistPlot_; }
     PpEditor* ppEditor() const { return ppEditor_; }
     QComboBox* methodBox() const { return method_; }
     QTabWidget* upperTabs() const { return upperTabs_; }
@@ -101,6 +105,8 @@ private:
     RootLocusPlot* rootLocusPlot_ = nullptr;
     PoleZeroPlot* poleZeroPlot_ = nullptr;
     ParameterLocusPlot* parameterLocusPlot_ = nullptr;
+    BodePlot* bodePlot_ = nullptr;
+    NyquistPlot* nyquistPlot_ = nullptr;
     QComboBox* sweptParameter_ = nullptr;
     PpEditor* ppEditor_ = nullptr;
     QStackedWidget* methodPages_ = nullptr;

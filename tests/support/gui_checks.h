@@ -6,7 +6,10 @@
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
 #include "core/session/session_evaluation.h"
+#include "core/session/axis_frequency.h"
 #include "ui/main_window.h"
+#include "ui/plots/bode_plot.h"
+#include "ui/plots/nyquist_plot.h"
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/plots/root_locus_plot.h"
@@ -271,6 +274,31 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
             problems << "parameter locus: the current poles differ";
     } else if (pl->hasResult() || pl->branchCount() != 0) {
         problems << "parameter locus: shows a sweep for a pole-placement axis or an axis without a design";
+    }
+    // Frequency domain: the Bode curve of L and the Nyquist counts are a fresh analysis's.
+    upper->setCurrentWidget(window->bodePlot());
+    auto* bode = window->bodePlot();
+    const AxisFrequencyAnalysis f = analyzeAxisFrequency(session->liveSession(), e);
+    if (e.ok && f.ok) {
+        QCPGraph* mag = bode->magnitudeGraph("open loop L");
+        const auto& w = f.responses.openLoop.omegaRadPerSec;
+        bool same = bode->hasResult() && mag && mag->dataCount() == static_cast<int>(w.size());
+        for (int i = 0; same && i < mag->dataCount(); ++i)
+            same = mag->data()->at(i)->key == w[static_cast<std::size_t>(i)] &&
+                   mag->data()->at(i)->value == f.responses.openLoop.magnitudeDb[static_cast<std::size_t>(i)];
+        if (!same)
+            problems << "Bode: |L| differs from the core's response";
+    } else if (bode->hasResult()) {
+        problems << "Bode: shows a response for an axis without a design";
+    }
+    upper->setCurrentWidget(window->nyquistPlot());
+    auto* nyquist = window->nyquistPlot();
+    if (e.ok && f.ok) {
+        if (!nyquist->criterionText().contains(
+                QStringLiteral("Z = N + P = %1").arg(f.nyquist.closedLoopUnstablePoles)))
+            problems << "Nyquist: the criterion differs from the core's counts";
+    } else if (nyquist->hasResult()) {
+        problems << "Nyquist: shows a curve for an axis without a design";
     }
     upper->setCurrentIndex(upperIndex);
     lower->setCurrentIndex(lowerIndex);

@@ -38,14 +38,22 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setVerticalHeaderLabels({QString(), tr("RMSE (mm)"), tr("max |e| (mm)"),
                                      tr("max |e| (%)"), tr("max |u| (V)"), tr("saturated (s)"),
                                      tr("ITAE (mm·s²)"), tr("ZPETC gain (%)"), QString(),
-                                     tr("settling 2 % (s)"), tr("overshoot (%)")});
+                                     tr("settling 2 % (s)"), tr("overshoot (%)"), QString(),
+                                     tr("gain margin (dB)"), tr("phase margin (°)"),
+                                     tr("delay margin (s)"), tr("Ms = max |S|")});
     table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
     table_->verticalHeaderItem(Itae)->setToolTip(tr("integral of t·|e(t)| over the run"));
+    table_->verticalHeaderItem(GainMargin)->setToolTip(
+        tr("How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never"));
+    table_->verticalHeaderItem(PhaseMargin)->setToolTip(tr("Phase lag that would bring L to −1 at the gain crossover"));
+    table_->verticalHeaderItem(DelayMargin)->setToolTip(tr("Extra delay the loop tolerates: phase margin / crossover frequency"));
+    table_->verticalHeaderItem(PeakSensitivity)->setToolTip(tr("1 / (closest distance of L to −1): 1.2–2 is a usual target"));
     table_->verticalHeaderItem(MaxErrorPct)->setToolTip(tr("max |e| as a percentage of the travel"));
     // Group titles: which system and which signal each block of figures belongs to.
     const QList<QPair<int, QString>> groups = {
         {TrackingGroup, tr("Tracking the trajectory")},
-        {StepGroup, tr("Unit step of the closed loop")}};
+        {StepGroup, tr("Unit step of the closed loop")},
+        {MarginGroup, tr("Loop margins (open loop L)")}};
     for (const auto& [row, title] : groups) {
         table_->setSpan(row, 0, 1, 3);
         auto* item = new QTableWidgetItem(title);
@@ -109,6 +117,34 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
 
 QString MetricsPanel::noticeText() const { return notices_->text(); }
 
+void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
+    const StabilityMargins& m = f.margins;
+    const auto shown = [](double v) {
+        return std::isinf(v) && v > 0 ? QStringLiteral("∞") : displayNumber(v);
+    };
+    const QMap<int, QString> values = {
+        {GainMargin, f.ok ? shown(m.gainMarginDb) : tr("—")},
+        {PhaseMargin, f.ok ? shown(m.phaseMarginDeg) : tr("—")},
+        {DelayMargin, f.ok ? shown(m.delayMarginSeconds) : tr("—")},
+        {PeakSensitivity, f.ok ? shown(m.peakSensitivity) : tr("—")}};
+    for (auto it = values.begin(); it != values.end(); ++it) {
+        auto* item = new QTableWidgetItem(it.value());
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        if (f.ok && !m.closedLoopStable) {
+            item->setForeground(QColor(0xc6, 0x28, 0x28));
+            item->setToolTip(tr("the closed loop is unstable: not a robustness measure"));
+        } else if (f.ok && it.key() == GainMargin && std::isfinite(m.gainMarginOmegaRadPerSec)) {
+            item->setToolTip(tr("at %1 rad/s (factor %2)").arg(displayNumber(m.gainMarginOmegaRadPerSec))
+                                 .arg(displayNumber(m.gainMarginFactor)));
+        } else if (f.ok && it.key() == PhaseMargin && std::isfinite(m.phaseMarginOmegaRadPerSec)) {
+            item->setToolTip(tr("at %1 rad/s").arg(displayNumber(m.phaseMarginOmegaRadPerSec)));
+        } else if (!f.ok) {
+            item->setToolTip(QString::fromStdString(f.error));
+        }
+        table_->setItem(it.key(), axis, item);
+    }
+}
+
 void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluation& evaluation,
                                   const QString& liveNotice) {
     QStringList notices;
@@ -167,7 +203,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                         {Settling, a.check.settlingTime},
                                         {Overshoot, a.check.overshoot}};
         for (int r = 0; r < RowCount; ++r) {
-            if (isGroupRow(r))
+            if (isGroupRow(r) || isMarginRow(r))
                 continue;
             QString text = values.value(r);
             auto* item = new QTableWidgetItem;

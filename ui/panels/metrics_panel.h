@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/session/axis_frequency.h"
 #include "core/session/session_evaluation.h"
 
 #include <QMap>
@@ -34,8 +35,12 @@ public:
 
     /// Row order of the table: a group title row (spanning the columns) before each group.
     enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
-               StepGroup, Settling, Overshoot, RowCount };
-    static bool isGroupRow(int row) { return row == TrackingGroup || row == StepGroup; }
+               StepGroup, Settling, Overshoot,
+               MarginGroup, GainMargin, PhaseMargin, DelayMargin, PeakSensitivity, RowCount };
+    static bool isGroupRow(int row) { return row == TrackingGroup || row == StepGroup || row == MarginGroup; }
+    static bool isMarginRow(int row) { return row > MarginGroup; }
+    /// Fills the loop-margin rows of column @p axis from the core's frequency analysis.
+    void showMargins(int axis, const AxisFrequencyAnalysis& analysis);
 
 signals:
     void specificationEdited(const Specification& spec);

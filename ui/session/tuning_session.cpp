@@ -72,6 +72,7 @@ void TuningSession::assign(const Session& next) {
     evaluation_ = evaluateSession(live_);
     locus_ = {};
     parameterLocus_ = {};
+    frequency_ = {};
     emit designChanged();
 }
 
@@ -157,6 +158,13 @@ const RootLocus& TuningSession::rootLocus(int axis) const {
             cached = RootLocus{};
         }
     }
+    return *cached;
+}
+
+const AxisFrequencyAnalysis& TuningSession::frequencyAnalysis(int axis) const {
+    auto& cached = frequency_.at(static_cast<std::size_t>(axis));
+    if (!cached)
+        cached = analyzeAxisFrequency(liveSession(), axisEvaluation(axis));
     return *cached;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/session/session.h"
 #include "core/analysis/parameter_locus.h"
+#include "core/session/axis_frequency.h"
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
 #include "core/session/session_evaluation.h"
@@ -70,6 +71,8 @@ public:
     const RootLocus& rootLocus(int axis) const;
     /// The closed-loop poles of a GT axis as wn or kp sweeps a decade each way (cached).
     const ParameterLocus& parameterLocus(int axis, GtSweptParameter parameter) const;
+    /// The frequency-domain view of an axis: responses, margins, Nyquist curve (cached).
+    const AxisFrequencyAnalysis& frequencyAnalysis(int axis) const;
     /// Pole-zero sets of the axis: plant, controller, open loop, closed loop, reference model
     /// (GT) or plant, feedback, closed loop, ZPETC feedforward (discrete).
     std::vector<PoleZeroSet> poleZeroSets(int axis) const;
@@ -111,6 +114,7 @@ private:
     SessionEvaluation evaluation_;
     mutable std::array<std::optional<RootLocus>, 2> locus_;
     mutable std::array<std::optional<ParameterLocus>, 4> parameterLocus_;
+    mutable std::array<std::optional<AxisFrequencyAnalysis>, 2> frequency_;
     QUndoStack undo_;
     int currentAxis_ = 0;
 };

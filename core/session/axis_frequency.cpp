@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/axis_frequency.h"
+
+#include "core/model/errors.h"
+
+#include <cmath>
+#include <numbers>
+#include <limits>
+
+namespace xyt {
+
+AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEvaluation& evaluation) {
+    AxisFrequencyAnalysis out;
+    out.referenceOmegaRadPerSec = session.trajectory.kind == TrajectoryKind::Circle
+                                      ? session.trajectory.omegaRadPerSec
+                                      : std::numeric_limits<double>::quiet_NaN();
+    if (!evaluation.gt && !evaluation.pp) {
+        out.error = evaluation.ok ? "the axis has no loop to analyse" : evaluation.error;
+        return out;
+    }
+    try {
+        out.loop = evaluation.gt ? gtLoopTransferFunctions(*evaluation.gt)
+                                 : rstLoopTransferFunctions(*evaluation.pp);
+        out.margins = stabilityMargins(out.loop.openLoop);
+        // One grid for every curve, holding the crossovers (where the margins are drawn) and
+        // the reference frequency (where the tracking is read).
+        FrequencyGridOptions grid;
+        for (const GainMarginCrossing& c : out.margins.gainMargins)
+            if (std::isfinite(c.omegaRadPerSec) && c.omegaRadPerSec > 0.0)
+                grid.extraFrequencies.push_back(c.omegaRadPerSec);
+        for (const PhaseMarginCrossing& c : out.margins.phaseMargins)
+            if (std::isfinite(c.omegaRadPerSec) && c.omegaRadPerSec > 0.0)
+                grid.extraFrequencies.push_back(c.omegaRadPerSec);
+        const bool discrete = out.loop.openLoop.tsSeconds() > 0.0;
+        const double nyquistOmega = discrete ? std::numbers::pi / out.loop.openLoop.tsSeconds() : 0.0;
+        if (std::isfinite(out.referenceOmegaRadPerSec) && out.referenceOmegaRadPerSec > 0.0 &&
+            (!discrete || out.referenceOmegaRadPerSec < nyquistOmega))
+            grid.extraFrequencies.push_back(out.referenceOmegaRadPerSec);
+        const FrequencyResponse l = adaptiveFrequencyResponse(out.loop.openLoop, grid);
+        out.responses = loopFrequencyResponses(out.loop, l.omegaRadPerSec);
+        out.nyquist = nyquistCurve(out.loop.openLoop);
+        if (evaluation.pp && evaluation.zpetc)
+            out.tracking = zpetcTrackingFrequencyResponses(*evaluation.pp, *evaluation.zpetc, l.omegaRadPerSec);
+        out.ok = true;
+    } catch (const InvalidInput& e) {
+        const double reference = out.referenceOmegaRadPerSec;
+        out = AxisFrequencyAnalysis{};
+        out.referenceOmegaRadPerSec = reference;
+        out.error = e.what();
+    }
+    return out;
+}
+
+} // namespace xyt
