@@ -19,5 +19,7 @@ int runSweep(const QStringList& args);
 int runPp(const QStringList& args);
 int runZpetc(const QStringList& args);
 int runContour(const QStringList& args);
+int runBode(const QStringList& args);
+int runMargins(const QStringList& args);
 
 } // namespace xyt::cli

@@ -63,6 +63,17 @@ constexpr const char* kUsage =
     "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
     "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"
     "\n"
+    "Frequency domain of a loop: --gt-preset lower-base|upper-base [--wn W --kp K], or\n"
+    "--pp-preset x-axis|y-axis / --a A --b B --t T [--ts 0.07] (pole placement: L = BG/(AF)),\n"
+    "or --num N --den D [--ts T] (L itself):\n"
+    "  margins   exact stability margins: gain_margin {factor, db, omega}, phase_margin {deg,\n"
+    "            omega}, delay_margin, peak_sensitivity (Ms), peak_complementary_sensitivity\n"
+    "            (Mt), bandwidth, every crossing, nyquist {encirclements, open/closed-loop\n"
+    "            unstable poles}; an infinite margin is \"inf\"\n"
+    "  bode      frequency, magnitude_db, phase_deg (unwrapped) on an adaptive grid holding the\n"
+    "            crossovers, plus margins; pole placement adds tracking {without_ff, with_zpetc}\n"
+    "            [--wmin W --wmax W --points-per-decade 10] [--csv FILE]\n"
+    "\n"
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 a file that\n"
     "could not be written (path and system reason; the old file is unchanged) or an internal\n"
     "error.\n";
@@ -93,6 +104,8 @@ int main(int argc, char* argv[]) {
         {"pp", xyt::cli::runPp},
         {"zpetc", xyt::cli::runZpetc},
         {"contour", xyt::cli::runContour},
+        {"bode", xyt::cli::runBode},
+        {"margins", xyt::cli::runMargins},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);
