@@ -47,6 +47,7 @@ private slots:
     void simulateMatchesCoreAndWritesCsv();
     void unstableDesignIsNotAnError();
     void automaticDurationIncludesTheSettle();
+    void commandHelpIsThatCommandsOnly();
     void reportReadsTheDefaultDesign();
     void badInputExitsWithTwo_data();
     void badInputExitsWithTwo();
@@ -266,6 +267,28 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
     QCOMPARE(upper.json()["duration"].toDouble(), 1430.0);
     QCOMPARE(upper.json()["move_and_settle"].toObject()["settled"].toBool(true), false);
     QVERIFY(upper.json()["move_and_settle"].toObject()["settle_time"].isNull());
+}
+
+void TstCliGt::commandHelpIsThatCommandsOnly() {
+    // Issue 19: COMMAND --help printed the general help of every command.
+    const QStringList commands = {"gt", "simulate", "report", "new", "export",
+                                  "rlocus", "sweep", "pp", "zpetc", "contour"};
+    auto entry = [](const QString& c) { return "\n  " + c + " "; };
+    const auto general = xyt::test::runCli({"--help"});
+    QCOMPARE(general.exitCode, 0);
+    for (const QString& c : commands)
+        QVERIFY2(QString::fromUtf8(general.out).contains(entry(c)), qPrintable(c));
+    for (const QString& c : commands) {
+        const auto run = xyt::test::runCli({c, "--help"});
+        QCOMPARE(run.exitCode, 0);
+        const QString text = QString::fromUtf8(run.out);
+        QVERIFY2(text.startsWith("usage: xytune-cli " + c + " [OPTIONS]\n"), qPrintable(text));
+        QVERIFY2(text.contains(entry(c)), qPrintable(text));
+        for (const QString& other : commands)
+            if (other != c)
+                QVERIFY2(!text.contains(entry(other)), qPrintable(c + " shows " + other));
+        QVERIFY(text.size() < general.out.size() / 2);
+    }
 }
 
 void TstCliGt::reportReadsTheDefaultDesign() {
