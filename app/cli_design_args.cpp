@@ -102,7 +102,8 @@ Reference parseTrajectory(const CliArgs& args) {
         const double v0 = args.number("v0", 0.0), vf = args.number("vf", 0.0);
         const CubicTrajectory cubic =
             asArgument([&] { return CubicTrajectory(x0, xf, t0, tf, v0, vf); });
-        return {[cubic](double t) { return cubic.position(t); }, cubic.tf(), "cubic"};
+        return {[cubic](double t) { return cubic.position(t); }, cubic.tf(), "cubic",
+                PointToPointMove{x0, xf, tf}, t0};
     }
     if (kind == "sine") {
         Sinusoid s;
@@ -116,7 +117,7 @@ Reference parseTrajectory(const CliArgs& args) {
         if (s.omegaRadPerSec == 0.0)
             throw InvalidInput("--omega", "must be nonzero");
         const double period = 2.0 * std::numbers::pi / std::abs(s.omegaRadPerSec);
-        return {[s](double t) { return s.value(t); }, period + s.rampInSeconds, "sine"};
+        return {[s](double t) { return s.value(t); }, period + s.rampInSeconds, "sine", std::nullopt, 0.0};
     }
     if (kind.isEmpty())
         throw InvalidInput("--trajectory", "is required (cubic or sine)");
@@ -137,7 +138,28 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
     s.trajectory = parseTrajectory(args);
     s.options.dtSeconds = positiveNumber(args, "dt", 0.01);
     s.options.umaxVolts = positiveNumber(args, "umax", 2.5);
-    s.durationSeconds = args.number("duration", s.trajectory.defaultDuration);
+    if (s.trajectory.move) {
+        // A move that no sample can see is not a run (issue 19: --tf 0.005 --dt 0.01 used to
+        // report every figure as 0).
+        const double move = s.trajectory.move->endSeconds - s.trajectory.t0Seconds;
+        const QString text = QStringLiteral("the move lasts %1 s (--tf minus --t0), %2 of --dt %3 s")
+                                 .arg(move, 0, 'g', 6)
+                                 .arg(move < s.options.dtSeconds ? QStringLiteral("less than one step")
+                                                                 : QStringLiteral("only %1 steps").arg(std::floor(move / s.options.dtSeconds)))
+                                 .arg(s.options.dtSeconds, 0, 'g', 6);
+        if (move < s.options.dtSeconds)
+            throw InvalidInput("--tf", text.toStdString() + ": too short to measure; lengthen --tf or shorten --dt");
+        if (move < 10.0 * s.options.dtSeconds)
+            std::fprintf(stderr, "xytune-cli: warning: --tf: %s: the figures of so short a move mean "
+                                 "little; lengthen --tf or shorten --dt\n",
+                         qPrintable(text));
+    }
+    resampleSetup(s, args, args.number("duration", s.trajectory.defaultDuration));
+    return s;
+}
+
+void resampleSetup(SimulationSetup& s, const CliArgs& args, double durationSeconds) {
+    s.durationSeconds = durationSeconds;
     if (!(s.durationSeconds > 0.0))
         throw InvalidInput("--duration", "must be greater than zero");
     std::vector<double> times;
@@ -159,7 +181,6 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
                                " s, duration " + QString::number(s.durationSeconds).toStdString() +
                                " s); at least two samples are needed for the metrics");
     s.reference = sampled(s.trajectory.at, times);
-    return s;
 }
 
 void insertSetupJson(QJsonObject& out, const SimulationSetup& setup) {

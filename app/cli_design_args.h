@@ -8,6 +8,7 @@
 
 #include "core/io/file_io.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/simulation/move_settle.h"
 #include "core/simulation/simulation.h"
 
 #include <QJsonObject>
@@ -53,6 +54,9 @@ struct Reference {
     std::function<double(double)> at;
     double defaultDuration;
     QString description;
+    /// The cubic: a point-to-point move (its end tf is defaultDuration) and its start time t0.
+    std::optional<PointToPointMove> move;
+    double t0Seconds = 0.0;
 };
 /// --trajectory cubic|sine and its parameters.
 Reference parseTrajectory(const CliArgs& args);
@@ -65,7 +69,12 @@ struct SimulationSetup {
     double durationSeconds = 0.0;
     LoopSimulationOptions options;
 };
+/// A cubic move shorter than one step of --dt is refused naming --tf (and --dt); one shorter than
+/// ten steps gets a warning on stderr naming both.
 SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plant);
+/// Samples the reference of @p setup again over @p durationSeconds (an automatic duration
+/// chosen after parsing), with the refusals of parseSimulationSetup.
+void resampleSetup(SimulationSetup& setup, const CliArgs& args, double durationSeconds);
 /// The setup's description keys: trajectory, duration, dt, umax, model_unit_scale, samples.
 void insertSetupJson(QJsonObject& out, const SimulationSetup& setup);
 

@@ -9,6 +9,8 @@
 #include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
+#include "core/study/specification.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
 
@@ -29,17 +31,45 @@ int runGt(const QStringList& argv) {
 
 int runSimulate(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
-    args.allowOnly(kDesignOptions + kTrajectoryOptions + QStringList{kUnitOption});
+    args.allowOnly(kDesignOptions + kTrajectoryOptions + QStringList{kUnitOption, "in-position-window"});
     const DesignInput in = parseDesign(args);
-    const SimulationSetup setup = parseSimulationSetup(args, parsePlant(args));
+    SimulationSetup setup = parseSimulationSetup(args, parsePlant(args));
+    const double window = positiveNumber(args, "in-position-window", Specification{}.inPositionWindowMm);
     const GtDesign design = designGuilleminTruxal(in.plant, in.wn, in.kp);
-    const SimulationResult run = simulateLoop(in.plant.transferFunction(), design.controller,
-                                              setup.reference, setup.options);
+    auto simulate = [&] {
+        return simulateLoop(in.plant.transferFunction(), design.controller, setup.reference, setup.options);
+    };
+    SimulationResult run = simulate();
+    const std::optional<PointToPointMove>& move = setup.trajectory.move;
+    QJsonObject durationJson{{"automatic", !args.has("duration")}, {"includes_settle", false}};
+    if (move && !args.has("duration")) {
+        // Automatic: the move, then the settle into the window estimated from the error at tf
+        // and the slowest closed-loop pole (as a session's automatic duration, RunDuration).
+        const double t0 = setup.trajectory.t0Seconds, tf = move->endSeconds;
+        const double cap = automaticMoveCapSeconds(t0, tf, setup.options.dtSeconds);
+        const bool settles = design.stable && !trackingMetrics(run).diverged;
+        const double need = settles ? settleTimeEstimateSeconds(run.e.back(), window,
+                                                                continuousDecayPerSecond(design.closedLoopPoles))
+                                    : 0.0;
+        const double duration = automaticMoveDurationSeconds(t0, tf, need, cap);
+        if (settles && duration > setup.durationSeconds) {
+            resampleSetup(setup, args, duration);
+            run = simulate();
+        }
+        durationJson.insert("includes_settle", settles);
+        durationJson.insert("settle_estimate", number(need));
+        durationJson.insert("cap", number(cap));
+        durationJson.insert("capped", settles && duration == cap && cap > tf);
+    }
     if (const auto csv = args.value("csv"))
         writeCsv(*csv, run);
     QJsonObject out = designJson(design);
     insertSetupJson(out, setup);
-    out.insert("metrics", metricsJson(trackingMetrics(run), stepCharacteristics(design.closedLoop)));
+    out.insert("duration_choice", durationJson);
+    out.insert("tracking", trackingJson(trackingMetrics(run)));
+    out.insert("step_response", stepResponseJson(stepCharacteristics(design.closedLoop)));
+    out.insert("move_and_settle", move ? QJsonValue(moveSettleJson(moveSettleMetrics(run, *move, window)))
+                                       : QJsonValue());
     print(out);
     return 0;
 }

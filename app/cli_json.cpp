@@ -32,7 +32,7 @@ QJsonObject continuousTf(const TransferFunction& tf) {
     return {{"num", descending(tf.num())}, {"den", descending(tf.den())}};
 }
 
-QJsonObject metricsJson(const TrackingMetrics& m, const StepCharacteristics& step) {
+QJsonObject trackingJson(const TrackingMetrics& m) {
     return {{"rmse", number(m.rmse)},
             {"max_abs_error", number(m.maxAbsError)},
             {"max_abs_error_pct", number(m.maxAbsErrorPct)},
@@ -40,9 +40,36 @@ QJsonObject metricsJson(const TrackingMetrics& m, const StepCharacteristics& ste
             {"saturated", m.diverged ? QJsonValue() : QJsonValue(m.saturated)},
             {"diverged", m.diverged},
             {"saturated_time", number(m.saturatedTimeSeconds)},
-            {"settling_time", step.stable ? number(step.settlingTimeSeconds) : QJsonValue()},
-            {"overshoot_pct", step.stable ? number(step.overshootPct) : QJsonValue()},
             {"itae", number(m.itae)}};
+}
+
+QJsonObject metricsJson(const TrackingMetrics& m, const StepCharacteristics& step) {
+    QJsonObject o = trackingJson(m);
+    o.insert("settling_time", step.stable ? number(step.settlingTimeSeconds) : QJsonValue());
+    o.insert("overshoot_pct", step.stable ? number(step.overshootPct) : QJsonValue());
+    return o;
+}
+
+QJsonObject stepResponseJson(const StepCharacteristics& step) {
+    auto defined = [&](double v) { return step.stable ? number(v) : QJsonValue(); };
+    return {{"stable", step.stable},
+            {"final_value", defined(step.finalValue)},
+            {"settling_time", defined(step.settlingTimeSeconds)},
+            {"settling_band_pct", 2.0},
+            {"overshoot_pct", defined(step.overshootPct)},
+            {"peak_time", defined(step.peakTimeSeconds)}};
+}
+
+QJsonObject moveSettleJson(const MoveSettleMetrics& m) {
+    return {{"window_mm", number(m.windowMm)},
+            {"move_end", number(m.moveEndSeconds)},
+            {"run_end", number(m.runEndSeconds)},
+            {"reached_move_end", m.reachedMoveEnd},
+            {"settled", m.settled},
+            {"settle_time", m.settleTimeSeconds ? number(*m.settleTimeSeconds) : QJsonValue()},
+            {"final_error", number(m.finalErrorMm)},
+            {"final_overshoot_mm", number(m.finalOvershootMm)},
+            {"diverged", m.diverged}};
 }
 
 void print(const QJsonObject& object) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
 #include "core/model/polynomial.h"
 #include "core/model/transfer_function.h"
 
@@ -25,8 +26,18 @@ QJsonArray ascending(const Polynomial& p);
 QJsonArray complexPairs(const std::vector<std::complex<double>>& roots);
 /// {num, den} of a continuous transfer function, descending powers of s.
 QJsonObject continuousTf(const TransferFunction& tf);
-/// {rmse, max_abs_error, ..., settling_time, overshoot_pct, itae}: the metric names of the CLI.
+/// {rmse, max_abs_error, ..., settling_time, overshoot_pct, itae}: the metric names of the CLI
+/// (sweep points; simulate splits them into trackingJson and stepResponseJson).
 QJsonObject metricsJson(const TrackingMetrics& m, const StepCharacteristics& step);
+/// {rmse, max_abs_error, max_abs_error_pct, max_abs_u, saturated, diverged, saturated_time,
+/// itae}: the figures of the tracking run.
+QJsonObject trackingJson(const TrackingMetrics& m);
+/// {stable, final_value, settling_time, settling_band_pct, overshoot_pct, peak_time}: the
+/// closed loop's unit-step figures (null when unstable).
+QJsonObject stepResponseJson(const StepCharacteristics& step);
+/// {window_mm, move_end, run_end, reached_move_end, settled, settle_time (null unless
+/// settled), final_error, final_overshoot_mm, diverged}.
+QJsonObject moveSettleJson(const MoveSettleMetrics& m);
 /// Writes the object to stdout, indented, with a newline.
 void print(const QJsonObject& object);
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli: the headless face of XY Tune. JSON on stdout; bad input -> one line on stderr
-// naming the argument, exit code 2.
+// xytune-cli: the headless face of XY Tune. JSON on stdout (report: text; new, export: the path
+// written); bad input -> one line on stderr naming the argument, exit code 2.
 #include "app/cli_commands.h"
 
 #include "core/model/errors.h"
@@ -16,67 +16,122 @@
 
 namespace {
 
-constexpr const char* kUsage =
-    "usage: xytune-cli COMMAND [OPTIONS]\n"
-    "\n"
-    "Commands (JSON on stdout; polynomials of s in descending powers):\n"
-    "  gt        Guillemin-Truxal PI design: [--preset lower-base|upper-base]\n"
-    "            [--k0 K --a1 A --a2 A] --wn W --kp K\n"
-    "  simulate  the design on a trajectory: design options plus\n"
-    "            --trajectory cubic --xf X --tf T [--x0 --t0 --v0 --vf]  or\n"
-    "            --trajectory sine --amplitude A --omega W [--phase-deg P --ramp-in S]\n"
-    "            [--duration S] [--dt 0.01] [--umax 2.5] [--csv FILE]\n"
-    "  report [SESSION.json]  text report of a session, or of the default design\n"
-    "            (both bases of paper 000) when no file is given\n"
-    "  new -o FILE             write the default session (paper 000: x = lower base,\n"
-    "            y = upper base, controller sample time 0.01 s)\n"
-    "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
-    "            tustin|backward-euler]  controller coefficients (JSON, C header,\n"
-    "            Octave/MATLAB script) or simulated signals (CSV)\n"
-    "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
-    "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
-    "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"
-    "            [--kmax K] [--max-step 0.01 (fraction of the view)] [--max-points 5000]\n"
-    "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
-    "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
-    "            [--criterion itae|max_error|rmse|max_u] [--threads N] [--csv FILE]\n"
-    "            [--max-settling 100] [--max-overshoot 0] [--max-error 2] (spec; --umax too).\n"
-    "            JSON: best {wn, kp, ki, metrics, checks, index [i_wn, i_kp]} and refined\n"
-    "            {...} (null when nothing is feasible), feasible_count, grid {wn, kp},\n"
-    "            points[i_wn][i_kp] (rows over wn, columns over kp). CSV: one row per point in\n"
-    "            the same order (wn outer, kp inner); undefined metrics are empty fields.\n"
-    "\n"
-    "Discrete pole placement and ZPETC of paper 001 (polynomials of z^-1 in ascending powers,\n"
-    "as space- or comma-separated lists, e.g. --a \"1 -1.6580 0.6583\"):\n"
-    "  pp        RST design A F + B G = T, Kf = T(1)/B(1): [--preset x-axis|y-axis]\n"
-    "            [--a A --b B] --t T [--ts 0.07]; A(0) != 1 is normalized (warning),\n"
-    "            B(0) must be 0 (delay), T(0) must be 1. Keys F, G, Kf, residual,\n"
-    "            closed_loop {num = Kf B, den = T}, plant_poles, plant_zeros, warnings\n"
-    "  zpetc     pp options plus [--amplitude 30 --omega 0.1 --phase-deg 0 --duration S]\n"
-    "            [--start reference|origin] [--margin 0.05] [--frequency-points N]:\n"
-    "            reference amplitude sin(omega t + phase), one period by default. Zeros with\n"
-    "            |z| < 1 - margin are cancelled (B+); the rest (B-) are listed in nmp_zeros.\n"
-    "            feedforward {num, den}: u_ff(k) = num(z^-1)/den(z^-1) r(k + preview_steps),\n"
-    "            u_ff is the loop's reference input; gain_factor = [B-(1)]^2;\n"
-    "            metrics {rmse_without_ff, rmse_with_ff, improvement_pct}\n"
-    "  contour   both axes on the circle: [--preset paper-zpetc] [--radius 30 --omega 0.1]\n"
-    "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
-    "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"
-    "\n"
+/// One command's entry of the help: its name and its lines (indented as in the general help).
+struct CommandHelp {
+    const char* name;
+    const char* text;
+};
+
+constexpr CommandHelp kGtHelp[] = {
+    {"gt", "  gt        Guillemin-Truxal PI design: [--preset lower-base|upper-base]\n"
+           "            [--k0 K --a1 A --a2 A] --wn W --kp K\n"},
+    {"simulate",
+     "  simulate  the design on a trajectory: design options plus\n"
+     "            --trajectory cubic --xf X --tf T [--x0 --t0 --v0 --vf]  or\n"
+     "            --trajectory sine --amplitude A --omega W [--phase-deg P --ramp-in S]\n"
+     "            [--duration S] [--dt 0.01] [--umax 2.5] [--in-position-window 0.01] [--csv FILE]\n"
+     "            JSON: tracking {rmse, max_abs_error, ...}, step_response (unit step of the\n"
+     "            closed loop), move_and_settle (cubic: settle_time after tf, final_error,\n"
+     "            final_overshoot_mm; null for sine), duration_choice. Without --duration a\n"
+     "            cubic runs past tf until it settles into the window (at most tf + 10 moves).\n"},
+    {"report", "  report [SESSION.json]  text report of a session, or of the default design\n"
+               "            (both bases of paper 000) when no file is given\n"},
+    {"new", "  new -o FILE             write the default session (paper 000: x = lower base,\n"
+            "            y = upper base, controller sample time 0.01 s); prints the path\n"},
+    {"export", "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
+               "            tustin|backward-euler]  controller coefficients (JSON, C header,\n"
+               "            Octave/MATLAB script) or simulated signals (CSV); prints the path\n"},
+    {"rlocus", "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
+               "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
+               "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"
+               "            [--kmax K] [--max-step 0.01 (fraction of the view)] [--max-points 5000]\n"},
+    {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
+              "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
+              "            [--criterion itae|max_error|rmse|max_u|settle] [--threads N] [--csv FILE]\n"
+              "            [--max-settling 100] [--max-overshoot 0] [--max-error 2]\n"
+              "            [--max-settle-time 100] [--in-position-window 0.01] (spec; --umax too).\n"
+              "            A cubic without --duration runs tf + 2 x --max-settle-time.\n"
+              "            JSON: best {wn, kp, ki, metrics, move_and_settle, checks, index [i_wn, i_kp]}\n"
+              "            and refined {...} (null when nothing is feasible), feasible_count, grid\n"
+              "            {wn, kp}, points[i_wn][i_kp] (rows over wn, columns over kp), warnings and\n"
+              "            diagnosis (criteria failing everywhere, least-violating design, relaxed\n"
+              "            specification, best design on a grid edge). CSV: one row per point in\n"
+              "            the same order (wn outer, kp inner); undefined metrics are empty fields.\n"},
+};
+
+constexpr CommandHelp kPpHelp[] = {
+    {"pp", "  pp        RST design A F + B G = T, Kf = T(1)/B(1): [--preset x-axis|y-axis]\n"
+           "            [--a A --b B] --t T [--ts 0.07]; A(0) != 1 is normalized (warning),\n"
+           "            B(0) must be 0 (delay), T(0) must be 1. Keys F, G, Kf, residual,\n"
+           "            closed_loop {num = Kf B, den = T}, plant_poles, plant_zeros, warnings\n"},
+    {"zpetc", "  zpetc     pp options plus [--amplitude 30 --omega 0.1 --phase-deg 0 --duration S]\n"
+              "            [--start reference|origin] [--margin 0.05] [--frequency-points N]:\n"
+              "            reference amplitude sin(omega t + phase), one period by default. Zeros with\n"
+              "            |z| < 1 - margin are cancelled (B+); the rest (B-) are listed in nmp_zeros.\n"
+              "            feedforward {num, den}: u_ff(k) = num(z^-1)/den(z^-1) r(k + preview_steps),\n"
+              "            u_ff is the loop's reference input; gain_factor = [B-(1)]^2;\n"
+              "            metrics {rmse_without_ff, rmse_with_ff, improvement_pct}\n"},
+    {"contour", "  contour   both axes on the circle: [--preset paper-zpetc] [--radius 30 --omega 0.1]\n"
+                "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
+                "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"},
+};
+
+constexpr CommandHelp kFrequencyHelp[] = {
+    {"margins", "  margins   exact stability margins: gain_margin {factor, db, omega}, phase_margin {deg,\n"
+                "            omega}, delay_margin, peak_sensitivity (Ms), peak_complementary_sensitivity\n"
+                "            (Mt), bandwidth, every crossing, nyquist {encirclements, open/closed-loop\n"
+                "            unstable poles}; an infinite margin is \"inf\"\n"},
+    {"bode", "  bode      frequency, magnitude_db, phase_deg (unwrapped) on an adaptive grid holding the\n"
+             "            crossovers, plus margins; pole placement adds tracking {without_ff, with_zpetc}\n"
+             "            [--wmin W --wmax W --points-per-decade 10] [--csv FILE]\n"},
+};
+
+constexpr const char* kFrequencyLoops =
     "Frequency domain of a loop: --gt-preset lower-base|upper-base [--wn W --kp K], or\n"
     "--pp-preset x-axis|y-axis / --a A --b B --t T [--ts 0.07] (pole placement: L = BG/(AF)),\n"
-    "or --num N --den D [--ts T] (L itself):\n"
-    "  margins   exact stability margins: gain_margin {factor, db, omega}, phase_margin {deg,\n"
-    "            omega}, delay_margin, peak_sensitivity (Ms), peak_complementary_sensitivity\n"
-    "            (Mt), bandwidth, every crossing, nyquist {encirclements, open/closed-loop\n"
-    "            unstable poles}; an infinite margin is \"inf\"\n"
-    "  bode      frequency, magnitude_db, phase_deg (unwrapped) on an adaptive grid holding the\n"
-    "            crossovers, plus margins; pole placement adds tracking {without_ff, with_zpetc}\n"
-    "            [--wmin W --wmax W --points-per-decade 10] [--csv FILE]\n"
-    "\n"
+    "or --num N --den D [--ts T] (L itself):\n";
+
+constexpr const char* kExitCodes =
     "Exit codes: 0 success, 2 invalid input (message names the argument), 1 a file that\n"
     "could not be written (path and system reason; the old file is unchanged) or an internal\n"
     "error.\n";
+
+/// The general help: every command.
+std::string generalUsage() {
+    std::string u = "usage: xytune-cli COMMAND [OPTIONS]   (xytune-cli COMMAND --help: that command only)\n"
+                    "\n"
+                    "Commands (JSON on stdout unless said otherwise: report prints text, new and export\n"
+                    "the path written; polynomials of s in descending powers):\n";
+    for (const CommandHelp& c : kGtHelp)
+        u += c.text;
+    u += "\nDiscrete pole placement and ZPETC of paper 001 (polynomials of z^-1 in ascending powers,\n"
+         "as space- or comma-separated lists, e.g. --a \"1 -1.6580 0.6583\"):\n";
+    for (const CommandHelp& c : kPpHelp)
+        u += c.text;
+    u += std::string("\n") + kFrequencyLoops;
+    for (const CommandHelp& c : kFrequencyHelp)
+        u += c.text;
+    return u + "\n" + kExitCodes;
+}
+
+/// The help of one command (its usage line, its entry, the exit codes), or "" if unknown.
+std::string commandUsage(const std::string& name) {
+    auto find = [&](const CommandHelp* begin, const CommandHelp* end) -> const CommandHelp* {
+        for (const CommandHelp* c = begin; c != end; ++c)
+            if (name == c->name)
+                return c;
+        return nullptr;
+    };
+    const CommandHelp* c = find(std::begin(kGtHelp), std::end(kGtHelp));
+    if (!c)
+        c = find(std::begin(kPpHelp), std::end(kPpHelp));
+    std::string loops;
+    if (!c && (c = find(std::begin(kFrequencyHelp), std::end(kFrequencyHelp))))
+        loops = std::string(kFrequencyLoops) + "\n";
+    if (!c)
+        return {};
+    return "usage: xytune-cli " + name + " [OPTIONS]\n\n" + loops + c->text + "\n" + kExitCodes;
+}
 
 /// The message as one printable line: arguments quoted in messages may hold newlines or other
 /// control characters (a pasted list, a file name, a session label), and the contract is one
@@ -90,7 +145,7 @@ int main(int argc, char* argv[]) {
     QStringList args = QCoreApplication::arguments().mid(1);
     if (args.isEmpty() || args.first() == "--help" || args.first() == "-h" ||
         args.first() == "help") {
-        std::fputs(kUsage, args.isEmpty() ? stderr : stdout);
+        std::fputs(generalUsage().c_str(), args.isEmpty() ? stderr : stdout);
         return args.isEmpty() ? 2 : 0;
     }
     const std::map<QString, std::function<int(const QStringList&)>> commands = {
@@ -114,8 +169,8 @@ int main(int argc, char* argv[]) {
                      oneLine(name.toStdString()).c_str());
         return 2;
     }
-    if (args.contains("--help")) {
-        std::fputs(kUsage, stdout);
+    if (args.contains("--help") || args.contains("-h")) {
+        std::fputs(commandUsage(name.toStdString()).c_str(), stdout);
         return 0;
     }
     try {

@@ -84,8 +84,8 @@ int runSessionReport(const QString& path) {
     else
         out << "Trajectory: circle R = " << t.radius << " mm at " << t.omegaRadPerSec
             << " rad/s, ramp-in " << t.rampInSeconds << " s";
-    out << "; duration " << t.effectiveDurationSeconds() << " s, |u| <= " << session.umaxVolts
-        << " V\n";
+    out << "; |u| <= " << session.umaxVolts << " V\n";
+    out << "Run: " << QString::fromStdString(evaluation.duration.description) << ".\n";
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& s = session.axes[static_cast<std::size_t>(i)];
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
@@ -114,13 +114,35 @@ int runSessionReport(const QString& path) {
                     << " mm (improvement " << number(a.improvementPct, 2) << " %)\n";
         }
         const auto& m = a.metrics;
-        out << "  RMSE " << number(m.rmse) << " mm, max |e| " << number(m.maxAbsError) << " mm ("
+        out << "  tracking: RMSE " << number(m.rmse) << " mm, max |e| " << number(m.maxAbsError) << " mm ("
             << number(m.maxAbsErrorPct, 3) << " % of travel), max |u| " << number(m.maxAbsU)
-            << " V, saturated " << (m.saturated ? "yes" : "no") << ", settling "
+            << " V, saturated " << (m.saturated ? "yes" : "no") << ", ITAE " << number(m.itae, 1) << "\n";
+        out << "  unit step of the closed loop: settling (2 %) "
             << (a.step.stable ? number(a.step.settlingTimeSeconds, 2) + " s" : QString("unstable"))
             << ", overshoot "
-            << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable"))
-            << ", ITAE " << number(m.itae, 1) << "\n";
+            << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable")) << "\n";
+        if (a.moveSettle) {
+            const MoveSettleMetrics& ms = *a.moveSettle;
+            out << "  move and settle (window " << QString::number(ms.windowMm, 'g', 6) << " mm): ";
+            if (ms.diverged)
+                out << "n/a (the run diverged)";
+            else if (ms.settled)
+                out << "settled " << number(*ms.settleTimeSeconds, 2) << " s after tf";
+            else
+                out << "not settled by the end of the run (" << number(ms.runEndSeconds, 2) << " s)";
+            out << ", final error " << number(ms.finalErrorMm, 5) << " mm, final-position overshoot "
+                << number(ms.finalOvershootMm, 4) << " mm\n";
+        }
+        QStringList failed;
+        const SpecificationCheck& c = a.check;
+        const std::pair<bool, const char*> criteria[] = {
+            {c.stable, "stable"}, {c.settlingTime, "step settling"}, {c.overshoot, "step overshoot"},
+            {c.noSaturation, "no saturation"}, {c.trackingError, "tracking error"}, {c.settle, "move settle"}};
+        for (const auto& [passed, name] : criteria)
+            if (!passed)
+                failed << name;
+        out << "  specification: " << (failed.isEmpty() ? QStringLiteral("met") : "fails " + failed.join(", "))
+            << "\n";
         for (const auto& w : a.warnings)
             out << "  warning: " << shown(w) << "\n";
     }

@@ -7,6 +7,7 @@
 
 #include "core/model/coefficient_parser.h"
 #include "core/study/design_sweep.h"
+#include "core/study/sweep_diagnosis.h"
 #include "core/model/errors.h"
 
 #include <QTextStream>
@@ -18,7 +19,8 @@ namespace xyt::cli {
 namespace {
 
 const QStringList kSweepOptions = {"log", "criterion", "threads", "max-settling",
-                                   "max-overshoot", "max-error"};
+                                   "max-overshoot", "max-error", "max-settle-time",
+                                   "in-position-window"};
 
 /// "MIN:MAX:N" of --wn or --kp.
 SweepAxis parseAxis(const CliArgs& args, const QString& name, bool logarithmic) {
@@ -49,7 +51,8 @@ QJsonObject pointJson(const DesignPoint& p) {
             {"ki", number(p.ki)},
             {"stable", p.stable},
             {"feasible", p.feasible},
-            {"metrics", metricsJson(p.tracking, p.step)}};
+            {"metrics", metricsJson(p.tracking, p.step)},
+            {"move_and_settle", p.move ? QJsonValue(moveSettleJson(*p.move)) : QJsonValue()}};
 }
 
 QJsonObject checkJson(const SpecificationCheck& c) {
@@ -57,7 +60,8 @@ QJsonObject checkJson(const SpecificationCheck& c) {
             {"settling_time", c.settlingTime},
             {"overshoot", c.overshoot},
             {"no_saturation", c.noSaturation},
-            {"tracking_error", c.trackingError}};
+            {"tracking_error", c.trackingError},
+            {"settle", c.settleApplies ? QJsonValue(c.settle) : QJsonValue()}};
 }
 
 /// One CSV field: the number, or empty when it is not finite or not defined.
@@ -69,7 +73,8 @@ QString sweepCsv(const DesignSweepResult& r) {
     QString text;
     QTextStream out(&text);
     out << "i_wn,i_kp,wn,kp,ki,stable,feasible,rmse,max_abs_error,max_abs_error_pct,max_abs_u,"
-           "saturated,saturated_time,settling_time,overshoot_pct,itae\n";
+           "saturated,saturated_time,settling_time,overshoot_pct,itae,settle_time,final_error,"
+           "final_overshoot_mm\n";
     for (std::size_t i = 0; i < r.wnValues.size(); ++i)
         for (std::size_t j = 0; j < r.kpValues.size(); ++j) {
             const DesignPoint& p = r.at(i, j);
@@ -80,7 +85,11 @@ QString sweepCsv(const DesignSweepResult& r) {
                 << field(m.maxAbsErrorPct) << ',' << field(m.maxAbsU) << ','
                 << int(m.saturated) << ',' << field(m.saturatedTimeSeconds) << ','
                 << field(p.step.settlingTimeSeconds, p.step.stable) << ','
-                << field(p.step.overshootPct, p.step.stable) << ',' << field(m.itae) << '\n';
+                << field(p.step.overshootPct, p.step.stable) << ',' << field(m.itae) << ','
+                << field(p.move && p.move->settleTimeSeconds ? *p.move->settleTimeSeconds : 0.0,
+                         p.move && p.move->settleTimeSeconds)
+                << ',' << field(p.move ? p.move->finalErrorMm : 0.0, p.move.has_value()) << ','
+                << field(p.move ? p.move->finalOvershootMm : 0.0, p.move.has_value()) << '\n';
         }
     out.flush();
     return text;
@@ -96,12 +105,11 @@ int runSweep(const QStringList& argv) {
     const bool logarithmic = args.flag("log");
     const SweepAxis wnAxis = parseAxis(args, "wn", logarithmic);
     const SweepAxis kpAxis = parseAxis(args, "kp", logarithmic);
-    const SimulationSetup setup = parseSimulationSetup(args, plant);
+    SimulationSetup setup = parseSimulationSetup(args, plant);
 
     DesignProblem problem;
     problem.plant = plant.plant;
     problem.modelUnitsPerPositionUnit = setup.options.modelUnitsPerPositionUnit;
-    problem.reference = setup.reference;
     problem.dtSeconds = setup.options.dtSeconds;
     problem.spec.umaxVolts = setup.options.umaxVolts;
     problem.spec.maxSettlingTimeSeconds =
@@ -110,12 +118,22 @@ int runSweep(const QStringList& argv) {
     if (problem.spec.maxOvershootPct < 0.0)
         throw InvalidInput("--max-overshoot", "must be zero or more");
     problem.spec.maxErrorPct = positiveNumber(args, "max-error", problem.spec.maxErrorPct);
+    problem.spec.maxSettleTimeSeconds =
+        positiveNumber(args, "max-settle-time", problem.spec.maxSettleTimeSeconds);
+    problem.spec.inPositionWindowMm =
+        positiveNumber(args, "in-position-window", problem.spec.inPositionWindowMm);
+    problem.move = setup.trajectory.move;
+    // A move's automatic run covers the settle limit twice over (moveSweepDurationSeconds).
+    if (problem.move && !args.has("duration"))
+        resampleSetup(setup, args,
+                      moveSweepDurationSeconds(problem.move->endSeconds, problem.spec.maxSettleTimeSeconds));
+    problem.reference = setup.reference;
 
     SweepOptions options;
     const QString criterion = args.text("criterion", "itae");
     const auto parsed = parseCriterion(criterion.toStdString());
     if (!parsed)
-        throw InvalidInput("--criterion", "must be itae, max_error, rmse or max_u, got '" +
+        throw InvalidInput("--criterion", "must be itae, max_error, rmse, max_u or settle, got '" +
                                               criterion.toStdString() + "'");
     options.criterion = *parsed;
     options.threads = args.count("threads", 0, 1024);
@@ -138,7 +156,9 @@ int runSweep(const QStringList& argv) {
     out.insert("specification", QJsonObject{{"max_settling_time", problem.spec.maxSettlingTimeSeconds},
                                             {"max_overshoot_pct", problem.spec.maxOvershootPct},
                                             {"umax", problem.spec.umaxVolts},
-                                            {"max_error_pct", problem.spec.maxErrorPct}});
+                                            {"max_error_pct", problem.spec.maxErrorPct},
+                                            {"max_settle_time", problem.spec.maxSettleTimeSeconds},
+                                            {"in_position_window_mm", problem.spec.inPositionWindowMm}});
     out.insert("grid", QJsonObject{{"rows", "wn"},
                                    {"columns", "kp"},
                                    {"log", logarithmic},
@@ -174,10 +194,50 @@ int runSweep(const QStringList& argv) {
         rows.append(row);
     }
     out.insert("points", rows);
+    const SweepDiagnosis diagnosis = diagnoseSweep(r, problem.spec);
     QJsonArray warnings;
     for (const auto& w : r.warnings)
         warnings.append(QString::fromStdString(w));
+    for (const auto& w : diagnosis.warnings)
+        warnings.append(QString::fromStdString(w));
     out.insert("warnings", warnings);
+    QJsonArray failing;
+    for (const CriterionFailure& f : diagnosis.failingEverywhere) {
+        QJsonObject o{{"criterion", QString::fromStdString(specCriterionName(f.criterion))},
+                      {"limit", number(f.limit)},
+                      {"best_value", f.bestIndex ? number(f.bestValue) : QJsonValue()},
+                      {"best_index", f.bestIndex ? QJsonValue(QJsonArray{static_cast<qint64>(*f.bestIndex / r.kpValues.size()),
+                                                                         static_cast<qint64>(*f.bestIndex % r.kpValues.size())})
+                                                 : QJsonValue()}};
+        if (f.bestIndex) {
+            o.insert("wn", number(r.points[*f.bestIndex].wn));
+            o.insert("kp", number(r.points[*f.bestIndex].kp));
+        }
+        failing.append(o);
+    }
+    QJsonObject relaxed;
+    if (diagnosis.relaxed)
+        relaxed = {{"max_settling_time", diagnosis.relaxed->maxSettlingTimeSeconds},
+                   {"max_overshoot_pct", diagnosis.relaxed->maxOvershootPct},
+                   {"max_error_pct", diagnosis.relaxed->maxErrorPct},
+                   {"max_settle_time", diagnosis.relaxed->maxSettleTimeSeconds}};
+    out.insert("diagnosis",
+               QJsonObject{{"none_feasible", diagnosis.noneFeasible},
+                           {"failing_everywhere", failing},
+                           {"least_violating", diagnosis.leastViolating
+                                                   ? QJsonValue(QJsonObject{
+                                                         {"index", QJsonArray{static_cast<qint64>(*diagnosis.leastViolating / r.kpValues.size()),
+                                                                              static_cast<qint64>(*diagnosis.leastViolating % r.kpValues.size())}},
+                                                         {"wn", number(r.points[*diagnosis.leastViolating].wn)},
+                                                         {"kp", number(r.points[*diagnosis.leastViolating].kp)},
+                                                         {"violation", number(diagnosis.leastViolation)}})
+                                                   : QJsonValue()},
+                           {"relaxed_specification", diagnosis.relaxed ? QJsonValue(relaxed) : QJsonValue()},
+                           {"best_on_edge", diagnosis.onEdge()},
+                           {"edges", QJsonObject{{"wn_lower", diagnosis.wnAtLowerEdge},
+                                                 {"wn_upper", diagnosis.wnAtUpperEdge},
+                                                 {"kp_lower", diagnosis.kpAtLowerEdge},
+                                                 {"kp_upper", diagnosis.kpAtUpperEdge}}}});
     print(out);
     return 0;
 }

@@ -193,7 +193,9 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
     out << "% XY Tune: plant, controller and closed loop of each axis (generated script).\n"
            "% Runs in GNU Octave (with the control package) and in MATLAB.\n"
            "if exist('OCTAVE_VERSION', 'builtin')\n  pkg load control\nend\n\n";
-    const double duration = session.trajectory.effectiveDurationSeconds();
+    // The run the evaluation chose (an automatic cubic includes the settle after tf).
+    const double duration = evaluation.duration.seconds > 0.0 ? evaluation.duration.seconds
+                                                              : session.trajectory.effectiveDurationSeconds();
     out << "t = (0:" << num(session.trajectory.dtSeconds, "trajectory.dt") << ":"
         << num(duration, "trajectory.duration")
         << ")';\n\n";

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/session.h"
 
+#include "core/simulation/move_settle.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -10,7 +12,7 @@ double TrajectorySettings::effectiveDurationSeconds() const {
     if (durationSeconds > 0.0)
         return durationSeconds;
     if (kind == TrajectoryKind::Cubic)
-        return tfSeconds;
+        return automaticMoveCapSeconds(t0Seconds, tfSeconds, dtSeconds);
     const double w = std::abs(omegaRadPerSec);
     return (w > 0.0 ? 2.0 * std::numbers::pi / w : 0.0) + rampInSeconds;
 }

@@ -54,11 +54,21 @@ struct TrajectorySettings {
     TrajectoryKind kind = TrajectoryKind::Cubic;
     double x0 = 0.0, xf = 600.0, t0Seconds = 0.0, tfSeconds = 130.0, v0 = 0.0, vf = 0.0;
     double radius = 25.0, omegaRadPerSec = 0.06, rampInSeconds = 10.0;
-    /// 0: automatic (tf for a cubic, one revolution plus the ramp-in for the circle).
+    /// 0: automatic. A circle runs one revolution plus the ramp-in. A cubic runs past tf until
+    /// the response has settled into the specification's in-position window, as the evaluation
+    /// estimates from the closed-loop poles (SessionEvaluation::duration says what it chose), at
+    /// most kAutomaticSettleMoves (move_settle.h) move durations after tf.
     double durationSeconds = 0.0;
     /// Simulation step of continuous axes (discrete axes use their own sample time).
     double dtSeconds = 0.01;
 
+    /**
+     * The longest run this trajectory asks for: the duration when it is set; for the circle one
+     * revolution plus the ramp-in; for an automatic cubic the cap automaticMoveCapSeconds (tf + 10
+     * (tf - t0), lowered to what the machine's sample limit holds at dtSeconds, never below tf;
+     * the evaluation picks a run between tf and this). Sample-count checks use it, so they hold
+     * for any run the evaluation may choose.
+     */
     double effectiveDurationSeconds() const;
     friend bool operator==(const TrajectorySettings&, const TrajectorySettings&) = default;
 };

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace xyt {
 
@@ -58,9 +59,8 @@ std::function<double(double)> sessionReference(const TrajectorySettings& traject
  * metric would read 0, which is not a result). The duration is blamed when the session sets it,
  * else the step.
  */
-std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double dt,
+std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double duration, double dt,
                                     const std::string& dtField) {
-    const double duration = trajectory.effectiveDurationSeconds();
     const std::string culprit = trajectory.durationSeconds > 0.0 ? "trajectory.duration" : dtField;
     std::vector<double> times;
     try {
@@ -75,15 +75,27 @@ std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double
     return times;
 }
 
-void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
+/// The Guillemin-Truxal design of an axis, a refusal of wn or kp named by the session path
+/// ("axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf ... the reference model").
+GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
+    try {
+        return designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
+    } catch (const InvalidInput& e) {
+        if (e.field() == "wn" || e.field() == "kp")
+            throw InvalidInput("axes[" + std::to_string(axisIndex) + "].gt." + e.field(), e.reason());
+        throw;
+    }
+}
+
+void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 AxisEvaluation& out) {
     const GtAxisSettings& gt = axis.gt;
-    out.gt = designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
+    out.gt = sessionGtDesign(gt, axisIndex);
     LoopSimulationOptions options;
     options.dtSeconds = session.trajectory.dtSeconds;
     options.umaxVolts = session.umaxVolts;
     options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
-    const auto times = axisSampleTimes(session.trajectory, options.dtSeconds, "trajectory.dt");
+    const auto times = axisSampleTimes(session.trajectory, duration, options.dtSeconds, "trajectory.dt");
     out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
                            sampled(sessionReference(session.trajectory, axisIndex), times), options);
     out.metrics = trackingMetrics(out.run);
@@ -151,7 +163,7 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
     return Polynomial::fromAscending(c, field);
 }
 
-void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
+void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
     requireFinite(pp.t1, "t1");
@@ -162,7 +174,7 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     out.zpetc = designZpetc(*out.pp);
     for (const auto& w : out.pp->warnings)
         out.warnings.push_back(w);
-    const auto times = axisSampleTimes(session.trajectory, pp.tsSeconds,
+    const auto times = axisSampleTimes(session.trajectory, duration, pp.tsSeconds,
                                        "axes[" + std::to_string(axisIndex) + "].pp.ts");
     const std::size_t n = times.size();
     const auto reference = sessionReference(session.trajectory, axisIndex);
@@ -200,22 +212,37 @@ TransferFunction AxisEvaluation::closedLoop() const {
     throw InvalidInput("axis", "has no design");
 }
 
-AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
+namespace {
+
+/// evaluateAxis over a given duration.
+AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration) {
     AxisEvaluation out;
+    out.duration = duration;
     const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
     out.method = axis.method;
     try {
         requirePositive(session.umaxVolts, "umax");
         if (axis.method == DesignMethod::GuilleminTruxal)
-            evaluateGt(session, axis, axisIndex, out);
+            evaluateGt(session, axis, axisIndex, duration.seconds, out);
         else
-            evaluatePp(session, axis, axisIndex, out);
+            evaluatePp(session, axis, axisIndex, duration.seconds, out);
         if (out.metrics.diverged)
             out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
                                    "it has no tracking figures");
+        const TrajectorySettings& t = session.trajectory;
+        if (t.kind == TrajectoryKind::Cubic) {
+            try {
+                out.moveSettle = moveSettleMetrics(out.run, {t.x0, t.xf, t.tfSeconds},
+                                                   session.spec.inPositionWindowMm);
+            } catch (const InvalidInput& e) {
+                throw InvalidInput("specification." + e.field(), e.reason());
+            }
+            if (!out.moveSettle->reachedMoveEnd)
+                out.warnings.push_back("the run ends before the move does (tf): no settle figures");
+        }
         Specification spec = session.spec;
         spec.umaxVolts = session.umaxVolts;
-        out.check = checkSpecification(spec, out.metrics, out.step);
+        out.check = checkSpecification(spec, out.metrics, out.step, out.moveSettle);
         out.ok = true;
     } catch (const InvalidInput& e) {
         out.ok = false;
@@ -224,6 +251,77 @@ AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
         out.runRefused = dynamic_cast<const RunRefused*>(&e) != nullptr;
     }
     return out;
+}
+
+/// The slowest decay rate of an axis' closed loop (1/s); 0 or less when not asymptotically stable.
+double slowestDecayPerSecond(const AxisEvaluation& a) {
+    if (a.gt)
+        return continuousDecayPerSecond(a.gt->closedLoopPoles);
+    if (a.pp)
+        return discreteDecayPerSecond(a.pp->closedLoop().poles(), a.pp->tsSeconds);
+    return 0.0;
+}
+
+std::string seconds(double v) { return formatNumber(v) + " s"; }
+
+} // namespace
+
+RunDuration chooseRunDuration(const Session& session) {
+    const TrajectorySettings& t = session.trajectory;
+    RunDuration d;
+    d.capSeconds = t.effectiveDurationSeconds();
+    d.seconds = d.capSeconds;
+    d.automatic = !(t.durationSeconds > 0.0);
+    if (!d.automatic) {
+        d.description = "duration " + seconds(d.seconds) + " (set in the session)";
+        return d;
+    }
+    if (t.kind == TrajectoryKind::Circle) {
+        d.description = "duration " + seconds(d.seconds) + " (automatic: the ramp-in and one revolution)";
+        return d;
+    }
+    // The move alone first, on both axes, for their error at tf.
+    RunDuration moveOnly = d;
+    moveOnly.seconds = t.tfSeconds;
+    double need = 0.0;
+    bool any = false;
+    for (int i = 0; i < 2; ++i) {
+        const AxisEvaluation a = evaluateAxisOver(session, i, moveOnly);
+        if (!a.ok || !a.step.stable || a.metrics.diverged || a.run.e.empty())
+            continue; // it will not settle whatever the duration; its evaluation says why
+        any = true;
+        need = std::max(need, settleTimeEstimateSeconds(a.run.e.back(), session.spec.inPositionWindowMm,
+                                                        slowestDecayPerSecond(a)));
+    }
+    d.includesSettle = any;
+    d.settleEstimateSeconds = need;
+    if (!any) {
+        d.seconds = t.tfSeconds;
+        d.description = "duration " + seconds(d.seconds) +
+                        " (automatic: the move only; no axis has a stable design to settle)";
+        return d;
+    }
+    d.seconds = automaticMoveDurationSeconds(t.t0Seconds, t.tfSeconds, need, d.capSeconds);
+    d.capped = d.seconds == d.capSeconds && d.capSeconds > t.tfSeconds;
+    d.description = "duration " + seconds(d.seconds) + " (automatic: the move to tf = " +
+                    seconds(t.tfSeconds) + " and the settle into " +
+                    formatNumber(session.spec.inPositionWindowMm) + " mm, estimated " +
+                    (std::isfinite(need) ? seconds(need) : std::string("never")) +
+                    " after tf from the slowest closed-loop pole" +
+                    (d.capped ? "; cut to the cap of tf + " +
+                                    formatNumber(kAutomaticSettleMoves) +
+                                    " move durations" +
+                                    (d.capSeconds < t.tfSeconds + kAutomaticSettleMoves *
+                                                                      (t.tfSeconds - t.t0Seconds)
+                                         ? " (lowered to what a million samples hold at this dt)"
+                                         : "")
+                              : "") +
+                    ")";
+    return d;
+}
+
+AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
+    return evaluateAxisOver(session, axisIndex, chooseRunDuration(session));
 }
 
 std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vector<double>& ys,
@@ -249,8 +347,9 @@ std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vec
 
 SessionEvaluation evaluateSession(const Session& session) {
     SessionEvaluation out;
+    out.duration = chooseRunDuration(session);
     for (int i = 0; i < 2; ++i)
-        out.axes[static_cast<std::size_t>(i)] = evaluateAxis(session, i);
+        out.axes[static_cast<std::size_t>(i)] = evaluateAxisOver(session, i, out.duration);
     const auto& x = out.axes[0];
     const auto& y = out.axes[1];
     if (session.trajectory.kind == TrajectoryKind::Circle && x.ok && y.ok) {

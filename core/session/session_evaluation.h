@@ -4,6 +4,7 @@
 #include "core/simulation/contour_error.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
 #include "core/design/pole_placement.h"
 #include "core/study/specification.h"
 #include "core/design/zpetc.h"
@@ -17,6 +18,21 @@
 #include <vector>
 
 namespace xyt {
+
+/// How long the session's runs last, and why (both axes share it).
+struct RunDuration {
+    double seconds = 0.0;        ///< the simulated duration
+    bool automatic = false;      ///< the session's duration is 0 (automatic)
+    /// Automatic cubic: the run goes past tf by the settle estimate (settleTimeEstimateSeconds
+    /// of the slowest-settling valid, stable axis, from its error at tf and its slowest
+    /// closed-loop pole) times 1.5, plus a tenth of the move, so that the response is seen to
+    /// stay in the window.
+    bool includesSettle = false;
+    double settleEstimateSeconds = 0.0; ///< that estimate, s after tf (infinity: never settles)
+    bool capped = false;         ///< the wanted run was longer than the cap and was cut to it
+    double capSeconds = 0.0;     ///< TrajectorySettings::effectiveDurationSeconds()
+    std::string description;     ///< one sentence saying what was chosen and why
+};
 
 /// Everything computed for one axis of a session: the design, the run and its figures.
 struct AxisEvaluation {
@@ -42,6 +58,11 @@ struct AxisEvaluation {
     /// applied).
     SimulationResult run;
     TrackingMetrics metrics;
+    /// Point-to-point (cubic) runs: the move-and-settle figures with the specification's
+    /// in-position window (unset for the circle).
+    std::optional<MoveSettleMetrics> moveSettle;
+    /// The duration of this axis' run (the session's; see RunDuration).
+    RunDuration duration;
     StepCharacteristics step;
     /// Pass/fail of each criterion of the session's specification.
     SpecificationCheck check;
@@ -53,6 +74,7 @@ struct AxisEvaluation {
 
 struct SessionEvaluation {
     std::array<AxisEvaluation, 2> axes;
+    RunDuration duration;
     /// Radial error of the traced circle (circle trajectories with both axes valid).
     std::optional<ContourError> contour;
 };
@@ -62,8 +84,16 @@ struct SessionEvaluation {
 ///         for a non-finite value or a position beyond kMaxPositionMm.
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex);
 
-/// Designs and simulates one axis. Invalid settings give ok = false with the field named (the
-/// GUI shows it at the field); an unstable design is ok, with step.stable false.
+/**
+ * The duration of the session's runs: the set duration, one revolution plus the ramp-in for the
+ * circle, or for an automatic cubic tf plus the settle (see RunDuration), which simulates both
+ * axes up to tf once to estimate it.
+ */
+RunDuration chooseRunDuration(const Session& session);
+
+/// Designs and simulates one axis over chooseRunDuration(session). Invalid settings give
+/// ok = false with the field named (the GUI shows it at the field); an unstable design is ok,
+/// with step.stable false.
 AxisEvaluation evaluateAxis(const Session& session, int axisIndex);
 SessionEvaluation evaluateSession(const Session& session);
 

@@ -49,7 +49,8 @@ template <int Inputs> struct FixedStep {
  * the same formulas and summation order. Returns nullopt when the state stops being finite.
  */
 std::optional<TrackingMetrics> trackLoop(const LoopModes& modes, const std::vector<double>& ref,
-                                         double dt, double umax, double unit, double travel) {
+                                         double dt, double umax, double unit, double travel,
+                                         MoveSettleAccumulator* move) {
     if (modes.plantStates + modes.controllerStates != kLoopStates || modes.controllerStates != 1)
         throw std::logic_error("trackLoop: expected a third-order plant and a PI controller");
     const FixedStep<1> linear(modes.aLinear, modes.bLinear, dt);
@@ -76,6 +77,8 @@ std::optional<TrackingMetrics> trackLoop(const LoopModes& modes, const std::vect
         const double e = ref[k] - y / unit;
         const double absE = std::abs(e);
         const double t = static_cast<double>(k) * dt;
+        if (move)
+            move->add(t, y / unit, e);
         sumSquares += e * e;
         m.maxAbsError = std::max(m.maxAbsError, absE);
         m.maxAbsU = std::max(m.maxAbsU, std::abs(u));
@@ -119,13 +122,14 @@ std::string criterionName(SweepCriterion criterion) {
     case SweepCriterion::MaxError: return "max_error";
     case SweepCriterion::Rmse: return "rmse";
     case SweepCriterion::MaxU: return "max_u";
+    case SweepCriterion::Settle: return "settle";
     }
     return "itae";
 }
 
 std::optional<SweepCriterion> parseCriterion(const std::string& name) {
     for (SweepCriterion c : {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
-                             SweepCriterion::MaxU})
+                             SweepCriterion::MaxU, SweepCriterion::Settle})
         if (criterionName(c) == name)
             return c;
     return std::nullopt;
@@ -167,8 +171,14 @@ double criterionValue(const DesignPoint& point, SweepCriterion criterion) {
     case SweepCriterion::MaxError: return point.tracking.maxAbsError;
     case SweepCriterion::Rmse: return point.tracking.rmse;
     case SweepCriterion::MaxU: return point.tracking.maxAbsU;
+    case SweepCriterion::Settle:
+        return point.move && point.move->settleTimeSeconds ? *point.move->settleTimeSeconds : kInf;
     }
     return kInf;
+}
+
+double moveSweepDurationSeconds(double tfSeconds, double maxSettleTimeSeconds) {
+    return tfSeconds + 2.0 * maxSettleTimeSeconds;
 }
 
 DesignEvaluator::DesignEvaluator(DesignProblem problem) : problem_(std::move(problem)) {
@@ -182,6 +192,8 @@ DesignEvaluator::DesignEvaluator(DesignProblem problem) : problem_(std::move(pro
         requireFinite(r, "reference");
     const auto [lo, hi] = std::minmax_element(problem_.reference.begin(), problem_.reference.end());
     travel_ = *hi - *lo;
+    if (problem_.move) // validates the move
+        (void)MoveSettleAccumulator(*problem_.move, problem_.spec.inPositionWindowMm);
 }
 
 DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
@@ -191,9 +203,13 @@ DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
     p.kp = kp;
     p.ki = design.ki;
     p.stable = design.stable;
+    std::optional<MoveSettleAccumulator> move;
+    if (problem_.move)
+        move.emplace(*problem_.move, problem_.spec.inPositionWindowMm);
     const std::optional<TrackingMetrics> tracking =
         trackLoop(loopModes(plantTf_, design.controller), problem_.reference, problem_.dtSeconds,
-                  problem_.spec.umaxVolts, problem_.modelUnitsPerPositionUnit, travel_);
+                  problem_.spec.umaxVolts, problem_.modelUnitsPerPositionUnit, travel_,
+                  move ? &*move : nullptr);
     p.step = stepCharacteristics(design.closedLoop);
     p.metricsFinite = tracking.has_value() && stepFiguresFinite(p.step);
     if (tracking) {
@@ -205,7 +221,14 @@ DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
         p.tracking.saturated = true;
         p.tracking.saturatedTimeSeconds = kInf;
     }
-    p.check = checkSpecification(problem_.spec, p.tracking, p.step);
+    if (move) {
+        if (!tracking) // the kernel stopped at the first non-finite sample
+            move->add(kInf, kInf, kInf);
+        p.move = move->finish();
+        if (p.move->diverged) // never NaN taken for a number (as the tracking figures above)
+            p.move->finalErrorMm = p.move->finalOvershootMm = kInf;
+    }
+    p.check = checkSpecification(problem_.spec, p.tracking, p.step, p.move);
     p.computed = true;
     p.feasible = p.metricsFinite && p.check.allPassed();
     return p;
@@ -302,10 +325,14 @@ void tallyDesignSpace(DesignSweepResult& result) {
 
 void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
     spec.validate();
+    for (const DesignPoint& p : result.points)
+        if (p.computed && p.move && p.move->windowMm != spec.inPositionWindowMm)
+            throw InvalidInput("in_position_window_mm",
+                               "the study measured the settle with another window; run it again");
     for (DesignPoint& p : result.points) {
         if (!p.computed)
             continue;
-        p.check = checkSpecification(spec, p.tracking, p.step);
+        p.check = checkSpecification(spec, p.tracking, p.step, p.move);
         p.feasible = p.metricsFinite && p.check.allPassed();
     }
     tallyDesignSpace(result);

@@ -27,8 +27,11 @@ enum class SweepCriterion {
     MaxError, ///< max |e| (TrackingMetrics::maxAbsError)
     Rmse,     ///< TrackingMetrics::rmse
     MaxU,     ///< max |u| (TrackingMetrics::maxAbsU): the gentlest feasible design
+    /// Settle time after a point-to-point move (MoveSettleMetrics::settleTimeSeconds); +infinity
+    /// for a point that did not settle or a problem without a move.
+    Settle,
 };
-/// "itae", "max_error", "rmse", "max_u".
+/// "itae", "max_error", "rmse", "max_u", "settle".
 std::string criterionName(SweepCriterion criterion);
 /// The inverse of criterionName; nullopt for an unknown name.
 std::optional<SweepCriterion> parseCriterion(const std::string& name);
@@ -64,7 +67,20 @@ struct DesignProblem {
     double dtSeconds = 0.01;
     /// spec.umaxVolts is also the actuator limit of every simulation.
     Specification spec;
+    /// A point-to-point move (the reference holds its target from move->endSeconds on): every
+    /// point then gets move-and-settle figures with spec.inPositionWindowMm and is judged on
+    /// spec.maxSettleTimeSeconds. The reference must run past the move's end for the settle to
+    /// be measured (moveSweepDurationSeconds).
+    std::optional<PointToPointMove> move;
 };
+
+/**
+ * How long the reference of a sweep over a point-to-point move should run: tf + 2 x the
+ * settle limit, so that a design settling within the limit is seen to stay in the window for
+ * at least as long again. (A sweep cannot use the per-design automatic duration of a session:
+ * all its designs share one reference.)
+ */
+double moveSweepDurationSeconds(double tfSeconds, double maxSettleTimeSeconds);
 
 /// Everything known about one design (wn, kp).
 struct DesignPoint {
@@ -79,6 +95,8 @@ struct DesignPoint {
     bool metricsFinite = false;
     TrackingMetrics tracking;  ///< on the problem's trajectory, with the actuator limit
     StepCharacteristics step;  ///< of the closed loop (unset when unstable, see its doc)
+    /// Move-and-settle figures, for a problem with a move (see DesignProblem::move).
+    std::optional<MoveSettleMetrics> move;
     SpecificationCheck check;
     bool feasible = false; ///< computed && metricsFinite && check.allPassed()
 };
@@ -192,8 +210,11 @@ void tallyDesignSpace(DesignSweepResult& result);
  * Judges every computed point of @p result again against @p spec, which must have the study's
  * actuator limit (the runs depend on it; on the other limits they do not, so this is exact):
  * check, feasible and the tally (tallyDesignSpace) are recomputed. The refinement searched
- * under the old limits and is dropped.
- * @throws InvalidInput from Specification::validate.
+ * under the old limits and is dropped. The settle figures depend on the in-position window,
+ * so a point-to-point study must keep its window; a larger maxSettleTimeSeconds than the run
+ * covers after tf judges a design that had not settled by the end of the run as failing.
+ * @throws InvalidInput from Specification::validate; "in_position_window_mm" when a point has
+ *         move-and-settle figures for another window (run the study again).
  */
 void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec);
 

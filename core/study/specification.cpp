@@ -25,10 +25,13 @@ void Specification::validate() const {
     requireNonNegative(maxOvershootPct, "max_overshoot_pct");
     requirePositive(umaxVolts, "umax");
     requirePositive(maxErrorPct, "max_error_pct");
+    requirePositive(inPositionWindowMm, "in_position_window_mm");
+    requirePositive(maxSettleTimeSeconds, "max_settle_time");
 }
 
 SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
-                                      const StepCharacteristics& step) {
+                                      const StepCharacteristics& step,
+                                      const std::optional<MoveSettleMetrics>& move) {
     spec.validate();
     SpecificationCheck c;
     c.stable = step.stable;
@@ -38,6 +41,11 @@ SpecificationCheck checkSpecification(const Specification& spec, const TrackingM
     // A diverged run has no figures: it fails both tracking criteria (atMost(NaN) is false too).
     c.noSaturation = !tracking.diverged && !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
     c.trackingError = !tracking.diverged && atMost(tracking.maxAbsErrorPct, spec.maxErrorPct);
+    if (move) {
+        c.settleApplies = true;
+        c.settle = !move->diverged && move->settled && move->windowMm == spec.inPositionWindowMm &&
+                   atMost(move->settleTimeSeconds.value_or(NAN), spec.maxSettleTimeSeconds);
+    }
     return c;
 }
 

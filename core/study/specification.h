@@ -2,6 +2,9 @@
 #pragma once
 
 #include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
+
+#include <optional>
 
 namespace xyt {
 
@@ -18,6 +21,20 @@ struct Specification {
     double maxOvershootPct = 0.0; ///< the paper's "no overshoot"
     double umaxVolts = 2.5;       ///< |u| must stay within this and never be clipped
     double maxErrorPct = 2.0;     ///< max |e| as % of the travel
+    /// In-position window of a point-to-point move (mm): the table is "in position" while
+    /// |e| <= this (MoveSettleMetrics). 0.01 mm is a small fraction of any travel (1/60000 of
+    /// the paper's 600 mm move) and the resolution class of the tables it describes.
+    double inPositionWindowMm = 0.01;
+    /**
+     * Move-and-settle limit (s): the settle time after the end of a point-to-point move
+     * (MoveSettleMetrics::settleTimeSeconds) must not exceed this. The paper states no such
+     * limit; 100 s reuses its settling-time figure. The paper's own default design does NOT
+     * pass it, and no sensible limit would let it: its slow closed-loop pole near -psi1 (the PI
+     * zero; -0.0069 and -0.0014 rad/s for the lower and upper base) takes 876 s and some 3000 s
+     * after tf to bring |e| inside 0.01 mm. Saying so is what the issue asks for; a limit of
+     * 3000 s would hide it.
+     */
+    double maxSettleTimeSeconds = 100.0;
 
     /**
      * Slack on the overshoot criterion, in percent, for round-off only. The sampled step
@@ -33,7 +50,8 @@ struct Specification {
     static constexpr double kOvershootRoundOffPct = 1e-9;
 
     /// @throws InvalidInput "max_settling_time", "max_overshoot_pct", "max_error_pct" (finite,
-    ///         >= 0; settling and error > 0), "umax" (finite, > 0).
+    ///         >= 0; settling and error > 0), "umax", "in_position_window_mm",
+    ///         "max_settle_time" (finite, > 0).
     void validate() const;
     friend bool operator==(const Specification&, const Specification&) = default;
 };
@@ -46,18 +64,25 @@ struct SpecificationCheck {
     bool overshoot = false;    ///< overshootPct <= maxOvershootPct + kOvershootRoundOffPct
     bool noSaturation = false; ///< no clipped sample and maxAbsU <= umaxVolts
     bool trackingError = false; ///< maxAbsErrorPct <= maxErrorPct
+    /// Point-to-point moves only (settleApplies): the run settled into the window and
+    /// settleTimeSeconds <= maxSettleTimeSeconds. True when it does not apply (a circle).
+    bool settle = true;
+    bool settleApplies = false; ///< the run was a point-to-point move with move-and-settle figures
 
     bool allPassed() const {
-        return stable && settlingTime && overshoot && noSaturation && trackingError;
+        return stable && settlingTime && overshoot && noSaturation && trackingError && settle;
     }
 };
 
 /**
  * Checks one design against @p spec. An unstable closed loop fails `stable`, `settlingTime` and
  * `overshoot` (its step figures are undefined); the tracking criteria are still judged on the run.
+ * With @p move (a point-to-point run) `settle` is judged too: a run that did not settle, that
+ * diverged, or whose window is not the spec's inPositionWindowMm fails it.
  * @throws InvalidInput from Specification::validate.
  */
 SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
-                                      const StepCharacteristics& step);
+                                      const StepCharacteristics& step,
+                                      const std::optional<MoveSettleMetrics>& move = std::nullopt);
 
 } // namespace xyt

@@ -352,7 +352,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("simulate dt subnormal") << move + QStringList{"--dt", "5e-324"}
                                            << "--dt: needs more than 1e308 samples";
     QTest::newRow("simulate dt longer than the move (one sample)")
-        << move + QStringList{"--dt", "1000"} << "--dt: gives a single sample";
+        << move + QStringList{"--dt", "1000"} << "--tf: the move lasts 130 s (--tf minus --t0), less than one step of --dt 1000 s";
     QTest::newRow("simulate sine omega 1e300 (one sample)")
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine",
                        "--amplitude", "25", "--omega", "1e300"}
@@ -393,7 +393,12 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("simulate tf 1e-300 (one sample)")
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
                        "600", "--tf", "1e-300"}
-        << "--tf: gives a single sample";
+        << "--tf: the move lasts 1e-300 s";
+    // Issue 19: a move shorter than one step used to run one sample and report zeros.
+    QTest::newRow("simulate tf 0.005 dt 0.01 (move shorter than a step)")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
+                       "600", "--tf", "0.005", "--dt", "0.01"}
+        << "--tf: the move lasts 0.005 s (--tf minus --t0), less than one step of --dt 0.01 s: too short to measure";
     QTest::newRow("zpetc duration shorter than Ts (one sample)")
         << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "0.01"}
         << "--duration: gives a single sample";

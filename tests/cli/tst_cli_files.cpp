@@ -7,6 +7,9 @@
 #include "tests/support/small_filesystem.h"
 
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
@@ -26,6 +29,7 @@ private slots:
     void failedWriteKeepsOldFile();
     void specialFilesAreNotReplaced();
     void specialFilesAreNotRead();
+    void sessionSpecificationKeysAndFieldNames();
     void reportEscapesLabels();
     void duplicateKeyIsRefused();
     void fullDiskKeepsOldFile(); // last: it moves the process into its own mount namespace
@@ -186,6 +190,64 @@ void TstCliFiles::fullDiskKeepsOldFile() {
     const auto run = runCli({"new", "-o", session});
     QVERIFY2(run.exitCode == 2 && run.err.contains(std::strerror(ENOSPC)), run.err.constData());
     QCOMPARE(contents(session), before);
+}
+
+void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
+    // Issue 19: the move-and-settle keys of the specification are written, read back (the report
+    // judges with them), optional in older files; a wn of 1e308 names the session path and the
+    // reason, not the reference model's "den[2]: must be a number, got NaN".
+    QTemporaryDir dir;
+    const QString path = dir.filePath("s.json");
+    QCOMPARE(runCli({"new", "-o", path}).exitCode, 0);
+    QJsonObject root = QJsonDocument::fromJson(contents(path)).object();
+    QJsonObject spec = root["specification"].toObject();
+    QCOMPARE(spec["in_position_window_mm"].toDouble(), 0.01);
+    QCOMPARE(spec["max_settle_time"].toDouble(), 100.0);
+    auto write = [&](const QJsonObject& o) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(QJsonDocument(o).toJson());
+    };
+    // A 5 mm window: the report's move-and-settle line uses it.
+    spec["in_position_window_mm"] = 5.0;
+    root["specification"] = spec;
+    write(root);
+    auto run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("move and settle (window 5 mm)"), run.out.constData());
+    QVERIFY2(run.out.contains("Run: duration "), run.out.constData());
+    // Without both keys (a file from before issue 19): the defaults.
+    spec.remove("in_position_window_mm");
+    spec.remove("max_settle_time");
+    root["specification"] = spec;
+    write(root);
+    run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("move and settle (window 0.01 mm)"), run.out.constData());
+    // A zero window is refused naming its path.
+    spec["in_position_window_mm"] = 0.0;
+    root["specification"] = spec;
+    write(root);
+    run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains("specification.in_position_window_mm"), run.err.constData());
+    // wn = 1e308: the axis is not designed, the message names axes[0].gt.wn and the overflow.
+    spec.remove("in_position_window_mm");
+    root["specification"] = spec;
+    QJsonArray axes = root["axes"].toArray();
+    QJsonObject x = axes[0].toObject();
+    QJsonObject gt = x["gt"].toObject();
+    gt["wn"] = 1e308;
+    x["gt"] = gt;
+    axes[0] = x;
+    root["axes"] = axes;
+    write(root);
+    run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 0);
+    QVERIFY2(run.out.contains("not designed: axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf"),
+             run.out.constData());
+    QVERIFY2(run.out.contains("for the reference model"), run.out.constData());
+    QVERIFY(!run.out.contains("NaN") && !run.out.contains("nan"));
 }
 
 QTEST_APPLESS_MAIN(TstCliFiles)

@@ -46,6 +46,8 @@ private slots:
     void simulateMatchesCoreAndWritesCsv_data();
     void simulateMatchesCoreAndWritesCsv();
     void unstableDesignIsNotAnError();
+    void automaticDurationIncludesTheSettle();
+    void commandHelpIsThatCommandsOnly();
     void reportReadsTheDefaultDesign();
     void badInputExitsWithTwo_data();
     void badInputExitsWithTwo();
@@ -112,7 +114,8 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv_data() {
     QTest::addColumn<double>("dt");
     QTest::addColumn<double>("duration");
     QTest::newRow("paper cubic 0 -> 600 in 130 s, lower base")
-        << QStringList{"--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--tf", "130"}
+        << QStringList{"--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--tf", "130",
+                       "--duration", "130"}
         << true << 0.01 << 130.0;
     QTest::newRow("circle axis: 25 mm sine at 0.06 rad/s, upper base, ramp-in 10 s")
         << QStringList{"--preset", "upper-base", "--trajectory", "sine", "--amplitude", "25", "--omega",
@@ -132,10 +135,16 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     requireNoNonFinite(run.out);
-    const QJsonObject m = run.json()["metrics"].toObject();
+    // Issue 19: tracking figures and the closed loop's unit-step figures under their own keys.
+    QVERIFY(!run.json().contains("metrics"));
+    const QJsonObject m = run.json()["tracking"].toObject();
+    const QJsonObject stepJson = run.json()["step_response"].toObject();
     for (const char* key : {"rmse", "max_abs_error", "max_abs_error_pct", "max_abs_u", "saturated",
-                            "saturated_time", "settling_time", "overshoot_pct", "itae"})
+                            "saturated_time", "itae"})
         QVERIFY2(m.contains(key), key);
+    for (const char* key : {"stable", "final_value", "settling_time", "overshoot_pct", "peak_time"})
+        QVERIFY2(stepJson.contains(key), key);
+    QCOMPARE(run.json()["move_and_settle"].isNull(), !cubic);
 
     // The same run through the core: the preset's unit scale (0.001 m per mm), umax 2.5 V.
     const auto preset = xyt::findGtPreset(args[1].toStdString());
@@ -161,8 +170,9 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     XYT_COMPARE_NEAR(m["max_abs_u"].toDouble(), tm.maxAbsU, 1e-12, 0.0);
     QCOMPARE(m["saturated"].toBool(), tm.saturated);
     XYT_COMPARE_NEAR(m["saturated_time"].toDouble(), tm.saturatedTimeSeconds, 1e-12, 0.0);
-    XYT_COMPARE_NEAR(m["settling_time"].toDouble(), step.settlingTimeSeconds, 1e-15, 0.0);
-    XYT_COMPARE_NEAR(m["overshoot_pct"].toDouble(), step.overshootPct, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(stepJson["settling_time"].toDouble(), step.settlingTimeSeconds, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(stepJson["overshoot_pct"].toDouble(), step.overshootPct, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(stepJson["peak_time"].toDouble(), step.peakTimeSeconds, 1e-15, 0.0);
     XYT_COMPARE_NEAR(m["itae"].toDouble(), tm.itae, 1e-12, 0.0);
     if (cubic)
         QVERIFY(!tm.saturated); // paper 000: no saturation on the cubic (0.33 V, see tst_simulation)
@@ -194,12 +204,91 @@ void TstCliGt::unstableDesignIsNotAnError() {
     requireNoNonFinite(run.out);
     const QJsonObject o = run.json();
     QCOMPARE(o["stable"].toBool(true), false);
-    QVERIFY(o["metrics"].toObject()["settling_time"].isNull());
-    QVERIFY(o["metrics"].toObject()["overshoot_pct"].isNull());
-    QVERIFY(o["metrics"].toObject()["rmse"].isDouble());
+    QVERIFY(o["step_response"].toObject()["settling_time"].isNull());
+    QVERIFY(o["step_response"].toObject()["overshoot_pct"].isNull());
+    QCOMPARE(o["step_response"].toObject()["stable"].toBool(true), false);
+    QVERIFY(o["tracking"].toObject()["rmse"].isDouble());
+    // No settle to wait for: the automatic run is the move alone.
+    QCOMPARE(o["duration"].toDouble(), 130.0);
+    QCOMPARE(o["move_and_settle"].toObject()["settled"].toBool(true), false);
     const auto gt = xyt::test::runCli({"gt", "--preset", "lower-base", "--kp", "10000"});
     QCOMPARE(gt.exitCode, 0);
     QCOMPARE(gt.json()["stable"].toBool(true), false);
+}
+
+void TstCliGt::automaticDurationIncludesTheSettle() {
+    // Issue 19: without --duration a cubic runs past tf until the slowest closed-loop pole has
+    // brought |e| into the window. The lower base's slow pole is p = -0.00693 rad/s (its PI zero
+    // at -psi1), so the estimate is ln(|e(tf)| / w) / |p| with e(tf) the error at the last
+    // sample of the move (checked against a core run of the move alone).
+    const auto run = xyt::test::runCli({"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                                        "--xf", "600", "--tf", "130"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    requireNoNonFinite(run.out);
+    const QJsonObject o = run.json();
+    const auto preset = xyt::findGtPreset("lower-base");
+    const xyt::GtDesign d = xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp);
+    xyt::LoopSimulationOptions options;
+    options.umaxVolts = 2.5;
+    options.modelUnitsPerPositionUnit = preset->modelUnitsPerPositionUnit;
+    const xyt::CubicTrajectory c(0.0, 600.0, 0.0, 130.0);
+    const auto moveRun = xyt::simulateLoop(d.plant.transferFunction(), d.controller,
+                                           xyt::sampled([&](double t) { return c.position(t); },
+                                                        xyt::sampleTimes(130.0, 0.01)),
+                                           options);
+    double slowest = -INFINITY;
+    for (const auto& p : d.closedLoopPoles)
+        slowest = std::max(slowest, p.real());
+    const double estimate = std::log(std::abs(moveRun.e.back()) / 0.01) / -slowest;
+    const QJsonObject choice = o["duration_choice"].toObject();
+    QVERIFY(choice["automatic"].toBool());
+    QVERIFY(choice["includes_settle"].toBool());
+    XYT_COMPARE_NEAR(choice["settle_estimate"].toDouble(), estimate, 1e-12, 0.0);
+    // tf + 1.5 x estimate + a tenth of the move, under the cap tf + 10 x 130 s.
+    XYT_COMPARE_NEAR(o["duration"].toDouble(), 130.0 + 1.5 * estimate + 13.0, 1e-12, 0.0);
+    QCOMPARE(choice["cap"].toDouble(), 1430.0);
+    // The run settles within it: the measured settle time is within 5 % of the estimate (the
+    // slow mode dominates after tf) and the final error is inside the window.
+    const QJsonObject ms = o["move_and_settle"].toObject();
+    QVERIFY(ms["settled"].toBool());
+    XYT_COMPARE_NEAR(ms["settle_time"].toDouble(), estimate, 0.05, 0.0);
+    QVERIFY(std::abs(ms["final_error"].toDouble()) <= 0.01);
+    QCOMPARE(ms["window_mm"].toDouble(), 0.01);
+    // The final-position overshoot is max (y - 600) over the run (every y lies in the CSV's
+    // core-equal run: checked in simulateMatchesCoreAndWritesCsv); the type-2 loop must overshoot
+    // the target (its step error integrates to zero, see core/study/specification.h).
+    QVERIFY(ms["final_overshoot_mm"].toDouble() > 0.0);
+    // The upper base needs more than the cap: the run is cut to it and says so.
+    const auto upper = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic",
+                                          "--xf", "600", "--tf", "130"});
+    QCOMPARE(upper.exitCode, 0);
+    QVERIFY(upper.json()["duration_choice"].toObject()["capped"].toBool());
+    QCOMPARE(upper.json()["duration"].toDouble(), 1430.0);
+    QCOMPARE(upper.json()["move_and_settle"].toObject()["settled"].toBool(true), false);
+    QVERIFY(upper.json()["move_and_settle"].toObject()["settle_time"].isNull());
+}
+
+void TstCliGt::commandHelpIsThatCommandsOnly() {
+    // Issue 19: COMMAND --help printed the general help of every command.
+    const QStringList commands = {"gt", "simulate", "report", "new", "export",
+                                  "rlocus", "sweep", "pp", "zpetc", "contour"};
+    auto entry = [](const QString& c) { return "\n  " + c + " "; };
+    const auto general = xyt::test::runCli({"--help"});
+    QCOMPARE(general.exitCode, 0);
+    for (const QString& c : commands)
+        QVERIFY2(QString::fromUtf8(general.out).contains(entry(c)), qPrintable(c));
+    for (const QString& c : commands) {
+        const auto run = xyt::test::runCli({c, "--help"});
+        QCOMPARE(run.exitCode, 0);
+        const QString text = QString::fromUtf8(run.out);
+        QVERIFY2(text.startsWith("usage: xytune-cli " + c + " [OPTIONS]\n"), qPrintable(text));
+        QVERIFY2(text.contains(entry(c)), qPrintable(text));
+        for (const QString& other : commands)
+            if (other != c)
+                QVERIFY2(!text.contains(entry(other)), qPrintable(c + " shows " + other));
+        QVERIFY(text.size() < general.out.size() / 2);
+    }
 }
 
 void TstCliGt::reportReadsTheDefaultDesign() {

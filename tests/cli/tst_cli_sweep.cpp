@@ -5,6 +5,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QTemporaryDir>
+#include <QJsonDocument>
 #include <QTest>
 
 namespace {
@@ -19,6 +20,7 @@ class TstCliSweep : public QObject {
 private slots:
     void contractKeysAndCsv();
     void strictSpecHasNoBest();
+    void bestOnTheEdgeIsWarned();
     void badGridExitsWithTwo_data();
     void badGridExitsWithTwo();
 };
@@ -84,7 +86,69 @@ void TstCliSweep::strictSpecHasNoBest() {
     QCOMPARE(o["feasible_count"].toInt(), 0);
     QVERIFY(o["best"].isNull());
     QVERIFY(o["refined"].isNull());
-    QCOMPARE(o["warnings"].toArray().size(), 1);
+    // Issue 19: the warnings say which criterion fails everywhere and the best value the grid
+    // reaches on it; the invariant checked here: it is the smallest step overshoot of all points.
+    const QJsonArray warnings = o["warnings"].toArray();
+    QCOMPARE(warnings.size(), 3);
+    QCOMPARE(warnings[0].toString(), QString("no design of the grid meets the specification"));
+    const QJsonObject diagnosis = o["diagnosis"].toObject();
+    QVERIFY(diagnosis["none_feasible"].toBool());
+    const QJsonArray failing = diagnosis["failing_everywhere"].toArray();
+    QCOMPARE(failing.size(), qsizetype(1));
+    QCOMPARE(failing[0].toObject()["criterion"].toString(), QString("overshoot"));
+    double smallest = INFINITY;
+    QJsonArray at;
+    const QJsonArray rows = o["points"].toArray();
+    for (qsizetype i = 0; i < rows.size(); ++i)
+        for (qsizetype j = 0; j < rows[i].toArray().size(); ++j) {
+            const double v = rows[i].toArray()[j].toObject()["metrics"].toObject()["overshoot_pct"].toDouble(INFINITY);
+            if (v < smallest) {
+                smallest = v;
+                at = QJsonArray{i, j};
+            }
+        }
+    QCOMPARE(failing[0].toObject()["best_value"].toDouble(), smallest);
+    QCOMPARE(failing[0].toObject()["best_index"].toArray(), at);
+    QVERIFY2(warnings[1].toString().startsWith("the step overshoot limit (0 %) fails at every design of the "
+                                               "grid; the smallest step overshoot found is "),
+             qPrintable(warnings[1].toString()));
+    // The least-violating design (smallest total normalized violation) is that point here, and
+    // it has not settled into 0.01 mm by the end of the run (its slow pole -psi1 = -wn^4/(k0 kp)
+    // = -0.0026 rad/s): no relaxed limit makes it pass, and the warning says so.
+    const QJsonObject least = diagnosis["least_violating"].toObject();
+    QCOMPARE(least["index"].toArray(), at);
+    const QJsonObject leastPoint = rows[at[0].toInt()].toArray()[at[1].toInt()].toObject();
+    QCOMPARE(leastPoint["move_and_settle"].toObject()["settled"].toBool(true), false);
+    QVERIFY(diagnosis["relaxed_specification"].isNull());
+    QVERIFY2(warnings[2].toString().startsWith("least-violating design: wn = 1 rad/s, kp = 50 (point 2); "
+                                               "relaxing a limit does not make it pass"),
+             qPrintable(warnings[2].toString()));
+}
+
+void TstCliSweep::bestOnTheEdgeIsWarned() {
+    // The issue's example: the best design's kp is the last grid value, 60.
+    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "0.5:4:100", "--kp", "5:60:100",
+                                                                 "--max-overshoot", "2"},
+                                       600000);
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    const QJsonArray index = o["best"].toObject()["index"].toArray();
+    QCOMPARE(index[1].toInt(), 99);
+    QCOMPARE(o["best"].toObject()["kp"].toDouble(), 60.0);
+    QVERIFY(o["diagnosis"].toObject()["edges"].toObject()["kp_upper"].toBool());
+    QVERIFY(!o["diagnosis"].toObject()["edges"].toObject()["kp_lower"].toBool());
+    bool said = false;
+    for (const QJsonValue& w : o["warnings"].toArray())
+        said = said || w.toString() == "kp = 60 (the best design) is the upper end of the kp range 5..60: "
+                                       "the optimum may lie above; widen the kp range beyond 60";
+    QVERIFY2(said, QJsonDocument(o["warnings"].toArray()).toJson().constData());
+    // The settle criterion is judged on a run of tf + 2 x the settle limit (130 + 200 s).
+    QCOMPARE(o["duration"].toDouble(), 330.0);
+    QVERIFY(o["best"].toObject()["checks"].toObject()["settle"].toBool());
+    const QJsonObject ms = o["best"].toObject()["move_and_settle"].toObject();
+    QVERIFY(ms["settled"].toBool());
+    QVERIFY(ms["settle_time"].toDouble() <= 100.0);
 }
 
 void TstCliSweep::badGridExitsWithTwo_data() {

@@ -164,8 +164,42 @@ inline bool sameComplexSet(std::vector<std::complex<double>> a, QSharedPointer<Q
     return true;
 }
 
+/**
+ * The plot shows the run: every sample when it has at most 16 384 (exactly, in order), else a
+ * decimation to the extremes, which is checked as such: at most 2 x 8192 + 2 points, each one a
+ * sample (t_k, y_k) of the run in increasing k, the last sample included, and (for a run without
+ * a non-finite sample, whose bucket keeps that sample instead) the first sample and the run's
+ * largest and smallest values drawn.
+ */
 inline bool sameSignal(QSharedPointer<QCPGraphDataContainer> data, const std::vector<double>& t,
                        const std::vector<double>& y) {
+    if (t.size() > 16384 && data->size() < static_cast<int>(t.size())) {
+        if (data->size() > 2 * 8192 + 2 || data->isEmpty())
+            return false;
+        std::size_t k = 0;
+        double drawnMax = -INFINITY, drawnMin = INFINITY;
+        for (auto it = data->constBegin(); it != data->constEnd(); ++it) {
+            const auto found = std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(k), t.end(), it->key);
+            if (found == t.end() || *found != it->key)
+                return false;
+            k = static_cast<std::size_t>(found - t.begin());
+            if (!(it->value == y[k] || (std::isnan(it->value) && std::isnan(y[k]))))
+                return false;
+            if (std::isfinite(it->value)) {
+                drawnMax = std::max(drawnMax, it->value);
+                drawnMin = std::min(drawnMin, it->value);
+            }
+        }
+        double runMax = -INFINITY, runMin = INFINITY;
+        bool allFinite = true;
+        for (double v : y) {
+            allFinite = allFinite && std::isfinite(v);
+            runMax = std::max(runMax, v);
+            runMin = std::min(runMin, v);
+        }
+        return (data->constEnd() - 1)->key == t.back() &&
+               (!allFinite || (data->constBegin()->key == t.front() && drawnMax == runMax && drawnMin == runMin));
+    }
     if (data->size() != static_cast<int>(t.size()))
         return false;
     int i = 0;

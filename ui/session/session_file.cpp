@@ -264,7 +264,9 @@ QJsonObject sessionToJson(const Session& s) {
             {"pi_discretization", QString::fromStdString(discretizationName(s.piDiscretization))},
             {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
                                           {"max_overshoot_pct", s.spec.maxOvershootPct},
-                                          {"max_error_pct", s.spec.maxErrorPct}}},
+                                          {"max_error_pct", s.spec.maxErrorPct},
+                                          {"in_position_window_mm", s.spec.inPositionWindowMm},
+                                          {"max_settle_time", s.spec.maxSettleTimeSeconds}}},
             {"snapshots", snapshots}};
 }
 
@@ -328,6 +330,11 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             if (s.spec.maxOvershootPct < 0)
                 throw FormatError{"specification.max_overshoot_pct", QStringLiteral("must be >= 0")};
             s.spec.maxErrorPct = spec.positive("max_error_pct");
+            // Move-and-settle (issue 19): optional, files written before it keep the defaults.
+            if (spec.has("in_position_window_mm"))
+                s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
+            if (spec.has("max_settle_time"))
+                s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
             spec.finish();
         }
         const QJsonValue snaps = r.get("snapshots");

@@ -74,7 +74,8 @@ void TstTuningSession::invalidValueIsReportedNotThrown() {
     TuningSession s;
     s.setKp(0, -1.0); // a programmatic bad value: the evaluation names the field
     QVERIFY(!s.axisEvaluation(0).ok);
-    QCOMPARE(QString::fromStdString(s.axisEvaluation(0).errorField), QString("kp"));
+    // The session path (AxisEvaluation::errorField), as for every field (issue 19).
+    QCOMPARE(QString::fromStdString(s.axisEvaluation(0).errorField), QString("axes[0].gt.kp"));
     QVERIFY(s.axisEvaluation(1).ok);
 }
 

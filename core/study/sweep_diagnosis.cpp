@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/sweep_diagnosis.h"
+
+#include "core/model/number_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace xyt {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr SpecCriterion kCriteria[] = {SpecCriterion::Stable,       SpecCriterion::SettlingTime,
+                                       SpecCriterion::Overshoot,    SpecCriterion::NoSaturation,
+                                       SpecCriterion::TrackingError, SpecCriterion::Settle};
+
+/// What a criterion is called in a sentence, and the unit of its value.
+struct Wording {
+    const char* name;
+    const char* unit;
+};
+Wording wording(SpecCriterion c) {
+    switch (c) {
+    case SpecCriterion::Stable: return {"stability", ""};
+    case SpecCriterion::SettlingTime: return {"step settling time", " s"};
+    case SpecCriterion::Overshoot: return {"step overshoot", " %"};
+    case SpecCriterion::NoSaturation: return {"clipped time", " s"};
+    case SpecCriterion::TrackingError: return {"max tracking error", " % of the travel"};
+    case SpecCriterion::Settle: return {"settle time after the move", " s"};
+    }
+    return {"", ""};
+}
+
+bool passes(const SpecificationCheck& c, SpecCriterion criterion) {
+    switch (criterion) {
+    case SpecCriterion::Stable: return c.stable;
+    case SpecCriterion::SettlingTime: return c.settlingTime;
+    case SpecCriterion::Overshoot: return c.overshoot;
+    case SpecCriterion::NoSaturation: return c.noSaturation;
+    case SpecCriterion::TrackingError: return c.trackingError;
+    case SpecCriterion::Settle: return c.settle;
+    }
+    return false;
+}
+
+double limitOf(const Specification& spec, SpecCriterion c) {
+    switch (c) {
+    case SpecCriterion::Stable: return 0.0;
+    case SpecCriterion::SettlingTime: return spec.maxSettlingTimeSeconds;
+    case SpecCriterion::Overshoot: return spec.maxOvershootPct;
+    case SpecCriterion::NoSaturation: return 0.0;
+    case SpecCriterion::TrackingError: return spec.maxErrorPct;
+    case SpecCriterion::Settle: return spec.maxSettleTimeSeconds;
+    }
+    return 0.0;
+}
+
+/// The value a point has on a criterion (smaller is better), or nullopt when it has none.
+std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
+    if (!p.computed)
+        return std::nullopt;
+    const bool stepDefined = p.stable && p.metricsFinite;
+    switch (c) {
+    case SpecCriterion::Stable: return std::nullopt;
+    case SpecCriterion::SettlingTime:
+        return stepDefined ? std::optional(p.step.settlingTimeSeconds) : std::nullopt;
+    case SpecCriterion::Overshoot: return stepDefined ? std::optional(p.step.overshootPct) : std::nullopt;
+    case SpecCriterion::NoSaturation:
+        return p.metricsFinite ? std::optional(p.tracking.saturatedTimeSeconds) : std::nullopt;
+    case SpecCriterion::TrackingError:
+        return p.metricsFinite ? std::optional(p.tracking.maxAbsErrorPct) : std::nullopt;
+    case SpecCriterion::Settle:
+        return p.move && p.move->settleTimeSeconds ? p.move->settleTimeSeconds : std::nullopt;
+    }
+    return std::nullopt;
+}
+
+/// Rounded up to 3 significant digits (a limit to suggest must let the value pass).
+double roundUp3(double v) {
+    if (!(v > 0.0) || !std::isfinite(v))
+        return v;
+    const double scale = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
+    const double r = std::ceil(v / scale) * scale;
+    return r >= v ? r : std::nextafter(r, std::numeric_limits<double>::infinity());
+}
+
+std::string at(const DesignSweepResult& r, std::size_t i) {
+    return "wn = " + formatNumber(r.points[i].wn, 4) + " rad/s, kp = " + formatNumber(r.points[i].kp, 4);
+}
+
+/// One edge warning: "kp = 60 is the upper end of the kp range 5..60: ...".
+std::string edgeWarning(const char* axis, const std::vector<double>& values, bool upper) {
+    const std::string v = formatNumber(upper ? values.back() : values.front(), 6);
+    return std::string(axis) + " = " + v + " (the best design) is the " + (upper ? "upper" : "lower") +
+           " end of the " + axis + " range " + formatNumber(values.front(), 6) + ".." +
+           formatNumber(values.back(), 6) + ": the optimum may lie " + (upper ? "above" : "below") +
+           "; widen the " + axis + " range " + (upper ? "beyond " : "below ") + v;
+}
+
+} // namespace
+
+std::string specCriterionName(SpecCriterion criterion) {
+    switch (criterion) {
+    case SpecCriterion::Stable: return "stable";
+    case SpecCriterion::SettlingTime: return "settling_time";
+    case SpecCriterion::Overshoot: return "overshoot";
+    case SpecCriterion::NoSaturation: return "no_saturation";
+    case SpecCriterion::TrackingError: return "tracking_error";
+    case SpecCriterion::Settle: return "settle";
+    }
+    return "";
+}
+
+SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specification& spec) {
+    spec.validate();
+    SweepDiagnosis d;
+    const auto& points = result.points;
+    const bool anyComputed =
+        std::any_of(points.begin(), points.end(), [](const DesignPoint& p) { return p.computed; });
+    const bool anyFeasible =
+        std::any_of(points.begin(), points.end(), [](const DesignPoint& p) { return p.computed && p.feasible; });
+    d.noneFeasible = anyComputed && !anyFeasible;
+
+    if (d.noneFeasible) {
+        // (a) Criteria that fail everywhere, with the best value the grid reaches on each.
+        const bool settleApplies = std::any_of(points.begin(), points.end(), [](const DesignPoint& p) {
+            return p.computed && p.check.settleApplies;
+        });
+        for (SpecCriterion c : kCriteria) {
+            if (c == SpecCriterion::Settle && !settleApplies)
+                continue;
+            const bool passedSomewhere = std::any_of(points.begin(), points.end(), [&](const DesignPoint& p) {
+                return p.computed && passes(p.check, c);
+            });
+            if (passedSomewhere)
+                continue;
+            CriterionFailure f;
+            f.criterion = c;
+            f.limit = limitOf(spec, c);
+            f.bestValue = kNaN;
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                const auto v = valueOf(points[i], c);
+                if (v && std::isfinite(*v) && (!f.bestIndex || *v < f.bestValue)) {
+                    f.bestIndex = i;
+                    f.bestValue = *v;
+                }
+            }
+            const Wording w = wording(c);
+            std::string text;
+            if (c == SpecCriterion::Stable)
+                text = "no design of the grid is stable";
+            else if (c == SpecCriterion::Settle && !f.bestIndex)
+                text = "no design of the grid settles into the " + formatNumber(spec.inPositionWindowMm) +
+                       " mm window within the run (limit " + formatNumber(f.limit) + " s after the move)";
+            else {
+                text = std::string("the ") + w.name + " limit (" + formatNumber(f.limit) + w.unit +
+                       ") fails at every design of the grid";
+                if (f.bestIndex)
+                    text += "; the smallest " + std::string(w.name) + " found is " + formatNumber(f.bestValue, 4) +
+                            w.unit + " at " + at(result, *f.bestIndex);
+            }
+            d.warnings.push_back(text);
+            d.failingEverywhere.push_back(f);
+        }
+
+        // The least-violating design: smallest total normalized violation.
+        double maxClipped = 0.0;
+        for (const DesignPoint& p : points)
+            if (p.computed && p.metricsFinite)
+                maxClipped = std::max(maxClipped, p.tracking.saturatedTimeSeconds);
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const DesignPoint& p = points[i];
+            if (!p.computed || !p.stable || !p.metricsFinite)
+                continue;
+            double violation = 0.0;
+            for (SpecCriterion c : kCriteria) {
+                if (c == SpecCriterion::Stable || passes(p.check, c))
+                    continue;
+                const double limit = limitOf(spec, c);
+                if (c == SpecCriterion::NoSaturation) {
+                    violation += maxClipped > 0.0 ? p.tracking.saturatedTimeSeconds / maxClipped : 1.0;
+                } else if (c == SpecCriterion::Settle) {
+                    const double v = p.move && p.move->settleTimeSeconds
+                                         ? *p.move->settleTimeSeconds
+                                         : (p.move ? p.move->runEndSeconds - p.move->moveEndSeconds : limit);
+                    violation += std::max(0.0, v - limit) / limit + (p.move && p.move->settled ? 0.0 : 1.0);
+                } else {
+                    const double scale = c == SpecCriterion::Overshoot ? std::max(limit, 1.0) : limit;
+                    violation += std::max(0.0, *valueOf(p, c) - limit) / scale;
+                }
+            }
+            if (!d.leastViolating || violation < d.leastViolation) {
+                d.leastViolating = i;
+                d.leastViolation = violation;
+            }
+        }
+        if (d.leastViolating) {
+            const DesignPoint& p = points[*d.leastViolating];
+            Specification relaxed = spec;
+            bool possible = true;
+            std::vector<std::string> changes;
+            for (SpecCriterion c : kCriteria) {
+                if (passes(p.check, c))
+                    continue;
+                const auto v = valueOf(p, c);
+                if (c == SpecCriterion::NoSaturation || c == SpecCriterion::Stable || !v ||
+                    (c == SpecCriterion::Settle && p.move && p.move->windowMm != spec.inPositionWindowMm)) {
+                    possible = false;
+                    continue;
+                }
+                const double limit = roundUp3(*v);
+                switch (c) {
+                case SpecCriterion::SettlingTime: relaxed.maxSettlingTimeSeconds = limit; break;
+                case SpecCriterion::Overshoot: relaxed.maxOvershootPct = limit; break;
+                case SpecCriterion::TrackingError: relaxed.maxErrorPct = limit; break;
+                case SpecCriterion::Settle: relaxed.maxSettleTimeSeconds = limit; break;
+                default: break;
+                }
+                changes.push_back(std::string(wording(c).name) + " <= " + formatNumber(limit) + wording(c).unit);
+            }
+            std::string text = "least-violating design: " + at(result, *d.leastViolating) + " (point " +
+                               std::to_string(*d.leastViolating) + ")";
+            if (possible && !changes.empty()) {
+                d.relaxed = relaxed;
+                text += "; it meets the specification with ";
+                for (std::size_t k = 0; k < changes.size(); ++k)
+                    text += (k ? ", " : "") + changes[k];
+            } else if (!possible) {
+                text += "; relaxing a limit does not make it pass (it clips the actuator or never settles)";
+            }
+            d.warnings.push_back(text);
+        }
+    }
+
+    // (b) The best design on the edge of the grid.
+    if (result.bestIndex && !result.kpValues.empty()) {
+        d.bestIndex = result.bestIndex;
+        const std::size_t nKp = result.kpValues.size();
+        const std::size_t iWn = *result.bestIndex / nKp, iKp = *result.bestIndex % nKp;
+        if (result.wnValues.size() > 1) {
+            d.wnAtLowerEdge = iWn == 0;
+            d.wnAtUpperEdge = iWn + 1 == result.wnValues.size();
+        }
+        if (nKp > 1) {
+            d.kpAtLowerEdge = iKp == 0;
+            d.kpAtUpperEdge = iKp + 1 == nKp;
+        }
+        if (d.wnAtLowerEdge || d.wnAtUpperEdge)
+            d.warnings.push_back(edgeWarning("wn", result.wnValues, d.wnAtUpperEdge));
+        if (d.kpAtLowerEdge || d.kpAtUpperEdge)
+            d.warnings.push_back(edgeWarning("kp", result.kpValues, d.kpAtUpperEdge));
+    }
+    return d;
+}
+
+} // namespace xyt
