@@ -37,7 +37,7 @@ Specification initialSpecification(const Session& session) {
 namespace {
 
 const SweepCriterion kCriteria[] = {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
-                                    SweepCriterion::MaxU};
+                                    SweepCriterion::MaxU, SweepCriterion::Settle};
 
 QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int decimals, const QString& suffix) {
     auto* box = new QDoubleSpinBox;
@@ -193,9 +193,15 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     // Run, Cancel and the progress stay at the top of the tab, outside the scrolling controls:
     // in reach at 1366x768, and never moved by the text of a result.
+    relax_ = new QPushButton(tr("Relax the limits"));
+    relax_->setToolTip(tr("Set the specification to the smallest limits the least-violating design "
+                          "(▲) meets (an undoable step)"));
+    relax_->setVisible(false);
+    connect(relax_, &QPushButton::clicked, this, &DesignSpaceView::relaxSpecification);
     auto* actions = new QHBoxLayout;
     actions->addWidget(run_);
     actions->addWidget(cancel_);
+    actions->addWidget(relax_);
     actions->addWidget(progress_, 1);
 
     auto* controls = new QVBoxLayout;
@@ -323,8 +329,17 @@ void DesignSpaceView::run() {
         problem.plant = settings.gt.plant;
         problem.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
         problem.dtSeconds = s.trajectory.dtSeconds;
-        problem.reference = sampled(axisReference(s.trajectory, axis),
-                                    sampleTimes(s.trajectory.effectiveDurationSeconds(), s.trajectory.dtSeconds));
+        // A point-to-point move is judged on its move and settle too: the run lasts the move
+        // plus twice the allowed settle time (moveSweepDurationSeconds), however long the
+        // session's automatic duration is.
+        const TrajectorySettings& t = s.trajectory;
+        const bool cubic = t.kind == TrajectoryKind::Cubic;
+        const double duration = cubic && t.durationSeconds == 0.0
+                                    ? moveSweepDurationSeconds(t.tfSeconds, s.spec.maxSettleTimeSeconds)
+                                    : t.effectiveDurationSeconds();
+        problem.reference = sampled(axisReference(t, axis), sampleTimes(duration, t.dtSeconds));
+        if (cubic)
+            problem.move = PointToPointMove{t.x0, t.xf, t.tfSeconds};
         problem.spec = s.spec; // the one specification of the session
         problem.spec.umaxVolts = s.umaxVolts;
         problem.spec.validate();
@@ -417,6 +432,15 @@ void DesignSpaceView::showOutcome() {
     }
     progress_->setValue(100);
     QString text = tr("Done: %1 designs, %2 stable, %3 feasible.").arg(total).arg(r.stableCount).arg(r.feasibleCount);
+    diagnosis_ = diagnoseSweep(r, problem_ ? problem_->spec : session_->session().spec);
+    plot_->setLeastViolating(diagnosis_->leastViolating && !r.bestIndex
+                                 ? std::optional<std::pair<double, double>>{{r.points[*diagnosis_->leastViolating].wn,
+                                                                             r.points[*diagnosis_->leastViolating].kp}}
+                                 : std::nullopt);
+    relax_->setVisible(!r.bestIndex && diagnosis_->relaxed.has_value());
+    for (const std::string& w : diagnosis_->warnings)
+        if (r.bestIndex || diagnosis_->noneFeasible)
+            text += QStringLiteral("\n") + QString::fromStdString(w);
     if (r.bestIndex) {
         const DesignPoint& b = r.points[*r.bestIndex];
         text += tr("\nBest on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.")
@@ -427,40 +451,24 @@ void DesignSpaceView::showOutcome() {
                         .arg(num(p.wn), num(p.kp), crit, num(criterionValue(p, r.criterion)));
         }
         text += tr("\nClick a cell to load its design.");
-        setStatus(text);
+        setStatus(text, diagnosis_->onEdge());
         return;
     }
-    // No feasible design: say which limit is to blame.
-    int onlyOvershoot = 0;
-    double smallestOvershoot = std::numeric_limits<double>::infinity();
-    int pass[4] = {0, 0, 0, 0};
-    for (const DesignPoint& p : r.points) {
-        const SpecificationCheck& c = p.check;
-        pass[0] += c.settlingTime;
-        pass[1] += c.overshoot;
-        pass[2] += c.noSaturation;
-        pass[3] += c.trackingError;
-        if (p.computed && p.metricsFinite && c.stable && c.settlingTime && c.noSaturation && c.trackingError &&
-            !c.overshoot) {
-            ++onlyOvershoot;
-            smallestOvershoot = std::min(smallestOvershoot, p.step.overshootPct);
-        }
-    }
-    if (onlyOvershoot > 0) {
-        text += tr("\nNo feasible design: every GT design overshoots; relax the overshoot limit. "
-                   "%1 designs meet every other criterion, the least overshoot among them is %2 %.")
-                    .arg(onlyOvershoot)
-                    .arg(num(smallestOvershoot, 3));
-    } else {
-        text += tr("\nNo feasible design in this grid. Designs passing each criterion: settling %1, "
-                   "overshoot %2, |u| %3, error %4 (of %5). Widen the ranges or relax the limits.")
-                    .arg(pass[0])
-                    .arg(pass[1])
-                    .arg(pass[2])
-                    .arg(pass[3])
-                    .arg(total);
-    }
+    // No feasible design: the core's diagnosis says which limit is to blame, the best value
+    // the grid reaches for it, and the least-violating design (marked ▲, offered to relax to).
+    if (diagnosis_->failingEverywhere.size() == 1 &&
+        diagnosis_->failingEverywhere.front().criterion == SpecCriterion::Overshoot)
+        text += tr("\nEvery GT design overshoots (its reference model is type 2); relax the overshoot limit.");
     setStatus(text, true);
+}
+
+void DesignSpaceView::relaxSpecification() {
+    if (!diagnosis_ || !diagnosis_->relaxed)
+        return;
+    Specification relaxed = *diagnosis_->relaxed;
+    relaxed.umaxVolts = session_->session().spec.umaxVolts;
+    session_->setSpecification(relaxed);
+    relax_->setVisible(false);
 }
 
 void DesignSpaceView::applySpecification() {

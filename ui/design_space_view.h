@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/study/design_sweep.h"
+#include "core/study/sweep_diagnosis.h"
 #include "core/session/session.h"
 
 #include <QWidget>
@@ -55,6 +56,8 @@ public:
     DesignSpacePlot* plot() const { return plot_; }
     QPushButton* runButton() const { return run_; }
     QPushButton* cancelButton() const { return cancel_; }
+    /// Shown when no design is feasible and the diagnosis offers a relaxed specification.
+    QPushButton* relaxButton() const { return relax_; }
     QProgressBar* progressBar() const { return progress_; }
     QString statusText() const;
     QString readoutText() const;
@@ -90,6 +93,7 @@ private:
     void showOutcome();
     void updateCurrentDesign();
     void applySpecification();
+    void relaxSpecification();
     void showHover(std::optional<std::pair<std::size_t, std::size_t>> cell);
     void loadCell(std::size_t iWn, std::size_t iKp);
     void setStatus(const QString& text, bool isError = false);
@@ -111,6 +115,8 @@ private:
     DesignSpacePlot* plot_;
     QLabel* readout_;
     QScrollArea* controlPanel_ = nullptr;
+    QPushButton* relax_ = nullptr;
+    std::optional<SweepDiagnosis> diagnosis_;
     QLabel* status_;
     QPushButton* run_;
     QPushButton* cancel_;

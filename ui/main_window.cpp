@@ -80,7 +80,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     lowerTabs_ = new QTabWidget(this);
     upperTabs_->addTab(rootLocusPlot_, tr("&Root locus"));
     upperTabs_->addTab(parameterLocusPlot_, tr("P&arameter locus"));
-    upperTabs_->addTab(poleZeroPlot_, tr("&Pole-zero map"));
+    upperTabs_->addTab(poleZeroPlot_, tr("&Pole-zero"));
     upperTabs_->addTab(bodePlot_, tr("&Bode"));
     upperTabs_->addTab(nyquistPlot_, tr("&Nyquist"));
     sweptParameter_ = new QComboBox(this);
@@ -135,7 +135,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     equationsLayout->addWidget(equationsScroll);
     rightLayout->addWidget(metricsBox);
     rightLayout->addWidget(equationsBox, 1);
-    right->setMinimumWidth(390);
+    right->setMinimumWidth(400);
 
     mainSplitter_ = new QSplitter(Qt::Horizontal, this);
     mainSplitter_->addWidget(controlScroll);

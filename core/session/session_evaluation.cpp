@@ -5,6 +5,7 @@
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/simulation/trajectory.h"
+#include "core/simulation/zpetc_step.h"
 
 #include <algorithm>
 #include <cmath>
@@ -194,7 +195,12 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         out.run = out.feedbackOnlyRun;
     }
     out.metrics = trackingMetrics(out.run);
-    out.step = discreteStep(*out.pp);
+    // The step figures of the system the axis runs: with ZPETC the step previewed through the
+    // feedforward and the loop (issue 19: the loop Kf B / T alone overshoots 52 % through the
+    // NMP zero, which the axis never does); without it the loop alone.
+    out.step = pp.zpetcEnabled && out.zpetc && out.pp->closedLoop().isStable()
+                   ? zpetcStepCharacteristics(*out.pp, *out.zpetc)
+                   : discreteStep(*out.pp);
     if (!out.step.stable)
         out.warnings.push_back("the closed loop is unstable");
     if (out.metrics.saturated)

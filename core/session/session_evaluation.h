@@ -63,6 +63,9 @@ struct AxisEvaluation {
     std::optional<MoveSettleMetrics> moveSettle;
     /// The duration of this axis' run (the session's; see RunDuration).
     RunDuration duration;
+    /// The unit step of the system the axis runs: G_R (GT); the pole-placement loop Kf B / T
+    /// alone, or with ZPETC enabled the step previewed through the feedforward and the loop
+    /// (zpetcStepCharacteristics).
     StepCharacteristics step;
     /// Pass/fail of each criterion of the session's specification.
     SpecificationCheck check;

@@ -2,6 +2,7 @@
 // GUI tests of the design-space view: drive the real buttons and the plot offscreen; compare the
 // heat map with the core's sweepDesignSpace called directly on the same problem.
 #include "ui/plots/design_space_plot.h"
+#include "core/study/sweep_diagnosis.h"
 #include "ui/design_space_view.h"
 #include "ui/session/tuning_session.h"
 #include "core/session/session_evaluation.h"
@@ -35,10 +36,15 @@ DesignProblem expectedProblem(const Session& s, int axis, double maxOvershootPct
     p.plant = s.axes[static_cast<std::size_t>(axis)].gt.plant;
     p.modelUnitsPerPositionUnit = s.axes[static_cast<std::size_t>(axis)].gt.modelUnitsPerPositionUnit;
     p.dtSeconds = s.trajectory.dtSeconds;
-    p.reference = sampled(axisReference(s.trajectory, axis),
-                          sampleTimes(s.trajectory.effectiveDurationSeconds(), s.trajectory.dtSeconds));
+    // A cubic with the automatic duration is studied over its move plus twice the allowed
+    // settle time, and judged on its move and settle (design_sweep.h, moveSweepDurationSeconds).
+    const TrajectorySettings& t = s.trajectory;
+    p.spec = s.spec;
     p.spec.umaxVolts = s.umaxVolts;
     p.spec.maxOvershootPct = maxOvershootPct;
+    p.reference = sampled(axisReference(t, axis),
+                          sampleTimes(moveSweepDurationSeconds(t.tfSeconds, p.spec.maxSettleTimeSeconds), t.dtSeconds));
+    p.move = PointToPointMove{t.x0, t.xf, t.tfSeconds};
     return p;
 }
 } // namespace
@@ -54,6 +60,7 @@ private slots:
     void clickOnACellLoadsThatDesign();
     void hoverShowsTheFiguresAndFailures();
     void overshootOnlyFailureIsExplained();
+    void bestOnTheEdgeIsWarned();
     void cancelStopsAStudyAndKeepsTheWindowResponsive();
     void newRunReplacesARunningOne();
     void destroyingWhileRunningIsSafe();
@@ -132,6 +139,12 @@ void TstDesignSpaceView::heatMapHoldsTheCoreValues() {
     QCOMPARE(actual.feasibleCount, expected.feasibleCount);
     QVERIFY(expected.feasibleCount > 0);
     QVERIFY(expected.bestIndex.has_value());
+    // Whatever the core's diagnosis says (e.g. the best design on the edge of the grid, with
+    // the range to widen) is said in the status.
+    const SweepDiagnosis d = diagnoseSweep(expected, problem.spec);
+    for (const std::string& w : d.warnings)
+        QVERIFY2(view_->statusText().contains(QString::fromStdString(w)), w.c_str());
+    QVERIFY(!view_->relaxButton()->isVisible());
 
     QCPColorMapData* map = view_->plot()->colorMap()->data();
     QCPColorMapData* status = view_->plot()->statusMap()->data();
@@ -249,14 +262,56 @@ void TstDesignSpaceView::hoverShowsTheFiguresAndFailures() {
     QVERIFY2(text.contains("feasible: no") && text.contains("overshoot"), qPrintable(text));
 }
 
+void TstDesignSpaceView::bestOnTheEdgeIsWarned() {
+    // kp only up to 30 at overshoot <= 2 %: the ITAE keeps falling with kp (paper 000 Fig. 4),
+    // so the best design sits on the upper kp edge and the optimum may lie beyond it.
+    view_->wnMinBox()->setValue(0.2);
+    view_->wnMaxBox()->setValue(20.0);
+    view_->kpMinBox()->setValue(3.0);
+    view_->kpMaxBox()->setValue(30.0);
+    view_->wnCountBox()->setValue(6);
+    view_->kpCountBox()->setValue(6);
+    view_->overshootBox()->setValue(2.0);
+    emit view_->overshootBox()->editingFinished();
+    runAndWait();
+    const DesignSweepResult& r = *view_->result();
+    QVERIFY(r.bestIndex.has_value());
+    Specification spec = session_->session().spec;
+    spec.umaxVolts = session_->session().umaxVolts;
+    const SweepDiagnosis d = diagnoseSweep(r, spec);
+    QVERIFY(d.kpAtUpperEdge);
+    QVERIFY2(view_->statusText().contains("upper end of the kp range"), qPrintable(view_->statusText()));
+}
+
 void TstDesignSpaceView::overshootOnlyFailureIsExplained() {
     setSmallGrid(8, 0.0);
     runAndWait();
     QCOMPARE(view_->result()->feasibleCount, 0);
-    QVERIFY2(view_->statusText().contains("every GT design overshoots; relax the overshoot limit"),
+    // The core's diagnosis: the criterion failing everywhere, its best value on the grid, and
+    // the least-violating design, marked and offered as a relaxed specification.
+    Specification spec = session_->session().spec;
+    spec.umaxVolts = session_->session().umaxVolts;
+    const SweepDiagnosis d = diagnoseSweep(*view_->result(), spec);
+    QVERIFY(d.noneFeasible && !d.warnings.empty());
+    for (const std::string& w : d.warnings)
+        QVERIFY2(view_->statusText().contains(QString::fromStdString(w)), w.c_str());
+    QVERIFY2(view_->statusText().contains("fails at every design of the grid") &&
+                 view_->statusText().contains("Every GT design overshoots"),
              qPrintable(view_->statusText()));
     QCOMPARE(view_->plot()->bestMarker()->dataCount(), 0);
     QCOMPARE(view_->plot()->outlineCount(), 0);
+    QCOMPARE(view_->plot()->leastViolatingMarker()->dataCount(), 1);
+    QVERIFY(view_->relaxButton()->isVisible());
+    // Relaxing sets the session's specification (one undoable step) and the same study, judged
+    // again, has the least-violating design feasible.
+    const int before = session_->undoStack()->count();
+    QTest::mouseClick(view_->relaxButton(), Qt::LeftButton);
+    QCOMPARE(session_->undoStack()->count(), before + 1);
+    QVERIFY(session_->session().spec.maxOvershootPct > 0.0);
+    QVERIFY2(view_->result()->feasibleCount >= 1, qPrintable(view_->statusText()));
+    QCOMPARE(view_->plot()->leastViolatingMarker()->dataCount(), 0);
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().spec.maxOvershootPct, 0.0);
 }
 
 void TstDesignSpaceView::cancelStopsAStudyAndKeepsTheWindowResponsive() {

@@ -7,6 +7,7 @@
 #include "core/design/guillemin_truxal.h"
 #include "ui/main_window.h"
 #include "ui/panels/metrics_panel.h"
+#include "ui/panels/number_field.h"
 #include "ui/panels/trajectory_editor.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/parameter_locus_plot.h"
@@ -54,6 +55,7 @@ private slots:
     void leftPanelFitsA1366x768Window();
     void valueTicksFitTheirPanel();
     void displayNumberHasSignificantDigits();
+    void moveAndSettleRowsShowTheCoreFigures();
     void metricsAreGroupedAndNeverCut_data();
     void metricsAreGroupedAndNeverCut();
 
@@ -237,7 +239,7 @@ void TstPlotReadability::coincidentPoleSetsAreDistinguishable() {
     QVERIFY(closed->scatterStyle().shape() != model->scatterStyle().shape());
     // Every set has a pole mark of its own (shape and size).
     QSet<QString> marks;
-    for (const QString& name : {"plant", "controller", "open loop", "closed loop", "reference model"}) {
+    for (const char* name : {"plant", "controller", "open loop", "closed loop", "reference model"}) {
         QCPGraph* g = plot->polesGraph(name);
         QVERIFY2(g, qPrintable(name));
         marks.insert(QString("%1/%2").arg(g->scatterStyle().shape()).arg(g->scatterStyle().size()));
@@ -361,6 +363,36 @@ void TstPlotReadability::displayNumberHasSignificantDigits() {
     QCOMPARE(displayNumber(-INFINITY), QString("n/a"));
 }
 
+void TstPlotReadability::moveAndSettleRowsShowTheCoreFigures() {
+    // The default cubic runs past tf until it settles (issue 19); the panel quotes the core's
+    // settle time after tf, final error and overrun, judged against the settle limit.
+    QTableWidget* table = window_->metricsPanel()->table();
+    for (int c = 0; c < 2; ++c) {
+        const AxisEvaluation& e = session_->axisEvaluation(c);
+        QVERIFY(e.moveSettle.has_value());
+        const MoveSettleMetrics& m = *e.moveSettle;
+        const QString settle = table->item(MetricsPanel::SettleAfterMove, c)->text();
+        if (m.settleTimeSeconds)
+            QVERIFY2(settle.startsWith(displayNumber(*m.settleTimeSeconds)), qPrintable(settle));
+        else
+            QVERIFY2(settle.startsWith("not settled"), qPrintable(settle));
+        QVERIFY(settle.endsWith(e.check.settle ? "✓" : "✗"));
+        QCOMPARE(table->item(MetricsPanel::FinalError, c)->text(), displayNumber(m.finalErrorMm));
+        QCOMPARE(table->item(MetricsPanel::FinalOvershoot, c)->text(), displayNumber(m.finalOvershootMm));
+    }
+    // A circle has no move to settle: the rows say so, unjudged.
+    TrajectorySettings t = session_->session().trajectory;
+    t.kind = TrajectoryKind::Circle;
+    session_->setTrajectory(t);
+    QCOMPARE(table->item(MetricsPanel::SettleAfterMove, 0)->text(), QString("—"));
+    // The settle limit edited in the panel is the session's, one undoable step.
+    auto* field = window_->metricsPanel()->specField("settle");
+    QVERIFY(field);
+    field->setValue(900.0);
+    emit field->valueAccepted(900.0);
+    QCOMPARE(session_->session().spec.maxSettleTimeSeconds, 900.0);
+}
+
 void TstPlotReadability::metricsAreGroupedAndNeverCut_data() {
     QTest::addColumn<bool>("polePlacement");
     QTest::addColumn<QSize>("size");
@@ -389,7 +421,7 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut() {
     QTest::qWait(50);
     QTableWidget* table = window_->metricsPanel()->table();
     QCOMPARE(table->item(MetricsPanel::TrackingGroup, 0)->text(), QString("Tracking the trajectory"));
-    QCOMPARE(table->item(MetricsPanel::StepGroup, 0)->text(), QString("Unit step of the closed loop"));
+    QCOMPARE(table->item(MetricsPanel::StepGroup, 0)->text(), QString("Unit step, as each axis runs"));
     QCOMPARE(table->columnSpan(MetricsPanel::StepGroup, 0), 3);
     // Every figure fits its column: no elided text, and the table fits its viewport.
     const int width = table->verticalHeader()->width() + table->horizontalHeader()->length();
@@ -400,6 +432,13 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut() {
                                                      .arg(width).arg(table->width())
                                                      .arg(table->verticalHeader()->width()).arg(widths)));
     const QFontMetrics fm(table->font());
+    QFont bold = table->font();
+    bold.setBold(true);
+    const int span = table->columnWidth(0) + table->columnWidth(1) + table->columnWidth(2);
+    for (int r = 0; r < MetricsPanel::RowCount; ++r)
+        if (MetricsPanel::isGroupRow(r))
+            QVERIFY2(QFontMetrics(bold).horizontalAdvance(table->item(r, 0)->text()) + 6 <= span,
+                     qPrintable(table->item(r, 0)->text()));
     for (int r = 0; r < MetricsPanel::RowCount; ++r)
         for (int c = 0; c < 3 && !MetricsPanel::isGroupRow(r); ++c) {
             const QString text = table->item(r, c)->text();

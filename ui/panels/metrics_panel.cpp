@@ -38,11 +38,16 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setVerticalHeaderLabels({QString(), tr("RMSE (mm)"), tr("max |e| (mm)"),
                                      tr("max |e| (%)"), tr("max |u| (V)"), tr("saturated (s)"),
                                      tr("ITAE (mm·s²)"), tr("ZPETC gain (%)"), QString(),
+                                     tr("settle time (s)"), tr("final e (mm)"),
+                                     tr("overrun (mm)"), QString(),
                                      tr("settling 2 % (s)"), tr("overshoot (%)"), QString(),
                                      tr("gain margin (dB)"), tr("phase margin (°)"),
                                      tr("delay margin (s)"), tr("Ms = max |S|")});
     table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
     table_->verticalHeaderItem(Itae)->setToolTip(tr("integral of t·|e(t)| over the run"));
+    table_->verticalHeaderItem(SettleAfterMove)->setToolTip(
+        tr("From the end of the move (tf) until |e| stays inside the in-position window"));
+    table_->verticalHeaderItem(FinalOvershoot)->setToolTip(tr("How far the axis went beyond the target, in the direction of travel"));
     table_->verticalHeaderItem(GainMargin)->setToolTip(
         tr("How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never"));
     table_->verticalHeaderItem(PhaseMargin)->setToolTip(tr("Phase lag that would bring L to −1 at the gain crossover"));
@@ -52,7 +57,8 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     // Group titles: which system and which signal each block of figures belongs to.
     const QList<QPair<int, QString>> groups = {
         {TrackingGroup, tr("Tracking the trajectory")},
-        {StepGroup, tr("Unit step of the closed loop")},
+        {MoveGroup, tr("Move and settle (point-to-point)")},
+        {StepGroup, tr("Unit step, as each axis runs")},
         {MarginGroup, tr("Loop margins (open loop L)")}};
     for (const auto& [row, title] : groups) {
         table_->setSpan(row, 0, 1, 3);
@@ -67,13 +73,14 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     }
     table_->item(StepGroup, 0)->setToolTip(
         tr("Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the "
-           "step of the feedback loop Kf·B/T alone, without the ZPETC feedforward."));
+           "step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the "
+           "step of the feedback loop Kf·B/T alone."));
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     // Columns as wide as their figures (nothing cut to "0.000562..."); the spec column takes
     // what is left.
     table_->horizontalHeader()->setMinimumSectionSize(36);
-    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Interactive);
+    table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Interactive);
     table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
     table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table_->setWordWrap(false);
@@ -101,6 +108,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Spec: settling ≤ (s)"), spec_["settling"]);
     form->addRow(tr("overshoot ≤ (%)"), spec_["overshoot"]);
     form->addRow(tr("max |e| ≤ (% travel)"), spec_["error"]);
+    spec_.insert("settle", new NumberField("max settle time", positive("max settle time"), this));
+    spec_.insert("window", new NumberField("in-position window", positive("in-position window"), this));
+    form->addRow(tr("settle after tf ≤ (s)"), spec_["settle"]);
+    form->addRow(tr("in-position window (mm)"), spec_["window"]);
     spec_["overshoot"]->setToolTip(tr("Every Guillemin–Truxal design overshoots a little on a step "
                                       "(its reference model is type 2), so 0 % fails them all."));
     layout->addLayout(form);
@@ -110,12 +121,28 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
             next.maxSettlingTimeSeconds = spec_["settling"]->value();
             next.maxOvershootPct = spec_["overshoot"]->value();
             next.maxErrorPct = spec_["error"]->value();
+            next.maxSettleTimeSeconds = spec_["settle"]->value();
+            next.inPositionWindowMm = spec_["window"]->value();
             if (!(next == current_))
                 emit specificationEdited(next);
         });
 }
 
 QString MetricsPanel::noticeText() const { return notices_->text(); }
+
+void MetricsPanel::fitColumns() {
+    // The axis columns as wide as their widest figure. Not ResizeToContents: that would count
+    // the group titles, which span all three columns, as column X's content.
+    const QFontMetrics fm(table_->font());
+    for (int c = 0; c < 2; ++c) {
+        int width = fm.horizontalAdvance(table_->horizontalHeaderItem(c) ? table_->horizontalHeaderItem(c)->text()
+                                                                         : QString());
+        for (int r = 0; r < RowCount; ++r)
+            if (!isGroupRow(r) && table_->item(r, c))
+                width = std::max(width, fm.horizontalAdvance(table_->item(r, c)->text()));
+        table_->setColumnWidth(c, width + 12);
+    }
+}
 
 void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
     const StabilityMargins& m = f.margins;
@@ -143,6 +170,7 @@ void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
         }
         table_->setItem(it.key(), axis, item);
     }
+    fitColumns();
 }
 
 void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluation& evaluation,
@@ -154,9 +182,13 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     spec_["settling"]->setValue(session.spec.maxSettlingTimeSeconds);
     spec_["overshoot"]->setValue(session.spec.maxOvershootPct);
     spec_["error"]->setValue(session.spec.maxErrorPct);
+    spec_["settle"]->setValue(session.spec.maxSettleTimeSeconds);
+    spec_["window"]->setValue(session.spec.inPositionWindowMm);
     QMap<int, QString> specText = {{MaxErrorPct, tr("≤ %1").arg(session.spec.maxErrorPct)},
                                    {MaxU, tr("≤ %1").arg(session.umaxVolts)},
                                    {Saturated, tr("no")},
+                                   {SettleAfterMove, tr("≤ %1").arg(session.spec.maxSettleTimeSeconds)},
+                                   {FinalError, tr("|e| ≤ %1").arg(session.spec.inPositionWindowMm)},
                                    {Settling, tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds)},
                                    {Overshoot, tr("≤ %1").arg(session.spec.maxOvershootPct)}};
     for (int r = 0; r < RowCount; ++r) {
@@ -188,6 +220,17 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             values[Improvement] = a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
                                       ? displayNumber(a.improvementPct)
                                       : tr("—");
+            if (a.moveSettle) {
+                const MoveSettleMetrics& ms = *a.moveSettle;
+                values[SettleAfterMove] = ms.diverged          ? tr("n/a")
+                                          : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
+                                                                 : tr("not settled");
+                values[FinalError] = displayNumber(ms.finalErrorMm);
+                values[FinalOvershoot] = displayNumber(ms.finalOvershootMm);
+            } else {
+                for (int r : {SettleAfterMove, FinalError, FinalOvershoot})
+                    values[r] = tr("—");
+            }
             values[Settling] = a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
             values[Overshoot] = a.step.stable ? displayNumber(a.step.overshootPct) : tr("unstable");
         }
@@ -197,11 +240,13 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         for (const std::string& w : a.warnings)
             notices << tr("%1: %2").arg(header, QString::fromStdString(w));
         // Which rows the specification judges, and whether this axis passes them.
-        const QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
+        QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
                                         {MaxU, a.check.noSaturation},
                                         {Saturated, a.check.noSaturation},
                                         {Settling, a.check.settlingTime},
                                         {Overshoot, a.check.overshoot}};
+        if (a.check.settleApplies)
+            judged[SettleAfterMove] = a.check.settle;
         for (int r = 0; r < RowCount; ++r) {
             if (isGroupRow(r) || isMarginRow(r))
                 continue;
@@ -223,6 +268,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             table_->setItem(r, c, item);
         }
     }
+    fitColumns();
     notices_->setText(notices.join(QLatin1Char('\n')));
     notices_->setVisible(!notices.isEmpty());
 }

@@ -35,9 +35,12 @@ public:
 
     /// Row order of the table: a group title row (spanning the columns) before each group.
     enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
+               MoveGroup, SettleAfterMove, FinalError, FinalOvershoot,
                StepGroup, Settling, Overshoot,
                MarginGroup, GainMargin, PhaseMargin, DelayMargin, PeakSensitivity, RowCount };
-    static bool isGroupRow(int row) { return row == TrackingGroup || row == StepGroup || row == MarginGroup; }
+    static bool isGroupRow(int row) {
+        return row == TrackingGroup || row == MoveGroup || row == StepGroup || row == MarginGroup;
+    }
     static bool isMarginRow(int row) { return row > MarginGroup; }
     /// Fills the loop-margin rows of column @p axis from the core's frequency analysis.
     void showMargins(int axis, const AxisFrequencyAnalysis& analysis);
@@ -46,6 +49,7 @@ signals:
     void specificationEdited(const Specification& spec);
 
 private:
+    void fitColumns();
     QTableWidget* table_;
     QLabel* notices_;
     QMap<QString, NumberField*> spec_;

@@ -88,6 +88,8 @@ QString metricLabel(SweepCriterion metric) {
         return QObject::tr("RMSE");
     case SweepCriterion::MaxU:
         return QObject::tr("max |u|");
+    case SweepCriterion::Settle:
+        return QObject::tr("settle time");
     }
     return {};
 }
@@ -95,7 +97,10 @@ QString metricLabel(SweepCriterion metric) {
 QString metricAxisLabel(SweepCriterion metric) {
     // ITAE = integral of t |e| dt: trajectory unit (mm) times s^2.
     const bool itae = metric == SweepCriterion::Itae;
-    const QString unit = itae ? QObject::tr("mm·s²") : metric == SweepCriterion::MaxU ? QObject::tr("V") : QObject::tr("mm");
+    const QString unit = itae                                ? QObject::tr("mm·s²")
+                         : metric == SweepCriterion::MaxU     ? QObject::tr("V")
+                         : metric == SweepCriterion::Settle   ? QObject::tr("s after tf")
+                                                              : QObject::tr("mm");
     return QObject::tr("%1%2 (%3)").arg(metricLabel(metric), itae ? QObject::tr(" ∫t|e|dt") : QString(), unit);
 }
 
@@ -237,8 +242,11 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
     refined_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(Qt::black, 1.2),
                                             QBrush(QColor(0xff, 0x30, 0xd0)), 10),
                       tr("refined best"));
+    leastViolating_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssTriangle, QPen(Qt::black, 2),
+                                                   QBrush(QColor(0xff, 0xd0, 0x30)), 13),
+                             tr("least-violating design"));
     addLayer("markers", layer("overlay-grid"), QCustomPlot::limAbove);
-    for (QCPGraph* g : {current_, best_, refined_})
+    for (QCPGraph* g : {current_, best_, refined_, leastViolating_})
         g->setLayer("markers");
     // The legend goes in a row under the map, where it hides no cell.
     legend->setVisible(true);
@@ -278,6 +286,17 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
 }
 
 QString DesignSpacePlot::noticeText() const { return notice_->text(); }
+
+void DesignSpacePlot::setLeastViolating(std::optional<std::pair<double, double>> wnKp) {
+    leastViolating_->data()->clear();
+    if (wnKp)
+        leastViolating_->addData(wnKp->first, wnKp->second);
+    if (wnKp)
+        leastViolating_->addToLegend();
+    else
+        leastViolating_->removeFromLegend();
+    replot(QCustomPlot::rpQueuedReplot);
+}
 
 void DesignSpacePlot::showContextMenu(const QPoint& pos) {
     QMenu menu(this);
@@ -334,7 +353,8 @@ void DesignSpacePlot::showResult(const DesignSweepResult& result, bool logGrid, 
     if (result.refined)
         refined_->addData(result.refined->point.wn, result.refined->point.kp);
     // The legend lists only the markers drawn.
-    for (QCPGraph* g : {best_, refined_}) {
+    leastViolating_->data()->clear();
+    for (QCPGraph* g : {best_, refined_, leastViolating_}) {
         if (g->dataCount() > 0)
             g->addToLegend();
         else

@@ -73,6 +73,9 @@ public:
     QString noticeText() const;
     QCPGraph* bestMarker() const { return best_; }
     QCPGraph* refinedMarker() const { return refined_; }
+    QCPGraph* leastViolatingMarker() const { return leastViolating_; }
+    /// Marks the least-violating design (▲) of a study without a feasible one, or clears it.
+    void setLeastViolating(std::optional<std::pair<double, double>> wnKp);
     QCPGraph* currentMarker() const { return current_; }
     /// One curve per loop of feasibleOutline (the dark halo curves are not counted).
     int outlineCount() const { return static_cast<int>(outline_.size()); }
@@ -109,6 +112,7 @@ private:
     std::vector<QCPCurve*> outlineHalo_;
     QCPGraph* best_;
     QCPGraph* refined_;
+    QCPGraph* leastViolating_;
     QCPGraph* current_;
     QPoint pressPos_;
 };

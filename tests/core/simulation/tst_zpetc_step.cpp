@@ -4,6 +4,7 @@
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
 #include "core/model/errors.h"
+#include "core/session/session_evaluation.h"
 #include "core/simulation/zpetc_step.h"
 #include "tests/support/tolerance.h"
 
@@ -20,6 +21,7 @@ private slots:
     void equalsThePartialSumsOfTheZeroPhaseFir_data();
     void equalsThePartialSumsOfTheZeroPhaseFir();
     void badBandThrows();
+    void sessionJudgesThePolePlacementAxisOnWhatItRuns();
 };
 
 void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir_data() {
@@ -72,6 +74,22 @@ void TstZpetcStep::badBandThrows() {
                                                          Polynomial::fromAscending({1.0, -0.2}), 0.07);
     QVERIFY_THROWS_EXCEPTION(InvalidInput, zpetcStepCharacteristics(loop, designZpetc(loop), 0.0));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, zpetcStepCharacteristics(loop, designZpetc(loop), 1.0));
+}
+
+void TstZpetcStep::sessionJudgesThePolePlacementAxisOnWhatItRuns() {
+    // Issue 19: the paper-001 x axis was marked failed for "overshoot 52.363 %", the step of its
+    // feedback loop alone; with ZPETC on, the session's step figures are the axis's own.
+    Session s;
+    s.axes[0].method = DesignMethod::PolePlacementZpetc;
+    const AxisEvaluation with = evaluateSession(s).axes[0];
+    QVERIFY(with.ok && with.pp && with.zpetc);
+    const StepCharacteristics expected = zpetcStepCharacteristics(*with.pp, *with.zpetc);
+    QCOMPARE(with.step.overshootPct, expected.overshootPct);
+    QCOMPARE(with.step.settlingTimeSeconds, expected.settlingTimeSeconds);
+    s.axes[0].pp.zpetcEnabled = false;
+    const AxisEvaluation without = evaluateSession(s).axes[0];
+    QVERIFY(without.step.overshootPct > 50.0); // Kf B / T alone: the NMP zero's 52 %
+    QVERIFY(with.step.overshootPct < without.step.overshootPct);
 }
 
 QTEST_APPLESS_MAIN(TstZpetcStep)
