@@ -31,28 +31,65 @@ bool wantsScreenshot(int argc, char* argv[]) {
 
 } // namespace
 
+/// The command line of xytune, on whichever application object parses it.
+struct Options {
+    QCommandLineOption screenshot{"screenshot", "Render the main window to FILE.png and exit.", "FILE"};
+    QCommandLineOption size{"size", "Window size for --screenshot, WxH (default 1366x768).", "WxH", "1366x768"};
+    QCommandLineOption tab{"tab", "With --screenshot: show this tab first (e.g. \"Design space\"; "
+                                  "a design-space study is run before the picture).", "NAME"};
+    void addTo(QCommandLineParser& parser) const {
+        parser.setApplicationDescription("Tuning workbench for XY coordinate-table position controllers");
+        parser.addHelpOption();
+        parser.addVersionOption();
+        parser.addOption(screenshot);
+        parser.addOption(size);
+        parser.addOption(tab);
+        parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
+    }
+};
+
+void nameApplication() {
+    QCoreApplication::setApplicationName("XY Tune");
+    QCoreApplication::setOrganizationName("xytune");
+    QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
+}
+
 int main(int argc, char* argv[]) {
+    const Options options;
+    {
+        // Options that need no window (--help, --version, a mistyped option) are answered before
+        // any window system is touched: they work on a machine without a display.
+        QCoreApplication core(argc, argv);
+        nameApplication();
+        QCommandLineParser early;
+        options.addTo(early);
+        if (!early.parse(core.arguments())) { // a mistyped option: say which, exit 2 (bad input)
+            std::fprintf(stderr, "xytune: %s (see xytune --help)\n", qPrintable(early.errorText()));
+            return 2;
+        }
+        early.process(core); // prints and exits for --help, --help-all and --version
+        const bool displayed = !qEnvironmentVariableIsEmpty("DISPLAY") ||
+                               !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
+                               !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+        if (!early.isSet(options.screenshot) && !displayed) {
+            std::fprintf(stderr, "xytune: no display (DISPLAY and WAYLAND_DISPLAY are unset): run it in a "
+                                 "desktop session, use --screenshot FILE.png, or xytune-cli for the "
+                                 "headless report\n");
+            return 2;
+        }
+    }
     // A screenshot needs no display: use the offscreen platform unless one was chosen.
     if (wantsScreenshot(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
-    QApplication::setApplicationName("XY Tune");
-    QApplication::setOrganizationName("xytune");
-    QApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
+    nameApplication();
 
     QCommandLineParser parser;
-    parser.setApplicationDescription("Tuning workbench for XY coordinate-table position controllers");
-    parser.addHelpOption();
-    parser.addVersionOption();
-    QCommandLineOption screenshot("screenshot", "Render the main window to FILE.png and exit.", "FILE");
-    QCommandLineOption size("size", "Window size for --screenshot, WxH (default 1366x768).", "WxH", "1366x768");
-    QCommandLineOption tab("tab", "With --screenshot: show this tab first (e.g. \"Design space\"; "
-                                  "a design-space study is run before the picture).", "NAME");
-    parser.addOption(screenshot);
-    parser.addOption(size);
-    parser.addOption(tab);
-    parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
+    options.addTo(parser);
     parser.process(app);
+    const QCommandLineOption& screenshot = options.screenshot;
+    const QCommandLineOption& size = options.size;
+    const QCommandLineOption& tab = options.tab;
 
     xyt::ui::TuningSession session;
     if (parser.isSet(screenshot)) {
