@@ -15,6 +15,10 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QWheelEvent>
+#include <QApplication>
 #include <QTest>
 
 #include <cmath>
@@ -61,6 +65,9 @@ private slots:
     void hoverShowsTheFiguresAndFailures();
     void overshootOnlyFailureIsExplained();
     void bestOnTheEdgeIsWarned();
+    void emptyMapBeforeTheFirstRun();
+    void controlsStayInReachAndStill();
+    void wheelScrollsThePanelNotTheField();
     void cancelStopsAStudyAndKeepsTheWindowResponsive();
     void newRunReplacesARunningOne();
     void destroyingWhileRunningIsSafe();
@@ -281,6 +288,64 @@ void TstDesignSpaceView::bestOnTheEdgeIsWarned() {
     const SweepDiagnosis d = diagnoseSweep(r, spec);
     QVERIFY(d.kpAtUpperEdge);
     QVERIFY2(view_->statusText().contains("upper end of the kp range"), qPrintable(view_->statusText()));
+}
+
+void TstDesignSpaceView::emptyMapBeforeTheFirstRun() {
+    // Before the first run the map showed a stray coloured strip and an untitled 0-6 scale.
+    QVERIFY(!view_->plot()->hasResult());
+    QVERIFY(!view_->plot()->colorMap()->visible());
+    QVERIFY(!view_->plot()->colorScale()->visible());
+    QVERIFY(view_->plot()->noticeText().contains("Not computed yet"));
+    setSmallGrid(4, 2.0);
+    runAndWait();
+    QVERIFY(view_->plot()->colorMap()->visible() && view_->plot()->colorScale()->visible());
+    QVERIFY(view_->plot()->noticeText().isEmpty());
+    QVERIFY(!view_->plot()->colorScale()->axis()->label().isEmpty());
+}
+
+void TstDesignSpaceView::controlsStayInReachAndStill() {
+    // At 1366x768 the tab is about 600 x 330 px: Run was below the visible area, and after a run
+    // the status text moved the panel so that a click aimed at Cancel hit a spin box.
+    view_->resize(600, 330);
+    QTest::qWait(50);
+    const QRect visible = view_->rect();
+    for (QWidget* w : {static_cast<QWidget*>(view_->runButton()), static_cast<QWidget*>(view_->cancelButton()),
+                       static_cast<QWidget*>(view_->progressBar())})
+        QVERIFY2(visible.contains(QRect(w->mapTo(view_.get(), QPoint(0, 0)), w->size())), w->metaObject()->className());
+    const QPoint cancelBefore = view_->cancelButton()->mapTo(view_.get(), QPoint(0, 0));
+    const QRect mapBefore = view_->plot()->geometry();
+    setSmallGrid(6, 0.0); // no feasible design: the longest status there is
+    runAndWait();
+    QVERIFY(view_->statusText().count('\n') >= 2);
+    QCOMPARE(view_->cancelButton()->mapTo(view_.get(), QPoint(0, 0)), cancelBefore);
+    QCOMPARE(view_->plot()->geometry(), mapBefore);
+    QVERIFY(view_->plot()->width() >= 200);
+}
+
+void TstDesignSpaceView::wheelScrollsThePanelNotTheField() {
+    view_->resize(600, 330);
+    QTest::qWait(50);
+    QDoubleSpinBox* box = view_->wnMaxBox();
+    QScrollArea* panel = nullptr;
+    for (QScrollArea* a : view_->findChildren<QScrollArea*>())
+        if (a->widget()->isAncestorOf(box))
+            panel = a;
+    QVERIFY(panel && panel->verticalScrollBar()->maximum() > 0);
+    const double before = box->value();
+    const int scrolled = panel->verticalScrollBar()->value();
+    const QPoint at = box->rect().center();
+    QWheelEvent down(at, box->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                     Qt::NoScrollPhase, false);
+    QApplication::sendEvent(box, &down);
+    QCOMPARE(box->value(), before);                          // the field did not change
+    QVERIFY(panel->verticalScrollBar()->value() > scrolled); // the panel scrolled
+    // With focus, the wheel edits the field as usual.
+    box->setFocus();
+    QTRY_VERIFY(box->hasFocus());
+    QWheelEvent up(at, box->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
+                   Qt::NoScrollPhase, false);
+    QApplication::sendEvent(box, &up);
+    QVERIFY(box->value() != before);
 }
 
 void TstDesignSpaceView::overshootOnlyFailureIsExplained() {
