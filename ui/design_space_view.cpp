@@ -230,7 +230,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     }
 
     plot_ = new DesignSpacePlot;
-    readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design."));
+    readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design. Bright: "
+                             "feasible · veiled: infeasible · grey: unstable or diverged."));
     readout_->setWordWrap(true);
     readout_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     readout_->setToolTip(tr("bright: feasible (outlined) · veiled: infeasible · grey: unstable or "
@@ -246,13 +247,11 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     auto* texts = new QHBoxLayout;
     texts->addWidget(status_, 3);
     texts->addWidget(readout_, 2);
-    auto* legendNote = new QLabel(tr("<small>bright: feasible (outlined) · veiled: infeasible · grey: unstable "
-                                     "or diverged · light grey: not computed</small>"));
-    legendNote->setWordWrap(true);
-    legendNote->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    // What the cell shades mean, one hover away on the map (a label here cost the map height).
+    plot_->setToolTip(tr("bright: feasible (outlined) · veiled: infeasible · grey: unstable or diverged · "
+                         "light grey: not computed (cancelled)"));
     auto* right = new QVBoxLayout;
     right->addWidget(plot_, 1);
-    right->addWidget(legendNote);
 
     auto* middle = new QHBoxLayout;
     middle->addWidget(controlPanel_);

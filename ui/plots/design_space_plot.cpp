@@ -235,16 +235,16 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
     scale_->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
 
     current_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssCross, QPen(colors::error, 3), Qt::NoBrush, 16),
-                      tr("current design"));
+                      tr("current"));
     best_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssStar, QPen(QColor(0xff, 0x30, 0xd0), 3),
                                          Qt::NoBrush, 20),
-                   tr("best on the grid"));
+                   tr("best"));
     refined_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(Qt::black, 1.2),
                                             QBrush(QColor(0xff, 0x30, 0xd0)), 10),
-                      tr("refined best"));
+                      tr("refined"));
     leastViolating_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssTriangle, QPen(Qt::black, 2),
                                                    QBrush(QColor(0xff, 0xd0, 0x30)), 13),
-                             tr("least-violating design"));
+                             tr("least violating"));
     addLayer("markers", layer("overlay-grid"), QCustomPlot::limAbove);
     for (QCPGraph* g : {current_, best_, refined_, leastViolating_})
         g->setLayer("markers");
@@ -252,7 +252,7 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
     legend->setBorderPen(Qt::NoPen);
-    legend->setWrap(2);
+    legend->setWrap(4); // one row of short names: the map is narrow at 1366x768
     legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     axisRect()->insetLayout()->take(legend);
     plotLayout()->addElement(2, 0, legend);
