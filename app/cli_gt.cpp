@@ -5,6 +5,9 @@
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
+#include "core/analysis/loop_responses.h"
+#include "core/analysis/stability_margins.h"
+
 #include "core/simulation/contour_error.h"
 #include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
@@ -97,6 +100,7 @@ void reportAxis(QTextStream& out, const GtPreset& preset, const Sinusoid& circle
     for (const auto& p : d.closedLoopPoles)
         out << "  " << QString::number(p.real(), 'g', 6)
             << (p.imag() >= 0 ? "+" : "-") << QString::number(std::abs(p.imag()), 'g', 6) << "j";
+    out << "\n  margins   " << marginsText(stabilityMargins(gtLoopTransferFunctions(d).openLoop));
     out << "\n  step      settling (2 %) = " << fixed(step.settlingTimeSeconds, 2)
         << " s, overshoot = " << fixed(step.overshootPct, 3) << " %"
         << (d.stable ? "" : "  UNSTABLE") << "\n";

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "app/cli_json.h"
 
+#include "app/cli_design_args.h"
+
 #include <QJsonDocument>
 
 #include <cmath>
@@ -76,6 +78,24 @@ void print(const QJsonObject& object) {
     const QByteArray bytes = QJsonDocument(object).toJson(QJsonDocument::Indented);
     std::fwrite(bytes.constData(), 1, static_cast<std::size_t>(bytes.size()), stdout);
     std::fflush(stdout);
+}
+
+} // namespace xyt::cli
+
+namespace xyt::cli {
+
+QString marginsText(const StabilityMargins& m) {
+    const auto v = [](double x) { return std::isinf(x) && x > 0 ? QStringLiteral("inf") : QString::number(x, 'g', 3); };
+    QString text = QStringLiteral("GM %1 dB").arg(v(m.gainMarginDb));
+    if (std::isfinite(m.gainMarginOmegaRadPerSec))
+        text += QStringLiteral(" at %1 rad/s").arg(v(m.gainMarginOmegaRadPerSec));
+    text += QStringLiteral(", PM %1 deg").arg(v(m.phaseMarginDeg));
+    if (std::isfinite(m.phaseMarginOmegaRadPerSec))
+        text += QStringLiteral(" at %1 rad/s").arg(v(m.phaseMarginOmegaRadPerSec));
+    text += QStringLiteral(", delay margin %1 s, Ms %2").arg(v(m.delayMarginSeconds), v(m.peakSensitivity));
+    if (!m.closedLoopStable)
+        text += QStringLiteral(" (closed loop UNSTABLE: not robustness measures)");
+    return text;
 }
 
 } // namespace xyt::cli

@@ -5,6 +5,7 @@
 #include "app/cli_design_args.h"
 
 #include "core/model/errors.h"
+#include "core/session/axis_frequency.h"
 #include "core/session/export_text.h"
 #include "core/io/file_io.h"
 #include "core/io/text_escape.h"
@@ -121,6 +122,7 @@ int runSessionReport(const QString& path) {
             << (a.step.stable ? number(a.step.settlingTimeSeconds, 2) + " s" : QString("unstable"))
             << ", overshoot "
             << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable")) << "\n";
+        out << "  loop margins: " << marginsText(analyzeAxisFrequency(session, a).margins) << "\n";
         if (a.moveSettle) {
             const MoveSettleMetrics& ms = *a.moveSettle;
             out << "  move and settle (window " << QString::number(ms.windowMm, 'g', 6) << " mm): ";

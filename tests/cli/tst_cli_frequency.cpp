@@ -24,6 +24,7 @@ private slots:
     void discreteIntegratorClosedForm();
     void bodeCsvHoldsTheJsonResponse();
     void polePlacementBodeHasTheZeroPhaseTracking();
+    void reportQuotesTheMargins();
     void badInputIsNamed_data();
     void badInputIsNamed();
 };
@@ -102,6 +103,21 @@ void TstCliFrequency::polePlacementBodeHasTheZeroPhaseTracking() {
     for (const QJsonValue& v : phase)
         QVERIFY(std::abs(v.toDouble()) < 1e-6); // ZPETC: zero phase error (paper 001 Eq. 6)
     XYT_COMPARE_NEAR(r.json()["frequency"].toArray().last().toDouble(), M_PI / 0.07, 1e-12, 0.0);
+}
+
+void TstCliFrequency::reportQuotesTheMargins() {
+    // The default report (both bases of paper 000): the core's margins, 3 significant digits.
+    const auto r = runCli({"report"});
+    QCOMPARE(r.exitCode, 0);
+    for (const char* name : {"lower-base", "upper-base"}) {
+        const auto preset = xyt::findGtPreset(name);
+        const xyt::StabilityMargins m = xyt::stabilityMargins(
+            xyt::gtLoopTransferFunctions(xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp)).openLoop);
+        const QString expected = QString("GM %1 dB at %2 rad/s, PM %3 deg at %4 rad/s")
+                                     .arg(QString::number(m.gainMarginDb, 'g', 3), QString::number(m.gainMarginOmegaRadPerSec, 'g', 3),
+                                          QString::number(m.phaseMarginDeg, 'g', 3), QString::number(m.phaseMarginOmegaRadPerSec, 'g', 3));
+        QVERIFY2(QString::fromUtf8(r.out).contains(expected), qPrintable(expected));
+    }
 }
 
 void TstCliFrequency::badInputIsNamed_data() {
