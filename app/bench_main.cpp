@@ -11,7 +11,11 @@
 #include "core/simulation/trajectory.h"
 #include "core/design/zpetc.h"
 #include "core/simulation/zpetc_tracking.h"
+#include "core/analysis/frequency_response.h"
+#include "core/analysis/loop_responses.h"
+#include "core/analysis/stability_margins.h"
 #include "ui/main_window.h"
+#include "ui/plots/bode_plot.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/session/tuning_session.h"
 
@@ -84,6 +88,15 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
         QApplication::processEvents();
         QApplication::processEvents();
     });
+    // The same with the Bode tab above (issue 17: under 16 ms).
+    window.upperTabs()->setCurrentWidget(window.bodePlot());
+    QApplication::processEvents();
+    benchmark(filter, "gui_slider_to_repaint_bode", [&] {
+        slider->setValue(positions[next]);
+        next = 1 - next;
+        QApplication::processEvents();
+        QApplication::processEvents();
+    });
 }
 
 } // namespace
@@ -96,6 +109,19 @@ int main(int argc, char* argv[]) {
         const auto d = xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp);
         sink = sink + d.ki;
     });
+
+    {
+        // Issue 17: the 4th-order GT loop at 1,000 frequencies plus all its margins (target
+        // under 0.2 ms).
+        const xyt::TransferFunction loop = xyt::gtLoopTransferFunctions(
+            xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp)).openLoop;
+        const std::vector<double> omegas = xyt::logFrequencyGrid(1e-3, 1e3, 1000);
+        benchmark(filter, "frequency_response_1000_and_margins", [&] {
+            const xyt::FrequencyResponse r = xyt::frequencyResponse(loop, omegas);
+            const xyt::StabilityMargins m = xyt::stabilityMargins(loop);
+            sink = sink + r.magnitudeDb[500] + m.phaseMarginDeg;
+        });
+    }
 
     {
         const xyt::CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
