@@ -64,7 +64,7 @@ struct TrajectorySettings {
 
     /**
      * The longest run this trajectory asks for: the duration when it is set; for the circle one
-     * revolution plus the ramp-in; for an automatic cubic the cap automaticMoveCapSeconds (tf + 10
+     * revolution plus the ramp-in; for an automatic cubic the cap automaticMoveCapSeconds (tf + 3
      * (tf - t0), lowered to what the machine's sample limit holds at dtSeconds, never below tf;
      * the evaluation picks a run between tf and this). Sample-count checks use it, so they hold
      * for any run the evaluation may choose.

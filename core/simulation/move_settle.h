@@ -97,8 +97,14 @@ double continuousDecayPerSecond(const std::vector<std::complex<double>>& poles);
 /// -ln max |z| / Ts over discrete poles (1/s); +infinity when every pole is at 0 (deadbeat).
 double discreteDecayPerSecond(const std::vector<std::complex<double>>& poles, double tsSeconds);
 
-/// An automatic point-to-point run ends at most this many move durations (tf - t0) after tf.
-inline constexpr double kAutomaticSettleMoves = 10.0;
+/**
+ * An automatic point-to-point run ends at most this many move durations (tf - t0) after tf.
+ * Three keeps the move at least a quarter of a time plot's width and the live view's samples
+ * bounded (at 10 moves the default session ran 1430 s, 143k samples an axis, and the slider
+ * took twice its 16 ms frame budget). A design whose slow pole needs longer is reported as not
+ * settled in the run, with the estimate in the duration description.
+ */
+inline constexpr double kAutomaticSettleMoves = 3.0;
 
 /**
  * An automatic run stops its settle extension at this many samples: the GUI's live-view limit.

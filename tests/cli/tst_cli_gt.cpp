@@ -221,8 +221,11 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
     // brought |e| into the window. The lower base's slow pole is p = -0.00693 rad/s (its PI zero
     // at -psi1), so the estimate is ln(|e(tf)| / w) / |p| with e(tf) the error at the last
     // sample of the move (checked against a core run of the move alone).
+    // A 400 s move: the cap is tf + 3 moves = 1600 s, long enough for the slow pole to bring
+    // |e| from ~1.2 mm into 0.01 mm, so the slow mode dominates the settle (at tf = 130 s the
+    // lower base needs ~860 s, beyond its 520 s cap: the upper base's case below).
     const auto run = xyt::test::runCli({"simulate", "--preset", "lower-base", "--trajectory", "cubic",
-                                        "--xf", "600", "--tf", "130"});
+                                        "--xf", "600", "--tf", "400"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     requireNoNonFinite(run.out);
@@ -232,10 +235,10 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
     xyt::LoopSimulationOptions options;
     options.umaxVolts = 2.5;
     options.modelUnitsPerPositionUnit = preset->modelUnitsPerPositionUnit;
-    const xyt::CubicTrajectory c(0.0, 600.0, 0.0, 130.0);
+    const xyt::CubicTrajectory c(0.0, 600.0, 0.0, 400.0);
     const auto moveRun = xyt::simulateLoop(d.plant.transferFunction(), d.controller,
                                            xyt::sampled([&](double t) { return c.position(t); },
-                                                        xyt::sampleTimes(130.0, 0.01)),
+                                                        xyt::sampleTimes(400.0, 0.01)),
                                            options);
     double slowest = -INFINITY;
     for (const auto& p : d.closedLoopPoles)
@@ -245,9 +248,9 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
     QVERIFY(choice["automatic"].toBool());
     QVERIFY(choice["includes_settle"].toBool());
     XYT_COMPARE_NEAR(choice["settle_estimate"].toDouble(), estimate, 1e-12, 0.0);
-    // tf + 1.5 x estimate + a tenth of the move, under the cap tf + 10 x 130 s.
-    XYT_COMPARE_NEAR(o["duration"].toDouble(), 130.0 + 1.5 * estimate + 13.0, 1e-12, 0.0);
-    QCOMPARE(choice["cap"].toDouble(), 1430.0);
+    // tf + 1.5 x estimate + a tenth of the move, under the cap tf + 3 x 400 s.
+    XYT_COMPARE_NEAR(o["duration"].toDouble(), 400.0 + 1.5 * estimate + 40.0, 1e-12, 0.0);
+    QCOMPARE(choice["cap"].toDouble(), 1600.0);
     // The run settles within it: the measured settle time is within 5 % of the estimate (the
     // slow mode dominates after tf) and the final error is inside the window.
     const QJsonObject ms = o["move_and_settle"].toObject();
@@ -264,7 +267,7 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
                                           "--xf", "600", "--tf", "130"});
     QCOMPARE(upper.exitCode, 0);
     QVERIFY(upper.json()["duration_choice"].toObject()["capped"].toBool());
-    QCOMPARE(upper.json()["duration"].toDouble(), 1430.0);
+    QCOMPARE(upper.json()["duration"].toDouble(), 520.0); // tf + 3 x 130 s
     QCOMPARE(upper.json()["move_and_settle"].toObject()["settled"].toBool(true), false);
     QVERIFY(upper.json()["move_and_settle"].toObject()["settle_time"].isNull());
 }

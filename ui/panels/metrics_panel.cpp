@@ -10,6 +10,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt::ui {
@@ -222,9 +223,12 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                       : tr("—");
             if (a.moveSettle) {
                 const MoveSettleMetrics& ms = *a.moveSettle;
-                values[SettleAfterMove] = ms.diverged          ? tr("n/a")
-                                          : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
-                                                                 : tr("not settled");
+                // Not settled in the run: "> the run's time after tf", a lower bound an engineer
+                // can read in the column's width (the duration line quotes the estimate).
+                values[SettleAfterMove] =
+                    ms.diverged            ? tr("n/a")
+                    : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
+                                           : tr("> %1").arg(displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
                 values[FinalError] = displayNumber(ms.finalErrorMm);
                 values[FinalOvershoot] = displayNumber(ms.finalOvershootMm);
             } else {
@@ -262,6 +266,13 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             if (!a.ok)
                 item->setToolTip(QString::fromStdString(a.errorField + ": " + a.error));
+            if (r == SettleAfterMove && a.ok && a.moveSettle && !a.moveSettle->diverged &&
+                !a.moveSettle->settleTimeSeconds)
+                item->setToolTip(tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
+                                     .arg(displayNumber(a.moveSettle->windowMm),
+                                          displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
+                                                                          a.moveSettle->moveEndSeconds)),
+                                          item->toolTip()));
             if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
                 item->setToolTip(tr("* not applied: the discrete loop of paper 001 is simulated "
                                     "without a limit; |u| would be clipped this long"));

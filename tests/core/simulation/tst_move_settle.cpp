@@ -113,13 +113,13 @@ void TstMoveSettle::estimateIsTheClosedForm() {
     QVERIFY(std::isinf(settleTimeEstimateSeconds(1.0, 0.01, 0.0))); // not asymptotically stable
     XYT_COMPARE_NEAR(continuousDecayPerSecond({{-80.0, 0.0}, {-0.007, 0.0}, {-1.0, 2.0}}), 0.007, 1e-15, 0.0);
     XYT_COMPARE_NEAR(discreteDecayPerSecond({{0.5, 0.0}, {0.0, 0.9}}, 0.1), -std::log(0.9) / 0.1, 1e-15, 0.0);
-    // The automatic run: tf + 1.5 x estimate + a tenth of the move, cut to the cap tf + 10 moves.
+    // The automatic run: tf + 1.5 x estimate + a tenth of the move, cut to the cap tf + 3 moves.
     const double cap = automaticMoveCapSeconds(0.0, 130.0, 0.01);
-    QCOMPARE(cap, 1430.0);
+    QCOMPARE(cap, 520.0);
     XYT_COMPARE_NEAR(automaticMoveDurationSeconds(0.0, 130.0, 100.0, cap), 130.0 + 150.0 + 13.0, 1e-15, 0.0);
     QCOMPARE(automaticMoveDurationSeconds(0.0, 130.0, 3000.0, cap), cap);
     // A fine dt: the extension stops at a million samples, never below tf.
-    XYT_COMPARE_NEAR(automaticMoveCapSeconds(0.0, 130.0, 1e-3), (kMaxAutomaticSamples - 2.0) * 1e-3, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(automaticMoveCapSeconds(0.0, 130.0, 2e-4), (kMaxAutomaticSamples - 2.0) * 2e-4, 1e-15, 0.0);
     QCOMPARE(automaticMoveCapSeconds(0.0, 130.0, 1e-4), 130.0);
 }
 
