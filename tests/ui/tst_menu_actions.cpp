@@ -24,8 +24,21 @@ Q_DECLARE_METATYPE(xyt::Session)
 
 namespace {
 
-Session withTwoSnapshots() {
+/**
+ * The paper's session with a 13 s move of 60 mm instead of 600 mm in 130 s. The states below
+ * differ in their designs and snapshots, which is what the menus see; the shorter run (52 s
+ * automatic, a tenth of the default's samples) keeps 16 rows x every action affordable in the
+ * instrumented build. The "default" state keeps the paper's run.
+ */
+Session shortMove() {
     Session s = Session::paperDefault();
+    s.trajectory.xf = 60.0;
+    s.trajectory.tfSeconds = 13.0;
+    return s;
+}
+
+Session withTwoSnapshots() {
+    Session s = shortMove();
     s.snapshots.push_back(s.snapshot("paper design"));
     s.axes[0].gt.kp = 60.0;
     s.axes[1].gt.omegaNRadPerSec *= 1.5;
@@ -35,7 +48,7 @@ Session withTwoSnapshots() {
 }
 
 Session bothPolePlacement() {
-    Session s = Session::paperDefault();
+    Session s = shortMove();
     for (AxisSettings& a : s.axes)
         a.method = DesignMethod::PolePlacementZpetc;
     s.snapshots.push_back(s.snapshot("both pp"));
@@ -43,7 +56,7 @@ Session bothPolePlacement() {
 }
 
 Session oneAxisInvalid() {
-    Session s = Session::paperDefault();
+    Session s = shortMove();
     s.axes[1].method = DesignMethod::PolePlacementZpetc;
     s.axes[1].pp.b = {0.0, 0.0, 0.0}; // B = 0: no design (issue 15)
     s.snapshots.push_back(Session::paperDefault().snapshot("valid"));
@@ -51,7 +64,7 @@ Session oneAxisInvalid() {
 }
 
 Session unstable() {
-    Session s = Session::paperDefault();
+    Session s = shortMove();
     s.axes[0].gt.plant.a1 = -100.0; // the closed loop is unstable and the run diverges (issue 15)
     s.snapshots.push_back(s.snapshot("diverged"));
     return s;
