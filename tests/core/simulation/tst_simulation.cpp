@@ -271,6 +271,19 @@ void TstSimulation::errorsNameTheField() {
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(improper, r, 0.01); }), QString("system"));
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, {}, 0.01); }), QString("input"));
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, r, 0.0); }), QString("dt"));
+    // Regression (fuzz_design, corpus crash-stiff-loop): k0 = 4.3e12 with a pole at -5.2e8 and a
+    // stable closed loop. exp()'s scaling and squaring returned a finite step matrix with
+    // eigenvalues of 1e38 (the exact ones are e^{lambda dt} <= 1), so the run overflowed to inf
+    // and a stable loop looked diverged. The loss is now detected (spectral radius of the step
+    // matrix against e^{max Re(lambda) dt}) and refused naming dt, never a false divergence.
+    const xyt::ThirdOrderPlant stiff{4346435546875.0, 523234558.10546875, 449378967.28515625};
+    const xyt::GtDesign sd = xyt::designGuilleminTruxal(stiff, 0.00050562896728515631, 1014.83154296875);
+    QVERIFY(sd.stable);
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::simulateLoop(stiff.transferFunction(), sd.controller, std::vector<double>(142, 1.0),
+                                   with([](auto& o) { o.dtSeconds = 1e-4; o.umaxVolts = kInf; }));
+             }),
+             QString("dt"));
 }
 
 QTEST_APPLESS_MAIN(TstSimulation)
