@@ -20,7 +20,7 @@ namespace {
 
 const QStringList kSweepOptions = {"log", "criterion", "threads", "max-settling",
                                    "max-overshoot", "max-error", "max-settle-time",
-                                   "in-position-window"};
+                                   "in-position-window", "min-phase-margin", "min-gain-margin"};
 
 /// "MIN:MAX:N" of --wn or --kp.
 SweepAxis parseAxis(const CliArgs& args, const QString& name, bool logarithmic) {
@@ -52,7 +52,9 @@ QJsonObject pointJson(const DesignPoint& p) {
             {"stable", p.stable},
             {"feasible", p.feasible},
             {"metrics", metricsJson(p.tracking, p.step)},
-            {"move_and_settle", p.move ? QJsonValue(moveSettleJson(*p.move)) : QJsonValue()}};
+            {"move_and_settle", p.move ? QJsonValue(moveSettleJson(*p.move)) : QJsonValue()},
+            {"phase_margin", number(p.phaseMarginDeg)},
+            {"gain_margin", number(p.gainMarginDb)}};
 }
 
 QJsonObject checkJson(const SpecificationCheck& c) {
@@ -61,7 +63,9 @@ QJsonObject checkJson(const SpecificationCheck& c) {
             {"overshoot", c.overshoot},
             {"no_saturation", c.noSaturation},
             {"tracking_error", c.trackingError},
-            {"settle", c.settleApplies ? QJsonValue(c.settle) : QJsonValue()}};
+            {"settle", c.settleApplies ? QJsonValue(c.settle) : QJsonValue()},
+            {"phase_margin", c.marginsApply ? QJsonValue(c.phaseMargin) : QJsonValue()},
+            {"gain_margin", c.marginsApply ? QJsonValue(c.gainMargin) : QJsonValue()}};
 }
 
 /// One CSV field: the number, or empty when it is not finite or not defined.
@@ -74,7 +78,7 @@ QString sweepCsv(const DesignSweepResult& r) {
     QTextStream out(&text);
     out << "i_wn,i_kp,wn,kp,ki,stable,feasible,rmse,max_abs_error,max_abs_error_pct,max_abs_u,"
            "saturated,saturated_time,settling_time,overshoot_pct,itae,settle_time,final_error,"
-           "final_overshoot_mm\n";
+           "final_overshoot_mm,phase_margin,gain_margin\n";
     for (std::size_t i = 0; i < r.wnValues.size(); ++i)
         for (std::size_t j = 0; j < r.kpValues.size(); ++j) {
             const DesignPoint& p = r.at(i, j);
@@ -89,7 +93,8 @@ QString sweepCsv(const DesignSweepResult& r) {
                 << field(p.move && p.move->settleTimeSeconds ? *p.move->settleTimeSeconds : 0.0,
                          p.move && p.move->settleTimeSeconds)
                 << ',' << field(p.move ? p.move->finalErrorMm : 0.0, p.move.has_value()) << ','
-                << field(p.move ? p.move->finalOvershootMm : 0.0, p.move.has_value()) << '\n';
+                << field(p.move ? p.move->finalOvershootMm : 0.0, p.move.has_value()) << ','
+                << field(p.phaseMarginDeg) << ',' << field(p.gainMarginDb) << '\n';
         }
     out.flush();
     return text;
@@ -122,6 +127,12 @@ int runSweep(const QStringList& argv) {
         positiveNumber(args, "max-settle-time", problem.spec.maxSettleTimeSeconds);
     problem.spec.inPositionWindowMm =
         positiveNumber(args, "in-position-window", problem.spec.inPositionWindowMm);
+    problem.spec.minPhaseMarginDeg = args.number("min-phase-margin", problem.spec.minPhaseMarginDeg);
+    if (!(problem.spec.minPhaseMarginDeg >= 0.0 && problem.spec.minPhaseMarginDeg <= 180.0))
+        throw InvalidInput("--min-phase-margin", "must be 0 .. 180 degrees");
+    problem.spec.minGainMarginDb = args.number("min-gain-margin", problem.spec.minGainMarginDb);
+    if (!(problem.spec.minGainMarginDb >= 0.0))
+        throw InvalidInput("--min-gain-margin", "must be zero or more (dB)");
     problem.move = setup.trajectory.move;
     // A move's automatic run covers the settle limit twice over (moveSweepDurationSeconds).
     if (problem.move && !args.has("duration"))
@@ -133,7 +144,8 @@ int runSweep(const QStringList& argv) {
     const QString criterion = args.text("criterion", "itae");
     const auto parsed = parseCriterion(criterion.toStdString());
     if (!parsed)
-        throw InvalidInput("--criterion", "must be itae, max_error, rmse, max_u or settle, got '" +
+        throw InvalidInput("--criterion", "must be itae, max_error, rmse, max_u, settle, phase_margin or "
+                                          "gain_margin, got '" +
                                               criterion.toStdString() + "'");
     options.criterion = *parsed;
     options.threads = args.count("threads", 0, 1024);
@@ -158,7 +170,9 @@ int runSweep(const QStringList& argv) {
                                             {"umax", problem.spec.umaxVolts},
                                             {"max_error_pct", problem.spec.maxErrorPct},
                                             {"max_settle_time", problem.spec.maxSettleTimeSeconds},
-                                            {"in_position_window_mm", problem.spec.inPositionWindowMm}});
+                                            {"in_position_window_mm", problem.spec.inPositionWindowMm},
+                                            {"min_phase_margin", problem.spec.minPhaseMarginDeg},
+                                            {"min_gain_margin", problem.spec.minGainMarginDb}});
     out.insert("grid", QJsonObject{{"rows", "wn"},
                                    {"columns", "kp"},
                                    {"log", logarithmic},
@@ -220,7 +234,9 @@ int runSweep(const QStringList& argv) {
         relaxed = {{"max_settling_time", diagnosis.relaxed->maxSettlingTimeSeconds},
                    {"max_overshoot_pct", diagnosis.relaxed->maxOvershootPct},
                    {"max_error_pct", diagnosis.relaxed->maxErrorPct},
-                   {"max_settle_time", diagnosis.relaxed->maxSettleTimeSeconds}};
+                   {"max_settle_time", diagnosis.relaxed->maxSettleTimeSeconds},
+                   {"min_phase_margin", diagnosis.relaxed->minPhaseMarginDeg},
+                   {"min_gain_margin", diagnosis.relaxed->minGainMarginDb}};
     out.insert("diagnosis",
                QJsonObject{{"none_feasible", diagnosis.noneFeasible},
                            {"failing_everywhere", failing},

@@ -37,7 +37,8 @@ Specification initialSpecification(const Session& session) {
 namespace {
 
 const SweepCriterion kCriteria[] = {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
-                                    SweepCriterion::MaxU, SweepCriterion::Settle};
+                                    SweepCriterion::MaxU, SweepCriterion::Settle, SweepCriterion::PhaseMargin,
+                                    SweepCriterion::GainMargin};
 
 QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int decimals, const QString& suffix) {
     auto* box = new QDoubleSpinBox;
@@ -99,14 +100,18 @@ QStringList failures(const DesignPoint& p, const Specification& spec) {
     if (p.metricsFinite && !p.check.noSaturation)
         out << (p.tracking.saturated ? QObject::tr("|u| saturates at %1 V").arg(num(spec.umaxVolts))
                                      : QObject::tr("|u| %1 V > %2 V").arg(num(p.tracking.maxAbsU)).arg(num(spec.umaxVolts)));
+    if (p.stable && !p.check.phaseMargin)
+        out << QObject::tr("phase margin %1° < %2°").arg(num(p.phaseMarginDeg)).arg(num(spec.minPhaseMarginDeg));
+    if (p.stable && !p.check.gainMargin)
+        out << QObject::tr("gain margin %1 dB < %2 dB").arg(num(p.gainMarginDb)).arg(num(spec.minGainMarginDb));
     if (p.metricsFinite && !p.check.trackingError)
         out << QObject::tr("max error %1 % > %2 %").arg(num(p.tracking.maxAbsErrorPct)).arg(num(spec.maxErrorPct));
     return out;
 }
 
 QString describePoint(const DesignPoint& p, const Specification& spec, SweepCriterion metric) {
-    const QString value = std::isfinite(criterionValue(p, metric)) ? num(criterionValue(p, metric))
-                                                                   : QObject::tr("—");
+    const QString value = std::isfinite(criterionMetric(p, metric)) ? num(criterionMetric(p, metric))
+                                                                    : QObject::tr("—");
     QString text = QObject::tr("ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5")
                        .arg(num(p.wn))
                        .arg(num(p.kp))
@@ -158,7 +163,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     auto* choice = new QGroupBox(tr("Choice"));
     auto* choiceForm = new QFormLayout(choice);
     choiceForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
-    choiceForm->addRow(tr("Best design minimizes"), criterion_);
+    choiceForm->addRow(tr("Best design: smallest (largest for margins)"), criterion_);
     choiceForm->addRow(tr("Heat map shows"), metric_);
     choiceForm->addRow(logColor_);
 
@@ -166,6 +171,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     overshoot_ = numberBox(spec.maxOvershootPct, 0.0, 1000.0, 3, tr(" %"));
     error_ = numberBox(spec.maxErrorPct, 0.001, 1000.0, 3, tr(" %"));
     umax_ = numberBox(spec.umaxVolts, 0.001, 1e4, 3, tr(" V"));
+    phaseMargin_ = numberBox(spec.minPhaseMarginDeg, 0.0, 180.0, 2, tr("°"));
+    gainMargin_ = numberBox(spec.minGainMarginDb, 0.0, 1000.0, 2, tr(" dB"));
     auto* specBox = new QGroupBox(tr("Specification"));
     auto* specForm = new QFormLayout(specBox);
     specForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
@@ -173,12 +180,14 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     specForm->addRow(tr("step overshoot ≤"), overshoot_);
     specForm->addRow(tr("max tracking error ≤"), error_);
     specForm->addRow(tr("|u| ≤ (actuator limit)"), umax_);
+    specForm->addRow(tr("phase margin ≥ (0 = none)"), phaseMargin_);
+    specForm->addRow(tr("gain margin ≥ (0 = none)"), gainMargin_);
 
     auto* shared = new QLabel(tr("<i>The session's specification, shared with the metrics panel.</i>"));
     shared->setWordWrap(true); // the column is narrow: never let the note widen it
     specForm->addRow(shared);
     // One specification: the boxes edit the session's (an undoable step), and show it.
-    for (QDoubleSpinBox* box : {settling_, overshoot_, error_, umax_})
+    for (QDoubleSpinBox* box : {settling_, overshoot_, error_, umax_, phaseMargin_, gainMargin_})
         connect(box, &QDoubleSpinBox::editingFinished, this, &DesignSpaceView::applySpecification);
 
     run_ = new QPushButton(tr("Run"));
@@ -443,11 +452,11 @@ void DesignSpaceView::showOutcome() {
     if (r.bestIndex) {
         const DesignPoint& b = r.points[*r.bestIndex];
         text += tr("\nBest on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.")
-                    .arg(num(b.wn), num(b.kp), crit, num(criterionValue(b, r.criterion)));
+                    .arg(num(b.wn), num(b.kp), crit, num(criterionMetric(b, r.criterion)));
         if (r.refined && r.refined->improved) {
             const DesignPoint& p = r.refined->point;
             text += tr("\nRefined (◆): ωn = %1 rad/s, kp = %2, %3 = %4.")
-                        .arg(num(p.wn), num(p.kp), crit, num(criterionValue(p, r.criterion)));
+                        .arg(num(p.wn), num(p.kp), crit, num(criterionMetric(p, r.criterion)));
         }
         text += tr("\nClick a cell to load its design.");
         setStatus(text, diagnosis_->onEdge());
@@ -476,6 +485,8 @@ void DesignSpaceView::applySpecification() {
     next.spec.maxOvershootPct = overshoot_->value();
     next.spec.maxErrorPct = error_->value();
     next.umaxVolts = umax_->value();
+    next.spec.minPhaseMarginDeg = phaseMargin_->value();
+    next.spec.minGainMarginDb = gainMargin_->value();
     if (next.spec == session_->session().spec && next.umaxVolts == session_->session().umaxVolts)
         return;
     session_->apply(next, tr("Change the specification"));
@@ -484,11 +495,14 @@ void DesignSpaceView::applySpecification() {
 void DesignSpaceView::updateCurrentDesign() {
     const Session& s = session_->session();
     {
-        const QSignalBlocker b1(settling_), b2(overshoot_), b3(error_), b4(umax_);
+        const QSignalBlocker b1(settling_), b2(overshoot_), b3(error_), b4(umax_), b5(phaseMargin_),
+            b6(gainMargin_);
         settling_->setValue(s.spec.maxSettlingTimeSeconds);
         overshoot_->setValue(s.spec.maxOvershootPct);
         error_->setValue(s.spec.maxErrorPct);
         umax_->setValue(s.umaxVolts);
+        phaseMargin_->setValue(s.spec.minPhaseMarginDeg);
+        gainMargin_->setValue(s.spec.minGainMarginDb);
     }
     lastUmaxVolts_ = s.umaxVolts;
     // A study stays judged by the session's specification: when only its limits changed (the

@@ -75,6 +75,8 @@ public:
     QDoubleSpinBox* overshootBox() const { return overshoot_; }
     QDoubleSpinBox* errorBox() const { return error_; }
     QDoubleSpinBox* umaxBox() const { return umax_; }
+    QDoubleSpinBox* phaseMarginBox() const { return phaseMargin_; }
+    QDoubleSpinBox* gainMarginBox() const { return gainMargin_; }
 
 protected:
     /// Wheel events over an unfocused field of the control panel scroll the panel.
@@ -135,6 +137,8 @@ private:
     QDoubleSpinBox* overshoot_;
     QDoubleSpinBox* error_;
     QDoubleSpinBox* umax_;
+    QDoubleSpinBox* phaseMargin_;
+    QDoubleSpinBox* gainMargin_;
 };
 
 /// The specification the view starts with for @p session: the session's (the paper's by

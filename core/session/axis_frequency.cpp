@@ -21,7 +21,7 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEva
     try {
         out.loop = evaluation.gt ? gtLoopTransferFunctions(*evaluation.gt)
                                  : rstLoopTransferFunctions(*evaluation.pp);
-        out.margins = stabilityMargins(out.loop.openLoop);
+        out.margins = evaluation.margins ? *evaluation.margins : stabilityMargins(out.loop.openLoop);
         // One grid for every curve, holding the crossovers (where the margins are drawn) and
         // the reference frequency (where the tracking is read).
         FrequencyGridOptions grid;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/session_evaluation.h"
 
+#include "core/analysis/loop_responses.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
@@ -246,9 +247,18 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             if (!out.moveSettle->reachedMoveEnd)
                 out.warnings.push_back("the run ends before the move does (tf): no settle figures");
         }
+        try {
+            out.margins = stabilityMargins(out.gt ? gtLoopTransferFunctions(*out.gt).openLoop
+                                                  : rstLoopTransferFunctions(*out.pp).openLoop);
+        } catch (const InvalidInput& e) {
+            out.warnings.push_back(std::string("no stability margins: ") + e.what());
+        }
+        std::optional<LoopMarginFigures> margins;
+        if (out.margins)
+            margins = LoopMarginFigures{out.margins->phaseMarginDeg, out.margins->gainMarginDb};
         Specification spec = session.spec;
         spec.umaxVolts = session.umaxVolts;
-        out.check = checkSpecification(spec, out.metrics, out.step, out.moveSettle);
+        out.check = checkSpecification(spec, out.metrics, out.step, out.moveSettle, margins);
         out.ok = true;
     } catch (const InvalidInput& e) {
         out.ok = false;

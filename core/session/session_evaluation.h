@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/analysis/stability_margins.h"
 #include "core/simulation/contour_error.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
@@ -67,7 +68,11 @@ struct AxisEvaluation {
     /// alone, or with ZPETC enabled the step previewed through the feedforward and the loop
     /// (zpetcStepCharacteristics).
     StepCharacteristics step;
-    /// Pass/fail of each criterion of the session's specification.
+    /// The loop's stability margins (stability_margins.h, L of gtLoopTransferFunctions or
+    /// rstLoopTransferFunctions); unset when the axis has no loop or the analysis refused it.
+    std::optional<StabilityMargins> margins;
+    /// Pass/fail of each criterion of the session's specification (the margins included when
+    /// `margins` is set).
     SpecificationCheck check;
     std::vector<std::string> warnings;
 

@@ -2,6 +2,8 @@
 #include "core/study/design_sweep.h"
 
 #include "core/model/errors.h"
+#include "core/analysis/loop_responses.h"
+#include "core/analysis/stability_margins.h"
 #include "core/simulation/simulation.h"
 #include "core/model/state_space.h"
 
@@ -123,13 +125,16 @@ std::string criterionName(SweepCriterion criterion) {
     case SweepCriterion::Rmse: return "rmse";
     case SweepCriterion::MaxU: return "max_u";
     case SweepCriterion::Settle: return "settle";
+    case SweepCriterion::PhaseMargin: return "phase_margin";
+    case SweepCriterion::GainMargin: return "gain_margin";
     }
     return "itae";
 }
 
 std::optional<SweepCriterion> parseCriterion(const std::string& name) {
     for (SweepCriterion c : {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
-                             SweepCriterion::MaxU, SweepCriterion::Settle})
+                             SweepCriterion::MaxU, SweepCriterion::Settle, SweepCriterion::PhaseMargin,
+                             SweepCriterion::GainMargin})
         if (criterionName(c) == name)
             return c;
     return std::nullopt;
@@ -173,8 +178,23 @@ double criterionValue(const DesignPoint& point, SweepCriterion criterion) {
     case SweepCriterion::MaxU: return point.tracking.maxAbsU;
     case SweepCriterion::Settle:
         return point.move && point.move->settleTimeSeconds ? *point.move->settleTimeSeconds : kInf;
+    case SweepCriterion::PhaseMargin:
+        return std::isnan(point.phaseMarginDeg) ? kInf : -point.phaseMarginDeg;
+    case SweepCriterion::GainMargin:
+        return std::isnan(point.gainMarginDb) ? kInf : -point.gainMarginDb;
     }
     return kInf;
+}
+
+bool criterionMaximizes(SweepCriterion criterion) {
+    return criterion == SweepCriterion::PhaseMargin || criterion == SweepCriterion::GainMargin;
+}
+
+double criterionMetric(const DesignPoint& point, SweepCriterion criterion) {
+    const double v = criterionValue(point, criterion);
+    if (!criterionMaximizes(criterion))
+        return v;
+    return v == kInf ? std::numeric_limits<double>::quiet_NaN() : -v;
 }
 
 double moveSweepDurationSeconds(double tfSeconds, double maxSettleTimeSeconds) {
@@ -228,7 +248,16 @@ DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
         if (p.move->diverged) // never NaN taken for a number (as the tracking figures above)
             p.move->finalErrorMm = p.move->finalOvershootMm = kInf;
     }
-    p.check = checkSpecification(problem_.spec, p.tracking, p.step, p.move);
+    try {
+        const StabilityMargins m = stabilityMargins(gtLoopTransferFunctions(design).openLoop);
+        p.phaseMarginDeg = m.phaseMarginDeg;
+        p.gainMarginDb = m.gainMarginDb;
+    } catch (const InvalidInput&) {
+        // Left NaN: the margin criteria fail and the map shows no value (L is always proper
+        // here; this guards the contract, not a known case).
+    }
+    p.check = checkSpecification(problem_.spec, p.tracking, p.step, p.move,
+                                 LoopMarginFigures{p.phaseMarginDeg, p.gainMarginDb});
     p.computed = true;
     p.feasible = p.metricsFinite && p.check.allPassed();
     return p;
@@ -332,7 +361,8 @@ void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
     for (DesignPoint& p : result.points) {
         if (!p.computed)
             continue;
-        p.check = checkSpecification(spec, p.tracking, p.step, p.move);
+        p.check = checkSpecification(spec, p.tracking, p.step, p.move,
+                                     LoopMarginFigures{p.phaseMarginDeg, p.gainMarginDb});
         p.feasible = p.metricsFinite && p.check.allPassed();
     }
     tallyDesignSpace(result);

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,8 +31,12 @@ enum class SweepCriterion {
     /// Settle time after a point-to-point move (MoveSettleMetrics::settleTimeSeconds); +infinity
     /// for a point that did not settle or a problem without a move.
     Settle,
+    /// The loop's phase margin (deg) and gain margin (dB): larger is better, so these two are
+    /// maximized (criterionValue is their negative; criterionMetric the margin itself).
+    PhaseMargin,
+    GainMargin,
 };
-/// "itae", "max_error", "rmse", "max_u", "settle".
+/// "itae", "max_error", "rmse", "max_u", "settle", "phase_margin", "gain_margin".
 std::string criterionName(SweepCriterion criterion);
 /// The inverse of criterionName; nullopt for an unknown name.
 std::optional<SweepCriterion> parseCriterion(const std::string& name);
@@ -97,12 +102,26 @@ struct DesignPoint {
     StepCharacteristics step;  ///< of the closed loop (unset when unstable, see its doc)
     /// Move-and-settle figures, for a problem with a move (see DesignProblem::move).
     std::optional<MoveSettleMetrics> move;
+    /// The loop's margins (stabilityMargins of L = G_c G): the phase margin of smallest
+    /// magnitude (deg) and the gain margin nearest 0 dB; +infinity without such a crossing, NaN
+    /// when not computed. Judged against spec.minPhaseMarginDeg / minGainMarginDb.
+    double phaseMarginDeg = std::numeric_limits<double>::quiet_NaN();
+    double gainMarginDb = std::numeric_limits<double>::quiet_NaN();
     SpecificationCheck check;
     bool feasible = false; ///< computed && metricsFinite && check.allPassed()
 };
 
-/// The value minimized by @p criterion; +infinity for a point not computed or not finite.
+/**
+ * The value minimized by @p criterion: the metric itself, or its negative for the maximized
+ * margins; +infinity for a point not computed or not finite (a margin of +infinity, no
+ * crossing, is the best there is: -infinity).
+ */
 double criterionValue(const DesignPoint& point, SweepCriterion criterion);
+/// The metric @p criterion looks at, in its own unit (what a map or a table shows): equal to
+/// criterionValue except that margins are given as they are. Not finite when it has none.
+double criterionMetric(const DesignPoint& point, SweepCriterion criterion);
+/// True for the criteria whose metric is maximized (the margins).
+bool criterionMaximizes(SweepCriterion criterion);
 
 /**
  * Evaluates designs of one DesignProblem. Equivalent, to round-off, to

@@ -17,6 +17,8 @@ void requireNonNegative(double value, const std::string& field) {
 
 /// Comparisons written so that NaN fails: !(NaN <= x) is true.
 bool atMost(double value, double limit) { return std::isfinite(value) && value <= limit; }
+/// At least the limit; +infinity (no crossing) passes, NaN fails.
+bool atLeast(double value, double limit) { return !std::isnan(value) && value >= limit; }
 
 } // namespace
 
@@ -27,11 +29,16 @@ void Specification::validate() const {
     requirePositive(maxErrorPct, "max_error_pct");
     requirePositive(inPositionWindowMm, "in_position_window_mm");
     requirePositive(maxSettleTimeSeconds, "max_settle_time");
+    requireNonNegative(minPhaseMarginDeg, "min_phase_margin");
+    if (minPhaseMarginDeg > 180.0)
+        throw InvalidInput("min_phase_margin", "must be at most 180 degrees");
+    requireNonNegative(minGainMarginDb, "min_gain_margin");
 }
 
 SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
                                       const StepCharacteristics& step,
-                                      const std::optional<MoveSettleMetrics>& move) {
+                                      const std::optional<MoveSettleMetrics>& move,
+                                      const std::optional<LoopMarginFigures>& margins) {
     spec.validate();
     SpecificationCheck c;
     c.stable = step.stable;
@@ -45,6 +52,11 @@ SpecificationCheck checkSpecification(const Specification& spec, const TrackingM
         c.settleApplies = true;
         c.settle = !move->diverged && move->settled && move->windowMm == spec.inPositionWindowMm &&
                    atMost(move->settleTimeSeconds.value_or(NAN), spec.maxSettleTimeSeconds);
+    }
+    if (margins) {
+        c.marginsApply = true;
+        c.phaseMargin = step.stable && atLeast(margins->phaseMarginDeg, spec.minPhaseMarginDeg);
+        c.gainMargin = step.stable && atLeast(margins->gainMarginDb, spec.minGainMarginDb);
     }
     return c;
 }

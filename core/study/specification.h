@@ -35,6 +35,15 @@ struct Specification {
      * 3000 s would hide it.
      */
     double maxSettleTimeSeconds = 100.0;
+    /**
+     * Minimum phase margin (degrees) and gain margin (dB) of the loop L (stability_margins.h:
+     * the reported margins, i.e. the phase margin of smallest magnitude and the gain margin
+     * nearest 0 dB). Paper 000 states no margin requirement, so both are 0 by default: a stable
+     * loop with positive margins passes, as every design of the papers does (45.9 dB / 88.1
+     * deg and 38.1 dB / 86.1 deg for the two bases). 45-60 deg and 6 dB are the usual rules.
+     */
+    double minPhaseMarginDeg = 0.0;
+    double minGainMarginDb = 0.0;
 
     /**
      * Slack on the overshoot criterion, in percent, for round-off only. The sampled step
@@ -51,7 +60,8 @@ struct Specification {
 
     /// @throws InvalidInput "max_settling_time", "max_overshoot_pct", "max_error_pct" (finite,
     ///         >= 0; settling and error > 0), "umax", "in_position_window_mm",
-    ///         "max_settle_time" (finite, > 0).
+    ///         "max_settle_time" (finite, > 0), "min_phase_margin" (finite, 0 .. 180),
+    ///         "min_gain_margin" (finite, >= 0).
     void validate() const;
     friend bool operator==(const Specification&, const Specification&) = default;
 };
@@ -68,21 +78,37 @@ struct SpecificationCheck {
     /// settleTimeSeconds <= maxSettleTimeSeconds. True when it does not apply (a circle).
     bool settle = true;
     bool settleApplies = false; ///< the run was a point-to-point move with move-and-settle figures
+    /// The loop's margins (marginsApply: they were given to the check) against the minima; an
+    /// unstable closed loop fails both (its margins are no robustness measure). True when they
+    /// do not apply.
+    bool phaseMargin = true;
+    bool gainMargin = true;
+    bool marginsApply = false;
 
     bool allPassed() const {
-        return stable && settlingTime && overshoot && noSaturation && trackingError && settle;
+        return stable && settlingTime && overshoot && noSaturation && trackingError && settle &&
+               phaseMargin && gainMargin;
     }
+};
+
+/// The two margins a Specification judges (StabilityMargins::phaseMarginDeg, gainMarginDb):
+/// +infinity when the loop has no such crossing (it passes), NaN fails.
+struct LoopMarginFigures {
+    double phaseMarginDeg = 0.0;
+    double gainMarginDb = 0.0;
 };
 
 /**
  * Checks one design against @p spec. An unstable closed loop fails `stable`, `settlingTime` and
  * `overshoot` (its step figures are undefined); the tracking criteria are still judged on the run.
  * With @p move (a point-to-point run) `settle` is judged too: a run that did not settle, that
- * diverged, or whose window is not the spec's inPositionWindowMm fails it.
+ * diverged, or whose window is not the spec's inPositionWindowMm fails it. With @p margins the
+ * minimum phase and gain margins are judged too.
  * @throws InvalidInput from Specification::validate.
  */
 SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
                                       const StepCharacteristics& step,
-                                      const std::optional<MoveSettleMetrics>& move = std::nullopt);
+                                      const std::optional<MoveSettleMetrics>& move = std::nullopt,
+                                      const std::optional<LoopMarginFigures>& margins = std::nullopt);
 
 } // namespace xyt

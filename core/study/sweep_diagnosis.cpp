@@ -14,7 +14,11 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr SpecCriterion kCriteria[] = {SpecCriterion::Stable,       SpecCriterion::SettlingTime,
                                        SpecCriterion::Overshoot,    SpecCriterion::NoSaturation,
-                                       SpecCriterion::TrackingError, SpecCriterion::Settle};
+                                       SpecCriterion::TrackingError, SpecCriterion::Settle,
+                                       SpecCriterion::PhaseMargin,  SpecCriterion::GainMargin};
+
+/// The margins are minimum limits: their best value is the largest.
+bool largerIsBetter(SpecCriterion c) { return c == SpecCriterion::PhaseMargin || c == SpecCriterion::GainMargin; }
 
 /// What a criterion is called in a sentence, and the unit of its value.
 struct Wording {
@@ -29,6 +33,8 @@ Wording wording(SpecCriterion c) {
     case SpecCriterion::NoSaturation: return {"clipped time", " s"};
     case SpecCriterion::TrackingError: return {"max tracking error", " % of the travel"};
     case SpecCriterion::Settle: return {"settle time after the move", " s"};
+    case SpecCriterion::PhaseMargin: return {"phase margin", " deg"};
+    case SpecCriterion::GainMargin: return {"gain margin", " dB"};
     }
     return {"", ""};
 }
@@ -41,6 +47,8 @@ bool passes(const SpecificationCheck& c, SpecCriterion criterion) {
     case SpecCriterion::NoSaturation: return c.noSaturation;
     case SpecCriterion::TrackingError: return c.trackingError;
     case SpecCriterion::Settle: return c.settle;
+    case SpecCriterion::PhaseMargin: return c.phaseMargin;
+    case SpecCriterion::GainMargin: return c.gainMargin;
     }
     return false;
 }
@@ -53,11 +61,14 @@ double limitOf(const Specification& spec, SpecCriterion c) {
     case SpecCriterion::NoSaturation: return 0.0;
     case SpecCriterion::TrackingError: return spec.maxErrorPct;
     case SpecCriterion::Settle: return spec.maxSettleTimeSeconds;
+    case SpecCriterion::PhaseMargin: return spec.minPhaseMarginDeg;
+    case SpecCriterion::GainMargin: return spec.minGainMarginDb;
     }
     return 0.0;
 }
 
-/// The value a point has on a criterion (smaller is better), or nullopt when it has none.
+/// The value a point has on a criterion (smaller is better, except largerIsBetter), or nullopt
+/// when it has none. Margins count for a stable loop only (an unstable one fails them).
 std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
     if (!p.computed)
         return std::nullopt;
@@ -73,6 +84,10 @@ std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
         return p.metricsFinite ? std::optional(p.tracking.maxAbsErrorPct) : std::nullopt;
     case SpecCriterion::Settle:
         return p.move && p.move->settleTimeSeconds ? p.move->settleTimeSeconds : std::nullopt;
+    case SpecCriterion::PhaseMargin:
+        return stepDefined && !std::isnan(p.phaseMarginDeg) ? std::optional(p.phaseMarginDeg) : std::nullopt;
+    case SpecCriterion::GainMargin:
+        return stepDefined && !std::isnan(p.gainMarginDb) ? std::optional(p.gainMarginDb) : std::nullopt;
     }
     return std::nullopt;
 }
@@ -84,6 +99,15 @@ double roundUp3(double v) {
     const double scale = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
     const double r = std::ceil(v / scale) * scale;
     return r >= v ? r : std::nextafter(r, std::numeric_limits<double>::infinity());
+}
+
+/// Rounded down to 3 significant digits (a minimum to suggest must let the value pass).
+double roundDown3(double v) {
+    if (!(v > 0.0) || !std::isfinite(v))
+        return v > 0.0 ? v : 0.0;
+    const double scale = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
+    const double r = std::floor(v / scale) * scale;
+    return r <= v ? r : std::nextafter(r, 0.0);
 }
 
 std::string at(const DesignSweepResult& r, std::size_t i) {
@@ -109,6 +133,8 @@ std::string specCriterionName(SpecCriterion criterion) {
     case SpecCriterion::NoSaturation: return "no_saturation";
     case SpecCriterion::TrackingError: return "tracking_error";
     case SpecCriterion::Settle: return "settle";
+    case SpecCriterion::PhaseMargin: return "phase_margin";
+    case SpecCriterion::GainMargin: return "gain_margin";
     }
     return "";
 }
@@ -142,7 +168,8 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
             f.bestValue = kNaN;
             for (std::size_t i = 0; i < points.size(); ++i) {
                 const auto v = valueOf(points[i], c);
-                if (v && std::isfinite(*v) && (!f.bestIndex || *v < f.bestValue)) {
+                if (v && std::isfinite(*v) &&
+                    (!f.bestIndex || (largerIsBetter(c) ? *v > f.bestValue : *v < f.bestValue))) {
                     f.bestIndex = i;
                     f.bestValue = *v;
                 }
@@ -158,7 +185,8 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                 text = std::string("the ") + w.name + " limit (" + formatNumber(f.limit) + w.unit +
                        ") fails at every design of the grid";
                 if (f.bestIndex)
-                    text += "; the smallest " + std::string(w.name) + " found is " + formatNumber(f.bestValue, 4) +
+                    text += std::string(largerIsBetter(c) ? "; the largest " : "; the smallest ") + w.name +
+                            " found is " + formatNumber(f.bestValue, 4) +
                             w.unit + " at " + at(result, *f.bestIndex);
             }
             d.warnings.push_back(text);
@@ -186,6 +214,11 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                                          ? *p.move->settleTimeSeconds
                                          : (p.move ? p.move->runEndSeconds - p.move->moveEndSeconds : limit);
                     violation += std::max(0.0, v - limit) / limit + (p.move && p.move->settled ? 0.0 : 1.0);
+                } else if (largerIsBetter(c)) {
+                    // Below the minimum: by how much, in units of the minimum (at least 1 deg
+                    // or dB, so a zero minimum still scales); no value (NaN margin) counts 1.
+                    const auto v = valueOf(p, c);
+                    violation += v ? std::max(0.0, limit - *v) / std::max(limit, 1.0) : 1.0;
                 } else {
                     const double scale = c == SpecCriterion::Overshoot ? std::max(limit, 1.0) : limit;
                     violation += std::max(0.0, *valueOf(p, c) - limit) / scale;
@@ -210,15 +243,22 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                     possible = false;
                     continue;
                 }
-                const double limit = roundUp3(*v);
+                if (largerIsBetter(c) && !(*v > 0.0)) { // a minimum below 0 is not offered
+                    possible = false;
+                    continue;
+                }
+                const double limit = largerIsBetter(c) ? roundDown3(*v) : roundUp3(*v);
                 switch (c) {
                 case SpecCriterion::SettlingTime: relaxed.maxSettlingTimeSeconds = limit; break;
                 case SpecCriterion::Overshoot: relaxed.maxOvershootPct = limit; break;
                 case SpecCriterion::TrackingError: relaxed.maxErrorPct = limit; break;
                 case SpecCriterion::Settle: relaxed.maxSettleTimeSeconds = limit; break;
+                case SpecCriterion::PhaseMargin: relaxed.minPhaseMarginDeg = limit; break;
+                case SpecCriterion::GainMargin: relaxed.minGainMarginDb = limit; break;
                 default: break;
                 }
-                changes.push_back(std::string(wording(c).name) + " <= " + formatNumber(limit) + wording(c).unit);
+                changes.push_back(std::string(wording(c).name) + (largerIsBetter(c) ? " >= " : " <= ") +
+                                  formatNumber(limit) + wording(c).unit);
             }
             std::string text = "least-violating design: " + at(result, *d.leastViolating) + " (point " +
                                std::to_string(*d.leastViolating) + ")";
@@ -228,7 +268,7 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                 for (std::size_t k = 0; k < changes.size(); ++k)
                     text += (k ? ", " : "") + changes[k];
             } else if (!possible) {
-                text += "; relaxing a limit does not make it pass (it clips the actuator or never settles)";
+                text += "; relaxing a limit does not make it pass (it clips the actuator, never settles, or has no positive margin)";
             }
             d.warnings.push_back(text);
         }

@@ -12,10 +12,19 @@
 namespace xyt {
 
 /// The criteria of a Specification, as SpecificationCheck names them.
-enum class SpecCriterion { Stable, SettlingTime, Overshoot, NoSaturation, TrackingError, Settle };
+enum class SpecCriterion {
+    Stable,
+    SettlingTime,
+    Overshoot,
+    NoSaturation,
+    TrackingError,
+    Settle,
+    PhaseMargin, ///< a minimum: larger is better
+    GainMargin,  ///< a minimum: larger is better
+};
 
-/// "stable", "settling_time", "overshoot", "no_saturation", "tracking_error", "settle" (the keys
-/// of the CLI's checks).
+/// "stable", "settling_time", "overshoot", "no_saturation", "tracking_error", "settle",
+/// "phase_margin", "gain_margin" (the keys of the CLI's checks).
 std::string specCriterionName(SpecCriterion criterion);
 
 /// A criterion that no computed design of the grid passes.
@@ -25,7 +34,8 @@ struct CriterionFailure {
     /// settle, ...); unset when no design has a value for it (no stable design, none settled).
     std::optional<std::size_t> bestIndex;
     /// Its value, in the unit of the limit: % (overshoot, tracking error), s (settling, settle),
-    /// s of clipping (no_saturation, whose limit is 0 s); NaN when bestIndex is unset.
+    /// s of clipping (no_saturation, whose limit is 0 s), deg and dB (the margins, where the
+    /// best is the largest); NaN when bestIndex is unset.
     double bestValue = 0.0;
     double limit = 0.0; ///< the specification's limit, same unit
 };

@@ -3,6 +3,7 @@
 // what the core computed, follow the sliders, and say so when there is nothing to draw.
 #include "core/analysis/stability_margins.h"
 #include "ui/main_window.h"
+#include "ui/panels/number_field.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/plots/bode_plot.h"
@@ -31,6 +32,7 @@ private slots:
     void cleanup();
     void bodeDrawsTheCoreResponseAndMargins();
     void kpSliderMovesThePhaseMarginShown();
+    void marginMinimaAreJudgedOnThePanel();
     void polePlacementAxisShowsTheTrackingWithAndWithoutZpetc();
     void legendClickHidesACurve();
     void nyquistStatesTheCriterion();
@@ -88,11 +90,13 @@ void TstFrequencyViews::bodeDrawsTheCoreResponseAndMargins() {
              qPrintable(marks.join(" | ")));
     QVERIFY(marks.contains(QString("PM %1° at %2 rad/s").arg(QString::number(m.phaseMarginDeg, 'g', 3),
                                                             QString::number(m.phaseMarginOmegaRadPerSec, 'g', 3))));
-    QCOMPARE(cell(MetricsPanel::GainMargin, 0), displayNumber(m.gainMarginDb));
-    QCOMPARE(cell(MetricsPanel::PhaseMargin, 0), displayNumber(m.phaseMarginDeg));
+    // Judged against the (default, zero) minima: both pass.
+    QCOMPARE(cell(MetricsPanel::GainMargin, 0), displayNumber(m.gainMarginDb) + " ✓");
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 0), displayNumber(m.phaseMarginDeg) + " ✓");
     QCOMPARE(cell(MetricsPanel::DelayMargin, 0), displayNumber(m.delayMarginSeconds));
     QCOMPARE(cell(MetricsPanel::PeakSensitivity, 0), displayNumber(m.peakSensitivity));
-    QCOMPARE(cell(MetricsPanel::PhaseMargin, 1), displayNumber(session_->frequencyAnalysis(1).margins.phaseMarginDeg));
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 1),
+             displayNumber(session_->frequencyAnalysis(1).margins.phaseMarginDeg) + " ✓");
     // The GT loop's gain margin equals the gain at which its root locus crosses into the right
     // half-plane (cross-feature invariant, checked in the core; here only that both tabs agree).
     QVERIFY(m.gainMarginDb > 0.0 && std::isfinite(m.gainMarginDb));
@@ -110,10 +114,45 @@ void TstFrequencyViews::kpSliderMovesThePhaseMarginShown() {
     window_->kpSlider()->spinBox()->setValue(80.0);
     QCOMPARE(session_->session().axes[0].gt.kp, 80.0);
     const StabilityMargins expected = stabilityMargins(session_->axisEvaluation(0).gt->openLoop);
-    QCOMPARE(cell(MetricsPanel::PhaseMargin, 0), displayNumber(expected.phaseMarginDeg));
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 0), displayNumber(expected.phaseMarginDeg) + " ✓");
     QVERIFY(cell(MetricsPanel::PhaseMargin, 0) != before);
     QVERIFY(window_->bodePlot()->markerTexts().filter("PM ").first().startsWith(
         QString("PM %1°").arg(QString::number(expected.phaseMarginDeg, 'g', 3))));
+}
+
+void TstFrequencyViews::marginMinimaAreJudgedOnThePanel() {
+    // The specification's minimum phase and gain margins: edited at the panel (one undoable
+    // step), quoted in its limit column and judged per axis against the core's margins.
+    const double pmX = session_->frequencyAnalysis(0).margins.phaseMarginDeg;
+    const double pmY = session_->frequencyAnalysis(1).margins.phaseMarginDeg;
+    const double gmX = session_->frequencyAnalysis(0).margins.gainMarginDb;
+    QVERIFY(pmX > pmY); // paper 000: 88.1 deg (lower base) and 86.1 deg (upper base)
+    auto* phase = window_->metricsPanel()->specField("phase_margin");
+    auto* gain = window_->metricsPanel()->specField("gain_margin");
+    QVERIFY(phase && gain);
+    const double between = 0.5 * (pmX + pmY);
+    phase->setValue(between);
+    emit phase->valueAccepted(between);
+    QCOMPARE(session_->session().spec.minPhaseMarginDeg, between);
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 0), displayNumber(pmX) + " ✓");
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 1), displayNumber(pmY) + " ✗");
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 2), QString("≥ %1").arg(between));
+    QVERIFY(!session_->axisEvaluation(1).check.allPassed());
+    gain->setValue(gmX + 1.0);
+    emit gain->valueAccepted(gmX + 1.0);
+    QCOMPARE(cell(MetricsPanel::GainMargin, 0), displayNumber(gmX) + " ✗");
+    // Undo takes the gain minimum back, then the phase minimum.
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().spec.minGainMarginDb, 0.0);
+    QCOMPARE(cell(MetricsPanel::GainMargin, 0), displayNumber(gmX) + " ✓");
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().spec.minPhaseMarginDeg, 0.0);
+    QCOMPARE(cell(MetricsPanel::PhaseMargin, 1), displayNumber(pmY) + " ✓");
+    // A value out of range is refused at the field, naming it; the session keeps its minimum.
+    phase->setText("200");
+    QVERIFY(!phase->commit());
+    QVERIFY2(phase->errorText().contains("min phase margin"), qPrintable(phase->errorText()));
+    QCOMPARE(session_->session().spec.minPhaseMarginDeg, 0.0);
 }
 
 void TstFrequencyViews::polePlacementAxisShowsTheTrackingWithAndWithoutZpetc() {

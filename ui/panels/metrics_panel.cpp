@@ -4,7 +4,7 @@
 #include "core/model/errors.h"
 #include "ui/panels/number_field.h"
 
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QTableWidget>
@@ -97,22 +97,56 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     notices_->setAccessibleName(tr("Warnings"));
     notices_->setVisible(false);
     layout->addWidget(notices_);
-    auto* form = new QFormLayout;
     auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
+    auto nonNegative = [](const char* name, double max, const char* range) {
+        return [name, max, range](double v) {
+            requireFinite(v, name);
+            if (v < 0 || v > max)
+                throw InvalidInput(name, range);
+        };
+    };
     spec_.insert("settling", new NumberField("max settling time", positive("max settling time"), this));
-    spec_.insert("overshoot", new NumberField("max overshoot", [](double v) {
-        requireFinite(v, "max overshoot");
-        if (v < 0)
-            throw InvalidInput("max overshoot", "must be >= 0");
-    }, this));
+    spec_.insert("overshoot", new NumberField("max overshoot", nonNegative("max overshoot", 1e308, "must be >= 0"), this));
     spec_.insert("error", new NumberField("max error", positive("max error"), this));
-    form->addRow(tr("Spec: settling ≤ (s)"), spec_["settling"]);
-    form->addRow(tr("overshoot ≤ (%)"), spec_["overshoot"]);
-    form->addRow(tr("max |e| ≤ (% travel)"), spec_["error"]);
     spec_.insert("settle", new NumberField("max settle time", positive("max settle time"), this));
     spec_.insert("window", new NumberField("in-position window", positive("in-position window"), this));
-    form->addRow(tr("settle after tf ≤ (s)"), spec_["settle"]);
-    form->addRow(tr("in-position window (mm)"), spec_["window"]);
+    spec_.insert("phase_margin", new NumberField("min phase margin",
+                                                 nonNegative("min phase margin", 180.0, "must be 0 .. 180 degrees"), this));
+    spec_.insert("gain_margin", new NumberField("min gain margin",
+                                                nonNegative("min gain margin", 1e308, "must be >= 0 dB"), this));
+    // Two limits a row (label, field, label, field): seven limits in four rows keep the table
+    // above free of a scroll bar at 1366x768.
+    auto* specTitle = new QLabel(tr("<b>Specification</b> (the limit column above)"));
+    layout->addWidget(specTitle);
+    auto* form = new QGridLayout;
+    form->setHorizontalSpacing(6);
+    form->setVerticalSpacing(3);
+    // Short labels (the full wording is in each field's tooltip) keep the panel as narrow as
+    // the table above, leaving the plots their width.
+    const std::pair<QString, QString> cells[] = {
+        {tr("settling ≤ s"), "settling"}, {tr("overshoot ≤ %"), "overshoot"},
+        {tr("max |e| ≤ %"), "error"},     {tr("settle ≤ s"), "settle"},
+        {tr("window mm"), "window"},      {tr("PM ≥ °"), "phase_margin"},
+        {tr("GM ≥ dB"), "gain_margin"}};
+    int index = 0;
+    for (const auto& [label, key] : cells) {
+        auto* text = new QLabel(label);
+        text->setBuddy(spec_[key]);
+        spec_[key]->setMinimumWidth(48);
+        spec_[key]->setMaximumWidth(76);
+        form->addWidget(text, index / 2, (index % 2) * 2);
+        form->addWidget(spec_[key], index / 2, (index % 2) * 2 + 1);
+        ++index;
+    }
+    form->setColumnStretch(1, 1);
+    form->setColumnStretch(3, 1);
+    spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
+    spec_["error"]->setToolTip(tr("Maximum |e| as a percentage of the travel"));
+    spec_["settle"]->setToolTip(tr("Maximum settle time after the end (tf) of a point-to-point move"));
+    spec_["window"]->setToolTip(tr("In-position window of a point-to-point move: |e| ≤ this (mm)"));
+    spec_["phase_margin"]->setToolTip(tr("Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states "
+                                         "none). 45–60° is the usual rule."));
+    spec_["gain_margin"]->setToolTip(tr("Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule."));
     spec_["overshoot"]->setToolTip(tr("Every Guillemin–Truxal design overshoots a little on a step "
                                       "(its reference model is type 2), so 0 % fails them all."));
     layout->addLayout(form);
@@ -124,6 +158,8 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
             next.maxErrorPct = spec_["error"]->value();
             next.maxSettleTimeSeconds = spec_["settle"]->value();
             next.inPositionWindowMm = spec_["window"]->value();
+            next.minPhaseMarginDeg = spec_["phase_margin"]->value();
+            next.minGainMarginDb = spec_["gain_margin"]->value();
             if (!(next == current_))
                 emit specificationEdited(next);
         });
@@ -155,9 +191,15 @@ void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
         {PhaseMargin, f.ok ? shown(m.phaseMarginDeg) : tr("—")},
         {DelayMargin, f.ok ? shown(m.delayMarginSeconds) : tr("—")},
         {PeakSensitivity, f.ok ? shown(m.peakSensitivity) : tr("—")}};
+    const std::optional<SpecificationCheck>& check = marginChecks_[static_cast<std::size_t>(axis)];
     for (auto it = values.begin(); it != values.end(); ++it) {
         auto* item = new QTableWidgetItem(it.value());
         item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        if (f.ok && check && (it.key() == GainMargin || it.key() == PhaseMargin)) {
+            const bool pass = it.key() == GainMargin ? check->gainMargin : check->phaseMargin;
+            item->setText(it.value() + (pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗")));
+            item->setForeground(pass ? QColor(0x1b, 0x7f, 0x2a) : QColor(0xc6, 0x28, 0x28));
+        }
         if (f.ok && !m.closedLoopStable) {
             item->setForeground(QColor(0xc6, 0x28, 0x28));
             item->setToolTip(tr("the closed loop is unstable: not a robustness measure"));
@@ -185,13 +227,17 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     spec_["error"]->setValue(session.spec.maxErrorPct);
     spec_["settle"]->setValue(session.spec.maxSettleTimeSeconds);
     spec_["window"]->setValue(session.spec.inPositionWindowMm);
+    spec_["phase_margin"]->setValue(session.spec.minPhaseMarginDeg);
+    spec_["gain_margin"]->setValue(session.spec.minGainMarginDb);
     QMap<int, QString> specText = {{MaxErrorPct, tr("≤ %1").arg(session.spec.maxErrorPct)},
                                    {MaxU, tr("≤ %1").arg(session.umaxVolts)},
                                    {Saturated, tr("no")},
                                    {SettleAfterMove, tr("≤ %1").arg(session.spec.maxSettleTimeSeconds)},
                                    {FinalError, tr("|e| ≤ %1").arg(session.spec.inPositionWindowMm)},
                                    {Settling, tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds)},
-                                   {Overshoot, tr("≤ %1").arg(session.spec.maxOvershootPct)}};
+                                   {Overshoot, tr("≤ %1").arg(session.spec.maxOvershootPct)},
+                                   {GainMargin, tr("≥ %1").arg(session.spec.minGainMarginDb)},
+                                   {PhaseMargin, tr("≥ %1").arg(session.spec.minPhaseMarginDeg)}};
     for (int r = 0; r < RowCount; ++r) {
         if (isGroupRow(r))
             continue;
@@ -201,6 +247,8 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     }
     for (int c = 0; c < 2; ++c) {
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(c)];
+        marginChecks_[static_cast<std::size_t>(c)] =
+            a.ok && a.check.marginsApply ? std::optional(a.check) : std::nullopt;
         const QString header = QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
         table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
         QMap<int, QString> values;

@@ -7,6 +7,9 @@
 #include <QMap>
 #include <QWidget>
 
+#include <array>
+#include <optional>
+
 class QLabel;
 class QTableWidget;
 
@@ -42,7 +45,8 @@ public:
         return row == TrackingGroup || row == MoveGroup || row == StepGroup || row == MarginGroup;
     }
     static bool isMarginRow(int row) { return row > MarginGroup; }
-    /// Fills the loop-margin rows of column @p axis from the core's frequency analysis.
+    /// Fills the loop-margin rows of column @p axis from the core's frequency analysis, judged
+    /// (✓/✗) against the minima with the check of the last showEvaluation.
     void showMargins(int axis, const AxisFrequencyAnalysis& analysis);
 
 signals:
@@ -54,6 +58,8 @@ private:
     QLabel* notices_;
     QMap<QString, NumberField*> spec_;
     Specification current_;
+    /// Per axis, from the last showEvaluation: the margin checks (when the axis was evaluated).
+    std::array<std::optional<SpecificationCheck>, 2> marginChecks_;
 };
 
 /// @p v with @p significant digits, in fixed notation from 1e-4 to 1e6 ("40553", "5.874",

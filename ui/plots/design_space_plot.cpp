@@ -90,6 +90,10 @@ QString metricLabel(SweepCriterion metric) {
         return QObject::tr("max |u|");
     case SweepCriterion::Settle:
         return QObject::tr("settle time");
+    case SweepCriterion::PhaseMargin:
+        return QObject::tr("phase margin");
+    case SweepCriterion::GainMargin:
+        return QObject::tr("gain margin");
     }
     return {};
 }
@@ -100,6 +104,8 @@ QString metricAxisLabel(SweepCriterion metric) {
     const QString unit = itae                                ? QObject::tr("mm·s²")
                          : metric == SweepCriterion::MaxU     ? QObject::tr("V")
                          : metric == SweepCriterion::Settle   ? QObject::tr("s after tf")
+                         : metric == SweepCriterion::PhaseMargin ? QObject::tr("deg, larger is better")
+                         : metric == SweepCriterion::GainMargin  ? QObject::tr("dB, larger is better")
                                                               : QObject::tr("mm");
     return QObject::tr("%1%2 (%3)").arg(metricLabel(metric), itae ? QObject::tr(" ∫t|e|dt") : QString(), unit);
 }
@@ -382,8 +388,8 @@ void DesignSpacePlot::drawMetric() {
     double hi = -lo;
     for (int a = 0; a < nWn; ++a)
         for (int b = 0; b < nKp; ++b) {
-            double v = criterionValue(result_.at(static_cast<std::size_t>(a), static_cast<std::size_t>(b)),
-                                      metric_);
+            double v = criterionMetric(result_.at(static_cast<std::size_t>(a), static_cast<std::size_t>(b)),
+                                       metric_);
             // Not computed, diverged, or not drawable on a log scale: the status layer shows it.
             if (!std::isfinite(v) || (logColor_ && v <= 0.0))
                 v = std::numeric_limits<double>::quiet_NaN();

@@ -266,7 +266,9 @@ QJsonObject sessionToJson(const Session& s) {
                                           {"max_overshoot_pct", s.spec.maxOvershootPct},
                                           {"max_error_pct", s.spec.maxErrorPct},
                                           {"in_position_window_mm", s.spec.inPositionWindowMm},
-                                          {"max_settle_time", s.spec.maxSettleTimeSeconds}}},
+                                          {"max_settle_time", s.spec.maxSettleTimeSeconds},
+                                          {"min_phase_margin", s.spec.minPhaseMarginDeg},
+                                          {"min_gain_margin", s.spec.minGainMarginDb}}},
             {"snapshots", snapshots}};
 }
 
@@ -335,6 +337,18 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
                 s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
             if (spec.has("max_settle_time"))
                 s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
+            // Margin minima (issue 17): optional, files written before it keep 0 (none).
+            if (spec.has("min_phase_margin")) {
+                s.spec.minPhaseMarginDeg = spec.number("min_phase_margin");
+                if (!(s.spec.minPhaseMarginDeg >= 0.0 && s.spec.minPhaseMarginDeg <= 180.0))
+                    throw FormatError{"specification.min_phase_margin",
+                                      QStringLiteral("must be 0 .. 180 degrees")};
+            }
+            if (spec.has("min_gain_margin")) {
+                s.spec.minGainMarginDb = spec.number("min_gain_margin");
+                if (!(s.spec.minGainMarginDb >= 0.0))
+                    throw FormatError{"specification.min_gain_margin", QStringLiteral("must be >= 0 dB")};
+            }
             spec.finish();
         }
         const QJsonValue snaps = r.get("snapshots");

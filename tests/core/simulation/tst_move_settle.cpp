@@ -216,7 +216,10 @@ void TstMoveSettle::diagnosisRelaxesTheLimitsTheLeastViolatingDesignFails() {
         p.step.overshootPct = overshoot;
         p.tracking.maxAbsErrorPct = errorPct;
         p.tracking.maxAbsU = 1.0;
-        p.check = checkSpecification(spec, p.tracking, p.step);
+        p.phaseMarginDeg = 60.0; // margins well above the (zero) minima: not what is judged here
+        p.gainMarginDb = 20.0;
+        p.check = checkSpecification(spec, p.tracking, p.step, std::nullopt,
+                                     LoopMarginFigures{p.phaseMarginDeg, p.gainMarginDb});
         return p;
     };
     DesignSweepResult r;

@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/design_sweep.h"
+#include "core/analysis/loop_responses.h"
+#include "core/analysis/stability_margins.h"
+#include "core/study/sweep_diagnosis.h"
 #include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
@@ -10,6 +13,7 @@
 #include <QFile>
 #include <QTest>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -45,7 +49,7 @@ std::vector<std::uint64_t> fingerprint(const DesignPoint& p) {
     return {bits(p.wn), bits(p.kp), bits(p.ki), p.stable, p.feasible, p.computed,
             bits(m.rmse), bits(m.maxAbsError), bits(m.maxAbsErrorPct), bits(m.maxAbsU),
             m.saturated, bits(m.saturatedTimeSeconds), bits(m.itae), bits(s.settlingTimeSeconds),
-            bits(s.overshootPct), bits(s.peakTimeSeconds)};
+            bits(s.overshootPct), bits(s.peakTimeSeconds), bits(p.phaseMarginDeg), bits(p.gainMarginDb)};
 }
 
 } // namespace
@@ -70,6 +74,7 @@ private slots:
     void deterministicAcrossThreadCounts();
     void progressIsMonotoneOnCallingThread();
     void cancellationStopsEarly();
+    void marginsAreTheLoopsAndJudgedByTheMinima();
 };
 
 void TstDesignSweep::axisValues_data() {
@@ -282,6 +287,8 @@ void TstDesignSweep::bestIsArgminOverFeasible_data() {
     QTest::newRow("max_error") << int(SweepCriterion::MaxError);
     QTest::newRow("rmse") << int(SweepCriterion::Rmse);
     QTest::newRow("max_u") << int(SweepCriterion::MaxU);
+    QTest::newRow("phase_margin (maximized)") << int(SweepCriterion::PhaseMargin);
+    QTest::newRow("gain_margin (maximized)") << int(SweepCriterion::GainMargin);
 }
 
 void TstDesignSweep::bestIsArgminOverFeasible() {
@@ -304,6 +311,8 @@ void TstDesignSweep::bestIsArgminOverFeasible() {
         ++feasible;
         // The best is a minimum over every feasible point (ties go to the lowest index).
         QVERIFY(criterionValue(r.points[*r.bestIndex], o.criterion) <= criterionValue(p, o.criterion));
+        if (criterionMaximizes(o.criterion)) // ... which is the largest margin
+            QVERIFY(criterionMetric(r.points[*r.bestIndex], o.criterion) >= criterionMetric(p, o.criterion));
     }
     QCOMPARE(feasible, r.feasibleCount);
     QVERIFY(r.points[*r.bestIndex].feasible);
@@ -403,6 +412,66 @@ void TstDesignSweep::cancellationStopsEarly() {
         sweepDesignSpace(lowerBaseCubic(), logAxis(0.3, 4.0, 5), logAxis(5.0, 300.0, 5), o);
     QCOMPARE(none.status, SweepStatus::Cancelled);
     QCOMPARE(none.computedCount, 0);
+}
+
+void TstDesignSweep::marginsAreTheLoopsAndJudgedByTheMinima() {
+    // Issue 17: every point carries the margins of its loop L = G_c G, as stabilityMargins of
+    // gtLoopTransferFunctions gives them for the same design (the same computation, so equal
+    // to the bit), and the margin minima judge them like every other limit.
+    DesignProblem problem = lowerBaseCubic(130.0, 1.0);
+    SweepOptions o;
+    o.refine = false;
+    const SweepAxis wn = logAxis(0.5, 4.0, 5), kp = logAxis(5.0, 300.0, 5);
+    DesignSweepResult r = sweepDesignSpace(problem, wn, kp, o);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const DesignPoint& p : r.points) {
+        const GtDesign d = designGuilleminTruxal(problem.plant, p.wn, p.kp);
+        const StabilityMargins m = stabilityMargins(gtLoopTransferFunctions(d).openLoop);
+        QCOMPARE(bits(p.phaseMarginDeg), bits(m.phaseMarginDeg));
+        QCOMPARE(bits(p.gainMarginDb), bits(m.gainMarginDb));
+        QVERIFY(p.check.marginsApply);
+        if (p.stable) {
+            lo = std::min(lo, p.phaseMarginDeg);
+            hi = std::max(hi, p.phaseMarginDeg);
+        }
+    }
+    QVERIFY(lo < hi);
+    // A phase-margin minimum between the grid's extremes: exactly the stable points below it
+    // fail that criterion, after a rejudge and in a fresh sweep alike.
+    Specification spec = problem.spec;
+    spec.minPhaseMarginDeg = 0.5 * (lo + hi);
+    rejudgeDesignSpace(r, spec);
+    problem.spec = spec;
+    const DesignSweepResult fresh = sweepDesignSpace(problem, wn, kp, o);
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+        const DesignPoint& p = r.points[i];
+        QCOMPARE(p.check.phaseMargin, p.stable && p.phaseMarginDeg >= spec.minPhaseMarginDeg);
+        QCOMPARE(fresh.points[i].check.phaseMargin, p.check.phaseMargin);
+        QCOMPARE(fresh.points[i].feasible, p.feasible);
+        if (!p.check.phaseMargin)
+            QVERIFY(!p.feasible);
+    }
+    // A minimum no design meets: the diagnosis names the phase margin, quotes the largest one
+    // found, and relaxes the minimum to (3 digits below) the least-violating design's margin.
+    spec.minPhaseMarginDeg = 179.0;
+    rejudgeDesignSpace(r, spec);
+    QCOMPARE(r.feasibleCount, 0);
+    const SweepDiagnosis diagnosis = diagnoseSweep(r, spec);
+    const auto f = std::find_if(diagnosis.failingEverywhere.begin(), diagnosis.failingEverywhere.end(),
+                                [](const CriterionFailure& c) { return c.criterion == SpecCriterion::PhaseMargin; });
+    QVERIFY(f != diagnosis.failingEverywhere.end());
+    QCOMPARE(f->bestValue, hi);
+    QCOMPARE(f->limit, 179.0);
+    QVERIFY(diagnosis.relaxed.has_value()); // the least-violating design clips nothing here
+    {
+        const DesignPoint& least = r.points[*diagnosis.leastViolating];
+        QVERIFY(diagnosis.relaxed->minPhaseMarginDeg <= least.phaseMarginDeg);
+        QVERIFY(diagnosis.relaxed->minPhaseMarginDeg >= least.phaseMarginDeg * (1.0 - 1e-2));
+        const SpecificationCheck again =
+            checkSpecification(*diagnosis.relaxed, least.tracking, least.step, least.move,
+                               LoopMarginFigures{least.phaseMarginDeg, least.gainMarginDb});
+        QVERIFY(again.allPassed());
+    }
 }
 
 QTEST_APPLESS_MAIN(TstDesignSweep)

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/errors.h"
+#include "core/analysis/stability_margins.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/simulation.h"
 #include "core/study/specification.h"
 #include "core/simulation/trajectory.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -45,6 +47,10 @@ private slots:
     void invalidSpecThrows_data();
     void invalidSpecThrows();
     void paperLowerBaseDesign();
+    void marginMinimaOnTheClosedFormLoop();
+    void marginMinimaEdgeCases();
+    void invalidMarginMinimaThrow_data();
+    void invalidMarginMinimaThrow();
 };
 
 void TstSpecification::defaultsArePaperSpec() {
@@ -116,13 +122,16 @@ void TstSpecification::invalidSpecThrows_data() {
     QTest::newRow("overshoot") << 1 << "max_overshoot_pct";
     QTest::newRow("umax") << 2 << "umax";
     QTest::newRow("error") << 3 << "max_error_pct";
+    QTest::newRow("phase margin") << 4 << "min_phase_margin";
+    QTest::newRow("gain margin") << 5 << "min_gain_margin";
 }
 
 void TstSpecification::invalidSpecThrows() {
     QFETCH(int, which);
     QFETCH(QString, field);
     Specification s;
-    double* fields[] = {&s.maxSettlingTimeSeconds, &s.maxOvershootPct, &s.umaxVolts, &s.maxErrorPct};
+    double* fields[] = {&s.maxSettlingTimeSeconds, &s.maxOvershootPct, &s.umaxVolts, &s.maxErrorPct,
+                        &s.minPhaseMarginDeg, &s.minGainMarginDb};
     *fields[which] = -1.0;
     try {
         checkSpecification(s, goodTracking(), goodStep());
@@ -162,6 +171,78 @@ void TstSpecification::paperLowerBaseDesign() {
     Specification relaxed;
     relaxed.maxOvershootPct = 1.0;
     QVERIFY(checkSpecification(relaxed, m, s).allPassed());
+}
+
+void TstSpecification::marginMinimaOnTheClosedFormLoop() {
+    // L = K / (s (s + 1)(s + 2)): phase crossover at w = sqrt(2) where |L| = K / 6, so the gain
+    // margin is 6 / K (closed form; 20 log10(6/K) dB). K = 1.5: 12.04 dB. The minimum is judged
+    // on the margins the core computes, with the closed loop K / (s^3 + 3 s^2 + 2 s + K).
+    const double k = 1.5;
+    const TransferFunction loop(Polynomial::constant(k), Polynomial::fromDescending({1.0, 3.0, 2.0, 0.0}));
+    const StabilityMargins m = stabilityMargins(loop);
+    const double gmDb = 20.0 * std::log10(6.0 / k);
+    XYT_COMPARE_NEAR(m.gainMarginDb, gmDb, 1e-10, 0.0); // Newton-refined root: round-off only
+    const StepCharacteristics step =
+        stepCharacteristics(TransferFunction(Polynomial::constant(k), Polynomial::fromDescending({1.0, 3.0, 2.0, k})));
+    QVERIFY(step.stable);
+    const LoopMarginFigures figures{m.phaseMarginDeg, m.gainMarginDb};
+    Specification spec;
+    spec.maxOvershootPct = 100.0; // only the margins are judged here
+    spec.maxSettlingTimeSeconds = 1e6;
+    const auto judge = [&](double minPm, double minGm) {
+        spec.minPhaseMarginDeg = minPm;
+        spec.minGainMarginDb = minGm;
+        return checkSpecification(spec, goodTracking(), step, std::nullopt, figures);
+    };
+    QVERIFY(judge(0.0, 0.0).allPassed()); // the defaults: no requirement
+    QVERIFY(judge(0.0, 0.0).marginsApply);
+    QVERIFY(judge(0.0, gmDb - 1e-6).gainMargin);
+    QVERIFY(!judge(0.0, gmDb + 1e-6).gainMargin);
+    QVERIFY(!judge(0.0, gmDb + 1e-6).allPassed());
+    QVERIFY(judge(m.phaseMarginDeg - 1e-6, 0.0).phaseMargin);
+    QVERIFY(!judge(m.phaseMarginDeg + 1e-6, 0.0).phaseMargin);
+    QVERIFY(judge(m.phaseMarginDeg + 1e-6, 0.0).gainMargin); // one failure says nothing of the other
+    // Without margins (a check that was not given them) nothing is judged.
+    const SpecificationCheck none = checkSpecification(spec, goodTracking(), step);
+    QVERIFY(!none.marginsApply && none.phaseMargin && none.gainMargin);
+}
+
+void TstSpecification::marginMinimaEdgeCases() {
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Specification spec;
+    spec.minPhaseMarginDeg = 45.0;
+    spec.minGainMarginDb = 6.0;
+    // No crossing (+infinity) passes; NaN (not computed) fails.
+    SpecificationCheck c = checkSpecification(spec, goodTracking(), goodStep(), std::nullopt, LoopMarginFigures{inf, inf});
+    QVERIFY(c.phaseMargin && c.gainMargin);
+    c = checkSpecification(spec, goodTracking(), goodStep(), std::nullopt, LoopMarginFigures{nan, nan});
+    QVERIFY(!c.phaseMargin && !c.gainMargin);
+    // An unstable closed loop fails both, even with large numbers and zero minima: its margins
+    // are not robustness measures.
+    StepCharacteristics unstable;
+    unstable.stable = false;
+    c = checkSpecification(Specification{}, goodTracking(), unstable, std::nullopt, LoopMarginFigures{80.0, 20.0});
+    QVERIFY(!c.phaseMargin && !c.gainMargin);
+}
+
+void TstSpecification::invalidMarginMinimaThrow_data() {
+    QTest::addColumn<double>("phase");
+    QTest::addColumn<double>("gain");
+    QTest::addColumn<QString>("field");
+    QTest::newRow("phase above 180") << 180.5 << 0.0 << "min_phase_margin";
+    QTest::newRow("phase NaN") << std::numeric_limits<double>::quiet_NaN() << 0.0 << "min_phase_margin";
+    QTest::newRow("gain infinite") << 0.0 << std::numeric_limits<double>::infinity() << "min_gain_margin";
+}
+
+void TstSpecification::invalidMarginMinimaThrow() {
+    QFETCH(double, phase);
+    QFETCH(double, gain);
+    QFETCH(QString, field);
+    Specification s;
+    s.minPhaseMarginDeg = phase;
+    s.minGainMarginDb = gain;
+    QCOMPARE(xyt::test::invalidInputField([&] { s.validate(); }), field);
 }
 
 QTEST_APPLESS_MAIN(TstSpecification)
