@@ -8,6 +8,9 @@
 #include <QJsonDocument>
 #include <QTest>
 
+#include <algorithm>
+#include <cmath>
+
 namespace {
 
 const QStringList kLowerCubic = {"sweep", "--preset", "lower-base", "--trajectory", "cubic",
@@ -23,6 +26,7 @@ private slots:
     void bestOnTheEdgeIsWarned();
     void badGridExitsWithTwo_data();
     void badGridExitsWithTwo();
+    void marginCriterionAndMinimum();
 };
 
 void TstCliSweep::contractKeysAndCsv() {
@@ -165,6 +169,10 @@ void TstCliSweep::badGridExitsWithTwo_data() {
     QTest::newRow("missing --kp") << QStringList{"--wn", "1:5:3"} << "--kp";
     QTest::newRow("bad criterion") << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--criterion", "iae"}
                                    << "--criterion";
+    QTest::newRow("phase margin above 180")
+        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--min-phase-margin", "200"} << "--min-phase-margin";
+    QTest::newRow("negative gain margin")
+        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--min-gain-margin", "-3"} << "--min-gain-margin";
     QTest::newRow("bad threads") << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--threads", "0"}
                                  << "--threads";
 }
@@ -178,6 +186,56 @@ void TstCliSweep::badGridExitsWithTwo() {
     QVERIFY2(run.err.contains(argument.toUtf8()), run.err.constData());
     QCOMPARE(run.err.count('\n'), 1);
     QVERIFY(run.out.isEmpty());
+}
+
+void TstCliSweep::marginCriterionAndMinimum() {
+    // Issue 17: --criterion phase_margin picks the feasible design of the largest phase margin,
+    // and --min-phase-margin makes every design below it infeasible. Each point's margin is the
+    // core's (tst_design_sweep checks it against stabilityMargins); the CSV column equals it.
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("sweep.csv");
+    const QStringList grid = {"--wn", "0.5:4:4", "--kp", "10:200:4", "--log", "--max-overshoot", "5"};
+    const auto free = xyt::test::runCli(kLowerCubic + grid + QStringList{"--criterion", "phase_margin",
+                                                                          "--csv", csv});
+    QCOMPARE(free.exitCode, 0);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const QJsonValue& row : free.json()["points"].toArray())
+        for (const QJsonValue& v : row.toArray()) {
+            const QJsonObject p = v.toObject();
+            QVERIFY(p["phase_margin"].isDouble() && p["gain_margin"].isDouble());
+            if (p["feasible"].toBool()) {
+                lo = std::min(lo, p["phase_margin"].toDouble());
+                hi = std::max(hi, p["phase_margin"].toDouble());
+            }
+        }
+    QVERIFY(lo < hi);
+    const QJsonObject best = free.json()["best"].toObject();
+    QCOMPARE(best["phase_margin"].toDouble(), hi);
+    QCOMPARE(best["checks"].toObject()["phase_margin"].toBool(), true);
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    const int column = static_cast<int>(lines[0].split(',').indexOf("phase_margin"));
+    QVERIFY(column > 0);
+    QCOMPARE(lines[1].split(',')[column].toDouble(),
+             free.json()["points"].toArray()[0].toArray()[0].toObject()["phase_margin"].toDouble());
+
+    const double minimum = 0.5 * (lo + hi);
+    const auto strict = xyt::test::runCli(kLowerCubic + grid + QStringList{"--min-phase-margin",
+                                                                            QString::number(minimum, 'g', 17)});
+    QCOMPARE(strict.exitCode, 0);
+    QCOMPARE(strict.json()["specification"].toObject()["min_phase_margin"].toDouble(), minimum);
+    int feasible = 0;
+    for (const QJsonValue& row : strict.json()["points"].toArray())
+        for (const QJsonValue& v : row.toArray()) {
+            const QJsonObject p = v.toObject();
+            if (p["feasible"].toBool()) {
+                ++feasible;
+                QVERIFY(p["phase_margin"].toDouble() >= minimum);
+            }
+        }
+    QVERIFY(feasible > 0);
+    QVERIFY(feasible < free.json()["feasible_count"].toInt());
 }
 
 QTEST_APPLESS_MAIN(TstCliSweep)

@@ -64,6 +64,7 @@ private slots:
     void clickOnACellLoadsThatDesign();
     void hoverShowsTheFiguresAndFailures();
     void overshootOnlyFailureIsExplained();
+    void marginsAreMappedAndTheirMinimumJudgesTheStudy();
     void bestOnTheEdgeIsWarned();
     void emptyMapBeforeTheFirstRun();
     void controlsStayInReachAndStill();
@@ -377,6 +378,45 @@ void TstDesignSpaceView::overshootOnlyFailureIsExplained() {
     QCOMPARE(view_->plot()->leastViolatingMarker()->dataCount(), 0);
     session_->undoStack()->undo();
     QCOMPARE(session_->session().spec.maxOvershootPct, 0.0);
+}
+
+void TstDesignSpaceView::marginsAreMappedAndTheirMinimumJudgesTheStudy() {
+    // Issue 17: the map shows the phase margin itself (deg, larger is better), and a minimum
+    // set in the view is the session's (one undoable step) and judges the held study again.
+    setSmallGrid(6, 2.0);
+    runAndWait();
+    const DesignSweepResult held = *view_->result();
+    const int index = view_->metricBox()->findData(static_cast<int>(SweepCriterion::PhaseMargin));
+    QVERIFY(index >= 0);
+    view_->metricBox()->setCurrentIndex(index);
+    QCPColorMapData* map = view_->plot()->colorMap()->data();
+    std::vector<double> feasibleMargins;
+    for (std::size_t i = 0; i < 6; ++i)
+        for (std::size_t j = 0; j < 6; ++j) {
+            const DesignPoint& p = held.at(i, j);
+            const double cell = map->cell(static_cast<int>(i), static_cast<int>(j));
+            if (p.computed && p.metricsFinite && std::isfinite(p.phaseMarginDeg))
+                QCOMPARE(cell, p.phaseMarginDeg);
+            if (p.feasible)
+                feasibleMargins.push_back(p.phaseMarginDeg);
+        }
+    QVERIFY(feasibleMargins.size() >= 2);
+    std::sort(feasibleMargins.begin(), feasibleMargins.end());
+    const double minimum = 0.5 * (feasibleMargins.front() + feasibleMargins.back());
+    QVERIFY(feasibleMargins.front() < minimum);
+    const int before = session_->undoStack()->count();
+    view_->phaseMarginBox()->setValue(minimum);
+    emit view_->phaseMarginBox()->editingFinished();
+    QCOMPARE(session_->undoStack()->count(), before + 1);
+    QCOMPARE(session_->session().spec.minPhaseMarginDeg, view_->phaseMarginBox()->value());
+    for (const DesignPoint& p : view_->result()->points)
+        if (p.feasible)
+            QVERIFY(p.phaseMarginDeg >= session_->session().spec.minPhaseMarginDeg);
+    QVERIFY(view_->result()->feasibleCount < static_cast<int>(feasibleMargins.size()));
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().spec.minPhaseMarginDeg, 0.0);
+    QCOMPARE(view_->phaseMarginBox()->value(), 0.0);
+    QCOMPARE(view_->result()->feasibleCount, held.feasibleCount);
 }
 
 void TstDesignSpaceView::cancelStopsAStudyAndKeepsTheWindowResponsive() {

@@ -29,6 +29,7 @@ private slots:
     void malformed_data();
     void malformed();
     void unknownFieldsAreReported();
+    void filesWithoutMarginMinimaLoad();
     void newerVersionIsRefused();
     void fileErrors();
     void failedSaveKeepsOldFile();
@@ -106,6 +107,8 @@ void TstSessionFile::roundTripEveryField() {
     s.controllerTsSeconds = 0.002;
     s.piDiscretization = PiDiscretization::BackwardEuler;
     s.spec.maxOvershootPct = 1.5;
+    s.spec.minPhaseMarginDeg = 47.25;
+    s.spec.minGainMarginDb = 6.5;
     s.snapshots.push_back(s.snapshot("first"));
     s.snapshots.back().axes[0].gt.omegaNRadPerSec = 3.25;
     QTemporaryDir dir;
@@ -147,6 +150,10 @@ void TstSessionFile::malformed_data() {
                                   << "must be later than t0";
     QTest::newRow("object expected") << "trajectory" << QJsonValue(3) << "trajectory"
                                      << "must be an object";
+    QTest::newRow("phase margin above 180") << "specification.min_phase_margin" << QJsonValue(190)
+                                            << "specification.min_phase_margin" << "must be 0 .. 180 degrees";
+    QTest::newRow("negative gain margin") << "specification.min_gain_margin" << QJsonValue(-1)
+                                          << "specification.min_gain_margin" << "must be >= 0 dB";
     QTest::newRow("duration too long") << "trajectory.duration" << QJsonValue(1e12)
                                        << "trajectory.duration"
                                        << QStringLiteral("needs 1e+14 samples at this dt; the limit is %1 on this machine")
@@ -163,6 +170,20 @@ void TstSessionFile::malformed() {
     QVERIFY(!r.ok);
     QCOMPARE(r.errorPath, expectedPath);
     QCOMPARE(r.error, expectedReason);
+}
+
+void TstSessionFile::filesWithoutMarginMinimaLoad() {
+    // Files written before issue 17 have no margin minima: they load with none (0).
+    QJsonObject root = defaultJson();
+    QJsonObject spec = root["specification"].toObject();
+    QVERIFY(spec.contains("min_phase_margin") && spec.contains("min_gain_margin"));
+    spec.remove("min_phase_margin");
+    spec.remove("min_gain_margin");
+    root["specification"] = spec;
+    const auto r = sessionFromJson(root);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QCOMPARE(r.session.spec.minPhaseMarginDeg, 0.0);
+    QCOMPARE(r.session.spec.minGainMarginDb, 0.0);
 }
 
 void TstSessionFile::unknownFieldsAreReported() {
