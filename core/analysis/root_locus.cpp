@@ -5,6 +5,7 @@
 #include "core/model/root_matching.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -98,6 +99,8 @@ void validateOptions(const RootLocusOptions& o) {
         throw InvalidInput("maxPoints", "must be at least 2");
     if (!(o.maxWork > 0.0))
         throw InvalidInput("maxWork", "must be positive");
+    if (!(o.maxSeconds > 0.0))
+        throw InvalidInput("maxSeconds", "must be positive");
 }
 
 /**
@@ -224,6 +227,7 @@ public:
                 columns[i].push_back(roots[i]);
         };
         append(0.0, current);
+        const auto started = std::chrono::steady_clock::now();
         bool warnedBound = false;
         while (!finished(current, k)) {
             if (static_cast<int>(r_.gains.size()) >= o_.maxPoints) {
@@ -241,6 +245,18 @@ public:
                                       " points) at K = " + std::to_string(k) +
                                       " before every branch converged: the loop's order " +
                                       std::to_string(n_) + " makes each point expensive");
+                break;
+            }
+            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
+                o_.maxSeconds) {
+                r_.status = RootLocusStatus::PointLimitReached;
+                std::ostringstream bound;
+                bound << o_.maxSeconds;
+                r_.warnings.push_back("stopped at the time bound (" + bound.str() + " s, " +
+                                      std::to_string(r_.gains.size()) + " points) at K = " +
+                                      std::to_string(k) +
+                                      " before every branch converged: its roots are hard to find "
+                                      "(an ill-conditioned loop)");
                 break;
             }
             if (k > 1e250) {

@@ -46,7 +46,15 @@ struct RootLocusOptions {
     /// Bound on the root-finding work, in counted operations (about 20 n^2 per Newton
     /// correction and 10 n^3 per eigenvalue solve, n = deg D): the 4th-order GT locus uses
     /// about 1e6, a 40th-order one ran for minutes before this bound (status PointLimitReached).
-    double maxWork = 2e9;
+    /// 2e8 is 200 times the GT locus and well under a second where the count holds.
+    double maxWork = 2e8;
+    /**
+     * Wall-clock bound (s), the safety net under the count: an eigenvalue solve that does not
+     * converge costs 40 Francis steps a row, far above the counted 10 n^3. A 7th-order loop
+     * found by fuzz_design (corpus timeout-locus-work) ran 6.7 s within the work bound, over
+     * 15 s in the sanitizer build. Status PointLimitReached with a warning, as the work bound.
+     */
+    double maxSeconds = 2.0;
 };
 
 /// One branch: roots[i] is a closed-loop pole at gains[i] of the RootLocus.

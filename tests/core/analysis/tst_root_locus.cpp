@@ -539,6 +539,21 @@ void TstRootLocus::clusteredPolesWarnAndWorkIsBounded() {
     // Whatever was traced is consistent: one root per branch per gain.
     for (const xyt::LocusBranch& b : r.branches)
         QCOMPARE(b.roots.size(), r.gains.size());
+    // The time bound (the safety net for solves the count underestimates): any trace outlasts
+    // a nanosecond, so it stops there with its own warning.
+    xyt::RootLocusOptions quick;
+    quick.maxSeconds = 1e-9;
+    const xyt::RootLocus timed = xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
+                                                xyt::Polynomial::fromAscending(d), 0.0, quick);
+    QCOMPARE(timed.status, xyt::RootLocusStatus::PointLimitReached);
+    QVERIFY(std::any_of(timed.warnings.begin(), timed.warnings.end(),
+                        [](const std::string& w) { return w.find("time bound") != std::string::npos; }));
+    for (const xyt::LocusBranch& b : timed.branches)
+        QCOMPARE(b.roots.size(), timed.gains.size());
+    quick.maxSeconds = 0.0;
+    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
+                                                               xyt::Polynomial::fromAscending(d),
+                                                               0.0, quick));
     xyt::RootLocusOptions none;
     none.maxWork = 0.0;
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
