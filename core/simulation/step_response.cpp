@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace xyt {
 
@@ -41,7 +42,8 @@ StepResponseCurve zpetcStepResponseCurve(const PolePlacementDesign& loop, const 
     const std::size_t preview = static_cast<std::size_t>(std::max(zpetc.previewSteps, 0));
     const std::size_t stepAt = preview + static_cast<std::size_t>(std::max(zpetc.bMinus.degree(), 0)) + 2;
     const std::size_t after = static_cast<std::size_t>(std::clamp(std::ceil(horizonSeconds / ts), 10.0, 1e6));
-    const std::size_t samples = stepAt + after;
+    // Samples 0 .. stepAt + after: the last one `after` steps (>= the horizon) past the step.
+    const std::size_t samples = stepAt + after + 1;
     std::vector<double> r(samples + preview, 0.0);
     std::fill(r.begin() + static_cast<std::ptrdiff_t>(stepAt), r.end(), 1.0);
     StepResponseCurve out;
@@ -49,6 +51,40 @@ StepResponseCurve zpetcStepResponseCurve(const PolePlacementDesign& loop, const 
     for (std::size_t k = 0; k < samples; ++k)
         out.t.push_back(static_cast<double>(k) * ts);
     out.stepAtSeconds = static_cast<double>(stepAt) * ts;
+    return out;
+}
+
+RiseTime riseTime(const StepResponseCurve& curve, double finalValue, double lowFraction,
+                  double highFraction) {
+    if (curve.t.size() != curve.y.size() || curve.t.size() < 2)
+        throw InvalidInput("curve", "t and y must have the same length, at least 2");
+    if (!std::isfinite(finalValue) || finalValue == 0.0)
+        throw InvalidInput("finalValue", "must be a finite number other than zero");
+    if (!(lowFraction >= 0.0 && lowFraction < highFraction && highFraction <= 1.0))
+        throw InvalidInput("fractions", "must satisfy 0 <= low < high <= 1");
+    // The first instant at which y / final reaches the level (dividing by the final value lets
+    // a response to a negative final value rise "up" as well).
+    const auto crossing = [&](double level) {
+        for (std::size_t k = 0; k < curve.y.size(); ++k) {
+            const double v = curve.y[k] / finalValue;
+            if (!(v >= level))
+                continue;
+            if (k == 0)
+                return curve.t[0];
+            const double before = curve.y[k - 1] / finalValue;
+            const double s = (level - before) / (v - before); // in (0, 1]: before < level <= v
+            return curve.t[k - 1] + s * (curve.t[k] - curve.t[k - 1]);
+        }
+        return std::numeric_limits<double>::quiet_NaN();
+    };
+    RiseTime out;
+    const double low = crossing(lowFraction), high = crossing(highFraction);
+    if (std::isnan(low) || std::isnan(high))
+        return out;
+    out.reached = true;
+    out.lowCrossingSeconds = low;
+    out.highCrossingSeconds = high;
+    out.seconds = high - low;
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include "core/design/zpetc.h"
 #include "core/model/transfer_function.h"
 
+#include <limits>
 #include <vector>
 
 namespace xyt {
@@ -34,5 +35,25 @@ StepResponseCurve stepResponseCurve(const TransferFunction& closedLoop, double h
  */
 StepResponseCurve zpetcStepResponseCurve(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
                                          double horizonSeconds);
+
+/// Where a step response first reaches two fractions of its final value (rise time).
+struct RiseTime {
+    bool reached = false; ///< both levels were reached within the curve; else the rest is NaN
+    double lowCrossingSeconds = std::numeric_limits<double>::quiet_NaN();  ///< curve's clock
+    double highCrossingSeconds = std::numeric_limits<double>::quiet_NaN(); ///< curve's clock
+    double seconds = std::numeric_limits<double>::quiet_NaN(); ///< high - low crossing
+};
+
+/**
+ * The rise time of @p curve: the first instants at which y / finalValue reaches @p lowFraction
+ * and @p highFraction (10 % and 90 % by default), each linearly interpolated between the two
+ * samples that bracket it (a sample already at the level gives its own time), and their
+ * difference. Times are on the curve's clock (t, not t - stepAtSeconds); the difference does
+ * not depend on it. A level never reached leaves reached = false and NaN times.
+ * @throws InvalidInput "curve" unless t and y have the same length >= 2, "finalValue" unless
+ *         finite and non-zero, "fractions" unless 0 <= low < high <= 1.
+ */
+RiseTime riseTime(const StepResponseCurve& curve, double finalValue, double lowFraction = 0.1,
+                  double highFraction = 0.9);
 
 } // namespace xyt
