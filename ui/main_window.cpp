@@ -2,6 +2,7 @@
 #include "ui/main_window.h"
 
 #include "core/model/errors.h"
+#include "core/simulation/step_view.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/design_space_view.h"
 #include "ui/panels/equations_panel.h"
@@ -18,6 +19,7 @@
 #include "ui/panels/pp_editor.h"
 #include "ui/session/recovery_store.h"
 #include "ui/plots/root_locus_plot.h"
+#include "ui/plots/step_plot.h"
 #include "ui/session/session_file.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/snapshot_compare_dialog.h"
@@ -70,6 +72,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     controlScroll->setMinimumWidth(controls->sizeHint().width() + 20);
 
     timePlot_ = new TimeResponsePlot(this);
+    stepPlot_ = new StepPlot(this);
     contourPlot_ = new ContourPlot(this);
     rootLocusPlot_ = new RootLocusPlot(this);
     poleZeroPlot_ = new PoleZeroPlot(this);
@@ -90,6 +93,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     upperTabs_->setCornerWidget(sweptParameter_, Qt::TopRightCorner);
     connect(sweptParameter_, &QComboBox::currentIndexChanged, this, &MainWindow::refresh);
     lowerTabs_->addTab(timePlot_, tr("&Time response"));
+    lowerTabs_->addTab(stepPlot_, tr("&Step response"));
     lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
     magnification_ = new QDoubleSpinBox(this);
     magnification_->setRange(1.0, 10000.0);
@@ -370,6 +374,8 @@ void MainWindow::refresh() {
         session_->liveNotice().isEmpty() ? QStringList{} : QStringList{session_->liveNotice()};
     if (shown(timePlot_))
         timePlot_->showAxis(e, title, s.umaxVolts, liveNotices);
+    if (shown(stepPlot_))
+        showStep(e, a, s.spec, title);
     if (shown(contourPlot_))
         contourPlot_->showSession(session_->liveSession(), session_->evaluation());
     if (e.ok) {
@@ -378,6 +384,15 @@ void MainWindow::refresh() {
             poles = e.closedLoop().poles();
         } catch (const std::exception&) {
             poles.clear();
+        }
+        if (shown(rootLocusPlot_)) {
+            LocusRequirements req;
+            req.active = true;
+            req.maxOvershootPct = s.spec.maxOvershootPct;
+            req.maxSettlingTimeSeconds = s.spec.maxSettlingTimeSeconds;
+            if (a.method == DesignMethod::GuilleminTruxal)
+                req.designOmegaNRadPerSec = a.gt.omegaNRadPerSec;
+            rootLocusPlot_->setRequirements(req);
         }
         if (shown(rootLocusPlot_))
             rootLocusPlot_->showLocus(session_->rootLocus(axis), poles,
@@ -423,7 +438,9 @@ void MainWindow::refresh() {
         if (shown(bodePlot_)) {
             if (e.ok && f.ok)
                 bodePlot_->showAnalysis(f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled,
-                                        tr("Bode diagram of %1").arg(title));
+                                        tr("Bode diagram of %1").arg(title),
+                                        {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb,
+                                         e.check.phaseMargin, e.check.gainMargin});
             else
                 bodePlot_->showNoResult(tr("Bode diagram of %1").arg(title), reason);
         }
@@ -469,6 +486,24 @@ void MainWindow::refresh() {
     lastRefreshMs_ = static_cast<double>(timer.nsecsElapsed()) / 1e6;
     status_->setText(state + tr("| updated in %1 ms").arg(lastRefreshMs_, 0, 'f', 1));
     setWindowModified(session_->isModified());
+}
+
+void MainWindow::showStep(const AxisEvaluation& e, const AxisSettings& a, const Specification& spec,
+                          const QString& title) {
+    const QString stepTitle = tr("Unit step of %1").arg(title);
+    if (!e.ok) {
+        stepPlot_->showNoResult(stepTitle, tr("No design: %1: %2").arg(QString::fromStdString(e.errorField),
+                                                                      QString::fromStdString(e.error)));
+        return;
+    }
+    try {
+        const bool pp = e.pp && e.zpetc;
+        stepPlot_->showView(stepView(e.closedLoop(), e.step, specificationEnvelope(spec), pp ? &*e.pp : nullptr,
+                                     pp ? &*e.zpetc : nullptr, pp && a.pp.zpetcEnabled),
+                            stepTitle);
+    } catch (const std::exception& ex) {
+        stepPlot_->showNoResult(stepTitle, tr("No step response: %1").arg(QString::fromUtf8(ex.what())));
+    }
 }
 
 void MainWindow::storeSnapshot(const QString& name) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/session/session_evaluation.h"
+
 #include <QMainWindow>
 
 class QComboBox;
@@ -26,6 +28,7 @@ class NyquistPlot;
 class PoleZeroPlot;
 class PpEditor;
 class RootLocusPlot;
+class StepPlot;
 class SessionFileController;
 class TimeResponsePlot;
 class TrajectoryEditor;
@@ -46,6 +49,7 @@ public:
     PlantEditor* plantEditor() const { return plantEditor_; }
     TrajectoryEditor* trajectoryEditor() const { return trajectoryEditor_; }
     TimeResponsePlot* timePlot() const { return timePlot_; }
+    StepPlot* stepPlot() const { return stepPlot_; }
     RootLocusPlot* rootLocusPlot() const { return rootLocusPlot_; }
     PoleZeroPlot* poleZeroPlot() const { return poleZeroPlot_; }
     ParameterLocusPlot* parameterLocusPlot() const { return parameterLocusPlot_; }
@@ -102,6 +106,7 @@ private:
     QSplitter* mainSplitter_ = nullptr;
     QSplitter* plotSplitter_ = nullptr;
     TimeResponsePlot* timePlot_ = nullptr;
+    StepPlot* stepPlot_ = nullptr;
     RootLocusPlot* rootLocusPlot_ = nullptr;
     PoleZeroPlot* poleZeroPlot_ = nullptr;
     ParameterLocusPlot* parameterLocusPlot_ = nullptr;
@@ -121,6 +126,9 @@ private:
     int overlay_ = -1;
     void updateTitle();
     void rebuildOverlayMenu();
+    /// Draws the step view of the axis (its evaluation @p e, settings @p a) against @p spec.
+    void showStep(const AxisEvaluation& e, const AxisSettings& a, const Specification& spec,
+                  const QString& title);
 };
 
 } // namespace xyt::ui

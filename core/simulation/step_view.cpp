@@ -16,6 +16,7 @@ StepView stepView(const TransferFunction& closedLoop, const StepCharacteristics&
         return out;
     out.envelope.finalValue = step.finalValue;
     const double ts = closedLoop.tsSeconds();
+    out.sampleTimeSeconds = ts;
     out.horizonSeconds = stepViewHorizonSeconds(step, ts > 0.0 ? 20.0 * ts : 0.0, limits.settlingTimeSeconds);
     if (pp && zpetc) {
         StepViewCurve alone{StepCurveKind::LoopAlone, stepResponseCurve(pp->closedLoop(), out.horizonSeconds)};

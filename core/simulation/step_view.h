@@ -37,6 +37,8 @@ struct StepView {
     StepCharacteristics step;
     RiseTime rise;              ///< 10 -> 90 % of step.finalValue on curves[0] (its clock)
     double horizonSeconds = 0.0; ///< after the step (stepViewHorizonSeconds)
+    /// The loop's sample time (0: continuous); a discrete loop's curves are its samples, held.
+    double sampleTimeSeconds = 0.0;
     StepEnvelope envelope;      ///< the limits given, with finalValue = step.finalValue
     std::vector<bool> violations; ///< envelopeViolations of curves[0]
 };

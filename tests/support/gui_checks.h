@@ -7,12 +7,14 @@
 #include "core/analysis/root_locus.h"
 #include "core/session/session_evaluation.h"
 #include "core/session/axis_frequency.h"
+#include "core/simulation/step_view.h"
 #include "ui/main_window.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/nyquist_plot.h"
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/plots/root_locus_plot.h"
+#include "ui/plots/step_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/tuning_session.h"
 #include "tests/support/tolerance.h"
@@ -213,8 +215,8 @@ inline bool sameSignal(QSharedPointer<QCPGraphDataContainer> data, const std::ve
 
 /**
  * Shows each plot tab of @p window in turn and checks that its data equal what the core computes
- * for the presenter's current (live) session, computed afresh here: the run's signals, the root
- * locus branches and markers, the pole-zero sets, the parameter locus, or "no result" for an
+ * for the presenter's current (live) session, computed afresh here: the run's signals, the step
+ * view's curves and settling marker, the root locus branches and markers, the pole-zero sets, the parameter locus, or "no result" for an
  * axis without a design. Returns "" when everything matches, else what differs. Runs short
  * enough for the exact comparison (<= 16 384 samples: no decimation) are assumed.
  */
@@ -239,6 +241,33 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
             problems << "time plot: u differs from the core's run";
     } else if (!time->outputGraph()->data()->isEmpty()) {
         problems << "time plot: shows a run for an axis without a design";
+    }
+
+    // The step view: every curve the core's for this design and specification, the markers
+    // at the evaluation's figures (the metrics panel's).
+    lower->setCurrentWidget(window->stepPlot());
+    auto* step = window->stepPlot();
+    if (e.ok && e.step.stable) {
+        const bool pp = e.pp && e.zpetc;
+        const StepView expected = stepView(e.closedLoop(), e.step, ui::specificationEnvelope(session->session().spec),
+                                           pp ? &*e.pp : nullptr, pp ? &*e.zpetc : nullptr,
+                                           pp && settings.pp.zpetcEnabled);
+        if (!step->hasResult())
+            problems << "step plot: no response for a stable design";
+        for (const StepViewCurve& c : expected.curves) {
+            QCPGraph* g = step->hasResult() ? step->curveGraph(c.kind) : nullptr;
+            std::vector<double> t = c.curve.t;
+            for (double& v : t)
+                v -= c.curve.stepAtSeconds;
+            if (!g || !sameSignal(g->data(), t, c.curve.y))
+                problems << QStringLiteral("step plot: curve %1 differs from the core's").arg(static_cast<int>(c.kind));
+        }
+        if (e.step.settlingTimeSeconds > 0.0 &&
+            (step->settlingMarker()->data()->isEmpty() ||
+             step->settlingMarker()->data()->at(0)->key != e.step.settlingTimeSeconds))
+            problems << "step plot: the settling marker is not the evaluation's settling time";
+    } else if (step->hasResult()) {
+        problems << "step plot: shows a response for an axis without a stable design";
     }
 
     std::vector<std::complex<double>> clPoles;

@@ -13,6 +13,7 @@
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/plots/root_locus_plot.h"
+#include "ui/plots/step_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/tuning_session.h"
@@ -144,6 +145,13 @@ void TstPlotReadability::legendsAndHintSitOutsideThePlane() {
                  qPrintable(plot->objectName()));
         QVERIFY(plot->legend->outerRect().top() >= plot->axisRect()->outerRect().bottom() - 1);
     }
+    // The step view likewise (its legend carries the envelope and the markers).
+    window_->lowerTabs()->setCurrentWidget(window_->stepPlot());
+    StepPlot* step = window_->stepPlot();
+    step->replot(QCustomPlot::rpImmediateRefresh);
+    QVERIFY(step->legend->visible());
+    QVERIFY(step->legend->outerRect().top() >= step->axisRect()->outerRect().bottom() - 1);
+    QVERIFY(step->axisRect()->height() > 150); // the plane keeps most of the tab at 1366x768
     RootLocusPlot* rl = window_->rootLocusPlot();
     auto* hint = qobject_cast<QCPTextElement*>(rl->plotLayout()->element(3, 0));
     QVERIFY(hint);
@@ -280,12 +288,12 @@ void TstPlotReadability::cornerControlsOnlyOnTheirTab() {
         if (box->accessibleName() == "Contour error magnification")
             magnification = box;
     QVERIFY(swept && magnification);
-    for (int upper = 0; upper < 3; ++upper)
-        for (int lower = 0; lower < 3; ++lower) {
+    for (int upper = 0; upper < window_->upperTabs()->count(); ++upper)
+        for (int lower = 0; lower < window_->lowerTabs()->count(); ++lower) {
             window_->upperTabs()->setCurrentIndex(upper);
             window_->lowerTabs()->setCurrentIndex(lower);
-            QCOMPARE(swept->isVisible(), upper == 1);
-            QCOMPARE(magnification->isVisible(), lower == 1);
+            QCOMPARE(swept->isVisible(), window_->upperTabs()->currentWidget() == window_->parameterLocusPlot());
+            QCOMPARE(magnification->isVisible(), window_->lowerTabs()->currentWidget() == window_->contourPlot());
         }
     // On a pole-placement axis the parameter locus has no parameter to sweep: shown, disabled.
     usePolePlacement(0);

@@ -15,9 +15,17 @@ const QColor kSensitivity{0xff, 0x7f, 0x0e};
 const QColor kComplementary{0x2c, 0xa0, 0x2c};
 const QColor kWithout{0x7f, 0x7f, 0x7f};
 const QColor kWith{0x94, 0x67, 0xbd};
-const QColor kMargin{0xd6, 0x27, 0x28};
+const QColor kMargin{0xc6, 0x28, 0x28}; ///< a margin that fails its minimum (or is negative)
+const QColor kMet{0x1b, 0x7f, 0x2a};    ///< one that meets it: the metrics panel's check colours
 
 QString num(double v, int digits = 3) { return QString::number(v, 'g', digits); }
+
+/// " ✓ ≥ 30°" / " ✗ < 30°" after a margin label when the specification states a minimum.
+QString requirementText(bool met, double minimum, const QString& unit) {
+    if (!(minimum > 0.0))
+        return met ? QString() : QStringLiteral(" ✗");
+    return (met ? QStringLiteral(" ✓ ≥ ") : QStringLiteral(" ✗ < ")) + num(minimum) + unit;
+}
 
 /// Graph data of one response (non-finite values are left out: a pole on the axis).
 void setResponse(QCPGraph* graph, const std::vector<double>& omega, const std::vector<double>& values) {
@@ -89,11 +97,7 @@ BodePlot::BodePlot(QWidget* parent) : QCustomPlot(parent) {
     legend_->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     legend_->setWrap(4);
     legend_->setSelectableParts(QCPLegend::spItems);
-    readout_ = new QCPTextElement(this, readoutHint(), QFont(font().family(), 8));
-    readout_->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
-    readout_->setMargins(QMargins(8, 0, 8, 2));
-    plotLayout()->addElement(4, 0, readout_);
-    plotLayout()->setRowStretchFactor(4, 0.001);
+    readout_ = addTextRow(this, 4, readoutHint());
     plotLayout()->setRowStretchFactor(1, 1.2);
     notice_ = std::make_unique<PlotNotice>(this, magRect_, Qt::AlignTop | Qt::AlignRight);
 
@@ -175,23 +179,14 @@ void BodePlot::addVerticalMarker(QCPAxisRect* rect, double omega, double from, d
 
 void BodePlot::addLabel(QCPAxisRect* rect, double omega, double value, const QString& text,
                         const QColor& color, Qt::Alignment align) {
-    auto* label = new QCPItemText(this);
-    label->setClipAxisRect(rect);
-    label->position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-    label->position->setCoords(omega, value);
-    // On the side of the line where the text has room: left of it in the right half.
+    // Left of the line in the right half (on the logarithmic axis), where the text has room.
     const QCPRange x = rect->axis(QCPAxis::atBottom)->range();
     const bool rightHalf = std::log(omega / x.lower) > 0.5 * std::log(x.upper / x.lower);
-    label->setPositionAlignment(rightHalf ? (align & ~Qt::AlignLeft) | Qt::AlignRight : align);
-    label->setText(text);
-    label->setColor(color);
-    label->setFont(QFont(font().family(), 8));
-    label->setBrush(QColor(255, 255, 255, 200));
-    label->setPadding(QMargins(3, 1, 3, 1));
-    markers_ << label;
+    markers_ << addAnnotation(this, rect, omega, value, text, color, align, rightHalf);
 }
 
-void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, const QString& title) {
+void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, const QString& title,
+                            const BodeMarginRequirements& req) {
     hasResult_ = true;
     title_->setText(title);
     title_->setTextColor(palette().color(QPalette::WindowText));
@@ -262,7 +257,6 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     // crossover; 0 dB and the -180 line as references.
     clearMarkers();
     const StabilityMargins& m = a.margins;
-    const QPen marginPen(kMargin, 1.6);
     const QPen guide(QColor(0x90, 0x90, 0x90), 1, Qt::DashLine);
     auto* zeroDb = new QCPItemStraightLine(this);
     zeroDb->setClipAxisRect(magRect_);
@@ -274,19 +268,23 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     markers_ << zeroDb;
     if (std::isfinite(m.gainMarginOmegaRadPerSec) && std::isfinite(m.gainMarginDb)) {
         const double wpc = m.gainMarginOmegaRadPerSec;
-        addVerticalMarker(magRect_, wpc, -m.gainMarginDb, 0.0, marginPen);
+        const QColor color = req.gainMarginMet ? kMet : kMargin;
+        addVerticalMarker(magRect_, wpc, -m.gainMarginDb, 0.0, QPen(color, req.gainMarginMet ? 1.6 : 2.4));
         addLabel(magRect_, wpc, -0.5 * m.gainMarginDb,
-                 tr("GM %1 dB at %2 rad/s").arg(num(m.gainMarginDb)).arg(num(wpc)), kMargin,
-                 Qt::AlignLeft | Qt::AlignVCenter);
+                 tr("GM %1 dB at %2 rad/s").arg(num(m.gainMarginDb)).arg(num(wpc)) +
+                     requirementText(req.gainMarginMet, req.minGainMarginDb, tr(" dB")),
+                 color, Qt::AlignLeft | Qt::AlignVCenter);
     }
     if (std::isfinite(m.phaseMarginOmegaRadPerSec) && std::isfinite(m.phaseMarginDeg)) {
         const double wgc = m.phaseMarginOmegaRadPerSec;
         const double phase = interpolate(w, a.responses.openLoop.phaseDeg, wgc);
         const double minus180 = phase - m.phaseMarginDeg; // -180 + 360 k on the unwrapped curve
-        addVerticalMarker(phaseRect_, wgc, minus180, phase, marginPen);
+        const QColor color = req.phaseMarginMet ? kMet : kMargin;
+        addVerticalMarker(phaseRect_, wgc, minus180, phase, QPen(color, req.phaseMarginMet ? 1.6 : 2.4));
         addLabel(phaseRect_, wgc, 0.5 * (phase + minus180),
-                 tr("PM %1° at %2 rad/s").arg(num(m.phaseMarginDeg)).arg(num(wgc)), kMargin,
-                 Qt::AlignLeft | Qt::AlignVCenter);
+                 tr("PM %1° at %2 rad/s").arg(num(m.phaseMarginDeg)).arg(num(wgc)) +
+                     requirementText(req.phaseMarginMet, req.minPhaseMarginDeg, QStringLiteral("°")),
+                 color, Qt::AlignLeft | Qt::AlignVCenter);
         auto* line = new QCPItemStraightLine(this);
         line->setClipAxisRect(phaseRect_);
         for (QCPItemPosition* p : {line->point1, line->point2})
@@ -357,10 +355,7 @@ void BodePlot::showNoResult(const QString& title, const QString& reason) {
 
 void BodePlot::leaveEvent(QEvent* event) {
     QCustomPlot::leaveEvent(event);
-    if (readout_->text() != readoutHint()) {
-        readout_->setText(readoutHint());
-        replot(QCustomPlot::rpQueuedReplot);
-    }
+    setReadoutText(this, readout_, readoutHint());
 }
 
 void BodePlot::onMouseMove(QMouseEvent* event) {
@@ -379,10 +374,7 @@ void BodePlot::onMouseMove(QMouseEvent* event) {
                        .arg(num(interpolate(w, openLoop_.magnitudeDb, omega), 4))
                        .arg(num(interpolate(w, openLoop_.phaseDeg, omega), 4));
     }
-    if (text != readout_->text()) {
-        readout_->setText(text);
-        replot(QCustomPlot::rpQueuedReplot);
-    }
+    setReadoutText(this, readout_, text);
 }
 
 } // namespace xyt::ui

@@ -10,6 +10,15 @@
 
 namespace xyt::ui {
 
+/// The specification's margin minima and the evaluation's verdicts on them
+/// (SpecificationCheck::phaseMargin / gainMargin): a margin drawn red fails, green passes.
+struct BodeMarginRequirements {
+    double minPhaseMarginDeg = 0.0; ///< 0: none stated (quoted only when > 0)
+    double minGainMarginDb = 0.0;
+    bool phaseMarginMet = true;
+    bool gainMarginMet = true;
+};
+
 /**
  * The Bode diagram of one axis (issue 17): magnitude (dB) over phase (degrees) on a shared
  * logarithmic frequency axis. The open loop L with its stability margins drawn where they are
@@ -23,7 +32,8 @@ class BodePlot : public QCustomPlot {
 public:
     explicit BodePlot(QWidget* parent = nullptr);
     ~BodePlot() override;
-    void showAnalysis(const AxisFrequencyAnalysis& analysis, bool zpetcEnabled, const QString& title);
+    void showAnalysis(const AxisFrequencyAnalysis& analysis, bool zpetcEnabled, const QString& title,
+                      const BodeMarginRequirements& requirements = {});
     void showNoResult(const QString& title, const QString& reason);
     bool hasResult() const { return hasResult_; }
     QString noticeText() const { return notice_->text(); }

@@ -54,11 +54,7 @@ NyquistPlot::NyquistPlot(QWidget* parent) : QCustomPlot(parent) {
     critical_->setName(tr("−1"));
     critical_->addData(-1.0, 0.0);
     placeLegendBelow(this, 2, 5);
-    criterion_ = new QCPTextElement(this, QString(), QFont(font().family(), 8));
-    criterion_->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
-    criterion_->setMargins(QMargins(8, 0, 8, 2));
-    plotLayout()->addElement(3, 0, criterion_);
-    plotLayout()->setRowStretchFactor(3, 0.001);
+    criterion_ = addTextRow(this, 3, QString());
     notice_ = std::make_unique<PlotNotice>(this, axisRect(), Qt::AlignTop | Qt::AlignRight);
     setupInteractivePlot(this);
     setCurve(unitCircle_, circle(0.0, 1.0));

@@ -167,4 +167,35 @@ void setupInteractivePlot(QCustomPlot* plot) {
     });
 }
 
+QCPTextElement* addTextRow(QCustomPlot* plot, int row, const QString& text) {
+    auto* element = new QCPTextElement(plot, text, QFont(plot->font().family(), 8));
+    element->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
+    element->setMargins(QMargins(8, 0, 8, 2));
+    plot->plotLayout()->addElement(row, 0, element);
+    plot->plotLayout()->setRowStretchFactor(row, 0.001);
+    return element;
+}
+
+QCPItemText* addAnnotation(QCustomPlot* plot, QCPAxisRect* rect, double x, double y, const QString& text,
+                           const QColor& color, Qt::Alignment align, bool rightHalf) {
+    auto* label = new QCPItemText(plot);
+    label->setClipAxisRect(rect);
+    label->position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    label->position->setCoords(x, y);
+    label->setPositionAlignment(rightHalf ? (align & ~Qt::AlignLeft) | Qt::AlignRight : align);
+    label->setText(text);
+    label->setColor(color);
+    label->setFont(QFont(plot->font().family(), 8));
+    label->setBrush(QColor(255, 255, 255, 210));
+    label->setPadding(QMargins(3, 1, 3, 1));
+    return label;
+}
+
+void setReadoutText(QCustomPlot* plot, QCPTextElement* readout, const QString& text) {
+    if (readout->text() == text)
+        return;
+    readout->setText(text);
+    plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
 } // namespace xyt::ui

@@ -10,6 +10,8 @@
 class QCustomPlot;
 class QCPAxisRect;
 class QCPGraphData;
+class QCPItemText;
+class QCPTextElement;
 
 namespace xyt::ui {
 
@@ -59,5 +61,21 @@ QVector<QCPGraphData> flagDecimated(const std::vector<double>& t, const std::vec
 void placeLegendBelow(QCustomPlot* plot, int row, int columns = 3);
 
 void styleAxisRect(QCPAxisRect* rect);
+
+/// A row of small left-aligned text (a hover readout, a criterion) under the plot at layout row
+/// @p row, as short as its text.
+QCPTextElement* addTextRow(QCustomPlot* plot, int row, const QString& text);
+
+/**
+ * A small annotation at (@p x, @p y) of @p rect on a translucent white box, placed on the side
+ * where it has room: @p align as given in the left part of the view, mirrored to the left of the
+ * point when @p rightHalf.
+ */
+QCPItemText* addAnnotation(QCustomPlot* plot, QCPAxisRect* rect, double x, double y, const QString& text,
+                           const QColor& color, Qt::Alignment align, bool rightHalf);
+
+/// Shows @p text in the hover readout @p readout of @p plot, replotting only when it changed
+/// (a mouse move that leaves the text as it was costs no repaint).
+void setReadoutText(QCustomPlot* plot, QCPTextElement* readout, const QString& text);
 
 } // namespace xyt::ui

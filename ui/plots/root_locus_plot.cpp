@@ -25,7 +25,7 @@ QString formatGain(double k) { return QString::number(k, 'g', 5); }
 } // namespace
 
 RootLocusPlot::RootLocusPlot(QWidget* parent)
-    : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    : QCustomPlot(parent), grid_(this), overlay_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("root-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));
@@ -39,19 +39,16 @@ RootLocusPlot::RootLocusPlot(QWidget* parent)
                           tr("open-loop zeros"));
     current_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(colors::error, 1.5),
                                                   QBrush(colors::error), 10),
-                            tr("closed-loop poles (design)"));
+                            tr("closed-loop poles"));
     hover_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5),
                                                 QBrush(QColor(255, 255, 0, 200)), 9),
                           QString());
     hover_->removeFromLegend();
     // Under the plane, in rows of their own, the legend and then the hover readout: there
     // they can hide neither a branch nor a damping label.
-    placeLegendBelow(this, 2);
-    readout_ = new QCPTextElement(this, readoutHint(), QFont(font().family(), 8));
-    readout_->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
-    readout_->setMargins(QMargins(8, 0, 8, 2));
-    plotLayout()->addElement(3, 0, readout_);
-    plotLayout()->setRowStretchFactor(3, 0.001);
+    placeLegendBelow(this, 2, 4);
+    legend->setIconSize(20, 10); // four columns of entries fit a 1366 px wide window
+    readout_ = addTextRow(this, 3, readoutHint());
     setupInteractivePlot(this);
     connect(this, &QCustomPlot::mouseMove, this, &RootLocusPlot::onMouseMove);
     connect(this, &QCustomPlot::mousePress, this, &RootLocusPlot::onMousePress);
@@ -91,8 +88,9 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     notice_.setSevere(false);
     notice_.setLines(warnings);
     const LocusView& v = locus.view;
-    grid_.show(locus.tsSeconds, std::max({std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin),
-                                          std::abs(v.imMax), 1e-6}));
+    const double extent = std::max({std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin), std::abs(v.imMax), 1e-6});
+    grid_.show(locus.tsSeconds, extent);
+    overlay_.show(requirements_, locus.tsSeconds, extent, currentPoles);
     // Keep the user's zoom while the poles and zeros stay in view; re-fit when any of them (or
     // the design's closed-loop poles) moves out of it, and on a change of plane.
     std::vector<std::complex<double>> markers = locus.poles;
@@ -111,6 +109,7 @@ void RootLocusPlot::showNoResult(const QString& title, const QString& reason) {
     showBranches(this, branches_, {}, [](std::size_t) { return QPen(); });
     for (QCPGraph* g : {poles_, zeros_, current_})
         g->data()->clear();
+    overlay_.clear();
     clearHover();
     readout_->setVisible(false);
     legend->setVisible(false);

@@ -4,6 +4,7 @@
 #include "core/analysis/root_locus.h"
 #include "ui/plots/plane_grid.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/requirement_overlay.h"
 
 #include <qcustomplot.h>
 
@@ -24,6 +25,9 @@ public:
 
     void showLocus(const RootLocus& locus, const std::vector<std::complex<double>>& currentPoles,
                    const QString& title);
+    /// The specification (and the design's omega_n) drawn over the next locus shown.
+    void setRequirements(const LocusRequirements& requirements) { requirements_ = requirements; }
+    const RequirementOverlay& requirementOverlay() const { return overlay_; }
     /// Clears the plot and says why there is no locus (invalid or failed design): never the
     /// locus of an earlier design.
     void showNoResult(const QString& title, const QString& reason);
@@ -55,6 +59,8 @@ private:
 
     RootLocus locus_;
     PlaneGrid grid_;
+    RequirementOverlay overlay_;
+    LocusRequirements requirements_;
     std::vector<QCPCurve*> branches_;
     QCPGraph* poles_;
     QCPGraph* zeros_;

@@ -6,11 +6,13 @@
 #include "core/model/errors.h"
 #include "core/simulation/step_envelope.h"
 #include "core/simulation/step_response.h"
+#include "core/simulation/step_view.h"
 #include "core/simulation/zpetc_step.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace xyt;
@@ -26,6 +28,9 @@ private slots:
     void riseTimeRefusesBadInput();
     void envelopeFlagsOvershootAndLateExcursions();
     void horizonShowsTheTransient();
+    void viewOfAContinuousLoop();
+    void viewOfAPolePlacementAxis();
+    void unstableLoopHasNoView();
 };
 
 void TstStepResponse::firstOrderIsTheClosedForm() {
@@ -174,6 +179,64 @@ void TstStepResponse::horizonShowsTheTransient() {
     st.stable = false;
     QCOMPARE(stepViewHorizonSeconds(st), 1.0);
     QVERIFY_THROWS_EXCEPTION(InvalidInput, stepViewHorizonSeconds(st, -1.0));
+}
+
+void TstStepResponse::viewOfAContinuousLoop() {
+    // omega_n^2 / (s^2 + 2 zeta omega_n s + omega_n^2), zeta = 0.5, omega_n = 2: the view is the
+    // curve stepResponseCurve draws over the horizon the figures ask for, its rise the curve's,
+    // and the envelope flags exactly the samples above the overshoot bound (16.3 % > 10 %).
+    const TransferFunction g(Polynomial::fromDescending({4.0}), Polynomial::fromDescending({1.0, 2.0, 4.0}));
+    const StepCharacteristics st = stepCharacteristics(g);
+    StepEnvelope limits;
+    limits.maxOvershootPct = 10.0;
+    const StepView v = stepView(g, st, limits);
+    QVERIFY(v.stable);
+    QCOMPARE(v.sampleTimeSeconds, 0.0);
+    QCOMPARE(v.curves.size(), std::size_t{1});
+    QCOMPARE(v.curves[0].kind, StepCurveKind::ClosedLoop);
+    QCOMPARE(v.horizonSeconds, stepViewHorizonSeconds(st, 0.0, limits.settlingTimeSeconds));
+    const StepResponseCurve direct = stepResponseCurve(g, v.horizonSeconds);
+    QCOMPARE(v.curves[0].curve.y, direct.y);
+    QCOMPARE(v.envelope.finalValue, st.finalValue);
+    const RiseTime r = riseTime(direct, st.finalValue);
+    QCOMPARE(v.rise.seconds, r.seconds);
+    QCOMPARE(v.violations, envelopeViolations(direct, v.envelope));
+    // Closed form: Mp = exp(-pi zeta / sqrt(1 - zeta^2)) = 16.3 %, above the 10 % bound.
+    QVERIFY(std::count(v.violations.begin(), v.violations.end(), true) > 0);
+    for (std::size_t k = 0; k < direct.y.size(); ++k)
+        QCOMPARE(static_cast<bool>(v.violations[k]), direct.y[k] > 1.1 * st.finalValue);
+}
+
+void TstStepResponse::viewOfAPolePlacementAxis() {
+    // Paper 001's x axis: both curves, the one the axis runs first, drawn at the loop's Ts.
+    const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
+                                                         Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
+                                                         Polynomial::fromAscending({1.0, -0.2}), 0.07);
+    const ZpetcDesign z = designZpetc(loop);
+    const StepCharacteristics with = zpetcStepCharacteristics(loop, z);
+    const StepView on = stepView(loop.closedLoop(), with, StepEnvelope{}, &loop, &z, true);
+    QCOMPARE(on.sampleTimeSeconds, 0.07);
+    QCOMPARE(on.curves.size(), std::size_t{2});
+    QCOMPARE(on.curves[0].kind, StepCurveKind::WithZpetc);
+    QCOMPARE(on.curves[1].kind, StepCurveKind::LoopAlone);
+    QVERIFY(on.horizonSeconds >= 20 * 0.07); // a discrete loop's floor of 20 samples
+    QCOMPARE(on.curves[0].curve.y, zpetcStepResponseCurve(loop, z, on.horizonSeconds).y);
+    QCOMPARE(on.curves[1].curve.y, stepResponseCurve(loop.closedLoop(), on.horizonSeconds).y);
+    // ZPETC off: the loop alone leads (the figures passed only set the horizon and final value).
+    const StepView off = stepView(loop.closedLoop(), with, StepEnvelope{}, &loop, &z, false);
+    QCOMPARE(off.curves[0].kind, StepCurveKind::LoopAlone);
+    QCOMPARE(off.curves[1].kind, StepCurveKind::WithZpetc);
+    // Without a limit nothing is a violation (a finite response, the default band from +inf).
+    QCOMPARE(std::count(off.violations.begin(), off.violations.end(), true), 0);
+}
+
+void TstStepResponse::unstableLoopHasNoView() {
+    // 1 / (s - 1): no step response to draw, and no figures to mark.
+    const TransferFunction g(Polynomial::fromDescending({1.0}), Polynomial::fromDescending({1.0, -1.0}));
+    const StepView v = stepView(g, stepCharacteristics(g), StepEnvelope{});
+    QVERIFY(!v.stable);
+    QVERIFY(v.curves.empty());
+    QVERIFY(v.violations.empty());
 }
 
 QTEST_APPLESS_MAIN(TstStepResponse)
