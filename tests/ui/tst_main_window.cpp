@@ -18,6 +18,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSlider>
+#include <QSplitter>
 #include <QTest>
 
 using namespace xyt;
@@ -37,6 +38,7 @@ private slots:
     void clickOnRootLocusSetsTheGain();
     void switchingToPolePlacement();
     void invalidCoefficientListIsRejectedAtTheField();
+    void sliderStepRelaysNoSplitter();
 
 private:
     std::unique_ptr<TuningSession> session_;
@@ -222,6 +224,44 @@ void TstMainWindow::invalidCoefficientListIsRejectedAtTheField() {
     QVERIFY2(a->toolTip().contains("A[2]") && a->toolTip().contains("not a number"),
              qPrintable(a->toolTip()));
     QVERIFY(session_->session().axes[0].pp == before);
+}
+
+namespace {
+/// Counts the layout requests that reach the watched widgets.
+class LayoutRequestCounter : public QObject {
+public:
+    int count = 0;
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (event->type() == QEvent::LayoutRequest)
+            ++count;
+        return QObject::eventFilter(watched, event);
+    }
+};
+} // namespace
+
+void TstMainWindow::sliderStepRelaysNoSplitter() {
+    // A slider step changes figures in the metrics table and the plots, never the size of
+    // anything: a layout request reaching a splitter makes Qt ask every tab page, hidden ones
+    // too, for its size hints, which cost a seventh of a slider step (xytune-bench
+    // gui_slider_to_repaint). The metrics table's rows and height are fixed, its columns resized
+    // only when a figure needs it, and the plots' hints constant (PlotWidget).
+    window_->resize(1366, 768);
+    QSlider* slider = window_->omegaNSlider()->slider();
+    // First visits of the two positions may size the columns to their new figures.
+    for (int delta : {1, -1}) {
+        slider->setValue(slider->value() + delta);
+        QCoreApplication::processEvents();
+    }
+    LayoutRequestCounter counter;
+    for (QSplitter* splitter : window_->findChildren<QSplitter*>())
+        splitter->installEventFilter(&counter);
+    const double before = session_->session().axes[0].gt.omegaNRadPerSec;
+    for (int step = 0; step < 4; ++step) {
+        slider->setValue(slider->value() + (step % 2 ? -1 : 1));
+        QCoreApplication::processEvents();
+        QVERIFY(session_->session().axes[0].gt.omegaNRadPerSec != before || step % 2); // it moved
+    }
+    QCOMPARE(counter.count, 0);
 }
 
 QTEST_MAIN(TstMainWindow)

@@ -85,9 +85,16 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Stretch);
     table_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table_->setWordWrap(false);
-    table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // One line per row, all the same height: fixed, so that a new figure does not make the
+    // view measure every row again (ResizeToContents cost a third of a slider step's repaint).
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
     table_->setAccessibleName(tr("Metrics"));
-    table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    // Exactly as tall as its rows (they are fixed): not AdjustToContents, which asks the whole
+    // window for a new layout at every figure that changes.
+    table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustIgnored);
+    table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
+                           RowCount * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
     layout->addWidget(table_);
     notices_ = new QLabel(this);
     notices_->setWordWrap(true);
@@ -167,6 +174,23 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
 
 QString MetricsPanel::noticeText() const { return notices_->text(); }
 
+void MetricsPanel::setCell(int row, int column, const Cell& cell) {
+    // In place, and only what changed: a replaced item makes the view lay the row out again.
+    QTableWidgetItem* item = table_->item(row, column);
+    if (!item) {
+        item = new QTableWidgetItem;
+        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table_->setItem(row, column, item);
+    }
+    if (item->text() != cell.text)
+        item->setText(cell.text);
+    const QBrush foreground = cell.color.isValid() ? QBrush(cell.color) : QBrush();
+    if (item->foreground() != foreground)
+        item->setForeground(foreground);
+    if (item->toolTip() != cell.toolTip)
+        item->setToolTip(cell.toolTip);
+}
+
 void MetricsPanel::fitColumns() {
     // The axis columns as wide as their widest figure. Not ResizeToContents: that would count
     // the group titles, which span all three columns, as column X's content.
@@ -177,7 +201,8 @@ void MetricsPanel::fitColumns() {
         for (int r = 0; r < RowCount; ++r)
             if (!isGroupRow(r) && table_->item(r, c))
                 width = std::max(width, fm.horizontalAdvance(table_->item(r, c)->text()));
-        table_->setColumnWidth(c, width + 12);
+        if (table_->columnWidth(c) != width + 12) // a resize asks the window for a new layout
+            table_->setColumnWidth(c, width + 12);
     }
 }
 
@@ -193,25 +218,24 @@ void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
         {PeakSensitivity, f.ok ? shown(m.peakSensitivity) : tr("—")}};
     const std::optional<SpecificationCheck>& check = marginChecks_[static_cast<std::size_t>(axis)];
     for (auto it = values.begin(); it != values.end(); ++it) {
-        auto* item = new QTableWidgetItem(it.value());
-        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        Cell cell{it.value()};
         if (f.ok && check && (it.key() == GainMargin || it.key() == PhaseMargin)) {
             const bool pass = it.key() == GainMargin ? check->gainMargin : check->phaseMargin;
-            item->setText(it.value() + (pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗")));
-            item->setForeground(pass ? QColor(0x1b, 0x7f, 0x2a) : QColor(0xc6, 0x28, 0x28));
+            cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
+            cell.color = pass ? kPass : kFail;
         }
         if (f.ok && !m.closedLoopStable) {
-            item->setForeground(QColor(0xc6, 0x28, 0x28));
-            item->setToolTip(tr("the closed loop is unstable: not a robustness measure"));
+            cell.color = kFail;
+            cell.toolTip = tr("the closed loop is unstable: not a robustness measure");
         } else if (f.ok && it.key() == GainMargin && std::isfinite(m.gainMarginOmegaRadPerSec)) {
-            item->setToolTip(tr("at %1 rad/s (factor %2)").arg(displayNumber(m.gainMarginOmegaRadPerSec))
-                                 .arg(displayNumber(m.gainMarginFactor)));
+            cell.toolTip = tr("at %1 rad/s (factor %2)").arg(displayNumber(m.gainMarginOmegaRadPerSec))
+                               .arg(displayNumber(m.gainMarginFactor));
         } else if (f.ok && it.key() == PhaseMargin && std::isfinite(m.phaseMarginOmegaRadPerSec)) {
-            item->setToolTip(tr("at %1 rad/s").arg(displayNumber(m.phaseMarginOmegaRadPerSec)));
+            cell.toolTip = tr("at %1 rad/s").arg(displayNumber(m.phaseMarginOmegaRadPerSec));
         } else if (!f.ok) {
-            item->setToolTip(QString::fromStdString(f.error));
+            cell.toolTip = QString::fromStdString(f.error);
         }
-        table_->setItem(it.key(), axis, item);
+        setCell(it.key(), axis, cell);
     }
     fitColumns();
 }
@@ -241,16 +265,15 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     for (int r = 0; r < RowCount; ++r) {
         if (isGroupRow(r))
             continue;
-        auto* item = new QTableWidgetItem(specText.value(r));
-        item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        table_->setItem(r, 2, item);
+        setCell(r, 2, Cell{specText.value(r)});
     }
     for (int c = 0; c < 2; ++c) {
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(c)];
         marginChecks_[static_cast<std::size_t>(c)] =
             a.ok && a.check.marginsApply ? std::optional(a.check) : std::nullopt;
         const QString header = QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
-        table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
+        if (!table_->horizontalHeaderItem(c) || table_->horizontalHeaderItem(c)->text() != header)
+            table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
         QMap<int, QString> values;
         if (!a.ok) {
             for (int r = 0; r < RowCount; ++r)
@@ -302,29 +325,26 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         for (int r = 0; r < RowCount; ++r) {
             if (isGroupRow(r) || isMarginRow(r))
                 continue;
-            QString text = values.value(r);
-            auto* item = new QTableWidgetItem;
+            Cell cell{values.value(r)};
             if (a.ok && judged.contains(r)) {
                 const bool pass = judged[r];
-                text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
-                item->setForeground(pass ? QColor(0x1b, 0x7f, 0x2a) : QColor(0xc6, 0x28, 0x28));
-                item->setToolTip(pass ? tr("meets the specification") : tr("fails the specification"));
+                cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
+                cell.color = pass ? kPass : kFail;
+                cell.toolTip = pass ? tr("meets the specification") : tr("fails the specification");
             }
-            item->setText(text);
-            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             if (!a.ok)
-                item->setToolTip(QString::fromStdString(a.errorField + ": " + a.error));
+                cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
             if (r == SettleAfterMove && a.ok && a.moveSettle && !a.moveSettle->diverged &&
                 !a.moveSettle->settleTimeSeconds)
-                item->setToolTip(tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
-                                     .arg(displayNumber(a.moveSettle->windowMm),
-                                          displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
-                                                                          a.moveSettle->moveEndSeconds)),
-                                          item->toolTip()));
+                cell.toolTip = tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
+                                   .arg(displayNumber(a.moveSettle->windowMm),
+                                        displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
+                                                                        a.moveSettle->moveEndSeconds)),
+                                        cell.toolTip);
             if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
-                item->setToolTip(tr("* not applied: the discrete loop of paper 001 is simulated "
-                                    "without a limit; |u| would be clipped this long"));
-            table_->setItem(r, c, item);
+                cell.toolTip = tr("* not applied: the discrete loop of paper 001 is simulated "
+                                  "without a limit; |u| would be clipped this long");
+            setCell(r, c, cell);
         }
     }
     fitColumns();

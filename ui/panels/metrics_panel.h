@@ -4,6 +4,7 @@
 #include "core/session/axis_frequency.h"
 #include "core/session/session_evaluation.h"
 
+#include <QColor>
 #include <QMap>
 #include <QWidget>
 
@@ -54,6 +55,16 @@ signals:
 
 private:
     void fitColumns();
+    /// What one figure cell shows: its text, a pass (kPass) or fail (kFail) colour or none.
+    struct Cell {
+        QString text;
+        QColor color = {};
+        QString toolTip = {};
+    };
+    static constexpr QRgb kPass = 0xff1b7f2a;
+    static constexpr QRgb kFail = 0xffc62828;
+    void setCell(int row, int column, const Cell& cell);
+
     QTableWidget* table_;
     QLabel* notices_;
     QMap<QString, NumberField*> spec_;

@@ -50,7 +50,7 @@ double interpolate(const std::vector<double>& omega, const std::vector<double>& 
 }
 } // namespace
 
-BodePlot::BodePlot(QWidget* parent) : QCustomPlot(parent) {
+BodePlot::BodePlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("bode");
     setAutoAddPlottableToLegend(false); // the legend lists each curve once (magnitude and phase share it)
     plotLayout()->clear();

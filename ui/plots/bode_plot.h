@@ -3,6 +3,7 @@
 
 #include "core/session/axis_frequency.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -27,7 +28,7 @@ struct BodeMarginRequirements {
  * frequency of a circle and the Nyquist frequency of a discrete loop are marked. A click on a
  * legend entry hides or shows its curve. Draws what the core computed, nothing else.
  */
-class BodePlot : public QCustomPlot {
+class BodePlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit BodePlot(QWidget* parent = nullptr);

@@ -7,7 +7,7 @@
 
 namespace xyt::ui {
 
-ContourPlot::ContourPlot(QWidget* parent) : QCustomPlot(parent) {
+ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("xy-contour");
     plotLayout()->insertRow(0);
     figures_ = new QCPTextElement(this, QString(), QFont(font().family(), 9));

@@ -3,6 +3,7 @@
 
 #include "core/session/session.h"
 #include "core/session/session_evaluation.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -13,7 +14,7 @@ namespace xyt::ui {
  * magnified by a factor (as a ballbar plot does: radially for a circle, along the error vector
  * for a straight move), with the contour error figures. Equal scales on both axes.
  */
-class ContourPlot : public QCustomPlot {
+class ContourPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit ContourPlot(QWidget* parent = nullptr);

@@ -195,7 +195,7 @@ void setScale(QCPAxis* axis, bool logarithmic) {
 
 } // namespace
 
-DesignSpacePlot::DesignSpacePlot(QWidget* parent) : QCustomPlot(parent) {
+DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("design-space");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Design space"), QFont(font().family(), 10, QFont::Bold));

@@ -4,6 +4,7 @@
 #include "core/study/design_sweep.h"
 
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -44,7 +45,7 @@ std::vector<double> cellEdges(const std::vector<double>& values, bool logarithmi
  * (star), the refined best (diamond) and the session's current design (cross). Computes nothing;
  * reports the cell under the mouse and the cell clicked.
  */
-class DesignSpacePlot : public QCustomPlot {
+class DesignSpacePlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit DesignSpacePlot(QWidget* parent = nullptr);

@@ -27,7 +27,7 @@ void setCurve(QCPCurve* curve, const std::vector<std::complex<double>>& points) 
 }
 } // namespace
 
-NyquistPlot::NyquistPlot(QWidget* parent) : QCustomPlot(parent) {
+NyquistPlot::NyquistPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("nyquist");
     setAutoAddPlottableToLegend(true);
     plotLayout()->insertRow(0);

@@ -4,6 +4,7 @@
 #include "core/analysis/nyquist.h"
 #include "core/analysis/stability_margins.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -17,7 +18,7 @@ namespace xyt::ui {
  * it (the closest the curve comes), the unit circle, and the criterion stated with its counts:
  * Z = N + P. Complex plane at equal aspect, framed on the region around -1.
  */
-class NyquistPlot : public QCustomPlot {
+class NyquistPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit NyquistPlot(QWidget* parent = nullptr);

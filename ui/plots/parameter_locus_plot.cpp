@@ -37,7 +37,7 @@ std::vector<double> niceValues(double lo, double hi, std::size_t wanted) {
 } // namespace
 
 ParameterLocusPlot::ParameterLocusPlot(QWidget* parent)
-    : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    : PlotWidget(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("parameter-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));

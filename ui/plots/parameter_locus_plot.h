@@ -4,6 +4,7 @@
 #include "core/analysis/parameter_locus.h"
 #include "ui/plots/plane_grid.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -13,7 +14,7 @@ namespace xyt::ui {
  * The closed-loop poles of the Guillemin-Truxal design as omega_n or kp sweeps (the other held
  * at its current value), with the current design's poles marked: what the sliders move.
  */
-class ParameterLocusPlot : public QCustomPlot {
+class ParameterLocusPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit ParameterLocusPlot(QWidget* parent = nullptr);

@@ -33,7 +33,7 @@ QCPScatterStyle zeroStyle(int index, const QColor& color) {
 } // namespace
 
 PoleZeroPlot::PoleZeroPlot(QWidget* parent)
-    : QCustomPlot(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    : PlotWidget(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("pole-zero");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Pole-zero map"), QFont(font().family(), 10, QFont::Bold));

@@ -4,6 +4,7 @@
 #include "core/analysis/pole_zero_map.h"
 #include "ui/plots/plane_grid.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -14,7 +15,7 @@ namespace xyt::ui {
  * ZPETC): poles as crosses and zeros as circles in the set's colour, the zeta/omega_n grid (and
  * the unit circle in the z-plane). Clicking a legend entry hides or shows that set.
  */
-class PoleZeroPlot : public QCustomPlot {
+class PoleZeroPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit PoleZeroPlot(QWidget* parent = nullptr);

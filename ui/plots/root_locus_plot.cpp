@@ -25,7 +25,7 @@ QString formatGain(double k) { return QString::number(k, 'g', 5); }
 } // namespace
 
 RootLocusPlot::RootLocusPlot(QWidget* parent)
-    : QCustomPlot(parent), grid_(this), overlay_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    : PlotWidget(parent), grid_(this), overlay_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("root-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));

@@ -4,6 +4,7 @@
 #include "core/analysis/root_locus.h"
 #include "ui/plots/plane_grid.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 #include "ui/plots/requirement_overlay.h"
 
 #include <qcustomplot.h>
@@ -18,7 +19,7 @@ namespace xyt::ui {
  * hover readout of K, zeta and omega_n, and a click on a branch that picks that gain.
  * Draws a core RootLocus; computes nothing but the pick (core pickLocusPoint).
  */
-class RootLocusPlot : public QCustomPlot {
+class RootLocusPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit RootLocusPlot(QWidget* parent = nullptr);

@@ -61,7 +61,7 @@ StepEnvelope specificationEnvelope(const Specification& spec) {
     return limits;
 }
 
-StepPlot::StepPlot(QWidget* parent) : QCustomPlot(parent) {
+StepPlot::StepPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("step-response");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Step response"), QFont(font().family(), 10, QFont::Bold));

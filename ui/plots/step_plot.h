@@ -4,6 +4,7 @@
 #include "core/simulation/step_view.h"
 #include "core/study/specification.h"
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -23,7 +24,7 @@ StepEnvelope specificationEnvelope(const Specification& spec);
  * from the settling-time limit on, the band, the forbidden side shaded, the samples where the
  * response leaves it drawn red. Time runs from the step instant. Draws a core StepView.
  */
-class StepPlot : public QCustomPlot {
+class StepPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit StepPlot(QWidget* parent = nullptr);

@@ -17,7 +17,7 @@ QCPGraph* makeGraph(QCPAxisRect* rect, const QColor& color, const QString& name,
 }
 } // namespace
 
-TimeResponsePlot::TimeResponsePlot(QWidget* parent) : QCustomPlot(parent) {
+TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("time-response");
     plotLayout()->clear();
     title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));

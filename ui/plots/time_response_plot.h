@@ -4,6 +4,7 @@
 #include "core/session/session_evaluation.h"
 
 #include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
@@ -16,7 +17,7 @@ namespace xyt::ui {
  * tracking error, and control effort with the +-umax band and the clipped intervals shaded.
  * Only converts an AxisEvaluation into QCustomPlot data; computes nothing.
  */
-class TimeResponsePlot : public QCustomPlot {
+class TimeResponsePlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit TimeResponsePlot(QWidget* parent = nullptr);
