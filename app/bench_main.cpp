@@ -14,6 +14,7 @@
 #include "core/analysis/frequency_response.h"
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
+#include "app/bench_reference_loop.h"
 #include "ui/main_window.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/panels/parameter_slider.h"
@@ -25,19 +26,22 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace {
 
 /// Runs @p body until both minRuns and minSeconds are reached (after one warm-up run).
-void benchmark(const char* filter, const std::string& name, const std::function<void()>& body,
-               int minRuns = 20, double minSeconds = 0.5) {
+/// Returns the median in microseconds, or NaN when @p filter skips it.
+double benchmark(const char* filter, const std::string& name, const std::function<void()>& body,
+                 int minRuns = 20, double minSeconds = 0.5) {
     if (filter && name.find(filter) == std::string::npos)
-        return;
+        return std::nan("");
     using Clock = std::chrono::steady_clock;
     body();
     std::vector<double> us;
@@ -56,6 +60,13 @@ void benchmark(const char* filter, const std::string& name, const std::function<
     std::printf("%s: median_us=%.1f min_us=%.1f max_us=%.1f runs=%zu\n", name.c_str(), median,
                 us.front(), us.back(), n);
     std::fflush(stdout);
+    return median;
+}
+
+/// "name: ratio=R (what over what)" when both were measured in this run.
+void printRatio(const char* name, double measured, double reference, const char* what) {
+    if (std::isfinite(measured) && std::isfinite(reference) && reference > 0.0)
+        std::printf("%s: ratio=%.2f (%s)\n", name, measured / reference, what);
 }
 
 volatile double sink = 0.0; // keeps results alive so the optimizer cannot drop the work
@@ -132,10 +143,31 @@ int main(int argc, char* argv[]) {
         options.umaxVolts = 2.5;
         options.modelUnitsPerPositionUnit = lower.modelUnitsPerPositionUnit;
         const auto plant = lower.plant.transferFunction();
-        benchmark(filter, "simulate_cubic_130s_dt0.01", [&] {
+        const double fresh = benchmark(filter, "simulate_cubic_130s_dt0.01", [&] {
             const auto run = xyt::simulateLoop(plant, design.controller, reference, options);
             sink = sink + run.y.back();
         });
+        // Issue 18: the same run into a kept result (no allocation), against the plain scalar
+        // reference loop of the same recurrence over preallocated arrays, timed here too.
+        xyt::SimulationResult kept;
+        const double reused = benchmark(filter, "simulate_cubic_130s_dt0.01_reused", [&] {
+            xyt::simulateLoopInto(plant, design.controller, reference, options, kept);
+            sink = sink + kept.y.back();
+        });
+        const std::size_t n = reference.size();
+        std::vector<double> t(n), y(n), e(n), u(n);
+        std::unique_ptr<bool[]> clipped(new bool[n]);
+        const double plain = benchmark(filter, "simulate_cubic_130s_dt0.01_reference_loop", [&] {
+            // The discretization is part of the work, as in simulateLoop.
+            const auto m = xyt::bench::referenceLoop(plant, design.controller, options.dtSeconds);
+            xyt::bench::referenceRun(m, reference.data(), n, options.dtSeconds, options.umaxVolts,
+                                     options.modelUnitsPerPositionUnit, t.data(), y.data(), e.data(), u.data(),
+                                     clipped.get());
+            sink = sink + y.back();
+        });
+        printRatio("simulate_cubic_130s_dt0.01", fresh, plain, "simulateLoop / reference loop, target 1.3");
+        printRatio("simulate_cubic_130s_dt0.01_reused", reused, plain,
+                   "simulateLoopInto / reference loop, target 1.3");
     }
 
     {
@@ -157,14 +189,36 @@ int main(int argc, char* argv[]) {
         problem.reference = xyt::sampled([&](double t) { return cubic.position(t); },
                                          xyt::sampleTimes(130.0, 0.01));
         const xyt::SweepAxis wn{0.2, 20.0, 100, true}, kp{3.0, 3000.0, 100, true};
+        double sweepUs[2] = {std::nan(""), std::nan("")};
         for (const int threads : {0, 1}) {
             xyt::SweepOptions options;
             options.threads = threads;
-            benchmark(filter, threads == 0 ? "sweep_100x100" : "sweep_100x100_1thread", [&] {
+            sweepUs[threads] = benchmark(filter, threads == 0 ? "sweep_100x100" : "sweep_100x100_1thread", [&] {
                 const auto r = xyt::sweepDesignSpace(problem, wn, kp, options);
                 sink = sink + r.feasibleCount;
             }, 3, 0.0);
         }
+        // The reference: the plain loop's tracking figures for the same 10,000 designs (their
+        // discretization done beforehand), on one core; the sweep's target is 1.5 times half of
+        // it with two threads.
+        std::vector<xyt::bench::ReferenceLoop> loops;
+        if (!filter || std::string("sweep_100x100_reference_loop").find(filter) != std::string::npos)
+            for (double w : wn.values("wn"))
+                for (double k : kp.values("kp")) {
+                    const auto d = xyt::designGuilleminTruxal(problem.plant, w, k);
+                    loops.push_back(xyt::bench::referenceLoop(problem.plant.transferFunction(), d.controller, 0.01));
+                }
+        const double plainSweep = benchmark(filter, "sweep_100x100_reference_loop", [&] {
+            for (const auto& m : loops) {
+                const auto f = xyt::bench::referenceFigures(m, problem.reference.data(), problem.reference.size(),
+                                                            0.01, problem.spec.umaxVolts,
+                                                            problem.modelUnitsPerPositionUnit);
+                sink = sink + f.itae;
+            }
+        }, 3, 0.0);
+        printRatio("sweep_100x100", sweepUs[0], 0.5 * plainSweep,
+                   "all threads / (reference loop over the designs / 2), target 1.5");
+        printRatio("sweep_100x100_thread_speedup", sweepUs[1], sweepUs[0], "1 thread / all threads");
         // The same with the overshoot limit at 1 %, so that refinement runs too.
         problem.spec.maxOvershootPct = 1.0;
         benchmark(filter, "sweep_100x100_overshoot1pct_refined", [&] {

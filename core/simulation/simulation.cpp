@@ -85,9 +85,88 @@ LoopModes loopModes(const TransferFunction& plant, const TransferFunction& contr
     return m;
 }
 
-SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,
-                              const std::vector<double>& reference,
-                              const LoopSimulationOptions& options) {
+namespace {
+
+/// One mode's FOH step x <- phi x + g0 w + g1 rho as flat row-major arrays (n x n, n x m).
+struct FlatStep {
+    std::vector<double> phi, g0, g1;
+    int inputs = 0;
+    FlatStep() = default;
+    FlatStep(const StepMatrices& s) : inputs(static_cast<int>(s.g0.cols())) {
+        const Eigen::Index n = s.phi.rows();
+        for (Eigen::Index i = 0; i < n; ++i) {
+            for (Eigen::Index j = 0; j < n; ++j)
+                phi.push_back(s.phi(i, j));
+            for (Eigen::Index j = 0; j < s.g0.cols(); ++j) {
+                g0.push_back(s.g0(i, j));
+                g1.push_back(s.g1(i, j));
+            }
+        }
+    }
+};
+
+/**
+ * The sample loop of simulateLoop over plain arrays, with N states known at compile time
+ * (N = 0: the run-time size @p runtimeN), so that the loops over states unroll. No allocation:
+ * it writes into @p out's buffers, sized by the caller. Same summation order as
+ * StepMatrices::step, so every N gives the same bits.
+ */
+template <int N>
+void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc, const FlatStep& linear,
+             const FlatStep& clipped, bool limited, double umax, double unit, double dt,
+             const std::vector<double>& reference, double* x, SimulationResult& out) {
+    const int n = N > 0 ? N : runtimeN;
+    const int nc = n - np;
+    constexpr int kMax = 16; // a loop of more states takes the run-time path below
+    double nextBuffer[kMax];
+    std::vector<double> nextHeap(N > 0 || n <= kMax ? 0 : static_cast<std::size_t>(n));
+    double* next = N > 0 || n <= kMax ? nextBuffer : nextHeap.data();
+    const std::size_t count = reference.size();
+    double* t = out.t.data();
+    double* yOut = out.y.data();
+    double* eOut = out.e.data();
+    double* uOut = out.u.data();
+    for (std::size_t k = 0; k < count; ++k) {
+        double y = 0.0;
+        for (int j = 0; j < np; ++j)
+            y += cp[j] * x[j];
+        const double rk = reference[k] * unit;
+        double v = dc * (rk - y);
+        for (int j = 0; j < nc; ++j)
+            v += cc[j] * x[np + j];
+        const bool clip = limited && std::abs(v) > umax;
+        const double u = clip ? std::copysign(umax, v) : v;
+        t[k] = static_cast<double>(k) * dt;
+        yOut[k] = y / unit;
+        eOut[k] = reference[k] - y / unit;
+        uOut[k] = u;
+        out.clipped[k] = clip;
+        if (k + 1 == count)
+            break;
+        const double slope = (reference[k + 1] - reference[k]) * unit / dt;
+        const FlatStep& step = clip ? clipped : linear;
+        const double w[2] = {rk, u};
+        const double rho[2] = {slope, 0.0};
+        const int m = step.inputs;
+        for (int i = 0; i < n; ++i) {
+            double acc = 0.0;
+            for (int j = 0; j < n; ++j)
+                acc += step.phi[static_cast<std::size_t>(i * n + j)] * x[j];
+            for (int j = 0; j < m; ++j)
+                acc += step.g0[static_cast<std::size_t>(i * m + j)] * w[j] +
+                       step.g1[static_cast<std::size_t>(i * m + j)] * rho[j];
+            next[i] = acc;
+        }
+        for (int i = 0; i < n; ++i)
+            x[i] = next[i];
+    }
+}
+
+} // namespace
+
+void simulateLoopInto(const TransferFunction& plant, const TransferFunction& controller,
+                      const std::vector<double>& reference, const LoopSimulationOptions& options,
+                      SimulationResult& out) {
     const LoopModes modes = loopModes(plant, controller);
     requirePositive(options.dtSeconds, "dt");
     if (std::isnan(options.umaxVolts) || !(options.umaxVolts > 0.0))
@@ -100,14 +179,13 @@ SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunct
     const Eigen::Index np = modes.plantStates;
     const Eigen::Index nc = modes.controllerStates;
     const Eigen::Index n = np + nc;
-    const double dc = modes.controllerD;
-    const StepMatrices linear = fohStep(modes.aLinear, modes.bLinear, options.dtSeconds);
+    const FlatStep linear(fohStep(modes.aLinear, modes.bLinear, options.dtSeconds));
     const bool limited = std::isfinite(options.umaxVolts);
-    StepMatrices clipped;
+    FlatStep clipped;
     if (limited)
-        clipped = fohStep(modes.aClipped, modes.bClipped, options.dtSeconds);
+        clipped = FlatStep(fohStep(modes.aClipped, modes.bClipped, options.dtSeconds));
 
-    std::vector<double> x(static_cast<std::size_t>(n), 0.0), next(x.size());
+    std::vector<double> x(static_cast<std::size_t>(n), 0.0);
     if (options.initialOutput != 0.0) {
         // At rest with output y0: A_p x = 0 and C_p x = y0 (only possible with a pole at 0).
         Eigen::MatrixXd m(np + 1, np);
@@ -122,43 +200,34 @@ SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunct
             x[static_cast<std::size_t>(i)] = xp(i);
     }
 
+    // The buffers keep their capacity: a caller that simulates again and again with one
+    // SimulationResult (a live view, a benchmark) allocates nothing after the first run.
     const std::size_t count = reference.size();
-    SimulationResult out;
     out.dtSeconds = options.dtSeconds;
     out.umaxVolts = options.umaxVolts;
-    out.t.resize(count);
-    out.r = reference;
-    out.y.resize(count);
-    out.e.resize(count);
-    out.u.resize(count);
+    out.r.assign(reference.begin(), reference.end());
+    for (std::vector<double>* v : {&out.t, &out.y, &out.e, &out.u})
+        v->resize(count);
     out.clipped.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-        double y = 0.0;
-        for (Eigen::Index j = 0; j < np; ++j)
-            y += modes.plantC(j) * x[static_cast<std::size_t>(j)];
-        const double rk = reference[k] * unit;
-        double v = dc * (rk - y);
-        for (Eigen::Index j = 0; j < nc; ++j)
-            v += modes.controllerC(j) * x[static_cast<std::size_t>(np + j)];
-        const bool clip = limited && std::abs(v) > options.umaxVolts;
-        const double u = clip ? std::copysign(options.umaxVolts, v) : v;
-        out.t[k] = static_cast<double>(k) * options.dtSeconds;
-        out.y[k] = y / unit;
-        out.e[k] = reference[k] - y / unit;
-        out.u[k] = u;
-        out.clipped[k] = clip;
-        if (k + 1 == count)
-            break;
-        const double slope = (reference[k + 1] - reference[k]) * unit / options.dtSeconds;
-        if (clip) {
-            const double w[2] = {rk, u};
-            const double rho[2] = {slope, 0.0};
-            clipped.step(x.data(), w, rho, next.data());
-        } else {
-            linear.step(x.data(), &rk, &slope, next.data());
-        }
-        x.swap(next);
-    }
+    const std::vector<double> cp(modes.plantC.data(), modes.plantC.data() + np);
+    const std::vector<double> cc(modes.controllerC.data(), modes.controllerC.data() + nc);
+    const double umax = options.umaxVolts;
+    const double dt = options.dtSeconds;
+    const int states = static_cast<int>(n);
+    const int plantStates = static_cast<int>(np);
+    if (states == 4) // a third-order plant under a PI controller: every Guillemin-Truxal loop
+        runLoop<4>(4, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped, limited, umax,
+                   unit, dt, reference, x.data(), out);
+    else
+        runLoop<0>(states, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped, limited,
+                   umax, unit, dt, reference, x.data(), out);
+}
+
+SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,
+                              const std::vector<double>& reference,
+                              const LoopSimulationOptions& options) {
+    SimulationResult out;
+    simulateLoopInto(plant, controller, reference, options, out);
     return out;
 }
 

@@ -81,6 +81,17 @@ SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunct
                               const LoopSimulationOptions& options);
 
 /**
+ * simulateLoop into @p out, whose buffers are reused: the sample loop allocates nothing, and a
+ * caller that keeps one SimulationResult for repeated runs of at most as many samples (a live
+ * view, a benchmark) causes no heap traffic for the signals either (the setup still builds the
+ * loop's few small matrices). The results are those of simulateLoop, bit for bit.
+ * @throws InvalidInput as simulateLoop; @p out is then unspecified.
+ */
+void simulateLoopInto(const TransferFunction& plant, const TransferFunction& controller,
+                      const std::vector<double>& reference, const LoopSimulationOptions& options,
+                      SimulationResult& out);
+
+/**
  * Output of a continuous linear system from zero initial state driven by an input that is linear
  * between its samples u(k dt): exact at the samples (first-order-hold discretization).
  * @throws InvalidInput "system" unless proper and continuous, "input", "dt".

@@ -13,6 +13,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <limits>
 
@@ -55,6 +56,7 @@ private slots:
     void initialOutputAtRest();
     void unitScaleInvariance();
     void errorsNameTheField();
+    void reusedResultAllocatesNothing();
 };
 
 void TstSimulation::noSaturationEqualsLinearClosedLoop_data() {
@@ -121,6 +123,33 @@ void TstSimulation::againstOctaveLsim() {
         XYT_COMPARE_NEAR(linear[k], table.number(i, column), 0.0, 1e-11 * 600.0);
         XYT_COMPARE_NEAR(loop.y[k], table.number(i, column), 0.0, 1e-11 * 600.0);
     }
+}
+
+void TstSimulation::reusedResultAllocatesNothing() {
+    // Issue 18: simulateLoopInto with a kept result writes into the buffers it already has (their
+    // storage stays where it was) and gives simulateLoop's run, bit for bit: first a saturating
+    // 50 mm step, then a shorter linear one into the same result.
+    const xyt::GtDesign d = presetDesign("lower-base");
+    LoopSimulationOptions options;
+    options.umaxVolts = 2.5;
+    const std::vector<double> hard(3001, 50.0);
+    SimulationResult kept;
+    xyt::simulateLoopInto(d.plant.transferFunction(), d.controller, hard, options, kept);
+    const double* storage[] = {kept.t.data(), kept.r.data(), kept.y.data(), kept.e.data(), kept.u.data()};
+    const auto same = [](const SimulationResult& a, const SimulationResult& b) {
+        return a.t == b.t && a.r == b.r && a.y == b.y && a.e == b.e && a.u == b.u && a.clipped == b.clipped &&
+               a.dtSeconds == b.dtSeconds && a.umaxVolts == b.umaxVolts;
+    };
+    QVERIFY(same(kept, xyt::simulateLoop(d.plant.transferFunction(), d.controller, hard, options)));
+    QVERIFY(std::any_of(kept.clipped.begin(), kept.clipped.end(), [](bool c) { return c; }));
+    options.modelUnitsPerPositionUnit = 0.001; // the paper's units: 0.33 V, never clipped
+    const std::vector<double> gentle(2001, 5.0);
+    xyt::simulateLoopInto(d.plant.transferFunction(), d.controller, gentle, options, kept);
+    const double* after[] = {kept.t.data(), kept.r.data(), kept.y.data(), kept.e.data(), kept.u.data()};
+    QVERIFY(std::equal(std::begin(storage), std::end(storage), std::begin(after)));
+    QCOMPARE(kept.y.size(), gentle.size());
+    QVERIFY(same(kept, xyt::simulateLoop(d.plant.transferFunction(), d.controller, gentle, options)));
+    QVERIFY(std::none_of(kept.clipped.begin(), kept.clipped.end(), [](bool c) { return c; }));
 }
 
 void TstSimulation::saturationNeverExceedsUmax() {
