@@ -4,6 +4,7 @@
 #include "core/model/state_space.h"
 #include "core/simulation/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt::bench {
@@ -46,25 +47,34 @@ inline void advance(const ReferenceLoop& m, bool clip, double rk, double u, doub
     for (int i = 0; i < 4; ++i)
         x[i] = next[i];
 }
+/// The quantities of sample k, from the state x: output, scaled reference, command, clipped.
+struct Sample {
+    double y, rk, u;
+    bool clip;
+};
+inline Sample sample(const ReferenceLoop& m, const double* reference, std::size_t k, double umax, double unit,
+                     const double x[4]) {
+    const double yk = m.cp[0] * x[0] + m.cp[1] * x[1] + m.cp[2] * x[2];
+    const double rk = reference[k] * unit;
+    const double v = m.dc * (rk - yk) + m.cc * x[3];
+    const bool clip = std::abs(v) > umax;
+    return {yk, rk, clip ? std::copysign(umax, v) : v, clip};
+}
 } // namespace
 
 void referenceRun(const ReferenceLoop& m, const double* reference, std::size_t count, double dt, double umax,
                   double unit, double* t, double* y, double* e, double* u, bool* clipped) {
     double x[4] = {0.0, 0.0, 0.0, 0.0};
     for (std::size_t k = 0; k < count; ++k) {
-        const double yk = m.cp[0] * x[0] + m.cp[1] * x[1] + m.cp[2] * x[2];
-        const double rk = reference[k] * unit;
-        const double v = m.dc * (rk - yk) + m.cc * x[3];
-        const bool clip = std::abs(v) > umax;
-        const double uk = clip ? std::copysign(umax, v) : v;
+        const Sample s = sample(m, reference, k, umax, unit, x);
         t[k] = static_cast<double>(k) * dt;
-        y[k] = yk / unit;
-        e[k] = reference[k] - yk / unit;
-        u[k] = uk;
-        clipped[k] = clip;
+        y[k] = s.y / unit;
+        e[k] = reference[k] - s.y / unit;
+        u[k] = s.u;
+        clipped[k] = s.clip;
         if (k + 1 == count)
             break;
-        advance(m, clip, rk, uk, (reference[k + 1] - reference[k]) * unit / dt, x);
+        advance(m, s.clip, s.rk, s.u, (reference[k + 1] - reference[k]) * unit / dt, x);
     }
 }
 
@@ -74,22 +84,18 @@ ReferenceFigures referenceFigures(const ReferenceLoop& m, const double* referenc
     ReferenceFigures f;
     double sumSquares = 0.0, previous = 0.0;
     for (std::size_t k = 0; k < count; ++k) {
-        const double yk = m.cp[0] * x[0] + m.cp[1] * x[1] + m.cp[2] * x[2];
-        const double rk = reference[k] * unit;
-        const double v = m.dc * (rk - yk) + m.cc * x[3];
-        const bool clip = std::abs(v) > umax;
-        const double uk = clip ? std::copysign(umax, v) : v;
-        const double e = std::abs(reference[k] - yk / unit);
+        const Sample s = sample(m, reference, k, umax, unit, x);
+        const double e = std::abs(reference[k] - s.y / unit);
         const double t = static_cast<double>(k) * dt;
         sumSquares += e * e;
         f.maxAbsError = std::max(f.maxAbsError, e);
-        f.maxAbsU = std::max(f.maxAbsU, std::abs(uk));
+        f.maxAbsU = std::max(f.maxAbsU, std::abs(s.u));
         if (k > 0)
             f.itae += 0.5 * dt * (t * e + previous);
         previous = t * e;
         if (k + 1 == count)
             break;
-        advance(m, clip, rk, uk, (reference[k + 1] - reference[k]) * unit / dt, x);
+        advance(m, s.clip, s.rk, s.u, (reference[k + 1] - reference[k]) * unit / dt, x);
     }
     f.rmse = std::sqrt(sumSquares / static_cast<double>(count));
     return f;

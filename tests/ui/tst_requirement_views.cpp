@@ -227,8 +227,10 @@ void TstRequirementViews::stepHoverReadout() {
     const QPoint at(static_cast<int>(plot->xAxis->coordToPixel(2.0)), plot->axisRect()->center().y());
     QTest::mouseMove(plot, at);
     QTRY_VERIFY(plot->readoutText().startsWith("t = "));
-    // The time read back is the hovered one, to a pixel.
-    const double t = plot->readoutText().section(' ', 2, 2).toDouble();
+    // The time read back is the hovered one, to a pixel ("t = 2.01 s   y = ...": word 2).
+    bool parsed = false;
+    const double t = plot->readoutText().section(' ', 2, 2).toDouble(&parsed);
+    QVERIFY2(parsed, qPrintable(plot->readoutText()));
     const double pixel = plot->xAxis->range().size() / plot->axisRect()->width();
     XYT_COMPARE_NEAR(t, 2.0, 0.0, 1.5 * pixel);
     QVERIFY(plot->readoutText().contains("closed-loop unit step"));
