@@ -4,10 +4,13 @@
 // Optional argument: a substring; only figures whose name contains it are run. The core figures
 // come first; gui_slider_to_repaint (last) times the widgets on the offscreen platform.
 #include "core/study/design_sweep.h"
+#include "core/session/design_study.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/analysis/root_locus.h"
 #include "core/design/pole_placement.h"
+#include "core/simulation/metrics.h"
 #include "core/simulation/simulation.h"
+#include "core/model/state_space.h"
 #include "core/simulation/trajectory.h"
 #include "core/design/zpetc.h"
 #include "core/simulation/zpetc_tracking.h"
@@ -15,6 +18,7 @@
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
 #include "app/bench_reference_loop.h"
+#include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/panels/parameter_slider.h"
@@ -108,6 +112,38 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
         QApplication::processEvents();
         QApplication::processEvents();
     });
+    // Issue 18: the live design-space map visible below (root locus above) and recomputing:
+    // before each timed slider step a plant change (untimed) starts a live preview on the
+    // worker threads; the step is timed while it runs. Prints how many steps overlapped a study.
+    window.upperTabs()->setCurrentIndex(0);
+    xyt::ui::DesignSpaceView* map = nullptr;
+    for (int i = 0; i < window.lowerTabs()->count() && !map; ++i)
+        map = qobject_cast<xyt::ui::DesignSpaceView*>(window.lowerTabs()->widget(i));
+    if (!map)
+        return;
+    window.lowerTabs()->setCurrentWidget(map);
+    QApplication::processEvents();
+    const xyt::ThirdOrderPlant nominal = session.session().axes[0].gt.plant;
+    std::vector<double> us;
+    int overlapped = 0;
+    for (int run = 0; run < 40; ++run) {
+        xyt::ThirdOrderPlant plant = nominal;
+        plant.k0 *= run % 2 ? 1.02 : 0.98;
+        session.setPlant(0, plant);
+        QApplication::processEvents();
+        overlapped += map->isRunning() ? 1 : 0;
+        const auto t0 = std::chrono::steady_clock::now();
+        slider->setValue(positions[next]);
+        next = 1 - next;
+        QApplication::processEvents();
+        QApplication::processEvents();
+        us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+    }
+    std::sort(us.begin(), us.end());
+    std::printf("gui_slider_to_repaint_design_space_live: median_us=%.1f min_us=%.1f max_us=%.1f runs=%zu "
+                "(%d of them while the map was recomputing)\n",
+                0.5 * (us[19] + us[20]), us.front(), us.back(), us.size(), overlapped);
+    std::fflush(stdout);
 }
 
 } // namespace
@@ -120,6 +156,23 @@ int main(int argc, char* argv[]) {
         const auto d = xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp);
         sink = sink + d.ki;
     });
+
+    {
+        // Issue 18: what one design point of the sweep costs besides its tracking run.
+        const auto d = xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp);
+        const auto plant = lower.plant.transferFunction();
+        benchmark(filter, "sweep_point_loop_modes_and_foh", [&] {
+            const auto modes = xyt::loopModes(plant, d.controller);
+            const auto foh = xyt::discretizeFoh(modes.aLinear, modes.bLinear, 0.01);
+            sink = sink + foh.phi(0, 0);
+        });
+        benchmark(filter, "sweep_point_step_characteristics", [&] {
+            sink = sink + xyt::stepCharacteristics(d.closedLoop).settlingTimeSeconds;
+        });
+        benchmark(filter, "sweep_point_stability_margins", [&] {
+            sink = sink + xyt::stabilityMargins(xyt::gtLoopTransferFunctions(d).openLoop).phaseMarginDeg;
+        });
+    }
 
     {
         // Issue 17: the 4th-order GT loop at 1,000 frequencies plus all its margins (target
@@ -219,6 +272,25 @@ int main(int argc, char* argv[]) {
         printRatio("sweep_100x100", sweepUs[0], 0.5 * plainSweep,
                    "all threads / (reference loop over the designs / 2), target 1.5");
         printRatio("sweep_100x100_thread_speedup", sweepUs[1], sweepUs[0], "1 thread / all threads");
+        // Issue 18, the live case: the workbench's preview of the default session (lower base,
+        // cubic 600 mm in 130 s run to tf + 2 x 100 s, 2,000 samples, 100 per step-scan span),
+        // 50 x 50 designs over the view's default ranges, all threads, no refinement. Target
+        // under 100 ms on an idle machine.
+        {
+            const xyt::DesignProblem live = xyt::sessionDesignProblem(xyt::Session{}, 0, xyt::kLivePreviewFidelity);
+            xyt::SweepOptions o;
+            o.refine = false;
+            const xyt::SweepAxis wn50{0.2, 20.0, 50, true}, kp50{3.0, 3000.0, 50, true};
+            benchmark(filter, "design_space_live_50x50", [&] {
+                sink = sink + xyt::sweepDesignSpace(live, wn50, kp50, o).feasibleCount;
+            }, 10, 1.0);
+            for (const int width : {1, 4}) {
+                o.batchWidth = width;
+                benchmark(filter, "design_space_live_50x50_width" + std::to_string(width), [&] {
+                    sink = sink + xyt::sweepDesignSpace(live, wn50, kp50, o).feasibleCount;
+                }, 10, 1.0);
+            }
+        }
         // The same with the overshoot limit at 1 %, so that refinement runs too.
         problem.spec.maxOvershootPct = 1.0;
         benchmark(filter, "sweep_100x100_overshoot1pct_refined", [&] {

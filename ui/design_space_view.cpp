@@ -20,11 +20,21 @@
 #include <QSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QShowEvent>
+#include <QStyle>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 namespace xyt::ui {
 
@@ -35,6 +45,22 @@ Specification initialSpecification(const Session& session) {
 }
 
 namespace {
+
+/// Lowers the calling thread's scheduling priority (nice +10 on Linux, where nice is per
+/// thread): the study's workers then yield the cores to the GUI thread whenever it has work,
+/// so a live map never delays a slider's repaint.
+void lowerThisThreadPriority() {
+#ifdef __linux__
+    (void)setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
+}
+
+/// The settings beyond sameStudySettings that change the runs of a study: the settle limit
+/// (the run lasts tf + 2 x it) and the in-position window (its settle figures).
+bool sameRunLimits(const Session& a, const Session& b) {
+    return a.spec.maxSettleTimeSeconds == b.spec.maxSettleTimeSeconds &&
+           a.spec.inPositionWindowMm == b.spec.inPositionWindowMm;
+}
 
 const SweepCriterion kCriteria[] = {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
                                     SweepCriterion::MaxU, SweepCriterion::Settle, SweepCriterion::PhaseMargin,
@@ -163,7 +189,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     auto* choice = new QGroupBox(tr("Choice"));
     auto* choiceForm = new QFormLayout(choice);
     choiceForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
-    choiceForm->addRow(tr("Best design: smallest (largest for margins)"), criterion_);
+    choiceForm->addRow(tr("Best design (min; max for margins)"), criterion_);
     choiceForm->addRow(tr("Heat map shows"), metric_);
     choiceForm->addRow(logColor_);
 
@@ -207,7 +233,22 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
                           "(▲) meets (an undoable step)"));
     relax_->setVisible(false);
     connect(relax_, &QPushButton::clicked, this, &DesignSpaceView::relaxSpecification);
+    live_ = new QCheckBox(tr("Live"));
+    live_->setChecked(true);
+    live_->setToolTip(tr("Recompute the map when the plant, the trajectory or the limits change: a "
+                         "coarse preview at once, the full study when the inputs rest"));
+    rest_ = new QTimer(this);
+    rest_->setSingleShot(true);
+    rest_->setInterval(kLiveRestMs);
+    connect(rest_, &QTimer::timeout, this, &DesignSpaceView::onRest);
+    connect(live_, &QCheckBox::toggled, this, [this](bool on) {
+        if (on)
+            scheduleLive();
+        else
+            rest_->stop();
+    });
     auto* actions = new QHBoxLayout;
+    actions->addWidget(live_);
     actions->addWidget(run_);
     actions->addWidget(cancel_);
     actions->addWidget(relax_);
@@ -226,7 +267,10 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     controlPanel_->setWidgetResizable(true);
     controlPanel_->setFrameShape(QFrame::NoFrame);
     controlPanel_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    controlPanel_->setFixedWidth(250);
+    // As wide as the controls need beside the vertical scroll bar (they were clipped on the
+    // right: "N 6" for "N 60"), and never narrower than 250 px.
+    const int scrollBar = controlPanel_->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    controlPanel_->setFixedWidth(std::max(250, controlContent->minimumSizeHint().width() + scrollBar + 4));
     // The wheel over a field that has no focus scrolls the panel; it changes a value only in the
     // field being edited (a scroll through the panel must not retune the study).
     for (QAbstractSpinBox* box : controlContent->findChildren<QAbstractSpinBox*>()) {
@@ -282,7 +326,45 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     connect(plot_, &DesignSpacePlot::cellHovered, this, &DesignSpaceView::showHover);
     connect(plot_, &DesignSpacePlot::cellClicked, this, &DesignSpaceView::loadCell);
     connect(session_, &TuningSession::designChanged, this, &DesignSpaceView::updateCurrentDesign);
+    // A new grid or criterion is a new study: the live map follows it too.
+    for (QDoubleSpinBox* box : {wnMin_, wnMax_, kpMin_, kpMax_})
+        connect(box, &QDoubleSpinBox::valueChanged, this, [this] { scheduleLive(true); });
+    for (QSpinBox* box : {wnCount_, kpCount_})
+        connect(box, &QSpinBox::valueChanged, this, [this] { scheduleLive(true); });
+    connect(logGrid_, &QCheckBox::toggled, this, [this] { scheduleLive(true); });
+    connect(criterion_, &QComboBox::currentIndexChanged, this, [this] { scheduleLive(true); });
     updateCurrentDesign();
+}
+
+void DesignSpaceView::showEvent(QShowEvent* event) {
+    QWidget::showEvent(event);
+    scheduleLive();
+}
+
+void DesignSpaceView::scheduleLive(bool force) {
+    if (!live_ || !live_->isChecked() || !isVisible())
+        return;
+    const Session& s = session_->session();
+    const int axis = session_->currentAxis();
+    if (s.axes.at(static_cast<std::size_t>(axis)).method != DesignMethod::GuilleminTruxal)
+        return; // the status says so when a study is asked for
+    // What is shown, or being computed: a running study's settings, else the last result's.
+    const bool running = isRunning();
+    const Session& shown = running ? pendingSession_ : studiedSession_;
+    const int shownAxis = running ? pendingAxis_ : studiedAxis_;
+    const bool upToDate = (running || result_) && shownAxis == axis && sameStudySettings(s, shown, axis) &&
+                          sameRunLimits(s, shown);
+    if (upToDate && !force)
+        return;
+    startStudy(StudyKind::Preview);
+    rest_->start();
+}
+
+void DesignSpaceView::onRest() {
+    if (!live_->isChecked() || !isVisible() || isRunning())
+        return; // a preview under way starts the full study when it finishes
+    if (result_ && resultIsPreview_ && result_->status == SweepStatus::Completed)
+        startStudy(StudyKind::Full);
 }
 
 DesignSpaceView::~DesignSpaceView() { stopJob(); }
@@ -317,7 +399,9 @@ void DesignSpaceView::stopJob() {
     job_.reset();
 }
 
-void DesignSpaceView::run() {
+void DesignSpaceView::run() { startStudy(StudyKind::Full); }
+
+void DesignSpaceView::startStudy(StudyKind kind) {
     stopJob();
     const int axis = session_->currentAxis();
     const Session& s = session_->session();
@@ -328,66 +412,64 @@ void DesignSpaceView::run() {
                   true);
         return;
     }
+    const bool preview = kind == StudyKind::Preview;
+    // The preview is the live map: at most kLivePreviewCount designs a side, coarse in time
+    // (kLivePreviewFidelity); the full study uses the grid and the session's dt.
+    const int wnCount = preview ? std::min(wnCount_->value(), kLivePreviewCount) : wnCount_->value();
+    const int kpCount = preview ? std::min(kpCount_->value(), kLivePreviewCount) : kpCount_->value();
     DesignProblem problem;
-    SweepAxis wnAxis{wnMin_->value(), wnMax_->value(), wnCount_->value(), logGrid_->isChecked()};
-    SweepAxis kpAxis{kpMin_->value(), kpMax_->value(), kpCount_->value(), logGrid_->isChecked()};
+    SweepAxis wnAxis{wnMin_->value(), wnMax_->value(), wnCount, logGrid_->isChecked()};
+    SweepAxis kpAxis{kpMin_->value(), kpMax_->value(), kpCount, logGrid_->isChecked()};
     try {
         wnAxis.validate("ωn range");
         kpAxis.validate("kp range");
-        problem.plant = settings.gt.plant;
-        problem.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
-        problem.dtSeconds = s.trajectory.dtSeconds;
-        // A point-to-point move is judged on its move and settle too: the run lasts the move
-        // plus twice the allowed settle time (moveSweepDurationSeconds), however long the
-        // session's automatic duration is.
-        const TrajectorySettings& t = s.trajectory;
-        const bool cubic = t.kind == TrajectoryKind::Cubic;
-        const double duration = cubic && t.durationSeconds == 0.0
-                                    ? moveSweepDurationSeconds(t.tfSeconds, s.spec.maxSettleTimeSeconds)
-                                    : t.effectiveDurationSeconds();
-        problem.reference = sampled(axisReference(t, axis), sampleTimes(duration, t.dtSeconds));
-        if (cubic)
-            problem.move = PointToPointMove{t.x0, t.xf, t.tfSeconds};
-        problem.spec = s.spec; // the one specification of the session
-        problem.spec.umaxVolts = s.umaxVolts;
-        problem.spec.validate();
+        problem = sessionDesignProblem(s, axis, preview ? kLivePreviewFidelity : StudyFidelity{});
     } catch (const InvalidInput& e) {
         setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
         return;
     }
     SweepOptions options;
     options.criterion = selected(criterion_);
+    options.refine = !preview; // the preview shows the map; the best design is the full study's
+    options.onWorkerStart = lowerThisThreadPriority;
 
     pendingProblem_ = problem;
     pendingSession_ = s;
     pendingAxis_ = axis;
     pendingLogGrid_ = logGrid_->isChecked();
     job_ = std::make_unique<Job>();
+    job_->kind = kind;
     const int id = job_->id = ++lastJobId_;
     std::atomic<bool>* cancelFlag = &job_->cancel;
     // The worker only posts to this widget; the destructor joins it before the QObject goes, and
     // ~QObject drops the events still queued.
     job_->thread = std::thread([this, id, cancelFlag, problem, wnAxis, kpAxis, options]() mutable {
+        lowerThisThreadPriority();
         options.progress = [this, id, cancelFlag](double fraction) {
             QMetaObject::invokeMethod(this, [this, id, fraction] { onProgress(id, fraction); }, Qt::QueuedConnection);
             return !cancelFlag->load();
         };
         auto result = std::make_shared<DesignSweepResult>();
         QString error;
+        const auto start = std::chrono::steady_clock::now();
         try {
             *result = sweepDesignSpace(problem, wnAxis, kpAxis, options);
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        QMetaObject::invokeMethod(this, [this, id, result, error] { onFinished(id, result, error); },
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        QMetaObject::invokeMethod(this, [this, id, result, error, ms] { onFinished(id, result, error, ms); },
                                   Qt::QueuedConnection);
     });
     progress_->setValue(0);
     cancel_->setEnabled(true);
-    setStatus(tr("Studying %1 × %2 designs of axis %3…")
-                  .arg(wnAxis.count)
-                  .arg(kpAxis.count)
-                  .arg(axisName(s, axis)));
+    if (preview)
+        setStatus(tr("Live preview of axis %1: %2 × %3 designs…").arg(axisName(s, axis)).arg(wnCount).arg(kpCount));
+    else
+        setStatus(tr("Studying %1 × %2 designs of axis %3…")
+                      .arg(wnAxis.count)
+                      .arg(kpAxis.count)
+                      .arg(axisName(s, axis)));
 }
 
 void DesignSpaceView::cancel() {
@@ -403,10 +485,12 @@ void DesignSpaceView::onProgress(int jobId, double fraction) {
         progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
 }
 
-void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error) {
+void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error,
+                                 double elapsedMs) {
     if (!job_ || job_->id != jobId)
         return; // a study replaced by a newer one
     job_->thread.join(); // posting this was the worker's last act
+    const StudyKind kind = job_->kind;
     job_.reset();
     cancel_->setEnabled(false);
     if (!error.isEmpty()) {
@@ -415,6 +499,8 @@ void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> r
         return;
     }
     result_ = std::move(*result);
+    resultIsPreview_ = kind == StudyKind::Preview;
+    lastElapsedMs_ = elapsedMs;
     problem_ = pendingProblem_;
     studiedSession_ = pendingSession_;
     studiedAxis_ = pendingAxis_;
@@ -424,9 +510,30 @@ void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> r
                       tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
     updateCurrentDesign();
     showOutcome();
+    emit studyFinished(kind);
+    // The full study follows a completed preview once the inputs have rested.
+    if (resultIsPreview_ && result_->status == SweepStatus::Completed && live_->isChecked() &&
+        !rest_->isActive())
+        startStudy(StudyKind::Full);
 }
 
 void DesignSpaceView::showOutcome() {
+    if (resultIsPreview_ && result_->status == SweepStatus::Completed) {
+        showOutcomeText();
+        setStatus(tr("Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the "
+                     "inputs rest.\n")
+                          .arg(result_->wnValues.size())
+                          .arg(result_->kpValues.size())
+                          .arg(num(problem_->dtSeconds, 3))
+                          .arg(qRound(lastElapsedMs_)) +
+                      status_->text(),
+                  !status_->styleSheet().isEmpty());
+        return;
+    }
+    showOutcomeText();
+}
+
+void DesignSpaceView::showOutcomeText() {
     const DesignSweepResult& r = *result_;
     const int total = static_cast<int>(r.points.size());
     const QString crit = metricLabel(r.criterion);
@@ -533,6 +640,7 @@ void DesignSpaceView::updateCurrentDesign() {
         else if (status_->text() == staleNote)
             showOutcome(); // undone back to the studied settings
     }
+    scheduleLive();
 }
 
 void DesignSpaceView::showHover(std::optional<std::pair<std::size_t, std::size_t>> cell) {

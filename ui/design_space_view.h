@@ -3,6 +3,7 @@
 
 #include "core/study/design_sweep.h"
 #include "core/study/sweep_diagnosis.h"
+#include "core/session/design_study.h"
 #include "core/session/session.h"
 
 #include <QWidget>
@@ -20,6 +21,7 @@ class QProgressBar;
 class QPushButton;
 class QScrollArea;
 class QSpinBox;
+class QTimer;
 
 namespace xyt::ui {
 
@@ -34,6 +36,14 @@ class TuningSession;
  * The study runs off the GUI thread; progress arrives through the core's callback, queued to
  * this widget. Run while a study runs cancels it first; Cancel stops it after the points being
  * computed; destroying the widget cancels and joins.
+ *
+ * Live map (issue 18, on by default): while the view is visible, a change of what the study
+ * depends on (the axis, its plant, the trajectory, the actuator limit, the settle limit and
+ * in-position window, the grid) starts a preview at once, at most 50 x 50 designs coarse in
+ * time (kLivePreviewFidelity), cancelling the study under way; when the inputs have rested for
+ * kLiveRestMs the full study (the grid at the session's dt) follows. A change of wn or kp only
+ * moves the design marker; a change of the other limits judges the map again. The workers run
+ * at a lower priority than the GUI thread, so the sliders stay as fast as without the map.
  */
 class DesignSpaceView : public QWidget {
     Q_OBJECT
@@ -43,12 +53,23 @@ public:
 
     /// Starts a study of the current axis with the settings of the controls (cancels a running one).
     void run();
+    /// How the next study is computed: the live preview or the full study.
+    enum class StudyKind { Preview, Full };
+    static constexpr int kLivePreviewCount = 50; ///< designs per side of the preview, at most
+    static constexpr int kLiveRestMs = 400;      ///< rest before the full study follows
     /// Asks the running study to stop; its partial result is shown when it has stopped.
     void cancel();
     bool isRunning() const { return job_ != nullptr; }
 
     /// The last finished study (partial when cancelled).
     const std::optional<DesignSweepResult>& result() const { return result_; }
+    /// The shown result is a live preview (the full study has not replaced it yet).
+    bool resultIsPreview() const { return resultIsPreview_; }
+    /// Wall time of the last finished study or preview, in ms.
+    double lastElapsedMs() const { return lastElapsedMs_; }
+    /// Kind of the study under way (meaningful while isRunning()).
+    StudyKind runningKind() const { return job_ ? job_->kind : StudyKind::Full; }
+    QCheckBox* liveBox() const { return live_; }
     /// The problem of the last finished study, and the axis it was for.
     const std::optional<DesignProblem>& studiedProblem() const { return problem_; }
     int studiedAxis() const { return studiedAxis_; }
@@ -78,7 +99,12 @@ public:
     QDoubleSpinBox* phaseMarginBox() const { return phaseMargin_; }
     QDoubleSpinBox* gainMarginBox() const { return gainMargin_; }
 
+signals:
+    /// A study or a preview finished (completed or cancelled) and its result is shown.
+    void studyFinished(xyt::ui::DesignSpaceView::StudyKind kind);
+
 protected:
+    void showEvent(QShowEvent* event) override;
     /// Wheel events over an unfocused field of the control panel scroll the panel.
     bool eventFilter(QObject* watched, QEvent* event) override;
 
@@ -87,12 +113,19 @@ private:
         int id = 0;
         std::atomic<bool> cancel{false};
         std::thread thread;
+        StudyKind kind = StudyKind::Full;
     };
 
+    void startStudy(StudyKind kind);
+    /// Starts a preview when live, visible, and the map shown (or under way) is not of the
+    /// session's current study settings; @p force: also when it is (the grid changed).
+    void scheduleLive(bool force = false);
+    void onRest();
     void stopJob();
     void onProgress(int jobId, double fraction);
-    void onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error);
+    void onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error, double elapsedMs);
     void showOutcome();
+    void showOutcomeText();
     void updateCurrentDesign();
     void applySpecification();
     void relaxSpecification();
@@ -113,6 +146,10 @@ private:
     bool studiedLogGrid_ = true;
     bool pendingLogGrid_ = true;
     double lastUmaxVolts_ = 0.0;
+    bool resultIsPreview_ = false;
+    double lastElapsedMs_ = 0.0;
+    QCheckBox* live_ = nullptr;
+    QTimer* rest_ = nullptr;
 
     DesignSpacePlot* plot_;
     QLabel* readout_;

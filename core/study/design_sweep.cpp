@@ -5,6 +5,7 @@
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
 #include "core/simulation/simulation.h"
+#include "core/simulation/tracking_batch.h"
 #include "core/model/state_space.h"
 
 #include <Eigen/Core>
@@ -19,6 +20,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <thread>
 
 namespace xyt {
@@ -26,90 +28,6 @@ namespace xyt {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// A third-order plant in series with a PI controller: 3 + 1 states.
-constexpr int kLoopStates = 4;
-using LoopMatrix = Eigen::Matrix<double, kLoopStates, kLoopStates>;
-using LoopVector = Eigen::Matrix<double, kLoopStates, 1>;
-
-/// x[k+1] = phi x + g0 w + g1 rho for the FOH step of one mode, with fixed sizes.
-template <int Inputs> struct FixedStep {
-    LoopMatrix phi;
-    Eigen::Matrix<double, kLoopStates, Inputs> g0, g1;
-
-    FixedStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double dt) {
-        const FohDiscretization foh = discretizeFoh(a, b, dt);
-        phi = foh.phi;
-        g0 = foh.gamma0;
-        g1 = foh.gamma1;
-    }
-};
-
-/**
- * The recursion of simulateLoop (same modes, same mode choice from v at the start of each step,
- * zero initial state) for a 4-state loop, accumulating trackingMetrics' figures on the fly with
- * the same formulas and summation order. Returns nullopt when the state stops being finite.
- */
-std::optional<TrackingMetrics> trackLoop(const LoopModes& modes, const std::vector<double>& ref,
-                                         double dt, double umax, double unit, double travel,
-                                         MoveSettleAccumulator* move) {
-    if (modes.plantStates + modes.controllerStates != kLoopStates || modes.controllerStates != 1)
-        throw std::logic_error("trackLoop: expected a third-order plant and a PI controller");
-    const FixedStep<1> linear(modes.aLinear, modes.bLinear, dt);
-    std::optional<FixedStep<2>> clipped; // computed at the first clipped sample only
-    const Eigen::Vector3d cp = modes.plantC.transpose();
-    const double cc = modes.controllerC(0);
-    const double dc = modes.controllerD;
-
-    LoopVector x = LoopVector::Zero();
-    TrackingMetrics m;
-    double sumSquares = 0.0;
-    double previousTimeAbsError = 0.0; // t_{k-1} |e_{k-1}|
-    double previousTime = 0.0;
-    std::size_t clippedCount = 0;
-    const std::size_t count = ref.size();
-    for (std::size_t k = 0; k < count; ++k) {
-        const double y = cp.dot(x.head<3>());
-        if (!std::isfinite(y))
-            return std::nullopt;
-        const double rk = ref[k] * unit;
-        const double v = dc * (rk - y) + cc * x(3);
-        const bool clip = std::abs(v) > umax;
-        const double u = clip ? std::copysign(umax, v) : v;
-        const double e = ref[k] - y / unit;
-        const double absE = std::abs(e);
-        const double t = static_cast<double>(k) * dt;
-        if (move)
-            move->add(t, y / unit, e);
-        sumSquares += e * e;
-        m.maxAbsError = std::max(m.maxAbsError, absE);
-        m.maxAbsU = std::max(m.maxAbsU, std::abs(u));
-        if (clip)
-            ++clippedCount;
-        if (k > 0)
-            m.itae += 0.5 * (t - previousTime) * (t * absE + previousTimeAbsError);
-        previousTime = t;
-        previousTimeAbsError = t * absE;
-        if (k + 1 == count)
-            break;
-        const double slope = (ref[k + 1] - ref[k]) * unit / dt;
-        if (clip) {
-            if (!clipped)
-                clipped.emplace(modes.aClipped, modes.bClipped, dt);
-            x = clipped->phi * x + clipped->g0 * Eigen::Vector2d(rk, u) +
-                clipped->g1.col(0) * slope;
-        } else {
-            x = linear.phi * x + linear.g0 * rk + linear.g1 * slope;
-        }
-    }
-    m.rmse = std::sqrt(sumSquares / static_cast<double>(count));
-    m.maxAbsErrorPct = travel > 0.0 ? 100.0 * m.maxAbsError / travel : 0.0;
-    m.saturated = clippedCount > 0;
-    m.saturatedTimeSeconds = static_cast<double>(clippedCount) * dt;
-    if (!std::isfinite(m.rmse) || !std::isfinite(m.itae) || !std::isfinite(m.maxAbsU))
-        return std::nullopt;
-    return m;
-}
 
 bool stepFiguresFinite(const StepCharacteristics& s) {
     return !s.stable || (std::isfinite(s.finalValue) && std::isfinite(s.settlingTimeSeconds) &&
@@ -212,25 +130,56 @@ DesignEvaluator::DesignEvaluator(DesignProblem problem) : problem_(std::move(pro
         requireFinite(r, "reference");
     const auto [lo, hi] = std::minmax_element(problem_.reference.begin(), problem_.reference.end());
     travel_ = *hi - *lo;
+    if (problem_.stepSamples < 100 || problem_.stepSamples > 100000)
+        throw InvalidInput("step_samples", "must be from 100 to 100000");
     if (problem_.move) // validates the move
         (void)MoveSettleAccumulator(*problem_.move, problem_.spec.inPositionWindowMm);
 }
 
 DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
-    const GtDesign design = designGuilleminTruxal(problem_.plant, wn, kp);
     DesignPoint p;
-    p.wn = wn;
-    p.kp = kp;
+    evaluateBatch(std::span<const double>(&wn, 1), std::span<const double>(&kp, 1),
+                  std::span<DesignPoint>(&p, 1), 1);
+    return p;
+}
+
+void DesignEvaluator::evaluateBatch(std::span<const double> wn, std::span<const double> kp,
+                                    std::span<DesignPoint> out, int batchWidth) const {
+    if (kp.size() != wn.size() || out.size() != wn.size())
+        throw InvalidInput("designs", "wn, kp and the results must have the same length");
+    const std::size_t n = wn.size();
+    std::vector<GtDesign> designs;
+    std::vector<LoopModes> modes;
+    designs.reserve(n);
+    modes.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        designs.push_back(designGuilleminTruxal(problem_.plant, wn[i], kp[i]));
+        modes.push_back(loopModes(plantTf_, designs.back().controller));
+    }
+    std::vector<std::optional<MoveSettleAccumulator>> moves(problem_.move ? n : 0);
+    std::vector<MoveSettleAccumulator*> movePointers;
+    for (auto& m : moves)
+        movePointers.push_back(&m.emplace(*problem_.move, problem_.spec.inPositionWindowMm));
+    std::vector<std::optional<TrackingMetrics>> tracking(n);
+    TrackingRun run;
+    run.reference = &problem_.reference;
+    run.dtSeconds = problem_.dtSeconds;
+    run.umaxVolts = problem_.spec.umaxVolts;
+    run.modelUnitsPerPositionUnit = problem_.modelUnitsPerPositionUnit;
+    trackBatch(modes, run, movePointers, tracking, batchWidth);
+    for (std::size_t i = 0; i < n; ++i)
+        out[i] = finishPoint(designs[i], tracking[i], moves.empty() ? nullptr : &*moves[i]);
+}
+
+DesignPoint DesignEvaluator::finishPoint(const GtDesign& design,
+                                         const std::optional<TrackingMetrics>& tracking,
+                                         MoveSettleAccumulator* move) const {
+    DesignPoint p;
+    p.wn = design.omegaNRadPerSec;
+    p.kp = design.kp;
     p.ki = design.ki;
     p.stable = design.stable;
-    std::optional<MoveSettleAccumulator> move;
-    if (problem_.move)
-        move.emplace(*problem_.move, problem_.spec.inPositionWindowMm);
-    const std::optional<TrackingMetrics> tracking =
-        trackLoop(loopModes(plantTf_, design.controller), problem_.reference, problem_.dtSeconds,
-                  problem_.spec.umaxVolts, problem_.modelUnitsPerPositionUnit, travel_,
-                  move ? &*move : nullptr);
-    p.step = stepCharacteristics(design.closedLoop);
+    p.step = stepCharacteristics(design.closedLoop, 0.02, problem_.stepSamples);
     p.metricsFinite = tracking.has_value() && stepFiguresFinite(p.step);
     if (tracking) {
         p.tracking = *tracking;
@@ -242,7 +191,7 @@ DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
         p.tracking.saturatedTimeSeconds = kInf;
     }
     if (move) {
-        if (!tracking) // the kernel stopped at the first non-finite sample
+        if (!tracking) // the kernel stopped feeding it at the first non-finite sample
             move->add(kInf, kInf, kInf);
         p.move = move->finish();
         if (p.move->diverged) // never NaN taken for a number (as the tracking figures above)
@@ -375,6 +324,9 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
         throw InvalidInput("threads", "must be from 0 (all cores) to 1024");
     if (options.maxRefineEvaluations < 0)
         throw InvalidInput("max_refine_evaluations", "must be >= 0");
+    if (options.batchWidth != 1 && options.batchWidth != 2 && options.batchWidth != 4 &&
+        options.batchWidth != 8)
+        throw InvalidInput("batch_width", "must be 1, 2, 4 or 8");
     DesignSweepResult result;
     result.criterion = options.criterion;
     result.wnValues = wnAxis.values("wn");
@@ -403,14 +355,29 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
 
     // Each point is computed independently by the same code into its own slot, so the result
     // is the same bit for bit whatever the number of threads and the order they take points in.
+    // Workers take batchWidth consecutive points at a time (one trackBatch call), so a point's
+    // neighbours in a batch vary from run to run; each lane's arithmetic is its own, so that
+    // does not change a bit either.
+    const std::size_t width = static_cast<std::size_t>(options.batchWidth);
     auto worker = [&] {
         try {
+            if (options.onWorkerStart)
+                options.onWorkerStart();
+            std::vector<double> wn(width), kp(width);
             while (!cancel.load(std::memory_order_relaxed)) {
-                const std::size_t i = next.fetch_add(1);
-                if (i >= total)
+                const std::size_t first = next.fetch_add(width);
+                if (first >= total)
                     break;
-                result.points[i] = evaluator.evaluate(result.wnValues[i / nKp], result.kpValues[i % nKp]);
-                done.fetch_add(1, std::memory_order_release);
+                const std::size_t count = std::min(width, total - first);
+                for (std::size_t j = 0; j < count; ++j) {
+                    wn[j] = result.wnValues[(first + j) / nKp];
+                    kp[j] = result.kpValues[(first + j) % nKp];
+                }
+                evaluator.evaluateBatch(std::span<const double>(wn.data(), count),
+                                        std::span<const double>(kp.data(), count),
+                                        std::span<DesignPoint>(result.points.data() + first, count),
+                                        options.batchWidth);
+                done.fetch_add(count, std::memory_order_release);
             }
         } catch (...) {
             const std::lock_guard lock(mutex);

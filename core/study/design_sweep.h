@@ -3,6 +3,7 @@
 
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
 #include "core/study/specification.h"
 
 #include <cstddef>
@@ -10,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,11 @@ struct DesignProblem {
     /// spec.maxSettleTimeSeconds. The reference must run past the move's end for the settle to
     /// be measured (moveSweepDurationSeconds).
     std::optional<PointToPointMove> move;
+    /// Samples per span of the step-figure scan (stepCharacteristics' `samples`, at least 100):
+    /// the default 500 for a study; a live preview may take 100 (about 25 samples per period
+    /// of the fastest closed-loop oscillation instead of 125: the sampled peak is then within
+    /// 1 - cos(pi / 25) = 0.8 % of that oscillation's amplitude).
+    int stepSamples = 500;
 };
 
 /**
@@ -124,18 +131,16 @@ double criterionMetric(const DesignPoint& point, SweepCriterion criterion);
 bool criterionMaximizes(SweepCriterion criterion);
 
 /**
- * Evaluates designs of one DesignProblem. Equivalent, to round-off, to
+ * Evaluates designs of one DesignProblem. Equal, bit for bit, to
  *   d = designGuilleminTruxal(plant, wn, kp);
  *   run = simulateLoop(plant.transferFunction(), d.controller, reference, {dt, spec.umaxVolts, 0, unit});
- *   trackingMetrics(run), stepCharacteristics(d.closedLoop), checkSpecification(...)
- * but faster: the loop of a third-order plant and a PI controller has 4 states, so the
- * recursion runs on fixed-size matrices, the metrics are accumulated on the fly instead of
- * storing the signals, and the clipped-mode matrices (a second matrix exponential) are computed
- * only when the command first reaches the limit. Up to that instant the loop is linear and
- * equals G_R (paper 000 Eq. 3); from it on, the piecewise-linear simulation of simulateLoop is
- * continued from the same state, so saturated runs are exact in the same sense as simulateLoop.
+ *   trackingMetrics(run), stepCharacteristics(d.closedLoop, 0.02, stepSamples), checkSpecification(...)
+ * but faster: the tracking runs of several designs are stepped together by trackBatch (one
+ * vector lane per design, the metrics accumulated on the fly instead of storing the signals,
+ * the clipped-mode matrices computed only when a design's command first reaches the limit).
  *
- * evaluate() is const and keeps no state: it may be called from several threads at once.
+ * evaluate() and evaluateBatch() are const and keep no state: they may be called from several
+ * threads at once.
  */
 class DesignEvaluator {
 public:
@@ -145,10 +150,18 @@ public:
 
     /// @throws InvalidInput "wn" or "kp" unless finite and > 0.
     DesignPoint evaluate(double wn, double kp) const;
+    /// out[i] = evaluate(wn[i], kp[i]) bit for bit, the tracking runs stepped @p batchWidth at a
+    /// time (trackBatch: 1, 2, 4 or 8). @throws InvalidInput "designs" when the sizes differ,
+    /// "batch_width", and as evaluate.
+    void evaluateBatch(std::span<const double> wn, std::span<const double> kp,
+                       std::span<DesignPoint> out, int batchWidth = 8) const;
 
     const DesignProblem& problem() const { return problem_; }
 
 private:
+    DesignPoint finishPoint(const GtDesign& design, const std::optional<TrackingMetrics>& tracking,
+                            MoveSettleAccumulator* move) const;
+
     DesignProblem problem_;
     TransferFunction plantTf_;
     double travel_ = 0.0; ///< max r - min r, for maxAbsErrorPct
@@ -183,6 +196,12 @@ struct SweepOptions {
     int threads = 0;
     bool refine = true;
     int maxRefineEvaluations = 400;
+    /// Designs whose tracking runs are stepped together (trackBatch): 1, 2, 4 or 8. The result
+    /// does not depend on it, bit for bit.
+    int batchWidth = 8;
+    /// Called first on each worker thread (a GUI lowers the workers' priority with it, so that
+    /// a live study never delays a repaint). May be empty.
+    std::function<void()> onWorkerStart;
     /**
      * Called with the fraction done, in [0, 1], non-decreasing, ALWAYS ON THE THREAD THAT CALLED
      * sweepDesignSpace (never on a worker), about every 20 ms while the grid is computed, and

@@ -5,6 +5,7 @@
 #include "core/study/sweep_diagnosis.h"
 #include "ui/design_space_view.h"
 #include "ui/session/tuning_session.h"
+#include "core/session/design_study.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
 #include "tests/support/tolerance.h"
@@ -17,10 +18,12 @@
 #include <QSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSignalSpy>
 #include <QWheelEvent>
 #include <QApplication>
 #include <QTest>
 
+#include <bit>
 #include <cmath>
 #include <set>
 
@@ -28,6 +31,7 @@ using namespace xyt;
 using namespace xyt::ui;
 
 Q_DECLARE_METATYPE(std::vector<std::uint8_t>)
+Q_DECLARE_METATYPE(xyt::ui::DesignSpaceView::StudyKind)
 
 namespace {
 // A study of a few thousand points takes seconds on the shared 2-core machine; leave room.
@@ -73,6 +77,11 @@ private slots:
     void newRunReplacesARunningOne();
     void destroyingWhileRunningIsSafe();
     void currentDesignMarkerFollowsTheSession();
+    void liveMapPreviewsThenStudiesInFull();
+    void liveMapFollowsPlantTrajectoryAndLimits();
+    void liveMapIgnoresTheDesignAndJudgesAgain();
+    void liveOffOrHiddenComputesNothing();
+    void liveMapSkipsAPolePlacementAxis();
     void outlineEnclosesTheFeasibleCells_data();
     void outlineEnclosesTheFeasibleCells();
     void cellEdgesAreMidpointsInTheAxisScale();
@@ -88,6 +97,9 @@ private:
 void TstDesignSpaceView::init() {
     session_ = std::make_unique<TuningSession>();
     view_ = std::make_unique<DesignSpaceView>(session_.get());
+    // The tests below drive the study by hand; the live map (on by default, checked by
+    // defaultsFollowTheIssue) has its own tests, which turn it on.
+    view_->liveBox()->setChecked(false);
     view_->resize(900, 600);
     view_->show();
     QVERIFY(QTest::qWaitForWindowExposed(view_.get()));
@@ -125,6 +137,10 @@ void TstDesignSpaceView::defaultsFollowTheIssue() {
     QCOMPARE(view_->wnCountBox()->value(), 60);
     QCOMPARE(view_->kpCountBox()->value(), 60);
     QVERIFY(view_->logGridBox()->isChecked());
+    // Issue 18: the map is live by default (a view never shown computes nothing).
+    const DesignSpaceView fresh(session_.get());
+    QVERIFY(fresh.liveBox()->isChecked());
+    QVERIFY(!fresh.isRunning());
     QCOMPARE(view_->settlingBox()->value(), 100.0);
     QCOMPARE(view_->overshootBox()->value(), 0.0);
     QCOMPARE(view_->errorBox()->value(), 2.0);
@@ -471,6 +487,152 @@ void TstDesignSpaceView::currentDesignMarkerFollowsTheSession() {
     session_->setOmegaN(0, 3.5);
     QCOMPARE(view_->plot()->currentMarker()->dataCount(), 1);
     XYT_COMPARE_NEAR(view_->plot()->currentMarker()->data()->at(0)->key, 3.5, 0.0, 0.0);
+}
+
+
+namespace {
+using Kind = DesignSpaceView::StudyKind;
+
+/// Waits for the next studyFinished of @p spy (already holding @p seen signals), returns its kind.
+Kind nextFinished(QSignalSpy& spy, int seen) {
+    if (spy.count() <= seen)
+        spy.wait(kStudyTimeoutMs);
+    return spy.count() > seen ? spy.at(seen).at(0).value<Kind>() : Kind::Full;
+}
+} // namespace
+
+void TstDesignSpaceView::liveMapPreviewsThenStudiesInFull() {
+    setSmallGrid(6, 2.0);
+    QSignalSpy spy(view_.get(), &DesignSpaceView::studyFinished);
+    view_->liveBox()->setChecked(true); // visible, nothing shown yet: the preview starts at once
+    QVERIFY(view_->isRunning());
+    QVERIFY(view_->runningKind() == Kind::Preview);
+    QVERIFY(nextFinished(spy, 0) == Kind::Preview);
+    // The preview is the core's sweep of the session at the live fidelity (design_study.h):
+    // 2,000 samples over tf + 2 x the settle limit, 100 samples per step-scan span, no refinement.
+    const Session& s = session_->session();
+    const DesignProblem preview = sessionDesignProblem(s, 0, kLivePreviewFidelity);
+    QCOMPARE(view_->studiedProblem()->reference.size(), std::size_t(2000));
+    QCOMPARE(view_->studiedProblem()->dtSeconds, preview.dtSeconds);
+    QCOMPARE(view_->studiedProblem()->stepSamples, 100);
+    SweepOptions o;
+    o.refine = false;
+    const SweepAxis wn{0.2, 20.0, 6, true}, kp{3.0, 3000.0, 6, true};
+    const DesignSweepResult expected = sweepDesignSpace(preview, wn, kp, o);
+    QCOMPARE(view_->result()->points.size(), expected.points.size());
+    for (std::size_t i = 0; i < expected.points.size(); ++i)
+        QCOMPARE(std::bit_cast<std::uint64_t>(view_->result()->points[i].tracking.itae),
+                 std::bit_cast<std::uint64_t>(expected.points[i].tracking.itae));
+    QVERIFY(view_->statusText().startsWith("Live preview (6 × 6 designs"));
+    // Then, the inputs at rest, the full study: the grid at the session's dt, refined.
+    QVERIFY(nextFinished(spy, 1) == Kind::Full);
+    QVERIFY(!view_->resultIsPreview());
+    QCOMPARE(view_->studiedProblem()->dtSeconds, s.trajectory.dtSeconds);
+    QCOMPARE(view_->studiedProblem()->stepSamples, 500);
+    QCOMPARE(view_->studiedProblem()->reference.size(), expectedProblem(s, 0, 2.0).reference.size());
+    QVERIFY(view_->statusText().startsWith("Done"));
+    // Nothing more: the map is up to date.
+    QTest::qWait(DesignSpaceView::kLiveRestMs + 200);
+    QCOMPARE(spy.count(), 2);
+    QVERIFY(!view_->isRunning());
+}
+
+void TstDesignSpaceView::liveMapFollowsPlantTrajectoryAndLimits() {
+    setSmallGrid(5, 2.0);
+    QSignalSpy spy(view_.get(), &DesignSpaceView::studyFinished);
+    view_->liveBox()->setChecked(true);
+    QVERIFY(nextFinished(spy, 0) == Kind::Preview);
+    QVERIFY(nextFinished(spy, 1) == Kind::Full);
+    int seen = 2;
+    const auto expectRestudy = [&](const char* what) {
+        QVERIFY2(view_->isRunning() && view_->runningKind() == Kind::Preview, what);
+        QVERIFY2(nextFinished(spy, seen) == Kind::Preview, what);
+        QVERIFY2(nextFinished(spy, seen + 1) == Kind::Full, what);
+        seen += 2;
+    };
+    ThirdOrderPlant plant = session_->session().axes[0].gt.plant;
+    plant.k0 *= 1.5;
+    session_->setPlant(0, plant);
+    expectRestudy("plant");
+    QVERIFY(view_->studiedProblem()->plant == plant);
+    TrajectorySettings t = session_->session().trajectory;
+    t.tfSeconds = 60.0;
+    session_->setTrajectory(t);
+    expectRestudy("trajectory");
+    QCOMPARE(view_->studiedProblem()->move->endSeconds, 60.0);
+    session_->setUmax(3.0);
+    expectRestudy("actuator limit");
+    QCOMPARE(view_->studiedProblem()->spec.umaxVolts, 3.0);
+    Specification spec = session_->session().spec;
+    spec.maxSettleTimeSeconds = 50.0; // the run lasts tf + 2 x it
+    session_->setSpecification(spec);
+    expectRestudy("settle limit");
+    QCOMPARE(view_->studiedProblem()->reference.size(), std::size_t(std::floor((60.0 + 100.0) / 0.01 + 1e-9)) + 1);
+    view_->wnCountBox()->setValue(4); // a new grid
+    expectRestudy("grid");
+    QCOMPARE(view_->result()->wnValues.size(), std::size_t(4));
+    // Undo brings the earlier settings back: the map follows too.
+    session_->undoStack()->undo();
+    expectRestudy("undo");
+    QCOMPARE(view_->studiedProblem()->spec.maxSettleTimeSeconds, 100.0);
+}
+
+void TstDesignSpaceView::liveMapIgnoresTheDesignAndJudgesAgain() {
+    setSmallGrid(5, 2.0);
+    QSignalSpy spy(view_.get(), &DesignSpaceView::studyFinished);
+    view_->liveBox()->setChecked(true);
+    QVERIFY(nextFinished(spy, 0) == Kind::Preview);
+    QVERIFY(nextFinished(spy, 1) == Kind::Full);
+    // wn and kp (the sliders) only move the marker: no study starts.
+    session_->setOmegaN(0, 3.0);
+    session_->setKp(0, 50.0);
+    QVERIFY(!view_->isRunning());
+    XYT_COMPARE_NEAR(view_->plot()->currentMarker()->data()->at(0)->key, 3.0, 0.0, 0.0);
+    // A limit the runs do not depend on is judged again at once, without a study.
+    Specification spec = session_->session().spec;
+    spec.maxOvershootPct = 50.0;
+    session_->setSpecification(spec);
+    QVERIFY(!view_->isRunning());
+    QCOMPARE(view_->studiedProblem()->spec.maxOvershootPct, 50.0);
+    QTest::qWait(DesignSpaceView::kLiveRestMs + 200);
+    QCOMPARE(spy.count(), 2);
+}
+
+void TstDesignSpaceView::liveOffOrHiddenComputesNothing() {
+    setSmallGrid(4, 2.0);
+    ThirdOrderPlant plant = session_->session().axes[0].gt.plant;
+    plant.a1 *= 1.2;
+    session_->setPlant(0, plant); // live off (init): nothing
+    QVERIFY(!view_->isRunning());
+    QVERIFY(!view_->result());
+    // Hidden (another tab): live on computes nothing until shown.
+    view_->hide();
+    view_->liveBox()->setChecked(true);
+    plant.a2 *= 1.2;
+    session_->setPlant(0, plant);
+    QVERIFY(!view_->isRunning());
+    QSignalSpy spy(view_.get(), &DesignSpaceView::studyFinished);
+    view_->show();
+    QVERIFY(view_->isRunning() && view_->runningKind() == Kind::Preview);
+    QVERIFY(nextFinished(spy, 0) == Kind::Preview);
+    QVERIFY(view_->studiedProblem()->plant == plant);
+    // Turning live off during the rest stops the full study from following.
+    view_->liveBox()->setChecked(false);
+    QTest::qWait(DesignSpaceView::kLiveRestMs + 200);
+    QCOMPARE(spy.count(), 1);
+    QVERIFY(view_->resultIsPreview());
+    QVERIFY(!view_->isRunning());
+}
+
+void TstDesignSpaceView::liveMapSkipsAPolePlacementAxis() {
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    view_->liveBox()->setChecked(true);
+    QVERIFY(!view_->isRunning()); // nothing to map for pole placement
+    QVERIFY(!view_->result());
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton); // asked for: says why not
+    QVERIFY(view_->statusText().contains("pole placement"));
+    session_->setMethod(0, DesignMethod::GuilleminTruxal); // back to GT: the map follows
+    QVERIFY(view_->isRunning() && view_->runningKind() == Kind::Preview);
 }
 
 void TstDesignSpaceView::outlineEnclosesTheFeasibleCells_data() {

@@ -72,6 +72,7 @@ private slots:
     void bestIsArgminOverFeasible();
     void refinementImprovesAndStaysFeasible();
     void deterministicAcrossThreadCounts();
+    void badBatchWidthNamed();
     void progressIsMonotoneOnCallingThread();
     void cancellationStopsEarly();
     void marginsAreTheLoopsAndJudgedByTheMinima();
@@ -170,15 +171,14 @@ void TstDesignSweep::fastPathMatchesFullSimulation() {
     QCOMPARE(fast.tracking.saturated, saturates);
     QCOMPARE(full.saturated, saturates);
     QVERIFY(fast.metricsFinite);
-    // Same exact discretization, same mode decisions; only the summation order of the 4 x 4
-    // products differs (fixed-size Eigen vs loops), and that round-off (~1e-16 per step) is
-    // carried by a loop with poles near |z| = 1 over 13001 steps: 1e-9 relative is ample.
-    XYT_COMPARE_NEAR(fast.tracking.itae, full.itae, 1e-9, 0.0);
-    XYT_COMPARE_NEAR(fast.tracking.rmse, full.rmse, 1e-9, 0.0);
-    XYT_COMPARE_NEAR(fast.tracking.maxAbsError, full.maxAbsError, 1e-9, 0.0);
-    XYT_COMPARE_NEAR(fast.tracking.maxAbsErrorPct, full.maxAbsErrorPct, 1e-9, 0.0);
-    XYT_COMPARE_NEAR(fast.tracking.maxAbsU, full.maxAbsU, 1e-9, 0.0);
-    XYT_COMPARE_NEAR(fast.tracking.saturatedTimeSeconds, full.saturatedTimeSeconds, 1e-12, 0.0);
+    // The batched kernel does per design what simulateLoop and trackingMetrics do, in the same
+    // order (tracking_batch.h): equal bit for bit.
+    QCOMPARE(bits(fast.tracking.itae), bits(full.itae));
+    QCOMPARE(bits(fast.tracking.rmse), bits(full.rmse));
+    QCOMPARE(bits(fast.tracking.maxAbsError), bits(full.maxAbsError));
+    QCOMPARE(bits(fast.tracking.maxAbsErrorPct), bits(full.maxAbsErrorPct));
+    QCOMPARE(bits(fast.tracking.maxAbsU), bits(full.maxAbsU));
+    QCOMPARE(bits(fast.tracking.saturatedTimeSeconds), bits(full.saturatedTimeSeconds));
     QCOMPARE(fast.step.stable, step.stable);
     if (stable) {
         XYT_COMPARE_NEAR(fast.step.settlingTimeSeconds, step.settlingTimeSeconds, 1e-12, 0.0);
@@ -341,12 +341,14 @@ void TstDesignSweep::deterministicAcrossThreadCounts() {
     const DesignProblem problem = lowerBaseCubic(20.0, 1.0);
     const SweepAxis wn = logAxis(0.3, 30.0, 11), kp = logAxis(2.0, 3000.0, 11);
     std::vector<DesignSweepResult> runs;
-    for (int threads : {1, 2, 3}) {
-        SweepOptions o;
-        o.threads = threads;
-        runs.push_back(sweepDesignSpace(problem, wn, kp, o));
-        QCOMPARE(runs.back().threadsUsed, threads);
-    }
+    for (int threads : {1, 2, 3})
+        for (int width : {1, 4, 8}) {
+            SweepOptions o;
+            o.threads = threads;
+            o.batchWidth = width;
+            runs.push_back(sweepDesignSpace(problem, wn, kp, o));
+            QCOMPARE(runs.back().threadsUsed, threads);
+        }
     const DesignSweepResult& a = runs[0];
     int saturated = 0, unstable = 0;
     for (const DesignPoint& p : a.points) {
@@ -362,6 +364,25 @@ void TstDesignSweep::deterministicAcrossThreadCounts() {
         QCOMPARE(b.bestIndex, a.bestIndex);
         QVERIFY(a.refined && b.refined);
         QCOMPARE(fingerprint(b.refined->point), fingerprint(a.refined->point));
+    }
+}
+
+void TstDesignSweep::badBatchWidthNamed() {
+    SweepOptions o;
+    o.batchWidth = 3;
+    try {
+        sweepDesignSpace(lowerBaseCubic(10.0), logAxis(1.0, 2.0, 2), logAxis(10.0, 20.0, 2), o);
+        QFAIL("a batch width of 3 was accepted");
+    } catch (const InvalidInput& e) {
+        QCOMPARE(e.field(), std::string("batch_width"));
+    }
+    DesignProblem p = lowerBaseCubic(10.0);
+    p.stepSamples = 99; // stepCharacteristics needs at least 100
+    try {
+        DesignEvaluator{p};
+        QFAIL("99 step samples were accepted");
+    } catch (const InvalidInput& e) {
+        QCOMPARE(e.field(), std::string("step_samples"));
     }
 }
 

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/session/session.h"
+#include "core/study/design_sweep.h"
+
+#include <cstddef>
+
+namespace xyt {
+
+/// How finely the design-space study of a session is computed.
+struct StudyFidelity {
+    /// At most this many samples per run: a longer run is sampled at duration / (maxSamples - 1)
+    /// instead of the session's dt (0: always the session's dt).
+    std::size_t maxSamples = 0;
+    int stepSamples = 500; ///< DesignProblem::stepSamples
+};
+
+/**
+ * The live map's preview (issue 18): 2,000 samples per run and 100 per step-scan span. The loop
+ * is discretized exactly at any step (FOH on a reference linear between its samples), so the
+ * runs stay exact at their samples for the piecewise-linear reference through them; what a
+ * coarse step loses is what happens between samples (a peak of |e|, the instant a mode
+ * switches or the error enters the window), which the full study, run when the inputs rest,
+ * restores. At 2,000 samples a 50 x 50 preview costs about 55 us per design (xytune-bench
+ * design_space_live_50x50).
+ */
+inline constexpr StudyFidelity kLivePreviewFidelity{2000, 100};
+
+/**
+ * The design problem of axis @p axis of @p session, as the design-space view studies it: the
+ * axis's plant and model unit, the session's trajectory for that axis sampled at its dt (or
+ * coarser, see StudyFidelity), its specification with umax as the actuator limit. A cubic with
+ * the automatic duration runs tf + 2 x the allowed settle time (moveSweepDurationSeconds) and
+ * is judged on its move and settle.
+ * @throws InvalidInput "axis" when out of range, "method" when the axis is not Guillemin-Truxal,
+ *         and from the trajectory and the specification.
+ */
+DesignProblem sessionDesignProblem(const Session& session, int axis, const StudyFidelity& fidelity = {});
+
+} // namespace xyt
