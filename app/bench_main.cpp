@@ -290,6 +290,12 @@ int main(int argc, char* argv[]) {
                     sink = sink + xyt::sweepDesignSpace(live, wn50, kp50, o).feasibleCount;
                 }, 10, 1.0);
             }
+            // On one thread: the CPU time it costs, which a loaded machine hardly changes.
+            o.batchWidth = 8;
+            o.threads = 1;
+            benchmark(filter, "design_space_live_50x50_1thread", [&] {
+                sink = sink + xyt::sweepDesignSpace(live, wn50, kp50, o).feasibleCount;
+            }, 10, 1.0);
         }
         // The same with the overshoot limit at 1 %, so that refinement runs too.
         problem.spec.maxOvershootPct = 1.0;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <vector>
 
 namespace xyt {
 
@@ -123,10 +124,54 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
     Vector gamma(n), x = Vector::Zero(n), next(n), xOutside(n), xPrev = Vector::Zero(n),
         xPeak = Vector::Zero(n), xPeakPrev = Vector::Zero(n);
     double dtPrev = 0.0, dtPeak = 0.0, dtPeakPrev = 0.0;
+    // The step matrices of every span, kept for the interpolation at the peak and at the last
+    // exit from the band (which used to discretize again).
+    std::vector<Matrix> spanPhi;
+    std::vector<Vector> spanGamma;
+    std::vector<double> spanDt;
+    spanPhi.reserve(64);
+    spanGamma.reserve(64);
+    spanDt.reserve(64);
     auto discretize = [&](double dt) {
         const StateSpace d = discretizeZoh(ss, dt);
         phi = d.a;
         gamma = d.b.col(0);
+    };
+    // From the third span on, each step is 4 times the last: Phi(4h) = Phi(h)^4 and, with
+    // Gamma(2h) = Gamma(h) + Phi(h) Gamma(h), Gamma(4h) by the same doubling once more. Two
+    // squarings instead of a matrix exponential per span (exp itself scales and squares, so
+    // the round-off is of the same kind: a few ulps per span).
+    auto quadruple = [&] {
+        for (int twice = 0; twice < 2; ++twice) {
+            next.noalias() = phi * gamma;
+            gamma += next;
+            phi = (phi * phi).eval();
+        }
+    };
+    // The second span's step is 3 times the first: Phi(3h) = Phi(h)^3 and Gamma(3h) = Gamma(h)
+    // + Phi(h) Gamma(2h). So one matrix exponential serves the whole scan.
+    auto triple = [&] {
+        const Vector g1 = gamma;
+        const Matrix p1 = phi;
+        next.noalias() = p1 * g1;
+        gamma = g1 + next;         // Gamma(2h)
+        next.noalias() = p1 * gamma;
+        gamma = g1 + next;         // Gamma(3h) = Gamma(h) + Phi(h) Gamma(2h)
+        phi = (p1 * p1 * p1).eval();
+    };
+    auto keepSpan = [&](double dt) {
+        spanPhi.push_back(phi);
+        spanGamma.push_back(gamma);
+        spanDt.push_back(dt);
+    };
+    auto restore = [&](double dt) { // the matrices of the span stepped with dt
+        for (std::size_t i = 0; i < spanDt.size(); ++i)
+            if (spanDt[i] == dt) {
+                phi = spanPhi[i];
+                gamma = spanGamma[i];
+                return;
+            }
+        discretize(dt); // not reached: every dt recorded is a span's
     };
     auto output = [&](const Vector& state) { return direct + c.dot(state); };
     auto slope = [&](const Vector& state) { return c.dot(a * state + b); }; // y' = C (A x + B)
@@ -137,7 +182,8 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
     double dt = firstSpan / samples;
     double t = 0.0;
     discretize(dt);
-    for (;;) {
+    keepSpan(dt);
+    for (int span = 1;; ++span) {
         for (int k = 0; k < samples; ++k) {
             const double yk = output(x);
             if (yk > scan.peak) {
@@ -163,9 +209,16 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
         scan.outsideAtEnd = std::abs(output(x) - finalValue) > bandAbs;
         if (spanEnd >= longestHorizon || (spanEnd >= horizon && !scan.outsideAtEnd))
             break;
-        dt = 3.0 * spanEnd / samples; // the next span quadruples the time reached
+        // The next span quadruples the time reached: its step is 3 times the first span's,
+        // then 4 times the previous one's.
+        const double nextDt = 3.0 * spanEnd / samples;
         spanEnd *= 4.0;
-        discretize(dt);
+        if (span == 1)
+            triple();
+        else
+            quadruple();
+        dt = nextDt;
+        keepSpan(dt);
     }
     const double yEnd = output(x);
     if (yEnd > scan.peak) {
@@ -177,7 +230,7 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
         // The true peak lies within a step of the largest sample: maximize the cubic Hermite
         // interpolants on both neighbouring steps (exact values and slopes at their ends, so
         // the error is O(dt^4) instead of the O(dt^2) of taking the sample).
-        discretize(dtPeak);
+        restore(dtPeak);
         next.noalias() = phi * xPeak;
         next += gamma;
         const double yp = output(xPeak), sp = slope(xPeak);
@@ -194,7 +247,7 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
         }
     }
     if (scan.tOutside >= 0.0 && !scan.outsideAtEnd) {
-        discretize(scan.dtOutside);
+        restore(scan.dtOutside);
         next.noalias() = phi * xOutside;
         next += gamma;
         scan.yAfter = output(next);
