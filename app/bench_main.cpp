@@ -273,7 +273,7 @@ int main(int argc, char* argv[]) {
                    "all threads / (reference loop over the designs / 2), target 1.5");
         printRatio("sweep_100x100_thread_speedup", sweepUs[1], sweepUs[0], "1 thread / all threads");
         // Issue 18, the live case: the workbench's preview of the default session (lower base,
-        // cubic 600 mm in 130 s run to tf + 2 x 100 s, 2,000 samples, 100 per step-scan span),
+        // cubic 600 mm in 130 s run to tf + 2 x 100 s, 1,500 samples, 100 per step-scan span),
         // 50 x 50 designs over the view's default ranges, all threads, no refinement. Target
         // under 100 ms on an idle machine.
         {

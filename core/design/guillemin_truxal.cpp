@@ -4,6 +4,7 @@
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt {
@@ -56,7 +57,9 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     d.openLoop = series(d.controller, plant.transferFunction());
     d.closedLoop = feedback(d.openLoop);
     d.closedLoopPoles = d.closedLoop.poles();
-    d.stable = d.closedLoop.isStable();
+    // TransferFunction::isStable on the poles just found (not finding them again).
+    d.stable = std::all_of(d.closedLoopPoles.begin(), d.closedLoopPoles.end(),
+                           [](std::complex<double> p) { return isStableRoot(p, 0.0); });
     return d;
 }
 

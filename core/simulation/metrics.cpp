@@ -263,12 +263,19 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, doub
                                         int samples) {
     if (closedLoop.isDiscrete() || !closedLoop.isProper())
         throw InvalidInput("system", "must be a continuous, proper transfer function");
+    return stepCharacteristics(closedLoop, closedLoop.poles(), band, samples);
+}
+
+StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop,
+                                        const std::vector<std::complex<double>>& poles, double band,
+                                        int samples) {
+    if (closedLoop.isDiscrete() || !closedLoop.isProper())
+        throw InvalidInput("system", "must be a continuous, proper transfer function");
     if (!(band > 0.0 && band < 1.0))
         throw InvalidInput("band", "must be between 0 and 1");
     if (samples < 100)
         throw InvalidInput("samples", "must be at least 100");
     StepCharacteristics out;
-    const auto poles = closedLoop.poles();
     // Same test as TransferFunction::isStable (real part < 0), on the poles already at hand.
     out.stable = std::all_of(poles.begin(), poles.end(),
                              [](const std::complex<double>& p) { return p.real() < 0.0; });

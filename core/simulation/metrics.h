@@ -55,5 +55,10 @@ struct StepCharacteristics {
  */
 StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, double band = 0.02,
                                         int samples = 500);
+/// The same with the closed loop's poles already at hand (closedLoop.poles(), as a design
+/// computes them): the same result without finding them again.
+StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop,
+                                        const std::vector<std::complex<double>>& poles,
+                                        double band = 0.02, int samples = 500);
 
 } // namespace xyt

@@ -179,7 +179,7 @@ DesignPoint DesignEvaluator::finishPoint(const GtDesign& design,
     p.kp = design.kp;
     p.ki = design.ki;
     p.stable = design.stable;
-    p.step = stepCharacteristics(design.closedLoop, 0.02, problem_.stepSamples);
+    p.step = stepCharacteristics(design.closedLoop, design.closedLoopPoles, 0.02, problem_.stepSamples);
     p.metricsFinite = tracking.has_value() && stepFiguresFinite(p.step);
     if (tracking) {
         p.tracking = *tracking;

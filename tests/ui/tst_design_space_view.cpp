@@ -509,10 +509,10 @@ void TstDesignSpaceView::liveMapPreviewsThenStudiesInFull() {
     QVERIFY(view_->runningKind() == Kind::Preview);
     QVERIFY(nextFinished(spy, 0) == Kind::Preview);
     // The preview is the core's sweep of the session at the live fidelity (design_study.h):
-    // 2,000 samples over tf + 2 x the settle limit, 100 samples per step-scan span, no refinement.
+    // 1,500 samples over tf + 2 x the settle limit, 100 samples per step-scan span, no refinement.
     const Session& s = session_->session();
     const DesignProblem preview = sessionDesignProblem(s, 0, kLivePreviewFidelity);
-    QCOMPARE(view_->studiedProblem()->reference.size(), std::size_t(2000));
+    QCOMPARE(view_->studiedProblem()->reference.size(), std::size_t(1500));
     QCOMPARE(view_->studiedProblem()->dtSeconds, preview.dtSeconds);
     QCOMPARE(view_->studiedProblem()->stepSamples, 100);
     SweepOptions o;

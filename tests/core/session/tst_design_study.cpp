@@ -44,9 +44,9 @@ void TstDesignStudy::fullFidelityIsTheSessionsDt() {
 void TstDesignStudy::previewSpreadsAtMostMaxSamples() {
     Session s;
     const DesignProblem p = sessionDesignProblem(s, 0, kLivePreviewFidelity);
-    // 330 s in 2,000 samples: dt = 330 / 1999, the last sample at 330 s.
-    QCOMPARE(p.reference.size(), std::size_t(2000));
-    XYT_COMPARE_NEAR(p.dtSeconds, 330.0 / 1999.0, 1e-15, 0.0);
+    // 330 s in 1,500 samples: dt = 330 / 1499, the last sample at 330 s.
+    QCOMPARE(p.reference.size(), std::size_t(1500));
+    XYT_COMPARE_NEAR(p.dtSeconds, 330.0 / 1499.0, 1e-15, 0.0);
     QCOMPARE(p.stepSamples, 100);
     const CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
     XYT_COMPARE_NEAR(p.reference[1000], cubic.position(1000.0 * p.dtSeconds), 1e-15, 1e-12);
@@ -56,7 +56,7 @@ void TstDesignStudy::previewSpreadsAtMostMaxSamples() {
 void TstDesignStudy::shortRunKeepsTheSessionsDt() {
     Session s;
     s.trajectory.tfSeconds = 5.0;
-    s.spec.maxSettleTimeSeconds = 2.0; // 9 s at 0.01 s: 901 samples, under the preview's 2,000
+    s.spec.maxSettleTimeSeconds = 2.0; // 9 s at 0.01 s: 901 samples, under the preview's 1,500
     const DesignProblem p = sessionDesignProblem(s, 0, kLivePreviewFidelity);
     QCOMPARE(p.dtSeconds, 0.01);
     QCOMPARE(p.reference.size(), std::size_t(901));
