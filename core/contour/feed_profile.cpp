@@ -215,13 +215,17 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
     return out;
 }
 
-FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOptions& options) {
-    if (!(options.feedScale > 0.0) || !std::isfinite(options.feedScale))
+std::vector<double> programFeeds(const GcodeProgram& program, double feedScale) {
+    if (!(feedScale > 0.0) || !std::isfinite(feedScale))
         throw InvalidInput("feed_scale", "must be a finite number greater than zero");
     std::vector<double> feeds(program.segments.size());
     for (std::size_t i = 0; i < feeds.size(); ++i)
-        feeds[i] = program.segments[i].feedMmPerSec * (program.segments[i].rapid ? 1.0 : options.feedScale);
-    return planFeedProfile(program.path, feeds, options);
+        feeds[i] = program.segments[i].feedMmPerSec * (program.segments[i].rapid ? 1.0 : feedScale);
+    return feeds;
+}
+
+FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOptions& options) {
+    return planFeedProfile(program.path, programFeeds(program, options.feedScale), options);
 }
 
 } // namespace xyt

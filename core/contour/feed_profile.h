@@ -86,8 +86,11 @@ struct FeedProfile {
 FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmPerSec,
                             const FeedProfileOptions& options);
 
-/// The profile of a read program: feed moves at feedScale times their F, rapids at their rate.
-/// @throws InvalidInput "feed_scale" unless finite and > 0, and those of planFeedProfile.
+/// The feed of each segment of a read program (mm/s): feed moves at @p feedScale times their F,
+/// rapids at their rate. @throws InvalidInput "feed_scale" unless finite and > 0.
+std::vector<double> programFeeds(const GcodeProgram& program, double feedScale);
+
+/// planFeedProfile(program.path, programFeeds(program, options.feedScale), options).
 FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOptions& options);
 
 /**
