@@ -19,13 +19,6 @@
 
 namespace {
 
-void requireOneLine(const xyt::InvalidInput& e) {
-    const std::string_view message = e.what();
-    XYT_FUZZ_REQUIRE(!message.empty());
-    for (const char c : message)
-        XYT_FUZZ_REQUIRE(c != '\n' && c != '\r');
-}
-
 void checkProgram(const xyt::GcodeProgram& p, std::size_t textSize) {
     XYT_FUZZ_REQUIRE(p.path.size() > 0);
     XYT_FUZZ_REQUIRE(p.segments.size() == p.path.size());
@@ -53,7 +46,7 @@ void checkProfile(const xyt::GcodeProgram& program) {
     try {
         profile = xyt::planFeedProfile(program, options);
     } catch (const xyt::InvalidInput& e) {
-        requireOneLine(e);
+        xyt::fuzz::requireOneLine(e);
         XYT_FUZZ_REQUIRE(e.field() == "dt"); // only the sample bound may refuse a read program
         return;
     }
@@ -83,7 +76,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         program = xyt::readGcode(text);
     } catch (const xyt::InvalidInput& e) {
-        requireOneLine(e);
+        xyt::fuzz::requireOneLine(e);
         return 0;
     }
     checkProgram(program, size);
