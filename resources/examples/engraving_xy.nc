@@ -2,8 +2,10 @@
 ; SPDX-License-Identifier: GPL-3.0-or-later
 ; XY Tune example: a short engraving of the letters "XY", 15 mm tall, lower left at the
 ; origin. Z lifts and lowers the tool between strokes: the XY path ignores those lines with
-; a warning each. The Y's arms meet its stem in a 2 mm arc tangent to neither, so the
-; profile stops there. Units mm, absolute coordinates, engraving at 300 mm/min.
+; a warning each. The right arm of the Y curves onto the stem through an arc of 1.5 mm
+; radius tangent to the arm (the join turns by 0.13 degree at 3 decimals, so the profile keeps
+; its speed into it), ending on the stem at (19, 8.5). Units mm, absolute coordinates,
+; engraving at 300 mm/min.
 G17 G21 G90 G94
 G0 Z2
 ; letter X: two crossing strokes
