@@ -17,6 +17,11 @@
 #include "core/analysis/frequency_response.h"
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
+#include "core/contour/contour_metrics.h"
+#include "core/contour/feed_profile.h"
+#include "core/contour/gcode_reader.h"
+#include "core/session/contour_run.h"
+#include "core/session/session.h"
 #include "app/bench_reference_loop.h"
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
@@ -74,6 +79,55 @@ void printRatio(const char* name, double measured, double reference, const char*
 }
 
 volatile double sink = 0.0; // keeps results alive so the optimizer cannot drop the work
+
+/**
+ * A 10 000-block G-code program (issue 13): a zig-zag of 5000 vertical 1 mm lines joined by
+ * 5000 tangent half circles of 0.5 mm radius (alternately clockwise over the top and
+ * counter-clockwise under the bottom), at F3000, 3 decimals as a CAM post writes them.
+ */
+std::string zigZagProgram() {
+    std::string text = "G17 G21 G90 G94\nG1 X0 Y0 F3000\n";
+    char line[64];
+    for (int i = 0; i < 5000; ++i) {
+        const bool up = i % 2 == 0;
+        std::snprintf(line, sizeof line, "G1 X%d Y%d\n", i, up ? 1 : 0);
+        text += line;
+        std::snprintf(line, sizeof line, "G%d X%d Y%d I0.5 J0\n", up ? 2 : 3, i + 1, up ? 1 : 0);
+        text += line;
+    }
+    return text;
+}
+
+/// Issue 13: read, profile, simulate both axes at 1 ms and the contour error of that program
+/// (target under 200 ms), and each stage alone.
+void gcodeContour(const char* filter) {
+    if (filter && std::string("gcode_contour_10000_blocks").find(filter) == std::string::npos)
+        return;
+    const std::string text = zigZagProgram();
+    const xyt::Session session = xyt::Session::paperDefault();
+    xyt::ContourRunOptions options;
+    options.profile.maxAccelMmPerS2 = 2000.0;
+    options.profile.dtSeconds = 0.001;
+    const xyt::GcodeProgram program = xyt::readGcode(text);
+    const xyt::ContourRun once = xyt::runProgramContour(session, program, options);
+    std::printf("gcode_contour_10000_blocks: %zu segments, %.0f mm, %.1f s, %zu samples per axis\n",
+                program.path.size(), program.path.length(), once.trace.profile.totalTimeSeconds,
+                once.trace.profile.t.size());
+    benchmark(filter, "gcode_contour_10000_blocks", [&] {
+        const auto run = xyt::runProgramContour(session, xyt::readGcode(text), options);
+        sink = sink + run.contour.rms;
+    }, 5, 0.0);
+    benchmark(filter, "gcode_contour_10000_blocks_read", [&] {
+        sink = sink + xyt::readGcode(text).path.length();
+    }, 5, 0.0);
+    benchmark(filter, "gcode_contour_10000_blocks_profile", [&] {
+        sink = sink + xyt::planFeedProfile(program, options.profile).totalTimeSeconds;
+    }, 5, 0.0);
+    benchmark(filter, "gcode_contour_10000_blocks_contour_error", [&] {
+        const auto& t = once.trace;
+        sink = sink + xyt::contourError(program.path, t.profile.t, t.x, t.y).rms;
+    }, 5, 0.0);
+}
 
 /// The workbench's reaction to a slider drag: one value change of the omega_n slider (the
 /// session redesigns, re-simulates and updates every view through its signals; each visible
@@ -317,6 +371,7 @@ int main(int argc, char* argv[]) {
             sink = sink + run.rmseWithFf;
         });
     }
+    gcodeContour(filter);
     guiSliderToRepaint(filter, argc, argv);
     return 0;
 }

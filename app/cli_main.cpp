@@ -76,7 +76,24 @@ constexpr CommandHelp kPpHelp[] = {
               "            metrics {rmse_without_ff, rmse_with_ff, improvement_pct}\n"},
     {"contour", "  contour   both axes on the circle: [--preset paper-zpetc] [--radius 30 --omega 0.1]\n"
                 "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
-                "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"},
+                "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"
+                "  contour --gcode FILE [--feed-scale 1] [--max-accel 100 (mm/s^2)] [--max-jerk 0 (mm/s^3,\n"
+                "            0: trapezoidal)] [--dt 0.001] [--rapid-feed 3000 (mm/min)] [--corner-angle 1\n"
+                "            (deg)] [--corner-window 1 (mm)] [--method guillemin-truxal|pole-placement-zpetc]\n"
+                "            [--csv FILE]  a G-code program (G0-G3, G17, G20/G21, G90/G91, F, N; Z, M, S, T\n"
+                "            ignored with a warning) run by the default session's axes, both starting at\n"
+                "            rest at the origin: paper 000's Guillemin-Truxal PI (the default; x the lower\n"
+                "            base, wn 2, kp 30; y the upper base, wn 1, kp 30; +-2.5 V: slow loops, built\n"
+                "            for the paper's 130 s move) or paper 001's pole placement + ZPETC (x-axis and\n"
+                "            y-axis models, Ts 70 ms, linear, |u| > 2.5 V flagged). The feed profile stops\n"
+                "            at joins turning more than --corner-angle and keeps speed through tangent\n"
+                "            ones, v^2/R <= --max-accel on arcs. JSON: profile, x_axis, y_axis (tracking),\n"
+                "            contour_error {max, rms, max_at, corners} (signed, + left of travel, mm; G0\n"
+                "            rapids left out), iso230_4 (a single full circle: the circle alone from rest,\n"
+                "            both ways: G, F_max, F_min, H, G_bidirectional, reversal_spikes; else null),\n"
+                "            warnings.\n"
+                "            CSV: t,s,v,x_ref,y_ref,x,y,contour_error. A program error names the file,\n"
+                "            line and column (--gcode part.nc: line 12: unknown word G5 at column 4)\n"},
 };
 
 constexpr CommandHelp kFrequencyHelp[] = {

@@ -2,6 +2,7 @@
 // xytune-cli pp | zpetc | contour: discrete pole placement and ZPETC of paper 001.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
+#include "app/cli_gcode_contour.h"
 #include "app/cli_json.h"
 
 #include "core/model/coefficient_parser.h"
@@ -229,6 +230,8 @@ int runZpetc(const QStringList& argv) {
 
 int runContour(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
+    if (args.has("gcode"))
+        return runGcodeContour(args);
     args.allowOnly({"preset", "radius", "omega", "duration", "start", "margin"});
     const QString preset = args.text("preset", "paper-zpetc");
     if (preset != "paper-zpetc")

@@ -77,8 +77,8 @@ std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double
     return times;
 }
 
-/// The Guillemin-Truxal design of an axis, a refusal of wn or kp named by the session path
-/// ("axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf ... the reference model").
+} // namespace
+
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     try {
         return designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
@@ -88,6 +88,8 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
         throw;
     }
 }
+
+namespace {
 
 void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 AxisEvaluation& out) {
@@ -105,6 +107,8 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     if (!out.gt->stable)
         out.warnings.push_back("the closed loop is unstable");
 }
+
+} // namespace
 
 SimulationResult discreteRun(const std::vector<double>& t, const std::vector<double>& r,
                              const DiscreteRun& run, double umaxVolts, double ts) {
@@ -125,6 +129,8 @@ SimulationResult discreteRun(const std::vector<double>& t, const std::vector<dou
     out.umaxVolts = umaxVolts;
     return out;
 }
+
+namespace {
 
 /// Step figures of a discrete closed loop from its exact sampled step response.
 StepCharacteristics discreteStep(const PolePlacementDesign& loop) {

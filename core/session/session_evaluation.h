@@ -3,6 +3,7 @@
 
 #include "core/analysis/stability_margins.h"
 #include "core/simulation/contour_error.h"
+#include "core/simulation/discrete_simulation.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
@@ -104,6 +105,16 @@ RunDuration chooseRunDuration(const Session& session);
 /// with step.stable false.
 AxisEvaluation evaluateAxis(const Session& session, int axisIndex);
 SessionEvaluation evaluateSession(const Session& session);
+
+/// The Guillemin-Truxal design of an axis, a refusal of wn or kp named by the session path
+/// ("axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf ... the reference model").
+GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex);
+
+/// A discrete run sampled at @p t (k Ts) as a SimulationResult: r (the first t.size() samples
+/// of @p r), y, e = r - y, u (zero-padded when the run has none), and `clipped` where
+/// |u| > umax (the discrete loops are simulated without saturation: flagged, not applied).
+SimulationResult discreteRun(const std::vector<double>& t, const std::vector<double>& r,
+                             const DiscreteRun& run, double umaxVolts, double ts);
 
 /// y sampled at the times @p t by linear interpolation in (ts, ys) (held at the ends), so that
 /// axes with different sample times can be paired for the XY contour.

@@ -13,24 +13,13 @@
 #include <string>
 #include <string_view>
 
-namespace {
-
-void requireOneLine(const xyt::InvalidInput& e) {
-    const std::string_view message = e.what();
-    XYT_FUZZ_REQUIRE(!message.empty());
-    for (const char c : message)
-        XYT_FUZZ_REQUIRE(c != '\n' && c != '\r');
-}
-
-} // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     try {
         const double v = xyt::parseNumber(text, "--wn");
         XYT_FUZZ_REQUIRE_FINITE(v);
     } catch (const xyt::InvalidInput& e) {
-        requireOneLine(e);
+        xyt::fuzz::requireOneLine(e);
     }
     try {
         const std::vector<double> values = xyt::parseCoefficientList(text, "--num");
@@ -44,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         XYT_FUZZ_REQUIRE(xyt::parseCoefficientList(printed, "--num") == values);
     } catch (const xyt::InvalidInput& e) {
-        requireOneLine(e);
+        xyt::fuzz::requireOneLine(e);
     }
     return 0;
 }

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <limits>
 #include <vector>
 
@@ -128,3 +129,16 @@ template <class T> bool finite(const std::vector<T>& values) {
             std::abort();                                                                          \
         }                                                                                          \
     } while (false)
+
+namespace xyt::fuzz {
+
+/// Aborts unless the message of a refusal is one non-empty line (the CLI prints it as its
+/// single stderr line).
+inline void requireOneLine(const std::exception& e) {
+    const char* message = e.what();
+    XYT_FUZZ_REQUIRE(message[0] != '\0');
+    for (const char* c = message; *c; ++c)
+        XYT_FUZZ_REQUIRE(*c != '\n' && *c != '\r');
+}
+
+} // namespace xyt::fuzz

@@ -1,0 +1,430 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/contour/gcode_reader.h"
+
+#include "core/model/errors.h"
+#include "core/model/number_format.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+namespace xyt {
+
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+/// A number longer than this is refused (no G-code writer needs more digits than a double has).
+constexpr std::size_t kMaxNumberChars = 40;
+
+/// One word of a line: its letter (upper case), value, the text as written, 1-based column.
+struct Word {
+    char letter = 0;
+    double value = 0.0;
+    std::string text;
+    std::size_t column = 0;
+};
+
+/// "at column 4"
+std::string at(std::size_t column) { return "at column " + std::to_string(column); }
+
+/// A byte as it may be shown in a one-line message: printable ASCII as is, else \xNN.
+std::string shown(char c) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f)
+        return std::string(1, c);
+    const char* hex = "0123456789abcdef";
+    return std::string("\\x") + hex[u >> 4] + hex[u & 15];
+}
+
+bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+/// Splits one line into words, dropping comments. @throws InvalidInput @p field.
+std::vector<Word> words(std::string_view line, const std::string& field) {
+    std::vector<Word> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        const char c = line[i];
+        if (isSpace(c)) {
+            ++i;
+        } else if (c == ';') {
+            break;
+        } else if (c == '(') {
+            const std::size_t close = line.find(')', i + 1);
+            if (close == std::string_view::npos)
+                throw InvalidInput(field, "comment opened " + at(i + 1) + " is not closed");
+            i = close + 1;
+        } else if (isLetter(c)) {
+            Word w;
+            w.letter = static_cast<char>(c >= 'a' ? c - 'a' + 'A' : c);
+            w.column = i + 1;
+            ++i;
+            while (i < line.size() && isSpace(line[i]))
+                ++i;
+            std::string number;
+            if (i < line.size() && (line[i] == '+' || line[i] == '-'))
+                number += line[i++];
+            bool digits = false, point = false;
+            while (i < line.size() && (isDigit(line[i]) || (line[i] == '.' && !point))) {
+                digits = digits || isDigit(line[i]);
+                point = point || line[i] == '.';
+                number += line[i++];
+                if (number.size() > kMaxNumberChars)
+                    throw InvalidInput(field, std::string("the number of word ") + w.letter + " " +
+                                                  at(w.column) + " is longer than " +
+                                                  std::to_string(kMaxNumberChars) + " characters");
+            }
+            if (!digits)
+                throw InvalidInput(field, std::string("word ") + w.letter + " " + at(w.column) +
+                                              " has no number");
+            w.text = std::string(1, w.letter) + number;
+            const char* begin = number.data() + (number[0] == '+' ? 1 : 0);
+            const auto [end, error] =
+                std::from_chars(begin, number.data() + number.size(), w.value, std::chars_format::fixed);
+            if (error != std::errc() || end != number.data() + number.size() || !std::isfinite(w.value))
+                throw InvalidInput(field, "the number of word " + w.text + " " + at(w.column) +
+                                              " is not a representable number");
+            out.push_back(std::move(w));
+        } else {
+            throw InvalidInput(field, "unexpected character '" + shown(c) + "' " + at(i + 1));
+        }
+    }
+    return out;
+}
+
+/// A G or M code's number when it is a whole number 0..999, else -1 (an unknown word).
+int code(const Word& w) {
+    if (w.value < 0.0 || w.value > 999.0 || w.value != std::floor(w.value))
+        return -1;
+    return static_cast<int>(w.value);
+}
+
+enum class Motion { None, Rapid, Line, Clockwise, CounterClockwise };
+
+/// The state a program carries from line to line (the modal groups of RS274/NGC).
+struct Modal {
+    Motion motion = Motion::None;
+    bool inch = false;
+    bool incremental = false;
+    std::optional<double> feed; ///< in units per minute, as programmed
+    Point2 position;            ///< mm
+};
+
+class Reader {
+public:
+    explicit Reader(const GcodeReadOptions& options) : options_(options) {
+        modal_.position = options.start;
+    }
+
+    void line(std::string_view text, std::size_t number);
+    GcodeProgram finish();
+
+private:
+    void warn(const std::string& message);
+    double unit() const { return modal_.inch ? kMmPerInch : 1.0; }
+    /// A length word in mm, refused beyond kMaxGcodeCoordinateMm.
+    double millimetres(const Word& w) const;
+    void addSegment(const PathSegment& segment, bool rapid);
+    void arc(const Point2& target, bool clockwise, const Word* i, const Word* j, const Word* r,
+             const Word& motionWord);
+
+    GcodeReadOptions options_;
+    Modal modal_;
+    std::string field_;
+    std::size_t lineNumber_ = 0;
+    long blockNumber_ = -1;
+    std::vector<PathSegment> segments_;
+    std::vector<GcodeSegmentInfo> info_;
+    std::vector<std::string> warnings_;
+    std::size_t droppedWarnings_ = 0;
+    std::size_t lines_ = 0;
+};
+
+void Reader::warn(const std::string& message) {
+    if (warnings_.size() < kMaxGcodeWarnings)
+        warnings_.push_back(field_ + ": " + message);
+    else
+        ++droppedWarnings_;
+}
+
+double Reader::millimetres(const Word& w) const {
+    const double mm = w.value * unit();
+    if (!(std::abs(mm) <= kMaxGcodeCoordinateMm))
+        throw InvalidInput(field_, w.text + " " + at(w.column) + " is beyond " +
+                                       formatNumber(kMaxGcodeCoordinateMm) + " mm");
+    return mm;
+}
+
+void Reader::addSegment(const PathSegment& segment, bool rapid) {
+    GcodeSegmentInfo info;
+    info.rapid = rapid;
+    info.feedMmPerSec = rapid ? options_.rapidFeedMmPerMin / 60.0 : *modal_.feed * unit() / 60.0;
+    info.line = lineNumber_;
+    info.blockNumber = blockNumber_;
+    segments_.push_back(segment);
+    info_.push_back(info);
+}
+
+void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word* j, const Word* r,
+                 const Word& motionWord) {
+    const Point2 start = modal_.position;
+    const std::string name = motionWord.text;
+    if (!i && !j && !r)
+        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
+                                       " needs I/J (its centre) or R (its radius)");
+    if (r && (i || j))
+        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
+                                       " has both R and I/J; give one of them");
+    const double chord = norm(target - start);
+    Point2 centre;
+    if (r) {
+        if (chord == 0.0)
+            throw InvalidInput(field_, "a full circle needs I and J: R " + at(r->column) +
+                                           " leaves its centre undefined");
+        const double radius = std::abs(millimetres(*r));
+        if (radius == 0.0)
+            throw InvalidInput(field_, r->text + " " + at(r->column) + " is a zero radius");
+        const double half = chord / 2.0;
+        const double tolerance = arcEndTolerance(radius, modal_.inch);
+        if (half > radius + tolerance)
+            throw InvalidInput(field_, r->text + " " + at(r->column) + " is smaller than half the chord (" +
+                                           formatNumber(half) + " mm) to the end point");
+        const double h = std::sqrt(std::max(radius * radius - half * half, 0.0));
+        const Point2 u = (1.0 / chord) * (target - start);
+        const Point2 left{-u.y, u.x};
+        // The centre of the shorter arc lies left of the chord for G3, right for G2; R < 0 asks
+        // for the longer arc, whose centre is on the other side.
+        const double side = (clockwise ? -1.0 : 1.0) * (r->value < 0.0 ? -1.0 : 1.0);
+        centre = 0.5 * (start + target) + (side * h) * left;
+    } else {
+        centre = start + Point2{i ? millimetres(*i) : 0.0, j ? millimetres(*j) : 0.0};
+    }
+    const double radius = norm(start - centre);
+    if (radius == 0.0)
+        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
+                                       " has a zero radius (I and J are 0)");
+    const double endRadius = norm(target - centre);
+    const double tolerance = arcEndTolerance(radius, modal_.inch);
+    if (std::abs(endRadius - radius) > tolerance)
+        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
+                                       ": the end point is off the circle (radius " +
+                                       formatNumber(endRadius) + " mm at the end, " + formatNumber(radius) +
+                                       " mm at the start; tolerance " + formatNumber(tolerance) + " mm)");
+    const double a0 = std::atan2(start.y - centre.y, start.x - centre.x);
+    const double a1 = std::atan2(target.y - centre.y, target.x - centre.x);
+    double sweep = std::fmod(clockwise ? a0 - a1 : a1 - a0, kTwoPi);
+    if (sweep < 0.0)
+        sweep += kTwoPi;
+    // End equal to the start (or on the same ray within the tolerance): a full circle.
+    if (chord == 0.0 || sweep == 0.0)
+        sweep = kTwoPi;
+    addSegment(PathSegment::arc(centre, radius, a0, clockwise ? -sweep : sweep), false);
+}
+
+void Reader::line(std::string_view text, std::size_t number) {
+    lineNumber_ = number;
+    lines_ = number;
+    field_ = "line " + std::to_string(number);
+    blockNumber_ = -1;
+    {
+        std::string_view trimmed = text;
+        while (!trimmed.empty() && isSpace(trimmed.front()))
+            trimmed.remove_prefix(1);
+        while (!trimmed.empty() && isSpace(trimmed.back()))
+            trimmed.remove_suffix(1);
+        if (trimmed == "%")
+            return;
+    }
+    const std::vector<Word> all = words(text, field_);
+    const Word* motionWord = nullptr;
+    std::optional<Motion> motion;
+    // Axis and parameter words, at most once each.
+    const Word* x = nullptr;
+    const Word* y = nullptr;
+    const Word* i = nullptr;
+    const Word* j = nullptr;
+    const Word* r = nullptr;
+    const Word* f = nullptr;
+    const Word* n = nullptr;
+    bool unitsSeen = false, distanceSeen = false;
+    for (const Word& w : all) {
+        const Word** slot = nullptr;
+        switch (w.letter) {
+        case 'X': slot = &x; break;
+        case 'Y': slot = &y; break;
+        case 'I': slot = &i; break;
+        case 'J': slot = &j; break;
+        case 'R': slot = &r; break;
+        case 'F': slot = &f; break;
+        case 'N': slot = &n; break;
+        default: break;
+        }
+        if (slot) {
+            if (*slot)
+                throw InvalidInput(field_, std::string("word ") + w.letter + " is given twice (" + w.text +
+                                               " " + at(w.column) + ")");
+            *slot = &w;
+            continue;
+        }
+        const int c = code(w);
+        if (w.letter == 'G') {
+            if (c >= 0 && c <= 3) {
+                if (motionWord)
+                    throw InvalidInput(field_, "two motion codes " + motionWord->text + " and " + w.text +
+                                                   " on one line (" + at(w.column) + ")");
+                motionWord = &w;
+                motion = c == 0 ? Motion::Rapid : c == 1 ? Motion::Line
+                                            : c == 2 ? Motion::Clockwise
+                                                     : Motion::CounterClockwise;
+            } else if (c == 20 || c == 21) {
+                if (unitsSeen)
+                    throw InvalidInput(field_, "two unit codes on one line (" + w.text + " " + at(w.column) + ")");
+                unitsSeen = true;
+                modal_.inch = c == 20;
+            } else if (c == 90 || c == 91) {
+                if (distanceSeen)
+                    throw InvalidInput(field_, "two distance modes on one line (" + w.text + " " +
+                                                   at(w.column) + ")");
+                distanceSeen = true;
+                modal_.incremental = c == 91;
+            } else if (c == 18 || c == 19) {
+                throw InvalidInput(field_, "only the XY plane (G17) is supported, not " + w.text + " " +
+                                               at(w.column));
+            } else if (c != 17 && c != 94) {
+                throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
+            }
+        } else if (w.letter == 'M') {
+            static constexpr int kIgnored[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30};
+            if (std::find(std::begin(kIgnored), std::end(kIgnored), c) == std::end(kIgnored))
+                throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
+            warn(w.text + " ignored (not an XY motion)");
+        } else if (w.letter == 'Z') {
+            warn(w.text + " ignored (the path is XY only)");
+        } else if (w.letter == 'S' || w.letter == 'T') {
+            warn(w.text + " ignored (" + (w.letter == 'S' ? "spindle speed" : "tool") + ")");
+        } else {
+            throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
+        }
+    }
+    if (n) {
+        if (n->value < 0.0 || n->value != std::floor(n->value) || n->value > 1e9)
+            throw InvalidInput(field_, "block number " + n->text + " " + at(n->column) +
+                                           " must be a whole number 0..1e9");
+        blockNumber_ = static_cast<long>(n->value);
+    }
+    if (f) {
+        if (!(f->value > 0.0))
+            throw InvalidInput(field_, "feed " + f->text + " " + at(f->column) + " must be greater than zero");
+        modal_.feed = f->value;
+    }
+    if (motion)
+        modal_.motion = *motion;
+    const bool arcWords = i || j || r;
+    const bool axisWords = x || y;
+    const bool arcMode = modal_.motion == Motion::Clockwise || modal_.motion == Motion::CounterClockwise;
+    if (arcWords && !arcMode) {
+        const Word* w = i ? i : j ? j : r;
+        throw InvalidInput(field_, w->text + " " + at(w->column) + " needs an arc (G2 or G3)");
+    }
+    if (!axisWords && !arcWords)
+        return; // modes, feed, ignored words: no motion
+    if (modal_.motion == Motion::None) {
+        const Word* w = x ? x : y;
+        throw InvalidInput(field_, w->text + " " + at(w->column) +
+                                       " has no motion mode (G0, G1, G2 or G3) before it");
+    }
+    const Word& modeWord = motionWord ? *motionWord : *(x ? x : y ? y : i ? i : j ? j : r);
+    if (modal_.motion != Motion::Rapid && !modal_.feed)
+        throw InvalidInput(field_, "feed move " + std::string(motionWord ? motionWord->text : "") +
+                                       (motionWord ? " " : "") + at(modeWord.column) +
+                                       " has no feed rate (no F programmed before it)");
+    Point2 target = modal_.position;
+    if (x)
+        target.x = modal_.incremental ? target.x + millimetres(*x) : millimetres(*x);
+    if (y)
+        target.y = modal_.incremental ? target.y + millimetres(*y) : millimetres(*y);
+    if (!(std::abs(target.x) <= kMaxGcodeCoordinateMm && std::abs(target.y) <= kMaxGcodeCoordinateMm))
+        throw InvalidInput(field_, "the incremental move " + at(modeWord.column) + " ends beyond " +
+                                       formatNumber(kMaxGcodeCoordinateMm) + " mm");
+    if (arcMode) {
+        Word named = modeWord;
+        if (!motionWord)
+            named.text = modal_.motion == Motion::Clockwise ? "G2" : "G3";
+        arc(target, modal_.motion == Motion::Clockwise, i, j, r, named);
+    } else if (!(target == modal_.position)) {
+        addSegment(PathSegment::line(modal_.position, target), modal_.motion == Motion::Rapid);
+    }
+    modal_.position = target;
+}
+
+GcodeProgram Reader::finish() {
+    if (segments_.empty())
+        throw InvalidInput("program", "has no XY motion (no G0, G1, G2 or G3 move)");
+    if (droppedWarnings_ > 0)
+        warnings_.push_back("... and " + std::to_string(droppedWarnings_) + " more warnings");
+    GcodeProgram program;
+    program.path = Path(std::move(segments_));
+    program.segments = std::move(info_);
+    program.warnings = std::move(warnings_);
+    program.lines = lines_;
+    return program;
+}
+
+} // namespace
+
+double arcEndTolerance(double radiusMm, bool inch) {
+    return std::max(inch ? 0.0002 * kMmPerInch : 0.002, 1e-6 * radiusMm);
+}
+
+GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
+    if (!(options.rapidFeedMmPerMin > 0.0) || !std::isfinite(options.rapidFeedMmPerMin))
+        throw InvalidInput("rapid_feed", "must be a finite number greater than zero");
+    if (!(std::abs(options.start.x) <= kMaxGcodeCoordinateMm &&
+          std::abs(options.start.y) <= kMaxGcodeCoordinateMm))
+        throw InvalidInput("start", "must be finite and within " + formatNumber(kMaxGcodeCoordinateMm) + " mm");
+    if (text.size() > kMaxGcodeBytes)
+        throw InvalidInput("program", "is larger than the limit of " + std::to_string(kMaxGcodeBytes) +
+                                          " bytes");
+    const std::size_t newlines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+    const bool lastLineOpen = !text.empty() && text.back() != '\n';
+    if (newlines + (lastLineOpen ? 1 : 0) > kMaxGcodeLines)
+        throw InvalidInput("program", "has more than the limit of " + std::to_string(kMaxGcodeLines) +
+                                          " lines");
+    Reader reader(options);
+    std::size_t number = 0;
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string_view::npos)
+            end = text.size();
+        reader.line(text.substr(begin, end - begin), ++number);
+        begin = end + 1;
+    }
+    return reader.finish();
+}
+
+bool GcodeProgram::isSingleFullCircle() const {
+    std::size_t feedMoves = 0;
+    bool circle = false;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        if (segments[i].rapid)
+            continue;
+        ++feedMoves;
+        const PathSegment& s = path.segments()[i];
+        circle = s.isArc() && std::abs(s.sweep()) == kTwoPi;
+    }
+    return feedMoves == 1 && circle;
+}
+
+std::size_t GcodeProgram::fullCircleSegment() const {
+    for (std::size_t i = 0; i < segments.size(); ++i)
+        if (!segments[i].rapid)
+            return i;
+    return 0;
+}
+
+} // namespace xyt

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/contour_run.h"
+
+#include "core/design/pole_placement.h"
+#include "core/design/zpetc.h"
+#include "core/model/errors.h"
+#include "core/model/number_format.h"
+#include "core/session/session_evaluation.h"
+#include "core/simulation/discrete_simulation.h"
+#include "core/simulation/metrics.h"
+#include "core/simulation/trajectory.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace xyt {
+
+namespace {
+
+std::string axisPath(int axisIndex, const std::string& field) {
+    return "axes[" + std::to_string(axisIndex) + "]." + field;
+}
+
+/// A continuous axis on the reference sampled at dt, starting at rest at its first sample.
+SimulationResult traceGt(const GtAxisSettings& gt, int axisIndex, const std::vector<double>& reference,
+                         double dtSeconds, double umaxVolts) {
+    const GtDesign design = sessionGtDesign(gt, axisIndex);
+    LoopSimulationOptions options;
+    options.dtSeconds = dtSeconds;
+    options.umaxVolts = umaxVolts;
+    options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
+    options.initialOutput = reference.front();
+    try {
+        return simulateLoop(gt.plant.transferFunction(), design.controller, reference, options);
+    } catch (const InvalidInput& e) {
+        if (e.field() == "plant" || e.field() == "initial_output")
+            throw InvalidInput(axisPath(axisIndex, "gt.plant"), e.reason());
+        throw;
+    }
+}
+
+/// A discrete axis: the reference resampled at its Ts (held at the end for the ZPETC's
+/// preview), the table at rest at the first sample (StartCondition::AtReference).
+SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vector<double>& t,
+                         const std::vector<double>& reference, double umaxVolts) {
+    PolePlacementDesign loop;
+    ZpetcDesign zpetc;
+    try {
+        requireFinite(pp.t1, "t1");
+        if (std::abs(pp.t1) >= 1.0)
+            throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
+        loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"), Polynomial::fromAscending(pp.b, "b"),
+                                   Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
+        zpetc = designZpetc(loop);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(axisPath(axisIndex, "pp." + e.field()), e.reason());
+    }
+    const double steps = std::floor(t.back() / pp.tsSeconds + 1e-9);
+    if (!(steps >= 1.0))
+        throw InvalidInput(axisPath(axisIndex, "pp.ts"), formatNumber(pp.tsSeconds) +
+                                                             " s is longer than the program's run (" +
+                                                             formatNumber(t.back()) + " s)");
+    if (steps + 1.0 > static_cast<double>(sampleLimit()))
+        throw InvalidInput(axisPath(axisIndex, "pp.ts"), "the run needs more samples than this machine holds");
+    const std::size_t n = static_cast<std::size_t>(steps) + 1;
+    std::vector<double> times(n + static_cast<std::size_t>(zpetc.previewSteps));
+    for (std::size_t k = 0; k < times.size(); ++k)
+        times[k] = static_cast<double>(k) * pp.tsSeconds;
+    const std::vector<double> r = resampleLinear(t, reference, times);
+    times.resize(n);
+    const DiscreteRun run = pp.zpetcEnabled
+                                ? simulateZpetcLoop(loop, zpetc, r, n)
+                                : simulateFeedbackLoop(loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)));
+    return discreteRun(times, r, run, umaxVolts, pp.tsSeconds);
+}
+
+/// Runs both axes of @p session along @p path at @p feeds.
+ContourTrace trace(const Session& session, const Path& path, const std::vector<double>& feeds,
+                   const ContourRunOptions& options) {
+    requirePositive(session.umaxVolts, "umax");
+    FeedProfileOptions profileOptions = options.profile;
+    profileOptions.maxSamples = std::min(profileOptions.maxSamples, sampleLimit());
+    ContourTrace out;
+    out.profile = planFeedProfile(path, feeds, profileOptions);
+    const FeedProfile& p = out.profile;
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        const std::vector<double>& reference = i == 0 ? p.x : p.y;
+        SimulationResult& run = out.axes[static_cast<std::size_t>(i)];
+        if (axis.method == DesignMethod::GuilleminTruxal) {
+            run = traceGt(axis.gt, i, reference, p.dtSeconds, session.umaxVolts);
+            (i == 0 ? out.x : out.y) = run.y;
+        } else {
+            run = tracePp(axis.pp, i, p.t, reference, session.umaxVolts);
+            (i == 0 ? out.x : out.y) = resampleLinear(run.t, run.y, p.t);
+        }
+    }
+    return out;
+}
+
+/// The traced points of the samples whose reference lies on segment @p segment.
+void pointsOnSegment(const ContourTrace& t, std::size_t segment, std::vector<double>& x, std::vector<double>& y) {
+    x.clear(), y.clear();
+    for (std::size_t k = 0; k < t.profile.segment.size(); ++k)
+        if (t.profile.segment[k] == segment) {
+            x.push_back(t.x[k]);
+            y.push_back(t.y[k]);
+        }
+}
+
+void addAxisWarnings(const ContourTrace& t, std::vector<std::string>& warnings) {
+    for (int i = 0; i < 2; ++i) {
+        const SimulationResult& run = t.axes[static_cast<std::size_t>(i)];
+        const TrackingMetrics m = trackingMetrics(run);
+        const std::string axis = i == 0 ? "x axis: " : "y axis: ";
+        if (m.diverged)
+            warnings.push_back(axis + "the simulated run diverged (a sample is not a finite number)");
+        else if (m.saturated)
+            warnings.push_back(axis + "|u| reached the actuator limit of " + formatNumber(run.umaxVolts) +
+                               " V for " + formatNumber(m.saturatedTimeSeconds) + " s");
+    }
+}
+
+} // namespace
+
+ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
+                             const ContourRunOptions& options) {
+    const std::vector<double> feeds = programFeeds(program, options.profile.feedScale);
+    ContourRun out;
+    out.trace = trace(session, program.path, feeds, options);
+    ContourErrorOptions errorOptions;
+    errorOptions.cornerAngleDeg = options.profile.cornerAngleDeg;
+    errorOptions.cornerWindowMm = options.cornerWindowMm;
+    errorOptions.measuredSegments.resize(program.segments.size());
+    for (std::size_t i = 0; i < program.segments.size(); ++i)
+        errorOptions.measuredSegments[i] = !program.segments[i].rapid;
+    out.contour = contourError(program.path, out.trace.profile.t, out.trace.x, out.trace.y, errorOptions);
+    out.warnings = program.warnings;
+    addAxisWarnings(out.trace, out.warnings);
+
+    if (program.isSingleFullCircle()) {
+        const std::size_t c = program.fullCircleSegment();
+        const PathSegment& circle = program.path.segments()[c];
+        ContourCircularTest test;
+        test.nominal = {circle.centre(), circle.radius()};
+        test.clockwise = circle.sweep() < 0.0;
+        // As a ballbar test runs: the circle alone from rest at its start point, once in the
+        // program's direction and once the other way, so that the approach to the circle (a
+        // rapid the slow loops have not settled from) does not enter G and F.
+        const std::vector<double> feed{feeds[c]};
+        test.forward = trace(session, Path({circle}), feed, options);
+        test.reverse = trace(session,
+                             Path({PathSegment::arc(circle.centre(), circle.radius(), circle.startAngle(),
+                                                    -circle.sweep())}),
+                             feed, options);
+        pointsOnSegment(test.forward, 0, test.x, test.y);
+        pointsOnSegment(test.reverse, 0, test.reverseX, test.reverseY);
+        if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
+            test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal, options.iso);
+            out.circular = std::move(test);
+        } else {
+            out.warnings.push_back("the circle lasts fewer than 3 samples: no ISO 230-4 figures");
+        }
+    }
+    return out;
+}
+
+} // namespace xyt

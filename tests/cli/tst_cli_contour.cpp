@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// CLI contract of xytune-cli contour --gcode (issue 13): the figures printed are those of the
+// core (runProgramContour on the default session, computed here again), the CSV holds the time
+// series, and bad arguments or programs exit 2 naming the argument, file, line and column.
+#include "core/contour/gcode_reader.h"
+#include "core/session/contour_run.h"
+#include "core/session/session.h"
+#include "tests/support/cli_runner.h"
+#include "tests/support/tolerance.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+QString example(const char* name) {
+    return QStringLiteral(XYT_SOURCE_DIR "/resources/examples/") + QLatin1String(name);
+}
+
+xyt::GcodeProgram readExample(const char* name) {
+    QFile f(example(name));
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return xyt::readGcode(f.readAll().toStdString());
+}
+
+} // namespace
+
+class TstCliContour : public QObject {
+    Q_OBJECT
+private slots:
+    void circleMatchesTheCore_data();
+    void circleMatchesTheCore();
+    void squareCornersAndCsv();
+    void badInput_data();
+    void badInput();
+};
+
+void TstCliContour::circleMatchesTheCore_data() {
+    QTest::addColumn<QString>("method");
+    QTest::newRow("guillemin-truxal") << "guillemin-truxal";
+    QTest::newRow("pole-placement-zpetc") << "pole-placement-zpetc";
+}
+
+void TstCliContour::circleMatchesTheCore() {
+    QFETCH(QString, method);
+    // Paper 001's 30 mm circle with the default session's axes, --max-accel 50.
+    const auto run = xyt::test::runCli({"contour", "--gcode", example("circle_30mm.nc"), "--max-accel", "50",
+                                        "--method", method});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    for (const char* key : {"profile", "x_axis", "y_axis", "contour_error", "iso230_4", "warnings"})
+        QVERIFY2(o.contains(key), key);
+    // The same run in the core: the JSON prints 17 digits, so the figures agree to 1e-15.
+    xyt::Session session = xyt::Session::paperDefault();
+    for (auto& axis : session.axes)
+        axis.method = method == "guillemin-truxal" ? xyt::DesignMethod::GuilleminTruxal
+                                                   : xyt::DesignMethod::PolePlacementZpetc;
+    xyt::ContourRunOptions options;
+    options.profile.maxAccelMmPerS2 = 50.0;
+    const auto core = xyt::runProgramContour(session, readExample("circle_30mm.nc"), options);
+    const QJsonObject ce = o["contour_error"].toObject();
+    XYT_COMPARE_NEAR(ce["max"].toDouble(), core.contour.maxAbs, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(ce["rms"].toDouble(), core.contour.rms, 1e-15, 0.0);
+    QCOMPARE(ce["samples"].toInteger(), qint64(core.contour.measuredSamples));
+    QVERIFY(core.circular.has_value());
+    const QJsonObject iso = o["iso230_4"].toObject();
+    XYT_COMPARE_NEAR(iso["G"].toDouble(), core.circular->iso.circularDeviationG, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["F_max"].toDouble(), core.circular->iso.radialDeviationFMax, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["F_min"].toDouble(), core.circular->iso.radialDeviationFMin, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["H"].toDouble(), *core.circular->iso.hysteresisH, 1e-15, 0.0);
+    QCOMPARE(iso["direction"].toString(), QStringLiteral("clockwise"));
+    QCOMPARE(iso["nominal"].toObject()["radius"].toDouble(), 30.0);
+    QCOMPARE(iso["reversal_spikes"].toArray().size(), 4);
+    // The profile: a rapid of 30 mm, then the circle at 3 mm/s; M30 warns naming its line.
+    XYT_COMPARE_NEAR(o["length"].toDouble(), 30.0 + 60.0 * 3.14159265358979323846, 1e-15, 0.0);
+    QCOMPARE(o["profile"].toObject()["samples"].toInteger(), qint64(core.trace.profile.t.size()));
+    QCOMPARE(o["warnings"].toArray().first().toString(), QStringLiteral("line 10: M30 ignored (not an XY motion)"));
+    QCOMPARE(o["x_axis"].toObject()["method"].toString(), method);
+}
+
+void TstCliContour::squareCornersAndCsv() {
+    QTemporaryDir dir;
+    const QString csv = dir.filePath("square.csv");
+    const auto run = xyt::test::runCli({"contour", "--gcode", example("square_sharp_corners.nc"), "--method",
+                                        "pole-placement-zpetc", "--dt", "0.002", "--csv", csv});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    // Three inner corners of 90 degrees: the profile stops at each; each side alone takes
+    // 40/10 + 10/100 s at the default --max-accel 100 (trapezoid closed form): 16.4 s in all.
+    QCOMPARE(o["profile"].toObject()["sharp_corners"].toInt(), 3);
+    XYT_COMPARE_NEAR(o["profile"].toObject()["duration"].toDouble(), 16.4, 1e-13, 0.0);
+    const QJsonArray corners = o["contour_error"].toObject()["corners"].toArray();
+    QCOMPARE(corners.size(), 3);
+    QCOMPARE(corners[1].toObject()["x"].toDouble(), 40.0);
+    QCOMPARE(corners[1].toObject()["y"].toDouble(), 40.0);
+    QVERIFY(o["iso230_4"].isNull());
+    // The CSV: a header and one row per sample (16.4 s at 2 ms: 8201), the last at the end.
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
+    QCOMPARE(lines.first(), QByteArray("t,s,v,x_ref,y_ref,x,y,contour_error"));
+    QCOMPARE(lines.size(), 8202);
+    QCOMPARE(qint64(lines.size() - 1), o["profile"].toObject()["samples"].toInteger());
+    const QList<QByteArray> last = lines.last().split(',');
+    QCOMPARE(last.size(), 8);
+    XYT_COMPARE_NEAR(last[1].toDouble(), 160.0, 1e-9, 0.0); // s at the end: the perimeter
+    XYT_COMPARE_NEAR(last[3].toDouble(), 0.0, 0.0, 1e-9);   // back at the origin
+    XYT_COMPARE_NEAR(last[4].toDouble(), 0.0, 0.0, 1e-9);
+}
+
+void TstCliContour::badInput_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("message"); // a part of the one stderr line
+    const QString star = example("star.nc");
+    QTest::newRow("missing file") << QStringList{"--gcode", "/nonexistent/part.nc"}
+                                  << "--gcode: cannot read /nonexistent/part.nc";
+    QTest::newRow("bad program") << QStringList{"--gcode", "BAD"}
+                                 << "--gcode: BAD: line 2: unknown word Q3 at column 7";
+    QTest::newRow("accel") << QStringList{"--gcode", star, "--max-accel", "0"} << "--max-accel: must be greater than zero";
+    QTest::newRow("jerk") << QStringList{"--gcode", star, "--max-jerk", "-1"} << "--max-jerk:";
+    QTest::newRow("feed scale") << QStringList{"--gcode", star, "--feed-scale", "-2"} << "--feed-scale:";
+    QTest::newRow("too many samples") << QStringList{"--gcode", star, "--dt", "1e-9"} << "--dt: the profile lasts";
+    QTest::newRow("method") << QStringList{"--gcode", star, "--method", "pid"} << "--method: must be";
+    QTest::newRow("preset option") << QStringList{"--gcode", star, "--radius", "5"} << "--radius: is not an option";
+    QTest::newRow("unwritable csv") << QStringList{"--gcode", star, "--csv", "/nonexistent/x.csv"} << "--csv: cannot write";
+}
+
+void TstCliContour::badInput() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("bad.nc");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("G0 X1\nG1 X1 Q3 F10\n");
+    f.close();
+    args.replaceInStrings("BAD", bad);
+    message.replace("BAD", bad);
+    const auto run = xyt::test::runCli(QStringList{"contour"} + args);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.out.isEmpty(), run.out.constData());
+    const QString err = QString::fromUtf8(run.err).trimmed();
+    QVERIFY2(err.startsWith("xytune-cli contour: " + message), qPrintable(err));
+    QVERIFY(!err.contains('\n'));
+}
+
+QTEST_APPLESS_MAIN(TstCliContour)
+#include "tst_cli_contour.moc"
