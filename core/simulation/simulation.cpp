@@ -6,6 +6,7 @@
 
 #include <Eigen/QR>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -114,13 +115,33 @@ struct FlatStep {
 template <int N>
 void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc, const FlatStep& linear,
              const FlatStep& clipped, bool limited, double umax, double unit, double dt,
-             const std::vector<double>& reference, double* x, SimulationResult& out) {
+             const std::vector<double>& reference, double* xInOut, SimulationResult& out) {
     const int n = N > 0 ? N : runtimeN;
     const int nc = n - np;
     constexpr int kMax = 16; // a loop of more states takes the run-time path below
-    double nextBuffer[kMax];
-    std::vector<double> nextHeap(N > 0 || n <= kMax ? 0 : static_cast<std::size_t>(n));
-    double* next = N > 0 || n <= kMax ? nextBuffer : nextHeap.data();
+    // The state, and for a known order the step matrices, in local arrays: the stores to the
+    // output signals (double*) cannot alias them, so the compiler keeps them in registers and
+    // vectorizes the matrix-vector product. The arithmetic and its order are unchanged.
+    constexpr int kLocal = N > 0 ? N : kMax;
+    double xBuffer[kLocal], nextBuffer[kLocal];
+    std::vector<double> xHeap(N > 0 || n <= kMax ? 0 : static_cast<std::size_t>(n));
+    std::vector<double> nextHeap(xHeap.size());
+    double* x = xHeap.empty() ? xBuffer : xHeap.data();
+    double* next = nextHeap.empty() ? nextBuffer : nextHeap.data();
+    for (int i = 0; i < n; ++i)
+        x[i] = xInOut[i];
+    double phiL[N > 0 ? N * N : 1], g0L[N > 0 ? N : 1], g1L[N > 0 ? N : 1];
+    double phiC[N > 0 ? N * N : 1], g0C[N > 0 ? 2 * N : 1], g1C[N > 0 ? 2 * N : 1];
+    if constexpr (N > 0) {
+        std::copy(linear.phi.begin(), linear.phi.end(), phiL);
+        std::copy(linear.g0.begin(), linear.g0.end(), g0L);
+        std::copy(linear.g1.begin(), linear.g1.end(), g1L);
+        if (!clipped.phi.empty()) {
+            std::copy(clipped.phi.begin(), clipped.phi.end(), phiC);
+            std::copy(clipped.g0.begin(), clipped.g0.end(), g0C);
+            std::copy(clipped.g1.begin(), clipped.g1.end(), g1C);
+        }
+    }
     const std::size_t count = reference.size();
     double* t = out.t.data();
     double* yOut = out.y.data();
@@ -148,18 +169,22 @@ void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc
         const double w[2] = {rk, u};
         const double rho[2] = {slope, 0.0};
         const int m = step.inputs;
+        const double* phi = N > 0 ? (clip ? phiC : phiL) : step.phi.data();
+        const double* g0 = N > 0 ? (clip ? g0C : g0L) : step.g0.data();
+        const double* g1 = N > 0 ? (clip ? g1C : g1L) : step.g1.data();
         for (int i = 0; i < n; ++i) {
             double acc = 0.0;
             for (int j = 0; j < n; ++j)
-                acc += step.phi[static_cast<std::size_t>(i * n + j)] * x[j];
+                acc += phi[i * n + j] * x[j];
             for (int j = 0; j < m; ++j)
-                acc += step.g0[static_cast<std::size_t>(i * m + j)] * w[j] +
-                       step.g1[static_cast<std::size_t>(i * m + j)] * rho[j];
+                acc += g0[i * m + j] * w[j] + g1[i * m + j] * rho[j];
             next[i] = acc;
         }
         for (int i = 0; i < n; ++i)
             x[i] = next[i];
     }
+    for (int i = 0; i < n; ++i)
+        xInOut[i] = x[i];
 }
 
 } // namespace
