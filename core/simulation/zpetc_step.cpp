@@ -55,4 +55,38 @@ StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop, co
     return out;
 }
 
+StepCharacteristics loopStepCharacteristics(const PolePlacementDesign& loop) {
+    StepCharacteristics out;
+    const TransferFunction cl = loop.closedLoop();
+    out.stable = cl.isStable();
+    if (!out.stable)
+        return out;
+    out.finalValue = cl.dcGain();
+    // The slowest pole decides how long the response takes: 12 time constants of it.
+    double slowest = 0.0;
+    for (const auto& p : cl.poles())
+        slowest = std::max(slowest, std::abs(p));
+    const double decay = slowest > 0.0 ? -std::log(slowest) : 10.0;
+    const std::size_t n = static_cast<std::size_t>(std::clamp(12.0 / std::max(decay, 1e-3), 50.0, 1e6));
+    const auto y = filterZInverse(loop.closedLoopNum, loop.closedLoopDen, std::vector<double>(n, 1.0));
+    const double scale = std::max(std::abs(out.finalValue), 1e-300);
+    double peak = y[0];
+    std::size_t lastOutside = 0;
+    bool everOutside = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (y[k] > peak) {
+            peak = y[k];
+            out.peakTimeSeconds = static_cast<double>(k) * loop.tsSeconds;
+        }
+        if (std::abs(y[k] - out.finalValue) > 0.02 * scale) {
+            lastOutside = k;
+            everOutside = true;
+        }
+    }
+    out.overshootPct = std::max(0.0, (peak - out.finalValue) / scale * 100.0);
+    // A sampled response settles at the first sample inside the band for good.
+    out.settlingTimeSeconds = everOutside ? static_cast<double>(lastOutside + 1) * loop.tsSeconds : 0.0;
+    return out;
+}
+
 } // namespace xyt

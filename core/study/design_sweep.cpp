@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/design_sweep.h"
+#include "core/study/parallel_runs.h"
 
 #include "core/model/errors.h"
 #include "core/analysis/loop_responses.h"
@@ -12,16 +13,10 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <span>
-#include <thread>
 
 namespace xyt {
 
@@ -336,88 +331,27 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
     const std::size_t total = result.wnValues.size() * nKp;
     result.points.resize(total);
 
-    const int hardware = static_cast<int>(std::thread::hardware_concurrency());
-    const int wanted = options.threads > 0 ? options.threads : std::max(1, hardware);
-    const int threadCount = static_cast<int>(std::min<std::size_t>(wanted, total));
-    result.threadsUsed = threadCount;
-
-    std::atomic<std::size_t> next{0};
-    std::atomic<std::size_t> done{0};
-    std::atomic<bool> cancel{false};
-    std::mutex mutex;
-    std::condition_variable finishedSignal;
-    int finishedWorkers = 0;
-    std::exception_ptr failure;
-
-    const auto& progress = options.progress;
-    if (progress && !progress(0.0))
-        cancel = true;
-
-    // Each point is computed independently by the same code into its own slot, so the result
-    // is the same bit for bit whatever the number of threads and the order they take points in.
     // Workers take batchWidth consecutive points at a time (one trackBatch call), so a point's
     // neighbours in a batch vary from run to run; each lane's arithmetic is its own, so that
     // does not change a bit either.
-    const std::size_t width = static_cast<std::size_t>(options.batchWidth);
-    auto worker = [&] {
-        try {
-            if (options.onWorkerStart)
-                options.onWorkerStart();
-            std::vector<double> wn(width), kp(width);
-            while (!cancel.load(std::memory_order_relaxed)) {
-                const std::size_t first = next.fetch_add(width);
-                if (first >= total)
-                    break;
-                const std::size_t count = std::min(width, total - first);
-                for (std::size_t j = 0; j < count; ++j) {
-                    wn[j] = result.wnValues[(first + j) / nKp];
-                    kp[j] = result.kpValues[(first + j) % nKp];
-                }
-                evaluator.evaluateBatch(std::span<const double>(wn.data(), count),
-                                        std::span<const double>(kp.data(), count),
-                                        std::span<DesignPoint>(result.points.data() + first, count),
-                                        options.batchWidth);
-                done.fetch_add(count, std::memory_order_release);
-            }
-        } catch (...) {
-            const std::lock_guard lock(mutex);
-            if (!failure)
-                failure = std::current_exception();
-            cancel = true;
+    ParallelRunOptions run;
+    run.threads = options.threads;
+    run.chunk = static_cast<std::size_t>(options.batchWidth);
+    run.progress = options.progress;
+    run.progressScale = static_cast<double>(total) / (static_cast<double>(total) + 1.0); // + 1: the refinement
+    run.onWorkerStart = options.onWorkerStart;
+    const ParallelRunOutcome outcome = parallelRuns(total, run, [&](std::size_t first, std::size_t count) {
+        double wn[8], kp[8];
+        for (std::size_t j = 0; j < count; ++j) {
+            wn[j] = result.wnValues[(first + j) / nKp];
+            kp[j] = result.kpValues[(first + j) % nKp];
         }
-        {
-            const std::lock_guard lock(mutex);
-            ++finishedWorkers;
-        }
-        finishedSignal.notify_all();
-    };
-    std::vector<std::thread> workers;
-    workers.reserve(static_cast<std::size_t>(threadCount));
-    for (int i = 0; i < threadCount; ++i)
-        workers.emplace_back(worker);
-
-    // The calling thread only reports progress, so the callback never runs on a worker.
-    const double units = static_cast<double>(total) + 1.0; // + 1 for the refinement
-    {
-        std::unique_lock lock(mutex);
-        while (!finishedSignal.wait_for(lock, std::chrono::milliseconds(20),
-                                        [&] { return finishedWorkers == threadCount; })) {
-            if (!progress || cancel.load())
-                continue;
-            lock.unlock();
-            const bool goOn = progress(static_cast<double>(done.load(std::memory_order_acquire)) / units);
-            lock.lock();
-            if (!goOn)
-                cancel = true;
-        }
-    }
-    for (auto& t : workers)
-        t.join();
-    if (failure)
-        std::rethrow_exception(failure);
-
+        evaluator.evaluateBatch(std::span<const double>(wn, count), std::span<const double>(kp, count),
+                                std::span<DesignPoint>(result.points.data() + first, count), options.batchWidth);
+    });
+    result.threadsUsed = outcome.threadsUsed;
     tallyDesignSpace(result);
-    if (cancel.load() || result.computedCount < static_cast<int>(total)) {
+    if (outcome.cancelled || result.computedCount < static_cast<int>(total)) {
         result.status = SweepStatus::Cancelled;
         result.warnings.push_back("cancelled: " + std::to_string(result.computedCount) + " of " +
                                   std::to_string(total) + " grid points computed, no refinement");
@@ -432,8 +366,8 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
             kpAxis.minValue, kpAxis.maxValue, logSpacing(result.wnValues, b / nKp),
             logSpacing(result.kpValues, b % nKp), options.maxRefineEvaluations);
     }
-    if (progress)
-        progress(1.0);
+    if (options.progress)
+        options.progress(1.0);
     return result;
 }
 

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/session/session.h"
+#include "core/study/robustness.h"
+
+namespace xyt {
+
+/**
+ * The robustness problem of axis @p axis of @p session (issue 14): its nominal design (the
+ * session's PI, or its pole-placement loop and ZPETC), the run the session evaluates (the same
+ * reference, duration and step), the session's specification with umax, and every plant
+ * parameter with a zero range ("k0", "a1", "a2"; or "a1".."an", "b1".."bm" of the ARX model,
+ * B's leading zeros of the delay left out): set the ranges with setRelativeRange.
+ * @throws InvalidInput "axis" when out of range, and naming the session field when the axis
+ *         cannot be evaluated (as evaluateAxis reports it).
+ */
+RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
+
+} // namespace xyt

@@ -1,0 +1,295 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/study/robustness.h"
+
+#include "core/analysis/loop_responses.h"
+#include "core/analysis/stability_margins.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
+#include "core/simulation/discrete_simulation.h"
+#include "core/simulation/simulation.h"
+#include "core/simulation/zpetc_step.h"
+#include "core/study/parallel_runs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace xyt {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The value of parameter @p name among @p values, or @p fallback when it is not uncertain.
+double valueOf(const RobustnessProblem& problem, const std::vector<double>& values, const std::string& name,
+               double fallback) {
+    for (std::size_t i = 0; i < problem.parameters.size(); ++i)
+        if (problem.parameters[i].name == name)
+            return values[i];
+    return fallback;
+}
+
+/// The ARX polynomial with coefficients 1.. replaced by the parameters named prefix + index.
+Polynomial perturbedArx(const RobustnessProblem& problem, const std::vector<double>& values,
+                        const Polynomial& nominal, const std::string& prefix) {
+    std::vector<double> c = nominal.ascending();
+    for (std::size_t i = 1; i < c.size(); ++i)
+        c[i] = valueOf(problem, values, prefix + std::to_string(i), c[i]);
+    return Polynomial::fromAscending(c, prefix);
+}
+
+/// The signals of one run decimated onto the envelope's time points.
+struct Decimated {
+    std::vector<double> y, e, u;
+};
+
+/// A discrete run on the grid k Ts as a SimulationResult (|u| > umax flagged, not applied).
+void fillDiscrete(const std::vector<double>& r, const DiscreteRun& run, double ts, double umax,
+                  std::size_t n, SimulationResult& out) {
+    out.t.resize(n);
+    out.r.assign(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n));
+    out.y.assign(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(n));
+    out.u.assign(n, 0.0);
+    std::copy_n(run.u.begin(), std::min(n, run.u.size()), out.u.begin());
+    out.e.resize(n);
+    out.clipped.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        out.t[k] = static_cast<double>(k) * ts;
+        out.e[k] = out.r[k] - out.y[k];
+        out.clipped[k] = std::abs(out.u[k]) > umax;
+    }
+    out.dtSeconds = ts;
+    out.umaxVolts = umax;
+}
+
+/// Simulates @p values with the nominal controller into @p run, and judges it.
+PlantRun runPlant(const RobustnessProblem& problem, const std::vector<double>& values, SimulationResult& run) {
+    PlantRun out;
+    out.values = values;
+    std::optional<LoopMarginFigures> margins;
+    if (problem.controller) {
+        ThirdOrderPlant plant;
+        plant.k0 = valueOf(problem, values, "k0", kNaN);
+        plant.a1 = valueOf(problem, values, "a1", kNaN);
+        plant.a2 = valueOf(problem, values, "a2", kNaN);
+        const TransferFunction g = plant.transferFunction();
+        const TransferFunction open = series(*problem.controller, g);
+        const TransferFunction closed = feedback(open);
+        out.stable = closed.isStable();
+        LoopSimulationOptions o;
+        o.dtSeconds = problem.dtSeconds;
+        o.umaxVolts = problem.spec.umaxVolts;
+        o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
+        simulateLoopInto(g, *problem.controller, problem.reference, o, run);
+        if (out.stable)
+            out.step = stepCharacteristics(closed);
+        const StabilityMargins m = stabilityMargins(open);
+        margins = LoopMarginFigures{m.phaseMarginDeg, m.gainMarginDb};
+    } else {
+        PolePlacementDesign loop = *problem.loop;
+        loop.a = perturbedArx(problem, values, problem.loop->a, "a");
+        loop.b = perturbedArx(problem, values, problem.loop->b, "b");
+        loop.closedLoopNum = loop.kf * loop.b;
+        loop.closedLoopDen = loop.a * loop.f + loop.b * loop.g;
+        out.stable = loop.closedLoop().isStable();
+        const std::size_t n = problem.samples;
+        const std::vector<double> rLoop(problem.reference.begin(),
+                                        problem.reference.begin() + static_cast<std::ptrdiff_t>(n));
+        const double umax = problem.spec.umaxVolts;
+        if (problem.zpetcEnabled) {
+            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax, n, run);
+            out.rmseWithoutFf = rootMeanSquare(run.e);
+            fillDiscrete(problem.reference, simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n),
+                         loop.tsSeconds, umax, n, run);
+        } else {
+            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax, n, run);
+        }
+        if (out.stable)
+            out.step = problem.zpetcEnabled ? zpetcStepCharacteristics(loop, *problem.zpetc)
+                                            : loopStepCharacteristics(loop);
+        const StabilityMargins m = stabilityMargins(rstLoopTransferFunctions(loop).openLoop);
+        margins = LoopMarginFigures{m.phaseMarginDeg, m.gainMarginDb};
+    }
+    out.tracking = trackingMetrics(run);
+    out.finite = !out.tracking.diverged && std::isfinite(out.tracking.rmse) && std::isfinite(out.tracking.itae);
+    if (problem.move && out.finite)
+        out.move = moveSettleMetrics(run, *problem.move, problem.spec.inPositionWindowMm);
+    out.margins = margins;
+    out.check = checkSpecification(problem.spec, out.tracking, out.step, out.move, out.margins);
+    out.meetsSpec = out.stable && out.finite && out.check.allPassed();
+    return out;
+}
+
+/// The sample indices of the envelope: every stride-th and the last.
+std::vector<std::size_t> envelopeIndices(std::size_t n, int points) {
+    std::vector<std::size_t> idx;
+    const std::size_t stride = std::max<std::size_t>(1, (n + static_cast<std::size_t>(points) - 1) /
+                                                            static_cast<std::size_t>(points));
+    for (std::size_t k = 0; k < n; k += stride)
+        idx.push_back(k);
+    if (idx.empty() || idx.back() != n - 1)
+        idx.push_back(n - 1);
+    return idx;
+}
+
+/// Nearest-rank percentile p (0..100) of sorted values.
+double percentile(const std::vector<double>& sorted, double p) {
+    const double rank = std::ceil(p / 100.0 * static_cast<double>(sorted.size()));
+    const std::size_t i = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(sorted.size())));
+    return sorted[i - 1];
+}
+
+Distribution distribution(std::vector<double> v) {
+    Distribution d;
+    d.count = static_cast<int>(v.size());
+    if (v.empty())
+        return d;
+    std::sort(v.begin(), v.end());
+    d.min = v.front();
+    d.max = v.back();
+    d.p05 = percentile(v, 5.0);
+    d.p50 = percentile(v, 50.0);
+    d.p95 = percentile(v, 95.0);
+    double sum = 0.0;
+    for (double x : v) // in sorted order: the same sum whatever the thread count
+        sum += x;
+    d.mean = sum / static_cast<double>(v.size());
+    return d;
+}
+
+SignalEnvelope envelope(const std::vector<double>& t, const std::vector<std::size_t>& idx,
+                        const std::vector<const std::vector<double>*>& runs) {
+    SignalEnvelope env;
+    if (runs.empty())
+        return env;
+    std::vector<double> column(runs.size());
+    for (std::size_t j = 0; j < idx.size(); ++j) {
+        for (std::size_t i = 0; i < runs.size(); ++i)
+            column[i] = (*runs[i])[j];
+        std::sort(column.begin(), column.end());
+        env.t.push_back(t[idx[j]]);
+        env.min.push_back(column.front());
+        env.p05.push_back(percentile(column, 5.0));
+        env.p50.push_back(percentile(column, 50.0));
+        env.p95.push_back(percentile(column, 95.0));
+        env.max.push_back(column.back());
+    }
+    return env;
+}
+
+void validate(const RobustnessProblem& problem, const RobustnessOptions& options) {
+    if (problem.controller.has_value() == problem.loop.has_value())
+        throw InvalidInput("problem", "give either a continuous controller or a discrete loop");
+    if (problem.loop && problem.zpetcEnabled && !problem.zpetc)
+        throw InvalidInput("problem", "ZPETC is enabled without its design");
+    const std::size_t preview = problem.loop && problem.zpetcEnabled
+                                    ? static_cast<std::size_t>(problem.zpetc->previewSteps) : 0;
+    if (problem.samples < 2 || problem.reference.size() < problem.samples + preview)
+        throw InvalidInput("problem", "the reference must hold the run (at least 2 samples) and the preview");
+    if (problem.controller)
+        for (const char* name : {"k0", "a1", "a2"})
+            if (std::none_of(problem.parameters.begin(), problem.parameters.end(),
+                             [&](const UncertainParameter& p) { return p.name == name; }))
+                throw InvalidInput("problem", std::string("a continuous plant needs the parameter ") + name);
+    if (problem.controller && problem.reference.size() != problem.samples)
+        throw InvalidInput("problem", "a continuous run has exactly the reference's samples");
+    if (options.samples < 0 || options.samples > 1'000'000)
+        throw InvalidInput("samples", "must be from 0 to 1000000");
+    if (options.envelopePoints < 2 || options.envelopePoints > 100'000)
+        throw InvalidInput("envelope_points", "must be from 2 to 100000");
+    problem.spec.validate();
+    for (const UncertainParameter& p : problem.parameters)
+        if (!std::isfinite(p.relative) || p.relative < 0.0 || p.relative >= 1.0)
+            throw InvalidInput("range." + p.name, "must be from 0 to below 100 %");
+}
+
+} // namespace
+
+RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options) {
+    validate(problem, options);
+    RobustnessResult result;
+    for (const UncertainParameter& p : problem.parameters)
+        result.parameterNames.push_back(p.name);
+    std::vector<std::vector<double>> plants = drawPlants(problem.parameters, options.samples, options.seed);
+    const std::size_t randomCount = plants.size();
+    if (options.corners)
+        for (auto& c : boxCorners(problem.parameters))
+            plants.push_back(std::move(c));
+
+    std::vector<double> nominalValues;
+    for (const UncertainParameter& p : problem.parameters)
+        nominalValues.push_back(p.nominal);
+    SimulationResult nominalRun;
+    result.nominal = runPlant(problem, nominalValues, nominalRun);
+    const std::vector<std::size_t> idx = envelopeIndices(problem.samples, options.envelopePoints);
+
+    result.runs.resize(plants.size());
+    std::vector<Decimated> signals(plants.size());
+    std::vector<char> computed(plants.size(), 0);
+    ParallelRunOptions parallel;
+    parallel.threads = options.threads;
+    parallel.progress = options.progress;
+    const ParallelRunOutcome outcome = parallelRuns(plants.size(), parallel, [&](std::size_t first, std::size_t count) {
+        SimulationResult run; // one per chunk; a chunk is one plant
+        for (std::size_t i = first; i < first + count; ++i) {
+            result.runs[i] = runPlant(problem, plants[i], run);
+            result.runs[i].corner = i >= randomCount;
+            Decimated& d = signals[i];
+            for (std::size_t k : idx) {
+                d.y.push_back(run.y[k]);
+                d.e.push_back(run.e[k]);
+                d.u.push_back(run.u[k]);
+            }
+            computed[i] = 1;
+        }
+    });
+    result.threadsUsed = outcome.threadsUsed;
+    if (outcome.cancelled) {
+        result.status = RobustnessStatus::Cancelled;
+        result.warnings.push_back("cancelled: the statistics cover the plants computed before");
+    }
+
+    std::vector<double> rmse, maxE, maxU, rmseNoFf;
+    std::vector<const std::vector<double>*> ys, es, us;
+    int meeting = 0;
+    double worstRmse = -1.0;
+    for (std::size_t i = 0; i < plants.size(); ++i) {
+        if (!computed[i])
+            continue;
+        ++result.computedCount;
+        const PlantRun& r = result.runs[i];
+        meeting += r.meetsSpec ? 1 : 0;
+        if (!r.stable || !r.finite) {
+            result.unstable.push_back(i);
+            continue;
+        }
+        rmse.push_back(r.tracking.rmse);
+        maxE.push_back(r.tracking.maxAbsError);
+        maxU.push_back(r.tracking.maxAbsU);
+        if (std::isfinite(r.rmseWithoutFf))
+            rmseNoFf.push_back(r.rmseWithoutFf);
+        ys.push_back(&signals[i].y);
+        es.push_back(&signals[i].e);
+        us.push_back(&signals[i].u);
+        if (r.tracking.rmse > worstRmse) {
+            worstRmse = r.tracking.rmse;
+            result.worst = i;
+        }
+    }
+    result.fractionMeetingSpec =
+        result.computedCount > 0 ? static_cast<double>(meeting) / static_cast<double>(result.computedCount) : 0.0;
+    result.rmse = distribution(rmse);
+    result.maxAbsError = distribution(maxE);
+    result.maxAbsU = distribution(maxU);
+    result.rmseWithoutFf = distribution(rmseNoFf);
+    result.output = envelope(nominalRun.t, idx, ys);
+    result.error = envelope(nominalRun.t, idx, es);
+    result.command = envelope(nominalRun.t, idx, us);
+    if (!result.unstable.empty())
+        result.warnings.push_back(std::to_string(result.unstable.size()) +
+                                  " plants are unstable or diverged with this controller; they are listed, "
+                                  "not in the statistics");
+    return result;
+}
+
+} // namespace xyt

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/design/pole_placement.h"
+#include "core/design/zpetc.h"
+#include "core/model/transfer_function.h"
+#include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
+#include "core/study/plant_uncertainty.h"
+#include "core/study/specification.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/**
+ * One axis as the robustness analysis (issue 14) perturbs it: the nominal controller stays as
+ * designed while the plant it drives takes the perturbed parameters.
+ *  - Continuous (Guillemin-Truxal): `controller` (the PI) drives k0 / (s^3 + a1 s^2 + a2 s) with
+ *    the parameters "k0", "a1", "a2", simulated as simulateLoop does (saturation at umax) at dt.
+ *  - Discrete (pole placement): the RST law of `loop` (F, G, Kf unchanged) drives the ARX model
+ *    A = 1 + a1 z^-1 + ..., B = b1 z^-1 + ... with the perturbed coefficients, with the
+ *    feedforward `zpetc` built from the NOMINAL model when zpetcEnabled (paper 001's ZPETC
+ *    sensitivity to mismatch); also the loop alone, for the RMSE without feedforward.
+ */
+struct RobustnessProblem {
+    std::vector<UncertainParameter> parameters;
+    // Continuous axes
+    std::optional<TransferFunction> controller;
+    double modelUnitsPerPositionUnit = 1.0;
+    double dtSeconds = 0.01;
+    // Discrete axes
+    std::optional<PolePlacementDesign> loop;
+    std::optional<ZpetcDesign> zpetc;
+    bool zpetcEnabled = false;
+    /// r(k dt) for the continuous loop; r(k Ts) for k = 0 .. samples - 1 + the ZPETC's preview
+    /// for the discrete one (trajectory units).
+    std::vector<double> reference;
+    std::size_t samples = 0; ///< samples of each run (the reference's size for continuous axes)
+    Specification spec;      ///< its umaxVolts is the actuator limit
+    std::optional<PointToPointMove> move;
+};
+
+struct RobustnessOptions {
+    int samples = 200;        ///< random plants
+    std::uint64_t seed = 1;
+    bool corners = true;      ///< also the 2^p corners of the parameter box
+    int threads = 0;          ///< 0: all cores; the result does not depend on it, bit for bit
+    int envelopePoints = 400; ///< time points of the envelopes (every k-th sample, the last kept)
+    /// As SweepOptions::progress: on the calling thread, fraction in [0, 1]; false cancels.
+    std::function<bool(double fraction)> progress;
+};
+
+/// One plant of the analysis and how the unchanged controller does on it.
+struct PlantRun {
+    std::vector<double> values; ///< the parameters, in RobustnessProblem::parameters order
+    bool corner = false;        ///< a corner of the box (else a random draw or the nominal)
+    bool stable = false;        ///< the closed loop with the nominal controller
+    bool finite = false;        ///< every sample of the run is finite (else it diverged)
+    TrackingMetrics tracking;
+    /// Discrete axes with ZPETC: the RMSE of the loop alone on this plant (NaN otherwise).
+    double rmseWithoutFf = std::numeric_limits<double>::quiet_NaN();
+    StepCharacteristics step;
+    std::optional<MoveSettleMetrics> move;
+    std::optional<LoopMarginFigures> margins;
+    SpecificationCheck check;
+    bool meetsSpec = false; ///< stable && finite && check.allPassed()
+};
+
+/// Order statistics of one figure over the stable, finite runs (nearest-rank percentiles).
+struct Distribution {
+    int count = 0;
+    double min = 0.0, p05 = 0.0, p50 = 0.0, p95 = 0.0, max = 0.0, mean = 0.0;
+};
+
+/// Pointwise order statistics of a signal over the stable, finite runs.
+struct SignalEnvelope {
+    std::vector<double> t, min, p05, p50, p95, max;
+};
+
+enum class RobustnessStatus { Completed, Cancelled };
+
+struct RobustnessResult {
+    RobustnessStatus status = RobustnessStatus::Completed;
+    std::vector<std::string> parameterNames;
+    PlantRun nominal;
+    std::vector<PlantRun> runs; ///< the random plants, then the corners
+    int computedCount = 0;
+    SignalEnvelope output, error, command;
+    Distribution rmse, maxAbsError, maxAbsU, rmseWithoutFf;
+    /// Over every computed run: an unstable or diverged plant counts as failing.
+    double fractionMeetingSpec = 0.0;
+    /// Runs whose closed loop is unstable or whose run diverged: listed, never in the statistics.
+    std::vector<std::size_t> unstable;
+    /// The stable run of largest RMSE (nullopt when none is stable).
+    std::optional<std::size_t> worst;
+    int threadsUsed = 0;
+    std::vector<std::string> warnings;
+};
+
+/**
+ * Monte Carlo and corner analysis of one axis: options.samples random plants from the seed and
+ * (options.corners) the box corners, each simulated with the unchanged controller on all cores;
+ * figures as the session's evaluation computes them (tracking, step of the perturbed closed
+ * loop, margins of the perturbed loop, move and settle) judged by the specification.
+ * @throws InvalidInput "samples", "envelope_points", "threads", "problem" (neither or both
+ *         loop kinds, a reference shorter than the run), "corners", and from the parameters.
+ */
+RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options = {});
+
+} // namespace xyt
