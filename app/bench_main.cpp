@@ -5,6 +5,7 @@
 // come first; gui_slider_to_repaint (last) times the widgets on the offscreen platform.
 #include "core/study/design_sweep.h"
 #include "core/session/design_study.h"
+#include "core/session/robustness_problem.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/analysis/root_locus.h"
 #include "core/design/pole_placement.h"
@@ -357,6 +358,35 @@ int main(int argc, char* argv[]) {
             const auto r = xyt::sweepDesignSpace(problem, wn, kp, {});
             sink = sink + r.feasibleCount;
         }, 3, 0.0);
+        // Issue 14: 1,000 perturbed plants of the paper 001 circle (30 mm at 0.1 rad/s, one
+        // revolution, both axes, every A and B coefficient +-10 %), each run with and without
+        // the nominal ZPETC, all threads, no corners. Target under 1 s.
+        {
+            xyt::Session s;
+            s.trajectory.kind = xyt::TrajectoryKind::Circle;
+            s.trajectory.radius = 30.0;
+            s.trajectory.omegaRadPerSec = 0.1;
+            s.trajectory.rampInSeconds = 0.0;
+            for (int axis = 0; axis < 2; ++axis) {
+                const auto preset = *xyt::findPolePlacementPreset(axis == 0 ? "x-axis" : "y-axis");
+                s.axes[static_cast<std::size_t>(axis)].method = xyt::DesignMethod::PolePlacementZpetc;
+                s.axes[static_cast<std::size_t>(axis)].pp.a = preset.a.ascending();
+                s.axes[static_cast<std::size_t>(axis)].pp.b = preset.b.ascending();
+            }
+            std::vector<xyt::RobustnessProblem> problems;
+            for (int axis = 0; axis < 2; ++axis) {
+                problems.push_back(xyt::sessionRobustnessProblem(s, axis));
+                for (auto& p : problems.back().parameters)
+                    p.relative = 0.1;
+            }
+            xyt::RobustnessOptions o;
+            o.samples = 1000;
+            o.corners = false;
+            benchmark(filter, "robustness_1000_plants_pp_circle_both_axes", [&] {
+                for (const auto& p : problems)
+                    sink = sink + xyt::analyzeRobustness(p, o).rmse.p50;
+            }, 3, 0.0);
+        }
         // Paper 001: x-axis pole placement + ZPETC + one revolution of 30 sin(0.1 t) at 70 ms
         // (898 samples), all three structures.
         const xyt::PolePlacementPreset x = *xyt::findPolePlacementPreset("x-axis");

@@ -6,7 +6,8 @@
 
 namespace xyt::cli {
 
-CliArgs CliArgs::parse(const QStringList& args, const QSet<QString>& booleanFlags) {
+CliArgs CliArgs::parse(const QStringList& args, const QSet<QString>& booleanFlags,
+                       const QSet<QString>& repeatable) {
     CliArgs out;
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString& a = args[i];
@@ -24,7 +25,7 @@ CliArgs CliArgs::parse(const QStringList& args, const QSet<QString>& booleanFlag
             name = name.left(eq);
             hasInlineValue = true;
         }
-        if (out.has(name))
+        if (out.has(name) && !repeatable.contains(name))
             throw InvalidInput(field(name), "given more than once");
         out.order_ << name;
         if (booleanFlags.contains(name)) {
@@ -39,6 +40,8 @@ CliArgs CliArgs::parse(const QStringList& args, const QSet<QString>& booleanFlag
             value = args[++i];
         }
         out.values_.insert(name, value);
+        if (repeatable.contains(name))
+            out.repeated_[name] << value;
     }
     return out;
 }

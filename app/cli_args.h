@@ -19,12 +19,16 @@ namespace xyt::cli {
 class CliArgs {
 public:
     /// @param booleanFlags names (without --) that take no value.
+    /// @param repeatable names that may be given more than once (read them with values()).
     /// @throws InvalidInput for an option without a value or given twice.
-    static CliArgs parse(const QStringList& args, const QSet<QString>& booleanFlags = {});
+    static CliArgs parse(const QStringList& args, const QSet<QString>& booleanFlags = {},
+                         const QSet<QString>& repeatable = {});
 
     bool has(const QString& name) const { return values_.contains(name) || flags_.contains(name); }
     bool flag(const QString& name) const { return flags_.contains(name); }
     std::optional<QString> value(const QString& name) const;
+    /// Every value of a repeatable option, in the order given.
+    QStringList values(const QString& name) const { return repeated_.value(name); }
     QString text(const QString& name, const QString& fallback) const;
     /// A finite number. Without @p fallback the argument is required.
     double number(const QString& name, std::optional<double> fallback = std::nullopt) const;
@@ -41,6 +45,7 @@ public:
 
 private:
     QMap<QString, QString> values_;
+    QMap<QString, QStringList> repeated_;
     QSet<QString> flags_;
     QStringList positional_;
     QStringList order_;

@@ -21,5 +21,6 @@ int runZpetc(const QStringList& args);
 int runContour(const QStringList& args);
 int runBode(const QStringList& args);
 int runMargins(const QStringList& args);
+int runRobustness(const QStringList& args);
 
 } // namespace xyt::cli

@@ -6,6 +6,7 @@
 #include "core/model/errors.h"
 #include "core/io/file_io.h"
 #include "core/simulation/trajectory.h"
+#include "ui/session/session_file.h"
 
 
 #include <cmath>
@@ -232,6 +233,15 @@ void writeCsv(const QString& path, const SimulationResult& run) {
             sink(std::string_view(line, static_cast<std::size_t>(n)));
         }
     });
+}
+
+Session loadSessionOrThrow(const QString& path) {
+    const ui::SessionLoadResult r = ui::loadSessionFile(path);
+    for (const QString& w : r.warnings)
+        std::fprintf(stderr, "xytune-cli: warning: %s\n", qPrintable(w));
+    if (!r.ok)
+        throw InvalidInput(path.toStdString(), r.message().toStdString());
+    return r.session;
 }
 
 } // namespace xyt::cli

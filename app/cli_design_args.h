@@ -12,6 +12,7 @@
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/simulation.h"
+#include "core/session/session.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -98,5 +99,9 @@ void writeCsv(const QString& path, const SimulationResult& run);
 /// "GM 45.9 dB at 60.5 rad/s, PM 88.1 deg at 0.637 rad/s, delay margin 2.42 s, Ms 1.02" (for the
 /// text reports; infinite margins as inf, and a word when the closed loop is unstable).
 QString marginsText(const StabilityMargins& m);
+
+/// The session file @p path (its warnings printed to stderr).
+/// @throws InvalidInput naming the path with the loader's message (field path and reason).
+Session loadSessionOrThrow(const QString& path);
 
 } // namespace xyt::cli

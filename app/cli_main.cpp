@@ -45,6 +45,17 @@ constexpr CommandHelp kGtHelp[] = {
                "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
                "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"
                "            [--kmax K] [--max-step 0.01 (fraction of the view)] [--max-points 5000]\n"},
+    {"robustness",
+     "  robustness SESSION.json [--samples 200] [--seed 1] [--range k0=10% ...] [--axis x|y|both]\n"
+     "            [--no-corners] [--threads N] [--csv FILE]  plant-model mismatch: --samples random\n"
+     "            plants (uniform within each --range, from --seed) and the 2^p corners of the\n"
+     "            box, each run with the session's unchanged controller (ZPETC from the nominal\n"
+     "            model). --range NAME=P% or NAME=FRACTION, repeatable, x.NAME / y.NAME for one\n"
+     "            axis; names: k0, a1, a2 (Guillemin-Truxal), a1.., b1.. (ARX A, B). JSON per axis:\n"
+     "            parameters, nominal, statistics {rmse, max_abs_error, max_abs_u, phase_margin,\n"
+     "            gain_margin, rmse_without_ff} {count, min, p05, p50, p95, max, mean},\n"
+     "            fraction_meeting_spec, unstable (listed, not in the statistics), worst (largest\n"
+     "            RMSE). CSV: one row per plant.\n"},
     {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
               "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
               "            [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"
@@ -181,6 +192,7 @@ int main(int argc, char* argv[]) {
         {"contour", xyt::cli::runContour},
         {"bode", xyt::cli::runBode},
         {"margins", xyt::cli::runMargins},
+        {"robustness", xyt::cli::runRobustness},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

@@ -23,15 +23,6 @@ namespace xyt::cli {
 
 namespace {
 
-Session loadOrThrow(const QString& path) {
-    const ui::SessionLoadResult r = ui::loadSessionFile(path);
-    for (const QString& w : r.warnings)
-        std::fprintf(stderr, "xytune-cli: warning: %s\n", qPrintable(w));
-    if (!r.ok)
-        throw InvalidInput(path.toStdString(), r.message().toStdString());
-    return r.session;
-}
-
 void writeOrThrow(const QString& path, const QByteArray& bytes) {
     writeFile("-o", path, [&bytes](const ByteSink& sink) {
         sink(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
@@ -72,7 +63,7 @@ int runNew(const QStringList& argv) {
 }
 
 int runSessionReport(const QString& path) {
-    const Session session = loadOrThrow(path);
+    const Session session = loadSessionOrThrow(path);
     const SessionEvaluation evaluation = evaluateSession(session);
     refuseRefusedRun(evaluation);
     QString text;
@@ -166,7 +157,7 @@ int runExport(const QStringList& argv) {
     if (!QStringList{"json", "c", "m", "csv"}.contains(format))
         throw InvalidInput("--format", "must be json, c, m or csv");
     const QString path = outputPath(args);
-    const Session session = loadOrThrow(args.positional().first());
+    const Session session = loadSessionOrThrow(args.positional().first());
     ExportOptions options;
     options.piMethod = session.piDiscretization; // the session's choice unless overridden
     if (const auto method = args.value("discretization")) {

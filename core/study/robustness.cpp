@@ -158,10 +158,12 @@ Distribution distribution(std::vector<double> v) {
 }
 
 SignalEnvelope envelope(const std::vector<double>& t, const std::vector<std::size_t>& idx,
-                        const std::vector<const std::vector<double>*>& runs) {
+                        const std::vector<const std::vector<double>*>& runs, const std::vector<double>& nominal) {
     SignalEnvelope env;
     if (runs.empty())
         return env;
+    for (std::size_t k : idx)
+        env.nominal.push_back(nominal[k]);
     std::vector<double> column(runs.size());
     for (std::size_t j = 0; j < idx.size(); ++j) {
         for (std::size_t i = 0; i < runs.size(); ++i)
@@ -249,7 +251,7 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
         result.warnings.push_back("cancelled: the statistics cover the plants computed before");
     }
 
-    std::vector<double> rmse, maxE, maxU, rmseNoFf;
+    std::vector<double> rmse, maxE, maxU, rmseNoFf, phase, gain;
     std::vector<const std::vector<double>*> ys, es, us;
     int meeting = 0;
     double worstRmse = -1.0;
@@ -268,6 +270,10 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
         maxU.push_back(r.tracking.maxAbsU);
         if (std::isfinite(r.rmseWithoutFf))
             rmseNoFf.push_back(r.rmseWithoutFf);
+        if (r.margins && std::isfinite(r.margins->phaseMarginDeg))
+            phase.push_back(r.margins->phaseMarginDeg);
+        if (r.margins && std::isfinite(r.margins->gainMarginDb))
+            gain.push_back(r.margins->gainMarginDb);
         ys.push_back(&signals[i].y);
         es.push_back(&signals[i].e);
         us.push_back(&signals[i].u);
@@ -282,14 +288,83 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     result.maxAbsError = distribution(maxE);
     result.maxAbsU = distribution(maxU);
     result.rmseWithoutFf = distribution(rmseNoFf);
-    result.output = envelope(nominalRun.t, idx, ys);
-    result.error = envelope(nominalRun.t, idx, es);
-    result.command = envelope(nominalRun.t, idx, us);
+    result.phaseMarginDeg = distribution(phase);
+    result.gainMarginDb = distribution(gain);
+    result.output = envelope(nominalRun.t, idx, ys, nominalRun.y);
+    result.error = envelope(nominalRun.t, idx, es, nominalRun.e);
+    result.command = envelope(nominalRun.t, idx, us, nominalRun.u);
     if (!result.unstable.empty())
         result.warnings.push_back(std::to_string(result.unstable.size()) +
                                   " plants are unstable or diverged with this controller; they are listed, "
                                   "not in the statistics");
     return result;
+}
+
+std::vector<double> figureValues(const RobustnessResult& result, RobustnessFigure figure) {
+    std::vector<double> v;
+    for (const PlantRun& r : result.runs) {
+        if (!r.stable || !r.finite || r.values.empty())
+            continue; // (a run of a cancelled analysis that was never computed has no values)
+        v.push_back(figure == RobustnessFigure::Rmse          ? r.tracking.rmse
+                    : figure == RobustnessFigure::MaxAbsError ? r.tracking.maxAbsError
+                                                              : r.tracking.maxAbsU);
+    }
+    return v;
+}
+
+Histogram histogram(const std::vector<double>& values, int bins) {
+    if (bins < 1 || bins > 10000)
+        throw InvalidInput("bins", "must be from 1 to 10000");
+    Histogram h;
+    if (values.empty())
+        return h;
+    const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+    double a = *lo, b = *hi;
+    if (!(b > a)) {
+        const double half = 0.5e-9 * std::max(std::abs(a), 1.0);
+        a -= half;
+        b += half;
+        bins = 1;
+    }
+    for (int i = 0; i <= bins; ++i)
+        h.edges.push_back(i == bins ? b : a + (b - a) * static_cast<double>(i) / bins);
+    h.counts.assign(static_cast<std::size_t>(bins), 0);
+    for (double v : values) {
+        const int i = std::clamp(static_cast<int>((v - a) / (b - a) * bins), 0, bins - 1);
+        ++h.counts[static_cast<std::size_t>(i)];
+    }
+    return h;
+}
+
+std::vector<ZpetcSensitivityPoint> zpetcSensitivity(const RobustnessProblem& problem,
+                                                    const std::vector<double>& scales,
+                                                    const RobustnessOptions& options) {
+    if (!problem.loop || !problem.zpetcEnabled)
+        throw InvalidInput("problem", "the ZPETC sensitivity needs a pole-placement axis with ZPETC enabled");
+    if (scales.empty())
+        throw InvalidInput("scales", "give at least one scale");
+    std::vector<ZpetcSensitivityPoint> curve;
+    for (double scale : scales) {
+        RobustnessProblem scaled = problem;
+        try {
+            scaled.parameters = scaledRanges(problem.parameters, scale);
+        } catch (const InvalidInput& e) {
+            throw InvalidInput("scales", "scale " + std::to_string(scale) + ": " + e.what());
+        }
+        const RobustnessResult r = analyzeRobustness(scaled, options);
+        ZpetcSensitivityPoint point;
+        point.scale = scale;
+        point.rmseWithFf = r.rmse;
+        point.rmseWithoutFf = r.rmseWithoutFf;
+        point.unstable = static_cast<int>(r.unstable.size());
+        point.medianImprovementPct = r.rmseWithoutFf.count > 0 && r.rmseWithoutFf.p50 > 0.0
+                                         ? 100.0 * (1.0 - r.rmse.p50 / r.rmseWithoutFf.p50)
+                                         : 0.0;
+        curve.push_back(point);
+        if (r.status == RobustnessStatus::Cancelled)
+            break;
+    }
+    return curve;
 }
 
 } // namespace xyt

@@ -78,9 +78,10 @@ struct Distribution {
     double min = 0.0, p05 = 0.0, p50 = 0.0, p95 = 0.0, max = 0.0, mean = 0.0;
 };
 
-/// Pointwise order statistics of a signal over the stable, finite runs.
+/// Pointwise order statistics of a signal over the stable, finite runs, and the nominal run's
+/// value at the same instants.
 struct SignalEnvelope {
-    std::vector<double> t, min, p05, p50, p95, max;
+    std::vector<double> t, min, p05, p50, p95, max, nominal;
 };
 
 enum class RobustnessStatus { Completed, Cancelled };
@@ -93,6 +94,9 @@ struct RobustnessResult {
     int computedCount = 0;
     SignalEnvelope output, error, command;
     Distribution rmse, maxAbsError, maxAbsU, rmseWithoutFf;
+    /// The loop's margins over the stable runs where they are finite (no crossing: +infinity,
+    /// left out of these).
+    Distribution phaseMarginDeg, gainMarginDb;
     /// Over every computed run: an unstable or diverged plant counts as failing.
     double fractionMeetingSpec = 0.0;
     /// Runs whose closed loop is unstable or whose run diverged: listed, never in the statistics.
@@ -112,5 +116,40 @@ struct RobustnessResult {
  *         loop kinds, a reference shorter than the run), "corners", and from the parameters.
  */
 RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options = {});
+
+/// Which figure of the runs a histogram shows.
+enum class RobustnessFigure { Rmse, MaxAbsError, MaxAbsU };
+
+/// The figure of every stable, finite run (the runs the statistics cover), in run order.
+std::vector<double> figureValues(const RobustnessResult& result, RobustnessFigure figure);
+
+/// Equal-width bins over [min, max] of @p values: edges (bins + 1) and counts (bins). All values
+/// equal: one bin of width 1e-9 |v| (or 1e-9) centred on them. No values: no bins.
+/// @throws InvalidInput "bins" unless 1 <= bins <= 10000.
+struct Histogram {
+    std::vector<double> edges;
+    std::vector<int> counts;
+};
+Histogram histogram(const std::vector<double>& values, int bins);
+
+/// One point of the ZPETC sensitivity curve: the runs at `scale` times the problem's ranges.
+struct ZpetcSensitivityPoint {
+    double scale = 0.0;
+    Distribution rmseWithFf, rmseWithoutFf;
+    /// 100 (1 - median RMSE with ZPETC / median RMSE without), over the stable runs.
+    double medianImprovementPct = 0.0;
+    int unstable = 0;
+};
+
+/**
+ * Where the feedforward stops paying off (issue 14): analyzeRobustness of a discrete axis with
+ * ZPETC at each scale of its ranges (same seed for all, so the plants of a larger scale lie
+ * farther out along the same directions), RMSE with and without the feedforward.
+ * @throws InvalidInput "problem" unless the axis is discrete with ZPETC enabled, "scales" when
+ *         empty or a scale makes a range >= 100 %, and as analyzeRobustness.
+ */
+std::vector<ZpetcSensitivityPoint> zpetcSensitivity(const RobustnessProblem& problem,
+                                                    const std::vector<double>& scales,
+                                                    const RobustnessOptions& options = {});
 
 } // namespace xyt

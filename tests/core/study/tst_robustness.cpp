@@ -82,6 +82,7 @@ private slots:
     void deterministicAcrossThreadCounts();
     void widerRangesNeverNarrowTheEnvelope();
     void zpetcImprovementFallsWithAWrongB();
+    void zpetcSensitivityCurve();
     void steadyStateErrorDistributionIsAnalytic();
     void unstablePlantsAreListedNotAveraged();
     void badInputsAreNamed();
@@ -115,6 +116,10 @@ void TstRobustness::zeroUncertaintyIsTheNominal() {
     }
     QCOMPARE(bits(r.rmse.min), bits(r.rmse.max));
     QCOMPARE(r.output.min, r.output.max);
+    QCOMPARE(r.output.nominal, r.output.max); // the nominal run at the envelope's instants
+    // One bin holding every run (all values equal).
+    const Histogram h = histogram(figureValues(r, RobustnessFigure::Rmse), 20);
+    QCOMPARE(h.counts, std::vector<int>{13});
     QVERIFY(r.unstable.empty());
 }
 
@@ -160,6 +165,17 @@ void TstRobustness::widerRangesNeverNarrowTheEnvelope() {
         lastRmseSpread = spread;
     }
     QVERIFY(lastWidth > 0.0);
+    // The histogram of the widest case counts every stable run once, in bins of equal width
+    // spanning the distribution's min and max.
+    RobustnessProblem p = base;
+    const RobustnessResult r = analyzeRobustness(p, o);
+    const Histogram h = histogram(figureValues(r, RobustnessFigure::MaxAbsU), 7);
+    int total = 0;
+    for (int c : h.counts)
+        total += c;
+    QCOMPARE(total, r.maxAbsU.count);
+    QCOMPARE(h.edges.front(), r.maxAbsU.min);
+    QCOMPARE(h.edges.back(), r.maxAbsU.max);
 }
 
 void TstRobustness::zpetcImprovementFallsWithAWrongB() {
@@ -192,6 +208,35 @@ void TstRobustness::zpetcImprovementFallsWithAWrongB() {
         XYT_COMPARE_NEAR(p.tracking.rmse, std::sqrt(sum / static_cast<double>(problem.samples)), 1e-12, 0.0);
     }
     QCOMPARE(problem.parameters[2].name, std::string("b1"));
+}
+
+void TstRobustness::zpetcSensitivityCurve() {
+    // Paper 001: ZPETC is sensitive to mismatch. At scale 0 the curve's improvement is the
+    // nominal one (the session's evaluation); as B moves away it falls; each point is
+    // analyzeRobustness at that scale (same seed).
+    RobustnessProblem problem = sessionRobustnessProblem(ppSession(), 0);
+    for (const char* b : {"b1", "b2", "b3"})
+        setRelativeRange(problem.parameters, b, 0.3);
+    const RobustnessOptions o = options(20, 3, false);
+    const std::vector<ZpetcSensitivityPoint> curve = zpetcSensitivity(problem, {0.0, 0.5, 1.0}, o);
+    QCOMPARE(curve.size(), std::size_t(3));
+    XYT_COMPARE_NEAR(curve[0].medianImprovementPct, evaluateAxis(ppSession(), 0).improvementPct, 1e-12, 0.0);
+    QVERIFY(curve[1].medianImprovementPct < curve[0].medianImprovementPct);
+    QVERIFY(curve[2].medianImprovementPct < curve[1].medianImprovementPct);
+    RobustnessProblem half = problem;
+    half.parameters = scaledRanges(problem.parameters, 0.5);
+    const RobustnessResult direct = analyzeRobustness(half, o);
+    QCOMPARE(bits(curve[1].rmseWithFf.p50), bits(direct.rmse.p50));
+    QCOMPARE(bits(curve[1].rmseWithoutFf.p50), bits(direct.rmseWithoutFf.p50));
+    const std::string field = [&] {
+        try {
+            zpetcSensitivity(sessionRobustnessProblem(Session{}, 0), {1.0});
+        } catch (const InvalidInput& e) {
+            return e.field();
+        }
+        return std::string();
+    }();
+    QCOMPARE(field, std::string("problem"));
 }
 
 void TstRobustness::steadyStateErrorDistributionIsAnalytic() {

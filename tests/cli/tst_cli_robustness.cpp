@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// CLI contract of xytune-cli robustness (issue 14): the figures printed are the core's
+// (analyzeRobustness of the session's axes, computed here again with the same ranges and seed),
+// the CSV holds one row per plant, and bad arguments exit 2 naming the argument.
+#include "core/session/robustness_problem.h"
+#include "core/session/session.h"
+#include "tests/support/cli_runner.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace xyt;
+
+class TstCliRobustness : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void figuresAreTheCores();
+    void badInput_data();
+    void badInput();
+
+private:
+    QTemporaryDir dir_;
+    QString session_;
+};
+
+void TstCliRobustness::initTestCase() {
+    QVERIFY(dir_.isValid());
+    session_ = dir_.filePath("session.json");
+    const auto made = test::runCli({"new", "-o", session_});
+    QCOMPARE(made.exitCode, 0);
+}
+
+void TstCliRobustness::figuresAreTheCores() {
+    const QString csv = dir_.filePath("runs.csv");
+    const auto run = test::runCli({"robustness", session_, "--samples", "20", "--seed", "5", "--range", "k0=10%",
+                                   "--range", "y.a2=0.05", "--threads", "2", "--csv", csv});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonArray axes = run.json().value("axes").toArray();
+    QCOMPARE(axes.size(), 2);
+    const Session s = Session::paperDefault();
+    for (int axis = 0; axis < 2; ++axis) {
+        RobustnessProblem p = sessionRobustnessProblem(s, axis);
+        setRelativeRange(p.parameters, "k0", 0.1);
+        if (axis == 1)
+            setRelativeRange(p.parameters, "a2", 0.05);
+        RobustnessOptions o;
+        o.samples = 20;
+        o.seed = 5;
+        const RobustnessResult r = analyzeRobustness(p, o);
+        const QJsonObject a = axes[axis].toObject();
+        QCOMPARE(a.value("corners").toInt(), axis == 0 ? 2 : 4);
+        const QJsonObject rmse = a.value("statistics").toObject().value("rmse").toObject();
+        // JSON prints the shortest decimal that reads back as the same double: exact.
+        QCOMPARE(rmse.value("p50").toDouble(), r.rmse.p50);
+        QCOMPARE(rmse.value("max").toDouble(), r.rmse.max);
+        QCOMPARE(rmse.value("count").toInt(), r.rmse.count);
+        QCOMPARE(a.value("fraction_meeting_spec").toDouble(), r.fractionMeetingSpec);
+        QCOMPARE(a.value("worst").toObject().value("index").toInt(), static_cast<int>(*r.worst));
+        QCOMPARE(a.value("nominal").toObject().value("rmse").toDouble(), r.nominal.tracking.rmse);
+    }
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 1 + 22 + 24); // header, x: 20 + 2 corners, y: 20 + 4
+    QVERIFY(lines[0].startsWith("axis,index,kind,x.k0,x.a1,x.a2,y.k0,y.a1,y.a2,stable"));
+}
+
+void TstCliRobustness::badInput_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("named");
+    QTest::newRow("unknown parameter") << QStringList{"--range", "q0=10%"} << "--range";
+    QTest::newRow("range of 100 %") << QStringList{"--range", "k0=100%"} << "--range";
+    QTest::newRow("range not a number") << QStringList{"--range", "k0=ten%"} << "--range";
+    QTest::newRow("b1 on a GT session") << QStringList{"--range", "x.b1=5%"} << "--range";
+    QTest::newRow("negative samples") << QStringList{"--samples", "-3"} << "--samples";
+    QTest::newRow("fractional seed") << QStringList{"--seed", "1.5"} << "--seed";
+    QTest::newRow("bad axis") << QStringList{"--axis", "z"} << "--axis";
+    QTest::newRow("unknown option") << QStringList{"--from-identification"} << "--from-identification";
+}
+
+void TstCliRobustness::badInput() {
+    QFETCH(QStringList, args);
+    QFETCH(QString, named);
+    const auto run = test::runCli(QStringList{"robustness", session_} + args);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains(named.toUtf8()), run.err.constData());
+    QVERIFY(run.out.isEmpty());
+    const auto noSession = test::runCli({"robustness", "--samples", "3"});
+    QCOMPARE(noSession.exitCode, 2);
+    QVERIFY(noSession.err.contains("SESSION"));
+}
+
+QTEST_MAIN(TstCliRobustness)
+#include "tst_cli_robustness.moc"
