@@ -5,6 +5,7 @@
 #include "core/simulation/step_view.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/design_space_view.h"
+#include "ui/robustness_view.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
@@ -105,6 +106,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     lowerTabs_->setCornerWidget(magnification_, Qt::TopRightCorner);
     connect(magnification_, &QDoubleSpinBox::valueChanged, contourPlot_, &ContourPlot::setMagnification);
     lowerTabs_->addTab(new DesignSpaceView(session_, this), tr("&Design space"));
+    lowerTabs_->addTab(new RobustnessView(session_, this), tr("R&obustness"));
     connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {

@@ -260,11 +260,8 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     legend->setBorderPen(Qt::NoPen);
     legend->setWrap(4); // one row of short names: the map is narrow at 1366x768
     legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    // Small icons and gaps: the row has only the map's column (not the colour scale's) and
-    // clipped "least violating" at 1366x768 with QCustomPlot's 32 px icons.
-    legend->setIconSize(14, 12);
-    legend->setIconTextPadding(4);
-    legend->setColumnSpacing(6);
+    // The row has only the map's column (not the colour scale's): "least violating" clipped.
+    compactLegend(legend);
     axisRect()->insetLayout()->take(legend);
     plotLayout()->addElement(2, 0, legend);
     plotLayout()->setRowStretchFactor(2, 0.001);

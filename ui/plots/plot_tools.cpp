@@ -198,4 +198,10 @@ void setReadoutText(QCustomPlot* plot, QCPTextElement* readout, const QString& t
     plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
+void compactLegend(QCPLegend* legend) {
+    legend->setIconSize(14, 12);
+    legend->setIconTextPadding(4);
+    legend->setColumnSpacing(6);
+}
+
 } // namespace xyt::ui

@@ -11,6 +11,7 @@ class QCustomPlot;
 class QCPAxisRect;
 class QCPGraphData;
 class QCPItemText;
+class QCPLegend;
 class QCPTextElement;
 
 namespace xyt::ui {
@@ -59,6 +60,9 @@ QVector<QCPGraphData> flagDecimated(const std::vector<double>& t, const std::vec
  * hide no data, whatever the data does.
  */
 void placeLegendBelow(QCustomPlot* plot, int row, int columns = 3);
+/// Small icons and gaps, for a legend row under a narrow plot (QCustomPlot's 32 px icons clip
+/// the names of a three-entry row at 1366 x 768).
+void compactLegend(QCPLegend* legend);
 
 void styleAxisRect(QCPAxisRect* rect);
 

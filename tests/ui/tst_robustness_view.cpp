@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The robustness view (issue 14) drives the core's analyzeRobustness: what it draws is the
+// core's result for the same problem (computed here again), the worst case loads as one undo
+// step, a design change clears a result that no longer applies, and a run can be cancelled or
+// outlived by the view.
+#include "ui/robustness_view.h"
+#include "core/session/robustness_problem.h"
+#include "ui/plots/envelope_plot.h"
+#include "ui/plots/histogram_plot.h"
+#include "ui/session/tuning_session.h"
+#include "tests/support/tolerance.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTest>
+#include <QUndoStack>
+
+#include <memory>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+namespace {
+constexpr int kTimeoutMs = 120000;
+}
+
+class TstRobustnessView : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void cleanup();
+    void drawsTheCoresResult();
+    void worstCaseLoadsAsOneUndoStep();
+    void designChangeClearsTheResult();
+    void polePlacementAxisHasItsCoefficients();
+    void cancelAndDestroyWhileRunning();
+
+private:
+    void runAndWait();
+    std::unique_ptr<TuningSession> session_;
+    std::unique_ptr<RobustnessView> view_;
+};
+
+void TstRobustnessView::init() {
+    session_ = std::make_unique<TuningSession>();
+    view_ = std::make_unique<RobustnessView>(session_.get());
+    view_->resize(1000, 500);
+    view_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(view_.get()));
+}
+
+void TstRobustnessView::cleanup() {
+    view_.reset();
+    session_.reset();
+}
+
+void TstRobustnessView::runAndWait() {
+    QSignalSpy spy(view_.get(), &RobustnessView::analysisFinished);
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QVERIFY(view_->isRunning());
+    QVERIFY(spy.wait(kTimeoutMs));
+}
+
+void TstRobustnessView::drawsTheCoresResult() {
+    QCOMPARE(view_->parameterNames().size(), 3); // k0, a1, a2 of the GT plant
+    QVERIFY(!view_->envelopePlot()->hasResult());
+    view_->rangeBox("k0")->setValue(10.0);
+    view_->rangeBox("a2")->setValue(5.0);
+    view_->samplesBox()->setValue(30);
+    view_->seedBox()->setValue(4);
+    runAndWait();
+    RobustnessProblem p = sessionRobustnessProblem(session_->session(), 0);
+    setRelativeRange(p.parameters, "k0", 0.10);
+    setRelativeRange(p.parameters, "a2", 0.05);
+    RobustnessOptions o;
+    o.samples = 30;
+    o.seed = 4;
+    const RobustnessResult r = analyzeRobustness(p, o);
+    QCOMPARE(view_->result()->runs.size(), std::size_t(34)); // 30 and 4 corners
+    // The envelope drawn is the core's (error by default), point for point.
+    const auto* maxData = view_->envelopePlot()->maxGraph()->data().data();
+    QCOMPARE(maxData->size(), static_cast<int>(r.error.t.size()));
+    for (int i = 0; i < maxData->size(); i += 37) {
+        QCOMPARE(maxData->at(i)->key, r.error.t[static_cast<std::size_t>(i)]);
+        QCOMPARE(maxData->at(i)->value, r.error.max[static_cast<std::size_t>(i)]);
+        QCOMPARE(view_->envelopePlot()->nominalGraph()->data()->at(i)->value, r.error.nominal[static_cast<std::size_t>(i)]);
+    }
+    // The histogram counts every stable plant once; max |u| has the actuator limit drawn.
+    view_->figureBox()->setCurrentIndex(2);
+    double total = 0.0;
+    for (auto it = view_->histogramPlot()->bars()->data()->constBegin(); it != view_->histogramPlot()->bars()->data()->constEnd(); ++it)
+        total += it->value;
+    QCOMPARE(static_cast<int>(total), r.maxAbsU.count);
+    QCOMPARE(view_->histogramPlot()->limitDrawn(), session_->session().umaxVolts);
+    QCOMPARE(view_->histogramPlot()->nominalDrawn(), r.nominal.tracking.maxAbsU);
+    // The other signals and figures come from the same result.
+    view_->signalBox()->setCurrentIndex(2);
+    QCOMPARE(view_->envelopePlot()->minGraph()->data()->at(0)->value, r.command.min[0]);
+    QVERIFY(view_->statusText().contains(QString::number(100.0 * r.fractionMeetingSpec, 'g', 3) + " % meet"));
+    QVERIFY(view_->worstButton()->isEnabled());
+}
+
+void TstRobustnessView::worstCaseLoadsAsOneUndoStep() {
+    view_->rangeBox("k0")->setValue(20.0);
+    view_->samplesBox()->setValue(10);
+    view_->cornersBox()->setChecked(false);
+    runAndWait();
+    const ThirdOrderPlant before = session_->session().axes[0].gt.plant;
+    const std::vector<double> worst = view_->result()->runs[*view_->result()->worst].values;
+    QTest::mouseClick(view_->worstButton(), Qt::LeftButton);
+    const ThirdOrderPlant after = session_->session().axes[0].gt.plant;
+    QCOMPARE(after.k0, worst[0]);
+    QCOMPARE(after.a1, before.a1);
+    QCOMPARE(after.a2, before.a2);
+    QVERIFY(!view_->result()); // the analysis was of the old nominal plant
+    session_->undoStack()->undo();
+    QVERIFY(session_->session().axes[0].gt.plant == before);
+}
+
+void TstRobustnessView::designChangeClearsTheResult() {
+    view_->samplesBox()->setValue(5);
+    runAndWait();
+    QVERIFY(view_->envelopePlot()->hasResult());
+    session_->setKp(0, 40.0); // another controller: the result no longer applies
+    QVERIFY(!view_->result());
+    QVERIFY(!view_->envelopePlot()->hasResult());
+    QVERIFY(!view_->histogramPlot()->hasResult());
+    QVERIFY(view_->statusText().contains("design changed"));
+    QVERIFY(!view_->worstButton()->isEnabled());
+    // A change of the other axis leaves it alone.
+    runAndWait();
+    session_->setKp(1, 45.0);
+    QVERIFY(view_->result().has_value());
+}
+
+void TstRobustnessView::polePlacementAxisHasItsCoefficients() {
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    // Paper 001's x-axis model: A = 1 + a1 z^-1 + a2 z^-2, B = b1 z^-1 + b2 z^-2 + b3 z^-3.
+    QCOMPARE(view_->parameterNames(), (QStringList{"a1", "a2", "b1", "b2", "b3"}));
+    view_->rangeBox("b1")->setValue(20.0);
+    view_->samplesBox()->setValue(8);
+    runAndWait();
+    QCOMPARE(view_->result()->runs.size(), std::size_t(10));
+    QVERIFY(view_->result()->rmseWithoutFf.count > 0);
+    const std::vector<double> worst = view_->result()->runs[*view_->result()->worst].values;
+    view_->loadWorstCase();
+    QCOMPARE(session_->session().axes[0].pp.b[1], worst[2]);
+    QCOMPARE(session_->session().axes[0].method, DesignMethod::PolePlacementZpetc);
+}
+
+void TstRobustnessView::cancelAndDestroyWhileRunning() {
+    view_->rangeBox("k0")->setValue(10.0);
+    view_->samplesBox()->setValue(100000);
+    QSignalSpy spy(view_.get(), &RobustnessView::analysisFinished);
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QTest::qWait(100);
+    QTest::mouseClick(view_->cancelButton(), Qt::LeftButton);
+    QVERIFY(spy.wait(kTimeoutMs));
+    QVERIFY(view_->statusText().startsWith("Cancelled after"));
+    QVERIFY(view_->result()->computedCount < 100000);
+    // Destroying the view while a run is under way joins it (no crash, no late callback).
+    QTest::mouseClick(view_->runButton(), Qt::LeftButton);
+    QVERIFY(view_->isRunning());
+    view_.reset();
+    QTest::qWait(50);
+}
+
+QTEST_MAIN(TstRobustnessView)
+#include "tst_robustness_view.moc"

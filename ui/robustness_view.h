@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/session/session.h"
+#include "core/study/robustness.h"
+
+#include <QMap>
+#include <QWidget>
+
+#include <atomic>
+#include <memory>
+#include <optional>
+#include <thread>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace xyt::ui {
+
+class EnvelopePlot;
+class HistogramPlot;
+class TuningSession;
+
+/**
+ * Robustness of the current axis to plant-model mismatch (issue 14): a relative range per
+ * plant parameter, Monte Carlo plants from a seed and the box's corners, run by the core
+ * (analyzeRobustness) on a worker thread with progress and cancel; the chosen signal's envelope
+ * over time around the nominal run, the chosen figure's histogram with the specification's
+ * limit, the fraction of plants meeting the specification, the unstable plants and the worst
+ * one, which "Load worst case" makes the session's plant (one undo step). A change of the
+ * design clears the result (it would describe another controller).
+ */
+class RobustnessView : public QWidget {
+    Q_OBJECT
+public:
+    explicit RobustnessView(TuningSession* session, QWidget* parent = nullptr);
+    ~RobustnessView() override;
+
+    void run();
+    void cancel();
+    /// Makes the worst plant of the shown result the session's plant (an undoable step).
+    void loadWorstCase();
+    bool isRunning() const { return job_ != nullptr; }
+    const std::optional<RobustnessResult>& result() const { return result_; }
+    /// The problem of the shown result (its ranges included).
+    const std::optional<RobustnessProblem>& analyzedProblem() const { return problem_; }
+    int analyzedAxis() const { return axis_; }
+
+    /// The range box (in %) of parameter @p name of the current axis, or null.
+    QDoubleSpinBox* rangeBox(const QString& name) const { return ranges_.value(name, nullptr); }
+    QStringList parameterNames() const { return ranges_.keys(); }
+    QSpinBox* samplesBox() const { return samples_; }
+    QSpinBox* seedBox() const { return seed_; }
+    QCheckBox* cornersBox() const { return corners_; }
+    QComboBox* signalBox() const { return signal_; }
+    QComboBox* figureBox() const { return figure_; }
+    QPushButton* runButton() const { return run_; }
+    QPushButton* cancelButton() const { return cancel_; }
+    QPushButton* worstButton() const { return worst_; }
+    EnvelopePlot* envelopePlot() const { return envelope_; }
+    HistogramPlot* histogramPlot() const { return histogram_; }
+    QString statusText() const;
+
+signals:
+    void analysisFinished();
+
+private:
+    struct Job {
+        int id = 0;
+        std::atomic<bool> cancel{false};
+        std::thread thread;
+    };
+
+    void stopJob();
+    void rebuildRanges();
+    void onDesignChanged();
+    void onFinished(int jobId, std::shared_ptr<RobustnessResult> result, QString error);
+    void redraw();
+    void setStatus(const QString& text, bool isError = false);
+
+    TuningSession* session_;
+    std::unique_ptr<Job> job_;
+    int lastJobId_ = 0;
+    std::optional<RobustnessResult> result_;
+    std::optional<RobustnessProblem> problem_;
+    std::optional<RobustnessProblem> pendingProblem_;
+    Session analyzedSession_;
+    int axis_ = 0;
+    int pendingAxis_ = 0;
+    QMap<QString, double> rangePct_; ///< kept per parameter name across redesigns
+
+    QWidget* controlContent_;
+    QFormLayout* rangeForm_;
+    QMap<QString, QDoubleSpinBox*> ranges_;
+    QStringList rangeOrder_;
+    QSpinBox* samples_;
+    QSpinBox* seed_;
+    QCheckBox* corners_;
+    QComboBox* signal_;
+    QComboBox* figure_;
+    QPushButton* run_;
+    QPushButton* cancel_;
+    QPushButton* worst_;
+    QProgressBar* progress_;
+    QLabel* status_;
+    EnvelopePlot* envelope_;
+    HistogramPlot* histogram_;
+};
+
+} // namespace xyt::ui
