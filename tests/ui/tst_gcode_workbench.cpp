@@ -286,7 +286,9 @@ void TstGcodeWorkbench::contourViewShowsTheCoreData() {
     QCOMPARE(plot->worstMarker()->data()->size(), 1);
     QCOMPARE(plot->worstMarker()->data()->at(0)->key, c.maxPoint.x);
     QCOMPARE(plot->worstMarker()->data()->at(0)->value, c.maxPoint.y);
-    QVERIFY(plot->figuresText().contains(QString::number(c.maxAbs, 'g', 3) + " mm"));
+    QVERIFY2(plot->figuresText().contains("max " + QString::number(c.maxAbs, 'g', 3) + ", RMS " +
+                                          QString::number(c.rms, 'g', 3) + " mm"),
+             qPrintable(plot->figuresText()));
 }
 
 void TstGcodeWorkbench::magnifiedErrorOfAKnownOffset() {
@@ -365,7 +367,10 @@ void TstGcodeWorkbench::ballbarViewShowsTheIsoFigures() {
     // Both runs drawn; the metrics panel names the same G.
     QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
     QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
-    QVERIFY(window_->metricsPanel()->contourText().contains("G = " + QString::number(iso.circularDeviationG, 'f', 4)));
+    QVERIFY(window_->metricsPanel()->contourText().contains(
+        QString("G %1, F %2/%3, H %4 mm")
+            .arg(QString::number(iso.circularDeviationG, 'f', 4), QString::number(iso.radialDeviationFMax, 'f', 4),
+                 QString::number(iso.radialDeviationFMin, 'f', 4), QString::number(*iso.hysteresisH, 'f', 4))));
     ballbar->setChecked(false);
     QVERIFY(!plot->polar());
     QVERIFY(plot->fMaxCircle()->data()->isEmpty());

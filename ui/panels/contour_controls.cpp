@@ -48,6 +48,7 @@ void ContourControls::place() {
     adjustSize();
     move(plot_->width() - width() - 4, 2);
     raise();
+    plot_->reserveTitleRoom(isVisibleTo(plot_) ? width() + 8 : 0);
 }
 
 void ContourControls::step(int direction) {

@@ -253,18 +253,19 @@ void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList&
     QStringList lines;
     if (evaluation.program) {
         const ContourErrorResult& c = evaluation.program->contour;
-        lines << tr("Contour error (XY): max %1 mm, RMS %2 mm").arg(mm(c.maxAbs), mm(c.rms));
+        lines << tr("Contour error (XY): max %1, RMS %2 mm").arg(mm(c.maxAbs), mm(c.rms));
+        contour_->setToolTip(tr("The program's warnings are shown on the XY contour view"));
         if (evaluation.program->circular) {
             const Iso230Circular& iso = evaluation.program->circular->iso;
-            QString iso230 = tr("ISO 230-4: G = %1 mm, F max = %2 mm, F min = %3 mm")
+            // One line: G, F max/F min, H (mm).
+            QString iso230 = tr("ISO 230-4: G %1, F %2/%3")
                                  .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
                                       mm(iso.radialDeviationFMin));
             if (iso.hysteresisH)
-                iso230 += tr(", H = %1 mm").arg(mm(*iso.hysteresisH));
-            lines << iso230;
+                iso230 += tr(", H %1").arg(mm(*iso.hysteresisH));
+            lines << iso230 + tr(" mm");
         }
-        for (const std::string& w : evaluation.program->warnings)
-            notices << tr("program: %1").arg(QString::fromStdString(w));
+        // The program's warnings are on the XY contour view and in the editor's summary.
     } else if (!evaluation.programError.empty()) {
         notices << tr("program: %1").arg(QString::fromStdString(evaluation.programError));
     }

@@ -34,8 +34,7 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("xy-contour");
     plotLayout()->insertRow(0);
     figures_ = new QCPTextElement(this, QString(), QFont(font().family(), 9));
-    // The right end of the title row holds the corner and ballbar buttons (ContourControls).
-    figures_->setMargins(QMargins(4, 4, kTitleButtonRoomPx, 4));
+    reserveTitleRoom(0);
     plotLayout()->addElement(0, 0, figures_);
     styleAxisRect(axisRect());
     xAxis->setLabel(tr("x (mm)"));
@@ -46,9 +45,9 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     for (std::size_t b = 0; b < bands_.size(); ++b)
         bands_[b] = newCurve(this, QPen(kBandColors[b + 1], 2.0), QString());
     reverse_ = newCurve(this, QPen(colors::axisY, 1.2), QString());
-    fMax_ = newCurve(this, QPen(colors::snapshot, 1.0, Qt::DotLine), tr("F max / F min"));
+    fMax_ = newCurve(this, QPen(colors::snapshot, 1.0, Qt::DotLine), tr("F max/min"));
     fMin_ = newCurve(this, QPen(colors::snapshot, 1.0, Qt::DotLine), QString());
-    gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (about the LS centre)"));
+    gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (LS centre)"));
     gInner_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), QString());
     corners_ = addGraph();
     corners_->setLineStyle(QCPGraph::lsNone);
@@ -78,6 +77,16 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
 }
 
 ContourPlot::~ContourPlot() = default;
+
+void ContourPlot::reserveTitleRoom(int px) {
+    // The right end of the title row holds the corner and ballbar buttons (ContourControls);
+    // the title is centred in the rest.
+    const QMargins margins(4, 4, 4 + std::max(0, px), 4);
+    if (figures_->margins() == margins)
+        return;
+    figures_->setMargins(margins);
+    replot(QCustomPlot::rpQueuedReplot);
+}
 
 void ContourPlot::setMagnification(double factor) {
     if (!(factor >= 1.0) || !std::isfinite(factor))
@@ -245,16 +254,18 @@ void ContourPlot::drawProgram() {
         cornerY.append(corner.corner.y);
     }
     corners_->setData(cornerX, cornerY);
-    QString text = tr("Contour error max %1 mm (t %2 s), RMS %3 mm")
-                       .arg(QString::number(c.maxAbs, 'g', 3), QString::number(c.maxTimeSeconds, 'f', 1),
-                            QString::number(c.rms, 'g', 3));
-    if (corner_ >= 0 && corner_ < static_cast<int>(c.corners.size()))
-        text += tr("; corner %1/%2: %3 mm")
-                    .arg(corner_ + 1)
-                    .arg(c.corners.size())
-                    .arg(QString::number(c.corners[static_cast<std::size_t>(corner_)].maxAbsError, 'g', 3));
-    else if (!c.corners.empty())
-        text += tr("; %n sharp corner(s)", nullptr, static_cast<int>(c.corners.size()));
+    QString text = tr("Contour error max %1, RMS %2 mm")
+                       .arg(QString::number(c.maxAbs, 'g', 3), QString::number(c.rms, 'g', 3));
+    if (corner_ >= 0 && corner_ < static_cast<int>(c.corners.size())) {
+        const CornerOvershoot& corner = c.corners[static_cast<std::size_t>(corner_)];
+        text += corner.samples > 0 ? tr("; corner %1/%2: %3 mm")
+                                         .arg(corner_ + 1)
+                                         .arg(c.corners.size())
+                                         .arg(QString::number(corner.maxAbsError, 'g', 3))
+                                   : tr("; corner %1/%2: no sample near it").arg(corner_ + 1).arg(c.corners.size());
+    } else if (!c.corners.empty()) {
+        text += tr("; %n corner(s)", nullptr, static_cast<int>(c.corners.size()));
+    }
     figures_->setText(text);
 }
 
@@ -263,15 +274,15 @@ void ContourPlot::drawCircularTest() {
     const Iso230Circular& iso = test.iso;
     const NominalCircle& n = test.nominal;
     const double m = magnification_;
-    commanded_->setName(tr("nominal circle"));
+    commanded_->setName(tr("nominal"));
     setPoints(commanded_, circlePoints(n.centre, n.radius));
     const QString forward = test.clockwise ? tr("CW run") : tr("CCW run");
     const QString backward = test.clockwise ? tr("CCW run") : tr("CW run");
     setPoints(magnified_, polarDeviationPoints(test.x, test.y, n, m));
     magnified_->setPen(QPen(colors::output, 1.4));
-    magnified_->setName(tr("%1, error × %2").arg(forward).arg(m));
+    magnified_->setName(tr("%1 ×%2").arg(forward).arg(m));
     setPoints(reverse_, polarDeviationPoints(test.reverseX, test.reverseY, n, m));
-    reverse_->setName(tr("%1, error × %2").arg(backward).arg(m));
+    reverse_->setName(tr("%1 ×%2").arg(backward).arg(m));
     setPoints(fMax_, circlePoints(n.centre, n.radius + m * iso.radialDeviationFMax));
     setPoints(fMin_, circlePoints(n.centre, n.radius + m * iso.radialDeviationFMin));
     const Point2 lsCentre = n.centre + m * (iso.leastSquares.centre - n.centre);
@@ -344,9 +355,11 @@ void ContourPlot::resizeEvent(QResizeEvent* event) {
 }
 
 void ContourPlot::showCornerBox() {
-    const CornerOvershoot& c = evaluation_.program->contour.corners[static_cast<std::size_t>(corner_)];
-    // The corner's window and its magnified error, at least 1 mm each way.
-    const double half = std::max({1.0, 1.5 * magnification_ * c.maxAbsError, 2.0 * c.maxAbsError});
+    const ContourErrorResult& contour = evaluation_.program->contour;
+    const CornerOvershoot& c = contour.corners[static_cast<std::size_t>(corner_)];
+    // The corner's magnified error, and the traced path however far it cuts the corner (the
+    // largest error of the run), at least 1 mm each way.
+    const double half = std::max({1.0, 1.5 * magnification_ * c.maxAbsError, 1.5 * contour.maxAbs});
     showBox(c.corner.x - half, c.corner.x + half, c.corner.y - half, c.corner.y + half);
 }
 

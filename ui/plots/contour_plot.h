@@ -34,8 +34,8 @@ class ContourPlot : public PlotWidget {
     Q_OBJECT
 public:
     explicit ContourPlot(QWidget* parent = nullptr);
-    /// Room left at the right of the title row for the view's buttons (px).
-    static constexpr int kTitleButtonRoomPx = 110;
+    /// Leaves @p px at the right end of the title row free for the view's buttons.
+    void reserveTitleRoom(int px);
     ~ContourPlot() override;
 
     /// @p notices: what the live evaluation changed (TuningSession::liveNotice), shown on the plot.
