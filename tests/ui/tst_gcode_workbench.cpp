@@ -43,6 +43,7 @@ private slots:
     void examplesBoxLoadsAProgram();
     void openButtonStartsInTheExamples();
     void badProgramIsShownAtTheFieldAndChangesNothing();
+    void gcodeKindWithoutAProgramChangesNothing();
     void profileFieldsAreUndoableSteps();
     void badProfileFieldIsRefusedAtTheField();
     void contourViewShowsTheCoreData();
@@ -195,6 +196,16 @@ void TstGcodeWorkbench::badProgramIsShownAtTheFieldAndChangesNothing() {
     // A good program clears the marking.
     loadExample("square_sharp_corners.nc");
     QVERIFY(editor->programField()->styleSheet().isEmpty());
+}
+
+void TstGcodeWorkbench::gcodeKindWithoutAProgramChangesNothing() {
+    const Session before = session_->session();
+    QComboBox* kind = window_->trajectoryEditor()->kindBox();
+    kind->setCurrentIndex(2);
+    emit kind->activated(2);
+    QVERIFY(session_->session() == before); // still the cubic: nothing to run yet
+    QVERIFY(window_->trajectoryEditor()->programField()->toolTip().contains("no program"));
+    QVERIFY(window_->trajectoryEditor()->programSummary()->text().contains("Open a program"));
 }
 
 void TstGcodeWorkbench::profileFieldsAreUndoableSteps() {
