@@ -237,6 +237,7 @@ bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::strin
 
 void TrajectoryEditor::showProgram(const TrajectorySettings& t) {
     programField_->setText(QString::fromStdString(t.gcode.fileName));
+    programField_->setCursorPosition(0); // the name's start when it is wider than the field
     programField_->setToolTip(QString::fromStdString(t.gcode.fileName));
     if (t.gcode.program.empty()) {
         summary_->setText(tr("Open a program or pick an example."));

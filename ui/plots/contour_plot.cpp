@@ -45,8 +45,8 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     for (std::size_t b = 0; b < bands_.size(); ++b)
         bands_[b] = newCurve(this, QPen(kBandColors[b + 1], 2.0), QString());
     reverse_ = newCurve(this, QPen(colors::axisY, 1.2), QString());
-    fMax_ = newCurve(this, QPen(colors::snapshot, 1.0, Qt::DotLine), tr("F max/min"));
-    fMin_ = newCurve(this, QPen(colors::snapshot, 1.0, Qt::DotLine), QString());
+    fMax_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), tr("F max/min"));
+    fMin_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), QString());
     gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (LS centre)"));
     gInner_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), QString());
     corners_ = addGraph();
