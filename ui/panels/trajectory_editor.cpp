@@ -245,7 +245,7 @@ void TrajectoryEditor::showProgram(const TrajectorySettings& t) {
     }
     try {
         const ProgramSummary s = summarizeProgram(t);
-        QString text = tr("%n move(s), %1 mm, run %2 s", nullptr, static_cast<int>(s.moves))
+        QString text = tr("%n motion block(s), %1 mm, run %2 s", nullptr, static_cast<int>(s.moves))
                            .arg(s.lengthMm, 0, 'f', 1)
                            .arg(s.runSeconds, 0, 'f', 2);
         if (s.corners > 0)
