@@ -46,7 +46,8 @@ ContourRunOptions programRunOptions(const TrajectorySettings& trajectory) {
     return options;
 }
 
-FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory, const GcodeProgram& program) {
+FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory,
+                                     const GcodeProgram& program) {
     try {
         return planFeedProfile(program, programRunOptions(trajectory).profile);
     } catch (const InvalidInput& e) {
@@ -59,7 +60,8 @@ double programRunSeconds(const TrajectorySettings& trajectory) {
     // (two samples) rather than sampling it at dt.
     TrajectorySettings coarse = trajectory;
     coarse.dtSeconds = 1e12;
-    return trajectoryProgramProfile(coarse, readTrajectoryProgram(trajectory.gcode)).totalTimeSeconds;
+    return trajectoryProgramProfile(coarse, readTrajectoryProgram(trajectory.gcode))
+        .totalTimeSeconds;
 }
 
 ProgramSummary summarizeProgram(const TrajectorySettings& trajectory) {
@@ -78,8 +80,10 @@ ProgramSummary summarizeProgram(const TrajectorySettings& trajectory) {
     return out;
 }
 
-std::function<double(double)> programAxisReference(const TrajectorySettings& trajectory, int axisIndex) {
-    const FeedProfile profile = trajectoryProgramProfile(trajectory, readTrajectoryProgram(trajectory.gcode));
+std::function<double(double)> programAxisReference(const TrajectorySettings& trajectory,
+                                                   int axisIndex) {
+    const FeedProfile profile =
+        trajectoryProgramProfile(trajectory, readTrajectoryProgram(trajectory.gcode));
     auto t = std::make_shared<const std::vector<double>>(profile.t);
     auto v = std::make_shared<const std::vector<double>>(axisIndex == 0 ? profile.x : profile.y);
     return [t, v](double time) {

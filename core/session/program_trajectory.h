@@ -27,18 +27,19 @@ ContourRunOptions programRunOptions(const TrajectorySettings& trajectory);
 
 /// The program's feed profile at the trajectory's dt (at most sampleLimit() samples).
 /// @throws InvalidInput naming the session path (see above).
-FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory, const GcodeProgram& program);
+FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory,
+                                     const GcodeProgram& program);
 
 /// The run time of the program's feed profile (s). @throws InvalidInput as above.
 double programRunSeconds(const TrajectorySettings& trajectory);
 
 /// What the trajectory editor shows of a program.
 struct ProgramSummary {
-    std::size_t lines = 0;    ///< lines of the text
-    std::size_t moves = 0;    ///< path segments (G0-G3 blocks that move)
-    double lengthMm = 0.0;    ///< path length, rapids included
-    double runSeconds = 0.0;  ///< the feed profile's run time
-    std::size_t corners = 0;  ///< sharp corners where the profile stops
+    std::size_t lines = 0;   ///< lines of the text
+    std::size_t moves = 0;   ///< path segments (G0-G3 blocks that move)
+    double lengthMm = 0.0;   ///< path length, rapids included
+    double runSeconds = 0.0; ///< the feed profile's run time
+    std::size_t corners = 0; ///< sharp corners where the profile stops
     bool singleFullCircle = false;
     std::vector<std::string> warnings;
 };
@@ -47,7 +48,8 @@ ProgramSummary summarizeProgram(const TrajectorySettings& trajectory);
 
 /// The position of axis @p axisIndex (0 = x, 1 = y) along the program's profile at time t
 /// (linear between the profile's samples, held at the end). @throws InvalidInput as above.
-std::function<double(double)> programAxisReference(const TrajectorySettings& trajectory, int axisIndex);
+std::function<double(double)> programAxisReference(const TrajectorySettings& trajectory,
+                                                   int axisIndex);
 
 /// The contour run of @p program (the session's, read) by the session's axes:
 /// runProgramContour with programRunOptions. @throws InvalidInput as runProgramContour, naming

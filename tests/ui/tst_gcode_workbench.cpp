@@ -6,6 +6,8 @@
 #include "core/contour/contour_metrics.h"
 #include "core/contour/gcode_reader.h"
 #include "core/session/program_trajectory.h"
+#include "tests/support/gui_checks.h"
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
 #include "ui/panels/contour_controls.h"
 #include "ui/panels/metrics_panel.h"
@@ -14,8 +16,6 @@
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/contour_points.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/gui_checks.h"
-#include "tests/support/tolerance.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -54,7 +54,9 @@ private slots:
     void circlePresetStillDrawsAsBefore();
 
 private:
-    QString example(const QString& name) const { return QDir(TrajectoryEditor::examplesFolder()).filePath(name); }
+    QString example(const QString& name) const {
+        return QDir(TrajectoryEditor::examplesFolder()).filePath(name);
+    }
     void loadExample(const QString& name);
 
     std::unique_ptr<TuningSession> session_;
@@ -110,7 +112,8 @@ void TstGcodeWorkbench::loadExample(const QString& name) {
 
 void TstGcodeWorkbench::everyExampleLoads_data() {
     QTest::addColumn<QString>("name");
-    for (const QString& name : QDir(TrajectoryEditor::examplesFolder()).entryList({"*.nc"}, QDir::Files))
+    for (const QString& name :
+         QDir(TrajectoryEditor::examplesFolder()).entryList({"*.nc"}, QDir::Files))
         QTest::newRow(qPrintable(name)) << name;
 }
 
@@ -130,7 +133,8 @@ void TstGcodeWorkbench::everyExampleLoads() {
     const ProgramSummary s = summarizeProgram(t);
     QVERIFY2(editor->programSummary()->text().contains(QString::number(s.lengthMm, 'f', 1) + " mm"),
              qPrintable(editor->programSummary()->text()));
-    QVERIFY(editor->programSummary()->text().contains(QString::number(s.runSeconds, 'f', 2) + " s"));
+    QVERIFY(
+        editor->programSummary()->text().contains(QString::number(s.runSeconds, 'f', 2) + " s"));
     // Both axes ran along the program's profile: the run lasts the profile's time.
     const AxisEvaluation& x = session_->axisEvaluation(0);
     QVERIFY2(x.ok, x.error.c_str());
@@ -150,7 +154,8 @@ void TstGcodeWorkbench::examplesBoxLoadsAProgram() {
     QVERIFY(index > 0);
     box->setCurrentIndex(index);
     emit box->activated(index);
-    QCOMPARE(QString::fromStdString(session_->session().trajectory.gcode.fileName), QString("star.nc"));
+    QCOMPARE(QString::fromStdString(session_->session().trajectory.gcode.fileName),
+             QString("star.nc"));
     QCOMPARE(box->currentIndex(), 0); // back to "Examples…" for the next pick
 }
 
@@ -220,8 +225,8 @@ void TstGcodeWorkbench::profileFieldsAreUndoableSteps() {
     test::typeInto(editor->field("max_jerk"), "50000");
     QCOMPARE(session_->session().trajectory.gcode.maxJerkMmPerS3, 50000.0);
     // Twice the feed, a faster profile: the run is shorter (the core's run time).
-    XYT_COMPARE_NEAR(session_->evaluation().duration.seconds, programRunSeconds(session_->session().trajectory),
-                     1e-12, 0.0);
+    XYT_COMPARE_NEAR(session_->evaluation().duration.seconds,
+                     programRunSeconds(session_->session().trajectory), 1e-12, 0.0);
     QVERIFY(session_->evaluation().duration.seconds < runBefore);
     session_->undoStack()->undo();
     QCOMPARE(session_->session().trajectory.gcode.maxJerkMmPerS3, 0.0);
@@ -272,7 +277,8 @@ void TstGcodeWorkbench::contourViewShowsTheCoreData() {
         QCOMPARE(ty[k], trace.y[static_cast<std::size_t>(k)]);
     }
     // The magnified error: |m_k - p(s_k)| = M |e_k| along the normal at the nearest point.
-    auto* factor = qobject_cast<QDoubleSpinBox*>(window_->lowerTabs()->cornerWidget(Qt::TopRightCorner));
+    auto* factor =
+        qobject_cast<QDoubleSpinBox*>(window_->lowerTabs()->cornerWidget(Qt::TopRightCorner));
     QVERIFY(factor);
     factor->setValue(20.0);
     const ContourErrorResult& c = e.program->contour;
@@ -291,7 +297,8 @@ void TstGcodeWorkbench::contourViewShowsTheCoreData() {
         const QVector<double> bx = keys(plot->errorBands()[b]);
         const double threshold = (b + 1) * 0.25 * c.maxAbs;
         for (std::size_t k = 0; k < c.error.size(); k += 53)
-            QCOMPARE(!std::isnan(bx[static_cast<qsizetype>(k)]), c.measured[k] && std::abs(c.error[k]) >= threshold);
+            QCOMPARE(!std::isnan(bx[static_cast<qsizetype>(k)]),
+                     c.measured[k] && std::abs(c.error[k]) >= threshold);
     }
     // The worst point is the core's.
     QCOMPARE(plot->worstMarker()->data()->size(), 1);
@@ -315,7 +322,8 @@ void TstGcodeWorkbench::magnifiedErrorOfAKnownOffset() {
         XYT_COMPARE_NEAR(m.y[k], 5.0, 1e-12, 0.0);
     }
     const Path arc({PathSegment::arc({0, 0}, 5.0, 0.0, 1.5)});
-    const std::vector<double> ax{4.8 * std::cos(0.3), 4.8 * std::cos(1.2)}, ay{4.8 * std::sin(0.3), 4.8 * std::sin(1.2)};
+    const std::vector<double> ax{4.8 * std::cos(0.3), 4.8 * std::cos(1.2)},
+        ay{4.8 * std::sin(0.3), 4.8 * std::sin(1.2)};
     const ContourErrorResult ca = contourError(arc, {0, 1}, ax, ay);
     const XyPoints ma = magnifiedContourPoints(arc, ca, 10.0);
     for (qsizetype k = 0; k < 2; ++k) {
@@ -341,7 +349,8 @@ void TstGcodeWorkbench::cornerZoomVisitsEveryCorner() {
         XYT_COMPARE_NEAR(plot->xAxis->range().center(), corners[i].corner.x, 1e-9, 1e-9);
         XYT_COMPARE_NEAR(plot->yAxis->range().center(), corners[i].corner.y, 1e-9, 1e-9);
         QVERIFY(plot->xAxis->range().size() < wholeX.size());
-        QVERIFY(plot->figuresText().contains(QString("corner %1/%2").arg(i + 1).arg(corners.size())));
+        QVERIFY(
+            plot->figuresText().contains(QString("corner %1/%2").arg(i + 1).arg(corners.size())));
     }
     QTest::mouseClick(next, Qt::LeftButton); // past the last: the whole path again
     QCOMPARE(plot->currentCorner(), -1);
@@ -361,7 +370,8 @@ void TstGcodeWorkbench::ballbarViewShowsTheIsoFigures() {
     QVERIFY(plot->polar());
     const ContourCircularTest& test = *session_->evaluation().program->circular;
     // The figures recomputed here by the core's iso230Circular from the two runs.
-    const Iso230Circular iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal);
+    const Iso230Circular iso =
+        iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal);
     const double m = plot->magnification();
     double cx = 0, cy = 0, r = 0;
     drawnCircle(plot->fMaxCircle(), cx, cy, r);
@@ -372,16 +382,21 @@ void TstGcodeWorkbench::ballbarViewShowsTheIsoFigures() {
     drawnCircle(plot->gOuterCircle(), ox, oy, outer);
     drawnCircle(plot->gInnerCircle(), ix, iy, inner);
     XYT_COMPARE_NEAR((outer - inner) / m, iso.circularDeviationG, 1e-9, 1e-12);
-    XYT_COMPARE_NEAR(ox, test.nominal.centre.x + m * (iso.leastSquares.centre.x - test.nominal.centre.x), 1e-9, 1e-9);
+    XYT_COMPARE_NEAR(
+        ox, test.nominal.centre.x + m * (iso.leastSquares.centre.x - test.nominal.centre.x), 1e-9,
+        1e-9);
     QVERIFY(plot->figuresText().contains(QString::number(iso.circularDeviationG, 'f', 4)));
-    QVERIFY(iso.hysteresisH && plot->figuresText().contains("H " + QString::number(*iso.hysteresisH, 'f', 4)));
+    QVERIFY(iso.hysteresisH &&
+            plot->figuresText().contains("H " + QString::number(*iso.hysteresisH, 'f', 4)));
     // Both runs drawn; the metrics panel names the same G.
     QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
     QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
     QVERIFY(window_->metricsPanel()->contourText().contains(
         QString("G %1, F %2/%3, H %4 mm")
-            .arg(QString::number(iso.circularDeviationG, 'f', 4), QString::number(iso.radialDeviationFMax, 'f', 4),
-                 QString::number(iso.radialDeviationFMin, 'f', 4), QString::number(*iso.hysteresisH, 'f', 4))));
+            .arg(QString::number(iso.circularDeviationG, 'f', 4),
+                 QString::number(iso.radialDeviationFMax, 'f', 4),
+                 QString::number(iso.radialDeviationFMin, 'f', 4),
+                 QString::number(*iso.hysteresisH, 'f', 4))));
     ballbar->setChecked(false);
     QVERIFY(!plot->polar());
     QVERIFY(plot->fMaxCircle()->data()->isEmpty());
@@ -396,7 +411,8 @@ void TstGcodeWorkbench::longProgramAtAFineStepSaysTheLiveViewIsLimited() {
     session_->apply(s, "fine dt");
     QVERIFY(!session_->liveNotice().isEmpty());
     // Evaluated at the live dt, and the contour view says so.
-    QVERIFY(session_->evaluation().program->trace.profile.t.size() <= TuningSession::kLiveSampleLimit + 1);
+    QVERIFY(session_->evaluation().program->trace.profile.t.size() <=
+            TuningSession::kLiveSampleLimit + 1);
     QVERIFY2(window_->contourPlot()->noticeText().contains("live view"),
              qPrintable(window_->contourPlot()->noticeText()));
 }
@@ -413,7 +429,8 @@ void TstGcodeWorkbench::circlePresetStillDrawsAsBefore() {
     QCOMPARE(plot->cornerCount(), 0);
     QVERIFY(!plot->polarAvailable());
     QVERIFY(!window_->contourControls()->isVisible());
-    QCOMPARE(plot->tracedCurve()->data()->size(), static_cast<int>(session_->axisEvaluation(0).run.t.size()));
+    QCOMPARE(plot->tracedCurve()->data()->size(),
+             static_cast<int>(session_->axisEvaluation(0).run.t.size()));
     QVERIFY(plot->errorBands()[0]->data()->isEmpty());
     QVERIFY(plot->figuresText().startsWith("Contour error (radial"));
 }

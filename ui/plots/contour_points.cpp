@@ -34,7 +34,8 @@ XyPoints programmedPathPoints(const Path& path) {
             append(out, s.start());
         if (s.isArc()) {
             const double stepRad = kArcStepDeg * std::numbers::pi / 180.0;
-            const int steps = std::max(4, static_cast<int>(std::ceil(std::abs(s.sweep()) / stepRad)));
+            const int steps =
+                std::max(4, static_cast<int>(std::ceil(std::abs(s.sweep()) / stepRad)));
             for (int i = 1; i < steps; ++i)
                 append(out, s.pointAt(s.length() * i / steps));
         }
@@ -45,7 +46,8 @@ XyPoints programmedPathPoints(const Path& path) {
     return out;
 }
 
-XyPoints magnifiedContourPoints(const Path& path, const ContourErrorResult& contour, double magnification) {
+XyPoints magnifiedContourPoints(const Path& path, const ContourErrorResult& contour,
+                                double magnification) {
     XyPoints out;
     const std::size_t n = contour.error.size();
     out.x.reserve(static_cast<qsizetype>(n));
@@ -70,7 +72,8 @@ XyPoints polarDeviationPoints(const std::vector<double>& x, const std::vector<do
         const double r = std::hypot(dx, dy);
         const double drawn = nominal.radius + magnification * (r - nominal.radius);
         const double angle = std::atan2(dy, dx);
-        append(out, {nominal.centre.x + drawn * std::cos(angle), nominal.centre.y + drawn * std::sin(angle)});
+        append(out, {nominal.centre.x + drawn * std::cos(angle),
+                     nominal.centre.y + drawn * std::sin(angle)});
     }
     return out;
 }

@@ -33,7 +33,8 @@ XyPoints programmedPathPoints(const Path& path);
  * magnification. M = 1 gives the traced point's projection back. Samples left out of the
  * statistics (G0 rapids) are NaN breaks.
  */
-XyPoints magnifiedContourPoints(const Path& path, const ContourErrorResult& contour, double magnification);
+XyPoints magnifiedContourPoints(const Path& path, const ContourErrorResult& contour,
+                                double magnification);
 
 /**
  * A ballbar's polar plot of a traced circle: each point at its angle about the nominal centre

@@ -3,9 +3,9 @@
 // session paths its refusals name, and its evaluation. The expected times and positions are the
 // closed form of a trapezoidal move along a straight line (accelerate at a to v = F, cruise,
 // decelerate: t = L / v + v / a when L >= v^2 / a).
-#include "core/session/program_trajectory.h"
 #include "core/model/errors.h"
 #include "core/session/export_text.h"
+#include "core/session/program_trajectory.h"
 #include "core/session/session_evaluation.h"
 #include "tests/support/tolerance.h"
 
@@ -77,13 +77,30 @@ void TstProgramTrajectory::refusalsNameTheSessionPath_data() {
     QTest::addColumn<QString>("value");
     QTest::addColumn<QString>("expectedField");
     QTest::addColumn<QString>("reasonStart");
-    QTest::newRow("unknown word") << "program" << "G21\nG5 X1\n" << "trajectory.gcode.program"
+    QTest::newRow("unknown word") << "program"
+                                  << "G21\nG5 X1\n"
+                                  << "trajectory.gcode.program"
                                   << "line 2: unknown word G5 at column 1";
-    QTest::newRow("no motion") << "program" << "G21\n" << "trajectory.gcode.program" << "";
-    QTest::newRow("feed scale") << "feed_scale" << "0" << "trajectory.gcode.feed_scale" << "";
-    QTest::newRow("max accel") << "max_accel" << "-1" << "trajectory.gcode.max_accel" << "";
-    QTest::newRow("max jerk") << "max_jerk" << "-1" << "trajectory.gcode.max_jerk" << "";
-    QTest::newRow("dt") << "dt" << "0" << "trajectory.dt" << "";
+    QTest::newRow("no motion") << "program"
+                               << "G21\n"
+                               << "trajectory.gcode.program"
+                               << "";
+    QTest::newRow("feed scale") << "feed_scale"
+                                << "0"
+                                << "trajectory.gcode.feed_scale"
+                                << "";
+    QTest::newRow("max accel") << "max_accel"
+                               << "-1"
+                               << "trajectory.gcode.max_accel"
+                               << "";
+    QTest::newRow("max jerk") << "max_jerk"
+                              << "-1"
+                              << "trajectory.gcode.max_jerk"
+                              << "";
+    QTest::newRow("dt") << "dt"
+                        << "0"
+                        << "trajectory.dt"
+                        << "";
 }
 
 void TstProgramTrajectory::refusalsNameTheSessionPath() {
