@@ -73,6 +73,10 @@ int runSessionReport(const QString& path) {
     if (t.kind == TrajectoryKind::Cubic)
         out << "Trajectory: cubic " << t.x0 << " -> " << t.xf << " mm from " << t.t0Seconds
             << " s to " << t.tfSeconds << " s";
+    else if (t.kind == TrajectoryKind::Gcode)
+        out << "Trajectory: G-code program " << shown(t.gcode.fileName) << ", feed scale "
+            << t.gcode.feedScale << ", max acceleration " << t.gcode.maxAccelMmPerS2
+            << " mm/s^2, max jerk " << t.gcode.maxJerkMmPerS3 << " mm/s^3";
     else
         out << "Trajectory: circle R = " << t.radius << " mm at " << t.omegaRadPerSec
             << " rad/s, ramp-in " << t.rampInSeconds << " s";

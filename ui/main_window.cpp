@@ -25,6 +25,7 @@
 #include "ui/session/session_file_controller.h"
 #include "ui/snapshot_compare_dialog.h"
 #include "ui/plots/time_response_plot.h"
+#include "ui/panels/contour_controls.h"
 #include "ui/panels/trajectory_editor.h"
 #include "ui/session/tuning_session.h"
 
@@ -105,6 +106,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     magnification_->setToolTip(tr("Magnification of the contour error in the XY plot (as a ballbar plot)"));
     lowerTabs_->setCornerWidget(magnification_, Qt::TopRightCorner);
     connect(magnification_, &QDoubleSpinBox::valueChanged, contourPlot_, &ContourPlot::setMagnification);
+    contourControls_ = new ContourControls(contourPlot_);
     lowerTabs_->addTab(new DesignSpaceView(session_, this), tr("&Design space"));
     lowerTabs_->addTab(new RobustnessView(session_, this), tr("R&obustness"));
     connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
@@ -379,7 +381,7 @@ void MainWindow::refresh() {
     if (shown(stepPlot_))
         showStep(e, a, s.spec, title);
     if (shown(contourPlot_))
-        contourPlot_->showSession(session_->liveSession(), session_->evaluation());
+        contourPlot_->showSession(session_->liveSession(), session_->evaluation(), liveNotices);
     if (e.ok) {
         std::vector<std::complex<double>> poles;
         try {
@@ -457,6 +459,7 @@ void MainWindow::refresh() {
     sweptParameter_->setVisible(upperTabs_->currentWidget() == parameterLocusPlot_);
     sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
     magnification_->setVisible(lowerTabs_->currentWidget() == contourPlot_);
+    contourControls_->sync();
     metrics_->showEvaluation(s, session_->evaluation(), session_->liveNotice());
     for (int i = 0; i < 2; ++i)
         metrics_->showMargins(i, session_->frequencyAnalysis(i));

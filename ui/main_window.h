@@ -15,6 +15,7 @@ class QTabWidget;
 
 namespace xyt::ui {
 
+class ContourControls;
 class ContourPlot;
 class RecoveryStore;
 class EquationsPanel;
@@ -60,6 +61,7 @@ public:
     QTabWidget* upperTabs() const { return upperTabs_; }
     QTabWidget* lowerTabs() const { return lowerTabs_; }
     ContourPlot* contourPlot() const { return contourPlot_; }
+    ContourControls* contourControls() const { return contourControls_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
     EquationsPanel* equationsPanel() const { return equations_; }
     QTabBar* axisTabs() const { return axisTabs_; }
@@ -101,6 +103,7 @@ private:
     NumberField* controllerTs_ = nullptr;
     QComboBox* discretization_ = nullptr;
     QDoubleSpinBox* magnification_ = nullptr;
+    ContourControls* contourControls_ = nullptr;
     QTabWidget* upperTabs_ = nullptr;
     QTabWidget* lowerTabs_ = nullptr;
     QSplitter* mainSplitter_ = nullptr;

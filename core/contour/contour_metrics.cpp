@@ -276,7 +276,11 @@ Iso230Circular iso230Circular(const std::vector<double>& x, const std::vector<do
     validateNominal(nominal, options);
     Iso230Circular out;
     out.leastSquares = fitCircle(x, y, options.geometricFit);
-    out.circularDeviationG = range(radii(x, y, out.leastSquares.centre));
+    const std::vector<double> lsRadii = radii(x, y, out.leastSquares.centre);
+    const auto [lsLo, lsHi] = std::minmax_element(lsRadii.begin(), lsRadii.end());
+    out.minRadiusAboutLeastSquares = *lsLo;
+    out.maxRadiusAboutLeastSquares = *lsHi;
+    out.circularDeviationG = *lsHi - *lsLo;
     const std::vector<double> nominalRadii = radii(x, y, nominal.centre);
     const auto [lo, hi] = std::minmax_element(nominalRadii.begin(), nominalRadii.end());
     out.radialDeviationFMax = *hi - nominal.radius;

@@ -134,6 +134,10 @@ struct ReversalSpike {
 struct Iso230Circular {
     CircleFit leastSquares;          ///< of the (first) run
     double circularDeviationG = 0.0; ///< of the first run (mm)
+    /// The radii of the two circles about leastSquares.centre that enclose the first run (mm):
+    /// G = maxRadiusAboutLeastSquares - minRadiusAboutLeastSquares (what a polar plot draws).
+    double minRadiusAboutLeastSquares = 0.0;
+    double maxRadiusAboutLeastSquares = 0.0;
     double radialDeviationFMax = 0.0;
     double radialDeviationFMin = 0.0;
     std::optional<double> hysteresisH;           ///< two runs only

@@ -175,6 +175,9 @@ std::string trajectoryLines(const TrajectorySettings& t, int axisIndex, const st
         out << "r_" << id << " = " << num(l[0], f) << " + " << num(l[1], f) << " * tau + "
             << num(l[2], f) << " * tau.^2 + " << num(l[3], f)
             << " * tau.^3;  % cubic point-to-point (paper 000 Eq. 4)\n";
+    } else if (t.kind == TrajectoryKind::Gcode) {
+        throw InvalidInput("trajectory.kind", "a G-code program's feed profile has no closed form for the "
+                                              "script; export the simulated signals as CSV instead");
     } else {
         out << "envelope = " << (t.rampInSeconds > 0 ? "min(t / " + num(t.rampInSeconds, "trajectory.circle.ramp_in") + ", 1)" : "ones(size(t))")
             << ";\n";

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/session.h"
 
+#include "core/model/errors.h"
+#include "core/session/program_trajectory.h"
 #include "core/simulation/move_settle.h"
 
 #include <cmath>
@@ -9,6 +11,13 @@
 namespace xyt {
 
 double TrajectorySettings::effectiveDurationSeconds() const {
+    if (kind == TrajectoryKind::Gcode) {
+        try {
+            return programRunSeconds(*this);
+        } catch (const InvalidInput&) {
+            return 0.0; // the evaluation names the bad field
+        }
+    }
     if (durationSeconds > 0.0)
         return durationSeconds;
     if (kind == TrajectoryKind::Cubic)

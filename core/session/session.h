@@ -46,14 +46,31 @@ struct AxisSettings {
     friend bool operator==(const AxisSettings&, const AxisSettings&) = default;
 };
 
-enum class TrajectoryKind { Cubic, Circle };
+enum class TrajectoryKind { Cubic, Circle, Gcode };
+
+/**
+ * A G-code program as a trajectory (issue 13). The program text is held in the session, so a
+ * shared session file is complete without the .nc file; fileName is only shown. The profile
+ * options are those of FeedProfileOptions (core/contour/feed_profile.h); its step is the
+ * trajectory's dtSeconds.
+ */
+struct GcodeTrajectory {
+    std::string fileName;  ///< where the program was read from (its name only, for display)
+    std::string program;   ///< the program text
+    double feedScale = 1.0;
+    double maxAccelMmPerS2 = 500.0;
+    double maxJerkMmPerS3 = 0.0; ///< 0: none (trapezoidal profile)
+    friend bool operator==(const GcodeTrajectory&, const GcodeTrajectory&) = default;
+};
 
 /// The commanded motion. A cubic drives both axes with the same profile (a diagonal move, as
-/// paper 000 Fig. 8); the circle drives x with R sin(w t) and y with R cos(w t).
+/// paper 000 Fig. 8); the circle drives x with R sin(w t) and y with R cos(w t); a G-code
+/// program drives x and y along its feed profile (core/session/program_trajectory.h).
 struct TrajectorySettings {
     TrajectoryKind kind = TrajectoryKind::Cubic;
     double x0 = 0.0, xf = 600.0, t0Seconds = 0.0, tfSeconds = 130.0, v0 = 0.0, vf = 0.0;
     double radius = 25.0, omegaRadPerSec = 0.06, rampInSeconds = 10.0;
+    GcodeTrajectory gcode;
     /// 0: automatic. A circle runs one revolution plus the ramp-in. A cubic runs past tf until
     /// the response has settled into the specification's in-position window, as the evaluation
     /// estimates from the closed-loop poles (SessionEvaluation::duration says what it chose), at
@@ -63,7 +80,9 @@ struct TrajectorySettings {
     double dtSeconds = 0.01;
 
     /**
-     * The longest run this trajectory asks for: the duration when it is set; for the circle one
+     * The longest run this trajectory asks for: for a G-code program always its feed profile's
+     * run time (0 when the program cannot be read or planned; durationSeconds is not used); the
+     * duration when it is set; for the circle one
      * revolution plus the ramp-in; for an automatic cubic the cap automaticMoveCapSeconds (tf + 3
      * (tf - t0), lowered to what the machine's sample limit holds at dtSeconds, never below tf;
      * the evaluation picks a run between tf and this). Sample-count checks use it, so they hold

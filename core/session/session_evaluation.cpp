@@ -5,6 +5,7 @@
 #include "core/simulation/discrete_simulation.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/session/program_trajectory.h"
 #include "core/simulation/trajectory.h"
 #include "core/simulation/zpetc_step.h"
 
@@ -15,6 +16,8 @@
 namespace xyt {
 
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex) {
+    if (trajectory.kind == TrajectoryKind::Gcode)
+        return programAxisReference(trajectory, axisIndex); // names the session paths itself
     // Core checks name their own argument ("xf", "radius"); the session's user knows the path.
     try {
         if (trajectory.kind == TrajectoryKind::Cubic) {
@@ -258,13 +261,17 @@ RunDuration chooseRunDuration(const Session& session) {
     RunDuration d;
     d.capSeconds = t.effectiveDurationSeconds();
     d.seconds = d.capSeconds;
-    d.automatic = !(t.durationSeconds > 0.0);
+    d.automatic = !(t.durationSeconds > 0.0) || t.kind == TrajectoryKind::Gcode;
     if (!d.automatic) {
         d.description = "duration " + seconds(d.seconds) + " (set in the session)";
         return d;
     }
     if (t.kind == TrajectoryKind::Circle) {
         d.description = "duration " + seconds(d.seconds) + " (automatic: the ramp-in and one revolution)";
+        return d;
+    }
+    if (t.kind == TrajectoryKind::Gcode) {
+        d.description = "duration " + seconds(d.seconds) + " (the program's feed profile)";
         return d;
     }
     // The move alone first, on both axes, for their error at tf.
@@ -347,6 +354,17 @@ SessionEvaluation evaluateSession(const Session& session) {
             out.contour = circleContourError(x.run.t, x.run.y, yOnX, circle);
         } catch (const InvalidInput&) {
             out.contour.reset(); // the run ended inside the ramp-in: no contour to judge
+        }
+    }
+    if (session.trajectory.kind == TrajectoryKind::Gcode && x.ok && y.ok) {
+        // The program's contour run simulates both axes once more, from the same reference
+        // samples, for the contour error along the path and (one full circle) the ballbar runs.
+        try {
+            const GcodeProgram program = readTrajectoryProgram(session.trajectory.gcode);
+            out.program = std::make_shared<const ContourRun>(runSessionProgram(session, program));
+            out.programPath = std::make_shared<const Path>(program.path);
+        } catch (const InvalidInput& e) {
+            out.programError = e.what();
         }
     }
     return out;

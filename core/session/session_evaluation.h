@@ -10,11 +10,13 @@
 #include "core/design/pole_placement.h"
 #include "core/study/specification.h"
 #include "core/design/zpetc.h"
+#include "core/session/contour_run.h"
 #include "core/session/session.h"
 #include "core/simulation/simulation.h"
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,6 +88,12 @@ struct SessionEvaluation {
     RunDuration duration;
     /// Radial error of the traced circle (circle trajectories with both axes valid).
     std::optional<ContourError> contour;
+    /// G-code trajectories with both axes valid: the program run by both axes
+    /// (runSessionProgram): the contour error along the path, the corners, and for one full
+    /// circle the ISO 230-4 test. Shared, since evaluations are copied into the views.
+    std::shared_ptr<const ContourRun> program;
+    std::shared_ptr<const Path> programPath; ///< the programmed path of `program`
+    std::string programError; ///< why `program` is unset although both axes are valid
 };
 
 /// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows.

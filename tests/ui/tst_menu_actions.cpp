@@ -70,6 +70,17 @@ Session unstable() {
     return s;
 }
 
+/// A G-code program as the trajectory (issue 13): a 20 mm square with a rounded corner, run by
+/// both axes, with a snapshot of the cubic move to compare against.
+Session gcodeProgram() {
+    Session s = shortMove();
+    s.snapshots.push_back(s.snapshot("cubic move"));
+    s.trajectory.kind = TrajectoryKind::Gcode;
+    s.trajectory.gcode.fileName = "menu_square.nc";
+    s.trajectory.gcode.program = "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
+    return s;
+}
+
 } // namespace
 
 class TstMenuActions : public QObject {
@@ -94,7 +105,7 @@ void TstMenuActions::everyActionInEveryState_data() {
     const QList<QPair<const char*, Session>> states = {
         {"default", Session::paperDefault()},      {"two snapshots", withTwoSnapshots()},
         {"both pole placement", bothPolePlacement()}, {"one axis invalid", oneAxisInvalid()},
-        {"unstable", unstable()}};
+        {"unstable", unstable()}, {"gcode program", gcodeProgram()}};
     for (const auto& [name, state] : states)
         for (const bool modified : {false, true})
             for (const bool accept : {false, true})

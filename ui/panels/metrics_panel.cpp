@@ -96,6 +96,12 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
                            RowCount * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
     layout->addWidget(table_);
+    contour_ = new QLabel(this);
+    contour_->setWordWrap(true);
+    contour_->setTextFormat(Qt::PlainText);
+    contour_->setAccessibleName(tr("Contour error figures"));
+    contour_->setVisible(false);
+    layout->addWidget(contour_);
     notices_ = new QLabel(this);
     notices_->setWordWrap(true);
     notices_->setTextFormat(Qt::PlainText);
@@ -240,6 +246,33 @@ void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
     fitColumns();
 }
 
+QString MetricsPanel::contourText() const { return contour_->text(); }
+
+void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList& notices) {
+    const auto mm = [](double v) { return QString::number(v, 'f', 4); };
+    QStringList lines;
+    if (evaluation.program) {
+        const ContourErrorResult& c = evaluation.program->contour;
+        lines << tr("Contour error (XY): max %1, RMS %2 mm").arg(mm(c.maxAbs), mm(c.rms));
+        contour_->setToolTip(tr("The program's warnings are shown on the XY contour view"));
+        if (evaluation.program->circular) {
+            const Iso230Circular& iso = evaluation.program->circular->iso;
+            // One line: G, F max/F min, H (mm).
+            QString iso230 = tr("ISO 230-4: G %1, F %2/%3")
+                                 .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
+                                      mm(iso.radialDeviationFMin));
+            if (iso.hysteresisH)
+                iso230 += tr(", H %1").arg(mm(*iso.hysteresisH));
+            lines << iso230 + tr(" mm");
+        }
+        // The program's warnings are on the XY contour view and in the editor's summary.
+    } else if (!evaluation.programError.empty()) {
+        notices << tr("program: %1").arg(QString::fromStdString(evaluation.programError));
+    }
+    contour_->setText(lines.join(QLatin1Char('\n')));
+    contour_->setVisible(!lines.isEmpty());
+}
+
 void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluation& evaluation,
                                   const QString& liveNotice) {
     QStringList notices;
@@ -348,6 +381,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         }
     }
     fitColumns();
+    showContour(evaluation, notices);
     notices_->setText(notices.join(QLatin1Char('\n')));
     notices_->setVisible(!notices.isEmpty());
 }

@@ -36,6 +36,9 @@ public:
     NumberField* specField(const QString& name) const { return spec_.value(name); }
     /// The warnings of both axes and of the live view, one per line ("" when there are none).
     QString noticeText() const;
+    /// The XY figures of a G-code program: contour error max and RMS, and for one full circle
+    /// the ISO 230-4 G, F max, F min and H ("" for the presets).
+    QString contourText() const;
 
     /// Row order of the table: a group title row (spanning the columns) before each group.
     enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
@@ -55,6 +58,7 @@ signals:
 
 private:
     void fitColumns();
+    void showContour(const SessionEvaluation& evaluation, QStringList& notices);
     /// What one figure cell shows: its text, a pass (kPass) or fail (kFail) colour or none.
     struct Cell {
         QString text;
@@ -67,6 +71,7 @@ private:
 
     QTableWidget* table_;
     QLabel* notices_;
+    QLabel* contour_;
     QMap<QString, NumberField*> spec_;
     Specification current_;
     /// Per axis, from the last showEvaluation: the margin checks (when the axis was evaluated).

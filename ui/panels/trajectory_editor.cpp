@@ -6,8 +6,19 @@
 #include "ui/panels/fitted_stack.h"
 #include "ui/panels/number_field.h"
 
+#include "core/io/file_io.h"
+#include "core/session/program_trajectory.h"
+
 #include <QComboBox>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
@@ -19,6 +30,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     kind_ = new QComboBox(this);
     kind_->addItem(tr("Cubic point-to-point (both axes)"));
     kind_->addItem(tr("Circle (x = R sin ωt, y = R cos ωt)"));
+    kind_->addItem(tr("G-code program (x and y along its feed profile)"));
     kind_->setAccessibleName(tr("Trajectory kind"));
     layout->addWidget(kind_);
     pages_ = new QStackedWidget(this);
@@ -63,6 +75,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     }
     pages_->addWidget(cubic);
     pages_->addWidget(circle);
+    pages_->addWidget(buildProgramPage());
     fitStackToCurrentPage(pages_);
 
     auto* common = new QFormLayout;
@@ -78,7 +91,8 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
         if (v > 1.0e5)
             throw InvalidInput("duration", "must be at most 100000 s");
     }, this);
-    duration->setToolTip(tr("0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle"));
+    duration->setToolTip(tr("0 = automatic: tf for a cubic, one revolution plus the ramp-in for a "
+                            "circle; a G-code program always runs its feed profile's time"));
     duration->setProperty("normalToolTip", duration->toolTip());
     fields_.insert("dt", dt);
     fields_.insert("duration", duration);
@@ -96,9 +110,163 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
 
 NumberField* TrajectoryEditor::field(const QString& name) const { return fields_.value(name); }
 
+namespace {
+
+int kindIndex(TrajectoryKind kind) {
+    switch (kind) {
+    case TrajectoryKind::Cubic:
+        return 0;
+    case TrajectoryKind::Circle:
+        return 1;
+    case TrajectoryKind::Gcode:
+        break;
+    }
+    return 2;
+}
+
+TrajectoryKind kindAt(int index) {
+    return index == 0 ? TrajectoryKind::Cubic : index == 1 ? TrajectoryKind::Circle : TrajectoryKind::Gcode;
+}
+
+} // namespace
+
+QWidget* TrajectoryEditor::buildProgramPage() {
+    auto* page = new QWidget(pages_);
+    auto* form = new QFormLayout(page);
+    form->setContentsMargins(0, 0, 0, 0);
+    auto* fileRow = new QHBoxLayout;
+    programField_ = new QLineEdit(page);
+    programField_->setReadOnly(true);
+    programField_->setAccessibleName(tr("G-code program"));
+    programField_->setPlaceholderText(tr("no program"));
+    open_ = new QPushButton(tr("Open…"), page);
+    open_->setToolTip(tr("Read a G-code program (.nc); it is kept in the session"));
+    fileRow->addWidget(programField_, 1);
+    fileRow->addWidget(open_);
+    form->addRow(tr("Program"), fileRow);
+    examples_ = new QComboBox(page);
+    examples_->setAccessibleName(tr("Example programs"));
+    examples_->addItem(tr("Examples…"));
+    const QString folder = examplesFolder();
+    if (!folder.isEmpty())
+        for (const QString& name : QDir(folder).entryList({"*.nc"}, QDir::Files, QDir::Name))
+            examples_->addItem(name, QDir(folder).filePath(name));
+    form->addRow(QString(), examples_);
+    summary_ = new QLabel(page);
+    summary_->setWordWrap(true);
+    form->addRow(summary_);
+    auto addField = [&](const QString& name, const QString& label, NumberField::Validator v) {
+        auto* f = new NumberField(name, std::move(v), page);
+        fields_.insert(name, f);
+        form->addRow(label, f);
+    };
+    addField("feed_scale", tr("Feed scale"), [](double v) { requirePositive(v, "feed_scale"); });
+    addField("max_accel", tr("Max accel. (mm/s²)"), [](double v) { requirePositive(v, "max_accel"); });
+    addField("max_jerk", tr("Max jerk (mm/s³)"), [](double v) {
+        requireFinite(v, "max_jerk");
+        if (v < 0)
+            throw InvalidInput("max_jerk", "must be >= 0 (0 = none)");
+    });
+    fields_["max_jerk"]->setToolTip(tr("0 = no jerk limit (a trapezoidal profile)"));
+    connect(open_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Open a G-code program"), examplesFolder(),
+            tr("G-code programs (*.nc *.ngc *.gcode *.tap);;All files (*)"));
+        if (!path.isEmpty())
+            loadProgramFile(path);
+    });
+    connect(examples_, &QComboBox::activated, this, [this](int index) {
+        const QString path = examples_->itemData(index).toString();
+        examples_->setCurrentIndex(0);
+        if (!path.isEmpty())
+            loadProgramFile(path);
+    });
+    return page;
+}
+
+QString TrajectoryEditor::examplesFolder() {
+    const QString installed = QDir(QCoreApplication::applicationDirPath()).filePath("../share/xytune/examples");
+    for (const QString& folder : {installed, QStringLiteral(XYT_EXAMPLES_SOURCE_DIR)})
+        if (QFileInfo(folder).isDir())
+            return QDir(folder).absolutePath();
+    return QString();
+}
+
+bool TrajectoryEditor::loadProgramFile(const QString& path) {
+    const QString name = QFileInfo(path).fileName();
+    std::string text;
+    try {
+        text = readRegularFile(path.toStdString(), kMaxProgramBytes);
+    } catch (const std::exception& e) {
+        const QString message = tr("%1: %2").arg(name, QString::fromStdString(e.what()));
+        markFieldError(programField_, message);
+        summary_->setText(message);
+        return false;
+    }
+    return loadProgramText(name, text);
+}
+
+bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::string& text) {
+    TrajectorySettings t = current_;
+    t.kind = TrajectoryKind::Gcode;
+    t.gcode.fileName = fileName.toStdString();
+    t.gcode.program = text;
+    try {
+        const ProgramSummary summary = summarizeProgram(t);
+        const double samples = summary.runSeconds / t.dtSeconds + 1.0;
+        if (!(samples <= static_cast<double>(sampleLimit())))
+            throw InvalidInput("trajectory.dt", QString("a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory")
+                                                    .arg(summary.runSeconds, 0, 'g', 6)
+                                                    .arg(t.dtSeconds, 0, 'g', 6)
+                                                    .arg(samples, 0, 'g', 3)
+                                                    .arg(static_cast<double>(sampleLimit()), 0, 'g', 3)
+                                                    .toStdString());
+    } catch (const InvalidInput& e) {
+        // The session keeps its trajectory; the error is shown at the program field.
+        const QString message = tr("%1: %2").arg(fileName, QString::fromStdString(e.what()));
+        markFieldError(programField_, message);
+        summary_->setText(message);
+        return false;
+    }
+    clearFieldError(programField_, QString());
+    current_ = t;
+    setTrajectory(t);
+    emit trajectoryEdited(t);
+    return true;
+}
+
+void TrajectoryEditor::showProgram(const TrajectorySettings& t) {
+    programField_->setText(QString::fromStdString(t.gcode.fileName));
+    programField_->setCursorPosition(0); // the name's start when it is wider than the field
+    programField_->setToolTip(QString::fromStdString(t.gcode.fileName));
+    if (t.gcode.program.empty()) {
+        summary_->setText(tr("Open a program or pick an example."));
+        return;
+    }
+    try {
+        const ProgramSummary s = summarizeProgram(t);
+        QString text = tr("%n motion block(s), %1 mm, run %2 s", nullptr, static_cast<int>(s.moves))
+                           .arg(s.lengthMm, 0, 'f', 1)
+                           .arg(s.runSeconds, 0, 'f', 2);
+        if (s.corners > 0)
+            text += tr(", %n sharp corner(s)", nullptr, static_cast<int>(s.corners));
+        if (s.singleFullCircle)
+            text += tr("; one full circle: ISO 230-4 test");
+        if (!s.warnings.empty())
+            text += tr("; %n warning(s)", nullptr, static_cast<int>(s.warnings.size()));
+        summary_->setText(text);
+        QStringList warnings;
+        for (const std::string& w : s.warnings)
+            warnings << QString::fromStdString(w);
+        summary_->setToolTip(warnings.join('\n'));
+    } catch (const InvalidInput& e) {
+        summary_->setText(QString::fromStdString(e.what()));
+    }
+}
+
 void TrajectoryEditor::setTrajectory(const TrajectorySettings& t) {
     current_ = t;
-    const int index = t.kind == TrajectoryKind::Cubic ? 0 : 1;
+    const int index = kindIndex(t.kind);
     kind_->setCurrentIndex(index);
     pages_->setCurrentIndex(index);
     fields_["x0"]->setValue(t.x0);
@@ -112,6 +280,10 @@ void TrajectoryEditor::setTrajectory(const TrajectorySettings& t) {
     fields_["ramp_in"]->setValue(t.rampInSeconds);
     fields_["dt"]->setValue(t.dtSeconds);
     fields_["duration"]->setValue(t.durationSeconds);
+    fields_["feed_scale"]->setValue(t.gcode.feedScale);
+    fields_["max_accel"]->setValue(t.gcode.maxAccelMmPerS2);
+    fields_["max_jerk"]->setValue(t.gcode.maxJerkMmPerS3);
+    showProgram(t);
 }
 
 void TrajectoryEditor::emitIfValid() {
@@ -119,7 +291,7 @@ void TrajectoryEditor::emitIfValid() {
         if (f->hasError())
             return;
     TrajectorySettings t = current_;
-    t.kind = kind_->currentIndex() == 0 ? TrajectoryKind::Cubic : TrajectoryKind::Circle;
+    t.kind = kindAt(kind_->currentIndex());
     t.x0 = fields_["x0"]->value();
     t.xf = fields_["xf"]->value();
     t.t0Seconds = fields_["t0"]->value();
@@ -131,6 +303,25 @@ void TrajectoryEditor::emitIfValid() {
     t.rampInSeconds = fields_["ramp_in"]->value();
     t.dtSeconds = fields_["dt"]->value();
     t.durationSeconds = fields_["duration"]->value();
+    t.gcode.feedScale = fields_["feed_scale"]->value();
+    t.gcode.maxAccelMmPerS2 = fields_["max_accel"]->value();
+    t.gcode.maxJerkMmPerS3 = fields_["max_jerk"]->value();
+    if (t.kind == TrajectoryKind::Gcode) {
+        if (t.gcode.program.empty()) {
+            markFieldError(programField_, tr("no program: open one or pick an example"));
+            return;
+        }
+        // A profile option the planner refuses is shown at its field, never applied.
+        try {
+            summarizeProgram(t);
+        } catch (const InvalidInput& e) {
+            const QString field = QString::fromStdString(e.field()).section('.', -1);
+            markFieldError(fields_.contains(field) ? fields_[field] : static_cast<QLineEdit*>(programField_),
+                           QString::fromStdString(e.what()));
+            return;
+        }
+        clearFieldError(programField_, QString::fromStdString(t.gcode.fileName));
+    }
     if (t.kind == TrajectoryKind::Cubic && !(t.tfSeconds > t.t0Seconds)) {
         markFieldError(fields_["tf"], tr("tf: must be later than t0"));
         return;
@@ -139,7 +330,7 @@ void TrajectoryEditor::emitIfValid() {
     // A run that cannot fit in memory is refused at the field the user just edited (dt unless it
     // was a time field), naming the count, never simulated.
     auto* edited = qobject_cast<NumberField*>(sender());
-    NumberField* blamed = edited && QStringList{"duration", "tf", "t0", "dt"}.contains(edited->accessibleName())
+    NumberField* blamed = edited && QStringList{"duration", "tf", "t0", "dt", "feed_scale", "max_accel", "max_jerk"}.contains(edited->accessibleName())
                               ? edited
                               : fields_["dt"];
     const double samples = t.effectiveDurationSeconds() / t.dtSeconds + 1.0;
@@ -152,12 +343,14 @@ void TrajectoryEditor::emitIfValid() {
                                    .arg(static_cast<double>(sampleLimit()), 0, 'g', 3));
         return;
     }
-    for (const char* name : {"duration", "tf", "t0", "dt"})
+    for (const char* name : {"duration", "tf", "t0", "dt", "feed_scale", "max_accel", "max_jerk"})
         if (!fields_[name]->hasError())
             clearFieldError(fields_[name], fields_[name]->property("normalToolTip").toString());
     if (t == current_)
         return;
     current_ = t;
+    if (t.kind == TrajectoryKind::Gcode)
+        showProgram(t);
     emit trajectoryEdited(t);
 }
 

@@ -5,15 +5,22 @@
 
 #include <QWidget>
 
+#include <cstddef>
+#include <string>
+
 class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
 class QStackedWidget;
 
 namespace xyt::ui {
 
 class NumberField;
 
-/// Editor of the commanded motion: cubic point-to-point (x0, xf, t0, tf, v0, vf) or circle
-/// (radius, omega, ramp-in), plus the simulation step and duration.
+/// Editor of the commanded motion: cubic point-to-point (x0, xf, t0, tf, v0, vf), circle
+/// (radius, omega, ramp-in) or a G-code program (opened from a file or the examples; feed
+/// scale, maximum acceleration and jerk), plus the simulation step and duration.
 class TrajectoryEditor : public QWidget {
     Q_OBJECT
 public:
@@ -23,15 +30,42 @@ public:
     QComboBox* kindBox() const { return kind_; }
     NumberField* field(const QString& name) const;
 
+    /// The most bytes of a program held in a session: 4 MiB, so that the session file (which
+    /// embeds the program) stays within kMaxSessionFileBytes.
+    static constexpr std::size_t kMaxProgramBytes = 4u * 1024u * 1024u;
+    /**
+     * Reads the program at @p path (bounded, regular files only) and, when it reads and plans,
+     * makes it the trajectory (kind G-code) and emits trajectoryEdited. A file or program error
+     * is shown at the program field (programField()) and nothing changes. The Open button and
+     * the examples box call this.
+     */
+    bool loadProgramFile(const QString& path);
+    /// The same with the text given (@p fileName is shown).
+    bool loadProgramText(const QString& fileName, const std::string& text);
+    /// The folder of the example programs (installed beside the executable, else the source
+    /// tree's resources/examples); empty when none exists.
+    static QString examplesFolder();
+
+    QLineEdit* programField() const { return programField_; }
+    QLabel* programSummary() const { return summary_; }
+    QComboBox* examplesBox() const { return examples_; }
+    QPushButton* openButton() const { return open_; }
+
 signals:
     void trajectoryEdited(const TrajectorySettings& trajectory);
 
 private:
     void emitIfValid();
+    void showProgram(const TrajectorySettings& t);
+    QWidget* buildProgramPage();
 
     QComboBox* kind_;
     QStackedWidget* pages_;
     QMap<QString, NumberField*> fields_;
+    QLineEdit* programField_ = nullptr;
+    QLabel* summary_ = nullptr;
+    QComboBox* examples_ = nullptr;
+    QPushButton* open_ = nullptr;
     TrajectorySettings current_;
 };
 

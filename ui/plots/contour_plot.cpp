@@ -1,33 +1,91 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/contour_plot.h"
 
+#include "ui/plots/contour_points.h"
+#include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_tools.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt::ui {
+
+namespace {
+
+QCPCurve* newCurve(QCustomPlot* plot, const QPen& pen, const QString& name) {
+    auto* c = new QCPCurve(plot->xAxis, plot->yAxis);
+    c->setPen(pen);
+    c->setName(name);
+    return c;
+}
+
+void setPoints(QCPCurve* curve, const XyPoints& p) { curve->setData(p.x, p.y); }
+
+/// The colours of the error bands, from small to large |e| (the base curve is the first).
+const std::array<QColor, 4> kBandColors = {QColor(0x2e, 0x7d, 0x32), QColor(0xc0, 0x9a, 0x00),
+                                           QColor(0xef, 0x6c, 0x00), QColor(0xc6, 0x28, 0x28)};
+constexpr std::array<double, 3> kBandFractions = {0.25, 0.5, 0.75};
+
+QString mm(double v) { return QString::number(v, 'f', 4); }
+
+} // namespace
 
 ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("xy-contour");
     plotLayout()->insertRow(0);
     figures_ = new QCPTextElement(this, QString(), QFont(font().family(), 9));
+    reserveTitleRoom(0);
     plotLayout()->addElement(0, 0, figures_);
     styleAxisRect(axisRect());
     xAxis->setLabel(tr("x (mm)"));
     yAxis->setLabel(tr("y (mm)"));
-    commanded_ = new QCPCurve(xAxis, yAxis);
-    commanded_->setPen(QPen(colors::reference, 1.2, Qt::DashLine));
-    commanded_->setName(tr("commanded"));
-    traced_ = new QCPCurve(xAxis, yAxis);
-    traced_->setPen(QPen(colors::output, 1.8));
-    traced_->setName(tr("traced"));
-    magnified_ = new QCPCurve(xAxis, yAxis);
-    magnified_->setPen(QPen(colors::error, 1.2));
+    commanded_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DashLine), tr("commanded"));
+    traced_ = newCurve(this, QPen(colors::output, 1.8), tr("traced"));
+    magnified_ = newCurve(this, QPen(colors::error, 1.2), QString());
+    for (std::size_t b = 0; b < bands_.size(); ++b)
+        bands_[b] = newCurve(this, QPen(kBandColors[b + 1], 2.0), QString());
+    reverse_ = newCurve(this, QPen(colors::axisY, 1.2), QString());
+    fMax_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), tr("F max/min"));
+    fMin_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), QString());
+    gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (LS centre)"));
+    gInner_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), QString());
+    corners_ = addGraph();
+    corners_->setLineStyle(QCPGraph::lsNone);
+    corners_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, colors::reference, 6));
+    corners_->setName(tr("sharp corners"));
+    worst_ = addGraph();
+    worst_->setLineStyle(QCPGraph::lsNone);
+    worst_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5), QColor(0xc6, 0x28, 0x28), 9));
+    worst_->setName(tr("largest error"));
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
     legend->setBrush(QColor(255, 255, 255, 210));
-    axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    // A program's legend has up to nine entries: in rows of four above the plot, not over
+    // the path.
+    axisRect()->insetLayout()->take(legend);
+    axisRect()->insetLayout()->simplify();
+    plotLayout()->insertRow(1);
+    plotLayout()->addElement(1, 0, legend);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    legend->setWrap(4);
+    legend->setBorderPen(Qt::NoPen);
+    legend->setRowSpacing(0);
+    legend->setMargins(QMargins(4, 0, 4, 0));
+    plotLayout()->setRowStretchFactor(1, 0.001);
+    notice_ = std::make_unique<PlotNotice>(this, axisRect(), Qt::AlignBottom | Qt::AlignLeft);
     setupInteractivePlot(this);
+}
+
+ContourPlot::~ContourPlot() = default;
+
+void ContourPlot::reserveTitleRoom(int px) {
+    // The right end of the title row holds the corner and ballbar buttons (ContourControls);
+    // the title is centred in the rest.
+    const QMargins margins(4, 4, 4 + std::max(0, px), 4);
+    if (figures_->margins() == margins)
+        return;
+    figures_->setMargins(margins);
+    replot(QCustomPlot::rpQueuedReplot);
 }
 
 void ContourPlot::setMagnification(double factor) {
@@ -37,26 +95,90 @@ void ContourPlot::setMagnification(double factor) {
     redraw();
 }
 
-void ContourPlot::showSession(const Session& session, const SessionEvaluation& evaluation) {
-    session_ = session;
-    evaluation_ = evaluation;
-    hasData_ = true;
+void ContourPlot::setPolar(bool polar) {
+    if (polar == polar_)
+        return;
+    polar_ = polar;
+    corner_ = -1;
     redraw();
     fitEqualScale();
     replot(QCustomPlot::rpQueuedReplot);
 }
 
+bool ContourPlot::polarAvailable() const {
+    return hasData_ && evaluation_.program && evaluation_.program->circular.has_value();
+}
+
+int ContourPlot::cornerCount() const {
+    return hasData_ && evaluation_.program && !polar() ? static_cast<int>(evaluation_.program->contour.corners.size()) : 0;
+}
+
+QString ContourPlot::figuresText() const { return figures_->text(); }
+QString ContourPlot::noticeText() const { return notice_->text(); }
+
+void ContourPlot::showSession(const Session& session, const SessionEvaluation& evaluation,
+                              const QStringList& notices) {
+    session_ = session;
+    evaluation_ = evaluation;
+    notices_ = notices;
+    hasData_ = true;
+    redraw();
+    if (corner_ >= 0 && corner_ < cornerCount())
+        zoomToCorner(corner_);
+    else
+        fitAll();
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void ContourPlot::clearCurves() {
+    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_, fMax_, fMin_, gInner_, gOuter_})
+        c->data()->clear();
+    for (QCPCurve* c : bands_)
+        c->data()->clear();
+    worst_->data()->clear();
+    corners_->data()->clear();
+}
+
 void ContourPlot::redraw() {
-    commanded_->data()->clear();
-    traced_->data()->clear();
-    magnified_->data()->clear();
+    clearCurves();
+    QStringList notices = notices_;
     const auto& x = evaluation_.axes[0];
     const auto& y = evaluation_.axes[1];
+    magnified_->setPen(QPen(colors::error, 1.2));
     if (!hasData_ || !x.ok || !y.ok) {
         figures_->setText(tr("XY contour: an axis could not be simulated"));
-        replot(QCustomPlot::rpQueuedReplot);
-        return;
+    } else if (session_.trajectory.kind == TrajectoryKind::Gcode && !evaluation_.program) {
+        figures_->setText(tr("XY contour: the program could not be run"));
+        notices << QString::fromStdString(evaluation_.programError);
+    } else if (evaluation_.program) {
+        for (const std::string& w : evaluation_.program->warnings)
+            notices << QString::fromStdString(w);
+        if (polar())
+            drawCircularTest();
+        else
+            drawProgram();
+    } else {
+        drawPresetRun();
     }
+    notice_->setLines(notices);
+    // The legend lists what is drawn, in the order of the plottables.
+    legend->clearItems();
+    for (int i = 0; i < plottableCount(); ++i) {
+        QCPAbstractPlottable* p = plottable(i);
+        bool empty = true;
+        if (auto* c = qobject_cast<QCPCurve*>(p))
+            empty = c->data()->isEmpty();
+        else if (auto* g = qobject_cast<QCPGraph*>(p))
+            empty = g->data()->isEmpty();
+        if (!empty && !p->name().isEmpty())
+            p->addToLegend();
+    }
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
+void ContourPlot::drawPresetRun() {
+    const auto& x = evaluation_.axes[0];
+    const auto& y = evaluation_.axes[1];
     const std::vector<double> yr = resampleLinear(y.run.t, y.run.r, x.run.t);
     const std::vector<double> yy = resampleLinear(y.run.t, y.run.y, x.run.t);
     const bool circle = session_.trajectory.kind == TrajectoryKind::Circle;
@@ -86,27 +208,122 @@ void ContourPlot::redraw() {
             my[i] = cy[i] + magnification_ * (ty[i] - cy[i]);
         }
     }
+    commanded_->setName(tr("commanded"));
     commanded_->setData(t, cx, cy, true);
     traced_->setData(t, tx, ty, true);
     magnified_->setData(t, mx, my, true);
     magnified_->setName(tr("error × %1").arg(magnification_));
     if (evaluation_.contour)
         figures_->setText(tr("Contour error (radial, after the ramp-in): max %1 mm, RMS %2 mm")
-                              .arg(evaluation_.contour->maxAbs, 0, 'f', 4)
-                              .arg(evaluation_.contour->rms, 0, 'f', 4));
+                              .arg(mm(evaluation_.contour->maxAbs), mm(evaluation_.contour->rms)));
     else
         figures_->setText(tr("Tracking error: max |e_x| %1 mm, max |e_y| %2 mm")
-                              .arg(x.metrics.maxAbsError, 0, 'f', 4)
-                              .arg(y.metrics.maxAbsError, 0, 'f', 4));
+                              .arg(mm(x.metrics.maxAbsError), mm(y.metrics.maxAbsError)));
+}
+
+void ContourPlot::drawProgram() {
+    const ContourRun& run = *evaluation_.program;
+    const Path& path = *evaluation_.programPath;
+    const ContourErrorResult& c = run.contour;
+    commanded_->setName(tr("programmed"));
+    setPoints(commanded_, programmedPathPoints(path));
+    traced_->setData(QVector<double>(run.trace.x.begin(), run.trace.x.end()),
+                     QVector<double>(run.trace.y.begin(), run.trace.y.end()));
+    const XyPoints magnified = magnifiedContourPoints(path, c, magnification_);
+    setPoints(magnified_, magnified);
+    magnified_->setPen(QPen(kBandColors[0], 1.2));
+    magnified_->setName(tr("error × %1, |e| (mm) < %2")
+                            .arg(magnification_)
+                            .arg(QString::number(kBandFractions[0] * c.maxAbs, 'g', 3)));
+    for (std::size_t b = 0; b < bands_.size(); ++b) {
+        const double threshold = kBandFractions[b] * c.maxAbs;
+        XyPoints band;
+        for (qsizetype k = 0; k < magnified.x.size(); ++k) {
+            const bool in = c.maxAbs > 0.0 && std::abs(c.error[static_cast<std::size_t>(k)]) >= threshold;
+            band.x.append(in ? magnified.x[k] : qQNaN());
+            band.y.append(in ? magnified.y[k] : qQNaN());
+        }
+        setPoints(bands_[b], band);
+        bands_[b]->setName(tr("≥ %1").arg(QString::number(threshold, 'g', 3)));
+    }
+    if (c.measuredSamples > 0) // the traced point, which stays in view at any magnification
+        worst_->setData({c.maxPoint.x}, {c.maxPoint.y});
+    QVector<double> cornerX, cornerY;
+    for (const CornerOvershoot& corner : c.corners) {
+        cornerX.append(corner.corner.x);
+        cornerY.append(corner.corner.y);
+    }
+    corners_->setData(cornerX, cornerY);
+    QString text = tr("Contour error max %1, RMS %2 mm")
+                       .arg(QString::number(c.maxAbs, 'g', 3), QString::number(c.rms, 'g', 3));
+    if (corner_ >= 0 && corner_ < static_cast<int>(c.corners.size())) {
+        const CornerOvershoot& corner = c.corners[static_cast<std::size_t>(corner_)];
+        text += corner.samples > 0 ? tr("; corner %1/%2: %3 mm")
+                                         .arg(corner_ + 1)
+                                         .arg(c.corners.size())
+                                         .arg(QString::number(corner.maxAbsError, 'g', 3))
+                                   : tr("; corner %1/%2: no sample near it").arg(corner_ + 1).arg(c.corners.size());
+    } else if (!c.corners.empty()) {
+        text += tr("; %n corner(s)", nullptr, static_cast<int>(c.corners.size()));
+    }
+    figures_->setText(text);
+}
+
+void ContourPlot::drawCircularTest() {
+    const ContourCircularTest& test = *evaluation_.program->circular;
+    const Iso230Circular& iso = test.iso;
+    const NominalCircle& n = test.nominal;
+    const double m = magnification_;
+    commanded_->setName(tr("nominal"));
+    setPoints(commanded_, circlePoints(n.centre, n.radius));
+    const QString forward = test.clockwise ? tr("CW run") : tr("CCW run");
+    const QString backward = test.clockwise ? tr("CCW run") : tr("CW run");
+    setPoints(magnified_, polarDeviationPoints(test.x, test.y, n, m));
+    magnified_->setPen(QPen(colors::output, 1.4));
+    magnified_->setName(tr("%1 ×%2").arg(forward).arg(m));
+    setPoints(reverse_, polarDeviationPoints(test.reverseX, test.reverseY, n, m));
+    reverse_->setName(tr("%1 ×%2").arg(backward).arg(m));
+    setPoints(fMax_, circlePoints(n.centre, n.radius + m * iso.radialDeviationFMax));
+    setPoints(fMin_, circlePoints(n.centre, n.radius + m * iso.radialDeviationFMin));
+    const Point2 lsCentre = n.centre + m * (iso.leastSquares.centre - n.centre);
+    setPoints(gOuter_, circlePoints(lsCentre, n.radius + m * (iso.maxRadiusAboutLeastSquares - n.radius)));
+    setPoints(gInner_, circlePoints(lsCentre, n.radius + m * (iso.minRadiusAboutLeastSquares - n.radius)));
+    QString text = tr("ISO 230-4 (mm): G %1, F max %2, F min %3")
+                       .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax), mm(iso.radialDeviationFMin));
+    if (iso.hysteresisH)
+        text += tr(", H %1").arg(mm(*iso.hysteresisH));
+    figures_->setText(text);
+}
+
+bool ContourPlot::zoomToCorner(int index) {
+    if (index < 0 || index >= cornerCount())
+        return false;
+    corner_ = index;
+    redraw(); // the figures name the corner
+    showCornerBox();
     replot(QCustomPlot::rpQueuedReplot);
+    emit cornerChanged(corner_, cornerCount());
+    return true;
+}
+
+void ContourPlot::fitAll() {
+    const bool changed = corner_ != -1;
+    corner_ = -1;
+    if (changed)
+        redraw();
+    fitEqualScale();
+    replot(QCustomPlot::rpQueuedReplot);
+    emit cornerChanged(-1, cornerCount());
 }
 
 void ContourPlot::fitEqualScale() {
     // Fit the commanded and traced paths with one scale (mm per pixel) on both axes, so a
-    // circle looks round.
+    // circle looks round; the polar view fits its magnified runs too.
     bool found = false;
     QCPRange xr, yr;
-    for (QCPCurve* c : {commanded_, traced_}) {
+    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_}) {
+        if (!polar() && (c == magnified_ || c == reverse_))
+            continue;
         bool okX = false, okY = false;
         const QCPRange cx = c->getKeyRange(okX);
         const QCPRange cy = c->getValueRange(okY);
@@ -116,17 +333,34 @@ void ContourPlot::fitEqualScale() {
         yr = found ? QCPRange(std::min(yr.lower, cy.lower), std::max(yr.upper, cy.upper)) : cy;
         found = true;
     }
+    if (found)
+        showBox(xr.lower, xr.upper, yr.lower, yr.upper);
+}
+
+void ContourPlot::showBox(double minX, double maxX, double minY, double maxY) {
     const double w = axisRect()->width(), h = axisRect()->height();
-    if (!found || w <= 0 || h <= 0)
+    if (w <= 0 || h <= 0)
         return;
-    const double span = std::max({xr.size() / w, yr.size() / h, 1e-9}) * 1.12;
-    xAxis->setRange(xr.center(), span * w, Qt::AlignCenter);
-    yAxis->setRange(yr.center(), span * h, Qt::AlignCenter);
+    const double span = std::max({(maxX - minX) / w, (maxY - minY) / h, 1e-9}) * 1.12;
+    xAxis->setRange((minX + maxX) / 2.0, span * w, Qt::AlignCenter);
+    yAxis->setRange((minY + maxY) / 2.0, span * h, Qt::AlignCenter);
 }
 
 void ContourPlot::resizeEvent(QResizeEvent* event) {
     QCustomPlot::resizeEvent(event);
-    fitEqualScale();
+    if (corner_ >= 0 && corner_ < cornerCount())
+        showCornerBox();
+    else
+        fitEqualScale();
+}
+
+void ContourPlot::showCornerBox() {
+    const ContourErrorResult& contour = evaluation_.program->contour;
+    const CornerOvershoot& c = contour.corners[static_cast<std::size_t>(corner_)];
+    // The corner's magnified error, and the traced path however far it cuts the corner (the
+    // largest error of the run), at least 1 mm each way.
+    const double half = std::max({1.0, 1.5 * magnification_ * c.maxAbsError, 1.5 * contour.maxAbs});
+    showBox(c.corner.x - half, c.corner.x + half, c.corner.y - half, c.corner.y + half);
 }
 
 } // namespace xyt::ui

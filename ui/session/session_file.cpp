@@ -4,6 +4,8 @@
 #include "core/model/coefficient_parser.h"
 #include "core/io/file_io.h"
 #include "core/io/json_duplicate_keys.h"
+#include "core/model/errors.h"
+#include "core/session/program_trajectory.h"
 #include "core/simulation/trajectory.h"
 
 #include <QJsonArray>
@@ -137,12 +139,29 @@ QJsonObject axisToJson(const AxisSettings& a) {
     };
 }
 
+QString trajectoryKindName(TrajectoryKind kind) {
+    switch (kind) {
+    case TrajectoryKind::Cubic:
+        return QStringLiteral("cubic");
+    case TrajectoryKind::Circle:
+        return QStringLiteral("circle");
+    case TrajectoryKind::Gcode:
+        break;
+    }
+    return QStringLiteral("gcode");
+}
+
 QJsonObject trajectoryToJson(const TrajectorySettings& t) {
-    return {{"kind", t.kind == TrajectoryKind::Cubic ? "cubic" : "circle"},
+    return {{"kind", trajectoryKindName(t.kind)},
             {"cubic", QJsonObject{{"x0", t.x0}, {"xf", t.xf}, {"t0", t.t0Seconds},
                                   {"tf", t.tfSeconds}, {"v0", t.v0}, {"vf", t.vf}}},
             {"circle", QJsonObject{{"radius", t.radius}, {"omega", t.omegaRadPerSec},
                                    {"ramp_in", t.rampInSeconds}}},
+            {"gcode", QJsonObject{{"file", QString::fromStdString(t.gcode.fileName)},
+                                  {"program", QString::fromStdString(t.gcode.program)},
+                                  {"feed_scale", t.gcode.feedScale},
+                                  {"max_accel", t.gcode.maxAccelMmPerS2},
+                                  {"max_jerk", t.gcode.maxJerkMmPerS3}}},
             {"duration", t.durationSeconds},
             {"dt", t.dtSeconds}};
 }
@@ -204,8 +223,11 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.kind = TrajectoryKind::Cubic;
     else if (kind == "circle")
         t.kind = TrajectoryKind::Circle;
+    else if (kind == "gcode")
+        t.kind = TrajectoryKind::Gcode;
     else
-        throw FormatError{join(r.path(), "kind"), QStringLiteral("must be \"cubic\" or \"circle\"")};
+        throw FormatError{join(r.path(), "kind"),
+                          QStringLiteral("must be \"cubic\", \"circle\" or \"gcode\"")};
     {
         ObjectReader c = r.child("cubic");
         t.x0 = c.number("x0");
@@ -227,13 +249,37 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             throw FormatError{join(c.path(), "ramp_in"), QStringLiteral("must be >= 0")};
         c.finish();
     }
+    // Files written before issue 13 have no "gcode" object (and cannot be of that kind).
+    if (r.has("gcode") || t.kind == TrajectoryKind::Gcode) {
+        ObjectReader g = r.child("gcode");
+        t.gcode.fileName = g.string("file").toStdString();
+        t.gcode.program = g.string("program").toStdString();
+        t.gcode.feedScale = g.positive("feed_scale");
+        t.gcode.maxAccelMmPerS2 = g.positive("max_accel");
+        t.gcode.maxJerkMmPerS3 = g.number("max_jerk");
+        if (t.gcode.maxJerkMmPerS3 < 0)
+            throw FormatError{join(g.path(), "max_jerk"), QStringLiteral("must be >= 0 (0 = none)")};
+        g.finish();
+    }
     t.durationSeconds = r.number("duration");
     if (t.durationSeconds < 0)
         throw FormatError{join(r.path(), "duration"), QStringLiteral("must be >= 0 (0 = automatic)")};
     t.dtSeconds = r.positive("dt");
+    if (t.kind == TrajectoryKind::Gcode) {
+        // The program, its profile and its sample count, named by the session path
+        // ("trajectory.gcode.program: line 12: unknown word G5 at column 4").
+        try {
+            programRunSeconds(t);
+        } catch (const InvalidInput& e) {
+            // The core names "trajectory.<field>"; a snapshot's trajectory has its own path.
+            QString field = QString::fromStdString(e.field());
+            field.remove(0, field.indexOf('.') + 1);
+            throw FormatError{join(r.path(), field), QString::fromStdString(e.reason())};
+        }
+    }
     const double samples = std::floor(t.effectiveDurationSeconds() / t.dtSeconds) + 1.0;
     if (!(samples <= static_cast<double>(sampleLimit()))) // the limit follows the memory (trajectory.h)
-        throw FormatError{join(r.path(), "duration"),
+        throw FormatError{join(r.path(), t.kind == TrajectoryKind::Gcode ? "dt" : "duration"),
                           QStringLiteral("needs %1 samples at this dt; the limit is %2 on this machine")
                               .arg(samples, 0, 'g', 3)
                               .arg(sampleLimit())};

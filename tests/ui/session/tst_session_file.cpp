@@ -30,6 +30,10 @@ private slots:
     void malformed();
     void unknownFieldsAreReported();
     void filesWithoutMarginMinimaLoad();
+    void roundTripGcode();
+    void filesWithoutGcodeLoad();
+    void badGcodeFields_data();
+    void badGcodeFields();
     void newerVersionIsRefused();
     void fileErrors();
     void failedSaveKeepsOldFile();
@@ -118,6 +122,95 @@ void TstSessionFile::roundTripEveryField() {
     const auto r = loadSessionFile(path);
     QVERIFY2(r.ok, qPrintable(r.message()));
     QVERIFY(r.session == s); // doubles survive exactly: Qt writes the shortest round-trip form
+}
+
+namespace {
+
+/// A session of the G-code kind: the square example's first lines (issue 13).
+Session gcodeSession() {
+    Session s = Session::paperDefault();
+    s.trajectory.kind = TrajectoryKind::Gcode;
+    s.trajectory.gcode.fileName = "square.nc";
+    s.trajectory.gcode.program = "G21 G90\nG1 X10 Y0 F600\nX10 Y10\nG3 X0 Y10 I-5 J0 (half circle)\n";
+    s.trajectory.gcode.feedScale = 1.25;
+    s.trajectory.gcode.maxAccelMmPerS2 = 750.5;
+    s.trajectory.gcode.maxJerkMmPerS3 = 20000.0;
+    s.trajectory.dtSeconds = 0.002;
+    return s;
+}
+
+} // namespace
+
+void TstSessionFile::roundTripGcode() {
+    // Invariant: load(save(s)) == s with the program text embedded (the session is complete
+    // without the .nc file), in the session and in a snapshot.
+    Session s = gcodeSession();
+    s.snapshots.push_back(s.snapshot("program"));
+    const QJsonObject json = sessionToJson(s);
+    QCOMPARE(json["trajectory"].toObject()["kind"].toString(), QString("gcode"));
+    QCOMPARE(json["trajectory"].toObject()["gcode"].toObject()["program"].toString(),
+             QString::fromStdString(s.trajectory.gcode.program));
+    const auto r = sessionFromBytes(QJsonDocument(json).toJson());
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s);
+    QVERIFY(r.warnings.isEmpty());
+}
+
+void TstSessionFile::filesWithoutGcodeLoad() {
+    // Files written before issue 13 have no trajectory.gcode: they load with its defaults.
+    QJsonObject root = defaultJson();
+    root = setPath(root, {"trajectory", "gcode"}, QJsonValue(QJsonValue::Undefined)).toObject();
+    QVERIFY(!root["trajectory"].toObject().contains("gcode"));
+    const auto r = sessionFromJson(root);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == Session::paperDefault());
+    QVERIFY(r.session.trajectory.gcode == GcodeTrajectory{});
+    // ... but a file of the G-code kind must have it.
+    root = setPath(root, {"trajectory", "kind"}, "gcode").toObject();
+    const auto missing = sessionFromJson(root);
+    QVERIFY(!missing.ok);
+    QCOMPARE(missing.errorPath, QString("trajectory.gcode"));
+}
+
+void TstSessionFile::badGcodeFields_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("expectedPath");
+    QTest::addColumn<QString>("expectedReason");
+    // The reasons of the program rows are the G-code reader's (gcode_reader.h), with its line.
+    QTest::newRow("unknown word") << "trajectory.gcode.program" << QJsonValue("G21\nG1 X1 F100\nG5 X2\n")
+                                  << "trajectory.gcode.program" << "line 3: unknown word G5 at column 1";
+    QTest::newRow("arc off its circle") << "trajectory.gcode.program"
+                                        << QJsonValue("G1 X10 F100\nG2 X20 Y0 I4 J0\n")
+                                        << "trajectory.gcode.program" << "line 2:";
+    QTest::newRow("no motion") << "trajectory.gcode.program" << QJsonValue("G21 G90\n")
+                               << "trajectory.gcode.program" << "";
+    QTest::newRow("program not a string") << "trajectory.gcode.program" << QJsonValue(3)
+                                          << "trajectory.gcode.program" << "must be a string";
+    QTest::newRow("feed scale zero") << "trajectory.gcode.feed_scale" << QJsonValue(0)
+                                     << "trajectory.gcode.feed_scale" << "must be greater than zero";
+    QTest::newRow("max accel NaN") << "trajectory.gcode.max_accel" << QJsonValue("NaN")
+                                   << "trajectory.gcode.max_accel" << "must be a finite number";
+    QTest::newRow("negative jerk") << "trajectory.gcode.max_jerk" << QJsonValue(-1)
+                                   << "trajectory.gcode.max_jerk" << "must be >= 0 (0 = none)";
+    QTest::newRow("missing file name") << "trajectory.gcode.file" << QJsonValue(QJsonValue::Undefined)
+                                       << "trajectory.gcode.file" << "is missing";
+    QTest::newRow("snapshot program") << "snapshots[0].trajectory.gcode.program" << QJsonValue("G1 X1\n")
+                                      << "snapshots[0].trajectory.gcode.program" << "line 1:";
+}
+
+void TstSessionFile::badGcodeFields() {
+    QFETCH(QString, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, expectedPath);
+    QFETCH(QString, expectedReason);
+    Session s = gcodeSession();
+    s.snapshots.push_back(s.snapshot("program"));
+    const QJsonObject root = setPath(sessionToJson(s), splitPath(path), value).toObject();
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, expectedPath);
+    QVERIFY2(r.error.startsWith(expectedReason), qPrintable(r.message()));
 }
 
 void TstSessionFile::malformed_data() {

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/contour/gcode_reader.h"
+#include "core/session/contour_run.h"
+#include "core/session/session.h"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+/**
+ * The G-code trajectory of a session (TrajectoryKind::Gcode): its program read, the run options
+ * its fields give, and what the editor shows of it. Every refusal names the session path:
+ * "trajectory.gcode.program" with the reader's line, word and column ("line 12: unknown word G5
+ * at column 4"), "trajectory.gcode.feed_scale", ".max_accel", ".max_jerk", "trajectory.dt".
+ */
+
+/// Reads the program text of @p gcode. @throws InvalidInput "trajectory.gcode.program".
+GcodeProgram readTrajectoryProgram(const GcodeTrajectory& gcode);
+
+/// The contour-run options of @p trajectory: the G-code fields and dt as the profile's step.
+ContourRunOptions programRunOptions(const TrajectorySettings& trajectory);
+
+/// The program's feed profile at the trajectory's dt (at most sampleLimit() samples).
+/// @throws InvalidInput naming the session path (see above).
+FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory,
+                                     const GcodeProgram& program);
+
+/// The run time of the program's feed profile (s). @throws InvalidInput as above.
+double programRunSeconds(const TrajectorySettings& trajectory);
+
+/// What the trajectory editor shows of a program.
+struct ProgramSummary {
+    std::size_t lines = 0;   ///< lines of the text
+    std::size_t moves = 0;   ///< path segments (G0-G3 blocks that move)
+    double lengthMm = 0.0;   ///< path length, rapids included
+    double runSeconds = 0.0; ///< the feed profile's run time
+    std::size_t corners = 0; ///< sharp corners where the profile stops
+    bool singleFullCircle = false;
+    std::vector<std::string> warnings;
+};
+/// @throws InvalidInput as above.
+ProgramSummary summarizeProgram(const TrajectorySettings& trajectory);
+
+/// The position of axis @p axisIndex (0 = x, 1 = y) along the program's profile at time t
+/// (linear between the profile's samples, held at the end). @throws InvalidInput as above.
+std::function<double(double)> programAxisReference(const TrajectorySettings& trajectory,
+                                                   int axisIndex);
+
+/// The contour run of @p program (the session's, read) by the session's axes:
+/// runProgramContour with programRunOptions. @throws InvalidInput as runProgramContour, naming
+/// the session paths.
+ContourRun runSessionProgram(const Session& session, const GcodeProgram& program);
+
+} // namespace xyt
