@@ -109,6 +109,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     contourControls_ = new ContourControls(contourPlot_);
     lowerTabs_->addTab(new DesignSpaceView(session_, this), tr("&Design space"));
     lowerTabs_->addTab(new RobustnessView(session_, this), tr("R&obustness"));
+    lowerTabs_->setUsesScrollButtons(true); // six tabs and a corner control: scroll, never widen the window
     connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {

@@ -48,13 +48,13 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     auto* rangeBox = new QGroupBox(tr("Ranges (± %)"));
     rangeForm_ = new QFormLayout(rangeBox);
     controlContent_ = rangeBox;
-    rangeBox->setFixedWidth(150);
+    rangeBox->setFixedWidth(136);
     samples_ = new QSpinBox;
     samples_->setRange(1, 100000);
     samples_->setValue(200);
     samples_->setToolTip(tr("random plants, drawn uniformly within the ranges"));
     seed_ = new QSpinBox;
-    seed_->setRange(0, 2147483647);
+    seed_->setRange(0, 999999);
     seed_->setValue(1);
     seed_->setToolTip(tr("the same seed draws the same plants"));
     corners_ = new QCheckBox(tr("corners"));
@@ -73,9 +73,6 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     options->addWidget(seed_);
     options->addWidget(corners_);
     options->addStretch(1);
-    options->addWidget(new QLabel(tr("show")));
-    options->addWidget(signal_);
-    options->addWidget(figure_);
 
     run_ = new QPushButton(tr("Run"));
     cancel_ = new QPushButton(tr("Cancel"));
@@ -96,8 +93,8 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     histogram_ = new HistogramPlot;
     // Narrower than a plot's usual minimum: beside the controls both fit the lower tab of a
     // 1366 x 768 window (about 750 px) without widening it.
-    envelope_->setMinimumWidth(180);
-    histogram_->setMinimumWidth(140);
+    envelope_->setMinimumWidth(160);
+    histogram_->setMinimumWidth(120);
     auto* plots = new QHBoxLayout;
     plots->addWidget(envelope_, 3);
     plots->addWidget(histogram_, 2);
@@ -110,8 +107,16 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     auto* right = new QVBoxLayout;
     right->addLayout(plots, 1);
     right->addWidget(status_);
+    // What to show under the ranges, in the same narrow column (a row of its own made the tab
+    // wider than a 1366 x 768 window gives it).
+    auto* showBox = new QGroupBox(tr("Show"));
+    showBox->setFixedWidth(136);
+    auto* showLayout = new QVBoxLayout(showBox);
+    showLayout->addWidget(signal_);
+    showLayout->addWidget(figure_);
     auto* left = new QVBoxLayout;
     left->addWidget(rangeBox);
+    left->addWidget(showBox);
     left->addStretch(1);
     auto* middle = new QHBoxLayout;
     middle->addLayout(left);

@@ -139,6 +139,7 @@ QWidget* TrajectoryEditor::buildProgramPage() {
     programField_->setReadOnly(true);
     programField_->setAccessibleName(tr("G-code program"));
     programField_->setPlaceholderText(tr("no program"));
+    programField_->setMinimumWidth(80);
     open_ = new QPushButton(tr("Open…"), page);
     open_->setToolTip(tr("Read a G-code program (.nc); it is kept in the session"));
     fileRow->addWidget(programField_, 1);
@@ -147,6 +148,10 @@ QWidget* TrajectoryEditor::buildProgramPage() {
     examples_ = new QComboBox(page);
     examples_->setAccessibleName(tr("Example programs"));
     examples_->addItem(tr("Examples…"));
+    // Sized to a short name, not the longest example's: the editor column must not widen the
+    // window past 1366 px (square_sharp_corners.nc did by 15 px).
+    examples_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    examples_->setMinimumContentsLength(12);
     const QString folder = examplesFolder();
     if (!folder.isEmpty())
         for (const QString& name : QDir(folder).entryList({"*.nc"}, QDir::Files, QDir::Name))
@@ -154,6 +159,7 @@ QWidget* TrajectoryEditor::buildProgramPage() {
     form->addRow(QString(), examples_);
     summary_ = new QLabel(page);
     summary_->setWordWrap(true);
+    summary_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred); // wraps to the column
     form->addRow(summary_);
     auto addField = [&](const QString& name, const QString& label, NumberField::Validator v) {
         auto* f = new NumberField(name, std::move(v), page);
