@@ -160,7 +160,9 @@ void RobustnessView::rebuildRanges() {
     QStringList names;
     std::vector<UncertainParameter> parameters;
     try {
-        parameters = sessionRobustnessProblem(session_->session(), session_->currentAxis()).parameters;
+        // From the settings alone: this runs on every design change (a slider step).
+        parameters = axisUncertainParameters(
+            session_->session().axes.at(static_cast<std::size_t>(session_->currentAxis())));
     } catch (const InvalidInput&) {
         // An axis without a valid design has nothing to perturb; the run says why.
     }

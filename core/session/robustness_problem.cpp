@@ -24,8 +24,7 @@ RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
         p.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
         p.dtSeconds = nominal.run.dtSeconds;
         p.reference = nominal.run.r;
-        const ThirdOrderPlant& g = settings.gt.plant;
-        p.parameters = {{"k0", g.k0, 0.0}, {"a1", g.a1, 0.0}, {"a2", g.a2, 0.0}};
+        p.parameters = axisUncertainParameters(settings);
         return p;
     }
     p.loop = *nominal.pp;
@@ -36,14 +35,30 @@ RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
     const std::size_t preview = p.zpetc ? static_cast<std::size_t>(p.zpetc->previewSteps) : 0;
     for (std::size_t k = 0; k < p.samples + preview; ++k)
         p.reference.push_back(r(static_cast<double>(k) * p.loop->tsSeconds));
-    const auto& a = p.loop->a.ascending();
-    for (std::size_t i = 1; i < a.size(); ++i)
-        p.parameters.push_back({"a" + std::to_string(i), a[i], 0.0});
-    const auto& b = p.loop->b.ascending();
-    for (std::size_t i = 1; i < b.size(); ++i)
-        if (b[i] != 0.0)
-            p.parameters.push_back({"b" + std::to_string(i), b[i], 0.0});
+    p.parameters = axisUncertainParameters(settings);
     return p;
+}
+
+std::vector<UncertainParameter> axisUncertainParameters(const AxisSettings& axis) {
+    if (axis.method == DesignMethod::GuilleminTruxal) {
+        const ThirdOrderPlant& g = axis.gt.plant;
+        return {{"k0", g.k0, 0.0}, {"a1", g.a1, 0.0}, {"a2", g.a2, 0.0}};
+    }
+    // As designPolePlacement uses the model: A and B divided by A(0).
+    const Polynomial a = Polynomial::fromAscending(axis.pp.a, "a");
+    const Polynomial b = Polynomial::fromAscending(axis.pp.b, "b");
+    const double a0 = a.coefficient(0);
+    if (a0 == 0.0)
+        throw InvalidInput("a", "A(0) must be nonzero");
+    std::vector<UncertainParameter> out;
+    const auto& ac = a.ascending();
+    for (std::size_t i = 1; i < ac.size(); ++i)
+        out.push_back({"a" + std::to_string(i), ac[i] / a0, 0.0});
+    const auto& bc = b.ascending();
+    for (std::size_t i = 1; i < bc.size(); ++i)
+        if (bc[i] != 0.0)
+            out.push_back({"b" + std::to_string(i), bc[i] / a0, 0.0});
+    return out;
 }
 
 } // namespace xyt

@@ -17,4 +17,12 @@ namespace xyt {
  */
 RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
 
+/**
+ * The uncertain parameters of an axis, with zero ranges, from its settings alone (nothing is
+ * designed or simulated, so a view may call it on every slider step): those of
+ * sessionRobustnessProblem. ARX coefficients are those of the normalized model (A(0) = 1).
+ * @throws InvalidInput naming the coefficient list when A or B cannot be read.
+ */
+std::vector<UncertainParameter> axisUncertainParameters(const AxisSettings& axis);
+
 } // namespace xyt
