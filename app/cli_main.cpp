@@ -55,7 +55,9 @@ constexpr CommandHelp kGtHelp[] = {
      "            parameters, nominal, statistics {rmse, max_abs_error, max_abs_u, phase_margin,\n"
      "            gain_margin, rmse_without_ff} {count, min, p05, p50, p95, max, mean},\n"
      "            fraction_meeting_spec, unstable (listed, not in the statistics), worst (largest\n"
-     "            RMSE). CSV: one row per plant.\n"},
+     "            RMSE). CSV: one row per plant. --sensitivity: for pole placement + ZPETC axes,\n"
+     "            zpetc_sensitivity, the RMSE with and without feedforward at 0, 25, 50, 75 and\n"
+     "            100 % of the ranges (same seed): where the feedforward stops paying off.\n"},
     {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
               "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
               "            [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"

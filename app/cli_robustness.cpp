@@ -129,8 +129,8 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
 } // namespace
 
 int runRobustness(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"no-corners"}, {"range"});
-    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv"});
+    const CliArgs args = CliArgs::parse(argv, {"no-corners", "sensitivity"}, {"range"});
+    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv", "sensitivity"});
     if (args.positional().size() != 1)
         throw InvalidInput("SESSION", "give one session file (xytune-cli robustness SESSION.json ...)");
     const Session session = loadSessionOrThrow(args.positional().first());
@@ -184,7 +184,18 @@ int runRobustness(const QStringList& argv) {
     std::vector<RobustnessResult> results;
     for (std::size_t a = 0; a < problems.size(); ++a) {
         results.push_back(analyzeRobustness(problems[a], o));
-        axes.append(axisJson(ids[a], problems[a], results.back(), o));
+        QJsonObject axis = axisJson(ids[a], problems[a], results.back(), o);
+        if (args.flag("sensitivity") && problems[a].loop && problems[a].zpetcEnabled) {
+            QJsonArray curve;
+            for (const ZpetcSensitivityPoint& p : zpetcSensitivity(problems[a], {0.0, 0.25, 0.5, 0.75, 1.0}, o))
+                curve.append(QJsonObject{{"scale", p.scale},
+                                         {"rmse_with_ff", distributionJson(p.rmseWithFf)},
+                                         {"rmse_without_ff", distributionJson(p.rmseWithoutFf)},
+                                         {"median_improvement_pct", number(p.medianImprovementPct)},
+                                         {"unstable", p.unstable}});
+            axis.insert("zpetc_sensitivity", curve);
+        }
+        axes.append(axis);
     }
     if (const auto path = args.value("csv"))
         writeTextFile("--csv", *path, robustnessCsv(ids, results));

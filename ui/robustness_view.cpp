@@ -5,6 +5,7 @@
 #include "core/session/robustness_problem.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
+#include "ui/plots/sensitivity_plot.h"
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
@@ -17,6 +18,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QStackedWidget>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -64,7 +66,7 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     signal_->addItems({tr("error e"), tr("output y"), tr("command u")});
     signal_->setToolTip(tr("the signal whose envelope is drawn"));
     figure_ = new QComboBox;
-    figure_->addItems({tr("RMSE"), tr("max |e|"), tr("max |u|")});
+    figure_->addItems({tr("RMSE"), tr("max |e|"), tr("max |u|"), tr("ZPETC sensitivity")});
     figure_->setToolTip(tr("the figure whose distribution is drawn"));
     auto* options = new QHBoxLayout;
     options->addWidget(new QLabel(tr("plants")));
@@ -95,9 +97,14 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     // 1366 x 768 window (about 750 px) without widening it.
     envelope_->setMinimumWidth(160);
     histogram_->setMinimumWidth(120);
+    sensitivity_ = new SensitivityPlot;
+    sensitivity_->setMinimumWidth(120);
+    figureStack_ = new QStackedWidget;
+    figureStack_->addWidget(histogram_);
+    figureStack_->addWidget(sensitivity_);
     auto* plots = new QHBoxLayout;
     plots->addWidget(envelope_, 3);
-    plots->addWidget(histogram_, 2);
+    plots->addWidget(figureStack_, 2);
     status_ = new QLabel(tr("Set a range for the parameters you doubt and press Run."));
     status_->setWordWrap(true);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -196,8 +203,10 @@ void RobustnessView::onDesignChanged() {
         return;
     // The result describes another controller or plant: never show it as this design's.
     result_.reset();
+    curve_.clear();
     problem_.reset();
     worst_->setEnabled(false);
+    sensitivity_->showNoResult(tr("The design changed since the analysis: press Run."));
     const QString why = tr("The design changed since the analysis: press Run.");
     envelope_->showNoResult(tr("Envelope"), why);
     histogram_->showNoResult(tr("Distribution"), why);
@@ -236,13 +245,19 @@ void RobustnessView::run() {
             return !cancelFlag->load();
         };
         auto result = std::make_shared<RobustnessResult>();
+        auto curve = std::make_shared<std::vector<ZpetcSensitivityPoint>>();
         QString error;
         try {
             *result = analyzeRobustness(problem, options);
+            if (problem.loop && problem.zpetcEnabled && result->status == RobustnessStatus::Completed) {
+                RobustnessOptions quiet = options; // the bar has reached 100 %: cancel only
+                quiet.progress = [cancelFlag](double) { return !cancelFlag->load(); };
+                *curve = zpetcSensitivity(problem, sensitivityScales(), quiet);
+            }
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        QMetaObject::invokeMethod(this, [this, id, result, error] { onFinished(id, result, error); },
+        QMetaObject::invokeMethod(this, [this, id, result, curve, error] { onFinished(id, result, curve, error); },
                                   Qt::QueuedConnection);
     });
     progress_->setValue(0);
@@ -259,7 +274,8 @@ void RobustnessView::cancel() {
     setStatus(tr("Cancelling…"));
 }
 
-void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> result, QString error) {
+void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
+                                std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve, QString error) {
     if (!job_ || job_->id != jobId)
         return;
     job_->thread.join();
@@ -270,6 +286,7 @@ void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> res
         return;
     }
     result_ = std::move(*result);
+    curve_ = std::move(*curve);
     problem_ = pendingProblem_;
     axis_ = pendingAxis_;
     progress_->setValue(100);
@@ -316,6 +333,14 @@ void RobustnessView::redraw() {
     const QString units[] = {tr("e (mm)"), tr("y (mm)"), tr("u (V)")};
     envelope_->showEnvelope(e, names[s], units[s]);
     const int f = figure_->currentIndex();
+    figureStack_->setCurrentWidget(f == 3 ? static_cast<QWidget*>(sensitivity_) : histogram_);
+    if (f == 3) {
+        if (curve_.empty())
+            sensitivity_->showNoResult(tr("For a pole-placement axis with ZPETC."));
+        else
+            sensitivity_->showCurve(curve_);
+        return;
+    }
     const RobustnessFigure figure = f == 0 ? RobustnessFigure::Rmse : f == 1 ? RobustnessFigure::MaxAbsError
                                                                               : RobustnessFigure::MaxAbsU;
     const double nominal = f == 0 ? r.nominal.tracking.rmse : f == 1 ? r.nominal.tracking.maxAbsError

@@ -20,11 +20,13 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+class QStackedWidget;
 
 namespace xyt::ui {
 
 class EnvelopePlot;
 class HistogramPlot;
+class SensitivityPlot;
 class TuningSession;
 
 /**
@@ -33,7 +35,9 @@ class TuningSession;
  * (analyzeRobustness) on a worker thread with progress and cancel; the chosen signal's envelope
  * over time around the nominal run, the chosen figure's histogram with the specification's
  * limit, the fraction of plants meeting the specification, the unstable plants and the worst
- * one, which "Load worst case" makes the session's plant (one undo step). A change of the
+ * one, which "Load worst case" makes the session's plant (one undo step). For a pole-placement
+ * axis with ZPETC the run also computes the ZPETC sensitivity curve (zpetcSensitivity at 0, 25,
+ * 50, 75 and 100 % of the ranges), shown as the fourth "histogram" choice. A change of the
  * design clears the result (it would describe another controller).
  */
 class RobustnessView : public QWidget {
@@ -65,6 +69,11 @@ public:
     QPushButton* worstButton() const { return worst_; }
     EnvelopePlot* envelopePlot() const { return envelope_; }
     HistogramPlot* histogramPlot() const { return histogram_; }
+    SensitivityPlot* sensitivityPlot() const { return sensitivity_; }
+    /// The ZPETC sensitivity curve of the shown result (empty unless pole placement + ZPETC).
+    const std::vector<ZpetcSensitivityPoint>& sensitivityCurve() const { return curve_; }
+    /// The mismatch scales of the curve.
+    static std::vector<double> sensitivityScales() { return {0.0, 0.25, 0.5, 0.75, 1.0}; }
     QString statusText() const;
 
 signals:
@@ -80,7 +89,8 @@ private:
     void stopJob();
     void rebuildRanges();
     void onDesignChanged();
-    void onFinished(int jobId, std::shared_ptr<RobustnessResult> result, QString error);
+    void onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
+                    std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve, QString error);
     void redraw();
     void setStatus(const QString& text, bool isError = false);
 
@@ -88,6 +98,7 @@ private:
     std::unique_ptr<Job> job_;
     int lastJobId_ = 0;
     std::optional<RobustnessResult> result_;
+    std::vector<ZpetcSensitivityPoint> curve_;
     std::optional<RobustnessProblem> problem_;
     std::optional<RobustnessProblem> pendingProblem_;
     Session analyzedSession_;
@@ -111,6 +122,8 @@ private:
     QLabel* status_;
     EnvelopePlot* envelope_;
     HistogramPlot* histogram_;
+    SensitivityPlot* sensitivity_;
+    QStackedWidget* figureStack_;
 };
 
 } // namespace xyt::ui

@@ -18,6 +18,7 @@ class TstCliRobustness : public QObject {
 private slots:
     void initTestCase();
     void figuresAreTheCores();
+    void sensitivityCurveIsTheCores();
     void badInput_data();
     void badInput();
 
@@ -66,6 +67,44 @@ void TstCliRobustness::figuresAreTheCores() {
     const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 1 + 22 + 24); // header, x: 20 + 2 corners, y: 20 + 4
     QVERIFY(lines[0].startsWith("axis,index,kind,x.k0,x.a1,x.a2,y.k0,y.a1,y.a2,stable"));
+}
+
+void TstCliRobustness::sensitivityCurveIsTheCores() {
+    // x on paper 001's pole placement + ZPETC: session file written here.
+    Session s = Session::paperDefault();
+    s.axes[0].method = DesignMethod::PolePlacementZpetc;
+    s.trajectory.kind = TrajectoryKind::Circle;
+    const QString path = dir_.filePath("pp.json");
+    {
+        const auto made = test::runCli({"new", "-o", path});
+        QCOMPARE(made.exitCode, 0);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QByteArray text = f.readAll();
+        f.close();
+        const QByteArray gt = "\"method\": \"guillemin-truxal\""; // the first: axis x
+        const qsizetype at = text.indexOf(gt);
+        QVERIFY(at >= 0);
+        text.replace(at, gt.size(), "\"method\": \"pole-placement-zpetc\"");
+        text.replace("\"kind\": \"cubic\"", "\"kind\": \"circle\"");
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(text);
+    }
+    const auto run = test::runCli({"robustness", path, "--axis", "x", "--samples", "10", "--range", "b1=20%",
+                                   "--sensitivity"});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonArray curve = run.json().value("axes").toArray()[0].toObject().value("zpetc_sensitivity").toArray();
+    QCOMPARE(curve.size(), 5);
+    RobustnessProblem p = sessionRobustnessProblem(s, 0);
+    setRelativeRange(p.parameters, "b1", 0.2);
+    RobustnessOptions o;
+    o.samples = 10;
+    const auto expected = zpetcSensitivity(p, {0.0, 0.25, 0.5, 0.75, 1.0}, o);
+    for (int i = 0; i < 5; ++i) {
+        const QJsonObject point = curve[i].toObject();
+        QCOMPARE(point.value("rmse_with_ff").toObject().value("p50").toDouble(), expected[static_cast<std::size_t>(i)].rmseWithFf.p50);
+        QCOMPARE(point.value("median_improvement_pct").toDouble(), expected[static_cast<std::size_t>(i)].medianImprovementPct);
+    }
 }
 
 void TstCliRobustness::badInput_data() {

@@ -7,6 +7,7 @@
 #include "core/session/robustness_problem.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
+#include "ui/plots/sensitivity_plot.h"
 #include "ui/session/tuning_session.h"
 #include "tests/support/tolerance.h"
 
@@ -101,6 +102,11 @@ void TstRobustnessView::drawsTheCoresResult() {
     view_->signalBox()->setCurrentIndex(2);
     QCOMPARE(view_->envelopePlot()->minGraph()->data()->at(0)->value, r.command.min[0]);
     QVERIFY(view_->statusText().contains(QString::number(100.0 * r.fractionMeetingSpec, 'g', 3) + " % meet"));
+    // A Guillemin-Truxal axis has no ZPETC: the sensitivity choice says so.
+    view_->figureBox()->setCurrentIndex(3);
+    QVERIFY(!view_->sensitivityPlot()->hasResult());
+    QVERIFY(view_->sensitivityPlot()->noticeText().contains("ZPETC"));
+    QVERIFY(view_->sensitivityCurve().empty());
     QVERIFY(view_->worstButton()->isEnabled());
 }
 
@@ -146,6 +152,22 @@ void TstRobustnessView::polePlacementAxisHasItsCoefficients() {
     runAndWait();
     QCOMPARE(view_->result()->runs.size(), std::size_t(10));
     QVERIFY(view_->result()->rmseWithoutFf.count > 0);
+    // The ZPETC sensitivity curve is the core's at 0, 25, 50, 75 and 100 % of the ranges.
+    RobustnessProblem p = sessionRobustnessProblem(session_->session(), 0);
+    setRelativeRange(p.parameters, "b1", 0.2);
+    RobustnessOptions o;
+    o.samples = 8;
+    const auto curve = zpetcSensitivity(p, RobustnessView::sensitivityScales(), o);
+    view_->figureBox()->setCurrentIndex(3);
+    QVERIFY(view_->sensitivityPlot()->isVisible());
+    QVERIFY(view_->sensitivityPlot()->hasResult());
+    QCOMPARE(view_->sensitivityPlot()->withFfGraph()->data()->size(), 5);
+    for (int i = 0; i < 5; ++i) {
+        QCOMPARE(view_->sensitivityPlot()->withFfGraph()->data()->at(i)->value, curve[static_cast<std::size_t>(i)].rmseWithFf.p50);
+        QCOMPARE(view_->sensitivityPlot()->withoutFfGraph()->data()->at(i)->value,
+                 curve[static_cast<std::size_t>(i)].rmseWithoutFf.p50);
+    }
+    QVERIFY(curve.back().medianImprovementPct < curve.front().medianImprovementPct);
     const std::vector<double> worst = view_->result()->runs[*view_->result()->worst].values;
     view_->loadWorstCase();
     QCOMPARE(session_->session().axes[0].pp.b[1], worst[2]);

@@ -75,12 +75,8 @@ void EnvelopePlot::showEnvelope(const SignalEnvelope& e, const QString& title, c
 
 void EnvelopePlot::showNoResult(const QString& title, const QString& reason) {
     title_->setText(title);
-    for (QCPGraph* g : {min_, max_, p05_, p95_, p50_, nominal_})
-        g->data()->clear();
     hasResult_ = false;
-    notice_->setSevere(true);
-    notice_->setLines({reason});
-    replot(QCustomPlot::rpQueuedReplot);
+    clearWithNotice(this, *notice_, {min_, max_, p05_, p95_, p50_, nominal_}, reason);
 }
 
 } // namespace xyt::ui

@@ -61,4 +61,13 @@ QString PlotNotice::text() const { return item_->visible() ? item_->text() : QSt
 
 bool PlotNotice::isShown() const { return item_->visible(); }
 
+void clearWithNotice(QCustomPlot* plot, PlotNotice& notice, std::initializer_list<QCPGraph*> graphs,
+                     const QString& reason) {
+    for (QCPGraph* g : graphs)
+        g->data()->clear();
+    notice.setSevere(true);
+    notice.setLines({reason});
+    plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
 } // namespace xyt::ui

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <initializer_list>
+
 #include <QString>
 #include <QStringList>
 #include <Qt>
@@ -8,6 +10,7 @@
 class QCustomPlot;
 class QCPAxisRect;
 class QCPItemText;
+class QCPGraph;
 
 namespace xyt::ui {
 
@@ -30,5 +33,10 @@ public:
 private:
     QCPItemText* item_;
 };
+
+/// Clears @p graphs and shows @p reason as a strong notice (no result to draw), then replots:
+/// what a plot shows when it has nothing for the current design.
+void clearWithNotice(QCustomPlot* plot, PlotNotice& notice, std::initializer_list<QCPGraph*> graphs,
+                     const QString& reason);
 
 } // namespace xyt::ui
