@@ -383,19 +383,12 @@ bool DesignSpaceView::eventFilter(QObject* watched, QEvent* event) {
 }
 QString DesignSpaceView::readoutText() const { return readout_->text(); }
 
-void DesignSpaceView::setStatus(const QString& text, bool isError) {
-    status_->setText(text);
-    status_->setToolTip(text); // the strip shows three lines; the whole text is one hover away
-    status_->setStyleSheet(isError ? QStringLiteral("color: #b00020;") : QString());
-}
+void DesignSpaceView::setStatus(const QString& text, bool isError) { setStatusText(status_, text, isError); }
 
 void DesignSpaceView::stopJob() {
     if (!job_)
         return;
-    // The workers stop after the design each is computing; the join is that short.
-    job_->cancel = true;
-    if (job_->thread.joinable())
-        job_->thread.join();
+    job_->stop(); // the workers stop after the item each is computing: a short wait
     job_.reset();
 }
 

@@ -6,12 +6,12 @@
 #include "core/session/design_study.h"
 #include "core/session/session.h"
 
+#include "ui/background_job.h"
+
 #include <QWidget>
 
-#include <atomic>
 #include <memory>
 #include <optional>
-#include <thread>
 
 class QCheckBox;
 class QComboBox;
@@ -109,10 +109,7 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    struct Job {
-        int id = 0;
-        std::atomic<bool> cancel{false};
-        std::thread thread;
+    struct Job : BackgroundJob {
         StudyKind kind = StudyKind::Full;
     };
 

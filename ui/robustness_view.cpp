@@ -146,18 +146,12 @@ RobustnessView::~RobustnessView() { stopJob(); }
 
 QString RobustnessView::statusText() const { return status_->text(); }
 
-void RobustnessView::setStatus(const QString& text, bool isError) {
-    status_->setText(text);
-    status_->setToolTip(text);
-    status_->setStyleSheet(isError ? QStringLiteral("color: #b00020;") : QString());
-}
+void RobustnessView::setStatus(const QString& text, bool isError) { setStatusText(status_, text, isError); }
 
 void RobustnessView::stopJob() {
     if (!job_)
         return;
-    job_->cancel = true;
-    if (job_->thread.joinable())
-        job_->thread.join();
+    job_->stop(); // the workers stop after the item each is computing: a short wait
     job_.reset();
 }
 

@@ -5,12 +5,12 @@
 #include "core/study/robustness.h"
 
 #include <QMap>
+#include "ui/background_job.h"
+
 #include <QWidget>
 
-#include <atomic>
 #include <memory>
 #include <optional>
-#include <thread>
 
 class QCheckBox;
 class QComboBox;
@@ -80,11 +80,7 @@ signals:
     void analysisFinished();
 
 private:
-    struct Job {
-        int id = 0;
-        std::atomic<bool> cancel{false};
-        std::thread thread;
-    };
+    using Job = BackgroundJob;
 
     void stopJob();
     void rebuildRanges();
