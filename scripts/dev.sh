@@ -14,7 +14,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${XYT_BUILD_DIR:-$root/build}"
 
 packages=(build-essential cmake pkg-config qt6-base-dev libqcustomplot-dev libqcustomplot2.1-qt6
-          libeigen3-dev libgl1-mesa-dev libxkbcommon-dev xvfb xauth
+          libeigen3-dev libmatio-dev libgl1-mesa-dev libxkbcommon-dev xvfb xauth
           clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
