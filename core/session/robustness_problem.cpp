@@ -2,14 +2,18 @@
 #include "core/session/robustness_problem.h"
 
 #include "core/model/errors.h"
+#include "core/session/program_trajectory.h"
 #include "core/session/session_evaluation.h"
+#include "core/simulation/resample.h"
+
+#include <cmath>
 
 namespace xyt {
 
-RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
-    if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
-        throw InvalidInput("axis", "there is no axis " + std::to_string(axis));
-    const AxisEvaluation nominal = evaluateAxis(session, axis);
+namespace {
+
+/// The problem of axis @p axis from its evaluation @p nominal.
+RobustnessProblem problemOf(const Session& session, int axis, const AxisEvaluation& nominal) {
     if (!nominal.ok)
         throw InvalidInput(nominal.errorField, nominal.error);
     const AxisSettings& settings = session.axes[static_cast<std::size_t>(axis)];
@@ -36,6 +40,71 @@ RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
     for (std::size_t k = 0; k < p.samples + preview; ++k)
         p.reference.push_back(r(static_cast<double>(k) * p.loop->tsSeconds));
     p.parameters = axisUncertainParameters(settings);
+    return p;
+}
+
+/// Axis @p axis of a G-code session made to follow the program's feed profile as the contour
+/// run does (runProgramContour): a continuous axis on the profile's samples from rest at its
+/// start point, a discrete one on the profile resampled at its Ts (held at the end for the
+/// ZPETC's preview).
+void followProfile(RobustnessProblem& p, const FeedProfile& profile, int axis) {
+    const std::vector<double>& r = axis == 0 ? profile.x : profile.y;
+    if (p.controller) {
+        p.reference = r;
+        p.samples = r.size();
+        p.dtSeconds = profile.dtSeconds;
+        p.initialOutput = r.front();
+        return;
+    }
+    const double ts = p.loop->tsSeconds;
+    const std::size_t n = static_cast<std::size_t>(std::floor(profile.t.back() / ts + 1e-9)) + 1;
+    const std::size_t preview = p.zpetc ? static_cast<std::size_t>(p.zpetc->previewSteps) : 0;
+    std::vector<double> times(n + preview);
+    for (std::size_t k = 0; k < times.size(); ++k)
+        times[k] = static_cast<double>(k) * ts;
+    p.reference = resampleLinear(profile.t, r, times);
+    p.samples = n;
+}
+
+} // namespace
+
+RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
+    if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
+        throw InvalidInput("axis", "there is no axis " + std::to_string(axis));
+    return problemOf(session, axis, evaluateAxis(session, axis));
+}
+
+ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session) {
+    ContourRobustnessProblem p;
+    if (session.trajectory.kind == TrajectoryKind::Circle) {
+        const AxisEvaluation x = evaluateAxis(session, 0); // (a circle's duration is fixed)
+        const AxisEvaluation y = evaluateAxis(session, 1);
+        p.x = problemOf(session, 0, x);
+        p.y = problemOf(session, 1, y);
+        p.geometry.circle = Circle{session.trajectory.radius, session.trajectory.omegaRadPerSec, 0.0, 0.0,
+                                   session.trajectory.rampInSeconds};
+        p.geometry.t = x.run.t; // the evaluation's contour is judged on x's samples too
+        return p;
+    }
+    if (session.trajectory.kind != TrajectoryKind::Gcode)
+        throw InvalidInput("trajectory", "the contour analysis needs a circle or a G-code program (a cubic "
+                                         "drives both axes along one line)");
+    const GcodeProgram program = readTrajectoryProgram(session.trajectory.gcode);
+    const ContourRunOptions run = programRunOptions(session.trajectory);
+    const FeedProfile profile = trajectoryProgramProfile(session.trajectory, program);
+    p.x = sessionRobustnessProblem(session, 0);
+    p.y = sessionRobustnessProblem(session, 1);
+    p.x.move.reset();
+    p.y.move.reset();
+    followProfile(p.x, profile, 0);
+    followProfile(p.y, profile, 1);
+    p.geometry.path = std::make_shared<const Path>(program.path);
+    p.geometry.pathOptions.cornerAngleDeg = run.profile.cornerAngleDeg;
+    p.geometry.pathOptions.cornerWindowMm = run.cornerWindowMm;
+    p.geometry.pathOptions.measuredSegments.resize(program.segments.size());
+    for (std::size_t i = 0; i < program.segments.size(); ++i)
+        p.geometry.pathOptions.measuredSegments[i] = !program.segments[i].rapid;
+    p.geometry.t = profile.t;
     return p;
 }
 

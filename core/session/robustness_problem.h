@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/session/session.h"
+#include "core/study/contour_robustness.h"
 #include "core/study/robustness.h"
 
 namespace xyt {
@@ -16,6 +17,18 @@ namespace xyt {
  *         cannot be evaluated (as evaluateAxis reports it).
  */
 RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
+
+/**
+ * The joint XY problem of @p session (issue 14): both axes' problems as sessionRobustnessProblem
+ * gives them, judged on the session's contour. A circle: the runs the evaluation makes, judged
+ * on x's samples as SessionEvaluation::contour is (so the nominal figures are those). A G-code
+ * program: both axes follow the program's feed profile as runSessionProgram runs them, judged
+ * along the programmed path with the rapids left out (so the nominal figures are those of
+ * SessionEvaluation::program).
+ * @throws InvalidInput "trajectory" for a cubic, and as sessionRobustnessProblem and the
+ *         program's reader ("trajectory.gcode.program").
+ */
+ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session);
 
 /**
  * The uncertain parameters of an axis, with zero ranges, from its settings alone (nothing is

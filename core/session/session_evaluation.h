@@ -3,6 +3,7 @@
 
 #include "core/analysis/stability_margins.h"
 #include "core/simulation/contour_error.h"
+#include "core/simulation/resample.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
@@ -123,10 +124,5 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex);
 /// |u| > umax (the discrete loops are simulated without saturation: flagged, not applied).
 SimulationResult discreteRun(const std::vector<double>& t, const std::vector<double>& r,
                              const DiscreteRun& run, double umaxVolts, double ts);
-
-/// y sampled at the times @p t by linear interpolation in (ts, ys) (held at the ends), so that
-/// axes with different sample times can be paired for the XY contour.
-std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vector<double>& ys,
-                                   const std::vector<double>& t);
 
 } // namespace xyt

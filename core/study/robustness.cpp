@@ -9,6 +9,7 @@
 #include "core/simulation/simulation.h"
 #include "core/simulation/zpetc_step.h"
 #include "core/study/parallel_runs.h"
+#include "core/study/run_statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -62,8 +63,9 @@ void fillDiscrete(const std::vector<double>& r, const DiscreteRun& run, double t
     out.umaxVolts = umax;
 }
 
-/// Simulates @p values with the nominal controller into @p run, and judges it.
-PlantRun runPlant(const RobustnessProblem& problem, const std::vector<double>& values, SimulationResult& run) {
+} // namespace
+
+PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values, SimulationResult& run) {
     PlantRun out;
     out.values = values;
     std::optional<LoopMarginFigures> margins;
@@ -80,6 +82,7 @@ PlantRun runPlant(const RobustnessProblem& problem, const std::vector<double>& v
         o.dtSeconds = problem.dtSeconds;
         o.umaxVolts = problem.spec.umaxVolts;
         o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
+        o.initialOutput = problem.initialOutput;
         simulateLoopInto(g, *problem.controller, problem.reference, o, run);
         if (out.stable)
             out.step = stepCharacteristics(closed);
@@ -120,66 +123,18 @@ PlantRun runPlant(const RobustnessProblem& problem, const std::vector<double>& v
     return out;
 }
 
-/// The sample indices of the envelope: every stride-th and the last.
-std::vector<std::size_t> envelopeIndices(std::size_t n, int points) {
-    std::vector<std::size_t> idx;
-    const std::size_t stride = std::max<std::size_t>(1, (n + static_cast<std::size_t>(points) - 1) /
-                                                            static_cast<std::size_t>(points));
-    for (std::size_t k = 0; k < n; k += stride)
-        idx.push_back(k);
-    if (idx.empty() || idx.back() != n - 1)
-        idx.push_back(n - 1);
-    return idx;
+namespace {
+
+void validateOptions(const RobustnessOptions& options) {
+    if (options.samples < 0 || options.samples > 1'000'000)
+        throw InvalidInput("samples", "must be from 0 to 1000000");
+    if (options.envelopePoints < 2 || options.envelopePoints > 100'000)
+        throw InvalidInput("envelope_points", "must be from 2 to 100000");
 }
 
-/// Nearest-rank percentile p (0..100) of sorted values.
-double percentile(const std::vector<double>& sorted, double p) {
-    const double rank = std::ceil(p / 100.0 * static_cast<double>(sorted.size()));
-    const std::size_t i = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(sorted.size())));
-    return sorted[i - 1];
-}
+} // namespace
 
-Distribution distribution(std::vector<double> v) {
-    Distribution d;
-    d.count = static_cast<int>(v.size());
-    if (v.empty())
-        return d;
-    std::sort(v.begin(), v.end());
-    d.min = v.front();
-    d.max = v.back();
-    d.p05 = percentile(v, 5.0);
-    d.p50 = percentile(v, 50.0);
-    d.p95 = percentile(v, 95.0);
-    double sum = 0.0;
-    for (double x : v) // in sorted order: the same sum whatever the thread count
-        sum += x;
-    d.mean = sum / static_cast<double>(v.size());
-    return d;
-}
-
-SignalEnvelope envelope(const std::vector<double>& t, const std::vector<std::size_t>& idx,
-                        const std::vector<const std::vector<double>*>& runs, const std::vector<double>& nominal) {
-    SignalEnvelope env;
-    if (runs.empty())
-        return env;
-    for (std::size_t k : idx)
-        env.nominal.push_back(nominal[k]);
-    std::vector<double> column(runs.size());
-    for (std::size_t j = 0; j < idx.size(); ++j) {
-        for (std::size_t i = 0; i < runs.size(); ++i)
-            column[i] = (*runs[i])[j];
-        std::sort(column.begin(), column.end());
-        env.t.push_back(t[idx[j]]);
-        env.min.push_back(column.front());
-        env.p05.push_back(percentile(column, 5.0));
-        env.p50.push_back(percentile(column, 50.0));
-        env.p95.push_back(percentile(column, 95.0));
-        env.max.push_back(column.back());
-    }
-    return env;
-}
-
-void validate(const RobustnessProblem& problem, const RobustnessOptions& options) {
+void validateRobustnessProblem(const RobustnessProblem& problem) {
     if (problem.controller.has_value() == problem.loop.has_value())
         throw InvalidInput("problem", "give either a continuous controller or a discrete loop");
     if (problem.loop && problem.zpetcEnabled && !problem.zpetc)
@@ -195,20 +150,15 @@ void validate(const RobustnessProblem& problem, const RobustnessOptions& options
                 throw InvalidInput("problem", std::string("a continuous plant needs the parameter ") + name);
     if (problem.controller && problem.reference.size() != problem.samples)
         throw InvalidInput("problem", "a continuous run has exactly the reference's samples");
-    if (options.samples < 0 || options.samples > 1'000'000)
-        throw InvalidInput("samples", "must be from 0 to 1000000");
-    if (options.envelopePoints < 2 || options.envelopePoints > 100'000)
-        throw InvalidInput("envelope_points", "must be from 2 to 100000");
     problem.spec.validate();
     for (const UncertainParameter& p : problem.parameters)
         if (!std::isfinite(p.relative) || p.relative < 0.0 || p.relative >= 1.0)
             throw InvalidInput("range." + p.name, "must be from 0 to below 100 %");
 }
 
-} // namespace
-
 RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options) {
-    validate(problem, options);
+    validateRobustnessProblem(problem);
+    validateOptions(options);
     RobustnessResult result;
     for (const UncertainParameter& p : problem.parameters)
         result.parameterNames.push_back(p.name);
@@ -222,7 +172,7 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     for (const UncertainParameter& p : problem.parameters)
         nominalValues.push_back(p.nominal);
     SimulationResult nominalRun;
-    result.nominal = runPlant(problem, nominalValues, nominalRun);
+    result.nominal = runPerturbedPlant(problem, nominalValues, nominalRun);
     const std::vector<std::size_t> idx = envelopeIndices(problem.samples, options.envelopePoints);
 
     result.runs.resize(plants.size());
@@ -234,7 +184,7 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     const ParallelRunOutcome outcome = parallelRuns(plants.size(), parallel, [&](std::size_t first, std::size_t count) {
         SimulationResult run; // one per chunk; a chunk is one plant
         for (std::size_t i = first; i < first + count; ++i) {
-            result.runs[i] = runPlant(problem, plants[i], run);
+            result.runs[i] = runPerturbedPlant(problem, plants[i], run);
             result.runs[i].corner = i >= randomCount;
             Decimated& d = signals[i];
             for (std::size_t k : idx) {
@@ -284,15 +234,15 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     }
     result.fractionMeetingSpec =
         result.computedCount > 0 ? static_cast<double>(meeting) / static_cast<double>(result.computedCount) : 0.0;
-    result.rmse = distribution(rmse);
-    result.maxAbsError = distribution(maxE);
-    result.maxAbsU = distribution(maxU);
-    result.rmseWithoutFf = distribution(rmseNoFf);
-    result.phaseMarginDeg = distribution(phase);
-    result.gainMarginDb = distribution(gain);
-    result.output = envelope(nominalRun.t, idx, ys, nominalRun.y);
-    result.error = envelope(nominalRun.t, idx, es, nominalRun.e);
-    result.command = envelope(nominalRun.t, idx, us, nominalRun.u);
+    result.rmse = distributionOf(rmse);
+    result.maxAbsError = distributionOf(maxE);
+    result.maxAbsU = distributionOf(maxU);
+    result.rmseWithoutFf = distributionOf(rmseNoFf);
+    result.phaseMarginDeg = distributionOf(phase);
+    result.gainMarginDb = distributionOf(gain);
+    result.output = envelopeOf(nominalRun.t, idx, ys, nominalRun.y);
+    result.error = envelopeOf(nominalRun.t, idx, es, nominalRun.e);
+    result.command = envelopeOf(nominalRun.t, idx, us, nominalRun.u);
     if (!result.unstable.empty())
         result.warnings.push_back(std::to_string(result.unstable.size()) +
                                   " plants are unstable or diverged with this controller; they are listed, "

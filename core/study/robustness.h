@@ -7,6 +7,7 @@
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
 #include "core/study/plant_uncertainty.h"
+#include "core/study/run_statistics.h"
 #include "core/study/specification.h"
 
 #include <cstddef>
@@ -34,6 +35,8 @@ struct RobustnessProblem {
     std::optional<TransferFunction> controller;
     double modelUnitsPerPositionUnit = 1.0;
     double dtSeconds = 0.01;
+    /// The table's position at rest at t = 0 (trajectory units; a G-code program starts there).
+    double initialOutput = 0.0;
     // Discrete axes
     std::optional<PolePlacementDesign> loop;
     std::optional<ZpetcDesign> zpetc;
@@ -72,18 +75,6 @@ struct PlantRun {
     bool meetsSpec = false; ///< stable && finite && check.allPassed()
 };
 
-/// Order statistics of one figure over the stable, finite runs (nearest-rank percentiles).
-struct Distribution {
-    int count = 0;
-    double min = 0.0, p05 = 0.0, p50 = 0.0, p95 = 0.0, max = 0.0, mean = 0.0;
-};
-
-/// Pointwise order statistics of a signal over the stable, finite runs, and the nominal run's
-/// value at the same instants.
-struct SignalEnvelope {
-    std::vector<double> t, min, p05, p50, p95, max, nominal;
-};
-
 enum class RobustnessStatus { Completed, Cancelled };
 
 struct RobustnessResult {
@@ -116,6 +107,21 @@ struct RobustnessResult {
  *         loop kinds, a reference shorter than the run), "corners", and from the parameters.
  */
 RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options = {});
+
+/**
+ * Checks @p problem as analyzeRobustness does.
+ * @throws InvalidInput "problem" (neither or both loop kinds, a reference shorter than the run,
+ *         a continuous plant without k0, a1, a2), "range.<name>", and from the specification.
+ */
+void validateRobustnessProblem(const RobustnessProblem& problem);
+
+/**
+ * One plant of the analysis: @p values (in problem.parameters order) simulated with the nominal
+ * controller into @p run (reused storage; the continuous loop on k dt, the discrete one on k Ts)
+ * and judged as analyzeRobustness judges each run. The problem must be valid.
+ */
+PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values,
+                           SimulationResult& run);
 
 /// Which figure of the runs a histogram shows.
 enum class RobustnessFigure { Rmse, MaxAbsError, MaxAbsU };
