@@ -57,7 +57,10 @@ constexpr CommandHelp kGtHelp[] = {
      "            fraction_meeting_spec, unstable (listed, not in the statistics), worst (largest\n"
      "            RMSE). CSV: one row per plant. --sensitivity: for pole placement + ZPETC axes,\n"
      "            zpetc_sensitivity, the RMSE with and without feedforward at 0, 25, 50, 75 and\n"
-     "            100 % of the ranges (same seed): where the feedforward stops paying off.\n"},
+     "            100 % of the ranges (same seed): where the feedforward stops paying off.\n"
+     "            --contour (circle or G-code sessions): also \"xy\", pairs of plants drawn over\n"
+     "            both axes' ranges (and the joint box's corners) tracing the contour together:\n"
+     "            max and RMS contour error {count, min, p05, ...}, the worst pair; CSV rows \"xy\".\n"},
     {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
               "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
               "            [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"

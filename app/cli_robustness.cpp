@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-cli robustness SESSION.json: Monte Carlo and corner analysis of a session's axes under
-// plant-model mismatch (issue 14).
+// plant-model mismatch (issue 14); with --contour also the XY contour both axes trace together.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
@@ -8,6 +8,7 @@
 
 #include "core/model/errors.h"
 #include "core/session/robustness_problem.h"
+#include "core/study/contour_robustness.h"
 #include "core/study/robustness.h"
 
 #include <QJsonArray>
@@ -17,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace xyt::cli {
 
@@ -101,16 +103,50 @@ QJsonObject axisJson(const QString& axisId, const RobustnessProblem& problem, co
             {"warnings", warnings}};
 }
 
+QJsonObject pairJson(const ContourRobustnessResult& r, std::size_t i) {
+    const JointPlantRun& p = r.runs[i];
+    return {{"index", static_cast<qint64>(i)},
+            {"kind", p.corner ? "corner" : "random"},
+            {"parameters", parametersJson(r.parameterNames, p.values)},
+            {"stable", p.stable},
+            {"diverged", !p.finite},
+            {"max_abs_contour_error", number(p.finite ? p.maxAbsContourError : NAN)}};
+}
+
+/// The joint XY analysis: the contour error of pairs of mismatched plants.
+QJsonObject contourJson(const ContourRobustnessProblem& problem, const ContourRobustnessResult& r) {
+    QJsonArray unstable;
+    for (std::size_t i : r.unstable)
+        unstable.append(pairJson(r, i));
+    QJsonArray warnings;
+    for (const std::string& w : r.warnings)
+        warnings.append(QString::fromStdString(w));
+    return {{"contour", problem.geometry.circle ? "circle" : "program"},
+            {"pairs", static_cast<qint64>(r.runs.size())},
+            {"nominal", QJsonObject{{"max_abs_contour_error", number(r.nominal.maxAbsContourError)},
+                                    {"rms_contour_error", number(r.nominal.rmsContourError)}}},
+            {"statistics", QJsonObject{{"max_abs_contour_error", distributionJson(r.maxAbsContourError)},
+                                       {"rms_contour_error", distributionJson(r.rmsContourError)}}},
+            {"unstable", unstable},
+            {"worst", r.worst ? QJsonValue(pairJson(r, *r.worst)) : QJsonValue()},
+            {"warnings", warnings}};
+}
+
 /// One row per plant of every analyzed axis: axis, index, kind, one column per parameter of
-/// every axis ("x.k0", "y.b1"; empty on the other axis' rows), then the figures.
-QString robustnessCsv(const std::vector<QString>& ids, const std::vector<RobustnessResult>& results) {
+/// every axis ("x.k0", "y.b1"; empty on the other axis' rows), then the figures; with the
+/// joint analysis, one row "xy" per pair (both axes' parameters, the contour figures).
+QString robustnessCsv(const std::vector<QString>& ids, const std::vector<RobustnessResult>& results,
+                      const ContourRobustnessResult* contour) {
     QString csv;
     QTextStream out(&csv);
     out << "axis,index,kind";
     for (std::size_t a = 0; a < results.size(); ++a)
         for (const std::string& n : results[a].parameterNames)
             out << ',' << ids[a] << '.' << QString::fromStdString(n);
-    out << ",stable,diverged,rmse,max_abs_error,max_abs_u,rmse_without_ff,meets_spec\n";
+    out << ",stable,diverged,rmse,max_abs_error,max_abs_u,rmse_without_ff,meets_spec";
+    if (contour)
+        out << ",max_abs_contour_error,rms_contour_error";
+    out << '\n';
     const auto cell = [](double v) { return std::isfinite(v) ? QString::number(v, 'g', 17) : QString(); };
     for (std::size_t a = 0; a < results.size(); ++a)
         for (std::size_t i = 0; i < results[a].runs.size(); ++i) {
@@ -121,7 +157,17 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
                     out << ',' << (b == a ? cell(p.values[j]) : QString());
             out << ',' << (p.stable ? 1 : 0) << ',' << (p.finite ? 0 : 1) << ',' << cell(p.tracking.rmse) << ','
                 << cell(p.tracking.maxAbsError) << ',' << cell(p.tracking.maxAbsU) << ','
-                << cell(p.rmseWithoutFf) << ',' << (p.meetsSpec ? 1 : 0) << '\n';
+                << cell(p.rmseWithoutFf) << ',' << (p.meetsSpec ? 1 : 0) << (contour ? ",," : "") << '\n';
+        }
+    if (contour)
+        for (std::size_t i = 0; i < contour->runs.size(); ++i) {
+            const JointPlantRun& p = contour->runs[i];
+            out << "xy," << i << ',' << (p.corner ? "corner" : "random");
+            for (double v : p.values)
+                out << ',' << cell(v);
+            out << ',' << (p.stable ? 1 : 0) << ',' << (p.finite ? 0 : 1) << ",,,,,,"
+                << cell(p.finite ? p.maxAbsContourError : NAN) << ',' << cell(p.finite ? p.rmsContourError : NAN)
+                << '\n';
         }
     return csv;
 }
@@ -129,8 +175,8 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
 } // namespace
 
 int runRobustness(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"no-corners", "sensitivity"}, {"range"});
-    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv", "sensitivity"});
+    const CliArgs args = CliArgs::parse(argv, {"no-corners", "sensitivity", "contour"}, {"range"});
+    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv", "sensitivity", "contour"});
     if (args.positional().size() != 1)
         throw InvalidInput("SESSION", "give one session file (xytune-cli robustness SESSION.json ...)");
     const Session session = loadSessionOrThrow(args.positional().first());
@@ -145,6 +191,11 @@ int runRobustness(const QStringList& argv) {
     const QString axisChoice = args.text("axis", "both");
     if (axisChoice != "x" && axisChoice != "y" && axisChoice != "both")
         throw InvalidInput("--axis", "must be x, y or both");
+    const bool contour = args.flag("contour");
+    if (contour && axisChoice != "both")
+        throw InvalidInput("--contour", "the contour is traced by both axes: leave out --axis");
+    if (contour && session.trajectory.kind == TrajectoryKind::Cubic)
+        throw InvalidInput("--contour", "needs a circle or G-code trajectory (the session's is a cubic move)");
     std::vector<Range> ranges;
     for (const QString& text : args.values("range"))
         ranges.push_back(parseRange(text));
@@ -197,9 +248,18 @@ int runRobustness(const QStringList& argv) {
         }
         axes.append(axis);
     }
+    QJsonObject out{{"seed", static_cast<qint64>(o.seed)}, {"axes", axes}};
+    std::optional<ContourRobustnessResult> joint;
+    if (contour) {
+        ContourRobustnessProblem problem = sessionContourRobustnessProblem(session);
+        problem.x.parameters = problems[0].parameters; // with the ranges applied above
+        problem.y.parameters = problems[1].parameters;
+        joint = analyzeContourRobustness(problem, o);
+        out.insert("xy", contourJson(problem, *joint));
+    }
     if (const auto path = args.value("csv"))
-        writeTextFile("--csv", *path, robustnessCsv(ids, results));
-    print(QJsonObject{{"seed", static_cast<qint64>(o.seed)}, {"axes", axes}});
+        writeTextFile("--csv", *path, robustnessCsv(ids, results, joint ? &*joint : nullptr));
+    print(out);
     return 0;
 }
 

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // CLI contract of xytune-cli robustness (issue 14): the figures printed are the core's
 // (analyzeRobustness of the session's axes, computed here again with the same ranges and seed),
-// the CSV holds one row per plant, and bad arguments exit 2 naming the argument.
+// the CSV holds one row per plant; with --contour the joint XY figures are
+// analyzeContourRobustness's; bad arguments exit 2 naming the argument.
 #include "core/session/robustness_problem.h"
+#include "core/study/contour_robustness.h"
 #include "core/session/session.h"
 #include "tests/support/cli_runner.h"
 
 #include <QFile>
 #include <QJsonArray>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -19,6 +22,7 @@ private slots:
     void initTestCase();
     void figuresAreTheCores();
     void sensitivityCurveIsTheCores();
+    void contourFiguresAreTheCores();
     void badInput_data();
     void badInput();
 
@@ -107,6 +111,48 @@ void TstCliRobustness::sensitivityCurveIsTheCores() {
     }
 }
 
+void TstCliRobustness::contourFiguresAreTheCores() {
+    // Paper 000's bases on the circle: the session file of `new` with the circle chosen.
+    const QString path = dir_.filePath("circle.json");
+    QVERIFY(QFile::copy(session_, path));
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadWrite));
+        QByteArray text = f.readAll();
+        text.replace("\"kind\": \"cubic\"", "\"kind\": \"circle\"");
+        QVERIFY(f.resize(0));
+        f.write(text);
+    }
+    const QString csv = dir_.filePath("pairs.csv");
+    const auto run = test::runCli({"robustness", path, "--contour", "--samples", "6", "--seed", "2", "--range",
+                                   "k0=10%", "--range", "x.a1=5%", "--csv", csv});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject xy = run.json().value("xy").toObject();
+    Session s = Session::paperDefault();
+    s.trajectory.kind = TrajectoryKind::Circle;
+    ContourRobustnessProblem p = sessionContourRobustnessProblem(s);
+    setRelativeRange(p.x.parameters, "k0", 0.1);
+    setRelativeRange(p.x.parameters, "a1", 0.05);
+    setRelativeRange(p.y.parameters, "k0", 0.1);
+    RobustnessOptions o;
+    o.samples = 6;
+    o.seed = 2;
+    const ContourRobustnessResult r = analyzeContourRobustness(p, o);
+    QCOMPARE(xy.value("contour").toString(), QString("circle"));
+    QCOMPARE(xy.value("pairs").toInt(), 6 + 8); // 3 uncertain parameters: 8 corners
+    const QJsonObject maxAbs = xy.value("statistics").toObject().value("max_abs_contour_error").toObject();
+    QCOMPARE(maxAbs.value("p95").toDouble(), r.maxAbsContourError.p95); // shortest round-trip decimal: exact
+    QCOMPARE(maxAbs.value("max").toDouble(), r.maxAbsContourError.max);
+    QCOMPARE(xy.value("nominal").toObject().value("max_abs_contour_error").toDouble(), r.nominal.maxAbsContourError);
+    QCOMPARE(xy.value("worst").toObject().value("index").toInt(), static_cast<int>(*r.worst));
+    QVERIFY(xy.value("worst").toObject().value("parameters").toObject().contains("y.k0"));
+    QFile f(csv);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+    QVERIFY(lines[0].endsWith(",max_abs_contour_error,rms_contour_error"));
+    QCOMPARE(lines.filter(QRegularExpression("^xy,")).size(), 14);
+}
+
 void TstCliRobustness::badInput_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("named");
@@ -118,6 +164,8 @@ void TstCliRobustness::badInput_data() {
     QTest::newRow("fractional seed") << QStringList{"--seed", "1.5"} << "--seed";
     QTest::newRow("bad axis") << QStringList{"--axis", "z"} << "--axis";
     QTest::newRow("unknown option") << QStringList{"--from-identification"} << "--from-identification";
+    QTest::newRow("contour of a cubic move") << QStringList{"--contour"} << "--contour";
+    QTest::newRow("contour of one axis") << QStringList{"--contour", "--axis", "x"} << "--contour";
 }
 
 void TstCliRobustness::badInput() {
