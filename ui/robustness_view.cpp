@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/session/robustness_problem.h"
+#include "ui/plots/contour_band_plot.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
 #include "ui/plots/sensitivity_plot.h"
@@ -16,12 +17,15 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
+#include <QSignalBlocker>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace xyt::ui {
 
@@ -40,6 +44,28 @@ QString parameterList(const std::vector<std::string>& names, const std::vector<d
     for (std::size_t i = 0; i < names.size(); ++i)
         parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(names[i]), num(values[i], 6));
     return parts.join(QStringLiteral(", "));
+}
+
+/// Axis @p settings with the plant parameters that @p value gives for @p problem's parameters
+/// (Guillemin-Truxal: k0, a1, a2; pole placement: the normalized ARX A and B coefficients).
+AxisSettings perturbedAxis(AxisSettings settings, const RobustnessProblem& problem,
+                           const std::function<double(const std::string&, double)>& value) {
+    if (problem.controller) {
+        ThirdOrderPlant& plant = settings.gt.plant;
+        plant.k0 = value("k0", plant.k0);
+        plant.a1 = value("a1", plant.a1);
+        plant.a2 = value("a2", plant.a2);
+        return settings;
+    }
+    // The typed A may not be monic: the analysis perturbed the normalized one (A/A(0), B/A(0)).
+    std::vector<double> a = problem.loop->a.ascending(), b = problem.loop->b.ascending();
+    for (std::size_t i = 1; i < a.size(); ++i)
+        a[i] = value("a" + std::to_string(i), a[i]);
+    for (std::size_t i = 1; i < b.size(); ++i)
+        b[i] = value("b" + std::to_string(i), b[i]);
+    settings.pp.a = a;
+    settings.pp.b = b;
+    return settings;
 }
 
 } // namespace
@@ -62,11 +88,13 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     corners_ = new QCheckBox(tr("corners"));
     corners_->setChecked(true);
     corners_->setToolTip(tr("also every corner of the box of ranges (the deterministic worst-case search)"));
+    contour_ = new QCheckBox(tr("XY contour"));
+    contour_->setToolTip(tr("Analyze both axes together on the circle or G-code program: pairs of plants, "
+                            "the contour error they trace, its XY band. Each range applies to the parameter "
+                            "of that name on every axis that has one."));
     signal_ = new QComboBox;
-    signal_->addItems({tr("error e"), tr("output y"), tr("command u")});
     signal_->setToolTip(tr("the signal whose envelope is drawn"));
     figure_ = new QComboBox;
-    figure_->addItems({tr("RMSE"), tr("max |e|"), tr("max |u|"), tr("ZPETC sensitivity")});
     figure_->setToolTip(tr("the figure whose distribution is drawn"));
     auto* options = new QHBoxLayout;
     options->addWidget(new QLabel(tr("plants")));
@@ -74,6 +102,7 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     options->addWidget(new QLabel(tr("seed")));
     options->addWidget(seed_);
     options->addWidget(corners_);
+    options->addWidget(contour_);
     options->addStretch(1);
 
     run_ = new QPushButton(tr("Run"));
@@ -102,6 +131,9 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     figureStack_ = new QStackedWidget;
     figureStack_->addWidget(histogram_);
     figureStack_->addWidget(sensitivity_);
+    band_ = new ContourBandPlot;
+    band_->setMinimumWidth(120);
+    figureStack_->addWidget(band_);
     auto* plots = new QHBoxLayout;
     plots->addWidget(envelope_, 3);
     plots->addWidget(figureStack_, 2);
@@ -138,8 +170,52 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     connect(worst_, &QPushButton::clicked, this, &RobustnessView::loadWorstCase);
     connect(signal_, &QComboBox::currentIndexChanged, this, &RobustnessView::redraw);
     connect(figure_, &QComboBox::currentIndexChanged, this, &RobustnessView::redraw);
+    connect(contour_, &QCheckBox::toggled, this, &RobustnessView::onModeChanged);
     connect(session_, &TuningSession::designChanged, this, &RobustnessView::onDesignChanged);
+    fillChoices();
+    contour_->setEnabled(session_->session().trajectory.kind != TrajectoryKind::Cubic);
     rebuildRanges();
+}
+
+bool RobustnessView::contourMode() const { return contour_->isChecked(); }
+
+void RobustnessView::fillChoices() {
+    const QSignalBlocker blockSignal(signal_), blockFigure(figure_);
+    signal_->clear();
+    figure_->clear();
+    if (contourMode()) {
+        signal_->addItems({tr("contour error")});
+        figure_->addItems({tr("max |contour e|"), tr("XY band")});
+        figure_->setCurrentIndex(1);
+    } else {
+        signal_->addItems({tr("error e"), tr("output y"), tr("command u")});
+        figure_->addItems({tr("RMSE"), tr("max |e|"), tr("max |u|"), tr("ZPETC sensitivity")});
+    }
+}
+
+void RobustnessView::onModeChanged() {
+    stopJob();
+    cancel_->setEnabled(false);
+    fillChoices();
+    rebuildRanges();
+    clearResult(contourMode() ? tr("XY contour: set the ranges and press Run.")
+                              : tr("Set a range for the parameters you doubt and press Run."));
+    figureStack_->setCurrentWidget(contourMode() ? static_cast<QWidget*>(band_) : histogram_);
+}
+
+void RobustnessView::clearResult(const QString& why) {
+    result_.reset();
+    contourResult_.reset();
+    curve_.clear();
+    problem_.reset();
+    contourProblem_.reset();
+    worst_->setEnabled(false);
+    progress_->setValue(0);
+    sensitivity_->showNoResult(why);
+    band_->showNoResult(why);
+    envelope_->showNoResult(tr("Envelope"), why);
+    histogram_->showNoResult(tr("Distribution"), why);
+    setStatus(why);
 }
 
 RobustnessView::~RobustnessView() { stopJob(); }
@@ -160,15 +236,22 @@ void RobustnessView::rebuildRanges() {
         rangePct_[it.key()] = it.value()->value();
     QStringList names;
     std::vector<UncertainParameter> parameters;
-    try {
-        // From the settings alone: this runs on every design change (a slider step).
-        parameters = axisUncertainParameters(
-            session_->session().axes.at(static_cast<std::size_t>(session_->currentAxis())));
-    } catch (const InvalidInput&) {
-        // An axis without a valid design has nothing to perturb; the run says why.
+    // From the settings alone: this runs on every design change (a slider step). In contour
+    // mode, the parameters of both axes (one row per name: it applies to each axis having it).
+    for (int axis = 0; axis < 2; ++axis) {
+        if (!contourMode() && axis != session_->currentAxis())
+            continue;
+        try {
+            for (const UncertainParameter& p :
+                 axisUncertainParameters(session_->session().axes.at(static_cast<std::size_t>(axis))))
+                if (!names.contains(QString::fromStdString(p.name))) {
+                    names << QString::fromStdString(p.name);
+                    parameters.push_back(p);
+                }
+        } catch (const InvalidInput&) {
+            // An axis without a valid design has nothing to perturb; the run says why.
+        }
     }
-    for (const UncertainParameter& p : parameters)
-        names << QString::fromStdString(p.name);
     if (names == rangeOrder_)
         return;
     while (rangeForm_->rowCount() > 0)
@@ -182,40 +265,52 @@ void RobustnessView::rebuildRanges() {
         box->setDecimals(1);
         box->setSuffix(QStringLiteral(" %"));
         box->setValue(rangePct_.value(name, 0.0));
-        box->setToolTip(tr("%1: nominal %2; drawn uniformly within ± this share of it").arg(name, num(p.nominal, 6)));
+        box->setToolTip(contourMode()
+                            ? tr("%1 of every axis that has one: drawn uniformly within ± this share of its nominal")
+                                  .arg(name)
+                            : tr("%1: nominal %2; drawn uniformly within ± this share of it").arg(name, num(p.nominal, 6)));
         rangeForm_->addRow(name, box);
         ranges_.insert(name, box);
     }
 }
 
 void RobustnessView::onDesignChanged() {
-    rebuildRanges();
-    if (!result_ || isRunning())
-        return;
     const Session& s = session_->session();
-    if (axis_ == session_->currentAxis() && sameAxis(s, analyzedSession_, axis_))
+    const bool contourPossible = s.trajectory.kind != TrajectoryKind::Cubic;
+    contour_->setEnabled(contourPossible);
+    if (!contourPossible && contour_->isChecked()) {
+        contour_->setChecked(false); // a cubic drives both axes along one line: no contour
+        return;                      // (onModeChanged has cleared the result)
+    }
+    rebuildRanges();
+    if ((!result_ && !contourResult_) || isRunning())
+        return;
+    if (contourResult_ ? sameAxis(s, analyzedSession_, 0) && sameAxis(s, analyzedSession_, 1)
+                       : axis_ == session_->currentAxis() && sameAxis(s, analyzedSession_, axis_))
         return;
     // The result describes another controller or plant: never show it as this design's.
-    result_.reset();
-    curve_.clear();
-    problem_.reset();
-    worst_->setEnabled(false);
-    sensitivity_->showNoResult(tr("The design changed since the analysis: press Run."));
-    const QString why = tr("The design changed since the analysis: press Run.");
-    envelope_->showNoResult(tr("Envelope"), why);
-    histogram_->showNoResult(tr("Distribution"), why);
-    setStatus(why);
+    clearResult(tr("The design changed since the analysis: press Run."));
 }
 
 void RobustnessView::run() {
     stopJob();
     const int axis = session_->currentAxis();
     RobustnessProblem problem;
-    try {
-        problem = sessionRobustnessProblem(session_->session(), axis);
-        for (UncertainParameter& p : problem.parameters)
+    std::optional<ContourRobustnessProblem> contour;
+    const auto applyRanges = [this](std::vector<UncertainParameter>& parameters) {
+        for (UncertainParameter& p : parameters)
             if (QDoubleSpinBox* box = rangeBox(QString::fromStdString(p.name)))
-                setRelativeRange(problem.parameters, p.name, box->value() / 100.0);
+                setRelativeRange(parameters, p.name, box->value() / 100.0);
+    };
+    try {
+        if (contourMode()) {
+            contour = sessionContourRobustnessProblem(session_->session());
+            applyRanges(contour->x.parameters);
+            applyRanges(contour->y.parameters);
+        } else {
+            problem = sessionRobustnessProblem(session_->session(), axis);
+            applyRanges(problem.parameters);
+        }
     } catch (const InvalidInput& e) {
         setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
         return;
@@ -225,12 +320,13 @@ void RobustnessView::run() {
     options.seed = static_cast<std::uint64_t>(seed_->value());
     options.corners = corners_->isChecked();
     pendingProblem_ = problem;
+    pendingContour_ = contour;
     pendingAxis_ = axis;
     analyzedSession_ = session_->session();
     job_ = std::make_unique<Job>();
     const int id = job_->id = ++lastJobId_;
     std::atomic<bool>* cancelFlag = &job_->cancel;
-    job_->thread = std::thread([this, id, cancelFlag, problem, options]() mutable {
+    job_->thread = std::thread([this, id, cancelFlag, problem, contour, options]() mutable {
         options.progress = [this, id, cancelFlag](double fraction) {
             QMetaObject::invokeMethod(this, [this, id, fraction] {
                 if (job_ && job_->id == id)
@@ -239,11 +335,15 @@ void RobustnessView::run() {
             return !cancelFlag->load();
         };
         auto result = std::make_shared<RobustnessResult>();
+        auto joint = std::make_shared<ContourRobustnessResult>();
         auto curve = std::make_shared<std::vector<ZpetcSensitivityPoint>>();
         QString error;
         try {
-            *result = analyzeRobustness(problem, options);
-            if (problem.loop && problem.zpetcEnabled && result->status == RobustnessStatus::Completed) {
+            if (contour)
+                *joint = analyzeContourRobustness(*contour, options);
+            else
+                *result = analyzeRobustness(problem, options);
+            if (!contour && problem.loop && problem.zpetcEnabled && result->status == RobustnessStatus::Completed) {
                 RobustnessOptions quiet = options; // the bar has reached 100 %: cancel only
                 quiet.progress = [cancelFlag](double) { return !cancelFlag->load(); };
                 *curve = zpetcSensitivity(problem, sensitivityScales(), quiet);
@@ -251,13 +351,16 @@ void RobustnessView::run() {
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        QMetaObject::invokeMethod(this, [this, id, result, curve, error] { onFinished(id, result, curve, error); },
-                                  Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this, id, result, joint, curve, error] { onFinished(id, result, joint, curve, error); },
+            Qt::QueuedConnection);
     });
     progress_->setValue(0);
     cancel_->setEnabled(true);
     run_->setEnabled(true);
-    setStatus(tr("Running %1 plants%2…").arg(options.samples).arg(options.corners ? tr(" and the corners") : QString()));
+    setStatus((contour ? tr("Running %1 plant pairs%2…") : tr("Running %1 plants%2…"))
+                  .arg(options.samples)
+                  .arg(options.corners ? tr(" and the corners") : QString()));
 }
 
 void RobustnessView::cancel() {
@@ -269,6 +372,7 @@ void RobustnessView::cancel() {
 }
 
 void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
+                                std::shared_ptr<ContourRobustnessResult> contour,
                                 std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve, QString error) {
     if (!job_ || job_->id != jobId)
         return;
@@ -279,45 +383,106 @@ void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> res
         setStatus(tr("The analysis failed: %1").arg(error), true);
         return;
     }
-    result_ = std::move(*result);
-    curve_ = std::move(*curve);
-    problem_ = pendingProblem_;
-    axis_ = pendingAxis_;
     progress_->setValue(100);
-    const RobustnessResult& r = *result_;
-    const int corners = static_cast<int>(r.runs.size()) - samples_->value();
-    QString text = r.status == RobustnessStatus::Cancelled
-                       ? tr("Cancelled after %1 of %2 plants. ").arg(r.computedCount).arg(r.runs.size())
-                       : tr("%1 plants%2: ").arg(samples_->value()).arg(corners > 0 ? tr(" + %1 corners").arg(corners) : QString());
-    text += tr("%1 % meet the spec (the nominal %2); %3 unstable.")
-                .arg(num(100.0 * r.fractionMeetingSpec, 3))
-                .arg(r.nominal.meetsSpec ? tr("does") : tr("does not"))
-                .arg(r.unstable.size());
-    // Only the parameters that vary name a plant.
-    std::vector<std::string> varied;
-    std::vector<std::size_t> variedIndex;
-    for (std::size_t i = 0; i < problem_->parameters.size(); ++i)
-        if (problem_->parameters[i].relative > 0.0) {
-            varied.push_back(problem_->parameters[i].name);
-            variedIndex.push_back(i);
-        }
-    const auto plantText = [&](std::size_t run) {
-        std::vector<double> values;
-        for (std::size_t i : variedIndex)
-            values.push_back(r.runs[run].values[i]);
-        return parameterList(varied, values);
-    };
-    if (r.worst && !varied.empty())
-        text += tr("\nWorst: RMSE %1 mm at %2.").arg(num(r.runs[*r.worst].tracking.rmse), plantText(*r.worst));
-    if (!r.unstable.empty() && !varied.empty())
-        text += tr("\nUnstable, e.g. at %1.").arg(plantText(r.unstable.front()));
-    setStatus(text, !r.unstable.empty());
-    worst_->setEnabled(r.worst.has_value());
+    axis_ = pendingAxis_;
+    if (pendingContour_) {
+        result_.reset();
+        problem_.reset();
+        curve_.clear();
+        contourResult_ = std::move(*contour);
+        contourProblem_ = pendingContour_;
+        setStatus(contourSummary(*contourResult_), !contourResult_->unstable.empty());
+        worst_->setEnabled(contourResult_->worst.has_value());
+    } else {
+        contourResult_.reset();
+        contourProblem_.reset();
+        result_ = std::move(*result);
+        curve_ = std::move(*curve);
+        problem_ = pendingProblem_;
+        setStatus(axisSummary(*result_), !result_->unstable.empty());
+        worst_->setEnabled(result_->worst.has_value());
+    }
     redraw();
     emit analysisFinished();
 }
 
+namespace {
+
+/// "x.k0 = 70.2, y.a1 = 64": the parameters of @p values that vary (relative > 0).
+QString variedParameters(const std::vector<std::string>& names, const std::vector<UncertainParameter>& parameters,
+                         const std::vector<double>& values) {
+    std::vector<std::string> varied;
+    std::vector<double> v;
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+        if (parameters[i].relative > 0.0) {
+            varied.push_back(names[i]);
+            v.push_back(values[i]);
+        }
+    return parameterList(varied, v);
+}
+
+QString countsText(const QString& what, int computed, std::size_t total, int samples, bool cancelled) {
+    const int corners = static_cast<int>(total) - samples;
+    return cancelled ? RobustnessView::tr("Cancelled after %1 of %2 %3. ").arg(computed).arg(total).arg(what)
+                     : RobustnessView::tr("%1 %2%3: ").arg(samples).arg(what).arg(
+                           corners > 0 ? RobustnessView::tr(" + %1 corners").arg(corners) : QString());
+}
+
+} // namespace
+
+QString RobustnessView::axisSummary(const RobustnessResult& r) const {
+    QString text = countsText(tr("plants"), r.computedCount, r.runs.size(), samples_->value(),
+                              r.status == RobustnessStatus::Cancelled);
+    text += tr("%1 % meet the spec (the nominal %2); %3 unstable.")
+                .arg(num(100.0 * r.fractionMeetingSpec, 3))
+                .arg(r.nominal.meetsSpec ? tr("does") : tr("does not"))
+                .arg(r.unstable.size());
+    const std::vector<UncertainParameter>& parameters = problem_->parameters;
+    const bool anyVaried = std::any_of(parameters.begin(), parameters.end(),
+                                       [](const UncertainParameter& p) { return p.relative > 0.0; });
+    if (r.worst && anyVaried)
+        text += tr("\nWorst: RMSE %1 mm at %2.")
+                    .arg(num(r.runs[*r.worst].tracking.rmse),
+                         variedParameters(r.parameterNames, parameters, r.runs[*r.worst].values));
+    if (!r.unstable.empty() && anyVaried)
+        text += tr("\nUnstable, e.g. at %1.")
+                    .arg(variedParameters(r.parameterNames, parameters, r.runs[r.unstable.front()].values));
+    return text;
+}
+
+QString RobustnessView::contourSummary(const ContourRobustnessResult& r) const {
+    std::vector<UncertainParameter> parameters = contourProblem_->x.parameters;
+    parameters.insert(parameters.end(), contourProblem_->y.parameters.begin(), contourProblem_->y.parameters.end());
+    QString text = countsText(tr("plant pairs"), r.computedCount, r.runs.size(), samples_->value(),
+                              r.status == RobustnessStatus::Cancelled);
+    const Distribution& d = r.maxAbsContourError;
+    text += d.count > 0 ? tr("max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.")
+                              .arg(num(d.p50), num(d.p95), num(r.nominal.maxAbsContourError))
+                              .arg(r.unstable.size())
+                        : tr("no stable pair; %1 unstable.").arg(r.unstable.size());
+    if (r.worst)
+        text += tr("\nWorst: %1 mm at %2.")
+                    .arg(num(r.runs[*r.worst].maxAbsContourError),
+                         variedParameters(r.parameterNames, parameters, r.runs[*r.worst].values));
+    if (!r.unstable.empty())
+        text += tr("\nUnstable, e.g. at %1.")
+                    .arg(variedParameters(r.parameterNames, parameters, r.runs[r.unstable.front()].values));
+    return text;
+}
+
 void RobustnessView::redraw() {
+    if (contourResult_) {
+        const ContourRobustnessResult& r = *contourResult_;
+        envelope_->showEnvelope(r.error, tr("Contour error of the plant pairs"), tr("contour e (mm)"));
+        const bool band = figure_->currentIndex() == 1;
+        figureStack_->setCurrentWidget(band ? static_cast<QWidget*>(band_) : histogram_);
+        if (band)
+            band_->showResult(r);
+        else
+            histogram_->showHistogram(histogram(contourFigureValues(r), 20), r.nominal.maxAbsContourError,
+                                      std::nullopt, tr("Distribution"), tr("max |contour e| (mm)"));
+        return;
+    }
     if (!result_)
         return;
     const RobustnessResult& r = *result_;
@@ -354,34 +519,33 @@ void RobustnessView::redraw() {
 }
 
 void RobustnessView::loadWorstCase() {
+    const auto lookup = [](const std::vector<std::string>& names, const std::vector<double>& values,
+                           const std::string& prefix) {
+        return [&names, &values, prefix](const std::string& name, double fallback) {
+            for (std::size_t i = 0; i < names.size(); ++i)
+                if (names[i] == prefix + name)
+                    return values[i];
+            return fallback;
+        };
+    };
+    if (contourResult_ && contourResult_->worst && contourProblem_) {
+        const ContourRobustnessResult& r = *contourResult_;
+        const std::vector<double>& v = r.runs[*r.worst].values;
+        Session next = session_->session();
+        next.axes[0] = perturbedAxis(next.axes[0], contourProblem_->x, lookup(r.parameterNames, v, "x."));
+        next.axes[1] = perturbedAxis(next.axes[1], contourProblem_->y, lookup(r.parameterNames, v, "y."));
+        session_->apply(next, tr("Load the worst plant pair of the contour analysis"));
+        return;
+    }
     if (!result_ || !result_->worst || !problem_)
         return;
     const std::vector<double>& v = result_->runs[*result_->worst].values;
-    const auto value = [&](const std::string& name, double fallback) {
-        for (std::size_t i = 0; i < result_->parameterNames.size(); ++i)
-            if (result_->parameterNames[i] == name)
-                return v[i];
-        return fallback;
-    };
-    const AxisSettings& axis = session_->session().axes.at(static_cast<std::size_t>(axis_));
-    if (problem_->controller) {
-        ThirdOrderPlant plant = axis.gt.plant;
-        plant.k0 = value("k0", plant.k0);
-        plant.a1 = value("a1", plant.a1);
-        plant.a2 = value("a2", plant.a2);
-        session_->setPlant(axis_, plant);
-    } else {
-        PpAxisSettings pp = axis.pp;
-        // The typed A may not be monic: the analysis perturbed the normalized one (A/A(0), B/A(0)).
-        std::vector<double> a = problem_->loop->a.ascending(), b = problem_->loop->b.ascending();
-        for (std::size_t i = 1; i < a.size(); ++i)
-            a[i] = value("a" + std::to_string(i), a[i]);
-        for (std::size_t i = 1; i < b.size(); ++i)
-            b[i] = value("b" + std::to_string(i), b[i]);
-        pp.a = a;
-        pp.b = b;
-        session_->setPp(axis_, pp);
-    }
+    const AxisSettings next = perturbedAxis(session_->session().axes.at(static_cast<std::size_t>(axis_)), *problem_,
+                                            lookup(result_->parameterNames, v, ""));
+    if (problem_->controller)
+        session_->setPlant(axis_, next.gt.plant);
+    else
+        session_->setPp(axis_, next.pp);
 }
 
 } // namespace xyt::ui

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/session/session.h"
+#include "core/study/contour_robustness.h"
 #include "core/study/robustness.h"
 
 #include <QMap>
@@ -24,6 +25,7 @@ class QStackedWidget;
 
 namespace xyt::ui {
 
+class ContourBandPlot;
 class EnvelopePlot;
 class HistogramPlot;
 class SensitivityPlot;
@@ -37,8 +39,12 @@ class TuningSession;
  * limit, the fraction of plants meeting the specification, the unstable plants and the worst
  * one, which "Load worst case" makes the session's plant (one undo step). For a pole-placement
  * axis with ZPETC the run also computes the ZPETC sensitivity curve (zpetcSensitivity at 0, 25,
- * 50, 75 and 100 % of the ranges), shown as the fourth "histogram" choice. A change of the
- * design clears the result (it would describe another controller).
+ * 50, 75 and 100 % of the ranges), shown as the fourth "histogram" choice. With "XY contour"
+ * (a circle or G-code trajectory) both axes are analyzed together (analyzeContourRobustness):
+ * each range applies to the parameter of that name on every axis that has one, the envelope is
+ * the contour error's, the figures are the max |contour error| histogram and the XY band
+ * (ContourBandPlot), and "Load worst case" loads the worst pair into both axes in one undo step.
+ * A change of the design clears the result (it would describe another controller).
  */
 class RobustnessView : public QWidget {
     Q_OBJECT
@@ -55,6 +61,10 @@ public:
     /// The problem of the shown result (its ranges included).
     const std::optional<RobustnessProblem>& analyzedProblem() const { return problem_; }
     int analyzedAxis() const { return axis_; }
+    /// The joint XY result shown (contour mode), and its problem.
+    const std::optional<ContourRobustnessResult>& contourResult() const { return contourResult_; }
+    const std::optional<ContourRobustnessProblem>& analyzedContourProblem() const { return contourProblem_; }
+    bool contourMode() const;
 
     /// The range box (in %) of parameter @p name of the current axis, or null.
     QDoubleSpinBox* rangeBox(const QString& name) const { return ranges_.value(name, nullptr); }
@@ -62,6 +72,7 @@ public:
     QSpinBox* samplesBox() const { return samples_; }
     QSpinBox* seedBox() const { return seed_; }
     QCheckBox* cornersBox() const { return corners_; }
+    QCheckBox* contourBox() const { return contour_; }
     QComboBox* signalBox() const { return signal_; }
     QComboBox* figureBox() const { return figure_; }
     QPushButton* runButton() const { return run_; }
@@ -70,6 +81,7 @@ public:
     EnvelopePlot* envelopePlot() const { return envelope_; }
     HistogramPlot* histogramPlot() const { return histogram_; }
     SensitivityPlot* sensitivityPlot() const { return sensitivity_; }
+    ContourBandPlot* bandPlot() const { return band_; }
     /// The ZPETC sensitivity curve of the shown result (empty unless pole placement + ZPETC).
     const std::vector<ZpetcSensitivityPoint>& sensitivityCurve() const { return curve_; }
     /// The mismatch scales of the curve.
@@ -86,7 +98,15 @@ private:
     void rebuildRanges();
     void onDesignChanged();
     void onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
+                    std::shared_ptr<ContourRobustnessResult> contour,
                     std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve, QString error);
+    void onModeChanged();
+    /// The signal and figure choices of the mode (axis or XY contour).
+    void fillChoices();
+    /// Forgets the shown result and says why on every plot.
+    void clearResult(const QString& why);
+    QString axisSummary(const RobustnessResult& r) const;
+    QString contourSummary(const ContourRobustnessResult& r) const;
     void redraw();
     void setStatus(const QString& text, bool isError = false);
 
@@ -97,6 +117,9 @@ private:
     std::vector<ZpetcSensitivityPoint> curve_;
     std::optional<RobustnessProblem> problem_;
     std::optional<RobustnessProblem> pendingProblem_;
+    std::optional<ContourRobustnessResult> contourResult_;
+    std::optional<ContourRobustnessProblem> contourProblem_;
+    std::optional<ContourRobustnessProblem> pendingContour_;
     Session analyzedSession_;
     int axis_ = 0;
     int pendingAxis_ = 0;
@@ -109,6 +132,7 @@ private:
     QSpinBox* samples_;
     QSpinBox* seed_;
     QCheckBox* corners_;
+    QCheckBox* contour_;
     QComboBox* signal_;
     QComboBox* figure_;
     QPushButton* run_;
@@ -119,6 +143,7 @@ private:
     EnvelopePlot* envelope_;
     HistogramPlot* histogram_;
     SensitivityPlot* sensitivity_;
+    ContourBandPlot* band_;
     QStackedWidget* figureStack_;
 };
 

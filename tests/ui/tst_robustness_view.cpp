@@ -2,9 +2,12 @@
 // The robustness view (issue 14) drives the core's analyzeRobustness: what it draws is the
 // core's result for the same problem (computed here again), the worst case loads as one undo
 // step, a design change clears a result that no longer applies, and a run can be cancelled or
-// outlived by the view.
+// outlived by the view. In XY-contour mode it drives analyzeContourRobustness the same way: the
+// envelope, histogram and XY band drawn are the core's joint result, the worst pair loads into
+// both axes as one undo step, and the mode follows the trajectory (no contour for a cubic).
 #include "ui/robustness_view.h"
 #include "core/session/robustness_problem.h"
+#include "ui/plots/contour_band_plot.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
 #include "ui/plots/sensitivity_plot.h"
@@ -20,6 +23,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <memory>
 
 using namespace xyt;
@@ -39,6 +43,9 @@ private slots:
     void designChangeClearsTheResult();
     void polePlacementAxisHasItsCoefficients();
     void cancelAndDestroyWhileRunning();
+    void contourModeDrawsTheCoresJointResult();
+    void contourWorstPairLoadsBothAxesInOneStep();
+    void contourModeFollowsTheTrajectory();
 
 private:
     void runAndWait();
@@ -189,6 +196,138 @@ void TstRobustnessView::cancelAndDestroyWhileRunning() {
     QVERIFY(view_->isRunning());
     view_.reset();
     QTest::qWait(50);
+}
+
+void TstRobustnessView::contourModeDrawsTheCoresJointResult() {
+    QVERIFY(!view_->contourBox()->isEnabled()); // the paper's cubic: no contour
+    TrajectorySettings t = session_->session().trajectory;
+    t.kind = TrajectoryKind::Circle;
+    session_->setTrajectory(t);
+    QVERIFY(view_->contourBox()->isEnabled());
+    view_->contourBox()->setChecked(true);
+    // Both axes are Guillemin-Truxal: one row per name, applied to both.
+    QCOMPARE(view_->parameterNames().size(), 3);
+    QCOMPARE(view_->figureBox()->count(), 2);
+    QCOMPARE(view_->signalBox()->currentText(), QString("contour error"));
+    view_->rangeBox("k0")->setValue(10.0);
+    view_->samplesBox()->setValue(12);
+    view_->seedBox()->setValue(9);
+    runAndWait();
+    QVERIFY(!view_->result()); // the joint result replaces the axis one
+    QVERIFY(view_->contourResult().has_value());
+    ContourRobustnessProblem p = sessionContourRobustnessProblem(session_->session());
+    setRelativeRange(p.x.parameters, "k0", 0.1);
+    setRelativeRange(p.y.parameters, "k0", 0.1);
+    RobustnessOptions o;
+    o.samples = 12;
+    o.seed = 9;
+    const ContourRobustnessResult r = analyzeContourRobustness(p, o);
+    QCOMPARE(view_->contourResult()->runs.size(), std::size_t(12 + 4)); // 2 uncertain parameters: 4 corners
+    QCOMPARE(view_->contourResult()->maxAbsContourError.p95, r.maxAbsContourError.p95);
+    // The envelope is the contour error's, point for point.
+    const auto* maxData = view_->envelopePlot()->maxGraph()->data().data();
+    QCOMPARE(maxData->size(), static_cast<int>(r.error.t.size()));
+    for (int i = 0; i < maxData->size(); i += 41)
+        QCOMPARE(maxData->at(i)->value, r.error.max[static_cast<std::size_t>(i)]);
+    // The XY band (the default figure): one piece for the circle, drawn magnified about it.
+    ContourBandPlot* band = view_->bandPlot();
+    QVERIFY(band->isVisible());
+    QVERIFY(band->hasResult());
+    QCOMPARE(band->innerBands().size(), std::size_t(1));
+    const double m = band->magnification();
+    QVERIFY(m >= 1.0);
+    QVERIFY(band->titleText().contains(QString::number(m, 'g', 4)));
+    const auto* nominal = band->nominalCurves().front()->data().data();
+    QCOMPARE(nominal->size(), static_cast<int>(r.base.size()));
+    for (int j = 0; j < nominal->size(); j += 53) {
+        const auto k = static_cast<std::size_t>(j);
+        QVERIFY(test::near(nominal->at(j)->key, r.base[k].x + m * r.error.nominal[k] * r.normal[k].x, 1e-12, 1e-12));
+        QVERIFY(test::near(nominal->at(j)->value, r.base[k].y + m * r.error.nominal[k] * r.normal[k].y, 1e-12, 1e-12));
+    }
+    // The 5-95 % polygon: its upper edge forward, its lower edge back.
+    const auto* inner = band->innerBands().front()->data().data();
+    QCOMPARE(inner->size(), 2 * static_cast<int>(r.base.size()));
+    // The histogram counts every stable pair once.
+    view_->figureBox()->setCurrentIndex(0);
+    QVERIFY(view_->histogramPlot()->isVisible());
+    double total = 0.0;
+    for (auto it = view_->histogramPlot()->bars()->data()->constBegin(); it != view_->histogramPlot()->bars()->data()->constEnd(); ++it)
+        total += it->value;
+    QCOMPARE(static_cast<int>(total), r.maxAbsContourError.count);
+    QCOMPARE(view_->histogramPlot()->nominalDrawn(), r.nominal.maxAbsContourError);
+    QVERIFY(view_->statusText().contains("plant pairs"));
+    QVERIFY(view_->statusText().contains("x.k0 = "));
+    if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
+        view_->figureBox()->setCurrentIndex(1);
+        for (const QSize size : {QSize(1340, 330), QSize(1000, 500)}) {
+            view_->resize(size);
+            QTest::qWait(50);
+            view_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") +
+                               QStringLiteral("/robustness_contour_%1.png").arg(size.width()));
+        }
+        view_->figureBox()->setCurrentIndex(0);
+    }
+    // A change of either axis clears the joint result.
+    session_->setKp(1, 45.0);
+    QVERIFY(!view_->contourResult());
+    QVERIFY(!view_->bandPlot()->hasResult());
+    QVERIFY(view_->statusText().contains("design changed"));
+}
+
+void TstRobustnessView::contourWorstPairLoadsBothAxesInOneStep() {
+    TrajectorySettings t = session_->session().trajectory;
+    t.kind = TrajectoryKind::Circle;
+    session_->setTrajectory(t);
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc); // paper 001's circle, x by pole placement
+    view_->contourBox()->setChecked(true);
+    // The union of both axes' names: the ARX a1, a2, b1..b3 and the plant's k0 (a1, a2 shared).
+    QCOMPARE(view_->parameterNames().size(), 6);
+    view_->rangeBox("b1")->setValue(10.0);
+    view_->rangeBox("k0")->setValue(10.0);
+    view_->samplesBox()->setValue(6);
+    view_->cornersBox()->setChecked(false);
+    runAndWait();
+    const ContourRobustnessResult r = *view_->contourResult(); // (a copy: loading clears the view's)
+    const std::vector<double> worst = r.runs[*r.worst].values;
+    const std::size_t steps = static_cast<std::size_t>(session_->undoStack()->count());
+    const Session before = session_->session();
+    QTest::mouseClick(view_->worstButton(), Qt::LeftButton);
+    QCOMPARE(static_cast<std::size_t>(session_->undoStack()->count()), steps + 1);
+    const auto at = [&](const std::string& name) {
+        const auto it = std::find(r.parameterNames.begin(), r.parameterNames.end(), name);
+        return worst[static_cast<std::size_t>(it - r.parameterNames.begin())];
+    };
+    QCOMPARE(session_->session().axes[0].pp.b[1], at("x.b1"));
+    QCOMPARE(session_->session().axes[1].gt.plant.k0, at("y.k0"));
+    QCOMPARE(session_->session().axes[1].gt.plant.a1, before.axes[1].gt.plant.a1);
+    session_->undoStack()->undo();
+    QVERIFY(session_->session().axes == before.axes);
+}
+
+void TstRobustnessView::contourModeFollowsTheTrajectory() {
+    TrajectorySettings t = session_->session().trajectory;
+    t.kind = TrajectoryKind::Circle;
+    session_->setTrajectory(t);
+    view_->contourBox()->setChecked(true);
+    view_->samplesBox()->setValue(3);
+    runAndWait();
+    QVERIFY(view_->contourResult().has_value());
+    // Back to the cubic: no contour to analyze; the mode and its result go.
+    t.kind = TrajectoryKind::Cubic;
+    session_->setTrajectory(t);
+    QVERIFY(!view_->contourBox()->isEnabled());
+    QVERIFY(!view_->contourBox()->isChecked());
+    QVERIFY(!view_->contourResult());
+    QCOMPARE(view_->figureBox()->count(), 4);
+    QVERIFY(!view_->bandPlot()->hasResult());
+    // Switching modes by hand clears the other mode's result too.
+    t.kind = TrajectoryKind::Circle;
+    session_->setTrajectory(t);
+    runAndWait();
+    QVERIFY(view_->result().has_value());
+    view_->contourBox()->setChecked(true);
+    QVERIFY(!view_->result());
+    QVERIFY(!view_->envelopePlot()->hasResult());
 }
 
 QTEST_MAIN(TstRobustnessView)

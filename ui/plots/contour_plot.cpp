@@ -319,20 +319,10 @@ void ContourPlot::fitAll() {
 void ContourPlot::fitEqualScale() {
     // Fit the commanded and traced paths with one scale (mm per pixel) on both axes, so a
     // circle looks round; the polar view fits its magnified runs too.
-    bool found = false;
     QCPRange xr, yr;
-    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_}) {
-        if (!polar() && (c == magnified_ || c == reverse_))
-            continue;
-        bool okX = false, okY = false;
-        const QCPRange cx = c->getKeyRange(okX);
-        const QCPRange cy = c->getValueRange(okY);
-        if (!okX || !okY)
-            continue;
-        xr = found ? QCPRange(std::min(xr.lower, cx.lower), std::max(xr.upper, cx.upper)) : cx;
-        yr = found ? QCPRange(std::min(yr.lower, cy.lower), std::max(yr.upper, cy.upper)) : cy;
-        found = true;
-    }
+    const bool found = curvesBoundingBox(polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_}
+                                                 : std::vector<QCPCurve*>{commanded_, traced_},
+                                         xr, yr);
     if (found)
         showBox(xr.lower, xr.upper, yr.lower, yr.upper);
 }

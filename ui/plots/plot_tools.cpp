@@ -204,4 +204,19 @@ void compactLegend(QCPLegend* legend) {
     legend->setColumnSpacing(6);
 }
 
+bool curvesBoundingBox(const std::vector<QCPCurve*>& curves, QCPRange& xRange, QCPRange& yRange) {
+    bool found = false;
+    for (QCPCurve* c : curves) {
+        bool okX = false, okY = false;
+        const QCPRange cx = c->getKeyRange(okX);
+        const QCPRange cy = c->getValueRange(okY);
+        if (!okX || !okY)
+            continue;
+        xRange = found ? QCPRange(std::min(xRange.lower, cx.lower), std::max(xRange.upper, cx.upper)) : cx;
+        yRange = found ? QCPRange(std::min(yRange.lower, cy.lower), std::max(yRange.upper, cy.upper)) : cy;
+        found = true;
+    }
+    return found;
+}
+
 } // namespace xyt::ui

@@ -9,6 +9,8 @@
 
 class QCustomPlot;
 class QCPAxisRect;
+class QCPCurve;
+class QCPRange;
 class QCPGraphData;
 class QCPItemText;
 class QCPLegend;
@@ -33,6 +35,9 @@ inline const QColor axisY{0xff, 0x7f, 0x0e};
  * and a context menu with "Reset view", "Save as PNG..." and "Save as PDF...".
  */
 void setupInteractivePlot(QCustomPlot* plot);
+/// The smallest box holding every point of @p curves (empty curves left out) in @p xRange and
+/// @p yRange; false when no curve has a point.
+bool curvesBoundingBox(const std::vector<QCPCurve*>& curves, QCPRange& xRange, QCPRange& yRange);
 /// Rescales every axis rect to its visible data (with a small margin).
 void resetView(QCustomPlot* plot);
 /// Asks for a file name and saves the plot; the format follows the extension (.png or .pdf).
