@@ -141,9 +141,8 @@ std::vector<BiquadSection> decimationFilter(int factor) {
         sec.b = {g, 2.0 * g, g};
         sections.push_back(sec);
     }
-    const double dc = 1.0 / std::sqrt(1.0 + eps * eps); // even order: the ripple's low end at DC
-    for (double& b : sections.front().b)
-        b *= dc;
+    // Every section has unit gain at DC, so the cascade has too (MATLAB's cheby1 of even order
+    // puts DC at the bottom of the ripple, 1/sqrt(1 + eps^2); here a step keeps its level).
     return sections;
 }
 

@@ -38,9 +38,11 @@ Detrended removeTrends(const IoData& data);
  * The anti-alias filter of decimate(): a Chebyshev type I lowpass of order 8 with 0.05 dB
  * passband ripple and its ripple edge at 0.8 x the new Nyquist frequency (0.8 / factor of the old
  * one), the filter MATLAB's decimate uses, as 4 second-order sections from the analogue
- * prototype by the bilinear transform with prewarping:
- *   |H(e^{jw})|^2 = 1 / (1 + eps^2 T_8^2(tan(w/2) / tan(wc/2))), eps^2 = 10^(0.05/10) - 1,
- *   wc = 0.8 pi / factor (rad/sample); H(1) = 1 / sqrt(1 + eps^2) (even order).
+ * prototype by the bilinear transform with prewarping, scaled to unit gain at DC:
+ *   |H(e^{jw})|^2 = (1 + eps^2) / (1 + eps^2 T_8^2(tan(w/2) / tan(wc/2))), eps^2 = 10^(0.05/10) - 1,
+ *   wc = 0.8 pi / factor (rad/sample), T_8 the Chebyshev polynomial; so 1 <= |H| <= 1.0058
+ *   (+0.05 dB) below wc. (MATLAB's cheby1 has DC at the bottom of the ripple, |H(1)| = 0.9943;
+ *   here a step keeps its level.)
  * Each section: (b0 + b1 z^-1 + b2 z^-2) / (1 + a1 z^-1 + a2 z^-2), coefficients ascending.
  */
 struct BiquadSection {
@@ -57,7 +59,7 @@ inline constexpr double kDecimationEdge = 0.8; ///< fraction of the new Nyquist 
 /**
  * Keeps every @p factor-th sample (k = 0, factor, 2 factor, ...) of u and y after filtering both
  * with decimationFilter(factor) forward and then backward (zero phase, magnitude squared:
- * passband ripple 0.1 dB). As MATLAB's filtfilt, the ends are padded with the odd reflection of
+ * passband gain from 0 to +0.1 dB). As MATLAB's filtfilt, the ends are padded with the odd reflection of
  * 3 x 8 = 24 samples and every section starts in its steady state for the first padded value,
  * so a record does not start with the filter's transient. Ts becomes
  * factor Ts, startSeconds is kept. factor 1 returns the data unchanged.
