@@ -22,6 +22,16 @@ template <class F> QString invalidInputField(F&& f) {
     return QStringLiteral("<no exception>");
 }
 
+/// The whole message (what()) of the InvalidInput that @p f throws, or "<no exception>".
+template <class F> QString invalidInputMessage(F&& f) {
+    try {
+        f();
+    } catch (const xyt::InvalidInput& e) {
+        return QString::fromStdString(e.what());
+    }
+    return QStringLiteral("<no exception>");
+}
+
 /// Same degree and every coefficient within relTol of the largest expected coefficient.
 inline void comparePolynomials(const Polynomial& actual, const Polynomial& expected, double relTol) {
     QCOMPARE(actual.degree(), expected.degree());

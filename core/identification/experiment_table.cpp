@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/identification/experiment_table.h"
+
+#include "core/io/file_io.h"
+#include "core/io/text_escape.h"
+#include "core/model/errors.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace xyt {
+
+std::size_t ExperimentTable::column(std::string_view name) const {
+    for (std::size_t c = 0; c < names.size(); ++c)
+        if (names[c] == name)
+            return c;
+    std::string list;
+    for (std::size_t c = 0; c < names.size() && c < 50; ++c)
+        list += (c ? ", " : "") + shownCell(names[c]);
+    if (names.size() > 50)
+        list += ", ... (" + std::to_string(names.size()) + " in all)";
+    throw InvalidInput(fileName, "has no column '" + shownCell(name) + "'; the columns are: " +
+                                     (list.empty() ? "(none)" : list));
+}
+
+std::string ExperimentTable::cellField(std::size_t c, std::size_t row) const {
+    const std::size_t where = row < rowNumbers.size() ? rowNumbers[row] : row + 1;
+    if (fieldNumbers.at(c) == 0)
+        return fileName + ": " + rowLabel + " " + std::to_string(where) + " of " + shownCell(names[c]);
+    return fileName + ": " + rowLabel + " " + std::to_string(where) + ", column " +
+           std::to_string(fieldNumbers[c]) + " (" + shownCell(names[c]) + ")";
+}
+
+void ExperimentTable::addColumn(std::string name, std::size_t fieldNumber) {
+    names.push_back(std::move(name));
+    columns.emplace_back();
+    fieldNumbers.push_back(fieldNumber);
+    firstProblem.emplace_back();
+}
+
+std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma, std::string& reason) {
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+    while (!cell.empty() && space(cell.front()))
+        cell.remove_prefix(1);
+    while (!cell.empty() && space(cell.back()))
+        cell.remove_suffix(1);
+    if (cell.empty()) {
+        reason = "is missing";
+        return std::nullopt;
+    }
+    // from_chars takes no '+'; a doubled sign stays an error.
+    if (cell.front() == '+' && cell.size() > 1 && cell[1] != '-' && cell[1] != '+')
+        cell.remove_prefix(1);
+    if (cell.size() > 64) {
+        reason = "is not a number";
+        return std::nullopt;
+    }
+    char buffer[64];
+    std::size_t n = 0;
+    for (char c : cell) {
+        const bool digit = c >= '0' && c <= '9';
+        const bool ok = digit || c == '-' || c == '+' || c == 'e' || c == 'E' ||
+                        c == (decimalComma ? ',' : '.');
+        if (!ok) {
+            const std::string lower = [&] {
+                std::string l;
+                for (char x : cell)
+                    l += static_cast<char>(x >= 'A' && x <= 'Z' ? x - 'A' + 'a' : x);
+                return l;
+            }();
+            if (lower == "nan" || lower == "-nan" || lower == "inf" || lower == "-inf" ||
+                lower == "infinity" || lower == "-infinity" || lower == "1.#qnan" || lower == "1.#inf")
+                reason = "is NaN or infinite";
+            else if (c == (decimalComma ? '.' : ','))
+                reason = decimalComma ? "is not a number (a decimal point where the file's decimal "
+                                        "separator is the comma)"
+                                      : "is not a number (a decimal comma where the file's decimal "
+                                        "separator is the point)";
+            else
+                reason = "is not a number";
+            return std::nullopt;
+        }
+        buffer[n++] = c == ',' ? '.' : c;
+    }
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(buffer, buffer + n, value, std::chars_format::general);
+    if (ec == std::errc::result_out_of_range) {
+        reason = "is out of the range of a double";
+        return std::nullopt;
+    }
+    if (ec != std::errc() || end != buffer + n) {
+        reason = "is not a number";
+        return std::nullopt;
+    }
+    if (!std::isfinite(value)) {
+        reason = "is NaN or infinite";
+        return std::nullopt;
+    }
+    return value;
+}
+
+void noteCellProblem(ExperimentTable& table, std::size_t column, std::size_t row,
+                     std::string_view text, const std::string& reason) {
+    if (!table.firstProblem[column])
+        table.firstProblem[column] = CellProblem{row, shownCell(text), reason};
+}
+
+std::string shownCell(std::string_view text, std::size_t maxChars) {
+    const bool cut = text.size() > maxChars;
+    if (cut) {
+        text = text.substr(0, maxChars);
+        // Do not end in the middle of a UTF-8 sequence (terminalText would show it escaped).
+        while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80)
+            text.remove_suffix(1);
+        if (!text.empty() && static_cast<unsigned char>(text.back()) >= 0xC0)
+            text.remove_suffix(1);
+    }
+    return terminalText(text) + (cut ? "..." : "");
+}
+
+std::vector<std::string_view> splitLines(std::string_view text) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
+    std::vector<std::string_view> lines;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        const bool last = end == std::string_view::npos;
+        if (last)
+            end = text.size();
+        std::string_view line = text.substr(start, end - start);
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        if (!(last && line.empty() && start == text.size() && start > 0))
+            lines.push_back(line);
+        if (last)
+            break;
+        start = end + 1;
+    }
+    if (lines.size() == 1 && lines[0].empty())
+        lines.clear();
+    return lines;
+}
+
+std::string readExperimentFile(const std::string& path) {
+    return readRegularFile(path, kMaxExperimentBytes);
+}
+
+} // namespace xyt

@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/identification/mat_reader.h"
+
+#include "core/io/file_io.h"
+#include "core/model/errors.h"
+
+#include <matio.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fcntl.h>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace xyt {
+
+namespace {
+
+/// libmatio reports through a global log function (stderr by default); the messages of the
+/// current thread's last failure are kept to name the reason in our own exception instead.
+thread_local std::string matioMessage;
+
+void keepMatioMessage(int /*level*/, char* message) {
+    if (message && matioMessage.size() < 400)
+        matioMessage = message;
+}
+
+void installMatioLog() {
+    static std::once_flag once;
+    std::call_once(once, [] { Mat_LogInitFunc("xytune", keepMatioMessage); });
+}
+
+struct MatCloser {
+    void operator()(mat_t* m) const { Mat_Close(m); }
+};
+struct VarFreer {
+    void operator()(matvar_t* v) const { Mat_VarFree(v); }
+};
+using MatHandle = std::unique_ptr<mat_t, MatCloser>;
+using VarHandle = std::unique_ptr<matvar_t, VarFreer>;
+
+std::uint32_t read32(const unsigned char* p, bool swap) {
+    std::uint32_t v = 0;
+    std::memcpy(&v, p, 4);
+    return swap ? __builtin_bswap32(v) : v;
+}
+
+/**
+ * Our own look at the first bytes, so that only something shaped like a MAT file reaches
+ * libmatio: a v5/v7.3 header (text, subsystem offset, version 0x0100 or 0x0200, "IM"/"MI"), or a
+ * v4 matrix header whose type code, sizes and name length are valid and whose data fits in the
+ * file. Returns "" when acceptable, else why not.
+ */
+std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0)
+        throw FileError(path, std::strerror(errno));
+    unsigned char h[128] = {};
+    const ssize_t got = ::read(fd, h, sizeof h);
+    ::close(fd);
+    if (got < 0)
+        throw FileError(path, std::strerror(errno));
+    if (got == 128 && ((h[126] == 'I' && h[127] == 'M') || (h[126] == 'M' && h[127] == 'I'))) {
+        const bool little = h[126] == 'I'; // "IM" read as bytes: written little-endian
+        const unsigned version = little ? (h[124] | (h[125] << 8)) : ((h[124] << 8) | h[125]);
+        if (version != 0x0100 && version != 0x0200)
+            return "its MATLAB header states version 0x" + std::to_string(version) + ", not 5 (0x0100) or 7.3 (0x0200)";
+        if (version == 0x0100 && fileSize < 128 + 8)
+            return "it holds a MATLAB header and no variable";
+        return {};
+    }
+    if (got >= 20) {
+        // v4: five int32 (type MOPT, rows, columns, imaginary flag, name length), either byte order.
+        for (const bool swap : {false, true}) {
+            const std::uint32_t type = read32(h, swap), rows = read32(h + 4, swap), cols = read32(h + 8, swap),
+                                imag = read32(h + 12, swap), nameLength = read32(h + 16, swap);
+            const unsigned m = type / 1000, o = type / 100 % 10, p = type / 10 % 10, t = type % 10;
+            if (type >= 5000 || m > 4 || o != 0 || p > 5 || t > 2 || imag > 1 || nameLength < 2 ||
+                nameLength > 64)
+                continue;
+            const std::uint64_t bytesPer[] = {8, 4, 4, 2, 2, 1};
+            const std::uint64_t elements = std::uint64_t(rows) * std::uint64_t(cols);
+            if (rows > (1u << 30) || cols > (1u << 30) || elements > fileSize)
+                continue;
+            const std::uint64_t need = 20 + nameLength + elements * bytesPer[p] * (imag ? 2 : 1);
+            if (need <= fileSize)
+                return {};
+        }
+    }
+    return "it starts with neither a MATLAB v5/v7.3 header nor a valid v4 matrix header";
+}
+
+/// Opens the file after the size and header checks. @throws FileError / InvalidInput.
+MatHandle openMat(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw FileError(path, errno == ENOENT ? "no such file" : std::strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        throw FileError(path, "is not a regular file");
+    if (static_cast<std::uint64_t>(st.st_size) > kMaxExperimentBytes)
+        throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) + " bytes");
+    if (const std::string why = checkHeader(path, static_cast<std::uint64_t>(st.st_size)); !why.empty())
+        throw InvalidInput(path, "is not a MAT file: " + why);
+    installMatioLog();
+    matioMessage.clear();
+    mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+    if (!m)
+        throw InvalidInput(path, "libmatio cannot open it as a MAT file" +
+                                     (matioMessage.empty() ? std::string() : " (" + matioMessage + ")"));
+    return MatHandle(m);
+}
+
+const char* className(int c) {
+    switch (c) {
+    case MAT_C_CELL: return "cell";
+    case MAT_C_STRUCT: return "struct";
+    case MAT_C_OBJECT: return "object";
+    case MAT_C_CHAR: return "char";
+    case MAT_C_SPARSE: return "sparse";
+    case MAT_C_DOUBLE: return "double";
+    case MAT_C_SINGLE: return "single";
+    case MAT_C_INT8: return "int8";
+    case MAT_C_UINT8: return "uint8";
+    case MAT_C_INT16: return "int16";
+    case MAT_C_UINT16: return "uint16";
+    case MAT_C_INT32: return "int32";
+    case MAT_C_UINT32: return "uint32";
+    case MAT_C_INT64: return "int64";
+    case MAT_C_UINT64: return "uint64";
+    case MAT_C_FUNCTION: return "function";
+    case MAT_C_OPAQUE: return "opaque";
+    default: return "unknown";
+    }
+}
+
+bool numericClass(int c) {
+    return c == MAT_C_DOUBLE || c == MAT_C_SINGLE || c == MAT_C_INT8 || c == MAT_C_UINT8 ||
+           c == MAT_C_INT16 || c == MAT_C_UINT16 || c == MAT_C_INT32 || c == MAT_C_UINT32 ||
+           c == MAT_C_INT64 || c == MAT_C_UINT64;
+}
+
+MatVariableInfo describe(const matvar_t& v) {
+    MatVariableInfo info;
+    info.name = v.name ? v.name : "";
+    info.className = className(v.class_type);
+    if (v.rank == 2 && v.dims) {
+        info.rows = v.dims[0];
+        info.columns = v.dims[1];
+    }
+    if (!numericClass(v.class_type))
+        info.whyNot = "is of class " + info.className + ", not numeric";
+    else if (v.isLogical)
+        info.whyNot = "is logical";
+    else if (v.isComplex)
+        info.whyNot = "is complex";
+    else if (v.rank != 2 || !v.dims)
+        info.whyNot = "has " + std::to_string(v.rank) + " dimensions";
+    else if (info.rows == 0 || info.columns == 0)
+        info.whyNot = "is empty";
+    else if (info.rows != 1 && info.columns != 1)
+        info.whyNot = "is a " + std::to_string(info.rows) + " x " + std::to_string(info.columns) + " matrix, not a vector";
+    else if (info.name.empty())
+        info.whyNot = "has no name";
+    info.usable = info.whyNot.empty();
+    return info;
+}
+
+template <class T> void convert(const void* data, std::size_t n, std::vector<double>& out) {
+    out.resize(n);
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < n; ++k) {
+        T v;
+        std::memcpy(&v, bytes + k * sizeof(T), sizeof(T));
+        out[k] = static_cast<double>(v);
+    }
+}
+
+/// The elements of a read variable as doubles. @throws InvalidInput when the data is absent or short.
+std::vector<double> elements(const matvar_t& v, const std::string& path, const std::string& name) {
+    const std::size_t n = v.dims[0] * v.dims[1];
+    const std::size_t size = Mat_SizeOfClass(v.class_type);
+    if (!v.data || size == 0 || n > std::numeric_limits<std::size_t>::max() / size || v.nbytes < n * size)
+        throw InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
+                                     (matioMessage.empty() ? std::string() : " (" + matioMessage + ")"));
+    std::vector<double> out;
+    switch (v.class_type) {
+    case MAT_C_DOUBLE: convert<double>(v.data, n, out); break;
+    case MAT_C_SINGLE: convert<float>(v.data, n, out); break;
+    case MAT_C_INT8: convert<std::int8_t>(v.data, n, out); break;
+    case MAT_C_UINT8: convert<std::uint8_t>(v.data, n, out); break;
+    case MAT_C_INT16: convert<std::int16_t>(v.data, n, out); break;
+    case MAT_C_UINT16: convert<std::uint16_t>(v.data, n, out); break;
+    case MAT_C_INT32: convert<std::int32_t>(v.data, n, out); break;
+    case MAT_C_UINT32: convert<std::uint32_t>(v.data, n, out); break;
+    case MAT_C_INT64: convert<std::int64_t>(v.data, n, out); break;
+    case MAT_C_UINT64: convert<std::uint64_t>(v.data, n, out); break;
+    default: throw InvalidInput(path, "variable '" + shownCell(name) + "' is not numeric");
+    }
+    return out;
+}
+
+std::vector<MatVariableInfo> listOpen(mat_t* m) {
+    std::vector<MatVariableInfo> vars;
+    while (matvar_t* raw = Mat_VarReadNextInfo(m)) {
+        const VarHandle v(raw);
+        vars.push_back(describe(*v));
+        if (vars.size() > 100000)
+            break;
+    }
+    return vars;
+}
+
+} // namespace
+
+MatFileInfo listMatVariables(const std::string& path) {
+    const MatHandle m = openMat(path);
+    MatFileInfo info;
+    switch (Mat_GetVersion(m.get())) {
+    case MAT_FT_MAT4: info.version = "v4"; break;
+    case MAT_FT_MAT5: info.version = "v5"; break;
+    case MAT_FT_MAT73: info.version = "v7.3"; break;
+    default: info.version = "unknown"; break;
+    }
+    info.variables = listOpen(m.get());
+    return info;
+}
+
+ExperimentTable readMat(const std::string& path, const std::vector<std::string>& names) {
+    const MatHandle m = openMat(path);
+    const std::vector<MatVariableInfo> vars = listOpen(m.get());
+    std::vector<std::string> wanted = names;
+    if (wanted.empty())
+        for (const MatVariableInfo& v : vars)
+            if (v.usable)
+                wanted.push_back(v.name);
+    if (wanted.size() > kMaxExperimentColumns)
+        throw InvalidInput(path, "more than " + std::to_string(kMaxExperimentColumns) + " variables asked for");
+    std::string usableList;
+    for (const MatVariableInfo& v : vars)
+        if (v.usable && usableList.size() < 2000)
+            usableList += (usableList.empty() ? "" : ", ") + shownCell(v.name);
+    if (usableList.empty())
+        usableList = "(none)";
+
+    ExperimentTable t;
+    t.fileName = path;
+    t.rowLabel = "element";
+    std::size_t longest = 0;
+    for (const std::string& name : wanted) {
+        const MatVariableInfo* info = nullptr;
+        for (const MatVariableInfo& v : vars)
+            if (v.name == name)
+                info = &v;
+        if (!info)
+            throw InvalidInput(path, "has no variable '" + shownCell(name) + "'; the real numeric vectors are: " + usableList);
+        if (!info->usable)
+            throw InvalidInput(path, "variable '" + shownCell(name) + "' " + info->whyNot +
+                                         "; the real numeric vectors are: " + usableList);
+        for (const std::string& other : t.names)
+            if (other == name)
+                throw InvalidInput(path, "variable '" + shownCell(name) + "' is asked for twice");
+        matioMessage.clear();
+        const VarHandle v(Mat_VarRead(m.get(), name.c_str()));
+        if (!v || v->rank != 2 || !v->dims || !numericClass(v->class_type) || v->isComplex ||
+            v->dims[0] * v->dims[1] != info->rows * info->columns)
+            throw InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
+                                         (matioMessage.empty() ? std::string() : " (" + matioMessage + ")"));
+        t.addColumn(name, 0);
+        const std::size_t c = t.names.size() - 1;
+        t.columns[c] = elements(*v, path, name);
+        for (std::size_t k = 0; k < t.columns[c].size(); ++k)
+            if (!std::isfinite(t.columns[c][k])) {
+                noteCellProblem(t, c, k, std::isnan(t.columns[c][k]) ? "NaN" : "Inf", "is NaN or infinite");
+                break;
+            }
+        longest = std::max(longest, t.columns[c].size());
+    }
+    t.rowNumbers.resize(longest);
+    for (std::size_t k = 0; k < longest; ++k)
+        t.rowNumbers[k] = k + 1;
+    return t;
+}
+
+} // namespace xyt
