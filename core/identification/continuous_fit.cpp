@@ -128,18 +128,40 @@ std::optional<ThirdOrderPlant> convertedArx(const IoData& data) {
     return p;
 }
 
-/// The stated fallback: poles at -1/(20 Ts) and -1/(5 Ts), k0 = a2 Kv with Kv the
-/// least-squares gain of (y[k+1] - y[k]) / Ts on u[k].
-ThirdOrderPlant heuristicPlant(const IoData& data) {
-    const double ts = data.tsSeconds;
-    const double p1 = 1.0 / (20.0 * ts), p2 = 1.0 / (5.0 * ts);
-    double num = 0.0, den = 0.0;
-    for (std::size_t k = 0; k + 1 < data.size(); ++k) {
-        num += (data.y[k + 1] - data.y[k]) / ts * data.u[k];
-        den += data.u[k] * data.u[k];
+/// The plant with poles -p1, -p2 and the least-squares k0 for them: the output is linear in
+/// k0, so k0 = <y, s> / <s, s> with s the response for k0 = 1.
+ThirdOrderPlant withBestGain(const IoData& data, double p1, double p2) {
+    const ThirdOrderPlant unit{1.0, p1 + p2, p1 * p2};
+    Eigen::VectorXd e;
+    if (!residuals(data, Eigen::Vector3d(1.0, unit.a1, unit.a2), e))
+        return ThirdOrderPlant{std::numeric_limits<double>::quiet_NaN(), unit.a1, unit.a2};
+    double ys = 0.0, ss = 0.0;
+    for (std::size_t k = 0; k < data.size(); ++k) {
+        const double s = data.y[k] - e(static_cast<Eigen::Index>(k)); // the unit response
+        ys += data.y[k] * s;
+        ss += s * s;
     }
-    const double kv = den > 0.0 && num != 0.0 ? num / den : 1.0;
-    return ThirdOrderPlant{kv * p1 * p2, p1 + p2, p1 * p2};
+    return ThirdOrderPlant{ss > 0.0 ? ys / ss : std::numeric_limits<double>::quiet_NaN(), unit.a1,
+                           unit.a2};
+}
+
+/// The stated heuristic: real poles -p1, -p2 with p1 <= p2 from {0.003, 0.01, 0.03, 0.1, 0.3,
+/// 1} / Ts (21 pairs), each with its least-squares k0; the pair of smallest loss.
+ThirdOrderPlant gridStart(const IoData& data) {
+    const double grid[] = {0.003, 0.01, 0.03, 0.1, 0.3, 1.0};
+    ThirdOrderPlant best{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
+    double bestLoss = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < std::size(grid); ++i)
+        for (std::size_t j = i; j < std::size(grid); ++j) {
+            const ThirdOrderPlant p =
+                withBestGain(data, grid[i] / data.tsSeconds, grid[j] / data.tsSeconds);
+            const double loss = lossOf(data, p);
+            if (loss < bestLoss) {
+                bestLoss = loss;
+                best = p;
+            }
+        }
+    return best;
 }
 
 } // namespace
@@ -187,11 +209,11 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
         out.initialPlant = *options.initial;
         out.initialization = "given";
     } else {
-        const ThirdOrderPlant heuristic = heuristicPlant(data);
-        out.initialPlant = heuristic;
-        out.initialization = "heuristic";
+        const ThirdOrderPlant grid = gridStart(data);
+        out.initialPlant = grid;
+        out.initialization = "pole grid";
         if (const auto converted = convertedArx(data);
-            converted && lossOf(data, *converted) <= lossOf(data, heuristic)) {
+            converted && lossOf(data, *converted) <= lossOf(data, grid)) {
             out.initialPlant = *converted;
             out.initialization = "ARX(3,3,1) converted";
         }
@@ -220,7 +242,8 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
     };
     const SearchOutcome r = levenbergMarquardt(
         problem,
-        Eigen::Vector3d(out.initialPlant.k0, out.initialPlant.a1, out.initialPlant.a2), options.search);
+        Eigen::Vector3d(out.initialPlant.k0, out.initialPlant.a1, out.initialPlant.a2), options.search,
+                           exactFitLoss(data.y));
     out.status = r.status;
     out.message = r.message;
     out.iterations = r.iterations;

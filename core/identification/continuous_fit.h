@@ -50,7 +50,7 @@ struct ContinuousFitResult {
     std::array<double, 3> standardDeviations{};
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero(); ///< order k0, a1, a2
     ThirdOrderPlant initialPlant;
-    /// "ARX(3,3,1) converted", "heuristic" or "given".
+    /// "ARX(3,3,1) converted", "pole grid" or "given".
     std::string initialization;
     double noiseVariance = 0.0; ///< ||e||^2 / (N - 3)
     double loss = 0.0;          ///< V = ||e||^2 / N
@@ -68,10 +68,11 @@ struct ContinuousFitResult {
  * at 0: subtract the initial position first), by Levenberg-Marquardt (least_squares.h) with a
  * central-difference Jacobian. Initial values: the ARX(3,3,1) estimate converted to continuous
  * time (the pole nearest z = 1 is the integrator, the others map by s = ln(z) / Ts, k0 =
- * a2 B(1) / (Ts prod(1 - z_i)) from the velocity gain); when that conversion gives no real
- * positive a1, a2, k0 != 0, the stated heuristic: poles at s = -1/(20 Ts) and -1/(5 Ts) with the
- * least-squares velocity gain of (y[k+1] - y[k]) / Ts on u[k]. The candidate with the smaller
- * loss starts the search.
+ * a2 B(1) / (Ts prod(1 - z_i)) from the velocity gain), and the pole grid: real poles -p1, -p2
+ * with p1 <= p2 from {0.003, 0.01, 0.03, 0.1, 0.3, 1} / Ts (21 pairs), each with its
+ * least-squares k0 (the output is linear in k0). The ARX conversion is exact on noise-free data
+ * but fails under measurement noise (ARX then puts a root on the negative real axis); the
+ * candidate with the smaller loss starts the search.
  * @throws InvalidInput from validateIoData, "max_iterations" (< 1), "finite_difference_step"
  *         (not in (0, 0.1]), "data" when N < 10, "initial" from ThirdOrderPlant::validate.
  */

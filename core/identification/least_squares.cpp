@@ -52,7 +52,7 @@ LinearLeastSquares linearLeastSquares(const Eigen::MatrixXd& phi, const Eigen::V
 }
 
 SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::VectorXd& theta0,
-                                 const SearchOptions& options) {
+                                 const SearchOptions& options, double exactFitLoss) {
     SearchOutcome out;
     out.theta = theta0;
     if (problem.project)
@@ -75,9 +75,9 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
             out.message = "cancelled after " + std::to_string(out.iterations) + " iterations";
             return out;
         }
-        if (out.loss == 0.0) {
+        if (out.loss <= exactFitLoss) {
             out.status = EstimationStatus::Converged;
-            out.message = "exact fit";
+            out.message = "exact fit (the loss is at the round-off level of the data)";
             break;
         }
         // QR of the scaled Jacobian once per iteration; each damping trial then solves the
@@ -149,6 +149,13 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
     if (options.progress)
         options.progress(1.0);
     return out;
+}
+
+double exactFitLoss(const std::vector<double>& y) {
+    double sum = 0.0;
+    for (double v : y)
+        sum += v * v;
+    return y.empty() ? 0.0 : 1e-26 * sum / static_cast<double>(y.size());
 }
 
 void parameterCovariance(const Eigen::MatrixXd& jacobian, double sigma2,

@@ -87,10 +87,15 @@ struct SearchOutcome {
  * Levenberg-Marquardt with Marquardt's column scaling: each iteration solves
  * [J S^-1; sqrt(lambda) I] dx = -[e; 0] by Householder QR and steps theta += S^-1 dx (then
  * project); a step that lowers V is accepted and lambda divided by 10, otherwise lambda is
- * multiplied by 10 and the step tried again. Starts at lambda = 1e-4.
+ * multiplied by 10 and the step tried again. Starts at lambda = 1e-4. A loss at or below
+ * @p exactFitLoss counts as an exact fit (converged): below it the changes of V are round-off
+ * (the estimators pass (1e-13 rms(y))^2, see exactFitLoss()).
  */
 SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::VectorXd& theta0,
-                                 const SearchOptions& options);
+                                 const SearchOptions& options, double exactFitLoss = 0.0);
+
+/// (1e-13 rms(y))^2: a mean squared residual this small is round-off of the data's magnitude.
+double exactFitLoss(const std::vector<double>& y);
 
 /**
  * sigma^2 (J^T J)^-1 and its diagonal's square roots, from the final Jacobian (through

@@ -287,7 +287,8 @@ PemResult estimate(const Structure& s, const std::string& name, const IoData& da
         if (changed)
             theta = pack(s, m);
     };
-    const SearchOutcome r = levenbergMarquardt(problem, pack(s, start), options.search);
+    const SearchOutcome r = levenbergMarquardt(problem, pack(s, start), options.search,
+                           exactFitLoss(data.y));
     out.status = r.status;
     out.message = r.message;
     out.iterations = r.iterations;

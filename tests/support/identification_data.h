@@ -8,6 +8,8 @@
 #include "core/design/digital_controller.h"
 #include "core/identification/io_data.h"
 
+#include <QString>
+
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -71,6 +73,52 @@ inline void meanAndSpread(const std::vector<double>& v, double& mean, double& sp
     for (double x : v)
         s += (x - mean) * (x - mean);
     spread = std::sqrt(s / static_cast<double>(v.size() - 1));
+}
+
+/**
+ * The 200-seed check of the identification tests: for each parameter i, the sample SD of
+ * est[i] must agree with the mean of the reported SDs sd[i] within 25 % (the sample SD of 200
+ * draws has a relative standard error of 1/sqrt(398) = 5 %, so 25 % is 5 standard errors, with
+ * room for the asymptotic covariance at a few hundred samples), and the mean must lie within
+ * 4 standard errors plus 10 % of a spread (the O(1/N) bias of a nonlinear estimate) of
+ * truth[i]. Returns an empty string when both hold, else what failed.
+ */
+inline QString spreadMismatch(const std::vector<std::vector<double>>& est,
+                              const std::vector<std::vector<double>>& sd,
+                              const std::vector<double>& truth) {
+    for (std::size_t i = 0; i < truth.size(); ++i) {
+        double mean = 0.0, spread = 0.0, meanSd = 0.0, unused = 0.0;
+        meanAndSpread(est[i], mean, spread);
+        meanAndSpread(sd[i], meanSd, unused);
+        const double n = static_cast<double>(est[i].size());
+        if (!std::isfinite(spread) || !std::isfinite(meanSd) || !(meanSd > 0.0) ||
+            std::abs(spread - meanSd) > 0.25 * meanSd ||
+            std::abs(mean - truth[i]) > 4.0 * spread / std::sqrt(n) + 0.1 * spread)
+            return QStringLiteral("parameter %1: mean %2 (truth %3), spread %4, mean reported SD %5")
+                .arg(i)
+                .arg(mean, 0, 'g', 8)
+                .arg(truth[i], 0, 'g', 8)
+                .arg(spread, 0, 'g', 4)
+                .arg(meanSd, 0, 'g', 4);
+    }
+    return {};
+}
+
+/// Runs @p fit for seeds 0 .. count-1 and collects its parameters and standard deviations.
+template <typename Fit>
+void collectOverSeeds(std::size_t count, std::size_t parameters, Fit fit,
+                      std::vector<std::vector<double>>& est,
+                      std::vector<std::vector<double>>& sd) {
+    est.assign(parameters, {});
+    sd.assign(parameters, {});
+    std::vector<double> p, s;
+    for (std::size_t seed = 0; seed < count; ++seed) {
+        fit(seed, p, s);
+        for (std::size_t i = 0; i < parameters; ++i) {
+            est[i].push_back(p[i]);
+            sd[i].push_back(s[i]);
+        }
+    }
 }
 
 } // namespace xyt::test
