@@ -63,8 +63,10 @@ CorrelationTest correlationTest(std::vector<int> lags, std::vector<double> value
     CorrelationTest t;
     t.bound = bound;
     for (std::size_t i = 0; i < values.size(); ++i) {
-        if (std::abs(values[i]) > bound)
+        if (std::abs(values[i]) > bound) {
             t.passed = false;
+            ++t.outsideCount;
+        }
         if (i == 0 || std::abs(values[i]) > std::abs(t.worstValue)) {
             t.worstValue = values[i];
             t.worstLag = lags[i];

@@ -128,6 +128,7 @@ struct CorrelationTest {
     std::vector<double> values; ///< normalized correlation, |value| <= 1
     double bound = 0.0;         ///< z / sqrt(N)
     bool passed = true;         ///< every |value| <= bound
+    int outsideCount = 0;       ///< lags with |value| > bound (expected: 1 % of the lags)
     int worstLag = 0;           ///< lag of the largest |value|
     double worstValue = 0.0;
 };
@@ -141,7 +142,8 @@ struct CorrelationTest {
  * The bound z/sqrt(N) (z = 2.576: 99 %) is the two-sided band of one lag for white residuals
  * independent of u. The verdict asks every lag to be inside, so even for perfect residuals a
  * test fails with probability 1 - 0.99^M (22 % for M = 25 independent lags, 40 % for the 51
- * cross lags): a failure at one lag just outside the band is weak evidence; look at worstValue.
+ * cross lags): a failure at one lag just outside the band is weak evidence; look at worstValue
+ * and outsideCount (0.25 lags of 25 expected outside for white residuals).
  */
 struct ResidualAnalysis {
     CorrelationTest autocorrelation;
