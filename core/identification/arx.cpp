@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/identification/arx.h"
+
+#include "core/identification/least_squares.h"
+#include "core/model/errors.h"
+
+#include <Eigen/QR>
+
+#include <algorithm>
+
+namespace xyt {
+
+std::string ArxOrders::toString() const {
+    return "ARX(" + std::to_string(na) + "," + std::to_string(nb) + "," + std::to_string(nk) +
+           ")";
+}
+
+void ArxOrders::validate() const {
+    if (na < 0 || na > 100)
+        throw InvalidInput("na", "must be between 0 and 100");
+    if (nb < 1 || nb > 100)
+        throw InvalidInput("nb", "must be between 1 and 100");
+    if (nk < 0 || nk > 100)
+        throw InvalidInput("nk", "must be between 0 and 100");
+}
+
+ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankThreshold) {
+    validateIoData(data);
+    orders.validate();
+    const std::size_t n = data.size();
+    const std::size_t na = static_cast<std::size_t>(orders.na);
+    const std::size_t nb = static_cast<std::size_t>(orders.nb);
+    const std::size_t nk = static_cast<std::size_t>(orders.nk);
+    const std::size_t n0 = std::max(na, nk + nb - 1);
+    const std::size_t d = na + nb;
+    // One more row than parameters, so that the noise variance has a degree of freedom.
+    if (n < n0 + d + 1)
+        throw InvalidInput("data", std::to_string(n) + " samples are too few for " +
+                                       orders.toString() + ": at least " +
+                                       std::to_string(n0 + d + 1) + " needed");
+    ArxResult out;
+    out.orders = orders;
+    out.rankThreshold = rankThreshold;
+    out.firstRow = n0;
+    out.rows = n - n0;
+    const Eigen::Index rows = static_cast<Eigen::Index>(out.rows);
+    Eigen::MatrixXd phi(rows, static_cast<Eigen::Index>(d));
+    Eigen::VectorXd target(rows);
+    for (std::size_t t = n0; t < n; ++t) {
+        const Eigen::Index r = static_cast<Eigen::Index>(t - n0);
+        for (std::size_t i = 1; i <= na; ++i)
+            phi(r, static_cast<Eigen::Index>(i - 1)) = -data.y[t - i];
+        for (std::size_t j = 0; j < nb; ++j)
+            phi(r, static_cast<Eigen::Index>(na + j)) = data.u[t - nk - j];
+        target(r) = data.y[t];
+    }
+    for (std::size_t i = 1; i <= na; ++i)
+        out.parameterNames.push_back("a" + std::to_string(i));
+    for (std::size_t j = 0; j < nb; ++j)
+        out.parameterNames.push_back("b" + std::to_string(nk + j));
+
+    const LinearLeastSquares ls = linearLeastSquares(phi, target, rankThreshold);
+    out.rank = ls.rank;
+    if (!ls.fullRank()) {
+        out.status = EstimationStatus::NotPersistentlyExciting;
+        // Which order is to blame: the input block alone, or y and u together.
+        const Eigen::MatrixXd uBlock = phi.rightCols(static_cast<Eigen::Index>(nb));
+        const LinearLeastSquares uOnly =
+            linearLeastSquares(uBlock, Eigen::VectorXd::Zero(rows), rankThreshold);
+        if (!uOnly.fullRank())
+            out.message = "input not persistently exciting for nb = " + std::to_string(nb) +
+                          " (the input block has rank " + std::to_string(uOnly.rank) + ")";
+        else
+            out.message = "regressor of " + orders.toString() + " has rank " +
+                          std::to_string(ls.rank) + " < " + std::to_string(d) +
+                          ": the input is not persistently exciting of order na + nb = " +
+                          std::to_string(d) + ", or the data are exactly of lower order "
+                          "(noise-free): lower na or nb";
+        return out;
+    }
+    out.status = EstimationStatus::Converged;
+    out.parameters.assign(ls.theta.data(), ls.theta.data() + ls.theta.size());
+    const double sse = ls.residuals.squaredNorm();
+    out.loss = sse / static_cast<double>(out.rows);
+    out.noiseVariance = sse / static_cast<double>(out.rows - d);
+    out.covariance = out.noiseVariance * ls.inverseGram;
+    out.standardDeviations.resize(d);
+    for (std::size_t j = 0; j < d; ++j)
+        out.standardDeviations[j] =
+            std::sqrt(out.covariance(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)));
+    out.residuals.assign(n, 0.0);
+    for (std::size_t t = n0; t < n; ++t)
+        out.residuals[t] = ls.residuals(static_cast<Eigen::Index>(t - n0));
+
+    out.model.tsSeconds = data.tsSeconds;
+    out.model.a.assign(1, 1.0);
+    out.model.a.insert(out.model.a.end(), out.parameters.begin(),
+                       out.parameters.begin() + static_cast<std::ptrdiff_t>(na));
+    out.model.b.assign(nk, 0.0);
+    out.model.b.insert(out.model.b.end(), out.parameters.begin() + static_cast<std::ptrdiff_t>(na),
+                       out.parameters.end());
+    if (maxRootMagnitude(out.model.a) > 1.0)
+        out.warnings.push_back("A has a root outside the unit circle: the model is unstable "
+                               "(an integrating axis gives a root near z = 1)");
+    return out;
+}
+
+} // namespace xyt
