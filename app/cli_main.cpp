@@ -61,6 +61,17 @@ constexpr CommandHelp kGtHelp[] = {
      "            --contour (circle or G-code sessions): also \"xy\", pairs of plants drawn over\n"
      "            both axes' ranges (and the joint box's corners) tracing the contour together:\n"
      "            max and RMS contour error {count, min, p05, ...}, the worst pair; CSV rows \"xy\".\n"},
+    {"identify",
+     "  identify  --data FILE (CSV/TSV, .lvm, .mat) --input-col NAME --output-col NAME\n"
+     "            [--time-col NAME | --ts S] (else the file's sample time, .lvm) [--segment N]\n"
+     "            [--output-unit mm|m|counts [--mm-per-count X]] --structure arx|oe|bj|gt3\n"
+     "            [--na 2 --nb 3 --nc 1 --nd 1 --nf 2 --nk 1] [--validate FILE2] [--range T0:T1]\n"
+     "            [--detrend | --remove-means] [--decimate N] [--horizon 5] [--max-lag 25]\n"
+     "            [--max-iterations 100]: the axis model from a logged experiment. JSON: data,\n"
+     "            model {structure, status, parameters {name: {value, std}}, polynomials a b c d f\n"
+     "            (ascending z^-1), plant {k0, a1, a2} for gt3 (y in mm)}, fit {estimation,\n"
+     "            validation: {simulation, prediction} %}, fpe, aic, residual_tests, poles, zeros,\n"
+     "            stable, non_minimum_phase, warnings. Exit 3 when no estimate exists (status).\n"},
     {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
               "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
               "            [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"
@@ -198,6 +209,7 @@ int main(int argc, char* argv[]) {
         {"bode", xyt::cli::runBode},
         {"margins", xyt::cli::runMargins},
         {"robustness", xyt::cli::runRobustness},
+        {"identify", xyt::cli::runIdentify},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// xytune-cli identify: an axis model from a logged experiment (issue 11). Reads the file, picks
+// the columns, preprocesses (range, detrend, decimate), identifies the chosen structure and
+// prints the estimate with its uncertainty, fits, FPE/AIC, residual tests, poles and zeros.
+#include "app/cli_args.h"
+#include "app/cli_commands.h"
+#include "app/cli_json.h"
+
+#include "core/identification/experiment_data.h"
+#include "core/identification/experiment_file.h"
+#include "core/identification/identification.h"
+#include "core/identification/preprocessing.h"
+#include "core/io/file_io.h"
+#include "core/model/errors.h"
+
+#include <QJsonArray>
+
+#include <cmath>
+
+namespace xyt::cli {
+
+namespace {
+
+/// The table of @p path; a file that cannot be read is bad input naming @p option.
+ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment) {
+    try {
+        return readExperimentTable(path.toStdString(), segment);
+    } catch (const FileError& e) {
+        throw InvalidInput(option.toStdString(), e.what());
+    }
+}
+
+/// "T0:T1" in seconds.
+std::pair<double, double> parseRange(const QString& text) {
+    const QStringList parts = text.split(':');
+    bool ok0 = false, ok1 = false;
+    const double t0 = parts.size() == 2 ? parts[0].toDouble(&ok0) : 0.0;
+    const double t1 = parts.size() == 2 ? parts[1].toDouble(&ok1) : 0.0;
+    if (!ok0 || !ok1 || !std::isfinite(t0) || !std::isfinite(t1) || !(t1 > t0))
+        throw InvalidInput("--range", "'" + text.toStdString() + "' is not T0:T1 in seconds with T1 > T0");
+    return {t0, t1};
+}
+
+/// The record of one file with the command's column, time and scale options.
+IoData record(const CliArgs& args, const QString& option, const QString& path) {
+    const ExperimentTable table = readTable(option, path, static_cast<std::size_t>(args.count("segment", 1, 1'000'000)));
+    ExperimentColumns c;
+    c.input = args.text("input-col", QString()).toStdString();
+    c.output = args.text("output-col", QString()).toStdString();
+    if (c.input.empty())
+        throw InvalidInput("--input-col", "give the command column's name");
+    if (c.output.empty())
+        throw InvalidInput("--output-col", "give the position column's name");
+    if (args.has("time-col") && args.has("ts"))
+        throw InvalidInput("--ts", "give either --time-col or --ts, not both");
+    if (args.has("time-col"))
+        c.time = args.text("time-col", QString()).toStdString();
+    else if (args.has("ts"))
+        c.sampleTimeSeconds = args.number("ts");
+    else if (table.sampleTimeSeconds)
+        c.fileSampleTime = true;
+    else
+        throw InvalidInput("--ts", "the file states no sample time: give --time-col NAME or --ts SECONDS");
+    const QString unit = args.text("output-unit", "mm");
+    if (unit == "m")
+        c.outputScale.unit = OutputUnit::Metres;
+    else if (unit == "counts") {
+        c.outputScale.unit = OutputUnit::EncoderCounts;
+        c.outputScale.mmPerCount = args.number("mm-per-count");
+    } else if (unit != "mm")
+        throw InvalidInput("--output-unit", "must be mm, m or counts");
+    IoData data = experimentData(table, c);
+    if (const auto range = args.value("range")) {
+        const auto [t0, t1] = parseRange(*range);
+        data = selectTimeRange(data, t0, t1);
+    }
+    if (args.flag("detrend"))
+        data = removeTrends(data).data;
+    else if (args.flag("remove-means"))
+        data = removeMeans(data).data;
+    if (args.has("decimate"))
+        data = decimate(data, args.count("decimate", 1, 1000));
+    return data;
+}
+
+QJsonObject dataJson(const IoData& d) {
+    return {{"source", QString::fromStdString(d.source)},
+            {"samples", static_cast<qint64>(d.size())},
+            {"ts", number(d.tsSeconds)},
+            {"start", number(d.startSeconds)}};
+}
+
+QJsonObject correlationJson(const CorrelationTest& t) {
+    return {{"passed", t.passed},
+            {"bound", number(t.bound)},
+            {"outside", t.outsideCount},
+            {"lags", static_cast<qint64>(t.lags.size())},
+            {"worst_lag", t.worstLag},
+            {"worst_value", number(t.worstValue)}};
+}
+
+QJsonObject fitJson(const ModelFit& simulation, const ModelFit& prediction) {
+    return {{"simulation", number(simulation.fitPercent)},
+            {"prediction", number(prediction.fitPercent)},
+            {"horizon", prediction.horizon}};
+}
+
+QJsonObject modelJson(const IdentifiedModel& m) {
+    QJsonObject parameters;
+    for (std::size_t i = 0; i < m.parameters.size(); ++i)
+        parameters.insert(QString::fromStdString(m.parameterNames[i]),
+                          QJsonObject{{"value", number(m.parameters[i])},
+                                      {"std", number(i < m.standardDeviations.size() ? m.standardDeviations[i] : NAN)}});
+    QJsonObject polynomials{{"a", numbers(m.model.a)}, {"b", numbers(m.model.b)}, {"c", numbers(m.model.c)},
+                            {"d", numbers(m.model.d)}, {"f", numbers(m.model.f)}, {"ts", number(m.model.tsSeconds)}};
+    QJsonObject out{{"structure", QString::fromStdString(m.structure)},
+                    {"status", QString::fromStdString(estimationStatusName(m.status))},
+                    {"message", QString::fromStdString(m.message)},
+                    {"parameters", parameters},
+                    {"polynomials", polynomials}};
+    if (m.plant)
+        out.insert("plant", QJsonObject{{"k0", number(m.plant->k0)}, {"a1", number(m.plant->a1)},
+                                        {"a2", number(m.plant->a2)}, {"output_unit", "mm"}});
+    return out;
+}
+
+} // namespace
+
+int runIdentify(const QStringList& argv) {
+    const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means"});
+    args.allowOnly({"data", "time-col", "ts", "input-col", "output-col", "output-unit", "mm-per-count", "segment",
+                    "structure", "na", "nb", "nc", "nd", "nf", "nk", "validate", "range", "detrend",
+                    "remove-means", "decimate", "horizon", "max-lag", "max-iterations"});
+    if (!args.has("data"))
+        throw InvalidInput("--data", "give the experiment file (CSV/TSV, .lvm or .mat)");
+    if (!args.has("structure"))
+        throw InvalidInput("--structure", "give arx, oe, bj or gt3");
+    IdentificationSpec spec;
+    try {
+        spec.structure = parseModelStructure(args.text("structure", QString()).toStdString());
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("--structure", e.reason());
+    }
+    const auto order = [&](const char* name, int fallback, int minimum) {
+        const int v = args.count(name, fallback, 100);
+        if (v < minimum)
+            throw InvalidInput(CliArgs::field(name), "must be at least " + std::to_string(minimum));
+        return v;
+    };
+    spec.arx = {order("na", 2, 0), order("nb", 3, 1), order("nk", 1, 0)};
+    spec.oe = {order("nb", 3, 1), order("nf", 2, 0), order("nk", 1, 0)};
+    spec.bj = {order("nb", 3, 1), order("nc", 1, 0), order("nd", 1, 0), order("nf", 2, 0), order("nk", 1, 0)};
+    spec.predictionHorizon = args.count("horizon", 5, 1'000'000);
+    spec.maxLag = args.count("max-lag", 25, 10'000);
+    spec.search.maxIterations = args.count("max-iterations", 100, 100'000);
+
+    IoData estimation = record(args, "--data", *args.value("data"));
+    std::optional<IoData> validation;
+    if (const auto path = args.value("validate"))
+        validation = record(args, "--validate", *path);
+    QJsonArray notes;
+    if (spec.structure == ModelStructure::ContinuousThirdOrder) {
+        // The plant integrates: its model starts at rest at position 0, so the record's initial
+        // position is taken off (said here, not guessed silently).
+        for (IoData* d : {&estimation, validation ? &*validation : nullptr}) {
+            if (!d)
+                continue;
+            const double y0 = d->y.front();
+            for (double& y : d->y)
+                y -= y0;
+            notes.append(QStringLiteral("%1: the initial position %2 mm was subtracted (the plant starts at rest at 0)")
+                             .arg(QString::fromStdString(d->source))
+                             .arg(y0, 0, 'g', 10));
+        }
+    }
+    const IdentifiedModel m = identifyModel(estimation, validation ? &*validation : nullptr, spec);
+    QJsonObject out{{"data", dataJson(estimation)}, {"model", modelJson(m)}};
+    if (validation)
+        out.insert("validation_data", dataJson(*validation));
+    if (m.hasEstimate()) {
+        QJsonObject fit{{"estimation", fitJson(m.fit.estimationSimulation, m.fit.estimationPrediction)}};
+        if (m.fit.validationSimulation)
+            fit.insert("validation", fitJson(*m.fit.validationSimulation, *m.fit.validationPrediction));
+        out.insert("fit", fit);
+        out.insert("fpe", number(m.criteria.samples > 0 ? m.criteria.fpe : NAN));
+        out.insert("aic", number(m.criteria.samples > 0 ? m.criteria.aic : NAN));
+        if (m.residualTests.samples > 0)
+            out.insert("residual_tests", QJsonObject{{"passed", m.residualTests.passed()},
+                                                     {"autocorrelation", correlationJson(m.residualTests.autocorrelation)},
+                                                     {"cross_correlation", correlationJson(m.residualTests.crossCorrelation)}});
+        out.insert("poles", complexPairs(m.roots.poles));
+        out.insert("zeros", complexPairs(m.roots.zeros));
+        if (!m.roots.continuousPoles.empty())
+            out.insert("continuous_poles", complexPairs(m.roots.continuousPoles));
+        out.insert("stable", m.roots.stable);
+        out.insert("non_minimum_phase", m.roots.nonMinimumPhase);
+    }
+    QJsonArray warnings = notes;
+    for (const std::string& w : m.warnings)
+        warnings.append(QString::fromStdString(w));
+    out.insert("warnings", warnings);
+    print(out);
+    return m.hasEstimate() ? 0 : 3;
+}
+
+} // namespace xyt::cli

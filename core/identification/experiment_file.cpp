@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/identification/experiment_file.h"
+
+#include "core/identification/delimited_reader.h"
+#include "core/identification/lvm_reader.h"
+#include "core/identification/mat_reader.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace xyt {
+
+ExperimentFileKind experimentFileKind(const std::string& path) {
+    std::string lower = path;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const auto endsWith = [&](const std::string& suffix) {
+        return lower.size() >= suffix.size() && lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    if (endsWith(".lvm"))
+        return ExperimentFileKind::Lvm;
+    if (endsWith(".mat"))
+        return ExperimentFileKind::Mat;
+    return ExperimentFileKind::Delimited;
+}
+
+ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment) {
+    switch (experimentFileKind(path)) {
+    case ExperimentFileKind::Lvm: {
+        LvmReadOptions o;
+        o.segment = lvmSegment;
+        return readLvmFile(path, o).table;
+    }
+    case ExperimentFileKind::Mat: return readMat(path);
+    case ExperimentFileKind::Delimited: break;
+    }
+    return readDelimitedFile(path).table;
+}
+
+} // namespace xyt
