@@ -21,6 +21,10 @@
 #include "core/contour/contour_metrics.h"
 #include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
+#include "core/design/digital_controller.h"
+#include "core/identification/arx.h"
+#include "core/identification/continuous_fit.h"
+#include "core/identification/prediction_error.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
 #include "app/bench_reference_loop.h"
@@ -41,6 +45,7 @@
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -199,6 +204,75 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
                 "(%d of them while the map was recomputing)\n",
                 0.5 * (us[19] + us[20]), us.front(), us.back(), us.size(), overlapped);
     std::fflush(stdout);
+}
+
+/// Issue 11: the estimators on simulated data of the sizes an experiment gives. Inputs and
+/// noise from std::mt19937_64 with fixed seeds, one draw per statement.
+void identification(const char* filter) {
+    const auto binary = [](std::size_t n, std::uint64_t seed) {
+        std::mt19937_64 rng(seed);
+        std::bernoulli_distribution coin(0.5);
+        std::vector<double> v(n);
+        for (auto& x : v)
+            x = coin(rng) ? 1.0 : -1.0;
+        return v;
+    };
+    const auto noisy = [](std::vector<double> y, double sigma, std::uint64_t seed) {
+        std::mt19937_64 rng(seed);
+        std::normal_distribution<double> g(0.0, sigma);
+        for (auto& x : y)
+            x += g(rng);
+        return y;
+    };
+    {
+        // Paper 001's x-axis ARX(2,3,1) model, 100,000 samples, equation noise. Target < 10 ms.
+        const std::vector<double> a{1.0, -1.6580, 0.6583}, b{0.0, 0.0421, 0.0628, -0.0454};
+        xyt::IoData d;
+        d.tsSeconds = 0.07;
+        d.u = binary(100000, 1);
+        d.y = xyt::filterDifferenceEquation(b, a, d.u);
+        const std::vector<double> e = xyt::filterDifferenceEquation({1.0}, a, noisy(std::vector<double>(d.u.size()), 0.01, 2));
+        for (std::size_t k = 0; k < d.y.size(); ++k)
+            d.y[k] += e[k];
+        benchmark(filter, "identify_arx231_100000", [&] {
+            sink = sink + xyt::estimateArx(d, xyt::ArxOrders{2, 3, 1}).parameters[0];
+        }, 10, 0.5);
+    }
+    {
+        // Soderstrom & Stoica's plant (q^-1 + 0.5 q^-2) / (1 - 1.5 q^-1 + 0.7 q^-2), 10,000
+        // samples; OE with white output noise, BJ with noise (1 - 0.3 q^-1) / (1 - 0.7 q^-1).
+        // Target < 300 ms each.
+        const std::vector<double> b{0.0, 1.0, 0.5}, f{1.0, -1.5, 0.7};
+        xyt::IoData oe;
+        oe.tsSeconds = 0.01;
+        oe.u = binary(10000, 3);
+        oe.y = noisy(xyt::filterDifferenceEquation(b, f, oe.u), 0.3, 4);
+        xyt::IoData bj = oe;
+        const std::vector<double> v = xyt::filterDifferenceEquation(
+            {1.0, -0.3}, {1.0, -0.7}, noisy(std::vector<double>(oe.u.size()), 0.3, 5));
+        bj.y = xyt::filterDifferenceEquation(b, f, oe.u);
+        for (std::size_t k = 0; k < bj.y.size(); ++k)
+            bj.y[k] += v[k];
+        benchmark(filter, "identify_oe221_10000", [&] {
+            sink = sink + xyt::estimateOe(oe, xyt::OeOrders{2, 2, 1}).loss;
+        }, 5, 0.5);
+        benchmark(filter, "identify_bj21121_10000", [&] {
+            sink = sink + xyt::estimateBj(bj, xyt::BjOrders{2, 1, 1, 2, 1}).loss;
+        }, 5, 0.5);
+    }
+    {
+        // Paper 000's lower base from a +-2.5 V square wave (0.5 s per level) at 10 ms, 10,000
+        // samples, 0.1 mm measurement noise. Target < 500 ms.
+        const xyt::ThirdOrderPlant plant = xyt::findGtPreset("lower-base")->plant;
+        xyt::IoData d;
+        d.tsSeconds = 0.01;
+        for (std::size_t k = 0; k < 10000; ++k)
+            d.u.push_back((k / 50) % 2 == 0 ? 2.5 : -2.5);
+        d.y = noisy(xyt::simulateThirdOrderPlant(plant, d.u, d.tsSeconds), 1e-4, 6);
+        benchmark(filter, "identify_gt3_fit_10000", [&] {
+            sink = sink + xyt::fitThirdOrderPlant(d).plant.k0;
+        }, 5, 0.5);
+    }
 }
 
 } // namespace
@@ -402,6 +476,7 @@ int main(int argc, char* argv[]) {
         });
     }
     gcodeContour(filter);
+    identification(filter);
     guiSliderToRepaint(filter, argc, argv);
     return 0;
 }

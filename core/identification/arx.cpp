@@ -7,6 +7,7 @@
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <utility>
 
 namespace xyt {
 
@@ -59,12 +60,16 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
     for (std::size_t j = 0; j < nb; ++j)
         out.parameterNames.push_back("b" + std::to_string(nk + j));
 
-    const LinearLeastSquares ls = linearLeastSquares(phi, target, rankThreshold);
+    const LinearLeastSquares ls = linearLeastSquares(std::move(phi), target, rankThreshold);
     out.rank = ls.rank;
     if (!ls.fullRank()) {
         out.status = EstimationStatus::NotPersistentlyExciting;
         // Which order is to blame: the input block alone, or y and u together.
-        const Eigen::MatrixXd uBlock = phi.rightCols(static_cast<Eigen::Index>(nb));
+        Eigen::MatrixXd uBlock(rows, static_cast<Eigen::Index>(nb));
+        for (std::size_t t = n0; t < n; ++t)
+            for (std::size_t j = 0; j < nb; ++j)
+                uBlock(static_cast<Eigen::Index>(t - n0), static_cast<Eigen::Index>(j)) =
+                    data.u[t - nk - j];
         const LinearLeastSquares uOnly =
             linearLeastSquares(uBlock, Eigen::VectorXd::Zero(rows), rankThreshold);
         if (!uOnly.fullRank())
@@ -80,7 +85,18 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
     }
     out.status = EstimationStatus::Converged;
     out.parameters.assign(ls.theta.data(), ls.theta.data() + ls.theta.size());
-    const double sse = ls.residuals.squaredNorm();
+    // Equation errors e(t) = y(t) + sum a_i y(t-i) - sum b_j u(t-nk-j).
+    out.residuals.assign(n, 0.0);
+    double sse = 0.0;
+    for (std::size_t t = n0; t < n; ++t) {
+        double e = data.y[t];
+        for (std::size_t i = 1; i <= na; ++i)
+            e += out.parameters[i - 1] * data.y[t - i];
+        for (std::size_t j = 0; j < nb; ++j)
+            e -= out.parameters[na + j] * data.u[t - nk - j];
+        out.residuals[t] = e;
+        sse += e * e;
+    }
     out.loss = sse / static_cast<double>(out.rows);
     out.noiseVariance = sse / static_cast<double>(out.rows - d);
     out.covariance = out.noiseVariance * ls.inverseGram;
@@ -88,9 +104,6 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
     for (std::size_t j = 0; j < d; ++j)
         out.standardDeviations[j] =
             std::sqrt(out.covariance(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j)));
-    out.residuals.assign(n, 0.0);
-    for (std::size_t t = n0; t < n; ++t)
-        out.residuals[t] = ls.residuals(static_cast<Eigen::Index>(t - n0));
 
     out.model.tsSeconds = data.tsSeconds;
     out.model.a.assign(1, 1.0);

@@ -28,17 +28,17 @@ Eigen::VectorXd columnScales(const Eigen::MatrixXd& m) {
 
 } // namespace
 
-LinearLeastSquares linearLeastSquares(const Eigen::MatrixXd& phi, const Eigen::VectorXd& y,
+LinearLeastSquares linearLeastSquares(Eigen::MatrixXd phi, const Eigen::VectorXd& y,
                                       double rankThreshold) {
     LinearLeastSquares out;
     const Eigen::Index d = phi.cols();
     const Eigen::VectorXd s = columnScales(phi);
-    const Eigen::MatrixXd scaled = phi * s.cwiseInverse().asDiagonal();
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(scaled);
+    phi *= s.cwiseInverse().asDiagonal(); // the scaled regressor, in place
+    // In place: the QR overwrites phi with its factors (Eigen's Inplace decomposition).
+    Eigen::ColPivHouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(phi);
     qr.setThreshold(rankThreshold);
     out.rank = qr.rank();
     out.theta = qr.solve(y).cwiseQuotient(s);
-    out.residuals = y - phi * out.theta;
     if (out.rank == d && d > 0) {
         // (Phi^T Phi)^-1 = S^-1 P R^-1 R^-T P^T S^-1, from the triangular factor only.
         const Eigen::MatrixXd r = qr.matrixR().topLeftCorner(d, d).triangularView<Eigen::Upper>();

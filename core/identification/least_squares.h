@@ -33,12 +33,13 @@ inline constexpr double kDefaultRankThreshold = 1e-10;
  */
 struct LinearLeastSquares {
     Eigen::VectorXd theta;
-    Eigen::VectorXd residuals; ///< y - Phi theta
     Eigen::MatrixXd inverseGram;
     Eigen::Index rank = 0;
     bool fullRank() const { return inverseGram.size() > 0; }
 };
-LinearLeastSquares linearLeastSquares(const Eigen::MatrixXd& phi, const Eigen::VectorXd& y,
+/// @p phi is taken by value, scaled and factored in place: move a regressor in that is not
+/// needed afterwards (no copy of a 100,000-row regressor is made then).
+LinearLeastSquares linearLeastSquares(Eigen::MatrixXd phi, const Eigen::VectorXd& y,
                                       double rankThreshold = kDefaultRankThreshold);
 
 /// One nonlinear least-squares problem: minimize V(theta) = mean(e(theta)^2).
