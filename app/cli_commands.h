@@ -22,5 +22,6 @@ int runContour(const QStringList& args);
 int runBode(const QStringList& args);
 int runMargins(const QStringList& args);
 int runRobustness(const QStringList& args);
+int runExcite(const QStringList& args);
 
 } // namespace xyt::cli
