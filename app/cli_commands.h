@@ -23,5 +23,6 @@ int runBode(const QStringList& args);
 int runMargins(const QStringList& args);
 int runRobustness(const QStringList& args);
 int runIdentify(const QStringList& args);
+int runExcite(const QStringList& args);
 
 } // namespace xyt::cli

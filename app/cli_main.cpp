@@ -133,6 +133,16 @@ constexpr CommandHelp kFrequencyHelp[] = {
              "            [--wmin W --wmax W --points-per-decade 10] [--csv FILE]\n"},
 };
 
+constexpr CommandHelp kIdentificationHelp[] = {
+    {"excite", "  excite    --signal square|prbs|chirp --ts S --duration S --amplitude V [--offset 0]\n"
+               "            [--umax 2.5] -o FILE.csv|FILE.lvm, and per signal: square --period S;\n"
+               "            prbs --clock N (samples per bit) --register N (2..31, maximal length:\n"
+               "            period (2^N - 1) x clock samples); chirp --f0 HZ --f1 HZ (linear sweep over\n"
+               "            the duration). |offset| + amplitude must not exceed --umax. Writes t,u (CSV)\n"
+               "            or a LabVIEW Measurement file with Delta_X = ts, atomically; JSON: path,\n"
+               "            samples, ts, duration, signal, description, max_abs_u, umax\n"},
+};
+
 constexpr const char* kFrequencyLoops =
     "Frequency domain of a loop: --gt-preset lower-base|upper-base [--wn W --kp K], or\n"
     "--pp-preset x-axis|y-axis / --a A --b B --t T [--ts 0.07] (pole placement: L = BG/(AF)),\n"
@@ -158,6 +168,9 @@ std::string generalUsage() {
     u += std::string("\n") + kFrequencyLoops;
     for (const CommandHelp& c : kFrequencyHelp)
         u += c.text;
+    u += "\nSystem identification experiments:\n";
+    for (const CommandHelp& c : kIdentificationHelp)
+        u += c.text;
     return u + "\n" + kExitCodes;
 }
 
@@ -172,6 +185,8 @@ std::string commandUsage(const std::string& name) {
     const CommandHelp* c = find(std::begin(kGtHelp), std::end(kGtHelp));
     if (!c)
         c = find(std::begin(kPpHelp), std::end(kPpHelp));
+    if (!c)
+        c = find(std::begin(kIdentificationHelp), std::end(kIdentificationHelp));
     std::string loops;
     if (!c && (c = find(std::begin(kFrequencyHelp), std::end(kFrequencyHelp))))
         loops = std::string(kFrequencyLoops) + "\n";
@@ -210,6 +225,7 @@ int main(int argc, char* argv[]) {
         {"margins", xyt::cli::runMargins},
         {"robustness", xyt::cli::runRobustness},
         {"identify", xyt::cli::runIdentify},
+        {"excite", xyt::cli::runExcite},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

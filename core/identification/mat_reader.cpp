@@ -112,7 +112,7 @@ MatHandle openMat(const std::string& path) {
     mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
     if (!m)
         throw InvalidInput(path, "libmatio cannot open it as a MAT file" +
-                                     (matioMessage.empty() ? std::string() : " (" + matioMessage + ")"));
+                                     (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
     return MatHandle(m);
 }
 
@@ -187,7 +187,7 @@ std::vector<double> elements(const matvar_t& v, const std::string& path, const s
     const std::size_t size = Mat_SizeOfClass(v.class_type);
     if (!v.data || size == 0 || n > std::numeric_limits<std::size_t>::max() / size || v.nbytes < n * size)
         throw InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
-                                     (matioMessage.empty() ? std::string() : " (" + matioMessage + ")"));
+                                     (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
     std::vector<double> out;
     switch (v.class_type) {
     case MAT_C_DOUBLE: convert<double>(v.data, n, out); break;
@@ -270,7 +270,7 @@ ExperimentTable readMat(const std::string& path, const std::vector<std::string>&
         if (!v || v->rank != 2 || !v->dims || !numericClass(v->class_type) || v->isComplex ||
             v->dims[0] * v->dims[1] != info->rows * info->columns)
             throw InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
-                                         (matioMessage.empty() ? std::string() : " (" + matioMessage + ")"));
+                                         (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
         t.addColumn(name, 0);
         const std::size_t c = t.names.size() - 1;
         t.columns[c] = elements(*v, path, name);
