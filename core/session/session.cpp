@@ -53,4 +53,18 @@ Session Session::paperDefault() {
     return s;
 }
 
+bool operator==(const ModelOrigin& a, const ModelOrigin& b) {
+    const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+    if (a.standardDeviations.size() != b.standardDeviations.size())
+        return false;
+    for (std::size_t i = 0; i < a.standardDeviations.size(); ++i)
+        if (!same(a.standardDeviations[i], b.standardDeviations[i]))
+            return false;
+    return a.source == b.source && a.structure == b.structure && a.tsSeconds == b.tsSeconds &&
+           a.samples == b.samples && same(a.fitPercent, b.fitPercent) &&
+           a.validationFitPercent.has_value() == b.validationFitPercent.has_value() &&
+           (!a.validationFitPercent || same(*a.validationFitPercent, *b.validationFitPercent)) &&
+           a.parameterNames == b.parameterNames;
+}
+
 } // namespace xyt

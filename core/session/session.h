@@ -6,6 +6,7 @@
 #include "core/study/specification.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,12 +38,32 @@ struct PpAxisSettings {
     friend bool operator==(const PpAxisSettings&, const PpAxisSettings&) = default;
 };
 
+/**
+ * Where an axis model came from when it was identified from measured data (issue 11): the
+ * record, the structure and how well the model fitted. The session keeps it so that a shared
+ * session says what its plant rests on; a plant typed by hand has none.
+ */
+struct ModelOrigin {
+    std::string source;    ///< the record, e.g. "run3.lvm: u=Command, y=X"
+    std::string structure; ///< "ARX(2,3,1)", "OE(3,2,1)", "BJ(3,1,1,2,1)", "GT3 k0/(s^3+a1 s^2+a2 s)"
+    double tsSeconds = 0.0;
+    std::size_t samples = 0;
+    double fitPercent = 0.0;           ///< simulation fit on the estimation data (%)
+    std::optional<double> validationFitPercent; ///< simulation fit on separate validation data
+    std::vector<std::string> parameterNames;    ///< as the estimator names them
+    std::vector<double> standardDeviations;     ///< of those parameters (NaN when unknown)
+    /// Equal field by field, two NaN standard deviations counting as equal (a session must
+    /// equal its copy, or every comparison of designs would see a change).
+    friend bool operator==(const ModelOrigin& a, const ModelOrigin& b);
+};
+
 struct AxisSettings {
     std::string id = "x"; ///< "x" or "y": names the axis in exports (XYT_X_NUM, plant_x)
     std::string label;    ///< free text, e.g. "lower base"
     DesignMethod method = DesignMethod::GuilleminTruxal;
     GtAxisSettings gt;
     PpAxisSettings pp;
+    std::optional<ModelOrigin> origin; ///< set when the plant was identified from data
     friend bool operator==(const AxisSettings&, const AxisSettings&) = default;
 };
 

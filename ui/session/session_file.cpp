@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 namespace xyt::ui {
 
@@ -120,8 +121,70 @@ QJsonArray toArray(const std::vector<double>& v) {
     return a;
 }
 
+/// A number, or null for NaN (JSON has no NaN: an unknown standard deviation).
+QJsonValue numberOrNull(double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); }
+
+QJsonObject originToJson(const ModelOrigin& o) {
+    QJsonArray names, deviations;
+    for (std::size_t i = 0; i < o.parameterNames.size(); ++i) {
+        names.append(QString::fromStdString(o.parameterNames[i]));
+        deviations.append(i < o.standardDeviations.size() ? numberOrNull(o.standardDeviations[i]) : QJsonValue());
+    }
+    QJsonObject out{{"source", QString::fromStdString(o.source)},
+                    {"structure", QString::fromStdString(o.structure)},
+                    {"ts", o.tsSeconds},
+                    {"samples", static_cast<double>(o.samples)},
+                    {"fit", numberOrNull(o.fitPercent)},
+                    {"parameters", names},
+                    {"std", deviations}};
+    if (o.validationFitPercent)
+        out.insert("validation_fit", numberOrNull(*o.validationFitPercent));
+    return out;
+}
+
+ModelOrigin readOrigin(ObjectReader r) {
+    ModelOrigin o;
+    o.source = r.string("source").toStdString();
+    o.structure = r.string("structure").toStdString();
+    o.tsSeconds = r.positive("ts");
+    const double samples = r.positive("samples");
+    if (samples != std::floor(samples) || samples > 1e12)
+        throw FormatError{join(r.path(), "samples"), QStringLiteral("must be a whole number of samples")};
+    o.samples = static_cast<std::size_t>(samples);
+    const auto optionalNumber = [&](const QString& key) {
+        const QJsonValue v = r.get(key);
+        if (v.isNull())
+            return std::numeric_limits<double>::quiet_NaN();
+        if (!v.isDouble() || !std::isfinite(v.toDouble()))
+            throw FormatError{join(r.path(), key), QStringLiteral("must be a finite number or null")};
+        return v.toDouble();
+    };
+    o.fitPercent = optionalNumber("fit");
+    if (r.has("validation_fit"))
+        o.validationFitPercent = optionalNumber("validation_fit");
+    const QJsonValue names = r.get("parameters");
+    const QJsonValue deviations = r.get("std");
+    if (!names.isArray() || names.toArray().size() > 1000)
+        throw FormatError{join(r.path(), "parameters"), QStringLiteral("must be an array of at most 1000 names")};
+    if (!deviations.isArray() || deviations.toArray().size() != names.toArray().size())
+        throw FormatError{join(r.path(), "std"), QStringLiteral("must be an array as long as \"parameters\"")};
+    for (qsizetype i = 0; i < names.toArray().size(); ++i) {
+        const QJsonValue n = names.toArray()[i];
+        const QJsonValue d = deviations.toArray()[i];
+        if (!n.isString())
+            throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "parameters")).arg(i), QStringLiteral("must be a string")};
+        if (!d.isNull() && (!d.isDouble() || !std::isfinite(d.toDouble())))
+            throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "std")).arg(i),
+                              QStringLiteral("must be a finite number or null")};
+        o.parameterNames.push_back(n.toString().toStdString());
+        o.standardDeviations.push_back(d.isNull() ? std::numeric_limits<double>::quiet_NaN() : d.toDouble());
+    }
+    r.finish();
+    return o;
+}
+
 QJsonObject axisToJson(const AxisSettings& a) {
-    return {
+    QJsonObject out{
         {"id", QString::fromStdString(a.id)},
         {"label", QString::fromStdString(a.label)},
         {"method", methodName(a.method)},
@@ -137,6 +200,9 @@ QJsonObject axisToJson(const AxisSettings& a) {
                            {"ts", a.pp.tsSeconds},
                            {"zpetc", a.pp.zpetcEnabled}}},
     };
+    if (a.origin)
+        out.insert("model_origin", originToJson(*a.origin));
+    return out;
 }
 
 QString trajectoryKindName(TrajectoryKind kind) {
@@ -212,6 +278,8 @@ AxisSettings readAxis(ObjectReader r) {
         a.pp.zpetcEnabled = pp.boolean("zpetc");
         pp.finish();
     }
+    if (r.has("model_origin"))
+        a.origin = readOrigin(r.child("model_origin"));
     r.finish();
     return a;
 }

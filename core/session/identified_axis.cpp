@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/identified_axis.h"
+
+#include "core/model/errors.h"
+
+namespace xyt {
+
+AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedModel& model, const IoData& data) {
+    if (!model.hasEstimate())
+        throw InvalidInput("model", model.structure + " has no estimate (" + estimationStatusName(model.status) +
+                                        (model.message.empty() ? std::string() : ": " + model.message) + ")");
+    AxisSettings out = axis;
+    if (model.plant) {
+        out.method = DesignMethod::GuilleminTruxal;
+        out.gt.plant = *model.plant;
+        out.gt.plant.k0 *= axis.gt.modelUnitsPerPositionUnit;
+    } else {
+        out.method = DesignMethod::PolePlacementZpetc;
+        out.pp.a = model.model.inputDenominator();
+        out.pp.b = model.model.b;
+        out.pp.tsSeconds = model.model.tsSeconds;
+    }
+    ModelOrigin origin;
+    origin.source = data.source;
+    origin.structure = model.structure;
+    origin.tsSeconds = data.tsSeconds;
+    origin.samples = data.size();
+    origin.fitPercent = model.fit.estimationSimulation.fitPercent;
+    if (model.fit.validationSimulation)
+        origin.validationFitPercent = model.fit.validationSimulation->fitPercent;
+    origin.parameterNames = model.parameterNames;
+    origin.standardDeviations = model.standardDeviations;
+    out.origin = origin;
+    return out;
+}
+
+} // namespace xyt
