@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-cli excite: an excitation signal for an identification experiment, written as CSV or
-// LabVIEW .lvm (core/identification/excitation.h).
+// LabVIEW .lvm (core/identification/excitation.h); with --respond, a synthetic experiment: the
+// signal played on a session axis' model with measurement noise (synthetic_experiment.h).
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
+#include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
 #include "core/identification/excitation.h"
+#include "core/identification/synthetic_experiment.h"
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
 
@@ -15,7 +18,8 @@ namespace xyt::cli {
 
 namespace {
 
-const QStringList kCommonOptions = {"signal", "ts", "duration", "amplitude", "offset", "umax", "o"};
+const QStringList kCommonOptions = {"signal", "ts",      "duration",  "amplitude", "offset",
+                                   "umax",   "respond", "axis",      "noise-std", "seed", "o"};
 
 /// Runs a core call and renames its field to the option the user typed ("period" -> "--period").
 template <class F> ExcitationSignal asOptions(F make) {
@@ -25,6 +29,32 @@ template <class F> ExcitationSignal asOptions(F make) {
         const QString name = QString::fromStdString(e.field());
         throw InvalidInput(CliArgs::field(name == "output" ? QStringLiteral("o") : name), e.reason());
     }
+}
+
+/// --respond SESSION.json --axis x|y: the command played on the axis' model (a synthetic
+/// experiment, for teaching and the examples), with --noise-std MM and --seed N.
+ExcitationSignal respond(const CliArgs& args, ExcitationSignal s) {
+    const Session session = loadSessionOrThrow(*args.value("respond"));
+    const QString axisName = args.text("axis", "x");
+    if (axisName != "x" && axisName != "y")
+        throw InvalidInput("--axis", "must be x or y");
+    const AxisSettings& axis = session.axes[axisName == "x" ? 0 : 1];
+    const double noise = args.number("noise-std", 0.0);
+    const double seed = args.number("seed", 1.0);
+    if (seed < 0.0 || seed > 9007199254740992.0 || seed != std::floor(seed))
+        throw InvalidInput("--seed", "must be a whole number from 0 to 2^53");
+    return asOptions([&] {
+        if (axis.method == DesignMethod::GuilleminTruxal) {
+            ThirdOrderPlant mm = axis.gt.plant; // the model's output unit per mm of travel
+            mm.k0 /= axis.gt.modelUnitsPerPositionUnit;
+            return simulateExperiment(s, mm, noise, static_cast<std::uint64_t>(seed));
+        }
+        PolynomialModel m;
+        m.a = axis.pp.a;
+        m.b = axis.pp.b;
+        m.tsSeconds = axis.pp.tsSeconds;
+        return simulateExperiment(s, m, noise, static_cast<std::uint64_t>(seed));
+    });
 }
 
 /// A whole number in [lo, hi], required.
@@ -85,6 +115,11 @@ int runExcite(const QStringList& argv) {
         const Chirp c{amplitude, args.number("f0"), args.number("f1"), offset};
         s = asOptions([&] { return chirp(c, timing); });
     }
+    if (args.has("respond"))
+        s = respond(args, std::move(s));
+    else if (args.has("axis") || args.has("noise-std") || args.has("seed"))
+        throw InvalidInput(args.has("axis") ? "--axis" : args.has("seed") ? "--seed" : "--noise-std",
+                           "only with --respond SESSION.json");
     writeExcitation(output->toStdString(), s); // atomic; FileError -> exit 1
     double peak = 0.0;
     for (double v : s.u)
@@ -96,7 +131,8 @@ int runExcite(const QStringList& argv) {
                       {"signal", signal},
                       {"description", QString::fromStdString(s.description)},
                       {"max_abs_u", number(peak)},
-                      {"umax", number(*timing.umaxVolts)}});
+                      {"umax", number(*timing.umaxVolts)},
+                      {"synthetic", !s.y.empty()}});
     return 0;
 }
 

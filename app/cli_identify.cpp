@@ -120,7 +120,8 @@ QJsonObject modelJson(const IdentifiedModel& m) {
                     {"polynomials", polynomials}};
     if (m.plant)
         out.insert("plant", QJsonObject{{"k0", number(m.plant->k0)}, {"a1", number(m.plant->a1)},
-                                        {"a2", number(m.plant->a2)}, {"output_unit", "mm"}});
+                                        {"a2", number(m.plant->a2)}, {"output_unit", "mm"},
+                                        {"initial_position", number(m.initialPositionMm)}});
     return out;
 }
 
@@ -168,7 +169,8 @@ int runIdentify(const QStringList& argv) {
             const double y0 = d->y.front();
             for (double& y : d->y)
                 y -= y0;
-            notes.append(QStringLiteral("%1: the initial position %2 mm was subtracted (the plant starts at rest at 0)")
+            notes.append(QStringLiteral("%1: the first sample %2 mm was subtracted; the fit estimates where the "
+                                        "table stood (initial_position)")
                              .arg(QString::fromStdString(d->source))
                              .arg(y0, 0, 'g', 10));
         }

@@ -62,8 +62,10 @@ bool plantOk(const ThirdOrderPlant& p) {
 }
 
 /// Output-error residuals of theta = [k0, a1, a2]; false when the discretization fails or the
-/// run is not finite.
-bool residuals(const IoData& data, const Eigen::VectorXd& theta, Eigen::VectorXd& e) {
+/// run is not finite. With @p removeMean the residuals' mean is taken off: the optimal constant
+/// initial position for this theta projected out (variable projection, Golub and Pereyra 1973),
+/// so that a search over theta alone finds the same minimum as one over theta and y0.
+bool residuals(const IoData& data, const Eigen::VectorXd& theta, Eigen::VectorXd& e, bool removeMean = false) {
     ZohStep s;
     try {
         s = zohStep(theta(0), theta(1), theta(2), data.tsSeconds);
@@ -75,6 +77,8 @@ bool residuals(const IoData& data, const Eigen::VectorXd& theta, Eigen::VectorXd
     simulate(s, data.u.data(), e.data(), n);
     for (std::size_t k = 0; k < n; ++k)
         e(static_cast<Eigen::Index>(k)) = data.y[k] - e(static_cast<Eigen::Index>(k));
+    if (removeMean)
+        e.array() -= e.mean();
     return e.allFinite();
 }
 
@@ -223,7 +227,7 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
     NonlinearProblem problem;
     problem.evaluate = [&](const Eigen::VectorXd& theta, Eigen::VectorXd& e,
                            Eigen::MatrixXd* jac) {
-        if (!residuals(data, theta, e))
+        if (!residuals(data, theta, e, options.estimateInitialPosition))
             return false;
         if (!jac)
             return true;
@@ -234,7 +238,8 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
             Eigen::VectorXd tp = theta, tm = theta;
             tp(j) += step;
             tm(j) -= step;
-            if (!residuals(data, tp, plus) || !residuals(data, tm, minus))
+            if (!residuals(data, tp, plus, options.estimateInitialPosition) ||
+                !residuals(data, tm, minus, options.estimateInitialPosition))
                 return false;
             jac->col(j) = (plus - minus) / (tp(j) - tm(j));
         }
@@ -255,10 +260,18 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
     out.residuals.assign(r.residuals.data(), r.residuals.data() + r.residuals.size());
     out.simulated.resize(n);
     for (std::size_t k = 0; k < n; ++k)
-        out.simulated[k] = data.y[k] - out.residuals[k];
+        out.simulated[k] = data.y[k] - out.residuals[k]; // (with y0 when it is estimated)
+    if (options.estimateInitialPosition) {
+        const std::vector<double> fromRest = simulateThirdOrderPlant(out.plant, data.u, data.tsSeconds);
+        double sum = 0.0;
+        for (std::size_t k = 0; k < n; ++k)
+            sum += data.y[k] - fromRest[k];
+        out.initialPositionMm = sum / static_cast<double>(n);
+    }
     const double sse = r.residuals.squaredNorm();
+    const std::size_t parameters = options.estimateInitialPosition ? 4 : 3;
     out.loss = sse / static_cast<double>(n);
-    out.noiseVariance = sse / static_cast<double>(n - 3);
+    out.noiseVariance = sse / static_cast<double>(n - parameters);
     Eigen::MatrixXd cov;
     std::vector<double> sd;
     parameterCovariance(r.jacobian, out.noiseVariance, cov, sd, out.warnings);

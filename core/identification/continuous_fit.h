@@ -39,6 +39,14 @@ struct ContinuousFitOptions {
     /// Central-difference Jacobian: parameter p is stepped by +-h, h = step * |p| (relative
     /// step 1e-6: truncation error ~ h^2, round-off ~ 1e-16 / h, both ~ 1e-10 of the output).
     double finiteDifferenceStep = 1e-6;
+    /**
+     * Also estimate the position y0 the table rests at when the record starts: yhat = y0 + the
+     * response from rest. It is projected out of the search (for each k0, a1, a2 the best y0
+     * is the mean of y minus the response), which gives the same estimate and the same
+     * covariance of k0, a1, a2 as fitting y0 jointly. Without it the record must start at
+     * exactly 0: subtracting a noisy first sample biases the fit by many standard deviations.
+     */
+    bool estimateInitialPosition = false;
 };
 
 /// The fit of paper 000's plant structure to sampled data.
@@ -57,7 +65,9 @@ struct ContinuousFitResult {
     std::size_t samples = 0;
     int iterations = 0;
     std::vector<double> lossHistory;
-    std::vector<double> simulated; ///< model output at the estimate (simulateThirdOrderPlant)
+    /// The estimated initial position y0 (mm) with estimateInitialPosition, else 0.
+    double initialPositionMm = 0.0;
+    std::vector<double> simulated; ///< model output at the estimate (with y0 when estimated)
     std::vector<double> residuals; ///< y - simulated
     std::vector<std::string> warnings;
 };

@@ -147,14 +147,20 @@ std::string g17(double v) {
 } // namespace
 
 std::string excitationCsvText(const ExcitationSignal& s) {
-    std::string out = "t,u\n";
-    out.reserve(s.u.size() * 40);
+    const bool withY = s.y.size() == s.u.size() && !s.y.empty();
+    std::string out = withY ? "t,u,y\n" : "t,u\n";
+    out.reserve(s.u.size() * 60);
     for (std::size_t k = 0; k < s.u.size(); ++k)
-        out += g17(double(k) * s.tsSeconds) + "," + g17(s.u[k]) + "\n";
+        out += g17(double(k) * s.tsSeconds) + "," + g17(s.u[k]) + (withY ? "," + g17(s.y[k]) : std::string()) + "\n";
     return out;
 }
 
 std::string excitationLvmText(const ExcitationSignal& s) {
+    const bool withY = s.y.size() == s.u.size() && !s.y.empty();
+    std::string description = s.description;
+    for (char& c : description)
+        if (c == '\t' || c == '\n' || c == '\r')
+            c = ' ';
     std::string out = "LabVIEW Measurement\t\n"
                       "Writer_Version\t2\n"
                       "Reader_Version\t2\n"
@@ -164,19 +170,20 @@ std::string excitationLvmText(const ExcitationSignal& s) {
                       "X_Columns\tOne\n"
                       "Time_Pref\tRelative\n"
                       "Operator\tXY Tune\n"
+                      "Description\t" + description + "\n"
                       "***End_of_Header***\t\n"
                       "\t\n"
-                      "Channels\t1\t\n"
-                      "Samples\t" + std::to_string(s.u.size()) + "\t\n"
-                      "Y_Unit_Label\tVolts\t\n"
-                      "X_Dimension\tTime\t\n"
-                      "X0\t0\t\n"
-                      "Delta_X\t" + g17(s.tsSeconds) + "\t\n"
+                      "Channels\t" + (withY ? "2\t\t\n" : "1\t\n") +
+                      "Samples\t" + std::to_string(s.u.size()) + (withY ? "\t" + std::to_string(s.u.size()) : "") + "\t\n"
+                      "Y_Unit_Label\tVolts" + (withY ? "\tmm" : "") + "\t\n"
+                      "X_Dimension\tTime" + (withY ? "\tTime" : "") + "\t\n"
+                      "X0\t0" + (withY ? "\t0" : "") + "\t\n"
+                      "Delta_X\t" + g17(s.tsSeconds) + (withY ? "\t" + g17(s.tsSeconds) : "") + "\t\n"
                       "***End_of_Header***\t\n"
-                      "X_Value\tu\tComment\n";
-    out.reserve(out.size() + s.u.size() * 40);
+                      "X_Value\tu" + (withY ? "\ty" : "") + "\tComment\n";
+    out.reserve(out.size() + s.u.size() * 60);
     for (std::size_t k = 0; k < s.u.size(); ++k)
-        out += g17(double(k) * s.tsSeconds) + "\t" + g17(s.u[k]) + "\n";
+        out += g17(double(k) * s.tsSeconds) + "\t" + g17(s.u[k]) + (withY ? "\t" + g17(s.y[k]) : std::string()) + "\n";
     return out;
 }
 

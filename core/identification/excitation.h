@@ -23,6 +23,9 @@ struct ExcitationSignal {
     std::vector<double> u;
     double tsSeconds = 0.0;
     std::string description; ///< e.g. "square wave: amplitude 1 V, period 2 s, offset 0 V"
+    /// A synthetic experiment's measured position y[k] (mm) at k Ts (simulateExperiment); empty
+    /// for a command alone. The writers add it as the column "y" when present.
+    std::vector<double> y;
 };
 
 /// The most samples an excitation may have: 10^7 (over 27 hours at 10 ms).
@@ -78,12 +81,14 @@ ExcitationSignal prbs(const Prbs& prbs, const ExcitationTiming& timing);
 ///         frequency 1 / (2 Ts)).
 ExcitationSignal chirp(const Chirp& chirp, const ExcitationTiming& timing);
 
-/// CSV text: header "t,u", one row per sample (t = k Ts), numbers as %.17g (read back exactly).
+/// CSV text: header "t,u" ("t,u,y" with a response), one row per sample (t = k Ts), numbers as
+/// %.17g (read back exactly).
 std::string excitationCsvText(const ExcitationSignal& signal);
 /**
  * LVM text (LabVIEW Measurement 2.0: tab separators, decimal point, X_Columns One, one segment
- * whose header states Delta_X = Ts and X0 = 0; columns X_Value (t, s) and u (V); no date or time
- * so the file depends on the signal only), numbers as %.17g.
+ * whose header states Delta_X = Ts and X0 = 0; columns X_Value (t, s) and u (V), and y (mm) with a
+ * response; the Description tag holds the signal's description; no date or time so the file
+ * depends on the signal only), numbers as %.17g.
  */
 std::string excitationLvmText(const ExcitationSignal& signal);
 /**

@@ -69,6 +69,12 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
     out.structure = spec.describe();
     std::size_t samples = estimation.size();
     double loss = 0.0;
+    // The continuous fit estimates where the table stood (y0): the fits compare the model from
+    // that position, on validation data from the position that fits them best.
+    IoData estimationFrom = estimation;
+    std::optional<IoData> validationFrom;
+    if (validation)
+        validationFrom = *validation;
     switch (spec.structure) {
     case ModelStructure::Arx: {
         const ArxResult r = estimateArx(estimation, spec.arx);
@@ -108,6 +114,7 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
     case ModelStructure::ContinuousThirdOrder: {
         ContinuousFitOptions o;
         o.search = spec.search;
+        o.estimateInitialPosition = true; // a real record starts wherever the table stood
         const ContinuousFitResult r = fitThirdOrderPlant(estimation, o);
         out.status = r.status;
         out.message = r.message;
@@ -119,8 +126,20 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
         out.covariance = r.covariance;
         out.warnings = r.warnings;
         out.residuals = r.residuals;
+        out.initialPositionMm = r.initialPositionMm;
         loss = r.loss;
         samples = r.samples;
+        for (double& y : estimationFrom.y)
+            y -= r.initialPositionMm;
+        if (validationFrom && r.status != EstimationStatus::Failed) {
+            const std::vector<double> fromRest = simulateThirdOrderPlant(r.plant, validationFrom->u, validationFrom->tsSeconds);
+            double sum = 0.0;
+            for (std::size_t k = 0; k < fromRest.size(); ++k)
+                sum += validationFrom->y[k] - fromRest[k];
+            const double y0 = sum / static_cast<double>(fromRest.size());
+            for (double& y : validationFrom->y)
+                y -= y0;
+        }
         break;
     }
     }
@@ -130,7 +149,7 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
         out.criteria = informationCriteria(loss, samples, out.parameters.size());
     else
         out.warnings.push_back("the loss is zero (an exact fit): FPE and AIC are not defined");
-    out.fit = fitReport(out.model, estimation, validation, spec.predictionHorizon);
+    out.fit = fitReport(out.model, estimationFrom, validationFrom ? &*validationFrom : nullptr, spec.predictionHorizon);
     if (out.residuals.size() > out.firstSample + static_cast<std::size_t>(spec.maxLag) && loss > 0.0)
         out.residualTests = residualAnalysis(out.residuals, estimation.u, spec.maxLag, 2.576, out.firstSample);
     out.roots = out.plant ? thirdOrderPlantRoots(*out.plant, estimation.tsSeconds) : modelRoots(out.model);

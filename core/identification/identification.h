@@ -69,6 +69,9 @@ struct IdentifiedModel {
     Eigen::MatrixXd covariance;
     InformationCriteria criteria;
     FitReport fit;
+    /// The continuous fit's estimated initial position (mm): its fits compare the model started
+    /// there (on validation data, from the initial position that fits them best).
+    double initialPositionMm = 0.0;
     std::vector<double> residuals; ///< the residual series the tests judge (from firstSample)
     std::size_t firstSample = 0;   ///< the first sample the fits and tests use (ARX start rows)
     ResidualAnalysis residualTests;

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The identification window (issue 11) drives the core's identifyModel: a candidate is the
+// core's result for the same file, columns and spec (computed here again), the plots draw that
+// result, candidates accumulate for comparison, "Use for axis X" is one undo step, bad files
+// and columns show the core's message instead of a plot, and a fit can be cancelled.
+// Reference data: paper 001's x-axis ARX(2,3,1) model A = 1 - 1.6580 z^-1 + 0.6583 z^-2,
+// B = 0.0421 z^-2 + 0.0628 z^-3 - 0.0454 z^-4 (with its z^-1 delay), Ts = 0.07 s, driven by a
+// +-2 V random binary input with a fixed seed: noise-free, so ARX recovers it exactly.
+#include "ui/identification_window.h"
+#include "core/identification/experiment_data.h"
+#include "core/identification/experiment_file.h"
+#include "core/session/identified_axis.h"
+#include "ui/session/tuning_session.h"
+#include "tests/support/identification_data.h"
+#include "tests/support/tolerance.h"
+
+#include <QComboBox>
+#include <QFile>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextStream>
+#include <QUndoStack>
+
+#include <qcustomplot.h>
+
+#include <memory>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+namespace {
+
+constexpr int kTimeoutMs = 120000;
+const std::vector<double> kA{1.0, -1.6580, 0.6583};
+const std::vector<double> kB{0.0, 0.0421, 0.0628, -0.0454};
+constexpr double kTs = 0.07;
+
+/// t, u, y of the paper-001 model driven by a +-2 V random binary input; @p badCell puts a
+/// word in row 10's y.
+QString writeRecord(const QString& dir, const QString& name, std::size_t n, std::uint64_t seed,
+                    bool badCell = false, const QString& header = "t,u,y") {
+    const std::vector<double> u = test::randomBinary(n, 2.0, seed);
+    const std::vector<double> y = filterDifferenceEquation(kB, kA, u);
+    const QString path = dir + "/" + name;
+    QFile f(path);
+    f.open(QIODevice::WriteOnly | QIODevice::Text);
+    QTextStream out(&f);
+    out << header << "\n";
+    for (std::size_t k = 0; k < n; ++k) {
+        out << QString::number(static_cast<double>(k) * kTs, 'g', 17) << "," << QString::number(u[k], 'g', 17) << ",";
+        if (badCell && k == 10)
+            out << "abc\n";
+        else
+            out << QString::number(y[k], 'g', 17) << "\n";
+    }
+    return path;
+}
+
+/// The record the window makes of @p path with columns u, y and time t.
+IoData coreRecord(const QString& path) {
+    ExperimentColumns c;
+    c.input = "u";
+    c.output = "y";
+    c.time = "t";
+    return experimentData(readExperimentTable(path.toStdString(), 1), c);
+}
+
+} // namespace
+
+class TstIdentificationWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void cleanup();
+    void arxCandidateIsTheCoresModel();
+    void secondCandidateAddsARow();
+    void useForAxisIsOneUndoStep();
+    void badInputShowsTheCoresMessage();
+    void cancelLeavesTheWindowUsable();
+
+private:
+    void pickColumns();
+    bool fitAndWait();
+    std::unique_ptr<QTemporaryDir> dir_;
+    std::unique_ptr<TuningSession> session_;
+    std::unique_ptr<IdentificationWindow> window_;
+    QString path_;
+};
+
+void TstIdentificationWindow::init() {
+    dir_ = std::make_unique<QTemporaryDir>();
+    QVERIFY(dir_->isValid());
+    path_ = writeRecord(dir_->path(), "paper001_x.csv", 600, 20261123);
+    session_ = std::make_unique<TuningSession>();
+    window_ = std::make_unique<IdentificationWindow>(session_.get());
+    window_->resize(1300, 750);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+}
+
+void TstIdentificationWindow::cleanup() {
+    window_.reset();
+    session_.reset();
+    dir_.reset();
+}
+
+void TstIdentificationWindow::pickColumns() {
+    window_->inputBox()->setCurrentText("u");
+    window_->outputBox()->setCurrentText("y");
+    window_->timeBox()->setCurrentText("t");
+}
+
+bool TstIdentificationWindow::fitAndWait() {
+    QSignalSpy finished(window_.get(), &IdentificationWindow::fitFinished);
+    QTest::mouseClick(window_->fitButton(), Qt::LeftButton);
+    return finished.count() > 0 || finished.wait(kTimeoutMs);
+}
+
+void TstIdentificationWindow::arxCandidateIsTheCoresModel() {
+    QVERIFY(window_->loadFile(path_));
+    QCOMPARE(window_->fileLabel()->text(), QString("paper001_x.csv"));
+    QCOMPARE(window_->inputBox()->count(), 3);
+    QCOMPARE(window_->timeBox()->itemText(0), QString("(sample time)"));
+    QCOMPARE(window_->timeBox()->currentText(), QString("t")); // guessed from the name
+    pickColumns();
+    QCOMPARE(window_->structureBox()->currentText(), QString("ARX"));
+    QCOMPARE(window_->orderBox("na")->value(), 2);
+    QCOMPARE(window_->orderBox("nb")->value(), 3);
+    QCOMPARE(window_->orderBox("nk")->value(), 1);
+    QVERIFY(!window_->orderBox("nf")->isEnabled());
+    QVERIFY(fitAndWait());
+    QCOMPARE(window_->candidateTable()->rowCount(), 1);
+    const auto* c = window_->selectedCandidate();
+    QVERIFY2(c, qPrintable(window_->statusText()));
+
+    IdentificationSpec spec;
+    spec.arx = {2, 3, 1};
+    const IoData data = coreRecord(path_);
+    const IdentifiedModel expected = identifyModel(data, nullptr, spec);
+    QCOMPARE(c->model.structure, std::string("ARX(2,3,1)"));
+    QCOMPARE(c->model.parameters.size(), expected.parameters.size());
+    for (std::size_t i = 0; i < expected.parameters.size(); ++i)
+        QVERIFY(near(c->model.parameters[i], expected.parameters[i], 0.0, 1e-9));
+    // Noise-free data: the estimate is paper 001's model.
+    QCOMPARE(c->model.model.a.size(), kA.size());
+    for (std::size_t i = 0; i < kA.size(); ++i)
+        QVERIFY2(near(c->model.model.a[i], kA[i], 0.0, 1e-9), qPrintable(QString::number(c->model.model.a[i])));
+    for (std::size_t i = 0; i < kB.size(); ++i)
+        QVERIFY2(near(c->model.model.b[i], kB[i], 0.0, 1e-9), qPrintable(QString::number(c->model.model.b[i])));
+
+    // The plots draw the candidate.
+    const std::vector<double>& yhat = expected.fit.estimationSimulation.yhat;
+    auto sim = window_->simulatedGraph()->data();
+    QCOMPARE(sim->size(), static_cast<int>(yhat.size()));
+    int k = 0;
+    for (auto it = sim->constBegin(); it != sim->constEnd(); ++it, ++k) {
+        QVERIFY(near(it->value, yhat[static_cast<std::size_t>(k)], 0.0, 1e-9));
+        QVERIFY(near(it->key, data.startSeconds + k * data.tsSeconds, 1e-12, 1e-12));
+    }
+    QCOMPARE(window_->measuredGraph()->data()->size(), static_cast<int>(data.size()));
+    QCOMPARE(window_->autocorrelationGraph()->data()->size(),
+             static_cast<int>(expected.residualTests.autocorrelation.values.size()));
+    QCOMPARE(window_->crossCorrelationGraph()->data()->size(),
+             static_cast<int>(expected.residualTests.crossCorrelation.values.size()));
+    QCOMPARE(window_->polesGraph()->data()->size(), static_cast<int>(expected.roots.poles.size()));
+    QCOMPARE(window_->zerosGraph()->data()->size(), static_cast<int>(expected.roots.zeros.size()));
+    QCOMPARE(window_->candidateTable()->item(0, 0)->text(), QString("ARX(2,3,1)"));
+    QCOMPARE(window_->candidateTable()->item(0, 6)->text(),
+             expected.roots.nonMinimumPhase ? QString("yes") : QString("no"));
+
+    if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
+        for (int tab = 0; tab < window_->plotTabs()->count(); ++tab) {
+            window_->plotTabs()->setCurrentIndex(tab);
+            QTest::qWait(50);
+            window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") +
+                                 QStringLiteral("/identification_%1.png").arg(tab));
+        }
+        window_->plotTabs()->setCurrentIndex(0);
+    }
+}
+
+void TstIdentificationWindow::secondCandidateAddsARow() {
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    QVERIFY(fitAndWait());
+    window_->structureBox()->setCurrentText("OE");
+    QVERIFY(!window_->orderBox("na")->isEnabled());
+    QVERIFY(window_->orderBox("nf")->isEnabled());
+    window_->orderBox("nb")->setValue(3);
+    window_->orderBox("nf")->setValue(2);
+    window_->orderBox("nk")->setValue(1);
+    QVERIFY(fitAndWait());
+    QCOMPARE(window_->candidateTable()->rowCount(), 2);
+    QCOMPARE(window_->candidates().size(), std::size_t(2));
+    QCOMPARE(window_->selectedCandidate()->model.structure, std::string("OE(3,2,1)"));
+    // Selecting the first row shows the first candidate again.
+    window_->candidateTable()->selectRow(0);
+    QCOMPARE(window_->selectedCandidate()->model.structure, std::string("ARX(2,3,1)"));
+    QCOMPARE(window_->simulatedGraph()->data()->size(),
+             static_cast<int>(window_->candidates()[0].model.fit.estimationSimulation.yhat.size()));
+}
+
+void TstIdentificationWindow::useForAxisIsOneUndoStep() {
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    QVERIFY(fitAndWait());
+    const auto* c = window_->selectedCandidate();
+    QVERIFY(c);
+    const Session before = session_->session();
+    const int steps = session_->undoStack()->count();
+    QTest::mouseClick(window_->useXButton(), Qt::LeftButton);
+    const AxisSettings& x = session_->session().axes[0];
+    const AxisSettings expected = axisWithIdentifiedModel(before.axes[0], c->model, c->estimation);
+    QVERIFY(x == expected);
+    QCOMPARE(x.pp.a, c->model.model.a);
+    QCOMPARE(x.pp.b, c->model.model.b);
+    QVERIFY(x.origin);
+    QCOMPARE(x.origin->structure, std::string("ARX(2,3,1)"));
+    QVERIFY(session_->session().axes[1] == before.axes[1]);
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    QVERIFY(session_->undoStack()->undoText().contains("ARX(2,3,1)"));
+    session_->undoStack()->undo();
+    QVERIFY(session_->session().axes[0] == before.axes[0]);
+}
+
+void TstIdentificationWindow::badInputShowsTheCoresMessage() {
+    // A validation file without the estimation file's columns: the core names the column.
+    const QString other = writeRecord(dir_->path(), "other.csv", 200, 7, false, "time,cmd,pos");
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    QVERIFY(fitAndWait());
+    QVERIFY(window_->selectedCandidate());
+    QVERIFY(window_->loadValidationFile(other));
+    QVERIFY(fitAndWait());
+    QVERIFY2(window_->statusText().contains("'u'") || window_->statusText().contains("u"),
+             qPrintable(window_->statusText()));
+    QVERIFY2(window_->statusText().contains("other.csv"), qPrintable(window_->statusText()));
+    QVERIFY(window_->statusText().startsWith("Cannot fit"));
+    QVERIFY(!window_->selectedCandidate()); // no stale plot
+    QVERIFY(window_->simulatedGraph()->data()->isEmpty());
+    QCOMPARE(window_->candidateTable()->rowCount(), 1);
+    QVERIFY(window_->loadValidationFile(QString()));
+
+    // A non-numeric cell in the output column: the core names file, line and column.
+    const QString bad = writeRecord(dir_->path(), "bad.csv", 100, 3, true);
+    if (window_->loadFile(bad)) { // the reader keeps the cell; the record refuses it
+        pickColumns();
+        QVERIFY(fitAndWait());
+    }
+    QVERIFY2(window_->statusText().contains("bad.csv") && window_->statusText().contains("12") &&
+                 window_->statusText().contains("abc"),
+             qPrintable(window_->statusText()));
+    QVERIFY(!window_->selectedCandidate());
+    QVERIFY(window_->measuredGraph()->data()->isEmpty());
+
+    // A file that does not exist.
+    QVERIFY(!window_->loadFile(dir_->path() + "/missing.csv"));
+    QVERIFY2(window_->statusText().contains("missing.csv"), qPrintable(window_->statusText()));
+    QVERIFY(!window_->fitButton()->isEnabled());
+
+    // Too few samples for the orders.
+    const QString tiny = writeRecord(dir_->path(), "tiny.csv", 4, 5);
+    QVERIFY(window_->loadFile(tiny));
+    pickColumns();
+    QVERIFY(fitAndWait());
+    QVERIFY2(window_->statusText().contains("samples") || window_->statusText().contains("tiny.csv"),
+             qPrintable(window_->statusText()));
+    QVERIFY(!window_->selectedCandidate());
+}
+
+void TstIdentificationWindow::cancelLeavesTheWindowUsable() {
+    QVERIFY(window_->loadFile(writeRecord(dir_->path(), "long.csv", 20000, 11)));
+    pickColumns();
+    window_->structureBox()->setCurrentText("BJ");
+    window_->maxIterationsBox()->setValue(100000);
+    QSignalSpy finished(window_.get(), &IdentificationWindow::fitFinished);
+    QTest::mouseClick(window_->fitButton(), Qt::LeftButton);
+    QVERIFY(window_->isRunning());
+    QVERIFY(window_->cancelButton()->isEnabled());
+    QTest::mouseClick(window_->cancelButton(), Qt::LeftButton);
+    QVERIFY(finished.wait(kTimeoutMs));
+    QVERIFY(!window_->isRunning());
+    QVERIFY(window_->fitButton()->isEnabled());
+    QVERIFY(!window_->cancelButton()->isEnabled());
+    // Usable: an ARX fit runs next.
+    window_->structureBox()->setCurrentText("ARX");
+    const std::size_t before = window_->candidates().size();
+    QVERIFY(fitAndWait());
+    QCOMPARE(window_->candidates().size(), before + 1);
+    QCOMPARE(window_->selectedCandidate()->model.structure, std::string("ARX(2,3,1)"));
+}
+
+QTEST_MAIN(TstIdentificationWindow)
+#include "tst_identification_window.moc"
