@@ -48,7 +48,8 @@ IoData experimentData(const ExperimentTable& t, const ExperimentColumns& cols) {
                                            " values but '" + shownCell(cols.output) + "' has " +
                                            std::to_string(y.size()));
     IoData d;
-    d.source = t.fileName + ": u=" + cols.input + ", y=" + cols.output;
+    // Names shown escaped: a header may hold control characters, and messages are one line.
+    d.source = t.fileName + ": u=" + shownCell(cols.input, 80) + ", y=" + shownCell(cols.output, 80);
     d.u = u;
     d.y.resize(y.size());
     for (std::size_t k = 0; k < y.size(); ++k) {

@@ -7,6 +7,7 @@
 #include <matio.h>
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include <mutex>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <zlib.h>
 
 namespace xyt {
 
@@ -51,6 +53,141 @@ std::uint32_t read32(const unsigned char* p, bool swap) {
     return swap ? __builtin_bswap32(v) : v;
 }
 
+/// A v5 data element tag at b (8 bytes; the small format packs the size in the upper half).
+struct V5Tag {
+    std::uint32_t type = 0, size = 0, headerBytes = 8;
+};
+V5Tag v5Tag(const unsigned char* b, bool swap) {
+    const std::uint32_t first = read32(b, swap);
+    if (first >> 16)
+        return {first & 0xFFFFu, first >> 16, 4};
+    return {first, read32(b + 4, swap), 8};
+}
+
+/**
+ * The array header at the start of a miMATRIX body (@p avail bytes read of @p bodySize): flags,
+ * dimensions (miINT32, at least two), name (miINT8). libmatio allocates by the dimensions and the
+ * name length, so both are bounded by what the element can hold: at least one byte per element.
+ */
+bool v5ArrayHeaderFits(const unsigned char* b, std::size_t avail, std::uint64_t bodySize, bool swap) {
+    if (bodySize == 0)
+        return true; // an empty matrix element: libmatio skips it
+    if (avail < 16 + 8)
+        return false;
+    const V5Tag flags = v5Tag(b, swap);
+    if (flags.type != 6 || flags.size != 8 || flags.headerBytes != 8)
+        return false;
+    std::size_t at = 16;
+    const V5Tag dims = v5Tag(b + at, swap);
+    if (dims.type != 5 || dims.size < 8 || dims.size % 4 != 0 || dims.size > 4 * 64)
+        return false;
+    at += dims.headerBytes;
+    if (avail < at + dims.size)
+        return false;
+    std::uint64_t elements = 1;
+    for (std::uint32_t k = 0; k < dims.size / 4; ++k) {
+        const std::uint32_t d = read32(b + at + 4 * k, swap);
+        if (d > 0x7FFFFFFFu)
+            return false;
+        elements *= d;
+        if (elements > bodySize)
+            return false;
+    }
+    at += (dims.size + 7) / 8 * 8;
+    if (avail < at + 4)
+        return false;
+    const V5Tag name = v5Tag(b + at, swap);
+    return name.type == 1 && name.size <= 4096 && at + name.headerBytes + name.size <= bodySize;
+}
+
+/// The top-level elements of a v5 file: each miMATRIX (14) or miCOMPRESSED (15), within the file,
+/// its array header sane (a compressed one inflated far enough to see it).
+bool v5ElementsFit(const std::string& path, std::uint64_t fileSize, bool swap) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0)
+        return false;
+    std::uint64_t offset = 128;
+    bool ok = true;
+    std::vector<unsigned char> buffer(4096);
+    while (ok && offset < fileSize) {
+        unsigned char tag[8];
+        if (fileSize - offset < 8 || ::pread(fd, tag, 8, static_cast<off_t>(offset)) != 8) {
+            ok = false;
+            break;
+        }
+        const std::uint32_t type = read32(tag, swap), size = read32(tag + 4, swap);
+        if ((type != 14 && type != 15) || size > fileSize - offset - 8) {
+            ok = false;
+            break;
+        }
+        const std::size_t avail = std::min<std::size_t>(size, buffer.size());
+        if (::pread(fd, buffer.data(), avail, static_cast<off_t>(offset + 8)) != static_cast<ssize_t>(avail)) {
+            ok = false;
+            break;
+        }
+        if (type == 14) {
+            ok = v5ArrayHeaderFits(buffer.data(), avail, size, swap);
+        } else {
+            // Inflate the head: the stream holds one miMATRIX element (tag, then its body).
+            unsigned char head[1024];
+            z_stream z{};
+            ok = inflateInit(&z) == Z_OK;
+            if (ok) {
+                z.next_in = buffer.data();
+                z.avail_in = static_cast<uInt>(avail);
+                z.next_out = head;
+                z.avail_out = sizeof head;
+                const int r = inflate(&z, Z_SYNC_FLUSH);
+                const std::size_t got = sizeof head - z.avail_out;
+                inflateEnd(&z);
+                ok = (r == Z_OK || r == Z_STREAM_END || r == Z_BUF_ERROR) && got >= 8;
+                if (ok) {
+                    const std::uint32_t innerType = read32(head, swap), innerSize = read32(head + 4, swap);
+                    // Deflate expands at most 1032:1.
+                    ok = innerType == 14 && std::uint64_t(innerSize) <= 1032ull * size + 64 &&
+                         v5ArrayHeaderFits(head + 8, got - 8, innerSize, swap);
+                }
+            }
+        }
+        offset += 8 + std::uint64_t(size);
+    }
+    ::close(fd);
+    return ok;
+}
+
+/// The v4 matrices of the file, walked header by header (see checkHeader).
+bool v4ChainFits(const std::string& path, std::uint64_t fileSize, bool swap) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0)
+        return false;
+    std::uint64_t offset = 0;
+    bool ok = false;
+    for (int matrices = 0; matrices < 100000; ++matrices) {
+        if (offset == fileSize) {
+            ok = matrices > 0;
+            break;
+        }
+        unsigned char h[20];
+        if (fileSize - offset < 20 || ::pread(fd, h, 20, static_cast<off_t>(offset)) != 20)
+            break;
+        const std::uint32_t type = read32(h, swap), rows = read32(h + 4, swap), cols = read32(h + 8, swap),
+                            imag = read32(h + 12, swap), nameLength = read32(h + 16, swap);
+        const unsigned m = type / 1000, o = type / 100 % 10, p = type / 10 % 10, t = type % 10;
+        if (type >= 5000 || m > 4 || o != 0 || p > 5 || t > 2 || imag > 1 || nameLength < 2 || nameLength > 64)
+            break;
+        const std::uint64_t bytesPer[] = {8, 4, 4, 2, 2, 1};
+        if (rows > (1u << 30) || cols > (1u << 30))
+            break;
+        const std::uint64_t elements = std::uint64_t(rows) * std::uint64_t(cols);
+        const std::uint64_t need = 20 + std::uint64_t(nameLength) + elements * bytesPer[p] * (imag ? 2 : 1);
+        if (elements > fileSize || need > fileSize - offset)
+            break;
+        offset += need;
+    }
+    ::close(fd);
+    return ok;
+}
+
 /**
  * Our own look at the first bytes, so that only something shaped like a MAT file reaches
  * libmatio: a v5/v7.3 header (text, subsystem offset, version 0x0100 or 0x0200, "IM"/"MI"), or a
@@ -73,31 +210,24 @@ std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
             return "its MATLAB header states version 0x" + std::to_string(version) + ", not 5 (0x0100) or 7.3 (0x0200)";
         if (version == 0x0100 && fileSize < 128 + 8)
             return "it holds a MATLAB header and no variable";
+        if (version == 0x0100 && !v5ElementsFit(path, fileSize, little != (std::endian::native == std::endian::little)))
+            return "a variable's element does not fit in the file or has a malformed array header";
         return {};
     }
     if (got >= 20) {
-        // v4: five int32 (type MOPT, rows, columns, imaginary flag, name length), either byte order.
-        for (const bool swap : {false, true}) {
-            const std::uint32_t type = read32(h, swap), rows = read32(h + 4, swap), cols = read32(h + 8, swap),
-                                imag = read32(h + 12, swap), nameLength = read32(h + 16, swap);
-            const unsigned m = type / 1000, o = type / 100 % 10, p = type / 10 % 10, t = type % 10;
-            if (type >= 5000 || m > 4 || o != 0 || p > 5 || t > 2 || imag > 1 || nameLength < 2 ||
-                nameLength > 64)
-                continue;
-            const std::uint64_t bytesPer[] = {8, 4, 4, 2, 2, 1};
-            const std::uint64_t elements = std::uint64_t(rows) * std::uint64_t(cols);
-            if (rows > (1u << 30) || cols > (1u << 30) || elements > fileSize)
-                continue;
-            const std::uint64_t need = 20 + nameLength + elements * bytesPer[p] * (imag ? 2 : 1);
-            if (need <= fileSize)
+        // v4: a chain of matrices, each five int32 (type MOPT, rows, columns, imaginary flag, name
+        // length), the name and the data, in either byte order. libmatio allocates what a header
+        // claims, so every header of the file is checked and the chain must end exactly at the
+        // end of the file: no allocation can then exceed the file's size.
+        for (const bool swap : {false, true})
+            if (v4ChainFits(path, fileSize, swap))
                 return {};
-        }
     }
     return "it starts with neither a MATLAB v5/v7.3 header nor a valid v4 matrix header";
 }
 
 /// Opens the file after the size and header checks. @throws FileError / InvalidInput.
-MatHandle openMat(const std::string& path) {
+MatHandle openMat(const std::string& path, std::uint64_t* sizeOut = nullptr) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
         throw FileError(path, errno == ENOENT ? "no such file" : std::strerror(errno));
@@ -107,6 +237,8 @@ MatHandle openMat(const std::string& path) {
         throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) + " bytes");
     if (const std::string why = checkHeader(path, static_cast<std::uint64_t>(st.st_size)); !why.empty())
         throw InvalidInput(path, "is not a MAT file: " + why);
+    if (sizeOut)
+        *sizeOut = static_cast<std::uint64_t>(st.st_size);
     installMatioLog();
     matioMessage.clear();
     mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
@@ -232,7 +364,8 @@ MatFileInfo listMatVariables(const std::string& path) {
 }
 
 ExperimentTable readMat(const std::string& path, const std::vector<std::string>& names) {
-    const MatHandle m = openMat(path);
+    std::uint64_t fileSize = 0;
+    const MatHandle m = openMat(path, &fileSize);
     const std::vector<MatVariableInfo> vars = listOpen(m.get());
     std::vector<std::string> wanted = names;
     if (wanted.empty())
@@ -265,6 +398,13 @@ ExperimentTable readMat(const std::string& path, const std::vector<std::string>&
         for (const std::string& other : t.names)
             if (other == name)
                 throw InvalidInput(path, "variable '" + shownCell(name) + "' is asked for twice");
+        // libmatio allocates what the file claims; a claim beyond what the file can hold even
+        // compressed (deflate expands at most 1032:1; v7.3 dataspaces are not checked by
+        // anyone else before this) is refused here.
+        if (std::uint64_t(info->rows) * std::uint64_t(info->columns) > 1032ull * fileSize)
+            throw InvalidInput(path, "variable '" + shownCell(name) + "' claims " + std::to_string(info->rows) +
+                                         " x " + std::to_string(info->columns) + " elements, more than a file of " +
+                                         std::to_string(fileSize) + " bytes can hold");
         matioMessage.clear();
         const VarHandle v(Mat_VarRead(m.get(), name.c_str()));
         if (!v || v->rank != 2 || !v->dims || !numericClass(v->class_type) || v->isComplex ||

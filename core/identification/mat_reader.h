@@ -27,8 +27,12 @@ struct MatFileInfo {
  * Lists the variables of a MATLAB .mat file (libmatio: v4, v5/v7 with or without compression,
  * v7.3 through HDF5). The file must be a regular file of at most kMaxExperimentBytes bytes; a
  * v5/v7.3 file must start with the 128-byte MATLAB header ("MATLAB 5.0 MAT-file" text, version
- * 0x0100 or 0x0200, endian indicator "IM" or "MI"), a v4 file with a plausible v4 matrix header
- * (checked here before libmatio sees the file).
+ * 0x0100 or 0x0200, endian indicator "IM" or "MI"), a v4 file a chain of valid v4 matrix
+ * headers whose data ends exactly at the end of the file; in a v5 file every top-level element
+ * must be a matrix (or a compressed one, its head inflated) that fits in the file, with an array
+ * header whose dimensions and name it can hold. libmatio allocates what a file claims, so these
+ * checks (ours, before libmatio opens the file) keep junk from asking for gigabytes; v7.3 files
+ * are HDF5, checked only by libhdf5 (and by the element bound of readMat).
  * @throws FileError naming @p path when it cannot be read (no such file, not a regular file,
  *         too large); InvalidInput naming it when it is not a MAT file libmatio can open.
  */
@@ -37,7 +41,9 @@ MatFileInfo listMatVariables(const std::string& path);
 /**
  * Reads the real numeric vectors @p names (every usable one when empty) of a MAT file into a
  * table whose rows are the vectors' elements (rowLabel "element", rowNumbers 1..n; columns may
- * differ in length). Integer and single classes are converted to double exactly. A NaN or an
+ * differ in length). Integer and single classes are converted to double exactly. A variable
+ * claiming more elements than 1032 x the file size (deflate's largest ratio) is refused before
+ * libmatio reads it. A NaN or an
  * infinity is kept as a problem of its column (refused when that column is used).
  * @throws FileError as listMatVariables; InvalidInput naming the file: a name that is not in the
  *         file (with the list of usable ones), a variable that is not a real numeric vector

@@ -3,7 +3,16 @@
 // own header check) on arbitrary bytes written to a temporary file: list the variables, read the
 // usable ones. Either a one-line InvalidInput, or a consistent list and table
 // (fuzz_experiment_support.h; MAT columns may differ in length). libmatio must neither crash
-// nor leak (LeakSanitizer runs with libFuzzer's -detect_leaks default).
+// nor leak (LeakSanitizer runs with libFuzzer's -detect_leaks default). One exception, found by
+// this harness: libhdf5 1.10.8 (Debian 12), which libmatio uses for v7.3 files, leaks about
+// 1.7 KB of its own allocations when it gives up on a corrupt HDF5 file
+// (corpus/fuzz_mat_reader/leak-hdf5-corrupt-v73); that is outside our code and libmatio's, so
+// leaks whose allocation is in libhdf5 are suppressed below, and nothing else is. Likewise
+// libhdf5's metadata cache asks malloc for absurd sizes (4.7e18 bytes) on some corrupt files
+// (corpus/fuzz_mat_reader/crash-hdf5-metadata-cache-huge-malloc): a real malloc returns NULL and
+// libhdf5 reports an error, so ASan is told to return NULL too (allocator_may_return_null)
+// instead of aborting. Requests libmatio makes from sizes a file claims are bounded by our
+// own checks (mat_reader.cpp) and are not covered by either exception.
 #include "tests/fuzz/fuzz_experiment_support.h"
 
 #include "core/identification/mat_reader.h"
@@ -13,6 +22,9 @@
 #include <cstdlib>
 #include <string>
 #include <unistd.h>
+
+extern "C" const char* __asan_default_options() { return "allocator_may_return_null=1"; }
+extern "C" const char* __lsan_default_suppressions() { return "leak:libhdf5_serial.so\n"; }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     char path[] = "/tmp/xyt_fuzz_mat_XXXXXX";
