@@ -4,6 +4,7 @@
 // prints the estimate with its uncertainty, fits, FPE/AIC, residual tests, poles and zeros.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
+#include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
 #include "core/identification/experiment_data.h"
@@ -11,7 +12,12 @@
 #include "core/identification/identification.h"
 #include "core/identification/preprocessing.h"
 #include "core/io/file_io.h"
+#include "core/io/text_escape.h"
 #include "core/model/errors.h"
+#include "core/session/identified_axis.h"
+#include "ui/session/session_file.h"
+
+#include <QJsonDocument>
 
 #include <QJsonArray>
 
@@ -131,7 +137,22 @@ int runIdentify(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means"});
     args.allowOnly({"data", "time-col", "ts", "input-col", "output-col", "output-unit", "mm-per-count", "segment",
                     "structure", "na", "nb", "nc", "nd", "nf", "nk", "validate", "range", "detrend",
-                    "remove-means", "decimate", "horizon", "max-lag", "max-iterations"});
+                    "remove-means", "decimate", "horizon", "max-lag", "max-iterations", "session", "axis", "o"});
+    // --session IN.json --axis x|y -o OUT.json: "use this model" from the command line.
+    std::optional<Session> session;
+    int axis = 0;
+    if (args.has("session") || args.has("o") || args.has("axis")) {
+        if (!args.has("session"))
+            throw InvalidInput("--session", "give the session whose axis takes the model (with --axis and -o)");
+        const auto output = args.value("o");
+        if (!output || output->isEmpty())
+            throw InvalidInput("-o", "give the file to write the session with the identified model to");
+        const QString axisName = args.text("axis", QString());
+        if (axisName != "x" && axisName != "y")
+            throw InvalidInput("--axis", "must be x or y (the axis that takes the model)");
+        axis = axisName == "x" ? 0 : 1;
+        session = loadSessionOrThrow(*args.value("session"));
+    }
     if (!args.has("data"))
         throw InvalidInput("--data", "give the experiment file (CSV/TSV, .lvm or .mat)");
     if (!args.has("structure"))
@@ -201,6 +222,12 @@ int runIdentify(const QStringList& argv) {
     for (const std::string& w : m.warnings)
         warnings.append(QString::fromStdString(w));
     out.insert("warnings", warnings);
+    if (session && m.hasEstimate()) {
+        session->axes[static_cast<std::size_t>(axis)] =
+            axisWithIdentifiedModel(session->axes[static_cast<std::size_t>(axis)], m, estimation);
+        writeTextFile("-o", *args.value("o"), QString::fromUtf8(QJsonDocument(ui::sessionToJson(*session)).toJson()));
+        out.insert("session", QString::fromStdString(terminalText(args.value("o")->toStdString())));
+    }
     print(out);
     return m.hasEstimate() ? 0 : 3;
 }

@@ -71,7 +71,10 @@ constexpr CommandHelp kGtHelp[] = {
      "            model {structure, status, parameters {name: {value, std}}, polynomials a b c d f\n"
      "            (ascending z^-1), plant {k0, a1, a2} for gt3 (y in mm)}, fit {estimation,\n"
      "            validation: {simulation, prediction} %}, fpe, aic, residual_tests, poles, zeros,\n"
-     "            stable, non_minimum_phase, warnings. Exit 3 when no estimate exists (status).\n"},
+     "            stable, non_minimum_phase, warnings. Exit 3 when no estimate exists (status).\n"
+     "            --session IN.json --axis x|y -o OUT.json: the session with the model as that\n"
+     "            axis' plant (gt3: the Guillemin-Truxal plant; arx/oe/bj: the pole-placement model)\n"
+     "            and where it came from (model_origin).\n"},
     {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
               "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
               "            [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"

@@ -87,6 +87,15 @@ int runSessionReport(const QString& path) {
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
         out << "\n== Axis " << QString::fromStdString(s.id) << " (" << shown(s.label)
             << "): " << ui::methodName(s.method) << "\n";
+        if (s.origin) {
+            const ModelOrigin& o = *s.origin;
+            out << "  model: identified " << shown(o.structure) << " from " << shown(o.source) << " ("
+                << o.samples << " samples at " << o.tsSeconds << " s), fit " << QString::number(o.fitPercent, 'f', 2)
+                << " %";
+            if (o.validationFitPercent)
+                out << ", on validation data " << QString::number(*o.validationFitPercent, 'f', 2) << " %";
+            out << "\n";
+        }
         if (!a.ok) {
             out << "  not designed: " << shown(a.errorField) << ": " << shown(a.error) << "\n";
             continue;

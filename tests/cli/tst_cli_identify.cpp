@@ -12,9 +12,11 @@
 
 #include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <random>
 
 using namespace xyt;
@@ -52,6 +54,8 @@ private slots:
     void arxRecoversPaper001Model();
     void outputErrorAndValidationFile();
     void continuousFitRecoversTheLowerBase();
+    void examplesRecoverTheirModels();
+    void sessionTakesTheModel();
     void badInput_data();
     void badInput();
 
@@ -158,6 +162,70 @@ void TstCliIdentify::continuousFitRecoversTheLowerBase() {
     QCOMPARE(run.json().value("continuous_poles").toArray().size(), 3);
 }
 
+void TstCliIdentify::examplesRecoverTheirModels() {
+    // The committed synthetic logs (resources/examples/make_identification_logs.sh states how
+    // they were made): the lower base under a square wave in LVM, paper 001's x axis under a
+    // PRBS in CSV, each with white measurement noise (output-error noise).
+    const QString examples = QStringLiteral(XYT_SOURCE_DIR "/resources/examples/");
+    const auto within3Sigma = [](const QJsonObject& parameters, const QString& name, double truth) {
+        const QJsonObject p = parameters.value(name).toObject();
+        const double deviation = std::abs(p.value("value").toDouble() - truth) / p.value("std").toDouble();
+        if (!(deviation <= 3.0))
+            qWarning("%s is %g standard deviations off", qPrintable(name), deviation);
+        return deviation <= 3.0;
+    };
+    const auto gt = test::runCli({"identify", "--data", examples + "synthetic_lower_base_square_10ms.lvm",
+                                  "--input-col", "u", "--output-col", "y", "--structure", "gt3"});
+    QCOMPARE(gt.exitCode, 0);
+    const QJsonObject gtp = gt.json().value("model").toObject().value("parameters").toObject();
+    QVERIFY(within3Sigma(gtp, "k0", 77800.0)); // paper 000 Eq. 2 in mm (77.8 in m)
+    QVERIFY(within3Sigma(gtp, "a1", 125.3));
+    QVERIFY(within3Sigma(gtp, "a2", 3665.0));
+    QVERIFY(gt.json().value("residual_tests").toObject().value("passed").toBool());
+    const QStringList prbs{"identify", "--data", examples + "synthetic_x_axis_prbs_70ms.csv", "--time-col", "t",
+                           "--input-col", "u", "--output-col", "y"};
+    const auto oe = test::runCli(prbs + QStringList{"--structure", "oe", "--nb", "3", "--nf", "2", "--nk", "1"});
+    QCOMPARE(oe.exitCode, 0);
+    const QJsonObject oep = oe.json().value("model").toObject().value("parameters").toObject();
+    QVERIFY(within3Sigma(oep, "f1", a_[1]));
+    QVERIFY(within3Sigma(oep, "f2", a_[2]));
+    for (int i = 1; i <= 3; ++i)
+        QVERIFY(within3Sigma(oep, QStringLiteral("b%1").arg(i), b_[static_cast<std::size_t>(i)]));
+    QVERIFY(oe.json().value("non_minimum_phase").toBool());
+    // The textbook case on the same log: ARX under output-error noise is biased far beyond its
+    // standard deviations, and its residuals are not white.
+    const auto arx = test::runCli(prbs + QStringList{"--structure", "arx"});
+    QCOMPARE(arx.exitCode, 0);
+    const QJsonObject a1 = arx.json().value("model").toObject().value("parameters").toObject().value("a1").toObject();
+    QVERIFY(std::abs(a1.value("value").toDouble() - a_[1]) > 3.0 * a1.value("std").toDouble());
+    QVERIFY(!arx.json().value("residual_tests").toObject().value("passed").toBool());
+}
+
+void TstCliIdentify::sessionTakesTheModel() {
+    const QString in = dir_.filePath("paper.json");
+    const QString out = dir_.filePath("identified.json");
+    QCOMPARE(test::runCli({"new", "-o", in}).exitCode, 0);
+    const auto run = test::runCli({"identify", "--data", arx_, "--time-col", "t", "--input-col", "Command",
+                                   "--output-col", "X", "--structure", "arx", "--session", in, "--axis", "y",
+                                   "-o", out});
+    QCOMPARE(run.exitCode, 0);
+    QFile f(out);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QJsonObject y = QJsonDocument::fromJson(f.readAll()).object().value("axes").toArray()[1].toObject();
+    QCOMPARE(y.value("method").toString(), QString("pole-placement-zpetc"));
+    const QJsonArray a = y.value("pp").toObject().value("a").toArray();
+    QVERIFY(test::near(a[1].toDouble(), a_[1], 1e-9));
+    QVERIFY(test::near(y.value("pp").toObject().value("ts").toDouble(), 0.07, 1e-12));
+    const QJsonObject origin = y.value("model_origin").toObject();
+    QCOMPARE(origin.value("structure").toString(), QString("ARX(2,3,1)"));
+    QVERIFY(origin.value("source").toString().contains("arx.csv"));
+    QCOMPARE(origin.value("samples").toInt(), 500);
+    // The written session loads again (the report reads it) and names the model's origin.
+    const auto report = test::runCli({"report", out});
+    QCOMPARE(report.exitCode, 0);
+    QVERIFY2(report.out.contains("model: identified ARX(2,3,1) from "), report.out.constData());
+}
+
 void TstCliIdentify::badInput_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("named");
@@ -175,6 +243,9 @@ void TstCliIdentify::badInput_data() {
     QTest::newRow("negative order") << QStringList{"--structure", "arx", "--na", "-1"} + columns << "--na";
     QTest::newRow("decimate 0") << QStringList{"--structure", "arx", "--decimate", "0"} + columns << "--decimate";
     QTest::newRow("unknown option") << QStringList{"--structure", "arx", "--order", "3"} + columns << "--order";
+    QTest::newRow("session without -o") << QStringList{"--structure", "arx", "--session", "s.json", "--axis", "x"} + columns
+                                        << "-o";
+    QTest::newRow("-o without session") << QStringList{"--structure", "arx", "-o", "out.json"} + columns << "--session";
 }
 
 void TstCliIdentify::badInput() {

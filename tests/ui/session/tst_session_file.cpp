@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <limits>
+
 #include <cerrno>
 #include <cstring>
 
@@ -34,6 +36,9 @@ private slots:
     void filesWithoutGcodeLoad();
     void badGcodeFields_data();
     void badGcodeFields();
+    void roundTripModelOrigin();
+    void badModelOriginFields_data();
+    void badModelOriginFields();
     void newerVersionIsRefused();
     void fileErrors();
     void failedSaveKeepsOldFile();
@@ -170,6 +175,69 @@ void TstSessionFile::filesWithoutGcodeLoad() {
     const auto missing = sessionFromJson(root);
     QVERIFY(!missing.ok);
     QCOMPARE(missing.errorPath, QString("trajectory.gcode"));
+}
+
+namespace {
+
+/// Paper 001's x axis as identified from a log (issue 11): an ARX origin, one deviation unknown.
+Session identifiedSession() {
+    Session s = Session::paperDefault();
+    ModelOrigin o;
+    o.source = "run3.lvm: u=Command, y=X";
+    o.structure = "ARX(2,3,1)";
+    o.tsSeconds = 0.07;
+    o.samples = 1023;
+    o.fitPercent = 97.25;
+    o.validationFitPercent = 95.5;
+    o.parameterNames = {"a1", "a2", "b1", "b2", "b3"};
+    o.standardDeviations = {0.01, 0.011, std::numeric_limits<double>::quiet_NaN(), 0.002, 0.003};
+    s.axes[0].method = DesignMethod::PolePlacementZpetc;
+    s.axes[0].origin = o;
+    return s;
+}
+
+} // namespace
+
+void TstSessionFile::roundTripModelOrigin() {
+    // Invariant: load(save(s)) == s with the model's origin, an unknown deviation (NaN, null in
+    // JSON) included; a hand-typed axis has none, and files before issue 11 load without it.
+    const Session s = identifiedSession();
+    const QJsonObject json = sessionToJson(s);
+    const QJsonObject origin = json["axes"].toArray()[0].toObject()["model_origin"].toObject();
+    QVERIFY(origin["std"].toArray()[2].isNull());
+    QVERIFY(!json["axes"].toArray()[1].toObject().contains("model_origin"));
+    const auto r = sessionFromBytes(QJsonDocument(json).toJson());
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s);
+    QVERIFY(r.warnings.isEmpty());
+    QVERIFY(!r.session.axes[1].origin);
+}
+
+void TstSessionFile::badModelOriginFields_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("expectedPath");
+    QTest::addColumn<QString>("expectedReason");
+    const QString o = "axes[0].model_origin.";
+    QTest::newRow("ts zero") << o + "ts" << QJsonValue(0) << o + "ts" << "must be greater than zero";
+    QTest::newRow("samples fractional") << o + "samples" << QJsonValue(10.5) << o + "samples" << "must be a whole number";
+    QTest::newRow("fit a string") << o + "fit" << QJsonValue("high") << o + "fit" << "must be a finite number or null";
+    QTest::newRow("std too short") << o + "std" << QJsonValue(QJsonArray{0.1}) << o + "std" << "must be an array as long";
+    QTest::newRow("std entry text") << o + "std[1]" << QJsonValue("x") << o + "std[1]" << "must be a finite number or null";
+    QTest::newRow("parameter not a name") << o + "parameters[0]" << QJsonValue(3) << o + "parameters[0]" << "must be a string";
+    QTest::newRow("structure missing") << o + "structure" << QJsonValue(QJsonValue::Undefined) << o + "structure" << "is missing";
+}
+
+void TstSessionFile::badModelOriginFields() {
+    QFETCH(QString, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, expectedPath);
+    QFETCH(QString, expectedReason);
+    const QJsonObject root = setPath(sessionToJson(identifiedSession()), splitPath(path), value).toObject();
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, expectedPath);
+    QVERIFY2(r.error.startsWith(expectedReason), qPrintable(r.message()));
 }
 
 void TstSessionFile::badGcodeFields_data() {
