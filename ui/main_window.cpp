@@ -5,6 +5,7 @@
 #include "core/simulation/step_view.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/design_space_view.h"
+#include "ui/identification_window.h"
 #include "ui/robustness_view.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/metrics_panel.h"
@@ -316,6 +317,15 @@ void MainWindow::buildMenus() {
     design->addAction(tr("&Compare designs..."), this, [this] {
         SnapshotCompareDialog dialog(session_->session(), this);
         dialog.exec();
+    });
+    design->addAction(tr("&Identify from data..."), this, [this] {
+        // One window, kept (with its candidates) when closed; a child, so found again here.
+        auto* window = findChild<IdentificationWindow*>();
+        if (!window)
+            window = new IdentificationWindow(session_, this);
+        window->show();
+        window->raise();
+        window->activateWindow();
     });
     overlayMenu_ = design->addMenu(tr("&Overlay snapshot"));
     // Filled when shown: never rebuilt (its actions deleted) while one of them runs.

@@ -33,6 +33,7 @@
 
 using namespace xyt;
 using namespace xyt::ui;
+using xyt::test::near;
 
 namespace {
 

@@ -1,0 +1,705 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/identification_window.h"
+
+#include "core/identification/experiment_data.h"
+#include "core/identification/experiment_file.h"
+#include "core/identification/preprocessing.h"
+#include "core/io/file_io.h"
+#include "core/model/errors.h"
+#include "core/session/identified_axis.h"
+#include "ui/plots/plot_notice.h"
+#include "ui/plots/plot_tools.h"
+#include "ui/session/tuning_session.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSplitter>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTabWidget>
+#include <QVBoxLayout>
+
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <tuple>
+
+namespace xyt::ui {
+
+namespace {
+
+const QString kSampleTimeItem = QStringLiteral("(sample time)");
+
+QStringList columnNames(const ExperimentTable& table) {
+    QStringList names;
+    for (const std::string& n : table.names)
+        names << QString::fromStdString(n);
+    return names;
+}
+
+/// The column whose name looks like a time column, or -1.
+int guessTimeColumn(const QStringList& names) {
+    for (int i = 0; i < names.size(); ++i) {
+        const QString n = names[i].toLower();
+        if (n == "t" || n.startsWith("time") || n == "t_s" || n == "t [s]")
+            return i;
+    }
+    return -1;
+}
+
+QString percent(double v) { return std::isfinite(v) ? QString::number(v, 'f', 2) : QStringLiteral("–"); }
+
+QVector<double> toVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
+
+} // namespace
+
+IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* parent)
+    : QDialog(parent), session_(session) {
+    setWindowTitle(tr("Identify a model from data"));
+    setModal(false);
+    setObjectName("identificationWindow");
+
+    // Data: file, columns, sample time, unit, preprocessing.
+    load_ = new QPushButton(tr("Load data…"));
+    fileName_ = new QLabel(tr("(no file)"));
+    fileName_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    loadValidation_ = new QPushButton(tr("Validation data…"));
+    validationName_ = new QLabel(tr("(none: judged on the estimation data)"));
+    input_ = new QComboBox;
+    output_ = new QComboBox;
+    time_ = new QComboBox;
+    ts_ = new QDoubleSpinBox;
+    ts_->setDecimals(6);
+    ts_->setRange(1e-6, 1e3);
+    ts_->setValue(0.001);
+    ts_->setSuffix(tr(" s"));
+    unit_ = new QComboBox;
+    unit_->addItems({tr("mm"), tr("m")});
+    t0_ = new QDoubleSpinBox;
+    t1_ = new QDoubleSpinBox;
+    for (QDoubleSpinBox* b : {t0_, t1_}) {
+        b->setDecimals(4);
+        b->setRange(0.0, 1e6);
+        b->setSuffix(tr(" s"));
+    }
+    t0_->setToolTip(tr("Range of the record to use; 0 to 0 uses all of it"));
+    t1_->setToolTip(t0_->toolTip());
+    detrend_ = new QCheckBox(tr("Remove trends"));
+    decimate_ = new QSpinBox;
+    decimate_->setRange(1, 1000);
+    decimate_->setToolTip(tr("Keep every n-th sample after an anti-alias filter (1: all)"));
+
+    auto* dataBox = new QGroupBox(tr("Data"));
+    auto* dataForm = new QFormLayout(dataBox);
+    auto* fileRow = new QHBoxLayout;
+    fileRow->addWidget(load_);
+    fileRow->addWidget(fileName_, 1);
+    dataForm->addRow(fileRow);
+    dataForm->addRow(tr("Input (V):"), input_);
+    dataForm->addRow(tr("Output:"), output_);
+    auto* unitRow = new QHBoxLayout;
+    unitRow->addWidget(unit_);
+    unitRow->addStretch();
+    dataForm->addRow(tr("Output unit:"), unitRow);
+    dataForm->addRow(tr("Time:"), time_);
+    dataForm->addRow(tr("Ts:"), ts_);
+    auto* rangeRow = new QHBoxLayout;
+    rangeRow->addWidget(t0_);
+    rangeRow->addWidget(new QLabel(tr("to")));
+    rangeRow->addWidget(t1_);
+    dataForm->addRow(tr("Range:"), rangeRow);
+    auto* prepRow = new QHBoxLayout;
+    prepRow->addWidget(detrend_);
+    prepRow->addWidget(new QLabel(tr("Decimate:")));
+    prepRow->addWidget(decimate_);
+    dataForm->addRow(prepRow);
+    auto* validationRow = new QHBoxLayout;
+    validationRow->addWidget(loadValidation_);
+    validationRow->addWidget(validationName_, 1);
+    dataForm->addRow(validationRow);
+
+    // Model: structure, orders, search.
+    structure_ = new QComboBox;
+    structure_->addItem(tr("ARX"), static_cast<int>(ModelStructure::Arx));
+    structure_->addItem(tr("OE"), static_cast<int>(ModelStructure::Oe));
+    structure_->addItem(tr("BJ"), static_cast<int>(ModelStructure::Bj));
+    structure_->addItem(tr("GT3 continuous"), static_cast<int>(ModelStructure::ContinuousThirdOrder));
+    auto* modelBox = new QGroupBox(tr("Model"));
+    auto* modelForm = new QFormLayout(modelBox);
+    modelForm->addRow(tr("Structure:"), structure_);
+    auto* orderRow = new QHBoxLayout;
+    for (const auto& [name, value, minimum] : {std::tuple{"na", 2, 0}, std::tuple{"nb", 3, 1}, std::tuple{"nc", 1, 0},
+                                               std::tuple{"nd", 1, 0}, std::tuple{"nf", 2, 0}, std::tuple{"nk", 1, 0}}) {
+        auto* box = new QSpinBox;
+        box->setRange(minimum, 100);
+        box->setValue(value);
+        box->setObjectName(name);
+        orderRow->addWidget(new QLabel(QString::fromLatin1(name)));
+        orderRow->addWidget(box);
+        orders_.emplace_back(QString::fromLatin1(name), box);
+    }
+    orderRow->addStretch();
+    modelForm->addRow(orderRow);
+    maxIterations_ = new QSpinBox;
+    maxIterations_->setRange(1, 100000);
+    maxIterations_->setValue(100);
+    modelForm->addRow(tr("Max iterations:"), maxIterations_);
+    fit_ = new QPushButton(tr("Fit"));
+    fit_->setEnabled(false);
+    cancel_ = new QPushButton(tr("Cancel"));
+    cancel_->setEnabled(false);
+    progress_ = new QProgressBar;
+    progress_->setRange(0, 100);
+    progress_->setValue(0);
+    auto* runRow = new QHBoxLayout;
+    runRow->addWidget(fit_);
+    runRow->addWidget(cancel_);
+    runRow->addWidget(progress_, 1);
+    modelForm->addRow(runRow);
+
+    status_ = new QLabel;
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    setStatus(tr("Load a record of the axis (input in V, output position) to begin."));
+
+    // Candidates.
+    table_ = new QTableWidget(0, 7);
+    table_->setHorizontalHeaderLabels(
+        {tr("Model"), tr("Status"), tr("Fit % est"), tr("Fit % val"), tr("AIC"), tr("Residuals"), tr("NMP")});
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->verticalHeader()->setVisible(false);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    useX_ = new QPushButton(tr("Use for axis X"));
+    useY_ = new QPushButton(tr("Use for axis Y"));
+    useX_->setEnabled(false);
+    useY_->setEnabled(false);
+    auto* useRow = new QHBoxLayout;
+    useRow->addWidget(useX_);
+    useRow->addWidget(useY_);
+    useRow->addStretch();
+
+    auto* left = new QWidget;
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(dataBox);
+    leftLayout->addWidget(modelBox);
+    leftLayout->addWidget(status_);
+    leftLayout->addWidget(table_, 1);
+    leftLayout->addLayout(useRow);
+
+    buildPlots();
+    auto* splitter = new QSplitter(Qt::Horizontal);
+    splitter->addWidget(left);
+    splitter->addWidget(tabs_);
+    splitter->setStretchFactor(0, 0);
+    splitter->setStretchFactor(1, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(splitter);
+    resize(1300, 750);
+
+    connect(load_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load experiment data"), QString(),
+                                                          tr("Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)"));
+        if (!path.isEmpty())
+            loadFile(path);
+    });
+    connect(loadValidation_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load validation data"), QString(),
+                                                          tr("Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)"));
+        if (!path.isEmpty())
+            loadValidationFile(path);
+    });
+    connect(time_, &QComboBox::currentIndexChanged, this, [this](int index) { ts_->setEnabled(index == 0); });
+    connect(structure_, &QComboBox::currentIndexChanged, this, &IdentificationWindow::updateOrderBoxes);
+    connect(fit_, &QPushButton::clicked, this, &IdentificationWindow::fit);
+    connect(cancel_, &QPushButton::clicked, this, &IdentificationWindow::cancel);
+    connect(useX_, &QPushButton::clicked, this, [this] { useForAxis(0); });
+    connect(useY_, &QPushButton::clicked, this, [this] { useForAxis(1); });
+    connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
+        const auto rows = table_->selectionModel()->selectedRows();
+        showCandidate(rows.isEmpty() ? -1 : rows.front().row());
+    });
+    updateOrderBoxes();
+    clearPlots(tr("Fit a model to see it here."));
+}
+
+IdentificationWindow::~IdentificationWindow() { stopJob(); }
+
+void IdentificationWindow::buildPlots() {
+    tabs_ = new QTabWidget;
+    const auto makePlot = [this](const QString& objectName) {
+        auto* plot = new QCustomPlot;
+        plot->setObjectName(objectName);
+        plot->setMinimumSize(420, 300);
+        setupInteractivePlot(plot);
+        styleAxisRect(plot->axisRect());
+        return plot;
+    };
+
+    timePlot_ = makePlot("identificationTimePlot");
+    measured_ = timePlot_->addGraph();
+    measured_->setName(tr("measured y"));
+    measured_->setPen(QPen(colors::reference, 1.2));
+    simulated_ = timePlot_->addGraph();
+    simulated_->setName(tr("simulated ŷ (model)"));
+    simulated_->setPen(QPen(colors::output, 1.2));
+    timePlot_->xAxis->setLabel(tr("t (s)"));
+    timePlot_->yAxis->setLabel(tr("position (mm)"));
+    timePlot_->legend->setVisible(true);
+    placeLegendBelow(timePlot_, 1, 2);
+    timeNotice_ = std::make_unique<PlotNotice>(timePlot_, timePlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
+    tabs_->addTab(timePlot_, tr("Output"));
+
+    // Two stacked axis rects: residual autocorrelation, input-residual cross-correlation.
+    residualPlot_ = makePlot("identificationResidualPlot");
+    QCPAxisRect* autoRect = residualPlot_->axisRect();
+    auto* crossRect = new QCPAxisRect(residualPlot_);
+    styleAxisRect(crossRect);
+    residualPlot_->plotLayout()->addElement(1, 0, crossRect);
+    const auto stems = [this](QCPAxisRect* rect, QCPGraph*& stemsGraph, QCPGraph* (&bound)[2], const QString& yLabel,
+                              const QString& xLabel) {
+        stemsGraph = residualPlot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        stemsGraph->setLineStyle(QCPGraph::lsImpulse);
+        stemsGraph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 4));
+        stemsGraph->setPen(QPen(colors::output, 1.5));
+        for (QCPGraph*& b : bound) {
+            b = residualPlot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+            b->setPen(QPen(colors::limit, 1.0, Qt::DashLine));
+        }
+        rect->axis(QCPAxis::atLeft)->setLabel(yLabel);
+        rect->axis(QCPAxis::atBottom)->setLabel(xLabel);
+    };
+    stems(autoRect, autoStems_, autoBound_, tr("residual autocorr."), tr("lag (samples)"));
+    stems(crossRect, crossStems_, crossBound_, tr("input–residual corr."), tr("lag (samples)"));
+    residualNotice_ = std::make_unique<PlotNotice>(residualPlot_, autoRect, Qt::AlignTop | Qt::AlignRight);
+    tabs_->addTab(residualPlot_, tr("Residuals"));
+
+    pzPlot_ = makePlot("identificationPoleZeroPlot");
+    unitCircle_ = new QCPCurve(pzPlot_->xAxis, pzPlot_->yAxis);
+    unitCircle_->setPen(QPen(colors::snapshot, 1.0, Qt::DashLine));
+    unitCircle_->setName(tr("unit circle"));
+    QVector<double> cx, cy, ct;
+    for (int i = 0; i <= 200; ++i) {
+        const double a = 2.0 * std::numbers::pi * i / 200.0;
+        ct << i;
+        cx << std::cos(a);
+        cy << std::sin(a);
+    }
+    unitCircle_->setData(ct, cx, cy);
+    poles_ = pzPlot_->addGraph();
+    poles_->setName(tr("poles"));
+    poles_->setLineStyle(QCPGraph::lsNone);
+    poles_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, colors::error, 10));
+    poles_->setPen(QPen(colors::error, 2.0));
+    zeros_ = pzPlot_->addGraph();
+    zeros_->setName(tr("zeros"));
+    zeros_->setLineStyle(QCPGraph::lsNone);
+    zeros_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colors::output, 10));
+    zeros_->setPen(QPen(colors::output, 2.0));
+    pzPlot_->xAxis->setLabel(tr("Re z"));
+    pzPlot_->yAxis->setLabel(tr("Im z"));
+    pzPlot_->legend->setVisible(true);
+    pzPlot_->plotLayout()->insertRow(0);
+    pzPlot_->plotLayout()->addElement(0, 0, new QCPTextElement(pzPlot_, tr("Pole-zero map (z-plane)")));
+    placeLegendBelow(pzPlot_, 2, 3);
+    pzNotice_ = std::make_unique<PlotNotice>(pzPlot_, pzPlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
+    tabs_->addTab(pzPlot_, tr("Poles and zeros"));
+}
+
+QSpinBox* IdentificationWindow::orderBox(const QString& name) const {
+    for (const auto& [n, box] : orders_)
+        if (n == name)
+            return box;
+    return nullptr;
+}
+
+void IdentificationWindow::updateOrderBoxes() {
+    const auto structure = static_cast<ModelStructure>(structure_->currentData().toInt());
+    QStringList used;
+    switch (structure) {
+    case ModelStructure::Arx: used = {"na", "nb", "nk"}; break;
+    case ModelStructure::Oe: used = {"nb", "nf", "nk"}; break;
+    case ModelStructure::Bj: used = {"nb", "nc", "nd", "nf", "nk"}; break;
+    case ModelStructure::ContinuousThirdOrder: break;
+    }
+    for (const auto& [name, box] : orders_)
+        box->setEnabled(used.contains(name));
+    maxIterations_->setEnabled(structure != ModelStructure::Arx);
+}
+
+void IdentificationWindow::setStatus(const QString& text, bool isError) { setStatusText(status_, text, isError); }
+
+QString IdentificationWindow::statusText() const { return status_->text(); }
+
+bool IdentificationWindow::loadFile(const QString& path) {
+    try {
+        ExperimentTable table = readExperimentTable(path.toStdString(), 1);
+        const QStringList names = columnNames(table);
+        const QSignalBlocker b1(input_), b2(output_), b3(time_);
+        input_->clear();
+        output_->clear();
+        time_->clear();
+        input_->addItems(names);
+        output_->addItems(names);
+        time_->addItem(kSampleTimeItem);
+        time_->addItems(names);
+        const int timeColumn = table.sampleTimeSeconds ? -1 : guessTimeColumn(names);
+        time_->setCurrentIndex(timeColumn + 1);
+        ts_->setEnabled(timeColumn < 0);
+        if (table.sampleTimeSeconds)
+            ts_->setValue(*table.sampleTimeSeconds);
+        // The first two columns that are not the time column: command, then position.
+        QList<int> others;
+        for (int i = 0; i < names.size(); ++i)
+            if (i != timeColumn)
+                others << i;
+        input_->setCurrentIndex(others.value(0, 0));
+        output_->setCurrentIndex(others.value(1, others.value(0, 0)));
+        experiment_ = std::move(table);
+        fileName_->setText(QFileInfo(path).fileName());
+        fileName_->setToolTip(path);
+        fit_->setEnabled(!isRunning());
+        QString text = tr("%1: %2 columns, %3 rows%4. Pick the columns and press Fit.")
+                           .arg(QFileInfo(path).fileName())
+                           .arg(names.size())
+                           .arg(experiment_->rowNumbers.size())
+                           .arg(experiment_->sampleTimeSeconds
+                                    ? tr(", Ts = %1 s stated by the file").arg(*experiment_->sampleTimeSeconds)
+                                    : QString());
+        for (const std::string& w : experiment_->warnings)
+            text += "\n" + QString::fromStdString(w);
+        setStatus(text);
+        return true;
+    } catch (const std::exception& e) { // InvalidInput, FileError: the message names the place
+        experiment_.reset();
+        input_->clear();
+        output_->clear();
+        time_->clear();
+        fileName_->setText(tr("(no file)"));
+        fit_->setEnabled(false);
+        table_->clearSelection();
+        clearPlots(tr("No data loaded."));
+        setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())), true);
+        return false;
+    }
+}
+
+bool IdentificationWindow::loadValidationFile(const QString& path) {
+    if (path.isEmpty()) {
+        validationExperiment_.reset();
+        validationName_->setText(tr("(none: judged on the estimation data)"));
+        return true;
+    }
+    try {
+        validationExperiment_ = readExperimentTable(path.toStdString(), 1);
+        validationName_->setText(QFileInfo(path).fileName());
+        validationName_->setToolTip(path);
+        setStatus(tr("Validation data: %1 (%2 rows).")
+                      .arg(QFileInfo(path).fileName())
+                      .arg(validationExperiment_->rowNumbers.size()));
+        return true;
+    } catch (const std::exception& e) {
+        validationExperiment_.reset();
+        validationName_->setText(tr("(none: judged on the estimation data)"));
+        setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())), true);
+        return false;
+    }
+}
+
+IoData IdentificationWindow::record(const ExperimentTable& table) const {
+    ExperimentColumns c;
+    c.input = input_->currentText().toStdString();
+    c.output = output_->currentText().toStdString();
+    if (time_->currentIndex() > 0)
+        c.time = time_->currentText().toStdString();
+    else if (table.sampleTimeSeconds && std::abs(ts_->value() - *table.sampleTimeSeconds) <= 1e-12)
+        c.fileSampleTime = true;
+    else
+        c.sampleTimeSeconds = ts_->value();
+    c.outputScale.unit = unit_->currentIndex() == 1 ? OutputUnit::Metres : OutputUnit::Millimetres;
+    IoData data = experimentData(table, c);
+    const double t0 = t0_->value(), t1 = t1_->value();
+    if (t0 != 0.0 || t1 != 0.0) {
+        if (!(t1 > t0))
+            throw InvalidInput("range", "the end must be after the start (0 to 0 uses the whole record)");
+        data = selectTimeRange(data, t0, t1);
+    }
+    if (detrend_->isChecked())
+        data = removeTrends(data).data;
+    if (decimate_->value() > 1)
+        data = decimate(data, decimate_->value());
+    return data;
+}
+
+void IdentificationWindow::fit() {
+    if (isRunning() || !experiment_)
+        return;
+    IdentificationSpec spec;
+    spec.structure = static_cast<ModelStructure>(structure_->currentData().toInt());
+    const auto order = [this](const char* name) { return orderBox(QString::fromLatin1(name))->value(); };
+    spec.arx = {order("na"), order("nb"), order("nk")};
+    spec.oe = {order("nb"), order("nf"), order("nk")};
+    spec.bj = {order("nb"), order("nc"), order("nd"), order("nf"), order("nk")};
+    spec.search.maxIterations = maxIterations_->value();
+    Candidate candidate;
+    try {
+        candidate.estimation = record(*experiment_);
+        if (validationExperiment_)
+            candidate.validation = record(*validationExperiment_);
+    } catch (const std::exception& e) {
+        table_->clearSelection();
+        clearPlots(tr("No model: the data could not be used."));
+        setStatus(tr("Cannot fit: %1").arg(QString::fromStdString(e.what())), true);
+        emit fitFinished();
+        return;
+    }
+    if (spec.structure == ModelStructure::ContinuousThirdOrder) {
+        // The plant integrates: its model starts at rest at position 0, so the record's initial
+        // position is taken off (as xytune-cli identify does), and said.
+        for (IoData* d : {&candidate.estimation, candidate.validation ? &*candidate.validation : nullptr}) {
+            if (!d || d->y.empty())
+                continue;
+            const double y0 = d->y.front();
+            for (double& y : d->y)
+                y -= y0;
+            candidate.notes << tr("%1: the initial position %2 mm was subtracted (the plant starts at rest at 0)")
+                                   .arg(QString::fromStdString(d->source))
+                                   .arg(y0, 0, 'g', 10);
+        }
+    }
+    pending_ = candidate;
+    job_ = std::make_unique<BackgroundJob>();
+    const int id = job_->id = ++lastJobId_;
+    std::atomic<bool>* cancelFlag = &job_->cancel;
+    const IoData estimation = candidate.estimation;
+    const std::optional<IoData> validation = candidate.validation;
+    job_->thread = std::thread([this, id, cancelFlag, spec, estimation, validation]() mutable {
+        spec.search.progress = [this, id, cancelFlag](double fraction) {
+            QMetaObject::invokeMethod(this, [this, id, fraction] {
+                if (job_ && job_->id == id)
+                    progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
+            }, Qt::QueuedConnection);
+            return !cancelFlag->load();
+        };
+        auto model = std::make_shared<IdentifiedModel>();
+        QString error;
+        try {
+            *model = identifyModel(estimation, validation ? &*validation : nullptr, spec);
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        QMetaObject::invokeMethod(this, [this, id, model, error] { onFinished(id, model, error); },
+                                  Qt::QueuedConnection);
+    });
+    progress_->setValue(0);
+    fit_->setEnabled(false);
+    cancel_->setEnabled(true);
+    setStatus(tr("Fitting %1 to %2 samples…")
+                  .arg(QString::fromStdString(spec.describe()))
+                  .arg(candidate.estimation.size()));
+}
+
+void IdentificationWindow::cancel() {
+    if (!job_)
+        return;
+    job_->cancel = true;
+    cancel_->setEnabled(false);
+    setStatus(tr("Cancelling…"));
+}
+
+void IdentificationWindow::stopJob() {
+    if (!job_)
+        return;
+    job_->stop();
+    job_.reset();
+}
+
+void IdentificationWindow::onFinished(int jobId, std::shared_ptr<IdentifiedModel> model, QString error) {
+    if (!job_ || job_->id != jobId)
+        return;
+    job_->thread.join();
+    job_.reset();
+    cancel_->setEnabled(false);
+    fit_->setEnabled(experiment_.has_value());
+    progress_->setValue(100);
+    Candidate candidate = std::move(*pending_);
+    pending_.reset();
+    if (!error.isEmpty()) {
+        table_->clearSelection();
+        clearPlots(tr("No model: the fit failed."));
+        setStatus(tr("The fit failed: %1").arg(error), true);
+        emit fitFinished();
+        return;
+    }
+    candidate.model = std::move(*model);
+    const IdentifiedModel& m = candidate.model;
+    QString text = tr("%1: %2").arg(QString::fromStdString(m.structure),
+                                    QString::fromStdString(estimationStatusName(m.status)));
+    if (!m.message.empty())
+        text += tr(" (%1)").arg(QString::fromStdString(m.message));
+    for (const QString& n : candidate.notes)
+        text += "\n" + n;
+    for (const std::string& w : m.warnings)
+        text += "\n" + QString::fromStdString(w);
+    if (!m.hasEstimate()) {
+        setStatus(tr("No estimate: %1").arg(text), true);
+        emit fitFinished();
+        return;
+    }
+    candidates_.push_back(std::move(candidate));
+    addRow(candidates_.back());
+    setStatus(text, m.status != EstimationStatus::Converged);
+    table_->selectRow(static_cast<int>(candidates_.size()) - 1);
+    emit fitFinished();
+}
+
+void IdentificationWindow::addRow(const Candidate& c) {
+    const IdentifiedModel& m = c.model;
+    const int row = table_->rowCount();
+    table_->insertRow(row);
+    const auto set = [&](int column, const QString& text) { table_->setItem(row, column, new QTableWidgetItem(text)); };
+    set(0, QString::fromStdString(m.structure));
+    set(1, QString::fromStdString(estimationStatusName(m.status)));
+    set(2, percent(m.fit.estimationSimulation.fitPercent));
+    set(3, m.fit.validationSimulation ? percent(m.fit.validationSimulation->fitPercent) : QStringLiteral("–"));
+    set(4, m.criteria.samples > 0 ? QString::number(m.criteria.aic, 'f', 2) : QStringLiteral("–"));
+    set(5, m.residualTests.samples == 0 ? QStringLiteral("–") : m.residualTests.passed() ? tr("pass") : tr("fail"));
+    set(6, m.roots.nonMinimumPhase ? tr("yes") : tr("no"));
+    table_->item(row, 0)->setToolTip(QString::fromStdString(m.spec.describe()));
+}
+
+const IdentificationWindow::Candidate* IdentificationWindow::selectedCandidate() const {
+    return shown_ >= 0 && shown_ < static_cast<int>(candidates_.size()) ? &candidates_[static_cast<std::size_t>(shown_)]
+                                                                        : nullptr;
+}
+
+void IdentificationWindow::clearPlots(const QString& reason) {
+    shown_ = -1;
+    useX_->setEnabled(false);
+    useY_->setEnabled(false);
+    clearWithNotice(timePlot_, *timeNotice_, {measured_, simulated_}, reason);
+    clearWithNotice(residualPlot_, *residualNotice_,
+                    {autoStems_, autoBound_[0], autoBound_[1], crossStems_, crossBound_[0], crossBound_[1]}, reason);
+    clearWithNotice(pzPlot_, *pzNotice_, {poles_, zeros_}, reason);
+    pzPlot_->xAxis->setRange(-1.3, 1.3);
+    pzPlot_->yAxis->setRange(-1.3, 1.3);
+    pzPlot_->replot();
+}
+
+void IdentificationWindow::showCandidate(int index) {
+    if (index < 0 || index >= static_cast<int>(candidates_.size())) {
+        clearPlots(tr("Select a candidate to see it here."));
+        return;
+    }
+    shown_ = index;
+    const Candidate& c = candidates_[static_cast<std::size_t>(index)];
+    const IdentifiedModel& m = c.model;
+    useX_->setEnabled(true);
+    useY_->setEnabled(true);
+
+    // Output: measured and simulated over time.
+    const IoData& d = c.estimation;
+    QVector<double> t(static_cast<int>(d.size()));
+    for (int k = 0; k < t.size(); ++k)
+        t[k] = d.startSeconds + k * d.tsSeconds;
+    measured_->setData(t, toVector(d.y), true);
+    const std::vector<double>& yhat = m.fit.estimationSimulation.yhat;
+    simulated_->setData(t.mid(0, static_cast<int>(yhat.size())), toVector(yhat), true);
+    timeNotice_->setSevere(false);
+    timeNotice_->setLines(c.notes);
+    timePlot_->rescaleAxes();
+    timePlot_->yAxis->scaleRange(1.08);
+    timePlot_->replot();
+
+    // Residual tests.
+    const auto drawTest = [](const CorrelationTest& test, QCPGraph* stems, QCPGraph* (&bound)[2]) {
+        QVector<double> lags, values;
+        for (std::size_t i = 0; i < test.lags.size() && i < test.values.size(); ++i) {
+            lags << test.lags[i];
+            values << test.values[i];
+        }
+        stems->setData(lags, values, true);
+        const double lo = lags.isEmpty() ? 0.0 : lags.front(), hi = lags.isEmpty() ? 1.0 : lags.back();
+        bound[0]->setData({lo, hi}, {test.bound, test.bound});
+        bound[1]->setData({lo, hi}, {-test.bound, -test.bound});
+        QCPAxis* x = stems->keyAxis();
+        QCPAxis* y = stems->valueAxis();
+        x->setRange(lo - 1.0, hi + 1.0);
+        double top = 1.5 * test.bound;
+        for (double v : values)
+            top = std::max(top, 1.1 * std::abs(v));
+        y->setRange(-top, top);
+        stems->setName(test.passed ? QObject::tr("within ±bound") : QObject::tr("%1 lags outside").arg(test.outsideCount));
+    };
+    drawTest(m.residualTests.autocorrelation, autoStems_, autoBound_);
+    drawTest(m.residualTests.crossCorrelation, crossStems_, crossBound_);
+    autoStems_->valueAxis()->setLabel(tr("residual autocorr. (%1)")
+                                          .arg(m.residualTests.autocorrelation.passed ? tr("pass") : tr("fail")));
+    crossStems_->valueAxis()->setLabel(tr("input–residual corr. (%1)")
+                                           .arg(m.residualTests.crossCorrelation.passed ? tr("pass") : tr("fail")));
+    residualNotice_->setLines({});
+    residualPlot_->replot();
+
+    // Poles and zeros in the z-plane.
+    QVector<double> pr, pi, zr, zi;
+    double extent = 1.2;
+    for (const auto& p : m.roots.poles) {
+        pr << p.real();
+        pi << p.imag();
+        extent = std::max(extent, 1.1 * std::abs(p));
+    }
+    for (const auto& z : m.roots.zeros) {
+        zr << z.real();
+        zi << z.imag();
+        extent = std::max(extent, 1.1 * std::abs(z));
+    }
+    poles_->setData(pr, pi);
+    zeros_->setData(zr, zi);
+    if (auto* title = qobject_cast<QCPTextElement*>(pzPlot_->plotLayout()->element(0, 0)))
+        title->setText(m.roots.nonMinimumPhase ? tr("Pole-zero map (z-plane): a zero outside the unit circle (NMP)")
+                                               : tr("Pole-zero map (z-plane)"));
+    QStringList notes;
+    for (const std::string& n : m.roots.notes)
+        notes << QString::fromStdString(n);
+    if (!m.roots.stable)
+        notes << tr("A pole is on or outside the unit circle: the model is unstable.");
+    pzNotice_->setSevere(false);
+    pzNotice_->setLines(notes);
+    pzPlot_->xAxis->setRange(-extent, extent);
+    pzPlot_->yAxis->setRange(-extent, extent);
+    pzPlot_->replot();
+}
+
+void IdentificationWindow::useForAxis(int axis) {
+    const Candidate* c = selectedCandidate();
+    if (!c)
+        return;
+    try {
+        Session next = session_->session();
+        auto& a = next.axes.at(static_cast<std::size_t>(axis));
+        a = axisWithIdentifiedModel(a, c->model, c->estimation);
+        session_->apply(next, tr("Use the identified %1 for axis %2")
+                                  .arg(QString::fromStdString(c->model.structure), axis == 0 ? tr("X") : tr("Y")));
+        setStatus(tr("Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).")
+                      .arg(axis == 0 ? tr("X") : tr("Y"), QString::fromStdString(c->model.structure)));
+    } catch (const std::exception& e) {
+        setStatus(tr("Cannot use this model: %1").arg(QString::fromStdString(e.what())), true);
+    }
+}
+
+} // namespace xyt::ui

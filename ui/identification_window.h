@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/identification/experiment_table.h"
+#include "core/identification/identification.h"
+#include "core/identification/io_data.h"
+#include "ui/background_job.h"
+
+#include <QDialog>
+#include <QStringList>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QCPGraph;
+class QCPCurve;
+class QCustomPlot;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+class QTabWidget;
+
+namespace xyt::ui {
+
+class PlotNotice;
+class TuningSession;
+
+/**
+ * "Identify a model from data" (issue 11): loads an experiment file (CSV/TSV, .lvm, .mat),
+ * picks the input, output and time columns, preprocesses (range, detrend, decimate), and runs
+ * the core's identifyModel for the chosen structure on a worker thread with progress and cancel.
+ * Every fit becomes a row of the candidates table (fits, AIC, residual tests, NMP) so that
+ * several models can be compared; the selected one is drawn: measured and simulated output,
+ * the residual correlations with their bounds, the z-plane pole-zero map. "Use for axis X/Y"
+ * makes it the axis' plant in one undo step (axisWithIdentifiedModel). The window computes
+ * nothing itself: it shows the core's IdentifiedModel.
+ */
+class IdentificationWindow : public QDialog {
+    Q_OBJECT
+public:
+    /// One fitted model with the data it was fitted to (after the preprocessing).
+    struct Candidate {
+        IdentifiedModel model;
+        IoData estimation;
+        std::optional<IoData> validation;
+        QStringList notes; ///< what the window did to the data (e.g. the initial position taken off)
+    };
+
+    explicit IdentificationWindow(TuningSession* session, QWidget* parent = nullptr);
+    ~IdentificationWindow() override;
+
+    /// Reads @p path as the estimation data and fills the column choices; false (and the
+    /// core's message in the status line) when it cannot be read.
+    bool loadFile(const QString& path);
+    /// Reads @p path as the validation data (same column names); "" removes it.
+    bool loadValidationFile(const QString& path);
+    /// Starts a fit of the chosen structure (on a worker thread).
+    void fit();
+    void cancel();
+    /// Makes the selected candidate the plant of axis @p axis (0 = X, 1 = Y): one undo step.
+    void useForAxis(int axis);
+    bool isRunning() const { return job_ != nullptr; }
+
+    const std::vector<Candidate>& candidates() const { return candidates_; }
+    /// The candidate shown in the plots, or null.
+    const Candidate* selectedCandidate() const;
+    QString statusText() const;
+
+    QPushButton* loadButton() const { return load_; }
+    QPushButton* validationButton() const { return loadValidation_; }
+    QPushButton* fitButton() const { return fit_; }
+    QPushButton* cancelButton() const { return cancel_; }
+    QPushButton* useXButton() const { return useX_; }
+    QPushButton* useYButton() const { return useY_; }
+    QComboBox* inputBox() const { return input_; }
+    QComboBox* outputBox() const { return output_; }
+    QComboBox* timeBox() const { return time_; }
+    QComboBox* unitBox() const { return unit_; }
+    QComboBox* structureBox() const { return structure_; }
+    QDoubleSpinBox* sampleTimeBox() const { return ts_; }
+    QDoubleSpinBox* rangeStartBox() const { return t0_; }
+    QDoubleSpinBox* rangeEndBox() const { return t1_; }
+    QCheckBox* detrendBox() const { return detrend_; }
+    QSpinBox* decimateBox() const { return decimate_; }
+    QSpinBox* maxIterationsBox() const { return maxIterations_; }
+    /// The order box "na", "nb", "nc", "nd", "nf" or "nk", or null.
+    QSpinBox* orderBox(const QString& name) const;
+    QTableWidget* candidateTable() const { return table_; }
+    QProgressBar* progressBar() const { return progress_; }
+    QLabel* fileLabel() const { return fileName_; }
+
+    QCustomPlot* timePlot() const { return timePlot_; }
+    QCPGraph* measuredGraph() const { return measured_; }
+    QCPGraph* simulatedGraph() const { return simulated_; }
+    QCustomPlot* residualPlot() const { return residualPlot_; }
+    QCPGraph* autocorrelationGraph() const { return autoStems_; }
+    QCPGraph* crossCorrelationGraph() const { return crossStems_; }
+    QCustomPlot* poleZeroPlot() const { return pzPlot_; }
+    QCPGraph* polesGraph() const { return poles_; }
+    QCPGraph* zerosGraph() const { return zeros_; }
+    QTabWidget* plotTabs() const { return tabs_; }
+
+signals:
+    /// A fit ended (with a candidate, an error or a cancel).
+    void fitFinished();
+
+private:
+    void buildPlots();
+    void updateOrderBoxes();
+    void setStatus(const QString& text, bool isError = false);
+    void stopJob();
+    void onFinished(int jobId, std::shared_ptr<IdentifiedModel> model, QString error);
+    void addRow(const Candidate& c);
+    void showCandidate(int index);
+    void clearPlots(const QString& reason);
+    /// The record of @p table with the chosen columns and preprocessing.
+    /// @throws InvalidInput as the core does.
+    IoData record(const ExperimentTable& table) const;
+
+    TuningSession* session_;
+    std::optional<ExperimentTable> experiment_;
+    std::optional<ExperimentTable> validationExperiment_;
+    std::vector<Candidate> candidates_;
+    std::optional<Candidate> pending_;
+    std::unique_ptr<BackgroundJob> job_;
+    int lastJobId_ = 0;
+    int shown_ = -1;
+
+    QPushButton* load_;
+    QPushButton* loadValidation_;
+    QLabel* fileName_;
+    QLabel* validationName_;
+    QComboBox* input_;
+    QComboBox* output_;
+    QComboBox* time_;
+    QDoubleSpinBox* ts_;
+    QComboBox* unit_;
+    QDoubleSpinBox* t0_;
+    QDoubleSpinBox* t1_;
+    QCheckBox* detrend_;
+    QSpinBox* decimate_;
+    QComboBox* structure_;
+    std::vector<std::pair<QString, QSpinBox*>> orders_;
+    QSpinBox* maxIterations_;
+    QPushButton* fit_;
+    QPushButton* cancel_;
+    QProgressBar* progress_;
+    QLabel* status_;
+    QTableWidget* table_;
+    QPushButton* useX_;
+    QPushButton* useY_;
+    QTabWidget* tabs_;
+    QCustomPlot* timePlot_;
+    QCPGraph* measured_;
+    QCPGraph* simulated_;
+    QCustomPlot* residualPlot_;
+    QCPGraph* autoStems_;
+    QCPGraph* autoBound_[2];
+    QCPGraph* crossStems_;
+    QCPGraph* crossBound_[2];
+    QCustomPlot* pzPlot_;
+    QCPGraph* poles_;
+    QCPGraph* zeros_;
+    QCPCurve* unitCircle_;
+    std::unique_ptr<PlotNotice> timeNotice_;
+    std::unique_ptr<PlotNotice> residualNotice_;
+    std::unique_ptr<PlotNotice> pzNotice_;
+};
+
+} // namespace xyt::ui
