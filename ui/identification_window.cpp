@@ -208,6 +208,7 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     splitter->addWidget(tabs_);
     splitter->setStretchFactor(0, 0);
     splitter->setStretchFactor(1, 1);
+    splitter->setSizes({560, 740}); // the candidates' seven columns without a scroll bar
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(splitter);
     resize(1300, 750);
@@ -254,7 +255,8 @@ void IdentificationWindow::buildPlots() {
     timePlot_ = makePlot("identificationTimePlot");
     measured_ = timePlot_->addGraph();
     measured_->setName(tr("measured y"));
-    measured_->setPen(QPen(colors::reference, 1.2));
+    // Wide and pale under the model's thin line: both stay visible where they coincide.
+    measured_->setPen(QPen(colors::snapshot, 3.0));
     simulated_ = timePlot_->addGraph();
     simulated_->setName(tr("simulated ŷ (model)"));
     simulated_->setPen(QPen(colors::output, 1.2));
@@ -318,6 +320,9 @@ void IdentificationWindow::buildPlots() {
     pzPlot_->plotLayout()->addElement(0, 0, new QCPTextElement(pzPlot_, tr("Pole-zero map (z-plane)")));
     placeLegendBelow(pzPlot_, 2, 3);
     pzNotice_ = std::make_unique<PlotNotice>(pzPlot_, pzPlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
+    // Equal scales at every size (the unit circle round): x follows y once the layout is known.
+    connect(pzPlot_, &QCustomPlot::afterLayout, pzPlot_,
+            [this] { pzPlot_->xAxis->setScaleRatio(pzPlot_->yAxis, 1.0); });
     tabs_->addTab(pzPlot_, tr("Poles and zeros"));
 }
 
@@ -680,8 +685,9 @@ void IdentificationWindow::showCandidate(int index) {
         notes << tr("A pole is on or outside the unit circle: the model is unstable.");
     pzNotice_->setSevere(false);
     pzNotice_->setLines(notes);
-    pzPlot_->xAxis->setRange(-extent, extent);
+    // Equal scales (the unit circle round): the y range as computed, x widened to match.
     pzPlot_->yAxis->setRange(-extent, extent);
+    pzPlot_->xAxis->setRange(-extent, extent);
     pzPlot_->replot();
 }
 
