@@ -7,16 +7,19 @@
 // B = 0.0421 z^-2 + 0.0628 z^-3 - 0.0454 z^-4 (with its z^-1 delay), Ts = 0.07 s, driven by a
 // +-2 V random binary input with a fixed seed: noise-free, so ARX recovers it exactly.
 #include "ui/identification_window.h"
+#include "ui/main_window.h"
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
 #include "core/session/identified_axis.h"
 #include "ui/session/tuning_session.h"
+#include "tests/support/gui_checks.h"
 #include "tests/support/identification_data.h"
 #include "tests/support/tolerance.h"
 
 #include <QComboBox>
 #include <QFile>
 #include <QLabel>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -84,6 +87,8 @@ private slots:
     void useForAxisIsOneUndoStep();
     void badInputShowsTheCoresMessage();
     void cancelLeavesTheWindowUsable();
+    void sampleTimeWithoutATimeColumn();
+    void designMenuOpensOneWindow();
 
 private:
     void pickColumns();
@@ -295,6 +300,42 @@ void TstIdentificationWindow::cancelLeavesTheWindowUsable() {
     QVERIFY(fitAndWait());
     QCOMPARE(window_->candidates().size(), before + 1);
     QCOMPARE(window_->selectedCandidate()->model.structure, std::string("ARX(2,3,1)"));
+}
+
+void TstIdentificationWindow::sampleTimeWithoutATimeColumn() {
+    // Only u and y: the time choice stays "(sample time)" and the Ts box gives the sample time.
+    const QString path = dir_->path() + "/no_time.csv";
+    {
+        QFile in(path_), out(path);
+        QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text) && out.open(QIODevice::WriteOnly | QIODevice::Text));
+        while (!in.atEnd()) {
+            const QList<QByteArray> fields = in.readLine().trimmed().split(',');
+            out.write(fields[1] + "," + fields[2] + "\n");
+        }
+    }
+    QVERIFY(window_->loadFile(path));
+    QCOMPARE(window_->timeBox()->currentIndex(), 0);
+    QVERIFY(window_->sampleTimeBox()->isEnabled());
+    window_->sampleTimeBox()->setValue(kTs);
+    QVERIFY(fitAndWait());
+    const auto* c = window_->selectedCandidate();
+    QVERIFY2(c, qPrintable(window_->statusText()));
+    QVERIFY(near(c->estimation.tsSeconds, kTs, 1e-12));
+    QVERIFY(near(c->model.model.tsSeconds, kTs, 1e-12));
+    for (std::size_t i = 0; i < kA.size(); ++i)
+        QVERIFY(near(c->model.model.a[i], kA[i], 0.0, 1e-9));
+}
+
+void TstIdentificationWindow::designMenuOpensOneWindow() {
+    MainWindow main(session_.get());
+    main.show();
+    QAction* action = test::findMenuAction(main.menuBar(), "Design/Identify from data...");
+    QVERIFY(action);
+    action->trigger();
+    action->trigger();
+    const auto windows = main.findChildren<IdentificationWindow*>();
+    QCOMPARE(windows.size(), 1);
+    QVERIFY(windows.front()->isVisible());
 }
 
 QTEST_MAIN(TstIdentificationWindow)
