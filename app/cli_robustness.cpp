@@ -89,6 +89,8 @@ QJsonObject axisJson(const QString& axisId, const RobustnessProblem& problem, co
         warnings.append(QString::fromStdString(w));
     return {{"axis", axisId},
             {"method", problem.loop ? "pole-placement-zpetc" : "guillemin-truxal"},
+            {"uncertainty", problem.covariance ? "identified covariance (normal draws; corners at 3 sigma)"
+                                               : "uniform ranges"},
             {"parameters", parameters},
             {"samples", o.samples},
             {"corners", static_cast<qint64>(r.runs.size()) - o.samples},
@@ -175,8 +177,12 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
 } // namespace
 
 int runRobustness(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"no-corners", "sensitivity", "contour"}, {"range"});
-    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv", "sensitivity", "contour"});
+    const CliArgs args = CliArgs::parse(argv, {"no-corners", "sensitivity", "contour", "from-identification"}, {"range"});
+    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv", "sensitivity", "contour",
+                    "from-identification"});
+    const bool identified = args.flag("from-identification");
+    if (identified && !args.values("range").isEmpty())
+        throw InvalidInput("--range", "give either ranges or --from-identification, not both");
     if (args.positional().size() != 1)
         throw InvalidInput("SESSION", "give one session file (xytune-cli robustness SESSION.json ...)");
     const Session session = loadSessionOrThrow(args.positional().first());
@@ -209,6 +215,8 @@ int runRobustness(const QStringList& argv) {
             continue;
         ids.push_back(QString::fromStdString(session.axes[static_cast<std::size_t>(axis)].id));
         RobustnessProblem problem = sessionRobustnessProblem(session, axis);
+        if (identified)
+            setIdentifiedUncertainty(problem, session, axis); // names axes[i].model_origin when it cannot
         for (std::size_t i = 0; i < ranges.size(); ++i) {
             const Range& range = ranges[i];
             if (!range.axis.isEmpty() && range.axis != (axis == 0 ? "x" : "y"))
@@ -254,6 +262,8 @@ int runRobustness(const QStringList& argv) {
         ContourRobustnessProblem problem = sessionContourRobustnessProblem(session);
         problem.x.parameters = problems[0].parameters; // with the ranges applied above
         problem.y.parameters = problems[1].parameters;
+        problem.x.covariance = problems[0].covariance; // (--from-identification)
+        problem.y.covariance = problems[1].covariance;
         joint = analyzeContourRobustness(problem, o);
         out.insert("xy", contourJson(problem, *joint));
     }

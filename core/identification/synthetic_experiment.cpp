@@ -4,20 +4,15 @@
 #include "core/identification/continuous_fit.h"
 #include "core/identification/validation.h"
 #include "core/model/errors.h"
+#include "core/model/normal_draws.h"
 #include "core/model/number_format.h"
 
 #include <cmath>
-#include <numbers>
 #include <random>
 
 namespace xyt {
 
 namespace {
-
-/// A uniform number in (0, 1) from the top 53 bits (never 0: the logarithm below needs > 0).
-double uniformOpen(std::mt19937_64& rng) {
-    return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53;
-}
 
 /// Adds N(0, sigma^2) noise to y, sample by sample (Box-Muller, the cosine branch only).
 void addNoise(std::vector<double>& y, double sigma, std::uint64_t seed) {
@@ -26,11 +21,8 @@ void addNoise(std::vector<double>& y, double sigma, std::uint64_t seed) {
     if (sigma == 0.0)
         return;
     std::mt19937_64 rng(seed);
-    for (double& v : y) {
-        const double r = uniformOpen(rng);
-        const double theta = uniformOpen(rng);
-        v += sigma * std::sqrt(-2.0 * std::log(r)) * std::cos(2.0 * std::numbers::pi * theta);
-    }
+    for (double& v : y)
+        v += sigma * standardNormal(rng);
 }
 
 std::string noiseText(double sigma, std::uint64_t seed) {

@@ -30,6 +30,11 @@ AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedM
         origin.validationFitPercent = model.fit.validationSimulation->fitPercent;
     origin.parameterNames = model.parameterNames;
     origin.standardDeviations = model.standardDeviations;
+    const Eigen::Index d = static_cast<Eigen::Index>(model.parameters.size());
+    if (model.covariance.rows() == d && model.covariance.cols() == d && model.covariance.allFinite())
+        for (Eigen::Index i = 0; i < d; ++i)
+            for (Eigen::Index j = 0; j < d; ++j)
+                origin.covariance.push_back(model.covariance(i, j));
     out.origin = origin;
     return out;
 }

@@ -6,6 +6,7 @@
 #include "core/session/session_evaluation.h"
 #include "core/simulation/resample.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt {
@@ -106,6 +107,46 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         p.geometry.pathOptions.measuredSegments[i] = !program.segments[i].rapid;
     p.geometry.t = profile.t;
     return p;
+}
+
+void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session, int axis) {
+    const std::string field = "axes[" + std::to_string(axis) + "].model_origin";
+    const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
+    if (!settings.origin)
+        throw InvalidInput(field, "the axis' model was not identified from data (set ranges instead)");
+    const ModelOrigin& o = *settings.origin;
+    const std::size_t d = o.parameterNames.size();
+    if (o.covariance.size() != d * d || d == 0)
+        throw InvalidInput(field, "the identified " + o.structure + " has no covariance to draw plants from");
+    const bool continuous = o.parameterNames == std::vector<std::string>{"k0", "a1", "a2"};
+    if (continuous != (settings.method == DesignMethod::GuilleminTruxal))
+        throw InvalidInput(field, "the identified " + o.structure + " is not a model of the axis' design method");
+    // The problem's index of each origin parameter (npos: not in the loop).
+    std::vector<std::size_t> at(d, std::string::npos);
+    std::vector<double> scale(d, 1.0);
+    for (std::size_t i = 0; i < d; ++i) {
+        std::string name = o.parameterNames[i];
+        if (!continuous && !name.empty() && name[0] == 'f')
+            name[0] = 'a'; // OE/BJ: the loop's A is F
+        if (continuous && name == "k0")
+            scale[i] = settings.gt.modelUnitsPerPositionUnit;
+        for (std::size_t j = 0; j < problem.parameters.size(); ++j)
+            if (problem.parameters[j].name == name)
+                at[i] = j;
+    }
+    const Eigen::Index n = static_cast<Eigen::Index>(problem.parameters.size());
+    Eigen::MatrixXd c = Eigen::MatrixXd::Zero(n, n);
+    for (std::size_t i = 0; i < d; ++i)
+        for (std::size_t j = 0; j < d; ++j)
+            if (at[i] != std::string::npos && at[j] != std::string::npos)
+                c(static_cast<Eigen::Index>(at[i]), static_cast<Eigen::Index>(at[j])) =
+                    o.covariance[i * d + j] * scale[i] * scale[j];
+    for (Eigen::Index j = 0; j < n; ++j) {
+        UncertainParameter& p = problem.parameters[static_cast<std::size_t>(j)];
+        const double sigma = std::sqrt(std::max(c(j, j), 0.0));
+        p.relative = p.nominal != 0.0 ? std::min(3.0 * sigma / std::abs(p.nominal), 0.99) : 0.0;
+    }
+    problem.covariance = c;
 }
 
 std::vector<UncertainParameter> axisUncertainParameters(const AxisSettings& axis) {

@@ -31,6 +31,20 @@ RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
 ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session);
 
 /**
+ * The uncertainty of axis @p axis from its identified model (issue 14, "from identification";
+ * the model's origin, issue 11): problem.covariance is the estimate's covariance over the
+ * problem's parameters (random plants then come from N(nominal, covariance)), and each range is
+ * set to 3 standard deviations (at most 99 %) so that the box's corners are the +-3 sigma
+ * worst-case search. Names map as the models do: a Guillemin-Truxal axis takes k0, a1, a2 of a
+ * continuous fit (k0's row and column scaled from mm to the axis' model unit); a pole-placement
+ * axis takes a_i, b_i of an ARX model, or f_i (as a_i) and b_i of an OE or BJ model (the noise
+ * model's c_i, d_i do not enter the loop). A parameter the origin does not name stays exact.
+ * @throws InvalidInput "axes[i].model_origin" when the axis has no identified model, the model
+ *         has no covariance, or was identified for the other design method.
+ */
+void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session, int axis);
+
+/**
  * The uncertain parameters of an axis, with zero ranges, from its settings alone (nothing is
  * designed or simulated, so a view may call it on every slider step): those of
  * sessionRobustnessProblem. ARX coefficients are those of the normalized model (A(0) = 1).

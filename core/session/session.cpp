@@ -64,7 +64,7 @@ bool operator==(const ModelOrigin& a, const ModelOrigin& b) {
            a.samples == b.samples && same(a.fitPercent, b.fitPercent) &&
            a.validationFitPercent.has_value() == b.validationFitPercent.has_value() &&
            (!a.validationFitPercent || same(*a.validationFitPercent, *b.validationFitPercent)) &&
-           a.parameterNames == b.parameterNames;
+           a.parameterNames == b.parameterNames && a.covariance == b.covariance;
 }
 
 } // namespace xyt

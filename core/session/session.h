@@ -52,6 +52,8 @@ struct ModelOrigin {
     std::optional<double> validationFitPercent; ///< simulation fit on separate validation data
     std::vector<std::string> parameterNames;    ///< as the estimator names them
     std::vector<double> standardDeviations;     ///< of those parameters (NaN when unknown)
+    /// Their covariance, row-major (d x d), or empty when the estimator could not give one.
+    std::vector<double> covariance;
     /// Equal field by field, two NaN standard deviations counting as equal (a session must
     /// equal its copy, or every comparison of designs would see a change).
     friend bool operator==(const ModelOrigin& a, const ModelOrigin& b);

@@ -113,7 +113,21 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
             joint.push_back(q);
             result.parameterNames.push_back(prefixed(q.name, name));
         }
-    std::vector<std::vector<double>> pairs = drawPlants(joint, options.samples, options.seed);
+    // With an identified axis, the pairs are drawn from the block-diagonal covariance of both
+    // axes (an axis without one stays at its nominal plant in the draws).
+    std::vector<std::vector<double>> pairs;
+    if (problem.x.covariance || problem.y.covariance) {
+        const Eigen::Index nx = static_cast<Eigen::Index>(problem.x.parameters.size());
+        const Eigen::Index ny = static_cast<Eigen::Index>(problem.y.parameters.size());
+        Eigen::MatrixXd c = Eigen::MatrixXd::Zero(nx + ny, nx + ny);
+        if (problem.x.covariance)
+            c.topLeftCorner(nx, nx) = *problem.x.covariance;
+        if (problem.y.covariance)
+            c.bottomRightCorner(ny, ny) = *problem.y.covariance;
+        pairs = drawPlantsNormal(joint, c, options.samples, options.seed);
+    } else {
+        pairs = drawPlants(joint, options.samples, options.seed);
+    }
     const std::size_t randomCount = pairs.size();
     if (options.corners)
         for (auto& c : boxCorners(joint))

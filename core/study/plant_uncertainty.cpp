@@ -2,6 +2,9 @@
 #include "core/study/plant_uncertainty.h"
 
 #include "core/model/errors.h"
+#include "core/model/normal_draws.h"
+
+#include <Eigen/Cholesky>
 
 #include <cmath>
 #include <random>
@@ -42,6 +45,38 @@ std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter
             const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53; // [0, 1), 53 bits
             plant.push_back(p.nominal * (1.0 + p.relative * (2.0 * u - 1.0)));
         }
+    }
+    return plants;
+}
+
+std::vector<std::vector<double>> drawPlantsNormal(const std::vector<UncertainParameter>& parameters,
+                                                  const Eigen::MatrixXd& covariance, int count, std::uint64_t seed) {
+    if (count < 0 || count > 1'000'000)
+        throw InvalidInput("samples", "must be from 0 to 1000000");
+    const Eigen::Index d = static_cast<Eigen::Index>(parameters.size());
+    if (covariance.rows() != d || covariance.cols() != d)
+        throw InvalidInput("covariance", "must be " + std::to_string(d) + " x " + std::to_string(d) +
+                                             " (one row per parameter)");
+    if (!covariance.allFinite())
+        throw InvalidInput("covariance", "holds a value that is not finite");
+    const double scale = covariance.cwiseAbs().maxCoeff();
+    if (!((covariance - covariance.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale))
+        throw InvalidInput("covariance", "is not symmetric");
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(covariance);
+    if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() < -1e-12 * scale).any())
+        throw InvalidInput("covariance", "is not positive semi-definite");
+    const Eigen::MatrixXd lower = ldlt.matrixL();
+    const Eigen::MatrixXd m = ldlt.transpositionsP().transpose() *
+                              (lower * ldlt.vectorD().cwiseMax(0.0).cwiseSqrt().asDiagonal());
+    std::mt19937_64 rng(seed);
+    Eigen::VectorXd z(d);
+    std::vector<std::vector<double>> plants(static_cast<std::size_t>(count));
+    for (auto& plant : plants) {
+        for (Eigen::Index i = 0; i < d; ++i)
+            z(i) = standardNormal(rng);
+        const Eigen::VectorXd delta = m * z;
+        for (Eigen::Index i = 0; i < d; ++i)
+            plant.push_back(parameters[static_cast<std::size_t>(i)].nominal + delta(i));
     }
     return plants;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,6 +44,19 @@ std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> par
  */
 std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter>& parameters, int count,
                                             std::uint64_t seed);
+
+/**
+ * @p count random plants from the normal distribution N(nominal, @p covariance) of an identified
+ * model (issue 14, the uncertainty "from identification"): theta = nominal + M z with
+ * M M^T = covariance (Eigen's LDLT, so a semi-definite covariance, e.g. a parameter known
+ * exactly, is allowed: M = P^T L D^(1/2)) and z standard normal (standardNormal: Box-Muller on
+ * 53-bit uniforms of std::mt19937_64 seeded with @p seed), drawn plant by plant on the calling
+ * thread: the same plants on every machine and for any number of threads.
+ * @throws InvalidInput "samples" as drawPlants; "covariance" unless it is square of the
+ *         parameters' size, finite, symmetric (to 1e-12 relative) and positive semi-definite.
+ */
+std::vector<std::vector<double>> drawPlantsNormal(const std::vector<UncertainParameter>& parameters,
+                                                  const Eigen::MatrixXd& covariance, int count, std::uint64_t seed);
 
 /**
  * The corners of the parameter box: every combination of nominal (1 +- relative) over the p

@@ -162,7 +162,9 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     RobustnessResult result;
     for (const UncertainParameter& p : problem.parameters)
         result.parameterNames.push_back(p.name);
-    std::vector<std::vector<double>> plants = drawPlants(problem.parameters, options.samples, options.seed);
+    std::vector<std::vector<double>> plants =
+        problem.covariance ? drawPlantsNormal(problem.parameters, *problem.covariance, options.samples, options.seed)
+                           : drawPlants(problem.parameters, options.samples, options.seed);
     const std::size_t randomCount = plants.size();
     if (options.corners)
         for (auto& c : boxCorners(problem.parameters))

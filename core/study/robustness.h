@@ -31,6 +31,11 @@ namespace xyt {
  */
 struct RobustnessProblem {
     std::vector<UncertainParameter> parameters;
+    /// The parameters' covariance (their order) of an identified model: the random plants are
+    /// then drawn from N(nominal, covariance) (drawPlantsNormal) instead of the uniform ranges,
+    /// which only give the box whose corners are searched (identifiedUncertainty sets them to
+    /// +-3 standard deviations).
+    std::optional<Eigen::MatrixXd> covariance;
     // Continuous axes
     std::optional<TransferFunction> controller;
     double modelUnitsPerPositionUnit = 1.0;

@@ -224,6 +224,11 @@ void TstCliIdentify::sessionTakesTheModel() {
     const auto report = test::runCli({"report", out});
     QCOMPARE(report.exitCode, 0);
     QVERIFY2(report.out.contains("model: identified ARX(2,3,1) from "), report.out.constData());
+    // Its covariance drives the robustness analysis of that axis (issue 14).
+    const auto robust = test::runCli({"robustness", out, "--axis", "y", "--from-identification", "--samples", "5"});
+    QCOMPARE(robust.exitCode, 0);
+    QVERIFY(robust.json().value("axes").toArray()[0].toObject().value("uncertainty").toString().startsWith("identified"));
+    QCOMPARE(origin.value("covariance").toArray().size(), 25); // 5 x 5, row by row
 }
 
 void TstCliIdentify::badInput_data() {

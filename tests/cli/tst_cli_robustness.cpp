@@ -163,7 +163,9 @@ void TstCliRobustness::badInput_data() {
     QTest::newRow("negative samples") << QStringList{"--samples", "-3"} << "--samples";
     QTest::newRow("fractional seed") << QStringList{"--seed", "1.5"} << "--seed";
     QTest::newRow("bad axis") << QStringList{"--axis", "z"} << "--axis";
-    QTest::newRow("unknown option") << QStringList{"--from-identification"} << "--from-identification";
+    QTest::newRow("unknown option") << QStringList{"--from-identifcation"} << "--from-identifcation";
+    QTest::newRow("not identified") << QStringList{"--from-identification"} << "axes[0].model_origin";
+    QTest::newRow("ranges and identification") << QStringList{"--from-identification", "--range", "k0=5%"} << "--range";
     QTest::newRow("contour of a cubic move") << QStringList{"--contour"} << "--contour";
     QTest::newRow("contour of one axis") << QStringList{"--contour", "--axis", "x"} << "--contour";
 }

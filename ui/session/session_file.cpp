@@ -139,6 +139,8 @@ QJsonObject originToJson(const ModelOrigin& o) {
                     {"std", deviations}};
     if (o.validationFitPercent)
         out.insert("validation_fit", numberOrNull(*o.validationFitPercent));
+    if (!o.covariance.empty())
+        out.insert("covariance", toArray(o.covariance));
     return out;
 }
 
@@ -178,6 +180,20 @@ ModelOrigin readOrigin(ObjectReader r) {
                               QStringLiteral("must be a finite number or null")};
         o.parameterNames.push_back(n.toString().toStdString());
         o.standardDeviations.push_back(d.isNull() ? std::numeric_limits<double>::quiet_NaN() : d.toDouble());
+    }
+    if (r.has("covariance")) {
+        const QJsonValue c = r.get("covariance");
+        const qsizetype n = names.toArray().size();
+        if (!c.isArray() || c.toArray().size() != n * n)
+            throw FormatError{join(r.path(), "covariance"),
+                              QStringLiteral("must be an array of %1 numbers (the %2 x %2 matrix, row by row)").arg(n * n).arg(n)};
+        for (qsizetype i = 0; i < c.toArray().size(); ++i) {
+            const QJsonValue v = c.toArray()[i];
+            if (!v.isDouble() || !std::isfinite(v.toDouble()))
+                throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "covariance")).arg(i),
+                                  QStringLiteral("must be a finite number")};
+            o.covariance.push_back(v.toDouble());
+        }
     }
     r.finish();
     return o;
