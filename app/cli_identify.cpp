@@ -131,13 +131,50 @@ QJsonObject modelJson(const IdentifiedModel& m) {
     return out;
 }
 
+/// "NA0:NA1,NB0:NB1,NK0:NK1": the ARX order ranges of --order-table.
+QJsonObject orderTableJson(const QString& text, const IoData& estimation, const IoData* validation) {
+    const QStringList parts = text.split(',');
+    std::vector<OrderRange> ranges;
+    for (const QString& part : parts) {
+        const QStringList ends = part.split(':');
+        bool ok0 = false, ok1 = false;
+        const int lo = ends.size() == 2 ? ends[0].toInt(&ok0) : 0;
+        const int hi = ends.size() == 2 ? ends[1].toInt(&ok1) : 0;
+        if (!ok0 || !ok1)
+            throw InvalidInput("--order-table", "'" + text.toStdString() + "' is not NA0:NA1,NB0:NB1,NK0:NK1 (e.g. 1:4,1:4,0:2)");
+        ranges.push_back({lo, hi});
+    }
+    if (ranges.size() != 3)
+        throw InvalidInput("--order-table", "give three ranges: na, nb, nk (e.g. 1:4,1:4,0:2)");
+    ArxOrderTable t;
+    try {
+        t = arxOrderTable(estimation, validation, ranges[0], ranges[1], ranges[2]);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("--order-table", e.what());
+    }
+    QJsonArray rows;
+    for (const ArxOrderRow& r : t.rows)
+        rows.append(QJsonObject{{"na", r.orders.na}, {"nb", r.orders.nb}, {"nk", r.orders.nk},
+                                {"status", QString::fromStdString(estimationStatusName(r.status))},
+                                {"loss", number(r.loss)}, {"fpe", number(r.fpe)}, {"aic", number(r.aic)},
+                                {"validation_loss", number(r.validationLoss)}});
+    QJsonObject out{{"rows", rows}, {"common_first_sample", static_cast<qint64>(t.commonFirstRow)}};
+    const auto orders = [&](std::optional<std::size_t> i) {
+        return i ? QJsonValue(QString::fromStdString(t.rows[*i].orders.toString())) : QJsonValue();
+    };
+    out.insert("best_aic", orders(t.bestAic));
+    out.insert("best_validation", orders(t.bestValidation));
+    return out;
+}
+
 } // namespace
 
 int runIdentify(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means"});
     args.allowOnly({"data", "time-col", "ts", "input-col", "output-col", "output-unit", "mm-per-count", "segment",
                     "structure", "na", "nb", "nc", "nd", "nf", "nk", "validate", "range", "detrend",
-                    "remove-means", "decimate", "horizon", "max-lag", "max-iterations", "session", "axis", "o"});
+                    "remove-means", "decimate", "horizon", "max-lag", "max-iterations", "session", "axis", "o",
+                    "order-table"});
     // --session IN.json --axis x|y -o OUT.json: "use this model" from the command line.
     std::optional<Session> session;
     int axis = 0;
@@ -198,6 +235,8 @@ int runIdentify(const QStringList& argv) {
     }
     const IdentifiedModel m = identifyModel(estimation, validation ? &*validation : nullptr, spec);
     QJsonObject out{{"data", dataJson(estimation)}, {"model", modelJson(m)}};
+    if (const auto table = args.value("order-table"))
+        out.insert("order_table", orderTableJson(*table, estimation, validation ? &*validation : nullptr));
     if (validation)
         out.insert("validation_data", dataJson(*validation));
     if (m.hasEstimate()) {

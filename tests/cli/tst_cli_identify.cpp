@@ -192,6 +192,20 @@ void TstCliIdentify::examplesRecoverTheirModels() {
     for (int i = 1; i <= 3; ++i)
         QVERIFY(within3Sigma(oep, QStringLiteral("b%1").arg(i), b_[static_cast<std::size_t>(i)]));
     QVERIFY(oe.json().value("non_minimum_phase").toBool());
+    // The ARX order table is arxOrderTable's (2 x 2 x 1 orders), with the smallest AIC named.
+    const auto table = test::runCli(prbs + QStringList{"--structure", "arx", "--order-table", "1:2,2:3,1:1"});
+    QCOMPARE(table.exitCode, 0);
+    const QJsonObject t = table.json().value("order_table").toObject();
+    QCOMPARE(t.value("rows").toArray().size(), 4);
+    double bestAic = INFINITY;
+    QString best;
+    for (const QJsonValue& row : t.value("rows").toArray())
+        if (row.toObject().value("aic").toDouble() < bestAic) {
+            bestAic = row.toObject().value("aic").toDouble();
+            best = QStringLiteral("ARX(%1,%2,%3)").arg(row.toObject().value("na").toInt())
+                       .arg(row.toObject().value("nb").toInt()).arg(row.toObject().value("nk").toInt());
+        }
+    QCOMPARE(t.value("best_aic").toString(), best);
     // The textbook case on the same log: ARX under output-error noise is biased far beyond its
     // standard deviations, and its residuals are not white.
     const auto arx = test::runCli(prbs + QStringList{"--structure", "arx"});
@@ -250,6 +264,8 @@ void TstCliIdentify::badInput_data() {
     QTest::newRow("unknown option") << QStringList{"--structure", "arx", "--order", "3"} + columns << "--order";
     QTest::newRow("session without -o") << QStringList{"--structure", "arx", "--session", "s.json", "--axis", "x"} + columns
                                         << "-o";
+    QTest::newRow("bad order table") << QStringList{"--structure", "arx", "--order-table", "1:2,3"} + columns
+                                     << "--order-table";
     QTest::newRow("-o without session") << QStringList{"--structure", "arx", "-o", "out.json"} + columns << "--session";
 }
 
