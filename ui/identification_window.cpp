@@ -603,7 +603,9 @@ void IdentificationWindow::clearPlots(const QString& reason) {
     clearWithNotice(pzPlot_, *pzNotice_, {poles_, zeros_}, reason);
     pzPlot_->xAxis->setRange(-1.3, 1.3);
     pzPlot_->yAxis->setRange(-1.3, 1.3);
-    pzPlot_->replot();
+    // Now, not queued: not one frame of the old candidate's curves next to an error.
+    for (QCustomPlot* plot : {timePlot_, residualPlot_, pzPlot_})
+        plot->replot();
 }
 
 void IdentificationWindow::showCandidate(int index) {

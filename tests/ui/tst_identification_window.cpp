@@ -88,6 +88,7 @@ private slots:
     void badInputShowsTheCoresMessage();
     void cancelLeavesTheWindowUsable();
     void sampleTimeWithoutATimeColumn();
+    void validationFileIsJudged();
     void designMenuOpensOneWindow();
 
 private:
@@ -264,6 +265,10 @@ void TstIdentificationWindow::badInputShowsTheCoresMessage() {
              qPrintable(window_->statusText()));
     QVERIFY(!window_->selectedCandidate());
     QVERIFY(window_->measuredGraph()->data()->isEmpty());
+    if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
+        QTest::qWait(50);
+        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_error.png");
+    }
 
     // A file that does not exist.
     QVERIFY(!window_->loadFile(dir_->path() + "/missing.csv"));
@@ -324,6 +329,22 @@ void TstIdentificationWindow::sampleTimeWithoutATimeColumn() {
     QVERIFY(near(c->model.model.tsSeconds, kTs, 1e-12));
     for (std::size_t i = 0; i < kA.size(); ++i)
         QVERIFY(near(c->model.model.a[i], kA[i], 0.0, 1e-9));
+}
+
+void TstIdentificationWindow::validationFileIsJudged() {
+    const QString validation = writeRecord(dir_->path(), "validation.csv", 300, 99);
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    QVERIFY(window_->loadValidationFile(validation));
+    QVERIFY(fitAndWait());
+    const auto* c = window_->selectedCandidate();
+    QVERIFY2(c && c->validation, qPrintable(window_->statusText()));
+    IdentificationSpec spec;
+    const IoData v = coreRecord(validation);
+    const IdentifiedModel expected = identifyModel(coreRecord(path_), &v, spec);
+    QVERIFY(expected.fit.validationSimulation);
+    QCOMPARE(window_->candidateTable()->item(0, 3)->text(),
+             QString::number(expected.fit.validationSimulation->fitPercent, 'f', 2));
 }
 
 void TstIdentificationWindow::designMenuOpensOneWindow() {
