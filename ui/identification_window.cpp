@@ -482,7 +482,8 @@ void IdentificationWindow::fit() {
             const double y0 = d->y.front();
             for (double& y : d->y)
                 y -= y0;
-            candidate.notes << tr("%1: the initial position %2 mm was subtracted (the plant starts at rest at 0)")
+            candidate.notes << tr("%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); "
+                                  "the fit estimates where the table stood")
                                    .arg(QString::fromStdString(d->source))
                                    .arg(y0, 0, 'g', 10);
         }
@@ -559,6 +560,8 @@ void IdentificationWindow::onFinished(int jobId, std::shared_ptr<IdentifiedModel
         text += tr(" (%1)").arg(QString::fromStdString(m.message));
     for (const QString& n : candidate.notes)
         text += "\n" + n;
+    if (m.plant)
+        text += "\n" + tr("Estimated initial position: %1 mm").arg(m.initialPositionMm, 0, 'g', 6);
     for (const std::string& w : m.warnings)
         text += "\n" + QString::fromStdString(w);
     if (!m.hasEstimate()) {

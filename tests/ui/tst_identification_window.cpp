@@ -89,6 +89,7 @@ private slots:
     void cancelLeavesTheWindowUsable();
     void sampleTimeWithoutATimeColumn();
     void validationFileIsJudged();
+    void continuousFitFromTheExampleLog();
     void designMenuOpensOneWindow();
 
 private:
@@ -345,6 +346,32 @@ void TstIdentificationWindow::validationFileIsJudged() {
     QVERIFY(expected.fit.validationSimulation);
     QCOMPARE(window_->candidateTable()->item(0, 3)->text(),
              QString::number(expected.fit.validationSimulation->fitPercent, 'f', 2));
+}
+
+void TstIdentificationWindow::continuousFitFromTheExampleLog() {
+    // The repository's synthetic lower-base log (.lvm, Ts stated by the file): the GT3 fit is
+    // identifyModel's on the record with its first sample taken off, as xytune-cli identify does.
+    const QString path = QStringLiteral(XYT_EXAMPLES_SOURCE_DIR "/synthetic_lower_base_square_10ms.lvm");
+    QVERIFY2(window_->loadFile(path), qPrintable(window_->statusText()));
+    QCOMPARE(window_->timeBox()->currentIndex(), 0); // the file's sample time
+    QVERIFY(window_->sampleTimeBox()->value() > 0.0);
+    window_->inputBox()->setCurrentText("u");
+    window_->outputBox()->setCurrentText("y");
+    window_->structureBox()->setCurrentText("GT3 continuous");
+    for (const char* name : {"na", "nb", "nc", "nd", "nf", "nk"})
+        QVERIFY(!window_->orderBox(name)->isEnabled());
+    QVERIFY(fitAndWait());
+    const auto* c = window_->selectedCandidate();
+    QVERIFY2(c && c->model.plant, qPrintable(window_->statusText()));
+    QVERIFY(c->notes.join(' ').contains("subtracted"));
+    QVERIFY(near(c->estimation.y.front(), 0.0, 0.0, 1e-15));
+    IdentificationSpec spec;
+    spec.structure = ModelStructure::ContinuousThirdOrder;
+    const IdentifiedModel expected = identifyModel(c->estimation, nullptr, spec);
+    QVERIFY(expected.plant);
+    QVERIFY(near(c->model.plant->k0, expected.plant->k0, 1e-12));
+    QVERIFY(near(c->model.plant->a1, expected.plant->a1, 1e-12));
+    QVERIFY(near(c->model.plant->a2, expected.plant->a2, 1e-12));
 }
 
 void TstIdentificationWindow::designMenuOpensOneWindow() {
