@@ -53,7 +53,7 @@ QStringList columnNames(const ExperimentTable& table) {
 int guessTimeColumn(const QStringList& names) {
     for (int i = 0; i < names.size(); ++i) {
         const QString n = names[i].toLower();
-        if (n == "t" || n.startsWith("time") || n == "t_s" || n == "t [s]")
+        if (n == "t" || n.startsWith("time") || n == "t_s" || n == "t [s]" || n == "x_value") // x_value: LVM
             return i;
     }
     return -1;
@@ -363,7 +363,8 @@ bool IdentificationWindow::loadFile(const QString& path) {
         output_->addItems(names);
         time_->addItem(kSampleTimeItem);
         time_->addItems(names);
-        const int timeColumn = table.sampleTimeSeconds ? -1 : guessTimeColumn(names);
+        const int timeLike = guessTimeColumn(names);
+        const int timeColumn = table.sampleTimeSeconds ? -1 : timeLike;
         time_->setCurrentIndex(timeColumn + 1);
         ts_->setEnabled(timeColumn < 0);
         if (table.sampleTimeSeconds)
@@ -371,7 +372,7 @@ bool IdentificationWindow::loadFile(const QString& path) {
         // The first two columns that are not the time column: command, then position.
         QList<int> others;
         for (int i = 0; i < names.size(); ++i)
-            if (i != timeColumn)
+            if (i != timeLike)
                 others << i;
         input_->setCurrentIndex(others.value(0, 0));
         output_->setCurrentIndex(others.value(1, others.value(0, 0)));

@@ -119,8 +119,8 @@ void TstIdentificationWindow::cleanup() {
 }
 
 void TstIdentificationWindow::pickColumns() {
-    window_->inputBox()->setCurrentText("u");
-    window_->outputBox()->setCurrentText("y");
+    QCOMPARE(window_->inputBox()->currentText(), QString("u")); // not LVM's X_Value
+    QCOMPARE(window_->outputBox()->currentText(), QString("y"));
     window_->timeBox()->setCurrentText("t");
 }
 
