@@ -23,6 +23,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -171,6 +172,14 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
 
     status_ = new QLabel;
     status_->setWordWrap(true);
+    status_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    // At most five lines high, scrolling beyond: a long message never squeezes the candidates.
+    auto* statusArea = new QScrollArea;
+    statusArea->setWidget(status_);
+    statusArea->setWidgetResizable(true);
+    statusArea->setFrameShape(QFrame::NoFrame);
+    statusArea->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    statusArea->setMaximumHeight(5 * status_->fontMetrics().lineSpacing() + 6);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     setStatus(tr("Load a record of the axis (input in V, output position) to begin."));
 
@@ -198,7 +207,7 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     leftLayout->setContentsMargins(0, 0, 0, 0);
     leftLayout->addWidget(dataBox);
     leftLayout->addWidget(modelBox);
-    leftLayout->addWidget(status_);
+    leftLayout->addWidget(statusArea);
     leftLayout->addWidget(table_, 1);
     leftLayout->addLayout(useRow);
 
@@ -582,7 +591,8 @@ void IdentificationWindow::addRow(const Candidate& c) {
     const int row = table_->rowCount();
     table_->insertRow(row);
     const auto set = [&](int column, const QString& text) { table_->setItem(row, column, new QTableWidgetItem(text)); };
-    set(0, QString::fromStdString(m.structure));
+    // The continuous fit's long formula is the tooltip; "GT3" keeps the seven columns in view.
+    set(0, m.spec.structure == ModelStructure::ContinuousThirdOrder ? tr("GT3") : QString::fromStdString(m.structure));
     set(1, QString::fromStdString(estimationStatusName(m.status)));
     set(2, percent(m.fit.estimationSimulation.fitPercent));
     set(3, m.fit.validationSimulation ? percent(m.fit.validationSimulation->fitPercent) : QStringLiteral("–"));

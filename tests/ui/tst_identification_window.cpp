@@ -372,6 +372,10 @@ void TstIdentificationWindow::continuousFitFromTheExampleLog() {
     QVERIFY(near(c->model.plant->k0, expected.plant->k0, 1e-12));
     QVERIFY(near(c->model.plant->a1, expected.plant->a1, 1e-12));
     QVERIFY(near(c->model.plant->a2, expected.plant->a2, 1e-12));
+    if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
+        QTest::qWait(50);
+        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_gt3.png");
+    }
 }
 
 void TstIdentificationWindow::designMenuOpensOneWindow() {
