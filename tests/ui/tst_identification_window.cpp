@@ -91,6 +91,7 @@ private slots:
     void validationFileIsJudged();
     void continuousFitFromTheExampleLog();
     void designMenuOpensOneWindow();
+    void destroyedWhileFitting();
 
 private:
     void pickColumns();
@@ -388,6 +389,21 @@ void TstIdentificationWindow::designMenuOpensOneWindow() {
     const auto windows = main.findChildren<IdentificationWindow*>();
     QCOMPARE(windows.size(), 1);
     QVERIFY(windows.front()->isVisible());
+}
+
+void TstIdentificationWindow::destroyedWhileFitting() {
+    // Closing the workbench during a long fit: the window stops and joins its worker, and the
+    // worker's queued progress reports die with it (ASan/UBSan builds would see a stray one).
+    QVERIFY(window_->loadFile(writeRecord(dir_->path(), "long.csv", 20000, 13)));
+    pickColumns();
+    window_->structureBox()->setCurrentText("BJ");
+    window_->maxIterationsBox()->setValue(100000);
+    QTest::mouseClick(window_->fitButton(), Qt::LeftButton);
+    QVERIFY(window_->isRunning());
+    QTest::qWait(20);
+    window_.reset();
+    QTest::qWait(20); // queued reports, if any, are discarded with their receiver
+    QCOMPARE(session_->undoStack()->count(), 0);
 }
 
 QTEST_MAIN(TstIdentificationWindow)
