@@ -43,6 +43,19 @@ bool IdentifiedModel::hasEstimate() const {
 
 namespace {
 
+/// The fields every polynomial estimator's result shares (ArxResult, PemResult).
+template <class Result> void takeEstimate(IdentifiedModel& out, const Result& r) {
+    out.status = r.status;
+    out.message = r.message;
+    out.model = r.model;
+    out.parameterNames = r.parameterNames;
+    out.parameters = r.parameters;
+    out.standardDeviations = r.standardDeviations;
+    out.covariance = r.covariance;
+    out.warnings = r.warnings;
+    out.residuals = r.residuals;
+}
+
 /// The continuous fit as an output-error polynomial model (prediction = simulation).
 PolynomialModel outputErrorForm(const ThirdOrderPlant& plant, double ts) {
     const PolynomialModel discrete = discretizedThirdOrderPlant(plant, ts);
@@ -78,16 +91,8 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
     switch (spec.structure) {
     case ModelStructure::Arx: {
         const ArxResult r = estimateArx(estimation, spec.arx);
-        out.status = r.status;
-        out.message = r.message;
-        out.model = r.model;
-        out.parameterNames = r.parameterNames;
-        out.parameters = r.parameters;
-        out.standardDeviations = r.standardDeviations;
-        out.covariance = r.covariance;
-        out.warnings = r.warnings;
+        takeEstimate(out, r);
         out.firstSample = r.firstRow;
-        out.residuals = r.residuals;
         loss = r.loss;
         samples = r.rows;
         break;
@@ -98,15 +103,7 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
         o.search = spec.search;
         const PemResult r = spec.structure == ModelStructure::Oe ? estimateOe(estimation, spec.oe, o)
                                                                  : estimateBj(estimation, spec.bj, o);
-        out.status = r.status;
-        out.message = r.message;
-        out.model = r.model;
-        out.parameterNames = r.parameterNames;
-        out.parameters = r.parameters;
-        out.standardDeviations = r.standardDeviations;
-        out.covariance = r.covariance;
-        out.warnings = r.warnings;
-        out.residuals = r.residuals;
+        takeEstimate(out, r);
         loss = r.loss;
         samples = r.samples;
         break;
