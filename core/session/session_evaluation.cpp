@@ -92,10 +92,105 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     }
 }
 
+DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design) {
+    try {
+        return digitalPi(design.kp, design.ki, session.controllerTsSeconds, session.piDiscretization,
+                         session.implementation.antiWindup, session.implementation.trackingTimeSeconds);
+    } catch (const InvalidInput& e) {
+        if (e.field() == "ts")
+            throw InvalidInput("controller_ts", e.reason());
+        if (e.field() == "tracking_time")
+            throw InvalidInput("implementation.tracking_time", e.reason());
+        throw;
+    }
+}
+
+SampledDataOptions sessionSampledDataOptions(const Session& session) {
+    SampledDataOptions o;
+    o.delaySamples = session.implementation.delaySamples;
+    o.encoderResolution = session.implementation.encoderResolutionMm;
+    o.dacBits = session.implementation.dacBits;
+    o.umaxVolts = session.umaxVolts;
+    o.antiWindup = session.implementation.antiWindup;
+    try {
+        validateSampledDataOptions(o);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(e.field() == "umax" ? "umax" : "implementation." + e.field(), e.reason());
+    }
+    return o;
+}
+
 namespace {
 
+double minContinuousDamping(const std::vector<std::complex<double>>& poles) {
+    double out = 1.0;
+    for (const auto& p : poles)
+        if (std::abs(p) > 0.0)
+            out = std::min(out, -p.real() / std::abs(p));
+    return out;
+}
+
+double minDigitalDamping(const std::vector<std::complex<double>>& poles) {
+    double out = 1.0;
+    for (const auto& z : poles)
+        if (std::abs(z) >= 1e-9)
+            out = std::min(out, zDampingRatio(z));
+    return out;
+}
+
+/// The figures, move-and-settle, damping and limit-cycle warnings of a digital run.
+void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation& out) {
+    d.metrics = trackingMetrics(d.run.result);
+    d.minDamping = minDigitalDamping(d.poles);
+    if (const auto w = digitalDampingWarning(d.poles, d.designMinDamping, d.tsSeconds))
+        out.warnings.push_back(*w);
+    const TrajectorySettings& t = session.trajectory;
+    if (t.kind != TrajectoryKind::Cubic)
+        return;
+    try {
+        d.moveSettle = moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds},
+                                         session.spec.inPositionWindowMm);
+    } catch (const InvalidInput&) {
+        d.moveSettle.reset(); // the continuous run names the field
+    }
+    const ImplementationSettings& impl = session.implementation;
+    if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
+        const auto& times = d.run.result.t;
+        const auto rest = std::lower_bound(times.begin(), times.end(), t.tfSeconds);
+        d.limitCycle = restLimitCycle(d.run.measured, static_cast<std::size_t>(rest - times.begin()));
+        if (d.limitCycle)
+            out.warnings.push_back(
+                "a limit cycle at rest: after the move the measured position keeps oscillating (" +
+                formatNumber(d.limitCycle->peakToPeak, 4) + " mm peak to peak, " +
+                std::to_string(d.limitCycle->turns) +
+                " turns in the last half of the rest), caused by the encoder/DAC quantization");
+    }
+}
+
+/// The digital implementation of a Guillemin-Truxal axis (its failures become a warning: the
+/// export names the field when asked for the code).
+void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
+                       AxisEvaluation& out) {
+    try {
+        DigitalEvaluation d;
+        const DigitalPi pi = sessionDigitalPi(session, *out.gt);
+        d.tsSeconds = pi.tsSeconds;
+        const SampledDataOptions options = sessionSampledDataOptions(session);
+        const auto times = axisSampleTimes(session.trajectory, duration, pi.tsSeconds, "controller_ts");
+        const TransferFunction plant = axis.gt.plant.transferFunction();
+        d.run = simulateSampledPi(plant, pi, sampled(sessionReference(session.trajectory, axisIndex), times),
+                                  options, axis.gt.modelUnitsPerPositionUnit);
+        d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
+        d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
+        finishDigital(session, d, out);
+        out.digital = std::move(d);
+    } catch (const InvalidInput& e) {
+        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+    }
+}
+
 void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                AxisEvaluation& out) {
+                bool withDigital, AxisEvaluation& out) {
     const GtAxisSettings& gt = axis.gt;
     out.gt = sessionGtDesign(gt, axisIndex);
     LoopSimulationOptions options;
@@ -109,6 +204,8 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
         out.warnings.push_back("the closed loop is unstable");
+    if (withDigital)
+        evaluateGtDigital(session, axis, axisIndex, duration, out);
 }
 
 } // namespace
@@ -140,7 +237,7 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
 }
 
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                AxisEvaluation& out) {
+                bool withDigital, AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
     requireFinite(pp.t1, "t1");
     if (std::abs(pp.t1) >= 1.0)
@@ -181,6 +278,21 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     if (out.metrics.saturated)
         out.warnings.push_back("|u| exceeds the actuator limit (the discrete loop is simulated "
                                "without saturation)");
+    if (!withDigital)
+        return;
+    try {
+        DigitalEvaluation d;
+        d.tsSeconds = pp.tsSeconds;
+        const SampledDataOptions options = sessionSampledDataOptions(session);
+        const ZpetcDesign* zpetc = pp.zpetcEnabled ? &*out.zpetc : nullptr;
+        d.run = simulateSampledRst(*out.pp, zpetc, r, n, options);
+        d.poles = sampledRstLoopPoles(*out.pp, options.delaySamples);
+        d.designMinDamping = minDigitalDamping(sampledRstLoopPoles(*out.pp, 0));
+        finishDigital(session, d, out);
+        out.digital = std::move(d);
+    } catch (const InvalidInput& e) {
+        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+    }
 }
 
 } // namespace
@@ -196,7 +308,8 @@ TransferFunction AxisEvaluation::closedLoop() const {
 namespace {
 
 /// evaluateAxis over a given duration.
-AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration) {
+AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration,
+                                bool withDigital = true) {
     AxisEvaluation out;
     out.duration = duration;
     const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
@@ -204,9 +317,9 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
     try {
         requirePositive(session.umaxVolts, "umax");
         if (axis.method == DesignMethod::GuilleminTruxal)
-            evaluateGt(session, axis, axisIndex, duration.seconds, out);
+            evaluateGt(session, axis, axisIndex, duration.seconds, withDigital, out);
         else
-            evaluatePp(session, axis, axisIndex, duration.seconds, out);
+            evaluatePp(session, axis, axisIndex, duration.seconds, withDigital, out);
         if (out.metrics.diverged)
             out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
                                    "it has no tracking figures");
@@ -280,7 +393,7 @@ RunDuration chooseRunDuration(const Session& session) {
     double need = 0.0;
     bool any = false;
     for (int i = 0; i < 2; ++i) {
-        const AxisEvaluation a = evaluateAxisOver(session, i, moveOnly);
+        const AxisEvaluation a = evaluateAxisOver(session, i, moveOnly, false);
         if (!a.ok || !a.step.stable || a.metrics.diverged || a.run.e.empty())
             continue; // it will not settle whatever the duration; its evaluation says why
         any = true;
