@@ -33,7 +33,12 @@ constexpr CommandHelp kGtHelp[] = {
      "            JSON: tracking {rmse, max_abs_error, ...}, step_response (unit step of the\n"
      "            closed loop), move_and_settle (cubic: settle_time after tf, final_error,\n"
      "            final_overshoot_mm; null for sine), duration_choice. Without --duration a\n"
-     "            cubic runs past tf until it settles into the window (at most tf + 3 moves).\n"},
+     "            cubic runs past tf until it settles into the window (at most tf + 3 moves).\n"
+     "            --digital [--controller-ts 0.01 --discretization tustin|backward-euler\n"
+     "            --delay-samples N --encoder-resolution MM --dac-bits B\n"
+     "            --anti-windup none|clamp|back-calculation --tracking-time S]: also the loop the\n"
+     "            firmware runs (sampled-data PI, ZOH, quantization, anti-windup): JSON digital\n"
+     "            {tracking, move_and_settle, poles (z-plane), min_damping, limit_cycle, warnings}.\n"},
     {"report", "  report [SESSION.json]  text report of a session, or of the default design\n"
                "            (both bases of paper 000) when no file is given\n"},
     {"new", "  new -o FILE             write the default session (paper 000: x = lower base,\n"

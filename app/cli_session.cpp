@@ -163,15 +163,7 @@ int runExport(const QStringList& argv) {
     const QString path = outputPath(args);
     const Session session = loadSessionOrThrow(args.positional().first());
     ExportOptions options;
-    options.piMethod = session.piDiscretization; // the session's choice unless overridden
-    if (const auto method = args.value("discretization")) {
-        if (*method == "tustin")
-            options.piMethod = PiDiscretization::Tustin;
-        else if (*method == "backward-euler")
-            options.piMethod = PiDiscretization::BackwardEuler;
-        else
-            throw InvalidInput("--discretization", "must be tustin or backward-euler");
-    }
+    options.piMethod = parseDiscretization(args, session.piDiscretization); // the session's unless given
     const SessionEvaluation evaluation = evaluateSession(session);
     refuseRefusedRun(evaluation);
     if (format == "csv") // streamed: a long simulation is never held as text

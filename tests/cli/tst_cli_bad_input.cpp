@@ -190,6 +190,26 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("simulate dt needing gigabytes")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-9"}
         << "--dt"; // not --duration: the user did not type it
+    QTest::newRow("simulate digital dac bits 33")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--dac-bits", "33"} + kCubic << "--dac-bits";
+    QTest::newRow("simulate digital negative delay")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--delay-samples", "-1"} + kCubic
+        << "--delay-samples";
+    QTest::newRow("simulate digital negative encoder")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--encoder-resolution", "-1"} + kCubic
+        << "--encoder-resolution";
+    QTest::newRow("simulate digital unknown anti-windup")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--anti-windup", "reset"} + kCubic
+        << "--anti-windup";
+    QTest::newRow("simulate digital zero controller ts")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "0"} + kCubic
+        << "--controller-ts";
+    QTest::newRow("simulate digital controller ts needing gigabytes")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "1e-9"} + kCubic
+        << "--controller-ts";
+    QTest::newRow("simulate digital negative tracking time")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--tracking-time", "-1"} + kCubic
+        << "--tracking-time";
     QTest::newRow("simulate umax zero")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--umax", "0"}
         << "--umax";
