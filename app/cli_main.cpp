@@ -44,8 +44,10 @@ constexpr CommandHelp kGtHelp[] = {
     {"new", "  new -o FILE             write the default session (paper 000: x = lower base,\n"
             "            y = upper base, controller sample time 0.01 s); prints the path\n"},
     {"export", "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
-               "            tustin|backward-euler]  controller coefficients (JSON, C header,\n"
-               "            Octave/MATLAB script) or simulated signals (CSV); prints the path\n"},
+               "            tustin|backward-euler] [--precision double|float]  controller\n"
+               "            coefficients (JSON, C header with the complete controller per axis in\n"
+               "            double or float, Octave/MATLAB script) or simulated signals (CSV); prints\n"
+               "            the path\n"},
     {"rlocus", "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
                "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
                "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"

@@ -154,7 +154,7 @@ int runSessionReport(const QString& path) {
 
 int runExport(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
-    args.allowOnly({"format", "o", "discretization"});
+    args.allowOnly({"format", "o", "discretization", "precision"});
     if (args.positional().size() != 1)
         throw InvalidInput("SESSION", "export takes exactly one session file");
     const QString format = args.text("format", "");
@@ -164,6 +164,13 @@ int runExport(const QStringList& argv) {
     const Session session = loadSessionOrThrow(args.positional().first());
     ExportOptions options;
     options.piMethod = parseDiscretization(args, session.piDiscretization); // the session's unless given
+    const QString precision = args.text("precision", "double");
+    if (precision == "float")
+        options.precision = CPrecision::Float;
+    else if (precision != "double")
+        throw InvalidInput("--precision", "must be double or float");
+    if (args.has("precision") && format != "c")
+        throw InvalidInput("--precision", "applies to --format c only");
     const SessionEvaluation evaluation = evaluateSession(session);
     refuseRefusedRun(evaluation);
     if (format == "csv") // streamed: a long simulation is never held as text

@@ -255,6 +255,12 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json",
                        "--discretization", "zoh"}
         << "--discretization";
+    QTest::newRow("export unknown precision")
+        << QStringList{"export", "{default}", "--format", "c", "-o", "{dir}/o.h", "--precision", "half"}
+        << "--precision";
+    QTest::newRow("export precision for json")
+        << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json", "--precision", "float"}
+        << "--precision";
 
     // rlocus
     QTest::newRow("rlocus empty num") << QStringList{"rlocus", "--num", "", "--den", "1 2 0"}
