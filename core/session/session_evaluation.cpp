@@ -105,6 +105,13 @@ DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design) {
     }
 }
 
+std::vector<PoleZeroSet> digitalPoleZeroSets(const AxisEvaluation& axis) {
+    if (!axis.digital)
+        return {};
+    const DigitalEvaluation& d = *axis.digital;
+    return {{"digital loop", d.tsSeconds, d.poles, {}}, {"design at Ts", d.tsSeconds, d.designPoles, {}}};
+}
+
 SampledDataOptions sessionSampledDataOptions(const Session& session) {
     SampledDataOptions o;
     o.delaySamples = session.implementation.delaySamples;
@@ -182,6 +189,9 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
                                   options, axis.gt.modelUnitsPerPositionUnit);
         d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
         d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
+        for (const auto& p : out.gt->closedLoopPoles)
+            d.designPoles.push_back(std::exp(p * pi.tsSeconds));
+        sortRoots(d.designPoles);
         finishDigital(session, d, out);
         out.digital = std::move(d);
     } catch (const InvalidInput& e) {
@@ -287,7 +297,8 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         const ZpetcDesign* zpetc = pp.zpetcEnabled ? &*out.zpetc : nullptr;
         d.run = simulateSampledRst(*out.pp, zpetc, r, n, options);
         d.poles = sampledRstLoopPoles(*out.pp, options.delaySamples);
-        d.designMinDamping = minDigitalDamping(sampledRstLoopPoles(*out.pp, 0));
+        d.designPoles = sampledRstLoopPoles(*out.pp, 0);
+        d.designMinDamping = minDigitalDamping(d.designPoles);
         finishDigital(session, d, out);
         out.digital = std::move(d);
     } catch (const InvalidInput& e) {

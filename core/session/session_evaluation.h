@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/analysis/pole_zero_map.h"
 #include "core/analysis/stability_margins.h"
 #include "core/simulation/contour_error.h"
 #include "core/simulation/discrete_simulation.h"
@@ -52,6 +53,9 @@ struct DigitalEvaluation {
     std::optional<MoveSettleMetrics> moveSettle;
     /// Closed-loop poles of the linear digital loop (z-plane, delay included).
     std::vector<std::complex<double>> poles;
+    /// The design's closed-loop poles in the same z-plane: the continuous ones mapped by
+    /// z = e^(s Ts) (GT), or the RST loop's without the delay (pole placement).
+    std::vector<std::complex<double>> designPoles;
     /// Minimum damping ratio of those poles and of the design they are compared with (the
     /// continuous loop for GT, the loop without delay for pole placement).
     double minDamping = 0.0;
@@ -147,6 +151,11 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex);
 /// |u| > umax (the discrete loops are simulated without saturation: flagged, not applied).
 SimulationResult discreteRun(const std::vector<double>& t, const std::vector<double>& r,
                              const DiscreteRun& run, double umaxVolts, double ts);
+
+/// The z-plane sets of the digital implementation for the pole-zero map: "digital loop" (poles
+/// of the digital closed loop) and "design at Ts" (DigitalEvaluation::designPoles); empty when
+/// the axis has no digital evaluation.
+std::vector<PoleZeroSet> digitalPoleZeroSets(const AxisEvaluation& axis);
 
 /// The digital PI of a Guillemin-Truxal design as the session runs and exports it.
 /// @throws InvalidInput "controller_ts", "implementation.tracking_time".
