@@ -3,6 +3,7 @@
 //   name: median_us=... min_us=... max_us=... runs=...
 // Optional argument: a substring; only figures whose name contains it are run. The core figures
 // come first; gui_slider_to_repaint (last) times the widgets on the offscreen platform.
+#include "app/allocator_tuning.h"
 #include "core/study/design_sweep.h"
 #include "core/session/design_study.h"
 #include "core/session/robustness_problem.h"
@@ -222,6 +223,7 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    xyt::app::keepFreedMemory(); // see allocator_tuning.h: the slider re-simulates megabytes
     const char* filter = argc > 1 ? argv[1] : nullptr;
     const xyt::GtPreset lower = *xyt::findGtPreset("lower-base");
 

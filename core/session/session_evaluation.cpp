@@ -154,12 +154,6 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
     const TrajectorySettings& t = session.trajectory;
     if (t.kind != TrajectoryKind::Cubic)
         return;
-    try {
-        d.moveSettle = moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds},
-                                         session.spec.inPositionWindowMm);
-    } catch (const InvalidInput&) {
-        d.moveSettle.reset(); // the continuous run names the field
-    }
     const ImplementationSettings& impl = session.implementation;
     if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
         const auto& times = d.run.result.t;
@@ -183,10 +177,16 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
         const DigitalPi pi = sessionDigitalPi(session, *out.gt);
         d.tsSeconds = pi.tsSeconds;
         const SampledDataOptions options = sessionSampledDataOptions(session);
-        const auto times = axisSampleTimes(session.trajectory, duration, pi.tsSeconds, "controller_ts");
         const TransferFunction plant = axis.gt.plant.transferFunction();
-        d.run = simulateSampledPi(plant, pi, sampled(sessionReference(session.trajectory, axisIndex), times),
-                                  options, axis.gt.modelUnitsPerPositionUnit);
+        // At the simulation step (the default: both 10 ms) the continuous run already holds the
+        // reference at the controller's sample times.
+        const bool sameTimes = pi.tsSeconds == session.trajectory.dtSeconds;
+        d.run = simulateSampledPi(
+            plant, pi,
+            sameTimes ? out.run.r
+                      : sampled(sessionReference(session.trajectory, axisIndex),
+                                axisSampleTimes(session.trajectory, duration, pi.tsSeconds, "controller_ts")),
+            options, axis.gt.modelUnitsPerPositionUnit);
         d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
         d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
         for (const auto& p : out.gt->closedLoopPoles)

@@ -44,13 +44,13 @@ struct RunDuration {
 /**
  * The axis as the firmware runs it (issue 12): the sampled-data loop with the session's
  * implementation settings (simulateSampledPi at controller_ts for a Guillemin-Truxal axis,
- * simulateSampledRst at the axis' Ts for pole placement), its figures and its z-plane poles.
+ * simulateSampledRst at the axis' Ts for pole placement), its tracking figures and its z-plane
+ * poles (its move-and-settle figures: moveSettleMetrics of run.result, as the CLI prints them).
  */
 struct DigitalEvaluation {
     double tsSeconds = 0.0;
     SampledDataRun run;
     TrackingMetrics metrics;
-    std::optional<MoveSettleMetrics> moveSettle;
     /// Closed-loop poles of the linear digital loop (z-plane, delay included).
     std::vector<std::complex<double>> poles;
     /// The design's closed-loop poles in the same z-plane: the continuous ones mapped by

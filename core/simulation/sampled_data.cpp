@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 
 namespace xyt {
 
@@ -82,21 +81,23 @@ void resizeRun(SampledDataRun& run, std::size_t n, double ts, double umax) {
     s.umaxVolts = umax;
 }
 
-/// The delay line between the controller and the DAC output the plant sees.
+/// The delay line between the controller and the DAC output the plant sees: a ring of the
+/// last `delay` commands, oldest out first.
 class DelayLine {
 public:
     DelayLine(int delay, double rest) : buffer_(static_cast<std::size_t>(delay), rest) {}
     double push(double u) {
         if (buffer_.empty())
             return u;
-        buffer_.push_back(u);
-        const double out = buffer_.front();
-        buffer_.pop_front();
+        const double out = buffer_[head_];
+        buffer_[head_] = u;
+        head_ = head_ + 1 == buffer_.size() ? 0 : head_ + 1;
         return out;
     }
 
 private:
-    std::deque<double> buffer_;
+    std::vector<double> buffer_;
+    std::size_t head_ = 0;
 };
 
 } // namespace

@@ -58,6 +58,17 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     reference_ = makeGraph(positionRect_, colors::reference, tr("reference r"), 1.2);
     reference_->setPen(QPen(colors::reference, 1.2, Qt::DashLine));
     snapshotOutput_ = makeGraph(positionRect_, colors::snapshot, tr("snapshot"), 1.2);
+    // The digital implementation under the design: a wide translucent band, created before the
+    // design's lines so that they are drawn over it. Where the two coincide the band is a halo
+    // around the design's line; where they differ it separates (a dashed line over the design
+    // hid the design where the two coincide).
+    QColor band = colors::digital;
+    band.setAlpha(110);
+    digitalOutput_ = makeGraph(positionRect_, band, tr("digital y"), 3.5);
+    digitalError_ = makeGraph(errorRect_, band, tr("digital e"), 3.5);
+    digitalControl_ = makeGraph(controlRect_, band, tr("digital u (held)"), 2.5);
+    for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
+        g->setVisible(false);
     output_ = makeGraph(positionRect_, colors::output, tr("output y"));
     error_ = makeGraph(errorRect_, colors::error, tr("error e"));
     clipUpper_ = makeGraph(controlRect_, Qt::transparent, tr("clipped"));
@@ -72,15 +83,6 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
         g->setPen(QPen(colors::snapshot, 1.4, Qt::DashLine));
     error_->setLayer(QStringLiteral("main")); // drawn over the snapshot's error
     control_ = makeGraph(controlRect_, colors::control, tr("control u"));
-    // The digital implementation over the design: dashed, so the design stays readable where
-    // the two coincide (they do to a fraction of a line width at the default 10 ms).
-    digitalOutput_ = makeGraph(positionRect_, colors::digital, tr("digital y"), 1.4);
-    digitalError_ = makeGraph(errorRect_, colors::digital, tr("digital e"), 1.4);
-    digitalControl_ = makeGraph(controlRect_, colors::digital, tr("digital u (held)"), 1.2);
-    for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_}) {
-        g->setPen(QPen(colors::digital, g == digitalControl_ ? 1.2 : 1.4, Qt::DashLine));
-        g->setVisible(false);
-    }
     digitalControl_->setLineStyle(QCPGraph::lsStepLeft); // zero-order hold
     upperLimit_ = new QCPItemStraightLine(this);
     lowerLimit_ = new QCPItemStraightLine(this);
