@@ -3,6 +3,7 @@
 //   name: median_us=... min_us=... max_us=... runs=...
 // Optional argument: a substring; only figures whose name contains it are run. The core figures
 // come first; gui_slider_to_repaint (last) times the widgets on the offscreen platform.
+#include "app/allocator_tuning.h"
 #include "core/study/design_sweep.h"
 #include "core/session/design_study.h"
 #include "core/session/robustness_problem.h"
@@ -27,10 +28,12 @@
 #include "core/identification/prediction_error.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
+#include "core/simulation/sampled_data.h"
 #include "app/bench_reference_loop.h"
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/plots/bode_plot.h"
+#include "ui/plots/pole_zero_plot.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/session/tuning_session.h"
 
@@ -157,21 +160,37 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
     const int span = slider->maximum() - slider->minimum();
     const int positions[2] = {slider->minimum() + span / 4, slider->minimum() + 3 * span / 4};
     int next = 0;
-    benchmark(filter, "gui_slider_to_repaint", [&] {
+    // One timed step: the slider to its other position, then the queued replots and paints.
+    const auto sliderStep = [&] {
         slider->setValue(positions[next]);
         next = 1 - next;
         QApplication::processEvents();
         QApplication::processEvents();
-    });
+    };
+    benchmark(filter, "gui_slider_to_repaint", sliderStep);
+    // Issue 12: the digital implementation overlaid (its run, figures and z-plane poles are
+    // computed with every design) with a quantized, delayed implementation, and the pole-zero
+    // map of the digital loop above (target under 16 ms).
+    {
+        xyt::Session quantized = session.session();
+        quantized.implementation.encoderResolutionMm = 0.001;
+        quantized.implementation.dacBits = 16;
+        quantized.implementation.delaySamples = 1;
+        session.apply(quantized, "quantized implementation");
+        window.digitalOverlayAction()->setChecked(true);
+        window.zPlaneAction()->setChecked(true);
+        window.upperTabs()->setCurrentWidget(window.poleZeroPlot());
+        QApplication::processEvents();
+        benchmark(filter, "gui_slider_to_repaint_digital_overlay", sliderStep);
+        window.zPlaneAction()->setChecked(false);
+        session.undoStack()->undo(); // the other figures keep the default session
+        window.upperTabs()->setCurrentIndex(0);
+        QApplication::processEvents();
+    }
     // The same with the Bode tab above (issue 17: under 16 ms).
     window.upperTabs()->setCurrentWidget(window.bodePlot());
     QApplication::processEvents();
-    benchmark(filter, "gui_slider_to_repaint_bode", [&] {
-        slider->setValue(positions[next]);
-        next = 1 - next;
-        QApplication::processEvents();
-        QApplication::processEvents();
-    });
+    benchmark(filter, "gui_slider_to_repaint_bode", sliderStep);
     // Issue 18: the live design-space map visible below (root locus above) and recomputing:
     // before each timed slider step a plant change (untimed) starts a live preview on the
     // worker threads; the step is timed while it runs. Prints how many steps overlapped a study.
@@ -278,6 +297,7 @@ void identification(const char* filter) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    xyt::app::keepFreedMemory(); // see allocator_tuning.h: the slider re-simulates megabytes
     const char* filter = argc > 1 ? argv[1] : nullptr;
     const xyt::GtPreset lower = *xyt::findGtPreset("lower-base");
 
@@ -329,6 +349,27 @@ int main(int argc, char* argv[]) {
             const auto run = xyt::simulateLoop(plant, design.controller, reference, options);
             sink = sink + run.y.back();
         });
+        // Issue 12: the sampled-data loop of the digital PI on the same cubic at 10 ms (target
+        // under 1 ms), ideal and with a 1 um encoder, a 16-bit DAC and one sample of delay.
+        {
+            const auto pi = xyt::digitalPi(design.kp, design.ki, 0.01, xyt::PiDiscretization::Tustin,
+                                           xyt::AntiWindup::Clamp);
+            xyt::SampledDataOptions ideal;
+            ideal.umaxVolts = 2.5;
+            benchmark(filter, "digital_simulate_cubic_130s_ts0.01", [&] {
+                const auto run = xyt::simulateSampledPi(plant, pi, reference, ideal, lower.modelUnitsPerPositionUnit);
+                sink = sink + run.result.y.back();
+            });
+            xyt::SampledDataOptions quantized = ideal;
+            quantized.encoderResolution = 0.001;
+            quantized.dacBits = 16;
+            quantized.delaySamples = 1;
+            benchmark(filter, "digital_simulate_cubic_130s_ts0.01_quantized", [&] {
+                const auto run =
+                    xyt::simulateSampledPi(plant, pi, reference, quantized, lower.modelUnitsPerPositionUnit);
+                sink = sink + run.result.y.back();
+            });
+        }
         // Issue 18: the same run into a kept result (no allocation), against the plain scalar
         // reference loop of the same recurrence over preallocated arrays, timed here too.
         xyt::SimulationResult kept;

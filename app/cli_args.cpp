@@ -66,15 +66,15 @@ double CliArgs::number(const QString& name, std::optional<double> fallback) cons
     return parseNumber(v->toStdString(), field(name));
 }
 
-int CliArgs::count(const QString& name, int fallback, int maxValue) const {
+int CliArgs::integer(const QString& name, int fallback, int minValue, int maxValue) const {
     const auto v = value(name);
     if (!v)
         return fallback;
     bool ok = false;
     const int n = v->toInt(&ok);
-    if (!ok || n < 1 || n > maxValue)
-        throw InvalidInput(field(name),
-                           "must be a whole number from 1 to " + std::to_string(maxValue));
+    if (!ok || n < minValue || n > maxValue)
+        throw InvalidInput(field(name), "must be a whole number from " + std::to_string(minValue) +
+                                            " to " + std::to_string(maxValue));
     return n;
 }
 

@@ -244,4 +244,23 @@ Session loadSessionOrThrow(const QString& path) {
     return r.session;
 }
 
+PiDiscretization parseDiscretization(const CliArgs& args, PiDiscretization fallback) {
+    const auto method = args.value("discretization");
+    if (!method)
+        return fallback;
+    if (*method == "tustin")
+        return PiDiscretization::Tustin;
+    if (*method == "backward-euler")
+        return PiDiscretization::BackwardEuler;
+    throw InvalidInput("--discretization", "must be tustin or backward-euler");
+}
+
+AntiWindup parseAntiWindup(const CliArgs& args) {
+    const QString method = args.text("anti-windup", "clamp");
+    for (const AntiWindup a : {AntiWindup::None, AntiWindup::Clamp, AntiWindup::BackCalculation})
+        if (method == QString::fromStdString(antiWindupName(a)))
+            return a;
+    throw InvalidInput("--anti-windup", "must be none, clamp or back-calculation");
+}
+
 } // namespace xyt::cli

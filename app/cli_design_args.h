@@ -104,4 +104,9 @@ QString marginsText(const StabilityMargins& m);
 /// @throws InvalidInput naming the path with the loader's message (field path and reason).
 Session loadSessionOrThrow(const QString& path);
 
+/// --discretization tustin|backward-euler, or @p fallback when not given.
+PiDiscretization parseDiscretization(const CliArgs& args, PiDiscretization fallback);
+/// --anti-windup none|clamp|back-calculation (clamp when not given).
+AntiWindup parseAntiWindup(const CliArgs& args);
+
 } // namespace xyt::cli

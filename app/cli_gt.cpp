@@ -14,10 +14,14 @@
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
 #include "core/study/specification.h"
+#include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
 
+#include <QJsonArray>
 #include <QTextStream>
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -32,9 +36,95 @@ int runGt(const QStringList& argv) {
     return 0;
 }
 
+namespace {
+
+const QStringList kDigitalOptions{"digital",    "controller-ts", "discretization", "delay-samples",
+                                  "encoder-resolution", "dac-bits", "anti-windup", "tracking-time"};
+
+/// The run of the design as the firmware runs it (simulate --digital): the digital PI at
+/// --controller-ts with the implementation options, on the same trajectory and duration.
+QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesign& design,
+                        const SimulationSetup& setup, double window) {
+    const double ts = positiveNumber(args, "controller-ts", 0.01);
+    const AntiWindup antiWindup = parseAntiWindup(args);
+    const double trackingTime = args.number("tracking-time", 0.0);
+    if (trackingTime < 0.0)
+        throw InvalidInput("--tracking-time", "must be >= 0 (s; 0: Tt = Ti = kp/ki)");
+    SampledDataOptions options;
+    options.delaySamples = args.integer("delay-samples", 0, 0, kMaxDelaySamples);
+    options.encoderResolution = args.number("encoder-resolution", 0.0);
+    options.dacBits = args.integer("dac-bits", 0, 0, 32);
+    options.umaxVolts = setup.options.umaxVolts;
+    options.antiWindup = antiWindup;
+    try {
+        validateSampledDataOptions(options);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(e.field() == "umax" ? "--umax" : CliArgs::field(QString::fromStdString(e.field()).replace('_', '-')),
+                           e.reason());
+    }
+    const DigitalPi pi = digitalPi(design.kp, design.ki, ts, parseDiscretization(args, PiDiscretization::Tustin),
+                                   antiWindup, trackingTime);
+    std::vector<double> times;
+    try {
+        times = sampleTimes(setup.durationSeconds, ts);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("--controller-ts", e.reason());
+    }
+    const TransferFunction plant = in.plant.transferFunction();
+    const SampledDataRun run = simulateSampledPi(plant, pi, sampled(setup.trajectory.at, times), options,
+                                                 setup.options.modelUnitsPerPositionUnit);
+    const auto poles = sampledPiLoopPoles(sampledPlant(plant, ts), pi, options.delaySamples);
+    double designDamping = 1.0, damping = 1.0;
+    for (const auto& p : design.closedLoopPoles)
+        designDamping = std::min(designDamping, -p.real() / std::abs(p));
+    QJsonArray poleArray;
+    for (const auto& z : poles) {
+        poleArray.append(QJsonArray{z.real(), z.imag()});
+        if (std::abs(z) >= 1e-9)
+            damping = std::min(damping, zDampingRatio(z));
+    }
+    QJsonArray warnings;
+    if (const auto w = digitalDampingWarning(poles, designDamping, ts))
+        warnings.append(QString::fromStdString(*w));
+    QJsonValue limitCycle;
+    const std::optional<PointToPointMove>& move = setup.trajectory.move;
+    if (move && (options.encoderResolution > 0.0 || options.dacBits > 0)) {
+        const auto rest = std::lower_bound(times.begin(), times.end(), move->endSeconds);
+        if (const auto cycle = restLimitCycle(run.measured, static_cast<std::size_t>(rest - times.begin()))) {
+            limitCycle = QJsonObject{{"peak_to_peak", cycle->peakToPeak}, {"turns", cycle->turns}};
+            warnings.append(QStringLiteral("a limit cycle at rest: the measured position keeps oscillating "
+                                           "after the move (%1 mm peak to peak), caused by the quantization")
+                                .arg(cycle->peakToPeak, 0, 'g', 4));
+        }
+    }
+    return {{"controller_ts", ts},
+            {"discretization", QString::fromStdString(discretizationName(parseDiscretization(args, PiDiscretization::Tustin)))},
+            {"delay_samples", options.delaySamples},
+            {"encoder_resolution", options.encoderResolution},
+            {"dac_bits", options.dacBits},
+            {"anti_windup", QString::fromStdString(antiWindupName(antiWindup))},
+            {"tracking_time", trackingTime},
+            {"samples", static_cast<double>(times.size())},
+            {"tracking", trackingJson(trackingMetrics(run.result))},
+            {"move_and_settle", move ? QJsonValue(moveSettleJson(moveSettleMetrics(run.result, *move, window)))
+                                     : QJsonValue()},
+            {"poles", poleArray},
+            {"min_damping", number(damping)},
+            {"design_min_damping", number(designDamping)},
+            {"limit_cycle", limitCycle},
+            {"warnings", warnings}};
+}
+
+} // namespace
+
 int runSimulate(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv);
-    args.allowOnly(kDesignOptions + kTrajectoryOptions + QStringList{kUnitOption, "in-position-window"});
+    const CliArgs args = CliArgs::parse(argv, {"digital"});
+    args.allowOnly(kDesignOptions + kTrajectoryOptions + kDigitalOptions +
+                   QStringList{kUnitOption, "in-position-window"});
+    if (!args.flag("digital"))
+        for (const QString& name : kDigitalOptions)
+            if (name != "digital" && args.has(name))
+                throw InvalidInput(CliArgs::field(name), "needs --digital (the run of the digital controller)");
     const DesignInput in = parseDesign(args);
     SimulationSetup setup = parseSimulationSetup(args, parsePlant(args));
     const double window = positiveNumber(args, "in-position-window", Specification{}.inPositionWindowMm);
@@ -73,6 +163,8 @@ int runSimulate(const QStringList& argv) {
     out.insert("step_response", stepResponseJson(stepCharacteristics(design.closedLoop)));
     out.insert("move_and_settle", move ? QJsonValue(moveSettleJson(moveSettleMetrics(run, *move, window)))
                                        : QJsonValue());
+    if (args.flag("digital"))
+        out.insert("digital", digitalJson(args, in, design, setup, window));
     print(out);
     return 0;
 }

@@ -33,14 +33,21 @@ constexpr CommandHelp kGtHelp[] = {
      "            JSON: tracking {rmse, max_abs_error, ...}, step_response (unit step of the\n"
      "            closed loop), move_and_settle (cubic: settle_time after tf, final_error,\n"
      "            final_overshoot_mm; null for sine), duration_choice. Without --duration a\n"
-     "            cubic runs past tf until it settles into the window (at most tf + 3 moves).\n"},
+     "            cubic runs past tf until it settles into the window (at most tf + 3 moves).\n"
+     "            --digital [--controller-ts 0.01 --discretization tustin|backward-euler\n"
+     "            --delay-samples N --encoder-resolution MM --dac-bits B\n"
+     "            --anti-windup none|clamp|back-calculation --tracking-time S]: also the loop the\n"
+     "            firmware runs (sampled-data PI, ZOH, quantization, anti-windup): JSON digital\n"
+     "            {tracking, move_and_settle, poles (z-plane), min_damping, limit_cycle, warnings}.\n"},
     {"report", "  report [SESSION.json]  text report of a session, or of the default design\n"
                "            (both bases of paper 000) when no file is given\n"},
     {"new", "  new -o FILE             write the default session (paper 000: x = lower base,\n"
             "            y = upper base, controller sample time 0.01 s); prints the path\n"},
     {"export", "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
-               "            tustin|backward-euler]  controller coefficients (JSON, C header,\n"
-               "            Octave/MATLAB script) or simulated signals (CSV); prints the path\n"},
+               "            tustin|backward-euler] [--precision double|float]  controller\n"
+               "            coefficients (JSON, C header with the complete controller per axis in\n"
+               "            double or float, Octave/MATLAB script) or simulated signals (CSV); prints\n"
+               "            the path\n"},
     {"rlocus", "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
                "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
                "            [--wn W --kp K] (K multiplies G_c G: K = 1 is the design)\n"

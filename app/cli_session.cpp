@@ -163,7 +163,7 @@ int runSessionReport(const QString& path) {
 
 int runExport(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
-    args.allowOnly({"format", "o", "discretization"});
+    args.allowOnly({"format", "o", "discretization", "precision"});
     if (args.positional().size() != 1)
         throw InvalidInput("SESSION", "export takes exactly one session file");
     const QString format = args.text("format", "");
@@ -172,15 +172,14 @@ int runExport(const QStringList& argv) {
     const QString path = outputPath(args);
     const Session session = loadSessionOrThrow(args.positional().first());
     ExportOptions options;
-    options.piMethod = session.piDiscretization; // the session's choice unless overridden
-    if (const auto method = args.value("discretization")) {
-        if (*method == "tustin")
-            options.piMethod = PiDiscretization::Tustin;
-        else if (*method == "backward-euler")
-            options.piMethod = PiDiscretization::BackwardEuler;
-        else
-            throw InvalidInput("--discretization", "must be tustin or backward-euler");
-    }
+    options.piMethod = parseDiscretization(args, session.piDiscretization); // the session's unless given
+    const QString precision = args.text("precision", "double");
+    if (precision == "float")
+        options.precision = CPrecision::Float;
+    else if (precision != "double")
+        throw InvalidInput("--precision", "must be double or float");
+    if (args.has("precision") && format != "c")
+        throw InvalidInput("--precision", "applies to --format c only");
     const SessionEvaluation evaluation = evaluateSession(session);
     refuseRefusedRun(evaluation);
     if (format == "csv") // streamed: a long simulation is never held as text

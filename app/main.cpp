@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune: the tuning workbench. `xytune --screenshot FILE.png [--size WxH]` renders the main
 // window with the default design offscreen and exits.
+#include "app/allocator_tuning.h"
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/session/recovery_store.h"
@@ -55,6 +56,7 @@ void nameApplication() {
 }
 
 int main(int argc, char* argv[]) {
+    xyt::app::keepFreedMemory(); // see allocator_tuning.h: the slider re-simulates megabytes
     const Options options;
     {
         // Options that need no window (--help, --version, a mistyped option) are answered before

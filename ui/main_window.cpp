@@ -18,6 +18,7 @@
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/panels/fitted_stack.h"
+#include "ui/panels/implementation_editor.h"
 #include "ui/panels/pp_editor.h"
 #include "ui/session/recovery_store.h"
 #include "ui/plots/root_locus_plot.h"
@@ -52,6 +53,7 @@
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <qcustomplot.h>
@@ -240,7 +242,7 @@ QWidget* MainWindow::buildControls() {
     trajectoryLayout->addWidget(trajectoryEditor_);
     layout->addWidget(trajectoryBox);
 
-    auto* actuatorBox = new QGroupBox(tr("Actuator"), panel);
+    auto* actuatorBox = new QGroupBox(tr("Actuator and digital controller"), panel);
     auto* actuatorForm = new QFormLayout(actuatorBox);
     umax_ = new NumberField("umax", [](double v) { requirePositive(v, "umax"); }, actuatorBox);
     actuatorForm->addRow(tr("|u| limit (V)"), umax_);
@@ -252,8 +254,43 @@ QWidget* MainWindow::buildControls() {
     discretization_->addItem(tr("Tustin"));
     discretization_->addItem(tr("backward Euler"));
     discretization_->setAccessibleName(tr("PI discretization"));
-    actuatorForm->addRow(tr("Controller Ts (s)"), controllerTs_);
-    actuatorForm->addRow(tr("PI discretization"), discretization_);
+    discretization_->setToolTip(tr("How the PI is discretized at the controller sample time"));
+    // One row for the sample time and the discretization: the implementation's row below
+    // keeps the left panel within a 1366x768 window.
+    auto* tsRow = new QHBoxLayout;
+    tsRow->setContentsMargins(0, 0, 0, 0);
+    // Their own size hints side by side would widen the panel (and narrow the plots): they
+    // share the field column instead.
+    controllerTs_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    controllerTs_->setMinimumWidth(70);
+    discretization_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    discretization_->setMinimumWidth(120);
+    tsRow->addWidget(controllerTs_, 1);
+    tsRow->addWidget(discretization_, 1);
+    actuatorForm->addRow(tr("Controller Ts (s)"), tsRow);
+    // The implementation (issue 12) folds away: open, its five fields would push the default
+    // session's controls below a 1366x768 window.
+    implementationToggle_ = new QToolButton(actuatorBox);
+    implementationToggle_->setCheckable(true);
+    implementationToggle_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    implementationToggle_->setArrowType(Qt::RightArrow);
+    implementationToggle_->setAutoRaise(true);
+    implementationToggle_->setAccessibleName(tr("Digital implementation settings"));
+    implementationToggle_->setToolTip(tr("Delay, encoder, DAC and anti-windup of the digital controller"));
+    implementation_ = new ImplementationEditor(actuatorBox);
+    implementation_->setVisible(false);
+    actuatorForm->addRow(implementationToggle_);
+    actuatorForm->addRow(implementation_);
+    connect(implementationToggle_, &QToolButton::toggled, this, [this](bool open) {
+        implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+        implementation_->setVisible(open);
+    });
+    connect(implementation_, &ImplementationEditor::implementationEdited, this,
+            [this](const ImplementationSettings& settings) {
+                Session next = session_->session();
+                next.implementation = settings;
+                session_->apply(next, tr("Change the digital implementation"));
+            });
     connect(controllerTs_, &NumberField::valueAccepted, this, [this](double v) {
         if (v == session_->session().controllerTsSeconds)
             return;
@@ -331,6 +368,17 @@ void MainWindow::buildMenus() {
     // Filled when shown: never rebuilt (its actions deleted) while one of them runs.
     connect(overlayMenu_, &QMenu::aboutToShow, this, &MainWindow::rebuildOverlayMenu);
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    digitalOverlayAction_ = view->addAction(tr("Show the &digital implementation"));
+    digitalOverlayAction_->setCheckable(true);
+    digitalOverlayAction_->setChecked(true);
+    digitalOverlayAction_->setToolTip(tr("Overlay the loop as the firmware runs it on the time plots"));
+    connect(digitalOverlayAction_, &QAction::toggled, this, [this](bool on) {
+        timePlot_->setDigitalVisible(on);
+        refresh();
+    });
+    zPlaneAction_ = view->addAction(tr("Pole-zero map of the digital loop (&z-plane)"));
+    zPlaneAction_->setCheckable(true);
+    connect(zPlaneAction_, &QAction::toggled, this, &MainWindow::refresh);
     view->addAction(tr("&Reset plot views"), QKeySequence(tr("Ctrl+0")), this, [this] {
         for (QCustomPlot* plot : findChildren<QCustomPlot*>())
             resetView(plot);
@@ -370,6 +418,23 @@ void MainWindow::syncControls() {
     controllerTs_->setValue(s.controllerTsSeconds);
     const QSignalBlocker blockDiscretization(discretization_);
     discretization_->setCurrentIndex(s.piDiscretization == PiDiscretization::Tustin ? 0 : 1);
+    implementation_->setSettings(s.implementation);
+    const ImplementationSettings& impl = s.implementation;
+    // A short summary on the folded row (the panel's width is the plots' loss), the whole in
+    // its tooltip.
+    const bool quantized = impl.encoderResolutionMm > 0 || impl.dacBits > 0;
+    const QString antiWindup = impl.antiWindup == AntiWindup::Clamp ? tr("clamp")
+                               : impl.antiWindup == AntiWindup::BackCalculation ? tr("back-calc.")
+                                                                                : tr("no anti-windup");
+    implementationToggle_->setText(tr("Implementation: %1, %2%3")
+                                       .arg(quantized ? tr("quantized") : tr("ideal"), antiWindup,
+                                            impl.delaySamples > 0 ? tr(", delay %1").arg(impl.delaySamples) : QString()));
+    implementationToggle_->setToolTip(
+        tr("Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.")
+            .arg(impl.encoderResolutionMm > 0 ? tr("%1 mm/count").arg(impl.encoderResolutionMm) : tr("ideal"),
+                 impl.dacBits > 0 ? tr("%1 bits").arg(impl.dacBits) : tr("ideal"),
+                 QString::fromStdString(antiWindupName(impl.antiWindup)))
+            .arg(impl.delaySamples));
 }
 
 void MainWindow::refresh() {
@@ -412,8 +477,13 @@ void MainWindow::refresh() {
         if (shown(rootLocusPlot_))
             rootLocusPlot_->showLocus(session_->rootLocus(axis), poles,
                                       tr("Root locus of %1 (K = 1: the design)").arg(title));
-        if (shown(poleZeroPlot_))
-            poleZeroPlot_->showSets(session_->poleZeroSets(axis), tr("Pole-zero map of %1").arg(title));
+        if (shown(poleZeroPlot_)) {
+            if (zPlaneAction_ && zPlaneAction_->isChecked() && e.digital)
+                poleZeroPlot_->showSets(digitalPoleZeroSets(e),
+                                        tr("Digital loop of %1 in the z-plane (Ts = %2 s)").arg(title).arg(e.digital->tsSeconds));
+            else
+                poleZeroPlot_->showSets(session_->poleZeroSets(axis), tr("Pole-zero map of %1").arg(title));
+        }
         if (shown(parameterLocusPlot_)) {
             if (a.method == DesignMethod::GuilleminTruxal) {
                 const bool kp = sweptParameter_->currentIndex() == 1;

@@ -12,6 +12,7 @@ class QSplitter;
 class QStackedWidget;
 class QTabBar;
 class QTabWidget;
+class QToolButton;
 
 namespace xyt::ui {
 
@@ -19,6 +20,7 @@ class ContourControls;
 class ContourPlot;
 class RecoveryStore;
 class EquationsPanel;
+class ImplementationEditor;
 class MetricsPanel;
 class NumberField;
 class ParameterSlider;
@@ -63,6 +65,12 @@ public:
     ContourPlot* contourPlot() const { return contourPlot_; }
     ContourControls* contourControls() const { return contourControls_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
+    ImplementationEditor* implementationEditor() const { return implementation_; }
+    QToolButton* implementationToggle() const { return implementationToggle_; }
+    /// View > Show the digital implementation (time-plot overlay), on by default.
+    QAction* digitalOverlayAction() const { return digitalOverlayAction_; }
+    /// View > Pole-zero map of the digital loop (z-plane), off by default.
+    QAction* zPlaneAction() const { return zPlaneAction_; }
     EquationsPanel* equationsPanel() const { return equations_; }
     QTabBar* axisTabs() const { return axisTabs_; }
     SessionFileController* files() const { return files_; }
@@ -102,6 +110,10 @@ private:
     NumberField* umax_ = nullptr;
     NumberField* controllerTs_ = nullptr;
     QComboBox* discretization_ = nullptr;
+    QToolButton* implementationToggle_ = nullptr;
+    ImplementationEditor* implementation_ = nullptr;
+    QAction* digitalOverlayAction_ = nullptr;
+    QAction* zPlaneAction_ = nullptr;
     QDoubleSpinBox* magnification_ = nullptr;
     ContourControls* contourControls_ = nullptr;
     QTabWidget* upperTabs_ = nullptr;

@@ -3,6 +3,8 @@
 
 #include "core/model/errors.h"
 
+#include <cmath>
+
 namespace xyt {
 
 DigitalController discretizePi(double kp, double ki, double tsSeconds, PiDiscretization method) {
@@ -21,6 +23,68 @@ DigitalController discretizePi(double kp, double ki, double tsSeconds, PiDiscret
 
 std::string discretizationName(PiDiscretization method) {
     return method == PiDiscretization::Tustin ? "tustin" : "backward-euler";
+}
+
+std::string antiWindupName(AntiWindup method) {
+    switch (method) {
+    case AntiWindup::None:
+        return "none";
+    case AntiWindup::Clamp:
+        return "clamp";
+    case AntiWindup::BackCalculation:
+        break;
+    }
+    return "back-calculation";
+}
+
+DigitalPi digitalPi(double kp, double ki, double tsSeconds, PiDiscretization method,
+                    AntiWindup antiWindup, double trackingTimeSeconds) {
+    requireFinite(kp, "kp");
+    requireFinite(ki, "ki");
+    requirePositive(tsSeconds, "ts");
+    requireFinite(trackingTimeSeconds, "tracking_time");
+    if (trackingTimeSeconds < 0.0)
+        throw InvalidInput("tracking_time", "must be >= 0 (0: Tt = Ti = kp/ki)");
+    DigitalPi pi;
+    pi.kp = kp;
+    pi.tsSeconds = tsSeconds;
+    pi.antiWindup = antiWindup;
+    if (method == PiDiscretization::Tustin)
+        pi.c0 = pi.c1 = ki * tsSeconds / 2.0;
+    else
+        pi.c0 = ki * tsSeconds;
+    if (antiWindup == AntiWindup::BackCalculation) {
+        const double tt = trackingTimeSeconds > 0.0 ? trackingTimeSeconds : kp / ki;
+        if (!std::isfinite(tt) || !(tt > 0.0))
+            throw InvalidInput("tracking_time", "Ti = kp/ki is not a positive time; give Tt (s)");
+        pi.trackingGain = tsSeconds / tt;
+    }
+    return pi;
+}
+
+double stepDigitalPi(const DigitalPi& pi, DigitalPiState& state, double error, double umaxVolts) {
+    const double increment = pi.c0 * error + pi.c1 * state.previousError;
+    const double candidate = state.integrator + increment;
+    double v = pi.kp * error + candidate;
+    double u = v > umaxVolts ? umaxVolts : (v < -umaxVolts ? -umaxVolts : v);
+    switch (pi.antiWindup) {
+    case AntiWindup::None:
+        state.integrator = candidate;
+        break;
+    case AntiWindup::Clamp:
+        if (u != v && increment * v > 0.0) {
+            v = pi.kp * error + state.integrator; // integrator held
+            u = v > umaxVolts ? umaxVolts : (v < -umaxVolts ? -umaxVolts : v);
+        } else {
+            state.integrator = candidate;
+        }
+        break;
+    case AntiWindup::BackCalculation:
+        state.integrator = candidate + pi.trackingGain * (u - v);
+        break;
+    }
+    state.previousError = error;
+    return u;
 }
 
 std::vector<double> filterDifferenceEquation(const std::vector<double>& num,

@@ -33,6 +33,61 @@ DigitalController discretizePi(double kp, double ki, double tsSeconds, PiDiscret
 /// "tustin" / "backward-euler".
 std::string discretizationName(PiDiscretization method);
 
+/// How the digital PI keeps its integrator from winding up while the command is clipped.
+enum class AntiWindup {
+    None,           ///< the integrator runs on whatever the output does
+    Clamp,          ///< conditional integration: hold the integrator while clipped and pushing outwards
+    BackCalculation ///< feed (u - v) Ts / Tt back into the integrator (tracking time Tt)
+};
+
+/// "none" / "clamp" / "back-calculation".
+std::string antiWindupName(AntiWindup method);
+
+/**
+ * The PI of discretizePi in the integrator form the firmware runs, so that an anti-windup can act
+ * on the integrator (e in model units, u in volts):
+ *   I[k] = I[k-1] + c0 e[k] + c1 e[k-1],   v[k] = kp e[k] + I[k],
+ * with c0 = c1 = ki Ts / 2 (Tustin) or c0 = ki Ts, c1 = 0 (backward Euler). Unclipped, v is the
+ * difference equation of discretizePi: v[k] - v[k-1] = (kp + c0) e[k] + (c1 - kp) e[k-1].
+ * The step with saturation at +-umax and anti-windup is stepDigitalPi.
+ */
+struct DigitalPi {
+    double kp = 0.0;
+    double c0 = 0.0;
+    double c1 = 0.0;
+    double tsSeconds = 0.0;
+    AntiWindup antiWindup = AntiWindup::Clamp;
+    /// Back-calculation gain Ts / Tt (0 for the other methods).
+    double trackingGain = 0.0;
+};
+
+/**
+ * @param trackingTimeSeconds back-calculation's Tt; 0 chooses Tt = Ti = kp / ki, the usual rule
+ *        for a PI (Astrom and Hagglund, Advanced PID Control, 2006, section 3.5).
+ * @throws InvalidInput "kp", "ki" (finite), "ts" (> 0), "tracking_time" (finite, >= 0; 0 with
+ *         ki = 0 for back-calculation).
+ */
+DigitalPi digitalPi(double kp, double ki, double tsSeconds, PiDiscretization method,
+                    AntiWindup antiWindup, double trackingTimeSeconds = 0.0);
+
+/// The state the PI keeps between samples.
+struct DigitalPiState {
+    double integrator = 0.0;    ///< I[k-1]
+    double previousError = 0.0; ///< e[k-1]
+};
+
+/**
+ * One sample of the PI: from the error e (model units) the saturated command u in
+ * [-umax, umax] (infinity: no limit), updating @p state:
+ *   candidate = I[k-1] + (c0 e + c1 e[k-1]),  v = kp e + candidate,  u = sat(v);
+ *   None: I[k] = candidate.  Clamp: when u != v and the increment c0 e + c1 e[k-1] has the sign
+ *   of v, I[k] = I[k-1] and v, u are computed again from it; else I[k] = candidate.
+ *   BackCalculation: I[k] = candidate + (Ts/Tt) (u - v).
+ * Unclipped, all three give the same bits. The exported C code (exportCHeader) performs the
+ * same operations in the same order.
+ */
+double stepDigitalPi(const DigitalPi& pi, DigitalPiState& state, double error, double umaxVolts);
+
 /**
  * Runs the difference equation N/D (ascending z^-1, D[0] != 0) on @p input from rest.
  * @throws InvalidInput "den" when D[0] is zero or D is empty, "num" when empty.

@@ -4,6 +4,7 @@
 #include "core/model/errors.h"
 #include "core/design/pole_placement.h"
 #include "core/io/text_escape.h"
+#include "core/simulation/sampled_data.h"
 #include "core/simulation/trajectory.h"
 
 #include <algorithm>
@@ -101,6 +102,188 @@ std::string rstHeaderBlock(const AxisSettings& axis, const AxisEvaluation& a, co
     return out.str();
 }
 
+
+/// The axis id as it names C identifiers (xyt_<id>_step): the session file allows only these.
+void requireCIdentifier(const Session& session, int axisIndex) {
+    const std::string& id = session.axes.at(static_cast<std::size_t>(axisIndex)).id;
+    const bool ok = !id.empty() && id.size() <= 16 &&
+                    std::all_of(id.begin(), id.end(), [](char c) {
+                        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+                    });
+    if (!ok)
+        throw InvalidInput(axisField(axisIndex, "id"), "must be 1 to 16 lower-case letters or digits "
+                                                       "(it names the exported C functions)");
+    if (axisIndex == 1 && session.axes[0].id == id)
+        throw InvalidInput(axisField(1, "id"), "must differ from axes[0].id");
+}
+
+/// The controller's arithmetic: "x * y" as C with constants of xyt_real type.
+std::string cReal(const std::string& constant) { return "(xyt_real)" + constant; }
+
+/// The saturation of v at +-XYT_UMAX into u, as stepDigitalPi writes it.
+std::string cSaturate(const std::string& target, const std::string& v) {
+    return target + " = " + v + " > XYT_UMAX ? XYT_UMAX : (" + v + " < -XYT_UMAX ? -XYT_UMAX : " + v + ");\n";
+}
+
+/// The complete digital PI of a Guillemin-Truxal axis (stepDigitalPi in C).
+std::string piImplementationBlock(const AxisSettings& axis, const DigitalPi& pi, const std::string& id,
+                                  int axisIndex) {
+    const std::string up = upper(id);
+    const std::string gt = axisField(axisIndex, "gt");
+    const std::string f = gt + " (digital PI at controller_ts)";
+    std::ostringstream out;
+    out << "/* Axis " << id << labelComment(axis, CommentSyntax::C) << ": the controller. Every XYT_" << up
+        << "_TS seconds, with the table's measured\n * position in mm (encoder counts times "
+           "XYT_ENCODER_RESOLUTION_MM when the session gives it)\n * and the reference r(k) in mm:\n"
+        << " *   u = xyt_" << id << "_step(&state, r, measured);   (volts, within +-XYT_UMAX)\n"
+        << " * after xyt_" << id << "_init(&state) with the table at rest. The PI in integrator form, e in\n"
+        << " * model units:\n"
+        << " *   e = (r - measured) UNIT,  I[k] = I[k-1] + C0 e[k] + C1 e[k-1],  v = KP e + I[k],\n"
+        << " *   u = v clipped to +-XYT_UMAX, anti-windup: " << antiWindupName(pi.antiWindup);
+    if (pi.antiWindup == AntiWindup::Clamp)
+        out << " (the integrator holds while u is\n *   clipped and the increment has the sign of v)";
+    else if (pi.antiWindup == AntiWindup::BackCalculation)
+        out << " (I[k] += AW_GAIN (u - v), AW_GAIN = Ts/Tt)";
+    out << ".\n */\n";
+    const auto constant = [&](const std::string& name, double v, const std::string& field) {
+        out << "static const xyt_real XYT_" << up << "_" << name << " XYT_MAYBE_UNUSED = " << num(v, field) << ";\n";
+    };
+    constant("KP", pi.kp, gt + ".kp");
+    constant("C0", pi.c0, f);
+    constant("C1", pi.c1, f);
+    constant("UNIT", axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale");
+    if (pi.antiWindup == AntiWindup::BackCalculation)
+        constant("AW_GAIN", pi.trackingGain, "implementation.tracking_time");
+    out << "typedef struct {\n    xyt_real integrator;     /* I[k-1] */\n"
+           "    xyt_real previous_error; /* e[k-1] */\n} xyt_" << id << "_state;\n"
+        << "static inline XYT_MAYBE_UNUSED void xyt_" << id << "_init(xyt_" << id << "_state *s) {\n"
+        << "    s->integrator = 0;\n    s->previous_error = 0;\n}\n"
+        << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
+        << "_state *s, xyt_real reference, xyt_real measured) {\n"
+        << "    const xyt_real e = (reference - measured) * XYT_" << up << "_UNIT;\n"
+        << "    const xyt_real increment = XYT_" << up << "_C0 * e + XYT_" << up << "_C1 * s->previous_error;\n"
+        << "    const xyt_real candidate = s->integrator + increment;\n"
+        << "    xyt_real v = XYT_" << up << "_KP * e + candidate;\n"
+        << "    xyt_real u;\n"
+        << "    " << cSaturate("u", "v");
+    switch (pi.antiWindup) {
+    case AntiWindup::None:
+        out << "    s->integrator = candidate;\n";
+        break;
+    case AntiWindup::Clamp:
+        out << "    if (u != v && increment * v > 0) { /* clipped and pushing outwards: hold I */\n"
+            << "        v = XYT_" << up << "_KP * e + s->integrator;\n"
+            << "        " << cSaturate("u", "v") << "    } else {\n"
+            << "        s->integrator = candidate;\n    }\n";
+        break;
+    case AntiWindup::BackCalculation:
+        out << "    s->integrator = candidate + XYT_" << up << "_AW_GAIN * (u - v);\n";
+        break;
+    }
+    out << "    s->previous_error = e;\n    return u;\n}\n\n";
+    return out.str();
+}
+
+/// A shift register update "for i = n-1 .. 1: a[i] = a[i-1]" in C.
+std::string cShift(const std::string& array, const std::string& length) {
+    return "    for (i = " + length + " - 1; i > 0; --i)\n        " + array + "[i] = " + array + "[i - 1];\n";
+}
+
+/// The RST law (and ZPETC) of a pole-placement axis in C: the operations of simulateSampledRst.
+std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluation& a, AntiWindup antiWindup,
+                                   const std::string& id, int axisIndex) {
+    const PolePlacementDesign& pp = *a.pp;
+    const bool ff = axis.pp.zpetcEnabled && a.zpetc;
+    const std::string up = upper(id), X = "XYT_" + upper(id);
+    const std::string field = axisField(axisIndex, "pp");
+    std::ostringstream out;
+    out << "/* Axis " << id << labelComment(axis, CommentSyntax::C) << ": the controller. Every " << X
+        << "_TS seconds, with the measured position y(k) in mm:\n";
+    if (ff)
+        out << " *   u(k) = xyt_" << id << "_step(&state, r(k + " << X << "_PREVIEW), y(k));   (volts)\n"
+            << " * THE CALLER SUPPLIES THE REFERENCE " << X << "_PREVIEW SAMPLES AHEAD (the ZPETC is\n"
+            << " * non-causal: it needs r(k + PREVIEW) at time k). Start with xyt_" << id
+            << "_init(&state, r(0)) with the table\n"
+            << " * at rest at r(0), and call step from k = -PREVIEW on (the table may leave r(0) before k = 0).\n";
+    else
+        out << " *   u(k) = xyt_" << id << "_step(&state, r(k), y(k));   (volts)\n"
+            << " * after xyt_" << id << "_init(&state, r(0)) with the table at rest at r(0).\n";
+    out << " * The step runs F u = KF w - G y (w the ZPETC output, or r), clips u to +-XYT_UMAX and\n"
+        << " * remembers " << (antiWindup == AntiWindup::None ? "its unclipped output v" : "the clipped u (anti-windup)")
+        << " in the past-u terms. U_REST = A(1)/B(1) is u at rest per mm.\n */\n";
+    out << "static const xyt_real " << X << "_U_REST XYT_MAYBE_UNUSED = " << num(pp.a(1.0) / pp.b(1.0), field + " (A(1)/B(1))")
+        << ";\n";
+    out << "typedef struct {\n";
+    if (ff)
+        out << "    xyt_real r[" << X << "_FF_NUM_LEN]; /* r(k+P), r(k+P-1), ... */\n"
+            << "    xyt_real w[" << X << "_FF_DEN_LEN]; /* w(k), w(k-1), ... */\n";
+    out << "    xyt_real y[" << X << "_G_LEN]; /* y(k), y(k-1), ... measured */\n"
+        << "    xyt_real u[" << X << "_F_LEN]; /* u(k), u(k-1), ... */\n} xyt_" << id << "_state;\n";
+    out << "static inline XYT_MAYBE_UNUSED void xyt_" << id << "_init(xyt_" << id
+        << "_state *s, xyt_real rest_position) {\n    int i;\n";
+    if (ff)
+        out << "    for (i = 0; i < " << X << "_FF_NUM_LEN; ++i)\n        s->r[i] = rest_position;\n"
+            << "    for (i = 0; i < " << X << "_FF_DEN_LEN; ++i)\n        s->w[i] = rest_position;\n";
+    out << "    for (i = 0; i < " << X << "_G_LEN; ++i)\n        s->y[i] = rest_position;\n"
+        << "    for (i = 0; i < " << X << "_F_LEN; ++i)\n        s->u[i] = " << X << "_U_REST * rest_position;\n}\n";
+    out << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id << "_state *s, xyt_real "
+        << (ff ? "reference_ahead" : "reference") << ", xyt_real measured) {\n    int i;\n    xyt_real w, v, u;\n";
+    if (ff) {
+        out << cShift("s->r", X + "_FF_NUM_LEN") << cShift("s->w", X + "_FF_DEN_LEN")
+            << "    s->r[0] = reference_ahead;\n    w = 0;\n"
+            << "    for (i = 0; i < " << X << "_FF_NUM_LEN; ++i)\n        w += " << cReal(X + "_FF_NUM[i]") << " * s->r[i];\n"
+            << "    for (i = 1; i < " << X << "_FF_DEN_LEN; ++i)\n        w -= " << cReal(X + "_FF_DEN[i]") << " * s->w[i];\n"
+            << "    w = w / " << cReal(X + "_FF_DEN[0]") << ";\n    s->w[0] = w;\n";
+    } else {
+        out << "    w = reference;\n";
+    }
+    out << cShift("s->y", X + "_G_LEN") << cShift("s->u", X + "_F_LEN")
+        << "    s->y[0] = measured;\n"
+        << "    v = " << cReal(X + "_KF") << " * w;\n"
+        << "    for (i = 0; i < " << X << "_G_LEN; ++i)\n        v -= " << cReal(X + "_G[i]") << " * s->y[i];\n"
+        << "    for (i = 1; i < " << X << "_F_LEN; ++i)\n        v -= " << cReal(X + "_F[i]") << " * s->u[i];\n"
+        << "    v = v / " << cReal(X + "_F[0]") << ";\n"
+        << "    " << cSaturate("u", "v")
+        << "    s->u[0] = " << (antiWindup == AntiWindup::None ? "v" : "u") << ";\n    return u;\n}\n\n";
+    return out.str();
+}
+
+/// The DAC conversion of dacOutput in C (no library call: floor by truncation and correction).
+std::string dacBlock(const Session& session) {
+    const int bits = session.implementation.dacBits;
+    std::ostringstream out;
+    out << "/* The DAC: " << bits << " bits over +-XYT_UMAX, LSB XYT_DAC_LSB = 2 umax / 2^bits, codes\n"
+        << " * -2^(bits-1) .. 2^(bits-1) - 1 (0 V is code 0). Write xyt_dac_code(u) to the converter;\n"
+        << " * xyt_dac_volts(code) is what it outputs. */\n"
+        << "#define XYT_DAC_BITS " << bits << "\n"
+        << "static const xyt_real XYT_DAC_LSB XYT_MAYBE_UNUSED = (xyt_real)(2.0 * " << num(session.umaxVolts, "umax")
+        << " / " << num(std::ldexp(1.0, bits), "implementation.dac_bits") << ");\n"
+        << "static inline XYT_MAYBE_UNUSED long long xyt_dac_code(xyt_real volts) {\n"
+        << "    const xyt_real t = volts / XYT_DAC_LSB + (xyt_real)0.5;\n"
+        << "    const long long half = " << static_cast<long long>(std::ldexp(1.0, bits - 1)) << "LL;\n"
+        << "    long long code = (long long)t;\n"
+        << "    if ((xyt_real)code > t)\n        code -= 1; /* floor for negative t */\n"
+        << "    return code < -half ? -half : (code > half - 1 ? half - 1 : code);\n}\n"
+        << "static inline XYT_MAYBE_UNUSED xyt_real xyt_dac_volts(long long code) {\n"
+        << "    return (xyt_real)code * XYT_DAC_LSB;\n}\n\n";
+    return out.str();
+}
+
+} // namespace
+
+std::string precisionName(CPrecision precision) {
+    return precision == CPrecision::Double ? "double" : "float";
+}
+
+namespace {
+
+/// The digital PI the export runs for a GT axis: the session's, discretized as @p options say.
+DigitalPi exportPi(const Session& session, const GtDesign& design, const ExportOptions& options) {
+    Session s = session;
+    s.piDiscretization = options.piMethod;
+    return sessionDigitalPi(s, design);
+}
+
 } // namespace
 
 DigitalController axisDigitalController(const Session& session, const SessionEvaluation& evaluation,
@@ -119,17 +302,38 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
            " * Coefficient order: ascending powers of z^-1. Each axis runs\n"
            " *   u[k] = sum_i NUM[i] e[k-i] - sum_{i>=1} DEN[i] u[k-i],   e = r - y,\n"
            " * every TS seconds (DEN[0] is 1). u is the motor command in volts; clamp it to\n"
-           " * +-" << num(session.umaxVolts, "umax") << " V as the design assumed.\n */\n"
+           " * +-" << num(session.umaxVolts, "umax") << " V as the design assumed.\n"
+           " *\n"
+           " * Each axis also comes as a complete controller (state struct, init, step with the\n"
+           " * saturation and the anti-windup), in xyt_real arithmetic (" << precisionName(options.precision)
+        << " in this file).\n"
+           " * C99, no dynamic memory, no recursion, no library call. It performs the operations of\n"
+           " * XY Tune's sampled-data simulation in the same order, and was checked in closed loop\n"
+           " * against it. Implementation settings: anti-windup "
+        << antiWindupName(session.implementation.antiWindup) << ", computation delay "
+        << session.implementation.delaySamples << " sample(s).\n */\n"
         << "#ifndef XYT_CONTROLLER_COEFFICIENTS_H\n#define XYT_CONTROLLER_COEFFICIENTS_H\n\n"
         << "#if defined(__GNUC__)\n#define XYT_MAYBE_UNUSED __attribute__((unused))\n#else\n"
            "#define XYT_MAYBE_UNUSED\n#endif\n\n"
-        << "#define XYT_UMAX_VOLTS " << num(session.umaxVolts, "umax") << "\n\n";
+        << "#define XYT_UMAX_VOLTS " << num(session.umaxVolts, "umax") << "\n\n"
+        << "typedef " << precisionName(options.precision) << " xyt_real;\n"
+        << "static const xyt_real XYT_UMAX XYT_MAYBE_UNUSED = " << num(session.umaxVolts, "umax") << ";\n"
+        << "#define XYT_DELAY_SAMPLES " << session.implementation.delaySamples << "\n";
+    const SampledDataOptions implementation = sessionSampledDataOptions(session); // validates
+    if (implementation.encoderResolution > 0.0)
+        out << "#define XYT_ENCODER_RESOLUTION_MM "
+            << num(implementation.encoderResolution, "implementation.encoder_resolution") << "\n";
+    out << "\n";
+    if (implementation.dacBits > 0)
+        out << dacBlock(session);
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        requireCIdentifier(session, i);
         const std::string id = upper(axis.id);
         const AxisEvaluation& a = validAxis(evaluation, i);
         if (a.pp) {
             out << rstHeaderBlock(axis, a, id, i);
+            out << rstImplementationBlock(axis, a, implementation.antiWindup, axis.id, i);
             continue;
         }
         const DigitalController c = axisDigitalController(session, evaluation, i, options);
@@ -156,6 +360,7 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
             << joined(c.den, ", ", pi) << "};\n";
         out << "static const double XYT_" << id << "_TS XYT_MAYBE_UNUSED = " << num(c.tsSeconds, "controller_ts")
             << ";\n\n";
+        out << piImplementationBlock(axis, exportPi(session, *a.gt, options), axis.id, i);
     }
     out << "#endif /* XYT_CONTROLLER_COEFFICIENTS_H */\n";
     return out.str();

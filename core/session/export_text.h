@@ -10,9 +10,17 @@
 
 namespace xyt {
 
+/// The arithmetic of the exported C controller.
+enum class CPrecision { Double, Float };
+
+/// "double" / "float".
+std::string precisionName(CPrecision precision);
+
 /// Options shared by the coefficient exports.
 struct ExportOptions {
     PiDiscretization piMethod = PiDiscretization::Tustin;
+    /// The C export's xyt_real (the controller's arithmetic; the coefficient arrays stay double).
+    CPrecision precision = CPrecision::Double;
 };
 
 /// The digital controller that the firmware runs for one axis: the PI of a continuous design
@@ -26,10 +34,26 @@ DigitalController axisDigitalController(const Session& session, const SessionEva
 // with InvalidInput naming the session field it comes from.
 
 /**
- * A C99 header for firmware: per axis `static const double XYT_<AXIS>_NUM[]`, `XYT_<AXIS>_DEN[]`
- * (ascending powers of z^-1), `XYT_<AXIS>_TS`, the lengths as macros, and a comment with the
- * difference equation. Compiles standalone with `cc -std=c99 -Wall -Wextra -Werror`. Numbers are
- * printed with 17 significant digits, so they read back exactly.
+ * A C99 header for firmware: per axis the coefficients, `static const double XYT_<AXIS>_NUM[]`,
+ * `XYT_<AXIS>_DEN[]` (ascending powers of z^-1), `XYT_<AXIS>_TS`, the lengths as macros, and a
+ * comment with the difference equation; and the complete controller (issue 12), self-contained
+ * (no dynamic memory, no recursion, no library call), in `xyt_real` = double or float
+ * (options.precision):
+ *  - Guillemin-Truxal axes: `xyt_<axis>_state`, `xyt_<axis>_init(&s)`,
+ *    `u = xyt_<axis>_step(&s, reference_mm, measured_mm)`: the PI of stepDigitalPi with the
+ *    session's anti-windup, saturated at +-umax;
+ *  - pole-placement axes: `xyt_<axis>_init(&s, rest_mm)` and
+ *    `u = xyt_<axis>_step(&s, reference_ahead_mm, measured_mm)`: the RST law and, with ZPETC,
+ *    its feedforward reading the reference XYT_<AXIS>_PREVIEW samples ahead (the header says so);
+ *  - with a DAC in the session, `xyt_dac_code(u)` and `xyt_dac_volts(code)` (dacOutput).
+ * The steps perform the operations of the core's sampled-data loop (sampled_data.h) in the same
+ * order, so in double they give its bits. Compiles standalone with
+ * `cc -std=c99 -Wall -Wextra -Werror -pedantic`. Numbers are printed with 17 significant digits,
+ * so they read back exactly. User text (labels) enters only as comment text; axis ids, which
+ * name the functions, must be 1 to 16 lower-case letters or digits and differ.
+ * @throws InvalidInput naming the session field of a non-finite number, "axes[i].id" for an id
+ *         that cannot name a C function, "implementation.*" / "controller_ts" for settings the
+ *         controller cannot run with.
  */
 std::string exportCHeader(const Session& session, const SessionEvaluation& evaluation,
                           const ExportOptions& options = {});

@@ -124,6 +124,26 @@ struct DesignSnapshot {
     friend bool operator==(const DesignSnapshot&, const DesignSnapshot&) = default;
 };
 
+/**
+ * How the firmware runs the controllers (issue 12): the digital implementation simulated next to
+ * the design (core/simulation/sampled_data.h) and exported as C code. Digital PI axes run at the
+ * session's controllerTsSeconds with its piDiscretization; pole-placement axes at their own Ts.
+ */
+struct ImplementationSettings {
+    /// Computation delay in samples (0..kMaxDelaySamples): u computed at k is applied at k + delay.
+    int delaySamples = 0;
+    /// Encoder resolution (mm per count); 0: ideal.
+    double encoderResolutionMm = 0.0;
+    /// DAC bits over +-umax (0..32); 0: ideal.
+    int dacBits = 0;
+    /// The anti-windup of the digital PI; clamping (conditional integration) is what an engineer
+    /// ships: no parameter to tune and no overshoot from a wound-up integrator.
+    AntiWindup antiWindup = AntiWindup::Clamp;
+    /// Back-calculation's tracking time Tt (s); 0: Tt = Ti = kp/ki.
+    double trackingTimeSeconds = 0.0;
+    friend bool operator==(const ImplementationSettings&, const ImplementationSettings&) = default;
+};
+
 /// The whole design: two axes, the motion, the actuator limit.
 struct Session {
     std::array<AxisSettings, 2> axes;
@@ -133,6 +153,8 @@ struct Session {
     double controllerTsSeconds = 0.01;
     /// How that PI is discretized (Tustin by default).
     PiDiscretization piDiscretization = PiDiscretization::Tustin;
+    /// The digital implementation (delay, encoder, DAC, anti-windup).
+    ImplementationSettings implementation;
     /// What the design must meet (paper 000: settling <= 100 s, no overshoot, no saturation,
     /// max error <= 2 %). Its umaxVolts is ignored: the session's umaxVolts is the limit.
     Specification spec;

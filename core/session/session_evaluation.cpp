@@ -92,10 +92,115 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     }
 }
 
+DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design) {
+    try {
+        return digitalPi(design.kp, design.ki, session.controllerTsSeconds, session.piDiscretization,
+                         session.implementation.antiWindup, session.implementation.trackingTimeSeconds);
+    } catch (const InvalidInput& e) {
+        if (e.field() == "ts")
+            throw InvalidInput("controller_ts", e.reason());
+        if (e.field() == "tracking_time")
+            throw InvalidInput("implementation.tracking_time", e.reason());
+        throw;
+    }
+}
+
+std::vector<PoleZeroSet> digitalPoleZeroSets(const AxisEvaluation& axis) {
+    if (!axis.digital)
+        return {};
+    const DigitalEvaluation& d = *axis.digital;
+    return {{"digital loop", d.tsSeconds, d.poles, {}}, {"design at Ts", d.tsSeconds, d.designPoles, {}}};
+}
+
+SampledDataOptions sessionSampledDataOptions(const Session& session) {
+    SampledDataOptions o;
+    o.delaySamples = session.implementation.delaySamples;
+    o.encoderResolution = session.implementation.encoderResolutionMm;
+    o.dacBits = session.implementation.dacBits;
+    o.umaxVolts = session.umaxVolts;
+    o.antiWindup = session.implementation.antiWindup;
+    try {
+        validateSampledDataOptions(o);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(e.field() == "umax" ? "umax" : "implementation." + e.field(), e.reason());
+    }
+    return o;
+}
+
 namespace {
 
+double minContinuousDamping(const std::vector<std::complex<double>>& poles) {
+    double out = 1.0;
+    for (const auto& p : poles)
+        if (std::abs(p) > 0.0)
+            out = std::min(out, -p.real() / std::abs(p));
+    return out;
+}
+
+double minDigitalDamping(const std::vector<std::complex<double>>& poles) {
+    double out = 1.0;
+    for (const auto& z : poles)
+        if (std::abs(z) >= 1e-9)
+            out = std::min(out, zDampingRatio(z));
+    return out;
+}
+
+/// The figures, move-and-settle, damping and limit-cycle warnings of a digital run.
+void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation& out) {
+    d.metrics = trackingMetrics(d.run.result);
+    d.minDamping = minDigitalDamping(d.poles);
+    if (const auto w = digitalDampingWarning(d.poles, d.designMinDamping, d.tsSeconds))
+        out.warnings.push_back(*w);
+    const TrajectorySettings& t = session.trajectory;
+    if (t.kind != TrajectoryKind::Cubic)
+        return;
+    const ImplementationSettings& impl = session.implementation;
+    if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
+        const auto& times = d.run.result.t;
+        const auto rest = std::lower_bound(times.begin(), times.end(), t.tfSeconds);
+        d.limitCycle = restLimitCycle(d.run.measured, static_cast<std::size_t>(rest - times.begin()));
+        if (d.limitCycle)
+            out.warnings.push_back(
+                "a limit cycle at rest: after the move the measured position keeps oscillating (" +
+                formatNumber(d.limitCycle->peakToPeak, 4) + " mm peak to peak, " +
+                std::to_string(d.limitCycle->turns) +
+                " turns in the last half of the rest), caused by the encoder/DAC quantization");
+    }
+}
+
+/// The digital implementation of a Guillemin-Truxal axis (its failures become a warning: the
+/// export names the field when asked for the code).
+void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
+                       AxisEvaluation& out) {
+    try {
+        DigitalEvaluation d;
+        const DigitalPi pi = sessionDigitalPi(session, *out.gt);
+        d.tsSeconds = pi.tsSeconds;
+        const SampledDataOptions options = sessionSampledDataOptions(session);
+        const TransferFunction plant = axis.gt.plant.transferFunction();
+        // At the simulation step (the default: both 10 ms) the continuous run already holds the
+        // reference at the controller's sample times.
+        const bool sameTimes = pi.tsSeconds == session.trajectory.dtSeconds;
+        d.run = simulateSampledPi(
+            plant, pi,
+            sameTimes ? out.run.r
+                      : sampled(sessionReference(session.trajectory, axisIndex),
+                                axisSampleTimes(session.trajectory, duration, pi.tsSeconds, "controller_ts")),
+            options, axis.gt.modelUnitsPerPositionUnit);
+        d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
+        d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
+        for (const auto& p : out.gt->closedLoopPoles)
+            d.designPoles.push_back(std::exp(p * pi.tsSeconds));
+        sortRoots(d.designPoles);
+        finishDigital(session, d, out);
+        out.digital = std::move(d);
+    } catch (const InvalidInput& e) {
+        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+    }
+}
+
 void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                AxisEvaluation& out) {
+                bool withDigital, AxisEvaluation& out) {
     const GtAxisSettings& gt = axis.gt;
     out.gt = sessionGtDesign(gt, axisIndex);
     LoopSimulationOptions options;
@@ -109,6 +214,8 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
         out.warnings.push_back("the closed loop is unstable");
+    if (withDigital)
+        evaluateGtDigital(session, axis, axisIndex, duration, out);
 }
 
 } // namespace
@@ -140,7 +247,7 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
 }
 
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                AxisEvaluation& out) {
+                bool withDigital, AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
     requireFinite(pp.t1, "t1");
     if (std::abs(pp.t1) >= 1.0)
@@ -181,6 +288,22 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     if (out.metrics.saturated)
         out.warnings.push_back("|u| exceeds the actuator limit (the discrete loop is simulated "
                                "without saturation)");
+    if (!withDigital)
+        return;
+    try {
+        DigitalEvaluation d;
+        d.tsSeconds = pp.tsSeconds;
+        const SampledDataOptions options = sessionSampledDataOptions(session);
+        const ZpetcDesign* zpetc = pp.zpetcEnabled ? &*out.zpetc : nullptr;
+        d.run = simulateSampledRst(*out.pp, zpetc, r, n, options);
+        d.poles = sampledRstLoopPoles(*out.pp, options.delaySamples);
+        d.designPoles = sampledRstLoopPoles(*out.pp, 0);
+        d.designMinDamping = minDigitalDamping(d.designPoles);
+        finishDigital(session, d, out);
+        out.digital = std::move(d);
+    } catch (const InvalidInput& e) {
+        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+    }
 }
 
 } // namespace
@@ -196,7 +319,8 @@ TransferFunction AxisEvaluation::closedLoop() const {
 namespace {
 
 /// evaluateAxis over a given duration.
-AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration) {
+AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration,
+                                bool withDigital = true) {
     AxisEvaluation out;
     out.duration = duration;
     const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
@@ -204,9 +328,9 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
     try {
         requirePositive(session.umaxVolts, "umax");
         if (axis.method == DesignMethod::GuilleminTruxal)
-            evaluateGt(session, axis, axisIndex, duration.seconds, out);
+            evaluateGt(session, axis, axisIndex, duration.seconds, withDigital, out);
         else
-            evaluatePp(session, axis, axisIndex, duration.seconds, out);
+            evaluatePp(session, axis, axisIndex, duration.seconds, withDigital, out);
         if (out.metrics.diverged)
             out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
                                    "it has no tracking figures");
@@ -280,7 +404,7 @@ RunDuration chooseRunDuration(const Session& session) {
     double need = 0.0;
     bool any = false;
     for (int i = 0; i < 2; ++i) {
-        const AxisEvaluation a = evaluateAxisOver(session, i, moveOnly);
+        const AxisEvaluation a = evaluateAxisOver(session, i, moveOnly, false);
         if (!a.ok || !a.step.stable || a.metrics.diverged || a.run.e.empty())
             continue; // it will not settle whatever the duration; its evaluation says why
         any = true;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/analysis/pole_zero_map.h"
 #include "core/analysis/stability_margins.h"
 #include "core/simulation/contour_error.h"
 #include "core/simulation/resample.h"
@@ -13,9 +14,11 @@
 #include "core/design/zpetc.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
+#include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
 
 #include <array>
+#include <complex>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -37,6 +40,29 @@ struct RunDuration {
     bool capped = false;         ///< the wanted run was longer than the cap and was cut to it
     double capSeconds = 0.0;     ///< TrajectorySettings::effectiveDurationSeconds()
     std::string description;     ///< one sentence saying what was chosen and why
+};
+
+/**
+ * The axis as the firmware runs it (issue 12): the sampled-data loop with the session's
+ * implementation settings (simulateSampledPi at controller_ts for a Guillemin-Truxal axis,
+ * simulateSampledRst at the axis' Ts for pole placement), its tracking figures and its z-plane
+ * poles (its move-and-settle figures: moveSettleMetrics of run.result, as the CLI prints them).
+ */
+struct DigitalEvaluation {
+    double tsSeconds = 0.0;
+    SampledDataRun run;
+    TrackingMetrics metrics;
+    /// Closed-loop poles of the linear digital loop (z-plane, delay included).
+    std::vector<std::complex<double>> poles;
+    /// The design's closed-loop poles in the same z-plane: the continuous ones mapped by
+    /// z = e^(s Ts) (GT), or the RST loop's without the delay (pole placement).
+    std::vector<std::complex<double>> designPoles;
+    /// Minimum damping ratio of those poles and of the design they are compared with (the
+    /// continuous loop for GT, the loop without delay for pole placement).
+    double minDamping = 0.0;
+    double designMinDamping = 0.0;
+    /// A limit cycle at rest after a cubic move (only looked for with quantization on).
+    std::optional<RestOscillation> limitCycle;
 };
 
 /// Everything computed for one axis of a session: the design, the run and its figures.
@@ -79,6 +105,8 @@ struct AxisEvaluation {
     /// `margins` is set).
     SpecificationCheck check;
     std::vector<std::string> warnings;
+    /// The digital implementation of the axis; unset when the axis could not be designed.
+    std::optional<DigitalEvaluation> digital;
 
     /// The closed loop of the design (G_R for GT, Kf B / T for pole placement).
     TransferFunction closedLoop() const;
@@ -124,5 +152,19 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex);
 /// |u| > umax (the discrete loops are simulated without saturation: flagged, not applied).
 SimulationResult discreteRun(const std::vector<double>& t, const std::vector<double>& r,
                              const DiscreteRun& run, double umaxVolts, double ts);
+
+/// The z-plane sets of the digital implementation for the pole-zero map: "digital loop" (poles
+/// of the digital closed loop) and "design at Ts" (DigitalEvaluation::designPoles); empty when
+/// the axis has no digital evaluation.
+std::vector<PoleZeroSet> digitalPoleZeroSets(const AxisEvaluation& axis);
+
+/// The digital PI of a Guillemin-Truxal design as the session runs and exports it.
+/// @throws InvalidInput "controller_ts", "implementation.tracking_time".
+DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design);
+
+/// The sampled-data options of the session (umax and the implementation settings).
+/// @throws InvalidInput "implementation.delay_samples", "implementation.encoder_resolution",
+///         "implementation.dac_bits", "umax".
+SampledDataOptions sessionSampledDataOptions(const Session& session);
 
 } // namespace xyt

@@ -190,6 +190,26 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("simulate dt needing gigabytes")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-9"}
         << "--dt"; // not --duration: the user did not type it
+    QTest::newRow("simulate digital dac bits 33")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--dac-bits", "33"} + kCubic << "--dac-bits";
+    QTest::newRow("simulate digital negative delay")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--delay-samples", "-1"} + kCubic
+        << "--delay-samples";
+    QTest::newRow("simulate digital negative encoder")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--encoder-resolution", "-1"} + kCubic
+        << "--encoder-resolution";
+    QTest::newRow("simulate digital unknown anti-windup")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--anti-windup", "reset"} + kCubic
+        << "--anti-windup";
+    QTest::newRow("simulate digital zero controller ts")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "0"} + kCubic
+        << "--controller-ts";
+    QTest::newRow("simulate digital controller ts needing gigabytes")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "1e-9"} + kCubic
+        << "--controller-ts";
+    QTest::newRow("simulate digital negative tracking time")
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--tracking-time", "-1"} + kCubic
+        << "--tracking-time";
     QTest::newRow("simulate umax zero")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--umax", "0"}
         << "--umax";
@@ -235,6 +255,12 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json",
                        "--discretization", "zoh"}
         << "--discretization";
+    QTest::newRow("export unknown precision")
+        << QStringList{"export", "{default}", "--format", "c", "-o", "{dir}/o.h", "--precision", "half"}
+        << "--precision";
+    QTest::newRow("export precision for json")
+        << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json", "--precision", "float"}
+        << "--precision";
 
     // rlocus
     QTest::newRow("rlocus empty num") << QStringList{"rlocus", "--num", "", "--den", "1 2 0"}

@@ -3,6 +3,7 @@
 // the CSV columns, and exit code 2 with one stderr line naming the argument for bad input.
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
+#include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
 #include "tests/support/cli_runner.h"
@@ -46,6 +47,7 @@ private slots:
     void simulateMatchesCoreAndWritesCsv_data();
     void simulateMatchesCoreAndWritesCsv();
     void unstableDesignIsNotAnError();
+    void simulateDigitalMatchesCore();
     void automaticDurationIncludesTheSettle();
     void commandHelpIsThatCommandsOnly();
     void reportReadsTheDefaultDesign();
@@ -192,6 +194,48 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
         ++k;
     }
     QCOMPARE(k, core.t.size());
+}
+
+// Issue 12: simulate --digital runs the sampled-data loop of the core with the options given;
+// its figures equal simulateSampledPi's (JSON round trip only), and the options are echoed.
+void TstCliGt::simulateDigitalMatchesCore() {
+    const auto run = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf", "600",
+                                        "--tf", "130", "--duration", "160", "--digital", "--controller-ts", "0.02",
+                                        "--discretization", "backward-euler", "--delay-samples", "1",
+                                        "--encoder-resolution", "0.001", "--dac-bits", "16", "--anti-windup",
+                                        "back-calculation", "--tracking-time", "3"});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject d = run.json()["digital"].toObject();
+    QCOMPARE(d["controller_ts"].toDouble(), 0.02);
+    QCOMPARE(d["discretization"].toString(), QString("backward-euler"));
+    QCOMPARE(d["anti_windup"].toString(), QString("back-calculation"));
+    QCOMPARE(d["delay_samples"].toInt(), 1);
+    QCOMPARE(d["dac_bits"].toInt(), 16);
+    const auto preset = *xyt::findGtPreset("upper-base");
+    const auto design = xyt::designGuilleminTruxal(preset.plant, preset.omegaNRadPerSec, preset.kp);
+    const xyt::DigitalPi pi = xyt::digitalPi(design.kp, design.ki, 0.02, xyt::PiDiscretization::BackwardEuler,
+                                             xyt::AntiWindup::BackCalculation, 3.0);
+    xyt::SampledDataOptions o;
+    o.delaySamples = 1;
+    o.encoderResolution = 0.001;
+    o.dacBits = 16;
+    o.umaxVolts = 2.5;
+    const xyt::CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
+    const auto times = xyt::sampleTimes(160.0, 0.02);
+    const auto core = xyt::simulateSampledPi(preset.plant.transferFunction(), pi,
+                                             xyt::sampled([&](double t) { return cubic.position(t); }, times), o,
+                                             preset.modelUnitsPerPositionUnit);
+    const xyt::TrackingMetrics m = xyt::trackingMetrics(core.result);
+    QCOMPARE(d["samples"].toDouble(), static_cast<double>(times.size()));
+    XYT_COMPARE_NEAR(d["tracking"]["rmse"].toDouble(), m.rmse, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(d["tracking"]["max_abs_u"].toDouble(), m.maxAbsU, 1e-15, 0.0);
+    QCOMPARE(d["poles"].toArray().size(), 3 + 2 + 1); // plant, PI (I, e[k-1]), one delay sample
+    QVERIFY(d["warnings"].isArray());
+    // Digital options without --digital are refused naming the option.
+    const auto refused = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf",
+                                            "600", "--tf", "130", "--dac-bits", "16"});
+    QCOMPARE(refused.exitCode, 2);
+    QVERIFY2(refused.err.contains("--dac-bits: needs --digital"), refused.err.constData());
 }
 
 void TstCliGt::unstableDesignIsNotAnError() {

@@ -58,6 +58,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     XYT_FUZZ_REQUIRE_FINITE(s.controllerTsSeconds);
     XYT_FUZZ_REQUIRE_FINITE(s.trajectory.effectiveDurationSeconds());
     XYT_FUZZ_REQUIRE_FINITE(s.trajectory.dtSeconds);
+    // The digital implementation (issue 12): within the ranges the sampled-data loop accepts.
+    XYT_FUZZ_REQUIRE_FINITE(s.implementation.encoderResolutionMm);
+    XYT_FUZZ_REQUIRE_FINITE(s.implementation.trackingTimeSeconds);
+    XYT_FUZZ_REQUIRE(s.implementation.encoderResolutionMm >= 0.0 && s.implementation.trackingTimeSeconds >= 0.0);
+    XYT_FUZZ_REQUIRE(s.implementation.delaySamples >= 0 && s.implementation.delaySamples <= 100);
+    XYT_FUZZ_REQUIRE(s.implementation.dacBits >= 0 && s.implementation.dacBits <= 32);
     for (const auto& snapshot : s.snapshots)
         for (const auto& axis : snapshot.axes)
             requireFinite(axis);

@@ -81,6 +81,20 @@ Session gcodeProgram() {
     return s;
 }
 
+/// The digital implementation of issue 12 at its least ideal: a coarse encoder, an 8-bit DAC,
+/// two samples of delay, back-calculation, a slow controller, and one axis by pole placement.
+Session digitalImplementation() {
+    Session s = shortMove();
+    s.axes[1].method = DesignMethod::PolePlacementZpetc;
+    s.controllerTsSeconds = 0.05;
+    s.implementation.encoderResolutionMm = 0.1;
+    s.implementation.dacBits = 8;
+    s.implementation.delaySamples = 2;
+    s.implementation.antiWindup = AntiWindup::BackCalculation;
+    s.snapshots.push_back(Session::paperDefault().snapshot("ideal"));
+    return s;
+}
+
 } // namespace
 
 class TstMenuActions : public QObject {
@@ -105,7 +119,8 @@ void TstMenuActions::everyActionInEveryState_data() {
     const QList<QPair<const char*, Session>> states = {
         {"default", Session::paperDefault()},      {"two snapshots", withTwoSnapshots()},
         {"both pole placement", bothPolePlacement()}, {"one axis invalid", oneAxisInvalid()},
-        {"unstable", unstable()}, {"gcode program", gcodeProgram()}};
+        {"unstable", unstable()}, {"gcode program", gcodeProgram()},
+        {"digital implementation", digitalImplementation()}};
     for (const auto& [name, state] : states)
         for (const bool modified : {false, true})
             for (const bool accept : {false, true})

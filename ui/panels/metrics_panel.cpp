@@ -42,6 +42,7 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
                                      tr("settle time (s)"), tr("final e (mm)"),
                                      tr("overrun (mm)"), QString(),
                                      tr("settling 2 % (s)"), tr("overshoot (%)"), QString(),
+                                     tr("RMSE (mm)"), tr("max |e| (mm)"), tr("min ζ (z-plane)"), QString(),
                                      tr("gain margin (dB)"), tr("phase margin (°)"),
                                      tr("delay margin (s)"), tr("Ms = max |S|")});
     table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
@@ -60,6 +61,7 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         {TrackingGroup, tr("Tracking the trajectory")},
         {MoveGroup, tr("Move and settle (point-to-point)")},
         {StepGroup, tr("Unit step, as each axis runs")},
+        {DigitalGroup, tr("Digital implementation")},
         {MarginGroup, tr("Loop margins (open loop L)")}};
     for (const auto& [row, title] : groups) {
         table_->setSpan(row, 0, 1, 3);
@@ -76,6 +78,12 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         tr("Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the "
            "step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the "
            "step of the feedback loop Kf·B/T alone."));
+    table_->item(DigitalGroup, 0)->setToolTip(
+        tr("The controller at its sample time with the hold, the encoder and DAC quantization, the "
+           "limit, the anti-windup and the delay of the Digital implementation settings. An amber "
+           "figure differs from the design's above by more than 5 %."));
+    table_->verticalHeaderItem(DigitalDamping)->setToolTip(
+        tr("Least damping ratio of the digital closed loop's poles (s = ln z / Ts); the design's in the tooltip"));
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     // Columns as wide as their figures (nothing cut to "0.000562..."); the spec column takes
     // what is left.
@@ -88,7 +96,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     // One line per row, all the same height: fixed, so that a new figure does not make the
     // view measure every row again (ResizeToContents cost a third of a slider step's repaint).
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
-    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
+    // fontMetrics().height() + 2: the text's line with a pixel either side, so that
+    // the digital implementation's group fits a 1366x768 window with the others (issue 12).
+    table_->verticalHeader()->setMinimumSectionSize(table_->fontMetrics().height() + 2);
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 2);
     table_->setAccessibleName(tr("Metrics"));
     // Exactly as tall as its rows (they are fixed): not AdjustToContents, which asks the whole
     // window for a new layout at every figure that changes.
@@ -339,6 +350,14 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                 for (int r : {SettleAfterMove, FinalError, FinalOvershoot})
                     values[r] = tr("—");
             }
+            for (int r : {DigitalRmse, DigitalMaxError, DigitalDamping})
+                values[r] = tr("—");
+            if (a.digital) {
+                const TrackingMetrics& dm = a.digital->metrics;
+                values[DigitalRmse] = displayNumber(dm.rmse);
+                values[DigitalMaxError] = displayNumber(dm.maxAbsError);
+                values[DigitalDamping] = displayNumber(a.digital->minDamping, 3);
+            }
             values[Settling] = a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
             values[Overshoot] = a.step.stable ? displayNumber(a.step.overshootPct) : tr("unstable");
         }
@@ -374,6 +393,25 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                         displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
                                                                         a.moveSettle->moveEndSeconds)),
                                         cell.toolTip);
+            if (a.ok && a.digital && (r == DigitalRmse || r == DigitalMaxError)) {
+                const double design = r == DigitalRmse ? a.metrics.rmse : a.metrics.maxAbsError;
+                const TrackingMetrics& dm = a.digital->metrics;
+                const double digital = r == DigitalRmse ? dm.rmse : dm.maxAbsError;
+                const bool differs = !(std::abs(digital - design) <= 0.05 * std::abs(design));
+                if (differs)
+                    cell.color = kDiffers;
+                cell.toolTip = tr("design %1, digital %2%3").arg(displayNumber(design), displayNumber(digital),
+                                                                 differs ? tr(" (differs by more than 5 %)") : QString());
+            }
+            if (r == DigitalDamping && a.ok && a.digital) {
+                const bool low = a.digital->minDamping < 0.8 * a.digital->designMinDamping;
+                if (low)
+                    cell.color = kFail;
+                cell.toolTip = tr("digital loop %1, design %2 at Ts = %3 s")
+                                   .arg(displayNumber(a.digital->minDamping, 3),
+                                        displayNumber(a.digital->designMinDamping, 3))
+                                   .arg(a.digital->tsSeconds);
+            }
             if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
                 cell.toolTip = tr("* not applied: the discrete loop of paper 001 is simulated "
                                   "without a limit; |u| would be clipped this long");

@@ -22,7 +22,9 @@ namespace xyt::ui {
 
 /// The figures of both axes side by side against the editable specification, in labelled
 /// groups: the tracking of the trajectory (RMSE, max error, max |u|, saturation, ITAE, ZPETC
-/// improvement) and the unit step of the closed loop (settling, overshoot), with a pass/fail
+/// improvement), the unit step of the closed loop (settling, overshoot), the digital
+/// implementation (its RMSE and max error, marked where they differ from the design's
+/// by more than 5 %, and the least damping of its z-plane poles), with a pass/fail
 /// mark on each judged figure. Every figure has four significant digits; values that are not
 /// finite show as "n/a", never as NaN.
 class MetricsPanel : public QWidget {
@@ -44,9 +46,11 @@ public:
     enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
                MoveGroup, SettleAfterMove, FinalError, FinalOvershoot,
                StepGroup, Settling, Overshoot,
+               DigitalGroup, DigitalRmse, DigitalMaxError, DigitalDamping,
                MarginGroup, GainMargin, PhaseMargin, DelayMargin, PeakSensitivity, RowCount };
     static bool isGroupRow(int row) {
-        return row == TrackingGroup || row == MoveGroup || row == StepGroup || row == MarginGroup;
+        return row == TrackingGroup || row == MoveGroup || row == StepGroup || row == DigitalGroup ||
+               row == MarginGroup;
     }
     static bool isMarginRow(int row) { return row > MarginGroup; }
     /// Fills the loop-margin rows of column @p axis from the core's frequency analysis, judged
@@ -67,6 +71,7 @@ private:
     };
     static constexpr QRgb kPass = 0xff1b7f2a;
     static constexpr QRgb kFail = 0xffc62828;
+    static constexpr QRgb kDiffers = 0xffb26a00; ///< a digital figure that differs from the design's
     void setCell(int row, int column, const Cell& cell);
 
     QTableWidget* table_;

@@ -58,6 +58,17 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     reference_ = makeGraph(positionRect_, colors::reference, tr("reference r"), 1.2);
     reference_->setPen(QPen(colors::reference, 1.2, Qt::DashLine));
     snapshotOutput_ = makeGraph(positionRect_, colors::snapshot, tr("snapshot"), 1.2);
+    // The digital implementation under the design: a wide translucent band, created before the
+    // design's lines so that they are drawn over it. Where the two coincide the band is a halo
+    // around the design's line; where they differ it separates (a dashed line over the design
+    // hid the design where the two coincide).
+    QColor band = colors::digital;
+    band.setAlpha(110);
+    digitalOutput_ = makeGraph(positionRect_, band, tr("digital y"), 3.5);
+    digitalError_ = makeGraph(errorRect_, band, tr("digital e"), 3.5);
+    digitalControl_ = makeGraph(controlRect_, band, tr("digital u (held)"), 2.5);
+    for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
+        g->setVisible(false);
     output_ = makeGraph(positionRect_, colors::output, tr("output y"));
     error_ = makeGraph(errorRect_, colors::error, tr("error e"));
     clipUpper_ = makeGraph(controlRect_, Qt::transparent, tr("clipped"));
@@ -72,6 +83,7 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
         g->setPen(QPen(colors::snapshot, 1.4, Qt::DashLine));
     error_->setLayer(QStringLiteral("main")); // drawn over the snapshot's error
     control_ = makeGraph(controlRect_, colors::control, tr("control u"));
+    digitalControl_->setLineStyle(QCPGraph::lsStepLeft); // zero-order hold
     upperLimit_ = new QCPItemStraightLine(this);
     lowerLimit_ = new QCPItemStraightLine(this);
     for (QCPItemStraightLine* line : {upperLimit_, lowerLimit_}) {
@@ -116,7 +128,8 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
                             .arg(axisTitle, QString::fromStdString(axis.errorField),
                                  QString::fromStdString(axis.error)));
         title_->setTextColor(colors::error);
-        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_})
+        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_, digitalOutput_,
+                            digitalError_, digitalControl_})
             g->data()->clear();
         upperLimit_->setVisible(false);
         lowerLimit_->setVisible(false);
@@ -136,6 +149,24 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
     output_->data()->set(minMaxDecimated(run.t, run.y), true);
     error_->data()->set(minMaxDecimated(run.t, run.e), true);
     control_->data()->set(minMaxDecimated(run.t, run.u), true);
+    const bool digital = digitalVisible_ && axis.digital.has_value();
+    for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
+        g->setVisible(digital);
+    if (digital) {
+        const SampledDataRun& d = axis.digital->run;
+        digitalOutput_->data()->set(minMaxDecimated(d.result.t, d.result.y), true);
+        digitalError_->data()->set(minMaxDecimated(d.result.t, d.result.e), true);
+        digitalControl_->data()->set(minMaxDecimated(d.result.t, d.applied), true);
+        digitalOutput_->setName(axis.gt ? tr("digital y (Ts %1 s, held u)").arg(axis.digital->tsSeconds)
+                                        : tr("digital y (encoder, DAC, limit)"));
+        if (!legend_->hasItemWithPlottable(digitalOutput_))
+            legend_->addItem(new QCPPlottableLegendItem(legend_, digitalOutput_));
+    } else {
+        for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
+            g->data()->clear();
+        if (legend_->hasItemWithPlottable(digitalOutput_))
+            legend_->removeItem(legend_->itemWithPlottable(digitalOutput_));
+    }
     // Shade the clipped samples: a band from -1.1 umax to 1.1 umax, NaN (a gap) elsewhere.
     const double band = std::isfinite(umaxVolts) ? 1.1 * umaxVolts : 0.0;
     clipUpper_->data()->set(flagDecimated(run.t, run.clipped, band), true);
@@ -165,6 +196,8 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
     }
     replot(QCustomPlot::rpQueuedReplot);
 }
+
+void TimeResponsePlot::setDigitalVisible(bool visible) { digitalVisible_ = visible; }
 
 void TimeResponsePlot::showSnapshot(const SimulationResult& run, const QString& name) {
     const bool show = !run.t.empty();

@@ -26,6 +26,10 @@ public:
     /// axis' warnings and @p extraNotices (what the live view limited) in a notice box.
     void showAxis(const AxisEvaluation& axis, const QString& axisTitle, double umaxVolts,
                   const QStringList& extraNotices = {});
+    /// Whether showAxis overlays the digital implementation (AxisEvaluation::digital): y and e
+    /// at the controller's samples, and the command the plant receives (held, a staircase).
+    void setDigitalVisible(bool visible);
+    bool digitalVisible() const { return digitalVisible_; }
     /// A muted overlay of a stored design's output, error and control in all three panels, with
     /// a legend entry (an empty run hides it).
     void showSnapshot(const SimulationResult& run, const QString& name);
@@ -34,6 +38,9 @@ public:
     QCPGraph* outputGraph() const { return output_; }
     QCPGraph* errorGraph() const { return error_; }
     QCPGraph* controlGraph() const { return control_; }
+    QCPGraph* digitalOutputGraph() const { return digitalOutput_; }
+    QCPGraph* digitalErrorGraph() const { return digitalError_; }
+    QCPGraph* digitalControlGraph() const { return digitalControl_; }
     QCPGraph* snapshotOutputGraph() const { return snapshotOutput_; }
     QCPGraph* snapshotErrorGraph() const { return snapshotError_; }
     QCPGraph* snapshotControlGraph() const { return snapshotControl_; }
@@ -53,6 +60,10 @@ private:
     QCPGraph* control_;
     QCPGraph* snapshotControl_;
     QCPGraph* snapshotError_;
+    QCPGraph* digitalOutput_;
+    QCPGraph* digitalError_;
+    QCPGraph* digitalControl_;
+    bool digitalVisible_ = true;
     QCPLegend* legend_;
     std::unique_ptr<PlotNotice> notice_;
     std::unique_ptr<PlotNotice> controlNotice_;

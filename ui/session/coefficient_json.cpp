@@ -81,9 +81,21 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
                                 {"units", "ts in s, u in V"}});
         axes.append(axis);
     }
+    // The implementation the controllers were checked with (issue 12): the anti-windup travels
+    // with the coefficients, since the same coefficients wind up without it.
+    const ImplementationSettings& impl = session.implementation;
+    const QJsonObject implementation{
+        {"anti_windup", QString::fromStdString(antiWindupName(impl.antiWindup))},
+        {"tracking_time", finite(impl.trackingTimeSeconds, "implementation.tracking_time")},
+        {"delay_samples", impl.delaySamples},
+        {"encoder_resolution_mm", finite(impl.encoderResolutionMm, "implementation.encoder_resolution")},
+        {"dac_bits", impl.dacBits},
+        {"note", "the PI runs in integrator form I[k] = I[k-1] + c0 e[k] + c1 e[k-1], u = sat(kp e + I), "
+                 "with this anti-windup; see the C export for the exact step"}};
     return {{"format", "xytune-coefficients"},
             {"version", 1},
             {"umax_volts", finite(session.umaxVolts, "umax")},
+            {"implementation", implementation},
             {"axes", axes}};
 }
 

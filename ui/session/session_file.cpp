@@ -6,6 +6,7 @@
 #include "core/io/json_duplicate_keys.h"
 #include "core/model/errors.h"
 #include "core/session/program_trajectory.h"
+#include "core/simulation/sampled_data.h"
 #include "core/simulation/trajectory.h"
 
 #include <QJsonArray>
@@ -97,6 +98,17 @@ public:
             out.push_back(a[i].toDouble());
         }
         return out;
+    }
+    /// A whole number in [lo, hi] (JSON numbers are doubles: 3.0 is accepted, 3.5 is not).
+    int integer(const QString& key, int lo, int hi, const QString& note = QString()) {
+        const QJsonValue v = get(key);
+        const double d = v.toDouble();
+        if (!v.isDouble() || !std::isfinite(d) || d != std::floor(d) || d < lo || d > hi)
+            throw FormatError{join(path_, key), QStringLiteral("must be an integer in %1..%2%3")
+                                                    .arg(lo)
+                                                    .arg(hi)
+                                                    .arg(note)};
+        return static_cast<int>(d);
     }
     ObjectReader child(const QString& key) { return ObjectReader(get(key), join(path_, key), warnings_); }
 
@@ -248,6 +260,48 @@ QJsonObject trajectoryToJson(const TrajectorySettings& t) {
             {"dt", t.dtSeconds}};
 }
 
+QJsonObject implementationToJson(const ImplementationSettings& i) {
+    return {{"delay_samples", i.delaySamples},
+            {"encoder_resolution", i.encoderResolutionMm},
+            {"dac_bits", i.dacBits},
+            {"anti_windup", QString::fromStdString(antiWindupName(i.antiWindup))},
+            {"tracking_time", i.trackingTimeSeconds}};
+}
+
+/// The implementation object (issue 12); every field is optional and keeps its default.
+ImplementationSettings readImplementation(ObjectReader r) {
+    ImplementationSettings i;
+    if (r.has("delay_samples"))
+        i.delaySamples = r.integer("delay_samples", 0, kMaxDelaySamples);
+    if (r.has("encoder_resolution")) {
+        i.encoderResolutionMm = r.number("encoder_resolution");
+        if (i.encoderResolutionMm < 0.0)
+            throw FormatError{join(r.path(), "encoder_resolution"),
+                              QStringLiteral("must be >= 0 (mm per count; 0: ideal encoder)")};
+    }
+    if (r.has("dac_bits"))
+        i.dacBits = r.integer("dac_bits", 0, 32, QStringLiteral(" (0: ideal DAC)"));
+    if (r.has("anti_windup")) {
+        const QString method = r.string("anti_windup");
+        bool found = false;
+        for (const AntiWindup a : {AntiWindup::None, AntiWindup::Clamp, AntiWindup::BackCalculation})
+            if (method == QString::fromStdString(antiWindupName(a))) {
+                i.antiWindup = a;
+                found = true;
+            }
+        if (!found)
+            throw FormatError{join(r.path(), "anti_windup"),
+                              QStringLiteral("must be \"none\", \"clamp\" or \"back-calculation\"")};
+    }
+    if (r.has("tracking_time")) {
+        i.trackingTimeSeconds = r.number("tracking_time");
+        if (i.trackingTimeSeconds < 0.0)
+            throw FormatError{join(r.path(), "tracking_time"), QStringLiteral("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
+    }
+    r.finish();
+    return i;
+}
+
 QJsonArray axesToJson(const std::array<AxisSettings, 2>& axes) {
     return QJsonArray{axisToJson(axes[0]), axisToJson(axes[1])};
 }
@@ -392,6 +446,7 @@ QJsonObject sessionToJson(const Session& s) {
             {"umax", s.umaxVolts},
             {"controller_ts", s.controllerTsSeconds},
             {"pi_discretization", QString::fromStdString(discretizationName(s.piDiscretization))},
+            {"implementation", implementationToJson(s.implementation)},
             {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
                                           {"max_overshoot_pct", s.spec.maxOvershootPct},
                                           {"max_error_pct", s.spec.maxErrorPct},
@@ -455,6 +510,9 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             s.piDiscretization = PiDiscretization::BackwardEuler;
         else
             throw FormatError{"pi_discretization", QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
+        // The digital implementation (issue 12): optional, files written before it get the defaults.
+        if (r.has("implementation"))
+            s.implementation = readImplementation(r.child("implementation"));
         {
             ObjectReader spec = r.child("specification");
             s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");

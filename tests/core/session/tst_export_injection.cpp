@@ -10,6 +10,8 @@
 #include "core/io/text_escape.h"
 
 #include <QFile>
+#include "tests/support/core_checks.h"
+
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -88,6 +90,7 @@ private slots:
     void commentTextKeepsOrdinaryLabels();
     void terminalTextEscapesControls();
     void nonFiniteNumbersAreRefused();
+    void axisIdsThatCannotNameAFunctionAreRefused();
 };
 
 void TstExportInjection::octaveScriptCarriesNoCode() {
@@ -188,6 +191,20 @@ void TstExportInjection::nonFiniteNumbersAreRefused() {
         QCOMPARE(QString::fromStdString(error.field()), QStringLiteral("axes[0]"));
     }
     QVERIFY(written.empty()); // refused before the first byte
+}
+
+// Issue 12: the axis id names the exported C functions (xyt_<id>_step). A session built in
+// code (the file loader already refuses them) with an id that is not 1 to 16 lower-case letters
+// or digits, or two equal ids, is refused naming the field, before any code is written.
+void TstExportInjection::axisIdsThatCannotNameAFunctionAreRefused() {
+    for (const char* id : {"x(void);int evil", "X", "", "yyyyyyyyyyyyyyyyy", "x y"}) {
+        Session s = Session::paperDefault();
+        s.axes[1].id = id; // the last but one has 17 characters
+        QCOMPARE(test::invalidInputField([&] { exportCHeader(s, evaluateSession(s)); }), QString("axes[1].id"));
+    }
+    Session same = Session::paperDefault();
+    same.axes[1].id = "x";
+    QCOMPARE(test::invalidInputField([&] { exportCHeader(same, evaluateSession(same)); }), QString("axes[1].id"));
 }
 
 QTEST_APPLESS_MAIN(TstExportInjection)

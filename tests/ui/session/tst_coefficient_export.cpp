@@ -113,6 +113,8 @@ void TstCoefficientExport::jsonParsesBack() {
     const QJsonObject json = QJsonDocument::fromJson(
         QJsonDocument(ui::coefficientsJson(s, e)).toJson()).object();
     QCOMPARE(json["format"].toString(), QString("xytune-coefficients"));
+    // Issue 12: the anti-windup the controller ships with travels with the coefficients.
+    QCOMPARE(json["implementation"].toObject()["anti_windup"].toString(), QString("clamp"));
     const QJsonArray axes = json["axes"].toArray();
     QCOMPARE(axes.size(), 2);
     const QJsonObject x = axes[0].toObject();

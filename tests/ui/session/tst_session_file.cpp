@@ -32,6 +32,7 @@ private slots:
     void malformed();
     void unknownFieldsAreReported();
     void filesWithoutMarginMinimaLoad();
+    void filesWithoutImplementationLoad();
     void roundTripGcode();
     void filesWithoutGcodeLoad();
     void badGcodeFields_data();
@@ -118,6 +119,11 @@ void TstSessionFile::roundTripEveryField() {
     s.spec.maxOvershootPct = 1.5;
     s.spec.minPhaseMarginDeg = 47.25;
     s.spec.minGainMarginDb = 6.5;
+    s.implementation.delaySamples = 1;
+    s.implementation.encoderResolutionMm = 0.0005;
+    s.implementation.dacBits = 16;
+    s.implementation.antiWindup = AntiWindup::BackCalculation;
+    s.implementation.trackingTimeSeconds = 2.75;
     s.snapshots.push_back(s.snapshot("first"));
     s.snapshots.back().axes[0].gt.omegaNRadPerSec = 3.25;
     QTemporaryDir dir;
@@ -315,6 +321,26 @@ void TstSessionFile::malformed_data() {
                                             << "specification.min_phase_margin" << "must be 0 .. 180 degrees";
     QTest::newRow("negative gain margin") << "specification.min_gain_margin" << QJsonValue(-1)
                                           << "specification.min_gain_margin" << "must be >= 0 dB";
+    QTest::newRow("dac bits above 32") << "implementation.dac_bits" << QJsonValue(33)
+                                       << "implementation.dac_bits" << "must be an integer in 0..32 (0: ideal DAC)";
+    QTest::newRow("dac bits fractional") << "implementation.dac_bits" << QJsonValue(12.5)
+                                         << "implementation.dac_bits" << "must be an integer in 0..32 (0: ideal DAC)";
+    QTest::newRow("dac bits a string") << "implementation.dac_bits" << QJsonValue("16")
+                                       << "implementation.dac_bits" << "must be an integer in 0..32 (0: ideal DAC)";
+    QTest::newRow("negative delay") << "implementation.delay_samples" << QJsonValue(-1)
+                                    << "implementation.delay_samples" << "must be an integer in 0..100";
+    QTest::newRow("negative encoder") << "implementation.encoder_resolution" << QJsonValue(-0.001)
+                                      << "implementation.encoder_resolution"
+                                      << "must be >= 0 (mm per count; 0: ideal encoder)";
+    QTest::newRow("encoder NaN") << "implementation.encoder_resolution" << QJsonValue("NaN")
+                                 << "implementation.encoder_resolution" << "must be a finite number";
+    QTest::newRow("unknown anti-windup") << "implementation.anti_windup" << QJsonValue("integrator-reset")
+                                         << "implementation.anti_windup"
+                                         << "must be \"none\", \"clamp\" or \"back-calculation\"";
+    QTest::newRow("negative tracking time") << "implementation.tracking_time" << QJsonValue(-2)
+                                            << "implementation.tracking_time" << "must be >= 0 (s; 0: Tt = Ti = kp/ki)";
+    QTest::newRow("implementation not an object") << "implementation" << QJsonValue(1)
+                                                  << "implementation" << "must be an object";
     QTest::newRow("duration too long") << "trajectory.duration" << QJsonValue(1e12)
                                        << "trajectory.duration"
                                        << QStringLiteral("needs 1e+14 samples at this dt; the limit is %1 on this machine")
@@ -331,6 +357,25 @@ void TstSessionFile::malformed() {
     QVERIFY(!r.ok);
     QCOMPARE(r.errorPath, expectedPath);
     QCOMPARE(r.error, expectedReason);
+}
+
+void TstSessionFile::filesWithoutImplementationLoad() {
+    // Files written before issue 12 have no implementation object, and a hand-written one may
+    // give only some of its fields: the rest keep the defaults (ideal encoder and DAC, no delay,
+    // clamping anti-windup).
+    QJsonObject root = defaultJson();
+    QVERIFY(root.contains("implementation"));
+    root.remove("implementation");
+    auto r = sessionFromJson(root);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session.implementation == ImplementationSettings{});
+    QCOMPARE(r.session.implementation.antiWindup, AntiWindup::Clamp);
+    QVERIFY(r.warnings.isEmpty());
+    root["implementation"] = QJsonObject{{"dac_bits", 12}};
+    r = sessionFromJson(root);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QCOMPARE(r.session.implementation.dacBits, 12);
+    QCOMPARE(r.session.implementation.delaySamples, 0);
 }
 
 void TstSessionFile::filesWithoutMarginMinimaLoad() {
