@@ -193,7 +193,7 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
             d.designPoles.push_back(std::exp(p * pi.tsSeconds));
         sortRoots(d.designPoles);
         finishDigital(session, d, out);
-        out.digital = std::move(d);
+        out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
         out.warnings.push_back("no digital implementation: " + std::string(e.what()));
     }
@@ -300,7 +300,7 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         d.designPoles = sampledRstLoopPoles(*out.pp, 0);
         d.designMinDamping = minDigitalDamping(d.designPoles);
         finishDigital(session, d, out);
-        out.digital = std::move(d);
+        out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
         out.warnings.push_back("no digital implementation: " + std::string(e.what()));
     }

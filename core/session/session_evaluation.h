@@ -106,7 +106,9 @@ struct AxisEvaluation {
     SpecificationCheck check;
     std::vector<std::string> warnings;
     /// The digital implementation of the axis; unset when the axis could not be designed.
-    std::optional<DigitalEvaluation> digital;
+    /// Shared (its runs hold megabytes at the default length, and evaluations are copied into
+    /// every view on each slider step): set once by the evaluation, never changed.
+    std::shared_ptr<const DigitalEvaluation> digital;
 
     /// The closed loop of the design (G_R for GT, Kf B / T for pole placement).
     TransferFunction closedLoop() const;

@@ -69,7 +69,7 @@ void TstDigitalViews::init() {
 void TstDigitalViews::timePlotOverlaysTheDigitalRun() {
     window_->lowerTabs()->setCurrentWidget(window_->timePlot());
     const AxisEvaluation& e = session_->axisEvaluation(0);
-    QVERIFY(e.digital.has_value());
+    QVERIFY(e.digital != nullptr);
     const SampledDataRun& run = e.digital->run;
     TimeResponsePlot* plot = window_->timePlot();
     QVERIFY(plot->digitalOutputGraph()->visible());

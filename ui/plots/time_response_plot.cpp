@@ -149,7 +149,7 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
     output_->data()->set(minMaxDecimated(run.t, run.y), true);
     error_->data()->set(minMaxDecimated(run.t, run.e), true);
     control_->data()->set(minMaxDecimated(run.t, run.u), true);
-    const bool digital = digitalVisible_ && axis.digital.has_value();
+    const bool digital = digitalVisible_ && axis.digital != nullptr;
     for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
         g->setVisible(digital);
     if (digital) {

@@ -271,7 +271,7 @@ void TestSampledData::quantizationLimitCycleIsFoundAndWarned() {
     const SessionEvaluation coarse = evaluateSession(s);
     const AxisEvaluation& x = coarse.axes[0];
     QVERIFY(x.ok);
-    QVERIFY(x.digital.has_value());
+    QVERIFY(x.digital != nullptr);
     QVERIFY(x.digital->limitCycle.has_value());
     qInfo("limit cycle: %.4g mm peak to peak, %d turns", x.digital->limitCycle->peakToPeak, x.digital->limitCycle->turns);
     QVERIFY(x.digital->limitCycle->peakToPeak >= 0.05 - 1e-12); // at least one count
@@ -320,7 +320,7 @@ void TestSampledData::idealRstLoopIsTheDiscreteLoop() {
 void TestSampledData::dampingWarningAtALongSampleTime() {
     Session s = Session::paperDefault();
     const SessionEvaluation ok = evaluateSession(s);
-    QVERIFY(ok.axes[0].digital.has_value());
+    QVERIFY(ok.axes[0].digital != nullptr);
     QVERIFY(!hasWarning(ok.axes[0], "the digital loop at Ts"));
     XYT_COMPARE_NEAR(ok.axes[0].digital->minDamping, ok.axes[0].digital->designMinDamping, 0.05, 0.0);
     s.controllerTsSeconds = 2.0;
