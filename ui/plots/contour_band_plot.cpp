@@ -112,7 +112,8 @@ void ContourBandPlot::showResult(const ContourRobustnessResult& r) {
         return QCPCurveData(0.0, r.base[j].x + m * err * r.normal[j].x, r.base[j].y + m * err * r.normal[j].y);
     };
     const QColor band = colors::output;
-    for (const auto& [first, last] : pieces(r.base)) {
+    for (const auto& piece : pieces(r.base)) {
+        const std::size_t first = piece.first, last = piece.second; // (clang 14 cannot capture bindings)
         // A band is one closed polygon: its upper edge forward, its lower edge back.
         const auto polygon = [&](const std::vector<double>& lo, const std::vector<double>& hi, int alpha) {
             QVector<QCPCurveData> d;
