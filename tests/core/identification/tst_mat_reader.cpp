@@ -129,7 +129,8 @@ void TstMatReader::refusesWhatIsNotAVector() {
         {"name", "variable 'name' is of class char, not numeric"},
         {"flag", "variable 'flag' is logical"},
     };
-    for (const auto& [name, expected] : cases) {
+    for (const auto& [variable, expected] : cases) {
+        const std::string name = variable;  // a lambda may not capture a structured binding (clang 14)
         const QString message = xyt::test::invalidInputMessage([&] { xyt::readMat(path, {name}); });
         QVERIFY2(message.startsWith(QString::fromStdString(path) + ": " + expected), qPrintable(message));
     }
