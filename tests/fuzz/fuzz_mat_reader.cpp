@@ -13,6 +13,13 @@
 // libhdf5 reports an error, so ASan is told to return NULL too (allocator_may_return_null)
 // instead of aborting. Requests libmatio makes from sizes a file claims are bounded by our
 // own checks (mat_reader.cpp) and are not covered by either exception.
+// A third defect of libhdf5 1.10.8 cannot be worked around from outside: on some corrupt v7.3
+// files its attribute decoder (H5O__attr_open_by_name, reached from libmatio's H5Literate when
+// listing the variables) reads a few bytes past one of its own heap buffers. Without ASan that
+// read is silent and the file is refused; under ASan it aborts the run. So when this harness is
+// built with AddressSanitizer (the libFuzzer build), inputs with a v7.3 header, which go to
+// libhdf5, are skipped; the replay build (no ASan, ctest replay_fuzz_mat_reader) still reads the
+// committed v7.3 seeds and regressions, and tst_mat_reader reads v7.3 files under ASan.
 #include "tests/fuzz/fuzz_experiment_support.h"
 
 #include "core/identification/mat_reader.h"
@@ -26,7 +33,32 @@
 extern "C" const char* __asan_default_options() { return "allocator_may_return_null=1"; }
 extern "C" const char* __lsan_default_suppressions() { return "leak:libhdf5_serial.so\n"; }
 
+namespace {
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define XYT_FUZZ_UNDER_ASAN 1
+#endif
+#endif
+
+/// A MAT v7.3 header (version 0x0200 in either byte order): the file goes to libhdf5.
+bool isV73Header(const std::uint8_t* h, std::size_t size) {
+    if (size < 128)
+        return false;
+    if (h[126] == 'I' && h[127] == 'M')
+        return h[124] == 0x00 && h[125] == 0x02;
+    if (h[126] == 'M' && h[127] == 'I')
+        return h[124] == 0x02 && h[125] == 0x00;
+    return false;
+}
+
+} // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+#ifdef XYT_FUZZ_UNDER_ASAN
+    if (isV73Header(data, size))
+        return 0;
+#endif
     char path[] = "/tmp/xyt_fuzz_mat_XXXXXX";
     const int fd = ::mkstemp(path);
     if (fd < 0)
