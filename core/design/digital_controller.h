@@ -86,7 +86,30 @@ struct DigitalPiState {
  * Unclipped, all three give the same bits. The exported C code (exportCHeader) performs the
  * same operations in the same order.
  */
-double stepDigitalPi(const DigitalPi& pi, DigitalPiState& state, double error, double umaxVolts);
+inline double stepDigitalPi(const DigitalPi& pi, DigitalPiState& state, double error, double umaxVolts) {
+    const double increment = pi.c0 * error + pi.c1 * state.previousError;
+    const double candidate = state.integrator + increment;
+    double v = pi.kp * error + candidate;
+    double u = v > umaxVolts ? umaxVolts : (v < -umaxVolts ? -umaxVolts : v);
+    switch (pi.antiWindup) {
+    case AntiWindup::None:
+        state.integrator = candidate;
+        break;
+    case AntiWindup::Clamp:
+        if (u != v && increment * v > 0.0) {
+            v = pi.kp * error + state.integrator; // integrator held
+            u = v > umaxVolts ? umaxVolts : (v < -umaxVolts ? -umaxVolts : v);
+        } else {
+            state.integrator = candidate;
+        }
+        break;
+    case AntiWindup::BackCalculation:
+        state.integrator = candidate + pi.trackingGain * (u - v);
+        break;
+    }
+    state.previousError = error;
+    return u;
+}
 
 /**
  * Runs the difference equation N/D (ascending z^-1, D[0] != 0) on @p input from rest.

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace xyt {
@@ -23,12 +24,6 @@ void validateSampledDataOptions(const SampledDataOptions& options) {
         throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
     if (options.dacBits > 0 && !std::isfinite(options.umaxVolts))
         throw InvalidInput("dac_bits", "a DAC needs a finite actuator limit umax (its full scale)");
-}
-
-double encoderReading(double positionMm, double resolutionMm) {
-    if (resolutionMm == 0.0)
-        return positionMm;
-    return resolutionMm * std::floor(positionMm / resolutionMm + 0.5);
 }
 
 double dacOutput(double volts, int bits, double umaxVolts) {
@@ -102,6 +97,88 @@ private:
 
 } // namespace
 
+namespace {
+
+/// dacOutput with 2^bits, q and the code range computed once for a run (the same values, so the
+/// same results).
+struct Dac {
+    Dac(int bits, double umaxVolts) : bits(bits) {
+        if (bits > 0) {
+            const double levels = std::ldexp(1.0, bits);
+            q = 2.0 * umaxVolts / levels;
+            half = levels / 2.0;
+        }
+    }
+    double operator()(double volts) const {
+        if (bits == 0)
+            return volts;
+        return std::clamp(std::floor(volts / q + 0.5), -half, half - 1.0) * q;
+    }
+    int bits;
+    double q = 0.0, half = 0.0;
+};
+
+/// The plant state: a fixed array for the orders the workbench meets (N > 0, so that the sums
+/// unroll), a vector otherwise (N = 0).
+template <int N>
+struct PlantState {
+    explicit PlantState(int) {}
+    std::array<double, static_cast<std::size_t>(N)> x{}, next{};
+    static constexpr int size(int) { return N; }
+};
+template <>
+struct PlantState<0> {
+    explicit PlantState(int n) : x(static_cast<std::size_t>(n), 0.0), next(x.size()) {}
+    std::vector<double> x, next;
+    static int size(int n) { return n; }
+};
+
+/// The loop of simulateSampledPi for a plant of N states (0: any).
+template <int N>
+void runSampledPi(const SampledPlant& p, const DigitalPi& pi, const std::vector<double>& reference,
+                  const SampledDataOptions& options, double unit, SampledDataRun& run) {
+    const int ns = PlantState<N>::size(p.states);
+    const std::size_t n = reference.size();
+    PlantState<N> plant(p.states);
+    auto& x = plant.x;
+    auto& next = plant.next;
+    DigitalPiState state;
+    DelayLine delay(options.delaySamples, 0.0);
+    const Dac dac(options.dacBits, options.umaxVolts);
+    const double* phi = p.phi.data();
+    const double* gamma = p.gamma.data();
+    const double* c = p.c.data();
+    SimulationResult& out = run.result;
+    for (std::size_t k = 0; k < n; ++k) {
+        double y = 0.0;
+        for (int j = 0; j < ns; ++j)
+            y += c[j] * x[static_cast<std::size_t>(j)];
+        const double position = y / unit;
+        const double measured = encoderReading(position, options.encoderResolution);
+        const double error = (reference[k] - measured) * unit;
+        const double u = stepDigitalPi(pi, state, error, options.umaxVolts);
+        const double applied = delay.push(dac(u));
+        out.t[k] = static_cast<double>(k) * pi.tsSeconds;
+        out.r[k] = reference[k];
+        out.y[k] = position;
+        out.e[k] = reference[k] - position;
+        out.u[k] = u;
+        out.clipped[k] = std::abs(u) >= options.umaxVolts;
+        run.measured[k] = measured;
+        run.applied[k] = applied;
+        for (int i = 0; i < ns; ++i) {
+            double acc = 0.0;
+            for (int j = 0; j < ns; ++j)
+                acc += phi[i * ns + j] * x[static_cast<std::size_t>(j)];
+            acc += gamma[i] * applied;
+            next[static_cast<std::size_t>(i)] = acc;
+        }
+        x.swap(next);
+    }
+}
+
+} // namespace
+
 SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi& pi,
                                  const std::vector<double>& reference, const SampledDataOptions& options,
                                  double modelUnitsPerPositionUnit) {
@@ -109,39 +186,15 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
     requirePositive(modelUnitsPerPositionUnit, "model_unit_scale");
     const SampledPlant p = sampledPlant(plant, pi.tsSeconds);
     requireFiniteSamples(reference, reference.size());
-    const double unit = modelUnitsPerPositionUnit;
-    const std::size_t n = reference.size();
-    const int ns = p.states;
     SampledDataRun run;
-    resizeRun(run, n, pi.tsSeconds, options.umaxVolts);
-    std::vector<double> x(static_cast<std::size_t>(ns), 0.0), next(x.size());
-    DigitalPiState state;
-    DelayLine delay(options.delaySamples, 0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-        double y = 0.0;
-        for (int j = 0; j < ns; ++j)
-            y += p.c[static_cast<std::size_t>(j)] * x[static_cast<std::size_t>(j)];
-        const double position = y / unit;
-        const double measured = encoderReading(position, options.encoderResolution);
-        const double error = (reference[k] - measured) * unit;
-        const double u = stepDigitalPi(pi, state, error, options.umaxVolts);
-        const double applied = delay.push(dacOutput(u, options.dacBits, options.umaxVolts));
-        run.result.t[k] = static_cast<double>(k) * pi.tsSeconds;
-        run.result.r[k] = reference[k];
-        run.result.y[k] = position;
-        run.result.e[k] = reference[k] - position;
-        run.result.u[k] = u;
-        run.result.clipped[k] = std::abs(u) >= options.umaxVolts;
-        run.measured[k] = measured;
-        run.applied[k] = applied;
-        for (int i = 0; i < ns; ++i) {
-            double acc = 0.0;
-            for (int j = 0; j < ns; ++j)
-                acc += p.phi[static_cast<std::size_t>(i * ns + j)] * x[static_cast<std::size_t>(j)];
-            acc += p.gamma[static_cast<std::size_t>(i)] * applied;
-            next[static_cast<std::size_t>(i)] = acc;
-        }
-        x.swap(next);
+    resizeRun(run, reference.size(), pi.tsSeconds, options.umaxVolts);
+    // The same sums in the same order for every order: the fixed sizes only let them unroll.
+    switch (p.states) {
+    case 1: runSampledPi<1>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
+    case 2: runSampledPi<2>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
+    case 3: runSampledPi<3>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
+    case 4: runSampledPi<4>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
+    default: runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
     }
     return run;
 }

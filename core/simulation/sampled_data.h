@@ -7,6 +7,7 @@
 #include "core/model/transfer_function.h"
 #include "core/simulation/simulation.h"
 
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <limits>
@@ -48,7 +49,11 @@ inline constexpr int kMaxDelaySamples = 100;
 void validateSampledDataOptions(const SampledDataOptions& options);
 
 /// The encoder: res * floor(y / res + 1/2) (round half up), or y itself for res = 0.
-double encoderReading(double positionMm, double resolutionMm);
+inline double encoderReading(double positionMm, double resolutionMm) {
+    if (resolutionMm == 0.0)
+        return positionMm;
+    return resolutionMm * std::floor(positionMm / resolutionMm + 0.5);
+}
 
 /**
  * The DAC: a bipolar converter of 2^bits codes over +-umax, LSB q = 2 umax / 2^bits, codes
