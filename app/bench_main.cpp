@@ -28,6 +28,7 @@
 #include "core/identification/prediction_error.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
+#include "core/session/session_evaluation.h"
 #include "core/simulation/sampled_data.h"
 #include "app/bench_reference_loop.h"
 #include "ui/design_space_view.h"
@@ -368,6 +369,18 @@ int main(int argc, char* argv[]) {
                 const auto run =
                     xyt::simulateSampledPi(plant, pi, reference, quantized, lower.modelUnitsPerPositionUnit);
                 sink = sink + run.result.y.back();
+            });
+        }
+        // The part of a slider step that is the core's: the whole evaluation of the default
+        // session (both axes, the automatic duration, the digital implementation), and the
+        // choice of the duration alone (both axes simulated to tf).
+        {
+            const xyt::Session session = xyt::Session::paperDefault();
+            benchmark(filter, "session_evaluate_default", [&] {
+                sink = sink + xyt::evaluateSession(session).axes[0].metrics.rmse;
+            });
+            benchmark(filter, "session_run_duration_default", [&] {
+                sink = sink + xyt::chooseRunDuration(session).seconds;
             });
         }
         // Issue 18: the same run into a kept result (no allocation), against the plain scalar

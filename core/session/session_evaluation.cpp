@@ -10,8 +10,11 @@
 #include "core/simulation/zpetc_step.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <future>
 #include <limits>
+#include <system_error>
 
 namespace xyt {
 
@@ -345,11 +348,14 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             if (!out.moveSettle->reachedMoveEnd)
                 out.warnings.push_back("the run ends before the move does (tf): no settle figures");
         }
-        try {
-            out.margins = stabilityMargins(out.gt ? gtLoopTransferFunctions(*out.gt).openLoop
-                                                  : rstLoopTransferFunctions(*out.pp).openLoop);
-        } catch (const InvalidInput& e) {
-            out.warnings.push_back(std::string("no stability margins: ") + e.what());
+        // The move-only evaluation of chooseRunDuration (withDigital false) needs no margins.
+        if (withDigital) {
+            try {
+                out.margins = stabilityMargins(out.gt ? gtLoopTransferFunctions(*out.gt).openLoop
+                                                      : rstLoopTransferFunctions(*out.pp).openLoop);
+            } catch (const InvalidInput& e) {
+                out.warnings.push_back(std::string("no stability margins: ") + e.what());
+            }
         }
         std::optional<LoopMarginFigures> margins;
         if (out.margins)
@@ -364,6 +370,23 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
         out.error = e.reason();
         out.runRefused = dynamic_cast<const RunRefused*>(&e) != nullptr;
     }
+    return out;
+}
+
+/// Both axes over a duration. They are independent, so the y axis is evaluated on a second
+/// thread while the x axis is on this one: a slider step evaluates both, and two cores halve
+/// its time (issue 12's slider-to-repaint target). Sequential when no thread can be started.
+std::array<AxisEvaluation, 2> evaluateAxesOver(const Session& session, const RunDuration& duration,
+                                               bool withDigital = true) {
+    std::array<AxisEvaluation, 2> out;
+    std::future<AxisEvaluation> y;
+    try {
+        y = std::async(std::launch::async, [&] { return evaluateAxisOver(session, 1, duration, withDigital); });
+    } catch (const std::system_error&) {
+        y = {};
+    }
+    out[0] = evaluateAxisOver(session, 0, duration, withDigital);
+    out[1] = y.valid() ? y.get() : evaluateAxisOver(session, 1, duration, withDigital);
     return out;
 }
 
@@ -403,8 +426,7 @@ RunDuration chooseRunDuration(const Session& session) {
     moveOnly.seconds = t.tfSeconds;
     double need = 0.0;
     bool any = false;
-    for (int i = 0; i < 2; ++i) {
-        const AxisEvaluation a = evaluateAxisOver(session, i, moveOnly, false);
+    for (const AxisEvaluation& a : evaluateAxesOver(session, moveOnly, false)) {
         if (!a.ok || !a.step.stable || a.metrics.diverged || a.run.e.empty())
             continue; // it will not settle whatever the duration; its evaluation says why
         any = true;
@@ -445,8 +467,7 @@ AxisEvaluation evaluateAxis(const Session& session, int axisIndex) {
 SessionEvaluation evaluateSession(const Session& session) {
     SessionEvaluation out;
     out.duration = chooseRunDuration(session);
-    for (int i = 0; i < 2; ++i)
-        out.axes[static_cast<std::size_t>(i)] = evaluateAxisOver(session, i, out.duration);
+    out.axes = evaluateAxesOver(session, out.duration);
     const auto& x = out.axes[0];
     const auto& y = out.axes[1];
     if (session.trajectory.kind == TrajectoryKind::Circle && x.ok && y.ok) {

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// evaluateSession evaluates the y axis on a second thread while the x axis runs on the calling
+// one (and chooseRunDuration does the same for its move-only runs). Invariant checked here: the
+// result does not depend on the thread. Each axis of evaluateSession equals evaluateAxis of the
+// same session (which runs the axis on the calling thread) bit for bit, in its continuous run, its
+// digital run and its figures, for the default session (automatic cubic, both axes GT), a
+// quantized and delayed implementation, and a pole-placement + ZPETC axis on a circle; and
+// repeated evaluations are identical.
+#include "core/session/session_evaluation.h"
+
+#include <QTest>
+
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+using namespace xyt;
+
+namespace {
+
+std::uint64_t bits(double v) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+/// Every sample and figure of an axis evaluation that a view shows, bit for bit.
+std::vector<std::uint64_t> fingerprint(const AxisEvaluation& a) {
+    std::vector<std::uint64_t> f{a.ok ? 1u : 0u, bits(a.duration.seconds), bits(a.metrics.rmse),
+                                 bits(a.metrics.maxAbsError), bits(a.step.settlingTimeSeconds)};
+    for (const std::vector<double>* v : {&a.run.t, &a.run.r, &a.run.y, &a.run.e, &a.run.u})
+        for (double x : *v)
+            f.push_back(bits(x));
+    if (a.margins)
+        f.push_back(bits(a.margins->phaseMarginDeg));
+    if (a.digital) {
+        for (const std::vector<double>* v : {&a.digital->run.result.y, &a.digital->run.result.u,
+                                             &a.digital->run.measured, &a.digital->run.applied})
+            for (double x : *v)
+                f.push_back(bits(x));
+        f.push_back(bits(a.digital->metrics.rmse));
+        for (const auto& p : a.digital->poles) {
+            f.push_back(bits(p.real()));
+            f.push_back(bits(p.imag()));
+        }
+    }
+    return f;
+}
+
+Session quantizedSession() {
+    Session s = Session::paperDefault();
+    s.implementation.encoderResolutionMm = 0.001;
+    s.implementation.dacBits = 16;
+    s.implementation.delaySamples = 1;
+    s.axes[1].gt.omegaNRadPerSec = 3.0;
+    return s;
+}
+
+Session ppCircleSession() {
+    Session s = Session::paperDefault();
+    s.axes[0].method = DesignMethod::PolePlacementZpetc;
+    s.trajectory.kind = TrajectoryKind::Circle;
+    s.trajectory.radius = 30.0;
+    s.trajectory.omegaRadPerSec = 0.1;
+    s.trajectory.rampInSeconds = 0.0;
+    return s;
+}
+
+} // namespace
+
+class TstSessionEvaluation : public QObject {
+    Q_OBJECT
+private slots:
+    void axesDoNotDependOnTheThread_data();
+    void axesDoNotDependOnTheThread();
+};
+
+void TstSessionEvaluation::axesDoNotDependOnTheThread_data() {
+    QTest::addColumn<int>("which");
+    QTest::newRow("default: automatic cubic, GT") << 0;
+    QTest::newRow("quantized, delayed implementation") << 1;
+    QTest::newRow("pole placement + ZPETC on a circle") << 2;
+}
+
+void TstSessionEvaluation::axesDoNotDependOnTheThread() {
+    QFETCH(int, which);
+    const Session s = which == 0 ? Session::paperDefault() : which == 1 ? quantizedSession() : ppCircleSession();
+    const SessionEvaluation e = evaluateSession(s);
+    for (int i = 0; i < 2; ++i) {
+        const AxisEvaluation& a = e.axes[static_cast<std::size_t>(i)];
+        QVERIFY2(a.ok, a.error.c_str());
+        QVERIFY(a.digital); // the digital implementation was evaluated
+        QVERIFY(!a.run.y.empty());
+        QVERIFY(fingerprint(a) == fingerprint(evaluateAxis(s, i)));
+    }
+    QCOMPARE(e.duration.seconds, chooseRunDuration(s).seconds);
+    for (int repeat = 0; repeat < 3; ++repeat) {
+        const SessionEvaluation again = evaluateSession(s);
+        for (std::size_t i = 0; i < 2; ++i)
+            QVERIFY(fingerprint(again.axes[i]) == fingerprint(e.axes[i]));
+    }
+}
+
+QTEST_APPLESS_MAIN(TstSessionEvaluation)
+#include "tst_session_evaluation.moc"
