@@ -140,11 +140,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     auto* equationsBox = new QGroupBox(tr("Equations"), right);
     auto* equationsLayout = new QVBoxLayout(equationsBox);
     equations_ = new EquationsPanel(equationsBox);
-    auto* equationsScroll = new QScrollArea(equationsBox);
-    equationsScroll->setWidget(equations_);
-    equationsScroll->setWidgetResizable(true);
-    equationsScroll->setFrameShape(QFrame::NoFrame);
-    equationsLayout->addWidget(equationsScroll);
+    equationsLayout->addWidget(equations_);
     rightLayout->addWidget(metricsBox);
     rightLayout->addWidget(equationsBox, 1);
     right->setMinimumWidth(400);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/equations_panel.h"
 
+#include <QScrollBar>
+
 #include <cmath>
 
 namespace xyt::ui {
@@ -45,18 +47,31 @@ QString zInverseHtml(const Polynomial& p) {
     return first ? QStringLiteral("0") : out;
 }
 
-EquationsPanel::EquationsPanel(QWidget* parent) : QLabel(parent) {
-    setTextFormat(Qt::RichText);
-    setWordWrap(true);
-    setTextInteractionFlags(Qt::TextSelectableByMouse);
-    setAlignment(Qt::AlignTop | Qt::AlignLeft);
+EquationsPanel::EquationsPanel(QWidget* parent) : QTextBrowser(parent) {
+    setOpenLinks(false);
+    setFrameShape(QFrame::NoFrame);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the text wraps at the width
+    // The look of the label it replaces: the window's colour, not an edit field's white.
+    QPalette p = palette();
+    p.setColor(QPalette::Base, p.color(QPalette::Window));
+    setPalette(p);
+    document()->setDocumentMargin(2);
     setAccessibleName(tr("Design equations"));
+}
+
+void EquationsPanel::showHtml(const QString& html) {
+    if (html == html_)
+        return;
+    html_ = html;
+    const int scrolled = verticalScrollBar()->value();
+    setHtml(html);
+    verticalScrollBar()->setValue(scrolled); // the reader keeps their place as numbers change
 }
 
 void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation& axis) {
     const QString id = QString::fromStdString(settings.id).toUpper();
     if (!axis.ok) {
-        setText(tr("<b>Axis %1</b>: %2: %3")
+        showHtml(tr("<b>Axis %1</b>: %2: %3")
                     .arg(id, QString::fromStdString(axis.errorField), QString::fromStdString(axis.error)));
         return;
     }
@@ -81,11 +96,11 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
         } else {
             html += tr("no feedforward: w = r");
         }
-        setText(html);
+        showHtml(html);
         return;
     }
     if (!axis.gt) {
-        setText(tr("<b>Axis %1</b>").arg(id));
+        showHtml(tr("<b>Axis %1</b>").arg(id));
         return;
     }
     const GtDesign& d = *axis.gt;
@@ -105,7 +120,7 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
                      polynomialHtml(d.referenceModel.den(), "s"));
     if (!d.stable)
         html += tr("<br><span style='color:#d32f2f'><b>The closed loop is unstable.</b></span>");
-    setText(html);
+    showHtml(html);
 }
 
 } // namespace xyt::ui
