@@ -401,6 +401,18 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
     out << "% XY Tune: plant, controller and closed loop of each axis (generated script).\n"
            "% Runs in GNU Octave (with the control package) and in MATLAB.\n"
            "if exist('OCTAVE_VERSION', 'builtin')\n  pkg load control\nend\n\n";
+    // The implementation travels into every export (issue 12); this script simulates the linear
+    // loops, so it states the settings the C export runs instead of applying them.
+    const ImplementationSettings& impl = session.implementation;
+    out << "% Implementation the firmware runs (the C export applies it; the lsim runs below are the\n"
+           "% linear loops, without saturation or quantization): anti-windup "
+        << antiWindupName(impl.antiWindup);
+    if (impl.antiWindup == AntiWindup::BackCalculation)
+        out << " (tracking time " << num(impl.trackingTimeSeconds, "implementation.tracking_time")
+            << " s; 0: kp/ki)";
+    out << ",\n% computation delay " << impl.delaySamples << " samples, encoder "
+        << num(impl.encoderResolutionMm, "implementation.encoder_resolution") << " mm/count, DAC "
+        << impl.dacBits << " bits (0: ideal), umax " << num(session.umaxVolts, "umax") << " V.\n\n";
     // The run the evaluation chose (an automatic cubic includes the settle after tf).
     const double duration = evaluation.duration.seconds > 0.0 ? evaluation.duration.seconds
                                                               : session.trajectory.effectiveDurationSeconds();

@@ -136,6 +136,19 @@ void TstCoefficientExport::octaveScriptDefinesTheTfObjects() {
                                "plant_y = tf(24.440000000000001, [1 68.180000000000007 863 0]);",
                                "closed_loop_y", "lsim(closed_loop_y"})
         QVERIFY2(m.find(needle) != std::string::npos, needle);
+    // The implementation travels into the script (issue 12), in its default and another state.
+    QVERIFY(m.find("anti-windup clamp,\n% computation delay 0 samples, encoder 0 mm/count, DAC 0 bits") !=
+            std::string::npos);
+    Session q = s;
+    q.implementation.antiWindup = AntiWindup::BackCalculation;
+    q.implementation.trackingTimeSeconds = 0.25;
+    q.implementation.delaySamples = 1;
+    q.implementation.encoderResolutionMm = 0.001;
+    q.implementation.dacBits = 16;
+    const std::string mq = exportOctaveScript(q, evaluateSession(q));
+    for (const char* needle : {"anti-windup back-calculation (tracking time 0.25 s; 0: kp/ki),",
+                               "% computation delay 1 samples, encoder 0.001 mm/count, DAC 16 bits (0: ideal), umax 2.5 V."})
+        QVERIFY2(mq.find(needle) != std::string::npos, needle);
 }
 
 void TstCoefficientExport::csvColumnsAndRows() {
