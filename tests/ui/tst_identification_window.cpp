@@ -10,6 +10,7 @@
 #include "ui/main_window.h"
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
+#include "core/identification/preprocessing.h"
 #include "core/session/identified_axis.h"
 #include "ui/session/tuning_session.h"
 #include "tests/support/gui_checks.h"
@@ -18,6 +19,8 @@
 
 #include <QComboBox>
 #include <QFile>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
@@ -92,6 +95,7 @@ private slots:
     void continuousFitFromTheExampleLog();
     void designMenuOpensOneWindow();
     void destroyedWhileFitting();
+    void preprocessingReachesTheCore();
 
 private:
     void pickColumns();
@@ -404,6 +408,42 @@ void TstIdentificationWindow::destroyedWhileFitting() {
     window_.reset();
     QTest::qWait(20); // queued reports, if any, are discarded with their receiver
     QCOMPARE(session_->undoStack()->count(), 0);
+}
+
+void TstIdentificationWindow::preprocessingReachesTheCore() {
+    // The range, detrend and decimate boxes in a non-default state: the candidate is the core's
+    // identifyModel on selectTimeRange, removeTrends and decimate of the same record (the same
+    // calls in the same order, so the same bits; 1e-9 relative allows a different summation
+    // order on the worker thread), and the output plot draws the preprocessed record.
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    window_->rangeStartBox()->setValue(7.0);
+    window_->rangeEndBox()->setValue(35.0);
+    window_->detrendBox()->setChecked(true);
+    window_->decimateBox()->setValue(2);
+    QVERIFY(fitAndWait());
+    const auto* c = window_->selectedCandidate();
+    QVERIFY2(c, qPrintable(window_->statusText()));
+    const IoData data = decimate(removeTrends(selectTimeRange(coreRecord(path_), 7.0, 35.0)).data, 2);
+    QVERIFY(near(data.tsSeconds, 2 * kTs, 1e-12, 0.0));
+    IdentificationSpec spec;
+    spec.arx = {2, 3, 1};
+    const IdentifiedModel expected = identifyModel(data, nullptr, spec);
+    QCOMPARE(c->model.parameters.size(), expected.parameters.size());
+    for (std::size_t i = 0; i < expected.parameters.size(); ++i)
+        QVERIFY(near(c->model.parameters[i], expected.parameters[i], 1e-9, 1e-12));
+    QVERIFY(near(c->model.model.tsSeconds, 2 * kTs, 1e-12, 0.0));
+    QCOMPARE(window_->measuredGraph()->data()->size(), static_cast<int>(data.size()));
+    QVERIFY(near(window_->measuredGraph()->data()->constBegin()->key, data.startSeconds, 1e-12, 1e-12));
+    QVERIFY(data.startSeconds >= 7.0 - 1e-9);
+
+    // A range that ends before it starts is refused, naming the field; no stale candidate.
+    window_->rangeStartBox()->setValue(30.0);
+    window_->rangeEndBox()->setValue(10.0);
+    QVERIFY(fitAndWait());
+    QVERIFY2(window_->statusText().contains("range"), qPrintable(window_->statusText()));
+    QVERIFY(!window_->selectedCandidate());
+    QCOMPARE(window_->candidateTable()->rowCount(), 1);
 }
 
 QTEST_MAIN(TstIdentificationWindow)
