@@ -539,7 +539,7 @@ void MainWindow::refresh() {
     contourControls_->sync();
     metrics_->showEvaluation(s, session_->evaluation(), session_->liveNotice());
     for (int i = 0; i < 2; ++i)
-        metrics_->showMargins(i, session_->frequencyAnalysis(i));
+        metrics_->showMargins(i, session_->axisEvaluation(i));
     equations_->showAxis(a, e);
     QString state;
     for (int i = 0; i < 2; ++i) {

@@ -223,34 +223,49 @@ void MetricsPanel::fitColumns() {
     }
 }
 
-void MetricsPanel::showMargins(int axis, const AxisFrequencyAnalysis& f) {
-    const StabilityMargins& m = f.margins;
+namespace {
+
+/// Why an axis has no margins: its error, or the evaluation's "no stability margins" warning.
+QString noMarginsReason(const AxisEvaluation& e) {
+    if (!e.ok)
+        return QString::fromStdString(e.errorField + ": " + e.error);
+    for (const std::string& w : e.warnings)
+        if (w.rfind("no stability margins", 0) == 0)
+            return QString::fromStdString(w);
+    return QObject::tr("the axis has no loop to analyse");
+}
+
+} // namespace
+
+void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
+    const bool ok = e.ok && e.margins.has_value();
+    const StabilityMargins m = e.margins.value_or(StabilityMargins{});
     const auto shown = [](double v) {
         return std::isinf(v) && v > 0 ? QStringLiteral("∞") : displayNumber(v);
     };
     const QMap<int, QString> values = {
-        {GainMargin, f.ok ? shown(m.gainMarginDb) : tr("—")},
-        {PhaseMargin, f.ok ? shown(m.phaseMarginDeg) : tr("—")},
-        {DelayMargin, f.ok ? shown(m.delayMarginSeconds) : tr("—")},
-        {PeakSensitivity, f.ok ? shown(m.peakSensitivity) : tr("—")}};
+        {GainMargin, ok ? shown(m.gainMarginDb) : tr("—")},
+        {PhaseMargin, ok ? shown(m.phaseMarginDeg) : tr("—")},
+        {DelayMargin, ok ? shown(m.delayMarginSeconds) : tr("—")},
+        {PeakSensitivity, ok ? shown(m.peakSensitivity) : tr("—")}};
     const std::optional<SpecificationCheck>& check = marginChecks_[static_cast<std::size_t>(axis)];
     for (auto it = values.begin(); it != values.end(); ++it) {
         Cell cell{it.value()};
-        if (f.ok && check && (it.key() == GainMargin || it.key() == PhaseMargin)) {
+        if (ok && check && (it.key() == GainMargin || it.key() == PhaseMargin)) {
             const bool pass = it.key() == GainMargin ? check->gainMargin : check->phaseMargin;
             cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
             cell.color = pass ? kPass : kFail;
         }
-        if (f.ok && !m.closedLoopStable) {
+        if (ok && !m.closedLoopStable) {
             cell.color = kFail;
             cell.toolTip = tr("the closed loop is unstable: not a robustness measure");
-        } else if (f.ok && it.key() == GainMargin && std::isfinite(m.gainMarginOmegaRadPerSec)) {
+        } else if (ok && it.key() == GainMargin && std::isfinite(m.gainMarginOmegaRadPerSec)) {
             cell.toolTip = tr("at %1 rad/s (factor %2)").arg(displayNumber(m.gainMarginOmegaRadPerSec))
                                .arg(displayNumber(m.gainMarginFactor));
-        } else if (f.ok && it.key() == PhaseMargin && std::isfinite(m.phaseMarginOmegaRadPerSec)) {
+        } else if (ok && it.key() == PhaseMargin && std::isfinite(m.phaseMarginOmegaRadPerSec)) {
             cell.toolTip = tr("at %1 rad/s").arg(displayNumber(m.phaseMarginOmegaRadPerSec));
-        } else if (!f.ok) {
-            cell.toolTip = QString::fromStdString(f.error);
+        } else if (!ok) {
+            cell.toolTip = noMarginsReason(e);
         }
         setCell(it.key(), axis, cell);
     }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/session/axis_frequency.h"
 #include "core/session/session_evaluation.h"
 
 #include <QColor>
@@ -53,9 +52,11 @@ public:
                row == MarginGroup;
     }
     static bool isMarginRow(int row) { return row > MarginGroup; }
-    /// Fills the loop-margin rows of column @p axis from the core's frequency analysis, judged
-    /// (✓/✗) against the minima with the check of the last showEvaluation.
-    void showMargins(int axis, const AxisFrequencyAnalysis& analysis);
+    /// Fills the loop-margin rows of column @p axis from the axis' evaluation (its margins are
+    /// the ones the frequency analysis draws; the panel does not need the curves, so a slider
+    /// step does not compute them for the table), judged (✓/✗) against the minima with the
+    /// check of the last showEvaluation. Without margins: "—" with the reason as tooltip.
+    void showMargins(int axis, const AxisEvaluation& evaluation);
 
 signals:
     void specificationEdited(const Specification& spec);
