@@ -6,15 +6,14 @@
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/program_trajectory.h"
+#include "core/study/helper_thread.h"
 #include "core/simulation/trajectory.h"
 #include "core/simulation/zpetc_step.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <future>
 #include <limits>
-#include <system_error>
 
 namespace xyt {
 
@@ -373,20 +372,14 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
     return out;
 }
 
-/// Both axes over a duration. They are independent, so the y axis is evaluated on a second
-/// thread while the x axis is on this one: a slider step evaluates both, and two cores halve
-/// its time (issue 12's slider-to-repaint target). Sequential when no thread can be started.
+/// Both axes over a duration. They are independent, so the y axis is evaluated on the helper
+/// thread while the x axis is on this one (runAlongside): a slider step evaluates both, and two
+/// cores halve its time (issue 12's slider-to-repaint target).
 std::array<AxisEvaluation, 2> evaluateAxesOver(const Session& session, const RunDuration& duration,
                                                bool withDigital = true) {
     std::array<AxisEvaluation, 2> out;
-    std::future<AxisEvaluation> y;
-    try {
-        y = std::async(std::launch::async, [&] { return evaluateAxisOver(session, 1, duration, withDigital); });
-    } catch (const std::system_error&) {
-        y = {};
-    }
-    out[0] = evaluateAxisOver(session, 0, duration, withDigital);
-    out[1] = y.valid() ? y.get() : evaluateAxisOver(session, 1, duration, withDigital);
+    runAlongside([&] { out[1] = evaluateAxisOver(session, 1, duration, withDigital); },
+                 [&] { out[0] = evaluateAxisOver(session, 0, duration, withDigital); });
     return out;
 }
 
