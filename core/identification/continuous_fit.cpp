@@ -249,10 +249,7 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
         problem,
         Eigen::Vector3d(out.initialPlant.k0, out.initialPlant.a1, out.initialPlant.a2), options.search,
                            exactFitLoss(data.y));
-    out.status = r.status;
-    out.message = r.message;
-    out.iterations = r.iterations;
-    out.lossHistory = r.lossHistory;
+    takeSearchSummary(r, out);
     if (r.status == EstimationStatus::Failed)
         return out;
     out.plant = ThirdOrderPlant{r.theta(0), r.theta(1), r.theta(2)};

@@ -95,6 +95,16 @@ struct SearchOutcome {
 SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::VectorXd& theta0,
                                  const SearchOptions& options, double exactFitLoss = 0.0);
 
+/// Copies the search summary (status, message, iterations, loss history) of @p r into an
+/// estimator's result, which has members of those names.
+template <class Result>
+void takeSearchSummary(const SearchOutcome& r, Result& out) {
+    out.status = r.status;
+    out.message = r.message;
+    out.iterations = r.iterations;
+    out.lossHistory = r.lossHistory;
+}
+
 /// (1e-13 rms(y))^2: a mean squared residual this small is round-off of the data's magnitude.
 double exactFitLoss(const std::vector<double>& y);
 

@@ -289,10 +289,7 @@ PemResult estimate(const Structure& s, const std::string& name, const IoData& da
     };
     const SearchOutcome r = levenbergMarquardt(problem, pack(s, start), options.search,
                            exactFitLoss(data.y));
-    out.status = r.status;
-    out.message = r.message;
-    out.iterations = r.iterations;
-    out.lossHistory = r.lossHistory;
+    takeSearchSummary(r, out);
     if (r.status == EstimationStatus::Failed)
         return out;
     out.model = unpack(s, r.theta, data.tsSeconds);
