@@ -75,18 +75,17 @@ IoData record(const CliArgs& args, const QString& option, const QString& path) {
         c.outputScale.mmPerCount = args.number("mm-per-count");
     } else if (unit != "mm")
         throw InvalidInput("--output-unit", "must be mm, m or counts");
-    IoData data = experimentData(table, c);
+    PreprocessingSteps steps;
     if (const auto range = args.value("range")) {
         const auto [t0, t1] = parseRange(*range);
-        data = selectTimeRange(data, t0, t1);
+        steps.rangeSeconds = std::array<double, 2>{t0, t1};
     }
-    if (args.flag("detrend"))
-        data = removeTrends(data).data;
-    else if (args.flag("remove-means"))
-        data = removeMeans(data).data;
+    steps.offsets = args.flag("detrend")        ? OffsetRemoval::Trends
+                    : args.flag("remove-means") ? OffsetRemoval::Means
+                                                : OffsetRemoval::None;
     if (args.has("decimate"))
-        data = decimate(data, args.count("decimate", 1, 1000));
-    return data;
+        steps.decimateFactor = args.count("decimate", 1, 1000);
+    return preprocess(experimentData(table, c), steps);
 }
 
 QJsonObject dataJson(const IoData& d) {

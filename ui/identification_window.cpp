@@ -447,18 +447,16 @@ IoData IdentificationWindow::record(const ExperimentTable& table) const {
     else
         c.sampleTimeSeconds = ts_->value();
     c.outputScale.unit = unit_->currentIndex() == 1 ? OutputUnit::Metres : OutputUnit::Millimetres;
-    IoData data = experimentData(table, c);
+    PreprocessingSteps steps;
     const double t0 = t0_->value(), t1 = t1_->value();
     if (t0 != 0.0 || t1 != 0.0) {
         if (!(t1 > t0))
             throw InvalidInput("range", "the end must be after the start (0 to 0 uses the whole record)");
-        data = selectTimeRange(data, t0, t1);
+        steps.rangeSeconds = std::array<double, 2>{t0, t1};
     }
-    if (detrend_->isChecked())
-        data = removeTrends(data).data;
-    if (decimate_->value() > 1)
-        data = decimate(data, decimate_->value());
-    return data;
+    steps.offsets = detrend_->isChecked() ? OffsetRemoval::Trends : OffsetRemoval::None;
+    steps.decimateFactor = decimate_->value();
+    return preprocess(experimentData(table, c), steps);
 }
 
 void IdentificationWindow::fit() {

@@ -188,4 +188,16 @@ IoData decimate(const IoData& data, int factor) {
     return out;
 }
 
+IoData preprocess(const IoData& data, const PreprocessingSteps& steps) {
+    IoData out = steps.rangeSeconds ? selectTimeRange(data, (*steps.rangeSeconds)[0], (*steps.rangeSeconds)[1])
+                                    : data;
+    if (steps.offsets == OffsetRemoval::Trends)
+        out = removeTrends(out).data;
+    else if (steps.offsets == OffsetRemoval::Means)
+        out = removeMeans(out).data;
+    if (steps.decimateFactor != 1)
+        out = decimate(out, steps.decimateFactor);
+    return out;
+}
+
 } // namespace xyt

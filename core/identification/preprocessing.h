@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace xyt {
@@ -67,6 +68,23 @@ inline constexpr double kDecimationEdge = 0.8; ///< fraction of the new Nyquist 
  *         too short to pad, as MATLAB's filtfilt requires; unequal lengths; Ts not > 0).
  */
 IoData decimate(const IoData& data, int factor);
+
+/// What to remove from u and y before identification.
+enum class OffsetRemoval { None, Means, Trends };
+
+/// The preprocessing a user chooses for a record, applied in this order by preprocess().
+struct PreprocessingSteps {
+    std::optional<std::array<double, 2>> rangeSeconds; ///< [t0, t1] for selectTimeRange
+    OffsetRemoval offsets = OffsetRemoval::None;
+    int decimateFactor = 1; ///< 1: keep every sample
+};
+
+/**
+ * The time range (selectTimeRange), then the offsets (removeMeans / removeTrends), then the
+ * decimation (decimate): what `xytune-cli identify` and the identification window do with
+ * their range, detrend and decimate options. @throws as those functions.
+ */
+IoData preprocess(const IoData& data, const PreprocessingSteps& steps);
 
 /// One signal filtered by the sections forward and backward, ends padded as decimate() does.
 std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections, const std::vector<double>& x);

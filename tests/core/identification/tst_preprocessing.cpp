@@ -10,6 +10,8 @@
 
 #include <QTest>
 
+#include <array>
+
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -51,6 +53,7 @@ double magnitudeSquared(const std::vector<xyt::BiquadSection>& sections, double 
 class TstPreprocessing : public QObject {
     Q_OBJECT
 private slots:
+    void preprocessIsTheStepsInOrder();
     void timeRangeKeepsTheSamplesInside();
     void meansAndTrendsAreRemoved();
     void filterMatchesTheChebyshevClosedForm_data();
@@ -182,6 +185,27 @@ void TstPreprocessing::badInput() {
     unequal.y.pop_back();
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::removeMeans(unequal); }), QString("data"));
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::removeTrends(xyt::IoData{}); }), QString("data"));
+}
+
+void TstPreprocessing::preprocessIsTheStepsInOrder() {
+    // Invariant: preprocess() is selectTimeRange, then removeTrends / removeMeans, then
+    // decimate, bit for bit; no step leaves the record unchanged.
+    const xyt::IoData d = record(2000, 0.01, [](double t) { return std::sin(3.0 * t) + 0.2 * t; },
+                                 [](double t) { return std::cos(2.0 * t) + 1.5 + 0.1 * t; });
+    QVERIFY(xyt::preprocess(d, {}).y == d.y);
+    xyt::PreprocessingSteps steps;
+    steps.rangeSeconds = std::array<double, 2>{2.0, 15.0};
+    steps.offsets = xyt::OffsetRemoval::Trends;
+    steps.decimateFactor = 3;
+    const xyt::IoData expected = xyt::decimate(xyt::removeTrends(xyt::selectTimeRange(d, 2.0, 15.0)).data, 3);
+    const xyt::IoData got = xyt::preprocess(d, steps);
+    QVERIFY(got.u == expected.u && got.y == expected.y);
+    QCOMPARE(got.tsSeconds, expected.tsSeconds);
+    QCOMPARE(got.startSeconds, expected.startSeconds);
+    steps.offsets = xyt::OffsetRemoval::Means;
+    const xyt::IoData means = xyt::preprocess(d, steps);
+    QVERIFY(means.y == xyt::decimate(xyt::removeMeans(xyt::selectTimeRange(d, 2.0, 15.0)).data, 3).y);
+    QVERIFY(means.y != got.y);
 }
 
 QTEST_APPLESS_MAIN(TstPreprocessing)
