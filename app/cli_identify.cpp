@@ -16,6 +16,7 @@
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/identified_axis.h"
+#include "core/session/session_evaluation.h"
 #include "ui/session/session_file.h"
 
 #include <QJsonDocument>
@@ -307,6 +308,20 @@ int runIdentify(const QStringList& argv) {
     if (session && m.hasEstimate()) {
         session->axes[static_cast<std::size_t>(axis)] =
             axisWithIdentifiedModel(session->axes[static_cast<std::size_t>(axis)], m, estimation);
+        // The session written must run as `report` runs it: a Ts the session's run cannot
+        // sample (pp.ts 1e-6 s: the default session's run needs 5.2e8 samples) is refused
+        // here, not by the next command that opens the file.
+        std::string refused;
+        try {
+            for (const AxisEvaluation& a : evaluateSession(*session).axes)
+                if (!a.ok && a.runRefused && refused.empty())
+                    refused = a.errorField + ": " + a.error;
+        } catch (const InvalidInput& e) {
+            refused = e.what();
+        }
+        if (!refused.empty())
+            throw InvalidInput("-o", "the session with this model cannot be run as report runs it (" + refused +
+                                         "); nothing was written");
         writeTextFile("-o", *args.value("o"), QString::fromUtf8(QJsonDocument(ui::sessionToJson(*session)).toJson()));
         out.insert("session", QString::fromStdString(terminalText(args.value("o")->toStdString())));
     }

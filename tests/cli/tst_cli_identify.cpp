@@ -61,6 +61,7 @@ private slots:
     void badInput();
     void sampleTimesOutsideTheRangeAreRefused_data();
     void sampleTimesOutsideTheRangeAreRefused();
+    void sessionThatCannotRunIsNotWritten();
     void oldMacLineEndsAreRead();
     void orderTableIsBoundedAndShowsProgress();
     void lackOfMemoryIsSaidWithExit2();
@@ -312,6 +313,21 @@ void TstCliIdentify::sampleTimesOutsideTheRangeAreRefused() {
                  run.err.contains("is outside the accepted sample times, 1e-09 s to 10000 s"),
              run.err.constData());
     QVERIFY(!run.err.contains("k0"));
+    QVERIFY(!QFile::exists(out));
+}
+
+void TstCliIdentify::sessionThatCannotRunIsNotWritten() {
+    // 1 us is an accepted sample time, but the default session's run would need 5.2e8 samples
+    // at pp.ts = 1e-6 (`report`: "needs 5.2e+08 samples at this dt"): it refused the file written.
+    const QString in = dir_.filePath("run_in.json");
+    const QString out = dir_.filePath("run_out.json");
+    QCOMPARE(test::runCli({"new", "-o", in}).exitCode, 0);
+    const auto run = test::runCli({"identify", "--data", arx_, "--ts", "1e-6", "--input-col", "Command", "--output-col",
+                                   "X", "--structure", "arx", "--session", in, "--axis", "x", "-o", out});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.startsWith("xytune-cli identify: -o: the session with this model cannot be run as report runs it (") &&
+                 run.err.contains("samples") && run.err.contains("nothing was written"),
+             run.err.constData());
     QVERIFY(!QFile::exists(out));
 }
 
