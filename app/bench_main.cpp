@@ -24,6 +24,7 @@
 #include "core/contour/gcode_reader.h"
 #include "core/design/digital_controller.h"
 #include "core/identification/arx.h"
+#include "core/identification/experiment_file.h"
 #include "core/identification/continuous_fit.h"
 #include "core/identification/prediction_error.h"
 #include "core/session/contour_run.h"
@@ -46,12 +47,17 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <memory>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -106,6 +112,83 @@ std::string zigZagProgram() {
         text += line;
     }
     return text;
+}
+
+/**
+ * A 128 MiB CSV as a 1 kHz logger writes it ("t,u,y", "12.345,2.5000,-123.4567"), read by
+ * readExperimentTable (the CSV reader, all columns): target under 10 s, and a peak memory of at
+ * most the file's size plus 8 bytes a cell plus about 200 MB. The read is timed here; its peak
+ * RSS growth is measured in a forked child (ru_maxrss after minus before), apart from what this
+ * program held before. The file goes to a temporary folder, removed afterwards.
+ */
+void readCsv128MiB(const char* filter) {
+    const std::string name = "read_csv_128mib";
+    if (filter && name.find(filter) == std::string::npos)
+        return;
+    char folder[] = "/tmp/xytune-bench-XXXXXX";
+    if (!::mkdtemp(folder)) {
+        std::printf("%s: cannot make a temporary folder\n", name.c_str());
+        return;
+    }
+    const std::string path = std::string(folder) + "/run.csv";
+    std::size_t rows = 0, bytes = 0;
+    {
+        std::string text = "t,u,y\n";
+        text.reserve(xyt::kMaxExperimentBytes);
+        char line[96];
+        for (;; ++rows) {
+            const int n = std::snprintf(line, sizeof line, "%.3f,%.4f,%.4f\n", 0.001 * double(rows),
+                                        (rows / 50) % 2 ? 2.5 : -2.5, 0.0001 * double(rows % 2000000) - 100.0);
+            if (text.size() + std::size_t(n) > xyt::kMaxExperimentBytes)
+                break;
+            text.append(line, std::size_t(n));
+        }
+        bytes = text.size();
+        std::FILE* f = std::fopen(path.c_str(), "wb");
+        const bool written = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        if (f)
+            std::fclose(f);
+        if (!written) {
+            std::printf("%s: cannot write %s\n", name.c_str(), path.c_str());
+            std::remove(path.c_str());
+            ::rmdir(folder);
+            return;
+        }
+    }
+    const double us = benchmark(filter, name, [&] {
+        sink = sink + double(xyt::readExperimentTable(path).columns[2].size());
+    }, 3, 0.0);
+    long long growth = -1;
+    int fds[2];
+    if (::pipe(fds) == 0) {
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            ::close(fds[0]);
+            rusage before{}, after{};
+            ::getrusage(RUSAGE_SELF, &before);
+            sink = sink + double(xyt::readExperimentTable(path).columns[2].size());
+            ::getrusage(RUSAGE_SELF, &after);
+            const long long delta = (static_cast<long long>(after.ru_maxrss) - before.ru_maxrss) * 1024;
+            [[maybe_unused]] const auto w = ::write(fds[1], &delta, sizeof delta);
+            ::_exit(0);
+        }
+        ::close(fds[1]);
+        if (pid > 0) {
+            if (::read(fds[0], &growth, sizeof growth) != sizeof growth)
+                growth = -1;
+            int status = 0;
+            ::waitpid(pid, &status, 0);
+        }
+        ::close(fds[0]);
+    }
+    const double mb = 1024.0 * 1024.0;
+    std::printf("%s: seconds=%.2f peak_rss_delta_mb=%.0f file_mb=%.0f rows=%zu target: under 10 s, at most "
+                "%.0f MB (file + 8 bytes x %zu cells + 200 MB)\n",
+                name.c_str(), us / 1e6, double(growth) / mb, double(bytes) / mb, rows,
+                (double(bytes) + 8.0 * 3.0 * double(rows)) / mb + 200.0, 3 * rows);
+    std::fflush(stdout);
+    std::remove(path.c_str());
+    ::rmdir(folder);
 }
 
 /// Issue 13: read, profile, simulate both axes at 1 ms and the contour error of that program
@@ -531,6 +614,7 @@ int main(int argc, char* argv[]) {
     }
     gcodeContour(filter);
     identification(filter);
+    readCsv128MiB(filter);
     guiSliderToRepaint(filter, argc, argv);
     return 0;
 }

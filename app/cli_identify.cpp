@@ -14,23 +14,30 @@
 #include "core/io/file_io.h"
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 #include "core/session/identified_axis.h"
+#include "core/session/session_evaluation.h"
 #include "ui/session/session_file.h"
 
 #include <QJsonDocument>
 
 #include <QJsonArray>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace xyt::cli {
 
 namespace {
 
-/// The table of @p path; a file that cannot be read is bad input naming @p option.
-ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment) {
+/// The table of @p path, only @p columns kept; a file that cannot be read is bad input naming
+/// @p option.
+ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment,
+                          const std::vector<std::string>& columns) {
     try {
-        return readExperimentTable(path.toStdString(), segment);
+        return readExperimentTable(path.toStdString(), segment, columns);
     } catch (const FileError& e) {
         throw InvalidInput(option.toStdString(), e.what());
     }
@@ -49,7 +56,7 @@ std::pair<double, double> parseRange(const QString& text) {
 
 /// The record of one file with the command's column, time and scale options.
 IoData record(const CliArgs& args, const QString& option, const QString& path) {
-    const ExperimentTable table = readTable(option, path, static_cast<std::size_t>(args.count("segment", 1, 1'000'000)));
+    const auto segment = static_cast<std::size_t>(args.count("segment", 1, 1'000'000));
     ExperimentColumns c;
     c.input = args.text("input-col", QString()).toStdString();
     c.output = args.text("output-col", QString()).toStdString();
@@ -61,12 +68,18 @@ IoData record(const CliArgs& args, const QString& option, const QString& path) {
         throw InvalidInput("--ts", "give either --time-col or --ts, not both");
     if (args.has("time-col"))
         c.time = args.text("time-col", QString()).toStdString();
-    else if (args.has("ts"))
+    else if (args.has("ts")) {
         c.sampleTimeSeconds = args.number("ts");
-    else if (table.sampleTimeSeconds)
+        requireSampleTime(*c.sampleTimeSeconds, "--ts");
+    }
+    // The columns are checked against the file's names before its rows are read, and only
+    // they are kept: the other columns of a large file cost no memory.
+    ExperimentTable table = readTable(option, path, segment, usedColumns(c, path.toStdString()));
+    if (!args.has("time-col") && !args.has("ts")) {
+        if (!table.sampleTimeSeconds)
+            throw InvalidInput("--ts", "the file states no sample time: give --time-col NAME or --ts SECONDS");
         c.fileSampleTime = true;
-    else
-        throw InvalidInput("--ts", "the file states no sample time: give --time-col NAME or --ts SECONDS");
+    }
     const QString unit = args.text("output-unit", "mm");
     if (unit == "m")
         c.outputScale.unit = OutputUnit::Metres;
@@ -85,7 +98,7 @@ IoData record(const CliArgs& args, const QString& option, const QString& path) {
                                                 : OffsetRemoval::None;
     if (args.has("decimate"))
         steps.decimateFactor = args.count("decimate", 1, 1000);
-    return preprocess(experimentData(table, c), steps);
+    return preprocess(experimentData(std::move(table), c), steps);
 }
 
 QJsonObject dataJson(const IoData& d) {
@@ -130,8 +143,13 @@ QJsonObject modelJson(const IdentifiedModel& m) {
     return out;
 }
 
-/// "NA0:NA1,NB0:NB1,NK0:NK1": the ARX order ranges of --order-table.
-QJsonObject orderTableJson(const QString& text, const IoData& estimation, const IoData* validation) {
+/// The most fits one --order-table runs: 10 x 10 x 10 orders. Each is a least-squares fit over
+/// the whole record; 1:100,1:100,0:100 asked for a million of them (hours, with no end shown).
+constexpr double kMaxOrderTableFits = 1000;
+
+/// "NA0:NA1,NB0:NB1,NK0:NK1": the ARX order ranges of --order-table, refused (naming the
+/// option) when malformed or when they ask for more than kMaxOrderTableFits fits.
+std::array<OrderRange, 3> parseOrderTable(const QString& text) {
     const QStringList parts = text.split(',');
     std::vector<OrderRange> ranges;
     for (const QString& part : parts) {
@@ -145,9 +163,33 @@ QJsonObject orderTableJson(const QString& text, const IoData& estimation, const 
     }
     if (ranges.size() != 3)
         throw InvalidInput("--order-table", "give three ranges: na, nb, nk (e.g. 1:4,1:4,0:2)");
+    double fits = 1.0;
+    for (const OrderRange& r : ranges)
+        fits *= std::max(0.0, double(r.max) - double(r.min) + 1.0);
+    if (fits > kMaxOrderTableFits)
+        throw InvalidInput("--order-table", "'" + text.toStdString() + "' asks for " + formatNumber(fits, 15) +
+                                                " fits; at most " + formatNumber(kMaxOrderTableFits) +
+                                                " are run in one table (narrow the ranges)");
+    return {ranges[0], ranges[1], ranges[2]};
+}
+
+/// The table of the ARX orders of @p ranges, its progress on stderr (a table of 1000 fits on a
+/// long record takes minutes).
+QJsonObject orderTableJson(const std::array<OrderRange, 3>& ranges, const IoData& estimation,
+                           const IoData* validation) {
+    int shown = -1; // the last tenth reported
+    const auto progress = [&shown](double fraction) {
+        const int tenth = static_cast<int>(fraction * 10.0);
+        if (tenth > shown) {
+            shown = tenth;
+            std::fprintf(stderr, "xytune-cli identify: order table %d %% done\n", tenth * 10);
+            std::fflush(stderr);
+        }
+        return true;
+    };
     ArxOrderTable t;
     try {
-        t = arxOrderTable(estimation, validation, ranges[0], ranges[1], ranges[2]);
+        t = arxOrderTable(estimation, validation, ranges[0], ranges[1], ranges[2], progress);
     } catch (const InvalidInput& e) {
         throw InvalidInput("--order-table", e.what());
     }
@@ -211,6 +253,9 @@ int runIdentify(const QStringList& argv) {
     spec.predictionHorizon = args.count("horizon", 5, 1'000'000);
     spec.maxLag = args.count("max-lag", 25, 10'000);
     spec.search.maxIterations = args.count("max-iterations", 100, 100'000);
+    std::optional<std::array<OrderRange, 3>> orderTable;
+    if (const auto text = args.value("order-table"))
+        orderTable = parseOrderTable(*text);
 
     IoData estimation = record(args, "--data", *args.value("data"));
     std::optional<IoData> validation;
@@ -234,8 +279,8 @@ int runIdentify(const QStringList& argv) {
     }
     const IdentifiedModel m = identifyModel(estimation, validation ? &*validation : nullptr, spec);
     QJsonObject out{{"data", dataJson(estimation)}, {"model", modelJson(m)}};
-    if (const auto table = args.value("order-table"))
-        out.insert("order_table", orderTableJson(*table, estimation, validation ? &*validation : nullptr));
+    if (orderTable)
+        out.insert("order_table", orderTableJson(*orderTable, estimation, validation ? &*validation : nullptr));
     if (validation)
         out.insert("validation_data", dataJson(*validation));
     if (m.hasEstimate()) {
@@ -263,6 +308,20 @@ int runIdentify(const QStringList& argv) {
     if (session && m.hasEstimate()) {
         session->axes[static_cast<std::size_t>(axis)] =
             axisWithIdentifiedModel(session->axes[static_cast<std::size_t>(axis)], m, estimation);
+        // The session written must run as `report` runs it: a Ts the session's run cannot
+        // sample (pp.ts 1e-6 s: the default session's run needs 5.2e8 samples) is refused
+        // here, not by the next command that opens the file.
+        std::string refused;
+        try {
+            for (const AxisEvaluation& a : evaluateSession(*session).axes)
+                if (!a.ok && a.runRefused && refused.empty())
+                    refused = a.errorField + ": " + a.error;
+        } catch (const InvalidInput& e) {
+            refused = e.what();
+        }
+        if (!refused.empty())
+            throw InvalidInput("-o", "the session with this model cannot be run as report runs it (" + refused +
+                                         "); nothing was written");
         writeTextFile("-o", *args.value("o"), QString::fromUtf8(QJsonDocument(ui::sessionToJson(*session)).toJson()));
         out.insert("session", QString::fromStdString(terminalText(args.value("o")->toStdString())));
     }

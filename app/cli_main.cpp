@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 
 #include <cstdio>
+#include <new>
 #include <functional>
 #include <map>
 #include <string>
@@ -261,6 +262,10 @@ int main(int argc, char* argv[]) {
         return 1;
     } catch (const xyt::InvalidInput& e) {
         std::fprintf(stderr, "xytune-cli %s: %s\n", qPrintable(name), oneLine(e.what()).c_str());
+        return 2;
+    } catch (const std::bad_alloc&) {
+        // The readers say which file needs the memory; this catches what is left (a fit, a run).
+        std::fprintf(stderr, "xytune-cli %s: the command needs more memory than is available\n", qPrintable(name));
         return 2;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "xytune-cli %s: internal error: %s\n", qPrintable(name),

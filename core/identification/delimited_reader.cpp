@@ -3,17 +3,13 @@
 
 #include "core/model/errors.h"
 
-#include <cmath>
+#include <algorithm>
 #include <limits>
+#include <new>
 
 namespace xyt {
 
 namespace {
-
-struct Field {
-    std::string text;
-    std::size_t number = 0; ///< 1-based
-};
 
 std::string lineField(const std::string& fileName, std::size_t line) {
     return fileName + ": line " + std::to_string(line);
@@ -26,82 +22,111 @@ bool isBlank(std::string_view line) {
     return true;
 }
 
-/// Reads the quoted field opening at line[open] into f.text ("" inside stands for one quote).
-/// Returns the index after the closing quote. @throws InvalidInput when it is not closed.
-std::size_t quoted(std::string_view line, std::size_t open, Field& f, const std::string& fileName,
-                   std::size_t lineNumber) {
-    std::size_t i = open + 1;
-    while (i < line.size()) {
-        if (line[i] == '"') {
-            if (i + 1 < line.size() && line[i + 1] == '"') {
-                f.text += '"';
-                i += 2;
-                continue;
-            }
-            return i + 1;
-        }
-        f.text += line[i++];
+/**
+ * The fields of one line, one at a time: an unquoted field is a view of the line, a quoted one
+ * is unescaped into a buffer the scanner keeps (valid until the next call), so a row costs no
+ * allocation. Whitespace: runs of spaces and tabs separate, the ends are ignored.
+ */
+class FieldScanner {
+public:
+    FieldScanner(Delimiter d, const std::string& fileName) : d_(d), fileName_(fileName) {
+        sep_ = d == Delimiter::Comma ? ',' : d == Delimiter::Semicolon ? ';' : '\t';
     }
-    throw InvalidInput(lineField(fileName, lineNumber) + ", column " + std::to_string(f.number),
-                       "the quote opened at character " + std::to_string(open + 1) + " is not closed");
-}
 
-/// Splits a line into fields. Whitespace: runs of spaces and tabs, ends ignored.
-std::vector<Field> splitFields(std::string_view line, Delimiter d, const std::string& fileName,
-                               std::size_t lineNumber) {
-    std::vector<Field> out;
-    auto tooMany = [&] {
-        if (out.size() > kMaxExperimentColumns + 1)
-            throw InvalidInput(lineField(fileName, lineNumber),
-                               "has more than " + std::to_string(kMaxExperimentColumns) + " fields");
-    };
-    if (d == Delimiter::Whitespace) {
-        std::size_t i = 0;
-        while (i < line.size()) {
-            while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
-                ++i;
-            if (i >= line.size())
-                break;
-            Field f;
-            f.number = out.size() + 1;
-            if (line[i] == '"') {
-                i = quoted(line, i, f, fileName, lineNumber);
-            } else {
-                while (i < line.size() && line[i] != ' ' && line[i] != '\t')
-                    f.text += line[i++];
+    void start(std::string_view line, std::size_t lineNumber) {
+        line_ = line;
+        lineNumber_ = lineNumber;
+        i_ = 0;
+        count_ = 0;
+        finished_ = false;
+    }
+
+    /// The next field in @p text; false after the last. @throws InvalidInput for an unclosed
+    /// quote, text after a closing quote, more than kMaxExperimentColumns + 1 fields.
+    bool next(std::string_view& text) {
+        if (finished_)
+            return false;
+        if (d_ == Delimiter::Whitespace) {
+            while (i_ < line_.size() && (line_[i_] == ' ' || line_[i_] == '\t'))
+                ++i_;
+            if (i_ >= line_.size()) {
+                finished_ = true;
+                return false;
             }
-            out.push_back(std::move(f));
-            tooMany();
+            counted();
+            if (line_[i_] == '"') {
+                i_ = quoted(i_);
+                text = buffer_;
+            } else {
+                const std::size_t from = i_;
+                while (i_ < line_.size() && line_[i_] != ' ' && line_[i_] != '\t')
+                    ++i_;
+                text = line_.substr(from, i_ - from);
+            }
+            return true;
         }
-        return out;
-    }
-    const char sep = d == Delimiter::Comma ? ',' : d == Delimiter::Semicolon ? ';' : '\t';
-    std::size_t i = 0;
-    while (true) {
-        Field f;
-        f.number = out.size() + 1;
-        std::size_t j = i;
-        while (j < line.size() && (line[j] == ' ' || (line[j] == '\t' && sep != '\t')))
+        counted();
+        std::size_t j = i_;
+        while (j < line_.size() && (line_[j] == ' ' || (line_[j] == '\t' && sep_ != '\t')))
             ++j;
-        if (j < line.size() && line[j] == '"') {
-            j = quoted(line, j, f, fileName, lineNumber);
-            while (j < line.size() && (line[j] == ' ' || (line[j] == '\t' && sep != '\t')))
+        if (j < line_.size() && line_[j] == '"') {
+            j = quoted(j);
+            while (j < line_.size() && (line_[j] == ' ' || (line_[j] == '\t' && sep_ != '\t')))
                 ++j;
-            if (j < line.size() && line[j] != sep)
-                throw InvalidInput(lineField(fileName, lineNumber) + ", column " + std::to_string(f.number),
+            if (j < line_.size() && line_[j] != sep_)
+                throw InvalidInput(lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
                                    "text follows the closing quote at character " + std::to_string(j + 1));
+            text = buffer_;
         } else {
-            while (j < line.size() && line[j] != sep)
-                f.text += line[j++];
+            const std::size_t end = std::min(line_.find(sep_, i_), line_.size());
+            text = line_.substr(i_, end - i_);
+            j = end;
         }
-        out.push_back(std::move(f));
-        tooMany();
-        if (j >= line.size())
-            break;
-        i = j + 1; // past the separator
+        if (j >= line_.size())
+            finished_ = true;
+        else
+            i_ = j + 1; // past the separator
+        return true;
     }
-    return out;
-}
+
+    /// 1-based number of the field last returned.
+    std::size_t count() const { return count_; }
+
+private:
+    void counted() {
+        if (++count_ > kMaxExperimentColumns + 1)
+            throw InvalidInput(lineField(fileName_, lineNumber_),
+                               "has more than " + std::to_string(kMaxExperimentColumns) + " fields");
+    }
+
+    /// Reads the quoted field opening at line_[open] into buffer_ ("" inside stands for one
+    /// quote). Returns the index after the closing quote.
+    std::size_t quoted(std::size_t open) {
+        buffer_.clear();
+        std::size_t i = open + 1;
+        while (i < line_.size()) {
+            if (line_[i] == '"') {
+                if (i + 1 < line_.size() && line_[i + 1] == '"') {
+                    buffer_ += '"';
+                    i += 2;
+                    continue;
+                }
+                return i + 1;
+            }
+            buffer_ += line_[i++];
+        }
+        throw InvalidInput(lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
+                           "the quote opened at character " + std::to_string(open + 1) + " is not closed");
+    }
+
+    Delimiter d_;
+    char sep_ = ',';
+    const std::string& fileName_;
+    std::string_view line_;
+    std::size_t lineNumber_ = 0, i_ = 0, count_ = 0;
+    bool finished_ = false;
+    std::string buffer_;
+};
 
 Delimiter detect(std::string_view header) {
     bool inQuotes = false, tab = false, semicolon = false, comma = false;
@@ -118,12 +143,113 @@ Delimiter detect(std::string_view header) {
                                                                        : Delimiter::Whitespace;
 }
 
-std::string trimmed(std::string_view s) {
+std::string_view trimmed(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
         s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
         s.remove_suffix(1);
-    return std::string(s);
+    return s;
+}
+
+DelimitedTable parse(std::string_view text, const std::string& fileName, const DelimitedReadOptions& options) {
+    TextLines lines(text);
+    while (!lines.atEnd() && isBlank(lines.line()))
+        lines.next();
+    if (lines.atEnd())
+        throw InvalidInput(fileName, "holds no header line (the first line must name the columns)");
+
+    DelimitedTable out;
+    ExperimentTable& t = out.table;
+    t.fileName = fileName;
+    out.delimiter = options.delimiter == Delimiter::Detect ? detect(lines.line()) : options.delimiter;
+    out.decimalComma = options.decimal == DecimalSeparator::Comma ||
+                       (options.decimal == DecimalSeparator::Detect && out.delimiter == Delimiter::Semicolon);
+    if (out.decimalComma && out.delimiter == Delimiter::Comma)
+        throw InvalidInput(fileName, "a decimal comma cannot be read with ',' separating the fields");
+
+    const std::size_t headerLine = lines.number();
+    FieldScanner fields(out.delimiter, fileName);
+    std::vector<std::string> names;
+    std::vector<std::size_t> nameFields;
+    fields.start(lines.line(), headerLine);
+    for (std::string_view f; fields.next(f);) {
+        names.emplace_back(trimmed(f));
+        nameFields.push_back(fields.count());
+    }
+    if (names.size() > 1 && names.back().empty()) {
+        names.pop_back(); // a trailing separator
+        nameFields.pop_back();
+    }
+    if (names.size() > kMaxExperimentColumns)
+        throw InvalidInput(lineField(fileName, headerLine),
+                           "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
+    bool allNumbers = true;
+    for (std::size_t c = 0; c < names.size(); ++c) {
+        const std::string field = lineField(fileName, headerLine) + ", column " + std::to_string(nameFields[c]);
+        if (names[c].empty())
+            throw InvalidInput(field, "the column name is empty");
+        for (std::size_t other = 0; other < c; ++other)
+            if (names[other] == names[c])
+                throw InvalidInput(field, "the column name '" + shownCell(names[c]) + "' is used twice");
+        std::string reason;
+        allNumbers = allNumbers && parseCellNumber(names[c], out.decimalComma, reason).has_value();
+    }
+    if (allNumbers)
+        throw InvalidInput(lineField(fileName, headerLine),
+                           "holds numbers, not column names: the first line must name the columns");
+    const std::size_t columns = names.size();
+    const std::vector<bool> kept = keptColumns(names, options.columns, fileName);
+    std::vector<std::size_t> tableColumn(columns, columns); // columns: not kept
+    for (std::size_t c = 0; c < columns; ++c)
+        if (kept[c]) {
+            tableColumn[c] = t.names.size();
+            t.addColumn(names[c], nameFields[c]);
+        }
+
+    // Count the rows before reading them, so each column is allocated once at its final size.
+    lines.next();
+    std::size_t rows = 0;
+    for (TextLines count = lines; !count.atEnd(); count.next())
+        rows += isBlank(count.line()) ? 0 : 1;
+    reserveRows(t, rows);
+
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::string reason;
+    for (; !lines.atEnd(); lines.next()) {
+        if (isBlank(lines.line()))
+            continue;
+        const std::size_t lineNumber = lines.number();
+        const std::size_t row = t.rowNumbers.size();
+        t.rowNumbers.push_back(lineNumber);
+        for (std::vector<double>& c : t.columns)
+            c.push_back(nan);
+        fields.start(lines.line(), lineNumber);
+        std::size_t extra = 0; // the first non-empty field beyond the named ones (1-based)
+        std::size_t seen = 0;
+        for (std::string_view f; fields.next(f);) {
+            const std::size_t c = seen++;
+            if (c >= columns) {
+                if (extra == 0 && !trimmed(f).empty())
+                    extra = c + 1;
+                continue;
+            }
+            const std::size_t tc = tableColumn[c];
+            if (tc == columns)
+                continue;
+            if (const auto v = parseCellNumber(f, out.decimalComma, reason))
+                t.columns[tc].back() = *v;
+            else
+                noteCellProblem(t, tc, row, f, reason);
+        }
+        if (extra != 0)
+            throw InvalidInput(lineField(fileName, lineNumber) + ", column " + std::to_string(extra),
+                               "the line has " + std::to_string(seen) + " fields but the header names " +
+                                   std::to_string(columns));
+        for (std::size_t c = seen; c < columns; ++c)
+            if (tableColumn[c] != columns)
+                noteCellProblem(t, tableColumn[c], row, "", "is missing");
+    }
+    return out;
 }
 
 } // namespace
@@ -132,73 +258,11 @@ DelimitedTable readDelimited(std::string_view text, const std::string& fileName,
                              const DelimitedReadOptions& options) {
     if (text.size() > kMaxExperimentBytes)
         throw InvalidInput(fileName, "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
-    const std::vector<std::string_view> lines = splitLines(text);
-    std::size_t headerIndex = 0;
-    while (headerIndex < lines.size() && isBlank(lines[headerIndex]))
-        ++headerIndex;
-    if (headerIndex == lines.size())
-        throw InvalidInput(fileName, "holds no header line (the first line must name the columns)");
-
-    DelimitedTable out;
-    ExperimentTable& t = out.table;
-    t.fileName = fileName;
-    out.delimiter = options.delimiter == Delimiter::Detect ? detect(lines[headerIndex]) : options.delimiter;
-    out.decimalComma = options.decimal == DecimalSeparator::Comma ||
-                       (options.decimal == DecimalSeparator::Detect && out.delimiter == Delimiter::Semicolon);
-    if (out.decimalComma && out.delimiter == Delimiter::Comma)
-        throw InvalidInput(fileName, "a decimal comma cannot be read with ',' separating the fields");
-
-    const std::size_t headerLine = headerIndex + 1;
-    std::vector<Field> header = splitFields(lines[headerIndex], out.delimiter, fileName, headerLine);
-    if (header.size() > 1 && trimmed(header.back().text).empty())
-        header.pop_back(); // a trailing separator
-    if (header.size() > kMaxExperimentColumns)
-        throw InvalidInput(lineField(fileName, headerLine),
-                           "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
-    bool allNumbers = true;
-    for (const Field& f : header) {
-        const std::string name = trimmed(f.text);
-        const std::string field = lineField(fileName, headerLine) + ", column " + std::to_string(f.number);
-        if (name.empty())
-            throw InvalidInput(field, "the column name is empty");
-        for (const std::string& other : t.names)
-            if (other == name)
-                throw InvalidInput(field, "the column name '" + shownCell(name) + "' is used twice");
-        std::string reason;
-        allNumbers = allNumbers && parseCellNumber(name, out.decimalComma, reason).has_value();
-        t.addColumn(name, f.number);
+    try {
+        return parse(text, fileName, options);
+    } catch (const std::bad_alloc&) {
+        throwOutOfMemory(fileName, 0, "its table");
     }
-    if (allNumbers)
-        throw InvalidInput(lineField(fileName, headerLine),
-                           "holds numbers, not column names: the first line must name the columns");
-
-    const std::size_t columns = t.names.size();
-    for (std::size_t li = headerIndex + 1; li < lines.size(); ++li) {
-        if (isBlank(lines[li]))
-            continue;
-        const std::size_t lineNumber = li + 1;
-        const std::vector<Field> fields = splitFields(lines[li], out.delimiter, fileName, lineNumber);
-        for (std::size_t k = columns; k < fields.size(); ++k)
-            if (!trimmed(fields[k].text).empty())
-                throw InvalidInput(lineField(fileName, lineNumber) + ", column " + std::to_string(k + 1),
-                                   "the line has " + std::to_string(fields.size()) +
-                                       " fields but the header names " + std::to_string(columns));
-        const std::size_t row = t.rowNumbers.size();
-        t.rowNumbers.push_back(lineNumber);
-        for (std::size_t c = 0; c < columns; ++c) {
-            double value = std::numeric_limits<double>::quiet_NaN();
-            std::string reason;
-            if (c >= fields.size()) {
-                noteCellProblem(t, c, row, "", "is missing");
-            } else if (const auto v = parseCellNumber(fields[c].text, out.decimalComma, reason)) {
-                value = *v;
-            } else {
-                noteCellProblem(t, c, row, fields[c].text, reason);
-            }
-            t.columns[c].push_back(value);
-        }
-    }
-    return out;
 }
 
 DelimitedTable readDelimitedFile(const std::string& path, const DelimitedReadOptions& options) {

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace xyt {
 
@@ -17,6 +18,9 @@ enum class DecimalSeparator { Detect, Point, Comma };
 struct DelimitedReadOptions {
     Delimiter delimiter = Delimiter::Detect;
     DecimalSeparator decimal = DecimalSeparator::Detect;
+    /// The columns to keep (keptColumns: checked against the header before any row is read);
+    /// empty: all of them. The others are still checked for their number of fields, not parsed.
+    std::vector<std::string> columns;
 };
 
 /// What the reader decided (reported back, since Detect is a decision the user should see).
@@ -33,15 +37,19 @@ struct DelimitedTable {
  *   - Header names and cells may be quoted ("Position (mm)"; "" stands for a quote inside);
  *     names are trimmed and must be unique and non-empty, except that one empty name at the end
  *     of the header (a trailing separator, as Excel writes) drops that column.
- *   - Blank lines are skipped (line numbers still count them); a row with fewer fields than
+ *   - Lines end at LF, CRLF or a lone CR (TextLines); blank lines are skipped (line numbers
+ *     still count them); a row with fewer fields than
  *     names leaves the rest missing, one with more non-empty fields is refused.
  *   - Cells are parsed by parseCellNumber; a cell that is not a number is kept as a problem of
  *     its column (refused only if that column is used, experiment_data.h).
+ *   - Memory: the text plus 8 bytes a kept cell and 8 a row (the rows are counted first, so
+ *     every column is allocated once); no string or vector per cell or row.
  * @param fileName named in every message ("run.csv: line 12, column 3 (Position): ...").
  * @throws InvalidInput whose field names the file and line (and column where there is one): no
  *         header, a header of numbers only (the first line must name the columns), an empty or
  *         repeated name, an unclosed quote, a row with too many fields, more than
- *         kMaxExperimentColumns columns, more than kMaxExperimentBytes bytes.
+ *         kMaxExperimentColumns columns, more than kMaxExperimentBytes bytes, a column of
+ *         options.columns that the header does not name, not enough memory (throwOutOfMemory).
  */
 DelimitedTable readDelimited(std::string_view text, const std::string& fileName,
                              const DelimitedReadOptions& options = {});

@@ -21,17 +21,29 @@ const std::vector<double>& usedColumn(const ExperimentTable& t, std::size_t c) {
 
 } // namespace
 
-IoData experimentData(const ExperimentTable& t, const ExperimentColumns& cols) {
+std::vector<std::string> usedColumns(const ExperimentColumns& cols, const std::string& fileName) {
+    if (cols.input == cols.output)
+        throw InvalidInput(fileName, "column '" + shownCell(cols.input) + "' is chosen as both input and output");
+    std::vector<std::string> names{cols.input, cols.output};
+    if (!cols.time.empty() && cols.time != cols.input && cols.time != cols.output)
+        names.push_back(cols.time);
+    return names;
+}
+
+namespace {
+
+/// experimentData; with @p take the table's u column is moved into the record rather than
+/// copied (a record of 10 million samples is 80 MB a column).
+IoData record(const ExperimentTable& t, const ExperimentColumns& cols, ExperimentTable* take) {
     const int timeSources = int(!cols.time.empty()) + int(cols.sampleTimeSeconds.has_value()) +
                             int(cols.fileSampleTime);
     if (timeSources != 1)
         throw InvalidInput(t.fileName, timeSources == 0
                                            ? "no time source: give a time column or a sample time"
                                            : "give one time source: a time column, a sample time or the file's sample time");
+    usedColumns(cols, t.fileName);
     const std::size_t ui = t.column(cols.input);
     const std::size_t yi = t.column(cols.output);
-    if (ui == yi)
-        throw InvalidInput(t.fileName, "column '" + shownCell(cols.input) + "' is chosen as both input and output");
     double scale = 1.0;
     switch (cols.outputScale.unit) {
     case OutputUnit::Millimetres: scale = 1.0; break;
@@ -50,7 +62,11 @@ IoData experimentData(const ExperimentTable& t, const ExperimentColumns& cols) {
     IoData d;
     // Names shown escaped: a header may hold control characters, and messages are one line.
     d.source = t.fileName + ": u=" + shownCell(cols.input, 80) + ", y=" + shownCell(cols.output, 80);
-    d.u = u;
+    if (take && cols.time != cols.input)
+        d.u = std::move(take->columns[ui]);
+    else
+        d.u = u;
+    const std::size_t n = d.u.size();
     d.y.resize(y.size());
     for (std::size_t k = 0; k < y.size(); ++k) {
         d.y[k] = scale * y[k];
@@ -60,29 +76,30 @@ IoData experimentData(const ExperimentTable& t, const ExperimentColumns& cols) {
     requireSamples(d, 2, "a sampled record");
 
     if (cols.sampleTimeSeconds) {
-        requirePositive(*cols.sampleTimeSeconds, "sample_time");
+        requireSampleTime(*cols.sampleTimeSeconds, "sample_time");
         d.tsSeconds = *cols.sampleTimeSeconds;
     } else if (cols.fileSampleTime) {
         if (!t.sampleTimeSeconds)
             throw InvalidInput(t.fileName, "states no sample time (no Delta_X equal for every channel): "
                                            "give a time column or a sample time");
+        requireSampleTime(*t.sampleTimeSeconds, t.fileName + ": the stated sample time");
         d.tsSeconds = *t.sampleTimeSeconds;
     } else {
         const std::size_t ti = t.column(cols.time);
         const std::vector<double>& time = usedColumn(t, ti);
-        if (time.size() != u.size())
+        if (time.size() != n)
             throw InvalidInput(t.fileName, "the time '" + shownCell(cols.time) + "' has " +
                                                std::to_string(time.size()) + " values but the data " +
-                                               std::to_string(u.size()));
+                                               std::to_string(n));
         for (std::size_t k = 1; k < time.size(); ++k)
             if (!(time[k] > time[k - 1]))
                 throw InvalidInput(t.cellField(ti, k), "time " + formatNumber(time[k], 10) +
                                                            " s does not increase (the line before holds " +
                                                            formatNumber(time[k - 1], 10) + " s)");
-        const std::size_t n = time.size();
         const double ts = (time[n - 1] - time[0]) / double(n - 1);
         if (!(ts > 0.0) || !std::isfinite(ts))
             throw InvalidInput(t.cellField(ti, n - 1), "the time column gives no usable sample time");
+        requireSampleTime(ts, t.cellField(ti, n - 1) + ": the time column's sample time");
         for (std::size_t k = 1; k < n; ++k) {
             const double step = time[k] - time[k - 1];
             if (std::abs(step - ts) > kSampleTimeTolerance * ts)
@@ -94,6 +111,16 @@ IoData experimentData(const ExperimentTable& t, const ExperimentColumns& cols) {
         d.startSeconds = time[0];
     }
     return d;
+}
+
+} // namespace
+
+IoData experimentData(const ExperimentTable& table, const ExperimentColumns& columns) {
+    return record(table, columns, nullptr);
+}
+
+IoData experimentData(ExperimentTable&& table, const ExperimentColumns& columns) {
+    return record(table, columns, &table);
 }
 
 void requireSamples(const IoData& data, std::size_t minimum, const std::string& what) {

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace xyt {
 
@@ -44,11 +45,23 @@ inline constexpr double kSampleTimeTolerance = 0.01;
  *   - naming file, line and column (ExperimentTable::cellField): a cell that is not a number,
  *     is missing or is NaN/infinite (the first one of a used column); time not increasing
  *     (t[k] <= t[k-1]); a step of the time column off Ts by more than kSampleTimeTolerance Ts;
- *   - "sample_time" (not > 0 or not finite), "mm_per_count" (encoder counts without a
- *     positive count size);
+ *   - "sample_time" (the given one), the file's stated one and the time column's: outside the
+ *     accepted sample times (requireSampleTime, experiment_table.h); "mm_per_count" (encoder
+ *     counts without a positive count size);
  *   - too few samples: fewer than 2 (requireSamples).
  */
 IoData experimentData(const ExperimentTable& table, const ExperimentColumns& columns);
+/// experimentData on a table that is not needed afterwards: the input column is moved into the
+/// record instead of copied.
+IoData experimentData(ExperimentTable&& table, const ExperimentColumns& columns);
+
+/**
+ * The names of the columns @p columns reads (input, output and the time column when there is
+ * one), for a reader to keep only those (DelimitedReadOptions::columns, LvmReadOptions::columns),
+ * so that a choice that cannot work is refused before the file is parsed.
+ * @throws InvalidInput naming @p fileName when input and output are the same column.
+ */
+std::vector<std::string> usedColumns(const ExperimentColumns& columns, const std::string& fileName);
 
 /**
  * Refuses records too short for a use: @p what names the use ("ARX(2,3,1) estimation").

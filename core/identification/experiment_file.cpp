@@ -24,17 +24,21 @@ ExperimentFileKind experimentFileKind(const std::string& path) {
     return ExperimentFileKind::Delimited;
 }
 
-ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment) {
+ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment,
+                                    const std::vector<std::string>& columns) {
     switch (experimentFileKind(path)) {
     case ExperimentFileKind::Lvm: {
         LvmReadOptions o;
         o.segment = lvmSegment;
+        o.columns = columns;
         return readLvmFile(path, o).table;
     }
     case ExperimentFileKind::Mat: return readMat(path);
     case ExperimentFileKind::Delimited: break;
     }
-    return readDelimitedFile(path).table;
+    DelimitedReadOptions o;
+    o.columns = columns;
+    return readDelimitedFile(path, o).table;
 }
 
 } // namespace xyt

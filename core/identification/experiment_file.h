@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace xyt {
 
@@ -18,10 +19,12 @@ ExperimentFileKind experimentFileKind(const std::string& path);
 /**
  * Reads any experiment file into its table of named columns: CSV/TSV (delimiter and decimal
  * separator detected), LabVIEW .lvm (segment @p lvmSegment, 1-based) or MATLAB .mat (every
- * usable vector). The table names the file as @p path is written.
+ * usable vector). The table names the file as @p path is written. A text file keeps only
+ * @p columns when they are given (all when empty), checked before its rows are read.
  * @throws FileError when the file cannot be read; InvalidInput from the reader (file, line,
  *         column).
  */
-ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment = 1);
+ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment = 1,
+                                    const std::vector<std::string>& columns = {});
 
 } // namespace xyt

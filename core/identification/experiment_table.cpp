@@ -4,9 +4,14 @@
 #include "core/io/file_io.h"
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <new>
+#include <stdexcept>
 
 namespace xyt {
 
@@ -118,32 +123,94 @@ std::string shownCell(std::string_view text, std::size_t maxChars) {
     return terminalText(text) + (cut ? "..." : "");
 }
 
-std::vector<std::string_view> splitLines(std::string_view text) {
-    if (text.substr(0, 3) == "\xEF\xBB\xBF")
-        text.remove_prefix(3);
-    std::vector<std::string_view> lines;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = text.find('\n', start);
-        const bool last = end == std::string_view::npos;
-        if (last)
-            end = text.size();
-        std::string_view line = text.substr(start, end - start);
-        if (!line.empty() && line.back() == '\r')
-            line.remove_suffix(1);
-        if (!(last && line.empty() && start == text.size() && start > 0))
-            lines.push_back(line);
-        if (last)
-            break;
-        start = end + 1;
+TextLines::TextLines(std::string_view text) : text_(text) {
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF")
+        text_.remove_prefix(3);
+    done_ = text_.empty();
+    find();
+}
+
+void TextLines::find() {
+    // A plain loop: find_first_of("\r\n") compares each byte with the set, twice as slow here.
+    std::size_t i = start_;
+    const std::size_t n = text_.size();
+    while (i < n && text_[i] != '\n' && text_[i] != '\r')
+        ++i;
+    end_ = i;
+}
+
+void TextLines::next() {
+    if (done_)
+        return;
+    std::size_t after = end_;
+    if (after < text_.size())
+        after += text_[after] == '\r' && after + 1 < text_.size() && text_[after + 1] == '\n' ? 2 : 1;
+    if (after >= text_.size()) {
+        done_ = true;
+        return;
     }
-    if (lines.size() == 1 && lines[0].empty())
-        lines.clear();
-    return lines;
+    start_ = after;
+    ++number_;
+    find();
+}
+
+std::vector<bool> keptColumns(const std::vector<std::string>& names, const std::vector<std::string>& wanted,
+                              const std::string& fileName) {
+    std::vector<bool> kept(names.size(), wanted.empty());
+    for (const std::string& w : wanted) {
+        bool found = false;
+        for (std::size_t c = 0; c < names.size(); ++c)
+            if (names[c] == w)
+                kept[c] = found = true;
+        if (!found) {
+            ExperimentTable listing;
+            listing.fileName = fileName;
+            listing.names = names;
+            listing.column(w); // throws: no such column, with the list
+        }
+    }
+    return kept;
+}
+
+void reserveRows(ExperimentTable& table, std::size_t rows) {
+    const std::size_t columns = table.columns.size();
+    try {
+        table.rowNumbers.reserve(rows);
+        for (std::vector<double>& c : table.columns)
+            c.reserve(rows);
+    } catch (const std::bad_alloc&) {
+        const double bytes = double(rows) * double(columns + 1) * 8.0;
+        throwOutOfMemory(table.fileName, std::size_t(std::min(bytes, 1e18)),
+                         std::to_string(rows) + " rows of " + std::to_string(columns) + " column" +
+                             (columns == 1 ? "" : "s") + ", 8 bytes a number");
+    } catch (const std::length_error&) {
+        throwOutOfMemory(table.fileName, 0, std::to_string(rows) + " rows");
+    }
+}
+
+void throwOutOfMemory(const std::string& fileName, std::size_t bytes, const std::string& what) {
+    const std::string amount =
+        bytes > 0 ? std::to_string((bytes + (1u << 20) - 1) >> 20) + " MB for " + what : what;
+    throw InvalidInput(fileName, "the file needs more memory than is available (" + amount + ")");
+}
+
+void requireSampleTime(double seconds, const std::string& field) {
+    requirePositive(seconds, field);
+    if (seconds < kMinSampleTimeSeconds || seconds > kMaxSampleTimeSeconds)
+        throw InvalidInput(field, formatNumber(seconds, 6) + " s is outside the accepted sample times, 1e-09 s "
+                                  "to 10000 s (no axis experiment is sampled faster or slower, and beyond "
+                                  "them a fitted gain underflows to 0 or a session's run needs more than "
+                                  "1e308 samples)");
 }
 
 std::string readExperimentFile(const std::string& path) {
-    return readRegularFile(path, kMaxExperimentBytes);
+    try {
+        return readRegularFile(path, kMaxExperimentBytes);
+    } catch (const std::bad_alloc&) {
+        std::error_code ignored;
+        const auto size = std::filesystem::file_size(path, ignored);
+        throwOutOfMemory(path, ignored ? 0 : std::size_t(size), "the file's text");
+    }
 }
 
 } // namespace xyt

@@ -71,8 +71,48 @@ void noteCellProblem(ExperimentTable& table, std::size_t column, std::size_t row
 /// @p maxChars characters.
 std::string shownCell(std::string_view text, std::size_t maxChars = 40);
 
-/// The text lines of a file: split at '\n', a trailing '\r' removed, a UTF-8 BOM dropped.
-std::vector<std::string_view> splitLines(std::string_view text);
+/**
+ * The lines of a text file, one at a time (a table of all of them would cost 16 bytes a line:
+ * 2 GB for a file of 128 MiB of blank lines). A line ends at "\r\n", "\n" or a lone "\r" (the
+ * line end of old Mac OS), so the three conventions give the same lines and the same line
+ * numbers; a UTF-8 BOM at the start is dropped; a final line end starts no further line.
+ */
+class TextLines {
+public:
+    explicit TextLines(std::string_view text);
+    bool atEnd() const { return done_; }
+    /// The current line, without its line end.
+    std::string_view line() const { return text_.substr(start_, end_ - start_); }
+    /// 1-based number of the current line.
+    std::size_t number() const { return number_; }
+    void next();
+
+private:
+    void find();
+    std::string_view text_;
+    std::size_t start_ = 0, end_ = 0, number_ = 1;
+    bool done_ = false;
+};
+
+/// Of @p names (a file's columns, in file order), those a reader keeps: all when @p wanted is
+/// empty, else those named in @p wanted. Checked before any row is read, so a file is not parsed
+/// for a column it does not have.
+/// @throws InvalidInput as ExperimentTable::column, naming @p fileName and listing @p names,
+///         for a name of @p wanted that is not among @p names.
+std::vector<bool> keptColumns(const std::vector<std::string>& names, const std::vector<std::string>& wanted,
+                              const std::string& fileName);
+
+/**
+ * Reserves @p rows rows in every column of @p table and in rowNumbers, so no column grows by
+ * doubling (a growing vector holds its old and its new block at once: up to three times its
+ * size). The readers count the rows first for this.
+ * @throws InvalidInput naming the file (outOfMemory) when the memory is not available.
+ */
+void reserveRows(ExperimentTable& table, std::size_t rows);
+
+/// "<file>: the file needs more memory than is available (<N> MB for <what>)": what a reader
+/// throws instead of std::bad_alloc. @p bytes 0 leaves the amount out.
+[[noreturn]] void throwOutOfMemory(const std::string& fileName, std::size_t bytes, const std::string& what);
 
 /**
  * The bytes of an experiment file, at most kMaxExperimentBytes (core/io/file_io.h
@@ -80,5 +120,20 @@ std::vector<std::string_view> splitLines(std::string_view text);
  * @throws FileError naming @p path (no such file, not a regular file, too large, ...).
  */
 std::string readExperimentFile(const std::string& path);
+
+/**
+ * The accepted sample times, s: 1 ns to 10 000 s. Beyond them a record is not a sampled axis
+ * experiment (1 ns is a 1 GHz data logger; 10 000 s is one sample in almost three hours), and
+ * what is derived from Ts breaks: with 5e-324 s a gt3 fit's gain underflowed ("k0: must be
+ * nonzero") and a session given that pp.ts could not be run ("needs more than 1e308 samples").
+ * The session file itself accepts any positive pp.ts; the session's runs bound it by their
+ * sample count, which these bounds keep far from.
+ */
+inline constexpr double kMinSampleTimeSeconds = 1e-9;
+inline constexpr double kMaxSampleTimeSeconds = 1e4;
+
+/// @throws InvalidInput naming @p field unless @p seconds is within the accepted sample times,
+///         saying the range and why.
+void requireSampleTime(double seconds, const std::string& field);
 
 } // namespace xyt

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/lvm_reader.h"
 
+#include "core/identification/experiment_data.h"
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <new>
 
 namespace xyt {
 
@@ -23,8 +28,9 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-std::vector<std::string_view> split(std::string_view line, char sep) {
-    std::vector<std::string_view> out;
+/// Splits @p line at @p sep into @p out (a buffer reused from line to line: no allocation a row).
+void split(std::string_view line, char sep, std::vector<std::string_view>& out) {
+    out.clear();
     std::size_t start = 0;
     while (true) {
         const std::size_t end = line.find(sep, start);
@@ -33,7 +39,6 @@ std::vector<std::string_view> split(std::string_view line, char sep) {
             break;
         start = end + 1;
     }
-    return out;
 }
 
 /// Tag and first value of a header line, split at the first tab or comma (the separator is
@@ -49,10 +54,22 @@ std::pair<std::string_view, std::string_view> tagValue(std::string_view line) {
 
 bool blank(std::string_view line) { return trim(line).empty(); }
 
+/// The steps of one X_Value column over the segment read, to compare with its Delta_X.
+struct XSteps {
+    std::size_t field = 0; ///< 0-based
+    double first = 0.0, last = 0.0;
+    std::size_t firstLine = 0, lastLine = 0, count = 0;
+    bool usable = true; ///< every cell a number
+};
+
 class LvmParser {
 public:
-    LvmParser(std::string_view text, const std::string& fileName, std::size_t segment)
-        : lines_(splitLines(text)), fileName_(fileName), wanted_(segment) {
+    /// @p countOnly: a first pass that only counts the rows of the segment read (so that the
+    /// second can allocate each column once) and finds every structural error.
+    LvmParser(std::string_view text, const std::string& fileName, const LvmReadOptions& options,
+              bool countOnly, std::size_t rows)
+        : lines_(text), fileName_(fileName), wanted_(options.segment), wantedColumns_(options.columns),
+          countOnly_(countOnly), expectedRows_(rows) {
         out_.table.fileName = fileName;
     }
 
@@ -60,7 +77,7 @@ public:
         readFileHeader();
         if (decimalComma_ && sep_ == ',')
             throw InvalidInput(fileName_, "a decimal comma cannot be read with Comma separators");
-        while (i_ < lines_.size())
+        while (!lines_.atEnd())
             step();
         if (out_.segmentCount == 0)
             throw InvalidInput(fileName_, "holds no data segment");
@@ -71,42 +88,48 @@ public:
         if (out_.segmentCount > 1)
             out_.table.warnings.push_back("the file has " + std::to_string(out_.segmentCount) +
                                           " segments; segment " + std::to_string(wanted_) + " was read");
-        if (out_.table.names.empty())
+        if (allNames_.empty())
             throw InvalidInput(fileName_, "segment " + std::to_string(wanted_) + " holds no channel");
+        if (!countOnly_)
+            checkDeltaX();
         return std::move(out_);
     }
 
-private:
-    std::string at(std::size_t index) const { return fileName_ + ": line " + std::to_string(index + 1); }
+    std::size_t rowsCounted() const { return rows_; }
 
+private:
+    std::string at(std::size_t lineNumber) const { return fileName_ + ": line " + std::to_string(lineNumber); }
+
+    /// From a ***Start_Special*** line to the line after its ***End_Special***.
     void skipSpecial() {
-        const std::size_t start = i_;
-        while (++i_ < lines_.size())
-            if (trim(tagValue(lines_[i_]).first) == kEndSpecial) {
-                ++i_;
+        const std::size_t start = lines_.number();
+        for (lines_.next(); !lines_.atEnd(); lines_.next())
+            if (trim(tagValue(lines_.line()).first) == kEndSpecial) {
+                lines_.next();
                 return;
             }
         throw InvalidInput(at(start), "the ***Start_Special*** block is not closed by ***End_Special***");
     }
 
     void readFileHeader() {
-        while (i_ < lines_.size() && blank(lines_[i_]))
-            ++i_;
-        if (i_ == lines_.size() || tagValue(lines_[i_]).first != "LabVIEW Measurement")
-            throw InvalidInput(i_ == lines_.size() ? fileName_ : at(i_),
+        while (!lines_.atEnd() && blank(lines_.line()))
+            lines_.next();
+        if (lines_.atEnd() || tagValue(lines_.line()).first != "LabVIEW Measurement")
+            throw InvalidInput(lines_.atEnd() ? fileName_ : at(lines_.number()),
                                "is not a LabVIEW Measurement file (the first line must be the tag "
                                "'LabVIEW Measurement')");
-        const std::size_t start = i_++;
+        const std::size_t start = lines_.number();
+        lines_.next();
         bool separatorSeen = false, xColumnsSeen = false;
-        for (; i_ < lines_.size(); ++i_) {
-            const auto [tag, value] = tagValue(lines_[i_]);
+        while (!lines_.atEnd()) {
+            const std::string_view line = lines_.line();
+            const auto [tag, value] = tagValue(line);
             if (tag == kStartSpecial) {
                 skipSpecial();
-                --i_;
                 continue;
             }
             if (tag == kEndOfHeader) {
-                ++i_;
+                lines_.next();
                 if (!separatorSeen)
                     out_.table.warnings.push_back("the file header has no Separator tag: Tab assumed");
                 if (!xColumnsSeen)
@@ -120,17 +143,18 @@ private:
                 else if (value == "Comma")
                     sep_ = ',';
                 else
-                    throw InvalidInput(at(i_), "Separator '" + shownCell(value) + "' is not Tab or Comma");
+                    throw InvalidInput(at(lines_.number()), "Separator '" + shownCell(value) + "' is not Tab or Comma");
             } else if (tag == "Decimal_Separator") {
                 // With comma-separated fields the value itself is the second field: "Decimal_Separator,,"
                 // holds an empty value between two commas, so look at the raw text too.
-                const std::string_view raw = trim(lines_[i_].substr(tag.size()));
+                const std::string_view raw = trim(line.substr(tag.size()));
                 if (value == ".")
                     decimalComma_ = false;
                 else if (value == "," || raw == ",," || raw == "\t,")
                     decimalComma_ = true;
                 else
-                    throw InvalidInput(at(i_), "Decimal_Separator '" + shownCell(value) + "' is not '.' or ','");
+                    throw InvalidInput(at(lines_.number()),
+                                       "Decimal_Separator '" + shownCell(value) + "' is not '.' or ','");
             } else if (tag == "X_Columns") {
                 xColumnsSeen = true;
                 if (value == "No")
@@ -140,46 +164,46 @@ private:
                 else if (value == "Multi")
                     xColumns_ = XColumns::Multi;
                 else
-                    throw InvalidInput(at(i_), "X_Columns '" + shownCell(value) + "' is not No, One or Multi");
+                    throw InvalidInput(at(lines_.number()), "X_Columns '" + shownCell(value) + "' is not No, One or Multi");
             }
+            lines_.next();
         }
         throw InvalidInput(at(start), "the file header is not closed by ***End_of_Header***");
     }
 
     /// One line (or a block) of the data part.
     void step() {
-        const std::vector<std::string_view> fields = split(lines_[i_], sep_);
+        split(lines_.line(), sep_, fields_);
         bool empty = true; // a line of separators only ("," in comma files) is blank too
-        for (std::string_view f : fields)
+        for (std::string_view f : fields_)
             empty = empty && blank(f);
         if (empty) {
-            ++i_;
+            lines_.next();
             return;
         }
-        const std::string_view first = trim(fields[0]);
+        const std::string_view first = trim(fields_[0]);
         if (first == kStartSpecial) {
             skipSpecial();
             return;
         }
-        std::string reason;
         if (first == "X_Value") {
             if (segmentHasRows_ || !inSegment_)
-                beginSegment(false);
+                beginSegment();
             if (current() && namesSeen_)
-                throw InvalidInput(at(i_), "a second column-name row in segment " + std::to_string(wanted_));
+                throw InvalidInput(at(lines_.number()), "a second column-name row in segment " + std::to_string(wanted_));
             if (current())
-                setColumnsFromNames(fields);
+                setColumnsFromNames(fields_);
             namesSeen_ = true;
-            ++i_;
+            lines_.next();
             return;
         }
-        if (first.empty() || parseCellNumber(first, decimalComma_, reason)) {
+        if (first.empty() || parseCellNumber(first, decimalComma_, reason_)) {
             if (!inSegment_)
-                beginSegment(false);
+                beginSegment();
             if (current())
-                addRow(fields);
+                addRow(fields_);
             segmentHasRows_ = true;
-            ++i_;
+            lines_.next();
             return;
         }
         readSegmentHeader();
@@ -187,7 +211,7 @@ private:
 
     bool current() const { return out_.segmentCount == wanted_; }
 
-    void beginSegment(bool /*withHeader*/) {
+    void beginSegment() {
         ++out_.segmentCount;
         inSegment_ = true;
         segmentHasRows_ = false;
@@ -195,42 +219,42 @@ private:
     }
 
     void readSegmentHeader() {
-        const std::size_t start = i_;
-        beginSegment(true);
+        const std::size_t start = lines_.number();
+        const std::string startTag(trim(fields_[0]));
+        beginSegment();
         std::vector<double> deltaX;
+        std::size_t deltaXLine = 0;
         std::size_t channels = 0;
-        for (; i_ < lines_.size(); ++i_) {
-            const std::vector<std::string_view> fields = split(lines_[i_], sep_);
-            const std::string_view tag = trim(fields[0]);
+        for (; !lines_.atEnd(); lines_.next()) {
+            split(lines_.line(), sep_, fields_);
+            const std::string_view tag = trim(fields_[0]);
             if (tag == kEndOfHeader) {
-                ++i_;
+                lines_.next();
                 if (current()) {
                     channels_ = channels;
-                    setSampleTime(deltaX);
+                    setSampleTime(deltaX, deltaXLine);
                 }
                 return;
             }
-            if (tag == "Channels" && fields.size() > 1) {
-                std::string reason;
-                const auto n = parseCellNumber(fields[1], false, reason);
+            if (tag == "Channels" && fields_.size() > 1) {
+                const auto n = parseCellNumber(fields_[1], false, reason_);
                 if (n && *n >= 1 && *n <= double(kMaxExperimentColumns) && *n == double(std::size_t(*n)))
                     channels = std::size_t(*n);
             } else if (tag == "Delta_X") {
-                for (std::size_t k = 1; k < fields.size(); ++k) {
-                    if (blank(fields[k]))
+                deltaXLine = lines_.number();
+                for (std::size_t k = 1; k < fields_.size(); ++k) {
+                    if (blank(fields_[k]))
                         continue;
-                    std::string reason;
-                    const auto v = parseCellNumber(fields[k], decimalComma_, reason);
+                    const auto v = parseCellNumber(fields_[k], decimalComma_, reason_);
                     deltaX.push_back(v ? *v : std::numeric_limits<double>::quiet_NaN());
                 }
             }
         }
-        throw InvalidInput(at(start), "the segment header that starts here with '" +
-                                          shownCell(trim(split(lines_[start], sep_)[0])) +
+        throw InvalidInput(at(start), "the segment header that starts here with '" + shownCell(startTag) +
                                           "' is not closed by ***End_of_Header***");
     }
 
-    void setSampleTime(const std::vector<double>& deltaX) {
+    void setSampleTime(const std::vector<double>& deltaX, std::size_t line) {
         if (deltaX.empty())
             return;
         for (double d : deltaX)
@@ -239,19 +263,66 @@ private:
                                               " differ between channels or are not positive: no sample time taken from the file");
                 return;
             }
+        // A stated sample time nobody can use is refused here, where the line is known, rather
+        // than written into a session that then fails to load or gives a meaningless model.
+        requireSampleTime(deltaX.front(), at(line) + ": Delta_X");
         out_.table.sampleTimeSeconds = deltaX.front();
+        deltaXLine_ = line;
     }
 
+    /// The X_Value columns must step by the Delta_X the file states: when they do not, one of
+    /// the two is wrong and nothing says which (a Delta_X of 0.5 beside steps of 0.01 s).
+    void checkDeltaX() const {
+        if (!out_.table.sampleTimeSeconds)
+            return;
+        const double dx = *out_.table.sampleTimeSeconds;
+        for (const XSteps& x : xSteps_) {
+            if (!x.usable || x.count < 2)
+                continue;
+            const double step = (x.last - x.first) / double(x.count - 1);
+            if (std::abs(step - dx) > kSampleTimeTolerance * dx)
+                throw InvalidInput(at(deltaXLine_),
+                                   "Delta_X " + formatNumber(dx, 10) + " contradicts the X_Value column (field " +
+                                       std::to_string(x.field + 1) + "), whose mean step from line " +
+                                       std::to_string(x.firstLine) + " to line " + std::to_string(x.lastLine) +
+                                       " is " + formatNumber(step, 10) +
+                                       ": one of the two is wrong (give the sample time or a time column, "
+                                       "after correcting the file)");
+        }
+    }
+
+    /// A name of the name row (or a default name): checked, and kept when asked for.
     void addName(std::string name, std::size_t field) {
-        ExperimentTable& t = out_.table;
-        if (t.names.size() >= kMaxExperimentColumns)
-            throw InvalidInput(at(i_), "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
-        for (const std::string& other : t.names)
+        if (allNames_.size() >= kMaxExperimentColumns)
+            throw InvalidInput(at(lines_.number()), "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
+        for (const std::string& other : allNames_)
             if (other == name)
-                throw InvalidInput(at(i_) + ", column " + std::to_string(field),
+                throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(field),
                                    "the channel name '" + shownCell(name) + "' is used twice");
-        t.addColumn(std::move(name), field);
-        columnFields_.push_back(field - 1);
+        allNames_.push_back(std::move(name));
+        allFields_.push_back(field);
+    }
+
+    /// After the names: the columns kept (LvmReadOptions::columns) become the table's, and the
+    /// X_Value fields are watched for checkDeltaX.
+    void keepColumns() {
+        const std::vector<bool> kept = keptColumns(allNames_, wantedColumns_, fileName_);
+        ExperimentTable& t = out_.table;
+        for (std::size_t c = 0; c < allNames_.size(); ++c) {
+            if (xColumns_ != XColumns::No && allNames_[c].compare(0, 7, "X_Value") == 0 &&
+                (xColumns_ == XColumns::One ? c == 0 : c % 2 == 0)) {
+                XSteps x;
+                x.field = allFields_[c] - 1;
+                xSteps_.push_back(x);
+            }
+            if (!kept[c])
+                continue;
+            t.addColumn(allNames_[c], allFields_[c]);
+            columnFields_.push_back(allFields_[c] - 1);
+        }
+        lastField_ = 0;
+        for (std::size_t f : allFields_)
+            lastField_ = std::max(lastField_, f);
     }
 
     void setColumnsFromNames(const std::vector<std::string_view>& fields) {
@@ -264,15 +335,17 @@ private:
         }
         if (xColumns_ == XColumns::Multi) {
             if (n % 2 != 0)
-                throw InvalidInput(at(i_), "X_Columns is Multi but the name row does not pair every "
-                                           "channel with an X_Value column");
+                throw InvalidInput(at(lines_.number()), "X_Columns is Multi but the name row does not pair every "
+                                                        "channel with an X_Value column");
             for (std::size_t k = 0; k < n; k += 2) {
                 const std::string name(trim(fields[k + 1]));
                 if (name.empty())
-                    throw InvalidInput(at(i_) + ", column " + std::to_string(k + 2), "the channel name is empty");
+                    throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 2),
+                                       "the channel name is empty");
                 addName("X_Value (" + name + ")", k + 1);
                 addName(name, k + 2);
             }
+            keepColumns();
             return;
         }
         if (xColumns_ == XColumns::One)
@@ -280,9 +353,10 @@ private:
         for (std::size_t k = 1; k < n; ++k) {
             const std::string name(trim(fields[k]));
             if (name.empty())
-                throw InvalidInput(at(i_) + ", column " + std::to_string(k + 1), "the channel name is empty");
+                throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 1), "the channel name is empty");
             addName(name, k + 1);
         }
+        keepColumns();
     }
 
     /// No name row before the first data row: LabVIEW's default names, with a warning.
@@ -302,51 +376,78 @@ private:
             }
         }
         commentField_ = xColumns_ == XColumns::Multi ? 2 * channels : channels + 1;
+        keepColumns();
         out_.table.warnings.push_back("segment " + std::to_string(wanted_) +
                                       " has no column-name row: the channels are named Untitled, Untitled 1, ...");
     }
 
     void addRow(const std::vector<std::string_view>& fields) {
         ExperimentTable& t = out_.table;
-        if (!namesSeen_ && t.names.empty()) {
+        if (!namesSeen_ && allNames_.empty()) {
             setDefaultColumns(fields.size());
             namesSeen_ = true;
         }
         const std::size_t used = commentField_ ? *commentField_ : fields.size();
-        std::size_t last = 0;
-        for (std::size_t f : columnFields_)
-            last = std::max(last, f + 1);
-        for (std::size_t k = last; k < fields.size() && k < used; ++k)
+        for (std::size_t k = lastField_; k < fields.size() && k < used; ++k)
             if (!blank(fields[k]))
-                throw InvalidInput(at(i_) + ", column " + std::to_string(k + 1),
+                throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 1),
                                    "the row has more fields than the column-name row names");
+        ++rows_;
+        if (countOnly_)
+            return;
+        if (t.rowNumbers.empty())
+            reserveRows(t, expectedRows_);
         const std::size_t row = t.rowNumbers.size();
-        t.rowNumbers.push_back(i_ + 1);
+        t.rowNumbers.push_back(lines_.number());
         for (std::size_t c = 0; c < t.names.size(); ++c) {
             const std::size_t f = columnFields_[c];
             double value = std::numeric_limits<double>::quiet_NaN();
-            std::string reason;
             if (f >= fields.size())
                 noteCellProblem(t, c, row, "", "is missing");
-            else if (const auto v = parseCellNumber(fields[f], decimalComma_, reason))
+            else if (const auto v = parseCellNumber(fields[f], decimalComma_, reason_))
                 value = *v;
             else
-                noteCellProblem(t, c, row, fields[f], reason);
+                noteCellProblem(t, c, row, fields[f], reason_);
             t.columns[c].push_back(value);
+        }
+        for (XSteps& x : xSteps_) {
+            if (!x.usable)
+                continue;
+            const auto v = x.field < fields.size() ? parseCellNumber(fields[x.field], decimalComma_, reason_)
+                                                   : std::nullopt;
+            if (!v) {
+                x.usable = false;
+                continue;
+            }
+            if (x.count++ == 0) {
+                x.first = *v;
+                x.firstLine = lines_.number();
+            }
+            x.last = *v;
+            x.lastLine = lines_.number();
         }
     }
 
-    std::vector<std::string_view> lines_;
+    TextLines lines_;
     std::string fileName_;
     std::size_t wanted_;
-    std::size_t i_ = 0;
+    std::vector<std::string> wantedColumns_;
+    bool countOnly_ = false;
+    std::size_t expectedRows_ = 0, rows_ = 0;
     char sep_ = '\t';
     bool decimalComma_ = false;
     XColumns xColumns_ = XColumns::One;
     bool inSegment_ = false, segmentHasRows_ = false, namesSeen_ = false;
     std::size_t channels_ = 0;
+    std::vector<std::string> allNames_;  ///< every column of the segment read, kept or not
+    std::vector<std::size_t> allFields_; ///< their 1-based fields
     std::vector<std::size_t> columnFields_; ///< 0-based field of each table column
+    std::size_t lastField_ = 0;             ///< the fields beyond it must be blank
     std::optional<std::size_t> commentField_;
+    std::vector<XSteps> xSteps_;
+    std::size_t deltaXLine_ = 0;
+    std::vector<std::string_view> fields_; ///< the fields of the current line
+    std::string reason_;                   ///< parseCellNumber's, unused where only "is it a number" counts
     LvmTable out_;
 };
 
@@ -357,7 +458,13 @@ LvmTable readLvm(std::string_view text, const std::string& fileName, const LvmRe
         throw InvalidInput(fileName, "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
     if (options.segment < 1)
         throw InvalidInput("segment", "must be 1 or more (segments are counted from 1)");
-    return LvmParser(text, fileName, options.segment).run();
+    try {
+        LvmParser counter(text, fileName, options, true, 0);
+        counter.run();
+        return LvmParser(text, fileName, options, false, counter.rowsCounted()).run();
+    } catch (const std::bad_alloc&) {
+        throwOutOfMemory(fileName, 0, "its table");
+    }
 }
 
 LvmTable readLvmFile(const std::string& path, const LvmReadOptions& options) {

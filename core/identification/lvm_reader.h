@@ -6,11 +6,15 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace xyt {
 
 struct LvmReadOptions {
     std::size_t segment = 1; ///< which segment to read, 1-based (a file may hold several)
+    /// The columns to keep (keptColumns, checked at the segment's name row, before its rows);
+    /// empty: all of them.
+    std::vector<std::string> columns;
 };
 
 /// The segment read, and how many the file holds.
@@ -35,12 +39,19 @@ struct LvmTable {
  *     x column, named "X_Value (<channel>)". The trailing Comment column is not read. Without a
  *     column-name row the channels are named "Untitled", "Untitled 1", ... as LabVIEW names them
  *     (with a warning).
- *   - sampleTimeSeconds: the segment's Delta_X when every channel states the same positive one.
+ *   - sampleTimeSeconds: the segment's Delta_X when every channel states the same positive one;
+ *     it must be an accepted sample time (requireSampleTime) and agree with every X_Value column
+ *     of the segment whose cells are all numbers (their mean step within kSampleTimeTolerance of
+ *     it): a file whose two statements of its sample time disagree is refused, naming both.
+ *   - Lines end at LF, CRLF or a lone CR (TextLines). The file is read twice: the first pass
+ *     counts the segment's rows, so each column is allocated once (8 bytes a cell and a row).
  * @throws InvalidInput naming the file and line (and column): not an LVM file, an unknown
  *         Separator, X_Columns or Decimal_Separator value, a decimal comma with Comma separators,
  *         a header without ***End_of_Header***, a segment that does not exist (naming how many
  *         there are), a repeated channel name, a row with more fields than the name row, more
- *         than kMaxExperimentColumns columns or kMaxExperimentBytes bytes.
+ *         than kMaxExperimentColumns columns or kMaxExperimentBytes bytes, a column of
+ *         options.columns the segment does not name, a Delta_X outside the accepted sample
+ *         times or contradicted by an X_Value column, not enough memory (throwOutOfMemory).
  */
 LvmTable readLvm(std::string_view text, const std::string& fileName, const LvmReadOptions& options = {});
 

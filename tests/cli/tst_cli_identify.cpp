@@ -13,6 +13,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -58,6 +59,12 @@ private slots:
     void sessionTakesTheModel();
     void badInput_data();
     void badInput();
+    void sampleTimesOutsideTheRangeAreRefused_data();
+    void sampleTimesOutsideTheRangeAreRefused();
+    void sessionThatCannotRunIsNotWritten();
+    void oldMacLineEndsAreRead();
+    void orderTableIsBoundedAndShowsProgress();
+    void lackOfMemoryIsSaidWithExit2();
 
 private:
     QTemporaryDir dir_;
@@ -280,6 +287,132 @@ void TstCliIdentify::badInput() {
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains(named.toUtf8()), run.err.constData());
     QVERIFY(run.out.isEmpty());
+}
+
+void TstCliIdentify::sampleTimesOutsideTheRangeAreRefused_data() {
+    QTest::addColumn<QString>("ts");
+    QTest::addColumn<QString>("structure");
+    // 5e-324 was taken and written as the session's pp.ts, which `report` then refused; gt3
+    // on such a record said "k0: must be nonzero" instead of naming the sample time.
+    QTest::newRow("subnormal, arx") << "5e-324" << "arx";
+    QTest::newRow("subnormal, gt3") << "5e-324" << "gt3";
+    QTest::newRow("1e300, arx") << "1e300" << "arx";
+    QTest::newRow("1e300, gt3") << "1e300" << "gt3";
+}
+
+void TstCliIdentify::sampleTimesOutsideTheRangeAreRefused() {
+    QFETCH(QString, ts);
+    QFETCH(QString, structure);
+    const QString in = dir_.filePath("range_in.json");
+    const QString out = dir_.filePath("range_out_" + structure + ".json");
+    QCOMPARE(test::runCli({"new", "-o", in}).exitCode, 0);
+    const auto run = test::runCli({"identify", "--data", arx_, "--ts", ts, "--input-col", "Command", "--output-col",
+                                   "X", "--structure", structure, "--session", in, "--axis", "x", "-o", out});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.startsWith("xytune-cli identify: --ts: ") &&
+                 run.err.contains("is outside the accepted sample times, 1e-09 s to 10000 s"),
+             run.err.constData());
+    QVERIFY(!run.err.contains("k0"));
+    QVERIFY(!QFile::exists(out));
+}
+
+void TstCliIdentify::sessionThatCannotRunIsNotWritten() {
+    // 1 us is an accepted sample time, but the default session's run would need 5.2e8 samples
+    // at pp.ts = 1e-6 (`report`: "needs 5.2e+08 samples at this dt"): it refused the file written.
+    const QString in = dir_.filePath("run_in.json");
+    const QString out = dir_.filePath("run_out.json");
+    QCOMPARE(test::runCli({"new", "-o", in}).exitCode, 0);
+    const auto run = test::runCli({"identify", "--data", arx_, "--ts", "1e-6", "--input-col", "Command", "--output-col",
+                                   "X", "--structure", "arx", "--session", in, "--axis", "x", "-o", out});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.startsWith("xytune-cli identify: -o: the session with this model cannot be run as report runs it (") &&
+                 run.err.contains("samples") && run.err.contains("nothing was written"),
+             run.err.constData());
+    QVERIFY(!QFile::exists(out));
+}
+
+void TstCliIdentify::oldMacLineEndsAreRead() {
+    // The estimation file with CR alone ending its lines (old Mac OS): the same 500 samples
+    // and the same model as with LF (it was one line: "the column name ... is used twice").
+    QFile lf(arx_);
+    QVERIFY(lf.open(QIODevice::ReadOnly));
+    const QString cr = dir_.filePath("arx_cr.csv");
+    QFile f(cr);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(lf.readAll().replace('\n', '\r'));
+    f.close();
+    const QStringList rest{"--time-col", "t", "--input-col", "Command", "--output-col", "X", "--structure", "arx"};
+    const auto fromCr = test::runCli(QStringList{"identify", "--data", cr} + rest);
+    QCOMPARE(fromCr.exitCode, 0);
+    QCOMPARE(fromCr.json().value("data").toObject().value("samples").toInt(), 500);
+    const auto fromLf = test::runCli(QStringList{"identify", "--data", arx_} + rest);
+    QCOMPARE(fromCr.json().value("model").toObject().value("parameters"),
+             fromLf.json().value("model").toObject().value("parameters"));
+}
+
+void TstCliIdentify::orderTableIsBoundedAndShowsProgress() {
+    const QStringList columns{"identify", "--data", arx_, "--time-col", "t", "--input-col", "Command",
+                              "--output-col", "X", "--structure", "arx", "--order-table"};
+    // A million fits were started with nothing shown: refused at once, with the count.
+    const auto huge = test::runCli(columns + QStringList{"1:100,1:100,0:100"}, 20000);
+    QVERIFY(huge.finished);
+    QCOMPARE(huge.exitCode, 2);
+    QCOMPARE(huge.err, QByteArray("xytune-cli identify: --order-table: '1:100,1:100,0:100' asks for 1010000 fits; "
+                                  "at most 1000 are run in one table (narrow the ranges)\n"));
+    // 10 x 10 x 10 is the largest table; its progress goes to stderr, stdout stays JSON.
+    const auto most = test::runCli(columns + QStringList{"1:10,1:10,0:9"});
+    QCOMPARE(most.exitCode, 0);
+    QCOMPARE(most.json().value("order_table").toObject().value("rows").toArray().size(), 1000);
+    QByteArray expected;
+    for (int percent = 0; percent <= 100; percent += 10)
+        expected += "xytune-cli identify: order table " + QByteArray::number(percent) + " % done\n";
+    QCOMPARE(most.err, expected);
+    QCOMPARE(test::runCli(columns + QStringList{"1:10,1:10,0:10"}).exitCode, 2); // 1100 fits
+}
+
+void TstCliIdentify::lackOfMemoryIsSaidWithExit2() {
+#if defined(__SANITIZE_ADDRESS__)
+    QSKIP("AddressSanitizer reserves more address space than any limit tried here");
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    QSKIP("AddressSanitizer reserves more address space than any limit tried here");
+#endif
+#endif
+    // 32 MiB of "u,y" rows of 4 bytes: 8.4 million rows, 200 MB of table (two columns and the
+    // line numbers). Under an address-space limit that holds the program and the text but not
+    // the table, the command said "internal error: std::bad_alloc" (exit 1). The program's own
+    // size is not known here, so limits 128 MB apart are tried: one of them falls in that
+    // 200 MB window, and none may end in an internal error.
+    const QString path = dir_.filePath("many_rows.csv");
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray text = "u,y\n";
+        text.reserve(32 << 20);
+        while (text.size() < (32 << 20))
+            text += "1,2\n";
+        f.write(text);
+    }
+    int said = 0;
+    for (int megabytes = 128; megabytes <= 1024 && said == 0; megabytes += 128) {
+        QProcess p;
+        p.start("/bin/sh", {"-c", "ulimit -v $1 && exec \"$0\" identify --data \"$2\" --ts 0.01 --input-col u "
+                                  "--output-col y --structure arx",
+                            QStringLiteral(XYT_CLI_PATH), QString::number(megabytes * 1024), path});
+        QVERIFY(p.waitForFinished(60000));
+        const QByteArray err = p.readAllStandardError();
+        QVERIFY2(!err.contains("internal error"), err.constData());
+        // The reader names the file and the amount; a later step (the fit) may fail instead
+        // under a limit just above, which the command's last catch says without a file.
+        if (err.startsWith(("xytune-cli identify: " + path + ": the file needs more memory than is available (").toUtf8())) {
+            QCOMPARE(p.exitCode(), 2);
+            QVERIFY2(err.contains(" MB for 8388607 rows of 2 columns, 8 bytes a number)"), err.constData());
+            ++said;
+        } else if (err.startsWith("xytune-cli identify: the command needs more memory than is available")) {
+            QCOMPARE(p.exitCode(), 2);
+        }
+    }
+    QVERIFY(said > 0);
 }
 
 QTEST_MAIN(TstCliIdentify)

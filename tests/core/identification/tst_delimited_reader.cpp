@@ -32,6 +32,9 @@ private slots:
     void structuralErrorsNameLineAndColumn_data();
     void structuralErrorsNameLineAndColumn();
     void readsAFile();
+    void lineEndsOfEveryConvention_data();
+    void lineEndsOfEveryConvention();
+    void chosenColumnsAreCheckedBeforeTheRows();
 };
 
 void TstDelimitedReader::detectsTheDelimiter_data() {
@@ -148,6 +151,55 @@ void TstDelimitedReader::readsAFile() {
         threw = QString(e.what()).contains("no_such_file.csv");
     }
     QVERIFY(threw);
+}
+
+void TstDelimitedReader::lineEndsOfEveryConvention_data() {
+    QTest::addColumn<QString>("eol");
+    QTest::newRow("LF") << "\n";
+    QTest::newRow("CRLF") << "\r\n";
+    // Old Mac OS ended lines with CR alone: such a file was one line whose names repeated
+    // ("the column name '2.0' is used twice").
+    QTest::newRow("CR") << "\r";
+}
+
+void TstDelimitedReader::lineEndsOfEveryConvention() {
+    QFETCH(QString, eol);
+    // The same file in each convention: the same table and the same line numbers, blank line
+    // included.
+    const std::string text = QString("t,u,y%1%1 0,0.5,1.0%1 0.01,1.5,2.0%1").arg(eol).toStdString();
+    const xyt::ExperimentTable t = xyt::readDelimited(text, "run.csv").table;
+    QCOMPARE(t.names, (std::vector<std::string>{"t", "u", "y"}));
+    QCOMPARE(t.columns[1], (std::vector<double>{0.5, 1.5}));
+    QCOMPARE(t.columns[2], (std::vector<double>{1.0, 2.0}));
+    QCOMPARE(t.rowNumbers, (std::vector<std::size_t>{3, 4}));
+    // A message names the line as an editor numbers it.
+    const std::string bad = QString("t,u%1 0,1%1 0.01,2,3%1").arg(eol).toStdString();
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readDelimited(bad, "run.csv"); }),
+             QString("run.csv: line 3, column 3: the line has 3 fields but the header names 2"));
+}
+
+void TstDelimitedReader::chosenColumnsAreCheckedBeforeTheRows() {
+    // Line 3 would be refused (an unclosed quote): a missing column is said first, so a file is
+    // not parsed for a column it does not have.
+    const char* text = "t,u,y,note\n0,1,2,a\n0.01,\"3,4,b\n";
+    xyt::DelimitedReadOptions o;
+    o.columns = {"u", "X"};
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readDelimited(text, "run.csv", o); }),
+             QString("run.csv: has no column 'X'; the columns are: t, u, y, note"));
+    // The kept columns only, in the file's order, with their own field numbers; the others
+    // are not parsed (the text column 'note' is no problem).
+    o.columns = {"y", "t"};
+    const xyt::ExperimentTable t = xyt::readDelimited("t,u,y,note\n0,1,2,a\n0.01,3,4,b\n", "run.csv", o).table;
+    QCOMPARE(t.names, (std::vector<std::string>{"t", "y"}));
+    QCOMPARE(t.fieldNumbers, (std::vector<std::size_t>{1, 3}));
+    QCOMPARE(t.columns[1], (std::vector<double>{2.0, 4.0}));
+    QCOMPARE(t.rowNumbers, (std::vector<std::size_t>{2, 3}));
+    // A row's fields are still counted for every column, kept or not.
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
+             QString("run.csv: has no column 'y'; the columns are: t, u"));
+    o.columns = {"t"};
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
+             QString("run.csv: line 2, column 3: the line has 3 fields but the header names 2"));
 }
 
 QTEST_APPLESS_MAIN(TstDelimitedReader)

@@ -40,6 +40,9 @@ private slots:
     void badFiles();
     void choiceErrors();
     void requireSamplesNamesTheUse();
+    void sampleTimesOutsideTheRangeAreRefused_data();
+    void sampleTimesOutsideTheRangeAreRefused();
+    void takenTableGivesTheSameRecord();
 };
 
 void TstExperimentData::timeColumnGivesTsAndStart() {
@@ -170,6 +173,61 @@ void TstExperimentData::requireSamplesNamesTheUse() {
     d.y.pop_back();
     QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::requireSamples(d, 1, "x"); }),
              QString("data: u has 3 samples but y has 2"));
+}
+
+void TstExperimentData::sampleTimesOutsideTheRangeAreRefused_data() {
+    QTest::addColumn<double>("ts");
+    QTest::addColumn<bool>("accepted");
+    // The bounds themselves are accepted (kMinSampleTimeSeconds, kMaxSampleTimeSeconds).
+    QTest::newRow("1 ns") << 1e-9 << true;
+    QTest::newRow("10000 s") << 1e4 << true;
+    // 5e-324 was written into a session as pp.ts, which `report` then refused.
+    QTest::newRow("subnormal") << 5e-324 << false;
+    QTest::newRow("below 1 ns") << 0.99e-9 << false;
+    QTest::newRow("above 10000 s") << 1.01e4 << false;
+    QTest::newRow("1e300") << 1e300 << false;
+}
+
+void TstExperimentData::sampleTimesOutsideTheRangeAreRefused() {
+    QFETCH(double, ts);
+    QFETCH(bool, accepted);
+    const xyt::ExperimentTable t = csv("u,y\n0,1\n1,2\n");
+    xyt::ExperimentColumns given;
+    given.input = "u";
+    given.output = "y";
+    given.sampleTimeSeconds = ts;
+    const QString message = xyt::test::invalidInputMessage([&] { xyt::experimentData(t, given); });
+    if (accepted) {
+        QCOMPARE(message, QString("<no exception>"));
+        return;
+    }
+    QVERIFY2(message.startsWith("sample_time: ") && message.contains("outside the accepted sample times, 1e-09 s to 10000 s"),
+             qPrintable(message));
+    // The same sample time from a time column: the column and its last line are named (a
+    // subnormal cell is refused before, as out of the range of a double).
+    if (ts < 1e-300)
+        return;
+    const QString timed = QString("t,u,y\n0,0,1\n%1,1,2\n").arg(ts, 0, 'g', 17);
+    const QString fromColumn = xyt::test::invalidInputMessage([&] { xyt::experimentData(csv(timed), byTime()); });
+    QVERIFY2(fromColumn.startsWith("run.csv: line 3, column 1 (t): the time column's sample time: "),
+             qPrintable(fromColumn));
+}
+
+void TstExperimentData::takenTableGivesTheSameRecord() {
+    // The rvalue overload moves the input column out instead of copying it: same record.
+    const QString text = "t,u,y\n0,0.5,1\n0.01,1.5,2\n0.02,2.5,3\n";
+    const xyt::IoData copied = xyt::experimentData(csv(text), byTime());
+    xyt::ExperimentTable table = csv(text);
+    const xyt::IoData taken = xyt::experimentData(std::move(table), byTime());
+    QCOMPARE(taken.u, (std::vector<double>{0.5, 1.5, 2.5}));
+    QCOMPARE(taken.u, copied.u);
+    QCOMPARE(taken.y, copied.y);
+    QCOMPARE(taken.tsSeconds, copied.tsSeconds);
+    // The time column may be the input column: it is then copied, not moved away.
+    xyt::ExperimentColumns c = byTime("u");
+    c.output = "y";
+    xyt::ExperimentTable again = csv(text);
+    QCOMPARE(xyt::experimentData(std::move(again), c).tsSeconds, 1.0);
 }
 
 QTEST_APPLESS_MAIN(TstExperimentData)

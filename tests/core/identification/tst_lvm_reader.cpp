@@ -54,6 +54,12 @@ private slots:
     void withoutNameRowChannelsAreUntitled();
     void errorsNameFileAndLine_data();
     void errorsNameFileAndLine();
+    void lineEndsOfEveryConvention_data();
+    void lineEndsOfEveryConvention();
+    void deltaXContradictedByXValueIsRefused();
+    void deltaXOutsideTheSampleTimesIsRefused_data();
+    void deltaXOutsideTheSampleTimesIsRefused();
+    void chosenColumnsAreCheckedAtTheNameRow();
 };
 
 void TstLvmReader::readsOneSegment() {
@@ -184,6 +190,79 @@ void TstLvmReader::errorsNameFileAndLine() {
     const std::string bytes = text.toStdString();
     const QString message = xyt::test::invalidInputMessage([&] { xyt::readLvm(bytes, "run.lvm"); });
     QVERIFY2(message.startsWith(expected), qPrintable(message));
+}
+
+void TstLvmReader::lineEndsOfEveryConvention_data() {
+    QTest::addColumn<QString>("eol");
+    QTest::newRow("LF") << "\n";
+    QTest::newRow("CRLF") << "\r\n";
+    QTest::newRow("CR") << "\r"; // old Mac OS
+}
+
+void TstLvmReader::lineEndsOfEveryConvention() {
+    QFETCH(QString, eol);
+    // kOneSegment with its line ends replaced: the same table, the same line numbers.
+    const std::string text = QString(kOneSegment).replace("\n", eol).toStdString();
+    const xyt::ExperimentTable t = xyt::readLvm(text, "run.lvm").table;
+    QCOMPARE(t.names, (std::vector<std::string>{"X_Value", "Command", "Position"}));
+    QCOMPARE(t.columns[2], (std::vector<double>{1.25, 1.5, 1.75}));
+    QCOMPARE(t.rowNumbers, (std::vector<std::size_t>{23, 24, 25}));
+    QCOMPARE(*t.sampleTimeSeconds, 0.01);
+    const std::string unclosed = QString(kOneSegment).append("abc\t2\n").replace("\n", eol).toStdString();
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readLvm(unclosed, "run.lvm"); }),
+             QString("run.lvm: line 26: the segment header that starts here with 'abc' is not closed by "
+                     "***End_of_Header***"));
+}
+
+void TstLvmReader::deltaXContradictedByXValueIsRefused() {
+    // Delta_X 0.5 over an X_Value column that steps by 0.01: one of them is wrong, and taking
+    // 0.5 s silently made every identified pole 50 times too slow.
+    std::string text = kOneSegment;
+    text.replace(text.find("Delta_X\t0.010000\t0.010000"), 25, "Delta_X\t0.500000\t0.500000");
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readLvm(text, "run.lvm"); }),
+             QString("run.lvm: line 20: Delta_X 0.5 contradicts the X_Value column (field 1), whose mean step "
+                     "from line 23 to line 25 is 0.01: one of the two is wrong (give the sample time or a "
+                     "time column, after correcting the file)"));
+    // Within 1 % (kSampleTimeTolerance) they agree: 0.01005 beside steps of 0.01.
+    std::string close = kOneSegment;
+    close.replace(close.find("Delta_X\t0.010000\t0.010000"), 25, "Delta_X\t0.010050\t0.010050");
+    QCOMPARE(*xyt::readLvm(close, "run.lvm").table.sampleTimeSeconds, 0.01005);
+}
+
+void TstLvmReader::deltaXOutsideTheSampleTimesIsRefused_data() {
+    QTest::addColumn<QString>("deltaX");
+    QTest::newRow("subnormal") << "5e-324";
+    QTest::newRow("below 1 ns") << "1e-10";
+    QTest::newRow("huge") << "1e300";
+    QTest::newRow("above 10000 s") << "20000";
+}
+
+void TstLvmReader::deltaXOutsideTheSampleTimesIsRefused() {
+    QFETCH(QString, deltaX);
+    // No X column, so only the range speaks: such a Ts was written as the session's pp.ts,
+    // which the session then refused.
+    const std::string text = ("LabVIEW Measurement\t\nSeparator\tTab\nX_Columns\tNo\n***End_of_Header***\t\n"
+                              "Channels\t2\nDelta_X\t" + deltaX + "\t" + deltaX + "\n***End_of_Header***\n"
+                              "X_Value\tu\ty\tComment\n\t1\t2\n\t3\t4\n").toStdString();
+    const QString message = xyt::test::invalidInputMessage([&] { xyt::readLvm(text, "run.lvm"); });
+    QVERIFY2(message.startsWith("run.lvm: line 6: Delta_X: "), qPrintable(message));
+    QVERIFY2(message.contains(" s is outside the accepted sample times, 1e-09 s to 10000 s"), qPrintable(message));
+}
+
+void TstLvmReader::chosenColumnsAreCheckedAtTheNameRow() {
+    xyt::LvmReadOptions o;
+    o.columns = {"Position", "Speed"};
+    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readLvm(kOneSegment, "run.lvm", o); }),
+             QString("run.lvm: has no column 'Speed'; the columns are: X_Value, Command, Position"));
+    o.columns = {"Position"};
+    const xyt::ExperimentTable t = xyt::readLvm(kOneSegment, "run.lvm", o).table;
+    QCOMPARE(t.names, (std::vector<std::string>{"Position"}));
+    QCOMPARE(t.fieldNumbers, (std::vector<std::size_t>{3}));
+    QCOMPARE(t.columns[0], (std::vector<double>{1.25, 1.5, 1.75}));
+    // The X_Value column is not kept but still checked against Delta_X.
+    std::string text = kOneSegment;
+    text.replace(text.find("Delta_X\t0.010000\t0.010000"), 25, "Delta_X\t0.500000\t0.500000");
+    QVERIFY(xyt::test::invalidInputMessage([&] { xyt::readLvm(text, "run.lvm", o); }).contains("contradicts"));
 }
 
 QTEST_APPLESS_MAIN(TstLvmReader)
