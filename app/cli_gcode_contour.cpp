@@ -6,15 +6,18 @@
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
+#include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
 #include "core/io/file_io.h"
 #include "core/model/errors.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
 #include "core/simulation/metrics.h"
+#include "core/simulation/trajectory.h"
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -27,14 +30,17 @@ const QStringList kGcodeContourOptions = {"gcode",        "feed-scale",    "max-
 
 namespace {
 
-/// A core option's field ("max_accel") as the argument the user typed ("--max-accel").
-template <class F> auto namingOptions(F body) {
+/// A core option's field ("max_accel") as the argument the user typed ("--max-accel"); the
+/// program's own feeds ("feed") as the program file (--gcode).
+template <class F> auto namingOptions(const QString& file, F body) {
     try {
         return body();
     } catch (const InvalidInput& e) {
         for (const QString& name : kGcodeContourOptions)
             if (QString(name).replace('-', '_') == QString::fromStdString(e.field()))
                 throw InvalidInput(CliArgs::field(name), e.reason());
+        if (e.field() == "feed")
+            throw InvalidInput("--gcode", file.toStdString() + ": " + e.what());
         throw;
     }
 }
@@ -49,6 +55,8 @@ GcodeProgram readProgram(const QString& path, const GcodeReadOptions& options) {
     try {
         return readGcode(text, options);
     } catch (const InvalidInput& e) {
+        if (e.field() == "rapid_feed") // the option, not the file
+            throw InvalidInput("--rapid-feed", e.reason());
         // "--gcode: part.nc: line 12: unknown word G5 at column 4"
         throw InvalidInput("--gcode", path.toStdString() + ": " + e.what());
     }
@@ -177,7 +185,15 @@ int runGcodeContour(const CliArgs& args) {
     options.cornerWindowMm = args.number("corner-window", options.cornerWindowMm);
     const Session session = sessionFor(args);
     const GcodeProgram program = readProgram(file, readOptions);
-    const ContourRun run = namingOptions([&] { return runProgramContour(session, program, options); });
+    // Planned once without its samples first, as the run will plan it: what cannot be planned
+    // (--max-jerk 1e-200 needs 3.2e67 s over 10 mm) is refused by its option before the axes run.
+    namingOptions(file, [&] {
+        FeedProfileOptions check = options.profile;
+        check.withSamples = false;
+        check.maxSamples = std::min(check.maxSamples, sampleLimit());
+        return planFeedProfile(program, check);
+    });
+    const ContourRun run = namingOptions(file, [&] { return runProgramContour(session, program, options); });
     if (const auto csv = args.value("csv"))
         writeContourCsv(*csv, run);
 

@@ -14,9 +14,26 @@ namespace xyt {
 
 namespace {
 
-/// Bisection steps for the S-curve's peak and junction speeds: 200 halvings of the interval
-/// reach the double's resolution from any start; the loop stops there.
+/// Bisection steps for the S-curve's peak and junction speeds; largestFitting needs at most
+/// about 70 of them for any bracket within the planner's range.
 constexpr int kBisectionSteps = 200;
+
+/**
+ * The largest v in [lo, hi] with fits(v), given fits(lo) and not fits(hi). Halving the value
+ * 200 times reaches only 2^-200 (6e-61) of hi, and within the planner's range a speed may be
+ * 1e-70 of its cap (a jerk of 1e-100 on a 1e-40 mm segment): so the bracket is halved in the
+ * logarithm while it spans more than a factor 2, and from lo = 0 the first steps try hi 2^-64,
+ * hi 2^-128, ... until one fits; then in the value, to the double's resolution.
+ */
+template <class Fits> double largestFitting(double lo, double hi, const Fits& fits) {
+    for (int k = 0; k < kBisectionSteps && hi - lo > 1e-14 * hi; ++k) {
+        const double mid = lo == 0.0       ? hi * 0x1p-64
+                           : hi > 2.0 * lo ? std::sqrt(lo) * std::sqrt(hi)
+                                           : 0.5 * (lo + hi);
+        (fits(mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
 
 /// The largest v in [v0, cap] that can be reached from v0 within @p length.
 double reachableSpeed(double v0, double length, double cap, double accel, double jerk) {
@@ -26,12 +43,7 @@ double reachableSpeed(double v0, double length, double cap, double accel, double
         return std::min(cap, std::sqrt(v0 * v0 + 2.0 * accel * length));
     if (speedChangeDistance(v0, cap, accel, jerk) <= length)
         return cap;
-    double lo = v0, hi = cap;
-    for (int k = 0; k < kBisectionSteps && hi - lo > 1e-14 * hi; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        (speedChangeDistance(v0, mid, accel, jerk) <= length ? lo : hi) = mid;
-    }
-    return lo;
+    return largestFitting(v0, cap, [&](double v) { return speedChangeDistance(v0, v, accel, jerk) <= length; });
 }
 
 /// The peak speed of a segment of @p length entered at vs, left at ve, limited to vmax.
@@ -45,12 +57,7 @@ double peakSpeed(double vs, double ve, double vmax, double length, double accel,
     };
     if (vmax <= floor || distance(vmax) <= length)
         return std::max(vmax, floor);
-    double lo = floor, hi = vmax;
-    for (int k = 0; k < kBisectionSteps && hi - lo > 1e-14 * hi; ++k) {
-        const double mid = 0.5 * (lo + hi);
-        (distance(mid) <= length ? lo : hi) = mid;
-    }
-    return lo;
+    return largestFitting(floor, vmax, [&](double v) { return distance(v) <= length; });
 }
 
 /// Appends pieces to a FeedProfile while keeping its running time, position and speed.
@@ -105,7 +112,42 @@ private:
     std::size_t segment_ = 0;
 };
 
+/// "1.2e+03 s", or "more time than a double holds" for an overflowed bound.
+std::string secondsText(double seconds) {
+    return std::isfinite(seconds) ? formatNumber(seconds, 3) + " s" : "more than 1.8e+308 s";
+}
+
+/// True when a run of @p seconds fits in maxSamples samples at dt: the planned profile's count
+/// (see planFeedProfile), less 1e-9 of @p seconds for the round-off of a lower bound, so that
+/// no profile that fits is refused by its bound.
+bool fitsSamples(double seconds, const FeedProfileOptions& o) {
+    const double steps = std::ceil(seconds * (1.0 - 1e-9) / o.dtSeconds - 1e-9);
+    return steps + 1.0 <= static_cast<double>(o.maxSamples);
+}
+
+/// Refuses @p field when @p seconds, a lower bound on the run time, does not fit in the samples:
+/// "<who> needs at least <seconds> <how>, more than the <n> samples at dt <dt> s hold (<span>)".
+void requireWithinSamples(double seconds, const std::string& field, const std::string& who,
+                          const std::string& how, const FeedProfileOptions& o) {
+    if (fitsSamples(seconds, o))
+        return;
+    const double span = (static_cast<double>(o.maxSamples) - 1.0) * o.dtSeconds;
+    throw InvalidInput(field, who + " needs at least " + secondsText(seconds) + " " + how + ", more than the " +
+                                  std::to_string(o.maxSamples) + " samples at dt " + formatNumber(o.dtSeconds) +
+                                  " s hold (" + secondsText(std::max(span, 0.0)) + ")");
+}
+
+/// sum(L_i / f_i): the run time with every segment at its feed.
+double feedSeconds(const Path& path, const std::vector<double>& feeds) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < feeds.size(); ++i)
+        sum += path.segments()[i].length() / feeds[i];
+    return sum;
+}
+
 void validate(const Path& path, const std::vector<double>& feeds, const FeedProfileOptions& o) {
+    if (path.size() == 0)
+        throw InvalidInput("path", "has no segment");
     if (feeds.size() != path.size())
         throw InvalidInput("feed", "needs one value per path segment (" + std::to_string(path.size()) +
                                        "), got " + std::to_string(feeds.size()));
@@ -121,6 +163,23 @@ void validate(const Path& path, const std::vector<double>& feeds, const FeedProf
         throw InvalidInput("corner_angle", "must be in [0, 180) degrees");
     if (!(o.dtSeconds > 0.0) || !std::isfinite(o.dtSeconds))
         throw InvalidInput("dt", "must be a finite number greater than zero");
+    // What each option alone asks of the run time (the header derives the bounds). The roots
+    // are taken of the length and the rate apart, so that a subnormal rate gives a finite bound.
+    const double length = path.length();
+    const std::string overPath = "to move the path's " + formatNumber(length) + " mm";
+    requireWithinSamples(feedSeconds(path, feeds), "feed", "every segment at its feed", overPath, o);
+    const double a = o.maxAccelMmPerS2;
+    requireWithinSamples(2.0 * std::sqrt(length) / std::sqrt(a), "max_accel", formatNumber(a) + " mm/s^2",
+                         overPath + " from rest to rest (2 sqrt(L / A))", o);
+    const double j = o.maxJerkMmPerS3;
+    if (j > 0.0)
+        requireWithinSamples(4.0 * std::cbrt(length) / std::cbrt(2.0 * j), "max_jerk", formatNumber(j) + " mm/s^3",
+                             overPath + " from rest to rest (4 (L / 2J)^(1/3))", o);
+    // What the arithmetic holds, for a dt so long that the sample bound does not bite.
+    for (std::size_t i = 0; i < feeds.size(); ++i)
+        requireProfileRate(feeds[i], "feed", "mm/s (segment " + std::to_string(i) + ")");
+    requireProfileRate(a, "max_accel", "mm/s^2");
+    requireProfileRate(j, "max_jerk", "mm/s^3", true);
 }
 
 } // namespace
@@ -176,10 +235,17 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
         const double peak = peakSpeed(v[i], v[i + 1], limit[i], length, accel, jerk);
         const double up = speedChangeDistance(v[i], peak, accel, jerk);
         const double down = speedChangeDistance(peak, v[i + 1], accel, jerk);
+        const double before = writer.time();
         writer.startSegment(i, path.segmentStart(i));
         writer.speedChange(v[i], peak);
         writer.cruise(peak, length - up - down);
         writer.speedChange(peak, v[i + 1]);
+        // A segment of positive length takes time; none (a peak speed that rounds to 0) would
+        // leave the samples without a piece to read.
+        if (!(writer.time() > before))
+            throw InvalidInput("feed", "segment " + std::to_string(i) + " (" + formatNumber(length) +
+                                           " mm) cannot be planned: its peak speed rounds to " +
+                                           formatNumber(peak) + " mm/s");
     }
     out.totalTimeSeconds = writer.time();
 
@@ -191,6 +257,8 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
                                      formatNumber(steps + 1.0) + " samples at dt " +
                                      formatNumber(options.dtSeconds) + " s, more than the limit of " +
                                      std::to_string(options.maxSamples));
+    if (!options.withSamples)
+        return out;
     const std::size_t count = static_cast<std::size_t>(std::max(steps, 0.0)) + 1;
     for (auto* signal : {&out.t, &out.s, &out.v, &out.a, &out.x, &out.y})
         signal->resize(count);
@@ -219,13 +287,56 @@ std::vector<double> programFeeds(const GcodeProgram& program, double feedScale) 
     if (!(feedScale > 0.0) || !std::isfinite(feedScale))
         throw InvalidInput("feed_scale", "must be a finite number greater than zero");
     std::vector<double> feeds(program.segments.size());
-    for (std::size_t i = 0; i < feeds.size(); ++i)
-        feeds[i] = program.segments[i].feedMmPerSec * (program.segments[i].rapid ? 1.0 : feedScale);
+    for (std::size_t i = 0; i < feeds.size(); ++i) {
+        const GcodeSegmentInfo& info = program.segments[i];
+        feeds[i] = info.feedMmPerSec * (info.rapid ? 1.0 : feedScale);
+        const std::string line = "line " + std::to_string(info.line);
+        if (info.rapid)
+            requireProfileRate(feeds[i], "rapid_feed", "mm/s (the rapid of " + line + ")");
+        else if (!(feeds[i] >= kMinProfileRate && feeds[i] <= kMaxProfileRate))
+            throw InvalidInput("feed_scale", formatNumber(feedScale) + " makes the feed of " + line + " (" +
+                                                 formatNumber(info.feedMmPerSec) + " mm/s) " +
+                                                 formatNumber(feeds[i]) + " mm/s, outside the planner's [" +
+                                                 formatNumber(kMinProfileRate) + ", " +
+                                                 formatNumber(kMaxProfileRate) + "] mm/s");
+    }
     return feeds;
 }
 
 FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOptions& options) {
-    return planFeedProfile(program.path, programFeeds(program, options.feedScale), options);
+    const std::vector<double> feeds = programFeeds(program, options.feedScale);
+    if (options.dtSeconds > 0.0 && std::isfinite(options.dtSeconds)) {
+        // The feeds' time bound by its cause. The program's feed moves at their own F words
+        // are what the program asks for: when even they do not fit, the step is too fine for
+        // the program (or its F words too slow), and dt is named.
+        double rapid = 0.0, scaled = 0.0, programmed = 0.0;
+        for (std::size_t i = 0; i < feeds.size(); ++i) {
+            const double length = program.path.segments()[i].length();
+            if (program.segments[i].rapid) {
+                rapid += length / feeds[i];
+            } else {
+                scaled += length / feeds[i];
+                programmed += length / program.segments[i].feedMmPerSec;
+            }
+        }
+        requireWithinSamples(programmed, "dt", "the program", "at its own feeds (the F words)", options);
+        requireWithinSamples(rapid, "rapid_feed", "running the rapids", "at the rapid feed", options);
+        // A scale is named when the program fits at scale 1; else the sum is the feeds' (below).
+        if (fitsSamples(programmed + rapid, options))
+            requireWithinSamples(scaled + rapid, "feed_scale", "the program",
+                                 "at " + formatNumber(options.feedScale) + " times its feeds", options);
+    }
+    return planFeedProfile(program.path, feeds, options);
+}
+
+void requireProfileRate(double rate, const std::string& field, const std::string& unit, bool zeroAllowed) {
+    if (zeroAllowed && rate == 0.0)
+        return;
+    if (rate >= kMinProfileRate && rate <= kMaxProfileRate)
+        return;
+    throw InvalidInput(field, formatNumber(rate) + " " + unit + " is outside the planner's range [" +
+                                  formatNumber(kMinProfileRate) + ", " + formatNumber(kMaxProfileRate) + "]" +
+                                  (zeroAllowed ? " (0: none)" : ""));
 }
 
 } // namespace xyt

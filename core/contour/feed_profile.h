@@ -5,9 +5,23 @@
 #include "core/contour/path.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace xyt {
+
+/**
+ * The range of the planner's rates: feeds (mm/s), accelerations (mm/s^2) and jerks (mm/s^3)
+ * outside [kMinProfileRate, kMaxProfileRate] are refused (a jerk may also be 0: none). Why:
+ * one intermediate of the S-curve combines up to three rates (the speed A^2/J at which the
+ * acceleration limit is reached, the distance v (dv/A + A/J)); for it to stay a normal double
+ * (2.2e-308 .. 1.8e308) each rate must lie within the cube root of that range, 1.6e-103 ..
+ * 5.6e102, rounded inwards to a power of ten. Products with a length (A L, L / v; G-code lengths
+ * lie within 1e-40 .. 2e16 mm) then stay within 1e-140 .. 1e117. No machine comes near either end:
+ * these bound what a file may ask for, not what is sensible.
+ */
+inline constexpr double kMinProfileRate = 1e-100;
+inline constexpr double kMaxProfileRate = 1e100;
 
 struct FeedProfileOptions {
     /// Multiplies every programmed feed (G1/G2/G3; the feed override of a control). Rapids
@@ -30,6 +44,9 @@ struct FeedProfileOptions {
     double dtSeconds = 0.001;
     /// The most samples the profile may hold (the caller passes the machine's sample limit).
     std::size_t maxSamples = 20'000'000;
+    /// false: plan the pieces and the run time only, without the sample vectors (a summary);
+    /// the bound on the samples at dt is checked all the same.
+    bool withSamples = true;
 };
 
 /**
@@ -78,20 +95,48 @@ struct FeedProfile {
 
 /**
  * The profile along @p path with @p feedMmPerSec per segment (feedScale is not applied here).
- * @throws InvalidInput "feed" when the sizes differ or a feed is not finite and > 0 (naming the
- *         segment), "max_accel" unless finite and > 0, "max_jerk" unless finite and >= 0,
- *         "corner_angle" unless in [0, 180), "dt" unless finite and > 0, "dt" when the samples
- *         would be more than maxSamples.
+ *
+ * What can be planned: the profile is sampled at dt, at most maxSamples samples, so its run
+ * time T may be at most (maxSamples - 1) dt (the session's and the CLI's runs hold no more).
+ * Each option alone sets a lower bound on T over a path of length L, whatever the others:
+ * the feeds sum(L_i / f_i) (every segment at its feed); the acceleration 2 sqrt(L / A) (from
+ * rest to rest, as every profile runs); the jerk 4 (L / 2J)^(1/3) (rest to rest with the
+ * acceleration zero at both ends: jerk +J, -J, -J, +J for a quarter of the time each). An option
+ * whose bound alone passes the limit is refused by its name, with both times; options that only
+ * together pass it are refused by "dt" once planned. A jerk of 1e-200 mm/s^3 over 10 mm thus
+ * needs 3.2e67 s. Every result has at least one piece per segment and one sample.
+ *
+ * @throws InvalidInput "feed" when the sizes differ, a feed is not finite or outside
+ *         [kMinProfileRate, kMaxProfileRate] (naming the segment), or the feeds alone need more
+ *         time than the samples hold; "max_accel" unless finite and within that range, or when
+ *         it alone needs more time; "max_jerk" likewise (0 allowed); "corner_angle" unless in
+ *         [0, 180); "dt" unless finite and > 0, or when the samples would be more than
+ *         maxSamples.
  */
 FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmPerSec,
                             const FeedProfileOptions& options);
 
 /// The feed of each segment of a read program (mm/s): feed moves at @p feedScale times their F,
-/// rapids at their rate. @throws InvalidInput "feed_scale" unless finite and > 0.
+/// rapids at their rate. @throws InvalidInput "feed_scale" unless finite and > 0, or when it
+/// takes a feed outside [kMinProfileRate, kMaxProfileRate] (naming the line); "rapid_feed" when
+/// a rapid's rate is outside that range.
 std::vector<double> programFeeds(const GcodeProgram& program, double feedScale);
 
-/// planFeedProfile(program.path, programFeeds(program, options.feedScale), options).
+/**
+ * planFeedProfile(program.path, programFeeds(program, options.feedScale), options), with the
+ * feeds' time bound (see above) named by its cause: "dt" when the feed moves at their own F
+ * words need more time than the samples hold (the step is too fine for the program),
+ * "rapid_feed" when the rapids alone do, "feed_scale" when the program fits at scale 1 but not
+ * at the scale given, else "feed" (the two together).
+ */
 FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOptions& options);
+
+/**
+ * @throws InvalidInput @p field unless @p rate is finite and within [kMinProfileRate,
+ *         kMaxProfileRate] (or 0 when @p zeroAllowed: a jerk of 0 is none); @p unit names it.
+ */
+void requireProfileRate(double rate, const std::string& field, const std::string& unit,
+                        bool zeroAllowed = false);
 
 /**
  * Distance to change speed from @p v0 to @p v1 (either order, mm/s) with acceleration limit

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/contour/gcode_reader.h"
 
+#include "core/contour/feed_profile.h"
+
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -43,6 +45,39 @@ bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' ||
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
+bool isHexDigit(char c) { return isDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+
+/**
+ * Refuses a number that goes on past where the tokenizer stops reading it, when what follows
+ * cannot be another word: a second decimal point ("X1.2.3"), or a hexadecimal "0x" on an X word
+ * ("X0x10", which would otherwise read as X0 and X10 and be called a word given twice). After
+ * any other word, "0x10" stays the valid "0 X10" ("Y0x10" is Y0 X10). @p next is the index of
+ * the first character after the number.
+ */
+void malformedNumber(std::string_view line, std::size_t next, const Word& w, const std::string& number,
+                     const std::string& field) {
+    if (next >= line.size())
+        return;
+    std::string_view why;
+    std::size_t end = next;
+    if (line[next] == '.') {
+        while (end < line.size() && (isDigit(line[end]) || line[end] == '.'))
+            ++end;
+        why = "more than one decimal point";
+    } else if (w.letter == 'X' && (line[next] == 'x' || line[next] == 'X') && next + 1 < line.size() &&
+               isHexDigit(line[next + 1]) && number.find_first_not_of("+-0") == std::string::npos) {
+        end = next + 1;
+        while (end < line.size() && isHexDigit(line[end]))
+            ++end;
+        why = "G-code numbers are decimal (no 0x prefix)";
+    } else {
+        return;
+    }
+    const std::string text = std::string(1, w.letter) + number + std::string(line.substr(next, end - next));
+    throw InvalidInput(field, "malformed number " + text.substr(0, kMaxNumberChars + 1) + " " + at(w.column) +
+                                  ": " + std::string(why));
+}
+
 /// Splits one line into words, dropping comments. @throws InvalidInput @p field.
 std::vector<Word> words(std::string_view line, const std::string& field) {
     std::vector<Word> out;
@@ -81,6 +116,7 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
             if (!digits)
                 throw InvalidInput(field, std::string("word ") + w.letter + " " + at(w.column) +
                                               " has no number");
+            malformedNumber(line, i, w, number, field);
             w.text = std::string(1, w.letter) + number;
             const char* begin = number.data() + (number[0] == '+' ? 1 : 0);
             const auto [end, error] =
@@ -383,26 +419,40 @@ double arcEndTolerance(double radiusMm, bool inch) {
 GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
     if (!(options.rapidFeedMmPerMin > 0.0) || !std::isfinite(options.rapidFeedMmPerMin))
         throw InvalidInput("rapid_feed", "must be a finite number greater than zero");
+    // The planner's range of feeds (feed_profile.h), in mm/min.
+    if (!(options.rapidFeedMmPerMin >= 60.0 * kMinProfileRate && options.rapidFeedMmPerMin <= 60.0 * kMaxProfileRate))
+        throw InvalidInput("rapid_feed", formatNumber(options.rapidFeedMmPerMin) + " mm/min is outside the planner's range [" +
+                                             formatNumber(60.0 * kMinProfileRate) + ", " +
+                                             formatNumber(60.0 * kMaxProfileRate) + "] mm/min");
     if (!(std::abs(options.start.x) <= kMaxGcodeCoordinateMm &&
           std::abs(options.start.y) <= kMaxGcodeCoordinateMm))
         throw InvalidInput("start", "must be finite and within " + formatNumber(kMaxGcodeCoordinateMm) + " mm");
     if (text.size() > kMaxGcodeBytes)
         throw InvalidInput("program", "is larger than the limit of " + std::to_string(kMaxGcodeBytes) +
                                           " bytes");
-    const std::size_t newlines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-    const bool lastLineOpen = !text.empty() && text.back() != '\n';
-    if (newlines + (lastLineOpen ? 1 : 0) > kMaxGcodeLines)
+    // Lines end at LF (Unix), CR LF (DOS) or a lone CR (classic Mac OS): a CR not followed by LF
+    // ends a line too, so a CR-only file has its lines and their numbers.
+    const auto lineEnd = [&](std::size_t begin) {
+        std::size_t end = begin;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r')
+            ++end;
+        return end;
+    };
+    const auto nextLine = [&](std::size_t end) {
+        return end + (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n' ? 2 : 1);
+    };
+    std::size_t lines = 0;
+    for (std::size_t begin = 0; begin < text.size(); begin = nextLine(lineEnd(begin)))
+        ++lines;
+    if (lines > kMaxGcodeLines)
         throw InvalidInput("program", "has more than the limit of " + std::to_string(kMaxGcodeLines) +
                                           " lines");
     Reader reader(options);
     std::size_t number = 0;
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-        std::size_t end = text.find('\n', begin);
-        if (end == std::string_view::npos)
-            end = text.size();
+    for (std::size_t begin = 0; begin < text.size();) {
+        const std::size_t end = lineEnd(begin);
         reader.line(text.substr(begin, end - begin), ++number);
-        begin = end + 1;
+        begin = nextLine(end);
     }
     return reader.finish();
 }

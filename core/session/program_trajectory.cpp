@@ -19,7 +19,7 @@ namespace {
         throw InvalidInput("trajectory.dt", e.reason());
     if (f == "feed_scale" || f == "max_accel" || f == "max_jerk")
         throw InvalidInput("trajectory.gcode." + f, e.reason());
-    if (f == "feed" || f == "corner_angle" || f == "rapid_feed")
+    if (f == "feed" || f == "corner_angle" || f == "rapid_feed" || f == "path")
         throw InvalidInput("trajectory.gcode.program", f + ": " + e.reason());
     throw e;
 }
@@ -55,20 +55,35 @@ FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory,
     }
 }
 
+namespace {
+
+/// The program's profile without its samples (the pieces and the run time), refused as the
+/// sampled one would be: the sample bound at the trajectory's dt is checked all the same.
+FeedProfile unsampledProfile(const TrajectorySettings& trajectory, const GcodeProgram& program) {
+    try {
+        FeedProfileOptions options = programRunOptions(trajectory).profile;
+        options.withSamples = false;
+        return planFeedProfile(program, options);
+    } catch (const InvalidInput& e) {
+        rethrowAsSessionPath(e);
+    }
+}
+
+} // namespace
+
+void checkProgramOptions(const GcodeTrajectory& gcode) {
+    requirePositive(gcode.feedScale, "trajectory.gcode.feed_scale");
+    requireProfileRate(gcode.maxAccelMmPerS2, "trajectory.gcode.max_accel", "mm/s^2");
+    requireProfileRate(gcode.maxJerkMmPerS3, "trajectory.gcode.max_jerk", "mm/s^3", true);
+}
+
 double programRunSeconds(const TrajectorySettings& trajectory) {
-    // The run time does not depend on the sample step: plan with one step over the whole run
-    // (two samples) rather than sampling it at dt.
-    TrajectorySettings coarse = trajectory;
-    coarse.dtSeconds = 1e12;
-    return trajectoryProgramProfile(coarse, readTrajectoryProgram(trajectory.gcode))
-        .totalTimeSeconds;
+    return unsampledProfile(trajectory, readTrajectoryProgram(trajectory.gcode)).totalTimeSeconds;
 }
 
 ProgramSummary summarizeProgram(const TrajectorySettings& trajectory) {
     const GcodeProgram program = readTrajectoryProgram(trajectory.gcode);
-    TrajectorySettings coarse = trajectory;
-    coarse.dtSeconds = 1e12;
-    const FeedProfile profile = trajectoryProgramProfile(coarse, program);
+    const FeedProfile profile = unsampledProfile(trajectory, program);
     ProgramSummary out;
     out.lines = program.lines;
     out.moves = program.path.size();

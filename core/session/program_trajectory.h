@@ -30,7 +30,18 @@ ContourRunOptions programRunOptions(const TrajectorySettings& trajectory);
 FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory,
                                      const GcodeProgram& program);
 
-/// The run time of the program's feed profile (s). @throws InvalidInput as above.
+/**
+ * The profile options of @p gcode that are checked without its program: the feed scale finite
+ * and > 0, the acceleration and the jerk within the planner's range (kMinProfileRate ..
+ * kMaxProfileRate, feed_profile.h; a jerk also 0). What depends on the program (how long its
+ * profile runs at dt) is checked when it is planned.
+ * @throws InvalidInput "trajectory.gcode.feed_scale", ".max_accel" or ".max_jerk".
+ */
+void checkProgramOptions(const GcodeTrajectory& gcode);
+
+/// The run time of the program's feed profile (s), planned without its samples but refused
+/// as the sampled profile would be (more than sampleLimit() samples at the trajectory's dt, or
+/// an option that alone needs that long: feed_profile.h). @throws InvalidInput as above.
 double programRunSeconds(const TrajectorySettings& trajectory);
 
 /// What the trajectory editor shows of a program.

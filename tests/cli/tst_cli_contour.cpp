@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <utility>
+
 namespace {
 
 QString example(const char* name) {
@@ -123,7 +125,27 @@ void TstCliContour::badInput_data() {
     QTest::newRow("accel") << QStringList{"--gcode", star, "--max-accel", "0"} << "--max-accel: must be greater than zero";
     QTest::newRow("jerk") << QStringList{"--gcode", star, "--max-jerk", "-1"} << "--max-jerk:";
     QTest::newRow("feed scale") << QStringList{"--gcode", star, "--feed-scale", "-2"} << "--feed-scale:";
-    QTest::newRow("too many samples") << QStringList{"--gcode", star, "--dt", "1e-9"} << "--dt: the profile lasts";
+    QTest::newRow("too many samples") << QStringList{"--gcode", star, "--dt", "1e-9"} << "--dt: the program needs at least";
+    // A program that cannot be planned is refused by the option that makes it so, never a crash
+    // (a jerk of 1e-200 used to end the peak-speed bisection at 0 and read a piece that was never
+    // written). MOVE is "G0 X5\nG1 F600 X10": 5 mm of rapid, 5 mm at 10 mm/s. The times are the
+    // planner's closed-form lower bounds (feed_profile.h) over the path's 10 mm, against the
+    // 2e7 samples at dt 0.001 s (2e4 s).
+    QTest::newRow("jerk 1e-200") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e-200"}
+                                 << "--max-jerk: 1e-200 mm/s^3 needs at least 3.17e+67 s to move the path's 10 mm";
+    QTest::newRow("jerk 1e-300") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e-300"} << "--max-jerk: 1e-300 mm/s^3 needs at least 6.84e+100 s";
+    QTest::newRow("jerk subnormal") << QStringList{"--gcode", "MOVE", "--max-jerk", "5e-324"} << "--max-jerk: 4.94066e-324 mm/s^3 needs at least 4.02e+108 s";
+    QTest::newRow("jerk huge") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e300"} << "--max-jerk: 1e+300 mm/s^3 is outside the planner's range [1e-100, 1e+100]";
+    QTest::newRow("accel tiny") << QStringList{"--gcode", "MOVE", "--max-accel", "1e-300"} << "--max-accel: 1e-300 mm/s^2 needs at least 6.32e+150 s";
+    QTest::newRow("accel huge") << QStringList{"--gcode", "MOVE", "--max-accel", "1e300"} << "--max-accel: 1e+300 mm/s^2 is outside";
+    QTest::newRow("feed scale tiny") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e-300"} << "--feed-scale: 1e-300 makes the feed of line 2 (10 mm/s) 1e-299 mm/s";
+    QTest::newRow("feed scale slow") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e-5"} << "--feed-scale: the program needs at least 5e+04 s at 1e-05 times its feeds";
+    QTest::newRow("feed scale huge") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e300"} << "--feed-scale: 1e+300 makes the feed";
+    QTest::newRow("rapid feed huge") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e300"} << "--rapid-feed: 1e+300 mm/min is outside the planner's range";
+    QTest::newRow("rapid feed tiny") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e-300"} << "--rapid-feed: 1e-300 mm/min is outside";
+    QTest::newRow("rapid feed slow") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e-3"} << "--rapid-feed: running the rapids needs at least 3e+05 s";
+    QTest::newRow("dt subnormal") << QStringList{"--gcode", "MOVE", "--dt", "5e-324"} << "--dt: the program needs at least 0.5 s";
+    QTest::newRow("corner angle huge") << QStringList{"--gcode", "MOVE", "--corner-angle", "1e300"} << "--corner-angle: must be in [0, 180)";
     QTest::newRow("method") << QStringList{"--gcode", star, "--method", "pid"} << "--method: must be";
     QTest::newRow("preset option") << QStringList{"--gcode", star, "--radius", "5"} << "--radius: is not an option";
     QTest::newRow("unwritable csv") << QStringList{"--gcode", star, "--csv", "/nonexistent/x.csv"} << "--csv: cannot write";
@@ -133,13 +155,17 @@ void TstCliContour::badInput() {
     QFETCH(QStringList, args);
     QFETCH(QString, message);
     QTemporaryDir dir;
-    const QString bad = dir.filePath("bad.nc");
-    QFile f(bad);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write("G0 X1\nG1 X1 Q3 F10\n");
-    f.close();
-    args.replaceInStrings("BAD", bad);
-    message.replace("BAD", bad);
+    // BAD: an unknown word on line 2; MOVE: a rapid then a feed move (see the rows).
+    for (const auto& [name, text] : {std::pair{QStringLiteral("BAD"), QByteArray("G0 X1\nG1 X1 Q3 F10\n")},
+                                     std::pair{QStringLiteral("MOVE"), QByteArray("G0 X5\nG1 F600 X10\n")}}) {
+        const QString path = dir.filePath(name + ".nc");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text);
+        f.close();
+        args.replaceInStrings(name, path);
+        message.replace(name, path);
+    }
     const auto run = xyt::test::runCli(QStringList{"contour"} + args);
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.out.isEmpty(), run.out.constData());

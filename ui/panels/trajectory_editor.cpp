@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/trajectory_editor.h"
 
+#include "core/contour/feed_profile.h"
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"
 #include "ui/panels/fitted_stack.h"
@@ -167,11 +168,17 @@ QWidget* TrajectoryEditor::buildProgramPage() {
         form->addRow(label, f);
     };
     addField("feed_scale", tr("Feed scale"), [](double v) { requirePositive(v, "feed_scale"); });
-    addField("max_accel", tr("Max accel. (mm/s²)"), [](double v) { requirePositive(v, "max_accel"); });
+    // The planner's range (feed_profile.h) at the field; how long the program runs with them is
+    // checked when it is planned (emitIfValid), and shown at the field too.
+    addField("max_accel", tr("Max accel. (mm/s²)"), [](double v) {
+        requirePositive(v, "max_accel");
+        requireProfileRate(v, "max_accel", "mm/s^2");
+    });
     addField("max_jerk", tr("Max jerk (mm/s³)"), [](double v) {
         requireFinite(v, "max_jerk");
         if (v < 0)
             throw InvalidInput("max_jerk", "must be >= 0 (0 = none)");
+        requireProfileRate(v, "max_jerk", "mm/s^3", true);
     });
     fields_["max_jerk"]->setToolTip(tr("0 = no jerk limit (a trapezoidal profile)"));
     connect(open_, &QPushButton::clicked, this, [this] {

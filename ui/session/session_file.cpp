@@ -397,6 +397,12 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.gcode.maxJerkMmPerS3 = g.number("max_jerk");
         if (t.gcode.maxJerkMmPerS3 < 0)
             throw FormatError{join(g.path(), "max_jerk"), QStringLiteral("must be >= 0 (0 = none)")};
+        try { // the planner's range, whatever the kind: a jerk of 1e-300 is refused here
+            checkProgramOptions(t.gcode);
+        } catch (const InvalidInput& e) {
+            throw FormatError{join(g.path(), QString::fromStdString(e.field()).section('.', -1)),
+                              QString::fromStdString(e.reason())};
+        }
         g.finish();
     }
     t.durationSeconds = r.number("duration");

@@ -13,6 +13,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -93,6 +94,12 @@ private slots:
     void centripetalLimit();
     void samplesFollowThePath();
     void badOptions();
+    void degenerateOptionsAreRefused_data();
+    void degenerateOptionsAreRefused();
+    void eachOptionsTimeBoundIsTight_data();
+    void eachOptionsTimeBoundIsTight();
+    void tinyPeakSpeedsArePlanned();
+    void unsampledPlanKeepsTheRefusals();
 };
 
 void TstFeedProfile::trapezoidClosedForm_data() {
@@ -284,6 +291,132 @@ void TstFeedProfile::badOptions() {
     o.maxSamples = 1101;
     QCOMPARE(fieldOf(o), QStringLiteral("<no exception>"));
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::planFeedProfile(gcode.path, {1.0, 2.0}, options(1.0)));
+}
+
+void TstFeedProfile::degenerateOptionsAreRefused_data() {
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<QString>("reason"); // a part of it; empty: any
+    const double nan = std::nan(""), inf = HUGE_VAL, subnormal = 5e-324;
+    // "G0 X5 / G1 F600 X10": 5 mm of rapid and 5 mm at 10 mm/s; acceleration 100, dt 1 ms, at
+    // most 2e7 samples (2e4 s). The times are the header's lower bounds over L = 10 mm:
+    // 4 (L / 2J)^(1/3) for the jerk, 2 sqrt(L / A) for the acceleration. A jerk of 1e-200 is the
+    // shared session that crashed the workbench (the bisection ended at 0, no piece written).
+    QTest::newRow("jerk 1e-200") << "max_jerk" << 1e-200 << "max_jerk" << "1e-200 mm/s^3 needs at least 3.17e+67 s";
+    QTest::newRow("jerk 1e-300") << "max_jerk" << 1e-300 << "max_jerk" << "needs at least 6.84e+100 s";
+    QTest::newRow("jerk subnormal") << "max_jerk" << subnormal << "max_jerk" << "needs at least 4.02e+108 s";
+    QTest::newRow("jerk 1e300") << "max_jerk" << 1e300 << "max_jerk" << "is outside the planner's range [1e-100, 1e+100]";
+    QTest::newRow("jerk inf") << "max_jerk" << inf << "max_jerk" << "";
+    QTest::newRow("jerk nan") << "max_jerk" << nan << "max_jerk" << "";
+    QTest::newRow("accel 1e-300") << "max_accel" << 1e-300 << "max_accel" << "needs at least 6.32e+150 s";
+    QTest::newRow("accel subnormal") << "max_accel" << subnormal << "max_accel" << "needs at least 2.85e+162 s";
+    QTest::newRow("accel 1e300") << "max_accel" << 1e300 << "max_accel" << "is outside the planner's range";
+    QTest::newRow("accel inf") << "max_accel" << inf << "max_accel" << "";
+    QTest::newRow("accel nan") << "max_accel" << nan << "max_accel" << "";
+    QTest::newRow("scale 1e-300") << "feed_scale" << 1e-300 << "feed_scale" << "makes the feed of line 2 (10 mm/s) 1e-299 mm/s";
+    QTest::newRow("scale subnormal") << "feed_scale" << subnormal << "feed_scale" << "";
+    QTest::newRow("scale 1e-5") << "feed_scale" << 1e-5 << "feed_scale" << "the program needs at least 5e+04 s";
+    QTest::newRow("scale 1e300") << "feed_scale" << 1e300 << "feed_scale" << "1e+301 mm/s, outside";
+    QTest::newRow("scale inf") << "feed_scale" << inf << "feed_scale" << "";
+    QTest::newRow("scale nan") << "feed_scale" << nan << "feed_scale" << "";
+    QTest::newRow("corner nan") << "corner_angle" << nan << "corner_angle" << "";
+    QTest::newRow("corner 1e300") << "corner_angle" << 1e300 << "corner_angle" << "";
+    QTest::newRow("corner -1") << "corner_angle" << -1.0 << "corner_angle" << "";
+    QTest::newRow("dt subnormal") << "dt" << subnormal << "dt" << "the program needs at least 0.5 s at its own feeds";
+    QTest::newRow("dt inf") << "dt" << inf << "dt" << "";
+    QTest::newRow("dt nan") << "dt" << nan << "dt" << "";
+}
+
+void TstFeedProfile::degenerateOptionsAreRefused() {
+    QFETCH(QString, option);
+    QFETCH(double, value);
+    QFETCH(QString, field);
+    QFETCH(QString, reason);
+    const auto gcode = xyt::readGcode("G0 X5\nG1 F600 X10\n");
+    FeedProfileOptions o = options(100.0);
+    (option == "max_jerk"       ? o.maxJerkMmPerS3
+     : option == "max_accel"    ? o.maxAccelMmPerS2
+     : option == "feed_scale"   ? o.feedScale
+     : option == "corner_angle" ? o.cornerAngleDeg
+                                : o.dtSeconds) = value;
+    for (const bool withSamples : {true, false}) {
+        o.withSamples = withSamples;
+        const QString message = xyt::test::invalidInputMessage([&] { xyt::planFeedProfile(gcode, o); });
+        QVERIFY2(message.startsWith(field + ": ") && message.contains(reason), qPrintable(message));
+    }
+}
+
+void TstFeedProfile::eachOptionsTimeBoundIsTight_data() {
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<double>("bound"); // the value whose lower bound on the run time is 1 s
+    // 10 mm with the other two limits out of the way (1e100): the profile is the bound's own
+    // closed form, so the option at its bound plans a 1 s run, which 1001 samples at 1 ms hold.
+    // Feed: T = L / f + f / A -> f = 10 mm/s. Acceleration: T = 2 sqrt(L / A) -> A = 4 L = 40.
+    // Jerk: T = 4 (L / 2J)^(1/3) -> J = 32 L = 320.
+    QTest::newRow("feed") << "feed" << 10.0;
+    QTest::newRow("max_accel") << "max_accel" << 40.0;
+    QTest::newRow("max_jerk") << "max_jerk" << 320.0;
+}
+
+void TstFeedProfile::eachOptionsTimeBoundIsTight() {
+    QFETCH(QString, option);
+    QFETCH(double, bound);
+    const xyt::Path path({xyt::PathSegment::line({0.0, 0.0}, {10.0, 0.0})});
+    const auto plan = [&](double value) {
+        FeedProfileOptions o = options(option == "max_accel" ? value : 1e100, option == "max_jerk" ? value : 0.0);
+        o.maxSamples = 1001;
+        return xyt::planFeedProfile(path, {option == "feed" ? value : 1e100}, o);
+    };
+    // 1e-6 above the bound: planned, lasting the closed form's 1 s less a hair.
+    const FeedProfile p = plan(bound * (1.0 + 1e-6));
+    XYT_COMPARE_NEAR(p.totalTimeSeconds, 1.0, 1e-6, 0.0);
+    QCOMPARE(p.t.size(), std::size_t(1001));
+    XYT_COMPARE_NEAR(p.s.back(), 10.0, 1e-12, 0.0);
+    // 1e-6 below: refused by the option's name before planning, not by "dt" after it.
+    QCOMPARE(xyt::test::invalidInputField([&] { plan(bound * (1.0 - 1e-6)); }), option);
+}
+
+void TstFeedProfile::tinyPeakSpeedsArePlanned() {
+    // A 1e-30 mm move at the smallest jerk the planner takes (1e-100), with a step long enough
+    // for the samples to hold it: the peak is (L sqrt(J) / 2)^(2/3) = 2.9e-54 mm/s, 3e-154 of the
+    // 1e100 cap, beyond 200 halvings of the value (the old bisection returned 0 and wrote no
+    // piece). T = 4 (L / 2J)^(1/3) = 6.8e23 s.
+    const double length = 1e-30, jerk = 1e-100;
+    FeedProfileOptions o = options(1e100, jerk, 1e30);
+    const xyt::Path path({xyt::PathSegment::line({0.0, 0.0}, {length, 0.0})});
+    const FeedProfile p = xyt::planFeedProfile(path, {1e100}, o);
+    XYT_COMPARE_NEAR(p.totalTimeSeconds, 4.0 * std::cbrt(length / (2.0 * jerk)), 1e-9, 0.0);
+    double peak = 0.0;
+    for (const auto& piece : p.pieces)
+        peak = std::max(peak, piece.v0);
+    XYT_COMPARE_NEAR(peak, std::pow(length * std::sqrt(jerk) / 2.0, 2.0 / 3.0), 1e-9, 0.0);
+    XYT_COMPARE_NEAR(p.s.back(), length, 1e-12, 0.0);
+    // The same between rests on a 10 mm arc-free move with a fine step: a jerk of 1e-6 needs
+    // 4 (5e6)^(1/3) = 684 s, which 1e6 samples at 1 ms hold.
+    o = options(100.0, 1e-6, 1e-3);
+    o.maxSamples = 1'000'000;
+    const FeedProfile q = straightMove(10.0, 10.0, o);
+    XYT_COMPARE_NEAR(q.totalTimeSeconds, 4.0 * std::cbrt(10.0 / 2e-6), 1e-9, 0.0);
+    XYT_COMPARE_NEAR(q.s.back(), 10.0, 1e-9, 0.0);
+}
+
+void TstFeedProfile::unsampledPlanKeepsTheRefusals() {
+    const auto gcode = xyt::readGcode(kStar);
+    FeedProfileOptions o = options(200.0, 5000.0);
+    const FeedProfile sampled = xyt::planFeedProfile(gcode, o);
+    o.withSamples = false;
+    const FeedProfile unsampled = xyt::planFeedProfile(gcode, o);
+    QCOMPARE(unsampled.totalTimeSeconds, sampled.totalTimeSeconds);
+    QCOMPARE(unsampled.pieces.size(), sampled.pieces.size());
+    QVERIFY(unsampled.t.empty());
+    // The sample bound holds without the samples: one sample short of the run is refused.
+    o.maxSamples = sampled.t.size() - 1;
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }), QStringLiteral("dt"));
+    o.maxSamples = sampled.t.size();
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }), QStringLiteral("<no exception>"));
+    // A path without segments is refused, not read past its end.
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(xyt::Path(), {}, o); }), QStringLiteral("path"));
 }
 
 QTEST_APPLESS_MAIN(TstFeedProfile)

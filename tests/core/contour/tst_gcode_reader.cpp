@@ -7,6 +7,7 @@
 // operations on values of order 10 mm (a few ulps).
 #include "core/contour/gcode_reader.h"
 #include "core/model/errors.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QDir>
@@ -63,6 +64,9 @@ private slots:
     void badPrograms_data();
     void badPrograms();
     void programLimits();
+    void lineEndings_data();
+    void lineEndings();
+    void zeroBeforeAnotherWordIsNotHexadecimal();
     void examples_data();
     void examples();
     void everyExampleIsTested();
@@ -248,6 +252,14 @@ void TstGcodeReader::badPrograms_data() {
     QTest::newRow("full circle by R") << "G2 R5 F100" << "line 1" << "a full circle needs I and J";
     QTest::newRow("zero radius") << "G2 I0 J0 F10" << "line 1" << "has a zero radius";
     QTest::newRow("word twice") << "G1 X1 X2 F100" << "line 1" << "word X is given twice (X2 at column 7)";
+    // A number the tokenizer stops reading early: said to be malformed, not a word given twice
+    // ("X0x10" used to read as X0 and X10) or a stray point.
+    QTest::newRow("hexadecimal") << "G1 X0x10 F100" << "line 1"
+                                 << "malformed number X0x10 at column 4: G-code numbers are decimal (no 0x prefix)";
+    QTest::newRow("hexadecimal upper") << "G1 X-0X1f F100" << "line 1" << "malformed number X-0X1f at column 4";
+    QTest::newRow("two points") << "G1 X1.2.3 F100" << "line 1"
+                                << "malformed number X1.2.3 at column 4: more than one decimal point";
+    QTest::newRow("two points CR") << "G0 X0\rG1 Y.5. F100\r" << "line 2" << "malformed number Y.5. at column 4";
     QTest::newRow("two motions") << "G0 G1 X1 F100" << "line 1" << "two motion codes G0 and G1 on one line";
     QTest::newRow("two units") << "G20 G21" << "line 1" << "two unit codes";
     QTest::newRow("no number") << "G1 X (c)" << "line 1" << "word X at column 4 has no number";
@@ -294,6 +306,55 @@ void TstGcodeReader::programLimits() {
     xyt::GcodeReadOptions options;
     options.rapidFeedMmPerMin = 0.0;
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, readGcode("G0 X1", options));
+    // The planner's range of feeds (feed_profile.h) in mm/min: 60 x [1e-100, 1e100].
+    for (const double rate : {1e300, 1e-300, 5e-324, 59e-100, 61e100}) {
+        options.rapidFeedMmPerMin = rate;
+        QCOMPARE(xyt::test::invalidInputField([&] { readGcode("G0 X1", options); }), QStringLiteral("rapid_feed"));
+    }
+    options.rapidFeedMmPerMin = 1e-98;
+    QCOMPARE(readGcode("G0 X1", options).segments[0].feedMmPerSec, 1e-98 / 60.0);
+}
+
+void TstGcodeReader::lineEndings_data() {
+    QTest::addColumn<QString>("separator");
+    QTest::newRow("LF") << "\n";
+    QTest::newRow("CR LF") << "\r\n";
+    QTest::newRow("CR (classic Mac OS)") << "\r";
+}
+
+void TstGcodeReader::lineEndings() {
+    QFETCH(QString, separator);
+    const std::string sep = separator.toStdString();
+    // The same program under each line ending: the same path, the same line numbers (a CR-only
+    // file used to be one line: "two motion codes G1 and G1 on one line").
+    const std::string text = "G21 G90" + sep + "G1 X10 F600" + sep + sep + "G1 Y10" + sep + "G0 X0 Y0" + sep;
+    const auto p = readGcode(text);
+    QCOMPARE(p.path.size(), std::size_t(3));
+    QCOMPARE(p.lines, std::size_t(5));
+    QCOMPARE(p.segments[0].line, std::size_t(2));
+    QCOMPARE(p.segments[1].line, std::size_t(4));
+    QCOMPARE(p.segments[2].line, std::size_t(5));
+    comparePoint(p.path.segments()[1].end(), {10.0, 10.0});
+    // An error names the line it is on.
+    try {
+        readGcode("G0 X1" + sep + "G1 X2 F100" + sep + "G5" + sep);
+        QFAIL("G5 was accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.field(), std::string("line 3"));
+    }
+    // The line limit counts lines, whatever ends them.
+    std::string lines;
+    for (std::size_t i = 0; i + 1 < xyt::kMaxGcodeLines; ++i)
+        lines += sep;
+    QCOMPARE(readGcode(lines + "G0 X1").segments[0].line, xyt::kMaxGcodeLines);
+    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, readGcode(lines + sep + "G0 X1"));
+}
+
+void TstGcodeReader::zeroBeforeAnotherWordIsNotHexadecimal() {
+    // Words need no space between them: "Y0x10" is Y0 and X10 (RS274/NGC letters in either
+    // case), valid, unlike "X0x10" where a second X could only be a mistake.
+    const auto p = readGcode("G1 Y0x10 F100");
+    comparePoint(p.path.segments()[0].end(), {10.0, 0.0});
 }
 
 void TstGcodeReader::examples_data() {

@@ -97,6 +97,12 @@ void TstProgramTrajectory::refusalsNameTheSessionPath_data() {
                               << "-1"
                               << "trajectory.gcode.max_jerk"
                               << "";
+    // A jerk the samples cannot hold: 4 (L / 2J)^(1/3) over the program's length, named by its
+    // session path (it ended the planner's bisection at 0 and crashed the reader).
+    QTest::newRow("max jerk 1e-300") << "max_jerk"
+                                     << "1e-300"
+                                     << "trajectory.gcode.max_jerk"
+                                     << "1e-300 mm/s^3 needs at least";
     QTest::newRow("dt") << "dt"
                         << "0"
                         << "trajectory.dt"

@@ -267,6 +267,21 @@ void TstSessionFile::badGcodeFields_data() {
                                    << "trajectory.gcode.max_accel" << "must be a finite number";
     QTest::newRow("negative jerk") << "trajectory.gcode.max_jerk" << QJsonValue(-1)
                                    << "trajectory.gcode.max_jerk" << "must be >= 0 (0 = none)";
+    // Profile options the planner cannot plan, by their JSON path: a jerk of 1e-300 crashed every
+    // command that read the session and the workbench on open. Out of the planner's range
+    // (feed_profile.h) whatever the program; in it, by the time the option alone needs for the
+    // program's 35.7 mm (4 (L / 2J)^(1/3) = 4.85e7 s), past what the samples at dt hold.
+    QTest::newRow("jerk 1e-300") << "trajectory.gcode.max_jerk" << QJsonValue(1e-300)
+                                 << "trajectory.gcode.max_jerk"
+                                 << "1e-300 mm/s^3 is outside the planner's range [1e-100, 1e+100]";
+    QTest::newRow("jerk 1e-20") << "trajectory.gcode.max_jerk" << QJsonValue(1e-20)
+                                << "trajectory.gcode.max_jerk" << "1e-20 mm/s^3 needs at least 4.85e+07 s";
+    QTest::newRow("snapshot jerk") << "snapshots[0].trajectory.gcode.max_jerk" << QJsonValue(5e-324)
+                                   << "snapshots[0].trajectory.gcode.max_jerk" << "4.94066e-324 mm/s^3 is outside";
+    QTest::newRow("accel 1e300") << "trajectory.gcode.max_accel" << QJsonValue(1e300)
+                                 << "trajectory.gcode.max_accel" << "1e+300 mm/s^2 is outside";
+    QTest::newRow("feed scale 1e-300") << "trajectory.gcode.feed_scale" << QJsonValue(1e-300)
+                                       << "trajectory.gcode.feed_scale" << "1e-300 makes the feed of line 2";
     QTest::newRow("missing file name") << "trajectory.gcode.file" << QJsonValue(QJsonValue::Undefined)
                                        << "trajectory.gcode.file" << "is missing";
     QTest::newRow("snapshot program") << "snapshots[0].trajectory.gcode.program" << QJsonValue("G1 X1\n")
