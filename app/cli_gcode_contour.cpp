@@ -42,7 +42,7 @@ template <class F> auto namingOptions(F body) {
 GcodeProgram readProgram(const QString& path, const GcodeReadOptions& options) {
     std::string text;
     try {
-        text = readRegularFile(path.toStdString(), kMaxGcodeBytes);
+        text = readRegularFile(fileNameBytes(path), kMaxGcodeBytes);
     } catch (const FileError& e) {
         throw InvalidInput("--gcode", "cannot read " + std::string(e.what()));
     }

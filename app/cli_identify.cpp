@@ -30,7 +30,7 @@ namespace {
 /// The table of @p path; a file that cannot be read is bad input naming @p option.
 ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment) {
     try {
-        return readExperimentTable(path.toStdString(), segment);
+        return readExperimentTable(fileNameBytes(path), segment);
     } catch (const FileError& e) {
         throw InvalidInput(option.toStdString(), e.what());
     }
