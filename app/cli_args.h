@@ -12,6 +12,18 @@
 namespace xyt::cli {
 
 /**
+ * One command-line argument as text, losslessly: valid UTF-8 is decoded as usual, and each byte
+ * that is not part of a valid UTF-8 sequence becomes the lone surrogate U+DC00 + byte (as
+ * Python's "surrogateescape" does). A file name is any bytes on Linux, and Qt's own decoding
+ * (QCoreApplication::arguments) turns invalid ones into U+FFFD, so a name like "x_\xff.csv"
+ * could neither be opened nor written under its own name. Valid UTF-8 never yields a lone
+ * surrogate, so fileNameBytes() gives back exactly the bytes the shell passed.
+ */
+QString argumentText(const char* bytes);
+/// The bytes of an argument decoded by argumentText(), for the system call (open, rename).
+std::string fileNameBytes(const QString& argument);
+
+/**
  * The arguments of one xytune-cli command: `--name value` pairs, boolean `--flag`s and
  * positional words. Every accessor that fails throws xyt::InvalidInput whose field is the
  * argument as typed ("--wn"), so main() can print one line naming it and exit with code 2.

@@ -207,13 +207,17 @@ void requireFiniteSignals(const SimulationResult& run, const std::string& field)
 }
 } // namespace
 
+InvalidInput cannotWrite(const std::string& argument, const FileError& e) {
+    return InvalidInput(argument, "cannot write " + std::string(e.what()) +
+                                      "; nothing was written, an existing file is unchanged");
+}
+
 void writeFile(const std::string& argument, const QString& path,
                const std::function<void(const ByteSink&)>& produce) {
     try {
-        writeFileAtomically(path.toStdString(), produce);
+        writeFileAtomically(fileNameBytes(path), produce);
     } catch (const FileError& e) {
-        throw InvalidInput(argument, "cannot write " + std::string(e.what()) +
-                                         "; nothing was written, an existing file is unchanged");
+        throw cannotWrite(argument, e);
     }
 }
 
@@ -236,11 +240,20 @@ void writeCsv(const QString& path, const SimulationResult& run) {
 }
 
 Session loadSessionOrThrow(const QString& path) {
-    const ui::SessionLoadResult r = ui::loadSessionFile(path);
+    // Read here rather than by ui::loadSessionFile: the file name goes to open(2) as the bytes
+    // the shell passed, and a file-level error names the path once ("<path>: <reason>").
+    const std::string name = fileNameBytes(path);
+    std::string bytes;
+    try {
+        bytes = readRegularFile(name, static_cast<std::size_t>(ui::kMaxSessionFileBytes));
+    } catch (const FileError& e) {
+        throw InvalidInput(name, e.reason());
+    }
+    const ui::SessionLoadResult r = ui::sessionFromBytes(QByteArray::fromStdString(bytes));
     for (const QString& w : r.warnings)
         std::fprintf(stderr, "xytune-cli: warning: %s\n", qPrintable(w));
     if (!r.ok)
-        throw InvalidInput(path.toStdString(), r.message().toStdString());
+        throw InvalidInput(name, r.message().toStdString());
     return r.session;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/io/file_io.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/simulation.h"
 #include "core/session/session.h"
@@ -91,6 +92,9 @@ double positiveNumber(const CliArgs& args, const QString& name, double fallback)
  */
 void writeFile(const std::string& argument, const QString& path,
                const std::function<void(const ByteSink&)>& produce);
+/// The message of a file that could not be written, naming @p argument: "-o: cannot write
+/// <path>: <reason>; nothing was written, an existing file is unchanged".
+InvalidInput cannotWrite(const std::string& argument, const FileError& e);
 /// The same for a text held in memory.
 void writeTextFile(const std::string& argument, const QString& path, const QString& text);
 /// t,r,y,e,u of one run, streamed. @throws InvalidInput @p field when a signal is not finite.

@@ -120,11 +120,16 @@ int runExcite(const QStringList& argv) {
     else if (args.has("axis") || args.has("noise-std") || args.has("seed"))
         throw InvalidInput(args.has("axis") ? "--axis" : args.has("seed") ? "--seed" : "--noise-std",
                            "only with --respond SESSION.json");
-    writeExcitation(output->toStdString(), s); // atomic; FileError -> exit 1
+    const std::string path = fileNameBytes(*output);
+    try {
+        writeExcitation(path, s); // atomic
+    } catch (const FileError& e) {
+        throw cannotWrite("-o", e);
+    }
     double peak = 0.0;
     for (double v : s.u)
         peak = std::max(peak, std::abs(v));
-    print(QJsonObject{{"path", QString::fromStdString(terminalText(output->toStdString()))},
+    print(QJsonObject{{"path", QString::fromStdString(terminalText(path))},
                       {"samples", static_cast<qint64>(s.u.size())},
                       {"ts", number(s.tsSeconds)},
                       {"duration", number(double(s.u.size()) * s.tsSeconds)},

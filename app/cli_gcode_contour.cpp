@@ -48,7 +48,7 @@ template <class F> auto namingOptions(const QString& file, F body) {
 GcodeProgram readProgram(const QString& path, const GcodeReadOptions& options) {
     std::string text;
     try {
-        text = readRegularFile(path.toStdString(), kMaxGcodeBytes);
+        text = readRegularFile(fileNameBytes(path), kMaxGcodeBytes);
     } catch (const FileError& e) {
         throw InvalidInput("--gcode", "cannot read " + std::string(e.what()));
     }

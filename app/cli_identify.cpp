@@ -37,7 +37,7 @@ namespace {
 ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment,
                           const std::vector<std::string>& columns) {
     try {
-        return readExperimentTable(path.toStdString(), segment, columns);
+        return readExperimentTable(fileNameBytes(path), segment, columns);
     } catch (const FileError& e) {
         throw InvalidInput(option.toStdString(), e.what());
     }

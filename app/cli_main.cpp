@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-cli: the headless face of XY Tune. JSON on stdout (report: text; new, export: the path
 // written); bad input -> one line on stderr naming the argument, exit code 2.
+#include "app/cli_args.h"
 #include "app/cli_commands.h"
 
 #include "core/model/errors.h"
@@ -164,9 +165,9 @@ constexpr const char* kFrequencyLoops =
     "or --num N --den D [--ts T] (L itself):\n";
 
 constexpr const char* kExitCodes =
-    "Exit codes: 0 success, 2 invalid input (message names the argument), 1 a file that\n"
-    "could not be written (path and system reason; the old file is unchanged) or an internal\n"
-    "error.\n";
+    "Exit codes: 0 success, 2 invalid input or a file that could not be read or written (one\n"
+    "line naming the argument, with the path and the reason; an old file is unchanged), 1 an\n"
+    "internal error.\n";
 
 /// The general help: every command.
 std::string generalUsage() {
@@ -218,8 +219,11 @@ std::string oneLine(const std::string& message) { return xyt::terminalText(messa
 } // namespace
 
 int main(int argc, char* argv[]) {
+    // The arguments decoded losslessly (file names may be any bytes), read before Qt sees argv.
+    QStringList args;
+    for (int i = 1; i < argc; ++i)
+        args << xyt::cli::argumentText(argv[i]);
     QCoreApplication app(argc, argv);
-    QStringList args = QCoreApplication::arguments().mid(1);
     if (args.isEmpty() || args.first() == "--help" || args.first() == "-h" ||
         args.first() == "help") {
         std::fputs(generalUsage().c_str(), args.isEmpty() ? stderr : stdout);
@@ -256,10 +260,11 @@ int main(int argc, char* argv[]) {
     try {
         return it->second(args);
     } catch (const xyt::FileError& e) {
-        // Every write is atomic (core/io/file_io.h): a failed one leaves any old file as it was.
+        // Every writer names its option (cannotWrite); this is the backstop for one that does
+        // not. Every write is atomic (core/io/file_io.h): the old file is as it was.
         std::fprintf(stderr, "xytune-cli %s: cannot write %s; nothing was written, an existing file is unchanged\n",
                      qPrintable(name), oneLine(e.what()).c_str());
-        return 1;
+        return 2;
     } catch (const xyt::InvalidInput& e) {
         std::fprintf(stderr, "xytune-cli %s: %s\n", qPrintable(name), oneLine(e.what()).c_str());
         return 2;

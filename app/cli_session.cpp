@@ -58,7 +58,7 @@ int runNew(const QStringList& argv) {
     args.allowOnly({"o"});
     const QString path = outputPath(args);
     writeOrThrow(path, QJsonDocument(ui::sessionToJson(Session::paperDefault())).toJson());
-    std::printf("%s\n", terminalText(path.toStdString()).c_str());
+    std::printf("%s\n", terminalText(fileNameBytes(path)).c_str());
     return 0;
 }
 
@@ -69,7 +69,7 @@ int runSessionReport(const QString& path) {
     QString text;
     QTextStream out(&text);
     const TrajectorySettings& t = session.trajectory;
-    out << "XY Tune report: " << shown(path.toStdString()) << "\n";
+    out << "XY Tune report: " << shown(fileNameBytes(path)) << "\n";
     if (t.kind == TrajectoryKind::Cubic)
         out << "Trajectory: cubic " << t.x0 << " -> " << t.xf << " mm from " << t.t0Seconds
             << " s to " << t.tfSeconds << " s";
@@ -192,7 +192,7 @@ int runExport(const QStringList& argv) {
         writeOrThrow(path, QByteArray::fromStdString(exportCHeader(session, evaluation, options)));
     else
         writeOrThrow(path, QByteArray::fromStdString(exportOctaveScript(session, evaluation, options)));
-    std::printf("%s\n", terminalText(path.toStdString()).c_str());
+    std::printf("%s\n", terminalText(fileNameBytes(path)).c_str());
     return 0;
 }
 

@@ -31,12 +31,28 @@ using ByteSink = std::function<void(std::string_view)>;
  * Replaces @p path atomically: the bytes go to a temporary file in the same folder, every
  * write, the fsync and the close are checked, and only then is it renamed over @p path. On any
  * failure (a full disk, an I/O error, an exception from @p produce) the temporary file is
- * removed and the old file is left exactly as it was. A symbolic link is followed (its target is
- * replaced); the mode of an existing file is kept.
+ * removed and the old file is left exactly as it was. The mode and, where the system permits
+ * (always for root), the owner and group of a replaced file are kept.
+ *
+ * A symbolic link is followed: its target is replaced, or created when it does not exist (the
+ * link stays a link). Since a link lets its owner choose the file we write, links are followed
+ * only when that cannot hurt:
+ *  - in a folder everyone may write to with the sticky bit (/tmp), a link that belongs neither
+ *    to us (the effective user) nor to the folder's owner is refused, as the kernel's
+ *    fs.protected_symlinks does (checked here even where it is off);
+ *  - an existing target must belong to the owner of every link on the way to it (so root never
+ *    replaces a system file or another user's file through a link that someone else made, nor
+ *    through its own link to a user's file), and a missing target is created only through links
+ *    of our own;
+ *  - in such a shared sticky folder, an existing file (reached directly or through a link) that
+ *    belongs neither to us nor to the folder's owner is refused, as fs.protected_regular does.
+ * The temporary file is ".xytune-save-<pid>-XXXXXX" beside the target; each save first removes
+ * the ones of this user whose process no longer exists (a save killed half way), never those of
+ * a process still running.
  * @param produce writes the content through the sink it is given, in as many pieces as it likes
  *        (the sink buffers 64 KiB), so large outputs are streamed, never held in memory.
  * @throws FileError naming @p path with the reason, including "is not a regular file" for a
- *         folder, device, FIFO or socket (never replaced).
+ *         folder, device, FIFO or socket (never replaced) and the refused links and files above.
  */
 void writeFileAtomically(const std::string& path, const std::function<void(const ByteSink&)>& produce);
 void writeFileAtomically(const std::string& path, std::string_view bytes);

@@ -8,6 +8,7 @@
 #include "core/simulation/trajectory.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cctype>
 #include <cstdio>
@@ -39,6 +40,42 @@ std::string upper(std::string s) {
 /// A number for an export, or the reason it cannot be one (exportableNumber).
 std::string num(double v, const std::string& field) {
     return exactNumber(exportableNumber(v, field));
+}
+
+/**
+ * Refuses a constant that the controller's arithmetic cannot hold: in float, a magnitude above
+ * FLT_MAX becomes inf when compiled (silently: even -Werror -pedantic says nothing), and
+ * a non-zero one below the smallest subnormal becomes 0 (umax 5e-324 clipped every command to 0).
+ * Double holds every finite number, which exportableNumber already requires.
+ * @throws InvalidInput naming @p field, with the value and the C constant @p constant.
+ */
+void requireInPrecision(double v, const std::string& field, const std::string& constant, CPrecision precision) {
+    if (precision != CPrecision::Float)
+        return;
+    if (std::abs(v) > static_cast<double>(FLT_MAX))
+        throw InvalidInput(field, "gives " + exactNumber(v) + " for " + constant +
+                                      ", beyond the largest float (" + exactNumber(FLT_MAX) +
+                                      "): it would be inf in float arithmetic; export in double precision; "
+                                      "nothing was exported");
+    if (v != 0.0 && static_cast<float>(v) == 0.0f)
+        throw InvalidInput(field, "gives " + exactNumber(v) + " for " + constant +
+                                      ", which rounds to 0 in float (the smallest is " +
+                                      exactNumber(static_cast<double>(FLT_TRUE_MIN)) +
+                                      "); export in double precision; nothing was exported");
+}
+
+/// A constant of the controller's arithmetic (xyt_real), checked as num() and requireInPrecision().
+std::string realNum(double v, const std::string& field, const std::string& constant, CPrecision precision) {
+    const std::string text = num(v, field);
+    requireInPrecision(v, field, constant, precision);
+    return text;
+}
+
+/// requireInPrecision for every coefficient of an array the step function casts to xyt_real.
+void requireArrayInPrecision(const std::vector<double>& v, const std::string& field, const std::string& array,
+                             CPrecision precision) {
+    for (std::size_t i = 0; i < v.size(); ++i)
+        requireInPrecision(v[i], field, array + "[" + std::to_string(i) + "]", precision);
 }
 
 std::string axisField(int axisIndex, const std::string& part) {
@@ -127,7 +164,7 @@ std::string cSaturate(const std::string& target, const std::string& v) {
 
 /// The complete digital PI of a Guillemin-Truxal axis (stepDigitalPi in C).
 std::string piImplementationBlock(const AxisSettings& axis, const DigitalPi& pi, const std::string& id,
-                                  int axisIndex) {
+                                  int axisIndex, CPrecision precision) {
     const std::string up = upper(id);
     const std::string gt = axisField(axisIndex, "gt");
     const std::string f = gt + " (digital PI at controller_ts)";
@@ -146,7 +183,9 @@ std::string piImplementationBlock(const AxisSettings& axis, const DigitalPi& pi,
         out << " (I[k] += AW_GAIN (u - v), AW_GAIN = Ts/Tt)";
     out << ".\n */\n";
     const auto constant = [&](const std::string& name, double v, const std::string& field) {
-        out << "static const xyt_real XYT_" << up << "_" << name << " XYT_MAYBE_UNUSED = " << num(v, field) << ";\n";
+        const std::string constantName = "XYT_" + up + "_" + name;
+        out << "static const xyt_real " << constantName << " XYT_MAYBE_UNUSED = "
+            << realNum(v, field, constantName, precision) << ";\n";
     };
     constant("KP", pi.kp, gt + ".kp");
     constant("C0", pi.c0, f);
@@ -191,7 +230,7 @@ std::string cShift(const std::string& array, const std::string& length) {
 
 /// The RST law (and ZPETC) of a pole-placement axis in C: the operations of simulateSampledRst.
 std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluation& a, AntiWindup antiWindup,
-                                   const std::string& id, int axisIndex) {
+                                   const std::string& id, int axisIndex, CPrecision precision) {
     const PolePlacementDesign& pp = *a.pp;
     const bool ff = axis.pp.zpetcEnabled && a.zpetc;
     const std::string up = upper(id), X = "XYT_" + upper(id);
@@ -211,8 +250,18 @@ std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluatio
     out << " * The step runs F u = KF w - G y (w the ZPETC output, or r), clips u to +-XYT_UMAX and\n"
         << " * remembers " << (antiWindup == AntiWindup::None ? "its unclipped output v" : "the clipped u (anti-windup)")
         << " in the past-u terms. U_REST = A(1)/B(1) is u at rest per mm.\n */\n";
-    out << "static const xyt_real " << X << "_U_REST XYT_MAYBE_UNUSED = " << num(pp.a(1.0) / pp.b(1.0), field + " (A(1)/B(1))")
-        << ";\n";
+    // The coefficient arrays are double, but the step multiplies with them cast to xyt_real.
+    requireInPrecision(pp.kf, field + " (Kf)", X + "_KF", precision);
+    requireArrayInPrecision(pp.f.ascending(), field + " (F)", X + "_F", precision);
+    requireArrayInPrecision(pp.g.ascending(), field + " (G)", X + "_G", precision);
+    if (ff) {
+        requireArrayInPrecision(a.zpetc->feedforwardNum.ascending(), field + ".zpetc (feedforward)", X + "_FF_NUM",
+                                precision);
+        requireArrayInPrecision(a.zpetc->feedforwardDen.ascending(), field + ".zpetc (feedforward)", X + "_FF_DEN",
+                                precision);
+    }
+    out << "static const xyt_real " << X << "_U_REST XYT_MAYBE_UNUSED = "
+        << realNum(pp.a(1.0) / pp.b(1.0), field + " (A(1)/B(1))", X + "_U_REST", precision) << ";\n";
     out << "typedef struct {\n";
     if (ff)
         out << "    xyt_real r[" << X << "_FF_NUM_LEN]; /* r(k+P), r(k+P-1), ... */\n"
@@ -249,8 +298,10 @@ std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluatio
 }
 
 /// The DAC conversion of dacOutput in C (no library call: floor by truncation and correction).
-std::string dacBlock(const Session& session) {
+std::string dacBlock(const Session& session, CPrecision precision) {
     const int bits = session.implementation.dacBits;
+    requireInPrecision(2.0 * session.umaxVolts / std::ldexp(1.0, bits), "umax", "XYT_DAC_LSB (2 umax / 2^dac_bits)",
+                       precision);
     std::ostringstream out;
     out << "/* The DAC: " << bits << " bits over +-XYT_UMAX, LSB XYT_DAC_LSB = 2 umax / 2^bits, codes\n"
         << " * -2^(bits-1) .. 2^(bits-1) - 1 (0 V is code 0). Write xyt_dac_code(u) to the converter;\n"
@@ -317,7 +368,8 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
            "#define XYT_MAYBE_UNUSED\n#endif\n\n"
         << "#define XYT_UMAX_VOLTS " << num(session.umaxVolts, "umax") << "\n\n"
         << "typedef " << precisionName(options.precision) << " xyt_real;\n"
-        << "static const xyt_real XYT_UMAX XYT_MAYBE_UNUSED = " << num(session.umaxVolts, "umax") << ";\n"
+        << "static const xyt_real XYT_UMAX XYT_MAYBE_UNUSED = "
+        << realNum(session.umaxVolts, "umax", "XYT_UMAX", options.precision) << ";\n"
         << "#define XYT_DELAY_SAMPLES " << session.implementation.delaySamples << "\n";
     const SampledDataOptions implementation = sessionSampledDataOptions(session); // validates
     if (implementation.encoderResolution > 0.0)
@@ -325,7 +377,7 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
             << num(implementation.encoderResolution, "implementation.encoder_resolution") << "\n";
     out << "\n";
     if (implementation.dacBits > 0)
-        out << dacBlock(session);
+        out << dacBlock(session, options.precision);
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
         requireCIdentifier(session, i);
@@ -333,7 +385,7 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
         const AxisEvaluation& a = validAxis(evaluation, i);
         if (a.pp) {
             out << rstHeaderBlock(axis, a, id, i);
-            out << rstImplementationBlock(axis, a, implementation.antiWindup, axis.id, i);
+            out << rstImplementationBlock(axis, a, implementation.antiWindup, axis.id, i, options.precision);
             continue;
         }
         const DigitalController c = axisDigitalController(session, evaluation, i, options);
@@ -360,7 +412,7 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
             << joined(c.den, ", ", pi) << "};\n";
         out << "static const double XYT_" << id << "_TS XYT_MAYBE_UNUSED = " << num(c.tsSeconds, "controller_ts")
             << ";\n\n";
-        out << piImplementationBlock(axis, exportPi(session, *a.gt, options), axis.id, i);
+        out << piImplementationBlock(axis, exportPi(session, *a.gt, options), axis.id, i, options.precision);
     }
     out << "#endif /* XYT_CONTROLLER_COEFFICIENTS_H */\n";
     return out.str();

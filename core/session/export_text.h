@@ -51,7 +51,11 @@ DigitalController axisDigitalController(const Session& session, const SessionEva
  * `cc -std=c99 -Wall -Wextra -Werror -pedantic`. Numbers are printed with 17 significant digits,
  * so they read back exactly. User text (labels) enters only as comment text; axis ids, which
  * name the functions, must be 1 to 16 lower-case letters or digits and differ.
- * @throws InvalidInput naming the session field of a non-finite number, "axes[i].id" for an id
+ * In float, every constant of the controller's arithmetic (XYT_UMAX, the PI's KP, C0, C1, UNIT,
+ * AW_GAIN, the RST law's KF, F, G, U_REST and feedforward, XYT_DAC_LSB) must keep its value: one
+ * beyond FLT_MAX (inf when compiled) or a non-zero one that rounds to 0 is refused.
+ * @throws InvalidInput naming the session field of a non-finite number, or of a constant float
+ *         cannot hold (the message names the constant and its value), "axes[i].id" for an id
  *         that cannot name a C function, "implementation.*" / "controller_ts" for settings the
  *         controller cannot run with.
  */

@@ -139,6 +139,9 @@ void TstCliBadInput::initTestCase() {
         axes[0] = x;
         s.insert("axes", axes);
     });
+    // Constants a float header cannot hold (the double header holds them).
+    variant("ts-1e308", [&](QJsonObject& s) { setIn(s, {"controller_ts"}, 1e308); });
+    variant("umax-5e-324", [&](QJsonObject& s) { setIn(s, {"umax"}, 5e-324); });
 }
 
 void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
@@ -457,6 +460,15 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("export json digital PI overflows")
         << QStringList{"export", "{digital-pi-inf}", "--format", "json", "-o", "{dir}/o.json"}
         << "axes[0].gt (digital PI at controller_ts): gives inf in the export";
+    // A float header held XYT_X_C0 = 1.0282776349614397e+307 (inf when compiled) and
+    // XYT_UMAX = 4.9406564584124654e-324 (0 in float).
+    QTest::newRow("export c float constant beyond FLT_MAX")
+        << QStringList{"export", "{ts-1e308}", "--format", "c", "--precision", "float", "-o", "{dir}/o.h"}
+        << "axes[0].gt (digital PI at controller_ts): gives 1.0282776349614397e+307 for XYT_X_C0, beyond the "
+           "largest float";
+    QTest::newRow("export c float constant rounding to 0")
+        << QStringList{"export", "{umax-5e-324}", "--format", "c", "--precision", "float", "-o", "{dir}/o.h"}
+        << "umax: gives 4.9406564584124654e-324 for XYT_UMAX, which rounds to 0 in float";
 }
 
 QString TstCliBadInput::substitute(QString s) const {

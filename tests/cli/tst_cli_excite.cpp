@@ -9,8 +9,12 @@
 #include "tests/support/tolerance.h"
 
 #include <QDir>
+#include <QFile>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cerrno>
+#include <cstring>
 
 class TstCliExcite : public QObject {
     Q_OBJECT
@@ -20,6 +24,7 @@ private slots:
     void chirpToCsv();
     void badInputExitsWithTwo_data();
     void badInputExitsWithTwo();
+    void failedWriteExitsWithTwoNamingTheOption();
 };
 
 void TstCliExcite::squareToCsv() {
@@ -121,6 +126,38 @@ void TstCliExcite::badInputExitsWithTwo() {
                                         "--amplitude", "1", "--period", "0.2", "-o", dir.filePath("u.txt")});
     QCOMPARE(run.exitCode, 2);
     QVERIFY(QString::fromUtf8(run.err).startsWith("xytune-cli excite: -o:"));
+}
+
+void TstCliExcite::failedWriteExitsWithTwoNamingTheOption() {
+    // A write failure exited 1 without naming -o, against the README and every other writer:
+    // exit 2, one line "-o: cannot write <path>: <reason>", the old file unchanged.
+    QTemporaryDir dir;
+    const QStringList square = {"excite", "--signal", "square", "--ts", "0.01", "--duration", "1",
+                                "--amplitude", "1", "--period", "0.2", "-o"};
+    const QString path = dir.filePath("u.csv");
+    {
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::WriteOnly) && old.write("old\n") == 4);
+    }
+    const auto full = xyt::test::runCli(square + QStringList{path}, 60000, {"XYT_TEST_FAIL_WRITE=write"});
+    QVERIFY(full.finished);
+    QCOMPARE(full.exitCode, 2);
+    QVERIFY(full.out.isEmpty());
+    const QString err = QString::fromUtf8(full.err);
+    QCOMPARE(err.count('\n'), 1);
+    QVERIFY2(err.startsWith("xytune-cli excite: -o: cannot write " + path + ": " +
+                            QString::fromUtf8(std::strerror(ENOSPC))),
+             qPrintable(err));
+    QFile kept(path);
+    QVERIFY(kept.open(QIODevice::ReadOnly));
+    QCOMPARE(kept.readAll(), QByteArray("old\n"));
+    // A folder that does not exist: the system's reason, the same exit code and option.
+    const QString missing = dir.filePath("no-such-folder/u.lvm");
+    const auto run = xyt::test::runCli(square + QStringList{missing});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(QString::fromUtf8(run.err).startsWith("xytune-cli excite: -o: cannot write " + missing + ": " +
+                                                   QString::fromUtf8(std::strerror(ENOENT))),
+             run.err.constData());
 }
 
 QTEST_APPLESS_MAIN(TstCliExcite)

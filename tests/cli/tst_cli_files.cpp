@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 20, the files side of xytune-cli: every write (export json|c|m|csv, new -o, simulate
-// --csv, sweep --csv) leaves the old file intact when the write or the commit fails and says
-// why (exit 2, the argument, the path, the system's reason); special files are neither replaced
-// nor read; the report shows hostile labels escaped; duplicate keys are refused.
+// The files side of xytune-cli: every write (export json|c|m|csv, new -o, simulate --csv, sweep
+// --csv) leaves the old file intact when the write or the commit fails and says why (exit 2,
+// the argument, the path, the system's reason); special files are neither replaced nor read,
+// and the refusal names the path once; file names that are not UTF-8 reach the system as the
+// bytes the shell passed; the report shows hostile labels escaped; duplicate keys are refused.
 #include "tests/support/cli_runner.h"
 #include "tests/support/small_filesystem.h"
 
@@ -14,10 +15,15 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using xyt::test::runCli;
 
@@ -32,6 +38,9 @@ private slots:
     void sessionSpecificationKeysAndFieldNames();
     void reportEscapesLabels();
     void duplicateKeyIsRefused();
+    void unreadableSessionNamesThePathOnce();
+    void nonUtf8FileNamesKeepTheirBytes();
+    void helpAgreesOnTheExitCode();
     void fullDiskKeepsOldFile(); // last: it moves the process into its own mount namespace
 
 private:
@@ -74,6 +83,50 @@ QStringList substituted(QStringList args, const QString& session, const QString&
     for (QString& a : args)
         a = a.replace("{session}", session).replace("{out}", out);
     return args;
+}
+
+/// xytune-cli run with arguments given as bytes: QProcess encodes a QString argument as UTF-8,
+/// so it cannot pass a file name that is not UTF-8. Output goes through files in @p scratch.
+xyt::test::CliRun runCliWithBytes(const QList<QByteArray>& args, const QString& scratch) {
+    const QByteArray out = QFile::encodeName(scratch + "/stdout"), err = QFile::encodeName(scratch + "/stderr");
+    std::vector<char*> argv;
+    QByteArray program = XYT_CLI_PATH;
+    argv.push_back(program.data());
+    QList<QByteArray> copies = args;
+    for (QByteArray& a : copies)
+        argv.push_back(a.data());
+    argv.push_back(nullptr);
+    xyt::test::CliRun r;
+    const pid_t child = ::fork();
+    if (child == 0) {
+        const int o = ::open(out.constData(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        const int e = ::open(err.constData(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (o < 0 || e < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+            ::_exit(127);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    if (child < 0 || ::waitpid(child, &status, 0) != child || !WIFEXITED(status))
+        return r;
+    r.finished = true;
+    r.exitCode = WEXITSTATUS(status);
+    r.out = contents(scratch + "/stdout");
+    r.err = contents(scratch + "/stderr");
+    return r;
+}
+
+/// The names in @p folder as bytes (QDir would decode them, losing what is not UTF-8).
+QList<QByteArray> rawNames(const QString& folder) {
+    QList<QByteArray> names;
+    DIR* dir = ::opendir(QFile::encodeName(folder).constData());
+    if (!dir)
+        return names;
+    while (const dirent* entry = ::readdir(dir))
+        if (entry->d_name[0] != '.')
+            names << QByteArray(entry->d_name);
+    ::closedir(dir);
+    return names;
 }
 
 } // namespace
@@ -169,6 +222,76 @@ void TstCliFiles::duplicateKeyIsRefused() {
     const auto run = runCli({"report", path});
     QCOMPARE(run.exitCode, 2);
     QVERIFY2(run.err.contains("umax: appears more than once"), run.err.constData());
+}
+
+void TstCliFiles::unreadableSessionNamesThePathOnce() {
+    // "report: pipe: pipe: is not a regular file": the loader's message already held the path.
+    const QString fifo = dir_.filePath("once-pipe");
+    QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+    const QString big = dir_.filePath("once-big.json");
+    put(big, QByteArray(8 * 1024 * 1024 + 1, ' ')); // one byte over the 8 MB limit
+    const QString missing = dir_.filePath("once-missing.json");
+    const std::pair<QString, QString> cases[] = {
+        {fifo, "is not a regular file (a device, FIFO or socket); refusing to read it"},
+        {big, "8388609 bytes is larger than the limit of 8388608 bytes"},
+        {missing, "no such file"}};
+    for (const auto& [path, reason] : cases) {
+        for (const QStringList& args : {QStringList{"report", path},
+                                        QStringList{"export", path, "--format", "c", "-o", dir_.filePath("once.h")}}) {
+            const auto run = runCli(args, 20000);
+            QVERIFY2(run.finished && run.exitCode == 2, run.err.constData());
+            QCOMPARE(QString::fromUtf8(run.err), "xytune-cli " + args.first() + ": " + path + ": " + reason + "\n");
+        }
+    }
+}
+
+void TstCliFiles::nonUtf8FileNamesKeepTheirBytes() {
+    // `new -o $'name_\xff.json'` wrote "name_\xef\xbf\xbd.json" (U+FFFD) and exited 0; reading
+    // such a name failed with "no such file". The bytes reach open/rename unchanged, and the
+    // messages and the printed path show the byte escaped.
+    QTemporaryDir dir;
+    const QByteArray folder = QFile::encodeName(dir.path());
+    const QByteArray session = folder + "/name_\xff.json";
+    auto run = runCliWithBytes({"new", "-o", session}, dir.path());
+    QVERIFY2(run.finished && run.exitCode == 0, run.err.constData());
+    QCOMPARE(run.out, folder + "/name_\\xff.json\n");
+    struct stat st {};
+    QVERIFY2(::stat(session.constData(), &st) == 0 && S_ISREG(st.st_mode), "the file has another name");
+    // Read back (report, export) and written (export -o) under names with invalid bytes,
+    // including a lone continuation byte and a truncated sequence.
+    run = runCliWithBytes({"report", session}, dir.path());
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY2(run.out.startsWith("XY Tune report: " + folder + "/name_\\xff.json\n"), run.out.constData());
+    const QByteArray header = folder + "/c_\x80\xe2\x82.h";
+    run = runCliWithBytes({"export", session, "--format", "c", "-o", header}, dir.path());
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY(::stat(header.constData(), &st) == 0 && st.st_size > 0);
+    // Valid UTF-8 beside the invalid bytes is kept as well (a character outside the BMP too).
+    const QByteArray csv = folder + "/x_\xff\xfe_\xc3\xa4_\xf0\x9f\x98\x80.csv";
+    run = runCliWithBytes({"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600",
+                           "--tf", "130", "--csv", csv},
+                          dir.path());
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY(::stat(csv.constData(), &st) == 0 && st.st_size > 0);
+    // A missing file is named with the byte escaped, never as U+FFFD.
+    run = runCliWithBytes({"report", folder + "/absent_\xff.json"}, dir.path());
+    QCOMPARE(run.exitCode, 2);
+    QCOMPARE(run.err, "xytune-cli report: " + folder + "/absent_\\xff.json: no such file\n");
+    QList<QByteArray> expected = {"c_\x80\xe2\x82.h", "name_\xff.json", "stderr", "stdout",
+                                  "x_\xff\xfe_\xc3\xa4_\xf0\x9f\x98\x80.csv"};
+    QList<QByteArray> got = rawNames(dir.path());
+    std::sort(expected.begin(), expected.end());
+    std::sort(got.begin(), got.end());
+    QCOMPARE(got, expected);
+}
+
+void TstCliFiles::helpAgreesOnTheExitCode() {
+    // --help said a file that cannot be written exits 1, the README and the writers 2.
+    const auto run = runCli({"--help"});
+    QCOMPARE(run.exitCode, 0);
+    const QString help = QString::fromUtf8(run.out).simplified();
+    QVERIFY2(help.contains("2 invalid input or a file that could not be read or written"), run.out.constData());
+    QVERIFY2(help.contains("1 an internal error"), run.out.constData());
 }
 
 void TstCliFiles::fullDiskKeepsOldFile() {

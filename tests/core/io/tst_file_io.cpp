@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// core/io/file_io.h: atomic writes that never lose the old file (issue 20: a full disk left a
-// 0-byte file and reported success), no replacing of special files, bounded reads that never
-// block on a FIFO nor read a device to exhaustion.
+// core/io/file_io.h: atomic writes that never lose the old file (a full disk left a 0-byte file
+// and reported success), no replacing of special files, symbolic links followed only where
+// another user cannot aim them (root replaced another user's link target in /tmp), the owner of
+// a replaced file kept, temporaries of a killed save removed, bounded reads that never block on
+// a FIFO nor read a device to exhaustion.
 #include "core/io/file_io.h"
 #include "tests/support/small_filesystem.h"
 
@@ -12,9 +14,12 @@
 #include <QTest>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace xyt;
 
@@ -29,6 +34,14 @@ private slots:
     void streamsLargeContent();
     void readRefusesSpecialFiles();
     void readStopsAtTheLimit();
+    void danglingLinkCreatesItsTarget();
+    void ownLinkIsFollowed();
+    void foreignLinkInStickyFolderIsRefused();
+    void linkToAnotherUsersFileIsRefused();
+    void foreignFileInStickyFolderIsRefused();
+    void replacedFileKeepsItsOwner();
+    void temporaryNameCarriesThePid();
+    void staleTemporariesAreRemoved();
     void fullDiskKeepsOldFile(); // last: it moves the process into its own mount namespace
 };
 
@@ -162,6 +175,235 @@ void TstFileIo::readStopsAtTheLimit() {
         QFAIL("a file one byte over the limit was read");
     } catch (const FileError& e) {
         QVERIFY2(QString::fromStdString(e.reason()).contains("limit of 99 bytes"), e.what());
+    }
+}
+
+namespace {
+
+/// The uid/gid that stands for "another user" (nobody), present on every Linux system.
+constexpr uid_t kOtherUser = 65534;
+
+QByteArray bytes(const QString& path) { return QFile::encodeName(path); }
+
+struct stat lstatOf(const QString& path) {
+    struct stat st {};
+    if (::lstat(bytes(path).constData(), &st) != 0)
+        st.st_mode = 0;
+    return st;
+}
+
+/// The reason writeFileAtomically gave, or "" when it wrote.
+QString refusal(const QString& path, const char* content) {
+    try {
+        writeFileAtomically(path.toStdString(), content);
+    } catch (const FileError& e) {
+        return QString::fromStdString(e.reason());
+    }
+    return {};
+}
+
+/// Why the ownership cases cannot run here, or "" when they can: they create files and links
+/// of another user, which takes root (CI runs the tests as root).
+QString ownershipUnavailable(const QString& probeFolder) {
+    if (::geteuid() != 0)
+        return QStringLiteral("needs root to create another user's files and links (lchown)");
+    const QByteArray probe = bytes(probeFolder + "/owner-probe");
+    if (::symlink("x", probe.constData()) != 0)
+        return QStringLiteral("cannot create a symbolic link here");
+    const bool ok = ::lchown(probe.constData(), kOtherUser, kOtherUser) == 0;
+    ::unlink(probe.constData());
+    return ok ? QString() : QStringLiteral("uid 65534 cannot own files here (user namespace)");
+}
+
+/// A folder like /tmp: writable by everyone, sticky, owned by us.
+QString stickyFolder(const QTemporaryDir& dir) {
+    const QString folder = dir.filePath("shared");
+    if (!QDir().mkdir(folder) || ::chmod(bytes(folder).constData(), 01777) != 0)
+        return {};
+    return folder;
+}
+
+} // namespace
+
+void TstFileIo::danglingLinkCreatesItsTarget() {
+    // The header says a link is followed; a dangling one was replaced by a regular file.
+    QTemporaryDir dir;
+    const QString link = dir.filePath("out.json"), target = dir.filePath("target.json");
+    QVERIFY(::symlink("target.json", bytes(link).constData()) == 0);
+    writeFileAtomically(link.toStdString(), "content");
+    QVERIFY(S_ISLNK(lstatOf(link).st_mode));
+    QVERIFY(S_ISREG(lstatOf(target).st_mode));
+    QCOMPARE(contents(target), QByteArray("content"));
+}
+
+void TstFileIo::ownLinkIsFollowed() {
+    // Our own link in a shared sticky folder, to our own file: the file is replaced, the link kept.
+    QTemporaryDir dir;
+    const QString shared = stickyFolder(dir);
+    QVERIFY(!shared.isEmpty());
+    const QString target = dir.filePath("mine.json"), link = shared + "/x.json";
+    writeFileAtomically(target.toStdString(), "old");
+    QVERIFY(::symlink(bytes(target).constData(), bytes(link).constData()) == 0);
+    writeFileAtomically(link.toStdString(), "new");
+    QCOMPARE(contents(target), QByteArray("new"));
+    QVERIFY(S_ISLNK(lstatOf(link).st_mode));
+}
+
+void TstFileIo::foreignLinkInStickyFolderIsRefused() {
+    // The issue: another user's "ln -s victim x.json" in a world-writable folder, then root's
+    // save to x.json replaced the victim.
+    QTemporaryDir dir;
+    if (const QString why = ownershipUnavailable(dir.path()); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const QString shared = stickyFolder(dir);
+    QVERIFY(!shared.isEmpty());
+    const QString victim = dir.filePath("victim"), link = shared + "/x.json";
+    writeFileAtomically(victim.toStdString(), "precious");
+    QVERIFY(::symlink(bytes(victim).constData(), bytes(link).constData()) == 0);
+    QVERIFY(::lchown(bytes(link).constData(), kOtherUser, kOtherUser) == 0);
+    QVERIFY2(refusal(link, "attack").contains("symbolic link of another user (uid 65534)"),
+             qPrintable(refusal(link, "attack")));
+    QCOMPARE(contents(victim), QByteArray("precious"));
+    // Dangling, it would have created a file where the link's owner chose.
+    const QString planted = shared + "/y.json", created = dir.filePath("created");
+    QVERIFY(::symlink(bytes(created).constData(), bytes(planted).constData()) == 0);
+    QVERIFY(::lchown(bytes(planted).constData(), kOtherUser, kOtherUser) == 0);
+    QVERIFY(refusal(planted, "attack").contains("refusing to follow it"));
+    QVERIFY(!QFile::exists(created));
+    // The same links in a folder that is not sticky pass this rule but not the next one.
+    QVERIFY(::chmod(bytes(shared).constData(), 0777) == 0);
+    QVERIFY(refusal(link, "attack").contains("a file of another user"));
+    QVERIFY(refusal(planted, "attack").contains("refusing to create it"));
+    QCOMPARE(contents(victim), QByteArray("precious"));
+    QVERIFY(!QFile::exists(created));
+    QCOMPARE(entries(shared), (QStringList{"x.json", "y.json"})); // no temporary left behind
+}
+
+void TstFileIo::linkToAnotherUsersFileIsRefused() {
+    // A link may only lead to a file of its own owner: root's link onto a user's file, or a
+    // user's link onto root's file, is not followed, in any folder.
+    QTemporaryDir dir;
+    if (const QString why = ownershipUnavailable(dir.path()); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const QString theirs = dir.filePath("theirs.json"), mine = dir.filePath("mine.json");
+    writeFileAtomically(theirs.toStdString(), "theirs");
+    QVERIFY(::chown(bytes(theirs).constData(), kOtherUser, kOtherUser) == 0);
+    writeFileAtomically(mine.toStdString(), "mine");
+    const QString toTheirs = dir.filePath("to-theirs"), toMine = dir.filePath("to-mine");
+    QVERIFY(::symlink("theirs.json", bytes(toTheirs).constData()) == 0);
+    QVERIFY(::symlink("mine.json", bytes(toMine).constData()) == 0);
+    QVERIFY(::lchown(bytes(toMine).constData(), kOtherUser, kOtherUser) == 0);
+    QCOMPARE(refusal(toTheirs, "x"),
+             QStringLiteral("is a symbolic link to a file of another user (the file: uid 65534, the link: "
+                            "uid 0); refusing to replace it"));
+    QCOMPARE(refusal(toMine, "x"),
+             QStringLiteral("is a symbolic link to a file of another user (the file: uid 0, the link: "
+                            "uid 65534); refusing to replace it"));
+    QCOMPARE(contents(theirs), QByteArray("theirs"));
+    QCOMPARE(contents(mine), QByteArray("mine"));
+    // The user's link to the user's own file: followed, and the file stays the user's.
+    QVERIFY(::lchown(bytes(toTheirs).constData(), kOtherUser, kOtherUser) == 0);
+    QCOMPARE(refusal(toTheirs, "updated"), QString());
+    QCOMPARE(contents(theirs), QByteArray("updated"));
+    QCOMPARE(lstatOf(theirs).st_uid, kOtherUser);
+}
+
+void TstFileIo::foreignFileInStickyFolderIsRefused() {
+    // A file planted under our name in /tmp: replacing it and keeping its owner would hand our
+    // content to that user (the kernel's protected_regular refuses such an open).
+    QTemporaryDir dir;
+    if (const QString why = ownershipUnavailable(dir.path()); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const QString shared = stickyFolder(dir);
+    QVERIFY(!shared.isEmpty());
+    const QString planted = shared + "/out.json";
+    writeFileAtomically(planted.toStdString(), "planted");
+    QVERIFY(::chown(bytes(planted).constData(), kOtherUser, kOtherUser) == 0);
+    QVERIFY(refusal(planted, "ours").contains("a file of another user (uid 65534) in a folder everyone may write to"));
+    QCOMPARE(contents(planted), QByteArray("planted"));
+    // Our own file there is replaced as anywhere.
+    const QString own = shared + "/own.json";
+    writeFileAtomically(own.toStdString(), "a");
+    QCOMPARE(refusal(own, "b"), QString());
+    QCOMPARE(contents(own), QByteArray("b"));
+}
+
+void TstFileIo::replacedFileKeepsItsOwner() {
+    // Replaced as root, a user's file stayed root's (the mode was kept, the owner was not).
+    QTemporaryDir dir;
+    if (const QString why = ownershipUnavailable(dir.path()); !why.isEmpty())
+        QSKIP(qPrintable(why));
+    const QString path = dir.filePath("users.json");
+    writeFileAtomically(path.toStdString(), "old");
+    QVERIFY(::chown(bytes(path).constData(), kOtherUser, kOtherUser) == 0);
+    QVERIFY(::chmod(bytes(path).constData(), 0604) == 0);
+    writeFileAtomically(path.toStdString(), "new");
+    const struct stat st = lstatOf(path);
+    QCOMPARE(contents(path), QByteArray("new"));
+    QCOMPARE(st.st_uid, kOtherUser);
+    QCOMPARE(st.st_gid, static_cast<gid_t>(kOtherUser));
+    QCOMPARE(st.st_mode & 07777, 0604u);
+}
+
+void TstFileIo::temporaryNameCarriesThePid() {
+    // While the content is produced, the one file beside the target is .xytune-save-<pid>-XXXXXX.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("out.txt");
+    QStringList during;
+    writeFileAtomically(path.toStdString(), [&](const ByteSink& sink) {
+        during = entries(dir.path());
+        sink("x");
+    });
+    QCOMPARE(during.size(), 1);
+    const QString prefix = QStringLiteral(".xytune-save-%1-").arg(::getpid());
+    QVERIFY2(during.first().startsWith(prefix) && during.first().size() == prefix.size() + 6,
+             qPrintable(during.first()));
+}
+
+void TstFileIo::staleTemporariesAreRemoved() {
+    // A save killed half way left its temporary (35-101 MB) forever; the next save to the
+    // folder removes the ones whose process is gone, and only those.
+    const pid_t dead = ::fork();
+    if (dead == 0)
+        ::_exit(0);
+    QVERIFY(dead > 0);
+    QVERIFY(::waitpid(dead, nullptr, 0) == dead); // reaped: the pid names no process now
+    const pid_t living = ::fork();
+    if (living == 0) {
+        ::pause();
+        ::_exit(0);
+    }
+    QVERIFY(living > 0);
+    const auto stop = qScopeGuard([living] {
+        ::kill(living, SIGKILL);
+        ::waitpid(living, nullptr, 0);
+    });
+    QTemporaryDir dir;
+    const QString stale = QStringLiteral(".xytune-save-%1-aB3dE9").arg(dead);
+    const QString writing = QStringLiteral(".xytune-save-%1-Zz09aQ").arg(living);
+    const QString own = QStringLiteral(".xytune-save-%1-q1w2e3").arg(::getpid()); // another thread's
+    const QStringList notOurs = {
+        QStringLiteral(".xytune-save-%1-aB3dE").arg(dead),      // five letters: not mkstemp's
+        QStringLiteral(".xytune-save-%1-aB3dE9.bak").arg(dead), // more after the pattern
+        QStringLiteral(".xytune-save-aB3dE9"),                  // the old name, without a pid
+        QStringLiteral("xytune-save-%1-aB3dE9").arg(dead)};     // not hidden
+    for (const QString& name : QStringList{stale, writing, own} + notOurs) { // not saved: a save cleans up
+        QFile f(dir.filePath(name));
+        QVERIFY(f.open(QIODevice::WriteOnly) && f.write("leftover") == 8);
+    }
+    writeFileAtomically(dir.filePath("session.json").toStdString(), "saved");
+    QStringList expected = QStringList{writing, own, "session.json"} + notOurs;
+    expected.sort();
+    QStringList got = entries(dir.path());
+    got.sort();
+    QCOMPARE(got, expected);
+    // Another user's temporary with a dead pid is not ours to remove.
+    if (ownershipUnavailable(dir.path()).isEmpty()) {
+        const QString theirs = dir.filePath(stale);
+        writeFileAtomically(theirs.toStdString(), "leftover");
+        QVERIFY(::chown(bytes(theirs).constData(), kOtherUser, kOtherUser) == 0);
+        writeFileAtomically(dir.filePath("session.json").toStdString(), "saved again");
+        QVERIFY(QFile::exists(theirs));
     }
 }
 

@@ -19,6 +19,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <tuple>
 
 using namespace xyt;
 
@@ -90,6 +91,7 @@ private slots:
     void commentTextKeepsOrdinaryLabels();
     void terminalTextEscapesControls();
     void nonFiniteNumbersAreRefused();
+    void floatExportRefusesWhatFloatCannotHold();
     void axisIdsThatCannotNameAFunctionAreRefused();
 };
 
@@ -191,6 +193,68 @@ void TstExportInjection::nonFiniteNumbersAreRefused() {
         QCOMPARE(QString::fromStdString(error.field()), QStringLiteral("axes[0]"));
     }
     QVERIFY(written.empty()); // refused before the first byte
+}
+
+namespace {
+
+/// The InvalidInput of a float C export of @p s ("" field when it was exported).
+std::pair<QString, QString> floatRefusal(const Session& s) {
+    ExportOptions options;
+    options.precision = CPrecision::Float;
+    try {
+        exportCHeader(s, evaluateSession(s), options);
+    } catch (const InvalidInput& e) {
+        return {QString::fromStdString(e.field()), QString::fromStdString(e.reason())};
+    }
+    return {};
+}
+
+} // namespace
+
+void TstExportInjection::floatExportRefusesWhatFloatCannotHold() {
+    // controller_ts 1e308 put XYT_X_C0 = 1.0282776349614397e+307 into a float header (inf when
+    // compiled, NaN in the step); umax 5e-324 became 0. Each is refused naming the session field
+    // and the constant; the double export, which holds them, still writes them.
+    Session ts = Session::paperDefault();
+    ts.controllerTsSeconds = 1e308;
+    QVERIFY(exportCHeader(ts, evaluateSession(ts)).find("XYT_X_C0 XYT_MAYBE_UNUSED = 1.0282776349614397e+307;") !=
+            std::string::npos);
+    auto [field, reason] = floatRefusal(ts);
+    QCOMPARE(field, QStringLiteral("axes[0].gt (digital PI at controller_ts)"));
+    QVERIFY2(reason.startsWith("gives 1.0282776349614397e+307 for XYT_X_C0, beyond the largest float"),
+             qPrintable(reason));
+
+    Session umax = Session::paperDefault();
+    umax.umaxVolts = 5e-324;
+    QVERIFY(exportCHeader(umax, evaluateSession(umax)).find("XYT_UMAX XYT_MAYBE_UNUSED = 4.9406564584124654e-324;") !=
+            std::string::npos);
+    std::tie(field, reason) = floatRefusal(umax);
+    QCOMPARE(field, QStringLiteral("umax"));
+    QVERIFY2(reason.startsWith("gives 4.9406564584124654e-324 for XYT_UMAX, which rounds to 0 in float"),
+             qPrintable(reason));
+
+    // The DAC's LSB 2 umax / 2^32 of umax 1e-36 is 4.7e-46, below the smallest float 1.4e-45,
+    // though umax itself is a float.
+    Session dac = Session::paperDefault();
+    dac.umaxVolts = 1e-36;
+    dac.implementation.dacBits = 32;
+    std::tie(field, reason) = floatRefusal(dac);
+    QCOMPARE(field, QStringLiteral("umax"));
+    QVERIFY2(reason.contains("for XYT_DAC_LSB (2 umax / 2^dac_bits), which rounds to 0"), qPrintable(reason));
+
+    // A pole-placement axis whose B is 1e-40 times the paper's: Kf = T(1)/B(1) grows by 1e40,
+    // to 1.3e41, beyond FLT_MAX; the step multiplies with it cast to xyt_real.
+    Session pp = Session::paperDefault();
+    pp.axes[0].method = DesignMethod::PolePlacementZpetc;
+    for (double& b : pp.axes[0].pp.b)
+        b *= 1e-40;
+    QVERIFY(evaluateSession(pp).axes[0].ok);
+    std::tie(field, reason) = floatRefusal(pp);
+    QCOMPARE(field, QStringLiteral("axes[0].pp (Kf)"));
+    QVERIFY2(reason.contains("for XYT_X_KF, beyond the largest float"), qPrintable(reason));
+
+    // The paper's session is exported in float as before: nothing it holds is out of range.
+    QCOMPARE(floatRefusal(Session::paperDefault()).first, QString());
 }
 
 // Issue 12: the axis id names the exported C functions (xyt_<id>_step). A session built in
