@@ -21,16 +21,19 @@
 
 #include <QJsonArray>
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt::cli {
 
 namespace {
 
-/// The table of @p path; a file that cannot be read is bad input naming @p option.
-ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment) {
+/// The table of @p path; a file that cannot be read is bad input naming @p option. A MAT file
+/// reads only @p matVariables.
+ExperimentTable readTable(const QString& option, const QString& path, std::size_t segment,
+                          const std::vector<std::string>& matVariables) {
     try {
-        return readExperimentTable(path.toStdString(), segment);
+        return readExperimentTable(path.toStdString(), segment, matVariables);
     } catch (const FileError& e) {
         throw InvalidInput(option.toStdString(), e.what());
     }
@@ -49,7 +52,14 @@ std::pair<double, double> parseRange(const QString& text) {
 
 /// The record of one file with the command's column, time and scale options.
 IoData record(const CliArgs& args, const QString& option, const QString& path) {
-    const ExperimentTable table = readTable(option, path, static_cast<std::size_t>(args.count("segment", 1, 1'000'000)));
+    // The variables of a MAT file that are read: the named columns, never one nobody asked for.
+    std::vector<std::string> matVariables;
+    for (const char* columnOption : {"input-col", "output-col", "time-col"})
+        if (const std::string name = args.text(columnOption, QString()).toStdString();
+            !name.empty() && std::find(matVariables.begin(), matVariables.end(), name) == matVariables.end())
+            matVariables.push_back(name);
+    const ExperimentTable table =
+        readTable(option, path, static_cast<std::size_t>(args.count("segment", 1, 1'000'000)), matVariables);
     ExperimentColumns c;
     c.input = args.text("input-col", QString()).toStdString();
     c.output = args.text("output-col", QString()).toStdString();

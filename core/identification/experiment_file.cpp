@@ -24,14 +24,15 @@ ExperimentFileKind experimentFileKind(const std::string& path) {
     return ExperimentFileKind::Delimited;
 }
 
-ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment) {
+ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment,
+                                    const std::vector<std::string>& matVariables) {
     switch (experimentFileKind(path)) {
     case ExperimentFileKind::Lvm: {
         LvmReadOptions o;
         o.segment = lvmSegment;
         return readLvmFile(path, o).table;
     }
-    case ExperimentFileKind::Mat: return readMat(path);
+    case ExperimentFileKind::Mat: return readMat(path, matVariables);
     case ExperimentFileKind::Delimited: break;
     }
     return readDelimitedFile(path).table;

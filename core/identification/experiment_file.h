@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace xyt {
 
@@ -17,11 +18,13 @@ ExperimentFileKind experimentFileKind(const std::string& path);
 
 /**
  * Reads any experiment file into its table of named columns: CSV/TSV (delimiter and decimal
- * separator detected), LabVIEW .lvm (segment @p lvmSegment, 1-based) or MATLAB .mat (every
- * usable vector). The table names the file as @p path is written.
+ * separator detected), LabVIEW .lvm (segment @p lvmSegment, 1-based) or MATLAB .mat (the
+ * variables @p matVariables only, or every usable vector within the bounds of readMat when
+ * empty: see mat_reader.h). The table names the file as @p path is written.
  * @throws FileError when the file cannot be read; InvalidInput from the reader (file, line,
  *         column).
  */
-ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment = 1);
+ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegment = 1,
+                                    const std::vector<std::string>& matVariables = {});
 
 } // namespace xyt
