@@ -172,7 +172,7 @@ double statmBytes(int index) {
  * machine's memory; not set under AddressSanitizer, whose shadow memory reserves terabytes of
  * address space), and measures the child's peak resident memory (getrusage through wait4).
  */
-ChildRead readInChild(const std::function<QString()>& read, double limitBytes) {
+ChildRead readInChild(const std::function<QString()>& read, [[maybe_unused]] double limitBytes) {
     int fds[2];
     if (::pipe(fds) != 0)
         return {"no pipe", 0.0};
