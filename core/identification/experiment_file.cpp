@@ -33,7 +33,7 @@ ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegm
         o.columns = columns;
         return readLvmFile(path, o).table;
     }
-    case ExperimentFileKind::Mat: return readMat(path);
+    case ExperimentFileKind::Mat: return readMat(path, columns);
     case ExperimentFileKind::Delimited: break;
     }
     DelimitedReadOptions o;

@@ -18,9 +18,11 @@ ExperimentFileKind experimentFileKind(const std::string& path);
 
 /**
  * Reads any experiment file into its table of named columns: CSV/TSV (delimiter and decimal
- * separator detected), LabVIEW .lvm (segment @p lvmSegment, 1-based) or MATLAB .mat (every
- * usable vector). The table names the file as @p path is written. A text file keeps only
- * @p columns when they are given (all when empty), checked before its rows are read.
+ * separator detected), LabVIEW .lvm (segment @p lvmSegment, 1-based) or MATLAB .mat. The
+ * table names the file as @p path is written. With @p columns given, a text file keeps only
+ * those, checked before its rows are read, and a MAT file reads only those variables, never
+ * one nobody asked for; empty: every column, or every usable vector within the bounds of
+ * readMat (mat_reader.h).
  * @throws FileError when the file cannot be read; InvalidInput from the reader (file, line,
  *         column).
  */

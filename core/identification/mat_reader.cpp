@@ -227,7 +227,7 @@ std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
 }
 
 /// Opens the file after the size and header checks. @throws FileError / InvalidInput.
-MatHandle openMat(const std::string& path, std::uint64_t* sizeOut = nullptr) {
+MatHandle openMat(const std::string& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
         throw FileError(path, errno == ENOENT ? "no such file" : std::strerror(errno));
@@ -237,8 +237,6 @@ MatHandle openMat(const std::string& path, std::uint64_t* sizeOut = nullptr) {
         throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) + " bytes");
     if (const std::string why = checkHeader(path, static_cast<std::uint64_t>(st.st_size)); !why.empty())
         throw InvalidInput(path, "is not a MAT file: " + why);
-    if (sizeOut)
-        *sizeOut = static_cast<std::uint64_t>(st.st_size);
     installMatioLog();
     matioMessage.clear();
     mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
@@ -277,6 +275,28 @@ bool numericClass(int c) {
            c == MAT_C_INT64 || c == MAT_C_UINT64;
 }
 
+/// "2 x 3 x 4": the dimensions as written in a message.
+std::string dimensionText(const matvar_t& v) {
+    std::string text;
+    for (int k = 0; k < v.rank && v.dims; ++k)
+        text += (k ? " x " : "") + std::to_string(v.dims[k]);
+    return text;
+}
+
+/// What a variable that is not a real numeric vector is, in words ("a cell array", ...).
+std::string notNumericWhy(int classType) {
+    switch (classType) {
+    case MAT_C_CELL: return "is a cell array";
+    case MAT_C_STRUCT: return "is a struct";
+    case MAT_C_OBJECT: return "is an object";
+    case MAT_C_CHAR: return "is text (a char array)";
+    case MAT_C_SPARSE: return "is a sparse matrix";
+    case MAT_C_FUNCTION: return "is a function handle";
+    case MAT_C_OPAQUE: return "is an opaque object";
+    default: return "is of an unknown class";
+    }
+}
+
 MatVariableInfo describe(const matvar_t& v) {
     MatVariableInfo info;
     info.name = v.name ? v.name : "";
@@ -285,12 +305,18 @@ MatVariableInfo describe(const matvar_t& v) {
         info.rows = v.dims[0];
         info.columns = v.dims[1];
     }
+    // What the variable claims, saturated: a header may state any dimensions.
+    info.elements = v.rank >= 1 && v.dims ? 1 : 0;
+    for (int k = 0; k < v.rank && v.dims; ++k)
+        info.elements = v.dims[k] != 0 && info.elements > UINT64_MAX / v.dims[k] ? UINT64_MAX : info.elements * v.dims[k];
     if (!numericClass(v.class_type))
-        info.whyNot = "is of class " + info.className + ", not numeric";
+        info.whyNot = v.class_type == MAT_C_EMPTY ? "is empty" : notNumericWhy(v.class_type);
     else if (v.isLogical)
-        info.whyNot = "is logical";
+        info.whyNot = "is logical (true/false)";
     else if (v.isComplex)
         info.whyNot = "is complex";
+    else if (v.rank > 2 && v.dims)
+        info.whyNot = "is a " + dimensionText(v) + " array (" + std::to_string(v.rank) + " dimensions)";
     else if (v.rank != 2 || !v.dims)
         info.whyNot = "has " + std::to_string(v.rank) + " dimensions";
     else if (info.rows == 0 || info.columns == 0)
@@ -313,13 +339,18 @@ template <class T> void convert(const void* data, std::size_t n, std::vector<dou
     }
 }
 
+/// A variable whose data libmatio could not read, with libmatio's reason when it gave one.
+InvalidInput unreadable(const std::string& path, const std::string& name) {
+    return InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
+                                  (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+}
+
 /// The elements of a read variable as doubles. @throws InvalidInput when the data is absent or short.
 std::vector<double> elements(const matvar_t& v, const std::string& path, const std::string& name) {
     const std::size_t n = v.dims[0] * v.dims[1];
     const std::size_t size = Mat_SizeOfClass(v.class_type);
     if (!v.data || size == 0 || n > std::numeric_limits<std::size_t>::max() / size || v.nbytes < n * size)
-        throw InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
-                                     (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+        throw unreadable(path, name);
     std::vector<double> out;
     switch (v.class_type) {
     case MAT_C_DOUBLE: convert<double>(v.data, n, out); break;
@@ -337,13 +368,18 @@ std::vector<double> elements(const matvar_t& v, const std::string& path, const s
     return out;
 }
 
+/// The most variables listed: far beyond any experiment, and it bounds the work on a file of
+/// millions of empty elements.
+constexpr std::size_t kMaxListedVariables = 100000;
+
 std::vector<MatVariableInfo> listOpen(mat_t* m) {
     std::vector<MatVariableInfo> vars;
-    while (matvar_t* raw = Mat_VarReadNextInfo(m)) {
-        const VarHandle v(raw);
-        vars.push_back(describe(*v));
-        if (vars.size() > 100000)
+    Mat_Rewind(m);
+    while (vars.size() < kMaxListedVariables) {
+        const VarHandle v(Mat_VarReadNextInfo(m));
+        if (!v)
             break;
+        vars.push_back(describe(*v));
     }
     return vars;
 }
@@ -363,60 +399,128 @@ MatFileInfo listMatVariables(const std::string& path) {
     return info;
 }
 
-ExperimentTable readMat(const std::string& path, const std::vector<std::string>& names) {
-    std::uint64_t fileSize = 0;
-    const MatHandle m = openMat(path, &fileSize);
-    const std::vector<MatVariableInfo> vars = listOpen(m.get());
-    std::vector<std::string> wanted = names;
-    if (wanted.empty())
-        for (const MatVariableInfo& v : vars)
-            if (v.usable)
-                wanted.push_back(v.name);
-    if (wanted.size() > kMaxExperimentColumns)
-        throw InvalidInput(path, "more than " + std::to_string(kMaxExperimentColumns) + " variables asked for");
-    std::string usableList;
+namespace {
+
+/// "the real numeric vectors are: t, u, y" (cut near 2000 characters), for a name not usable.
+std::string usableList(const std::vector<MatVariableInfo>& vars) {
+    std::string list;
     for (const MatVariableInfo& v : vars)
-        if (v.usable && usableList.size() < 2000)
-            usableList += (usableList.empty() ? "" : ", ") + shownCell(v.name);
-    if (usableList.empty())
-        usableList = "(none)";
+        if (v.usable && list.size() < 2000)
+            list += (list.empty() ? "" : ", ") + shownCell(v.name);
+    return "the real numeric vectors are: " + (list.empty() ? std::string("(none)") : list);
+}
+
+std::string elementsText(const MatVariableInfo& v) {
+    return v.rows * v.columns == v.elements
+               ? std::to_string(v.rows) + " x " + std::to_string(v.columns) + " elements"
+               : std::to_string(v.elements) + " elements";
+}
+
+/// The listed variables @p names refers to, every check made before any data is read.
+std::vector<const MatVariableInfo*> chosenVariables(const std::string& path, const std::vector<MatVariableInfo>& vars,
+                                                    const std::vector<std::string>& names) {
+    if (names.size() > kMaxExperimentColumns)
+        throw InvalidInput(path, std::to_string(names.size()) + " variables asked for, more than the " +
+                                     std::to_string(kMaxExperimentColumns) + " a table may hold");
+    std::vector<const MatVariableInfo*> chosen;
+    std::uint64_t total = 0;
+    for (const std::string& name : names) {
+        const auto found = std::find_if(vars.begin(), vars.end(), [&](const MatVariableInfo& v) { return v.name == name; });
+        if (found == vars.end())
+            throw InvalidInput(path, "has no variable '" + shownCell(name) + "'; " + usableList(vars));
+        const MatVariableInfo& v = *found;
+        if (!v.usable)
+            throw InvalidInput(path, "variable '" + shownCell(name) + "' " + v.whyNot +
+                                         "; a vector of real numbers is needed (" + usableList(vars) + ")");
+        if (std::find(chosen.begin(), chosen.end(), &v) != chosen.end())
+            throw InvalidInput(path, "variable '" + shownCell(name) + "' is asked for twice");
+        if (v.elements > kMaxMatVariableElements)
+            throw InvalidInput(path, "variable '" + shownCell(name) + "' claims " + elementsText(v) + ", more than the " +
+                                         std::to_string(kMaxMatVariableElements) + " one variable may hold");
+        total += v.elements;
+        if (total > kMaxMatTableElements)
+            throw InvalidInput(path, "the variables asked for, up to '" + shownCell(name) + "', hold " +
+                                         std::to_string(total) + " elements, more than the " +
+                                         std::to_string(kMaxMatTableElements) + " one read may hold");
+        chosen.push_back(&v);
+    }
+    return chosen;
+}
+
+/// Every usable variable within the bounds (see readMat), the others named in @p warnings.
+std::vector<const MatVariableInfo*> everyUsableVariable(const std::vector<MatVariableInfo>& vars,
+                                                        std::vector<std::string>& warnings) {
+    std::vector<const MatVariableInfo*> chosen;
+    std::uint64_t total = 0;
+    std::size_t leftOut = 0;
+    const auto leave = [&](const MatVariableInfo& v, const std::string& why) {
+        if (++leftOut <= 10)
+            warnings.push_back("variable '" + shownCell(v.name) + "' (" + elementsText(v) + ") is not read: " + why);
+    };
+    for (const MatVariableInfo& v : vars) {
+        if (!v.usable)
+            continue;
+        if (v.elements > kMaxMatVariableElements)
+            leave(v, "more than the " + std::to_string(kMaxMatVariableElements) + " elements one variable may hold");
+        else if (chosen.size() == kMaxExperimentColumns)
+            leave(v, "a table holds at most " + std::to_string(kMaxExperimentColumns) + " variables");
+        else if (total + v.elements > kMaxMatTableElements)
+            leave(v, "the variables before it already hold " + std::to_string(total) + " of the " +
+                         std::to_string(kMaxMatTableElements) + " elements one read may hold");
+        else {
+            total += v.elements;
+            chosen.push_back(&v);
+        }
+    }
+    if (leftOut > 10)
+        warnings.push_back(std::to_string(leftOut - 10) + " more variables are not read");
+    return chosen;
+}
+
+} // namespace
+
+ExperimentTable readMat(const std::string& path, const std::vector<std::string>& names) {
+    const MatHandle m = openMat(path);
+    const std::vector<MatVariableInfo> vars = listOpen(m.get());
 
     ExperimentTable t;
     t.fileName = path;
     t.rowLabel = "element";
-    std::size_t longest = 0;
-    for (const std::string& name : wanted) {
-        const MatVariableInfo* info = nullptr;
-        for (const MatVariableInfo& v : vars)
-            if (v.name == name)
-                info = &v;
-        if (!info)
-            throw InvalidInput(path, "has no variable '" + shownCell(name) + "'; the real numeric vectors are: " + usableList);
-        if (!info->usable)
-            throw InvalidInput(path, "variable '" + shownCell(name) + "' " + info->whyNot +
-                                         "; the real numeric vectors are: " + usableList);
-        for (const std::string& other : t.names)
-            if (other == name)
-                throw InvalidInput(path, "variable '" + shownCell(name) + "' is asked for twice");
-        // libmatio allocates what the file claims; a claim beyond what the file can hold even
-        // compressed (deflate expands at most 1032:1; v7.3 dataspaces are not checked by
-        // anyone else before this) is refused here.
-        if (std::uint64_t(info->rows) * std::uint64_t(info->columns) > 1032ull * fileSize)
-            throw InvalidInput(path, "variable '" + shownCell(name) + "' claims " + std::to_string(info->rows) +
-                                         " x " + std::to_string(info->columns) + " elements, more than a file of " +
-                                         std::to_string(fileSize) + " bytes can hold");
+    const std::vector<const MatVariableInfo*> chosen =
+        names.empty() ? everyUsableVariable(vars, t.warnings) : chosenVariables(path, vars, names);
+    // A second walk over the headers, in the order listed, reads the data of the chosen ones
+    // only (Mat_VarRead by name would walk the headers again for every variable).
+    std::vector<std::vector<double>> data(chosen.size());
+    std::vector<std::size_t> slotOf(vars.size(), chosen.size()); // chosen.size(): not chosen
+    for (std::size_t k = 0; k < chosen.size(); ++k)
+        slotOf[std::size_t(chosen[k] - vars.data())] = k;
+    Mat_Rewind(m.get());
+    for (std::size_t index = 0, done = 0; index < vars.size() && done < chosen.size(); ++index) {
         matioMessage.clear();
-        const VarHandle v(Mat_VarRead(m.get(), name.c_str()));
-        if (!v || v->rank != 2 || !v->dims || !numericClass(v->class_type) || v->isComplex ||
-            v->dims[0] * v->dims[1] != info->rows * info->columns)
-            throw InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
-                                         (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+        const VarHandle v(Mat_VarReadNextInfo(m.get()));
+        if (!v)
+            break;
+        const std::size_t slot = slotOf[index];
+        if (slot == chosen.size())
+            continue;
+        const MatVariableInfo& info = *chosen[slot];
+        if (Mat_VarReadDataAll(m.get(), v.get()) != 0 || !v->name || v->name != info.name || v->rank != 2 ||
+            !v->dims || !numericClass(v->class_type) || v->isComplex || v->dims[0] * v->dims[1] != info.rows * info.columns)
+            throw unreadable(path, info.name);
+        data[slot] = elements(*v, path, info.name);
+        ++done;
+    }
+    std::size_t longest = 0;
+    for (std::size_t k = 0; k < chosen.size(); ++k) {
+        const std::string& name = chosen[k]->name;
+        if (data[k].empty()) // the second walk ended early: the file changed or libmatio failed
+            throw unreadable(path, name);
         t.addColumn(name, 0);
         const std::size_t c = t.names.size() - 1;
-        t.columns[c] = elements(*v, path, name);
-        for (std::size_t k = 0; k < t.columns[c].size(); ++k)
-            if (!std::isfinite(t.columns[c][k])) {
-                noteCellProblem(t, c, k, std::isnan(t.columns[c][k]) ? "NaN" : "Inf", "is NaN or infinite");
+        t.columns[c] = std::move(data[k]);
+        for (std::size_t r = 0; r < t.columns[c].size(); ++r)
+            if (!std::isfinite(t.columns[c][r])) {
+                noteCellProblem(t, c, r, std::isnan(t.columns[c][r]) ? "NaN" : "Inf", "is NaN or infinite");
                 break;
             }
         longest = std::max(longest, t.columns[c].size());
