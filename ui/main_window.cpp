@@ -215,6 +215,9 @@ QWidget* MainWindow::buildControls() {
     gtLayout->addWidget(plantEditor_);
     omegaN_ = new ParameterSlider(tr("ω&n"), tr("rad/s"), 0.05, 20.0, true, gtPage);
     kp_ = new ParameterSlider(tr("k&p"), tr("V/m"), 0.1, 1000.0, true, gtPage);
+    // The fields take any positive value a design can have; the sliders cover the usual range.
+    omegaN_->setFieldRange(1e-6, 1e6);
+    kp_->setFieldRange(1e-6, 1e12);
     gtLayout->addWidget(omegaN_);
     gtLayout->addWidget(kp_);
     gtLayout->addStretch(1);
@@ -647,8 +650,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     }
     saveLayout();
     recovery_->discard(); // saved or deliberately discarded: nothing to recover
-    // The last values come back on the next start.
-    QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
+    // The last values come back on the next start, unless the user discarded them: a session
+    // still modified here was answered "Discard", and must not return as a clean "untitled".
+    if (!session_->isModified())
+        QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
     event->accept();
 }
 

@@ -26,6 +26,9 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -46,6 +49,7 @@ private slots:
     void recoveryCopyFollowsUnsavedWork();
     void recoveryIsOfferedAfterACrash();
     void runningInstanceCopyIsNotOffered();
+    void discardedWorkDoesNotComeBack();
     // Stale plots
     void parameterLocusOfPolePlacementAxisIsNotTheOldSweep();
     void invalidAxisShowsNoOldLocus();
@@ -62,6 +66,7 @@ private slots:
     void oneSpecificationForMetricsAndDesignSpace();
     // Undo and fields
     void focusedFieldFollowsUndo();
+    void sliderFieldsTakeWhatIsTyped();
     void ctrlZInAFieldUndoesTheSession();
     void dragUndoEntryNamesTheFinalValue();
     // Freezes
@@ -172,6 +177,36 @@ void TstWorkbenchTrust::runningInstanceCopyIsNotOffered() {
     QLockFile probe(running.copyPath().chopped(5) + ".lock");
     QVERIFY(!probe.tryLock(0));
     running.discard();
+}
+
+void TstWorkbenchTrust::discardedWorkDoesNotComeBack() {
+    // Quit with unsaved work answered "Discard": neither the recovery copy nor the settings'
+    // "last session" may bring the discarded design back at the next start.
+    QSettings().remove("session/last");
+    session_->setKp(0, 47.0);
+    session_->setKp(1, 23.0);
+    QVERIFY(session_->isModified());
+    QVERIFY(window_->recovery()->writeNow());
+    const QString copy = window_->recovery()->copyPath();
+    QVERIFY(QFile::exists(copy));
+    {
+        test::DialogAnswerer answer(test::DialogAnswerer::Mode::Accept, [](QWidget* dialog) {
+            auto* box = qobject_cast<QMessageBox*>(dialog);
+            QVERIFY(box);
+            box->setDefaultButton(qobject_cast<QPushButton*>(box->button(QMessageBox::Discard)));
+        });
+        QVERIFY(window_->close());
+        QCOMPARE(answer.answered(), 1);
+    }
+    QVERIFY(!QFile::exists(copy));
+    QVERIFY(!QSettings().contains("session/last"));
+    // A clean quit keeps the design for the next start, as before.
+    window_->show();
+    session_->markSaved();
+    QVERIFY(window_->close());
+    const auto restored = sessionFromBytes(QSettings().value("session/last").toByteArray());
+    QVERIFY(restored.ok);
+    QCOMPARE(restored.session.axes[0].gt.kp, 47.0);
 }
 
 // ---- Stale plots ----------------------------------------------------------------------------
@@ -378,6 +413,12 @@ void TstWorkbenchTrust::divergedRunIsNotApplicableAndFails() {
     }
     QVERIFY(window_->metricsPanel()->noticeText().contains("diverged"));
     QVERIFY(window_->timePlot()->noticeText().contains("diverged"));
+    // The delay margin and Ms do not exist for an unstable closed loop (before: "7.486" and
+    // "1.000" were shown as if they were robustness figures).
+    QVERIFY(e.margins.has_value() && !e.margins->closedLoopStable);
+    QCOMPARE(rowText(MetricsPanel::DelayMargin, 0), QStringLiteral("n/a"));
+    QCOMPARE(rowText(MetricsPanel::PeakSensitivity, 0), QStringLiteral("n/a"));
+    QVERIFY(rowText(MetricsPanel::GainMargin, 0) != QStringLiteral("n/a"));
 }
 
 // ---- One specification ----------------------------------------------------------------------
@@ -440,6 +481,40 @@ void TstWorkbenchTrust::dragUndoEntryNamesTheFinalValue() {
     QCOMPARE(session_->undoStack()->count(), 1);
     const QString text = session_->undoStack()->undoText();
     QVERIFY2(text.endsWith(QString::number(last)), qPrintable(text + " / " + QString::number(last)));
+}
+
+void TstWorkbenchTrust::sliderFieldsTakeWhatIsTyped() {
+    ParameterSlider* kp = window_->kpSlider();
+    QDoubleSpinBox* field = kp->spinBox();
+    // Before: "1e9" became 19 (the 'e' was dropped) and "1000000000" became 1000 (digits beyond
+    // the slider's maximum dropped), and both were applied.
+    test::typeInto(field, "1e9");
+    QCOMPARE(session_->session().axes[0].gt.kp, 1e9);
+    QVERIFY(kp->fieldError().isEmpty());
+    QVERIFY2(kp->exactText().contains("beyond the slider"), qPrintable(kp->exactText()));
+    QCOMPARE(kp->slider()->value(), kp->slider()->maximum());
+    test::typeInto(field, "2.5E1");
+    QCOMPARE(session_->session().axes[0].gt.kp, 25.0);
+    QVERIFY(!kp->exactText().contains("beyond"));
+    test::typeInto(field, "1000000000");
+    QCOMPARE(session_->session().axes[0].gt.kp, 1e9);
+    // Not a number, or beyond what the field takes: refused with the field's name, nothing
+    // applied.
+    session_->setKp(0, 30.0);
+    test::typeInto(field, "3x0");
+    QCOMPARE(session_->session().axes[0].gt.kp, 30.0);
+    QVERIFY2(kp->fieldError().startsWith("kp: '3x0' is not a number"), qPrintable(kp->fieldError()));
+    test::typeInto(field, "1e300");
+    QCOMPARE(session_->session().axes[0].gt.kp, 30.0);
+    QVERIFY2(kp->fieldError().contains("'1e300'"), qPrintable(kp->fieldError()));
+    // A value loaded from elsewhere (the design-space view's kp = 2111) is shown as it is.
+    session_->setKp(0, 2111.0);
+    QCOMPARE(field->value(), 2111.0);
+    QVERIFY(kp->fieldError().isEmpty());
+    QVERIFY2(kp->exactText().startsWith("2111, beyond the slider"), qPrintable(kp->exactText()));
+    // The tooltips read the parameter's name, not its mnemonic ("k&p").
+    QCOMPARE(kp->slider()->toolTip(), QStringLiteral("kp (logarithmic scale)"));
+    QCOMPARE(window_->omegaNSlider()->slider()->toolTip(), QStringLiteral("ωn (logarithmic scale)"));
 }
 
 // ---- Freezes --------------------------------------------------------------------------------

@@ -243,11 +243,15 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
     const auto shown = [](double v) {
         return std::isinf(v) && v > 0 ? QStringLiteral("∞") : displayNumber(v);
     };
+    // The delay margin and Ms describe how far a stable loop is from instability; an unstable
+    // closed loop has neither (its |S| peak is not the gain of anything that exists), so they
+    // read "n/a" there, while the gain and phase margins still say how far the crossing is.
+    const bool robustnessDefined = ok && m.closedLoopStable;
     const QMap<int, QString> values = {
         {GainMargin, ok ? shown(m.gainMarginDb) : tr("—")},
         {PhaseMargin, ok ? shown(m.phaseMarginDeg) : tr("—")},
-        {DelayMargin, ok ? shown(m.delayMarginSeconds) : tr("—")},
-        {PeakSensitivity, ok ? shown(m.peakSensitivity) : tr("—")}};
+        {DelayMargin, robustnessDefined ? shown(m.delayMarginSeconds) : ok ? tr("n/a") : tr("—")},
+        {PeakSensitivity, robustnessDefined ? shown(m.peakSensitivity) : ok ? tr("n/a") : tr("—")}};
     const std::optional<SpecificationCheck>& check = marginChecks_[static_cast<std::size_t>(axis)];
     for (auto it = values.begin(); it != values.end(); ++it) {
         Cell cell{it.value()};
