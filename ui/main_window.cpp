@@ -47,6 +47,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -628,12 +629,33 @@ void MainWindow::updateTitle() {
 
 void MainWindow::restoreLayout() {
     QSettings settings;
-    if (settings.contains("window/geometry"))
+    if (settings.contains("window/geometry")) {
         restoreGeometry(settings.value("window/geometry").toByteArray());
+        fitIntoScreen();
+    }
     if (settings.contains("window/mainSplitter"))
         mainSplitter_->restoreState(settings.value("window/mainSplitter").toByteArray());
     if (settings.contains("window/plotSplitter"))
         plotSplitter_->restoreState(settings.value("window/plotSplitter").toByteArray());
+}
+
+void MainWindow::fitIntoScreen() {
+    // A size saved on a larger screen (1600 x 1000 restored on 1366 x 768) would put the
+    // window's edges and the status bar off screen: keep it within the available area.
+    const QScreen* screen = this->screen();
+    if (!screen)
+        return;
+    const QRect available = screen->availableGeometry();
+    const QSize frameExtra = frameGeometry().size() - geometry().size();
+    const QSize most = available.size() - frameExtra;
+    if (width() > most.width() || height() > most.height())
+        resize(std::min(width(), most.width()), std::min(height(), most.height()));
+    QRect frame = frameGeometry();
+    if (!available.contains(frame)) {
+        frame.moveLeft(std::clamp(frame.left(), available.left(), std::max(available.left(), available.right() - frame.width() + 1)));
+        frame.moveTop(std::clamp(frame.top(), available.top(), std::max(available.top(), available.bottom() - frame.height() + 1)));
+        move(frame.topLeft());
+    }
 }
 
 void MainWindow::saveLayout() const {

@@ -28,6 +28,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
@@ -50,6 +51,7 @@ private slots:
     void recoveryIsOfferedAfterACrash();
     void runningInstanceCopyIsNotOffered();
     void discardedWorkDoesNotComeBack();
+    void restoredWindowFitsTheScreen();
     // Stale plots
     void parameterLocusOfPolePlacementAxisIsNotTheOldSweep();
     void invalidAxisShowsNoOldLocus();
@@ -207,6 +209,31 @@ void TstWorkbenchTrust::discardedWorkDoesNotComeBack() {
     const auto restored = sessionFromBytes(QSettings().value("session/last").toByteArray());
     QVERIFY(restored.ok);
     QCOMPARE(restored.session.axes[0].gt.kp, 47.0);
+}
+
+void TstWorkbenchTrust::restoredWindowFitsTheScreen() {
+    // A geometry saved on a screen larger than this one comes back within the available area
+    // (before: restored at its saved size, larger than the screen).
+    const QRect available = window_->screen()->availableGeometry();
+    window_->resize(available.width() + 400, available.height() + 300);
+    window_->move(available.topLeft() + QPoint(200, 150));
+    QSettings().setValue("window/geometry", window_->saveGeometry());
+    MainWindow restored(session_.get());
+    restored.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&restored));
+    // No larger than the screen, unless the window's own minimum size is (the offscreen test
+    // screen is 800 x 800, below the workbench's minimum); never larger than both.
+    const QSize least = restored.minimumSizeHint().expandedTo(restored.minimumSize());
+    const QRect frame = restored.frameGeometry();
+    const QString where = QStringLiteral("%1x%2+%3+%4 in %5x%6, minimum %7x%8")
+                              .arg(frame.width()).arg(frame.height()).arg(frame.x()).arg(frame.y())
+                              .arg(available.width()).arg(available.height())
+                              .arg(least.width()).arg(least.height());
+    QVERIFY2(restored.width() <= std::max(available.width(), least.width()), qPrintable(where));
+    QVERIFY2(restored.height() <= std::max(available.height(), least.height()), qPrintable(where));
+    QVERIFY2(frame.left() >= available.left() && frame.top() >= available.top(), qPrintable(where));
+    restored.recovery()->discard();
+    QSettings().remove("window/geometry");
 }
 
 // ---- Stale plots ----------------------------------------------------------------------------
