@@ -156,6 +156,7 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
     const TrajectorySettings& t = session.trajectory;
     if (t.kind != TrajectoryKind::Cubic)
         return;
+    d.moveSettle = moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds}, session.spec.inPositionWindowMm);
     const ImplementationSettings& impl = session.implementation;
     if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
         const auto& times = d.run.result.t;
@@ -168,6 +169,25 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
                 std::to_string(d.limitCycle->turns) +
                 " turns in the last half of the rest), caused by the encoder/DAC quantization");
     }
+}
+
+/// Says which criteria the design passes but its digital implementation fails, if any.
+std::optional<std::string> implementationVerdictWarning(const SpecificationCheck& design,
+                                                        const SpecificationCheck& implementation) {
+    std::vector<std::string> failed;
+    if (design.trackingError && !implementation.trackingError)
+        failed.push_back("the tracking error");
+    if (design.noSaturation && !implementation.noSaturation)
+        failed.push_back("the actuator limit");
+    if (design.settleApplies && design.settle && !implementation.settle)
+        failed.push_back("the settle after the move");
+    if (failed.empty())
+        return std::nullopt;
+    std::string list;
+    for (std::size_t i = 0; i < failed.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == failed.size() ? " and " : ", ") + failed[i];
+    return "the design meets " + list + ", its digital implementation does not: the verdict is the "
+           "implementation's";
 }
 
 /// The digital implementation of a Guillemin-Truxal axis (its failures become a warning: the
@@ -361,7 +381,15 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             margins = LoopMarginFigures{out.margins->phaseMarginDeg, out.margins->gainMarginDb};
         Specification spec = session.spec;
         spec.umaxVolts = session.umaxVolts;
-        out.check = checkSpecification(spec, out.metrics, out.step, out.moveSettle, margins);
+        out.designCheck = checkSpecification(spec, out.metrics, out.step, out.moveSettle, margins);
+        out.check = out.designCheck;
+        if (out.digital) {
+            out.implementationCheck = checkSpecification(spec, out.digital->metrics, out.step,
+                                                         out.digital->moveSettle, margins);
+            out.check = bothPass(out.designCheck, *out.implementationCheck);
+            if (const auto w = implementationVerdictWarning(out.designCheck, *out.implementationCheck))
+                out.warnings.push_back(*w);
+        }
         out.ok = true;
     } catch (const InvalidInput& e) {
         out.ok = false;

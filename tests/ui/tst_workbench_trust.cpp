@@ -64,6 +64,7 @@ private slots:
     void truncatedLocusIsSaidAtThePlot();
     void unsaturatedDiscreteLoopIsSaid();
     void divergedRunIsNotApplicableAndFails();
+    void implementationThatSaturatesFails();
     // One specification
     void oneSpecificationForMetricsAndDesignSpace();
     // Undo and fields
@@ -446,6 +447,25 @@ void TstWorkbenchTrust::divergedRunIsNotApplicableAndFails() {
     QCOMPARE(rowText(MetricsPanel::DelayMargin, 0), QStringLiteral("n/a"));
     QCOMPARE(rowText(MetricsPanel::PeakSensitivity, 0), QStringLiteral("n/a"));
     QVERIFY(rowText(MetricsPanel::GainMargin, 0) != QStringLiteral("n/a"));
+}
+
+void TstWorkbenchTrust::implementationThatSaturatesFails() {
+    // Pole placement + ZPETC on the default 600 mm cubic: before, max |e| showed "3.8e-05 ✓"
+    // and the settle "0 ✓" while the digital implementation stalls about 100 mm short at the
+    // 2.5 V limit. Each row is now judged on the worse run and says so.
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    const AxisEvaluation& e = session_->axisEvaluation(0);
+    QVERIFY(e.ok && e.implementationCheck && e.digital);
+    QVERIFY(e.designCheck.trackingError && !e.implementationCheck->trackingError);
+    const QString error = rowText(MetricsPanel::MaxErrorPct, 0);
+    QVERIFY2(error.contains(QStringLiteral("✗")) && error.contains("digital"), qPrintable(error));
+    // The figure shown is the implementation's (tens of percent of the travel), not 3.8e-05.
+    QVERIFY2(error.split(' ').first().toDouble() > 10.0, qPrintable(error));
+    QVERIFY(window_->metricsPanel()->table()->item(MetricsPanel::MaxErrorPct, 0)->toolTip().contains("implementation"));
+    const QString settle = rowText(MetricsPanel::SettleAfterMove, 0);
+    QVERIFY2(settle.contains(QStringLiteral("✗")), qPrintable(settle));
+    QVERIFY(!rowText(MetricsPanel::Saturated, 0).contains(QStringLiteral("✓")));
+    QVERIFY(window_->metricsPanel()->noticeText().contains("its digital implementation does not"));
 }
 
 // ---- One specification ----------------------------------------------------------------------

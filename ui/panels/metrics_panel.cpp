@@ -7,6 +7,7 @@
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QSet>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -393,6 +394,31 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                         {Overshoot, a.check.overshoot}};
         if (a.check.settleApplies)
             judged[SettleAfterMove] = a.check.settle;
+        // Rows the design passes but its digital implementation fails show the implementation's
+        // figure: the verdict is the run that will really happen.
+        QSet<int> byImplementation;
+        if (a.ok && a.implementationCheck && a.digital) {
+            const SpecificationCheck& d = a.designCheck;
+            const SpecificationCheck& i = *a.implementationCheck;
+            const TrackingMetrics& dm = a.digital->metrics;
+            if (d.trackingError && !i.trackingError) {
+                byImplementation << MaxErrorPct;
+                values[MaxErrorPct] = displayNumber(dm.maxAbsErrorPct);
+            }
+            if (d.noSaturation && !i.noSaturation) {
+                byImplementation << MaxU << Saturated;
+                values[MaxU] = displayNumber(dm.maxAbsU);
+                values[Saturated] = dm.diverged ? tr("n/a") : displayNumber(dm.saturatedTimeSeconds);
+            }
+            if (d.settleApplies && d.settle && !i.settle && a.digital->moveSettle) {
+                const MoveSettleMetrics& ms = *a.digital->moveSettle;
+                byImplementation << SettleAfterMove;
+                values[SettleAfterMove] =
+                    ms.diverged            ? tr("n/a")
+                    : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
+                                           : tr("> %1").arg(displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
+            }
+        }
         for (int r = 0; r < RowCount; ++r) {
             if (isGroupRow(r) || isMarginRow(r))
                 continue;
@@ -401,7 +427,14 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                 const bool pass = judged[r];
                 cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
                 cell.color = pass ? kPass : kFail;
-                cell.toolTip = pass ? tr("meets the specification") : tr("fails the specification");
+                cell.toolTip = pass ? (a.implementationCheck ? tr("meets the specification, as designed and as implemented")
+                                                             : tr("meets the specification"))
+                                    : tr("fails the specification");
+                if (byImplementation.contains(r)) {
+                    cell.text += tr(" digital");
+                    cell.toolTip = tr("the design meets the specification here, its digital implementation "
+                                      "(Ts, quantization, ±umax, delay) does not: this is the implementation's figure");
+                }
             }
             if (!a.ok)
                 cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
