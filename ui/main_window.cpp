@@ -228,8 +228,23 @@ QWidget* MainWindow::buildControls() {
     fitStackToCurrentPage(methodPages_);
     designLayout->addWidget(methodPages_);
     connect(method_, &QComboBox::activated, this, [this](int index) {
-        session_->setMethod(session_->currentAxis(), index == 0 ? DesignMethod::GuilleminTruxal
-                                                                : DesignMethod::PolePlacementZpetc);
+        const int axis = session_->currentAxis();
+        const DesignMethod method = index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
+        if (session_->session().axes[static_cast<std::size_t>(axis)].method == method)
+            return;
+        session_->setMethod(axis, method);
+        // The plant changes with the method (each method has its own model): say which.
+        const AxisSettings& a = session_->session().axes[static_cast<std::size_t>(axis)];
+        const QString name = QString::fromStdString(a.id).toUpper();
+        statusBar()->showMessage(
+            method == DesignMethod::PolePlacementZpetc
+                ? (a.pp == PpAxisSettings{}
+                       ? tr("Axis %1 now uses pole placement on Patrick, Ishak and Adnan's ARX model (the "
+                            "pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back")
+                             .arg(name)
+                       : tr("Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back").arg(name))
+                : tr("Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back").arg(name),
+            10000);
     });
     connect(ppEditor_, &PpEditor::settingsEdited, this, [this](const PpAxisSettings& pp, int mergeKey) {
         session_->setPp(session_->currentAxis(), pp, mergeKey);

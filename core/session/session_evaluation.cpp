@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace xyt {
 
@@ -268,6 +269,34 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
     return Polynomial::fromAscending(c, field);
 }
 
+/**
+ * A plant that does not integrate (A(1) != 0) holds a position y only with the steady command
+ * u = y A(1) / B(1): beyond the actuator limit the axis cannot stay where the trajectory goes,
+ * whatever the controller (Patrick, Ishak and Adnan's x-axis model needs 3.03 V at 600 mm).
+ */
+std::optional<std::string> reachWarning(const PpAxisSettings& pp, const std::vector<double>& reference,
+                                        double umaxVolts) {
+    double a1 = 0.0, b1 = 0.0, farthest = 0.0;
+    for (double c : pp.a)
+        a1 += c;
+    for (double c : pp.b)
+        b1 += c;
+    for (double r : reference)
+        farthest = std::max(farthest, std::abs(r));
+    // |A(1)| below 1e-9 of the coefficients' scale: an integrator within round-off.
+    double scale = 0.0;
+    for (double c : pp.a)
+        scale = std::max(scale, std::abs(c));
+    if (!(std::abs(a1) > 1e-9 * scale) || b1 == 0.0 || !std::isfinite(farthest))
+        return std::nullopt;
+    const double hold = farthest * a1 / b1;
+    if (!(std::abs(hold) > umaxVolts))
+        return std::nullopt;
+    return "the trajectory is out of the plant's reach: holding " + formatNumber(farthest, 4) +
+           " mm needs " + formatNumber(std::abs(hold), 3) + " V (the model's steady gain B(1)/A(1) = " +
+           formatNumber(b1 / a1, 4) + " mm/V), beyond the " + formatNumber(umaxVolts) + " V limit";
+}
+
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 bool withDigital, AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
@@ -299,6 +328,8 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         out.run = out.feedbackOnlyRun;
     }
     out.metrics = trackingMetrics(out.run);
+    if (const auto w = reachWarning(pp, out.run.r, session.umaxVolts))
+        out.warnings.push_back(*w);
     // The step figures of the system the axis runs: with ZPETC the step previewed through the
     // feedforward and the loop (issue 19: the loop Kf B / T alone overshoots 52 % through the
     // NMP zero, which the axis never does); without it the loop alone.

@@ -2,6 +2,7 @@
 // Issue 15: the workbench never crashes, never loses work and never shows a stale or false
 // result. Each test drives the real widgets and names the defect it pins down.
 #include "core/analysis/root_locus.h"
+#include "core/model/number_format.h"
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/panels/metrics_panel.h"
@@ -21,7 +22,9 @@
 #include "tests/support/gui_checks.h"
 #include "tests/support/tolerance.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QStatusBar>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -65,8 +68,10 @@ private slots:
     void unsaturatedDiscreteLoopIsSaid();
     void divergedRunIsNotApplicableAndFails();
     void implementationThatSaturatesFails();
+    void methodSwitchSaysWhichPlant();
     // One specification
     void oneSpecificationForMetricsAndDesignSpace();
+    void firstViewSaysWhyTheSpecificationFails();
     // Undo and fields
     void focusedFieldFollowsUndo();
     void sliderFieldsTakeWhatIsTyped();
@@ -466,9 +471,65 @@ void TstWorkbenchTrust::implementationThatSaturatesFails() {
     QVERIFY2(settle.contains(QStringLiteral("✗")), qPrintable(settle));
     QVERIFY(!rowText(MetricsPanel::Saturated, 0).contains(QStringLiteral("✓")));
     QVERIFY(window_->metricsPanel()->noticeText().contains("its digital implementation does not"));
+    // The pole-placement plant cannot hold 600 mm within 2.5 V: A(1)/B(1) of Patrick, Ishak and
+    // Adnan's model is 0.0003/0.0595, so 600 mm needs 600 * 0.0003 / 0.0595 = 3.025 V.
+    QVERIFY2(window_->metricsPanel()->noticeText().contains("out of the plant's reach: holding 600 mm needs 3.03 V"),
+             qPrintable(window_->metricsPanel()->noticeText()));
+}
+
+void TstWorkbenchTrust::methodSwitchSaysWhichPlant() {
+    // Switching the method through the combo box says that the plant changes, and undo is one
+    // step back to the previous method.
+    QComboBox* method = window_->findChild<QComboBox*>(QString(), Qt::FindChildrenRecursively);
+    for (QComboBox* box : window_->findChildren<QComboBox*>())
+        if (box->accessibleName() == "Design method")
+            method = box;
+    QVERIFY(method && method->accessibleName() == "Design method");
+    const int steps = session_->undoStack()->count();
+    method->setCurrentIndex(1);
+    emit method->activated(1);
+    QCOMPARE(session_->session().axes[0].method, DesignMethod::PolePlacementZpetc);
+    QVERIFY2(window_->statusBar()->currentMessage().contains("Patrick, Ishak and Adnan"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().axes[0].method, DesignMethod::GuilleminTruxal);
 }
 
 // ---- One specification ----------------------------------------------------------------------
+
+void TstWorkbenchTrust::firstViewSaysWhyTheSpecificationFails() {
+    // The default specification (Braga et al.'s: 0 % overshoot) fails every Guillemin-Truxal
+    // design; before, the first screen showed red crosses with no word of why.
+    const QString why = window_->metricsPanel()->adviceText();
+    QVERIFY2(why.contains("type 2"), qPrintable(why));
+    QVERIFY(why.contains("axis X") && why.contains("axis Y"));
+    QVERIFY(!session_->axisEvaluation(0).check.allPassed());
+    QPushButton* relax = window_->metricsPanel()->relaxButton();
+    QVERIFY(relax->isEnabled());
+    // Relax: the limits become what the design reaches (rounded up to 3 digits), one undo step,
+    // and then both axes pass, as the advice promised.
+    const int steps = session_->undoStack()->count();
+    const Specification before = session_->session().spec;
+    QTest::mouseClick(relax, Qt::LeftButton);
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    const Specification after = session_->session().spec;
+    XYT_COMPARE_NEAR(after.maxOvershootPct, roundUp3(std::max(session_->axisEvaluation(0).step.overshootPct,
+                                                               session_->axisEvaluation(1).step.overshootPct)),
+                     0.0, 0.0);
+    QVERIFY(after.maxOvershootPct > before.maxOvershootPct);
+    for (int axis = 0; axis < 2; ++axis)
+        QVERIFY2(session_->axisEvaluation(axis).check.allPassed(),
+                 qPrintable(window_->metricsPanel()->adviceText()));
+    QVERIFY(window_->metricsPanel()->adviceText().isEmpty());
+    QVERIFY(!relax->isEnabled());
+    session_->undoStack()->undo();
+    QVERIFY(session_->session().spec == before);
+    // A saturating implementation cannot be relaxed into passing: said, no button.
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    QVERIFY(window_->metricsPanel()->adviceText().contains("limit"));
+    QVERIFY(!relax->isEnabled());
+}
 
 void TstWorkbenchTrust::oneSpecificationForMetricsAndDesignSpace() {
     auto* space = window_->findChild<DesignSpaceView*>();

@@ -2,11 +2,14 @@
 #include "ui/panels/metrics_panel.h"
 
 #include "core/model/errors.h"
+#include "core/session/specification_advice.h"
 #include "ui/panels/number_field.h"
 
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
 #include <QSet>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -107,6 +110,25 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustIgnored);
     table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
                            RowCount * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
+    // Above the figures: whether the design meets the specification, why not, and the limits
+    // it would meet (the default specification, Braga et al.'s, fails every design).
+    auto* adviceRow = new QHBoxLayout;
+    advice_ = new QLabel(this);
+    advice_->setTextFormat(Qt::PlainText);
+    advice_->setAccessibleName(tr("Why the specification fails"));
+    relax_ = new QPushButton(tr("Relax the limits"), this);
+    relax_->setEnabled(false);
+    connect(relax_, &QPushButton::clicked, this, [this] {
+        if (relaxed_)
+            emit specificationEdited(*relaxed_);
+    });
+    // Fixed sizes: nothing in this row may ask the window for a new layout on a slider step.
+    advice_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    advice_->setFixedHeight(relax_->sizeHint().height());
+    relax_->setFixedSize(relax_->sizeHint());
+    adviceRow->addWidget(advice_, 1);
+    adviceRow->addWidget(relax_, 0, Qt::AlignTop);
+    layout->addLayout(adviceRow);
     layout->addWidget(table_);
     contour_ = new QLabel(this);
     contour_->setWordWrap(true);
@@ -278,6 +300,36 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
 }
 
 QString MetricsPanel::contourText() const { return contour_->text(); }
+
+QString MetricsPanel::adviceText() const { return advice_->toolTip(); }
+
+void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& evaluation) {
+    const SpecificationAdvice advice = adviseSpecification(session, evaluation);
+    QStringList reasons;
+    for (const std::string& r : advice.reasons)
+        reasons << QString::fromStdString(r);
+    relaxed_ = advice.relaxed;
+    // One line whose size does not change with the figures, and nothing shown or hidden: a new
+    // size would make the window lay itself out again on every slider step. The reasons,
+    // numbers included, are in the tooltip.
+    const QString headline = reasons.isEmpty() ? tr("✓ Both axes meet the specification")
+                                               : tr("✗ Fails the specification (%n reason(s): hover to read why)",
+                                                    nullptr, static_cast<int>(reasons.size()));
+    if (advice_->text() != headline)
+        advice_->setText(headline);
+    const QString style = reasons.isEmpty() ? QStringLiteral("QLabel { color: #1b7f2a; }")
+                                            : QStringLiteral("QLabel { color: #8a1c1c; }");
+    if (advice_->styleSheet() != style) // a new style sheet re-polishes and lays out again
+        advice_->setStyleSheet(style);
+    advice_->setToolTip(reasons.join(QLatin1Char('\n')));
+    relax_->setEnabled(relaxed_.has_value());
+    QStringList changes;
+    for (const std::string& c : advice.changes)
+        changes << QString::fromStdString(c);
+    relax_->setToolTip(relaxed_ ? tr("Set the limits to what this design reaches: %1 (one undo step)").arg(changes.join(tr(", ")))
+                       : reasons.isEmpty() ? tr("The design meets the specification")
+                                           : tr("No limit makes this design pass (see why): change the design"));
+}
 
 void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList& notices) {
     const auto mm = [](double v) { return QString::number(v, 'f', 4); };
@@ -471,6 +523,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         }
     }
     fitColumns();
+    showAdvice(session, evaluation);
     showContour(evaluation, notices);
     notices_->setText(notices.join(QLatin1Char('\n')));
     notices_->setVisible(!notices.isEmpty());

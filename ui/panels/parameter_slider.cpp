@@ -154,7 +154,10 @@ void ParameterSlider::showValue(double v) {
     exact_->setText(beyond ? tr("%1, beyond the slider (%2 to %3)")
                                  .arg(formatNumber(v), formatNumber(min_), formatNumber(max_))
                            : QString::number(v, 'g', 10));
-    exact_->setStyleSheet(beyond ? QStringLiteral("color: #b26a00;") : QStringLiteral("color: palette(mid);"));
+    // Only when it changes: a new style sheet re-polishes the label and lays the window out again.
+    const QString style = beyond ? QStringLiteral("color: #b26a00;") : QStringLiteral("color: palette(mid);");
+    if (exact_->styleSheet() != style)
+        exact_->setStyleSheet(style);
     updating_ = false;
 }
 
