@@ -110,9 +110,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustIgnored);
     table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
                            RowCount * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
-    // Above the figures: whether the design meets the specification, why not, and the limits
-    // it would meet (the default specification, Braga et al.'s, fails every design).
-    auto* adviceRow = new QHBoxLayout;
+    // Whether the design meets the specification, why not (tooltip), and the limits it would
+    // meet (the default specification, Braga et al.'s, fails every design): on the
+    // specification's title line and beside its last field, where the panel has room at
+    // 1366x768.
     advice_ = new QLabel(this);
     advice_->setTextFormat(Qt::PlainText);
     advice_->setAccessibleName(tr("Why the specification fails"));
@@ -122,13 +123,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         if (relaxed_)
             emit specificationEdited(*relaxed_);
     });
-    // Fixed sizes: nothing in this row may ask the window for a new layout on a slider step.
+    // Fixed sizes: nothing here may ask the window for a new layout on a slider step.
     advice_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    advice_->setFixedHeight(relax_->sizeHint().height());
+    advice_->setFixedHeight(advice_->fontMetrics().height() + 2);
     relax_->setFixedSize(relax_->sizeHint());
-    adviceRow->addWidget(advice_, 1);
-    adviceRow->addWidget(relax_, 0, Qt::AlignTop);
-    layout->addLayout(adviceRow);
     layout->addWidget(table_);
     contour_ = new QLabel(this);
     contour_->setWordWrap(true);
@@ -164,7 +162,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     // Two limits a row (label, field, label, field): seven limits in four rows keep the table
     // above free of a scroll bar at 1366x768.
     auto* specTitle = new QLabel(tr("<b>Specification</b> (the limit column above)"));
-    layout->addWidget(specTitle);
+    auto* titleRow = new QHBoxLayout;
+    titleRow->addWidget(specTitle);
+    titleRow->addWidget(advice_, 1);
+    layout->addLayout(titleRow);
     auto* form = new QGridLayout;
     form->setHorizontalSpacing(6);
     form->setVerticalSpacing(3);
@@ -185,6 +186,7 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         form->addWidget(spec_[key], index / 2, (index % 2) * 2 + 1);
         ++index;
     }
+    form->addWidget(relax_, index / 2, (index % 2) * 2, 1, 2, Qt::AlignLeft);
     form->setColumnStretch(1, 1);
     form->setColumnStretch(3, 1);
     spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
@@ -312,9 +314,8 @@ void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& e
     // One line whose size does not change with the figures, and nothing shown or hidden: a new
     // size would make the window lay itself out again on every slider step. The reasons,
     // numbers included, are in the tooltip.
-    const QString headline = reasons.isEmpty() ? tr("✓ Both axes meet the specification")
-                                               : tr("✗ Fails the specification (%n reason(s): hover to read why)",
-                                                    nullptr, static_cast<int>(reasons.size()));
+    const QString headline = reasons.isEmpty() ? tr("✓ both axes meet it")
+                                               : tr("✗ fails: hover for why");
     if (advice_->text() != headline)
         advice_->setText(headline);
     const QString style = reasons.isEmpty() ? QStringLiteral("QLabel { color: #1b7f2a; }")
