@@ -299,6 +299,7 @@ int runIdentify(const QStringList& argv) {
         if (!m.roots.continuousPoles.empty())
             out.insert("continuous_poles", complexPairs(m.roots.continuousPoles));
         out.insert("stable", m.roots.stable);
+        out.insert("integrating", m.roots.integrating);
         out.insert("non_minimum_phase", m.roots.nonMinimumPhase);
     }
     QJsonArray warnings = notes;

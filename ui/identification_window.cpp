@@ -695,7 +695,10 @@ void IdentificationWindow::showCandidate(int index) {
     QStringList notes;
     for (const std::string& n : m.roots.notes)
         notes << QString::fromStdString(n);
-    if (!m.roots.stable)
+    if (m.roots.integrating)
+        notes << tr("A pole at z = 1: the model integrates, as the position of a motor axis does "
+                    "(every other pole is inside the unit circle).");
+    else if (!m.roots.stable)
         notes << tr("A pole is on or outside the unit circle: the model is unstable.");
     pzNotice_->setSevere(false);
     pzNotice_->setLines(notes);
@@ -704,6 +707,8 @@ void IdentificationWindow::showCandidate(int index) {
     pzPlot_->xAxis->setRange(-extent, extent);
     pzPlot_->replot();
 }
+
+QString IdentificationWindow::poleZeroNoticeText() const { return pzNotice_->text(); }
 
 void IdentificationWindow::useForAxis(int axis) {
     const Candidate* c = selectedCandidate();

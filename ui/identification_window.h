@@ -102,6 +102,8 @@ public:
     QCPGraph* autocorrelationGraph() const { return autoStems_; }
     QCPGraph* crossCorrelationGraph() const { return crossStems_; }
     QCustomPlot* poleZeroPlot() const { return pzPlot_; }
+    /// The notes under the pole-zero map (integrator, instability, NMP zeros).
+    QString poleZeroNoticeText() const;
     QCPGraph* polesGraph() const { return poles_; }
     QCPGraph* zerosGraph() const { return zeros_; }
     QTabWidget* plotTabs() const { return tabs_; }

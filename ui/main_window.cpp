@@ -47,6 +47,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -215,6 +216,9 @@ QWidget* MainWindow::buildControls() {
     gtLayout->addWidget(plantEditor_);
     omegaN_ = new ParameterSlider(tr("ω&n"), tr("rad/s"), 0.05, 20.0, true, gtPage);
     kp_ = new ParameterSlider(tr("k&p"), tr("V/m"), 0.1, 1000.0, true, gtPage);
+    // The fields take any positive value a design can have; the sliders cover the usual range.
+    omegaN_->setFieldRange(1e-6, 1e6);
+    kp_->setFieldRange(1e-6, 1e12);
     gtLayout->addWidget(omegaN_);
     gtLayout->addWidget(kp_);
     gtLayout->addStretch(1);
@@ -224,8 +228,23 @@ QWidget* MainWindow::buildControls() {
     fitStackToCurrentPage(methodPages_);
     designLayout->addWidget(methodPages_);
     connect(method_, &QComboBox::activated, this, [this](int index) {
-        session_->setMethod(session_->currentAxis(), index == 0 ? DesignMethod::GuilleminTruxal
-                                                                : DesignMethod::PolePlacementZpetc);
+        const int axis = session_->currentAxis();
+        const DesignMethod method = index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
+        if (session_->session().axes[static_cast<std::size_t>(axis)].method == method)
+            return;
+        session_->setMethod(axis, method);
+        // The plant changes with the method (each method has its own model): say which.
+        const AxisSettings& a = session_->session().axes[static_cast<std::size_t>(axis)];
+        const QString name = QString::fromStdString(a.id).toUpper();
+        statusBar()->showMessage(
+            method == DesignMethod::PolePlacementZpetc
+                ? (a.pp == PpAxisSettings{}
+                       ? tr("Axis %1 now uses pole placement on Patrick, Ishak and Adnan's ARX model (the "
+                            "pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back")
+                             .arg(name)
+                       : tr("Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back").arg(name))
+                : tr("Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back").arg(name),
+            10000);
     });
     connect(ppEditor_, &PpEditor::settingsEdited, this, [this](const PpAxisSettings& pp, int mergeKey) {
         session_->setPp(session_->currentAxis(), pp, mergeKey);
@@ -625,12 +644,33 @@ void MainWindow::updateTitle() {
 
 void MainWindow::restoreLayout() {
     QSettings settings;
-    if (settings.contains("window/geometry"))
+    if (settings.contains("window/geometry")) {
         restoreGeometry(settings.value("window/geometry").toByteArray());
+        fitIntoScreen();
+    }
     if (settings.contains("window/mainSplitter"))
         mainSplitter_->restoreState(settings.value("window/mainSplitter").toByteArray());
     if (settings.contains("window/plotSplitter"))
         plotSplitter_->restoreState(settings.value("window/plotSplitter").toByteArray());
+}
+
+void MainWindow::fitIntoScreen() {
+    // A size saved on a larger screen (1600 x 1000 restored on 1366 x 768) would put the
+    // window's edges and the status bar off screen: keep it within the available area.
+    const QScreen* screen = this->screen();
+    if (!screen)
+        return;
+    const QRect available = screen->availableGeometry();
+    const QSize frameExtra = frameGeometry().size() - geometry().size();
+    const QSize most = available.size() - frameExtra;
+    if (width() > most.width() || height() > most.height())
+        resize(std::min(width(), most.width()), std::min(height(), most.height()));
+    QRect frame = frameGeometry();
+    if (!available.contains(frame)) {
+        frame.moveLeft(std::clamp(frame.left(), available.left(), std::max(available.left(), available.right() - frame.width() + 1)));
+        frame.moveTop(std::clamp(frame.top(), available.top(), std::max(available.top(), available.bottom() - frame.height() + 1)));
+        move(frame.topLeft());
+    }
 }
 
 void MainWindow::saveLayout() const {
@@ -647,8 +687,10 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     }
     saveLayout();
     recovery_->discard(); // saved or deliberately discarded: nothing to recover
-    // The last values come back on the next start.
-    QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
+    // The last values come back on the next start, unless the user discarded them: a session
+    // still modified here was answered "Discard", and must not return as a clean "untitled".
+    if (!session_->isModified())
+        QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
     event->accept();
 }
 

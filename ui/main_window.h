@@ -49,6 +49,8 @@ public:
 
     ParameterSlider* omegaNSlider() const { return omegaN_; }
     ParameterSlider* kpSlider() const { return kp_; }
+    /// Shrinks and moves the window into its screen's available area (done on restore).
+    void fitIntoScreen();
     PlantEditor* plantEditor() const { return plantEditor_; }
     TrajectoryEditor* trajectoryEditor() const { return trajectoryEditor_; }
     TimeResponsePlot* timePlot() const { return timePlot_; }
@@ -98,6 +100,7 @@ private:
     void buildMenus();
     void syncControls();
     void restoreLayout();
+
     void saveLayout() const;
 
     TuningSession* session_;

@@ -46,9 +46,14 @@ std::string formatRoot(std::complex<double> r) {
 }
 
 void flagRoots(ModelRoots& out) {
+    constexpr double kAtOne = 1e-6; // see ModelRoots::integrating
+    bool onlyAtOne = true;
     for (const auto& p : out.poles)
-        if (std::abs(p) >= 1.0)
+        if (std::abs(p) >= 1.0) {
             out.stable = false;
+            onlyAtOne = onlyAtOne && std::abs(p - 1.0) <= kAtOne;
+        }
+    out.integrating = !out.stable && onlyAtOne;
     for (const auto& z : out.zeros)
         if (std::abs(z) >= 1.0) {
             out.nonMinimumPhase = true;

@@ -175,6 +175,11 @@ struct ModelRoots {
     std::vector<std::complex<double>> continuousPoles;
     std::vector<std::complex<double>> continuousZeros;
     bool stable = true;          ///< every pole strictly inside the unit circle
+    /// Not stable only through poles at z = 1 (an integrator, as a position output of a motor
+    /// axis has): every other pole strictly inside. A pole counts as at 1 within 1e-6, the
+    /// accuracy of a double root there from the companion-matrix eigenvalues (sqrt(eps) ~ 1.5e-8)
+    /// with margin; a pole at 1 and a pole just outside cannot be told apart better than that.
+    bool integrating = false;
     bool nonMinimumPhase = false; ///< a zero of B on or outside the unit circle
     std::vector<std::string> notes; ///< e.g. the NMP zero and what it implies
 };

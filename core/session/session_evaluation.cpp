@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace xyt {
 
@@ -156,6 +157,7 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
     const TrajectorySettings& t = session.trajectory;
     if (t.kind != TrajectoryKind::Cubic)
         return;
+    d.moveSettle = moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds}, session.spec.inPositionWindowMm);
     const ImplementationSettings& impl = session.implementation;
     if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
         const auto& times = d.run.result.t;
@@ -168,6 +170,25 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
                 std::to_string(d.limitCycle->turns) +
                 " turns in the last half of the rest), caused by the encoder/DAC quantization");
     }
+}
+
+/// Says which criteria the design passes but its digital implementation fails, if any.
+std::optional<std::string> implementationVerdictWarning(const SpecificationCheck& design,
+                                                        const SpecificationCheck& implementation) {
+    std::vector<std::string> failed;
+    if (design.trackingError && !implementation.trackingError)
+        failed.push_back("the tracking error");
+    if (design.noSaturation && !implementation.noSaturation)
+        failed.push_back("the actuator limit");
+    if (design.settleApplies && design.settle && !implementation.settle)
+        failed.push_back("the settle after the move");
+    if (failed.empty())
+        return std::nullopt;
+    std::string list;
+    for (std::size_t i = 0; i < failed.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == failed.size() ? " and " : ", ") + failed[i];
+    return "the design meets " + list + ", its digital implementation does not: the verdict is the "
+           "implementation's";
 }
 
 /// The digital implementation of a Guillemin-Truxal axis (its failures become a warning: the
@@ -248,6 +269,34 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
     return Polynomial::fromAscending(c, field);
 }
 
+/**
+ * A plant that does not integrate (A(1) != 0) holds a position y only with the steady command
+ * u = y A(1) / B(1): beyond the actuator limit the axis cannot stay where the trajectory goes,
+ * whatever the controller (Patrick, Ishak and Adnan's x-axis model needs 3.03 V at 600 mm).
+ */
+std::optional<std::string> reachWarning(const PpAxisSettings& pp, const std::vector<double>& reference,
+                                        double umaxVolts) {
+    double a1 = 0.0, b1 = 0.0, farthest = 0.0;
+    for (double c : pp.a)
+        a1 += c;
+    for (double c : pp.b)
+        b1 += c;
+    for (double r : reference)
+        farthest = std::max(farthest, std::abs(r));
+    // |A(1)| below 1e-9 of the coefficients' scale: an integrator within round-off.
+    double scale = 0.0;
+    for (double c : pp.a)
+        scale = std::max(scale, std::abs(c));
+    if (!(std::abs(a1) > 1e-9 * scale) || b1 == 0.0 || !std::isfinite(farthest))
+        return std::nullopt;
+    const double hold = farthest * a1 / b1;
+    if (!(std::abs(hold) > umaxVolts))
+        return std::nullopt;
+    return "the trajectory is out of the plant's reach: holding " + formatNumber(farthest, 4) +
+           " mm needs " + formatNumber(std::abs(hold), 3) + " V (the model's steady gain B(1)/A(1) = " +
+           formatNumber(b1 / a1, 4) + " mm/V), beyond the " + formatNumber(umaxVolts) + " V limit";
+}
+
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 bool withDigital, AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
@@ -279,6 +328,8 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         out.run = out.feedbackOnlyRun;
     }
     out.metrics = trackingMetrics(out.run);
+    if (const auto w = reachWarning(pp, out.run.r, session.umaxVolts))
+        out.warnings.push_back(*w);
     // The step figures of the system the axis runs: with ZPETC the step previewed through the
     // feedforward and the loop (issue 19: the loop Kf B / T alone overshoots 52 % through the
     // NMP zero, which the axis never does); without it the loop alone.
@@ -361,7 +412,15 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             margins = LoopMarginFigures{out.margins->phaseMarginDeg, out.margins->gainMarginDb};
         Specification spec = session.spec;
         spec.umaxVolts = session.umaxVolts;
-        out.check = checkSpecification(spec, out.metrics, out.step, out.moveSettle, margins);
+        out.designCheck = checkSpecification(spec, out.metrics, out.step, out.moveSettle, margins);
+        out.check = out.designCheck;
+        if (out.digital) {
+            out.implementationCheck = checkSpecification(spec, out.digital->metrics, out.step,
+                                                         out.digital->moveSettle, margins);
+            out.check = bothPass(out.designCheck, *out.implementationCheck);
+            if (const auto w = implementationVerdictWarning(out.designCheck, *out.implementationCheck))
+                out.warnings.push_back(*w);
+        }
         out.ok = true;
     } catch (const InvalidInput& e) {
         out.ok = false;

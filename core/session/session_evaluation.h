@@ -63,6 +63,8 @@ struct DigitalEvaluation {
     double designMinDamping = 0.0;
     /// A limit cycle at rest after a cubic move (only looked for with quantization on).
     std::optional<RestOscillation> limitCycle;
+    /// Point-to-point (cubic) runs: the digital run's move-and-settle figures.
+    std::optional<MoveSettleMetrics> moveSettle;
 };
 
 /// Everything computed for one axis of a session: the design, the run and its figures.
@@ -102,8 +104,16 @@ struct AxisEvaluation {
     /// rstLoopTransferFunctions); unset when the axis has no loop or the analysis refused it.
     std::optional<StabilityMargins> margins;
     /// Pass/fail of each criterion of the session's specification (the margins included when
-    /// `margins` is set).
+    /// `margins` is set) for the design as it will run: each criterion passes only if it passes
+    /// both on the design's run (designCheck) and on the digital implementation's
+    /// (implementationCheck, when there is one). A design whose implementation saturates or
+    /// loses the trajectory fails, whatever the linear design does.
     SpecificationCheck check;
+    /// The specification judged on the design's run alone.
+    SpecificationCheck designCheck;
+    /// The specification judged on the digital implementation's run (its tracking and
+    /// move-and-settle figures; the step and margins are the design's); unset without one.
+    std::optional<SpecificationCheck> implementationCheck;
     std::vector<std::string> warnings;
     /// The digital implementation of the axis; unset when the axis could not be designed.
     /// Shared (its runs hold megabytes at the default length, and evaluations are copied into

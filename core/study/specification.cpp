@@ -61,4 +61,19 @@ SpecificationCheck checkSpecification(const Specification& spec, const TrackingM
     return c;
 }
 
+SpecificationCheck bothPass(const SpecificationCheck& a, const SpecificationCheck& b) {
+    SpecificationCheck c;
+    c.stable = a.stable && b.stable;
+    c.settlingTime = a.settlingTime && b.settlingTime;
+    c.overshoot = a.overshoot && b.overshoot;
+    c.noSaturation = a.noSaturation && b.noSaturation;
+    c.trackingError = a.trackingError && b.trackingError;
+    c.settle = a.settle && b.settle;
+    c.settleApplies = a.settleApplies || b.settleApplies;
+    c.phaseMargin = a.phaseMargin && b.phaseMargin;
+    c.gainMargin = a.gainMargin && b.gainMargin;
+    c.marginsApply = a.marginsApply || b.marginsApply;
+    return c;
+}
+
 } // namespace xyt

@@ -91,6 +91,13 @@ struct SpecificationCheck {
     }
 };
 
+/**
+ * Each criterion passing only where it passes in both @p a and @p b: the verdict of a design
+ * together with its implementation (the worse of the two; a criterion applies where it applies
+ * in either). Equal to @p a when @p b is @p a.
+ */
+SpecificationCheck bothPass(const SpecificationCheck& a, const SpecificationCheck& b);
+
 /// The two margins a Specification judges (StabilityMargins::phaseMarginDeg, gainMarginDb):
 /// +infinity when the loop has no such crossing (it passes), NaN fails.
 struct LoopMarginFigures {

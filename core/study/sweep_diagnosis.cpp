@@ -92,24 +92,6 @@ std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
     return std::nullopt;
 }
 
-/// Rounded up to 3 significant digits (a limit to suggest must let the value pass).
-double roundUp3(double v) {
-    if (!(v > 0.0) || !std::isfinite(v))
-        return v;
-    const double scale = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
-    const double r = std::ceil(v / scale) * scale;
-    return r >= v ? r : std::nextafter(r, std::numeric_limits<double>::infinity());
-}
-
-/// Rounded down to 3 significant digits (a minimum to suggest must let the value pass).
-double roundDown3(double v) {
-    if (!(v > 0.0) || !std::isfinite(v))
-        return v > 0.0 ? v : 0.0;
-    const double scale = std::pow(10.0, std::floor(std::log10(v)) - 2.0);
-    const double r = std::floor(v / scale) * scale;
-    return r <= v ? r : std::nextafter(r, 0.0);
-}
-
 std::string at(const DesignSweepResult& r, std::size_t i) {
     return "wn = " + formatNumber(r.points[i].wn, 4) + " rad/s, kp = " + formatNumber(r.points[i].kp, 4);
 }

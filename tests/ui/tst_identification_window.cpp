@@ -377,6 +377,11 @@ void TstIdentificationWindow::continuousFitFromTheExampleLog() {
     QVERIFY(near(c->model.plant->k0, expected.plant->k0, 1e-12));
     QVERIFY(near(c->model.plant->a1, expected.plant->a1, 1e-12));
     QVERIFY(near(c->model.plant->a2, expected.plant->a2, 1e-12));
+    // The plant's pole at z = 1 is an integrator, not an instability (before: "the model is
+    // unstable").
+    QVERIFY(c->model.roots.integrating);
+    QVERIFY2(window_->poleZeroNoticeText().contains("integrates"), qPrintable(window_->poleZeroNoticeText()));
+    QVERIFY(!window_->poleZeroNoticeText().contains("the model is unstable"));
     if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
         QTest::qWait(50);
         window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_gt3.png");

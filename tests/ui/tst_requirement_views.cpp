@@ -263,6 +263,28 @@ void TstRequirementViews::rootLocusDrawsTheSpecification() {
     session_->setOmegaN(0, 3.0);
     for (const Complex& p : curvePoints(o.omegaCircle()))
         XYT_COMPARE_NEAR(std::abs(p), 3.0, 0.0, 1e-12);
+    // It is the reference model's parameter, not where the closed-loop poles sit: the dominant
+    // pair (the complex pair of the closed loop decaying slowest) is marked with its own
+    // omega_n = |s| and zeta = -Re s / |s|.
+    QVERIFY(o.omegaCircle()->name().startsWith("reference model ωn 3"));
+    session_->setOmegaN(0, 9.07); // the case: the dominant pair at |s| = 1.37, zeta 0.21
+    {
+        Complex dominant(0.0, 0.0);
+        for (const Complex& p : session_->axisEvaluation(0).closedLoop().poles())
+            if (p.imag() > 0.0 && (dominant.imag() == 0.0 || p.real() > dominant.real()))
+                dominant = p;
+        QVERIFY(dominant.imag() > 0.0);
+        QCOMPARE(o.dominantPoles()->dataCount(), 2);
+        const auto first = o.dominantPoles()->data()->constBegin();
+        XYT_COMPARE_NEAR(std::abs(Complex(first->key, first->value)), std::abs(dominant), 0.0, 1e-9);
+        const QString name = o.dominantPoles()->name();
+        QVERIFY2(name.contains(QStringLiteral("ωn %1 rad/s").arg(QString::number(std::abs(dominant), 'g', 3))),
+                 qPrintable(name));
+        QVERIFY2(name.contains(QStringLiteral("ζ %1").arg(QString::number(-dominant.real() / std::abs(dominant), 'g', 2))),
+                 qPrintable(name));
+        XYT_COMPARE_NEAR(std::abs(dominant), 1.37, 0.0, 0.01);
+    }
+    session_->setOmegaN(0, 3.0);
     // Ringed: exactly the closed-loop poles checkPole says break the requirements (the slow
     // pole of the PI zero, about -0.007, lies right of sigma = -1).
     const auto poles = session_->axisEvaluation(0).closedLoop().poles();

@@ -2,6 +2,7 @@
 // Issue 15: the workbench never crashes, never loses work and never shows a stale or false
 // result. Each test drives the real widgets and names the defect it pins down.
 #include "core/analysis/root_locus.h"
+#include "core/model/number_format.h"
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/panels/metrics_panel.h"
@@ -21,11 +22,17 @@
 #include "tests/support/gui_checks.h"
 #include "tests/support/tolerance.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QStatusBar>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -46,6 +53,8 @@ private slots:
     void recoveryCopyFollowsUnsavedWork();
     void recoveryIsOfferedAfterACrash();
     void runningInstanceCopyIsNotOffered();
+    void discardedWorkDoesNotComeBack();
+    void restoredWindowFitsTheScreen();
     // Stale plots
     void parameterLocusOfPolePlacementAxisIsNotTheOldSweep();
     void invalidAxisShowsNoOldLocus();
@@ -58,10 +67,14 @@ private slots:
     void truncatedLocusIsSaidAtThePlot();
     void unsaturatedDiscreteLoopIsSaid();
     void divergedRunIsNotApplicableAndFails();
+    void implementationThatSaturatesFails();
+    void methodSwitchSaysWhichPlant();
     // One specification
     void oneSpecificationForMetricsAndDesignSpace();
+    void firstViewSaysWhyTheSpecificationFails();
     // Undo and fields
     void focusedFieldFollowsUndo();
+    void sliderFieldsTakeWhatIsTyped();
     void ctrlZInAFieldUndoesTheSession();
     void dragUndoEntryNamesTheFinalValue();
     // Freezes
@@ -172,6 +185,61 @@ void TstWorkbenchTrust::runningInstanceCopyIsNotOffered() {
     QLockFile probe(running.copyPath().chopped(5) + ".lock");
     QVERIFY(!probe.tryLock(0));
     running.discard();
+}
+
+void TstWorkbenchTrust::discardedWorkDoesNotComeBack() {
+    // Quit with unsaved work answered "Discard": neither the recovery copy nor the settings'
+    // "last session" may bring the discarded design back at the next start.
+    QSettings().remove("session/last");
+    session_->setKp(0, 47.0);
+    session_->setKp(1, 23.0);
+    QVERIFY(session_->isModified());
+    QVERIFY(window_->recovery()->writeNow());
+    const QString copy = window_->recovery()->copyPath();
+    QVERIFY(QFile::exists(copy));
+    {
+        test::DialogAnswerer answer(test::DialogAnswerer::Mode::Accept, [](QWidget* dialog) {
+            auto* box = qobject_cast<QMessageBox*>(dialog);
+            QVERIFY(box);
+            box->setDefaultButton(qobject_cast<QPushButton*>(box->button(QMessageBox::Discard)));
+        });
+        QVERIFY(window_->close());
+        QCOMPARE(answer.answered(), 1);
+    }
+    QVERIFY(!QFile::exists(copy));
+    QVERIFY(!QSettings().contains("session/last"));
+    // A clean quit keeps the design for the next start, as before.
+    window_->show();
+    session_->markSaved();
+    QVERIFY(window_->close());
+    const auto restored = sessionFromBytes(QSettings().value("session/last").toByteArray());
+    QVERIFY(restored.ok);
+    QCOMPARE(restored.session.axes[0].gt.kp, 47.0);
+}
+
+void TstWorkbenchTrust::restoredWindowFitsTheScreen() {
+    // A geometry saved on a screen larger than this one comes back within the available area
+    // (before: restored at its saved size, larger than the screen).
+    const QRect available = window_->screen()->availableGeometry();
+    window_->resize(available.width() + 400, available.height() + 300);
+    window_->move(available.topLeft() + QPoint(200, 150));
+    QSettings().setValue("window/geometry", window_->saveGeometry());
+    MainWindow restored(session_.get());
+    restored.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&restored));
+    // No larger than the screen, unless the window's own minimum size is (the offscreen test
+    // screen is 800 x 800, below the workbench's minimum); never larger than both.
+    const QSize least = restored.minimumSizeHint().expandedTo(restored.minimumSize());
+    const QRect frame = restored.frameGeometry();
+    const QString where = QStringLiteral("%1x%2+%3+%4 in %5x%6, minimum %7x%8")
+                              .arg(frame.width()).arg(frame.height()).arg(frame.x()).arg(frame.y())
+                              .arg(available.width()).arg(available.height())
+                              .arg(least.width()).arg(least.height());
+    QVERIFY2(restored.width() <= std::max(available.width(), least.width()), qPrintable(where));
+    QVERIFY2(restored.height() <= std::max(available.height(), least.height()), qPrintable(where));
+    QVERIFY2(frame.left() >= available.left() && frame.top() >= available.top(), qPrintable(where));
+    restored.recovery()->discard();
+    QSettings().remove("window/geometry");
 }
 
 // ---- Stale plots ----------------------------------------------------------------------------
@@ -378,9 +446,90 @@ void TstWorkbenchTrust::divergedRunIsNotApplicableAndFails() {
     }
     QVERIFY(window_->metricsPanel()->noticeText().contains("diverged"));
     QVERIFY(window_->timePlot()->noticeText().contains("diverged"));
+    // The delay margin and Ms do not exist for an unstable closed loop (before: "7.486" and
+    // "1.000" were shown as if they were robustness figures).
+    QVERIFY(e.margins.has_value() && !e.margins->closedLoopStable);
+    QCOMPARE(rowText(MetricsPanel::DelayMargin, 0), QStringLiteral("n/a"));
+    QCOMPARE(rowText(MetricsPanel::PeakSensitivity, 0), QStringLiteral("n/a"));
+    QVERIFY(rowText(MetricsPanel::GainMargin, 0) != QStringLiteral("n/a"));
+}
+
+void TstWorkbenchTrust::implementationThatSaturatesFails() {
+    // Pole placement + ZPETC on the default 600 mm cubic: before, max |e| showed "3.8e-05 ✓"
+    // and the settle "0 ✓" while the digital implementation stalls about 100 mm short at the
+    // 2.5 V limit. Each row is now judged on the worse run and says so.
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    const AxisEvaluation& e = session_->axisEvaluation(0);
+    QVERIFY(e.ok && e.implementationCheck && e.digital);
+    QVERIFY(e.designCheck.trackingError && !e.implementationCheck->trackingError);
+    const QString error = rowText(MetricsPanel::MaxErrorPct, 0);
+    QVERIFY2(error.contains(QStringLiteral("✗")) && error.contains("digital"), qPrintable(error));
+    // The figure shown is the implementation's (tens of percent of the travel), not 3.8e-05.
+    QVERIFY2(error.split(' ').first().toDouble() > 10.0, qPrintable(error));
+    QVERIFY(window_->metricsPanel()->table()->item(MetricsPanel::MaxErrorPct, 0)->toolTip().contains("implementation"));
+    const QString settle = rowText(MetricsPanel::SettleAfterMove, 0);
+    QVERIFY2(settle.contains(QStringLiteral("✗")), qPrintable(settle));
+    QVERIFY(!rowText(MetricsPanel::Saturated, 0).contains(QStringLiteral("✓")));
+    QVERIFY(window_->metricsPanel()->noticeText().contains("its digital implementation does not"));
+    // The pole-placement plant cannot hold 600 mm within 2.5 V: A(1)/B(1) of Patrick, Ishak and
+    // Adnan's model is 0.0003/0.0595, so 600 mm needs 600 * 0.0003 / 0.0595 = 3.025 V.
+    QVERIFY2(window_->metricsPanel()->noticeText().contains("out of the plant's reach: holding 600 mm needs 3.03 V"),
+             qPrintable(window_->metricsPanel()->noticeText()));
+}
+
+void TstWorkbenchTrust::methodSwitchSaysWhichPlant() {
+    // Switching the method through the combo box says that the plant changes, and undo is one
+    // step back to the previous method.
+    QComboBox* method = window_->findChild<QComboBox*>(QString(), Qt::FindChildrenRecursively);
+    for (QComboBox* box : window_->findChildren<QComboBox*>())
+        if (box->accessibleName() == "Design method")
+            method = box;
+    QVERIFY(method && method->accessibleName() == "Design method");
+    const int steps = session_->undoStack()->count();
+    method->setCurrentIndex(1);
+    emit method->activated(1);
+    QCOMPARE(session_->session().axes[0].method, DesignMethod::PolePlacementZpetc);
+    QVERIFY2(window_->statusBar()->currentMessage().contains("Patrick, Ishak and Adnan"),
+             qPrintable(window_->statusBar()->currentMessage()));
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().axes[0].method, DesignMethod::GuilleminTruxal);
 }
 
 // ---- One specification ----------------------------------------------------------------------
+
+void TstWorkbenchTrust::firstViewSaysWhyTheSpecificationFails() {
+    // The default specification (Braga et al.'s: 0 % overshoot) fails every Guillemin-Truxal
+    // design; before, the first screen showed red crosses with no word of why.
+    const QString why = window_->metricsPanel()->adviceText();
+    QVERIFY2(why.contains("type 2"), qPrintable(why));
+    QVERIFY(why.contains("axis X") && why.contains("axis Y"));
+    QVERIFY(!session_->axisEvaluation(0).check.allPassed());
+    QPushButton* relax = window_->metricsPanel()->relaxButton();
+    QVERIFY(relax->isEnabled());
+    // Relax: the limits become what the design reaches (rounded up to 3 digits), one undo step,
+    // and then both axes pass, as the advice promised.
+    const int steps = session_->undoStack()->count();
+    const Specification before = session_->session().spec;
+    QTest::mouseClick(relax, Qt::LeftButton);
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    const Specification after = session_->session().spec;
+    XYT_COMPARE_NEAR(after.maxOvershootPct, roundUp3(std::max(session_->axisEvaluation(0).step.overshootPct,
+                                                               session_->axisEvaluation(1).step.overshootPct)),
+                     0.0, 0.0);
+    QVERIFY(after.maxOvershootPct > before.maxOvershootPct);
+    for (int axis = 0; axis < 2; ++axis)
+        QVERIFY2(session_->axisEvaluation(axis).check.allPassed(),
+                 qPrintable(window_->metricsPanel()->adviceText()));
+    QVERIFY(window_->metricsPanel()->adviceText().isEmpty());
+    QVERIFY(!relax->isEnabled());
+    session_->undoStack()->undo();
+    QVERIFY(session_->session().spec == before);
+    // A saturating implementation cannot be relaxed into passing: said, no button.
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc);
+    QVERIFY(window_->metricsPanel()->adviceText().contains("limit"));
+    QVERIFY(!relax->isEnabled());
+}
 
 void TstWorkbenchTrust::oneSpecificationForMetricsAndDesignSpace() {
     auto* space = window_->findChild<DesignSpaceView*>();
@@ -440,6 +589,40 @@ void TstWorkbenchTrust::dragUndoEntryNamesTheFinalValue() {
     QCOMPARE(session_->undoStack()->count(), 1);
     const QString text = session_->undoStack()->undoText();
     QVERIFY2(text.endsWith(QString::number(last)), qPrintable(text + " / " + QString::number(last)));
+}
+
+void TstWorkbenchTrust::sliderFieldsTakeWhatIsTyped() {
+    ParameterSlider* kp = window_->kpSlider();
+    QDoubleSpinBox* field = kp->spinBox();
+    // Before: "1e9" became 19 (the 'e' was dropped) and "1000000000" became 1000 (digits beyond
+    // the slider's maximum dropped), and both were applied.
+    test::typeInto(field, "1e9");
+    QCOMPARE(session_->session().axes[0].gt.kp, 1e9);
+    QVERIFY(kp->fieldError().isEmpty());
+    QVERIFY2(kp->exactText().contains("beyond the slider"), qPrintable(kp->exactText()));
+    QCOMPARE(kp->slider()->value(), kp->slider()->maximum());
+    test::typeInto(field, "2.5E1");
+    QCOMPARE(session_->session().axes[0].gt.kp, 25.0);
+    QVERIFY(!kp->exactText().contains("beyond"));
+    test::typeInto(field, "1000000000");
+    QCOMPARE(session_->session().axes[0].gt.kp, 1e9);
+    // Not a number, or beyond what the field takes: refused with the field's name, nothing
+    // applied.
+    session_->setKp(0, 30.0);
+    test::typeInto(field, "3x0");
+    QCOMPARE(session_->session().axes[0].gt.kp, 30.0);
+    QVERIFY2(kp->fieldError().startsWith("kp: '3x0' is not a number"), qPrintable(kp->fieldError()));
+    test::typeInto(field, "1e300");
+    QCOMPARE(session_->session().axes[0].gt.kp, 30.0);
+    QVERIFY2(kp->fieldError().contains("'1e300'"), qPrintable(kp->fieldError()));
+    // A value loaded from elsewhere (the design-space view's kp = 2111) is shown as it is.
+    session_->setKp(0, 2111.0);
+    QCOMPARE(field->value(), 2111.0);
+    QVERIFY(kp->fieldError().isEmpty());
+    QVERIFY2(kp->exactText().startsWith("2111, beyond the slider"), qPrintable(kp->exactText()));
+    // The tooltips read the parameter's name, not its mnemonic ("k&p").
+    QCOMPARE(kp->slider()->toolTip(), QStringLiteral("kp (logarithmic scale)"));
+    QCOMPARE(window_->omegaNSlider()->slider()->toolTip(), QStringLiteral("ωn (logarithmic scale)"));
 }
 
 // ---- Freezes --------------------------------------------------------------------------------

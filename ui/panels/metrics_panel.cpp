@@ -2,11 +2,15 @@
 #include "ui/panels/metrics_panel.h"
 
 #include "core/model/errors.h"
+#include "core/session/specification_advice.h"
 #include "ui/panels/number_field.h"
 
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPushButton>
+#include <QSet>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -106,6 +110,23 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustIgnored);
     table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
                            RowCount * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
+    // Whether the design meets the specification, why not (tooltip), and the limits it would
+    // meet (the default specification, Braga et al.'s, fails every design): on the
+    // specification's title line and beside its last field, where the panel has room at
+    // 1366x768.
+    advice_ = new QLabel(this);
+    advice_->setTextFormat(Qt::PlainText);
+    advice_->setAccessibleName(tr("Why the specification fails"));
+    relax_ = new QPushButton(tr("Relax the limits"), this);
+    relax_->setEnabled(false);
+    connect(relax_, &QPushButton::clicked, this, [this] {
+        if (relaxed_)
+            emit specificationEdited(*relaxed_);
+    });
+    // Fixed sizes: nothing here may ask the window for a new layout on a slider step.
+    advice_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    advice_->setFixedHeight(advice_->fontMetrics().height() + 2);
+    relax_->setFixedSize(relax_->sizeHint());
     layout->addWidget(table_);
     contour_ = new QLabel(this);
     contour_->setWordWrap(true);
@@ -141,7 +162,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     // Two limits a row (label, field, label, field): seven limits in four rows keep the table
     // above free of a scroll bar at 1366x768.
     auto* specTitle = new QLabel(tr("<b>Specification</b> (the limit column above)"));
-    layout->addWidget(specTitle);
+    auto* titleRow = new QHBoxLayout;
+    titleRow->addWidget(specTitle);
+    titleRow->addWidget(advice_, 1);
+    layout->addLayout(titleRow);
     auto* form = new QGridLayout;
     form->setHorizontalSpacing(6);
     form->setVerticalSpacing(3);
@@ -162,6 +186,7 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         form->addWidget(spec_[key], index / 2, (index % 2) * 2 + 1);
         ++index;
     }
+    form->addWidget(relax_, index / 2, (index % 2) * 2, 1, 2, Qt::AlignLeft);
     form->setColumnStretch(1, 1);
     form->setColumnStretch(3, 1);
     spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
@@ -243,11 +268,15 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
     const auto shown = [](double v) {
         return std::isinf(v) && v > 0 ? QStringLiteral("∞") : displayNumber(v);
     };
+    // The delay margin and Ms describe how far a stable loop is from instability; an unstable
+    // closed loop has neither (its |S| peak is not the gain of anything that exists), so they
+    // read "n/a" there, while the gain and phase margins still say how far the crossing is.
+    const bool robustnessDefined = ok && m.closedLoopStable;
     const QMap<int, QString> values = {
         {GainMargin, ok ? shown(m.gainMarginDb) : tr("—")},
         {PhaseMargin, ok ? shown(m.phaseMarginDeg) : tr("—")},
-        {DelayMargin, ok ? shown(m.delayMarginSeconds) : tr("—")},
-        {PeakSensitivity, ok ? shown(m.peakSensitivity) : tr("—")}};
+        {DelayMargin, robustnessDefined ? shown(m.delayMarginSeconds) : ok ? tr("n/a") : tr("—")},
+        {PeakSensitivity, robustnessDefined ? shown(m.peakSensitivity) : ok ? tr("n/a") : tr("—")}};
     const std::optional<SpecificationCheck>& check = marginChecks_[static_cast<std::size_t>(axis)];
     for (auto it = values.begin(); it != values.end(); ++it) {
         Cell cell{it.value()};
@@ -273,6 +302,35 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
 }
 
 QString MetricsPanel::contourText() const { return contour_->text(); }
+
+QString MetricsPanel::adviceText() const { return advice_->toolTip(); }
+
+void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& evaluation) {
+    const SpecificationAdvice advice = adviseSpecification(session, evaluation);
+    QStringList reasons;
+    for (const std::string& r : advice.reasons)
+        reasons << QString::fromStdString(r);
+    relaxed_ = advice.relaxed;
+    // One line whose size does not change with the figures, and nothing shown or hidden: a new
+    // size would make the window lay itself out again on every slider step. The reasons,
+    // numbers included, are in the tooltip.
+    const QString headline = reasons.isEmpty() ? tr("✓ both axes meet it")
+                                               : tr("✗ fails: hover for why");
+    if (advice_->text() != headline)
+        advice_->setText(headline);
+    const QString style = reasons.isEmpty() ? QStringLiteral("QLabel { color: #1b7f2a; }")
+                                            : QStringLiteral("QLabel { color: #8a1c1c; }");
+    if (advice_->styleSheet() != style) // a new style sheet re-polishes and lays out again
+        advice_->setStyleSheet(style);
+    advice_->setToolTip(reasons.join(QLatin1Char('\n')));
+    relax_->setEnabled(relaxed_.has_value());
+    QStringList changes;
+    for (const std::string& c : advice.changes)
+        changes << QString::fromStdString(c);
+    relax_->setToolTip(relaxed_ ? tr("Set the limits to what this design reaches: %1 (one undo step)").arg(changes.join(tr(", ")))
+                       : reasons.isEmpty() ? tr("The design meets the specification")
+                                           : tr("No limit makes this design pass (see why): change the design"));
+}
 
 void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList& notices) {
     const auto mm = [](double v) { return QString::number(v, 'f', 4); };
@@ -389,6 +447,31 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                         {Overshoot, a.check.overshoot}};
         if (a.check.settleApplies)
             judged[SettleAfterMove] = a.check.settle;
+        // Rows the design passes but its digital implementation fails show the implementation's
+        // figure: the verdict is the run that will really happen.
+        QSet<int> byImplementation;
+        if (a.ok && a.implementationCheck && a.digital) {
+            const SpecificationCheck& d = a.designCheck;
+            const SpecificationCheck& i = *a.implementationCheck;
+            const TrackingMetrics& dm = a.digital->metrics;
+            if (d.trackingError && !i.trackingError) {
+                byImplementation << MaxErrorPct;
+                values[MaxErrorPct] = displayNumber(dm.maxAbsErrorPct);
+            }
+            if (d.noSaturation && !i.noSaturation) {
+                byImplementation << MaxU << Saturated;
+                values[MaxU] = displayNumber(dm.maxAbsU);
+                values[Saturated] = dm.diverged ? tr("n/a") : displayNumber(dm.saturatedTimeSeconds);
+            }
+            if (d.settleApplies && d.settle && !i.settle && a.digital->moveSettle) {
+                const MoveSettleMetrics& ms = *a.digital->moveSettle;
+                byImplementation << SettleAfterMove;
+                values[SettleAfterMove] =
+                    ms.diverged            ? tr("n/a")
+                    : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
+                                           : tr("> %1").arg(displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
+            }
+        }
         for (int r = 0; r < RowCount; ++r) {
             if (isGroupRow(r) || isMarginRow(r))
                 continue;
@@ -397,7 +480,14 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                 const bool pass = judged[r];
                 cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
                 cell.color = pass ? kPass : kFail;
-                cell.toolTip = pass ? tr("meets the specification") : tr("fails the specification");
+                cell.toolTip = pass ? (a.implementationCheck ? tr("meets the specification, as designed and as implemented")
+                                                             : tr("meets the specification"))
+                                    : tr("fails the specification");
+                if (byImplementation.contains(r)) {
+                    cell.text += tr(" digital");
+                    cell.toolTip = tr("the design meets the specification here, its digital implementation "
+                                      "(Ts, quantization, ±umax, delay) does not: this is the implementation's figure");
+                }
             }
             if (!a.ok)
                 cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
@@ -434,6 +524,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         }
     }
     fitColumns();
+    showAdvice(session, evaluation);
     showContour(evaluation, notices);
     notices_->setText(notices.join(QLatin1Char('\n')));
     notices_->setVisible(!notices.isEmpty());

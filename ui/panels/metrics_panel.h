@@ -11,6 +11,7 @@
 #include <optional>
 
 class QLabel;
+class QPushButton;
 class QTableWidget;
 
 namespace xyt::ui {
@@ -40,6 +41,10 @@ public:
     /// The XY figures of a G-code program: contour error max and RMS, and for one full circle
     /// the ISO 230-4 G, F max, F min and H ("" for the presets).
     QString contourText() const;
+    /// Why the design fails the specification, one reason per line ("" when it passes).
+    QString adviceText() const;
+    /// Sets the specification to the limits the design reaches (shown when that can help).
+    QPushButton* relaxButton() const { return relax_; }
 
     /// Row order of the table: a group title row (spanning the columns) before each group.
     enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
@@ -75,7 +80,12 @@ private:
     static constexpr QRgb kDiffers = 0xffb26a00; ///< a digital figure that differs from the design's
     void setCell(int row, int column, const Cell& cell);
 
+    void showAdvice(const Session& session, const SessionEvaluation& evaluation);
+
     QTableWidget* table_;
+    QLabel* advice_;
+    QPushButton* relax_;
+    std::optional<Specification> relaxed_;
     QLabel* notices_;
     QLabel* contour_;
     QMap<QString, NumberField*> spec_;

@@ -73,7 +73,9 @@ void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margi
     for (auto it = c.points.rbegin(); it != c.points.rend(); ++it)
         mirror.push_back(std::conj(*it));
     setCurve(mirror_, mirror);
-    const bool msKnown = std::isfinite(margins.peakSensitivity) && margins.peakSensitivity > 0.0;
+    // Ms is a distance from -1 only for a stable closed loop; an unstable one has no Ms circle.
+    const bool msKnown = margins.closedLoopStable && std::isfinite(margins.peakSensitivity) &&
+                         margins.peakSensitivity > 0.0;
     setCurve(msCircle_, msKnown ? circle(-1.0, 1.0 / margins.peakSensitivity) : std::vector<std::complex<double>>{});
     const int z = c.closedLoopUnstablePoles;
     QString verdict = c.passesThroughMinusOne
@@ -86,7 +88,9 @@ void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margi
                             .arg(c.openLoopUnstablePoles)
                             .arg(z)
                             .arg(verdict)
-                            .arg(msKnown ? QString::number(margins.peakSensitivity, 'g', 4) : tr("∞")));
+                            .arg(msKnown                    ? QString::number(margins.peakSensitivity, 'g', 4)
+                                 : margins.closedLoopStable ? tr("∞")
+                                                            : tr("n/a, the closed loop is unstable")));
     criterion_->setTextColor(z == 0 && !c.passesThroughMinusOne ? palette().color(QPalette::WindowText)
                                                                  : colors::error);
     QStringList notes;

@@ -6,6 +6,8 @@
 #include "ui/plots/plot_tools.h"
 
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <numbers>
 
 namespace xyt::ui {
@@ -13,7 +15,7 @@ namespace xyt::ui {
 namespace {
 using Complex = std::complex<double>;
 const QColor kBoundary{0xc6, 0x28, 0x28};
-const QColor kShade{0xd6, 0x27, 0x28, 22};
+const QColor kShade{0xd6, 0x27, 0x28, 16}; // light: the locus stays readable through it
 const QColor kOmega{0x94, 0x67, 0xbd};
 const QColor kAllowed{0x2c, 0xa0, 0x2c, 90};
 
@@ -47,6 +49,30 @@ std::vector<Complex> circle(double r, int n = 181) {
         out.push_back(std::polar(r, 2.0 * std::numbers::pi * i / n));
     return out;
 }
+struct DominantPair {
+    Complex pole;      ///< in the plane drawn (upper half)
+    double omegaN = 0; ///< |s| of its continuous equivalent, rad/s
+    double zeta = 0;   ///< -Re s / |s|
+};
+
+/// The complex pair whose continuous equivalent (s, or ln z / Ts) decays slowest; none when
+/// the loop has no complex pair.
+std::optional<DominantPair> dominantPair(const std::vector<Complex>& poles, double ts) {
+    std::optional<DominantPair> best;
+    double slowest = std::numeric_limits<double>::infinity();
+    for (const Complex& p : poles) {
+        if (!(std::isfinite(p.real()) && std::isfinite(p.imag())) || p.imag() <= 1e-9 * std::abs(p))
+            continue;
+        if (ts > 0.0 && std::abs(p) == 0.0)
+            continue;
+        const Complex s = ts > 0.0 ? std::log(p) / ts : p;
+        if (-s.real() < slowest) {
+            slowest = -s.real();
+            best = DominantPair{p, std::abs(s), -s.real() / std::abs(s)};
+        }
+    }
+    return best;
+}
 } // namespace
 
 RequirementOverlay::RequirementOverlay(QCustomPlot* plot) : plot_(plot) {
@@ -62,6 +88,10 @@ RequirementOverlay::RequirementOverlay(QCustomPlot* plot) : plot_(plot) {
     violating_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(colors::error, 2.0), Qt::NoBrush, 18));
     violating_->setName(QObject::tr("breaks spec"));
     violating_->removeFromLegend();
+    dominant_ = plot->addGraph();
+    dominant_->setLineStyle(QCPGraph::lsNone);
+    dominant_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(kOmega, 1.6), Qt::NoBrush, 14));
+    dominant_->removeFromLegend();
 }
 
 void RequirementOverlay::clear() {
@@ -71,6 +101,8 @@ void RequirementOverlay::clear() {
     }
     violating_->data()->clear();
     violating_->removeFromLegend();
+    dominant_->data()->clear();
+    dominant_->removeFromLegend();
 }
 
 void RequirementOverlay::show(const LocusRequirements& req, double ts, double extent,
@@ -110,7 +142,10 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
         shade.push_back(Complex(0.0));
     }
     setPoints(damping_, boundary);
-    setPoints(dampingShade_, shade);
+    // zeta = 1 forbids all but a line: shading the whole plane would hide the locus and say
+    // nothing the green strip and the ringed poles do not, so only a partial wedge is shaded.
+    if (zeta < 1.0)
+        setPoints(dampingShade_, shade);
     // zeta = 1: the allowed set is a line, drawn as a wide translucent green strip.
     damping_->setPen(zeta >= 1.0 ? QPen(kAllowed, 4.0) : QPen(kBoundary, 1.6, Qt::DashLine));
     damping_->setName(zeta >= 1.0 ? QObject::tr("ζ = 1 (Mp 0 %)")
@@ -136,11 +171,17 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
         settling_->addToLegend();
     }
 
-    // The design's omega_n (a Guillemin-Truxal design parameter, not a requirement).
+    // The reference model's omega_n (a Guillemin-Truxal design parameter, not a requirement,
+    // and not the closed-loop poles' own omega_n: marked below).
     if (!discrete && std::isfinite(req.designOmegaNRadPerSec) && req.designOmegaNRadPerSec > 0.0) {
         setPoints(omega_, sPlaneDampingGrid({}, {req.designOmegaNRadPerSec}, far).frequencyLines.front().points);
-        omega_->setName(QObject::tr("design ωn %1").arg(num(req.designOmegaNRadPerSec)));
+        omega_->setName(QObject::tr("reference model ωn %1").arg(num(req.designOmegaNRadPerSec)));
         omega_->addToLegend();
+    }
+    if (const auto pair = dominantPair(closedLoopPoles, ts)) {
+        setComplexPoints(dominant_, {pair->pole, std::conj(pair->pole)});
+        dominant_->setName(QObject::tr("dominant poles: ωn %1 rad/s, ζ %2").arg(num(pair->omegaN), num(pair->zeta, 2)));
+        dominant_->addToLegend();
     }
 
     std::vector<Complex> bad;

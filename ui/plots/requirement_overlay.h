@@ -24,8 +24,10 @@ struct LocusRequirements {
  * The specification drawn on a root locus as Control System Designer does (issue 17): the zeta
  * wedge of the overshoot limit, the settling line sigma = -4/ts (for a discrete loop their
  * images under z = exp(s Ts): the zeta spiral and the circle |z| = exp(-4 Ts/ts)), the
- * forbidden side of each shaded lightly, the design's omega_n circle (dashed, not shaded: not a
- * requirement), and a ring around every closed-loop pole in a forbidden region. The positions
+ * forbidden side of each shaded lightly, the reference model's omega_n circle (dashed, not
+ * shaded: a design parameter, not a requirement, and not where the closed-loop poles sit), the
+ * dominant closed-loop pair with its own omega_n and zeta, and a ring around every closed-loop
+ * pole in a forbidden region. The positions
  * come from core/analysis (pole_requirements, damping_grid). Owns its plottables in @p plot.
  */
 class RequirementOverlay {
@@ -42,6 +44,9 @@ public:
     QCPCurve* settlingBoundary() const { return settling_; }
     QCPCurve* omegaCircle() const { return omega_; }
     QCPGraph* violatingPoles() const { return violating_; }
+    /// The dominant closed-loop pole pair (the complex pair decaying slowest), its own omega_n
+    /// and zeta in the legend: the reference model's omega_n is not where the poles sit.
+    QCPGraph* dominantPoles() const { return dominant_; }
 
 private:
     QCustomPlot* plot_;
@@ -51,6 +56,7 @@ private:
     QCPCurve* dampingShade_;
     QCPCurve* settlingShade_;
     QCPGraph* violating_;
+    QCPGraph* dominant_;
 };
 
 } // namespace xyt::ui

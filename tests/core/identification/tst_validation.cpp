@@ -289,6 +289,18 @@ private slots:
         QCOMPARE(r.zeros.size(), std::size_t{2});
         QVERIFY(r.nonMinimumPhase);
         QVERIFY(!r.stable); // the integrator: a pole at z = 1
+        QVERIFY(r.integrating); // ... and nothing else outside: integrating, not unstable
+        // A pole just outside beside the integrator is unstable (1 + 1e-3 is 1000 times the
+        // tolerance away from 1), and so is a pole at -1.
+        PolynomialModel m;
+        m.b = {0.0, 1.0};
+        m.tsSeconds = 0.01;
+        m.a = {1.0, -2.001, 1.001}; // (1 - z^-1)(1 - 1.001 z^-1)
+        QVERIFY(!modelRoots(m).stable && !modelRoots(m).integrating);
+        m.a = {1.0, -1.5, 0.5}; // (1 - z^-1)(1 - 0.5 z^-1)
+        QVERIFY(!modelRoots(m).stable && modelRoots(m).integrating);
+        m.a = {1.0, 0.0, -1.0}; // poles at +1 and -1
+        QVERIFY(!modelRoots(m).integrating);
         const CsvTable zoh = readCsv(QStringLiteral("gt_zoh.csv"));
         std::size_t row = 0;
         while (row < zoh.rows.size() &&

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/specification_advice.h"
+
+#include "core/model/number_format.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+namespace xyt {
+
+namespace {
+
+std::string axisName(const Session& session, std::size_t i) {
+    std::string id = session.axes[i].id;
+    for (char& c : id)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return "axis " + id;
+}
+
+/// The slowest closed-loop decay of a Guillemin-Truxal axis (rad/s), NaN otherwise.
+double slowestPole(const AxisEvaluation& a) {
+    if (!a.gt || a.gt->closedLoopPoles.empty())
+        return std::numeric_limits<double>::quiet_NaN();
+    double slowest = std::numeric_limits<double>::infinity();
+    for (const auto& p : a.gt->closedLoopPoles)
+        slowest = std::min(slowest, -p.real());
+    return slowest;
+}
+
+/// The settle after the move of an axis, the worse of design and implementation (s after tf);
+/// unset when either did not settle in the run.
+std::optional<double> settleSeconds(const AxisEvaluation& a) {
+    std::optional<double> worst;
+    for (const std::optional<MoveSettleMetrics>* m : {&a.moveSettle, a.digital ? &a.digital->moveSettle : nullptr}) {
+        if (!m || !*m)
+            continue;
+        if ((*m)->diverged || !(*m)->settleTimeSeconds)
+            return std::nullopt;
+        worst = std::max(worst.value_or(0.0), *(*m)->settleTimeSeconds);
+    }
+    return worst;
+}
+
+/// The largest |e| from @p fromSeconds to the end of the axis' runs (design and digital);
+/// unset when a run does not reach that time or has a non-finite error there.
+std::optional<double> errorBeyond(const AxisEvaluation& a, double fromSeconds) {
+    double largest = 0.0;
+    const SimulationResult* runs[] = {&a.run, a.digital ? &a.digital->run.result : nullptr};
+    for (const SimulationResult* r : runs) {
+        if (!r)
+            continue;
+        if (r->t.empty() || r->t.back() <= fromSeconds)
+            return std::nullopt;
+        for (std::size_t k = 0; k < r->t.size() && k < r->e.size(); ++k)
+            if (r->t[k] >= fromSeconds) {
+                if (!std::isfinite(r->e[k]))
+                    return std::nullopt;
+                largest = std::max(largest, std::abs(r->e[k]));
+            }
+    }
+    return largest;
+}
+
+} // namespace
+
+SpecificationAdvice adviseSpecification(const Session& session, const SessionEvaluation& evaluation) {
+    SpecificationAdvice out;
+    Specification relaxed = session.spec;
+    bool possible = true, anyFailure = false;
+    double overshoot = 0, settling = 0, errorPct = 0, settle = 0;
+    double phase = std::numeric_limits<double>::infinity(), gain = std::numeric_limits<double>::infinity();
+    bool raiseOvershoot = false, raiseSettling = false, raiseError = false, raiseSettle = false,
+         lowerPhase = false, lowerGain = false, widenWindow = false;
+    double window = 0.0;
+    const Specification& spec = session.spec;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const AxisEvaluation& a = evaluation.axes[i];
+        const std::string name = axisName(session, i);
+        if (!a.ok) {
+            possible = false;
+            anyFailure = true;
+            out.reasons.push_back(name + " has no design (" + a.errorField + ": " + a.error + ")");
+            continue;
+        }
+        const SpecificationCheck& c = a.check;
+        if (c.allPassed())
+            continue;
+        anyFailure = true;
+        if (!c.stable) {
+            possible = false;
+            out.reasons.push_back(name + ": the closed loop is unstable; no limit makes it pass");
+            continue;
+        }
+        if (!c.overshoot) {
+            raiseOvershoot = true;
+            overshoot = std::max(overshoot, a.step.overshootPct);
+            std::string why = name + ": the step overshoots " + formatNumber(a.step.overshootPct, 3) +
+                              " % (limit " + formatNumber(spec.maxOvershootPct) + " %)";
+            if (a.gt && spec.maxOvershootPct == 0.0)
+                why += ": every Guillemin-Truxal design overshoots, its reference model is type 2 "
+                       "(the step error integrates to zero), so 0 % cannot be met";
+            out.reasons.push_back(why);
+        }
+        if (!c.settlingTime) {
+            raiseSettling = true;
+            settling = std::max(settling, a.step.settlingTimeSeconds);
+            out.reasons.push_back(name + ": the step settles in " + formatNumber(a.step.settlingTimeSeconds, 3) +
+                                  " s (limit " + formatNumber(spec.maxSettlingTimeSeconds) + " s)");
+        }
+        if (!c.noSaturation) {
+            possible = false;
+            out.reasons.push_back(name + ": the command reaches the ±" + formatNumber(session.umaxVolts) +
+                                  " V limit; a looser limit elsewhere does not change that");
+        }
+        if (!c.trackingError) {
+            raiseError = true;
+            const double worst = std::max(a.metrics.maxAbsErrorPct,
+                                          a.digital ? a.digital->metrics.maxAbsErrorPct : 0.0);
+            if (!std::isfinite(worst))
+                possible = false;
+            errorPct = std::max(errorPct, worst);
+            out.reasons.push_back(name + ": the tracking error reaches " + formatNumber(worst, 3) +
+                                  " % of the travel (limit " + formatNumber(spec.maxErrorPct) + " %)");
+        }
+        if (c.settleApplies && !c.settle) {
+            std::optional<double> t = settleSeconds(a);
+            const bool estimated = !t;
+            if (!t && std::isfinite(evaluation.duration.settleEstimateSeconds) &&
+                evaluation.duration.settleEstimateSeconds > 0.0)
+                t = evaluation.duration.settleEstimateSeconds;
+            std::string why = name + ": it settles into ±" + formatNumber(spec.inPositionWindowMm) + " mm ";
+            why += t ? (estimated ? "only about " : "only ") + formatNumber(*t, 3) + " s after the move" +
+                           (estimated ? " (estimated: not within the run)" : "")
+                     : std::string("not within the run");
+            why += " (limit " + formatNumber(spec.maxSettleTimeSeconds) + " s)";
+            const double slow = slowestPole(a);
+            if (std::isfinite(slow) && slow > 0.0)
+                why += ": its slowest closed-loop pole, at -" + formatNumber(slow, 3) +
+                       " rad/s beside the PI zero, decays that slowly";
+            out.reasons.push_back(why);
+            if (!estimated) {
+                raiseSettle = true;
+                settle = std::max(settle, *t);
+            } else if (const auto w = errorBeyond(a, session.trajectory.tfSeconds + spec.maxSettleTimeSeconds)) {
+                // Not settled within the run: the settle limit cannot be checked, but the window
+                // the error stays in from the limit on can (the run reaches past it).
+                widenWindow = true;
+                window = std::max(window, *w);
+            } else {
+                possible = false;
+            }
+        }
+        if (c.marginsApply && a.margins) {
+            if (!c.phaseMargin) {
+                lowerPhase = true;
+                phase = std::min(phase, a.margins->phaseMarginDeg);
+                out.reasons.push_back(name + ": phase margin " + formatNumber(a.margins->phaseMarginDeg, 3) +
+                                      " deg (minimum " + formatNumber(spec.minPhaseMarginDeg) + ")");
+            }
+            if (!c.gainMargin) {
+                lowerGain = true;
+                gain = std::min(gain, a.margins->gainMarginDb);
+                out.reasons.push_back(name + ": gain margin " + formatNumber(a.margins->gainMarginDb, 3) +
+                                      " dB (minimum " + formatNumber(spec.minGainMarginDb) + ")");
+            }
+        }
+    }
+    if (!anyFailure || !possible)
+        return out;
+    if ((lowerPhase && !(phase > 0.0)) || (lowerGain && !(gain > 0.0)))
+        return out; // a minimum below 0 is no requirement to offer
+    if (raiseOvershoot) {
+        relaxed.maxOvershootPct = roundUp3(overshoot);
+        out.changes.push_back("max overshoot " + formatNumber(relaxed.maxOvershootPct) + " %");
+    }
+    if (raiseSettling) {
+        relaxed.maxSettlingTimeSeconds = roundUp3(settling);
+        out.changes.push_back("max settling time " + formatNumber(relaxed.maxSettlingTimeSeconds) + " s");
+    }
+    if (raiseError) {
+        relaxed.maxErrorPct = roundUp3(errorPct);
+        out.changes.push_back("max error " + formatNumber(relaxed.maxErrorPct) + " %");
+    }
+    if (raiseSettle) {
+        relaxed.maxSettleTimeSeconds = roundUp3(settle);
+        out.changes.push_back("max settle time " + formatNumber(relaxed.maxSettleTimeSeconds) + " s");
+    }
+    if (widenWindow) {
+        if (!(window > 0.0))
+            return out;
+        relaxed.inPositionWindowMm = roundUp3(window);
+        out.changes.push_back("in-position window " + formatNumber(relaxed.inPositionWindowMm) + " mm");
+    }
+    if (lowerPhase) {
+        relaxed.minPhaseMarginDeg = roundDown3(phase);
+        out.changes.push_back("min phase margin " + formatNumber(relaxed.minPhaseMarginDeg) + " deg");
+    }
+    if (lowerGain) {
+        relaxed.minGainMarginDb = roundDown3(gain);
+        out.changes.push_back("min gain margin " + formatNumber(relaxed.minGainMarginDb) + " dB");
+    }
+    out.relaxed = relaxed;
+    return out;
+}
+
+} // namespace xyt
