@@ -174,7 +174,8 @@ QJsonObject frequencyJson(const ZpetcFrequencyResponse& f) {
             {"gain_without_ff", numbers(f.gainWithoutFf)},
             {"gain_with_ff", numbers(f.gainWithFf)},
             {"phase_without_ff_rad", numbers(f.phaseWithoutFfRad)},
-            {"phase_with_ff_rad", numbers(f.phaseWithFfRad)}};
+            {"phase_with_ff_rad", numbers(f.phaseWithFfRad)},
+            {"omitted_omega", numbers(f.omittedOmegaRadPerSec)}};
 }
 
 QString startName(StartCondition s) {

@@ -63,7 +63,6 @@ ZpetcFrequencyResponse zpetcFrequencyResponse(const PolePlacementDesign& loop,
                                               const ZpetcDesign& zpetc,
                                               const std::vector<double>& omegaRadPerSec) {
     ZpetcFrequencyResponse out;
-    out.omegaRadPerSec = omegaRadPerSec;
     for (const double w : omegaRadPerSec) {
         requireFinite(w, "omega");
         if (w < 0.0)
@@ -74,6 +73,15 @@ ZpetcFrequencyResponse zpetcFrequencyResponse(const PolePlacementDesign& loop,
         const std::complex<double> preview = std::polar(1.0, theta * zpetc.previewSteps);
         const std::complex<double> withFf =
             closed * preview * zpetc.feedforwardNum(q) / zpetc.feedforwardDen(q);
+        // A pole of the loop or of the feedforward on the unit circle at this frequency (or a
+        // product beyond double range): no finite response exists there, so the frequency is
+        // left out rather than given as NaN.
+        if (!std::isfinite(closed.real()) || !std::isfinite(closed.imag()) ||
+            !std::isfinite(withFf.real()) || !std::isfinite(withFf.imag())) {
+            out.omittedOmegaRadPerSec.push_back(w);
+            continue;
+        }
+        out.omegaRadPerSec.push_back(w);
         out.gainWithoutFf.push_back(std::abs(closed));
         out.gainWithFf.push_back(std::abs(withFf));
         out.phaseWithoutFfRad.push_back(std::arg(closed));

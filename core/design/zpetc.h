@@ -65,6 +65,9 @@ struct ZpetcFrequencyResponse {
     std::vector<double> gainWithFf;
     std::vector<double> phaseWithoutFfRad; ///< arg H, in (-pi, pi]
     std::vector<double> phaseWithFfRad;    ///< ~0 at every frequency (zero phase error)
+    /// Frequencies asked for but left out of the vectors above: a pole of the loop or of the
+    /// feedforward lies on the unit circle there, so the response is not finite.
+    std::vector<double> omittedOmegaRadPerSec;
 };
 
 /// @throws InvalidInput "omega" for a negative or non-finite frequency.
