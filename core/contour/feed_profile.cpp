@@ -121,7 +121,7 @@ std::string secondsText(double seconds) {
 /// (see planFeedProfile), less 1e-9 of @p seconds for the round-off of a lower bound, so that
 /// no profile that fits is refused by its bound.
 bool fitsSamples(double seconds, const FeedProfileOptions& o) {
-    const double steps = std::ceil(seconds * (1.0 - 1e-9) / o.dtSeconds - 1e-9);
+    const double steps = std::max(1.0, std::ceil(seconds * (1.0 - 1e-9) / o.dtSeconds - 1e-9));
     return steps + 1.0 <= static_cast<double>(o.maxSamples);
 }
 
@@ -250,8 +250,9 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
     out.totalTimeSeconds = writer.time();
 
     // Samples t_k = k dt, k = 0 .. ceil(T/dt) (1e-9 of a step forgives a T that is a whole
-    // number of steps but for rounding).
-    const double steps = std::ceil(out.totalTimeSeconds / options.dtSeconds - 1e-9);
+    // number of steps but for rounding), and at least one step: a run shorter than 1e-9 dt
+    // still ends on a sample (at dt, holding the end of the path).
+    const double steps = std::max(1.0, std::ceil(out.totalTimeSeconds / options.dtSeconds - 1e-9));
     if (!(steps + 1.0 <= static_cast<double>(options.maxSamples)))
         throw InvalidInput("dt", "the profile lasts " + formatNumber(out.totalTimeSeconds) + " s, " +
                                      formatNumber(steps + 1.0) + " samples at dt " +

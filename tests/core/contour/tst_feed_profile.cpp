@@ -100,6 +100,7 @@ private slots:
     void eachOptionsTimeBoundIsTight();
     void tinyPeakSpeedsArePlanned();
     void unsampledPlanKeepsTheRefusals();
+    void runShorterThanAStepEndsOnASample();
 };
 
 void TstFeedProfile::trapezoidClosedForm_data() {
@@ -417,6 +418,26 @@ void TstFeedProfile::unsampledPlanKeepsTheRefusals() {
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }), QStringLiteral("<no exception>"));
     // A path without segments is refused, not read past its end.
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(xyt::Path(), {}, o); }), QStringLiteral("path"));
+}
+
+void TstFeedProfile::runShorterThanAStepEndsOnASample() {
+    // A 1 mm move at 100 mm/s and 1e6 mm/s^2 takes 1/100 + 100/1e6 = 0.0101 s (trapezoid closed
+    // form); at dt = 1e9 s the run is 1e-11 of a step, less than the 1e-9 of a step forgiven to
+    // a whole number of steps, which once gave a single sample at t = 0 and s = 0. The samples
+    // are t = 0 and t = dt, the second holding the end of the path at rest.
+    FeedProfileOptions o = options(1e6, 0.0, 1e9);
+    const FeedProfile p = straightMove(1.0, 100.0, o);
+    XYT_COMPARE_NEAR(p.totalTimeSeconds, 0.0101, 1e-12, 0.0);
+    QCOMPARE(p.t.size(), std::size_t(2));
+    QCOMPARE(p.t.back(), 1e9);
+    XYT_COMPARE_NEAR(p.s.back(), 1.0, 1e-12, 0.0);
+    QCOMPARE(p.v.back(), 0.0);
+    // Two samples need a bound of two: one is refused, with or without the samples, by the
+    // first bound checked (the feed alone needs 0.01 s, one step).
+    o.maxSamples = 1;
+    QCOMPARE(xyt::test::invalidInputField([&] { straightMove(1.0, 100.0, o); }), QStringLiteral("feed"));
+    o.withSamples = false;
+    QCOMPARE(xyt::test::invalidInputField([&] { straightMove(1.0, 100.0, o); }), QStringLiteral("feed"));
 }
 
 QTEST_APPLESS_MAIN(TstFeedProfile)
