@@ -98,8 +98,12 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     sweptParameter_->setAccessibleName(tr("Swept parameter"));
     upperTabs_->setCornerWidget(sweptParameter_, Qt::TopRightCorner);
     connect(sweptParameter_, &QComboBox::currentIndexChanged, this, &MainWindow::refresh);
-    lowerTabs_->addTab(timePlot_, tr("&Time response"));
-    lowerTabs_->addTab(stepPlot_, tr("&Step response"));
+    // Short tab names: all five tabs fit beside each other at 1366x768 (with the longer
+    // "Time response" and "Step response", Robustness hid behind the scroll arrows).
+    lowerTabs_->addTab(timePlot_, tr("&Time"));
+    lowerTabs_->setTabToolTip(0, tr("Time response: the trajectory, the tracking error and the control signal"));
+    lowerTabs_->addTab(stepPlot_, tr("&Step"));
+    lowerTabs_->setTabToolTip(1, tr("Step response of each axis against the specification's envelope"));
     lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
     magnification_ = new QDoubleSpinBox(this);
     magnification_->setRange(1.0, 10000.0);

@@ -30,6 +30,10 @@
 #include <QJsonObject>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QLabel>
+#include <QWheelEvent>
+#include <QToolButton>
+#include <QTabBar>
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
@@ -61,6 +65,8 @@ private slots:
     void hoverReadoutEndsWithTheHover();
     void viewRefitsWhenAPoleLeavesIt();
     void userZoomIsKeptWhileThePolesStayInView();
+    void zoomIsKeptUntilTheViewIsReset();
+    void everyLowerTabIsInViewAt1366x768();
     void snapshotOverlayInEveryPanelWithLegend();
     void plotsEqualTheCoreAfterEveryKindOfChange();
     // Silent failures
@@ -342,6 +348,60 @@ void TstWorkbenchTrust::userZoomIsKeptWhileThePolesStayInView() {
     QCOMPARE(pz->xAxis->range(), wide);
 }
 
+void TstWorkbenchTrust::zoomIsKeptUntilTheViewIsReset() {
+    // Before, a root locus zoomed on the dominant poles re-fitted on the next slider step (the
+    // plant's far poles had left the view), and the time plots on every step.
+    RootLocusPlot* rl = window_->rootLocusPlot();
+    TimeResponsePlot* time = window_->timePlot();
+    window_->upperTabs()->setCurrentWidget(rl);
+    window_->lowerTabs()->setCurrentWidget(time);
+    QTest::qWait(20);
+    for (QCustomPlot* plot : {static_cast<QCustomPlot*>(rl), static_cast<QCustomPlot*>(time)}) {
+        plot->replot(QCustomPlot::rpImmediateRefresh);
+        const QPointF at = plot->axisRect()->rect().center();
+        QWheelEvent wheel(at, plot->mapToGlobal(at), QPoint(), QPoint(0, 120 * 20), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(plot, &wheel);
+    }
+    QVERIFY(rl->viewHeld() && time->viewHeld());
+    const QCPRange rlX = rl->xAxis->range(), rlY = rl->yAxis->range();
+    const QCPRange timeX = time->axisRect()->axis(QCPAxis::atBottom)->range();
+    bool poleOutside = false; // the zoom leaves some pole out: the case that used to re-fit
+    for (const auto& p : session_->rootLocus(0).poles)
+        poleOutside = poleOutside || !rlX.contains(p.real());
+    QVERIFY(poleOutside);
+    window_->kpSlider()->spinBox()->setValue(36.0);
+    window_->omegaNSlider()->spinBox()->setValue(2.5);
+    QCOMPARE(rl->xAxis->range(), rlX);
+    QCOMPARE(rl->yAxis->range(), rlY);
+    QCOMPARE(time->axisRect()->axis(QCPAxis::atBottom)->range(), timeX);
+    // View > Reset plot views: the automatic fit takes over (every pole in view, the whole run).
+    QAction* reset = nullptr;
+    for (QAction* a : window_->findChildren<QAction*>())
+        if (a->text().remove('&') == "Reset plot views")
+            reset = a;
+    QVERIFY(reset);
+    reset->trigger();
+    QVERIFY(!rl->viewHeld() && !time->viewHeld());
+    for (const auto& p : session_->rootLocus(0).poles)
+        QVERIFY(rl->xAxis->range().contains(p.real()));
+    window_->kpSlider()->spinBox()->setValue(40.0);
+    const std::vector<double>& t = session_->axisEvaluation(0).run.t;
+    QCOMPARE(time->axisRect()->axis(QCPAxis::atBottom)->range(), QCPRange(t.front(), t.back()));
+}
+
+void TstWorkbenchTrust::everyLowerTabIsInViewAt1366x768() {
+    // Before, "Robustness" hid behind the tab bar's scroll arrows at 1366x768.
+    QTabBar* bar = window_->lowerTabs()->tabBar();
+    QTest::qWait(20);
+    for (int i = 0; i < bar->count(); ++i)
+        QVERIFY2(bar->rect().contains(bar->tabRect(i)),
+                 qPrintable(QString("%1 at %2..%3 of %4 px").arg(bar->tabText(i)).arg(bar->tabRect(i).left())
+                                .arg(bar->tabRect(i).right()).arg(bar->width())));
+    for (const QToolButton* arrow : bar->findChildren<QToolButton*>())
+        QVERIFY(!arrow->isVisible());
+}
+
 void TstWorkbenchTrust::snapshotOverlayInEveryPanelWithLegend() {
     window_->storeSnapshot("paper");
     session_->setKp(0, 80.0);
@@ -505,6 +565,10 @@ void TstWorkbenchTrust::firstViewSaysWhyTheSpecificationFails() {
     QVERIFY2(why.contains("type 2"), qPrintable(why));
     QVERIFY(why.contains("axis X") && why.contains("axis Y"));
     QVERIFY(!session_->axisEvaluation(0).check.allPassed());
+    // The verdict is read whole at 1366x768 (a longer title beside it cut it to "hover for wh").
+    QLabel* verdict = window_->metricsPanel()->verdictLabel();
+    QVERIFY2(verdict->fontMetrics().horizontalAdvance(verdict->text()) <= verdict->contentsRect().width(),
+             qPrintable(QString("%1 px for '%2'").arg(verdict->contentsRect().width()).arg(verdict->text())));
     QPushButton* relax = window_->metricsPanel()->relaxButton();
     QVERIFY(relax->isEnabled());
     // Relax: the limits become what the design reaches (rounded up to 3 digits), one undo step,

@@ -161,7 +161,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
                                                 nonNegative("min gain margin", 1e308, "must be >= 0 dB"), this));
     // Two limits a row (label, field, label, field): seven limits in four rows keep the table
     // above free of a scroll bar at 1366x768.
-    auto* specTitle = new QLabel(tr("<b>Specification</b> (the limit column above)"));
+    // The title leaves the verdict beside it the panel's width at 1366x768 (a longer title
+    // cut the verdict to "hover for wh").
+    auto* specTitle = new QLabel(tr("<b>Specification</b>"));
+    specTitle->setToolTip(tr("The limits of the spec column above: each figure is judged against them"));
     auto* titleRow = new QHBoxLayout;
     titleRow->addWidget(specTitle);
     titleRow->addWidget(advice_, 1);

@@ -43,6 +43,8 @@ public:
     QString contourText() const;
     /// Why the design fails the specification, one reason per line ("" when it passes).
     QString adviceText() const;
+    /// The one-line verdict beside the specification's title (adviceText is its tooltip).
+    QLabel* verdictLabel() const { return advice_; }
     /// Sets the specification to the limits the design reaches (shown when that can help).
     QPushButton* relaxButton() const { return relax_; }
 

@@ -222,12 +222,14 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     }
 
     // The view: the grid's frequencies, and magnitudes clipped to a readable band (an
-    // integrator's +200 dB at low frequency would flatten everything else). Fitted on the
-    // first analysis and on a change of plane or axis (the title); the user's zoom is kept
-    // while the sliders move.
+    // integrator's +200 dB at low frequency would flatten everything else). The view follows
+    // the curves as the design changes, unless the user zoomed or panned it (kept until it
+    // is reset, or the plane or axis changes).
     if (!w.empty()) {
         const QCPRange span(w.front(), w.back());
-        if (!ranged_ || openLoop_.tsSeconds != lastTs_ || title != lastTitle_) {
+        if (openLoop_.tsSeconds != lastTs_ || title != lastTitle_)
+            releaseView();
+        if (!viewHeld()) {
             lastTs_ = openLoop_.tsSeconds;
             lastTitle_ = title;
             magRect_->axis(QCPAxis::atBottom)->setRange(span);
@@ -249,7 +251,6 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
             magRect_->axis(QCPAxis::atLeft)->setRange(lo - pad, hi + pad);
             const double ppad = 0.06 * std::max(phi - plo, 45.0);
             phaseRect_->axis(QCPAxis::atLeft)->setRange(plo - ppad, phi + ppad);
-            ranged_ = true;
         }
     }
     // The margins where they are read: the gain margin as the gap from |L| to 0 dB at the phase

@@ -73,7 +73,6 @@ private:
     std::unique_ptr<PlotNotice> notice_;
     FrequencyResponse openLoop_;
     bool hasResult_ = false;
-    bool ranged_ = false;
     double lastTs_ = -1.0;
     QString lastTitle_;
 };

@@ -123,10 +123,13 @@ void ContourPlot::showSession(const Session& session, const SessionEvaluation& e
     notices_ = notices;
     hasData_ = true;
     redraw();
-    if (corner_ >= 0 && corner_ < cornerCount())
-        zoomToCorner(corner_);
-    else
-        fitAll();
+    // The view follows the run unless the user zoomed or panned it (kept until it is reset).
+    if (!viewHeld()) {
+        if (corner_ >= 0 && corner_ < cornerCount())
+            zoomToCorner(corner_);
+        else
+            fitAll();
+    }
     replot(QCustomPlot::rpQueuedReplot);
 }
 
@@ -307,6 +310,7 @@ bool ContourPlot::zoomToCorner(int index) {
 }
 
 void ContourPlot::fitAll() {
+    releaseView();
     const bool changed = corner_ != -1;
     corner_ = -1;
     if (changed)
@@ -317,12 +321,14 @@ void ContourPlot::fitAll() {
 }
 
 void ContourPlot::fitEqualScale() {
-    // Fit the commanded and traced paths with one scale (mm per pixel) on both axes, so a
-    // circle looks round; the polar view fits its magnified runs too.
+    // Fit everything drawn with one scale (mm per pixel) on both axes, so a circle looks round:
+    // the commanded and traced paths, the magnified error (which leaves the path by
+    // magnification times the error), and in the polar view both runs and the F and G circles.
     QCPRange xr, yr;
-    const bool found = curvesBoundingBox(polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_}
-                                                 : std::vector<QCPCurve*>{commanded_, traced_},
-                                         xr, yr);
+    const bool found = curvesBoundingBox(
+        polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_, fMax_, fMin_, gInner_, gOuter_}
+                : std::vector<QCPCurve*>{commanded_, traced_, magnified_},
+        xr, yr);
     if (found)
         showBox(xr.lower, xr.upper, yr.lower, yr.upper);
 }

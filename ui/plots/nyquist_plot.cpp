@@ -106,7 +106,9 @@ void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margi
     for (const auto& p : c.points)
         if (std::abs(p) <= 4.0)
             framed.push_back(p), framed.push_back(std::conj(p));
-    if (!ranged_ || c.tsSeconds != lastTs_ || anyOutsideView(this, {{-1.0, 0.0}})) {
+    if (c.tsSeconds != lastTs_)
+        releaseView();
+    if (!ranged_ || c.tsSeconds != lastTs_ || (!viewHeld() && anyOutsideView(this, {{-1.0, 0.0}}))) {
         setView(this, fittedBox({}, framed));
         ranged_ = true;
         lastTs_ = c.tsSeconds;

@@ -140,7 +140,7 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
     PlaneBox box = fittedBox({}, framed);
     const double span = std::max(box.reMax - box.reMin, box.imMax - box.imMin);
     box.reMax = std::max(box.reMax, 0.2 * span); // the right half-plane is always in view
-    if (!ranged_ || anyOutsideView(this, framed)) {
+    if (!ranged_ || (!viewHeld() && anyOutsideView(this, framed))) {
         setView(this, box);
         ranged_ = true;
     }

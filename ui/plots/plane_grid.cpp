@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/plane_grid.h"
 
+#include "ui/plots/damping_labels.h"
+
 #include "core/analysis/damping_grid.h"
 
 #include <algorithm>
@@ -170,18 +172,18 @@ PlaneGrid::PlaneGrid(QCustomPlot* plot) : plot_(plot) {}
 void PlaneGrid::clear() {
     for (QCPCurve* c : curves_)
         plot_->removePlottable(c);
-    for (QCPItemText* t : labels_)
-        plot_->removeItem(t);
+    if (labels_)
+        plot_->removeItem(labels_);
     curves_.clear();
-    labels_.clear();
+    labels_ = nullptr;
 }
 
 void PlaneGrid::setVisible(bool visible) {
     visible_ = visible;
     for (QCPCurve* c : curves_)
         c->setVisible(visible);
-    for (QCPItemText* t : labels_)
-        t->setVisible(visible);
+    if (labels_)
+        labels_->setVisible(visible);
 }
 
 void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
@@ -209,27 +211,25 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
             circle.push_back(std::polar(1.0, 2.0 * std::numbers::pi * i / 180.0));
         curves_.push_back(addComplexCurve(plot_, circle, QPen(QColor(0x60, 0x60, 0x60), 1.2)));
     }
-    int labelIndex = 0;
+    // s-plane: each ray from the origin, labelled where it leaves the view. z-plane: every line
+    // starts at z = 1 (s = 0), where the labels would pile up; the top of each spiral is a
+    // point of its own.
+    std::vector<DampingLabels::Label> labels;
     for (const GridLine& line : grid.dampingLines) {
         if (line.points.empty())
             continue;
-        ++labelIndex;
-        auto* label = new QCPItemText(plot_);
-        // s-plane: the outer end of the ray. z-plane: every line starts at z = 1 (s = 0), where
-        // the labels would pile up; the top of each spiral is a point of its own.
-        auto p = line.points.front();
+        const QString text = QStringLiteral("ζ=%1").arg(line.value);
         if (tsSeconds > 0.0)
-            p = *std::max_element(line.points.begin(), line.points.end(),
-                                  [](const auto& a, const auto& b) { return a.imag() < b.imag(); });
-        else if (labelIndex % 2 == 0)
-            p *= 0.8; // the light-damping rays converge near the imaginary axis: stagger them
-        label->position->setCoords(p.real(), p.imag());
-        label->setText(QStringLiteral("ζ=%1").arg(line.value));
-        label->setColor(QColor(0x9a, 0x9a, 0x9a));
-        label->setFont(QFont(plot_->font().family(), 7));
-        label->setClipToAxisRect(true);
-        labels_.push_back(label);
+            labels.push_back({text,
+                              *std::max_element(line.points.begin(), line.points.end(),
+                                                [](const auto& a, const auto& b) { return a.imag() < b.imag(); }),
+                              0.0});
+        else
+            labels.push_back({text, 0.0, line.points.front()});
     }
+    labels_ = new DampingLabels(plot_);
+    labels_->setLayer("grid");
+    labels_->setLabels(std::move(labels));
     for (QCPCurve* c : curves_) {
         c->setLayer("grid");
         c->removeFromLegend();

@@ -9,6 +9,8 @@
 
 namespace xyt::ui {
 
+class DampingLabels;
+
 /**
  * The constant-damping / constant-frequency grid behind the s- or z-plane plots (and the unit
  * circle for the z-plane), drawn from the core's DampingGrid. Owns its curves in @p plot.
@@ -24,7 +26,7 @@ private:
     void clear();
     QCustomPlot* plot_;
     std::vector<QCPCurve*> curves_;
-    std::vector<QCPItemText*> labels_;
+    DampingLabels* labels_ = nullptr;
     double ts_ = -1.0;
     double maxOmega_ = -1.0;
     bool visible_ = true;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/plot_tools.h"
+#include "ui/plots/plot_widget.h"
 
 #include "ui/plots/plane_grid.h"
 
@@ -90,6 +91,8 @@ void styleAxisRect(QCPAxisRect* rect) {
 }
 
 void resetView(QCustomPlot* plot) {
+    if (auto* widget = qobject_cast<PlotWidget*>(plot))
+        widget->releaseView(); // the automatic fit takes over again
     if (resetPlaneView(plot)) { // a complex plane returns to its fitted, equal-aspect view
         plot->replot();
         return;

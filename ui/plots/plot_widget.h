@@ -20,8 +20,31 @@ public:
     QSize minimumSizeHint() const override { return {kMinimumWidth, kMinimumHeight}; }
     QSize sizeHint() const override { return {2 * kMinimumWidth, 2 * kMinimumHeight}; }
 
+    /**
+     * True once the user has zoomed (wheel) or panned (drag) the view since it was last reset:
+     * the plot's automatic fit then leaves the view alone while the design changes, until
+     * releaseView (View > Reset plot views, a double-click, "Reset view", or a change of plane).
+     */
+    bool viewHeld() const { return viewHeld_; }
+    void releaseView() { viewHeld_ = false; }
+
     static constexpr int kMinimumWidth = 240;
     static constexpr int kMinimumHeight = 180;
+
+protected:
+    void wheelEvent(QWheelEvent* event) override {
+        QCustomPlot::wheelEvent(event);
+        if (interactions().testFlag(QCP::iRangeZoom))
+            viewHeld_ = true;
+    }
+    void mouseMoveEvent(QMouseEvent* event) override {
+        QCustomPlot::mouseMoveEvent(event);
+        if ((event->buttons() & Qt::LeftButton) && interactions().testFlag(QCP::iRangeDrag))
+            viewHeld_ = true;
+    }
+
+private:
+    bool viewHeld_ = false;
 };
 
 } // namespace xyt::ui

@@ -143,9 +143,11 @@ void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString&
         }
     }
     grid_.show(ts, ts > 0 ? M_PI / ts : 1.2 * extent);
-    // The default view on a change of plane; afterwards the user's zoom is kept until some pole
-    // or zero leaves it (a pole at -103 must not stay off-screen).
-    if (ts != lastTs_ || anyOutsideView(this, all)) {
+    // The default view on a change of plane; afterwards it is re-fitted when some pole or zero
+    // leaves it (a pole at -103 must not stay off-screen), unless the user zoomed or panned it.
+    if (ts != lastTs_)
+        releaseView();
+    if (ts != lastTs_ || (!viewHeld() && anyOutsideView(this, all))) {
         lastTs_ = ts;
         const double r = ts > 0 ? std::max(1.2, 1.1 * extent) : 1.15 * extent;
         setView(this, fittedBox({-r, ts > 0 ? r : 0.25 * r, -0.6 * r, 0.6 * r}, all));

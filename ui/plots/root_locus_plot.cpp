@@ -91,12 +91,14 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     const double extent = std::max({std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin), std::abs(v.imMax), 1e-6});
     grid_.show(locus.tsSeconds, extent);
     overlay_.show(requirements_, locus.tsSeconds, extent, currentPoles);
-    // Keep the user's zoom while the poles and zeros stay in view; re-fit when any of them (or
-    // the design's closed-loop poles) moves out of it, and on a change of plane.
+    // Fitted on a change of plane, and when a pole or zero (or a closed-loop pole of the
+    // design) leaves the view; a view the user zoomed or panned is kept until it is reset.
     std::vector<std::complex<double>> markers = locus.poles;
     markers.insert(markers.end(), locus.zeros.begin(), locus.zeros.end());
     markers.insert(markers.end(), currentPoles.begin(), currentPoles.end());
-    if (newPlane || anyOutsideView(this, markers))
+    if (newPlane)
+        releaseView();
+    if (newPlane || (!viewHeld() && anyOutsideView(this, markers)))
         setView(this, fittedBox({v.reMin, v.reMax, v.imMin, v.imMax}, markers));
     replot(QCustomPlot::rpQueuedReplot);
 }

@@ -196,8 +196,10 @@ void StepPlot::showView(const StepView& view, const QString& title) {
     if (boundInView)
         hi = std::max(hi, bound);
     const double pad = 0.08 * std::max(hi - lo, 1e-9);
-    xAxis->setRange(tMin, tMax);
-    yAxis->setRange(lo - pad, hi + pad);
+    if (!viewHeld()) { // the view follows the responses unless the user zoomed or panned it
+        xAxis->setRange(tMin, tMax);
+        yAxis->setRange(lo - pad, hi + pad);
+    }
 
     QStringList notes;
     // The envelope: the overshoot bound everywhere, the band from the settling limit on, the

@@ -180,14 +180,17 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
         lowerLimit_->point1->setCoords(0, -umaxVolts);
         lowerLimit_->point2->setCoords(1, -umaxVolts);
     }
+    // The view follows the run unless the user zoomed or panned it (until it is reset).
     for (QCPAxisRect* rect : {positionRect_, errorRect_, controlRect_}) {
+        if (viewHeld())
+            break;
         rect->axis(QCPAxis::atBottom)->setRange(run.t.front(), run.t.back());
         rect->axis(QCPAxis::atLeft)->rescale(true);
         const QCPRange r = rect->axis(QCPAxis::atLeft)->range();
         const double pad = r.size() > 0 ? 0.08 * r.size() : 1.0;
         rect->axis(QCPAxis::atLeft)->setRange(r.lower - pad, r.upper + pad);
     }
-    if (limited) {
+    if (limited && !viewHeld()) {
         // Keep the limit band in view so the margin to saturation is readable.
         QCPAxis* u = controlRect_->axis(QCPAxis::atLeft);
         const double top = std::max(u->range().upper, 1.15 * umaxVolts);
