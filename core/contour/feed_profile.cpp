@@ -269,8 +269,14 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
         const double t = std::min(static_cast<double>(k) * options.dtSeconds, out.totalTimeSeconds);
         while (p + 1 < out.pieces.size() && out.pieces[p].t0 + out.pieces[p].duration < t)
             ++p;
+        // At the run's end, the end of the last piece: pieces shorter than the round-off of
+        // their start time (a segment of 1e28 s after 1e44 s) add nothing to t0 + duration,
+        // so the search above can stop on an earlier piece whose end rounds to the same time.
+        const bool end = t >= out.totalTimeSeconds;
+        if (end)
+            p = out.pieces.size() - 1;
         const FeedPiece& piece = out.pieces[p];
-        const double tau = std::clamp(t - piece.t0, 0.0, piece.duration);
+        const double tau = end ? piece.duration : std::clamp(t - piece.t0, 0.0, piece.duration);
         const double s = piece.s0 + tau * (piece.v0 + tau * (piece.a0 / 2.0 + tau * piece.jerk / 6.0));
         const PathPoint point = path.at(s, piece.segment);
         out.t[k] = static_cast<double>(k) * options.dtSeconds;

@@ -18,6 +18,7 @@
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/tuning_session.h"
+#include "tests/support/plot_layout_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QComboBox>
@@ -38,6 +39,33 @@
 using namespace xyt;
 using namespace xyt::ui;
 
+Q_DECLARE_METATYPE(xyt::Session)
+
+namespace {
+
+/// The states whose plots are checked for their layout: each method, an invalid design, a
+/// diverging run, a G-code program and the circle (its polar, ballbar-like view).
+QList<QPair<const char*, Session>> layoutStates() {
+    Session pp = Session::paperDefault();
+    for (AxisSettings& a : pp.axes)
+        a.method = DesignMethod::PolePlacementZpetc;
+    Session invalid = Session::paperDefault();
+    invalid.axes[1].method = DesignMethod::PolePlacementZpetc;
+    invalid.axes[1].pp.b = {0.0, 0.0, 0.0}; // B = 0: no design
+    Session unstable = Session::paperDefault();
+    unstable.axes[0].gt.plant.a1 = -100.0; // the closed loop diverges
+    Session gcode = Session::paperDefault();
+    gcode.trajectory.kind = TrajectoryKind::Gcode;
+    gcode.trajectory.gcode.fileName = "square.nc";
+    gcode.trajectory.gcode.program = "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
+    Session circle = Session::paperDefault();
+    circle.trajectory.kind = TrajectoryKind::Circle;
+    return {{"default", Session::paperDefault()}, {"pole placement", pp}, {"one axis invalid", invalid},
+            {"unstable", unstable}, {"gcode", gcode}, {"circle", circle}};
+}
+
+} // namespace
+
 class TstPlotReadability : public QObject {
     Q_OBJECT
 private slots:
@@ -50,6 +78,8 @@ private slots:
     void zPlaneDampingLabelsDoNotPileUp();
     void sPlaneDampingLabelsStayApartWhenZoomed_data();
     void sPlaneDampingLabelsStayApartWhenZoomed();
+    void annotationsStayInsideAndApart_data();
+    void annotationsStayInsideAndApart();
     void parameterLocusFramesTheMovingPolesAndMarksTheBoundary();
     void parameterLocusBoundaryFollowsKp();
     void coincidentPoleSetsAreDistinguishable();
@@ -229,6 +259,48 @@ void TstPlotReadability::sPlaneDampingLabelsStayApartWhenZoomed() {
     labels = dampingLabels(plot);
     QVERIFY2(labels.size() >= 4, qPrintable(QString::number(labels.size())));
     requireLabelsInsideApart(plot, labels);
+}
+
+void TstPlotReadability::annotationsStayInsideAndApart_data() {
+    QTest::addColumn<Session>("state");
+    QTest::addColumn<QSize>("size");
+    for (const auto& [name, state] : layoutStates())
+        for (const QSize size : {QSize(1366, 768), QSize(1600, 1000)})
+            QTest::addRow("%s, %dx%d", name, size.width(), size.height()) << state << size;
+}
+
+void TstPlotReadability::annotationsStayInsideAndApart() {
+    // Every plot of every tab, for both axes: marker labels, notices and ζ labels inside their
+    // axis rect and none on another, legends set in a plane inside it, titles whole. Before,
+    // the step view's peak and settling labels overlapped, notices were cut at the left and an
+    // invalid design's title on both sides.
+    QFETCH(Session, state);
+    QFETCH(QSize, size);
+    session_->reset(state);
+    window_->resize(size);
+    QStringList problems;
+    for (int axis : {0, 1}) {
+        session_->setCurrentAxis(axis);
+        for (QTabWidget* tabs : {window_->upperTabs(), window_->lowerTabs()})
+            for (int i = 0; i < tabs->count(); ++i) {
+                tabs->setCurrentIndex(i);
+                QTest::qWait(1);
+                for (auto* plot : tabs->currentWidget()->findChildren<QCustomPlot*>()) {
+                    if (!plot->isVisible())
+                        continue;
+                    plot->replot(QCustomPlot::rpImmediateRefresh);
+                    for (const QString& p : test::annotationProblems(plot))
+                        problems << QString("axis %1, %2: %3").arg(axis).arg(tabs->tabText(i).remove('&'), p);
+                }
+                if (auto* plot = qobject_cast<QCustomPlot*>(tabs->currentWidget())) {
+                    plot->replot(QCustomPlot::rpImmediateRefresh);
+                    for (const QString& p : test::annotationProblems(plot))
+                        problems << QString("axis %1, %2: %3").arg(axis).arg(tabs->tabText(i).remove('&'), p);
+                }
+            }
+    }
+    problems.removeDuplicates();
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
 }
 
 void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary() {

@@ -312,8 +312,10 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
         label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
         label->position->setAxisRect(magRect_);
         label->position->setCoords(omega, 0.02);
-        label->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
-        label->setRotation(-90);
+        // Level, right of its line: a rotated label was taller than the magnitude plot at
+        // 1366x768 (the guard moves a level one left of the line near the right edge).
+        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+        label->setPadding(QMargins(3, 0, 2, 0));
         label->setText(text);
         label->setColor(color);
         label->setFont(QFont(font().family(), 7));

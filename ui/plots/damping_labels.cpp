@@ -68,14 +68,21 @@ void DampingLabels::draw(QCPPainter* painter) {
     const QFontMetricsF metrics(font);
     painter->setFont(font);
     painter->setPen(QColor(0x9a, 0x9a, 0x9a));
+    // The plot's annotations (notices, marker labels) are placed before the drawing
+    // (annotation_guard.h): a ζ label gives way to them.
+    std::vector<QRectF> taken;
+    for (int i = 0; i < parentPlot()->itemCount(); ++i)
+        if (auto* text = qobject_cast<QCPItemText*>(parentPlot()->item(i));
+            text && text->visible() && !text->text().isEmpty() && text->clipAxisRect() == clipAxisRect())
+            taken.push_back(QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()).normalized());
     for (const Label& label : labels_) {
         const QSizeF size(metrics.horizontalAdvance(label.text) + 2.0, metrics.height());
         const QRectF r = rectFor(label, size, area);
         if (r.isEmpty() || !area.contains(r))
             continue;
-        const bool overlaps = std::any_of(placed_.begin(), placed_.end(), [&](const Placed& p) {
-            return p.rect.adjusted(-1, -1, 1, 1).intersects(r);
-        });
+        const bool overlaps = std::any_of(placed_.begin(), placed_.end(),
+                                          [&](const Placed& p) { return p.rect.adjusted(-1, -1, 1, 1).intersects(r); }) ||
+                              std::any_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.intersects(r); });
         if (overlaps)
             continue;
         painter->drawText(r, Qt::AlignCenter, label.text);

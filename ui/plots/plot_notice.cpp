@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/plot_notice.h"
 
+#include "ui/plots/annotation_guard.h"
+
 #include <qcustomplot.h>
 
 namespace xyt::ui {
@@ -26,30 +28,10 @@ PlotNotice::PlotNotice(QCustomPlot* plot, QCPAxisRect* rect, Qt::Alignment corne
     item_->setVisible(false);
 }
 
-namespace {
-/// Breaks a line at spaces so that no piece is longer than @p width characters (a long word
-/// stays whole): the box must fit a plot of a 1366 x 768 window.
-QStringList wrapped(const QString& line, int width) {
-    QStringList out;
-    QString current;
-    for (const QString& word : line.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
-        if (!current.isEmpty() && current.size() + 1 + word.size() > width) {
-            out << current;
-            current.clear();
-        }
-        current += (current.isEmpty() ? QString() : QStringLiteral(" ")) + word;
-    }
-    if (!current.isEmpty())
-        out << current;
-    return out;
-}
-} // namespace
-
 void PlotNotice::setLines(const QStringList& lines) {
-    QStringList shown;
-    for (const QString& line : lines)
-        shown << wrapped(line, 64).join(QStringLiteral("\n    "));
-    item_->setText(shown.join(QLatin1Char('\n')));
+    // Broken at spaces to the width of the axis rect when drawn (annotation_guard.h).
+    lines_ = lines;
+    setWrappedLines(item_, lines, QStringLiteral("    "));
     item_->setVisible(!lines.isEmpty());
 }
 
@@ -57,7 +39,7 @@ void PlotNotice::setSevere(bool severe) {
     item_->setColor(severe ? QColor(0xb7, 0x1c, 0x1c) : QColor(0x3a, 0x2a, 0x00));
 }
 
-QString PlotNotice::text() const { return item_->visible() ? item_->text() : QString(); }
+QString PlotNotice::text() const { return item_->visible() ? lines_.join(QLatin1Char('\n')) : QString(); }
 
 bool PlotNotice::isShown() const { return item_->visible(); }
 

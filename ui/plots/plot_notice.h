@@ -23,15 +23,18 @@ class PlotNotice {
 public:
     /// A box in @p rect, anchored at @p corner (e.g. Qt::AlignTop | Qt::AlignRight).
     PlotNotice(QCustomPlot* plot, QCPAxisRect* rect, Qt::Alignment corner);
-    /// Shows the lines (one per warning, wrapped at 64 characters); an empty list hides the box.
+    /// Shows the lines (one per warning, wrapped to the axis rect's width when drawn); an
+    /// empty list hides the box.
     void setLines(const QStringList& lines);
     /// A strong notice (no result at all): red text instead of the amber box's dark text.
     void setSevere(bool severe);
+    /// The lines as given, one per line (the box wraps them to its width).
     QString text() const;
     bool isShown() const;
 
 private:
     QCPItemText* item_;
+    QStringList lines_; ///< as given, before wrapping
 };
 
 /// Clears @p graphs and shows @p reason as a strong notice (no result to draw), then replots:

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/plot_tools.h"
+#include "ui/plots/annotation_guard.h"
 #include "ui/plots/plot_widget.h"
 
 #include "ui/plots/plane_grid.h"
@@ -156,6 +157,7 @@ void setupInteractivePlot(QCustomPlot* plot) {
     plot->setContextMenuPolicy(Qt::CustomContextMenu);
     plot->setMinimumSize(240, 180);
     plot->setNoAntialiasingOnDrag(true);
+    guardAnnotations(plot); // marker labels and notices inside the frame, none on another
     QObject::connect(plot, &QCustomPlot::mouseDoubleClick, plot,
                      [plot](QMouseEvent*) { resetView(plot); });
     QObject::connect(plot, &QWidget::customContextMenuRequested, plot, [plot](const QPoint& pos) {

@@ -102,6 +102,10 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     legend->setLayer("legend");
     legend->setFont(QFont(font().family(), 8));
     legend->setBrush(QColor(255, 255, 255, 210));
+    // Compact: up to four rows fit the position plot's 100 px at 1366x768.
+    compactLegend(legend);
+    legend->setRowSpacing(0);
+    legend->setMargins(QMargins(4, 1, 4, 1));
     legend->addItem(new QCPPlottableLegendItem(legend, reference_));
     legend->addItem(new QCPPlottableLegendItem(legend, output_));
     notice_ = std::make_unique<PlotNotice>(this, positionRect_, Qt::AlignTop | Qt::AlignLeft);

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What a person reading a plot needs of its layout: every annotation (a marker's label, a
+// notice, a ζ label) inside its axis rect and none on another, a legend set in the plane inside
+// it, and every title or readout line as wide as its text.
+#include "ui/plots/damping_labels.h"
+
+#include <QFontMetricsF>
+#include <QStringList>
+#include <qcustomplot.h>
+
+#include <vector>
+
+namespace xyt::test {
+
+namespace detail {
+
+inline QString shortText(const QString& text) {
+    const QString line = text.section(QLatin1Char('\n'), 0, 0);
+    return line.size() > 40 ? line.left(40) + QStringLiteral("…") : line;
+}
+
+/// Rectangles with a half-pixel allowance for the round-off of the anchors' positions.
+inline bool inside(const QRectF& r, const QRectF& area) { return area.adjusted(-0.5, -0.5, 0.5, 0.5).contains(r); }
+inline bool overlap(const QRectF& a, const QRectF& b) {
+    return a.adjusted(0.5, 0.5, -0.5, -0.5).intersects(b.adjusted(0.5, 0.5, -0.5, -0.5));
+}
+
+} // namespace detail
+
+/// The layout faults of @p plot as drawn last, one line each ("" when none).
+inline QStringList annotationProblems(QCustomPlot* plot) {
+    using detail::shortText;
+    QStringList problems;
+    const QString where = plot->objectName().isEmpty() ? QString(plot->metaObject()->className()) : plot->objectName();
+    struct Placed {
+        QString text;
+        QRectF rect;
+    };
+    std::vector<Placed> texts;
+    for (int i = 0; i < plot->itemCount(); ++i) {
+        QCPAbstractItem* item = plot->item(i);
+        if (!item->visible() || !item->clipAxisRect())
+            continue;
+        const QRectF area = item->clipAxisRect()->rect();
+        if (auto* labels = dynamic_cast<ui::DampingLabels*>(item)) {
+            for (const auto& p : labels->placed()) {
+                if (!detail::inside(p.rect, area))
+                    problems << QString("%1: ζ label '%2' leaves the axis rect").arg(where, p.text);
+                texts.push_back({p.text, p.rect});
+            }
+            continue;
+        }
+        auto* text = qobject_cast<QCPItemText*>(item);
+        if (!text || text->text().isEmpty() || !text->clipToAxisRect())
+            continue;
+        const QRectF r = QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()).normalized();
+        if (!detail::inside(r, area))
+            problems << QString("%1: '%2' at (%3, %4, %5 x %6) leaves the axis rect (%7, %8, %9 x %10)")
+                            .arg(where, shortText(text->text()))
+                            .arg(r.left()).arg(r.top()).arg(r.width()).arg(r.height())
+                            .arg(area.left()).arg(area.top()).arg(area.width()).arg(area.height());
+        texts.push_back({text->text(), r});
+    }
+    for (std::size_t i = 0; i < texts.size(); ++i)
+        for (std::size_t j = i + 1; j < texts.size(); ++j)
+            if (detail::overlap(texts[i].rect, texts[j].rect))
+                problems << QString("%1: '%2' overlaps '%3'").arg(where, shortText(texts[i].text), shortText(texts[j].text));
+    // A legend inside a plane (an axis rect's inset) stays in it, up to the pixel the inset
+    // layout's integer rectangles give (QRect's right and bottom are one short of x + width).
+    for (QCPAxisRect* rect : plot->axisRects())
+        for (int k = 0; k < rect->insetLayout()->elementCount(); ++k)
+            if (auto* legend = qobject_cast<QCPLegend*>(rect->insetLayout()->elementAt(k));
+                legend && legend->visible() && legend->itemCount() > 0 &&
+                !detail::inside(legend->outerRect(), QRectF(rect->rect()).adjusted(-1.0, -1.0, 1.0, 1.0))) {
+                const QRect r = legend->outerRect(), a = rect->rect();
+                problems << QString("%1: the legend (%2, %3, %4 x %5) leaves its axis rect (%6, %7, %8 x %9)")
+                                .arg(where).arg(r.left()).arg(r.top()).arg(r.width()).arg(r.height())
+                                .arg(a.left()).arg(a.top()).arg(a.width()).arg(a.height());
+            }
+    // Titles and readouts of the layout: each line as wide as its element.
+    for (int k = 0; k < plot->plotLayout()->elementCount(); ++k) {
+        auto* element = qobject_cast<QCPTextElement*>(plot->plotLayout()->elementAt(k));
+        if (!element || !element->visible() || element->text().isEmpty())
+            continue;
+        const QFontMetricsF metrics(element->font());
+        const double room = element->rect().width();
+        for (const QString& line : element->text().split(QLatin1Char('\n')))
+            if (metrics.horizontalAdvance(line) > room + 1.0)
+                problems << QString("%1: '%2' needs %3 px, has %4").arg(where, shortText(line))
+                                .arg(metrics.horizontalAdvance(line)).arg(room);
+    }
+    return problems;
+}
+
+} // namespace xyt::test
