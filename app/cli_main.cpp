@@ -92,7 +92,7 @@ constexpr CommandHelp kGtHelp[] = {
      "            and where it came from (model_origin).\n"},
     {"sweep", "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
               "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
-              "            [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"
+              "            [--points] [--criterion itae|max_error|rmse|max_u|settle|phase_margin|gain_margin]\n"
               "            (the margins are maximized, the others minimized) [--threads N] [--csv FILE]\n"
               "            [--max-settling 100] [--max-overshoot 0] [--max-error 2]\n"
               "            [--max-settle-time 100] [--in-position-window 0.01]\n"
@@ -101,7 +101,8 @@ constexpr CommandHelp kGtHelp[] = {
               "            JSON: best {wn, kp, ki, metrics, move_and_settle, phase_margin, gain_margin,\n"
               "            checks, index [i_wn, i_kp]}\n"
               "            and refined {...} (null when nothing is feasible), feasible_count, grid\n"
-              "            {wn, kp}, points[i_wn][i_kp] (rows over wn, columns over kp), warnings and\n"
+              "            {wn, kp}, with --points every point points[i_wn][i_kp] (rows over wn,\n"
+              "            columns over kp; a 100 x 100 grid writes 13 MB), warnings and\n"
               "            diagnosis (criteria failing everywhere, least-violating design, relaxed\n"
               "            specification, best design on a grid edge). CSV: one row per point in\n"
               "            the same order (wn outer, kp inner); undefined metrics are empty fields.\n"},
