@@ -123,7 +123,10 @@ QJsonObject fitJson(const ModelFit& simulation, const ModelFit& prediction) {
             {"horizon", prediction.horizon}};
 }
 
-QJsonObject modelJson(const IdentifiedModel& m) {
+/// @p originMm: the position the record's outputs were taken relative to (gt3: its first
+/// sample), added back so that initial_position is where the table stood, not where it stood
+/// relative to that sample.
+QJsonObject modelJson(const IdentifiedModel& m, double originMm) {
     QJsonObject parameters;
     for (std::size_t i = 0; i < m.parameters.size(); ++i)
         parameters.insert(QString::fromStdString(m.parameterNames[i]),
@@ -139,7 +142,7 @@ QJsonObject modelJson(const IdentifiedModel& m) {
     if (m.plant)
         out.insert("plant", QJsonObject{{"k0", number(m.plant->k0)}, {"a1", number(m.plant->a1)},
                                         {"a2", number(m.plant->a2)}, {"output_unit", "mm"},
-                                        {"initial_position", number(m.initialPositionMm)}});
+                                        {"initial_position", number(originMm + m.initialPositionMm)}});
     return out;
 }
 
@@ -241,11 +244,10 @@ int runIdentify(const QStringList& argv) {
     } catch (const InvalidInput& e) {
         throw InvalidInput("--structure", e.reason());
     }
+    // The orders each estimator takes (ArxOrders, OeOrders, BjOrders::validate): 0 for na (FIR),
+    // nk (a direct feedthrough), nc, nd and nf; nb at least 1 (a model without input).
     const auto order = [&](const char* name, int fallback, int minimum) {
-        const int v = args.count(name, fallback, 100);
-        if (v < minimum)
-            throw InvalidInput(CliArgs::field(name), "must be at least " + std::to_string(minimum));
-        return v;
+        return args.integer(name, fallback, minimum, 100);
     };
     spec.arx = {order("na", 2, 0), order("nb", 3, 1), order("nk", 1, 0)};
     spec.oe = {order("nb", 3, 1), order("nf", 2, 0), order("nk", 1, 0)};
@@ -262,6 +264,7 @@ int runIdentify(const QStringList& argv) {
     if (const auto path = args.value("validate"))
         validation = record(args, "--validate", *path);
     QJsonArray notes;
+    double estimationOrigin = 0.0; // the position the estimation record was taken relative to
     if (spec.structure == ModelStructure::ContinuousThirdOrder) {
         // The plant integrates: its model starts at rest at position 0, so the record's initial
         // position is taken off (said here, not guessed silently).
@@ -271,14 +274,16 @@ int runIdentify(const QStringList& argv) {
             const double y0 = d->y.front();
             for (double& y : d->y)
                 y -= y0;
-            notes.append(QStringLiteral("%1: the first sample %2 mm was subtracted; the fit estimates where the "
-                                        "table stood (initial_position)")
+            if (d == &estimation)
+                estimationOrigin = y0;
+            notes.append(QStringLiteral("%1: the first sample %2 mm was subtracted for the fit; initial_position "
+                                        "adds it back (where the table stood)")
                              .arg(QString::fromStdString(d->source))
                              .arg(y0, 0, 'g', 10));
         }
     }
     const IdentifiedModel m = identifyModel(estimation, validation ? &*validation : nullptr, spec);
-    QJsonObject out{{"data", dataJson(estimation)}, {"model", modelJson(m)}};
+    QJsonObject out{{"data", dataJson(estimation)}, {"model", modelJson(m, estimationOrigin)}};
     if (orderTable)
         out.insert("order_table", orderTableJson(*orderTable, estimation, validation ? &*validation : nullptr));
     if (validation)

@@ -51,6 +51,36 @@ QString number(double v, int decimals = 4) {
     return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("n/a");
 }
 
+/// "RMSE ... mm, max |e| ... mm (... % of travel), max |u| ... V, saturated ..., ITAE ...".
+QString trackingText(const TrackingMetrics& m) {
+    QString saturated = m.saturated ? QStringLiteral("yes") : QStringLiteral("no");
+    if (m.saturated)
+        saturated += " (" + number(m.saturatedTimeSeconds, 2) + " s)";
+    return "RMSE " + number(m.rmse) + " mm, max |e| " + number(m.maxAbsError) + " mm (" +
+           number(m.maxAbsErrorPct, 3) + " % of travel), max |u| " + number(m.maxAbsU) + " V, saturated " +
+           saturated + ", ITAE " + number(m.itae, 1);
+}
+
+/// "settled ... s after tf, final error ... mm, final-position overshoot ... mm".
+QString moveSettleText(const MoveSettleMetrics& ms) {
+    QString out;
+    if (ms.diverged)
+        out = "n/a (the run diverged)";
+    else if (ms.settled)
+        out = "settled " + number(*ms.settleTimeSeconds, 2) + " s after tf";
+    else
+        out = "not settled by the end of the run (" + number(ms.runEndSeconds, 2) + " s)";
+    return out + ", final error " + number(ms.finalErrorMm, 5) + " mm, final-position overshoot " +
+           number(ms.finalOvershootMm, 4) + " mm";
+}
+
+/// Which run fails a criterion the verdict fails: the design's, the implementation's or both.
+QString failedOn(bool design, bool implementation) {
+    if (!design && !implementation)
+        return QStringLiteral(" (as designed and as it runs)");
+    return !implementation ? QStringLiteral(" (as it runs)") : QStringLiteral(" (as designed)");
+}
+
 } // namespace
 
 int runNew(const QStringList& argv) {
@@ -114,39 +144,61 @@ int runSessionReport(const QString& path) {
             out << "  F = " << poly(a.pp->f) << ", G = " << poly(a.pp->g) << " (ascending z^-1), Kf = "
                 << QString::number(a.pp->kf, 'g', 6) << ", Ts = " << a.pp->tsSeconds << " s\n";
             if (s.pp.zpetcEnabled && a.zpetc)
-                out << "  ZPETC: preview " << a.zpetc->previewSteps << " samples; RMSE without "
+                out << "  ZPETC (as designed): preview " << a.zpetc->previewSteps << " samples; RMSE without "
                     << number(a.rmseWithoutFf, 5) << " mm, with " << number(a.metrics.rmse, 5)
                     << " mm (improvement " << number(a.improvementPct, 2) << " %)\n";
         }
-        const auto& m = a.metrics;
-        out << "  tracking: RMSE " << number(m.rmse) << " mm, max |e| " << number(m.maxAbsError) << " mm ("
-            << number(m.maxAbsErrorPct, 3) << " % of travel), max |u| " << number(m.maxAbsU)
-            << " V, saturated " << (m.saturated ? "yes" : "no") << ", ITAE " << number(m.itae, 1) << "\n";
+        // The run that will really happen first (the digital implementation: sampled, delayed,
+        // quantized, |u| limited), then the design's own run, each labelled: a design whose
+        // implementation saturates must not be read from the design's figures.
+        const DigitalEvaluation* digital = a.digital.get();
+        const QString designRun = a.pp ? QStringLiteral("the linear loop at Ts, |u| over the limit flagged, not applied")
+                                       : QStringLiteral("the continuous loop, |u| limited");
+        const QString digitalRun =
+            digital ? "the digital implementation at Ts = " + QString::number(digital->tsSeconds, 'g', 6) +
+                          " s, |u| limited to " + QString::number(session.umaxVolts, 'g', 6) + " V"
+                    : QString();
+        if (digital)
+            out << "  tracking as it runs (" << digitalRun << "): " << trackingText(digital->metrics) << "\n";
+        out << "  tracking as designed (" << designRun << "): " << trackingText(a.metrics) << "\n";
         out << "  unit step of the closed loop: settling (2 %) "
             << (a.step.stable ? number(a.step.settlingTimeSeconds, 2) + " s" : QString("unstable"))
             << ", overshoot "
             << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable")) << "\n";
         out << "  loop margins: " << marginsText(analyzeAxisFrequency(session, a).margins) << "\n";
         if (a.moveSettle) {
-            const MoveSettleMetrics& ms = *a.moveSettle;
-            out << "  move and settle (window " << QString::number(ms.windowMm, 'g', 6) << " mm): ";
-            if (ms.diverged)
-                out << "n/a (the run diverged)";
-            else if (ms.settled)
-                out << "settled " << number(*ms.settleTimeSeconds, 2) << " s after tf";
-            else
-                out << "not settled by the end of the run (" << number(ms.runEndSeconds, 2) << " s)";
-            out << ", final error " << number(ms.finalErrorMm, 5) << " mm, final-position overshoot "
-                << number(ms.finalOvershootMm, 4) << " mm\n";
+            const QString window = QString::number(a.moveSettle->windowMm, 'g', 6);
+            if (digital && digital->moveSettle)
+                out << "  move and settle (window " << window << " mm) as it runs: "
+                    << moveSettleText(*digital->moveSettle) << "\n";
+            out << "  move and settle (window " << window << " mm) as designed: " << moveSettleText(*a.moveSettle)
+                << "\n";
         }
+        // The verdict is the worse of the design and its implementation (AxisEvaluation::check);
+        // each failed criterion says which run fails it.
         QStringList failed;
         const SpecificationCheck& c = a.check;
-        const std::pair<bool, const char*> criteria[] = {
-            {c.stable, "stable"}, {c.settlingTime, "step settling"}, {c.overshoot, "step overshoot"},
-            {c.noSaturation, "no saturation"}, {c.trackingError, "tracking error"}, {c.settle, "move settle"}};
-        for (const auto& [passed, name] : criteria)
-            if (!passed)
-                failed << name;
+        const SpecificationCheck& d = a.designCheck;
+        const SpecificationCheck im = a.implementationCheck.value_or(a.designCheck);
+        // The step and the margins are the design's in both checks: only the run's own figures
+        // (saturation, tracking error, settle) can fail on one run and not the other.
+        struct Criterion {
+            bool passed, design, implementation;
+            const char* name;
+            bool perRun;
+        };
+        const Criterion criteria[] = {{c.stable, d.stable, im.stable, "stable", false},
+                                      {c.settlingTime, d.settlingTime, im.settlingTime, "step settling", false},
+                                      {c.overshoot, d.overshoot, im.overshoot, "step overshoot", false},
+                                      {c.noSaturation, d.noSaturation, im.noSaturation, "no saturation", true},
+                                      {c.trackingError, d.trackingError, im.trackingError, "tracking error", true},
+                                      {c.settle, d.settle, im.settle, "move settle", true},
+                                      {c.phaseMargin, d.phaseMargin, im.phaseMargin, "phase margin", false},
+                                      {c.gainMargin, d.gainMargin, im.gainMargin, "gain margin", false}};
+        for (const Criterion& k : criteria)
+            if (!k.passed)
+                failed << k.name + (a.implementationCheck && k.perRun ? failedOn(k.design, k.implementation)
+                                                                      : QString());
         out << "  specification: " << (failed.isEmpty() ? QStringLiteral("met") : "fails " + failed.join(", "))
             << "\n";
         for (const auto& w : a.warnings)

@@ -18,7 +18,7 @@ namespace xyt::cli {
 
 namespace {
 
-const QStringList kSweepOptions = {"log", "criterion", "threads", "max-settling",
+const QStringList kSweepOptions = {"log", "points", "criterion", "threads", "max-settling",
                                    "max-overshoot", "max-error", "max-settle-time",
                                    "in-position-window", "min-phase-margin", "min-gain-margin"};
 
@@ -103,7 +103,7 @@ QString sweepCsv(const DesignSweepResult& r) {
 } // namespace
 
 int runSweep(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"log"});
+    const CliArgs args = CliArgs::parse(argv, {"log", "points"});
     args.allowOnly(kPlantOptions + QStringList{"wn", "kp", kUnitOption} + kTrajectoryOptions +
                    kSweepOptions);
     const PlantInput plant = parsePlant(args);
@@ -200,14 +200,18 @@ int runSweep(const QStringList& argv) {
     } else {
         out.insert("refined", QJsonValue());
     }
-    QJsonArray rows;
-    for (std::size_t i = 0; i < r.wnValues.size(); ++i) {
-        QJsonArray row;
-        for (std::size_t j = 0; j < r.kpValues.size(); ++j)
-            row.append(pointJson(r.at(i, j)));
-        rows.append(row);
+    // Every point only when asked for: a 100 x 100 grid writes 13 MB of them, and the summary
+    // (best, refined, counts, diagnosis) is what a reader of the study wants first.
+    if (args.flag("points")) {
+        QJsonArray rows;
+        for (std::size_t i = 0; i < r.wnValues.size(); ++i) {
+            QJsonArray row;
+            for (std::size_t j = 0; j < r.kpValues.size(); ++j)
+                row.append(pointJson(r.at(i, j)));
+            rows.append(row);
+        }
+        out.insert("points", rows);
     }
-    out.insert("points", rows);
     const SweepDiagnosis diagnosis = diagnoseSweep(r, problem.spec);
     QJsonArray warnings;
     for (const auto& w : r.warnings)

@@ -157,6 +157,11 @@ public:
     }
 
     void line(std::string_view text, std::size_t number);
+    /// The program end (M2 or M30) was read: the lines after it are not part of the program.
+    bool ended() const { return ended_; }
+    /// Says that lines holding more than blanks and '%' follow the program end (they are not
+    /// run, which their author may not expect).
+    void textAfterEnd() { warn("the lines after the program end " + endWord_ + " are not read"); }
     GcodeProgram finish();
 
 private:
@@ -178,6 +183,8 @@ private:
     std::vector<std::string> warnings_;
     std::size_t droppedWarnings_ = 0;
     std::size_t lines_ = 0;
+    bool ended_ = false;
+    std::string endWord_;
 };
 
 void Reader::warn(const std::string& message) {
@@ -334,7 +341,13 @@ void Reader::line(std::string_view text, std::size_t number) {
                 throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
             }
         } else if (w.letter == 'M') {
-            static constexpr int kIgnored[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30};
+            // M2 and M30 end the program: nothing to warn about, as every program ends so.
+            if (c == 2 || c == 30) {
+                ended_ = true;
+                endWord_ = w.text;
+                continue;
+            }
+            static constexpr int kIgnored[] = {0, 1, 3, 4, 5, 6, 7, 8, 9};
             if (std::find(std::begin(kIgnored), std::end(kIgnored), c) == std::end(kIgnored))
                 throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
             warn(w.text + " ignored (not an XY motion)");
@@ -449,11 +462,17 @@ GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
                                           " lines");
     Reader reader(options);
     std::size_t number = 0;
-    for (std::size_t begin = 0; begin < text.size();) {
+    // The program end's line is read whole (its motion comes before the end, as RS274/NGC
+    // orders a block); the lines after it are not read, as a controller never runs them.
+    std::size_t begin = 0;
+    while (begin < text.size() && !reader.ended()) {
         const std::size_t end = lineEnd(begin);
         reader.line(text.substr(begin, end - begin), ++number);
         begin = nextLine(end);
     }
+    const std::string_view rest = begin < text.size() ? text.substr(begin) : std::string_view();
+    if (std::any_of(rest.begin(), rest.end(), [](char c) { return !isSpace(c) && c != '\n' && c != '%'; }))
+        reader.textAfterEnd();
     return reader.finish();
 }
 

@@ -81,8 +81,11 @@ double arcEndTolerance(double radiusMm, bool inch);
  *     units per minute), N (block numbers), comments in parentheses and after ';', a line
  *     holding only '%' (the program delimiter), letters in either case, spaces anywhere
  *     between words and between a letter and its number.
- *   - Z words and the M codes M0 M1 M2 M3 M4 M5 M6 M7 M8 M9 M30, S (spindle speed) and
- *     T (tool) words are read and ignored with a warning naming the line.
+ *   - M2 and M30 end the program, silently: their line is read whole, the lines after it
+ *     are not read (a controller never runs them; a warning says so when they hold more
+ *     than blanks and '%');
+ *   - Z words and the M codes M0 M1 M3 M4 M5 M6 M7 M8 M9, S (spindle speed) and T (tool)
+ *     words are read and ignored with a warning naming the line.
  * The tool starts at GcodeReadOptions::start. Every move becomes a path segment (a zero-length
  * move none); G0 moves too, flagged rapid.
  *

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace xyt {
 
@@ -27,8 +28,8 @@ std::vector<double> outputOn(const SimulationResult& run, const std::vector<doub
     return resampleLinear(run.t, run.y, t);
 }
 
-/// Which samples of the time base are judged. For a path this needs the nearest segment of the
-/// traced point, so the nominal trace decides, and every run is judged on the same samples.
+/// Which samples of the time base a circle judges: those after the ramp-in, for every run. (A
+/// path judges the samples nearest a measured segment, which each trace decides for itself.)
 std::vector<char> circleMeasured(const ContourGeometry& g) {
     std::vector<char> m(g.t.size());
     for (std::size_t k = 0; k < g.t.size(); ++k)
@@ -36,18 +37,25 @@ std::vector<char> circleMeasured(const ContourGeometry& g) {
     return m;
 }
 
-/// e of the traced points (x, y) on the time base; figures over the measured samples.
+/// e of the traced points (x, y) on the time base; figures over the measured samples: for a
+/// circle those of @p measured, for a path those the trace itself is nearest a measured segment
+/// at (as contourError judges it: a pair whose trace strays near a rapid is not judged on the
+/// nominal trace's samples).
 ContourTraceError judge(const ContourGeometry& g, const std::vector<double>& x, const std::vector<double>& y,
                         const std::vector<char>& measured) {
     ContourTraceError out;
-    out.e.resize(g.t.size());
-    if (g.circle) {
-        const Circle& c = *g.circle;
-        for (std::size_t k = 0; k < g.t.size(); ++k) // as circleContourError measures it
-            out.e[k] = std::hypot(x[k] - c.centreX, y[k] - c.centreY) - c.radius;
-    } else {
-        out.e = contourError(*g.path, g.t, x, y, g.pathOptions).error;
+    if (!g.circle) {
+        ContourErrorResult c = contourError(*g.path, g.t, x, y, g.pathOptions);
+        out.e = std::move(c.error);
+        const double none = std::numeric_limits<double>::quiet_NaN(); // not judged: not finite
+        out.maxAbs = c.measuredSamples > 0 ? c.maxAbs : none;
+        out.rms = c.measuredSamples > 0 ? c.rms : none;
+        return out;
     }
+    out.e.resize(g.t.size());
+    const Circle& c = *g.circle;
+    for (std::size_t k = 0; k < g.t.size(); ++k) // as circleContourError measures it
+        out.e[k] = std::hypot(x[k] - c.centreX, y[k] - c.centreY) - c.radius;
     double sumSquares = 0.0;
     std::size_t n = 0;
     for (std::size_t k = 0; k < g.t.size(); ++k) {
@@ -133,8 +141,8 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
         for (auto& c : boxCorners(joint))
             pairs.push_back(std::move(c));
 
-    // The nominal pair decides which samples are judged (for a path: those nearest a measured
-    // segment) and where the XY band is drawn.
+    // The nominal pair decides at which instants the error band is sampled and where the XY
+    // band is drawn (the samples it judges); each pair's figures are over its own judged samples.
     std::vector<double> nominalValues;
     for (const UncertainParameter& q : joint)
         nominalValues.push_back(q.nominal);

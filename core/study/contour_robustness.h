@@ -42,8 +42,10 @@ struct JointPlantRun {
     bool corner = false;
     bool stable = false; ///< both closed loops stable
     bool finite = false; ///< both runs finite
-    double maxAbsContourError = 0.0; ///< mm, over the measured samples
-    double rmsContourError = 0.0;    ///< mm
+    /// mm, over the samples this pair's own trace is judged on (after the ramp-in; for a path,
+    /// those nearest a measured segment, as contourError selects them)
+    double maxAbsContourError = 0.0;
+    double rmsContourError = 0.0; ///< mm, over the same samples
 };
 
 struct ContourRobustnessResult {

@@ -77,10 +77,11 @@ void TstCliContour::circleMatchesTheCore() {
     QCOMPARE(iso["direction"].toString(), QStringLiteral("clockwise"));
     QCOMPARE(iso["nominal"].toObject()["radius"].toDouble(), 30.0);
     QCOMPARE(iso["reversal_spikes"].toArray().size(), 4);
-    // The profile: a rapid of 30 mm, then the circle at 3 mm/s; M30 warns naming its line.
+    // The profile: a rapid of 30 mm, then the circle at 3 mm/s; the program end M30 does not warn.
     XYT_COMPARE_NEAR(o["length"].toDouble(), 30.0 + 60.0 * 3.14159265358979323846, 1e-15, 0.0);
     QCOMPARE(o["profile"].toObject()["samples"].toInteger(), qint64(core.trace.profile.t.size()));
-    QCOMPARE(o["warnings"].toArray().first().toString(), QStringLiteral("line 10: M30 ignored (not an XY motion)"));
+    for (const QJsonValue& w : o["warnings"].toArray())
+        QVERIFY2(!w.toString().contains("M30"), qPrintable(w.toString()));
     QCOMPARE(o["x_axis"].toObject()["method"].toString(), method);
 }
 

@@ -4,6 +4,7 @@
 // the argument, the path, the system's reason); special files are neither replaced nor read,
 // and the refusal names the path once; file names that are not UTF-8 reach the system as the
 // bytes the shell passed; the report shows hostile labels escaped; duplicate keys are refused.
+#include "core/session/session_evaluation.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/small_filesystem.h"
 
@@ -36,6 +37,7 @@ private slots:
     void specialFilesAreNotReplaced();
     void specialFilesAreNotRead();
     void sessionSpecificationKeysAndFieldNames();
+    void reportLeadsWithTheRunAsItHappens();
     void reportEscapesLabels();
     void duplicateKeyIsRefused();
     void unreadableSessionNamesThePathOnce();
@@ -326,11 +328,7 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     QJsonObject spec = root["specification"].toObject();
     QCOMPARE(spec["in_position_window_mm"].toDouble(), 0.01);
     QCOMPARE(spec["max_settle_time"].toDouble(), 100.0);
-    auto write = [&](const QJsonObject& o) {
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        f.write(QJsonDocument(o).toJson());
-    };
+    auto write = [&](const QJsonObject& o) { put(path, QJsonDocument(o).toJson()); };
     // A 5 mm window: the report's move-and-settle line uses it.
     spec["in_position_window_mm"] = 5.0;
     root["specification"] = spec;
@@ -371,6 +369,51 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
              run.out.constData());
     QVERIFY2(run.out.contains("for the reference model"), run.out.constData());
     QVERIFY(!run.out.contains("NaN") && !run.out.contains("nan"));
+}
+
+void TstCliFiles::reportLeadsWithTheRunAsItHappens() {
+    // Axis x by pole placement + ZPETC on the default 600 mm cubic: the linear design tracks to
+    // 0.0002 mm with |u| up to 4.71 V, while its digital implementation, limited to 2.5 V,
+    // saturates and loses the trajectory (the verdict is the implementation's). The report
+    // printed the design's figures beside "saturated yes"; the run that happens comes first now,
+    // labelled, with the core's figures (evaluateSession of the same session).
+    QTemporaryDir dir;
+    const QString path = dir.filePath("pp.json");
+    QCOMPARE(runCli({"new", "-o", path}).exitCode, 0);
+    QJsonObject root = QJsonDocument::fromJson(contents(path)).object();
+    QJsonArray axes = root["axes"].toArray();
+    QJsonObject x = axes[0].toObject();
+    x["method"] = "pole-placement-zpetc";
+    axes[0] = x;
+    root["axes"] = axes;
+    put(path, QJsonDocument(root).toJson());
+    xyt::Session session = xyt::Session::paperDefault();
+    session.axes[0].method = xyt::DesignMethod::PolePlacementZpetc;
+    QVERIFY(session.axes[0].pp.zpetcEnabled);
+    const xyt::SessionEvaluation evaluation = xyt::evaluateSession(session);
+    const xyt::AxisEvaluation& a = evaluation.axes[0];
+    QVERIFY(a.ok && a.digital);
+    QVERIFY(a.digital->metrics.saturated);
+    QVERIFY(a.digital->metrics.maxAbsError > 100.0); // 228 mm in the reproduction
+    QVERIFY(a.metrics.maxAbsError < 0.001);          // 0.0002 mm: the design's
+    const auto fixed = [](double v) { return QString::number(v, 'f', 4); };
+    const auto run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 0);
+    const QString out = QString::fromUtf8(run.out);
+    const QString axisX = out.section("== Axis y", 0, 0);
+    const QString asItRuns = QStringLiteral("  tracking as it runs (the digital implementation at Ts = 0.07 s, |u| "
+                                            "limited to 2.5 V): RMSE %1 mm, max |e| %2 mm")
+                                 .arg(fixed(a.digital->metrics.rmse), fixed(a.digital->metrics.maxAbsError));
+    const QString asDesigned = QStringLiteral("  tracking as designed (the linear loop at Ts, |u| over the limit "
+                                              "flagged, not applied): RMSE %1 mm, max |e| %2 mm")
+                                   .arg(fixed(a.metrics.rmse), fixed(a.metrics.maxAbsError));
+    QVERIFY2(axisX.contains(asItRuns), qPrintable(axisX));
+    QVERIFY2(axisX.contains(asDesigned), qPrintable(axisX));
+    QVERIFY(axisX.indexOf(asItRuns) < axisX.indexOf(asDesigned));
+    // The verdict says which run fails: the design flags |u| over the limit too, but only the
+    // implementation loses the trajectory.
+    QVERIFY2(axisX.contains("no saturation (as designed and as it runs)"), qPrintable(axisX));
+    QVERIFY2(axisX.contains("tracking error (as it runs)"), qPrintable(axisX));
 }
 
 QTEST_APPLESS_MAIN(TstCliFiles)

@@ -7,6 +7,7 @@
 #include "core/design/digital_controller.h"
 #include "core/identification/continuous_fit.h"
 #include "core/identification/identification.h"
+#include "core/identification/prediction_error.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance.h"
 
@@ -55,6 +56,9 @@ private slots:
     void arxRecoversPaper001Model();
     void outputErrorAndValidationFile();
     void continuousFitRecoversTheLowerBase();
+    void initialPositionIsWhereTheTableStood();
+    void zeroOrdersAreTheEstimatorsModels_data();
+    void zeroOrdersAreTheEstimatorsModels();
     void examplesRecoverTheirModels();
     void sessionTakesTheModel();
     void badInput_data();
@@ -169,6 +173,89 @@ void TstCliIdentify::continuousFitRecoversTheLowerBase() {
     QCOMPARE(run.json().value("continuous_poles").toArray().size(), 3);
 }
 
+void TstCliIdentify::initialPositionIsWhereTheTableStood() {
+    // The lower base at rest at 3.70 mm when the log starts, under a +-2.5 V square wave, with a
+    // +-0.05 mm measurement noise (fixed seed): the first logged sample is not where the table
+    // stood. initial_position is the position itself (README: "where the table stood"), 3.70 mm
+    // within the noise's effect on the fit, not its offset from that first sample.
+    const ThirdOrderPlant lower{77800.0, 125.3, 3665.0};
+    const double restMm = 3.70;
+    std::vector<double> u(400), t(400);
+    for (std::size_t k = 0; k < u.size(); ++k) {
+        t[k] = 0.01 * static_cast<double>(k);
+        u[k] = (k / 25) % 2 == 0 ? 2.5 : -2.5;
+    }
+    std::vector<double> y = simulateThirdOrderPlant(lower, u, 0.01);
+    const std::vector<double> noise = binaryInput(y.size(), 21); // +-2, scaled to +-0.05 mm
+    for (std::size_t k = 0; k < y.size(); ++k)
+        y[k] += restMm + 0.025 * noise[k];
+    const QString path = dir_.filePath("at_rest_3.70.csv");
+    writeCsv(path, "t,Command,Position", t, u, y);
+    const auto run = test::runCli({"identify", "--data", path, "--time-col", "t", "--input-col", "Command",
+                                   "--output-col", "Position", "--structure", "gt3"});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject plant = run.json().value("model").toObject().value("plant").toObject();
+    const double reported = plant.value("initial_position").toDouble();
+    QVERIFY2(std::abs(reported - restMm) <= 0.01, qPrintable(QString::number(reported, 'g', 10)));
+    // The first sample is 0.05 mm off the rest position: a figure relative to it is far off.
+    QVERIFY(test::near(std::abs(y.front() - restMm), 0.05, 1e-9));
+}
+
+void TstCliIdentify::zeroOrdersAreTheEstimatorsModels_data() {
+    // Orders each estimator takes (arx.h, prediction_error.h): na = 0 (FIR), nk = 0 (a direct
+    // feedthrough), nc, nd, nf = 0. The CLI refused every 0 ("from 1 to 100").
+    QTest::addColumn<QString>("structure");
+    QTest::addColumn<QList<int>>("orders"); // na nb nc nd nf nk
+    QTest::newRow("ARX na 0 (FIR)") << "arx" << QList<int>{0, 3, 0, 0, 0, 1};
+    QTest::newRow("ARX nk 0") << "arx" << QList<int>{2, 3, 0, 0, 0, 0};
+    QTest::newRow("OE nf 0") << "oe" << QList<int>{0, 3, 0, 0, 0, 1};
+    QTest::newRow("OE nk 0") << "oe" << QList<int>{0, 3, 0, 0, 2, 0};
+    QTest::newRow("BJ nc 0, nd 0") << "bj" << QList<int>{0, 3, 0, 0, 2, 1};
+    QTest::newRow("BJ nf 0, nk 0") << "bj" << QList<int>{0, 3, 1, 1, 0, 0};
+}
+
+void TstCliIdentify::zeroOrdersAreTheEstimatorsModels() {
+    QFETCH(QString, structure);
+    QFETCH(QList<int>, orders);
+    const int na = orders[0], nb = orders[1], nc = orders[2], nd = orders[3], nf = orders[4], nk = orders[5];
+    QStringList args{"identify", "--data", arx_, "--time-col", "t", "--input-col", "Command", "--output-col", "X",
+                     "--structure", structure, "--nb", QString::number(nb), "--nk", QString::number(nk)};
+    if (structure == "arx")
+        args << "--na" << QString::number(na);
+    if (structure != "arx")
+        args << "--nf" << QString::number(nf);
+    if (structure == "bj")
+        args << "--nc" << QString::number(nc) << "--nd" << QString::number(nd);
+    const auto run = test::runCli(args);
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    // The core estimator on the same record (written with 17 digits: read back exactly).
+    IoData data;
+    data.u = binaryInput(500, 11);
+    data.y = filterDifferenceEquation(b_, a_, data.u);
+    data.tsSeconds = 0.07;
+    PemOptions pem;
+    pem.search.maxIterations = 100; // the CLI's --max-iterations default
+    const PolynomialModel expected =
+        structure == "arx" ? estimateArx(data, ArxOrders{na, nb, nk}).model
+        : structure == "oe" ? estimateOe(data, OeOrders{nb, nf, nk}, pem).model
+                            : estimateBj(data, BjOrders{nb, nc, nd, nf, nk}, pem).model;
+    const QJsonObject polynomials = run.json().value("model").toObject().value("polynomials").toObject();
+    const std::pair<const char*, const std::vector<double>*> named[] = {
+        {"a", &expected.a}, {"b", &expected.b}, {"c", &expected.c}, {"d", &expected.d}, {"f", &expected.f}};
+    for (const auto& entry : named) {
+        const char* name = entry.first;
+        const std::vector<double>& want = *entry.second;
+        const QJsonArray got = polynomials.value(name).toArray();
+        QVERIFY2(got.size() == qsizetype(want.size()), name);
+        for (std::size_t i = 0; i < want.size(); ++i)
+            QVERIFY2(test::near(got[qsizetype(i)].toDouble(), want[i], 1e-12, 1e-15),
+                     qPrintable(QStringLiteral("%1[%2]: %3, the estimator's %4")
+                                    .arg(name).arg(i).arg(got[qsizetype(i)].toDouble(), 0, 'g', 17).arg(want[i], 0, 'g', 17)));
+    }
+    // nk leading zeros in B, then nb coefficients.
+    QCOMPARE(polynomials.value("b").toArray().size(), qsizetype(nk + nb));
+}
+
 void TstCliIdentify::examplesRecoverTheirModels() {
     // The committed synthetic logs (resources/examples/make_identification_logs.sh states how
     // they were made): the lower base under a square wave in LVM, paper 001's x axis under a
@@ -267,6 +354,8 @@ void TstCliIdentify::badInput_data() {
                              << "--ts";
     QTest::newRow("bad range") << QStringList{"--structure", "arx", "--range", "5:1"} + columns << "--range";
     QTest::newRow("negative order") << QStringList{"--structure", "arx", "--na", "-1"} + columns << "--na";
+    // A model without input coefficients: no estimator takes nb = 0.
+    QTest::newRow("nb 0") << QStringList{"--structure", "oe", "--nb", "0"} + columns << "--nb: must be a whole number from 1 to 100";
     QTest::newRow("decimate 0") << QStringList{"--structure", "arx", "--decimate", "0"} + columns << "--decimate";
     QTest::newRow("unknown option") << QStringList{"--structure", "arx", "--order", "3"} + columns << "--order";
     QTest::newRow("session without -o") << QStringList{"--structure", "arx", "--session", "s.json", "--axis", "x"} + columns

@@ -27,6 +27,7 @@ private slots:
     void badGridExitsWithTwo_data();
     void badGridExitsWithTwo();
     void marginCriterionAndMinimum();
+    void summaryWithoutPoints();
 };
 
 void TstCliSweep::contractKeysAndCsv() {
@@ -34,7 +35,7 @@ void TstCliSweep::contractKeysAndCsv() {
     const QString csv = dir.filePath("sweep.csv");
     const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "0.5:4:4", "--kp", "10:200:5",
                                                                  "--log", "--max-overshoot", "1",
-                                                                 "--csv", csv, "--threads", "2"});
+                                                                 "--csv", csv, "--threads", "2", "--points"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -83,7 +84,7 @@ void TstCliSweep::contractKeysAndCsv() {
 
 void TstCliSweep::strictSpecHasNoBest() {
     // Paper 000's strict "no overshoot": no type-2 design meets it (see core/study/specification.h).
-    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "1:3:3", "--kp", "10:50:3"});
+    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "1:3:3", "--kp", "10:50:3", "--points"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -196,7 +197,7 @@ void TstCliSweep::marginCriterionAndMinimum() {
     const QString csv = dir.filePath("sweep.csv");
     const QStringList grid = {"--wn", "0.5:4:4", "--kp", "10:200:4", "--log", "--max-overshoot", "5"};
     const auto free = xyt::test::runCli(kLowerCubic + grid + QStringList{"--criterion", "phase_margin",
-                                                                          "--csv", csv});
+                                                                          "--csv", csv, "--points"});
     QCOMPARE(free.exitCode, 0);
     double lo = INFINITY, hi = -INFINITY;
     for (const QJsonValue& row : free.json()["points"].toArray())
@@ -222,7 +223,8 @@ void TstCliSweep::marginCriterionAndMinimum() {
 
     const double minimum = 0.5 * (lo + hi);
     const auto strict = xyt::test::runCli(kLowerCubic + grid + QStringList{"--min-phase-margin",
-                                                                            QString::number(minimum, 'g', 17)});
+                                                                            QString::number(minimum, 'g', 17),
+                                                                            "--points"});
     QCOMPARE(strict.exitCode, 0);
     QCOMPARE(strict.json()["specification"].toObject()["min_phase_margin"].toDouble(), minimum);
     int feasible = 0;
@@ -236,6 +238,25 @@ void TstCliSweep::marginCriterionAndMinimum() {
         }
     QVERIFY(feasible > 0);
     QVERIFY(feasible < free.json()["feasible_count"].toInt());
+}
+
+void TstCliSweep::summaryWithoutPoints() {
+    // A 100 x 100 grid wrote 13 MB of points by default. Without --points the summary alone: the
+    // same best design, counts and diagnosis as with them (the same study), and no points.
+    const QStringList grid = {"--wn", "0.5:4:6", "--kp", "10:200:6", "--log", "--max-overshoot", "5"};
+    const auto summary = xyt::test::runCli(kLowerCubic + grid);
+    const auto full = xyt::test::runCli(kLowerCubic + grid + QStringList{"--points"});
+    QCOMPARE(summary.exitCode, 0);
+    QCOMPARE(full.exitCode, 0);
+    QJsonObject withPoints = full.json();
+    QCOMPARE(withPoints["points"].toArray().size(), 6);
+    QVERIFY(!summary.json().contains("points"));
+    withPoints.remove("points");
+    withPoints.remove("threads"); // the cores free on the shared machine may differ
+    QJsonObject without = summary.json();
+    without.remove("threads");
+    QCOMPARE(without, withPoints);
+    QVERIFY(without["best"].isObject());
 }
 
 QTEST_APPLESS_MAIN(TstCliSweep)

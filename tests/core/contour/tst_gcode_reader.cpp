@@ -60,6 +60,8 @@ private slots:
     void inchAndMillimetre();
     void incrementalAndModal();
     void commentsBlockNumbersAndWarnings();
+    void programEndStopsReadingSilently_data();
+    void programEndStopsReadingSilently();
     void arcEndWithinTolerance();
     void badPrograms_data();
     void badPrograms();
@@ -210,6 +212,37 @@ void TstGcodeReader::commentsBlockNumbersAndWarnings() {
     const auto bounded = readGcode(many).warnings;
     QCOMPARE(bounded.size(), xyt::kMaxGcodeWarnings + 1);
     QCOMPARE(bounded.back(), std::string("... and 50 more warnings"));
+}
+
+void TstGcodeReader::programEndStopsReadingSilently_data() {
+    // RS274/NGC: M2 and M30 end the program; a block's motion runs before its M code, and a
+    // controller runs nothing after the end.
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<int>("segments");
+    QTest::addColumn<int>("lines");
+    QTest::addColumn<QString>("warning"); // empty: none
+    QTest::newRow("M30 last") << "G1 X5 F60\nM30\n" << 1 << 2 << "";
+    QTest::newRow("M2 last") << "G1 X5 F60\nM2\n" << 1 << 2 << "";
+    QTest::newRow("M02 then delimiter and blanks") << "%\nG1 X5 F60\nM02\n%\n\n  \n" << 1 << 3 << "";
+    QTest::newRow("motion on the end's line") << "G1 X5 F60\nG1 Y5 M30\n" << 2 << 2 << "";
+    QTest::newRow("moves and bad words after M30 are not read")
+        << "G1 X5 F60\nM30\nG1 Y5\nG5 Q?\n" << 1 << 2 << "line 2: the lines after the program end M30 are not read";
+}
+
+void TstGcodeReader::programEndStopsReadingSilently() {
+    QFETCH(QString, program);
+    QFETCH(int, segments);
+    QFETCH(int, lines);
+    QFETCH(QString, warning);
+    const GcodeProgram p = readGcode(program.toStdString());
+    QCOMPARE(p.path.size(), std::size_t(segments));
+    QCOMPARE(p.lines, std::size_t(lines));
+    if (warning.isEmpty()) {
+        QVERIFY2(p.warnings.empty(), p.warnings.empty() ? "" : p.warnings.front().c_str());
+    } else {
+        QCOMPARE(p.warnings.size(), std::size_t(1));
+        QCOMPARE(QString::fromStdString(p.warnings.front()), warning);
+    }
 }
 
 void TstGcodeReader::arcEndWithinTolerance() {
@@ -363,13 +396,13 @@ void TstGcodeReader::examples_data() {
     QTest::addColumn<double>("circleRadius"); // 0: not a single full circle
     QTest::addColumn<int>("warnings");
     // The papers' circles (paper 000: 25 mm at 90 mm/min; paper 001: 30 mm at 180 mm/min),
-    // each a rapid to the top then one clockwise circle; M30 warns.
-    QTest::newRow("circle_25mm") << "circle_25mm.nc" << 2 << 25.0 << 1;
-    QTest::newRow("circle_30mm") << "circle_30mm.nc" << 2 << 30.0 << 1;
-    QTest::newRow("square") << "square_sharp_corners.nc" << 4 << 0.0 << 1;
-    QTest::newRow("star") << "star.nc" << 6 << 0.0 << 1;
-    // 10 XY moves (the first G0 X0 Y0 is already there); 9 Z words, M5 and M30.
-    QTest::newRow("engraving") << "engraving_xy.nc" << 10 << 0.0 << 11;
+    // each a rapid to the top then one clockwise circle; the program end M30 does not warn.
+    QTest::newRow("circle_25mm") << "circle_25mm.nc" << 2 << 25.0 << 0;
+    QTest::newRow("circle_30mm") << "circle_30mm.nc" << 2 << 30.0 << 0;
+    QTest::newRow("square") << "square_sharp_corners.nc" << 4 << 0.0 << 0;
+    QTest::newRow("star") << "star.nc" << 6 << 0.0 << 0;
+    // 10 XY moves (the first G0 X0 Y0 is already there); 9 Z words and M5 warn, M30 does not.
+    QTest::newRow("engraving") << "engraving_xy.nc" << 10 << 0.0 << 10;
 }
 
 void TstGcodeReader::examples() {
