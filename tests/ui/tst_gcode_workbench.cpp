@@ -6,6 +6,7 @@
 #include "core/contour/contour_metrics.h"
 #include "core/contour/gcode_reader.h"
 #include "core/session/program_trajectory.h"
+#include "tests/support/ballbar_program.h"
 #include "tests/support/gui_checks.h"
 #include "tests/support/tolerance.h"
 #include "ui/main_window.h"
@@ -26,6 +27,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTest>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QToolButton>
 
@@ -52,6 +54,7 @@ private slots:
     void ballbarViewShowsTheIsoFigures();
     void longProgramAtAFineStepSaysTheLiveViewIsLimited();
     void circlePresetStillDrawsAsBefore();
+    void ballbarProgramShowsBothDirections();
 
 private:
     QString example(const QString& name) const {
@@ -391,12 +394,15 @@ void TstGcodeWorkbench::ballbarViewShowsTheIsoFigures() {
     // Both runs drawn; the metrics panel names the same G.
     QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
     QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
-    QVERIFY(window_->metricsPanel()->contourText().contains(
-        QString("G %1, F %2/%3, H %4 mm")
-            .arg(QString::number(iso.circularDeviationG, 'f', 4),
-                 QString::number(iso.radialDeviationFMax, 'f', 4),
-                 QString::number(iso.radialDeviationFMin, 'f', 4),
-                 QString::number(*iso.hysteresisH, 'f', 4))));
+    const Iso230Circular reverse = iso230Circular(test.reverseX, test.reverseY, test.nominal);
+    QVERIFY2(window_->metricsPanel()->contourText().contains(
+                 QString("G CW %1, CCW %2, F %3/%4, H %5 mm")
+                     .arg(QString::number(iso.circularDeviationG, 'f', 4),
+                          QString::number(reverse.circularDeviationG, 'f', 4),
+                          QString::number(iso.radialDeviationFMax, 'f', 4),
+                          QString::number(iso.radialDeviationFMin, 'f', 4),
+                          QString::number(*iso.hysteresisH, 'f', 4))),
+             qPrintable(window_->metricsPanel()->contourText()));
     ballbar->setChecked(false);
     QVERIFY(!plot->polar());
     QVERIFY(plot->fMaxCircle()->data()->isEmpty());
@@ -433,6 +439,39 @@ void TstGcodeWorkbench::circlePresetStillDrawsAsBefore() {
              static_cast<int>(session_->axisEvaluation(0).run.t.size()));
     QVERIFY(plot->errorBands()[0]->data()->isEmpty());
     QVERIFY(plot->figuresText().startsWith("Contour error (radial"));
+}
+
+void TstGcodeWorkbench::ballbarProgramShowsBothDirections() {
+    // A ballbar program as machine shops write it: before, the view had no ISO 230-4 figures
+    // for it, and nothing said why.
+    window_->lowerTabs()->setCurrentWidget(window_->contourPlot());
+    QTemporaryDir dir;
+    QFile f(dir.filePath("ballbar.nc"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(test::kBallbarProgram);
+    f.close();
+    QVERIFY2(window_->trajectoryEditor()->loadProgramFile(f.fileName()),
+             qPrintable(window_->trajectoryEditor()->programField()->toolTip()));
+    QVERIFY(session_->evaluation().program && session_->evaluation().program->circular);
+    const ContourCircularTest& test = *session_->evaluation().program->circular;
+    QVERIFY(test.fromProgram);
+    // The figures recomputed by the core's iso230Circular from the program's two circles.
+    const Iso230Circular both = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal);
+    const Iso230Circular reverse = iso230Circular(test.reverseX, test.reverseY, test.nominal);
+    QVERIFY(both.hysteresisH);
+    const QString expected = QString("ISO 230-4: G CW %1, CCW %2, F %3/%4, H %5 mm")
+                                 .arg(QString::number(both.circularDeviationG, 'f', 4),
+                                      QString::number(reverse.circularDeviationG, 'f', 4),
+                                      QString::number(both.radialDeviationFMax, 'f', 4),
+                                      QString::number(both.radialDeviationFMin, 'f', 4),
+                                      QString::number(*both.hysteresisH, 'f', 4));
+    QVERIFY2(window_->metricsPanel()->contourText().contains(expected),
+             qPrintable(window_->metricsPanel()->contourText() + " | expected " + expected));
+    ContourPlot* plot = window_->contourPlot();
+    QVERIFY(plot->polarAvailable());
+    window_->contourControls()->polarView()->setChecked(true);
+    QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
+    QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
 }
 
 QTEST_MAIN(TstGcodeWorkbench)
