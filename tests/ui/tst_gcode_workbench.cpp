@@ -16,8 +16,10 @@
 #include "ui/panels/trajectory_editor.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/contour_points.h"
+#include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -25,12 +27,14 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QTest>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace xyt;
@@ -55,6 +59,7 @@ private slots:
     void longProgramAtAFineStepSaysTheLiveViewIsLimited();
     void circlePresetStillDrawsAsBefore();
     void ballbarProgramShowsBothDirections();
+    void octaveExportIsDisabledOnAProgram();
 
 private:
     QString example(const QString& name) const {
@@ -472,6 +477,51 @@ void TstGcodeWorkbench::ballbarProgramShowsBothDirections() {
     window_->contourControls()->polarView()->setChecked(true);
     QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
     QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
+}
+
+void TstGcodeWorkbench::octaveExportIsDisabledOnAProgram() {
+    // The Octave script has no closed form for a program's feed profile: the action is
+    // disabled, saying why, instead of refusing after a file name was asked for.
+    QAction* octave = window_->files()->octaveExportAction();
+    QVERIFY(octave);
+    const auto enabledForTheCubic = [&] {
+        return octave->isEnabled() && !octave->toolTip().contains("G-code");
+    };
+    QVERIFY(enabledForTheCubic());
+    loadExample("square_sharp_corners.nc");
+    QVERIFY(!octave->isEnabled());
+    QVERIFY2(octave->toolTip().startsWith("Not for a G-code trajectory") &&
+                 octave->toolTip().contains("CSV"),
+             qPrintable(octave->toolTip()));
+    // Back to the cubic and to the circle through the editor: enabled again.
+    QComboBox* kind = window_->trajectoryEditor()->kindBox();
+    kind->setCurrentIndex(0);
+    emit kind->activated(0);
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Cubic);
+    QVERIFY(enabledForTheCubic());
+    kind->setCurrentIndex(1);
+    emit kind->activated(1);
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Circle);
+    QVERIFY(enabledForTheCubic());
+    // Undo back to the program, then redo: the action follows each step.
+    session_->undoStack()->undo();
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Gcode);
+    QVERIFY(!octave->isEnabled());
+    session_->undoStack()->redo();
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Cubic);
+    QVERIFY(enabledForTheCubic());
+    // A reset to the paper's default cubic (File > New) from the program.
+    session_->undoStack()->undo();
+    QVERIFY(!octave->isEnabled());
+    session_->reset(Session::paperDefault());
+    QVERIFY(enabledForTheCubic());
+    // The disabled action's tooltip is shown by its menu.
+    const auto menus = window_->findChildren<QMenu*>();
+    const bool shown = std::any_of(menus.begin(), menus.end(), [&](QMenu* m) {
+        return m->actions().contains(octave) && m->toolTipsVisible();
+    });
+    QVERIFY(shown);
 }
 
 QTEST_MAIN(TstGcodeWorkbench)
