@@ -5,6 +5,7 @@
 
 #include "core/model/errors.h"
 #include "core/io/file_io.h"
+#include "core/simulation/resample.h"
 #include "core/simulation/trajectory.h"
 #include "ui/session/session_file.h"
 
@@ -226,15 +227,24 @@ void writeTextFile(const std::string& argument, const QString& path, const QStri
     writeFile(argument, path, [&bytes](const ByteSink& sink) { sink(bytes); });
 }
 
-void writeCsv(const QString& path, const SimulationResult& run) {
+void writeCsv(const QString& path, const SimulationResult& run, const SimulationResult* digital) {
     requireFiniteSignals(run, "--csv");
-    writeFile("--csv", path, [&run](const ByteSink& sink) {
-        sink("t,r,y,e,u\n");
+    const std::vector<std::size_t> held = digital ? heldSampleIndices(digital->t, run.t) : std::vector<std::size_t>();
+    writeFile("--csv", path, [&](const ByteSink& sink) {
+        sink(digital ? "t,r,y,e,u,t_digital,y_digital,e_digital,u_digital\n" : "t,r,y,e,u\n");
         char line[160];
         for (std::size_t k = 0; k < run.t.size(); ++k) {
-            const int n = std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g\n", run.t[k],
-                                        run.r[k], run.y[k], run.e[k], run.u[k]);
+            int n = std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g", run.t[k], run.r[k],
+                                  run.y[k], run.e[k], run.u[k]);
             sink(std::string_view(line, static_cast<std::size_t>(n)));
+            if (digital)
+                for (const std::vector<double>* v : {&digital->t, &digital->y, &digital->e, &digital->u}) {
+                    const double d = (*v)[held[k]];
+                    n = std::isfinite(d) ? std::snprintf(line, sizeof line, ",%.17g", d)
+                                         : std::snprintf(line, sizeof line, ",");
+                    sink(std::string_view(line, static_cast<std::size_t>(n)));
+                }
+            sink("\n");
         }
     });
 }

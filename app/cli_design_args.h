@@ -98,7 +98,11 @@ InvalidInput cannotWrite(const std::string& argument, const FileError& e);
 /// The same for a text held in memory.
 void writeTextFile(const std::string& argument, const QString& path, const QString& text);
 /// t,r,y,e,u of one run, streamed. @throws InvalidInput @p field when a signal is not finite.
-void writeCsv(const QString& path, const SimulationResult& run);
+/// With @p digital (simulate --digital), also t_digital,y_digital,e_digital,u_digital: at each
+/// row the digital run's sample held at t (the last at or before it, heldSampleIndices; with
+/// --controller-ts equal to --dt the row's own sample), 17 significant digits; empty where not
+/// finite.
+void writeCsv(const QString& path, const SimulationResult& run, const SimulationResult* digital = nullptr);
 
 /// "GM 45.9 dB at 60.5 rad/s, PM 88.1 deg at 0.637 rad/s, delay margin 2.42 s, Ms 1.02" (for the
 /// text reports; infinite margins as inf, and a word when the closed loop is unstable).

@@ -110,6 +110,12 @@ QJsonObject isoJson(const ContourCircularTest& c) {
             {"F_min", number(iso.radialDeviationFMin)},
             {"H", iso.hysteresisH ? number(*iso.hysteresisH) : QJsonValue()},
             {"G_bidirectional", iso.bidirectionalG ? number(*iso.bidirectionalG) : QJsonValue()},
+            {"G_reverse", c.reverseIso ? number(c.reverseIso->circularDeviationG) : QJsonValue()},
+            {"F_max_reverse", c.reverseIso ? number(c.reverseIso->radialDeviationFMax) : QJsonValue()},
+            {"F_min_reverse", c.reverseIso ? number(c.reverseIso->radialDeviationFMin) : QJsonValue()},
+            {"runs", c.fromProgram ? "program" : "circle alone"},
+            {"line", static_cast<qint64>(c.line)},
+            {"reverse_line", c.reverseLine ? QJsonValue(static_cast<qint64>(c.reverseLine)) : QJsonValue()},
             {"reversal_spikes", spikes},
             {"samples", static_cast<qint64>(iso.samples)},
             {"reverse_samples", static_cast<qint64>(c.reverseX.size())}};

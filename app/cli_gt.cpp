@@ -42,9 +42,10 @@ const QStringList kDigitalOptions{"digital",    "controller-ts", "discretization
                                   "encoder-resolution", "dac-bits", "anti-windup", "tracking-time"};
 
 /// The run of the design as the firmware runs it (simulate --digital): the digital PI at
-/// --controller-ts with the implementation options, on the same trajectory and duration.
+/// --controller-ts with the implementation options, on the same trajectory and duration; its
+/// signals in @p run (for --csv).
 QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesign& design,
-                        const SimulationSetup& setup, double window) {
+                        const SimulationSetup& setup, double window, SimulationResult& runOut) {
     const double ts = positiveNumber(args, "controller-ts", 0.01);
     const AntiWindup antiWindup = parseAntiWindup(args);
     const double trackingTime = args.number("tracking-time", 0.0);
@@ -97,6 +98,7 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
                                 .arg(cycle->peakToPeak, 0, 'g', 4));
         }
     }
+    runOut = run.result;
     return {{"controller_ts", ts},
             {"discretization", QString::fromStdString(discretizationName(parseDiscretization(args, PiDiscretization::Tustin)))},
             {"delay_samples", options.delaySamples},
@@ -154,8 +156,12 @@ int runSimulate(const QStringList& argv) {
         durationJson.insert("cap", number(cap));
         durationJson.insert("capped", settles && duration == cap && cap > tf);
     }
+    QJsonValue digital;
+    SimulationResult digitalRun;
+    if (args.flag("digital"))
+        digital = digitalJson(args, in, design, setup, window, digitalRun);
     if (const auto csv = args.value("csv"))
-        writeCsv(*csv, run);
+        writeCsv(*csv, run, args.flag("digital") ? &digitalRun : nullptr);
     QJsonObject out = designJson(design);
     insertSetupJson(out, setup);
     out.insert("duration_choice", durationJson);
@@ -164,7 +170,7 @@ int runSimulate(const QStringList& argv) {
     out.insert("move_and_settle", move ? QJsonValue(moveSettleJson(moveSettleMetrics(run, *move, window)))
                                        : QJsonValue());
     if (args.flag("digital"))
-        out.insert("digital", digitalJson(args, in, design, setup, window));
+        out.insert("digital", digital);
     print(out);
     return 0;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/contour_run.h"
 
+#include "core/contour/ballbar_circles.h"
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
 #include "core/model/errors.h"
@@ -123,6 +124,37 @@ void addAxisWarnings(const ContourTrace& t, std::vector<std::string>& warnings) 
 
 } // namespace
 
+std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program, const ContourTrace& trace,
+                                                        const Iso230Options& iso, std::vector<std::string>& warnings) {
+    const BallbarCircles circles = findBallbarCircles(program);
+    if (!circles.first)
+        return std::nullopt;
+    const PathSegment& circle = program.path.segments()[*circles.first];
+    ContourCircularTest test;
+    test.nominal = {circle.centre(), circle.radius()};
+    test.clockwise = circle.sweep() < 0.0;
+    test.fromProgram = true;
+    test.line = program.segments[*circles.first].line;
+    pointsOnSegment(trace, *circles.first, test.x, test.y);
+    if (circles.opposite) {
+        test.reverseLine = program.segments[*circles.opposite].line;
+        pointsOnSegment(trace, *circles.opposite, test.reverseX, test.reverseY);
+    }
+    if (!circles.note.empty())
+        warnings.push_back("ISO 230-4: " + circles.note);
+    if (test.x.size() < 3 || (circles.opposite && test.reverseX.size() < 3)) {
+        warnings.push_back("ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures");
+        return std::nullopt;
+    }
+    if (circles.opposite) {
+        test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal, iso);
+        test.reverseIso = iso230Circular(test.reverseX, test.reverseY, test.nominal, iso);
+    } else {
+        test.iso = iso230Circular(test.x, test.y, test.nominal, iso);
+    }
+    return test;
+}
+
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
                              const ContourRunOptions& options) {
     const std::vector<double> feeds = programFeeds(program, options.profile.feedScale);
@@ -144,6 +176,7 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         ContourCircularTest test;
         test.nominal = {circle.centre(), circle.radius()};
         test.clockwise = circle.sweep() < 0.0;
+        test.line = program.segments[c].line;
         // As a ballbar test runs: the circle alone from rest at its start point, once in the
         // program's direction and once the other way, so that the approach to the circle (a
         // rapid the slow loops have not settled from) does not enter G and F.
@@ -157,10 +190,13 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         pointsOnSegment(test.reverse, 0, test.reverseX, test.reverseY);
         if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
             test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal, options.iso);
+            test.reverseIso = iso230Circular(test.reverseX, test.reverseY, test.nominal, options.iso);
             out.circular = std::move(test);
         } else {
             out.warnings.push_back("the circle lasts fewer than 3 samples: no ISO 230-4 figures");
         }
+    } else {
+        out.circular = ballbarTestOfProgram(program, out.trace, options.iso, out.warnings);
     }
     return out;
 }

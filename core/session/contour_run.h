@@ -36,16 +36,28 @@ struct ContourTrace {
 };
 
 /**
- * The circular test of a program that is one full circle, run as a ballbar test is: the circle
- * alone (the program's approach left out), from rest at its start point at its programmed
- * feed, once in the program's direction and once the other way (for the hysteresis).
+ * The circular test of ISO 230-4 on a program's circles.
+ *  - A program that is one full circle is run as a ballbar test is: the circle alone (the
+ *    program's approach left out), from rest at its start point at its programmed feed, once in
+ *    the program's direction and once the other way (for the hysteresis).
+ *  - A ballbar program as machine shops write it (full circles among feed-in and feed-out moves,
+ *    findBallbarCircles): the runs are the program's own, its first full circle and the first
+ *    one on the same circle the other way, measured on the program's trace where the reference
+ *    lies on them (the feed-in moves bring the axes onto the circle as on the machine). With
+ *    one direction only, G and F without H (ContourRun::warnings says why).
  */
 struct ContourCircularTest {
     NominalCircle nominal;
-    bool clockwise = true; ///< the program's direction
-    Iso230Circular iso;    ///< of the forward run; H and G(b) with the reverse run
-    ContourTrace forward;  ///< the circle in the program's direction
-    ContourTrace reverse;  ///< the same circle run the other way
+    bool clockwise = true; ///< the direction of the first run
+    Iso230Circular iso;    ///< of the first run; H and G(b) with the reverse run
+    /// G and F of the reverse run alone (about its own least-squares circle and the nominal).
+    std::optional<Iso230Circular> reverseIso;
+    /// The runs are the program's own circles (not the circle re-run alone).
+    bool fromProgram = false;
+    std::size_t line = 0;        ///< the program line of the first run's circle
+    std::size_t reverseLine = 0; ///< of the reverse run's (0: re-run alone, or none)
+    ContourTrace forward;  ///< the circle in the program's direction (re-run alone only)
+    ContourTrace reverse;  ///< the same circle run the other way (re-run alone only)
     /// The traced points of each run (x, y forward; reverseX, reverseY reverse).
     std::vector<double> x, y, reverseX, reverseY;
 };
@@ -54,7 +66,8 @@ struct ContourCircularTest {
 struct ContourRun {
     ContourTrace trace;
     ContourErrorResult contour; ///< of trace (G0 rapids left out of the statistics)
-    std::optional<ContourCircularTest> circular; ///< when program.isSingleFullCircle()
+    /// When the program holds a full circle (see ContourCircularTest).
+    std::optional<ContourCircularTest> circular;
     /// The program's warnings, then each axis' ("x axis: |u| reached the 2.5 V limit ...").
     std::vector<std::string> warnings;
 };
@@ -63,12 +76,22 @@ struct ContourRun {
  * Runs @p program with the session's axes (x = axes[0] follows x(t), y = axes[1] follows y(t)),
  * each with its own method and controller, under the session's actuator limit. The profile is
  * planned once; each axis starts at rest at the program's start point. When the program is a
- * single full circle, that circle is also run alone both ways for the ISO 230-4 figures
- * (ContourCircularTest).
+ * single full circle, that circle is also run alone both ways for the ISO 230-4 figures; when it
+ * holds full circles among other moves, the figures are of its own runs (ContourCircularTest).
  * @throws InvalidInput naming the session field of a design that cannot be built
  *         ("axes[1].gt.wn", "axes[0].pp.b", "umax") or the option ("dt", "max_accel", ...).
  */
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
                              const ContourRunOptions& options = {});
+
+/**
+ * The circular test of a program holding full circles among other moves, on its traced run
+ * @p trace (findBallbarCircles; see ContourCircularTest): unset when it holds no full circle,
+ * or when a circle lasts fewer than 3 samples (said in @p warnings, as is
+ * BallbarCircles::note, each prefixed "ISO 230-4: ").
+ * @throws InvalidInput as iso230Circular.
+ */
+std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program, const ContourTrace& trace,
+                                                        const Iso230Options& iso, std::vector<std::string>& warnings);
 
 } // namespace xyt

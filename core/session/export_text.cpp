@@ -4,10 +4,12 @@
 #include "core/model/errors.h"
 #include "core/design/pole_placement.h"
 #include "core/io/text_escape.h"
+#include "core/simulation/resample.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/trajectory.h"
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cctype>
@@ -527,6 +529,31 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
     return out.str();
 }
 
+namespace {
+
+/// The session's dt grid over the run: a continuous axis' own times, else k dt up to the run's
+/// duration (both pole-placement axes run at their Ts, which the export does not use as its grid).
+std::vector<double> csvTimes(const Session& session, const SessionEvaluation& evaluation) {
+    for (const AxisEvaluation& a : evaluation.axes)
+        if (a.gt && a.run.dtSeconds == session.trajectory.dtSeconds)
+            return a.run.t;
+    try {
+        return sampleTimes(evaluation.duration.seconds, session.trajectory.dtSeconds);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(e.field() == "dt" ? "trajectory.dt" : "trajectory.duration", e.reason());
+    }
+}
+
+/// For each exported time, the sample of @p run shown there: the row itself when the run is on
+/// the exported grid, else the sample held (the last one at or before the time).
+std::vector<std::size_t> csvRows(const std::vector<double>& runTimes, const std::vector<double>& times) {
+    if (runTimes == times)
+        return {};
+    return heldSampleIndices(runTimes, times);
+}
+
+} // namespace
+
 void exportCsv(const Session& session, const SessionEvaluation& evaluation, const ByteSink& sink) {
     const AxisEvaluation& x = validAxis(evaluation, 0);
     const AxisEvaluation& y = validAxis(evaluation, 1);
@@ -548,24 +575,51 @@ void exportCsv(const Session& session, const SessionEvaluation& evaluation, cons
                                            " s (an unstable loop, or model_unit_scale or the "
                                            "trajectory out of range); nothing was exported");
     }
-    // The second axis on the first one's time base (copied only when the bases differ).
-    const bool sameBase = y.run.t == x.run.t;
-    const auto onX = [&](const std::vector<double>& v) {
-        return sameBase ? std::vector<double>() : resampleLinear(y.run.t, v, x.run.t);
+    const std::vector<double> times = csvTimes(session, evaluation);
+    const std::array<const AxisEvaluation*, 2> axes{&x, &y};
+    std::array<std::vector<std::size_t>, 2> runRow, digitalRow;
+    for (std::size_t i = 0; i < 2; ++i) {
+        runRow[i] = csvRows(axes[i]->run.t, times);
+        if (axes[i]->digital)
+            digitalRow[i] = heldSampleIndices(axes[i]->digital->run.result.t, times);
+    }
+    sink("t,r_" + ix + ",y_" + ix + ",e_" + ix + ",u_" + ix + ",r_" + iy + ",y_" + iy + ",e_" + iy + ",u_" + iy +
+         ",t_digital_" + ix + ",y_digital_" + ix + ",e_digital_" + ix + ",u_digital_" + ix + ",t_digital_" + iy +
+         ",y_digital_" + iy + ",e_digital_" + iy + ",u_digital_" + iy + "\n");
+    std::string line;
+    char cell[40];
+    const auto put = [&](const char* format, double v) {
+        const int n = std::isfinite(v) ? std::snprintf(cell, sizeof cell, format, v) : 0;
+        line.append(cell, static_cast<std::size_t>(n));
     };
-    const std::vector<double> ry = onX(y.run.r), yy = onX(y.run.y), ey = onX(y.run.e), uy = onX(y.run.u);
-    const auto at = [&](const std::vector<double>& resampled, const std::vector<double>& own,
-                        std::size_t k) { return sameBase ? own[k] : resampled[k]; };
-    sink("t,r_" + ix + ",y_" + ix + ",e_" + ix + ",u_" + ix + ",r_" + iy + ",y_" + iy + ",e_" + iy +
-         ",u_" + iy + "\n");
-    char line[320];
-    for (std::size_t k = 0; k < x.run.t.size(); ++k) {
-        const int n = std::snprintf(line, sizeof line,
-                                    "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n",
-                                    x.run.t[k], x.run.r[k], x.run.y[k], x.run.e[k], x.run.u[k],
-                                    at(ry, y.run.r, k), at(yy, y.run.y, k), at(ey, y.run.e, k),
-                                    at(uy, y.run.u, k));
-        sink(std::string_view(line, static_cast<std::size_t>(n)));
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        line.clear();
+        put("%.10g", times[k]);
+        for (std::size_t i = 0; i < 2; ++i) {
+            const SimulationResult& run = axes[i]->run;
+            const std::size_t j = runRow[i].empty() ? k : runRow[i][k];
+            for (const std::vector<double>* v : {&run.r, &run.y, &run.e, &run.u}) {
+                line += ',';
+                put("%.10g", (*v)[j]);
+            }
+        }
+        // The digital runs with 17 digits: they read back as the core computed them, to
+        // compare with the firmware's logs bit for bit. A non-finite value (a diverging
+        // implementation) is left empty.
+        for (std::size_t i = 0; i < 2; ++i) {
+            if (!axes[i]->digital) {
+                line += ",,,,";
+                continue;
+            }
+            const SimulationResult& d = axes[i]->digital->run.result;
+            const std::size_t j = digitalRow[i][k];
+            for (const std::vector<double>* v : {&d.t, &d.y, &d.e, &d.u}) {
+                line += ',';
+                put("%.17g", (*v)[j]);
+            }
+        }
+        line += '\n';
+        sink(line);
     }
 }
 

@@ -71,8 +71,19 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
                                const ExportOptions& options = {});
 
 /**
- * The simulated signals as CSV: t,r_<x>,y_<x>,e_<x>,u_<x>,r_<y>,... on the first axis' time
- * base (the second axis is linearly interpolated onto it when its sample time differs).
+ * The simulated signals as CSV, one row per step of the session's dt (trajectory.dt) over the
+ * run: t,r_<x>,y_<x>,e_<x>,u_<x>,r_<y>,y_<y>,e_<y>,u_<y> (10 significant digits), then the
+ * digital implementation of each axis (DigitalEvaluation::run, as the firmware runs it):
+ * t_digital_<x>,y_digital_<x>,e_digital_<x>,u_digital_<x>, the same for <y> (17 significant
+ * digits, so they read back exactly).
+ * A Guillemin-Truxal axis is simulated at dt, so its columns are its samples. A pole-placement
+ * axis and every digital implementation run at their own sample time (Ts, controller_ts): each
+ * row shows the sample held at t, the last one at or before it (heldSampleIndices), as the
+ * controller's output register holds u; t_digital_<id> is the instant of that sample, so the
+ * rows where t_digital changes are the controller's samples, one to one with a firmware log.
+ * y_digital is the plant output at that instant, e_digital = r - y_digital, u_digital the
+ * controller's saturated command (before the DAC). Digital cells are empty for an axis without
+ * a digital implementation, or where its value is not finite.
  * @throws InvalidInput "axes[i]" when an axis has no simulation or a simulated signal is not
  *         finite (before anything is written to @p sink).
  */

@@ -24,4 +24,18 @@ std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vec
     return out;
 }
 
+std::vector<std::size_t> heldSampleIndices(const std::vector<double>& ts, const std::vector<double>& t) {
+    std::vector<std::size_t> out(t.size(), 0);
+    if (ts.size() < 2)
+        return out;
+    const double slack = 1e-9 * (ts[1] - ts[0]);
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        while (j + 1 < ts.size() && ts[j + 1] <= t[k] + slack)
+            ++j;
+        out[k] = j;
+    }
+    return out;
+}
+
 } // namespace xyt

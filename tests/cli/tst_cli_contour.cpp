@@ -5,6 +5,7 @@
 #include "core/contour/gcode_reader.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
+#include "tests/support/ballbar_program.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance.h"
 
@@ -36,6 +37,7 @@ private slots:
     void circleMatchesTheCore_data();
     void circleMatchesTheCore();
     void squareCornersAndCsv();
+    void ballbarProgramGivesBothDirections();
     void badInput_data();
     void badInput();
 };
@@ -83,6 +85,51 @@ void TstCliContour::circleMatchesTheCore() {
     for (const QJsonValue& w : o["warnings"].toArray())
         QVERIFY2(!w.toString().contains("M30"), qPrintable(w.toString()));
     QCOMPARE(o["x_axis"].toObject()["method"].toString(), method);
+}
+
+void TstCliContour::ballbarProgramGivesBothDirections() {
+    // A ballbar program as machine shops write it (feed-in arc, clockwise circle, feed-out and
+    // feed-in arcs, counter-clockwise circle): before, "iso230_4" was null and nothing said why.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("ballbar.nc");
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(xyt::test::kBallbarProgram);
+    f.close();
+    const auto run = xyt::test::runCli({"contour", "--gcode", path, "--dt", "0.002"});
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject iso = run.json()["iso230_4"].toObject();
+    QVERIFY2(!iso.isEmpty(), run.out.constData());
+    // The core's figures of the same run (the JSON prints 17 digits).
+    xyt::ContourRunOptions options;
+    options.profile.dtSeconds = 0.002;
+    options.profile.maxAccelMmPerS2 = 100.0; // the CLI's default
+    const auto core = xyt::runProgramContour(xyt::Session::paperDefault(), xyt::readGcode(xyt::test::kBallbarProgram),
+                                             options);
+    QVERIFY(core.circular && core.circular->reverseIso && core.circular->iso.hysteresisH);
+    QCOMPARE(iso["runs"].toString(), QStringLiteral("program"));
+    QCOMPARE(iso["direction"].toString(), QStringLiteral("clockwise"));
+    QCOMPARE(iso["line"].toInteger(), qint64(xyt::test::kBallbarClockwiseLine));
+    QCOMPARE(iso["reverse_line"].toInteger(), qint64(xyt::test::kBallbarCounterClockwiseLine));
+    XYT_COMPARE_NEAR(iso["G"].toDouble(), core.circular->iso.circularDeviationG, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["G_reverse"].toDouble(), core.circular->reverseIso->circularDeviationG, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["F_max"].toDouble(), core.circular->iso.radialDeviationFMax, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["F_min_reverse"].toDouble(), core.circular->reverseIso->radialDeviationFMin, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["H"].toDouble(), *core.circular->iso.hysteresisH, 1e-15, 0.0);
+    QCOMPARE(iso["nominal"].toObject()["radius"].toDouble(), xyt::test::kBallbarRadiusMm);
+    // One direction only: G and F, no H, and the warnings say why.
+    QFile one(dir.filePath("one_way.nc"));
+    QVERIFY(one.open(QIODevice::WriteOnly));
+    one.write("G0 X15 Y0\nG2 X25 Y0 I5 J0 F120\nG2 X25 Y0 I-25 J0\n");
+    one.close();
+    const auto oneWay = xyt::test::runCli({"contour", "--gcode", one.fileName(), "--dt", "0.002"});
+    QCOMPARE(oneWay.exitCode, 0);
+    const QJsonObject oneIso = oneWay.json()["iso230_4"].toObject();
+    QVERIFY(oneIso["G"].isDouble() && oneIso["H"].isNull() && oneIso["G_reverse"].isNull());
+    QVERIFY2(oneWay.json()["warnings"].toArray().contains(
+                 QStringLiteral("ISO 230-4: the program runs its full circle (line 3) one way only: no circular "
+                                "hysteresis H, which needs a clockwise and a counter-clockwise run of the same circle")),
+             oneWay.out.constData());
 }
 
 void TstCliContour::squareCornersAndCsv() {

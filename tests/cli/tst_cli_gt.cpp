@@ -14,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cstdlib>
 #include <numbers>
 
 namespace {
@@ -199,11 +200,13 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
 // Issue 12: simulate --digital runs the sampled-data loop of the core with the options given;
 // its figures equal simulateSampledPi's (JSON round trip only), and the options are echoed.
 void TstCliGt::simulateDigitalMatchesCore() {
+    QTemporaryDir dir;
+    const QString csvPath = dir.filePath("digital.csv");
     const auto run = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf", "600",
                                         "--tf", "130", "--duration", "160", "--digital", "--controller-ts", "0.02",
                                         "--discretization", "backward-euler", "--delay-samples", "1",
                                         "--encoder-resolution", "0.001", "--dac-bits", "16", "--anti-windup",
-                                        "back-calculation", "--tracking-time", "3"});
+                                        "back-calculation", "--tracking-time", "3", "--csv", csvPath});
     QCOMPARE(run.exitCode, 0);
     const QJsonObject d = run.json()["digital"].toObject();
     QCOMPARE(d["controller_ts"].toDouble(), 0.02);
@@ -231,6 +234,24 @@ void TstCliGt::simulateDigitalMatchesCore() {
     XYT_COMPARE_NEAR(d["tracking"]["max_abs_u"].toDouble(), m.maxAbsU, 1e-15, 0.0);
     QCOMPARE(d["poles"].toArray().size(), 3 + 2 + 1); // plant, PI (I, e[k-1]), one delay sample
     QVERIFY(d["warnings"].isArray());
+    // --csv holds the digital run beside the continuous one (engineers compare it with their
+    // firmware's logs): at each row of --dt (0.01 s) the controller's last sample at or before
+    // t (every other row at --controller-ts 0.02), bit for bit simulateSampledPi's.
+    QFile csv(csvPath);
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = csv.readAll().trimmed().split('\n');
+    QCOMPARE(lines[0], QByteArray("t,r,y,e,u,t_digital,y_digital,e_digital,u_digital"));
+    QCOMPARE(lines.size(), qsizetype(1 + 16001));
+    for (qsizetype k = 1; k < lines.size(); ++k) {
+        const QList<QByteArray> cells = lines[k].split(',');
+        QCOMPARE(cells.size(), qsizetype(9));
+        const std::size_t j = static_cast<std::size_t>(k - 1) / 2; // t = (k - 1) 0.01 holds sample floor((k - 1) / 2)
+        QVERIFY2(std::strtod(cells[5].constData(), nullptr) == core.result.t[j] &&
+                     std::strtod(cells[6].constData(), nullptr) == core.result.y[j] &&
+                     std::strtod(cells[7].constData(), nullptr) == core.result.e[j] &&
+                     std::strtod(cells[8].constData(), nullptr) == core.result.u[j],
+                 lines[k].constData());
+    }
     // Digital options without --digital are refused naming the option.
     const auto refused = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf",
                                             "600", "--tf", "130", "--dac-bits", "16"});

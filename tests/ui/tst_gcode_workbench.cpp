@@ -6,6 +6,7 @@
 #include "core/contour/contour_metrics.h"
 #include "core/contour/gcode_reader.h"
 #include "core/session/program_trajectory.h"
+#include "tests/support/ballbar_program.h"
 #include "tests/support/gui_checks.h"
 #include "tests/support/tolerance.h"
 #include "ui/main_window.h"
@@ -15,8 +16,10 @@
 #include "ui/panels/trajectory_editor.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/contour_points.h"
+#include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -24,11 +27,14 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QTest>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace xyt;
@@ -52,6 +58,8 @@ private slots:
     void ballbarViewShowsTheIsoFigures();
     void longProgramAtAFineStepSaysTheLiveViewIsLimited();
     void circlePresetStillDrawsAsBefore();
+    void ballbarProgramShowsBothDirections();
+    void octaveExportIsDisabledOnAProgram();
 
 private:
     QString example(const QString& name) const {
@@ -391,12 +399,15 @@ void TstGcodeWorkbench::ballbarViewShowsTheIsoFigures() {
     // Both runs drawn; the metrics panel names the same G.
     QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
     QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
-    QVERIFY(window_->metricsPanel()->contourText().contains(
-        QString("G %1, F %2/%3, H %4 mm")
-            .arg(QString::number(iso.circularDeviationG, 'f', 4),
-                 QString::number(iso.radialDeviationFMax, 'f', 4),
-                 QString::number(iso.radialDeviationFMin, 'f', 4),
-                 QString::number(*iso.hysteresisH, 'f', 4))));
+    const Iso230Circular reverse = iso230Circular(test.reverseX, test.reverseY, test.nominal);
+    QVERIFY2(window_->metricsPanel()->contourText().contains(
+                 QString("G CW %1, CCW %2, F %3/%4, H %5 mm")
+                     .arg(QString::number(iso.circularDeviationG, 'f', 4),
+                          QString::number(reverse.circularDeviationG, 'f', 4),
+                          QString::number(iso.radialDeviationFMax, 'f', 4),
+                          QString::number(iso.radialDeviationFMin, 'f', 4),
+                          QString::number(*iso.hysteresisH, 'f', 4))),
+             qPrintable(window_->metricsPanel()->contourText()));
     ballbar->setChecked(false);
     QVERIFY(!plot->polar());
     QVERIFY(plot->fMaxCircle()->data()->isEmpty());
@@ -433,6 +444,84 @@ void TstGcodeWorkbench::circlePresetStillDrawsAsBefore() {
              static_cast<int>(session_->axisEvaluation(0).run.t.size()));
     QVERIFY(plot->errorBands()[0]->data()->isEmpty());
     QVERIFY(plot->figuresText().startsWith("Contour error (radial"));
+}
+
+void TstGcodeWorkbench::ballbarProgramShowsBothDirections() {
+    // A ballbar program as machine shops write it: before, the view had no ISO 230-4 figures
+    // for it, and nothing said why.
+    window_->lowerTabs()->setCurrentWidget(window_->contourPlot());
+    QTemporaryDir dir;
+    QFile f(dir.filePath("ballbar.nc"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(test::kBallbarProgram);
+    f.close();
+    QVERIFY2(window_->trajectoryEditor()->loadProgramFile(f.fileName()),
+             qPrintable(window_->trajectoryEditor()->programField()->toolTip()));
+    QVERIFY(session_->evaluation().program && session_->evaluation().program->circular);
+    const ContourCircularTest& test = *session_->evaluation().program->circular;
+    QVERIFY(test.fromProgram);
+    // The figures recomputed by the core's iso230Circular from the program's two circles.
+    const Iso230Circular both = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal);
+    const Iso230Circular reverse = iso230Circular(test.reverseX, test.reverseY, test.nominal);
+    QVERIFY(both.hysteresisH);
+    const QString expected = QString("ISO 230-4: G CW %1, CCW %2, F %3/%4, H %5 mm")
+                                 .arg(QString::number(both.circularDeviationG, 'f', 4),
+                                      QString::number(reverse.circularDeviationG, 'f', 4),
+                                      QString::number(both.radialDeviationFMax, 'f', 4),
+                                      QString::number(both.radialDeviationFMin, 'f', 4),
+                                      QString::number(*both.hysteresisH, 'f', 4));
+    QVERIFY2(window_->metricsPanel()->contourText().contains(expected),
+             qPrintable(window_->metricsPanel()->contourText() + " | expected " + expected));
+    ContourPlot* plot = window_->contourPlot();
+    QVERIFY(plot->polarAvailable());
+    window_->contourControls()->polarView()->setChecked(true);
+    QCOMPARE(plot->magnifiedCurve()->data()->size(), static_cast<int>(test.x.size()));
+    QCOMPARE(plot->reverseCurve()->data()->size(), static_cast<int>(test.reverseX.size()));
+}
+
+void TstGcodeWorkbench::octaveExportIsDisabledOnAProgram() {
+    // The Octave script has no closed form for a program's feed profile: the action is
+    // disabled, saying why, instead of refusing after a file name was asked for.
+    QAction* octave = window_->files()->octaveExportAction();
+    QVERIFY(octave);
+    const auto enabledForTheCubic = [&] {
+        return octave->isEnabled() && !octave->toolTip().contains("G-code");
+    };
+    QVERIFY(enabledForTheCubic());
+    loadExample("square_sharp_corners.nc");
+    QVERIFY(!octave->isEnabled());
+    QVERIFY2(octave->toolTip().startsWith("Not for a G-code trajectory") &&
+                 octave->toolTip().contains("CSV"),
+             qPrintable(octave->toolTip()));
+    // Back to the cubic and to the circle through the editor: enabled again.
+    QComboBox* kind = window_->trajectoryEditor()->kindBox();
+    kind->setCurrentIndex(0);
+    emit kind->activated(0);
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Cubic);
+    QVERIFY(enabledForTheCubic());
+    kind->setCurrentIndex(1);
+    emit kind->activated(1);
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Circle);
+    QVERIFY(enabledForTheCubic());
+    // Undo back to the program, then redo: the action follows each step.
+    session_->undoStack()->undo();
+    session_->undoStack()->undo();
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Gcode);
+    QVERIFY(!octave->isEnabled());
+    session_->undoStack()->redo();
+    QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Cubic);
+    QVERIFY(enabledForTheCubic());
+    // A reset to the paper's default cubic (File > New) from the program.
+    session_->undoStack()->undo();
+    QVERIFY(!octave->isEnabled());
+    session_->reset(Session::paperDefault());
+    QVERIFY(enabledForTheCubic());
+    // The disabled action's tooltip is shown by its menu.
+    const auto menus = window_->findChildren<QMenu*>();
+    const bool shown = std::any_of(menus.begin(), menus.end(), [&](QMenu* m) {
+        return m->actions().contains(octave) && m->toolTipsVisible();
+    });
+    QVERIFY(shown);
 }
 
 QTEST_MAIN(TstGcodeWorkbench)

@@ -17,7 +17,7 @@ ContourControls::ContourControls(ContourPlot* plot) : QWidget(plot), plot_(plot)
     polar_ = new QCheckBox(tr("Ballbar"), this);
     polar_->setAccessibleName(tr("Ballbar polar view"));
     polar_->setToolTip(
-        tr("The ISO 230-4 circular test of a one-circle program, as a ballbar plots it"));
+        tr("The ISO 230-4 circular test of the program's full circles, as a ballbar plots it"));
     previous_ = new QToolButton(this);
     previous_->setText(tr("◀"));
     previous_->setAccessibleName(tr("Previous corner"));

@@ -343,11 +343,19 @@ void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList&
         lines << tr("Contour error (XY): max %1, RMS %2 mm").arg(mm(c.maxAbs), mm(c.rms));
         contour_->setToolTip(tr("The program's warnings are shown on the XY contour view"));
         if (evaluation.program->circular) {
-            const Iso230Circular& iso = evaluation.program->circular->iso;
-            // One line: G, F max/F min, H (mm).
-            QString iso230 = tr("ISO 230-4: G %1, F %2/%3")
-                                 .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
-                                      mm(iso.radialDeviationFMin));
+            const ContourCircularTest& test = *evaluation.program->circular;
+            const Iso230Circular& iso = test.iso;
+            // One line: G, F max/F min (of each direction when there are two), H (mm).
+            const QString first = test.clockwise ? tr("CW") : tr("CCW");
+            const QString second = test.clockwise ? tr("CCW") : tr("CW");
+            QString iso230 = test.reverseIso
+                                 ? tr("ISO 230-4: G %1 %2, %3 %4, F %5/%6")
+                                       .arg(first, mm(iso.circularDeviationG), second,
+                                            mm(test.reverseIso->circularDeviationG), mm(iso.radialDeviationFMax),
+                                            mm(iso.radialDeviationFMin))
+                                 : tr("ISO 230-4: G %1, F %2/%3")
+                                       .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
+                                            mm(iso.radialDeviationFMin));
             if (iso.hysteresisH)
                 iso230 += tr(", H %1").arg(mm(*iso.hysteresisH));
             lines << iso230 + tr(" mm");

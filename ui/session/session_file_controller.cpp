@@ -36,8 +36,26 @@ void SessionFileController::populateMenu(QMenu* file) {
     QMenu* exports = file->addMenu(tr("&Export"));
     exports->addAction(tr("Coefficients as &JSON..."), this, [this] { exportDialog("json"); });
     exports->addAction(tr("Firmware &C header..."), this, [this] { exportDialog("c"); });
-    exports->addAction(tr("&Octave/MATLAB script..."), this, [this] { exportDialog("m"); });
+    octaveExport_ = exports->addAction(tr("&Octave/MATLAB script..."), this, [this] { exportDialog("m"); });
     exports->addAction(tr("Simulated signals as CS&V..."), this, [this] { exportDialog("csv"); });
+    // A disabled action says why in its tooltip, which a menu shows only when asked to.
+    exports->setToolTipsVisible(true);
+    connect(session_, &TuningSession::designChanged, this, &SessionFileController::updateExportActions);
+    updateExportActions();
+}
+
+void SessionFileController::updateExportActions() {
+    if (!octaveExport_)
+        return;
+    // The script computes r(t) in closed form; a G-code program's feed profile has none, so the
+    // export would be refused only after a file name was asked for.
+    const bool program = session_->session().trajectory.kind == TrajectoryKind::Gcode;
+    octaveExport_->setEnabled(!program);
+    octaveExport_->setToolTip(program ? tr("Not for a G-code trajectory: the script computes the reference in "
+                                           "closed form, and a program's feed profile has none. Export the "
+                                           "simulated signals as CSV instead.")
+                                      : tr("A GNU Octave / MATLAB script with each axis' plant, controller and "
+                                           "closed loop, plotting the response to the trajectory"));
 }
 
 bool SessionFileController::maybeSave() {

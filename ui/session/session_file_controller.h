@@ -5,6 +5,7 @@
 #include <QString>
 #include <QStringList>
 
+class QAction;
 class QMenu;
 class QWidget;
 
@@ -36,6 +37,9 @@ public:
     bool exportTo(const QString& format, const QString& path);
 
     static QStringList recentFiles();
+    /// File > Export > Octave/MATLAB script (disabled, with a tooltip saying why, on a G-code
+    /// trajectory); null before populateMenu.
+    QAction* octaveExportAction() const { return octaveExport_; }
 
 public slots:
     void newSession();
@@ -53,11 +57,13 @@ private:
     void setCurrentFile(const QString& path);
     void rememberRecent(const QString& path);
     void rebuildRecentMenu();
+    void updateExportActions();
 
     TuningSession* session_;
     QWidget* window_;
     QString currentFile_;
     QMenu* recentMenu_ = nullptr;
+    QAction* octaveExport_ = nullptr;
 };
 
 } // namespace xyt::ui

@@ -3,10 +3,14 @@
 // session paths its refusals name, and its evaluation. The expected times and positions are the
 // closed form of a trapezoidal move along a straight line (accelerate at a to v = F, cruise,
 // decelerate: t = L / v + v / a when L >= v^2 / a).
+#include "core/contour/ballbar_circles.h"
+#include "core/contour/feed_profile.h"
 #include "core/model/errors.h"
+#include "core/session/contour_run.h"
 #include "core/session/export_text.h"
 #include "core/session/program_trajectory.h"
 #include "core/session/session_evaluation.h"
+#include "tests/support/ballbar_program.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -22,6 +26,10 @@ private slots:
     void refusalsNameTheSessionPath();
     void evaluationRunsBothAxesAlongTheProgram();
     void octaveExportRefusesAProgram();
+    void ballbarProgramCirclesAreFound_data();
+    void ballbarProgramCirclesAreFound();
+    void ballbarFiguresOfAKnownRadialDeviation();
+    void ballbarProgramIsEvaluated();
 };
 
 namespace {
@@ -171,6 +179,126 @@ void TstProgramTrajectory::octaveExportRefusesAProgram() {
     } catch (const InvalidInput& e) {
         QCOMPARE(e.field(), std::string("trajectory.kind"));
     }
+}
+
+void TstProgramTrajectory::ballbarProgramCirclesAreFound_data() {
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<int>("first");    // -1: none
+    QTest::addColumn<int>("opposite"); // -1: none
+    QTest::addColumn<QString>("note"); // a part of the note, empty: no note
+    QTest::newRow("clockwise and counter-clockwise with feed-in arcs")
+        << QString(test::kBallbarProgram) << int(test::kBallbarClockwiseSegment)
+        << int(test::kBallbarCounterClockwiseSegment) << QString();
+    QTest::newRow("one direction with a feed-in arc")
+        << QString("G0 X15 Y0\nG2 X25 Y0 I5 J0 F120\nG2 X25 Y0 I-25 J0\n") << 2 << -1
+        << QString("the program runs its full circle (line 3) one way only: no circular hysteresis H");
+    QTest::newRow("two clockwise circles")
+        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG2 X25 Y0 I-25 J0\n") << 1 << -1
+        << QString("none of the program's 2 full circles runs the circle of line 2 the other way");
+    QTest::newRow("the other way on another radius")
+        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG1 X26\nG3 X26 Y0 I-26 J0\n") << 1 << -1
+        << QString("none of the program's 2 full circles");
+    QTest::newRow("three circles")
+        << QString(test::kBallbarProgram) + "G1 X25 Y0\nG2 X25 Y0 I-25 J0\n" << int(test::kBallbarClockwiseSegment)
+        << int(test::kBallbarCounterClockwiseSegment)
+        << QString("the program holds 3 full circles: the figures are those of line 4 and line 7");
+    QTest::newRow("no full circle") << QString("G1 X10 F600\nG2 X20 Y0 I5 J0\n") << -1 << -1 << QString();
+}
+
+void TstProgramTrajectory::ballbarProgramCirclesAreFound() {
+    QFETCH(QString, program);
+    QFETCH(int, first);
+    QFETCH(int, opposite);
+    QFETCH(QString, note);
+    const BallbarCircles c = findBallbarCircles(readGcode(program.toStdString()));
+    QCOMPARE(c.first ? int(*c.first) : -1, first);
+    QCOMPARE(c.opposite ? int(*c.opposite) : -1, opposite);
+    QVERIFY2(note.isEmpty() ? c.note.empty() : QString::fromStdString(c.note).contains(note), c.note.c_str());
+}
+
+void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation() {
+    // The traced points moved radially off the programmed circle: the clockwise run at
+    // R + a, the counter-clockwise run at R - b (concentric). Closed forms: each run is a
+    // circle about the nominal centre, so G = 0 for each; F max = F min = +a (clockwise) and -b
+    // (counter-clockwise); H = a + b and G(b) = a + b (the radii differ by a + b at every angle).
+    const double a = 0.004, b = 0.0015, radius = test::kBallbarRadiusMm;
+    const GcodeProgram program = readGcode(test::kBallbarProgram);
+    ContourTrace trace;
+    FeedProfileOptions options;
+    options.dtSeconds = 0.01;
+    trace.profile = planFeedProfile(program, options);
+    trace.x = trace.profile.x;
+    trace.y = trace.profile.y;
+    std::size_t onCw = 0, onCcw = 0;
+    for (std::size_t k = 0; k < trace.x.size(); ++k) {
+        const std::size_t segment = trace.profile.segment[k];
+        const bool cw = segment == test::kBallbarClockwiseSegment;
+        if (!cw && segment != test::kBallbarCounterClockwiseSegment)
+            continue;
+        (cw ? onCw : onCcw) += 1;
+        const double r = std::hypot(trace.x[k], trace.y[k]);
+        const double scale = (radius + (cw ? a : -b)) / r;
+        trace.x[k] *= scale;
+        trace.y[k] *= scale;
+    }
+    for (std::size_t k = 0; k < trace.x.size(); ++k)
+        if (trace.profile.segment[k] != test::kBallbarClockwiseSegment &&
+            trace.profile.segment[k] != test::kBallbarCounterClockwiseSegment)
+            trace.y[k] += 1.0; // the feed-in and feed-out arcs: far off, and left out of the figures
+    QVERIFY(onCw > 1000 && onCcw > 1000);
+    std::vector<std::string> warnings;
+    const auto testResult = ballbarTestOfProgram(program, trace, Iso230Options{}, warnings);
+    QVERIFY(testResult);
+    QVERIFY(warnings.empty());
+    QVERIFY(testResult->fromProgram && testResult->clockwise);
+    QCOMPARE(testResult->line, test::kBallbarClockwiseLine);
+    QCOMPARE(testResult->reverseLine, test::kBallbarCounterClockwiseLine);
+    QCOMPARE(testResult->x.size(), onCw);
+    QCOMPARE(testResult->reverseX.size(), onCcw);
+    const Iso230Circular& iso = testResult->iso;
+    XYT_COMPARE_NEAR(iso.circularDeviationG, 0.0, 0.0, 1e-10);
+    XYT_COMPARE_NEAR(iso.radialDeviationFMax, a, 0.0, 1e-10);
+    XYT_COMPARE_NEAR(iso.radialDeviationFMin, a, 0.0, 1e-10);
+    QVERIFY(iso.hysteresisH && iso.bidirectionalG && testResult->reverseIso);
+    // H and G(b) are taken about the least-squares centre of both runs together, which the
+    // runs' unequal samples per angle (the feed-in ends, the feed-out starts) move off the
+    // nominal centre by about 0.01 mm: that changes them only at second order, below 1e-9 mm.
+    XYT_COMPARE_NEAR(*iso.hysteresisH, a + b, 0.0, 1e-9);
+    XYT_COMPARE_NEAR(*iso.bidirectionalG, a + b, 0.0, 1e-9);
+    XYT_COMPARE_NEAR(testResult->reverseIso->circularDeviationG, 0.0, 0.0, 1e-10);
+    XYT_COMPARE_NEAR(testResult->reverseIso->radialDeviationFMax, -b, 0.0, 1e-10);
+    XYT_COMPARE_NEAR(testResult->reverseIso->radialDeviationFMin, -b, 0.0, 1e-10);
+}
+
+void TstProgramTrajectory::ballbarProgramIsEvaluated() {
+    // The program as a session's trajectory: before, a program with more than one feed move
+    // had no ISO 230-4 figures at all, and nothing said why.
+    Session s = Session::paperDefault();
+    s.trajectory.kind = TrajectoryKind::Gcode;
+    s.trajectory.gcode.fileName = "ballbar.nc";
+    s.trajectory.gcode.program = test::kBallbarProgram;
+    const SessionEvaluation e = evaluateSession(s);
+    QVERIFY2(e.program, e.programError.c_str());
+    QVERIFY(e.program->circular);
+    const ContourCircularTest& c = *e.program->circular;
+    QVERIFY(c.fromProgram && c.clockwise);
+    QCOMPARE(c.nominal.radius, test::kBallbarRadiusMm);
+    // The figures are iso230Circular's of the program's own traced points on each circle.
+    std::vector<double> x, y, rx, ry;
+    for (std::size_t k = 0; k < e.program->trace.x.size(); ++k) {
+        const std::size_t segment = e.program->trace.profile.segment[k];
+        if (segment == test::kBallbarClockwiseSegment)
+            x.push_back(e.program->trace.x[k]), y.push_back(e.program->trace.y[k]);
+        if (segment == test::kBallbarCounterClockwiseSegment)
+            rx.push_back(e.program->trace.x[k]), ry.push_back(e.program->trace.y[k]);
+    }
+    const Iso230Circular both = iso230Circular(x, y, rx, ry, c.nominal);
+    const Iso230Circular reverse = iso230Circular(rx, ry, c.nominal);
+    QCOMPARE(c.iso.circularDeviationG, both.circularDeviationG);
+    QVERIFY(c.iso.hysteresisH && c.reverseIso);
+    QCOMPARE(*c.iso.hysteresisH, *both.hysteresisH);
+    QCOMPARE(c.reverseIso->circularDeviationG, reverse.circularDeviationG);
+    QVERIFY(c.iso.circularDeviationG > 0.0 && *c.iso.hysteresisH > 0.0);
 }
 
 QTEST_APPLESS_MAIN(TstProgramTrajectory)

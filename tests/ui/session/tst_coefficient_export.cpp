@@ -16,7 +16,14 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
 using namespace xyt;
+
+Q_DECLARE_METATYPE(xyt::Session)
 
 class TstCoefficientExport : public QObject {
     Q_OBJECT
@@ -26,6 +33,10 @@ private slots:
     void jsonParsesBack();
     void octaveScriptDefinesTheTfObjects();
     void csvColumnsAndRows();
+    void csvHoldsTheDigitalRunAtEachRow_data();
+    void csvHoldsTheDigitalRunAtEachRow();
+    void csvSamplesAtTheSessionDt_data();
+    void csvSamplesAtTheSessionDt();
     void polePlacementAxisExports();
     void jsonRefusesNonFiniteNumbers();
 };
@@ -155,7 +166,8 @@ void TstCoefficientExport::csvColumnsAndRows() {
     const Session s = Session::paperDefault();
     const SessionEvaluation e = evaluateSession(s);
     const QList<QByteArray> lines = QByteArray::fromStdString(exportCsv(s, e)).trimmed().split('\n');
-    QCOMPARE(lines[0], QByteArray("t,r_x,y_x,e_x,u_x,r_y,y_y,e_y,u_y"));
+    QCOMPARE(lines[0], QByteArray("t,r_x,y_x,e_x,u_x,r_y,y_y,e_y,u_y,t_digital_x,y_digital_x,e_digital_x,"
+                                  "u_digital_x,t_digital_y,y_digital_y,e_digital_y,u_digital_y"));
     // The automatic run: the move and its settle (issue 19), both ends; at 0.01 s.
     const double duration = e.duration.seconds;
     QVERIFY(duration > 130.0);
@@ -163,6 +175,137 @@ void TstCoefficientExport::csvColumnsAndRows() {
     const QList<QByteArray> last = lines.back().split(',');
     XYT_COMPARE_NEAR(last[0].toDouble(), e.axes[0].run.t.back(), 1e-9, 0.0); // 10 printed digits
     XYT_COMPARE_NEAR(last[1].toDouble(), 600.0, 1e-9, 0.0); // 10 printed digits
+}
+
+namespace {
+
+/// The exported CSV as a header and rows of numbers (an empty cell reads as NaN).
+struct CsvTable {
+    QList<QByteArray> header;
+    std::vector<std::vector<double>> rows;
+    std::size_t column(const char* name) const {
+        const auto i = header.indexOf(QByteArray(name));
+        return i < 0 ? std::size_t(-1) : static_cast<std::size_t>(i);
+    }
+};
+
+CsvTable readCsv(const std::string& text) {
+    CsvTable out;
+    const QList<QByteArray> lines = QByteArray::fromStdString(text).trimmed().split('\n');
+    out.header = lines[0].split(',');
+    for (qsizetype k = 1; k < lines.size(); ++k) {
+        std::vector<double> row;
+        for (const QByteArray& cell : lines[k].split(','))
+            row.push_back(cell.isEmpty() ? std::nan("") : std::strtod(cell.constData(), nullptr));
+        out.rows.push_back(std::move(row));
+    }
+    return out;
+}
+
+/// The session's dt grid: floor(duration / dt + 1e-9) + 1 samples (sampleTimes).
+std::size_t dtRows(const SessionEvaluation& e, double dt) {
+    return static_cast<std::size_t>(std::floor(e.duration.seconds / dt + 1e-9)) + 1;
+}
+
+} // namespace
+
+void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow_data() {
+    QTest::addColumn<Session>("session");
+    const Session base = Session::paperDefault();
+    QTest::newRow("guillemin-truxal, controller_ts = dt") << base;
+    Session slow = base;
+    slow.controllerTsSeconds = 0.05;
+    slow.implementation.delaySamples = 1;
+    slow.implementation.dacBits = 12;
+    slow.implementation.encoderResolutionMm = 0.001;
+    QTest::newRow("guillemin-truxal, controller_ts 5 dt, delay, DAC, encoder") << slow;
+    Session pp = base;
+    pp.axes[0].method = DesignMethod::PolePlacementZpetc;
+    pp.axes[1].method = DesignMethod::PolePlacementZpetc;
+    pp.implementation.dacBits = 12;
+    QTest::newRow("pole placement + ZPETC, Ts 0.07 s, DAC") << pp;
+}
+
+void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow() {
+    // Engineers compare the digital implementation with their firmware's logs: each row holds
+    // the controller's last sample at or before t, with its instant, bit for bit as the core's
+    // sampled-data run (DigitalEvaluation::run) computed it; every controller sample appears.
+    QFETCH(Session, session);
+    const SessionEvaluation e = evaluateSession(session);
+    const CsvTable csv = readCsv(exportCsv(session, e));
+    const double dt = session.trajectory.dtSeconds;
+    QCOMPARE(csv.rows.size(), dtRows(e, dt));
+    for (std::size_t i = 0; i < 2; ++i) {
+        const std::string id = session.axes[i].id;
+        QVERIFY(e.axes[i].digital);
+        const SimulationResult& d = e.axes[i].digital->run.result;
+        const double ts = e.axes[i].digital->tsSeconds;
+        const std::size_t ct = csv.column(("t_digital_" + id).c_str()), cy = csv.column(("y_digital_" + id).c_str()),
+                          ce = csv.column(("e_digital_" + id).c_str()), cu = csv.column(("u_digital_" + id).c_str()),
+                          cOwn = csv.column(("y_" + id).c_str());
+        QVERIFY(ct != std::size_t(-1) && cy != std::size_t(-1) && ce != std::size_t(-1) && cu != std::size_t(-1));
+        std::set<std::size_t> seen;
+        bool differsFromTheDesignRun = false;
+        for (std::size_t k = 0; k < csv.rows.size(); ++k) {
+            const std::vector<double>& row = csv.rows[k];
+            const double t = static_cast<double>(k) * dt;
+            // The held sample: found by its instant, bit for bit.
+            const auto at = std::lower_bound(d.t.begin(), d.t.end(), row[ct]);
+            QVERIFY(at != d.t.end() && *at == row[ct]);
+            const std::size_t j = static_cast<std::size_t>(at - d.t.begin());
+            // The last sample at or before t (1e-9 s for the round-off of k dt against j Ts).
+            QVERIFY2(d.t[j] <= t + 1e-9 && (j + 1 == d.t.size() || d.t[j + 1] > t + 1e-9),
+                     qPrintable(QString("row %1: t %2, t_digital %3").arg(k).arg(t).arg(d.t[j])));
+            QVERIFY(row[cy] == d.y[j] && row[ce] == d.e[j] && row[cu] == d.u[j]);
+            seen.insert(j);
+            if (std::abs(row[cy] - row[cOwn]) > 1e-9)
+                differsFromTheDesignRun = true;
+        }
+        QCOMPARE(seen.size(), d.t.size());
+        QVERIFY(ts >= dt);
+        // The columns are the implementation's run, not a copy of the design's (the DAC and the
+        // encoder's quantization, the delay, the slower sampling move it).
+        if (session.implementation.dacBits > 0)
+            QVERIFY(differsFromTheDesignRun);
+    }
+}
+
+void TstCoefficientExport::csvSamplesAtTheSessionDt_data() {
+    QTest::addColumn<Session>("session");
+    const Session base = Session::paperDefault();
+    QTest::newRow("guillemin-truxal both") << base;
+    Session x = base;
+    x.axes[0].method = DesignMethod::PolePlacementZpetc;
+    QTest::newRow("pole placement on x (Ts 0.07 s), guillemin-truxal on y") << x;
+    Session both = base;
+    both.axes[0].method = DesignMethod::PolePlacementZpetc;
+    both.axes[1].method = DesignMethod::PolePlacementZpetc;
+    QTest::newRow("pole placement both") << both;
+}
+
+void TstCoefficientExport::csvSamplesAtTheSessionDt() {
+    // One row per step of the session's dt (before, the pole-placement Ts of 0.07 s when x was
+    // a pole-placement axis); a pole-placement axis' columns hold its last sample at or before t.
+    QFETCH(Session, session);
+    const SessionEvaluation e = evaluateSession(session);
+    const CsvTable csv = readCsv(exportCsv(session, e));
+    const double dt = session.trajectory.dtSeconds;
+    QCOMPARE(csv.rows.size(), dtRows(e, dt));
+    for (std::size_t k = 0; k < csv.rows.size(); ++k)
+        XYT_COMPARE_NEAR(csv.rows[k][0], static_cast<double>(k) * dt, 1e-9, 1e-12); // 10 printed digits
+    for (std::size_t i = 0; i < 2; ++i) {
+        const std::string id = session.axes[i].id;
+        const SimulationResult& run = e.axes[i].run;
+        const std::size_t cr = csv.column(("r_" + id).c_str()), cy = csv.column(("y_" + id).c_str());
+        for (std::size_t k = 0; k < csv.rows.size(); k += 13) {
+            const double t = static_cast<double>(k) * dt;
+            // The run's last sample at or before t (1e-9 s for the round-off of k dt and j Ts).
+            const std::size_t j = static_cast<std::size_t>(
+                std::upper_bound(run.t.begin(), run.t.end(), t + 1e-9) - run.t.begin() - 1);
+            XYT_COMPARE_NEAR(csv.rows[k][cr], run.r[j], 1e-9, 1e-9);
+            XYT_COMPARE_NEAR(csv.rows[k][cy], run.y[j], 1e-9, 1e-9);
+        }
+    }
 }
 
 void TstCoefficientExport::polePlacementAxisExports() {

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/contour/gcode_reader.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace xyt {
+
+/**
+ * The circles of a circular (ballbar) test in a program as machine shops write it: a clockwise
+ * and a counter-clockwise full circle on the same centre and radius, often with feed-in and
+ * feed-out arcs (or lines) around them. A full circle is one feed arc (G2/G3) whose end is its
+ * start (|sweep| = 2 pi); the feed-in and feed-out moves are not part of the measured runs.
+ */
+struct BallbarCircles {
+    /// Segment (path.segments()) of the first full circle: the run G and F are given for.
+    std::optional<std::size_t> first;
+    /// The first later full circle on the same centre and radius (within 1e-9 of the radius)
+    /// run the other way: with it, the hysteresis H of ISO 230-4.
+    std::optional<std::size_t> opposite;
+    std::size_t fullCircles = 0; ///< full circles the program holds
+    /// Why the figures are fewer than G, F and H of a clockwise and counter-clockwise pair, or
+    /// which circles they are of when the program holds more than two; empty otherwise (and
+    /// when the program holds no full circle: it is no circular test).
+    std::string note;
+};
+
+/// Finds the full circles of @p program and pairs the first with one run the other way.
+BallbarCircles findBallbarCircles(const GcodeProgram& program);
+
+} // namespace xyt
