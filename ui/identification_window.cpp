@@ -28,6 +28,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTabWidget>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <qcustomplot.h>
@@ -63,6 +64,44 @@ int guessTimeColumn(const QStringList& names) {
 QString percent(double v) { return std::isfinite(v) ? QString::number(v, 'f', 2) : QStringLiteral("–"); }
 
 QVector<double> toVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
+
+/// The curves' extent with room above them for the notice in the top corner (a few lines,
+/// about a fifth of the plot's height): the notice does not sit on the trace.
+void fitTimeAxes(QCustomPlot* plot) {
+    plot->rescaleAxes();
+    const QCPRange r = plot->yAxis->range();
+    const double span = r.size() > 0.0 ? r.size() : 1.0;
+    plot->yAxis->setRange(r.lower - 0.04 * span, r.upper + 0.22 * span);
+}
+
+/// The unit of a parameter of the continuous fit (u in V, y in mm); "" for the dimensionless
+/// polynomial coefficients.
+QString parameterUnit(const IdentifiedModel& m, const std::string& name) {
+    if (m.spec.structure != ModelStructure::ContinuousThirdOrder)
+        return {};
+    if (name == "k0")
+        return QStringLiteral(" mm/(V·s³)");
+    if (name == "a1")
+        return QStringLiteral(" 1/s");
+    if (name == "a2")
+        return QStringLiteral(" 1/s²");
+    return {};
+}
+
+/// "name = value ± sd unit" per parameter, non-breaking inside an entry so that the label
+/// wraps between entries only.
+QString parameterLines(const IdentifiedModel& m) {
+    QStringList entries;
+    const QChar nbsp(0x00A0);
+    for (std::size_t i = 0; i < m.parameters.size() && i < m.parameterNames.size(); ++i) {
+        const double sd = i < m.standardDeviations.size() ? m.standardDeviations[i] : std::nan("");
+        QString entry = QString::fromStdString(m.parameterNames[i]) + " = " + QString::number(m.parameters[i], 'g', 6) +
+                        " ± " + (std::isfinite(sd) ? QString::number(sd, 'g', 3) : QStringLiteral("–")) +
+                        parameterUnit(m, m.parameterNames[i]);
+        entries << entry.replace(' ', nbsp);
+    }
+    return entries.join(QStringLiteral("   "));
+}
 
 } // namespace
 
@@ -193,6 +232,13 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     table_->verticalHeader()->setVisible(false);
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->horizontalHeader()->setStretchLastSection(true);
+    // The selected candidate's estimate: what "Use for axis" would take, before it is taken.
+    parameters_ = new QLabel;
+    parameters_->setObjectName("identificationParameters");
+    parameters_->setWordWrap(true);
+    parameters_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    parameters_->setToolTip(tr("The selected model's parameters, each ± one standard deviation"));
+    parameters_->hide();
     useX_ = new QPushButton(tr("Use for axis X"));
     useY_ = new QPushButton(tr("Use for axis Y"));
     useX_->setEnabled(false);
@@ -209,6 +255,7 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     leftLayout->addWidget(modelBox);
     leftLayout->addWidget(statusArea);
     leftLayout->addWidget(table_, 1);
+    leftLayout->addWidget(parameters_);
     leftLayout->addLayout(useRow);
 
     buildPlots();
@@ -234,7 +281,21 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
         if (!path.isEmpty())
             loadValidationFile(path);
     });
-    connect(time_, &QComboBox::currentIndexChanged, this, [this](int index) { ts_->setEnabled(index == 0); });
+    connect(time_, &QComboBox::currentIndexChanged, this, [this](int index) {
+        ts_->setEnabled(index == 0);
+        previewRecord();
+    });
+    for (QComboBox* box : {input_, output_, unit_})
+        connect(box, &QComboBox::currentIndexChanged, this, [this] { previewRecord(); });
+    connect(ts_, &QDoubleSpinBox::valueChanged, this, [this] { previewRecord(); });
+    connect(session_->undoStack(), &QUndoStack::indexChanged, this, [this](int index) {
+        if (!usedStep_)
+            return;
+        if (index < usedIndex_ || session_->undoStack()->command(usedIndex_ - 1) != usedStep_) {
+            usedStep_ = nullptr; // the step the status names is gone: say what is current instead
+            showSelectionStatus();
+        }
+    });
     connect(structure_, &QComboBox::currentIndexChanged, this, &IdentificationWindow::updateOrderBoxes);
     connect(fit_, &QPushButton::clicked, this, &IdentificationWindow::fit);
     connect(cancel_, &QPushButton::clicked, this, &IdentificationWindow::cancel);
@@ -243,6 +304,8 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
         const auto rows = table_->selectionModel()->selectedRows();
         showCandidate(rows.isEmpty() ? -1 : rows.front().row());
+        if (selectedCandidate()) // the message area follows the row (an error stays until then)
+            showSelectionStatus();
     });
     updateOrderBoxes();
     clearPlots(tr("Fit a model to see it here."));
@@ -364,7 +427,22 @@ bool IdentificationWindow::loadFile(const QString& path) {
     try {
         ExperimentTable table = readExperimentTable(path.toStdString(), 1);
         const QStringList names = columnNames(table);
-        const QSignalBlocker b1(input_), b2(output_), b3(time_);
+        // The candidates were fitted to the previous file: they go with it (a running fit too).
+        const bool hadCandidates = !candidates_.empty() || isRunning();
+        stopJob();
+        pending_.reset();
+        cancel_->setEnabled(false);
+        progress_->setValue(0);
+        candidates_.clear();
+        {
+            const QSignalBlocker blockTable(table_);
+            table_->setRowCount(0);
+        }
+        clearPlots(tr("Fit a model to see it here."));
+        usedStep_ = nullptr;
+        const QSignalBlocker b1(input_), b2(output_), b3(time_), b4(ts_), b5(t0_), b6(t1_);
+        t0_->setValue(0.0); // the new record's whole range (previewRecord shows it)
+        t1_->setValue(0.0);
         input_->clear();
         output_->clear();
         time_->clear();
@@ -396,8 +474,13 @@ bool IdentificationWindow::loadFile(const QString& path) {
                            .arg(experiment_->sampleTimeSeconds
                                     ? tr(", Ts = %1 s stated by the file").arg(*experiment_->sampleTimeSeconds)
                                     : QString());
+        if (hadCandidates)
+            text += "\n" + tr("The candidates fitted to the previous file were cleared.");
         for (const std::string& w : experiment_->warnings)
             text += "\n" + QString::fromStdString(w);
+        const QString problem = previewRecord();
+        if (!problem.isEmpty())
+            text += "\n" + tr("These columns cannot be used yet: %1").arg(problem);
         setStatus(text);
         return true;
     } catch (const std::exception& e) { // InvalidInput, FileError: the message names the place
@@ -407,6 +490,7 @@ bool IdentificationWindow::loadFile(const QString& path) {
         time_->clear();
         fileName_->setText(tr("(no file)"));
         fit_->setEnabled(false);
+        wholeRange_.reset();
         table_->clearSelection();
         clearPlots(tr("No data loaded."));
         setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())), true);
@@ -436,7 +520,7 @@ bool IdentificationWindow::loadValidationFile(const QString& path) {
     }
 }
 
-IoData IdentificationWindow::record(const ExperimentTable& table) const {
+ExperimentColumns IdentificationWindow::columns(const ExperimentTable& table) const {
     ExperimentColumns c;
     c.input = input_->currentText().toStdString();
     c.output = output_->currentText().toStdString();
@@ -447,9 +531,14 @@ IoData IdentificationWindow::record(const ExperimentTable& table) const {
     else
         c.sampleTimeSeconds = ts_->value();
     c.outputScale.unit = unit_->currentIndex() == 1 ? OutputUnit::Metres : OutputUnit::Millimetres;
+    return c;
+}
+
+IoData IdentificationWindow::record(const ExperimentTable& table) const {
+    const ExperimentColumns c = columns(table);
     PreprocessingSteps steps;
     const double t0 = t0_->value(), t1 = t1_->value();
-    if (t0 != 0.0 || t1 != 0.0) {
+    if (!rangeIsWhole()) {
         if (!(t1 > t0))
             throw InvalidInput("range", "the end must be after the start (0 to 0 uses the whole record)");
         steps.rangeSeconds = std::array<double, 2>{t0, t1};
@@ -577,9 +666,11 @@ void IdentificationWindow::onFinished(int jobId, std::shared_ptr<IdentifiedModel
         emit fitFinished();
         return;
     }
+    candidate.message = text;
+    candidate.messageIsError = m.status != EstimationStatus::Converged;
     candidates_.push_back(std::move(candidate));
     addRow(candidates_.back());
-    setStatus(text, m.status != EstimationStatus::Converged);
+    setStatus(text, candidates_.back().messageIsError);
     table_->selectRow(static_cast<int>(candidates_.size()) - 1);
     emit fitFinished();
 }
@@ -609,6 +700,8 @@ void IdentificationWindow::clearPlots(const QString& reason) {
     shown_ = -1;
     useX_->setEnabled(false);
     useY_->setEnabled(false);
+    parameters_->clear();
+    parameters_->hide();
     clearWithNotice(timePlot_, *timeNotice_, {measured_, simulated_}, reason);
     clearWithNotice(residualPlot_, *residualNotice_,
                     {autoStems_, autoBound_[0], autoBound_[1], crossStems_, crossBound_[0], crossBound_[1]}, reason);
@@ -630,6 +723,8 @@ void IdentificationWindow::showCandidate(int index) {
     const IdentifiedModel& m = c.model;
     useX_->setEnabled(true);
     useY_->setEnabled(true);
+    parameters_->setText(tr("Parameters (± 1 SD): %1").arg(parameterLines(m)));
+    parameters_->show();
 
     // Output: measured and simulated over time.
     const IoData& d = c.estimation;
@@ -641,8 +736,7 @@ void IdentificationWindow::showCandidate(int index) {
     simulated_->setData(t.mid(0, static_cast<int>(yhat.size())), toVector(yhat), true);
     timeNotice_->setSevere(false);
     timeNotice_->setLines(c.notes);
-    timePlot_->rescaleAxes();
-    timePlot_->yAxis->scaleRange(1.08);
+    fitTimeAxes(timePlot_);
     timePlot_->replot();
 
     // Residual tests.
@@ -710,6 +804,65 @@ void IdentificationWindow::showCandidate(int index) {
 
 QString IdentificationWindow::poleZeroNoticeText() const { return pzNotice_->text(); }
 
+bool IdentificationWindow::rangeIsWhole() const {
+    // 0 to 0, or the record's own range as previewRecord showed it (the boxes round to 0.1 ms,
+    // which must not cut the last sample off).
+    const double t0 = t0_->value(), t1 = t1_->value();
+    return (t0 == 0.0 && t1 == 0.0) || (wholeRange_ && t0 == (*wholeRange_)[0] && t1 == (*wholeRange_)[1]);
+}
+
+QString IdentificationWindow::parametersText() const { return parameters_->text(); }
+
+void IdentificationWindow::showSelectionStatus() {
+    if (const Candidate* c = selectedCandidate())
+        setStatus(c->message, c->messageIsError);
+    else
+        setStatus(experiment_ ? tr("Pick the columns and press Fit.")
+                              : tr("Load a record of the axis (input in V, output position) to begin."));
+}
+
+QString IdentificationWindow::previewRecord() {
+    if (!experiment_)
+        return {};
+    const QSignalBlocker b1(ts_), b2(t0_), b3(t1_);
+    try {
+        const IoData d = experimentData(*experiment_, columns(*experiment_));
+        const double first = d.startSeconds;
+        const double last = d.startSeconds + static_cast<double>(d.size() - 1) * d.tsSeconds;
+        ts_->setValue(d.tsSeconds); // the time column's (or the file's) sample time, not the last file's
+        if (rangeIsWhole()) { // a range the user chose stays
+            t0_->setValue(first);
+            t1_->setValue(last);
+            wholeRange_ = std::array<double, 2>{t0_->value(), t1_->value()};
+        }
+        if (shown_ < 0) { // a candidate's plot is not replaced by the raw record
+            clearPlots(tr("Fit a model to see it here."));
+            QVector<double> t(static_cast<int>(d.size()));
+            for (int k = 0; k < t.size(); ++k)
+                t[k] = d.startSeconds + k * d.tsSeconds;
+            measured_->setData(t, toVector(d.y), true);
+            timeNotice_->setSevere(false);
+            timeNotice_->setLines({tr("The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)")
+                                       .arg(d.size())
+                                       .arg(first, 0, 'g', 6)
+                                       .arg(last, 0, 'g', 6)
+                                       .arg(d.tsSeconds, 0, 'g', 6)});
+            fitTimeAxes(timePlot_);
+            timePlot_->replot();
+        }
+        return {};
+    } catch (const std::exception& e) {
+        if (rangeIsWhole()) {
+            t0_->setValue(0.0);
+            t1_->setValue(0.0);
+            wholeRange_.reset();
+        }
+        if (shown_ < 0)
+            clearPlots(tr("The record cannot be drawn: %1").arg(QString::fromStdString(e.what())));
+        return QString::fromStdString(e.what());
+    }
+}
+
 void IdentificationWindow::useForAxis(int axis) {
     const Candidate* c = selectedCandidate();
     if (!c)
@@ -718,8 +871,12 @@ void IdentificationWindow::useForAxis(int axis) {
         Session next = session_->session();
         auto& a = next.axes.at(static_cast<std::size_t>(axis));
         a = axisWithIdentifiedModel(a, c->model, c->estimation);
+        QUndoStack* stack = session_->undoStack();
+        const int before = stack->index();
         session_->apply(next, tr("Use the identified %1 for axis %2")
                                   .arg(QString::fromStdString(c->model.structure), axis == 0 ? tr("X") : tr("Y")));
+        usedIndex_ = stack->index();
+        usedStep_ = usedIndex_ > before ? stack->command(usedIndex_ - 1) : nullptr;
         setStatus(tr("Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).")
                       .arg(axis == 0 ? tr("X") : tr("Y"), QString::fromStdString(c->model.structure)));
     } catch (const std::exception& e) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/identification/experiment_data.h"
 #include "core/identification/experiment_table.h"
 #include "core/identification/identification.h"
 #include "core/identification/io_data.h"
@@ -9,6 +10,7 @@
 #include <QDialog>
 #include <QStringList>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +27,7 @@ class QPushButton;
 class QSpinBox;
 class QTableWidget;
 class QTabWidget;
+class QUndoCommand;
 
 namespace xyt::ui {
 
@@ -50,13 +53,17 @@ public:
         IoData estimation;
         std::optional<IoData> validation;
         QStringList notes; ///< what the window did to the data (e.g. the initial position taken off)
+        QString message;   ///< the fit's report, shown again whenever its row is selected
+        bool messageIsError = false;
     };
 
     explicit IdentificationWindow(TuningSession* session, QWidget* parent = nullptr);
     ~IdentificationWindow() override;
 
     /// Reads @p path as the estimation data and fills the column choices; false (and the
-    /// core's message in the status line) when it cannot be read.
+    /// core's message in the status line) when it cannot be read. The candidates of the file
+    /// loaded before are cleared (each candidate belongs to the data it was fitted to); the
+    /// record is drawn at once, with its sample time and time range in their fields.
     bool loadFile(const QString& path);
     /// Reads @p path as the validation data (same column names); "" removes it.
     bool loadValidationFile(const QString& path);
@@ -94,6 +101,9 @@ public:
     QTableWidget* candidateTable() const { return table_; }
     QProgressBar* progressBar() const { return progress_; }
     QLabel* fileLabel() const { return fileName_; }
+    /// The selected candidate's parameters with their standard deviations ("a1 = -1.658 ± 0.0012
+    /// ..."), empty without a selection.
+    QString parametersText() const;
 
     QCustomPlot* timePlot() const { return timePlot_; }
     QCPGraph* measuredGraph() const { return measured_; }
@@ -121,6 +131,14 @@ private:
     void addRow(const Candidate& c);
     void showCandidate(int index);
     void clearPlots(const QString& reason);
+    /// Draws the loaded record as the chosen columns make it (before any fit) and shows its
+    /// sample time and time range; "" or the core's message when the columns cannot be used.
+    QString previewRecord();
+    /// The status of the selected candidate (its fit's report), or the opening prompt.
+    void showSelectionStatus();
+    ExperimentColumns columns(const ExperimentTable& table) const;
+    /// The range boxes mean the whole record (0 to 0, or the range previewRecord showed).
+    bool rangeIsWhole() const;
     /// The record of @p table with the chosen columns and preprocessing.
     /// @throws InvalidInput as the core does.
     IoData record(const ExperimentTable& table) const;
@@ -133,6 +151,12 @@ private:
     std::unique_ptr<BackgroundJob> job_;
     int lastJobId_ = 0;
     int shown_ = -1;
+    /// The range boxes' values that mean the whole record (set by previewRecord).
+    std::optional<std::array<double, 2>> wholeRange_;
+    /// The undo step "Use for axis" made and the stack index after it: the status that names it
+    /// is replaced once the step is undone or the stack cleared (File › New, Open).
+    const QUndoCommand* usedStep_ = nullptr;
+    int usedIndex_ = 0;
 
     QPushButton* load_;
     QPushButton* loadValidation_;
@@ -155,6 +179,7 @@ private:
     QProgressBar* progress_;
     QLabel* status_;
     QTableWidget* table_;
+    QLabel* parameters_;
     QPushButton* useX_;
     QPushButton* useY_;
     QTabWidget* tabs_;

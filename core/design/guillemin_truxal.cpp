@@ -47,10 +47,19 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
                                      " and a2/wn^2 = " + formatNumber(d.f2) +
                                      " must be finite nonzero numbers for the reference model (paper 000 Eq. 11-18)");
     if (!std::isfinite(d.f3) || !representable(d.psi1) || !representable(d.ki) ||
-        !std::isfinite(d.f3 * wn3))
-        throw InvalidInput("kp", formatNumber(kp) + " is out of range with this plant and wn: psi1 = wn^4/(kp k0) = " +
-                                     formatNumber(d.psi1) + " and ki = kp psi1 = " + formatNumber(d.ki) +
-                                     " must be finite nonzero numbers (paper 000 Eq. 11, 16)");
+        !std::isfinite(d.f3 * wn3)) {
+        // kp and k0 enter as their product: name the factor that is out of all proportion (the
+        // one farther from 1 in decades), so that a plant gain of 1e308 typed with kp = 460 is
+        // not reported as kp's fault.
+        const std::string why = ": kp k0 = " + formatNumber(kp * plant.k0) + ", psi1 = wn^4/(kp k0) = " +
+                                formatNumber(d.psi1) + " and ki = kp psi1 = " + formatNumber(d.ki) +
+                                " must be finite nonzero numbers for the Guillemin-Truxal design";
+        if (std::abs(std::log10(std::abs(plant.k0))) > std::abs(std::log10(kp)))
+            throw InvalidInput("k0", "plant gain k0 = " + formatNumber(plant.k0) + " is out of range with kp = " +
+                                         formatNumber(kp) + " and wn = " + formatNumber(wn) + " rad/s" + why);
+        throw InvalidInput("kp", formatNumber(kp) + " is out of range with this plant and wn (plant gain k0 = " +
+                                     formatNumber(plant.k0) + ", wn = " + formatNumber(wn) + " rad/s)" + why);
+    }
     d.referenceModel = TransferFunction::fromDescending(
         {d.f3 * wn3, wn4}, {1.0, d.f1 * wn, d.f2 * wn2, d.f3 * wn3, wn4});
     d.controller = TransferFunction::fromDescending({kp, d.ki}, {1.0, 0.0});

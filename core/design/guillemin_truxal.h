@@ -45,8 +45,9 @@ struct GtDesign {
 };
 
 /// @throws InvalidInput "wn" or "kp" unless finite and > 0, "wn" when wn^4 or a2/wn^2 is not a
-///         finite nonzero double (wn beyond ~1e77 or below ~1e-154 rad/s), "kp" when ki overflows
-///         or vanishes, and the plant's fields.
+///         finite nonzero double (wn beyond ~1e77 or below ~1e-154 rad/s), "kp" or "k0" when
+///         kp k0, psi1 or ki overflows or vanishes (the factor farther from 1 in decades), and
+///         the plant's fields.
 GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPerSec, double kp);
 
 /// A named plant and design of paper 000.

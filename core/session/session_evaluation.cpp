@@ -89,8 +89,11 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     try {
         return designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
     } catch (const InvalidInput& e) {
+        const std::string axis = "axes[" + std::to_string(axisIndex) + "].gt.";
         if (e.field() == "wn" || e.field() == "kp")
-            throw InvalidInput("axes[" + std::to_string(axisIndex) + "].gt." + e.field(), e.reason());
+            throw InvalidInput(axis + e.field(), e.reason());
+        if (e.field() == "k0" || e.field() == "a1" || e.field() == "a2") // the session file's plant object
+            throw InvalidInput(axis + "plant." + e.field(), e.reason());
         throw;
     }
 }

@@ -155,8 +155,9 @@ RunDuration chooseRunDuration(const Session& session);
 AxisEvaluation evaluateAxis(const Session& session, int axisIndex);
 SessionEvaluation evaluateSession(const Session& session);
 
-/// The Guillemin-Truxal design of an axis, a refusal of wn or kp named by the session path
-/// ("axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf ... the reference model").
+/// The Guillemin-Truxal design of an axis, a refusal of wn, kp or the plant named by the session
+/// path ("axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf ... the reference model",
+/// "axes[1].gt.plant.k0: plant gain k0 = 1e+308 is out of range with kp = 460.852 ...").
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex);
 
 /// A discrete run sampled at @p t (k Ts) as a SimulationResult: r (the first t.size() samples

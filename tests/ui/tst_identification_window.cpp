@@ -23,7 +23,9 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTableWidget>
@@ -35,6 +37,7 @@
 
 #include <qcustomplot.h>
 
+#include <map>
 #include <memory>
 
 using namespace xyt;
@@ -49,18 +52,25 @@ const std::vector<double> kB{0.0, 0.0421, 0.0628, -0.0454};
 constexpr double kTs = 0.07;
 
 /// t, u, y of the paper-001 model driven by a +-2 V random binary input; @p badCell puts a
-/// word in row 10's y.
+/// word in row 10's y; @p noiseMm adds a +-noiseMm random binary sequence to y; the time column
+/// steps by @p ts.
 QString writeRecord(const QString& dir, const QString& name, std::size_t n, std::uint64_t seed,
-                    bool badCell = false, const QString& header = "t,u,y") {
+                    bool badCell = false, const QString& header = "t,u,y", double noiseMm = 0.0,
+                    double ts = kTs) {
     const std::vector<double> u = test::randomBinary(n, 2.0, seed);
-    const std::vector<double> y = filterDifferenceEquation(kB, kA, u);
+    std::vector<double> y = filterDifferenceEquation(kB, kA, u);
+    if (noiseMm > 0.0) {
+        const std::vector<double> e = test::randomBinary(n, noiseMm, seed + 1);
+        for (std::size_t k = 0; k < n; ++k)
+            y[k] += e[k];
+    }
     const QString path = dir + "/" + name;
     QFile f(path);
     f.open(QIODevice::WriteOnly | QIODevice::Text);
     QTextStream out(&f);
     out << header << "\n";
     for (std::size_t k = 0; k < n; ++k) {
-        out << QString::number(static_cast<double>(k) * kTs, 'g', 17) << "," << QString::number(u[k], 'g', 17) << ",";
+        out << QString::number(static_cast<double>(k) * ts, 'g', 17) << "," << QString::number(u[k], 'g', 17) << ",";
         if (badCell && k == 10)
             out << "abc\n";
         else
@@ -76,6 +86,32 @@ IoData coreRecord(const QString& path) {
     c.output = "y";
     c.time = "t";
     return experimentData(readExperimentTable(path.toStdString(), 1), c);
+}
+
+/// The "name = value ± sd" entries of the window's parameter line, by name.
+std::map<QString, std::pair<double, double>> shownParameters(QString text) {
+    text.replace(QChar(0x00A0), ' ');
+    std::map<QString, std::pair<double, double>> out;
+    static const QRegularExpression entry(QStringLiteral("(\\w+) = (\\S+) ± (\\S+)"));
+    for (auto it = entry.globalMatch(text); it.hasNext();) {
+        const auto m = it.next();
+        out[m.captured(1)] = {m.captured(2).toDouble(), m.captured(3).toDouble()};
+    }
+    return out;
+}
+
+/// The window shows each of @p expected's parameters and standard deviations, to the digits
+/// it prints (6 for the value, 3 for the deviation).
+void compareShownParameters(const QString& text, const IdentifiedModel& expected) {
+    const auto shown = shownParameters(text);
+    QCOMPARE(shown.size(), expected.parameters.size());
+    for (std::size_t i = 0; i < expected.parameters.size(); ++i) {
+        const QString name = QString::fromStdString(expected.parameterNames[i]);
+        QVERIFY2(shown.count(name), qPrintable(name + " in " + text));
+        const auto [value, sd] = shown.at(name);
+        QVERIFY2(near(value, expected.parameters[i], 1e-5, 0.0), qPrintable(name + ": " + text));
+        QVERIFY2(near(sd, expected.standardDeviations[i], 6e-3, 0.0), qPrintable(name + " sd: " + text));
+    }
 }
 
 } // namespace
@@ -96,6 +132,9 @@ private slots:
     void designMenuOpensOneWindow();
     void destroyedWhileFitting();
     void preprocessingReachesTheCore();
+    void parametersShownWithTheirDeviations();
+    void secondFileReplacesTheFirst();
+    void fileNewClearsTheUndoStepMessage();
 
 private:
     void pickColumns();
@@ -382,6 +421,9 @@ void TstIdentificationWindow::continuousFitFromTheExampleLog() {
     QVERIFY(c->model.roots.integrating);
     QVERIFY2(window_->poleZeroNoticeText().contains("integrates"), qPrintable(window_->poleZeroNoticeText()));
     QVERIFY(!window_->poleZeroNoticeText().contains("the model is unstable"));
+    // k0, a1 and a2 with their standard deviations are shown for the selected candidate.
+    compareShownParameters(window_->parametersText(), expected);
+    QVERIFY2(window_->parametersText().contains("mm/(V·s³)"), qPrintable(window_->parametersText()));
     if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
         QTest::qWait(50);
         window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_gt3.png");
@@ -449,6 +491,120 @@ void TstIdentificationWindow::preprocessingReachesTheCore() {
     QVERIFY2(window_->statusText().contains("range"), qPrintable(window_->statusText()));
     QVERIFY(!window_->selectedCandidate());
     QCOMPARE(window_->candidateTable()->rowCount(), 1);
+}
+
+void TstIdentificationWindow::parametersShownWithTheirDeviations() {
+    // The estimate and its standard deviations were shown only once "Use for axis" had taken
+    // it. Noisy data (+-0.05 mm) give deviations well above rounding; the expected values are
+    // identifyModel's on the same record.
+    const QString path = writeRecord(dir_->path(), "noisy.csv", 600, 4242, false, "t,u,y", 0.05);
+    QVERIFY(window_->loadFile(path));
+    pickColumns();
+    QVERIFY(window_->parametersText().isEmpty()); // nothing selected yet
+    QVERIFY(fitAndWait());
+    QVERIFY2(window_->selectedCandidate(), qPrintable(window_->statusText()));
+    IdentificationSpec spec;
+    spec.arx = {2, 3, 1};
+    const IdentifiedModel expected = identifyModel(coreRecord(path), nullptr, spec);
+    QCOMPARE(expected.parameterNames.size(), std::size_t(5)); // a1 a2 b1 b2 b3
+    for (double sd : expected.standardDeviations)
+        QVERIFY(sd > 1e-6);
+    compareShownParameters(window_->parametersText(), expected);
+    QVERIFY(window_->findChild<QLabel*>("identificationParameters")->isVisible());
+    // The second candidate's own parameters follow its row.
+    window_->structureBox()->setCurrentText("OE");
+    QVERIFY(fitAndWait());
+    spec.structure = ModelStructure::Oe;
+    spec.oe = {3, 2, 1};
+    const IdentifiedModel oe = identifyModel(coreRecord(path), nullptr, spec);
+    compareShownParameters(window_->parametersText(), oe);
+    window_->candidateTable()->selectRow(0);
+    compareShownParameters(window_->parametersText(), expected);
+}
+
+void TstIdentificationWindow::secondFileReplacesTheFirst() {
+    // A 10 ms record, then a 70 ms one: the first file's candidates were kept without saying
+    // which file they came from, Ts still read 10 ms, the record was not drawn before a fit and
+    // the range read "0.0000 s to 0.0000 s".
+    const QString fast = writeRecord(dir_->path(), "fast_10ms.csv", 500, 31, false, "t,u,y", 0.0, 0.01);
+    const QString slow = writeRecord(dir_->path(), "slow_70ms.csv", 300, 32, false, "t,u,y", 0.0, 0.07);
+    QVERIFY(window_->loadFile(fast));
+    QVERIFY(near(window_->sampleTimeBox()->value(), 0.01, 1e-12, 0.0));
+    QVERIFY(fitAndWait());
+    QCOMPARE(window_->candidateTable()->rowCount(), 1);
+
+    QVERIFY(window_->loadFile(slow));
+    QCOMPARE(window_->candidateTable()->rowCount(), 0);
+    QVERIFY(window_->candidates().empty());
+    QVERIFY(!window_->selectedCandidate());
+    QVERIFY2(window_->statusText().contains("cleared"), qPrintable(window_->statusText()));
+    QVERIFY(window_->parametersText().isEmpty());
+    // The time column's sample time and range: Ts = 0.07 s, t from 0 to 299 * 0.07 = 20.93 s.
+    QVERIFY(near(window_->sampleTimeBox()->value(), 0.07, 1e-12, 0.0));
+    QVERIFY(near(window_->rangeStartBox()->value(), 0.0, 0.0, 1e-12));
+    QVERIFY(near(window_->rangeEndBox()->value(), 20.93, 0.0, 1e-9));
+    // The record is drawn before any fit: 300 samples from 0 to 20.93 s.
+    const auto measured = window_->measuredGraph()->data();
+    QCOMPARE(measured->size(), 300);
+    QVERIFY(near(measured->constBegin()->key, 0.0, 0.0, 1e-12));
+    QVERIFY(near((measured->constEnd() - 1)->key, 20.93, 0.0, 1e-9));
+    QVERIFY(window_->simulatedGraph()->data()->isEmpty());
+    if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
+        QTest::qWait(50);
+        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_loaded.png");
+    }
+
+    // A fit on the shown range uses the whole record (the rounded range cuts nothing off).
+    QVERIFY(fitAndWait());
+    const auto* c = window_->selectedCandidate();
+    QVERIFY2(c, qPrintable(window_->statusText()));
+    QCOMPARE(c->estimation.size(), std::size_t(300));
+    QVERIFY(near(c->estimation.tsSeconds, 0.07, 1e-12, 0.0));
+    window_->structureBox()->setCurrentText("OE");
+    QVERIFY(fitAndWait());
+    QCOMPARE(window_->candidateTable()->rowCount(), 2);
+
+    // The message area follows the selected row.
+    window_->candidateTable()->selectRow(0);
+    QCOMPARE(window_->statusText(), window_->candidates()[0].message);
+    QVERIFY(window_->statusText().startsWith("ARX(2,3,1)"));
+    window_->candidateTable()->selectRow(1);
+    QCOMPARE(window_->statusText(), window_->candidates()[1].message);
+    QVERIFY(window_->statusText().startsWith("OE(3,2,1)"));
+}
+
+void TstIdentificationWindow::fileNewClearsTheUndoStepMessage() {
+    // "Axis X now uses ... (Edit › Undo restores the previous plant)" stayed after File › New
+    // although the new session has no such undo step.
+    MainWindow main(session_.get());
+    main.show();
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    QVERIFY(fitAndWait());
+    QTest::mouseClick(window_->useXButton(), Qt::LeftButton);
+    QVERIFY2(window_->statusText().contains("Undo"), qPrintable(window_->statusText()));
+    QAction* fileNew = test::findMenuAction(main.menuBar(), "File/New");
+    QVERIFY(fileNew);
+    {
+        test::DialogAnswerer answer(test::DialogAnswerer::Mode::Accept, [](QWidget* dialog) {
+            auto* box = qobject_cast<QMessageBox*>(dialog);
+            QVERIFY(box);
+            box->setDefaultButton(qobject_cast<QPushButton*>(box->button(QMessageBox::Discard)));
+        });
+        fileNew->trigger();
+        QCOMPARE(answer.answered(), 1);
+    }
+    QCOMPARE(session_->undoStack()->count(), 0);
+    QVERIFY2(!window_->statusText().contains("Undo"), qPrintable(window_->statusText()));
+    QVERIFY2(!window_->statusText().contains("now uses"), qPrintable(window_->statusText()));
+    // The selected candidate's report instead.
+    QCOMPARE(window_->statusText(), window_->selectedCandidate()->message);
+
+    // Edit › Undo of the step: its message goes too.
+    QTest::mouseClick(window_->useYButton(), Qt::LeftButton);
+    QVERIFY(window_->statusText().contains("Axis Y now uses"));
+    session_->undoStack()->undo();
+    QCOMPARE(window_->statusText(), window_->selectedCandidate()->message);
 }
 
 QTEST_MAIN(TstIdentificationWindow)

@@ -246,6 +246,12 @@ void TstGuilleminTruxal::unrepresentableWnOrKpIsRefusedNamingIt() {
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e-200, 30.0); }), QString("wn"));
     // psi1 = wn^4/(kp k0) underflows to 0 for kp = 1e308 (kp k0 overflows).
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2.0, 1e308); }), QString("kp"));
+    // The same overflow of kp k0 from a plant gain of 1e308 with an ordinary kp: k0 is named.
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({1e308, 125.3, 3665.0}, 30.0, 460.852); }),
+             QString("k0"));
+    // And psi1 = wn^4/(kp k0) overflowing for a plant gain of 1e-305: k0 again.
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({1e-305, 125.3, 3665.0}, 30.0, 2.0); }),
+             QString("k0"));
     // Still representable: wn = 1e70 (wn^4 = 1e280) gives finite coefficients.
     const GtDesign d = xyt::designGuilleminTruxal(lower, 1e70, 30.0);
     QVERIFY(std::isfinite(d.ki) && d.ki > 0.0);

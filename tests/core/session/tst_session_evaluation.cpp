@@ -74,6 +74,7 @@ private slots:
     void axesDoNotDependOnTheThread_data();
     void axesDoNotDependOnTheThread();
     void verdictIsThatOfTheRunThatWillHappen();
+    void hugePlantGainNamesThePlantGain();
 };
 
 void TstSessionEvaluation::axesDoNotDependOnTheThread_data() {
@@ -138,6 +139,26 @@ void TstSessionEvaluation::verdictIsThatOfTheRunThatWillHappen() {
         }
     }
     QVERIFY(sameCheck(bothPass(a.designCheck, a.designCheck), a.designCheck));
+}
+
+void TstSessionEvaluation::hugePlantGainNamesThePlantGain() {
+    // A plant gain k0 = 1e308 typed for axis y (kp 460.852 as the session held it) was reported
+    // as "axes[1].gt.kp: 460.852 is out of range": kp k0 overflows, and of the two factors the
+    // typed k0 is the one out of all proportion (|log10 k0| = 308 against 2.7), so it is named,
+    // by its session path and in words, with the reason.
+    Session s = Session::paperDefault();
+    s.axes[1].gt.kp = 460.852;
+    s.axes[1].gt.plant.k0 = 1e308;
+    const AxisEvaluation a = evaluateAxis(s, 1);
+    QVERIFY(!a.ok);
+    QCOMPARE(QString::fromStdString(a.errorField), QString("axes[1].gt.plant.k0"));
+    const QString error = QString::fromStdString(a.error);
+    QVERIFY2(error.startsWith("plant gain k0 = 1e+308 is out of range with kp = 460.852"), qPrintable(error));
+    QVERIFY2(error.contains("kp k0 = inf"), qPrintable(error));
+    // A huge kp on the paper's plant is still kp's doing (k0 = 24.44).
+    s.axes[1].gt.plant.k0 = 24.44;
+    s.axes[1].gt.kp = 1e308;
+    QCOMPARE(QString::fromStdString(evaluateAxis(s, 1).errorField), QString("axes[1].gt.kp"));
 }
 
 QTEST_APPLESS_MAIN(TstSessionEvaluation)
