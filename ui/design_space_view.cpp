@@ -151,6 +151,17 @@ QString describePoint(const DesignPoint& p, const Specification& spec, SweepCrit
 
 } // namespace
 
+namespace {
+
+/// What the map's colours and shades mean (the colour scale is the metric's, whatever its sense).
+QString shadesText() {
+    return QObject::tr("colour: the metric, by the scale at the right (yellow is the high end, better only for the "
+                       "margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or "
+                       "diverged · light grey: not computed (cancelled)");
+}
+
+} // namespace
+
 DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     : QWidget(parent), session_(session) {
     const Specification spec = initialSpecification(session_->session());
@@ -283,12 +294,14 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     }
 
     plot_ = new DesignSpacePlot;
-    readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design. Bright: "
-                             "feasible · veiled: infeasible · grey: unstable or diverged."));
+    // The colour is the metric (its scale beside the map: yellow is a high value, not a good
+    // one); feasibility is the veil and the outline.
+    readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design. Colour: the "
+                             "metric (scale at the right) · unveiled, outlined: feasible · veiled: "
+                             "infeasible · grey: unstable or diverged."));
     readout_->setWordWrap(true);
     readout_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    readout_->setToolTip(tr("bright: feasible (outlined) · veiled: infeasible · grey: unstable or "
-                            "diverged · light grey: not computed (cancelled)"));
+    readout_->setToolTip(shadesText());
     // Status and readout share one strip of fixed height under the map (four lines,
     // side by side): a longer text never pushes the map or the buttons.
     const int lines = 4 * status_->fontMetrics().lineSpacing() + 6;
@@ -301,8 +314,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     texts->addWidget(status_, 3);
     texts->addWidget(readout_, 2);
     // What the cell shades mean, one hover away on the map (a label here cost the map height).
-    plot_->setToolTip(tr("bright: feasible (outlined) · veiled: infeasible · grey: unstable or diverged · "
-                         "light grey: not computed (cancelled)"));
+    plot_->setToolTip(shadesText());
     auto* right = new QVBoxLayout;
     right->addWidget(plot_, 1);
 

@@ -318,6 +318,10 @@ void TstDesignSpaceView::emptyMapBeforeTheFirstRun() {
     QVERIFY(view_->plot()->colorMap()->visible() && view_->plot()->colorScale()->visible());
     QVERIFY(view_->plot()->noticeText().isEmpty());
     QVERIFY(!view_->plot()->colorScale()->axis()->label().isEmpty());
+    // The key says the colour is the metric's scale: it said "bright: feasible" while the
+    // viridis map makes a high ITAE (the worst design) the brightest cell.
+    const QString key = view_->plot()->toolTip();
+    QVERIFY2(key.contains("colour: the metric") && !key.contains("bright"), qPrintable(key));
 }
 
 void TstDesignSpaceView::controlsStayInReachAndStill() {
