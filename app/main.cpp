@@ -140,7 +140,12 @@ int main(int argc, char* argv[]) {
             }
         }
         window.refresh();
-        QApplication::processEvents();
+        // A few passes, as a shown window gets: a plot may lay itself out again once (a title
+        // wrapped, a legend in fewer columns) in a queued drawing.
+        QElapsedTimer settling;
+        settling.start();
+        while (settling.elapsed() < 200)
+            QApplication::processEvents(QEventLoop::AllEvents, 20);
         const QString path = parser.value(screenshot);
         if (!window.grab().save(path)) {
             std::fprintf(stderr, "xytune: --screenshot: cannot write '%s'\n", qPrintable(path));

@@ -19,6 +19,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QScrollArea>
+#include <QToolButton>
 #include <QScrollBar>
 #include <QShowEvent>
 #include <QStyle>
@@ -258,7 +259,18 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
         else
             rest_->stop();
     });
+    // The controls give the map their width when hidden: hidden by default while the view is
+    // narrow (the lower tabs at 1366x768 left the map 80 px wide), shown or hidden for good
+    // once the user chooses.
+    settings_ = new QToolButton;
+    settings_->setText(tr("Settings"));
+    settings_->setCheckable(true);
+    settings_->setChecked(true);
+    settings_->setToolTip(tr("Show or hide the grid, the choice of the best design and the "
+                             "specification (hidden, the map takes the whole width)"));
+    connect(settings_, &QToolButton::clicked, this, [this] { settingsChosen_ = true; });
     auto* actions = new QHBoxLayout;
+    actions->addWidget(settings_);
     actions->addWidget(live_);
     actions->addWidget(run_);
     actions->addWidget(cancel_);
@@ -304,15 +316,20 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     readout_->setToolTip(shadesText());
     // Status and readout share one strip of fixed height under the map (four lines,
     // side by side): a longer text never pushes the map or the buttons.
+    // A longer text scrolls in its strip (it was cut at the fourth line).
     const int lines = 4 * status_->fontMetrics().lineSpacing() + 6;
-    for (QLabel* label : {status_, readout_}) {
-        label->setFixedHeight(lines);
-        label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-        label->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    }
     auto* texts = new QHBoxLayout;
-    texts->addWidget(status_, 3);
-    texts->addWidget(readout_, 2);
+    for (QLabel* label : {status_, readout_}) {
+        label->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+        auto* strip = new QScrollArea;
+        strip->setWidget(label);
+        strip->setWidgetResizable(true);
+        strip->setFrameShape(QFrame::NoFrame);
+        strip->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        strip->setFixedHeight(lines);
+        strip->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        texts->addWidget(strip, label == status_ ? 3 : 2);
+    }
     // What the cell shades mean, one hover away on the map (a label here cost the map height).
     plot_->setToolTip(shadesText());
     auto* right = new QVBoxLayout;
@@ -320,6 +337,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
 
     auto* middle = new QHBoxLayout;
     middle->addWidget(controlPanel_);
+    connect(settings_, &QToolButton::toggled, controlPanel_, &QWidget::setVisible);
     middle->addLayout(right, 1);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(actions);
@@ -346,6 +364,12 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     connect(logGrid_, &QCheckBox::toggled, this, [this] { scheduleLive(true); });
     connect(criterion_, &QComboBox::currentIndexChanged, this, [this] { scheduleLive(true); });
     updateCurrentDesign();
+}
+
+void DesignSpaceView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    if (!settingsChosen_)
+        settings_->setChecked(width() >= kWideEnoughForSettings);
 }
 
 void DesignSpaceView::showEvent(QShowEvent* event) {

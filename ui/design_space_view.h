@@ -20,6 +20,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QScrollArea;
+class QToolButton;
 class QSpinBox;
 class QTimer;
 
@@ -80,6 +81,9 @@ public:
     /// Shown when no design is feasible and the diagnosis offers a relaxed specification.
     QPushButton* relaxButton() const { return relax_; }
     QProgressBar* progressBar() const { return progress_; }
+    QToolButton* settingsButton() const { return settings_; }
+    QScrollArea* controlPanel() const { return controlPanel_; }
+    QLabel* statusLabel() const { return status_; }
     QString statusText() const;
     QString readoutText() const;
     QDoubleSpinBox* wnMinBox() const { return wnMin_; }
@@ -105,6 +109,9 @@ signals:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    /// Hides the controls while the view is narrower than kWideEnoughForSettings, until the
+    /// user shows or hides them.
+    void resizeEvent(QResizeEvent* event) override;
     /// Wheel events over an unfocused field of the control panel scroll the panel.
     bool eventFilter(QObject* watched, QEvent* event) override;
 
@@ -151,6 +158,11 @@ private:
     DesignSpacePlot* plot_;
     QLabel* readout_;
     QScrollArea* controlPanel_ = nullptr;
+    QToolButton* settings_ = nullptr; ///< shows or hides controlPanel_
+    bool settingsChosen_ = false;     ///< the user toggled settings_: no longer by width
+    /// Width (px) from which the controls are shown beside the map by default: below it the
+    /// map (about 250 px narrower with them) would be too small to point at a cell.
+    static constexpr int kWideEnoughForSettings = 640;
     QPushButton* relax_ = nullptr;
     std::optional<SweepDiagnosis> diagnosis_;
     QLabel* status_;

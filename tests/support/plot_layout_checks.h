@@ -2,7 +2,7 @@
 #pragma once
 // What a person reading a plot needs of its layout: every annotation (a marker's label, a
 // notice, a ζ label) inside its axis rect and none on another, a legend set in the plane inside
-// it, and every title or readout line as wide as its text.
+// it, every legend entry whole, and every title or readout line as wide as its text.
 #include "ui/plots/damping_labels.h"
 
 #include <QFontMetricsF>
@@ -78,6 +78,26 @@ inline QStringList annotationProblems(QCustomPlot* plot) {
                                 .arg(where).arg(r.left()).arg(r.top()).arg(r.width()).arg(r.height())
                                 .arg(a.left()).arg(a.top()).arg(a.width()).arg(a.height());
             }
+    // Every legend entry as wide as its icon and text: a row too narrow for its columns cuts
+    // the entries' text ("closed-loop unit ste"). One pixel of allowance for the layout's
+    // integer round-off.
+    if (QCPLegend* legend = plot->legend; legend && legend->visible()) {
+        for (int i = 0; i < legend->itemCount(); ++i) {
+            QCPAbstractLegendItem* item = legend->item(i);
+            if (!item)
+                continue; // an empty cell
+            const QCPLayoutElement* element = item;
+            const int needs = element->minimumOuterSizeHint().width();
+            const QRect r = item->outerRect();
+            QString text;
+            if (auto* p = qobject_cast<QCPPlottableLegendItem*>(item))
+                text = p->plottable()->name();
+            if (r.width() + 1 < needs || r.right() > plot->viewport().right() + 1)
+                problems << QString("%1: the legend entry '%2' needs %3 px, has %4 (from x = %5, plot %6 px)")
+                                .arg(where, shortText(text)).arg(needs).arg(r.width()).arg(r.left())
+                                .arg(plot->viewport().width());
+        }
+    }
     // Titles and readouts of the layout: each line as wide as its element.
     for (int k = 0; k < plot->plotLayout()->elementCount(); ++k) {
         auto* element = qobject_cast<QCPTextElement*>(plot->plotLayout()->elementAt(k));

@@ -18,6 +18,7 @@
 #include <QSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QToolButton>
 #include <QSignalSpy>
 #include <QWheelEvent>
 #include <QApplication>
@@ -72,6 +73,7 @@ private slots:
     void bestOnTheEdgeIsWarned();
     void emptyMapBeforeTheFirstRun();
     void controlsStayInReachAndStill();
+    void narrowViewGivesTheMapTheWidth();
     void wheelScrollsThePanelNotTheField();
     void cancelStopsAStudyAndKeepsTheWindowResponsive();
     void newRunReplacesARunningOne();
@@ -340,12 +342,40 @@ void TstDesignSpaceView::controlsStayInReachAndStill() {
     QVERIFY(view_->statusText().count('\n') >= 2);
     QCOMPARE(view_->cancelButton()->mapTo(view_.get(), QPoint(0, 0)), cancelBefore);
     QCOMPARE(view_->plot()->geometry(), mapBefore);
-    QVERIFY(view_->plot()->width() >= 200);
+    // The status is longer than its strip: it scrolls there, whole, instead of being cut.
+    auto* strip = qobject_cast<QScrollArea*>(view_->statusLabel()->parentWidget()->parentWidget());
+    QVERIFY(strip);
+    QVERIFY(strip->verticalScrollBar()->maximum() > 0);
+    QVERIFY(view_->statusLabel()->height() >= view_->statusLabel()->heightForWidth(view_->statusLabel()->width()));
+}
+
+void TstDesignSpaceView::narrowViewGivesTheMapTheWidth() {
+    // At 1366x768 the lower tab is about 600 px wide: the controls beside the map left it about
+    // 80 x 150 px. Narrow, the controls are hidden until asked for, and the map takes the width.
+    view_->resize(600, 330);
+    QTest::qWait(50);
+    QVERIFY(!view_->settingsButton()->isChecked());
+    QVERIFY(!view_->controlPanel()->isVisible());
+    QVERIFY2(view_->plot()->width() >= view_->width() - 40, qPrintable(QString::number(view_->plot()->width())));
+    // Asked for, they are shown, and stay so when the view is resized (the user's choice).
+    QTest::mouseClick(view_->settingsButton(), Qt::LeftButton);
+    QVERIFY(view_->controlPanel()->isVisible());
+    QVERIFY(view_->plot()->width() < view_->width() - view_->controlPanel()->width() + 1);
+    view_->resize(580, 330);
+    QTest::qWait(20);
+    QVERIFY(view_->controlPanel()->isVisible());
+    // Wide, a new view shows them beside the map.
+    QTest::mouseClick(view_->settingsButton(), Qt::LeftButton);
+    QVERIFY(!view_->controlPanel()->isVisible());
+    view_->resize(900, 400);
+    QTest::qWait(20);
+    QVERIFY(!view_->controlPanel()->isVisible()); // still the user's choice
 }
 
 void TstDesignSpaceView::wheelScrollsThePanelNotTheField() {
     view_->resize(600, 330);
     QTest::qWait(50);
+    QTest::mouseClick(view_->settingsButton(), Qt::LeftButton); // narrow: shown on request
     QDoubleSpinBox* box = view_->wnMaxBox();
     QScrollArea* panel = nullptr;
     for (QScrollArea* a : view_->findChildren<QScrollArea*>())

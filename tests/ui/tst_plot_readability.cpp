@@ -64,6 +64,13 @@ QList<QPair<const char*, Session>> layoutStates() {
             {"unstable", unstable}, {"gcode", gcode}, {"circle", circle}};
 }
 
+/// Draws @p plot as a user sees it: the guard may re-lay it out once (a wrapped title, a
+/// legend in fewer columns) and queue the drawing that shows it.
+void drawSettled(QCustomPlot* plot) {
+    plot->replot(QCustomPlot::rpImmediateRefresh);
+    plot->replot(QCustomPlot::rpImmediateRefresh);
+}
+
 } // namespace
 
 class TstPlotReadability : public QObject {
@@ -288,12 +295,12 @@ void TstPlotReadability::annotationsStayInsideAndApart() {
                 for (auto* plot : tabs->currentWidget()->findChildren<QCustomPlot*>()) {
                     if (!plot->isVisible())
                         continue;
-                    plot->replot(QCustomPlot::rpImmediateRefresh);
+                    drawSettled(plot);
                     for (const QString& p : test::annotationProblems(plot))
                         problems << QString("axis %1, %2: %3").arg(axis).arg(tabs->tabText(i).remove('&'), p);
                 }
                 if (auto* plot = qobject_cast<QCustomPlot*>(tabs->currentWidget())) {
-                    plot->replot(QCustomPlot::rpImmediateRefresh);
+                    drawSettled(plot);
                     for (const QString& p : test::annotationProblems(plot))
                         problems << QString("axis %1, %2: %3").arg(axis).arg(tabs->tabText(i).remove('&'), p);
                 }

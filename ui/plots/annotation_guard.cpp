@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/annotation_guard.h"
 
+#include "ui/plots/legend_columns.h"
+
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -128,8 +130,11 @@ QRectF apart(const QRectF& r, const QRectF& area, const std::vector<QRectF>& pla
 void placeAnnotations(QCustomPlot* plot) {
     // Titles only on a plot laid out in its window: before it is shown a plot is a default
     // 100 px wide, and rows made tall there would shrink the plane its first view is fitted to.
-    if (plot->isVisible() && plot->width() >= 240 && wrapTitles(plot))
-        plot->replot(QCustomPlot::rpQueuedReplot); // the rows' heights follow on the next pass
+    if (plot->isVisible() && plot->width() >= 240) {
+        const bool legends = fitLegendColumns(plot);
+        if (wrapTitles(plot) || legends)
+            plot->replot(QCustomPlot::rpQueuedReplot); // the rows' heights follow on the next pass
+    }
     std::vector<QRectF> placed;
     for (int i = 0; i < plot->itemCount(); ++i) {
         auto* text = qobject_cast<QCPItemText*>(plot->item(i));

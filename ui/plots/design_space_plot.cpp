@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/design_space_plot.h"
+#include "ui/plots/legend_columns.h"
 
 #include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_tools.h"
@@ -258,8 +259,7 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
     legend->setBorderPen(Qt::NoPen);
-    legend->setWrap(4); // one row of short names: the map is narrow at 1366x768
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    setMaxLegendColumns(legend, 4); // one row of short names; two where the map is narrow
     // The row has only the map's column (not the colour scale's): "least violating" clipped.
     compactLegend(legend);
     axisRect()->insetLayout()->take(legend);

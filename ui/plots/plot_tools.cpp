@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/annotation_guard.h"
+#include "ui/plots/legend_columns.h"
 #include "ui/plots/plot_widget.h"
 
 #include "ui/plots/plane_grid.h"
@@ -142,8 +143,7 @@ void placeLegendBelow(QCustomPlot* plot, int row, int columns) {
     legend->setVisible(true);
     legend->setFont(QFont(plot->font().family(), 8));
     legend->setBorderPen(Qt::NoPen);
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    legend->setWrap(columns);
+    setMaxLegendColumns(legend, columns); // fewer when the row is narrow (fitLegendColumns)
     plot->axisRect()->insetLayout()->take(legend);
     plot->plotLayout()->addElement(row, 0, legend);
     plot->plotLayout()->setRowStretchFactor(row, 0.001);
