@@ -99,11 +99,12 @@ ContourTrace trace(const Session& session, const Path& path, const std::vector<d
     return out;
 }
 
-/// The traced points of the samples whose reference lies on segment @p segment.
-void pointsOnSegment(const ContourTrace& t, std::size_t segment, std::vector<double>& x, std::vector<double>& y) {
+/// The traced points, in time order, of the samples whose reference lies on @p circle's segments.
+void pointsOnSegments(const ContourTrace& t, const CircleSegments& circle, std::vector<double>& x,
+                      std::vector<double>& y) {
     x.clear(), y.clear();
     for (std::size_t k = 0; k < t.profile.segment.size(); ++k)
-        if (t.profile.segment[k] == segment) {
+        if (circle.contains(t.profile.segment[k])) {
             x.push_back(t.x[k]);
             y.push_back(t.y[k]);
         }
@@ -129,16 +130,16 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
     const BallbarCircles circles = findBallbarCircles(program);
     if (!circles.first)
         return std::nullopt;
-    const PathSegment& circle = program.path.segments()[*circles.first];
+    const PathSegment& circle = program.path.segments()[circles.first->begin];
     ContourCircularTest test;
     test.nominal = {circle.centre(), circle.radius()};
     test.clockwise = circle.sweep() < 0.0;
     test.fromProgram = true;
-    test.line = program.segments[*circles.first].line;
-    pointsOnSegment(trace, *circles.first, test.x, test.y);
+    test.line = program.segments[circles.first->begin].line;
+    pointsOnSegments(trace, *circles.first, test.x, test.y);
     if (circles.opposite) {
-        test.reverseLine = program.segments[*circles.opposite].line;
-        pointsOnSegment(trace, *circles.opposite, test.reverseX, test.reverseY);
+        test.reverseLine = program.segments[circles.opposite->begin].line;
+        pointsOnSegments(trace, *circles.opposite, test.reverseX, test.reverseY);
     }
     if (!circles.note.empty())
         warnings.push_back("ISO 230-4: " + circles.note);
@@ -186,8 +187,8 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
                              Path({PathSegment::arc(circle.centre(), circle.radius(), circle.startAngle(),
                                                     -circle.sweep())}),
                              feed, options);
-        pointsOnSegment(test.forward, 0, test.x, test.y);
-        pointsOnSegment(test.reverse, 0, test.reverseX, test.reverseY);
+        pointsOnSegments(test.forward, {0, 1}, test.x, test.y);
+        pointsOnSegments(test.reverse, {0, 1}, test.reverseX, test.reverseY);
         if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
             test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal, options.iso);
             test.reverseIso = iso230Circular(test.reverseX, test.reverseY, test.nominal, options.iso);

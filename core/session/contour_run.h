@@ -41,10 +41,11 @@ struct ContourTrace {
  *    program's approach left out), from rest at its start point at its programmed feed, once in
  *    the program's direction and once the other way (for the hysteresis).
  *  - A ballbar program as machine shops write it (full circles among feed-in and feed-out moves,
+ *    each written as one arc or as consecutive arcs such as semicircles or quadrants,
  *    findBallbarCircles): the runs are the program's own, its first full circle and the first
  *    one on the same circle the other way, measured on the program's trace where the reference
- *    lies on them (the feed-in moves bring the axes onto the circle as on the machine). With
- *    one direction only, G and F without H (ContourRun::warnings says why).
+ *    lies on their segments (the feed-in moves bring the axes onto the circle as on the
+ *    machine). With one direction only, G and F without H (ContourRun::warnings says why).
  */
 struct ContourCircularTest {
     NominalCircle nominal;
@@ -54,7 +55,8 @@ struct ContourCircularTest {
     std::optional<Iso230Circular> reverseIso;
     /// The runs are the program's own circles (not the circle re-run alone).
     bool fromProgram = false;
-    std::size_t line = 0;        ///< the program line of the first run's circle
+    /// The program line of the first run's circle (of its first arc when written as several).
+    std::size_t line = 0;
     std::size_t reverseLine = 0; ///< of the reverse run's (0: re-run alone, or none)
     ContourTrace forward;  ///< the circle in the program's direction (re-run alone only)
     ContourTrace reverse;  ///< the same circle run the other way (re-run alone only)

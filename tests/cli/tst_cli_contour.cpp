@@ -117,6 +117,24 @@ void TstCliContour::ballbarProgramGivesBothDirections() {
     XYT_COMPARE_NEAR(iso["F_min_reverse"].toDouble(), core.circular->reverseIso->radialDeviationFMin, 1e-15, 0.0);
     XYT_COMPARE_NEAR(iso["H"].toDouble(), *core.circular->iso.hysteresisH, 1e-15, 0.0);
     QCOMPARE(iso["nominal"].toObject()["radius"].toDouble(), xyt::test::kBallbarRadiusMm);
+    // The same test with the circles written as semicircles and quadrants: the same path and
+    // profile, so the same figures up to round-off; before, no circle was found in it at all.
+    QFile arcs(dir.filePath("ballbar_arcs.nc"));
+    QVERIFY(arcs.open(QIODevice::WriteOnly));
+    arcs.write(xyt::test::kBallbarArcsProgram);
+    arcs.close();
+    const auto arcsRun = xyt::test::runCli({"contour", "--gcode", arcs.fileName(), "--dt", "0.002"});
+    QCOMPARE(arcsRun.exitCode, 0);
+    const QJsonObject arcsIso = arcsRun.json()["iso230_4"].toObject();
+    QVERIFY2(!arcsIso.isEmpty(), arcsRun.out.constData());
+    QCOMPARE(arcsIso["runs"].toString(), QStringLiteral("program"));
+    QCOMPARE(arcsIso["line"].toInteger(), qint64(xyt::test::kBallbarArcsClockwiseLine));
+    QCOMPARE(arcsIso["reverse_line"].toInteger(), qint64(xyt::test::kBallbarArcsCounterClockwiseLine));
+    for (const char* figure :
+         {"G", "G_reverse", "F_max", "F_min", "F_max_reverse", "F_min_reverse", "H", "G_bidirectional"}) {
+        QVERIFY2(arcsIso[figure].isDouble(), figure);
+        XYT_COMPARE_NEAR(arcsIso[figure].toDouble(), iso[figure].toDouble(), 1e-9, 0.0);
+    }
     // One direction only: G and F, no H, and the warnings say why.
     QFile one(dir.filePath("one_way.nc"));
     QVERIFY(one.open(QIODevice::WriteOnly));

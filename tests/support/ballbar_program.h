@@ -22,4 +22,25 @@ inline constexpr std::size_t kBallbarClockwiseSegment = 2, kBallbarClockwiseLine
 inline constexpr std::size_t kBallbarCounterClockwiseSegment = 5, kBallbarCounterClockwiseLine = 7;
 inline constexpr double kBallbarRadiusMm = 25.0;
 
+// The same test with each circle written as consecutive arcs, as many controllers and CAM
+// posts write full circles: the clockwise circle as two semicircles, the counter-clockwise one
+// as four quadrants, with the same feed-in and feed-out arcs.
+inline constexpr const char* kBallbarArcsProgram = "G21 G90 G17\n"
+                                                   "G0 X15 Y0\n"
+                                                   "G2 X25 Y0 I5 J0 F120\n"
+                                                   "G2 X-25 Y0 I-25 J0\n"
+                                                   "G2 X25 Y0 I25 J0\n"
+                                                   "G3 X15 Y0 I-5 J0\n"
+                                                   "G2 X25 Y0 I5 J0\n"
+                                                   "G3 X0 Y25 I-25 J0\n"
+                                                   "G3 X-25 Y0 I0 J-25\n"
+                                                   "G3 X0 Y-25 I25 J0\n"
+                                                   "G3 X25 Y0 I0 J25\n"
+                                                   "G3 X15 Y0 I-5 J0\n";
+/// The circles' segments [begin, end) in the path and the lines of their first arcs.
+inline constexpr std::size_t kBallbarArcsClockwiseBegin = 2, kBallbarArcsClockwiseEnd = 4,
+                             kBallbarArcsClockwiseLine = 4;
+inline constexpr std::size_t kBallbarArcsCounterClockwiseBegin = 6, kBallbarArcsCounterClockwiseEnd = 10,
+                             kBallbarArcsCounterClockwiseLine = 8;
+
 } // namespace xyt::test

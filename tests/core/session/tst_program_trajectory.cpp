@@ -28,6 +28,7 @@ private slots:
     void octaveExportRefusesAProgram();
     void ballbarProgramCirclesAreFound_data();
     void ballbarProgramCirclesAreFound();
+    void ballbarFiguresOfAKnownRadialDeviation_data();
     void ballbarFiguresOfAKnownRadialDeviation();
     void ballbarProgramIsEvaluated();
 };
@@ -182,38 +183,113 @@ void TstProgramTrajectory::octaveExportRefusesAProgram() {
 }
 
 void TstProgramTrajectory::ballbarProgramCirclesAreFound_data() {
+    // Segments [begin, end) of each circle; -1: none.
     QTest::addColumn<QString>("program");
-    QTest::addColumn<int>("first");    // -1: none
-    QTest::addColumn<int>("opposite"); // -1: none
+    QTest::addColumn<int>("first");
+    QTest::addColumn<int>("firstEnd");
+    QTest::addColumn<int>("opposite");
+    QTest::addColumn<int>("oppositeEnd");
     QTest::addColumn<QString>("note"); // a part of the note, empty: no note
+    const int cw = int(test::kBallbarClockwiseSegment), ccw = int(test::kBallbarCounterClockwiseSegment);
     QTest::newRow("clockwise and counter-clockwise with feed-in arcs")
-        << QString(test::kBallbarProgram) << int(test::kBallbarClockwiseSegment)
-        << int(test::kBallbarCounterClockwiseSegment) << QString();
+        << QString(test::kBallbarProgram) << cw << cw + 1 << ccw << ccw + 1 << QString();
     QTest::newRow("one direction with a feed-in arc")
-        << QString("G0 X15 Y0\nG2 X25 Y0 I5 J0 F120\nG2 X25 Y0 I-25 J0\n") << 2 << -1
+        << QString("G0 X15 Y0\nG2 X25 Y0 I5 J0 F120\nG2 X25 Y0 I-25 J0\n") << 2 << 3 << -1 << -1
         << QString("the program runs its full circle (line 3) one way only: no circular hysteresis H");
     QTest::newRow("two clockwise circles")
-        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG2 X25 Y0 I-25 J0\n") << 1 << -1
+        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG2 X25 Y0 I-25 J0\n") << 1 << 2 << -1 << -1
         << QString("none of the program's 2 full circles runs the circle of line 2 the other way");
     QTest::newRow("the other way on another radius")
-        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG1 X26\nG3 X26 Y0 I-26 J0\n") << 1 << -1
+        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG1 X26\nG3 X26 Y0 I-26 J0\n") << 1 << 2 << -1 << -1
         << QString("none of the program's 2 full circles");
     QTest::newRow("three circles")
-        << QString(test::kBallbarProgram) + "G1 X25 Y0\nG2 X25 Y0 I-25 J0\n" << int(test::kBallbarClockwiseSegment)
-        << int(test::kBallbarCounterClockwiseSegment)
+        << QString(test::kBallbarProgram) + "G1 X25 Y0\nG2 X25 Y0 I-25 J0\n" << cw << cw + 1 << ccw << ccw + 1
         << QString("the program holds 3 full circles: the figures are those of line 4 and line 7");
-    QTest::newRow("no full circle") << QString("G1 X10 F600\nG2 X20 Y0 I5 J0\n") << -1 << -1 << QString();
+    QTest::newRow("no full circle") << QString("G1 X10 F600\nG2 X20 Y0 I5 J0\n") << -1 << -1 << -1 << -1
+                                    << QString();
+    // Full circles written as consecutive arcs on one centre and radius, turning one way.
+    QTest::newRow("semicircles clockwise, quadrants counter-clockwise")
+        << QString(test::kBallbarArcsProgram) << int(test::kBallbarArcsClockwiseBegin)
+        << int(test::kBallbarArcsClockwiseEnd) << int(test::kBallbarArcsCounterClockwiseBegin)
+        << int(test::kBallbarArcsCounterClockwiseEnd) << QString();
+    QTest::newRow("a one-arc circle paired with quadrants the other way")
+        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG3 X0 Y25 I-25 J0\nG3 X-25 Y0 I0 J-25\n"
+                   "G3 X0 Y-25 I25 J0\nG3 X25 Y0 I0 J25\n")
+        << 1 << 2 << 2 << 6 << QString();
+    QTest::newRow("three quadrants are no circle")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG1 X25 Y0\n")
+        << -1 << -1 << -1 << -1 << QString();
+    // Four quadrants whose last ends one unit of the last digit (0.001 mm) past or short of the
+    // start (within the reader's end tolerance of 0.002 mm): 4e-5 rad off one turn.
+    QTest::newRow("quadrants ending 0.001 mm past the start are no circle")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG3 X25 Y0.001 I0 J25\n")
+        << -1 << -1 << -1 << -1 << QString();
+    QTest::newRow("quadrants ending 0.001 mm short of the start are no circle")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG3 X25 Y-0.001 I0 J25\n")
+        << -1 << -1 << -1 << -1 << QString();
+    // Two clockwise semicircles of radius 25 about (0, 0) and (-50, 0): an S whose sweeps add up
+    // to one turn, but no circle.
+    QTest::newRow("arcs on different centres are not joined")
+        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG2 X-75 Y0 I-25 J0\n") << -1 << -1 << -1 << -1
+        << QString();
+    QTest::newRow("a semicircle and back is no circle")
+        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG3 X25 Y0 I25 J0\n") << -1 << -1 << -1 << -1 << QString();
+    QTest::newRow("a rapid between semicircles ends the run")
+        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG0 X-25 Y0.5\nG0 X-25 Y0\nG2 X25 Y0 I25 J0\n") << -1 << -1
+        << -1 << -1 << QString();
+    // More than a turn in a run: the circle is the first whole turn, the rest a new run.
+    QTest::newRow("five quadrants: the first four")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\n"
+                   "G3 X25 Y0 I0 J25\nG3 X0 Y25 I-25 J0\n")
+        << 1 << 5 << -1 << -1 << QString("the program runs its full circle (lines 2-5) one way only");
+    QTest::newRow("a quarter on the circle, then a full-circle arc: the full-circle arc")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X0 Y25 I0 J-25\n") << 2 << 3 << -1 << -1
+        << QString("the program runs its full circle (line 3) one way only");
+    QTest::newRow("a semicircle, then three 2 pi / 3 arcs: the turn after the semicircle")
+        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG2 X12.5 Y21.650635094610966 I25 J0\n"
+                   "G2 X12.5 Y-21.650635094610966 I-12.5 J-21.650635094610966\n"
+                   "G2 X-25 Y0 I-12.5 J21.650635094610966\n")
+        << 2 << 5 << -1 << -1 << QString("(lines 3-5)");
+    QTest::newRow("eight quadrants: two circles one way")
+        << QString("G0 X25 Y0\nG2 X0 Y-25 I-25 J0 F120\nG2 X-25 Y0 I0 J25\nG2 X0 Y25 I25 J0\nG2 X25 Y0 I0 J-25\n"
+                   "G2 X0 Y-25 I-25 J0\nG2 X-25 Y0 I0 J25\nG2 X0 Y25 I25 J0\nG2 X25 Y0 I0 J-25\n")
+        << 1 << 5 << -1 << -1
+        << QString("none of the program's 2 full circles runs the circle of lines 2-5 the other way");
 }
 
 void TstProgramTrajectory::ballbarProgramCirclesAreFound() {
     QFETCH(QString, program);
     QFETCH(int, first);
+    QFETCH(int, firstEnd);
     QFETCH(int, opposite);
+    QFETCH(int, oppositeEnd);
     QFETCH(QString, note);
     const BallbarCircles c = findBallbarCircles(readGcode(program.toStdString()));
-    QCOMPARE(c.first ? int(*c.first) : -1, first);
-    QCOMPARE(c.opposite ? int(*c.opposite) : -1, opposite);
+    QCOMPARE(c.first ? int(c.first->begin) : -1, first);
+    QCOMPARE(c.first ? int(c.first->end) : -1, firstEnd);
+    QCOMPARE(c.opposite ? int(c.opposite->begin) : -1, opposite);
+    QCOMPARE(c.opposite ? int(c.opposite->end) : -1, oppositeEnd);
     QVERIFY2(note.isEmpty() ? c.note.empty() : QString::fromStdString(c.note).contains(note), c.note.c_str());
+}
+
+void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation_data() {
+    // The circles' segments [begin, end) and the lines of their first arcs.
+    QTest::addColumn<QString>("program");
+    QTest::addColumn<int>("cwBegin");
+    QTest::addColumn<int>("cwEnd");
+    QTest::addColumn<int>("ccwBegin");
+    QTest::addColumn<int>("ccwEnd");
+    QTest::addColumn<int>("cwLine");
+    QTest::addColumn<int>("ccwLine");
+    const int cw = int(test::kBallbarClockwiseSegment), ccw = int(test::kBallbarCounterClockwiseSegment);
+    QTest::newRow("each circle one arc") << QString(test::kBallbarProgram) << cw << cw + 1 << ccw << ccw + 1
+                                         << int(test::kBallbarClockwiseLine)
+                                         << int(test::kBallbarCounterClockwiseLine);
+    QTest::newRow("semicircles and quadrants")
+        << QString(test::kBallbarArcsProgram) << int(test::kBallbarArcsClockwiseBegin)
+        << int(test::kBallbarArcsClockwiseEnd) << int(test::kBallbarArcsCounterClockwiseBegin)
+        << int(test::kBallbarArcsCounterClockwiseEnd) << int(test::kBallbarArcsClockwiseLine)
+        << int(test::kBallbarArcsCounterClockwiseLine);
 }
 
 void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation() {
@@ -221,40 +297,48 @@ void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation() {
     // R + a, the counter-clockwise run at R - b (concentric). Closed forms: each run is a
     // circle about the nominal centre, so G = 0 for each; F max = F min = +a (clockwise) and -b
     // (counter-clockwise); H = a + b and G(b) = a + b (the radii differ by a + b at every angle).
+    // Written as one arc or as several per circle, the runs are the same circles.
+    QFETCH(QString, program);
+    QFETCH(int, cwBegin);
+    QFETCH(int, cwEnd);
+    QFETCH(int, ccwBegin);
+    QFETCH(int, ccwEnd);
+    QFETCH(int, cwLine);
+    QFETCH(int, ccwLine);
     const double a = 0.004, b = 0.0015, radius = test::kBallbarRadiusMm;
-    const GcodeProgram program = readGcode(test::kBallbarProgram);
+    const GcodeProgram read = readGcode(program.toStdString());
     ContourTrace trace;
     FeedProfileOptions options;
     options.dtSeconds = 0.01;
-    trace.profile = planFeedProfile(program, options);
+    trace.profile = planFeedProfile(read, options);
     trace.x = trace.profile.x;
     trace.y = trace.profile.y;
-    std::size_t onCw = 0, onCcw = 0;
+    // The points each run must hold, in time order.
+    std::vector<double> cwX, cwY, ccwX, ccwY;
     for (std::size_t k = 0; k < trace.x.size(); ++k) {
-        const std::size_t segment = trace.profile.segment[k];
-        const bool cw = segment == test::kBallbarClockwiseSegment;
-        if (!cw && segment != test::kBallbarCounterClockwiseSegment)
+        const int segment = int(trace.profile.segment[k]);
+        const bool cw = segment >= cwBegin && segment < cwEnd;
+        if (!cw && !(segment >= ccwBegin && segment < ccwEnd)) {
+            trace.y[k] += 1.0; // the feed-in and feed-out arcs: far off, and left out of the figures
             continue;
-        (cw ? onCw : onCcw) += 1;
+        }
         const double r = std::hypot(trace.x[k], trace.y[k]);
         const double scale = (radius + (cw ? a : -b)) / r;
         trace.x[k] *= scale;
         trace.y[k] *= scale;
+        (cw ? cwX : ccwX).push_back(trace.x[k]);
+        (cw ? cwY : ccwY).push_back(trace.y[k]);
     }
-    for (std::size_t k = 0; k < trace.x.size(); ++k)
-        if (trace.profile.segment[k] != test::kBallbarClockwiseSegment &&
-            trace.profile.segment[k] != test::kBallbarCounterClockwiseSegment)
-            trace.y[k] += 1.0; // the feed-in and feed-out arcs: far off, and left out of the figures
-    QVERIFY(onCw > 1000 && onCcw > 1000);
+    QVERIFY(cwX.size() > 1000 && ccwX.size() > 1000);
     std::vector<std::string> warnings;
-    const auto testResult = ballbarTestOfProgram(program, trace, Iso230Options{}, warnings);
+    const auto testResult = ballbarTestOfProgram(read, trace, Iso230Options{}, warnings);
     QVERIFY(testResult);
     QVERIFY(warnings.empty());
     QVERIFY(testResult->fromProgram && testResult->clockwise);
-    QCOMPARE(testResult->line, test::kBallbarClockwiseLine);
-    QCOMPARE(testResult->reverseLine, test::kBallbarCounterClockwiseLine);
-    QCOMPARE(testResult->x.size(), onCw);
-    QCOMPARE(testResult->reverseX.size(), onCcw);
+    QCOMPARE(int(testResult->line), cwLine);
+    QCOMPARE(int(testResult->reverseLine), ccwLine);
+    QVERIFY(testResult->x == cwX && testResult->y == cwY);
+    QVERIFY(testResult->reverseX == ccwX && testResult->reverseY == ccwY);
     const Iso230Circular& iso = testResult->iso;
     XYT_COMPARE_NEAR(iso.circularDeviationG, 0.0, 0.0, 1e-10);
     XYT_COMPARE_NEAR(iso.radialDeviationFMax, a, 0.0, 1e-10);
