@@ -4,6 +4,7 @@
 #include "app/allocator_tuning.h"
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
+#include "ui/robustness_view.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file.h"
 #include "ui/session/session_file_controller.h"
@@ -37,7 +38,7 @@ struct Options {
     QCommandLineOption screenshot{"screenshot", "Render the main window to FILE.png and exit.", "FILE"};
     QCommandLineOption size{"size", "Window size for --screenshot, WxH (default 1366x768).", "WxH", "1366x768"};
     QCommandLineOption tab{"tab", "With --screenshot: show this tab first (e.g. \"Design space\"; "
-                                  "a design-space study is run before the picture).", "NAME"};
+                                  "a design-space or robustness study is run before the picture).", "NAME"};
     void addTo(QCommandLineParser& parser) const {
         parser.setApplicationDescription("Tuning workbench for XY coordinate-table position controllers");
         parser.addHelpOption();
@@ -131,13 +132,18 @@ int main(int argc, char* argv[]) {
                 std::fprintf(stderr, "xytune: --tab: no tab named '%s'\n", qPrintable(wanted));
                 return 2;
             }
-            if (auto* space = window.findChild<xyt::ui::DesignSpaceView*>(); space && space->isVisible()) {
-                space->run();
+            // A study's tab is shown with its result (the run it would start on a click).
+            const auto runShown = [](auto* view) {
+                if (!view || !view->isVisible())
+                    return;
+                view->run();
                 QElapsedTimer waited;
                 waited.start();
-                while (space->isRunning() && waited.elapsed() < 120000)
+                while (view->isRunning() && waited.elapsed() < 120000)
                     QApplication::processEvents(QEventLoop::AllEvents, 50);
-            }
+            };
+            runShown(window.findChild<xyt::ui::DesignSpaceView*>());
+            runShown(window.findChild<xyt::ui::RobustnessView*>());
         }
         window.refresh();
         // A few passes, as a shown window gets: a plot may lay itself out again once (a title

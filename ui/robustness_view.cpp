@@ -135,8 +135,10 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     band_->setMinimumWidth(120);
     figureStack_->addWidget(band_);
     auto* plots = new QHBoxLayout;
-    plots->addWidget(envelope_, 3);
-    plots->addWidget(figureStack_, 2);
+    // Equal halves: at 1366x768 a third of the width left the figure about 150 px, too narrow
+    // for the sensitivity plot's notice.
+    plots->addWidget(envelope_, 1);
+    plots->addWidget(figureStack_, 1);
     status_ = new QLabel(tr("Set a range for the parameters you doubt and press Run."));
     status_->setWordWrap(true);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);

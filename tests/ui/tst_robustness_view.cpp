@@ -12,6 +12,7 @@
 #include "ui/plots/histogram_plot.h"
 #include "ui/plots/sensitivity_plot.h"
 #include "ui/session/tuning_session.h"
+#include "tests/support/plot_layout_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QCheckBox>
@@ -46,6 +47,8 @@ private slots:
     void contourModeDrawsTheCoresJointResult();
     void contourWorstPairLoadsBothAxesInOneStep();
     void contourModeFollowsTheTrajectory();
+    void computedResultsAreReadable_data();
+    void computedResultsAreReadable();
 
 private:
     void runAndWait();
@@ -328,6 +331,55 @@ void TstRobustnessView::contourModeFollowsTheTrajectory() {
     view_->contourBox()->setChecked(true);
     QVERIFY(!view_->result());
     QVERIFY(!view_->envelopePlot()->hasResult());
+}
+
+
+void TstRobustnessView::computedResultsAreReadable_data() {
+    QTest::addColumn<bool>("contour");
+    QTest::addColumn<double>("rangePct");
+    QTest::newRow("axis, no uncertainty") << false << 0.0; // every plant the nominal one
+    QTest::newRow("axis, k0 20 %") << false << 20.0;
+    QTest::newRow("contour, no uncertainty") << true << 0.0;
+    QTest::newRow("contour, k0 20 %") << true << 20.0;
+}
+
+void TstRobustnessView::computedResultsAreReadable() {
+    // Each plot of a computed result, in each figure, at the sizes the tab has in a 1366x768
+    // and a 1600x1000 window: annotations inside and apart, legends whole, tick labels apart.
+    // With every plant the nominal one the histogram's range was a round-off wide and its
+    // tick labels ran together ("3.34853.3486...").
+    QFETCH(bool, contour);
+    QFETCH(double, rangePct);
+    if (contour) {
+        TrajectorySettings t = session_->session().trajectory;
+        t.kind = TrajectoryKind::Circle;
+        session_->setTrajectory(t);
+        view_->contourBox()->setChecked(true);
+    }
+    view_->rangeBox("k0")->setValue(rangePct);
+    view_->samplesBox()->setValue(24);
+    view_->seedBox()->setValue(3);
+    runAndWait();
+    QVERIFY(contour ? view_->contourResult().has_value() : view_->result().has_value());
+    QStringList problems;
+    for (const QSize size : {QSize(560, 390), QSize(800, 480)}) {
+        view_->resize(size);
+        for (int figure = 0; figure < view_->figureBox()->count(); ++figure) {
+            view_->figureBox()->setCurrentIndex(figure);
+            QTest::qWait(20);
+            for (auto* plot : view_->findChildren<QCustomPlot*>()) {
+                if (!plot->isVisible())
+                    continue;
+                plot->replot(QCustomPlot::rpImmediateRefresh);
+                plot->replot(QCustomPlot::rpImmediateRefresh); // as shown: after the guard's re-layout
+                for (const QString& p : test::annotationProblems(plot))
+                    problems << QString("%1x%2, %3: %4").arg(size.width()).arg(size.height())
+                                    .arg(view_->figureBox()->currentText(), p);
+            }
+        }
+    }
+    problems.removeDuplicates();
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
 }
 
 QTEST_MAIN(TstRobustnessView)

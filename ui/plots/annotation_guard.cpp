@@ -2,6 +2,7 @@
 #include "ui/plots/annotation_guard.h"
 
 #include "ui/plots/legend_columns.h"
+#include "ui/plots/tick_spacing.h"
 
 #include <qcustomplot.h>
 
@@ -13,6 +14,9 @@ namespace xyt::ui {
 
 namespace {
 
+/// Narrower than this a plot is taken as not laid out yet (a widget is 100 px wide until its
+/// layout sizes it); the robustness view's plots are from about 150 px at 1366x768.
+constexpr int kLaidOutWidth = 120;
 constexpr char kAnchor[] = "xyt-annotation-anchor"; ///< the coordinates the plot gave
 constexpr char kPlaced[] = "xyt-annotation-placed"; ///< the coordinates the guard moved it to
 constexpr char kLines[] = "xyt-wrapped-lines";     ///< a notice's lines, wrapped to its rect
@@ -130,9 +134,10 @@ QRectF apart(const QRectF& r, const QRectF& area, const std::vector<QRectF>& pla
 void placeAnnotations(QCustomPlot* plot) {
     // Titles only on a plot laid out in its window: before it is shown a plot is a default
     // 100 px wide, and rows made tall there would shrink the plane its first view is fitted to.
-    if (plot->isVisible() && plot->width() >= 240) {
+    if (plot->isVisible() && plot->width() >= kLaidOutWidth) {
         const bool legends = fitLegendColumns(plot);
-        if (wrapTitles(plot) || legends)
+        const bool ticks = fitTickCounts(plot);
+        if (wrapTitles(plot) || legends || ticks)
             plot->replot(QCustomPlot::rpQueuedReplot); // the rows' heights follow on the next pass
     }
     std::vector<QRectF> placed;

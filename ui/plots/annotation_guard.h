@@ -14,7 +14,8 @@ namespace xyt::ui {
  * distance into its rect, then below (or else above) any annotation placed before it that
  * it overlaps. A title or readout of the plot's layout wider than its row is broken at
  * spaces into lines, and a legend in a row of its own takes as many columns as the row has
- * room for (fitLegendColumns); the plot is then drawn again with the taller rows. The text keeps the point the plot gave it: each drawing starts from there, so
+ * room for (fitLegendColumns) and an axis no more ticks than its labels have room
+ * for (fitTickCounts); the plot is then drawn again with the taller rows. The text keeps the point the plot gave it: each drawing starts from there, so
  * a zoom or a new result places it afresh. A label too large for its rect stays at its top
  * left corner.
  */

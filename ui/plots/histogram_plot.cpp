@@ -89,7 +89,18 @@ void HistogramPlot::showHistogram(const Histogram& h, double nominal, std::optio
             lo = std::min(lo, x);
             hi = std::max(hi, x);
         }
-    const double pad = 0.05 * std::max(hi - lo, 1e-12 * std::max(std::abs(hi), 1.0));
+    // A spread below what four significant digits tell apart (every plant the nominal one:
+    // the core's single bin is a round-off wide) is shown as a bar of a tenth of a view 10 %
+    // of the value wide: tick labels a round-off apart ran together ("3.348653.34865").
+    const double scale = std::max({std::abs(lo), std::abs(hi), 1e-12});
+    if (hi - lo < 1e-4 * scale) {
+        const double centre = 0.5 * (lo + hi), half = 0.05 * scale;
+        lo = centre - half;
+        hi = centre + half;
+        if (!h.counts.empty())
+            bars_->setWidth(0.1 * (hi - lo));
+    }
+    const double pad = 0.05 * (hi - lo);
     xAxis->setRange(lo - pad, hi + pad);
     const int top = h.counts.empty() ? 1 : *std::max_element(h.counts.begin(), h.counts.end());
     yAxis->setRange(0.0, 1.1 * top + 0.5);
