@@ -145,6 +145,9 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     auto* equationsBox = new QGroupBox(tr("Equations"), right);
     auto* equationsLayout = new QVBoxLayout(equationsBox);
     equations_ = new EquationsPanel(equationsBox);
+    // Three lines at the least (it scrolls): the metrics panel's warnings need the height at
+    // 1366x768.
+    equations_->setMinimumHeight(3 * equations_->fontMetrics().lineSpacing() + 6);
     equationsLayout->addWidget(equations_);
     rightLayout->addWidget(metricsBox);
     rightLayout->addWidget(equationsBox, 1);

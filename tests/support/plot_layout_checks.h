@@ -2,8 +2,9 @@
 #pragma once
 // What a person reading a plot needs of its layout: every annotation (a marker's label, a
 // notice, a ζ label) inside its axis rect and none on another, a legend set in the plane inside
-// it, every legend entry whole, and every title or readout line as wide as its text.
+// it and on no trace where a corner is free, every legend entry whole, and every title or readout line as wide as its text.
 #include "ui/plots/damping_labels.h"
+#include "ui/plots/legend_corner.h"
 
 #include <QFontMetricsF>
 #include <QStringList>
@@ -127,6 +128,27 @@ inline QStringList annotationProblems(QCustomPlot* plot) {
                     problems << QString("%1: tick labels '%2' and '%3' overlap on the axis '%4'")
                                     .arg(where, spans[i - 1].text, spans[i].text, axis->label());
         }
+    // A legend in a corner of a plane sits on no trace where another corner is clearer.
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        QCPLayoutInset* inset = rect->insetLayout();
+        for (int k = 0; k < inset->elementCount(); ++k) {
+            auto* legend = qobject_cast<QCPLegend*>(inset->elementAt(k));
+            if (!legend || !legend->visible() || legend->itemCount() == 0 ||
+                inset->insetPlacement(k) != QCPLayoutInset::ipBorderAligned)
+                continue;
+            const QRect at = legend->outerRect(), area = rect->rect();
+            for (const Placed& t : texts)
+                if (detail::overlap(t.rect, at))
+                    problems << QString("%1: the legend overlaps '%2'").arg(where, shortText(t.text));
+            const int covered = ui::pointsIn(rect, at);
+            for (const QPoint corner : {area.topLeft(), QPoint(area.right() - at.width() + 1, area.top()),
+                                        QPoint(area.left(), area.bottom() - at.height() + 1),
+                                        QPoint(area.right() - at.width() + 1, area.bottom() - at.height() + 1)})
+                if (const int there = ui::pointsIn(rect, QRect(corner, at.size())); there < covered)
+                    problems << QString("%1: the legend covers %2 trace points where a corner covers %3")
+                                    .arg(where).arg(covered).arg(there);
+        }
+    }
     // Titles and readouts of the layout: each line as wide as its element.
     for (int k = 0; k < plot->plotLayout()->elementCount(); ++k) {
         auto* element = qobject_cast<QCPTextElement*>(plot->plotLayout()->elementAt(k));

@@ -4,6 +4,7 @@
 #include "ui/plots/contour_plot.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/main_window.h"
+#include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/panels/plant_editor.h"
@@ -17,8 +18,10 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QScrollArea>
 #include <QSlider>
 #include <QSplitter>
+#include <QTableWidget>
 #include <QTest>
 
 using namespace xyt;
@@ -39,6 +42,7 @@ private slots:
     void switchingToPolePlacement();
     void invalidCoefficientListIsRejectedAtTheField();
     void sliderStepRelaysNoSplitter();
+    void manyWarningsFitA1366x768Window();
 
 private:
     std::unique_ptr<TuningSession> session_;
@@ -262,6 +266,31 @@ void TstMainWindow::sliderStepRelaysNoSplitter() {
         QVERIFY(session_->session().axes[0].gt.omegaNRadPerSec != before || step % 2); // it moved
     }
     QCOMPARE(counter.count, 0);
+}
+
+void TstMainWindow::manyWarningsFitA1366x768Window() {
+    // Both axes pole placement on the 600 mm cubic: six warnings in the metrics panel (out of
+    // reach, unclipped |u|, the implementation's verdict, for each axis). They made the window
+    // at least 790 px tall and covered the table's margin rows.
+    Session s = Session::paperDefault();
+    for (AxisSettings& a : s.axes)
+        a.method = DesignMethod::PolePlacementZpetc;
+    session_->reset(s);
+    window_->resize(1366, 768);
+    QTest::qWait(20);
+    QVERIFY2(window_->minimumSizeHint().height() <= 768, qPrintable(QString::number(window_->minimumSizeHint().height())));
+    QCOMPARE(window_->height(), 768);
+    QVERIFY(!window_->metricsPanel()->noticeText().isEmpty());
+    auto* table = window_->metricsPanel()->findChild<QTableWidget*>();
+    QVERIFY(table);
+    const QRect tableRect(table->mapTo(window_.get(), QPoint(0, 0)), table->size());
+    for (QScrollArea* area : window_->metricsPanel()->findChildren<QScrollArea*>()) {
+        if (!area->isVisible())
+            continue;
+        const QRect r(area->mapTo(window_.get(), QPoint(0, 0)), area->size());
+        QVERIFY2(!r.intersects(tableRect), "the warnings cover the metrics table");
+        QVERIFY(window_->rect().contains(r));
+    }
 }
 
 QTEST_MAIN(TstMainWindow)

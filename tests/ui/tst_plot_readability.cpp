@@ -44,7 +44,7 @@ Q_DECLARE_METATYPE(xyt::Session)
 namespace {
 
 /// The states whose plots are checked for their layout: each method, an invalid design, a
-/// diverging run, a G-code program and the circle (its polar, ballbar-like view).
+/// diverging run, a G-code program, the circle (its polar, ballbar-like view) and a move back.
 QList<QPair<const char*, Session>> layoutStates() {
     Session pp = Session::paperDefault();
     for (AxisSettings& a : pp.axes)
@@ -60,8 +60,11 @@ QList<QPair<const char*, Session>> layoutStates() {
     gcode.trajectory.gcode.program = "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
     Session circle = Session::paperDefault();
     circle.trajectory.kind = TrajectoryKind::Circle;
+    Session back = Session::paperDefault(); // 600 mm back to 0: the traces end where the legend was
+    back.trajectory.x0 = 600.0;
+    back.trajectory.xf = 0.0;
     return {{"default", Session::paperDefault()}, {"pole placement", pp}, {"one axis invalid", invalid},
-            {"unstable", unstable}, {"gcode", gcode}, {"circle", circle}};
+            {"unstable", unstable}, {"gcode", gcode}, {"circle", circle}, {"move back", back}};
 }
 
 /// Draws @p plot as a user sees it: the guard may re-lay it out once (a wrapped title, a
@@ -87,6 +90,7 @@ private slots:
     void sPlaneDampingLabelsStayApartWhenZoomed();
     void annotationsStayInsideAndApart_data();
     void annotationsStayInsideAndApart();
+    void legendGivesWayToANoticeAndReturns();
     void parameterLocusFramesTheMovingPolesAndMarksTheBoundary();
     void parameterLocusBoundaryFollowsKp();
     void coincidentPoleSetsAreDistinguishable();
@@ -308,6 +312,35 @@ void TstPlotReadability::annotationsStayInsideAndApart() {
     }
     problems.removeDuplicates();
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join('\n')));
+}
+
+void TstPlotReadability::legendGivesWayToANoticeAndReturns() {
+    // The unstable loop's notice spans the position plane at 1366x768: every corner for the
+    // legend holds text, so the legend waits hidden; back to a stable design, it returns.
+    window_->resize(1366, 768);
+    window_->lowerTabs()->setCurrentIndex(0);
+    auto* plot = qobject_cast<QCustomPlot*>(window_->lowerTabs()->currentWidget());
+    QVERIFY(plot);
+    const auto insetLegend = [plot]() -> QCPLegend* {
+        for (QCPAxisRect* rect : plot->axisRects())
+            for (int k = 0; k < rect->insetLayout()->elementCount(); ++k)
+                if (auto* legend = qobject_cast<QCPLegend*>(rect->insetLayout()->elementAt(k)))
+                    return legend;
+        return nullptr;
+    };
+    QVERIFY(insetLegend());
+    drawSettled(plot);
+    QVERIFY(insetLegend()->visible());
+    Session unstable = Session::paperDefault();
+    unstable.axes[0].gt.plant.a1 = -100.0;
+    session_->reset(unstable);
+    drawSettled(plot);
+    QVERIFY(!insetLegend()->visible());
+    QVERIFY(test::annotationProblems(plot).isEmpty());
+    session_->reset(Session::paperDefault());
+    drawSettled(plot);
+    QVERIFY(insetLegend()->visible());
+    QVERIFY2(test::annotationProblems(plot).isEmpty(), qPrintable(test::annotationProblems(plot).join('\n')));
 }
 
 void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary() {

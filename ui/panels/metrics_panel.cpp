@@ -9,6 +9,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QScrollArea>
 #include <QPushButton>
 #include <QSet>
 #include <QTableWidget>
@@ -140,8 +141,19 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     notices_->setStyleSheet(QStringLiteral(
         "QLabel { background: #fff4d6; border: 1px solid #e0b24a; border-radius: 3px; padding: 3px; }"));
     notices_->setAccessibleName(tr("Warnings"));
-    notices_->setVisible(false);
-    layout->addWidget(notices_);
+    notices_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    // At most five lines tall, scrolling beyond: six warnings of a pole-placement design made
+    // the panel taller than a 1366x768 screen and covered the table's last rows.
+    noticeArea_ = new QScrollArea(this);
+    noticeArea_->setWidget(notices_);
+    noticeArea_->setWidgetResizable(true);
+    noticeArea_->setFrameShape(QFrame::NoFrame);
+    noticeArea_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    noticeArea_->setMaximumHeight(5 * notices_->fontMetrics().lineSpacing() + 10);
+    noticeArea_->setMinimumHeight(2 * notices_->fontMetrics().lineSpacing() + 10);
+    noticeArea_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+    noticeArea_->setVisible(false);
+    layout->addWidget(noticeArea_);
     auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
     auto nonNegative = [](const char* name, double max, const char* range) {
         return [name, max, range](double v) {
@@ -538,7 +550,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     showAdvice(session, evaluation);
     showContour(evaluation, notices);
     notices_->setText(notices.join(QLatin1Char('\n')));
-    notices_->setVisible(!notices.isEmpty());
+    noticeArea_->setVisible(!notices.isEmpty());
 }
 
 } // namespace xyt::ui

@@ -11,6 +11,7 @@
 #include <optional>
 
 class QLabel;
+class QScrollArea;
 class QPushButton;
 class QTableWidget;
 
@@ -89,6 +90,7 @@ private:
     QPushButton* relax_;
     std::optional<Specification> relaxed_;
     QLabel* notices_;
+    QScrollArea* noticeArea_; ///< holds notices_, at most five lines tall
     QLabel* contour_;
     QMap<QString, NumberField*> spec_;
     Specification current_;

@@ -2,6 +2,7 @@
 #include "ui/plots/annotation_guard.h"
 
 #include "ui/plots/legend_columns.h"
+#include "ui/plots/legend_corner.h"
 #include "ui/plots/tick_spacing.h"
 
 #include <qcustomplot.h>
@@ -166,6 +167,10 @@ void placeAnnotations(QCustomPlot* plot) {
         text->position->setPixelPosition(text->position->pixelPosition() + shift);
         text->setProperty(kPlaced, text->position->coords());
     }
+    // The texts placed, a legend in a plane takes a corner clear of them (and of the traces);
+    // it moves at the next layout, which places the texts as now.
+    if (plot->isVisible() && plot->width() >= kLaidOutWidth && placeInsetLegends(plot))
+        plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
 } // namespace

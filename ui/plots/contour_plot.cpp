@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/contour_plot.h"
+#include "ui/plots/legend_columns.h"
 
 #include "ui/plots/contour_points.h"
 #include "ui/plots/plot_notice.h"
@@ -66,8 +67,7 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     axisRect()->insetLayout()->simplify();
     plotLayout()->insertRow(1);
     plotLayout()->addElement(1, 0, legend);
-    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    legend->setWrap(4);
+    setMaxLegendColumns(legend, 4); // fewer where the row is narrow
     legend->setBorderPen(Qt::NoPen);
     legend->setRowSpacing(0);
     legend->setMargins(QMargins(4, 0, 4, 0));
