@@ -169,6 +169,10 @@ void TstPlotReadability::planesHaveEqualAspect() {
         const auto [px, py] = pixelsPerUnit(plot);
         QVERIFY2(std::abs(px / py - 1.0) < 0.01,
                  qPrintable(QString("%1x%2: %3 vs %4 px per unit").arg(size.width()).arg(size.height()).arg(px).arg(py)));
+        // The z-plane's unit circle (the stability boundary) whole in the view: it was cut.
+        if (discrete)
+            for (const QCPRange r : {plot->xAxis->range(), plot->yAxis->range()})
+                QVERIFY2(r.lower < -1.0 && r.upper > 1.0, qPrintable(QString("%1 .. %2").arg(r.lower).arg(r.upper)));
     }
     // The reset view (double click, context menu) keeps it.
     plot->xAxis->setRange(-1, 100);
