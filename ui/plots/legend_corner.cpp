@@ -16,11 +16,13 @@ template <typename Data>
 int countIn(QCPAbstractPlottable* p, const Data& data, const QRect& area) {
     const int n = data->size();
     const int stride = std::max(1, n / kMostSampled);
+    // In floating point: a diverging trace maps to pixels far beyond an int's range.
+    const QRectF inside(area);
     int count = 0;
     for (int i = 0; i < n; i += stride) {
         const auto it = data->at(i);
         const QPointF at = p->coordsToPixels(it->mainKey(), it->mainValue());
-        count += area.contains(at.toPoint()) ? stride : 0;
+        count += inside.contains(at) ? stride : 0; // false for NaN coordinates
     }
     return count;
 }
