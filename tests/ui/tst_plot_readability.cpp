@@ -91,6 +91,8 @@ private slots:
     void annotationsStayInsideAndApart_data();
     void annotationsStayInsideAndApart();
     void legendGivesWayToANoticeAndReturns();
+    void plotsSettleAfterADesignChange_data();
+    void plotsSettleAfterADesignChange();
     void parameterLocusFramesTheMovingPolesAndMarksTheBoundary();
     void parameterLocusBoundaryFollowsKp();
     void coincidentPoleSetsAreDistinguishable();
@@ -345,6 +347,40 @@ void TstPlotReadability::legendGivesWayToANoticeAndReturns() {
     drawSettled(plot);
     QVERIFY(insetLegend()->visible());
     QVERIFY2(test::annotationProblems(plot).isEmpty(), qPrintable(test::annotationProblems(plot).join('\n')));
+}
+
+void TstPlotReadability::plotsSettleAfterADesignChange_data() {
+    QTest::addColumn<Session>("session");
+    for (const auto& [name, state] : layoutStates())
+        QTest::newRow(name) << state;
+}
+
+void TstPlotReadability::plotsSettleAfterADesignChange() {
+    // A slider step draws each visible plot once, and once more at most when the layout guard
+    // changed the layout (a legend entry came or went, a tick count or a title). A guard step
+    // that undid the plot's own setting (the time plot's value ticks) or counted the empty
+    // cells of a legend's last row as gaps redrew the plot on every pass of the event loop.
+    QFETCH(Session, session);
+    session_->apply(session, "state");
+    QTest::qWait(50);
+    QMap<QCustomPlot*, int> drawings;
+    for (QCustomPlot* plot : window_->findChildren<QCustomPlot*>())
+        connect(plot, &QCustomPlot::afterReplot, this, [plot, &drawings] { ++drawings[plot]; });
+    constexpr int kSteps = 4;
+    constexpr int kPasses = 8; ///< event-loop passes after each step: a plot redrawing without end shows 8
+    for (int step = 0; step < kSteps; ++step) {
+        Session next = session; // a new design for either method: ωn, or T's root
+        next.axes[0].gt.omegaNRadPerSec *= step % 2 ? 1.0 : 1.1;
+        next.axes[0].pp.t1 *= step % 2 ? 1.0 : 1.1;
+        session_->apply(next, "step");
+        for (int pass = 0; pass < kPasses; ++pass)
+            QCoreApplication::processEvents();
+    }
+    QVERIFY(!drawings.isEmpty()); // the visible plots were drawn
+    for (auto it = drawings.cbegin(); it != drawings.cend(); ++it)
+        QVERIFY2(it.value() <= 2 * kSteps,
+                 qPrintable(QString("%1 drawn %2 times in %3 steps")
+                                .arg(it.key()->metaObject()->className()).arg(it.value()).arg(kSteps)));
 }
 
 void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary() {

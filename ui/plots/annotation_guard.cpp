@@ -182,6 +182,9 @@ void setWrappedLines(QCPItemText* text, const QStringList& lines, const QString&
 }
 
 void guardAnnotations(QCustomPlot* plot) {
+    // The legends' columns before the layout too: the entries a new design adds or takes out
+    // then cost no second drawing.
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot, [plot] { fitLegendColumns(plot); });
     QObject::connect(plot, &QCustomPlot::afterLayout, plot, [plot] { placeAnnotations(plot); });
 }
 

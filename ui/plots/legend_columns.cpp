@@ -60,10 +60,14 @@ bool fitLegendColumns(QCustomPlot* plot) {
         const QVariant most = legend->property(kMaxColumns);
         if (!most.isValid())
             continue;
-        bool holes = false;
-        for (int i = 0; i < legend->itemCount(); ++i)
-            holes = holes || !legend->item(i);
-        const int columns = columnsThatFit(legend, most.toInt());
+        // A gap where an entry was taken out: an empty cell before an entry (the cells after
+        // the last entry of a grid that does not fill its last row are empty too).
+        bool holes = false, gap = false;
+        for (int i = 0; i < legend->itemCount(); ++i) {
+            holes = holes || (gap && legend->item(i));
+            gap = gap || !legend->item(i);
+        }
+        const int columns = legend->rect().width() > 0 ? columnsThatFit(legend, most.toInt()) : legend->wrap();
         if (columns != legend->wrap() || holes) {
             legend->setWrap(columns);
             legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // the entries re-placed

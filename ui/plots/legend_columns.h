@@ -13,8 +13,10 @@ void setMaxLegendColumns(QCPLegend* legend, int columns);
 /**
  * Lays each legend of @p plot's layout rows out in as many columns as its row has room for, up
  * to the most set by setMaxLegendColumns, so that no entry is cut ("closed-loop unit ste"): a
- * narrow window gets more rows of whole entries. True when a legend changed (the layout must
- * run again).
+ * narrow window gets more rows of whole entries, and closes the gaps of entries taken out.
+ * True when a legend changed (the layout must run again). Run before a layout, with the row's
+ * width from the last one (entries come and go with the design, the width seldom changes), and
+ * after it, for a row whose width changed.
  */
 bool fitLegendColumns(QCustomPlot* plot);
 

@@ -10,6 +10,7 @@ namespace xyt::ui {
 namespace {
 
 constexpr char kMostTicks[] = "xyt-most-ticks"; ///< the ticker's count before any fitting
+constexpr char kLeastSpacing[] = "xyt-least-tick-spacing"; ///< pixels per tick at least
 constexpr double kGapPx = 12.0;                ///< blank space wanted between two labels side by side
 constexpr double kLineGapPx = 6.0;             ///< between two labels one above the other
 
@@ -35,13 +36,16 @@ bool fitTickCounts(QCustomPlot* plot) {
             if (widest <= 0.0)
                 continue;
             const double length = horizontal ? rect->width() : rect->height();
+            int mostHere = most.toInt();
+            if (const QVariant spacing = axis->property(kLeastSpacing); spacing.isValid())
+                mostHere = std::min(mostHere, std::max(2, static_cast<int>(length) / spacing.toInt()));
             const double gap = horizontal ? kGapPx : kLineGapPx;
             // Ticks land on round steps: up to about twice the asked-for count can show (a
             // count of 3 over [0, 1] gives 0, 0.5, 1 or 0, 0.2, ..., 1), so ask for half of
             // what fits, at least 2.
             const auto countFor = [&](double labelWidth) {
                 const int fit = static_cast<int>(length / (labelWidth + gap));
-                return std::clamp(fit / 2, 2, std::max(2, most.toInt()));
+                return std::clamp(fit / 2, 2, std::max(2, mostHere));
             };
             int count = countFor(widest);
             // More ticks only with room to spare for labels half as wide again: the labels
@@ -55,6 +59,10 @@ bool fitTickCounts(QCustomPlot* plot) {
             }
         }
     return changed;
+}
+
+void setLeastTickSpacing(QCPAxis* axis, int pixels) {
+    axis->setProperty(kLeastSpacing, pixels);
 }
 
 } // namespace xyt::ui

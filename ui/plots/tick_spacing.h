@@ -2,6 +2,7 @@
 #pragma once
 
 class QCustomPlot;
+class QCPAxis;
 
 namespace xyt::ui {
 
@@ -11,5 +12,10 @@ namespace xyt::ui {
  * widens. True when a count changed (the plot must be drawn again).
  */
 bool fitTickCounts(QCustomPlot* plot);
+
+/// Asks for no more ticks on @p axis than one per @p pixels of its length (a short panel
+/// gets fewer value lines than a tall one), within the ticker's own count; fitTickCounts
+/// applies it with the label room.
+void setLeastTickSpacing(QCPAxis* axis, int pixels);
 
 } // namespace xyt::ui

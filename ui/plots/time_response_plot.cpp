@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/time_response_plot.h"
 
+#include "ui/plots/tick_spacing.h"
+
 #include "ui/plots/plot_tools.h"
 
 #include <algorithm>
@@ -46,10 +48,8 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     }
     // Value ticks by the panel's height (about one per 30 px): the short u and error panels at
     // 1366x768 would otherwise crowd five labels into 60 px.
-    connect(this, &QCustomPlot::afterLayout, this, [this] {
-        for (QCPAxisRect* rect : {positionRect_, errorRect_, controlRect_})
-            rect->axis(QCPAxis::atLeft)->ticker()->setTickCount(std::clamp(rect->height() / 30, 2, 5));
-    });
+    for (QCPAxisRect* rect : {positionRect_, errorRect_, controlRect_})
+        setLeastTickSpacing(rect->axis(QCPAxis::atLeft), 30);
     positionRect_->axis(QCPAxis::atLeft)->setLabel(tr("position (mm)"));
     errorRect_->axis(QCPAxis::atLeft)->setLabel(tr("error (mm)"));
     controlRect_->axis(QCPAxis::atLeft)->setLabel(tr("u (V)"));
