@@ -7,7 +7,7 @@
 #include "core/io/file_io.h"
 #include "core/simulation/resample.h"
 #include "core/simulation/trajectory.h"
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 
 
 #include <cmath>
@@ -250,16 +250,16 @@ void writeCsv(const QString& path, const SimulationResult& run, const Simulation
 }
 
 Session loadSessionOrThrow(const QString& path) {
-    // Read here rather than by ui::loadSessionFile: the file name goes to open(2) as the bytes
+    // Read here rather than by files::loadSessionFile: the file name goes to open(2) as the bytes
     // the shell passed, and a file-level error names the path once ("<path>: <reason>").
     const std::string name = fileNameBytes(path);
     std::string bytes;
     try {
-        bytes = readRegularFile(name, static_cast<std::size_t>(ui::kMaxSessionFileBytes));
+        bytes = readRegularFile(name, static_cast<std::size_t>(files::kMaxSessionFileBytes));
     } catch (const FileError& e) {
         throw InvalidInput(name, e.reason());
     }
-    const ui::SessionLoadResult r = ui::sessionFromBytes(QByteArray::fromStdString(bytes));
+    const files::SessionLoadResult r = files::sessionFromBytes(QByteArray::fromStdString(bytes));
     for (const QString& w : r.warnings)
         std::fprintf(stderr, "xytune-cli: warning: %s\n", qPrintable(w));
     if (!r.ok)

@@ -17,7 +17,7 @@
 #include "core/model/number_format.h"
 #include "core/session/identified_axis.h"
 #include "core/session/session_evaluation.h"
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 
 #include <QJsonDocument>
 
@@ -328,7 +328,7 @@ int runIdentify(const QStringList& argv) {
         if (!refused.empty())
             throw InvalidInput("-o", "the session with this model cannot be run as report runs it (" + refused +
                                          "); nothing was written");
-        writeTextFile("-o", *args.value("o"), QString::fromUtf8(QJsonDocument(ui::sessionToJson(*session)).toJson()));
+        writeTextFile("-o", *args.value("o"), QString::fromUtf8(QJsonDocument(files::sessionToJson(*session)).toJson()));
         out.insert("session", QString::fromStdString(terminalText(args.value("o")->toStdString())));
     }
     print(out);

@@ -10,8 +10,8 @@
 #include "core/io/file_io.h"
 #include "core/io/text_escape.h"
 #include "core/session/session_evaluation.h"
-#include "ui/session/coefficient_json.h"
-#include "ui/session/session_file.h"
+#include "ui/files/coefficient_json.h"
+#include "ui/files/session_file.h"
 
 #include <QJsonDocument>
 #include <QTextStream>
@@ -87,7 +87,7 @@ int runNew(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
     args.allowOnly({"o"});
     const QString path = outputPath(args);
-    writeOrThrow(path, QJsonDocument(ui::sessionToJson(Session::paperDefault())).toJson());
+    writeOrThrow(path, QJsonDocument(files::sessionToJson(Session::paperDefault())).toJson());
     std::printf("%s\n", terminalText(fileNameBytes(path)).c_str());
     return 0;
 }
@@ -116,7 +116,7 @@ int runSessionReport(const QString& path) {
         const AxisSettings& s = session.axes[static_cast<std::size_t>(i)];
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
         out << "\n== Axis " << QString::fromStdString(s.id) << " (" << shown(s.label)
-            << "): " << ui::methodName(s.method) << "\n";
+            << "): " << files::methodName(s.method) << "\n";
         if (s.origin) {
             const ModelOrigin& o = *s.origin;
             out << "  model: identified " << shown(o.structure) << " from " << shown(o.source) << " ("
@@ -239,7 +239,7 @@ int runExport(const QStringList& argv) {
             exportCsv(session, evaluation, sink);
         });
     else if (format == "json")
-        writeOrThrow(path, QJsonDocument(ui::coefficientsJson(session, evaluation, options)).toJson());
+        writeOrThrow(path, QJsonDocument(files::coefficientsJson(session, evaluation, options)).toJson());
     else if (format == "c")
         writeOrThrow(path, QByteArray::fromStdString(exportCHeader(session, evaluation, options)));
     else

@@ -6,7 +6,7 @@
 #include "ui/main_window.h"
 #include "ui/robustness_view.h"
 #include "ui/session/recovery_store.h"
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 
@@ -107,7 +107,7 @@ int main(int argc, char* argv[]) {
         }
         QApplication::setOrganizationName("xytune-screenshot"); // never the user's layout
         if (!parser.positionalArguments().isEmpty()) {
-            const auto loaded = xyt::ui::loadSessionFile(parser.positionalArguments().first());
+            const auto loaded = xyt::files::loadSessionFile(parser.positionalArguments().first());
             if (!loaded.ok) {
                 std::fprintf(stderr, "xytune: %s\n", qPrintable(loaded.message()));
                 return 2;
@@ -163,7 +163,7 @@ int main(int argc, char* argv[]) {
     // Start where the user left off: the last design comes back from the settings.
     const QByteArray last = QSettings().value("session/last").toByteArray();
     if (!last.isEmpty()) {
-        const auto restored = xyt::ui::sessionFromBytes(last);
+        const auto restored = xyt::files::sessionFromBytes(last);
         if (restored.ok)
             session.reset(restored.session);
     }

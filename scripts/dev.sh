@@ -4,8 +4,9 @@
 #   scripts/dev.sh run    starts the workbench (or the headless report without a display)
 #   scripts/dev.sh test   runs every test: the normal build, then one clang build with
 #                         AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer coverage
-#                         (build-fuzz) in which the suite runs again (any sanitizer report
-#                         fails) and each libFuzzer harness runs on 8000 inputs from a fixed seed
+#                         (build-fuzz) in which the core, CLI and file suites and a GUI smoke
+#                         test run again (any sanitizer report fails) and each libFuzzer
+#                         harness runs on 8000 inputs from a fixed seed
 #   scripts/dev.sh bench  builds and runs the benchmark program
 set -euo pipefail
 
@@ -46,22 +47,22 @@ case "$mode" in
         ctest --test-dir "$build" --output-on-failure -j "$jobs"
 
         # One instrumented build for two jobs: clang with AddressSanitizer + UBSan and libFuzzer's
-        # coverage instrumentation (-DXYT_FUZZ=ON, in build-fuzz). The whole suite, GUI tests
-        # included (offscreen), runs again in it (coverage does not stop a test from running),
-        # then each libFuzzer harness. -fno-sanitize-recover=all (CMakeLists.txt) makes every
-        # UBSan report fatal; halt_on_error does the same for ASan, and a leak report makes the
-        # process exit non-zero, so any report fails its test.
+        # coverage instrumentation (-DXYT_FUZZ=ON, in build-fuzz). What sanitizing can find runs
+        # again in it: the core, CLI, file-format and presenter suites, one GUI smoke test
+        # (tests/ui/CMakeLists.txt says which), then each libFuzzer harness. Line tables are
+        # all the debug information a sanitizer report needs (and build much faster than -g).
+        # -fno-sanitize-recover=all (CMakeLists.txt) makes every UBSan report fatal;
+        # halt_on_error does the same for ASan, and a leak report makes the process exit
+        # non-zero, so any report fails its test.
         fuzz_build="${XYT_FUZZ_BUILD_DIR:-$root/build-fuzz}"
         sanitizer_env=(ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:strict_init_order=1:check_initialization_order=1:detect_stack_use_after_return=1"
                        UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1")
         cmake -S "$root" -B "$fuzz_build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DXYT_FUZZ=ON \
-              -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++
+              -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+              "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG" \
+              "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG"
         cmake --build "$fuzz_build" -j "$jobs"
-        # The menu-action program runs every action in seven session states; under the sanitizers
-        # its default state alone (the same code paths, about 2 minutes) is run: the six others
-        # take about 8 more minutes there and run in the normal build above.
-        env "${sanitizer_env[@]}" ctest --test-dir "$fuzz_build" --output-on-failure -j "$jobs" \
-            -E '^tst_menu_actions_(two_snapshots|both_pole_placement|one_axis_invalid|unstable|gcode_program|digital_implementation)$'
+        env "${sanitizer_env[@]}" ctest --test-dir "$fuzz_build" --output-on-failure -j "$jobs"
 
         # Every fuzz harness on a fixed seed and input count: reproducible, so a red run is a
         # real regression (open-ended exploration: scripts/fuzz.sh SECONDS without XYT_FUZZ_RUNS).

@@ -23,7 +23,7 @@
 #include "ui/session/recovery_store.h"
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/step_plot.h"
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/snapshot_compare_dialog.h"
 #include "ui/plots/time_response_plot.h"
@@ -697,7 +697,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     // The last values come back on the next start, unless the user discarded them: a session
     // still modified here was answered "Discard", and must not return as a clean "untitled".
     if (!session_->isModified())
-        QSettings().setValue("session/last", QJsonDocument(sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
+        QSettings().setValue("session/last", QJsonDocument(files::sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
     event->accept();
 }
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// libFuzzer harness: the session file loader (ui/session/session_file.h sessionFromBytes) on arbitrary
+// libFuzzer harness: the session file loader (ui/files/session_file.h sessionFromBytes) on arbitrary
 // bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
 // accepts must hold finite numbers and survive a save/load round trip unchanged, and its labels
 // must reach the exports only as text that cannot end a comment or drive a terminal (issue 20).
 #include "tests/fuzz/fuzz_support.h"
 
 #include "core/io/text_escape.h"
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 
 #include <QByteArray>
 #include <QJsonDocument>
@@ -44,7 +44,7 @@ void requireInertLabel(const std::string& label) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const QByteArray bytes(reinterpret_cast<const char*>(data), static_cast<qsizetype>(size));
-    const xyt::ui::SessionLoadResult loaded = xyt::ui::sessionFromBytes(bytes);
+    const xyt::files::SessionLoadResult loaded = xyt::files::sessionFromBytes(bytes);
     if (!loaded.ok) {
         XYT_FUZZ_REQUIRE(!loaded.message().isEmpty());
         return 0;
@@ -69,8 +69,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             requireFinite(axis);
 
     // What the workbench saves from an accepted session must load back to the same session.
-    const QByteArray saved = QJsonDocument(xyt::ui::sessionToJson(s)).toJson();
-    const xyt::ui::SessionLoadResult reloaded = xyt::ui::sessionFromBytes(saved);
+    const QByteArray saved = QJsonDocument(xyt::files::sessionToJson(s)).toJson();
+    const xyt::files::SessionLoadResult reloaded = xyt::files::sessionFromBytes(saved);
     XYT_FUZZ_REQUIRE(reloaded.ok);
     XYT_FUZZ_REQUIRE(reloaded.session == s);
     return 0;

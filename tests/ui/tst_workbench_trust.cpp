@@ -14,7 +14,7 @@
 #include "ui/panels/pp_editor.h"
 #include "ui/session/recovery_store.h"
 #include "ui/plots/root_locus_plot.h"
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/panels/trajectory_editor.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/session/recovery_store.h"
 
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 
@@ -23,7 +23,7 @@ namespace xyt::ui {
 
 namespace {
 constexpr const char* kRecoveryFormat = "xytune-recovery";
-constexpr qint64 kMaxRecoveryBytes = kMaxSessionFileBytes + 64 * 1024;
+constexpr qint64 kMaxRecoveryBytes = files::kMaxSessionFileBytes + 64 * 1024;
 
 QString lockPathOf(const QString& copyPath) {
     return copyPath.left(copyPath.size() - int(sizeof(".json") - 1)) + QStringLiteral(".lock");
@@ -71,9 +71,9 @@ bool RecoveryStore::writeNow(QString* error) {
                      {"version", 1},
                      {"file", sessionFile_},
                      {"saved_at", QDateTime::currentDateTimeUtc().toString(Qt::ISODate)},
-                     {"session", sessionToJson(session_->session())}};
+                     {"session", files::sessionToJson(session_->session())}};
     QString why;
-    if (!writeFileAtomically(copyPath_, QJsonDocument(root).toJson(QJsonDocument::Compact), &why)) {
+    if (!files::writeFileAtomically(copyPath_, QJsonDocument(root).toJson(QJsonDocument::Compact), &why)) {
         lastError_ = why;
         if (error)
             *error = why;
@@ -107,7 +107,7 @@ std::vector<RecoveredWork> RecoveryStore::findOrphans(const QString& directory) 
         const QJsonObject root = QJsonDocument::fromJson(file.read(kMaxRecoveryBytes)).object();
         if (root.value("format").toString() != QLatin1String(kRecoveryFormat))
             continue;
-        const SessionLoadResult loaded = sessionFromJson(root.value("session").toObject());
+        const files::SessionLoadResult loaded = files::sessionFromJson(root.value("session").toObject());
         if (!loaded.ok)
             continue;
         RecoveredWork work;

@@ -3,8 +3,8 @@
 
 #include "core/model/errors.h"
 #include "core/session/export_text.h"
-#include "ui/session/coefficient_json.h"
-#include "ui/session/session_file.h"
+#include "ui/files/coefficient_json.h"
+#include "ui/files/session_file.h"
 #include "ui/session/tuning_session.h"
 
 #include <QFileDialog>
@@ -87,7 +87,7 @@ void SessionFileController::open() {
 }
 
 bool SessionFileController::openFile(const QString& path) {
-    const SessionLoadResult r = loadSessionFile(path);
+    const files::SessionLoadResult r = files::loadSessionFile(path);
     if (!r.ok) {
         QMessageBox::warning(window_, tr("Open session"),
                              tr("%1 could not be opened; the current design is unchanged.\n\n%2")
@@ -117,7 +117,7 @@ bool SessionFileController::saveAs() {
 
 bool SessionFileController::saveTo(const QString& path) {
     QString error;
-    if (!saveSessionFile(session_->session(), path, &error)) {
+    if (!files::saveSessionFile(session_->session(), path, &error)) {
         QMessageBox::warning(window_, tr("Save session"),
                              tr("The session was not saved; any existing file is unchanged.\n\n%1")
                                  .arg(error));
@@ -138,7 +138,7 @@ bool SessionFileController::exportTo(const QString& format, const QString& path)
         ExportOptions options;
         options.piMethod = s.piDiscretization;
         if (format == "json")
-            bytes = QJsonDocument(coefficientsJson(s, e, options)).toJson();
+            bytes = QJsonDocument(files::coefficientsJson(s, e, options)).toJson();
         else if (format == "c")
             bytes = QByteArray::fromStdString(exportCHeader(s, e, options));
         else if (format == "m")
@@ -150,7 +150,7 @@ bool SessionFileController::exportTo(const QString& format, const QString& path)
         return false;
     }
     QString error;
-    if (!writeFileAtomically(path, bytes, &error)) {
+    if (!files::writeFileAtomically(path, bytes, &error)) {
         QMessageBox::warning(window_, tr("Export"), error);
         return false;
     }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 
 #include "core/io/file_io.h"
 #include "core/simulation/trajectory.h"
@@ -21,7 +21,7 @@
 #include <sys/stat.h>
 
 using namespace xyt;
-using namespace xyt::ui;
+using namespace xyt::files;
 
 class TstSessionFile : public QObject {
     Q_OBJECT
@@ -33,6 +33,7 @@ private slots:
     void unknownFieldsAreReported();
     void filesWithoutMarginMinimaLoad();
     void filesWithoutImplementationLoad();
+    void versionOneFilesMigrate();
     void roundTripGcode();
     void filesWithoutGcodeLoad();
     void badGcodeFields_data();
@@ -168,15 +169,22 @@ void TstSessionFile::roundTripGcode() {
 }
 
 void TstSessionFile::filesWithoutGcodeLoad() {
-    // Files written before issue 13 have no trajectory.gcode: they load with its defaults.
+    // Format version 1 did not always write trajectory.gcode: such files load with its
+    // defaults (the migration to version 2); version 2 requires it.
     QJsonObject root = defaultJson();
+    root["version"] = 1;
     root = setPath(root, {"trajectory", "gcode"}, QJsonValue(QJsonValue::Undefined)).toObject();
     QVERIFY(!root["trajectory"].toObject().contains("gcode"));
     const auto r = sessionFromJson(root);
     QVERIFY2(r.ok, qPrintable(r.message()));
     QVERIFY(r.session == Session::paperDefault());
     QVERIFY(r.session.trajectory.gcode == GcodeTrajectory{});
-    // ... but a file of the G-code kind must have it.
+    root["version"] = kSessionFormatVersion;
+    const auto current = sessionFromJson(root);
+    QVERIFY(!current.ok);
+    QCOMPARE(current.message(), QString("trajectory.gcode: is missing"));
+    root["version"] = 1;
+    // ... and a version-1 file of the G-code kind had to have it.
     root = setPath(root, {"trajectory", "kind"}, "gcode").toObject();
     const auto missing = sessionFromJson(root);
     QVERIFY(!missing.ok);
@@ -375,10 +383,11 @@ void TstSessionFile::malformed() {
 }
 
 void TstSessionFile::filesWithoutImplementationLoad() {
-    // Files written before issue 12 have no implementation object, and a hand-written one may
-    // give only some of its fields: the rest keep the defaults (ideal encoder and DAC, no delay,
-    // clamping anti-windup).
+    // Format version 1 did not always write the implementation object, and a hand-written one
+    // could give only some of its fields: the rest keep the defaults (ideal encoder and DAC, no
+    // delay, clamping anti-windup). Version 2 requires the object and every field.
     QJsonObject root = defaultJson();
+    root["version"] = 1;
     QVERIFY(root.contains("implementation"));
     root.remove("implementation");
     auto r = sessionFromJson(root);
@@ -391,11 +400,16 @@ void TstSessionFile::filesWithoutImplementationLoad() {
     QVERIFY2(r.ok, qPrintable(r.message()));
     QCOMPARE(r.session.implementation.dacBits, 12);
     QCOMPARE(r.session.implementation.delaySamples, 0);
+    root["version"] = kSessionFormatVersion;
+    QCOMPARE(sessionFromJson(root).message(), QString("implementation.delay_samples: is missing"));
+    root.remove("implementation");
+    QCOMPARE(sessionFromJson(root).message(), QString("implementation: is missing"));
 }
 
 void TstSessionFile::filesWithoutMarginMinimaLoad() {
-    // Files written before issue 17 have no margin minima: they load with none (0).
+    // Format version 1 did not always write the margin minima: such files load with none (0).
     QJsonObject root = defaultJson();
+    root["version"] = 1;
     QJsonObject spec = root["specification"].toObject();
     QVERIFY(spec.contains("min_phase_margin") && spec.contains("min_gain_margin"));
     spec.remove("min_phase_margin");
@@ -405,6 +419,57 @@ void TstSessionFile::filesWithoutMarginMinimaLoad() {
     QVERIFY2(r.ok, qPrintable(r.message()));
     QCOMPARE(r.session.spec.minPhaseMarginDeg, 0.0);
     QCOMPARE(r.session.spec.minGainMarginDb, 0.0);
+    root["version"] = kSessionFormatVersion;
+    QCOMPARE(sessionFromJson(root).message(), QString("specification.min_phase_margin: is missing"));
+}
+
+void TstSessionFile::versionOneFilesMigrate() {
+    // Invariants of the migration (session_format_migration.h): a complete version-1 document
+    // (what the last version-1 writer wrote: every field) becomes the current document with
+    // only "version" changed, and reads as the same session; written files say the current
+    // version; a version-1 file without any of the fields version 1 left optional, a snapshot
+    // included, reads as the session with those fields at their defaults.
+    Session s = Session::paperDefault();
+    s.implementation.dacBits = 14;
+    s.spec.minPhaseMarginDeg = 45.0;
+    s.snapshots.push_back({"before", s.axes, s.trajectory, s.umaxVolts});
+    const QJsonObject current = sessionToJson(s);
+    QCOMPARE(current["version"].toInt(), kSessionFormatVersion);
+    QCOMPARE(kSessionFormatVersion, 2);
+    QJsonObject versionOne = current;
+    versionOne["version"] = 1;
+    QCOMPARE(migrateSessionJson(versionOne, 1), current);
+    auto r = sessionFromJson(versionOne);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s);
+
+    QJsonObject sparse = versionOne;
+    sparse.remove("implementation");
+    QJsonObject spec = sparse["specification"].toObject();
+    for (const char* key : {"in_position_window_mm", "max_settle_time", "min_phase_margin", "min_gain_margin"})
+        spec.remove(key);
+    sparse["specification"] = spec;
+    sparse = setPath(sparse, {"trajectory", "gcode"}, QJsonValue(QJsonValue::Undefined)).toObject();
+    QJsonArray snapshots = sparse["snapshots"].toArray();
+    QJsonObject snapshot = snapshots[0].toObject();
+    QJsonObject trajectory = snapshot["trajectory"].toObject();
+    trajectory.remove("gcode");
+    snapshot["trajectory"] = trajectory;
+    snapshots[0] = snapshot;
+    sparse["snapshots"] = snapshots;
+    r = sessionFromJson(sparse);
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.warnings.isEmpty());
+    Session expected = s;
+    expected.implementation = ImplementationSettings{};
+    expected.spec.inPositionWindowMm = Specification{}.inPositionWindowMm;
+    expected.spec.maxSettleTimeSeconds = Specification{}.maxSettleTimeSeconds;
+    expected.spec.minPhaseMarginDeg = 0.0;
+    expected.spec.minGainMarginDb = 0.0;
+    QVERIFY(r.session == expected);
+    // Wrong values are kept for the reader to name, not replaced by defaults.
+    sparse["implementation"] = QJsonObject{{"dac_bits", 40}};
+    QCOMPARE(sessionFromJson(sparse).message(), QString("implementation.dac_bits: must be an integer in 0..32 (0: ideal DAC)"));
 }
 
 void TstSessionFile::unknownFieldsAreReported() {

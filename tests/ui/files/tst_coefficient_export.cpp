@@ -4,7 +4,7 @@
 #include "core/design/digital_controller.h"
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
-#include "ui/session/coefficient_json.h"
+#include "ui/files/coefficient_json.h"
 #include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
@@ -122,7 +122,7 @@ void TstCoefficientExport::jsonParsesBack() {
     const Session s = Session::paperDefault();
     const SessionEvaluation e = evaluateSession(s);
     const QJsonObject json = QJsonDocument::fromJson(
-        QJsonDocument(ui::coefficientsJson(s, e)).toJson()).object();
+        QJsonDocument(files::coefficientsJson(s, e)).toJson()).object();
     QCOMPARE(json["format"].toString(), QString("xytune-coefficients"));
     // Issue 12: the anti-windup the controller ships with travels with the coefficients.
     QCOMPARE(json["implementation"].toObject()["anti_windup"].toString(), QString("clamp"));
@@ -313,7 +313,7 @@ void TstCoefficientExport::polePlacementAxisExports() {
     s.axes[1].method = DesignMethod::PolePlacementZpetc; // the y-axis ARX model of paper 001
     const SessionEvaluation e = evaluateSession(s);
     QVERIFY(e.axes[1].ok);
-    const QJsonObject y = ui::coefficientsJson(s, e)["axes"].toArray()[1].toObject();
+    const QJsonObject y = files::coefficientsJson(s, e)["axes"].toArray()[1].toObject();
     const QJsonObject rst = y["rst"].toObject();
     // The RST polynomials are the core's, exactly (JSON keeps the shortest round-trip digits).
     QCOMPARE(rst["Kf"].toDouble(), e.axes[1].pp->kf);
@@ -351,7 +351,7 @@ void TstCoefficientExport::jsonRefusesNonFiniteNumbers() {
     s.controllerTsSeconds = 1e308;
     const SessionEvaluation e = evaluateSession(s);
     QVERIFY(e.axes[0].ok);
-    QCOMPARE(xyt::test::invalidInputField([&] { ui::coefficientsJson(s, e); }),
+    QCOMPARE(xyt::test::invalidInputField([&] { files::coefficientsJson(s, e); }),
              QString("axes[0].gt (digital PI at controller_ts)"));
     // The C header names the same field (the same check, exportableNumber).
     QCOMPARE(xyt::test::invalidInputField([&] { exportCHeader(s, e); }),

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/session/coefficient_json.h"
+#include "ui/files/coefficient_json.h"
 
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 
 #include <QJsonArray>
 
-namespace xyt::ui {
+namespace xyt::files {
 
 namespace {
 /// Every number of the export passes exportableNumber: QJsonValue writes inf and NaN as null,
@@ -99,4 +99,4 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
             {"axes", axes}};
 }
 
-} // namespace xyt::ui
+} // namespace xyt::files

@@ -2,15 +2,15 @@
 #pragma once
 
 #include "core/session/session.h"
+#include "ui/files/session_format_migration.h"
 
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
 
-namespace xyt::ui {
+namespace xyt::files {
 
 inline constexpr const char* kSessionFormatName = "xytune-session";
-inline constexpr int kSessionFormatVersion = 1;
 /// Larger files are refused before parsing (a session is a few kilobytes).
 inline constexpr qint64 kMaxSessionFileBytes = 8 * 1024 * 1024;
 
@@ -43,4 +43,4 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, QString* 
 /// "guillemin-truxal" / "pole-placement-zpetc".
 QString methodName(DesignMethod method);
 
-} // namespace xyt::ui
+} // namespace xyt::files

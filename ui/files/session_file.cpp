@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/session/session_file.h"
+#include "ui/files/session_file.h"
 
 #include "core/model/coefficient_parser.h"
 #include "core/io/file_io.h"
@@ -17,7 +17,7 @@
 #include <cmath>
 #include <limits>
 
-namespace xyt::ui {
+namespace xyt::files {
 
 namespace {
 
@@ -268,20 +268,16 @@ QJsonObject implementationToJson(const ImplementationSettings& i) {
             {"tracking_time", i.trackingTimeSeconds}};
 }
 
-/// The implementation object (issue 12); every field is optional and keeps its default.
+/// The implementation object: every field required (format version 2).
 ImplementationSettings readImplementation(ObjectReader r) {
     ImplementationSettings i;
-    if (r.has("delay_samples"))
-        i.delaySamples = r.integer("delay_samples", 0, kMaxDelaySamples);
-    if (r.has("encoder_resolution")) {
-        i.encoderResolutionMm = r.number("encoder_resolution");
-        if (i.encoderResolutionMm < 0.0)
-            throw FormatError{join(r.path(), "encoder_resolution"),
-                              QStringLiteral("must be >= 0 (mm per count; 0: ideal encoder)")};
-    }
-    if (r.has("dac_bits"))
-        i.dacBits = r.integer("dac_bits", 0, 32, QStringLiteral(" (0: ideal DAC)"));
-    if (r.has("anti_windup")) {
+    i.delaySamples = r.integer("delay_samples", 0, kMaxDelaySamples);
+    i.encoderResolutionMm = r.number("encoder_resolution");
+    if (i.encoderResolutionMm < 0.0)
+        throw FormatError{join(r.path(), "encoder_resolution"),
+                          QStringLiteral("must be >= 0 (mm per count; 0: ideal encoder)")};
+    i.dacBits = r.integer("dac_bits", 0, 32, QStringLiteral(" (0: ideal DAC)"));
+    {
         const QString method = r.string("anti_windup");
         bool found = false;
         for (const AntiWindup a : {AntiWindup::None, AntiWindup::Clamp, AntiWindup::BackCalculation})
@@ -293,11 +289,9 @@ ImplementationSettings readImplementation(ObjectReader r) {
             throw FormatError{join(r.path(), "anti_windup"),
                               QStringLiteral("must be \"none\", \"clamp\" or \"back-calculation\"")};
     }
-    if (r.has("tracking_time")) {
-        i.trackingTimeSeconds = r.number("tracking_time");
-        if (i.trackingTimeSeconds < 0.0)
-            throw FormatError{join(r.path(), "tracking_time"), QStringLiteral("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
-    }
+    i.trackingTimeSeconds = r.number("tracking_time");
+    if (i.trackingTimeSeconds < 0.0)
+        throw FormatError{join(r.path(), "tracking_time"), QStringLiteral("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
     r.finish();
     return i;
 }
@@ -387,8 +381,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             throw FormatError{join(c.path(), "ramp_in"), QStringLiteral("must be >= 0")};
         c.finish();
     }
-    // Files written before issue 13 have no "gcode" object (and cannot be of that kind).
-    if (r.has("gcode") || t.kind == TrajectoryKind::Gcode) {
+    {
         ObjectReader g = r.child("gcode");
         t.gcode.fileName = g.string("file").toStdString();
         t.gcode.program = g.string("program").toStdString();
@@ -490,11 +483,9 @@ double readUmax(ObjectReader& r) {
 SessionLoadResult sessionFromJson(const QJsonObject& root) {
     SessionLoadResult result;
     try {
-        ObjectReader r(root, QString(), &result.warnings);
-        const QJsonValue format = r.get("format");
-        if (format.toString() != kSessionFormatName)
+        if (root.value("format").toString() != kSessionFormatName)
             throw FormatError{"format", QStringLiteral("must be \"%1\"").arg(kSessionFormatName)};
-        const QJsonValue version = r.get("version");
+        const QJsonValue version = root.value("version");
         if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble()) ||
             version.toDouble() < 1)
             throw FormatError{"version", QStringLiteral("must be a whole number >= 1")};
@@ -504,6 +495,11 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
                                              "version %2 and older: please update XY Tune")
                                   .arg(version.toDouble())
                                   .arg(kSessionFormatVersion)};
+        const int fileVersion = version.toInt();
+        ObjectReader r(fileVersion < kSessionFormatVersion ? migrateSessionJson(root, fileVersion) : root, QString(),
+                       &result.warnings);
+        r.get("format"); // read above
+        r.get("version");
         Session s;
         s.axes = readAxisPair(r, &result.warnings);
         s.trajectory = readTrajectory(r.child("trajectory"));
@@ -516,9 +512,7 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             s.piDiscretization = PiDiscretization::BackwardEuler;
         else
             throw FormatError{"pi_discretization", QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
-        // The digital implementation (issue 12): optional, files written before it get the defaults.
-        if (r.has("implementation"))
-            s.implementation = readImplementation(r.child("implementation"));
+        s.implementation = readImplementation(r.child("implementation"));
         {
             ObjectReader spec = r.child("specification");
             s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");
@@ -526,23 +520,14 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             if (s.spec.maxOvershootPct < 0)
                 throw FormatError{"specification.max_overshoot_pct", QStringLiteral("must be >= 0")};
             s.spec.maxErrorPct = spec.positive("max_error_pct");
-            // Move-and-settle (issue 19): optional, files written before it keep the defaults.
-            if (spec.has("in_position_window_mm"))
-                s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
-            if (spec.has("max_settle_time"))
-                s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
-            // Margin minima (issue 17): optional, files written before it keep 0 (none).
-            if (spec.has("min_phase_margin")) {
-                s.spec.minPhaseMarginDeg = spec.number("min_phase_margin");
-                if (!(s.spec.minPhaseMarginDeg >= 0.0 && s.spec.minPhaseMarginDeg <= 180.0))
-                    throw FormatError{"specification.min_phase_margin",
-                                      QStringLiteral("must be 0 .. 180 degrees")};
-            }
-            if (spec.has("min_gain_margin")) {
-                s.spec.minGainMarginDb = spec.number("min_gain_margin");
-                if (!(s.spec.minGainMarginDb >= 0.0))
-                    throw FormatError{"specification.min_gain_margin", QStringLiteral("must be >= 0 dB")};
-            }
+            s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
+            s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
+            s.spec.minPhaseMarginDeg = spec.number("min_phase_margin");
+            if (!(s.spec.minPhaseMarginDeg >= 0.0 && s.spec.minPhaseMarginDeg <= 180.0))
+                throw FormatError{"specification.min_phase_margin", QStringLiteral("must be 0 .. 180 degrees")};
+            s.spec.minGainMarginDb = spec.number("min_gain_margin");
+            if (!(s.spec.minGainMarginDb >= 0.0))
+                throw FormatError{"specification.min_gain_margin", QStringLiteral("must be >= 0 dB")};
             spec.finish();
         }
         const QJsonValue snaps = r.get("snapshots");
@@ -626,4 +611,4 @@ bool saveSessionFile(const Session& session, const QString& path, QString* error
                                error);
 }
 
-} // namespace xyt::ui
+} // namespace xyt::files

@@ -5,7 +5,7 @@
 
 #include <QJsonObject>
 
-namespace xyt::ui {
+namespace xyt::files {
 
 /**
  * The controller coefficients of both axes as JSON, with units and coefficient order stated:
@@ -16,4 +16,4 @@ namespace xyt::ui {
 QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& evaluation,
                              const ExportOptions& options = {});
 
-} // namespace xyt::ui
+} // namespace xyt::files

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QJsonObject>
+
+namespace xyt::files {
+
+/**
+ * The session format's versions, and how an older one is read.
+ *
+ * - Version 1: grew field by field; a reader took each of these as optional, with its default
+ *   when missing: the "implementation" object and each of its fields, "trajectory.gcode" (and
+ *   each snapshot's) unless the kind is "gcode", and the specification's
+ *   "in_position_window_mm", "max_settle_time", "min_phase_margin" and "min_gain_margin".
+ * - Version 2 (written now): the same fields, all of them required. Files that were written by
+ *   a version-1 writer and hold every field read the same in both.
+ *
+ * Reading an older version is this migration to the current one, then the current reader.
+ */
+inline constexpr int kSessionFormatVersion = 2;
+
+/// @p root (a document of format version @p version, 1 <= version < kSessionFormatVersion)
+/// as a document of the current version: each field that version did not require and that
+/// @p root lacks gets the value its reader gave it (the default session's), "version" says the
+/// current version. Values that are there are kept as they are, wrong ones included: the
+/// reader names them afterwards.
+QJsonObject migrateSessionJson(QJsonObject root, int version);
+
+} // namespace xyt::files
