@@ -268,7 +268,7 @@ QJsonObject implementationToJson(const ImplementationSettings& i) {
             {"tracking_time", i.trackingTimeSeconds}};
 }
 
-/// The implementation object (issue 12); every field is optional and keeps its default.
+/// The implementation object; every field is optional and keeps its default.
 ImplementationSettings readImplementation(ObjectReader r) {
     ImplementationSettings i;
     if (r.has("delay_samples"))
@@ -387,7 +387,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             throw FormatError{join(c.path(), "ramp_in"), QStringLiteral("must be >= 0")};
         c.finish();
     }
-    // Files written before issue 13 have no "gcode" object (and cannot be of that kind).
+    // Files from before G-code trajectories have no "gcode" object (and cannot be of that kind).
     if (r.has("gcode") || t.kind == TrajectoryKind::Gcode) {
         ObjectReader g = r.child("gcode");
         t.gcode.fileName = g.string("file").toStdString();
@@ -516,7 +516,7 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             s.piDiscretization = PiDiscretization::BackwardEuler;
         else
             throw FormatError{"pi_discretization", QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
-        // The digital implementation (issue 12): optional, files written before it get the defaults.
+        // The digital implementation: optional, files written before it get the defaults.
         if (r.has("implementation"))
             s.implementation = readImplementation(r.child("implementation"));
         {
@@ -526,12 +526,12 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             if (s.spec.maxOvershootPct < 0)
                 throw FormatError{"specification.max_overshoot_pct", QStringLiteral("must be >= 0")};
             s.spec.maxErrorPct = spec.positive("max_error_pct");
-            // Move-and-settle (issue 19): optional, files written before it keep the defaults.
+            // Move-and-settle: optional, files written before it keep the defaults.
             if (spec.has("in_position_window_mm"))
                 s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
             if (spec.has("max_settle_time"))
                 s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
-            // Margin minima (issue 17): optional, files written before it keep 0 (none).
+            // Margin minima: optional, files written before it keep 0 (none).
             if (spec.has("min_phase_margin")) {
                 s.spec.minPhaseMarginDeg = spec.number("min_phase_margin");
                 if (!(s.spec.minPhaseMarginDeg >= 0.0 && s.spec.minPhaseMarginDeg <= 180.0))

@@ -137,7 +137,7 @@ void TstSessionFile::roundTripEveryField() {
 
 namespace {
 
-/// A session of the G-code kind: the square example's first lines (issue 13).
+/// A session of the G-code kind: the square example's first lines.
 Session gcodeSession() {
     Session s = Session::paperDefault();
     s.trajectory.kind = TrajectoryKind::Gcode;
@@ -168,7 +168,7 @@ void TstSessionFile::roundTripGcode() {
 }
 
 void TstSessionFile::filesWithoutGcodeLoad() {
-    // Files written before issue 13 have no trajectory.gcode: they load with its defaults.
+    // Files from before G-code trajectories have no trajectory.gcode: they load with its defaults.
     QJsonObject root = defaultJson();
     root = setPath(root, {"trajectory", "gcode"}, QJsonValue(QJsonValue::Undefined)).toObject();
     QVERIFY(!root["trajectory"].toObject().contains("gcode"));
@@ -185,7 +185,7 @@ void TstSessionFile::filesWithoutGcodeLoad() {
 
 namespace {
 
-/// Paper 001's x axis as identified from a log (issue 11): an ARX origin, one deviation unknown.
+/// Patrick, Ishak and Adnan's x axis as identified from a log: an ARX origin, one deviation unknown.
 Session identifiedSession() {
     Session s = Session::paperDefault();
     ModelOrigin o;
@@ -206,7 +206,7 @@ Session identifiedSession() {
 
 void TstSessionFile::roundTripModelOrigin() {
     // Invariant: load(save(s)) == s with the model's origin, an unknown deviation (NaN, null in
-    // JSON) included; a hand-typed axis has none, and files before issue 11 load without it.
+    // JSON) included; a hand-typed axis has none, and files from before identification load without it.
     const Session s = identifiedSession();
     const QJsonObject json = sessionToJson(s);
     const QJsonObject origin = json["axes"].toArray()[0].toObject()["model_origin"].toObject();
@@ -375,7 +375,7 @@ void TstSessionFile::malformed() {
 }
 
 void TstSessionFile::filesWithoutImplementationLoad() {
-    // Files written before issue 12 have no implementation object, and a hand-written one may
+    // Files from before the digital implementation have no implementation object, and a hand-written one may
     // give only some of its fields: the rest keep the defaults (ideal encoder and DAC, no delay,
     // clamping anti-windup).
     QJsonObject root = defaultJson();
@@ -394,7 +394,7 @@ void TstSessionFile::filesWithoutImplementationLoad() {
 }
 
 void TstSessionFile::filesWithoutMarginMinimaLoad() {
-    // Files written before issue 17 have no margin minima: they load with none (0).
+    // Files from before the margin requirements have no margin minima: they load with none (0).
     QJsonObject root = defaultJson();
     QJsonObject spec = root["specification"].toObject();
     QVERIFY(spec.contains("min_phase_margin") && spec.contains("min_gain_margin"));
