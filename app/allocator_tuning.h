@@ -11,8 +11,8 @@ namespace xyt::app {
 
 /**
  * Keeps freed memory in the process instead of handing it back to the kernel at once. Every
- * slider step of the workbench simulates both axes again (the continuous run and, since issue
- * 12, the digital implementation: some 3 MB of signals per axis at the default 52 001 samples)
+ * slider step of the workbench simulates both axes again (the continuous run and the
+ * digital implementation: some 3 MB of signals per axis at the default 52 001 samples)
  * and frees the previous ones. With glibc's defaults those blocks are unmapped or trimmed on
  * free and page-faulted in again on the next step, which measured 60 % of a digital run's time.
  * The GUI and its benchmark call this first; the command-line tool does not (one run, then exit).

@@ -97,7 +97,7 @@ void printRatio(const char* name, double measured, double reference, const char*
 volatile double sink = 0.0; // keeps results alive so the optimizer cannot drop the work
 
 /**
- * A 10 000-block G-code program (issue 13): a zig-zag of 5000 vertical 1 mm lines joined by
+ * A 10 000-block G-code program: a zig-zag of 5000 vertical 1 mm lines joined by
  * 5000 tangent half circles of 0.5 mm radius (alternately clockwise over the top and
  * counter-clockwise under the bottom), at F3000, 3 decimals as a CAM post writes them.
  */
@@ -191,7 +191,7 @@ void readCsv128MiB(const char* filter) {
     ::rmdir(folder);
 }
 
-/// Issue 13: read, profile, simulate both axes at 1 ms and the contour error of that program
+/// Read, profile, simulate both axes at 1 ms and the contour error of that program
 /// (target under 200 ms), and each stage alone.
 void gcodeContour(const char* filter) {
     if (filter && std::string("gcode_contour_10000_blocks").find(filter) == std::string::npos)
@@ -252,7 +252,7 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
         QApplication::processEvents();
     };
     benchmark(filter, "gui_slider_to_repaint", sliderStep);
-    // Issue 12: the digital implementation overlaid (its run, figures and z-plane poles are
+    // The digital implementation overlaid (its run, figures and z-plane poles are
     // computed with every design) with a quantized, delayed implementation, and the pole-zero
     // map of the digital loop above (target under 16 ms).
     {
@@ -271,11 +271,11 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
         window.upperTabs()->setCurrentIndex(0);
         QApplication::processEvents();
     }
-    // The same with the Bode tab above (issue 17: under 16 ms).
+    // The same with the Bode tab above (under 16 ms).
     window.upperTabs()->setCurrentWidget(window.bodePlot());
     QApplication::processEvents();
     benchmark(filter, "gui_slider_to_repaint_bode", sliderStep);
-    // Issue 18: the live design-space map visible below (root locus above) and recomputing:
+    // The live design-space map visible below (root locus above) and recomputing:
     // before each timed slider step a plant change (untimed) starts a live preview on the
     // worker threads; the step is timed while it runs. Prints how many steps overlapped a study.
     window.upperTabs()->setCurrentIndex(0);
@@ -309,7 +309,7 @@ void guiSliderToRepaint(const char* filter, int& argc, char* argv[]) {
     std::fflush(stdout);
 }
 
-/// Issue 11: the estimators on simulated data of the sizes an experiment gives. Inputs and
+/// The estimators on simulated data of the sizes an experiment gives. Inputs and
 /// noise from std::mt19937_64 with fixed seeds, one draw per statement.
 void identification(const char* filter) {
     const auto binary = [](std::size_t n, std::uint64_t seed) {
@@ -328,7 +328,7 @@ void identification(const char* filter) {
         return y;
     };
     {
-        // Paper 001's x-axis ARX(2,3,1) model, 100,000 samples, equation noise. Target < 10 ms.
+        // Patrick, Ishak and Adnan's x-axis ARX(2,3,1) model, 100,000 samples, equation noise. Target < 10 ms.
         const std::vector<double> a{1.0, -1.6580, 0.6583}, b{0.0, 0.0421, 0.0628, -0.0454};
         xyt::IoData d;
         d.tsSeconds = 0.07;
@@ -364,7 +364,7 @@ void identification(const char* filter) {
         }, 5, 0.5);
     }
     {
-        // Paper 000's lower base from a +-2.5 V square wave (0.5 s per level) at 10 ms, 10,000
+        // Braga et al.'s lower base from a +-2.5 V square wave (0.5 s per level) at 10 ms, 10,000
         // samples, 0.1 mm measurement noise. Target < 500 ms.
         const xyt::ThirdOrderPlant plant = xyt::findGtPreset("lower-base")->plant;
         xyt::IoData d;
@@ -391,7 +391,7 @@ int main(int argc, char* argv[]) {
     });
 
     {
-        // Issue 18: what one design point of the sweep costs besides its tracking run.
+        // What one design point of the sweep costs besides its tracking run.
         const auto d = xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp);
         const auto plant = lower.plant.transferFunction();
         benchmark(filter, "sweep_point_loop_modes_and_foh", [&] {
@@ -408,7 +408,7 @@ int main(int argc, char* argv[]) {
     }
 
     {
-        // Issue 17: the 4th-order GT loop at 1,000 frequencies plus all its margins (target
+        // The 4th-order GT loop at 1,000 frequencies plus all its margins (target
         // under 0.2 ms).
         const xyt::TransferFunction loop = xyt::gtLoopTransferFunctions(
             xyt::designGuilleminTruxal(lower.plant, lower.omegaNRadPerSec, lower.kp)).openLoop;
@@ -433,7 +433,7 @@ int main(int argc, char* argv[]) {
             const auto run = xyt::simulateLoop(plant, design.controller, reference, options);
             sink = sink + run.y.back();
         });
-        // Issue 12: the sampled-data loop of the digital PI on the same cubic at 10 ms (target
+        // The sampled-data loop of the digital PI on the same cubic at 10 ms (target
         // under 1 ms), ideal and with a 1 um encoder, a 16-bit DAC and one sample of delay.
         {
             const auto pi = xyt::digitalPi(design.kp, design.ki, 0.01, xyt::PiDiscretization::Tustin,
@@ -466,7 +466,7 @@ int main(int argc, char* argv[]) {
                 sink = sink + xyt::chooseRunDuration(session).seconds;
             });
         }
-        // Issue 18: the same run into a kept result (no allocation), against the plain scalar
+        // The same run into a kept result (no allocation), against the plain scalar
         // reference loop of the same recurrence over preallocated arrays, timed here too.
         xyt::SimulationResult kept;
         const double reused = benchmark(filter, "simulate_cubic_130s_dt0.01_reused", [&] {
@@ -497,7 +497,7 @@ int main(int argc, char* argv[]) {
             const auto locus = xyt::rootLocus(design.openLoop);
             sink = sink + locus.gains.back();
         });
-        // The design-space study of paper 000: 100 x 100 log grid around the lower-base design
+        // The design-space study of Braga et al.: 100 x 100 log grid around the lower-base design
         // (wn 0.2..20 rad/s, kp 3..3000), cubic 0 -> 600 mm in 130 s at dt 0.01, |u| <= 2.5 V,
         // the paper's specification, ITAE criterion, with refinement when a point is feasible.
         const xyt::CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
@@ -538,7 +538,7 @@ int main(int argc, char* argv[]) {
         printRatio("sweep_100x100", sweepUs[0], 0.5 * plainSweep,
                    "all threads / (reference loop over the designs / 2), target 1.5");
         printRatio("sweep_100x100_thread_speedup", sweepUs[1], sweepUs[0], "1 thread / all threads");
-        // Issue 18, the live case: the workbench's preview of the default session (lower base,
+        // The live case: the workbench's preview of the default session (lower base,
         // cubic 600 mm in 130 s run to tf + 2 x 100 s, 1,500 samples, 100 per step-scan span),
         // 50 x 50 designs over the view's default ranges, all threads, no refinement. Target
         // under 100 ms on an idle machine.
@@ -569,7 +569,7 @@ int main(int argc, char* argv[]) {
             const auto r = xyt::sweepDesignSpace(problem, wn, kp, {});
             sink = sink + r.feasibleCount;
         }, 3, 0.0);
-        // Issue 14: 1,000 perturbed plants of the paper 001 circle (30 mm at 0.1 rad/s, one
+        // 1,000 perturbed plants of the circle of Patrick, Ishak and Adnan (30 mm at 0.1 rad/s, one
         // revolution, both axes, every A and B coefficient +-10 %), each run with and without
         // the nominal ZPETC, all threads, no corners. Target under 1 s.
         {
@@ -598,7 +598,7 @@ int main(int argc, char* argv[]) {
                     sink = sink + xyt::analyzeRobustness(p, o).rmse.p50;
             }, 3, 0.0);
         }
-        // Paper 001: x-axis pole placement + ZPETC + one revolution of 30 sin(0.1 t) at 70 ms
+        // Patrick, Ishak and Adnan: x-axis pole placement + ZPETC + one revolution of 30 sin(0.1 t) at 70 ms
         // (898 samples), all three structures.
         const xyt::PolePlacementPreset x = *xyt::findPolePlacementPreset("x-axis");
         xyt::Circle circle;

@@ -8,7 +8,7 @@
 namespace xyt::bench {
 
 /**
- * The reference loops of issue 18, against which xytune-bench states its simulation and sweep
+ * The reference loops, against which xytune-bench states its simulation and sweep
  * figures as ratios (so that they survive a loaded machine): the recurrence of simulateLoop for
  * a third-order plant under a PI controller (4 states; the same exact FOH steps, the same mode
  * choice from v at the start of each step) written as straightforward scalar C++ over fixed

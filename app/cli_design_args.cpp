@@ -141,7 +141,7 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
     s.options.dtSeconds = positiveNumber(args, "dt", 0.01);
     s.options.umaxVolts = positiveNumber(args, "umax", 2.5);
     if (s.trajectory.move) {
-        // A move that no sample can see is not a run (issue 19: --tf 0.005 --dt 0.01 used to
+        // A move that no sample can see is not a run (--tf 0.005 --dt 0.01 used to
         // report every figure as 0).
         const double move = s.trajectory.move->endSeconds - s.trajectory.t0Seconds;
         const QString text = QStringLiteral("the move lasts %1 s (--tf minus --t0), %2 of --dt %3 s")

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-// Argument parsing shared by the commands on the Guillemin-Truxal design of paper 000
+// Argument parsing shared by the commands on the Guillemin-Truxal design of Braga et al.
 // (gt, simulate, sweep): the plant, the design point, the trajectory and the simulation setup.
 
 #include "app/cli_args.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli bode and margins (issue 17): the frequency response and the exact stability
+// xytune-cli bode and margins: the frequency response and the exact stability
 // margins of a Guillemin-Truxal design, a pole-placement design, or a loop given by N and D.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"

@@ -136,8 +136,8 @@ QJsonObject axisJson(const AxisSettings& axis, const SimulationResult& run) {
 }
 
 /// The default session (as `xytune-cli new` writes it and the workbench starts: x the lower
-/// base, y the upper base, +-2.5 V) with both axes on --method: paper 000's Guillemin-Truxal
-/// PI (wn 2 and 1 rad/s, kp 30) or paper 001's pole placement + ZPETC (x-axis and y-axis
+/// base, y the upper base, +-2.5 V) with both axes on --method: Braga et al.'s Guillemin-Truxal
+/// PI (wn 2 and 1 rad/s, kp 30) or Patrick, Ishak and Adnan's pole placement + ZPETC (x-axis and y-axis
 /// models, T = 1 - 0.2 z^-1, Ts 70 ms).
 Session sessionFor(const CliArgs& args) {
     Session session = Session::paperDefault();

@@ -12,7 +12,7 @@ extern const QStringList kGcodeContourOptions;
 
 /**
  * xytune-cli contour --gcode FILE: reads the program, plans its feed profile, runs both axes of
- * the default session (paper 000's Guillemin-Truxal designs: x the lower base, y the upper
+ * the default session (Braga et al.'s Guillemin-Truxal designs: x the lower base, y the upper
  * base) along it and prints the contour error, the ISO 230-4 figures of a single full circle
  * and the warnings as JSON; --csv writes the time series.
  */

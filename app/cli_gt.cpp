@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli gt | simulate | report: the Guillemin-Truxal design of paper 000.
+// xytune-cli gt | simulate | report: the Guillemin-Truxal design of Braga et al.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
@@ -237,7 +237,7 @@ int runReport(const QStringList& argv) {
         return runSessionReport(args.positional().first());
     QString text;
     QTextStream out(&text);
-    out << "XY Tune report: the Guillemin-Truxal PI design of paper 000 (default design)\n";
+    out << "XY Tune report: the Guillemin-Truxal PI design of Braga et al. (default design)\n";
     out << "Cubic point-to-point 0 -> 600 in 130 s (dt 0.01 s, |u| <= 2.5 V); circle R = 25 mm at "
            "0.06 rad/s (x = lower base, sine; y = upper base, cosine), 10 s ramp-in, one revolution.\n\n";
     Circle circle;

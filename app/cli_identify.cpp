@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli identify: an axis model from a logged experiment (issue 11). Reads the file, picks
+// xytune-cli identify: an axis model from a logged experiment. Reads the file, picks
 // the columns, preprocesses (range, detrend, decimate), identifies the chosen structure and
 // prints the estimate with its uncertainty, fits, FPE/AIC, residual tests, poles and zeros.
 #include "app/cli_args.h"

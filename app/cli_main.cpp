@@ -42,8 +42,8 @@ constexpr CommandHelp kGtHelp[] = {
      "            firmware runs (sampled-data PI, ZOH, quantization, anti-windup): JSON digital\n"
      "            {tracking, move_and_settle, poles (z-plane), min_damping, limit_cycle, warnings}.\n"},
     {"report", "  report [SESSION.json]  text report of a session, or of the default design\n"
-               "            (both bases of paper 000) when no file is given\n"},
-    {"new", "  new -o FILE             write the default session (paper 000: x = lower base,\n"
+               "            (both bases of Braga et al.) when no file is given\n"},
+    {"new", "  new -o FILE             write the default session (Braga et al.: x = lower base,\n"
             "            y = upper base, controller sample time 0.01 s); prints the path\n"},
     {"export", "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
                "            tustin|backward-euler] [--precision double|float]  controller\n"
@@ -128,12 +128,12 @@ constexpr CommandHelp kPpHelp[] = {
                 "            (deg)] [--corner-window 1 (mm)] [--method guillemin-truxal|pole-placement-zpetc]\n"
                 "            [--csv FILE]  a G-code program (G0-G3, G17, G20/G21, G90/G91, F, N; Z, M, S, T\n"
                 "            ignored with a warning) run by the default session's axes, both starting at\n"
-                "            rest at the origin: paper 000's Guillemin-Truxal PI (the default; x the lower\n"
+                "            rest at the origin: Braga et al.'s Guillemin-Truxal PI (the default; x the lower\n"
                 "            base, wn 2, kp 30; y the upper base, wn 1, kp 30; +-2.5 V: slow loops, built\n"
-                "            for the paper's 130 s move) or paper 001's pole placement + ZPETC (x-axis and\n"
-                "            y-axis models, Ts 70 ms, linear, |u| > 2.5 V flagged). The feed profile stops\n"
-                "            at joins turning more than --corner-angle and keeps speed through tangent\n"
-                "            ones, v^2/R <= --max-accel on arcs. JSON: profile, x_axis, y_axis (tracking),\n"
+                "            for the paper's 130 s move) or Patrick, Ishak and Adnan's pole placement +\n"
+                "            ZPETC (x-axis and y-axis models, Ts 70 ms, linear, |u| > 2.5 V flagged). The feed\n"
+                "            profile stops at joins turning more than --corner-angle and keeps speed through\n"
+                "            tangent ones, v^2/R <= --max-accel on arcs. JSON: profile, x_axis, y_axis (tracking),\n"
                 "            contour_error {max, rms, max_at, corners} (signed, + left of travel, mm; G0\n"
                 "            rapids left out), iso230_4 (a single full circle: the circle alone from rest,\n"
                 "            both ways: G, F_max, F_min, H, G_bidirectional, reversal_spikes; else null),\n"
@@ -180,8 +180,8 @@ std::string generalUsage() {
                     "the path written; polynomials of s in descending powers):\n";
     for (const CommandHelp& c : kGtHelp)
         u += c.text;
-    u += "\nDiscrete pole placement and ZPETC of paper 001 (polynomials of z^-1 in ascending powers,\n"
-         "as space- or comma-separated lists, e.g. --a \"1 -1.6580 0.6583\"):\n";
+    u += "\nDiscrete pole placement and ZPETC of Patrick, Ishak and Adnan (polynomials of z^-1 in\n"
+         "ascending powers, as space- or comma-separated lists, e.g. --a \"1 -1.6580 0.6583\"):\n";
     for (const CommandHelp& c : kPpHelp)
         u += c.text;
     u += std::string("\n") + kFrequencyLoops;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli pp | zpetc | contour: discrete pole placement and ZPETC of paper 001.
+// xytune-cli pp | zpetc | contour: discrete pole placement and ZPETC of Patrick, Ishak and Adnan.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_gcode_contour.h"

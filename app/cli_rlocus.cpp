@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-cli rlocus: the root locus of 1 + K N/D = 0 (continuous or discrete), or of the
-// Guillemin-Truxal loop of paper 000 (K = 1 is the design point).
+// Guillemin-Truxal loop of Braga et al. (K = 1 is the design point).
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_json.h"
@@ -71,7 +71,7 @@ LoopInput parseLoop(const CliArgs& args) {
     const std::vector<double> den = parseCoefficientList(denText->toStdString(), "--den");
     try {
         if (args.has("ts")) {
-            // Discrete: ascending powers of z^-1, as paper 001 writes its ARX models.
+            // Discrete: ascending powers of z^-1, as Patrick, Ishak and Adnan write their ARX models.
             in.tsSeconds = args.number("ts");
             if (!(in.tsSeconds > 0.0))
                 throw InvalidInput("--ts", "must be greater than zero");

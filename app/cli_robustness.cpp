@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-cli robustness SESSION.json: Monte Carlo and corner analysis of a session's axes under
-// plant-model mismatch (issue 14); with --contour also the XY contour both axes trace together.
+// plant-model mismatch; with --contour also the XY contour both axes trace together.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"

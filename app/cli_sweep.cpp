@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli sweep: the design-space study of paper 000 (wn x kp grid, feasibility, best design).
+// xytune-cli sweep: the design-space study of Braga et al. (wn x kp grid, feasibility, best design).
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"

@@ -30,7 +30,7 @@ class DesignSpacePlot;
 class TuningSession;
 
 /**
- * The design-space study of paper 000 (issue 7) for the presenter's current axis: a grid of
+ * The design-space study of Braga et al. for the presenter's current axis: a grid of
  * (wn, kp) designs evaluated by the core (sweepDesignSpace) on a worker thread, shown as a heat
  * map (DesignSpacePlot). Clicking a cell loads that design into the session as one undo step.
  *
@@ -38,7 +38,7 @@ class TuningSession;
  * this widget. Run while a study runs cancels it first; Cancel stops it after the points being
  * computed; destroying the widget cancels and joins.
  *
- * Live map (issue 18, on by default): while the view is visible, a change of what the study
+ * Live map (on by default): while the view is visible, a change of what the study
  * depends on (the axis, its plant, the trajectory, the actuator limit, the settle limit and
  * in-position window, the grid) starts a preview at once, at most 50 x 50 designs coarse in
  * time (kLivePreviewFidelity), cancelling the study under way; when the inputs have rested for

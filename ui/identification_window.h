@@ -35,7 +35,7 @@ class PlotNotice;
 class TuningSession;
 
 /**
- * "Identify a model from data" (issue 11): loads an experiment file (CSV/TSV, .lvm, .mat),
+ * "Identify a model from data": loads an experiment file (CSV/TSV, .lvm, .mat),
  * picks the input, output and time columns, preprocesses (range, detrend, decimate), and runs
  * the core's identifyModel for the chosen structure on a worker thread with progress and cancel.
  * Every fit becomes a row of the candidates table (fits, AIC, residual tests, NMP) so that

@@ -290,7 +290,7 @@ QWidget* MainWindow::buildControls() {
     tsRow->addWidget(controllerTs_, 1);
     tsRow->addWidget(discretization_, 1);
     actuatorForm->addRow(tr("Controller Ts (s)"), tsRow);
-    // The implementation (issue 12) folds away: open, its five fields would push the default
+    // The implementation folds away: open, its five fields would push the default
     // session's controls below a 1366x768 window.
     implementationToggle_ = new QToolButton(actuatorBox);
     implementationToggle_->setCheckable(true);
@@ -536,7 +536,7 @@ void MainWindow::refresh() {
         if (shown(parameterLocusPlot_))
             parameterLocusPlot_->showNoResult(tr("Parameter locus of %1").arg(title), reason);
     }
-    // The frequency domain (issue 17): drawn from the core's analysis, or its reason.
+    // The frequency domain: drawn from the core's analysis, or its reason.
     if (shown(bodePlot_) || shown(nyquistPlot_)) {
         const AxisFrequencyAnalysis& f = session_->frequencyAnalysis(axis);
         const QString reason = e.ok ? tr("No frequency analysis: %1").arg(QString::fromStdString(f.error))

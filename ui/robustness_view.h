@@ -32,7 +32,7 @@ class SensitivityPlot;
 class TuningSession;
 
 /**
- * Robustness of the current axis to plant-model mismatch (issue 14): a relative range per
+ * Robustness of the current axis to plant-model mismatch: a relative range per
  * plant parameter, Monte Carlo plants from a seed and the box's corners, run by the core
  * (analyzeRobustness) on a worker thread with progress and cancel; the chosen signal's envelope
  * over time around the nominal run, the chosen figure's histogram with the specification's

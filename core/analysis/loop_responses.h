@@ -24,7 +24,7 @@ struct LoopTransferFunctions {
 };
 
 /**
- * Guillemin-Truxal axis (paper 000, unity feedback, G_c = (kp s + ki)/s ahead of
+ * Guillemin-Truxal axis (Braga et al., unity feedback, G_c = (kp s + ki)/s ahead of
  * G = k0/(s^3 + a1 s^2 + a2 s)): with G_c = N_c/D_c and G = N/D,
  * L = N_c N/(D_c D), S = D_c D/(D_c D + N_c N), T = N_c N/(D_c D + N_c N),
  * u/r = G_c S = N_c D/(D_c D + N_c N). L has the double pole at s = 0.
@@ -32,7 +32,7 @@ struct LoopTransferFunctions {
 LoopTransferFunctions gtLoopTransferFunctions(const GtDesign& design);
 
 /**
- * Pole-placement (RST) axis (paper 001 Fig. 9): F u = K_f r - G y, A y = B u, all in z^-1.
+ * Pole-placement (RST) axis (Patrick, Ishak and Adnan Fig. 9): F u = K_f r - G y, A y = B u, all in z^-1.
  * The loop broken at the plant input is L = B G/(A F); with P = A F + B G (= T of the design up
  * to the Diophantine residual, which is kept here so that T = L/(1 + L) exactly):
  * S = A F/P, T = B G/P, u/r = K_f A/P. Discrete in z with the design's Ts.
@@ -42,7 +42,7 @@ LoopTransferFunctions rstLoopTransferFunctions(const PolePlacementDesign& design
 /**
  * Tracking from the desired output y_d to the output y of a pole-placement axis:
  * without feedforward y/y_d = K_f B/P (r = y_d drives the loop), and with the ZPETC ahead of it
- * y/y_d = z^p N_ff(z^-1)/D_ff(z^-1) K_f B/P (paper 001 Eq. 6 and Fig. 8: zero phase at every
+ * y/y_d = z^p N_ff(z^-1)/D_ff(z^-1) K_f B/P (Patrick, Ishak and Adnan Eq. 6 and Fig. 8: zero phase at every
  * frequency, unity DC gain, a gain that falls away from 1 towards pi/Ts). The second has more
  * zeros than poles (the preview): a non-causal transfer function, for evaluation only.
  */

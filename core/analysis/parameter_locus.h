@@ -65,7 +65,7 @@ enum class GtSweptParameter {
 
 /**
  * The closed-loop poles of the Guillemin-Truxal design (designGuilleminTruxal), i.e. the roots
- * of s^4 + a1 s^3 + a2 s^2 + kp k0 s + wn^4 (paper 000 Eq. 7 with Eq. 15-18), as omega_n
+ * of s^4 + a1 s^3 + a2 s^2 + kp k0 s + wn^4 (Braga et al. Eq. 7 with Eq. 15-18), as omega_n
  * (rad/s) or kp sweeps with the other fixed at @p fixedValue.
  * @throws InvalidInput for the plant, "wn"/"kp" when a swept or fixed value is not > 0, and the
  *         sweep's fields.

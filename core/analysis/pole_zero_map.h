@@ -23,7 +23,7 @@ struct PoleZeroSet {
 PoleZeroSet poleZeroSet(const std::string& name, const TransferFunction& tf);
 
 /**
- * The sets of a Guillemin-Truxal design (paper 000), in this order and with these names:
+ * The sets of a Guillemin-Truxal design (Braga et al.), in this order and with these names:
  * "plant" G (Eq. 9), "controller" G_c (Eq. 16), "open loop" G_c G, "closed loop"
  * feedback(G_c G) (Eq. 10) and "reference model" G_R (Eq. 7); the last two coincide by
  * construction of the design.

@@ -45,7 +45,7 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     if (!representable(wn4) || !std::isfinite(d.f1) || !std::isfinite(d.f2))
         throw InvalidInput("wn", formatNumber(wn) + " rad/s is out of range: wn^4 = " + formatNumber(wn4) +
                                      " and a2/wn^2 = " + formatNumber(d.f2) +
-                                     " must be finite nonzero numbers for the reference model (paper 000 Eq. 11-18)");
+                                     " must be finite nonzero numbers for the reference model (Braga et al. Eq. 11-18)");
     if (!std::isfinite(d.f3) || !representable(d.psi1) || !representable(d.ki) ||
         !std::isfinite(d.f3 * wn3)) {
         // kp and k0 enter as their product: name the factor that is out of all proportion (the
@@ -74,9 +74,9 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
 
 const std::vector<GtPreset>& gtPresets() {
     static const std::vector<GtPreset> presets = {
-        {"lower-base", "Lower base, paper 000 Eq. 2 (design of Sec. 3.1)", {77.8, 125.3, 3665.0},
+        {"lower-base", "Lower base, Braga et al. Eq. 2 (design of Sec. 3.1)", {77.8, 125.3, 3665.0},
          2.0, 30.0, 0.001},
-        {"upper-base", "Upper base, paper 000 Eq. 1 (design of Sec. 3.2)", {24.44, 68.18, 863.0},
+        {"upper-base", "Upper base, Braga et al. Eq. 1 (design of Sec. 3.2)", {24.44, 68.18, 863.0},
          1.0, 30.0, 0.001},
     };
     return presets;

@@ -10,7 +10,7 @@
 
 namespace xyt {
 
-/// G(s) = k0 / (s^3 + a1 s^2 + a2 s), paper 000 Eq. 9 (a DC motor base with an integrator).
+/// G(s) = k0 / (s^3 + a1 s^2 + a2 s), Braga et al. Eq. 9 (a DC motor base with an integrator).
 struct ThirdOrderPlant {
     double k0 = 0.0;
     double a1 = 0.0;
@@ -23,7 +23,7 @@ struct ThirdOrderPlant {
 };
 
 /**
- * The Guillemin-Truxal PI design of paper 000. With the controller G_c = k (s + psi1)/(s + psi2)
+ * The Guillemin-Truxal PI design of Braga et al. With the controller G_c = k (s + psi1)/(s + psi2)
  * (Eq. 8) the closed loop is Eq. 10; matching it to the type-2 reference model
  *   G_R(s) = (f3 wn^3 s + wn^4) / (s^4 + f1 wn s^3 + f2 wn^2 s^2 + f3 wn^3 s + wn^4)
  * (Eq. 7, whose s^2 the paper misprints as s) gives, by Eq. 11-18:
@@ -50,7 +50,7 @@ struct GtDesign {
 ///         the plant's fields.
 GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPerSec, double kp);
 
-/// A named plant and design of paper 000.
+/// A named plant and design of Braga et al.
 struct GtPreset {
     std::string name;
     std::string description;

@@ -13,7 +13,7 @@ namespace xyt {
 
 /**
  * A discrete RST pole-placement design for an ARX axis model A(z^-1) y = B(z^-1) u
- * (paper 001 Sec. 5, Fig. 9):
+ * (Patrick, Ishak and Adnan Sec. 5, Fig. 9):
  * \f[ F(z^{-1}) u(k) = K_f r(k) - G(z^{-1}) y(k), \qquad A F + B G = T, \qquad
  *     K_f = T(1) / B(1), \f]
  * so the closed loop is \f$ y/r = K_f B(z^{-1}) / T(z^{-1}) \f$ (paper Eq. 7 with Eq. 8) with
@@ -52,7 +52,7 @@ struct PolePlacementDesign {
 PolePlacementDesign designPolePlacement(const Polynomial& a, const Polynomial& b,
                                         const Polynomial& t, double tsSeconds);
 
-/// A named axis model with its design target (paper 001 Eq. 1, 3, 9, 10).
+/// A named axis model with its design target (Patrick, Ishak and Adnan Eq. 1, 3, 9, 10).
 struct PolePlacementPreset {
     std::string name;
     std::string description;

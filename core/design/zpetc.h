@@ -22,7 +22,7 @@ struct ZpetcZero {
 
 /**
  * Tomizuka's zero phase error tracking controller for the closed loop
- * \f$ G_c = z^{-d} B_c(z^{-1}) / A_c(z^{-1}) \f$ (paper 001 Eq. 5-6, Fig. 6), with
+ * \f$ G_c = z^{-d} B_c(z^{-1}) / A_c(z^{-1}) \f$ (Patrick, Ishak and Adnan Eq. 5-6, Fig. 6), with
  * \f$ z^{-d} B_c = K_f B \f$ and \f$ A_c = T \f$ from the pole-placement design:
  * \f[ B_c = B_c^+ B_c^-, \qquad
  *     u_{ff}(k) = \frac{A_c(z^{-1})\, B_c^-(z)}{B_c^+(z^{-1})\, [B_c^-(1)]^2}\, r(k + d). \f]

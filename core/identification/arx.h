@@ -17,7 +17,7 @@ namespace xyt {
  *   \f$ A(q) y(t) = B(q) u(t) + e(t) \f$,
  *   \f$ A = 1 + a_1 q^{-1} + \dots + a_{na} q^{-na} \f$,
  *   \f$ B = b_{nk} q^{-nk} + \dots + b_{nk+nb-1} q^{-(nk+nb-1)} \f$
- * (MATLAB's convention: nb coefficients, nk samples of dead time; paper 001's ARX231 is
+ * (MATLAB's convention: nb coefficients, nk samples of dead time; Patrick, Ishak and Adnan's ARX231 is
  * na = 2, nb = 3, nk = 1). GNU Octave control 3.4's `arx(..., 'nk', 0)` is this nk = 1: see
  * tests/data/README.md.
  */

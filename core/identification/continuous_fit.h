@@ -18,7 +18,7 @@
 namespace xyt {
 
 /**
- * Output of paper 000's plant \f$ G(s) = \frac{k_0}{s^3 + a_1 s^2 + a_2 s} \f$ (Eq. 9) for a
+ * Output of Braga et al.'s plant \f$ G(s) = \frac{k_0}{s^3 + a_1 s^2 + a_2 s} \f$ (Eq. 9) for a
  * zero-order-held input: the EXACT ZOH discretization (matrix exponential, discretizeZoh in
  * core/model/state_space.h) of the companion realization x = [y, y', y''], from rest at y = 0.
  * u[k] (V) is held over [k Ts, (k+1) Ts), y[k] is the position at k Ts (the model's output unit:
@@ -49,7 +49,7 @@ struct ContinuousFitOptions {
     bool estimateInitialPosition = false;
 };
 
-/// The fit of paper 000's plant structure to sampled data.
+/// The fit of Braga et al.'s plant structure to sampled data.
 struct ContinuousFitResult {
     EstimationStatus status = EstimationStatus::Failed;
     std::string message;

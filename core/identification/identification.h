@@ -17,12 +17,12 @@
 
 namespace xyt {
 
-/// The model structures XY Tune identifies (issue 11).
+/// The model structures XY Tune identifies.
 enum class ModelStructure {
     Arx,                 ///< A y = B u + e (least squares)
     Oe,                  ///< y = B/F u + e (prediction error)
     Bj,                  ///< y = B/F u + C/D e (prediction error)
-    ContinuousThirdOrder ///< paper 000: k0 / (s^3 + a1 s^2 + a2 s), output error, exact ZOH
+    ContinuousThirdOrder ///< Braga et al.: k0 / (s^3 + a1 s^2 + a2 s), output error, exact ZOH
 };
 
 /// "arx", "oe", "bj", "gt3" (the CLI's and the session file's names).

@@ -10,7 +10,7 @@ namespace xyt {
  * One input/output record of an experiment on an axis, uniformly sampled: u[k] is the command
  * (volts) applied over [k Ts, (k+1) Ts) and y[k] the measured position at k Ts (mm after the
  * reader's output scale). The readers (core/identification: delimited, lvm, mat) and the preprocessing
- * produce it; the estimators (ARX, OE, BJ, the continuous paper-000 fit) and the validation
+ * produce it; the estimators (ARX, OE, BJ, the continuous third-order fit) and the validation
  * consume it.
  */
 struct IoData {

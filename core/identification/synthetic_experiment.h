@@ -10,12 +10,12 @@
 namespace xyt {
 
 /**
- * A synthetic logged experiment (issue 11: the examples, teaching): the open-loop response of an
+ * A synthetic logged experiment (the examples, teaching): the open-loop response of an
  * axis model to @p command, y[k] at k Ts from rest at 0, plus white Gaussian measurement noise of
  * standard deviation @p noiseStdMm (Box-Muller on 53-bit uniforms of std::mt19937_64 seeded with
  * @p seed, one normal draw per sample in order: the same file on every machine and library).
  * The description says it is synthetic and names the model, noise and seed.
- *  - plantMm: paper 000's k0 / (s^3 + a1 s^2 + a2 s) with y in mm (k0 in mm / (V s^3)),
+ *  - plantMm: Braga et al.'s k0 / (s^3 + a1 s^2 + a2 s) with y in mm (k0 in mm / (V s^3)),
  *    simulated exactly under the zero-order-held command (simulateThirdOrderPlant);
  *  - model: a z^-1 polynomial model (y in mm) whose sample time must be the command's.
  * @throws InvalidInput "noise_std" (< 0 or not finite), "ts" (the model's Ts differs from the

@@ -163,7 +163,7 @@ ResidualAnalysis residualAnalysis(const std::vector<double>& residuals,
  * B / (A F) and of the noise model C / (A D), zeros of B without its delay and of C.
  * A zero of B outside the unit circle makes the model non-minimum-phase: the inverse a
  * tracking controller needs is unstable, "this is what makes ZPETC necessary"
- * (core/design/zpetc.h, paper 001).
+ * (core/design/zpetc.h, Patrick, Ishak and Adnan).
  */
 struct ModelRoots {
     double tsSeconds = 0.0;
@@ -187,7 +187,7 @@ struct ModelRoots {
 ModelRoots modelRoots(const PolynomialModel& model);
 
 /**
- * The continuous poles (0 and the roots of s^2 + a1 s + a2; no finite zeros) of paper 000's
+ * The continuous poles (0 and the roots of s^2 + a1 s + a2; no finite zeros) of Braga et al.'s
  * plant and the z-plane poles and zeros of its exact ZOH discretization at @p tsSeconds, whose
  * sampling zeros (relative degree 3: near -3.73 and -0.27 for fast sampling) make it
  * non-minimum-phase. @throws InvalidInput from ThirdOrderPlant::validate, "ts".

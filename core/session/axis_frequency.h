@@ -12,7 +12,7 @@
 namespace xyt {
 
 /**
- * The frequency-domain view of one evaluated axis (issue 17): the loop's transfer functions,
+ * The frequency-domain view of one evaluated axis: the loop's transfer functions,
  * their responses on one adaptive grid that holds every crossover, the exact stability margins
  * and the Nyquist curve; for a pole-placement axis with ZPETC also the tracking response with
  * and without the feedforward, on the same grid.

@@ -17,7 +17,7 @@ struct StudyFidelity {
 };
 
 /**
- * The live map's preview (issue 18): 1,500 samples per run and 100 per step-scan span. The loop
+ * The live map's preview: 1,500 samples per run and 100 per step-scan span. The loop
  * is discretized exactly at any step (FOH on a reference linear between its samples), so the
  * runs stay exact at their samples for the piecewise-linear reference through them; what a
  * coarse step loses is what happens between samples (a peak of |e|, the instant a mode

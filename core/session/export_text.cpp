@@ -117,7 +117,7 @@ std::string rstHeaderBlock(const AxisSettings& axis, const AxisEvaluation& a, co
     const std::string field = axisField(axisIndex, "pp");
     std::ostringstream out;
     out << "/* Axis " << axis.id << labelComment(axis, CommentSyntax::C)
-        << ": pole placement (paper 001), Ts = " << num(pp.tsSeconds, field + ".ts") << " s, T = 1 "
+        << ": pole placement (Patrick, Ishak and Adnan), Ts = " << num(pp.tsSeconds, field + ".ts") << " s, T = 1 "
         << (pp.t.coefficient(1) < 0 ? "- " : "+ ") << num(std::abs(pp.t.coefficient(1)), field + ".t1")
         << " z^-1. Every Ts:\n"
         << " *   F(z^-1) u[k] = KF w[k] - G(z^-1) y[k], i.e. (F[0] is 1 up to round-off)\n"
@@ -433,7 +433,7 @@ std::string trajectoryLines(const TrajectorySettings& t, int axisIndex, const st
             << num(t.tfSeconds - t.t0Seconds, "trajectory.cubic.tf") << ");\n";
         out << "r_" << id << " = " << num(l[0], f) << " + " << num(l[1], f) << " * tau + "
             << num(l[2], f) << " * tau.^2 + " << num(l[3], f)
-            << " * tau.^3;  % cubic point-to-point (paper 000 Eq. 4)\n";
+            << " * tau.^3;  % cubic point-to-point (Braga et al. Eq. 4)\n";
     } else if (t.kind == TrajectoryKind::Gcode) {
         throw InvalidInput("trajectory.kind", "a G-code program's feed profile has no closed form for the "
                                               "script; export the simulated signals as CSV instead");
@@ -442,7 +442,7 @@ std::string trajectoryLines(const TrajectorySettings& t, int axisIndex, const st
             << ";\n";
         out << "r_" << id << " = " << num(t.radius, "trajectory.circle.radius") << " * envelope .* "
             << (axisIndex == 0 ? "sin" : "cos") << "(" << num(t.omegaRadPerSec, "trajectory.circle.omega")
-            << " * t);  % circle (paper 000 Eq. 23-24)\n";
+            << " * t);  % circle (Braga et al. Eq. 23-24)\n";
     }
     return out.str();
 }
@@ -455,7 +455,7 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
     out << "% XY Tune: plant, controller and closed loop of each axis (generated script).\n"
            "% Runs in GNU Octave (with the control package) and in MATLAB.\n"
            "if exist('OCTAVE_VERSION', 'builtin')\n  pkg load control\nend\n\n";
-    // The implementation travels into every export (issue 12); this script simulates the linear
+    // The implementation travels into every export; this script simulates the linear
     // loops, so it states the settings the C export runs instead of applying them.
     const ImplementationSettings& impl = session.implementation;
     out << "% Implementation the firmware runs (the C export applies it; the lsim runs below are the\n"
@@ -503,7 +503,7 @@ std::string exportOctaveScript(const Session& session, const SessionEvaluation& 
             out << "Ts_" << id << " = " << ts << ";\n";
             out << "plant_" << id << " = filt([" << joined(pp.b.ascending(), " ", ppField + ".b") << "], ["
                 << joined(pp.a.ascending(), " ", ppField + ".a") << "], Ts_" << id << ");  % B/A in z^-1\n";
-            out << "% RST pole placement: F u = Kf w - G y (paper 001 Eq. 7-8)\n";
+            out << "% RST pole placement: F u = Kf w - G y (Patrick, Ishak and Adnan Eq. 7-8)\n";
             out << "F_" << id << " = [" << joined(pp.f.ascending(), " ", ppField + " (F)") << "];\n";
             out << "G_" << id << " = [" << joined(pp.g.ascending(), " ", ppField + " (G)") << "];\n";
             out << "Kf_" << id << " = " << num(pp.kf, ppField + " (Kf)") << ";\n";

@@ -36,7 +36,7 @@ DigitalController axisDigitalController(const Session& session, const SessionEva
 /**
  * A C99 header for firmware: per axis the coefficients, `static const double XYT_<AXIS>_NUM[]`,
  * `XYT_<AXIS>_DEN[]` (ascending powers of z^-1), `XYT_<AXIS>_TS`, the lengths as macros, and a
- * comment with the difference equation; and the complete controller (issue 12), self-contained
+ * comment with the difference equation; and the complete controller, self-contained
  * (no dynamic memory, no recursion, no library call), in `xyt_real` = double or float
  * (options.precision):
  *  - Guillemin-Truxal axes: `xyt_<axis>_state`, `xyt_<axis>_init(&s)`,

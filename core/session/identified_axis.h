@@ -8,10 +8,10 @@
 namespace xyt {
 
 /**
- * @p axis with an identified model as its plant ("Use this model", issue 11), its origin
+ * @p axis with an identified model as its plant ("Use this model"), its origin
  * recorded (ModelOrigin: the record, the structure, the fits, the parameters' standard
  * deviations):
- *  - the continuous paper-000 fit sets the Guillemin-Truxal plant and method; its k0 was fitted
+ *  - the continuous third-order fit sets the Guillemin-Truxal plant and method; its k0 was fitted
  *    to y in mm, so it is scaled by the axis' model unit (0.001 for the paper's metre models:
  *    k0 = 77 800 mm/(V s^3) becomes 77.8);
  *  - an ARX, OE or BJ model sets the pole-placement model and method: A = A F (the input

@@ -8,7 +8,7 @@
 namespace xyt {
 
 /**
- * The robustness problem of axis @p axis of @p session (issue 14): its nominal design (the
+ * The robustness problem of axis @p axis of @p session: its nominal design (the
  * session's PI, or its pole-placement loop and ZPETC), the run the session evaluates (the same
  * reference, duration and step), the session's specification with umax, and every plant
  * parameter with a zero range ("k0", "a1", "a2"; or "a1".."an", "b1".."bm" of the ARX model,
@@ -19,7 +19,7 @@ namespace xyt {
 RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
 
 /**
- * The joint XY problem of @p session (issue 14): both axes' problems as sessionRobustnessProblem
+ * The joint XY problem of @p session: both axes' problems as sessionRobustnessProblem
  * gives them, judged on the session's contour. A circle: the runs the evaluation makes, judged
  * on x's samples as SessionEvaluation::contour is (so the nominal figures are those). A G-code
  * program: both axes follow the program's feed profile as runSessionProgram runs them, judged
@@ -31,8 +31,8 @@ RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
 ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session);
 
 /**
- * The uncertainty of axis @p axis from its identified model (issue 14, "from identification";
- * the model's origin, issue 11): problem.covariance is the estimate's covariance over the
+ * The uncertainty of axis @p axis from its identified model ("from identification";
+ * the model's origin): problem.covariance is the estimate's covariance over the
  * problem's parameters (random plants then come from N(nominal, covariance)), and each range is
  * set to 3 standard deviations (at most 99 %) so that the box's corners are the +-3 sigma
  * worst-case search. Names map as the models do: a Guillemin-Truxal axis takes k0, a1, a2 of a

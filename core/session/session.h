@@ -14,8 +14,8 @@ namespace xyt {
 
 /// How an axis is controlled.
 enum class DesignMethod {
-    GuilleminTruxal,   ///< continuous PI by the reference-model method (paper 000)
-    PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (paper 001)
+    GuilleminTruxal,   ///< continuous PI by the reference-model method (Braga et al.)
+    PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (Patrick, Ishak and Adnan)
 };
 
 /// The Guillemin-Truxal parameters of one axis.
@@ -39,7 +39,7 @@ struct PpAxisSettings {
 };
 
 /**
- * Where an axis model came from when it was identified from measured data (issue 11): the
+ * Where an axis model came from when it was identified from measured data: the
  * record, the structure and how well the model fitted. The session keeps it so that a shared
  * session says what its plant rests on; a plant typed by hand has none.
  */
@@ -72,7 +72,7 @@ struct AxisSettings {
 enum class TrajectoryKind { Cubic, Circle, Gcode };
 
 /**
- * A G-code program as a trajectory (issue 13). The program text is held in the session, so a
+ * A G-code program as a trajectory. The program text is held in the session, so a
  * shared session file is complete without the .nc file; fileName is only shown. The profile
  * options are those of FeedProfileOptions (core/contour/feed_profile.h); its step is the
  * trajectory's dtSeconds.
@@ -87,7 +87,7 @@ struct GcodeTrajectory {
 };
 
 /// The commanded motion. A cubic drives both axes with the same profile (a diagonal move, as
-/// paper 000 Fig. 8); the circle drives x with R sin(w t) and y with R cos(w t); a G-code
+/// Braga et al. Fig. 8); the circle drives x with R sin(w t) and y with R cos(w t); a G-code
 /// program drives x and y along its feed profile (core/session/program_trajectory.h).
 struct TrajectorySettings {
     TrajectoryKind kind = TrajectoryKind::Cubic;
@@ -125,7 +125,7 @@ struct DesignSnapshot {
 };
 
 /**
- * How the firmware runs the controllers (issue 12): the digital implementation simulated next to
+ * How the firmware runs the controllers: the digital implementation simulated next to
  * the design (core/simulation/sampled_data.h) and exported as C code. Digital PI axes run at the
  * session's controllerTsSeconds with its piDiscretization; pole-placement axes at their own Ts.
  */
@@ -155,7 +155,7 @@ struct Session {
     PiDiscretization piDiscretization = PiDiscretization::Tustin;
     /// The digital implementation (delay, encoder, DAC, anti-windup).
     ImplementationSettings implementation;
-    /// What the design must meet (paper 000: settling <= 100 s, no overshoot, no saturation,
+    /// What the design must meet (Braga et al.: settling <= 100 s, no overshoot, no saturation,
     /// max error <= 2 %). Its umaxVolts is ignored: the session's umaxVolts is the limit.
     Specification spec;
     std::vector<DesignSnapshot> snapshots;
@@ -165,7 +165,7 @@ struct Session {
     /// This session with the design of @p snapshot (snapshots and export settings kept).
     Session withDesign(const DesignSnapshot& snapshot) const;
 
-    /// The paper 000 design: x is the lower base, y the upper base, cubic 0 -> 600 mm in 130 s.
+    /// The design of Braga et al.: x is the lower base, y the upper base, cubic 0 -> 600 mm in 130 s.
     static Session paperDefault();
     friend bool operator==(const Session&, const Session&) = default;
 };

@@ -334,7 +334,7 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     if (const auto w = reachWarning(pp, out.run.r, session.umaxVolts))
         out.warnings.push_back(*w);
     // The step figures of the system the axis runs: with ZPETC the step previewed through the
-    // feedforward and the loop (issue 19: the loop Kf B / T alone overshoots 52 % through the
+    // feedforward and the loop (the loop Kf B / T alone overshoots 52 % through the
     // NMP zero, which the axis never does); without it the loop alone.
     out.step = pp.zpetcEnabled && out.zpetc && out.pp->closedLoop().isStable()
                    ? zpetcStepCharacteristics(*out.pp, *out.zpetc)
@@ -436,7 +436,7 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
 
 /// Both axes over a duration. They are independent, so the y axis is evaluated on the helper
 /// thread while the x axis is on this one (runAlongside): a slider step evaluates both, and two
-/// cores halve its time (issue 12's slider-to-repaint target).
+/// cores halve its time (the slider-to-repaint target).
 std::array<AxisEvaluation, 2> evaluateAxesOver(const Session& session, const RunDuration& duration,
                                                bool withDigital = true) {
     std::array<AxisEvaluation, 2> out;

@@ -43,7 +43,7 @@ struct RunDuration {
 };
 
 /**
- * The axis as the firmware runs it (issue 12): the sampled-data loop with the session's
+ * The axis as the firmware runs it: the sampled-data loop with the session's
  * implementation settings (simulateSampledPi at controller_ts for a Guillemin-Truxal axis,
  * simulateSampledRst at the axis' Ts for pole placement), its tracking figures and its z-plane
  * poles (its move-and-settle figures: moveSettleMetrics of run.result, as the CLI prints them).
@@ -87,7 +87,7 @@ struct AxisEvaluation {
     double improvementPct = 0.0; ///< 100 (1 - RMSE with ZPETC / RMSE without)
     /// The run shown: continuous designs simulate the loop with saturation; discrete designs the
     /// linear loop with ZPETC when enabled (else alone), sampled at Ts, with `clipped` marking
-    /// samples where |u| exceeds umax (paper 001's loop has no limit, so it is flagged, not
+    /// samples where |u| exceeds umax (Patrick, Ishak and Adnan's loop has no limit, so it is flagged, not
     /// applied).
     SimulationResult run;
     TrackingMetrics metrics;

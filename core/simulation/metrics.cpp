@@ -294,7 +294,7 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop,
     const double horizon = poles.empty() ? 1.0 : 12.0 / slowest;
     // Never inside the band within 12 * 32 time constants: then the horizon reached is reported.
     const double longestHorizon = horizon * 32.0;
-    // Multi-scale time grid: a closed loop with a slow pole-zero pair (the PI zero of paper 000
+    // Multi-scale time grid: a closed loop with a slow pole-zero pair (the PI zero of Braga et al.
     // with its nearby pole) settles on the time scale of its fast poles but needs a horizon set
     // by the slow one, up to 1e7 times longer. The first span [0, T0] has T0 = 50 / |p|max
     // (>= 125 samples per period of the fastest oscillation with the default 500); each later

@@ -14,7 +14,7 @@ struct TrackingMetrics {
     double maxAbsU = 0.0;         ///< max |u_k| (after saturation)
     bool saturated = false;       ///< some sample was clipped at +-umax
     double saturatedTimeSeconds = 0.0; ///< clipped samples * dt
-    double itae = 0.0;            ///< integral of t |e(t)| dt, trapezoidal rule (paper 000's AEMT)
+    double itae = 0.0;            ///< integral of t |e(t)| dt, trapezoidal rule (Braga et al.'s AEMT)
     /// Some sample of y, e or u is not finite (the run diverged): every figure above is then NaN
     /// ("n/a"), `saturated` is false but means nothing, and the run fails every criterion.
     bool diverged = false;
@@ -47,7 +47,7 @@ struct StepCharacteristics {
  * interpolated inside its step by a cubic Hermite polynomial using the exact derivative
  * y' = C (A x + B); the overshoot and peak time are those of the largest sample.
  *
- * Why multi-scale: with the slow pole-zero pair of a PI design (paper 000, zero at -psi1 with a
+ * Why multi-scale: with the slow pole-zero pair of a PI design (Braga et al., zero at -psi1 with a
  * pole next to it) the slowest time constant is up to 1e7 times the settling time; a uniform
  * grid over 12 slow time constants would step over the whole transient.
  * @throws InvalidInput "system" unless continuous and proper, "band" unless in (0, 1),

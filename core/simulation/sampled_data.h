@@ -18,7 +18,7 @@
 namespace xyt {
 
 /**
- * What the hardware around the digital controller does (issue 12): the controller reads a
+ * What the hardware around the digital controller does: the controller reads a
  * quantized encoder, computes every Ts, writes a quantized DAC value, clipped at +-umax, possibly
  * one or more samples late.
  */
@@ -91,7 +91,7 @@ struct SampledDataRun {
  * quantizes it and, after delaySamples, a zero-order hold applies it to the plant, which is exact
  * between samples (sampledPlant). The plant starts at rest at 0 with the PI state zero.
  * @param reference r(k Ts), k = 0..n-1, in position units (mm)
- * @param modelUnitsPerPositionUnit as LoopSimulationOptions (0.001 for paper 000's metre models)
+ * @param modelUnitsPerPositionUnit as LoopSimulationOptions (0.001 for Braga et al.'s metre models)
  * @throws InvalidInput as sampledPlant, validateSampledDataOptions, "reference" when empty or not
  *         finite, "model_unit_scale" unless > 0.
  */

@@ -12,12 +12,12 @@ namespace xyt {
 
 struct LoopSimulationOptions {
     double dtSeconds = 0.01;
-    /// Actuator limit |u| <= umax (2.5 V in paper 000); infinity for none.
+    /// Actuator limit |u| <= umax (2.5 V in Braga et al.); infinity for none.
     double umaxVolts = std::numeric_limits<double>::infinity();
     /// The plant starts at rest at this output. Nonzero values need a plant with a pole at s = 0.
     double initialOutput = 0.0;
     /**
-     * Plant output units per reference unit. The identified models of paper 000 map volts to
+     * Plant output units per reference unit. The identified models of Braga et al. map volts to
      * metres (their velocity gain k0/a2 is 0.021 m/s per volt) while trajectories are typed in
      * millimetres, so the presets use 0.001: the reference is multiplied by this before it
      * enters the loop, and y and e are divided by it on the way out (u is unchanged).

@@ -25,7 +25,7 @@ struct StepViewCurve {
 };
 
 /**
- * Everything a step plot of one axis draws (issue 17): the curves, the figures, the
+ * Everything a step plot of one axis draws: the curves, the figures, the
  * requirement envelope and where the response leaves it.
  */
 struct StepView {

@@ -9,7 +9,7 @@
 namespace xyt {
 
 /**
- * Cubic point-to-point trajectory, paper 000 Eq. 4: P(t) = p0 + p1 t + p2 t^2 + p3 t^3 on
+ * Cubic point-to-point trajectory, Braga et al. Eq. 4: P(t) = p0 + p1 t + p2 t^2 + p3 t^3 on
  * [t0, tf], with P(t0) = x0, P'(t0) = v0, P(tf) = xf, P'(tf) = vf. Before t0 the reference holds
  * x0, after tf it holds xf.
  *
@@ -60,8 +60,8 @@ struct Sinusoid {
 };
 
 /**
- * The circle contour of paper 000 Eq. 23-24: x = cx + R sin(omega t), y = cy + R cos(omega t)
- * (25 mm at 0.06 rad/s there; 30 mm at 0.1 rad/s in paper 001). Each axis follows one sinusoid.
+ * The circle contour of Braga et al. Eq. 23-24: x = cx + R sin(omega t), y = cy + R cos(omega t)
+ * (25 mm at 0.06 rad/s there; 30 mm at 0.1 rad/s in Patrick, Ishak and Adnan). Each axis follows one sinusoid.
  */
 struct Circle {
     double radius = 25.0;

@@ -8,7 +8,7 @@
 namespace xyt {
 
 /**
- * Step figures of the system a pole-placement axis with ZPETC runs (paper 001 Fig. 6 ahead of
+ * Step figures of the system a pole-placement axis with ZPETC runs (Patrick, Ishak and Adnan Fig. 6 ahead of
  * Fig. 9): a unit step of the desired output at sample K, read p samples ahead by the ZPETC,
  * through the feedback loop (simulateZpetcLoop, structure (2)). The feedback loop's own step
  * (Kf B / T alone) overshoots through the non-minimum-phase zero; with the feedforward the

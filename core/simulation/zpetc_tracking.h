@@ -20,7 +20,7 @@ struct ZpetcTrackingRun {
     DiscreteRun trajectoryZpetc; ///< structure (3)
     double rmseWithoutFf = 0.0;  ///< sqrt(mean (r - y1)^2)
     double rmseWithFf = 0.0;     ///< sqrt(mean (r - y2)^2)
-    double improvementPct = 0.0; ///< 100 (1 - rmseWithFf / rmseWithoutFf), paper 001 Table 1
+    double improvementPct = 0.0; ///< 100 (1 - rmseWithFf / rmseWithoutFf), Patrick, Ishak and Adnan Table 1
     double maxAbsErrorWithoutFf = 0.0;
     double maxAbsErrorWithFf = 0.0;
 };

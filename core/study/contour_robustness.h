@@ -14,7 +14,7 @@
 namespace xyt {
 
 /**
- * The XY contour both axes trace together, and how it is judged (issue 14: the contour error
+ * The XY contour both axes trace together, and how it is judged (the contour error
  * of mismatched plants). Exactly one of:
  *  - circle: the radial deviation e = rho - R (positive outside), rho the traced distance from
  *    the centre, measured after the ramp-in (t >= rampInSeconds), as circleContourError;
@@ -69,7 +69,7 @@ struct ContourRobustnessResult {
 };
 
 /**
- * Monte Carlo and corner analysis of the XY contour (issue 14): options.samples random pairs of
+ * Monte Carlo and corner analysis of the XY contour: options.samples random pairs of
  * plants drawn from the seed over the joint parameter list (x's then y's: drawPlants), and
  * (options.corners) the 2^p corners of the joint box, each axis simulated with its unchanged
  * controller (runPerturbedPlant) and the traced contour judged by the geometry; on all cores,

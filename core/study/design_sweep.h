@@ -18,7 +18,7 @@
 namespace xyt {
 
 /**
- * The design-space study of paper 000 (Sec. 3, script steps 1-7): vary wn and kp, compute the
+ * The design-space study of Braga et al. (Sec. 3, script steps 1-7): vary wn and kp, compute the
  * Guillemin-Truxal reference model G_R and PI controller for each pair, simulate the loop with
  * the actuator limit on the trajectory, and keep the design that best meets the specification,
  * with the ITAE (the paper's "AEMT") as the default guide.
@@ -98,7 +98,7 @@ double moveSweepDurationSeconds(double tfSeconds, double maxSettleTimeSeconds);
 struct DesignPoint {
     double wn = 0.0; ///< rad/s
     double kp = 0.0; ///< V per model unit
-    double ki = 0.0; ///< kp psi1 = wn^4 / k0 (paper 000 Eq. 11, 16)
+    double ki = 0.0; ///< kp psi1 = wn^4 / k0 (Braga et al. Eq. 11, 16)
     bool computed = false; ///< false for points a cancelled sweep never reached
     bool stable = false;   ///< closed loop (= G_R) asymptotically stable
     /// Every tracking figure is finite and, for a stable loop, the step figures too. When false

@@ -10,7 +10,7 @@
 namespace xyt {
 
 /**
- * One uncertain plant parameter (issue 14): drawn uniformly from nominal (1 - relative) to
+ * One uncertain plant parameter: drawn uniformly from nominal (1 - relative) to
  * nominal (1 + relative). The names are those of the plant's coefficients: "k0", "a1", "a2" of
  * a Guillemin-Truxal plant k0 / (s^3 + a1 s^2 + a2 s); "a1".."an" and "b1".."bm" of an ARX
  * model A(z^-1) = 1 + a1 z^-1 + ..., B(z^-1) = b1 z^-1 + ... (ascending powers of z^-1).
@@ -47,7 +47,7 @@ std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter
 
 /**
  * @p count random plants from the normal distribution N(nominal, @p covariance) of an identified
- * model (issue 14, the uncertainty "from identification"): theta = nominal + M z with
+ * model (the uncertainty "from identification"): theta = nominal + M z with
  * M M^T = covariance (Eigen's LDLT, so a semi-definite covariance, e.g. a parameter known
  * exactly, is allowed: M = P^T L D^(1/2)) and z standard normal (standardNormal: Box-Muller on
  * 53-bit uniforms of std::mt19937_64 seeded with @p seed), drawn plant by plant on the calling

@@ -20,13 +20,13 @@
 namespace xyt {
 
 /**
- * One axis as the robustness analysis (issue 14) perturbs it: the nominal controller stays as
+ * One axis as the robustness analysis perturbs it: the nominal controller stays as
  * designed while the plant it drives takes the perturbed parameters.
  *  - Continuous (Guillemin-Truxal): `controller` (the PI) drives k0 / (s^3 + a1 s^2 + a2 s) with
  *    the parameters "k0", "a1", "a2", simulated as simulateLoop does (saturation at umax) at dt.
  *  - Discrete (pole placement): the RST law of `loop` (F, G, Kf unchanged) drives the ARX model
  *    A = 1 + a1 z^-1 + ..., B = b1 z^-1 + ... with the perturbed coefficients, with the
- *    feedforward `zpetc` built from the NOMINAL model when zpetcEnabled (paper 001's ZPETC
+ *    feedforward `zpetc` built from the NOMINAL model when zpetcEnabled (Patrick, Ishak and Adnan's ZPETC
  *    sensitivity to mismatch); also the loop alone, for the RMSE without feedforward.
  */
 struct RobustnessProblem {
@@ -153,7 +153,7 @@ struct ZpetcSensitivityPoint {
 };
 
 /**
- * Where the feedforward stops paying off (issue 14): analyzeRobustness of a discrete axis with
+ * Where the feedforward stops paying off: analyzeRobustness of a discrete axis with
  * ZPETC at each scale of its ranges (same seed for all, so the plants of a larger scale lie
  * farther out along the same directions), RMSE with and without the feedforward.
  * @throws InvalidInput "problem" unless the axis is discrete with ZPETC enabled, "scales" when

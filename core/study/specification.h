@@ -9,7 +9,7 @@
 namespace xyt {
 
 /**
- * The performance specification of paper 000 (Sec. 3): settling time of 100 s, no overshoot,
+ * The performance specification of Braga et al. (Sec. 3): settling time of 100 s, no overshoot,
  * the control voltage never saturating at +-2.5 V, and a tracking error below 2 %.
  *
  * Overshoot and settling time are those of the closed loop's unit step response
@@ -38,7 +38,7 @@ struct Specification {
     /**
      * Minimum phase margin (degrees) and gain margin (dB) of the loop L (stability_margins.h:
      * the reported margins, i.e. the phase margin of smallest magnitude and the gain margin
-     * nearest 0 dB). Paper 000 states no margin requirement, so both are 0 by default: a stable
+     * nearest 0 dB). Braga et al. state no margin requirement, so both are 0 by default: a stable
      * loop with positive margins passes, as every design of the papers does (45.9 dB / 88.1
      * deg and 38.1 dB / 86.1 deg for the two bases). 45-60 deg and 6 dB are the usual rules.
      */
@@ -50,7 +50,7 @@ struct Specification {
      * response is a recursion of some 10^4 steps, so its samples carry a relative round-off of
      * about 1e4 * 1.1e-16 ~ 1e-12 (1e-10 %); 1e-9 % sits above that and is 6 pm on a 600 mm move.
      *
-     * Note that no Guillemin-Truxal design of paper 000 has zero step overshoot: G_R is type 2
+     * Note that no Guillemin-Truxal design of Braga et al. has zero step overshoot: G_R is type 2
      * (Eq. 7), so the step error E(s) = s (s^2 + a1 s + a2) / D(s) has integral E(0) = 0; it
      * starts at 1, so it must go negative, i.e. y overshoots. With maxOvershootPct = 0 every
      * design fails the overshoot criterion (the paper's own lower-base design overshoots 0.997 %,

@@ -1,6 +1,6 @@
 %
 ; SPDX-License-Identifier: GPL-3.0-or-later
-; XY Tune example: the circle of paper 001, the reference of both axes of the ZPETC study:
+; XY Tune example: the circle of Patrick, Ishak and Adnan, the reference of both axes of the ZPETC study:
 ; x = 30 sin(0.1 t), y = 30 cos(0.1 t) mm. Radius 30 mm about the origin, starting at the
 ; top (0, 30) and turning clockwise at 30 x 0.1 = 3 mm/s = 180 mm/min; one revolution
 ; takes 2 pi / 0.1 = 62.8 s. Units mm, absolute coordinates.

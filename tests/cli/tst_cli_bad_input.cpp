@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 8: every xytune-cli command on a table of bad inputs (non-numbers, empty lists, huge
+// Every xytune-cli command on a table of bad inputs (non-numbers, empty lists, huge
 // orders, Inf/NaN, zero leading coefficients, negative times, durations that would need
 // gigabytes, bad grid specs, a directory or a truncated file as the session). The contract
 // (app/cli_main.cpp): exit code 2, exactly one line on stderr naming the argument, nothing on
@@ -54,7 +54,7 @@ private:
 
     QTemporaryDir dir_;
     QString defaultSession_, truncatedSession_, binarySession_;
-    /// Issue 20: sessions derived from the default one ("{name}" in the table), see initTestCase.
+    /// Sessions derived from the default one ("{name}" in the table), see initTestCase.
     QMap<QString, QString> variants_;
 };
 
@@ -77,7 +77,7 @@ void TstCliBadInput::initTestCase() {
     QVERIFY(binary.open(QIODevice::WriteOnly));
     binary.write(QByteArray("\x00\xff\xfe{\x01\n\x02", 7));
 
-    // Issue 20: sessions whose run is refused (one sample, a position out of range, a run that
+    // Sessions whose run is refused (one sample, a position out of range, a run that
     // does not fit in memory) or whose export would carry inf.
     const QJsonObject base = QJsonDocument::fromJson(bytes).object();
     const auto variant = [&](const QString& name, const std::function<void(QJsonObject&)>& edit) {
@@ -374,7 +374,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("contour omega NaN") << QStringList{"contour", "--omega", "nan"} << "--omega";
     QTest::newRow("contour duration needing gigabytes")
         << QStringList{"contour", "--duration", "1e12"} << "--duration";
-    // Issue 20: no nonsense counts ("needs -9223372036854775808 samples"), no all-zero metrics
+    // No nonsense counts ("needs -9223372036854775808 samples"), no all-zero metrics
     // from a single sample; the message names what the user typed.
     const QStringList move = {"simulate", "--preset", "lower-base", "--trajectory", "cubic",
                               "--xf", "600", "--tf", "130"};
@@ -389,7 +389,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("contour unknown preset") << QStringList{"contour", "--preset", "square"}
                                             << "--preset";
 
-    // Issue 20, second pass. Overflowing design inputs name the argument, not an internal
+    // Overflowing design inputs name the argument, not an internal
     // coefficient ("den[2]: must be a number, got NaN" for wn = 1e300: wn^4 overflows).
     QTest::newRow("gt wn 1e300 (wn^4 overflows)") << kGt + QStringList{"--wn", "1e300"}
                                                   << "--wn: 1e+300 rad/s is out of range";
@@ -423,7 +423,7 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
                        "600", "--tf", "1e-300"}
         << "--tf: the move lasts 1e-300 s";
-    // Issue 19: a move shorter than one step used to run one sample and report zeros.
+    // A move shorter than one step used to run one sample and report zeros.
     QTest::newRow("simulate tf 0.005 dt 0.01 (move shorter than a step)")
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
                        "600", "--tf", "0.005", "--dt", "0.01"}

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// CLI contract of xytune-cli contour --gcode (issue 13): the figures printed are those of the
+// CLI contract of xytune-cli contour --gcode: the figures printed are those of the
 // core (runProgramContour on the default session, computed here again), the CSV holds the time
 // series, and bad arguments or programs exit 2 naming the argument, file, line and column.
 #include "core/contour/gcode_reader.h"
@@ -50,7 +50,7 @@ void TstCliContour::circleMatchesTheCore_data() {
 
 void TstCliContour::circleMatchesTheCore() {
     QFETCH(QString, method);
-    // Paper 001's 30 mm circle with the default session's axes, --max-accel 50.
+    // Patrick, Ishak and Adnan's 30 mm circle with the default session's axes, --max-accel 50.
     const auto run = xyt::test::runCli({"contour", "--gcode", example("circle_30mm.nc"), "--max-accel", "50",
                                         "--method", method});
     QVERIFY(run.finished);

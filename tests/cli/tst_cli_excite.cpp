@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli excite (issue 11): the JSON, the file equal to the core's signal (read back with
+// xytune-cli excite: the JSON, the file equal to the core's signal (read back with
 // the project's readers, so bit-exact), and exit code 2 with one stderr line naming the option
 // for bad input, nothing written.
 #include "core/identification/delimited_reader.h"

@@ -318,7 +318,7 @@ void TstCliFiles::fullDiskKeepsOldFile() {
 }
 
 void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
-    // Issue 19: the move-and-settle keys of the specification are written, read back (the report
+    // The move-and-settle keys of the specification are written, read back (the report
     // judges with them), optional in older files; a wn of 1e308 names the session path and the
     // reason, not the reference model's "den[2]: must be a number, got NaN".
     QTemporaryDir dir;
@@ -337,7 +337,7 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains("move and settle (window 5 mm)"), run.out.constData());
     QVERIFY2(run.out.contains("Run: duration "), run.out.constData());
-    // Without both keys (a file from before issue 19): the defaults.
+    // Without both keys (a file written before the move-and-settle specification): the defaults.
     spec.remove("in_position_window_mm");
     spec.remove("max_settle_time");
     root["specification"] = spec;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli bode and margins (issue 17): closed forms through the real binary, the paper
+// xytune-cli bode and margins: closed forms through the real binary, the paper
 // designs against the core, CSV against JSON, bad input named.
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
@@ -101,12 +101,12 @@ void TstCliFrequency::polePlacementBodeHasTheZeroPhaseTracking() {
     const QJsonArray phase = r.json()["tracking"].toObject()["with_zpetc"].toObject()["phase_deg"].toArray();
     QVERIFY(!phase.isEmpty());
     for (const QJsonValue& v : phase)
-        QVERIFY(std::abs(v.toDouble()) < 1e-6); // ZPETC: zero phase error (paper 001 Eq. 6)
+        QVERIFY(std::abs(v.toDouble()) < 1e-6); // ZPETC: zero phase error (Patrick, Ishak and Adnan Eq. 6)
     XYT_COMPARE_NEAR(r.json()["frequency"].toArray().last().toDouble(), M_PI / 0.07, 1e-12, 0.0);
 }
 
 void TstCliFrequency::reportQuotesTheMargins() {
-    // The default report (both bases of paper 000): the core's margins, 3 significant digits.
+    // The default report (both bases of Braga et al.): the core's margins, 3 significant digits.
     const auto r = runCli({"report"});
     QCOMPARE(r.exitCode, 0);
     for (const char* name : {"lower-base", "upper-base"}) {

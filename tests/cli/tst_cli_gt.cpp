@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The CLI contract of issue 2 for gt / simulate / report: keys, values equal to the core's,
+// The CLI contract for gt / simulate / report: keys, values equal to the core's,
 // the CSV columns, and exit code 2 with one stderr line naming the argument for bad input.
 #include "core/design/guillemin_truxal.h"
 #include "core/simulation/metrics.h"
@@ -63,7 +63,7 @@ void TstCliGt::gtMatchesCore_data() {
     QTest::addColumn<double>("a2");
     QTest::addColumn<double>("wn");
     QTest::addColumn<double>("kp");
-    QTest::newRow("paper 000 lower base") << QStringList{"--preset", "lower-base", "--wn", "2", "--kp", "30"}
+    QTest::newRow("Braga et al.'s lower base") << QStringList{"--preset", "lower-base", "--wn", "2", "--kp", "30"}
                                           << 77.8 << 125.3 << 3665.0 << 2.0 << 30.0;
     QTest::newRow("upper base, preset defaults") << QStringList{"--preset", "upper-base"}
                                                  << 24.44 << 68.18 << 863.0 << 1.0 << 30.0;
@@ -138,7 +138,7 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     requireNoNonFinite(run.out);
-    // Issue 19: tracking figures and the closed loop's unit-step figures under their own keys.
+    // Tracking figures and the closed loop's unit-step figures under their own keys.
     QVERIFY(!run.json().contains("metrics"));
     const QJsonObject m = run.json()["tracking"].toObject();
     const QJsonObject stepJson = run.json()["step_response"].toObject();
@@ -178,7 +178,7 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     XYT_COMPARE_NEAR(stepJson["peak_time"].toDouble(), step.peakTimeSeconds, 1e-15, 0.0);
     XYT_COMPARE_NEAR(m["itae"].toDouble(), tm.itae, 1e-12, 0.0);
     if (cubic)
-        QVERIFY(!tm.saturated); // paper 000: no saturation on the cubic (0.33 V, see tst_simulation)
+        QVERIFY(!tm.saturated); // Braga et al.: no saturation on the cubic (0.33 V, see tst_simulation)
 
     // The CSV: header t,r,y,e,u and one row per sample, written with 10 significant digits.
     QFile file(csvPath);
@@ -197,7 +197,7 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     QCOMPARE(k, core.t.size());
 }
 
-// Issue 12: simulate --digital runs the sampled-data loop of the core with the options given;
+// simulate --digital runs the sampled-data loop of the core with the options given;
 // its figures equal simulateSampledPi's (JSON round trip only), and the options are echoed.
 void TstCliGt::simulateDigitalMatchesCore() {
     QTemporaryDir dir;
@@ -282,7 +282,7 @@ void TstCliGt::unstableDesignIsNotAnError() {
 }
 
 void TstCliGt::automaticDurationIncludesTheSettle() {
-    // Issue 19: without --duration a cubic runs past tf until the slowest closed-loop pole has
+    // Without --duration a cubic runs past tf until the slowest closed-loop pole has
     // brought |e| into the window. The lower base's slow pole is p = -0.00693 rad/s (its PI zero
     // at -psi1), so the estimate is ln(|e(tf)| / w) / |p| with e(tf) the error at the last
     // sample of the move (checked against a core run of the move alone).
@@ -338,7 +338,7 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
 }
 
 void TstCliGt::commandHelpIsThatCommandsOnly() {
-    // Issue 19: COMMAND --help printed the general help of every command.
+    // COMMAND --help printed the general help of every command.
     const QStringList commands = {"gt", "simulate", "report", "new", "export",
                                   "rlocus", "sweep", "pp", "zpetc", "contour"};
     auto entry = [](const QString& c) { return "\n  " + c + " "; };

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// CLI contract of xytune-cli identify (issue 11). Sources: noise-free data generated here by the
-// difference equation of paper 001's x-axis ARX(2,3,1) model (filterDifferenceEquation) and by
-// the exact ZOH discretization of paper 000's lower base (simulateThirdOrderPlant), which the
+// CLI contract of xytune-cli identify. Sources: noise-free data generated here by the
+// difference equation of Patrick, Ishak and Adnan's x-axis ARX(2,3,1) model (filterDifferenceEquation) and by
+// the exact ZOH discretization of Braga et al.'s lower base (simulateThirdOrderPlant), which the
 // command must recover to round-off; the figures printed are identifyModel's on the same record;
 // bad arguments and files exit 2 naming the option, file, line or column.
 #include "core/design/digital_controller.h"
@@ -53,7 +53,7 @@ class TstCliIdentify : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase();
-    void arxRecoversPaper001Model();
+    void arxRecoversXAxisArxModel();
     void outputErrorAndValidationFile();
     void continuousFitRecoversTheLowerBase();
     void initialPositionIsWhereTheTableStood();
@@ -88,7 +88,7 @@ void TstCliIdentify::initTestCase() {
     writeCsv(arx_, "t,Command,X", t, u, y);
 }
 
-void TstCliIdentify::arxRecoversPaper001Model() {
+void TstCliIdentify::arxRecoversXAxisArxModel() {
     const auto run = test::runCli({"identify", "--data", arx_, "--time-col", "t", "--input-col", "Command",
                                    "--output-col", "X", "--structure", "arx", "--na", "2", "--nb", "3", "--nk", "1"});
     QCOMPARE(run.exitCode, 0);
@@ -99,7 +99,7 @@ void TstCliIdentify::arxRecoversPaper001Model() {
     const QJsonArray b = model.value("polynomials").toObject().value("b").toArray();
     QCOMPARE(a.size(), 3);
     QCOMPARE(b.size(), 4);
-    // Noise-free data of the model itself: recovered to round-off (1e-9 relative, issue 11).
+    // Noise-free data of the model itself: recovered to round-off (1e-9 relative).
     for (int i = 1; i < 3; ++i)
         QVERIFY(test::near(a[i].toDouble(), a_[static_cast<std::size_t>(i)], 1e-9));
     for (int i = 1; i < 4; ++i)
@@ -108,7 +108,7 @@ void TstCliIdentify::arxRecoversPaper001Model() {
                        100.0, 1e-9));
     QCOMPARE(run.json().value("data").toObject().value("samples").toInt(), 500);
     QVERIFY(test::near(run.json().value("data").toObject().value("ts").toDouble(), 0.07, 1e-12));
-    // Paper 001's B has a zero outside the unit circle (the reason for ZPETC).
+    // Patrick, Ishak and Adnan's B has a zero outside the unit circle (the reason for ZPETC).
     QCOMPARE(run.json().value("non_minimum_phase").toBool(), true);
     QCOMPARE(run.json().value("stable").toBool(), true);
 }
@@ -143,7 +143,7 @@ void TstCliIdentify::outputErrorAndValidationFile() {
 }
 
 void TstCliIdentify::continuousFitRecoversTheLowerBase() {
-    // Paper 000's lower base (k0 = 77.8 in metres; here the log is in mm, so k0 = 77 800) under
+    // Braga et al.'s lower base (k0 = 77.8 in metres; here the log is in mm, so k0 = 77 800) under
     // a +-2.5 V square wave of 0.5 s period logged at 10 ms, in an LVM file.
     const ThirdOrderPlant lower{77800.0, 125.3, 3665.0};
     std::vector<double> u(400), t(400);
@@ -258,7 +258,7 @@ void TstCliIdentify::zeroOrdersAreTheEstimatorsModels() {
 
 void TstCliIdentify::examplesRecoverTheirModels() {
     // The committed synthetic logs (resources/examples/make_identification_logs.sh states how
-    // they were made): the lower base under a square wave in LVM, paper 001's x axis under a
+    // they were made): the lower base under a square wave in LVM, Patrick, Ishak and Adnan's x axis under a
     // PRBS in CSV, each with white measurement noise (output-error noise).
     const QString examples = QStringLiteral(XYT_SOURCE_DIR "/resources/examples/");
     const auto within3Sigma = [](const QJsonObject& parameters, const QString& name, double truth) {
@@ -272,7 +272,7 @@ void TstCliIdentify::examplesRecoverTheirModels() {
                                   "--input-col", "u", "--output-col", "y", "--structure", "gt3"});
     QCOMPARE(gt.exitCode, 0);
     const QJsonObject gtp = gt.json().value("model").toObject().value("parameters").toObject();
-    QVERIFY(within3Sigma(gtp, "k0", 77800.0)); // paper 000 Eq. 2 in mm (77.8 in m)
+    QVERIFY(within3Sigma(gtp, "k0", 77800.0)); // Braga et al. Eq. 2 in mm (77.8 in m)
     QVERIFY(within3Sigma(gtp, "a1", 125.3));
     QVERIFY(within3Sigma(gtp, "a2", 3665.0));
     QVERIFY(gt.json().value("residual_tests").toObject().value("passed").toBool());
@@ -332,7 +332,7 @@ void TstCliIdentify::sessionTakesTheModel() {
     const auto report = test::runCli({"report", out});
     QCOMPARE(report.exitCode, 0);
     QVERIFY2(report.out.contains("model: identified ARX(2,3,1) from "), report.out.constData());
-    // Its covariance drives the robustness analysis of that axis (issue 14).
+    // Its covariance drives the robustness analysis of that axis.
     const auto robust = test::runCli({"robustness", out, "--axis", "y", "--from-identification", "--samples", "5"});
     QCOMPARE(robust.exitCode, 0);
     QVERIFY(robust.json().value("axes").toArray()[0].toObject().value("uncertainty").toString().startsWith("identified"));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// CLI contract of xytune-cli pp | zpetc | contour (paper 001).
+// CLI contract of xytune-cli pp | zpetc | contour (Patrick, Ishak and Adnan).
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance.h"
 

@@ -45,7 +45,7 @@ void TstCliRlocus::continuousTypeOneLoop() {
 }
 
 void TstCliRlocus::discretePaperXAxisLoop() {
-    // Paper 001 Eq. 1, typed as in the paper (ascending powers of z^-1), Ts 0.07 s. Unit-circle
+    // Patrick, Ishak and Adnan Eq. 1, typed as in the paper (ascending powers of z^-1), Ts 0.07 s. Unit-circle
     // crossing where 1 - a0^2 - a1 + a0 a2 = 0 (Jury/Schur-Cohn for the cubic A z + K B),
     // the root of 0.3417 + 0.0124732 K - 0.00397250 K^2 (see tst_root_locus).
     const auto run = xyt::test::runCli({"rlocus", "--num", "0 0.0421 0.0628 -0.0454", "--den",

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// CLI contract of xytune-cli robustness (issue 14): the figures printed are the core's
+// CLI contract of xytune-cli robustness: the figures printed are the core's
 // (analyzeRobustness of the session's axes, computed here again with the same ranges and seed),
 // the CSV holds one row per plant; with --contour the joint XY figures are
 // analyzeContourRobustness's; bad arguments exit 2 naming the argument.
@@ -74,7 +74,7 @@ void TstCliRobustness::figuresAreTheCores() {
 }
 
 void TstCliRobustness::sensitivityCurveIsTheCores() {
-    // x on paper 001's pole placement + ZPETC: session file written here.
+    // x on Patrick, Ishak and Adnan's pole placement + ZPETC: session file written here.
     Session s = Session::paperDefault();
     s.axes[0].method = DesignMethod::PolePlacementZpetc;
     s.trajectory.kind = TrajectoryKind::Circle;
@@ -112,7 +112,7 @@ void TstCliRobustness::sensitivityCurveIsTheCores() {
 }
 
 void TstCliRobustness::contourFiguresAreTheCores() {
-    // Paper 000's bases on the circle: the session file of `new` with the circle chosen.
+    // Braga et al.'s bases on the circle: the session file of `new` with the circle chosen.
     const QString path = dir_.filePath("circle.json");
     QVERIFY(QFile::copy(session_, path));
     {

@@ -48,7 +48,7 @@ void TstCliSweep::contractKeysAndCsv() {
     for (const char* key : {"wn", "kp", "ki", "metrics"})
         QVERIFY2(best.contains(key), key);
     QVERIFY(best["feasible"].toBool());
-    // ki = wn^4 / k0 (paper 000 Eq. 11 and 16), k0 = 77.8.
+    // ki = wn^4 / k0 (Braga et al. Eq. 11 and 16), k0 = 77.8.
     const double wn = best["wn"].toDouble();
     XYT_COMPARE_NEAR(best["ki"].toDouble(), wn * wn * wn * wn / 77.8, 1e-12, 0.0);
     const QJsonObject refined = o["refined"].toObject();
@@ -83,7 +83,7 @@ void TstCliSweep::contractKeysAndCsv() {
 }
 
 void TstCliSweep::strictSpecHasNoBest() {
-    // Paper 000's strict "no overshoot": no type-2 design meets it (see core/study/specification.h).
+    // Braga et al.'s strict "no overshoot": no type-2 design meets it (see core/study/specification.h).
     const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "1:3:3", "--kp", "10:50:3", "--points"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
@@ -91,7 +91,7 @@ void TstCliSweep::strictSpecHasNoBest() {
     QCOMPARE(o["feasible_count"].toInt(), 0);
     QVERIFY(o["best"].isNull());
     QVERIFY(o["refined"].isNull());
-    // Issue 19: the warnings say which criterion fails everywhere and the best value the grid
+    // The warnings say which criterion fails everywhere and the best value the grid
     // reaches on it; the invariant checked here: it is the smallest step overshoot of all points.
     const QJsonArray warnings = o["warnings"].toArray();
     QCOMPARE(warnings.size(), 3);
@@ -190,7 +190,7 @@ void TstCliSweep::badGridExitsWithTwo() {
 }
 
 void TstCliSweep::marginCriterionAndMinimum() {
-    // Issue 17: --criterion phase_margin picks the feasible design of the largest phase margin,
+    // --criterion phase_margin picks the feasible design of the largest phase margin,
     // and --min-phase-margin makes every design below it infeasible. Each point's margin is the
     // core's (tst_design_sweep checks it against stabilityMargins); the CSV column equals it.
     QTemporaryDir dir;

@@ -5,14 +5,14 @@
 % Writes arx_octave_data.csv (the data: k, u, y) and arx_octave_result.csv (one row per
 % estimated coefficient: na, nb, name, value; Octave's nk = 0 = our nk = 1).
 %
-% The data: paper 001's x-axis ARX(2,3,1) model (Eq. 1: A = 1 - 1.6580 q^-1 + 0.6583 q^-2,
+% The data: Patrick, Ishak and Adnan's x-axis ARX(2,3,1) model (Eq. 1: A = 1 - 1.6580 q^-1 + 0.6583 q^-2,
 % B = 0.0421 q^-1 + 0.0628 q^-2 - 0.0454 q^-3) driven by a random binary +-1 V input, with
 % equation noise e ~ N(0, 0.01^2): A y = B u + e. 400 samples at Ts = 0.07 s.
 %
 % DELAY CONVENTION: control 3.4's arx has no dead time for 'nk', 0: its B is
 % [0; b1; ...; b_nb] (arx.m: "b0 = 0 (leading zero required by filt)"), i.e. the first
-% coefficient multiplies u(t-1). So arx(dat, 'na', 2, 'nb', 3, 'nk', 0) is MATLAB's (and paper
-% 001's) ARX231 with nk = 1. The script checks this below: B(1) is exactly 0 and B has nb + 1
+% coefficient multiplies u(t-1). So arx(dat, 'na', 2, 'nb', 3, 'nk', 0) is MATLAB's (and Patrick,
+% Ishak and Adnan's) ARX231 with nk = 1. The script checks this below: B(1) is exactly 0 and B has nb + 1
 % entries.
 pkg load control
 rand("seed", 11);

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Reference step figures of Guillemin-Truxal closed loops G_R (paper 000 Eq. 7) of the lower
+# Reference step figures of Guillemin-Truxal closed loops G_R (Braga et al. Eq. 7) of the lower
 # base (Eq. 2), from the analytic step response y(t) = 1 + sum_i r_i e^{p_i t},
 # r_i = N(p_i) / (p_i D'(p_i)) (distinct poles), independent of XY Tune's discretization.
 # Settling time (2 % band): last crossing of |y - 1| = 0.02, bracketed on a dense log-spaced

@@ -1,5 +1,5 @@
 % SPDX-License-Identifier: GPL-3.0-or-later
-% Reference data for the Guillemin-Truxal design of paper 000 from GNU Octave + octave-control.
+% Reference data for the Guillemin-Truxal design of Braga et al. from GNU Octave + octave-control.
 % Regenerate (from this folder):  octave-cli --no-gui gen_gt_octave.m
 % Writes
 %   gt_zoh.csv        c2d(tf(...), Ts, 'zoh') of both plants (Eq. 1, 2) and both GT closed loops
@@ -10,7 +10,7 @@
 pkg load control
 format long
 
-% Plants G = k0 / (s^3 + a1 s^2 + a2 s) and designs (wn, kp) of paper 000 Sec. 3.1 and 3.2.
+% Plants G = k0 / (s^3 + a1 s^2 + a2 s) and designs (wn, kp) of Braga et al. Sec. 3.1 and 3.2.
 names = {'lower-base', 'upper-base'};
 k0 = [77.8, 24.44]; a1 = [125.3, 68.18]; a2 = [3665, 863]; wn = [2, 1]; kp = [30, 30];
 systems = {}; labels = {};

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Step-response figures of the two Guillemin-Truxal closed loops of paper 000, with scipy.
+"""Step-response figures of the two Guillemin-Truxal closed loops of Braga et al., with scipy.
 
 Octave's control package 3.4 has no stepinfo, so this computes them independently of the C++
 code: the unit step response is written in closed form from the partial fractions of T(s)/s
@@ -12,7 +12,7 @@ Regenerate (from this folder):  /usr/bin/python3 gen_gt_stepinfo.py > gt_stepinf
 import numpy as np
 from scipy import optimize, signal
 
-DESIGNS = [  # name, k0, a1, a2, wn, kp (paper 000 Sec. 3.1 and 3.2)
+DESIGNS = [  # name, k0, a1, a2, wn, kp (Braga et al. Sec. 3.1 and 3.2)
     ("lower-base", 77.8, 125.3, 3665.0, 2.0, 30.0),
     ("upper-base", 24.44, 68.18, 863.0, 1.0, 30.0),
 ]

@@ -1,5 +1,5 @@
 % SPDX-License-Identifier: GPL-3.0-or-later
-% Reference stability margins of random loops from GNU Octave's control package (issue 17).
+% Reference stability margins of random loops from GNU Octave's control package.
 % Regenerate from tests/data/:   octave-cli --no-gui gen_margins_octave.m
 % Writes margins_octave.csv: one loop per row, numerator and denominator in DESCENDING powers
 % of s or z (space-separated), ts (0 = continuous), then

@@ -10,7 +10,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 def gt(k0, a1, a2, wn, kp):
-    ki = wn ** 4 / k0  # kp * psi1, psi1 = wn^4 / (kp k0): paper 000 Eq. 11, 16
+    ki = wn ** 4 / k0  # kp * psi1, psi1 = wn^4 / (kp k0): Braga et al. Eq. 11, 16
     return [k0 * kp, k0 * ki], [1.0, a1, a2, 0.0, 0.0]
 
 def zinv_to_z(b, a):
@@ -23,10 +23,10 @@ loops.append(("type1", num, den, 0.0))
 loops.append(("double_integrator_lead", [1.0, 1.0], [1.0, 10.0, 0.0, 0.0], 0.0))
 loops.append(("z_double_pole_zero", [1.0, 0.5], [1.0, -1.0, 0.25], 0.1))
 loops.append(("z_double_pole", [1.0], [1.0, -1.0, 0.25], 0.1))
-# Paper 001 Eq. 1, x axis: B, A in ascending powers of z^-1, Ts = 0.07 s; in descending powers
+# Patrick, Ishak and Adnan Eq. 1, x axis: B, A in ascending powers of z^-1, Ts = 0.07 s; in descending powers
 # of z: multiply both by z^3 (pad to the same length).
 b, a = zinv_to_z([0.0, 0.0421, 0.0628, -0.0454], [1.0, -1.6580, 0.6583])
-loops.append(("paper001_x_axis", b, a, 0.07))
+loops.append(("arx_x_axis", b, a, 0.07))
 loops.append(("gt_lower_base", *gt(77.8, 125.3, 3665.0, 2.0, 30.0), 0.0))
 loops.append(("gt_upper_base", *gt(24.44, 68.18, 863.0, 1.0, 30.0), 0.0))
 

@@ -34,7 +34,7 @@ bool allStable(const std::vector<std::complex<double>>& roots, double tsSeconds)
                        [&](std::complex<double> r) { return xyt::isStableRoot(r, tsSeconds); });
 }
 
-/// Paper 000: Guillemin-Truxal PI design, its closed-loop simulation and its root locus.
+/// Braga et al.: Guillemin-Truxal PI design, its closed-loop simulation and its root locus.
 void guilleminTruxal(FuzzInput& in) {
     const xyt::ThirdOrderPlant plant{in.number(77.8), in.number(125.3), in.number(3665.0)};
     const double wn = in.number(2.0), kp = in.number(30.0);
@@ -89,7 +89,7 @@ xyt::Polynomial polynomial(const std::vector<double>& c, const char* field) {
     return xyt::Polynomial::fromAscending(c, field);
 }
 
-/// Paper 001: the Diophantine equation, pole placement, ZPETC and the three tracking runs.
+/// Patrick, Ishak and Adnan: the Diophantine equation, pole placement, ZPETC and the three tracking runs.
 void polePlacement(FuzzInput& in) {
     const auto a = polynomial(in.coefficients(1, 6), "a");
     std::vector<double> bc(static_cast<std::size_t>(in.integer(1, 3)), 0.0); // the delay

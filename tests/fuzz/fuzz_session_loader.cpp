@@ -2,7 +2,7 @@
 // libFuzzer harness: the session file loader (ui/files/session_file.h sessionFromBytes) on arbitrary
 // bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
 // accepts must hold finite numbers and survive a save/load round trip unchanged, and its labels
-// must reach the exports only as text that cannot end a comment or drive a terminal (issue 20).
+// must reach the exports only as text that cannot end a comment or drive a terminal.
 #include "tests/fuzz/fuzz_support.h"
 
 #include "core/io/text_escape.h"
@@ -58,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     XYT_FUZZ_REQUIRE_FINITE(s.controllerTsSeconds);
     XYT_FUZZ_REQUIRE_FINITE(s.trajectory.effectiveDurationSeconds());
     XYT_FUZZ_REQUIRE_FINITE(s.trajectory.dtSeconds);
-    // The digital implementation (issue 12): within the ranges the sampled-data loop accepts.
+    // The digital implementation: within the ranges the sampled-data loop accepts.
     XYT_FUZZ_REQUIRE_FINITE(s.implementation.encoderResolutionMm);
     XYT_FUZZ_REQUIRE_FINITE(s.implementation.trackingTimeSeconds);
     XYT_FUZZ_REQUIRE(s.implementation.encoderResolutionMm >= 0.0 && s.implementation.trackingTimeSeconds >= 0.0);

@@ -67,11 +67,11 @@ def locus(den, num, ts):
 
 
 SEEDS = {
-    # paper 000 lower and upper base at their design points
+    # Braga et al.'s lower and upper base at their design points
     "gt_lower_base": gt(77.8, 125.3, 3665.0, 2.0, 30.0, 0.02, 300, True),
     "gt_upper_base": gt(24.44, 68.18, 863.0, 2.0, 30.0, 0.02, 300, False),
     "gt_unstable_choice": gt(77.8, 125.3, 3665.0, 50.0, 0.5, 0.1, 100, True),
-    # paper 001 x axis: A, B after the delay, T = 1 - 0.2 z^-1, Ts = 70 ms
+    # Patrick, Ishak and Adnan's x axis: A, B after the delay, T = 1 - 0.2 z^-1, Ts = 70 ms
     "pp_paper_x_axis": pp([1.0, -1.6580, 0.6583], [0.0421, 0.0628, -0.0454], [-0.2], 0.07),
     "pp_paper_diophantine": pp([1.0, -1.6580, 0.6583], [0.0421, 0.0628, -0.0454], [-0.2], 0.07,
                                diophantine_only=True),

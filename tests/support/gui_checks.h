@@ -310,7 +310,7 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
         std::vector<PoleZeroSet> sets = session->poleZeroSets(axis);
         if (e.gt)
             sets = gtPoleZeroSets(*e.gt);
-        // View > Pole-zero map of the digital loop (issue 12): the z-plane sets of the digital
+        // View > Pole-zero map of the digital loop: the z-plane sets of the digital
         // implementation instead.
         if (window->zPlaneAction()->isChecked() && e.digital)
             sets = digitalPoleZeroSets(e);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 19: the workbench's options that need no window work on a machine without a display
+// The workbench's options that need no window work on a machine without a display
 // (before, --help aborted with Qt's platform-plugin error), and a mistyped option is bad input.
 #include <QProcess>
 #include <QProcessEnvironment>

@@ -130,7 +130,7 @@ void TstDesignSpaceView::runAndWait() {
 }
 
 void TstDesignSpaceView::defaultsFollowTheIssue() {
-    // Issue 7: wn 0.2-20 rad/s, kp 3-3000, 60 x 60, log grid; the paper's specification with the
+    // The defaults: wn 0.2-20 rad/s, kp 3-3000, 60 x 60, log grid; the paper's specification with the
     // session's actuator limit (Session holds no specification, so the overshoot limit is 0 %).
     QCOMPARE(view_->wnMinBox()->value(), 0.2);
     QCOMPARE(view_->wnMaxBox()->value(), 20.0);
@@ -139,7 +139,7 @@ void TstDesignSpaceView::defaultsFollowTheIssue() {
     QCOMPARE(view_->wnCountBox()->value(), 60);
     QCOMPARE(view_->kpCountBox()->value(), 60);
     QVERIFY(view_->logGridBox()->isChecked());
-    // Issue 18: the map is live by default (a view never shown computes nothing).
+    // The map is live by default (a view never shown computes nothing).
     const DesignSpaceView fresh(session_.get());
     QVERIFY(fresh.liveBox()->isChecked());
     QVERIFY(!fresh.isRunning());
@@ -289,7 +289,7 @@ void TstDesignSpaceView::hoverShowsTheFiguresAndFailures() {
 }
 
 void TstDesignSpaceView::bestOnTheEdgeIsWarned() {
-    // kp only up to 30 at overshoot <= 2 %: the ITAE keeps falling with kp (paper 000 Fig. 4),
+    // kp only up to 30 at overshoot <= 2 %: the ITAE keeps falling with kp (Braga et al. Fig. 4),
     // so the best design sits on the upper kp edge and the optimum may lie beyond it.
     view_->wnMinBox()->setValue(0.2);
     view_->wnMaxBox()->setValue(20.0);
@@ -431,7 +431,7 @@ void TstDesignSpaceView::overshootOnlyFailureIsExplained() {
 }
 
 void TstDesignSpaceView::marginsAreMappedAndTheirMinimumJudgesTheStudy() {
-    // Issue 17: the map shows the phase margin itself (deg, larger is better), and a minimum
+    // The map shows the phase margin itself (deg, larger is better), and a minimum
     // set in the view is the session's (one undoable step) and judges the held study again.
     setSmallGrid(6, 2.0);
     runAndWait();

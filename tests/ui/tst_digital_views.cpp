@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The digital implementation in the workbench (issue 12): the time plots overlay the loop the
+// The digital implementation in the workbench: the time plots overlay the loop the
 // firmware runs, the metrics panel shows its figures (marked where they differ from the
 // design's), the pole-zero map shows its z-plane poles, and the implementation fields edit the
 // session with field-level errors. Assertions on the presenter's values and the plots' data;
@@ -26,7 +26,7 @@ using namespace xyt::ui;
 
 namespace {
 
-/// Paper 000's session on a move that saturates (600 mm in 10 s), with a coarse encoder, a
+/// Braga et al.'s session on a move that saturates (600 mm in 10 s), with a coarse encoder, a
 /// 10-bit DAC, one sample of delay and no anti-windup: the digital loop differs visibly.
 Session quantizedSession() {
     Session s = Session::paperDefault();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 17 in the workbench: the Bode and Nyquist tabs and the margins in the metrics panel draw
+// The frequency domain in the workbench: the Bode and Nyquist tabs and the margins in the metrics panel draw
 // what the core computed, follow the sliders, and say so when there is nothing to draw.
 #include "core/analysis/stability_margins.h"
 #include "ui/main_window.h"
@@ -126,7 +126,7 @@ void TstFrequencyViews::marginMinimaAreJudgedOnThePanel() {
     const double pmX = session_->frequencyAnalysis(0).margins.phaseMarginDeg;
     const double pmY = session_->frequencyAnalysis(1).margins.phaseMarginDeg;
     const double gmX = session_->frequencyAnalysis(0).margins.gainMarginDb;
-    QVERIFY(pmX > pmY); // paper 000: 88.1 deg (lower base) and 86.1 deg (upper base)
+    QVERIFY(pmX > pmY); // Braga et al.: 88.1 deg (lower base) and 86.1 deg (upper base)
     auto* phase = window_->metricsPanel()->specField("phase_margin");
     auto* gain = window_->metricsPanel()->specField("gain_margin");
     QVERIFY(phase && gain);
@@ -165,7 +165,7 @@ void TstFrequencyViews::polePlacementAxisShowsTheTrackingWithAndWithoutZpetc() {
     BodePlot* plot = window_->bodePlot();
     QVERIFY(plot->magnitudeGraph("tracking with ZPETC"));
     QVERIFY(plot->magnitudeGraph("tracking, loop alone"));
-    // Zero phase with ZPETC (paper 001): every drawn phase sample within round-off of 0.
+    // Zero phase with ZPETC (Patrick, Ishak and Adnan): every drawn phase sample within round-off of 0.
     QCPGraph* phase = plot->phaseGraph("tracking with ZPETC");
     for (auto it = phase->data()->constBegin(); it != phase->data()->constEnd(); ++it)
         QVERIFY(std::abs(it->value) < 1e-6);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The workbench side of issue 13: the G-code trajectory in the editor, the session, the XY
+// G-code programs in the workbench: the G-code trajectory in the editor, the session, the XY
 // contour view (programmed path, traced path, magnified error, corners, ballbar view) and the
 // metrics panel. The expected values come from the core (core/contour, core/session), which
 // has its own tests against closed forms; here the views must show exactly those.

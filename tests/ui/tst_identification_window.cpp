@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The identification window (issue 11) drives the core's identifyModel: a candidate is the
+// The identification window drives the core's identifyModel: a candidate is the
 // core's result for the same file, columns and spec (computed here again), the plots draw that
 // result, candidates accumulate for comparison, "Use for axis X" is one undo step, bad files
 // and columns show the core's message instead of a plot, and a fit can be cancelled.
-// Reference data: paper 001's x-axis ARX(2,3,1) model A = 1 - 1.6580 z^-1 + 0.6583 z^-2,
+// Reference data: Patrick, Ishak and Adnan's x-axis ARX(2,3,1) model A = 1 - 1.6580 z^-1 + 0.6583 z^-2,
 // B = 0.0421 z^-2 + 0.0628 z^-3 - 0.0454 z^-4 (with its z^-1 delay), Ts = 0.07 s, driven by a
 // +-2 V random binary input with a fixed seed: noise-free, so ARX recovers it exactly.
 #include "ui/identification_window.h"
@@ -51,7 +51,7 @@ const std::vector<double> kA{1.0, -1.6580, 0.6583};
 const std::vector<double> kB{0.0, 0.0421, 0.0628, -0.0454};
 constexpr double kTs = 0.07;
 
-/// t, u, y of the paper-001 model driven by a +-2 V random binary input; @p badCell puts a
+/// t, u, y of Patrick, Ishak and Adnan's model driven by a +-2 V random binary input; @p badCell puts a
 /// word in row 10's y; @p noiseMm adds a +-noiseMm random binary sequence to y; the time column
 /// steps by @p ts.
 QString writeRecord(const QString& dir, const QString& name, std::size_t n, std::uint64_t seed,
@@ -148,7 +148,7 @@ private:
 void TstIdentificationWindow::init() {
     dir_ = std::make_unique<QTemporaryDir>();
     QVERIFY(dir_->isValid());
-    path_ = writeRecord(dir_->path(), "paper001_x.csv", 600, 20261123);
+    path_ = writeRecord(dir_->path(), "x_axis_arx.csv", 600, 20261123);
     session_ = std::make_unique<TuningSession>();
     window_ = std::make_unique<IdentificationWindow>(session_.get());
     window_->resize(1300, 750);
@@ -176,7 +176,7 @@ bool TstIdentificationWindow::fitAndWait() {
 
 void TstIdentificationWindow::arxCandidateIsTheCoresModel() {
     QVERIFY(window_->loadFile(path_));
-    QCOMPARE(window_->fileLabel()->text(), QString("paper001_x.csv"));
+    QCOMPARE(window_->fileLabel()->text(), QString("x_axis_arx.csv"));
     QCOMPARE(window_->inputBox()->count(), 3);
     QCOMPARE(window_->timeBox()->itemText(0), QString("(sample time)"));
     QCOMPARE(window_->timeBox()->currentText(), QString("t")); // guessed from the name
@@ -199,7 +199,7 @@ void TstIdentificationWindow::arxCandidateIsTheCoresModel() {
     QCOMPARE(c->model.parameters.size(), expected.parameters.size());
     for (std::size_t i = 0; i < expected.parameters.size(); ++i)
         QVERIFY(near(c->model.parameters[i], expected.parameters[i], 0.0, 1e-9));
-    // Noise-free data: the estimate is paper 001's model.
+    // Noise-free data: the estimate is Patrick, Ishak and Adnan's model.
     QCOMPARE(c->model.model.a.size(), kA.size());
     for (std::size_t i = 0; i < kA.size(); ++i)
         QVERIFY2(near(c->model.model.a[i], kA[i], 0.0, 1e-9), qPrintable(QString::number(c->model.model.a[i])));

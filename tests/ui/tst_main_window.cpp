@@ -208,7 +208,7 @@ void TstMainWindow::switchingToPolePlacement() {
     const AxisEvaluation& e = session_->axisEvaluation(1);
     QVERIFY(e.ok);
     QVERIFY(e.pp.has_value());
-    // T(1)/B(1) = 0.8 / (0.0352 + 0.0599 - 0.0067) (paper 001 Eq. 7, y-axis B).
+    // T(1)/B(1) = 0.8 / (0.0352 + 0.0599 - 0.0067) (Patrick, Ishak and Adnan Eq. 7, y-axis B).
     XYT_COMPARE_NEAR(e.pp->kf, 0.8 / 0.0884, 1e-12, 0.0);
     // The t1 slider is a design parameter: moving it re-solves the Diophantine equation.
     window_->ppEditor()->t1Slider()->spinBox()->setValue(-0.5);

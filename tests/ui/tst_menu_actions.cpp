@@ -2,7 +2,7 @@
 // Every action of every menu and every dialog, in several states of the session, with every
 // dialog answered both ways. Its purpose is to crash (or trip ASan/UBSan, since the whole suite
 // also runs instrumented) wherever a menu or dialog mishandles a state: the class of defect that
-// made Design > Compare designs... segfault with one snapshot stored (issue 15).
+// made Design > Compare designs... segfault with one snapshot stored.
 #include "ui/main_window.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/snapshot_compare_dialog.h"
@@ -58,19 +58,19 @@ Session bothPolePlacement() {
 Session oneAxisInvalid() {
     Session s = shortMove();
     s.axes[1].method = DesignMethod::PolePlacementZpetc;
-    s.axes[1].pp.b = {0.0, 0.0, 0.0}; // B = 0: no design (issue 15)
+    s.axes[1].pp.b = {0.0, 0.0, 0.0}; // B = 0: no design
     s.snapshots.push_back(Session::paperDefault().snapshot("valid"));
     return s;
 }
 
 Session unstable() {
     Session s = shortMove();
-    s.axes[0].gt.plant.a1 = -100.0; // the closed loop is unstable and the run diverges (issue 15)
+    s.axes[0].gt.plant.a1 = -100.0; // the closed loop is unstable and the run diverges
     s.snapshots.push_back(s.snapshot("diverged"));
     return s;
 }
 
-/// A G-code program as the trajectory (issue 13): a 20 mm square with a rounded corner, run by
+/// A G-code program as the trajectory: a 20 mm square with a rounded corner, run by
 /// both axes, with a snapshot of the cubic move to compare against.
 Session gcodeProgram() {
     Session s = shortMove();
@@ -81,7 +81,7 @@ Session gcodeProgram() {
     return s;
 }
 
-/// The digital implementation of issue 12 at its least ideal: a coarse encoder, an 8-bit DAC,
+/// The digital implementation at its least ideal: a coarse encoder, an 8-bit DAC,
 /// two samples of delay, back-calculation, a slow controller, and one axis by pole placement.
 Session digitalImplementation() {
     Session s = shortMove();

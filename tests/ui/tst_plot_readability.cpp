@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 19, what a new user sees on the plots: planes at equal aspect, legends and hints that
+// What a new user sees on the plots: planes at equal aspect, legends and hints that
 // hide nothing, a parameter locus framed on the poles that move with the stability boundary
 // marked, distinguishable pole sets, controls only on the tabs they act on, panels without
 // gaps and axes without crowded ticks. Each test drives the real window at 1366x768 and, where
@@ -384,7 +384,7 @@ void TstPlotReadability::plotsSettleAfterADesignChange() {
 }
 
 void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary() {
-    // Default session, X axis: wn sweeps 0.2 ... 20 rad/s at kp = 30 (paper 000 lower base).
+    // Default session, X axis: wn sweeps 0.2 ... 20 rad/s at kp = 30 (Braga et al.'s lower base).
     // Routh on s^4 + a1 s^3 + a2 s^2 + kp k0 s + wn^4: unstable above
     // wn* = (c (a1 a2 - c) / a1^2)^(1/4), c = kp k0, crossing at omega = sqrt(c / a1).
     window_->upperTabs()->setCurrentIndex(1);
@@ -440,7 +440,7 @@ void TstPlotReadability::parameterLocusBoundaryFollowsKp() {
 }
 
 void TstPlotReadability::coincidentPoleSetsAreDistinguishable() {
-    // The GT closed loop equals the reference model (paper 000 Eq. 3): their poles coincide, so
+    // The GT closed loop equals the reference model (Braga et al. Eq. 3): their poles coincide, so
     // the two sets must differ in shape, not only in colour, or one hides under the other.
     window_->upperTabs()->setCurrentIndex(2);
     PoleZeroPlot* plot = window_->poleZeroPlot();
@@ -576,7 +576,7 @@ void TstPlotReadability::displayNumberHasSignificantDigits() {
 }
 
 void TstPlotReadability::moveAndSettleRowsShowTheCoreFigures() {
-    // The default cubic runs past tf until it settles (issue 19); the panel quotes the core's
+    // The default cubic runs past tf until it settles; the panel quotes the core's
     // settle time after tf, final error and overrun, judged against the settle limit.
     QTableWidget* table = window_->metricsPanel()->table();
     for (int c = 0; c < 2; ++c) {
@@ -612,13 +612,13 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut_data() {
     QTest::addColumn<QSize>("size");
     QTest::newRow("GT 1366x768") << false << QSize(1366, 768);
     QTest::newRow("GT 1600x1000") << false << QSize(1600, 1000);
-    QTest::newRow("paper-001 1366x768") << true << QSize(1366, 768);
-    QTest::newRow("paper-001 1600x1000") << true << QSize(1600, 1000);
+    QTest::newRow("pole placement 1366x768") << true << QSize(1366, 768);
+    QTest::newRow("pole placement 1600x1000") << true << QSize(1600, 1000);
 }
 
 void TstPlotReadability::metricsAreGroupedAndNeverCut() {
     // "0.000562..." was cut in the Y column at 1600x1000, and ITAE printed 0.4 for both
-    // paper-001 axes; the step figures stood among the tracking figures without a word.
+    // pole-placement axes; the step figures stood among the tracking figures without a word.
     QFETCH(bool, polePlacement);
     QFETCH(QSize, size);
     if (polePlacement) {
@@ -660,7 +660,7 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut() {
                      qPrintable(QString("row %1 col %2 '%3' in %4 px").arg(r).arg(c).arg(text).arg(table->columnWidth(c))));
             QVERIFY(!text.contains("nan", Qt::CaseInsensitive));
         }
-    // Four significant digits: the ITAE of the two paper-001 axes (0.4088 and 0.4228 from the
+    // Four significant digits: the ITAE of the two pole-placement axes (0.4088 and 0.4228 from the
     // core) differ on the panel as they do in the core.
     const AxisEvaluation& x = session_->axisEvaluation(0);
     QCOMPARE(table->item(MetricsPanel::Itae, 0)->text(), displayNumber(x.metrics.itae));

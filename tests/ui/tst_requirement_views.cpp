@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 17, "step response and requirements on the plots": the step tab draws the core's step
+// The step response and the requirements on the plots: the step tab draws the core's step
 // view with its markers and the specification's envelope, and shows a violation exactly when the
 // metrics panel fails the step; the root locus draws the zeta wedge, the settling line (its
 // z-plane circle) and the design's omega_n, and rings the poles that break them; the Bode plot
@@ -115,7 +115,7 @@ void TstRequirementViews::stepTabDrawsTheCoreView() {
         QCOMPARE(g->data()->at(k)->value, c.y[static_cast<std::size_t>(k)]);
     }
     QCOMPARE(g->lineStyle(), QCPGraph::lsLine);
-    // Markers at the figures the metrics panel quotes (paper 000 lower base: settles in 5.46 s,
+    // Markers at the figures the metrics panel quotes (Braga et al.'s lower base: settles in 5.46 s,
     // overshoots 0.997 %), the rise at the 10 and 90 % crossings of the drawn curve.
     const double fin = e.step.finalValue;
     QCOMPARE(plot->settlingMarker()->data()->at(0)->key, e.step.settlingTimeSeconds);
@@ -188,7 +188,7 @@ void TstRequirementViews::polePlacementAxisShowsBothSteps() {
     QCOMPARE(with->data()->at(with->dataCount() - 1)->value, v.curves[0].curve.y.back());
     // A discrete loop is drawn as its held samples.
     QCOMPARE(with->lineStyle(), QCPGraph::lsStepLeft);
-    // The previewed step moves before t = 0 (paper 001: ZPETC looks d + 1 samples ahead).
+    // The previewed step moves before t = 0 (Patrick, Ishak and Adnan: ZPETC looks d + 1 samples ahead).
     QVERIFY(with->data()->at(0)->key < 0.0);
     // ZPETC off: the loop alone is the step the axis runs, drawn first and marked.
     PpAxisSettings pp = session_->session().axes[0].pp;
@@ -311,7 +311,7 @@ void TstRequirementViews::discreteLocusDrawsTheZPlaneImages() {
     window_->upperTabs()->setCurrentWidget(window_->rootLocusPlot());
     session_->setMethod(0, DesignMethod::PolePlacementZpetc);
     setSpec(5.0, 3.0);
-    const double ts = session_->session().axes[0].pp.tsSeconds; // 0.07 s (paper 001)
+    const double ts = session_->session().axes[0].pp.tsSeconds; // 0.07 s (Patrick, Ishak and Adnan)
     const RequirementOverlay& o = window_->rootLocusPlot()->requirementOverlay();
     // |z| = exp(sigma Ts) = exp(-4 Ts / ts).
     const double r = std::exp(-4.0 * ts / 3.0);

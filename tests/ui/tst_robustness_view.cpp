@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The robustness view (issue 14) drives the core's analyzeRobustness: what it draws is the
+// The robustness view drives the core's analyzeRobustness: what it draws is the
 // core's result for the same problem (computed here again), the worst case loads as one undo
 // step, a design change clears a result that no longer applies, and a run can be cancelled or
 // outlived by the view. In XY-contour mode it drives analyzeContourRobustness the same way: the
@@ -155,7 +155,7 @@ void TstRobustnessView::designChangeClearsTheResult() {
 
 void TstRobustnessView::polePlacementAxisHasItsCoefficients() {
     session_->setMethod(0, DesignMethod::PolePlacementZpetc);
-    // Paper 001's x-axis model: A = 1 + a1 z^-1 + a2 z^-2, B = b1 z^-1 + b2 z^-2 + b3 z^-3.
+    // Patrick, Ishak and Adnan's x-axis model: A = 1 + a1 z^-1 + a2 z^-2, B = b1 z^-1 + b2 z^-2 + b3 z^-3.
     QCOMPARE(view_->parameterNames(), (QStringList{"a1", "a2", "b1", "b2", "b3"}));
     view_->rangeBox("b1")->setValue(20.0);
     view_->samplesBox()->setValue(8);
@@ -281,7 +281,7 @@ void TstRobustnessView::contourWorstPairLoadsBothAxesInOneStep() {
     TrajectorySettings t = session_->session().trajectory;
     t.kind = TrajectoryKind::Circle;
     session_->setTrajectory(t);
-    session_->setMethod(0, DesignMethod::PolePlacementZpetc); // paper 001's circle, x by pole placement
+    session_->setMethod(0, DesignMethod::PolePlacementZpetc); // Patrick, Ishak and Adnan's circle, x by pole placement
     view_->contourBox()->setChecked(true);
     // The union of both axes' names: the ARX a1, a2, b1..b3 and the plant's k0 (a1, a2 shared).
     QCOMPARE(view_->parameterNames().size(), 6);

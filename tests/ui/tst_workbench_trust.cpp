@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 15: the workbench never crashes, never loses work and never shows a stale or false
+// The workbench never crashes, never loses work and never shows a stale or false
 // result. Each test drives the real widgets and names the defect it pins down.
 #include "core/analysis/root_locus.h"
 #include "core/model/number_format.h"
@@ -325,7 +325,7 @@ void TstWorkbenchTrust::viewRefitsWhenAPoleLeavesIt() {
     QVERIFY(leftmost < -100.0);
     QVERIFY2(pz->xAxis->range().contains(leftmost), qPrintable(QString::number(pz->xAxis->range().lower)));
     window_->upperTabs()->setCurrentWidget(window_->parameterLocusPlot());
-    // The parameter locus is framed on the poles that move (issue 19): a pole outside its view
+    // The parameter locus is framed on the poles that move: a pole outside its view
     // is one that barely moves, and the notice names it.
     ParameterLocusPlot* pl = window_->parameterLocusPlot();
     for (const auto& p : session_->axisEvaluation(0).gt->closedLoopPoles)

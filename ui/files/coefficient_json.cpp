@@ -81,7 +81,7 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
                                 {"units", "ts in s, u in V"}});
         axes.append(axis);
     }
-    // The implementation the controllers were checked with (issue 12): the anti-windup travels
+    // The implementation the controllers were checked with: the anti-windup travels
     // with the coefficients, since the same coefficients wind up without it.
     const ImplementationSettings& impl = session.implementation;
     const QJsonObject implementation{

@@ -79,7 +79,7 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
         const PolePlacementDesign& pp = *axis.pp;
         QString html = tr("<b>Axis %1 — pole placement + ZPETC</b> (T<sub>s</sub> = %2 s)<br>")
                    .arg(id, num(pp.tsSeconds));
-        html += tr("A F + B G = T (Diophantine, paper 001 Eq. 8)<br>");
+        html += tr("A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)<br>");
         html += tr("A = %1<br>B = %2<br>T = %3<br>")
                     .arg(zInverseHtml(pp.a), zInverseHtml(pp.b), zInverseHtml(pp.t));
         html += tr("F = %1<br>G = %2<br>").arg(zInverseHtml(pp.f), zInverseHtml(pp.g));

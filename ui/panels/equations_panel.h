@@ -9,7 +9,7 @@ namespace xyt::ui {
 
 /**
  * The design equations of the current axis with the current numbers, for teaching: f1, f2, f3,
- * psi1, psi2, G_R(s), G_c(s) (paper 000 Eq. 7, 11-18). A read-only text browser (it scrolls
+ * psi1, psi2, G_R(s), G_c(s) (Braga et al. Eq. 7, 11-18). A read-only text browser (it scrolls
  * itself): the numbers change with every slider step, and a word-wrapped rich-text label in a
  * scroll area re-laid its whole text out at several widths for each change (about 1.5 ms of
  * the step); the browser lays it out once, at its width.
@@ -27,7 +27,7 @@ private:
     QString html_;
 };
 
-/// HTML of a polynomial in z^-1, ascending powers as typed in paper 001.
+/// HTML of a polynomial in z^-1, ascending powers as Patrick, Ishak and Adnan type them.
 QString zInverseHtml(const Polynomial& p);
 /// HTML of a polynomial in @p variable with superscript powers.
 QString polynomialHtml(const Polynomial& p, const QString& variable);

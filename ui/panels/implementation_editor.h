@@ -12,7 +12,7 @@ namespace xyt::ui {
 class NumberField;
 
 /**
- * Editor of the digital implementation (issue 12): computation delay (samples), encoder
+ * Editor of the digital implementation: computation delay (samples), encoder
  * resolution (mm per count, 0 = ideal), DAC bits (0 = ideal), anti-windup and its tracking time.
  * Each field is checked by the core's rule and names it ("implementation.dac_bits: must be an
  * integer in 0..32"); an invalid entry stays at its field and is not applied.

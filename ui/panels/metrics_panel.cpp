@@ -102,7 +102,7 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     // view measure every row again (ResizeToContents cost a third of a slider step's repaint).
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
     // fontMetrics().height() + 2: the text's line with a pixel either side, so that
-    // the digital implementation's group fits a 1366x768 window with the others (issue 12).
+    // the digital implementation's group fits a 1366x768 window with the others.
     table_->verticalHeader()->setMinimumSectionSize(table_->fontMetrics().height() + 2);
     table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 2);
     table_->setAccessibleName(tr("Metrics"));
@@ -541,7 +541,7 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                    .arg(a.digital->tsSeconds);
             }
             if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
-                cell.toolTip = tr("* not applied: the discrete loop of paper 001 is simulated "
+                cell.toolTip = tr("* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated "
                                   "without a limit; |u| would be clipped this long");
             setCell(r, c, cell);
         }

@@ -11,7 +11,7 @@ namespace xyt::ui {
 
 class NumberField;
 
-/// Editor of G(s) = k0 / (s^3 + a1 s^2 + a2 s) with the presets of paper 000 and the model
+/// Editor of G(s) = k0 / (s^3 + a1 s^2 + a2 s) with the presets of Braga et al. and the model
 /// unit scale. Invalid values stay at the field (red, with the reason) and are not applied.
 class PlantEditor : public QWidget {
     Q_OBJECT

@@ -21,7 +21,7 @@ struct BodeMarginRequirements {
 };
 
 /**
- * The Bode diagram of one axis (issue 17): magnitude (dB) over phase (degrees) on a shared
+ * The Bode diagram of one axis: magnitude (dB) over phase (degrees) on a shared
  * logarithmic frequency axis. The open loop L with its stability margins drawn where they are
  * read (gain margin at the phase crossover, phase margin at the gain crossover), |S| and |T|,
  * and for a pole-placement axis the tracking response without and with ZPETC; the reference

@@ -11,7 +11,7 @@
 namespace xyt::ui {
 
 /**
- * The XY contour under plant-model mismatch (issue 14): the programmed contour, the nominal
+ * The XY contour under plant-model mismatch: the programmed contour, the nominal
  * traced contour and the band the mismatched plant pairs trace (min-max light, 5-95 % darker),
  * their contour error magnified about the contour as a ballbar plot does (along the outward
  * radius of a circle, the left normal of a path). The magnification is chosen so that the

@@ -10,7 +10,7 @@
 namespace xyt::ui {
 
 /**
- * A signal of the robustness analysis over time (issue 14): the band between the smallest and
+ * A signal of the robustness analysis over time: the band between the smallest and
  * the largest value of the stable runs shaded light, the 5-95 % band darker, the median dashed
  * and the nominal run solid on top. Draws a core SignalEnvelope; computes nothing.
  */

@@ -11,7 +11,7 @@
 namespace xyt::ui {
 
 /**
- * The distribution of one figure over the stable runs of a robustness analysis (issue 14): the
+ * The distribution of one figure over the stable runs of a robustness analysis: the
  * core's histogram as bars, the nominal plant's value and the specification's limit (when the
  * figure has one) as vertical lines. Computes nothing.
  */

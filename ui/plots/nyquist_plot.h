@@ -13,7 +13,7 @@
 namespace xyt::ui {
 
 /**
- * The Nyquist diagram of one axis loop (issue 17): L along the whole contour (the upper half
+ * The Nyquist diagram of one axis loop: L along the whole contour (the upper half
  * from the core and its mirror image), the critical point -1, the circle of radius 1/Ms around
  * it (the closest the curve comes), the unit circle, and the criterion stated with its counts:
  * Z = N + P. Complex plane at equal aspect, framed on the region around -1.

@@ -26,7 +26,7 @@ inline const QColor error{0xd6, 0x27, 0x28};
 inline const QColor control{0x2c, 0xa0, 0x2c};
 inline const QColor limit{0xd6, 0x27, 0x28};
 inline const QColor snapshot{0xa0, 0xa0, 0xa0};
-/// The digital implementation (issue 12): the loop as the firmware runs it.
+/// The digital implementation: the loop as the firmware runs it.
 inline const QColor digital{0x94, 0x67, 0xbd};
 inline const QColor axisX{0x1f, 0x77, 0xb4};
 inline const QColor axisY{0xff, 0x7f, 0x0e};

@@ -14,7 +14,7 @@ const QList<QColor> kSetColors = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0
 
 /**
  * Marks by set index, so that sets sharing a pole stay distinguishable: the Guillemin-Truxal
- * closed loop IS the reference model (paper 000 Eq. 3), so its crosses sit exactly on the
+ * closed loop IS the reference model (Braga et al. Eq. 3), so its crosses sit exactly on the
  * model's poles. Each set gets its own pole shape and a zero ring of its own size (coincident
  * zeros become concentric rings).
  */

@@ -21,7 +21,7 @@ struct LocusRequirements {
 };
 
 /**
- * The specification drawn on a root locus as Control System Designer does (issue 17): the zeta
+ * The specification drawn on a root locus as Control System Designer does: the zeta
  * wedge of the overshoot limit, the settling line sigma = -4/ts (for a discrete loop their
  * images under z = exp(s Ts): the zeta spiral and the circle |z| = exp(-4 Ts/ts)), the
  * forbidden side of each shaded lightly, the reference model's omega_n circle (dashed, not

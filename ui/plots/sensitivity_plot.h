@@ -11,7 +11,7 @@
 namespace xyt::ui {
 
 /**
- * Where the ZPETC stops paying off (issue 14, paper 001): the median RMSE with and without the
+ * Where the ZPETC stops paying off (Patrick, Ishak and Adnan): the median RMSE with and without the
  * feedforward over the plants, against the mismatch (the share of the ranges set, 0 = the nominal
  * model), with the 5-95 % band of each. Draws the core's zpetcSensitivity curve; computes nothing.
  */

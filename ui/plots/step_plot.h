@@ -17,7 +17,7 @@ namespace xyt::ui {
 StepEnvelope specificationEnvelope(const Specification& spec);
 
 /**
- * The unit step of one axis (issue 17): the closed loop's step, or for a pole-placement axis
+ * The unit step of one axis: the closed loop's step, or for a pole-placement axis
  * the step with and without the ZPETC; markers for the rise time (10-90 %), the peak and the
  * settling time (2 % band) of the step the axis runs, all from the core's figures; and the
  * specification's envelope as Control System Designer draws it: the overshoot bound and,

@@ -120,7 +120,7 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
         notices << QString::fromStdString(w);
     notice_->setSevere(!axis.ok || axis.metrics.diverged);
     notice_->setLines(notices);
-    // Paper 001's loop has no actuator limit: the command is shown unclipped, and says so where
+    // Patrick, Ishak and Adnan's loop has no actuator limit: the command is shown unclipped, and says so where
     // the user reads it.
     controlNotice_->setLines(axis.ok && axis.pp && axis.metrics.saturated
                                  ? QStringList{tr("linear loop: |u| is not clipped at ±%1 V here "

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Frequency response and unwrapped phase (issue 17): closed forms, grid independence of the
+// Frequency response and unwrapped phase: closed forms, grid independence of the
 // unwrapping, the adaptive grid on a sharp resonance.
 #include "core/analysis/frequency_response.h"
 #include "core/model/errors.h"
@@ -57,7 +57,7 @@ void TstFrequencyResponse::integratorsStartAtMinus90k() {
             XYT_COMPARE_NEAR(r.phaseDeg[i], -90.0 * k - std::atan(r.omegaRadPerSec[i]) * kDeg,
                              1e-12, 1e-12);
     }
-    // (kp s + ki)/s * k0/(s^3 + a1 s^2 + a2 s), paper 000 lower base wn 2, kp 30.
+    // (kp s + ki)/s * k0/(s^3 + a1 s^2 + a2 s), Braga et al.'s lower base wn 2, kp 30.
     const double k0 = 77.8, a1 = 125.3, a2 = 3665.0, kp = 30.0, ki = kp * 16.0 / (kp * k0);
     const TransferFunction gt(Polynomial::fromDescending({k0 * kp, k0 * ki}),
                               Polynomial::fromDescending({1.0, a1, a2, 0.0, 0.0}));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Loop transfer functions of both design methods and the ZPETC tracking response (issue 17).
+// Loop transfer functions of both design methods and the ZPETC tracking response.
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
 #include "core/design/guillemin_truxal.h"
@@ -29,7 +29,7 @@ private slots:
 };
 
 // Identities of unity feedback, at every grid frequency: S + T = 1, T = L S, u/r = G_c S, and
-// T equals the design's closed loop (paper 000: feedback(G_c G) = G_R, Eq. 10 = Eq. 7). L has
+// T equals the design's closed loop (Braga et al.: feedback(G_c G) = G_R, Eq. 10 = Eq. 7). L has
 // the double pole at s = 0 (phase from -180 degrees).
 void TstLoopResponses::gtLoopIdentities() {
     for (const char* preset : {"lower-base", "upper-base"}) {
@@ -54,7 +54,7 @@ void TstLoopResponses::gtLoopIdentities() {
     }
 }
 
-// The RST identities (paper 001 Fig. 9): S + T = 1, T = L S, and the tracking without
+// The RST identities (Patrick, Ishak and Adnan Fig. 9): S + T = 1, T = L S, and the tracking without
 // feedforward equals the design's K_f B/T closed loop to the Diophantine residual.
 void TstLoopResponses::rstLoopIdentities() {
     for (const char* preset : {"x-axis", "y-axis"}) {
@@ -77,7 +77,7 @@ void TstLoopResponses::rstLoopIdentities() {
     }
 }
 
-// Paper 001 Sec. 4 (Tomizuka's ZPETC): with the feedforward the tracking phase is zero at every
+// Patrick, Ishak and Adnan Sec. 4 (Tomizuka's ZPETC): with the feedforward the tracking phase is zero at every
 // frequency to round-off and the DC gain is 1; the gain falls monotonically from 1 towards the
 // Nyquist frequency (|B-(e^{j theta})|^2/B-(1)^2 of the uncancelled zeros). Compared with
 // zpetcFrequencyResponse, which evaluates the two filters separately.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Nyquist curve and encirclements (issue 17): closed forms and the Nyquist criterion
+// Nyquist curve and encirclements: closed forms and the Nyquist criterion
 // Z = N + P on random loops, with Z and P counted independently from the roots of D + N and D.
 #include "core/analysis/nyquist.h"
 #include "core/model/errors.h"

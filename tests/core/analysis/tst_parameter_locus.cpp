@@ -45,7 +45,7 @@ void TstParameterLocus::gtSweepPolesSatisfyEq7_data() {
 }
 
 void TstParameterLocus::gtSweepPolesSatisfyEq7() {
-    // Every point is a root of the GT closed-loop characteristic polynomial (paper 000 Eq. 7
+    // Every point is a root of the GT closed-loop characteristic polynomial (Braga et al. Eq. 7
     // with Eq. 15-18, psi2 = 0): s^4 + a1 s^3 + a2 s^2 + kp k0 s + wn^4. Vieta on it: the
     // poles sum to -a1 and multiply to wn^4 at every value (1e-9 relative: root round-off of
     // a polynomial whose coefficients span 1e-4..1e6).
@@ -132,9 +132,9 @@ void TstParameterLocus::invalidSweepThrows() {
 
 
 void TstParameterLocus::stabilityChangesMatchRouth() {
-    // The GT closed loop s^4 + a s^3 + b s^2 + c s + d (c = kp k0, d = wn^4; paper 000 Eq. 7,
+    // The GT closed loop s^4 + a s^3 + b s^2 + c s + d (c = kp k0, d = wn^4; Braga et al. Eq. 7,
     // 15-18) is Hurwitz iff a, b, c, d > 0, ab - c > 0 and c (ab - c) - a^2 d > 0 (Routh).
-    // Lower base of paper 000: a = 125.3, b = 3665, k0 = 77.8.
+    // Lower base of Braga et al.: a = 125.3, b = 3665, k0 = 77.8.
     const ThirdOrderPlant plant{77.8, 125.3, 3665.0};
     const double a = plant.a1, b = plant.a2;
     {   // wn sweeps at kp = 30: one change, unstable above wn* = (c (ab - c) / a^2)^(1/4).

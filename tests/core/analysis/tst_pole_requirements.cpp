@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The specification as a region of the s- and z-plane (issue 17's root-locus overlay).
+// The specification as a region of the s- and z-plane (the root-locus overlay).
 #include "core/analysis/pole_requirements.h"
 #include "core/model/errors.h"
 #include "tests/support/tolerance.h"

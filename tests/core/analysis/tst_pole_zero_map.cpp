@@ -17,7 +17,7 @@ class TstPoleZeroMap : public QObject {
 private slots:
     void gtSetsMatchClosedForms_data();
     void gtSetsMatchClosedForms();
-    void paper001XAxisZeros();
+    void xAxisArxModelZeros();
     void dampingOfClosedForms_data();
     void dampingOfClosedForms();
     void sPlaneGridLinesHaveTheirZetaAndOmega();
@@ -65,8 +65,8 @@ void TstPoleZeroMap::gtSetsMatchClosedForms() {
     XYT_COMPARE_NEAR(sets[3].zeros.at(0).real(), -psi1, 1e-12, 0.0);
 }
 
-void TstPoleZeroMap::paper001XAxisZeros() {
-    // Paper 001 Eq. 1-2: B = 0.0421 z^-1 + 0.0628 z^-2 - 0.0454 z^-3, zeros of
+void TstPoleZeroMap::xAxisArxModelZeros() {
+    // Patrick, Ishak and Adnan Eq. 1-2: B = 0.0421 z^-1 + 0.0628 z^-2 - 0.0454 z^-3, zeros of
     // 0.0421 z^2 + 0.0628 z - 0.0454 by the quadratic formula: (-0.0628 +- sqrt(0.0628^2 +
     // 4*0.0421*0.0454))/(2*0.0421) = 0.53266 and -2.02437. The paper prints "z = -0.5327 and
     // z = -2.0244": the sign of the first zero is a misprint (its Eq. 2 polynomial

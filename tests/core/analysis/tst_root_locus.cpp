@@ -33,7 +33,7 @@ Loop gtLoop(const char* preset) {
     return {d.openLoop.num(), d.openLoop.den(), 0.0};
 }
 
-/// Paper 001 Eq. 1 (x axis): B/A in ascending powers of z^-1, Ts = 0.07 s.
+/// Patrick, Ishak and Adnan Eq. 1 (x axis): B/A in ascending powers of z^-1, Ts = 0.07 s.
 Loop paperXAxis() {
     const TransferFunction tf = TransferFunction::fromZInverse(
         Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
@@ -51,7 +51,7 @@ Loop loopNamed(const QString& name) {
         return {Polynomial::fromDescending({1, 0.5}), Polynomial::fromDescending({1, -1, 0.25}), 0.1};
     if (name == "z_double_pole")
         return {Polynomial::fromDescending({1}), Polynomial::fromDescending({1, -1, 0.25}), 0.1};
-    if (name == "paper001_x_axis")
+    if (name == "arx_x_axis")
         return paperXAxis();
     if (name == "gt_lower_base")
         return gtLoop("lower-base");
@@ -61,7 +61,7 @@ Loop loopNamed(const QString& name) {
 }
 
 const QStringList kLoopNames = {"type1", "double_integrator_lead", "z_double_pole_zero",
-                                "z_double_pole", "paper001_x_axis", "gt_lower_base",
+                                "z_double_pole", "arx_x_axis", "gt_lower_base",
                                 "gt_upper_base"};
 
 QJsonArray referenceLoops() {
@@ -137,7 +137,7 @@ void TstRootLocus::crossingsMatchClosedForms_data() {
     QTest::newRow("GT lower base Routh") << "gt_lower_base" << k << 0.0 << omega;
     gtRouth("upper-base", k, omega);
     QTest::newRow("GT upper base Routh") << "gt_upper_base" << k << 0.0 << omega;
-    // Paper 001 x axis: A(z) z + K B(z) = z^3 + a2 z^2 + a1 z + a0 with a2 = -1.658 + 0.0421K,
+    // Patrick, Ishak and Adnan's x axis: A(z) z + K B(z) = z^3 + a2 z^2 + a1 z + a0 with a2 = -1.658 + 0.0421K,
     // a1 = 0.6583 + 0.0628K, a0 = -0.0454K has a unit-circle pair (z^2 - 2cz + 1)(z + a0) when
     // the Jury/Schur-Cohn determinant 1 - a0^2 - a1 + a0 a2 = 0: a quadratic in K,
     // 0.3417 + (0.0454*1.658 - 0.0628) K - (0.0454^2 + 0.0454*0.0421) K^2 = 0, and then
@@ -146,7 +146,7 @@ void TstRootLocus::crossingsMatchClosedForms_data() {
                  qc = 1.0 - 0.6583;
     const double kx = (-qb - std::sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa);
     const double c = (-0.0454 * kx - (-1.658 + 0.0421 * kx)) / 2.0;
-    QTest::newRow("paper 001 x axis Jury") << "paper001_x_axis" << kx << c << std::sqrt(1.0 - c * c);
+    QTest::newRow("Patrick, Ishak and Adnan's x axis Jury") << "arx_x_axis" << kx << c << std::sqrt(1.0 - c * c);
 }
 
 void TstRootLocus::crossingsMatchClosedForms() {
@@ -384,7 +384,7 @@ void TstRootLocus::designPointIsTheGtClosedLoop_data() {
 
 void TstRootLocus::designPointIsTheGtClosedLoop() {
     // Invariant: K multiplies L = G_c G, so the locus at K = 1 is feedback(L).poles(), the
-    // poles of the reference model G_R (paper 000 Eq. 7). Same polynomial, two solvers:
+    // poles of the reference model G_R (Braga et al. Eq. 7). Same polynomial, two solvers:
     // 1e-9 relative to the largest pole magnitude (the slow pole near -wn^4/(kp k0) is ~1e-4
     // of the fastest).
     QFETCH(QString, preset);
@@ -403,7 +403,7 @@ void TstRootLocus::designPointIsTheGtClosedLoop() {
 }
 
 void TstRootLocus::kMaxEndsTheTraceExactly() {
-    const Loop l = loopNamed("paper001_x_axis");
+    const Loop l = loopNamed("arx_x_axis");
     RootLocusOptions o;
     o.kMax = 20.0;
     const RootLocus r = rootLocus(l.num, l.den, l.ts, o);
@@ -510,7 +510,7 @@ void TstRootLocus::invalidInputThrows() {
 }
 
 void TstRootLocus::clusteredPolesWarnAndWorkIsBounded() {
-    // Issue 20: 1/(s+1)^40 ran 15-72 s and reported the poles at -2.28 without a word.
+    // 1/(s+1)^40 ran 15-72 s and reported the poles at -2.28 without a word.
     // Binomial coefficients (closed form) give D = (s+1)^40 exactly in double (all < 2^53).
     std::vector<double> d(41);
     double c = 1.0;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Stability margins (issue 17): closed forms, the root locus as an independent computation of
+// Stability margins: closed forms, the root locus as an independent computation of
 // the gain margins, GNU Octave's margin and norm(., Inf) on random loops, dense-grid bounds.
 #include "core/analysis/frequency_response.h"
 #include "core/analysis/root_locus.h"
@@ -31,7 +31,7 @@ TransferFunction gtOpenLoop(const char* preset) {
     return designGuilleminTruxal(p.plant, p.omegaNRadPerSec, p.kp).openLoop;
 }
 
-/// Paper 001 x axis (Eq. 1) with T = 1 - 0.2 z^-1, Ts = 0.07: the RST loop L = B G/(A F).
+/// Patrick, Ishak and Adnan's x axis (Eq. 1) with T = 1 - 0.2 z^-1, Ts = 0.07: the RST loop L = B G/(A F).
 TransferFunction paperXAxisLoop() {
     const PolePlacementDesign d = designPolePlacement(
         Polynomial::fromAscending({1.0, -1.658, 0.6583}),
@@ -222,10 +222,10 @@ void TstStabilityMargins::firstOrderBandwidth() {
 // margin is the smallest crossing gain above 1.
 void TstStabilityMargins::gainMarginEqualsRootLocusCrossing_data() {
     QTest::addColumn<TransferFunction>("loop");
-    QTest::newRow("paper 000 lower base, wn 2, kp 30 (GT, double integrator)")
+    QTest::newRow("Braga et al.'s lower base, wn 2, kp 30 (GT, double integrator)")
         << gtOpenLoop("lower-base");
-    QTest::newRow("paper 000 upper base, wn 1, kp 30") << gtOpenLoop("upper-base");
-    QTest::newRow("paper 001 x axis RST loop B G/(A F), Ts 0.07") << paperXAxisLoop();
+    QTest::newRow("Braga et al.'s upper base, wn 1, kp 30") << gtOpenLoop("upper-base");
+    QTest::newRow("Patrick, Ishak and Adnan's x axis RST loop B G/(A F), Ts 0.07") << paperXAxisLoop();
 }
 
 namespace {

@@ -140,7 +140,7 @@ void TstGcodeReader::arcFromNegativeR() {
 }
 
 void TstGcodeReader::fullCircle() {
-    // The circle of paper 000 (resources/examples/circle_25mm.nc): end = start with I/J.
+    // The circle of Braga et al. (resources/examples/circle_25mm.nc): end = start with I/J.
     const GcodeProgram p = readGcode("G0 X0 Y25\nG2 I0 J-25 F90\n");
     const auto a = arcOf(p);
     comparePoint(a.centre(), {0.0, 0.0});
@@ -395,7 +395,7 @@ void TstGcodeReader::examples_data() {
     QTest::addColumn<int>("segments");
     QTest::addColumn<double>("circleRadius"); // 0: not a single full circle
     QTest::addColumn<int>("warnings");
-    // The papers' circles (paper 000: 25 mm at 90 mm/min; paper 001: 30 mm at 180 mm/min),
+    // The papers' circles (Braga et al.: 25 mm at 90 mm/min; Patrick, Ishak and Adnan: 30 mm at 180 mm/min),
     // each a rapid to the top then one clockwise circle; the program end M30 does not warn.
     QTest::newRow("circle_25mm") << "circle_25mm.nc" << 2 << 25.0 << 0;
     QTest::newRow("circle_30mm") << "circle_30mm.nc" << 2 << 30.0 << 0;
@@ -421,7 +421,7 @@ void TstGcodeReader::examples() {
         XYT_COMPARE_NEAR(c.radius(), circleRadius, 0.0, kTol);
         comparePoint(c.centre(), {0.0, 0.0});
         QVERIFY(c.sweep() < 0.0); // clockwise, as x = R sin(w t), y = R cos(w t)
-        // v = R omega: 25 x 0.06 = 1.5 mm/s (paper 000), 30 x 0.1 = 3 mm/s (paper 001).
+        // v = R omega: 25 x 0.06 = 1.5 mm/s (Braga et al.), 30 x 0.1 = 3 mm/s (Patrick, Ishak and Adnan).
         XYT_COMPARE_NEAR(p.segments[p.fullCircleSegment()].feedMmPerSec,
                          circleRadius == 25.0 ? 1.5 : 3.0, 1e-15, 0.0);
     }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Diophantine solve A F + B G = T and the RST pole-placement design of paper 001 Sec. 5.
+// Diophantine solve A F + B G = T and the RST pole-placement design of Patrick, Ishak and Adnan Sec. 5.
 #include "core/design/diophantine.h"
 #include "core/model/errors.h"
 #include "core/design/pole_placement.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The Guillemin-Truxal PI design of paper 000 (Eq. 7-22) against its closed forms and the
+// The Guillemin-Truxal PI design of Braga et al. (Eq. 7-22) against its closed forms and the
 // published numbers, after checking each published number against its own equation.
 #include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
@@ -45,8 +45,8 @@ void TstGuilleminTruxal::closedForms_data() {
     QTest::addColumn<double>("a2");
     QTest::addColumn<double>("wn");
     QTest::addColumn<double>("kp");
-    QTest::newRow("paper 000 Sec. 3.1 lower base") << 77.8 << 125.3 << 3665.0 << 2.0 << 30.0;
-    QTest::newRow("paper 000 Sec. 3.2 upper base") << 24.44 << 68.18 << 863.0 << 1.0 << 30.0;
+    QTest::newRow("Braga et al. Sec. 3.1 lower base") << 77.8 << 125.3 << 3665.0 << 2.0 << 30.0;
+    QTest::newRow("Braga et al. Sec. 3.2 upper base") << 24.44 << 68.18 << 863.0 << 1.0 << 30.0;
     QTest::newRow("generic, wn < 1") << 10.0 << 5.0 << 6.0 << 0.5 << 2.0;
     QTest::newRow("negative k0") << -3.0 << 4.0 << 2.0 << 1.5 << 0.7;
 }
@@ -58,7 +58,7 @@ void TstGuilleminTruxal::closedForms() {
     QFETCH(double, wn);
     QFETCH(double, kp);
     const GtDesign d = xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp);
-    // Closed forms of paper 000; one or two roundings each, so 1e-15 relative.
+    // Closed forms of Braga et al.; one or two roundings each, so 1e-15 relative.
     const double tol = 1e-15;
     XYT_COMPARE_NEAR(d.f1, a1 / wn, tol, 0.0);                         // Eq. 17
     XYT_COMPARE_NEAR(d.f2, a2 / (wn * wn), tol, 0.0);                  // Eq. 18
@@ -115,7 +115,7 @@ void TstGuilleminTruxal::closedLoopEqualsReferenceModel() {
 }
 
 void TstGuilleminTruxal::paperEq10LeadLagClosedLoop() {
-    // Paper 000 Eq. 10 (checked by expanding s(s^2 + a1 s + a2)(s + psi2) + k k0 (s + psi1)):
+    // Braga et al. Eq. 10 (checked by expanding s(s^2 + a1 s + a2)(s + psi2) + k k0 (s + psi1)):
     // feedback(k (s + psi1)/(s + psi2) G) for psi2 != 0.
     const double k = 2.5, psi1 = 0.3, psi2 = 4.0, k0 = 77.8, a1 = 125.3, a2 = 3665.0;
     const TransferFunction gc = TransferFunction::fromDescending({k, k * psi1}, {1.0, psi2});
@@ -161,7 +161,7 @@ void TstGuilleminTruxal::paperUpperBaseEq21And22() {
 }
 
 void TstGuilleminTruxal::presets() {
-    // The plants of paper 000 Eq. 1 and 2 and the designs of Sec. 3.1 and 3.2, with the
+    // The plants of Braga et al. Eq. 1 and 2 and the designs of Sec. 3.1 and 3.2, with the
     // volts-to-metres models driven by millimetre trajectories (0.001 m per mm).
     const auto lower = xyt::findGtPreset("lower-base");
     const auto upper = xyt::findGtPreset("upper-base");
@@ -237,8 +237,8 @@ void TstGuilleminTruxal::badInputsNameTheField() {
 }
 
 void TstGuilleminTruxal::unrepresentableWnOrKpIsRefusedNamingIt() {
-    // Issue 20: wn = 1e300 made wn^4 overflow and the reference model's constructor reported
-    // "den[2]: must be a number, got NaN". Bounds from the closed forms (paper 000 Eq. 11-18):
+    // wn = 1e300 made wn^4 overflow and the reference model's constructor reported
+    // "den[2]: must be a number, got NaN". Bounds from the closed forms (Braga et al. Eq. 11-18):
     // wn^4 overflows above DBL_MAX^(1/4) = 1.34e77 rad/s, wn^2 underflows to 0 below ~1.5e-162.
     const ThirdOrderPlant lower{77.8, 125.3, 3665.0};
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e300, 30.0); }), QString("wn"));

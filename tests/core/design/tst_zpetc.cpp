@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// ZPETC of paper 001 Sec. 4 on the pole-placement loop of Sec. 5: factorization, zero phase,
+// ZPETC of Patrick, Ishak and Adnan Sec. 4 on the pole-placement loop of Sec. 5: factorization, zero phase,
 // the three simulated structures, tracking and contour metrics.
 #include "core/simulation/discrete_simulation.h"
 #include "core/model/errors.h"
@@ -297,7 +297,7 @@ void TstZpetc::invalidInput() {
 }
 
 void TstZpetc::tinyBMinusIsRefusedNotNaN() {
-    // Issue 20 (fuzz_design): B- whose coefficients are all ~1e-300 passes the relative check
+    // Found by fuzz_design: B- whose coefficients are all ~1e-300 passes the relative check
     // |B-(1)| > 1e-12 max|B-|, but [B-(1)]^2 underflows to 0 and the FIR became NaN.
     // Closed form: Kf B / z^-1 = 1e-300 (1 - 3 z^-1): one zero at z = 3 (outside, kept in B-),
     // B-(1) = -2e-300, whose square 4e-600 is below the smallest double.

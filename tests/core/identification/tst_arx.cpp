@@ -19,7 +19,7 @@ using namespace xyt::test;
 
 namespace {
 
-// Paper 001 Eq. 1, the x-axis ARX(2,3,1) model at 70 ms (PpAxisSettings defaults).
+// Patrick, Ishak and Adnan Eq. 1, the x-axis ARX(2,3,1) model at 70 ms (PpAxisSettings defaults).
 const std::vector<double> kA{1.0, -1.6580, 0.6583};
 const std::vector<double> kB{0.0, 0.0421, 0.0628, -0.0454};
 constexpr double kTs = 0.07;

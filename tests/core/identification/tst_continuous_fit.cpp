@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The continuous fit of paper 000's plant k0 / (s^3 + a1 s^2 + a2 s)
+// The continuous fit of Braga et al.'s plant k0 / (s^3 + a1 s^2 + a2 s)
 // (core/identification/continuous_fit.h) on data made as the paper's were (Sec. 2: a +-2.5 V
 // square wave at 10 ms): exact recovery of both bases of Eq. 1-2, standard deviations against
 // the truth and against the spread over 200 seeds, progress/cancel, invalid input.
@@ -21,9 +21,9 @@ using namespace xyt::test;
 
 namespace {
 
-constexpr double kTs = 0.01; // paper 000 Sec. 2: 10 ms
+constexpr double kTs = 0.01; // Braga et al. Sec. 2: 10 ms
 
-/// Paper 000 Eq. 2, the lower base ("Base bottom", G_Pinferior): the session default.
+/// Braga et al. Eq. 2, the lower base ("Base bottom", G_Pinferior): the session default.
 ThirdOrderPlant lowerBase() { return findGtPreset("lower-base")->plant; }
 
 /**
@@ -65,7 +65,7 @@ private slots:
 
     // Noise-free data: the fit returns the generating plant to 1e-9 relative (the global
     // minimum V = 0; the data's round-off, 1e-13 of the output, moves the estimate by about
-    // that times the Jacobian's condition number, ~1e3). Both bases of paper 000 (Eq. 1, 2).
+    // that times the Jacobian's condition number, ~1e3). Both bases of Braga et al. (Eq. 1, 2).
     void noiseFreeRecoversPaperPlant_data() {
         QTest::addColumn<double>("k0");
         QTest::addColumn<double>("a1");

@@ -24,7 +24,7 @@ namespace {
 // The classic test plant of Soderstrom & Stoica (1989), Example 2.3.
 const std::vector<double> kB{0.0, 1.0, 0.5};
 const std::vector<double> kF{1.0, -1.5, 0.7};
-// Paper 001 Eq. 1 (x axis, ARX(2,3,1), 70 ms).
+// Patrick, Ishak and Adnan Eq. 1 (x axis, ARX(2,3,1), 70 ms).
 const std::vector<double> kPaperA{1.0, -1.6580, 0.6583};
 const std::vector<double> kPaperB{0.0, 0.0421, 0.0628, -0.0454};
 
@@ -106,7 +106,7 @@ private slots:
         const PolynomialModel m = bjModel({1.0, -0.3}, {1.0, -0.7});
         const IoData d = bjData(m, 500, 0.5, 3, e);
         QVERIFY(maxAbsDiff(predictionErrors(m, d), e) <= 1e-12);
-        // ... and for ARX (A != 1): paper 001's model with equation noise.
+        // ... and for ARX (A != 1): Patrick, Ishak and Adnan's model with equation noise.
         PolynomialModel arx;
         arx.a = kPaperA;
         arx.b = kPaperB;
@@ -146,7 +146,7 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(InvalidInput, informationCriteria(1.0, 4, 4));
     }
 
-    // The order table on ARX(2,3,1) data (paper 001's model, fixed seed): 9 rows, losses over
+    // The order table on ARX(2,3,1) data (Patrick, Ishak and Adnan's model, fixed seed): 9 rows, losses over
     // the common samples 3 .. N-1, the (2,3,1) row's loss equal to that estimate's own loss
     // (same rows), and AIC picks ARX(2,3,1) (the under-fitted orders have far larger losses, the
     // over-fitted ones pay 2 per parameter for a loss drop of about 1 per parameter).
@@ -257,7 +257,7 @@ private slots:
         QVERIFY(hasRoot(mp.poles, {0.75, -std::sqrt(0.7 - 0.5625)}, 1e-12));
     }
 
-    // Paper 001's x-axis model: B = 0.0421 z^2 + 0.0628 z - 0.0454 has the zero
+    // Patrick, Ishak and Adnan's x-axis model: B = 0.0421 z^2 + 0.0628 z - 0.0454 has the zero
     // (-0.0628 - sqrt(0.0628^2 + 4 0.0421 0.0454)) / (2 0.0421) = -2.02 outside the unit circle:
     // the reason the paper uses ZPETC.
     void paperModelIsNonMinimumPhase() {
@@ -271,7 +271,7 @@ private slots:
         QVERIFY(r.nonMinimumPhase);
     }
 
-    // Paper 000's lower base at 10 ms: continuous poles 0 and (-125.3 +- sqrt(125.3^2 -
+    // Braga et al.'s lower base at 10 ms: continuous poles 0 and (-125.3 +- sqrt(125.3^2 -
     // 4 3665)) / 2, z-poles e^{p Ts} (1e-9), and the ZOH sampling zeros of relative degree 3
     // (Astrom, Hagander & Sternby 1984: -3.73 and -0.27 as Ts -> 0; -2.76 and -0.19 at 10 ms),
     // here the quadratic formula on GNU Octave's c2d numerator (tests/data/gt_zoh.csv), 1e-9.

@@ -20,7 +20,7 @@ void TstCoefficientParser::accepts_data() {
     QTest::addColumn<QList<double>>("expected");
     // Values are exactly representable or parsed by from_chars to the nearest double, so the
     // comparison is exact against the same literals.
-    QTest::newRow("spaces, paper 001 A(z^-1)") << "1 -1.6580 0.6583" << QList<double>{1.0, -1.6580, 0.6583};
+    QTest::newRow("spaces, A(z^-1) of Patrick, Ishak and Adnan") << "1 -1.6580 0.6583" << QList<double>{1.0, -1.6580, 0.6583};
     QTest::newRow("MATLAB brackets and commas") << "[0.0421, 0.0628, -0.0454]" << QList<double>{0.0421, 0.0628, -0.0454};
     QTest::newRow("semicolons, tabs, newlines") << "1;\t125.3\n3665 ; 0" << QList<double>{1.0, 125.3, 3665.0, 0.0};
     QTest::newRow("exponents and plus sign") << "+2e3 -1.5E-2 .5" << QList<double>{2000.0, -0.015, 0.5};

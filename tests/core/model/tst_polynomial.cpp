@@ -106,7 +106,7 @@ void TstPolynomial::rootsResidualOnRandomPolynomials() {
 }
 
 void TstPolynomial::rootsOfPaperPolynomials() {
-    // Paper 001 Eq. 2: B_c(z^-1) = 1 + 1.4917 z^-1 - 1.0784 z^-2, i.e. z^2 + 1.4917 z - 1.0784.
+    // Patrick, Ishak and Adnan Eq. 2: B_c(z^-1) = 1 + 1.4917 z^-1 - 1.0784 z^-2, i.e. z^2 + 1.4917 z - 1.0784.
     // Quadratic formula: z = (-1.4917 +- sqrt(1.4917^2 + 4 * 1.0784)) / 2 = 0.53266, -2.02436.
     // The paper prints -0.5327 for the first root: a sign misprint (the product of the roots
     // must be -1.0784, which -0.5327 * -2.0244 = +1.0784 is not).

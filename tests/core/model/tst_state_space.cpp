@@ -54,7 +54,7 @@ private slots:
 void TstStateSpace::realizationReproducesTf_data() {
     QTest::addColumn<QList<double>>("num");
     QTest::addColumn<QList<double>>("den");
-    QTest::newRow("lower-base plant, paper 000 Eq. 2") << QList<double>{77.8} << QList<double>{1, 125.3, 3665, 0};
+    QTest::newRow("lower-base plant, Braga et al. Eq. 2") << QList<double>{77.8} << QList<double>{1, 125.3, 3665, 0};
     QTest::newRow("lower-base G_R, Eq. 19") << QList<double>{2334, 16} << QList<double>{1, 125.3, 3665, 2334, 16};
     QTest::newRow("biproper (2s^2+1)/(s^2+3s+2)") << QList<double>{2, 0, 1} << QList<double>{1, 3, 2};
     QTest::newRow("non-monic PI (30s+0.2)/(2s)") << QList<double>{30, 0.2} << QList<double>{2, 0};

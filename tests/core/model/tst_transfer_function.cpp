@@ -164,7 +164,7 @@ void TstTransferFunction::zInverseRoundTrip_data() {
     // z^-2/(1 - 0.5 z^-1) = 1/(z^2 - 0.5 z): the numerator sets the degree.
     QTest::newRow("delay longer than den") << QList<double>{0, 0, 1} << QList<double>{1, -0.5}
                                            << QList<double>{1.0} << QList<double>{1, -0.5, 0};
-    // Paper 001 style, biproper: (2 + z^-1)/(2 - z^-1) = (z + 0.5)/(z - 0.5) after normalizing.
+    // As Patrick, Ishak and Adnan write them, biproper: (2 + z^-1)/(2 - z^-1) = (z + 0.5)/(z - 0.5) after normalizing.
     QTest::newRow("biproper, den[0] != 1") << QList<double>{2, 1} << QList<double>{2, -1}
                                            << QList<double>{1, 0.5} << QList<double>{1, -0.5};
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The frequency-domain view of a session's axes (issue 17), as the workbench draws it.
+// The frequency-domain view of a session's axes, as the workbench draws it.
 #include "core/session/axis_frequency.h"
 #include "tests/support/tolerance.h"
 
@@ -25,7 +25,7 @@ bool onGrid(const std::vector<double>& grid, double omega) {
 } // namespace
 
 void TstAxisFrequency::gtAxisHoldsItsCrossoversOnTheGrid() {
-    const Session s; // paper 000 defaults: lower base wn = 2, kp = 30
+    const Session s; // Braga et al.'s defaults: lower base wn = 2, kp = 30
     const SessionEvaluation e = evaluateSession(s);
     const AxisFrequencyAnalysis a = analyzeAxisFrequency(s, e.axes[0]);
     QVERIFY2(a.ok, a.error.c_str());
@@ -52,7 +52,7 @@ void TstAxisFrequency::polePlacementAxisHasTheZpetcTracking() {
     s.axes[0].method = DesignMethod::PolePlacementZpetc;
     s.trajectory.kind = TrajectoryKind::Circle;
     s.trajectory.radius = 30.0;
-    s.trajectory.omegaRadPerSec = 0.1; // paper 001's circle
+    s.trajectory.omegaRadPerSec = 0.1; // Patrick, Ishak and Adnan's circle
     s.trajectory.rampInSeconds = 0.0;
     const SessionEvaluation e = evaluateSession(s);
     const AxisFrequencyAnalysis a = analyzeAxisFrequency(s, e.axes[0]);
@@ -60,7 +60,7 @@ void TstAxisFrequency::polePlacementAxisHasTheZpetcTracking() {
     QCOMPARE(a.referenceOmegaRadPerSec, 0.1);
     QVERIFY(onGrid(a.responses.openLoop.omegaRadPerSec, 0.1));
     QVERIFY(a.tracking.has_value());
-    // Zero phase with ZPETC at every grid frequency (paper 001 Eq. 6), to round-off.
+    // Zero phase with ZPETC at every grid frequency (Patrick, Ishak and Adnan Eq. 6), to round-off.
     for (double phase : a.tracking->withZpetc.phaseDeg)
         QVERIFY(std::abs(phase) < 1e-6);
     // The grid ends at the Nyquist frequency pi / 0.07.

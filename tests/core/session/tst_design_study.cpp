@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The design problem of a session's axis, at full and at live-preview fidelity (issue 18).
+// The design problem of a session's axis, at full and at live-preview fidelity.
 // Expected values are built here from the session's own fields and the trajectory formulas
-// (closed forms: the cubic of paper 000 Eq. 4, the circle of Eq. 23-24), not by the code tested.
+// (closed forms: the cubic of Braga et al. Eq. 4, the circle of Eq. 23-24), not by the code tested.
 #include "core/session/design_study.h"
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Issue 20: a session label is copied into the exports. A shared session file must not put
+// A session label is copied into the exports. A shared session file must not put
 // code into the C header (close the comment, redefine XYT_UMAX_VOLTS) nor into the Octave
 // script (a newline, then system("...")). Invariant checked here: the header and the script of
 // a session with a hostile label mean exactly what they mean with an empty label -- the same
@@ -257,7 +257,7 @@ void TstExportInjection::floatExportRefusesWhatFloatCannotHold() {
     QCOMPARE(floatRefusal(Session::paperDefault()).first, QString());
 }
 
-// Issue 12: the axis id names the exported C functions (xyt_<id>_step). A session built in
+// The axis id names the exported C functions (xyt_<id>_step). A session built in
 // code (the file loader already refuses them) with an id that is not 1 to 16 lower-case letters
 // or digits, or two equal ids, is refused naming the field, before any code is written.
 void TstExportInjection::axisIdsThatCannotNameAFunctionAreRefused() {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The exported C controller in the loop (issue 12). The C export (exportCHeader) is written to a
+// The exported C controller in the loop. The C export (exportCHeader) is written to a
 // temporary folder with a harness (kHarness below) that plays the hardware: it steps the plant
 // of the core's sampled-data simulation (the ZOH matrices of sampledPlant, or the ARX model),
 // reads it through the encoder, calls the generated xyt_<axis>_step, passes the command through
@@ -446,7 +446,7 @@ std::array<double, 2> floatBound(const Session& session, const SessionEvaluation
     return {1.01 * bound[0], 1.01 * bound[1]};
 }
 
-/// Paper 000's session with a cubic that saturates (0 -> 600 mm in 10 s), a 1 um encoder, a
+/// Braga et al.'s session with a cubic that saturates (0 -> 600 mm in 10 s), a 1 um encoder, a
 /// 16-bit DAC and one sample of delay: every path of the PI (clipping, anti-windup, quantizers).
 Session saturatingGtSession(PiDiscretization method, AntiWindup antiWindup) {
     Session s = Session::paperDefault();
@@ -461,7 +461,7 @@ Session saturatingGtSession(PiDiscretization method, AntiWindup antiWindup) {
     return s;
 }
 
-/// Both axes by paper 001's pole placement on the 25 mm circle; x with ZPETC, y without.
+/// Both axes by Patrick, Ishak and Adnan's pole placement on the 25 mm circle; x with ZPETC, y without.
 Session ppSession() {
     Session s = Session::paperDefault();
     for (auto& axis : s.axes)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A G-code program as a session's trajectory (issue 13): its run time, its references, the
+// A G-code program as a session's trajectory: its run time, its references, the
 // session paths its refusals name, and its evaluation. The expected times and positions are the
 // closed form of a trapezoidal move along a straight line (accelerate at a to v = F, cruise,
 // decelerate: t = L / v + v / a when L >= v^2 / a).

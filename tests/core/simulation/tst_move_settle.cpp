@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Move-and-settle figures (issue 19) against closed forms of signals fed as a run.
+// Move-and-settle figures against closed forms of signals fed as a run.
 #include "core/model/errors.h"
 #include "core/simulation/move_settle.h"
 #include "core/study/design_sweep.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The sampled-data loop of a digital controller (issue 12): closed forms of first-order loops,
+// The sampled-data loop of a digital controller: closed forms of first-order loops,
 // the transfer-function route to the closed-loop poles, the continuous loop as Ts -> 0 (first
 // order for a zero-order hold), anti-windup on a saturating move, quantization grids and a
 // constructed limit cycle, and bit-identity with the existing discrete RST/ZPETC loops.
@@ -102,7 +102,7 @@ void TestSampledData::firstOrderLagClosedForm() {
 
 // Source: invariant (two routes). The eigenvalues of the sampled-data loop's state matrix are the
 // roots of den_C den_G + num_C num_G, with G(z) = c2dZoh(G(s)) and C(z) the PI difference
-// equation of discretizePi. Paper 000's lower base at 10 ms; root round-off of a degree-5
+// equation of discretizePi. Braga et al.'s lower base at 10 ms; root round-off of a degree-5
 // polynomial with a double root near z = 1: 1e-6 absolute.
 void TestSampledData::polesMatchTheTransferFunctionRoute() {
     const GtDesign d = presetDesign("lower-base");
@@ -152,7 +152,7 @@ void TestSampledData::delayAddsPolesAtTheOrigin() {
 
 // Source: convergence order. The zero-order hold delays the command by Ts/2 on average, so the
 // digital response differs from the continuous one by O(Ts): halving Ts halves the largest
-// difference. Paper 000's lower base on its cubic (0 -> 600 mm in 130 s, unsaturated), the
+// difference. Braga et al.'s lower base on its cubic (0 -> 600 mm in 130 s, unsaturated), the
 // continuous loop at 1.25 ms (exact at its samples, simulation.h) compared at the digital
 // samples. The ratio tends to 2; 1.8 .. 2.2 allows the O(Ts^2) remainder at 20 ms.
 void TestSampledData::convergesToTheContinuousLoopAtFirstOrder() {
@@ -183,7 +183,7 @@ void TestSampledData::convergesToTheContinuousLoopAtFirstOrder() {
     }
 }
 
-// Source: invariant (windup). Paper 000's lower base on a move that needs more than +-2.5 V (the
+// Source: invariant (windup). Braga et al.'s lower base on a move that needs more than +-2.5 V (the
 // 600 mm cubic in 10 s instead of 130 s): without anti-windup the integrator charges while the
 // command is clipped and the axis overshoots xf; clamping and back-calculation stop the charge,
 // so the overshoot is smaller: clamping by more than half, back-calculation (Tt = Ti) less so.
@@ -284,7 +284,7 @@ void TestSampledData::quantizationLimitCycleIsFoundAndWarned() {
 
 // Source: invariant. With ideal options the sampled-data RST loop performs the operations of
 // simulateZpetcLoop / simulateFeedbackLoop (AtReference) in the same order: identical bits.
-// Paper 001's x axis on a 30 mm circle at 0.2 rad/s (y starts at rest at r(0) = 30).
+// Patrick, Ishak and Adnan's x axis on a 30 mm circle at 0.2 rad/s (y starts at rest at r(0) = 30).
 void TestSampledData::idealRstLoopIsTheDiscreteLoop() {
     const Session s = Session::paperDefault();
     const auto& pp = s.axes[1].pp;
@@ -312,7 +312,7 @@ void TestSampledData::idealRstLoopIsTheDiscreteLoop() {
                         [&](auto z) { return test::nearComplex(z, {-pp.t1, 0.0}, 0.0, 1e-9); }));
 }
 
-// Source: invariant (|z| >= 1 is unstable) and closed form. Paper 000's lower base with its PI
+// Source: invariant (|z| >= 1 is unstable) and closed form. Braga et al.'s lower base with its PI
 // discretized at 2 s: a pole of the digital loop has damping ratio 0.60 where the continuous
 // design's are all real (1), and the evaluation says so; at the default 10 ms it says nothing.
 // The integrator k/s under u = kp e at Ts has its pole at z = 1 - k kp Ts: -2 for k = 2, kp = 3,

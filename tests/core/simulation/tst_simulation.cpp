@@ -68,7 +68,7 @@ void TstSimulation::noSaturationEqualsLinearClosedLoop_data() {
 }
 
 void TstSimulation::noSaturationEqualsLinearClosedLoop() {
-    // Invariant (issue 2): without a limit the loop r -> G_c -> G -> y is the linear system
+    // Invariant: without a limit the loop r -> G_c -> G -> y is the linear system
     // feedback(G_c G); both are discretized exactly with a first-order hold on r, so they agree
     // at the samples up to round-off. The two state-space forms differ (loop states vs the
     // companion form of the closed loop), and the GT loops have a slow pole (0.007 rad/s) whose
@@ -126,7 +126,7 @@ void TstSimulation::againstOctaveLsim() {
 }
 
 void TstSimulation::reusedResultAllocatesNothing() {
-    // Issue 18: simulateLoopInto with a kept result writes into the buffers it already has (their
+    // simulateLoopInto with a kept result writes into the buffers it already has (their
     // storage stays where it was) and gives simulateLoop's run, bit for bit: first a saturating
     // 50 mm step, then a shorter linear one into the same result.
     const xyt::GtDesign d = presetDesign("lower-base");
@@ -196,7 +196,7 @@ void TstSimulation::integratorPlantSlopeWhileClipped() {
 }
 
 void TstSimulation::paperUnitsNeedOneThirdOfAVolt() {
-    // Paper 000 claims no saturation on the cubic. With the model in metres and the trajectory
+    // Braga et al. claim no saturation on the cubic. With the model in metres and the trajectory
     // in mm (preset scale 0.001) the feedforward-like steady command at mid-travel is
     // u = (a2 v + a1 a + jerk)/k0 with v = 1.5 * 0.6/130 m/s, a = 0: 3665/77.8 * 0.006923 =
     // 0.326 V. Read in mm instead, the same loop would need 1000 times that, 326 V, far past

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The unit-step curves the step view draws (issue 17), against closed forms and difference
+// The unit-step curves the step view draws, against closed forms and difference
 // equations; their rise time; the specification envelope over them; and the view's horizon.
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
@@ -93,7 +93,7 @@ void TstStepResponse::discreteLoopFollowsItsDifferenceEquation() {
 }
 
 void TstStepResponse::zpetcStepReachesOne() {
-    // Paper 001, x axis, T = 1 - 0.2 z^-1, Ts = 0.07 s: the axis with ZPETC has DC gain 1.
+    // Patrick, Ishak and Adnan, x axis, T = 1 - 0.2 z^-1, Ts = 0.07 s: the axis with ZPETC has DC gain 1.
     const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
                                                          Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
                                                          Polynomial::fromAscending({1.0, -0.2}), 0.07);
@@ -208,7 +208,7 @@ void TstStepResponse::viewOfAContinuousLoop() {
 }
 
 void TstStepResponse::viewOfAPolePlacementAxis() {
-    // Paper 001's x axis: both curves, the one the axis runs first, drawn at the loop's Ts.
+    // Patrick, Ishak and Adnan's x axis: both curves, the one the axis runs first, drawn at the loop's Ts.
     const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
                                                          Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
                                                          Polynomial::fromAscending({1.0, -0.2}), 0.07);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The batched tracking kernel of the design sweep (issue 18) against the scalar path it
+// The batched tracking kernel of the design sweep against the scalar path it
 // replaces: simulateLoop, then trackingMetrics and moveSettleMetrics on the stored run. The
 // source of every expected number is that scalar path; the claim is equality bit for bit
 // (the same exact FOH matrices and the same operations in the same order per lane).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Trajectories of paper 000: the cubic point-to-point polynomial (Eq. 4-6) and the sinusoids of
+// Trajectories of Braga et al.: the cubic point-to-point polynomial (Eq. 4-6) and the sinusoids of
 // the circle contour (Eq. 23-24).
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"
@@ -18,7 +18,7 @@ using xyt::CubicTrajectory;
 namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-/// Paper 000 Eq. 5 as it must read: rows P(t0), P'(t0), P(tf), P'(tf).
+/// Braga et al. Eq. 5 as it must read: rows P(t0), P'(t0), P(tf), P'(tf).
 Eigen::Matrix4d eq5Corrected(double t0, double tf) {
     Eigen::Matrix4d m;
     m << 1, t0, t0 * t0, t0 * t0 * t0, //
@@ -72,7 +72,7 @@ void TstTrajectory::paperEq6() {
 }
 
 void TstTrajectory::printedEq5IsSingular() {
-    // Paper 000 prints row 2 of Eq. 5 as [0 t0 2t0 3t0^2] and row 4 as [0 1 2tf 3tf]. With the
+    // Braga et al. print row 2 of Eq. 5 as [0 t0 2t0 3t0^2] and row 4 as [0 1 2tf 3tf]. With the
     // paper's own t0 = 0 the printed row 2 is all zeros, so the printed matrix is singular and
     // cannot give Eq. 6: a misprint (the derivative row is [0 1 2t0 3t0^2], and 3tf^2 in row 4).
     const double t0 = 0.0, tf = 130.0;
@@ -90,7 +90,7 @@ void TstTrajectory::boundaryConditions_data() {
     QTest::addColumn<double>("tf");
     QTest::addColumn<double>("v0");
     QTest::addColumn<double>("vf");
-    QTest::newRow("paper 000 Eq. 6: 0 -> 600 in 130 s") << 0.0 << 600.0 << 0.0 << 130.0 << 0.0 << 0.0;
+    QTest::newRow("Braga et al. Eq. 6: 0 -> 600 in 130 s") << 0.0 << 600.0 << 0.0 << 130.0 << 0.0 << 0.0;
     QTest::newRow("t0 != 0, v0, vf != 0") << 25.0 << -40.0 << 12.5 << 47.0 << 1.5 << -0.75;
     QTest::newRow("late start t0 = 200") << -10.0 << 300.0 << 200.0 << 330.0 << 0.0 << 2.0;
     QTest::newRow("negative t0, short") << 5.0 << 5.5 << -1.0 << 0.25 << -3.0 << 0.0;
@@ -165,7 +165,7 @@ void TstTrajectory::sinusoidAndRampIn() {
 }
 
 void TstTrajectory::circleIdentities() {
-    // Paper 000 Eq. 23-24: x = 25 sin(0.06 t), y = 25 cos(0.06 t).
+    // Braga et al. Eq. 23-24: x = 25 sin(0.06 t), y = 25 cos(0.06 t).
     xyt::Circle c;
     QCOMPARE(c.radius, 25.0);
     QCOMPARE(c.omegaRadPerSec, 0.06);
@@ -239,7 +239,7 @@ void TstTrajectory::sampleLimitFollowsMemory() {
 }
 
 void TstTrajectory::positionsBeyondTheBoundAreRefused() {
-    // Issue 20: xf = 1e308 overflowed the reference ("reference: sample 1 is not a finite
+    // xf = 1e308 overflowed the reference ("reference: sample 1 is not a finite
     // number"); amplitude 1e308 gave null metrics beside finite ones. kMaxPositionMm = 1e9.
     QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1e308, 0.0, 130.0); }), QString("xf"));
     QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(-2e9, 0.0, 0.0, 130.0); }), QString("x0"));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The step figures of a pole-placement axis as it runs with its ZPETC (issue 19): the paper's
+// The step figures of a pole-placement axis as it runs with its ZPETC: the paper's
 // x axis must not look failed for the overshoot of its feedback loop alone.
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
@@ -27,9 +27,9 @@ private slots:
 void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir_data() {
     QTest::addColumn<QVector<double>>("a");
     QTest::addColumn<QVector<double>>("b");
-    // Paper 001 Table 1 (x and y axes), T = 1 - 0.2 z^-1, Ts = 0.07 s.
-    QTest::newRow("paper 001 x") << QVector<double>{1, -1.658, 0.6583} << QVector<double>{0, 0.0421, 0.0628, -0.0454};
-    QTest::newRow("paper 001 y") << QVector<double>{1, -1.459, 0.4587} << QVector<double>{0, 0.0352, 0.0599, -0.0067};
+    // Patrick, Ishak and Adnan Table 1 (x and y axes), T = 1 - 0.2 z^-1, Ts = 0.07 s.
+    QTest::newRow("x axis of Patrick, Ishak and Adnan") << QVector<double>{1, -1.658, 0.6583} << QVector<double>{0, 0.0421, 0.0628, -0.0454};
+    QTest::newRow("y axis of Patrick, Ishak and Adnan") << QVector<double>{1, -1.459, 0.4587} << QVector<double>{0, 0.0352, 0.0599, -0.0067};
 }
 
 void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir() {
@@ -40,7 +40,7 @@ void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir() {
                             Polynomial::fromAscending({b.begin(), b.end()}),
                             Polynomial::fromAscending({1.0, -0.2}), 0.07);
     const ZpetcDesign z = designZpetc(loop);
-    // With the feedforward ahead of it the loop's T and B+ cancel (paper 001 Eq. 11-13): the
+    // With the feedforward ahead of it the loop's T and B+ cancel (Patrick, Ishak and Adnan Eq. 11-13): the
     // axis is the FIR h = B-(z^-1) B-(z) / [B-(1)]^2 applied to r(k + s), s = deg B-. Its unit
     // step is the partial sums of h: y(K - s + m) = h_0 + ... + h_m, m = 0 .. 2s.
     const int s = z.bMinus.degree();
@@ -77,7 +77,7 @@ void TstZpetcStep::badBandThrows() {
 }
 
 void TstZpetcStep::sessionJudgesThePolePlacementAxisOnWhatItRuns() {
-    // Issue 19: the paper-001 x axis was marked failed for "overshoot 52.363 %", the step of its
+    // The x axis of Patrick, Ishak and Adnan was marked failed for "overshoot 52.363 %", the step of its
     // feedback loop alone; with ZPETC on, the session's step figures are the axis's own.
     Session s;
     s.axes[0].method = DesignMethod::PolePlacementZpetc;

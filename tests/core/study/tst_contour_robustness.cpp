@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The joint XY contour under plant-model mismatch (issue 14). Sources of the expected values:
+// The joint XY contour under plant-model mismatch. Sources of the expected values:
 // the session's own evaluation (zero uncertainty: SessionEvaluation::contour for the circle,
 // SessionEvaluation::program for a G-code program), the pair simulated directly (simulateLoop)
 // and judged by the core's contour measures (circleContourError, contourError), and invariants
@@ -27,7 +27,7 @@ namespace {
 
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
 
-/// Paper 000's circle (both bases, Guillemin-Truxal) or paper 001's (x by pole placement + ZPETC).
+/// Braga et al.'s circle (both bases, Guillemin-Truxal) or Patrick, Ishak and Adnan's (x by pole placement + ZPETC).
 Session circleSession(bool mixed) {
     Session s;
     s.trajectory.kind = TrajectoryKind::Circle;
@@ -88,8 +88,8 @@ private slots:
 
 void TstContourRobustness::zeroUncertaintyIsTheSessionsContour_data() {
     QTest::addColumn<QString>("kind");
-    QTest::newRow("paper 000 circle, both Guillemin-Truxal") << "circle";
-    QTest::newRow("paper 001 circle, x pole placement + ZPETC") << "mixed";
+    QTest::newRow("Braga et al.'s circle, both Guillemin-Truxal") << "circle";
+    QTest::newRow("Patrick, Ishak and Adnan's circle, x pole placement + ZPETC") << "mixed";
     QTest::newRow("G-code square with sharp corners") << "square_sharp_corners.nc";
     QTest::newRow("G-code engraving (rapids left out)") << "engraving_xy.nc";
 }
@@ -121,7 +121,7 @@ void TstContourRobustness::eachPairIsADirectSimulation_data() {
     QTest::addColumn<QString>("kind");
     QTest::addColumn<double>("relative"); // each parameter's uncertainty
     QTest::addColumn<int>("samples");
-    QTest::newRow("paper 000 circle") << "circle" << 0.05 << 3;
+    QTest::newRow("Braga et al.'s circle") << "circle" << 0.05 << 3;
     QTest::newRow("G-code star") << "star.nc" << 0.05 << 3;
     // Rapids are left out of the figures: a pair whose trace lies nearer a rapid than the
     // nominal trace did (or the other way) is judged on its own samples, not on the nominal's.

@@ -25,7 +25,7 @@ using namespace xyt;
 
 namespace {
 
-/// The lower base of paper 000 (Eq. 2) on a cubic 0 -> 600 mm in @p tf seconds, dt 0.01.
+/// The lower base of Braga et al. (Eq. 2) on a cubic 0 -> 600 mm in @p tf seconds, dt 0.01.
 DesignProblem lowerBaseCubic(double tf = 130.0, double maxOvershootPct = 0.0) {
     const GtPreset lower = *findGtPreset("lower-base");
     const CubicTrajectory cubic(0.0, 600.0, 0.0, tf);
@@ -436,7 +436,7 @@ void TstDesignSweep::cancellationStopsEarly() {
 }
 
 void TstDesignSweep::marginsAreTheLoopsAndJudgedByTheMinima() {
-    // Issue 17: every point carries the margins of its loop L = G_c G, as stabilityMargins of
+    // Every point carries the margins of its loop L = G_c G, as stabilityMargins of
     // gtLoopTransferFunctions gives them for the same design (the same computation, so equal
     // to the bit), and the margin minima judge them like every other limit.
     DesignProblem problem = lowerBaseCubic(130.0, 1.0);

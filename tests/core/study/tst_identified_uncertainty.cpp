@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The uncertainty of an identified model (issue 14 "from identification", issue 11's origin).
+// The uncertainty of an identified model (the robustness analysis's uncertainty "from identification", taken from the model's origin).
 // Sources: the sampling distribution of a sample covariance (the bounds are stated with their
 // standard errors), the estimator's own covariance carried through the session (an invariant:
 // the problem's covariance is the model's, reordered and scaled), and named errors.
@@ -21,7 +21,7 @@ using namespace xyt;
 
 namespace {
 
-/// Paper 001's x axis identified as OE(3,2,1) from the committed synthetic PRBS log.
+/// Patrick, Ishak and Adnan's x axis identified as OE(3,2,1) from the committed synthetic PRBS log.
 IdentifiedModel identifiedX(IoData& data) {
     const ExperimentTable table =
         readExperimentTable(XYT_SOURCE_DIR "/resources/examples/synthetic_x_axis_prbs_70ms.csv");

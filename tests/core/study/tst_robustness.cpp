@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Robustness to plant-model mismatch (issue 14). Sources of the expected values: the session's
+// Robustness to plant-model mismatch. Sources of the expected values: the session's
 // own evaluation (zero uncertainty), a direct simulation of the perturbed loop (ZPETC with a
 // wrong B), the closed-form steady-state error of a first-order pole-placement loop whose gain
 // is uniformly distributed (Kolmogorov-Smirnov at a fixed seed), and invariants (bit-identical
@@ -37,8 +37,8 @@ RobustnessOptions options(int samples, std::uint64_t seed = 1, bool corners = tr
 
 Session ppSession() {
     Session s;
-    s.axes[0].method = DesignMethod::PolePlacementZpetc; // paper 001's x axis, ZPETC on
-    s.trajectory.kind = TrajectoryKind::Circle;          // 30 mm at 0.1 rad/s in paper 001
+    s.axes[0].method = DesignMethod::PolePlacementZpetc; // Patrick, Ishak and Adnan's x axis, ZPETC on
+    s.trajectory.kind = TrajectoryKind::Circle;          // 30 mm at 0.1 rad/s in Patrick, Ishak and Adnan
     s.trajectory.radius = 30.0;
     s.trajectory.omegaRadPerSec = 0.1;
     s.trajectory.rampInSeconds = 0.0;
@@ -211,7 +211,7 @@ void TstRobustness::zpetcImprovementFallsWithAWrongB() {
 }
 
 void TstRobustness::zpetcSensitivityCurve() {
-    // Paper 001: ZPETC is sensitive to mismatch. At scale 0 the curve's improvement is the
+    // Patrick, Ishak and Adnan: ZPETC is sensitive to mismatch. At scale 0 the curve's improvement is the
     // nominal one (the session's evaluation); as B moves away it falls; each point is
     // analyzeRobustness at that scale (same seed).
     RobustnessProblem problem = sessionRobustnessProblem(ppSession(), 0);

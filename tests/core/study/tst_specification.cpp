@@ -17,7 +17,7 @@ using namespace xyt;
 
 namespace {
 
-/// Figures that pass every criterion of the default (paper 000) specification.
+/// Figures that pass every criterion of the default (Braga et al.) specification.
 TrackingMetrics goodTracking() {
     TrackingMetrics m;
     m.maxAbsErrorPct = 1.0;
@@ -54,7 +54,7 @@ private slots:
 };
 
 void TstSpecification::defaultsArePaperSpec() {
-    // Paper 000 Sec. 3: settling 100 s, no overshoot, no saturation of +-2.5 V, error < 2 %.
+    // Braga et al. Sec. 3: settling 100 s, no overshoot, no saturation of +-2.5 V, error < 2 %.
     const Specification s;
     QCOMPARE(s.maxSettlingTimeSeconds, 100.0);
     QCOMPARE(s.maxOvershootPct, 0.0);
@@ -142,7 +142,7 @@ void TstSpecification::invalidSpecThrows() {
 }
 
 void TstSpecification::paperLowerBaseDesign() {
-    // Paper 000 Sec. 3.1 (wn 2, kp 30) on its cubic 0 -> 600 mm in 130 s, |u| <= 2.5 V.
+    // Braga et al. Sec. 3.1 (wn 2, kp 30) on its cubic 0 -> 600 mm in 130 s, |u| <= 2.5 V.
     // The paper claims every criterion is met. It meets three: the step response overshoots
     // 0.99697 % (analytic partial fractions, tests/data/design_sweep_step.csv) through the slow
     // pole-zero pair at about -0.0069 rad/s. It has to: G_R is type 2, see Specification.

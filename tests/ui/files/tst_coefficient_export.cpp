@@ -124,7 +124,7 @@ void TstCoefficientExport::jsonParsesBack() {
     const QJsonObject json = QJsonDocument::fromJson(
         QJsonDocument(files::coefficientsJson(s, e)).toJson()).object();
     QCOMPARE(json["format"].toString(), QString("xytune-coefficients"));
-    // Issue 12: the anti-windup the controller ships with travels with the coefficients.
+    // The anti-windup the controller ships with travels with the coefficients.
     QCOMPARE(json["implementation"].toObject()["anti_windup"].toString(), QString("clamp"));
     const QJsonArray axes = json["axes"].toArray();
     QCOMPARE(axes.size(), 2);
@@ -133,7 +133,7 @@ void TstCoefficientExport::jsonParsesBack() {
     QCOMPARE(x["continuous_pi"].toObject()["ki"].toDouble(), e.axes[0].gt->ki);
     QCOMPARE(x["digital_controller"].toObject()["order"].toString(), QString("ascending powers of z^-1"));
     const QJsonArray den = x["reference_model"].toObject()["den"].toArray();
-    // Paper 000 Eq. 19: s^4 + 125.3 s^3 + 3665 s^2 + 2334 s + 16.
+    // Braga et al. Eq. 19: s^4 + 125.3 s^3 + 3665 s^2 + 2334 s + 16.
     QCOMPARE(den.size(), 5);
     XYT_COMPARE_NEAR(den[3].toDouble(), 2334.0, 1e-14, 0.0);
     XYT_COMPARE_NEAR(den[4].toDouble(), 16.0, 1e-14, 0.0);
@@ -147,7 +147,7 @@ void TstCoefficientExport::octaveScriptDefinesTheTfObjects() {
                                "plant_y = tf(24.440000000000001, [1 68.180000000000007 863 0]);",
                                "closed_loop_y", "lsim(closed_loop_y"})
         QVERIFY2(m.find(needle) != std::string::npos, needle);
-    // The implementation travels into the script (issue 12), in its default and another state.
+    // The implementation travels into the script, in its default and another state.
     QVERIFY(m.find("anti-windup clamp,\n% computation delay 0 samples, encoder 0 mm/count, DAC 0 bits") !=
             std::string::npos);
     Session q = s;
@@ -168,7 +168,7 @@ void TstCoefficientExport::csvColumnsAndRows() {
     const QList<QByteArray> lines = QByteArray::fromStdString(exportCsv(s, e)).trimmed().split('\n');
     QCOMPARE(lines[0], QByteArray("t,r_x,y_x,e_x,u_x,r_y,y_y,e_y,u_y,t_digital_x,y_digital_x,e_digital_x,"
                                   "u_digital_x,t_digital_y,y_digital_y,e_digital_y,u_digital_y"));
-    // The automatic run: the move and its settle (issue 19), both ends; at 0.01 s.
+    // The automatic run: the move and its settle, both ends; at 0.01 s.
     const double duration = e.duration.seconds;
     QVERIFY(duration > 130.0);
     QCOMPARE(lines.size(), qsizetype(1 + std::floor(duration / 0.01 + 1e-9) + 1));
@@ -310,7 +310,7 @@ void TstCoefficientExport::csvSamplesAtTheSessionDt() {
 
 void TstCoefficientExport::polePlacementAxisExports() {
     Session s = Session::paperDefault();
-    s.axes[1].method = DesignMethod::PolePlacementZpetc; // the y-axis ARX model of paper 001
+    s.axes[1].method = DesignMethod::PolePlacementZpetc; // the y-axis ARX model of Patrick, Ishak and Adnan
     const SessionEvaluation e = evaluateSession(s);
     QVERIFY(e.axes[1].ok);
     const QJsonObject y = files::coefficientsJson(s, e)["axes"].toArray()[1].toObject();
@@ -343,7 +343,7 @@ void TstCoefficientExport::polePlacementAxisExports() {
 
 QTEST_APPLESS_MAIN(TstCoefficientExport)
 void TstCoefficientExport::jsonRefusesNonFiniteNumbers() {
-    // Issue 20: QJsonValue writes inf as null, so the JSON export used to succeed with null
+    // QJsonValue writes inf as null, so the JSON export used to succeed with null
     // coefficients. Closed form: ki = wn^4/k0 = 1e4/77.8 = 128.5 at wn 10, and the Tustin
     // kp + ki Ts/2 overflows a double at Ts = 1e308.
     Session s = Session::paperDefault();

@@ -138,7 +138,7 @@ void TstSessionFile::roundTripEveryField() {
 
 namespace {
 
-/// A session of the G-code kind: the square example's first lines (issue 13).
+/// A session of the G-code kind: the square example's first lines.
 Session gcodeSession() {
     Session s = Session::paperDefault();
     s.trajectory.kind = TrajectoryKind::Gcode;
@@ -193,7 +193,7 @@ void TstSessionFile::filesWithoutGcodeLoad() {
 
 namespace {
 
-/// Paper 001's x axis as identified from a log (issue 11): an ARX origin, one deviation unknown.
+/// Patrick, Ishak and Adnan's x axis as identified from a log: an ARX origin, one deviation unknown.
 Session identifiedSession() {
     Session s = Session::paperDefault();
     ModelOrigin o;
@@ -214,7 +214,7 @@ Session identifiedSession() {
 
 void TstSessionFile::roundTripModelOrigin() {
     // Invariant: load(save(s)) == s with the model's origin, an unknown deviation (NaN, null in
-    // JSON) included; a hand-typed axis has none, and files before issue 11 load without it.
+    // JSON) included; a hand-typed axis has none, and files from before identification load without it.
     const Session s = identifiedSession();
     const QJsonObject json = sessionToJson(s);
     const QJsonObject origin = json["axes"].toArray()[0].toObject()["model_origin"].toObject();

@@ -24,7 +24,7 @@ void TstTuningSession::startsWithThePaperDesign() {
     TuningSession s;
     QVERIFY(s.session() == Session::paperDefault());
     QVERIFY(s.axisEvaluation(0).ok);
-    // Paper 000 Eq. 20: ki = kp psi1 = 16/77.8 (closed form).
+    // Braga et al. Eq. 20: ki = kp psi1 = 16/77.8 (closed form).
     XYT_COMPARE_NEAR(s.axisEvaluation(0).gt->ki, 16.0 / 77.8, 1e-14, 0.0);
 }
 
@@ -74,7 +74,7 @@ void TstTuningSession::invalidValueIsReportedNotThrown() {
     TuningSession s;
     s.setKp(0, -1.0); // a programmatic bad value: the evaluation names the field
     QVERIFY(!s.axisEvaluation(0).ok);
-    // The session path (AxisEvaluation::errorField), as for every field (issue 19).
+    // The session path (AxisEvaluation::errorField), as for every field.
     QCOMPARE(QString::fromStdString(s.axisEvaluation(0).errorField), QString("axes[0].gt.kp"));
     QVERIFY(s.axisEvaluation(1).ok);
 }

@@ -1,6 +1,6 @@
 %
 ; SPDX-License-Identifier: GPL-3.0-or-later
-; XY Tune example: the circle contour of paper 000, Eq. 23-24:
+; XY Tune example: the circle contour of Braga et al., Eq. 23-24:
 ; x = 25 sin(0.06 t), y = 25 cos(0.06 t) mm. Radius 25 mm about the origin, starting
 ; at the top (0, 25) and turning clockwise at 25 x 0.06 = 1.5 mm/s = 90 mm/min;
 ; one revolution takes 2 pi / 0.06 = 104.7 s. The paper ramps its amplitude in; here the
