@@ -616,16 +616,13 @@ void DesignSpaceView::relaxSpecification() {
 }
 
 void DesignSpaceView::applySpecification() {
-    Session next = session_->session();
-    next.spec.maxSettlingTimeSeconds = settling_->value();
-    next.spec.maxOvershootPct = overshoot_->value();
-    next.spec.maxErrorPct = error_->value();
-    next.umaxVolts = umax_->value();
-    next.spec.minPhaseMarginDeg = phaseMargin_->value();
-    next.spec.minGainMarginDb = gainMargin_->value();
-    if (next.spec == session_->session().spec && next.umaxVolts == session_->session().umaxVolts)
-        return;
-    session_->apply(next, tr("Change the specification"));
+    Specification spec = session_->session().spec;
+    spec.maxSettlingTimeSeconds = settling_->value();
+    spec.maxOvershootPct = overshoot_->value();
+    spec.maxErrorPct = error_->value();
+    spec.minPhaseMarginDeg = phaseMargin_->value();
+    spec.minGainMarginDb = gainMargin_->value();
+    session_->setSpecificationAndLimit(spec, umax_->value());
 }
 
 void DesignSpaceView::updateCurrentDesign() {
@@ -681,11 +678,10 @@ void DesignSpaceView::showHover(std::optional<std::pair<std::size_t, std::size_t
 void DesignSpaceView::loadCell(std::size_t iWn, std::size_t iKp) {
     if (!result_)
         return;
-    Session next = session_->session();
-    GtAxisSettings& gt = next.axes.at(static_cast<std::size_t>(studiedAxis_)).gt;
+    GtAxisSettings gt = session_->session().axes.at(static_cast<std::size_t>(studiedAxis_)).gt;
     gt.omegaNRadPerSec = result_->wnValues.at(iWn);
     gt.kp = result_->kpValues.at(iKp);
-    session_->apply(next, tr("Load design from the design space"));
+    session_->setGt(studiedAxis_, gt, tr("Load design from the design space"));
 }
 
 } // namespace xyt::ui

@@ -868,15 +868,14 @@ void IdentificationWindow::useForAxis(int axis) {
     if (!c)
         return;
     try {
-        Session next = session_->session();
-        auto& a = next.axes.at(static_cast<std::size_t>(axis));
-        a = axisWithIdentifiedModel(a, c->model, c->estimation);
+        const AxisSettings next = axisWithIdentifiedModel(session_->session().axes.at(static_cast<std::size_t>(axis)),
+                                                          c->model, c->estimation);
+        const bool changed = session_->setAxis(axis, next, tr("Use the identified %1 for axis %2")
+                                                               .arg(QString::fromStdString(c->model.structure),
+                                                                    axis == 0 ? tr("X") : tr("Y")));
         QUndoStack* stack = session_->undoStack();
-        const int before = stack->index();
-        session_->apply(next, tr("Use the identified %1 for axis %2")
-                                  .arg(QString::fromStdString(c->model.structure), axis == 0 ? tr("X") : tr("Y")));
         usedIndex_ = stack->index();
-        usedStep_ = usedIndex_ > before ? stack->command(usedIndex_ - 1) : nullptr;
+        usedStep_ = changed ? stack->command(usedIndex_ - 1) : nullptr;
         setStatus(tr("Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).")
                       .arg(axis == 0 ? tr("X") : tr("Y"), QString::fromStdString(c->model.structure)));
     } catch (const std::exception& e) {

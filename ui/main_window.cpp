@@ -308,23 +308,13 @@ QWidget* MainWindow::buildControls() {
         implementation_->setVisible(open);
     });
     connect(implementation_, &ImplementationEditor::implementationEdited, this,
-            [this](const ImplementationSettings& settings) {
-                Session next = session_->session();
-                next.implementation = settings;
-                session_->apply(next, tr("Change the digital implementation"));
-            });
+            [this](const ImplementationSettings& settings) { session_->setImplementation(settings); });
     connect(controllerTs_, &NumberField::valueAccepted, this, [this](double v) {
-        if (v == session_->session().controllerTsSeconds)
-            return;
-        Session next = session_->session();
-        next.controllerTsSeconds = v;
-        session_->apply(next, tr("Set the controller sample time to %1 s").arg(v));
+        if (v != session_->session().controllerTsSeconds)
+            session_->setControllerTs(v);
     });
     connect(discretization_, &QComboBox::activated, this, [this](int index) {
-        Session next = session_->session();
-        next.piDiscretization = index == 0 ? PiDiscretization::Tustin : PiDiscretization::BackwardEuler;
-        if (next.piDiscretization != session_->session().piDiscretization)
-            session_->apply(next, tr("Change the PI discretization"));
+        session_->setPiDiscretization(index == 0 ? PiDiscretization::Tustin : PiDiscretization::BackwardEuler);
     });
     layout->addWidget(actuatorBox);
     layout->addStretch(1);
@@ -338,10 +328,9 @@ QWidget* MainWindow::buildControls() {
     connect(plantEditor_, &PlantEditor::modelUnitEdited, this,
             [this](double v) { session_->setModelUnitScale(session_->currentAxis(), v); });
     connect(plantEditor_, &PlantEditor::presetChosen, this, [this](const GtPreset& preset) {
-        Session next = session_->session();
-        auto& gt = next.axes.at(static_cast<std::size_t>(session_->currentAxis())).gt;
-        gt = {preset.plant, preset.omegaNRadPerSec, preset.kp, preset.modelUnitsPerPositionUnit};
-        session_->apply(next, tr("Load preset %1").arg(QString::fromStdString(preset.name)));
+        session_->setGt(session_->currentAxis(),
+                        {preset.plant, preset.omegaNRadPerSec, preset.kp, preset.modelUnitsPerPositionUnit},
+                        tr("Load preset %1").arg(QString::fromStdString(preset.name)));
     });
     connect(trajectoryEditor_, &TrajectoryEditor::trajectoryEdited, session_,
             &TuningSession::setTrajectory);
@@ -615,9 +604,7 @@ void MainWindow::showStep(const AxisEvaluation& e, const AxisSettings& a, const 
 }
 
 void MainWindow::storeSnapshot(const QString& name) {
-    Session next = session_->session();
-    next.snapshots.push_back(next.snapshot(name.toStdString()));
-    session_->apply(next, tr("Store snapshot %1").arg(name));
+    session_->storeSnapshot(name);
 }
 
 void MainWindow::setOverlaySnapshot(int index) {

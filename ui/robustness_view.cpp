@@ -533,10 +533,10 @@ void RobustnessView::loadWorstCase() {
     if (contourResult_ && contourResult_->worst && contourProblem_) {
         const ContourRobustnessResult& r = *contourResult_;
         const std::vector<double>& v = r.runs[*r.worst].values;
-        Session next = session_->session();
-        next.axes[0] = perturbedAxis(next.axes[0], contourProblem_->x, lookup(r.parameterNames, v, "x."));
-        next.axes[1] = perturbedAxis(next.axes[1], contourProblem_->y, lookup(r.parameterNames, v, "y."));
-        session_->apply(next, tr("Load the worst plant pair of the contour analysis"));
+        std::array<AxisSettings, 2> axes = session_->session().axes;
+        axes[0] = perturbedAxis(axes[0], contourProblem_->x, lookup(r.parameterNames, v, "x."));
+        axes[1] = perturbedAxis(axes[1], contourProblem_->y, lookup(r.parameterNames, v, "y."));
+        session_->setAxes(axes, tr("Load the worst plant pair of the contour analysis"));
         return;
     }
     if (!result_ || !result_->worst || !problem_)

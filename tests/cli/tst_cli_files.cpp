@@ -319,7 +319,7 @@ void TstCliFiles::fullDiskKeepsOldFile() {
 
 void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     // The move-and-settle keys of the specification are written, read back (the report
-    // judges with them), optional in older files; a wn of 1e308 names the session path and the
+    // judges with them), optional in version-1 files; a wn of 1e308 names the session path and the
     // reason, not the reference model's "den[2]: must be a number, got NaN".
     QTemporaryDir dir;
     const QString path = dir.filePath("s.json");
@@ -337,10 +337,16 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains("move and settle (window 5 mm)"), run.out.constData());
     QVERIFY2(run.out.contains("Run: duration "), run.out.constData());
-    // Without both keys (a file written before the move-and-settle specification): the defaults.
+    // Without both keys: refused in the current format version, the defaults in a version-1
+    // file (written before the move-and-settle specification; read through its migration).
     spec.remove("in_position_window_mm");
     spec.remove("max_settle_time");
     root["specification"] = spec;
+    write(root);
+    run = runCli({"report", path});
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.contains("specification.in_position_window_mm: is missing"), run.err.constData());
+    root["version"] = 1;
     write(root);
     run = runCli({"report", path});
     QCOMPARE(run.exitCode, 0);

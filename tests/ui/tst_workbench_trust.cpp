@@ -139,7 +139,7 @@ void TstWorkbenchTrust::recoveryCopyFollowsUnsavedWork() {
     QFile file(store.copyPath());
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
-    const SessionLoadResult copy = sessionFromJson(root.value("session").toObject());
+    const files::SessionLoadResult copy = files::sessionFromJson(root.value("session").toObject());
     QVERIFY2(copy.ok, qPrintable(copy.message()));
     QVERIFY(copy.session == session_->session());
     // Undoing back to the saved state leaves nothing to recover.
@@ -218,7 +218,7 @@ void TstWorkbenchTrust::discardedWorkDoesNotComeBack() {
     window_->show();
     session_->markSaved();
     QVERIFY(window_->close());
-    const auto restored = sessionFromBytes(QSettings().value("session/last").toByteArray());
+    const auto restored = files::sessionFromBytes(QSettings().value("session/last").toByteArray());
     QVERIFY(restored.ok);
     QCOMPARE(restored.session.axes[0].gt.kp, 47.0);
 }
@@ -450,7 +450,7 @@ void TstWorkbenchTrust::plotsEqualTheCoreAfterEveryKindOfChange() {
     other.axes[1].gt.kp = 55.0;
     const QString path = dir.filePath("other.json");
     QString error;
-    QVERIFY2(saveSessionFile(other, path, &error), qPrintable(error));
+    QVERIFY2(files::saveSessionFile(other, path, &error), qPrintable(error));
     QVERIFY(window_->files()->openFile(path));
     check("load");
     session_->setCurrentAxis(0);

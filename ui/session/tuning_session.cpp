@@ -139,6 +139,57 @@ void TuningSession::setUmax(double umaxVolts) {
     apply(next, tr("Set the actuator limit to %1 V").arg(umaxVolts));
 }
 
+void TuningSession::setImplementation(const ImplementationSettings& implementation) {
+    Session next = session_;
+    next.implementation = implementation;
+    apply(next, tr("Change the digital implementation"));
+}
+
+void TuningSession::setControllerTs(double seconds) {
+    Session next = session_;
+    next.controllerTsSeconds = seconds;
+    apply(next, tr("Set the controller sample time to %1 s").arg(seconds));
+}
+
+void TuningSession::setPiDiscretization(PiDiscretization discretization) {
+    Session next = session_;
+    next.piDiscretization = discretization;
+    apply(next, tr("Change the PI discretization"));
+}
+
+void TuningSession::setSpecificationAndLimit(const Specification& spec, double umaxVolts) {
+    Session next = session_;
+    next.spec = spec;
+    next.umaxVolts = umaxVolts;
+    apply(next, tr("Change the specification"));
+}
+
+void TuningSession::setGt(int axis, const GtAxisSettings& gt, const QString& description) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).gt = gt;
+    apply(next, description);
+}
+
+bool TuningSession::setAxis(int axis, const AxisSettings& settings, const QString& description) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)) = settings;
+    const bool changes = !(next == session_);
+    apply(next, description);
+    return changes;
+}
+
+void TuningSession::setAxes(const std::array<AxisSettings, 2>& axes, const QString& description) {
+    Session next = session_;
+    next.axes = axes;
+    apply(next, description);
+}
+
+void TuningSession::storeSnapshot(const QString& name) {
+    Session next = session_;
+    next.snapshots.push_back(next.snapshot(name.toStdString()));
+    apply(next, tr("Store snapshot %1").arg(name));
+}
+
 } // namespace xyt::ui
 
 namespace xyt::ui {

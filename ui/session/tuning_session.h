@@ -94,6 +94,19 @@ public:
     void setModelUnitScale(int axis, double modelUnitsPerPositionUnit);
     void setTrajectory(const TrajectorySettings& trajectory);
     void setUmax(double umaxVolts);
+    void setImplementation(const ImplementationSettings& implementation);
+    void setControllerTs(double seconds);
+    void setPiDiscretization(PiDiscretization discretization);
+    /// The specification and the actuator limit together (the design-space view edits both).
+    void setSpecificationAndLimit(const Specification& spec, double umaxVolts);
+    /// A whole Guillemin–Truxal parameter set of an axis (a preset, a point of the design space).
+    void setGt(int axis, const GtAxisSettings& gt, const QString& description);
+    /// One axis replaced (an identified model with its origin); false when nothing changed.
+    bool setAxis(int axis, const AxisSettings& settings, const QString& description);
+    /// Both axes replaced together (a worst-case plant pair), as one step.
+    void setAxes(const std::array<AxisSettings, 2>& axes, const QString& description);
+    /// Stores the current design as a snapshot named @p name.
+    void storeSnapshot(const QString& name);
 
 public slots:
     void setCurrentAxis(int axis);

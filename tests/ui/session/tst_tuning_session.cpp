@@ -18,6 +18,7 @@ private slots:
     void differentParametersDoNotMerge();
     void invalidValueIsReportedNotThrown();
     void cleanState();
+    void viewChangesAreOneStepEach();
 };
 
 void TstTuningSession::startsWithThePaperDesign() {
@@ -91,6 +92,58 @@ void TstTuningSession::cleanState() {
     s.reset(Session::paperDefault());
     QVERIFY(!s.isModified());
     QCOMPARE(s.undoStack()->count(), 0);
+}
+
+void TstTuningSession::viewChangesAreOneStepEach() {
+    // Every change a view makes goes through the presenter: one undo step each, named, and
+    // none for a change that changes nothing; undo restores the session exactly (invariant).
+    TuningSession s;
+    const Session start = s.session();
+    ImplementationSettings implementation;
+    implementation.dacBits = 12;
+    s.setImplementation(implementation);
+    s.setControllerTs(0.002);
+    s.setPiDiscretization(PiDiscretization::BackwardEuler);
+    Specification spec = start.spec;
+    spec.maxOvershootPct = 5.0;
+    s.setSpecificationAndLimit(spec, 3.0);
+    GtAxisSettings gt = start.axes[1].gt;
+    gt.omegaNRadPerSec = 1.5;
+    gt.kp = 20.0;
+    s.setGt(1, gt, "Load design from the design space");
+    AxisSettings identified = start.axes[0];
+    identified.method = DesignMethod::PolePlacementZpetc;
+    QVERIFY(s.setAxis(0, identified, "Use the identified ARX(2,3,1) for axis X"));
+    std::array<AxisSettings, 2> pair = s.session().axes;
+    pair[0].pp.a[1] = -1.7;
+    pair[1].gt.plant.k0 = 80.0;
+    s.setAxes(pair, "Load the worst plant pair");
+    s.storeSnapshot("tuned");
+    QCOMPARE(s.undoStack()->count(), 8);
+    QCOMPARE(s.undoStack()->text(4), QString("Load design from the design space"));
+    QCOMPARE(s.undoStack()->text(7), QString("Store snapshot tuned"));
+    const Session end = s.session();
+    QCOMPARE(end.implementation.dacBits, 12);
+    QCOMPARE(end.controllerTsSeconds, 0.002);
+    QCOMPARE(end.piDiscretization, PiDiscretization::BackwardEuler);
+    QCOMPARE(end.spec.maxOvershootPct, 5.0);
+    QCOMPARE(end.umaxVolts, 3.0);
+    QVERIFY(end.axes[1].gt.omegaNRadPerSec == 1.5 && end.axes[1].gt.plant.k0 == 80.0);
+    QCOMPARE(end.axes[0].method, DesignMethod::PolePlacementZpetc);
+    QCOMPARE(end.snapshots.size(), std::size_t{1});
+    QCOMPARE(end.snapshots[0].name, std::string("tuned"));
+
+    // The same values again: no step.
+    s.setImplementation(implementation);
+    s.setControllerTs(0.002);
+    s.setPiDiscretization(PiDiscretization::BackwardEuler);
+    s.setSpecificationAndLimit(spec, 3.0);
+    s.setAxes(pair, "again");
+    QVERIFY(!s.setAxis(0, end.axes[0], "again"));
+    QCOMPARE(s.undoStack()->count(), 8);
+    for (int i = 0; i < 8; ++i)
+        s.undoStack()->undo();
+    QVERIFY(s.session() == start);
 }
 
 QTEST_MAIN(TstTuningSession)
