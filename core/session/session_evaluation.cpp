@@ -541,9 +541,10 @@ SessionEvaluation evaluateSession(const Session& session) {
         // The program's contour run simulates both axes once more, from the same reference
         // samples, for the contour error along the path and (one full circle) the ballbar runs.
         try {
-            const GcodeProgram program = readTrajectoryProgram(session.trajectory.gcode);
-            out.program = std::make_shared<const ContourRun>(runSessionProgram(session, program));
-            out.programPath = std::make_shared<const Path>(program.path);
+            const std::shared_ptr<const GcodeProgram> program = sessionProgram(session.trajectory.gcode);
+            out.program = std::make_shared<const ContourRun>(runSessionProgram(session, *program));
+            // The path of the shared program itself (aliasing it), not a copy per evaluation.
+            out.programPath = std::shared_ptr<const Path>(program, &program->path);
         } catch (const InvalidInput& e) {
             out.programError = e.what();
         }
