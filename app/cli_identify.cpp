@@ -9,6 +9,7 @@
 
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
+#include "core/identification/continuous_fit.h"
 #include "core/identification/identification.h"
 #include "core/identification/preprocessing.h"
 #include "core/io/file_io.h"
@@ -269,17 +270,15 @@ int runIdentify(const QStringList& argv) {
         // The plant integrates: its model starts at rest at position 0, so the record's initial
         // position is taken off (said here, not guessed silently).
         for (IoData* d : {&estimation, validation ? &*validation : nullptr}) {
-            if (!d)
+            const std::optional<double> y0 = d ? subtractInitialPosition(*d) : std::nullopt;
+            if (!y0)
                 continue;
-            const double y0 = d->y.front();
-            for (double& y : d->y)
-                y -= y0;
             if (d == &estimation)
-                estimationOrigin = y0;
+                estimationOrigin = *y0;
             notes.append(QStringLiteral("%1: the first sample %2 mm was subtracted for the fit; initial_position "
                                         "adds it back (where the table stood)")
                              .arg(QString::fromStdString(d->source))
-                             .arg(y0, 0, 'g', 10));
+                             .arg(*y0, 0, 'g', 10));
         }
     }
     const IdentifiedModel m = identifyModel(estimation, validation ? &*validation : nullptr, spec);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/identification_window.h"
 
+#include "core/identification/continuous_fit.h"
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
 #include "core/identification/preprocessing.h"
@@ -574,15 +575,13 @@ void IdentificationWindow::fit() {
         // The plant integrates: its model starts at rest at position 0, so the record's initial
         // position is taken off (as xytune-cli identify does), and said.
         for (IoData* d : {&candidate.estimation, candidate.validation ? &*candidate.validation : nullptr}) {
-            if (!d || d->y.empty())
+            const std::optional<double> y0 = d ? subtractInitialPosition(*d) : std::nullopt;
+            if (!y0)
                 continue;
-            const double y0 = d->y.front();
-            for (double& y : d->y)
-                y -= y0;
             candidate.notes << tr("%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); "
                                   "the fit estimates where the table stood")
                                    .arg(QString::fromStdString(d->source))
-                                   .arg(y0, 0, 'g', 10);
+                                   .arg(*y0, 0, 'g', 10);
         }
     }
     pending_ = candidate;

@@ -170,6 +170,15 @@ ThirdOrderPlant gridStart(const IoData& data) {
 
 } // namespace
 
+std::optional<double> subtractInitialPosition(IoData& data) {
+    if (data.y.empty())
+        return std::nullopt;
+    const double y0 = data.y.front();
+    for (double& y : data.y)
+        y -= y0;
+    return y0;
+}
+
 std::vector<double> simulateThirdOrderPlant(const ThirdOrderPlant& plant,
                                             const std::vector<double>& u, double tsSeconds) {
     plant.validate();

@@ -73,6 +73,16 @@ struct ContinuousFitResult {
 };
 
 /**
+ * Takes the record's first output sample y[0] off every output sample (y[k] - y[0]), in place:
+ * the plant integrates, and the model fitThirdOrderPlant fits starts at rest at position 0, so a
+ * record taken where the table stood elsewhere is moved to start at 0 first (the fit's
+ * estimateInitialPosition then estimates where the table really stood, noise and all).
+ * @return y[0], the position the outputs are now relative to (the caller says so to the user);
+ *         unset, and the record untouched, when it has no output sample.
+ */
+std::optional<double> subtractInitialPosition(IoData& data);
+
+/**
  * Output-error fit of G(s) = k0 / (s^3 + a1 s^2 + a2 s) to @p data: minimizes
  * V = (1/N) sum (y[k] - yhat[k])^2 with yhat = simulateThirdOrderPlant (so y must start at rest
  * at 0: subtract the initial position first), by Levenberg-Marquardt (least_squares.h) with a

@@ -77,12 +77,12 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
 
 /// Runs both axes of @p session along @p path at @p feeds.
 ContourTrace trace(const Session& session, const Path& path, const std::vector<double>& feeds,
-                   const ContourRunOptions& options) {
+                   const ContourRunOptions& options, const FeedProfile* planned = nullptr) {
     requirePositive(session.umaxVolts, "umax");
     FeedProfileOptions profileOptions = options.profile;
     profileOptions.maxSamples = std::min(profileOptions.maxSamples, sampleLimit());
     ContourTrace out;
-    out.profile = planFeedProfile(path, feeds, profileOptions);
+    out.profile = planned ? *planned : planFeedProfile(path, feeds, profileOptions);
     const FeedProfile& p = out.profile;
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
@@ -157,10 +157,10 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
 }
 
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
-                             const ContourRunOptions& options) {
+                             const ContourRunOptions& options, const FeedProfile* plannedProfile) {
     const std::vector<double> feeds = programFeeds(program, options.profile.feedScale);
     ContourRun out;
-    out.trace = trace(session, program.path, feeds, options);
+    out.trace = trace(session, program.path, feeds, options, plannedProfile);
     ContourErrorOptions errorOptions;
     errorOptions.cornerAngleDeg = options.profile.cornerAngleDeg;
     errorOptions.cornerWindowMm = options.cornerWindowMm;

@@ -82,9 +82,12 @@ struct ContourRun {
  * holds full circles among other moves, the figures are of its own runs (ContourCircularTest).
  * @throws InvalidInput naming the session field of a design that cannot be built
  *         ("axes[1].gt.wn", "axes[0].pp.b", "umax") or the option ("dt", "max_accel", ...).
+ * @p plannedProfile: the program's profile when the caller has planned it already with
+ * options.profile (the session's shared one, runSessionProgram), so it is not planned again.
  */
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
-                             const ContourRunOptions& options = {});
+                             const ContourRunOptions& options = {},
+                             const FeedProfile* plannedProfile = nullptr);
 
 /**
  * The circular test of a program holding full circles among other moves, on its traced run

@@ -26,14 +26,46 @@ namespace {
 
 } // namespace
 
-GcodeProgram readTrajectoryProgram(const GcodeTrajectory& gcode) {
+ProgramState::ProgramState(std::string programText)
+    : text(std::move(programText)), hash(std::hash<std::string>{}(text)) {}
+
+namespace {
+
+GcodeProgram readProgramText(const std::string& text) {
     try {
-        return readGcode(gcode.program);
+        return readGcode(text);
     } catch (const InvalidInput& e) {
         // The reader names the line ("line 12") or the whole program ("program").
         throw InvalidInput("trajectory.gcode.program",
                            e.field() == "program" ? e.reason() : e.field() + ": " + e.reason());
     }
+}
+
+/// The empty program's state (a default ProgramText holds none): read like any other.
+const ProgramState& stateOf(const ProgramText& text) {
+    static const ProgramState empty{std::string()};
+    return text.state() ? *text.state() : empty;
+}
+
+} // namespace
+
+GcodeProgram readTrajectoryProgram(const GcodeTrajectory& gcode) {
+    return *sessionProgram(gcode);
+}
+
+std::shared_ptr<const GcodeProgram> sessionProgram(const GcodeTrajectory& gcode) {
+    const ProgramState& state = stateOf(gcode.program);
+    std::call_once(state.readOnce, [&state] {
+        ++state.reads;
+        try {
+            state.program = std::make_shared<const GcodeProgram>(readProgramText(state.text));
+        } catch (const InvalidInput& e) {
+            state.readError = e;
+        }
+    });
+    if (state.readError)
+        throw *state.readError;
+    return state.program;
 }
 
 ContourRunOptions programRunOptions(const TrajectorySettings& trajectory) {
@@ -57,19 +89,56 @@ FeedProfile trajectoryProgramProfile(const TrajectorySettings& trajectory,
 
 namespace {
 
-/// The program's profile without its samples (the pieces and the run time), refused as the
-/// sampled one would be: the sample bound at the trajectory's dt is checked all the same.
-FeedProfile unsampledProfile(const TrajectorySettings& trajectory, const GcodeProgram& program) {
-    try {
-        FeedProfileOptions options = programRunOptions(trajectory).profile;
-        options.withSamples = false;
-        return planFeedProfile(program, options);
-    } catch (const InvalidInput& e) {
-        rethrowAsSessionPath(e);
-    }
+bool sameOptions(const FeedProfileOptions& a, const FeedProfileOptions& b) {
+    return a.feedScale == b.feedScale && a.maxAccelMmPerS2 == b.maxAccelMmPerS2 &&
+           a.maxJerkMmPerS3 == b.maxJerkMmPerS3 && a.cornerAngleDeg == b.cornerAngleDeg &&
+           a.dtSeconds == b.dtSeconds && a.maxSamples == b.maxSamples && a.withSamples == b.withSamples;
 }
 
+/// Profiles kept per program: the sampled and the unsampled one of the current options, and as
+/// many of the options just left (a slider step back reuses them). A sampled profile holds up
+/// to the sample limit's vectors, so few are kept.
+constexpr std::size_t kKeptPlans = 4;
+
 } // namespace
+
+std::shared_ptr<const FeedProfile> sessionProgramProfile(const TrajectorySettings& trajectory,
+                                                         bool withSamples) {
+    const std::shared_ptr<const GcodeProgram> program = sessionProgram(trajectory.gcode);
+    FeedProfileOptions options = programRunOptions(trajectory).profile;
+    options.withSamples = withSamples;
+    const ProgramState& state = stateOf(trajectory.gcode.program);
+    std::unique_lock lock(state.plansMutex);
+    for (auto it = state.planned.begin(); it != state.planned.end(); ++it) {
+        if (!sameOptions(it->options, options))
+            continue;
+        ProgramState::Plan plan = *it;
+        state.planned.erase(it);
+        state.planned.push_back(plan); // the newest last
+        if (plan.error)
+            throw *plan.error;
+        return plan.profile;
+    }
+    // Planned under the lock: the two axes' evaluations ask for the same profile at once, and
+    // the second waits for the first rather than planning it again.
+    ProgramState::Plan plan{options, nullptr, std::nullopt};
+    ++state.plans;
+    try {
+        try {
+            plan.profile = std::make_shared<const FeedProfile>(planFeedProfile(*program, options));
+        } catch (const InvalidInput& e) {
+            rethrowAsSessionPath(e);
+        }
+    } catch (const InvalidInput& e) {
+        plan.error = e;
+    }
+    if (state.planned.size() >= kKeptPlans)
+        state.planned.erase(state.planned.begin());
+    state.planned.push_back(plan);
+    if (plan.error)
+        throw *plan.error;
+    return plan.profile;
+}
 
 void checkProgramOptions(const GcodeTrajectory& gcode) {
     requirePositive(gcode.feedScale, "trajectory.gcode.feed_scale");
@@ -78,12 +147,13 @@ void checkProgramOptions(const GcodeTrajectory& gcode) {
 }
 
 double programRunSeconds(const TrajectorySettings& trajectory) {
-    return unsampledProfile(trajectory, readTrajectoryProgram(trajectory.gcode)).totalTimeSeconds;
+    // Planned without its samples but refused as the sampled profile would be.
+    return sessionProgramProfile(trajectory, false)->totalTimeSeconds;
 }
 
 ProgramSummary summarizeProgram(const TrajectorySettings& trajectory) {
-    const GcodeProgram program = readTrajectoryProgram(trajectory.gcode);
-    const FeedProfile profile = unsampledProfile(trajectory, program);
+    const GcodeProgram& program = *sessionProgram(trajectory.gcode);
+    const FeedProfile& profile = *sessionProgramProfile(trajectory, false);
     ProgramSummary out;
     out.lines = program.lines;
     out.moves = program.path.size();
@@ -97,13 +167,11 @@ ProgramSummary summarizeProgram(const TrajectorySettings& trajectory) {
 
 std::function<double(double)> programAxisReference(const TrajectorySettings& trajectory,
                                                    int axisIndex) {
-    const FeedProfile profile =
-        trajectoryProgramProfile(trajectory, readTrajectoryProgram(trajectory.gcode));
-    auto t = std::make_shared<const std::vector<double>>(profile.t);
-    auto v = std::make_shared<const std::vector<double>>(axisIndex == 0 ? profile.x : profile.y);
-    return [t, v](double time) {
-        const std::vector<double>& ts = *t;
-        const std::vector<double>& ys = *v;
+    // The shared profile itself, not a copy of its samples.
+    const std::shared_ptr<const FeedProfile> profile = sessionProgramProfile(trajectory);
+    return [profile, axisIndex](double time) {
+        const std::vector<double>& ts = profile->t;
+        const std::vector<double>& ys = axisIndex == 0 ? profile->x : profile->y;
         if (time <= ts.front())
             return ys.front();
         if (time >= ts.back())
@@ -117,7 +185,16 @@ std::function<double(double)> programAxisReference(const TrajectorySettings& tra
 
 ContourRun runSessionProgram(const Session& session, const GcodeProgram& program) {
     try {
-        return runProgramContour(session, program, programRunOptions(session.trajectory));
+        // The session's own program runs on its shared profile, planned already for the axes.
+        std::shared_ptr<const GcodeProgram> own;
+        try {
+            own = sessionProgram(session.trajectory.gcode);
+        } catch (const InvalidInput&) {
+            // not the session's program: it is planned by the run
+        }
+        const std::shared_ptr<const FeedProfile> planned =
+            own.get() == &program ? sessionProgramProfile(session.trajectory) : nullptr;
+        return runProgramContour(session, program, programRunOptions(session.trajectory), planned.get());
     } catch (const InvalidInput& e) {
         rethrowAsSessionPath(e);
     }

@@ -1,16 +1,53 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
+#include "core/model/errors.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace xyt {
+
+/**
+ * A program text with what was read and planned from it, shared by every copy of a session
+ * holding the text (ProgramText): the text is read once, and each feed profile is planned once
+ * per set of planning options (the G-code fields and dt), however many evaluations, copies and
+ * edits of other fields follow. The text never changes; the reads and plans are filled on first
+ * use, from any thread.
+ */
+struct ProgramState {
+    explicit ProgramState(std::string programText);
+    const std::string text;
+    const std::size_t hash; ///< of the text, computed once
+
+    /// The program read (readGcode), or its refusal, on first use.
+    mutable std::once_flag readOnce;
+    mutable std::shared_ptr<const GcodeProgram> program;
+    mutable std::optional<InvalidInput> readError;
+    /// How many times the text was read (0 or 1) and profiles were planned from it: what the
+    /// cache saves is observable (tests).
+    mutable std::atomic<int> reads{0};
+    mutable std::atomic<int> plans{0};
+
+    /// The last few profiles planned, newest last, keyed by their options.
+    struct Plan {
+        FeedProfileOptions options;
+        std::shared_ptr<const FeedProfile> profile;
+        std::optional<InvalidInput> error;
+    };
+    mutable std::mutex plansMutex;
+    mutable std::vector<Plan> planned;
+};
 
 /**
  * The G-code trajectory of a session (TrajectoryKind::Gcode): its program read, the run options
@@ -21,6 +58,16 @@ namespace xyt {
 
 /// Reads the program text of @p gcode. @throws InvalidInput "trajectory.gcode.program".
 GcodeProgram readTrajectoryProgram(const GcodeTrajectory& gcode);
+
+/// readTrajectoryProgram, read once per program text and shared (ProgramState).
+/// @throws InvalidInput "trajectory.gcode.program", the same refusal each time.
+std::shared_ptr<const GcodeProgram> sessionProgram(const GcodeTrajectory& gcode);
+
+/// The program's feed profile at the trajectory's dt, with its samples or (@p withSamples
+/// false) only its pieces and run time, planned once per program text and planning options and
+/// shared. @throws InvalidInput naming the session path (see above), the same refusal each time.
+std::shared_ptr<const FeedProfile> sessionProgramProfile(const TrajectorySettings& trajectory,
+                                                         bool withSamples = true);
 
 /// The contour-run options of @p trajectory: the G-code fields and dt as the profile's step.
 ContourRunOptions programRunOptions(const TrajectorySettings& trajectory);

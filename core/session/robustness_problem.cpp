@@ -90,16 +90,17 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
     if (session.trajectory.kind != TrajectoryKind::Gcode)
         throw InvalidInput("trajectory", "the contour analysis needs a circle or a G-code program (a cubic "
                                          "drives both axes along one line)");
-    const GcodeProgram program = readTrajectoryProgram(session.trajectory.gcode);
+    const std::shared_ptr<const GcodeProgram> shared = sessionProgram(session.trajectory.gcode);
+    const GcodeProgram& program = *shared;
     const ContourRunOptions run = programRunOptions(session.trajectory);
-    const FeedProfile profile = trajectoryProgramProfile(session.trajectory, program);
+    const FeedProfile& profile = *sessionProgramProfile(session.trajectory);
     p.x = sessionRobustnessProblem(session, 0);
     p.y = sessionRobustnessProblem(session, 1);
     p.x.move.reset();
     p.y.move.reset();
     followProfile(p.x, profile, 0);
     followProfile(p.y, profile, 1);
-    p.geometry.path = std::make_shared<const Path>(program.path);
+    p.geometry.path = std::shared_ptr<const Path>(shared, &shared->path); // the shared program's
     p.geometry.pathOptions.cornerAngleDeg = run.profile.cornerAngleDeg;
     p.geometry.pathOptions.cornerWindowMm = run.cornerWindowMm;
     p.geometry.pathOptions.measuredSegments.resize(program.segments.size());

@@ -10,6 +10,37 @@
 
 namespace xyt {
 
+namespace {
+
+std::shared_ptr<const ProgramState> stateOf(std::string text) {
+    if (text.empty())
+        return nullptr; // the empty program needs no state: a default session allocates none
+    return std::make_shared<const ProgramState>(std::move(text));
+}
+
+} // namespace
+
+ProgramText::ProgramText(std::string text) : state_(stateOf(std::move(text))) {}
+
+ProgramText::ProgramText(const char* text) : ProgramText(std::string(text ? text : "")) {}
+
+const std::string& ProgramText::str() const {
+    static const std::string empty;
+    return state_ ? state_->text : empty;
+}
+
+bool operator==(const ProgramText& a, const ProgramText& b) {
+    if (a.state_ == b.state_)
+        return true; // one shared text (or both empty)
+    if (a.size() != b.size())
+        return false;
+    if (!a.state_ || !b.state_)
+        return true; // both empty
+    // The hash tells most different texts apart without reading them; equal hashes may still
+    // be different texts.
+    return a.state_->hash == b.state_->hash && a.state_->text == b.state_->text;
+}
+
 double TrajectorySettings::effectiveDurationSeconds() const {
     if (kind == TrajectoryKind::Gcode) {
         try {

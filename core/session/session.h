@@ -6,11 +6,40 @@
 #include "core/study/specification.h"
 
 #include <array>
+#include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace xyt {
+
+struct ProgramState; // core/session/program_trajectory.h
+
+/**
+ * The text of a G-code program, immutable once set and shared by every copy of the session
+ * that holds it, together with what was read and planned from it (ProgramState): a session is
+ * copied into every undo step and view, and its program is read once per text rather than by
+ * each evaluation. Two texts compare by size and by a hash computed once when the text is set,
+ * and by content only when both agree, so comparing sessions does not walk megabytes of
+ * program on every edit.
+ */
+class ProgramText {
+public:
+    ProgramText() = default;
+    ProgramText(std::string text); // NOLINT: implicit, a program is set from its text
+    ProgramText(const char* text);  // NOLINT
+    const std::string& str() const;
+    operator const std::string&() const { return str(); } // NOLINT
+    bool empty() const { return str().empty(); }
+    std::size_t size() const { return str().size(); }
+    /// The shared text and its reads and plans; null for the empty program.
+    const std::shared_ptr<const ProgramState>& state() const { return state_; }
+    friend bool operator==(const ProgramText& a, const ProgramText& b);
+
+private:
+    std::shared_ptr<const ProgramState> state_;
+};
 
 /// How an axis is controlled.
 enum class DesignMethod {
@@ -79,7 +108,7 @@ enum class TrajectoryKind { Cubic, Circle, Gcode };
  */
 struct GcodeTrajectory {
     std::string fileName;  ///< where the program was read from (its name only, for display)
-    std::string program;   ///< the program text
+    ProgramText program;   ///< the program text
     double feedScale = 1.0;
     double maxAccelMmPerS2 = 500.0;
     double maxJerkMmPerS3 = 0.0; ///< 0: none (trapezoidal profile)

@@ -233,9 +233,11 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     options.dtSeconds = session.trajectory.dtSeconds;
     options.umaxVolts = session.umaxVolts;
     options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
+    // The reference first: an unreadable program has no run time, and its refusal names the
+    // program rather than the step that a run of no length would be blamed on.
+    const auto reference = sessionReference(session.trajectory, axisIndex);
     const auto times = axisSampleTimes(session.trajectory, duration, options.dtSeconds, "trajectory.dt");
-    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
-                           sampled(sessionReference(session.trajectory, axisIndex), times), options);
+    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller, sampled(reference, times), options);
     out.metrics = trackingMetrics(out.run);
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
@@ -311,10 +313,10 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     out.zpetc = designZpetc(*out.pp);
     for (const auto& w : out.pp->warnings)
         out.warnings.push_back(w);
+    const auto reference = sessionReference(session.trajectory, axisIndex); // first, as evaluateGt
     const auto times = axisSampleTimes(session.trajectory, duration, pp.tsSeconds,
                                        "axes[" + std::to_string(axisIndex) + "].pp.ts");
     const std::size_t n = times.size();
-    const auto reference = sessionReference(session.trajectory, axisIndex);
     std::vector<double> r(n + static_cast<std::size_t>(out.zpetc->previewSteps));
     for (std::size_t k = 0; k < r.size(); ++k)
         r[k] = reference(static_cast<double>(k) * pp.tsSeconds);
@@ -539,9 +541,10 @@ SessionEvaluation evaluateSession(const Session& session) {
         // The program's contour run simulates both axes once more, from the same reference
         // samples, for the contour error along the path and (one full circle) the ballbar runs.
         try {
-            const GcodeProgram program = readTrajectoryProgram(session.trajectory.gcode);
-            out.program = std::make_shared<const ContourRun>(runSessionProgram(session, program));
-            out.programPath = std::make_shared<const Path>(program.path);
+            const std::shared_ptr<const GcodeProgram> program = sessionProgram(session.trajectory.gcode);
+            out.program = std::make_shared<const ContourRun>(runSessionProgram(session, *program));
+            // The path of the shared program itself (aliasing it), not a copy per evaluation.
+            out.programPath = std::shared_ptr<const Path>(program, &program->path);
         } catch (const InvalidInput& e) {
             out.programError = e.what();
         }

@@ -173,6 +173,26 @@ private slots:
                  EstimationStatus::Cancelled);
     }
 
+    // The identification window and xytune-cli identify both fit a record taken off its first
+    // sample: y[k] - y[0] exactly (one subtraction of representable values: compared bit for
+    // bit), y[0] returned to be said and added back; the input untouched; an empty record
+    // unchanged and no position.
+    void firstSampleIsTakenOff() {
+        IoData d = ioData({0.0, 1.0, -1.0, 2.5}, {125.5, 125.75, 126.0, 124.5}, kTs);
+        const std::vector<double> u = d.u;
+        const std::optional<double> y0 = subtractInitialPosition(d);
+        QVERIFY(y0);
+        QCOMPARE(*y0, 125.5);
+        QCOMPARE(d.y, (std::vector<double>{0.0, 0.25, 0.5, -1.0}));
+        QCOMPARE(d.u, u);
+        // Taken off once: a second call finds the record at 0 already.
+        QCOMPARE(subtractInitialPosition(d), std::optional<double>(0.0));
+        QCOMPARE(d.y, (std::vector<double>{0.0, 0.25, 0.5, -1.0}));
+        IoData empty;
+        QVERIFY(!subtractInitialPosition(empty));
+        QVERIFY(empty.y.empty());
+    }
+
     void invalidInputThrows() {
         try {
             fitThirdOrderPlant(plantData(lowerBase(), 9, 0.0, 0));

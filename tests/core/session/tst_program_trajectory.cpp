@@ -31,6 +31,8 @@ private slots:
     void ballbarFiguresOfAKnownRadialDeviation_data();
     void ballbarFiguresOfAKnownRadialDeviation();
     void ballbarProgramIsEvaluated();
+    void programIsReadAndPlannedOncePerChange();
+    void programsCompareByContent();
 };
 
 namespace {
@@ -383,6 +385,97 @@ void TstProgramTrajectory::ballbarProgramIsEvaluated() {
     QCOMPARE(*c.iso.hysteresisH, *both.hysteresisH);
     QCOMPARE(c.reverseIso->circularDeviationG, reverse.circularDeviationG);
     QVERIFY(c.iso.circularDeviationG > 0.0 && *c.iso.hysteresisH > 0.0);
+}
+
+void TstProgramTrajectory::programIsReadAndPlannedOncePerChange() {
+    // The session's program is read once per text and its profile planned once per set of
+    // planning options (ProgramState), however many evaluations, copies and edits of other fields
+    // follow. Each evaluation used to read the text five times (the run time, both axes'
+    // references, the contour run, the path) and plan it four.
+    Session s = Session::paperDefault();
+    s.trajectory = straightMove();
+    s.trajectory.dtSeconds = 0.01;
+    const std::shared_ptr<const ProgramState> state = s.trajectory.gcode.program.state();
+    QVERIFY(state);
+    QCOMPARE(state->reads.load(), 0);
+    const SessionEvaluation first = evaluateSession(s);
+    QVERIFY2(first.axes[0].ok, first.axes[0].error.c_str());
+    QVERIFY(first.program && first.programPath);
+    // One read; two plans: the run time (without samples) and the sampled profile.
+    QCOMPARE(state->reads.load(), 1);
+    QCOMPARE(state->plans.load(), 2);
+    for (int i = 0; i < 3; ++i) {
+        const SessionEvaluation again = evaluateSession(s);
+        QVERIFY(again.programPath == first.programPath); // the one shared path, not a copy
+        QCOMPARE(again.program->contour.maxAbs, first.program->contour.maxAbs);
+    }
+    (void)summarizeProgram(s.trajectory);
+    (void)s.trajectory.effectiveDurationSeconds();
+    (void)chooseRunDuration(s);
+    QCOMPARE(state->reads.load(), 1);
+    QCOMPARE(state->plans.load(), 2);
+    // An edit of the design keeps the program (a session copy shares it).
+    Session edited = s;
+    edited.axes[0].gt.kp = 40.0;
+    QVERIFY(edited.trajectory.gcode.program.state() == state);
+    QVERIFY(evaluateSession(edited).axes[0].ok);
+    QCOMPARE(state->reads.load(), 1);
+    QCOMPARE(state->plans.load(), 2);
+    // A planning option is a new plan (sampled and not) of the same read program; going back
+    // to the previous options finds their plans kept.
+    edited.trajectory.gcode.feedScale = 0.5;
+    QVERIFY(evaluateSession(edited).axes[1].ok);
+    QCOMPARE(state->reads.load(), 1);
+    QCOMPARE(state->plans.load(), 4);
+    edited.trajectory.gcode.feedScale = 1.0;
+    QVERIFY(evaluateSession(edited).axes[1].ok);
+    QCOMPARE(state->plans.load(), 4);
+    // The trapezoid's closed form still holds on the shared profile: 10/10 + 10/100 s.
+    XYT_COMPARE_NEAR(programRunSeconds(edited.trajectory), 1.1, 1e-12, 0.0);
+    // A new text is read once, itself; the old state is untouched.
+    edited.trajectory.gcode.program = "G21 G90\nG1 X20 Y0 F600\n";
+    const std::shared_ptr<const ProgramState> next = edited.trajectory.gcode.program.state();
+    QVERIFY(next != state);
+    QVERIFY(evaluateSession(edited).axes[0].ok);
+    QVERIFY(evaluateSession(edited).axes[0].ok);
+    QCOMPARE(next->reads.load(), 1);
+    QCOMPARE(next->plans.load(), 2);
+    QCOMPARE(state->reads.load(), 1);
+    XYT_COMPARE_NEAR(programRunSeconds(edited.trajectory), 20.0 / 10.0 + 10.0 / 100.0, 1e-12, 0.0);
+    // An unreadable text is read once too, and refused the same way each time.
+    edited.trajectory.gcode.program = "G1 X1 F60\nG5\n";
+    for (int i = 0; i < 3; ++i) {
+        const SessionEvaluation e = evaluateSession(edited);
+        QVERIFY(!e.axes[0].ok);
+        QCOMPARE(QString::fromStdString(e.axes[0].errorField), QString("trajectory.gcode.program"));
+    }
+    QCOMPARE(edited.trajectory.gcode.program.state()->reads.load(), 1);
+}
+
+void TstProgramTrajectory::programsCompareByContent() {
+    // Equality is the text's, whatever the sharing: equal texts set apart are equal, texts of
+    // the same size that differ (one character, the last one) are not, in a program and in a
+    // whole session.
+    const std::string text = "G21 G90\nG1 X10 Y0 F600\n";
+    std::string other = text;
+    other[other.size() - 2] = '1'; // "F601"
+    const ProgramText a(text), b(text), c(other);
+    QVERIFY(a.state() != b.state());
+    QVERIFY(a == b);
+    QCOMPARE(a.size(), c.size());
+    QVERIFY(!(a == c));
+    QVERIFY(ProgramText() == ProgramText(""));
+    QVERIFY(!(ProgramText() == a));
+    QCOMPARE(a.str(), text);
+    Session s = Session::paperDefault();
+    s.trajectory = straightMove();
+    Session t = s;
+    QVERIFY(s == t);
+    t.trajectory.gcode.program = other;
+    QVERIFY(!(s == t));
+    t.trajectory.gcode.program = std::string(text); // the same text again, a new state
+    QVERIFY(s == t);
+    QVERIFY(s.trajectory.gcode.program.state() != t.trajectory.gcode.program.state());
 }
 
 QTEST_APPLESS_MAIN(TstProgramTrajectory)

@@ -7,10 +7,14 @@
 // quantized and delayed implementation, and a pole-placement + ZPETC axis on a circle; and
 // repeated evaluations are identical.
 #include "core/session/session_evaluation.h"
+#include "tests/support/tolerance.h"
 
 #include <QTest>
 
+#include <cmath>
 #include <cstdint>
+#include <functional>
+#include <numbers>
 #include <cstring>
 #include <vector>
 
@@ -75,6 +79,14 @@ private slots:
     void axesDoNotDependOnTheThread();
     void verdictIsThatOfTheRunThatWillHappen();
     void hugePlantGainNamesThePlantGain();
+    void refusalNamesTheField_data();
+    void refusalNamesTheField();
+    void setDurationIsUsedAsSet();
+    void circleRunsTheRampAndOneRevolution();
+    void settleEstimateExtendsTheCubic();
+    void movePastTheWindowIsCappedAtThreeMoves();
+    void capIsLoweredToTheSampleLimit();
+    void moveShorterThanTheStepIsRefused();
 };
 
 void TstSessionEvaluation::axesDoNotDependOnTheThread_data() {
@@ -159,6 +171,208 @@ void TstSessionEvaluation::hugePlantGainNamesThePlantGain() {
     s.axes[1].gt.plant.k0 = 24.44;
     s.axes[1].gt.kp = 1e308;
     QCOMPARE(QString::fromStdString(evaluateAxis(s, 1).errorField), QString("axes[1].gt.kp"));
+}
+
+using SessionEdit = std::function<void(Session&)>;
+Q_DECLARE_METATYPE(SessionEdit)
+
+void TstSessionEvaluation::refusalNamesTheField_data() {
+    // Each way evaluateAxisOver refuses, from its own rules (session_evaluation.cpp): the
+    // reference (axisReference's session paths), the samples (axisSampleTimes: the step, the
+    // memory bound, a single sample, blaming the duration when the session sets it, else the
+    // step) refuse the run itself (runRefused); the design's fields refuse the axis only.
+    QTest::addColumn<SessionEdit>("edit");
+    QTest::addColumn<int>("axis");
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<bool>("runRefused");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("step not > 0") << SessionEdit([](Session& s) { s.trajectory.dtSeconds = 0.0; }) << 0
+                                  << "trajectory.dt" << true << "must be greater than zero";
+    QTest::newRow("set duration beyond the sample limit")
+        << SessionEdit([](Session& s) { s.trajectory.durationSeconds = 1e12; }) << 0 << "trajectory.duration"
+        << true << "needs 1e+14 samples at this dt";
+    QTest::newRow("set duration shorter than the step: one sample")
+        << SessionEdit([](Session& s) { s.trajectory.durationSeconds = 0.005; }) << 1 << "trajectory.duration"
+        << true << "gives a single sample (step 0.01 s, duration 0.005 s)";
+    QTest::newRow("pole-placement Ts longer than the run: one sample")
+        << SessionEdit([](Session& s) {
+               s.axes[0].method = DesignMethod::PolePlacementZpetc;
+               s.axes[0].pp.tsSeconds = 1000.0;
+               s.trajectory.durationSeconds = 600.0;
+           })
+        << 0 << "trajectory.duration" << true << "gives a single sample (step 1000 s, duration 600 s)";
+    QTest::newRow("pole-placement Ts not > 0")
+        << SessionEdit([](Session& s) {
+               s.axes[1].method = DesignMethod::PolePlacementZpetc;
+               s.axes[1].pp.tsSeconds = -0.07;
+           })
+        << 1 << "ts" << false << "must be greater than zero";
+    QTest::newRow("cubic end not a number")
+        << SessionEdit([](Session& s) { s.trajectory.xf = std::nan(""); }) << 0 << "trajectory.cubic.xf" << true
+        << "must be a number, got NaN";
+    QTest::newRow("circle radius not > 0")
+        << SessionEdit([](Session& s) {
+               s.trajectory.kind = TrajectoryKind::Circle;
+               s.trajectory.radius = -1.0;
+           })
+        << 1 << "trajectory.circle.radius" << true << "must be greater than zero";
+    // An unreadable program has no run time (0 s): it was refused as "trajectory.dt gives a
+    // single sample", naming the step instead of the program.
+    QTest::newRow("G-code program unreadable")
+        << SessionEdit([](Session& s) {
+               s.trajectory.kind = TrajectoryKind::Gcode;
+               s.trajectory.gcode.program = "G1 X1 F60\nG5 X2\n";
+           })
+        << 0 << "trajectory.gcode.program" << true << "line 2";
+    QTest::newRow("actuator limit not > 0: the axis, not the run")
+        << SessionEdit([](Session& s) { s.umaxVolts = 0.0; }) << 0 << "umax" << false << "must be greater than zero";
+    QTest::newRow("kp not > 0: the axis, not the run")
+        << SessionEdit([](Session& s) { s.axes[1].gt.kp = -1.0; }) << 1 << "axes[1].gt.kp" << false
+        << "must be greater than zero";
+}
+
+void TstSessionEvaluation::refusalNamesTheField() {
+    QFETCH(SessionEdit, edit);
+    QFETCH(int, axis);
+    QFETCH(QString, field);
+    QFETCH(bool, runRefused);
+    QFETCH(QString, reason);
+    Session s = Session::paperDefault();
+    edit(s);
+    const SessionEvaluation e = evaluateSession(s);
+    const AxisEvaluation& a = e.axes[static_cast<std::size_t>(axis)];
+    QVERIFY(!a.ok);
+    QCOMPARE(QString::fromStdString(a.errorField), field);
+    QCOMPARE(a.runRefused, runRefused);
+    QVERIFY2(QString::fromStdString(a.error).contains(reason), a.error.c_str());
+    // A refused axis has no run and no program contour.
+    QVERIFY(a.run.t.empty());
+    QVERIFY(!e.program && !e.contour);
+    // evaluateAxis refuses the same way as the session.
+    const AxisEvaluation alone = evaluateAxis(s, axis);
+    QCOMPARE(alone.errorField, a.errorField);
+    QCOMPARE(alone.runRefused, a.runRefused);
+}
+
+void TstSessionEvaluation::setDurationIsUsedAsSet() {
+    // A duration set in the session is the run, whatever the settle would want.
+    Session s = Session::paperDefault();
+    s.trajectory.durationSeconds = 200.0;
+    const RunDuration d = chooseRunDuration(s);
+    QVERIFY(!d.automatic && !d.includesSettle && !d.capped);
+    QCOMPARE(d.seconds, 200.0);
+    QCOMPARE(d.capSeconds, 200.0);
+    QVERIFY(d.description.find("set in the session") != std::string::npos);
+}
+
+void TstSessionEvaluation::circleRunsTheRampAndOneRevolution() {
+    // Automatic circle: 2 pi / w + the ramp-in (TrajectorySettings::effectiveDurationSeconds).
+    Session s = Session::paperDefault();
+    s.trajectory.kind = TrajectoryKind::Circle;
+    s.trajectory.omegaRadPerSec = -0.25; // the direction does not change the period
+    s.trajectory.rampInSeconds = 7.0;
+    const RunDuration d = chooseRunDuration(s);
+    QVERIFY(d.automatic && !d.includesSettle && !d.capped);
+    XYT_COMPARE_NEAR(d.seconds, 2.0 * std::numbers::pi / 0.25 + 7.0, 1e-15, 0.0);
+}
+
+namespace {
+
+/// The settle estimate of the stated rule (move_settle.h): ln(|e(tf)| / w) / sigma, sigma the
+/// slowest closed-loop decay -max Re p, e(tf) the error of the move run to tf alone; the
+/// slowest axis counts. Both axes here are Guillemin-Truxal designs.
+double settleEstimateByRule(const Session& session) {
+    Session moveOnly = session;
+    moveOnly.trajectory.durationSeconds = session.trajectory.tfSeconds;
+    double need = 0.0;
+    for (int i = 0; i < 2; ++i) {
+        const AxisEvaluation a = evaluateAxis(moveOnly, i);
+        double slowest = -INFINITY;
+        for (const auto& p : a.gt->closedLoopPoles)
+            slowest = std::max(slowest, p.real());
+        const double e = std::abs(a.run.e.back());
+        const double w = session.spec.inPositionWindowMm;
+        need = std::max(need, e <= w ? 0.0 : std::log(e / w) / -slowest);
+    }
+    return need;
+}
+
+} // namespace
+
+void TstSessionEvaluation::settleEstimateExtendsTheCubic() {
+    // Automatic cubic: tf + 1.5 x the settle estimate + a tenth of the move, under the cap (the
+    // default wn = 2 rad/s needs longer than the cap; at wn = 5 rad/s both axes settle well inside).
+    Session s = Session::paperDefault();
+    for (AxisSettings& a : s.axes)
+        a.gt.omegaNRadPerSec = 5.0;
+    const RunDuration d = chooseRunDuration(s);
+    QVERIFY(d.automatic && d.includesSettle && !d.capped);
+    const double need = settleEstimateByRule(s);
+    QVERIFY(need > 0.0); // the default design ends its move outside the 0.01 mm window
+    XYT_COMPARE_NEAR(d.settleEstimateSeconds, need, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(d.seconds, 130.0 + 1.5 * need + 0.1 * 130.0, 1e-12, 0.0);
+    QCOMPARE(d.capSeconds, 130.0 + 3.0 * 130.0);
+    // A move that ends inside the window (start = end: the error stays 0) needs no settle.
+    Session still = s;
+    still.trajectory.xf = still.trajectory.x0;
+    const RunDuration e = chooseRunDuration(still);
+    QVERIFY(e.includesSettle && !e.capped);
+    QCOMPARE(e.settleEstimateSeconds, 0.0);
+    XYT_COMPARE_NEAR(e.seconds, 130.0 + 0.1 * 130.0, 1e-15, 0.0);
+}
+
+void TstSessionEvaluation::movePastTheWindowIsCappedAtThreeMoves() {
+    // A slow design (wn = 0.05 rad/s on both axes, kp kept) needs longer than the cap: the run is
+    // cut to tf + 3 (tf - t0) = 20 + 3 x 15 = 65 s, and says so.
+    Session s = Session::paperDefault();
+    s.trajectory.t0Seconds = 5.0;
+    s.trajectory.tfSeconds = 20.0;
+    for (AxisSettings& a : s.axes)
+        a.gt.omegaNRadPerSec = 0.05;
+    const RunDuration d = chooseRunDuration(s);
+    QVERIFY(d.includesSettle && d.capped);
+    QCOMPARE(d.capSeconds, 65.0);
+    QCOMPARE(d.seconds, 65.0);
+    QVERIFY(20.0 + 1.5 * d.settleEstimateSeconds + 1.5 > 65.0);
+    QVERIFY2(d.description.find("cut to the cap of tf + 3 move durations") != std::string::npos,
+             d.description.c_str());
+    QVERIFY(d.description.find("lowered") == std::string::npos);
+}
+
+void TstSessionEvaluation::capIsLoweredToTheSampleLimit() {
+    // At dt = 1e-4 s a million samples hold (1e6 - 2) 1e-4 = 99.9998 s (automaticMoveCapSeconds:
+    // two samples below the live-view limit), less than tf + 3 tf = 520 s but more than tf = 80 s.
+    Session s = Session::paperDefault();
+    s.trajectory.tfSeconds = 80.0;
+    s.trajectory.dtSeconds = 1e-4;
+    for (AxisSettings& a : s.axes)
+        a.gt.omegaNRadPerSec = 0.05;
+    const RunDuration d = chooseRunDuration(s);
+    XYT_COMPARE_NEAR(d.capSeconds, (1e6 - 2.0) * 1e-4, 1e-15, 0.0);
+    QVERIFY(d.capped);
+    QCOMPARE(d.seconds, d.capSeconds);
+    QVERIFY2(d.description.find("lowered to what a million samples hold") != std::string::npos,
+             d.description.c_str());
+}
+
+void TstSessionEvaluation::moveShorterThanTheStepIsRefused() {
+    // A cubic whose move (tf - t0 = 5 ms) is shorter than the step (10 ms): the move run to tf
+    // holds a single sample, so no axis can estimate its settle and the run is the move only
+    // (tf), which is refused naming the step: one sample has no figures.
+    Session s = Session::paperDefault();
+    s.trajectory.tfSeconds = 0.005;
+    const RunDuration d = chooseRunDuration(s);
+    QVERIFY(d.automatic && !d.includesSettle && !d.capped);
+    QCOMPARE(d.seconds, 0.005);
+    QCOMPARE(d.capSeconds, 0.005 + 3.0 * 0.005);
+    QVERIFY(d.description.find("the move only") != std::string::npos);
+    const SessionEvaluation e = evaluateSession(s);
+    for (const AxisEvaluation& a : e.axes) {
+        QVERIFY(!a.ok && a.runRefused);
+        QCOMPARE(QString::fromStdString(a.errorField), QString("trajectory.dt"));
+        QVERIFY2(a.error.find("gives a single sample (step 0.01 s, duration 0.005 s)") != std::string::npos,
+                 a.error.c_str());
+    }
 }
 
 QTEST_APPLESS_MAIN(TstSessionEvaluation)

@@ -5,6 +5,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+#include <complex>
+
 using namespace xyt;
 using namespace xyt::ui;
 
@@ -19,6 +22,8 @@ private slots:
     void invalidValueIsReportedNotThrown();
     void cleanState();
     void viewChangesAreOneStepEach();
+    void loopGainScalesTheWholeLoop();
+    void loopGainRefusesWhatItCannotApply();
 };
 
 void TstTuningSession::startsWithThePaperDesign() {
@@ -144,6 +149,51 @@ void TstTuningSession::viewChangesAreOneStepEach() {
     for (int i = 0; i < 8; ++i)
         s.undoStack()->undo();
     QVERIFY(s.session() == start);
+void TstTuningSession::loopGainScalesTheWholeLoop() {
+    // Closed form (guillemin_truxal.h): the loop is L = (kp s + ki)/s k0/(s^3 + a1 s^2 + a2 s)
+    // with ki = kp psi1 = wn^4 / k0, so the integral gain goes as wn^4. A root-locus gain K
+    // (L -> K L) is kp -> K kp and ki -> K ki, i.e. wn -> K^(1/4) wn, psi1 = wn^4/(kp k0) unchanged.
+    // K = 16: wn 2 -> 4 rad/s, kp 30 -> 480, ki 16/77.8 -> 256/77.8, L' = 16 L at every frequency.
+    TuningSession s;
+    const GtDesign before = *s.axisEvaluation(0).gt;
+    QSignalSpy spy(&s, &TuningSession::designChanged);
+    QVERIFY(s.applyLoopGain(0, 16.0));
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(s.undoStack()->count(), 1);
+    const GtAxisSettings& gt = s.session().axes[0].gt;
+    XYT_COMPARE_NEAR(gt.omegaNRadPerSec, 4.0, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(gt.kp, 480.0, 1e-15, 0.0);
+    const GtDesign after = *s.axisEvaluation(0).gt;
+    XYT_COMPARE_NEAR(after.ki, 256.0 / 77.8, 1e-14, 0.0);
+    XYT_COMPARE_NEAR(after.psi1, before.psi1, 1e-14, 0.0);
+    for (double w : {0.01, 0.3, 2.0, 40.0}) {
+        const std::complex<double> ratio = after.openLoop.frequencyResponse(w) / before.openLoop.frequencyResponse(w);
+        XYT_COMPARE_NEAR(ratio.real(), 16.0, 1e-12, 0.0);
+        XYT_COMPARE_NEAR(ratio.imag(), 0.0, 0.0, 1e-10);
+    }
+    // The other axis is untouched, and one undo step restores the design.
+    QVERIFY(s.session().axes[1] == Session::paperDefault().axes[1]);
+    s.undoStack()->undo();
+    QVERIFY(s.session() == Session::paperDefault());
+    // A gain below 1 lowers both: K = 1/81, wn -> wn / 3 and kp -> kp / 81 (the y axis).
+    const GtAxisSettings y = s.session().axes[1].gt;
+    QVERIFY(s.applyLoopGain(1, 1.0 / 81.0));
+    XYT_COMPARE_NEAR(s.session().axes[1].gt.omegaNRadPerSec, y.omegaNRadPerSec / 3.0, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(s.session().axes[1].gt.kp, y.kp / 81.0, 1e-15, 0.0);
+}
+
+void TstTuningSession::loopGainRefusesWhatItCannotApply() {
+    // Only a finite K > 0 on a Guillemin-Truxal axis is a loop gain to apply; nothing changes
+    // otherwise (no undo step, no signal).
+    TuningSession s;
+    QSignalSpy spy(&s, &TuningSession::designChanged);
+    for (double k : {0.0, -2.0, std::nan(""), HUGE_VAL})
+        QVERIFY(!s.applyLoopGain(0, k));
+    s.setMethod(1, DesignMethod::PolePlacementZpetc);
+    QCOMPARE(spy.count(), 1);
+    QVERIFY(!s.applyLoopGain(1, 2.0));
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(s.undoStack()->count(), 1);
 }
 
 QTEST_MAIN(TstTuningSession)
