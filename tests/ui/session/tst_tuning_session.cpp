@@ -149,6 +149,8 @@ void TstTuningSession::viewChangesAreOneStepEach() {
     for (int i = 0; i < 8; ++i)
         s.undoStack()->undo();
     QVERIFY(s.session() == start);
+}
+
 void TstTuningSession::loopGainScalesTheWholeLoop() {
     // Closed form (guillemin_truxal.h): the loop is L = (kp s + ki)/s k0/(s^3 + a1 s^2 + a2 s)
     // with ki = kp psi1 = wn^4 / k0, so the integral gain goes as wn^4. A root-locus gain K
