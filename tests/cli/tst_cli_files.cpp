@@ -354,10 +354,12 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.out.contains("move and settle (window 5 mm)"), run.out.constData());
     QVERIFY2(run.out.contains("Run: duration "), run.out.constData());
-    // Without both keys (a file written before the move-and-settle specification): the defaults.
+    // Without both keys (a file written before the move-and-settle specification, format
+    // version 1; version 2 requires them): the defaults.
     spec.remove("in_position_window_mm");
     spec.remove("max_settle_time");
     root["specification"] = spec;
+    root["version"] = 1;
     write(root);
     run = runCli({"report", path});
     QCOMPARE(run.exitCode, 0);
