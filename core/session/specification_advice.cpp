@@ -63,17 +63,45 @@ std::optional<double> errorBeyond(const AxisEvaluation& a, double fromSeconds) {
     return largest;
 }
 
+/// One limit of the specification the advice may move: whether an axis fails it, and the worst
+/// value the axes reach (the largest for a maximum, the smallest for a minimum).
+struct LimitMove {
+    double Specification::*limit;
+    const char* label; ///< as the change names it, e.g. "max overshoot"
+    const char* unit;
+    bool maximum;
+    bool needed = false;
+    double worst = maximum ? 0.0 : std::numeric_limits<double>::infinity();
+
+    void failedAt(double reached) {
+        needed = true;
+        worst = maximum ? std::max(worst, reached) : std::min(worst, reached);
+    }
+};
+
+/// Moves the limit of @p move in @p relaxed to what the axes reach, rounded to 3 significant
+/// digits on the side that passes (up for a maximum, down for a minimum), and names the change.
+void relax(const LimitMove& move, Specification& relaxed, std::vector<std::string>& changes) {
+    if (!move.needed)
+        return;
+    double& limit = relaxed.*move.limit;
+    limit = move.maximum ? roundUp3(move.worst) : roundDown3(move.worst);
+    changes.push_back(std::string(move.label) + " " + formatNumber(limit) + " " + move.unit);
+}
+
 } // namespace
 
 SpecificationAdvice adviseSpecification(const Session& session, const SessionEvaluation& evaluation) {
     SpecificationAdvice out;
     Specification relaxed = session.spec;
     bool possible = true, anyFailure = false;
-    double overshoot = 0, settling = 0, errorPct = 0, settle = 0;
-    double phase = std::numeric_limits<double>::infinity(), gain = std::numeric_limits<double>::infinity();
-    bool raiseOvershoot = false, raiseSettling = false, raiseError = false, raiseSettle = false,
-         lowerPhase = false, lowerGain = false, widenWindow = false;
-    double window = 0.0;
+    LimitMove overshoot{&Specification::maxOvershootPct, "max overshoot", "%", true};
+    LimitMove settling{&Specification::maxSettlingTimeSeconds, "max settling time", "s", true};
+    LimitMove error{&Specification::maxErrorPct, "max error", "%", true};
+    LimitMove settle{&Specification::maxSettleTimeSeconds, "max settle time", "s", true};
+    LimitMove window{&Specification::inPositionWindowMm, "in-position window", "mm", true};
+    LimitMove phase{&Specification::minPhaseMarginDeg, "min phase margin", "deg", false};
+    LimitMove gain{&Specification::minGainMarginDb, "min gain margin", "dB", false};
     const Specification& spec = session.spec;
     for (std::size_t i = 0; i < 2; ++i) {
         const AxisEvaluation& a = evaluation.axes[i];
@@ -94,8 +122,7 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
             continue;
         }
         if (!c.overshoot) {
-            raiseOvershoot = true;
-            overshoot = std::max(overshoot, a.step.overshootPct);
+            overshoot.failedAt(a.step.overshootPct);
             std::string why = name + ": the step overshoots " + formatNumber(a.step.overshootPct, 3) +
                               " % (limit " + formatNumber(spec.maxOvershootPct) + " %)";
             if (a.gt && spec.maxOvershootPct == 0.0)
@@ -104,8 +131,7 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
             out.reasons.push_back(why);
         }
         if (!c.settlingTime) {
-            raiseSettling = true;
-            settling = std::max(settling, a.step.settlingTimeSeconds);
+            settling.failedAt(a.step.settlingTimeSeconds);
             out.reasons.push_back(name + ": the step settles in " + formatNumber(a.step.settlingTimeSeconds, 3) +
                                   " s (limit " + formatNumber(spec.maxSettlingTimeSeconds) + " s)");
         }
@@ -115,12 +141,11 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
                                   " V limit; a looser limit elsewhere does not change that");
         }
         if (!c.trackingError) {
-            raiseError = true;
             const double worst = std::max(a.metrics.maxAbsErrorPct,
                                           a.digital ? a.digital->metrics.maxAbsErrorPct : 0.0);
             if (!std::isfinite(worst))
                 possible = false;
-            errorPct = std::max(errorPct, worst);
+            error.failedAt(worst);
             out.reasons.push_back(name + ": the tracking error reaches " + formatNumber(worst, 3) +
                                   " % of the travel (limit " + formatNumber(spec.maxErrorPct) + " %)");
         }
@@ -141,27 +166,23 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
                        " rad/s beside the PI zero, decays that slowly";
             out.reasons.push_back(why);
             if (!estimated) {
-                raiseSettle = true;
-                settle = std::max(settle, *t);
+                settle.failedAt(*t);
             } else if (const auto w = errorBeyond(a, session.trajectory.tfSeconds + spec.maxSettleTimeSeconds)) {
                 // Not settled within the run: the settle limit cannot be checked, but the window
                 // the error stays in from the limit on can (the run reaches past it).
-                widenWindow = true;
-                window = std::max(window, *w);
+                window.failedAt(*w);
             } else {
                 possible = false;
             }
         }
         if (c.marginsApply && a.margins) {
             if (!c.phaseMargin) {
-                lowerPhase = true;
-                phase = std::min(phase, a.margins->phaseMarginDeg);
+                phase.failedAt(a.margins->phaseMarginDeg);
                 out.reasons.push_back(name + ": phase margin " + formatNumber(a.margins->phaseMarginDeg, 3) +
                                       " deg (minimum " + formatNumber(spec.minPhaseMarginDeg) + ")");
             }
             if (!c.gainMargin) {
-                lowerGain = true;
-                gain = std::min(gain, a.margins->gainMarginDb);
+                gain.failedAt(a.margins->gainMarginDb);
                 out.reasons.push_back(name + ": gain margin " + formatNumber(a.margins->gainMarginDb, 3) +
                                       " dB (minimum " + formatNumber(spec.minGainMarginDb) + ")");
             }
@@ -169,38 +190,14 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
     }
     if (!anyFailure || !possible)
         return out;
-    if ((lowerPhase && !(phase > 0.0)) || (lowerGain && !(gain > 0.0)))
+    if ((phase.needed && !(phase.worst > 0.0)) || (gain.needed && !(gain.worst > 0.0)))
         return out; // a minimum below 0 is no requirement to offer
-    if (raiseOvershoot) {
-        relaxed.maxOvershootPct = roundUp3(overshoot);
-        out.changes.push_back("max overshoot " + formatNumber(relaxed.maxOvershootPct) + " %");
-    }
-    if (raiseSettling) {
-        relaxed.maxSettlingTimeSeconds = roundUp3(settling);
-        out.changes.push_back("max settling time " + formatNumber(relaxed.maxSettlingTimeSeconds) + " s");
-    }
-    if (raiseError) {
-        relaxed.maxErrorPct = roundUp3(errorPct);
-        out.changes.push_back("max error " + formatNumber(relaxed.maxErrorPct) + " %");
-    }
-    if (raiseSettle) {
-        relaxed.maxSettleTimeSeconds = roundUp3(settle);
-        out.changes.push_back("max settle time " + formatNumber(relaxed.maxSettleTimeSeconds) + " s");
-    }
-    if (widenWindow) {
-        if (!(window > 0.0))
-            return out;
-        relaxed.inPositionWindowMm = roundUp3(window);
-        out.changes.push_back("in-position window " + formatNumber(relaxed.inPositionWindowMm) + " mm");
-    }
-    if (lowerPhase) {
-        relaxed.minPhaseMarginDeg = roundDown3(phase);
-        out.changes.push_back("min phase margin " + formatNumber(relaxed.minPhaseMarginDeg) + " deg");
-    }
-    if (lowerGain) {
-        relaxed.minGainMarginDb = roundDown3(gain);
-        out.changes.push_back("min gain margin " + formatNumber(relaxed.minGainMarginDb) + " dB");
-    }
+    for (const LimitMove* move : {&overshoot, &settling, &error, &settle})
+        relax(*move, relaxed, out.changes);
+    if (window.needed && !(window.worst > 0.0))
+        return out; // no window of 0 mm or less holds the error
+    for (const LimitMove* move : {&window, &phase, &gain})
+        relax(*move, relaxed, out.changes);
     out.relaxed = relaxed;
     return out;
 }

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <functional>
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -79,6 +80,22 @@ void addWriterRows() {
                                                "--kp", "20:40:2", "--trajectory", "cubic", "--xf",
                                                "600", "--tf", "130", "--csv", "{out}"}
                                  << "--csv";
+}
+
+/// The JSON of the default session that `xytune-cli new` wrote to @p path; empty when it failed.
+QJsonObject newSessionJson(const QString& path) {
+    if (runCli({"new", "-o", path}).exitCode != 0)
+        return {};
+    return QJsonDocument::fromJson(contents(path)).object();
+}
+
+/// Applies @p edit to axes[0] of the session JSON @p root.
+void editAxisX(QJsonObject& root, const std::function<void(QJsonObject&)>& edit) {
+    QJsonArray axes = root["axes"].toArray();
+    QJsonObject x = axes[0].toObject();
+    edit(x);
+    axes[0] = x;
+    root["axes"] = axes;
 }
 
 QStringList substituted(QStringList args, const QString& session, const QString& out) {
@@ -323,8 +340,8 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     // reason, not the reference model's "den[2]: must be a number, got NaN".
     QTemporaryDir dir;
     const QString path = dir.filePath("s.json");
-    QCOMPARE(runCli({"new", "-o", path}).exitCode, 0);
-    QJsonObject root = QJsonDocument::fromJson(contents(path)).object();
+    QJsonObject root = newSessionJson(path);
+    QVERIFY(!root.isEmpty());
     QJsonObject spec = root["specification"].toObject();
     QCOMPARE(spec["in_position_window_mm"].toDouble(), 0.01);
     QCOMPARE(spec["max_settle_time"].toDouble(), 100.0);
@@ -361,13 +378,11 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     // wn = 1e308: the axis is not designed, the message names axes[0].gt.wn and the overflow.
     spec.remove("in_position_window_mm");
     root["specification"] = spec;
-    QJsonArray axes = root["axes"].toArray();
-    QJsonObject x = axes[0].toObject();
-    QJsonObject gt = x["gt"].toObject();
-    gt["wn"] = 1e308;
-    x["gt"] = gt;
-    axes[0] = x;
-    root["axes"] = axes;
+    editAxisX(root, [](QJsonObject& x) {
+        QJsonObject gt = x["gt"].toObject();
+        gt["wn"] = 1e308;
+        x["gt"] = gt;
+    });
     write(root);
     run = runCli({"report", path});
     QCOMPARE(run.exitCode, 0);
@@ -385,13 +400,9 @@ void TstCliFiles::reportLeadsWithTheRunAsItHappens() {
     // labelled, with the core's figures (evaluateSession of the same session).
     QTemporaryDir dir;
     const QString path = dir.filePath("pp.json");
-    QCOMPARE(runCli({"new", "-o", path}).exitCode, 0);
-    QJsonObject root = QJsonDocument::fromJson(contents(path)).object();
-    QJsonArray axes = root["axes"].toArray();
-    QJsonObject x = axes[0].toObject();
-    x["method"] = "pole-placement-zpetc";
-    axes[0] = x;
-    root["axes"] = axes;
+    QJsonObject root = newSessionJson(path);
+    QVERIFY(!root.isEmpty());
+    editAxisX(root, [](QJsonObject& x) { x["method"] = "pole-placement-zpetc"; });
     put(path, QJsonDocument(root).toJson());
     xyt::Session session = xyt::Session::paperDefault();
     session.axes[0].method = xyt::DesignMethod::PolePlacementZpetc;

@@ -3,9 +3,9 @@
 // the feed profile and the contour error of what it accepts. The input is the program text,
 // optionally followed by a NUL byte and the planner's options (the reader refuses a NUL in a
 // program, so nothing is lost): feed scale, acceleration, jerk, corner angle, rapid feed and dt,
-// one to three bytes each (planOption: special values such as 0, subnormals, 1e+-300, NaN,
-// inf and the edges of the planner's range, or m 10^e with e in -110 .. 126); without them
-// the options are the fixed ones of a typical run. Either the text is rejected with
+// one to three bytes each (planOption: the shared special values such as 0, subnormals,
+// 1e+-300, NaN and inf, the edges of the planner's range, or m 10^e with e in -106 .. 124);
+// without them the options are the fixed ones of a typical run. Either the text is rejected with
 // xyt::InvalidInput whose message is one line, or the program is consistent: one info per
 // segment, finite geometry within the coordinate bound, lines within the text, at most
 // kMaxGcodeWarnings + 1 warnings. Its profile (at most 20 000 samples) is either refused in one
@@ -36,38 +36,32 @@ struct PlanOptions {
     bool fuzzed = false; ///< taken from the input (else the fixed ones)
 };
 
+/// The edges of the planner's range and an angle, picked by the byte values after the shared
+/// special values (16-23).
+constexpr double kPlannerEdges[] = {1e-200,
+                                    1e-160,
+                                    xyt::kMinProfileRate,
+                                    0.99 * xyt::kMinProfileRate,
+                                    xyt::kMaxProfileRate,
+                                    1.01 * xyt::kMaxProfileRate,
+                                    1e200,
+                                    180.0};
+
 /**
- * One option from the bytes: 255 (or no byte left) keeps @p fallback; 0 .. 19 a special value
- * (the order is the seeds' encoding, tests/fuzz/README.md); above, (1 + 9 w / 65536) 10^e with e
- * = byte - 130 (-110 .. 124) and w the next two bytes.
+ * One option from the bytes: 255 (or no byte left) keeps @p fallback; 0 .. 15 a value that breaks
+ * naive code (kSpecialValues, fuzz_support.h), 16 .. 23 an edge of the planner's range
+ * (kPlannerEdges; the order is the seeds' encoding, tests/fuzz/README.md); above, (1 + 9 w /
+ * 65536) 10^e with e = byte - 130 (-106 .. 124) and w the next two bytes.
  */
 double planOption(xyt::fuzz::FuzzInput& in, double fallback) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    constexpr double special[] = {0.0,
-                                  -0.0,
-                                  std::numeric_limits<double>::quiet_NaN(),
-                                  inf,
-                                  -inf,
-                                  std::numeric_limits<double>::max(),
-                                  std::numeric_limits<double>::min(),
-                                  std::numeric_limits<double>::denorm_min(),
-                                  1e-300,
-                                  1e-200,
-                                  1e-160,
-                                  xyt::kMinProfileRate,
-                                  0.99 * xyt::kMinProfileRate,
-                                  xyt::kMaxProfileRate,
-                                  1.01 * xyt::kMaxProfileRate,
-                                  1e200,
-                                  1e300,
-                                  -1.0,
-                                  1.0,
-                                  180.0};
+    constexpr std::size_t shared = std::size(xyt::fuzz::kSpecialValues);
     const std::uint8_t kind = in.byte(255);
     if (kind == 255)
         return fallback;
-    if (kind < std::size(special))
-        return special[kind];
+    if (kind < shared)
+        return xyt::fuzz::kSpecialValues[kind];
+    if (kind < shared + std::size(kPlannerEdges))
+        return kPlannerEdges[kind - shared];
     const int exponent = static_cast<int>(kind) - 130;
     const double mantissa = 1.0 + 9.0 * static_cast<double>(in.word()) / 65536.0;
     return mantissa * std::pow(10.0, exponent);

@@ -15,10 +15,31 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <iterator>
 #include <limits>
 #include <vector>
 
 namespace xyt::fuzz {
+
+/// The values that break naive code: 0, -0, NaN, +-inf, the extremes of double, a denormal, and
+/// a few ordinary ones. A harness picks one by a byte of its input, so the order is the encoding
+/// of the seeds (tests/fuzz/make_seeds.py for FuzzInput::number, byte values 0-15).
+inline constexpr double kSpecialValues[] = {0.0,
+                                            -0.0,
+                                            std::numeric_limits<double>::quiet_NaN(),
+                                            std::numeric_limits<double>::infinity(),
+                                            -std::numeric_limits<double>::infinity(),
+                                            std::numeric_limits<double>::max(),
+                                            -std::numeric_limits<double>::max(),
+                                            std::numeric_limits<double>::min(),
+                                            std::numeric_limits<double>::denorm_min(),
+                                            1.0,
+                                            -1.0,
+                                            1e-300,
+                                            1e300,
+                                            0.5,
+                                            2.0,
+                                            -2.0};
 
 /// Reads the fuzz bytes front to back; once they run out every read returns a benign default,
 /// so short inputs still reach the deep code paths.
@@ -46,26 +67,8 @@ public:
         if (pos_ >= size_)
             return fallback;
         const std::uint8_t kind = byte();
-        if (kind < 16) {
-            constexpr double inf = std::numeric_limits<double>::infinity();
-            constexpr double special[] = {0.0,
-                                          -0.0,
-                                          std::numeric_limits<double>::quiet_NaN(),
-                                          inf,
-                                          -inf,
-                                          std::numeric_limits<double>::max(),
-                                          -std::numeric_limits<double>::max(),
-                                          std::numeric_limits<double>::min(),
-                                          std::numeric_limits<double>::denorm_min(),
-                                          1.0,
-                                          -1.0,
-                                          1e-300,
-                                          1e300,
-                                          0.5,
-                                          2.0,
-                                          -2.0};
-            return special[kind];
-        }
+        if (kind < std::size(kSpecialValues))
+            return kSpecialValues[kind];
         // |value| = m 10^e, m in [1, 10), e in -12 .. 12 (tests/fuzz/make_seeds.py encodes).
         const int exponent = static_cast<int>(kind % 25) - 12;
         const double mantissa = 1.0 + 9.0 * static_cast<double>(word()) / 65536.0;

@@ -207,23 +207,47 @@ std::size_t dtRows(const SessionEvaluation& e, double dt) {
     return static_cast<std::size_t>(std::floor(e.duration.seconds / dt + 1e-9)) + 1;
 }
 
+constexpr DesignMethod kGt = DesignMethod::GuilleminTruxal, kPp = DesignMethod::PolePlacementZpetc;
+
+/// How the controller of a table's session is implemented.
+enum class Implementation {
+    Ideal,               ///< the default: no delay, DAC or encoder, controller_ts = dt
+    Dac12Bits,           ///< a 12-bit DAC
+    SlowDelayedQuantized ///< controller_ts 5 dt, one sample of delay, a 12-bit DAC, a 1 um encoder
+};
+
+/// A row of the CSV tables: Braga et al.'s default session with a method on each axis.
+struct SessionRow {
+    const char* name;
+    DesignMethod x, y;
+    Implementation implementation;
+};
+
+/// The "session" column and one row per @p rows, each session built from the default.
+void addSessionRows(std::initializer_list<SessionRow> rows) {
+    QTest::addColumn<Session>("session");
+    for (const SessionRow& row : rows) {
+        Session s = Session::paperDefault();
+        s.axes[0].method = row.x;
+        s.axes[1].method = row.y;
+        if (row.implementation != Implementation::Ideal)
+            s.implementation.dacBits = 12;
+        if (row.implementation == Implementation::SlowDelayedQuantized) {
+            s.controllerTsSeconds = 0.05;
+            s.implementation.delaySamples = 1;
+            s.implementation.encoderResolutionMm = 0.001;
+        }
+        QTest::newRow(row.name) << s;
+    }
+}
+
 } // namespace
 
 void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow_data() {
-    QTest::addColumn<Session>("session");
-    const Session base = Session::paperDefault();
-    QTest::newRow("guillemin-truxal, controller_ts = dt") << base;
-    Session slow = base;
-    slow.controllerTsSeconds = 0.05;
-    slow.implementation.delaySamples = 1;
-    slow.implementation.dacBits = 12;
-    slow.implementation.encoderResolutionMm = 0.001;
-    QTest::newRow("guillemin-truxal, controller_ts 5 dt, delay, DAC, encoder") << slow;
-    Session pp = base;
-    pp.axes[0].method = DesignMethod::PolePlacementZpetc;
-    pp.axes[1].method = DesignMethod::PolePlacementZpetc;
-    pp.implementation.dacBits = 12;
-    QTest::newRow("pole placement + ZPETC, Ts 0.07 s, DAC") << pp;
+    addSessionRows({{"guillemin-truxal, controller_ts = dt", kGt, kGt, Implementation::Ideal},
+                    {"guillemin-truxal, controller_ts 5 dt, delay, DAC, encoder", kGt, kGt,
+                     Implementation::SlowDelayedQuantized},
+                    {"pole placement + ZPETC, Ts 0.07 s, DAC", kPp, kPp, Implementation::Dac12Bits}});
 }
 
 void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow() {
@@ -271,16 +295,9 @@ void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow() {
 }
 
 void TstCoefficientExport::csvSamplesAtTheSessionDt_data() {
-    QTest::addColumn<Session>("session");
-    const Session base = Session::paperDefault();
-    QTest::newRow("guillemin-truxal both") << base;
-    Session x = base;
-    x.axes[0].method = DesignMethod::PolePlacementZpetc;
-    QTest::newRow("pole placement on x (Ts 0.07 s), guillemin-truxal on y") << x;
-    Session both = base;
-    both.axes[0].method = DesignMethod::PolePlacementZpetc;
-    both.axes[1].method = DesignMethod::PolePlacementZpetc;
-    QTest::newRow("pole placement both") << both;
+    addSessionRows({{"guillemin-truxal both", kGt, kGt, Implementation::Ideal},
+                    {"pole placement on x (Ts 0.07 s), guillemin-truxal on y", kPp, kGt, Implementation::Ideal},
+                    {"pole placement both", kPp, kPp, Implementation::Ideal}});
 }
 
 void TstCoefficientExport::csvSamplesAtTheSessionDt() {
