@@ -21,8 +21,9 @@ namespace xyt::app {
 inline void keepFreedMemory() {
 #if defined(__GLIBC__)
     constexpr int kBytes = 256 * 1024 * 1024;
-    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024); // glibc's largest: blocks below it come from the heap
-    mallopt(M_TRIM_THRESHOLD, kBytes);           // free heap kept up to this before trimming
+    mallopt(M_MMAP_THRESHOLD,
+            32 * 1024 * 1024);         // glibc's largest: blocks below it come from the heap
+    mallopt(M_TRIM_THRESHOLD, kBytes); // free heap kept up to this before trimming
 #endif
 }
 

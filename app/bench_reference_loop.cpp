@@ -9,7 +9,8 @@
 
 namespace xyt::bench {
 
-ReferenceLoop referenceLoop(const TransferFunction& plant, const TransferFunction& controller, double dt) {
+ReferenceLoop referenceLoop(const TransferFunction& plant, const TransferFunction& controller,
+                            double dt) {
     const LoopModes modes = loopModes(plant, controller);
     const FohDiscretization lin = discretizeFoh(modes.aLinear, modes.bLinear, dt);
     const FohDiscretization sat = discretizeFoh(modes.aClipped, modes.bClipped, dt);
@@ -33,16 +34,18 @@ ReferenceLoop referenceLoop(const TransferFunction& plant, const TransferFunctio
 }
 
 namespace {
-inline void advance(const ReferenceLoop& m, bool clip, double rk, double u, double slope, double x[4]) {
+inline void advance(const ReferenceLoop& m, bool clip, double rk, double u, double slope,
+                    double x[4]) {
     double next[4];
     for (int i = 0; i < 4; ++i) {
         if (clip)
-            next[i] = m.phiClipped[i][0] * x[0] + m.phiClipped[i][1] * x[1] + m.phiClipped[i][2] * x[2] +
-                      m.phiClipped[i][3] * x[3] + m.g0Clipped[i][0] * rk + m.g0Clipped[i][1] * u +
-                      m.g1Clipped[i] * slope;
+            next[i] = m.phiClipped[i][0] * x[0] + m.phiClipped[i][1] * x[1] +
+                      m.phiClipped[i][2] * x[2] + m.phiClipped[i][3] * x[3] +
+                      m.g0Clipped[i][0] * rk + m.g0Clipped[i][1] * u + m.g1Clipped[i] * slope;
         else
-            next[i] = m.phiLinear[i][0] * x[0] + m.phiLinear[i][1] * x[1] + m.phiLinear[i][2] * x[2] +
-                      m.phiLinear[i][3] * x[3] + m.g0Linear[i] * rk + m.g1Linear[i] * slope;
+            next[i] = m.phiLinear[i][0] * x[0] + m.phiLinear[i][1] * x[1] +
+                      m.phiLinear[i][2] * x[2] + m.phiLinear[i][3] * x[3] + m.g0Linear[i] * rk +
+                      m.g1Linear[i] * slope;
     }
     for (int i = 0; i < 4; ++i)
         x[i] = next[i];
@@ -52,8 +55,8 @@ struct Sample {
     double y, rk, u;
     bool clip;
 };
-inline Sample sample(const ReferenceLoop& m, const double* reference, std::size_t k, double umax, double unit,
-                     const double x[4]) {
+inline Sample sample(const ReferenceLoop& m, const double* reference, std::size_t k, double umax,
+                     double unit, const double x[4]) {
     const double yk = m.cp[0] * x[0] + m.cp[1] * x[1] + m.cp[2] * x[2];
     const double rk = reference[k] * unit;
     const double v = m.dc * (rk - yk) + m.cc * x[3];
@@ -62,8 +65,9 @@ inline Sample sample(const ReferenceLoop& m, const double* reference, std::size_
 }
 } // namespace
 
-void referenceRun(const ReferenceLoop& m, const double* reference, std::size_t count, double dt, double umax,
-                  double unit, double* t, double* y, double* e, double* u, bool* clipped) {
+void referenceRun(const ReferenceLoop& m, const double* reference, std::size_t count, double dt,
+                  double umax, double unit, double* t, double* y, double* e, double* u,
+                  bool* clipped) {
     double x[4] = {0.0, 0.0, 0.0, 0.0};
     for (std::size_t k = 0; k < count; ++k) {
         const Sample s = sample(m, reference, k, umax, unit, x);
@@ -78,8 +82,8 @@ void referenceRun(const ReferenceLoop& m, const double* reference, std::size_t c
     }
 }
 
-ReferenceFigures referenceFigures(const ReferenceLoop& m, const double* reference, std::size_t count, double dt,
-                                  double umax, double unit) {
+ReferenceFigures referenceFigures(const ReferenceLoop& m, const double* reference,
+                                  std::size_t count, double dt, double umax, double unit) {
     double x[4] = {0.0, 0.0, 0.0, 0.0};
     ReferenceFigures f;
     double sumSquares = 0.0, previous = 0.0;

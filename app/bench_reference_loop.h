@@ -21,17 +21,19 @@ struct ReferenceLoop {
 };
 
 /// The step matrices of the loop @p plant (3rd order) under @p controller (PI) at @p dt.
-ReferenceLoop referenceLoop(const TransferFunction& plant, const TransferFunction& controller, double dt);
+ReferenceLoop referenceLoop(const TransferFunction& plant, const TransferFunction& controller,
+                            double dt);
 
 /// One run storing t, y, e, u and the clipped flags into arrays of @p count samples.
-void referenceRun(const ReferenceLoop& m, const double* reference, std::size_t count, double dt, double umax,
-                  double unit, double* t, double* y, double* e, double* u, bool* clipped);
+void referenceRun(const ReferenceLoop& m, const double* reference, std::size_t count, double dt,
+                  double umax, double unit, double* t, double* y, double* e, double* u,
+                  bool* clipped);
 
 /// Tracking figures only (the design sweep's kernel): RMSE, max |e|, max |u|, ITAE.
 struct ReferenceFigures {
     double rmse = 0.0, maxAbsError = 0.0, maxAbsU = 0.0, itae = 0.0;
 };
-ReferenceFigures referenceFigures(const ReferenceLoop& m, const double* reference, std::size_t count, double dt,
-                                  double umax, double unit);
+ReferenceFigures referenceFigures(const ReferenceLoop& m, const double* reference,
+                                  std::size_t count, double dt, double umax, double unit);
 
 } // namespace xyt::bench

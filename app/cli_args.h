@@ -45,7 +45,9 @@ public:
     /// A finite number. Without @p fallback the argument is required.
     double number(const QString& name, std::optional<double> fallback = std::nullopt) const;
     /// A positive whole number.
-    int count(const QString& name, int fallback, int maxValue) const { return integer(name, fallback, 1, maxValue); }
+    int count(const QString& name, int fallback, int maxValue) const {
+        return integer(name, fallback, 1, maxValue);
+    }
     /// A whole number in [minValue, maxValue].
     int integer(const QString& name, int fallback, int minValue, int maxValue) const;
     const QStringList& positional() const { return positional_; }

@@ -3,12 +3,11 @@
 
 #include "app/cli_json.h"
 
-#include "core/model/errors.h"
 #include "core/io/file_io.h"
+#include "core/model/errors.h"
 #include "core/simulation/resample.h"
 #include "core/simulation/trajectory.h"
 #include "ui/files/session_file.h"
-
 
 #include <cmath>
 #include <cstdio>
@@ -19,9 +18,9 @@ namespace xyt::cli {
 const QStringList kPlantOptions = {"preset", "k0", "a1", "a2"};
 const QStringList kDesignOptions = kPlantOptions + QStringList{"wn", "kp"};
 const QString kUnitOption = "model-unit-scale";
-const QStringList kTrajectoryOptions = {"trajectory", "x0", "xf", "t0", "tf", "v0", "vf",
-                                        "amplitude", "omega", "phase-deg", "ramp-in",
-                                        "duration", "dt", "umax", "csv"};
+const QStringList kTrajectoryOptions = {"trajectory", "x0",       "xf",        "t0",    "tf",
+                                        "v0",         "vf",       "amplitude", "omega", "phase-deg",
+                                        "ramp-in",    "duration", "dt",        "umax",  "csv"};
 
 PlantInput parsePlant(const CliArgs& args) {
     PlantInput in{};
@@ -59,7 +58,8 @@ DesignInput parseDesign(const CliArgs& args) {
     const PlantInput plant = parsePlant(args);
     const auto& preset = plant.preset;
     DesignInput in{plant.plant, 0.0, 0.0, plant.modelUnitsPerPositionUnit};
-    in.wn = args.number("wn", preset ? std::optional<double>(preset->omegaNRadPerSec) : std::nullopt);
+    in.wn =
+        args.number("wn", preset ? std::optional<double>(preset->omegaNRadPerSec) : std::nullopt);
     in.kp = args.number("kp", preset ? std::optional<double>(preset->kp) : std::nullopt);
     if (!(in.wn > 0.0))
         throw InvalidInput("--wn", "must be greater than zero");
@@ -72,7 +72,9 @@ DesignInput parseDesign(const CliArgs& args) {
 }
 
 QJsonObject plantJson(const ThirdOrderPlant& plant) {
-    return {{"k0", plant.k0}, {"a1", plant.a1}, {"a2", plant.a2},
+    return {{"k0", plant.k0},
+            {"a1", plant.a1},
+            {"a2", plant.a2},
             {"tf", continuousTf(plant.transferFunction())}};
 }
 
@@ -88,13 +90,11 @@ QJsonObject designJson(const GtDesign& d) {
             {"ki", number(d.ki)},
             {"reference_model", continuousTf(d.referenceModel)},
             {"controller", continuousTf(d.controller)},
-            {"closed_loop",
-             QJsonObject{{"num", descending(d.closedLoop.num())},
-                         {"den", descending(d.closedLoop.den())},
-                         {"poles", complexPairs(d.closedLoopPoles)}}},
+            {"closed_loop", QJsonObject{{"num", descending(d.closedLoop.num())},
+                                        {"den", descending(d.closedLoop.den())},
+                                        {"poles", complexPairs(d.closedLoopPoles)}}},
             {"stable", d.stable}};
 }
-
 
 Reference parseTrajectory(const CliArgs& args) {
     const QString kind = args.text("trajectory", "");
@@ -119,7 +119,8 @@ Reference parseTrajectory(const CliArgs& args) {
         if (s.omegaRadPerSec == 0.0)
             throw InvalidInput("--omega", "must be nonzero");
         const double period = 2.0 * std::numbers::pi / std::abs(s.omegaRadPerSec);
-        return {[s](double t) { return s.value(t); }, period + s.rampInSeconds, "sine", std::nullopt, 0.0};
+        return {[s](double t) { return s.value(t); }, period + s.rampInSeconds, "sine",
+                std::nullopt, 0.0};
     }
     if (kind.isEmpty())
         throw InvalidInput("--trajectory", "is required (cubic or sine)");
@@ -144,16 +145,20 @@ SimulationSetup parseSimulationSetup(const CliArgs& args, const PlantInput& plan
         // A move that no sample can see is not a run (--tf 0.005 --dt 0.01 used to
         // report every figure as 0).
         const double move = s.trajectory.move->endSeconds - s.trajectory.t0Seconds;
-        const QString text = QStringLiteral("the move lasts %1 s (--tf minus --t0), %2 of --dt %3 s")
-                                 .arg(move, 0, 'g', 6)
-                                 .arg(move < s.options.dtSeconds ? QStringLiteral("less than one step")
-                                                                 : QStringLiteral("only %1 steps").arg(std::floor(move / s.options.dtSeconds)))
-                                 .arg(s.options.dtSeconds, 0, 'g', 6);
+        const QString text =
+            QStringLiteral("the move lasts %1 s (--tf minus --t0), %2 of --dt %3 s")
+                .arg(move, 0, 'g', 6)
+                .arg(move < s.options.dtSeconds ? QStringLiteral("less than one step")
+                                                : QStringLiteral("only %1 steps")
+                                                      .arg(std::floor(move / s.options.dtSeconds)))
+                .arg(s.options.dtSeconds, 0, 'g', 6);
         if (move < s.options.dtSeconds)
-            throw InvalidInput("--tf", text.toStdString() + ": too short to measure; lengthen --tf or shorten --dt");
+            throw InvalidInput("--tf", text.toStdString() +
+                                           ": too short to measure; lengthen --tf or shorten --dt");
         if (move < 10.0 * s.options.dtSeconds)
-            std::fprintf(stderr, "xytune-cli: warning: --tf: %s: the figures of so short a move mean "
-                                 "little; lengthen --tf or shorten --dt\n",
+            std::fprintf(stderr,
+                         "xytune-cli: warning: --tf: %s: the figures of so short a move mean "
+                         "little; lengthen --tf or shorten --dt\n",
                          qPrintable(text));
     }
     resampleSetup(s, args, args.number("duration", s.trajectory.defaultDuration));
@@ -170,16 +175,19 @@ void resampleSetup(SimulationSetup& s, const CliArgs& args, double durationSecon
     } catch (const InvalidInput& e) {
         // Too many samples: blame what the user typed (--duration, else --dt, else the
         // trajectory argument that set the default duration).
-        const std::string culprit = args.has("duration") ? "--duration"
-                                    : args.has("dt")     ? "--dt"
+        const std::string culprit = args.has("duration")                  ? "--duration"
+                                    : args.has("dt")                      ? "--dt"
                                     : s.trajectory.description == "cubic" ? "--tf"
                                                                           : "--omega";
         throw InvalidInput(e.field() == "duration" ? culprit : "--" + e.field(), e.reason());
     }
     if (times.size() < 2) // one sample: every metric would read 0, which is not a result
-        throw InvalidInput(args.has("dt") ? "--dt" : args.has("duration") ? "--duration"
-                           : s.trajectory.description == "cubic" ? "--tf" : "--omega",
-                           "gives a single sample (dt " + QString::number(s.options.dtSeconds).toStdString() +
+        throw InvalidInput(args.has("dt")                        ? "--dt"
+                           : args.has("duration")                ? "--duration"
+                           : s.trajectory.description == "cubic" ? "--tf"
+                                                                 : "--omega",
+                           "gives a single sample (dt " +
+                               QString::number(s.options.dtSeconds).toStdString() +
                                " s, duration " + QString::number(s.durationSeconds).toStdString() +
                                " s); at least two samples are needed for the metrics");
     s.reference = sampled(s.trajectory.at, times);
@@ -202,9 +210,10 @@ void requireFiniteSignals(const SimulationResult& run, const std::string& field)
     for (const auto& [name, v] : columns)
         for (std::size_t k = 0; k < v->size(); ++k)
             if (!std::isfinite((*v)[k]))
-                throw InvalidInput(field, std::string("the simulated ") + name + " is not finite from t = " +
-                                              std::to_string(run.t[k]) +
-                                              " s (an unstable loop or values out of range); no CSV was written");
+                throw InvalidInput(
+                    field, std::string("the simulated ") + name +
+                               " is not finite from t = " + std::to_string(run.t[k]) +
+                               " s (an unstable loop or values out of range); no CSV was written");
 }
 } // namespace
 
@@ -229,16 +238,18 @@ void writeTextFile(const std::string& argument, const QString& path, const QStri
 
 void writeCsv(const QString& path, const SimulationResult& run, const SimulationResult* digital) {
     requireFiniteSignals(run, "--csv");
-    const std::vector<std::size_t> held = digital ? heldSampleIndices(digital->t, run.t) : std::vector<std::size_t>();
+    const std::vector<std::size_t> held =
+        digital ? heldSampleIndices(digital->t, run.t) : std::vector<std::size_t>();
     writeFile("--csv", path, [&](const ByteSink& sink) {
         sink(digital ? "t,r,y,e,u,t_digital,y_digital,e_digital,u_digital\n" : "t,r,y,e,u\n");
         char line[160];
         for (std::size_t k = 0; k < run.t.size(); ++k) {
-            int n = std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g", run.t[k], run.r[k],
-                                  run.y[k], run.e[k], run.u[k]);
+            int n = std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g", run.t[k],
+                                  run.r[k], run.y[k], run.e[k], run.u[k]);
             sink(std::string_view(line, static_cast<std::size_t>(n)));
             if (digital)
-                for (const std::vector<double>* v : {&digital->t, &digital->y, &digital->e, &digital->u}) {
+                for (const std::vector<double>* v :
+                     {&digital->t, &digital->y, &digital->e, &digital->u}) {
                     const double d = (*v)[held[k]];
                     n = std::isfinite(d) ? std::snprintf(line, sizeof line, ",%.17g", d)
                                          : std::snprintf(line, sizeof line, ",");

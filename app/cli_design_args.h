@@ -8,12 +8,12 @@
 
 #include "core/analysis/stability_margins.h"
 
-#include "core/io/file_io.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/io/file_io.h"
 #include "core/model/errors.h"
+#include "core/session/session.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/simulation.h"
-#include "core/session/session.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -102,7 +102,8 @@ void writeTextFile(const std::string& argument, const QString& path, const QStri
 /// row the digital run's sample held at t (the last at or before it, heldSampleIndices; with
 /// --controller-ts equal to --dt the row's own sample), 17 significant digits; empty where not
 /// finite.
-void writeCsv(const QString& path, const SimulationResult& run, const SimulationResult* digital = nullptr);
+void writeCsv(const QString& path, const SimulationResult& run,
+              const SimulationResult* digital = nullptr);
 
 /// "GM 45.9 dB at 60.5 rad/s, PM 88.1 deg at 0.637 rad/s, delay margin 2.42 s, Ms 1.02" (for the
 /// text reports; infinite margins as inf, and a word when the closed loop is unstable).

@@ -18,8 +18,8 @@ namespace xyt::cli {
 
 namespace {
 
-const QStringList kCommonOptions = {"signal", "ts",      "duration",  "amplitude", "offset",
-                                   "umax",   "respond", "axis",      "noise-std", "seed", "o"};
+const QStringList kCommonOptions = {"signal",  "ts",   "duration",  "amplitude", "offset", "umax",
+                                    "respond", "axis", "noise-std", "seed",      "o"};
 
 /// Runs a core call and renames its field to the option the user typed ("period" -> "--period").
 template <class F> ExcitationSignal asOptions(F make) {
@@ -27,7 +27,8 @@ template <class F> ExcitationSignal asOptions(F make) {
         return make();
     } catch (const InvalidInput& e) {
         const QString name = QString::fromStdString(e.field());
-        throw InvalidInput(CliArgs::field(name == "output" ? QStringLiteral("o") : name), e.reason());
+        throw InvalidInput(CliArgs::field(name == "output" ? QStringLiteral("o") : name),
+                           e.reason());
     }
 }
 
@@ -65,8 +66,9 @@ int wholeNumber(const CliArgs& args, const QString& name, int lo, int hi) {
     bool ok = false;
     const int n = v->toInt(&ok);
     if (!ok || n < lo || n > hi)
-        throw InvalidInput(CliArgs::field(name),
-                           "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+        throw InvalidInput(CliArgs::field(name), "must be a whole number from " +
+                                                     std::to_string(lo) + " to " +
+                                                     std::to_string(hi));
     return n;
 }
 
@@ -79,11 +81,14 @@ int runExcite(const QStringList& argv) {
     if (signal == "square")
         allowed << "period";
     else if (signal == "prbs")
-        allowed << "clock" << "register";
+        allowed << "clock"
+                << "register";
     else if (signal == "chirp")
-        allowed << "f0" << "f1";
+        allowed << "f0"
+                << "f1";
     else
-        throw InvalidInput("--signal", args.has("signal") ? "must be square, prbs or chirp" : "is required (square, prbs or chirp)");
+        throw InvalidInput("--signal", args.has("signal") ? "must be square, prbs or chirp"
+                                                          : "is required (square, prbs or chirp)");
     args.allowOnly(allowed);
     if (!args.positional().isEmpty())
         throw InvalidInput(args.positional().first().toStdString(), "is not an option of excite");
@@ -118,7 +123,9 @@ int runExcite(const QStringList& argv) {
     if (args.has("respond"))
         s = respond(args, std::move(s));
     else if (args.has("axis") || args.has("noise-std") || args.has("seed"))
-        throw InvalidInput(args.has("axis") ? "--axis" : args.has("seed") ? "--seed" : "--noise-std",
+        throw InvalidInput(args.has("axis")   ? "--axis"
+                           : args.has("seed") ? "--seed"
+                                              : "--noise-std",
                            "only with --respond SESSION.json");
     const std::string path = fileNameBytes(*output);
     try {

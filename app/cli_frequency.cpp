@@ -24,7 +24,8 @@ namespace xyt::cli {
 
 namespace {
 
-const QStringList kLoopOptions = {"gt-preset", "wn", "kp", "pp-preset", "a", "b", "t", "ts", "num", "den"};
+const QStringList kLoopOptions = {"gt-preset", "wn", "kp", "pp-preset", "a",
+                                  "b",         "t",  "ts", "num",       "den"};
 
 /// The open loop L and, for a pole-placement design, the design (for the ZPETC tracking).
 struct FrequencyLoop {
@@ -34,24 +35,29 @@ struct FrequencyLoop {
 
 Polynomial ascendingArgument(const CliArgs& args, const char* name) {
     const QString text = *args.value(name);
-    return Polynomial::fromAscending(parseCoefficientList(text.toStdString(), std::string("--") + name),
-                                     std::string("--") + name);
+    return Polynomial::fromAscending(
+        parseCoefficientList(text.toStdString(), std::string("--") + name),
+        std::string("--") + name);
 }
 
 FrequencyLoop parseFrequencyLoop(const CliArgs& args) {
-    const int kinds = (args.has("gt-preset") ? 1 : 0) +
-                      (args.has("pp-preset") || args.has("a") || args.has("b") || args.has("t") ? 1 : 0) +
-                      (args.has("num") || args.has("den") ? 1 : 0);
+    const int kinds =
+        (args.has("gt-preset") ? 1 : 0) +
+        (args.has("pp-preset") || args.has("a") || args.has("b") || args.has("t") ? 1 : 0) +
+        (args.has("num") || args.has("den") ? 1 : 0);
     if (kinds == 0)
-        throw InvalidInput("--gt-preset", "is required, or --pp-preset / --a --b --t, or --num --den");
+        throw InvalidInput("--gt-preset",
+                           "is required, or --pp-preset / --a --b --t, or --num --den");
     if (kinds > 1)
-        throw InvalidInput("--gt-preset", "give one loop: a GT design (--gt-preset), a pole-placement "
-                                          "design (--pp-preset or --a --b --t) or --num --den");
+        throw InvalidInput("--gt-preset",
+                           "give one loop: a GT design (--gt-preset), a pole-placement "
+                           "design (--pp-preset or --a --b --t) or --num --den");
     FrequencyLoop out;
     if (const auto name = args.value("gt-preset")) {
         const auto preset = findGtPreset(name->toStdString());
         if (!preset)
-            throw InvalidInput("--gt-preset", "unknown preset '" + name->toStdString() + "' (lower-base or upper-base)");
+            throw InvalidInput("--gt-preset", "unknown preset '" + name->toStdString() +
+                                                  "' (lower-base or upper-base)");
         const double wn = args.number("wn", preset->omegaNRadPerSec);
         const double kp = args.number("kp", preset->kp);
         if (!(wn > 0.0) || !std::isfinite(wn))
@@ -59,9 +65,11 @@ FrequencyLoop parseFrequencyLoop(const CliArgs& args) {
         if (!(kp > 0.0) || !std::isfinite(kp))
             throw InvalidInput("--kp", "must be a finite number greater than zero");
         try {
-            out.openLoop = gtLoopTransferFunctions(designGuilleminTruxal(preset->plant, wn, kp)).openLoop;
+            out.openLoop =
+                gtLoopTransferFunctions(designGuilleminTruxal(preset->plant, wn, kp)).openLoop;
         } catch (const InvalidInput& e) {
-            throw InvalidInput(e.field() == "wn" || e.field() == "kp" ? "--" + e.field() : e.field(), e.reason());
+            throw InvalidInput(
+                e.field() == "wn" || e.field() == "kp" ? "--" + e.field() : e.field(), e.reason());
         }
         return out;
     }
@@ -72,14 +80,17 @@ FrequencyLoop parseFrequencyLoop(const CliArgs& args) {
         for (const char* required : {"num", "den"})
             if (!args.has(required))
                 throw InvalidInput(CliArgs::field(required), "is required with --num/--den");
-        const std::vector<double> num = parseCoefficientList(args.value("num")->toStdString(), "--num");
-        const std::vector<double> den = parseCoefficientList(args.value("den")->toStdString(), "--den");
+        const std::vector<double> num =
+            parseCoefficientList(args.value("num")->toStdString(), "--num");
+        const std::vector<double> den =
+            parseCoefficientList(args.value("den")->toStdString(), "--den");
         if (args.has("ts")) {
             const double ts = args.number("ts");
             if (!(ts > 0.0) || !std::isfinite(ts))
                 throw InvalidInput("--ts", "must be a finite number greater than zero");
-            out.openLoop = TransferFunction::fromZInverse(Polynomial::fromAscending(num, "--num"),
-                                                          Polynomial::fromAscending(den, "--den"), ts);
+            out.openLoop =
+                TransferFunction::fromZInverse(Polynomial::fromAscending(num, "--num"),
+                                               Polynomial::fromAscending(den, "--den"), ts);
         } else {
             out.openLoop = TransferFunction(Polynomial::fromDescending(num, "--num"),
                                             Polynomial::fromDescending(den, "--den"));
@@ -90,7 +101,8 @@ FrequencyLoop parseFrequencyLoop(const CliArgs& args) {
     if (const auto name = args.value("pp-preset")) {
         preset = findPolePlacementPreset(name->toStdString());
         if (!preset)
-            throw InvalidInput("--pp-preset", "unknown preset '" + name->toStdString() + "' (x-axis or y-axis)");
+            throw InvalidInput("--pp-preset",
+                               "unknown preset '" + name->toStdString() + "' (x-axis or y-axis)");
     } else {
         for (const char* required : {"a", "b", "t"})
             if (!args.has(required))
@@ -123,28 +135,32 @@ QJsonObject marginsJson(const StabilityMargins& m, const NyquistCurve& n) {
     for (const std::string& w : m.warnings)
         warnings.append(QString::fromStdString(w));
     // number() writes null for a non-finite value; an infinite margin is said in words.
-    const auto margin = [](double v) { return std::isinf(v) && v > 0 ? QJsonValue("inf") : number(v); };
-    return {{"gain_margin", QJsonObject{{"factor", margin(m.gainMarginFactor)},
-                                        {"db", margin(m.gainMarginDb)},
-                                        {"omega", number(m.gainMarginOmegaRadPerSec)}}},
-            {"phase_margin", QJsonObject{{"deg", margin(m.phaseMarginDeg)},
-                                         {"omega", number(m.phaseMarginOmegaRadPerSec)}}},
-            {"delay_margin", QJsonObject{{"s", margin(m.delayMarginSeconds)},
-                                         {"samples", m.tsSeconds > 0.0 ? margin(m.delayMarginSamples) : QJsonValue()}}},
-            {"peak_sensitivity", QJsonObject{{"ms", margin(m.peakSensitivity)},
-                                             {"omega", number(m.peakSensitivityOmegaRadPerSec)}}},
-            {"peak_complementary_sensitivity",
-             QJsonObject{{"mt", margin(m.peakComplementarySensitivity)},
-                         {"omega", number(m.peakComplementarySensitivityOmegaRadPerSec)}}},
-            {"bandwidth", margin(m.bandwidthRadPerSec)},
-            {"closed_loop_stable", m.closedLoopStable},
-            {"gain_margin_crossings", gains},   // at every phase crossover
-            {"phase_margin_crossings", phases}, // at every gain crossover
-            {"nyquist", QJsonObject{{"encirclements", n.clockwiseEncirclements},
-                                    {"open_loop_unstable_poles", n.openLoopUnstablePoles},
-                                    {"closed_loop_unstable_poles", n.closedLoopUnstablePoles}}},
-            {"ts", number(m.tsSeconds)},
-            {"warnings", warnings}};
+    const auto margin = [](double v) {
+        return std::isinf(v) && v > 0 ? QJsonValue("inf") : number(v);
+    };
+    return {
+        {"gain_margin", QJsonObject{{"factor", margin(m.gainMarginFactor)},
+                                    {"db", margin(m.gainMarginDb)},
+                                    {"omega", number(m.gainMarginOmegaRadPerSec)}}},
+        {"phase_margin", QJsonObject{{"deg", margin(m.phaseMarginDeg)},
+                                     {"omega", number(m.phaseMarginOmegaRadPerSec)}}},
+        {"delay_margin",
+         QJsonObject{{"s", margin(m.delayMarginSeconds)},
+                     {"samples", m.tsSeconds > 0.0 ? margin(m.delayMarginSamples) : QJsonValue()}}},
+        {"peak_sensitivity", QJsonObject{{"ms", margin(m.peakSensitivity)},
+                                         {"omega", number(m.peakSensitivityOmegaRadPerSec)}}},
+        {"peak_complementary_sensitivity",
+         QJsonObject{{"mt", margin(m.peakComplementarySensitivity)},
+                     {"omega", number(m.peakComplementarySensitivityOmegaRadPerSec)}}},
+        {"bandwidth", margin(m.bandwidthRadPerSec)},
+        {"closed_loop_stable", m.closedLoopStable},
+        {"gain_margin_crossings", gains},   // at every phase crossover
+        {"phase_margin_crossings", phases}, // at every gain crossover
+        {"nyquist", QJsonObject{{"encirclements", n.clockwiseEncirclements},
+                                {"open_loop_unstable_poles", n.openLoopUnstablePoles},
+                                {"closed_loop_unstable_poles", n.closedLoopUnstablePoles}}},
+        {"ts", number(m.tsSeconds)},
+        {"warnings", warnings}};
 }
 
 FrequencyGridOptions gridOptions(const CliArgs& args, const StabilityMargins& m) {
@@ -173,7 +189,10 @@ int runMargins(const QStringList& argv) {
 int runBode(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
     QStringList allowed = kLoopOptions;
-    allowed << "wmin" << "wmax" << "points-per-decade" << "csv";
+    allowed << "wmin"
+            << "wmax"
+            << "points-per-decade"
+            << "csv";
     args.allowOnly(allowed);
     if (!args.positional().isEmpty())
         throw InvalidInput(args.positional().first().toStdString(), "unexpected argument");
@@ -183,7 +202,9 @@ int runBode(const QStringList& argv) {
     try {
         l = adaptiveFrequencyResponse(loop.openLoop, gridOptions(args, m));
     } catch (const InvalidInput& e) {
-        throw InvalidInput(e.field() == "omegaMin" ? "--wmin" : e.field() == "omegaMax" ? "--wmax" : e.field(),
+        throw InvalidInput(e.field() == "omegaMin"   ? "--wmin"
+                           : e.field() == "omegaMax" ? "--wmax"
+                                                     : e.field(),
                            e.reason());
     }
     QJsonObject out{{"ts", number(l.tsSeconds)},
@@ -193,27 +214,37 @@ int runBode(const QStringList& argv) {
                     {"margins", marginsJson(m, nyquistCurve(loop.openLoop))}};
     std::optional<TrackingFrequencyResponses> tracking;
     if (loop.pp) {
-        tracking = zpetcTrackingFrequencyResponses(*loop.pp, designZpetc(*loop.pp), l.omegaRadPerSec);
-        out.insert("tracking", QJsonObject{
-            {"without_ff", QJsonObject{{"magnitude_db", numbers(tracking->withoutFeedforward.magnitudeDb)},
-                                       {"phase_deg", numbers(tracking->withoutFeedforward.phaseDeg)}}},
-            {"with_zpetc", QJsonObject{{"magnitude_db", numbers(tracking->withZpetc.magnitudeDb)},
-                                       {"phase_deg", numbers(tracking->withZpetc.phaseDeg)}}}});
+        tracking =
+            zpetcTrackingFrequencyResponses(*loop.pp, designZpetc(*loop.pp), l.omegaRadPerSec);
+        out.insert(
+            "tracking",
+            QJsonObject{
+                {"without_ff",
+                 QJsonObject{{"magnitude_db", numbers(tracking->withoutFeedforward.magnitudeDb)},
+                             {"phase_deg", numbers(tracking->withoutFeedforward.phaseDeg)}}},
+                {"with_zpetc",
+                 QJsonObject{{"magnitude_db", numbers(tracking->withZpetc.magnitudeDb)},
+                             {"phase_deg", numbers(tracking->withZpetc.phaseDeg)}}}});
     }
     if (const auto csv = args.value("csv")) {
         writeFile("--csv", *csv, [&](const ByteSink& sink) {
-            sink(tracking ? "frequency,magnitude_db,phase_deg,tracking_without_ff_db,tracking_without_ff_deg,"
+            sink(tracking ? "frequency,magnitude_db,phase_deg,tracking_without_ff_db,tracking_"
+                            "without_ff_deg,"
                             "tracking_with_zpetc_db,tracking_with_zpetc_deg\n"
                           : "frequency,magnitude_db,phase_deg\n");
             char line[256];
             // A pole on the frequency axis gives an infinite magnitude there: an empty cell.
-            const auto cell = [](double v) { return std::isfinite(v) ? QString::number(v, 'g', 17) : QString(); };
+            const auto cell = [](double v) {
+                return std::isfinite(v) ? QString::number(v, 'g', 17) : QString();
+            };
             for (std::size_t i = 0; i < l.omegaRadPerSec.size(); ++i) {
-                QString row = cell(l.omegaRadPerSec[i]) + ',' + cell(l.magnitudeDb[i]) + ',' + cell(l.phaseDeg[i]);
+                QString row = cell(l.omegaRadPerSec[i]) + ',' + cell(l.magnitudeDb[i]) + ',' +
+                              cell(l.phaseDeg[i]);
                 if (tracking)
                     row += ',' + cell(tracking->withoutFeedforward.magnitudeDb[i]) + ',' +
                            cell(tracking->withoutFeedforward.phaseDeg[i]) + ',' +
-                           cell(tracking->withZpetc.magnitudeDb[i]) + ',' + cell(tracking->withZpetc.phaseDeg[i]);
+                           cell(tracking->withZpetc.magnitudeDb[i]) + ',' +
+                           cell(tracking->withZpetc.phaseDeg[i]);
                 std::snprintf(line, sizeof line, "%s\n", row.toUtf8().constData());
                 sink(line);
             }

@@ -24,9 +24,9 @@
 
 namespace xyt::cli {
 
-const QStringList kGcodeContourOptions = {"gcode",        "feed-scale",    "max-accel", "max-jerk",
-                                          "dt",           "rapid-feed",    "corner-angle", "corner-window",
-                                          "method",       "csv"};
+const QStringList kGcodeContourOptions = {"gcode",  "feed-scale", "max-accel",    "max-jerk",
+                                          "dt",     "rapid-feed", "corner-angle", "corner-window",
+                                          "method", "csv"};
 
 namespace {
 
@@ -86,7 +86,9 @@ QJsonObject contourJson(const ContourErrorResult& c) {
 }
 
 QJsonObject circleFitJson(const CircleFit& f) {
-    return {{"x", number(f.centre.x)}, {"y", number(f.centre.y)}, {"radius", number(f.radius)},
+    return {{"x", number(f.centre.x)},
+            {"y", number(f.centre.y)},
+            {"radius", number(f.radius)},
             {"fit", f.geometric ? "geometric" : "kasa"}};
 }
 
@@ -100,29 +102,32 @@ QJsonObject isoJson(const ContourCircularTest& c) {
                                   {"x", number(s.point.x)},
                                   {"y", number(s.point.y)},
                                   {"samples", static_cast<qint64>(s.samples)}});
-    return {{"nominal", QJsonObject{{"x", number(c.nominal.centre.x)},
-                                    {"y", number(c.nominal.centre.y)},
-                                    {"radius", number(c.nominal.radius)}}},
-            {"direction", c.clockwise ? "clockwise" : "counter-clockwise"},
-            {"least_squares", circleFitJson(iso.leastSquares)},
-            {"G", number(iso.circularDeviationG)},
-            {"F_max", number(iso.radialDeviationFMax)},
-            {"F_min", number(iso.radialDeviationFMin)},
-            {"H", iso.hysteresisH ? number(*iso.hysteresisH) : QJsonValue()},
-            {"G_bidirectional", iso.bidirectionalG ? number(*iso.bidirectionalG) : QJsonValue()},
-            {"G_reverse", c.reverseIso ? number(c.reverseIso->circularDeviationG) : QJsonValue()},
-            {"F_max_reverse", c.reverseIso ? number(c.reverseIso->radialDeviationFMax) : QJsonValue()},
-            {"F_min_reverse", c.reverseIso ? number(c.reverseIso->radialDeviationFMin) : QJsonValue()},
-            {"runs", c.fromProgram ? "program" : "circle alone"},
-            {"line", static_cast<qint64>(c.line)},
-            {"reverse_line", c.reverseLine ? QJsonValue(static_cast<qint64>(c.reverseLine)) : QJsonValue()},
-            {"reversal_spikes", spikes},
-            {"samples", static_cast<qint64>(iso.samples)},
-            {"reverse_samples", static_cast<qint64>(c.reverseX.size())}};
+    return {
+        {"nominal", QJsonObject{{"x", number(c.nominal.centre.x)},
+                                {"y", number(c.nominal.centre.y)},
+                                {"radius", number(c.nominal.radius)}}},
+        {"direction", c.clockwise ? "clockwise" : "counter-clockwise"},
+        {"least_squares", circleFitJson(iso.leastSquares)},
+        {"G", number(iso.circularDeviationG)},
+        {"F_max", number(iso.radialDeviationFMax)},
+        {"F_min", number(iso.radialDeviationFMin)},
+        {"H", iso.hysteresisH ? number(*iso.hysteresisH) : QJsonValue()},
+        {"G_bidirectional", iso.bidirectionalG ? number(*iso.bidirectionalG) : QJsonValue()},
+        {"G_reverse", c.reverseIso ? number(c.reverseIso->circularDeviationG) : QJsonValue()},
+        {"F_max_reverse", c.reverseIso ? number(c.reverseIso->radialDeviationFMax) : QJsonValue()},
+        {"F_min_reverse", c.reverseIso ? number(c.reverseIso->radialDeviationFMin) : QJsonValue()},
+        {"runs", c.fromProgram ? "program" : "circle alone"},
+        {"line", static_cast<qint64>(c.line)},
+        {"reverse_line",
+         c.reverseLine ? QJsonValue(static_cast<qint64>(c.reverseLine)) : QJsonValue()},
+        {"reversal_spikes", spikes},
+        {"samples", static_cast<qint64>(iso.samples)},
+        {"reverse_samples", static_cast<qint64>(c.reverseX.size())}};
 }
 
 QJsonObject axisJson(const AxisSettings& axis, const SimulationResult& run) {
-    QJsonObject o{{"label", QString::fromStdString(axis.label)}, {"tracking", trackingJson(trackingMetrics(run))}};
+    QJsonObject o{{"label", QString::fromStdString(axis.label)},
+                  {"tracking", trackingJson(trackingMetrics(run))}};
     if (axis.method == DesignMethod::GuilleminTruxal) {
         o.insert("method", "guillemin-truxal");
         o.insert("wn", number(axis.gt.omegaNRadPerSec));
@@ -137,8 +142,8 @@ QJsonObject axisJson(const AxisSettings& axis, const SimulationResult& run) {
 
 /// The default session (as `xytune-cli new` writes it and the workbench starts: x the lower
 /// base, y the upper base, +-2.5 V) with both axes on --method: Braga et al.'s Guillemin-Truxal
-/// PI (wn 2 and 1 rad/s, kp 30) or Patrick, Ishak and Adnan's pole placement + ZPETC (x-axis and y-axis
-/// models, T = 1 - 0.2 z^-1, Ts 70 ms).
+/// PI (wn 2 and 1 rad/s, kp 30) or Patrick, Ishak and Adnan's pole placement + ZPETC (x-axis and
+/// y-axis models, T = 1 - 0.2 z^-1, Ts 70 ms).
 Session sessionFor(const CliArgs& args) {
     Session session = Session::paperDefault();
     const QString method = args.text("method", "guillemin-truxal");
@@ -160,16 +165,18 @@ void writeContourCsv(const QString& path, const ContourRun& run) {
     const FeedProfile& p = run.trace.profile;
     const std::vector<double>& e = run.contour.error;
     for (std::size_t k = 0; k < p.t.size(); ++k)
-        if (!std::isfinite(run.trace.x[k]) || !std::isfinite(run.trace.y[k]) || !std::isfinite(e[k]))
-            throw InvalidInput("--csv", "the traced path is not finite from t = " + std::to_string(p.t[k]) +
-                                            " s (an unstable loop); no CSV was written");
+        if (!std::isfinite(run.trace.x[k]) || !std::isfinite(run.trace.y[k]) ||
+            !std::isfinite(e[k]))
+            throw InvalidInput("--csv",
+                               "the traced path is not finite from t = " + std::to_string(p.t[k]) +
+                                   " s (an unstable loop); no CSV was written");
     writeFile("--csv", path, [&](const ByteSink& sink) {
         sink("t,s,v,x_ref,y_ref,x,y,contour_error\n");
         char line[256];
         for (std::size_t k = 0; k < p.t.size(); ++k) {
-            const int n = std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n",
-                                        p.t[k], p.s[k], p.v[k], p.x[k], p.y[k], run.trace.x[k],
-                                        run.trace.y[k], e[k]);
+            const int n = std::snprintf(
+                line, sizeof line, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g\n", p.t[k],
+                p.s[k], p.v[k], p.x[k], p.y[k], run.trace.x[k], run.trace.y[k], e[k]);
             sink(std::string_view(line, static_cast<std::size_t>(n)));
         }
     });
@@ -181,7 +188,8 @@ int runGcodeContour(const CliArgs& args) {
     args.allowOnly(kGcodeContourOptions);
     const QString file = *args.value("gcode");
     GcodeReadOptions readOptions;
-    readOptions.rapidFeedMmPerMin = positiveNumber(args, "rapid-feed", readOptions.rapidFeedMmPerMin);
+    readOptions.rapidFeedMmPerMin =
+        positiveNumber(args, "rapid-feed", readOptions.rapidFeedMmPerMin);
     ContourRunOptions options;
     options.profile.feedScale = positiveNumber(args, "feed-scale", 1.0);
     options.profile.maxAccelMmPerS2 = positiveNumber(args, "max-accel", 100.0);
@@ -199,7 +207,8 @@ int runGcodeContour(const CliArgs& args) {
         check.maxSamples = std::min(check.maxSamples, sampleLimit());
         return planFeedProfile(program, check);
     });
-    const ContourRun run = namingOptions(file, [&] { return runProgramContour(session, program, options); });
+    const ContourRun run =
+        namingOptions(file, [&] { return runProgramContour(session, program, options); });
     if (const auto csv = args.value("csv"))
         writeContourCsv(*csv, run);
 

@@ -8,15 +8,15 @@
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
 
-#include "core/simulation/contour_error.h"
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
+#include "core/simulation/contour_error.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
-#include "core/study/specification.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
+#include "core/study/specification.h"
 
 #include <QJsonArray>
 #include <QTextStream>
@@ -38,8 +38,9 @@ int runGt(const QStringList& argv) {
 
 namespace {
 
-const QStringList kDigitalOptions{"digital",    "controller-ts", "discretization", "delay-samples",
-                                  "encoder-resolution", "dac-bits", "anti-windup", "tracking-time"};
+const QStringList kDigitalOptions{"digital",       "controller-ts",      "discretization",
+                                  "delay-samples", "encoder-resolution", "dac-bits",
+                                  "anti-windup",   "tracking-time"};
 
 /// The run of the design as the firmware runs it (simulate --digital): the digital PI at
 /// --controller-ts with the implementation options, on the same trajectory and duration; its
@@ -60,11 +61,15 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
     try {
         validateSampledDataOptions(options);
     } catch (const InvalidInput& e) {
-        throw InvalidInput(e.field() == "umax" ? "--umax" : CliArgs::field(QString::fromStdString(e.field()).replace('_', '-')),
-                           e.reason());
+        throw InvalidInput(
+            e.field() == "umax"
+                ? "--umax"
+                : CliArgs::field(QString::fromStdString(e.field()).replace('_', '-')),
+            e.reason());
     }
-    const DigitalPi pi = digitalPi(design.kp, design.ki, ts, parseDiscretization(args, PiDiscretization::Tustin),
-                                   antiWindup, trackingTime);
+    const DigitalPi pi =
+        digitalPi(design.kp, design.ki, ts, parseDiscretization(args, PiDiscretization::Tustin),
+                  antiWindup, trackingTime);
     std::vector<double> times;
     try {
         times = sampleTimes(setup.durationSeconds, ts);
@@ -72,8 +77,8 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
         throw InvalidInput("--controller-ts", e.reason());
     }
     const TransferFunction plant = in.plant.transferFunction();
-    const SampledDataRun run = simulateSampledPi(plant, pi, sampled(setup.trajectory.at, times), options,
-                                                 setup.options.modelUnitsPerPositionUnit);
+    const SampledDataRun run = simulateSampledPi(plant, pi, sampled(setup.trajectory.at, times),
+                                                 options, setup.options.modelUnitsPerPositionUnit);
     const auto poles = sampledPiLoopPoles(sampledPlant(plant, ts), pi, options.delaySamples);
     double designDamping = 1.0, damping = 1.0;
     for (const auto& p : design.closedLoopPoles)
@@ -91,16 +96,19 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
     const std::optional<PointToPointMove>& move = setup.trajectory.move;
     if (move && (options.encoderResolution > 0.0 || options.dacBits > 0)) {
         const auto rest = std::lower_bound(times.begin(), times.end(), move->endSeconds);
-        if (const auto cycle = restLimitCycle(run.measured, static_cast<std::size_t>(rest - times.begin()))) {
+        if (const auto cycle =
+                restLimitCycle(run.measured, static_cast<std::size_t>(rest - times.begin()))) {
             limitCycle = QJsonObject{{"peak_to_peak", cycle->peakToPeak}, {"turns", cycle->turns}};
-            warnings.append(QStringLiteral("a limit cycle at rest: the measured position keeps oscillating "
-                                           "after the move (%1 mm peak to peak), caused by the quantization")
-                                .arg(cycle->peakToPeak, 0, 'g', 4));
+            warnings.append(
+                QStringLiteral("a limit cycle at rest: the measured position keeps oscillating "
+                               "after the move (%1 mm peak to peak), caused by the quantization")
+                    .arg(cycle->peakToPeak, 0, 'g', 4));
         }
     }
     runOut = run.result;
     return {{"controller_ts", ts},
-            {"discretization", QString::fromStdString(discretizationName(parseDiscretization(args, PiDiscretization::Tustin)))},
+            {"discretization", QString::fromStdString(discretizationName(
+                                   parseDiscretization(args, PiDiscretization::Tustin)))},
             {"delay_samples", options.delaySamples},
             {"encoder_resolution", options.encoderResolution},
             {"dac_bits", options.dacBits},
@@ -108,8 +116,9 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
             {"tracking_time", trackingTime},
             {"samples", static_cast<double>(times.size())},
             {"tracking", trackingJson(trackingMetrics(run.result))},
-            {"move_and_settle", move ? QJsonValue(moveSettleJson(moveSettleMetrics(run.result, *move, window)))
-                                     : QJsonValue()},
+            {"move_and_settle",
+             move ? QJsonValue(moveSettleJson(moveSettleMetrics(run.result, *move, window)))
+                  : QJsonValue()},
             {"poles", poleArray},
             {"min_damping", number(damping)},
             {"design_min_damping", number(designDamping)},
@@ -126,13 +135,16 @@ int runSimulate(const QStringList& argv) {
     if (!args.flag("digital"))
         for (const QString& name : kDigitalOptions)
             if (name != "digital" && args.has(name))
-                throw InvalidInput(CliArgs::field(name), "needs --digital (the run of the digital controller)");
+                throw InvalidInput(CliArgs::field(name),
+                                   "needs --digital (the run of the digital controller)");
     const DesignInput in = parseDesign(args);
     SimulationSetup setup = parseSimulationSetup(args, parsePlant(args));
-    const double window = positiveNumber(args, "in-position-window", Specification{}.inPositionWindowMm);
+    const double window =
+        positiveNumber(args, "in-position-window", Specification{}.inPositionWindowMm);
     const GtDesign design = designGuilleminTruxal(in.plant, in.wn, in.kp);
     auto simulate = [&] {
-        return simulateLoop(in.plant.transferFunction(), design.controller, setup.reference, setup.options);
+        return simulateLoop(in.plant.transferFunction(), design.controller, setup.reference,
+                            setup.options);
     };
     SimulationResult run = simulate();
     const std::optional<PointToPointMove>& move = setup.trajectory.move;
@@ -143,9 +155,10 @@ int runSimulate(const QStringList& argv) {
         const double t0 = setup.trajectory.t0Seconds, tf = move->endSeconds;
         const double cap = automaticMoveCapSeconds(t0, tf, setup.options.dtSeconds);
         const bool settles = design.stable && !trackingMetrics(run).diverged;
-        const double need = settles ? settleTimeEstimateSeconds(run.e.back(), window,
-                                                                continuousDecayPerSecond(design.closedLoopPoles))
-                                    : 0.0;
+        const double need =
+            settles ? settleTimeEstimateSeconds(run.e.back(), window,
+                                                continuousDecayPerSecond(design.closedLoopPoles))
+                    : 0.0;
         const double duration = automaticMoveDurationSeconds(t0, tf, need, cap);
         if (settles && duration > setup.durationSeconds) {
             resampleSetup(setup, args, duration);
@@ -167,8 +180,9 @@ int runSimulate(const QStringList& argv) {
     out.insert("duration_choice", durationJson);
     out.insert("tracking", trackingJson(trackingMetrics(run)));
     out.insert("step_response", stepResponseJson(stepCharacteristics(design.closedLoop)));
-    out.insert("move_and_settle", move ? QJsonValue(moveSettleJson(moveSettleMetrics(run, *move, window)))
-                                       : QJsonValue());
+    out.insert("move_and_settle",
+               move ? QJsonValue(moveSettleJson(moveSettleMetrics(run, *move, window)))
+                    : QJsonValue());
     if (args.flag("digital"))
         out.insert("digital", digital);
     print(out);
@@ -186,8 +200,9 @@ void reportAxis(QTextStream& out, const GtPreset& preset, const Sinusoid& circle
     const GtDesign d = designGuilleminTruxal(preset.plant, preset.omegaNRadPerSec, preset.kp);
     const StepCharacteristics step = stepCharacteristics(d.closedLoop);
     out << "== " << QString::fromStdString(preset.description) << "\n";
-    out << "  plant     G(s) = " << QString::fromStdString(preset.plant.transferFunction().num().toString())
-        << " / (" << QString::fromStdString(preset.plant.transferFunction().den().toString()) << ")\n";
+    out << "  plant     G(s) = "
+        << QString::fromStdString(preset.plant.transferFunction().num().toString()) << " / ("
+        << QString::fromStdString(preset.plant.transferFunction().den().toString()) << ")\n";
     out << "  design    wn = " << preset.omegaNRadPerSec << " rad/s, kp = " << preset.kp << "\n";
     out << "  f1 = " << fixed(d.f1) << "  f2 = " << fixed(d.f2) << "  f3 = " << fixed(d.f3)
         << "  psi1 = " << QString::number(d.psi1, 'g', 6) << "  psi2 = " << d.psi2 << "\n";
@@ -196,8 +211,8 @@ void reportAxis(QTextStream& out, const GtPreset& preset, const Sinusoid& circle
         << QString::fromStdString(d.referenceModel.den().toString()) << ")\n";
     out << "  closed-loop poles:";
     for (const auto& p : d.closedLoopPoles)
-        out << "  " << QString::number(p.real(), 'g', 6)
-            << (p.imag() >= 0 ? "+" : "-") << QString::number(std::abs(p.imag()), 'g', 6) << "j";
+        out << "  " << QString::number(p.real(), 'g', 6) << (p.imag() >= 0 ? "+" : "-")
+            << QString::number(std::abs(p.imag()), 'g', 6) << "j";
     out << "\n  margins   " << marginsText(stabilityMargins(gtLoopTransferFunctions(d).openLoop));
     out << "\n  step      settling (2 %) = " << fixed(step.settlingTimeSeconds, 2)
         << " s, overshoot = " << fixed(step.overshootPct, 3) << " %"
@@ -208,18 +223,19 @@ void reportAxis(QTextStream& out, const GtPreset& preset, const Sinusoid& circle
     options.modelUnitsPerPositionUnit = preset.modelUnitsPerPositionUnit;
     const CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
     const auto times = sampleTimes(130.0, options.dtSeconds);
-    const SimulationResult cubicRun = simulateLoop(preset.plant.transferFunction(), d.controller,
-                                                   sampled([&](double t) { return cubic.position(t); }, times),
-                                                   options);
+    const SimulationResult cubicRun =
+        simulateLoop(preset.plant.transferFunction(), d.controller,
+                     sampled([&](double t) { return cubic.position(t); }, times), options);
     const TrackingMetrics cm = trackingMetrics(cubicRun);
-    out << "  cubic 0 -> 600 in 130 s: RMSE " << fixed(cm.rmse) << ", max |e| " << fixed(cm.maxAbsError)
-        << " (" << fixed(cm.maxAbsErrorPct, 3) << " % of travel), max |u| " << fixed(cm.maxAbsU)
-        << " V, saturated " << (cm.saturated ? "yes" : "no") << ", ITAE " << fixed(cm.itae, 2) << "\n";
+    out << "  cubic 0 -> 600 in 130 s: RMSE " << fixed(cm.rmse) << ", max |e| "
+        << fixed(cm.maxAbsError) << " (" << fixed(cm.maxAbsErrorPct, 3) << " % of travel), max |u| "
+        << fixed(cm.maxAbsU) << " V, saturated " << (cm.saturated ? "yes" : "no") << ", ITAE "
+        << fixed(cm.itae, 2) << "\n";
 
     const auto circleTimes = sampleTimes(circleDuration, options.dtSeconds);
-    circleRun = simulateLoop(preset.plant.transferFunction(), d.controller,
-                             sampled([&](double t) { return circleAxis.value(t); }, circleTimes),
-                             options);
+    circleRun =
+        simulateLoop(preset.plant.transferFunction(), d.controller,
+                     sampled([&](double t) { return circleAxis.value(t); }, circleTimes), options);
     const TrackingMetrics sm = trackingMetrics(circleRun);
     out << "  circle axis: RMSE " << fixed(sm.rmse) << ", max |e| " << fixed(sm.maxAbsError)
         << ", max |u| " << fixed(sm.maxAbsU) << " V, saturated " << (sm.saturated ? "yes" : "no")
@@ -239,7 +255,8 @@ int runReport(const QStringList& argv) {
     QTextStream out(&text);
     out << "XY Tune report: the Guillemin-Truxal PI design of Braga et al. (default design)\n";
     out << "Cubic point-to-point 0 -> 600 in 130 s (dt 0.01 s, |u| <= 2.5 V); circle R = 25 mm at "
-           "0.06 rad/s (x = lower base, sine; y = upper base, cosine), 10 s ramp-in, one revolution.\n\n";
+           "0.06 rad/s (x = lower base, sine; y = upper base, cosine), 10 s ramp-in, one "
+           "revolution.\n\n";
     Circle circle;
     circle.rampInSeconds = 10.0;
     const double duration = circle.periodSeconds() + circle.rampInSeconds;

@@ -7,9 +7,9 @@
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
+#include "core/identification/continuous_fit.h"
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
-#include "core/identification/continuous_fit.h"
 #include "core/identification/identification.h"
 #include "core/identification/preprocessing.h"
 #include "core/io/file_io.h"
@@ -51,7 +51,8 @@ std::pair<double, double> parseRange(const QString& text) {
     const double t0 = parts.size() == 2 ? parts[0].toDouble(&ok0) : 0.0;
     const double t1 = parts.size() == 2 ? parts[1].toDouble(&ok1) : 0.0;
     if (!ok0 || !ok1 || !std::isfinite(t0) || !std::isfinite(t1) || !(t1 > t0))
-        throw InvalidInput("--range", "'" + text.toStdString() + "' is not T0:T1 in seconds with T1 > T0");
+        throw InvalidInput("--range",
+                           "'" + text.toStdString() + "' is not T0:T1 in seconds with T1 > T0");
     return {t0, t1};
 }
 
@@ -78,7 +79,8 @@ IoData record(const CliArgs& args, const QString& option, const QString& path) {
     ExperimentTable table = readTable(option, path, segment, usedColumns(c, path.toStdString()));
     if (!args.has("time-col") && !args.has("ts")) {
         if (!table.sampleTimeSeconds)
-            throw InvalidInput("--ts", "the file states no sample time: give --time-col NAME or --ts SECONDS");
+            throw InvalidInput(
+                "--ts", "the file states no sample time: give --time-col NAME or --ts SECONDS");
         c.fileSampleTime = true;
     }
     const QString unit = args.text("output-unit", "mm");
@@ -110,12 +112,9 @@ QJsonObject dataJson(const IoData& d) {
 }
 
 QJsonObject correlationJson(const CorrelationTest& t) {
-    return {{"passed", t.passed},
-            {"bound", number(t.bound)},
-            {"outside", t.outsideCount},
-            {"lags", static_cast<qint64>(t.lags.size())},
-            {"worst_lag", t.worstLag},
-            {"worst_value", number(t.worstValue)}};
+    return {{"passed", t.passed},        {"bound", number(t.bound)},
+            {"outside", t.outsideCount}, {"lags", static_cast<qint64>(t.lags.size())},
+            {"worst_lag", t.worstLag},   {"worst_value", number(t.worstValue)}};
 }
 
 QJsonObject fitJson(const ModelFit& simulation, const ModelFit& prediction) {
@@ -130,20 +129,26 @@ QJsonObject fitJson(const ModelFit& simulation, const ModelFit& prediction) {
 QJsonObject modelJson(const IdentifiedModel& m, double originMm) {
     QJsonObject parameters;
     for (std::size_t i = 0; i < m.parameters.size(); ++i)
-        parameters.insert(QString::fromStdString(m.parameterNames[i]),
-                          QJsonObject{{"value", number(m.parameters[i])},
-                                      {"std", number(i < m.standardDeviations.size() ? m.standardDeviations[i] : NAN)}});
-    QJsonObject polynomials{{"a", numbers(m.model.a)}, {"b", numbers(m.model.b)}, {"c", numbers(m.model.c)},
-                            {"d", numbers(m.model.d)}, {"f", numbers(m.model.f)}, {"ts", number(m.model.tsSeconds)}};
+        parameters.insert(
+            QString::fromStdString(m.parameterNames[i]),
+            QJsonObject{
+                {"value", number(m.parameters[i])},
+                {"std", number(i < m.standardDeviations.size() ? m.standardDeviations[i] : NAN)}});
+    QJsonObject polynomials{{"a", numbers(m.model.a)}, {"b", numbers(m.model.b)},
+                            {"c", numbers(m.model.c)}, {"d", numbers(m.model.d)},
+                            {"f", numbers(m.model.f)}, {"ts", number(m.model.tsSeconds)}};
     QJsonObject out{{"structure", QString::fromStdString(m.structure)},
                     {"status", QString::fromStdString(estimationStatusName(m.status))},
                     {"message", QString::fromStdString(m.message)},
                     {"parameters", parameters},
                     {"polynomials", polynomials}};
     if (m.plant)
-        out.insert("plant", QJsonObject{{"k0", number(m.plant->k0)}, {"a1", number(m.plant->a1)},
-                                        {"a2", number(m.plant->a2)}, {"output_unit", "mm"},
-                                        {"initial_position", number(originMm + m.initialPositionMm)}});
+        out.insert("plant",
+                   QJsonObject{{"k0", number(m.plant->k0)},
+                               {"a1", number(m.plant->a1)},
+                               {"a2", number(m.plant->a2)},
+                               {"output_unit", "mm"},
+                               {"initial_position", number(originMm + m.initialPositionMm)}});
     return out;
 }
 
@@ -162,7 +167,9 @@ std::array<OrderRange, 3> parseOrderTable(const QString& text) {
         const int lo = ends.size() == 2 ? ends[0].toInt(&ok0) : 0;
         const int hi = ends.size() == 2 ? ends[1].toInt(&ok1) : 0;
         if (!ok0 || !ok1)
-            throw InvalidInput("--order-table", "'" + text.toStdString() + "' is not NA0:NA1,NB0:NB1,NK0:NK1 (e.g. 1:4,1:4,0:2)");
+            throw InvalidInput("--order-table",
+                               "'" + text.toStdString() +
+                                   "' is not NA0:NA1,NB0:NB1,NK0:NK1 (e.g. 1:4,1:4,0:2)");
         ranges.push_back({lo, hi});
     }
     if (ranges.size() != 3)
@@ -171,8 +178,9 @@ std::array<OrderRange, 3> parseOrderTable(const QString& text) {
     for (const OrderRange& r : ranges)
         fits *= std::max(0.0, double(r.max) - double(r.min) + 1.0);
     if (fits > kMaxOrderTableFits)
-        throw InvalidInput("--order-table", "'" + text.toStdString() + "' asks for " + formatNumber(fits, 15) +
-                                                " fits; at most " + formatNumber(kMaxOrderTableFits) +
+        throw InvalidInput("--order-table", "'" + text.toStdString() + "' asks for " +
+                                                formatNumber(fits, 15) + " fits; at most " +
+                                                formatNumber(kMaxOrderTableFits) +
                                                 " are run in one table (narrow the ranges)");
     return {ranges[0], ranges[1], ranges[2]};
 }
@@ -199,9 +207,13 @@ QJsonObject orderTableJson(const std::array<OrderRange, 3>& ranges, const IoData
     }
     QJsonArray rows;
     for (const ArxOrderRow& r : t.rows)
-        rows.append(QJsonObject{{"na", r.orders.na}, {"nb", r.orders.nb}, {"nk", r.orders.nk},
+        rows.append(QJsonObject{{"na", r.orders.na},
+                                {"nb", r.orders.nb},
+                                {"nk", r.orders.nk},
                                 {"status", QString::fromStdString(estimationStatusName(r.status))},
-                                {"loss", number(r.loss)}, {"fpe", number(r.fpe)}, {"aic", number(r.aic)},
+                                {"loss", number(r.loss)},
+                                {"fpe", number(r.fpe)},
+                                {"aic", number(r.aic)},
                                 {"validation_loss", number(r.validationLoss)}});
     QJsonObject out{{"rows", rows}, {"common_first_sample", static_cast<qint64>(t.commonFirstRow)}};
     const auto orders = [&](std::optional<std::size_t> i) {
@@ -216,19 +228,44 @@ QJsonObject orderTableJson(const std::array<OrderRange, 3>& ranges, const IoData
 
 int runIdentify(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means"});
-    args.allowOnly({"data", "time-col", "ts", "input-col", "output-col", "output-unit", "mm-per-count", "segment",
-                    "structure", "na", "nb", "nc", "nd", "nf", "nk", "validate", "range", "detrend",
-                    "remove-means", "decimate", "horizon", "max-lag", "max-iterations", "session", "axis", "o",
+    args.allowOnly({"data",
+                    "time-col",
+                    "ts",
+                    "input-col",
+                    "output-col",
+                    "output-unit",
+                    "mm-per-count",
+                    "segment",
+                    "structure",
+                    "na",
+                    "nb",
+                    "nc",
+                    "nd",
+                    "nf",
+                    "nk",
+                    "validate",
+                    "range",
+                    "detrend",
+                    "remove-means",
+                    "decimate",
+                    "horizon",
+                    "max-lag",
+                    "max-iterations",
+                    "session",
+                    "axis",
+                    "o",
                     "order-table"});
     // --session IN.json --axis x|y -o OUT.json: "use this model" from the command line.
     std::optional<Session> session;
     int axis = 0;
     if (args.has("session") || args.has("o") || args.has("axis")) {
         if (!args.has("session"))
-            throw InvalidInput("--session", "give the session whose axis takes the model (with --axis and -o)");
+            throw InvalidInput("--session",
+                               "give the session whose axis takes the model (with --axis and -o)");
         const auto output = args.value("o");
         if (!output || output->isEmpty())
-            throw InvalidInput("-o", "give the file to write the session with the identified model to");
+            throw InvalidInput("-o",
+                               "give the file to write the session with the identified model to");
         const QString axisName = args.text("axis", QString());
         if (axisName != "x" && axisName != "y")
             throw InvalidInput("--axis", "must be x or y (the axis that takes the model)");
@@ -252,7 +289,8 @@ int runIdentify(const QStringList& argv) {
     };
     spec.arx = {order("na", 2, 0), order("nb", 3, 1), order("nk", 1, 0)};
     spec.oe = {order("nb", 3, 1), order("nf", 2, 0), order("nk", 1, 0)};
-    spec.bj = {order("nb", 3, 1), order("nc", 1, 0), order("nd", 1, 0), order("nf", 2, 0), order("nk", 1, 0)};
+    spec.bj = {order("nb", 3, 1), order("nc", 1, 0), order("nd", 1, 0), order("nf", 2, 0),
+               order("nk", 1, 0)};
     spec.predictionHorizon = args.count("horizon", 5, 1'000'000);
     spec.maxLag = args.count("max-lag", 25, 10'000);
     spec.search.maxIterations = args.count("max-iterations", 100, 100'000);
@@ -275,29 +313,37 @@ int runIdentify(const QStringList& argv) {
                 continue;
             if (d == &estimation)
                 estimationOrigin = *y0;
-            notes.append(QStringLiteral("%1: the first sample %2 mm was subtracted for the fit; initial_position "
-                                        "adds it back (where the table stood)")
-                             .arg(QString::fromStdString(d->source))
-                             .arg(*y0, 0, 'g', 10));
+            notes.append(
+                QStringLiteral(
+                    "%1: the first sample %2 mm was subtracted for the fit; initial_position "
+                    "adds it back (where the table stood)")
+                    .arg(QString::fromStdString(d->source))
+                    .arg(*y0, 0, 'g', 10));
         }
     }
     const IdentifiedModel m = identifyModel(estimation, validation ? &*validation : nullptr, spec);
     QJsonObject out{{"data", dataJson(estimation)}, {"model", modelJson(m, estimationOrigin)}};
     if (orderTable)
-        out.insert("order_table", orderTableJson(*orderTable, estimation, validation ? &*validation : nullptr));
+        out.insert("order_table",
+                   orderTableJson(*orderTable, estimation, validation ? &*validation : nullptr));
     if (validation)
         out.insert("validation_data", dataJson(*validation));
     if (m.hasEstimate()) {
-        QJsonObject fit{{"estimation", fitJson(m.fit.estimationSimulation, m.fit.estimationPrediction)}};
+        QJsonObject fit{
+            {"estimation", fitJson(m.fit.estimationSimulation, m.fit.estimationPrediction)}};
         if (m.fit.validationSimulation)
-            fit.insert("validation", fitJson(*m.fit.validationSimulation, *m.fit.validationPrediction));
+            fit.insert("validation",
+                       fitJson(*m.fit.validationSimulation, *m.fit.validationPrediction));
         out.insert("fit", fit);
         out.insert("fpe", number(m.criteria.samples > 0 ? m.criteria.fpe : NAN));
         out.insert("aic", number(m.criteria.samples > 0 ? m.criteria.aic : NAN));
         if (m.residualTests.samples > 0)
-            out.insert("residual_tests", QJsonObject{{"passed", m.residualTests.passed()},
-                                                     {"autocorrelation", correlationJson(m.residualTests.autocorrelation)},
-                                                     {"cross_correlation", correlationJson(m.residualTests.crossCorrelation)}});
+            out.insert(
+                "residual_tests",
+                QJsonObject{
+                    {"passed", m.residualTests.passed()},
+                    {"autocorrelation", correlationJson(m.residualTests.autocorrelation)},
+                    {"cross_correlation", correlationJson(m.residualTests.crossCorrelation)}});
         out.insert("poles", complexPairs(m.roots.poles));
         out.insert("zeros", complexPairs(m.roots.zeros));
         if (!m.roots.continuousPoles.empty())
@@ -325,9 +371,11 @@ int runIdentify(const QStringList& argv) {
             refused = e.what();
         }
         if (!refused.empty())
-            throw InvalidInput("-o", "the session with this model cannot be run as report runs it (" + refused +
-                                         "); nothing was written");
-        writeTextFile("-o", *args.value("o"), QString::fromUtf8(QJsonDocument(files::sessionToJson(*session)).toJson()));
+            throw InvalidInput("-o",
+                               "the session with this model cannot be run as report runs it (" +
+                                   refused + "); nothing was written");
+        writeTextFile("-o", *args.value("o"),
+                      QString::fromUtf8(QJsonDocument(files::sessionToJson(*session)).toJson()));
         out.insert("session", QString::fromStdString(terminalText(args.value("o")->toStdString())));
     }
     print(out);

@@ -10,7 +10,9 @@
 
 namespace xyt::cli {
 
-QJsonValue number(double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); }
+QJsonValue number(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
+}
 
 QJsonArray numbers(const std::vector<double>& v) {
     QJsonArray a;
@@ -19,9 +21,13 @@ QJsonArray numbers(const std::vector<double>& v) {
     return a;
 }
 
-QJsonArray descending(const Polynomial& p) { return numbers(p.descending()); }
+QJsonArray descending(const Polynomial& p) {
+    return numbers(p.descending());
+}
 
-QJsonArray ascending(const Polynomial& p) { return numbers(p.ascending()); }
+QJsonArray ascending(const Polynomial& p) {
+    return numbers(p.ascending());
+}
 
 QJsonArray complexPairs(const std::vector<std::complex<double>>& roots) {
     QJsonArray a;
@@ -85,14 +91,17 @@ void print(const QJsonObject& object) {
 namespace xyt::cli {
 
 QString marginsText(const StabilityMargins& m) {
-    const auto v = [](double x) { return std::isinf(x) && x > 0 ? QStringLiteral("inf") : QString::number(x, 'g', 3); };
+    const auto v = [](double x) {
+        return std::isinf(x) && x > 0 ? QStringLiteral("inf") : QString::number(x, 'g', 3);
+    };
     QString text = QStringLiteral("GM %1 dB").arg(v(m.gainMarginDb));
     if (std::isfinite(m.gainMarginOmegaRadPerSec))
         text += QStringLiteral(" at %1 rad/s").arg(v(m.gainMarginOmegaRadPerSec));
     text += QStringLiteral(", PM %1 deg").arg(v(m.phaseMarginDeg));
     if (std::isfinite(m.phaseMarginOmegaRadPerSec))
         text += QStringLiteral(" at %1 rad/s").arg(v(m.phaseMarginOmegaRadPerSec));
-    text += QStringLiteral(", delay margin %1 s, Ms %2").arg(v(m.delayMarginSeconds), v(m.peakSensitivity));
+    text += QStringLiteral(", delay margin %1 s, Ms %2")
+                .arg(v(m.delayMarginSeconds), v(m.peakSensitivity));
     if (!m.closedLoopStable)
         text += QStringLiteral(" (closed loop UNSTABLE: not robustness measures)");
     return text;

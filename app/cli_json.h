@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/simulation/metrics.h"
-#include "core/simulation/move_settle.h"
 #include "core/model/polynomial.h"
 #include "core/model/transfer_function.h"
+#include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
 
 #include <QJsonArray>
 #include <QJsonObject>

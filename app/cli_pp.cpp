@@ -5,11 +5,11 @@
 #include "app/cli_gcode_contour.h"
 #include "app/cli_json.h"
 
+#include "core/design/pole_placement.h"
+#include "core/design/zpetc.h"
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
-#include "core/design/pole_placement.h"
 #include "core/simulation/trajectory.h"
-#include "core/design/zpetc.h"
 #include "core/simulation/zpetc_tracking.h"
 
 #include <QJsonArray>
@@ -110,7 +110,8 @@ std::string durationField(const CliArgs& args) {
 
 /// Runs a tracking run, naming the argument the user typed for a refusal about the run's
 /// length ("duration") or its reference ("amplitude", "omega"; contour: @p amplitudeArgument).
-template <class F> auto namingRunArguments(const CliArgs& args, const std::string& amplitudeArgument, F run) {
+template <class F>
+auto namingRunArguments(const CliArgs& args, const std::string& amplitudeArgument, F run) {
     try {
         return run();
     } catch (const InvalidInput& e) {

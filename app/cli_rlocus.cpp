@@ -5,10 +5,10 @@
 #include "app/cli_commands.h"
 #include "app/cli_json.h"
 
+#include "core/analysis/root_locus.h"
+#include "core/design/guillemin_truxal.h"
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
-#include "core/design/guillemin_truxal.h"
-#include "core/analysis/root_locus.h"
 
 #include <map>
 #include <optional>
@@ -19,10 +19,14 @@ namespace {
 
 /// Core field names of rootLocus/fromZInverse -> the CLI argument that supplied them.
 InvalidInput asArgument(const InvalidInput& e) {
-    static const std::map<std::string, std::string> arguments = {
-        {"num", "--num"}, {"den", "--den"}, {"ts", "--ts"}, {"kMax", "--kmax"},
-        {"maxStepFraction", "--max-step"}, {"maxPoints", "--max-points"},
-        {"wn", "--wn"}, {"kp", "--kp"}};
+    static const std::map<std::string, std::string> arguments = {{"num", "--num"},
+                                                                 {"den", "--den"},
+                                                                 {"ts", "--ts"},
+                                                                 {"kMax", "--kmax"},
+                                                                 {"maxStepFraction", "--max-step"},
+                                                                 {"maxPoints", "--max-points"},
+                                                                 {"wn", "--wn"},
+                                                                 {"kp", "--kp"}};
     const auto it = arguments.find(e.field());
     return InvalidInput(it != arguments.end() ? it->second : e.field(), e.reason());
 }
@@ -71,7 +75,8 @@ LoopInput parseLoop(const CliArgs& args) {
     const std::vector<double> den = parseCoefficientList(denText->toStdString(), "--den");
     try {
         if (args.has("ts")) {
-            // Discrete: ascending powers of z^-1, as Patrick, Ishak and Adnan write their ARX models.
+            // Discrete: ascending powers of z^-1, as Patrick, Ishak and Adnan write their ARX
+            // models.
             in.tsSeconds = args.number("ts");
             if (!(in.tsSeconds > 0.0))
                 throw InvalidInput("--ts", "must be greater than zero");
@@ -133,7 +138,7 @@ QJsonObject locusJson(const RootLocus& r) {
                                  {"im_min", number(r.view.imMin)},
                                  {"im_max", number(r.view.imMax)}}},
             {"max_step", number(r.maxStep)},
-            {"status", r.status == RootLocusStatus::Complete ? "complete"
+            {"status", r.status == RootLocusStatus::Complete            ? "complete"
                        : r.status == RootLocusStatus::PointLimitReached ? "point_limit_reached"
                                                                         : "gain_limit_reached"},
             {"warnings", warnings}};

@@ -32,11 +32,13 @@ struct Range {
 
 /// "k0=10%", "x.b1=0.05" (a fraction), "y.a2=2.5%".
 Range parseRange(const QString& text) {
-    static const QRegularExpression form(QStringLiteral("^(?:([xy])\\.)?([a-z][a-z0-9]*)=([^%]+)(%?)$"));
+    static const QRegularExpression form(
+        QStringLiteral("^(?:([xy])\\.)?([a-z][a-z0-9]*)=([^%]+)(%?)$"));
     const auto m = form.match(text.trimmed());
     if (!m.hasMatch())
-        throw InvalidInput("--range", "'" + text.toStdString() +
-                                          "' is not NAME=PERCENT% or NAME=FRACTION (e.g. k0=10%, x.b1=0.05)");
+        throw InvalidInput("--range",
+                           "'" + text.toStdString() +
+                               "' is not NAME=PERCENT% or NAME=FRACTION (e.g. k0=10%, x.b1=0.05)");
     bool ok = false;
     const double v = m.captured(3).toDouble(&ok);
     if (!ok || !std::isfinite(v))
@@ -45,12 +47,17 @@ Range parseRange(const QString& text) {
 }
 
 QJsonObject distributionJson(const Distribution& d) {
-    return {{"count", d.count}, {"min", number(d.count ? d.min : NAN)},   {"p05", number(d.count ? d.p05 : NAN)},
-            {"p50", number(d.count ? d.p50 : NAN)}, {"p95", number(d.count ? d.p95 : NAN)},
-            {"max", number(d.count ? d.max : NAN)}, {"mean", number(d.count ? d.mean : NAN)}};
+    return {{"count", d.count},
+            {"min", number(d.count ? d.min : NAN)},
+            {"p05", number(d.count ? d.p05 : NAN)},
+            {"p50", number(d.count ? d.p50 : NAN)},
+            {"p95", number(d.count ? d.p95 : NAN)},
+            {"max", number(d.count ? d.max : NAN)},
+            {"mean", number(d.count ? d.mean : NAN)}};
 }
 
-QJsonObject parametersJson(const std::vector<std::string>& names, const std::vector<double>& values) {
+QJsonObject parametersJson(const std::vector<std::string>& names,
+                           const std::vector<double>& values) {
     QJsonObject o;
     for (std::size_t i = 0; i < names.size(); ++i)
         o.insert(QString::fromStdString(names[i]), number(values[i]));
@@ -67,8 +74,8 @@ QJsonObject runJson(const RobustnessResult& r, std::size_t i) {
             {"rmse", number(p.tracking.rmse)}};
 }
 
-QJsonObject axisJson(const QString& axisId, const RobustnessProblem& problem, const RobustnessResult& r,
-                     const RobustnessOptions& o) {
+QJsonObject axisJson(const QString& axisId, const RobustnessProblem& problem,
+                     const RobustnessResult& r, const RobustnessOptions& o) {
     QJsonArray parameters;
     for (const UncertainParameter& p : problem.parameters)
         parameters.append(QJsonObject{{"name", QString::fromStdString(p.name)},
@@ -89,8 +96,9 @@ QJsonObject axisJson(const QString& axisId, const RobustnessProblem& problem, co
         warnings.append(QString::fromStdString(w));
     return {{"axis", axisId},
             {"method", problem.loop ? "pole-placement-zpetc" : "guillemin-truxal"},
-            {"uncertainty", problem.covariance ? "identified covariance (normal draws; corners at 3 sigma)"
-                                               : "uniform ranges"},
+            {"uncertainty", problem.covariance
+                                ? "identified covariance (normal draws; corners at 3 sigma)"
+                                : "uniform ranges"},
             {"parameters", parameters},
             {"samples", o.samples},
             {"corners", static_cast<qint64>(r.runs.size()) - o.samples},
@@ -127,8 +135,9 @@ QJsonObject contourJson(const ContourRobustnessProblem& problem, const ContourRo
             {"pairs", static_cast<qint64>(r.runs.size())},
             {"nominal", QJsonObject{{"max_abs_contour_error", number(r.nominal.maxAbsContourError)},
                                     {"rms_contour_error", number(r.nominal.rmsContourError)}}},
-            {"statistics", QJsonObject{{"max_abs_contour_error", distributionJson(r.maxAbsContourError)},
-                                       {"rms_contour_error", distributionJson(r.rmsContourError)}}},
+            {"statistics",
+             QJsonObject{{"max_abs_contour_error", distributionJson(r.maxAbsContourError)},
+                         {"rms_contour_error", distributionJson(r.rmsContourError)}}},
             {"unstable", unstable},
             {"worst", r.worst ? QJsonValue(pairJson(r, *r.worst)) : QJsonValue()},
             {"warnings", warnings}};
@@ -149,7 +158,9 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
     if (contour)
         out << ",max_abs_contour_error,rms_contour_error";
     out << '\n';
-    const auto cell = [](double v) { return std::isfinite(v) ? QString::number(v, 'g', 17) : QString(); };
+    const auto cell = [](double v) {
+        return std::isfinite(v) ? QString::number(v, 'g', 17) : QString();
+    };
     for (std::size_t a = 0; a < results.size(); ++a)
         for (std::size_t i = 0; i < results[a].runs.size(); ++i) {
             const PlantRun& p = results[a].runs[i];
@@ -157,9 +168,10 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
             for (std::size_t b = 0; b < results.size(); ++b)
                 for (std::size_t j = 0; j < results[b].parameterNames.size(); ++j)
                     out << ',' << (b == a ? cell(p.values[j]) : QString());
-            out << ',' << (p.stable ? 1 : 0) << ',' << (p.finite ? 0 : 1) << ',' << cell(p.tracking.rmse) << ','
-                << cell(p.tracking.maxAbsError) << ',' << cell(p.tracking.maxAbsU) << ','
-                << cell(p.rmseWithoutFf) << ',' << (p.meetsSpec ? 1 : 0) << (contour ? ",," : "") << '\n';
+            out << ',' << (p.stable ? 1 : 0) << ',' << (p.finite ? 0 : 1) << ','
+                << cell(p.tracking.rmse) << ',' << cell(p.tracking.maxAbsError) << ','
+                << cell(p.tracking.maxAbsU) << ',' << cell(p.rmseWithoutFf) << ','
+                << (p.meetsSpec ? 1 : 0) << (contour ? ",," : "") << '\n';
         }
     if (contour)
         for (std::size_t i = 0; i < contour->runs.size(); ++i) {
@@ -168,8 +180,8 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
             for (double v : p.values)
                 out << ',' << cell(v);
             out << ',' << (p.stable ? 1 : 0) << ',' << (p.finite ? 0 : 1) << ",,,,,,"
-                << cell(p.finite ? p.maxAbsContourError : NAN) << ',' << cell(p.finite ? p.rmsContourError : NAN)
-                << '\n';
+                << cell(p.finite ? p.maxAbsContourError : NAN) << ','
+                << cell(p.finite ? p.rmsContourError : NAN) << '\n';
         }
     return csv;
 }
@@ -177,14 +189,16 @@ QString robustnessCsv(const std::vector<QString>& ids, const std::vector<Robustn
 } // namespace
 
 int runRobustness(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"no-corners", "sensitivity", "contour", "from-identification"}, {"range"});
-    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv", "sensitivity", "contour",
-                    "from-identification"});
+    const CliArgs args = CliArgs::parse(
+        argv, {"no-corners", "sensitivity", "contour", "from-identification"}, {"range"});
+    args.allowOnly({"samples", "seed", "range", "axis", "no-corners", "threads", "csv",
+                    "sensitivity", "contour", "from-identification"});
     const bool identified = args.flag("from-identification");
     if (identified && !args.values("range").isEmpty())
         throw InvalidInput("--range", "give either ranges or --from-identification, not both");
     if (args.positional().size() != 1)
-        throw InvalidInput("SESSION", "give one session file (xytune-cli robustness SESSION.json ...)");
+        throw InvalidInput("SESSION",
+                           "give one session file (xytune-cli robustness SESSION.json ...)");
     const Session session = loadSessionOrThrow(args.positional().first());
     RobustnessOptions o;
     o.samples = args.count("samples", 200, 1'000'000);
@@ -201,7 +215,8 @@ int runRobustness(const QStringList& argv) {
     if (contour && axisChoice != "both")
         throw InvalidInput("--contour", "the contour is traced by both axes: leave out --axis");
     if (contour && session.trajectory.kind == TrajectoryKind::Cubic)
-        throw InvalidInput("--contour", "needs a circle or G-code trajectory (the session's is a cubic move)");
+        throw InvalidInput("--contour",
+                           "needs a circle or G-code trajectory (the session's is a cubic move)");
     std::vector<Range> ranges;
     for (const QString& text : args.values("range"))
         ranges.push_back(parseRange(text));
@@ -216,20 +231,23 @@ int runRobustness(const QStringList& argv) {
         ids.push_back(QString::fromStdString(session.axes[static_cast<std::size_t>(axis)].id));
         RobustnessProblem problem = sessionRobustnessProblem(session, axis);
         if (identified)
-            setIdentifiedUncertainty(problem, session, axis); // names axes[i].model_origin when it cannot
+            setIdentifiedUncertainty(problem, session,
+                                     axis); // names axes[i].model_origin when it cannot
         for (std::size_t i = 0; i < ranges.size(); ++i) {
             const Range& range = ranges[i];
             if (!range.axis.isEmpty() && range.axis != (axis == 0 ? "x" : "y"))
                 continue;
-            const bool has = std::any_of(problem.parameters.begin(), problem.parameters.end(),
-                                         [&](const UncertainParameter& p) { return p.name == range.name.toStdString(); });
+            const bool has = std::any_of(
+                problem.parameters.begin(), problem.parameters.end(),
+                [&](const UncertainParameter& p) { return p.name == range.name.toStdString(); });
             if (!has && range.axis.isEmpty())
                 continue; // k0=10% applies to the axes that have a k0
             try {
                 setRelativeRange(problem.parameters, range.name.toStdString(), range.relative);
             } catch (const InvalidInput& e) {
-                throw InvalidInput("--range", (range.axis.isEmpty() ? QString() : range.axis + ".").toStdString() +
-                                                  range.name.toStdString() + ": " + e.reason());
+                throw InvalidInput(
+                    "--range", (range.axis.isEmpty() ? QString() : range.axis + ".").toStdString() +
+                                   range.name.toStdString() + ": " + e.reason());
             }
             used[i] = true;
         }
@@ -237,8 +255,9 @@ int runRobustness(const QStringList& argv) {
     }
     for (std::size_t i = 0; i < ranges.size(); ++i)
         if (!used[i])
-            throw InvalidInput("--range", "no analyzed axis has a parameter '" + ranges[i].name.toStdString() +
-                                              "' (Guillemin-Truxal: k0, a1, a2; pole placement: a1.., b1..)");
+            throw InvalidInput("--range",
+                               "no analyzed axis has a parameter '" + ranges[i].name.toStdString() +
+                                   "' (Guillemin-Truxal: k0, a1, a2; pole placement: a1.., b1..)");
     QJsonArray axes;
     std::vector<RobustnessResult> results;
     for (std::size_t a = 0; a < problems.size(); ++a) {
@@ -246,7 +265,8 @@ int runRobustness(const QStringList& argv) {
         QJsonObject axis = axisJson(ids[a], problems[a], results.back(), o);
         if (args.flag("sensitivity") && problems[a].loop && problems[a].zpetcEnabled) {
             QJsonArray curve;
-            for (const ZpetcSensitivityPoint& p : zpetcSensitivity(problems[a], {0.0, 0.25, 0.5, 0.75, 1.0}, o))
+            for (const ZpetcSensitivityPoint& p :
+                 zpetcSensitivity(problems[a], {0.0, 0.25, 0.5, 0.75, 1.0}, o))
                 curve.append(QJsonObject{{"scale", p.scale},
                                          {"rmse_with_ff", distributionJson(p.rmseWithFf)},
                                          {"rmse_without_ff", distributionJson(p.rmseWithoutFf)},

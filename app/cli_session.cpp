@@ -4,11 +4,11 @@
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
 
+#include "core/io/file_io.h"
+#include "core/io/text_escape.h"
 #include "core/model/errors.h"
 #include "core/session/axis_frequency.h"
 #include "core/session/export_text.h"
-#include "core/io/file_io.h"
-#include "core/io/text_escape.h"
 #include "core/session/session_evaluation.h"
 #include "ui/files/coefficient_json.h"
 #include "ui/files/session_file.h"
@@ -30,7 +30,9 @@ void writeOrThrow(const QString& path, const QByteArray& bytes) {
 }
 
 /// User text (a label, a file name) as the terminal may show it: controls escaped.
-QString shown(const std::string& text) { return QString::fromStdString(terminalText(text)); }
+QString shown(const std::string& text) {
+    return QString::fromStdString(terminalText(text));
+}
 
 QString outputPath(const CliArgs& args) {
     const auto o = args.value("o");
@@ -57,8 +59,8 @@ QString trackingText(const TrackingMetrics& m) {
     if (m.saturated)
         saturated += " (" + number(m.saturatedTimeSeconds, 2) + " s)";
     return "RMSE " + number(m.rmse) + " mm, max |e| " + number(m.maxAbsError) + " mm (" +
-           number(m.maxAbsErrorPct, 3) + " % of travel), max |u| " + number(m.maxAbsU) + " V, saturated " +
-           saturated + ", ITAE " + number(m.itae, 1);
+           number(m.maxAbsErrorPct, 3) + " % of travel), max |u| " + number(m.maxAbsU) +
+           " V, saturated " + saturated + ", ITAE " + number(m.itae, 1);
 }
 
 /// "settled ... s after tf, final error ... mm, final-position overshoot ... mm".
@@ -119,11 +121,12 @@ int runSessionReport(const QString& path) {
             << "): " << files::methodName(s.method) << "\n";
         if (s.origin) {
             const ModelOrigin& o = *s.origin;
-            out << "  model: identified " << shown(o.structure) << " from " << shown(o.source) << " ("
-                << o.samples << " samples at " << o.tsSeconds << " s), fit " << QString::number(o.fitPercent, 'f', 2)
-                << " %";
+            out << "  model: identified " << shown(o.structure) << " from " << shown(o.source)
+                << " (" << o.samples << " samples at " << o.tsSeconds << " s), fit "
+                << QString::number(o.fitPercent, 'f', 2) << " %";
             if (o.validationFitPercent)
-                out << ", on validation data " << QString::number(*o.validationFitPercent, 'f', 2) << " %";
+                out << ", on validation data " << QString::number(*o.validationFitPercent, 'f', 2)
+                    << " %";
             out << "\n";
         }
         if (!a.ok) {
@@ -132,8 +135,8 @@ int runSessionReport(const QString& path) {
         }
         if (a.gt)
             out << "  wn = " << a.gt->omegaNRadPerSec << " rad/s, kp = " << a.gt->kp
-                << ", ki = " << QString::number(a.gt->ki, 'g', 8) << (a.gt->stable ? "" : "  UNSTABLE")
-                << "\n";
+                << ", ki = " << QString::number(a.gt->ki, 'g', 8)
+                << (a.gt->stable ? "" : "  UNSTABLE") << "\n";
         if (a.pp) {
             auto poly = [](const Polynomial& p) {
                 QStringList parts;
@@ -141,38 +144,44 @@ int runSessionReport(const QString& path) {
                     parts << QString::number(c, 'g', 6);
                 return "[" + parts.join(" ") + "]";
             };
-            out << "  F = " << poly(a.pp->f) << ", G = " << poly(a.pp->g) << " (ascending z^-1), Kf = "
-                << QString::number(a.pp->kf, 'g', 6) << ", Ts = " << a.pp->tsSeconds << " s\n";
+            out << "  F = " << poly(a.pp->f) << ", G = " << poly(a.pp->g)
+                << " (ascending z^-1), Kf = " << QString::number(a.pp->kf, 'g', 6)
+                << ", Ts = " << a.pp->tsSeconds << " s\n";
             if (s.pp.zpetcEnabled && a.zpetc)
-                out << "  ZPETC (as designed): preview " << a.zpetc->previewSteps << " samples; RMSE without "
-                    << number(a.rmseWithoutFf, 5) << " mm, with " << number(a.metrics.rmse, 5)
-                    << " mm (improvement " << number(a.improvementPct, 2) << " %)\n";
+                out << "  ZPETC (as designed): preview " << a.zpetc->previewSteps
+                    << " samples; RMSE without " << number(a.rmseWithoutFf, 5) << " mm, with "
+                    << number(a.metrics.rmse, 5) << " mm (improvement "
+                    << number(a.improvementPct, 2) << " %)\n";
         }
         // The run that will really happen first (the digital implementation: sampled, delayed,
         // quantized, |u| limited), then the design's own run, each labelled: a design whose
         // implementation saturates must not be read from the design's figures.
         const DigitalEvaluation* digital = a.digital.get();
-        const QString designRun = a.pp ? QStringLiteral("the linear loop at Ts, |u| over the limit flagged, not applied")
-                                       : QStringLiteral("the continuous loop, |u| limited");
-        const QString digitalRun =
-            digital ? "the digital implementation at Ts = " + QString::number(digital->tsSeconds, 'g', 6) +
-                          " s, |u| limited to " + QString::number(session.umaxVolts, 'g', 6) + " V"
-                    : QString();
+        const QString designRun =
+            a.pp ? QStringLiteral("the linear loop at Ts, |u| over the limit flagged, not applied")
+                 : QStringLiteral("the continuous loop, |u| limited");
+        const QString digitalRun = digital ? "the digital implementation at Ts = " +
+                                                 QString::number(digital->tsSeconds, 'g', 6) +
+                                                 " s, |u| limited to " +
+                                                 QString::number(session.umaxVolts, 'g', 6) + " V"
+                                           : QString();
         if (digital)
-            out << "  tracking as it runs (" << digitalRun << "): " << trackingText(digital->metrics) << "\n";
+            out << "  tracking as it runs (" << digitalRun
+                << "): " << trackingText(digital->metrics) << "\n";
         out << "  tracking as designed (" << designRun << "): " << trackingText(a.metrics) << "\n";
         out << "  unit step of the closed loop: settling (2 %) "
             << (a.step.stable ? number(a.step.settlingTimeSeconds, 2) + " s" : QString("unstable"))
             << ", overshoot "
-            << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable")) << "\n";
+            << (a.step.stable ? number(a.step.overshootPct, 3) + " %" : QString("unstable"))
+            << "\n";
         out << "  loop margins: " << marginsText(analyzeAxisFrequency(session, a).margins) << "\n";
         if (a.moveSettle) {
             const QString window = QString::number(a.moveSettle->windowMm, 'g', 6);
             if (digital && digital->moveSettle)
-                out << "  move and settle (window " << window << " mm) as it runs: "
-                    << moveSettleText(*digital->moveSettle) << "\n";
-            out << "  move and settle (window " << window << " mm) as designed: " << moveSettleText(*a.moveSettle)
-                << "\n";
+                out << "  move and settle (window " << window
+                    << " mm) as it runs: " << moveSettleText(*digital->moveSettle) << "\n";
+            out << "  move and settle (window " << window
+                << " mm) as designed: " << moveSettleText(*a.moveSettle) << "\n";
         }
         // The verdict is the worse of the design and its implementation (AxisEvaluation::check);
         // each failed criterion says which run fails it.
@@ -187,20 +196,22 @@ int runSessionReport(const QString& path) {
             const char* name;
             bool perRun;
         };
-        const Criterion criteria[] = {{c.stable, d.stable, im.stable, "stable", false},
-                                      {c.settlingTime, d.settlingTime, im.settlingTime, "step settling", false},
-                                      {c.overshoot, d.overshoot, im.overshoot, "step overshoot", false},
-                                      {c.noSaturation, d.noSaturation, im.noSaturation, "no saturation", true},
-                                      {c.trackingError, d.trackingError, im.trackingError, "tracking error", true},
-                                      {c.settle, d.settle, im.settle, "move settle", true},
-                                      {c.phaseMargin, d.phaseMargin, im.phaseMargin, "phase margin", false},
-                                      {c.gainMargin, d.gainMargin, im.gainMargin, "gain margin", false}};
+        const Criterion criteria[] = {
+            {c.stable, d.stable, im.stable, "stable", false},
+            {c.settlingTime, d.settlingTime, im.settlingTime, "step settling", false},
+            {c.overshoot, d.overshoot, im.overshoot, "step overshoot", false},
+            {c.noSaturation, d.noSaturation, im.noSaturation, "no saturation", true},
+            {c.trackingError, d.trackingError, im.trackingError, "tracking error", true},
+            {c.settle, d.settle, im.settle, "move settle", true},
+            {c.phaseMargin, d.phaseMargin, im.phaseMargin, "phase margin", false},
+            {c.gainMargin, d.gainMargin, im.gainMargin, "gain margin", false}};
         for (const Criterion& k : criteria)
             if (!k.passed)
-                failed << k.name + (a.implementationCheck && k.perRun ? failedOn(k.design, k.implementation)
-                                                                      : QString());
-        out << "  specification: " << (failed.isEmpty() ? QStringLiteral("met") : "fails " + failed.join(", "))
-            << "\n";
+                failed << k.name + (a.implementationCheck && k.perRun
+                                        ? failedOn(k.design, k.implementation)
+                                        : QString());
+        out << "  specification: "
+            << (failed.isEmpty() ? QStringLiteral("met") : "fails " + failed.join(", ")) << "\n";
         for (const auto& w : a.warnings)
             out << "  warning: " << shown(w) << "\n";
     }
@@ -224,7 +235,8 @@ int runExport(const QStringList& argv) {
     const QString path = outputPath(args);
     const Session session = loadSessionOrThrow(args.positional().first());
     ExportOptions options;
-    options.piMethod = parseDiscretization(args, session.piDiscretization); // the session's unless given
+    options.piMethod =
+        parseDiscretization(args, session.piDiscretization); // the session's unless given
     const QString precision = args.text("precision", "double");
     if (precision == "float")
         options.precision = CPrecision::Float;
@@ -235,15 +247,15 @@ int runExport(const QStringList& argv) {
     const SessionEvaluation evaluation = evaluateSession(session);
     refuseRefusedRun(evaluation);
     if (format == "csv") // streamed: a long simulation is never held as text
-        writeFile("-o", path, [&](const ByteSink& sink) {
-            exportCsv(session, evaluation, sink);
-        });
+        writeFile("-o", path, [&](const ByteSink& sink) { exportCsv(session, evaluation, sink); });
     else if (format == "json")
-        writeOrThrow(path, QJsonDocument(files::coefficientsJson(session, evaluation, options)).toJson());
+        writeOrThrow(path,
+                     QJsonDocument(files::coefficientsJson(session, evaluation, options)).toJson());
     else if (format == "c")
         writeOrThrow(path, QByteArray::fromStdString(exportCHeader(session, evaluation, options)));
     else
-        writeOrThrow(path, QByteArray::fromStdString(exportOctaveScript(session, evaluation, options)));
+        writeOrThrow(path,
+                     QByteArray::fromStdString(exportOctaveScript(session, evaluation, options)));
     std::printf("%s\n", terminalText(fileNameBytes(path)).c_str());
     return 0;
 }

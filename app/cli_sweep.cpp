@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli sweep: the design-space study of Braga et al. (wn x kp grid, feasibility, best design).
+// xytune-cli sweep: the design-space study of Braga et al. (wn x kp grid, feasibility, best
+// design).
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
 #include "core/model/coefficient_parser.h"
+#include "core/model/errors.h"
 #include "core/study/design_sweep.h"
 #include "core/study/sweep_diagnosis.h"
-#include "core/model/errors.h"
 
 #include <QTextStream>
 
@@ -18,9 +19,17 @@ namespace xyt::cli {
 
 namespace {
 
-const QStringList kSweepOptions = {"log", "points", "criterion", "threads", "max-settling",
-                                   "max-overshoot", "max-error", "max-settle-time",
-                                   "in-position-window", "min-phase-margin", "min-gain-margin"};
+const QStringList kSweepOptions = {"log",
+                                   "points",
+                                   "criterion",
+                                   "threads",
+                                   "max-settling",
+                                   "max-overshoot",
+                                   "max-error",
+                                   "max-settle-time",
+                                   "in-position-window",
+                                   "min-phase-margin",
+                                   "min-gain-margin"};
 
 /// "MIN:MAX:N" of --wn or --kp.
 SweepAxis parseAxis(const CliArgs& args, const QString& name, bool logarithmic) {
@@ -83,11 +92,10 @@ QString sweepCsv(const DesignSweepResult& r) {
         for (std::size_t j = 0; j < r.kpValues.size(); ++j) {
             const DesignPoint& p = r.at(i, j);
             const TrackingMetrics& m = p.tracking;
-            out << i << ',' << j << ',' << field(p.wn) << ',' << field(p.kp) << ','
-                << field(p.ki) << ',' << int(p.stable) << ',' << int(p.feasible) << ','
-                << field(m.rmse) << ',' << field(m.maxAbsError) << ','
-                << field(m.maxAbsErrorPct) << ',' << field(m.maxAbsU) << ','
-                << int(m.saturated) << ',' << field(m.saturatedTimeSeconds) << ','
+            out << i << ',' << j << ',' << field(p.wn) << ',' << field(p.kp) << ',' << field(p.ki)
+                << ',' << int(p.stable) << ',' << int(p.feasible) << ',' << field(m.rmse) << ','
+                << field(m.maxAbsError) << ',' << field(m.maxAbsErrorPct) << ',' << field(m.maxAbsU)
+                << ',' << int(m.saturated) << ',' << field(m.saturatedTimeSeconds) << ','
                 << field(p.step.settlingTimeSeconds, p.step.stable) << ','
                 << field(p.step.overshootPct, p.step.stable) << ',' << field(m.itae) << ','
                 << field(p.move && p.move->settleTimeSeconds ? *p.move->settleTimeSeconds : 0.0,
@@ -127,7 +135,8 @@ int runSweep(const QStringList& argv) {
         positiveNumber(args, "max-settle-time", problem.spec.maxSettleTimeSeconds);
     problem.spec.inPositionWindowMm =
         positiveNumber(args, "in-position-window", problem.spec.inPositionWindowMm);
-    problem.spec.minPhaseMarginDeg = args.number("min-phase-margin", problem.spec.minPhaseMarginDeg);
+    problem.spec.minPhaseMarginDeg =
+        args.number("min-phase-margin", problem.spec.minPhaseMarginDeg);
     if (!(problem.spec.minPhaseMarginDeg >= 0.0 && problem.spec.minPhaseMarginDeg <= 180.0))
         throw InvalidInput("--min-phase-margin", "must be 0 .. 180 degrees");
     problem.spec.minGainMarginDb = args.number("min-gain-margin", problem.spec.minGainMarginDb);
@@ -136,17 +145,19 @@ int runSweep(const QStringList& argv) {
     problem.move = setup.trajectory.move;
     // A move's automatic run covers the settle limit twice over (moveSweepDurationSeconds).
     if (problem.move && !args.has("duration"))
-        resampleSetup(setup, args,
-                      moveSweepDurationSeconds(problem.move->endSeconds, problem.spec.maxSettleTimeSeconds));
+        resampleSetup(
+            setup, args,
+            moveSweepDurationSeconds(problem.move->endSeconds, problem.spec.maxSettleTimeSeconds));
     problem.reference = setup.reference;
 
     SweepOptions options;
     const QString criterion = args.text("criterion", "itae");
     const auto parsed = parseCriterion(criterion.toStdString());
     if (!parsed)
-        throw InvalidInput("--criterion", "must be itae, max_error, rmse, max_u, settle, phase_margin or "
-                                          "gain_margin, got '" +
-                                              criterion.toStdString() + "'");
+        throw InvalidInput("--criterion",
+                           "must be itae, max_error, rmse, max_u, settle, phase_margin or "
+                           "gain_margin, got '" +
+                               criterion.toStdString() + "'");
     options.criterion = *parsed;
     options.threads = args.count("threads", 0, 1024);
     const DesignSweepResult r = [&] {
@@ -165,14 +176,15 @@ int runSweep(const QStringList& argv) {
     out.insert("plant", plantJson(problem.plant));
     insertSetupJson(out, setup);
     out.insert("criterion", QString::fromStdString(criterionName(r.criterion)));
-    out.insert("specification", QJsonObject{{"max_settling_time", problem.spec.maxSettlingTimeSeconds},
-                                            {"max_overshoot_pct", problem.spec.maxOvershootPct},
-                                            {"umax", problem.spec.umaxVolts},
-                                            {"max_error_pct", problem.spec.maxErrorPct},
-                                            {"max_settle_time", problem.spec.maxSettleTimeSeconds},
-                                            {"in_position_window_mm", problem.spec.inPositionWindowMm},
-                                            {"min_phase_margin", problem.spec.minPhaseMarginDeg},
-                                            {"min_gain_margin", problem.spec.minGainMarginDb}});
+    out.insert("specification",
+               QJsonObject{{"max_settling_time", problem.spec.maxSettlingTimeSeconds},
+                           {"max_overshoot_pct", problem.spec.maxOvershootPct},
+                           {"umax", problem.spec.umaxVolts},
+                           {"max_error_pct", problem.spec.maxErrorPct},
+                           {"max_settle_time", problem.spec.maxSettleTimeSeconds},
+                           {"in_position_window_mm", problem.spec.inPositionWindowMm},
+                           {"min_phase_margin", problem.spec.minPhaseMarginDeg},
+                           {"min_gain_margin", problem.spec.minGainMarginDb}});
     out.insert("grid", QJsonObject{{"rows", "wn"},
                                    {"columns", "kp"},
                                    {"log", logarithmic},
@@ -221,12 +233,14 @@ int runSweep(const QStringList& argv) {
     out.insert("warnings", warnings);
     QJsonArray failing;
     for (const CriterionFailure& f : diagnosis.failingEverywhere) {
-        QJsonObject o{{"criterion", QString::fromStdString(specCriterionName(f.criterion))},
-                      {"limit", number(f.limit)},
-                      {"best_value", f.bestIndex ? number(f.bestValue) : QJsonValue()},
-                      {"best_index", f.bestIndex ? QJsonValue(QJsonArray{static_cast<qint64>(*f.bestIndex / r.kpValues.size()),
-                                                                         static_cast<qint64>(*f.bestIndex % r.kpValues.size())})
-                                                 : QJsonValue()}};
+        QJsonObject o{
+            {"criterion", QString::fromStdString(specCriterionName(f.criterion))},
+            {"limit", number(f.limit)},
+            {"best_value", f.bestIndex ? number(f.bestValue) : QJsonValue()},
+            {"best_index", f.bestIndex ? QJsonValue(QJsonArray{
+                                             static_cast<qint64>(*f.bestIndex / r.kpValues.size()),
+                                             static_cast<qint64>(*f.bestIndex % r.kpValues.size())})
+                                       : QJsonValue()}};
         if (f.bestIndex) {
             o.insert("wn", number(r.points[*f.bestIndex].wn));
             o.insert("kp", number(r.points[*f.bestIndex].kp));
@@ -241,23 +255,28 @@ int runSweep(const QStringList& argv) {
                    {"max_settle_time", diagnosis.relaxed->maxSettleTimeSeconds},
                    {"min_phase_margin", diagnosis.relaxed->minPhaseMarginDeg},
                    {"min_gain_margin", diagnosis.relaxed->minGainMarginDb}};
-    out.insert("diagnosis",
-               QJsonObject{{"none_feasible", diagnosis.noneFeasible},
-                           {"failing_everywhere", failing},
-                           {"least_violating", diagnosis.leastViolating
-                                                   ? QJsonValue(QJsonObject{
-                                                         {"index", QJsonArray{static_cast<qint64>(*diagnosis.leastViolating / r.kpValues.size()),
-                                                                              static_cast<qint64>(*diagnosis.leastViolating % r.kpValues.size())}},
-                                                         {"wn", number(r.points[*diagnosis.leastViolating].wn)},
-                                                         {"kp", number(r.points[*diagnosis.leastViolating].kp)},
-                                                         {"violation", number(diagnosis.leastViolation)}})
-                                                   : QJsonValue()},
-                           {"relaxed_specification", diagnosis.relaxed ? QJsonValue(relaxed) : QJsonValue()},
-                           {"best_on_edge", diagnosis.onEdge()},
-                           {"edges", QJsonObject{{"wn_lower", diagnosis.wnAtLowerEdge},
-                                                 {"wn_upper", diagnosis.wnAtUpperEdge},
-                                                 {"kp_lower", diagnosis.kpAtLowerEdge},
-                                                 {"kp_upper", diagnosis.kpAtUpperEdge}}}});
+    out.insert(
+        "diagnosis",
+        QJsonObject{
+            {"none_feasible", diagnosis.noneFeasible},
+            {"failing_everywhere", failing},
+            {"least_violating",
+             diagnosis.leastViolating
+                 ? QJsonValue(QJsonObject{
+                       {"index",
+                        QJsonArray{
+                            static_cast<qint64>(*diagnosis.leastViolating / r.kpValues.size()),
+                            static_cast<qint64>(*diagnosis.leastViolating % r.kpValues.size())}},
+                       {"wn", number(r.points[*diagnosis.leastViolating].wn)},
+                       {"kp", number(r.points[*diagnosis.leastViolating].kp)},
+                       {"violation", number(diagnosis.leastViolation)}})
+                 : QJsonValue()},
+            {"relaxed_specification", diagnosis.relaxed ? QJsonValue(relaxed) : QJsonValue()},
+            {"best_on_edge", diagnosis.onEdge()},
+            {"edges", QJsonObject{{"wn_lower", diagnosis.wnAtLowerEdge},
+                                  {"wn_upper", diagnosis.wnAtUpperEdge},
+                                  {"kp_lower", diagnosis.kpAtLowerEdge},
+                                  {"kp_upper", diagnosis.kpAtUpperEdge}}}});
     print(out);
     return 0;
 }

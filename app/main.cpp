@@ -3,17 +3,17 @@
 // window with the default design offscreen and exits.
 #include "app/allocator_tuning.h"
 #include "ui/design_space_view.h"
+#include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/robustness_view.h"
 #include "ui/session/recovery_store.h"
-#include "ui/files/session_file.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QPixmap>
 #include <QElapsedTimer>
+#include <QPixmap>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTimer>
@@ -35,12 +35,17 @@ bool wantsScreenshot(int argc, char* argv[]) {
 
 /// The command line of xytune, on whichever application object parses it.
 struct Options {
-    QCommandLineOption screenshot{"screenshot", "Render the main window to FILE.png and exit.", "FILE"};
-    QCommandLineOption size{"size", "Window size for --screenshot, WxH (default 1366x768).", "WxH", "1366x768"};
-    QCommandLineOption tab{"tab", "With --screenshot: show this tab first (e.g. \"Design space\"; "
-                                  "a design-space or robustness study is run before the picture).", "NAME"};
+    QCommandLineOption screenshot{"screenshot", "Render the main window to FILE.png and exit.",
+                                  "FILE"};
+    QCommandLineOption size{"size", "Window size for --screenshot, WxH (default 1366x768).", "WxH",
+                            "1366x768"};
+    QCommandLineOption tab{"tab",
+                           "With --screenshot: show this tab first (e.g. \"Design space\"; "
+                           "a design-space or robustness study is run before the picture).",
+                           "NAME"};
     void addTo(QCommandLineParser& parser) const {
-        parser.setApplicationDescription("Tuning workbench for XY coordinate-table position controllers");
+        parser.setApplicationDescription(
+            "Tuning workbench for XY coordinate-table position controllers");
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(screenshot);
@@ -75,9 +80,10 @@ int main(int argc, char* argv[]) {
                                !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
                                !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
         if (!early.isSet(options.screenshot) && !displayed) {
-            std::fprintf(stderr, "xytune: no display (DISPLAY and WAYLAND_DISPLAY are unset): run it in a "
-                                 "desktop session, use --screenshot FILE.png, or xytune-cli for the "
-                                 "headless report\n");
+            std::fprintf(stderr,
+                         "xytune: no display (DISPLAY and WAYLAND_DISPLAY are unset): run it in a "
+                         "desktop session, use --screenshot FILE.png, or xytune-cli for the "
+                         "headless report\n");
             return 2;
         }
     }
@@ -101,7 +107,8 @@ int main(int argc, char* argv[]) {
         const int w = wh.size() == 2 ? wh[0].toInt(&okW) : 0;
         const int h = wh.size() == 2 ? wh[1].toInt(&okH) : 0;
         if (!okW || !okH || w < 320 || h < 240 || w > 8000 || h > 8000) {
-            std::fprintf(stderr, "xytune: --size: expected WxH between 320x240 and 8000x8000, got '%s'\n",
+            std::fprintf(stderr,
+                         "xytune: --size: expected WxH between 320x240 and 8000x8000, got '%s'\n",
                          qPrintable(parser.value(size)));
             return 2;
         }

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # XY Tune set-up: installs the Debian 12 packages that are missing, builds, then
 #   scripts/dev.sh run    starts the workbench (or the headless report without a display)
-#   scripts/dev.sh test   runs every test: the normal build, then one clang build with
+#   scripts/dev.sh test   runs every test: the format check, the normal build, then one clang build with
 #                         AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer coverage
 #                         (build-fuzz) in which the core, CLI and file suites and a GUI smoke
 #                         test run again (any sanitizer report fails) and each libFuzzer
@@ -16,7 +16,7 @@ build="${XYT_BUILD_DIR:-$root/build}"
 
 packages=(build-essential cmake pkg-config qt6-base-dev libqcustomplot-dev libqcustomplot2.1-qt6
           libeigen3-dev libmatio-dev libgl1-mesa-dev libxkbcommon-dev xvfb xauth
-          clang libclang-rt-14-dev)
+          clang libclang-rt-14-dev clang-format-14)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -30,6 +30,8 @@ if [ "${#missing[@]}" -gt 0 ]; then
 fi
 
 jobs="$(nproc 2>/dev/null || echo 2)"
+# The committed .clang-format holds for every source: checked first, it costs a second.
+if [ "$mode" = test ]; then bash "$root/scripts/check_format.sh"; fi
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build "$build" -j "$jobs"
 

@@ -8,8 +8,8 @@
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
-#include <QCoreApplication>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -17,13 +17,13 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSpinBox>
 #include <QScrollArea>
-#include <QToolButton>
 #include <QScrollBar>
 #include <QShowEvent>
+#include <QSpinBox>
 #include <QStyle>
 #include <QTimer>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -63,11 +63,13 @@ bool sameRunLimits(const Session& a, const Session& b) {
            a.spec.inPositionWindowMm == b.spec.inPositionWindowMm;
 }
 
-const SweepCriterion kCriteria[] = {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
-                                    SweepCriterion::MaxU, SweepCriterion::Settle, SweepCriterion::PhaseMargin,
+const SweepCriterion kCriteria[] = {SweepCriterion::Itae,      SweepCriterion::MaxError,
+                                    SweepCriterion::Rmse,      SweepCriterion::MaxU,
+                                    SweepCriterion::Settle,    SweepCriterion::PhaseMargin,
                                     SweepCriterion::GainMargin};
 
-QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int decimals, const QString& suffix) {
+QDoubleSpinBox* numberBox(double value, double minimum, double maximum, int decimals,
+                          const QString& suffix) {
     auto* box = new QDoubleSpinBox;
     box->setRange(minimum, maximum);
     box->setDecimals(decimals);
@@ -94,9 +96,13 @@ QComboBox* criterionCombo() {
     return box;
 }
 
-SweepCriterion selected(const QComboBox* box) { return static_cast<SweepCriterion>(box->currentData().toInt()); }
+SweepCriterion selected(const QComboBox* box) {
+    return static_cast<SweepCriterion>(box->currentData().toInt());
+}
 
-QString num(double v, int digits = 4) { return QString::number(v, 'g', digits); }
+QString num(double v, int digits = 4) {
+    return QString::number(v, 'g', digits);
+}
 
 QString axisName(const Session& s, int axis) {
     return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
@@ -121,24 +127,37 @@ QStringList failures(const DesignPoint& p, const Specification& spec) {
     if (!p.metricsFinite)
         out << QObject::tr("the run diverged");
     if (p.stable && !p.check.settlingTime)
-        out << QObject::tr("settling %1 s > %2 s").arg(num(p.step.settlingTimeSeconds)).arg(num(spec.maxSettlingTimeSeconds));
+        out << QObject::tr("settling %1 s > %2 s")
+                   .arg(num(p.step.settlingTimeSeconds))
+                   .arg(num(spec.maxSettlingTimeSeconds));
     if (p.stable && !p.check.overshoot)
-        out << QObject::tr("overshoot %1 % > %2 %").arg(num(p.step.overshootPct)).arg(num(spec.maxOvershootPct));
+        out << QObject::tr("overshoot %1 % > %2 %")
+                   .arg(num(p.step.overshootPct))
+                   .arg(num(spec.maxOvershootPct));
     if (p.metricsFinite && !p.check.noSaturation)
         out << (p.tracking.saturated ? QObject::tr("|u| saturates at %1 V").arg(num(spec.umaxVolts))
-                                     : QObject::tr("|u| %1 V > %2 V").arg(num(p.tracking.maxAbsU)).arg(num(spec.umaxVolts)));
+                                     : QObject::tr("|u| %1 V > %2 V")
+                                           .arg(num(p.tracking.maxAbsU))
+                                           .arg(num(spec.umaxVolts)));
     if (p.stable && !p.check.phaseMargin)
-        out << QObject::tr("phase margin %1° < %2°").arg(num(p.phaseMarginDeg)).arg(num(spec.minPhaseMarginDeg));
+        out << QObject::tr("phase margin %1° < %2°")
+                   .arg(num(p.phaseMarginDeg))
+                   .arg(num(spec.minPhaseMarginDeg));
     if (p.stable && !p.check.gainMargin)
-        out << QObject::tr("gain margin %1 dB < %2 dB").arg(num(p.gainMarginDb)).arg(num(spec.minGainMarginDb));
+        out << QObject::tr("gain margin %1 dB < %2 dB")
+                   .arg(num(p.gainMarginDb))
+                   .arg(num(spec.minGainMarginDb));
     if (p.metricsFinite && !p.check.trackingError)
-        out << QObject::tr("max error %1 % > %2 %").arg(num(p.tracking.maxAbsErrorPct)).arg(num(spec.maxErrorPct));
+        out << QObject::tr("max error %1 % > %2 %")
+                   .arg(num(p.tracking.maxAbsErrorPct))
+                   .arg(num(spec.maxErrorPct));
     return out;
 }
 
 QString describePoint(const DesignPoint& p, const Specification& spec, SweepCriterion metric) {
-    const QString value = std::isfinite(criterionMetric(p, metric)) ? num(criterionMetric(p, metric))
-                                                                    : QObject::tr("—");
+    const QString value = std::isfinite(criterionMetric(p, metric))
+                              ? num(criterionMetric(p, metric))
+                              : QObject::tr("—");
     QString text = QObject::tr("ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5")
                        .arg(num(p.wn))
                        .arg(num(p.kp))
@@ -156,9 +175,11 @@ namespace {
 
 /// What the map's colours and shades mean (the colour scale is the metric's, whatever its sense).
 QString shadesText() {
-    return QObject::tr("colour: the metric, by the scale at the right (yellow is the high end, better only for the "
-                       "margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or "
-                       "diverged · light grey: not computed (cancelled)");
+    return QObject::tr(
+        "colour: the metric, by the scale at the right (yellow is the high end, better only for "
+        "the "
+        "margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or "
+        "diverged · light grey: not computed (cancelled)");
 }
 
 } // namespace
@@ -221,7 +242,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     specForm->addRow(tr("phase margin ≥ (0 = none)"), phaseMargin_);
     specForm->addRow(tr("gain margin ≥ (0 = none)"), gainMargin_);
 
-    auto* shared = new QLabel(tr("<i>The session's specification, shared with the metrics panel.</i>"));
+    auto* shared =
+        new QLabel(tr("<i>The session's specification, shared with the metrics panel.</i>"));
     shared->setWordWrap(true); // the column is narrow: never let the note widen it
     specForm->addRow(shared);
     // One specification: the boxes edit the session's (an undoable step), and show it.
@@ -293,7 +315,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     // As wide as the controls need beside the vertical scroll bar (they were clipped on the
     // right: "N 6" for "N 60"), and never narrower than 250 px.
     const int scrollBar = controlPanel_->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
-    controlPanel_->setFixedWidth(std::max(250, controlContent->minimumSizeHint().width() + scrollBar + 4));
+    controlPanel_->setFixedWidth(
+        std::max(250, controlContent->minimumSizeHint().width() + scrollBar + 4));
     // The wheel over a field that has no focus scrolls the panel; it changes a value only in the
     // field being edited (a scroll through the panel must not retune the study).
     for (QAbstractSpinBox* box : controlContent->findChildren<QAbstractSpinBox*>()) {
@@ -308,9 +331,10 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     plot_ = new DesignSpacePlot;
     // The colour is the metric (its scale beside the map: yellow is a high value, not a good
     // one); feasibility is the veil and the outline.
-    readout_ = new QLabel(tr("Hover a cell for its figures; click it to load that design. Colour: the "
-                             "metric (scale at the right) · unveiled, outlined: feasible · veiled: "
-                             "infeasible · grey: unstable or diverged."));
+    readout_ =
+        new QLabel(tr("Hover a cell for its figures; click it to load that design. Colour: the "
+                      "metric (scale at the right) · unveiled, outlined: feasible · veiled: "
+                      "infeasible · grey: unstable or diverged."));
     readout_->setWordWrap(true);
     readout_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     readout_->setToolTip(shadesText());
@@ -388,8 +412,8 @@ void DesignSpaceView::scheduleLive(bool force) {
     const bool running = isRunning();
     const Session& shown = running ? pendingSession_ : studiedSession_;
     const int shownAxis = running ? pendingAxis_ : studiedAxis_;
-    const bool upToDate = (running || result_) && shownAxis == axis && sameStudySettings(s, shown, axis) &&
-                          sameRunLimits(s, shown);
+    const bool upToDate = (running || result_) && shownAxis == axis &&
+                          sameStudySettings(s, shown, axis) && sameRunLimits(s, shown);
     if (upToDate && !force)
         return;
     startStudy(StudyKind::Preview);
@@ -403,9 +427,13 @@ void DesignSpaceView::onRest() {
         startStudy(StudyKind::Full);
 }
 
-DesignSpaceView::~DesignSpaceView() { stopJob(); }
+DesignSpaceView::~DesignSpaceView() {
+    stopJob();
+}
 
-QString DesignSpaceView::statusText() const { return status_->text(); }
+QString DesignSpaceView::statusText() const {
+    return status_->text();
+}
 
 bool DesignSpaceView::eventFilter(QObject* watched, QEvent* event) {
     if (event->type() == QEvent::Wheel) {
@@ -417,9 +445,13 @@ bool DesignSpaceView::eventFilter(QObject* watched, QEvent* event) {
     }
     return QWidget::eventFilter(watched, event);
 }
-QString DesignSpaceView::readoutText() const { return readout_->text(); }
+QString DesignSpaceView::readoutText() const {
+    return readout_->text();
+}
 
-void DesignSpaceView::setStatus(const QString& text, bool isError) { setStatusText(status_, text, isError); }
+void DesignSpaceView::setStatus(const QString& text, bool isError) {
+    setStatusText(status_, text, isError);
+}
 
 void DesignSpaceView::stopJob() {
     if (!job_)
@@ -428,7 +460,9 @@ void DesignSpaceView::stopJob() {
     job_.reset();
 }
 
-void DesignSpaceView::run() { startStudy(StudyKind::Full); }
+void DesignSpaceView::run() {
+    startStudy(StudyKind::Full);
+}
 
 void DesignSpaceView::startStudy(StudyKind kind) {
     stopJob();
@@ -436,16 +470,19 @@ void DesignSpaceView::startStudy(StudyKind kind) {
     const Session& s = session_->session();
     const AxisSettings& settings = s.axes.at(static_cast<std::size_t>(axis));
     if (settings.method != DesignMethod::GuilleminTruxal) {
-        setStatus(tr("The design space applies to Guillemin–Truxal axes; axis %1 uses pole placement.")
-                      .arg(axisName(s, axis)),
-                  true);
+        setStatus(
+            tr("The design space applies to Guillemin–Truxal axes; axis %1 uses pole placement.")
+                .arg(axisName(s, axis)),
+            true);
         return;
     }
     const bool preview = kind == StudyKind::Preview;
     // The preview is the live map: at most kLivePreviewCount designs a side, coarse in time
     // (kLivePreviewFidelity); the full study uses the grid and the session's dt.
-    const int wnCount = preview ? std::min(wnCount_->value(), kLivePreviewCount) : wnCount_->value();
-    const int kpCount = preview ? std::min(kpCount_->value(), kLivePreviewCount) : kpCount_->value();
+    const int wnCount =
+        preview ? std::min(wnCount_->value(), kLivePreviewCount) : wnCount_->value();
+    const int kpCount =
+        preview ? std::min(kpCount_->value(), kLivePreviewCount) : kpCount_->value();
     DesignProblem problem;
     SweepAxis wnAxis{wnMin_->value(), wnMax_->value(), wnCount, logGrid_->isChecked()};
     SweepAxis kpAxis{kpMin_->value(), kpMax_->value(), kpCount, logGrid_->isChecked()};
@@ -475,7 +512,8 @@ void DesignSpaceView::startStudy(StudyKind kind) {
     job_->thread = std::thread([this, id, cancelFlag, problem, wnAxis, kpAxis, options]() mutable {
         lowerThisThreadPriority();
         options.progress = [this, id, cancelFlag](double fraction) {
-            QMetaObject::invokeMethod(this, [this, id, fraction] { onProgress(id, fraction); }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this, [this, id, fraction] { onProgress(id, fraction); }, Qt::QueuedConnection);
             return !cancelFlag->load();
         };
         auto result = std::make_shared<DesignSweepResult>();
@@ -486,14 +524,20 @@ void DesignSpaceView::startStudy(StudyKind kind) {
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        QMetaObject::invokeMethod(this, [this, id, result, error, ms] { onFinished(id, result, error, ms); },
-                                  Qt::QueuedConnection);
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        QMetaObject::invokeMethod(
+            this, [this, id, result, error, ms] { onFinished(id, result, error, ms); },
+            Qt::QueuedConnection);
     });
     progress_->setValue(0);
     cancel_->setEnabled(true);
     if (preview)
-        setStatus(tr("Live preview of axis %1: %2 × %3 designs…").arg(axisName(s, axis)).arg(wnCount).arg(kpCount));
+        setStatus(tr("Live preview of axis %1: %2 × %3 designs…")
+                      .arg(axisName(s, axis))
+                      .arg(wnCount)
+                      .arg(kpCount));
     else
         setStatus(tr("Studying %1 × %2 designs of axis %3…")
                       .arg(wnAxis.count)
@@ -514,10 +558,10 @@ void DesignSpaceView::onProgress(int jobId, double fraction) {
         progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
 }
 
-void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error,
-                                 double elapsedMs) {
+void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> result,
+                                 QString error, double elapsedMs) {
     if (!job_ || job_->id != jobId)
-        return; // a study replaced by a newer one
+        return;          // a study replaced by a newer one
     job_->thread.join(); // posting this was the worker's last act
     const StudyKind kind = job_->kind;
     job_.reset();
@@ -535,8 +579,9 @@ void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> r
     studiedAxis_ = pendingAxis_;
     studiedLogGrid_ = pendingLogGrid_;
     const Session& s = session_->session();
-    plot_->showResult(*result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
-                      tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
+    plot_->showResult(
+        *result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
+        tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
     updateCurrentDesign();
     showOutcome();
     emit studyFinished(kind);
@@ -549,14 +594,15 @@ void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> r
 void DesignSpaceView::showOutcome() {
     if (resultIsPreview_ && result_->status == SweepStatus::Completed) {
         showOutcomeText();
-        setStatus(tr("Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the "
-                     "inputs rest.\n")
-                          .arg(result_->wnValues.size())
-                          .arg(result_->kpValues.size())
-                          .arg(num(problem_->dtSeconds, 3))
-                          .arg(qRound(lastElapsedMs_)) +
-                      status_->text(),
-                  !status_->styleSheet().isEmpty());
+        setStatus(
+            tr("Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the "
+               "inputs rest.\n")
+                    .arg(result_->wnValues.size())
+                    .arg(result_->kpValues.size())
+                    .arg(num(problem_->dtSeconds, 3))
+                    .arg(qRound(lastElapsedMs_)) +
+                status_->text(),
+            !status_->styleSheet().isEmpty());
         return;
     }
     showOutcomeText();
@@ -575,12 +621,16 @@ void DesignSpaceView::showOutcomeText() {
         return;
     }
     progress_->setValue(100);
-    QString text = tr("Done: %1 designs, %2 stable, %3 feasible.").arg(total).arg(r.stableCount).arg(r.feasibleCount);
+    QString text = tr("Done: %1 designs, %2 stable, %3 feasible.")
+                       .arg(total)
+                       .arg(r.stableCount)
+                       .arg(r.feasibleCount);
     diagnosis_ = diagnoseSweep(r, problem_ ? problem_->spec : session_->session().spec);
-    plot_->setLeastViolating(diagnosis_->leastViolating && !r.bestIndex
-                                 ? std::optional<std::pair<double, double>>{{r.points[*diagnosis_->leastViolating].wn,
-                                                                             r.points[*diagnosis_->leastViolating].kp}}
-                                 : std::nullopt);
+    plot_->setLeastViolating(
+        diagnosis_->leastViolating && !r.bestIndex
+            ? std::optional<std::pair<double, double>>{{r.points[*diagnosis_->leastViolating].wn,
+                                                        r.points[*diagnosis_->leastViolating].kp}}
+            : std::nullopt);
     relax_->setVisible(!r.bestIndex && diagnosis_->relaxed.has_value());
     for (const std::string& w : diagnosis_->warnings)
         if (r.bestIndex || diagnosis_->noneFeasible)
@@ -602,7 +652,8 @@ void DesignSpaceView::showOutcomeText() {
     // the grid reaches for it, and the least-violating design (marked ▲, offered to relax to).
     if (diagnosis_->failingEverywhere.size() == 1 &&
         diagnosis_->failingEverywhere.front().criterion == SpecCriterion::Overshoot)
-        text += tr("\nEvery GT design overshoots (its reference model is type 2); relax the overshoot limit.");
+        text += tr("\nEvery GT design overshoots (its reference model is type 2); relax the "
+                   "overshoot limit.");
     setStatus(text, true);
 }
 
@@ -647,19 +698,22 @@ void DesignSpaceView::updateCurrentDesign() {
             try {
                 rejudgeDesignSpace(*result_, spec);
                 problem_->spec = spec;
-                plot_->showResult(*result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
-                                  tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
+                plot_->showResult(
+                    *result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
+                    tr("%1, axis %2")
+                        .arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
                 showOutcome();
             } catch (const InvalidInput& e) {
-                setStatus(tr("Cannot judge the study: %1").arg(QString::fromStdString(e.what())), true);
+                setStatus(tr("Cannot judge the study: %1").arg(QString::fromStdString(e.what())),
+                          true);
             }
         }
     }
     const int axis = result_ ? studiedAxis_ : session_->currentAxis();
     const GtAxisSettings& gt = s.axes.at(static_cast<std::size_t>(axis)).gt;
     plot_->setCurrentDesign(gt.omegaNRadPerSec, gt.kp);
-    const QString staleNote =
-        tr("The plant, the trajectory or the actuator limit changed since the study: run it again.");
+    const QString staleNote = tr(
+        "The plant, the trajectory or the actuator limit changed since the study: run it again.");
     if (result_ && !isRunning()) {
         if (!sameStudySettings(s, studiedSession_, studiedAxis_))
             setStatus(staleNote, true);
@@ -672,7 +726,8 @@ void DesignSpaceView::updateCurrentDesign() {
 void DesignSpaceView::showHover(std::optional<std::pair<std::size_t, std::size_t>> cell) {
     if (!cell || !result_)
         return;
-    readout_->setText(describePoint(result_->at(cell->first, cell->second), problem_->spec, selected(metric_)));
+    readout_->setText(
+        describePoint(result_->at(cell->first, cell->second), problem_->spec, selected(metric_)));
 }
 
 void DesignSpaceView::loadCell(std::size_t iWn, std::size_t iKp) {

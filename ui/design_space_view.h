@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/study/design_sweep.h"
-#include "core/study/sweep_diagnosis.h"
 #include "core/session/design_study.h"
 #include "core/session/session.h"
+#include "core/study/design_sweep.h"
+#include "core/study/sweep_diagnosis.h"
 
 #include "ui/background_job.h"
 
@@ -52,7 +52,8 @@ public:
     explicit DesignSpaceView(TuningSession* session, QWidget* parent = nullptr);
     ~DesignSpaceView() override;
 
-    /// Starts a study of the current axis with the settings of the controls (cancels a running one).
+    /// Starts a study of the current axis with the settings of the controls (cancels a running
+    /// one).
     void run();
     /// How the next study is computed: the live preview or the full study.
     enum class StudyKind { Preview, Full };
@@ -127,7 +128,8 @@ private:
     void onRest();
     void stopJob();
     void onProgress(int jobId, double fraction);
-    void onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error, double elapsedMs);
+    void onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error,
+                    double elapsedMs);
     void showOutcome();
     void showOutcomeText();
     void updateCurrentDesign();

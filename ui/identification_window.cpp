@@ -25,10 +25,10 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QSplitter>
 #include <QSpinBox>
-#include <QTableWidget>
+#include <QSplitter>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -56,15 +56,20 @@ QStringList columnNames(const ExperimentTable& table) {
 int guessTimeColumn(const QStringList& names) {
     for (int i = 0; i < names.size(); ++i) {
         const QString n = names[i].toLower();
-        if (n == "t" || n.startsWith("time") || n == "t_s" || n == "t [s]" || n == "x_value") // x_value: LVM
+        if (n == "t" || n.startsWith("time") || n == "t_s" || n == "t [s]" ||
+            n == "x_value") // x_value: LVM
             return i;
     }
     return -1;
 }
 
-QString percent(double v) { return std::isfinite(v) ? QString::number(v, 'f', 2) : QStringLiteral("–"); }
+QString percent(double v) {
+    return std::isfinite(v) ? QString::number(v, 'f', 2) : QStringLiteral("–");
+}
 
-QVector<double> toVector(const std::vector<double>& v) { return QVector<double>(v.begin(), v.end()); }
+QVector<double> toVector(const std::vector<double>& v) {
+    return QVector<double>(v.begin(), v.end());
+}
 
 /// The curves' extent with room above them for the notice in the top corner (a few lines,
 /// about a fifth of the plot's height): the notice does not sit on the trace.
@@ -96,8 +101,9 @@ QString parameterLines(const IdentifiedModel& m) {
     const QChar nbsp(0x00A0);
     for (std::size_t i = 0; i < m.parameters.size() && i < m.parameterNames.size(); ++i) {
         const double sd = i < m.standardDeviations.size() ? m.standardDeviations[i] : std::nan("");
-        QString entry = QString::fromStdString(m.parameterNames[i]) + " = " + QString::number(m.parameters[i], 'g', 6) +
-                        " ± " + (std::isfinite(sd) ? QString::number(sd, 'g', 3) : QStringLiteral("–")) +
+        QString entry = QString::fromStdString(m.parameterNames[i]) + " = " +
+                        QString::number(m.parameters[i], 'g', 6) + " ± " +
+                        (std::isfinite(sd) ? QString::number(sd, 'g', 3) : QStringLiteral("–")) +
                         parameterUnit(m, m.parameterNames[i]);
         entries << entry.replace(' ', nbsp);
     }
@@ -176,13 +182,15 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     structure_->addItem(tr("ARX"), static_cast<int>(ModelStructure::Arx));
     structure_->addItem(tr("OE"), static_cast<int>(ModelStructure::Oe));
     structure_->addItem(tr("BJ"), static_cast<int>(ModelStructure::Bj));
-    structure_->addItem(tr("GT3 continuous"), static_cast<int>(ModelStructure::ContinuousThirdOrder));
+    structure_->addItem(tr("GT3 continuous"),
+                        static_cast<int>(ModelStructure::ContinuousThirdOrder));
     auto* modelBox = new QGroupBox(tr("Model"));
     auto* modelForm = new QFormLayout(modelBox);
     modelForm->addRow(tr("Structure:"), structure_);
     auto* orderRow = new QHBoxLayout;
-    for (const auto& [name, value, minimum] : {std::tuple{"na", 2, 0}, std::tuple{"nb", 3, 1}, std::tuple{"nc", 1, 0},
-                                               std::tuple{"nd", 1, 0}, std::tuple{"nf", 2, 0}, std::tuple{"nk", 1, 0}}) {
+    for (const auto& [name, value, minimum] :
+         {std::tuple{"na", 2, 0}, std::tuple{"nb", 3, 1}, std::tuple{"nc", 1, 0},
+          std::tuple{"nd", 1, 0}, std::tuple{"nf", 2, 0}, std::tuple{"nk", 1, 0}}) {
         auto* box = new QSpinBox;
         box->setRange(minimum, 100);
         box->setValue(value);
@@ -225,8 +233,8 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
 
     // Candidates.
     table_ = new QTableWidget(0, 7);
-    table_->setHorizontalHeaderLabels(
-        {tr("Model"), tr("Status"), tr("Fit % est"), tr("Fit % val"), tr("AIC"), tr("Residuals"), tr("NMP")});
+    table_->setHorizontalHeaderLabels({tr("Model"), tr("Status"), tr("Fit % est"), tr("Fit % val"),
+                                       tr("AIC"), tr("Residuals"), tr("NMP")});
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -271,14 +279,16 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     resize(1300, 750);
 
     connect(load_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Load experiment data"), QString(),
-                                                          tr("Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)"));
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Load experiment data"), QString(),
+            tr("Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)"));
         if (!path.isEmpty())
             loadFile(path);
     });
     connect(loadValidation_, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Load validation data"), QString(),
-                                                          tr("Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)"));
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Load validation data"), QString(),
+            tr("Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)"));
         if (!path.isEmpty())
             loadValidationFile(path);
     });
@@ -297,7 +307,8 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
             showSelectionStatus();
         }
     });
-    connect(structure_, &QComboBox::currentIndexChanged, this, &IdentificationWindow::updateOrderBoxes);
+    connect(structure_, &QComboBox::currentIndexChanged, this,
+            &IdentificationWindow::updateOrderBoxes);
     connect(fit_, &QPushButton::clicked, this, &IdentificationWindow::fit);
     connect(cancel_, &QPushButton::clicked, this, &IdentificationWindow::cancel);
     connect(useX_, &QPushButton::clicked, this, [this] { useForAxis(0); });
@@ -312,7 +323,9 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     clearPlots(tr("Fit a model to see it here."));
 }
 
-IdentificationWindow::~IdentificationWindow() { stopJob(); }
+IdentificationWindow::~IdentificationWindow() {
+    stopJob();
+}
 
 void IdentificationWindow::buildPlots() {
     tabs_ = new QTabWidget;
@@ -337,7 +350,8 @@ void IdentificationWindow::buildPlots() {
     timePlot_->yAxis->setLabel(tr("position (mm)"));
     timePlot_->legend->setVisible(true);
     placeLegendBelow(timePlot_, 1, 2);
-    timeNotice_ = std::make_unique<PlotNotice>(timePlot_, timePlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
+    timeNotice_ = std::make_unique<PlotNotice>(timePlot_, timePlot_->axisRect(),
+                                               Qt::AlignTop | Qt::AlignRight);
     tabs_->addTab(timePlot_, tr("Output"));
 
     // Two stacked axis rects: residual autocorrelation, input-residual cross-correlation.
@@ -346,9 +360,10 @@ void IdentificationWindow::buildPlots() {
     auto* crossRect = new QCPAxisRect(residualPlot_);
     styleAxisRect(crossRect);
     residualPlot_->plotLayout()->addElement(1, 0, crossRect);
-    const auto stems = [this](QCPAxisRect* rect, QCPGraph*& stemsGraph, QCPGraph* (&bound)[2], const QString& yLabel,
-                              const QString& xLabel) {
-        stemsGraph = residualPlot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    const auto stems = [this](QCPAxisRect* rect, QCPGraph*& stemsGraph, QCPGraph*(&bound)[2],
+                              const QString& yLabel, const QString& xLabel) {
+        stemsGraph =
+            residualPlot_->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         stemsGraph->setLineStyle(QCPGraph::lsImpulse);
         stemsGraph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 4));
         stemsGraph->setPen(QPen(colors::output, 1.5));
@@ -361,7 +376,8 @@ void IdentificationWindow::buildPlots() {
     };
     stems(autoRect, autoStems_, autoBound_, tr("residual autocorr."), tr("lag (samples)"));
     stems(crossRect, crossStems_, crossBound_, tr("input–residual corr."), tr("lag (samples)"));
-    residualNotice_ = std::make_unique<PlotNotice>(residualPlot_, autoRect, Qt::AlignTop | Qt::AlignRight);
+    residualNotice_ =
+        std::make_unique<PlotNotice>(residualPlot_, autoRect, Qt::AlignTop | Qt::AlignRight);
     tabs_->addTab(residualPlot_, tr("Residuals"));
 
     pzPlot_ = makePlot("identificationPoleZeroPlot");
@@ -390,9 +406,11 @@ void IdentificationWindow::buildPlots() {
     pzPlot_->yAxis->setLabel(tr("Im z"));
     pzPlot_->legend->setVisible(true);
     pzPlot_->plotLayout()->insertRow(0);
-    pzPlot_->plotLayout()->addElement(0, 0, new QCPTextElement(pzPlot_, tr("Pole-zero map (z-plane)")));
+    pzPlot_->plotLayout()->addElement(0, 0,
+                                      new QCPTextElement(pzPlot_, tr("Pole-zero map (z-plane)")));
     placeLegendBelow(pzPlot_, 2, 3);
-    pzNotice_ = std::make_unique<PlotNotice>(pzPlot_, pzPlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
+    pzNotice_ =
+        std::make_unique<PlotNotice>(pzPlot_, pzPlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
     // Equal scales at every size (the unit circle round): x follows y once the layout is known.
     connect(pzPlot_, &QCustomPlot::afterLayout, pzPlot_,
             [this] { pzPlot_->xAxis->setScaleRatio(pzPlot_->yAxis, 1.0); });
@@ -410,19 +428,30 @@ void IdentificationWindow::updateOrderBoxes() {
     const auto structure = static_cast<ModelStructure>(structure_->currentData().toInt());
     QStringList used;
     switch (structure) {
-    case ModelStructure::Arx: used = {"na", "nb", "nk"}; break;
-    case ModelStructure::Oe: used = {"nb", "nf", "nk"}; break;
-    case ModelStructure::Bj: used = {"nb", "nc", "nd", "nf", "nk"}; break;
-    case ModelStructure::ContinuousThirdOrder: break;
+    case ModelStructure::Arx:
+        used = {"na", "nb", "nk"};
+        break;
+    case ModelStructure::Oe:
+        used = {"nb", "nf", "nk"};
+        break;
+    case ModelStructure::Bj:
+        used = {"nb", "nc", "nd", "nf", "nk"};
+        break;
+    case ModelStructure::ContinuousThirdOrder:
+        break;
     }
     for (const auto& [name, box] : orders_)
         box->setEnabled(used.contains(name));
     maxIterations_->setEnabled(structure != ModelStructure::Arx);
 }
 
-void IdentificationWindow::setStatus(const QString& text, bool isError) { setStatusText(status_, text, isError); }
+void IdentificationWindow::setStatus(const QString& text, bool isError) {
+    setStatusText(status_, text, isError);
+}
 
-QString IdentificationWindow::statusText() const { return status_->text(); }
+QString IdentificationWindow::statusText() const {
+    return status_->text();
+}
 
 bool IdentificationWindow::loadFile(const QString& path) {
     try {
@@ -468,13 +497,14 @@ bool IdentificationWindow::loadFile(const QString& path) {
         fileName_->setText(QFileInfo(path).fileName());
         fileName_->setToolTip(path);
         fit_->setEnabled(!isRunning());
-        QString text = tr("%1: %2 columns, %3 rows%4. Pick the columns and press Fit.")
-                           .arg(QFileInfo(path).fileName())
-                           .arg(names.size())
-                           .arg(experiment_->rowNumbers.size())
-                           .arg(experiment_->sampleTimeSeconds
-                                    ? tr(", Ts = %1 s stated by the file").arg(*experiment_->sampleTimeSeconds)
-                                    : QString());
+        QString text =
+            tr("%1: %2 columns, %3 rows%4. Pick the columns and press Fit.")
+                .arg(QFileInfo(path).fileName())
+                .arg(names.size())
+                .arg(experiment_->rowNumbers.size())
+                .arg(experiment_->sampleTimeSeconds
+                         ? tr(", Ts = %1 s stated by the file").arg(*experiment_->sampleTimeSeconds)
+                         : QString());
         if (hadCandidates)
             text += "\n" + tr("The candidates fitted to the previous file were cleared.");
         for (const std::string& w : experiment_->warnings)
@@ -494,7 +524,9 @@ bool IdentificationWindow::loadFile(const QString& path) {
         wholeRange_.reset();
         table_->clearSelection();
         clearPlots(tr("No data loaded."));
-        setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())), true);
+        setStatus(tr("Cannot read %1: %2")
+                      .arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())),
+                  true);
         return false;
     }
 }
@@ -516,7 +548,9 @@ bool IdentificationWindow::loadValidationFile(const QString& path) {
     } catch (const std::exception& e) {
         validationExperiment_.reset();
         validationName_->setText(tr("(none: judged on the estimation data)"));
-        setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())), true);
+        setStatus(tr("Cannot read %1: %2")
+                      .arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())),
+                  true);
         return false;
     }
 }
@@ -541,7 +575,8 @@ IoData IdentificationWindow::record(const ExperimentTable& table) const {
     const double t0 = t0_->value(), t1 = t1_->value();
     if (!rangeIsWhole()) {
         if (!(t1 > t0))
-            throw InvalidInput("range", "the end must be after the start (0 to 0 uses the whole record)");
+            throw InvalidInput("range",
+                               "the end must be after the start (0 to 0 uses the whole record)");
         steps.rangeSeconds = std::array<double, 2>{t0, t1};
     }
     steps.offsets = detrend_->isChecked() ? OffsetRemoval::Trends : OffsetRemoval::None;
@@ -554,7 +589,9 @@ void IdentificationWindow::fit() {
         return;
     IdentificationSpec spec;
     spec.structure = static_cast<ModelStructure>(structure_->currentData().toInt());
-    const auto order = [this](const char* name) { return orderBox(QString::fromLatin1(name))->value(); };
+    const auto order = [this](const char* name) {
+        return orderBox(QString::fromLatin1(name))->value();
+    };
     spec.arx = {order("na"), order("nb"), order("nk")};
     spec.oe = {order("nb"), order("nf"), order("nk")};
     spec.bj = {order("nb"), order("nc"), order("nd"), order("nf"), order("nk")};
@@ -574,14 +611,16 @@ void IdentificationWindow::fit() {
     if (spec.structure == ModelStructure::ContinuousThirdOrder) {
         // The plant integrates: its model starts at rest at position 0, so the record's initial
         // position is taken off (as xytune-cli identify does), and said.
-        for (IoData* d : {&candidate.estimation, candidate.validation ? &*candidate.validation : nullptr}) {
+        for (IoData* d :
+             {&candidate.estimation, candidate.validation ? &*candidate.validation : nullptr}) {
             const std::optional<double> y0 = d ? subtractInitialPosition(*d) : std::nullopt;
             if (!y0)
                 continue;
-            candidate.notes << tr("%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); "
-                                  "the fit estimates where the table stood")
-                                   .arg(QString::fromStdString(d->source))
-                                   .arg(*y0, 0, 'g', 10);
+            candidate.notes
+                << tr("%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); "
+                      "the fit estimates where the table stood")
+                       .arg(QString::fromStdString(d->source))
+                       .arg(*y0, 0, 'g', 10);
         }
     }
     pending_ = candidate;
@@ -592,10 +631,13 @@ void IdentificationWindow::fit() {
     const std::optional<IoData> validation = candidate.validation;
     job_->thread = std::thread([this, id, cancelFlag, spec, estimation, validation]() mutable {
         spec.search.progress = [this, id, cancelFlag](double fraction) {
-            QMetaObject::invokeMethod(this, [this, id, fraction] {
-                if (job_ && job_->id == id)
-                    progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
-            }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this,
+                [this, id, fraction] {
+                    if (job_ && job_->id == id)
+                        progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
+                },
+                Qt::QueuedConnection);
             return !cancelFlag->load();
         };
         auto model = std::make_shared<IdentifiedModel>();
@@ -605,8 +647,8 @@ void IdentificationWindow::fit() {
         } catch (const std::exception& e) {
             error = QString::fromStdString(e.what());
         }
-        QMetaObject::invokeMethod(this, [this, id, model, error] { onFinished(id, model, error); },
-                                  Qt::QueuedConnection);
+        QMetaObject::invokeMethod(
+            this, [this, id, model, error] { onFinished(id, model, error); }, Qt::QueuedConnection);
     });
     progress_->setValue(0);
     fit_->setEnabled(false);
@@ -631,7 +673,8 @@ void IdentificationWindow::stopJob() {
     job_.reset();
 }
 
-void IdentificationWindow::onFinished(int jobId, std::shared_ptr<IdentifiedModel> model, QString error) {
+void IdentificationWindow::onFinished(int jobId, std::shared_ptr<IdentifiedModel> model,
+                                      QString error) {
     if (!job_ || job_->id != jobId)
         return;
     job_->thread.join();
@@ -678,21 +721,29 @@ void IdentificationWindow::addRow(const Candidate& c) {
     const IdentifiedModel& m = c.model;
     const int row = table_->rowCount();
     table_->insertRow(row);
-    const auto set = [&](int column, const QString& text) { table_->setItem(row, column, new QTableWidgetItem(text)); };
+    const auto set = [&](int column, const QString& text) {
+        table_->setItem(row, column, new QTableWidgetItem(text));
+    };
     // The continuous fit's long formula is the tooltip; "GT3" keeps the seven columns in view.
-    set(0, m.spec.structure == ModelStructure::ContinuousThirdOrder ? tr("GT3") : QString::fromStdString(m.structure));
+    set(0, m.spec.structure == ModelStructure::ContinuousThirdOrder
+               ? tr("GT3")
+               : QString::fromStdString(m.structure));
     set(1, QString::fromStdString(estimationStatusName(m.status)));
     set(2, percent(m.fit.estimationSimulation.fitPercent));
-    set(3, m.fit.validationSimulation ? percent(m.fit.validationSimulation->fitPercent) : QStringLiteral("–"));
+    set(3, m.fit.validationSimulation ? percent(m.fit.validationSimulation->fitPercent)
+                                      : QStringLiteral("–"));
     set(4, m.criteria.samples > 0 ? QString::number(m.criteria.aic, 'f', 2) : QStringLiteral("–"));
-    set(5, m.residualTests.samples == 0 ? QStringLiteral("–") : m.residualTests.passed() ? tr("pass") : tr("fail"));
+    set(5, m.residualTests.samples == 0 ? QStringLiteral("–")
+           : m.residualTests.passed()   ? tr("pass")
+                                        : tr("fail"));
     set(6, m.roots.nonMinimumPhase ? tr("yes") : tr("no"));
     table_->item(row, 0)->setToolTip(QString::fromStdString(m.spec.describe()));
 }
 
 const IdentificationWindow::Candidate* IdentificationWindow::selectedCandidate() const {
-    return shown_ >= 0 && shown_ < static_cast<int>(candidates_.size()) ? &candidates_[static_cast<std::size_t>(shown_)]
-                                                                        : nullptr;
+    return shown_ >= 0 && shown_ < static_cast<int>(candidates_.size())
+               ? &candidates_[static_cast<std::size_t>(shown_)]
+               : nullptr;
 }
 
 void IdentificationWindow::clearPlots(const QString& reason) {
@@ -702,8 +753,10 @@ void IdentificationWindow::clearPlots(const QString& reason) {
     parameters_->clear();
     parameters_->hide();
     clearWithNotice(timePlot_, *timeNotice_, {measured_, simulated_}, reason);
-    clearWithNotice(residualPlot_, *residualNotice_,
-                    {autoStems_, autoBound_[0], autoBound_[1], crossStems_, crossBound_[0], crossBound_[1]}, reason);
+    clearWithNotice(
+        residualPlot_, *residualNotice_,
+        {autoStems_, autoBound_[0], autoBound_[1], crossStems_, crossBound_[0], crossBound_[1]},
+        reason);
     clearWithNotice(pzPlot_, *pzNotice_, {poles_, zeros_}, reason);
     pzPlot_->xAxis->setRange(-1.3, 1.3);
     pzPlot_->yAxis->setRange(-1.3, 1.3);
@@ -739,14 +792,15 @@ void IdentificationWindow::showCandidate(int index) {
     timePlot_->replot();
 
     // Residual tests.
-    const auto drawTest = [](const CorrelationTest& test, QCPGraph* stems, QCPGraph* (&bound)[2]) {
+    const auto drawTest = [](const CorrelationTest& test, QCPGraph* stems, QCPGraph*(&bound)[2]) {
         QVector<double> lags, values;
         for (std::size_t i = 0; i < test.lags.size() && i < test.values.size(); ++i) {
             lags << test.lags[i];
             values << test.values[i];
         }
         stems->setData(lags, values, true);
-        const double lo = lags.isEmpty() ? 0.0 : lags.front(), hi = lags.isEmpty() ? 1.0 : lags.back();
+        const double lo = lags.isEmpty() ? 0.0 : lags.front(),
+                     hi = lags.isEmpty() ? 1.0 : lags.back();
         bound[0]->setData({lo, hi}, {test.bound, test.bound});
         bound[1]->setData({lo, hi}, {-test.bound, -test.bound});
         QCPAxis* x = stems->keyAxis();
@@ -756,14 +810,17 @@ void IdentificationWindow::showCandidate(int index) {
         for (double v : values)
             top = std::max(top, 1.1 * std::abs(v));
         y->setRange(-top, top);
-        stems->setName(test.passed ? QObject::tr("within ±bound") : QObject::tr("%1 lags outside").arg(test.outsideCount));
+        stems->setName(test.passed ? QObject::tr("within ±bound")
+                                   : QObject::tr("%1 lags outside").arg(test.outsideCount));
     };
     drawTest(m.residualTests.autocorrelation, autoStems_, autoBound_);
     drawTest(m.residualTests.crossCorrelation, crossStems_, crossBound_);
-    autoStems_->valueAxis()->setLabel(tr("residual autocorr. (%1)")
-                                          .arg(m.residualTests.autocorrelation.passed ? tr("pass") : tr("fail")));
-    crossStems_->valueAxis()->setLabel(tr("input–residual corr. (%1)")
-                                           .arg(m.residualTests.crossCorrelation.passed ? tr("pass") : tr("fail")));
+    autoStems_->valueAxis()->setLabel(
+        tr("residual autocorr. (%1)")
+            .arg(m.residualTests.autocorrelation.passed ? tr("pass") : tr("fail")));
+    crossStems_->valueAxis()->setLabel(
+        tr("input–residual corr. (%1)")
+            .arg(m.residualTests.crossCorrelation.passed ? tr("pass") : tr("fail")));
     residualNotice_->setLines({});
     residualPlot_->replot();
 
@@ -783,8 +840,9 @@ void IdentificationWindow::showCandidate(int index) {
     poles_->setData(pr, pi);
     zeros_->setData(zr, zi);
     if (auto* title = qobject_cast<QCPTextElement*>(pzPlot_->plotLayout()->element(0, 0)))
-        title->setText(m.roots.nonMinimumPhase ? tr("Pole-zero map (z-plane): a zero outside the unit circle (NMP)")
-                                               : tr("Pole-zero map (z-plane)"));
+        title->setText(m.roots.nonMinimumPhase
+                           ? tr("Pole-zero map (z-plane): a zero outside the unit circle (NMP)")
+                           : tr("Pole-zero map (z-plane)"));
     QStringList notes;
     for (const std::string& n : m.roots.notes)
         notes << QString::fromStdString(n);
@@ -801,23 +859,29 @@ void IdentificationWindow::showCandidate(int index) {
     pzPlot_->replot();
 }
 
-QString IdentificationWindow::poleZeroNoticeText() const { return pzNotice_->text(); }
+QString IdentificationWindow::poleZeroNoticeText() const {
+    return pzNotice_->text();
+}
 
 bool IdentificationWindow::rangeIsWhole() const {
     // 0 to 0, or the record's own range as previewRecord showed it (the boxes round to 0.1 ms,
     // which must not cut the last sample off).
     const double t0 = t0_->value(), t1 = t1_->value();
-    return (t0 == 0.0 && t1 == 0.0) || (wholeRange_ && t0 == (*wholeRange_)[0] && t1 == (*wholeRange_)[1]);
+    return (t0 == 0.0 && t1 == 0.0) ||
+           (wholeRange_ && t0 == (*wholeRange_)[0] && t1 == (*wholeRange_)[1]);
 }
 
-QString IdentificationWindow::parametersText() const { return parameters_->text(); }
+QString IdentificationWindow::parametersText() const {
+    return parameters_->text();
+}
 
 void IdentificationWindow::showSelectionStatus() {
     if (const Candidate* c = selectedCandidate())
         setStatus(c->message, c->messageIsError);
     else
-        setStatus(experiment_ ? tr("Pick the columns and press Fit.")
-                              : tr("Load a record of the axis (input in V, output position) to begin."));
+        setStatus(experiment_
+                      ? tr("Pick the columns and press Fit.")
+                      : tr("Load a record of the axis (input in V, output position) to begin."));
 }
 
 QString IdentificationWindow::previewRecord() {
@@ -828,7 +892,8 @@ QString IdentificationWindow::previewRecord() {
         const IoData d = experimentData(*experiment_, columns(*experiment_));
         const double first = d.startSeconds;
         const double last = d.startSeconds + static_cast<double>(d.size() - 1) * d.tsSeconds;
-        ts_->setValue(d.tsSeconds); // the time column's (or the file's) sample time, not the last file's
+        ts_->setValue(
+            d.tsSeconds);     // the time column's (or the file's) sample time, not the last file's
         if (rangeIsWhole()) { // a range the user chose stays
             t0_->setValue(first);
             t1_->setValue(last);
@@ -841,11 +906,12 @@ QString IdentificationWindow::previewRecord() {
                 t[k] = d.startSeconds + k * d.tsSeconds;
             measured_->setData(t, toVector(d.y), true);
             timeNotice_->setSevere(false);
-            timeNotice_->setLines({tr("The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)")
-                                       .arg(d.size())
-                                       .arg(first, 0, 'g', 6)
-                                       .arg(last, 0, 'g', 6)
-                                       .arg(d.tsSeconds, 0, 'g', 6)});
+            timeNotice_->setLines(
+                {tr("The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)")
+                     .arg(d.size())
+                     .arg(first, 0, 'g', 6)
+                     .arg(last, 0, 'g', 6)
+                     .arg(d.tsSeconds, 0, 'g', 6)});
             fitTimeAxes(timePlot_);
             timePlot_->replot();
         }
@@ -867,16 +933,18 @@ void IdentificationWindow::useForAxis(int axis) {
     if (!c)
         return;
     try {
-        const AxisSettings next = axisWithIdentifiedModel(session_->session().axes.at(static_cast<std::size_t>(axis)),
-                                                          c->model, c->estimation);
-        const bool changed = session_->setAxis(axis, next, tr("Use the identified %1 for axis %2")
-                                                               .arg(QString::fromStdString(c->model.structure),
-                                                                    axis == 0 ? tr("X") : tr("Y")));
+        const AxisSettings next = axisWithIdentifiedModel(
+            session_->session().axes.at(static_cast<std::size_t>(axis)), c->model, c->estimation);
+        const bool changed = session_->setAxis(
+            axis, next,
+            tr("Use the identified %1 for axis %2")
+                .arg(QString::fromStdString(c->model.structure), axis == 0 ? tr("X") : tr("Y")));
         QUndoStack* stack = session_->undoStack();
         usedIndex_ = stack->index();
         usedStep_ = changed ? stack->command(usedIndex_ - 1) : nullptr;
-        setStatus(tr("Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).")
-                      .arg(axis == 0 ? tr("X") : tr("Y"), QString::fromStdString(c->model.structure)));
+        setStatus(
+            tr("Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).")
+                .arg(axis == 0 ? tr("X") : tr("Y"), QString::fromStdString(c->model.structure)));
     } catch (const std::exception& e) {
         setStatus(tr("Cannot use this model: %1").arg(QString::fromStdString(e.what())), true);
     }

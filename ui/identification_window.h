@@ -52,8 +52,9 @@ public:
         IdentifiedModel model;
         IoData estimation;
         std::optional<IoData> validation;
-        QStringList notes; ///< what the window did to the data (e.g. the initial position taken off)
-        QString message;   ///< the fit's report, shown again whenever its row is selected
+        QStringList
+            notes;       ///< what the window did to the data (e.g. the initial position taken off)
+        QString message; ///< the fit's report, shown again whenever its row is selected
         bool messageIsError = false;
     };
 

@@ -3,33 +3,33 @@
 
 #include "core/model/errors.h"
 #include "core/simulation/step_view.h"
-#include "ui/plots/contour_plot.h"
 #include "ui/design_space_view.h"
+#include "ui/files/session_file.h"
 #include "ui/identification_window.h"
-#include "ui/robustness_view.h"
+#include "ui/panels/contour_controls.h"
 #include "ui/panels/equations_panel.h"
+#include "ui/panels/fitted_stack.h"
+#include "ui/panels/implementation_editor.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/panels/plant_editor.h"
+#include "ui/panels/pp_editor.h"
+#include "ui/panels/trajectory_editor.h"
 #include "ui/plots/bode_plot.h"
+#include "ui/plots/contour_plot.h"
 #include "ui/plots/nyquist_plot.h"
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/pole_zero_plot.h"
-#include "ui/panels/fitted_stack.h"
-#include "ui/panels/implementation_editor.h"
-#include "ui/panels/pp_editor.h"
-#include "ui/session/recovery_store.h"
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/step_plot.h"
-#include "ui/files/session_file.h"
-#include "ui/session/session_file_controller.h"
-#include "ui/snapshot_compare_dialog.h"
 #include "ui/plots/time_response_plot.h"
-#include "ui/panels/contour_controls.h"
-#include "ui/panels/trajectory_editor.h"
+#include "ui/robustness_view.h"
+#include "ui/session/recovery_store.h"
+#include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
+#include "ui/snapshot_compare_dialog.h"
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -42,12 +42,12 @@
 #include <QInputDialog>
 #include <QJsonDocument>
 #include <QKeyEvent>
-#include <QLineEdit>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QScrollArea>
 #include <QScreen>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -101,9 +101,11 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     // Short tab names: all five tabs fit beside each other at 1366x768 (with the longer
     // "Time response" and "Step response", Robustness hid behind the scroll arrows).
     lowerTabs_->addTab(timePlot_, tr("&Time"));
-    lowerTabs_->setTabToolTip(0, tr("Time response: the trajectory, the tracking error and the control signal"));
+    lowerTabs_->setTabToolTip(
+        0, tr("Time response: the trajectory, the tracking error and the control signal"));
     lowerTabs_->addTab(stepPlot_, tr("&Step"));
-    lowerTabs_->setTabToolTip(1, tr("Step response of each axis against the specification's envelope"));
+    lowerTabs_->setTabToolTip(
+        1, tr("Step response of each axis against the specification's envelope"));
     lowerTabs_->addTab(contourPlot_, tr("&XY contour"));
     magnification_ = new QDoubleSpinBox(this);
     magnification_->setRange(1.0, 10000.0);
@@ -111,22 +113,27 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     magnification_->setValue(contourPlot_->magnification());
     magnification_->setPrefix(tr("error × "));
     magnification_->setAccessibleName(tr("Contour error magnification"));
-    magnification_->setToolTip(tr("Magnification of the contour error in the XY plot (as a ballbar plot)"));
+    magnification_->setToolTip(
+        tr("Magnification of the contour error in the XY plot (as a ballbar plot)"));
     lowerTabs_->setCornerWidget(magnification_, Qt::TopRightCorner);
-    connect(magnification_, &QDoubleSpinBox::valueChanged, contourPlot_, &ContourPlot::setMagnification);
+    connect(magnification_, &QDoubleSpinBox::valueChanged, contourPlot_,
+            &ContourPlot::setMagnification);
     contourControls_ = new ContourControls(contourPlot_);
     lowerTabs_->addTab(new DesignSpaceView(session_, this), tr("&Design space"));
     lowerTabs_->addTab(new RobustnessView(session_, this), tr("R&obustness"));
-    lowerTabs_->setUsesScrollButtons(true); // six tabs and a corner control: scroll, never widen the window
+    lowerTabs_->setUsesScrollButtons(
+        true); // six tabs and a corner control: scroll, never widen the window
     connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
     connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {
         if (!session_->applyLoopGain(session_->currentAxis(), gain))
             statusBar()->showMessage(
                 tr("Picking a gain sets kp and ωn of a Guillemin–Truxal axis; a pole-placement "
-                   "axis is tuned with t1."), 6000);
+                   "axis is tuned with t1."),
+                6000);
         else
-            statusBar()->showMessage(tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4), 5000);
+            statusBar()->showMessage(
+                tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4), 5000);
     });
     plotSplitter_ = new QSplitter(Qt::Vertical, this);
     plotSplitter_->addWidget(upperTabs_);
@@ -141,7 +148,8 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     auto* metricsLayout = new QVBoxLayout(metricsBox);
     metrics_ = new MetricsPanel(metricsBox);
     metricsLayout->addWidget(metrics_);
-    connect(metrics_, &MetricsPanel::specificationEdited, session_, &TuningSession::setSpecification);
+    connect(metrics_, &MetricsPanel::specificationEdited, session_,
+            &TuningSession::setSpecification);
     auto* equationsBox = new QGroupBox(tr("Equations"), right);
     auto* equationsLayout = new QVBoxLayout(equationsBox);
     equations_ = new EquationsPanel(equationsBox);
@@ -170,7 +178,8 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
             [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(files_, &SessionFileController::currentFileChanged, this, &MainWindow::updateTitle);
     recovery_ = new RecoveryStore(session_, RecoveryStore::defaultDirectory(), this);
-    connect(files_, &SessionFileController::currentFileChanged, recovery_, &RecoveryStore::setSessionFile);
+    connect(files_, &SessionFileController::currentFileChanged, recovery_,
+            &RecoveryStore::setSessionFile);
     connect(session_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     buildMenus();
     updateTitle();
@@ -236,26 +245,33 @@ QWidget* MainWindow::buildControls() {
     designLayout->addWidget(methodPages_);
     connect(method_, &QComboBox::activated, this, [this](int index) {
         const int axis = session_->currentAxis();
-        const DesignMethod method = index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
+        const DesignMethod method =
+            index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
         if (session_->session().axes[static_cast<std::size_t>(axis)].method == method)
             return;
         session_->setMethod(axis, method);
         // The plant changes with the method (each method has its own model): say which.
         const AxisSettings& a = session_->session().axes[static_cast<std::size_t>(axis)];
         const QString name = QString::fromStdString(a.id).toUpper();
-        statusBar()->showMessage(
-            method == DesignMethod::PolePlacementZpetc
-                ? (a.pp == PpAxisSettings{}
-                       ? tr("Axis %1 now uses pole placement on Patrick, Ishak and Adnan's ARX model (the "
-                            "pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back")
-                             .arg(name)
-                       : tr("Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back").arg(name))
-                : tr("Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back").arg(name),
-            10000);
+        statusBar()->showMessage(method == DesignMethod::PolePlacementZpetc
+                                     ? (a.pp == PpAxisSettings{}
+                                            ? tr("Axis %1 now uses pole placement on Patrick, "
+                                                 "Ishak and Adnan's ARX model (the "
+                                                 "pole-placement plant, not the Guillemin–Truxal "
+                                                 "one); Edit › Undo switches back")
+                                                  .arg(name)
+                                            : tr("Axis %1 now uses pole placement on its ARX "
+                                                 "model; Edit › Undo switches back")
+                                                  .arg(name))
+                                     : tr("Axis %1 now uses the Guillemin–Truxal PI on its "
+                                          "continuous plant; Edit › Undo switches back")
+                                           .arg(name),
+                                 10000);
     });
-    connect(ppEditor_, &PpEditor::settingsEdited, this, [this](const PpAxisSettings& pp, int mergeKey) {
-        session_->setPp(session_->currentAxis(), pp, mergeKey);
-    });
+    connect(ppEditor_, &PpEditor::settingsEdited, this,
+            [this](const PpAxisSettings& pp, int mergeKey) {
+                session_->setPp(session_->currentAxis(), pp, mergeKey);
+            });
     layout->addWidget(designBox);
 
     auto* trajectoryBox = new QGroupBox(tr("Trajectory"), panel);
@@ -266,11 +282,11 @@ QWidget* MainWindow::buildControls() {
 
     auto* actuatorBox = new QGroupBox(tr("Actuator and digital controller"), panel);
     auto* actuatorForm = new QFormLayout(actuatorBox);
-    umax_ = new NumberField("umax", [](double v) { requirePositive(v, "umax"); }, actuatorBox);
+    umax_ = new NumberField(
+        "umax", [](double v) { requirePositive(v, "umax"); }, actuatorBox);
     actuatorForm->addRow(tr("|u| limit (V)"), umax_);
-    controllerTs_ = new NumberField("controller Ts", [](double v) {
-        requirePositive(v, "controller Ts");
-    }, actuatorBox);
+    controllerTs_ = new NumberField(
+        "controller Ts", [](double v) { requirePositive(v, "controller Ts"); }, actuatorBox);
     controllerTs_->setToolTip(tr("Sample time of the digital PI in the exports"));
     discretization_ = new QComboBox(actuatorBox);
     discretization_->addItem(tr("Tustin"));
@@ -298,7 +314,8 @@ QWidget* MainWindow::buildControls() {
     implementationToggle_->setArrowType(Qt::RightArrow);
     implementationToggle_->setAutoRaise(true);
     implementationToggle_->setAccessibleName(tr("Digital implementation settings"));
-    implementationToggle_->setToolTip(tr("Delay, encoder, DAC and anti-windup of the digital controller"));
+    implementationToggle_->setToolTip(
+        tr("Delay, encoder, DAC and anti-windup of the digital controller"));
     implementation_ = new ImplementationEditor(actuatorBox);
     implementation_->setVisible(false);
     actuatorForm->addRow(implementationToggle_);
@@ -307,14 +324,16 @@ QWidget* MainWindow::buildControls() {
         implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
         implementation_->setVisible(open);
     });
-    connect(implementation_, &ImplementationEditor::implementationEdited, this,
-            [this](const ImplementationSettings& settings) { session_->setImplementation(settings); });
+    connect(
+        implementation_, &ImplementationEditor::implementationEdited, this,
+        [this](const ImplementationSettings& settings) { session_->setImplementation(settings); });
     connect(controllerTs_, &NumberField::valueAccepted, this, [this](double v) {
         if (v != session_->session().controllerTsSeconds)
             session_->setControllerTs(v);
     });
     connect(discretization_, &QComboBox::activated, this, [this](int index) {
-        session_->setPiDiscretization(index == 0 ? PiDiscretization::Tustin : PiDiscretization::BackwardEuler);
+        session_->setPiDiscretization(index == 0 ? PiDiscretization::Tustin
+                                                 : PiDiscretization::BackwardEuler);
     });
     layout->addWidget(actuatorBox);
     layout->addStretch(1);
@@ -328,9 +347,10 @@ QWidget* MainWindow::buildControls() {
     connect(plantEditor_, &PlantEditor::modelUnitEdited, this,
             [this](double v) { session_->setModelUnitScale(session_->currentAxis(), v); });
     connect(plantEditor_, &PlantEditor::presetChosen, this, [this](const GtPreset& preset) {
-        session_->setGt(session_->currentAxis(),
-                        {preset.plant, preset.omegaNRadPerSec, preset.kp, preset.modelUnitsPerPositionUnit},
-                        tr("Load preset %1").arg(QString::fromStdString(preset.name)));
+        session_->setGt(
+            session_->currentAxis(),
+            {preset.plant, preset.omegaNRadPerSec, preset.kp, preset.modelUnitsPerPositionUnit},
+            tr("Load preset %1").arg(QString::fromStdString(preset.name)));
     });
     connect(trajectoryEditor_, &TrajectoryEditor::trajectoryEdited, session_,
             &TuningSession::setTrajectory);
@@ -382,7 +402,8 @@ void MainWindow::buildMenus() {
     digitalOverlayAction_ = view->addAction(tr("Show the &digital implementation"));
     digitalOverlayAction_->setCheckable(true);
     digitalOverlayAction_->setChecked(true);
-    digitalOverlayAction_->setToolTip(tr("Overlay the loop as the firmware runs it on the time plots"));
+    digitalOverlayAction_->setToolTip(
+        tr("Overlay the loop as the firmware runs it on the time plots"));
     connect(digitalOverlayAction_, &QAction::toggled, this, [this](bool on) {
         timePlot_->setDigitalVisible(on);
         refresh();
@@ -435,14 +456,17 @@ void MainWindow::syncControls() {
     // its tooltip.
     const bool quantized = impl.encoderResolutionMm > 0 || impl.dacBits > 0;
     const QString antiWindup = impl.antiWindup == AntiWindup::Clamp ? tr("clamp")
-                               : impl.antiWindup == AntiWindup::BackCalculation ? tr("back-calc.")
-                                                                                : tr("no anti-windup");
-    implementationToggle_->setText(tr("Implementation: %1, %2%3")
-                                       .arg(quantized ? tr("quantized") : tr("ideal"), antiWindup,
-                                            impl.delaySamples > 0 ? tr(", delay %1").arg(impl.delaySamples) : QString()));
+                               : impl.antiWindup == AntiWindup::BackCalculation
+                                   ? tr("back-calc.")
+                                   : tr("no anti-windup");
+    implementationToggle_->setText(
+        tr("Implementation: %1, %2%3")
+            .arg(quantized ? tr("quantized") : tr("ideal"), antiWindup,
+                 impl.delaySamples > 0 ? tr(", delay %1").arg(impl.delaySamples) : QString()));
     implementationToggle_->setToolTip(
         tr("Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.")
-            .arg(impl.encoderResolutionMm > 0 ? tr("%1 mm/count").arg(impl.encoderResolutionMm) : tr("ideal"),
+            .arg(impl.encoderResolutionMm > 0 ? tr("%1 mm/count").arg(impl.encoderResolutionMm)
+                                              : tr("ideal"),
                  impl.dacBits > 0 ? tr("%1 bits").arg(impl.dacBits) : tr("ideal"),
                  QString::fromStdString(antiWindupName(impl.antiWindup)))
             .arg(impl.delaySamples));
@@ -456,8 +480,9 @@ void MainWindow::refresh() {
     const Session& s = session_->session();
     const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
     const AxisEvaluation& e = session_->axisEvaluation(axis);
-    const QString title = tr("Axis %1 (%2)").arg(QString::fromStdString(a.id).toUpper(),
-                                                  QString::fromStdString(a.label));
+    const QString title =
+        tr("Axis %1 (%2)")
+            .arg(QString::fromStdString(a.id).toUpper(), QString::fromStdString(a.label));
     // Plots that are not on screen are redrawn when their tab is shown (the tabs' currentChanged
     // calls refresh), so a slider drag only pays for what the user sees.
     const auto shown = [this](QWidget* w) { return w->isVisible() || !isVisible(); };
@@ -491,33 +516,42 @@ void MainWindow::refresh() {
         if (shown(poleZeroPlot_)) {
             if (zPlaneAction_ && zPlaneAction_->isChecked() && e.digital)
                 poleZeroPlot_->showSets(digitalPoleZeroSets(e),
-                                        tr("Digital loop of %1 in the z-plane (Ts = %2 s)").arg(title).arg(e.digital->tsSeconds));
+                                        tr("Digital loop of %1 in the z-plane (Ts = %2 s)")
+                                            .arg(title)
+                                            .arg(e.digital->tsSeconds));
             else
-                poleZeroPlot_->showSets(session_->poleZeroSets(axis), tr("Pole-zero map of %1").arg(title));
+                poleZeroPlot_->showSets(session_->poleZeroSets(axis),
+                                        tr("Pole-zero map of %1").arg(title));
         }
         if (shown(parameterLocusPlot_)) {
             if (a.method == DesignMethod::GuilleminTruxal) {
                 const bool kp = sweptParameter_->currentIndex() == 1;
                 parameterLocusPlot_->showLocus(
-                    session_->parameterLocus(axis, kp ? GtSweptParameter::Kp : GtSweptParameter::OmegaN),
+                    session_->parameterLocus(axis,
+                                             kp ? GtSweptParameter::Kp : GtSweptParameter::OmegaN),
                     poles,
                     kp ? tr("Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)")
-                             .arg(a.gt.kp / 10, 0, 'g', 3).arg(a.gt.kp * 10, 0, 'g', 3).arg(a.gt.omegaNRadPerSec)
+                             .arg(a.gt.kp / 10, 0, 'g', 3)
+                             .arg(a.gt.kp * 10, 0, 'g', 3)
+                             .arg(a.gt.omegaNRadPerSec)
                        : tr("Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)")
                              .arg(a.gt.omegaNRadPerSec / 10, 0, 'g', 3)
-                             .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3).arg(a.gt.kp));
+                             .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3)
+                             .arg(a.gt.kp));
             } else {
                 parameterLocusPlot_->showNoResult(
                     tr("Parameter locus of %1").arg(title),
                     tr("The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis "
                        "uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ "
-                       "(pole at z = %1), placed directly by t1.").arg(-a.pp.t1, 0, 'g', 4));
+                       "(pole at z = %1), placed directly by t1.")
+                        .arg(-a.pp.t1, 0, 'g', 4));
             }
         }
     } else {
         // An invalid or failed axis has no locus and no pole-zero map: never an earlier one.
-        const QString reason = tr("No design: %1: %2").arg(QString::fromStdString(e.errorField),
-                                                          QString::fromStdString(e.error));
+        const QString reason =
+            tr("No design: %1: %2")
+                .arg(QString::fromStdString(e.errorField), QString::fromStdString(e.error));
         if (shown(rootLocusPlot_))
             rootLocusPlot_->showNoResult(tr("Root locus of %1").arg(title), reason);
         if (shown(poleZeroPlot_))
@@ -528,21 +562,24 @@ void MainWindow::refresh() {
     // The frequency domain: drawn from the core's analysis, or its reason.
     if (shown(bodePlot_) || shown(nyquistPlot_)) {
         const AxisFrequencyAnalysis& f = session_->frequencyAnalysis(axis);
-        const QString reason = e.ok ? tr("No frequency analysis: %1").arg(QString::fromStdString(f.error))
-                                    : tr("No design: %1: %2").arg(QString::fromStdString(e.errorField),
-                                                                 QString::fromStdString(e.error));
+        const QString reason =
+            e.ok ? tr("No frequency analysis: %1").arg(QString::fromStdString(f.error))
+                 : tr("No design: %1: %2")
+                       .arg(QString::fromStdString(e.errorField), QString::fromStdString(e.error));
         if (shown(bodePlot_)) {
             if (e.ok && f.ok)
-                bodePlot_->showAnalysis(f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled,
-                                        tr("Bode diagram of %1").arg(title),
-                                        {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb,
-                                         e.check.phaseMargin, e.check.gainMargin});
+                bodePlot_->showAnalysis(
+                    f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled,
+                    tr("Bode diagram of %1").arg(title),
+                    {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb, e.check.phaseMargin,
+                     e.check.gainMargin});
             else
                 bodePlot_->showNoResult(tr("Bode diagram of %1").arg(title), reason);
         }
         if (shown(nyquistPlot_)) {
             if (e.ok && f.ok)
-                nyquistPlot_->showCurve(f.nyquist, f.margins, tr("Nyquist diagram of %1 (open loop L)").arg(title));
+                nyquistPlot_->showCurve(f.nyquist, f.margins,
+                                        tr("Nyquist diagram of %1 (open loop L)").arg(title));
             else
                 nyquistPlot_->showNoResult(tr("Nyquist diagram of %1").arg(title), reason);
         }
@@ -559,7 +596,8 @@ void MainWindow::refresh() {
     QString state;
     for (int i = 0; i < 2; ++i) {
         const AxisEvaluation& ai = session_->axisEvaluation(i);
-        const QString id = QString::fromStdString(s.axes.at(static_cast<std::size_t>(i)).id).toUpper();
+        const QString id =
+            QString::fromStdString(s.axes.at(static_cast<std::size_t>(i)).id).toUpper();
         if (!ai.ok)
             state += tr("%1: invalid (%2)  ").arg(id, QString::fromStdString(ai.errorField));
         else if (!ai.step.stable)
@@ -589,17 +627,20 @@ void MainWindow::showStep(const AxisEvaluation& e, const AxisSettings& a, const 
                           const QString& title) {
     const QString stepTitle = tr("Unit step of %1").arg(title);
     if (!e.ok) {
-        stepPlot_->showNoResult(stepTitle, tr("No design: %1: %2").arg(QString::fromStdString(e.errorField),
-                                                                      QString::fromStdString(e.error)));
+        stepPlot_->showNoResult(stepTitle, tr("No design: %1: %2")
+                                               .arg(QString::fromStdString(e.errorField),
+                                                    QString::fromStdString(e.error)));
         return;
     }
     try {
         const bool pp = e.pp && e.zpetc;
-        stepPlot_->showView(stepView(e.closedLoop(), e.step, specificationEnvelope(spec), pp ? &*e.pp : nullptr,
-                                     pp ? &*e.zpetc : nullptr, pp && a.pp.zpetcEnabled),
+        stepPlot_->showView(stepView(e.closedLoop(), e.step, specificationEnvelope(spec),
+                                     pp ? &*e.pp : nullptr, pp ? &*e.zpetc : nullptr,
+                                     pp && a.pp.zpetcEnabled),
                             stepTitle);
     } catch (const std::exception& ex) {
-        stepPlot_->showNoResult(stepTitle, tr("No step response: %1").arg(QString::fromUtf8(ex.what())));
+        stepPlot_->showNoResult(stepTitle,
+                                tr("No step response: %1").arg(QString::fromUtf8(ex.what())));
     }
 }
 
@@ -623,8 +664,9 @@ void MainWindow::rebuildOverlayMenu() {
     none->setCheckable(true);
     none->setChecked(overlay_ < 0);
     for (int i = 0; i < static_cast<int>(snapshots.size()); ++i) {
-        QAction* a = overlayMenu_->addAction(QString::fromStdString(snapshots[static_cast<std::size_t>(i)].name),
-                                             this, [this, i] { setOverlaySnapshot(i); });
+        QAction* a = overlayMenu_->addAction(
+            QString::fromStdString(snapshots[static_cast<std::size_t>(i)].name), this,
+            [this, i] { setOverlaySnapshot(i); });
         a->setCheckable(true);
         a->setChecked(overlay_ == i);
     }
@@ -632,7 +674,8 @@ void MainWindow::rebuildOverlayMenu() {
 
 void MainWindow::updateTitle() {
     const QString file = files_->currentFile();
-    setWindowTitle(tr("%1[*] — XY Tune").arg(file.isEmpty() ? tr("untitled") : QFileInfo(file).fileName()));
+    setWindowTitle(
+        tr("%1[*] — XY Tune").arg(file.isEmpty() ? tr("untitled") : QFileInfo(file).fileName()));
     setWindowModified(session_->isModified());
 }
 
@@ -661,8 +704,12 @@ void MainWindow::fitIntoScreen() {
         resize(std::min(width(), most.width()), std::min(height(), most.height()));
     QRect frame = frameGeometry();
     if (!available.contains(frame)) {
-        frame.moveLeft(std::clamp(frame.left(), available.left(), std::max(available.left(), available.right() - frame.width() + 1)));
-        frame.moveTop(std::clamp(frame.top(), available.top(), std::max(available.top(), available.bottom() - frame.height() + 1)));
+        frame.moveLeft(
+            std::clamp(frame.left(), available.left(),
+                       std::max(available.left(), available.right() - frame.width() + 1)));
+        frame.moveTop(
+            std::clamp(frame.top(), available.top(),
+                       std::max(available.top(), available.bottom() - frame.height() + 1)));
         move(frame.topLeft());
     }
 }
@@ -684,7 +731,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     // The last values come back on the next start, unless the user discarded them: a session
     // still modified here was answered "Discard", and must not return as a clean "untitled".
     if (!session_->isModified())
-        QSettings().setValue("session/last", QJsonDocument(files::sessionToJson(session_->session())).toJson(QJsonDocument::Compact));
+        QSettings().setValue("session/last",
+                             QJsonDocument(files::sessionToJson(session_->session()))
+                                 .toJson(QJsonDocument::Compact));
     event->accept();
 }
 

@@ -17,8 +17,8 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
-#include <QSignalBlocker>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QVBoxLayout>
@@ -31,7 +31,9 @@ namespace xyt::ui {
 
 namespace {
 
-QString num(double v, int digits = 4) { return std::isfinite(v) ? QString::number(v, 'g', digits) : QStringLiteral("n/a"); }
+QString num(double v, int digits = 4) {
+    return std::isfinite(v) ? QString::number(v, 'g', digits) : QStringLiteral("n/a");
+}
 
 /// What the analysis of an axis depends on: everything of the session but other axes.
 bool sameAxis(const Session& a, const Session& b, int axis) {
@@ -70,7 +72,8 @@ AxisSettings perturbedAxis(AxisSettings settings, const RobustnessProblem& probl
 
 } // namespace
 
-RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidget(parent), session_(session) {
+RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
+    : QWidget(parent), session_(session) {
     // The ranges on the left (3 to 5 rows: they fit the lower tab at 1366 x 768 without
     // scrolling); how many plants and what to show in a row under the actions.
     auto* rangeBox = new QGroupBox(tr("Ranges (± %)"));
@@ -87,11 +90,13 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     seed_->setToolTip(tr("the same seed draws the same plants"));
     corners_ = new QCheckBox(tr("corners"));
     corners_->setChecked(true);
-    corners_->setToolTip(tr("also every corner of the box of ranges (the deterministic worst-case search)"));
+    corners_->setToolTip(
+        tr("also every corner of the box of ranges (the deterministic worst-case search)"));
     contour_ = new QCheckBox(tr("XY contour"));
-    contour_->setToolTip(tr("Analyze both axes together on the circle or G-code program: pairs of plants, "
-                            "the contour error they trace, its XY band. Each range applies to the parameter "
-                            "of that name on every axis that has one."));
+    contour_->setToolTip(
+        tr("Analyze both axes together on the circle or G-code program: pairs of plants, "
+           "the contour error they trace, its XY band. Each range applies to the parameter "
+           "of that name on every axis that has one."));
     signal_ = new QComboBox;
     signal_->setToolTip(tr("the signal whose envelope is drawn"));
     figure_ = new QComboBox;
@@ -109,7 +114,8 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     cancel_ = new QPushButton(tr("Cancel"));
     cancel_->setEnabled(false);
     worst_ = new QPushButton(tr("Load worst case"));
-    worst_->setToolTip(tr("Make the worst plant found (largest RMSE) the session's plant (an undoable step)"));
+    worst_->setToolTip(
+        tr("Make the worst plant found (largest RMSE) the session's plant (an undoable step)"));
     worst_->setEnabled(false);
     progress_ = new QProgressBar;
     progress_->setRange(0, 100);
@@ -179,7 +185,9 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent) : QWidge
     rebuildRanges();
 }
 
-bool RobustnessView::contourMode() const { return contour_->isChecked(); }
+bool RobustnessView::contourMode() const {
+    return contour_->isChecked();
+}
 
 void RobustnessView::fillChoices() {
     const QSignalBlocker blockSignal(signal_), blockFigure(figure_);
@@ -220,11 +228,17 @@ void RobustnessView::clearResult(const QString& why) {
     setStatus(why);
 }
 
-RobustnessView::~RobustnessView() { stopJob(); }
+RobustnessView::~RobustnessView() {
+    stopJob();
+}
 
-QString RobustnessView::statusText() const { return status_->text(); }
+QString RobustnessView::statusText() const {
+    return status_->text();
+}
 
-void RobustnessView::setStatus(const QString& text, bool isError) { setStatusText(status_, text, isError); }
+void RobustnessView::setStatus(const QString& text, bool isError) {
+    setStatusText(status_, text, isError);
+}
 
 void RobustnessView::stopJob() {
     if (!job_)
@@ -244,8 +258,8 @@ void RobustnessView::rebuildRanges() {
         if (!contourMode() && axis != session_->currentAxis())
             continue;
         try {
-            for (const UncertainParameter& p :
-                 axisUncertainParameters(session_->session().axes.at(static_cast<std::size_t>(axis))))
+            for (const UncertainParameter& p : axisUncertainParameters(
+                     session_->session().axes.at(static_cast<std::size_t>(axis))))
                 if (!names.contains(QString::fromStdString(p.name))) {
                     names << QString::fromStdString(p.name);
                     parameters.push_back(p);
@@ -268,9 +282,11 @@ void RobustnessView::rebuildRanges() {
         box->setSuffix(QStringLiteral(" %"));
         box->setValue(rangePct_.value(name, 0.0));
         box->setToolTip(contourMode()
-                            ? tr("%1 of every axis that has one: drawn uniformly within ± this share of its nominal")
+                            ? tr("%1 of every axis that has one: drawn uniformly within ± this "
+                                 "share of its nominal")
                                   .arg(name)
-                            : tr("%1: nominal %2; drawn uniformly within ± this share of it").arg(name, num(p.nominal, 6)));
+                            : tr("%1: nominal %2; drawn uniformly within ± this share of it")
+                                  .arg(name, num(p.nominal, 6)));
         rangeForm_->addRow(name, box);
         ranges_.insert(name, box);
     }
@@ -330,10 +346,13 @@ void RobustnessView::run() {
     std::atomic<bool>* cancelFlag = &job_->cancel;
     job_->thread = std::thread([this, id, cancelFlag, problem, contour, options]() mutable {
         options.progress = [this, id, cancelFlag](double fraction) {
-            QMetaObject::invokeMethod(this, [this, id, fraction] {
-                if (job_ && job_->id == id)
-                    progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
-            }, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(
+                this,
+                [this, id, fraction] {
+                    if (job_ && job_->id == id)
+                        progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
+                },
+                Qt::QueuedConnection);
             return !cancelFlag->load();
         };
         auto result = std::make_shared<RobustnessResult>();
@@ -345,7 +364,8 @@ void RobustnessView::run() {
                 *joint = analyzeContourRobustness(*contour, options);
             else
                 *result = analyzeRobustness(problem, options);
-            if (!contour && problem.loop && problem.zpetcEnabled && result->status == RobustnessStatus::Completed) {
+            if (!contour && problem.loop && problem.zpetcEnabled &&
+                result->status == RobustnessStatus::Completed) {
                 RobustnessOptions quiet = options; // the bar has reached 100 %: cancel only
                 quiet.progress = [cancelFlag](double) { return !cancelFlag->load(); };
                 *curve = zpetcSensitivity(problem, sensitivityScales(), quiet);
@@ -354,7 +374,10 @@ void RobustnessView::run() {
             error = QString::fromStdString(e.what());
         }
         QMetaObject::invokeMethod(
-            this, [this, id, result, joint, curve, error] { onFinished(id, result, joint, curve, error); },
+            this,
+            [this, id, result, joint, curve, error] {
+                onFinished(id, result, joint, curve, error);
+            },
             Qt::QueuedConnection);
     });
     progress_->setValue(0);
@@ -375,7 +398,8 @@ void RobustnessView::cancel() {
 
 void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
                                 std::shared_ptr<ContourRobustnessResult> contour,
-                                std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve, QString error) {
+                                std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve,
+                                QString error) {
     if (!job_ || job_->id != jobId)
         return;
     job_->thread.join();
@@ -411,7 +435,8 @@ void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> res
 namespace {
 
 /// "x.k0 = 70.2, y.a1 = 64": the parameters of @p values that vary (relative > 0).
-QString variedParameters(const std::vector<std::string>& names, const std::vector<UncertainParameter>& parameters,
+QString variedParameters(const std::vector<std::string>& names,
+                         const std::vector<UncertainParameter>& parameters,
                          const std::vector<double>& values) {
     std::vector<std::string> varied;
     std::vector<double> v;
@@ -423,11 +448,18 @@ QString variedParameters(const std::vector<std::string>& names, const std::vecto
     return parameterList(varied, v);
 }
 
-QString countsText(const QString& what, int computed, std::size_t total, int samples, bool cancelled) {
+QString countsText(const QString& what, int computed, std::size_t total, int samples,
+                   bool cancelled) {
     const int corners = static_cast<int>(total) - samples;
-    return cancelled ? RobustnessView::tr("Cancelled after %1 of %2 %3. ").arg(computed).arg(total).arg(what)
-                     : RobustnessView::tr("%1 %2%3: ").arg(samples).arg(what).arg(
-                           corners > 0 ? RobustnessView::tr(" + %1 corners").arg(corners) : QString());
+    return cancelled ? RobustnessView::tr("Cancelled after %1 of %2 %3. ")
+                           .arg(computed)
+                           .arg(total)
+                           .arg(what)
+                     : RobustnessView::tr("%1 %2%3: ")
+                           .arg(samples)
+                           .arg(what)
+                           .arg(corners > 0 ? RobustnessView::tr(" + %1 corners").arg(corners)
+                                            : QString());
 }
 
 } // namespace
@@ -440,49 +472,56 @@ QString RobustnessView::axisSummary(const RobustnessResult& r) const {
                 .arg(r.nominal.meetsSpec ? tr("does") : tr("does not"))
                 .arg(r.unstable.size());
     const std::vector<UncertainParameter>& parameters = problem_->parameters;
-    const bool anyVaried = std::any_of(parameters.begin(), parameters.end(),
-                                       [](const UncertainParameter& p) { return p.relative > 0.0; });
+    const bool anyVaried =
+        std::any_of(parameters.begin(), parameters.end(),
+                    [](const UncertainParameter& p) { return p.relative > 0.0; });
     if (r.worst && anyVaried)
         text += tr("\nWorst: RMSE %1 mm at %2.")
                     .arg(num(r.runs[*r.worst].tracking.rmse),
                          variedParameters(r.parameterNames, parameters, r.runs[*r.worst].values));
     if (!r.unstable.empty() && anyVaried)
         text += tr("\nUnstable, e.g. at %1.")
-                    .arg(variedParameters(r.parameterNames, parameters, r.runs[r.unstable.front()].values));
+                    .arg(variedParameters(r.parameterNames, parameters,
+                                          r.runs[r.unstable.front()].values));
     return text;
 }
 
 QString RobustnessView::contourSummary(const ContourRobustnessResult& r) const {
     std::vector<UncertainParameter> parameters = contourProblem_->x.parameters;
-    parameters.insert(parameters.end(), contourProblem_->y.parameters.begin(), contourProblem_->y.parameters.end());
+    parameters.insert(parameters.end(), contourProblem_->y.parameters.begin(),
+                      contourProblem_->y.parameters.end());
     QString text = countsText(tr("plant pairs"), r.computedCount, r.runs.size(), samples_->value(),
                               r.status == RobustnessStatus::Cancelled);
     const Distribution& d = r.maxAbsContourError;
-    text += d.count > 0 ? tr("max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.")
-                              .arg(num(d.p50), num(d.p95), num(r.nominal.maxAbsContourError))
-                              .arg(r.unstable.size())
-                        : tr("no stable pair; %1 unstable.").arg(r.unstable.size());
+    text += d.count > 0
+                ? tr("max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.")
+                      .arg(num(d.p50), num(d.p95), num(r.nominal.maxAbsContourError))
+                      .arg(r.unstable.size())
+                : tr("no stable pair; %1 unstable.").arg(r.unstable.size());
     if (r.worst)
         text += tr("\nWorst: %1 mm at %2.")
                     .arg(num(r.runs[*r.worst].maxAbsContourError),
                          variedParameters(r.parameterNames, parameters, r.runs[*r.worst].values));
     if (!r.unstable.empty())
         text += tr("\nUnstable, e.g. at %1.")
-                    .arg(variedParameters(r.parameterNames, parameters, r.runs[r.unstable.front()].values));
+                    .arg(variedParameters(r.parameterNames, parameters,
+                                          r.runs[r.unstable.front()].values));
     return text;
 }
 
 void RobustnessView::redraw() {
     if (contourResult_) {
         const ContourRobustnessResult& r = *contourResult_;
-        envelope_->showEnvelope(r.error, tr("Contour error of the plant pairs"), tr("contour e (mm)"));
+        envelope_->showEnvelope(r.error, tr("Contour error of the plant pairs"),
+                                tr("contour e (mm)"));
         const bool band = figure_->currentIndex() == 1;
         figureStack_->setCurrentWidget(band ? static_cast<QWidget*>(band_) : histogram_);
         if (band)
             band_->showResult(r);
         else
-            histogram_->showHistogram(histogram(contourFigureValues(r), 20), r.nominal.maxAbsContourError,
-                                      std::nullopt, tr("Distribution"), tr("max |contour e| (mm)"));
+            histogram_->showHistogram(histogram(contourFigureValues(r), 20),
+                                      r.nominal.maxAbsContourError, std::nullopt,
+                                      tr("Distribution"), tr("max |contour e| (mm)"));
         return;
     }
     if (!result_)
@@ -490,7 +529,8 @@ void RobustnessView::redraw() {
     const RobustnessResult& r = *result_;
     const int s = signal_->currentIndex();
     const SignalEnvelope& e = s == 0 ? r.error : s == 1 ? r.output : r.command;
-    const QString names[] = {tr("Error e of the plants"), tr("Output y of the plants"), tr("Command u of the plants")};
+    const QString names[] = {tr("Error e of the plants"), tr("Output y of the plants"),
+                             tr("Command u of the plants")};
     const QString units[] = {tr("e (mm)"), tr("y (mm)"), tr("u (V)")};
     envelope_->showEnvelope(e, names[s], units[s]);
     const int f = figure_->currentIndex();
@@ -502,15 +542,18 @@ void RobustnessView::redraw() {
             sensitivity_->showCurve(curve_);
         return;
     }
-    const RobustnessFigure figure = f == 0 ? RobustnessFigure::Rmse : f == 1 ? RobustnessFigure::MaxAbsError
-                                                                              : RobustnessFigure::MaxAbsU;
-    const double nominal = f == 0 ? r.nominal.tracking.rmse : f == 1 ? r.nominal.tracking.maxAbsError
-                                                                      : r.nominal.tracking.maxAbsU;
+    const RobustnessFigure figure = f == 0   ? RobustnessFigure::Rmse
+                                    : f == 1 ? RobustnessFigure::MaxAbsError
+                                             : RobustnessFigure::MaxAbsU;
+    const double nominal = f == 0   ? r.nominal.tracking.rmse
+                           : f == 1 ? r.nominal.tracking.maxAbsError
+                                    : r.nominal.tracking.maxAbsU;
     // The limits of the specification a figure has: max |e| (% of the travel) and |u| <= umax.
     std::optional<double> limit;
     if (f == 1 && problem_) {
-        const auto [lo, hi] = std::minmax_element(problem_->reference.begin(),
-                                                  problem_->reference.begin() + static_cast<std::ptrdiff_t>(problem_->samples));
+        const auto [lo, hi] = std::minmax_element(
+            problem_->reference.begin(),
+            problem_->reference.begin() + static_cast<std::ptrdiff_t>(problem_->samples));
         limit = problem_->spec.maxErrorPct / 100.0 * (*hi - *lo);
     } else if (f == 2 && problem_) {
         limit = problem_->spec.umaxVolts;
@@ -542,8 +585,9 @@ void RobustnessView::loadWorstCase() {
     if (!result_ || !result_->worst || !problem_)
         return;
     const std::vector<double>& v = result_->runs[*result_->worst].values;
-    const AxisSettings next = perturbedAxis(session_->session().axes.at(static_cast<std::size_t>(axis_)), *problem_,
-                                            lookup(result_->parameterNames, v, ""));
+    const AxisSettings next =
+        perturbedAxis(session_->session().axes.at(static_cast<std::size_t>(axis_)), *problem_,
+                      lookup(result_->parameterNames, v, ""));
     if (problem_->controller)
         session_->setPlant(axis_, next.gt.plant);
     else

@@ -5,8 +5,8 @@
 #include "core/study/contour_robustness.h"
 #include "core/study/robustness.h"
 
-#include <QMap>
 #include "ui/background_job.h"
+#include <QMap>
 
 #include <QWidget>
 
@@ -63,7 +63,9 @@ public:
     int analyzedAxis() const { return axis_; }
     /// The joint XY result shown (contour mode), and its problem.
     const std::optional<ContourRobustnessResult>& contourResult() const { return contourResult_; }
-    const std::optional<ContourRobustnessProblem>& analyzedContourProblem() const { return contourProblem_; }
+    const std::optional<ContourRobustnessProblem>& analyzedContourProblem() const {
+        return contourProblem_;
+    }
     bool contourMode() const;
 
     /// The range box (in %) of parameter @p name of the current axis, or null.

@@ -27,7 +27,8 @@ QList<QPair<QString, QString>> comparisonRows(const Session& design) {
             continue;
         }
         if (a.gt) {
-            rows.append({QObject::tr("%1 ωn (rad/s)").arg(id), displayNumber(a.gt->omegaNRadPerSec)});
+            rows.append(
+                {QObject::tr("%1 ωn (rad/s)").arg(id), displayNumber(a.gt->omegaNRadPerSec)});
             rows.append({QObject::tr("%1 kp").arg(id), displayNumber(a.gt->kp)});
             rows.append({QObject::tr("%1 ki").arg(id), QString::number(a.gt->ki, 'g', 6)});
             QStringList poles;
@@ -42,8 +43,9 @@ QList<QPair<QString, QString>> comparisonRows(const Session& design) {
         rows.append({QObject::tr("%1 RMSE (mm)").arg(id), displayNumber(a.metrics.rmse)});
         rows.append({QObject::tr("%1 max |e| (mm)").arg(id), displayNumber(a.metrics.maxAbsError)});
         rows.append({QObject::tr("%1 max |u| (V)").arg(id), displayNumber(a.metrics.maxAbsU)});
-        rows.append({QObject::tr("%1 settling (s)").arg(id),
-                     a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : QObject::tr("unstable")});
+        rows.append(
+            {QObject::tr("%1 settling (s)").arg(id),
+             a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : QObject::tr("unstable")});
         rows.append({QObject::tr("%1 overshoot (%)").arg(id),
                      a.step.stable ? displayNumber(a.step.overshootPct) : QObject::tr("unstable")});
         rows.append({QObject::tr("%1 ITAE").arg(id), displayNumber(a.metrics.itae)});

@@ -245,7 +245,8 @@ FrequencyResponse adaptiveFrequencyResponse(const TransferFunction& g,
         throw InvalidInput("omegaMax", "must be above omegaMin");
 
     const double decades = std::log10(hi / lo);
-    const int start = std::max(2, static_cast<int>(std::ceil(decades * options.pointsPerDecade)) + 1);
+    const int start =
+        std::max(2, static_cast<int>(std::ceil(decades * options.pointsPerDecade)) + 1);
     std::vector<double> grid = logFrequencyGrid(lo, hi, std::min(start, options.maxPoints));
 
     // Seeds: the natural frequency of each pole and zero, and for a lightly damped one the
@@ -267,7 +268,8 @@ FrequencyResponse adaptiveFrequencyResponse(const TransferFunction& g,
         }
     }
     for (double w : seeds)
-        if (std::isfinite(w) && w > lo && w < hi && static_cast<int>(grid.size()) < options.maxPoints)
+        if (std::isfinite(w) && w > lo && w < hi &&
+            static_cast<int>(grid.size()) < options.maxPoints)
             grid.push_back(w);
     std::sort(grid.begin(), grid.end());
     grid.erase(std::unique(grid.begin(), grid.end(),

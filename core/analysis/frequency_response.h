@@ -25,12 +25,12 @@ namespace xyt {
  * there; the value exactly at such a frequency is infinite or zero.
  */
 struct FrequencyResponse {
-    double tsSeconds = 0.0;                   ///< 0: continuous, > 0: discrete
-    std::vector<double> omegaRadPerSec;       ///< increasing
-    std::vector<std::complex<double>> value;  ///< G at each frequency
-    std::vector<double> magnitudeDb;          ///< 20 log10 |G| (-inf at a zero, +inf at a pole)
-    std::vector<double> phaseDeg;             ///< unwrapped, see above
-    int lowFrequencyIntegrators = 0;          ///< k: the phase starts at -90 k (or -90 k - 180)
+    double tsSeconds = 0.0;                  ///< 0: continuous, > 0: discrete
+    std::vector<double> omegaRadPerSec;      ///< increasing
+    std::vector<std::complex<double>> value; ///< G at each frequency
+    std::vector<double> magnitudeDb;         ///< 20 log10 |G| (-inf at a zero, +inf at a pole)
+    std::vector<double> phaseDeg;            ///< unwrapped, see above
+    int lowFrequencyIntegrators = 0;         ///< k: the phase starts at -90 k (or -90 k - 180)
 };
 
 /**

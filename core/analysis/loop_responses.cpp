@@ -36,8 +36,8 @@ TrackingTransferFunctions zpetcTrackingTransferFunctions(const PolePlacementDesi
                                                          const ZpetcDesign& zpetc) {
     const Polynomial p = design.a * design.f + design.b * design.g;
     TrackingTransferFunctions out;
-    out.withoutFeedforward = TransferFunction::fromZInverse(design.kf * design.b, p,
-                                                            design.tsSeconds);
+    out.withoutFeedforward =
+        TransferFunction::fromZInverse(design.kf * design.b, p, design.tsSeconds);
     // z^p N_ff(z^-1)/D_ff(z^-1) = z^(p - a + b) N~(z)/D~(z), N~ and D~ the reversed polynomials
     // (a = deg N_ff, b = deg D_ff; D_ff(0) != 0, so D~ has degree b).
     const int a = zpetc.feedforwardNum.degree();
@@ -52,8 +52,7 @@ TrackingTransferFunctions zpetcTrackingTransferFunctions(const PolePlacementDesi
         num = num * zPower;
     else
         den = den * zPower;
-    out.withZpetc =
-        series(TransferFunction(num, den, design.tsSeconds), out.withoutFeedforward);
+    out.withZpetc = series(TransferFunction(num, den, design.tsSeconds), out.withoutFeedforward);
     return out;
 }
 
@@ -65,9 +64,9 @@ LoopFrequencyResponses loopFrequencyResponses(const LoopTransferFunctions& loop,
             frequencyResponse(loop.inputSensitivity, omegaRadPerSec)};
 }
 
-TrackingFrequencyResponses zpetcTrackingFrequencyResponses(const PolePlacementDesign& design,
-                                                           const ZpetcDesign& zpetc,
-                                                           const std::vector<double>& omegaRadPerSec) {
+TrackingFrequencyResponses
+zpetcTrackingFrequencyResponses(const PolePlacementDesign& design, const ZpetcDesign& zpetc,
+                                const std::vector<double>& omegaRadPerSec) {
     const TrackingTransferFunctions tf = zpetcTrackingTransferFunctions(design, zpetc);
     return {frequencyResponse(tf.withoutFeedforward, omegaRadPerSec),
             frequencyResponse(tf.withZpetc, omegaRadPerSec)};

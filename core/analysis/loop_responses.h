@@ -32,19 +32,19 @@ struct LoopTransferFunctions {
 LoopTransferFunctions gtLoopTransferFunctions(const GtDesign& design);
 
 /**
- * Pole-placement (RST) axis (Patrick, Ishak and Adnan Fig. 9): F u = K_f r - G y, A y = B u, all in z^-1.
- * The loop broken at the plant input is L = B G/(A F); with P = A F + B G (= T of the design up
- * to the Diophantine residual, which is kept here so that T = L/(1 + L) exactly):
- * S = A F/P, T = B G/P, u/r = K_f A/P. Discrete in z with the design's Ts.
+ * Pole-placement (RST) axis (Patrick, Ishak and Adnan Fig. 9): F u = K_f r - G y, A y = B u, all in
+ * z^-1. The loop broken at the plant input is L = B G/(A F); with P = A F + B G (= T of the design
+ * up to the Diophantine residual, which is kept here so that T = L/(1 + L) exactly): S = A F/P, T =
+ * B G/P, u/r = K_f A/P. Discrete in z with the design's Ts.
  */
 LoopTransferFunctions rstLoopTransferFunctions(const PolePlacementDesign& design);
 
 /**
  * Tracking from the desired output y_d to the output y of a pole-placement axis:
  * without feedforward y/y_d = K_f B/P (r = y_d drives the loop), and with the ZPETC ahead of it
- * y/y_d = z^p N_ff(z^-1)/D_ff(z^-1) K_f B/P (Patrick, Ishak and Adnan Eq. 6 and Fig. 8: zero phase at every
- * frequency, unity DC gain, a gain that falls away from 1 towards pi/Ts). The second has more
- * zeros than poles (the preview): a non-causal transfer function, for evaluation only.
+ * y/y_d = z^p N_ff(z^-1)/D_ff(z^-1) K_f B/P (Patrick, Ishak and Adnan Eq. 6 and Fig. 8: zero phase
+ * at every frequency, unity DC gain, a gain that falls away from 1 towards pi/Ts). The second has
+ * more zeros than poles (the preview): a non-causal transfer function, for evaluation only.
  */
 struct TrackingTransferFunctions {
     TransferFunction withoutFeedforward;
@@ -70,8 +70,8 @@ struct TrackingFrequencyResponses {
     FrequencyResponse withZpetc; ///< phase ~ 0 (round-off), magnitude <= 0 dB
 };
 /// @throws InvalidInput "omega" as frequencyResponse.
-TrackingFrequencyResponses zpetcTrackingFrequencyResponses(const PolePlacementDesign& design,
-                                                           const ZpetcDesign& zpetc,
-                                                           const std::vector<double>& omegaRadPerSec);
+TrackingFrequencyResponses
+zpetcTrackingFrequencyResponses(const PolePlacementDesign& design, const ZpetcDesign& zpetc,
+                                const std::vector<double>& omegaRadPerSec);
 
 } // namespace xyt

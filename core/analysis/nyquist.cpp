@@ -36,7 +36,7 @@ struct Piece {
 /// coefficients of order 1), the factored form keeps them.
 struct FactoredDen {
     bool discrete = false;
-    int lowOrder = 0;                            ///< (s or z - 1)^lowOrder
+    int lowOrder = 0;                                 ///< (s or z - 1)^lowOrder
     std::vector<std::pair<Polynomial, int>> boundary; ///< (s^2 + w^2), (z^2 - 2 cos z + 1), (z + 1)
     Polynomial regular;
 
@@ -56,10 +56,11 @@ class Sampler {
 public:
     Sampler(const TransferFunction& l, const FactoredDen& den, const NyquistOptions& o,
             NyquistCurve& out)
-        : l_(l), den_(den), maxStep_(o.maxArgStepDeg * kPi / 180.0), maxPoints_(o.maxPoints), out_(out) {
+        : l_(l), den_(den), maxStep_(o.maxArgStepDeg * kPi / 180.0), maxPoints_(o.maxPoints),
+          out_(out) {
         // L at s = j inf (continuous, L proper): the ratio of the leading coefficients.
-        atInfinity_ = l.num().degree() == l.den().degree() ? l.num().leading() / l.den().leading()
-                                                           : 0.0;
+        atInfinity_ =
+            l.num().degree() == l.den().degree() ? l.num().leading() / l.den().leading() : 0.0;
     }
 
     void sample(const Piece& piece) {
@@ -114,8 +115,7 @@ private:
     void refine(const Piece& piece, double t0, Complex v0, double t1, Complex v1, int depth) {
         if (!coarse(v0, v1))
             return;
-        if (depth > 60 || t1 - t0 < 1e-15 ||
-            static_cast<int>(out_.points.size()) >= maxPoints_) {
+        if (depth > 60 || t1 - t0 < 1e-15 || static_cast<int>(out_.points.size()) >= maxPoints_) {
             limited_ = true;
             return;
         }
@@ -168,9 +168,9 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
     std::vector<double> upper; // frequencies of boundary poles with omega > 0
     if (rest.degree() > 0) {
         for (const Complex& r : rest.roots()) {
-            const bool onBoundary =
-                discrete ? std::abs(std::abs(r) - 1.0) <= kBoundaryTolerance
-                         : std::abs(r.real()) <= kBoundaryTolerance * std::abs(r);
+            const bool onBoundary = discrete
+                                        ? std::abs(std::abs(r) - 1.0) <= kBoundaryTolerance
+                                        : std::abs(r.real()) <= kBoundaryTolerance * std::abs(r);
             if (onBoundary) {
                 const double w = discrete ? std::arg(r) / ts : r.imag();
                 if (w >= 0.0 || (discrete && std::abs(std::arg(r)) > kPi - kBoundaryTolerance))
@@ -182,9 +182,9 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
     }
     std::sort(upper.begin(), upper.end());
     for (const double w : upper) {
-        if (!boundary.empty() && std::abs(w - boundary.back().omega) <=
-                                     kBoundaryTolerance * std::max(w, discrete ? 1.0 / ts : 0.0) +
-                                         1e-300)
+        if (!boundary.empty() &&
+            std::abs(w - boundary.back().omega) <=
+                kBoundaryTolerance * std::max(w, discrete ? 1.0 / ts : 0.0) + 1e-300)
             ++boundary.back().order;
         else
             boundary.push_back({w, 1});

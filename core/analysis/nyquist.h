@@ -61,9 +61,9 @@ struct NyquistCurve {
     /// -1 for a point on the boundary itself, else the index into indentations.
     std::vector<int> indentationIndex;
     std::vector<NyquistIndentation> indentations; ///< at omega >= 0, increasing
-    int clockwiseEncirclements = 0;  ///< N
-    int openLoopUnstablePoles = 0;   ///< P
-    int closedLoopUnstablePoles = 0; ///< Z = N + P
+    int clockwiseEncirclements = 0;               ///< N
+    int openLoopUnstablePoles = 0;                ///< P
+    int closedLoopUnstablePoles = 0;              ///< Z = N + P
     /// True when a sample lies within 1e-9 of -1 (a closed-loop pole on the boundary): N is
     /// then not defined.
     bool passesThroughMinusOne = false;

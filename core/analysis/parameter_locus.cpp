@@ -28,8 +28,8 @@ double maxDisplacement(const std::vector<Complex>& a, const std::vector<Complex>
 
 class Refiner {
 public:
-    Refiner(const ParameterSweep& sweep,
-            const std::function<std::vector<Complex>(double)>& poles, double bound)
+    Refiner(const ParameterSweep& sweep, const std::function<std::vector<Complex>(double)>& poles,
+            double bound)
         : sweep_(sweep), poles_(poles), bound_(bound) {}
 
     /// Appends the samples after out.back() up to and including @p end, refined, matched.
@@ -41,7 +41,7 @@ public:
             return;
         }
         const double mid = sweep_.logSpacing ? std::sqrt(start.value * end.value)
-                                              : 0.5 * (start.value + end.value);
+                                             : 0.5 * (start.value + end.value);
         std::vector<Complex> midRoots = poles_(mid);
         if (midRoots.size() != start.roots.size()) {
             out.push_back({end.value, std::move(matched)});
@@ -84,8 +84,9 @@ std::vector<double> sweepValues(const ParameterSweep& s) {
     return v;
 }
 
-ParameterLocus parameterLocus(const std::string& parameterName, const ParameterSweep& sweep,
-                              const std::function<std::vector<std::complex<double>>(double)>& poles) {
+ParameterLocus
+parameterLocus(const std::string& parameterName, const ParameterSweep& sweep,
+               const std::function<std::vector<std::complex<double>>(double)>& poles) {
     const std::vector<double> values = sweepValues(sweep);
     ParameterLocus locus;
     locus.parameterName = parameterName;

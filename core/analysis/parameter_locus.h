@@ -30,9 +30,9 @@ std::vector<double> sweepValues(const ParameterSweep& sweep);
 
 /// Where the swept loop crosses the stability boundary (a pole crosses Re s = 0).
 struct StabilityChange {
-    double value = 0.0;              ///< the parameter value, to a relative 1e-12 (bisection)
-    std::complex<double> pole;       ///< the crossing pole at that value (upper half-plane)
-    bool becomesUnstable = false;    ///< stable below the value, unstable above it
+    double value = 0.0;           ///< the parameter value, to a relative 1e-12 (bisection)
+    std::complex<double> pole;    ///< the crossing pole at that value (upper half-plane)
+    bool becomesUnstable = false; ///< stable below the value, unstable above it
 };
 
 /// Closed-loop poles traced as one parameter sweeps: branches[b][i] is a pole at values[i].
@@ -54,9 +54,9 @@ struct ParameterLocus {
  * warning.
  * @throws InvalidInput for the sweep (sweepValues) and whatever @p poles throws.
  */
-ParameterLocus parameterLocus(
-    const std::string& parameterName, const ParameterSweep& sweep,
-    const std::function<std::vector<std::complex<double>>(double)>& poles);
+ParameterLocus
+parameterLocus(const std::string& parameterName, const ParameterSweep& sweep,
+               const std::function<std::vector<std::complex<double>>(double)>& poles);
 
 enum class GtSweptParameter {
     OmegaN, ///< "wn": omega_n sweeps, kp fixed

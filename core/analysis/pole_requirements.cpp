@@ -39,7 +39,8 @@ double settlingRadius(const PoleRequirements& requirements, double tsSeconds) {
     return std::exp(requirements.maxRealPartPerSec * tsSeconds);
 }
 
-PoleViolation checkPole(std::complex<double> pole, const PoleRequirements& requirements, double tsSeconds) {
+PoleViolation checkPole(std::complex<double> pole, const PoleRequirements& requirements,
+                        double tsSeconds) {
     const DampingAndFrequency d = dampingOf(pole, tsSeconds);
     PoleViolation out;
     out.damping = d.zeta < requirements.minDamping - 1e-9;

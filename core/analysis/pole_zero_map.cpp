@@ -12,8 +12,7 @@ PoleZeroSet poleZeroSet(const std::string& name, const TransferFunction& tf) {
 
 std::vector<PoleZeroSet> gtPoleZeroSets(const GtDesign& design) {
     return {poleZeroSet("plant", design.plant.transferFunction()),
-            poleZeroSet("controller", design.controller),
-            poleZeroSet("open loop", design.openLoop),
+            poleZeroSet("controller", design.controller), poleZeroSet("open loop", design.openLoop),
             poleZeroSet("closed loop", design.closedLoop),
             poleZeroSet("reference model", design.referenceModel)};
 }

@@ -13,7 +13,7 @@ namespace xyt {
 /// The poles and zeros of one named transfer function, for a pole-zero map.
 struct PoleZeroSet {
     std::string name;
-    double tsSeconds = 0.0; ///< 0: s-plane; > 0: z-plane (positive powers of z)
+    double tsSeconds = 0.0;                  ///< 0: s-plane; > 0: z-plane (positive powers of z)
     std::vector<std::complex<double>> poles; ///< sorted (sortRoots)
     std::vector<std::complex<double>> zeros; ///< sorted (sortRoots)
 };

@@ -23,7 +23,9 @@ constexpr double kRealGainTolerance = 1e-6;
 constexpr double kPoleResidual = 1e-10;
 
 /// |a - b| without the overflow guard of std::abs (hypot), which the trace cannot reach.
-double distance(Complex a, Complex b) { return std::sqrt(std::norm(a - b)); }
+double distance(Complex a, Complex b) {
+    return std::sqrt(std::norm(a - b));
+}
 
 /// sum |c_i| r^i: the scale against which |p(x)| is small for |x| = r.
 double absoluteSum(const Polynomial& p, double r) {
@@ -232,9 +234,9 @@ public:
         while (!finished(current, k)) {
             if (static_cast<int>(r_.gains.size()) >= o_.maxPoints) {
                 r_.status = RootLocusStatus::PointLimitReached;
-                r_.warnings.push_back("stopped at the point limit (" +
-                                      std::to_string(o_.maxPoints) + ") at K = " +
-                                      std::to_string(k) + " before every branch converged");
+                r_.warnings.push_back(
+                    "stopped at the point limit (" + std::to_string(o_.maxPoints) +
+                    ") at K = " + std::to_string(k) + " before every branch converged");
                 break;
             }
             if (work_ > o_.maxWork) {
@@ -253,8 +255,8 @@ public:
                 std::ostringstream bound;
                 bound << o_.maxSeconds;
                 r_.warnings.push_back("stopped at the time bound (" + bound.str() + " s, " +
-                                      std::to_string(r_.gains.size()) + " points) at K = " +
-                                      std::to_string(k) +
+                                      std::to_string(r_.gains.size()) +
+                                      " points) at K = " + std::to_string(k) +
                                       " before every branch converged: its roots are hard to find "
                                       "(an ill-conditioned loop)");
                 break;
@@ -423,7 +425,9 @@ private:
 
 } // namespace
 
-double LocusView::span() const { return std::max(reMax - reMin, imMax - imMin); }
+double LocusView::span() const {
+    return std::max(reMax - reMin, imMax - imMin);
+}
 
 bool LocusView::contains(std::complex<double> p) const {
     return p.real() >= reMin && p.real() <= reMax && p.imag() >= imMin && p.imag() <= imMax;
@@ -535,7 +539,8 @@ void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots,
             for (std::size_t i = b.size() - 1; i > m; --i)
                 b[i - 1] += r * b[i];
             if (m > 0 && std::abs(b[m]) > 0.0)
-                move = std::min(move, std::pow(eps * scale / std::abs(b[m]), 1.0 / static_cast<double>(m)));
+                move = std::min(
+                    move, std::pow(eps * scale / std::abs(b[m]), 1.0 / static_cast<double>(m)));
         }
         const double relative = move / magnitude;
         if (!(relative <= worst)) {
@@ -548,8 +553,8 @@ void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots,
         std::snprintf(size, sizeof size, "%.2g", worst);
         warnings.push_back("the " + what + " near " + formatComplex(where) +
                            " are ill-conditioned (clustered or multiple roots): round-off alone "
-                           "can move them by about " + size +
-                           " of their size, so they and the locus near them may be wrong");
+                           "can move them by about " +
+                           size + " of their size, so they and the locus near them may be wrong");
     }
 }
 
@@ -565,8 +570,8 @@ RootLocus rootLocus(const Polynomial& num, const Polynomial& den, double tsSecon
         throw InvalidInput("den", "must have degree >= 1 (a loop without poles has no locus)");
     if (num.degree() > den.degree())
         throw InvalidInput("num", "degree " + std::to_string(num.degree()) +
-                                      " exceeds the denominator's " +
-                                      std::to_string(den.degree()) + ": the loop is improper");
+                                      " exceeds the denominator's " + std::to_string(den.degree()) +
+                                      ": the loop is improper");
     validateOptions(options);
     RootLocus r;
     r.tsSeconds = tsSeconds;

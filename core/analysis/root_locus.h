@@ -68,8 +68,8 @@ struct LocusBranch {
 
 /// The n - m branches that go to infinity follow straight lines from the centroid.
 struct LocusAsymptotes {
-    int count = 0;            ///< n - m (0: no asymptotes, centroid meaningless)
-    double centroid = 0.0;    ///< (sum of poles - sum of zeros)/(n - m), on the real axis
+    int count = 0;                 ///< n - m (0: no asymptotes, centroid meaningless)
+    double centroid = 0.0;         ///< (sum of poles - sum of zeros)/(n - m), on the real axis
     std::vector<double> anglesDeg; ///< in [0, 360)
 };
 
@@ -90,9 +90,9 @@ enum class RootLocusStatus {
  * discrete: in z, positive powers), as branches of matched roots plus its features.
  */
 struct RootLocus {
-    double tsSeconds = 0.0;              ///< 0: s-plane; > 0: z-plane
-    std::vector<double> gains;           ///< K of each point, increasing from 0
-    std::vector<LocusBranch> branches;   ///< deg D of them
+    double tsSeconds = 0.0;                  ///< 0: s-plane; > 0: z-plane
+    std::vector<double> gains;               ///< K of each point, increasing from 0
+    std::vector<LocusBranch> branches;       ///< deg D of them
     std::vector<std::complex<double>> poles; ///< roots of D
     std::vector<std::complex<double>> zeros; ///< roots of N
     LocusAsymptotes asymptotes;
@@ -164,7 +164,7 @@ struct LocusPick {
     std::size_t index = 0; ///< into gains and branches[branch].roots
     double gain = 0.0;
     std::complex<double> point;
-    double distance = 0.0; ///< from the clicked point
+    double distance = 0.0;       ///< from the clicked point
     DampingAndFrequency damping; ///< through s = ln(z)/Ts for a discrete locus (dampingOf)
 };
 

@@ -226,7 +226,8 @@ StabilityMargins stabilityMargins(const TransferFunction& openLoop) {
 
     // Gain crossovers: |N|^2 - |D|^2 = 0, refined on log|L|.
     auto logMagnitude = [&](double w) {
-        const double r = std::log(std::abs(loop.n(loop.x(w)))) - std::log(std::abs(loop.d(loop.x(w))));
+        const double r =
+            std::log(std::abs(loop.n(loop.x(w)))) - std::log(std::abs(loop.d(loop.x(w))));
         const double slope = (loop.dlog(loop.n, loop.dn, w) - loop.dlog(loop.d, loop.dd, w)).real();
         return std::pair<double, double>(r, slope);
     };

@@ -15,7 +15,8 @@ namespace xyt {
 struct GainMarginCrossing {
     double omegaRadPerSec = 0.0;
     double gainFactor = 0.0; ///< -1 / L(j omega) > 0
-    double gainDb = 0.0;     ///< 20 log10 gainFactor (negative: the loop tolerates a gain decrease of that much only)
+    double gainDb = 0.0; ///< 20 log10 gainFactor (negative: the loop tolerates a gain decrease of
+                         ///< that much only)
 };
 
 /// A gain crossover: |L(j omega)| = 1.

@@ -25,7 +25,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kTurnTolerance = 1e-9 * kTwoPi;
 
 std::string linesOf(const GcodeProgram& program, const CircleSegments& circle) {
-    const std::size_t first = program.segments[circle.begin].line, last = program.segments[circle.end - 1].line;
+    const std::size_t first = program.segments[circle.begin].line,
+                      last = program.segments[circle.end - 1].line;
     return first == last ? "line " + std::to_string(first)
                          : "lines " + std::to_string(first) + "-" + std::to_string(last);
 }
@@ -34,7 +35,8 @@ std::string linesOf(const GcodeProgram& program, const CircleSegments& circle) {
 /// centre and radius up to round-off, so 1e-9 of the radius separates distinct circles.
 bool sameCircle(const PathSegment& a, const PathSegment& b) {
     const double tolerance = 1e-9 * std::max(a.radius(), b.radius());
-    return std::abs(a.radius() - b.radius()) <= tolerance && std::abs(a.centre().x - b.centre().x) <= tolerance &&
+    return std::abs(a.radius() - b.radius()) <= tolerance &&
+           std::abs(a.centre().x - b.centre().x) <= tolerance &&
            std::abs(a.centre().y - b.centre().y) <= tolerance;
 }
 
@@ -50,7 +52,9 @@ bool sameCircle(const PathSegment& a, const PathSegment& b) {
 std::vector<CircleSegments> fullCircles(const GcodeProgram& program) {
     const std::vector<PathSegment>& path = program.path.segments();
     const std::size_t n = std::min(program.segments.size(), path.size());
-    const auto feedArc = [&](std::size_t i) { return !program.segments[i].rapid && path[i].isArc(); };
+    const auto feedArc = [&](std::size_t i) {
+        return !program.segments[i].rapid && path[i].isArc();
+    };
     std::vector<CircleSegments> out;
     for (std::size_t runBegin = 0; runBegin < n;) {
         if (!feedArc(runBegin)) {
@@ -100,14 +104,15 @@ BallbarCircles findBallbarCircles(const GcodeProgram& program) {
     }
     const std::string firstLines = linesOf(program, circles.front());
     if (!out.opposite) {
-        out.note = circles.size() == 1
-                       ? "the program runs its full circle (" + firstLines +
-                             ") one way only: no circular hysteresis H, which needs a clockwise and a "
-                             "counter-clockwise run of the same circle"
-                       : "none of the program's " + std::to_string(circles.size()) +
-                             " full circles runs the circle of " + firstLines +
-                             " the other way on the same centre and radius: G and F are that circle's, "
-                             "no circular hysteresis H";
+        out.note =
+            circles.size() == 1
+                ? "the program runs its full circle (" + firstLines +
+                      ") one way only: no circular hysteresis H, which needs a clockwise and a "
+                      "counter-clockwise run of the same circle"
+                : "none of the program's " + std::to_string(circles.size()) +
+                      " full circles runs the circle of " + firstLines +
+                      " the other way on the same centre and radius: G and F are that circle's, "
+                      "no circular hysteresis H";
     } else if (circles.size() > 2) {
         out.note = "the program holds " + std::to_string(circles.size()) +
                    " full circles: the figures are those of " + firstLines + " and " +

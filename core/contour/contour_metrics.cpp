@@ -54,7 +54,8 @@ struct PolarRun {
         std::vector<double> a(x.size());
         for (std::size_t i = 0; i < x.size(); ++i)
             a[i] = std::atan2(y[i] - c.y, x[i] - c.x);
-        std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) { return a[p] < a[q]; });
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t p, std::size_t q) { return a[p] < a[q]; });
         for (const std::size_t i : order) {
             angle.push_back(a[i]);
             radius.push_back(std::hypot(x[i] - c.x, y[i] - c.y));
@@ -64,13 +65,14 @@ struct PolarRun {
     /// sample across the +-pi seam).
     double at(double theta) const {
         const std::size_t n = angle.size();
-        const std::size_t hi =
-            static_cast<std::size_t>(std::upper_bound(angle.begin(), angle.end(), theta) - angle.begin());
+        const std::size_t hi = static_cast<std::size_t>(
+            std::upper_bound(angle.begin(), angle.end(), theta) - angle.begin());
         double a0, a1, r0, r1;
         if (hi > 0 && hi < n) {
             a0 = angle[hi - 1], a1 = angle[hi], r0 = radius[hi - 1], r1 = radius[hi];
         } else {
-            a0 = angle[n - 1], a1 = angle[0] + 2.0 * std::numbers::pi, r0 = radius[n - 1], r1 = radius[0];
+            a0 = angle[n - 1], a1 = angle[0] + 2.0 * std::numbers::pi, r0 = radius[n - 1],
+            r1 = radius[0];
             if (theta < a0)
                 theta += 2.0 * std::numbers::pi;
         }
@@ -90,7 +92,8 @@ double largestRadialDifference(const PolarRun& run, const PolarRun& other) {
     return h;
 }
 
-std::vector<ReversalSpike> reversalSpikes(const std::vector<double>& x, const std::vector<double>& y,
+std::vector<ReversalSpike> reversalSpikes(const std::vector<double>& x,
+                                          const std::vector<double>& y,
                                           const NominalCircle& nominal, const CircleFit& ls,
                                           double windowDeg) {
     std::vector<ReversalSpike> out;
@@ -111,7 +114,8 @@ std::vector<ReversalSpike> reversalSpikes(const std::vector<double>& x, const st
             for (std::size_t k = 0; k < in.size(); ++k)
                 dr[k] = std::hypot(x[in[k]] - ls.centre.x, y[in[k]] - ls.centre.y) - ls.radius;
             std::vector<double> sorted = dr;
-            std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
+            std::nth_element(sorted.begin(),
+                             sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
                              sorted.end());
             const double median = sorted[sorted.size() / 2];
             std::size_t best = 0;
@@ -176,7 +180,8 @@ ContourErrorResult contourError(const Path& path, const std::vector<double>& t,
         out.error[k] = p.signedDistance;
         out.pathPosition[k] = p.pathPosition;
         out.segment[k] = p.segment;
-        const bool measured = options.measuredSegments.empty() || options.measuredSegments[p.segment];
+        const bool measured =
+            options.measuredSegments.empty() || options.measuredSegments[p.segment];
         out.measured[k] = measured;
         if (!measured)
             continue;
@@ -192,7 +197,8 @@ ContourErrorResult contourError(const Path& path, const std::vector<double>& t,
             out.maxPoint = {x[k], y[k]};
         }
         // The corners within the window of this sample's path position.
-        auto c = std::lower_bound(cornerS.begin(), cornerS.end(), p.pathPosition - options.cornerWindowMm);
+        auto c = std::lower_bound(cornerS.begin(), cornerS.end(),
+                                  p.pathPosition - options.cornerWindowMm);
         for (; c != cornerS.end() && *c <= p.pathPosition + options.cornerWindowMm; ++c) {
             CornerOvershoot& o = out.corners[static_cast<std::size_t>(c - cornerS.begin())];
             ++o.samples;
@@ -223,7 +229,8 @@ CircleFit fitCircleKasa(const std::vector<double>& x, const std::vector<double>&
     Eigen::MatrixXd a(n, 3);
     Eigen::VectorXd b(n);
     for (Eigen::Index i = 0; i < n; ++i) {
-        const double u = x[static_cast<std::size_t>(i)] - mx, v = y[static_cast<std::size_t>(i)] - my;
+        const double u = x[static_cast<std::size_t>(i)] - mx,
+                     v = y[static_cast<std::size_t>(i)] - my;
         a(i, 0) = 2.0 * u;
         a(i, 1) = 2.0 * v;
         a(i, 2) = 1.0;
@@ -302,7 +309,8 @@ Iso230Circular iso230Circular(const std::vector<double>& x, const std::vector<do
     out.bidirectionalLeastSquares = common;
     out.bidirectionalG = range(radii(bothX, bothY, common.centre));
     const PolarRun first(x, y, common.centre), second(x2, y2, common.centre);
-    out.hysteresisH = std::max(largestRadialDifference(first, second), largestRadialDifference(second, first));
+    out.hysteresisH =
+        std::max(largestRadialDifference(first, second), largestRadialDifference(second, first));
     return out;
 }
 

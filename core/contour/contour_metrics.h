@@ -140,10 +140,10 @@ struct Iso230Circular {
     double maxRadiusAboutLeastSquares = 0.0;
     double radialDeviationFMax = 0.0;
     double radialDeviationFMin = 0.0;
-    std::optional<double> hysteresisH;           ///< two runs only
-    std::optional<double> bidirectionalG;        ///< two runs only
+    std::optional<double> hysteresisH;    ///< two runs only
+    std::optional<double> bidirectionalG; ///< two runs only
     std::optional<CircleFit> bidirectionalLeastSquares;
-    std::vector<ReversalSpike> reversalSpikes;   ///< of the first run, in angle order
+    std::vector<ReversalSpike> reversalSpikes; ///< of the first run, in angle order
     std::size_t samples = 0;
 };
 

@@ -43,7 +43,8 @@ double reachableSpeed(double v0, double length, double cap, double accel, double
         return std::min(cap, std::sqrt(v0 * v0 + 2.0 * accel * length));
     if (speedChangeDistance(v0, cap, accel, jerk) <= length)
         return cap;
-    return largestFitting(v0, cap, [&](double v) { return speedChangeDistance(v0, v, accel, jerk) <= length; });
+    return largestFitting(
+        v0, cap, [&](double v) { return speedChangeDistance(v0, v, accel, jerk) <= length; });
 }
 
 /// The peak speed of a segment of @p length entered at vs, left at ve, limited to vmax.
@@ -132,9 +133,10 @@ void requireWithinSamples(double seconds, const std::string& field, const std::s
     if (fitsSamples(seconds, o))
         return;
     const double span = (static_cast<double>(o.maxSamples) - 1.0) * o.dtSeconds;
-    throw InvalidInput(field, who + " needs at least " + secondsText(seconds) + " " + how + ", more than the " +
-                                  std::to_string(o.maxSamples) + " samples at dt " + formatNumber(o.dtSeconds) +
-                                  " s hold (" + secondsText(std::max(span, 0.0)) + ")");
+    throw InvalidInput(field, who + " needs at least " + secondsText(seconds) + " " + how +
+                                  ", more than the " + std::to_string(o.maxSamples) +
+                                  " samples at dt " + formatNumber(o.dtSeconds) + " s hold (" +
+                                  secondsText(std::max(span, 0.0)) + ")");
 }
 
 /// sum(L_i / f_i): the run time with every segment at its feed.
@@ -149,11 +151,13 @@ void validate(const Path& path, const std::vector<double>& feeds, const FeedProf
     if (path.size() == 0)
         throw InvalidInput("path", "has no segment");
     if (feeds.size() != path.size())
-        throw InvalidInput("feed", "needs one value per path segment (" + std::to_string(path.size()) +
-                                       "), got " + std::to_string(feeds.size()));
+        throw InvalidInput("feed", "needs one value per path segment (" +
+                                       std::to_string(path.size()) + "), got " +
+                                       std::to_string(feeds.size()));
     for (std::size_t i = 0; i < feeds.size(); ++i)
         if (!(feeds[i] > 0.0) || !std::isfinite(feeds[i]))
-            throw InvalidInput("feed", "segment " + std::to_string(i) + ": must be a finite number > 0, got " +
+            throw InvalidInput("feed", "segment " + std::to_string(i) +
+                                           ": must be a finite number > 0, got " +
                                            formatNumber(feeds[i]));
     if (!(o.maxAccelMmPerS2 > 0.0) || !std::isfinite(o.maxAccelMmPerS2))
         throw InvalidInput("max_accel", "must be a finite number greater than zero");
@@ -167,13 +171,16 @@ void validate(const Path& path, const std::vector<double>& feeds, const FeedProf
     // are taken of the length and the rate apart, so that a subnormal rate gives a finite bound.
     const double length = path.length();
     const std::string overPath = "to move the path's " + formatNumber(length) + " mm";
-    requireWithinSamples(feedSeconds(path, feeds), "feed", "every segment at its feed", overPath, o);
+    requireWithinSamples(feedSeconds(path, feeds), "feed", "every segment at its feed", overPath,
+                         o);
     const double a = o.maxAccelMmPerS2;
-    requireWithinSamples(2.0 * std::sqrt(length) / std::sqrt(a), "max_accel", formatNumber(a) + " mm/s^2",
+    requireWithinSamples(2.0 * std::sqrt(length) / std::sqrt(a), "max_accel",
+                         formatNumber(a) + " mm/s^2",
                          overPath + " from rest to rest (2 sqrt(L / A))", o);
     const double j = o.maxJerkMmPerS3;
     if (j > 0.0)
-        requireWithinSamples(4.0 * std::cbrt(length) / std::cbrt(2.0 * j), "max_jerk", formatNumber(j) + " mm/s^3",
+        requireWithinSamples(4.0 * std::cbrt(length) / std::cbrt(2.0 * j), "max_jerk",
+                             formatNumber(j) + " mm/s^3",
                              overPath + " from rest to rest (4 (L / 2J)^(1/3))", o);
     // What the arithmetic holds, for a dt so long that the sample bound does not bite.
     for (std::size_t i = 0; i < feeds.size(); ++i)
@@ -243,7 +250,8 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
         // A segment of positive length takes time; none (a peak speed that rounds to 0) would
         // leave the samples without a piece to read.
         if (!(writer.time() > before))
-            throw InvalidInput("feed", "segment " + std::to_string(i) + " (" + formatNumber(length) +
+            throw InvalidInput("feed", "segment " + std::to_string(i) + " (" +
+                                           formatNumber(length) +
                                            " mm) cannot be planned: its peak speed rounds to " +
                                            formatNumber(peak) + " mm/s");
     }
@@ -254,9 +262,10 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
     // still ends on a sample (at dt, holding the end of the path).
     const double steps = std::max(1.0, std::ceil(out.totalTimeSeconds / options.dtSeconds - 1e-9));
     if (!(steps + 1.0 <= static_cast<double>(options.maxSamples)))
-        throw InvalidInput("dt", "the profile lasts " + formatNumber(out.totalTimeSeconds) + " s, " +
-                                     formatNumber(steps + 1.0) + " samples at dt " +
-                                     formatNumber(options.dtSeconds) + " s, more than the limit of " +
+        throw InvalidInput("dt", "the profile lasts " + formatNumber(out.totalTimeSeconds) +
+                                     " s, " + formatNumber(steps + 1.0) + " samples at dt " +
+                                     formatNumber(options.dtSeconds) +
+                                     " s, more than the limit of " +
                                      std::to_string(options.maxSamples));
     if (!options.withSamples)
         return out;
@@ -277,7 +286,8 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
             p = out.pieces.size() - 1;
         const FeedPiece& piece = out.pieces[p];
         const double tau = end ? piece.duration : std::clamp(t - piece.t0, 0.0, piece.duration);
-        const double s = piece.s0 + tau * (piece.v0 + tau * (piece.a0 / 2.0 + tau * piece.jerk / 6.0));
+        const double s =
+            piece.s0 + tau * (piece.v0 + tau * (piece.a0 / 2.0 + tau * piece.jerk / 6.0));
         const PathPoint point = path.at(s, piece.segment);
         out.t[k] = static_cast<double>(k) * options.dtSeconds;
         out.s[k] = s;
@@ -301,9 +311,10 @@ std::vector<double> programFeeds(const GcodeProgram& program, double feedScale) 
         if (info.rapid)
             requireProfileRate(feeds[i], "rapid_feed", "mm/s (the rapid of " + line + ")");
         else if (!(feeds[i] >= kMinProfileRate && feeds[i] <= kMaxProfileRate))
-            throw InvalidInput("feed_scale", formatNumber(feedScale) + " makes the feed of " + line + " (" +
-                                                 formatNumber(info.feedMmPerSec) + " mm/s) " +
-                                                 formatNumber(feeds[i]) + " mm/s, outside the planner's [" +
+            throw InvalidInput("feed_scale", formatNumber(feedScale) + " makes the feed of " +
+                                                 line + " (" + formatNumber(info.feedMmPerSec) +
+                                                 " mm/s) " + formatNumber(feeds[i]) +
+                                                 " mm/s, outside the planner's [" +
                                                  formatNumber(kMinProfileRate) + ", " +
                                                  formatNumber(kMaxProfileRate) + "] mm/s");
     }
@@ -326,24 +337,29 @@ FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOption
                 programmed += length / program.segments[i].feedMmPerSec;
             }
         }
-        requireWithinSamples(programmed, "dt", "the program", "at its own feeds (the F words)", options);
-        requireWithinSamples(rapid, "rapid_feed", "running the rapids", "at the rapid feed", options);
+        requireWithinSamples(programmed, "dt", "the program", "at its own feeds (the F words)",
+                             options);
+        requireWithinSamples(rapid, "rapid_feed", "running the rapids", "at the rapid feed",
+                             options);
         // A scale is named when the program fits at scale 1; else the sum is the feeds' (below).
         if (fitsSamples(programmed + rapid, options))
             requireWithinSamples(scaled + rapid, "feed_scale", "the program",
-                                 "at " + formatNumber(options.feedScale) + " times its feeds", options);
+                                 "at " + formatNumber(options.feedScale) + " times its feeds",
+                                 options);
     }
     return planFeedProfile(program.path, feeds, options);
 }
 
-void requireProfileRate(double rate, const std::string& field, const std::string& unit, bool zeroAllowed) {
+void requireProfileRate(double rate, const std::string& field, const std::string& unit,
+                        bool zeroAllowed) {
     if (zeroAllowed && rate == 0.0)
         return;
     if (rate >= kMinProfileRate && rate <= kMaxProfileRate)
         return;
-    throw InvalidInput(field, formatNumber(rate) + " " + unit + " is outside the planner's range [" +
-                                  formatNumber(kMinProfileRate) + ", " + formatNumber(kMaxProfileRate) + "]" +
-                                  (zeroAllowed ? " (0: none)" : ""));
+    throw InvalidInput(field,
+                       formatNumber(rate) + " " + unit + " is outside the planner's range [" +
+                           formatNumber(kMinProfileRate) + ", " + formatNumber(kMaxProfileRate) +
+                           "]" + (zeroAllowed ? " (0: none)" : ""));
 }
 
 } // namespace xyt

@@ -30,7 +30,9 @@ struct Word {
 };
 
 /// "at column 4"
-std::string at(std::size_t column) { return "at column " + std::to_string(column); }
+std::string at(std::size_t column) {
+    return "at column " + std::to_string(column);
+}
 
 /// A byte as it may be shown in a one-line message: printable ASCII as is, else \xNN.
 std::string shown(char c) {
@@ -41,11 +43,19 @@ std::string shown(char c) {
     return std::string("\\x") + hex[u >> 4] + hex[u & 15];
 }
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isLetter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+bool isLetter(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
 
-bool isHexDigit(char c) { return isDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+bool isHexDigit(char c) {
+    return isDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+}
 
 /**
  * Refuses a number that goes on past where the tokenizer stops reading it, when what follows
@@ -54,8 +64,8 @@ bool isHexDigit(char c) { return isDigit(c) || (c >= 'a' && c <= 'f') || (c >= '
  * any other word, "0x10" stays the valid "0 X10" ("Y0x10" is Y0 X10). @p next is the index of
  * the first character after the number.
  */
-void malformedNumber(std::string_view line, std::size_t next, const Word& w, const std::string& number,
-                     const std::string& field) {
+void malformedNumber(std::string_view line, std::size_t next, const Word& w,
+                     const std::string& number, const std::string& field) {
     if (next >= line.size())
         return;
     std::string_view why;
@@ -64,8 +74,9 @@ void malformedNumber(std::string_view line, std::size_t next, const Word& w, con
         while (end < line.size() && (isDigit(line[end]) || line[end] == '.'))
             ++end;
         why = "more than one decimal point";
-    } else if (w.letter == 'X' && (line[next] == 'x' || line[next] == 'X') && next + 1 < line.size() &&
-               isHexDigit(line[next + 1]) && number.find_first_not_of("+-0") == std::string::npos) {
+    } else if (w.letter == 'X' && (line[next] == 'x' || line[next] == 'X') &&
+               next + 1 < line.size() && isHexDigit(line[next + 1]) &&
+               number.find_first_not_of("+-0") == std::string::npos) {
         end = next + 1;
         while (end < line.size() && isHexDigit(line[end]))
             ++end;
@@ -73,9 +84,10 @@ void malformedNumber(std::string_view line, std::size_t next, const Word& w, con
     } else {
         return;
     }
-    const std::string text = std::string(1, w.letter) + number + std::string(line.substr(next, end - next));
-    throw InvalidInput(field, "malformed number " + text.substr(0, kMaxNumberChars + 1) + " " + at(w.column) +
-                                  ": " + std::string(why));
+    const std::string text =
+        std::string(1, w.letter) + number + std::string(line.substr(next, end - next));
+    throw InvalidInput(field, "malformed number " + text.substr(0, kMaxNumberChars + 1) + " " +
+                                  at(w.column) + ": " + std::string(why));
 }
 
 /// Splits one line into words, dropping comments. @throws InvalidInput @p field.
@@ -119,9 +131,10 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
             malformedNumber(line, i, w, number, field);
             w.text = std::string(1, w.letter) + number;
             const char* begin = number.data() + (number[0] == '+' ? 1 : 0);
-            const auto [end, error] =
-                std::from_chars(begin, number.data() + number.size(), w.value, std::chars_format::fixed);
-            if (error != std::errc() || end != number.data() + number.size() || !std::isfinite(w.value))
+            const auto [end, error] = std::from_chars(begin, number.data() + number.size(), w.value,
+                                                      std::chars_format::fixed);
+            if (error != std::errc() || end != number.data() + number.size() ||
+                !std::isfinite(w.value))
                 throw InvalidInput(field, "the number of word " + w.text + " " + at(w.column) +
                                               " is not a representable number");
             out.push_back(std::move(w));
@@ -234,7 +247,8 @@ void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word
         const double half = chord / 2.0;
         const double tolerance = arcEndTolerance(radius, modal_.inch);
         if (half > radius + tolerance)
-            throw InvalidInput(field_, r->text + " " + at(r->column) + " is smaller than half the chord (" +
+            throw InvalidInput(field_, r->text + " " + at(r->column) +
+                                           " is smaller than half the chord (" +
                                            formatNumber(half) + " mm) to the end point");
         const double h = std::sqrt(std::max(radius * radius - half * half, 0.0));
         const Point2 u = (1.0 / chord) * (target - start);
@@ -255,8 +269,9 @@ void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word
     if (std::abs(endRadius - radius) > tolerance)
         throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
                                        ": the end point is off the circle (radius " +
-                                       formatNumber(endRadius) + " mm at the end, " + formatNumber(radius) +
-                                       " mm at the start; tolerance " + formatNumber(tolerance) + " mm)");
+                                       formatNumber(endRadius) + " mm at the end, " +
+                                       formatNumber(radius) + " mm at the start; tolerance " +
+                                       formatNumber(tolerance) + " mm)");
     const double a0 = std::atan2(start.y - centre.y, start.x - centre.x);
     const double a1 = std::atan2(target.y - centre.y, target.x - centre.x);
     double sweep = std::fmod(clockwise ? a0 - a1 : a1 - a0, kTwoPi);
@@ -297,19 +312,34 @@ void Reader::line(std::string_view text, std::size_t number) {
     for (const Word& w : all) {
         const Word** slot = nullptr;
         switch (w.letter) {
-        case 'X': slot = &x; break;
-        case 'Y': slot = &y; break;
-        case 'I': slot = &i; break;
-        case 'J': slot = &j; break;
-        case 'R': slot = &r; break;
-        case 'F': slot = &f; break;
-        case 'N': slot = &n; break;
-        default: break;
+        case 'X':
+            slot = &x;
+            break;
+        case 'Y':
+            slot = &y;
+            break;
+        case 'I':
+            slot = &i;
+            break;
+        case 'J':
+            slot = &j;
+            break;
+        case 'R':
+            slot = &r;
+            break;
+        case 'F':
+            slot = &f;
+            break;
+        case 'N':
+            slot = &n;
+            break;
+        default:
+            break;
         }
         if (slot) {
             if (*slot)
-                throw InvalidInput(field_, std::string("word ") + w.letter + " is given twice (" + w.text +
-                                               " " + at(w.column) + ")");
+                throw InvalidInput(field_, std::string("word ") + w.letter + " is given twice (" +
+                                               w.text + " " + at(w.column) + ")");
             *slot = &w;
             continue;
         }
@@ -317,15 +347,17 @@ void Reader::line(std::string_view text, std::size_t number) {
         if (w.letter == 'G') {
             if (c >= 0 && c <= 3) {
                 if (motionWord)
-                    throw InvalidInput(field_, "two motion codes " + motionWord->text + " and " + w.text +
-                                                   " on one line (" + at(w.column) + ")");
+                    throw InvalidInput(field_, "two motion codes " + motionWord->text + " and " +
+                                                   w.text + " on one line (" + at(w.column) + ")");
                 motionWord = &w;
-                motion = c == 0 ? Motion::Rapid : c == 1 ? Motion::Line
-                                            : c == 2 ? Motion::Clockwise
-                                                     : Motion::CounterClockwise;
+                motion = c == 0   ? Motion::Rapid
+                         : c == 1 ? Motion::Line
+                         : c == 2 ? Motion::Clockwise
+                                  : Motion::CounterClockwise;
             } else if (c == 20 || c == 21) {
                 if (unitsSeen)
-                    throw InvalidInput(field_, "two unit codes on one line (" + w.text + " " + at(w.column) + ")");
+                    throw InvalidInput(field_, "two unit codes on one line (" + w.text + " " +
+                                                   at(w.column) + ")");
                 unitsSeen = true;
                 modal_.inch = c == 20;
             } else if (c == 90 || c == 91) {
@@ -335,8 +367,8 @@ void Reader::line(std::string_view text, std::size_t number) {
                 distanceSeen = true;
                 modal_.incremental = c == 91;
             } else if (c == 18 || c == 19) {
-                throw InvalidInput(field_, "only the XY plane (G17) is supported, not " + w.text + " " +
-                                               at(w.column));
+                throw InvalidInput(field_, "only the XY plane (G17) is supported, not " + w.text +
+                                               " " + at(w.column));
             } else if (c != 17 && c != 94) {
                 throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
             }
@@ -367,14 +399,16 @@ void Reader::line(std::string_view text, std::size_t number) {
     }
     if (f) {
         if (!(f->value > 0.0))
-            throw InvalidInput(field_, "feed " + f->text + " " + at(f->column) + " must be greater than zero");
+            throw InvalidInput(field_, "feed " + f->text + " " + at(f->column) +
+                                           " must be greater than zero");
         modal_.feed = f->value;
     }
     if (motion)
         modal_.motion = *motion;
     const bool arcWords = i || j || r;
     const bool axisWords = x || y;
-    const bool arcMode = modal_.motion == Motion::Clockwise || modal_.motion == Motion::CounterClockwise;
+    const bool arcMode =
+        modal_.motion == Motion::Clockwise || modal_.motion == Motion::CounterClockwise;
     if (arcWords && !arcMode) {
         const Word* w = i ? i : j ? j : r;
         throw InvalidInput(field_, w->text + " " + at(w->column) + " needs an arc (G2 or G3)");
@@ -396,7 +430,8 @@ void Reader::line(std::string_view text, std::size_t number) {
         target.x = modal_.incremental ? target.x + millimetres(*x) : millimetres(*x);
     if (y)
         target.y = modal_.incremental ? target.y + millimetres(*y) : millimetres(*y);
-    if (!(std::abs(target.x) <= kMaxGcodeCoordinateMm && std::abs(target.y) <= kMaxGcodeCoordinateMm))
+    if (!(std::abs(target.x) <= kMaxGcodeCoordinateMm &&
+          std::abs(target.y) <= kMaxGcodeCoordinateMm))
         throw InvalidInput(field_, "the incremental move " + at(modeWord.column) + " ends beyond " +
                                        formatNumber(kMaxGcodeCoordinateMm) + " mm");
     if (arcMode) {
@@ -433,16 +468,19 @@ GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
     if (!(options.rapidFeedMmPerMin > 0.0) || !std::isfinite(options.rapidFeedMmPerMin))
         throw InvalidInput("rapid_feed", "must be a finite number greater than zero");
     // The planner's range of feeds (feed_profile.h), in mm/min.
-    if (!(options.rapidFeedMmPerMin >= 60.0 * kMinProfileRate && options.rapidFeedMmPerMin <= 60.0 * kMaxProfileRate))
-        throw InvalidInput("rapid_feed", formatNumber(options.rapidFeedMmPerMin) + " mm/min is outside the planner's range [" +
+    if (!(options.rapidFeedMmPerMin >= 60.0 * kMinProfileRate &&
+          options.rapidFeedMmPerMin <= 60.0 * kMaxProfileRate))
+        throw InvalidInput("rapid_feed", formatNumber(options.rapidFeedMmPerMin) +
+                                             " mm/min is outside the planner's range [" +
                                              formatNumber(60.0 * kMinProfileRate) + ", " +
                                              formatNumber(60.0 * kMaxProfileRate) + "] mm/min");
     if (!(std::abs(options.start.x) <= kMaxGcodeCoordinateMm &&
           std::abs(options.start.y) <= kMaxGcodeCoordinateMm))
-        throw InvalidInput("start", "must be finite and within " + formatNumber(kMaxGcodeCoordinateMm) + " mm");
+        throw InvalidInput("start", "must be finite and within " +
+                                        formatNumber(kMaxGcodeCoordinateMm) + " mm");
     if (text.size() > kMaxGcodeBytes)
-        throw InvalidInput("program", "is larger than the limit of " + std::to_string(kMaxGcodeBytes) +
-                                          " bytes");
+        throw InvalidInput("program", "is larger than the limit of " +
+                                          std::to_string(kMaxGcodeBytes) + " bytes");
     // Lines end at LF (Unix), CR LF (DOS) or a lone CR (classic Mac OS): a CR not followed by LF
     // ends a line too, so a CR-only file has its lines and their numbers.
     const auto lineEnd = [&](std::size_t begin) {
@@ -458,8 +496,8 @@ GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
     for (std::size_t begin = 0; begin < text.size(); begin = nextLine(lineEnd(begin)))
         ++lines;
     if (lines > kMaxGcodeLines)
-        throw InvalidInput("program", "has more than the limit of " + std::to_string(kMaxGcodeLines) +
-                                          " lines");
+        throw InvalidInput("program", "has more than the limit of " +
+                                          std::to_string(kMaxGcodeLines) + " lines");
     Reader reader(options);
     std::size_t number = 0;
     // The program end's line is read whole (its motion comes before the end, as RS274/NGC
@@ -471,7 +509,8 @@ GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
         begin = nextLine(end);
     }
     const std::string_view rest = begin < text.size() ? text.substr(begin) : std::string_view();
-    if (std::any_of(rest.begin(), rest.end(), [](char c) { return !isSpace(c) && c != '\n' && c != '%'; }))
+    if (std::any_of(rest.begin(), rest.end(),
+                    [](char c) { return !isSpace(c) && c != '\n' && c != '%'; }))
         reader.textAfterEnd();
     return reader.finish();
 }

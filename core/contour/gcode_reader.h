@@ -92,14 +92,13 @@ double arcEndTolerance(double radiusMm, bool inch);
  * @throws InvalidInput whose field names the line ("line 12") and whose reason names the word
  *         and its column where there is one ("unknown word G5 at column 4"): an unknown word or
  *         letter, a number missing or malformed ("malformed number X1.2.3 at column 4: more
- *         than one decimal point", "X0x10": no 0x prefix), a word given twice on a line, two motion G
- *         codes on a line, X/Y before any motion mode, I/J/R without G2/G3, an arc without
- *         I/J or R or with both, an arc whose end is off its circle by more than
- *         arcEndTolerance, a zero radius, R too small for the chord, a full circle given by R,
- *         a feed move before any F, F <= 0, a coordinate beyond kMaxGcodeCoordinateMm, an
- *         unclosed comment. Field "program": more than kMaxGcodeLines lines or kMaxGcodeBytes
- *         bytes, or no motion at all. "rapid_feed": the option not finite and within the
- *         planner's range of feeds (kMinProfileRate .. kMaxProfileRate mm/s, feed_profile.h).
+ *         than one decimal point", "X0x10": no 0x prefix), a word given twice on a line, two motion
+ * G codes on a line, X/Y before any motion mode, I/J/R without G2/G3, an arc without I/J or R or
+ * with both, an arc whose end is off its circle by more than arcEndTolerance, a zero radius, R too
+ * small for the chord, a full circle given by R, a feed move before any F, F <= 0, a coordinate
+ * beyond kMaxGcodeCoordinateMm, an unclosed comment. Field "program": more than kMaxGcodeLines
+ * lines or kMaxGcodeBytes bytes, or no motion at all. "rapid_feed": the option not finite and
+ * within the planner's range of feeds (kMinProfileRate .. kMaxProfileRate mm/s, feed_profile.h).
  */
 GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options = {});
 

@@ -18,7 +18,9 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// large enough to quarter the tree's memory (16 bytes of boxes per segment instead of 64).
 constexpr std::size_t kLeafSegments = 4;
 
-bool finite(Point2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+bool finite(Point2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
 
 /// @p angle - @p from, in [0, 2 pi).
 double angleFrom(double angle, double from) {
@@ -30,7 +32,9 @@ double angleFrom(double angle, double from) {
 
 } // namespace
 
-double norm(Point2 a) { return std::hypot(a.x, a.y); }
+double norm(Point2 a) {
+    return std::hypot(a.x, a.y);
+}
 
 PathSegment PathSegment::line(Point2 start, Point2 end) {
     if (!finite(start) || !finite(end))
@@ -192,7 +196,8 @@ double Path::boxDistanceSquared(const Box& b, Point2 q) const {
 
 std::size_t Path::segmentAt(double s) const {
     const auto it = std::upper_bound(starts_.begin(), starts_.end(), s);
-    const std::size_t i = it == starts_.begin() ? 0 : static_cast<std::size_t>(it - starts_.begin()) - 1;
+    const std::size_t i =
+        it == starts_.begin() ? 0 : static_cast<std::size_t>(it - starts_.begin()) - 1;
     return std::min(i, segments_.size() - 1);
 }
 

@@ -160,11 +160,21 @@ private:
 std::vector<std::size_t> sharpCorners(const Path& path, double thresholdRad);
 
 /// a + b, a - b, k a, dot and cross products (z of the 3-D cross), length.
-inline Point2 operator+(Point2 a, Point2 b) { return {a.x + b.x, a.y + b.y}; }
-inline Point2 operator-(Point2 a, Point2 b) { return {a.x - b.x, a.y - b.y}; }
-inline Point2 operator*(double k, Point2 a) { return {k * a.x, k * a.y}; }
-inline double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
-inline double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
+inline Point2 operator+(Point2 a, Point2 b) {
+    return {a.x + b.x, a.y + b.y};
+}
+inline Point2 operator-(Point2 a, Point2 b) {
+    return {a.x - b.x, a.y - b.y};
+}
+inline Point2 operator*(double k, Point2 a) {
+    return {k * a.x, k * a.y};
+}
+inline double dot(Point2 a, Point2 b) {
+    return a.x * b.x + a.y * b.y;
+}
+inline double cross(Point2 a, Point2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 double norm(Point2 a);
 
 } // namespace xyt

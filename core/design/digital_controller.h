@@ -18,8 +18,8 @@ struct DigitalController {
 };
 
 enum class PiDiscretization {
-    Tustin,        ///< s = (2/Ts)(1 - z^-1)/(1 + z^-1)
-    BackwardEuler  ///< s = (1 - z^-1)/Ts
+    Tustin,       ///< s = (2/Ts)(1 - z^-1)/(1 + z^-1)
+    BackwardEuler ///< s = (1 - z^-1)/Ts
 };
 
 /**
@@ -35,8 +35,8 @@ std::string discretizationName(PiDiscretization method);
 
 /// How the digital PI keeps its integrator from winding up while the command is clipped.
 enum class AntiWindup {
-    None,           ///< the integrator runs on whatever the output does
-    Clamp,          ///< conditional integration: hold the integrator while clipped and pushing outwards
+    None,  ///< the integrator runs on whatever the output does
+    Clamp, ///< conditional integration: hold the integrator while clipped and pushing outwards
     BackCalculation ///< feed (u - v) Ts / Tt back into the integrator (tracking time Tt)
 };
 
@@ -86,7 +86,8 @@ struct DigitalPiState {
  * Unclipped, all three give the same bits. The exported C code (exportCHeader) performs the
  * same operations in the same order.
  */
-inline double stepDigitalPi(const DigitalPi& pi, DigitalPiState& state, double error, double umaxVolts) {
+inline double stepDigitalPi(const DigitalPi& pi, DigitalPiState& state, double error,
+                            double umaxVolts) {
     const double increment = pi.c0 * error + pi.c1 * state.previousError;
     const double candidate = state.integrator + increment;
     double v = pi.kp * error + candidate;

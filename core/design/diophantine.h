@@ -29,14 +29,13 @@ struct DiophantineSolution {
 };
 
 /**
- * Solves the Diophantine (Bezout) equation of pole placement, Patrick, Ishak and Adnan Eq. 8 generalized:
- * \f[ A(z^{-1}) F(z^{-1}) + B(z^{-1}) G(z^{-1}) = T(z^{-1}) \f]
- * for the solution with deg G = na - 1 (the minimal one) and
- * deg F = nf = max(nb - 1, nt - na, 0), na = deg A, nb = deg B (delay included), nt = deg T.
- * The coefficient-matching equations form the square Sylvester system E M = D of Patrick, Ishak and Adnan
- * Sec. 5 (na + nf + 1 equations and unknowns); it is solved by SVD (Eigen::JacobiSVD), which
- * also gives the condition number. When B(0) = 0 (a delay) and A(0) = 1, F(0) = T(0): F is monic
- * for a monic T.
+ * Solves the Diophantine (Bezout) equation of pole placement, Patrick, Ishak and Adnan Eq. 8
+ * generalized: \f[ A(z^{-1}) F(z^{-1}) + B(z^{-1}) G(z^{-1}) = T(z^{-1}) \f] for the solution with
+ * deg G = na - 1 (the minimal one) and deg F = nf = max(nb - 1, nt - na, 0), na = deg A, nb = deg B
+ * (delay included), nt = deg T. The coefficient-matching equations form the square Sylvester system
+ * E M = D of Patrick, Ishak and Adnan Sec. 5 (na + nf + 1 equations and unknowns); it is solved by
+ * SVD (Eigen::JacobiSVD), which also gives the condition number. When B(0) = 0 (a delay) and A(0) =
+ * 1, F(0) = T(0): F is monic for a monic T.
  *
  * All polynomials in ascending powers of z^-1 (coefficient i belongs to z^-i).
  *

@@ -30,12 +30,12 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     d.plant = plant;
     d.omegaNRadPerSec = wn;
     d.kp = kp;
-    d.f1 = plant.a1 / wn;                 // Eq. 17 (Eq. 14 with psi2 = 0)
-    d.f2 = plant.a2 / wn2;                // Eq. 18
-    d.f3 = kp * plant.k0 / wn3;           // Eq. 15
-    d.psi2 = 0.0;                         // Eq. 12 with Eq. 15
-    d.psi1 = wn4 / (kp * plant.k0);       // Eq. 11
-    d.ki = kp * d.psi1;                   // Eq. 16
+    d.f1 = plant.a1 / wn;           // Eq. 17 (Eq. 14 with psi2 = 0)
+    d.f2 = plant.a2 / wn2;          // Eq. 18
+    d.f3 = kp * plant.k0 / wn3;     // Eq. 15
+    d.psi2 = 0.0;                   // Eq. 12 with Eq. 15
+    d.psi1 = wn4 / (kp * plant.k0); // Eq. 11
+    d.ki = kp * d.psi1;             // Eq. 16
     // omega_n enters as wn^4 (Eq. 11) and as a1/wn, a2/wn^2 (Eq. 17-18): above ~1e77 rad/s wn^4
     // overflows, below ~1e-154 rad/s wn^2 underflows to 0 and f2 overflows. Refuse naming the
     // input instead of handing inf/NaN coefficients on ("den[2]: must be a number, got NaN" was
@@ -43,22 +43,27 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     // (kp k0, or wn^4/(kp k0) for a tiny kp).
     const auto representable = [](double v) { return std::isfinite(v) && v != 0.0; };
     if (!representable(wn4) || !std::isfinite(d.f1) || !std::isfinite(d.f2))
-        throw InvalidInput("wn", formatNumber(wn) + " rad/s is out of range: wn^4 = " + formatNumber(wn4) +
-                                     " and a2/wn^2 = " + formatNumber(d.f2) +
-                                     " must be finite nonzero numbers for the reference model (Braga et al. Eq. 11-18)");
+        throw InvalidInput(
+            "wn",
+            formatNumber(wn) + " rad/s is out of range: wn^4 = " + formatNumber(wn4) +
+                " and a2/wn^2 = " + formatNumber(d.f2) +
+                " must be finite nonzero numbers for the reference model (Braga et al. Eq. 11-18)");
     if (!std::isfinite(d.f3) || !representable(d.psi1) || !representable(d.ki) ||
         !std::isfinite(d.f3 * wn3)) {
         // kp and k0 enter as their product: name the factor that is out of all proportion (the
         // one farther from 1 in decades), so that a plant gain of 1e308 typed with kp = 460 is
         // not reported as kp's fault.
-        const std::string why = ": kp k0 = " + formatNumber(kp * plant.k0) + ", psi1 = wn^4/(kp k0) = " +
-                                formatNumber(d.psi1) + " and ki = kp psi1 = " + formatNumber(d.ki) +
+        const std::string why = ": kp k0 = " + formatNumber(kp * plant.k0) +
+                                ", psi1 = wn^4/(kp k0) = " + formatNumber(d.psi1) +
+                                " and ki = kp psi1 = " + formatNumber(d.ki) +
                                 " must be finite nonzero numbers for the Guillemin-Truxal design";
         if (std::abs(std::log10(std::abs(plant.k0))) > std::abs(std::log10(kp)))
-            throw InvalidInput("k0", "plant gain k0 = " + formatNumber(plant.k0) + " is out of range with kp = " +
-                                         formatNumber(kp) + " and wn = " + formatNumber(wn) + " rad/s" + why);
-        throw InvalidInput("kp", formatNumber(kp) + " is out of range with this plant and wn (plant gain k0 = " +
-                                     formatNumber(plant.k0) + ", wn = " + formatNumber(wn) + " rad/s)" + why);
+            throw InvalidInput("k0", "plant gain k0 = " + formatNumber(plant.k0) +
+                                         " is out of range with kp = " + formatNumber(kp) +
+                                         " and wn = " + formatNumber(wn) + " rad/s" + why);
+        throw InvalidInput(
+            "kp", formatNumber(kp) + " is out of range with this plant and wn (plant gain k0 = " +
+                      formatNumber(plant.k0) + ", wn = " + formatNumber(wn) + " rad/s)" + why);
     }
     d.referenceModel = TransferFunction::fromDescending(
         {d.f3 * wn3, wn4}, {1.0, d.f1 * wn, d.f2 * wn2, d.f3 * wn3, wn4});
@@ -74,10 +79,18 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
 
 const std::vector<GtPreset>& gtPresets() {
     static const std::vector<GtPreset> presets = {
-        {"lower-base", "Lower base, Braga et al. Eq. 2 (design of Sec. 3.1)", {77.8, 125.3, 3665.0},
-         2.0, 30.0, 0.001},
-        {"upper-base", "Upper base, Braga et al. Eq. 1 (design of Sec. 3.2)", {24.44, 68.18, 863.0},
-         1.0, 30.0, 0.001},
+        {"lower-base",
+         "Lower base, Braga et al. Eq. 2 (design of Sec. 3.1)",
+         {77.8, 125.3, 3665.0},
+         2.0,
+         30.0,
+         0.001},
+        {"upper-base",
+         "Upper base, Braga et al. Eq. 1 (design of Sec. 3.2)",
+         {24.44, 68.18, 863.0},
+         1.0,
+         30.0,
+         0.001},
     };
     return presets;
 }

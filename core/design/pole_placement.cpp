@@ -71,9 +71,12 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     // No physical axis needs a gain beyond 1e100: that still leaves 200 decades of headroom for
     // references up to 1e6 mm and the loop's transient growth.
     constexpr double kMaxGain = 1e100;
-    if (std::abs(d.kf) > kMaxGain || d.g.maxAbsCoefficient() > kMaxGain || d.f.maxAbsCoefficient() > kMaxGain)
-        throw InvalidInput("b", "B(1) = " + formatNumber(b1) + " is negligible: the controller "
-                                    "(Kf = " + formatNumber(d.kf) + ") would need gains beyond 1e100");
+    if (std::abs(d.kf) > kMaxGain || d.g.maxAbsCoefficient() > kMaxGain ||
+        d.f.maxAbsCoefficient() > kMaxGain)
+        throw InvalidInput("b", "B(1) = " + formatNumber(b1) +
+                                    " is negligible: the controller "
+                                    "(Kf = " +
+                                    formatNumber(d.kf) + ") would need gains beyond 1e100");
     d.closedLoopNum = d.kf * d.b;
     d.closedLoopDen = d.t;
     if (d.a.degree() > 0)

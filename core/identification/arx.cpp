@@ -12,8 +12,7 @@
 namespace xyt {
 
 std::string ArxOrders::toString() const {
-    return "ARX(" + std::to_string(na) + "," + std::to_string(nb) + "," + std::to_string(nk) +
-           ")";
+    return "ARX(" + std::to_string(na) + "," + std::to_string(nb) + "," + std::to_string(nk) + ")";
 }
 
 void ArxOrders::validate() const {
@@ -76,11 +75,12 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
             out.message = "input not persistently exciting for nb = " + std::to_string(nb) +
                           " (the input block has rank " + std::to_string(uOnly.rank) + ")";
         else
-            out.message = "regressor of " + orders.toString() + " has rank " +
-                          std::to_string(ls.rank) + " < " + std::to_string(d) +
-                          ": the input is not persistently exciting of order na + nb = " +
-                          std::to_string(d) + ", or the data are exactly of lower order "
-                          "(noise-free): lower na or nb";
+            out.message =
+                "regressor of " + orders.toString() + " has rank " + std::to_string(ls.rank) +
+                " < " + std::to_string(d) +
+                ": the input is not persistently exciting of order na + nb = " + std::to_string(d) +
+                ", or the data are exactly of lower order "
+                "(noise-free): lower na or nb";
         return out;
     }
     out.status = EstimationStatus::Converged;

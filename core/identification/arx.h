@@ -17,8 +17,8 @@ namespace xyt {
  *   \f$ A(q) y(t) = B(q) u(t) + e(t) \f$,
  *   \f$ A = 1 + a_1 q^{-1} + \dots + a_{na} q^{-na} \f$,
  *   \f$ B = b_{nk} q^{-nk} + \dots + b_{nk+nb-1} q^{-(nk+nb-1)} \f$
- * (MATLAB's convention: nb coefficients, nk samples of dead time; Patrick, Ishak and Adnan's ARX231 is
- * na = 2, nb = 3, nk = 1). GNU Octave control 3.4's `arx(..., 'nk', 0)` is this nk = 1: see
+ * (MATLAB's convention: nb coefficients, nk samples of dead time; Patrick, Ishak and Adnan's ARX231
+ * is na = 2, nb = 3, nk = 1). GNU Octave control 3.4's `arx(..., 'nk', 0)` is this nk = 1: see
  * tests/data/README.md.
  */
 struct ArxOrders {
@@ -39,7 +39,8 @@ struct ArxOrders {
  */
 struct ArxResult {
     EstimationStatus status = EstimationStatus::Failed; ///< Converged or NotPersistentlyExciting
-    std::string message; ///< why a status other than Converged, e.g. "input not persistently exciting for nb = 3"
+    std::string message; ///< why a status other than Converged, e.g. "input not persistently
+                         ///< exciting for nb = 3"
     ArxOrders orders;
     PolynomialModel model;
     std::vector<double> parameters;
@@ -51,10 +52,10 @@ struct ArxResult {
     double noiseVariance = 0.0;
     /// V = ||e||^2 / rows: the loss that FPE and AIC use (informationCriteria).
     double loss = 0.0;
-    std::size_t rows = 0; ///< regressor rows: N - max(na, nk + nb - 1)
-    std::size_t firstRow = 0; ///< the sample index of the first regressor row
-    Eigen::Index rank = 0;          ///< rank of the scaled regressor by QR
-    double rankThreshold = 0.0;     ///< the relative pivot threshold that rank used
+    std::size_t rows = 0;       ///< regressor rows: N - max(na, nk + nb - 1)
+    std::size_t firstRow = 0;   ///< the sample index of the first regressor row
+    Eigen::Index rank = 0;      ///< rank of the scaled regressor by QR
+    double rankThreshold = 0.0; ///< the relative pivot threshold that rank used
     /// Equation errors e(t) = A y - B u for t >= firstRow (0 before it), length N.
     std::vector<double> residuals;
     std::vector<std::string> warnings;
@@ -70,7 +71,6 @@ struct ArxResult {
  * @throws InvalidInput from validateIoData and ArxOrders::validate; "data" when N is too few for
  *         the orders ("... samples are too few for ARX(2,3,1): at least 9 needed").
  */
-ArxResult estimateArx(const IoData& data, const ArxOrders& orders,
-                      double rankThreshold = 1e-10);
+ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankThreshold = 1e-10);
 
 } // namespace xyt

@@ -48,9 +48,12 @@ void simulate(const ZohStep& s, const double* u, double* y, std::size_t n) {
     double x0 = 0.0, x1 = 0.0, x2 = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         y[k] = x0;
-        const double n0 = s.phi[0][0] * x0 + s.phi[0][1] * x1 + s.phi[0][2] * x2 + s.gamma[0] * u[k];
-        const double n1 = s.phi[1][0] * x0 + s.phi[1][1] * x1 + s.phi[1][2] * x2 + s.gamma[1] * u[k];
-        const double n2 = s.phi[2][0] * x0 + s.phi[2][1] * x1 + s.phi[2][2] * x2 + s.gamma[2] * u[k];
+        const double n0 =
+            s.phi[0][0] * x0 + s.phi[0][1] * x1 + s.phi[0][2] * x2 + s.gamma[0] * u[k];
+        const double n1 =
+            s.phi[1][0] * x0 + s.phi[1][1] * x1 + s.phi[1][2] * x2 + s.gamma[1] * u[k];
+        const double n2 =
+            s.phi[2][0] * x0 + s.phi[2][1] * x1 + s.phi[2][2] * x2 + s.gamma[2] * u[k];
         x0 = n0;
         x1 = n1;
         x2 = n2;
@@ -65,7 +68,8 @@ bool plantOk(const ThirdOrderPlant& p) {
 /// run is not finite. With @p removeMean the residuals' mean is taken off: the optimal constant
 /// initial position for this theta projected out (variable projection, Golub and Pereyra 1973),
 /// so that a search over theta alone finds the same minimum as one over theta and y0.
-bool residuals(const IoData& data, const Eigen::VectorXd& theta, Eigen::VectorXd& e, bool removeMean = false) {
+bool residuals(const IoData& data, const Eigen::VectorXd& theta, Eigen::VectorXd& e,
+               bool removeMean = false) {
     ZohStep s;
     try {
         s = zohStep(theta(0), theta(1), theta(2), data.tsSeconds);
@@ -234,8 +238,7 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
 
     const double h = options.finiteDifferenceStep;
     NonlinearProblem problem;
-    problem.evaluate = [&](const Eigen::VectorXd& theta, Eigen::VectorXd& e,
-                           Eigen::MatrixXd* jac) {
+    problem.evaluate = [&](const Eigen::VectorXd& theta, Eigen::VectorXd& e, Eigen::MatrixXd* jac) {
         if (!residuals(data, theta, e, options.estimateInitialPosition))
             return false;
         if (!jac)
@@ -255,9 +258,8 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
         return true;
     };
     const SearchOutcome r = levenbergMarquardt(
-        problem,
-        Eigen::Vector3d(out.initialPlant.k0, out.initialPlant.a1, out.initialPlant.a2), options.search,
-                           exactFitLoss(data.y));
+        problem, Eigen::Vector3d(out.initialPlant.k0, out.initialPlant.a1, out.initialPlant.a2),
+        options.search, exactFitLoss(data.y));
     takeSearchSummary(r, out);
     if (r.status == EstimationStatus::Failed)
         return out;
@@ -268,7 +270,8 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
     for (std::size_t k = 0; k < n; ++k)
         out.simulated[k] = data.y[k] - out.residuals[k]; // (with y0 when it is estimated)
     if (options.estimateInitialPosition) {
-        const std::vector<double> fromRest = simulateThirdOrderPlant(out.plant, data.u, data.tsSeconds);
+        const std::vector<double> fromRest =
+            simulateThirdOrderPlant(out.plant, data.u, data.tsSeconds);
         double sum = 0.0;
         for (std::size_t k = 0; k < n; ++k)
             sum += data.y[k] - fromRest[k];

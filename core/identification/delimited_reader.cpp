@@ -74,8 +74,9 @@ public:
             while (j < line_.size() && (line_[j] == ' ' || (line_[j] == '\t' && sep_ != '\t')))
                 ++j;
             if (j < line_.size() && line_[j] != sep_)
-                throw InvalidInput(lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
-                                   "text follows the closing quote at character " + std::to_string(j + 1));
+                throw InvalidInput(
+                    lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
+                    "text follows the closing quote at character " + std::to_string(j + 1));
             text = buffer_;
         } else {
             const std::size_t end = std::min(line_.find(sep_, i_), line_.size());
@@ -96,7 +97,8 @@ private:
     void counted() {
         if (++count_ > kMaxExperimentColumns + 1)
             throw InvalidInput(lineField(fileName_, lineNumber_),
-                               "has more than " + std::to_string(kMaxExperimentColumns) + " fields");
+                               "has more than " + std::to_string(kMaxExperimentColumns) +
+                                   " fields");
     }
 
     /// Reads the quoted field opening at line_[open] into buffer_ ("" inside stands for one
@@ -116,7 +118,8 @@ private:
             buffer_ += line_[i++];
         }
         throw InvalidInput(lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
-                           "the quote opened at character " + std::to_string(open + 1) + " is not closed");
+                           "the quote opened at character " + std::to_string(open + 1) +
+                               " is not closed");
     }
 
     Delimiter d_;
@@ -139,8 +142,10 @@ Delimiter detect(std::string_view header) {
             comma = comma || c == ',';
         }
     }
-    return tab ? Delimiter::Tab : semicolon ? Delimiter::Semicolon : comma ? Delimiter::Comma
-                                                                       : Delimiter::Whitespace;
+    return tab         ? Delimiter::Tab
+           : semicolon ? Delimiter::Semicolon
+           : comma     ? Delimiter::Comma
+                       : Delimiter::Whitespace;
 }
 
 std::string_view trimmed(std::string_view s) {
@@ -151,7 +156,8 @@ std::string_view trimmed(std::string_view s) {
     return s;
 }
 
-DelimitedTable parse(std::string_view text, const std::string& fileName, const DelimitedReadOptions& options) {
+DelimitedTable parse(std::string_view text, const std::string& fileName,
+                     const DelimitedReadOptions& options) {
     TextLines lines(text);
     while (!lines.atEnd() && isBlank(lines.line()))
         lines.next();
@@ -161,11 +167,14 @@ DelimitedTable parse(std::string_view text, const std::string& fileName, const D
     DelimitedTable out;
     ExperimentTable& t = out.table;
     t.fileName = fileName;
-    out.delimiter = options.delimiter == Delimiter::Detect ? detect(lines.line()) : options.delimiter;
-    out.decimalComma = options.decimal == DecimalSeparator::Comma ||
-                       (options.decimal == DecimalSeparator::Detect && out.delimiter == Delimiter::Semicolon);
+    out.delimiter =
+        options.delimiter == Delimiter::Detect ? detect(lines.line()) : options.delimiter;
+    out.decimalComma =
+        options.decimal == DecimalSeparator::Comma ||
+        (options.decimal == DecimalSeparator::Detect && out.delimiter == Delimiter::Semicolon);
     if (out.decimalComma && out.delimiter == Delimiter::Comma)
-        throw InvalidInput(fileName, "a decimal comma cannot be read with ',' separating the fields");
+        throw InvalidInput(fileName,
+                           "a decimal comma cannot be read with ',' separating the fields");
 
     const std::size_t headerLine = lines.number();
     FieldScanner fields(out.delimiter, fileName);
@@ -185,12 +194,14 @@ DelimitedTable parse(std::string_view text, const std::string& fileName, const D
                            "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
     bool allNumbers = true;
     for (std::size_t c = 0; c < names.size(); ++c) {
-        const std::string field = lineField(fileName, headerLine) + ", column " + std::to_string(nameFields[c]);
+        const std::string field =
+            lineField(fileName, headerLine) + ", column " + std::to_string(nameFields[c]);
         if (names[c].empty())
             throw InvalidInput(field, "the column name is empty");
         for (std::size_t other = 0; other < c; ++other)
             if (names[other] == names[c])
-                throw InvalidInput(field, "the column name '" + shownCell(names[c]) + "' is used twice");
+                throw InvalidInput(field,
+                                   "the column name '" + shownCell(names[c]) + "' is used twice");
         std::string reason;
         allNumbers = allNumbers && parseCellNumber(names[c], out.decimalComma, reason).has_value();
     }
@@ -242,9 +253,10 @@ DelimitedTable parse(std::string_view text, const std::string& fileName, const D
                 noteCellProblem(t, tc, row, f, reason);
         }
         if (extra != 0)
-            throw InvalidInput(lineField(fileName, lineNumber) + ", column " + std::to_string(extra),
-                               "the line has " + std::to_string(seen) + " fields but the header names " +
-                                   std::to_string(columns));
+            throw InvalidInput(lineField(fileName, lineNumber) + ", column " +
+                                   std::to_string(extra),
+                               "the line has " + std::to_string(seen) +
+                                   " fields but the header names " + std::to_string(columns));
         for (std::size_t c = seen; c < columns; ++c)
             if (tableColumn[c] != columns)
                 noteCellProblem(t, tableColumn[c], row, "", "is missing");
@@ -257,7 +269,8 @@ DelimitedTable parse(std::string_view text, const std::string& fileName, const D
 DelimitedTable readDelimited(std::string_view text, const std::string& fileName,
                              const DelimitedReadOptions& options) {
     if (text.size() > kMaxExperimentBytes)
-        throw InvalidInput(fileName, "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
+        throw InvalidInput(fileName,
+                           "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
     try {
         return parse(text, fileName, options);
     } catch (const std::bad_alloc&) {

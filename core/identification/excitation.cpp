@@ -15,11 +15,11 @@ namespace {
 
 /// XAPP052 table 3, lengths 2..31 (index = length - 2).
 const std::vector<std::vector<int>> kTaps = {
-    {2, 1},         {3, 2},      {4, 3},         {5, 3},         {6, 5},     {7, 6},
-    {8, 6, 5, 4},   {9, 5},      {10, 7},        {11, 9},        {12, 6, 4, 1}, {13, 4, 3, 1},
-    {14, 5, 3, 1},  {15, 14},    {16, 15, 13, 4}, {17, 14},      {18, 11},   {19, 6, 2, 1},
-    {20, 17},       {21, 19},    {22, 21},       {23, 18},       {24, 23, 22, 17}, {25, 22},
-    {26, 6, 2, 1},  {27, 5, 2, 1}, {28, 25},     {29, 27},       {30, 6, 4, 1}, {31, 28},
+    {2, 1},        {3, 2},        {4, 3},          {5, 3},   {6, 5},           {7, 6},
+    {8, 6, 5, 4},  {9, 5},        {10, 7},         {11, 9},  {12, 6, 4, 1},    {13, 4, 3, 1},
+    {14, 5, 3, 1}, {15, 14},      {16, 15, 13, 4}, {17, 14}, {18, 11},         {19, 6, 2, 1},
+    {20, 17},      {21, 19},      {22, 21},        {23, 18}, {24, 23, 22, 17}, {25, 22},
+    {26, 6, 2, 1}, {27, 5, 2, 1}, {28, 25},        {29, 27}, {30, 6, 4, 1},    {31, 28},
 };
 
 std::size_t sampleCount(const ExcitationTiming& t) {
@@ -44,11 +44,14 @@ void checkAmplitude(double amplitude, double offset, const ExcitationTiming& t) 
         const double peak = std::abs(offset) + amplitude;
         if (peak > *t.umaxVolts)
             throw InvalidInput("amplitude", "|offset| + amplitude = " + formatNumber(peak) +
-                                                " V exceeds umax = " + formatNumber(*t.umaxVolts) + " V");
+                                                " V exceeds umax = " + formatNumber(*t.umaxVolts) +
+                                                " V");
     }
 }
 
-std::string volts(double v) { return formatNumber(v) + " V"; }
+std::string volts(double v) {
+    return formatNumber(v) + " V";
+}
 
 } // namespace
 
@@ -78,7 +81,8 @@ ExcitationSignal squareWave(const SquareWave& w, const ExcitationTiming& t) {
     checkAmplitude(w.amplitudeVolts, w.offsetVolts, t);
     requirePositive(w.periodSeconds, "period");
     if (w.periodSeconds < 2.0 * t.tsSeconds)
-        throw InvalidInput("period", "must be at least two sample times (" + formatNumber(2.0 * t.tsSeconds) + " s)");
+        throw InvalidInput("period", "must be at least two sample times (" +
+                                         formatNumber(2.0 * t.tsSeconds) + " s)");
     ExcitationSignal s;
     s.tsSeconds = t.tsSeconds;
     s.u.resize(n);
@@ -109,7 +113,8 @@ ExcitationSignal prbs(const Prbs& p, const ExcitationTiming& t) {
     const double period = (std::ldexp(1.0, p.registerLength) - 1.0) * double(clock);
     s.description = "PRBS: amplitude " + volts(p.amplitudeVolts) + ", register " +
                     std::to_string(p.registerLength) + " bits, clock " + std::to_string(clock) +
-                    " samples, period " + formatNumber(period, 12) + " samples, offset " + volts(p.offsetVolts);
+                    " samples, period " + formatNumber(period, 12) + " samples, offset " +
+                    volts(p.offsetVolts);
     return s;
 }
 
@@ -120,7 +125,8 @@ ExcitationSignal chirp(const Chirp& c, const ExcitationTiming& t) {
     for (const auto& [f, name] : {std::pair{c.f0Hz, "f0"}, std::pair{c.f1Hz, "f1"}}) {
         requireFinite(f, name);
         if (f < 0.0 || f > nyquist)
-            throw InvalidInput(name, "must be from 0 to the Nyquist frequency " + formatNumber(nyquist) + " Hz");
+            throw InvalidInput(name, "must be from 0 to the Nyquist frequency " +
+                                         formatNumber(nyquist) + " Hz");
     }
     ExcitationSignal s;
     s.tsSeconds = t.tsSeconds;
@@ -128,11 +134,13 @@ ExcitationSignal chirp(const Chirp& c, const ExcitationTiming& t) {
     const double T = t.durationSeconds;
     for (std::size_t k = 0; k < n; ++k) {
         const double time = double(k) * t.tsSeconds;
-        const double phase = 2.0 * std::numbers::pi * (c.f0Hz * time + (c.f1Hz - c.f0Hz) * time * time / (2.0 * T));
+        const double phase =
+            2.0 * std::numbers::pi * (c.f0Hz * time + (c.f1Hz - c.f0Hz) * time * time / (2.0 * T));
         s.u[k] = c.offsetVolts + c.amplitudeVolts * std::sin(phase);
     }
-    s.description = "chirp: amplitude " + volts(c.amplitudeVolts) + ", " + formatNumber(c.f0Hz) + " Hz to " +
-                    formatNumber(c.f1Hz) + " Hz over " + formatNumber(T) + " s, offset " + volts(c.offsetVolts);
+    s.description = "chirp: amplitude " + volts(c.amplitudeVolts) + ", " + formatNumber(c.f0Hz) +
+                    " Hz to " + formatNumber(c.f1Hz) + " Hz over " + formatNumber(T) +
+                    " s, offset " + volts(c.offsetVolts);
     return s;
 }
 
@@ -151,7 +159,8 @@ std::string excitationCsvText(const ExcitationSignal& s) {
     std::string out = withY ? "t,u,y\n" : "t,u\n";
     out.reserve(s.u.size() * 60);
     for (std::size_t k = 0; k < s.u.size(); ++k)
-        out += g17(double(k) * s.tsSeconds) + "," + g17(s.u[k]) + (withY ? "," + g17(s.y[k]) : std::string()) + "\n";
+        out += g17(double(k) * s.tsSeconds) + "," + g17(s.u[k]) +
+               (withY ? "," + g17(s.y[k]) : std::string()) + "\n";
     return out;
 }
 
@@ -170,20 +179,34 @@ std::string excitationLvmText(const ExcitationSignal& s) {
                       "X_Columns\tOne\n"
                       "Time_Pref\tRelative\n"
                       "Operator\tXY Tune\n"
-                      "Description\t" + description + "\n"
+                      "Description\t" +
+                      description +
+                      "\n"
                       "***End_of_Header***\t\n"
                       "\t\n"
-                      "Channels\t" + (withY ? "2\t\t\n" : "1\t\n") +
-                      "Samples\t" + std::to_string(s.u.size()) + (withY ? "\t" + std::to_string(s.u.size()) : "") + "\t\n"
-                      "Y_Unit_Label\tVolts" + (withY ? "\tmm" : "") + "\t\n"
-                      "X_Dimension\tTime" + (withY ? "\tTime" : "") + "\t\n"
-                      "X0\t0" + (withY ? "\t0" : "") + "\t\n"
-                      "Delta_X\t" + g17(s.tsSeconds) + (withY ? "\t" + g17(s.tsSeconds) : "") + "\t\n"
+                      "Channels\t" +
+                      (withY ? "2\t\t\n" : "1\t\n") + "Samples\t" + std::to_string(s.u.size()) +
+                      (withY ? "\t" + std::to_string(s.u.size()) : "") +
+                      "\t\n"
+                      "Y_Unit_Label\tVolts" +
+                      (withY ? "\tmm" : "") +
+                      "\t\n"
+                      "X_Dimension\tTime" +
+                      (withY ? "\tTime" : "") +
+                      "\t\n"
+                      "X0\t0" +
+                      (withY ? "\t0" : "") +
+                      "\t\n"
+                      "Delta_X\t" +
+                      g17(s.tsSeconds) + (withY ? "\t" + g17(s.tsSeconds) : "") +
+                      "\t\n"
                       "***End_of_Header***\t\n"
-                      "X_Value\tu" + (withY ? "\ty" : "") + "\tComment\n";
+                      "X_Value\tu" +
+                      (withY ? "\ty" : "") + "\tComment\n";
     out.reserve(out.size() + s.u.size() * 60);
     for (std::size_t k = 0; k < s.u.size(); ++k)
-        out += g17(double(k) * s.tsSeconds) + "\t" + g17(s.u[k]) + (withY ? "\t" + g17(s.y[k]) : std::string()) + "\n";
+        out += g17(double(k) * s.tsSeconds) + "\t" + g17(s.u[k]) +
+               (withY ? "\t" + g17(s.y[k]) : std::string()) + "\n";
     return out;
 }
 

@@ -13,9 +13,9 @@ namespace {
 /// The column's values after checking every cell is a usable number.
 const std::vector<double>& usedColumn(const ExperimentTable& t, std::size_t c) {
     if (const auto& p = t.firstProblem[c])
-        throw InvalidInput(t.cellField(c, p->row),
-                           p->text.empty() ? std::string("the value is missing")
-                                           : "'" + p->text + "' " + p->reason);
+        throw InvalidInput(t.cellField(c, p->row), p->text.empty()
+                                                       ? std::string("the value is missing")
+                                                       : "'" + p->text + "' " + p->reason);
     return t.columns[c];
 }
 
@@ -23,7 +23,8 @@ const std::vector<double>& usedColumn(const ExperimentTable& t, std::size_t c) {
 
 std::vector<std::string> usedColumns(const ExperimentColumns& cols, const std::string& fileName) {
     if (cols.input == cols.output)
-        throw InvalidInput(fileName, "column '" + shownCell(cols.input) + "' is chosen as both input and output");
+        throw InvalidInput(fileName, "column '" + shownCell(cols.input) +
+                                         "' is chosen as both input and output");
     std::vector<std::string> names{cols.input, cols.output};
     if (!cols.time.empty() && cols.time != cols.input && cols.time != cols.output)
         names.push_back(cols.time);
@@ -38,16 +39,22 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
     const int timeSources = int(!cols.time.empty()) + int(cols.sampleTimeSeconds.has_value()) +
                             int(cols.fileSampleTime);
     if (timeSources != 1)
-        throw InvalidInput(t.fileName, timeSources == 0
-                                           ? "no time source: give a time column or a sample time"
-                                           : "give one time source: a time column, a sample time or the file's sample time");
+        throw InvalidInput(
+            t.fileName,
+            timeSources == 0
+                ? "no time source: give a time column or a sample time"
+                : "give one time source: a time column, a sample time or the file's sample time");
     usedColumns(cols, t.fileName);
     const std::size_t ui = t.column(cols.input);
     const std::size_t yi = t.column(cols.output);
     double scale = 1.0;
     switch (cols.outputScale.unit) {
-    case OutputUnit::Millimetres: scale = 1.0; break;
-    case OutputUnit::Metres: scale = 1000.0; break;
+    case OutputUnit::Millimetres:
+        scale = 1.0;
+        break;
+    case OutputUnit::Metres:
+        scale = 1000.0;
+        break;
     case OutputUnit::EncoderCounts:
         requirePositive(cols.outputScale.mmPerCount, "mm_per_count");
         scale = cols.outputScale.mmPerCount;
@@ -56,12 +63,14 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
     const std::vector<double>& u = usedColumn(t, ui);
     const std::vector<double>& y = usedColumn(t, yi);
     if (u.size() != y.size())
-        throw InvalidInput(t.fileName, "'" + shownCell(cols.input) + "' has " + std::to_string(u.size()) +
-                                           " values but '" + shownCell(cols.output) + "' has " +
+        throw InvalidInput(t.fileName, "'" + shownCell(cols.input) + "' has " +
+                                           std::to_string(u.size()) + " values but '" +
+                                           shownCell(cols.output) + "' has " +
                                            std::to_string(y.size()));
     IoData d;
     // Names shown escaped: a header may hold control characters, and messages are one line.
-    d.source = t.fileName + ": u=" + shownCell(cols.input, 80) + ", y=" + shownCell(cols.output, 80);
+    d.source =
+        t.fileName + ": u=" + shownCell(cols.input, 80) + ", y=" + shownCell(cols.output, 80);
     if (take && cols.time != cols.input)
         d.u = std::move(take->columns[ui]);
     else
@@ -71,7 +80,8 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
     for (std::size_t k = 0; k < y.size(); ++k) {
         d.y[k] = scale * y[k];
         if (!std::isfinite(d.y[k]))
-            throw InvalidInput(t.cellField(yi, k), "the value scaled to mm is beyond the range of a double");
+            throw InvalidInput(t.cellField(yi, k),
+                               "the value scaled to mm is beyond the range of a double");
     }
     requireSamples(d, 2, "a sampled record");
 
@@ -80,8 +90,9 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
         d.tsSeconds = *cols.sampleTimeSeconds;
     } else if (cols.fileSampleTime) {
         if (!t.sampleTimeSeconds)
-            throw InvalidInput(t.fileName, "states no sample time (no Delta_X equal for every channel): "
-                                           "give a time column or a sample time");
+            throw InvalidInput(t.fileName,
+                               "states no sample time (no Delta_X equal for every channel): "
+                               "give a time column or a sample time");
         requireSampleTime(*t.sampleTimeSeconds, t.fileName + ": the stated sample time");
         d.tsSeconds = *t.sampleTimeSeconds;
     } else {
@@ -89,23 +100,27 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
         const std::vector<double>& time = usedColumn(t, ti);
         if (time.size() != n)
             throw InvalidInput(t.fileName, "the time '" + shownCell(cols.time) + "' has " +
-                                               std::to_string(time.size()) + " values but the data " +
-                                               std::to_string(n));
+                                               std::to_string(time.size()) +
+                                               " values but the data " + std::to_string(n));
         for (std::size_t k = 1; k < time.size(); ++k)
             if (!(time[k] > time[k - 1]))
-                throw InvalidInput(t.cellField(ti, k), "time " + formatNumber(time[k], 10) +
-                                                           " s does not increase (the line before holds " +
-                                                           formatNumber(time[k - 1], 10) + " s)");
+                throw InvalidInput(t.cellField(ti, k),
+                                   "time " + formatNumber(time[k], 10) +
+                                       " s does not increase (the line before holds " +
+                                       formatNumber(time[k - 1], 10) + " s)");
         const double ts = (time[n - 1] - time[0]) / double(n - 1);
         if (!(ts > 0.0) || !std::isfinite(ts))
-            throw InvalidInput(t.cellField(ti, n - 1), "the time column gives no usable sample time");
+            throw InvalidInput(t.cellField(ti, n - 1),
+                               "the time column gives no usable sample time");
         requireSampleTime(ts, t.cellField(ti, n - 1) + ": the time column's sample time");
         for (std::size_t k = 1; k < n; ++k) {
             const double step = time[k] - time[k - 1];
             if (std::abs(step - ts) > kSampleTimeTolerance * ts)
                 throw InvalidInput(t.cellField(ti, k),
-                                   "the time step " + formatNumber(step, 6) + " s differs from the mean sample time " +
-                                       formatNumber(ts, 6) + " s by more than 1 % (non-uniform sampling)");
+                                   "the time step " + formatNumber(step, 6) +
+                                       " s differs from the mean sample time " +
+                                       formatNumber(ts, 6) +
+                                       " s by more than 1 % (non-uniform sampling)");
         }
         d.tsSeconds = ts;
         d.startSeconds = time[0];
@@ -130,8 +145,8 @@ void requireSamples(const IoData& data, std::size_t minimum, const std::string& 
                                       std::to_string(data.y.size()));
     if (data.size() < minimum)
         throw InvalidInput(field, "has " + std::to_string(data.size()) + " sample" +
-                                      (data.size() == 1 ? "" : "s") + "; " + what + " needs at least " +
-                                      std::to_string(minimum));
+                                      (data.size() == 1 ? "" : "s") + "; " + what +
+                                      " needs at least " + std::to_string(minimum));
 }
 
 } // namespace xyt

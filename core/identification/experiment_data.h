@@ -26,7 +26,7 @@ struct ExperimentColumns {
     std::string output; ///< the position column (unit in outputScale)
     std::string time;   ///< a time column (s); empty when the sample time is given
     std::optional<double> sampleTimeSeconds; ///< a given sample time (s), time 0 at the first row
-    bool fileSampleTime = false; ///< the sample time the file states (LVM Delta_X)
+    bool fileSampleTime = false;             ///< the sample time the file states (LVM Delta_X)
     OutputScale outputScale;
 };
 

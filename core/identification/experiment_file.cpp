@@ -15,7 +15,8 @@ ExperimentFileKind experimentFileKind(const std::string& path) {
     std::transform(lower.begin(), lower.end(), lower.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     const auto endsWith = [&](const std::string& suffix) {
-        return lower.size() >= suffix.size() && lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0;
+        return lower.size() >= suffix.size() &&
+               lower.compare(lower.size() - suffix.size(), suffix.size(), suffix) == 0;
     };
     if (endsWith(".lvm"))
         return ExperimentFileKind::Lvm;
@@ -33,8 +34,10 @@ ExperimentTable readExperimentTable(const std::string& path, std::size_t lvmSegm
         o.columns = columns;
         return readLvmFile(path, o).table;
     }
-    case ExperimentFileKind::Mat: return readMat(path, columns);
-    case ExperimentFileKind::Delimited: break;
+    case ExperimentFileKind::Mat:
+        return readMat(path, columns);
+    case ExperimentFileKind::Delimited:
+        break;
     }
     DelimitedReadOptions o;
     o.columns = columns;

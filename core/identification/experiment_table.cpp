@@ -24,14 +24,15 @@ std::size_t ExperimentTable::column(std::string_view name) const {
         list += (c ? ", " : "") + shownCell(names[c]);
     if (names.size() > 50)
         list += ", ... (" + std::to_string(names.size()) + " in all)";
-    throw InvalidInput(fileName, "has no column '" + shownCell(name) + "'; the columns are: " +
-                                     (list.empty() ? "(none)" : list));
+    throw InvalidInput(fileName, "has no column '" + shownCell(name) +
+                                     "'; the columns are: " + (list.empty() ? "(none)" : list));
 }
 
 std::string ExperimentTable::cellField(std::size_t c, std::size_t row) const {
     const std::size_t where = row < rowNumbers.size() ? rowNumbers[row] : row + 1;
     if (fieldNumbers.at(c) == 0)
-        return fileName + ": " + rowLabel + " " + std::to_string(where) + " of " + shownCell(names[c]);
+        return fileName + ": " + rowLabel + " " + std::to_string(where) + " of " +
+               shownCell(names[c]);
     return fileName + ": " + rowLabel + " " + std::to_string(where) + ", column " +
            std::to_string(fieldNumbers[c]) + " (" + shownCell(names[c]) + ")";
 }
@@ -43,8 +44,11 @@ void ExperimentTable::addColumn(std::string name, std::size_t fieldNumber) {
     firstProblem.emplace_back();
 }
 
-std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma, std::string& reason) {
-    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
+                                      std::string& reason) {
+    auto space = [](char c) {
+        return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+    };
     while (!cell.empty() && space(cell.front()))
         cell.remove_prefix(1);
     while (!cell.empty() && space(cell.back()))
@@ -74,7 +78,8 @@ std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma, 
                 return l;
             }();
             if (lower == "nan" || lower == "-nan" || lower == "inf" || lower == "-inf" ||
-                lower == "infinity" || lower == "-infinity" || lower == "1.#qnan" || lower == "1.#inf")
+                lower == "infinity" || lower == "-infinity" || lower == "1.#qnan" ||
+                lower == "1.#inf")
                 reason = "is NaN or infinite";
             else if (c == (decimalComma ? '.' : ','))
                 reason = decimalComma ? "is not a number (a decimal point where the file's decimal "
@@ -144,7 +149,8 @@ void TextLines::next() {
         return;
     std::size_t after = end_;
     if (after < text_.size())
-        after += text_[after] == '\r' && after + 1 < text_.size() && text_[after + 1] == '\n' ? 2 : 1;
+        after +=
+            text_[after] == '\r' && after + 1 < text_.size() && text_[after + 1] == '\n' ? 2 : 1;
     if (after >= text_.size()) {
         done_ = true;
         return;
@@ -154,8 +160,8 @@ void TextLines::next() {
     find();
 }
 
-std::vector<bool> keptColumns(const std::vector<std::string>& names, const std::vector<std::string>& wanted,
-                              const std::string& fileName) {
+std::vector<bool> keptColumns(const std::vector<std::string>& names,
+                              const std::vector<std::string>& wanted, const std::string& fileName) {
     std::vector<bool> kept(names.size(), wanted.empty());
     for (const std::string& w : wanted) {
         bool found = false;
@@ -197,10 +203,12 @@ void throwOutOfMemory(const std::string& fileName, std::size_t bytes, const std:
 void requireSampleTime(double seconds, const std::string& field) {
     requirePositive(seconds, field);
     if (seconds < kMinSampleTimeSeconds || seconds > kMaxSampleTimeSeconds)
-        throw InvalidInput(field, formatNumber(seconds, 6) + " s is outside the accepted sample times, 1e-09 s "
-                                  "to 10000 s (no axis experiment is sampled faster or slower, and beyond "
-                                  "them a fitted gain underflows to 0 or a session's run needs more than "
-                                  "1e308 samples)");
+        throw InvalidInput(
+            field, formatNumber(seconds, 6) +
+                       " s is outside the accepted sample times, 1e-09 s "
+                       "to 10000 s (no axis experiment is sampled faster or slower, and beyond "
+                       "them a fitted gain underflows to 0 or a session's run needs more than "
+                       "1e308 samples)");
 }
 
 std::string readExperimentFile(const std::string& path) {

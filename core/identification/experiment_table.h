@@ -20,8 +20,8 @@ inline constexpr std::size_t kMaxExperimentColumns = 1000;
 /// The first cell of a column that holds no usable number.
 struct CellProblem {
     std::size_t row = 0; ///< index into ExperimentTable::rowNumbers
-    std::string text;    ///< the cell as written (shown one-line, at most 40 characters); "" = empty
-    std::string reason;  ///< "is not a number", "is missing", "is NaN", ...
+    std::string text;   ///< the cell as written (shown one-line, at most 40 characters); "" = empty
+    std::string reason; ///< "is not a number", "is missing", "is NaN", ...
 };
 
 /**
@@ -33,16 +33,16 @@ struct CellProblem {
  * variables of a MAT file may differ in length.
  */
 struct ExperimentTable {
-    std::string fileName;               ///< as given to the reader, for messages
-    std::string rowLabel = "line";      ///< "line" (text files) or "element" (MAT variables)
-    std::vector<std::string> names;     ///< unique column names
+    std::string fileName;           ///< as given to the reader, for messages
+    std::string rowLabel = "line";  ///< "line" (text files) or "element" (MAT variables)
+    std::vector<std::string> names; ///< unique column names
     std::vector<std::vector<double>> columns;
     std::vector<std::size_t> fieldNumbers; ///< 1-based field of each column in its line (0: MAT)
     std::vector<std::size_t> rowNumbers;   ///< 1-based source line (or element) of each row
     std::vector<std::optional<CellProblem>> firstProblem; ///< per column
     /// The sample time the file states, if any (LVM Delta_X, equal for every channel), s.
     std::optional<double> sampleTimeSeconds;
-    std::vector<std::string> warnings;  ///< what was read in an unusual way
+    std::vector<std::string> warnings; ///< what was read in an unusual way
 
     /// Index of the column called @p name (exact, case-sensitive).
     /// @throws InvalidInput naming the file: no such column, with the list of those that exist.
@@ -61,7 +61,8 @@ struct ExperimentTable {
  * of the range of a double"). "1.5" is refused with @p decimalComma and "1,5" without it: a cell
  * holding the other separator is a sign of a wrong setting, not something to guess.
  */
-std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma, std::string& reason);
+std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
+                                      std::string& reason);
 
 /// Records the first problem of column @p column at row @p row (later ones are ignored).
 void noteCellProblem(ExperimentTable& table, std::size_t column, std::size_t row,
@@ -99,8 +100,8 @@ private:
 /// for a column it does not have.
 /// @throws InvalidInput as ExperimentTable::column, naming @p fileName and listing @p names,
 ///         for a name of @p wanted that is not among @p names.
-std::vector<bool> keptColumns(const std::vector<std::string>& names, const std::vector<std::string>& wanted,
-                              const std::string& fileName);
+std::vector<bool> keptColumns(const std::vector<std::string>& names,
+                              const std::vector<std::string>& wanted, const std::string& fileName);
 
 /**
  * Reserves @p rows rows in every column of @p table and in rowNumbers, so no column grows by
@@ -112,7 +113,8 @@ void reserveRows(ExperimentTable& table, std::size_t rows);
 
 /// "<file>: the file needs more memory than is available (<N> MB for <what>)": what a reader
 /// throws instead of std::bad_alloc. @p bytes 0 leaves the amount out.
-[[noreturn]] void throwOutOfMemory(const std::string& fileName, std::size_t bytes, const std::string& what);
+[[noreturn]] void throwOutOfMemory(const std::string& fileName, std::size_t bytes,
+                                   const std::string& what);
 
 /**
  * The bytes of an experiment file, at most kMaxExperimentBytes (core/io/file_io.h

@@ -10,10 +10,14 @@ namespace xyt {
 
 std::string modelStructureName(ModelStructure structure) {
     switch (structure) {
-    case ModelStructure::Arx: return "arx";
-    case ModelStructure::Oe: return "oe";
-    case ModelStructure::Bj: return "bj";
-    case ModelStructure::ContinuousThirdOrder: return "gt3";
+    case ModelStructure::Arx:
+        return "arx";
+    case ModelStructure::Oe:
+        return "oe";
+    case ModelStructure::Bj:
+        return "bj";
+    case ModelStructure::ContinuousThirdOrder:
+        return "gt3";
     }
     return "arx";
 }
@@ -28,10 +32,14 @@ ModelStructure parseModelStructure(const std::string& name) {
 
 std::string IdentificationSpec::describe() const {
     switch (structure) {
-    case ModelStructure::Arx: return arx.toString();
-    case ModelStructure::Oe: return oe.toString();
-    case ModelStructure::Bj: return bj.toString();
-    case ModelStructure::ContinuousThirdOrder: return "GT3 k0/(s^3+a1 s^2+a2 s)";
+    case ModelStructure::Arx:
+        return arx.toString();
+    case ModelStructure::Oe:
+        return oe.toString();
+    case ModelStructure::Bj:
+        return bj.toString();
+    case ModelStructure::ContinuousThirdOrder:
+        return "GT3 k0/(s^3+a1 s^2+a2 s)";
     }
     return {};
 }
@@ -68,13 +76,16 @@ PolynomialModel outputErrorForm(const ThirdOrderPlant& plant, double ts) {
 
 } // namespace
 
-IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation, const IdentificationSpec& spec) {
+IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation,
+                              const IdentificationSpec& spec) {
     if (spec.predictionHorizon < 1)
         throw InvalidInput("prediction_horizon", "must be at least 1");
     if (spec.maxLag < 1)
         throw InvalidInput("max_lag", "must be at least 1");
-    if (validation && !(std::abs(validation->tsSeconds - estimation.tsSeconds) <= 0.01 * estimation.tsSeconds))
-        throw InvalidInput("validation", "its sample time " + std::to_string(validation->tsSeconds) +
+    if (validation &&
+        !(std::abs(validation->tsSeconds - estimation.tsSeconds) <= 0.01 * estimation.tsSeconds))
+        throw InvalidInput("validation", "its sample time " +
+                                             std::to_string(validation->tsSeconds) +
                                              " s differs from the estimation data's " +
                                              std::to_string(estimation.tsSeconds) + " s");
     IdentifiedModel out;
@@ -101,8 +112,9 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
     case ModelStructure::Bj: {
         PemOptions o;
         o.search = spec.search;
-        const PemResult r = spec.structure == ModelStructure::Oe ? estimateOe(estimation, spec.oe, o)
-                                                                 : estimateBj(estimation, spec.bj, o);
+        const PemResult r = spec.structure == ModelStructure::Oe
+                                ? estimateOe(estimation, spec.oe, o)
+                                : estimateBj(estimation, spec.bj, o);
         takeEstimate(out, r);
         loss = r.loss;
         samples = r.samples;
@@ -129,7 +141,8 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
         for (double& y : estimationFrom.y)
             y -= r.initialPositionMm;
         if (validationFrom && r.status != EstimationStatus::Failed) {
-            const std::vector<double> fromRest = simulateThirdOrderPlant(r.plant, validationFrom->u, validationFrom->tsSeconds);
+            const std::vector<double> fromRest =
+                simulateThirdOrderPlant(r.plant, validationFrom->u, validationFrom->tsSeconds);
             double sum = 0.0;
             for (std::size_t k = 0; k < fromRest.size(); ++k)
                 sum += validationFrom->y[k] - fromRest[k];
@@ -146,10 +159,14 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
         out.criteria = informationCriteria(loss, samples, out.parameters.size());
     else
         out.warnings.push_back("the loss is zero (an exact fit): FPE and AIC are not defined");
-    out.fit = fitReport(out.model, estimationFrom, validationFrom ? &*validationFrom : nullptr, spec.predictionHorizon);
-    if (out.residuals.size() > out.firstSample + static_cast<std::size_t>(spec.maxLag) && loss > 0.0)
-        out.residualTests = residualAnalysis(out.residuals, estimation.u, spec.maxLag, 2.576, out.firstSample);
-    out.roots = out.plant ? thirdOrderPlantRoots(*out.plant, estimation.tsSeconds) : modelRoots(out.model);
+    out.fit = fitReport(out.model, estimationFrom, validationFrom ? &*validationFrom : nullptr,
+                        spec.predictionHorizon);
+    if (out.residuals.size() > out.firstSample + static_cast<std::size_t>(spec.maxLag) &&
+        loss > 0.0)
+        out.residualTests =
+            residualAnalysis(out.residuals, estimation.u, spec.maxLag, 2.576, out.firstSample);
+    out.roots =
+        out.plant ? thirdOrderPlantRoots(*out.plant, estimation.tsSeconds) : modelRoots(out.model);
     for (const std::string& note : out.roots.notes)
         out.warnings.push_back(note);
     return out;

@@ -91,6 +91,7 @@ struct IdentifiedModel {
  *         time differs from the estimation data's by more than 1 %, "prediction_horizon",
  *         "max_lag".
  */
-IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation, const IdentificationSpec& spec);
+IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation,
+                              const IdentificationSpec& spec);
 
 } // namespace xyt

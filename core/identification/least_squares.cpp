@@ -42,11 +42,11 @@ LinearLeastSquares linearLeastSquares(Eigen::MatrixXd phi, const Eigen::VectorXd
     if (out.rank == d && d > 0) {
         // (Phi^T Phi)^-1 = S^-1 P R^-1 R^-T P^T S^-1, from the triangular factor only.
         const Eigen::MatrixXd r = qr.matrixR().topLeftCorner(d, d).triangularView<Eigen::Upper>();
-        const Eigen::MatrixXd rInv = r.triangularView<Eigen::Upper>().solve(
-            Eigen::MatrixXd::Identity(d, d));
+        const Eigen::MatrixXd rInv =
+            r.triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(d, d));
         const Eigen::MatrixXd m = qr.colsPermutation() * rInv;
-        out.inverseGram = s.cwiseInverse().asDiagonal() * (m * m.transpose()) *
-                          s.cwiseInverse().asDiagonal();
+        out.inverseGram =
+            s.cwiseInverse().asDiagonal() * (m * m.transpose()) * s.cwiseInverse().asDiagonal();
     }
     return out;
 }
@@ -135,8 +135,7 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
         out.lossHistory.push_back(out.loss);
         ++out.iterations;
         lambda = std::max(lambda / 10.0, 1e-12);
-        if (lossDrop < options.relativeLossTolerance ||
-            stepSize < options.relativeStepTolerance) {
+        if (lossDrop < options.relativeLossTolerance || stepSize < options.relativeStepTolerance) {
             out.status = EstimationStatus::Converged;
             out.message = lossDrop < options.relativeLossTolerance
                               ? "the loss changed by less than the tolerance"

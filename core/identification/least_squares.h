@@ -49,7 +49,7 @@ struct NonlinearProblem {
      * (N x d). Returns false when they are not finite (the step is then rejected).
      */
     std::function<bool(const Eigen::VectorXd& theta, Eigen::VectorXd& residuals,
-                        Eigen::MatrixXd* jacobian)>
+                       Eigen::MatrixXd* jacobian)>
         evaluate;
     /// Maps a trial theta back into the admissible set (e.g. reflects unstable roots); may be
     /// empty.
@@ -77,9 +77,9 @@ struct SearchOutcome {
     EstimationStatus status = EstimationStatus::Failed;
     Eigen::VectorXd theta;
     Eigen::VectorXd residuals;
-    Eigen::MatrixXd jacobian; ///< at theta
-    double loss = 0.0;        ///< V = mean(e^2) at theta
-    int iterations = 0;       ///< accepted steps
+    Eigen::MatrixXd jacobian;        ///< at theta
+    double loss = 0.0;               ///< V = mean(e^2) at theta
+    int iterations = 0;              ///< accepted steps
     std::vector<double> lossHistory; ///< V at the start and after every accepted step
     std::string message;
 };
@@ -97,8 +97,7 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
 
 /// Copies the search summary (status, message, iterations, loss history) of @p r into an
 /// estimator's result, which has members of those names.
-template <class Result>
-void takeSearchSummary(const SearchOutcome& r, Result& out) {
+template <class Result> void takeSearchSummary(const SearchOutcome& r, Result& out) {
     out.status = r.status;
     out.message = r.message;
     out.iterations = r.iterations;

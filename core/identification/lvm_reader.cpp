@@ -34,7 +34,8 @@ void split(std::string_view line, char sep, std::vector<std::string_view>& out) 
     std::size_t start = 0;
     while (true) {
         const std::size_t end = line.find(sep, start);
-        out.push_back(line.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+        out.push_back(line.substr(start, end == std::string_view::npos ? std::string_view::npos
+                                                                       : end - start));
         if (end == std::string_view::npos || out.size() > kMaxExperimentColumns * 2 + 2)
             break;
         start = end + 1;
@@ -52,7 +53,9 @@ std::pair<std::string_view, std::string_view> tagValue(std::string_view line) {
     return {trim(line.substr(0, cut)), trim(rest.substr(0, end))};
 }
 
-bool blank(std::string_view line) { return trim(line).empty(); }
+bool blank(std::string_view line) {
+    return trim(line).empty();
+}
 
 /// The steps of one X_Value column over the segment read, to compare with its Delta_X.
 struct XSteps {
@@ -68,8 +71,8 @@ public:
     /// second can allocate each column once) and finds every structural error.
     LvmParser(std::string_view text, const std::string& fileName, const LvmReadOptions& options,
               bool countOnly, std::size_t rows)
-        : lines_(text), fileName_(fileName), wanted_(options.segment), wantedColumns_(options.columns),
-          countOnly_(countOnly), expectedRows_(rows) {
+        : lines_(text), fileName_(fileName), wanted_(options.segment),
+          wantedColumns_(options.columns), countOnly_(countOnly), expectedRows_(rows) {
         out_.table.fileName = fileName;
     }
 
@@ -83,13 +86,15 @@ public:
             throw InvalidInput(fileName_, "holds no data segment");
         if (wanted_ > out_.segmentCount)
             throw InvalidInput(fileName_, "has " + std::to_string(out_.segmentCount) + " segment" +
-                                              (out_.segmentCount == 1 ? "" : "s") + ", not a segment " +
-                                              std::to_string(wanted_));
+                                              (out_.segmentCount == 1 ? "" : "s") +
+                                              ", not a segment " + std::to_string(wanted_));
         if (out_.segmentCount > 1)
             out_.table.warnings.push_back("the file has " + std::to_string(out_.segmentCount) +
-                                          " segments; segment " + std::to_string(wanted_) + " was read");
+                                          " segments; segment " + std::to_string(wanted_) +
+                                          " was read");
         if (allNames_.empty())
-            throw InvalidInput(fileName_, "segment " + std::to_string(wanted_) + " holds no channel");
+            throw InvalidInput(fileName_,
+                               "segment " + std::to_string(wanted_) + " holds no channel");
         if (!countOnly_)
             checkDeltaX();
         return std::move(out_);
@@ -98,7 +103,9 @@ public:
     std::size_t rowsCounted() const { return rows_; }
 
 private:
-    std::string at(std::size_t lineNumber) const { return fileName_ + ": line " + std::to_string(lineNumber); }
+    std::string at(std::size_t lineNumber) const {
+        return fileName_ + ": line " + std::to_string(lineNumber);
+    }
 
     /// From a ***Start_Special*** line to the line after its ***End_Special***.
     void skipSpecial() {
@@ -108,7 +115,8 @@ private:
                 lines_.next();
                 return;
             }
-        throw InvalidInput(at(start), "the ***Start_Special*** block is not closed by ***End_Special***");
+        throw InvalidInput(at(start),
+                           "the ***Start_Special*** block is not closed by ***End_Special***");
     }
 
     void readFileHeader() {
@@ -131,9 +139,11 @@ private:
             if (tag == kEndOfHeader) {
                 lines_.next();
                 if (!separatorSeen)
-                    out_.table.warnings.push_back("the file header has no Separator tag: Tab assumed");
+                    out_.table.warnings.push_back(
+                        "the file header has no Separator tag: Tab assumed");
                 if (!xColumnsSeen)
-                    out_.table.warnings.push_back("the file header has no X_Columns tag: One assumed");
+                    out_.table.warnings.push_back(
+                        "the file header has no X_Columns tag: One assumed");
                 return;
             }
             if (tag == "Separator") {
@@ -143,18 +153,21 @@ private:
                 else if (value == "Comma")
                     sep_ = ',';
                 else
-                    throw InvalidInput(at(lines_.number()), "Separator '" + shownCell(value) + "' is not Tab or Comma");
+                    throw InvalidInput(at(lines_.number()),
+                                       "Separator '" + shownCell(value) + "' is not Tab or Comma");
             } else if (tag == "Decimal_Separator") {
-                // With comma-separated fields the value itself is the second field: "Decimal_Separator,,"
-                // holds an empty value between two commas, so look at the raw text too.
+                // With comma-separated fields the value itself is the second field:
+                // "Decimal_Separator,," holds an empty value between two commas, so look at the raw
+                // text too.
                 const std::string_view raw = trim(line.substr(tag.size()));
                 if (value == ".")
                     decimalComma_ = false;
                 else if (value == "," || raw == ",," || raw == "\t,")
                     decimalComma_ = true;
                 else
-                    throw InvalidInput(at(lines_.number()),
-                                       "Decimal_Separator '" + shownCell(value) + "' is not '.' or ','");
+                    throw InvalidInput(at(lines_.number()), "Decimal_Separator '" +
+                                                                shownCell(value) +
+                                                                "' is not '.' or ','");
             } else if (tag == "X_Columns") {
                 xColumnsSeen = true;
                 if (value == "No")
@@ -164,7 +177,8 @@ private:
                 else if (value == "Multi")
                     xColumns_ = XColumns::Multi;
                 else
-                    throw InvalidInput(at(lines_.number()), "X_Columns '" + shownCell(value) + "' is not No, One or Multi");
+                    throw InvalidInput(at(lines_.number()), "X_Columns '" + shownCell(value) +
+                                                                "' is not No, One or Multi");
             }
             lines_.next();
         }
@@ -190,7 +204,8 @@ private:
             if (segmentHasRows_ || !inSegment_)
                 beginSegment();
             if (current() && namesSeen_)
-                throw InvalidInput(at(lines_.number()), "a second column-name row in segment " + std::to_string(wanted_));
+                throw InvalidInput(at(lines_.number()), "a second column-name row in segment " +
+                                                            std::to_string(wanted_));
             if (current())
                 setColumnsFromNames(fields_);
             namesSeen_ = true;
@@ -238,7 +253,8 @@ private:
             }
             if (tag == "Channels" && fields_.size() > 1) {
                 const auto n = parseCellNumber(fields_[1], false, reason_);
-                if (n && *n >= 1 && *n <= double(kMaxExperimentColumns) && *n == double(std::size_t(*n)))
+                if (n && *n >= 1 && *n <= double(kMaxExperimentColumns) &&
+                    *n == double(std::size_t(*n)))
                     channels = std::size_t(*n);
             } else if (tag == "Delta_X") {
                 deltaXLine = lines_.number();
@@ -250,7 +266,8 @@ private:
                 }
             }
         }
-        throw InvalidInput(at(start), "the segment header that starts here with '" + shownCell(startTag) +
+        throw InvalidInput(at(start), "the segment header that starts here with '" +
+                                          shownCell(startTag) +
                                           "' is not closed by ***End_of_Header***");
     }
 
@@ -260,7 +277,8 @@ private:
         for (double d : deltaX)
             if (!(d > 0.0) || d != deltaX.front()) {
                 out_.table.warnings.push_back("the Delta_X of segment " + std::to_string(wanted_) +
-                                              " differ between channels or are not positive: no sample time taken from the file");
+                                              " differ between channels or are not positive: no "
+                                              "sample time taken from the file");
                 return;
             }
         // A stated sample time nobody can use is refused here, where the line is known, rather
@@ -281,20 +299,23 @@ private:
                 continue;
             const double step = (x.last - x.first) / double(x.count - 1);
             if (std::abs(step - dx) > kSampleTimeTolerance * dx)
-                throw InvalidInput(at(deltaXLine_),
-                                   "Delta_X " + formatNumber(dx, 10) + " contradicts the X_Value column (field " +
-                                       std::to_string(x.field + 1) + "), whose mean step from line " +
-                                       std::to_string(x.firstLine) + " to line " + std::to_string(x.lastLine) +
-                                       " is " + formatNumber(step, 10) +
-                                       ": one of the two is wrong (give the sample time or a time column, "
-                                       "after correcting the file)");
+                throw InvalidInput(
+                    at(deltaXLine_),
+                    "Delta_X " + formatNumber(dx, 10) + " contradicts the X_Value column (field " +
+                        std::to_string(x.field + 1) + "), whose mean step from line " +
+                        std::to_string(x.firstLine) + " to line " + std::to_string(x.lastLine) +
+                        " is " + formatNumber(step, 10) +
+                        ": one of the two is wrong (give the sample time or a time column, "
+                        "after correcting the file)");
         }
     }
 
     /// A name of the name row (or a default name): checked, and kept when asked for.
     void addName(std::string name, std::size_t field) {
         if (allNames_.size() >= kMaxExperimentColumns)
-            throw InvalidInput(at(lines_.number()), "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
+            throw InvalidInput(at(lines_.number()), "has more than " +
+                                                        std::to_string(kMaxExperimentColumns) +
+                                                        " columns");
         for (const std::string& other : allNames_)
             if (other == name)
                 throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(field),
@@ -335,8 +356,9 @@ private:
         }
         if (xColumns_ == XColumns::Multi) {
             if (n % 2 != 0)
-                throw InvalidInput(at(lines_.number()), "X_Columns is Multi but the name row does not pair every "
-                                                        "channel with an X_Value column");
+                throw InvalidInput(at(lines_.number()),
+                                   "X_Columns is Multi but the name row does not pair every "
+                                   "channel with an X_Value column");
             for (std::size_t k = 0; k < n; k += 2) {
                 const std::string name(trim(fields[k + 1]));
                 if (name.empty())
@@ -353,7 +375,8 @@ private:
         for (std::size_t k = 1; k < n; ++k) {
             const std::string name(trim(fields[k]));
             if (name.empty())
-                throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 1), "the channel name is empty");
+                throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 1),
+                                   "the channel name is empty");
             addName(name, k + 1);
         }
         keepColumns();
@@ -363,8 +386,12 @@ private:
     void setDefaultColumns(std::size_t fieldCount) {
         std::size_t channels = channels_;
         if (channels == 0)
-            channels = xColumns_ == XColumns::Multi ? fieldCount / 2 : fieldCount > 0 ? fieldCount - 1 : 0;
-        auto untitled = [](std::size_t k) { return k == 0 ? std::string("Untitled") : "Untitled " + std::to_string(k); };
+            channels = xColumns_ == XColumns::Multi ? fieldCount / 2
+                       : fieldCount > 0             ? fieldCount - 1
+                                                    : 0;
+        auto untitled = [](std::size_t k) {
+            return k == 0 ? std::string("Untitled") : "Untitled " + std::to_string(k);
+        };
         if (xColumns_ == XColumns::One)
             addName("X_Value", 1);
         for (std::size_t k = 0; k < channels; ++k) {
@@ -377,8 +404,9 @@ private:
         }
         commentField_ = xColumns_ == XColumns::Multi ? 2 * channels : channels + 1;
         keepColumns();
-        out_.table.warnings.push_back("segment " + std::to_string(wanted_) +
-                                      " has no column-name row: the channels are named Untitled, Untitled 1, ...");
+        out_.table.warnings.push_back(
+            "segment " + std::to_string(wanted_) +
+            " has no column-name row: the channels are named Untitled, Untitled 1, ...");
     }
 
     void addRow(const std::vector<std::string_view>& fields) {
@@ -413,8 +441,9 @@ private:
         for (XSteps& x : xSteps_) {
             if (!x.usable)
                 continue;
-            const auto v = x.field < fields.size() ? parseCellNumber(fields[x.field], decimalComma_, reason_)
-                                                   : std::nullopt;
+            const auto v = x.field < fields.size()
+                               ? parseCellNumber(fields[x.field], decimalComma_, reason_)
+                               : std::nullopt;
             if (!v) {
                 x.usable = false;
                 continue;
@@ -439,23 +468,25 @@ private:
     XColumns xColumns_ = XColumns::One;
     bool inSegment_ = false, segmentHasRows_ = false, namesSeen_ = false;
     std::size_t channels_ = 0;
-    std::vector<std::string> allNames_;  ///< every column of the segment read, kept or not
-    std::vector<std::size_t> allFields_; ///< their 1-based fields
+    std::vector<std::string> allNames_;     ///< every column of the segment read, kept or not
+    std::vector<std::size_t> allFields_;    ///< their 1-based fields
     std::vector<std::size_t> columnFields_; ///< 0-based field of each table column
     std::size_t lastField_ = 0;             ///< the fields beyond it must be blank
     std::optional<std::size_t> commentField_;
     std::vector<XSteps> xSteps_;
     std::size_t deltaXLine_ = 0;
     std::vector<std::string_view> fields_; ///< the fields of the current line
-    std::string reason_;                   ///< parseCellNumber's, unused where only "is it a number" counts
+    std::string reason_; ///< parseCellNumber's, unused where only "is it a number" counts
     LvmTable out_;
 };
 
 } // namespace
 
-LvmTable readLvm(std::string_view text, const std::string& fileName, const LvmReadOptions& options) {
+LvmTable readLvm(std::string_view text, const std::string& fileName,
+                 const LvmReadOptions& options) {
     if (text.size() > kMaxExperimentBytes)
-        throw InvalidInput(fileName, "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
+        throw InvalidInput(fileName,
+                           "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
     if (options.segment < 1)
         throw InvalidInput("segment", "must be 1 or more (segments are counted from 1)");
     try {

@@ -53,7 +53,8 @@ struct LvmTable {
  *         options.columns the segment does not name, a Delta_X outside the accepted sample
  *         times or contradicted by an X_Value column, not enough memory (throwOutOfMemory).
  */
-LvmTable readLvm(std::string_view text, const std::string& fileName, const LvmReadOptions& options = {});
+LvmTable readLvm(std::string_view text, const std::string& fileName,
+                 const LvmReadOptions& options = {});
 
 /// readLvm on the file at @p path (readExperimentFile: at most kMaxExperimentBytes).
 /// @throws FileError when the file cannot be read; InvalidInput as readLvm.

@@ -69,7 +69,8 @@ V5Tag v5Tag(const unsigned char* b, bool swap) {
  * dimensions (miINT32, at least two), name (miINT8). libmatio allocates by the dimensions and the
  * name length, so both are bounded by what the element can hold: at least one byte per element.
  */
-bool v5ArrayHeaderFits(const unsigned char* b, std::size_t avail, std::uint64_t bodySize, bool swap) {
+bool v5ArrayHeaderFits(const unsigned char* b, std::size_t avail, std::uint64_t bodySize,
+                       bool swap) {
     if (bodySize == 0)
         return true; // an empty matrix element: libmatio skips it
     if (avail < 16 + 8)
@@ -121,7 +122,8 @@ bool v5ElementsFit(const std::string& path, std::uint64_t fileSize, bool swap) {
             break;
         }
         const std::size_t avail = std::min<std::size_t>(size, buffer.size());
-        if (::pread(fd, buffer.data(), avail, static_cast<off_t>(offset + 8)) != static_cast<ssize_t>(avail)) {
+        if (::pread(fd, buffer.data(), avail, static_cast<off_t>(offset + 8)) !=
+            static_cast<ssize_t>(avail)) {
             ok = false;
             break;
         }
@@ -142,7 +144,8 @@ bool v5ElementsFit(const std::string& path, std::uint64_t fileSize, bool swap) {
                 inflateEnd(&z);
                 ok = (r == Z_OK || r == Z_STREAM_END || r == Z_BUF_ERROR) && got >= 8;
                 if (ok) {
-                    const std::uint32_t innerType = read32(head, swap), innerSize = read32(head + 4, swap);
+                    const std::uint32_t innerType = read32(head, swap),
+                                        innerSize = read32(head + 4, swap);
                     // Deflate expands at most 1032:1.
                     ok = innerType == 14 && std::uint64_t(innerSize) <= 1032ull * size + 64 &&
                          v5ArrayHeaderFits(head + 8, got - 8, innerSize, swap);
@@ -170,16 +173,19 @@ bool v4ChainFits(const std::string& path, std::uint64_t fileSize, bool swap) {
         unsigned char h[20];
         if (fileSize - offset < 20 || ::pread(fd, h, 20, static_cast<off_t>(offset)) != 20)
             break;
-        const std::uint32_t type = read32(h, swap), rows = read32(h + 4, swap), cols = read32(h + 8, swap),
-                            imag = read32(h + 12, swap), nameLength = read32(h + 16, swap);
+        const std::uint32_t type = read32(h, swap), rows = read32(h + 4, swap),
+                            cols = read32(h + 8, swap), imag = read32(h + 12, swap),
+                            nameLength = read32(h + 16, swap);
         const unsigned m = type / 1000, o = type / 100 % 10, p = type / 10 % 10, t = type % 10;
-        if (type >= 5000 || m > 4 || o != 0 || p > 5 || t > 2 || imag > 1 || nameLength < 2 || nameLength > 64)
+        if (type >= 5000 || m > 4 || o != 0 || p > 5 || t > 2 || imag > 1 || nameLength < 2 ||
+            nameLength > 64)
             break;
         const std::uint64_t bytesPer[] = {8, 4, 4, 2, 2, 1};
         if (rows > (1u << 30) || cols > (1u << 30))
             break;
         const std::uint64_t elements = std::uint64_t(rows) * std::uint64_t(cols);
-        const std::uint64_t need = 20 + std::uint64_t(nameLength) + elements * bytesPer[p] * (imag ? 2 : 1);
+        const std::uint64_t need =
+            20 + std::uint64_t(nameLength) + elements * bytesPer[p] * (imag ? 2 : 1);
         if (elements > fileSize || need > fileSize - offset)
             break;
         offset += need;
@@ -207,10 +213,12 @@ std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
         const bool little = h[126] == 'I'; // "IM" read as bytes: written little-endian
         const unsigned version = little ? (h[124] | (h[125] << 8)) : ((h[124] << 8) | h[125]);
         if (version != 0x0100 && version != 0x0200)
-            return "its MATLAB header states version 0x" + std::to_string(version) + ", not 5 (0x0100) or 7.3 (0x0200)";
+            return "its MATLAB header states version 0x" + std::to_string(version) +
+                   ", not 5 (0x0100) or 7.3 (0x0200)";
         if (version == 0x0100 && fileSize < 128 + 8)
             return "it holds a MATLAB header and no variable";
-        if (version == 0x0100 && !v5ElementsFit(path, fileSize, little != (std::endian::native == std::endian::little)))
+        if (version == 0x0100 &&
+            !v5ElementsFit(path, fileSize, little != (std::endian::native == std::endian::little)))
             return "a variable's element does not fit in the file or has a malformed array header";
         return {};
     }
@@ -234,38 +242,60 @@ MatHandle openMat(const std::string& path) {
     if (!S_ISREG(st.st_mode))
         throw FileError(path, "is not a regular file");
     if (static_cast<std::uint64_t>(st.st_size) > kMaxExperimentBytes)
-        throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) + " bytes");
-    if (const std::string why = checkHeader(path, static_cast<std::uint64_t>(st.st_size)); !why.empty())
+        throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) +
+                                  " bytes");
+    if (const std::string why = checkHeader(path, static_cast<std::uint64_t>(st.st_size));
+        !why.empty())
         throw InvalidInput(path, "is not a MAT file: " + why);
     installMatioLog();
     matioMessage.clear();
     mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
     if (!m)
-        throw InvalidInput(path, "libmatio cannot open it as a MAT file" +
-                                     (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+        throw InvalidInput(
+            path,
+            "libmatio cannot open it as a MAT file" +
+                (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
     return MatHandle(m);
 }
 
 const char* className(int c) {
     switch (c) {
-    case MAT_C_CELL: return "cell";
-    case MAT_C_STRUCT: return "struct";
-    case MAT_C_OBJECT: return "object";
-    case MAT_C_CHAR: return "char";
-    case MAT_C_SPARSE: return "sparse";
-    case MAT_C_DOUBLE: return "double";
-    case MAT_C_SINGLE: return "single";
-    case MAT_C_INT8: return "int8";
-    case MAT_C_UINT8: return "uint8";
-    case MAT_C_INT16: return "int16";
-    case MAT_C_UINT16: return "uint16";
-    case MAT_C_INT32: return "int32";
-    case MAT_C_UINT32: return "uint32";
-    case MAT_C_INT64: return "int64";
-    case MAT_C_UINT64: return "uint64";
-    case MAT_C_FUNCTION: return "function";
-    case MAT_C_OPAQUE: return "opaque";
-    default: return "unknown";
+    case MAT_C_CELL:
+        return "cell";
+    case MAT_C_STRUCT:
+        return "struct";
+    case MAT_C_OBJECT:
+        return "object";
+    case MAT_C_CHAR:
+        return "char";
+    case MAT_C_SPARSE:
+        return "sparse";
+    case MAT_C_DOUBLE:
+        return "double";
+    case MAT_C_SINGLE:
+        return "single";
+    case MAT_C_INT8:
+        return "int8";
+    case MAT_C_UINT8:
+        return "uint8";
+    case MAT_C_INT16:
+        return "int16";
+    case MAT_C_UINT16:
+        return "uint16";
+    case MAT_C_INT32:
+        return "int32";
+    case MAT_C_UINT32:
+        return "uint32";
+    case MAT_C_INT64:
+        return "int64";
+    case MAT_C_UINT64:
+        return "uint64";
+    case MAT_C_FUNCTION:
+        return "function";
+    case MAT_C_OPAQUE:
+        return "opaque";
+    default:
+        return "unknown";
     }
 }
 
@@ -286,14 +316,22 @@ std::string dimensionText(const matvar_t& v) {
 /// What a variable that is not a real numeric vector is, in words ("a cell array", ...).
 std::string notNumericWhy(int classType) {
     switch (classType) {
-    case MAT_C_CELL: return "is a cell array";
-    case MAT_C_STRUCT: return "is a struct";
-    case MAT_C_OBJECT: return "is an object";
-    case MAT_C_CHAR: return "is text (a char array)";
-    case MAT_C_SPARSE: return "is a sparse matrix";
-    case MAT_C_FUNCTION: return "is a function handle";
-    case MAT_C_OPAQUE: return "is an opaque object";
-    default: return "is of an unknown class";
+    case MAT_C_CELL:
+        return "is a cell array";
+    case MAT_C_STRUCT:
+        return "is a struct";
+    case MAT_C_OBJECT:
+        return "is an object";
+    case MAT_C_CHAR:
+        return "is text (a char array)";
+    case MAT_C_SPARSE:
+        return "is a sparse matrix";
+    case MAT_C_FUNCTION:
+        return "is a function handle";
+    case MAT_C_OPAQUE:
+        return "is an opaque object";
+    default:
+        return "is of an unknown class";
     }
 }
 
@@ -308,7 +346,9 @@ MatVariableInfo describe(const matvar_t& v) {
     // What the variable claims, saturated: a header may state any dimensions.
     info.elements = v.rank >= 1 && v.dims ? 1 : 0;
     for (int k = 0; k < v.rank && v.dims; ++k)
-        info.elements = v.dims[k] != 0 && info.elements > UINT64_MAX / v.dims[k] ? UINT64_MAX : info.elements * v.dims[k];
+        info.elements = v.dims[k] != 0 && info.elements > UINT64_MAX / v.dims[k]
+                            ? UINT64_MAX
+                            : info.elements * v.dims[k];
     if (!numericClass(v.class_type))
         info.whyNot = v.class_type == MAT_C_EMPTY ? "is empty" : notNumericWhy(v.class_type);
     else if (v.isLogical)
@@ -316,13 +356,15 @@ MatVariableInfo describe(const matvar_t& v) {
     else if (v.isComplex)
         info.whyNot = "is complex";
     else if (v.rank > 2 && v.dims)
-        info.whyNot = "is a " + dimensionText(v) + " array (" + std::to_string(v.rank) + " dimensions)";
+        info.whyNot =
+            "is a " + dimensionText(v) + " array (" + std::to_string(v.rank) + " dimensions)";
     else if (v.rank != 2 || !v.dims)
         info.whyNot = "has " + std::to_string(v.rank) + " dimensions";
     else if (info.rows == 0 || info.columns == 0)
         info.whyNot = "is empty";
     else if (info.rows != 1 && info.columns != 1)
-        info.whyNot = "is a " + std::to_string(info.rows) + " x " + std::to_string(info.columns) + " matrix, not a vector";
+        info.whyNot = "is a " + std::to_string(info.rows) + " x " + std::to_string(info.columns) +
+                      " matrix, not a vector";
     else if (info.name.empty())
         info.whyNot = "has no name";
     info.usable = info.whyNot.empty();
@@ -341,29 +383,54 @@ template <class T> void convert(const void* data, std::size_t n, std::vector<dou
 
 /// A variable whose data libmatio could not read, with libmatio's reason when it gave one.
 InvalidInput unreadable(const std::string& path, const std::string& name) {
-    return InvalidInput(path, "the data of variable '" + shownCell(name) + "' cannot be read" +
-                                  (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+    return InvalidInput(
+        path,
+        "the data of variable '" + shownCell(name) + "' cannot be read" +
+            (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
 }
 
-/// The elements of a read variable as doubles. @throws InvalidInput when the data is absent or short.
+/// The elements of a read variable as doubles. @throws InvalidInput when the data is absent or
+/// short.
 std::vector<double> elements(const matvar_t& v, const std::string& path, const std::string& name) {
     const std::size_t n = v.dims[0] * v.dims[1];
     const std::size_t size = Mat_SizeOfClass(v.class_type);
-    if (!v.data || size == 0 || n > std::numeric_limits<std::size_t>::max() / size || v.nbytes < n * size)
+    if (!v.data || size == 0 || n > std::numeric_limits<std::size_t>::max() / size ||
+        v.nbytes < n * size)
         throw unreadable(path, name);
     std::vector<double> out;
     switch (v.class_type) {
-    case MAT_C_DOUBLE: convert<double>(v.data, n, out); break;
-    case MAT_C_SINGLE: convert<float>(v.data, n, out); break;
-    case MAT_C_INT8: convert<std::int8_t>(v.data, n, out); break;
-    case MAT_C_UINT8: convert<std::uint8_t>(v.data, n, out); break;
-    case MAT_C_INT16: convert<std::int16_t>(v.data, n, out); break;
-    case MAT_C_UINT16: convert<std::uint16_t>(v.data, n, out); break;
-    case MAT_C_INT32: convert<std::int32_t>(v.data, n, out); break;
-    case MAT_C_UINT32: convert<std::uint32_t>(v.data, n, out); break;
-    case MAT_C_INT64: convert<std::int64_t>(v.data, n, out); break;
-    case MAT_C_UINT64: convert<std::uint64_t>(v.data, n, out); break;
-    default: throw InvalidInput(path, "variable '" + shownCell(name) + "' is not numeric");
+    case MAT_C_DOUBLE:
+        convert<double>(v.data, n, out);
+        break;
+    case MAT_C_SINGLE:
+        convert<float>(v.data, n, out);
+        break;
+    case MAT_C_INT8:
+        convert<std::int8_t>(v.data, n, out);
+        break;
+    case MAT_C_UINT8:
+        convert<std::uint8_t>(v.data, n, out);
+        break;
+    case MAT_C_INT16:
+        convert<std::int16_t>(v.data, n, out);
+        break;
+    case MAT_C_UINT16:
+        convert<std::uint16_t>(v.data, n, out);
+        break;
+    case MAT_C_INT32:
+        convert<std::int32_t>(v.data, n, out);
+        break;
+    case MAT_C_UINT32:
+        convert<std::uint32_t>(v.data, n, out);
+        break;
+    case MAT_C_INT64:
+        convert<std::int64_t>(v.data, n, out);
+        break;
+    case MAT_C_UINT64:
+        convert<std::uint64_t>(v.data, n, out);
+        break;
+    default:
+        throw InvalidInput(path, "variable '" + shownCell(name) + "' is not numeric");
     }
     return out;
 }
@@ -390,10 +457,18 @@ MatFileInfo listMatVariables(const std::string& path) {
     const MatHandle m = openMat(path);
     MatFileInfo info;
     switch (Mat_GetVersion(m.get())) {
-    case MAT_FT_MAT4: info.version = "v4"; break;
-    case MAT_FT_MAT5: info.version = "v5"; break;
-    case MAT_FT_MAT73: info.version = "v7.3"; break;
-    default: info.version = "unknown"; break;
+    case MAT_FT_MAT4:
+        info.version = "v4";
+        break;
+    case MAT_FT_MAT5:
+        info.version = "v5";
+        break;
+    case MAT_FT_MAT73:
+        info.version = "v7.3";
+        break;
+    default:
+        info.version = "unknown";
+        break;
     }
     info.variables = listOpen(m.get());
     return info;
@@ -417,31 +492,39 @@ std::string elementsText(const MatVariableInfo& v) {
 }
 
 /// The listed variables @p names refers to, every check made before any data is read.
-std::vector<const MatVariableInfo*> chosenVariables(const std::string& path, const std::vector<MatVariableInfo>& vars,
+std::vector<const MatVariableInfo*> chosenVariables(const std::string& path,
+                                                    const std::vector<MatVariableInfo>& vars,
                                                     const std::vector<std::string>& names) {
     if (names.size() > kMaxExperimentColumns)
-        throw InvalidInput(path, std::to_string(names.size()) + " variables asked for, more than the " +
+        throw InvalidInput(path, std::to_string(names.size()) +
+                                     " variables asked for, more than the " +
                                      std::to_string(kMaxExperimentColumns) + " a table may hold");
     std::vector<const MatVariableInfo*> chosen;
     std::uint64_t total = 0;
     for (const std::string& name : names) {
-        const auto found = std::find_if(vars.begin(), vars.end(), [&](const MatVariableInfo& v) { return v.name == name; });
+        const auto found = std::find_if(vars.begin(), vars.end(),
+                                        [&](const MatVariableInfo& v) { return v.name == name; });
         if (found == vars.end())
-            throw InvalidInput(path, "has no variable '" + shownCell(name) + "'; " + usableList(vars));
+            throw InvalidInput(path,
+                               "has no variable '" + shownCell(name) + "'; " + usableList(vars));
         const MatVariableInfo& v = *found;
         if (!v.usable)
             throw InvalidInput(path, "variable '" + shownCell(name) + "' " + v.whyNot +
-                                         "; a vector of real numbers is needed (" + usableList(vars) + ")");
+                                         "; a vector of real numbers is needed (" +
+                                         usableList(vars) + ")");
         if (std::find(chosen.begin(), chosen.end(), &v) != chosen.end())
             throw InvalidInput(path, "variable '" + shownCell(name) + "' is asked for twice");
         if (v.elements > kMaxMatVariableElements)
-            throw InvalidInput(path, "variable '" + shownCell(name) + "' claims " + elementsText(v) + ", more than the " +
-                                         std::to_string(kMaxMatVariableElements) + " one variable may hold");
+            throw InvalidInput(path, "variable '" + shownCell(name) + "' claims " +
+                                         elementsText(v) + ", more than the " +
+                                         std::to_string(kMaxMatVariableElements) +
+                                         " one variable may hold");
         total += v.elements;
         if (total > kMaxMatTableElements)
-            throw InvalidInput(path, "the variables asked for, up to '" + shownCell(name) + "', hold " +
-                                         std::to_string(total) + " elements, more than the " +
-                                         std::to_string(kMaxMatTableElements) + " one read may hold");
+            throw InvalidInput(path,
+                               "the variables asked for, up to '" + shownCell(name) + "', hold " +
+                                   std::to_string(total) + " elements, more than the " +
+                                   std::to_string(kMaxMatTableElements) + " one read may hold");
         chosen.push_back(&v);
     }
     return chosen;
@@ -455,15 +538,18 @@ std::vector<const MatVariableInfo*> everyUsableVariable(const std::vector<MatVar
     std::size_t leftOut = 0;
     const auto leave = [&](const MatVariableInfo& v, const std::string& why) {
         if (++leftOut <= 10)
-            warnings.push_back("variable '" + shownCell(v.name) + "' (" + elementsText(v) + ") is not read: " + why);
+            warnings.push_back("variable '" + shownCell(v.name) + "' (" + elementsText(v) +
+                               ") is not read: " + why);
     };
     for (const MatVariableInfo& v : vars) {
         if (!v.usable)
             continue;
         if (v.elements > kMaxMatVariableElements)
-            leave(v, "more than the " + std::to_string(kMaxMatVariableElements) + " elements one variable may hold");
+            leave(v, "more than the " + std::to_string(kMaxMatVariableElements) +
+                         " elements one variable may hold");
         else if (chosen.size() == kMaxExperimentColumns)
-            leave(v, "a table holds at most " + std::to_string(kMaxExperimentColumns) + " variables");
+            leave(v,
+                  "a table holds at most " + std::to_string(kMaxExperimentColumns) + " variables");
         else if (total + v.elements > kMaxMatTableElements)
             leave(v, "the variables before it already hold " + std::to_string(total) + " of the " +
                          std::to_string(kMaxMatTableElements) + " elements one read may hold");
@@ -504,8 +590,9 @@ ExperimentTable readMat(const std::string& path, const std::vector<std::string>&
         if (slot == chosen.size())
             continue;
         const MatVariableInfo& info = *chosen[slot];
-        if (Mat_VarReadDataAll(m.get(), v.get()) != 0 || !v->name || v->name != info.name || v->rank != 2 ||
-            !v->dims || !numericClass(v->class_type) || v->isComplex || v->dims[0] * v->dims[1] != info.rows * info.columns)
+        if (Mat_VarReadDataAll(m.get(), v.get()) != 0 || !v->name || v->name != info.name ||
+            v->rank != 2 || !v->dims || !numericClass(v->class_type) || v->isComplex ||
+            v->dims[0] * v->dims[1] != info.rows * info.columns)
             throw unreadable(path, info.name);
         data[slot] = elements(*v, path, info.name);
         ++done;
@@ -520,7 +607,8 @@ ExperimentTable readMat(const std::string& path, const std::vector<std::string>&
         t.columns[c] = std::move(data[k]);
         for (std::size_t r = 0; r < t.columns[c].size(); ++r)
             if (!std::isfinite(t.columns[c][r])) {
-                noteCellProblem(t, c, r, std::isnan(t.columns[c][r]) ? "NaN" : "Inf", "is NaN or infinite");
+                noteCellProblem(t, c, r, std::isnan(t.columns[c][r]) ? "NaN" : "Inf",
+                                "is NaN or infinite");
                 break;
             }
         longest = std::max(longest, t.columns[c].size());

@@ -16,8 +16,8 @@ struct MatVariableInfo {
     std::size_t rows = 0, columns = 0; ///< of a rank-2 variable (0, 0 for other ranks)
     std::string className;             ///< "double", "single", "int16", ..., "char", "struct", ...
     std::uint64_t elements = 0;        ///< the product of all its dimensions (what it claims)
-    bool usable = false;               ///< a real numeric vector (1 x n or n x 1, n >= 1), not logical
-    std::string whyNot;                ///< when not usable: "is complex", "is a cell array", ...
+    bool usable = false; ///< a real numeric vector (1 x n or n x 1, n >= 1), not logical
+    std::string whyNot;  ///< when not usable: "is complex", "is a cell array", ...
 };
 
 /// The most elements one MAT variable may hold to be read: 2^24 (16 777 216, 128 MiB as
@@ -60,9 +60,9 @@ MatFileInfo listMatVariables(const std::string& path);
  * used).
  *
  * With @p names empty (a caller that shows the file's variables to choose from), every usable
- * vector is read in the order listed (file order; HDF5 lists v7.3 variables by name), except those beyond kMaxMatVariableElements, beyond
- * kMaxExperimentColumns or beyond kMaxMatTableElements in total: these are left out, each with
- * a line in the table's warnings naming it and why.
+ * vector is read in the order listed (file order; HDF5 lists v7.3 variables by name), except those
+ * beyond kMaxMatVariableElements, beyond kMaxExperimentColumns or beyond kMaxMatTableElements in
+ * total: these are left out, each with a line in the table's warnings naming it and why.
  * @throws FileError as listMatVariables; InvalidInput naming the file, before any data is read:
  *         more than kMaxExperimentColumns names, a name given twice, a name that is not in the
  *         file (with the list of usable ones), a variable that is not a real numeric vector

@@ -26,9 +26,13 @@ void requireMonic(const std::vector<double>& p, const std::string& field) {
 
 } // namespace
 
-std::vector<double> PolynomialModel::inputDenominator() const { return polynomialProduct(a, f); }
+std::vector<double> PolynomialModel::inputDenominator() const {
+    return polynomialProduct(a, f);
+}
 
-std::vector<double> PolynomialModel::noiseDenominator() const { return polynomialProduct(a, d); }
+std::vector<double> PolynomialModel::noiseDenominator() const {
+    return polynomialProduct(a, d);
+}
 
 void PolynomialModel::validate() const {
     requireMonic(a, "model.a");

@@ -34,11 +34,11 @@ struct PolynomialModel {
 
 /// How an estimation ended. Invalid input is thrown instead (InvalidInput).
 enum class EstimationStatus {
-    Converged,                ///< a least-squares solution, or the search met its tolerance
-    IterationLimit,           ///< the search stopped at maxIterations (the estimate is the best seen)
-    Cancelled,                ///< the progress callback returned false (the best estimate so far)
-    NotPersistentlyExciting,  ///< rank-deficient regressor: no unique estimate (see message)
-    Failed,                   ///< a non-finite loss or Jacobian: no estimate
+    Converged,      ///< a least-squares solution, or the search met its tolerance
+    IterationLimit, ///< the search stopped at maxIterations (the estimate is the best seen)
+    Cancelled,      ///< the progress callback returned false (the best estimate so far)
+    NotPersistentlyExciting, ///< rank-deficient regressor: no unique estimate (see message)
+    Failed,                  ///< a non-finite loss or Jacobian: no estimate
 };
 /// "converged", "iteration-limit", "cancelled", "not-persistently-exciting", "failed".
 std::string estimationStatusName(EstimationStatus status);

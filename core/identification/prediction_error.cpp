@@ -226,8 +226,8 @@ void requireInitialLengths(const Structure& s, const PolynomialModel& m) {
                                           " coefficients");
     if (m.f.size() != s.nf + 1 || m.f[0] != 1.0)
         throw InvalidInput("initial", "F must be monic with nf + 1 coefficients");
-    if (s.boxJenkins && (m.c.size() != s.nc + 1 || m.d.size() != s.nd + 1 || m.c[0] != 1.0 ||
-                         m.d[0] != 1.0))
+    if (s.boxJenkins &&
+        (m.c.size() != s.nc + 1 || m.d.size() != s.nd + 1 || m.c[0] != 1.0 || m.d[0] != 1.0))
         throw InvalidInput("initial", "C and D must be monic with nc + 1 and nd + 1 coefficients");
 }
 
@@ -241,8 +241,7 @@ PemResult estimate(const Structure& s, const std::string& name, const IoData& da
     const std::size_t n0 = std::max(s.nf, s.nk + s.nb - 1);
     if (n < n0 + d + 1)
         throw InvalidInput("data", std::to_string(n) + " samples are too few for " + name +
-                                       ": at least " + std::to_string(n0 + d + 1) +
-                                       " needed");
+                                       ": at least " + std::to_string(n0 + d + 1) + " needed");
     PemResult out;
     out.structure = name;
     out.samples = n;
@@ -277,8 +276,9 @@ PemResult estimate(const Structure& s, const std::string& name, const IoData& da
 
     BjPredictor predictor(s, data);
     NonlinearProblem problem;
-    problem.evaluate = [&](const Eigen::VectorXd& theta, Eigen::VectorXd& e,
-                           Eigen::MatrixXd* jac) { return predictor(theta, e, jac); };
+    problem.evaluate = [&](const Eigen::VectorXd& theta, Eigen::VectorXd& e, Eigen::MatrixXd* jac) {
+        return predictor(theta, e, jac);
+    };
     problem.project = [&](Eigen::VectorXd& theta) {
         PolynomialModel m = unpack(s, theta, data.tsSeconds);
         bool changed = reflectUnstableRoots(m.f);
@@ -287,8 +287,8 @@ PemResult estimate(const Structure& s, const std::string& name, const IoData& da
         if (changed)
             theta = pack(s, m);
     };
-    const SearchOutcome r = levenbergMarquardt(problem, pack(s, start), options.search,
-                           exactFitLoss(data.y));
+    const SearchOutcome r =
+        levenbergMarquardt(problem, pack(s, start), options.search, exactFitLoss(data.y));
     takeSearchSummary(r, out);
     if (r.status == EstimationStatus::Failed)
         return out;
@@ -319,8 +319,8 @@ void OeOrders::validate() const {
 }
 
 std::string BjOrders::toString() const {
-    return "BJ(" + std::to_string(nb) + "," + std::to_string(nc) + "," + std::to_string(nd) +
-           "," + std::to_string(nf) + "," + std::to_string(nk) + ")";
+    return "BJ(" + std::to_string(nb) + "," + std::to_string(nc) + "," + std::to_string(nd) + "," +
+           std::to_string(nf) + "," + std::to_string(nk) + ")";
 }
 
 void BjOrders::validate() const {
@@ -333,9 +333,9 @@ void BjOrders::validate() const {
 
 PemResult estimateOe(const IoData& data, const OeOrders& orders, const PemOptions& options) {
     orders.validate();
-    const Structure s{static_cast<std::size_t>(orders.nb), 0, 0,
-                      static_cast<std::size_t>(orders.nf), static_cast<std::size_t>(orders.nk),
-                      false};
+    const Structure s{
+        static_cast<std::size_t>(orders.nb), 0,    0, static_cast<std::size_t>(orders.nf),
+        static_cast<std::size_t>(orders.nk), false};
     return estimate(s, orders.toString(), data, options);
 }
 

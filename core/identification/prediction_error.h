@@ -20,9 +20,9 @@ namespace xyt {
  * B has nb coefficients after nk delays, F = 1 + f1 q^-1 + ... + f_nf q^-nf.
  */
 struct OeOrders {
-    int nb = 3; ///< >= 1
-    int nf = 2; ///< >= 0
-    int nk = 1; ///< >= 0
+    int nb = 3;                   ///< >= 1
+    int nf = 2;                   ///< >= 0
+    int nk = 1;                   ///< >= 0
     std::string toString() const; ///< "OE(3,2,1)"
     /// @throws InvalidInput "nb", "nf", "nk" (nb >= 1, the others >= 0, each at most 100).
     void validate() const;
@@ -33,11 +33,11 @@ struct OeOrders {
  * (MATLAB's `bj` orders nb, nc, nd, nf, nk); C and D monic of degrees nc and nd.
  */
 struct BjOrders {
-    int nb = 3; ///< >= 1
-    int nc = 1; ///< >= 0
-    int nd = 1; ///< >= 0
-    int nf = 2; ///< >= 0
-    int nk = 1; ///< >= 0
+    int nb = 3;                   ///< >= 1
+    int nc = 1;                   ///< >= 0
+    int nd = 1;                   ///< >= 0
+    int nf = 2;                   ///< >= 0
+    int nk = 1;                   ///< >= 0
     std::string toString() const; ///< "BJ(3,1,1,2,1)"
     /// @throws InvalidInput "nb", "nc", "nd", "nf", "nk" as OeOrders::validate.
     void validate() const;
@@ -65,11 +65,11 @@ struct PemOptions {
  */
 struct PemResult {
     EstimationStatus status = EstimationStatus::Failed;
-    std::string message; ///< how the search ended, or why it failed
+    std::string message;   ///< how the search ended, or why it failed
     std::string structure; ///< "OE(3,2,1)" or "BJ(3,1,1,2,1)"
     PolynomialModel model;
-    PolynomialModel initialModel;  ///< where the search started
-    std::string initialization;    ///< "instrumental variable", "ARX" or "given"
+    PolynomialModel initialModel; ///< where the search started
+    std::string initialization;   ///< "instrumental variable", "ARX" or "given"
     std::vector<double> parameters;
     std::vector<std::string> parameterNames;
     /// sigma^2 (J^T J)^-1 with J = de/dtheta at the estimate (d x d, theta's order); empty

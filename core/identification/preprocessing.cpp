@@ -128,11 +128,13 @@ std::vector<BiquadSection> decimationFilter(int factor) {
     const double eps = std::sqrt(std::pow(10.0, kDecimationRippleDb / 10.0) - 1.0);
     const double mu = std::asinh(1.0 / eps) / n;
     const double wc = kDecimationEdge * std::numbers::pi / factor; // rad/sample
-    const double warped = std::tan(wc / 2.0); // bilinear s = (1 - z^-1)/(1 + z^-1): Omega = tan(w/2)
+    const double warped =
+        std::tan(wc / 2.0); // bilinear s = (1 - z^-1)/(1 + z^-1): Omega = tan(w/2)
     std::vector<BiquadSection> sections;
     for (int k = 1; k <= n / 2; ++k) {
         const double theta = (2.0 * k - 1.0) * std::numbers::pi / (2.0 * n);
-        const std::complex<double> p(-std::sinh(mu) * std::sin(theta), std::cosh(mu) * std::cos(theta));
+        const std::complex<double> p(-std::sinh(mu) * std::sin(theta),
+                                     std::cosh(mu) * std::cos(theta));
         const std::complex<double> s = warped * p;
         const std::complex<double> z = (1.0 + s) / (1.0 - s);
         BiquadSection sec;
@@ -146,10 +148,12 @@ std::vector<BiquadSection> decimationFilter(int factor) {
     return sections;
 }
 
-std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections, const std::vector<double>& x) {
+std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections,
+                                    const std::vector<double>& x) {
     const std::size_t n = x.size();
     if (n <= kPad)
-        throw InvalidInput("data", "zero-phase filtering needs more than " + std::to_string(kPad) + " samples");
+        throw InvalidInput("data", "zero-phase filtering needs more than " + std::to_string(kPad) +
+                                       " samples");
     std::vector<double> padded;
     padded.reserve(n + 2 * kPad);
     for (std::size_t k = kPad; k >= 1; --k)
@@ -161,7 +165,8 @@ std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections, 
     std::reverse(padded.begin(), padded.end());
     runCascade(sections, padded);
     std::reverse(padded.begin(), padded.end());
-    return std::vector<double>(padded.begin() + kPad, padded.begin() + static_cast<std::ptrdiff_t>(kPad + n));
+    return std::vector<double>(padded.begin() + kPad,
+                               padded.begin() + static_cast<std::ptrdiff_t>(kPad + n));
 }
 
 IoData decimate(const IoData& data, int factor) {
@@ -172,7 +177,8 @@ IoData decimate(const IoData& data, int factor) {
     if (factor == 1)
         return data;
     if (data.size() <= kPad)
-        throw InvalidInput("data", "has " + std::to_string(data.size()) + " samples; decimation needs more than " +
+        throw InvalidInput("data", "has " + std::to_string(data.size()) +
+                                       " samples; decimation needs more than " +
                                        std::to_string(kPad));
     const std::vector<BiquadSection> sections = decimationFilter(factor);
     const std::vector<double> u = zeroPhaseFilter(sections, data.u);
@@ -189,8 +195,9 @@ IoData decimate(const IoData& data, int factor) {
 }
 
 IoData preprocess(const IoData& data, const PreprocessingSteps& steps) {
-    IoData out = steps.rangeSeconds ? selectTimeRange(data, (*steps.rangeSeconds)[0], (*steps.rangeSeconds)[1])
-                                    : data;
+    IoData out = steps.rangeSeconds
+                     ? selectTimeRange(data, (*steps.rangeSeconds)[0], (*steps.rangeSeconds)[1])
+                     : data;
     if (steps.offsets == OffsetRemoval::Trends)
         out = removeTrends(out).data;
     else if (steps.offsets == OffsetRemoval::Means)

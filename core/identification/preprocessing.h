@@ -40,8 +40,8 @@ Detrended removeTrends(const IoData& data);
  * passband ripple and its ripple edge at 0.8 x the new Nyquist frequency (0.8 / factor of the old
  * one), the filter MATLAB's decimate uses, as 4 second-order sections from the analogue
  * prototype by the bilinear transform with prewarping, scaled to unit gain at DC:
- *   |H(e^{jw})|^2 = (1 + eps^2) / (1 + eps^2 T_8^2(tan(w/2) / tan(wc/2))), eps^2 = 10^(0.05/10) - 1,
- *   wc = 0.8 pi / factor (rad/sample), T_8 the Chebyshev polynomial; so 1 <= |H| <= 1.0058
+ *   |H(e^{jw})|^2 = (1 + eps^2) / (1 + eps^2 T_8^2(tan(w/2) / tan(wc/2))), eps^2 = 10^(0.05/10) -
+ * 1, wc = 0.8 pi / factor (rad/sample), T_8 the Chebyshev polynomial; so 1 <= |H| <= 1.0058
  *   (+0.05 dB) below wc. (MATLAB's cheby1 has DC at the bottom of the ripple, |H(1)| = 0.9943;
  *   here a step keeps its level.)
  * Each section: (b0 + b1 z^-1 + b2 z^-2) / (1 + a1 z^-1 + a2 z^-2), coefficients ascending.
@@ -60,10 +60,10 @@ inline constexpr double kDecimationEdge = 0.8; ///< fraction of the new Nyquist 
 /**
  * Keeps every @p factor-th sample (k = 0, factor, 2 factor, ...) of u and y after filtering both
  * with decimationFilter(factor) forward and then backward (zero phase, magnitude squared:
- * passband gain from 0 to +0.1 dB). As MATLAB's filtfilt, the ends are padded with the odd reflection of
- * 3 x 8 = 24 samples and every section starts in its steady state for the first padded value,
- * so a record does not start with the filter's transient. Ts becomes
- * factor Ts, startSeconds is kept. factor 1 returns the data unchanged.
+ * passband gain from 0 to +0.1 dB). As MATLAB's filtfilt, the ends are padded with the odd
+ * reflection of 3 x 8 = 24 samples and every section starts in its steady state for the first
+ * padded value, so a record does not start with the filter's transient. Ts becomes factor Ts,
+ * startSeconds is kept. factor 1 returns the data unchanged.
  * @throws InvalidInput "factor" (< 1 or > 1000), "data" (for factor > 1 fewer than 25 samples,
  *         too short to pad, as MATLAB's filtfilt requires; unequal lengths; Ts not > 0).
  */
@@ -87,6 +87,7 @@ struct PreprocessingSteps {
 IoData preprocess(const IoData& data, const PreprocessingSteps& steps);
 
 /// One signal filtered by the sections forward and backward, ends padded as decimate() does.
-std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections, const std::vector<double>& x);
+std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections,
+                                    const std::vector<double>& x);
 
 } // namespace xyt

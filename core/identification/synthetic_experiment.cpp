@@ -26,30 +26,32 @@ void addNoise(std::vector<double>& y, double sigma, std::uint64_t seed) {
 }
 
 std::string noiseText(double sigma, std::uint64_t seed) {
-    return sigma > 0.0 ? ", white Gaussian measurement noise " + formatNumber(sigma) + " mm rms, seed " +
-                             std::to_string(seed)
+    return sigma > 0.0 ? ", white Gaussian measurement noise " + formatNumber(sigma) +
+                             " mm rms, seed " + std::to_string(seed)
                        : ", no noise";
 }
 
 } // namespace
 
-ExcitationSignal simulateExperiment(ExcitationSignal command, const ThirdOrderPlant& plantMm, double noiseStdMm,
-                                    std::uint64_t seed) {
+ExcitationSignal simulateExperiment(ExcitationSignal command, const ThirdOrderPlant& plantMm,
+                                    double noiseStdMm, std::uint64_t seed) {
     command.y = simulateThirdOrderPlant(plantMm, command.u, command.tsSeconds);
     addNoise(command.y, noiseStdMm, seed);
-    command.description = "SYNTHETIC experiment (simulated by XY Tune, not measured): " + command.description +
-                          " into k0/(s^3+a1 s^2+a2 s) with k0 = " + formatNumber(plantMm.k0) +
-                          " mm/(V s^3), a1 = " + formatNumber(plantMm.a1) + ", a2 = " + formatNumber(plantMm.a2) +
-                          noiseText(noiseStdMm, seed);
+    command.description =
+        "SYNTHETIC experiment (simulated by XY Tune, not measured): " + command.description +
+        " into k0/(s^3+a1 s^2+a2 s) with k0 = " + formatNumber(plantMm.k0) +
+        " mm/(V s^3), a1 = " + formatNumber(plantMm.a1) + ", a2 = " + formatNumber(plantMm.a2) +
+        noiseText(noiseStdMm, seed);
     return command;
 }
 
-ExcitationSignal simulateExperiment(ExcitationSignal command, const PolynomialModel& model, double noiseStdMm,
-                                    std::uint64_t seed) {
+ExcitationSignal simulateExperiment(ExcitationSignal command, const PolynomialModel& model,
+                                    double noiseStdMm, std::uint64_t seed) {
     model.validate();
     if (!(std::abs(model.tsSeconds - command.tsSeconds) <= 1e-9 * command.tsSeconds))
         throw InvalidInput("ts", "the command's sample time " + formatNumber(command.tsSeconds) +
-                                     " s is not the model's " + formatNumber(model.tsSeconds) + " s");
+                                     " s is not the model's " + formatNumber(model.tsSeconds) +
+                                     " s");
     command.y = simulateModel(model, command.u);
     addNoise(command.y, noiseStdMm, seed);
     std::string a, b;
@@ -57,9 +59,10 @@ ExcitationSignal simulateExperiment(ExcitationSignal command, const PolynomialMo
         a += (a.empty() ? "" : ", ") + formatNumber(v);
     for (double v : model.b)
         b += (b.empty() ? "" : ", ") + formatNumber(v);
-    command.description = "SYNTHETIC experiment (simulated by XY Tune, not measured): " + command.description +
-                          " into B/A with A = [" + a + "], B = [" + b + "] (ascending z^-1, Ts " +
-                          formatNumber(model.tsSeconds) + " s)" + noiseText(noiseStdMm, seed);
+    command.description =
+        "SYNTHETIC experiment (simulated by XY Tune, not measured): " + command.description +
+        " into B/A with A = [" + a + "], B = [" + b + "] (ascending z^-1, Ts " +
+        formatNumber(model.tsSeconds) + " s)" + noiseText(noiseStdMm, seed);
     return command;
 }
 

@@ -21,9 +21,9 @@ namespace xyt {
  * @throws InvalidInput "noise_std" (< 0 or not finite), "ts" (the model's Ts differs from the
  *         command's by more than 1e-9 relative), and from the model.
  */
-ExcitationSignal simulateExperiment(ExcitationSignal command, const ThirdOrderPlant& plantMm, double noiseStdMm,
-                                    std::uint64_t seed);
-ExcitationSignal simulateExperiment(ExcitationSignal command, const PolynomialModel& model, double noiseStdMm,
-                                    std::uint64_t seed);
+ExcitationSignal simulateExperiment(ExcitationSignal command, const ThirdOrderPlant& plantMm,
+                                    double noiseStdMm, std::uint64_t seed);
+ExcitationSignal simulateExperiment(ExcitationSignal command, const PolynomialModel& model,
+                                    double noiseStdMm, std::uint64_t seed);
 
 } // namespace xyt

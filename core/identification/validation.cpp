@@ -199,7 +199,8 @@ ArxOrderTable arxOrderTable(const IoData& estimation, const IoData* validation, 
     validateIoData(estimation);
     if (validation)
         validateIoData(*validation);
-    for (const auto& [range, field] : {std::pair{na, "na"}, std::pair{nb, "nb"}, std::pair{nk, "nk"}})
+    for (const auto& [range, field] :
+         {std::pair{na, "na"}, std::pair{nb, "nb"}, std::pair{nk, "nk"}})
         if (range.min > range.max)
             throw InvalidInput(field, "range has min > max");
     ArxOrders{na.min, nb.min, nk.min}.validate();
@@ -213,8 +214,8 @@ ArxOrderTable arxOrderTable(const IoData& estimation, const IoData* validation, 
     for (int k = nk.min; k <= nk.max; ++k)
         for (int a = na.min; a <= na.max; ++a)
             for (int b = nb.min; b <= nb.max; ++b) {
-                if (progress &&
-                    !progress(static_cast<double>(table.rows.size()) / static_cast<double>(total))) {
+                if (progress && !progress(static_cast<double>(table.rows.size()) /
+                                          static_cast<double>(total))) {
                     table.cancelled = true;
                     return table;
                 }
@@ -280,7 +281,8 @@ ResidualAnalysis residualAnalysis(const std::vector<double>& residuals,
     for (const auto* v : {&e, &u}) {
         for (double x : *v)
             if (!std::isfinite(x))
-                throw InvalidInput(v == &e ? "residuals" : "input", "has a value that is not finite");
+                throw InvalidInput(v == &e ? "residuals" : "input",
+                                   "has a value that is not finite");
     }
     const auto demean = [](std::vector<double>& v) {
         double m = 0.0;

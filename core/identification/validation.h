@@ -93,16 +93,16 @@ struct ArxOrderRow {
     ArxOrders orders;
     EstimationStatus status = EstimationStatus::Failed;
     std::string message;
-    double loss = 0.0;      ///< V on the common estimation rows
-    double fpe = 0.0;       ///< informationCriteria(loss, rows, na + nb)
+    double loss = 0.0; ///< V on the common estimation rows
+    double fpe = 0.0;  ///< informationCriteria(loss, rows, na + nb)
     double aic = 0.0;
     double validationLoss = 0.0; ///< one-step loss on the validation data (NaN without them)
 };
 
 /// The table of arxOrderTable.
 struct ArxOrderTable {
-    std::vector<ArxOrderRow> rows; ///< nk outermost, then na, then nb, all ascending
-    std::size_t commonFirstRow = 0; ///< losses are over samples commonFirstRow .. N-1
+    std::vector<ArxOrderRow> rows;             ///< nk outermost, then na, then nb, all ascending
+    std::size_t commonFirstRow = 0;            ///< losses are over samples commonFirstRow .. N-1
     std::optional<std::size_t> bestAic;        ///< index of the smallest AIC
     std::optional<std::size_t> bestValidation; ///< index of the smallest validation loss
     bool cancelled = false;
@@ -174,13 +174,13 @@ struct ModelRoots {
     /// Continuous poles and zeros, for models that have them (thirdOrderPlantRoots), else empty.
     std::vector<std::complex<double>> continuousPoles;
     std::vector<std::complex<double>> continuousZeros;
-    bool stable = true;          ///< every pole strictly inside the unit circle
+    bool stable = true; ///< every pole strictly inside the unit circle
     /// Not stable only through poles at z = 1 (an integrator, as a position output of a motor
     /// axis has): every other pole strictly inside. A pole counts as at 1 within 1e-6, the
     /// accuracy of a double root there from the companion-matrix eigenvalues (sqrt(eps) ~ 1.5e-8)
     /// with margin; a pole at 1 and a pole just outside cannot be told apart better than that.
     bool integrating = false;
-    bool nonMinimumPhase = false; ///< a zero of B on or outside the unit circle
+    bool nonMinimumPhase = false;   ///< a zero of B on or outside the unit circle
     std::vector<std::string> notes; ///< e.g. the NMP zero and what it implies
 };
 /// @throws InvalidInput from model.validate(), "model.b" when B is all zeros.

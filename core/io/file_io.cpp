@@ -41,7 +41,9 @@ WriteStep failingStep() {
     return injectedFailure;
 }
 
-std::string systemReason(int error) { return std::strerror(error); }
+std::string systemReason(int error) {
+    return std::strerror(error);
+}
 
 /// The folder part of a path ("." for a bare name).
 std::string folderOf(const std::string& path) {
@@ -144,8 +146,8 @@ void removeStaleTemporaries(const std::string& folder) {
         if (pid <= 0 || pid == self)
             continue;
         struct stat st {};
-        if (::fstatat(dirFd, entry->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(st.st_mode) ||
-            st.st_uid != ::geteuid())
+        if (::fstatat(dirFd, entry->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0 ||
+            !S_ISREG(st.st_mode) || st.st_uid != ::geteuid())
             continue;
         if (::kill(pid, 0) == -1 && errno == ESRCH)
             ::unlinkat(dirFd, entry->d_name, 0);
@@ -170,7 +172,9 @@ bool isSharedStickyFolder(const std::string& folder, uid_t* owner) {
     return S_ISDIR(st.st_mode) && (st.st_mode & S_ISVTX) && (st.st_mode & S_IWOTH);
 }
 
-std::string uidText(uid_t uid) { return "uid " + std::to_string(uid); }
+std::string uidText(uid_t uid) {
+    return "uid " + std::to_string(uid);
+}
 
 /// Follows the symbolic links of @p path's last component (a chain of at most 40, as the kernel
 /// allows) with the ownership rules of writeFileAtomically.
@@ -187,8 +191,9 @@ WriteTarget resolveWriteTarget(const std::string& path) {
             // our own, since another user's link would choose where we create a file.
             for (const uid_t owner : linkOwners)
                 if (owner != self)
-                    throw FileError(path, "is a symbolic link of another user (" + uidText(owner) +
-                                              ") to a file that does not exist; refusing to create it");
+                    throw FileError(path,
+                                    "is a symbolic link of another user (" + uidText(owner) +
+                                        ") to a file that does not exist; refusing to create it");
             return {current, false, {}};
         }
         uid_t folderOwner = 0;
@@ -197,21 +202,26 @@ WriteTarget resolveWriteTarget(const std::string& path) {
             if (S_ISDIR(st.st_mode))
                 throw FileError(path, "is a directory");
             if (!S_ISREG(st.st_mode))
-                throw FileError(path, "is not a regular file (a device, FIFO or socket); refusing to replace it");
+                throw FileError(
+                    path,
+                    "is not a regular file (a device, FIFO or socket); refusing to replace it");
             // A link may only lead to a file of its own owner: otherwise whoever made the link
             // chooses someone else's file for us to replace (root following a user's link onto
             // a system file, or onto another user's file).
             for (const uid_t owner : linkOwners)
                 if (st.st_uid != owner)
-                    throw FileError(path, "is a symbolic link to a file of another user (the file: " +
-                                              uidText(st.st_uid) + ", the link: " + uidText(owner) +
-                                              "); refusing to replace it");
+                    throw FileError(path,
+                                    "is a symbolic link to a file of another user (the file: " +
+                                        uidText(st.st_uid) + ", the link: " + uidText(owner) +
+                                        "); refusing to replace it");
             // What the kernel's protected_regular does for open(O_CREAT): in a shared sticky
             // folder a file planted by another user is not ours to fill (keeping its owner
             // would hand our content to that user).
             if (shared && st.st_uid != self && st.st_uid != folderOwner)
-                throw FileError(path, "is a file of another user (" + uidText(st.st_uid) +
-                                          ") in a folder everyone may write to (sticky); refusing to replace it");
+                throw FileError(
+                    path,
+                    "is a file of another user (" + uidText(st.st_uid) +
+                        ") in a folder everyone may write to (sticky); refusing to replace it");
             return {current, true, st};
         }
         if (hops == 40)
@@ -219,8 +229,9 @@ WriteTarget resolveWriteTarget(const std::string& path) {
         // What the kernel's protected_symlinks enforces, whether or not it is switched on: in a
         // shared sticky folder only a link of our own or of the folder's owner is followed.
         if (shared && st.st_uid != self && st.st_uid != folderOwner)
-            throw FileError(path, "is a symbolic link of another user (" + uidText(st.st_uid) +
-                                      ") in a folder everyone may write to (sticky); refusing to follow it");
+            throw FileError(
+                path, "is a symbolic link of another user (" + uidText(st.st_uid) +
+                          ") in a folder everyone may write to (sticky); refusing to follow it");
         linkOwners.push_back(st.st_uid);
         std::string link(PATH_MAX, '\0');
         const ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
@@ -320,7 +331,8 @@ std::string readRegularFile(const std::string& path, std::size_t maxBytes) {
     if (S_ISDIR(st.st_mode))
         throw FileError(path, "is a directory, not a session file");
     if (!S_ISREG(st.st_mode))
-        throw FileError(path, "is not a regular file (a device, FIFO or socket); refusing to read it");
+        throw FileError(path,
+                        "is not a regular file (a device, FIFO or socket); refusing to read it");
     if (static_cast<unsigned long long>(st.st_size) > maxBytes)
         throw FileError(path, std::to_string(st.st_size) + " bytes is larger than the limit of " +
                                   std::to_string(maxBytes) + " bytes");

@@ -54,7 +54,8 @@ using ByteSink = std::function<void(std::string_view)>;
  * @throws FileError naming @p path with the reason, including "is not a regular file" for a
  *         folder, device, FIFO or socket (never replaced) and the refused links and files above.
  */
-void writeFileAtomically(const std::string& path, const std::function<void(const ByteSink&)>& produce);
+void writeFileAtomically(const std::string& path,
+                         const std::function<void(const ByteSink&)>& produce);
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 
 /**

@@ -64,8 +64,8 @@ private:
     };
 
     static bool isDelimiter(char c) {
-        return c == ',' || c == '}' || c == ']' || c == ':' || c == ' ' || c == '\t' ||
-               c == '\n' || c == '\r' || c == '"' || c == '{' || c == '[';
+        return c == ',' || c == '}' || c == ']' || c == ':' || c == ' ' || c == '\t' || c == '\n' ||
+               c == '\r' || c == '"' || c == '{' || c == '[';
     }
 
     static int hex(char c) {
@@ -116,11 +116,21 @@ private:
                 break;
             const char e = s_[i_++];
             switch (e) {
-            case 'b': out += '\b'; break;
-            case 'f': out += '\f'; break;
-            case 'n': out += '\n'; break;
-            case 'r': out += '\r'; break;
-            case 't': out += '\t'; break;
+            case 'b':
+                out += '\b';
+                break;
+            case 'f':
+                out += '\f';
+                break;
+            case 'n':
+                out += '\n';
+                break;
+            case 'r':
+                out += '\r';
+                break;
+            case 't':
+                out += '\t';
+                break;
             case 'u': {
                 unsigned cp = readHex4();
                 if (cp >= 0xD800 && cp < 0xDC00 && i_ + 1 < s_.size() && s_[i_] == '\\' &&
@@ -132,7 +142,8 @@ private:
                 appendUtf8(out, cp);
                 break;
             }
-            default: out += e; // \" \\ \/
+            default:
+                out += e; // \" \\ \/
             }
         }
         ++i_; // the closing quote

@@ -73,7 +73,8 @@ std::string commentText(std::string_view text, CommentSyntax syntax, std::size_t
             const char c = text[i];
             if (syntax == CommentSyntax::C && !out.empty() && d.length == 1) {
                 const char last = out.back();
-                if ((last == '*' && c == '/') || (last == '/' && c == '*') || (last == '?' && c == '?'))
+                if ((last == '*' && c == '/') || (last == '/' && c == '*') ||
+                    (last == '?' && c == '?'))
                     out += ' ';
             }
             out.append(text.substr(i, d.length));
@@ -93,7 +94,8 @@ std::string terminalText(std::string_view text) {
             std::snprintf(buf, sizeof buf, "\\x%02x", static_cast<unsigned char>(text[i]));
             out += buf;
         } else if (!printable(d.codePoint)) {
-            std::snprintf(buf, sizeof buf, d.codePoint < 0x100 ? "\\x%02lx" : "\\u%04lx", d.codePoint);
+            std::snprintf(buf, sizeof buf, d.codePoint < 0x100 ? "\\x%02lx" : "\\u%04lx",
+                          d.codePoint);
             out += buf;
         } else if (text[i] == '\\') {
             out += "\\\\";

@@ -67,10 +67,10 @@ std::vector<double> parseCoefficientList(std::string_view text, const std::strin
         while (j < end && !isSeparator(text[j]))
             ++j;
         if (values.size() == kMaxCoefficients)
-            throw InvalidInput(field, "more than " + std::to_string(kMaxCoefficients) +
-                                          " coefficients");
-        values.push_back(parseNumber(text.substr(i, j - i),
-                                     field + "[" + std::to_string(values.size()) + "]"));
+            throw InvalidInput(field,
+                               "more than " + std::to_string(kMaxCoefficients) + " coefficients");
+        values.push_back(
+            parseNumber(text.substr(i, j - i), field + "[" + std::to_string(values.size()) + "]"));
         i = j;
     }
     if (values.empty())

@@ -6,7 +6,9 @@
 
 namespace xyt {
 
-double uniformOpen53(std::mt19937_64& rng) { return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53; }
+double uniformOpen53(std::mt19937_64& rng) {
+    return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53;
+}
 
 double standardNormal(std::mt19937_64& rng) {
     const double r = uniformOpen53(rng); // drawn in this order, as two statements

@@ -16,7 +16,9 @@ namespace xyt {
 
 Polynomial::Polynomial() : c_{0.0} {}
 
-Polynomial::Polynomial(std::vector<double> c) : c_(std::move(c)) { trim(); }
+Polynomial::Polynomial(std::vector<double> c) : c_(std::move(c)) {
+    trim();
+}
 
 void Polynomial::trim() {
     while (c_.size() > 1 && c_.back() == 0.0)
@@ -38,9 +40,13 @@ Polynomial Polynomial::fromDescending(const std::vector<double>& coefficients,
     return Polynomial(std::vector<double>(coefficients.rbegin(), coefficients.rend()));
 }
 
-Polynomial Polynomial::constant(double c) { return fromAscending({c}); }
+Polynomial Polynomial::constant(double c) {
+    return fromAscending({c});
+}
 
-Polynomial Polynomial::identity() { return Polynomial(std::vector<double>{0.0, 1.0}); }
+Polynomial Polynomial::identity() {
+    return Polynomial(std::vector<double>{0.0, 1.0});
+}
 
 Polynomial Polynomial::fromRoots(const std::vector<Complex>& roots, double gain) {
     std::vector<Complex> c{Complex(gain)};
@@ -63,7 +69,9 @@ double Polynomial::coefficient(int i) const {
     return (i >= 0 && i < static_cast<int>(c_.size())) ? c_[static_cast<std::size_t>(i)] : 0.0;
 }
 
-std::vector<double> Polynomial::descending() const { return {c_.rbegin(), c_.rend()}; }
+std::vector<double> Polynomial::descending() const {
+    return {c_.rbegin(), c_.rend()};
+}
 
 double Polynomial::operator()(double x) const {
     double acc = 0.0;
@@ -180,7 +188,9 @@ Polynomial operator+(const Polynomial& a, const Polynomial& b) {
     return Polynomial(std::move(r));
 }
 
-Polynomial operator-(const Polynomial& a, const Polynomial& b) { return a + (-1.0) * b; }
+Polynomial operator-(const Polynomial& a, const Polynomial& b) {
+    return a + (-1.0) * b;
+}
 
 Polynomial operator*(const Polynomial& a, const Polynomial& b) {
     std::vector<double> r(a.c_.size() + b.c_.size() - 1, 0.0);

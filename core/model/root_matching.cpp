@@ -91,8 +91,9 @@ std::vector<std::size_t> matchRoots(const std::vector<std::complex<double>>& pre
     return order;
 }
 
-std::vector<std::complex<double>> continueBranches(const std::vector<std::complex<double>>& previous,
-                                                   const std::vector<std::complex<double>>& next) {
+std::vector<std::complex<double>>
+continueBranches(const std::vector<std::complex<double>>& previous,
+                 const std::vector<std::complex<double>>& next) {
     const std::vector<std::size_t> order = matchRoots(previous, next);
     std::vector<std::complex<double>> result(order.size());
     for (std::size_t i = 0; i < order.size(); ++i)

@@ -21,7 +21,8 @@ std::vector<std::size_t> matchRoots(const std::vector<std::complex<double>>& pre
                                     const std::vector<std::complex<double>>& next);
 
 /// @p next reordered by matchRoots(previous, next): result[i] continues previous[i].
-std::vector<std::complex<double>> continueBranches(const std::vector<std::complex<double>>& previous,
-                                                   const std::vector<std::complex<double>>& next);
+std::vector<std::complex<double>>
+continueBranches(const std::vector<std::complex<double>>& previous,
+                 const std::vector<std::complex<double>>& next);
 
 } // namespace xyt

@@ -98,14 +98,18 @@ FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
     // means exp() lost the matrix: far above the eigenvalue error of a sound result (about
     // eps^(1/m) for an m-fold defective eigenvalue, 1e-4 for m = 4), far below the failures seen.
     if (n > 0) {
-        const double alpha = Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues().real().maxCoeff();
-        const double rho = Eigen::EigenSolver<Eigen::MatrixXd>(foh.phi, false).eigenvalues().cwiseAbs().maxCoeff();
+        const double alpha =
+            Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues().real().maxCoeff();
+        const double rho =
+            Eigen::EigenSolver<Eigen::MatrixXd>(foh.phi, false).eigenvalues().cwiseAbs().maxCoeff();
         const double expected = std::exp(alpha * tsSeconds);
         if (std::isfinite(expected) && !(std::abs(rho - expected) <= 1e-3 * expected + 1e-3))
             throw InvalidInput("ts", "the exact discretization over " + formatNumber(tsSeconds) +
                                          " s loses double precision (a very fast pole beside a "
-                                         "large gain): its step matrix grows by " + formatNumber(rho, 3) +
-                                         " a step where the system grows by " + formatNumber(expected, 3) +
+                                         "large gain): its step matrix grows by " +
+                                         formatNumber(rho, 3) +
+                                         " a step where the system grows by " +
+                                         formatNumber(expected, 3) +
                                          "; use a smaller sample time or rescale the model");
     }
     return foh;

@@ -8,7 +8,8 @@
 
 namespace xyt {
 
-TransferFunction::TransferFunction() : num_(Polynomial::constant(1.0)), den_(Polynomial::constant(1.0)) {}
+TransferFunction::TransferFunction()
+    : num_(Polynomial::constant(1.0)), den_(Polynomial::constant(1.0)) {}
 
 TransferFunction::TransferFunction(const Polynomial& num, const Polynomial& den, double tsSeconds)
     : ts_(tsSeconds) {
@@ -77,8 +78,8 @@ bool vanishesAt(const Polynomial& p, double x) {
     double magnitude = 0.0;
     for (int i = p.degree(); i >= 0; --i)
         magnitude = magnitude * std::abs(x) + std::abs(p.coefficient(i));
-    return std::abs(p(x)) <= 4.0 * (p.degree() + 1) * std::numeric_limits<double>::epsilon() *
-                                 magnitude;
+    return std::abs(p(x)) <=
+           4.0 * (p.degree() + 1) * std::numeric_limits<double>::epsilon() * magnitude;
 }
 } // namespace
 
@@ -103,11 +104,13 @@ double TransferFunction::dcGain() const {
     return nv / dv;
 }
 
-TransferFunction::Complex TransferFunction::operator()(Complex x) const { return num_(x) / den_(x); }
+TransferFunction::Complex TransferFunction::operator()(Complex x) const {
+    return num_(x) / den_(x);
+}
 
 TransferFunction::Complex TransferFunction::frequencyResponse(double omegaRadPerSec) const {
-    const Complex x = isDiscrete() ? std::polar(1.0, omegaRadPerSec * ts_)
-                                   : Complex(0.0, omegaRadPerSec);
+    const Complex x =
+        isDiscrete() ? std::polar(1.0, omegaRadPerSec * ts_) : Complex(0.0, omegaRadPerSec);
     return (*this)(x);
 }
 
@@ -145,9 +148,8 @@ TransferFunction feedback(const TransferFunction& g, const TransferFunction& h, 
     if (sign != 1 && sign != -1)
         throw InvalidInput("sign", "must be +1 or -1");
     // g/(1 - sign g h) = Ng Dh / (Dg Dh - sign Ng Nh)
-    return TransferFunction(g.num() * h.den(),
-                            g.den() * h.den() - static_cast<double>(sign) * (g.num() * h.num()),
-                            ts);
+    return TransferFunction(
+        g.num() * h.den(), g.den() * h.den() - static_cast<double>(sign) * (g.num() * h.num()), ts);
 }
 
 } // namespace xyt

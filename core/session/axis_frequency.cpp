@@ -4,12 +4,13 @@
 #include "core/model/errors.h"
 
 #include <cmath>
-#include <numbers>
 #include <limits>
+#include <numbers>
 
 namespace xyt {
 
-AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEvaluation& evaluation) {
+AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
+                                           const AxisEvaluation& evaluation) {
     AxisFrequencyAnalysis out;
     out.referenceOmegaRadPerSec = session.trajectory.kind == TrajectoryKind::Circle
                                       ? session.trajectory.omegaRadPerSec
@@ -21,7 +22,8 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEva
     try {
         out.loop = evaluation.gt ? gtLoopTransferFunctions(*evaluation.gt)
                                  : rstLoopTransferFunctions(*evaluation.pp);
-        out.margins = evaluation.margins ? *evaluation.margins : stabilityMargins(out.loop.openLoop);
+        out.margins =
+            evaluation.margins ? *evaluation.margins : stabilityMargins(out.loop.openLoop);
         // One grid for every curve, holding the crossovers (where the margins are drawn) and
         // the reference frequency (where the tracking is read).
         FrequencyGridOptions grid;
@@ -32,7 +34,8 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEva
             if (std::isfinite(c.omegaRadPerSec) && c.omegaRadPerSec > 0.0)
                 grid.extraFrequencies.push_back(c.omegaRadPerSec);
         const bool discrete = out.loop.openLoop.tsSeconds() > 0.0;
-        const double nyquistOmega = discrete ? std::numbers::pi / out.loop.openLoop.tsSeconds() : 0.0;
+        const double nyquistOmega =
+            discrete ? std::numbers::pi / out.loop.openLoop.tsSeconds() : 0.0;
         if (std::isfinite(out.referenceOmegaRadPerSec) && out.referenceOmegaRadPerSec > 0.0 &&
             (!discrete || out.referenceOmegaRadPerSec < nyquistOmega))
             grid.extraFrequencies.push_back(out.referenceOmegaRadPerSec);
@@ -40,7 +43,8 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEva
         out.responses = loopFrequencyResponses(out.loop, l.omegaRadPerSec);
         out.nyquist = nyquistCurve(out.loop.openLoop);
         if (evaluation.pp && evaluation.zpetc)
-            out.tracking = zpetcTrackingFrequencyResponses(*evaluation.pp, *evaluation.zpetc, l.omegaRadPerSec);
+            out.tracking = zpetcTrackingFrequencyResponses(*evaluation.pp, *evaluation.zpetc,
+                                                           l.omegaRadPerSec);
         out.ok = true;
     } catch (const InvalidInput& e) {
         const double reference = out.referenceOmegaRadPerSec;

@@ -34,6 +34,7 @@ struct AxisFrequencyAnalysis {
  * Analyses axis @p axis of @p session, whose evaluation is @p evaluation. Never throws: an
  * axis without a design, or a loop the analysis refuses, gives ok = false with the reason.
  */
-AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session, const AxisEvaluation& evaluation);
+AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
+                                           const AxisEvaluation& evaluation);
 
 } // namespace xyt

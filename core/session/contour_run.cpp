@@ -23,8 +23,8 @@ std::string axisPath(int axisIndex, const std::string& field) {
 }
 
 /// A continuous axis on the reference sampled at dt, starting at rest at its first sample.
-SimulationResult traceGt(const GtAxisSettings& gt, int axisIndex, const std::vector<double>& reference,
-                         double dtSeconds, double umaxVolts) {
+SimulationResult traceGt(const GtAxisSettings& gt, int axisIndex,
+                         const std::vector<double>& reference, double dtSeconds, double umaxVolts) {
     const GtDesign design = sessionGtDesign(gt, axisIndex);
     LoopSimulationOptions options;
     options.dtSeconds = dtSeconds;
@@ -49,8 +49,10 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
     try {
         requireFinite(pp.t1, "t1");
         if (std::abs(pp.t1) >= 1.0)
-            throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
-        loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"), Polynomial::fromAscending(pp.b, "b"),
+            throw InvalidInput("t1",
+                               "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
+        loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"),
+                                   Polynomial::fromAscending(pp.b, "b"),
                                    Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
         zpetc = designZpetc(loop);
     } catch (const InvalidInput& e) {
@@ -58,20 +60,23 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
     }
     const double steps = std::floor(t.back() / pp.tsSeconds + 1e-9);
     if (!(steps >= 1.0))
-        throw InvalidInput(axisPath(axisIndex, "pp.ts"), formatNumber(pp.tsSeconds) +
-                                                             " s is longer than the program's run (" +
-                                                             formatNumber(t.back()) + " s)");
+        throw InvalidInput(axisPath(axisIndex, "pp.ts"),
+                           formatNumber(pp.tsSeconds) + " s is longer than the program's run (" +
+                               formatNumber(t.back()) + " s)");
     if (steps + 1.0 > static_cast<double>(sampleLimit()))
-        throw InvalidInput(axisPath(axisIndex, "pp.ts"), "the run needs more samples than this machine holds");
+        throw InvalidInput(axisPath(axisIndex, "pp.ts"),
+                           "the run needs more samples than this machine holds");
     const std::size_t n = static_cast<std::size_t>(steps) + 1;
     std::vector<double> times(n + static_cast<std::size_t>(zpetc.previewSteps));
     for (std::size_t k = 0; k < times.size(); ++k)
         times[k] = static_cast<double>(k) * pp.tsSeconds;
     const std::vector<double> r = resampleLinear(t, reference, times);
     times.resize(n);
-    const DiscreteRun run = pp.zpetcEnabled
-                                ? simulateZpetcLoop(loop, zpetc, r, n)
-                                : simulateFeedbackLoop(loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)));
+    const DiscreteRun run =
+        pp.zpetcEnabled
+            ? simulateZpetcLoop(loop, zpetc, r, n)
+            : simulateFeedbackLoop(
+                  loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)));
     return discreteRun(times, r, run, umaxVolts, pp.tsSeconds);
 }
 
@@ -116,17 +121,21 @@ void addAxisWarnings(const ContourTrace& t, std::vector<std::string>& warnings) 
         const TrackingMetrics m = trackingMetrics(run);
         const std::string axis = i == 0 ? "x axis: " : "y axis: ";
         if (m.diverged)
-            warnings.push_back(axis + "the simulated run diverged (a sample is not a finite number)");
+            warnings.push_back(axis +
+                               "the simulated run diverged (a sample is not a finite number)");
         else if (m.saturated)
-            warnings.push_back(axis + "|u| reached the actuator limit of " + formatNumber(run.umaxVolts) +
-                               " V for " + formatNumber(m.saturatedTimeSeconds) + " s");
+            warnings.push_back(axis + "|u| reached the actuator limit of " +
+                               formatNumber(run.umaxVolts) + " V for " +
+                               formatNumber(m.saturatedTimeSeconds) + " s");
     }
 }
 
 } // namespace
 
-std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program, const ContourTrace& trace,
-                                                        const Iso230Options& iso, std::vector<std::string>& warnings) {
+std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program,
+                                                        const ContourTrace& trace,
+                                                        const Iso230Options& iso,
+                                                        std::vector<std::string>& warnings) {
     const BallbarCircles circles = findBallbarCircles(program);
     if (!circles.first)
         return std::nullopt;
@@ -144,7 +153,8 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
     if (!circles.note.empty())
         warnings.push_back("ISO 230-4: " + circles.note);
     if (test.x.size() < 3 || (circles.opposite && test.reverseX.size() < 3)) {
-        warnings.push_back("ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures");
+        warnings.push_back(
+            "ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures");
         return std::nullopt;
     }
     if (circles.opposite) {
@@ -167,7 +177,8 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
     errorOptions.measuredSegments.resize(program.segments.size());
     for (std::size_t i = 0; i < program.segments.size(); ++i)
         errorOptions.measuredSegments[i] = !program.segments[i].rapid;
-    out.contour = contourError(program.path, out.trace.profile.t, out.trace.x, out.trace.y, errorOptions);
+    out.contour =
+        contourError(program.path, out.trace.profile.t, out.trace.x, out.trace.y, errorOptions);
     out.warnings = program.warnings;
     addAxisWarnings(out.trace, out.warnings);
 
@@ -184,14 +195,16 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         const std::vector<double> feed{feeds[c]};
         test.forward = trace(session, Path({circle}), feed, options);
         test.reverse = trace(session,
-                             Path({PathSegment::arc(circle.centre(), circle.radius(), circle.startAngle(),
-                                                    -circle.sweep())}),
+                             Path({PathSegment::arc(circle.centre(), circle.radius(),
+                                                    circle.startAngle(), -circle.sweep())}),
                              feed, options);
         pointsOnSegments(test.forward, {0, 1}, test.x, test.y);
         pointsOnSegments(test.reverse, {0, 1}, test.reverseX, test.reverseY);
         if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
-            test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal, options.iso);
-            test.reverseIso = iso230Circular(test.reverseX, test.reverseY, test.nominal, options.iso);
+            test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal,
+                                      options.iso);
+            test.reverseIso =
+                iso230Circular(test.reverseX, test.reverseY, test.nominal, options.iso);
             out.circular = std::move(test);
         } else {
             out.warnings.push_back("the circle lasts fewer than 3 samples: no ISO 230-4 figures");

@@ -58,8 +58,8 @@ struct ContourCircularTest {
     /// The program line of the first run's circle (of its first arc when written as several).
     std::size_t line = 0;
     std::size_t reverseLine = 0; ///< of the reverse run's (0: re-run alone, or none)
-    ContourTrace forward;  ///< the circle in the program's direction (re-run alone only)
-    ContourTrace reverse;  ///< the same circle run the other way (re-run alone only)
+    ContourTrace forward;        ///< the circle in the program's direction (re-run alone only)
+    ContourTrace reverse;        ///< the same circle run the other way (re-run alone only)
     /// The traced points of each run (x, y forward; reverseX, reverseY reverse).
     std::vector<double> x, y, reverseX, reverseY;
 };
@@ -96,7 +96,9 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
  * BallbarCircles::note, each prefixed "ISO 230-4: ").
  * @throws InvalidInput as iso230Circular.
  */
-std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program, const ContourTrace& trace,
-                                                        const Iso230Options& iso, std::vector<std::string>& warnings);
+std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program,
+                                                        const ContourTrace& trace,
+                                                        const Iso230Options& iso,
+                                                        std::vector<std::string>& warnings);
 
 } // namespace xyt

@@ -9,7 +9,8 @@
 
 namespace xyt {
 
-DesignProblem sessionDesignProblem(const Session& session, int axis, const StudyFidelity& fidelity) {
+DesignProblem sessionDesignProblem(const Session& session, int axis,
+                                   const StudyFidelity& fidelity) {
     if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
         throw InvalidInput("axis", "there is no axis " + std::to_string(axis));
     const AxisSettings& settings = session.axes[static_cast<std::size_t>(axis)];
@@ -26,12 +27,14 @@ DesignProblem sessionDesignProblem(const Session& session, int axis, const Study
     problem.stepSamples = fidelity.stepSamples;
     const TrajectorySettings& t = session.trajectory;
     const bool cubic = t.kind == TrajectoryKind::Cubic;
-    const double duration = cubic && t.durationSeconds == 0.0
-                                ? moveSweepDurationSeconds(t.tfSeconds, problem.spec.maxSettleTimeSeconds)
-                                : t.effectiveDurationSeconds();
+    const double duration =
+        cubic && t.durationSeconds == 0.0
+            ? moveSweepDurationSeconds(t.tfSeconds, problem.spec.maxSettleTimeSeconds)
+            : t.effectiveDurationSeconds();
     double dt = t.dtSeconds;
     requirePositive(dt, "dt");
-    if (fidelity.maxSamples > 0 && std::floor(duration / dt + 1e-9) + 1.0 > static_cast<double>(fidelity.maxSamples))
+    if (fidelity.maxSamples > 0 &&
+        std::floor(duration / dt + 1e-9) + 1.0 > static_cast<double>(fidelity.maxSamples))
         dt = duration / static_cast<double>(fidelity.maxSamples - 1);
     problem.dtSeconds = dt;
     problem.reference = sampled(axisReference(t, axis), sampleTimes(duration, dt));

@@ -39,6 +39,7 @@ inline constexpr StudyFidelity kLivePreviewFidelity{1500, 100};
  * @throws InvalidInput "axis" when out of range, "method" when the axis is not Guillemin-Truxal,
  *         and from the trajectory and the specification.
  */
-DesignProblem sessionDesignProblem(const Session& session, int axis, const StudyFidelity& fidelity = {});
+DesignProblem sessionDesignProblem(const Session& session, int axis,
+                                   const StudyFidelity& fidelity = {});
 
 } // namespace xyt

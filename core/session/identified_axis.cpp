@@ -5,10 +5,12 @@
 
 namespace xyt {
 
-AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedModel& model, const IoData& data) {
+AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedModel& model,
+                                     const IoData& data) {
     if (!model.hasEstimate())
-        throw InvalidInput("model", model.structure + " has no estimate (" + estimationStatusName(model.status) +
-                                        (model.message.empty() ? std::string() : ": " + model.message) + ")");
+        throw InvalidInput(
+            "model", model.structure + " has no estimate (" + estimationStatusName(model.status) +
+                         (model.message.empty() ? std::string() : ": " + model.message) + ")");
     AxisSettings out = axis;
     if (model.plant) {
         out.method = DesignMethod::GuilleminTruxal;
@@ -31,7 +33,8 @@ AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedM
     origin.parameterNames = model.parameterNames;
     origin.standardDeviations = model.standardDeviations;
     const Eigen::Index d = static_cast<Eigen::Index>(model.parameters.size());
-    if (model.covariance.rows() == d && model.covariance.cols() == d && model.covariance.allFinite())
+    if (model.covariance.rows() == d && model.covariance.cols() == d &&
+        model.covariance.allFinite())
         for (Eigen::Index i = 0; i < d; ++i)
             for (Eigen::Index j = 0; j < d; ++j)
                 origin.covariance.push_back(model.covariance(i, j));

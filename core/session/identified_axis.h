@@ -19,6 +19,7 @@ namespace xyt {
  * The design parameters (wn, kp, t1) are kept: the engineer tunes them next.
  * @throws InvalidInput "model" when the model has no estimate (saying its status).
  */
-AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedModel& model, const IoData& data);
+AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedModel& model,
+                                     const IoData& data);
 
 } // namespace xyt

@@ -92,7 +92,8 @@ namespace {
 bool sameOptions(const FeedProfileOptions& a, const FeedProfileOptions& b) {
     return a.feedScale == b.feedScale && a.maxAccelMmPerS2 == b.maxAccelMmPerS2 &&
            a.maxJerkMmPerS3 == b.maxJerkMmPerS3 && a.cornerAngleDeg == b.cornerAngleDeg &&
-           a.dtSeconds == b.dtSeconds && a.maxSamples == b.maxSamples && a.withSamples == b.withSamples;
+           a.dtSeconds == b.dtSeconds && a.maxSamples == b.maxSamples &&
+           a.withSamples == b.withSamples;
 }
 
 /// Profiles kept per program: the sampled and the unsampled one of the current options, and as
@@ -194,7 +195,8 @@ ContourRun runSessionProgram(const Session& session, const GcodeProgram& program
         }
         const std::shared_ptr<const FeedProfile> planned =
             own.get() == &program ? sessionProgramProfile(session.trajectory) : nullptr;
-        return runProgramContour(session, program, programRunOptions(session.trajectory), planned.get());
+        return runProgramContour(session, program, programRunOptions(session.trajectory),
+                                 planned.get());
     } catch (const InvalidInput& e) {
         rethrowAsSessionPath(e);
     }

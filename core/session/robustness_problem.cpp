@@ -23,7 +23,8 @@ RobustnessProblem problemOf(const Session& session, int axis, const AxisEvaluati
     p.spec.umaxVolts = session.umaxVolts;
     p.samples = nominal.run.t.size();
     if (session.trajectory.kind == TrajectoryKind::Cubic)
-        p.move = PointToPointMove{session.trajectory.x0, session.trajectory.xf, session.trajectory.tfSeconds};
+        p.move = PointToPointMove{session.trajectory.x0, session.trajectory.xf,
+                                  session.trajectory.tfSeconds};
     if (nominal.gt) {
         p.controller = nominal.gt->controller;
         p.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
@@ -82,14 +83,15 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         const AxisEvaluation y = evaluateAxis(session, 1);
         p.x = problemOf(session, 0, x);
         p.y = problemOf(session, 1, y);
-        p.geometry.circle = Circle{session.trajectory.radius, session.trajectory.omegaRadPerSec, 0.0, 0.0,
-                                   session.trajectory.rampInSeconds};
+        p.geometry.circle = Circle{session.trajectory.radius, session.trajectory.omegaRadPerSec,
+                                   0.0, 0.0, session.trajectory.rampInSeconds};
         p.geometry.t = x.run.t; // the evaluation's contour is judged on x's samples too
         return p;
     }
     if (session.trajectory.kind != TrajectoryKind::Gcode)
-        throw InvalidInput("trajectory", "the contour analysis needs a circle or a G-code program (a cubic "
-                                         "drives both axes along one line)");
+        throw InvalidInput("trajectory",
+                           "the contour analysis needs a circle or a G-code program (a cubic "
+                           "drives both axes along one line)");
     const std::shared_ptr<const GcodeProgram> shared = sessionProgram(session.trajectory.gcode);
     const GcodeProgram& program = *shared;
     const ContourRunOptions run = programRunOptions(session.trajectory);
@@ -114,14 +116,17 @@ void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session
     const std::string field = "axes[" + std::to_string(axis) + "].model_origin";
     const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
     if (!settings.origin)
-        throw InvalidInput(field, "the axis' model was not identified from data (set ranges instead)");
+        throw InvalidInput(field,
+                           "the axis' model was not identified from data (set ranges instead)");
     const ModelOrigin& o = *settings.origin;
     const std::size_t d = o.parameterNames.size();
     if (o.covariance.size() != d * d || d == 0)
-        throw InvalidInput(field, "the identified " + o.structure + " has no covariance to draw plants from");
+        throw InvalidInput(field, "the identified " + o.structure +
+                                      " has no covariance to draw plants from");
     const bool continuous = o.parameterNames == std::vector<std::string>{"k0", "a1", "a2"};
     if (continuous != (settings.method == DesignMethod::GuilleminTruxal))
-        throw InvalidInput(field, "the identified " + o.structure + " is not a model of the axis' design method");
+        throw InvalidInput(field, "the identified " + o.structure +
+                                      " is not a model of the axis' design method");
     // The problem's index of each origin parameter (npos: not in the loop).
     std::vector<std::size_t> at(d, std::string::npos);
     std::vector<double> scale(d, 1.0);

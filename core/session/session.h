@@ -28,7 +28,7 @@ class ProgramText {
 public:
     ProgramText() = default;
     ProgramText(std::string text); // NOLINT: implicit, a program is set from its text
-    ProgramText(const char* text);  // NOLINT
+    ProgramText(const char* text); // NOLINT
     const std::string& str() const;
     operator const std::string&() const { return str(); } // NOLINT
     bool empty() const { return str().empty(); }
@@ -44,7 +44,8 @@ private:
 /// How an axis is controlled.
 enum class DesignMethod {
     GuilleminTruxal,   ///< continuous PI by the reference-model method (Braga et al.)
-    PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (Patrick, Ishak and Adnan)
+    PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (Patrick, Ishak and
+                       ///< Adnan)
 };
 
 /// The Guillemin-Truxal parameters of one axis.
@@ -73,11 +74,12 @@ struct PpAxisSettings {
  * session says what its plant rests on; a plant typed by hand has none.
  */
 struct ModelOrigin {
-    std::string source;    ///< the record, e.g. "run3.lvm: u=Command, y=X"
-    std::string structure; ///< "ARX(2,3,1)", "OE(3,2,1)", "BJ(3,1,1,2,1)", "GT3 k0/(s^3+a1 s^2+a2 s)"
+    std::string source; ///< the record, e.g. "run3.lvm: u=Command, y=X"
+    std::string
+        structure; ///< "ARX(2,3,1)", "OE(3,2,1)", "BJ(3,1,1,2,1)", "GT3 k0/(s^3+a1 s^2+a2 s)"
     double tsSeconds = 0.0;
     std::size_t samples = 0;
-    double fitPercent = 0.0;           ///< simulation fit on the estimation data (%)
+    double fitPercent = 0.0;                    ///< simulation fit on the estimation data (%)
     std::optional<double> validationFitPercent; ///< simulation fit on separate validation data
     std::vector<std::string> parameterNames;    ///< as the estimator names them
     std::vector<double> standardDeviations;     ///< of those parameters (NaN when unknown)
@@ -107,8 +109,8 @@ enum class TrajectoryKind { Cubic, Circle, Gcode };
  * trajectory's dtSeconds.
  */
 struct GcodeTrajectory {
-    std::string fileName;  ///< where the program was read from (its name only, for display)
-    ProgramText program;   ///< the program text
+    std::string fileName; ///< where the program was read from (its name only, for display)
+    ProgramText program;  ///< the program text
     double feedScale = 1.0;
     double maxAccelMmPerS2 = 500.0;
     double maxJerkMmPerS3 = 0.0; ///< 0: none (trapezoidal profile)
@@ -194,7 +196,8 @@ struct Session {
     /// This session with the design of @p snapshot (snapshots and export settings kept).
     Session withDesign(const DesignSnapshot& snapshot) const;
 
-    /// The design of Braga et al.: x is the lower base, y the upper base, cubic 0 -> 600 mm in 130 s.
+    /// The design of Braga et al.: x is the lower base, y the upper base, cubic 0 -> 600 mm in 130
+    /// s.
     static Session paperDefault();
     friend bool operator==(const Session&, const Session&) = default;
 };

@@ -2,13 +2,13 @@
 #include "core/session/session_evaluation.h"
 
 #include "core/analysis/loop_responses.h"
-#include "core/simulation/discrete_simulation.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/program_trajectory.h"
-#include "core/study/helper_thread.h"
+#include "core/simulation/discrete_simulation.h"
 #include "core/simulation/trajectory.h"
 #include "core/simulation/zpetc_step.h"
+#include "core/study/helper_thread.h"
 
 #include <algorithm>
 #include <array>
@@ -53,7 +53,8 @@ struct RunRefused : InvalidInput {
 };
 
 /// axisReference, its refusals marked as refusals of the run.
-std::function<double(double)> sessionReference(const TrajectorySettings& trajectory, int axisIndex) {
+std::function<double(double)> sessionReference(const TrajectorySettings& trajectory,
+                                               int axisIndex) {
     try {
         return axisReference(trajectory, axisIndex);
     } catch (const InvalidInput& e) {
@@ -67,8 +68,8 @@ std::function<double(double)> sessionReference(const TrajectorySettings& traject
  * metric would read 0, which is not a result). The duration is blamed when the session sets it,
  * else the step.
  */
-std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double duration, double dt,
-                                    const std::string& dtField) {
+std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double duration,
+                                    double dt, const std::string& dtField) {
     const std::string culprit = trajectory.durationSeconds > 0.0 ? "trajectory.duration" : dtField;
     std::vector<double> times;
     try {
@@ -77,9 +78,9 @@ std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double
         throw RunRefused(e.field() == "dt" ? dtField : culprit, e.reason());
     }
     if (times.size() < 2)
-        throw RunRefused(culprit, "gives a single sample (step " + formatNumber(dt) + " s, duration " +
-                                        formatNumber(duration) +
-                                        " s); at least two samples are needed for the metrics");
+        throw RunRefused(culprit, "gives a single sample (step " + formatNumber(dt) +
+                                      " s, duration " + formatNumber(duration) +
+                                      " s); at least two samples are needed for the metrics");
     return times;
 }
 
@@ -92,7 +93,8 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
         const std::string axis = "axes[" + std::to_string(axisIndex) + "].gt.";
         if (e.field() == "wn" || e.field() == "kp")
             throw InvalidInput(axis + e.field(), e.reason());
-        if (e.field() == "k0" || e.field() == "a1" || e.field() == "a2") // the session file's plant object
+        if (e.field() == "k0" || e.field() == "a1" ||
+            e.field() == "a2") // the session file's plant object
             throw InvalidInput(axis + "plant." + e.field(), e.reason());
         throw;
     }
@@ -100,8 +102,9 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
 
 DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design) {
     try {
-        return digitalPi(design.kp, design.ki, session.controllerTsSeconds, session.piDiscretization,
-                         session.implementation.antiWindup, session.implementation.trackingTimeSeconds);
+        return digitalPi(design.kp, design.ki, session.controllerTsSeconds,
+                         session.piDiscretization, session.implementation.antiWindup,
+                         session.implementation.trackingTimeSeconds);
     } catch (const InvalidInput& e) {
         if (e.field() == "ts")
             throw InvalidInput("controller_ts", e.reason());
@@ -115,7 +118,8 @@ std::vector<PoleZeroSet> digitalPoleZeroSets(const AxisEvaluation& axis) {
     if (!axis.digital)
         return {};
     const DigitalEvaluation& d = *axis.digital;
-    return {{"digital loop", d.tsSeconds, d.poles, {}}, {"design at Ts", d.tsSeconds, d.designPoles, {}}};
+    return {{"digital loop", d.tsSeconds, d.poles, {}},
+            {"design at Ts", d.tsSeconds, d.designPoles, {}}};
 }
 
 SampledDataOptions sessionSampledDataOptions(const Session& session) {
@@ -128,7 +132,8 @@ SampledDataOptions sessionSampledDataOptions(const Session& session) {
     try {
         validateSampledDataOptions(o);
     } catch (const InvalidInput& e) {
-        throw InvalidInput(e.field() == "umax" ? "umax" : "implementation." + e.field(), e.reason());
+        throw InvalidInput(e.field() == "umax" ? "umax" : "implementation." + e.field(),
+                           e.reason());
     }
     return o;
 }
@@ -160,12 +165,14 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
     const TrajectorySettings& t = session.trajectory;
     if (t.kind != TrajectoryKind::Cubic)
         return;
-    d.moveSettle = moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds}, session.spec.inPositionWindowMm);
+    d.moveSettle =
+        moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds}, session.spec.inPositionWindowMm);
     const ImplementationSettings& impl = session.implementation;
     if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
         const auto& times = d.run.result.t;
         const auto rest = std::lower_bound(times.begin(), times.end(), t.tfSeconds);
-        d.limitCycle = restLimitCycle(d.run.measured, static_cast<std::size_t>(rest - times.begin()));
+        d.limitCycle =
+            restLimitCycle(d.run.measured, static_cast<std::size_t>(rest - times.begin()));
         if (d.limitCycle)
             out.warnings.push_back(
                 "a limit cycle at rest: after the move the measured position keeps oscillating (" +
@@ -190,14 +197,15 @@ std::optional<std::string> implementationVerdictWarning(const SpecificationCheck
     std::string list;
     for (std::size_t i = 0; i < failed.size(); ++i)
         list += (i == 0 ? "" : i + 1 == failed.size() ? " and " : ", ") + failed[i];
-    return "the design meets " + list + ", its digital implementation does not: the verdict is the "
+    return "the design meets " + list +
+           ", its digital implementation does not: the verdict is the "
            "implementation's";
 }
 
 /// The digital implementation of a Guillemin-Truxal axis (its failures become a warning: the
 /// export names the field when asked for the code).
-void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                       AxisEvaluation& out) {
+void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axisIndex,
+                       double duration, AxisEvaluation& out) {
     try {
         DigitalEvaluation d;
         const DigitalPi pi = sessionDigitalPi(session, *out.gt);
@@ -207,12 +215,13 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
         // At the simulation step (the default: both 10 ms) the continuous run already holds the
         // reference at the controller's sample times.
         const bool sameTimes = pi.tsSeconds == session.trajectory.dtSeconds;
-        d.run = simulateSampledPi(
-            plant, pi,
-            sameTimes ? out.run.r
-                      : sampled(sessionReference(session.trajectory, axisIndex),
-                                axisSampleTimes(session.trajectory, duration, pi.tsSeconds, "controller_ts")),
-            options, axis.gt.modelUnitsPerPositionUnit);
+        d.run =
+            simulateSampledPi(plant, pi,
+                              sameTimes ? out.run.r
+                                        : sampled(sessionReference(session.trajectory, axisIndex),
+                                                  axisSampleTimes(session.trajectory, duration,
+                                                                  pi.tsSeconds, "controller_ts")),
+                              options, axis.gt.modelUnitsPerPositionUnit);
         d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
         d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
         for (const auto& p : out.gt->closedLoopPoles)
@@ -236,8 +245,10 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     // The reference first: an unreadable program has no run time, and its refusal names the
     // program rather than the step that a run of no length would be blamed on.
     const auto reference = sessionReference(session.trajectory, axisIndex);
-    const auto times = axisSampleTimes(session.trajectory, duration, options.dtSeconds, "trajectory.dt");
-    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller, sampled(reference, times), options);
+    const auto times =
+        axisSampleTimes(session.trajectory, duration, options.dtSeconds, "trajectory.dt");
+    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
+                           sampled(reference, times), options);
     out.metrics = trackingMetrics(out.run);
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
@@ -279,8 +290,8 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
  * u = y A(1) / B(1): beyond the actuator limit the axis cannot stay where the trajectory goes,
  * whatever the controller (Patrick, Ishak and Adnan's x-axis model needs 3.03 V at 600 mm).
  */
-std::optional<std::string> reachWarning(const PpAxisSettings& pp, const std::vector<double>& reference,
-                                        double umaxVolts) {
+std::optional<std::string> reachWarning(const PpAxisSettings& pp,
+                                        const std::vector<double>& reference, double umaxVolts) {
     double a1 = 0.0, b1 = 0.0, farthest = 0.0;
     for (double c : pp.a)
         a1 += c;
@@ -298,8 +309,9 @@ std::optional<std::string> reachWarning(const PpAxisSettings& pp, const std::vec
     if (!(std::abs(hold) > umaxVolts))
         return std::nullopt;
     return "the trajectory is out of the plant's reach: holding " + formatNumber(farthest, 4) +
-           " mm needs " + formatNumber(std::abs(hold), 3) + " V (the model's steady gain B(1)/A(1) = " +
-           formatNumber(b1 / a1, 4) + " mm/V), beyond the " + formatNumber(umaxVolts) + " V limit";
+           " mm needs " + formatNumber(std::abs(hold), 3) +
+           " V (the model's steady gain B(1)/A(1) = " + formatNumber(b1 / a1, 4) +
+           " mm/V), beyond the " + formatNumber(umaxVolts) + " V limit";
 }
 
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
@@ -328,7 +340,8 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         out.run = discreteRun(times, r, simulateZpetcLoop(*out.pp, *out.zpetc, r, n),
                               session.umaxVolts, pp.tsSeconds);
         const double with = rootMeanSquare(out.run.e);
-        out.improvementPct = out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - with / out.rmseWithoutFf) : 0.0;
+        out.improvementPct =
+            out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - with / out.rmseWithoutFf) : 0.0;
     } else {
         out.run = out.feedbackOnlyRun;
     }
@@ -423,7 +436,8 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             out.implementationCheck = checkSpecification(spec, out.digital->metrics, out.step,
                                                          out.digital->moveSettle, margins);
             out.check = bothPass(out.designCheck, *out.implementationCheck);
-            if (const auto w = implementationVerdictWarning(out.designCheck, *out.implementationCheck))
+            if (const auto w =
+                    implementationVerdictWarning(out.designCheck, *out.implementationCheck))
                 out.warnings.push_back(*w);
         }
         out.ok = true;
@@ -456,7 +470,9 @@ double slowestDecayPerSecond(const AxisEvaluation& a) {
     return 0.0;
 }
 
-std::string seconds(double v) { return formatNumber(v) + " s"; }
+std::string seconds(double v) {
+    return formatNumber(v) + " s";
+}
 
 } // namespace
 
@@ -471,7 +487,8 @@ RunDuration chooseRunDuration(const Session& session) {
         return d;
     }
     if (t.kind == TrajectoryKind::Circle) {
-        d.description = "duration " + seconds(d.seconds) + " (automatic: the ramp-in and one revolution)";
+        d.description =
+            "duration " + seconds(d.seconds) + " (automatic: the ramp-in and one revolution)";
         return d;
     }
     if (t.kind == TrajectoryKind::Gcode) {
@@ -487,8 +504,9 @@ RunDuration chooseRunDuration(const Session& session) {
         if (!a.ok || !a.step.stable || a.metrics.diverged || a.run.e.empty())
             continue; // it will not settle whatever the duration; its evaluation says why
         any = true;
-        need = std::max(need, settleTimeEstimateSeconds(a.run.e.back(), session.spec.inPositionWindowMm,
-                                                        slowestDecayPerSecond(a)));
+        need = std::max(need,
+                        settleTimeEstimateSeconds(a.run.e.back(), session.spec.inPositionWindowMm,
+                                                  slowestDecayPerSecond(a)));
     }
     d.includesSettle = any;
     d.settleEstimateSeconds = need;
@@ -500,20 +518,19 @@ RunDuration chooseRunDuration(const Session& session) {
     }
     d.seconds = automaticMoveDurationSeconds(t.t0Seconds, t.tfSeconds, need, d.capSeconds);
     d.capped = d.seconds == d.capSeconds && d.capSeconds > t.tfSeconds;
-    d.description = "duration " + seconds(d.seconds) + " (automatic: the move to tf = " +
-                    seconds(t.tfSeconds) + " and the settle into " +
-                    formatNumber(session.spec.inPositionWindowMm) + " mm, estimated " +
-                    (std::isfinite(need) ? seconds(need) : std::string("never")) +
-                    " after tf from the slowest closed-loop pole" +
-                    (d.capped ? "; cut to the cap of tf + " +
-                                    formatNumber(kAutomaticSettleMoves) +
-                                    " move durations" +
-                                    (d.capSeconds < t.tfSeconds + kAutomaticSettleMoves *
-                                                                      (t.tfSeconds - t.t0Seconds)
-                                         ? " (lowered to what a million samples hold at this dt)"
-                                         : "")
-                              : "") +
-                    ")";
+    d.description =
+        "duration " + seconds(d.seconds) + " (automatic: the move to tf = " + seconds(t.tfSeconds) +
+        " and the settle into " + formatNumber(session.spec.inPositionWindowMm) +
+        " mm, estimated " + (std::isfinite(need) ? seconds(need) : std::string("never")) +
+        " after tf from the slowest closed-loop pole" +
+        (d.capped
+             ? "; cut to the cap of tf + " + formatNumber(kAutomaticSettleMoves) +
+                   " move durations" +
+                   (d.capSeconds < t.tfSeconds + kAutomaticSettleMoves * (t.tfSeconds - t.t0Seconds)
+                        ? " (lowered to what a million samples hold at this dt)"
+                        : "")
+             : "") +
+        ")";
     return d;
 }
 
@@ -528,8 +545,8 @@ SessionEvaluation evaluateSession(const Session& session) {
     const auto& x = out.axes[0];
     const auto& y = out.axes[1];
     if (session.trajectory.kind == TrajectoryKind::Circle && x.ok && y.ok) {
-        const Circle circle{session.trajectory.radius, session.trajectory.omegaRadPerSec, 0.0,
-                            0.0, session.trajectory.rampInSeconds};
+        const Circle circle{session.trajectory.radius, session.trajectory.omegaRadPerSec, 0.0, 0.0,
+                            session.trajectory.rampInSeconds};
         const std::vector<double> yOnX = resampleLinear(y.run.t, y.run.y, x.run.t);
         try {
             out.contour = circleContourError(x.run.t, x.run.y, yOnX, circle);
@@ -541,7 +558,8 @@ SessionEvaluation evaluateSession(const Session& session) {
         // The program's contour run simulates both axes once more, from the same reference
         // samples, for the contour error along the path and (one full circle) the ballbar runs.
         try {
-            const std::shared_ptr<const GcodeProgram> program = sessionProgram(session.trajectory.gcode);
+            const std::shared_ptr<const GcodeProgram> program =
+                sessionProgram(session.trajectory.gcode);
             out.program = std::make_shared<const ContourRun>(runSessionProgram(session, *program));
             // The path of the shared program itself (aliasing it), not a copy per evaluation.
             out.programPath = std::shared_ptr<const Path>(program, &program->path);

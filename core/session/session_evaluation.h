@@ -3,19 +3,19 @@
 
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/stability_margins.h"
-#include "core/simulation/contour_error.h"
-#include "core/simulation/resample.h"
-#include "core/simulation/discrete_simulation.h"
 #include "core/design/guillemin_truxal.h"
-#include "core/simulation/metrics.h"
-#include "core/simulation/move_settle.h"
 #include "core/design/pole_placement.h"
-#include "core/study/specification.h"
 #include "core/design/zpetc.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
+#include "core/simulation/contour_error.h"
+#include "core/simulation/discrete_simulation.h"
+#include "core/simulation/metrics.h"
+#include "core/simulation/move_settle.h"
+#include "core/simulation/resample.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
+#include "core/study/specification.h"
 
 #include <array>
 #include <complex>
@@ -29,17 +29,17 @@ namespace xyt {
 
 /// How long the session's runs last, and why (both axes share it).
 struct RunDuration {
-    double seconds = 0.0;        ///< the simulated duration
-    bool automatic = false;      ///< the session's duration is 0 (automatic)
+    double seconds = 0.0;   ///< the simulated duration
+    bool automatic = false; ///< the session's duration is 0 (automatic)
     /// Automatic cubic: the run goes past tf by the settle estimate (settleTimeEstimateSeconds
     /// of the slowest-settling valid, stable axis, from its error at tf and its slowest
     /// closed-loop pole) times 1.5, plus a tenth of the move, so that the response is seen to
     /// stay in the window.
     bool includesSettle = false;
     double settleEstimateSeconds = 0.0; ///< that estimate, s after tf (infinity: never settles)
-    bool capped = false;         ///< the wanted run was longer than the cap and was cut to it
-    double capSeconds = 0.0;     ///< TrajectorySettings::effectiveDurationSeconds()
-    std::string description;     ///< one sentence saying what was chosen and why
+    bool capped = false;     ///< the wanted run was longer than the cap and was cut to it
+    double capSeconds = 0.0; ///< TrajectorySettings::effectiveDurationSeconds()
+    std::string description; ///< one sentence saying what was chosen and why
 };
 
 /**
@@ -87,8 +87,8 @@ struct AxisEvaluation {
     double improvementPct = 0.0; ///< 100 (1 - RMSE with ZPETC / RMSE without)
     /// The run shown: continuous designs simulate the loop with saturation; discrete designs the
     /// linear loop with ZPETC when enabled (else alone), sampled at Ts, with `clipped` marking
-    /// samples where |u| exceeds umax (Patrick, Ishak and Adnan's loop has no limit, so it is flagged, not
-    /// applied).
+    /// samples where |u| exceeds umax (Patrick, Ishak and Adnan's loop has no limit, so it is
+    /// flagged, not applied).
     SimulationResult run;
     TrackingMetrics metrics;
     /// Point-to-point (cubic) runs: the move-and-settle figures with the specification's

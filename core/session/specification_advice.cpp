@@ -33,7 +33,8 @@ double slowestPole(const AxisEvaluation& a) {
 /// unset when either did not settle in the run.
 std::optional<double> settleSeconds(const AxisEvaluation& a) {
     std::optional<double> worst;
-    for (const std::optional<MoveSettleMetrics>* m : {&a.moveSettle, a.digital ? &a.digital->moveSettle : nullptr}) {
+    for (const std::optional<MoveSettleMetrics>* m :
+         {&a.moveSettle, a.digital ? &a.digital->moveSettle : nullptr}) {
         if (!m || !*m)
             continue;
         if ((*m)->diverged || !(*m)->settleTimeSeconds)
@@ -91,7 +92,8 @@ void relax(const LimitMove& move, Specification& relaxed, std::vector<std::strin
 
 } // namespace
 
-SpecificationAdvice adviseSpecification(const Session& session, const SessionEvaluation& evaluation) {
+SpecificationAdvice adviseSpecification(const Session& session,
+                                        const SessionEvaluation& evaluation) {
     SpecificationAdvice out;
     Specification relaxed = session.spec;
     bool possible = true, anyFailure = false;
@@ -123,8 +125,9 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
         }
         if (!c.overshoot) {
             overshoot.failedAt(a.step.overshootPct);
-            std::string why = name + ": the step overshoots " + formatNumber(a.step.overshootPct, 3) +
-                              " % (limit " + formatNumber(spec.maxOvershootPct) + " %)";
+            std::string why = name + ": the step overshoots " +
+                              formatNumber(a.step.overshootPct, 3) + " % (limit " +
+                              formatNumber(spec.maxOvershootPct) + " %)";
             if (a.gt && spec.maxOvershootPct == 0.0)
                 why += ": every Guillemin-Truxal design overshoots, its reference model is type 2 "
                        "(the step error integrates to zero), so 0 % cannot be met";
@@ -132,12 +135,14 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
         }
         if (!c.settlingTime) {
             settling.failedAt(a.step.settlingTimeSeconds);
-            out.reasons.push_back(name + ": the step settles in " + formatNumber(a.step.settlingTimeSeconds, 3) +
-                                  " s (limit " + formatNumber(spec.maxSettlingTimeSeconds) + " s)");
+            out.reasons.push_back(name + ": the step settles in " +
+                                  formatNumber(a.step.settlingTimeSeconds, 3) + " s (limit " +
+                                  formatNumber(spec.maxSettlingTimeSeconds) + " s)");
         }
         if (!c.noSaturation) {
             possible = false;
-            out.reasons.push_back(name + ": the command reaches the ±" + formatNumber(session.umaxVolts) +
+            out.reasons.push_back(name + ": the command reaches the ±" +
+                                  formatNumber(session.umaxVolts) +
                                   " V limit; a looser limit elsewhere does not change that");
         }
         if (!c.trackingError) {
@@ -147,7 +152,8 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
                 possible = false;
             error.failedAt(worst);
             out.reasons.push_back(name + ": the tracking error reaches " + formatNumber(worst, 3) +
-                                  " % of the travel (limit " + formatNumber(spec.maxErrorPct) + " %)");
+                                  " % of the travel (limit " + formatNumber(spec.maxErrorPct) +
+                                  " %)");
         }
         if (c.settleApplies && !c.settle) {
             std::optional<double> t = settleSeconds(a);
@@ -155,8 +161,10 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
             if (!t && std::isfinite(evaluation.duration.settleEstimateSeconds) &&
                 evaluation.duration.settleEstimateSeconds > 0.0)
                 t = evaluation.duration.settleEstimateSeconds;
-            std::string why = name + ": it settles into ±" + formatNumber(spec.inPositionWindowMm) + " mm ";
-            why += t ? (estimated ? "only about " : "only ") + formatNumber(*t, 3) + " s after the move" +
+            std::string why =
+                name + ": it settles into ±" + formatNumber(spec.inPositionWindowMm) + " mm ";
+            why += t ? (estimated ? "only about " : "only ") + formatNumber(*t, 3) +
+                           " s after the move" +
                            (estimated ? " (estimated: not within the run)" : "")
                      : std::string("not within the run");
             why += " (limit " + formatNumber(spec.maxSettleTimeSeconds) + " s)";
@@ -167,7 +175,8 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
             out.reasons.push_back(why);
             if (!estimated) {
                 settle.failedAt(*t);
-            } else if (const auto w = errorBeyond(a, session.trajectory.tfSeconds + spec.maxSettleTimeSeconds)) {
+            } else if (const auto w = errorBeyond(a, session.trajectory.tfSeconds +
+                                                         spec.maxSettleTimeSeconds)) {
                 // Not settled within the run: the settle limit cannot be checked, but the window
                 // the error stays in from the limit on can (the run reaches past it).
                 window.failedAt(*w);
@@ -178,13 +187,15 @@ SpecificationAdvice adviseSpecification(const Session& session, const SessionEva
         if (c.marginsApply && a.margins) {
             if (!c.phaseMargin) {
                 phase.failedAt(a.margins->phaseMarginDeg);
-                out.reasons.push_back(name + ": phase margin " + formatNumber(a.margins->phaseMarginDeg, 3) +
-                                      " deg (minimum " + formatNumber(spec.minPhaseMarginDeg) + ")");
+                out.reasons.push_back(
+                    name + ": phase margin " + formatNumber(a.margins->phaseMarginDeg, 3) +
+                    " deg (minimum " + formatNumber(spec.minPhaseMarginDeg) + ")");
             }
             if (!c.gainMargin) {
                 gain.failedAt(a.margins->gainMarginDb);
-                out.reasons.push_back(name + ": gain margin " + formatNumber(a.margins->gainMarginDb, 3) +
-                                      " dB (minimum " + formatNumber(spec.minGainMarginDb) + ")");
+                out.reasons.push_back(name + ": gain margin " +
+                                      formatNumber(a.margins->gainMarginDb, 3) + " dB (minimum " +
+                                      formatNumber(spec.minGainMarginDb) + ")");
             }
         }
     }

@@ -34,6 +34,7 @@ struct SpecificationAdvice {
     std::vector<std::string> changes;
 };
 
-SpecificationAdvice adviseSpecification(const Session& session, const SessionEvaluation& evaluation);
+SpecificationAdvice adviseSpecification(const Session& session,
+                                        const SessionEvaluation& evaluation);
 
 } // namespace xyt

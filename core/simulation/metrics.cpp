@@ -5,10 +5,10 @@
 #include "core/model/state_space.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace xyt {
@@ -122,7 +122,7 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
     const double direct = ss.d(0, 0);
     Matrix phi(n, n);
     Vector gamma(n), x = Vector::Zero(n), next(n), xOutside(n), xPrev = Vector::Zero(n),
-        xPeak = Vector::Zero(n), xPeakPrev = Vector::Zero(n);
+                     xPeak = Vector::Zero(n), xPeakPrev = Vector::Zero(n);
     double dtPrev = 0.0, dtPeak = 0.0, dtPeakPrev = 0.0;
     // The step matrices of every span, kept for the interpolation at the peak and at the last
     // exit from the band (which used to discretize again).
@@ -154,9 +154,9 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
         const Vector g1 = gamma;
         const Matrix p1 = phi;
         next.noalias() = p1 * g1;
-        gamma = g1 + next;         // Gamma(2h)
+        gamma = g1 + next; // Gamma(2h)
         next.noalias() = p1 * gamma;
-        gamma = g1 + next;         // Gamma(3h) = Gamma(h) + Phi(h) Gamma(2h)
+        gamma = g1 + next; // Gamma(3h) = Gamma(h) + Phi(h) Gamma(2h)
         phi = (p1 * p1 * p1).eval();
     };
     auto keepSpan = [&](double dt) {
@@ -235,8 +235,8 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
         next += gamma;
         const double yp = output(xPeak), sp = slope(xPeak);
         const auto after = hermiteMaximum(yp, sp * dtPeak, output(next), slope(next) * dtPeak);
-        const auto before = hermiteMaximum(output(xPeakPrev), slope(xPeakPrev) * dtPeakPrev, yp,
-                                           sp * dtPeakPrev);
+        const auto before =
+            hermiteMaximum(output(xPeakPrev), slope(xPeakPrev) * dtPeakPrev, yp, sp * dtPeakPrev);
         if (after.first > scan.peak) {
             scan.peak = after.first;
             scan.peakTime += after.second * dtPeak;

@@ -13,7 +13,8 @@ namespace xyt {
 MoveSettleAccumulator::MoveSettleAccumulator(const PointToPointMove& move, double windowMm)
     : move_(move), window_(windowMm), direction_(move.targetMm >= move.startMm ? 1.0 : -1.0) {
     requirePositive(windowMm, "in_position_window_mm");
-    if (!std::isfinite(move.startMm) || !std::isfinite(move.targetMm) || !std::isfinite(move.endSeconds))
+    if (!std::isfinite(move.startMm) || !std::isfinite(move.targetMm) ||
+        !std::isfinite(move.endSeconds))
         throw InvalidInput("move", "start, target and end time must be finite numbers");
 }
 
@@ -72,7 +73,8 @@ MoveSettleMetrics MoveSettleAccumulator::finish() const {
     // |e| comes down through w between the last sample outside and the next one: linear
     // interpolation of |e| (the step is short against the decay it samples).
     const double drop = outsideAbsE_ - afterAbsE_;
-    const double fraction = drop > 0.0 ? std::clamp((outsideAbsE_ - window_) / drop, 0.0, 1.0) : 1.0;
+    const double fraction =
+        drop > 0.0 ? std::clamp((outsideAbsE_ - window_) / drop, 0.0, 1.0) : 1.0;
     const double crossing = outsideT_ + fraction * (afterT_ - outsideT_);
     m.settleTimeSeconds = std::max(0.0, crossing - move_.endSeconds);
     return m;
@@ -91,7 +93,8 @@ MoveSettleMetrics moveSettleMetrics(const SimulationResult& run, const PointToPo
     return acc.finish();
 }
 
-double settleTimeEstimateSeconds(double errorAtMoveEndMm, double windowMm, double slowestDecayPerSecond) {
+double settleTimeEstimateSeconds(double errorAtMoveEndMm, double windowMm,
+                                 double slowestDecayPerSecond) {
     const double inf = std::numeric_limits<double>::infinity();
     if (!std::isfinite(errorAtMoveEndMm) || !(windowMm > 0.0) || !std::isfinite(windowMm) ||
         !(slowestDecayPerSecond > 0.0))
@@ -126,8 +129,8 @@ double automaticMoveCapSeconds(double t0Seconds, double tfSeconds, double dtSeco
     return std::max(tfSeconds, std::min(cap, fits));
 }
 
-double automaticMoveDurationSeconds(double t0Seconds, double tfSeconds, double settleEstimateSeconds,
-                                    double capSeconds) {
+double automaticMoveDurationSeconds(double t0Seconds, double tfSeconds,
+                                    double settleEstimateSeconds, double capSeconds) {
     const double wanted = tfSeconds + 1.5 * settleEstimateSeconds + 0.1 * (tfSeconds - t0Seconds);
     return wanted <= capSeconds ? wanted : capSeconds;
 }

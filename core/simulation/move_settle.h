@@ -34,13 +34,13 @@ struct PointToPointMove {
  */
 struct MoveSettleMetrics {
     double windowMm = 0.01;
-    double moveEndSeconds = 0.0;     ///< tf
-    double runEndSeconds = 0.0;      ///< time of the last sample
-    bool reachedMoveEnd = false;     ///< the run has a sample at t >= tf
-    bool settled = false;            ///< |e| <= w from tf + settleTimeSeconds to the end
+    double moveEndSeconds = 0.0;             ///< tf
+    double runEndSeconds = 0.0;              ///< time of the last sample
+    bool reachedMoveEnd = false;             ///< the run has a sample at t >= tf
+    bool settled = false;                    ///< |e| <= w from tf + settleTimeSeconds to the end
     std::optional<double> settleTimeSeconds; ///< T_s (s after tf), set exactly when settled
-    double finalErrorMm = 0.0;       ///< e at the last sample
-    double finalOvershootMm = 0.0;   ///< mm beyond the target in the direction of travel, >= 0
+    double finalErrorMm = 0.0;               ///< e at the last sample
+    double finalOvershootMm = 0.0; ///< mm beyond the target in the direction of travel, >= 0
     bool diverged = false;
 };
 
@@ -68,7 +68,7 @@ private:
     bool reachedEnd_ = false;
     bool lastWasOutside_ = false; ///< the previous sample (at t >= tf) was outside the window
     bool outsideSeen_ = false;
-    bool afterSeen_ = false;      ///< a sample followed the last one outside
+    bool afterSeen_ = false; ///< a sample followed the last one outside
     double outsideT_ = 0.0, outsideAbsE_ = 0.0, afterT_ = 0.0, afterAbsE_ = 0.0;
     double lastT_ = 0.0, lastE_ = 0.0;
     double maxBeyond_ = 0.0;
@@ -89,7 +89,8 @@ MoveSettleMetrics moveSettleMetrics(const SimulationResult& run, const PointToPo
  * 0 when |e(tf)| <= w; +infinity when sigma <= 0 (not asymptotically stable) or an input is not
  * finite.
  */
-double settleTimeEstimateSeconds(double errorAtMoveEndMm, double windowMm, double slowestDecayPerSecond);
+double settleTimeEstimateSeconds(double errorAtMoveEndMm, double windowMm,
+                                 double slowestDecayPerSecond);
 
 /// -max Re p over continuous poles (1/s): the decay rate of the slowest mode; <= 0 when not
 /// asymptotically stable (0 for no poles).
@@ -125,7 +126,7 @@ double automaticMoveCapSeconds(double t0Seconds, double tfSeconds, double dtSeco
  * The automatic run of a move: tf + 1.5 x the settle estimate (it is an estimate) + a tenth of
  * the move (so that the response is seen to stay in the window), cut to @p capSeconds.
  */
-double automaticMoveDurationSeconds(double t0Seconds, double tfSeconds, double settleEstimateSeconds,
-                                    double capSeconds);
+double automaticMoveDurationSeconds(double t0Seconds, double tfSeconds,
+                                    double settleEstimateSeconds, double capSeconds);
 
 } // namespace xyt

@@ -24,7 +24,8 @@ std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vec
     return out;
 }
 
-std::vector<std::size_t> heldSampleIndices(const std::vector<double>& ts, const std::vector<double>& t) {
+std::vector<std::size_t> heldSampleIndices(const std::vector<double>& ts,
+                                           const std::vector<double>& t) {
     std::vector<std::size_t> out(t.size(), 0);
     if (ts.size() < 2)
         return out;

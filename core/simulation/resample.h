@@ -21,6 +21,7 @@ std::vector<double> resampleLinear(const std::vector<double>& ts, const std::vec
  * ts = j Ts computed in floating point agree where they are meant to coincide (7 x 0.01 and
  * 1 x 0.07). Times before the first sample give 0. @p ts must be increasing and non-empty.
  */
-std::vector<std::size_t> heldSampleIndices(const std::vector<double>& ts, const std::vector<double>& t);
+std::vector<std::size_t> heldSampleIndices(const std::vector<double>& ts,
+                                           const std::vector<double>& t);
 
 } // namespace xyt

@@ -15,9 +15,11 @@ namespace xyt {
 
 void validateSampledDataOptions(const SampledDataOptions& options) {
     if (options.delaySamples < 0 || options.delaySamples > kMaxDelaySamples)
-        throw InvalidInput("delay_samples", "must be an integer in 0.." + std::to_string(kMaxDelaySamples));
+        throw InvalidInput("delay_samples",
+                           "must be an integer in 0.." + std::to_string(kMaxDelaySamples));
     if (!std::isfinite(options.encoderResolution) || options.encoderResolution < 0.0)
-        throw InvalidInput("encoder_resolution", "must be a finite number >= 0 (mm per count; 0: ideal)");
+        throw InvalidInput("encoder_resolution",
+                           "must be a finite number >= 0 (mm per count; 0: ideal)");
     if (options.dacBits < 0 || options.dacBits > 32)
         throw InvalidInput("dac_bits", "must be an integer in 0..32 (0: ideal DAC)");
     if (std::isnan(options.umaxVolts) || !(options.umaxVolts > 0.0))
@@ -64,7 +66,8 @@ void requireFiniteSamples(const std::vector<double>& v, std::size_t count) {
                                             " samples, got " + std::to_string(v.size()));
     for (std::size_t i = 0; i < count; ++i)
         if (!std::isfinite(v[i]))
-            throw InvalidInput("reference", "sample " + std::to_string(i) + " is not a finite number");
+            throw InvalidInput("reference",
+                               "sample " + std::to_string(i) + " is not a finite number");
 }
 
 void resizeRun(SampledDataRun& run, std::size_t n, double ts, double umax) {
@@ -120,14 +123,12 @@ struct Dac {
 
 /// The plant state: a fixed array for the orders the workbench meets (N > 0, so that the sums
 /// unroll), a vector otherwise (N = 0).
-template <int N>
-struct PlantState {
+template <int N> struct PlantState {
     explicit PlantState(int) {}
     std::array<double, static_cast<std::size_t>(N)> x{}, next{};
     static constexpr int size(int) { return N; }
 };
-template <>
-struct PlantState<0> {
+template <> struct PlantState<0> {
     explicit PlantState(int n) : x(static_cast<std::size_t>(n), 0.0), next(x.size()) {}
     std::vector<double> x, next;
     static int size(int n) { return n; }
@@ -180,7 +181,8 @@ void runSampledPi(const SampledPlant& p, const DigitalPi& pi, const std::vector<
 } // namespace
 
 SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi& pi,
-                                 const std::vector<double>& reference, const SampledDataOptions& options,
+                                 const std::vector<double>& reference,
+                                 const SampledDataOptions& options,
                                  double modelUnitsPerPositionUnit) {
     validateSampledDataOptions(options);
     requirePositive(modelUnitsPerPositionUnit, "model_unit_scale");
@@ -190,11 +192,21 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
     resizeRun(run, reference.size(), pi.tsSeconds, options.umaxVolts);
     // The same sums in the same order for every order: the fixed sizes only let them unroll.
     switch (p.states) {
-    case 1: runSampledPi<1>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
-    case 2: runSampledPi<2>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
-    case 3: runSampledPi<3>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
-    case 4: runSampledPi<4>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
-    default: runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, run); break;
+    case 1:
+        runSampledPi<1>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        break;
+    case 2:
+        runSampledPi<2>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        break;
+    case 3:
+        runSampledPi<3>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        break;
+    case 4:
+        runSampledPi<4>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        break;
+    default:
+        runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        break;
     }
     return run;
 }
@@ -308,7 +320,7 @@ std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, 
     }
     for (int j = 0; j < n; ++j) {
         m(n, j) = -pi.c0 * plant.c[static_cast<std::size_t>(j)]; // I[k] = I[k-1] + c0 e + c1 e[k-1]
-        m(n + 1, j) = -plant.c[static_cast<std::size_t>(j)];      // e[k]
+        m(n + 1, j) = -plant.c[static_cast<std::size_t>(j)];     // e[k]
     }
     m(n, n) = 1.0;
     m(n, n + 1) = pi.c1;
@@ -325,7 +337,8 @@ std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, 
     return poles;
 }
 
-std::vector<std::complex<double>> sampledRstLoopPoles(const PolePlacementDesign& loop, int delaySamples) {
+std::vector<std::complex<double>> sampledRstLoopPoles(const PolePlacementDesign& loop,
+                                                      int delaySamples) {
     std::vector<double> delay(static_cast<std::size_t>(std::max(delaySamples, 0)) + 1, 0.0);
     delay.back() = 1.0;
     const Polynomial characteristic =
@@ -347,8 +360,9 @@ double zDampingRatio(std::complex<double> z) {
     return -s.real() / magnitude;
 }
 
-std::optional<std::string> digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
-                                                 double referenceMinDamping, double tsSeconds) {
+std::optional<std::string>
+digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
+                      double referenceMinDamping, double tsSeconds) {
     double largest = 0.0, minDamping = 1.0;
     for (const auto& z : digitalPoles) {
         if (std::abs(z) < 1e-9)
@@ -358,11 +372,12 @@ std::optional<std::string> digitalDampingWarning(const std::vector<std::complex<
     }
     const std::string at = "the digital loop at Ts = " + formatNumber(tsSeconds) + " s";
     if (!(largest < 1.0))
-        return at + " is unstable (its largest closed-loop pole has |z| = " + formatNumber(largest) +
+        return at +
+               " is unstable (its largest closed-loop pole has |z| = " + formatNumber(largest) +
                "); lower the controller sample time";
     if (minDamping < 0.8 * referenceMinDamping)
-        return at + " is much less damped than the design (damping ratio " + formatNumber(minDamping, 3) +
-               " against " + formatNumber(referenceMinDamping, 3) +
+        return at + " is much less damped than the design (damping ratio " +
+               formatNumber(minDamping, 3) + " against " + formatNumber(referenceMinDamping, 3) +
                " in the z-plane poles); lower the controller sample time or the delay";
     return std::nullopt;
 }
@@ -391,7 +406,8 @@ RestOscillation oscillation(const std::vector<double>& v, std::size_t begin, std
 
 } // namespace
 
-std::optional<RestOscillation> restLimitCycle(const std::vector<double>& measured, std::size_t restStart) {
+std::optional<RestOscillation> restLimitCycle(const std::vector<double>& measured,
+                                              std::size_t restStart) {
     if (restStart >= measured.size() || measured.size() - restStart < 40)
         return std::nullopt;
     const std::size_t n = measured.size();

@@ -96,7 +96,8 @@ struct SampledDataRun {
  *         finite, "model_unit_scale" unless > 0.
  */
 SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi& pi,
-                                 const std::vector<double>& reference, const SampledDataOptions& options,
+                                 const std::vector<double>& reference,
+                                 const SampledDataOptions& options,
                                  double modelUnitsPerPositionUnit = 1.0);
 
 /**
@@ -122,7 +123,8 @@ std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, 
 
 /// The closed-loop poles (z-plane) of the RST loop with @p delaySamples: roots of
 /// A F + z^-delay B G (with delay 0 they are those of T and the cancelled factors).
-std::vector<std::complex<double>> sampledRstLoopPoles(const PolePlacementDesign& loop, int delaySamples);
+std::vector<std::complex<double>> sampledRstLoopPoles(const PolePlacementDesign& loop,
+                                                      int delaySamples);
 
 /// The damping ratio of a z-plane pole through s = ln(z) / Ts: -Re s / |s| (1 for z near 0,
 /// whose s is far left; negative outside the unit circle).
@@ -133,8 +135,9 @@ double zDampingRatio(std::complex<double> z);
  * below 0.8 times) than @p referenceMinDamping, the continuous design's (or, for a discrete
  * design, the loop without the delay). Poles within 1e-9 of z = 0 are left out.
  */
-std::optional<std::string> digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
-                                                 double referenceMinDamping, double tsSeconds);
+std::optional<std::string>
+digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
+                      double referenceMinDamping, double tsSeconds);
 
 /// A persistent oscillation at rest (peak-to-peak of the measured position in the last half of
 /// the rest, and how many times it turned).
@@ -150,6 +153,7 @@ struct RestOscillation {
  * peak-to-peak is at least half the first's (it is not decaying). Unset otherwise, or when the
  * rest holds fewer than 40 samples.
  */
-std::optional<RestOscillation> restLimitCycle(const std::vector<double>& measured, std::size_t restStart);
+std::optional<RestOscillation> restLimitCycle(const std::vector<double>& measured,
+                                              std::size_t restStart);
 
 } // namespace xyt

@@ -113,9 +113,10 @@ struct FlatStep {
  * StepMatrices::step, so every N gives the same bits.
  */
 template <int N>
-void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc, const FlatStep& linear,
-             const FlatStep& clipped, bool limited, double umax, double unit, double dt,
-             const std::vector<double>& reference, double* xInOut, SimulationResult& out) {
+void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc,
+             const FlatStep& linear, const FlatStep& clipped, bool limited, double umax,
+             double unit, double dt, const std::vector<double>& reference, double* xInOut,
+             SimulationResult& out) {
     const int n = N > 0 ? N : runtimeN;
     const int nc = n - np;
     constexpr int kMax = 16; // a loop of more states takes the run-time path below
@@ -241,11 +242,11 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
     const int states = static_cast<int>(n);
     const int plantStates = static_cast<int>(np);
     if (states == 4) // a third-order plant under a PI controller: every Guillemin-Truxal loop
-        runLoop<4>(4, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped, limited, umax,
-                   unit, dt, reference, x.data(), out);
+        runLoop<4>(4, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped,
+                   limited, umax, unit, dt, reference, x.data(), out);
     else
-        runLoop<0>(states, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped, limited,
-                   umax, unit, dt, reference, x.data(), out);
+        runLoop<0>(states, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped,
+                   limited, umax, unit, dt, reference, x.data(), out);
 }
 
 SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,

@@ -38,9 +38,11 @@ double stepViewHorizonSeconds(const StepCharacteristics& step, double minimumSec
     const double floor = minimumSeconds > 0.0 ? minimumSeconds : 1.0;
     if (!step.stable)
         return floor;
-    double base = std::isfinite(step.settlingTimeSeconds) ? std::max(step.settlingTimeSeconds, 0.0) : 0.0;
+    double base =
+        std::isfinite(step.settlingTimeSeconds) ? std::max(step.settlingTimeSeconds, 0.0) : 0.0;
     const double peak = step.peakTimeSeconds;
-    if (std::isfinite(peak) && peak > 0.0 && step.overshootPct > 0.0 && (base == 0.0 || peak <= 4.0 * base))
+    if (std::isfinite(peak) && peak > 0.0 && step.overshootPct > 0.0 &&
+        (base == 0.0 || peak <= 4.0 * base))
         base = std::max(base, peak);
     double horizon = std::max(1.5 * base, minimumSeconds);
     if (!(horizon > 0.0))

@@ -48,7 +48,8 @@ std::vector<bool> envelopeViolations(const StepResponseCurve& curve, const StepE
  * An unstable or empty figure set gives max(minimumSeconds, 1 s).
  * @throws InvalidInput "minimumSeconds" when negative or not finite.
  */
-double stepViewHorizonSeconds(const StepCharacteristics& step, double minimumSeconds = 0.0,
-                              double settlingLimitSeconds = std::numeric_limits<double>::infinity());
+double
+stepViewHorizonSeconds(const StepCharacteristics& step, double minimumSeconds = 0.0,
+                       double settlingLimitSeconds = std::numeric_limits<double>::infinity());
 
 } // namespace xyt

@@ -11,7 +11,8 @@
 
 namespace xyt {
 
-StepResponseCurve stepResponseCurve(const TransferFunction& closedLoop, double horizonSeconds, int samples) {
+StepResponseCurve stepResponseCurve(const TransferFunction& closedLoop, double horizonSeconds,
+                                    int samples) {
     if (!(horizonSeconds > 0.0) || !std::isfinite(horizonSeconds))
         throw InvalidInput("horizon", "must be a finite number greater than zero");
     if (samples < 10 || samples > 1000000)
@@ -19,16 +20,18 @@ StepResponseCurve stepResponseCurve(const TransferFunction& closedLoop, double h
     StepResponseCurve out;
     const double ts = closedLoop.tsSeconds();
     if (ts > 0.0) {
-        const std::size_t n = static_cast<std::size_t>(
-            std::clamp(std::ceil(horizonSeconds / ts), 2.0, 1e6)) + 1;
+        const std::size_t n =
+            static_cast<std::size_t>(std::clamp(std::ceil(horizonSeconds / ts), 2.0, 1e6)) + 1;
         // y(k) from N(z^-1)/D(z^-1) driven by u(k) = 1 for k >= 0.
-        out.y = filterZInverse(closedLoop.numZInverse(), closedLoop.denZInverse(), std::vector<double>(n, 1.0));
+        out.y = filterZInverse(closedLoop.numZInverse(), closedLoop.denZInverse(),
+                               std::vector<double>(n, 1.0));
         for (std::size_t k = 0; k < n; ++k)
             out.t.push_back(static_cast<double>(k) * ts);
         return out;
     }
     const double dt = horizonSeconds / samples;
-    out.y = simulateLinear(closedLoop, std::vector<double>(static_cast<std::size_t>(samples) + 1, 1.0), dt);
+    out.y = simulateLinear(closedLoop,
+                           std::vector<double>(static_cast<std::size_t>(samples) + 1, 1.0), dt);
     for (int k = 0; k <= samples; ++k)
         out.t.push_back(k * dt);
     return out;
@@ -40,8 +43,10 @@ StepResponseCurve zpetcStepResponseCurve(const PolePlacementDesign& loop, const 
         throw InvalidInput("horizon", "must be a finite number greater than zero");
     const double ts = loop.tsSeconds;
     const std::size_t preview = static_cast<std::size_t>(std::max(zpetc.previewSteps, 0));
-    const std::size_t stepAt = preview + static_cast<std::size_t>(std::max(zpetc.bMinus.degree(), 0)) + 2;
-    const std::size_t after = static_cast<std::size_t>(std::clamp(std::ceil(horizonSeconds / ts), 10.0, 1e6));
+    const std::size_t stepAt =
+        preview + static_cast<std::size_t>(std::max(zpetc.bMinus.degree(), 0)) + 2;
+    const std::size_t after =
+        static_cast<std::size_t>(std::clamp(std::ceil(horizonSeconds / ts), 10.0, 1e6));
     // Samples 0 .. stepAt + after: the last one `after` steps (>= the horizon) past the step.
     const std::size_t samples = stepAt + after + 1;
     std::vector<double> r(samples + preview, 0.0);

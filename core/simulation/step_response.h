@@ -41,7 +41,7 @@ struct RiseTime {
     bool reached = false; ///< both levels were reached within the curve; else the rest is NaN
     double lowCrossingSeconds = std::numeric_limits<double>::quiet_NaN();  ///< curve's clock
     double highCrossingSeconds = std::numeric_limits<double>::quiet_NaN(); ///< curve's clock
-    double seconds = std::numeric_limits<double>::quiet_NaN(); ///< high - low crossing
+    double seconds = std::numeric_limits<double>::quiet_NaN();             ///< high - low crossing
 };
 
 /**

@@ -6,8 +6,8 @@
 namespace xyt {
 
 StepView stepView(const TransferFunction& closedLoop, const StepCharacteristics& step,
-                  const StepEnvelope& limits, const PolePlacementDesign* pp, const ZpetcDesign* zpetc,
-                  bool zpetcRuns) {
+                  const StepEnvelope& limits, const PolePlacementDesign* pp,
+                  const ZpetcDesign* zpetc, bool zpetcRuns) {
     StepView out;
     out.step = step;
     out.envelope = limits;
@@ -17,13 +17,17 @@ StepView stepView(const TransferFunction& closedLoop, const StepCharacteristics&
     out.envelope.finalValue = step.finalValue;
     const double ts = closedLoop.tsSeconds();
     out.sampleTimeSeconds = ts;
-    out.horizonSeconds = stepViewHorizonSeconds(step, ts > 0.0 ? 20.0 * ts : 0.0, limits.settlingTimeSeconds);
+    out.horizonSeconds =
+        stepViewHorizonSeconds(step, ts > 0.0 ? 20.0 * ts : 0.0, limits.settlingTimeSeconds);
     if (pp && zpetc) {
-        StepViewCurve alone{StepCurveKind::LoopAlone, stepResponseCurve(pp->closedLoop(), out.horizonSeconds)};
-        StepViewCurve with{StepCurveKind::WithZpetc, zpetcStepResponseCurve(*pp, *zpetc, out.horizonSeconds)};
+        StepViewCurve alone{StepCurveKind::LoopAlone,
+                            stepResponseCurve(pp->closedLoop(), out.horizonSeconds)};
+        StepViewCurve with{StepCurveKind::WithZpetc,
+                           zpetcStepResponseCurve(*pp, *zpetc, out.horizonSeconds)};
         out.curves = zpetcRuns ? std::vector{with, alone} : std::vector{alone, with};
     } else {
-        out.curves.push_back({StepCurveKind::ClosedLoop, stepResponseCurve(closedLoop, out.horizonSeconds)});
+        out.curves.push_back(
+            {StepCurveKind::ClosedLoop, stepResponseCurve(closedLoop, out.horizonSeconds)});
     }
     const StepResponseCurve& main = out.curves.front().curve;
     if (std::isfinite(step.finalValue) && step.finalValue != 0.0)

@@ -35,11 +35,11 @@ struct StepView {
     std::vector<StepViewCurve> curves;
     /// The figures the metrics panel quotes (AxisEvaluation::step), copied, not recomputed.
     StepCharacteristics step;
-    RiseTime rise;              ///< 10 -> 90 % of step.finalValue on curves[0] (its clock)
+    RiseTime rise;               ///< 10 -> 90 % of step.finalValue on curves[0] (its clock)
     double horizonSeconds = 0.0; ///< after the step (stepViewHorizonSeconds)
     /// The loop's sample time (0: continuous); a discrete loop's curves are its samples, held.
     double sampleTimeSeconds = 0.0;
-    StepEnvelope envelope;      ///< the limits given, with finalValue = step.finalValue
+    StepEnvelope envelope;        ///< the limits given, with finalValue = step.finalValue
     std::vector<bool> violations; ///< envelopeViolations of curves[0]
 };
 

@@ -149,7 +149,8 @@ void runBatch(const LoopModes* const* loops, int used, const TrackingRun& run, d
             }
         if (k + 1 == count)
             break;
-        if (k % kDivergenceCheckSteps == 0 && std::all_of(bad, bad + used, [](double b) { return b != 0.0; }))
+        if (k % kDivergenceCheckSteps == 0 &&
+            std::all_of(bad, bad + used, [](double b) { return b != 0.0; }))
             break; // every result is nullopt; the rest of the run cannot change that
         const double slope = (ref[k + 1] - ref[k]) * unit / dt;
         for (int i = 0; i < kStates; ++i)
@@ -204,7 +205,8 @@ void runBatch(const LoopModes* const* loops, int used, const TrackingRun& run, d
 
 template <int W>
 void runAll(std::span<const LoopModes> lanes, const TrackingRun& run, double travel,
-            std::span<MoveSettleAccumulator* const> moves, std::span<std::optional<TrackingMetrics>> results) {
+            std::span<MoveSettleAccumulator* const> moves,
+            std::span<std::optional<TrackingMetrics>> results) {
     const LoopModes* group[W];
     for (std::size_t first = 0; first < lanes.size(); first += W) {
         const int used = static_cast<int>(std::min<std::size_t>(W, lanes.size() - first));
@@ -231,11 +233,16 @@ void trackBatch(std::span<const LoopModes> lanes, const TrackingRun& run,
     const auto [lo, hi] = std::minmax_element(run.reference->begin(), run.reference->end());
     const double travel = *hi - *lo; // as trackingMetrics: max r - min r
     switch (width) {
-    case 1: return runAll<1>(lanes, run, travel, moves, results);
-    case 2: return runAll<2>(lanes, run, travel, moves, results);
-    case 4: return runAll<4>(lanes, run, travel, moves, results);
-    case 8: return runAll<8>(lanes, run, travel, moves, results);
-    default: throw InvalidInput("batch_width", "must be 1, 2, 4 or 8");
+    case 1:
+        return runAll<1>(lanes, run, travel, moves, results);
+    case 2:
+        return runAll<2>(lanes, run, travel, moves, results);
+    case 4:
+        return runAll<4>(lanes, run, travel, moves, results);
+    case 8:
+        return runAll<8>(lanes, run, travel, moves, results);
+    default:
+        throw InvalidInput("batch_width", "must be 1, 2, 4 or 8");
     }
 }
 

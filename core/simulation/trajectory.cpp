@@ -71,7 +71,8 @@ void Sinusoid::validate() const {
 }
 
 double Sinusoid::value(double t) const {
-    const double envelope = (rampInSeconds > 0.0 && t < rampInSeconds) ? std::max(t, 0.0) / rampInSeconds : 1.0;
+    const double envelope =
+        (rampInSeconds > 0.0 && t < rampInSeconds) ? std::max(t, 0.0) / rampInSeconds : 1.0;
     return offset + amplitude * envelope * std::sin(omegaRadPerSec * t + phaseRad);
 }
 
@@ -93,8 +94,10 @@ void requirePosition(double value, const std::string& field) {
     if (!(std::abs(value) <= kMaxPositionMm)) {
         char shown[32];
         std::snprintf(shown, sizeof shown, "%.6g", value);
-        throw InvalidInput(field, std::string(shown) + " is beyond the 1e9 mm (1000 km) that any "
-                                                       "table could move; refused before it overflows the simulation");
+        throw InvalidInput(field,
+                           std::string(shown) +
+                               " is beyond the 1e9 mm (1000 km) that any "
+                               "table could move; refused before it overflows the simulation");
     }
 }
 
@@ -110,7 +113,8 @@ double physicalMemoryBytes() {
         return std::strtod(injected, nullptr);
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long pageSize = sysconf(_SC_PAGESIZE);
-    return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0.0;
+    return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize)
+                                     : 0.0;
 }
 
 std::size_t sampleLimit() {
@@ -129,16 +133,16 @@ std::vector<double> sampleTimes(double durationSeconds, double dtSeconds) {
         char needs[32], memory[32];
         std::snprintf(needs, sizeof needs, "%.3g", count); // never cast an out-of-range count
         std::snprintf(memory, sizeof memory, "%.3g", physicalMemoryBytes() / 1e9);
-        throw InvalidInput("duration", std::string("needs ") +
-                                           (std::isfinite(count) ? needs : "more than 1e308") +
-                                           " samples at this dt; the limit is " + std::to_string(limit) +
-                                           (limit < kMaxSamples
-                                                ? std::string(" on this machine (") +
-                                                      std::to_string(static_cast<int>(kSampleMemoryFraction * 100)) +
-                                                      " % of its " + memory + " GB of memory at " +
-                                                      std::to_string(static_cast<int>(kBytesPerSample)) +
-                                                      " bytes per sample)"
-                                                : std::string()));
+        throw InvalidInput(
+            "duration",
+            std::string("needs ") + (std::isfinite(count) ? needs : "more than 1e308") +
+                " samples at this dt; the limit is " + std::to_string(limit) +
+                (limit < kMaxSamples
+                     ? std::string(" on this machine (") +
+                           std::to_string(static_cast<int>(kSampleMemoryFraction * 100)) +
+                           " % of its " + memory + " GB of memory at " +
+                           std::to_string(static_cast<int>(kBytesPerSample)) + " bytes per sample)"
+                     : std::string()));
     }
     std::vector<double> t(static_cast<std::size_t>(count));
     for (std::size_t k = 0; k < t.size(); ++k)

@@ -22,7 +22,8 @@ namespace xyt {
  */
 class CubicTrajectory {
 public:
-    /// @throws InvalidInput naming x0, v0, xf, vf, t0 or tf when not finite, or "tf" unless tf > t0.
+    /// @throws InvalidInput naming x0, v0, xf, vf, t0 or tf when not finite, or "tf" unless tf >
+    /// t0.
     CubicTrajectory(double x0, double xf, double t0Seconds, double tfSeconds, double v0 = 0.0,
                     double vf = 0.0);
 
@@ -61,7 +62,8 @@ struct Sinusoid {
 
 /**
  * The circle contour of Braga et al. Eq. 23-24: x = cx + R sin(omega t), y = cy + R cos(omega t)
- * (25 mm at 0.06 rad/s there; 30 mm at 0.1 rad/s in Patrick, Ishak and Adnan). Each axis follows one sinusoid.
+ * (25 mm at 0.06 rad/s there; 30 mm at 0.1 rad/s in Patrick, Ishak and Adnan). Each axis follows
+ * one sinusoid.
  */
 struct Circle {
     double radius = 25.0;

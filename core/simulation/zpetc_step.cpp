@@ -9,8 +9,8 @@
 
 namespace xyt {
 
-StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
-                                             double band) {
+StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop,
+                                             const ZpetcDesign& zpetc, double band) {
     if (!(band > 0.0 && band < 1.0))
         throw InvalidInput("band", "must lie in (0, 1)");
     StepCharacteristics out;
@@ -27,7 +27,8 @@ StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop, co
     const std::size_t after =
         static_cast<std::size_t>(std::clamp(12.0 / std::max(decay, 1e-3), 50.0, 1e6));
     const std::size_t preview = static_cast<std::size_t>(std::max(zpetc.previewSteps, 0));
-    const std::size_t stepAt = preview + static_cast<std::size_t>(std::max(zpetc.bMinus.degree(), 0)) + 2;
+    const std::size_t stepAt =
+        preview + static_cast<std::size_t>(std::max(zpetc.bMinus.degree(), 0)) + 2;
     const std::size_t samples = stepAt + after;
     std::vector<double> r(samples + preview, 0.0);
     std::fill(r.begin() + static_cast<std::ptrdiff_t>(stepAt), r.end(), 1.0);
@@ -50,8 +51,9 @@ StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop, co
     out.overshootPct = std::max(0.0, (y[peakAt] - out.finalValue) / scale * 100.0);
     out.peakTimeSeconds = (static_cast<double>(peakAt) - static_cast<double>(stepAt)) * ts;
     // Settled at the first sample inside the band for good, counted from the step instant.
-    out.settlingTimeSeconds =
-        everOutside && lastOutside + 1 > stepAt ? static_cast<double>(lastOutside + 1 - stepAt) * ts : 0.0;
+    out.settlingTimeSeconds = everOutside && lastOutside + 1 > stepAt
+                                  ? static_cast<double>(lastOutside + 1 - stepAt) * ts
+                                  : 0.0;
     return out;
 }
 
@@ -67,8 +69,10 @@ StepCharacteristics loopStepCharacteristics(const PolePlacementDesign& loop) {
     for (const auto& p : cl.poles())
         slowest = std::max(slowest, std::abs(p));
     const double decay = slowest > 0.0 ? -std::log(slowest) : 10.0;
-    const std::size_t n = static_cast<std::size_t>(std::clamp(12.0 / std::max(decay, 1e-3), 50.0, 1e6));
-    const auto y = filterZInverse(loop.closedLoopNum, loop.closedLoopDen, std::vector<double>(n, 1.0));
+    const std::size_t n =
+        static_cast<std::size_t>(std::clamp(12.0 / std::max(decay, 1e-3), 50.0, 1e6));
+    const auto y =
+        filterZInverse(loop.closedLoopNum, loop.closedLoopDen, std::vector<double>(n, 1.0));
     const double scale = std::max(std::abs(out.finalValue), 1e-300);
     double peak = y[0];
     std::size_t lastOutside = 0;
@@ -85,7 +89,8 @@ StepCharacteristics loopStepCharacteristics(const PolePlacementDesign& loop) {
     }
     out.overshootPct = std::max(0.0, (peak - out.finalValue) / scale * 100.0);
     // A sampled response settles at the first sample inside the band for good.
-    out.settlingTimeSeconds = everOutside ? static_cast<double>(lastOutside + 1) * loop.tsSeconds : 0.0;
+    out.settlingTimeSeconds =
+        everOutside ? static_cast<double>(lastOutside + 1) * loop.tsSeconds : 0.0;
     return out;
 }
 

@@ -8,9 +8,9 @@
 namespace xyt {
 
 /**
- * Step figures of the system a pole-placement axis with ZPETC runs (Patrick, Ishak and Adnan Fig. 6 ahead of
- * Fig. 9): a unit step of the desired output at sample K, read p samples ahead by the ZPETC,
- * through the feedback loop (simulateZpetcLoop, structure (2)). The feedback loop's own step
+ * Step figures of the system a pole-placement axis with ZPETC runs (Patrick, Ishak and Adnan Fig. 6
+ * ahead of Fig. 9): a unit step of the desired output at sample K, read p samples ahead by the
+ * ZPETC, through the feedback loop (simulateZpetcLoop, structure (2)). The feedback loop's own step
  * (Kf B / T alone) overshoots through the non-minimum-phase zero; with the feedforward the
  * axis follows B-(z) B-(z^-1) / [B-(1)]^2, a zero-phase FIR whose step rises before K and
  * settles deg B- samples after it.
@@ -21,8 +21,8 @@ namespace xyt {
  * stable = false and nothing else is set.
  * @throws InvalidInput "band" unless 0 < band < 1.
  */
-StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
-                                             double band = 0.02);
+StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop,
+                                             const ZpetcDesign& zpetc, double band = 0.02);
 
 /**
  * Step figures of the pole-placement loop Kf B / T alone (no feedforward) from its exact sampled

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/design/pole_placement.h"
+#include "core/design/zpetc.h"
 #include "core/simulation/contour_error.h"
 #include "core/simulation/discrete_simulation.h"
-#include "core/design/pole_placement.h"
 #include "core/simulation/trajectory.h"
-#include "core/design/zpetc.h"
 
 #include <vector>
 
@@ -20,7 +20,8 @@ struct ZpetcTrackingRun {
     DiscreteRun trajectoryZpetc; ///< structure (3)
     double rmseWithoutFf = 0.0;  ///< sqrt(mean (r - y1)^2)
     double rmseWithFf = 0.0;     ///< sqrt(mean (r - y2)^2)
-    double improvementPct = 0.0; ///< 100 (1 - rmseWithFf / rmseWithoutFf), Patrick, Ishak and Adnan Table 1
+    double improvementPct =
+        0.0; ///< 100 (1 - rmseWithFf / rmseWithoutFf), Patrick, Ishak and Adnan Table 1
     double maxAbsErrorWithoutFf = 0.0;
     double maxAbsErrorWithFf = 0.0;
 };

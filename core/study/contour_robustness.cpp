@@ -41,8 +41,8 @@ std::vector<char> circleMeasured(const ContourGeometry& g) {
 /// circle those of @p measured, for a path those the trace itself is nearest a measured segment
 /// at (as contourError judges it: a pair whose trace strays near a rapid is not judged on the
 /// nominal trace's samples).
-ContourTraceError judge(const ContourGeometry& g, const std::vector<double>& x, const std::vector<double>& y,
-                        const std::vector<char>& measured) {
+ContourTraceError judge(const ContourGeometry& g, const std::vector<double>& x,
+                        const std::vector<double>& y, const std::vector<char>& measured) {
     ContourTraceError out;
     if (!g.circle) {
         ContourErrorResult c = contourError(*g.path, g.t, x, y, g.pathOptions);
@@ -93,8 +93,8 @@ void validate(const ContourRobustnessProblem& p) {
 }
 
 /// Runs the pair @p values (x's parameters then y's) into the reused runs.
-JointPlantRun runPair(const ContourRobustnessProblem& p, const std::vector<double>& values, SimulationResult& runX,
-                      SimulationResult& runY) {
+JointPlantRun runPair(const ContourRobustnessProblem& p, const std::vector<double>& values,
+                      SimulationResult& runX, SimulationResult& runY) {
     const auto split = values.begin() + static_cast<std::ptrdiff_t>(p.x.parameters.size());
     const PlantRun x = runPerturbedPlant(p.x, std::vector<double>(values.begin(), split), runX);
     const PlantRun y = runPerturbedPlant(p.y, std::vector<double>(split, values.end()), runY);
@@ -149,7 +149,8 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     SimulationResult nominalX, nominalY;
     result.nominal = runPair(problem, nominalValues, nominalX, nominalY);
     if (!result.nominal.finite)
-        throw InvalidInput("nominal", "the nominal design's run is not finite (it diverges): there is no contour to compare with");
+        throw InvalidInput("nominal", "the nominal design's run is not finite (it diverges): there "
+                                      "is no contour to compare with");
     const std::vector<double> nx = outputOn(nominalX, g.t);
     const std::vector<double> ny = outputOn(nominalY, g.t);
     std::vector<char> measured;
@@ -164,7 +165,8 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
         if (measured[k])
             judged.push_back(k);
     if (judged.empty())
-        throw InvalidInput("geometry", g.circle ? "no sample after the ramp-in" : "no sample on a measured segment");
+        throw InvalidInput("geometry", g.circle ? "no sample after the ramp-in"
+                                                : "no sample on a measured segment");
     // The envelope's instants: every stride-th judged sample and the last.
     std::vector<std::size_t> idx;
     for (std::size_t j : envelopeIndices(judged.size(), options.envelopePoints))
@@ -196,23 +198,25 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     ParallelRunOptions parallel;
     parallel.threads = options.threads;
     parallel.progress = options.progress;
-    const ParallelRunOutcome outcome = parallelRuns(pairs.size(), parallel, [&](std::size_t first, std::size_t count) {
-        SimulationResult runX, runY;
-        for (std::size_t i = first; i < first + count; ++i) {
-            JointPlantRun& r = result.runs[i];
-            r = runPair(problem, pairs[i], runX, runY);
-            r.corner = i >= randomCount;
-            if (r.finite) {
-                const ContourTraceError c = judge(g, outputOn(runX, g.t), outputOn(runY, g.t), measured);
-                r.maxAbsContourError = c.maxAbs;
-                r.rmsContourError = c.rms;
-                r.finite = std::isfinite(c.maxAbs) && std::isfinite(c.rms);
-                for (std::size_t k : idx)
-                    errors[i].push_back(c.e[k]);
+    const ParallelRunOutcome outcome =
+        parallelRuns(pairs.size(), parallel, [&](std::size_t first, std::size_t count) {
+            SimulationResult runX, runY;
+            for (std::size_t i = first; i < first + count; ++i) {
+                JointPlantRun& r = result.runs[i];
+                r = runPair(problem, pairs[i], runX, runY);
+                r.corner = i >= randomCount;
+                if (r.finite) {
+                    const ContourTraceError c =
+                        judge(g, outputOn(runX, g.t), outputOn(runY, g.t), measured);
+                    r.maxAbsContourError = c.maxAbs;
+                    r.rmsContourError = c.rms;
+                    r.finite = std::isfinite(c.maxAbs) && std::isfinite(c.rms);
+                    for (std::size_t k : idx)
+                        errors[i].push_back(c.e[k]);
+                }
+                computed[i] = 1;
             }
-            computed[i] = 1;
-        }
-    });
+        });
     result.threadsUsed = outcome.threadsUsed;
     if (outcome.cancelled) {
         result.status = RobustnessStatus::Cancelled;
@@ -243,9 +247,10 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     result.rmsContourError = distributionOf(rms);
     result.error = envelopeOf(g.t, idx, es, nominalError.e);
     if (!result.unstable.empty())
-        result.warnings.push_back(std::to_string(result.unstable.size()) +
-                                  " plant pairs are unstable or diverged with these controllers; they are listed, "
-                                  "not in the statistics");
+        result.warnings.push_back(
+            std::to_string(result.unstable.size()) +
+            " plant pairs are unstable or diverged with these controllers; they are listed, "
+            "not in the statistics");
     return result;
 }
 

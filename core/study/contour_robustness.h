@@ -62,8 +62,9 @@ struct ContourRobustnessResult {
     /// the unit vector along which e is measured there (outward radius; left normal of the
     /// path), so that base + m e normal draws an error e magnified m times about the contour.
     std::vector<Point2> base, normal;
-    std::vector<std::size_t> unstable; ///< indices into runs: unstable or diverged, not in the statistics
-    std::optional<std::size_t> worst;  ///< the stable run of largest max |e|
+    std::vector<std::size_t>
+        unstable; ///< indices into runs: unstable or diverged, not in the statistics
+    std::optional<std::size_t> worst; ///< the stable run of largest max |e|
     int threadsUsed = 0;
     std::vector<std::string> warnings;
 };
@@ -74,9 +75,9 @@ struct ContourRobustnessResult {
  * (options.corners) the 2^p corners of the joint box, each axis simulated with its unchanged
  * controller (runPerturbedPlant) and the traced contour judged by the geometry; on all cores,
  * bit-identical for any thread count.
- * @throws InvalidInput "nominal" when the nominal pair's run diverges, "geometry" (neither or both of circle and path, a time base that is
- *         empty or not increasing, no measured sample), "x."/"y." + the axis' fields
- *         (validateRobustnessProblem), "samples", "envelope_points", "corners".
+ * @throws InvalidInput "nominal" when the nominal pair's run diverges, "geometry" (neither or both
+ * of circle and path, a time base that is empty or not increasing, no measured sample), "x."/"y." +
+ * the axis' fields (validateRobustnessProblem), "samples", "envelope_points", "corners".
  */
 ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem& problem,
                                                  const RobustnessOptions& options = {});

@@ -2,12 +2,12 @@
 #include "core/study/design_sweep.h"
 #include "core/study/parallel_runs.h"
 
-#include "core/model/errors.h"
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
+#include "core/model/errors.h"
+#include "core/model/state_space.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/tracking_batch.h"
-#include "core/model/state_space.h"
 
 #include <Eigen/Core>
 
@@ -33,21 +33,28 @@ bool stepFiguresFinite(const StepCharacteristics& s) {
 
 std::string criterionName(SweepCriterion criterion) {
     switch (criterion) {
-    case SweepCriterion::Itae: return "itae";
-    case SweepCriterion::MaxError: return "max_error";
-    case SweepCriterion::Rmse: return "rmse";
-    case SweepCriterion::MaxU: return "max_u";
-    case SweepCriterion::Settle: return "settle";
-    case SweepCriterion::PhaseMargin: return "phase_margin";
-    case SweepCriterion::GainMargin: return "gain_margin";
+    case SweepCriterion::Itae:
+        return "itae";
+    case SweepCriterion::MaxError:
+        return "max_error";
+    case SweepCriterion::Rmse:
+        return "rmse";
+    case SweepCriterion::MaxU:
+        return "max_u";
+    case SweepCriterion::Settle:
+        return "settle";
+    case SweepCriterion::PhaseMargin:
+        return "phase_margin";
+    case SweepCriterion::GainMargin:
+        return "gain_margin";
     }
     return "itae";
 }
 
 std::optional<SweepCriterion> parseCriterion(const std::string& name) {
     for (SweepCriterion c : {SweepCriterion::Itae, SweepCriterion::MaxError, SweepCriterion::Rmse,
-                             SweepCriterion::MaxU, SweepCriterion::Settle, SweepCriterion::PhaseMargin,
-                             SweepCriterion::GainMargin})
+                             SweepCriterion::MaxU, SweepCriterion::Settle,
+                             SweepCriterion::PhaseMargin, SweepCriterion::GainMargin})
         if (criterionName(c) == name)
             return c;
     return std::nullopt;
@@ -73,9 +80,8 @@ std::vector<double> SweepAxis::values(const std::string& field) const {
     const double last = count - 1;
     for (int i = 1; i + 1 < count; ++i) {
         const double f = i / last;
-        v[static_cast<std::size_t>(i)] =
-            logarithmic ? minValue * std::pow(maxValue / minValue, f)
-                        : minValue + (maxValue - minValue) * f;
+        v[static_cast<std::size_t>(i)] = logarithmic ? minValue * std::pow(maxValue / minValue, f)
+                                                     : minValue + (maxValue - minValue) * f;
     }
     v.back() = maxValue;
     return v;
@@ -85,10 +91,14 @@ double criterionValue(const DesignPoint& point, SweepCriterion criterion) {
     if (!point.computed || !point.metricsFinite)
         return kInf;
     switch (criterion) {
-    case SweepCriterion::Itae: return point.tracking.itae;
-    case SweepCriterion::MaxError: return point.tracking.maxAbsError;
-    case SweepCriterion::Rmse: return point.tracking.rmse;
-    case SweepCriterion::MaxU: return point.tracking.maxAbsU;
+    case SweepCriterion::Itae:
+        return point.tracking.itae;
+    case SweepCriterion::MaxError:
+        return point.tracking.maxAbsError;
+    case SweepCriterion::Rmse:
+        return point.tracking.rmse;
+    case SweepCriterion::MaxU:
+        return point.tracking.maxAbsU;
     case SweepCriterion::Settle:
         return point.move && point.move->settleTimeSeconds ? *point.move->settleTimeSeconds : kInf;
     case SweepCriterion::PhaseMargin:
@@ -174,7 +184,8 @@ DesignPoint DesignEvaluator::finishPoint(const GtDesign& design,
     p.kp = design.kp;
     p.ki = design.ki;
     p.stable = design.stable;
-    p.step = stepCharacteristics(design.closedLoop, design.closedLoopPoles, 0.02, problem_.stepSamples);
+    p.step =
+        stepCharacteristics(design.closedLoop, design.closedLoopPoles, 0.02, problem_.stepSamples);
     p.metricsFinite = tracking.has_value() && stepFiguresFinite(p.step);
     if (tracking) {
         p.tracking = *tracking;
@@ -338,17 +349,20 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
     run.threads = options.threads;
     run.chunk = static_cast<std::size_t>(options.batchWidth);
     run.progress = options.progress;
-    run.progressScale = static_cast<double>(total) / (static_cast<double>(total) + 1.0); // + 1: the refinement
+    run.progressScale =
+        static_cast<double>(total) / (static_cast<double>(total) + 1.0); // + 1: the refinement
     run.onWorkerStart = options.onWorkerStart;
-    const ParallelRunOutcome outcome = parallelRuns(total, run, [&](std::size_t first, std::size_t count) {
-        double wn[8], kp[8];
-        for (std::size_t j = 0; j < count; ++j) {
-            wn[j] = result.wnValues[(first + j) / nKp];
-            kp[j] = result.kpValues[(first + j) % nKp];
-        }
-        evaluator.evaluateBatch(std::span<const double>(wn, count), std::span<const double>(kp, count),
-                                std::span<DesignPoint>(result.points.data() + first, count), options.batchWidth);
-    });
+    const ParallelRunOutcome outcome =
+        parallelRuns(total, run, [&](std::size_t first, std::size_t count) {
+            double wn[8], kp[8];
+            for (std::size_t j = 0; j < count; ++j) {
+                wn[j] = result.wnValues[(first + j) / nKp];
+                kp[j] = result.kpValues[(first + j) % nKp];
+            }
+            evaluator.evaluateBatch(
+                std::span<const double>(wn, count), std::span<const double>(kp, count),
+                std::span<DesignPoint>(result.points.data() + first, count), options.batchWidth);
+        });
     result.threadsUsed = outcome.threadsUsed;
     tallyDesignSpace(result);
     if (outcome.cancelled || result.computedCount < static_cast<int>(total)) {

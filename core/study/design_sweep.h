@@ -96,17 +96,17 @@ double moveSweepDurationSeconds(double tfSeconds, double maxSettleTimeSeconds);
 
 /// Everything known about one design (wn, kp).
 struct DesignPoint {
-    double wn = 0.0; ///< rad/s
-    double kp = 0.0; ///< V per model unit
-    double ki = 0.0; ///< kp psi1 = wn^4 / k0 (Braga et al. Eq. 11, 16)
+    double wn = 0.0;       ///< rad/s
+    double kp = 0.0;       ///< V per model unit
+    double ki = 0.0;       ///< kp psi1 = wn^4 / k0 (Braga et al. Eq. 11, 16)
     bool computed = false; ///< false for points a cancelled sweep never reached
     bool stable = false;   ///< closed loop (= G_R) asymptotically stable
     /// Every tracking figure is finite and, for a stable loop, the step figures too. When false
     /// the run diverged: the tracking figures are set to +infinity (never NaN) and the point is
     /// infeasible.
     bool metricsFinite = false;
-    TrackingMetrics tracking;  ///< on the problem's trajectory, with the actuator limit
-    StepCharacteristics step;  ///< of the closed loop (unset when unstable, see its doc)
+    TrackingMetrics tracking; ///< on the problem's trajectory, with the actuator limit
+    StepCharacteristics step; ///< of the closed loop (unset when unstable, see its doc)
     /// Move-and-settle figures, for a problem with a move (see DesignProblem::move).
     std::optional<MoveSettleMetrics> move;
     /// The loop's margins (stabilityMargins of L = G_c G): the phase margin of smallest
@@ -133,11 +133,12 @@ bool criterionMaximizes(SweepCriterion criterion);
 /**
  * Evaluates designs of one DesignProblem. Equal, bit for bit, to
  *   d = designGuilleminTruxal(plant, wn, kp);
- *   run = simulateLoop(plant.transferFunction(), d.controller, reference, {dt, spec.umaxVolts, 0, unit});
- *   trackingMetrics(run), stepCharacteristics(d.closedLoop, 0.02, stepSamples), checkSpecification(...)
- * but faster: the tracking runs of several designs are stepped together by trackBatch (one
- * vector lane per design, the metrics accumulated on the fly instead of storing the signals,
- * the clipped-mode matrices computed only when a design's command first reaches the limit).
+ *   run = simulateLoop(plant.transferFunction(), d.controller, reference, {dt, spec.umaxVolts, 0,
+ * unit}); trackingMetrics(run), stepCharacteristics(d.closedLoop, 0.02, stepSamples),
+ * checkSpecification(...) but faster: the tracking runs of several designs are stepped together by
+ * trackBatch (one vector lane per design, the metrics accumulated on the fly instead of storing the
+ * signals, the clipped-mode matrices computed only when a design's command first reaches the
+ * limit).
  *
  * evaluate() and evaluateBatch() are const and keep no state: they may be called from several
  * threads at once.
@@ -169,8 +170,8 @@ private:
 
 /// Result of the local search around the best grid point.
 struct RefinementResult {
-    DesignPoint point;    ///< the refined design (the start point when nothing better was found)
-    int evaluations = 0;  ///< designs evaluated by the search
+    DesignPoint point;     ///< the refined design (the start point when nothing better was found)
+    int evaluations = 0;   ///< designs evaluated by the search
     bool improved = false; ///< the criterion is strictly lower than at the start
 };
 
@@ -236,8 +237,12 @@ struct DesignSweepResult {
     int threadsUsed = 0;
     std::vector<std::string> warnings;
 
-    std::size_t index(std::size_t iWn, std::size_t iKp) const { return iWn * kpValues.size() + iKp; }
-    const DesignPoint& at(std::size_t iWn, std::size_t iKp) const { return points[index(iWn, iKp)]; }
+    std::size_t index(std::size_t iWn, std::size_t iKp) const {
+        return iWn * kpValues.size() + iKp;
+    }
+    const DesignPoint& at(std::size_t iWn, std::size_t iKp) const {
+        return points[index(iWn, iKp)];
+    }
 };
 
 /// Recounts computedCount, stableCount, feasibleMask, feasibleCount and bestIndex (for

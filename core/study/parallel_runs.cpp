@@ -14,8 +14,9 @@
 
 namespace xyt {
 
-ParallelRunOutcome parallelRuns(std::size_t total, const ParallelRunOptions& options,
-                                const std::function<void(std::size_t first, std::size_t count)>& body) {
+ParallelRunOutcome
+parallelRuns(std::size_t total, const ParallelRunOptions& options,
+             const std::function<void(std::size_t first, std::size_t count)>& body) {
     if (options.threads < 0 || options.threads > 1024)
         throw InvalidInput("threads", "must be from 0 (all cores) to 1024");
     if (options.chunk < 1)
@@ -25,7 +26,8 @@ ParallelRunOutcome parallelRuns(std::size_t total, const ParallelRunOptions& opt
     const int hardware = static_cast<int>(std::thread::hardware_concurrency());
     const int wanted = options.threads > 0 ? options.threads : std::max(1, hardware);
     ParallelRunOutcome outcome;
-    outcome.threadsUsed = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(wanted), chunks));
+    outcome.threadsUsed =
+        static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(wanted), chunks));
 
     std::atomic<std::size_t> next{0};
     std::atomic<std::size_t> done{0};
@@ -76,7 +78,8 @@ ParallelRunOutcome parallelRuns(std::size_t total, const ParallelRunOptions& opt
             if (!progress || cancel.load())
                 continue;
             lock.unlock();
-            const bool goOn = progress(static_cast<double>(done.load(std::memory_order_acquire)) * scale);
+            const bool goOn =
+                progress(static_cast<double>(done.load(std::memory_order_acquire)) * scale);
             lock.lock();
             if (!goOn)
                 cancel = true;

@@ -8,8 +8,8 @@ namespace xyt {
 
 /// How parallelRuns divides and reports its work.
 struct ParallelRunOptions {
-    int threads = 0;         ///< 0: std::thread::hardware_concurrency() (at least 1)
-    std::size_t chunk = 1;   ///< consecutive items a worker takes at a time
+    int threads = 0;       ///< 0: std::thread::hardware_concurrency() (at least 1)
+    std::size_t chunk = 1; ///< consecutive items a worker takes at a time
     /// Called on the CALLING thread about every 20 ms with the fraction of items done (scaled
     /// by progressScale); false cancels: the workers stop after the chunk each is computing.
     std::function<bool(double fraction)> progress;
@@ -30,7 +30,8 @@ struct ParallelRunOutcome {
  * robustness analysis identical bit for bit across thread counts. The first exception a body
  * throws cancels the rest and is rethrown here after every worker has stopped.
  */
-ParallelRunOutcome parallelRuns(std::size_t total, const ParallelRunOptions& options,
-                                const std::function<void(std::size_t first, std::size_t count)>& body);
+ParallelRunOutcome
+parallelRuns(std::size_t total, const ParallelRunOptions& options,
+             const std::function<void(std::size_t first, std::size_t count)>& body);
 
 } // namespace xyt

@@ -11,7 +11,8 @@
 
 namespace xyt {
 
-void setRelativeRange(std::vector<UncertainParameter>& parameters, const std::string& name, double relative) {
+void setRelativeRange(std::vector<UncertainParameter>& parameters, const std::string& name,
+                      double relative) {
     for (UncertainParameter& p : parameters)
         if (p.name == name) {
             if (!std::isfinite(relative) || relative < 0.0 || relative >= 1.0)
@@ -25,7 +26,8 @@ void setRelativeRange(std::vector<UncertainParameter>& parameters, const std::st
     throw InvalidInput("range", "no parameter '" + name + "' in this plant (it has " + known + ")");
 }
 
-std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> parameters, double scale) {
+std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> parameters,
+                                             double scale) {
     if (!std::isfinite(scale) || scale < 0.0)
         throw InvalidInput("scale", "must be a finite number >= 0");
     for (UncertainParameter& p : parameters)
@@ -33,8 +35,8 @@ std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> par
     return parameters;
 }
 
-std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter>& parameters, int count,
-                                            std::uint64_t seed) {
+std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter>& parameters,
+                                            int count, std::uint64_t seed) {
     if (count < 0 || count > 1'000'000)
         throw InvalidInput("samples", "must be from 0 to 1000000");
     std::mt19937_64 rng(seed);
@@ -50,13 +52,14 @@ std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter
 }
 
 std::vector<std::vector<double>> drawPlantsNormal(const std::vector<UncertainParameter>& parameters,
-                                                  const Eigen::MatrixXd& covariance, int count, std::uint64_t seed) {
+                                                  const Eigen::MatrixXd& covariance, int count,
+                                                  std::uint64_t seed) {
     if (count < 0 || count > 1'000'000)
         throw InvalidInput("samples", "must be from 0 to 1000000");
     const Eigen::Index d = static_cast<Eigen::Index>(parameters.size());
     if (covariance.rows() != d || covariance.cols() != d)
-        throw InvalidInput("covariance", "must be " + std::to_string(d) + " x " + std::to_string(d) +
-                                             " (one row per parameter)");
+        throw InvalidInput("covariance", "must be " + std::to_string(d) + " x " +
+                                             std::to_string(d) + " (one row per parameter)");
     if (!covariance.allFinite())
         throw InvalidInput("covariance", "holds a value that is not finite");
     const double scale = covariance.cwiseAbs().maxCoeff();
@@ -87,8 +90,9 @@ std::vector<std::vector<double>> boxCorners(const std::vector<UncertainParameter
         if (parameters[i].relative > 0.0)
             uncertain.push_back(i);
     if (uncertain.size() > 16)
-        throw InvalidInput("corners", std::to_string(uncertain.size()) +
-                                          " uncertain parameters have too many corners (at most 16 parameters)");
+        throw InvalidInput(
+            "corners", std::to_string(uncertain.size()) +
+                           " uncertain parameters have too many corners (at most 16 parameters)");
     const std::size_t count = std::size_t{1} << uncertain.size();
     std::vector<std::vector<double>> corners(count);
     for (std::size_t c = 0; c < count; ++c) {
@@ -96,7 +100,8 @@ std::vector<std::vector<double>> boxCorners(const std::vector<UncertainParameter
             corners[c].push_back(p.nominal);
         for (std::size_t j = 0; j < uncertain.size(); ++j) {
             const UncertainParameter& p = parameters[uncertain[j]];
-            corners[c][uncertain[j]] = p.nominal * (1.0 + ((c >> j) & 1U ? p.relative : -p.relative));
+            corners[c][uncertain[j]] =
+                p.nominal * (1.0 + ((c >> j) & 1U ? p.relative : -p.relative));
         }
     }
     return corners;

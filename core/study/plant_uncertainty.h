@@ -27,10 +27,12 @@ struct UncertainParameter {
  *         reach a zero or sign-changed coefficient: another plant structure, not a tolerance);
  *         "range" naming the known parameters when @p name is not one of them.
  */
-void setRelativeRange(std::vector<UncertainParameter>& parameters, const std::string& name, double relative);
+void setRelativeRange(std::vector<UncertainParameter>& parameters, const std::string& name,
+                      double relative);
 
 /// Every parameter's relative range multiplied by @p scale (>= 0; the result must stay < 1).
-std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> parameters, double scale);
+std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> parameters,
+                                             double scale);
 
 /**
  * @p count random plants: row i holds the parameter values of plant i, each value
@@ -42,8 +44,8 @@ std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> par
  * direction (U is the same), which keeps envelopes nested.
  * @throws InvalidInput "samples" unless 0 <= count <= 1'000'000.
  */
-std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter>& parameters, int count,
-                                            std::uint64_t seed);
+std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter>& parameters,
+                                            int count, std::uint64_t seed);
 
 /**
  * @p count random plants from the normal distribution N(nominal, @p covariance) of an identified
@@ -56,7 +58,8 @@ std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter
  *         parameters' size, finite, symmetric (to 1e-12 relative) and positive semi-definite.
  */
 std::vector<std::vector<double>> drawPlantsNormal(const std::vector<UncertainParameter>& parameters,
-                                                  const Eigen::MatrixXd& covariance, int count, std::uint64_t seed);
+                                                  const Eigen::MatrixXd& covariance, int count,
+                                                  std::uint64_t seed);
 
 /**
  * The corners of the parameter box: every combination of nominal (1 +- relative) over the p

@@ -22,8 +22,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The value of parameter @p name among @p values, or @p fallback when it is not uncertain.
-double valueOf(const RobustnessProblem& problem, const std::vector<double>& values, const std::string& name,
-               double fallback) {
+double valueOf(const RobustnessProblem& problem, const std::vector<double>& values,
+               const std::string& name, double fallback) {
     for (std::size_t i = 0; i < problem.parameters.size(); ++i)
         if (problem.parameters[i].name == name)
             return values[i];
@@ -65,7 +65,8 @@ void fillDiscrete(const std::vector<double>& r, const DiscreteRun& run, double t
 
 } // namespace
 
-PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values, SimulationResult& run) {
+PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values,
+                           SimulationResult& run) {
     PlantRun out;
     out.values = values;
     std::optional<LoopMarginFigures> margins;
@@ -100,12 +101,15 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
                                         problem.reference.begin() + static_cast<std::ptrdiff_t>(n));
         const double umax = problem.spec.umaxVolts;
         if (problem.zpetcEnabled) {
-            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax, n, run);
+            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax,
+                         n, run);
             out.rmseWithoutFf = rootMeanSquare(run.e);
-            fillDiscrete(problem.reference, simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n),
+            fillDiscrete(problem.reference,
+                         simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n),
                          loop.tsSeconds, umax, n, run);
         } else {
-            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax, n, run);
+            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax,
+                         n, run);
         }
         if (out.stable)
             out.step = problem.zpetcEnabled ? zpetcStepCharacteristics(loop, *problem.zpetc)
@@ -114,7 +118,8 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
         margins = LoopMarginFigures{m.phaseMarginDeg, m.gainMarginDb};
     }
     out.tracking = trackingMetrics(run);
-    out.finite = !out.tracking.diverged && std::isfinite(out.tracking.rmse) && std::isfinite(out.tracking.itae);
+    out.finite = !out.tracking.diverged && std::isfinite(out.tracking.rmse) &&
+                 std::isfinite(out.tracking.itae);
     if (problem.move && out.finite)
         out.move = moveSettleMetrics(run, *problem.move, problem.spec.inPositionWindowMm);
     out.margins = margins;
@@ -140,14 +145,17 @@ void validateRobustnessProblem(const RobustnessProblem& problem) {
     if (problem.loop && problem.zpetcEnabled && !problem.zpetc)
         throw InvalidInput("problem", "ZPETC is enabled without its design");
     const std::size_t preview = problem.loop && problem.zpetcEnabled
-                                    ? static_cast<std::size_t>(problem.zpetc->previewSteps) : 0;
+                                    ? static_cast<std::size_t>(problem.zpetc->previewSteps)
+                                    : 0;
     if (problem.samples < 2 || problem.reference.size() < problem.samples + preview)
-        throw InvalidInput("problem", "the reference must hold the run (at least 2 samples) and the preview");
+        throw InvalidInput("problem",
+                           "the reference must hold the run (at least 2 samples) and the preview");
     if (problem.controller)
         for (const char* name : {"k0", "a1", "a2"})
             if (std::none_of(problem.parameters.begin(), problem.parameters.end(),
                              [&](const UncertainParameter& p) { return p.name == name; }))
-                throw InvalidInput("problem", std::string("a continuous plant needs the parameter ") + name);
+                throw InvalidInput("problem",
+                                   std::string("a continuous plant needs the parameter ") + name);
     if (problem.controller && problem.reference.size() != problem.samples)
         throw InvalidInput("problem", "a continuous run has exactly the reference's samples");
     problem.spec.validate();
@@ -156,14 +164,16 @@ void validateRobustnessProblem(const RobustnessProblem& problem) {
             throw InvalidInput("range." + p.name, "must be from 0 to below 100 %");
 }
 
-RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options) {
+RobustnessResult analyzeRobustness(const RobustnessProblem& problem,
+                                   const RobustnessOptions& options) {
     validateRobustnessProblem(problem);
     validateOptions(options);
     RobustnessResult result;
     for (const UncertainParameter& p : problem.parameters)
         result.parameterNames.push_back(p.name);
     std::vector<std::vector<double>> plants =
-        problem.covariance ? drawPlantsNormal(problem.parameters, *problem.covariance, options.samples, options.seed)
+        problem.covariance ? drawPlantsNormal(problem.parameters, *problem.covariance,
+                                              options.samples, options.seed)
                            : drawPlants(problem.parameters, options.samples, options.seed);
     const std::size_t randomCount = plants.size();
     if (options.corners)
@@ -183,20 +193,21 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     ParallelRunOptions parallel;
     parallel.threads = options.threads;
     parallel.progress = options.progress;
-    const ParallelRunOutcome outcome = parallelRuns(plants.size(), parallel, [&](std::size_t first, std::size_t count) {
-        SimulationResult run; // one per chunk; a chunk is one plant
-        for (std::size_t i = first; i < first + count; ++i) {
-            result.runs[i] = runPerturbedPlant(problem, plants[i], run);
-            result.runs[i].corner = i >= randomCount;
-            Decimated& d = signals[i];
-            for (std::size_t k : idx) {
-                d.y.push_back(run.y[k]);
-                d.e.push_back(run.e[k]);
-                d.u.push_back(run.u[k]);
+    const ParallelRunOutcome outcome =
+        parallelRuns(plants.size(), parallel, [&](std::size_t first, std::size_t count) {
+            SimulationResult run; // one per chunk; a chunk is one plant
+            for (std::size_t i = first; i < first + count; ++i) {
+                result.runs[i] = runPerturbedPlant(problem, plants[i], run);
+                result.runs[i].corner = i >= randomCount;
+                Decimated& d = signals[i];
+                for (std::size_t k : idx) {
+                    d.y.push_back(run.y[k]);
+                    d.e.push_back(run.e[k]);
+                    d.u.push_back(run.u[k]);
+                }
+                computed[i] = 1;
             }
-            computed[i] = 1;
-        }
-    });
+        });
     result.threadsUsed = outcome.threadsUsed;
     if (outcome.cancelled) {
         result.status = RobustnessStatus::Cancelled;
@@ -235,7 +246,9 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
         }
     }
     result.fractionMeetingSpec =
-        result.computedCount > 0 ? static_cast<double>(meeting) / static_cast<double>(result.computedCount) : 0.0;
+        result.computedCount > 0
+            ? static_cast<double>(meeting) / static_cast<double>(result.computedCount)
+            : 0.0;
     result.rmse = distributionOf(rmse);
     result.maxAbsError = distributionOf(maxE);
     result.maxAbsU = distributionOf(maxU);
@@ -246,9 +259,10 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const Robus
     result.error = envelopeOf(nominalRun.t, idx, es, nominalRun.e);
     result.command = envelopeOf(nominalRun.t, idx, us, nominalRun.u);
     if (!result.unstable.empty())
-        result.warnings.push_back(std::to_string(result.unstable.size()) +
-                                  " plants are unstable or diverged with this controller; they are listed, "
-                                  "not in the statistics");
+        result.warnings.push_back(
+            std::to_string(result.unstable.size()) +
+            " plants are unstable or diverged with this controller; they are listed, "
+            "not in the statistics");
     return result;
 }
 
@@ -292,7 +306,8 @@ std::vector<ZpetcSensitivityPoint> zpetcSensitivity(const RobustnessProblem& pro
                                                     const std::vector<double>& scales,
                                                     const RobustnessOptions& options) {
     if (!problem.loop || !problem.zpetcEnabled)
-        throw InvalidInput("problem", "the ZPETC sensitivity needs a pole-placement axis with ZPETC enabled");
+        throw InvalidInput("problem",
+                           "the ZPETC sensitivity needs a pole-placement axis with ZPETC enabled");
     if (scales.empty())
         throw InvalidInput("scales", "give at least one scale");
     std::vector<ZpetcSensitivityPoint> curve;

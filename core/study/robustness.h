@@ -26,8 +26,8 @@ namespace xyt {
  *    the parameters "k0", "a1", "a2", simulated as simulateLoop does (saturation at umax) at dt.
  *  - Discrete (pole placement): the RST law of `loop` (F, G, Kf unchanged) drives the ARX model
  *    A = 1 + a1 z^-1 + ..., B = b1 z^-1 + ... with the perturbed coefficients, with the
- *    feedforward `zpetc` built from the NOMINAL model when zpetcEnabled (Patrick, Ishak and Adnan's ZPETC
- *    sensitivity to mismatch); also the loop alone, for the RMSE without feedforward.
+ *    feedforward `zpetc` built from the NOMINAL model when zpetcEnabled (Patrick, Ishak and Adnan's
+ * ZPETC sensitivity to mismatch); also the loop alone, for the RMSE without feedforward.
  */
 struct RobustnessProblem {
     std::vector<UncertainParameter> parameters;
@@ -55,7 +55,7 @@ struct RobustnessProblem {
 };
 
 struct RobustnessOptions {
-    int samples = 200;        ///< random plants
+    int samples = 200; ///< random plants
     std::uint64_t seed = 1;
     bool corners = true;      ///< also the 2^p corners of the parameter box
     int threads = 0;          ///< 0: all cores; the result does not depend on it, bit for bit
@@ -111,7 +111,8 @@ struct RobustnessResult {
  * @throws InvalidInput "samples", "envelope_points", "threads", "problem" (neither or both
  *         loop kinds, a reference shorter than the run), "corners", and from the parameters.
  */
-RobustnessResult analyzeRobustness(const RobustnessProblem& problem, const RobustnessOptions& options = {});
+RobustnessResult analyzeRobustness(const RobustnessProblem& problem,
+                                   const RobustnessOptions& options = {});
 
 /**
  * Checks @p problem as analyzeRobustness does.

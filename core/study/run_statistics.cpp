@@ -8,7 +8,8 @@ namespace xyt {
 
 double nearestRankPercentile(const std::vector<double>& sorted, double p) {
     const double rank = std::ceil(p / 100.0 * static_cast<double>(sorted.size()));
-    const std::size_t i = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(sorted.size())));
+    const std::size_t i =
+        static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(sorted.size())));
     return sorted[i - 1];
 }
 
@@ -44,7 +45,8 @@ std::vector<std::size_t> envelopeIndices(std::size_t n, int points) {
 }
 
 SignalEnvelope envelopeOf(const std::vector<double>& t, const std::vector<std::size_t>& idx,
-                          const std::vector<const std::vector<double>*>& runs, const std::vector<double>& nominal) {
+                          const std::vector<const std::vector<double>*>& runs,
+                          const std::vector<double>& nominal) {
     SignalEnvelope env;
     if (runs.empty())
         return env;

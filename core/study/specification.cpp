@@ -16,9 +16,13 @@ void requireNonNegative(double value, const std::string& field) {
 }
 
 /// Comparisons written so that NaN fails: !(NaN <= x) is true.
-bool atMost(double value, double limit) { return std::isfinite(value) && value <= limit; }
+bool atMost(double value, double limit) {
+    return std::isfinite(value) && value <= limit;
+}
 /// At least the limit; +infinity (no crossing) passes, NaN fails.
-bool atLeast(double value, double limit) { return !std::isnan(value) && value >= limit; }
+bool atLeast(double value, double limit) {
+    return !std::isnan(value) && value >= limit;
+}
 
 } // namespace
 
@@ -43,10 +47,12 @@ SpecificationCheck checkSpecification(const Specification& spec, const TrackingM
     SpecificationCheck c;
     c.stable = step.stable;
     c.settlingTime = step.stable && atMost(step.settlingTimeSeconds, spec.maxSettlingTimeSeconds);
-    c.overshoot = step.stable && atMost(step.overshootPct, spec.maxOvershootPct +
-                                                               Specification::kOvershootRoundOffPct);
+    c.overshoot =
+        step.stable &&
+        atMost(step.overshootPct, spec.maxOvershootPct + Specification::kOvershootRoundOffPct);
     // A diverged run has no figures: it fails both tracking criteria (atMost(NaN) is false too).
-    c.noSaturation = !tracking.diverged && !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
+    c.noSaturation =
+        !tracking.diverged && !tracking.saturated && atMost(tracking.maxAbsU, spec.umaxVolts);
     c.trackingError = !tracking.diverged && atMost(tracking.maxAbsErrorPct, spec.maxErrorPct);
     if (move) {
         c.settleApplies = true;

@@ -69,10 +69,10 @@ struct Specification {
 /// Pass/fail of each criterion of a Specification. A failed criterion says nothing about the
 /// others; a metric that is not finite fails its criterion.
 struct SpecificationCheck {
-    bool stable = false;       ///< closed loop asymptotically stable (needed by the step figures)
-    bool settlingTime = false; ///< settlingTimeSeconds <= maxSettlingTimeSeconds
-    bool overshoot = false;    ///< overshootPct <= maxOvershootPct + kOvershootRoundOffPct
-    bool noSaturation = false; ///< no clipped sample and maxAbsU <= umaxVolts
+    bool stable = false;        ///< closed loop asymptotically stable (needed by the step figures)
+    bool settlingTime = false;  ///< settlingTimeSeconds <= maxSettlingTimeSeconds
+    bool overshoot = false;     ///< overshootPct <= maxOvershootPct + kOvershootRoundOffPct
+    bool noSaturation = false;  ///< no clipped sample and maxAbsU <= umaxVolts
     bool trackingError = false; ///< maxAbsErrorPct <= maxErrorPct
     /// Point-to-point moves only (settleApplies): the run settled into the window and
     /// settleTimeSeconds <= maxSettleTimeSeconds. True when it does not apply (a circle).
@@ -113,9 +113,10 @@ struct LoopMarginFigures {
  * minimum phase and gain margins are judged too.
  * @throws InvalidInput from Specification::validate.
  */
-SpecificationCheck checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
-                                      const StepCharacteristics& step,
-                                      const std::optional<MoveSettleMetrics>& move = std::nullopt,
-                                      const std::optional<LoopMarginFigures>& margins = std::nullopt);
+SpecificationCheck
+checkSpecification(const Specification& spec, const TrackingMetrics& tracking,
+                   const StepCharacteristics& step,
+                   const std::optional<MoveSettleMetrics>& move = std::nullopt,
+                   const std::optional<LoopMarginFigures>& margins = std::nullopt);
 
 } // namespace xyt

@@ -12,13 +12,15 @@ namespace xyt {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr SpecCriterion kCriteria[] = {SpecCriterion::Stable,       SpecCriterion::SettlingTime,
-                                       SpecCriterion::Overshoot,    SpecCriterion::NoSaturation,
+constexpr SpecCriterion kCriteria[] = {SpecCriterion::Stable,        SpecCriterion::SettlingTime,
+                                       SpecCriterion::Overshoot,     SpecCriterion::NoSaturation,
                                        SpecCriterion::TrackingError, SpecCriterion::Settle,
-                                       SpecCriterion::PhaseMargin,  SpecCriterion::GainMargin};
+                                       SpecCriterion::PhaseMargin,   SpecCriterion::GainMargin};
 
 /// The margins are minimum limits: their best value is the largest.
-bool largerIsBetter(SpecCriterion c) { return c == SpecCriterion::PhaseMargin || c == SpecCriterion::GainMargin; }
+bool largerIsBetter(SpecCriterion c) {
+    return c == SpecCriterion::PhaseMargin || c == SpecCriterion::GainMargin;
+}
 
 /// What a criterion is called in a sentence, and the unit of its value.
 struct Wording {
@@ -27,42 +29,66 @@ struct Wording {
 };
 Wording wording(SpecCriterion c) {
     switch (c) {
-    case SpecCriterion::Stable: return {"stability", ""};
-    case SpecCriterion::SettlingTime: return {"step settling time", " s"};
-    case SpecCriterion::Overshoot: return {"step overshoot", " %"};
-    case SpecCriterion::NoSaturation: return {"clipped time", " s"};
-    case SpecCriterion::TrackingError: return {"max tracking error", " % of the travel"};
-    case SpecCriterion::Settle: return {"settle time after the move", " s"};
-    case SpecCriterion::PhaseMargin: return {"phase margin", " deg"};
-    case SpecCriterion::GainMargin: return {"gain margin", " dB"};
+    case SpecCriterion::Stable:
+        return {"stability", ""};
+    case SpecCriterion::SettlingTime:
+        return {"step settling time", " s"};
+    case SpecCriterion::Overshoot:
+        return {"step overshoot", " %"};
+    case SpecCriterion::NoSaturation:
+        return {"clipped time", " s"};
+    case SpecCriterion::TrackingError:
+        return {"max tracking error", " % of the travel"};
+    case SpecCriterion::Settle:
+        return {"settle time after the move", " s"};
+    case SpecCriterion::PhaseMargin:
+        return {"phase margin", " deg"};
+    case SpecCriterion::GainMargin:
+        return {"gain margin", " dB"};
     }
     return {"", ""};
 }
 
 bool passes(const SpecificationCheck& c, SpecCriterion criterion) {
     switch (criterion) {
-    case SpecCriterion::Stable: return c.stable;
-    case SpecCriterion::SettlingTime: return c.settlingTime;
-    case SpecCriterion::Overshoot: return c.overshoot;
-    case SpecCriterion::NoSaturation: return c.noSaturation;
-    case SpecCriterion::TrackingError: return c.trackingError;
-    case SpecCriterion::Settle: return c.settle;
-    case SpecCriterion::PhaseMargin: return c.phaseMargin;
-    case SpecCriterion::GainMargin: return c.gainMargin;
+    case SpecCriterion::Stable:
+        return c.stable;
+    case SpecCriterion::SettlingTime:
+        return c.settlingTime;
+    case SpecCriterion::Overshoot:
+        return c.overshoot;
+    case SpecCriterion::NoSaturation:
+        return c.noSaturation;
+    case SpecCriterion::TrackingError:
+        return c.trackingError;
+    case SpecCriterion::Settle:
+        return c.settle;
+    case SpecCriterion::PhaseMargin:
+        return c.phaseMargin;
+    case SpecCriterion::GainMargin:
+        return c.gainMargin;
     }
     return false;
 }
 
 double limitOf(const Specification& spec, SpecCriterion c) {
     switch (c) {
-    case SpecCriterion::Stable: return 0.0;
-    case SpecCriterion::SettlingTime: return spec.maxSettlingTimeSeconds;
-    case SpecCriterion::Overshoot: return spec.maxOvershootPct;
-    case SpecCriterion::NoSaturation: return 0.0;
-    case SpecCriterion::TrackingError: return spec.maxErrorPct;
-    case SpecCriterion::Settle: return spec.maxSettleTimeSeconds;
-    case SpecCriterion::PhaseMargin: return spec.minPhaseMarginDeg;
-    case SpecCriterion::GainMargin: return spec.minGainMarginDb;
+    case SpecCriterion::Stable:
+        return 0.0;
+    case SpecCriterion::SettlingTime:
+        return spec.maxSettlingTimeSeconds;
+    case SpecCriterion::Overshoot:
+        return spec.maxOvershootPct;
+    case SpecCriterion::NoSaturation:
+        return 0.0;
+    case SpecCriterion::TrackingError:
+        return spec.maxErrorPct;
+    case SpecCriterion::Settle:
+        return spec.maxSettleTimeSeconds;
+    case SpecCriterion::PhaseMargin:
+        return spec.minPhaseMarginDeg;
+    case SpecCriterion::GainMargin:
+        return spec.minGainMarginDb;
     }
     return 0.0;
 }
@@ -74,10 +100,12 @@ std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
         return std::nullopt;
     const bool stepDefined = p.stable && p.metricsFinite;
     switch (c) {
-    case SpecCriterion::Stable: return std::nullopt;
+    case SpecCriterion::Stable:
+        return std::nullopt;
     case SpecCriterion::SettlingTime:
         return stepDefined ? std::optional(p.step.settlingTimeSeconds) : std::nullopt;
-    case SpecCriterion::Overshoot: return stepDefined ? std::optional(p.step.overshootPct) : std::nullopt;
+    case SpecCriterion::Overshoot:
+        return stepDefined ? std::optional(p.step.overshootPct) : std::nullopt;
     case SpecCriterion::NoSaturation:
         return p.metricsFinite ? std::optional(p.tracking.saturatedTimeSeconds) : std::nullopt;
     case SpecCriterion::TrackingError:
@@ -85,38 +113,50 @@ std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
     case SpecCriterion::Settle:
         return p.move && p.move->settleTimeSeconds ? p.move->settleTimeSeconds : std::nullopt;
     case SpecCriterion::PhaseMargin:
-        return stepDefined && !std::isnan(p.phaseMarginDeg) ? std::optional(p.phaseMarginDeg) : std::nullopt;
+        return stepDefined && !std::isnan(p.phaseMarginDeg) ? std::optional(p.phaseMarginDeg)
+                                                            : std::nullopt;
     case SpecCriterion::GainMargin:
-        return stepDefined && !std::isnan(p.gainMarginDb) ? std::optional(p.gainMarginDb) : std::nullopt;
+        return stepDefined && !std::isnan(p.gainMarginDb) ? std::optional(p.gainMarginDb)
+                                                          : std::nullopt;
     }
     return std::nullopt;
 }
 
 std::string at(const DesignSweepResult& r, std::size_t i) {
-    return "wn = " + formatNumber(r.points[i].wn, 4) + " rad/s, kp = " + formatNumber(r.points[i].kp, 4);
+    return "wn = " + formatNumber(r.points[i].wn, 4) +
+           " rad/s, kp = " + formatNumber(r.points[i].kp, 4);
 }
 
 /// One edge warning: "kp = 60 is the upper end of the kp range 5..60: ...".
 std::string edgeWarning(const char* axis, const std::vector<double>& values, bool upper) {
     const std::string v = formatNumber(upper ? values.back() : values.front(), 6);
-    return std::string(axis) + " = " + v + " (the best design) is the " + (upper ? "upper" : "lower") +
-           " end of the " + axis + " range " + formatNumber(values.front(), 6) + ".." +
-           formatNumber(values.back(), 6) + ": the optimum may lie " + (upper ? "above" : "below") +
-           "; widen the " + axis + " range " + (upper ? "beyond " : "below ") + v;
+    return std::string(axis) + " = " + v + " (the best design) is the " +
+           (upper ? "upper" : "lower") + " end of the " + axis + " range " +
+           formatNumber(values.front(), 6) + ".." + formatNumber(values.back(), 6) +
+           ": the optimum may lie " + (upper ? "above" : "below") + "; widen the " + axis +
+           " range " + (upper ? "beyond " : "below ") + v;
 }
 
 } // namespace
 
 std::string specCriterionName(SpecCriterion criterion) {
     switch (criterion) {
-    case SpecCriterion::Stable: return "stable";
-    case SpecCriterion::SettlingTime: return "settling_time";
-    case SpecCriterion::Overshoot: return "overshoot";
-    case SpecCriterion::NoSaturation: return "no_saturation";
-    case SpecCriterion::TrackingError: return "tracking_error";
-    case SpecCriterion::Settle: return "settle";
-    case SpecCriterion::PhaseMargin: return "phase_margin";
-    case SpecCriterion::GainMargin: return "gain_margin";
+    case SpecCriterion::Stable:
+        return "stable";
+    case SpecCriterion::SettlingTime:
+        return "settling_time";
+    case SpecCriterion::Overshoot:
+        return "overshoot";
+    case SpecCriterion::NoSaturation:
+        return "no_saturation";
+    case SpecCriterion::TrackingError:
+        return "tracking_error";
+    case SpecCriterion::Settle:
+        return "settle";
+    case SpecCriterion::PhaseMargin:
+        return "phase_margin";
+    case SpecCriterion::GainMargin:
+        return "gain_margin";
     }
     return "";
 }
@@ -127,21 +167,22 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
     const auto& points = result.points;
     const bool anyComputed =
         std::any_of(points.begin(), points.end(), [](const DesignPoint& p) { return p.computed; });
-    const bool anyFeasible =
-        std::any_of(points.begin(), points.end(), [](const DesignPoint& p) { return p.computed && p.feasible; });
+    const bool anyFeasible = std::any_of(points.begin(), points.end(), [](const DesignPoint& p) {
+        return p.computed && p.feasible;
+    });
     d.noneFeasible = anyComputed && !anyFeasible;
 
     if (d.noneFeasible) {
         // (a) Criteria that fail everywhere, with the best value the grid reaches on each.
-        const bool settleApplies = std::any_of(points.begin(), points.end(), [](const DesignPoint& p) {
-            return p.computed && p.check.settleApplies;
-        });
+        const bool settleApplies =
+            std::any_of(points.begin(), points.end(),
+                        [](const DesignPoint& p) { return p.computed && p.check.settleApplies; });
         for (SpecCriterion c : kCriteria) {
             if (c == SpecCriterion::Settle && !settleApplies)
                 continue;
-            const bool passedSomewhere = std::any_of(points.begin(), points.end(), [&](const DesignPoint& p) {
-                return p.computed && passes(p.check, c);
-            });
+            const bool passedSomewhere =
+                std::any_of(points.begin(), points.end(),
+                            [&](const DesignPoint& p) { return p.computed && passes(p.check, c); });
             if (passedSomewhere)
                 continue;
             CriterionFailure f;
@@ -161,15 +202,16 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
             if (c == SpecCriterion::Stable)
                 text = "no design of the grid is stable";
             else if (c == SpecCriterion::Settle && !f.bestIndex)
-                text = "no design of the grid settles into the " + formatNumber(spec.inPositionWindowMm) +
-                       " mm window within the run (limit " + formatNumber(f.limit) + " s after the move)";
+                text = "no design of the grid settles into the " +
+                       formatNumber(spec.inPositionWindowMm) + " mm window within the run (limit " +
+                       formatNumber(f.limit) + " s after the move)";
             else {
                 text = std::string("the ") + w.name + " limit (" + formatNumber(f.limit) + w.unit +
                        ") fails at every design of the grid";
                 if (f.bestIndex)
-                    text += std::string(largerIsBetter(c) ? "; the largest " : "; the smallest ") + w.name +
-                            " found is " + formatNumber(f.bestValue, 4) +
-                            w.unit + " at " + at(result, *f.bestIndex);
+                    text += std::string(largerIsBetter(c) ? "; the largest " : "; the smallest ") +
+                            w.name + " found is " + formatNumber(f.bestValue, 4) + w.unit + " at " +
+                            at(result, *f.bestIndex);
             }
             d.warnings.push_back(text);
             d.failingEverywhere.push_back(f);
@@ -190,19 +232,23 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                     continue;
                 const double limit = limitOf(spec, c);
                 if (c == SpecCriterion::NoSaturation) {
-                    violation += maxClipped > 0.0 ? p.tracking.saturatedTimeSeconds / maxClipped : 1.0;
+                    violation +=
+                        maxClipped > 0.0 ? p.tracking.saturatedTimeSeconds / maxClipped : 1.0;
                 } else if (c == SpecCriterion::Settle) {
-                    const double v = p.move && p.move->settleTimeSeconds
-                                         ? *p.move->settleTimeSeconds
-                                         : (p.move ? p.move->runEndSeconds - p.move->moveEndSeconds : limit);
-                    violation += std::max(0.0, v - limit) / limit + (p.move && p.move->settled ? 0.0 : 1.0);
+                    const double v =
+                        p.move && p.move->settleTimeSeconds
+                            ? *p.move->settleTimeSeconds
+                            : (p.move ? p.move->runEndSeconds - p.move->moveEndSeconds : limit);
+                    violation +=
+                        std::max(0.0, v - limit) / limit + (p.move && p.move->settled ? 0.0 : 1.0);
                 } else if (largerIsBetter(c)) {
                     // Below the minimum: by how much, in units of the minimum (at least 1 deg
                     // or dB, so a zero minimum still scales); no value (NaN margin) counts 1.
                     const auto v = valueOf(p, c);
                     violation += v ? std::max(0.0, limit - *v) / std::max(limit, 1.0) : 1.0;
                 } else {
-                    const double scale = c == SpecCriterion::Overshoot ? std::max(limit, 1.0) : limit;
+                    const double scale =
+                        c == SpecCriterion::Overshoot ? std::max(limit, 1.0) : limit;
                     violation += std::max(0.0, *valueOf(p, c) - limit) / scale;
                 }
             }
@@ -221,7 +267,8 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                     continue;
                 const auto v = valueOf(p, c);
                 if (c == SpecCriterion::NoSaturation || c == SpecCriterion::Stable || !v ||
-                    (c == SpecCriterion::Settle && p.move && p.move->windowMm != spec.inPositionWindowMm)) {
+                    (c == SpecCriterion::Settle && p.move &&
+                     p.move->windowMm != spec.inPositionWindowMm)) {
                     possible = false;
                     continue;
                 }
@@ -231,26 +278,41 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                 }
                 const double limit = largerIsBetter(c) ? roundDown3(*v) : roundUp3(*v);
                 switch (c) {
-                case SpecCriterion::SettlingTime: relaxed.maxSettlingTimeSeconds = limit; break;
-                case SpecCriterion::Overshoot: relaxed.maxOvershootPct = limit; break;
-                case SpecCriterion::TrackingError: relaxed.maxErrorPct = limit; break;
-                case SpecCriterion::Settle: relaxed.maxSettleTimeSeconds = limit; break;
-                case SpecCriterion::PhaseMargin: relaxed.minPhaseMarginDeg = limit; break;
-                case SpecCriterion::GainMargin: relaxed.minGainMarginDb = limit; break;
-                default: break;
+                case SpecCriterion::SettlingTime:
+                    relaxed.maxSettlingTimeSeconds = limit;
+                    break;
+                case SpecCriterion::Overshoot:
+                    relaxed.maxOvershootPct = limit;
+                    break;
+                case SpecCriterion::TrackingError:
+                    relaxed.maxErrorPct = limit;
+                    break;
+                case SpecCriterion::Settle:
+                    relaxed.maxSettleTimeSeconds = limit;
+                    break;
+                case SpecCriterion::PhaseMargin:
+                    relaxed.minPhaseMarginDeg = limit;
+                    break;
+                case SpecCriterion::GainMargin:
+                    relaxed.minGainMarginDb = limit;
+                    break;
+                default:
+                    break;
                 }
-                changes.push_back(std::string(wording(c).name) + (largerIsBetter(c) ? " >= " : " <= ") +
-                                  formatNumber(limit) + wording(c).unit);
+                changes.push_back(std::string(wording(c).name) +
+                                  (largerIsBetter(c) ? " >= " : " <= ") + formatNumber(limit) +
+                                  wording(c).unit);
             }
-            std::string text = "least-violating design: " + at(result, *d.leastViolating) + " (point " +
-                               std::to_string(*d.leastViolating) + ")";
+            std::string text = "least-violating design: " + at(result, *d.leastViolating) +
+                               " (point " + std::to_string(*d.leastViolating) + ")";
             if (possible && !changes.empty()) {
                 d.relaxed = relaxed;
                 text += "; it meets the specification with ";
                 for (std::size_t k = 0; k < changes.size(); ++k)
                     text += (k ? ", " : "") + changes[k];
             } else if (!possible) {
-                text += "; relaxing a limit does not make it pass (it clips the actuator, never settles, or has no positive margin)";
+                text += "; relaxing a limit does not make it pass (it clips the actuator, never "
+                        "settles, or has no positive margin)";
             }
             d.warnings.push_back(text);
         }

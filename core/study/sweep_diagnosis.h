@@ -74,7 +74,8 @@ struct SweepDiagnosis {
     /// The point judged for the edge test: the refined design when there is one, else the best
     /// grid point (unset when nothing is feasible).
     std::optional<std::size_t> bestIndex;
-    bool wnAtLowerEdge = false, wnAtUpperEdge = false; ///< the best wn is the first / last grid value
+    bool wnAtLowerEdge = false,
+         wnAtUpperEdge = false; ///< the best wn is the first / last grid value
     bool kpAtLowerEdge = false, kpAtUpperEdge = false; ///< the same for kp
     bool onEdge() const { return wnAtLowerEdge || wnAtUpperEdge || kpAtLowerEdge || kpAtUpperEdge; }
 };

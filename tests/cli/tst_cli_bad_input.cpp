@@ -14,9 +14,9 @@
 #include <QJsonObject>
 #include <QMap>
 
-#include <functional>
 #include <QTemporaryDir>
 #include <QTest>
+#include <functional>
 
 namespace {
 
@@ -32,8 +32,8 @@ QString manyCoefficients(int n) {
 
 const QStringList kGt = {"gt", "--preset", "lower-base"};
 const QStringList kCubic = {"--trajectory", "cubic", "--xf", "600", "--tf", "130"};
-const QStringList kPpX = {"--a", "1 -1.6580 0.6583", "--b", "0 0.0421 0.0628 -0.0454",
-                          "--t", "1 -0.2"};
+const QStringList kPpX = {"--a",   "1 -1.6580 0.6583", "--b", "0 0.0421 0.0628 -0.0454", "--t",
+                          "1 -0.2"};
 
 } // namespace
 
@@ -50,7 +50,8 @@ private:
     /// @p s with "{default}", "{dir}", "{one-sample}" ... replaced by the files of initTestCase.
     QString substitute(QString s) const;
     /// Runs the CLI on @p args after substitute(); @p names is substituted in place.
-    xyt::test::CliRun runWithFiles(QStringList args, QString& names, const QStringList& environment) const;
+    xyt::test::CliRun runWithFiles(QStringList args, QString& names,
+                                   const QStringList& environment) const;
 
     QTemporaryDir dir_;
     QString defaultSession_, truncatedSession_, binarySession_;
@@ -160,11 +161,12 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("gt kp overflows a double") << kGt + QStringList{"--kp", "1e999"} << "--kp";
     QTest::newRow("gt wn negative") << kGt + QStringList{"--wn", "-2"} << "--wn";
     QTest::newRow("gt k0 zero (leading coefficient of the plant)")
-        << QStringList{"gt", "--k0", "0", "--a1", "125.3", "--a2", "3665", "--wn", "2", "--kp", "30"}
+        << QStringList{"gt",   "--k0", "0", "--a1", "125.3", "--a2",
+                       "3665", "--wn", "2", "--kp", "30"}
         << "--k0";
-    QTest::newRow("gt a1 -Inf")
-        << QStringList{"gt", "--k0", "77.8", "--a1", "-inf", "--a2", "3665", "--wn", "2", "--kp", "30"}
-        << "--a1";
+    QTest::newRow("gt a1 -Inf") << QStringList{"gt",   "--k0", "77.8", "--a1", "-inf", "--a2",
+                                               "3665", "--wn", "2",    "--kp", "30"}
+                                << "--a1";
     QTest::newRow("gt unknown preset") << QStringList{"gt", "--preset", "middle"} << "--preset";
     QTest::newRow("gt unknown option") << kGt + QStringList{"--bogus", "1"} << "--bogus";
     QTest::newRow("gt option without value") << kGt + QStringList{"--wn"} << "--wn";
@@ -174,8 +176,8 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
 
     // simulate
     QTest::newRow("simulate negative tf")
-        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600",
-                       "--tf", "-130"}
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                       "--xf",     "600",      "--tf",       "-130"}
         << "--tf";
     QTest::newRow("simulate negative dt")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "-0.01"}
@@ -184,7 +186,8 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "0"}
         << "--dt";
     QTest::newRow("simulate negative duration")
-        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--duration", "-1"}
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic +
+               QStringList{"--duration", "-1"}
         << "--duration";
     QTest::newRow("simulate duration needing gigabytes")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic +
@@ -194,24 +197,35 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-9"}
         << "--dt"; // not --duration: the user did not type it
     QTest::newRow("simulate digital dac bits 33")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--dac-bits", "33"} + kCubic << "--dac-bits";
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--dac-bits", "33"} +
+               kCubic
+        << "--dac-bits";
     QTest::newRow("simulate digital negative delay")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--delay-samples", "-1"} + kCubic
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--delay-samples", "-1"} +
+               kCubic
         << "--delay-samples";
     QTest::newRow("simulate digital negative encoder")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--encoder-resolution", "-1"} + kCubic
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--encoder-resolution",
+                       "-1"} +
+               kCubic
         << "--encoder-resolution";
     QTest::newRow("simulate digital unknown anti-windup")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--anti-windup", "reset"} + kCubic
+        << QStringList{"simulate",  "--preset",      "lower-base",
+                       "--digital", "--anti-windup", "reset"} +
+               kCubic
         << "--anti-windup";
     QTest::newRow("simulate digital zero controller ts")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "0"} + kCubic
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "0"} +
+               kCubic
         << "--controller-ts";
     QTest::newRow("simulate digital controller ts needing gigabytes")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--controller-ts", "1e-9"} + kCubic
+        << QStringList{"simulate",  "--preset",        "lower-base",
+                       "--digital", "--controller-ts", "1e-9"} +
+               kCubic
         << "--controller-ts";
     QTest::newRow("simulate digital negative tracking time")
-        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--tracking-time", "-1"} + kCubic
+        << QStringList{"simulate", "--preset", "lower-base", "--digital", "--tracking-time", "-1"} +
+               kCubic
         << "--tracking-time";
     QTest::newRow("simulate umax zero")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--umax", "0"}
@@ -223,25 +237,26 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "square"}
         << "--trajectory";
     QTest::newRow("simulate sine omega Inf")
-        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
-                       "25", "--omega", "Infinity"}
+        << QStringList{"simulate",    "--preset", "lower-base", "--trajectory", "sine",
+                       "--amplitude", "25",       "--omega",    "Infinity"}
         << "--omega";
     QTest::newRow("simulate sine omega tiny (period needing gigabytes)")
-        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
-                       "25", "--omega", "1e-300"}
+        << QStringList{"simulate",    "--preset", "lower-base", "--trajectory", "sine",
+                       "--amplitude", "25",       "--omega",    "1e-300"}
         << "--omega";
     QTest::newRow("simulate csv into a directory")
-        << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--csv", "{dir}"}
+        << QStringList{"simulate", "--preset", "lower-base"} + kCubic +
+               QStringList{"--csv", "{dir}"}
         << "--csv";
 
     // report, new, export: session files
     QTest::newRow("report directory") << QStringList{"report", "{dir}"} << "{dir}";
     QTest::newRow("report truncated file") << QStringList{"report", "{truncated}"} << "{truncated}";
     QTest::newRow("report binary file") << QStringList{"report", "{binary}"} << "{binary}";
-    QTest::newRow("report missing file") << QStringList{"report", "{dir}/missing.json"}
-                                         << "{dir}/missing.json";
-    QTest::newRow("report two files") << QStringList{"report", "{default}", "{default}"}
-                                      << "SESSION";
+    QTest::newRow("report missing file")
+        << QStringList{"report", "{dir}/missing.json"} << "{dir}/missing.json";
+    QTest::newRow("report two files")
+        << QStringList{"report", "{default}", "{default}"} << "SESSION";
     QTest::newRow("new without output") << QStringList{"new"} << "-o";
     QTest::newRow("new into a directory") << QStringList{"new", "-o", "{dir}"} << "-o";
     QTest::newRow("export directory")
@@ -255,31 +270,33 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("export into a directory")
         << QStringList{"export", "{default}", "--format", "m", "-o", "{dir}"} << "-o";
     QTest::newRow("export unknown discretization")
-        << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json",
-                       "--discretization", "zoh"}
+        << QStringList{"export", "{default}",    "--format",         "json",
+                       "-o",     "{dir}/o.json", "--discretization", "zoh"}
         << "--discretization";
     QTest::newRow("export unknown precision")
-        << QStringList{"export", "{default}", "--format", "c", "-o", "{dir}/o.h", "--precision", "half"}
+        << QStringList{"export", "{default}", "--format",    "c",
+                       "-o",     "{dir}/o.h", "--precision", "half"}
         << "--precision";
     QTest::newRow("export precision for json")
-        << QStringList{"export", "{default}", "--format", "json", "-o", "{dir}/o.json", "--precision", "float"}
+        << QStringList{"export", "{default}",    "--format",    "json",
+                       "-o",     "{dir}/o.json", "--precision", "float"}
         << "--precision";
 
     // rlocus
-    QTest::newRow("rlocus empty num") << QStringList{"rlocus", "--num", "", "--den", "1 2 0"}
-                                      << "--num";
-    QTest::newRow("rlocus separators only") << QStringList{"rlocus", "--num", " , ;", "--den", "1 2"}
-                                            << "--num";
+    QTest::newRow("rlocus empty num")
+        << QStringList{"rlocus", "--num", "", "--den", "1 2 0"} << "--num";
+    QTest::newRow("rlocus separators only")
+        << QStringList{"rlocus", "--num", " , ;", "--den", "1 2"} << "--num";
     QTest::newRow("rlocus den not a number")
         << QStringList{"rlocus", "--num", "1", "--den", "1 two 3"} << "--den";
-    QTest::newRow("rlocus den 65 coefficients") << QStringList{"rlocus", "--num", "1", "--den", huge}
-                                                << "--den";
-    QTest::newRow("rlocus num Inf") << QStringList{"rlocus", "--num", "1 inf", "--den", "1 2 3"}
-                                    << "--num";
-    QTest::newRow("rlocus den NaN") << QStringList{"rlocus", "--num", "1", "--den", "1 nan 3"}
-                                    << "--den";
-    QTest::newRow("rlocus den zero") << QStringList{"rlocus", "--num", "1", "--den", "0 0"}
-                                     << "--den";
+    QTest::newRow("rlocus den 65 coefficients")
+        << QStringList{"rlocus", "--num", "1", "--den", huge} << "--den";
+    QTest::newRow("rlocus num Inf")
+        << QStringList{"rlocus", "--num", "1 inf", "--den", "1 2 3"} << "--num";
+    QTest::newRow("rlocus den NaN")
+        << QStringList{"rlocus", "--num", "1", "--den", "1 nan 3"} << "--den";
+    QTest::newRow("rlocus den zero")
+        << QStringList{"rlocus", "--num", "1", "--den", "0 0"} << "--den";
     QTest::newRow("rlocus improper after a zero leading coefficient")
         << QStringList{"rlocus", "--num", "1 2 3", "--den", "0 1 2"} << "--num";
     QTest::newRow("rlocus unbalanced bracket")
@@ -304,24 +321,24 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
 
     // sweep
     const QStringList sweep = QStringList{"sweep", "--preset", "lower-base"} + kCubic;
-    QTest::newRow("sweep grid without N") << sweep + QStringList{"--wn", "1:2", "--kp", "10:20:3"}
-                                          << "--wn";
-    QTest::newRow("sweep grid N zero") << sweep + QStringList{"--wn", "1:2:0", "--kp", "10:20:3"}
-                                       << "--wn";
-    QTest::newRow("sweep grid N huge") << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:100000"}
-                                       << "--kp";
-    QTest::newRow("sweep grid N not whole") << sweep + QStringList{"--wn", "1:2:2.5", "--kp", "1:2:3"}
-                                            << "--wn";
-    QTest::newRow("sweep grid NaN") << sweep + QStringList{"--wn", "nan:2:3", "--kp", "10:20:3"}
-                                    << "--wn";
-    QTest::newRow("sweep grid Inf") << sweep + QStringList{"--wn", "1:inf:3", "--kp", "10:20:3"}
-                                    << "--wn";
-    QTest::newRow("sweep grid words") << sweep + QStringList{"--wn", "a:b:c", "--kp", "10:20:3"}
-                                      << "--wn";
+    QTest::newRow("sweep grid without N")
+        << sweep + QStringList{"--wn", "1:2", "--kp", "10:20:3"} << "--wn";
+    QTest::newRow("sweep grid N zero")
+        << sweep + QStringList{"--wn", "1:2:0", "--kp", "10:20:3"} << "--wn";
+    QTest::newRow("sweep grid N huge")
+        << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:100000"} << "--kp";
+    QTest::newRow("sweep grid N not whole")
+        << sweep + QStringList{"--wn", "1:2:2.5", "--kp", "1:2:3"} << "--wn";
+    QTest::newRow("sweep grid NaN")
+        << sweep + QStringList{"--wn", "nan:2:3", "--kp", "10:20:3"} << "--wn";
+    QTest::newRow("sweep grid Inf")
+        << sweep + QStringList{"--wn", "1:inf:3", "--kp", "10:20:3"} << "--wn";
+    QTest::newRow("sweep grid words")
+        << sweep + QStringList{"--wn", "a:b:c", "--kp", "10:20:3"} << "--wn";
     QTest::newRow("sweep log grid through zero")
         << sweep + QStringList{"--wn", "0:2:3", "--kp", "10:20:3", "--log"} << "--wn";
-    QTest::newRow("sweep negative wn") << sweep + QStringList{"--wn", "-2:-1:3", "--kp", "10:20:3"}
-                                       << "--wn";
+    QTest::newRow("sweep negative wn")
+        << sweep + QStringList{"--wn", "-2:-1:3", "--kp", "10:20:3"} << "--wn";
     QTest::newRow("sweep threads zero")
         << sweep + QStringList{"--wn", "1:2:3", "--kp", "10:20:3", "--threads", "0"} << "--threads";
     QTest::newRow("sweep unknown criterion")
@@ -335,7 +352,8 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("pp a leading zero")
         << QStringList{"pp", "--a", "0 1 0.5", "--b", "0 0.04 0.06", "--t", "1 -0.2"} << "--a";
     QTest::newRow("pp b without delay")
-        << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0.04 0.06", "--t", "1 -0.2"} << "--b";
+        << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0.04 0.06", "--t", "1 -0.2"}
+        << "--b";
     QTest::newRow("pp b all zero")
         << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0 0", "--t", "1 -0.2"} << "--b";
     QTest::newRow("pp t not monic")
@@ -346,20 +364,20 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"pp", "--a", huge, "--b", "0 0.04", "--t", "1"} << "--a";
     QTest::newRow("pp b NaN") << QStringList{"pp", "--a", "1 -0.5", "--b", "0 nan", "--t", "1"}
                               << "--b";
-    QTest::newRow("pp negative ts") << QStringList{"pp", "--preset", "x-axis", "--ts", "-0.07"}
-                                    << "--ts";
+    QTest::newRow("pp negative ts")
+        << QStringList{"pp", "--preset", "x-axis", "--ts", "-0.07"} << "--ts";
     QTest::newRow("pp ts Inf") << QStringList{"pp", "--preset", "x-axis", "--ts", "inf"} << "--ts";
     QTest::newRow("pp unknown preset") << QStringList{"pp", "--preset", "z-axis"} << "--preset";
-    QTest::newRow("zpetc margin one") << QStringList{"zpetc"} + kPpX + QStringList{"--margin", "1"}
-                                      << "--margin";
+    QTest::newRow("zpetc margin one")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--margin", "1"} << "--margin";
     QTest::newRow("zpetc margin negative")
         << QStringList{"zpetc"} + kPpX + QStringList{"--margin", "-0.1"} << "--margin";
     QTest::newRow("zpetc negative duration")
         << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "-5"} << "--duration";
     QTest::newRow("zpetc duration needing gigabytes")
         << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "1e12"} << "--duration";
-    QTest::newRow("zpetc omega zero") << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "0"}
-                                      << "--omega";
+    QTest::newRow("zpetc omega zero")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "0"} << "--omega";
     QTest::newRow("zpetc omega tiny (one period needing gigabytes)")
         << QStringList{"zpetc"} + kPpX + QStringList{"--omega", "1e-300"} << "--omega";
     QTest::newRow("zpetc amplitude NaN")
@@ -369,34 +387,35 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("zpetc frequency points zero")
         << QStringList{"zpetc"} + kPpX + QStringList{"--frequency-points", "0"}
         << "--frequency-points";
-    QTest::newRow("contour negative radius") << QStringList{"contour", "--radius", "-30"}
-                                             << "--radius";
+    QTest::newRow("contour negative radius")
+        << QStringList{"contour", "--radius", "-30"} << "--radius";
     QTest::newRow("contour omega NaN") << QStringList{"contour", "--omega", "nan"} << "--omega";
     QTest::newRow("contour duration needing gigabytes")
         << QStringList{"contour", "--duration", "1e12"} << "--duration";
     // No nonsense counts ("needs -9223372036854775808 samples"), no all-zero metrics
     // from a single sample; the message names what the user typed.
     const QStringList move = {"simulate", "--preset", "lower-base", "--trajectory", "cubic",
-                              "--xf", "600", "--tf", "130"};
-    QTest::newRow("simulate dt subnormal") << move + QStringList{"--dt", "5e-324"}
-                                           << "--dt: needs more than 1e308 samples";
+                              "--xf",     "600",      "--tf",       "130"};
+    QTest::newRow("simulate dt subnormal")
+        << move + QStringList{"--dt", "5e-324"} << "--dt: needs more than 1e308 samples";
     QTest::newRow("simulate dt longer than the move (one sample)")
-        << move + QStringList{"--dt", "1000"} << "--tf: the move lasts 130 s (--tf minus --t0), less than one step of --dt 1000 s";
+        << move + QStringList{"--dt", "1000"}
+        << "--tf: the move lasts 130 s (--tf minus --t0), less than one step of --dt 1000 s";
     QTest::newRow("simulate sine omega 1e300 (one sample)")
-        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine",
-                       "--amplitude", "25", "--omega", "1e300"}
+        << QStringList{"simulate",    "--preset", "lower-base", "--trajectory", "sine",
+                       "--amplitude", "25",       "--omega",    "1e300"}
         << "--omega: gives a single sample";
-    QTest::newRow("contour unknown preset") << QStringList{"contour", "--preset", "square"}
-                                            << "--preset";
+    QTest::newRow("contour unknown preset")
+        << QStringList{"contour", "--preset", "square"} << "--preset";
 
     // Overflowing design inputs name the argument, not an internal
     // coefficient ("den[2]: must be a number, got NaN" for wn = 1e300: wn^4 overflows).
-    QTest::newRow("gt wn 1e300 (wn^4 overflows)") << kGt + QStringList{"--wn", "1e300"}
-                                                  << "--wn: 1e+300 rad/s is out of range";
-    QTest::newRow("gt wn 1e-200 (wn^2 underflows)") << kGt + QStringList{"--wn", "1e-200"}
-                                                    << "--wn: 1e-200 rad/s is out of range";
-    QTest::newRow("gt kp 1e308 (psi1 underflows)") << kGt + QStringList{"--kp", "1e308"}
-                                                   << "--kp: 1e+308 is out of range";
+    QTest::newRow("gt wn 1e300 (wn^4 overflows)")
+        << kGt + QStringList{"--wn", "1e300"} << "--wn: 1e+300 rad/s is out of range";
+    QTest::newRow("gt wn 1e-200 (wn^2 underflows)")
+        << kGt + QStringList{"--wn", "1e-200"} << "--wn: 1e-200 rad/s is out of range";
+    QTest::newRow("gt kp 1e308 (psi1 underflows)")
+        << kGt + QStringList{"--kp", "1e308"} << "--kp: 1e+308 is out of range";
     QTest::newRow("simulate wn 1e300") << move + QStringList{"--wn", "1e300"} << "--wn";
     QTest::newRow("rlocus gt preset wn 1e300")
         << QStringList{"rlocus", "--gt-preset", "lower-base", "--wn", "1e300"} << "--wn";
@@ -406,28 +425,30 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
         << QStringList{"pp", "--a", "1 -1.658 0.6583", "--b", "0 1e-300", "--t", "1 -0.2"}
         << "--b: B(1) = 1e-300 is negligible";
     // Positions beyond kMaxPositionMm = 1e9 mm are refused before they overflow the run.
-    QTest::newRow("simulate xf 1e308") << QStringList{"simulate", "--preset", "lower-base",
-                                                      "--trajectory", "cubic", "--xf", "1e308",
-                                                      "--tf", "130"}
-                                       << "--xf: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("simulate xf 1e308")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                       "--xf",     "1e308",    "--tf",       "130"}
+        << "--xf: 1e+308 is beyond the 1e9 mm";
     QTest::newRow("simulate sine amplitude 1e308")
-        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine",
-                       "--amplitude", "1e308", "--omega", "0.1"}
+        << QStringList{"simulate",    "--preset", "lower-base", "--trajectory", "sine",
+                       "--amplitude", "1e308",    "--omega",    "0.1"}
         << "--amplitude: 1e+308 is beyond the 1e9 mm";
-    QTest::newRow("zpetc amplitude 1e308") << QStringList{"zpetc"} + kPpX + QStringList{"--amplitude", "1e308"}
-                                           << "--amplitude: 1e+308 is beyond the 1e9 mm";
-    QTest::newRow("contour radius 1e308") << QStringList{"contour", "--radius", "1e308"}
-                                          << "--radius: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("zpetc amplitude 1e308")
+        << QStringList{"zpetc"} + kPpX + QStringList{"--amplitude", "1e308"}
+        << "--amplitude: 1e+308 is beyond the 1e9 mm";
+    QTest::newRow("contour radius 1e308")
+        << QStringList{"contour", "--radius", "1e308"} << "--radius: 1e+308 is beyond the 1e9 mm";
     // One-sample runs: every metric would read 0.
     QTest::newRow("simulate tf 1e-300 (one sample)")
-        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
-                       "600", "--tf", "1e-300"}
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                       "--xf",     "600",      "--tf",       "1e-300"}
         << "--tf: the move lasts 1e-300 s";
     // A move shorter than one step used to run one sample and report zeros.
     QTest::newRow("simulate tf 0.005 dt 0.01 (move shorter than a step)")
         << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
-                       "600", "--tf", "0.005", "--dt", "0.01"}
-        << "--tf: the move lasts 0.005 s (--tf minus --t0), less than one step of --dt 0.01 s: too short to measure";
+                       "600",      "--tf",     "0.005",      "--dt",         "0.01"}
+        << "--tf: the move lasts 0.005 s (--tf minus --t0), less than one step of --dt 0.01 s: too "
+           "short to measure";
     QTest::newRow("zpetc duration shorter than Ts (one sample)")
         << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "0.01"}
         << "--duration: gives a single sample";
@@ -454,8 +475,8 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     QTest::newRow("export c xf 1e308")
         << QStringList{"export", "{xf-1e308}", "--format", "c", "-o", "{dir}/o.h"}
         << "trajectory.cubic.xf: 1e+308 is beyond the 1e9 mm";
-    QTest::newRow("report circle radius 1e308") << QStringList{"report", "{radius-1e308}"}
-                                                << "trajectory.circle.radius: 1e+308 is beyond";
+    QTest::newRow("report circle radius 1e308")
+        << QStringList{"report", "{radius-1e308}"} << "trajectory.circle.radius: 1e+308 is beyond";
     // No export writes a non-finite number: JSON used to write null.
     QTest::newRow("export json digital PI overflows")
         << QStringList{"export", "{digital-pi-inf}", "--format", "json", "-o", "{dir}/o.json"}
@@ -463,11 +484,14 @@ void TstCliBadInput::badInputExitsWithTwoAndNamesTheArgument_data() {
     // A float header held XYT_X_C0 = 1.0282776349614397e+307 (inf when compiled) and
     // XYT_UMAX = 4.9406564584124654e-324 (0 in float).
     QTest::newRow("export c float constant beyond FLT_MAX")
-        << QStringList{"export", "{ts-1e308}", "--format", "c", "--precision", "float", "-o", "{dir}/o.h"}
-        << "axes[0].gt (digital PI at controller_ts): gives 1.0282776349614397e+307 for XYT_X_C0, beyond the "
+        << QStringList{"export",      "{ts-1e308}", "--format", "c",
+                       "--precision", "float",      "-o",       "{dir}/o.h"}
+        << "axes[0].gt (digital PI at controller_ts): gives 1.0282776349614397e+307 for XYT_X_C0, "
+           "beyond the "
            "largest float";
     QTest::newRow("export c float constant rounding to 0")
-        << QStringList{"export", "{umax-5e-324}", "--format", "c", "--precision", "float", "-o", "{dir}/o.h"}
+        << QStringList{"export",      "{umax-5e-324}", "--format", "c",
+                       "--precision", "float",         "-o",       "{dir}/o.h"}
         << "umax: gives 4.9406564584124654e-324 for XYT_UMAX, which rounds to 0 in float";
 }
 
@@ -514,12 +538,14 @@ void TstCliBadInput::sampleCountBoundedByPhysicalMemory_data() {
     QTest::newRow("contour duration 1e6 (14.3 million samples at Ts 0.07)")
         << QStringList{"contour", "--duration", "1e6"} << "--duration: needs 1.43e+07 samples";
     QTest::newRow("zpetc duration 1e6")
-        << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "1e6"} << "--duration: needs 1.43e+07 samples";
+        << QStringList{"zpetc"} + kPpX + QStringList{"--duration", "1e6"}
+        << "--duration: needs 1.43e+07 samples";
     QTest::newRow("simulate dt 1e-5 (13 million samples)")
         << QStringList{"simulate", "--preset", "lower-base"} + kCubic + QStringList{"--dt", "1e-5"}
         << "--dt: needs 1.3e+07 samples";
     QTest::newRow("report of a 14.3-million-sample session")
-        << QStringList{"report", "{pp-long}"} << "trajectory.duration: needs 1e+08 samples"; // at dt 0.01
+        << QStringList{"report", "{pp-long}"}
+        << "trajectory.duration: needs 1e+08 samples"; // at dt 0.01
     QTest::newRow("export csv of a 14.3-million-sample session")
         << QStringList{"export", "{pp-long}", "--format", "csv", "-o", "{dir}/long.csv"}
         << "trajectory.duration: needs 1e+08 samples";

@@ -51,8 +51,8 @@ void TstCliContour::circleMatchesTheCore_data() {
 void TstCliContour::circleMatchesTheCore() {
     QFETCH(QString, method);
     // Patrick, Ishak and Adnan's 30 mm circle with the default session's axes, --max-accel 50.
-    const auto run = xyt::test::runCli({"contour", "--gcode", example("circle_30mm.nc"), "--max-accel", "50",
-                                        "--method", method});
+    const auto run = xyt::test::runCli(
+        {"contour", "--gcode", example("circle_30mm.nc"), "--max-accel", "50", "--method", method});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -104,17 +104,19 @@ void TstCliContour::ballbarProgramGivesBothDirections() {
     xyt::ContourRunOptions options;
     options.profile.dtSeconds = 0.002;
     options.profile.maxAccelMmPerS2 = 100.0; // the CLI's default
-    const auto core = xyt::runProgramContour(xyt::Session::paperDefault(), xyt::readGcode(xyt::test::kBallbarProgram),
-                                             options);
+    const auto core = xyt::runProgramContour(xyt::Session::paperDefault(),
+                                             xyt::readGcode(xyt::test::kBallbarProgram), options);
     QVERIFY(core.circular && core.circular->reverseIso && core.circular->iso.hysteresisH);
     QCOMPARE(iso["runs"].toString(), QStringLiteral("program"));
     QCOMPARE(iso["direction"].toString(), QStringLiteral("clockwise"));
     QCOMPARE(iso["line"].toInteger(), qint64(xyt::test::kBallbarClockwiseLine));
     QCOMPARE(iso["reverse_line"].toInteger(), qint64(xyt::test::kBallbarCounterClockwiseLine));
     XYT_COMPARE_NEAR(iso["G"].toDouble(), core.circular->iso.circularDeviationG, 1e-15, 0.0);
-    XYT_COMPARE_NEAR(iso["G_reverse"].toDouble(), core.circular->reverseIso->circularDeviationG, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["G_reverse"].toDouble(), core.circular->reverseIso->circularDeviationG,
+                     1e-15, 0.0);
     XYT_COMPARE_NEAR(iso["F_max"].toDouble(), core.circular->iso.radialDeviationFMax, 1e-15, 0.0);
-    XYT_COMPARE_NEAR(iso["F_min_reverse"].toDouble(), core.circular->reverseIso->radialDeviationFMin, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(iso["F_min_reverse"].toDouble(),
+                     core.circular->reverseIso->radialDeviationFMin, 1e-15, 0.0);
     XYT_COMPARE_NEAR(iso["H"].toDouble(), *core.circular->iso.hysteresisH, 1e-15, 0.0);
     QCOMPARE(iso["nominal"].toObject()["radius"].toDouble(), xyt::test::kBallbarRadiusMm);
     // The same test with the circles written as semicircles and quadrants: the same path and
@@ -123,15 +125,17 @@ void TstCliContour::ballbarProgramGivesBothDirections() {
     QVERIFY(arcs.open(QIODevice::WriteOnly));
     arcs.write(xyt::test::kBallbarArcsProgram);
     arcs.close();
-    const auto arcsRun = xyt::test::runCli({"contour", "--gcode", arcs.fileName(), "--dt", "0.002"});
+    const auto arcsRun =
+        xyt::test::runCli({"contour", "--gcode", arcs.fileName(), "--dt", "0.002"});
     QCOMPARE(arcsRun.exitCode, 0);
     const QJsonObject arcsIso = arcsRun.json()["iso230_4"].toObject();
     QVERIFY2(!arcsIso.isEmpty(), arcsRun.out.constData());
     QCOMPARE(arcsIso["runs"].toString(), QStringLiteral("program"));
     QCOMPARE(arcsIso["line"].toInteger(), qint64(xyt::test::kBallbarArcsClockwiseLine));
-    QCOMPARE(arcsIso["reverse_line"].toInteger(), qint64(xyt::test::kBallbarArcsCounterClockwiseLine));
-    for (const char* figure :
-         {"G", "G_reverse", "F_max", "F_min", "F_max_reverse", "F_min_reverse", "H", "G_bidirectional"}) {
+    QCOMPARE(arcsIso["reverse_line"].toInteger(),
+             qint64(xyt::test::kBallbarArcsCounterClockwiseLine));
+    for (const char* figure : {"G", "G_reverse", "F_max", "F_min", "F_max_reverse", "F_min_reverse",
+                               "H", "G_bidirectional"}) {
         QVERIFY2(arcsIso[figure].isDouble(), figure);
         XYT_COMPARE_NEAR(arcsIso[figure].toDouble(), iso[figure].toDouble(), 1e-9, 0.0);
     }
@@ -144,17 +148,19 @@ void TstCliContour::ballbarProgramGivesBothDirections() {
     QCOMPARE(oneWay.exitCode, 0);
     const QJsonObject oneIso = oneWay.json()["iso230_4"].toObject();
     QVERIFY(oneIso["G"].isDouble() && oneIso["H"].isNull() && oneIso["G_reverse"].isNull());
-    QVERIFY2(oneWay.json()["warnings"].toArray().contains(
-                 QStringLiteral("ISO 230-4: the program runs its full circle (line 3) one way only: no circular "
-                                "hysteresis H, which needs a clockwise and a counter-clockwise run of the same circle")),
+    QVERIFY2(oneWay.json()["warnings"].toArray().contains(QStringLiteral(
+                 "ISO 230-4: the program runs its full circle (line 3) one way only: no circular "
+                 "hysteresis H, which needs a clockwise and a counter-clockwise run of the same "
+                 "circle")),
              oneWay.out.constData());
 }
 
 void TstCliContour::squareCornersAndCsv() {
     QTemporaryDir dir;
     const QString csv = dir.filePath("square.csv");
-    const auto run = xyt::test::runCli({"contour", "--gcode", example("square_sharp_corners.nc"), "--method",
-                                        "pole-placement-zpetc", "--dt", "0.002", "--csv", csv});
+    const auto run =
+        xyt::test::runCli({"contour", "--gcode", example("square_sharp_corners.nc"), "--method",
+                           "pole-placement-zpetc", "--dt", "0.002", "--csv", csv});
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
     // Three inner corners of 90 degrees: the profile stops at each; each side alone takes
@@ -188,33 +194,57 @@ void TstCliContour::badInput_data() {
                                   << "--gcode: cannot read /nonexistent/part.nc";
     QTest::newRow("bad program") << QStringList{"--gcode", "BAD"}
                                  << "--gcode: BAD: line 2: unknown word Q3 at column 7";
-    QTest::newRow("accel") << QStringList{"--gcode", star, "--max-accel", "0"} << "--max-accel: must be greater than zero";
+    QTest::newRow("accel") << QStringList{"--gcode", star, "--max-accel", "0"}
+                           << "--max-accel: must be greater than zero";
     QTest::newRow("jerk") << QStringList{"--gcode", star, "--max-jerk", "-1"} << "--max-jerk:";
-    QTest::newRow("feed scale") << QStringList{"--gcode", star, "--feed-scale", "-2"} << "--feed-scale:";
-    QTest::newRow("too many samples") << QStringList{"--gcode", star, "--dt", "1e-9"} << "--dt: the program needs at least";
+    QTest::newRow("feed scale") << QStringList{"--gcode", star, "--feed-scale", "-2"}
+                                << "--feed-scale:";
+    QTest::newRow("too many samples")
+        << QStringList{"--gcode", star, "--dt", "1e-9"} << "--dt: the program needs at least";
     // A program that cannot be planned is refused by the option that makes it so, never a crash
     // (a jerk of 1e-200 used to end the peak-speed bisection at 0 and read a piece that was never
     // written). MOVE is "G0 X5\nG1 F600 X10": 5 mm of rapid, 5 mm at 10 mm/s. The times are the
     // planner's closed-form lower bounds (feed_profile.h) over the path's 10 mm, against the
     // 2e7 samples at dt 0.001 s (2e4 s).
-    QTest::newRow("jerk 1e-200") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e-200"}
-                                 << "--max-jerk: 1e-200 mm/s^3 needs at least 3.17e+67 s to move the path's 10 mm";
-    QTest::newRow("jerk 1e-300") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e-300"} << "--max-jerk: 1e-300 mm/s^3 needs at least 6.84e+100 s";
-    QTest::newRow("jerk subnormal") << QStringList{"--gcode", "MOVE", "--max-jerk", "5e-324"} << "--max-jerk: 4.94066e-324 mm/s^3 needs at least 4.02e+108 s";
-    QTest::newRow("jerk huge") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e300"} << "--max-jerk: 1e+300 mm/s^3 is outside the planner's range [1e-100, 1e+100]";
-    QTest::newRow("accel tiny") << QStringList{"--gcode", "MOVE", "--max-accel", "1e-300"} << "--max-accel: 1e-300 mm/s^2 needs at least 6.32e+150 s";
-    QTest::newRow("accel huge") << QStringList{"--gcode", "MOVE", "--max-accel", "1e300"} << "--max-accel: 1e+300 mm/s^2 is outside";
-    QTest::newRow("feed scale tiny") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e-300"} << "--feed-scale: 1e-300 makes the feed of line 2 (10 mm/s) 1e-299 mm/s";
-    QTest::newRow("feed scale slow") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e-5"} << "--feed-scale: the program needs at least 5e+04 s at 1e-05 times its feeds";
-    QTest::newRow("feed scale huge") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e300"} << "--feed-scale: 1e+300 makes the feed";
-    QTest::newRow("rapid feed huge") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e300"} << "--rapid-feed: 1e+300 mm/min is outside the planner's range";
-    QTest::newRow("rapid feed tiny") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e-300"} << "--rapid-feed: 1e-300 mm/min is outside";
-    QTest::newRow("rapid feed slow") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e-3"} << "--rapid-feed: running the rapids needs at least 3e+05 s";
-    QTest::newRow("dt subnormal") << QStringList{"--gcode", "MOVE", "--dt", "5e-324"} << "--dt: the program needs at least 0.5 s";
-    QTest::newRow("corner angle huge") << QStringList{"--gcode", "MOVE", "--corner-angle", "1e300"} << "--corner-angle: must be in [0, 180)";
-    QTest::newRow("method") << QStringList{"--gcode", star, "--method", "pid"} << "--method: must be";
-    QTest::newRow("preset option") << QStringList{"--gcode", star, "--radius", "5"} << "--radius: is not an option";
-    QTest::newRow("unwritable csv") << QStringList{"--gcode", star, "--csv", "/nonexistent/x.csv"} << "--csv: cannot write";
+    QTest::newRow("jerk 1e-200")
+        << QStringList{"--gcode", "MOVE", "--max-jerk", "1e-200"}
+        << "--max-jerk: 1e-200 mm/s^3 needs at least 3.17e+67 s to move the path's 10 mm";
+    QTest::newRow("jerk 1e-300") << QStringList{"--gcode", "MOVE", "--max-jerk", "1e-300"}
+                                 << "--max-jerk: 1e-300 mm/s^3 needs at least 6.84e+100 s";
+    QTest::newRow("jerk subnormal") << QStringList{"--gcode", "MOVE", "--max-jerk", "5e-324"}
+                                    << "--max-jerk: 4.94066e-324 mm/s^3 needs at least 4.02e+108 s";
+    QTest::newRow("jerk huge")
+        << QStringList{"--gcode", "MOVE", "--max-jerk", "1e300"}
+        << "--max-jerk: 1e+300 mm/s^3 is outside the planner's range [1e-100, 1e+100]";
+    QTest::newRow("accel tiny") << QStringList{"--gcode", "MOVE", "--max-accel", "1e-300"}
+                                << "--max-accel: 1e-300 mm/s^2 needs at least 6.32e+150 s";
+    QTest::newRow("accel huge") << QStringList{"--gcode", "MOVE", "--max-accel", "1e300"}
+                                << "--max-accel: 1e+300 mm/s^2 is outside";
+    QTest::newRow("feed scale tiny")
+        << QStringList{"--gcode", "MOVE", "--feed-scale", "1e-300"}
+        << "--feed-scale: 1e-300 makes the feed of line 2 (10 mm/s) 1e-299 mm/s";
+    QTest::newRow("feed scale slow")
+        << QStringList{"--gcode", "MOVE", "--feed-scale", "1e-5"}
+        << "--feed-scale: the program needs at least 5e+04 s at 1e-05 times its feeds";
+    QTest::newRow("feed scale huge") << QStringList{"--gcode", "MOVE", "--feed-scale", "1e300"}
+                                     << "--feed-scale: 1e+300 makes the feed";
+    QTest::newRow("rapid feed huge")
+        << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e300"}
+        << "--rapid-feed: 1e+300 mm/min is outside the planner's range";
+    QTest::newRow("rapid feed tiny") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e-300"}
+                                     << "--rapid-feed: 1e-300 mm/min is outside";
+    QTest::newRow("rapid feed slow") << QStringList{"--gcode", "MOVE", "--rapid-feed", "1e-3"}
+                                     << "--rapid-feed: running the rapids needs at least 3e+05 s";
+    QTest::newRow("dt subnormal") << QStringList{"--gcode", "MOVE", "--dt", "5e-324"}
+                                  << "--dt: the program needs at least 0.5 s";
+    QTest::newRow("corner angle huge") << QStringList{"--gcode", "MOVE", "--corner-angle", "1e300"}
+                                       << "--corner-angle: must be in [0, 180)";
+    QTest::newRow("method") << QStringList{"--gcode", star, "--method", "pid"}
+                            << "--method: must be";
+    QTest::newRow("preset option")
+        << QStringList{"--gcode", star, "--radius", "5"} << "--radius: is not an option";
+    QTest::newRow("unwritable csv")
+        << QStringList{"--gcode", star, "--csv", "/nonexistent/x.csv"} << "--csv: cannot write";
 }
 
 void TstCliContour::badInput() {
@@ -222,8 +252,9 @@ void TstCliContour::badInput() {
     QFETCH(QString, message);
     QTemporaryDir dir;
     // BAD: an unknown word on line 2; MOVE: a rapid then a feed move (see the rows).
-    for (const auto& [name, text] : {std::pair{QStringLiteral("BAD"), QByteArray("G0 X1\nG1 X1 Q3 F10\n")},
-                                     std::pair{QStringLiteral("MOVE"), QByteArray("G0 X5\nG1 F600 X10\n")}}) {
+    for (const auto& [name, text] :
+         {std::pair{QStringLiteral("BAD"), QByteArray("G0 X1\nG1 X1 Q3 F10\n")},
+          std::pair{QStringLiteral("MOVE"), QByteArray("G0 X5\nG1 F600 X10\n")}}) {
         const QString path = dir.filePath(name + ".nc");
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));

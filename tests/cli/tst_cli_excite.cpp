@@ -30,8 +30,9 @@ private slots:
 void TstCliExcite::squareToCsv() {
     QTemporaryDir dir;
     const QString path = dir.filePath("square.csv");
-    const auto run = xyt::test::runCli({"excite", "--signal", "square", "--ts", "0.01", "--duration", "2",
-                                        "--amplitude", "1.5", "--period", "0.5", "--offset", "0.5", "-o", path});
+    const auto run =
+        xyt::test::runCli({"excite", "--signal", "square", "--ts", "0.01", "--duration", "2",
+                           "--amplitude", "1.5", "--period", "0.5", "--offset", "0.5", "-o", path});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     QVERIFY2(run.err.isEmpty(), run.err.constData());
@@ -52,8 +53,9 @@ void TstCliExcite::squareToCsv() {
 void TstCliExcite::prbsToLvm() {
     QTemporaryDir dir;
     const QString path = dir.filePath("prbs.lvm");
-    const auto run = xyt::test::runCli({"excite", "--signal", "prbs", "--ts", "0.07", "--duration", "8.68",
-                                        "--amplitude", "2", "--clock", "2", "--register", "6", "-o", path});
+    const auto run =
+        xyt::test::runCli({"excite", "--signal", "prbs", "--ts", "0.07", "--duration", "8.68",
+                           "--amplitude", "2", "--clock", "2", "--register", "6", "-o", path});
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
     QCOMPARE(o["samples"].toInt(), 124); // 8.68 / 0.07 = 124 = (2^6 - 1) x 2 - 2
@@ -67,8 +69,9 @@ void TstCliExcite::prbsToLvm() {
 void TstCliExcite::chirpToCsv() {
     QTemporaryDir dir;
     const QString path = dir.filePath("chirp.CSV");
-    const auto run = xyt::test::runCli({"excite", "--signal", "chirp", "--ts", "0.01", "--duration", "5",
-                                        "--amplitude", "1", "--f0", "0.1", "--f1", "2", "--umax", "1", "-o", path});
+    const auto run = xyt::test::runCli({"excite", "--signal", "chirp", "--ts", "0.01", "--duration",
+                                        "5", "--amplitude", "1", "--f0", "0.1", "--f1", "2",
+                                        "--umax", "1", "-o", path});
     QCOMPARE(run.exitCode, 0);
     xyt::ExcitationTiming t;
     t.tsSeconds = 0.01;
@@ -81,27 +84,42 @@ void TstCliExcite::chirpToCsv() {
 void TstCliExcite::badInputExitsWithTwo_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("option");
-    const QStringList square = {"--signal", "square", "--ts", "0.01", "--duration", "1", "--amplitude", "1",
-                                "--period", "0.2"};
+    const QStringList square = {"--signal", "square",      "--ts", "0.01",     "--duration",
+                                "1",        "--amplitude", "1",    "--period", "0.2"};
     QTest::newRow("no signal") << QStringList{"--ts", "0.01"} << "--signal";
     QTest::newRow("unknown signal") << QStringList{"--signal", "sine"} << "--signal";
     QTest::newRow("option of another signal") << square + QStringList{"--f0", "1"} << "--f0";
-    QTest::newRow("negative ts") << QStringList{"--signal", "square", "--ts", "-0.01", "--duration", "1",
-                                                "--amplitude", "1", "--period", "0.2"} << "--ts";
-    QTest::newRow("ts not a number") << QStringList{"--signal", "square", "--ts", "fast", "--duration", "1",
-                                                    "--amplitude", "1", "--period", "0.2"} << "--ts";
-    QTest::newRow("missing period") << QStringList{"--signal", "square", "--ts", "0.01", "--duration", "1",
-                                                   "--amplitude", "1"} << "--period";
-    QTest::newRow("above umax") << QStringList{"--signal", "square", "--ts", "0.01", "--duration", "1",
-                                               "--amplitude", "3", "--period", "0.2"} << "--amplitude";
-    QTest::newRow("register 32") << QStringList{"--signal", "prbs", "--ts", "0.01", "--duration", "1",
-                                                "--amplitude", "1", "--clock", "1", "--register", "32"} << "--register";
-    QTest::newRow("clock 0") << QStringList{"--signal", "prbs", "--ts", "0.01", "--duration", "1",
-                                            "--amplitude", "1", "--clock", "0", "--register", "8"} << "--clock";
-    QTest::newRow("f1 above Nyquist") << QStringList{"--signal", "chirp", "--ts", "0.01", "--duration", "1",
-                                                     "--amplitude", "1", "--f0", "1", "--f1", "80"} << "--f1";
-    QTest::newRow("period shorter than 2 ts") << QStringList{"--signal", "square", "--ts", "0.01", "--duration", "1",
-                                                             "--amplitude", "1", "--period", "0.01"} << "--period";
+    QTest::newRow("negative ts") << QStringList{"--signal",   "square", "--ts",        "-0.01",
+                                                "--duration", "1",      "--amplitude", "1",
+                                                "--period",   "0.2"}
+                                 << "--ts";
+    QTest::newRow("ts not a number")
+        << QStringList{"--signal", "square",      "--ts", "fast",     "--duration",
+                       "1",        "--amplitude", "1",    "--period", "0.2"}
+        << "--ts";
+    QTest::newRow("missing period")
+        << QStringList{"--signal", "square", "--ts", "0.01", "--duration", "1", "--amplitude", "1"}
+        << "--period";
+    QTest::newRow("above umax") << QStringList{"--signal",   "square", "--ts",        "0.01",
+                                               "--duration", "1",      "--amplitude", "3",
+                                               "--period",   "0.2"}
+                                << "--amplitude";
+    QTest::newRow("register 32") << QStringList{"--signal",   "prbs", "--ts",        "0.01",
+                                                "--duration", "1",    "--amplitude", "1",
+                                                "--clock",    "1",    "--register",  "32"}
+                                 << "--register";
+    QTest::newRow("clock 0") << QStringList{"--signal",   "prbs", "--ts",        "0.01",
+                                            "--duration", "1",    "--amplitude", "1",
+                                            "--clock",    "0",    "--register",  "8"}
+                             << "--clock";
+    QTest::newRow("f1 above Nyquist")
+        << QStringList{"--signal",    "chirp", "--ts", "0.01", "--duration", "1",
+                       "--amplitude", "1",     "--f0", "1",    "--f1",       "80"}
+        << "--f1";
+    QTest::newRow("period shorter than 2 ts")
+        << QStringList{"--signal", "square",      "--ts", "0.01",     "--duration",
+                       "1",        "--amplitude", "1",    "--period", "0.01"}
+        << "--period";
 }
 
 void TstCliExcite::badInputExitsWithTwo() {
@@ -122,8 +140,9 @@ void TstCliExcite::badInputExitsWithTwo() {
         QVERIFY(QDir(dir.path()).entryList(QDir::Files).isEmpty());
     }
     // The output name itself: only .csv and .lvm.
-    const auto run = xyt::test::runCli({"excite", "--signal", "square", "--ts", "0.01", "--duration", "1",
-                                        "--amplitude", "1", "--period", "0.2", "-o", dir.filePath("u.txt")});
+    const auto run =
+        xyt::test::runCli({"excite", "--signal", "square", "--ts", "0.01", "--duration", "1",
+                           "--amplitude", "1", "--period", "0.2", "-o", dir.filePath("u.txt")});
     QCOMPARE(run.exitCode, 2);
     QVERIFY(QString::fromUtf8(run.err).startsWith("xytune-cli excite: -o:"));
 }
@@ -132,14 +151,15 @@ void TstCliExcite::failedWriteExitsWithTwoNamingTheOption() {
     // A write failure exited 1 without naming -o, against the README and every other writer:
     // exit 2, one line "-o: cannot write <path>: <reason>", the old file unchanged.
     QTemporaryDir dir;
-    const QStringList square = {"excite", "--signal", "square", "--ts", "0.01", "--duration", "1",
-                                "--amplitude", "1", "--period", "0.2", "-o"};
+    const QStringList square = {"excite", "--signal",    "square", "--ts",     "0.01", "--duration",
+                                "1",      "--amplitude", "1",      "--period", "0.2",  "-o"};
     const QString path = dir.filePath("u.csv");
     {
         QFile old(path);
         QVERIFY(old.open(QIODevice::WriteOnly) && old.write("old\n") == 4);
     }
-    const auto full = xyt::test::runCli(square + QStringList{path}, 60000, {"XYT_TEST_FAIL_WRITE=write"});
+    const auto full =
+        xyt::test::runCli(square + QStringList{path}, 60000, {"XYT_TEST_FAIL_WRITE=write"});
     QVERIFY(full.finished);
     QCOMPARE(full.exitCode, 2);
     QVERIFY(full.out.isEmpty());
@@ -155,7 +175,8 @@ void TstCliExcite::failedWriteExitsWithTwoNamingTheOption() {
     const QString missing = dir.filePath("no-such-folder/u.lvm");
     const auto run = xyt::test::runCli(square + QStringList{missing});
     QCOMPARE(run.exitCode, 2);
-    QVERIFY2(QString::fromUtf8(run.err).startsWith("xytune-cli excite: -o: cannot write " + missing + ": " +
+    QVERIFY2(QString::fromUtf8(run.err).startsWith("xytune-cli excite: -o: cannot write " +
+                                                   missing + ": " +
                                                    QString::fromUtf8(std::strerror(ENOENT))),
              run.err.constData());
 }

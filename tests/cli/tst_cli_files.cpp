@@ -65,7 +65,7 @@ void put(const QString& path, const QByteArray& bytes) {
 }
 
 const QStringList kCubic = {"simulate", "--preset", "lower-base", "--trajectory", "cubic",
-                            "--xf", "600", "--tf", "130"};
+                            "--xf",     "600",      "--tf",       "130"};
 
 /// Each writing command with {out} for the file it writes and the argument that names it.
 void addWriterRows() {
@@ -76,9 +76,10 @@ void addWriterRows() {
             << QStringList{"export", "{session}", "--format", format, "-o", "{out}"} << "-o";
     QTest::newRow("new") << QStringList{"new", "-o", "{out}"} << "-o";
     QTest::newRow("simulate --csv") << kCubic + QStringList{"--csv", "{out}"} << "--csv";
-    QTest::newRow("sweep --csv") << QStringList{"sweep", "--preset", "lower-base", "--wn", "1:3:2",
-                                               "--kp", "20:40:2", "--trajectory", "cubic", "--xf",
-                                               "600", "--tf", "130", "--csv", "{out}"}
+    QTest::newRow("sweep --csv") << QStringList{"sweep", "--preset", "lower-base", "--wn",
+                                                "1:3:2", "--kp",     "20:40:2",    "--trajectory",
+                                                "cubic", "--xf",     "600",        "--tf",
+                                                "130",   "--csv",    "{out}"}
                                  << "--csv";
 }
 
@@ -107,7 +108,8 @@ QStringList substituted(QStringList args, const QString& session, const QString&
 /// xytune-cli run with arguments given as bytes: QProcess encodes a QString argument as UTF-8,
 /// so it cannot pass a file name that is not UTF-8. Output goes through files in @p scratch.
 xyt::test::CliRun runCliWithBytes(const QList<QByteArray>& args, const QString& scratch) {
-    const QByteArray out = QFile::encodeName(scratch + "/stdout"), err = QFile::encodeName(scratch + "/stderr");
+    const QByteArray out = QFile::encodeName(scratch + "/stdout"),
+                     err = QFile::encodeName(scratch + "/stderr");
     std::vector<char*> argv;
     QByteArray program = XYT_CLI_PATH;
     argv.push_back(program.data());
@@ -168,8 +170,8 @@ void TstCliFiles::failedWriteKeepsOldFile() {
     for (const auto& [step, error] : steps) {
         const QString out = dir_.filePath("out-" + step);
         put(out, "old content\n");
-        const auto run = runCli(substituted(args, session_, out), 60000,
-                                {"XYT_TEST_FAIL_WRITE=" + step});
+        const auto run =
+            runCli(substituted(args, session_, out), 60000, {"XYT_TEST_FAIL_WRITE=" + step});
         QVERIFY(run.finished);
         const QByteArray diagnostic = step.toUtf8() + ": " + run.err;
         QVERIFY2(run.exitCode == 2, diagnostic.constData());
@@ -204,7 +206,8 @@ void TstCliFiles::specialFilesAreNotRead() {
     // A FIFO without a writer blocked forever; /dev/zero was read until bad_alloc (2.1 GB).
     const QString fifo = dir_.filePath("pipe-in");
     QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
-    for (const QString& path : {fifo, QStringLiteral("/dev/zero"), QStringLiteral("/dev/urandom")}) {
+    for (const QString& path :
+         {fifo, QStringLiteral("/dev/zero"), QStringLiteral("/dev/urandom")}) {
         const auto run = runCli({"report", path}, 10000);
         QVERIFY2(run.finished, qPrintable(path + " was still being read after 10 s"));
         QCOMPARE(run.exitCode, 2);
@@ -255,11 +258,13 @@ void TstCliFiles::unreadableSessionNamesThePathOnce() {
         {big, "8388609 bytes is larger than the limit of 8388608 bytes"},
         {missing, "no such file"}};
     for (const auto& [path, reason] : cases) {
-        for (const QStringList& args : {QStringList{"report", path},
-                                        QStringList{"export", path, "--format", "c", "-o", dir_.filePath("once.h")}}) {
+        for (const QStringList& args :
+             {QStringList{"report", path},
+              QStringList{"export", path, "--format", "c", "-o", dir_.filePath("once.h")}}) {
             const auto run = runCli(args, 20000);
             QVERIFY2(run.finished && run.exitCode == 2, run.err.constData());
-            QCOMPARE(QString::fromUtf8(run.err), "xytune-cli " + args.first() + ": " + path + ": " + reason + "\n");
+            QCOMPARE(QString::fromUtf8(run.err),
+                     "xytune-cli " + args.first() + ": " + path + ": " + reason + "\n");
         }
     }
 }
@@ -275,20 +280,22 @@ void TstCliFiles::nonUtf8FileNamesKeepTheirBytes() {
     QVERIFY2(run.finished && run.exitCode == 0, run.err.constData());
     QCOMPARE(run.out, folder + "/name_\\xff.json\n");
     struct stat st {};
-    QVERIFY2(::stat(session.constData(), &st) == 0 && S_ISREG(st.st_mode), "the file has another name");
+    QVERIFY2(::stat(session.constData(), &st) == 0 && S_ISREG(st.st_mode),
+             "the file has another name");
     // Read back (report, export) and written (export -o) under names with invalid bytes,
     // including a lone continuation byte and a truncated sequence.
     run = runCliWithBytes({"report", session}, dir.path());
     QVERIFY2(run.exitCode == 0, run.err.constData());
-    QVERIFY2(run.out.startsWith("XY Tune report: " + folder + "/name_\\xff.json\n"), run.out.constData());
+    QVERIFY2(run.out.startsWith("XY Tune report: " + folder + "/name_\\xff.json\n"),
+             run.out.constData());
     const QByteArray header = folder + "/c_\x80\xe2\x82.h";
     run = runCliWithBytes({"export", session, "--format", "c", "-o", header}, dir.path());
     QVERIFY2(run.exitCode == 0, run.err.constData());
     QVERIFY(::stat(header.constData(), &st) == 0 && st.st_size > 0);
     // Valid UTF-8 beside the invalid bytes is kept as well (a character outside the BMP too).
     const QByteArray csv = folder + "/x_\xff\xfe_\xc3\xa4_\xf0\x9f\x98\x80.csv";
-    run = runCliWithBytes({"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600",
-                           "--tf", "130", "--csv", csv},
+    run = runCliWithBytes({"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf",
+                           "600", "--tf", "130", "--csv", csv},
                           dir.path());
     QVERIFY2(run.exitCode == 0, run.err.constData());
     QVERIFY(::stat(csv.constData(), &st) == 0 && st.st_size > 0);
@@ -309,7 +316,8 @@ void TstCliFiles::helpAgreesOnTheExitCode() {
     const auto run = runCli({"--help"});
     QCOMPARE(run.exitCode, 0);
     const QString help = QString::fromUtf8(run.out).simplified();
-    QVERIFY2(help.contains("2 invalid input or a file that could not be read or written"), run.out.constData());
+    QVERIFY2(help.contains("2 invalid input or a file that could not be read or written"),
+             run.out.constData());
     QVERIFY2(help.contains("1 an internal error"), run.out.constData());
 }
 
@@ -362,7 +370,8 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     write(root);
     run = runCli({"report", path});
     QCOMPARE(run.exitCode, 2);
-    QVERIFY2(run.err.contains("specification.in_position_window_mm: is missing"), run.err.constData());
+    QVERIFY2(run.err.contains("specification.in_position_window_mm: is missing"),
+             run.err.constData());
     root["version"] = 1;
     write(root);
     run = runCli({"report", path});
@@ -386,8 +395,9 @@ void TstCliFiles::sessionSpecificationKeysAndFieldNames() {
     write(root);
     run = runCli({"report", path});
     QCOMPARE(run.exitCode, 0);
-    QVERIFY2(run.out.contains("not designed: axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf"),
-             run.out.constData());
+    QVERIFY2(
+        run.out.contains("not designed: axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf"),
+        run.out.constData());
     QVERIFY2(run.out.contains("for the reference model"), run.out.constData());
     QVERIFY(!run.out.contains("NaN") && !run.out.contains("nan"));
 }
@@ -418,12 +428,14 @@ void TstCliFiles::reportLeadsWithTheRunAsItHappens() {
     QCOMPARE(run.exitCode, 0);
     const QString out = QString::fromUtf8(run.out);
     const QString axisX = out.section("== Axis y", 0, 0);
-    const QString asItRuns = QStringLiteral("  tracking as it runs (the digital implementation at Ts = 0.07 s, |u| "
-                                            "limited to 2.5 V): RMSE %1 mm, max |e| %2 mm")
-                                 .arg(fixed(a.digital->metrics.rmse), fixed(a.digital->metrics.maxAbsError));
-    const QString asDesigned = QStringLiteral("  tracking as designed (the linear loop at Ts, |u| over the limit "
-                                              "flagged, not applied): RMSE %1 mm, max |e| %2 mm")
-                                   .arg(fixed(a.metrics.rmse), fixed(a.metrics.maxAbsError));
+    const QString asItRuns =
+        QStringLiteral("  tracking as it runs (the digital implementation at Ts = 0.07 s, |u| "
+                       "limited to 2.5 V): RMSE %1 mm, max |e| %2 mm")
+            .arg(fixed(a.digital->metrics.rmse), fixed(a.digital->metrics.maxAbsError));
+    const QString asDesigned =
+        QStringLiteral("  tracking as designed (the linear loop at Ts, |u| over the limit "
+                       "flagged, not applied): RMSE %1 mm, max |e| %2 mm")
+            .arg(fixed(a.metrics.rmse), fixed(a.metrics.maxAbsError));
     QVERIFY2(axisX.contains(asItRuns), qPrintable(axisX));
     QVERIFY2(axisX.contains(asDesigned), qPrintable(axisX));
     QVERIFY(axisX.indexOf(asItRuns) < axisX.indexOf(asDesigned));

@@ -52,8 +52,9 @@ void TstCliFrequency::marginsOfTheLowerBaseEqualTheCore() {
     const auto r = runCli({"margins", "--gt-preset", "lower-base", "--wn", "2", "--kp", "30"});
     QCOMPARE(r.exitCode, 0);
     const auto preset = xyt::findGtPreset("lower-base");
-    const xyt::StabilityMargins m =
-        xyt::stabilityMargins(xyt::gtLoopTransferFunctions(xyt::designGuilleminTruxal(preset->plant, 2.0, 30.0)).openLoop);
+    const xyt::StabilityMargins m = xyt::stabilityMargins(
+        xyt::gtLoopTransferFunctions(xyt::designGuilleminTruxal(preset->plant, 2.0, 30.0))
+            .openLoop);
     // The JSON writes 17 significant digits: the same doubles.
     QCOMPARE(r.json()["gain_margin"].toObject()["db"].toDouble(), m.gainMarginDb);
     QCOMPARE(r.json()["phase_margin"].toObject()["deg"].toDouble(), m.phaseMarginDeg);
@@ -66,7 +67,8 @@ void TstCliFrequency::discreteIntegratorClosedForm() {
     const auto r = runCli({"margins", "--num", "0 0.5", "--den", "1 -1", "--ts", "0.1"});
     QCOMPARE(r.exitCode, 0);
     XYT_COMPARE_NEAR(r.json()["gain_margin"].toObject()["factor"].toDouble(), 4.0, 1e-12, 0.0);
-    XYT_COMPARE_NEAR(r.json()["gain_margin"].toObject()["omega"].toDouble(), M_PI / 0.1, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(r.json()["gain_margin"].toObject()["omega"].toDouble(), M_PI / 0.1, 1e-12,
+                     0.0);
     QVERIFY(!r.json()["delay_margin"].toObject()["samples"].isNull());
 }
 
@@ -98,10 +100,12 @@ void TstCliFrequency::bodeCsvHoldsTheJsonResponse() {
 void TstCliFrequency::polePlacementBodeHasTheZeroPhaseTracking() {
     const auto r = runCli({"bode", "--pp-preset", "x-axis"});
     QCOMPARE(r.exitCode, 0);
-    const QJsonArray phase = r.json()["tracking"].toObject()["with_zpetc"].toObject()["phase_deg"].toArray();
+    const QJsonArray phase =
+        r.json()["tracking"].toObject()["with_zpetc"].toObject()["phase_deg"].toArray();
     QVERIFY(!phase.isEmpty());
     for (const QJsonValue& v : phase)
-        QVERIFY(std::abs(v.toDouble()) < 1e-6); // ZPETC: zero phase error (Patrick, Ishak and Adnan Eq. 6)
+        QVERIFY(std::abs(v.toDouble()) <
+                1e-6); // ZPETC: zero phase error (Patrick, Ishak and Adnan Eq. 6)
     XYT_COMPARE_NEAR(r.json()["frequency"].toArray().last().toDouble(), M_PI / 0.07, 1e-12, 0.0);
 }
 
@@ -112,10 +116,14 @@ void TstCliFrequency::reportQuotesTheMargins() {
     for (const char* name : {"lower-base", "upper-base"}) {
         const auto preset = xyt::findGtPreset(name);
         const xyt::StabilityMargins m = xyt::stabilityMargins(
-            xyt::gtLoopTransferFunctions(xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp)).openLoop);
+            xyt::gtLoopTransferFunctions(
+                xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp))
+                .openLoop);
         const QString expected = QString("GM %1 dB at %2 rad/s, PM %3 deg at %4 rad/s")
-                                     .arg(QString::number(m.gainMarginDb, 'g', 3), QString::number(m.gainMarginOmegaRadPerSec, 'g', 3),
-                                          QString::number(m.phaseMarginDeg, 'g', 3), QString::number(m.phaseMarginOmegaRadPerSec, 'g', 3));
+                                     .arg(QString::number(m.gainMarginDb, 'g', 3),
+                                          QString::number(m.gainMarginOmegaRadPerSec, 'g', 3),
+                                          QString::number(m.phaseMarginDeg, 'g', 3),
+                                          QString::number(m.phaseMarginOmegaRadPerSec, 'g', 3));
         QVERIFY2(QString::fromUtf8(r.out).contains(expected), qPrintable(expected));
     }
 }
@@ -124,13 +132,20 @@ void TstCliFrequency::badInputIsNamed_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("field");
     QTest::newRow("no loop") << QStringList{"margins"} << "--gt-preset";
-    QTest::newRow("two loops") << QStringList{"margins", "--gt-preset", "lower-base", "--num", "1", "--den", "1 1"} << "--gt-preset";
-    QTest::newRow("unknown preset") << QStringList{"bode", "--pp-preset", "z-axis"} << "--pp-preset";
+    QTest::newRow("two loops") << QStringList{"margins", "--gt-preset", "lower-base", "--num",
+                                              "1",       "--den",       "1 1"}
+                               << "--gt-preset";
+    QTest::newRow("unknown preset")
+        << QStringList{"bode", "--pp-preset", "z-axis"} << "--pp-preset";
     QTest::newRow("den missing") << QStringList{"margins", "--num", "1"} << "--den";
-    QTest::newRow("negative wn") << QStringList{"margins", "--gt-preset", "lower-base", "--wn", "-1"} << "--wn";
+    QTest::newRow("negative wn") << QStringList{"margins", "--gt-preset", "lower-base", "--wn",
+                                                "-1"}
+                                 << "--wn";
     QTest::newRow("improper") << QStringList{"margins", "--num", "1 0 0", "--den", "1 1"} << "num";
-    QTest::newRow("bad ts") << QStringList{"bode", "--num", "1", "--den", "1 -1", "--ts", "0"} << "--ts";
-    QTest::newRow("unknown option") << QStringList{"bode", "--gt-preset", "lower-base", "--points", "3"} << "--points";
+    QTest::newRow("bad ts") << QStringList{"bode", "--num", "1", "--den", "1 -1", "--ts", "0"}
+                            << "--ts";
+    QTest::newRow("unknown option")
+        << QStringList{"bode", "--gt-preset", "lower-base", "--points", "3"} << "--points";
 }
 
 void TstCliFrequency::badInputIsNamed() {

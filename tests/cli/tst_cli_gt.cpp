@@ -63,14 +63,17 @@ void TstCliGt::gtMatchesCore_data() {
     QTest::addColumn<double>("a2");
     QTest::addColumn<double>("wn");
     QTest::addColumn<double>("kp");
-    QTest::newRow("Braga et al.'s lower base") << QStringList{"--preset", "lower-base", "--wn", "2", "--kp", "30"}
-                                          << 77.8 << 125.3 << 3665.0 << 2.0 << 30.0;
-    QTest::newRow("upper base, preset defaults") << QStringList{"--preset", "upper-base"}
-                                                 << 24.44 << 68.18 << 863.0 << 1.0 << 30.0;
-    QTest::newRow("explicit plant, --name=value") << QStringList{"--k0=10", "--a1", "5", "--a2", "6", "--wn", "0.5", "--kp", "2"}
-                                                  << 10.0 << 5.0 << 6.0 << 0.5 << 2.0;
-    QTest::newRow("preset with a1 overridden") << QStringList{"--preset", "lower-base", "--a1", "100"}
-                                               << 77.8 << 100.0 << 3665.0 << 2.0 << 30.0;
+    QTest::newRow("Braga et al.'s lower base")
+        << QStringList{"--preset", "lower-base", "--wn", "2", "--kp", "30"} << 77.8 << 125.3
+        << 3665.0 << 2.0 << 30.0;
+    QTest::newRow("upper base, preset defaults")
+        << QStringList{"--preset", "upper-base"} << 24.44 << 68.18 << 863.0 << 1.0 << 30.0;
+    QTest::newRow("explicit plant, --name=value")
+        << QStringList{"--k0=10", "--a1", "5", "--a2", "6", "--wn", "0.5", "--kp", "2"} << 10.0
+        << 5.0 << 6.0 << 0.5 << 2.0;
+    QTest::newRow("preset with a1 overridden")
+        << QStringList{"--preset", "lower-base", "--a1", "100"} << 77.8 << 100.0 << 3665.0 << 2.0
+        << 30.0;
 }
 
 void TstCliGt::gtMatchesCore() {
@@ -87,9 +90,9 @@ void TstCliGt::gtMatchesCore() {
     requireNoNonFinite(run.out);
     const QJsonObject o = run.json();
     const xyt::GtDesign d = xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp);
-    const std::pair<const char*, double> scalars[] = {{"f1", d.f1},   {"f2", d.f2},     {"f3", d.f3},
-                                                      {"psi1", d.psi1}, {"psi2", d.psi2}, {"kp", d.kp},
-                                                      {"ki", d.ki}};
+    const std::pair<const char*, double> scalars[] = {
+        {"f1", d.f1},     {"f2", d.f2}, {"f3", d.f3}, {"psi1", d.psi1},
+        {"psi2", d.psi2}, {"kp", d.kp}, {"ki", d.ki}};
     for (const auto& [key, value] : scalars) {
         QVERIFY2(o.contains(key), key);
         XYT_COMPARE_NEAR(o[key].toDouble(), value, 1e-15, 0.0);
@@ -105,8 +108,10 @@ void TstCliGt::gtMatchesCore() {
     const QJsonArray poles = cl["poles"].toArray();
     QCOMPARE(poles.size(), qsizetype(4));
     for (qsizetype i = 0; i < poles.size(); ++i) {
-        XYT_COMPARE_NEAR(poles[i].toArray()[0].toDouble(), d.closedLoopPoles[std::size_t(i)].real(), 1e-15, 0.0);
-        XYT_COMPARE_NEAR(poles[i].toArray()[1].toDouble(), d.closedLoopPoles[std::size_t(i)].imag(), 1e-15, 0.0);
+        XYT_COMPARE_NEAR(poles[i].toArray()[0].toDouble(), d.closedLoopPoles[std::size_t(i)].real(),
+                         1e-15, 0.0);
+        XYT_COMPARE_NEAR(poles[i].toArray()[1].toDouble(), d.closedLoopPoles[std::size_t(i)].imag(),
+                         1e-15, 0.0);
     }
     QCOMPARE(o["stable"].toBool(), d.stable);
 }
@@ -117,12 +122,13 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv_data() {
     QTest::addColumn<double>("dt");
     QTest::addColumn<double>("duration");
     QTest::newRow("paper cubic 0 -> 600 in 130 s, lower base")
-        << QStringList{"--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--tf", "130",
-                       "--duration", "130"}
+        << QStringList{"--preset", "lower-base", "--trajectory", "cubic",      "--xf",
+                       "600",      "--tf",       "130",          "--duration", "130"}
         << true << 0.01 << 130.0;
     QTest::newRow("circle axis: 25 mm sine at 0.06 rad/s, upper base, ramp-in 10 s")
-        << QStringList{"--preset", "upper-base", "--trajectory", "sine", "--amplitude", "25", "--omega",
-                       "0.06", "--phase-deg", "90", "--ramp-in", "10", "--duration", "60", "--dt", "0.02"}
+        << QStringList{"--preset",   "upper-base", "--trajectory", "sine", "--amplitude", "25",
+                       "--omega",    "0.06",       "--phase-deg",  "90",   "--ramp-in",   "10",
+                       "--duration", "60",         "--dt",         "0.02"}
         << false << 0.02 << 60.0;
 }
 
@@ -134,7 +140,8 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString csvPath = dir.filePath("run.csv");
-    const auto run = xyt::test::runCli(QStringList{"simulate"} + args + QStringList{"--csv", csvPath});
+    const auto run =
+        xyt::test::runCli(QStringList{"simulate"} + args + QStringList{"--csv", csvPath});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     requireNoNonFinite(run.out);
@@ -151,7 +158,8 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
 
     // The same run through the core: the preset's unit scale (0.001 m per mm), umax 2.5 V.
     const auto preset = xyt::findGtPreset(args[1].toStdString());
-    const xyt::GtDesign d = xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp);
+    const xyt::GtDesign d =
+        xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp);
     xyt::LoopSimulationOptions options;
     options.dtSeconds = dt;
     options.umaxVolts = 2.5;
@@ -159,10 +167,11 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     const auto times = xyt::sampleTimes(duration, dt);
     const xyt::CubicTrajectory c(0.0, 600.0, 0.0, 130.0);
     const xyt::Sinusoid s{25.0, 0.06, std::numbers::pi / 2.0, 0.0, 10.0};
-    const std::vector<double> r =
-        cubic ? xyt::sampled([&](double t) { return c.position(t); }, times)
-              : xyt::sampled([&](double t) { return s.value(t); }, times);
-    const xyt::SimulationResult core = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
+    const std::vector<double> r = cubic
+                                      ? xyt::sampled([&](double t) { return c.position(t); }, times)
+                                      : xyt::sampled([&](double t) { return s.value(t); }, times);
+    const xyt::SimulationResult core =
+        xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
     const xyt::TrackingMetrics tm = xyt::trackingMetrics(core);
     const xyt::StepCharacteristics step = xyt::stepCharacteristics(d.closedLoop);
     // Same computation, same binary code path: exact up to the JSON text round trip, except
@@ -178,7 +187,8 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
     XYT_COMPARE_NEAR(stepJson["peak_time"].toDouble(), step.peakTimeSeconds, 1e-15, 0.0);
     XYT_COMPARE_NEAR(m["itae"].toDouble(), tm.itae, 1e-12, 0.0);
     if (cubic)
-        QVERIFY(!tm.saturated); // Braga et al.: no saturation on the cubic (0.33 V, see tst_simulation)
+        QVERIFY(
+            !tm.saturated); // Braga et al.: no saturation on the cubic (0.33 V, see tst_simulation)
 
     // The CSV: header t,r,y,e,u and one row per sample, written with 10 significant digits.
     QFile file(csvPath);
@@ -202,11 +212,34 @@ void TstCliGt::simulateMatchesCoreAndWritesCsv() {
 void TstCliGt::simulateDigitalMatchesCore() {
     QTemporaryDir dir;
     const QString csvPath = dir.filePath("digital.csv");
-    const auto run = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf", "600",
-                                        "--tf", "130", "--duration", "160", "--digital", "--controller-ts", "0.02",
-                                        "--discretization", "backward-euler", "--delay-samples", "1",
-                                        "--encoder-resolution", "0.001", "--dac-bits", "16", "--anti-windup",
-                                        "back-calculation", "--tracking-time", "3", "--csv", csvPath});
+    const auto run = xyt::test::runCli({"simulate",
+                                        "--preset",
+                                        "upper-base",
+                                        "--trajectory",
+                                        "cubic",
+                                        "--xf",
+                                        "600",
+                                        "--tf",
+                                        "130",
+                                        "--duration",
+                                        "160",
+                                        "--digital",
+                                        "--controller-ts",
+                                        "0.02",
+                                        "--discretization",
+                                        "backward-euler",
+                                        "--delay-samples",
+                                        "1",
+                                        "--encoder-resolution",
+                                        "0.001",
+                                        "--dac-bits",
+                                        "16",
+                                        "--anti-windup",
+                                        "back-calculation",
+                                        "--tracking-time",
+                                        "3",
+                                        "--csv",
+                                        csvPath});
     QCOMPARE(run.exitCode, 0);
     const QJsonObject d = run.json()["digital"].toObject();
     QCOMPARE(d["controller_ts"].toDouble(), 0.02);
@@ -216,8 +249,9 @@ void TstCliGt::simulateDigitalMatchesCore() {
     QCOMPARE(d["dac_bits"].toInt(), 16);
     const auto preset = *xyt::findGtPreset("upper-base");
     const auto design = xyt::designGuilleminTruxal(preset.plant, preset.omegaNRadPerSec, preset.kp);
-    const xyt::DigitalPi pi = xyt::digitalPi(design.kp, design.ki, 0.02, xyt::PiDiscretization::BackwardEuler,
-                                             xyt::AntiWindup::BackCalculation, 3.0);
+    const xyt::DigitalPi pi =
+        xyt::digitalPi(design.kp, design.ki, 0.02, xyt::PiDiscretization::BackwardEuler,
+                       xyt::AntiWindup::BackCalculation, 3.0);
     xyt::SampledDataOptions o;
     o.delaySamples = 1;
     o.encoderResolution = 0.001;
@@ -225,9 +259,10 @@ void TstCliGt::simulateDigitalMatchesCore() {
     o.umaxVolts = 2.5;
     const xyt::CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
     const auto times = xyt::sampleTimes(160.0, 0.02);
-    const auto core = xyt::simulateSampledPi(preset.plant.transferFunction(), pi,
-                                             xyt::sampled([&](double t) { return cubic.position(t); }, times), o,
-                                             preset.modelUnitsPerPositionUnit);
+    const auto core =
+        xyt::simulateSampledPi(preset.plant.transferFunction(), pi,
+                               xyt::sampled([&](double t) { return cubic.position(t); }, times), o,
+                               preset.modelUnitsPerPositionUnit);
     const xyt::TrackingMetrics m = xyt::trackingMetrics(core.result);
     QCOMPARE(d["samples"].toDouble(), static_cast<double>(times.size()));
     XYT_COMPARE_NEAR(d["tracking"]["rmse"].toDouble(), m.rmse, 1e-15, 0.0);
@@ -245,7 +280,8 @@ void TstCliGt::simulateDigitalMatchesCore() {
     for (qsizetype k = 1; k < lines.size(); ++k) {
         const QList<QByteArray> cells = lines[k].split(',');
         QCOMPARE(cells.size(), qsizetype(9));
-        const std::size_t j = static_cast<std::size_t>(k - 1) / 2; // t = (k - 1) 0.01 holds sample floor((k - 1) / 2)
+        const std::size_t j =
+            static_cast<std::size_t>(k - 1) / 2; // t = (k - 1) 0.01 holds sample floor((k - 1) / 2)
         QVERIFY2(std::strtod(cells[5].constData(), nullptr) == core.result.t[j] &&
                      std::strtod(cells[6].constData(), nullptr) == core.result.y[j] &&
                      std::strtod(cells[7].constData(), nullptr) == core.result.e[j] &&
@@ -253,8 +289,9 @@ void TstCliGt::simulateDigitalMatchesCore() {
                  lines[k].constData());
     }
     // Digital options without --digital are refused naming the option.
-    const auto refused = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf",
-                                            "600", "--tf", "130", "--dac-bits", "16"});
+    const auto refused =
+        xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic", "--xf",
+                           "600", "--tf", "130", "--dac-bits", "16"});
     QCOMPARE(refused.exitCode, 2);
     QVERIFY2(refused.err.contains("--dac-bits: needs --digital"), refused.err.constData());
 }
@@ -289,22 +326,23 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
     // A 400 s move: the cap is tf + 3 moves = 1600 s, long enough for the slow pole to bring
     // |e| from ~1.2 mm into 0.01 mm, so the slow mode dominates the settle (at tf = 130 s the
     // lower base needs ~860 s, beyond its 520 s cap: the upper base's case below).
-    const auto run = xyt::test::runCli({"simulate", "--preset", "lower-base", "--trajectory", "cubic",
-                                        "--xf", "600", "--tf", "400"});
+    const auto run = xyt::test::runCli({"simulate", "--preset", "lower-base", "--trajectory",
+                                        "cubic", "--xf", "600", "--tf", "400"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     requireNoNonFinite(run.out);
     const QJsonObject o = run.json();
     const auto preset = xyt::findGtPreset("lower-base");
-    const xyt::GtDesign d = xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp);
+    const xyt::GtDesign d =
+        xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp);
     xyt::LoopSimulationOptions options;
     options.umaxVolts = 2.5;
     options.modelUnitsPerPositionUnit = preset->modelUnitsPerPositionUnit;
     const xyt::CubicTrajectory c(0.0, 600.0, 0.0, 400.0);
-    const auto moveRun = xyt::simulateLoop(d.plant.transferFunction(), d.controller,
-                                           xyt::sampled([&](double t) { return c.position(t); },
-                                                        xyt::sampleTimes(400.0, 0.01)),
-                                           options);
+    const auto moveRun = xyt::simulateLoop(
+        d.plant.transferFunction(), d.controller,
+        xyt::sampled([&](double t) { return c.position(t); }, xyt::sampleTimes(400.0, 0.01)),
+        options);
     double slowest = -INFINITY;
     for (const auto& p : d.closedLoopPoles)
         slowest = std::max(slowest, p.real());
@@ -328,8 +366,8 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
     // the target (its step error integrates to zero, see core/study/specification.h).
     QVERIFY(ms["final_overshoot_mm"].toDouble() > 0.0);
     // The upper base needs more than the cap: the run is cut to it and says so.
-    const auto upper = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory", "cubic",
-                                          "--xf", "600", "--tf", "130"});
+    const auto upper = xyt::test::runCli({"simulate", "--preset", "upper-base", "--trajectory",
+                                          "cubic", "--xf", "600", "--tf", "130"});
     QCOMPARE(upper.exitCode, 0);
     QVERIFY(upper.json()["duration_choice"].toObject()["capped"].toBool());
     QCOMPARE(upper.json()["duration"].toDouble(), 520.0); // tf + 3 x 130 s
@@ -339,8 +377,8 @@ void TstCliGt::automaticDurationIncludesTheSettle() {
 
 void TstCliGt::commandHelpIsThatCommandsOnly() {
     // COMMAND --help printed the general help of every command.
-    const QStringList commands = {"gt", "simulate", "report", "new", "export",
-                                  "rlocus", "sweep", "pp", "zpetc", "contour"};
+    const QStringList commands = {"gt",     "simulate", "report", "new",   "export",
+                                  "rlocus", "sweep",    "pp",     "zpetc", "contour"};
     auto entry = [](const QString& c) { return "\n  " + c + " "; };
     const auto general = xyt::test::runCli({"--help"});
     QCOMPARE(general.exitCode, 0);
@@ -376,36 +414,67 @@ void TstCliGt::reportReadsTheDefaultDesign() {
 void TstCliGt::badInputExitsWithTwo_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("argument");
-    const QStringList cubic{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--tf", "130"};
+    const QStringList cubic{"simulate", "--preset", "lower-base", "--trajectory", "cubic",
+                            "--xf",     "600",      "--tf",       "130"};
     QTest::newRow("wn < 0") << QStringList{"gt", "--preset", "lower-base", "--wn", "-1"} << "--wn";
     QTest::newRow("wn = 0") << QStringList{"gt", "--preset", "lower-base", "--wn", "0"} << "--wn";
-    QTest::newRow("wn NaN as text") << QStringList{"gt", "--preset", "lower-base", "--wn", "nan"} << "--wn";
-    QTest::newRow("kp inf as text") << QStringList{"gt", "--preset", "lower-base", "--kp", "inf"} << "--kp";
+    QTest::newRow("wn NaN as text")
+        << QStringList{"gt", "--preset", "lower-base", "--wn", "nan"} << "--wn";
+    QTest::newRow("kp inf as text")
+        << QStringList{"gt", "--preset", "lower-base", "--kp", "inf"} << "--kp";
     QTest::newRow("kp = 0") << QStringList{"gt", "--preset", "lower-base", "--kp", "0"} << "--kp";
-    QTest::newRow("kp not a number") << QStringList{"gt", "--preset", "lower-base", "--kp", "thirty"} << "--kp";
-    QTest::newRow("k0 = 0") << QStringList{"gt", "--k0", "0", "--a1", "1", "--a2", "1", "--wn", "1", "--kp", "1"} << "--k0";
-    QTest::newRow("a1 -Infinity") << QStringList{"gt", "--preset", "upper-base", "--a1", "-Infinity"} << "--a1";
-    QTest::newRow("a2 missing without preset") << QStringList{"gt", "--k0", "1", "--a1", "1", "--wn", "1", "--kp", "1"} << "--a2";
+    QTest::newRow("kp not a number")
+        << QStringList{"gt", "--preset", "lower-base", "--kp", "thirty"} << "--kp";
+    QTest::newRow("k0 = 0") << QStringList{"gt", "--k0", "0", "--a1", "1", "--a2",
+                                           "1",  "--wn", "1", "--kp", "1"}
+                            << "--k0";
+    QTest::newRow("a1 -Infinity") << QStringList{"gt", "--preset", "upper-base", "--a1",
+                                                 "-Infinity"}
+                                  << "--a1";
+    QTest::newRow("a2 missing without preset")
+        << QStringList{"gt", "--k0", "1", "--a1", "1", "--wn", "1", "--kp", "1"} << "--a2";
     QTest::newRow("unknown preset") << QStringList{"gt", "--preset", "middle-base"} << "--preset";
-    QTest::newRow("unknown option") << QStringList{"gt", "--preset", "lower-base", "--kd", "1"} << "--kd";
-    QTest::newRow("option given twice") << QStringList{"gt", "--preset", "lower-base", "--wn", "1", "--wn", "2"} << "--wn";
-    QTest::newRow("option without value") << QStringList{"gt", "--preset", "lower-base", "--wn"} << "--wn";
+    QTest::newRow("unknown option")
+        << QStringList{"gt", "--preset", "lower-base", "--kd", "1"} << "--kd";
+    QTest::newRow("option given twice")
+        << QStringList{"gt", "--preset", "lower-base", "--wn", "1", "--wn", "2"} << "--wn";
+    QTest::newRow("option without value")
+        << QStringList{"gt", "--preset", "lower-base", "--wn"} << "--wn";
     QTest::newRow("dt = 0") << cubic + QStringList{"--dt", "0"} << "--dt";
     QTest::newRow("dt < 0") << cubic + QStringList{"--dt", "-0.01"} << "--dt";
-    QTest::newRow("duration too long for memory") << cubic + QStringList{"--duration", "1e9"} << "--duration";
+    QTest::newRow("duration too long for memory")
+        << cubic + QStringList{"--duration", "1e9"} << "--duration";
     QTest::newRow("duration NaN") << cubic + QStringList{"--duration", "NaN"} << "--duration";
     QTest::newRow("duration = 0") << cubic + QStringList{"--duration", "0"} << "--duration";
     QTest::newRow("umax = 0") << cubic + QStringList{"--umax", "0"} << "--umax";
     QTest::newRow("umax inf") << cubic + QStringList{"--umax", "inf"} << "--umax";
-    QTest::newRow("xf NaN") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "nan", "--tf", "130"} << "--xf";
+    QTest::newRow("xf NaN") << QStringList{"simulate",     "--preset", "lower-base",
+                                           "--trajectory", "cubic",    "--xf",
+                                           "nan",          "--tf",     "130"}
+                            << "--xf";
     // Regression: the core's "tf" used to reach stderr without the "--" of the argument.
-    QTest::newRow("tf before t0") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "cubic", "--xf", "600", "--t0", "100", "--tf", "50"} << "--tf";
-    QTest::newRow("missing trajectory") << QStringList{"simulate", "--preset", "lower-base"} << "--trajectory";
-    QTest::newRow("unknown trajectory") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "spiral"} << "--trajectory";
-    QTest::newRow("sine omega = 0") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude", "25", "--omega", "0"} << "--omega";
-    QTest::newRow("sine ramp-in < 0") << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude", "25", "--omega", "0.06", "--ramp-in", "-1"} << "--ramp-in";
-    QTest::newRow("unit scale = 0") << cubic + QStringList{"--model-unit-scale", "0"} << "--model-unit-scale";
-    QTest::newRow("csv not writable") << cubic + QStringList{"--csv", "/nonexistent-dir/run.csv"} << "--csv";
+    QTest::newRow("tf before t0") << QStringList{"simulate",     "--preset", "lower-base",
+                                                 "--trajectory", "cubic",    "--xf",
+                                                 "600",          "--t0",     "100",
+                                                 "--tf",         "50"}
+                                  << "--tf";
+    QTest::newRow("missing trajectory")
+        << QStringList{"simulate", "--preset", "lower-base"} << "--trajectory";
+    QTest::newRow("unknown trajectory")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "spiral"}
+        << "--trajectory";
+    QTest::newRow("sine omega = 0")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
+                       "25",       "--omega",  "0"}
+        << "--omega";
+    QTest::newRow("sine ramp-in < 0")
+        << QStringList{"simulate", "--preset", "lower-base", "--trajectory", "sine", "--amplitude",
+                       "25",       "--omega",  "0.06",       "--ramp-in",    "-1"}
+        << "--ramp-in";
+    QTest::newRow("unit scale = 0")
+        << cubic + QStringList{"--model-unit-scale", "0"} << "--model-unit-scale";
+    QTest::newRow("csv not writable")
+        << cubic + QStringList{"--csv", "/nonexistent-dir/run.csv"} << "--csv";
     QTest::newRow("report takes no option") << QStringList{"report", "--wn", "2"} << "--wn";
 }
 

@@ -27,7 +27,7 @@ void TstCliRlocus::continuousTypeOneLoop() {
     QCOMPARE(branches.size(), 3);
     for (const QJsonValue& b : branches) {
         const QJsonArray first = b.toArray().first().toArray();
-        QCOMPARE(first.size(), 3); // [k, re, im]
+        QCOMPARE(first.size(), 3);                            // [k, re, im]
         XYT_COMPARE_NEAR(first[0].toDouble(), 0.0, 0.0, 0.0); // starts at K = 0
     }
     // Closed forms for 1/(s(s+1)(s+2)): centroid -1, angles 60/180/300; breakaway
@@ -45,9 +45,9 @@ void TstCliRlocus::continuousTypeOneLoop() {
 }
 
 void TstCliRlocus::discretePaperXAxisLoop() {
-    // Patrick, Ishak and Adnan Eq. 1, typed as in the paper (ascending powers of z^-1), Ts 0.07 s. Unit-circle
-    // crossing where 1 - a0^2 - a1 + a0 a2 = 0 (Jury/Schur-Cohn for the cubic A z + K B),
-    // the root of 0.3417 + 0.0124732 K - 0.00397250 K^2 (see tst_root_locus).
+    // Patrick, Ishak and Adnan Eq. 1, typed as in the paper (ascending powers of z^-1), Ts 0.07 s.
+    // Unit-circle crossing where 1 - a0^2 - a1 + a0 a2 = 0 (Jury/Schur-Cohn for the cubic A z + K
+    // B), the root of 0.3417 + 0.0124732 K - 0.00397250 K^2 (see tst_root_locus).
     const auto run = xyt::test::runCli({"rlocus", "--num", "0 0.0421 0.0628 -0.0454", "--den",
                                         "1 -1.6580 0.6583", "--ts", "0.07", "--kmax", "50"});
     QVERIFY(run.finished);
@@ -67,7 +67,8 @@ void TstCliRlocus::discretePaperXAxisLoop() {
 }
 
 void TstCliRlocus::gtPresetDesignPoint() {
-    const auto run = xyt::test::runCli({"rlocus", "--gt-preset", "lower-base", "--wn", "2", "--kp", "30"});
+    const auto run =
+        xyt::test::runCli({"rlocus", "--gt-preset", "lower-base", "--wn", "2", "--kp", "30"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -97,13 +98,19 @@ void TstCliRlocus::badInputExitsWithTwo_data() {
     QTest::newRow("improper") << QStringList{"--num", "1 2 3", "--den", "1 1"} << "--num";
     QTest::newRow("constant den") << QStringList{"--num", "1", "--den", "5"} << "--den";
     QTest::newRow("missing den") << QStringList{"--num", "1"} << "--den";
-    QTest::newRow("negative ts") << QStringList{"--num", "1", "--den", "1 0.5", "--ts", "-1"} << "--ts";
-    QTest::newRow("z^0 of den zero") << QStringList{"--num", "1", "--den", "0 1", "--ts", "0.1"} << "--den";
-    QTest::newRow("kmax zero") << QStringList{"--num", "1", "--den", "1 1", "--kmax", "0"} << "--kmax";
+    QTest::newRow("negative ts") << QStringList{"--num", "1", "--den", "1 0.5", "--ts", "-1"}
+                                 << "--ts";
+    QTest::newRow("z^0 of den zero")
+        << QStringList{"--num", "1", "--den", "0 1", "--ts", "0.1"} << "--den";
+    QTest::newRow("kmax zero") << QStringList{"--num", "1", "--den", "1 1", "--kmax", "0"}
+                               << "--kmax";
     QTest::newRow("unknown preset") << QStringList{"--gt-preset", "middle"} << "--gt-preset";
-    QTest::newRow("wn negative") << QStringList{"--gt-preset", "lower-base", "--wn", "-2"} << "--wn";
-    QTest::newRow("num with preset") << QStringList{"--gt-preset", "lower-base", "--num", "1"} << "--num";
-    QTest::newRow("unknown option") << QStringList{"--num", "1", "--den", "1 1", "--bogus", "1"} << "--bogus";
+    QTest::newRow("wn negative") << QStringList{"--gt-preset", "lower-base", "--wn", "-2"}
+                                 << "--wn";
+    QTest::newRow("num with preset")
+        << QStringList{"--gt-preset", "lower-base", "--num", "1"} << "--num";
+    QTest::newRow("unknown option")
+        << QStringList{"--num", "1", "--den", "1 1", "--bogus", "1"} << "--bogus";
 }
 
 void TstCliRlocus::badInputExitsWithTwo() {

@@ -4,8 +4,8 @@
 // the CSV holds one row per plant; with --contour the joint XY figures are
 // analyzeContourRobustness's; bad arguments exit 2 naming the argument.
 #include "core/session/robustness_problem.h"
-#include "core/study/contour_robustness.h"
 #include "core/session/session.h"
+#include "core/study/contour_robustness.h"
 #include "tests/support/cli_runner.h"
 
 #include <QFile>
@@ -40,8 +40,9 @@ void TstCliRobustness::initTestCase() {
 
 void TstCliRobustness::figuresAreTheCores() {
     const QString csv = dir_.filePath("runs.csv");
-    const auto run = test::runCli({"robustness", session_, "--samples", "20", "--seed", "5", "--range", "k0=10%",
-                                   "--range", "y.a2=0.05", "--threads", "2", "--csv", csv});
+    const auto run =
+        test::runCli({"robustness", session_, "--samples", "20", "--seed", "5", "--range", "k0=10%",
+                      "--range", "y.a2=0.05", "--threads", "2", "--csv", csv});
     QCOMPARE(run.exitCode, 0);
     const QJsonArray axes = run.json().value("axes").toArray();
     QCOMPARE(axes.size(), 2);
@@ -94,10 +95,11 @@ void TstCliRobustness::sensitivityCurveIsTheCores() {
         QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
         f.write(text);
     }
-    const auto run = test::runCli({"robustness", path, "--axis", "x", "--samples", "10", "--range", "b1=20%",
-                                   "--sensitivity"});
+    const auto run = test::runCli({"robustness", path, "--axis", "x", "--samples", "10", "--range",
+                                   "b1=20%", "--sensitivity"});
     QCOMPARE(run.exitCode, 0);
-    const QJsonArray curve = run.json().value("axes").toArray()[0].toObject().value("zpetc_sensitivity").toArray();
+    const QJsonArray curve =
+        run.json().value("axes").toArray()[0].toObject().value("zpetc_sensitivity").toArray();
     QCOMPARE(curve.size(), 5);
     RobustnessProblem p = sessionRobustnessProblem(s, 0);
     setRelativeRange(p.parameters, "b1", 0.2);
@@ -106,8 +108,10 @@ void TstCliRobustness::sensitivityCurveIsTheCores() {
     const auto expected = zpetcSensitivity(p, {0.0, 0.25, 0.5, 0.75, 1.0}, o);
     for (int i = 0; i < 5; ++i) {
         const QJsonObject point = curve[i].toObject();
-        QCOMPARE(point.value("rmse_with_ff").toObject().value("p50").toDouble(), expected[static_cast<std::size_t>(i)].rmseWithFf.p50);
-        QCOMPARE(point.value("median_improvement_pct").toDouble(), expected[static_cast<std::size_t>(i)].medianImprovementPct);
+        QCOMPARE(point.value("rmse_with_ff").toObject().value("p50").toDouble(),
+                 expected[static_cast<std::size_t>(i)].rmseWithFf.p50);
+        QCOMPARE(point.value("median_improvement_pct").toDouble(),
+                 expected[static_cast<std::size_t>(i)].medianImprovementPct);
     }
 }
 
@@ -124,8 +128,8 @@ void TstCliRobustness::contourFiguresAreTheCores() {
         f.write(text);
     }
     const QString csv = dir_.filePath("pairs.csv");
-    const auto run = test::runCli({"robustness", path, "--contour", "--samples", "6", "--seed", "2", "--range",
-                                   "k0=10%", "--range", "x.a1=5%", "--csv", csv});
+    const auto run = test::runCli({"robustness", path, "--contour", "--samples", "6", "--seed", "2",
+                                   "--range", "k0=10%", "--range", "x.a1=5%", "--csv", csv});
     QCOMPARE(run.exitCode, 0);
     const QJsonObject xy = run.json().value("xy").toObject();
     Session s = Session::paperDefault();
@@ -140,10 +144,13 @@ void TstCliRobustness::contourFiguresAreTheCores() {
     const ContourRobustnessResult r = analyzeContourRobustness(p, o);
     QCOMPARE(xy.value("contour").toString(), QString("circle"));
     QCOMPARE(xy.value("pairs").toInt(), 6 + 8); // 3 uncertain parameters: 8 corners
-    const QJsonObject maxAbs = xy.value("statistics").toObject().value("max_abs_contour_error").toObject();
-    QCOMPARE(maxAbs.value("p95").toDouble(), r.maxAbsContourError.p95); // shortest round-trip decimal: exact
+    const QJsonObject maxAbs =
+        xy.value("statistics").toObject().value("max_abs_contour_error").toObject();
+    QCOMPARE(maxAbs.value("p95").toDouble(),
+             r.maxAbsContourError.p95); // shortest round-trip decimal: exact
     QCOMPARE(maxAbs.value("max").toDouble(), r.maxAbsContourError.max);
-    QCOMPARE(xy.value("nominal").toObject().value("max_abs_contour_error").toDouble(), r.nominal.maxAbsContourError);
+    QCOMPARE(xy.value("nominal").toObject().value("max_abs_contour_error").toDouble(),
+             r.nominal.maxAbsContourError);
     QCOMPARE(xy.value("worst").toObject().value("index").toInt(), static_cast<int>(*r.worst));
     QVERIFY(xy.value("worst").toObject().value("parameters").toObject().contains("y.k0"));
     QFile f(csv);
@@ -163,9 +170,12 @@ void TstCliRobustness::badInput_data() {
     QTest::newRow("negative samples") << QStringList{"--samples", "-3"} << "--samples";
     QTest::newRow("fractional seed") << QStringList{"--seed", "1.5"} << "--seed";
     QTest::newRow("bad axis") << QStringList{"--axis", "z"} << "--axis";
-    QTest::newRow("unknown option") << QStringList{"--from-identifcation"} << "--from-identifcation";
-    QTest::newRow("not identified") << QStringList{"--from-identification"} << "axes[0].model_origin";
-    QTest::newRow("ranges and identification") << QStringList{"--from-identification", "--range", "k0=5%"} << "--range";
+    QTest::newRow("unknown option")
+        << QStringList{"--from-identifcation"} << "--from-identifcation";
+    QTest::newRow("not identified")
+        << QStringList{"--from-identification"} << "axes[0].model_origin";
+    QTest::newRow("ranges and identification")
+        << QStringList{"--from-identification", "--range", "k0=5%"} << "--range";
     QTest::newRow("contour of a cubic move") << QStringList{"--contour"} << "--contour";
     QTest::newRow("contour of one axis") << QStringList{"--contour", "--axis", "x"} << "--contour";
 }

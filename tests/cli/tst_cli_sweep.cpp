@@ -4,8 +4,8 @@
 
 #include <QFile>
 #include <QJsonArray>
-#include <QTemporaryDir>
 #include <QJsonDocument>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 namespace {
 
 const QStringList kLowerCubic = {"sweep", "--preset", "lower-base", "--trajectory", "cubic",
-                                 "--xf", "600", "--tf", "130"};
+                                 "--xf",  "600",      "--tf",       "130"};
 
 } // namespace
 
@@ -33,9 +33,9 @@ private slots:
 void TstCliSweep::contractKeysAndCsv() {
     QTemporaryDir dir;
     const QString csv = dir.filePath("sweep.csv");
-    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "0.5:4:4", "--kp", "10:200:5",
-                                                                 "--log", "--max-overshoot", "1",
-                                                                 "--csv", csv, "--threads", "2", "--points"});
+    const auto run = xyt::test::runCli(
+        kLowerCubic + QStringList{"--wn", "0.5:4:4", "--kp", "10:200:5", "--log", "--max-overshoot",
+                                  "1", "--csv", csv, "--threads", "2", "--points"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -83,8 +83,10 @@ void TstCliSweep::contractKeysAndCsv() {
 }
 
 void TstCliSweep::strictSpecHasNoBest() {
-    // Braga et al.'s strict "no overshoot": no type-2 design meets it (see core/study/specification.h).
-    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "1:3:3", "--kp", "10:50:3", "--points"});
+    // Braga et al.'s strict "no overshoot": no type-2 design meets it (see
+    // core/study/specification.h).
+    const auto run = xyt::test::runCli(kLowerCubic +
+                                       QStringList{"--wn", "1:3:3", "--kp", "10:50:3", "--points"});
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -106,7 +108,9 @@ void TstCliSweep::strictSpecHasNoBest() {
     const QJsonArray rows = o["points"].toArray();
     for (qsizetype i = 0; i < rows.size(); ++i)
         for (qsizetype j = 0; j < rows[i].toArray().size(); ++j) {
-            const double v = rows[i].toArray()[j].toObject()["metrics"].toObject()["overshoot_pct"].toDouble(INFINITY);
+            const double v =
+                rows[i].toArray()[j].toObject()["metrics"].toObject()["overshoot_pct"].toDouble(
+                    INFINITY);
             if (v < smallest) {
                 smallest = v;
                 at = QJsonArray{i, j};
@@ -114,8 +118,9 @@ void TstCliSweep::strictSpecHasNoBest() {
         }
     QCOMPARE(failing[0].toObject()["best_value"].toDouble(), smallest);
     QCOMPARE(failing[0].toObject()["best_index"].toArray(), at);
-    QVERIFY2(warnings[1].toString().startsWith("the step overshoot limit (0 %) fails at every design of the "
-                                               "grid; the smallest step overshoot found is "),
+    QVERIFY2(warnings[1].toString().startsWith(
+                 "the step overshoot limit (0 %) fails at every design of the "
+                 "grid; the smallest step overshoot found is "),
              qPrintable(warnings[1].toString()));
     // The least-violating design (smallest total normalized violation) is that point here, and
     // it has not settled into 0.01 mm by the end of the run (its slow pole -psi1 = -wn^4/(k0 kp)
@@ -125,16 +130,17 @@ void TstCliSweep::strictSpecHasNoBest() {
     const QJsonObject leastPoint = rows[at[0].toInt()].toArray()[at[1].toInt()].toObject();
     QCOMPARE(leastPoint["move_and_settle"].toObject()["settled"].toBool(true), false);
     QVERIFY(diagnosis["relaxed_specification"].isNull());
-    QVERIFY2(warnings[2].toString().startsWith("least-violating design: wn = 1 rad/s, kp = 50 (point 2); "
-                                               "relaxing a limit does not make it pass"),
+    QVERIFY2(warnings[2].toString().startsWith(
+                 "least-violating design: wn = 1 rad/s, kp = 50 (point 2); "
+                 "relaxing a limit does not make it pass"),
              qPrintable(warnings[2].toString()));
 }
 
 void TstCliSweep::bestOnTheEdgeIsWarned() {
     // The example: the best design's kp is the last grid value, 60.
-    const auto run = xyt::test::runCli(kLowerCubic + QStringList{"--wn", "0.5:4:100", "--kp", "5:60:100",
-                                                                 "--max-overshoot", "2"},
-                                       600000);
+    const auto run = xyt::test::runCli(
+        kLowerCubic + QStringList{"--wn", "0.5:4:100", "--kp", "5:60:100", "--max-overshoot", "2"},
+        600000);
     QVERIFY(run.finished);
     QCOMPARE(run.exitCode, 0);
     const QJsonObject o = run.json();
@@ -145,8 +151,9 @@ void TstCliSweep::bestOnTheEdgeIsWarned() {
     QVERIFY(!o["diagnosis"].toObject()["edges"].toObject()["kp_lower"].toBool());
     bool said = false;
     for (const QJsonValue& w : o["warnings"].toArray())
-        said = said || w.toString() == "kp = 60 (the best design) is the upper end of the kp range 5..60: "
-                                       "the optimum may lie above; widen the kp range beyond 60";
+        said = said || w.toString() ==
+                           "kp = 60 (the best design) is the upper end of the kp range 5..60: "
+                           "the optimum may lie above; widen the kp range beyond 60";
     QVERIFY2(said, QJsonDocument(o["warnings"].toArray()).toJson().constData());
     // The settle criterion is judged on a run of tf + 2 x the settle limit (130 + 200 s).
     QCOMPARE(o["duration"].toDouble(), 330.0);
@@ -165,15 +172,18 @@ void TstCliSweep::badGridExitsWithTwo_data() {
     QTest::newRow("not a number") << QStringList{"--wn", "1:x:3", "--kp", "1:2:3"} << "--wn";
     QTest::newRow("N not whole") << QStringList{"--wn", "1:5:3", "--kp", "1:2:2.5"} << "--kp";
     QTest::newRow("two fields") << QStringList{"--wn", "1:5", "--kp", "1:2:3"} << "--wn";
-    QTest::newRow("zero with --log") << QStringList{"--wn", "1:5:3", "--kp", "0:2:3", "--log"} << "--kp";
+    QTest::newRow("zero with --log")
+        << QStringList{"--wn", "1:5:3", "--kp", "0:2:3", "--log"} << "--kp";
     QTest::newRow("negative linear") << QStringList{"--wn", "-1:5:3", "--kp", "1:2:3"} << "--wn";
     QTest::newRow("missing --kp") << QStringList{"--wn", "1:5:3"} << "--kp";
-    QTest::newRow("bad criterion") << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--criterion", "iae"}
-                                   << "--criterion";
+    QTest::newRow("bad criterion")
+        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--criterion", "iae"} << "--criterion";
     QTest::newRow("phase margin above 180")
-        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--min-phase-margin", "200"} << "--min-phase-margin";
+        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--min-phase-margin", "200"}
+        << "--min-phase-margin";
     QTest::newRow("negative gain margin")
-        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--min-gain-margin", "-3"} << "--min-gain-margin";
+        << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--min-gain-margin", "-3"}
+        << "--min-gain-margin";
     QTest::newRow("bad threads") << QStringList{"--wn", "1:5:3", "--kp", "1:2:3", "--threads", "0"}
                                  << "--threads";
 }
@@ -195,9 +205,10 @@ void TstCliSweep::marginCriterionAndMinimum() {
     // core's (tst_design_sweep checks it against stabilityMargins); the CSV column equals it.
     QTemporaryDir dir;
     const QString csv = dir.filePath("sweep.csv");
-    const QStringList grid = {"--wn", "0.5:4:4", "--kp", "10:200:4", "--log", "--max-overshoot", "5"};
-    const auto free = xyt::test::runCli(kLowerCubic + grid + QStringList{"--criterion", "phase_margin",
-                                                                          "--csv", csv, "--points"});
+    const QStringList grid = {"--wn",  "0.5:4:4",         "--kp", "10:200:4",
+                              "--log", "--max-overshoot", "5"};
+    const auto free = xyt::test::runCli(
+        kLowerCubic + grid + QStringList{"--criterion", "phase_margin", "--csv", csv, "--points"});
     QCOMPARE(free.exitCode, 0);
     double lo = INFINITY, hi = -INFINITY;
     for (const QJsonValue& row : free.json()["points"].toArray())
@@ -222,9 +233,9 @@ void TstCliSweep::marginCriterionAndMinimum() {
              free.json()["points"].toArray()[0].toArray()[0].toObject()["phase_margin"].toDouble());
 
     const double minimum = 0.5 * (lo + hi);
-    const auto strict = xyt::test::runCli(kLowerCubic + grid + QStringList{"--min-phase-margin",
-                                                                            QString::number(minimum, 'g', 17),
-                                                                            "--points"});
+    const auto strict = xyt::test::runCli(
+        kLowerCubic + grid +
+        QStringList{"--min-phase-margin", QString::number(minimum, 'g', 17), "--points"});
     QCOMPARE(strict.exitCode, 0);
     QCOMPARE(strict.json()["specification"].toObject()["min_phase_margin"].toDouble(), minimum);
     int feasible = 0;
@@ -243,7 +254,8 @@ void TstCliSweep::marginCriterionAndMinimum() {
 void TstCliSweep::summaryWithoutPoints() {
     // A 100 x 100 grid wrote 13 MB of points by default. Without --points the summary alone: the
     // same best design, counts and diagnosis as with them (the same study), and no points.
-    const QStringList grid = {"--wn", "0.5:4:6", "--kp", "10:200:6", "--log", "--max-overshoot", "5"};
+    const QStringList grid = {"--wn",  "0.5:4:6",         "--kp", "10:200:6",
+                              "--log", "--max-overshoot", "5"};
     const auto summary = xyt::test::runCli(kLowerCubic + grid);
     const auto full = xyt::test::runCli(kLowerCubic + grid + QStringList{"--points"});
     QCOMPARE(summary.exitCode, 0);

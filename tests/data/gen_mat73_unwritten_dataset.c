@@ -3,8 +3,8 @@
 // vectors u (a step: 0, then 1) and y (0.001 k) written by libmatio, plus "big", a chunked
 // 400000000 x 1 double dataset added with libhdf5 whose chunks are never written: the file stays
 // a few KB while the variable claims 3.2 GB. Build and run from tests/data/:
-//   gcc gen_mat73_unwritten_dataset.c -I/usr/include/hdf5/serial -lmatio -lhdf5_serial -o /tmp/gen73
-//   /tmp/gen73 mat73_unwritten_dataset.mat
+//   gcc gen_mat73_unwritten_dataset.c -I/usr/include/hdf5/serial -lmatio -lhdf5_serial -o
+//   /tmp/gen73 /tmp/gen73 mat73_unwritten_dataset.mat
 #include <hdf5.h>
 #include <matio.h>
 
@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
     const hid_t space = H5Screate_simple(2, dims, NULL);
     const hid_t plist = H5Pcreate(H5P_DATASET_CREATE);
     H5Pset_chunk(plist, 2, chunk);
-    const hid_t set = H5Dcreate2(file, "big", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, plist, H5P_DEFAULT);
+    const hid_t set =
+        H5Dcreate2(file, "big", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, plist, H5P_DEFAULT);
     const hid_t strType = H5Tcopy(H5T_C_S1);
     H5Tset_size(strType, strlen("double"));
     const hid_t scalar = H5Screate(H5S_SCALAR);

@@ -6,14 +6,14 @@
 // hundred samples per simulation, a few thousand locus points), so a hang is a real defect.
 #include "tests/fuzz/fuzz_support.h"
 
+#include "core/analysis/root_locus.h"
 #include "core/design/diophantine.h"
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/design/pole_placement.h"
-#include "core/analysis/root_locus.h"
+#include "core/design/zpetc.h"
+#include "core/model/errors.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
-#include "core/design/zpetc.h"
 #include "core/simulation/zpetc_tracking.h"
 
 #include <algorithm>
@@ -56,12 +56,12 @@ void guilleminTruxal(FuzzInput& in) {
     const double dt = in.within(1e-4, 0.5);
     const double tf = dt * in.integer(1, 400);
     const xyt::CubicTrajectory cubic(0.0, in.within(-1000.0, 1000.0), 0.0, tf);
-    const auto reference = xyt::sampled([&](double t) { return cubic.position(t); },
-                                        xyt::sampleTimes(tf, dt));
+    const auto reference =
+        xyt::sampled([&](double t) { return cubic.position(t); }, xyt::sampleTimes(tf, dt));
     xyt::LoopSimulationOptions options;
     options.dtSeconds = dt;
-    options.umaxVolts = in.byte() % 2 ? in.within(1e-3, 100.0)
-                                      : std::numeric_limits<double>::infinity();
+    options.umaxVolts =
+        in.byte() % 2 ? in.within(1e-3, 100.0) : std::numeric_limits<double>::infinity();
     options.modelUnitsPerPositionUnit = in.byte() % 2 ? 0.001 : 1.0;
     const auto plantTf = plant.transferFunction();
     const auto run = xyt::simulateLoop(plantTf, d.controller, reference, options);
@@ -69,8 +69,9 @@ void guilleminTruxal(FuzzInput& in) {
     // A stable linear loop stays finite over a bounded time. With saturation the plant runs open
     // loop while clipped, so finiteness is only promised when the plant itself is not unstable.
     const auto plantPoles = plantTf.poles();
-    const bool plantNotUnstable = std::all_of(plantPoles.begin(), plantPoles.end(),
-                                              [](std::complex<double> p) { return p.real() <= 0.0; });
+    const bool plantNotUnstable =
+        std::all_of(plantPoles.begin(), plantPoles.end(),
+                    [](std::complex<double> p) { return p.real() <= 0.0; });
     if (d.stable && (!std::isfinite(options.umaxVolts) || plantNotUnstable)) {
         XYT_FUZZ_REQUIRE_FINITE(run.y);
         XYT_FUZZ_REQUIRE_FINITE(run.u);
@@ -89,7 +90,8 @@ xyt::Polynomial polynomial(const std::vector<double>& c, const char* field) {
     return xyt::Polynomial::fromAscending(c, field);
 }
 
-/// Patrick, Ishak and Adnan: the Diophantine equation, pole placement, ZPETC and the three tracking runs.
+/// Patrick, Ishak and Adnan: the Diophantine equation, pole placement, ZPETC and the three tracking
+/// runs.
 void polePlacement(FuzzInput& in) {
     const auto a = polynomial(in.coefficients(1, 6), "a");
     std::vector<double> bc(static_cast<std::size_t>(in.integer(1, 3)), 0.0); // the delay
@@ -138,9 +140,10 @@ void polePlacement(FuzzInput& in) {
     reference.amplitude = in.within(0.0, 1000.0);
     reference.omegaRadPerSec = in.within(1e-3, 10.0);
     const double duration = ts * in.integer(0, 300);
-    const auto start = in.byte() % 2 ? xyt::StartCondition::AtReference
-                                     : xyt::StartCondition::AtOrigin;
-    const xyt::ZpetcTrackingRun run = xyt::runZpetcTracking(loop, zpetc, reference, duration, start);
+    const auto start =
+        in.byte() % 2 ? xyt::StartCondition::AtReference : xyt::StartCondition::AtOrigin;
+    const xyt::ZpetcTrackingRun run =
+        xyt::runZpetcTracking(loop, zpetc, reference, duration, start);
     // A stable closed loop (roots of T) and a stable feedforward (B+ holds only cancelled zeros)
     // keep every signal finite over a bounded time.
     if (allStable(loop.closedLoop().poles(), ts)) {

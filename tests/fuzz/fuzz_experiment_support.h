@@ -25,13 +25,15 @@ namespace xyt::fuzz {
 inline void checkTable(const ExperimentTable& t, bool equalLengths) {
     const std::size_t n = t.names.size();
     XYT_FUZZ_REQUIRE(n <= kMaxExperimentColumns);
-    XYT_FUZZ_REQUIRE(t.columns.size() == n && t.fieldNumbers.size() == n && t.firstProblem.size() == n);
+    XYT_FUZZ_REQUIRE(t.columns.size() == n && t.fieldNumbers.size() == n &&
+                     t.firstProblem.size() == n);
     XYT_FUZZ_REQUIRE(std::set<std::string>(t.names.begin(), t.names.end()).size() == n);
     for (std::size_t r = 1; r < t.rowNumbers.size(); ++r)
         XYT_FUZZ_REQUIRE(t.rowNumbers[r] > t.rowNumbers[r - 1]);
     for (std::size_t c = 0; c < n; ++c) {
         const std::vector<double>& col = t.columns[c];
-        XYT_FUZZ_REQUIRE(equalLengths ? col.size() == t.rowNumbers.size() : col.size() <= t.rowNumbers.size());
+        XYT_FUZZ_REQUIRE(equalLengths ? col.size() == t.rowNumbers.size()
+                                      : col.size() <= t.rowNumbers.size());
         // Every non-finite cell is covered by the column's problem, which is the first of them.
         std::size_t firstBad = col.size();
         for (std::size_t r = 0; r < col.size() && firstBad == col.size(); ++r)
@@ -42,7 +44,8 @@ inline void checkTable(const ExperimentTable& t, bool equalLengths) {
         else
             XYT_FUZZ_REQUIRE(t.firstProblem[c] && t.firstProblem[c]->row == firstBad);
         if (t.firstProblem[c])
-            XYT_FUZZ_REQUIRE(t.cellField(c, t.firstProblem[c]->row).find('\n') == std::string::npos);
+            XYT_FUZZ_REQUIRE(t.cellField(c, t.firstProblem[c]->row).find('\n') ==
+                             std::string::npos);
     }
 }
 
@@ -132,7 +135,8 @@ inline std::vector<std::string> chosenNames(const ExperimentTable& t, OptionByte
 }
 
 inline bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
-    return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
 }
 
 /// A table read keeping only @p chosen equals the table read whole (@p full), on those columns.
@@ -177,13 +181,23 @@ inline void checkExperimentOptions(const ExperimentTable& t, OptionBytes& o) {
     cols.input = t.names[o.next() % n];
     cols.output = t.names[o.next() % n];
     switch (o.next() % 3) {
-    case 0: cols.time = t.names[o.next() % n]; break;
-    case 1: cols.sampleTimeSeconds = o.sampleTime(); break;
-    default: cols.fileSampleTime = true; break;
+    case 0:
+        cols.time = t.names[o.next() % n];
+        break;
+    case 1:
+        cols.sampleTimeSeconds = o.sampleTime();
+        break;
+    default:
+        cols.fileSampleTime = true;
+        break;
     }
     switch (o.next() % 3) {
-    case 0: cols.outputScale.unit = OutputUnit::Millimetres; break;
-    case 1: cols.outputScale.unit = OutputUnit::Metres; break;
+    case 0:
+        cols.outputScale.unit = OutputUnit::Millimetres;
+        break;
+    case 1:
+        cols.outputScale.unit = OutputUnit::Metres;
+        break;
     default:
         cols.outputScale.unit = OutputUnit::EncoderCounts;
         cols.outputScale.mmPerCount = o.sampleTime(); // the same edges suit a count size
@@ -201,7 +215,8 @@ inline void checkExperimentOptions(const ExperimentTable& t, OptionBytes& o) {
     try {
         const IoData taken = experimentData(std::move(copy), cols);
         XYT_FUZZ_REQUIRE(refused.empty());
-        XYT_FUZZ_REQUIRE(sameBits(taken.u, d.u) && sameBits(taken.y, d.y) && taken.tsSeconds == d.tsSeconds);
+        XYT_FUZZ_REQUIRE(sameBits(taken.u, d.u) && sameBits(taken.y, d.y) &&
+                         taken.tsSeconds == d.tsSeconds);
     } catch (const InvalidInput& e) {
         XYT_FUZZ_REQUIRE(refused == e.what());
     }
@@ -218,7 +233,8 @@ inline void checkExperimentOptions(const ExperimentTable& t, OptionBytes& o) {
     XYT_FUZZ_REQUIRE_FINITE(d.y);
 }
 
-template <class Read> void checkKeptColumns(const ExperimentTable& full, OptionBytes& o, Read read) {
+template <class Read>
+void checkKeptColumns(const ExperimentTable& full, OptionBytes& o, Read read) {
     const std::vector<std::string> chosen = chosenNames(full, o);
     try {
         const ExperimentTable kept = read(chosen);

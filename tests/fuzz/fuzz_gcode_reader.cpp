@@ -9,10 +9,10 @@
 // xyt::InvalidInput whose message is one line, or the program is consistent: one info per
 // segment, finite geometry within the coordinate bound, lines within the text, at most
 // kMaxGcodeWarnings + 1 warnings. Its profile (at most 20 000 samples) is either refused in one
-// line naming one of the planner's options (with the fixed options, by the sample bound), or ends at the path's length, lasts no less than each
-// option's lower bound (feed_profile.h), and holds a piece on every segment; the reference
-// traced against the path has no contour error beyond round-off; nearest points are no farther
-// than the segment scan says.
+// line naming one of the planner's options (with the fixed options, by the sample bound), or ends
+// at the path's length, lasts no less than each option's lower bound (feed_profile.h), and holds a
+// piece on every segment; the reference traced against the path has no contour error beyond
+// round-off; nearest points are no farther than the segment scan says.
 #include "tests/fuzz/fuzz_support.h"
 
 #include "core/contour/contour_metrics.h"
@@ -90,21 +90,23 @@ void checkProgram(const xyt::GcodeProgram& p, std::size_t textSize) {
     XYT_FUZZ_REQUIRE(p.warnings.size() <= xyt::kMaxGcodeWarnings + 1);
     XYT_FUZZ_REQUIRE(p.lines >= 1 && p.lines <= textSize + 1);
     XYT_FUZZ_REQUIRE_FINITE(p.path.length());
-    const double bound = 4.0 * xyt::kMaxGcodeCoordinateMm; // centres lie within 2e9 mm, arcs 2 radii more
+    const double bound =
+        4.0 * xyt::kMaxGcodeCoordinateMm; // centres lie within 2e9 mm, arcs 2 radii more
     for (std::size_t i = 0; i < p.path.size(); ++i) {
         const auto& s = p.path.segments()[i];
         for (const xyt::Point2 q : {s.start(), s.end(), s.centre()})
             XYT_FUZZ_REQUIRE(std::abs(q.x) <= bound && std::abs(q.y) <= bound);
         XYT_FUZZ_REQUIRE(s.length() > 0.0 && std::isfinite(s.length()));
-        XYT_FUZZ_REQUIRE(p.segments[i].feedMmPerSec > 0.0 && std::isfinite(p.segments[i].feedMmPerSec));
+        XYT_FUZZ_REQUIRE(p.segments[i].feedMmPerSec > 0.0 &&
+                         std::isfinite(p.segments[i].feedMmPerSec));
         XYT_FUZZ_REQUIRE(p.segments[i].line >= 1 && p.segments[i].line <= p.lines);
     }
 }
 
 /// The planner's refusals name one of its options (feed_profile.h).
 bool isPlannerField(const std::string& f) {
-    return f == "feed" || f == "feed_scale" || f == "max_accel" || f == "max_jerk" || f == "corner_angle" ||
-           f == "dt" || f == "rapid_feed";
+    return f == "feed" || f == "feed_scale" || f == "max_accel" || f == "max_jerk" ||
+           f == "corner_angle" || f == "dt" || f == "rapid_feed";
 }
 
 void checkProfile(const xyt::GcodeProgram& program, const PlanOptions& plan) {
@@ -118,7 +120,8 @@ void checkProfile(const xyt::GcodeProgram& program, const PlanOptions& plan) {
         // feeds, the rapids, the acceleration or the jerk need, or the planned one, is longer
         // than the samples at dt hold (each names its option).
         XYT_FUZZ_REQUIRE(isPlannerField(e.field()));
-        XYT_FUZZ_REQUIRE(plan.fuzzed || std::string_view(e.what()).find(" samples at dt ") != std::string_view::npos);
+        XYT_FUZZ_REQUIRE(plan.fuzzed || std::string_view(e.what()).find(" samples at dt ") !=
+                                            std::string_view::npos);
         // The same refusal without the samples: a summary refuses what a run would.
         xyt::FeedProfileOptions unsampled = options;
         unsampled.withSamples = false;
@@ -155,7 +158,8 @@ void checkProfile(const xyt::GcodeProgram& program, const PlanOptions& plan) {
     for (std::size_t i = 0; i < feeds.size(); ++i)
         atFeed += program.path.segments()[i].length() / feeds[i];
     XYT_FUZZ_REQUIRE(profile.totalTimeSeconds >= slack * atFeed);
-    XYT_FUZZ_REQUIRE(profile.totalTimeSeconds >= slack * 2.0 * std::sqrt(length / options.maxAccelMmPerS2));
+    XYT_FUZZ_REQUIRE(profile.totalTimeSeconds >=
+                     slack * 2.0 * std::sqrt(length / options.maxAccelMmPerS2));
     if (options.maxJerkMmPerS3 > 0.0)
         XYT_FUZZ_REQUIRE(profile.totalTimeSeconds >=
                          slack * 4.0 * std::cbrt(length / (2.0 * options.maxJerkMmPerS3)));
@@ -165,7 +169,8 @@ void checkProfile(const xyt::GcodeProgram& program, const PlanOptions& plan) {
     const xyt::FeedProfile summary = xyt::planFeedProfile(program, unsampled);
     XYT_FUZZ_REQUIRE(summary.totalTimeSeconds == profile.totalTimeSeconds && summary.t.empty());
     // The reference itself traced: the contour error is round-off (relative to the path's size).
-    const xyt::ContourErrorResult e = xyt::contourError(program.path, profile.t, profile.x, profile.y);
+    const xyt::ContourErrorResult e =
+        xyt::contourError(program.path, profile.t, profile.x, profile.y);
     XYT_FUZZ_REQUIRE_FINITE(e.maxAbs);
     double extent = 1.0;
     for (std::size_t k = 0; k < profile.x.size(); ++k)
@@ -179,7 +184,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view input(reinterpret_cast<const char*>(data), size);
     const std::size_t nul = input.find('\0');
     const std::string_view text = input.substr(0, nul);
-    PlanOptions plan = planOptions(nul == std::string_view::npos ? std::string_view() : input.substr(nul + 1));
+    PlanOptions plan =
+        planOptions(nul == std::string_view::npos ? std::string_view() : input.substr(nul + 1));
     plan.fuzzed = nul != std::string_view::npos;
     xyt::GcodeProgram program;
     try {
@@ -207,7 +213,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         double scan = INFINITY;
         for (const auto& s : program.path.segments())
             scan = std::min(scan, s.nearest(q).distance);
-        XYT_FUZZ_REQUIRE(std::abs(std::abs(p.signedDistance) - scan) <= 1e-12 * (extent + scan + 100.0));
+        XYT_FUZZ_REQUIRE(std::abs(std::abs(p.signedDistance) - scan) <=
+                         1e-12 * (extent + scan + 100.0));
     }
     return 0;
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// libFuzzer harness: the session file loader (ui/files/session_file.h sessionFromBytes) on arbitrary
-// bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
+// libFuzzer harness: the session file loader (ui/files/session_file.h sessionFromBytes) on
+// arbitrary bytes, as a hand-edited or truncated file holds them. It must never crash; a session it
 // accepts must hold finite numbers and survive a save/load round trip unchanged, and its labels
 // must reach the exports only as text that cannot end a comment or drive a terminal.
 #include "tests/fuzz/fuzz_support.h"
@@ -34,8 +34,8 @@ void requireInertLabel(const std::string& label) {
     const std::string c = xyt::commentText(label, xyt::CommentSyntax::C);
     XYT_FUZZ_REQUIRE(c.find("*/") == std::string::npos && c.find("/*") == std::string::npos &&
                      c.find("??") == std::string::npos);
-    for (const std::string& text : {c, xyt::commentText(label, xyt::CommentSyntax::Octave),
-                                    xyt::terminalText(label)})
+    for (const std::string& text :
+         {c, xyt::commentText(label, xyt::CommentSyntax::Octave), xyt::terminalText(label)})
         for (const char ch : text)
             XYT_FUZZ_REQUIRE(static_cast<unsigned char>(ch) >= 0x20 && ch != 0x7f);
 }
@@ -61,7 +61,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // The digital implementation: within the ranges the sampled-data loop accepts.
     XYT_FUZZ_REQUIRE_FINITE(s.implementation.encoderResolutionMm);
     XYT_FUZZ_REQUIRE_FINITE(s.implementation.trackingTimeSeconds);
-    XYT_FUZZ_REQUIRE(s.implementation.encoderResolutionMm >= 0.0 && s.implementation.trackingTimeSeconds >= 0.0);
+    XYT_FUZZ_REQUIRE(s.implementation.encoderResolutionMm >= 0.0 &&
+                     s.implementation.trackingTimeSeconds >= 0.0);
     XYT_FUZZ_REQUIRE(s.implementation.delaySamples >= 0 && s.implementation.delaySamples <= 100);
     XYT_FUZZ_REQUIRE(s.implementation.dacBits >= 0 && s.implementation.dacBits <= 32);
     for (const auto& snapshot : s.snapshots)

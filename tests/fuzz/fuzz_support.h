@@ -47,9 +47,7 @@ class FuzzInput {
 public:
     FuzzInput(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
 
-    std::uint8_t byte(std::uint8_t fallback = 0) {
-        return pos_ < size_ ? data_[pos_++] : fallback;
-    }
+    std::uint8_t byte(std::uint8_t fallback = 0) { return pos_ < size_ ? data_[pos_++] : fallback; }
     /// Two bytes, little-endian (read in sequence: the operands of | are unsequenced).
     unsigned word() {
         const unsigned low = byte();
@@ -99,15 +97,21 @@ private:
     std::abort();
 }
 
-inline bool finite(double v) { return std::isfinite(v); }
-inline bool finite(std::complex<double> v) { return std::isfinite(v.real()) && std::isfinite(v.imag()); }
+inline bool finite(double v) {
+    return std::isfinite(v);
+}
+inline bool finite(std::complex<double> v) {
+    return std::isfinite(v.real()) && std::isfinite(v.imag());
+}
 inline bool finite(const Polynomial& p) {
     for (double c : p.ascending())
         if (!std::isfinite(c))
             return false;
     return true;
 }
-inline bool finite(const TransferFunction& tf) { return finite(tf.num()) && finite(tf.den()); }
+inline bool finite(const TransferFunction& tf) {
+    return finite(tf.num()) && finite(tf.den());
+}
 template <class T> bool finite(const std::vector<T>& values) {
     for (const T& v : values)
         if (!finite(v))

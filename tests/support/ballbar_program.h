@@ -40,7 +40,8 @@ inline constexpr const char* kBallbarArcsProgram = "G21 G90 G17\n"
 /// The circles' segments [begin, end) in the path and the lines of their first arcs.
 inline constexpr std::size_t kBallbarArcsClockwiseBegin = 2, kBallbarArcsClockwiseEnd = 4,
                              kBallbarArcsClockwiseLine = 4;
-inline constexpr std::size_t kBallbarArcsCounterClockwiseBegin = 6, kBallbarArcsCounterClockwiseEnd = 10,
+inline constexpr std::size_t kBallbarArcsCounterClockwiseBegin = 6,
+                             kBallbarArcsCounterClockwiseEnd = 10,
                              kBallbarArcsCounterClockwiseLine = 8;
 
 } // namespace xyt::test

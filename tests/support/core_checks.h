@@ -33,7 +33,8 @@ template <class F> QString invalidInputMessage(F&& f) {
 }
 
 /// Same degree and every coefficient within relTol of the largest expected coefficient.
-inline void comparePolynomials(const Polynomial& actual, const Polynomial& expected, double relTol) {
+inline void comparePolynomials(const Polynomial& actual, const Polynomial& expected,
+                               double relTol) {
     QCOMPARE(actual.degree(), expected.degree());
     const double scale = expected.maxAbsCoefficient();
     for (int i = 0; i <= expected.degree(); ++i)

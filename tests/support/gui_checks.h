@@ -5,9 +5,10 @@
 #include "core/analysis/parameter_locus.h"
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
-#include "core/session/session_evaluation.h"
 #include "core/session/axis_frequency.h"
+#include "core/session/session_evaluation.h"
 #include "core/simulation/step_view.h"
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/nyquist_plot.h"
@@ -17,7 +18,6 @@
 #include "ui/plots/step_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/tolerance.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -47,8 +47,7 @@ namespace xyt::test {
 class DialogAnswerer {
 public:
     enum class Mode { Reject, Accept };
-    explicit DialogAnswerer(Mode mode = Mode::Reject,
-                            std::function<void(QWidget*)> onDialog = {})
+    explicit DialogAnswerer(Mode mode = Mode::Reject, std::function<void(QWidget*)> onDialog = {})
         : mode_(mode), onDialog_(std::move(onDialog)) {
         QObject::connect(&timer_, &QTimer::timeout, [this] { tick(); });
         timer_.start(5);
@@ -97,8 +96,7 @@ private:
 };
 
 /// Types @p text into a field as a user would (focus, select all, type, Return).
-template <typename Field>
-void typeInto(Field* field, const QString& text) {
+template <typename Field> void typeInto(Field* field, const QString& text) {
     field->setFocus();
     field->selectAll();
     QTest::keyClicks(field, text);
@@ -144,10 +142,11 @@ inline QAction* findMenuAction(QMenuBar* bar, const QString& path) {
     return nullptr;
 }
 
-inline bool sameComplexSet(std::vector<std::complex<double>> a, QSharedPointer<QCPGraphDataContainer> data,
-                           double relTol) {
-    a.erase(std::remove_if(a.begin(), a.end(),
-                           [](const auto& p) { return !std::isfinite(p.real()) || !std::isfinite(p.imag()); }),
+inline bool sameComplexSet(std::vector<std::complex<double>> a,
+                           QSharedPointer<QCPGraphDataContainer> data, double relTol) {
+    a.erase(std::remove_if(
+                a.begin(), a.end(),
+                [](const auto& p) { return !std::isfinite(p.real()) || !std::isfinite(p.imag()); }),
             a.end());
     if (static_cast<int>(a.size()) != data->size())
         return false;
@@ -181,7 +180,8 @@ inline bool sameSignal(QSharedPointer<QCPGraphDataContainer> data, const std::ve
         std::size_t k = 0;
         double drawnMax = -INFINITY, drawnMin = INFINITY;
         for (auto it = data->constBegin(); it != data->constEnd(); ++it) {
-            const auto found = std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(k), t.end(), it->key);
+            const auto found =
+                std::lower_bound(t.begin() + static_cast<std::ptrdiff_t>(k), t.end(), it->key);
             if (found == t.end() || *found != it->key)
                 return false;
             k = static_cast<std::size_t>(found - t.begin());
@@ -200,7 +200,8 @@ inline bool sameSignal(QSharedPointer<QCPGraphDataContainer> data, const std::ve
             runMin = std::min(runMin, v);
         }
         return (data->constEnd() - 1)->key == t.back() &&
-               (!allFinite || (data->constBegin()->key == t.front() && drawnMax == runMax && drawnMin == runMin));
+               (!allFinite ||
+                (data->constBegin()->key == t.front() && drawnMax == runMax && drawnMin == runMin));
     }
     if (data->size() != static_cast<int>(t.size()))
         return false;
@@ -216,9 +217,10 @@ inline bool sameSignal(QSharedPointer<QCPGraphDataContainer> data, const std::ve
 /**
  * Shows each plot tab of @p window in turn and checks that its data equal what the core computes
  * for the presenter's current (live) session, computed afresh here: the run's signals, the step
- * view's curves and settling marker, the root locus branches and markers, the pole-zero sets, the parameter locus, or "no result" for an
- * axis without a design. Returns "" when everything matches, else what differs. Runs short
- * enough for the exact comparison (<= 16 384 samples: no decimation) are assumed.
+ * view's curves and settling marker, the root locus branches and markers, the pole-zero sets, the
+ * parameter locus, or "no result" for an axis without a design. Returns "" when everything matches,
+ * else what differs. Runs short enough for the exact comparison (<= 16 384 samples: no decimation)
+ * are assumed.
  */
 inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session) {
     const int axis = session->currentAxis();
@@ -249,9 +251,9 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
     auto* step = window->stepPlot();
     if (e.ok && e.step.stable) {
         const bool pp = e.pp && e.zpetc;
-        const StepView expected = stepView(e.closedLoop(), e.step, ui::specificationEnvelope(session->session().spec),
-                                           pp ? &*e.pp : nullptr, pp ? &*e.zpetc : nullptr,
-                                           pp && settings.pp.zpetcEnabled);
+        const StepView expected = stepView(
+            e.closedLoop(), e.step, ui::specificationEnvelope(session->session().spec),
+            pp ? &*e.pp : nullptr, pp ? &*e.zpetc : nullptr, pp && settings.pp.zpetcEnabled);
         if (!step->hasResult())
             problems << "step plot: no response for a stable design";
         for (const StepViewCurve& c : expected.curves) {
@@ -260,7 +262,8 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
             for (double& v : t)
                 v -= c.curve.stepAtSeconds;
             if (!g || !sameSignal(g->data(), t, c.curve.y))
-                problems << QStringLiteral("step plot: curve %1 differs from the core's").arg(static_cast<int>(c.kind));
+                problems << QStringLiteral("step plot: curve %1 differs from the core's")
+                                .arg(static_cast<int>(c.kind));
         }
         if (e.step.settlingTimeSeconds > 0.0 &&
             (step->settlingMarker()->data()->isEmpty() ||
@@ -281,8 +284,10 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
         if (e.gt)
             expected = rootLocus(e.gt->openLoop);
         else
-            expected = rootLocus(TransferFunction::fromZInverse(e.pp->b * e.pp->g, e.pp->a * e.pp->f, e.pp->tsSeconds));
-        if (!rl->hasResult() || rl->branchCurveCount() != static_cast<int>(expected.branches.size()))
+            expected = rootLocus(TransferFunction::fromZInverse(
+                e.pp->b * e.pp->g, e.pp->a * e.pp->f, e.pp->tsSeconds));
+        if (!rl->hasResult() ||
+            rl->branchCurveCount() != static_cast<int>(expected.branches.size()))
             problems << QStringLiteral("root locus: %1 branches drawn, the core has %2")
                             .arg(rl->hasResult() ? rl->branchCurveCount() : -1)
                             .arg(expected.branches.size());
@@ -300,7 +305,8 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
             }
         if (!sameComplexSet(clPoles, rl->currentPolesGraph()->data(), 1e-12))
             problems << "root locus: the design's closed-loop poles differ";
-    } else if (rl->hasResult() || rl->branchCurveCount() != 0 || !rl->currentPolesGraph()->data()->isEmpty()) {
+    } else if (rl->hasResult() || rl->branchCurveCount() != 0 ||
+               !rl->currentPolesGraph()->data()->isEmpty()) {
         problems << "root locus: shows a locus for an axis without a design";
     }
 
@@ -319,7 +325,8 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
             QCPGraph* zeros = pz->zerosGraph(QString::fromStdString(set.name));
             if (!poles || !zeros || !sameComplexSet(set.poles, poles->data(), 1e-12) ||
                 !sameComplexSet(set.zeros, zeros->data(), 1e-12))
-                problems << QStringLiteral("pole-zero map: set %1 differs").arg(QString::fromStdString(set.name));
+                problems << QStringLiteral("pole-zero map: set %1 differs")
+                                .arg(QString::fromStdString(set.name));
         }
     } else if (pz->hasResult()) {
         problems << "pole-zero map: shows sets for an axis without a design";
@@ -334,13 +341,15 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
         sweep.from = gt.omegaNRadPerSec / 10.0;
         sweep.to = gt.omegaNRadPerSec * 10.0;
         sweep.count = 80;
-        const ParameterLocus expected = gtParameterLocus(gt.plant, GtSweptParameter::OmegaN, sweep, gt.kp);
+        const ParameterLocus expected =
+            gtParameterLocus(gt.plant, GtSweptParameter::OmegaN, sweep, gt.kp);
         if (!pl->hasResult() || pl->branchCount() != static_cast<int>(expected.branches.size()))
             problems << "parameter locus: branch count differs from the core's";
         if (!sameComplexSet(clPoles, pl->currentGraph()->data(), 1e-12))
             problems << "parameter locus: the current poles differ";
     } else if (pl->hasResult() || pl->branchCount() != 0) {
-        problems << "parameter locus: shows a sweep for a pole-placement axis or an axis without a design";
+        problems << "parameter locus: shows a sweep for a pole-placement axis or an axis without a "
+                    "design";
     }
     // Frequency domain: the Bode curve of L and the Nyquist counts are a fresh analysis's.
     upper->setCurrentWidget(window->bodePlot());
@@ -352,7 +361,8 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
         bool same = bode->hasResult() && mag && mag->dataCount() == static_cast<int>(w.size());
         for (int i = 0; same && i < mag->dataCount(); ++i)
             same = mag->data()->at(i)->key == w[static_cast<std::size_t>(i)] &&
-                   mag->data()->at(i)->value == f.responses.openLoop.magnitudeDb[static_cast<std::size_t>(i)];
+                   mag->data()->at(i)->value ==
+                       f.responses.openLoop.magnitudeDb[static_cast<std::size_t>(i)];
         if (!same)
             problems << "Bode: |L| differs from the core's response";
     } else if (bode->hasResult()) {

@@ -53,8 +53,7 @@ inline std::vector<double> plus(std::vector<double> a, const std::vector<double>
 }
 
 /// y = num/den u (+ the noise already filtered by the caller), as IoData at tsSeconds.
-inline IoData ioData(const std::vector<double>& u, const std::vector<double>& y,
-                     double tsSeconds) {
+inline IoData ioData(const std::vector<double>& u, const std::vector<double>& y, double tsSeconds) {
     IoData d;
     d.u = u;
     d.y = y;
@@ -94,7 +93,8 @@ inline QString spreadMismatch(const std::vector<std::vector<double>>& est,
         if (!std::isfinite(spread) || !std::isfinite(meanSd) || !(meanSd > 0.0) ||
             std::abs(spread - meanSd) > 0.25 * meanSd ||
             std::abs(mean - truth[i]) > 4.0 * spread / std::sqrt(n) + 0.1 * spread)
-            return QStringLiteral("parameter %1: mean %2 (truth %3), spread %4, mean reported SD %5")
+            return QStringLiteral(
+                       "parameter %1: mean %2 (truth %3), spread %4, mean reported SD %5")
                 .arg(i)
                 .arg(mean, 0, 'g', 8)
                 .arg(truth[i], 0, 'g', 8)
@@ -107,8 +107,7 @@ inline QString spreadMismatch(const std::vector<std::vector<double>>& est,
 /// Runs @p fit for seeds 0 .. count-1 and collects its parameters and standard deviations.
 template <typename Fit>
 void collectOverSeeds(std::size_t count, std::size_t parameters, Fit fit,
-                      std::vector<std::vector<double>>& est,
-                      std::vector<std::vector<double>>& sd) {
+                      std::vector<std::vector<double>>& est, std::vector<std::vector<double>>& sd) {
     est.assign(parameters, {});
     sd.assign(parameters, {});
     std::vector<double> p, s;

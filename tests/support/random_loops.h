@@ -9,8 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <complex>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -47,9 +47,8 @@ inline TransferFunction randomLoop(std::mt19937& rng, const RandomLoopOptions& o
         poles.push_back(std::conj(p));
     }
     if (u(rng) < o.unstablePoleChance)
-        poles.emplace_back(o.discrete ? unif(1.05, 1.6) * (u(rng) < 0.8 ? 1.0 : -1.0)
-                                      : unif(0.1, 2.0),
-                           0.0);
+        poles.emplace_back(
+            o.discrete ? unif(1.05, 1.6) * (u(rng) < 0.8 ? 1.0 : -1.0) : unif(0.1, 2.0), 0.0);
     const int nz = static_cast<int>(unif(0.0, static_cast<double>(poles.size()) - 1e-9));
     for (int i = 0; i < nz; ++i)
         zeros.emplace_back(o.discrete ? unif(-2.0, 0.9) : unif(-10.0, 5.0), 0.0);

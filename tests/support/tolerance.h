@@ -36,7 +36,7 @@ inline bool nearComplex(std::complex<double> actual, std::complex<double> expect
 } // namespace xyt::test
 
 /// QVERIFY2 with a message that shows both numbers and the tolerance.
-#define XYT_COMPARE_NEAR(actual, expected, relTol, absTol)                                        \
+#define XYT_COMPARE_NEAR(actual, expected, relTol, absTol)                                         \
     do {                                                                                           \
         const double xytActual_ = (actual);                                                        \
         const double xytExpected_ = (expected);                                                    \

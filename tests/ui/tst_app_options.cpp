@@ -19,7 +19,8 @@ void TstAppOptions::optionsWithoutADisplay_data() {
     QTest::newRow("--help") << QStringList{"--help"} << 0 << "--screenshot <FILE>";
     QTest::newRow("-h") << QStringList{"-h"} << 0 << "Usage:";
     QTest::newRow("--version") << QStringList{"--version"} << 0 << PROJECT_VERSION_STRING;
-    QTest::newRow("mistyped option") << QStringList{"--screnshot", "a.png"} << 2 << "Unknown option 'screnshot'";
+    QTest::newRow("mistyped option")
+        << QStringList{"--screnshot", "a.png"} << 2 << "Unknown option 'screnshot'";
     QTest::newRow("no display, no screenshot") << QStringList{} << 2 << "no display";
 }
 

@@ -1,28 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // GUI tests of the design-space view: drive the real buttons and the plot offscreen; compare the
 // heat map with the core's sweepDesignSpace called directly on the same problem.
-#include "ui/plots/design_space_plot.h"
-#include "core/study/sweep_diagnosis.h"
-#include "ui/design_space_view.h"
-#include "ui/session/tuning_session.h"
 #include "core/session/design_study.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
+#include "core/study/sweep_diagnosis.h"
 #include "tests/support/tolerance.h"
+#include "ui/design_space_view.h"
+#include "ui/plots/design_space_plot.h"
+#include "ui/session/tuning_session.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
-#include <QToolButton>
 #include <QSignalSpy>
-#include <QWheelEvent>
-#include <QApplication>
+#include <QSpinBox>
 #include <QTest>
+#include <QToolButton>
+#include <QWheelEvent>
 
 #include <bit>
 #include <cmath>
@@ -43,7 +43,8 @@ constexpr int kStudyTimeoutMs = 120000;
 DesignProblem expectedProblem(const Session& s, int axis, double maxOvershootPct) {
     DesignProblem p;
     p.plant = s.axes[static_cast<std::size_t>(axis)].gt.plant;
-    p.modelUnitsPerPositionUnit = s.axes[static_cast<std::size_t>(axis)].gt.modelUnitsPerPositionUnit;
+    p.modelUnitsPerPositionUnit =
+        s.axes[static_cast<std::size_t>(axis)].gt.modelUnitsPerPositionUnit;
     p.dtSeconds = s.trajectory.dtSeconds;
     // A cubic with the automatic duration is studied over its move plus twice the allowed
     // settle time, and judged on its move and settle (design_sweep.h, moveSweepDurationSeconds).
@@ -51,8 +52,10 @@ DesignProblem expectedProblem(const Session& s, int axis, double maxOvershootPct
     p.spec = s.spec;
     p.spec.umaxVolts = s.umaxVolts;
     p.spec.maxOvershootPct = maxOvershootPct;
-    p.reference = sampled(axisReference(t, axis),
-                          sampleTimes(moveSweepDurationSeconds(t.tfSeconds, p.spec.maxSettleTimeSeconds), t.dtSeconds));
+    p.reference =
+        sampled(axisReference(t, axis),
+                sampleTimes(moveSweepDurationSeconds(t.tfSeconds, p.spec.maxSettleTimeSeconds),
+                            t.dtSeconds));
     p.move = PointToPointMove{t.x0, t.xf, t.tfSeconds};
     return p;
 }
@@ -130,8 +133,8 @@ void TstDesignSpaceView::runAndWait() {
 }
 
 void TstDesignSpaceView::defaultsFollowTheIssue() {
-    // The defaults: wn 0.2-20 rad/s, kp 3-3000, 60 x 60, log grid; the paper's specification with the
-    // session's actuator limit (Session holds no specification, so the overshoot limit is 0 %).
+    // The defaults: wn 0.2-20 rad/s, kp 3-3000, 60 x 60, log grid; the paper's specification with
+    // the session's actuator limit (Session holds no specification, so the overshoot limit is 0 %).
     QCOMPARE(view_->wnMinBox()->value(), 0.2);
     QCOMPARE(view_->wnMaxBox()->value(), 20.0);
     QCOMPARE(view_->kpMinBox()->value(), 3.0);
@@ -191,7 +194,8 @@ void TstDesignSpaceView::heatMapHoldsTheCoreValues() {
             const int expectedStatus = !p.stable || !p.metricsFinite ? DesignSpacePlot::Failed
                                        : p.feasible                  ? DesignSpacePlot::Feasible
                                                                      : DesignSpacePlot::Infeasible;
-            QCOMPARE(static_cast<int>(status->cell(static_cast<int>(i), static_cast<int>(j))), expectedStatus);
+            QCOMPARE(static_cast<int>(status->cell(static_cast<int>(i), static_cast<int>(j))),
+                     expectedStatus);
         }
     // The star sits on the core's best grid point, the diamond on its refined best.
     const DesignPoint& best = expected.points[*expected.bestIndex];
@@ -200,8 +204,10 @@ void TstDesignSpaceView::heatMapHoldsTheCoreValues() {
     XYT_COMPARE_NEAR(view_->plot()->bestMarker()->data()->at(0)->value, best.kp, 0.0, 0.0);
     QVERIFY(expected.refined.has_value());
     QCOMPARE(view_->plot()->refinedMarker()->dataCount(), 1);
-    XYT_COMPARE_NEAR(view_->plot()->refinedMarker()->data()->at(0)->key, expected.refined->point.wn, 0.0, 0.0);
-    XYT_COMPARE_NEAR(view_->plot()->refinedMarker()->data()->at(0)->value, expected.refined->point.kp, 0.0, 0.0);
+    XYT_COMPARE_NEAR(view_->plot()->refinedMarker()->data()->at(0)->key, expected.refined->point.wn,
+                     0.0, 0.0);
+    XYT_COMPARE_NEAR(view_->plot()->refinedMarker()->data()->at(0)->value,
+                     expected.refined->point.kp, 0.0, 0.0);
     QVERIFY(view_->plot()->outlineCount() >= 1);
     QVERIFY2(view_->statusText().contains("feasible"), qPrintable(view_->statusText()));
 
@@ -211,7 +217,8 @@ void TstDesignSpaceView::heatMapHoldsTheCoreValues() {
         for (std::size_t j = 0; j < 8; ++j) {
             const double value = criterionValue(expected.at(i, j), SweepCriterion::MaxU);
             if (std::isfinite(value))
-                XYT_COMPARE_NEAR(map->cell(static_cast<int>(i), static_cast<int>(j)), value, 0.0, 0.0);
+                XYT_COMPARE_NEAR(map->cell(static_cast<int>(i), static_cast<int>(j)), value, 0.0,
+                                 0.0);
         }
 }
 
@@ -240,14 +247,20 @@ void TstDesignSpaceView::mapCellsLineUpWithTheLogGrid() {
             const double v = map->data()->cell(i, j);
             if (std::isnan(v))
                 continue;
-            const QPoint px = plot->pixelOfCell(static_cast<std::size_t>(i), static_cast<std::size_t>(j)).toPoint();
+            const QPoint px =
+                plot->pixelOfCell(static_cast<std::size_t>(i), static_cast<std::size_t>(j))
+                    .toPoint();
             const QColor want = QColor::fromRgba(map->gradient().color(v, map->dataRange(), true));
             const QColor got = image.pixelColor(px);
             // One unit per channel: the gradient's 256 levels are looked up identically, the
             // slack only covers the image's colour conversion.
-            QVERIFY2(std::abs(got.red() - want.red()) <= 1 && std::abs(got.green() - want.green()) <= 1 &&
+            QVERIFY2(std::abs(got.red() - want.red()) <= 1 &&
+                         std::abs(got.green() - want.green()) <= 1 &&
                          std::abs(got.blue() - want.blue()) <= 1,
-                     qPrintable(QString("cell %1,%2: got %3 want %4").arg(i).arg(j).arg(got.name(), want.name())));
+                     qPrintable(QString("cell %1,%2: got %3 want %4")
+                                    .arg(i)
+                                    .arg(j)
+                                    .arg(got.name(), want.name())));
             // And the cell lookup used for hover and click agrees.
             const auto cell = plot->cellAtPixel(px);
             QVERIFY(cell.has_value());
@@ -281,9 +294,11 @@ void TstDesignSpaceView::hoverShowsTheFiguresAndFailures() {
     runAndWait();
     const DesignSweepResult& r = *view_->result();
     QTest::mouseMove(view_->plot(), view_->plot()->pixelOfCell(4, 1).toPoint());
-    QTRY_VERIFY(view_->readoutText().contains(QString("ωn = %1").arg(QString::number(r.wnValues[4], 'g', 4))));
+    QTRY_VERIFY(view_->readoutText().contains(
+        QString("ωn = %1").arg(QString::number(r.wnValues[4], 'g', 4))));
     const QString text = view_->readoutText();
-    QVERIFY2(text.contains(QString("kp = %1").arg(QString::number(r.kpValues[1], 'g', 4))), qPrintable(text));
+    QVERIFY2(text.contains(QString("kp = %1").arg(QString::number(r.kpValues[1], 'g', 4))),
+             qPrintable(text));
     // With a 0 % limit no design is feasible (specification.h: G_R is type 2).
     QVERIFY2(text.contains("feasible: no") && text.contains("overshoot"), qPrintable(text));
 }
@@ -306,7 +321,8 @@ void TstDesignSpaceView::bestOnTheEdgeIsWarned() {
     spec.umaxVolts = session_->session().umaxVolts;
     const SweepDiagnosis d = diagnoseSweep(r, spec);
     QVERIFY(d.kpAtUpperEdge);
-    QVERIFY2(view_->statusText().contains("upper end of the kp range"), qPrintable(view_->statusText()));
+    QVERIFY2(view_->statusText().contains("upper end of the kp range"),
+             qPrintable(view_->statusText()));
 }
 
 void TstDesignSpaceView::emptyMapBeforeTheFirstRun() {
@@ -332,9 +348,11 @@ void TstDesignSpaceView::controlsStayInReachAndStill() {
     view_->resize(600, 330);
     QTest::qWait(50);
     const QRect visible = view_->rect();
-    for (QWidget* w : {static_cast<QWidget*>(view_->runButton()), static_cast<QWidget*>(view_->cancelButton()),
-                       static_cast<QWidget*>(view_->progressBar())})
-        QVERIFY2(visible.contains(QRect(w->mapTo(view_.get(), QPoint(0, 0)), w->size())), w->metaObject()->className());
+    for (QWidget* w :
+         {static_cast<QWidget*>(view_->runButton()), static_cast<QWidget*>(view_->cancelButton()),
+          static_cast<QWidget*>(view_->progressBar())})
+        QVERIFY2(visible.contains(QRect(w->mapTo(view_.get(), QPoint(0, 0)), w->size())),
+                 w->metaObject()->className());
     const QPoint cancelBefore = view_->cancelButton()->mapTo(view_.get(), QPoint(0, 0));
     const QRect mapBefore = view_->plot()->geometry();
     setSmallGrid(6, 0.0); // no feasible design: the longest status there is
@@ -346,7 +364,8 @@ void TstDesignSpaceView::controlsStayInReachAndStill() {
     auto* strip = qobject_cast<QScrollArea*>(view_->statusLabel()->parentWidget()->parentWidget());
     QVERIFY(strip);
     QVERIFY(strip->verticalScrollBar()->maximum() > 0);
-    QVERIFY(view_->statusLabel()->height() >= view_->statusLabel()->heightForWidth(view_->statusLabel()->width()));
+    QVERIFY(view_->statusLabel()->height() >=
+            view_->statusLabel()->heightForWidth(view_->statusLabel()->width()));
 }
 
 void TstDesignSpaceView::narrowViewGivesTheMapTheWidth() {
@@ -356,7 +375,8 @@ void TstDesignSpaceView::narrowViewGivesTheMapTheWidth() {
     QTest::qWait(50);
     QVERIFY(!view_->settingsButton()->isChecked());
     QVERIFY(!view_->controlPanel()->isVisible());
-    QVERIFY2(view_->plot()->width() >= view_->width() - 40, qPrintable(QString::number(view_->plot()->width())));
+    QVERIFY2(view_->plot()->width() >= view_->width() - 40,
+             qPrintable(QString::number(view_->plot()->width())));
     // Asked for, they are shown, and stay so when the view is resized (the user's choice).
     QTest::mouseClick(view_->settingsButton(), Qt::LeftButton);
     QVERIFY(view_->controlPanel()->isVisible());
@@ -385,8 +405,8 @@ void TstDesignSpaceView::wheelScrollsThePanelNotTheField() {
     const double before = box->value();
     const int scrolled = panel->verticalScrollBar()->value();
     const QPoint at = box->rect().center();
-    QWheelEvent down(at, box->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
-                     Qt::NoScrollPhase, false);
+    QWheelEvent down(at, box->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton,
+                     Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(box, &down);
     QCOMPARE(box->value(), before);                          // the field did not change
     QVERIFY(panel->verticalScrollBar()->value() > scrolled); // the panel scrolled
@@ -523,7 +543,6 @@ void TstDesignSpaceView::currentDesignMarkerFollowsTheSession() {
     XYT_COMPARE_NEAR(view_->plot()->currentMarker()->data()->at(0)->key, 3.5, 0.0, 0.0);
 }
 
-
 namespace {
 using Kind = DesignSpaceView::StudyKind;
 
@@ -563,7 +582,8 @@ void TstDesignSpaceView::liveMapPreviewsThenStudiesInFull() {
     QVERIFY(!view_->resultIsPreview());
     QCOMPARE(view_->studiedProblem()->dtSeconds, s.trajectory.dtSeconds);
     QCOMPARE(view_->studiedProblem()->stepSamples, 500);
-    QCOMPARE(view_->studiedProblem()->reference.size(), expectedProblem(s, 0, 2.0).reference.size());
+    QCOMPARE(view_->studiedProblem()->reference.size(),
+             expectedProblem(s, 0, 2.0).reference.size());
     QVERIFY(view_->statusText().startsWith("Done"));
     // Nothing more: the map is up to date.
     QTest::qWait(DesignSpaceView::kLiveRestMs + 200);
@@ -601,7 +621,8 @@ void TstDesignSpaceView::liveMapFollowsPlantTrajectoryAndLimits() {
     spec.maxSettleTimeSeconds = 50.0; // the run lasts tf + 2 x it
     session_->setSpecification(spec);
     expectRestudy("settle limit");
-    QCOMPARE(view_->studiedProblem()->reference.size(), std::size_t(std::floor((60.0 + 100.0) / 0.01 + 1e-9)) + 1);
+    QCOMPARE(view_->studiedProblem()->reference.size(),
+             std::size_t(std::floor((60.0 + 100.0) / 0.01 + 1e-9)) + 1);
     view_->wnCountBox()->setValue(4); // a new grid
     expectRestudy("grid");
     QCOMPARE(view_->result()->wnValues.size(), std::size_t(4));
@@ -675,11 +696,15 @@ void TstDesignSpaceView::outlineEnclosesTheFeasibleCells_data() {
     QTest::addColumn<std::vector<std::uint8_t>>("mask");
     QTest::addColumn<int>("loops");
     // Rows are wn, columns kp (DesignSweepResult indexing).
-    QTest::newRow("one cell: one square") << 3 << 3 << std::vector<std::uint8_t>{0, 0, 0, 0, 1, 0, 0, 0, 0} << 1;
-    QTest::newRow("all feasible: the grid's border") << 2 << 3 << std::vector<std::uint8_t>(6, 1) << 1;
-    QTest::newRow("ring: outer and inner loop") << 3 << 3 << std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1} << 2;
+    QTest::newRow("one cell: one square")
+        << 3 << 3 << std::vector<std::uint8_t>{0, 0, 0, 0, 1, 0, 0, 0, 0} << 1;
+    QTest::newRow("all feasible: the grid's border")
+        << 2 << 3 << std::vector<std::uint8_t>(6, 1) << 1;
+    QTest::newRow("ring: outer and inner loop")
+        << 3 << 3 << std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1} << 2;
     QTest::newRow("two apart") << 1 << 3 << std::vector<std::uint8_t>{1, 0, 1} << 2;
-    QTest::newRow("diagonal pair touching at a corner") << 2 << 2 << std::vector<std::uint8_t>{1, 0, 0, 1} << 2;
+    QTest::newRow("diagonal pair touching at a corner")
+        << 2 << 2 << std::vector<std::uint8_t>{1, 0, 0, 1} << 2;
     QTest::newRow("none") << 2 << 2 << std::vector<std::uint8_t>(4, 0) << 0;
 }
 
@@ -689,7 +714,8 @@ void TstDesignSpaceView::outlineEnclosesTheFeasibleCells() {
     QFETCH(std::vector<std::uint8_t>, mask);
     QFETCH(int, loops);
     const auto feasible = [&](int a, int b) {
-        return a >= 0 && b >= 0 && a < wnCount && b < kpCount && mask[static_cast<std::size_t>(a * kpCount + b)];
+        return a >= 0 && b >= 0 && a < wnCount && b < kpCount &&
+               mask[static_cast<std::size_t>(a * kpCount + b)];
     };
     // Invariant: the outline's unit edges are exactly the sides between a feasible cell and a
     // non-feasible cell or the outside, each once, and every loop is closed.
@@ -697,7 +723,8 @@ void TstDesignSpaceView::outlineEnclosesTheFeasibleCells() {
     for (int a = 0; a < wnCount; ++a)
         for (int b = 0; b < kpCount; ++b)
             if (feasible(a, b))
-                perimeter += !feasible(a - 1, b) + !feasible(a + 1, b) + !feasible(a, b - 1) + !feasible(a, b + 1);
+                perimeter += !feasible(a - 1, b) + !feasible(a + 1, b) + !feasible(a, b - 1) +
+                             !feasible(a, b + 1);
     const auto outline = feasibleOutline(mask, wnCount, kpCount);
     QCOMPARE(static_cast<int>(outline.size()), loops);
     std::set<std::pair<std::pair<int, int>, std::pair<int, int>>> seen;
@@ -713,7 +740,8 @@ void TstDesignSpaceView::outlineEnclosesTheFeasibleCells() {
             const int cellA = da == 1 || db == -1 ? a0 : a0 - 1;
             const int cellB = da == 1 || db == 1 ? b0 : b0 - 1;
             QVERIFY2(feasible(cellA, cellB), qPrintable(QString("edge %1 of a loop").arg(k)));
-            QVERIFY(seen.insert({{loop[k].iWn, loop[k].iKp}, {loop[k + 1].iWn, loop[k + 1].iKp}}).second);
+            QVERIFY(seen.insert({{loop[k].iWn, loop[k].iKp}, {loop[k + 1].iWn, loop[k + 1].iKp}})
+                        .second);
             ++edges;
         }
     }

@@ -4,6 +4,7 @@
 // design's), the pole-zero map shows its z-plane poles, and the implementation fields edit the
 // session with field-level errors. Assertions on the presenter's values and the plots' data;
 // the expected values are the core's (AxisEvaluation::digital).
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
 #include "ui/panels/implementation_editor.h"
 #include "ui/panels/metrics_panel.h"
@@ -11,7 +12,6 @@
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/tolerance.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -86,8 +86,10 @@ void TstDigitalViews::timePlotOverlaysTheDigitalRun() {
     // The command is the one the plant received: DAC levels, held between samples.
     QCOMPARE(plot->digitalControlGraph()->lineStyle(), QCPGraph::lsStepLeft);
     const double lsb = 2.0 * 2.5 / 1024.0;
-    for (auto it = plot->digitalControlGraph()->data()->constBegin(); it != plot->digitalControlGraph()->data()->constEnd(); ++it)
-        QVERIFY2(std::abs(it->value / lsb - std::round(it->value / lsb)) < 1e-9, qPrintable(QString::number(it->value)));
+    for (auto it = plot->digitalControlGraph()->data()->constBegin();
+         it != plot->digitalControlGraph()->data()->constEnd(); ++it)
+        QVERIFY2(std::abs(it->value / lsb - std::round(it->value / lsb)) < 1e-9,
+                 qPrintable(QString::number(it->value)));
     QVERIFY(plot->positionLegend()->hasItemWithPlottable(plot->digitalOutputGraph()));
 }
 
@@ -109,10 +111,15 @@ void TstDigitalViews::metricsShowTheDigitalFigures() {
     QCOMPARE(table->item(MetricsPanel::DigitalGroup, 0)->text(), QString("Digital implementation"));
     for (int c = 0; c < 2; ++c) {
         const AxisEvaluation& e = session_->axisEvaluation(c);
-        QCOMPARE(table->item(MetricsPanel::DigitalRmse, c)->text(), displayNumber(e.digital->metrics.rmse));
-        QCOMPARE(table->item(MetricsPanel::DigitalMaxError, c)->text(), displayNumber(e.digital->metrics.maxAbsError));
-        QCOMPARE(table->item(MetricsPanel::DigitalDamping, c)->text(), displayNumber(e.digital->minDamping, 3));
-        QVERIFY(table->item(MetricsPanel::DigitalRmse, c)->toolTip().startsWith("design " + displayNumber(e.metrics.rmse)));
+        QCOMPARE(table->item(MetricsPanel::DigitalRmse, c)->text(),
+                 displayNumber(e.digital->metrics.rmse));
+        QCOMPARE(table->item(MetricsPanel::DigitalMaxError, c)->text(),
+                 displayNumber(e.digital->metrics.maxAbsError));
+        QCOMPARE(table->item(MetricsPanel::DigitalDamping, c)->text(),
+                 displayNumber(e.digital->minDamping, 3));
+        QVERIFY(table->item(MetricsPanel::DigitalRmse, c)
+                    ->toolTip()
+                    .startsWith("design " + displayNumber(e.metrics.rmse)));
     }
     // Where the digital figure differs from the design's by more than 5 %, it is marked; the
     // ideal implementation at 10 ms on the paper's slow cubic differs by far less.
@@ -133,10 +140,12 @@ void TstDigitalViews::metricsShowTheDigitalFigures() {
     const AxisEvaluation& slow = session_->axisEvaluation(0);
     QVERIFY(std::abs(slow.digital->metrics.rmse - slow.metrics.rmse) > 0.05 * slow.metrics.rmse);
     QCOMPARE(table->item(MetricsPanel::DigitalRmse, 0)->foreground().color(), QColor(0xffb26a00));
-    QVERIFY(table->item(MetricsPanel::DigitalRmse, 0)->toolTip().contains("differs by more than 5 %"));
+    QVERIFY(
+        table->item(MetricsPanel::DigitalRmse, 0)->toolTip().contains("differs by more than 5 %"));
     // Its least-damped pole is far below the design's: red, and the warning says why.
     QVERIFY(slow.digital->minDamping < 0.8 * slow.digital->designMinDamping);
-    QCOMPARE(table->item(MetricsPanel::DigitalDamping, 0)->foreground().color(), QColor(0xffc62828));
+    QCOMPARE(table->item(MetricsPanel::DigitalDamping, 0)->foreground().color(),
+             QColor(0xffc62828));
     QVERIFY(window_->metricsPanel()->noticeText().contains("much less damped than the design"));
 }
 
@@ -194,7 +203,8 @@ void TstDigitalViews::invalidImplementationValueStaysAtTheField() {
           std::tuple{window_->implementationEditor()->delayField(), "1.5",
                      "implementation.delay_samples: must be an integer in 0..100"},
           std::tuple{window_->implementationEditor()->encoderField(), "-0.01",
-                     "implementation.encoder_resolution: must be a finite number >= 0 (mm per count; 0: ideal)"}}) {
+                     "implementation.encoder_resolution: must be a finite number >= 0 (mm per "
+                     "count; 0: ideal)"}}) {
         const ImplementationSettings before = session_->session().implementation;
         field->setFocus();
         field->selectAll();

@@ -1,16 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The frequency domain in the workbench: the Bode and Nyquist tabs and the margins in the metrics panel draw
-// what the core computed, follow the sliders, and say so when there is nothing to draw.
+// The frequency domain in the workbench: the Bode and Nyquist tabs and the margins in the metrics
+// panel draw what the core computed, follow the sliders, and say so when there is nothing to draw.
 #include "core/analysis/stability_margins.h"
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
-#include "ui/panels/number_field.h"
 #include "ui/panels/metrics_panel.h"
+#include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/nyquist_plot.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/tolerance.h"
 
 #include <QDoubleSpinBox>
 #include <QStandardPaths>
@@ -78,18 +78,23 @@ void TstFrequencyViews::bodeDrawsTheCoreResponseAndMargins() {
     QVERIFY(mag && phase);
     QCOMPARE(mag->dataCount(), static_cast<int>(f.responses.openLoop.omegaRadPerSec.size()));
     for (int i = 0; i < mag->dataCount(); i += 17) {
-        QCOMPARE(mag->data()->at(i)->key, f.responses.openLoop.omegaRadPerSec[static_cast<std::size_t>(i)]);
-        QCOMPARE(mag->data()->at(i)->value, f.responses.openLoop.magnitudeDb[static_cast<std::size_t>(i)]);
-        QCOMPARE(phase->data()->at(i)->value, f.responses.openLoop.phaseDeg[static_cast<std::size_t>(i)]);
+        QCOMPARE(mag->data()->at(i)->key,
+                 f.responses.openLoop.omegaRadPerSec[static_cast<std::size_t>(i)]);
+        QCOMPARE(mag->data()->at(i)->value,
+                 f.responses.openLoop.magnitudeDb[static_cast<std::size_t>(i)]);
+        QCOMPARE(phase->data()->at(i)->value,
+                 f.responses.openLoop.phaseDeg[static_cast<std::size_t>(i)]);
     }
     // The margins drawn and listed are the core's exact ones.
     const StabilityMargins& m = f.margins;
     const QStringList marks = plot->markerTexts();
-    QVERIFY2(marks.contains(QString("GM %1 dB at %2 rad/s").arg(QString::number(m.gainMarginDb, 'g', 3),
-                                                                  QString::number(m.gainMarginOmegaRadPerSec, 'g', 3))),
+    QVERIFY2(marks.contains(QString("GM %1 dB at %2 rad/s")
+                                .arg(QString::number(m.gainMarginDb, 'g', 3),
+                                     QString::number(m.gainMarginOmegaRadPerSec, 'g', 3))),
              qPrintable(marks.join(" | ")));
-    QVERIFY(marks.contains(QString("PM %1° at %2 rad/s").arg(QString::number(m.phaseMarginDeg, 'g', 3),
-                                                            QString::number(m.phaseMarginOmegaRadPerSec, 'g', 3))));
+    QVERIFY(marks.contains(QString("PM %1° at %2 rad/s")
+                               .arg(QString::number(m.phaseMarginDeg, 'g', 3),
+                                    QString::number(m.phaseMarginOmegaRadPerSec, 'g', 3))));
     // Judged against the (default, zero) minima: both pass.
     QCOMPARE(cell(MetricsPanel::GainMargin, 0), displayNumber(m.gainMarginDb) + " ✓");
     QCOMPARE(cell(MetricsPanel::PhaseMargin, 0), displayNumber(m.phaseMarginDeg) + " ✓");
@@ -101,7 +106,9 @@ void TstFrequencyViews::bodeDrawsTheCoreResponseAndMargins() {
     // half-plane (cross-feature invariant, checked in the core; here only that both tabs agree).
     QVERIFY(m.gainMarginDb > 0.0 && std::isfinite(m.gainMarginDb));
     // Hover readout at the phase crossover names the frequency.
-    const QPoint at(static_cast<int>(plot->magnitudeRect()->axis(QCPAxis::atBottom)->coordToPixel(m.gainMarginOmegaRadPerSec)),
+    const QPoint at(static_cast<int>(plot->magnitudeRect()
+                                         ->axis(QCPAxis::atBottom)
+                                         ->coordToPixel(m.gainMarginOmegaRadPerSec)),
                     plot->magnitudeRect()->center().y());
     QTest::mouseMove(plot, at);
     QTRY_VERIFY(plot->readoutText().startsWith("ω = "));
@@ -165,7 +172,8 @@ void TstFrequencyViews::polePlacementAxisShowsTheTrackingWithAndWithoutZpetc() {
     BodePlot* plot = window_->bodePlot();
     QVERIFY(plot->magnitudeGraph("tracking with ZPETC"));
     QVERIFY(plot->magnitudeGraph("tracking, loop alone"));
-    // Zero phase with ZPETC (Patrick, Ishak and Adnan): every drawn phase sample within round-off of 0.
+    // Zero phase with ZPETC (Patrick, Ishak and Adnan): every drawn phase sample within round-off
+    // of 0.
     QCPGraph* phase = plot->phaseGraph("tracking with ZPETC");
     for (auto it = phase->data()->constBegin(); it != phase->data()->constEnd(); ++it)
         QVERIFY(std::abs(it->value) < 1e-6);
@@ -208,8 +216,9 @@ void TstFrequencyViews::nyquistStatesTheCriterion() {
     QCOMPARE(f.nyquist.closedLoopUnstablePoles, 2);
     QVERIFY(plot->criterionText().contains("Z = N + P = 2"));
     QVERIFY(!f.margins.closedLoopStable);
-    QCOMPARE(window_->metricsPanel()->table()->item(MetricsPanel::GainMargin, 0)->foreground().color(),
-             QColor(0xc6, 0x28, 0x28));
+    QCOMPARE(
+        window_->metricsPanel()->table()->item(MetricsPanel::GainMargin, 0)->foreground().color(),
+        QColor(0xc6, 0x28, 0x28));
 }
 
 void TstFrequencyViews::invalidAxisHasNoFrequencyView() {
@@ -218,7 +227,8 @@ void TstFrequencyViews::invalidAxisHasNoFrequencyView() {
     pp.b = {0.0, 0.0, 0.0}; // B = 0: no design
     session_->setPp(0, pp);
     QVERIFY(!session_->axisEvaluation(0).ok);
-    for (QWidget* tab : {static_cast<QWidget*>(window_->bodePlot()), static_cast<QWidget*>(window_->nyquistPlot())}) {
+    for (QWidget* tab : {static_cast<QWidget*>(window_->bodePlot()),
+                         static_cast<QWidget*>(window_->nyquistPlot())}) {
         window_->upperTabs()->setCurrentWidget(tab);
         QVERIFY(!window_->bodePlot()->hasResult() || tab != window_->bodePlot());
     }

@@ -29,8 +29,8 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
-#include <QTest>
 #include <QTemporaryDir>
+#include <QTest>
 #include <QTimer>
 #include <QToolButton>
 
@@ -461,7 +461,8 @@ void TstGcodeWorkbench::ballbarProgramShowsBothDirections() {
     const ContourCircularTest& test = *session_->evaluation().program->circular;
     QVERIFY(test.fromProgram);
     // The figures recomputed by the core's iso230Circular from the program's two circles.
-    const Iso230Circular both = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal);
+    const Iso230Circular both =
+        iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal);
     const Iso230Circular reverse = iso230Circular(test.reverseX, test.reverseY, test.nominal);
     QVERIFY(both.hysteresisH);
     const QString expected = QString("ISO 230-4: G CW %1, CCW %2, F %3/%4, H %5 mm")

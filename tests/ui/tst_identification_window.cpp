@@ -3,24 +3,24 @@
 // core's result for the same file, columns and spec (computed here again), the plots draw that
 // result, candidates accumulate for comparison, "Use for axis X" is one undo step, bad files
 // and columns show the core's message instead of a plot, and a fit can be cancelled.
-// Reference data: Patrick, Ishak and Adnan's x-axis ARX(2,3,1) model A = 1 - 1.6580 z^-1 + 0.6583 z^-2,
-// B = 0.0421 z^-2 + 0.0628 z^-3 - 0.0454 z^-4 (with its z^-1 delay), Ts = 0.07 s, driven by a
+// Reference data: Patrick, Ishak and Adnan's x-axis ARX(2,3,1) model A = 1 - 1.6580 z^-1 + 0.6583
+// z^-2, B = 0.0421 z^-2 + 0.0628 z^-3 - 0.0454 z^-4 (with its z^-1 delay), Ts = 0.07 s, driven by a
 // +-2 V random binary input with a fixed seed: noise-free, so ARX recovers it exactly.
-#include "ui/identification_window.h"
-#include "ui/main_window.h"
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
 #include "core/identification/preprocessing.h"
 #include "core/session/identified_axis.h"
-#include "ui/session/tuning_session.h"
 #include "tests/support/gui_checks.h"
 #include "tests/support/identification_data.h"
 #include "tests/support/tolerance.h"
+#include "ui/identification_window.h"
+#include "ui/main_window.h"
+#include "ui/session/tuning_session.h"
 
-#include <QComboBox>
-#include <QFile>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -28,8 +28,8 @@
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
-#include <QTableWidget>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextStream>
@@ -51,9 +51,9 @@ const std::vector<double> kA{1.0, -1.6580, 0.6583};
 const std::vector<double> kB{0.0, 0.0421, 0.0628, -0.0454};
 constexpr double kTs = 0.07;
 
-/// t, u, y of Patrick, Ishak and Adnan's model driven by a +-2 V random binary input; @p badCell puts a
-/// word in row 10's y; @p noiseMm adds a +-noiseMm random binary sequence to y; the time column
-/// steps by @p ts.
+/// t, u, y of Patrick, Ishak and Adnan's model driven by a +-2 V random binary input; @p badCell
+/// puts a word in row 10's y; @p noiseMm adds a +-noiseMm random binary sequence to y; the time
+/// column steps by @p ts.
 QString writeRecord(const QString& dir, const QString& name, std::size_t n, std::uint64_t seed,
                     bool badCell = false, const QString& header = "t,u,y", double noiseMm = 0.0,
                     double ts = kTs) {
@@ -70,7 +70,8 @@ QString writeRecord(const QString& dir, const QString& name, std::size_t n, std:
     QTextStream out(&f);
     out << header << "\n";
     for (std::size_t k = 0; k < n; ++k) {
-        out << QString::number(static_cast<double>(k) * ts, 'g', 17) << "," << QString::number(u[k], 'g', 17) << ",";
+        out << QString::number(static_cast<double>(k) * ts, 'g', 17) << ","
+            << QString::number(u[k], 'g', 17) << ",";
         if (badCell && k == 10)
             out << "abc\n";
         else
@@ -110,7 +111,8 @@ void compareShownParameters(const QString& text, const IdentifiedModel& expected
         QVERIFY2(shown.count(name), qPrintable(name + " in " + text));
         const auto [value, sd] = shown.at(name);
         QVERIFY2(near(value, expected.parameters[i], 1e-5, 0.0), qPrintable(name + ": " + text));
-        QVERIFY2(near(sd, expected.standardDeviations[i], 6e-3, 0.0), qPrintable(name + " sd: " + text));
+        QVERIFY2(near(sd, expected.standardDeviations[i], 6e-3, 0.0),
+                 qPrintable(name + " sd: " + text));
     }
 }
 
@@ -202,9 +204,11 @@ void TstIdentificationWindow::arxCandidateIsTheCoresModel() {
     // Noise-free data: the estimate is Patrick, Ishak and Adnan's model.
     QCOMPARE(c->model.model.a.size(), kA.size());
     for (std::size_t i = 0; i < kA.size(); ++i)
-        QVERIFY2(near(c->model.model.a[i], kA[i], 0.0, 1e-9), qPrintable(QString::number(c->model.model.a[i])));
+        QVERIFY2(near(c->model.model.a[i], kA[i], 0.0, 1e-9),
+                 qPrintable(QString::number(c->model.model.a[i])));
     for (std::size_t i = 0; i < kB.size(); ++i)
-        QVERIFY2(near(c->model.model.b[i], kB[i], 0.0, 1e-9), qPrintable(QString::number(c->model.model.b[i])));
+        QVERIFY2(near(c->model.model.b[i], kB[i], 0.0, 1e-9),
+                 qPrintable(QString::number(c->model.model.b[i])));
 
     // The plots draw the candidate.
     const std::vector<double>& yhat = expected.fit.estimationSimulation.yhat;
@@ -312,7 +316,8 @@ void TstIdentificationWindow::badInputShowsTheCoresMessage() {
     QVERIFY(window_->measuredGraph()->data()->isEmpty());
     if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
         QTest::qWait(50);
-        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_error.png");
+        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") +
+                             "/identification_error.png");
     }
 
     // A file that does not exist.
@@ -325,7 +330,8 @@ void TstIdentificationWindow::badInputShowsTheCoresMessage() {
     QVERIFY(window_->loadFile(tiny));
     pickColumns();
     QVERIFY(fitAndWait());
-    QVERIFY2(window_->statusText().contains("samples") || window_->statusText().contains("tiny.csv"),
+    QVERIFY2(window_->statusText().contains("samples") ||
+                 window_->statusText().contains("tiny.csv"),
              qPrintable(window_->statusText()));
     QVERIFY(!window_->selectedCandidate());
 }
@@ -357,7 +363,8 @@ void TstIdentificationWindow::sampleTimeWithoutATimeColumn() {
     const QString path = dir_->path() + "/no_time.csv";
     {
         QFile in(path_), out(path);
-        QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text) && out.open(QIODevice::WriteOnly | QIODevice::Text));
+        QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text) &&
+                out.open(QIODevice::WriteOnly | QIODevice::Text));
         while (!in.atEnd()) {
             const QList<QByteArray> fields = in.readLine().trimmed().split(',');
             out.write(fields[1] + "," + fields[2] + "\n");
@@ -395,7 +402,8 @@ void TstIdentificationWindow::validationFileIsJudged() {
 void TstIdentificationWindow::continuousFitFromTheExampleLog() {
     // The repository's synthetic lower-base log (.lvm, Ts stated by the file): the GT3 fit is
     // identifyModel's on the record with its first sample taken off, as xytune-cli identify does.
-    const QString path = QStringLiteral(XYT_EXAMPLES_SOURCE_DIR "/synthetic_lower_base_square_10ms.lvm");
+    const QString path =
+        QStringLiteral(XYT_EXAMPLES_SOURCE_DIR "/synthetic_lower_base_square_10ms.lvm");
     QVERIFY2(window_->loadFile(path), qPrintable(window_->statusText()));
     QCOMPARE(window_->timeBox()->currentIndex(), 0); // the file's sample time
     QVERIFY(window_->sampleTimeBox()->value() > 0.0);
@@ -419,14 +427,17 @@ void TstIdentificationWindow::continuousFitFromTheExampleLog() {
     // The plant's pole at z = 1 is an integrator, not an instability (before: "the model is
     // unstable").
     QVERIFY(c->model.roots.integrating);
-    QVERIFY2(window_->poleZeroNoticeText().contains("integrates"), qPrintable(window_->poleZeroNoticeText()));
+    QVERIFY2(window_->poleZeroNoticeText().contains("integrates"),
+             qPrintable(window_->poleZeroNoticeText()));
     QVERIFY(!window_->poleZeroNoticeText().contains("the model is unstable"));
     // k0, a1 and a2 with their standard deviations are shown for the selected candidate.
     compareShownParameters(window_->parametersText(), expected);
-    QVERIFY2(window_->parametersText().contains("mm/(V·s³)"), qPrintable(window_->parametersText()));
+    QVERIFY2(window_->parametersText().contains("mm/(V·s³)"),
+             qPrintable(window_->parametersText()));
     if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
         QTest::qWait(50);
-        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_gt3.png");
+        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") +
+                             "/identification_gt3.png");
     }
 }
 
@@ -471,7 +482,8 @@ void TstIdentificationWindow::preprocessingReachesTheCore() {
     QVERIFY(fitAndWait());
     const auto* c = window_->selectedCandidate();
     QVERIFY2(c, qPrintable(window_->statusText()));
-    const IoData data = decimate(removeTrends(selectTimeRange(coreRecord(path_), 7.0, 35.0)).data, 2);
+    const IoData data =
+        decimate(removeTrends(selectTimeRange(coreRecord(path_), 7.0, 35.0)).data, 2);
     QVERIFY(near(data.tsSeconds, 2 * kTs, 1e-12, 0.0));
     IdentificationSpec spec;
     spec.arx = {2, 3, 1};
@@ -481,7 +493,8 @@ void TstIdentificationWindow::preprocessingReachesTheCore() {
         QVERIFY(near(c->model.parameters[i], expected.parameters[i], 1e-9, 1e-12));
     QVERIFY(near(c->model.model.tsSeconds, 2 * kTs, 1e-12, 0.0));
     QCOMPARE(window_->measuredGraph()->data()->size(), static_cast<int>(data.size()));
-    QVERIFY(near(window_->measuredGraph()->data()->constBegin()->key, data.startSeconds, 1e-12, 1e-12));
+    QVERIFY(
+        near(window_->measuredGraph()->data()->constBegin()->key, data.startSeconds, 1e-12, 1e-12));
     QVERIFY(data.startSeconds >= 7.0 - 1e-9);
 
     // A range that ends before it starts is refused, naming the field; no stale candidate.
@@ -526,8 +539,10 @@ void TstIdentificationWindow::secondFileReplacesTheFirst() {
     // A 10 ms record, then a 70 ms one: the first file's candidates were kept without saying
     // which file they came from, Ts still read 10 ms, the record was not drawn before a fit and
     // the range read "0.0000 s to 0.0000 s".
-    const QString fast = writeRecord(dir_->path(), "fast_10ms.csv", 500, 31, false, "t,u,y", 0.0, 0.01);
-    const QString slow = writeRecord(dir_->path(), "slow_70ms.csv", 300, 32, false, "t,u,y", 0.0, 0.07);
+    const QString fast =
+        writeRecord(dir_->path(), "fast_10ms.csv", 500, 31, false, "t,u,y", 0.0, 0.01);
+    const QString slow =
+        writeRecord(dir_->path(), "slow_70ms.csv", 300, 32, false, "t,u,y", 0.0, 0.07);
     QVERIFY(window_->loadFile(fast));
     QVERIFY(near(window_->sampleTimeBox()->value(), 0.01, 1e-12, 0.0));
     QVERIFY(fitAndWait());
@@ -551,7 +566,8 @@ void TstIdentificationWindow::secondFileReplacesTheFirst() {
     QVERIFY(window_->simulatedGraph()->data()->isEmpty());
     if (qEnvironmentVariableIsSet("XYT_SCREENSHOT_DIR")) { // to look at it (not an assertion)
         QTest::qWait(50);
-        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") + "/identification_loaded.png");
+        window_->grab().save(qEnvironmentVariable("XYT_SCREENSHOT_DIR") +
+                             "/identification_loaded.png");
     }
 
     // A fit on the shown range uses the whole record (the rounded range cuts nothing off).

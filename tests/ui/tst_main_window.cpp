@@ -1,20 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // GUI tests: drive the real widgets offscreen and assert on the presenter's state and the plots'
 // data, not on pixels.
-#include "ui/plots/contour_plot.h"
-#include "ui/panels/equations_panel.h"
+#include "tests/support/gui_checks.h"
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
+#include "ui/panels/equations_panel.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/panels/plant_editor.h"
 #include "ui/panels/pp_editor.h"
+#include "ui/panels/trajectory_editor.h"
+#include "ui/plots/contour_plot.h"
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/time_response_plot.h"
-#include "ui/panels/trajectory_editor.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/gui_checks.h"
-#include "tests/support/tolerance.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -125,9 +125,11 @@ void TstMainWindow::contourPlotHoldsTheSimulatedData() {
     QCPCurve* traced = window_->contourPlot()->tracedCurve();
     QCOMPARE(traced->data()->size(), static_cast<int>(x.t.size()));
     // The magnified path of a circle is R + factor (rho - R) along each traced point's angle.
-    auto* factor = window_->lowerTabs()->cornerWidget(Qt::TopRightCorner)->findChild<QDoubleSpinBox*>();
+    auto* factor =
+        window_->lowerTabs()->cornerWidget(Qt::TopRightCorner)->findChild<QDoubleSpinBox*>();
     if (!factor)
-        factor = qobject_cast<QDoubleSpinBox*>(window_->lowerTabs()->cornerWidget(Qt::TopRightCorner));
+        factor =
+            qobject_cast<QDoubleSpinBox*>(window_->lowerTabs()->cornerWidget(Qt::TopRightCorner));
     QVERIFY(factor);
     factor->setValue(50.0);
     {
@@ -174,8 +176,9 @@ void TstMainWindow::clickOnRootLocusSetsTheGain() {
         for (std::size_t i = 0; i < locus.branches[b].roots.size(); ++i) {
             const auto r = locus.branches[b].roots[i];
             const double g = locus.gains[i];
-            if (plot->xAxis->range().contains(r.real()) && plot->yAxis->range().contains(r.imag()) &&
-                std::abs(r.imag()) > 20 && g > best && g < 50) {
+            if (plot->xAxis->range().contains(r.real()) &&
+                plot->yAxis->range().contains(r.imag()) && std::abs(r.imag()) > 20 && g > best &&
+                g < 50) {
                 best = g;
                 branch = b;
                 index = i;
@@ -191,7 +194,8 @@ void TstMainWindow::clickOnRootLocusSetsTheGain() {
     QTest::mouseClick(plot, Qt::LeftButton, Qt::NoModifier, pixel);
     // The controller becomes K (kp + ki/s): kp' = K kp, wn' = K^(1/4) wn (ki = wn^4/k0).
     XYT_COMPARE_NEAR(session_->session().axes[0].gt.kp, 30.0 * gain, 1e-12, 0.0);
-    XYT_COMPARE_NEAR(session_->session().axes[0].gt.omegaNRadPerSec, 2.0 * std::pow(gain, 0.25), 1e-12, 0.0);
+    XYT_COMPARE_NEAR(session_->session().axes[0].gt.omegaNRadPerSec, 2.0 * std::pow(gain, 0.25),
+                     1e-12, 0.0);
     // Invariant: the picked point is now a closed-loop pole of the new design.
     double nearest = 1e300;
     for (const auto& p : session_->axisEvaluation(0).gt->closedLoopPoles)
@@ -278,7 +282,8 @@ void TstMainWindow::manyWarningsFitA1366x768Window() {
     session_->reset(s);
     window_->resize(1366, 768);
     QTest::qWait(20);
-    QVERIFY2(window_->minimumSizeHint().height() <= 768, qPrintable(QString::number(window_->minimumSizeHint().height())));
+    QVERIFY2(window_->minimumSizeHint().height() <= 768,
+             qPrintable(QString::number(window_->minimumSizeHint().height())));
     QCOMPARE(window_->height(), 768);
     QVERIFY(!window_->metricsPanel()->noticeText().isEmpty());
     auto* table = window_->metricsPanel()->findChild<QTableWidget*>();

@@ -3,11 +3,11 @@
 // dialog answered both ways. Its purpose is to crash (or trip ASan/UBSan, since the whole suite
 // also runs instrumented) wherever a menu or dialog mishandles a state: the class of defect that
 // made Design > Compare designs... segfault with one snapshot stored.
+#include "tests/support/gui_checks.h"
 #include "ui/main_window.h"
 #include "ui/plots/plot_tools.h"
-#include "ui/snapshot_compare_dialog.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/gui_checks.h"
+#include "ui/snapshot_compare_dialog.h"
 
 #include <QMenuBar>
 #include <QStandardPaths>
@@ -77,7 +77,8 @@ Session gcodeProgram() {
     s.snapshots.push_back(s.snapshot("cubic move"));
     s.trajectory.kind = TrajectoryKind::Gcode;
     s.trajectory.gcode.fileName = "menu_square.nc";
-    s.trajectory.gcode.program = "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
+    s.trajectory.gcode.program =
+        "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
     return s;
 }
 
@@ -117,9 +118,12 @@ void TstMenuActions::everyActionInEveryState_data() {
     QTest::addColumn<bool>("modified");
     QTest::addColumn<bool>("accept");
     const QList<QPair<const char*, Session>> states = {
-        {"default", Session::paperDefault()},      {"two snapshots", withTwoSnapshots()},
-        {"both pole placement", bothPolePlacement()}, {"one axis invalid", oneAxisInvalid()},
-        {"unstable", unstable()}, {"gcode program", gcodeProgram()},
+        {"default", Session::paperDefault()},
+        {"two snapshots", withTwoSnapshots()},
+        {"both pole placement", bothPolePlacement()},
+        {"one axis invalid", oneAxisInvalid()},
+        {"unstable", unstable()},
+        {"gcode program", gcodeProgram()},
         {"digital implementation", digitalImplementation()}};
     for (const auto& [name, state] : states)
         for (const bool modified : {false, true})
@@ -225,7 +229,9 @@ void TstMenuActions::compareDialogWithSnapshots() {
     // One row per figure of the current design (both columns show GT designs of the same shape).
     QCOMPARE(rows, static_cast<int>(comparisonRows(session.session()).size()));
     QCOMPARE(left, tr("Current design"));
-    QCOMPARE(right, snapshots == 0 ? tr("Current design") : QString::fromStdString(session.session().snapshots.back().name));
+    QCOMPARE(right, snapshots == 0
+                        ? tr("Current design")
+                        : QString::fromStdString(session.session().snapshots.back().name));
 }
 
 QTEST_MAIN(TstMenuActions)

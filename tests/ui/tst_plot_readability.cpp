@@ -5,12 +5,14 @@
 // gaps and axes without crowded ticks. Each test drives the real window at 1366x768 and, where
 // it matters, at 1600x1000.
 #include "core/design/guillemin_truxal.h"
+#include "tests/support/plot_layout_checks.h"
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/trajectory_editor.h"
-#include "ui/plots/damping_labels.h"
 #include "ui/plots/contour_plot.h"
+#include "ui/plots/damping_labels.h"
 #include "ui/plots/parameter_locus_plot.h"
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/plots/root_locus_plot.h"
@@ -18,19 +20,17 @@
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/plot_layout_checks.h"
-#include "tests/support/tolerance.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QStackedWidget>
-#include <QStandardPaths>
 #include <QHeaderView>
 #include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
-#include <QTableWidget>
+#include <QStackedWidget>
+#include <QStandardPaths>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTest>
 
 #include <cmath>
@@ -57,14 +57,20 @@ QList<QPair<const char*, Session>> layoutStates() {
     Session gcode = Session::paperDefault();
     gcode.trajectory.kind = TrajectoryKind::Gcode;
     gcode.trajectory.gcode.fileName = "square.nc";
-    gcode.trajectory.gcode.program = "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
+    gcode.trajectory.gcode.program =
+        "G21 G90\nG1 X20 Y0 F600\nX20 Y15\nG3 X15 Y20 I-5 J0\nG1 X0 Y20\nX0 Y0\n";
     Session circle = Session::paperDefault();
     circle.trajectory.kind = TrajectoryKind::Circle;
     Session back = Session::paperDefault(); // 600 mm back to 0: the traces end where the legend was
     back.trajectory.x0 = 600.0;
     back.trajectory.xf = 0.0;
-    return {{"default", Session::paperDefault()}, {"pole placement", pp}, {"one axis invalid", invalid},
-            {"unstable", unstable}, {"gcode", gcode}, {"circle", circle}, {"move back", back}};
+    return {{"default", Session::paperDefault()},
+            {"pole placement", pp},
+            {"one axis invalid", invalid},
+            {"unstable", unstable},
+            {"gcode", gcode},
+            {"circle", circle},
+            {"move back", back}};
 }
 
 /// Draws @p plot as a user sees it: the guard may re-lay it out once (a wrapped title, a
@@ -169,12 +175,16 @@ void TstPlotReadability::planesHaveEqualAspect() {
         window_->resize(size);
         QTest::qWait(50);
         const auto [px, py] = pixelsPerUnit(plot);
-        QVERIFY2(std::abs(px / py - 1.0) < 0.01,
-                 qPrintable(QString("%1x%2: %3 vs %4 px per unit").arg(size.width()).arg(size.height()).arg(px).arg(py)));
+        QVERIFY2(std::abs(px / py - 1.0) < 0.01, qPrintable(QString("%1x%2: %3 vs %4 px per unit")
+                                                                .arg(size.width())
+                                                                .arg(size.height())
+                                                                .arg(px)
+                                                                .arg(py)));
         // The z-plane's unit circle (the stability boundary) whole in the view: it was cut.
         if (discrete)
             for (const QCPRange r : {plot->xAxis->range(), plot->yAxis->range()})
-                QVERIFY2(r.lower < -1.0 && r.upper > 1.0, qPrintable(QString("%1 .. %2").arg(r.lower).arg(r.upper)));
+                QVERIFY2(r.lower < -1.0 && r.upper > 1.0,
+                         qPrintable(QString("%1 .. %2").arg(r.lower).arg(r.upper)));
     }
     // The reset view (double click, context menu) keeps it.
     plot->xAxis->setRange(-1, 100);
@@ -191,7 +201,8 @@ void TstPlotReadability::legendsAndHintSitOutsideThePlane() {
         auto* plot = qobject_cast<QCustomPlot*>(window_->upperTabs()->currentWidget());
         plot->replot(QCustomPlot::rpImmediateRefresh);
         QVERIFY(plot->legend->visible());
-        QVERIFY2(!plot->legend->outerRect().intersects(plot->axisRect()->outerRect().adjusted(0, 0, 0, -1)),
+        QVERIFY2(!plot->legend->outerRect().intersects(
+                     plot->axisRect()->outerRect().adjusted(0, 0, 0, -1)),
                  qPrintable(plot->objectName()));
         QVERIFY(plot->legend->outerRect().top() >= plot->axisRect()->outerRect().bottom() - 1);
     }
@@ -223,7 +234,8 @@ std::vector<DampingLabels::Placed> dampingLabels(QCustomPlot* plot) {
 void requireLabelsInsideApart(QCustomPlot* plot, const std::vector<DampingLabels::Placed>& labels) {
     const QRectF area = plot->axisRect()->rect();
     for (std::size_t i = 0; i < labels.size(); ++i) {
-        QVERIFY2(area.contains(labels[i].rect), qPrintable(labels[i].text + " leaves the axis rect"));
+        QVERIFY2(area.contains(labels[i].rect),
+                 qPrintable(labels[i].text + " leaves the axis rect"));
         for (std::size_t j = i + 1; j < labels.size(); ++j)
             QVERIFY2(!labels[i].rect.intersects(labels[j].rect),
                      qPrintable(labels[i].text + " overlaps " + labels[j].text));
@@ -307,12 +319,16 @@ void TstPlotReadability::annotationsStayInsideAndApart() {
                         continue;
                     drawSettled(plot);
                     for (const QString& p : test::annotationProblems(plot))
-                        problems << QString("axis %1, %2: %3").arg(axis).arg(tabs->tabText(i).remove('&'), p);
+                        problems << QString("axis %1, %2: %3")
+                                        .arg(axis)
+                                        .arg(tabs->tabText(i).remove('&'), p);
                 }
                 if (auto* plot = qobject_cast<QCustomPlot*>(tabs->currentWidget())) {
                     drawSettled(plot);
                     for (const QString& p : test::annotationProblems(plot))
-                        problems << QString("axis %1, %2: %3").arg(axis).arg(tabs->tabText(i).remove('&'), p);
+                        problems << QString("axis %1, %2: %3")
+                                        .arg(axis)
+                                        .arg(tabs->tabText(i).remove('&'), p);
                 }
             }
     }
@@ -346,7 +362,8 @@ void TstPlotReadability::legendGivesWayToANoticeAndReturns() {
     session_->reset(Session::paperDefault());
     drawSettled(plot);
     QVERIFY(insetLegend()->visible());
-    QVERIFY2(test::annotationProblems(plot).isEmpty(), qPrintable(test::annotationProblems(plot).join('\n')));
+    QVERIFY2(test::annotationProblems(plot).isEmpty(),
+             qPrintable(test::annotationProblems(plot).join('\n')));
 }
 
 void TstPlotReadability::plotsSettleAfterADesignChange_data() {
@@ -367,7 +384,8 @@ void TstPlotReadability::plotsSettleAfterADesignChange() {
     for (QCustomPlot* plot : window_->findChildren<QCustomPlot*>())
         connect(plot, &QCustomPlot::afterReplot, this, [plot, &drawings] { ++drawings[plot]; });
     constexpr int kSteps = 4;
-    constexpr int kPasses = 8; ///< event-loop passes after each step: a plot redrawing without end shows 8
+    constexpr int kPasses =
+        8; ///< event-loop passes after each step: a plot redrawing without end shows 8
     for (int step = 0; step < kSteps; ++step) {
         Session next = session; // a new design for either method: ωn, or T's root
         next.axes[0].gt.omegaNRadPerSec *= step % 2 ? 1.0 : 1.1;
@@ -378,9 +396,10 @@ void TstPlotReadability::plotsSettleAfterADesignChange() {
     }
     QVERIFY(!drawings.isEmpty()); // the visible plots were drawn
     for (auto it = drawings.cbegin(); it != drawings.cend(); ++it)
-        QVERIFY2(it.value() <= 2 * kSteps,
-                 qPrintable(QString("%1 drawn %2 times in %3 steps")
-                                .arg(it.key()->metaObject()->className()).arg(it.value()).arg(kSteps)));
+        QVERIFY2(it.value() <= 2 * kSteps, qPrintable(QString("%1 drawn %2 times in %3 steps")
+                                                          .arg(it.key()->metaObject()->className())
+                                                          .arg(it.value())
+                                                          .arg(kSteps)));
 }
 
 void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary() {
@@ -396,7 +415,8 @@ void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary()
     QCOMPARE(plot->boundaryGraph()->data()->size(), 2);
     const double omegaCross = std::sqrt(c / p.a1);
     XYT_COMPARE_NEAR(std::abs(plot->boundaryGraph()->data()->at(0)->value), omegaCross, 1e-6, 0.0);
-    QVERIFY2(plot->labelTexts().contains(QString("unstable above ωn = %1").arg(QString::number(wnStar, 'g', 3))),
+    QVERIFY2(plot->labelTexts().contains(
+                 QString("unstable above ωn = %1").arg(QString::number(wnStar, 'g', 3))),
              qPrintable(plot->labelTexts().join(" | ")));
     // Framed on the two dominant branches (the plant's fast poles barely move), with both
     // half-planes and the crossing in view.
@@ -405,7 +425,8 @@ void TstPlotReadability::parameterLocusFramesTheMovingPolesAndMarksTheBoundary()
     QVERIFY(plot->yAxis->range().contains(omegaCross));
     // The dominant poles of the design take more than a pixel: the view spans tens of rad/s,
     // not the 80 of the fast plant pole.
-    QVERIFY2(plot->xAxis->range().size() < 0.8 * 80.0, qPrintable(QString::number(plot->xAxis->range().size())));
+    QVERIFY2(plot->xAxis->range().size() < 0.8 * 80.0,
+             qPrintable(QString::number(plot->xAxis->range().size())));
     QVERIFY(plot->noticeText().contains("barely move"));
     // A few parameter values are written along the branches.
     int valueLabels = 0;
@@ -435,7 +456,8 @@ void TstPlotReadability::parameterLocusBoundaryFollowsKp() {
     for (const QString& t : plot->labelTexts())
         if (t.startsWith("unstable"))
             boundary << t;
-    QCOMPARE(boundary, QStringList{QString("unstable below kp = %1").arg(QString::number(kpLow, 'g', 3))});
+    QCOMPARE(boundary,
+             QStringList{QString("unstable below kp = %1").arg(QString::number(kpLow, 'g', 3))});
     QCOMPARE(plot->boundaryGraph()->data()->size(), 2);
 }
 
@@ -451,7 +473,8 @@ void TstPlotReadability::coincidentPoleSetsAreDistinguishable() {
     QVERIFY(closed->scatterStyle().shape() != model->scatterStyle().shape());
     // Every set has a pole mark of its own (shape and size).
     QSet<QString> marks;
-    for (const char* name : {"plant", "controller", "open loop", "closed loop", "reference model"}) {
+    for (const char* name :
+         {"plant", "controller", "open loop", "closed loop", "reference model"}) {
         QCPGraph* g = plot->polesGraph(name);
         QVERIFY2(g, qPrintable(name));
         marks.insert(QString("%1/%2").arg(g->scatterStyle().shape()).arg(g->scatterStyle().size()));
@@ -496,8 +519,10 @@ void TstPlotReadability::cornerControlsOnlyOnTheirTab() {
         for (int lower = 0; lower < window_->lowerTabs()->count(); ++lower) {
             window_->upperTabs()->setCurrentIndex(upper);
             window_->lowerTabs()->setCurrentIndex(lower);
-            QCOMPARE(swept->isVisible(), window_->upperTabs()->currentWidget() == window_->parameterLocusPlot());
-            QCOMPARE(magnification->isVisible(), window_->lowerTabs()->currentWidget() == window_->contourPlot());
+            QCOMPARE(swept->isVisible(),
+                     window_->upperTabs()->currentWidget() == window_->parameterLocusPlot());
+            QCOMPARE(magnification->isVisible(),
+                     window_->lowerTabs()->currentWidget() == window_->contourPlot());
         }
     // On a pole-placement axis the parameter locus has no parameter to sweep: shown, disabled.
     usePolePlacement(0);
@@ -517,7 +542,8 @@ void TstPlotReadability::leftPanelHasNoGapForTheShortPage() {
     session_->setTrajectory(t);
     const int circleHeight = pages->sizeHint().height();
     QCOMPARE(circleHeight, pages->currentWidget()->sizeHint().height());
-    QVERIFY2(circleHeight < cubicHeight, qPrintable(QString("%1 vs %2").arg(circleHeight).arg(cubicHeight)));
+    QVERIFY2(circleHeight < cubicHeight,
+             qPrintable(QString("%1 vs %2").arg(circleHeight).arg(cubicHeight)));
     // The width stays that of the widest page, so nothing is clipped on either.
     QVERIFY(pages->sizeHint().width() >= pages->widget(0)->sizeHint().width());
     // The design stack too: the pole-placement page is shorter than the GT page.
@@ -555,8 +581,9 @@ void TstPlotReadability::valueTicksFitTheirPanel() {
         QVERIFY(inside.size() >= 2);
         // At least 16 px from label to label: an 8-9 pt tick label is about 12 px tall.
         for (int i = 1; i < inside.size(); ++i)
-            QVERIFY2(std::abs(inside[i] - inside[i - 1]) >= 16.0,
-                     qPrintable(QString("%1 ticks in %2 px").arg(inside.size()).arg(rect->height())));
+            QVERIFY2(
+                std::abs(inside[i] - inside[i - 1]) >= 16.0,
+                qPrintable(QString("%1 ticks in %2 px").arg(inside.size()).arg(rect->height())));
     }
 }
 
@@ -587,12 +614,15 @@ void TstPlotReadability::moveAndSettleRowsShowTheCoreFigures() {
         if (m.settleTimeSeconds)
             QVERIFY2(settle.startsWith(displayNumber(*m.settleTimeSeconds)), qPrintable(settle));
         else { // a lower bound: the run's end after tf, and a tooltip that says it
-            QVERIFY2(settle.startsWith("> " + displayNumber(m.runEndSeconds - m.moveEndSeconds)), qPrintable(settle));
-            QVERIFY(table->item(MetricsPanel::SettleAfterMove, c)->toolTip().startsWith("not settled"));
+            QVERIFY2(settle.startsWith("> " + displayNumber(m.runEndSeconds - m.moveEndSeconds)),
+                     qPrintable(settle));
+            QVERIFY(
+                table->item(MetricsPanel::SettleAfterMove, c)->toolTip().startsWith("not settled"));
         }
         QVERIFY(settle.endsWith(e.check.settle ? "✓" : "✗"));
         QCOMPARE(table->item(MetricsPanel::FinalError, c)->text(), displayNumber(m.finalErrorMm));
-        QCOMPARE(table->item(MetricsPanel::FinalOvershoot, c)->text(), displayNumber(m.finalOvershootMm));
+        QCOMPARE(table->item(MetricsPanel::FinalOvershoot, c)->text(),
+                 displayNumber(m.finalOvershootMm));
     }
     // A circle has no move to settle: the rows say so, unjudged.
     TrajectorySettings t = session_->session().trajectory;
@@ -634,8 +664,10 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut() {
     window_->resize(size);
     QTest::qWait(50);
     QTableWidget* table = window_->metricsPanel()->table();
-    QCOMPARE(table->item(MetricsPanel::TrackingGroup, 0)->text(), QString("Tracking the trajectory"));
-    QCOMPARE(table->item(MetricsPanel::StepGroup, 0)->text(), QString("Unit step, as each axis runs"));
+    QCOMPARE(table->item(MetricsPanel::TrackingGroup, 0)->text(),
+             QString("Tracking the trajectory"));
+    QCOMPARE(table->item(MetricsPanel::StepGroup, 0)->text(),
+             QString("Unit step, as each axis runs"));
     QCOMPARE(table->columnSpan(MetricsPanel::StepGroup, 0), 3);
     // Every figure fits its column: no elided text, and the table fits its viewport.
     const int width = table->verticalHeader()->width() + table->horizontalHeader()->length();
@@ -643,8 +675,10 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut() {
     for (int c = 0; c < 3; ++c)
         widths += QString(" %1").arg(table->columnWidth(c));
     QVERIFY2(width <= table->width(), qPrintable(QString("%1 > %2: header %3, columns%4")
-                                                     .arg(width).arg(table->width())
-                                                     .arg(table->verticalHeader()->width()).arg(widths)));
+                                                     .arg(width)
+                                                     .arg(table->width())
+                                                     .arg(table->verticalHeader()->width())
+                                                     .arg(widths)));
     const QFontMetrics fm(table->font());
     QFont bold = table->font();
     bold.setBold(true);
@@ -657,16 +691,25 @@ void TstPlotReadability::metricsAreGroupedAndNeverCut() {
         for (int c = 0; c < 3 && !MetricsPanel::isGroupRow(r); ++c) {
             const QString text = table->item(r, c)->text();
             QVERIFY2(fm.horizontalAdvance(text) + 6 <= table->columnWidth(c),
-                     qPrintable(QString("row %1 col %2 '%3' in %4 px").arg(r).arg(c).arg(text).arg(table->columnWidth(c))));
+                     qPrintable(QString("row %1 col %2 '%3' in %4 px")
+                                    .arg(r)
+                                    .arg(c)
+                                    .arg(text)
+                                    .arg(table->columnWidth(c))));
             QVERIFY(!text.contains("nan", Qt::CaseInsensitive));
         }
     // Four significant digits: the ITAE of the two pole-placement axes (0.4088 and 0.4228 from the
     // core) differ on the panel as they do in the core.
     const AxisEvaluation& x = session_->axisEvaluation(0);
     QCOMPARE(table->item(MetricsPanel::Itae, 0)->text(), displayNumber(x.metrics.itae));
-    QVERIFY(displayNumber(x.metrics.itae).remove('.').remove('-').remove(QRegularExpression("^0+")).size() >= 4);
+    QVERIFY(displayNumber(x.metrics.itae)
+                .remove('.')
+                .remove('-')
+                .remove(QRegularExpression("^0+"))
+                .size() >= 4);
     if (polePlacement)
-        QVERIFY(table->item(MetricsPanel::Itae, 0)->text() != table->item(MetricsPanel::Itae, 1)->text());
+        QVERIFY(table->item(MetricsPanel::Itae, 0)->text() !=
+                table->item(MetricsPanel::Itae, 1)->text());
 }
 
 QTEST_MAIN(TstPlotReadability)

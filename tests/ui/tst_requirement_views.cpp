@@ -8,13 +8,13 @@
 #include "core/analysis/damping_grid.h"
 #include "core/analysis/pole_requirements.h"
 #include "core/simulation/step_view.h"
+#include "tests/support/tolerance.h"
 #include "ui/main_window.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/step_plot.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/tolerance.h"
 
 #include <QStandardPaths>
 #include <QTabWidget>
@@ -39,7 +39,8 @@ std::vector<Complex> curvePoints(const QCPCurve* curve) {
 /// The samples of the violation graph that are drawn (finite).
 int drawnViolations(const StepPlot* plot) {
     int n = 0;
-    for (auto it = plot->violationGraph()->data()->constBegin(); it != plot->violationGraph()->data()->constEnd(); ++it)
+    for (auto it = plot->violationGraph()->data()->constBegin();
+         it != plot->violationGraph()->data()->constEnd(); ++it)
         n += std::isfinite(it->value) ? 1 : 0;
     return n;
 }
@@ -115,8 +116,8 @@ void TstRequirementViews::stepTabDrawsTheCoreView() {
         QCOMPARE(g->data()->at(k)->value, c.y[static_cast<std::size_t>(k)]);
     }
     QCOMPARE(g->lineStyle(), QCPGraph::lsLine);
-    // Markers at the figures the metrics panel quotes (Braga et al.'s lower base: settles in 5.46 s,
-    // overshoots 0.997 %), the rise at the 10 and 90 % crossings of the drawn curve.
+    // Markers at the figures the metrics panel quotes (Braga et al.'s lower base: settles in 5.46
+    // s, overshoots 0.997 %), the rise at the 10 and 90 % crossings of the drawn curve.
     const double fin = e.step.finalValue;
     QCOMPARE(plot->settlingMarker()->data()->at(0)->key, e.step.settlingTimeSeconds);
     QCOMPARE(plot->peakMarker()->data()->at(0)->key, e.step.peakTimeSeconds);
@@ -125,14 +126,16 @@ void TstRequirementViews::stepTabDrawsTheCoreView() {
     QCOMPARE(plot->riseMarker()->data()->at(0)->key, v.rise.lowCrossingSeconds);
     QCOMPARE(plot->riseMarker()->data()->at(1)->value, 0.9 * fin);
     const QStringList texts = plot->markerTexts();
-    QVERIFY2(texts.contains(QString("settles %1 s").arg(QString::number(e.step.settlingTimeSeconds, 'g', 3))),
+    QVERIFY2(texts.contains(
+                 QString("settles %1 s").arg(QString::number(e.step.settlingTimeSeconds, 'g', 3))),
              qPrintable(texts.join(" | ")));
     QVERIFY(texts.contains(QString("  rise %1 s").arg(QString::number(v.rise.seconds, 'g', 3))));
     // The default specification: overshoot <= 0 % (bound = final value plus the round-off
     // slack), its 100 s settling limit beyond the 21 s view and said so.
     QCOMPARE(plot->overshootBoundDrawn(), v.envelope.overshootBound());
     QVERIFY(std::isnan(plot->bandStartDrawn()));
-    QVERIFY2(plot->noticeText().contains("settling limit 100 s lies beyond the right edge"), qPrintable(plot->noticeText()));
+    QVERIFY2(plot->noticeText().contains("settling limit 100 s lies beyond the right edge"),
+             qPrintable(plot->noticeText()));
     // The samples drawn red are the core's violations, every one of them.
     int expected = 0;
     for (std::size_t k = 0; k < v.violations.size(); ++k) {
@@ -188,7 +191,8 @@ void TstRequirementViews::polePlacementAxisShowsBothSteps() {
     QCOMPARE(with->data()->at(with->dataCount() - 1)->value, v.curves[0].curve.y.back());
     // A discrete loop is drawn as its held samples.
     QCOMPARE(with->lineStyle(), QCPGraph::lsStepLeft);
-    // The previewed step moves before t = 0 (Patrick, Ishak and Adnan: ZPETC looks d + 1 samples ahead).
+    // The previewed step moves before t = 0 (Patrick, Ishak and Adnan: ZPETC looks d + 1 samples
+    // ahead).
     QVERIFY(with->data()->at(0)->key < 0.0);
     // ZPETC off: the loop alone is the step the axis runs, drawn first and marked.
     PpAxisSettings pp = session_->session().axes[0].pp;
@@ -196,7 +200,8 @@ void TstRequirementViews::polePlacementAxisShowsBothSteps() {
     session_->setPp(0, pp);
     QCOMPARE(plot->curveGraph(StepCurveKind::LoopAlone)->name(), QString("loop alone Kf B/T"));
     QCOMPARE(plot->curveGraph(StepCurveKind::WithZpetc)->name(), QString("with ZPETC (off)"));
-    QCOMPARE(plot->settlingMarker()->data()->at(0)->key, session_->axisEvaluation(0).step.settlingTimeSeconds);
+    QCOMPARE(plot->settlingMarker()->data()->at(0)->key,
+             session_->axisEvaluation(0).step.settlingTimeSeconds);
 }
 
 void TstRequirementViews::noStepForAnInvalidOrUnstableAxis() {
@@ -224,7 +229,8 @@ void TstRequirementViews::noStepForAnInvalidOrUnstableAxis() {
 void TstRequirementViews::stepHoverReadout() {
     StepPlot* plot = window_->stepPlot();
     plot->replot(QCustomPlot::rpImmediateRefresh);
-    const QPoint at(static_cast<int>(plot->xAxis->coordToPixel(2.0)), plot->axisRect()->center().y());
+    const QPoint at(static_cast<int>(plot->xAxis->coordToPixel(2.0)),
+                    plot->axisRect()->center().y());
     QTest::mouseMove(plot, at);
     QTRY_VERIFY(plot->readoutText().startsWith("t = "));
     // The time read back is the hovered one, to a pixel ("t = 2.01 s   y = ...": word 2).
@@ -276,11 +282,15 @@ void TstRequirementViews::rootLocusDrawsTheSpecification() {
         QVERIFY(dominant.imag() > 0.0);
         QCOMPARE(o.dominantPoles()->dataCount(), 2);
         const auto first = o.dominantPoles()->data()->constBegin();
-        XYT_COMPARE_NEAR(std::abs(Complex(first->key, first->value)), std::abs(dominant), 0.0, 1e-9);
+        XYT_COMPARE_NEAR(std::abs(Complex(first->key, first->value)), std::abs(dominant), 0.0,
+                         1e-9);
         const QString name = o.dominantPoles()->name();
-        QVERIFY2(name.contains(QStringLiteral("ωn %1 rad/s").arg(QString::number(std::abs(dominant), 'g', 3))),
-                 qPrintable(name));
-        QVERIFY2(name.contains(QStringLiteral("ζ %1").arg(QString::number(-dominant.real() / std::abs(dominant), 'g', 2))),
+        QVERIFY2(
+            name.contains(
+                QStringLiteral("ωn %1 rad/s").arg(QString::number(std::abs(dominant), 'g', 3))),
+            qPrintable(name));
+        QVERIFY2(name.contains(QStringLiteral("ζ %1").arg(
+                     QString::number(-dominant.real() / std::abs(dominant), 'g', 2))),
                  qPrintable(name));
         XYT_COMPARE_NEAR(std::abs(dominant), 1.37, 0.0, 0.01);
     }
@@ -293,7 +303,8 @@ void TstRequirementViews::rootLocusDrawsTheSpecification() {
         breaking += checkPole(p, req).any() ? 1 : 0;
     QVERIFY(breaking > 0);
     QCOMPARE(o.violatingPoles()->dataCount(), breaking);
-    for (auto it = o.violatingPoles()->data()->constBegin(); it != o.violatingPoles()->data()->constEnd(); ++it)
+    for (auto it = o.violatingPoles()->data()->constBegin();
+         it != o.violatingPoles()->data()->constEnd(); ++it)
         QVERIFY(checkPole(Complex(it->key, it->value), req).any());
     // A loose specification: nothing breaks it, no ring.
     setSpec(100.0, 1e6);

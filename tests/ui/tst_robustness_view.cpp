@@ -5,15 +5,15 @@
 // outlived by the view. In XY-contour mode it drives analyzeContourRobustness the same way: the
 // envelope, histogram and XY band drawn are the core's joint result, the worst pair loads into
 // both axes as one undo step, and the mode follows the trajectory (no contour for a cubic).
-#include "ui/robustness_view.h"
 #include "core/session/robustness_problem.h"
+#include "tests/support/plot_layout_checks.h"
+#include "tests/support/tolerance.h"
 #include "ui/plots/contour_band_plot.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
 #include "ui/plots/sensitivity_plot.h"
+#include "ui/robustness_view.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/plot_layout_checks.h"
-#include "tests/support/tolerance.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -98,12 +98,14 @@ void TstRobustnessView::drawsTheCoresResult() {
     for (int i = 0; i < maxData->size(); i += 37) {
         QCOMPARE(maxData->at(i)->key, r.error.t[static_cast<std::size_t>(i)]);
         QCOMPARE(maxData->at(i)->value, r.error.max[static_cast<std::size_t>(i)]);
-        QCOMPARE(view_->envelopePlot()->nominalGraph()->data()->at(i)->value, r.error.nominal[static_cast<std::size_t>(i)]);
+        QCOMPARE(view_->envelopePlot()->nominalGraph()->data()->at(i)->value,
+                 r.error.nominal[static_cast<std::size_t>(i)]);
     }
     // The histogram counts every stable plant once; max |u| has the actuator limit drawn.
     view_->figureBox()->setCurrentIndex(2);
     double total = 0.0;
-    for (auto it = view_->histogramPlot()->bars()->data()->constBegin(); it != view_->histogramPlot()->bars()->data()->constEnd(); ++it)
+    for (auto it = view_->histogramPlot()->bars()->data()->constBegin();
+         it != view_->histogramPlot()->bars()->data()->constEnd(); ++it)
         total += it->value;
     QCOMPARE(static_cast<int>(total), r.maxAbsU.count);
     QCOMPARE(view_->histogramPlot()->limitDrawn(), session_->session().umaxVolts);
@@ -111,7 +113,8 @@ void TstRobustnessView::drawsTheCoresResult() {
     // The other signals and figures come from the same result.
     view_->signalBox()->setCurrentIndex(2);
     QCOMPARE(view_->envelopePlot()->minGraph()->data()->at(0)->value, r.command.min[0]);
-    QVERIFY(view_->statusText().contains(QString::number(100.0 * r.fractionMeetingSpec, 'g', 3) + " % meet"));
+    QVERIFY(view_->statusText().contains(QString::number(100.0 * r.fractionMeetingSpec, 'g', 3) +
+                                         " % meet"));
     // A Guillemin-Truxal axis has no ZPETC: the sensitivity choice says so.
     view_->figureBox()->setCurrentIndex(3);
     QVERIFY(!view_->sensitivityPlot()->hasResult());
@@ -155,7 +158,8 @@ void TstRobustnessView::designChangeClearsTheResult() {
 
 void TstRobustnessView::polePlacementAxisHasItsCoefficients() {
     session_->setMethod(0, DesignMethod::PolePlacementZpetc);
-    // Patrick, Ishak and Adnan's x-axis model: A = 1 + a1 z^-1 + a2 z^-2, B = b1 z^-1 + b2 z^-2 + b3 z^-3.
+    // Patrick, Ishak and Adnan's x-axis model: A = 1 + a1 z^-1 + a2 z^-2, B = b1 z^-1 + b2 z^-2 +
+    // b3 z^-3.
     QCOMPARE(view_->parameterNames(), (QStringList{"a1", "a2", "b1", "b2", "b3"}));
     view_->rangeBox("b1")->setValue(20.0);
     view_->samplesBox()->setValue(8);
@@ -173,7 +177,8 @@ void TstRobustnessView::polePlacementAxisHasItsCoefficients() {
     QVERIFY(view_->sensitivityPlot()->hasResult());
     QCOMPARE(view_->sensitivityPlot()->withFfGraph()->data()->size(), 5);
     for (int i = 0; i < 5; ++i) {
-        QCOMPARE(view_->sensitivityPlot()->withFfGraph()->data()->at(i)->value, curve[static_cast<std::size_t>(i)].rmseWithFf.p50);
+        QCOMPARE(view_->sensitivityPlot()->withFfGraph()->data()->at(i)->value,
+                 curve[static_cast<std::size_t>(i)].rmseWithFf.p50);
         QCOMPARE(view_->sensitivityPlot()->withoutFfGraph()->data()->at(i)->value,
                  curve[static_cast<std::size_t>(i)].rmseWithoutFf.p50);
     }
@@ -225,7 +230,8 @@ void TstRobustnessView::contourModeDrawsTheCoresJointResult() {
     o.samples = 12;
     o.seed = 9;
     const ContourRobustnessResult r = analyzeContourRobustness(p, o);
-    QCOMPARE(view_->contourResult()->runs.size(), std::size_t(12 + 4)); // 2 uncertain parameters: 4 corners
+    QCOMPARE(view_->contourResult()->runs.size(),
+             std::size_t(12 + 4)); // 2 uncertain parameters: 4 corners
     QCOMPARE(view_->contourResult()->maxAbsContourError.p95, r.maxAbsContourError.p95);
     // The envelope is the contour error's, point for point.
     const auto* maxData = view_->envelopePlot()->maxGraph()->data().data();
@@ -244,8 +250,10 @@ void TstRobustnessView::contourModeDrawsTheCoresJointResult() {
     QCOMPARE(nominal->size(), static_cast<int>(r.base.size()));
     for (int j = 0; j < nominal->size(); j += 53) {
         const auto k = static_cast<std::size_t>(j);
-        QVERIFY(test::near(nominal->at(j)->key, r.base[k].x + m * r.error.nominal[k] * r.normal[k].x, 1e-12, 1e-12));
-        QVERIFY(test::near(nominal->at(j)->value, r.base[k].y + m * r.error.nominal[k] * r.normal[k].y, 1e-12, 1e-12));
+        QVERIFY(test::near(nominal->at(j)->key,
+                           r.base[k].x + m * r.error.nominal[k] * r.normal[k].x, 1e-12, 1e-12));
+        QVERIFY(test::near(nominal->at(j)->value,
+                           r.base[k].y + m * r.error.nominal[k] * r.normal[k].y, 1e-12, 1e-12));
     }
     // The 5-95 % polygon: its upper edge forward, its lower edge back.
     const auto* inner = band->innerBands().front()->data().data();
@@ -254,7 +262,8 @@ void TstRobustnessView::contourModeDrawsTheCoresJointResult() {
     view_->figureBox()->setCurrentIndex(0);
     QVERIFY(view_->histogramPlot()->isVisible());
     double total = 0.0;
-    for (auto it = view_->histogramPlot()->bars()->data()->constBegin(); it != view_->histogramPlot()->bars()->data()->constEnd(); ++it)
+    for (auto it = view_->histogramPlot()->bars()->data()->constBegin();
+         it != view_->histogramPlot()->bars()->data()->constEnd(); ++it)
         total += it->value;
     QCOMPARE(static_cast<int>(total), r.maxAbsContourError.count);
     QCOMPARE(view_->histogramPlot()->nominalDrawn(), r.nominal.maxAbsContourError);
@@ -281,7 +290,9 @@ void TstRobustnessView::contourWorstPairLoadsBothAxesInOneStep() {
     TrajectorySettings t = session_->session().trajectory;
     t.kind = TrajectoryKind::Circle;
     session_->setTrajectory(t);
-    session_->setMethod(0, DesignMethod::PolePlacementZpetc); // Patrick, Ishak and Adnan's circle, x by pole placement
+    session_->setMethod(
+        0,
+        DesignMethod::PolePlacementZpetc); // Patrick, Ishak and Adnan's circle, x by pole placement
     view_->contourBox()->setChecked(true);
     // The union of both axes' names: the ARX a1, a2, b1..b3 and the plant's k0 (a1, a2 shared).
     QCOMPARE(view_->parameterNames().size(), 6);
@@ -290,7 +301,8 @@ void TstRobustnessView::contourWorstPairLoadsBothAxesInOneStep() {
     view_->samplesBox()->setValue(6);
     view_->cornersBox()->setChecked(false);
     runAndWait();
-    const ContourRobustnessResult r = *view_->contourResult(); // (a copy: loading clears the view's)
+    const ContourRobustnessResult r =
+        *view_->contourResult(); // (a copy: loading clears the view's)
     const std::vector<double> worst = r.runs[*r.worst].values;
     const std::size_t steps = static_cast<std::size_t>(session_->undoStack()->count());
     const Session before = session_->session();
@@ -333,7 +345,6 @@ void TstRobustnessView::contourModeFollowsTheTrajectory() {
     QVERIFY(!view_->envelopePlot()->hasResult());
 }
 
-
 void TstRobustnessView::computedResultsAreReadable_data() {
     QTest::addColumn<bool>("contour");
     QTest::addColumn<double>("rangePct");
@@ -371,9 +382,12 @@ void TstRobustnessView::computedResultsAreReadable() {
                 if (!plot->isVisible())
                     continue;
                 plot->replot(QCustomPlot::rpImmediateRefresh);
-                plot->replot(QCustomPlot::rpImmediateRefresh); // as shown: after the guard's re-layout
+                plot->replot(
+                    QCustomPlot::rpImmediateRefresh); // as shown: after the guard's re-layout
                 for (const QString& p : test::annotationProblems(plot))
-                    problems << QString("%1x%2, %3: %4").arg(size.width()).arg(size.height())
+                    problems << QString("%1x%2, %3: %4")
+                                    .arg(size.width())
+                                    .arg(size.height())
                                     .arg(view_->figureBox()->currentText(), p);
             }
         }

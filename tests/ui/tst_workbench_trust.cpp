@@ -3,46 +3,46 @@
 // result. Each test drives the real widgets and names the defect it pins down.
 #include "core/analysis/root_locus.h"
 #include "core/model/number_format.h"
+#include "tests/support/gui_checks.h"
+#include "tests/support/tolerance.h"
 #include "ui/design_space_view.h"
+#include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
-#include "ui/plots/parameter_locus_plot.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/panels/plant_editor.h"
-#include "ui/plots/pole_zero_plot.h"
 #include "ui/panels/pp_editor.h"
-#include "ui/session/recovery_store.h"
-#include "ui/plots/root_locus_plot.h"
-#include "ui/files/session_file.h"
-#include "ui/session/session_file_controller.h"
-#include "ui/plots/time_response_plot.h"
 #include "ui/panels/trajectory_editor.h"
+#include "ui/plots/parameter_locus_plot.h"
+#include "ui/plots/pole_zero_plot.h"
+#include "ui/plots/root_locus_plot.h"
+#include "ui/plots/time_response_plot.h"
+#include "ui/session/recovery_store.h"
+#include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
-#include "tests/support/gui_checks.h"
-#include "tests/support/tolerance.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QStatusBar>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
-#include <QLabel>
-#include <QWheelEvent>
-#include <QToolButton>
-#include <QTabBar>
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 using namespace xyt;
 using namespace xyt::ui;
@@ -120,7 +120,8 @@ QString TstWorkbenchTrust::rowText(int row, int column) const {
 
 void TstWorkbenchTrust::setPpB(int axis, const QString& text) {
     session_->setCurrentAxis(axis);
-    if (session_->session().axes[static_cast<std::size_t>(axis)].method != DesignMethod::PolePlacementZpetc)
+    if (session_->session().axes[static_cast<std::size_t>(axis)].method !=
+        DesignMethod::PolePlacementZpetc)
         session_->setMethod(axis, DesignMethod::PolePlacementZpetc);
     QLineEdit* b = window_->ppEditor()->bField();
     test::typeInto(b, text);
@@ -135,7 +136,8 @@ void TstWorkbenchTrust::recoveryCopyFollowsUnsavedWork() {
     QVERIFY(!QFile::exists(store.copyPath()));
     window_->kpSlider()->spinBox()->setValue(45.0);
     // Written a few milliseconds after the change, atomically, as a session document.
-    QTRY_VERIFY2(QFile::exists(store.copyPath()), qPrintable(store.copyPath() + ": " + store.lastError()));
+    QTRY_VERIFY2(QFile::exists(store.copyPath()),
+                 qPrintable(store.copyPath() + ": " + store.lastError()));
     QFile file(store.copyPath());
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
@@ -177,7 +179,7 @@ void TstWorkbenchTrust::recoveryIsOfferedAfterACrash() {
     QVERIFY(session_->session() == lost);
     QVERIFY(session_->isModified());
     QCOMPARE(window_->files()->currentFile(), QStringLiteral("/home/user/table.json"));
-    QCOMPARE(window_->kpSlider()->value(), 61.0); // the widgets show it
+    QCOMPARE(window_->kpSlider()->value(), 61.0);            // the widgets show it
     QVERIFY(RecoveryStore::findOrphans(dir.path()).empty()); // offered once
 }
 
@@ -238,9 +240,14 @@ void TstWorkbenchTrust::restoredWindowFitsTheScreen() {
     const QSize least = restored.minimumSizeHint().expandedTo(restored.minimumSize());
     const QRect frame = restored.frameGeometry();
     const QString where = QStringLiteral("%1x%2+%3+%4 in %5x%6, minimum %7x%8")
-                              .arg(frame.width()).arg(frame.height()).arg(frame.x()).arg(frame.y())
-                              .arg(available.width()).arg(available.height())
-                              .arg(least.width()).arg(least.height());
+                              .arg(frame.width())
+                              .arg(frame.height())
+                              .arg(frame.x())
+                              .arg(frame.y())
+                              .arg(available.width())
+                              .arg(available.height())
+                              .arg(least.width())
+                              .arg(least.height());
     QVERIFY2(restored.width() <= std::max(available.width(), least.width()), qPrintable(where));
     QVERIFY2(restored.height() <= std::max(available.height(), least.height()), qPrintable(where));
     QVERIFY2(frame.left() >= available.left() && frame.top() >= available.top(), qPrintable(where));
@@ -293,7 +300,8 @@ void TstWorkbenchTrust::hoverReadoutEndsWithTheHover() {
         for (const auto& r : b.roots)
             if (!found && std::abs(r.imag()) > 5 && plot->xAxis->range().contains(r.real()) &&
                 plot->yAxis->range().contains(r.imag())) {
-                pixel = QPoint(qRound(plot->xAxis->coordToPixel(r.real())), qRound(plot->yAxis->coordToPixel(r.imag())));
+                pixel = QPoint(qRound(plot->xAxis->coordToPixel(r.real())),
+                               qRound(plot->yAxis->coordToPixel(r.imag())));
                 found = plot->pickAtPixel(pixel).has_value();
             }
     QVERIFY(found);
@@ -323,7 +331,8 @@ void TstWorkbenchTrust::viewRefitsWhenAPoleLeavesIt() {
         for (const auto& p : set.poles)
             leftmost = std::min(leftmost, p.real());
     QVERIFY(leftmost < -100.0);
-    QVERIFY2(pz->xAxis->range().contains(leftmost), qPrintable(QString::number(pz->xAxis->range().lower)));
+    QVERIFY2(pz->xAxis->range().contains(leftmost),
+             qPrintable(QString::number(pz->xAxis->range().lower)));
     window_->upperTabs()->setCurrentWidget(window_->parameterLocusPlot());
     // The parameter locus is framed on the poles that move: a pole outside its view
     // is one that barely moves, and the notice names it.
@@ -359,8 +368,8 @@ void TstWorkbenchTrust::zoomIsKeptUntilTheViewIsReset() {
     for (QCustomPlot* plot : {static_cast<QCustomPlot*>(rl), static_cast<QCustomPlot*>(time)}) {
         plot->replot(QCustomPlot::rpImmediateRefresh);
         const QPointF at = plot->axisRect()->rect().center();
-        QWheelEvent wheel(at, plot->mapToGlobal(at), QPoint(), QPoint(0, 120 * 20), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
+        QWheelEvent wheel(at, plot->mapToGlobal(at), QPoint(), QPoint(0, 120 * 20), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(plot, &wheel);
     }
     QVERIFY(rl->viewHeld() && time->viewHeld());
@@ -395,9 +404,11 @@ void TstWorkbenchTrust::everyLowerTabIsInViewAt1366x768() {
     QTabBar* bar = window_->lowerTabs()->tabBar();
     QTest::qWait(20);
     for (int i = 0; i < bar->count(); ++i)
-        QVERIFY2(bar->rect().contains(bar->tabRect(i)),
-                 qPrintable(QString("%1 at %2..%3 of %4 px").arg(bar->tabText(i)).arg(bar->tabRect(i).left())
-                                .arg(bar->tabRect(i).right()).arg(bar->width())));
+        QVERIFY2(bar->rect().contains(bar->tabRect(i)), qPrintable(QString("%1 at %2..%3 of %4 px")
+                                                                       .arg(bar->tabText(i))
+                                                                       .arg(bar->tabRect(i).left())
+                                                                       .arg(bar->tabRect(i).right())
+                                                                       .arg(bar->width())));
     for (const QToolButton* arrow : bar->findChildren<QToolButton*>())
         QVERIFY(!arrow->isVisible());
 }
@@ -407,7 +418,8 @@ void TstWorkbenchTrust::snapshotOverlayInEveryPanelWithLegend() {
     session_->setKp(0, 80.0);
     window_->setOverlaySnapshot(0);
     TimeResponsePlot* plot = window_->timePlot();
-    const AxisEvaluation snap = evaluateAxis(session_->session().withDesign(session_->session().snapshots[0]), 0);
+    const AxisEvaluation snap =
+        evaluateAxis(session_->session().withDesign(session_->session().snapshots[0]), 0);
     QVERIFY(test::sameSignal(plot->snapshotOutputGraph()->data(), snap.run.t, snap.run.y));
     QVERIFY(test::sameSignal(plot->snapshotErrorGraph()->data(), snap.run.t, snap.run.e));
     QVERIFY(test::sameSignal(plot->snapshotControlGraph()->data(), snap.run.t, snap.run.u));
@@ -469,8 +481,9 @@ void TstWorkbenchTrust::truncatedLocusIsSaidAtThePlot() {
     window_->upperTabs()->setCurrentWidget(window_->rootLocusPlot());
     const QString notice = window_->rootLocusPlot()->noticeText();
     // The box wraps long lines: compare with the white space folded.
-    QVERIFY2(notice.simplified().contains(QString::fromStdString(locus.warnings.front()).simplified()),
-             qPrintable(notice));
+    QVERIFY2(
+        notice.simplified().contains(QString::fromStdString(locus.warnings.front()).simplified()),
+        qPrintable(notice));
 }
 
 void TstWorkbenchTrust::unsaturatedDiscreteLoopIsSaid() {
@@ -483,7 +496,11 @@ void TstWorkbenchTrust::unsaturatedDiscreteLoopIsSaid() {
     QVERIFY(window_->timePlot()->controlNoticeText().contains("not clipped"));
     QVERIFY(window_->metricsPanel()->noticeText().contains("without saturation"));
     QVERIFY(rowText(MetricsPanel::Saturated, 0).contains("*"));
-    QVERIFY(window_->metricsPanel()->table()->item(MetricsPanel::Saturated, 0)->toolTip().contains("not applied"));
+    QVERIFY(window_->metricsPanel()
+                ->table()
+                ->item(MetricsPanel::Saturated, 0)
+                ->toolTip()
+                .contains("not applied"));
 }
 
 void TstWorkbenchTrust::divergedRunIsNotApplicableAndFails() {
@@ -498,8 +515,8 @@ void TstWorkbenchTrust::divergedRunIsNotApplicableAndFails() {
     QVERIFY(!e.step.stable);
     QVERIFY(e.metrics.diverged);
     // Before the fix: "0.0000 ✓" for max |e| and max |u| and "no ✓" for saturated.
-    for (int row : {MetricsPanel::Rmse, MetricsPanel::MaxError, MetricsPanel::MaxErrorPct, MetricsPanel::MaxU,
-                    MetricsPanel::Saturated, MetricsPanel::Itae}) {
+    for (int row : {MetricsPanel::Rmse, MetricsPanel::MaxError, MetricsPanel::MaxErrorPct,
+                    MetricsPanel::MaxU, MetricsPanel::Saturated, MetricsPanel::Itae}) {
         const QString text = rowText(row, 0);
         QVERIFY2(text.startsWith("n/a") || text.startsWith("unstable"), qPrintable(text));
         QVERIFY2(!text.contains(QStringLiteral("✓")), qPrintable(text));
@@ -526,14 +543,19 @@ void TstWorkbenchTrust::implementationThatSaturatesFails() {
     QVERIFY2(error.contains(QStringLiteral("✗")) && error.contains("digital"), qPrintable(error));
     // The figure shown is the implementation's (tens of percent of the travel), not 3.8e-05.
     QVERIFY2(error.split(' ').first().toDouble() > 10.0, qPrintable(error));
-    QVERIFY(window_->metricsPanel()->table()->item(MetricsPanel::MaxErrorPct, 0)->toolTip().contains("implementation"));
+    QVERIFY(window_->metricsPanel()
+                ->table()
+                ->item(MetricsPanel::MaxErrorPct, 0)
+                ->toolTip()
+                .contains("implementation"));
     const QString settle = rowText(MetricsPanel::SettleAfterMove, 0);
     QVERIFY2(settle.contains(QStringLiteral("✗")), qPrintable(settle));
     QVERIFY(!rowText(MetricsPanel::Saturated, 0).contains(QStringLiteral("✓")));
     QVERIFY(window_->metricsPanel()->noticeText().contains("its digital implementation does not"));
     // The pole-placement plant cannot hold 600 mm within 2.5 V: A(1)/B(1) of Patrick, Ishak and
     // Adnan's model is 0.0003/0.0595, so 600 mm needs 600 * 0.0003 / 0.0595 = 3.025 V.
-    QVERIFY2(window_->metricsPanel()->noticeText().contains("out of the plant's reach: holding 600 mm needs 3.03 V"),
+    QVERIFY2(window_->metricsPanel()->noticeText().contains(
+                 "out of the plant's reach: holding 600 mm needs 3.03 V"),
              qPrintable(window_->metricsPanel()->noticeText()));
 }
 
@@ -567,8 +589,11 @@ void TstWorkbenchTrust::firstViewSaysWhyTheSpecificationFails() {
     QVERIFY(!session_->axisEvaluation(0).check.allPassed());
     // The verdict is read whole at 1366x768 (a longer title beside it cut it to "hover for wh").
     QLabel* verdict = window_->metricsPanel()->verdictLabel();
-    QVERIFY2(verdict->fontMetrics().horizontalAdvance(verdict->text()) <= verdict->contentsRect().width(),
-             qPrintable(QString("%1 px for '%2'").arg(verdict->contentsRect().width()).arg(verdict->text())));
+    QVERIFY2(
+        verdict->fontMetrics().horizontalAdvance(verdict->text()) <=
+            verdict->contentsRect().width(),
+        qPrintable(
+            QString("%1 px for '%2'").arg(verdict->contentsRect().width()).arg(verdict->text())));
     QPushButton* relax = window_->metricsPanel()->relaxButton();
     QVERIFY(relax->isEnabled());
     // Relax: the limits become what the design reaches (rounded up to 3 digits), one undo step,
@@ -578,8 +603,9 @@ void TstWorkbenchTrust::firstViewSaysWhyTheSpecificationFails() {
     QTest::mouseClick(relax, Qt::LeftButton);
     QCOMPARE(session_->undoStack()->count(), steps + 1);
     const Specification after = session_->session().spec;
-    XYT_COMPARE_NEAR(after.maxOvershootPct, roundUp3(std::max(session_->axisEvaluation(0).step.overshootPct,
-                                                               session_->axisEvaluation(1).step.overshootPct)),
+    XYT_COMPARE_NEAR(after.maxOvershootPct,
+                     roundUp3(std::max(session_->axisEvaluation(0).step.overshootPct,
+                                       session_->axisEvaluation(1).step.overshootPct)),
                      0.0, 0.0);
     QVERIFY(after.maxOvershootPct > before.maxOvershootPct);
     for (int axis = 0; axis < 2; ++axis)
@@ -652,7 +678,8 @@ void TstWorkbenchTrust::dragUndoEntryNamesTheFinalValue() {
     const double last = session_->session().axes[0].gt.omegaNRadPerSec;
     QCOMPARE(session_->undoStack()->count(), 1);
     const QString text = session_->undoStack()->undoText();
-    QVERIFY2(text.endsWith(QString::number(last)), qPrintable(text + " / " + QString::number(last)));
+    QVERIFY2(text.endsWith(QString::number(last)),
+             qPrintable(text + " / " + QString::number(last)));
 }
 
 void TstWorkbenchTrust::sliderFieldsTakeWhatIsTyped() {
@@ -675,7 +702,8 @@ void TstWorkbenchTrust::sliderFieldsTakeWhatIsTyped() {
     session_->setKp(0, 30.0);
     test::typeInto(field, "3x0");
     QCOMPARE(session_->session().axes[0].gt.kp, 30.0);
-    QVERIFY2(kp->fieldError().startsWith("kp: '3x0' is not a number"), qPrintable(kp->fieldError()));
+    QVERIFY2(kp->fieldError().startsWith("kp: '3x0' is not a number"),
+             qPrintable(kp->fieldError()));
     test::typeInto(field, "1e300");
     QCOMPARE(session_->session().axes[0].gt.kp, 30.0);
     QVERIFY2(kp->fieldError().contains("'1e300'"), qPrintable(kp->fieldError()));
@@ -686,7 +714,8 @@ void TstWorkbenchTrust::sliderFieldsTakeWhatIsTyped() {
     QVERIFY2(kp->exactText().startsWith("2111, beyond the slider"), qPrintable(kp->exactText()));
     // The tooltips read the parameter's name, not its mnemonic ("k&p").
     QCOMPARE(kp->slider()->toolTip(), QStringLiteral("kp (logarithmic scale)"));
-    QCOMPARE(window_->omegaNSlider()->slider()->toolTip(), QStringLiteral("ωn (logarithmic scale)"));
+    QCOMPARE(window_->omegaNSlider()->slider()->toolTip(),
+             QStringLiteral("ωn (logarithmic scale)"));
 }
 
 // ---- Freezes --------------------------------------------------------------------------------
@@ -697,8 +726,10 @@ void TstWorkbenchTrust::liveRefreshIsBounded() {
     QCOMPARE(session_->session().trajectory.dtSeconds, 1e-5); // the session keeps what was typed
     // 130 s / 1e-5 s = 13 million samples: the live views run at most a million.
     const double duration = session_->session().trajectory.effectiveDurationSeconds();
-    XYT_COMPARE_NEAR(session_->liveSession().trajectory.dtSeconds, duration / (TuningSession::kLiveSampleLimit - 1), 1e-15, 0.0);
-    QVERIFY(session_->axisEvaluation(0).run.t.size() <= static_cast<std::size_t>(TuningSession::kLiveSampleLimit));
+    XYT_COMPARE_NEAR(session_->liveSession().trajectory.dtSeconds,
+                     duration / (TuningSession::kLiveSampleLimit - 1), 1e-15, 0.0);
+    QVERIFY(session_->axisEvaluation(0).run.t.size() <=
+            static_cast<std::size_t>(TuningSession::kLiveSampleLimit));
     QVERIFY(window_->metricsPanel()->noticeText().contains("live view"));
     QVERIFY(window_->timePlot()->noticeText().contains("live view"));
     // The plot holds the run's extremes, not a million points.
@@ -718,7 +749,8 @@ void TstWorkbenchTrust::runThatCannotFitIsRefusedAtTheField() {
     NumberField* dt = window_->trajectoryEditor()->field("dt");
     test::typeInto(dt, "1e-9");
     QCOMPARE(session_->session().trajectory.dtSeconds, before);
-    QVERIFY2(dt->toolTip().contains("samples") && dt->toolTip().startsWith("dt"), qPrintable(dt->toolTip()));
+    QVERIFY2(dt->toolTip().contains("samples") && dt->toolTip().startsWith("dt"),
+             qPrintable(dt->toolTip()));
 }
 
 QTEST_MAIN(TstWorkbenchTrust)

@@ -10,7 +10,9 @@ namespace xyt::files {
 namespace {
 /// Every number of the export passes exportableNumber: QJsonValue writes inf and NaN as null,
 /// which firmware tooling reads as 0 or fails on. @p field names the session path it comes from.
-double finite(double v, const std::string& field) { return exportableNumber(v, field); }
+double finite(double v, const std::string& field) {
+    return exportableNumber(v, field);
+}
 
 QJsonArray array(const std::vector<double>& v, const std::string& field) {
     QJsonArray a;
@@ -36,49 +38,61 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
         const std::string ppField = axisField(i, "pp"), gtField = axisField(i, "gt");
         if (a.ok && a.pp) {
             axis.insert("position_unit", "mm (the ARX model's units)");
-            axis.insert("rst", QJsonObject{
-                {"F", array(a.pp->f.ascending(), ppField + " (F)")},
-                {"G", array(a.pp->g.ascending(), ppField + " (G)")},
-                {"Kf", finite(a.pp->kf, ppField + " (Kf)")},
-                {"T", array(a.pp->t.ascending(), ppField + ".t1")},
-                {"ts", finite(a.pp->tsSeconds, ppField + ".ts")},
-                {"order", "ascending powers of z^-1"},
-                {"law", "F(z^-1) u[k] = Kf w[k] - G(z^-1) y[k]; w = r, or the ZPETC output"},
-                {"units", "ts in s, u in the ARX model's input units"}});
-            if (settings.pp.zpetcEnabled && a.zpetc)
-                axis.insert("zpetc", QJsonObject{
-                    {"num", array(a.zpetc->feedforwardNum.ascending(), ppField + ".zpetc (feedforward)")},
-                    {"den", array(a.zpetc->feedforwardDen.ascending(), ppField + ".zpetc (feedforward)")},
-                    {"preview_steps", a.zpetc->previewSteps},
-                    {"gain_factor", finite(a.zpetc->gainFactor, ppField + ".zpetc (gain factor)")},
+            axis.insert(
+                "rst",
+                QJsonObject{
+                    {"F", array(a.pp->f.ascending(), ppField + " (F)")},
+                    {"G", array(a.pp->g.ascending(), ppField + " (G)")},
+                    {"Kf", finite(a.pp->kf, ppField + " (Kf)")},
+                    {"T", array(a.pp->t.ascending(), ppField + ".t1")},
+                    {"ts", finite(a.pp->tsSeconds, ppField + ".ts")},
                     {"order", "ascending powers of z^-1"},
-                    {"law", "den(z^-1) w[k] = num(z^-1) r[k + preview_steps]"}});
+                    {"law", "F(z^-1) u[k] = Kf w[k] - G(z^-1) y[k]; w = r, or the ZPETC output"},
+                    {"units", "ts in s, u in the ARX model's input units"}});
+            if (settings.pp.zpetcEnabled && a.zpetc)
+                axis.insert(
+                    "zpetc",
+                    QJsonObject{{"num", array(a.zpetc->feedforwardNum.ascending(),
+                                              ppField + ".zpetc (feedforward)")},
+                                {"den", array(a.zpetc->feedforwardDen.ascending(),
+                                              ppField + ".zpetc (feedforward)")},
+                                {"preview_steps", a.zpetc->previewSteps},
+                                {"gain_factor",
+                                 finite(a.zpetc->gainFactor, ppField + ".zpetc (gain factor)")},
+                                {"order", "ascending powers of z^-1"},
+                                {"law", "den(z^-1) w[k] = num(z^-1) r[k + preview_steps]"}});
             axes.append(axis);
             continue;
         }
         const DigitalController digital = axisDigitalController(session, evaluation, i, options);
         if (a.gt) {
             axis.insert("position_unit", QStringLiteral("model unit (%1 per mm of trajectory)")
-                                             .arg(finite(settings.gt.modelUnitsPerPositionUnit, gtField + ".model_unit_scale")));
-            axis.insert("continuous_pi",
-                        QJsonObject{{"kp", finite(a.gt->kp, gtField + ".kp")},
-                                    {"ki", finite(a.gt->ki, gtField + " (ki)")},
-                                    {"form", "u(s) = (kp + ki/s) e(s)"},
-                                    {"units", "kp in V per model unit, ki in V per model unit per s"}});
+                                             .arg(finite(settings.gt.modelUnitsPerPositionUnit,
+                                                         gtField + ".model_unit_scale")));
+            axis.insert(
+                "continuous_pi",
+                QJsonObject{{"kp", finite(a.gt->kp, gtField + ".kp")},
+                            {"ki", finite(a.gt->ki, gtField + " (ki)")},
+                            {"form", "u(s) = (kp + ki/s) e(s)"},
+                            {"units", "kp in V per model unit, ki in V per model unit per s"}});
             axis.insert("reference_model",
-                        QJsonObject{{"num", array(a.gt->referenceModel.num().descending(), gtField + " (reference model)")},
-                                    {"den", array(a.gt->referenceModel.den().descending(), gtField + " (reference model)")},
+                        QJsonObject{{"num", array(a.gt->referenceModel.num().descending(),
+                                                  gtField + " (reference model)")},
+                                    {"den", array(a.gt->referenceModel.den().descending(),
+                                                  gtField + " (reference model)")},
                                     {"order", "descending powers of s"}});
         }
-        axis.insert("digital_controller",
-                    QJsonObject{{"num", array(digital.num, gtField + " (digital PI at controller_ts)")},
-                                {"den", array(digital.den, gtField + " (digital PI at controller_ts)")},
-                                {"ts", finite(digital.tsSeconds, "controller_ts")},
-                                {"discretization", QString::fromStdString(discretizationName(options.piMethod))},
-                                {"order", "ascending powers of z^-1"},
-                                {"difference_equation",
-                                 "u[k] = sum_i num[i] e[k-i] - sum_{i>=1} den[i] u[k-i], e = r - y"},
-                                {"units", "ts in s, u in V"}});
+        axis.insert(
+            "digital_controller",
+            QJsonObject{
+                {"num", array(digital.num, gtField + " (digital PI at controller_ts)")},
+                {"den", array(digital.den, gtField + " (digital PI at controller_ts)")},
+                {"ts", finite(digital.tsSeconds, "controller_ts")},
+                {"discretization", QString::fromStdString(discretizationName(options.piMethod))},
+                {"order", "ascending powers of z^-1"},
+                {"difference_equation",
+                 "u[k] = sum_i num[i] e[k-i] - sum_{i>=1} den[i] u[k-i], e = r - y"},
+                {"units", "ts in s, u in V"}});
         axes.append(axis);
     }
     // The implementation the controllers were checked with: the anti-windup travels
@@ -88,10 +102,12 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
         {"anti_windup", QString::fromStdString(antiWindupName(impl.antiWindup))},
         {"tracking_time", finite(impl.trackingTimeSeconds, "implementation.tracking_time")},
         {"delay_samples", impl.delaySamples},
-        {"encoder_resolution_mm", finite(impl.encoderResolutionMm, "implementation.encoder_resolution")},
+        {"encoder_resolution_mm",
+         finite(impl.encoderResolutionMm, "implementation.encoder_resolution")},
         {"dac_bits", impl.dacBits},
-        {"note", "the PI runs in integrator form I[k] = I[k-1] + c0 e[k] + c1 e[k-1], u = sat(kp e + I), "
-                 "with this anti-windup; see the C export for the exact step"}};
+        {"note",
+         "the PI runs in integrator form I[k] = I[k-1] + c0 e[k] + c1 e[k-1], u = sat(kp e + I), "
+         "with this anti-windup; see the C export for the exact step"}};
     return {{"format", "xytune-coefficients"},
             {"version", 1},
             {"umax_volts", finite(session.umaxVolts, "umax")},

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/files/session_file.h"
 
-#include "core/model/coefficient_parser.h"
 #include "core/io/file_io.h"
 #include "core/io/json_duplicate_keys.h"
+#include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
 #include "core/session/program_trajectory.h"
 #include "core/simulation/sampled_data.h"
@@ -104,19 +104,21 @@ public:
         const QJsonValue v = get(key);
         const double d = v.toDouble();
         if (!v.isDouble() || !std::isfinite(d) || d != std::floor(d) || d < lo || d > hi)
-            throw FormatError{join(path_, key), QStringLiteral("must be an integer in %1..%2%3")
-                                                    .arg(lo)
-                                                    .arg(hi)
-                                                    .arg(note)};
+            throw FormatError{
+                join(path_, key),
+                QStringLiteral("must be an integer in %1..%2%3").arg(lo).arg(hi).arg(note)};
         return static_cast<int>(d);
     }
-    ObjectReader child(const QString& key) { return ObjectReader(get(key), join(path_, key), warnings_); }
+    ObjectReader child(const QString& key) {
+        return ObjectReader(get(key), join(path_, key), warnings_);
+    }
 
     /// Reports keys that were never read.
     void finish() const {
         for (const QString& key : object_.keys())
             if (!used_.contains(key))
-                warnings_->append(QStringLiteral("%1: unknown field ignored").arg(join(path_, key)));
+                warnings_->append(
+                    QStringLiteral("%1: unknown field ignored").arg(join(path_, key)));
     }
 
 private:
@@ -134,13 +136,16 @@ QJsonArray toArray(const std::vector<double>& v) {
 }
 
 /// A number, or null for NaN (JSON has no NaN: an unknown standard deviation).
-QJsonValue numberOrNull(double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); }
+QJsonValue numberOrNull(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue();
+}
 
 QJsonObject originToJson(const ModelOrigin& o) {
     QJsonArray names, deviations;
     for (std::size_t i = 0; i < o.parameterNames.size(); ++i) {
         names.append(QString::fromStdString(o.parameterNames[i]));
-        deviations.append(i < o.standardDeviations.size() ? numberOrNull(o.standardDeviations[i]) : QJsonValue());
+        deviations.append(i < o.standardDeviations.size() ? numberOrNull(o.standardDeviations[i])
+                                                          : QJsonValue());
     }
     QJsonObject out{{"source", QString::fromStdString(o.source)},
                     {"structure", QString::fromStdString(o.structure)},
@@ -163,14 +168,16 @@ ModelOrigin readOrigin(ObjectReader r) {
     o.tsSeconds = r.positive("ts");
     const double samples = r.positive("samples");
     if (samples != std::floor(samples) || samples > 1e12)
-        throw FormatError{join(r.path(), "samples"), QStringLiteral("must be a whole number of samples")};
+        throw FormatError{join(r.path(), "samples"),
+                          QStringLiteral("must be a whole number of samples")};
     o.samples = static_cast<std::size_t>(samples);
     const auto optionalNumber = [&](const QString& key) {
         const QJsonValue v = r.get(key);
         if (v.isNull())
             return std::numeric_limits<double>::quiet_NaN();
         if (!v.isDouble() || !std::isfinite(v.toDouble()))
-            throw FormatError{join(r.path(), key), QStringLiteral("must be a finite number or null")};
+            throw FormatError{join(r.path(), key),
+                              QStringLiteral("must be a finite number or null")};
         return v.toDouble();
     };
     o.fitPercent = optionalNumber("fit");
@@ -179,26 +186,33 @@ ModelOrigin readOrigin(ObjectReader r) {
     const QJsonValue names = r.get("parameters");
     const QJsonValue deviations = r.get("std");
     if (!names.isArray() || names.toArray().size() > 1000)
-        throw FormatError{join(r.path(), "parameters"), QStringLiteral("must be an array of at most 1000 names")};
+        throw FormatError{join(r.path(), "parameters"),
+                          QStringLiteral("must be an array of at most 1000 names")};
     if (!deviations.isArray() || deviations.toArray().size() != names.toArray().size())
-        throw FormatError{join(r.path(), "std"), QStringLiteral("must be an array as long as \"parameters\"")};
+        throw FormatError{join(r.path(), "std"),
+                          QStringLiteral("must be an array as long as \"parameters\"")};
     for (qsizetype i = 0; i < names.toArray().size(); ++i) {
         const QJsonValue n = names.toArray()[i];
         const QJsonValue d = deviations.toArray()[i];
         if (!n.isString())
-            throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "parameters")).arg(i), QStringLiteral("must be a string")};
+            throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "parameters")).arg(i),
+                              QStringLiteral("must be a string")};
         if (!d.isNull() && (!d.isDouble() || !std::isfinite(d.toDouble())))
             throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "std")).arg(i),
                               QStringLiteral("must be a finite number or null")};
         o.parameterNames.push_back(n.toString().toStdString());
-        o.standardDeviations.push_back(d.isNull() ? std::numeric_limits<double>::quiet_NaN() : d.toDouble());
+        o.standardDeviations.push_back(d.isNull() ? std::numeric_limits<double>::quiet_NaN()
+                                                  : d.toDouble());
     }
     if (r.has("covariance")) {
         const QJsonValue c = r.get("covariance");
         const qsizetype n = names.toArray().size();
         if (!c.isArray() || c.toArray().size() != n * n)
-            throw FormatError{join(r.path(), "covariance"),
-                              QStringLiteral("must be an array of %1 numbers (the %2 x %2 matrix, row by row)").arg(n * n).arg(n)};
+            throw FormatError{
+                join(r.path(), "covariance"),
+                QStringLiteral("must be an array of %1 numbers (the %2 x %2 matrix, row by row)")
+                    .arg(n * n)
+                    .arg(n)};
         for (qsizetype i = 0; i < c.toArray().size(); ++i) {
             const QJsonValue v = c.toArray()[i];
             if (!v.isDouble() || !std::isfinite(v.toDouble()))
@@ -247,9 +261,14 @@ QString trajectoryKindName(TrajectoryKind kind) {
 
 QJsonObject trajectoryToJson(const TrajectorySettings& t) {
     return {{"kind", trajectoryKindName(t.kind)},
-            {"cubic", QJsonObject{{"x0", t.x0}, {"xf", t.xf}, {"t0", t.t0Seconds},
-                                  {"tf", t.tfSeconds}, {"v0", t.v0}, {"vf", t.vf}}},
-            {"circle", QJsonObject{{"radius", t.radius}, {"omega", t.omegaRadPerSec},
+            {"cubic", QJsonObject{{"x0", t.x0},
+                                  {"xf", t.xf},
+                                  {"t0", t.t0Seconds},
+                                  {"tf", t.tfSeconds},
+                                  {"v0", t.v0},
+                                  {"vf", t.vf}}},
+            {"circle", QJsonObject{{"radius", t.radius},
+                                   {"omega", t.omegaRadPerSec},
                                    {"ramp_in", t.rampInSeconds}}},
             {"gcode", QJsonObject{{"file", QString::fromStdString(t.gcode.fileName)},
                                   {"program", QString::fromStdString(t.gcode.program)},
@@ -280,18 +299,21 @@ ImplementationSettings readImplementation(ObjectReader r) {
     {
         const QString method = r.string("anti_windup");
         bool found = false;
-        for (const AntiWindup a : {AntiWindup::None, AntiWindup::Clamp, AntiWindup::BackCalculation})
+        for (const AntiWindup a :
+             {AntiWindup::None, AntiWindup::Clamp, AntiWindup::BackCalculation})
             if (method == QString::fromStdString(antiWindupName(a))) {
                 i.antiWindup = a;
                 found = true;
             }
         if (!found)
-            throw FormatError{join(r.path(), "anti_windup"),
-                              QStringLiteral("must be \"none\", \"clamp\" or \"back-calculation\"")};
+            throw FormatError{
+                join(r.path(), "anti_windup"),
+                QStringLiteral("must be \"none\", \"clamp\" or \"back-calculation\"")};
     }
     i.trackingTimeSeconds = r.number("tracking_time");
     if (i.trackingTimeSeconds < 0.0)
-        throw FormatError{join(r.path(), "tracking_time"), QStringLiteral("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
+        throw FormatError{join(r.path(), "tracking_time"),
+                          QStringLiteral("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
     r.finish();
     return i;
 }
@@ -303,8 +325,10 @@ QJsonArray axesToJson(const std::array<AxisSettings, 2>& axes) {
 AxisSettings readAxis(ObjectReader r) {
     AxisSettings a;
     a.id = r.string("id").toStdString();
-    if (a.id.empty() || a.id.size() > 16 ||
-        !std::all_of(a.id.begin(), a.id.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)); }))
+    if (a.id.empty() || a.id.size() > 16 || !std::all_of(a.id.begin(), a.id.end(), [](char c) {
+            return std::islower(static_cast<unsigned char>(c)) ||
+                   std::isdigit(static_cast<unsigned char>(c));
+        }))
         throw FormatError{join(r.path(), "id"),
                           QStringLiteral("must be 1 to 16 lower-case letters or digits")};
     if (r.has("label"))
@@ -315,8 +339,9 @@ AxisSettings readAxis(ObjectReader r) {
     else if (method == methodName(DesignMethod::PolePlacementZpetc))
         a.method = DesignMethod::PolePlacementZpetc;
     else
-        throw FormatError{join(r.path(), "method"),
-                          QStringLiteral("must be \"guillemin-truxal\" or \"pole-placement-zpetc\"")};
+        throw FormatError{
+            join(r.path(), "method"),
+            QStringLiteral("must be \"guillemin-truxal\" or \"pole-placement-zpetc\"")};
     {
         ObjectReader gt = r.child("gt");
         ObjectReader plant = gt.child("plant");
@@ -335,7 +360,8 @@ AxisSettings readAxis(ObjectReader r) {
         ObjectReader pp = r.child("pp");
         a.pp.a = pp.coefficients("a");
         if (a.pp.a[0] == 0.0)
-            throw FormatError{join(pp.path(), "a[0]"), QStringLiteral("must be nonzero (A is monic)")};
+            throw FormatError{join(pp.path(), "a[0]"),
+                              QStringLiteral("must be nonzero (A is monic)")};
         a.pp.b = pp.coefficients("b");
         a.pp.t1 = pp.number("t1");
         a.pp.tsSeconds = pp.positive("ts");
@@ -389,7 +415,8 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.gcode.maxAccelMmPerS2 = g.positive("max_accel");
         t.gcode.maxJerkMmPerS3 = g.number("max_jerk");
         if (t.gcode.maxJerkMmPerS3 < 0)
-            throw FormatError{join(g.path(), "max_jerk"), QStringLiteral("must be >= 0 (0 = none)")};
+            throw FormatError{join(g.path(), "max_jerk"),
+                              QStringLiteral("must be >= 0 (0 = none)")};
         try { // the planner's range, whatever the kind: a jerk of 1e-300 is refused here
             checkProgramOptions(t.gcode);
         } catch (const InvalidInput& e) {
@@ -400,7 +427,8 @@ TrajectorySettings readTrajectory(ObjectReader r) {
     }
     t.durationSeconds = r.number("duration");
     if (t.durationSeconds < 0)
-        throw FormatError{join(r.path(), "duration"), QStringLiteral("must be >= 0 (0 = automatic)")};
+        throw FormatError{join(r.path(), "duration"),
+                          QStringLiteral("must be >= 0 (0 = automatic)")};
     t.dtSeconds = r.positive("dt");
     if (t.kind == TrajectoryKind::Gcode) {
         // The program, its profile and its sample count, named by the session path
@@ -415,11 +443,13 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         }
     }
     const double samples = std::floor(t.effectiveDurationSeconds() / t.dtSeconds) + 1.0;
-    if (!(samples <= static_cast<double>(sampleLimit()))) // the limit follows the memory (trajectory.h)
-        throw FormatError{join(r.path(), t.kind == TrajectoryKind::Gcode ? "dt" : "duration"),
-                          QStringLiteral("needs %1 samples at this dt; the limit is %2 on this machine")
-                              .arg(samples, 0, 'g', 3)
-                              .arg(sampleLimit())};
+    if (!(samples <=
+          static_cast<double>(sampleLimit()))) // the limit follows the memory (trajectory.h)
+        throw FormatError{
+            join(r.path(), t.kind == TrajectoryKind::Gcode ? "dt" : "duration"),
+            QStringLiteral("needs %1 samples at this dt; the limit is %2 on this machine")
+                .arg(samples, 0, 'g', 3)
+                .arg(sampleLimit())};
     r.finish();
     return t;
 }
@@ -496,8 +526,9 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
                                   .arg(version.toDouble())
                                   .arg(kSessionFormatVersion)};
         const int fileVersion = version.toInt();
-        ObjectReader r(fileVersion < kSessionFormatVersion ? migrateSessionJson(root, fileVersion) : root, QString(),
-                       &result.warnings);
+        ObjectReader r(fileVersion < kSessionFormatVersion ? migrateSessionJson(root, fileVersion)
+                                                           : root,
+                       QString(), &result.warnings);
         r.get("format"); // read above
         r.get("version");
         Session s;
@@ -511,23 +542,27 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
         else if (discretization == "backward-euler")
             s.piDiscretization = PiDiscretization::BackwardEuler;
         else
-            throw FormatError{"pi_discretization", QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
+            throw FormatError{"pi_discretization",
+                              QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
         s.implementation = readImplementation(r.child("implementation"));
         {
             ObjectReader spec = r.child("specification");
             s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");
             s.spec.maxOvershootPct = spec.number("max_overshoot_pct");
             if (s.spec.maxOvershootPct < 0)
-                throw FormatError{"specification.max_overshoot_pct", QStringLiteral("must be >= 0")};
+                throw FormatError{"specification.max_overshoot_pct",
+                                  QStringLiteral("must be >= 0")};
             s.spec.maxErrorPct = spec.positive("max_error_pct");
             s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
             s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
             s.spec.minPhaseMarginDeg = spec.number("min_phase_margin");
             if (!(s.spec.minPhaseMarginDeg >= 0.0 && s.spec.minPhaseMarginDeg <= 180.0))
-                throw FormatError{"specification.min_phase_margin", QStringLiteral("must be 0 .. 180 degrees")};
+                throw FormatError{"specification.min_phase_margin",
+                                  QStringLiteral("must be 0 .. 180 degrees")};
             s.spec.minGainMarginDb = spec.number("min_gain_margin");
             if (!(s.spec.minGainMarginDb >= 0.0))
-                throw FormatError{"specification.min_gain_margin", QStringLiteral("must be >= 0 dB")};
+                throw FormatError{"specification.min_gain_margin",
+                                  QStringLiteral("must be >= 0 dB")};
             spec.finish();
         }
         const QJsonValue snaps = r.get("snapshots");
@@ -535,8 +570,9 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             throw FormatError{"snapshots", QStringLiteral("must be an array")};
         const QJsonArray list = snaps.toArray();
         if (list.size() > kMaxSnapshots)
-            throw FormatError{"snapshots",
-                              QStringLiteral("has %1 entries; at most %2 are allowed").arg(list.size()).arg(kMaxSnapshots)};
+            throw FormatError{"snapshots", QStringLiteral("has %1 entries; at most %2 are allowed")
+                                               .arg(list.size())
+                                               .arg(kMaxSnapshots)};
         for (qsizetype i = 0; i < list.size(); ++i) {
             ObjectReader sr(list[i], QStringLiteral("snapshots[%1]").arg(i), &result.warnings);
             DesignSnapshot snap;
@@ -568,10 +604,12 @@ SessionLoadResult sessionFromBytes(const QByteArray& bytes) {
                       .arg(parseError.offset);
         return r;
     }
-    if (const auto duplicate = findDuplicateJsonKey(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
+    if (const auto duplicate = findDuplicateJsonKey(
+            std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
         SessionLoadResult r;
         r.errorPath = QString::fromStdString(*duplicate);
-        r.error = QStringLiteral("appears more than once in its object; a key may be given only once");
+        r.error =
+            QStringLiteral("appears more than once in its object; a key may be given only once");
         return r;
     }
     if (!doc.isObject()) {
@@ -596,8 +634,9 @@ SessionLoadResult loadSessionFile(const QString& path) {
 
 bool writeFileAtomically(const QString& path, const QByteArray& bytes, QString* error) {
     try {
-        xyt::writeFileAtomically(path.toStdString(),
-                                 std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        xyt::writeFileAtomically(
+            path.toStdString(),
+            std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
         return true;
     } catch (const FileError& e) {
         if (error)
@@ -607,8 +646,8 @@ bool writeFileAtomically(const QString& path, const QByteArray& bytes, QString* 
 }
 
 bool saveSessionFile(const Session& session, const QString& path, QString* error) {
-    return writeFileAtomically(path, QJsonDocument(sessionToJson(session)).toJson(QJsonDocument::Indented),
-                               error);
+    return writeFileAtomically(
+        path, QJsonDocument(sessionToJson(session)).toJson(QJsonDocument::Indented), error);
 }
 
 } // namespace xyt::files

@@ -34,15 +34,17 @@ QJsonObject fromVersion1(QJsonObject root) {
     if (!root.contains("implementation"))
         root.insert("implementation", implementation);
     else if (root.value("implementation").isObject())
-        root.insert("implementation",
-                    withDefaults(root.value("implementation").toObject(), implementation, implementation.keys()));
+        root.insert("implementation", withDefaults(root.value("implementation").toObject(),
+                                                   implementation, implementation.keys()));
     if (root.value("specification").isObject())
-        root.insert("specification",
-                    withDefaults(root.value("specification").toObject(), defaults.value("specification").toObject(),
-                                 {"in_position_window_mm", "max_settle_time", "min_phase_margin", "min_gain_margin"}));
+        root.insert("specification", withDefaults(root.value("specification").toObject(),
+                                                  defaults.value("specification").toObject(),
+                                                  {"in_position_window_mm", "max_settle_time",
+                                                   "min_phase_margin", "min_gain_margin"}));
     const QJsonObject trajectoryDefaults = defaults.value("trajectory").toObject();
     if (root.contains("trajectory"))
-        root.insert("trajectory", trajectoryFromVersion1(root.value("trajectory"), trajectoryDefaults));
+        root.insert("trajectory",
+                    trajectoryFromVersion1(root.value("trajectory"), trajectoryDefaults));
     if (root.value("snapshots").isArray()) {
         QJsonArray snapshots = root.value("snapshots").toArray();
         for (qsizetype i = 0; i < snapshots.size(); ++i) {
@@ -50,7 +52,8 @@ QJsonObject fromVersion1(QJsonObject root) {
                 continue;
             QJsonObject snapshot = snapshots[i].toObject();
             if (snapshot.contains("trajectory"))
-                snapshot.insert("trajectory", trajectoryFromVersion1(snapshot.value("trajectory"), trajectoryDefaults));
+                snapshot.insert("trajectory", trajectoryFromVersion1(snapshot.value("trajectory"),
+                                                                     trajectoryDefaults));
             snapshots[i] = snapshot;
         }
         root.insert("snapshots", snapshots);

@@ -8,7 +8,9 @@
 namespace xyt::ui {
 
 namespace {
-QString num(double v) { return QString::number(v, 'g', 6); }
+QString num(double v) {
+    return QString::number(v, 'g', 6);
+}
 } // namespace
 
 QString polynomialHtml(const Polynomial& p, const QString& variable) {
@@ -72,13 +74,14 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
     const QString id = QString::fromStdString(settings.id).toUpper();
     if (!axis.ok) {
         showHtml(tr("<b>Axis %1</b>: %2: %3")
-                    .arg(id, QString::fromStdString(axis.errorField), QString::fromStdString(axis.error)));
+                     .arg(id, QString::fromStdString(axis.errorField),
+                          QString::fromStdString(axis.error)));
         return;
     }
     if (axis.pp) {
         const PolePlacementDesign& pp = *axis.pp;
         QString html = tr("<b>Axis %1 — pole placement + ZPETC</b> (T<sub>s</sub> = %2 s)<br>")
-                   .arg(id, num(pp.tsSeconds));
+                           .arg(id, num(pp.tsSeconds));
         html += tr("A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)<br>");
         html += tr("A = %1<br>B = %2<br>T = %3<br>")
                     .arg(zInverseHtml(pp.a), zInverseHtml(pp.b), zInverseHtml(pp.t));
@@ -91,8 +94,8 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
             html += tr("ZPETC: w(k) = N/D · r(k + %1), [B<sup>−</sup>(1)]<sup>2</sup> = %2<br>")
                         .arg(z.previewSteps)
                         .arg(num(z.gainFactor));
-            html += tr("N = %1<br>D = %2").arg(zInverseHtml(z.feedforwardNum),
-                                                zInverseHtml(z.feedforwardDen));
+            html += tr("N = %1<br>D = %2")
+                        .arg(zInverseHtml(z.feedforwardNum), zInverseHtml(z.feedforwardDen));
         } else {
             html += tr("no feedforward: w = r");
         }
@@ -106,12 +109,15 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
     const GtDesign& d = *axis.gt;
     const double wn = d.omegaNRadPerSec;
     QString html;
-    html += tr("<b>Axis %1 — Guillemin–Truxal PI</b> (ω<sub>n</sub> = %2 rad/s, k<sub>p</sub> = %3)<br>")
+    html += tr("<b>Axis %1 — Guillemin–Truxal PI</b> (ω<sub>n</sub> = %2 rad/s, k<sub>p</sub> = "
+               "%3)<br>")
                 .arg(id, num(wn), num(d.kp));
     html += tr("f<sub>1</sub> = a<sub>1</sub>/ω<sub>n</sub> = %1<br>").arg(num(d.f1));
     html += tr("f<sub>2</sub> = a<sub>2</sub>/ω<sub>n</sub><sup>2</sup> = %1<br>").arg(num(d.f2));
-    html += tr("f<sub>3</sub> = k<sub>p</sub>k<sub>0</sub>/ω<sub>n</sub><sup>3</sup> = %1<br>").arg(num(d.f3));
-    html += tr("ψ<sub>1</sub> = ω<sub>n</sub><sup>4</sup>/(k<sub>p</sub>k<sub>0</sub>) = %1, ψ<sub>2</sub> = %2<br>")
+    html += tr("f<sub>3</sub> = k<sub>p</sub>k<sub>0</sub>/ω<sub>n</sub><sup>3</sup> = %1<br>")
+                .arg(num(d.f3));
+    html += tr("ψ<sub>1</sub> = ω<sub>n</sub><sup>4</sup>/(k<sub>p</sub>k<sub>0</sub>) = %1, "
+               "ψ<sub>2</sub> = %2<br>")
                 .arg(num(d.psi1), num(d.psi2));
     html += tr("k<sub>i</sub> = k<sub>p</sub>ψ<sub>1</sub> = %1<br>").arg(num(d.ki));
     html += tr("G<sub>c</sub>(s) = %1 + %2/s<br>").arg(num(d.kp), num(d.ki));

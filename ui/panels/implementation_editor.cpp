@@ -24,7 +24,8 @@ NumberField::Validator implementationRule(const char* field) {
         if (integer && (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 1e9))
             throw InvalidInput("implementation." + name,
                                name == "dac_bits" ? "must be an integer in 0..32 (0: ideal DAC)"
-                                                  : "must be an integer in 0.." + std::to_string(kMaxDelaySamples));
+                                                  : "must be an integer in 0.." +
+                                                        std::to_string(kMaxDelaySamples));
         if (name == "delay_samples")
             o.delaySamples = static_cast<int>(v);
         else if (name == "dac_bits")
@@ -32,7 +33,8 @@ NumberField::Validator implementationRule(const char* field) {
         else if (name == "encoder_resolution")
             o.encoderResolution = v;
         else if (!std::isfinite(v) || v < 0.0)
-            throw InvalidInput("implementation.tracking_time", "must be >= 0 (s; 0: Tt = Ti = kp/ki)");
+            throw InvalidInput("implementation.tracking_time",
+                               "must be >= 0 (s; 0: Tt = Ti = kp/ki)");
         try {
             validateSampledDataOptions(o);
         } catch (const InvalidInput& e) {
@@ -46,9 +48,12 @@ NumberField::Validator implementationRule(const char* field) {
 ImplementationEditor::ImplementationEditor(QWidget* parent) : QWidget(parent) {
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
-    delay_ = new NumberField("implementation.delay_samples", implementationRule("delay_samples"), this);
-    delay_->setToolTip(tr("Computation delay: the command computed at sample k is applied at k + delay"));
-    encoder_ = new NumberField("implementation.encoder_resolution", implementationRule("encoder_resolution"), this);
+    delay_ =
+        new NumberField("implementation.delay_samples", implementationRule("delay_samples"), this);
+    delay_->setToolTip(
+        tr("Computation delay: the command computed at sample k is applied at k + delay"));
+    encoder_ = new NumberField("implementation.encoder_resolution",
+                               implementationRule("encoder_resolution"), this);
     encoder_->setToolTip(tr("Encoder resolution in mm per count; 0 = ideal (no quantization)"));
     dacBits_ = new NumberField("implementation.dac_bits", implementationRule("dac_bits"), this);
     dacBits_->setToolTip(tr("DAC resolution over ±umax; 0 = ideal"));
@@ -59,7 +64,8 @@ ImplementationEditor::ImplementationEditor(QWidget* parent) : QWidget(parent) {
     antiWindup_->setAccessibleName(tr("Anti-windup"));
     antiWindup_->setToolTip(tr("How the digital PI's integrator is kept from winding up while u is "
                                "clipped: clamping (conditional integration) is what ships"));
-    trackingTime_ = new NumberField("implementation.tracking_time", implementationRule("tracking_time"), this);
+    trackingTime_ =
+        new NumberField("implementation.tracking_time", implementationRule("tracking_time"), this);
     trackingTime_->setToolTip(tr("Back-calculation tracking time Tt (s); 0 = Ti = kp/ki"));
     form->addRow(tr("Delay (samples)"), delay_);
     form->addRow(tr("Encoder (mm/count)"), encoder_);
@@ -73,8 +79,9 @@ ImplementationEditor::ImplementationEditor(QWidget* parent) : QWidget(parent) {
             emitIfChanged(next);
         };
     };
-    connect(delay_, &NumberField::valueAccepted, this,
-            edited([](ImplementationSettings& s, double v) { s.delaySamples = static_cast<int>(v); }));
+    connect(
+        delay_, &NumberField::valueAccepted, this,
+        edited([](ImplementationSettings& s, double v) { s.delaySamples = static_cast<int>(v); }));
     connect(encoder_, &NumberField::valueAccepted, this,
             edited([](ImplementationSettings& s, double v) { s.encoderResolutionMm = v; }));
     connect(dacBits_, &NumberField::valueAccepted, this,
@@ -83,7 +90,9 @@ ImplementationEditor::ImplementationEditor(QWidget* parent) : QWidget(parent) {
             edited([](ImplementationSettings& s, double v) { s.trackingTimeSeconds = v; }));
     connect(antiWindup_, &QComboBox::activated, this, [this](int index) {
         ImplementationSettings next = current_;
-        next.antiWindup = index == 0 ? AntiWindup::Clamp : index == 1 ? AntiWindup::BackCalculation : AntiWindup::None;
+        next.antiWindup = index == 0   ? AntiWindup::Clamp
+                          : index == 1 ? AntiWindup::BackCalculation
+                                       : AntiWindup::None;
         emitIfChanged(next);
     });
 }
@@ -95,8 +104,9 @@ void ImplementationEditor::setSettings(const ImplementationSettings& settings) {
     dacBits_->setValue(settings.dacBits);
     trackingTime_->setValue(settings.trackingTimeSeconds);
     trackingTime_->setEnabled(settings.antiWindup == AntiWindup::BackCalculation);
-    const int index = settings.antiWindup == AntiWindup::Clamp ? 0
-                      : settings.antiWindup == AntiWindup::BackCalculation ? 1 : 2;
+    const int index = settings.antiWindup == AntiWindup::Clamp             ? 0
+                      : settings.antiWindup == AntiWindup::BackCalculation ? 1
+                                                                           : 2;
     if (antiWindup_->currentIndex() != index)
         antiWindup_->setCurrentIndex(index); // setCurrentIndex does not emit activated
 }

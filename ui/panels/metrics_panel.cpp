@@ -9,8 +9,8 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QScrollArea>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSet>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -31,7 +31,8 @@ QString displayNumber(double v, int significant) {
     const int exponent = static_cast<int>(std::floor(std::log10(magnitude)));
     QString text = QString::number(v, 'f', std::max(0, significant - 1 - exponent));
     // Rounding may carry into a new digit (9.9996 -> "10.000"): drop the extra one.
-    if (std::abs(text.toDouble()) >= std::pow(10.0, exponent + 1) && significant - 2 - exponent >= 0)
+    if (std::abs(text.toDouble()) >= std::pow(10.0, exponent + 1) &&
+        significant - 2 - exponent >= 0)
         text = QString::number(v, 'f', significant - 2 - exponent);
     return text;
 }
@@ -41,33 +42,55 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     layout->setContentsMargins(0, 0, 0, 0);
     table_ = new QTableWidget(RowCount, 3, this);
     table_->setHorizontalHeaderLabels({tr("X"), tr("Y"), tr("spec")});
-    table_->setVerticalHeaderLabels({QString(), tr("RMSE (mm)"), tr("max |e| (mm)"),
-                                     tr("max |e| (%)"), tr("max |u| (V)"), tr("saturated (s)"),
-                                     tr("ITAE (mm·s²)"), tr("ZPETC gain (%)"), QString(),
-                                     tr("settle time (s)"), tr("final e (mm)"),
-                                     tr("overrun (mm)"), QString(),
-                                     tr("settling 2 % (s)"), tr("overshoot (%)"), QString(),
-                                     tr("RMSE (mm)"), tr("max |e| (mm)"), tr("min ζ (z-plane)"), QString(),
-                                     tr("gain margin (dB)"), tr("phase margin (°)"),
-                                     tr("delay margin (s)"), tr("Ms = max |S|")});
-    table_->verticalHeaderItem(Improvement)->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
+    table_->setVerticalHeaderLabels({QString(),
+                                     tr("RMSE (mm)"),
+                                     tr("max |e| (mm)"),
+                                     tr("max |e| (%)"),
+                                     tr("max |u| (V)"),
+                                     tr("saturated (s)"),
+                                     tr("ITAE (mm·s²)"),
+                                     tr("ZPETC gain (%)"),
+                                     QString(),
+                                     tr("settle time (s)"),
+                                     tr("final e (mm)"),
+                                     tr("overrun (mm)"),
+                                     QString(),
+                                     tr("settling 2 % (s)"),
+                                     tr("overshoot (%)"),
+                                     QString(),
+                                     tr("RMSE (mm)"),
+                                     tr("max |e| (mm)"),
+                                     tr("min ζ (z-plane)"),
+                                     QString(),
+                                     tr("gain margin (dB)"),
+                                     tr("phase margin (°)"),
+                                     tr("delay margin (s)"),
+                                     tr("Ms = max |S|")});
+    table_->verticalHeaderItem(Improvement)
+        ->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
     table_->verticalHeaderItem(Itae)->setToolTip(tr("integral of t·|e(t)| over the run"));
-    table_->verticalHeaderItem(SettleAfterMove)->setToolTip(
-        tr("From the end of the move (tf) until |e| stays inside the in-position window"));
-    table_->verticalHeaderItem(FinalOvershoot)->setToolTip(tr("How far the axis went beyond the target, in the direction of travel"));
-    table_->verticalHeaderItem(GainMargin)->setToolTip(
-        tr("How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never"));
-    table_->verticalHeaderItem(PhaseMargin)->setToolTip(tr("Phase lag that would bring L to −1 at the gain crossover"));
-    table_->verticalHeaderItem(DelayMargin)->setToolTip(tr("Extra delay the loop tolerates: phase margin / crossover frequency"));
-    table_->verticalHeaderItem(PeakSensitivity)->setToolTip(tr("1 / (closest distance of L to −1): 1.2–2 is a usual target"));
-    table_->verticalHeaderItem(MaxErrorPct)->setToolTip(tr("max |e| as a percentage of the travel"));
+    table_->verticalHeaderItem(SettleAfterMove)
+        ->setToolTip(
+            tr("From the end of the move (tf) until |e| stays inside the in-position window"));
+    table_->verticalHeaderItem(FinalOvershoot)
+        ->setToolTip(tr("How far the axis went beyond the target, in the direction of travel"));
+    table_->verticalHeaderItem(GainMargin)
+        ->setToolTip(tr("How much the loop gain may grow (dB) before the closed loop becomes "
+                        "unstable; ∞: never"));
+    table_->verticalHeaderItem(PhaseMargin)
+        ->setToolTip(tr("Phase lag that would bring L to −1 at the gain crossover"));
+    table_->verticalHeaderItem(DelayMargin)
+        ->setToolTip(tr("Extra delay the loop tolerates: phase margin / crossover frequency"));
+    table_->verticalHeaderItem(PeakSensitivity)
+        ->setToolTip(tr("1 / (closest distance of L to −1): 1.2–2 is a usual target"));
+    table_->verticalHeaderItem(MaxErrorPct)
+        ->setToolTip(tr("max |e| as a percentage of the travel"));
     // Group titles: which system and which signal each block of figures belongs to.
-    const QList<QPair<int, QString>> groups = {
-        {TrackingGroup, tr("Tracking the trajectory")},
-        {MoveGroup, tr("Move and settle (point-to-point)")},
-        {StepGroup, tr("Unit step, as each axis runs")},
-        {DigitalGroup, tr("Digital implementation")},
-        {MarginGroup, tr("Loop margins (open loop L)")}};
+    const QList<QPair<int, QString>> groups = {{TrackingGroup, tr("Tracking the trajectory")},
+                                               {MoveGroup, tr("Move and settle (point-to-point)")},
+                                               {StepGroup, tr("Unit step, as each axis runs")},
+                                               {DigitalGroup, tr("Digital implementation")},
+                                               {MarginGroup, tr("Loop margins (open loop L)")}};
     for (const auto& [row, title] : groups) {
         table_->setSpan(row, 0, 1, 3);
         auto* item = new QTableWidgetItem(title);
@@ -79,16 +102,20 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         table_->setItem(row, 0, item);
         table_->verticalHeaderItem(row)->setText(QString());
     }
-    table_->item(StepGroup, 0)->setToolTip(
-        tr("Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the "
-           "step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the "
-           "step of the feedback loop Kf·B/T alone."));
-    table_->item(DigitalGroup, 0)->setToolTip(
-        tr("The controller at its sample time with the hold, the encoder and DAC quantization, the "
-           "limit, the anti-windup and the delay of the Digital implementation settings. An amber "
-           "figure differs from the design's above by more than 5 %."));
-    table_->verticalHeaderItem(DigitalDamping)->setToolTip(
-        tr("Least damping ratio of the digital closed loop's poles (s = ln z / Ts); the design's in the tooltip"));
+    table_->item(StepGroup, 0)
+        ->setToolTip(tr(
+            "Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the "
+            "step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the "
+            "step of the feedback loop Kf·B/T alone."));
+    table_->item(DigitalGroup, 0)
+        ->setToolTip(tr(
+            "The controller at its sample time with the hold, the encoder and DAC quantization, "
+            "the "
+            "limit, the anti-windup and the delay of the Digital implementation settings. An amber "
+            "figure differs from the design's above by more than 5 %."));
+    table_->verticalHeaderItem(DigitalDamping)
+        ->setToolTip(tr("Least damping ratio of the digital closed loop's poles (s = ln z / Ts); "
+                        "the design's in the tooltip"));
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     // Columns as wide as their figures (nothing cut to "0.000562..."); the spec column takes
     // what is left.
@@ -110,7 +137,8 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     // window for a new layout at every figure that changes.
     table_->setSizeAdjustPolicy(QAbstractScrollArea::AdjustIgnored);
     table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
-                           RowCount * table_->verticalHeader()->defaultSectionSize() + 2 * table_->frameWidth());
+                           RowCount * table_->verticalHeader()->defaultSectionSize() +
+                           2 * table_->frameWidth());
     // Whether the design meets the specification, why not (tooltip), and the limits it would
     // meet (the default specification, Braga et al.'s, fails every design): on the
     // specification's title line and beside its last field, where the panel has room at
@@ -138,8 +166,8 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     notices_ = new QLabel(this);
     notices_->setWordWrap(true);
     notices_->setTextFormat(Qt::PlainText);
-    notices_->setStyleSheet(QStringLiteral(
-        "QLabel { background: #fff4d6; border: 1px solid #e0b24a; border-radius: 3px; padding: 3px; }"));
+    notices_->setStyleSheet(QStringLiteral("QLabel { background: #fff4d6; border: 1px solid "
+                                           "#e0b24a; border-radius: 3px; padding: 3px; }"));
     notices_->setAccessibleName(tr("Warnings"));
     notices_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     // At most five lines tall, scrolling beyond: six warnings of a pole-placement design made
@@ -162,21 +190,29 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
                 throw InvalidInput(name, range);
         };
     };
-    spec_.insert("settling", new NumberField("max settling time", positive("max settling time"), this));
-    spec_.insert("overshoot", new NumberField("max overshoot", nonNegative("max overshoot", 1e308, "must be >= 0"), this));
+    spec_.insert("settling",
+                 new NumberField("max settling time", positive("max settling time"), this));
+    spec_.insert("overshoot",
+                 new NumberField("max overshoot",
+                                 nonNegative("max overshoot", 1e308, "must be >= 0"), this));
     spec_.insert("error", new NumberField("max error", positive("max error"), this));
     spec_.insert("settle", new NumberField("max settle time", positive("max settle time"), this));
-    spec_.insert("window", new NumberField("in-position window", positive("in-position window"), this));
-    spec_.insert("phase_margin", new NumberField("min phase margin",
-                                                 nonNegative("min phase margin", 180.0, "must be 0 .. 180 degrees"), this));
-    spec_.insert("gain_margin", new NumberField("min gain margin",
-                                                nonNegative("min gain margin", 1e308, "must be >= 0 dB"), this));
+    spec_.insert("window",
+                 new NumberField("in-position window", positive("in-position window"), this));
+    spec_.insert("phase_margin",
+                 new NumberField("min phase margin",
+                                 nonNegative("min phase margin", 180.0, "must be 0 .. 180 degrees"),
+                                 this));
+    spec_.insert("gain_margin",
+                 new NumberField("min gain margin",
+                                 nonNegative("min gain margin", 1e308, "must be >= 0 dB"), this));
     // Two limits a row (label, field, label, field): seven limits in four rows keep the table
     // above free of a scroll bar at 1366x768.
     // The title leaves the verdict beside it the panel's width at 1366x768 (a longer title
     // cut the verdict to "hover for wh").
     auto* specTitle = new QLabel(tr("<b>Specification</b>"));
-    specTitle->setToolTip(tr("The limits of the spec column above: each figure is judged against them"));
+    specTitle->setToolTip(
+        tr("The limits of the spec column above: each figure is judged against them"));
     auto* titleRow = new QHBoxLayout;
     titleRow->addWidget(specTitle);
     titleRow->addWidget(advice_, 1);
@@ -206,11 +242,14 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     form->setColumnStretch(3, 1);
     spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
     spec_["error"]->setToolTip(tr("Maximum |e| as a percentage of the travel"));
-    spec_["settle"]->setToolTip(tr("Maximum settle time after the end (tf) of a point-to-point move"));
+    spec_["settle"]->setToolTip(
+        tr("Maximum settle time after the end (tf) of a point-to-point move"));
     spec_["window"]->setToolTip(tr("In-position window of a point-to-point move: |e| ≤ this (mm)"));
-    spec_["phase_margin"]->setToolTip(tr("Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states "
-                                         "none). 45–60° is the usual rule."));
-    spec_["gain_margin"]->setToolTip(tr("Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule."));
+    spec_["phase_margin"]->setToolTip(
+        tr("Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states "
+           "none). 45–60° is the usual rule."));
+    spec_["gain_margin"]->setToolTip(
+        tr("Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule."));
     spec_["overshoot"]->setToolTip(tr("Every Guillemin–Truxal design overshoots a little on a step "
                                       "(its reference model is type 2), so 0 % fails them all."));
     layout->addLayout(form);
@@ -229,7 +268,9 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         });
 }
 
-QString MetricsPanel::noticeText() const { return notices_->text(); }
+QString MetricsPanel::noticeText() const {
+    return notices_->text();
+}
 
 void MetricsPanel::setCell(int row, int column, const Cell& cell) {
     // In place, and only what changed: a replaced item makes the view lay the row out again.
@@ -253,8 +294,8 @@ void MetricsPanel::fitColumns() {
     // the group titles, which span all three columns, as column X's content.
     const QFontMetrics fm(table_->font());
     for (int c = 0; c < 2; ++c) {
-        int width = fm.horizontalAdvance(table_->horizontalHeaderItem(c) ? table_->horizontalHeaderItem(c)->text()
-                                                                         : QString());
+        int width = fm.horizontalAdvance(
+            table_->horizontalHeaderItem(c) ? table_->horizontalHeaderItem(c)->text() : QString());
         for (int r = 0; r < RowCount; ++r)
             if (!isGroupRow(r) && table_->item(r, c))
                 width = std::max(width, fm.horizontalAdvance(table_->item(r, c)->text()));
@@ -287,11 +328,15 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
     // closed loop has neither (its |S| peak is not the gain of anything that exists), so they
     // read "n/a" there, while the gain and phase margins still say how far the crossing is.
     const bool robustnessDefined = ok && m.closedLoopStable;
-    const QMap<int, QString> values = {
-        {GainMargin, ok ? shown(m.gainMarginDb) : tr("—")},
-        {PhaseMargin, ok ? shown(m.phaseMarginDeg) : tr("—")},
-        {DelayMargin, robustnessDefined ? shown(m.delayMarginSeconds) : ok ? tr("n/a") : tr("—")},
-        {PeakSensitivity, robustnessDefined ? shown(m.peakSensitivity) : ok ? tr("n/a") : tr("—")}};
+    const QMap<int, QString> values = {{GainMargin, ok ? shown(m.gainMarginDb) : tr("—")},
+                                       {PhaseMargin, ok ? shown(m.phaseMarginDeg) : tr("—")},
+                                       {DelayMargin, robustnessDefined ? shown(m.delayMarginSeconds)
+                                                     : ok              ? tr("n/a")
+                                                                       : tr("—")},
+                                       {PeakSensitivity, robustnessDefined
+                                                             ? shown(m.peakSensitivity)
+                                                         : ok ? tr("n/a")
+                                                              : tr("—")}};
     const std::optional<SpecificationCheck>& check = marginChecks_[static_cast<std::size_t>(axis)];
     for (auto it = values.begin(); it != values.end(); ++it) {
         Cell cell{it.value()};
@@ -304,7 +349,8 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
             cell.color = kFail;
             cell.toolTip = tr("the closed loop is unstable: not a robustness measure");
         } else if (ok && it.key() == GainMargin && std::isfinite(m.gainMarginOmegaRadPerSec)) {
-            cell.toolTip = tr("at %1 rad/s (factor %2)").arg(displayNumber(m.gainMarginOmegaRadPerSec))
+            cell.toolTip = tr("at %1 rad/s (factor %2)")
+                               .arg(displayNumber(m.gainMarginOmegaRadPerSec))
                                .arg(displayNumber(m.gainMarginFactor));
         } else if (ok && it.key() == PhaseMargin && std::isfinite(m.phaseMarginOmegaRadPerSec)) {
             cell.toolTip = tr("at %1 rad/s").arg(displayNumber(m.phaseMarginOmegaRadPerSec));
@@ -316,9 +362,13 @@ void MetricsPanel::showMargins(int axis, const AxisEvaluation& e) {
     fitColumns();
 }
 
-QString MetricsPanel::contourText() const { return contour_->text(); }
+QString MetricsPanel::contourText() const {
+    return contour_->text();
+}
 
-QString MetricsPanel::adviceText() const { return advice_->toolTip(); }
+QString MetricsPanel::adviceText() const {
+    return advice_->toolTip();
+}
 
 void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& evaluation) {
     const SpecificationAdvice advice = adviseSpecification(session, evaluation);
@@ -329,8 +379,8 @@ void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& e
     // One line whose size does not change with the figures, and nothing shown or hidden: a new
     // size would make the window lay itself out again on every slider step. The reasons,
     // numbers included, are in the tooltip.
-    const QString headline = reasons.isEmpty() ? tr("✓ both axes meet it")
-                                               : tr("✗ fails: hover for why");
+    const QString headline =
+        reasons.isEmpty() ? tr("✓ both axes meet it") : tr("✗ fails: hover for why");
     if (advice_->text() != headline)
         advice_->setText(headline);
     const QString style = reasons.isEmpty() ? QStringLiteral("QLabel { color: #1b7f2a; }")
@@ -342,9 +392,11 @@ void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& e
     QStringList changes;
     for (const std::string& c : advice.changes)
         changes << QString::fromStdString(c);
-    relax_->setToolTip(relaxed_ ? tr("Set the limits to what this design reaches: %1 (one undo step)").arg(changes.join(tr(", ")))
-                       : reasons.isEmpty() ? tr("The design meets the specification")
-                                           : tr("No limit makes this design pass (see why): change the design"));
+    relax_->setToolTip(
+        relaxed_ ? tr("Set the limits to what this design reaches: %1 (one undo step)")
+                       .arg(changes.join(tr(", ")))
+        : reasons.isEmpty() ? tr("The design meets the specification")
+                            : tr("No limit makes this design pass (see why): change the design"));
 }
 
 void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList& notices) {
@@ -360,14 +412,14 @@ void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList&
             // One line: G, F max/F min (of each direction when there are two), H (mm).
             const QString first = test.clockwise ? tr("CW") : tr("CCW");
             const QString second = test.clockwise ? tr("CCW") : tr("CW");
-            QString iso230 = test.reverseIso
-                                 ? tr("ISO 230-4: G %1 %2, %3 %4, F %5/%6")
-                                       .arg(first, mm(iso.circularDeviationG), second,
-                                            mm(test.reverseIso->circularDeviationG), mm(iso.radialDeviationFMax),
-                                            mm(iso.radialDeviationFMin))
-                                 : tr("ISO 230-4: G %1, F %2/%3")
-                                       .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
-                                            mm(iso.radialDeviationFMin));
+            QString iso230 =
+                test.reverseIso ? tr("ISO 230-4: G %1 %2, %3 %4, F %5/%6")
+                                      .arg(first, mm(iso.circularDeviationG), second,
+                                           mm(test.reverseIso->circularDeviationG),
+                                           mm(iso.radialDeviationFMax), mm(iso.radialDeviationFMin))
+                                : tr("ISO 230-4: G %1, F %2/%3")
+                                      .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
+                                           mm(iso.radialDeviationFMin));
             if (iso.hysteresisH)
                 iso230 += tr(", H %1").arg(mm(*iso.hysteresisH));
             lines << iso230 + tr(" mm");
@@ -393,15 +445,16 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     spec_["window"]->setValue(session.spec.inPositionWindowMm);
     spec_["phase_margin"]->setValue(session.spec.minPhaseMarginDeg);
     spec_["gain_margin"]->setValue(session.spec.minGainMarginDb);
-    QMap<int, QString> specText = {{MaxErrorPct, tr("≤ %1").arg(session.spec.maxErrorPct)},
-                                   {MaxU, tr("≤ %1").arg(session.umaxVolts)},
-                                   {Saturated, tr("no")},
-                                   {SettleAfterMove, tr("≤ %1").arg(session.spec.maxSettleTimeSeconds)},
-                                   {FinalError, tr("|e| ≤ %1").arg(session.spec.inPositionWindowMm)},
-                                   {Settling, tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds)},
-                                   {Overshoot, tr("≤ %1").arg(session.spec.maxOvershootPct)},
-                                   {GainMargin, tr("≥ %1").arg(session.spec.minGainMarginDb)},
-                                   {PhaseMargin, tr("≥ %1").arg(session.spec.minPhaseMarginDeg)}};
+    QMap<int, QString> specText = {
+        {MaxErrorPct, tr("≤ %1").arg(session.spec.maxErrorPct)},
+        {MaxU, tr("≤ %1").arg(session.umaxVolts)},
+        {Saturated, tr("no")},
+        {SettleAfterMove, tr("≤ %1").arg(session.spec.maxSettleTimeSeconds)},
+        {FinalError, tr("|e| ≤ %1").arg(session.spec.inPositionWindowMm)},
+        {Settling, tr("≤ %1").arg(session.spec.maxSettlingTimeSeconds)},
+        {Overshoot, tr("≤ %1").arg(session.spec.maxOvershootPct)},
+        {GainMargin, tr("≥ %1").arg(session.spec.minGainMarginDb)},
+        {PhaseMargin, tr("≥ %1").arg(session.spec.minPhaseMarginDeg)}};
     for (int r = 0; r < RowCount; ++r) {
         if (isGroupRow(r))
             continue;
@@ -411,7 +464,8 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(c)];
         marginChecks_[static_cast<std::size_t>(c)] =
             a.ok && a.check.marginsApply ? std::optional(a.check) : std::nullopt;
-        const QString header = QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
+        const QString header =
+            QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
         if (!table_->horizontalHeaderItem(c) || table_->horizontalHeaderItem(c)->text() != header)
             table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
         QMap<int, QString> values;
@@ -424,22 +478,25 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             values[MaxError] = displayNumber(m.maxAbsError);
             values[MaxErrorPct] = displayNumber(m.maxAbsErrorPct);
             values[MaxU] = displayNumber(m.maxAbsU);
-            values[Saturated] = m.diverged    ? tr("n/a")
+            values[Saturated] = m.diverged     ? tr("n/a")
                                 : !m.saturated ? tr("no")
-                                : a.pp         ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds))
-                                               : displayNumber(m.saturatedTimeSeconds);
+                                : a.pp ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds))
+                                       : displayNumber(m.saturatedTimeSeconds);
             values[Itae] = displayNumber(m.itae);
-            values[Improvement] = a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
-                                      ? displayNumber(a.improvementPct)
-                                      : tr("—");
+            values[Improvement] =
+                a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
+                    ? displayNumber(a.improvementPct)
+                    : tr("—");
             if (a.moveSettle) {
                 const MoveSettleMetrics& ms = *a.moveSettle;
                 // Not settled in the run: "> the run's time after tf", a lower bound an engineer
                 // can read in the column's width (the duration line quotes the estimate).
                 values[SettleAfterMove] =
-                    ms.diverged            ? tr("n/a")
-                    : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
-                                           : tr("> %1").arg(displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
+                    ms.diverged ? tr("n/a")
+                    : ms.settleTimeSeconds
+                        ? displayNumber(*ms.settleTimeSeconds)
+                        : tr("> %1").arg(
+                              displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
                 values[FinalError] = displayNumber(ms.finalErrorMm);
                 values[FinalOvershoot] = displayNumber(ms.finalOvershootMm);
             } else {
@@ -454,20 +511,22 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                 values[DigitalMaxError] = displayNumber(dm.maxAbsError);
                 values[DigitalDamping] = displayNumber(a.digital->minDamping, 3);
             }
-            values[Settling] = a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
+            values[Settling] =
+                a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
             values[Overshoot] = a.step.stable ? displayNumber(a.step.overshootPct) : tr("unstable");
         }
         if (!a.ok)
-            notices << tr("%1: no design (%2: %3)").arg(header, QString::fromStdString(a.errorField),
-                                                      QString::fromStdString(a.error));
+            notices << tr("%1: no design (%2: %3)")
+                           .arg(header, QString::fromStdString(a.errorField),
+                                QString::fromStdString(a.error));
         for (const std::string& w : a.warnings)
             notices << tr("%1: %2").arg(header, QString::fromStdString(w));
         // Which rows the specification judges, and whether this axis passes them.
         QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
-                                        {MaxU, a.check.noSaturation},
-                                        {Saturated, a.check.noSaturation},
-                                        {Settling, a.check.settlingTime},
-                                        {Overshoot, a.check.overshoot}};
+                                  {MaxU, a.check.noSaturation},
+                                  {Saturated, a.check.noSaturation},
+                                  {Settling, a.check.settlingTime},
+                                  {Overshoot, a.check.overshoot}};
         if (a.check.settleApplies)
             judged[SettleAfterMove] = a.check.settle;
         // Rows the design passes but its digital implementation fails show the implementation's
@@ -484,15 +543,18 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             if (d.noSaturation && !i.noSaturation) {
                 byImplementation << MaxU << Saturated;
                 values[MaxU] = displayNumber(dm.maxAbsU);
-                values[Saturated] = dm.diverged ? tr("n/a") : displayNumber(dm.saturatedTimeSeconds);
+                values[Saturated] =
+                    dm.diverged ? tr("n/a") : displayNumber(dm.saturatedTimeSeconds);
             }
             if (d.settleApplies && d.settle && !i.settle && a.digital->moveSettle) {
                 const MoveSettleMetrics& ms = *a.digital->moveSettle;
                 byImplementation << SettleAfterMove;
                 values[SettleAfterMove] =
-                    ms.diverged            ? tr("n/a")
-                    : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
-                                           : tr("> %1").arg(displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
+                    ms.diverged ? tr("n/a")
+                    : ms.settleTimeSeconds
+                        ? displayNumber(*ms.settleTimeSeconds)
+                        : tr("> %1").arg(
+                              displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
             }
         }
         for (int r = 0; r < RowCount; ++r) {
@@ -503,24 +565,29 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                 const bool pass = judged[r];
                 cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
                 cell.color = pass ? kPass : kFail;
-                cell.toolTip = pass ? (a.implementationCheck ? tr("meets the specification, as designed and as implemented")
-                                                             : tr("meets the specification"))
-                                    : tr("fails the specification");
+                cell.toolTip =
+                    pass ? (a.implementationCheck
+                                ? tr("meets the specification, as designed and as implemented")
+                                : tr("meets the specification"))
+                         : tr("fails the specification");
                 if (byImplementation.contains(r)) {
                     cell.text += tr(" digital");
-                    cell.toolTip = tr("the design meets the specification here, its digital implementation "
-                                      "(Ts, quantization, ±umax, delay) does not: this is the implementation's figure");
+                    cell.toolTip =
+                        tr("the design meets the specification here, its digital implementation "
+                           "(Ts, quantization, ±umax, delay) does not: this is the "
+                           "implementation's figure");
                 }
             }
             if (!a.ok)
                 cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
             if (r == SettleAfterMove && a.ok && a.moveSettle && !a.moveSettle->diverged &&
                 !a.moveSettle->settleTimeSeconds)
-                cell.toolTip = tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
-                                   .arg(displayNumber(a.moveSettle->windowMm),
-                                        displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
-                                                                        a.moveSettle->moveEndSeconds)),
-                                        cell.toolTip);
+                cell.toolTip =
+                    tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
+                        .arg(displayNumber(a.moveSettle->windowMm),
+                             displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
+                                                             a.moveSettle->moveEndSeconds)),
+                             cell.toolTip);
             if (a.ok && a.digital && (r == DigitalRmse || r == DigitalMaxError)) {
                 const double design = r == DigitalRmse ? a.metrics.rmse : a.metrics.maxAbsError;
                 const TrackingMetrics& dm = a.digital->metrics;
@@ -528,8 +595,9 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                 const bool differs = !(std::abs(digital - design) <= 0.05 * std::abs(design));
                 if (differs)
                     cell.color = kDiffers;
-                cell.toolTip = tr("design %1, digital %2%3").arg(displayNumber(design), displayNumber(digital),
-                                                                 differs ? tr(" (differs by more than 5 %)") : QString());
+                cell.toolTip = tr("design %1, digital %2%3")
+                                   .arg(displayNumber(design), displayNumber(digital),
+                                        differs ? tr(" (differs by more than 5 %)") : QString());
             }
             if (r == DigitalDamping && a.ok && a.digital) {
                 const bool low = a.digital->minDamping < 0.8 * a.digital->designMinDamping;
@@ -541,8 +609,9 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
                                    .arg(a.digital->tsSeconds);
             }
             if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
-                cell.toolTip = tr("* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated "
-                                  "without a limit; |u| would be clipped this long");
+                cell.toolTip =
+                    tr("* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated "
+                       "without a limit; |u| would be clipped this long");
             setCell(r, c, cell);
         }
     }

@@ -50,14 +50,36 @@ public:
     QPushButton* relaxButton() const { return relax_; }
 
     /// Row order of the table: a group title row (spanning the columns) before each group.
-    enum Row { TrackingGroup, Rmse, MaxError, MaxErrorPct, MaxU, Saturated, Itae, Improvement,
-               MoveGroup, SettleAfterMove, FinalError, FinalOvershoot,
-               StepGroup, Settling, Overshoot,
-               DigitalGroup, DigitalRmse, DigitalMaxError, DigitalDamping,
-               MarginGroup, GainMargin, PhaseMargin, DelayMargin, PeakSensitivity, RowCount };
+    enum Row {
+        TrackingGroup,
+        Rmse,
+        MaxError,
+        MaxErrorPct,
+        MaxU,
+        Saturated,
+        Itae,
+        Improvement,
+        MoveGroup,
+        SettleAfterMove,
+        FinalError,
+        FinalOvershoot,
+        StepGroup,
+        Settling,
+        Overshoot,
+        DigitalGroup,
+        DigitalRmse,
+        DigitalMaxError,
+        DigitalDamping,
+        MarginGroup,
+        GainMargin,
+        PhaseMargin,
+        DelayMargin,
+        PeakSensitivity,
+        RowCount
+    };
     static bool isGroupRow(int row) {
-        return row == TrackingGroup || row == MoveGroup || row == StepGroup || row == DigitalGroup ||
-               row == MarginGroup;
+        return row == TrackingGroup || row == MoveGroup || row == StepGroup ||
+               row == DigitalGroup || row == MarginGroup;
     }
     static bool isMarginRow(int row) { return row > MarginGroup; }
     /// Fills the loop-margin rows of column @p axis from the axis' evaluation (its margins are
@@ -80,7 +102,8 @@ private:
     };
     static constexpr QRgb kPass = 0xff1b7f2a;
     static constexpr QRgb kFail = 0xffc62828;
-    static constexpr QRgb kDiffers = 0xffb26a00; ///< a digital figure that differs from the design's
+    static constexpr QRgb kDiffers =
+        0xffb26a00; ///< a digital figure that differs from the design's
     void setCell(int row, int column, const Cell& cell);
 
     void showAdvice(const Session& session, const SessionEvaluation& evaluation);

@@ -6,7 +6,9 @@
 
 namespace xyt::ui {
 
-QString formatNumber(double v) { return QString::number(v, 'g', 10); }
+QString formatNumber(double v) {
+    return QString::number(v, 'g', 10);
+}
 
 NumberField::NumberField(const QString& fieldName, Validator validator, QWidget* parent)
     : QLineEdit(parent), fieldName_(fieldName), validator_(std::move(validator)) {
@@ -40,7 +42,8 @@ bool NumberField::commit() {
 }
 
 void markFieldError(QLineEdit* field, const QString& message) {
-    field->setStyleSheet(QStringLiteral("QLineEdit { border: 2px solid #d32f2f; background: #fff3f3; }"));
+    field->setStyleSheet(
+        QStringLiteral("QLineEdit { border: 2px solid #d32f2f; background: #fff3f3; }"));
     field->setToolTip(message);
 }
 

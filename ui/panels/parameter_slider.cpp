@@ -48,7 +48,9 @@ public:
     QValidator::State validate(QString& input, int&) const override {
         return parse(input) ? QValidator::Acceptable : QValidator::Intermediate;
     }
-    double valueFromText(const QString& text) const override { return parse(text).value_or(value()); }
+    double valueFromText(const QString& text) const override {
+        return parse(text).value_or(value());
+    }
     QString textFromValue(double v) const override { return formatNumber(v); }
     void fixup(QString& input) const override {
         // Called when the entry ends on text that validate() did not accept: say why, once the
@@ -96,7 +98,8 @@ ParameterSlider::ParameterSlider(const QString& label, const QString& unit, doub
     spin_->setKeyboardTracking(false);
     spin_->setSuffix(unit.isEmpty() ? QString() : " " + unit);
     spin_->setAccessibleName(name_ + tr(" value"));
-    spin_->setToolTip(tr("%1: type a value (scientific notation such as 2.5e3 is accepted)").arg(name_));
+    spin_->setToolTip(
+        tr("%1: type a value (scientific notation such as 2.5e3 is accepted)").arg(name_));
     spin_->setMinimumWidth(110);
     spin->onRefused = [this](const QString& text) { refuse(text); };
     exact_ = new QLabel(this);
@@ -142,7 +145,9 @@ double ParameterSlider::fromPosition(int position) const {
     return std::clamp(std::round(v / magnitude) * magnitude, min_, max_);
 }
 
-QString ParameterSlider::exactText() const { return exact_->text(); }
+QString ParameterSlider::exactText() const {
+    return exact_->text();
+}
 
 void ParameterSlider::showValue(double v) {
     value_ = v;
@@ -155,15 +160,17 @@ void ParameterSlider::showValue(double v) {
                                  .arg(formatNumber(v), formatNumber(min_), formatNumber(max_))
                            : QString::number(v, 'g', 10));
     // Only when it changes: a new style sheet re-polishes the label and lays the window out again.
-    const QString style = beyond ? QStringLiteral("color: #b26a00;") : QStringLiteral("color: palette(mid);");
+    const QString style =
+        beyond ? QStringLiteral("color: #b26a00;") : QStringLiteral("color: palette(mid);");
     if (exact_->styleSheet() != style)
         exact_->setStyleSheet(style);
     updating_ = false;
 }
 
 void ParameterSlider::refuse(const QString& text) {
-    fieldError_ = tr("%1: '%2' is not a number from %3 to %4")
-                      .arg(name_, text, formatNumber(spin_->minimum()), formatNumber(spin_->maximum()));
+    fieldError_ =
+        tr("%1: '%2' is not a number from %3 to %4")
+            .arg(name_, text, formatNumber(spin_->minimum()), formatNumber(spin_->maximum()));
     if (QLineEdit* edit = spin_->findChild<QLineEdit*>())
         markFieldError(edit, fieldError_);
     spin_->setToolTip(fieldError_);
@@ -175,13 +182,15 @@ void ParameterSlider::clearFieldError() {
     fieldError_.clear();
     if (QLineEdit* edit = spin_->findChild<QLineEdit*>())
         xyt::ui::clearFieldError(edit, QString());
-    spin_->setToolTip(tr("%1: type a value (scientific notation such as 2.5e3 is accepted)").arg(name_));
+    spin_->setToolTip(
+        tr("%1: type a value (scientific notation such as 2.5e3 is accepted)").arg(name_));
 }
 
 void ParameterSlider::setValue(double v) {
     if (!std::isfinite(v))
         return;
-    if (v < spin_->minimum() || v > spin_->maximum()) { // a loaded value the field must show as it is
+    if (v < spin_->minimum() ||
+        v > spin_->maximum()) { // a loaded value the field must show as it is
         const QSignalBlocker block(spin_);
         spin_->setRange(std::min(spin_->minimum(), v), std::max(spin_->maximum(), v));
     }

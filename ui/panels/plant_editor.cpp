@@ -18,12 +18,15 @@ PlantEditor::PlantEditor(QWidget* parent) : QWidget(parent) {
         preset_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
     preset_->addItem(tr("custom"), QString());
     preset_->setAccessibleName(tr("Plant preset"));
-    k0_ = new NumberField("k0", [](double v) { requireNonZero(v, "k0"); }, this);
+    k0_ = new NumberField(
+        "k0", [](double v) { requireNonZero(v, "k0"); }, this);
     a1_ = new NumberField("a1", {}, this);
     a2_ = new NumberField("a2", {}, this);
-    unit_ = new NumberField("model unit", [](double v) { requirePositive(v, "model unit"); }, this);
+    unit_ = new NumberField(
+        "model unit", [](double v) { requirePositive(v, "model unit"); }, this);
     k0_->setToolTip(tr("Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³"));
-    unit_->setToolTip(tr("Model output units per mm of trajectory (0.001: the model is in metres)"));
+    unit_->setToolTip(
+        tr("Model output units per mm of trajectory (0.001: the model is in metres)"));
     auto* formula = new QLabel(tr("G(s) = k0 / (s³ + a1 s² + a2 s)"), this);
     form->addRow(formula);
     form->addRow(tr("Preset"), preset_);

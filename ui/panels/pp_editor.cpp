@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/pp_editor.h"
 
+#include "core/design/pole_placement.h"
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
-#include "core/design/pole_placement.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
 #include "ui/session/tuning_session.h"
@@ -42,8 +42,10 @@ PpEditor::PpEditor(QWidget* parent) : QWidget(parent) {
     b_->setToolTip(tr("B(z⁻¹) = 0 + b1 z⁻¹ + ...: leading zeros are the delay"));
     a_->setProperty("normalToolTip", a_->toolTip());
     b_->setProperty("normalToolTip", b_->toolTip());
-    t1_ = new ParameterSlider(tr("Desired pole t&1 (T = 1 + t1 z⁻¹)"), QString(), -0.95, 0.95, false, this);
-    ts_ = new NumberField("ts", [](double v) { requirePositive(v, "ts"); }, this);
+    t1_ = new ParameterSlider(tr("Desired pole t&1 (T = 1 + t1 z⁻¹)"), QString(), -0.95, 0.95,
+                              false, this);
+    ts_ = new NumberField(
+        "ts", [](double v) { requirePositive(v, "ts"); }, this);
     zpetc_ = new QCheckBox(tr("ZPETC feedforward"), this);
     form->addRow(tr("Preset"), preset_);
     form->addRow(tr("&A"), a_);

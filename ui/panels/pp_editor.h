@@ -15,10 +15,10 @@ class NumberField;
 class ParameterSlider;
 
 /**
- * Editor of a discrete pole-placement + ZPETC axis (Patrick, Ishak and Adnan): the ARX polynomials A and B in
- * ascending powers of z^-1 (as typed in the paper), the desired pole t1 (T = 1 + t1 z^-1) as a
- * slider, the sample time, and whether the ZPETC feedforward is on. Invalid entries stay at
- * the field with the reason and are not applied.
+ * Editor of a discrete pole-placement + ZPETC axis (Patrick, Ishak and Adnan): the ARX polynomials
+ * A and B in ascending powers of z^-1 (as typed in the paper), the desired pole t1 (T = 1 + t1
+ * z^-1) as a slider, the sample time, and whether the ZPETC feedforward is on. Invalid entries stay
+ * at the field with the reason and are not applied.
  */
 class PpEditor : public QWidget {
     Q_OBJECT

@@ -37,12 +37,8 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     pages_ = new QStackedWidget(this);
     layout->addWidget(pages_);
 
-    auto finite = [](const char* name) {
-        return [name](double v) { requireFinite(v, name); };
-    };
-    auto positive = [](const char* name) {
-        return [name](double v) { requirePositive(v, name); };
-    };
+    auto finite = [](const char* name) { return [name](double v) { requireFinite(v, name); }; };
+    auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
     auto nonNegative = [](const char* name) {
         return [name](double v) {
             requireFinite(v, name);
@@ -54,9 +50,9 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     auto* cubicForm = new QFormLayout(cubic);
     cubicForm->setContentsMargins(0, 0, 0, 0);
     const QList<std::tuple<QString, QString, NumberField::Validator>> cubicFields = {
-        {"x0", tr("x0 (mm)"), finite("x0")},   {"xf", tr("xf (mm)"), finite("xf")},
+        {"x0", tr("x0 (mm)"), finite("x0")},     {"xf", tr("xf (mm)"), finite("xf")},
         {"t0", tr("t0 (s)"), nonNegative("t0")}, {"tf", tr("tf (s)"), positive("tf")},
-        {"v0", tr("v0 (mm/s)"), finite("v0")}, {"vf", tr("vf (mm/s)"), finite("vf")}};
+        {"v0", tr("v0 (mm/s)"), finite("v0")},   {"vf", tr("vf (mm/s)"), finite("vf")}};
     for (const auto& [name, label, validator] : cubicFields) {
         auto* f = new NumberField(name, validator, cubic);
         fields_.insert(name, f);
@@ -80,18 +76,24 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     fitStackToCurrentPage(pages_);
 
     auto* common = new QFormLayout;
-    auto* dt = new NumberField("dt", [](double v) {
-        requirePositive(v, "dt");
-        if (v > 1.0)
-            throw InvalidInput("dt", "must be at most 1 s");
-    }, this);
-    auto* duration = new NumberField("duration", [](double v) {
-        requireFinite(v, "duration");
-        if (v < 0)
-            throw InvalidInput("duration", "must be >= 0 (0 = automatic)");
-        if (v > 1.0e5)
-            throw InvalidInput("duration", "must be at most 100000 s");
-    }, this);
+    auto* dt = new NumberField(
+        "dt",
+        [](double v) {
+            requirePositive(v, "dt");
+            if (v > 1.0)
+                throw InvalidInput("dt", "must be at most 1 s");
+        },
+        this);
+    auto* duration = new NumberField(
+        "duration",
+        [](double v) {
+            requireFinite(v, "duration");
+            if (v < 0)
+                throw InvalidInput("duration", "must be >= 0 (0 = automatic)");
+            if (v > 1.0e5)
+                throw InvalidInput("duration", "must be at most 100000 s");
+        },
+        this);
     duration->setToolTip(tr("0 = automatic: tf for a cubic, one revolution plus the ramp-in for a "
                             "circle; a G-code program always runs its feed profile's time"));
     duration->setProperty("normalToolTip", duration->toolTip());
@@ -109,7 +111,9 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     });
 }
 
-NumberField* TrajectoryEditor::field(const QString& name) const { return fields_.value(name); }
+NumberField* TrajectoryEditor::field(const QString& name) const {
+    return fields_.value(name);
+}
 
 namespace {
 
@@ -126,7 +130,9 @@ int kindIndex(TrajectoryKind kind) {
 }
 
 TrajectoryKind kindAt(int index) {
-    return index == 0 ? TrajectoryKind::Cubic : index == 1 ? TrajectoryKind::Circle : TrajectoryKind::Gcode;
+    return index == 0   ? TrajectoryKind::Cubic
+           : index == 1 ? TrajectoryKind::Circle
+                        : TrajectoryKind::Gcode;
 }
 
 } // namespace
@@ -198,7 +204,8 @@ QWidget* TrajectoryEditor::buildProgramPage() {
 }
 
 QString TrajectoryEditor::examplesFolder() {
-    const QString installed = QDir(QCoreApplication::applicationDirPath()).filePath("../share/xytune/examples");
+    const QString installed =
+        QDir(QCoreApplication::applicationDirPath()).filePath("../share/xytune/examples");
     for (const QString& folder : {installed, QStringLiteral(XYT_EXAMPLES_SOURCE_DIR)})
         if (QFileInfo(folder).isDir())
             return QDir(folder).absolutePath();
@@ -228,12 +235,14 @@ bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::strin
         const ProgramSummary summary = summarizeProgram(t);
         const double samples = summary.runSeconds / t.dtSeconds + 1.0;
         if (!(samples <= static_cast<double>(sampleLimit())))
-            throw InvalidInput("trajectory.dt", QString("a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory")
-                                                    .arg(summary.runSeconds, 0, 'g', 6)
-                                                    .arg(t.dtSeconds, 0, 'g', 6)
-                                                    .arg(samples, 0, 'g', 3)
-                                                    .arg(static_cast<double>(sampleLimit()), 0, 'g', 3)
-                                                    .toStdString());
+            throw InvalidInput(
+                "trajectory.dt",
+                QString("a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory")
+                    .arg(summary.runSeconds, 0, 'g', 6)
+                    .arg(t.dtSeconds, 0, 'g', 6)
+                    .arg(samples, 0, 'g', 3)
+                    .arg(static_cast<double>(sampleLimit()), 0, 'g', 3)
+                    .toStdString());
     } catch (const InvalidInput& e) {
         // The session keeps its trajectory; the error is shown at the program field.
         const QString message = tr("%1: %2").arg(fileName, QString::fromStdString(e.what()));
@@ -329,7 +338,8 @@ void TrajectoryEditor::emitIfValid() {
             summarizeProgram(t);
         } catch (const InvalidInput& e) {
             const QString field = QString::fromStdString(e.field()).section('.', -1);
-            markFieldError(fields_.contains(field) ? fields_[field] : static_cast<QLineEdit*>(programField_),
+            markFieldError(fields_.contains(field) ? fields_[field]
+                                                   : static_cast<QLineEdit*>(programField_),
                            QString::fromStdString(e.what()));
             return;
         }
@@ -343,17 +353,20 @@ void TrajectoryEditor::emitIfValid() {
     // A run that cannot fit in memory is refused at the field the user just edited (dt unless it
     // was a time field), naming the count, never simulated.
     auto* edited = qobject_cast<NumberField*>(sender());
-    NumberField* blamed = edited && QStringList{"duration", "tf", "t0", "dt", "feed_scale", "max_accel", "max_jerk"}.contains(edited->accessibleName())
-                              ? edited
-                              : fields_["dt"];
+    NumberField* blamed =
+        edited && QStringList{"duration", "tf", "t0", "dt", "feed_scale", "max_accel", "max_jerk"}
+                      .contains(edited->accessibleName())
+            ? edited
+            : fields_["dt"];
     const double samples = t.effectiveDurationSeconds() / t.dtSeconds + 1.0;
     if (!(samples <= static_cast<double>(sampleLimit()))) {
-        markFieldError(blamed, tr("%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory")
-                                   .arg(blamed->accessibleName())
-                                   .arg(t.effectiveDurationSeconds(), 0, 'g', 6)
-                                   .arg(t.dtSeconds, 0, 'g', 6)
-                                   .arg(samples, 0, 'g', 3)
-                                   .arg(static_cast<double>(sampleLimit()), 0, 'g', 3));
+        markFieldError(blamed,
+                       tr("%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory")
+                           .arg(blamed->accessibleName())
+                           .arg(t.effectiveDurationSeconds(), 0, 'g', 6)
+                           .arg(t.dtSeconds, 0, 'g', 6)
+                           .arg(samples, 0, 'g', 3)
+                           .arg(static_cast<double>(sampleLimit()), 0, 'g', 3));
         return;
     }
     for (const char* name : {"duration", "tf", "t0", "dt", "feed_scale", "max_accel", "max_jerk"})

@@ -20,19 +20,21 @@ namespace {
 constexpr int kLaidOutWidth = 120;
 constexpr char kAnchor[] = "xyt-annotation-anchor"; ///< the coordinates the plot gave
 constexpr char kPlaced[] = "xyt-annotation-placed"; ///< the coordinates the guard moved it to
-constexpr char kLines[] = "xyt-wrapped-lines";     ///< a notice's lines, wrapped to its rect
+constexpr char kLines[] = "xyt-wrapped-lines";      ///< a notice's lines, wrapped to its rect
 constexpr char kIndent[] = "xyt-wrapped-indent";
-constexpr char kTitle[] = "xyt-title-text";        ///< a layout element's text as the plot set it
-constexpr char kTitleShown[] = "xyt-title-shown";  ///< the same, broken into lines by the guard
+constexpr char kTitle[] = "xyt-title-text";       ///< a layout element's text as the plot set it
+constexpr char kTitleShown[] = "xyt-title-shown"; ///< the same, broken into lines by the guard
 
 /// @p line broken at spaces into pieces no wider than @p width pixels (a long word stays
 /// whole); continuation pieces start with @p indent.
-QStringList wrapLine(const QString& line, const QFontMetricsF& metrics, double width, const QString& indent) {
+QStringList wrapLine(const QString& line, const QFontMetricsF& metrics, double width,
+                     const QString& indent) {
     QStringList out;
     QString current;
     for (const QString& word : line.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
         const QString prefix = out.isEmpty() ? QString() : indent;
-        const QString candidate = current.isEmpty() ? prefix + word : current + QLatin1Char(' ') + word;
+        const QString candidate =
+            current.isEmpty() ? prefix + word : current + QLatin1Char(' ') + word;
         if (!current.isEmpty() && metrics.horizontalAdvance(candidate) > width) {
             out << current;
             current = indent + word;
@@ -49,7 +51,8 @@ QStringList wrapLine(const QString& line, const QFontMetricsF& metrics, double w
 void wrapNotice(QCPItemText* text) {
     const QStringList lines = text->property(kLines).toStringList();
     const QString indent = text->property(kIndent).toString();
-    const double width = text->clipAxisRect()->rect().width() - text->padding().left() - text->padding().right() - 4.0;
+    const double width = text->clipAxisRect()->rect().width() - text->padding().left() -
+                         text->padding().right() - 4.0;
     const QFontMetricsF metrics(text->font());
     QStringList shown;
     for (const QString& line : lines)

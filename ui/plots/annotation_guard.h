@@ -16,9 +16,9 @@ namespace xyt::ui {
  * spaces into lines, and a legend in a row of its own takes as many columns as the row has
  * room for (fitLegendColumns) and an axis no more ticks than its labels have room
  * for (fitTickCounts), and a legend set in a corner goes to the corner with the fewest trace
- * points (placeInsetLegends); the plot is then drawn again with the taller rows. The text keeps the point the plot gave it: each drawing starts from there, so
- * a zoom or a new result places it afresh. A label too large for its rect stays at its top
- * left corner.
+ * points (placeInsetLegends); the plot is then drawn again with the taller rows. The text keeps the
+ * point the plot gave it: each drawing starts from there, so a zoom or a new result places it
+ * afresh. A label too large for its rect stays at its top left corner.
  */
 void guardAnnotations(QCustomPlot* plot);
 

@@ -18,7 +18,9 @@ const QColor kWith{0x94, 0x67, 0xbd};
 const QColor kMargin{0xc6, 0x28, 0x28}; ///< a margin that fails its minimum (or is negative)
 const QColor kMet{0x1b, 0x7f, 0x2a};    ///< one that meets it: the metrics panel's check colours
 
-QString num(double v, int digits = 3) { return QString::number(v, 'g', digits); }
+QString num(double v, int digits = 3) {
+    return QString::number(v, 'g', digits);
+}
 
 /// " ✓ ≥ 30°" / " ✗ < 30°" after a margin label when the specification states a minimum.
 QString requirementText(bool met, double minimum, const QString& unit) {
@@ -28,7 +30,8 @@ QString requirementText(bool met, double minimum, const QString& unit) {
 }
 
 /// Graph data of one response (non-finite values are left out: a pole on the axis).
-void setResponse(QCPGraph* graph, const std::vector<double>& omega, const std::vector<double>& values) {
+void setResponse(QCPGraph* graph, const std::vector<double>& omega,
+                 const std::vector<double>& values) {
     QVector<QCPGraphData> data;
     data.reserve(static_cast<qsizetype>(omega.size()));
     for (std::size_t i = 0; i < omega.size() && i < values.size(); ++i)
@@ -52,7 +55,8 @@ double interpolate(const std::vector<double>& omega, const std::vector<double>& 
 
 BodePlot::BodePlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("bode");
-    setAutoAddPlottableToLegend(false); // the legend lists each curve once (magnitude and phase share it)
+    setAutoAddPlottableToLegend(
+        false); // the legend lists each curve once (magnitude and phase share it)
     plotLayout()->clear();
     title_ = new QCPTextElement(this, tr("Bode diagram"), QFont(font().family(), 10, QFont::Bold));
     plotLayout()->addElement(0, 0, title_);
@@ -74,11 +78,12 @@ BodePlot::BodePlot(QWidget* parent) : PlotWidget(parent) {
         rect->setRangeDrag(Qt::Horizontal | Qt::Vertical);
         rect->setRangeZoom(Qt::Horizontal | Qt::Vertical);
         // One frequency axis: panning or zooming one panel moves both.
-        connect(x, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this, [this, rect](const QCPRange& r) {
-            QCPAxisRect* other = rect == magRect_ ? phaseRect_ : magRect_;
-            if (other->axis(QCPAxis::atBottom)->range() != r)
-                other->axis(QCPAxis::atBottom)->setRange(r);
-        });
+        connect(x, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+                [this, rect](const QCPRange& r) {
+                    QCPAxisRect* other = rect == magRect_ ? phaseRect_ : magRect_;
+                    if (other->axis(QCPAxis::atBottom)->range() != r)
+                        other->axis(QCPAxis::atBottom)->setRange(r);
+                });
     }
     magRect_->axis(QCPAxis::atLeft)->setLabel(tr("magnitude (dB)"));
     phaseRect_->axis(QCPAxis::atLeft)->setLabel(tr("phase (°)"));
@@ -103,27 +108,30 @@ BodePlot::BodePlot(QWidget* parent) : PlotWidget(parent) {
 
     setupInteractivePlot(this);
     setInteraction(QCP::iSelectLegend, true);
-    connect(this, &QCustomPlot::legendClick, this, [this](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
-        auto* pi = qobject_cast<QCPPlottableLegendItem*>(item);
-        if (!pi)
-            return;
-        for (const Curve& c : std::as_const(curves_))
-            if (c.magnitude == pi->plottable()) {
-                const bool visible = !c.magnitude->visible();
-                c.magnitude->setVisible(visible);
-                if (c.phase)
-                    c.phase->setVisible(visible);
-                item->setTextColor(visible ? Qt::black : QColor(0xaa, 0xaa, 0xaa));
-            }
-        item->setSelected(false);
-        replot(QCustomPlot::rpQueuedReplot);
-    });
+    connect(this, &QCustomPlot::legendClick, this,
+            [this](QCPLegend*, QCPAbstractLegendItem* item, QMouseEvent*) {
+                auto* pi = qobject_cast<QCPPlottableLegendItem*>(item);
+                if (!pi)
+                    return;
+                for (const Curve& c : std::as_const(curves_))
+                    if (c.magnitude == pi->plottable()) {
+                        const bool visible = !c.magnitude->visible();
+                        c.magnitude->setVisible(visible);
+                        if (c.phase)
+                            c.phase->setVisible(visible);
+                        item->setTextColor(visible ? Qt::black : QColor(0xaa, 0xaa, 0xaa));
+                    }
+                item->setSelected(false);
+                replot(QCustomPlot::rpQueuedReplot);
+            });
     connect(this, &QCustomPlot::mouseMove, this, &BodePlot::onMouseMove);
 }
 
 BodePlot::~BodePlot() = default;
 
-QString BodePlot::readoutHint() { return tr("hover the plot: ω, |L| and ∠L of the open loop"); }
+QString BodePlot::readoutHint() {
+    return tr("hover the plot: ω, |L| and ∠L of the open loop");
+}
 
 BodePlot::Curve& BodePlot::curve(const QString& name, const QColor& color, Qt::PenStyle style,
                                  bool withPhase) {
@@ -137,7 +145,8 @@ BodePlot::Curve& BodePlot::curve(const QString& name, const QColor& color, Qt::P
     c.magnitude->setName(name);
     legend_->addItem(new QCPPlottableLegendItem(legend_, c.magnitude));
     if (withPhase) {
-        c.phase = new QCPGraph(phaseRect_->axis(QCPAxis::atBottom), phaseRect_->axis(QCPAxis::atLeft));
+        c.phase =
+            new QCPGraph(phaseRect_->axis(QCPAxis::atBottom), phaseRect_->axis(QCPAxis::atLeft));
         c.phase->setPen(pen);
         c.phase->setName(name);
     }
@@ -166,7 +175,8 @@ void BodePlot::clearMarkers() {
     markers_.clear();
 }
 
-void BodePlot::addVerticalMarker(QCPAxisRect* rect, double omega, double from, double to, const QPen& pen) {
+void BodePlot::addVerticalMarker(QCPAxisRect* rect, double omega, double from, double to,
+                                 const QPen& pen) {
     auto* line = new QCPItemLine(this);
     line->setClipAxisRect(rect);
     for (QCPItemPosition* p : {line->start, line->end})
@@ -235,12 +245,14 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
             magRect_->axis(QCPAxis::atBottom)->setRange(span);
             double lo = 1e300, hi = -1e300, plo = 1e300, phi = -1e300;
             for (const Curve& c : std::as_const(curves_)) {
-                for (auto it = c.magnitude->data()->constBegin(); it != c.magnitude->data()->constEnd(); ++it) {
+                for (auto it = c.magnitude->data()->constBegin();
+                     it != c.magnitude->data()->constEnd(); ++it) {
                     lo = std::min(lo, it->value);
                     hi = std::max(hi, it->value);
                 }
                 if (c.phase)
-                    for (auto it = c.phase->data()->constBegin(); it != c.phase->data()->constEnd(); ++it) {
+                    for (auto it = c.phase->data()->constBegin(); it != c.phase->data()->constEnd();
+                         ++it) {
                         plo = std::min(plo, it->value);
                         phi = std::max(phi, it->value);
                     }
@@ -270,7 +282,8 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     if (std::isfinite(m.gainMarginOmegaRadPerSec) && std::isfinite(m.gainMarginDb)) {
         const double wpc = m.gainMarginOmegaRadPerSec;
         const QColor color = req.gainMarginMet ? kMet : kMargin;
-        addVerticalMarker(magRect_, wpc, -m.gainMarginDb, 0.0, QPen(color, req.gainMarginMet ? 1.6 : 2.4));
+        addVerticalMarker(magRect_, wpc, -m.gainMarginDb, 0.0,
+                          QPen(color, req.gainMarginMet ? 1.6 : 2.4));
         addLabel(magRect_, wpc, -0.5 * m.gainMarginDb,
                  tr("GM %1 dB at %2 rad/s").arg(num(m.gainMarginDb)).arg(num(wpc)) +
                      requirementText(req.gainMarginMet, req.minGainMarginDb, tr(" dB")),
@@ -281,11 +294,13 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
         const double phase = interpolate(w, a.responses.openLoop.phaseDeg, wgc);
         const double minus180 = phase - m.phaseMarginDeg; // -180 + 360 k on the unwrapped curve
         const QColor color = req.phaseMarginMet ? kMet : kMargin;
-        addVerticalMarker(phaseRect_, wgc, minus180, phase, QPen(color, req.phaseMarginMet ? 1.6 : 2.4));
-        addLabel(phaseRect_, wgc, 0.5 * (phase + minus180),
-                 tr("PM %1° at %2 rad/s").arg(num(m.phaseMarginDeg)).arg(num(wgc)) +
-                     requirementText(req.phaseMarginMet, req.minPhaseMarginDeg, QStringLiteral("°")),
-                 color, Qt::AlignLeft | Qt::AlignVCenter);
+        addVerticalMarker(phaseRect_, wgc, minus180, phase,
+                          QPen(color, req.phaseMarginMet ? 1.6 : 2.4));
+        addLabel(
+            phaseRect_, wgc, 0.5 * (phase + minus180),
+            tr("PM %1° at %2 rad/s").arg(num(m.phaseMarginDeg)).arg(num(wgc)) +
+                requirementText(req.phaseMarginMet, req.minPhaseMarginDeg, QStringLiteral("°")),
+            color, Qt::AlignLeft | Qt::AlignVCenter);
         auto* line = new QCPItemStraightLine(this);
         line->setClipAxisRect(phaseRect_);
         for (QCPItemPosition* p : {line->point1, line->point2})
@@ -322,10 +337,12 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
         markers_ << label;
     };
     if (std::isfinite(a.referenceOmegaRadPerSec) && a.referenceOmegaRadPerSec > 0.0)
-        frequencyLine(a.referenceOmegaRadPerSec, tr("reference ω = %1").arg(num(a.referenceOmegaRadPerSec)),
+        frequencyLine(a.referenceOmegaRadPerSec,
+                      tr("reference ω = %1").arg(num(a.referenceOmegaRadPerSec)),
                       QColor(0x55, 0x55, 0x55));
     if (openLoop_.tsSeconds > 0.0)
-        frequencyLine(std::numbers::pi / openLoop_.tsSeconds, tr("Nyquist π/Ts"), QColor(0x55, 0x55, 0x55));
+        frequencyLine(std::numbers::pi / openLoop_.tsSeconds, tr("Nyquist π/Ts"),
+                      QColor(0x55, 0x55, 0x55));
 
     QStringList notes;
     if (!m.closedLoopStable)
@@ -364,7 +381,7 @@ void BodePlot::leaveEvent(QEvent* event) {
 void BodePlot::onMouseMove(QMouseEvent* event) {
     if (event->buttons() != Qt::NoButton || openLoop_.omegaRadPerSec.empty())
         return;
-    QCPAxisRect* rect = magRect_->rect().contains(event->pos()) ? magRect_
+    QCPAxisRect* rect = magRect_->rect().contains(event->pos())     ? magRect_
                         : phaseRect_->rect().contains(event->pos()) ? phaseRect_
                                                                     : nullptr;
     QString text = readoutHint();

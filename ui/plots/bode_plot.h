@@ -33,8 +33,8 @@ class BodePlot : public PlotWidget {
 public:
     explicit BodePlot(QWidget* parent = nullptr);
     ~BodePlot() override;
-    void showAnalysis(const AxisFrequencyAnalysis& analysis, bool zpetcEnabled, const QString& title,
-                      const BodeMarginRequirements& requirements = {});
+    void showAnalysis(const AxisFrequencyAnalysis& analysis, bool zpetcEnabled,
+                      const QString& title, const BodeMarginRequirements& requirements = {});
     void showNoResult(const QString& title, const QString& reason);
     bool hasResult() const { return hasResult_; }
     QString noticeText() const { return notice_->text(); }
@@ -58,9 +58,10 @@ private:
     };
     Curve& curve(const QString& name, const QColor& color, Qt::PenStyle style, bool withPhase);
     void clearMarkers();
-    void addVerticalMarker(QCPAxisRect* rect, double omega, double from, double to, const QPen& pen);
-    void addLabel(QCPAxisRect* rect, double omega, double value, const QString& text, const QColor& color,
-                  Qt::Alignment align);
+    void addVerticalMarker(QCPAxisRect* rect, double omega, double from, double to,
+                           const QPen& pen);
+    void addLabel(QCPAxisRect* rect, double omega, double value, const QString& text,
+                  const QColor& color, Qt::Alignment align);
     void onMouseMove(QMouseEvent* event);
 
     QCPAxisRect* magRect_;

@@ -30,7 +30,8 @@ std::vector<std::pair<std::size_t, std::size_t>> pieces(const std::vector<Point2
     for (std::size_t j = 1; j < base.size(); ++j)
         gaps.push_back(norm(base[j] - base[j - 1]));
     std::vector<double> sorted = gaps;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+    std::nth_element(sorted.begin(),
+                     sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
     const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
     std::size_t first = 0;
     for (std::size_t j = 1; j < base.size(); ++j)
@@ -53,9 +54,10 @@ ContourBandPlot::ContourBandPlot(QWidget* parent) : PlotWidget(parent) {
     xAxis->setLabel(tr("x (mm)"));
     yAxis->setLabel(tr("y (mm)"));
     legend->setVisible(false); // the plot is narrow: the tooltip says what is drawn
-    setToolTip(tr("The programmed contour dashed, the nominal design's traced contour solid, and the band "
-                  "the mismatched plant pairs trace (min–max light, 5–95 % darker); the contour error is "
-                  "magnified about the contour by the factor in the title."));
+    setToolTip(
+        tr("The programmed contour dashed, the nominal design's traced contour solid, and the band "
+           "the mismatched plant pairs trace (min–max light, 5–95 % darker); the contour error is "
+           "magnified about the contour by the factor in the title."));
     notice_ = std::make_unique<PlotNotice>(this, axisRect(), Qt::AlignTop | Qt::AlignRight);
     setupInteractivePlot(this);
     // The axis rect has its final size only once the layout has run (a hidden page of a stack
@@ -104,18 +106,23 @@ void ContourBandPlot::showResult(const ContourRobustnessResult& r) {
         outer.push_back(std::max({std::abs(e.min[j]), std::abs(e.max[j]), std::abs(e.nominal[j])}));
     }
     std::sort(outer.begin(), outer.end());
-    const double typical = outer[static_cast<std::size_t>(0.9 * static_cast<double>(outer.size() - 1))];
+    const double typical =
+        outer[static_cast<std::size_t>(0.9 * static_cast<double>(outer.size() - 1))];
     const double size = std::max(maxX - minX, maxY - minY);
-    magnification_ = typical > 0.0 && size > 0.0 ? std::max(1.0, niceFloor(0.1 * size / typical)) : 1.0;
+    magnification_ =
+        typical > 0.0 && size > 0.0 ? std::max(1.0, niceFloor(0.1 * size / typical)) : 1.0;
     const double m = magnification_;
     const auto at = [&](std::size_t j, double err) {
-        return QCPCurveData(0.0, r.base[j].x + m * err * r.normal[j].x, r.base[j].y + m * err * r.normal[j].y);
+        return QCPCurveData(0.0, r.base[j].x + m * err * r.normal[j].x,
+                            r.base[j].y + m * err * r.normal[j].y);
     };
     const QColor band = colors::output;
     for (const auto& piece : pieces(r.base)) {
-        const std::size_t first = piece.first, last = piece.second; // (clang 14 cannot capture bindings)
+        const std::size_t first = piece.first,
+                          last = piece.second; // (clang 14 cannot capture bindings)
         // A band is one closed polygon: its upper edge forward, its lower edge back.
-        const auto polygon = [&](const std::vector<double>& lo, const std::vector<double>& hi, int alpha) {
+        const auto polygon = [&](const std::vector<double>& lo, const std::vector<double>& hi,
+                                 int alpha) {
             QVector<QCPCurveData> d;
             for (std::size_t j = first; j <= last; ++j)
                 d.append(at(j, hi[j]));
@@ -123,7 +130,8 @@ void ContourBandPlot::showResult(const ContourRobustnessResult& r) {
                 d.append(at(j, lo[j]));
             for (int i = 0; i < d.size(); ++i)
                 d[i].t = i;
-            QCPCurve* c = addCurve(QPen(Qt::NoPen), QColor(band.red(), band.green(), band.blue(), alpha));
+            QCPCurve* c =
+                addCurve(QPen(Qt::NoPen), QColor(band.red(), band.green(), band.blue(), alpha));
             c->data()->set(d, true);
             return c;
         };

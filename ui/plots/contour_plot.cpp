@@ -20,14 +20,18 @@ QCPCurve* newCurve(QCustomPlot* plot, const QPen& pen, const QString& name) {
     return c;
 }
 
-void setPoints(QCPCurve* curve, const XyPoints& p) { curve->setData(p.x, p.y); }
+void setPoints(QCPCurve* curve, const XyPoints& p) {
+    curve->setData(p.x, p.y);
+}
 
 /// The colours of the error bands, from small to large |e| (the base curve is the first).
 const std::array<QColor, 4> kBandColors = {QColor(0x2e, 0x7d, 0x32), QColor(0xc0, 0x9a, 0x00),
                                            QColor(0xef, 0x6c, 0x00), QColor(0xc6, 0x28, 0x28)};
 constexpr std::array<double, 3> kBandFractions = {0.25, 0.5, 0.75};
 
-QString mm(double v) { return QString::number(v, 'f', 4); }
+QString mm(double v) {
+    return QString::number(v, 'f', 4);
+}
 
 } // namespace
 
@@ -56,7 +60,8 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     corners_->setName(tr("sharp corners"));
     worst_ = addGraph();
     worst_->setLineStyle(QCPGraph::lsNone);
-    worst_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5), QColor(0xc6, 0x28, 0x28), 9));
+    worst_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5),
+                                            QColor(0xc6, 0x28, 0x28), 9));
     worst_->setName(tr("largest error"));
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
@@ -110,11 +115,17 @@ bool ContourPlot::polarAvailable() const {
 }
 
 int ContourPlot::cornerCount() const {
-    return hasData_ && evaluation_.program && !polar() ? static_cast<int>(evaluation_.program->contour.corners.size()) : 0;
+    return hasData_ && evaluation_.program && !polar()
+               ? static_cast<int>(evaluation_.program->contour.corners.size())
+               : 0;
 }
 
-QString ContourPlot::figuresText() const { return figures_->text(); }
-QString ContourPlot::noticeText() const { return notice_->text(); }
+QString ContourPlot::figuresText() const {
+    return figures_->text();
+}
+QString ContourPlot::noticeText() const {
+    return notice_->text();
+}
 
 void ContourPlot::showSession(const Session& session, const SessionEvaluation& evaluation,
                               const QStringList& notices) {
@@ -242,7 +253,8 @@ void ContourPlot::drawProgram() {
         const double threshold = kBandFractions[b] * c.maxAbs;
         XyPoints band;
         for (qsizetype k = 0; k < magnified.x.size(); ++k) {
-            const bool in = c.maxAbs > 0.0 && std::abs(c.error[static_cast<std::size_t>(k)]) >= threshold;
+            const bool in =
+                c.maxAbs > 0.0 && std::abs(c.error[static_cast<std::size_t>(k)]) >= threshold;
             band.x.append(in ? magnified.x[k] : qQNaN());
             band.y.append(in ? magnified.y[k] : qQNaN());
         }
@@ -261,11 +273,13 @@ void ContourPlot::drawProgram() {
                        .arg(QString::number(c.maxAbs, 'g', 3), QString::number(c.rms, 'g', 3));
     if (corner_ >= 0 && corner_ < static_cast<int>(c.corners.size())) {
         const CornerOvershoot& corner = c.corners[static_cast<std::size_t>(corner_)];
-        text += corner.samples > 0 ? tr("; corner %1/%2: %3 mm")
-                                         .arg(corner_ + 1)
-                                         .arg(c.corners.size())
-                                         .arg(QString::number(corner.maxAbsError, 'g', 3))
-                                   : tr("; corner %1/%2: no sample near it").arg(corner_ + 1).arg(c.corners.size());
+        text +=
+            corner.samples > 0
+                ? tr("; corner %1/%2: %3 mm")
+                      .arg(corner_ + 1)
+                      .arg(c.corners.size())
+                      .arg(QString::number(corner.maxAbsError, 'g', 3))
+                : tr("; corner %1/%2: no sample near it").arg(corner_ + 1).arg(c.corners.size());
     } else if (!c.corners.empty()) {
         text += tr("; %n corner(s)", nullptr, static_cast<int>(c.corners.size()));
     }
@@ -289,10 +303,13 @@ void ContourPlot::drawCircularTest() {
     setPoints(fMax_, circlePoints(n.centre, n.radius + m * iso.radialDeviationFMax));
     setPoints(fMin_, circlePoints(n.centre, n.radius + m * iso.radialDeviationFMin));
     const Point2 lsCentre = n.centre + m * (iso.leastSquares.centre - n.centre);
-    setPoints(gOuter_, circlePoints(lsCentre, n.radius + m * (iso.maxRadiusAboutLeastSquares - n.radius)));
-    setPoints(gInner_, circlePoints(lsCentre, n.radius + m * (iso.minRadiusAboutLeastSquares - n.radius)));
+    setPoints(gOuter_,
+              circlePoints(lsCentre, n.radius + m * (iso.maxRadiusAboutLeastSquares - n.radius)));
+    setPoints(gInner_,
+              circlePoints(lsCentre, n.radius + m * (iso.minRadiusAboutLeastSquares - n.radius)));
     QString text = tr("ISO 230-4 (mm): G %1, F max %2, F min %3")
-                       .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax), mm(iso.radialDeviationFMin));
+                       .arg(mm(iso.circularDeviationG), mm(iso.radialDeviationFMax),
+                            mm(iso.radialDeviationFMin));
     if (iso.hysteresisH)
         text += tr(", H %1").arg(mm(*iso.hysteresisH));
     figures_->setText(text);
@@ -325,10 +342,11 @@ void ContourPlot::fitEqualScale() {
     // the commanded and traced paths, the magnified error (which leaves the path by
     // magnification times the error), and in the polar view both runs and the F and G circles.
     QCPRange xr, yr;
-    const bool found = curvesBoundingBox(
-        polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_, fMax_, fMin_, gInner_, gOuter_}
-                : std::vector<QCPCurve*>{commanded_, traced_, magnified_},
-        xr, yr);
+    const bool found =
+        curvesBoundingBox(polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_,
+                                                           reverse_, fMax_, fMin_, gInner_, gOuter_}
+                                  : std::vector<QCPCurve*>{commanded_, traced_, magnified_},
+                          xr, yr);
     if (found)
         showBox(xr.lower, xr.upper, yr.lower, yr.upper);
 }

@@ -18,9 +18,13 @@ DampingLabels::DampingLabels(QCustomPlot* plot) : QCPAbstractItem(plot) {
     setClipToAxisRect(true);
 }
 
-void DampingLabels::setLabels(std::vector<Label> labels) { labels_ = std::move(labels); }
+void DampingLabels::setLabels(std::vector<Label> labels) {
+    labels_ = std::move(labels);
+}
 
-double DampingLabels::selectTest(const QPointF&, bool, QVariant*) const { return -1.0; }
+double DampingLabels::selectTest(const QPointF&, bool, QVariant*) const {
+    return -1.0;
+}
 
 QRectF DampingLabels::rectFor(const Label& label, const QSizeF& size, const QRectF& area) const {
     const QCPAxis* x = parentPlot()->xAxis;
@@ -30,7 +34,8 @@ QRectF DampingLabels::rectFor(const Label& label, const QSizeF& size, const QRec
     };
     const QPointF anchor = pixel(label.anchor);
     if (label.direction == 0.0) { // centred above its point
-        return QRectF(anchor.x() - size.width() / 2.0, anchor.y() - size.height(), size.width(), size.height());
+        return QRectF(anchor.x() - size.width() / 2.0, anchor.y() - size.height(), size.width(),
+                      size.height());
     }
     // The ray o + t d (t >= 0, pixels) clipped to the area: the label goes where it leaves.
     const QPointF d = pixel(label.anchor + label.direction) - anchor;
@@ -49,11 +54,13 @@ QRectF DampingLabels::rectFor(const Label& label, const QSizeF& size, const QRec
         t1 = std::min(t1, b);
         return t0 <= t1;
     };
-    if (!slab(anchor.x(), u.x(), area.left(), area.right()) || !slab(anchor.y(), u.y(), area.top(), area.bottom()))
+    if (!slab(anchor.x(), u.x(), area.left(), area.right()) ||
+        !slab(anchor.y(), u.y(), area.top(), area.bottom()))
         return {};
     const QPointF exit = anchor + t1 * u;
     // Back along the ray by half the label's extent in that direction, then into the area.
-    const double back = 0.5 * (size.width() * std::abs(u.x()) + size.height() * std::abs(u.y())) + kInset;
+    const double back =
+        0.5 * (size.width() * std::abs(u.x()) + size.height() * std::abs(u.y())) + kInset;
     QRectF r(QPointF(), size);
     r.moveCenter(exit - back * u);
     r.moveLeft(std::clamp(r.left(), area.left(), area.right() - r.width()));
@@ -73,16 +80,22 @@ void DampingLabels::draw(QCPPainter* painter) {
     std::vector<QRectF> taken;
     for (int i = 0; i < parentPlot()->itemCount(); ++i)
         if (auto* text = qobject_cast<QCPItemText*>(parentPlot()->item(i));
-            text && text->visible() && !text->text().isEmpty() && text->clipAxisRect() == clipAxisRect())
-            taken.push_back(QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()).normalized());
+            text && text->visible() && !text->text().isEmpty() &&
+            text->clipAxisRect() == clipAxisRect())
+            taken.push_back(
+                QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition())
+                    .normalized());
     for (const Label& label : labels_) {
         const QSizeF size(metrics.horizontalAdvance(label.text) + 2.0, metrics.height());
         const QRectF r = rectFor(label, size, area);
         if (r.isEmpty() || !area.contains(r))
             continue;
         const bool overlaps = std::any_of(placed_.begin(), placed_.end(),
-                                          [&](const Placed& p) { return p.rect.adjusted(-1, -1, 1, 1).intersects(r); }) ||
-                              std::any_of(taken.begin(), taken.end(), [&](const QRectF& t) { return t.intersects(r); });
+                                          [&](const Placed& p) {
+                                              return p.rect.adjusted(-1, -1, 1, 1).intersects(r);
+                                          }) ||
+                              std::any_of(taken.begin(), taken.end(),
+                                          [&](const QRectF& t) { return t.intersects(r); });
         if (overlaps)
             continue;
         painter->drawText(r, Qt::AlignCenter, label.text);

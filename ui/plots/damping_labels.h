@@ -32,7 +32,8 @@ public:
     void setLabels(std::vector<Label> labels);
     /// The labels the last draw placed (those left out are not listed).
     const std::vector<Placed>& placed() const { return placed_; }
-    double selectTest(const QPointF& pos, bool onlySelectable, QVariant* details = nullptr) const override;
+    double selectTest(const QPointF& pos, bool onlySelectable,
+                      QVariant* details = nullptr) const override;
 
 protected:
     void draw(QCPPainter* painter) override;

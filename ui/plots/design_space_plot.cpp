@@ -53,7 +53,8 @@ std::vector<std::vector<GridCorner>> feasibleOutline(const std::vector<std::uint
             edges[e].used = true;
             loop.push_back(edges[e].to);
             const auto [first, last] = leaving.equal_range({edges[e].to.iWn, edges[e].to.iKp});
-            const auto next = std::find_if(first, last, [&](const auto& kv) { return !edges[kv.second].used; });
+            const auto next =
+                std::find_if(first, last, [&](const auto& kv) { return !edges[kv.second].used; });
             if (next == last)
                 break;
             e = next->second;
@@ -71,8 +72,8 @@ std::vector<double> cellEdges(const std::vector<double>& values, bool logarithmi
         return {values[0] / 1.1, values[0] * 1.1};
     std::vector<double> edges(n + 1);
     for (std::size_t i = 0; i + 1 < n; ++i)
-        edges[i + 1] = logarithmic ? std::sqrt(values[i] * values[i + 1])
-                                   : 0.5 * (values[i] + values[i + 1]);
+        edges[i + 1] =
+            logarithmic ? std::sqrt(values[i] * values[i + 1]) : 0.5 * (values[i] + values[i + 1]);
     edges[0] = logarithmic ? values[0] * values[0] / edges[1] : 2.0 * values[0] - edges[1];
     edges[n] = logarithmic ? values[n - 1] * values[n - 1] / edges[n - 1]
                            : 2.0 * values[n - 1] - edges[n - 1];
@@ -102,13 +103,15 @@ QString metricLabel(SweepCriterion metric) {
 QString metricAxisLabel(SweepCriterion metric) {
     // ITAE = integral of t |e| dt: trajectory unit (mm) times s^2.
     const bool itae = metric == SweepCriterion::Itae;
-    const QString unit = itae                                ? QObject::tr("mm·s²")
-                         : metric == SweepCriterion::MaxU     ? QObject::tr("V")
-                         : metric == SweepCriterion::Settle   ? QObject::tr("s after tf")
-                         : metric == SweepCriterion::PhaseMargin ? QObject::tr("deg, larger is better")
-                         : metric == SweepCriterion::GainMargin  ? QObject::tr("dB, larger is better")
-                                                              : QObject::tr("mm");
-    return QObject::tr("%1%2 (%3)").arg(metricLabel(metric), itae ? QObject::tr(" ∫t|e|dt") : QString(), unit);
+    const QString unit =
+        itae                                    ? QObject::tr("mm·s²")
+        : metric == SweepCriterion::MaxU        ? QObject::tr("V")
+        : metric == SweepCriterion::Settle      ? QObject::tr("s after tf")
+        : metric == SweepCriterion::PhaseMargin ? QObject::tr("deg, larger is better")
+        : metric == SweepCriterion::GainMargin  ? QObject::tr("dB, larger is better")
+                                                : QObject::tr("mm");
+    return QObject::tr("%1%2 (%3)")
+        .arg(metricLabel(metric), itae ? QObject::tr(" ∫t|e|dt") : QString(), unit);
 }
 
 namespace {
@@ -241,16 +244,20 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     axisRect()->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
     scale_->setMarginGroup(QCP::msBottom | QCP::msTop, margins);
 
-    current_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssCross, QPen(colors::error, 3), Qt::NoBrush, 16),
-                      tr("current"));
-    best_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssStar, QPen(QColor(0xff, 0x30, 0xd0), 3),
-                                         Qt::NoBrush, 20),
+    current_ = marker(
+        this, QCPScatterStyle(QCPScatterStyle::ssCross, QPen(colors::error, 3), Qt::NoBrush, 16),
+        tr("current"));
+    best_ = marker(this,
+                   QCPScatterStyle(QCPScatterStyle::ssStar, QPen(QColor(0xff, 0x30, 0xd0), 3),
+                                   Qt::NoBrush, 20),
                    tr("best"));
-    refined_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(Qt::black, 1.2),
-                                            QBrush(QColor(0xff, 0x30, 0xd0)), 10),
+    refined_ = marker(this,
+                      QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(Qt::black, 1.2),
+                                      QBrush(QColor(0xff, 0x30, 0xd0)), 10),
                       tr("refined"));
-    leastViolating_ = marker(this, QCPScatterStyle(QCPScatterStyle::ssTriangle, QPen(Qt::black, 2),
-                                                   QBrush(QColor(0xff, 0xd0, 0x30)), 13),
+    leastViolating_ = marker(this,
+                             QCPScatterStyle(QCPScatterStyle::ssTriangle, QPen(Qt::black, 2),
+                                             QBrush(QColor(0xff, 0xd0, 0x30)), 13),
                              tr("least violating"));
     addLayer("markers", layer("overlay-grid"), QCustomPlot::limAbove);
     for (QCPGraph* g : {current_, best_, refined_, leastViolating_})
@@ -284,7 +291,8 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
         if (event->buttons() == Qt::NoButton)
             emit cellHovered(cellAtPixel(event->position()));
     });
-    connect(this, &QCustomPlot::mousePress, this, [this](QMouseEvent* event) { pressPos_ = event->pos(); });
+    connect(this, &QCustomPlot::mousePress, this,
+            [this](QMouseEvent* event) { pressPos_ = event->pos(); });
     connect(this, &QCustomPlot::mouseRelease, this, [this](QMouseEvent* event) {
         if (event->button() != Qt::LeftButton || (event->pos() - pressPos_).manhattanLength() > 4)
             return; // a drag pans the view
@@ -293,7 +301,9 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     });
 }
 
-QString DesignSpacePlot::noticeText() const { return notice_->text(); }
+QString DesignSpacePlot::noticeText() const {
+    return notice_->text();
+}
 
 void DesignSpacePlot::setLeastViolating(std::optional<std::pair<double, double>> wnKp) {
     leastViolating_->data()->clear();
@@ -310,13 +320,15 @@ void DesignSpacePlot::showContextMenu(const QPoint& pos) {
     QMenu menu(this);
     menu.addAction(tr("Show the whole grid"), this, [this] { showWholeGrid(); });
     menu.addSeparator();
-    menu.addAction(tr("Save as PNG..."), this, [this] { savePlotDialog(this, objectName() + ".png"); });
-    menu.addAction(tr("Save as PDF..."), this, [this] { savePlotDialog(this, objectName() + ".pdf"); });
+    menu.addAction(tr("Save as PNG..."), this,
+                   [this] { savePlotDialog(this, objectName() + ".png"); });
+    menu.addAction(tr("Save as PDF..."), this,
+                   [this] { savePlotDialog(this, objectName() + ".pdf"); });
     menu.exec(mapToGlobal(pos));
 }
 
-void DesignSpacePlot::showResult(const DesignSweepResult& result, bool logGrid, SweepCriterion metric,
-                                 bool logColor, const QString& title) {
+void DesignSpacePlot::showResult(const DesignSweepResult& result, bool logGrid,
+                                 SweepCriterion metric, bool logColor, const QString& title) {
     result_ = result;
     hasResult_ = true;
     map_->setVisible(true);
@@ -342,11 +354,12 @@ void DesignSpacePlot::showResult(const DesignSweepResult& result, bool logGrid, 
     status_->data()->setRange(wnRange, kpRange);
     for (int a = 0; a < nWn; ++a)
         for (int b = 0; b < nKp; ++b) {
-            const DesignPoint& p = result.at(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
-            const CellStatus s = !p.computed                    ? NotComputed
+            const DesignPoint& p =
+                result.at(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+            const CellStatus s = !p.computed                       ? NotComputed
                                  : (!p.stable || !p.metricsFinite) ? Failed
-                                 : p.feasible                    ? Feasible
-                                                                 : Infeasible;
+                                 : p.feasible                      ? Feasible
+                                                                   : Infeasible;
             status_->data()->setCell(a, b, s);
         }
     drawMetric();
@@ -390,8 +403,8 @@ void DesignSpacePlot::drawMetric() {
     double hi = -lo;
     for (int a = 0; a < nWn; ++a)
         for (int b = 0; b < nKp; ++b) {
-            double v = criterionMetric(result_.at(static_cast<std::size_t>(a), static_cast<std::size_t>(b)),
-                                       metric_);
+            double v = criterionMetric(
+                result_.at(static_cast<std::size_t>(a), static_cast<std::size_t>(b)), metric_);
             // Not computed, diverged, or not drawable on a log scale: the status layer shows it.
             if (!std::isfinite(v) || (logColor_ && v <= 0.0))
                 v = std::numeric_limits<double>::quiet_NaN();
@@ -417,8 +430,9 @@ void DesignSpacePlot::drawMetric() {
 }
 
 void DesignSpacePlot::drawOutline() {
-    const auto loops = feasibleOutline(result_.feasibleMask, static_cast<int>(result_.wnValues.size()),
-                                       static_cast<int>(result_.kpValues.size()));
+    const auto loops =
+        feasibleOutline(result_.feasibleMask, static_cast<int>(result_.wnValues.size()),
+                        static_cast<int>(result_.kpValues.size()));
     while (outline_.size() > loops.size()) {
         removePlottable(outline_.back());
         removePlottable(outlineHalo_.back());
@@ -456,7 +470,8 @@ void DesignSpacePlot::setCurrentDesign(double wn, double kp) {
     replot(QCustomPlot::rpQueuedReplot);
 }
 
-std::optional<std::pair<std::size_t, std::size_t>> DesignSpacePlot::cellAtPixel(const QPointF& pixel) const {
+std::optional<std::pair<std::size_t, std::size_t>>
+DesignSpacePlot::cellAtPixel(const QPointF& pixel) const {
     if (!hasResult_ || !axisRect()->rect().contains(pixel.toPoint()))
         return std::nullopt;
     const auto find = [](const std::vector<double>& edges, double v) -> std::optional<std::size_t> {
@@ -473,7 +488,8 @@ std::optional<std::pair<std::size_t, std::size_t>> DesignSpacePlot::cellAtPixel(
 }
 
 QPointF DesignSpacePlot::pixelOfCell(std::size_t iWn, std::size_t iKp) const {
-    return {xAxis->coordToPixel(result_.wnValues.at(iWn)), yAxis->coordToPixel(result_.kpValues.at(iKp))};
+    return {xAxis->coordToPixel(result_.wnValues.at(iWn)),
+            yAxis->coordToPixel(result_.kpValues.at(iKp))};
 }
 
 void DesignSpacePlot::showWholeGrid() {

@@ -57,7 +57,8 @@ EnvelopePlot::EnvelopePlot(QWidget* parent) : PlotWidget(parent) {
 
 EnvelopePlot::~EnvelopePlot() = default;
 
-void EnvelopePlot::showEnvelope(const SignalEnvelope& e, const QString& title, const QString& unitLabel) {
+void EnvelopePlot::showEnvelope(const SignalEnvelope& e, const QString& title,
+                                const QString& unitLabel) {
     title_->setText(title);
     yAxis->setLabel(unitLabel);
     setCurve(min_, e.t, e.min);
@@ -68,7 +69,8 @@ void EnvelopePlot::showEnvelope(const SignalEnvelope& e, const QString& title, c
     setCurve(nominal_, e.t, e.nominal);
     hasResult_ = !e.t.empty();
     notice_->setSevere(!hasResult_);
-    notice_->setLines(hasResult_ ? QStringList{} : QStringList{tr("No stable plant: no envelope.")});
+    notice_->setLines(hasResult_ ? QStringList{}
+                                 : QStringList{tr("No stable plant: no envelope.")});
     rescaleAxes();
     replot(QCustomPlot::rpQueuedReplot);
 }

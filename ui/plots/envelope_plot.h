@@ -20,7 +20,8 @@ public:
     explicit EnvelopePlot(QWidget* parent = nullptr);
     ~EnvelopePlot() override;
 
-    void showEnvelope(const SignalEnvelope& envelope, const QString& title, const QString& unitLabel);
+    void showEnvelope(const SignalEnvelope& envelope, const QString& title,
+                      const QString& unitLabel);
     /// Clears the plot and says why: never an earlier result.
     void showNoResult(const QString& title, const QString& reason);
     bool hasResult() const { return hasResult_; }

@@ -36,7 +36,8 @@ HistogramPlot::HistogramPlot(QWidget* parent) : PlotWidget(parent) {
     bars_ = new QCPBars(xAxis, yAxis);
     bars_->setName(tr("plants"));
     bars_->setPen(QPen(colors::output.darker(120)));
-    bars_->setBrush(QColor(colors::output.red(), colors::output.green(), colors::output.blue(), 120));
+    bars_->setBrush(
+        QColor(colors::output.red(), colors::output.green(), colors::output.blue(), 120));
     bars_->setWidthType(QCPBars::wtPlotCoords);
     limit_ = verticalLine(this, QPen(colors::limit, 1.6, Qt::DashLine));
     nominal_ = verticalLine(this, QPen(colors::reference, 1.6));
@@ -59,11 +60,13 @@ HistogramPlot::HistogramPlot(QWidget* parent) : PlotWidget(parent) {
 HistogramPlot::~HistogramPlot() = default;
 
 double HistogramPlot::limitDrawn() const {
-    return limit_->visible() ? limit_->point1->coords().x() : std::numeric_limits<double>::quiet_NaN();
+    return limit_->visible() ? limit_->point1->coords().x()
+                             : std::numeric_limits<double>::quiet_NaN();
 }
 
 double HistogramPlot::nominalDrawn() const {
-    return nominal_->visible() ? nominal_->point1->coords().x() : std::numeric_limits<double>::quiet_NaN();
+    return nominal_->visible() ? nominal_->point1->coords().x()
+                               : std::numeric_limits<double>::quiet_NaN();
 }
 
 void HistogramPlot::showHistogram(const Histogram& h, double nominal, std::optional<double> limit,
@@ -81,9 +84,11 @@ void HistogramPlot::showHistogram(const Histogram& h, double nominal, std::optio
     placeVertical(limit_, limit.value_or(std::numeric_limits<double>::quiet_NaN()));
     hasResult_ = !h.counts.empty();
     notice_->setSevere(!hasResult_);
-    notice_->setLines(hasResult_ ? QStringList{} : QStringList{tr("No stable plant: no distribution.")});
+    notice_->setLines(hasResult_ ? QStringList{}
+                                 : QStringList{tr("No stable plant: no distribution.")});
     // The range holds the bins and both lines.
-    double lo = h.edges.empty() ? nominal : h.edges.front(), hi = h.edges.empty() ? nominal : h.edges.back();
+    double lo = h.edges.empty() ? nominal : h.edges.front(),
+           hi = h.edges.empty() ? nominal : h.edges.back();
     for (double x : {nominal, limit.value_or(lo)})
         if (std::isfinite(x)) {
             lo = std::min(lo, x);

@@ -21,8 +21,8 @@ public:
     explicit HistogramPlot(QWidget* parent = nullptr);
     ~HistogramPlot() override;
 
-    void showHistogram(const Histogram& h, double nominal, std::optional<double> limit, const QString& title,
-                       const QString& unitLabel);
+    void showHistogram(const Histogram& h, double nominal, std::optional<double> limit,
+                       const QString& title, const QString& unitLabel);
     void showNoResult(const QString& title, const QString& reason);
     bool hasResult() const { return hasResult_; }
     QString noticeText() const { return notice_->text(); }

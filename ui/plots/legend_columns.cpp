@@ -67,7 +67,8 @@ bool fitLegendColumns(QCustomPlot* plot) {
             holes = holes || (gap && legend->item(i));
             gap = gap || !legend->item(i);
         }
-        const int columns = legend->rect().width() > 0 ? columnsThatFit(legend, most.toInt()) : legend->wrap();
+        const int columns =
+            legend->rect().width() > 0 ? columnsThatFit(legend, most.toInt()) : legend->wrap();
         if (columns != legend->wrap() || holes) {
             legend->setWrap(columns);
             legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true); // the entries re-placed

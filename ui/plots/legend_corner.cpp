@@ -12,8 +12,7 @@ namespace {
 
 constexpr int kMostSampled = 4000; ///< points looked at per trace (a trace can hold 50 000)
 
-template <typename Data>
-int countIn(QCPAbstractPlottable* p, const Data& data, const QRect& area) {
+template <typename Data> int countIn(QCPAbstractPlottable* p, const Data& data, const QRect& area) {
     const int n = data->size();
     const int stride = std::max(1, n / kMostSampled);
     // In floating point: a diverging trace maps to pixels far beyond an int's range.
@@ -36,7 +35,8 @@ bool textsIn(QCustomPlot* plot, QCPAxisRect* rect, const QRect& area) {
         auto* text = qobject_cast<QCPItemText*>(plot->item(i));
         if (!text || !text->visible() || text->text().isEmpty() || text->clipAxisRect() != rect)
             continue;
-        const QRectF r = QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()).normalized();
+        const QRectF r =
+            QRectF(text->topLeft->pixelPosition(), text->bottomRight->pixelPosition()).normalized();
         if (r.intersects(area))
             return true;
     }
@@ -66,14 +66,16 @@ int pointsIn(QCPAxisRect* rect, const QRect& area) {
 }
 
 bool placeInsetLegends(QCustomPlot* plot) {
-    constexpr std::array<Qt::Alignment, 4> corners{Qt::AlignTop | Qt::AlignRight, Qt::AlignTop | Qt::AlignLeft,
-                                                   Qt::AlignBottom | Qt::AlignRight, Qt::AlignBottom | Qt::AlignLeft};
+    constexpr std::array<Qt::Alignment, 4> corners{
+        Qt::AlignTop | Qt::AlignRight, Qt::AlignTop | Qt::AlignLeft,
+        Qt::AlignBottom | Qt::AlignRight, Qt::AlignBottom | Qt::AlignLeft};
     bool changed = false;
     for (QCPAxisRect* rect : plot->axisRects()) {
         QCPLayoutInset* inset = rect->insetLayout();
         for (int k = 0; k < inset->elementCount(); ++k) {
             auto* legend = qobject_cast<QCPLegend*>(inset->elementAt(k));
-            if (!legend || legend->itemCount() == 0 || inset->insetPlacement(k) != QCPLayoutInset::ipBorderAligned)
+            if (!legend || legend->itemCount() == 0 ||
+                inset->insetPlacement(k) != QCPLayoutInset::ipBorderAligned)
                 continue;
             const bool hiddenHere = legend->property(kHiddenUnderText).toBool();
             if (!legend->visible() && !hiddenHere)

@@ -31,7 +31,8 @@ NyquistPlot::NyquistPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("nyquist");
     setAutoAddPlottableToLegend(true);
     plotLayout()->insertRow(0);
-    title_ = new QCPTextElement(this, tr("Nyquist diagram"), QFont(font().family(), 10, QFont::Bold));
+    title_ =
+        new QCPTextElement(this, tr("Nyquist diagram"), QFont(font().family(), 10, QFont::Bold));
     plotLayout()->addElement(0, 0, title_);
     styleAxisRect(axisRect());
     xAxis->setLabel(tr("Re L"));
@@ -50,7 +51,8 @@ NyquistPlot::NyquistPlot(QWidget* parent) : PlotWidget(parent) {
     mirror_->setName(tr("ω < 0 (mirror)"));
     critical_ = addGraph();
     critical_->setLineStyle(QCPGraph::lsNone);
-    critical_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssPlus, QPen(colors::error, 2.5), Qt::NoBrush, 12));
+    critical_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssPlus, QPen(colors::error, 2.5), Qt::NoBrush, 12));
     critical_->setName(tr("−1"));
     critical_->addData(-1.0, 0.0);
     placeLegendBelow(this, 2, 5);
@@ -62,7 +64,8 @@ NyquistPlot::NyquistPlot(QWidget* parent) : PlotWidget(parent) {
 
 NyquistPlot::~NyquistPlot() = default;
 
-void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margins, const QString& title) {
+void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margins,
+                            const QString& title) {
     hasResult_ = true;
     title_->setText(title);
     title_->setTextColor(palette().color(QPalette::WindowText));
@@ -76,28 +79,32 @@ void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margi
     // Ms is a distance from -1 only for a stable closed loop; an unstable one has no Ms circle.
     const bool msKnown = margins.closedLoopStable && std::isfinite(margins.peakSensitivity) &&
                          margins.peakSensitivity > 0.0;
-    setCurve(msCircle_, msKnown ? circle(-1.0, 1.0 / margins.peakSensitivity) : std::vector<std::complex<double>>{});
+    setCurve(msCircle_, msKnown ? circle(-1.0, 1.0 / margins.peakSensitivity)
+                                : std::vector<std::complex<double>>{});
     const int z = c.closedLoopUnstablePoles;
-    QString verdict = c.passesThroughMinusOne
-                          ? tr("the curve passes through −1: a closed-loop pole on the stability boundary")
-                          : z == 0 ? tr("closed loop stable")
-                                   : tr("%1 closed-loop pole(s) unstable").arg(z);
-    criterion_->setText(tr("Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop "
-                           "poles → Z = N + P = %3: %4   (Ms = %5)")
-                            .arg(c.clockwiseEncirclements)
-                            .arg(c.openLoopUnstablePoles)
-                            .arg(z)
-                            .arg(verdict)
-                            .arg(msKnown                    ? QString::number(margins.peakSensitivity, 'g', 4)
-                                 : margins.closedLoopStable ? tr("∞")
-                                                            : tr("n/a, the closed loop is unstable")));
-    criterion_->setTextColor(z == 0 && !c.passesThroughMinusOne ? palette().color(QPalette::WindowText)
-                                                                 : colors::error);
+    QString verdict =
+        c.passesThroughMinusOne
+            ? tr("the curve passes through −1: a closed-loop pole on the stability boundary")
+        : z == 0 ? tr("closed loop stable")
+                 : tr("%1 closed-loop pole(s) unstable").arg(z);
+    criterion_->setText(
+        tr("Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop "
+           "poles → Z = N + P = %3: %4   (Ms = %5)")
+            .arg(c.clockwiseEncirclements)
+            .arg(c.openLoopUnstablePoles)
+            .arg(z)
+            .arg(verdict)
+            .arg(msKnown                    ? QString::number(margins.peakSensitivity, 'g', 4)
+                 : margins.closedLoopStable ? tr("∞")
+                                            : tr("n/a, the closed loop is unstable")));
+    criterion_->setTextColor(
+        z == 0 && !c.passesThroughMinusOne ? palette().color(QPalette::WindowText) : colors::error);
     QStringList notes;
     for (const std::string& w : c.warnings)
         notes << QString::fromStdString(w);
     if (!c.indentations.empty())
-        notes << tr("poles on the boundary are passed on small indentations: the curve closes at infinity there");
+        notes << tr("poles on the boundary are passed on small indentations: the curve closes at "
+                    "infinity there");
     notice_->setSevere(false);
     notice_->setLines(notes);
     // The region that decides stability: around -1 and the origin, out to where the curve
@@ -108,7 +115,8 @@ void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margi
             framed.push_back(p), framed.push_back(std::conj(p));
     if (c.tsSeconds != lastTs_)
         releaseView();
-    if (!ranged_ || c.tsSeconds != lastTs_ || (!viewHeld() && anyOutsideView(this, {{-1.0, 0.0}}))) {
+    if (!ranged_ || c.tsSeconds != lastTs_ ||
+        (!viewHeld() && anyOutsideView(this, {{-1.0, 0.0}}))) {
         setView(this, fittedBox({}, framed));
         ranged_ = true;
         lastTs_ = c.tsSeconds;

@@ -23,7 +23,8 @@ class NyquistPlot : public PlotWidget {
 public:
     explicit NyquistPlot(QWidget* parent = nullptr);
     ~NyquistPlot() override;
-    void showCurve(const NyquistCurve& curve, const StabilityMargins& margins, const QString& title);
+    void showCurve(const NyquistCurve& curve, const StabilityMargins& margins,
+                   const QString& title);
     void showNoResult(const QString& title, const QString& reason);
     bool hasResult() const { return hasResult_; }
     /// The criterion line drawn under the plane, e.g. "N = 0, P = 0: Z = N + P = 0 …".

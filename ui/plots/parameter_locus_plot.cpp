@@ -14,7 +14,9 @@ QString symbolOf(const std::string& name) {
     return name == "wn" ? QStringLiteral("ωn") : QString::fromStdString(name);
 }
 
-QString formatValue(double v) { return QString::number(v, 'g', 3); }
+QString formatValue(double v) {
+    return QString::number(v, 'g', 3);
+}
 
 /// Up to @p wanted "nice" values (1, 2, 5 times a power of ten) strictly inside [lo, hi],
 /// spread over the range (every other one when there are too many).
@@ -52,12 +54,13 @@ ParameterLocusPlot::ParameterLocusPlot(QWidget* parent)
     current_->setName(tr("current design"));
     ends_ = addGraph();
     ends_->setLineStyle(QCPGraph::lsNone);
-    ends_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(Qt::black, 1.2), Qt::NoBrush, 6));
+    ends_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(Qt::black, 1.2), Qt::NoBrush, 6));
     ends_->setName(tr("start of the sweep"));
     boundary_ = addGraph();
     boundary_->setLineStyle(QCPGraph::lsNone);
-    boundary_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar, QPen(QColor(0xd6, 0x27, 0x28), 2),
-                                               Qt::NoBrush, 13));
+    boundary_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssStar,
+                                               QPen(QColor(0xd6, 0x27, 0x28), 2), Qt::NoBrush, 13));
     boundary_->setName(tr("stability boundary crossed"));
     // The legend sits in a row under the plane, where it hides no branch or pole.
     placeLegendBelow(this, 2);
@@ -75,7 +78,8 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
         warnings << QString::fromStdString(w);
     legend->setVisible(true);
     notice_.setSevere(false);
-    showBranches(this, branches_, locus.branches, [](std::size_t) { return QPen(colors::output, 1.6); });
+    showBranches(this, branches_, locus.branches,
+                 [](std::size_t) { return QPen(colors::output, 1.6); });
     std::vector<std::complex<double>> starts;
     double extent = 1e-6;
     for (const auto& roots : locus.branches) {
@@ -126,8 +130,9 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
         for (const auto& p : fixedPoles)
             if (p.imag() >= -1e-12)
                 where << QString::number(p.real(), 'g', 3) +
-                             (std::abs(p.imag()) > 1e-9 ? QStringLiteral(" ± %1j").arg(std::abs(p.imag()), 0, 'g', 3)
-                                                         : QString());
+                             (std::abs(p.imag()) > 1e-9
+                                  ? QStringLiteral(" ± %1j").arg(std::abs(p.imag()), 0, 'g', 3)
+                                  : QString());
         warnings << (fixedPoles.size() == 1
                          ? tr("framed on the poles that move; one pole barely moves and may lie "
                               "outside the view: %1")
@@ -181,12 +186,14 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
         for (double v : niceValues(*lo, *hi, 5)) {
             std::size_t best = 0;
             for (std::size_t i = 1; i < locus.values.size(); ++i)
-                if (std::abs(std::log(locus.values[i] / v)) < std::abs(std::log(locus.values[best] / v)))
+                if (std::abs(std::log(locus.values[i] / v)) <
+                    std::abs(std::log(locus.values[best] / v)))
                     best = i;
             for (std::size_t b = 0; b < locus.branches.size(); ++b)
-                if (moving[b] && best < locus.branches[b].size() && locus.branches[b][best].imag() >= -1e-9)
-                    addLabel(locus.branches[b][best], symbol + "=" + formatValue(v), QColor(0x55, 0x55, 0x55),
-                             Qt::AlignLeft | Qt::AlignBottom, false);
+                if (moving[b] && best < locus.branches[b].size() &&
+                    locus.branches[b][best].imag() >= -1e-9)
+                    addLabel(locus.branches[b][best], symbol + "=" + formatValue(v),
+                             QColor(0x55, 0x55, 0x55), Qt::AlignLeft | Qt::AlignBottom, false);
         }
     }
     replot(QCustomPlot::rpQueuedReplot);

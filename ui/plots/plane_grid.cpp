@@ -132,10 +132,11 @@ private:
         lastSize_ = px;
         PlaneBox b = wanted_;
         if (px.width() > 10 && px.height() > 10) {
-            const double unitsPerPixel = std::max((b.reMax - b.reMin) / px.width(),
-                                                  (b.imMax - b.imMin) / px.height());
+            const double unitsPerPixel =
+                std::max((b.reMax - b.reMin) / px.width(), (b.imMax - b.imMin) / px.height());
             const double cx = 0.5 * (b.reMin + b.reMax), cy = 0.5 * (b.imMin + b.imMax);
-            const double hx = 0.5 * unitsPerPixel * px.width(), hy = 0.5 * unitsPerPixel * px.height();
+            const double hx = 0.5 * unitsPerPixel * px.width(),
+                         hy = 0.5 * unitsPerPixel * px.height();
             b = {cx - hx, cx + hx, cy - hy, cy + hy};
         }
         plot_->xAxis->setRange(b.reMin, b.reMax);
@@ -156,7 +157,9 @@ AspectKeeper* keeperOf(QCustomPlot* plot) {
 }
 } // namespace
 
-void setView(QCustomPlot* plot, const PlaneBox& box) { keeperOf(plot)->fit(box); }
+void setView(QCustomPlot* plot, const PlaneBox& box) {
+    keeperOf(plot)->fit(box);
+}
 
 bool resetPlaneView(QCustomPlot* plot) {
     auto* k = plot->findChild<AspectKeeper*>(QStringLiteral("xyt-aspect-keeper"),
@@ -195,12 +198,13 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
     clear();
     ts_ = tsSeconds;
     maxOmega_ = maxOmegaRadPerSec;
-    const QPen pen(QColor(0xdc, 0xdc, 0xdc), 0, Qt::SolidLine); // solid: dotted pens rasterize slowly
-    const DampingGrid grid = tsSeconds > 0.0
-                                 ? zPlaneDampingGrid(defaultGridZetas(), defaultZGridFrequencies(tsSeconds), tsSeconds)
-                                 : sPlaneDampingGrid(defaultGridZetas(),
-                                                     niceGridFrequencies(maxOmegaRadPerSec),
-                                                     maxOmegaRadPerSec);
+    const QPen pen(QColor(0xdc, 0xdc, 0xdc), 0,
+                   Qt::SolidLine); // solid: dotted pens rasterize slowly
+    const DampingGrid grid =
+        tsSeconds > 0.0
+            ? zPlaneDampingGrid(defaultGridZetas(), defaultZGridFrequencies(tsSeconds), tsSeconds)
+            : sPlaneDampingGrid(defaultGridZetas(), niceGridFrequencies(maxOmegaRadPerSec),
+                                maxOmegaRadPerSec);
     for (const GridLine& line : grid.dampingLines)
         curves_.push_back(addComplexCurve(plot_, line.points, pen));
     for (const GridLine& line : grid.frequencyLines)
@@ -221,8 +225,9 @@ void PlaneGrid::show(double tsSeconds, double maxOmegaRadPerSec) {
         const QString text = QStringLiteral("ζ=%1").arg(line.value);
         if (tsSeconds > 0.0)
             labels.push_back({text,
-                              *std::max_element(line.points.begin(), line.points.end(),
-                                                [](const auto& a, const auto& b) { return a.imag() < b.imag(); }),
+                              *std::max_element(
+                                  line.points.begin(), line.points.end(),
+                                  [](const auto& a, const auto& b) { return a.imag() < b.imag(); }),
                               0.0});
         else
             labels.push_back({text, 0.0, line.points.front()});

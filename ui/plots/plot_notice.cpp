@@ -39,9 +39,13 @@ void PlotNotice::setSevere(bool severe) {
     item_->setColor(severe ? QColor(0xb7, 0x1c, 0x1c) : QColor(0x3a, 0x2a, 0x00));
 }
 
-QString PlotNotice::text() const { return item_->visible() ? lines_.join(QLatin1Char('\n')) : QString(); }
+QString PlotNotice::text() const {
+    return item_->visible() ? lines_.join(QLatin1Char('\n')) : QString();
+}
 
-bool PlotNotice::isShown() const { return item_->visible(); }
+bool PlotNotice::isShown() const {
+    return item_->visible();
+}
 
 void clearWithNotice(QCustomPlot* plot, PlotNotice& notice, std::initializer_list<QCPGraph*> graphs,
                      const QString& reason) {

@@ -19,7 +19,9 @@ namespace xyt::ui {
 
 namespace {
 std::size_t bucketSize(std::size_t n, int buckets) {
-    return buckets > 0 ? (n + static_cast<std::size_t>(buckets) - 1) / static_cast<std::size_t>(buckets) : n;
+    return buckets > 0
+               ? (n + static_cast<std::size_t>(buckets) - 1) / static_cast<std::size_t>(buckets)
+               : n;
 }
 } // namespace
 
@@ -94,7 +96,7 @@ void styleAxisRect(QCPAxisRect* rect) {
 
 void resetView(QCustomPlot* plot) {
     if (auto* widget = qobject_cast<PlotWidget*>(plot))
-        widget->releaseView(); // the automatic fit takes over again
+        widget->releaseView();  // the automatic fit takes over again
     if (resetPlaneView(plot)) { // a complex plane returns to its fitted, equal-aspect view
         plot->replot();
         return;
@@ -128,9 +130,9 @@ bool savePlot(QCustomPlot* plot, const QString& path, QString* error) {
 }
 
 void savePlotDialog(QCustomPlot* plot, const QString& suggestedName) {
-    const QString path = QFileDialog::getSaveFileName(
-        plot, QObject::tr("Save plot"), suggestedName,
-        QObject::tr("PNG image (*.png);;PDF document (*.pdf)"));
+    const QString path =
+        QFileDialog::getSaveFileName(plot, QObject::tr("Save plot"), suggestedName,
+                                     QObject::tr("PNG image (*.png);;PDF document (*.pdf)"));
     if (path.isEmpty())
         return;
     QString error;
@@ -181,8 +183,9 @@ QCPTextElement* addTextRow(QCustomPlot* plot, int row, const QString& text) {
     return element;
 }
 
-QCPItemText* addAnnotation(QCustomPlot* plot, QCPAxisRect* rect, double x, double y, const QString& text,
-                           const QColor& color, Qt::Alignment align, bool rightHalf) {
+QCPItemText* addAnnotation(QCustomPlot* plot, QCPAxisRect* rect, double x, double y,
+                           const QString& text, const QColor& color, Qt::Alignment align,
+                           bool rightHalf) {
     auto* label = new QCPItemText(plot);
     label->setClipAxisRect(rect);
     label->position->setAxes(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
@@ -217,8 +220,12 @@ bool curvesBoundingBox(const std::vector<QCPCurve*>& curves, QCPRange& xRange, Q
         const QCPRange cy = c->getValueRange(okY);
         if (!okX || !okY)
             continue;
-        xRange = found ? QCPRange(std::min(xRange.lower, cx.lower), std::max(xRange.upper, cx.upper)) : cx;
-        yRange = found ? QCPRange(std::min(yRange.lower, cy.lower), std::max(yRange.upper, cy.upper)) : cy;
+        xRange = found
+                     ? QCPRange(std::min(xRange.lower, cx.lower), std::max(xRange.upper, cx.upper))
+                     : cx;
+        yRange = found
+                     ? QCPRange(std::min(yRange.lower, cy.lower), std::max(yRange.upper, cy.upper))
+                     : cy;
         found = true;
     }
     return found;

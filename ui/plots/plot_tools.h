@@ -82,8 +82,9 @@ QCPTextElement* addTextRow(QCustomPlot* plot, int row, const QString& text);
  * where it has room: @p align as given in the left part of the view, mirrored to the left of the
  * point when @p rightHalf.
  */
-QCPItemText* addAnnotation(QCustomPlot* plot, QCPAxisRect* rect, double x, double y, const QString& text,
-                           const QColor& color, Qt::Alignment align, bool rightHalf);
+QCPItemText* addAnnotation(QCustomPlot* plot, QCPAxisRect* rect, double x, double y,
+                           const QString& text, const QColor& color, Qt::Alignment align,
+                           bool rightHalf);
 
 /// Shows @p text in the hover readout @p readout of @p plot, replotting only when it changed
 /// (a mouse move that leaves the text as it was costs no repaint).

@@ -20,7 +20,7 @@ const QList<QColor> kSetColors = {QColor(0x1f, 0x77, 0xb4), QColor(0x2c, 0xa0, 0
  */
 QCPScatterStyle poleStyle(int index, const QColor& color) {
     static const QList<QCPScatterStyle::ScatterShape> shapes = {
-        QCPScatterStyle::ssCross, QCPScatterStyle::ssPlus, QCPScatterStyle::ssStar,
+        QCPScatterStyle::ssCross, QCPScatterStyle::ssPlus,   QCPScatterStyle::ssStar,
         QCPScatterStyle::ssCross, QCPScatterStyle::ssSquare, QCPScatterStyle::ssTriangle};
     static const QList<double> sizes = {10, 10, 11, 9, 15, 13};
     return QCPScatterStyle(shapes[index % shapes.size()], QPen(color, 2), Qt::NoBrush,
@@ -28,7 +28,8 @@ QCPScatterStyle poleStyle(int index, const QColor& color) {
 }
 
 QCPScatterStyle zeroStyle(int index, const QColor& color) {
-    return QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(color, 2), Qt::NoBrush, 7 + 3 * (index % 6));
+    return QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(color, 2), Qt::NoBrush,
+                           7 + 3 * (index % 6));
 }
 } // namespace
 

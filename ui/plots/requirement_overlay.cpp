@@ -7,8 +7,8 @@
 
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <numbers>
+#include <optional>
 
 namespace xyt::ui {
 
@@ -19,7 +19,9 @@ const QColor kShade{0xd6, 0x27, 0x28, 16}; // light: the locus stays readable th
 const QColor kOmega{0x94, 0x67, 0xbd};
 const QColor kAllowed{0x2c, 0xa0, 0x2c, 90};
 
-QString num(double v, int digits = 3) { return QString::number(v, 'g', digits); }
+QString num(double v, int digits = 3) {
+    return QString::number(v, 'g', digits);
+}
 
 QCPCurve* makeCurve(QCustomPlot* plot, const QPen& pen, const QBrush& brush = Qt::NoBrush) {
     auto* c = new QCPCurve(plot->xAxis, plot->yAxis);
@@ -85,12 +87,14 @@ RequirementOverlay::RequirementOverlay(QCustomPlot* plot) : plot_(plot) {
     omega_ = makeCurve(plot, QPen(kOmega, 1.4, Qt::DashLine));
     violating_ = plot->addGraph();
     violating_->setLineStyle(QCPGraph::lsNone);
-    violating_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(colors::error, 2.0), Qt::NoBrush, 18));
+    violating_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(colors::error, 2.0), Qt::NoBrush, 18));
     violating_->setName(QObject::tr("breaks spec"));
     violating_->removeFromLegend();
     dominant_ = plot->addGraph();
     dominant_->setLineStyle(QCPGraph::lsNone);
-    dominant_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(kOmega, 1.6), Qt::NoBrush, 14));
+    dominant_->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssSquare, QPen(kOmega, 1.6), Qt::NoBrush, 14));
     dominant_->removeFromLegend();
 }
 
@@ -148,8 +152,9 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
         setPoints(dampingShade_, shade);
     // zeta = 1: the allowed set is a line, drawn as a wide translucent green strip.
     damping_->setPen(zeta >= 1.0 ? QPen(kAllowed, 4.0) : QPen(kBoundary, 1.6, Qt::DashLine));
-    damping_->setName(zeta >= 1.0 ? QObject::tr("ζ = 1 (Mp 0 %)")
-                                  : QObject::tr("ζ ≥ %1 (Mp %2 %)").arg(num(zeta), num(req.maxOvershootPct)));
+    damping_->setName(
+        zeta >= 1.0 ? QObject::tr("ζ = 1 (Mp 0 %)")
+                    : QObject::tr("ζ ≥ %1 (Mp %2 %)").arg(num(zeta), num(req.maxOvershootPct)));
     damping_->addToLegend();
 
     // Settling: Re s <= sigma, or |z| <= exp(sigma Ts).
@@ -162,11 +167,14 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
             std::vector<Complex> s = square(far);
             s.insert(s.end(), ring.begin(), ring.end());
             setPoints(settlingShade_, s);
-            settling_->setName(QObject::tr("|z| ≤ %1 (ts %2 s)").arg(num(r, 4), num(req.maxSettlingTimeSeconds)));
+            settling_->setName(
+                QObject::tr("|z| ≤ %1 (ts %2 s)").arg(num(r, 4), num(req.maxSettlingTimeSeconds)));
         } else {
             setPoints(settling_, {Complex(sigma, far), Complex(sigma, -far)});
-            setPoints(settlingShade_, {{sigma, -far}, {far, -far}, {far, far}, {sigma, far}, {sigma, -far}});
-            settling_->setName(QObject::tr("σ ≤ %1 (ts %2 s)").arg(num(sigma), num(req.maxSettlingTimeSeconds)));
+            setPoints(settlingShade_,
+                      {{sigma, -far}, {far, -far}, {far, far}, {sigma, far}, {sigma, -far}});
+            settling_->setName(
+                QObject::tr("σ ≤ %1 (ts %2 s)").arg(num(sigma), num(req.maxSettlingTimeSeconds)));
         }
         settling_->addToLegend();
     }
@@ -174,13 +182,16 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
     // The reference model's omega_n (a Guillemin-Truxal design parameter, not a requirement,
     // and not the closed-loop poles' own omega_n: marked below).
     if (!discrete && std::isfinite(req.designOmegaNRadPerSec) && req.designOmegaNRadPerSec > 0.0) {
-        setPoints(omega_, sPlaneDampingGrid({}, {req.designOmegaNRadPerSec}, far).frequencyLines.front().points);
+        setPoints(
+            omega_,
+            sPlaneDampingGrid({}, {req.designOmegaNRadPerSec}, far).frequencyLines.front().points);
         omega_->setName(QObject::tr("reference model ωn %1").arg(num(req.designOmegaNRadPerSec)));
         omega_->addToLegend();
     }
     if (const auto pair = dominantPair(closedLoopPoles, ts)) {
         setComplexPoints(dominant_, {pair->pole, std::conj(pair->pole)});
-        dominant_->setName(QObject::tr("dominant poles: ωn %1 rad/s, ζ %2").arg(num(pair->omegaN), num(pair->zeta, 2)));
+        dominant_->setName(QObject::tr("dominant poles: ωn %1 rad/s, ζ %2")
+                               .arg(num(pair->omegaN), num(pair->zeta, 2)));
         dominant_->addToLegend();
     }
 

@@ -21,11 +21,14 @@ QCPGraph* scatterGraph(QCustomPlot* plot, QCPScatterStyle style, const QString& 
     return g;
 }
 
-QString formatGain(double k) { return QString::number(k, 'g', 5); }
+QString formatGain(double k) {
+    return QString::number(k, 'g', 5);
+}
 } // namespace
 
 RootLocusPlot::RootLocusPlot(QWidget* parent)
-    : PlotWidget(parent), grid_(this), overlay_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    : PlotWidget(parent), grid_(this), overlay_(this),
+      notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
     setObjectName("root-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));
@@ -33,15 +36,19 @@ RootLocusPlot::RootLocusPlot(QWidget* parent)
     styleAxisRect(axisRect());
     xAxis->setLabel(tr("real"));
     yAxis->setLabel(tr("imaginary"));
-    poles_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCross, QPen(Qt::black, 2), Qt::NoBrush, 10),
-                          tr("open-loop poles"));
-    zeros_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 2), Qt::NoBrush, 9),
-                          tr("open-loop zeros"));
-    current_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(colors::error, 1.5),
-                                                  QBrush(colors::error), 10),
+    poles_ = scatterGraph(
+        this, QCPScatterStyle(QCPScatterStyle::ssCross, QPen(Qt::black, 2), Qt::NoBrush, 10),
+        tr("open-loop poles"));
+    zeros_ = scatterGraph(
+        this, QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 2), Qt::NoBrush, 9),
+        tr("open-loop zeros"));
+    current_ = scatterGraph(this,
+                            QCPScatterStyle(QCPScatterStyle::ssDiamond, QPen(colors::error, 1.5),
+                                            QBrush(colors::error), 10),
                             tr("closed-loop poles"));
-    hover_ = scatterGraph(this, QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5),
-                                                QBrush(QColor(255, 255, 0, 200)), 9),
+    hover_ = scatterGraph(this,
+                          QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5),
+                                          QBrush(QColor(255, 255, 0, 200)), 9),
                           QString());
     hover_->removeFromLegend();
     // Under the plane, in rows of their own, the legend and then the hover readout: there
@@ -55,9 +62,12 @@ RootLocusPlot::RootLocusPlot(QWidget* parent)
     connect(this, &QCustomPlot::mouseRelease, this, &RootLocusPlot::onMouseRelease);
 }
 
-QString RootLocusPlot::readoutHint() { return tr("hover a branch: K, ζ, ωn; click: use that gain"); }
+QString RootLocusPlot::readoutHint() {
+    return tr("hover a branch: K, ζ, ωn; click: use that gain");
+}
 
-void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::complex<double>>& currentPoles,
+void RootLocusPlot::showLocus(const RootLocus& locus,
+                              const std::vector<std::complex<double>>& currentPoles,
                               const QString& title) {
     const bool newPlane = !hasLocus_ || locus.tsSeconds != lastTs_;
     locus_ = locus;
@@ -88,7 +98,8 @@ void RootLocusPlot::showLocus(const RootLocus& locus, const std::vector<std::com
     notice_.setSevere(false);
     notice_.setLines(warnings);
     const LocusView& v = locus.view;
-    const double extent = std::max({std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin), std::abs(v.imMax), 1e-6});
+    const double extent = std::max(
+        {std::abs(v.reMin), std::abs(v.reMax), std::abs(v.imMin), std::abs(v.imMax), 1e-6});
     grid_.show(locus.tsSeconds, extent);
     overlay_.show(requirements_, locus.tsSeconds, extent, currentPoles);
     // Fitted on a change of plane, and when a pole or zero (or a closed-loop pole of the
@@ -136,13 +147,15 @@ void RootLocusPlot::leaveEvent(QEvent* event) {
 std::optional<LocusPick> RootLocusPlot::pickAtPixel(const QPointF& pixel, double maxPixels) const {
     if (!hasLocus_)
         return std::nullopt;
-    const std::complex<double> clicked(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
+    const std::complex<double> clicked(xAxis->pixelToCoord(pixel.x()),
+                                       yAxis->pixelToCoord(pixel.y()));
     if (!std::isfinite(clicked.real()) || !std::isfinite(clicked.imag()))
         return std::nullopt;
     const auto pick = pickLocusPoint(locus_, clicked);
     if (!pick)
         return std::nullopt;
-    const QPointF at(xAxis->coordToPixel(pick->point.real()), yAxis->coordToPixel(pick->point.imag()));
+    const QPointF at(xAxis->coordToPixel(pick->point.real()),
+                     yAxis->coordToPixel(pick->point.imag()));
     if (std::hypot(at.x() - pixel.x(), at.y() - pixel.y()) > maxPixels)
         return std::nullopt;
     return pick;
@@ -170,7 +183,9 @@ void RootLocusPlot::onMouseMove(QMouseEvent* event) {
     replot(QCustomPlot::rpQueuedReplot);
 }
 
-void RootLocusPlot::onMousePress(QMouseEvent* event) { pressPos_ = event->pos(); }
+void RootLocusPlot::onMousePress(QMouseEvent* event) {
+    pressPos_ = event->pos();
+}
 
 void RootLocusPlot::onMouseRelease(QMouseEvent* event) {
     if (event->button() != Qt::LeftButton || (event->pos() - pressPos_).manhattanLength() > 4)

@@ -23,7 +23,9 @@ QCPGraph* line(QCustomPlot* plot, const QColor& color, const QString& name, bool
 SensitivityPlot::SensitivityPlot(QWidget* parent) : PlotWidget(parent) {
     setObjectName("zpetc-sensitivity");
     plotLayout()->insertRow(0);
-    plotLayout()->addElement(0, 0, new QCPTextElement(this, tr("ZPETC sensitivity"), QFont(font().family(), 10, QFont::Bold)));
+    plotLayout()->addElement(
+        0, 0,
+        new QCPTextElement(this, tr("ZPETC sensitivity"), QFont(font().family(), 10, QFont::Bold)));
     styleAxisRect(axisRect());
     xAxis->setLabel(tr("mismatch (% of ranges)"));
     xAxis->ticker()->setTickCount(3); // 0, 50, 100: readable in a narrow plot
@@ -35,7 +37,8 @@ SensitivityPlot::SensitivityPlot(QWidget* parent) : PlotWidget(parent) {
     withHigh_->setChannelFillGraph(withLow_);
     withoutLow_ = line(this, withoutColor, QString(), true);
     withoutHigh_ = line(this, withoutColor, QString(), true);
-    withoutHigh_->setBrush(QColor(withoutColor.red(), withoutColor.green(), withoutColor.blue(), 50));
+    withoutHigh_->setBrush(
+        QColor(withoutColor.red(), withoutColor.green(), withoutColor.blue(), 50));
     withoutHigh_->setChannelFillGraph(withoutLow_);
     with_ = line(this, withColor, tr("with ZPETC"), false);
     without_ = line(this, withoutColor, tr("loop alone"), false);
@@ -66,7 +69,8 @@ void SensitivityPlot::showCurve(const std::vector<ZpetcSensitivityPoint>& curve)
     }
     hasResult_ = !with_->data()->isEmpty();
     notice_->setSevere(!hasResult_);
-    notice_->setLines(hasResult_ ? QStringList{} : QStringList{tr("No stable plant at any mismatch.")});
+    notice_->setLines(hasResult_ ? QStringList{}
+                                 : QStringList{tr("No stable plant at any mismatch.")});
     rescaleAxes();
     yAxis->setRangeLower(0.0);
     replot(QCustomPlot::rpQueuedReplot);
@@ -74,7 +78,8 @@ void SensitivityPlot::showCurve(const std::vector<ZpetcSensitivityPoint>& curve)
 
 void SensitivityPlot::showNoResult(const QString& reason) {
     hasResult_ = false;
-    clearWithNotice(this, *notice_, {with_, without_, withLow_, withHigh_, withoutLow_, withoutHigh_}, reason);
+    clearWithNotice(this, *notice_,
+                    {with_, without_, withLow_, withHigh_, withoutLow_, withoutHigh_}, reason);
 }
 
 } // namespace xyt::ui

@@ -14,7 +14,9 @@ const QColor kMarker{0x11, 0x11, 0x11};
 const QColor kEnvelope{0xd6, 0x27, 0x28};
 const QColor kForbidden{0xd6, 0x27, 0x28, 28};
 
-QString num(double v, int digits = 3) { return QString::number(v, 'g', digits); }
+QString num(double v, int digits = 3) {
+    return QString::number(v, 'g', digits);
+}
 
 QString curveName(StepCurveKind kind, bool runs) {
     switch (kind) {
@@ -89,7 +91,9 @@ StepPlot::StepPlot(QWidget* parent) : PlotWidget(parent) {
 
 StepPlot::~StepPlot() = default;
 
-QString StepPlot::readoutHint() { return tr("hover the plot: t and y of the step the axis runs"); }
+QString StepPlot::readoutHint() {
+    return tr("hover the plot: t and y of the step the axis runs");
+}
 
 QCPGraph* StepPlot::curveGraph(StepCurveKind kind) const {
     if (!hasResult_)
@@ -121,13 +125,16 @@ void StepPlot::clearView() {
     for (QCPAbstractItem* item : items_)
         removeItem(item);
     items_.clear();
-    for (QCPGraph* g : {main_, other_, violation_, rise_, peak_, settling_, overshootLine_, bandUpper_, bandLower_})
+    for (QCPGraph* g : {main_, other_, violation_, rise_, peak_, settling_, overshootLine_,
+                        bandUpper_, bandLower_})
         g->data()->clear();
 }
 
-QCPItemText* StepPlot::addLabel(double t, double y, const QString& text, const QColor& color, Qt::Alignment align) {
+QCPItemText* StepPlot::addLabel(double t, double y, const QString& text, const QColor& color,
+                                Qt::Alignment align) {
     const QCPRange x = xAxis->range();
-    QCPItemText* label = addAnnotation(this, axisRect(), t, y, text, color, align, t > x.lower + 0.55 * x.size());
+    QCPItemText* label =
+        addAnnotation(this, axisRect(), t, y, text, color, align, t > x.lower + 0.55 * x.size());
     items_ << label;
     return label;
 }
@@ -138,8 +145,10 @@ QCPItemRect* StepPlot::addShade(double t0, double y0, bool toTop) {
     rect->setClipToAxisRect(true);
     rect->topLeft->setTypeX(QCPItemPosition::ptPlotCoords);
     rect->bottomRight->setTypeX(QCPItemPosition::ptAxisRectRatio);
-    rect->topLeft->setTypeY(toTop ? QCPItemPosition::ptAxisRectRatio : QCPItemPosition::ptPlotCoords);
-    rect->bottomRight->setTypeY(toTop ? QCPItemPosition::ptPlotCoords : QCPItemPosition::ptAxisRectRatio);
+    rect->topLeft->setTypeY(toTop ? QCPItemPosition::ptAxisRectRatio
+                                  : QCPItemPosition::ptPlotCoords);
+    rect->bottomRight->setTypeY(toTop ? QCPItemPosition::ptPlotCoords
+                                      : QCPItemPosition::ptAxisRectRatio);
     rect->topLeft->setCoords(t0, toTop ? 0.0 : y0);
     rect->bottomRight->setCoords(1.0, toTop ? y0 : 1.0);
     rect->setPen(Qt::NoPen);
@@ -209,19 +218,25 @@ void StepPlot::showView(const StepView& view, const QString& title) {
         overshootLine_->data()->set({QCPGraphData(tMin, bound), QCPGraphData(tMax, bound)}, true);
         addShade(tMin, bound, true);
         if (!boundInView)
-            notes << tr("overshoot limit %1 (%2 %) is above the view").arg(num(bound, 4), num(env.maxOvershootPct));
+            notes << tr("overshoot limit %1 (%2 %) is above the view")
+                         .arg(num(bound, 4), num(env.maxOvershootPct));
     }
     const double ts = env.settlingTimeSeconds;
     if (std::isfinite(ts)) {
         const double half = env.band * std::abs(env.finalValue);
         bandUpper_->setName(tr("±%1 % after %2 s").arg(num(100.0 * env.band)).arg(num(ts)));
         if (ts < tMax) {
-            bandUpper_->data()->set({QCPGraphData(ts, env.finalValue + half), QCPGraphData(tMax, env.finalValue + half)}, true);
-            bandLower_->data()->set({QCPGraphData(ts, env.finalValue - half), QCPGraphData(tMax, env.finalValue - half)}, true);
+            bandUpper_->data()->set({QCPGraphData(ts, env.finalValue + half),
+                                     QCPGraphData(tMax, env.finalValue + half)},
+                                    true);
+            bandLower_->data()->set({QCPGraphData(ts, env.finalValue - half),
+                                     QCPGraphData(tMax, env.finalValue - half)},
+                                    true);
             addShade(ts, env.finalValue + half, true);
             addShade(ts, env.finalValue - half, false);
         } else {
-            notes << tr("settling limit %1 s lies beyond the right edge (%2 s)").arg(num(ts), num(tMax));
+            notes << tr("settling limit %1 s lies beyond the right edge (%2 s)")
+                         .arg(num(ts), num(tMax));
         }
     }
     // Where the response leaves the envelope: its samples in red, gaps elsewhere.
@@ -250,7 +265,8 @@ void StepPlot::showView(const StepView& view, const QString& title) {
         for (std::size_t k = 0; k < c.y.size(); ++k)
             if (std::abs(c.y[k]) >= 0.5 * std::abs(fin)) {
                 tHalf = c.t[k] - c.stepAtSeconds;
-                if (k > 0 && view.sampleTimeSeconds <= 0.0 && c.y[k] != c.y[k - 1]) // between samples
+                if (k > 0 && view.sampleTimeSeconds <= 0.0 &&
+                    c.y[k] != c.y[k - 1]) // between samples
                     tHalf -= (c.t[k] - c.t[k - 1]) * (c.y[k] - 0.5 * fin) / (c.y[k] - c.y[k - 1]);
                 break;
             }
@@ -263,7 +279,9 @@ void StepPlot::showView(const StepView& view, const QString& title) {
     // peak worth a marker.
     if (st.overshootPct > env.overshootSlackPct) {
         const double peakValue = fin * (1.0 + st.overshootPct / 100.0);
-        const QString text = tr("peak %1 at %2 s (%3 %)").arg(num(peakValue, 4), num(st.peakTimeSeconds), num(st.overshootPct));
+        const QString text =
+            tr("peak %1 at %2 s (%3 %)")
+                .arg(num(peakValue, 4), num(st.peakTimeSeconds), num(st.overshootPct));
         if (st.peakTimeSeconds <= tMax) {
             peak_->data()->set({QCPGraphData(st.peakTimeSeconds, peakValue)}, true);
             addLabel(st.peakTimeSeconds, peakValue, text, kMarker, Qt::AlignLeft | Qt::AlignBottom);
@@ -275,12 +293,13 @@ void StepPlot::showView(const StepView& view, const QString& title) {
         // The band edge the response last left: the side its last sample before the settling
         // time lies on.
         double side = 1.0;
-        for (std::size_t k = 0; k < c.t.size() && c.t[k] - c.stepAtSeconds < st.settlingTimeSeconds; ++k)
+        for (std::size_t k = 0; k < c.t.size() && c.t[k] - c.stepAtSeconds < st.settlingTimeSeconds;
+             ++k)
             side = c.y[k] >= fin ? 1.0 : -1.0;
         const double y = fin + side * 0.02 * std::abs(fin);
         settling_->data()->set({QCPGraphData(st.settlingTimeSeconds, y)}, true);
-        addLabel(st.settlingTimeSeconds, y, tr("settles %1 s").arg(num(st.settlingTimeSeconds)), kMarker,
-                 Qt::AlignLeft | (side > 0 ? Qt::AlignBottom : Qt::AlignTop));
+        addLabel(st.settlingTimeSeconds, y, tr("settles %1 s").arg(num(st.settlingTimeSeconds)),
+                 kMarker, Qt::AlignLeft | (side > 0 ? Qt::AlignBottom : Qt::AlignTop));
     }
     if (anyBad)
         notes << tr("red: the response leaves the specification's envelope");
@@ -315,7 +334,8 @@ void StepPlot::onMouseMove(QMouseEvent* event) {
         auto it = main_->data()->findBegin(t, false);
         if (it != main_->data()->constEnd() && it != main_->data()->constBegin() && it->key >= t) {
             const auto before = it - 1;
-            const double s = it->key > before->key ? (t - before->key) / (it->key - before->key) : 0.0;
+            const double s =
+                it->key > before->key ? (t - before->key) / (it->key - before->key) : 0.0;
             const double y = before->value + s * (it->value - before->value);
             text = tr("t = %1 s   y = %2   (%3)").arg(num(t, 4), num(y, 5), main_->name());
         }

@@ -57,7 +57,8 @@ protected:
 
 private:
     void clearView();
-    QCPItemText* addLabel(double t, double y, const QString& text, const QColor& color, Qt::Alignment align);
+    QCPItemText* addLabel(double t, double y, const QString& text, const QColor& color,
+                          Qt::Alignment align);
     QCPItemRect* addShade(double t0, double y0, bool toTop);
     void onMouseMove(QMouseEvent* event);
 

@@ -11,8 +11,8 @@ namespace {
 
 constexpr char kMostTicks[] = "xyt-most-ticks"; ///< the ticker's count before any fitting
 constexpr char kLeastSpacing[] = "xyt-least-tick-spacing"; ///< pixels per tick at least
-constexpr double kGapPx = 12.0;                ///< blank space wanted between two labels side by side
-constexpr double kLineGapPx = 6.0;             ///< between two labels one above the other
+constexpr double kGapPx = 12.0;    ///< blank space wanted between two labels side by side
+constexpr double kLineGapPx = 6.0; ///< between two labels one above the other
 
 } // namespace
 
@@ -32,13 +32,15 @@ bool fitTickCounts(QCustomPlot* plot) {
             const bool horizontal = axis->orientation() == Qt::Horizontal;
             double widest = 0.0; // along the axis
             for (const QString& label : axis->tickVectorLabels())
-                widest = std::max(widest, horizontal ? metrics.horizontalAdvance(label) : metrics.height());
+                widest = std::max(widest,
+                                  horizontal ? metrics.horizontalAdvance(label) : metrics.height());
             if (widest <= 0.0)
                 continue;
             const double length = horizontal ? rect->width() : rect->height();
             int mostHere = most.toInt();
             if (const QVariant spacing = axis->property(kLeastSpacing); spacing.isValid())
-                mostHere = std::min(mostHere, std::max(2, static_cast<int>(length) / spacing.toInt()));
+                mostHere =
+                    std::min(mostHere, std::max(2, static_cast<int>(length) / spacing.toInt()));
             const double gap = horizontal ? kGapPx : kLineGapPx;
             // Ticks land on round steps: up to about twice the asked-for count can show (a
             // count of 3 over [0, 1] gives 0, 0.5, 1 or 0, 0.2, ..., 1), so ask for half of

@@ -10,7 +10,8 @@
 namespace xyt::ui {
 
 namespace {
-QCPGraph* makeGraph(QCPAxisRect* rect, const QColor& color, const QString& name, qreal width = 1.5) {
+QCPGraph* makeGraph(QCPAxisRect* rect, const QColor& color, const QString& name,
+                    qreal width = 1.5) {
     auto* g = new QCPGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
     g->setPen(QPen(color, width));
     g->setName(name);
@@ -88,8 +89,10 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     lowerLimit_ = new QCPItemStraightLine(this);
     for (QCPItemStraightLine* line : {upperLimit_, lowerLimit_}) {
         line->setClipAxisRect(controlRect_);
-        line->point1->setAxes(controlRect_->axis(QCPAxis::atBottom), controlRect_->axis(QCPAxis::atLeft));
-        line->point2->setAxes(controlRect_->axis(QCPAxis::atBottom), controlRect_->axis(QCPAxis::atLeft));
+        line->point1->setAxes(controlRect_->axis(QCPAxis::atBottom),
+                              controlRect_->axis(QCPAxis::atLeft));
+        line->point2->setAxes(controlRect_->axis(QCPAxis::atBottom),
+                              controlRect_->axis(QCPAxis::atLeft));
         line->setPen(QPen(colors::limit, 1, Qt::DashDotLine));
     }
     snapshotOutput_->setVisible(false);
@@ -120,8 +123,8 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
         notices << QString::fromStdString(w);
     notice_->setSevere(!axis.ok || axis.metrics.diverged);
     notice_->setLines(notices);
-    // Patrick, Ishak and Adnan's loop has no actuator limit: the command is shown unclipped, and says so where
-    // the user reads it.
+    // Patrick, Ishak and Adnan's loop has no actuator limit: the command is shown unclipped, and
+    // says so where the user reads it.
     controlNotice_->setLines(axis.ok && axis.pp && axis.metrics.saturated
                                  ? QStringList{tr("linear loop: |u| is not clipped at ±%1 V here "
                                                   "(the shaded time would saturate)")
@@ -132,8 +135,8 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
                             .arg(axisTitle, QString::fromStdString(axis.errorField),
                                  QString::fromStdString(axis.error)));
         title_->setTextColor(colors::error);
-        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_, digitalOutput_,
-                            digitalError_, digitalControl_})
+        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_,
+                            digitalOutput_, digitalError_, digitalControl_})
             g->data()->clear();
         upperLimit_->setVisible(false);
         lowerLimit_->setVisible(false);
@@ -161,8 +164,9 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
         digitalOutput_->data()->set(minMaxDecimated(d.result.t, d.result.y), true);
         digitalError_->data()->set(minMaxDecimated(d.result.t, d.result.e), true);
         digitalControl_->data()->set(minMaxDecimated(d.result.t, d.applied), true);
-        digitalOutput_->setName(axis.gt ? tr("digital y (Ts %1 s, held u)").arg(axis.digital->tsSeconds)
-                                        : tr("digital y (encoder, DAC, limit)"));
+        digitalOutput_->setName(axis.gt
+                                    ? tr("digital y (Ts %1 s, held u)").arg(axis.digital->tsSeconds)
+                                    : tr("digital y (encoder, DAC, limit)"));
         if (!legend_->hasItemWithPlottable(digitalOutput_))
             legend_->addItem(new QCPPlottableLegendItem(legend_, digitalOutput_));
     } else {
@@ -204,7 +208,9 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
     replot(QCustomPlot::rpQueuedReplot);
 }
 
-void TimeResponsePlot::setDigitalVisible(bool visible) { digitalVisible_ = visible; }
+void TimeResponsePlot::setDigitalVisible(bool visible) {
+    digitalVisible_ = visible;
+}
 
 void TimeResponsePlot::showSnapshot(const SimulationResult& run, const QString& name) {
     const bool show = !run.t.empty();

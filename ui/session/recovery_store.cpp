@@ -38,7 +38,8 @@ QString RecoveryStore::defaultDirectory() {
 RecoveryStore::RecoveryStore(TuningSession* session, const QString& directory, QObject* parent)
     : QObject(parent), session_(session), directory_(directory) {
     QDir().mkpath(directory_);
-    const QString base = QStringLiteral("%1/session-%2").arg(directory_).arg(QCoreApplication::applicationPid());
+    const QString base =
+        QStringLiteral("%1/session-%2").arg(directory_).arg(QCoreApplication::applicationPid());
     copyPath_ = base + QStringLiteral(".json");
     lock_ = std::make_unique<QLockFile>(base + QStringLiteral(".lock"));
     lock_->setStaleLockTime(0); // only a dead owner makes a lock stale, never its age
@@ -73,7 +74,8 @@ bool RecoveryStore::writeNow(QString* error) {
                      {"saved_at", QDateTime::currentDateTimeUtc().toString(Qt::ISODate)},
                      {"session", files::sessionToJson(session_->session())}};
     QString why;
-    if (!files::writeFileAtomically(copyPath_, QJsonDocument(root).toJson(QJsonDocument::Compact), &why)) {
+    if (!files::writeFileAtomically(copyPath_, QJsonDocument(root).toJson(QJsonDocument::Compact),
+                                    &why)) {
         lastError_ = why;
         if (error)
             *error = why;
@@ -91,7 +93,8 @@ void RecoveryStore::discard() {
 std::vector<RecoveredWork> RecoveryStore::findOrphans(const QString& directory) {
     std::vector<RecoveredWork> out;
     const QDir dir(directory);
-    for (const QFileInfo& info : dir.entryInfoList({QStringLiteral("session-*.json")}, QDir::Files)) {
+    for (const QFileInfo& info :
+         dir.entryInfoList({QStringLiteral("session-*.json")}, QDir::Files)) {
         // A copy whose lock is held by a running instance (this one included) is that
         // instance's live work.
         QLockFile lock(lockPathOf(info.absoluteFilePath()));
@@ -107,7 +110,8 @@ std::vector<RecoveredWork> RecoveryStore::findOrphans(const QString& directory) 
         const QJsonObject root = QJsonDocument::fromJson(file.read(kMaxRecoveryBytes)).object();
         if (root.value("format").toString() != QLatin1String(kRecoveryFormat))
             continue;
-        const files::SessionLoadResult loaded = files::sessionFromJson(root.value("session").toObject());
+        const files::SessionLoadResult loaded =
+            files::sessionFromJson(root.value("session").toObject());
         if (!loaded.ok)
             continue;
         RecoveredWork work;
@@ -138,11 +142,12 @@ bool offerRecovery(QWidget* parent, TuningSession* session, SessionFileControlle
     const QString from = newest.sessionFile.isEmpty()
                              ? QObject::tr("an untitled session")
                              : QObject::tr("“%1”").arg(QFileInfo(newest.sessionFile).fileName());
-    QMessageBox box(QMessageBox::Question, QObject::tr("Recover unsaved work"),
-                    QObject::tr("XY Tune was closed without saving changes to %1 (last kept %2).\n\n"
-                                "Restore that work?")
-                        .arg(from, QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat)),
-                    QMessageBox::NoButton, parent);
+    QMessageBox box(
+        QMessageBox::Question, QObject::tr("Recover unsaved work"),
+        QObject::tr("XY Tune was closed without saving changes to %1 (last kept %2).\n\n"
+                    "Restore that work?")
+            .arg(from, QLocale().toString(newest.savedAt.toLocalTime(), QLocale::ShortFormat)),
+        QMessageBox::NoButton, parent);
     QPushButton* restore = box.addButton(QObject::tr("&Restore"), QMessageBox::AcceptRole);
     box.addButton(QObject::tr("&Discard"), QMessageBox::DestructiveRole);
     box.setDefaultButton(restore);

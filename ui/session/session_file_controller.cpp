@@ -36,11 +36,13 @@ void SessionFileController::populateMenu(QMenu* file) {
     QMenu* exports = file->addMenu(tr("&Export"));
     exports->addAction(tr("Coefficients as &JSON..."), this, [this] { exportDialog("json"); });
     exports->addAction(tr("Firmware &C header..."), this, [this] { exportDialog("c"); });
-    octaveExport_ = exports->addAction(tr("&Octave/MATLAB script..."), this, [this] { exportDialog("m"); });
+    octaveExport_ =
+        exports->addAction(tr("&Octave/MATLAB script..."), this, [this] { exportDialog("m"); });
     exports->addAction(tr("Simulated signals as CS&V..."), this, [this] { exportDialog("csv"); });
     // A disabled action says why in its tooltip, which a menu shows only when asked to.
     exports->setToolTipsVisible(true);
-    connect(session_, &TuningSession::designChanged, this, &SessionFileController::updateExportActions);
+    connect(session_, &TuningSession::designChanged, this,
+            &SessionFileController::updateExportActions);
     updateExportActions();
 }
 
@@ -51,11 +53,12 @@ void SessionFileController::updateExportActions() {
     // export would be refused only after a file name was asked for.
     const bool program = session_->session().trajectory.kind == TrajectoryKind::Gcode;
     octaveExport_->setEnabled(!program);
-    octaveExport_->setToolTip(program ? tr("Not for a G-code trajectory: the script computes the reference in "
-                                           "closed form, and a program's feed profile has none. Export the "
-                                           "simulated signals as CSV instead.")
-                                      : tr("A GNU Octave / MATLAB script with each axis' plant, controller and "
-                                           "closed loop, plotting the response to the trajectory"));
+    octaveExport_->setToolTip(
+        program ? tr("Not for a G-code trajectory: the script computes the reference in "
+                     "closed form, and a program's feed profile has none. Export the "
+                     "simulated signals as CSV instead.")
+                : tr("A GNU Octave / MATLAB script with each axis' plant, controller and "
+                     "closed loop, plotting the response to the trajectory"));
 }
 
 bool SessionFileController::maybeSave() {
@@ -80,8 +83,8 @@ void SessionFileController::newSession() {
 void SessionFileController::open() {
     if (!maybeSave())
         return;
-    const QString path = QFileDialog::getOpenFileName(window_, tr("Open session"), QString(),
-                                                      tr("XY Tune sessions (*.json);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        window_, tr("Open session"), QString(), tr("XY Tune sessions (*.json);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
 }
@@ -118,9 +121,9 @@ bool SessionFileController::saveAs() {
 bool SessionFileController::saveTo(const QString& path) {
     QString error;
     if (!files::saveSessionFile(session_->session(), path, &error)) {
-        QMessageBox::warning(window_, tr("Save session"),
-                             tr("The session was not saved; any existing file is unchanged.\n\n%1")
-                                 .arg(error));
+        QMessageBox::warning(
+            window_, tr("Save session"),
+            tr("The session was not saved; any existing file is unchanged.\n\n%1").arg(error));
         return false;
     }
     session_->markSaved();
@@ -167,8 +170,8 @@ void SessionFileController::exportDialog(const QString& format) {
                                           {"c", "xytune_coefficients.h"},
                                           {"m", "xytune_design.m"},
                                           {"csv", "xytune_signals.csv"}};
-    const QString path =
-        QFileDialog::getSaveFileName(window_, tr("Export"), names.value(format), filters.value(format));
+    const QString path = QFileDialog::getSaveFileName(window_, tr("Export"), names.value(format),
+                                                      filters.value(format));
     if (!path.isEmpty())
         exportTo(format, path);
 }
@@ -195,10 +198,13 @@ void SessionFileController::rebuildRecentMenu() {
     recentMenu_->clear();
     const QStringList list = recentFiles();
     for (const QString& path : list)
-        recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path] {
-            if (maybeSave())
-                openFile(path);
-        })->setToolTip(path);
+        recentMenu_
+            ->addAction(QFileInfo(path).fileName(), this,
+                        [this, path] {
+                            if (maybeSave())
+                                openFile(path);
+                        })
+            ->setToolTip(path);
     recentMenu_->setEnabled(!list.isEmpty());
 }
 

@@ -50,8 +50,8 @@ Session TuningSession::liveSessionOf(const Session& s, QString& notice) {
     live.trajectory.dtSeconds = duration / (TuningSession::kLiveSampleLimit - 1.0);
     notice = QObject::tr("live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live "
                          "limit of %4 (the exports and the report use dt = %2 s)")
-                 .arg(QString::number(live.trajectory.dtSeconds, 'g', 3), QString::number(dt, 'g', 6),
-                      QLocale().toString(samples, 'f', 0),
+                 .arg(QString::number(live.trajectory.dtSeconds, 'g', 3),
+                      QString::number(dt, 'g', 6), QLocale().toString(samples, 'f', 0),
                       QLocale().toString(TuningSession::kLiveSampleLimit, 'f', 0));
     return live;
 }
@@ -220,7 +220,8 @@ const AxisFrequencyAnalysis& TuningSession::frequencyAnalysis(int axis) const {
 }
 
 const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter parameter) const {
-    auto& cached = parameterLocus_.at(static_cast<std::size_t>(axis * 2 + (parameter == GtSweptParameter::Kp)));
+    auto& cached = parameterLocus_.at(
+        static_cast<std::size_t>(axis * 2 + (parameter == GtSweptParameter::Kp)));
     if (!cached) {
         const GtAxisSettings& gt = session_.axes.at(static_cast<std::size_t>(axis)).gt;
         ParameterSweep sweep;
@@ -231,7 +232,8 @@ const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter p
         sweep.count = 80;
         try {
             cached = gtParameterLocus(gt.plant, parameter, sweep,
-                                      parameter == GtSweptParameter::OmegaN ? gt.kp : gt.omegaNRadPerSec);
+                                      parameter == GtSweptParameter::OmegaN ? gt.kp
+                                                                            : gt.omegaNRadPerSec);
         } catch (const InvalidInput& e) {
             cached = ParameterLocus{};
             cached->warnings.push_back(e.what());
@@ -247,15 +249,17 @@ std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
     std::vector<PoleZeroSet> sets;
     if (e.pp) {
         const double ts = e.pp->tsSeconds;
-        sets.push_back(poleZeroSet("plant B/A", TransferFunction::fromZInverse(e.pp->b, e.pp->a, ts)));
-        sets.push_back(poleZeroSet("feedback G/F", TransferFunction::fromZInverse(e.pp->g, e.pp->f, ts)));
+        sets.push_back(
+            poleZeroSet("plant B/A", TransferFunction::fromZInverse(e.pp->b, e.pp->a, ts)));
+        sets.push_back(
+            poleZeroSet("feedback G/F", TransferFunction::fromZInverse(e.pp->g, e.pp->f, ts)));
         sets.push_back(poleZeroSet("closed loop Kf B/T", e.pp->closedLoop()));
         // The feedforward is computed for the with/without comparison even when switched off;
         // the map shows what runs.
         if (e.zpetc && session().axes.at(static_cast<std::size_t>(axis)).pp.zpetcEnabled)
-            sets.push_back(poleZeroSet("ZPETC feedforward",
-                                       TransferFunction::fromZInverse(e.zpetc->feedforwardNum,
-                                                                      e.zpetc->feedforwardDen, ts)));
+            sets.push_back(poleZeroSet(
+                "ZPETC feedforward", TransferFunction::fromZInverse(e.zpetc->feedforwardNum,
+                                                                    e.zpetc->feedforwardDen, ts)));
     }
     return sets;
 }

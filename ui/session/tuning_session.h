@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/session/session.h"
 #include "core/analysis/parameter_locus.h"
-#include "core/session/axis_frequency.h"
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
+#include "core/session/axis_frequency.h"
+#include "core/session/session.h"
 #include "core/session/session_evaluation.h"
 
 #include <QObject>

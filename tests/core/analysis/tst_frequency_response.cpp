@@ -31,8 +31,8 @@ private slots:
 
 // Closed form: 1/(s + 1) at w: |G| = 1/sqrt(1 + w^2), arg = -atan w.
 void TstFrequencyResponse::firstOrderClosedForm() {
-    const FrequencyResponse r =
-        frequencyResponse(TransferFunction::fromDescending({1.0}, {1.0, 1.0}), {0.0, 0.5, 1.0, 100.0});
+    const FrequencyResponse r = frequencyResponse(
+        TransferFunction::fromDescending({1.0}, {1.0, 1.0}), {0.0, 0.5, 1.0, 100.0});
     for (std::size_t i = 0; i < r.omegaRadPerSec.size(); ++i) {
         const double w = r.omegaRadPerSec[i];
         // 1e-13: a Horner evaluation and a log10, a few ulps.
@@ -89,8 +89,10 @@ void TstFrequencyResponse::unwrappingDoesNotDependOnTheGrid() {
 // continuously from 0 to +180: each unstable pole turns the phase by +90 as w goes to inf.
 void TstFrequencyResponse::unstableAndNegativeGain() {
     const std::vector<double> w = {1e-3, 0.5, 2.0, 50.0};
-    const FrequencyResponse u = frequencyResponse(TransferFunction::fromDescending({1.0}, {1.0, -1.0}), w);
-    const FrequencyResponse n = frequencyResponse(TransferFunction::fromDescending({-1.0}, {1.0, 1.0}), w);
+    const FrequencyResponse u =
+        frequencyResponse(TransferFunction::fromDescending({1.0}, {1.0, -1.0}), w);
+    const FrequencyResponse n =
+        frequencyResponse(TransferFunction::fromDescending({-1.0}, {1.0, 1.0}), w);
     for (std::size_t i = 0; i < w.size(); ++i) {
         XYT_COMPARE_NEAR(u.phaseDeg[i], -180.0 + std::atan(w[i]) * kDeg, 1e-12, 1e-12);
         XYT_COMPARE_NEAR(n.phaseDeg[i], -180.0 - std::atan(w[i]) * kDeg, 1e-12, 1e-12);
@@ -129,7 +131,8 @@ void TstFrequencyResponse::discreteClosedForms() {
 // every step by the options (except where the frequency ratio floor stops the halving).
 void TstFrequencyResponse::adaptiveGridFollowsResonance() {
     const double zeta = 0.001, wn = 10.0;
-    const TransferFunction g = TransferFunction::fromDescending({wn * wn}, {1.0, 2 * zeta * wn, wn * wn});
+    const TransferFunction g =
+        TransferFunction::fromDescending({wn * wn}, {1.0, 2 * zeta * wn, wn * wn});
     FrequencyGridOptions o;
     const FrequencyResponse r = adaptiveFrequencyResponse(g, o);
     double peak = -1e300;
@@ -155,7 +158,8 @@ void TstFrequencyResponse::badInputThrows() {
     const TransferFunction g = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
     QVERIFY_THROWS_EXCEPTION(InvalidInput, frequencyResponse(g, {-1.0}));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, frequencyResponse(g, {std::nan("")}));
-    const TransferFunction d(Polynomial::constant(1.0), Polynomial::fromDescending({1.0, -0.5}), 0.1);
+    const TransferFunction d(Polynomial::constant(1.0), Polynomial::fromDescending({1.0, -0.5}),
+                             0.1);
     QVERIFY_THROWS_EXCEPTION(InvalidInput, frequencyResponse(d, {40.0}));
     FrequencyGridOptions o;
     o.maxPoints = 1;

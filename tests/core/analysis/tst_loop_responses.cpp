@@ -54,16 +54,15 @@ void TstLoopResponses::gtLoopIdentities() {
     }
 }
 
-// The RST identities (Patrick, Ishak and Adnan Fig. 9): S + T = 1, T = L S, and the tracking without
-// feedforward equals the design's K_f B/T closed loop to the Diophantine residual.
+// The RST identities (Patrick, Ishak and Adnan Fig. 9): S + T = 1, T = L S, and the tracking
+// without feedforward equals the design's K_f B/T closed loop to the Diophantine residual.
 void TstLoopResponses::rstLoopIdentities() {
     for (const char* preset : {"x-axis", "y-axis"}) {
         const PolePlacementDesign d = presetDesign(preset);
         const LoopTransferFunctions loop = rstLoopTransferFunctions(d);
         const std::vector<double> w = nyquistLogGrid(d.tsSeconds, 200);
         const LoopFrequencyResponses r = loopFrequencyResponses(loop, w);
-        const TrackingFrequencyResponses tr =
-            zpetcTrackingFrequencyResponses(d, designZpetc(d), w);
+        const TrackingFrequencyResponses tr = zpetcTrackingFrequencyResponses(d, designZpetc(d), w);
         for (std::size_t i = 0; i < w.size(); ++i) {
             const auto l = r.openLoop.value[i], s = r.sensitivity.value[i],
                        t = r.complementarySensitivity.value[i];
@@ -77,10 +76,10 @@ void TstLoopResponses::rstLoopIdentities() {
     }
 }
 
-// Patrick, Ishak and Adnan Sec. 4 (Tomizuka's ZPETC): with the feedforward the tracking phase is zero at every
-// frequency to round-off and the DC gain is 1; the gain falls monotonically from 1 towards the
-// Nyquist frequency (|B-(e^{j theta})|^2/B-(1)^2 of the uncancelled zeros). Compared with
-// zpetcFrequencyResponse, which evaluates the two filters separately.
+// Patrick, Ishak and Adnan Sec. 4 (Tomizuka's ZPETC): with the feedforward the tracking phase is
+// zero at every frequency to round-off and the DC gain is 1; the gain falls monotonically from 1
+// towards the Nyquist frequency (|B-(e^{j theta})|^2/B-(1)^2 of the uncancelled zeros). Compared
+// with zpetcFrequencyResponse, which evaluates the two filters separately.
 void TstLoopResponses::zpetcTrackingHasZeroPhase() {
     for (const char* preset : {"x-axis", "y-axis"}) {
         const PolePlacementDesign d = presetDesign(preset);

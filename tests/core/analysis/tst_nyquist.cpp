@@ -51,7 +51,8 @@ void TstNyquist::closedForms() {
         QCOMPARE(c.openLoopUnstablePoles, rows[i].p);
         QCOMPARE(c.closedLoopUnstablePoles, rows[i].n + rows[i].p);
     }
-    const NyquistCurve gt = nyquistCurve(TransferFunction::fromDescending({5.0}, {1.0, 3.0, 2.0, 0.0}));
+    const NyquistCurve gt =
+        nyquistCurve(TransferFunction::fromDescending({5.0}, {1.0, 3.0, 2.0, 0.0}));
     QCOMPARE(gt.indentations.size(), std::size_t(1));
     QCOMPARE(gt.indentations[0].order, 1);
 }
@@ -100,7 +101,8 @@ void TstNyquist::criterionOnRandomLoops() {
 
 // Every point of the curve off the indentations is L at its frequency.
 void TstNyquist::curveIsTheFrequencyResponse() {
-    const TransferFunction l = TransferFunction::fromDescending({2.0, 1.0}, {1.0, 2.0, 3.0, 0.0, 0.0});
+    const TransferFunction l =
+        TransferFunction::fromDescending({2.0, 1.0}, {1.0, 2.0, 3.0, 0.0, 0.0});
     const NyquistCurve c = nyquistCurve(l);
     QVERIFY(c.points.size() > 100);
     QCOMPARE(c.indentations.size(), std::size_t(1));
@@ -118,8 +120,8 @@ void TstNyquist::badOptionsThrow() {
     NyquistOptions o;
     o.maxArgStepDeg = 0.0;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, nyquistCurve(l, o));
-    QVERIFY_THROWS_EXCEPTION(InvalidInput,
-                             nyquistCurve(TransferFunction::fromDescending({1.0, 0.0, 0.0}, {1.0, 1.0})));
+    QVERIFY_THROWS_EXCEPTION(
+        InvalidInput, nyquistCurve(TransferFunction::fromDescending({1.0, 0.0, 0.0}, {1.0, 1.0})));
 }
 
 QTEST_APPLESS_MAIN(TstNyquist)

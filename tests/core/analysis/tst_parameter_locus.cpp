@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/model/errors.h"
 #include "core/analysis/parameter_locus.h"
+#include "core/model/errors.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -83,10 +83,11 @@ void TstParameterLocus::gtSweepPolesSatisfyEq7() {
             const Complex r = branch[i];
             sum += r;
             product *= r;
-            QVERIFY(std::abs(cl(r)) <= 1e-12 * (std::abs(r) * std::abs(r) * std::abs(r) * std::abs(r) +
-                                                 p.plant.a1 * std::pow(std::abs(r), 3) +
-                                                 p.plant.a2 * std::abs(r) * std::abs(r) +
-                                                 kp * p.plant.k0 * std::abs(r) + std::pow(wn, 4)));
+            QVERIFY(std::abs(cl(r)) <=
+                    1e-12 * (std::abs(r) * std::abs(r) * std::abs(r) * std::abs(r) +
+                             p.plant.a1 * std::pow(std::abs(r), 3) +
+                             p.plant.a2 * std::abs(r) * std::abs(r) +
+                             kp * p.plant.k0 * std::abs(r) + std::pow(wn, 4)));
         }
         XYT_COMPARE_NEAR(sum.real(), -p.plant.a1, 1e-9, 0.0);
         XYT_COMPARE_NEAR(product.real(), std::pow(wn, 4), 1e-9, 0.0);
@@ -111,7 +112,9 @@ void TstParameterLocus::branchesAreContinuous() {
     for (const auto& b : locus.branches)
         for (std::size_t i = 1; i < b.size(); ++i)
             QVERIFY2(std::abs(b[i] - b[i - 1]) <= bound * (1.0 + 1e-12),
-                     qPrintable(QStringLiteral("jump %1 at wn = %2").arg(std::abs(b[i] - b[i - 1])).arg(locus.values[i])));
+                     qPrintable(QStringLiteral("jump %1 at wn = %2")
+                                    .arg(std::abs(b[i] - b[i - 1]))
+                                    .arg(locus.values[i])));
 }
 
 void TstParameterLocus::invalidSweepThrows() {
@@ -130,14 +133,13 @@ void TstParameterLocus::invalidSweepThrows() {
     QCOMPARE(fieldOf({1.0, 1.0, 10, false}, GtSweptParameter::Kp, 2.0), std::string("to"));
 }
 
-
 void TstParameterLocus::stabilityChangesMatchRouth() {
     // The GT closed loop s^4 + a s^3 + b s^2 + c s + d (c = kp k0, d = wn^4; Braga et al. Eq. 7,
     // 15-18) is Hurwitz iff a, b, c, d > 0, ab - c > 0 and c (ab - c) - a^2 d > 0 (Routh).
     // Lower base of Braga et al.: a = 125.3, b = 3665, k0 = 77.8.
     const ThirdOrderPlant plant{77.8, 125.3, 3665.0};
     const double a = plant.a1, b = plant.a2;
-    {   // wn sweeps at kp = 30: one change, unstable above wn* = (c (ab - c) / a^2)^(1/4).
+    { // wn sweeps at kp = 30: one change, unstable above wn* = (c (ab - c) / a^2)^(1/4).
         const double c = 30.0 * plant.k0;
         const double wnStar = std::pow(c * (a * b - c) / (a * a), 0.25);
         const ParameterLocus l =
@@ -157,19 +159,19 @@ void TstParameterLocus::stabilityChangesMatchRouth() {
         XYT_COMPARE_NEAR(down.stabilityChanges[0].value, wnStar, 1e-9, 0.0);
         QVERIFY(down.stabilityChanges[0].becomesUnstable);
     }
-    {   // kp sweeps at wn = 10: stable for c between the roots of c^2 - ab c + a^2 d = 0.
+    { // kp sweeps at wn = 10: stable for c between the roots of c^2 - ab c + a^2 d = 0.
         const double d = 1e4;
         const double disc = std::sqrt(a * a * b * b - 4.0 * a * a * d);
         const double kp1 = 0.5 * (a * b - disc) / plant.k0, kp2 = 0.5 * (a * b + disc) / plant.k0;
-        const ParameterLocus l = gtParameterLocus(plant, GtSweptParameter::Kp,
-                                                  {0.1 * kp1, 2.0 * kp2, 200, true}, 10.0);
+        const ParameterLocus l =
+            gtParameterLocus(plant, GtSweptParameter::Kp, {0.1 * kp1, 2.0 * kp2, 200, true}, 10.0);
         QCOMPARE(l.stabilityChanges.size(), std::size_t(2));
         XYT_COMPARE_NEAR(l.stabilityChanges[0].value, kp1, 1e-9, 0.0);
         QVERIFY(!l.stabilityChanges[0].becomesUnstable);
         XYT_COMPARE_NEAR(l.stabilityChanges[1].value, kp2, 1e-9, 0.0);
         QVERIFY(l.stabilityChanges[1].becomesUnstable);
     }
-    {   // Invariant: a sweep that stays stable reports no change.
+    { // Invariant: a sweep that stays stable reports no change.
         const ParameterLocus l =
             gtParameterLocus(plant, GtSweptParameter::OmegaN, {0.2, 5.0, 50, true}, 30.0);
         QVERIFY(l.stabilityChanges.empty());

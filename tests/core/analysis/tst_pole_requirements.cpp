@@ -25,7 +25,7 @@ void TstPoleRequirements::dampingInvertsTheOvershootFormula() {
         const double mpPct = 100.0 * std::exp(-M_PI * zeta / std::sqrt(1.0 - zeta * zeta));
         XYT_COMPARE_NEAR(dampingForOvershoot(mpPct), zeta, 1e-12, 0.0);
     }
-    QCOMPARE(dampingForOvershoot(0.0), 1.0);  // no overshoot: only the negative real axis
+    QCOMPARE(dampingForOvershoot(0.0), 1.0); // no overshoot: only the negative real axis
     QCOMPARE(dampingForOvershoot(100.0), 0.0);
     QCOMPARE(dampingForOvershoot(250.0), 0.0);
     QVERIFY_THROWS_EXCEPTION(InvalidInput, dampingForOvershoot(-1.0));
@@ -44,10 +44,10 @@ void TstPoleRequirements::settlingLineAndCircle() {
 void TstPoleRequirements::polesAreJudged() {
     const PoleRequirements r = poleRequirements(4.32, 4.0); // zeta >= 0.707, Re s <= -1
     QVERIFY(!checkPole({-2.0, 1.0}, r).any());
-    QVERIFY(checkPole({-2.0, 3.0}, r).damping);              // zeta 0.55
-    QVERIFY(checkPole({-0.5, 0.0}, r).settling);             // too slow
+    QVERIFY(checkPole({-2.0, 3.0}, r).damping);  // zeta 0.55
+    QVERIFY(checkPole({-0.5, 0.0}, r).settling); // too slow
     QVERIFY(!checkPole({-0.5, 0.0}, r).damping);
-    QVERIFY(checkPole({0.0, 0.0}, r).settling);              // an integrator never settles
+    QVERIFY(checkPole({0.0, 0.0}, r).settling); // an integrator never settles
     // zeta = 1: a real pole with a round-off imaginary part passes, a complex one fails.
     const PoleRequirements none = poleRequirements(0.0, 100.0);
     QVERIFY(!checkPole({-1.0, 1e-9}, none).damping);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/damping_grid.h"
-#include "core/model/errors.h"
 #include "core/analysis/pole_zero_map.h"
+#include "core/model/errors.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -72,9 +72,9 @@ void TstPoleZeroMap::xAxisArxModelZeros() {
     // z = -2.0244": the sign of the first zero is a misprint (its Eq. 2 polynomial
     // 1 + 1.4917 z^-1 - 1.0784 z^-2 has roots +0.5327 and -2.0244 too). Poles: 0 (the delay)
     // and 0.829 -+ sqrt(0.829^2 - 0.6583).
-    const TransferFunction tf = TransferFunction::fromZInverse(
-        Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
-        Polynomial::fromAscending({1.0, -1.6580, 0.6583}), 0.07);
+    const TransferFunction tf =
+        TransferFunction::fromZInverse(Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
+                                       Polynomial::fromAscending({1.0, -1.6580, 0.6583}), 0.07);
     const PoleZeroSet set = poleZeroSet("x-axis plant", tf);
     QCOMPARE(set.tsSeconds, 0.07);
     const double root = std::sqrt(0.0628 * 0.0628 + 4.0 * 0.0421 * 0.0454);
@@ -99,8 +99,8 @@ void TstPoleZeroMap::dampingOfClosedForms_data() {
     QTest::newRow("s -1+j") << -1.0 << 1.0 << 0.0 << 1.0 / std::sqrt(2.0) << std::sqrt(2.0);
     // z = exp((-1 + j) 0.1): the same pole through s = ln(z)/Ts.
     const Complex z = std::exp(Complex(-1.0, 1.0) * 0.1);
-    QTest::newRow("z exp((-1+j)0.1)") << z.real() << z.imag() << 0.1 << 1.0 / std::sqrt(2.0)
-                                      << std::sqrt(2.0);
+    QTest::newRow("z exp((-1+j)0.1)")
+        << z.real() << z.imag() << 0.1 << 1.0 / std::sqrt(2.0) << std::sqrt(2.0);
     // Integrator s = 0: zeta 1, omega 0 (convention); z = 1 is the same pole.
     QTest::newRow("s 0") << 0.0 << 0.0 << 0.0 << 1.0 << 0.0;
     QTest::newRow("z 1") << 1.0 << 0.0 << 0.07 << 1.0 << 0.0;
@@ -117,7 +117,7 @@ void TstPoleZeroMap::dampingOfClosedForms() {
     QFETCH(double, zeta);
     QFETCH(double, omega);
     const DampingAndFrequency d = dampingOf(Complex(re, im), ts);
-    XYT_COMPARE_NEAR(d.zeta, zeta, 1e-14, 1e-15);  // exp/log round trip: a few ulps
+    XYT_COMPARE_NEAR(d.zeta, zeta, 1e-14, 1e-15); // exp/log round trip: a few ulps
     XYT_COMPARE_NEAR(d.omegaNRadPerSec, omega, 1e-14, 1e-14);
 }
 
@@ -142,7 +142,8 @@ void TstPoleZeroMap::zPlaneGridIsTheImageOfTheSPlaneGrid() {
     // z = exp(s Ts): back through s = ln(z)/Ts every point has the zeta / omega_n of its line,
     // and lies in the closed unit disk (Re s <= 0).
     const double ts = 0.07;
-    const DampingGrid g = zPlaneDampingGrid(defaultGridZetas(), defaultZGridFrequencies(ts), ts, 41);
+    const DampingGrid g =
+        zPlaneDampingGrid(defaultGridZetas(), defaultZGridFrequencies(ts), ts, 41);
     QCOMPARE(g.dampingLines.size(), std::size_t(11));
     QCOMPARE(g.frequencyLines.size(), std::size_t(10));
     for (const GridLine& line : g.dampingLines)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/model/errors.h"
-#include "core/design/guillemin_truxal.h"
 #include "core/analysis/root_locus.h"
+#include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "core/model/root_matching.h"
 #include "tests/support/tolerance.h"
 
@@ -35,9 +35,9 @@ Loop gtLoop(const char* preset) {
 
 /// Patrick, Ishak and Adnan Eq. 1 (x axis): B/A in ascending powers of z^-1, Ts = 0.07 s.
 Loop paperXAxis() {
-    const TransferFunction tf = TransferFunction::fromZInverse(
-        Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
-        Polynomial::fromAscending({1.0, -1.6580, 0.6583}), 0.07);
+    const TransferFunction tf =
+        TransferFunction::fromZInverse(Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
+                                       Polynomial::fromAscending({1.0, -1.6580, 0.6583}), 0.07);
     return {tf.num(), tf.den(), tf.tsSeconds()};
 }
 
@@ -48,7 +48,8 @@ Loop loopNamed(const QString& name) {
     if (name == "double_integrator_lead")
         return {Polynomial::fromDescending({1, 1}), Polynomial::fromDescending({1, 10, 0, 0}), 0.0};
     if (name == "z_double_pole_zero")
-        return {Polynomial::fromDescending({1, 0.5}), Polynomial::fromDescending({1, -1, 0.25}), 0.1};
+        return {Polynomial::fromDescending({1, 0.5}), Polynomial::fromDescending({1, -1, 0.25}),
+                0.1};
     if (name == "z_double_pole")
         return {Polynomial::fromDescending({1}), Polynomial::fromDescending({1, -1, 0.25}), 0.1};
     if (name == "arx_x_axis")
@@ -60,9 +61,9 @@ Loop loopNamed(const QString& name) {
     qFatal("unknown loop %s", qPrintable(name));
 }
 
-const QStringList kLoopNames = {"type1", "double_integrator_lead", "z_double_pole_zero",
-                                "z_double_pole", "arx_x_axis", "gt_lower_base",
-                                "gt_upper_base"};
+const QStringList kLoopNames = {
+    "type1",      "double_integrator_lead", "z_double_pole_zero", "z_double_pole",
+    "arx_x_axis", "gt_lower_base",          "gt_upper_base"};
 
 QJsonArray referenceLoops() {
     // XYT_TEST_DATA_DIR points at tests/core/data (the helper's CMAKE_CURRENT_SOURCE_DIR is the
@@ -127,8 +128,8 @@ void TstRootLocus::crossingsMatchClosedForms_data() {
     // Jury for z^2 + (K-1) z + 0.25 + 0.5K: |a0| < 1 fails at K = 1.5, where the pair is the
     // root of z^2 + 0.5 z + 1: -0.25 + j sqrt(15)/4; 1 - a1 + a0 = 2.25 - 0.5K fails at K = 4.5
     // (real root at z = -1).
-    QTest::newRow("z (z+0.5)/(z-0.5)^2 Jury a0") << "z_double_pole_zero" << 1.5 << -0.25
-                                                  << std::sqrt(15.0) / 4.0;
+    QTest::newRow("z (z+0.5)/(z-0.5)^2 Jury a0")
+        << "z_double_pole_zero" << 1.5 << -0.25 << std::sqrt(15.0) / 4.0;
     QTest::newRow("z (z+0.5)/(z-0.5)^2 Jury z=-1") << "z_double_pole_zero" << 4.5 << -1.0 << 0.0;
     // Jury for z^2 - z + 0.25 + K: a0 = 0.25 + K reaches 1 at K = 0.75; roots 0.5 +- j sqrt(K).
     QTest::newRow("z 1/(z-0.5)^2 Jury") << "z_double_pole" << 0.75 << 0.5 << std::sqrt(0.75);
@@ -137,16 +138,17 @@ void TstRootLocus::crossingsMatchClosedForms_data() {
     QTest::newRow("GT lower base Routh") << "gt_lower_base" << k << 0.0 << omega;
     gtRouth("upper-base", k, omega);
     QTest::newRow("GT upper base Routh") << "gt_upper_base" << k << 0.0 << omega;
-    // Patrick, Ishak and Adnan's x axis: A(z) z + K B(z) = z^3 + a2 z^2 + a1 z + a0 with a2 = -1.658 + 0.0421K,
-    // a1 = 0.6583 + 0.0628K, a0 = -0.0454K has a unit-circle pair (z^2 - 2cz + 1)(z + a0) when
-    // the Jury/Schur-Cohn determinant 1 - a0^2 - a1 + a0 a2 = 0: a quadratic in K,
+    // Patrick, Ishak and Adnan's x axis: A(z) z + K B(z) = z^3 + a2 z^2 + a1 z + a0 with a2 =
+    // -1.658 + 0.0421K, a1 = 0.6583 + 0.0628K, a0 = -0.0454K has a unit-circle pair (z^2 - 2cz +
+    // 1)(z + a0) when the Jury/Schur-Cohn determinant 1 - a0^2 - a1 + a0 a2 = 0: a quadratic in K,
     // 0.3417 + (0.0454*1.658 - 0.0628) K - (0.0454^2 + 0.0454*0.0421) K^2 = 0, and then
     // Re z = c = (a0 - a2)/2.
     const double qa = -(0.0454 * 0.0454 + 0.0454 * 0.0421), qb = 0.0454 * 1.658 - 0.0628,
                  qc = 1.0 - 0.6583;
     const double kx = (-qb - std::sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa);
     const double c = (-0.0454 * kx - (-1.658 + 0.0421 * kx)) / 2.0;
-    QTest::newRow("Patrick, Ishak and Adnan's x axis Jury") << "arx_x_axis" << kx << c << std::sqrt(1.0 - c * c);
+    QTest::newRow("Patrick, Ishak and Adnan's x axis Jury")
+        << "arx_x_axis" << kx << c << std::sqrt(1.0 - c * c);
 }
 
 void TstRootLocus::crossingsMatchClosedForms() {
@@ -178,11 +180,11 @@ void TstRootLocus::breakawaysMatchClosedForms_data() {
                            << QList<double>{2.0 / (3.0 * std::sqrt(3.0))};
     // (s+1)/(s^2(s+10)): N D' - N' D = s(2s^2 + 13s + 20) -> -2.5 (K = 31.25), -4 (K = 32);
     // s = 0 is the double pole (K = 0, not listed).
-    QTest::newRow("double integrator + lead") << "double_integrator_lead" << QList<double>{-2.5, -4.0}
-                                              << QList<double>{31.25, 32.0};
+    QTest::newRow("double integrator + lead")
+        << "double_integrator_lead" << QList<double>{-2.5, -4.0} << QList<double>{31.25, 32.0};
     // (z+0.5)/(z-0.5)^2: N D' - N' D = (z - 0.5)(z + 1.5): break-in at -1.5 with K = 4.
-    QTest::newRow("z double pole + zero") << "z_double_pole_zero" << QList<double>{-1.5}
-                                          << QList<double>{4.0};
+    QTest::newRow("z double pole + zero")
+        << "z_double_pole_zero" << QList<double>{-1.5} << QList<double>{4.0};
     // 1/(z-0.5)^2: N D' - N' D = 2(z - 0.5) only at the double pole: no breakaway for K > 0.
     QTest::newRow("z double pole") << "z_double_pole" << QList<double>{} << QList<double>{};
 }
@@ -227,7 +229,8 @@ void TstRootLocus::featureGainsMatchNumpyReference() {
                 XYT_COMPARE_NEAR(f.point.real(), c["re"].toDouble(), 1e-8, 1e-8);
                 XYT_COMPARE_NEAR(f.point.imag(), c["im"].toDouble(), 1e-8, 1e-8);
             }
-        QVERIFY2(found, qPrintable(QStringLiteral("numpy crossing K = %1 missing").arg(k, 0, 'g', 15)));
+        QVERIFY2(found,
+                 qPrintable(QStringLiteral("numpy crossing K = %1 missing").arg(k, 0, 'g', 15)));
     }
     const QJsonArray breakaways = reference["breakaways"].toArray();
     QCOMPARE(r.breakaways.size(), static_cast<std::size_t>(breakaways.size()));
@@ -243,22 +246,22 @@ void TstRootLocus::asymptotes_data() {
     QTest::addColumn<double>("centroid");
     QTest::addColumn<QList<double>>("angles");
     // (sum p - sum z)/(n - m) and (2q+1) 180/(n-m) for n_m/d_n > 0.
-    QTest::newRow("type1: (0-1-2)/3") << Polynomial::fromDescending({1})
-                                      << Polynomial::fromDescending({1, 3, 2, 0}) << -1.0
-                                      << QList<double>{60.0, 180.0, 300.0};
-    QTest::newRow("dbl+lead: (-10 + 1)/2") << Polynomial::fromDescending({1, 1})
-                                           << Polynomial::fromDescending({1, 10, 0, 0}) << -4.5
-                                           << QList<double>{90.0, 270.0};
+    QTest::newRow("type1: (0-1-2)/3")
+        << Polynomial::fromDescending({1}) << Polynomial::fromDescending({1, 3, 2, 0}) << -1.0
+        << QList<double>{60.0, 180.0, 300.0};
+    QTest::newRow("dbl+lead: (-10 + 1)/2")
+        << Polynomial::fromDescending({1, 1}) << Polynomial::fromDescending({1, 10, 0, 0}) << -4.5
+        << QList<double>{90.0, 270.0};
     // n_m/d_n < 0 (positive feedback for K > 0): s^2 = +K on the far locus, angles 2q 180/2.
-    QTest::newRow("negative gain -1/(s(s+1))") << Polynomial::fromDescending({-1})
-                                               << Polynomial::fromDescending({1, 1, 0}) << -0.5
-                                               << QList<double>{0.0, 180.0};
+    QTest::newRow("negative gain -1/(s(s+1))")
+        << Polynomial::fromDescending({-1}) << Polynomial::fromDescending({1, 1, 0}) << -0.5
+        << QList<double>{0.0, 180.0};
     const GtPreset p = *findGtPreset("lower-base");
     const GtDesign d = designGuilleminTruxal(p.plant, p.omegaNRadPerSec, p.kp);
     // GT: poles 0, 0 and the roots of s^2 + a1 s + a2 (sum -a1), zero -ki/kp: (-a1 + ki/kp)/3.
-    QTest::newRow("GT lower base") << d.openLoop.num() << d.openLoop.den()
-                                   << (-p.plant.a1 + d.ki / d.kp) / 3.0
-                                   << QList<double>{60.0, 180.0, 300.0};
+    QTest::newRow("GT lower base")
+        << d.openLoop.num() << d.openLoop.den() << (-p.plant.a1 + d.ki / d.kp) / 3.0
+        << QList<double>{60.0, 180.0, 300.0};
 }
 
 void TstRootLocus::asymptotes() {
@@ -295,15 +298,18 @@ void TstRootLocus::everyPointIsAClosedLoopPole() {
         QCOMPARE(b.roots.size(), r.gains.size());
         for (std::size_t i = 0; i < b.roots.size(); ++i) {
             const double residual = locusResidual(l.num, l.den, r.gains[i], b.roots[i]);
-            QVERIFY2(residual <= 1e-12,
-                     qPrintable(QStringLiteral("K = %1: residual %2").arg(r.gains[i]).arg(residual)));
+            QVERIFY2(
+                residual <= 1e-12,
+                qPrintable(QStringLiteral("K = %1: residual %2").arg(r.gains[i]).arg(residual)));
         }
     }
     for (std::size_t i = 1; i < r.gains.size(); ++i)
         QVERIFY(r.gains[i] > r.gains[i - 1]);
 }
 
-void TstRootLocus::branchesAreContinuous_data() { everyPointIsAClosedLoopPole_data(); }
+void TstRootLocus::branchesAreContinuous_data() {
+    everyPointIsAClosedLoopPole_data();
+}
 
 void TstRootLocus::branchesAreContinuous() {
     // The step bound of RootLocusOptions: no root inside the view moves more than maxStep between
@@ -322,7 +328,9 @@ void TstRootLocus::branchesAreContinuous() {
             const double step = std::abs(b.roots[i] - b.roots[i - 1]);
             QVERIFY2(step <= r.maxStep * (1.0 + 1e-12),
                      qPrintable(QStringLiteral("jump %1 > bound %2 at K = %3")
-                                    .arg(step).arg(r.maxStep).arg(r.gains[i])));
+                                    .arg(step)
+                                    .arg(r.maxStep)
+                                    .arg(r.gains[i])));
         }
     // Conjugate symmetry of a real polynomial's roots: the branch set at each gain is closed
     // under conjugation (1e-9 of the view: the roots of each step are computed together).
@@ -355,7 +363,9 @@ void TstRootLocus::pointsAreDenserNearBreakaway() {
     QVERIFY2(farSpacing > 0.5 * r.maxStep, qPrintable(QString::number(farSpacing)));
 }
 
-void TstRootLocus::branchesEndAtZerosOrLeaveTheView_data() { everyPointIsAClosedLoopPole_data(); }
+void TstRootLocus::branchesEndAtZerosOrLeaveTheView_data() {
+    everyPointIsAClosedLoopPole_data();
+}
 
 void TstRootLocus::branchesEndAtZerosOrLeaveTheView() {
     // The automatic end: every branch within one step bound of its zero or outside the view;
@@ -435,7 +445,8 @@ void TstRootLocus::matchingMinimisesTotalDisplacement() {
     QCOMPARE(order, (std::vector<std::size_t>{1, 0}));
     // Two branches passing close by: the crossing pair keeps its directions.
     const std::vector<Complex> prev = {Complex(-0.1, 0.01), Complex(0.1, -0.01), Complex(5, 0)};
-    const std::vector<Complex> next = {Complex(5.01, 0), Complex(-0.09, 0.011), Complex(0.09, -0.011)};
+    const std::vector<Complex> next = {Complex(5.01, 0), Complex(-0.09, 0.011),
+                                       Complex(0.09, -0.011)};
     QCOMPARE(matchRoots(prev, next), (std::vector<std::size_t>{1, 2, 0}));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, matchRoots(prev, {Complex(1.0)}));
 }
@@ -484,8 +495,8 @@ void TstRootLocus::invalidInputThrows_data() {
     QTest::newRow("zero numerator") << Polynomial() << d2 << 0.0 << 0.0 << 0.01 << "num";
     QTest::newRow("improper") << Polynomial::fromDescending({1, 0, 0, 0}) << d2 << 0.0 << 0.0
                               << 0.01 << "num";
-    QTest::newRow("constant denominator") << one << Polynomial::constant(2.0) << 0.0 << 0.0
-                                          << 0.01 << "den";
+    QTest::newRow("constant denominator")
+        << one << Polynomial::constant(2.0) << 0.0 << 0.0 << 0.01 << "den";
     QTest::newRow("negative ts") << one << d2 << -0.1 << 0.0 << 0.01 << "ts";
     QTest::newRow("negative kMax") << one << d2 << 0.0 << -1.0 << 0.01 << "kMax";
     QTest::newRow("zero step") << one << d2 << 0.0 << 0.0 << 0.0 << "maxStepFraction";
@@ -549,19 +560,20 @@ void TstRootLocus::clusteredPolesWarnAndWorkIsBounded() {
     const xyt::RootLocus timed = xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
                                                 xyt::Polynomial::fromAscending(d), 0.0, quick);
     QCOMPARE(timed.status, xyt::RootLocusStatus::PointLimitReached);
-    QVERIFY(std::any_of(timed.warnings.begin(), timed.warnings.end(),
-                        [](const std::string& w) { return w.find("time bound") != std::string::npos; }));
+    QVERIFY(std::any_of(timed.warnings.begin(), timed.warnings.end(), [](const std::string& w) {
+        return w.find("time bound") != std::string::npos;
+    }));
     for (const xyt::LocusBranch& b : timed.branches)
         QCOMPARE(b.roots.size(), timed.gains.size());
     quick.maxSeconds = 0.0;
-    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
-                                                               xyt::Polynomial::fromAscending(d),
-                                                               0.0, quick));
+    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
+                             xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
+                                            xyt::Polynomial::fromAscending(d), 0.0, quick));
     xyt::RootLocusOptions none;
     none.maxWork = 0.0;
-    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
-                                                               xyt::Polynomial::fromAscending(d),
-                                                               0.0, none));
+    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
+                             xyt::rootLocus(xyt::Polynomial::fromAscending({1.0}),
+                                            xyt::Polynomial::fromAscending(d), 0.0, none));
     // Invariant: the GT design's simple poles are well conditioned: no such warning there.
     const auto gt = xyt::designGuilleminTruxal({77.8, 125.3, 3665.0}, 2.0, 30.0);
     const xyt::RootLocus simple = xyt::rootLocus(gt.openLoop);

@@ -31,12 +31,13 @@ TransferFunction gtOpenLoop(const char* preset) {
     return designGuilleminTruxal(p.plant, p.omegaNRadPerSec, p.kp).openLoop;
 }
 
-/// Patrick, Ishak and Adnan's x axis (Eq. 1) with T = 1 - 0.2 z^-1, Ts = 0.07: the RST loop L = B G/(A F).
+/// Patrick, Ishak and Adnan's x axis (Eq. 1) with T = 1 - 0.2 z^-1, Ts = 0.07: the RST loop L = B
+/// G/(A F).
 TransferFunction paperXAxisLoop() {
-    const PolePlacementDesign d = designPolePlacement(
-        Polynomial::fromAscending({1.0, -1.658, 0.6583}),
-        Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
-        Polynomial::fromAscending({1.0, -0.2}), 0.07);
+    const PolePlacementDesign d =
+        designPolePlacement(Polynomial::fromAscending({1.0, -1.658, 0.6583}),
+                            Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}),
+                            Polynomial::fromAscending({1.0, -0.2}), 0.07);
     return TransferFunction::fromZInverse(d.b * d.g, d.a * d.f, d.tsSeconds);
 }
 
@@ -208,7 +209,8 @@ void TstStabilityMargins::unstableOpenLoopLowerGainMargin() {
 // Closed form: L = 1/s gives T = 1/(s + 1) (bandwidth exactly 1 rad/s, Mt = 1 at w = 0) and
 // S = s/(s + 1) (|S| rises to 1 as w -> inf: Ms = 1 at the end of the axis).
 void TstStabilityMargins::firstOrderBandwidth() {
-    const StabilityMargins m = stabilityMargins(TransferFunction::fromDescending({1.0}, {1.0, 0.0}));
+    const StabilityMargins m =
+        stabilityMargins(TransferFunction::fromDescending({1.0}, {1.0, 0.0}));
     XYT_COMPARE_NEAR(m.bandwidthRadPerSec, 1.0, 1e-14, 0.0);
     XYT_COMPARE_NEAR(m.peakComplementarySensitivity, 1.0, 1e-14, 0.0);
     XYT_COMPARE_NEAR(m.peakSensitivity, 1.0, 1e-14, 0.0);
@@ -225,7 +227,8 @@ void TstStabilityMargins::gainMarginEqualsRootLocusCrossing_data() {
     QTest::newRow("Braga et al.'s lower base, wn 2, kp 30 (GT, double integrator)")
         << gtOpenLoop("lower-base");
     QTest::newRow("Braga et al.'s upper base, wn 1, kp 30") << gtOpenLoop("upper-base");
-    QTest::newRow("Patrick, Ishak and Adnan's x axis RST loop B G/(A F), Ts 0.07") << paperXAxisLoop();
+    QTest::newRow("Patrick, Ishak and Adnan's x axis RST loop B G/(A F), Ts 0.07")
+        << paperXAxisLoop();
 }
 
 namespace {
@@ -321,8 +324,8 @@ void TstStabilityMargins::octaveReference() {
         double pm = 180.0, wpm = std::nan("");
         bool anyPm = false;
         for (const auto& c : m.phaseMargins) {
-            const double octavePm = c.phaseMarginDeg <= 0.0 ? c.phaseMarginDeg + 360.0
-                                                            : c.phaseMarginDeg;
+            const double octavePm =
+                c.phaseMarginDeg <= 0.0 ? c.phaseMarginDeg + 360.0 : c.phaseMarginDeg;
             if (!anyPm || octavePm < pm) {
                 pm = octavePm;
                 wpm = c.omegaRadPerSec;
@@ -332,8 +335,8 @@ void TstStabilityMargins::octaveReference() {
         // Octave takes unpolished roots of the same polynomials (no refinement, roots() of
         // the unscaled polynomial): agreement to 1e-7 relative is what its root accuracy
         // allows on these loops (observed differences are below 1e-9).
-        if (!QTest::qVerify(test::near(gm, t.number(row, "gm"), 1e-7), "gm",
-                            where.constData(), __FILE__, __LINE__))
+        if (!QTest::qVerify(test::near(gm, t.number(row, "gm"), 1e-7), "gm", where.constData(),
+                            __FILE__, __LINE__))
             qDebug() << where << "gm ours" << gm << "octave" << t.number(row, "gm");
         QVERIFY2(test::near(wgm, t.number(row, "wgm"), 1e-7) ||
                      (std::isnan(wgm) && std::isnan(t.number(row, "wgm"))),

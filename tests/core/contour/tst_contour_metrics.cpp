@@ -52,7 +52,8 @@ void ellipse(double a, double b, Point2 c, int n, std::vector<double>& x, std::v
 
 /// Radius r(theta) about @p c sampled at n angles starting at @p phase (radians).
 template <class R>
-void polar(const R& radius, Point2 c, int n, double phase, std::vector<double>& x, std::vector<double>& y) {
+void polar(const R& radius, Point2 c, int n, double phase, std::vector<double>& x,
+           std::vector<double>& y) {
     x.clear(), y.clear();
     for (int k = 0; k < n; ++k) {
         const double th = phase + 2.0 * kPi * k / n;
@@ -142,7 +143,8 @@ void TstContourMetrics::offsetArcs() {
 void TstContourMetrics::offsetAlongMixedPath() {
     // Lines and arcs of both directions joined tangentially; offsets of +-0.1 mm along the left
     // normal at 500 positions (away from the final sharp corner and the ends).
-    const auto program = xyt::readGcode("G1 X10 Y0 F600\nG3 X10 Y10 I0 J5\nG1 X0 Y10\nG2 X0 Y20 I0 J5\nG1 X10 Y20\n");
+    const auto program = xyt::readGcode(
+        "G1 X10 Y0 F600\nG3 X10 Y10 I0 J5\nG1 X0 Y10\nG2 X0 Y20 I0 J5\nG1 X10 Y20\n");
     const Path& path = program.path;
     std::vector<double> s;
     for (int k = 0; k < 500; ++k)
@@ -184,7 +186,8 @@ void TstContourMetrics::cornerOvershoot() {
     // (40.05, -0.02), is nearest to the corner itself, at distance sqrt(0.05^2 + 0.02^2), and
     // outside the left turn (right of travel): negative.
     const auto square = xyt::readGcode("G1 X40 Y0 F600\nY40\nX0\nY0\n");
-    std::vector<double> t{0.0, 1.0, 2.0, 3.0}, x{20.0, 40.05, 40.0, 39.0}, y{0.001, -0.02, 20.0, 40.2};
+    std::vector<double> t{0.0, 1.0, 2.0, 3.0}, x{20.0, 40.05, 40.0, 39.0},
+        y{0.001, -0.02, 20.0, 40.2};
     const auto r = xyt::contourError(square.path, t, x, y);
     QCOMPARE(r.corners.size(), std::size_t(3));
     const double expected = std::hypot(0.05, 0.02);
@@ -230,7 +233,8 @@ void TstContourMetrics::nearestIsGlobal() {
         const Point2 q{coord(rng), coord(rng)};
         const auto p = star.path.nearest(q, hint(rng));
         XYT_COMPARE_NEAR(std::abs(p.signedDistance), bruteForceDistance(star.path, q), 0.0, 1e-12);
-        XYT_COMPARE_NEAR(std::hypot(q.x - p.point.x, q.y - p.point.y), std::abs(p.signedDistance), 0.0, 1e-12);
+        XYT_COMPARE_NEAR(std::hypot(q.x - p.point.x, q.y - p.point.y), std::abs(p.signedDistance),
+                         0.0, 1e-12);
     }
 }
 
@@ -316,7 +320,8 @@ void TstContourMetrics::hysteresisOfConcentricRuns() {
     // is 0.002 at theta = 0 and pi (linear interpolation between samples 0.36 degrees apart
     // changes it by under 1e-7 mm).
     std::vector<double> x3, y3;
-    polar([](double th) { return 30.0 + 0.002 * std::cos(th) * std::cos(th); }, {0.0, 0.0}, 1000, 0.001, x3, y3);
+    polar([](double th) { return 30.0 + 0.002 * std::cos(th) * std::cos(th); }, {0.0, 0.0}, 1000,
+          0.001, x3, y3);
     std::vector<double> x4, y4;
     polar([](double) { return 30.0; }, {0.0, 0.0}, 1000, 0.0, x4, y4);
     const auto h = xyt::iso230Circular(x3, y3, x4, y4, {{0.0, 0.0}, 30.0});
@@ -330,10 +335,12 @@ void TstContourMetrics::reversalSpike() {
     // height for all but 1.7 of them); the other quadrants show no spike. 3600 samples.
     const double h = 0.005;
     std::vector<double> x, y;
-    polar([&](double th) {
-        const double d = (th - kPi / 2.0) / (kPi / 180.0);
-        return 25.0 + h * std::exp(-d * d);
-    }, {0.0, 0.0}, 3600, 0.0, x, y);
+    polar(
+        [&](double th) {
+            const double d = (th - kPi / 2.0) / (kPi / 180.0);
+            return 25.0 + h * std::exp(-d * d);
+        },
+        {0.0, 0.0}, 3600, 0.0, x, y);
     const auto iso = xyt::iso230Circular(x, y, {{0.0, 0.0}, 25.0});
     QCOMPARE(iso.reversalSpikes.size(), std::size_t(4));
     const auto& spike = iso.reversalSpikes[1];
@@ -352,16 +359,26 @@ void TstContourMetrics::reversalSpike() {
 void TstContourMetrics::badInput() {
     const Path path({PathSegment::line({0.0, 0.0}, {1.0, 0.0})});
     const auto fieldOf = [](auto f) { return xyt::test::invalidInputField(f); };
-    QCOMPARE(fieldOf([&] { xyt::contourError(path, {0.0}, {0.0, 1.0}, {0.0}); }), QStringLiteral("traced"));
+    QCOMPARE(fieldOf([&] {
+                 xyt::contourError(path, {0.0}, {0.0, 1.0}, {0.0});
+             }),
+             QStringLiteral("traced"));
     QCOMPARE(fieldOf([&] { xyt::contourError(path, {}, {}, {}); }), QStringLiteral("traced"));
-    QCOMPARE(fieldOf([&] { xyt::contourError(path, {0.0}, {NAN}, {0.0}); }), QStringLiteral("traced"));
+    QCOMPARE(fieldOf([&] { xyt::contourError(path, {0.0}, {NAN}, {0.0}); }),
+             QStringLiteral("traced"));
     xyt::ContourErrorOptions o;
     o.measuredSegments = {true, false};
-    QCOMPARE(fieldOf([&] { xyt::contourError(path, {0.0}, {0.0}, {0.0}, o); }), QStringLiteral("measured_segments"));
+    QCOMPARE(fieldOf([&] { xyt::contourError(path, {0.0}, {0.0}, {0.0}, o); }),
+             QStringLiteral("measured_segments"));
     // Collinear points have no circle.
-    QCOMPARE(fieldOf([] { xyt::fitCircleKasa({0.0, 1.0, 2.0}, {0.0, 1.0, 2.0}); }), QStringLiteral("points"));
+    QCOMPARE(fieldOf([] {
+                 xyt::fitCircleKasa({0.0, 1.0, 2.0}, {0.0, 1.0, 2.0});
+             }),
+             QStringLiteral("points"));
     QCOMPARE(fieldOf([] { xyt::fitCircleKasa({0.0, 1.0}, {0.0, 1.0}); }), QStringLiteral("points"));
-    QCOMPARE(fieldOf([] { xyt::iso230Circular({1.0, 0.0, -1.0}, {0.0, 1.0, 0.0}, {{0.0, 0.0}, 0.0}); }),
+    QCOMPARE(fieldOf([] {
+                 xyt::iso230Circular({1.0, 0.0, -1.0}, {0.0, 1.0, 0.0}, {{0.0, 0.0}, 0.0});
+             }),
              QStringLiteral("nominal_radius"));
     // Three points on the unit circle: both fits are exact.
     const auto fit = xyt::fitCircleGeometric({1.0, 0.0, -1.0}, {0.0, 1.0, 0.0});

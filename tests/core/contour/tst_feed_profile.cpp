@@ -49,7 +49,8 @@ void checkLimits(const FeedProfile& p, const xyt::Path& path, const std::vector<
     const double slack = 1e-9;
     for (const auto& piece : p.pieces) {
         const double aEnd = piece.a0 + piece.jerk * piece.duration;
-        const double vEnd = piece.v0 + piece.duration * (piece.a0 + piece.duration * piece.jerk / 2.0);
+        const double vEnd =
+            piece.v0 + piece.duration * (piece.a0 + piece.duration * piece.jerk / 2.0);
         QVERIFY(std::abs(piece.a0) <= o.maxAccelMmPerS2 * (1.0 + slack));
         QVERIFY(std::abs(aEnd) <= o.maxAccelMmPerS2 * (1.0 + slack));
         QVERIFY(std::abs(piece.jerk) <= o.maxJerkMmPerS3 * (1.0 + slack));
@@ -59,7 +60,8 @@ void checkLimits(const FeedProfile& p, const xyt::Path& path, const std::vector<
             limit = std::min(limit, std::sqrt(o.maxAccelMmPerS2 * seg.radius()));
         for (const double v : {piece.v0, vEnd}) {
             QVERIFY2(v >= -slack * limit, qPrintable(QString::number(v)));
-            QVERIFY2(v <= limit * (1.0 + slack), qPrintable(QStringLiteral("%1 > %2").arg(v).arg(limit)));
+            QVERIFY2(v <= limit * (1.0 + slack),
+                     qPrintable(QStringLiteral("%1 > %2").arg(v).arg(limit)));
         }
     }
 }
@@ -75,7 +77,8 @@ double integratedSpeed(const FeedProfile& p) {
 const char* kStar = "G0 X0 Y30\nG1 X-17.634 Y-24.271 F900\nX28.532 Y9.271\nX-28.532 Y9.271\n"
                     "X17.634 Y-24.271\nX0 Y30\n";
 /// Line, tangent half circle, line, tangent quarter circle, with a sharp corner at the end.
-const char* kTangentJoins = "G1 X10 Y0 F600\nG3 X10 Y10 I0 J5\nG1 X0 Y10\nG3 X-5 Y5 I0 J-5\nG1 X10 Y5\n";
+const char* kTangentJoins =
+    "G1 X10 Y0 F600\nG3 X10 Y10 I0 J5\nG1 X0 Y10\nG3 X-5 Y5 I0 J-5\nG1 X10 Y5\n";
 
 } // namespace
 
@@ -137,7 +140,8 @@ void TstFeedProfile::sCurveClosedForm() {
     XYT_COMPARE_NEAR(p.totalTimeSeconds, 5.3, 1e-13, 0.0);
     QCOMPARE(p.pieces.size(), std::size_t(7)); // jerk, accel, jerk, cruise, jerk, decel, jerk
     // v < a^2/J: no constant-acceleration phase; 2 mm at 20 mm/s, a 100, J 1000 peaks where
-    // 2 v sqrt(v/J) = 2 (each change covers v sqrt(v/J)): v = (J)^(1/3) = 10 mm/s, T = 4 sqrt(v/J) = 0.4 s.
+    // 2 v sqrt(v/J) = 2 (each change covers v sqrt(v/J)): v = (J)^(1/3) = 10 mm/s, T = 4 sqrt(v/J)
+    // = 0.4 s.
     const FeedProfile q = straightMove(2.0, 20.0, options(100.0, 1000.0));
     XYT_COMPARE_NEAR(q.totalTimeSeconds, 0.4, 1e-12, 0.0);
     XYT_COMPARE_NEAR(*std::max_element(q.v.begin(), q.v.end()), 10.0, 1e-3, 0.0); // sampled at 1 ms
@@ -182,7 +186,8 @@ void TstFeedProfile::limitsHold_data() {
     QTest::newRow("star jerk") << kStar << 200.0 << 3000.0;
     QTest::newRow("joins") << kTangentJoins << 50.0 << 0.0;
     QTest::newRow("joins jerk") << kTangentJoins << 50.0 << 500.0;
-    QTest::newRow("short segments jerk") << "G1 X0.1 F3000\nX0.2 Y0.001\nX0.3\nX0.4 Y0.002\nX5\n" << 1000.0 << 1e5;
+    QTest::newRow("short segments jerk") << "G1 X0.1 F3000\nX0.2 Y0.001\nX0.3\nX0.4 Y0.002\nX5\n"
+                                         << 1000.0 << 1e5;
 }
 
 void TstFeedProfile::limitsHold() {
@@ -261,7 +266,8 @@ void TstFeedProfile::samplesFollowThePath() {
         XYT_COMPARE_NEAR(p.y[k], at.point.y, 0.0, 1e-9);
         XYT_COMPARE_NEAR(p.t[k], 0.002 * static_cast<double>(k), 1e-15, 0.0);
         if (k > 0)
-            QVERIFY(std::hypot(p.x[k] - p.x[k - 1], p.y[k] - p.y[k - 1]) <= 10.0 * 0.002 * (1.0 + 1e-9));
+            QVERIFY(std::hypot(p.x[k] - p.x[k - 1], p.y[k] - p.y[k - 1]) <=
+                    10.0 * 0.002 * (1.0 + 1e-9));
     }
     QVERIFY(p.t.back() >= p.totalTimeSeconds);
     QVERIFY(p.t.back() - 0.002 < p.totalTimeSeconds);
@@ -291,7 +297,8 @@ void TstFeedProfile::badOptions() {
     QCOMPARE(fieldOf(o), QStringLiteral("dt"));
     o.maxSamples = 1101;
     QCOMPARE(fieldOf(o), QStringLiteral("<no exception>"));
-    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, xyt::planFeedProfile(gcode.path, {1.0, 2.0}, options(1.0)));
+    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
+                             xyt::planFeedProfile(gcode.path, {1.0, 2.0}, options(1.0)));
 }
 
 void TstFeedProfile::degenerateOptionsAreRefused_data() {
@@ -304,29 +311,52 @@ void TstFeedProfile::degenerateOptionsAreRefused_data() {
     // most 2e7 samples (2e4 s). The times are the header's lower bounds over L = 10 mm:
     // 4 (L / 2J)^(1/3) for the jerk, 2 sqrt(L / A) for the acceleration. A jerk of 1e-200 is the
     // shared session that crashed the workbench (the bisection ended at 0, no piece written).
-    QTest::newRow("jerk 1e-200") << "max_jerk" << 1e-200 << "max_jerk" << "1e-200 mm/s^3 needs at least 3.17e+67 s";
-    QTest::newRow("jerk 1e-300") << "max_jerk" << 1e-300 << "max_jerk" << "needs at least 6.84e+100 s";
-    QTest::newRow("jerk subnormal") << "max_jerk" << subnormal << "max_jerk" << "needs at least 4.02e+108 s";
-    QTest::newRow("jerk 1e300") << "max_jerk" << 1e300 << "max_jerk" << "is outside the planner's range [1e-100, 1e+100]";
-    QTest::newRow("jerk inf") << "max_jerk" << inf << "max_jerk" << "";
-    QTest::newRow("jerk nan") << "max_jerk" << nan << "max_jerk" << "";
-    QTest::newRow("accel 1e-300") << "max_accel" << 1e-300 << "max_accel" << "needs at least 6.32e+150 s";
-    QTest::newRow("accel subnormal") << "max_accel" << subnormal << "max_accel" << "needs at least 2.85e+162 s";
-    QTest::newRow("accel 1e300") << "max_accel" << 1e300 << "max_accel" << "is outside the planner's range";
-    QTest::newRow("accel inf") << "max_accel" << inf << "max_accel" << "";
-    QTest::newRow("accel nan") << "max_accel" << nan << "max_accel" << "";
-    QTest::newRow("scale 1e-300") << "feed_scale" << 1e-300 << "feed_scale" << "makes the feed of line 2 (10 mm/s) 1e-299 mm/s";
-    QTest::newRow("scale subnormal") << "feed_scale" << subnormal << "feed_scale" << "";
-    QTest::newRow("scale 1e-5") << "feed_scale" << 1e-5 << "feed_scale" << "the program needs at least 5e+04 s";
-    QTest::newRow("scale 1e300") << "feed_scale" << 1e300 << "feed_scale" << "1e+301 mm/s, outside";
-    QTest::newRow("scale inf") << "feed_scale" << inf << "feed_scale" << "";
-    QTest::newRow("scale nan") << "feed_scale" << nan << "feed_scale" << "";
-    QTest::newRow("corner nan") << "corner_angle" << nan << "corner_angle" << "";
-    QTest::newRow("corner 1e300") << "corner_angle" << 1e300 << "corner_angle" << "";
-    QTest::newRow("corner -1") << "corner_angle" << -1.0 << "corner_angle" << "";
-    QTest::newRow("dt subnormal") << "dt" << subnormal << "dt" << "the program needs at least 0.5 s at its own feeds";
-    QTest::newRow("dt inf") << "dt" << inf << "dt" << "";
-    QTest::newRow("dt nan") << "dt" << nan << "dt" << "";
+    QTest::newRow("jerk 1e-200") << "max_jerk" << 1e-200 << "max_jerk"
+                                 << "1e-200 mm/s^3 needs at least 3.17e+67 s";
+    QTest::newRow("jerk 1e-300") << "max_jerk" << 1e-300 << "max_jerk"
+                                 << "needs at least 6.84e+100 s";
+    QTest::newRow("jerk subnormal") << "max_jerk" << subnormal << "max_jerk"
+                                    << "needs at least 4.02e+108 s";
+    QTest::newRow("jerk 1e300") << "max_jerk" << 1e300 << "max_jerk"
+                                << "is outside the planner's range [1e-100, 1e+100]";
+    QTest::newRow("jerk inf") << "max_jerk" << inf << "max_jerk"
+                              << "";
+    QTest::newRow("jerk nan") << "max_jerk" << nan << "max_jerk"
+                              << "";
+    QTest::newRow("accel 1e-300") << "max_accel" << 1e-300 << "max_accel"
+                                  << "needs at least 6.32e+150 s";
+    QTest::newRow("accel subnormal") << "max_accel" << subnormal << "max_accel"
+                                     << "needs at least 2.85e+162 s";
+    QTest::newRow("accel 1e300") << "max_accel" << 1e300 << "max_accel"
+                                 << "is outside the planner's range";
+    QTest::newRow("accel inf") << "max_accel" << inf << "max_accel"
+                               << "";
+    QTest::newRow("accel nan") << "max_accel" << nan << "max_accel"
+                               << "";
+    QTest::newRow("scale 1e-300") << "feed_scale" << 1e-300 << "feed_scale"
+                                  << "makes the feed of line 2 (10 mm/s) 1e-299 mm/s";
+    QTest::newRow("scale subnormal") << "feed_scale" << subnormal << "feed_scale"
+                                     << "";
+    QTest::newRow("scale 1e-5") << "feed_scale" << 1e-5 << "feed_scale"
+                                << "the program needs at least 5e+04 s";
+    QTest::newRow("scale 1e300") << "feed_scale" << 1e300 << "feed_scale"
+                                 << "1e+301 mm/s, outside";
+    QTest::newRow("scale inf") << "feed_scale" << inf << "feed_scale"
+                               << "";
+    QTest::newRow("scale nan") << "feed_scale" << nan << "feed_scale"
+                               << "";
+    QTest::newRow("corner nan") << "corner_angle" << nan << "corner_angle"
+                                << "";
+    QTest::newRow("corner 1e300") << "corner_angle" << 1e300 << "corner_angle"
+                                  << "";
+    QTest::newRow("corner -1") << "corner_angle" << -1.0 << "corner_angle"
+                               << "";
+    QTest::newRow("dt subnormal") << "dt" << subnormal << "dt"
+                                  << "the program needs at least 0.5 s at its own feeds";
+    QTest::newRow("dt inf") << "dt" << inf << "dt"
+                            << "";
+    QTest::newRow("dt nan") << "dt" << nan << "dt"
+                            << "";
 }
 
 void TstFeedProfile::degenerateOptionsAreRefused() {
@@ -343,7 +373,8 @@ void TstFeedProfile::degenerateOptionsAreRefused() {
                                 : o.dtSeconds) = value;
     for (const bool withSamples : {true, false}) {
         o.withSamples = withSamples;
-        const QString message = xyt::test::invalidInputMessage([&] { xyt::planFeedProfile(gcode, o); });
+        const QString message =
+            xyt::test::invalidInputMessage([&] { xyt::planFeedProfile(gcode, o); });
         QVERIFY2(message.startsWith(field + ": ") && message.contains(reason), qPrintable(message));
     }
 }
@@ -365,7 +396,8 @@ void TstFeedProfile::eachOptionsTimeBoundIsTight() {
     QFETCH(double, bound);
     const xyt::Path path({xyt::PathSegment::line({0.0, 0.0}, {10.0, 0.0})});
     const auto plan = [&](double value) {
-        FeedProfileOptions o = options(option == "max_accel" ? value : 1e100, option == "max_jerk" ? value : 0.0);
+        FeedProfileOptions o =
+            options(option == "max_accel" ? value : 1e100, option == "max_jerk" ? value : 0.0);
         o.maxSamples = 1001;
         return xyt::planFeedProfile(path, {option == "feed" ? value : 1e100}, o);
     };
@@ -413,11 +445,14 @@ void TstFeedProfile::unsampledPlanKeepsTheRefusals() {
     QVERIFY(unsampled.t.empty());
     // The sample bound holds without the samples: one sample short of the run is refused.
     o.maxSamples = sampled.t.size() - 1;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }), QStringLiteral("dt"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }),
+             QStringLiteral("dt"));
     o.maxSamples = sampled.t.size();
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }), QStringLiteral("<no exception>"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(gcode, o); }),
+             QStringLiteral("<no exception>"));
     // A path without segments is refused, not read past its end.
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(xyt::Path(), {}, o); }), QStringLiteral("path"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::planFeedProfile(xyt::Path(), {}, o); }),
+             QStringLiteral("path"));
 }
 
 void TstFeedProfile::runShorterThanAStepEndsOnASample() {
@@ -435,9 +470,11 @@ void TstFeedProfile::runShorterThanAStepEndsOnASample() {
     // Two samples need a bound of two: one is refused, with or without the samples, by the
     // first bound checked (the feed alone needs 0.01 s, one step).
     o.maxSamples = 1;
-    QCOMPARE(xyt::test::invalidInputField([&] { straightMove(1.0, 100.0, o); }), QStringLiteral("feed"));
+    QCOMPARE(xyt::test::invalidInputField([&] { straightMove(1.0, 100.0, o); }),
+             QStringLiteral("feed"));
     o.withSamples = false;
-    QCOMPARE(xyt::test::invalidInputField([&] { straightMove(1.0, 100.0, o); }), QStringLiteral("feed"));
+    QCOMPARE(xyt::test::invalidInputField([&] { straightMove(1.0, 100.0, o); }),
+             QStringLiteral("feed"));
 }
 
 QTEST_APPLESS_MAIN(TstFeedProfile)

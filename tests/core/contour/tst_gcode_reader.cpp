@@ -192,8 +192,9 @@ void TstGcodeReader::incrementalAndModal() {
 }
 
 void TstGcodeReader::commentsBlockNumbersAndWarnings() {
-    const GcodeProgram p = readGcode("%\n(header only)\nn10 g1 x 5 (inline) y1 f60 ; Y9 is a comment\n"
-                                     "N20 G0 X1 Z5 M3 S1000\n%\n");
+    const GcodeProgram p =
+        readGcode("%\n(header only)\nn10 g1 x 5 (inline) y1 f60 ; Y9 is a comment\n"
+                  "N20 G0 X1 Z5 M3 S1000\n%\n");
     QCOMPARE(p.path.size(), std::size_t(2));
     comparePoint(p.path.segments()[0].end(), {5.0, 1.0});
     QCOMPARE(p.segments[0].blockNumber, 10L);
@@ -223,10 +224,12 @@ void TstGcodeReader::programEndStopsReadingSilently_data() {
     QTest::addColumn<QString>("warning"); // empty: none
     QTest::newRow("M30 last") << "G1 X5 F60\nM30\n" << 1 << 2 << "";
     QTest::newRow("M2 last") << "G1 X5 F60\nM2\n" << 1 << 2 << "";
-    QTest::newRow("M02 then delimiter and blanks") << "%\nG1 X5 F60\nM02\n%\n\n  \n" << 1 << 3 << "";
+    QTest::newRow("M02 then delimiter and blanks") << "%\nG1 X5 F60\nM02\n%\n\n  \n"
+                                                   << 1 << 3 << "";
     QTest::newRow("motion on the end's line") << "G1 X5 F60\nG1 Y5 M30\n" << 2 << 2 << "";
     QTest::newRow("moves and bad words after M30 are not read")
-        << "G1 X5 F60\nM30\nG1 Y5\nG5 Q?\n" << 1 << 2 << "line 2: the lines after the program end M30 are not read";
+        << "G1 X5 F60\nM30\nG1 Y5\nG5 Q?\n"
+        << 1 << 2 << "line 2: the lines after the program end M30 are not read";
 }
 
 void TstGcodeReader::programEndStopsReadingSilently() {
@@ -265,46 +268,113 @@ void TstGcodeReader::badPrograms_data() {
     QTest::addColumn<QString>("program");
     QTest::addColumn<QString>("field");
     QTest::addColumn<QString>("reason"); // a part of the reason
-    QTest::newRow("unknown G") << "G5 X1" << "line 1" << "unknown word G5 at column 1";
-    QTest::newRow("unknown letter") << "G0 X0\nG1 X1 Q3 F10" << "line 2" << "unknown word Q3 at column 7";
-    QTest::newRow("fractional G") << "G0.5 X1" << "line 1" << "unknown word G0.5 at column 1";
-    QTest::newRow("exponent") << "G1 X1e5 F100" << "line 1" << "unknown word E5 at column 6";
-    QTest::newRow("unknown M") << "G0 X1\nM98" << "line 2" << "unknown word M98 at column 1";
-    QTest::newRow("other plane") << "G18 G0 X1" << "line 1" << "only the XY plane (G17) is supported, not G18 at column 1";
-    QTest::newRow("no feed") << "G1 X1" << "line 1" << "no feed rate";
-    QTest::newRow("zero feed") << "G1 X1 F0" << "line 1" << "feed F0 at column 7 must be greater than zero";
-    QTest::newRow("no motion mode") << "X1" << "line 1" << "X1 at column 1 has no motion mode";
-    QTest::newRow("IJ without arc") << "G1 I5 F100" << "line 1" << "I5 at column 4 needs an arc (G2 or G3)";
-    QTest::newRow("arc without centre") << "G2 X1 F100" << "line 1" << "arc G2 at column 1 needs I/J";
-    QTest::newRow("R and IJ") << "G2 X1 Y1 I1 R1 F100" << "line 1" << "has both R and I/J";
-    QTest::newRow("end off circle") << "G0 X0 Y0\nG2 X10 Y0 I4 J0 F100" << "line 2"
-                                    << "arc G2 at column 1: the end point is off the circle (radius 6 mm at the end, 4 mm";
-    QTest::newRow("modal arc off circle") << "G0 X0 Y0\nG3 X8 Y0 I4 F100\nX0 I-3" << "line 3"
+    QTest::newRow("unknown G") << "G5 X1"
+                               << "line 1"
+                               << "unknown word G5 at column 1";
+    QTest::newRow("unknown letter") << "G0 X0\nG1 X1 Q3 F10"
+                                    << "line 2"
+                                    << "unknown word Q3 at column 7";
+    QTest::newRow("fractional G") << "G0.5 X1"
+                                  << "line 1"
+                                  << "unknown word G0.5 at column 1";
+    QTest::newRow("exponent") << "G1 X1e5 F100"
+                              << "line 1"
+                              << "unknown word E5 at column 6";
+    QTest::newRow("unknown M") << "G0 X1\nM98"
+                               << "line 2"
+                               << "unknown word M98 at column 1";
+    QTest::newRow("other plane") << "G18 G0 X1"
+                                 << "line 1"
+                                 << "only the XY plane (G17) is supported, not G18 at column 1";
+    QTest::newRow("no feed") << "G1 X1"
+                             << "line 1"
+                             << "no feed rate";
+    QTest::newRow("zero feed") << "G1 X1 F0"
+                               << "line 1"
+                               << "feed F0 at column 7 must be greater than zero";
+    QTest::newRow("no motion mode") << "X1"
+                                    << "line 1"
+                                    << "X1 at column 1 has no motion mode";
+    QTest::newRow("IJ without arc") << "G1 I5 F100"
+                                    << "line 1"
+                                    << "I5 at column 4 needs an arc (G2 or G3)";
+    QTest::newRow("arc without centre") << "G2 X1 F100"
+                                        << "line 1"
+                                        << "arc G2 at column 1 needs I/J";
+    QTest::newRow("R and IJ") << "G2 X1 Y1 I1 R1 F100"
+                              << "line 1"
+                              << "has both R and I/J";
+    QTest::newRow("end off circle")
+        << "G0 X0 Y0\nG2 X10 Y0 I4 J0 F100"
+        << "line 2"
+        << "arc G2 at column 1: the end point is off the circle (radius 6 mm at the end, 4 mm";
+    QTest::newRow("modal arc off circle") << "G0 X0 Y0\nG3 X8 Y0 I4 F100\nX0 I-3"
+                                          << "line 3"
                                           << "arc G3 at column 1: the end point is off the circle";
-    QTest::newRow("R too small") << "G0 X0\nG2 X10 Y0 R4 F100" << "line 2" << "R4 at column 11 is smaller than half the chord";
-    QTest::newRow("full circle by R") << "G2 R5 F100" << "line 1" << "a full circle needs I and J";
-    QTest::newRow("zero radius") << "G2 I0 J0 F10" << "line 1" << "has a zero radius";
-    QTest::newRow("word twice") << "G1 X1 X2 F100" << "line 1" << "word X is given twice (X2 at column 7)";
+    QTest::newRow("R too small") << "G0 X0\nG2 X10 Y0 R4 F100"
+                                 << "line 2"
+                                 << "R4 at column 11 is smaller than half the chord";
+    QTest::newRow("full circle by R") << "G2 R5 F100"
+                                      << "line 1"
+                                      << "a full circle needs I and J";
+    QTest::newRow("zero radius") << "G2 I0 J0 F10"
+                                 << "line 1"
+                                 << "has a zero radius";
+    QTest::newRow("word twice") << "G1 X1 X2 F100"
+                                << "line 1"
+                                << "word X is given twice (X2 at column 7)";
     // A number the tokenizer stops reading early: said to be malformed, not a word given twice
     // ("X0x10" used to read as X0 and X10) or a stray point.
-    QTest::newRow("hexadecimal") << "G1 X0x10 F100" << "line 1"
-                                 << "malformed number X0x10 at column 4: G-code numbers are decimal (no 0x prefix)";
-    QTest::newRow("hexadecimal upper") << "G1 X-0X1f F100" << "line 1" << "malformed number X-0X1f at column 4";
-    QTest::newRow("two points") << "G1 X1.2.3 F100" << "line 1"
-                                << "malformed number X1.2.3 at column 4: more than one decimal point";
-    QTest::newRow("two points CR") << "G0 X0\rG1 Y.5. F100\r" << "line 2" << "malformed number Y.5. at column 4";
-    QTest::newRow("two motions") << "G0 G1 X1 F100" << "line 1" << "two motion codes G0 and G1 on one line";
-    QTest::newRow("two units") << "G20 G21" << "line 1" << "two unit codes";
-    QTest::newRow("no number") << "G1 X (c)" << "line 1" << "word X at column 4 has no number";
-    QTest::newRow("sign only") << "G1 X-" << "line 1" << "word X at column 4 has no number";
-    QTest::newRow("open comment") << "G1 X1 (open" << "line 1" << "comment opened at column 7 is not closed";
-    QTest::newRow("stray character") << "G1 X1 F100 #" << "line 1" << "unexpected character '#' at column 12";
-    QTest::newRow("control character") << "G1 X1 F100 \x01" << "line 1" << "unexpected character '\\x01' at column 12";
-    QTest::newRow("beyond 1e9 mm") << "G0 X2000000000" << "line 1" << "X2000000000 at column 4 is beyond 1e+09 mm";
-    QTest::newRow("inch beyond") << "G20 G0 X50000000" << "line 1" << "is beyond 1e+09 mm";
-    QTest::newRow("block number") << "N-5 G0 X1" << "line 1" << "block number N-5 at column 1";
-    QTest::newRow("no motion") << "G21 G90\n(nothing)\n" << "program" << "has no XY motion";
-    QTest::newRow("empty") << "" << "program" << "has no XY motion";
+    QTest::newRow("hexadecimal")
+        << "G1 X0x10 F100"
+        << "line 1"
+        << "malformed number X0x10 at column 4: G-code numbers are decimal (no 0x prefix)";
+    QTest::newRow("hexadecimal upper") << "G1 X-0X1f F100"
+                                       << "line 1"
+                                       << "malformed number X-0X1f at column 4";
+    QTest::newRow("two points")
+        << "G1 X1.2.3 F100"
+        << "line 1"
+        << "malformed number X1.2.3 at column 4: more than one decimal point";
+    QTest::newRow("two points CR") << "G0 X0\rG1 Y.5. F100\r"
+                                   << "line 2"
+                                   << "malformed number Y.5. at column 4";
+    QTest::newRow("two motions") << "G0 G1 X1 F100"
+                                 << "line 1"
+                                 << "two motion codes G0 and G1 on one line";
+    QTest::newRow("two units") << "G20 G21"
+                               << "line 1"
+                               << "two unit codes";
+    QTest::newRow("no number") << "G1 X (c)"
+                               << "line 1"
+                               << "word X at column 4 has no number";
+    QTest::newRow("sign only") << "G1 X-"
+                               << "line 1"
+                               << "word X at column 4 has no number";
+    QTest::newRow("open comment") << "G1 X1 (open"
+                                  << "line 1"
+                                  << "comment opened at column 7 is not closed";
+    QTest::newRow("stray character") << "G1 X1 F100 #"
+                                     << "line 1"
+                                     << "unexpected character '#' at column 12";
+    QTest::newRow("control character") << "G1 X1 F100 \x01"
+                                       << "line 1"
+                                       << "unexpected character '\\x01' at column 12";
+    QTest::newRow("beyond 1e9 mm") << "G0 X2000000000"
+                                   << "line 1"
+                                   << "X2000000000 at column 4 is beyond 1e+09 mm";
+    QTest::newRow("inch beyond") << "G20 G0 X50000000"
+                                 << "line 1"
+                                 << "is beyond 1e+09 mm";
+    QTest::newRow("block number") << "N-5 G0 X1"
+                                  << "line 1"
+                                  << "block number N-5 at column 1";
+    QTest::newRow("no motion") << "G21 G90\n(nothing)\n"
+                               << "program"
+                               << "has no XY motion";
+    QTest::newRow("empty") << ""
+                           << "program"
+                           << "has no XY motion";
 }
 
 void TstGcodeReader::badPrograms() {
@@ -335,14 +405,16 @@ void TstGcodeReader::programLimits() {
         QCOMPARE(e.field(), std::string("program"));
         QVERIFY2(e.reason().find("1000000 lines") != std::string::npos, e.what());
     }
-    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, readGcode(std::string(xyt::kMaxGcodeBytes + 1, ' ')));
+    QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
+                             readGcode(std::string(xyt::kMaxGcodeBytes + 1, ' ')));
     xyt::GcodeReadOptions options;
     options.rapidFeedMmPerMin = 0.0;
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput, readGcode("G0 X1", options));
     // The planner's range of feeds (feed_profile.h) in mm/min: 60 x [1e-100, 1e100].
     for (const double rate : {1e300, 1e-300, 5e-324, 59e-100, 61e100}) {
         options.rapidFeedMmPerMin = rate;
-        QCOMPARE(xyt::test::invalidInputField([&] { readGcode("G0 X1", options); }), QStringLiteral("rapid_feed"));
+        QCOMPARE(xyt::test::invalidInputField([&] { readGcode("G0 X1", options); }),
+                 QStringLiteral("rapid_feed"));
     }
     options.rapidFeedMmPerMin = 1e-98;
     QCOMPARE(readGcode("G0 X1", options).segments[0].feedMmPerSec, 1e-98 / 60.0);
@@ -360,7 +432,8 @@ void TstGcodeReader::lineEndings() {
     const std::string sep = separator.toStdString();
     // The same program under each line ending: the same path, the same line numbers (a CR-only
     // file used to be one line: "two motion codes G1 and G1 on one line").
-    const std::string text = "G21 G90" + sep + "G1 X10 F600" + sep + sep + "G1 Y10" + sep + "G0 X0 Y0" + sep;
+    const std::string text =
+        "G21 G90" + sep + "G1 X10 F600" + sep + sep + "G1 Y10" + sep + "G0 X0 Y0" + sep;
     const auto p = readGcode(text);
     QCOMPARE(p.path.size(), std::size_t(3));
     QCOMPARE(p.lines, std::size_t(5));
@@ -395,8 +468,9 @@ void TstGcodeReader::examples_data() {
     QTest::addColumn<int>("segments");
     QTest::addColumn<double>("circleRadius"); // 0: not a single full circle
     QTest::addColumn<int>("warnings");
-    // The papers' circles (Braga et al.: 25 mm at 90 mm/min; Patrick, Ishak and Adnan: 30 mm at 180 mm/min),
-    // each a rapid to the top then one clockwise circle; the program end M30 does not warn.
+    // The papers' circles (Braga et al.: 25 mm at 90 mm/min; Patrick, Ishak and Adnan: 30 mm at 180
+    // mm/min), each a rapid to the top then one clockwise circle; the program end M30 does not
+    // warn.
     QTest::newRow("circle_25mm") << "circle_25mm.nc" << 2 << 25.0 << 0;
     QTest::newRow("circle_30mm") << "circle_30mm.nc" << 2 << 30.0 << 0;
     QTest::newRow("square") << "square_sharp_corners.nc" << 4 << 0.0 << 0;
@@ -421,7 +495,8 @@ void TstGcodeReader::examples() {
         XYT_COMPARE_NEAR(c.radius(), circleRadius, 0.0, kTol);
         comparePoint(c.centre(), {0.0, 0.0});
         QVERIFY(c.sweep() < 0.0); // clockwise, as x = R sin(w t), y = R cos(w t)
-        // v = R omega: 25 x 0.06 = 1.5 mm/s (Braga et al.), 30 x 0.1 = 3 mm/s (Patrick, Ishak and Adnan).
+        // v = R omega: 25 x 0.06 = 1.5 mm/s (Braga et al.), 30 x 0.1 = 3 mm/s (Patrick, Ishak and
+        // Adnan).
         XYT_COMPARE_NEAR(p.segments[p.fullCircleSegment()].feedMmPerSec,
                          circleRadius == 25.0 ? 1.5 : 3.0, 1e-15, 0.0);
     }
@@ -437,8 +512,8 @@ void TstGcodeReader::everyExampleIsTested() {
     // Every program in resources/examples is in the table above (a new one must be added).
     const QStringList files = QDir(QStringLiteral(XYT_SOURCE_DIR "/resources/examples"))
                                   .entryList({"*.nc"}, QDir::Files, QDir::Name);
-    QCOMPARE(files, (QStringList{"circle_25mm.nc", "circle_30mm.nc", "engraving_xy.nc", "square_sharp_corners.nc",
-                                 "star.nc"}));
+    QCOMPARE(files, (QStringList{"circle_25mm.nc", "circle_30mm.nc", "engraving_xy.nc",
+                                 "square_sharp_corners.nc", "star.nc"}));
 }
 
 QTEST_APPLESS_MAIN(TstGcodeReader)

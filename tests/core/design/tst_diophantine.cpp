@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Diophantine solve A F + B G = T and the RST pole-placement design of Patrick, Ishak and Adnan Sec. 5.
+// Diophantine solve A F + B G = T and the RST pole-placement design of Patrick, Ishak and Adnan
+// Sec. 5.
 #include "core/design/diophantine.h"
-#include "core/model/errors.h"
 #include "core/design/pole_placement.h"
+#include "core/model/errors.h"
 #include "tests/support/tolerance.h"
 
 #include <QFile>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The Guillemin-Truxal PI design of Braga et al. (Eq. 7-22) against its closed forms and the
 // published numbers, after checking each published number against its own equation.
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
@@ -60,11 +60,11 @@ void TstGuilleminTruxal::closedForms() {
     const GtDesign d = xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp);
     // Closed forms of Braga et al.; one or two roundings each, so 1e-15 relative.
     const double tol = 1e-15;
-    XYT_COMPARE_NEAR(d.f1, a1 / wn, tol, 0.0);                         // Eq. 17
-    XYT_COMPARE_NEAR(d.f2, a2 / (wn * wn), tol, 0.0);                  // Eq. 18
-    XYT_COMPARE_NEAR(d.f3, kp * k0 / (wn * wn * wn), tol, 0.0);        // Eq. 15
-    XYT_COMPARE_NEAR(d.psi1, std::pow(wn, 4) / (kp * k0), tol, 0.0);   // Eq. 11
-    XYT_COMPARE_NEAR(d.ki, kp * d.psi1, tol, 0.0);                     // Eq. 16
+    XYT_COMPARE_NEAR(d.f1, a1 / wn, tol, 0.0);                       // Eq. 17
+    XYT_COMPARE_NEAR(d.f2, a2 / (wn * wn), tol, 0.0);                // Eq. 18
+    XYT_COMPARE_NEAR(d.f3, kp * k0 / (wn * wn * wn), tol, 0.0);      // Eq. 15
+    XYT_COMPARE_NEAR(d.psi1, std::pow(wn, 4) / (kp * k0), tol, 0.0); // Eq. 11
+    XYT_COMPARE_NEAR(d.ki, kp * d.psi1, tol, 0.0);                   // Eq. 16
     QCOMPARE(d.psi2, 0.0); // Eq. 12 with Eq. 15: exactly zero, not computed
     XYT_COMPARE_NEAR(d.kp, kp, 0.0, 0.0);
     // Eq. 16: G_c(s) = kp + ki/s = (kp s + ki)/s.
@@ -84,7 +84,9 @@ void TstGuilleminTruxal::closedForms() {
     XYT_COMPARE_NEAR(d.referenceModel.den().coefficient(2), a2, 1e-14, 0.0);
 }
 
-void TstGuilleminTruxal::closedLoopEqualsReferenceModel_data() { closedForms_data(); }
+void TstGuilleminTruxal::closedLoopEqualsReferenceModel_data() {
+    closedForms_data();
+}
 
 void TstGuilleminTruxal::closedLoopEqualsReferenceModel() {
     // Invariant (the point of the method, Eq. 3): feedback(G_c G) == G_R coefficient-wise. The
@@ -119,9 +121,11 @@ void TstGuilleminTruxal::paperEq10LeadLagClosedLoop() {
     // feedback(k (s + psi1)/(s + psi2) G) for psi2 != 0.
     const double k = 2.5, psi1 = 0.3, psi2 = 4.0, k0 = 77.8, a1 = 125.3, a2 = 3665.0;
     const TransferFunction gc = TransferFunction::fromDescending({k, k * psi1}, {1.0, psi2});
-    const TransferFunction t1 = xyt::feedback(xyt::series(gc, ThirdOrderPlant{k0, a1, a2}.transferFunction()));
-    comparePolynomials(t1.den(), Polynomial::fromDescending({1.0, a1 + psi2, a2 + psi2 * a1,
-                                                             psi2 * a2 + k * k0, k * k0 * psi1}),
+    const TransferFunction t1 =
+        xyt::feedback(xyt::series(gc, ThirdOrderPlant{k0, a1, a2}.transferFunction()));
+    comparePolynomials(t1.den(),
+                       Polynomial::fromDescending(
+                           {1.0, a1 + psi2, a2 + psi2 * a1, psi2 * a2 + k * k0, k * k0 * psi1}),
                        1e-14);
     comparePolynomials(t1.num(), Polynomial::fromDescending({k * k0, k * k0 * psi1}), 1e-14);
 }
@@ -147,8 +151,8 @@ void TstGuilleminTruxal::paperUpperBaseEq21And22() {
     const GtDesign d = xyt::designGuilleminTruxal({24.44, 68.18, 863.0}, 1.0, 30.0);
     // Sec. 3.2 prints f1 = 64.18: a misprint. Eq. 17 gives a1/wn = 68.18/1 = 68.18 (off by 4).
     XYT_COMPARE_NEAR(d.f1, 68.18, 1e-15, 0.0);
-    XYT_COMPARE_NEAR(d.f2, 863.0, 1e-15, 0.0);   // printed 863: right
-    XYT_COMPARE_NEAR(d.f3, 733.2, 1e-15, 0.0);   // printed 733.2 = 30*24.44: right
+    XYT_COMPARE_NEAR(d.f2, 863.0, 1e-15, 0.0); // printed 863: right
+    XYT_COMPARE_NEAR(d.f3, 733.2, 1e-15, 0.0); // printed 733.2 = 30*24.44: right
     // Eq. 21 prints the s^3 coefficient 128.36 (= 2 * 64.18, as if f1 = 64.18 and wn = 2 of
     // the lower base): a misprint. f1 wn = 68.18, the plant's own a1 (Eq. 14 with psi2 = 0).
     // The other coefficients print right: 733.2 s + 1 over ... 863 s^2 + 733.2 s + 1.
@@ -232,7 +236,9 @@ void TstGuilleminTruxal::badInputsNameTheField() {
     QFETCH(double, wn);
     QFETCH(double, kp);
     QFETCH(QString, field);
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp); }),
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::designGuilleminTruxal({k0, a1, a2}, wn, kp);
+             }),
              field);
 }
 
@@ -241,16 +247,24 @@ void TstGuilleminTruxal::unrepresentableWnOrKpIsRefusedNamingIt() {
     // "den[2]: must be a number, got NaN". Bounds from the closed forms (Braga et al. Eq. 11-18):
     // wn^4 overflows above DBL_MAX^(1/4) = 1.34e77 rad/s, wn^2 underflows to 0 below ~1.5e-162.
     const ThirdOrderPlant lower{77.8, 125.3, 3665.0};
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e300, 30.0); }), QString("wn"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2e77, 30.0); }), QString("wn"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e-200, 30.0); }), QString("wn"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e300, 30.0); }),
+             QString("wn"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2e77, 30.0); }),
+             QString("wn"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 1e-200, 30.0); }),
+             QString("wn"));
     // psi1 = wn^4/(kp k0) underflows to 0 for kp = 1e308 (kp k0 overflows).
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2.0, 1e308); }), QString("kp"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal(lower, 2.0, 1e308); }),
+             QString("kp"));
     // The same overflow of kp k0 from a plant gain of 1e308 with an ordinary kp: k0 is named.
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({1e308, 125.3, 3665.0}, 30.0, 460.852); }),
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::designGuilleminTruxal({1e308, 125.3, 3665.0}, 30.0, 460.852);
+             }),
              QString("k0"));
     // And psi1 = wn^4/(kp k0) overflowing for a plant gain of 1e-305: k0 again.
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::designGuilleminTruxal({1e-305, 125.3, 3665.0}, 30.0, 2.0); }),
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::designGuilleminTruxal({1e-305, 125.3, 3665.0}, 30.0, 2.0);
+             }),
              QString("k0"));
     // Still representable: wn = 1e70 (wn^4 = 1e280) gives finite coefficients.
     const GtDesign d = xyt::designGuilleminTruxal(lower, 1e70, 30.0);

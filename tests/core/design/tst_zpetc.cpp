@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// ZPETC of Patrick, Ishak and Adnan Sec. 4 on the pole-placement loop of Sec. 5: factorization, zero phase,
-// the three simulated structures, tracking and contour metrics.
-#include "core/simulation/discrete_simulation.h"
-#include "core/model/errors.h"
+// ZPETC of Patrick, Ishak and Adnan Sec. 4 on the pole-placement loop of Sec. 5: factorization,
+// zero phase, the three simulated structures, tracking and contour metrics.
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
+#include "core/model/errors.h"
+#include "core/simulation/discrete_simulation.h"
 #include "core/simulation/zpetc_tracking.h"
 #include "tests/support/tolerance.h"
 

@@ -33,7 +33,9 @@ IoData arxData(std::size_t n, double noiseSigma, std::uint64_t seed) {
     return ioData(u, y, kTs);
 }
 
-std::vector<double> truth() { return {kA[1], kA[2], kB[1], kB[2], kB[3]}; }
+std::vector<double> truth() {
+    return {kA[1], kA[2], kB[1], kB[2], kB[3]};
+}
 
 } // namespace
 
@@ -124,11 +126,14 @@ private slots:
     // 25 %, and the mean is within 4 standard errors of the truth (spreadMismatch).
     void spreadOverSeedsMatchesReportedSd() {
         std::vector<std::vector<double>> est, sd;
-        collectOverSeeds(200, 5, [](std::size_t seed, std::vector<double>& p, std::vector<double>& s) {
-            const ArxResult r = estimateArx(arxData(300, 0.01, 100 + seed), ArxOrders{2, 3, 1});
-            p = r.parameters;
-            s = r.standardDeviations;
-        }, est, sd);
+        collectOverSeeds(
+            200, 5,
+            [](std::size_t seed, std::vector<double>& p, std::vector<double>& s) {
+                const ArxResult r = estimateArx(arxData(300, 0.01, 100 + seed), ArxOrders{2, 3, 1});
+                p = r.parameters;
+                s = r.standardDeviations;
+            },
+            est, sd);
         const QString mismatch = spreadMismatch(est, sd, truth());
         QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
     }
@@ -162,9 +167,11 @@ private slots:
         QCOMPARE(r.status, EstimationStatus::Converged);
         int matched = 0;
         for (std::size_t k = 0; k < ref.rows.size(); ++k) {
-            if (ref.number(k, QStringLiteral("na")) != na || ref.number(k, QStringLiteral("nb")) != nb)
+            if (ref.number(k, QStringLiteral("na")) != na ||
+                ref.number(k, QStringLiteral("nb")) != nb)
                 continue;
-            const std::string name = ref.rows[k].at(ref.column(QStringLiteral("name"))).toStdString();
+            const std::string name =
+                ref.rows[k].at(ref.column(QStringLiteral("name"))).toStdString();
             const double value = ref.number(k, QStringLiteral("value"));
             for (std::size_t i = 0; i < r.parameterNames.size(); ++i)
                 if (r.parameterNames[i] == name) {
@@ -188,14 +195,14 @@ private slots:
         std::vector<double> sine(300);
         for (std::size_t k = 0; k < sine.size(); ++k)
             sine[k] = std::sin(0.3 * static_cast<double>(k));
-        const ArxResult r2 =
-            estimateArx(ioData(sine, filterDifferenceEquation(kB, kA, sine), kTs), ArxOrders{2, 3, 1});
+        const ArxResult r2 = estimateArx(ioData(sine, filterDifferenceEquation(kB, kA, sine), kTs),
+                                         ArxOrders{2, 3, 1});
         QCOMPARE(r2.status, EstimationStatus::NotPersistentlyExciting);
         QVERIFY2(r2.message.find("nb = 3") != std::string::npos, r2.message.c_str());
         // ... while nb = 2 with the same sinusoid has a full-rank input block.
-        const ArxResult r3 =
-            estimateArx(ioData(sine, filterDifferenceEquation({0.0, 0.0421, 0.0628}, kA, sine), kTs),
-                        ArxOrders{2, 2, 1});
+        const ArxResult r3 = estimateArx(
+            ioData(sine, filterDifferenceEquation({0.0, 0.0421, 0.0628}, kA, sine), kTs),
+            ArxOrders{2, 2, 1});
         QCOMPARE(r3.status, EstimationStatus::Converged);
     }
 
@@ -217,7 +224,8 @@ private slots:
             QCOMPARE(e.field(), std::string("data"));
             QVERIFY(std::string(e.what()).find("ARX(2,3,1)") != std::string::npos);
         }
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, estimateArx(arxData(9, 0.01, 6), ArxOrders{2, 0, 1}));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 estimateArx(arxData(9, 0.01, 6), ArxOrders{2, 0, 1}));
         IoData bad = arxData(50, 0.0, 7);
         bad.u.pop_back();
         try {

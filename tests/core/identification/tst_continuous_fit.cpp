@@ -24,7 +24,9 @@ namespace {
 constexpr double kTs = 0.01; // Braga et al. Sec. 2: 10 ms
 
 /// Braga et al. Eq. 2, the lower base ("Base bottom", G_Pinferior): the session default.
-ThirdOrderPlant lowerBase() { return findGtPreset("lower-base")->plant; }
+ThirdOrderPlant lowerBase() {
+    return findGtPreset("lower-base")->plant;
+}
 
 /**
  * The plant's response to a +-2.5 V square wave (half period 0.5 s), by the core's exact ZOH
@@ -41,7 +43,9 @@ IoData plantData(const ThirdOrderPlant& p, std::size_t n, double sigma, std::uin
     return ioData(u, y, kTs);
 }
 
-std::vector<double> asVector(const ThirdOrderPlant& p) { return {p.k0, p.a1, p.a2}; }
+std::vector<double> asVector(const ThirdOrderPlant& p) {
+    return {p.k0, p.a1, p.a2};
+}
 
 } // namespace
 
@@ -98,7 +102,10 @@ private slots:
         const std::vector<double> e = asVector(r.plant);
         for (std::size_t i = 0; i < 3; ++i)
             QVERIFY2(std::abs(e[i] - t[i]) <= 3.0 * r.standardDeviations[i],
-                     qPrintable(QStringLiteral("%1 vs %2 +- %3").arg(e[i]).arg(t[i]).arg(r.standardDeviations[i])));
+                     qPrintable(QStringLiteral("%1 vs %2 +- %3")
+                                    .arg(e[i])
+                                    .arg(t[i])
+                                    .arg(r.standardDeviations[i])));
         QVERIFY(r.covariance.allFinite());
         XYT_COMPARE_NEAR(r.standardDeviations[0], std::sqrt(r.covariance(0, 0)), 1e-12, 0.0);
     }
@@ -120,7 +127,10 @@ private slots:
         const std::vector<double> e = asVector(r.plant);
         for (std::size_t i = 0; i < 3; ++i)
             QVERIFY2(std::abs(e[i] - t[i]) <= 3.0 * r.standardDeviations[i],
-                     qPrintable(QStringLiteral("%1 vs %2 +- %3").arg(e[i]).arg(t[i]).arg(r.standardDeviations[i])));
+                     qPrintable(QStringLiteral("%1 vs %2 +- %3")
+                                    .arg(e[i])
+                                    .arg(t[i])
+                                    .arg(r.standardDeviations[i])));
         // y0 is found at least as well as one sample measures it (3 noise sigmas): it is
         // correlated with k0, a1, a2, so its error exceeds sigma / sqrt(N) (here 1.6 sigma).
         XYT_COMPARE_NEAR(r.initialPositionMm, 312.5, 0.0, 3.0 * 1e-4);
@@ -132,14 +142,17 @@ private slots:
         const IoData clean = plantData(lowerBase(), 600, 0.0, 0);
         std::vector<std::vector<double>> est, sd;
         bool allConverged = true;
-        collectOverSeeds(200, 3, [&](std::size_t seed, std::vector<double>& p, std::vector<double>& s) {
-            IoData d = clean;
-            d.y = plus(d.y, gaussianNoise(d.size(), 1e-4, 7000 + seed));
-            const ContinuousFitResult r = fitThirdOrderPlant(d);
-            allConverged = allConverged && r.status == EstimationStatus::Converged;
-            p = asVector(r.plant);
-            s.assign(r.standardDeviations.begin(), r.standardDeviations.end());
-        }, est, sd);
+        collectOverSeeds(
+            200, 3,
+            [&](std::size_t seed, std::vector<double>& p, std::vector<double>& s) {
+                IoData d = clean;
+                d.y = plus(d.y, gaussianNoise(d.size(), 1e-4, 7000 + seed));
+                const ContinuousFitResult r = fitThirdOrderPlant(d);
+                allConverged = allConverged && r.status == EstimationStatus::Converged;
+                p = asVector(r.plant);
+                s.assign(r.standardDeviations.begin(), r.standardDeviations.end());
+            },
+            est, sd);
         QVERIFY(allConverged);
         const QString mismatch = spreadMismatch(est, sd, asVector(lowerBase()));
         QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
@@ -202,10 +215,12 @@ private slots:
         }
         ContinuousFitOptions o;
         o.finiteDifferenceStep = 0.0;
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, fitThirdOrderPlant(plantData(lowerBase(), 100, 0.0, 0), o));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 fitThirdOrderPlant(plantData(lowerBase(), 100, 0.0, 0), o));
         o = ContinuousFitOptions{};
         o.initial = ThirdOrderPlant{0.0, 1.0, 1.0};
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, fitThirdOrderPlant(plantData(lowerBase(), 100, 0.0, 0), o));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 fitThirdOrderPlant(plantData(lowerBase(), 100, 0.0, 0), o));
     }
 };
 

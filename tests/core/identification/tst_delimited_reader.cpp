@@ -17,7 +17,6 @@ xyt::DelimitedTable read(const char* text, xyt::DelimitedReadOptions options = {
     return xyt::readDelimited(text, "run.csv", options);
 }
 
-
 } // namespace
 
 class TstDelimitedReader : public QObject {
@@ -42,10 +41,11 @@ void TstDelimitedReader::detectsTheDelimiter_data() {
     QTest::addColumn<int>("delimiter");
     QTest::newRow("comma") << "t,u,y\n0,0.5,-1\n0.01,0.25,2e-3\n" << int(xyt::Delimiter::Comma);
     QTest::newRow("tab") << "t\tu\ty\n0\t0.5\t-1\n0.01\t0.25\t2e-3\n" << int(xyt::Delimiter::Tab);
-    QTest::newRow("semicolon, decimal point cells")
-        << "t;u;y\n0;0,5;-1\n0,01;0,25;2e-3\n" << int(xyt::Delimiter::Semicolon);
+    QTest::newRow("semicolon, decimal point cells") << "t;u;y\n0;0,5;-1\n0,01;0,25;2e-3\n"
+                                                    << int(xyt::Delimiter::Semicolon);
     QTest::newRow("aligned with spaces, CRLF")
-        << "  t      u      y\r\n  0    0.5     -1\r\n  0.01 0.25   2e-3\r\n" << int(xyt::Delimiter::Whitespace);
+        << "  t      u      y\r\n  0    0.5     -1\r\n  0.01 0.25   2e-3\r\n"
+        << int(xyt::Delimiter::Whitespace);
 }
 
 void TstDelimitedReader::detectsTheDelimiter() {
@@ -118,21 +118,34 @@ void TstDelimitedReader::trailingSeparatorIsDropped() {
 void TstDelimitedReader::structuralErrorsNameLineAndColumn_data() {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("expected");
-    QTest::newRow("empty file") << "" << "run.csv: holds no header line";
-    QTest::newRow("only blank lines") << "\n \n" << "run.csv: holds no header line";
-    QTest::newRow("numbers as header") << "0,1,2\n1,2,3\n" << "run.csv: line 1: holds numbers, not column names";
-    QTest::newRow("empty name") << "t,,y\n0,1,2\n" << "run.csv: line 1, column 2: the column name is empty";
-    QTest::newRow("repeated name") << "t,u,u\n0,1,2\n" << "run.csv: line 1, column 3: the column name 'u' is used twice";
-    QTest::newRow("unclosed quote") << "t,\"u\n" << "run.csv: line 1, column 2: the quote opened at character 3 is not closed";
-    QTest::newRow("text after quote") << "t,\"u\"x\n" << "run.csv: line 1, column 2: text follows the closing quote";
-    QTest::newRow("too many fields") << "t,u\n0,1\n0.01,2,3\n" << "run.csv: line 3, column 3: the line has 3 fields but the header names 2";
+    QTest::newRow("empty file") << ""
+                                << "run.csv: holds no header line";
+    QTest::newRow("only blank lines") << "\n \n"
+                                      << "run.csv: holds no header line";
+    QTest::newRow("numbers as header") << "0,1,2\n1,2,3\n"
+                                       << "run.csv: line 1: holds numbers, not column names";
+    QTest::newRow("empty name") << "t,,y\n0,1,2\n"
+                                << "run.csv: line 1, column 2: the column name is empty";
+    QTest::newRow("repeated name")
+        << "t,u,u\n0,1,2\n"
+        << "run.csv: line 1, column 3: the column name 'u' is used twice";
+    QTest::newRow("unclosed quote")
+        << "t,\"u\n"
+        << "run.csv: line 1, column 2: the quote opened at character 3 is not closed";
+    QTest::newRow("text after quote")
+        << "t,\"u\"x\n"
+        << "run.csv: line 1, column 2: text follows the closing quote";
+    QTest::newRow("too many fields")
+        << "t,u\n0,1\n0.01,2,3\n"
+        << "run.csv: line 3, column 3: the line has 3 fields but the header names 2";
 }
 
 void TstDelimitedReader::structuralErrorsNameLineAndColumn() {
     QFETCH(QString, text);
     QFETCH(QString, expected);
     const std::string bytes = text.toStdString();
-    const QString message = xyt::test::invalidInputMessage([&] { xyt::readDelimited(bytes, "run.csv"); });
+    const QString message =
+        xyt::test::invalidInputMessage([&] { xyt::readDelimited(bytes, "run.csv"); });
     QVERIFY2(message.startsWith(expected), qPrintable(message));
 }
 
@@ -146,7 +159,8 @@ void TstDelimitedReader::readsAFile() {
     QCOMPARE(r.table.columns[2][4], 0.125);
     bool threw = false;
     try {
-        xyt::readDelimitedFile(QStringLiteral(XYT_TEST_DATA_DIR).toStdString() + "/no_such_file.csv");
+        xyt::readDelimitedFile(QStringLiteral(XYT_TEST_DATA_DIR).toStdString() +
+                               "/no_such_file.csv");
     } catch (const std::runtime_error& e) { // FileError
         threw = QString(e.what()).contains("no_such_file.csv");
     }
@@ -189,17 +203,20 @@ void TstDelimitedReader::chosenColumnsAreCheckedBeforeTheRows() {
     // The kept columns only, in the file's order, with their own field numbers; the others
     // are not parsed (the text column 'note' is no problem).
     o.columns = {"y", "t"};
-    const xyt::ExperimentTable t = xyt::readDelimited("t,u,y,note\n0,1,2,a\n0.01,3,4,b\n", "run.csv", o).table;
+    const xyt::ExperimentTable t =
+        xyt::readDelimited("t,u,y,note\n0,1,2,a\n0.01,3,4,b\n", "run.csv", o).table;
     QCOMPARE(t.names, (std::vector<std::string>{"t", "y"}));
     QCOMPARE(t.fieldNumbers, (std::vector<std::size_t>{1, 3}));
     QCOMPARE(t.columns[1], (std::vector<double>{2.0, 4.0}));
     QCOMPARE(t.rowNumbers, (std::vector<std::size_t>{2, 3}));
     // A row's fields are still counted for every column, kept or not.
-    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
-             QString("run.csv: has no column 'y'; the columns are: t, u"));
+    QCOMPARE(
+        xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
+        QString("run.csv: has no column 'y'; the columns are: t, u"));
     o.columns = {"t"};
-    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
-             QString("run.csv: line 2, column 3: the line has 3 fields but the header names 2"));
+    QCOMPARE(
+        xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
+        QString("run.csv: line 2, column 3: the line has 3 fields but the header names 2"));
 }
 
 QTEST_APPLESS_MAIN(TstDelimitedReader)

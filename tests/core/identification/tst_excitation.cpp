@@ -60,7 +60,8 @@ std::vector<std::uint64_t> primeFactors(std::uint64_t m) {
     return f;
 }
 
-xyt::ExcitationTiming timing(double ts, double duration, std::optional<double> umax = std::nullopt) {
+xyt::ExcitationTiming timing(double ts, double duration,
+                             std::optional<double> umax = std::nullopt) {
     xyt::ExcitationTiming t;
     t.tsSeconds = ts;
     t.durationSeconds = duration;
@@ -97,7 +98,8 @@ void TstExcitation::prbsPolynomialsArePrimitive() {
         const std::uint64_t order = (std::uint64_t(1) << n) - 1;
         QVERIFY2(powMod(order, p, n) == 1, qPrintable(QString("n = %1").arg(n)));
         for (std::uint64_t q : primeFactors(order))
-            QVERIFY2(powMod(order / q, p, n) != 1, qPrintable(QString("n = %1, q = %2").arg(n).arg(q)));
+            QVERIFY2(powMod(order / q, p, n) != 1,
+                     qPrintable(QString("n = %1, q = %2").arg(n).arg(q)));
     }
 }
 
@@ -169,7 +171,8 @@ void TstExcitation::chirpFollowsItsFormula() {
     QCOMPARE(s.u.size(), std::size_t(400));
     for (std::size_t k = 0; k < s.u.size(); k += 37) {
         const double t = double(k) * ts;
-        const double expected = 2.0 * std::sin(2.0 * std::numbers::pi * (0.5 * t + 4.5 * t * t / (2.0 * T)));
+        const double expected =
+            2.0 * std::sin(2.0 * std::numbers::pi * (0.5 * t + 4.5 * t * t / (2.0 * T)));
         XYT_COMPARE_NEAR(s.u[k], expected, 0.0, 1e-12); // same formula, other association
     }
 }
@@ -182,23 +185,31 @@ void TstExcitation::limitsNameTheField() {
              QString("amplitude: |offset| + amplitude = 3 V exceeds umax = 2.5 V"));
     w.offsetVolts = 0.0;
     w.periodSeconds = 0.01;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::squareWave(w, timing(0.01, 1.0)); }), QString("period"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::squareWave(w, timing(0.0, 1.0)); }), QString("ts"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::squareWave(w, timing(1e-9, 1e3)); }), QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::squareWave(w, timing(0.01, 1.0)); }),
+             QString("period"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::squareWave(w, timing(0.0, 1.0)); }),
+             QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::squareWave(w, timing(1e-9, 1e3)); }),
+             QString("duration"));
     xyt::Prbs p;
     p.registerLength = 32;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::prbs(p, timing(0.01, 1.0)); }), QString("register"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::prbs(p, timing(0.01, 1.0)); }),
+             QString("register"));
     p.registerLength = 1;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::prbs(p, timing(0.01, 1.0)); }), QString("register"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::prbs(p, timing(0.01, 1.0)); }),
+             QString("register"));
     p.registerLength = 8;
     p.clockSamples = 0;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::prbs(p, timing(0.01, 1.0)); }), QString("clock"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::prbs(p, timing(0.01, 1.0)); }),
+             QString("clock"));
     xyt::Chirp c;
     c.f1Hz = 60.0; // above 1 / (2 x 0.01) = 50 Hz
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::chirp(c, timing(0.01, 1.0)); }), QString("f1"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::chirp(c, timing(0.01, 1.0)); }),
+             QString("f1"));
     c.f1Hz = 1.0;
     c.amplitudeVolts = -1.0;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::chirp(c, timing(0.01, 1.0)); }), QString("amplitude"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::chirp(c, timing(0.01, 1.0)); }),
+             QString("amplitude"));
 }
 
 void TstExcitation::filesReadBackExactly_data() {
@@ -240,7 +251,8 @@ void TstExcitation::writeRefusesOtherExtensions() {
     QTemporaryDir dir;
     xyt::SquareWave w;
     const xyt::ExcitationSignal s = xyt::squareWave(w, timing(0.01, 1.0));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::writeExcitation(dir.filePath("u.txt").toStdString(), s); }),
+    QCOMPARE(xyt::test::invalidInputField(
+                 [&] { xyt::writeExcitation(dir.filePath("u.txt").toStdString(), s); }),
              QString("output"));
     QVERIFY(!QFile::exists(dir.filePath("u.txt")));
 }

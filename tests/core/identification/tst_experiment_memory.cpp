@@ -64,7 +64,8 @@ ChildResult inChild(const std::function<void()>& body) {
             message = e.what();
         }
         ::getrusage(RUSAGE_SELF, &after);
-        const long long growth = (static_cast<long long>(after.ru_maxrss) - before.ru_maxrss) * 1024;
+        const long long growth =
+            (static_cast<long long>(after.ru_maxrss) - before.ru_maxrss) * 1024;
         [[maybe_unused]] auto w1 = ::write(fds[1], &growth, sizeof growth);
         [[maybe_unused]] auto w2 = ::write(fds[1], message.data(), message.size());
         ::_exit(0);
@@ -111,7 +112,9 @@ std::string numbers(std::size_t k, char sep, bool withTime) {
     return line;
 }
 
-double fileBytes(const QString& path) { return static_cast<double>(QFileInfo(path).size()); }
+double fileBytes(const QString& path) {
+    return static_cast<double>(QFileInfo(path).size());
+}
 
 double bound(double fileBytes, double cells, double rows) {
     return fileBytes + 8.0 * cells + 8.0 * rows + kFixedOverhead;
@@ -132,21 +135,25 @@ private slots:
 private:
     /// Reads @p path keeping @p columns in a child: @p keptColumns columns of @p rows rows, the
     /// last from line @p lastLine, within bound() of the file's size and those cells.
-    void readWithinTheBound(const QString& path, const std::vector<std::string>& columns, std::size_t keptColumns,
-                            std::size_t rows, std::size_t lastLine);
+    void readWithinTheBound(const QString& path, const std::vector<std::string>& columns,
+                            std::size_t keptColumns, std::size_t rows, std::size_t lastLine);
     QTemporaryDir dir_;
 };
 
-void TstExperimentMemory::readWithinTheBound(const QString& path, const std::vector<std::string>& columns,
-                                             std::size_t keptColumns, std::size_t rows, std::size_t lastLine) {
+void TstExperimentMemory::readWithinTheBound(const QString& path,
+                                             const std::vector<std::string>& columns,
+                                             std::size_t keptColumns, std::size_t rows,
+                                             std::size_t lastLine) {
     const ChildResult r = inChild([&] {
         const xyt::ExperimentTable t = xyt::readExperimentTable(path.toStdString(), 1, columns);
-        if (t.columns.size() != keptColumns || t.columns.back().size() != rows || t.rowNumbers.back() != lastLine)
+        if (t.columns.size() != keptColumns || t.columns.back().size() != rows ||
+            t.rowNumbers.back() != lastLine)
             throw std::runtime_error("not the table written");
     });
     QCOMPARE(QString::fromStdString(r.message), QString());
     const double limit = bound(fileBytes(path), double(keptColumns * rows), double(rows));
-    const QString figures = QString("peak growth %1 MB, bound %2 MB").arg(r.peakGrowth >> 20).arg(limit / (1 << 20));
+    const QString figures =
+        QString("peak growth %1 MB, bound %2 MB").arg(r.peakGrowth >> 20).arg(limit / (1 << 20));
     qInfo("%s", qPrintable(figures));
     QVERIFY2(r.peakGrowth > 0 && double(r.peakGrowth) <= limit, qPrintable(figures));
 }
@@ -161,7 +168,8 @@ void TstExperimentMemory::initTestCase() {
 
 void TstExperimentMemory::csvTakesTheFileAndEightBytesACell() {
     const QString path = dir_.filePath("run.csv");
-    const std::size_t rows = writeFile(path, "t,u,y\n", [](std::size_t k) { return numbers(k, ',', true); });
+    const std::size_t rows =
+        writeFile(path, "t,u,y\n", [](std::size_t k) { return numbers(k, ',', true); });
     QVERIFY(rows > 0);
     readWithinTheBound(path, {}, 3, rows, rows + 1);
 }
@@ -182,9 +190,11 @@ void TstExperimentMemory::blankLinesTakeNoMemory() {
 
 void TstExperimentMemory::lvmTakesTheFileAndEightBytesACell() {
     const QString path = dir_.filePath("run.lvm");
-    const std::string head = "LabVIEW Measurement\t\nSeparator\tTab\nX_Columns\tNo\n***End_of_Header***\t\n"
-                             "Channels\t2\nDelta_X\t0.001\t0.001\n***End_of_Header***\nX_Value\tu\ty\tComment\n";
-    const std::size_t rows = writeFile(path, head, [](std::size_t k) { return numbers(k, '\t', false); });
+    const std::string head =
+        "LabVIEW Measurement\t\nSeparator\tTab\nX_Columns\tNo\n***End_of_Header***\t\n"
+        "Channels\t2\nDelta_X\t0.001\t0.001\n***End_of_Header***\nX_Value\tu\ty\tComment\n";
+    const std::size_t rows =
+        writeFile(path, head, [](std::size_t k) { return numbers(k, '\t', false); });
     QVERIFY(rows > 0);
     readWithinTheBound(path, {}, 2, rows, rows + 8);
 }
@@ -192,7 +202,8 @@ void TstExperimentMemory::lvmTakesTheFileAndEightBytesACell() {
 void TstExperimentMemory::chosenColumnsOnlyAreKept() {
     // Reading two of three columns: 8 bytes a kept cell (the identify command reads so).
     const QString path = dir_.filePath("chosen.csv");
-    const std::size_t rows = writeFile(path, "t,u,y\n", [](std::size_t k) { return numbers(k, ',', true); });
+    const std::size_t rows =
+        writeFile(path, "t,u,y\n", [](std::size_t k) { return numbers(k, ',', true); });
     QVERIFY(rows > 0);
     readWithinTheBound(path, {"u", "y"}, 2, rows, rows + 1);
 }
@@ -202,7 +213,8 @@ void TstExperimentMemory::lackOfMemoryIsSaidNamingTheFile() {
     // child's address space is limited to what it uses now plus the text and 16 MB, so the
     // text is read but the columns cannot be: the reader must say so, not throw bad_alloc.
     const QString path = dir_.filePath("small_rows.csv");
-    const std::size_t rows = writeFile(path, "t,u,y\n", [](std::size_t) { return std::string("1,2,3\n"); });
+    const std::size_t rows =
+        writeFile(path, "t,u,y\n", [](std::size_t) { return std::string("1,2,3\n"); });
     QVERIFY(rows > 0);
     const ChildResult r = inChild([&] {
         long pages = 0;
@@ -211,8 +223,9 @@ void TstExperimentMemory::lackOfMemoryIsSaidNamingTheFile() {
                 pages = 0;
             std::fclose(statm);
         }
-        const rlim_t limit = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) +
-                             kFileBytes + (16u << 20);
+        const rlim_t limit =
+            static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) + kFileBytes +
+            (16u << 20);
         const rlimit rl{limit, limit};
         if (pages == 0 || ::setrlimit(RLIMIT_AS, &rl) != 0)
             throw std::runtime_error("cannot limit the address space");
@@ -221,7 +234,8 @@ void TstExperimentMemory::lackOfMemoryIsSaidNamingTheFile() {
     // The amount: rows x (3 columns + the line numbers) x 8 bytes, in MB rounded up.
     const std::size_t megabytes = (rows * 32 + (1u << 20) - 1) >> 20;
     QCOMPARE(QString::fromStdString(r.message),
-             QString("%1: the file needs more memory than is available (%2 MB for %3 rows of 3 columns, 8 bytes a "
+             QString("%1: the file needs more memory than is available (%2 MB for %3 rows of 3 "
+                     "columns, 8 bytes a "
                      "number)")
                  .arg(path)
                  .arg(megabytes)

@@ -29,7 +29,8 @@ namespace {
 
 /// Writes double vectors (name, values, as a column when @p column) with libmatio.
 bool writeMat(const QString& path, mat_ft version, matio_compression compression,
-              const std::vector<std::pair<std::string, std::vector<double>>>& vars, bool column = true) {
+              const std::vector<std::pair<std::string, std::vector<double>>>& vars,
+              bool column = true) {
     mat_t* m = Mat_CreateVer(path.toLocal8Bit().constData(), nullptr, version);
     if (!m)
         return false;
@@ -37,14 +38,14 @@ bool writeMat(const QString& path, mat_ft version, matio_compression compression
     for (const auto& [name, values] : vars) {
         std::vector<double> data = values;
         size_t dims[2] = {column ? data.size() : 1, column ? 1 : data.size()};
-        matvar_t* v = Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, data.data(), 0);
+        matvar_t* v =
+            Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, data.data(), 0);
         ok = ok && v && Mat_VarWrite(m, v, compression) == 0;
         Mat_VarFree(v);
     }
     Mat_Close(m);
     return ok;
 }
-
 
 const std::vector<double> kU = {0.0, 2.5, 2.5, -1.25, 0.5};
 const std::vector<double> kY = {0.0, 0.125, 0.5, 1.125, 2.0};
@@ -61,7 +62,8 @@ bool writeWithU(const QString& path, matvar_t* u) {
     std::vector<double> y = kY;
     size_t dims[2] = {y.size(), 1};
     matvar_t* yv = Mat_VarCreate("y", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, y.data(), 0);
-    const bool ok = Mat_VarWrite(m, u, MAT_COMPRESSION_NONE) == 0 && yv && Mat_VarWrite(m, yv, MAT_COMPRESSION_NONE) == 0;
+    const bool ok = Mat_VarWrite(m, u, MAT_COMPRESSION_NONE) == 0 && yv &&
+                    Mat_VarWrite(m, yv, MAT_COMPRESSION_NONE) == 0;
     Mat_VarFree(u);
     Mat_VarFree(yv);
     Mat_Close(m);
@@ -73,7 +75,9 @@ bool writeWithU(const QString& path, matvar_t* u) {
 bool writeCompressedZeros(mat_t* m, const char* name, std::size_t count) {
     void* zeros = std::calloc(count, sizeof(double));
     size_t dims[2] = {count, 1};
-    matvar_t* v = zeros ? Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, zeros, MAT_F_DONT_COPY_DATA) : nullptr;
+    matvar_t* v = zeros ? Mat_VarCreate(name, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, zeros,
+                                        MAT_F_DONT_COPY_DATA)
+                        : nullptr;
     const bool ok = v && Mat_VarWrite(m, v, MAT_COMPRESSION_ZLIB) == 0;
     if (v)
         v->data = nullptr; // ours, freed below
@@ -91,8 +95,9 @@ matvar_t* unusableU(const QString& kind) {
     size_t column[2] = {4, 1};
     if (kind == "cell") {
         size_t one[2] = {1, 1};
-        matvar_t* cells[2] = {Mat_VarCreate(nullptr, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, values, 0),
-                              Mat_VarCreate(nullptr, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, values + 1, 0)};
+        matvar_t* cells[2] = {
+            Mat_VarCreate(nullptr, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, values, 0),
+            Mat_VarCreate(nullptr, MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, values + 1, 0)};
         size_t dims[2] = {2, 1};
         return Mat_VarCreate("u", MAT_C_CELL, MAT_T_CELL, 2, dims, cells, 0);
     }
@@ -100,7 +105,8 @@ matvar_t* unusableU(const QString& kind) {
         size_t one[2] = {1, 1};
         const char* fields[] = {"a"};
         matvar_t* s = Mat_VarCreateStruct("u", 2, one, fields, 1);
-        Mat_VarSetStructFieldByName(s, "a", 0, Mat_VarCreate("a", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, column, values, 0));
+        Mat_VarSetStructFieldByName(
+            s, "a", 0, Mat_VarCreate("a", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, column, values, 0));
         return s;
     }
     if (kind == "char") {
@@ -143,8 +149,9 @@ matvar_t* unusableU(const QString& kind) {
 
 /// What a read did in a child process, and the memory it took.
 struct ChildRead {
-    QString outcome;              ///< "ok: ...", "refused: <message>", "out of memory", "crashed"
-    double peakGrowthBytes = 0.0; ///< the child's peak resident memory above the parent's at the fork
+    QString outcome; ///< "ok: ...", "refused: <message>", "out of memory", "crashed"
+    double peakGrowthBytes =
+        0.0; ///< the child's peak resident memory above the parent's at the fork
 };
 
 /// Field @p index of /proc/self/statm (0: address space, 1: resident), in bytes.
@@ -215,7 +222,8 @@ ChildRead readInChild(const std::function<QString()>& read, [[maybe_unused]] dou
 QString columnsText(const xyt::ExperimentTable& t) {
     QString text;
     for (std::size_t c = 0; c < t.names.size(); ++c)
-        text += (c ? " " : "") + QString::fromStdString(t.names[c]) + ":" + QString::number(t.columns[c].size());
+        text += (c ? " " : "") + QString::fromStdString(t.names[c]) + ":" +
+                QString::number(t.columns[c].size());
     return text;
 }
 
@@ -271,9 +279,12 @@ void TstMatReader::readsWhatLibmatioWrote_data() {
     QTest::addColumn<QString>("expectedVersion");
     QTest::newRow("v4") << int(MAT_FT_MAT4) << int(MAT_COMPRESSION_NONE) << true << "v4";
     QTest::newRow("v5") << int(MAT_FT_MAT5) << int(MAT_COMPRESSION_NONE) << true << "v5";
-    QTest::newRow("v5 row vectors") << int(MAT_FT_MAT5) << int(MAT_COMPRESSION_NONE) << false << "v5";
-    QTest::newRow("v5 compressed (-v7)") << int(MAT_FT_MAT5) << int(MAT_COMPRESSION_ZLIB) << true << "v5";
-    QTest::newRow("v7.3 (HDF5)") << int(MAT_FT_MAT73) << int(MAT_COMPRESSION_NONE) << true << "v7.3";
+    QTest::newRow("v5 row vectors")
+        << int(MAT_FT_MAT5) << int(MAT_COMPRESSION_NONE) << false << "v5";
+    QTest::newRow("v5 compressed (-v7)")
+        << int(MAT_FT_MAT5) << int(MAT_COMPRESSION_ZLIB) << true << "v5";
+    QTest::newRow("v7.3 (HDF5)") << int(MAT_FT_MAT73) << int(MAT_COMPRESSION_NONE) << true
+                                 << "v7.3";
 }
 
 void TstMatReader::readsWhatLibmatioWrote() {
@@ -302,9 +313,11 @@ void TstMatReader::readsWhatLibmatioWrote() {
     // and v5; HDF5 lists v7.3 variables by name).
     QCOMPARE(xyt::readMat(path.toStdString()).names.size(), std::size_t(3));
     // An unknown name lists the usable ones.
-    const QString message = xyt::test::invalidInputMessage([&] { xyt::readMat(path.toStdString(), {"pos"}); });
+    const QString message =
+        xyt::test::invalidInputMessage([&] { xyt::readMat(path.toStdString(), {"pos"}); });
     QVERIFY2(message.contains("has no variable 'pos'; the real numeric vectors are: ") &&
-                             message.contains("u") && message.contains("y") && message.contains("t"), qPrintable(message));
+                 message.contains("u") && message.contains("y") && message.contains("t"),
+             qPrintable(message));
 }
 
 void TstMatReader::readsTheOctaveFile() {
@@ -316,7 +329,8 @@ void TstMatReader::readsTheOctaveFile() {
         (v.usable ? usable : unusable).push_back(v.name);
     QCOMPARE(usable, (std::vector<std::string>{"t", "u", "y", "counts", "ysingle", "withnan"}));
     QCOMPARE(unusable, (std::vector<std::string>{"cplx", "M", "name", "flag"}));
-    const xyt::ExperimentTable table = xyt::readMat(path, {"t", "u", "y", "counts", "ysingle", "withnan"});
+    const xyt::ExperimentTable table =
+        xyt::readMat(path, {"t", "u", "y", "counts", "ysingle", "withnan"});
     for (std::size_t k = 0; k < 10; ++k) {
         QCOMPARE(table.columns[0][k], 0.25 * double(k));
         QCOMPARE(table.columns[1][k], k == 0 ? 0.0 : 2.5);
@@ -329,7 +343,8 @@ void TstMatReader::readsTheOctaveFile() {
     // The NaN is the column's problem, named by element.
     QVERIFY(table.firstProblem[5]);
     QCOMPARE(table.firstProblem[5]->row, std::size_t(1));
-    QCOMPARE(QString::fromStdString(table.cellField(5, 1)), QString::fromStdString(path + ": element 2 of withnan"));
+    QCOMPARE(QString::fromStdString(table.cellField(5, 1)),
+             QString::fromStdString(path + ": element 2 of withnan"));
 }
 
 void TstMatReader::refusesWhatIsNotAVector() {
@@ -341,9 +356,11 @@ void TstMatReader::refusesWhatIsNotAVector() {
         {"flag", "variable 'flag' is logical (true/false)"},
     };
     for (const auto& [variable, expected] : cases) {
-        const std::string name = variable;  // a lambda may not capture a structured binding (clang 14)
+        const std::string name =
+            variable; // a lambda may not capture a structured binding (clang 14)
         const QString message = xyt::test::invalidInputMessage([&] { xyt::readMat(path, {name}); });
-        QVERIFY2(message.startsWith(QString::fromStdString(path) + ": " + expected), qPrintable(message));
+        QVERIFY2(message.startsWith(QString::fromStdString(path) + ": " + expected),
+                 qPrintable(message));
     }
 }
 
@@ -358,10 +375,12 @@ void TstMatReader::refusesFilesThatAreNotMat_data() {
     header[125] = 0x01;
     header[126] = 'I';
     header[127] = 'M';
-    QTest::newRow("v5 header, no variable") << header << "is not a MAT file: it holds a MATLAB header and no variable";
+    QTest::newRow("v5 header, no variable")
+        << header << "is not a MAT file: it holds a MATLAB header and no variable";
     QByteArray badVersion = header;
     badVersion[125] = 0x07;
-    QTest::newRow("unknown version") << badVersion << "is not a MAT file: its MATLAB header states version";
+    QTest::newRow("unknown version")
+        << badVersion << "is not a MAT file: its MATLAB header states version";
     QByteArray junk = header + QByteArray(64, '\xff');
     QTest::newRow("v5 header, junk element") << junk << "";
 }
@@ -397,15 +416,24 @@ void TstMatReader::refusesFilesThatAreNotMat() {
 void TstMatReader::namesWhyAVariableCannotBeUsed_data() {
     QTest::addColumn<QString>("kind");
     QTest::addColumn<QString>("why");
-    QTest::newRow("cell") << "cell" << "is a cell array";
-    QTest::newRow("struct") << "struct" << "is a struct";
-    QTest::newRow("char") << "char" << "is text (a char array)";
-    QTest::newRow("complex") << "complex" << "is complex";
-    QTest::newRow("3-D") << "3-D" << "is a 2 x 2 x 2 array (3 dimensions)";
-    QTest::newRow("sparse") << "sparse" << "is a sparse matrix";
-    QTest::newRow("logical") << "logical" << "is logical (true/false)";
-    QTest::newRow("matrix") << "matrix" << "is a 4 x 2 matrix, not a vector";
-    QTest::newRow("empty") << "empty" << "is empty";
+    QTest::newRow("cell") << "cell"
+                          << "is a cell array";
+    QTest::newRow("struct") << "struct"
+                            << "is a struct";
+    QTest::newRow("char") << "char"
+                          << "is text (a char array)";
+    QTest::newRow("complex") << "complex"
+                             << "is complex";
+    QTest::newRow("3-D") << "3-D"
+                         << "is a 2 x 2 x 2 array (3 dimensions)";
+    QTest::newRow("sparse") << "sparse"
+                            << "is a sparse matrix";
+    QTest::newRow("logical") << "logical"
+                             << "is logical (true/false)";
+    QTest::newRow("matrix") << "matrix"
+                            << "is a 4 x 2 matrix, not a vector";
+    QTest::newRow("empty") << "empty"
+                           << "is empty";
 }
 
 void TstMatReader::namesWhyAVariableCannotBeUsed() {
@@ -420,8 +448,9 @@ void TstMatReader::namesWhyAVariableCannotBeUsed() {
     QVERIFY(!info.variables[0].usable);
     QCOMPARE(QString::fromStdString(info.variables[0].whyNot), why);
     // As the CLI asks (identify --input-col u --output-col y).
-    const QString message = xyt::test::invalidInputMessage(
-        [&] { xyt::readExperimentTable(path.toStdString(), 1, {"u", "y"}); });
+    const QString message = xyt::test::invalidInputMessage([&] {
+        xyt::readExperimentTable(path.toStdString(), 1, {"u", "y"});
+    });
     QCOMPARE(message, path + ": variable 'u' " + why +
                           "; a vector of real numbers is needed (the real numeric vectors are: y)");
 }
@@ -472,18 +501,23 @@ void TstMatReader::readsOnlyWhatIsAskedForInBoundedMemory_data() {
     const QString v73 = XYT_TEST_DATA_DIR "/mat73_unwritten_dataset.mat";
     QTest::newRow("v7.3, u and y") << v73 << QStringList{"u", "y"} << "ok: u:300 y:300";
     QTest::newRow("v7.3, every usable one") << v73 << QStringList{}
-        << "ok: u:300 y:300; variable 'big' (400000000 x 1 elements) is not read: more than the 16777216 "
-           "elements one variable may hold";
-    QTest::newRow("v7.3, the big one") << v73 << QStringList{"big"}
-        << "refused: " + v73 + ": variable 'big' claims 400000000 x 1 elements, more than the 16777216 one "
-           "variable may hold";
+                                            << "ok: u:300 y:300; variable 'big' (400000000 x 1 "
+                                               "elements) is not read: more than the 16777216 "
+                                               "elements one variable may hold";
+    QTest::newRow("v7.3, the big one")
+        << v73 << QStringList{"big"}
+        << "refused: " + v73 +
+               ": variable 'big' claims 400000000 x 1 elements, more than the 16777216 one "
+               "variable may hold";
     QTest::newRow("v7, u and y") << "zeros" << QStringList{"u", "y"} << "ok: u:5 y:5";
-    QTest::newRow("v7, every usable one") << "zeros" << QStringList{}
+    QTest::newRow("v7, every usable one")
+        << "zeros" << QStringList{}
         << "ok: u:5 y:5; variable 'z' (50000000 x 1 elements) is not read: more than the 16777216 "
            "elements one variable may hold";
     QTest::newRow("v7, the big one") << "zeros" << QStringList{"y", "z"}
-        << "refused: zeros: variable 'z' claims 50000000 x 1 elements, more than the 16777216 one variable "
-           "may hold";
+                                     << "refused: zeros: variable 'z' claims 50000000 x 1 "
+                                        "elements, more than the 16777216 one variable "
+                                        "may hold";
 }
 
 void TstMatReader::readsOnlyWhatIsAskedForInBoundedMemory() {
@@ -511,7 +545,8 @@ void TstMatReader::readsOnlyWhatIsAskedForInBoundedMemory() {
         },
         1024.0 * 1024.0 * 1024.0);
     QCOMPARE(r.outcome, expected);
-    QVERIFY2(r.peakGrowthBytes < 64e6, qPrintable(QString::number(r.peakGrowthBytes / 1e6) + " MB"));
+    QVERIFY2(r.peakGrowthBytes < 64e6,
+             qPrintable(QString::number(r.peakGrowthBytes / 1e6) + " MB"));
 }
 
 // The variables asked for together: four of exactly kMaxMatVariableElements fill
@@ -530,11 +565,17 @@ void TstMatReader::boundsWhatTheVariablesAskedForHoldTogether() {
     Mat_Close(m);
     QVERIFY(ok);
     const std::string p = path.toStdString();
-    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readMat(p, {"a", "b", "c", "d", "one"}); }),
-             path + ": the variables asked for, up to 'one', hold 67108865 elements, more than the 67108864 one "
+    QCOMPARE(xyt::test::invalidInputMessage([&] {
+                 xyt::readMat(p, {"a", "b", "c", "d", "one"});
+             }),
+             path + ": the variables asked for, up to 'one', hold 67108865 elements, more than the "
+                    "67108864 one "
                     "read may hold");
-    QCOMPARE(xyt::test::invalidInputMessage([&] { xyt::readMat(p, {"one", "e"}); }),
-             path + ": variable 'e' claims 16777217 x 1 elements, more than the 16777216 one variable may hold");
+    QCOMPARE(xyt::test::invalidInputMessage([&] {
+                 xyt::readMat(p, {"one", "e"});
+             }),
+             path + ": variable 'e' claims 16777217 x 1 elements, more than the 16777216 one "
+                    "variable may hold");
 }
 
 QTEST_APPLESS_MAIN(TstMatReader)

@@ -44,8 +44,12 @@ IoData data(std::size_t n, double sigma, std::uint64_t seed, bool colouredNoise)
     return ioData(u, y, kTs);
 }
 
-std::vector<double> oeTruth() { return {kB[1], kB[2], kF[1], kF[2]}; }
-std::vector<double> bjTruth() { return {kB[1], kB[2], kC[1], kD[1], kF[1], kF[2]}; }
+std::vector<double> oeTruth() {
+    return {kB[1], kB[2], kF[1], kF[2]};
+}
+std::vector<double> bjTruth() {
+    return {kB[1], kB[2], kC[1], kD[1], kF[1], kF[2]};
+}
 
 void requireWithinThreeSigma(const PemResult& r, const std::vector<double>& truth) {
     QCOMPARE(r.status, EstimationStatus::Converged);
@@ -65,12 +69,15 @@ template <typename Estimate>
 void requireSpreadMatchesReportedSd(Estimate estimate, const std::vector<double>& truth) {
     std::vector<std::vector<double>> est, sd;
     bool allConverged = true;
-    collectOverSeeds(200, truth.size(), [&](std::size_t seed, std::vector<double>& p, std::vector<double>& s) {
-        const PemResult r = estimate(seed);
-        allConverged = allConverged && r.status == EstimationStatus::Converged;
-        p = r.parameters;
-        s = r.standardDeviations;
-    }, est, sd);
+    collectOverSeeds(
+        200, truth.size(),
+        [&](std::size_t seed, std::vector<double>& p, std::vector<double>& s) {
+            const PemResult r = estimate(seed);
+            allConverged = allConverged && r.status == EstimationStatus::Converged;
+            p = r.parameters;
+            s = r.standardDeviations;
+        },
+        est, sd);
     QVERIFY(allConverged);
     const QString mismatch = spreadMismatch(est, sd, truth);
     QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
@@ -101,13 +108,13 @@ private slots:
     // (the residuals are zero for any C, D), which the result reports as a warning.
     void noiseFreeBjRecoversBAndF() {
         const PemResult r = estimateBj(data(300, 0.0, 2, false), BjOrders{2, 1, 1, 2, 1});
-        QVERIFY2(r.status == EstimationStatus::Converged, (estimationStatusName(r.status) + ": " + r.message).c_str());
+        QVERIFY2(r.status == EstimationStatus::Converged,
+                 (estimationStatusName(r.status) + ": " + r.message).c_str());
         for (std::size_t i = 1; i < 3; ++i) {
             XYT_COMPARE_NEAR(r.model.b[i], kB[i], 1e-9, 0.0);
             XYT_COMPARE_NEAR(r.model.f[i], kF[i], 1e-9, 0.0);
         }
-        QCOMPARE(r.parameterNames,
-                 (std::vector<std::string>{"b1", "b2", "c1", "d1", "f1", "f2"}));
+        QCOMPARE(r.parameterNames, (std::vector<std::string>{"b1", "b2", "c1", "d1", "f1", "f2"}));
         QVERIFY(r.loss < 1e-20);
     }
 
@@ -142,13 +149,15 @@ private slots:
                     (ep[t] - em[t]) / (plusTheta[j] - minusTheta[j]);
         }
         const Eigen::MatrixXd cov =
-            r.noiseVariance * (jac.transpose() * jac).ldlt().solve(
-                                  Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(np),
-                                                            static_cast<Eigen::Index>(np)));
+            r.noiseVariance * (jac.transpose() * jac)
+                                  .ldlt()
+                                  .solve(Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(np),
+                                                                   static_cast<Eigen::Index>(np)));
         for (std::size_t j = 0; j < np; ++j)
-            XYT_COMPARE_NEAR(r.standardDeviations[j],
-                             std::sqrt(cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j))),
-                             1e-5, 0.0);
+            XYT_COMPARE_NEAR(
+                r.standardDeviations[j],
+                std::sqrt(cov(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(j))), 1e-5,
+                0.0);
         // The residuals are the one-step prediction errors of the estimated model.
         const std::vector<double> e = predictionErrors(r.model, d);
         for (std::size_t t = 0; t < e.size(); ++t)
@@ -168,14 +177,18 @@ private slots:
     // Over 200 seeds the sample SD agrees with the mean reported SD within 25 %
     // (spreadMismatch in tests/support/identification_data.h).
     void oeSpreadOverSeedsMatchesReportedSd() {
-        requireSpreadMatchesReportedSd([](std::size_t seed) {
-            return estimateOe(data(400, 0.3, 1000 + seed, false), OeOrders{2, 2, 1});
-        }, oeTruth());
+        requireSpreadMatchesReportedSd(
+            [](std::size_t seed) {
+                return estimateOe(data(400, 0.3, 1000 + seed, false), OeOrders{2, 2, 1});
+            },
+            oeTruth());
     }
     void bjSpreadOverSeedsMatchesReportedSd() {
-        requireSpreadMatchesReportedSd([](std::size_t seed) {
-            return estimateBj(data(400, 0.3, 2000 + seed, true), BjOrders{2, 1, 1, 2, 1});
-        }, bjTruth());
+        requireSpreadMatchesReportedSd(
+            [](std::size_t seed) {
+                return estimateBj(data(400, 0.3, 2000 + seed, true), BjOrders{2, 1, 1, 2, 1});
+            },
+            bjTruth());
     }
 
     // The textbook case (Ljung Sec. 8.3, Soderstrom & Stoica Example 2.3): with white noise on
@@ -187,7 +200,9 @@ private slots:
         const ArxResult arx = estimateArx(d, ArxOrders{2, 2, 1});
         QCOMPARE(arx.status, EstimationStatus::Converged);
         QVERIFY2(std::abs(arx.parameters[0] - kF[1]) > 3.0 * arx.standardDeviations[0],
-                 qPrintable(QStringLiteral("ARX a1 %1 +- %2").arg(arx.parameters[0]).arg(arx.standardDeviations[0])));
+                 qPrintable(QStringLiteral("ARX a1 %1 +- %2")
+                                .arg(arx.parameters[0])
+                                .arg(arx.standardDeviations[0])));
         QVERIFY(std::abs(arx.parameters[1] - kF[2]) > 3.0 * arx.standardDeviations[1]);
         requireWithinThreeSigma(estimateOe(d, OeOrders{2, 2, 1}), oeTruth());
         const PemResult bj = estimateBj(d, BjOrders{2, 0, 1, 2, 1});
@@ -251,17 +266,21 @@ private slots:
             QCOMPARE(e.field(), std::string("data"));
             QVERIFY(std::string(e.what()).find("OE(2,2,1)") != std::string::npos);
         }
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, estimateOe(data(100, 0.1, 9, false), OeOrders{0, 2, 1}));
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, estimateBj(data(100, 0.1, 9, false), BjOrders{2, -1, 1, 2, 1}));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 estimateOe(data(100, 0.1, 9, false), OeOrders{0, 2, 1}));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 estimateBj(data(100, 0.1, 9, false), BjOrders{2, -1, 1, 2, 1}));
         PemOptions o;
         PolynomialModel wrong;
         wrong.b = {0.0, 1.0};
         wrong.f = {1.0, -1.5, 0.7};
         o.initial = wrong;
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, estimateOe(data(100, 0.1, 9, false), OeOrders{2, 2, 1}, o));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 estimateOe(data(100, 0.1, 9, false), OeOrders{2, 2, 1}, o));
         o = PemOptions{};
         o.search.maxIterations = 0;
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, estimateOe(data(100, 0.1, 9, false), OeOrders{2, 2, 1}, o));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 estimateOe(data(100, 0.1, 9, false), OeOrders{2, 2, 1}, o));
     }
 
     // A constant input cannot excite nb = 2: the ARX start reports it, the search does not run.

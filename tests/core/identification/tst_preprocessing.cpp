@@ -30,7 +30,9 @@ xyt::IoData record(std::size_t n, double ts, double (*u)(double), double (*y)(do
     return d;
 }
 
-double eps2() { return std::pow(10.0, xyt::kDecimationRippleDb / 10.0) - 1.0; }
+double eps2() {
+    return std::pow(10.0, xyt::kDecimationRippleDb / 10.0) - 1.0;
+}
 
 /// Closed-form |H(e^{jw})|^2 of the designed filter (unit DC gain).
 double designMagnitudeSquared(double w, int factor) {
@@ -64,7 +66,8 @@ private slots:
 };
 
 void TstPreprocessing::timeRangeKeepsTheSamplesInside() {
-    xyt::IoData d = record(100, 0.01, [](double t) { return t; }, [](double t) { return 2.0 * t; });
+    xyt::IoData d = record(
+        100, 0.01, [](double t) { return t; }, [](double t) { return 2.0 * t; });
     d.startSeconds = 1.0; // instants 1.00 .. 1.99
     const xyt::IoData r = xyt::selectTimeRange(d, 1.1, 1.2);
     // Samples k = 10 .. 20 (the bounds are instants, counted in): 11 samples.
@@ -74,8 +77,10 @@ void TstPreprocessing::timeRangeKeepsTheSamplesInside() {
     XYT_COMPARE_NEAR(r.startSeconds, 1.1, 1e-15, 0.0); // 1 + 10 x 0.01 in one rounding
     // A range beyond the ends is cut to the record; one outside it is refused.
     QCOMPARE(xyt::selectTimeRange(d, 0.0, 5.0).size(), std::size_t(100));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::selectTimeRange(d, 3.0, 4.0); }), QString("range"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::selectTimeRange(d, 1.5, 1.2); }), QString("t1"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::selectTimeRange(d, 3.0, 4.0); }),
+             QString("range"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::selectTimeRange(d, 1.5, 1.2); }),
+             QString("t1"));
 }
 
 void TstPreprocessing::meansAndTrendsAreRemoved() {
@@ -88,7 +93,7 @@ void TstPreprocessing::meansAndTrendsAreRemoved() {
         d.y.push_back(-2.0 - 0.25 * k);
     }
     const xyt::Detrended m = xyt::removeMeans(d);
-    QCOMPARE(m.uOffset, 3.0);                 // mean of 5 x 4 and 5 x 2: exact
+    QCOMPARE(m.uOffset, 3.0);                        // mean of 5 x 4 and 5 x 2: exact
     XYT_COMPARE_NEAR(m.yOffset, -3.125, 1e-15, 0.0); // -2 - 0.25 x 4.5
     XYT_COMPARE_NEAR(m.data.u[0], 1.0, 1e-15, 0.0);
     const xyt::Detrended t = xyt::removeTrends(d);
@@ -118,7 +123,8 @@ void TstPreprocessing::filterMatchesTheChebyshevClosedForm() {
         // Products of 4 sections of well-conditioned biquads: 1e-9 relative (stopband values
         // down to 1e-10 are computed from pole positions near z = 1; for factor 50 the poles sit
         // within 0.05 of it, which costs about 6 digits of the stopband value).
-        XYT_COMPARE_NEAR(magnitudeSquared(sections, w), expected, factor >= 50 ? 1e-5 : 1e-9, 1e-14);
+        XYT_COMPARE_NEAR(magnitudeSquared(sections, w), expected, factor >= 50 ? 1e-5 : 1e-9,
+                         1e-14);
     }
     XYT_COMPARE_NEAR(magnitudeSquared(sections, 0.0), 1.0, 1e-12, 0.0);
 }
@@ -164,7 +170,8 @@ void TstPreprocessing::decimateKeepsPassbandAndRejectsAliases() {
 }
 
 void TstPreprocessing::tenMillisecondsBySevenIsSeventy() {
-    xyt::IoData d = record(700, 0.01, [](double) { return 1.0; }, [](double t) { return 5.0 + 0.0 * t; });
+    xyt::IoData d = record(
+        700, 0.01, [](double) { return 1.0; }, [](double t) { return 5.0 + 0.0 * t; });
     d.startSeconds = 2.0;
     const xyt::IoData out = xyt::decimate(d, 7);
     XYT_COMPARE_NEAR(out.tsSeconds, 0.07, 1e-15, 0.0); // 7 x 0.01 in one rounding
@@ -178,33 +185,39 @@ void TstPreprocessing::tenMillisecondsBySevenIsSeventy() {
 }
 
 void TstPreprocessing::badInput() {
-    const xyt::IoData d = record(20, 0.01, [](double t) { return t; }, [](double t) { return t; });
+    const xyt::IoData d = record(
+        20, 0.01, [](double t) { return t; }, [](double t) { return t; });
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::decimate(d, 0); }), QString("factor"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::decimate(d, 2); }), QString("data")); // 20 <= 24
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::decimate(d, 2); }),
+             QString("data")); // 20 <= 24
     xyt::IoData unequal = d;
     unequal.y.pop_back();
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::removeMeans(unequal); }), QString("data"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::removeTrends(xyt::IoData{}); }), QString("data"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::removeTrends(xyt::IoData{}); }),
+             QString("data"));
 }
 
 void TstPreprocessing::preprocessIsTheStepsInOrder() {
     // Invariant: preprocess() is selectTimeRange, then removeTrends / removeMeans, then
     // decimate, bit for bit; no step leaves the record unchanged.
-    const xyt::IoData d = record(2000, 0.01, [](double t) { return std::sin(3.0 * t) + 0.2 * t; },
-                                 [](double t) { return std::cos(2.0 * t) + 1.5 + 0.1 * t; });
+    const xyt::IoData d = record(
+        2000, 0.01, [](double t) { return std::sin(3.0 * t) + 0.2 * t; },
+        [](double t) { return std::cos(2.0 * t) + 1.5 + 0.1 * t; });
     QVERIFY(xyt::preprocess(d, {}).y == d.y);
     xyt::PreprocessingSteps steps;
     steps.rangeSeconds = std::array<double, 2>{2.0, 15.0};
     steps.offsets = xyt::OffsetRemoval::Trends;
     steps.decimateFactor = 3;
-    const xyt::IoData expected = xyt::decimate(xyt::removeTrends(xyt::selectTimeRange(d, 2.0, 15.0)).data, 3);
+    const xyt::IoData expected =
+        xyt::decimate(xyt::removeTrends(xyt::selectTimeRange(d, 2.0, 15.0)).data, 3);
     const xyt::IoData got = xyt::preprocess(d, steps);
     QVERIFY(got.u == expected.u && got.y == expected.y);
     QCOMPARE(got.tsSeconds, expected.tsSeconds);
     QCOMPARE(got.startSeconds, expected.startSeconds);
     steps.offsets = xyt::OffsetRemoval::Means;
     const xyt::IoData means = xyt::preprocess(d, steps);
-    QVERIFY(means.y == xyt::decimate(xyt::removeMeans(xyt::selectTimeRange(d, 2.0, 15.0)).data, 3).y);
+    QVERIFY(means.y ==
+            xyt::decimate(xyt::removeMeans(xyt::selectTimeRange(d, 2.0, 15.0)).data, 3).y);
     QVERIFY(means.y != got.y);
 }
 

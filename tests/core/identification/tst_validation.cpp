@@ -43,8 +43,9 @@ IoData bjData(const PolynomialModel& m, std::size_t n, double sigma, std::uint64
               std::vector<double>& e) {
     const std::vector<double> u = randomBinary(n, 1.0, seed);
     e = gaussianNoise(n, sigma, seed + 1);
-    return ioData(u, plus(filterDifferenceEquation(m.b, m.f, u), filterDifferenceEquation(m.c, m.d, e)),
-                  m.tsSeconds);
+    return ioData(
+        u, plus(filterDifferenceEquation(m.b, m.f, u), filterDifferenceEquation(m.c, m.d, e)),
+        m.tsSeconds);
 }
 
 double maxAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {
@@ -113,8 +114,10 @@ private slots:
         arx.tsSeconds = 0.07;
         const std::vector<double> u = randomBinary(300, 1.0, 4);
         const std::vector<double> w = gaussianNoise(300, 0.01, 5);
-        const IoData da = ioData(u, plus(filterDifferenceEquation(kPaperB, kPaperA, u),
-                                         filterDifferenceEquation({1.0}, kPaperA, w)), 0.07);
+        const IoData da = ioData(u,
+                                 plus(filterDifferenceEquation(kPaperB, kPaperA, u),
+                                      filterDifferenceEquation({1.0}, kPaperA, w)),
+                                 0.07);
         QVERIFY(maxAbsDiff(predictionErrors(arx, da), w) <= 1e-12);
     }
 
@@ -129,7 +132,8 @@ private slots:
             const std::vector<double> yhat = predictModel(m, d, k);
             std::vector<double> expected(w);
             for (std::size_t t = static_cast<std::size_t>(k); t < expected.size(); ++t)
-                expected[t] += std::pow(0.8, k) * (d.y[t - static_cast<std::size_t>(k)] - w[t - static_cast<std::size_t>(k)]);
+                expected[t] += std::pow(0.8, k) * (d.y[t - static_cast<std::size_t>(k)] -
+                                                   w[t - static_cast<std::size_t>(k)]);
             QVERIFY2(maxAbsDiff(yhat, expected) <= 1e-12, qPrintable(QString::number(k)));
         }
         // A horizon of N or more is the simulation.
@@ -146,19 +150,23 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(InvalidInput, informationCriteria(1.0, 4, 4));
     }
 
-    // The order table on ARX(2,3,1) data (Patrick, Ishak and Adnan's model, fixed seed): 9 rows, losses over
-    // the common samples 3 .. N-1, the (2,3,1) row's loss equal to that estimate's own loss
-    // (same rows), and AIC picks ARX(2,3,1) (the under-fitted orders have far larger losses, the
-    // over-fitted ones pay 2 per parameter for a loss drop of about 1 per parameter).
+    // The order table on ARX(2,3,1) data (Patrick, Ishak and Adnan's model, fixed seed): 9 rows,
+    // losses over the common samples 3 .. N-1, the (2,3,1) row's loss equal to that estimate's own
+    // loss (same rows), and AIC picks ARX(2,3,1) (the under-fitted orders have far larger losses,
+    // the over-fitted ones pay 2 per parameter for a loss drop of about 1 per parameter).
     void arxOrderTable() {
         const std::vector<double> u = randomBinary(600, 1.0, 7);
         const std::vector<double> w = gaussianNoise(600, 0.01, 8);
-        const IoData d = ioData(u, plus(filterDifferenceEquation(kPaperB, kPaperA, u),
-                                        filterDifferenceEquation({1.0}, kPaperA, w)), 0.07);
+        const IoData d = ioData(u,
+                                plus(filterDifferenceEquation(kPaperB, kPaperA, u),
+                                     filterDifferenceEquation({1.0}, kPaperA, w)),
+                                0.07);
         const std::vector<double> u2 = randomBinary(600, 1.0, 9);
         const std::vector<double> w2 = gaussianNoise(600, 0.01, 10);
-        const IoData v = ioData(u2, plus(filterDifferenceEquation(kPaperB, kPaperA, u2),
-                                         filterDifferenceEquation({1.0}, kPaperA, w2)), 0.07);
+        const IoData v = ioData(u2,
+                                plus(filterDifferenceEquation(kPaperB, kPaperA, u2),
+                                     filterDifferenceEquation({1.0}, kPaperA, w2)),
+                                0.07);
         int calls = 0;
         const ArxOrderTable t = xyt::arxOrderTable(d, &v, {1, 3}, {1, 3}, {1, 1}, [&](double) {
             ++calls;
@@ -184,7 +192,8 @@ private slots:
                                                    [](double f) { return f < 0.3; });
         QVERIFY(c.cancelled);
         QVERIFY(!c.rows.empty() && c.rows.size() < 9);
-        QVERIFY_THROWS_EXCEPTION(InvalidInput, xyt::arxOrderTable(d, nullptr, {3, 1}, {1, 3}, {1, 1}));
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 xyt::arxOrderTable(d, nullptr, {3, 1}, {1, 3}, {1, 1}));
     }
 
     // White residuals independent of u pass (fixed seed), residuals coloured by
@@ -266,7 +275,8 @@ private slots:
         m.b = kPaperB;
         m.tsSeconds = 0.07;
         const ModelRoots r = modelRoots(m);
-        const double z = (-0.0628 - std::sqrt(0.0628 * 0.0628 + 4 * 0.0421 * 0.0454)) / (2 * 0.0421);
+        const double z =
+            (-0.0628 - std::sqrt(0.0628 * 0.0628 + 4 * 0.0421 * 0.0454)) / (2 * 0.0421);
         QVERIFY(hasRoot(r.zeros, z, 1e-12));
         QVERIFY(r.nonMinimumPhase);
     }
@@ -288,7 +298,7 @@ private slots:
         QVERIFY(r.continuousZeros.empty());
         QCOMPARE(r.zeros.size(), std::size_t{2});
         QVERIFY(r.nonMinimumPhase);
-        QVERIFY(!r.stable); // the integrator: a pole at z = 1
+        QVERIFY(!r.stable);     // the integrator: a pole at z = 1
         QVERIFY(r.integrating); // ... and nothing else outside: integrating, not unstable
         // A pole just outside beside the integrator is unstable (1 + 1e-3 is 1000 times the
         // tolerance away from 1), and so is a pole at -1.
@@ -303,10 +313,9 @@ private slots:
         QVERIFY(!modelRoots(m).integrating);
         const CsvTable zoh = readCsv(QStringLiteral("gt_zoh.csv"));
         std::size_t row = 0;
-        while (row < zoh.rows.size() &&
-               !(zoh.rows[row][0] == QStringLiteral("lower-base plant") &&
-                 zoh.number(row, QStringLiteral("ts")) == 0.01 &&
-                 zoh.rows[row][2] == QStringLiteral("num")))
+        while (row < zoh.rows.size() && !(zoh.rows[row][0] == QStringLiteral("lower-base plant") &&
+                                          zoh.number(row, QStringLiteral("ts")) == 0.01 &&
+                                          zoh.rows[row][2] == QStringLiteral("num")))
             ++row;
         QVERIFY(row < zoh.rows.size());
         const double a = zoh.number(row, QStringLiteral("c2"));

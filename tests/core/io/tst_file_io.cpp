@@ -154,7 +154,8 @@ void TstFileIo::readRefusesSpecialFiles() {
     QVERIFY(::mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
     // A FIFO without a writer used to block forever (the test's ctest timeout would fail it);
     // /dev/zero was read until bad_alloc.
-    for (const QString& path : {fifo, QStringLiteral("/dev/zero"), QStringLiteral("/dev/urandom")}) {
+    for (const QString& path :
+         {fifo, QStringLiteral("/dev/zero"), QStringLiteral("/dev/urandom")}) {
         try {
             readRegularFile(path.toStdString(), 8 * 1024 * 1024);
             QFAIL(qPrintable(path + " was read"));
@@ -183,7 +184,9 @@ namespace {
 /// The uid/gid that stands for "another user" (nobody), present on every Linux system.
 constexpr uid_t kOtherUser = 65534;
 
-QByteArray bytes(const QString& path) { return QFile::encodeName(path); }
+QByteArray bytes(const QString& path) {
+    return QFile::encodeName(path);
+}
 
 struct stat lstatOf(const QString& path) {
     struct stat st {};
@@ -294,11 +297,13 @@ void TstFileIo::linkToAnotherUsersFileIsRefused() {
     QVERIFY(::symlink("mine.json", bytes(toMine).constData()) == 0);
     QVERIFY(::lchown(bytes(toMine).constData(), kOtherUser, kOtherUser) == 0);
     QCOMPARE(refusal(toTheirs, "x"),
-             QStringLiteral("is a symbolic link to a file of another user (the file: uid 65534, the link: "
-                            "uid 0); refusing to replace it"));
-    QCOMPARE(refusal(toMine, "x"),
-             QStringLiteral("is a symbolic link to a file of another user (the file: uid 0, the link: "
-                            "uid 65534); refusing to replace it"));
+             QStringLiteral(
+                 "is a symbolic link to a file of another user (the file: uid 65534, the link: "
+                 "uid 0); refusing to replace it"));
+    QCOMPARE(
+        refusal(toMine, "x"),
+        QStringLiteral("is a symbolic link to a file of another user (the file: uid 0, the link: "
+                       "uid 65534); refusing to replace it"));
     QCOMPARE(contents(theirs), QByteArray("theirs"));
     QCOMPARE(contents(mine), QByteArray("mine"));
     // The user's link to the user's own file: followed, and the file stays the user's.
@@ -319,7 +324,8 @@ void TstFileIo::foreignFileInStickyFolderIsRefused() {
     const QString planted = shared + "/out.json";
     writeFileAtomically(planted.toStdString(), "planted");
     QVERIFY(::chown(bytes(planted).constData(), kOtherUser, kOtherUser) == 0);
-    QVERIFY(refusal(planted, "ours").contains("a file of another user (uid 65534) in a folder everyone may write to"));
+    QVERIFY(refusal(planted, "ours")
+                .contains("a file of another user (uid 65534) in a folder everyone may write to"));
     QCOMPARE(contents(planted), QByteArray("planted"));
     // Our own file there is replaced as anywhere.
     const QString own = shared + "/own.json";
@@ -381,13 +387,15 @@ void TstFileIo::staleTemporariesAreRemoved() {
     QTemporaryDir dir;
     const QString stale = QStringLiteral(".xytune-save-%1-aB3dE9").arg(dead);
     const QString writing = QStringLiteral(".xytune-save-%1-Zz09aQ").arg(living);
-    const QString own = QStringLiteral(".xytune-save-%1-q1w2e3").arg(::getpid()); // another thread's
+    const QString own =
+        QStringLiteral(".xytune-save-%1-q1w2e3").arg(::getpid()); // another thread's
     const QStringList notOurs = {
         QStringLiteral(".xytune-save-%1-aB3dE").arg(dead),      // five letters: not mkstemp's
         QStringLiteral(".xytune-save-%1-aB3dE9.bak").arg(dead), // more after the pattern
         QStringLiteral(".xytune-save-aB3dE9"),                  // the old name, without a pid
         QStringLiteral("xytune-save-%1-aB3dE9").arg(dead)};     // not hidden
-    for (const QString& name : QStringList{stale, writing, own} + notOurs) { // not saved: a save cleans up
+    for (const QString& name :
+         QStringList{stale, writing, own} + notOurs) { // not saved: a save cleans up
         QFile f(dir.filePath(name));
         QVERIFY(f.open(QIODevice::WriteOnly) && f.write("leftover") == 8);
     }

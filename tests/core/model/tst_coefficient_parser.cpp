@@ -20,12 +20,17 @@ void TstCoefficientParser::accepts_data() {
     QTest::addColumn<QList<double>>("expected");
     // Values are exactly representable or parsed by from_chars to the nearest double, so the
     // comparison is exact against the same literals.
-    QTest::newRow("spaces, A(z^-1) of Patrick, Ishak and Adnan") << "1 -1.6580 0.6583" << QList<double>{1.0, -1.6580, 0.6583};
-    QTest::newRow("MATLAB brackets and commas") << "[0.0421, 0.0628, -0.0454]" << QList<double>{0.0421, 0.0628, -0.0454};
-    QTest::newRow("semicolons, tabs, newlines") << "1;\t125.3\n3665 ; 0" << QList<double>{1.0, 125.3, 3665.0, 0.0};
-    QTest::newRow("exponents and plus sign") << "+2e3 -1.5E-2 .5" << QList<double>{2000.0, -0.015, 0.5};
+    QTest::newRow("spaces, A(z^-1) of Patrick, Ishak and Adnan")
+        << "1 -1.6580 0.6583" << QList<double>{1.0, -1.6580, 0.6583};
+    QTest::newRow("MATLAB brackets and commas")
+        << "[0.0421, 0.0628, -0.0454]" << QList<double>{0.0421, 0.0628, -0.0454};
+    QTest::newRow("semicolons, tabs, newlines")
+        << "1;\t125.3\n3665 ; 0" << QList<double>{1.0, 125.3, 3665.0, 0.0};
+    QTest::newRow("exponents and plus sign")
+        << "+2e3 -1.5E-2 .5" << QList<double>{2000.0, -0.015, 0.5};
     QTest::newRow("surrounding separators") << "  ,1,  " << QList<double>{1.0};
-    QTest::newRow("64 coefficients (the limit)") << QString("1 ").repeated(64) << QList<double>(64, 1.0);
+    QTest::newRow("64 coefficients (the limit)")
+        << QString("1 ").repeated(64) << QList<double>(64, 1.0);
 }
 
 void TstCoefficientParser::accepts() {
@@ -38,19 +43,31 @@ void TstCoefficientParser::accepts() {
 void TstCoefficientParser::refuses_data() {
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("field");
-    QTest::newRow("empty") << "" << "den";
-    QTest::newRow("only separators") << " , ; " << "den";
-    QTest::newRow("empty brackets") << "[ ]" << "den";
-    QTest::newRow("unclosed bracket") << "[1 2" << "den";
-    QTest::newRow("word") << "1 abc 3" << "den[1]";
-    QTest::newRow("trailing garbage") << "1 2x" << "den[1]";
-    QTest::newRow("nan") << "1 nan" << "den[1]";
-    QTest::newRow("NaN") << "NaN" << "den[0]";
-    QTest::newRow("inf") << "inf 1" << "den[0]";
-    QTest::newRow("-infinity") << "1 2 -infinity" << "den[2]";
-    QTest::newRow("overflow 1e999") << "1e999" << "den[0]";
+    QTest::newRow("empty") << ""
+                           << "den";
+    QTest::newRow("only separators") << " , ; "
+                                     << "den";
+    QTest::newRow("empty brackets") << "[ ]"
+                                    << "den";
+    QTest::newRow("unclosed bracket") << "[1 2"
+                                      << "den";
+    QTest::newRow("word") << "1 abc 3"
+                          << "den[1]";
+    QTest::newRow("trailing garbage") << "1 2x"
+                                      << "den[1]";
+    QTest::newRow("nan") << "1 nan"
+                         << "den[1]";
+    QTest::newRow("NaN") << "NaN"
+                         << "den[0]";
+    QTest::newRow("inf") << "inf 1"
+                         << "den[0]";
+    QTest::newRow("-infinity") << "1 2 -infinity"
+                               << "den[2]";
+    QTest::newRow("overflow 1e999") << "1e999"
+                                    << "den[0]";
     QTest::newRow("65 coefficients") << QString("1 ").repeated(65) << "den";
-    QTest::newRow("double sign") << "--1" << "den[0]";
+    QTest::newRow("double sign") << "--1"
+                                 << "den[0]";
 }
 
 void TstCoefficientParser::refuses() {

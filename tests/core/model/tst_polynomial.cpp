@@ -60,8 +60,8 @@ void TstPolynomial::rootsClosedForm_data() {
     QTest::newRow("real distinct") << QList<double>{-3.0, -1.0, 2.0} << QList<double>{0, 0, 0};
     QTest::newRow("complex pair and zero")
         << QList<double>{-1.0, -1.0, 0.0} << QList<double>{-2.0, 2.0, 0.0};
-    QTest::newRow("widely scaled") << QList<double>{-1000.0, -1.0, -0.001}
-                                   << QList<double>{0, 0, 0};
+    QTest::newRow("widely scaled")
+        << QList<double>{-1000.0, -1.0, -0.001} << QList<double>{0, 0, 0};
     QTest::newRow("quartic unit circle")
         << QList<double>{0.0, 0.0, 0.6, 0.6} << QList<double>{-1.0, 1.0, -0.8, 0.8};
 }
@@ -79,8 +79,9 @@ void TstPolynomial::rootsClosedForm() {
     xyt::sortRoots(expected);
     QCOMPARE(got.size(), expected.size());
     for (std::size_t i = 0; i < got.size(); ++i)
-        QVERIFY2(xyt::test::nearComplex(got[i], expected[i], 1e-9, 1e-9),
-                 qPrintable(QString("root %1: got %2%3j").arg(i).arg(got[i].real()).arg(got[i].imag())));
+        QVERIFY2(
+            xyt::test::nearComplex(got[i], expected[i], 1e-9, 1e-9),
+            qPrintable(QString("root %1: got %2%3j").arg(i).arg(got[i].real()).arg(got[i].imag())));
 }
 
 void TstPolynomial::rootsResidualOnRandomPolynomials() {
@@ -106,10 +107,10 @@ void TstPolynomial::rootsResidualOnRandomPolynomials() {
 }
 
 void TstPolynomial::rootsOfPaperPolynomials() {
-    // Patrick, Ishak and Adnan Eq. 2: B_c(z^-1) = 1 + 1.4917 z^-1 - 1.0784 z^-2, i.e. z^2 + 1.4917 z - 1.0784.
-    // Quadratic formula: z = (-1.4917 +- sqrt(1.4917^2 + 4 * 1.0784)) / 2 = 0.53266, -2.02436.
-    // The paper prints -0.5327 for the first root: a sign misprint (the product of the roots
-    // must be -1.0784, which -0.5327 * -2.0244 = +1.0784 is not).
+    // Patrick, Ishak and Adnan Eq. 2: B_c(z^-1) = 1 + 1.4917 z^-1 - 1.0784 z^-2, i.e. z^2 + 1.4917
+    // z - 1.0784. Quadratic formula: z = (-1.4917 +- sqrt(1.4917^2 + 4 * 1.0784)) / 2 = 0.53266,
+    // -2.02436. The paper prints -0.5327 for the first root: a sign misprint (the product of the
+    // roots must be -1.0784, which -0.5327 * -2.0244 = +1.0784 is not).
     auto r = Polynomial::fromAscending({-1.0784, 1.4917, 1.0}).roots();
     xyt::sortRoots(r);
     const double disc = std::sqrt(1.4917 * 1.4917 + 4.0 * 1.0784);
@@ -142,8 +143,9 @@ void TstPolynomial::rejectsNaN() {
 }
 
 void TstPolynomial::toStringReadsAsTyped() {
-    QCOMPARE(QString::fromStdString(Polynomial::fromDescending({1.0, 125.3, 3665.0, 0.0}).toString()),
-             QString("s^3 + 125.3 s^2 + 3665 s"));
+    QCOMPARE(
+        QString::fromStdString(Polynomial::fromDescending({1.0, 125.3, 3665.0, 0.0}).toString()),
+        QString("s^3 + 125.3 s^2 + 3665 s"));
     QCOMPARE(QString::fromStdString(Polynomial::fromAscending({1.0, -0.2}).toString("z")),
              QString("-0.2 z + 1"));
 }

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // State-space realization and exact discretization: against the transfer function itself,
 // scalar closed forms and Octave's c2d (tests/data/gt_zoh.csv, see tests/data/README.md).
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "core/model/state_space.h"
-#include "tests/support/reference_data.h"
 #include "tests/support/core_checks.h"
+#include "tests/support/reference_data.h"
 #include "tests/support/tolerance.h"
 
 #include <Eigen/Dense>
@@ -26,7 +26,8 @@ TransferFunction namedSystem(const QString& name) {
         return {};
     if (name.endsWith("plant"))
         return preset->plant.transferFunction();
-    return xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp).closedLoop;
+    return xyt::designGuilleminTruxal(preset->plant, preset->omegaNRadPerSec, preset->kp)
+        .closedLoop;
 }
 
 Complex ssValue(const xyt::StateSpace& ss, Complex s) {
@@ -54,9 +55,12 @@ private slots:
 void TstStateSpace::realizationReproducesTf_data() {
     QTest::addColumn<QList<double>>("num");
     QTest::addColumn<QList<double>>("den");
-    QTest::newRow("lower-base plant, Braga et al. Eq. 2") << QList<double>{77.8} << QList<double>{1, 125.3, 3665, 0};
-    QTest::newRow("lower-base G_R, Eq. 19") << QList<double>{2334, 16} << QList<double>{1, 125.3, 3665, 2334, 16};
-    QTest::newRow("biproper (2s^2+1)/(s^2+3s+2)") << QList<double>{2, 0, 1} << QList<double>{1, 3, 2};
+    QTest::newRow("lower-base plant, Braga et al. Eq. 2")
+        << QList<double>{77.8} << QList<double>{1, 125.3, 3665, 0};
+    QTest::newRow("lower-base G_R, Eq. 19")
+        << QList<double>{2334, 16} << QList<double>{1, 125.3, 3665, 2334, 16};
+    QTest::newRow("biproper (2s^2+1)/(s^2+3s+2)")
+        << QList<double>{2, 0, 1} << QList<double>{1, 3, 2};
     QTest::newRow("non-monic PI (30s+0.2)/(2s)") << QList<double>{30, 0.2} << QList<double>{2, 0};
     QTest::newRow("static gain 4") << QList<double>{4} << QList<double>{1};
 }
@@ -66,11 +70,12 @@ void TstStateSpace::realizationReproducesTf() {
     // a companion matrix of order <= 4: 1e-12 relative.
     QFETCH(QList<double>, num);
     QFETCH(QList<double>, den);
-    const TransferFunction g = TransferFunction::fromDescending({num.begin(), num.end()},
-                                                                {den.begin(), den.end()});
+    const TransferFunction g =
+        TransferFunction::fromDescending({num.begin(), num.end()}, {den.begin(), den.end()});
     const xyt::StateSpace ss = xyt::realize(g);
     QCOMPARE(ss.states(), Eigen::Index(g.den().degree()));
-    for (const Complex s : {Complex(0.3, 0.0), Complex(-1.5, 2.0), Complex(0.0, 7.0), Complex(50.0, -20.0)})
+    for (const Complex s :
+         {Complex(0.3, 0.0), Complex(-1.5, 2.0), Complex(0.0, 7.0), Complex(50.0, -20.0)})
         QVERIFY2(xyt::test::nearComplex(ssValue(ss, s), g(s), 1e-12),
                  qPrintable(QString("s = %1 + %2j").arg(s.real()).arg(s.imag())));
 }
@@ -148,7 +153,8 @@ void TstStateSpace::zohAgainstOctave() {
         double sumAbs = 0.0;
         for (double c : gd.den().ascending())
             sumAbs += std::abs(c);
-        const double cond = std::numeric_limits<double>::epsilon() * sumAbs / std::abs(gd.den()(1.0));
+        const double cond =
+            std::numeric_limits<double>::epsilon() * sumAbs / std::abs(gd.den()(1.0));
         XYT_COMPARE_NEAR(gd.dcGain(), 1.0, 10.0 * cond, 0.0);
     } else {
         QVERIFY(std::isinf(gd.dcGain()));
@@ -196,22 +202,29 @@ void TstStateSpace::characteristicPolynomialOfKnownMatrix() {
 void TstStateSpace::errorsNameTheField() {
     const TransferFunction g = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
     using xyt::test::invalidInputField;
-    QCOMPARE(invalidInputField([] { xyt::realize(TransferFunction::fromDescending({1.0, 0.0}, {1.0})); }), QString("num"));
+    QCOMPARE(invalidInputField([] {
+                 xyt::realize(TransferFunction::fromDescending({1.0, 0.0}, {1.0}));
+             }),
+             QString("num"));
     QCOMPARE(invalidInputField([&] { xyt::c2dZoh(g, 0.0); }), QString("ts"));
     QCOMPARE(invalidInputField([&] { xyt::c2dZoh(g, -0.01); }), QString("ts"));
     QCOMPARE(invalidInputField([&] { xyt::c2dZoh(g, std::nan("")); }), QString("ts"));
     QCOMPARE(invalidInputField([&] { xyt::c2dZoh(xyt::c2dZoh(g, 0.1), 0.1); }), QString("system"));
-    QCOMPARE(invalidInputField([&] { xyt::discretizeZoh(xyt::discretizeZoh(xyt::realize(g), 0.1), 0.1); }),
+    QCOMPARE(invalidInputField(
+                 [&] { xyt::discretizeZoh(xyt::discretizeZoh(xyt::realize(g), 0.1), 0.1); }),
              QString("system"));
-    QCOMPARE(invalidInputField([] { xyt::discretizeFoh(Eigen::MatrixXd::Zero(1, 1), Eigen::MatrixXd::Ones(1, 1), 0.0); }),
+    QCOMPARE(invalidInputField([] {
+                 xyt::discretizeFoh(Eigen::MatrixXd::Zero(1, 1), Eigen::MatrixXd::Ones(1, 1), 0.0);
+             }),
              QString("ts"));
     // Regression (fuzz_design, crash-stiff-discretization): the companion form of
     // s (s^2 + a1 s + a2) with a1 = 1e300 overflows exp()'s scaling and squaring; refused, never
     // a NaN step matrix.
     Eigen::MatrixXd stiff(3, 3);
     stiff << 0, 1, 0, 0, 0, 1, 0, -1e300, -1e300;
-    QCOMPARE(invalidInputField([&] { xyt::discretizeFoh(stiff, Eigen::MatrixXd::Ones(3, 1), 0.01); }),
-             QString("ts"));
+    QCOMPARE(
+        invalidInputField([&] { xyt::discretizeFoh(stiff, Eigen::MatrixXd::Ones(3, 1), 0.01); }),
+        QString("ts"));
 }
 
 QTEST_APPLESS_MAIN(TstStateSpace)

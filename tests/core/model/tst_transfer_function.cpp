@@ -61,8 +61,8 @@ void TstTransferFunction::normalizedToMonicDenominator() {
 }
 
 void TstTransferFunction::seriesAndParallelClosedForms() {
-    const TransferFunction a = tf({1.0, 1.0}, {1.0, 2.0});      // (s+1)/(s+2)
-    const TransferFunction b = tf({3.0}, {1.0, 1.0, 1.0});      // 3/(s^2+s+1)
+    const TransferFunction a = tf({1.0, 1.0}, {1.0, 2.0}); // (s+1)/(s+2)
+    const TransferFunction b = tf({3.0}, {1.0, 1.0, 1.0}); // 3/(s^2+s+1)
     // Closed form: 3 (s+1) / ((s+2)(s^2+s+1)) = (3 s + 3)/(s^3 + 3 s^2 + 3 s + 2).
     const TransferFunction s = xyt::series(a, b);
     compareDescending(s.num(), {3.0, 3.0});
@@ -79,14 +79,14 @@ void TstTransferFunction::feedbackClosedForms_data() {
     QTest::addColumn<QList<double>>("num");
     QTest::addColumn<QList<double>>("den");
     // g = 5/(s(s+3)); unity negative feedback: 5/(s^2 + 3 s + 5).
-    QTest::newRow("unity negative") << -1 << false << QList<double>{5.0}
-                                    << QList<double>{1.0, 3.0, 5.0};
+    QTest::newRow("unity negative")
+        << -1 << false << QList<double>{5.0} << QList<double>{1.0, 3.0, 5.0};
     // Positive feedback: 5/(s^2 + 3 s - 5).
-    QTest::newRow("unity positive") << 1 << false << QList<double>{5.0}
-                                    << QList<double>{1.0, 3.0, -5.0};
+    QTest::newRow("unity positive")
+        << 1 << false << QList<double>{5.0} << QList<double>{1.0, 3.0, -5.0};
     // Sensor h = 2/(s+4): 5 (s+4)/(s(s+3)(s+4) + 10) = (5 s + 20)/(s^3 + 7 s^2 + 12 s + 10).
-    QTest::newRow("sensor negative") << -1 << true << QList<double>{5.0, 20.0}
-                                     << QList<double>{1.0, 7.0, 12.0, 10.0};
+    QTest::newRow("sensor negative")
+        << -1 << true << QList<double>{5.0, 20.0} << QList<double>{1.0, 7.0, 12.0, 10.0};
 }
 
 void TstTransferFunction::feedbackClosedForms() {
@@ -126,15 +126,21 @@ void TstTransferFunction::dcGain_data() {
     QTest::addColumn<double>("ts");
     QTest::addColumn<double>("expected");
     // Closed forms: N(0)/D(0), or N(1)/D(1) for discrete systems.
-    QTest::newRow("second order 3/(s^2+3s+2)") << QList<double>{3.0} << QList<double>{1, 3, 2} << 0.0 << 1.5;
+    QTest::newRow("second order 3/(s^2+3s+2)")
+        << QList<double>{3.0} << QList<double>{1, 3, 2} << 0.0 << 1.5;
     QTest::newRow("integrator 1/s") << QList<double>{1.0} << QList<double>{1, 0} << 0.0 << kInf;
-    QTest::newRow("negative integrator -2/(s^2+s)") << QList<double>{-2.0} << QList<double>{1, 1, 0} << 0.0 << -kInf;
-    QTest::newRow("common factor s/(s(s+2))") << QList<double>{1, 0} << QList<double>{1, 2, 0} << 0.0 << 0.5;
+    QTest::newRow("negative integrator -2/(s^2+s)")
+        << QList<double>{-2.0} << QList<double>{1, 1, 0} << 0.0 << -kInf;
+    QTest::newRow("common factor s/(s(s+2))")
+        << QList<double>{1, 0} << QList<double>{1, 2, 0} << 0.0 << 0.5;
     QTest::newRow("double common factor s^2(s+1)/(s^2(s+4))")
         << QList<double>{1, 1, 0, 0} << QList<double>{1, 4, 0, 0} << 0.0 << 0.25;
-    QTest::newRow("differentiator s/(s+1)") << QList<double>{1, 0} << QList<double>{1, 1} << 0.0 << 0.0;
-    QTest::newRow("discrete 0.5/(z-0.5)") << QList<double>{0.5} << QList<double>{1, -0.5} << 0.1 << 1.0;
-    QTest::newRow("discrete integrator 0.1/(z-1)") << QList<double>{0.1} << QList<double>{1, -1} << 0.1 << kInf;
+    QTest::newRow("differentiator s/(s+1)")
+        << QList<double>{1, 0} << QList<double>{1, 1} << 0.0 << 0.0;
+    QTest::newRow("discrete 0.5/(z-0.5)")
+        << QList<double>{0.5} << QList<double>{1, -0.5} << 0.1 << 1.0;
+    QTest::newRow("discrete integrator 0.1/(z-1)")
+        << QList<double>{0.1} << QList<double>{1, -1} << 0.1 << kInf;
     // Regression: D(1) = 1 - 1.2 + 0.2 evaluates to 5.6e-17, not 0, so dcGain used to skip the
     // cancellation of (z - 1) and return 0 here (and a huge finite number for the next row).
     QTest::newRow("discrete common factor (z-1)/((z-1)(z-0.2))")
@@ -164,7 +170,8 @@ void TstTransferFunction::zInverseRoundTrip_data() {
     // z^-2/(1 - 0.5 z^-1) = 1/(z^2 - 0.5 z): the numerator sets the degree.
     QTest::newRow("delay longer than den") << QList<double>{0, 0, 1} << QList<double>{1, -0.5}
                                            << QList<double>{1.0} << QList<double>{1, -0.5, 0};
-    // As Patrick, Ishak and Adnan write them, biproper: (2 + z^-1)/(2 - z^-1) = (z + 0.5)/(z - 0.5) after normalizing.
+    // As Patrick, Ishak and Adnan write them, biproper: (2 + z^-1)/(2 - z^-1) = (z + 0.5)/(z - 0.5)
+    // after normalizing.
     QTest::newRow("biproper, den[0] != 1") << QList<double>{2, 1} << QList<double>{2, -1}
                                            << QList<double>{1, 0.5} << QList<double>{1, -0.5};
 }
@@ -213,7 +220,8 @@ void TstTransferFunction::frequencyResponseClosedForms() {
     QVERIFY(xyt::test::nearComplex(gi, Complex(0.0, -1.0 / omega), 1e-15));
     // Discrete 1/(z - 0.5) at z = e^{j w Ts}, Ts = 0.07.
     const double ts = 0.07;
-    const TransferFunction gd(Polynomial::constant(1.0), Polynomial::fromAscending({-0.5, 1.0}), ts);
+    const TransferFunction gd(Polynomial::constant(1.0), Polynomial::fromAscending({-0.5, 1.0}),
+                              ts);
     const Complex expected = 1.0 / (std::polar(1.0, omega * ts) - 0.5);
     QVERIFY(xyt::test::nearComplex(gd.frequencyResponse(omega), expected, 1e-15));
 }
@@ -228,7 +236,8 @@ void TstTransferFunction::stability_data() {
     QTest::newRow("z - 0.9") << QList<double>{1, -0.9} << 0.1 << true;
     QTest::newRow("z + 1.1") << QList<double>{1, 1.1} << 0.1 << false;
     QTest::newRow("z - 2 but continuous: s - 2") << QList<double>{1, -2} << 0.0 << false;
-    QTest::newRow("z + 0.5 (would be stable as s + 0.5 too)") << QList<double>{1, 0.5} << 0.1 << true;
+    QTest::newRow("z + 0.5 (would be stable as s + 0.5 too)")
+        << QList<double>{1, 0.5} << 0.1 << true;
 }
 
 void TstTransferFunction::stability() {
@@ -242,24 +251,41 @@ void TstTransferFunction::stability() {
 }
 
 void TstTransferFunction::errorsNameTheField() {
-    QCOMPARE(xyt::test::invalidInputField([] { TransferFunction(Polynomial::constant(1.0), Polynomial()); }), QString("den"));
-    QCOMPARE(xyt::test::invalidInputField([] { TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), -0.1); }),
+    QCOMPARE(xyt::test::invalidInputField(
+                 [] { TransferFunction(Polynomial::constant(1.0), Polynomial()); }),
+             QString("den"));
+    QCOMPARE(xyt::test::invalidInputField([] {
+                 TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), -0.1);
+             }),
              QString("ts"));
-    QCOMPARE(xyt::test::invalidInputField([] { TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), kNaN); }),
+    QCOMPARE(xyt::test::invalidInputField([] {
+                 TransferFunction(Polynomial::constant(1.0), Polynomial::constant(1.0), kNaN);
+             }),
              QString("ts"));
     QCOMPARE(xyt::test::invalidInputField([] { tf({1.0, kNaN}, {1.0, 1.0}); }), QString("num[1]"));
     QCOMPARE(xyt::test::invalidInputField([] { tf({1.0}, {1.0, kInf}); }), QString("den[1]"));
     QCOMPARE(xyt::test::invalidInputField([] { tf({1.0}, {0.0, 0.0}); }), QString("den"));
     const Polynomial one = Polynomial::constant(1.0);
-    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, Polynomial::fromAscending({0.0, 1.0}), 0.1); }),
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 TransferFunction::fromZInverse(one, Polynomial::fromAscending({0.0, 1.0}), 0.1);
+             }),
              QString("den"));
-    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, one, 0.0); }), QString("ts"));
-    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, Polynomial(), 0.1); }), QString("den"));
-    QCOMPARE(xyt::test::invalidInputField([] { tf({1.0}, {1.0, 1.0}).numZInverse(); }), QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] { TransferFunction::fromZInverse(one, one, 0.0); }),
+             QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField(
+                 [&] { TransferFunction::fromZInverse(one, Polynomial(), 0.1); }),
+             QString("den"));
+    QCOMPARE(xyt::test::invalidInputField([] {
+                 tf({1.0}, {1.0, 1.0}).numZInverse();
+             }),
+             QString("ts"));
     const TransferFunction d1(one, Polynomial::fromAscending({-0.5, 1.0}), 0.1);
     const TransferFunction d2(one, Polynomial::fromAscending({-0.5, 1.0}), 0.2);
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::series(d1, d2); }), QString("ts"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::parallel(d1, tf({1.0}, {1.0, 1.0})); }), QString("ts"));
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::parallel(d1, tf({1.0}, {1.0, 1.0}));
+             }),
+             QString("ts"));
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::feedback(d1, d1, 0); }), QString("sign"));
     // An improper discrete system has no causal z^-1 form.
     const TransferFunction improper(Polynomial::fromAscending({0.0, 0.0, 1.0}),

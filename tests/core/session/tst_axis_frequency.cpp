@@ -20,7 +20,8 @@ private slots:
 
 namespace {
 bool onGrid(const std::vector<double>& grid, double omega) {
-    return std::any_of(grid.begin(), grid.end(), [omega](double w) { return std::abs(w - omega) <= 1e-12 * omega; });
+    return std::any_of(grid.begin(), grid.end(),
+                       [omega](double w) { return std::abs(w - omega) <= 1e-12 * omega; });
 }
 } // namespace
 
@@ -37,7 +38,8 @@ void TstAxisFrequency::gtAxisHoldsItsCrossoversOnTheGrid() {
     QCOMPARE(a.responses.sensitivity.omegaRadPerSec, w);
     QCOMPARE(a.responses.complementarySensitivity.omegaRadPerSec, w);
     for (std::size_t i = 0; i < w.size(); ++i)
-        QVERIFY(std::abs(a.responses.sensitivity.value[i] + a.responses.complementarySensitivity.value[i] - 1.0) < 1e-9);
+        QVERIFY(std::abs(a.responses.sensitivity.value[i] +
+                         a.responses.complementarySensitivity.value[i] - 1.0) < 1e-9);
     // The GT loop has two integrators: the phase starts at -180 degrees.
     QCOMPARE(a.responses.openLoop.lowFrequencyIntegrators, 2);
     // Nyquist criterion: the design's closed loop (G_R) is stable, so Z = 0.

@@ -2,8 +2,8 @@
 // The design problem of a session's axis, at full and at live-preview fidelity.
 // Expected values are built here from the session's own fields and the trajectory formulas
 // (closed forms: the cubic of Braga et al. Eq. 4, the circle of Eq. 23-24), not by the code tested.
-#include "core/session/design_study.h"
 #include "core/model/errors.h"
+#include "core/session/design_study.h"
 #include "core/simulation/trajectory.h"
 #include "tests/support/tolerance.h"
 
@@ -34,8 +34,10 @@ void TstDesignStudy::fullFidelityIsTheSessionsDt() {
     // tf + 2 x 100 s = 330 s at 0.01 s: 33,001 samples of the cubic.
     QCOMPARE(p.reference.size(), std::size_t(33001));
     const CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
-    for (std::size_t k : {std::size_t(0), std::size_t(6500), std::size_t(13000), std::size_t(33000)})
-        XYT_COMPARE_NEAR(p.reference[k], cubic.position(static_cast<double>(k) * 0.01), 1e-15, 1e-12);
+    for (std::size_t k :
+         {std::size_t(0), std::size_t(6500), std::size_t(13000), std::size_t(33000)})
+        XYT_COMPARE_NEAR(p.reference[k], cubic.position(static_cast<double>(k) * 0.01), 1e-15,
+                         1e-12);
     QVERIFY(p.move.has_value());
     QCOMPARE(p.move->endSeconds, 130.0);
     QCOMPARE(p.move->targetMm, 600.0);

@@ -4,13 +4,13 @@
 // script (a newline, then system("...")). Invariant checked here: the header and the script of
 // a session with a hostile label mean exactly what they mean with an empty label -- the same
 // preprocessed C tokens and macros (cc -E), the same non-comment script lines.
+#include "core/io/text_escape.h"
 #include "core/model/errors.h"
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
-#include "core/io/text_escape.h"
 
-#include <QFile>
 #include "tests/support/core_checks.h"
+#include <QFile>
 
 #include <QProcess>
 #include <QRegularExpression>
@@ -104,7 +104,8 @@ void TstExportInjection::octaveScriptCarriesNoCode() {
         const std::string reference = exportOctaveScript(plain, evaluateSession(plain));
         QCOMPARE(codeLines(script), codeLines(reference));
         // Only the two "% Axis" comment lines differ, and nothing but the LF ends a line.
-        QCOMPARE(QString::fromStdString(script).count('\n'), QString::fromStdString(reference).count('\n'));
+        QCOMPARE(QString::fromStdString(script).count('\n'),
+                 QString::fromStdString(reference).count('\n'));
         QVERIFY(script.find('\r') == std::string::npos);
         QVERIFY(script.find("\xE2\x80\xA8") == std::string::npos);
         QVERIFY(script.find("\xC2\x85") == std::string::npos);
@@ -134,7 +135,8 @@ void TstExportInjection::cHeaderCarriesNoCode() {
                    "(double)XYT_UMAX_VOLTS); return 0; }\n");
         main.close();
         QProcess build;
-        build.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-o", dir.filePath("fw"), main.fileName()});
+        build.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-o", dir.filePath("fw"),
+                         main.fileName()});
         QVERIFY(build.waitForFinished(60000));
         QVERIFY2(build.exitCode() == 0, build.readAllStandardError().constData());
         QProcess run;
@@ -156,7 +158,9 @@ void TstExportInjection::commentTextKeepsOrdinaryLabels() {
 void TstExportInjection::terminalTextEscapesControls() {
     QCOMPARE(terminalText(std::string("a\0b\x1b[2J\x07\rZ", 10)),
              std::string("a\\x00b\\x1b[2J\\x07\\x0dZ"));
-    QCOMPARE(terminalText("a\xE2\x80\xAE" "b\\"), std::string("a\\u202eb\\\\"));
+    QCOMPARE(terminalText("a\xE2\x80\xAE"
+                          "b\\"),
+             std::string("a\\u202eb\\\\"));
     QCOMPARE(terminalText("\xFF ok \xC3\xA4"), std::string("\\xff ok \xC3\xA4"));
 }
 
@@ -171,8 +175,10 @@ void TstExportInjection::nonFiniteNumbersAreRefused() {
         exportOctaveScript(s, e);
         QFAIL("a script with inf in it was exported");
     } catch (const InvalidInput& error) {
-        QVERIFY2(QString::fromStdString(error.field()).startsWith("trajectory.cubic"), error.what());
-        QVERIFY2(QString::fromStdString(error.reason()).contains("not a finite number"), error.what());
+        QVERIFY2(QString::fromStdString(error.field()).startsWith("trajectory.cubic"),
+                 error.what());
+        QVERIFY2(QString::fromStdString(error.reason()).contains("not a finite number"),
+                 error.what());
     }
     // An unstable loop: the CSV would hold inf/nan; refused, naming the axis and the signal.
     Session unstable = Session::paperDefault();
@@ -217,21 +223,23 @@ void TstExportInjection::floatExportRefusesWhatFloatCannotHold() {
     // and the constant; the double export, which holds them, still writes them.
     Session ts = Session::paperDefault();
     ts.controllerTsSeconds = 1e308;
-    QVERIFY(exportCHeader(ts, evaluateSession(ts)).find("XYT_X_C0 XYT_MAYBE_UNUSED = 1.0282776349614397e+307;") !=
-            std::string::npos);
+    QVERIFY(exportCHeader(ts, evaluateSession(ts))
+                .find("XYT_X_C0 XYT_MAYBE_UNUSED = 1.0282776349614397e+307;") != std::string::npos);
     auto [field, reason] = floatRefusal(ts);
     QCOMPARE(field, QStringLiteral("axes[0].gt (digital PI at controller_ts)"));
-    QVERIFY2(reason.startsWith("gives 1.0282776349614397e+307 for XYT_X_C0, beyond the largest float"),
-             qPrintable(reason));
+    QVERIFY2(
+        reason.startsWith("gives 1.0282776349614397e+307 for XYT_X_C0, beyond the largest float"),
+        qPrintable(reason));
 
     Session umax = Session::paperDefault();
     umax.umaxVolts = 5e-324;
-    QVERIFY(exportCHeader(umax, evaluateSession(umax)).find("XYT_UMAX XYT_MAYBE_UNUSED = 4.9406564584124654e-324;") !=
-            std::string::npos);
+    QVERIFY(exportCHeader(umax, evaluateSession(umax))
+                .find("XYT_UMAX XYT_MAYBE_UNUSED = 4.9406564584124654e-324;") != std::string::npos);
     std::tie(field, reason) = floatRefusal(umax);
     QCOMPARE(field, QStringLiteral("umax"));
-    QVERIFY2(reason.startsWith("gives 4.9406564584124654e-324 for XYT_UMAX, which rounds to 0 in float"),
-             qPrintable(reason));
+    QVERIFY2(
+        reason.startsWith("gives 4.9406564584124654e-324 for XYT_UMAX, which rounds to 0 in float"),
+        qPrintable(reason));
 
     // The DAC's LSB 2 umax / 2^32 of umax 1e-36 is 4.7e-46, below the smallest float 1.4e-45,
     // though umax itself is a float.
@@ -240,7 +248,8 @@ void TstExportInjection::floatExportRefusesWhatFloatCannotHold() {
     dac.implementation.dacBits = 32;
     std::tie(field, reason) = floatRefusal(dac);
     QCOMPARE(field, QStringLiteral("umax"));
-    QVERIFY2(reason.contains("for XYT_DAC_LSB (2 umax / 2^dac_bits), which rounds to 0"), qPrintable(reason));
+    QVERIFY2(reason.contains("for XYT_DAC_LSB (2 umax / 2^dac_bits), which rounds to 0"),
+             qPrintable(reason));
 
     // A pole-placement axis whose B is 1e-40 times the paper's: Kf = T(1)/B(1) grows by 1e40,
     // to 1.3e41, beyond FLT_MAX; the step multiplies with it cast to xyt_real.
@@ -264,11 +273,13 @@ void TstExportInjection::axisIdsThatCannotNameAFunctionAreRefused() {
     for (const char* id : {"x(void);int evil", "X", "", "yyyyyyyyyyyyyyyyy", "x y"}) {
         Session s = Session::paperDefault();
         s.axes[1].id = id; // the last but one has 17 characters
-        QCOMPARE(test::invalidInputField([&] { exportCHeader(s, evaluateSession(s)); }), QString("axes[1].id"));
+        QCOMPARE(test::invalidInputField([&] { exportCHeader(s, evaluateSession(s)); }),
+                 QString("axes[1].id"));
     }
     Session same = Session::paperDefault();
     same.axes[1].id = "x";
-    QCOMPARE(test::invalidInputField([&] { exportCHeader(same, evaluateSession(same)); }), QString("axes[1].id"));
+    QCOMPARE(test::invalidInputField([&] { exportCHeader(same, evaluateSession(same)); }),
+             QString("axes[1].id"));
 }
 
 QTEST_APPLESS_MAIN(TstExportInjection)

@@ -218,10 +218,12 @@ std::string writeInput(const Session& session, const SessionEvaluation& evaluati
     std::vector<double> r(n + preview);
     for (std::size_t k = 0; k < r.size(); ++k)
         r[k] = reference(static_cast<double>(k) * a.pp->tsSeconds); // as evaluatePp samples it
-    out << n << " " << preview << " " << numbers({impl.encoderResolutionMm}) << impl.delaySamples << "\n"
-        << a.pp->a.ascending().size() << "\n" << numbers(a.pp->a.ascending())
-        << a.pp->b.ascending().size() << "\n" << numbers(a.pp->b.ascending())
-        << numbers({r[0], a.pp->a(1.0) / a.pp->b(1.0) * r[0]}) << numbers(r);
+    out << n << " " << preview << " " << numbers({impl.encoderResolutionMm}) << impl.delaySamples
+        << "\n"
+        << a.pp->a.ascending().size() << "\n"
+        << numbers(a.pp->a.ascending()) << a.pp->b.ascending().size() << "\n"
+        << numbers(a.pp->b.ascending()) << numbers({r[0], a.pp->a(1.0) / a.pp->b(1.0) * r[0]})
+        << numbers(r);
     return out.str();
 }
 
@@ -229,7 +231,8 @@ std::string writeInput(const Session& session, const SessionEvaluation& evaluati
 LoopRun runHarness(const QString& dir, const std::string& header, const std::string& id, bool pi,
                    const std::string& input) {
     QFile h(dir + "/xyt.h"), c(dir + "/harness.c");
-    if (!h.open(QIODevice::WriteOnly | QIODevice::Truncate) || !c.open(QIODevice::WriteOnly | QIODevice::Truncate))
+    if (!h.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
+        !c.open(QIODevice::WriteOnly | QIODevice::Truncate))
         qFatal("cannot write the harness");
     h.write(QByteArray::fromStdString(header));
     c.write(kHarness);
@@ -241,8 +244,8 @@ LoopRun runHarness(const QString& dir, const std::string& header, const std::str
     compile.start(QStringLiteral(XYT_C_COMPILER),
                   {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-ffp-contract=off",
                    "-DKIND=" + QString(pi ? "0" : "1"), "-DSTATE=xyt_" + name + "_state",
-                   "-DINIT=xyt_" + name + "_init", "-DSTEP=xyt_" + name + "_step", "harness.c", "-o",
-                   "harness", "-lm"});
+                   "-DINIT=xyt_" + name + "_init", "-DSTEP=xyt_" + name + "_step", "harness.c",
+                   "-o", "harness", "-lm"});
     if (!compile.waitForFinished(120000) || compile.exitCode() != 0)
         qFatal("the harness did not compile: %s", compile.readAllStandardError().constData());
     QProcess run;
@@ -309,8 +312,8 @@ double gammaN(int n) {
 
 /// l1 norms of the responses of y and u (over @p n samples) to a unit impulse at each injection
 /// point of the linear PI loop: 0 measurement, 1 controller state, 2 output.
-std::array<std::array<double, 2>, 3> piL1Gains(const SampledPlant& p, const DigitalPi& pi, double unit,
-                                               std::size_t n) {
+std::array<std::array<double, 2>, 3> piL1Gains(const SampledPlant& p, const DigitalPi& pi,
+                                               double unit, std::size_t n) {
     std::array<std::array<double, 2>, 3> gains{};
     for (int where = 0; where < 3; ++where) {
         std::vector<double> x(static_cast<std::size_t>(p.states), 0.0), next(x.size());
@@ -330,7 +333,8 @@ std::array<std::array<double, 2>, 3> piL1Gains(const SampledPlant& p, const Digi
             for (int i = 0; i < p.states; ++i) {
                 double acc = 0.0;
                 for (int j = 0; j < p.states; ++j)
-                    acc += p.phi[static_cast<std::size_t>(i * p.states + j)] * x[static_cast<std::size_t>(j)];
+                    acc += p.phi[static_cast<std::size_t>(i * p.states + j)] *
+                           x[static_cast<std::size_t>(j)];
                 next[static_cast<std::size_t>(i)] = acc + p.gamma[static_cast<std::size_t>(i)] * u;
             }
             x.swap(next);
@@ -340,7 +344,8 @@ std::array<std::array<double, 2>, 3> piL1Gains(const SampledPlant& p, const Digi
 }
 
 /// The same for the RST loop: 0 reference read, 1 measurement, 2 feedforward state w, 3 u.
-std::array<std::array<double, 2>, 4> rstL1Gains(const PolePlacementDesign& d, const ZpetcDesign* z, std::size_t n) {
+std::array<std::array<double, 2>, 4> rstL1Gains(const PolePlacementDesign& d, const ZpetcDesign* z,
+                                                std::size_t n) {
     std::array<std::array<double, 2>, 4> gains{};
     const auto& a = d.a.ascending();
     const auto& b = d.b.ascending();
@@ -392,7 +397,8 @@ double sumAbs(const std::vector<double>& v, std::size_t from = 0) {
 
 /// The bound on |y_float - y_double| (index 0) and |u_float - u_double| (index 1) of the
 /// derivation above, for axis @p i of @p session (no clipping, no quantization, no delay).
-std::array<double, 2> floatBound(const Session& session, const SessionEvaluation& evaluation, int i) {
+std::array<double, 2> floatBound(const Session& session, const SessionEvaluation& evaluation,
+                                 int i) {
     const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
     const SampledDataRun& run = a.digital->run;
     const std::size_t n = run.result.t.size();
@@ -403,13 +409,17 @@ std::array<double, 2> floatBound(const Session& session, const SessionEvaluation
         double nMax = 0.0, rhoMax = 0.0, dMax = 0.0, integrator = 0.0, previous = 0.0;
         for (std::size_t k = 0; k < n; ++k) {
             const double e = (run.result.r[k] - run.measured[k]) * unit;
-            nMax = std::max(nMax, gammaN(5) * (std::abs(run.result.r[k]) + std::abs(run.measured[k])));
-            rhoMax = std::max(rhoMax, gammaN(4) * (std::abs(pi.c0 * e) + std::abs(pi.c1 * previous) + std::abs(integrator)));
+            nMax =
+                std::max(nMax, gammaN(5) * (std::abs(run.result.r[k]) + std::abs(run.measured[k])));
+            rhoMax =
+                std::max(rhoMax, gammaN(4) * (std::abs(pi.c0 * e) + std::abs(pi.c1 * previous) +
+                                              std::abs(integrator)));
             integrator += pi.c0 * e + pi.c1 * previous;
             previous = e;
             dMax = std::max(dMax, gammaN(3) * (std::abs(pi.kp * e) + std::abs(integrator)));
         }
-        const auto gains = piL1Gains(sampledPlant(a.gt->plant.transferFunction(), pi.tsSeconds), pi, unit, n);
+        const auto gains =
+            piL1Gains(sampledPlant(a.gt->plant.transferFunction(), pi.tsSeconds), pi, unit, n);
         for (int s = 0; s < 2; ++s)
             bound[static_cast<std::size_t>(s)] = gains[0][static_cast<std::size_t>(s)] * nMax +
                                                  gains[1][static_cast<std::size_t>(s)] * rhoMax +
@@ -419,7 +429,8 @@ std::array<double, 2> floatBound(const Session& session, const SessionEvaluation
         const bool ff = session.axes[static_cast<std::size_t>(i)].pp.zpetcEnabled;
         const ZpetcDesign* z = ff ? &*a.zpetc : nullptr;
         const double eps = std::ldexp(1.0, -24);
-        const double rMax = maxAbs(run.result.r) * 1.01 + 1e-300; // the preview's r are on the same circle
+        const double rMax =
+            maxAbs(run.result.r) * 1.01 + 1e-300; // the preview's r are on the same circle
         const double yMax = maxAbs(run.measured), uMax = maxAbs(run.result.u);
         double rhoW = 0.0, wMax = rMax;
         if (z) {
@@ -429,19 +440,22 @@ std::array<double, 2> floatBound(const Session& session, const SessionEvaluation
             std::vector<double> impulse(n, 0.0);
             impulse[0] = 1.0;
             wMax = sumAbs(filterZInverse(z->feedforwardNum, z->feedforwardDen, impulse)) * rMax;
-            rhoW = gammaN(static_cast<int>(fn.size() + fd.size()) + 4) * (sumAbs(fn) * rMax + sumAbs(fd, 1) * wMax) /
-                   std::abs(fd[0]);
+            rhoW = gammaN(static_cast<int>(fn.size() + fd.size()) + 4) *
+                   (sumAbs(fn) * rMax + sumAbs(fd, 1) * wMax) / std::abs(fd[0]);
         }
         const auto& f = d.f.ascending();
         const auto& g = d.g.ascending();
         const double rhoV = gammaN(static_cast<int>(f.size() + g.size()) + 5) *
-                            (std::abs(d.kf) * wMax + sumAbs(g) * yMax + sumAbs(f, 1) * uMax) / std::abs(f[0]);
-        const auto gains = rstL1Gains(d, z, n + (z ? static_cast<std::size_t>(z->previewSteps) : 0));
+                            (std::abs(d.kf) * wMax + sumAbs(g) * yMax + sumAbs(f, 1) * uMax) /
+                            std::abs(f[0]);
+        const auto gains =
+            rstL1Gains(d, z, n + (z ? static_cast<std::size_t>(z->previewSteps) : 0));
         for (int s = 0; s < 2; ++s)
-            bound[static_cast<std::size_t>(s)] = gains[0][static_cast<std::size_t>(s)] * eps * rMax +
-                                                 gains[1][static_cast<std::size_t>(s)] * eps * yMax +
-                                                 gains[2][static_cast<std::size_t>(s)] * rhoW +
-                                                 gains[3][static_cast<std::size_t>(s)] * rhoV;
+            bound[static_cast<std::size_t>(s)] =
+                gains[0][static_cast<std::size_t>(s)] * eps * rMax +
+                gains[1][static_cast<std::size_t>(s)] * eps * yMax +
+                gains[2][static_cast<std::size_t>(s)] * rhoW +
+                gains[3][static_cast<std::size_t>(s)] * rhoV;
     }
     return {1.01 * bound[0], 1.01 * bound[1]};
 }
@@ -461,7 +475,8 @@ Session saturatingGtSession(PiDiscretization method, AntiWindup antiWindup) {
     return s;
 }
 
-/// Both axes by Patrick, Ishak and Adnan's pole placement on the 25 mm circle; x with ZPETC, y without.
+/// Both axes by Patrick, Ishak and Adnan's pole placement on the 25 mm circle; x with ZPETC, y
+/// without.
 Session ppSession() {
     Session s = Session::paperDefault();
     for (auto& axis : s.axes)
@@ -505,7 +520,8 @@ void TstFirmwareLoop::doubleMatchesTheCore() {
     QFETCH(int, antiWindup);
     Session s;
     if (kind < 2) {
-        s = saturatingGtSession(kind == 0 ? PiDiscretization::Tustin : PiDiscretization::BackwardEuler,
+        s = saturatingGtSession(kind == 0 ? PiDiscretization::Tustin
+                                          : PiDiscretization::BackwardEuler,
                                 static_cast<AntiWindup>(antiWindup));
     } else {
         s = ppSession();
@@ -526,9 +542,10 @@ void TstFirmwareLoop::doubleMatchesTheCore() {
         const AxisEvaluation& a = e.axes[static_cast<std::size_t>(i)];
         QVERIFY2(a.ok && a.digital, a.error.c_str());
         const SimulationResult& core = a.digital->run.result;
-        QVERIFY(std::count(core.clipped.begin(), core.clipped.end(), true) > 0); // clipping exercised
-        const LoopRun c = runHarness(dir.path(), header, s.axes[static_cast<std::size_t>(i)].id, a.gt.has_value(),
-                                     writeInput(s, e, i));
+        QVERIFY(std::count(core.clipped.begin(), core.clipped.end(), true) >
+                0); // clipping exercised
+        const LoopRun c = runHarness(dir.path(), header, s.axes[static_cast<std::size_t>(i)].id,
+                                     a.gt.has_value(), writeInput(s, e, i));
         QCOMPARE(c.u.size(), core.u.size());
         const double du = maxDifference(c.u, core.u), dy = maxDifference(c.y, core.y);
         qInfo("axis %d: %zu samples, max |du| %.3g V, max |dy| %.3g mm", i, c.u.size(), du, dy);
@@ -570,13 +587,13 @@ void TstFirmwareLoop::floatStaysWithinTheDerivedBound() {
         QVERIFY(a.ok && a.digital);
         const SimulationResult& core = a.digital->run.result;
         QCOMPARE(std::count(core.clipped.begin(), core.clipped.end(), true), 0);
-        const LoopRun c = runHarness(dir.path(), header, s.axes[static_cast<std::size_t>(i)].id, a.gt.has_value(),
-                                     writeInput(s, e, i));
+        const LoopRun c = runHarness(dir.path(), header, s.axes[static_cast<std::size_t>(i)].id,
+                                     a.gt.has_value(), writeInput(s, e, i));
         QCOMPARE(c.u.size(), core.u.size());
         const double du = maxDifference(c.u, core.u), dy = maxDifference(c.y, core.y);
         const auto bound = floatBound(s, e, i);
-        qInfo("axis %d float: max |dy| %.3g mm (bound %.3g), max |du| %.3g V (bound %.3g)", i, dy, bound[0], du,
-              bound[1]);
+        qInfo("axis %d float: max |dy| %.3g mm (bound %.3g), max |du| %.3g V (bound %.3g)", i, dy,
+              bound[0], du, bound[1]);
         QVERIFY(dy > 0.0); // it is float: the runs differ
         QVERIFY2(dy <= bound[0], qPrintable(QString("dy %1 > bound %2").arg(dy).arg(bound[0])));
         QVERIFY2(du <= bound[1], qPrintable(QString("du %1 > bound %2").arg(du).arg(bound[1])));

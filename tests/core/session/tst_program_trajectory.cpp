@@ -192,23 +192,26 @@ void TstProgramTrajectory::ballbarProgramCirclesAreFound_data() {
     QTest::addColumn<int>("opposite");
     QTest::addColumn<int>("oppositeEnd");
     QTest::addColumn<QString>("note"); // a part of the note, empty: no note
-    const int cw = int(test::kBallbarClockwiseSegment), ccw = int(test::kBallbarCounterClockwiseSegment);
+    const int cw = int(test::kBallbarClockwiseSegment),
+              ccw = int(test::kBallbarCounterClockwiseSegment);
     QTest::newRow("clockwise and counter-clockwise with feed-in arcs")
         << QString(test::kBallbarProgram) << cw << cw + 1 << ccw << ccw + 1 << QString();
     QTest::newRow("one direction with a feed-in arc")
         << QString("G0 X15 Y0\nG2 X25 Y0 I5 J0 F120\nG2 X25 Y0 I-25 J0\n") << 2 << 3 << -1 << -1
-        << QString("the program runs its full circle (line 3) one way only: no circular hysteresis H");
+        << QString(
+               "the program runs its full circle (line 3) one way only: no circular hysteresis H");
     QTest::newRow("two clockwise circles")
         << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG2 X25 Y0 I-25 J0\n") << 1 << 2 << -1 << -1
         << QString("none of the program's 2 full circles runs the circle of line 2 the other way");
     QTest::newRow("the other way on another radius")
-        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG1 X26\nG3 X26 Y0 I-26 J0\n") << 1 << 2 << -1 << -1
-        << QString("none of the program's 2 full circles");
+        << QString("G0 X25 Y0\nG2 X25 Y0 I-25 J0 F120\nG1 X26\nG3 X26 Y0 I-26 J0\n") << 1 << 2 << -1
+        << -1 << QString("none of the program's 2 full circles");
     QTest::newRow("three circles")
-        << QString(test::kBallbarProgram) + "G1 X25 Y0\nG2 X25 Y0 I-25 J0\n" << cw << cw + 1 << ccw << ccw + 1
+        << QString(test::kBallbarProgram) + "G1 X25 Y0\nG2 X25 Y0 I-25 J0\n"
+        << cw << cw + 1 << ccw << ccw + 1
         << QString("the program holds 3 full circles: the figures are those of line 4 and line 7");
-    QTest::newRow("no full circle") << QString("G1 X10 F600\nG2 X20 Y0 I5 J0\n") << -1 << -1 << -1 << -1
-                                    << QString();
+    QTest::newRow("no full circle")
+        << QString("G1 X10 F600\nG2 X20 Y0 I5 J0\n") << -1 << -1 << -1 << -1 << QString();
     // Full circles written as consecutive arcs on one centre and radius, turning one way.
     QTest::newRow("semicircles clockwise, quadrants counter-clockwise")
         << QString(test::kBallbarArcsProgram) << int(test::kBallbarArcsClockwiseBegin)
@@ -219,31 +222,37 @@ void TstProgramTrajectory::ballbarProgramCirclesAreFound_data() {
                    "G3 X0 Y-25 I25 J0\nG3 X25 Y0 I0 J25\n")
         << 1 << 2 << 2 << 6 << QString();
     QTest::newRow("three quadrants are no circle")
-        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG1 X25 Y0\n")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG1 "
+                   "X25 Y0\n")
         << -1 << -1 << -1 << -1 << QString();
     // Four quadrants whose last ends one unit of the last digit (0.001 mm) past or short of the
     // start (within the reader's end tolerance of 0.002 mm): 4e-5 rad off one turn.
     QTest::newRow("quadrants ending 0.001 mm past the start are no circle")
-        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG3 X25 Y0.001 I0 J25\n")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG3 "
+                   "X25 Y0.001 I0 J25\n")
         << -1 << -1 << -1 << -1 << QString();
     QTest::newRow("quadrants ending 0.001 mm short of the start are no circle")
-        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG3 X25 Y-0.001 I0 J25\n")
+        << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\nG3 "
+                   "X25 Y-0.001 I0 J25\n")
         << -1 << -1 << -1 << -1 << QString();
     // Two clockwise semicircles of radius 25 about (0, 0) and (-50, 0): an S whose sweeps add up
     // to one turn, but no circle.
     QTest::newRow("arcs on different centres are not joined")
-        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG2 X-75 Y0 I-25 J0\n") << -1 << -1 << -1 << -1
-        << QString();
+        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG2 X-75 Y0 I-25 J0\n") << -1 << -1 << -1
+        << -1 << QString();
     QTest::newRow("a semicircle and back is no circle")
-        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG3 X25 Y0 I25 J0\n") << -1 << -1 << -1 << -1 << QString();
+        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG3 X25 Y0 I25 J0\n") << -1 << -1 << -1 << -1
+        << QString();
     QTest::newRow("a rapid between semicircles ends the run")
-        << QString("G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG0 X-25 Y0.5\nG0 X-25 Y0\nG2 X25 Y0 I25 J0\n") << -1 << -1
-        << -1 << -1 << QString();
+        << QString(
+               "G0 X25 Y0\nG2 X-25 Y0 I-25 J0 F120\nG0 X-25 Y0.5\nG0 X-25 Y0\nG2 X25 Y0 I25 J0\n")
+        << -1 << -1 << -1 << -1 << QString();
     // More than a turn in a run: the circle is the first whole turn, the rest a new run.
     QTest::newRow("five quadrants: the first four")
         << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X-25 Y0 I0 J-25\nG3 X0 Y-25 I25 J0\n"
                    "G3 X25 Y0 I0 J25\nG3 X0 Y25 I-25 J0\n")
-        << 1 << 5 << -1 << -1 << QString("the program runs its full circle (lines 2-5) one way only");
+        << 1 << 5 << -1 << -1
+        << QString("the program runs its full circle (lines 2-5) one way only");
     QTest::newRow("a quarter on the circle, then a full-circle arc: the full-circle arc")
         << QString("G0 X25 Y0\nG3 X0 Y25 I-25 J0 F120\nG3 X0 Y25 I0 J-25\n") << 2 << 3 << -1 << -1
         << QString("the program runs its full circle (line 3) one way only");
@@ -253,10 +262,12 @@ void TstProgramTrajectory::ballbarProgramCirclesAreFound_data() {
                    "G2 X-25 Y0 I-12.5 J21.650635094610966\n")
         << 2 << 5 << -1 << -1 << QString("(lines 3-5)");
     QTest::newRow("eight quadrants: two circles one way")
-        << QString("G0 X25 Y0\nG2 X0 Y-25 I-25 J0 F120\nG2 X-25 Y0 I0 J25\nG2 X0 Y25 I25 J0\nG2 X25 Y0 I0 J-25\n"
+        << QString("G0 X25 Y0\nG2 X0 Y-25 I-25 J0 F120\nG2 X-25 Y0 I0 J25\nG2 X0 Y25 I25 J0\nG2 "
+                   "X25 Y0 I0 J-25\n"
                    "G2 X0 Y-25 I-25 J0\nG2 X-25 Y0 I0 J25\nG2 X0 Y25 I25 J0\nG2 X25 Y0 I0 J-25\n")
         << 1 << 5 << -1 << -1
-        << QString("none of the program's 2 full circles runs the circle of lines 2-5 the other way");
+        << QString(
+               "none of the program's 2 full circles runs the circle of lines 2-5 the other way");
 }
 
 void TstProgramTrajectory::ballbarProgramCirclesAreFound() {
@@ -271,7 +282,8 @@ void TstProgramTrajectory::ballbarProgramCirclesAreFound() {
     QCOMPARE(c.first ? int(c.first->end) : -1, firstEnd);
     QCOMPARE(c.opposite ? int(c.opposite->begin) : -1, opposite);
     QCOMPARE(c.opposite ? int(c.opposite->end) : -1, oppositeEnd);
-    QVERIFY2(note.isEmpty() ? c.note.empty() : QString::fromStdString(c.note).contains(note), c.note.c_str());
+    QVERIFY2(note.isEmpty() ? c.note.empty() : QString::fromStdString(c.note).contains(note),
+             c.note.c_str());
 }
 
 void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation_data() {
@@ -283,10 +295,11 @@ void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation_data() {
     QTest::addColumn<int>("ccwEnd");
     QTest::addColumn<int>("cwLine");
     QTest::addColumn<int>("ccwLine");
-    const int cw = int(test::kBallbarClockwiseSegment), ccw = int(test::kBallbarCounterClockwiseSegment);
-    QTest::newRow("each circle one arc") << QString(test::kBallbarProgram) << cw << cw + 1 << ccw << ccw + 1
-                                         << int(test::kBallbarClockwiseLine)
-                                         << int(test::kBallbarCounterClockwiseLine);
+    const int cw = int(test::kBallbarClockwiseSegment),
+              ccw = int(test::kBallbarCounterClockwiseSegment);
+    QTest::newRow("each circle one arc")
+        << QString(test::kBallbarProgram) << cw << cw + 1 << ccw << ccw + 1
+        << int(test::kBallbarClockwiseLine) << int(test::kBallbarCounterClockwiseLine);
     QTest::newRow("semicircles and quadrants")
         << QString(test::kBallbarArcsProgram) << int(test::kBallbarArcsClockwiseBegin)
         << int(test::kBallbarArcsClockwiseEnd) << int(test::kBallbarArcsCounterClockwiseBegin)
@@ -321,7 +334,8 @@ void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation() {
         const int segment = int(trace.profile.segment[k]);
         const bool cw = segment >= cwBegin && segment < cwEnd;
         if (!cw && !(segment >= ccwBegin && segment < ccwEnd)) {
-            trace.y[k] += 1.0; // the feed-in and feed-out arcs: far off, and left out of the figures
+            trace.y[k] +=
+                1.0; // the feed-in and feed-out arcs: far off, and left out of the figures
             continue;
         }
         const double r = std::hypot(trace.x[k], trace.y[k]);

@@ -13,9 +13,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <numbers>
-#include <cstring>
 #include <vector>
 
 using namespace xyt;
@@ -98,7 +98,9 @@ void TstSessionEvaluation::axesDoNotDependOnTheThread_data() {
 
 void TstSessionEvaluation::axesDoNotDependOnTheThread() {
     QFETCH(int, which);
-    const Session s = which == 0 ? Session::paperDefault() : which == 1 ? quantizedSession() : ppCircleSession();
+    const Session s = which == 0   ? Session::paperDefault()
+                      : which == 1 ? quantizedSession()
+                                   : ppCircleSession();
     const SessionEvaluation e = evaluateSession(s);
     for (int i = 0; i < 2; ++i) {
         const AxisEvaluation& a = e.axes[static_cast<std::size_t>(i)];
@@ -117,9 +119,10 @@ void TstSessionEvaluation::axesDoNotDependOnTheThread() {
 
 bool sameCheck(const SpecificationCheck& a, const SpecificationCheck& b) {
     return a.stable == b.stable && a.settlingTime == b.settlingTime && a.overshoot == b.overshoot &&
-           a.noSaturation == b.noSaturation && a.trackingError == b.trackingError && a.settle == b.settle &&
-           a.settleApplies == b.settleApplies && a.phaseMargin == b.phaseMargin &&
-           a.gainMargin == b.gainMargin && a.marginsApply == b.marginsApply;
+           a.noSaturation == b.noSaturation && a.trackingError == b.trackingError &&
+           a.settle == b.settle && a.settleApplies == b.settleApplies &&
+           a.phaseMargin == b.phaseMargin && a.gainMargin == b.gainMargin &&
+           a.marginsApply == b.marginsApply;
 }
 
 void TstSessionEvaluation::verdictIsThatOfTheRunThatWillHappen() {
@@ -132,9 +135,9 @@ void TstSessionEvaluation::verdictIsThatOfTheRunThatWillHappen() {
     const AxisEvaluation a = evaluateAxis(s, 0);
     QVERIFY2(a.ok, a.error.c_str());
     QVERIFY(a.digital && a.implementationCheck);
-    QVERIFY(a.designCheck.trackingError);                 // the design: micrometres of error
-    QVERIFY(!a.implementationCheck->trackingError);       // the implementation: stalls
-    QVERIFY(a.digital->metrics.maxAbsError > 100.0);      // mm; the issue measured 228 mm
+    QVERIFY(a.designCheck.trackingError);            // the design: micrometres of error
+    QVERIFY(!a.implementationCheck->trackingError);  // the implementation: stalls
+    QVERIFY(a.digital->metrics.maxAbsError > 100.0); // mm; the issue measured 228 mm
     QVERIFY(a.digital->metrics.saturated);
     QVERIFY(!a.check.trackingError && !a.check.noSaturation && !a.check.allPassed());
     QVERIFY(a.designCheck.settle && !a.check.settle);
@@ -165,7 +168,8 @@ void TstSessionEvaluation::hugePlantGainNamesThePlantGain() {
     QVERIFY(!a.ok);
     QCOMPARE(QString::fromStdString(a.errorField), QString("axes[1].gt.plant.k0"));
     const QString error = QString::fromStdString(a.error);
-    QVERIFY2(error.startsWith("plant gain k0 = 1e+308 is out of range with kp = 460.852"), qPrintable(error));
+    QVERIFY2(error.startsWith("plant gain k0 = 1e+308 is out of range with kp = 460.852"),
+             qPrintable(error));
     QVERIFY2(error.contains("kp k0 = inf"), qPrintable(error));
     // A huge kp on the paper's plant is still kp's doing (k0 = 24.44).
     s.axes[1].gt.plant.k0 = 24.44;
@@ -186,46 +190,44 @@ void TstSessionEvaluation::refusalNamesTheField_data() {
     QTest::addColumn<QString>("field");
     QTest::addColumn<bool>("runRefused");
     QTest::addColumn<QString>("reason");
-    QTest::newRow("step not > 0") << SessionEdit([](Session& s) { s.trajectory.dtSeconds = 0.0; }) << 0
-                                  << "trajectory.dt" << true << "must be greater than zero";
+    QTest::newRow("step not > 0") << SessionEdit([](Session& s) { s.trajectory.dtSeconds = 0.0; })
+                                  << 0 << "trajectory.dt" << true << "must be greater than zero";
     QTest::newRow("set duration beyond the sample limit")
-        << SessionEdit([](Session& s) { s.trajectory.durationSeconds = 1e12; }) << 0 << "trajectory.duration"
-        << true << "needs 1e+14 samples at this dt";
+        << SessionEdit([](Session& s) { s.trajectory.durationSeconds = 1e12; }) << 0
+        << "trajectory.duration" << true << "needs 1e+14 samples at this dt";
     QTest::newRow("set duration shorter than the step: one sample")
-        << SessionEdit([](Session& s) { s.trajectory.durationSeconds = 0.005; }) << 1 << "trajectory.duration"
-        << true << "gives a single sample (step 0.01 s, duration 0.005 s)";
+        << SessionEdit([](Session& s) { s.trajectory.durationSeconds = 0.005; }) << 1
+        << "trajectory.duration" << true << "gives a single sample (step 0.01 s, duration 0.005 s)";
     QTest::newRow("pole-placement Ts longer than the run: one sample")
         << SessionEdit([](Session& s) {
                s.axes[0].method = DesignMethod::PolePlacementZpetc;
                s.axes[0].pp.tsSeconds = 1000.0;
                s.trajectory.durationSeconds = 600.0;
            })
-        << 0 << "trajectory.duration" << true << "gives a single sample (step 1000 s, duration 600 s)";
-    QTest::newRow("pole-placement Ts not > 0")
-        << SessionEdit([](Session& s) {
-               s.axes[1].method = DesignMethod::PolePlacementZpetc;
-               s.axes[1].pp.tsSeconds = -0.07;
-           })
-        << 1 << "ts" << false << "must be greater than zero";
+        << 0 << "trajectory.duration" << true
+        << "gives a single sample (step 1000 s, duration 600 s)";
+    QTest::newRow("pole-placement Ts not > 0") << SessionEdit([](Session& s) {
+        s.axes[1].method = DesignMethod::PolePlacementZpetc;
+        s.axes[1].pp.tsSeconds = -0.07;
+    }) << 1 << "ts" << false << "must be greater than zero";
     QTest::newRow("cubic end not a number")
-        << SessionEdit([](Session& s) { s.trajectory.xf = std::nan(""); }) << 0 << "trajectory.cubic.xf" << true
-        << "must be a number, got NaN";
-    QTest::newRow("circle radius not > 0")
-        << SessionEdit([](Session& s) {
-               s.trajectory.kind = TrajectoryKind::Circle;
-               s.trajectory.radius = -1.0;
-           })
-        << 1 << "trajectory.circle.radius" << true << "must be greater than zero";
+        << SessionEdit([](Session& s) { s.trajectory.xf = std::nan(""); }) << 0
+        << "trajectory.cubic.xf" << true << "must be a number, got NaN";
+    QTest::newRow("circle radius not > 0") << SessionEdit([](Session& s) {
+        s.trajectory.kind = TrajectoryKind::Circle;
+        s.trajectory.radius = -1.0;
+    }) << 1 << "trajectory.circle.radius" << true
+                                           << "must be greater than zero";
     // An unreadable program has no run time (0 s): it was refused as "trajectory.dt gives a
     // single sample", naming the step instead of the program.
-    QTest::newRow("G-code program unreadable")
-        << SessionEdit([](Session& s) {
-               s.trajectory.kind = TrajectoryKind::Gcode;
-               s.trajectory.gcode.program = "G1 X1 F60\nG5 X2\n";
-           })
-        << 0 << "trajectory.gcode.program" << true << "line 2";
+    QTest::newRow("G-code program unreadable") << SessionEdit([](Session& s) {
+        s.trajectory.kind = TrajectoryKind::Gcode;
+        s.trajectory.gcode.program = "G1 X1 F60\nG5 X2\n";
+    }) << 0 << "trajectory.gcode.program" << true
+                                               << "line 2";
     QTest::newRow("actuator limit not > 0: the axis, not the run")
-        << SessionEdit([](Session& s) { s.umaxVolts = 0.0; }) << 0 << "umax" << false << "must be greater than zero";
+        << SessionEdit([](Session& s) { s.umaxVolts = 0.0; }) << 0 << "umax" << false
+        << "must be greater than zero";
     QTest::newRow("kp not > 0: the axis, not the run")
         << SessionEdit([](Session& s) { s.axes[1].gt.kp = -1.0; }) << 1 << "axes[1].gt.kp" << false
         << "must be greater than zero";
@@ -301,7 +303,8 @@ double settleEstimateByRule(const Session& session) {
 
 void TstSessionEvaluation::settleEstimateExtendsTheCubic() {
     // Automatic cubic: tf + 1.5 x the settle estimate + a tenth of the move, under the cap (the
-    // default wn = 2 rad/s needs longer than the cap; at wn = 5 rad/s both axes settle well inside).
+    // default wn = 2 rad/s needs longer than the cap; at wn = 5 rad/s both axes settle well
+    // inside).
     Session s = Session::paperDefault();
     for (AxisSettings& a : s.axes)
         a.gt.omegaNRadPerSec = 5.0;
@@ -370,7 +373,8 @@ void TstSessionEvaluation::moveShorterThanTheStepIsRefused() {
     for (const AxisEvaluation& a : e.axes) {
         QVERIFY(!a.ok && a.runRefused);
         QCOMPARE(QString::fromStdString(a.errorField), QString("trajectory.dt"));
-        QVERIFY2(a.error.find("gives a single sample (step 0.01 s, duration 0.005 s)") != std::string::npos,
+        QVERIFY2(a.error.find("gives a single sample (step 0.01 s, duration 0.005 s)") !=
+                     std::string::npos,
                  a.error.c_str());
     }
 }

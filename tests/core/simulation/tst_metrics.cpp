@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Tracking metrics and step-response figures against closed forms and scipy
 // (tests/data/gt_stepinfo.csv, see tests/data/README.md).
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "core/simulation/metrics.h"
-#include "tests/support/reference_data.h"
 #include "tests/support/core_checks.h"
+#include "tests/support/reference_data.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -59,7 +59,8 @@ void TstMetrics::rmsOfASine() {
     XYT_COMPARE_NEAR(xyt::rootMeanSquare(v), 3.0 / std::sqrt(2.0), 1e-13, 0.0);
     QCOMPARE(xyt::rootMeanSquare({}), 0.0);
     XYT_COMPARE_NEAR(xyt::rootMeanSquare({-2.0, 2.0}), 2.0, 1e-15, 0.0);
-    XYT_COMPARE_NEAR(xyt::trackingMetrics(runWithError(v, 0.1)).rmse, 3.0 / std::sqrt(2.0), 1e-13, 0.0);
+    XYT_COMPARE_NEAR(xyt::trackingMetrics(runWithError(v, 0.1)).rmse, 3.0 / std::sqrt(2.0), 1e-13,
+                     0.0);
 }
 
 void TstMetrics::itaeOfARampError() {
@@ -120,7 +121,8 @@ void TstMetrics::firstOrderSettling() {
     XYT_COMPARE_NEAR(s.settlingTimeSeconds, tau * std::log(50.0), 1e-8, 0.0);
     QCOMPARE(s.overshootPct, 0.0);
     // A 5 % band: tau ln(20).
-    XYT_COMPARE_NEAR(xyt::stepCharacteristics(g, 0.05).settlingTimeSeconds, tau * std::log(20.0), 1e-8, 0.0);
+    XYT_COMPARE_NEAR(xyt::stepCharacteristics(g, 0.05).settlingTimeSeconds, tau * std::log(20.0),
+                     1e-8, 0.0);
 }
 
 void TstMetrics::secondOrderOvershoot_data() {
@@ -165,7 +167,8 @@ void TstMetrics::gtClosedLoopsAgainstScipy_data() {
     QVERIFY2(table.rows.size() == 2, "tests/data/gt_stepinfo.csv: expected 2 rows");
     for (std::size_t i = 0; i < table.rows.size(); ++i)
         for (const int samples : {4000, 400000})
-            QTest::newRow(qPrintable(QString("scipy residues: %1, %2 samples").arg(table.rows[i][0]).arg(samples)))
+            QTest::newRow(qPrintable(
+                QString("scipy residues: %1, %2 samples").arg(table.rows[i][0]).arg(samples)))
                 << table.rows[i][0] << samples << table.number(i, "settling_time")
                 << table.number(i, "overshoot_pct") << table.number(i, "peak_time");
 }
@@ -210,11 +213,15 @@ void TstMetrics::errorsNameTheField() {
     const TransferFunction g = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
     QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, 0.0); }), QString("band"));
     QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, 1.0); }), QString("band"));
-    QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, std::nan("")); }), QString("band"));
+    QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, std::nan("")); }),
+             QString("band"));
     QCOMPARE(invalidInputField([&] { xyt::stepCharacteristics(g, 0.02, 10); }), QString("samples"));
-    QCOMPARE(invalidInputField([] { xyt::stepCharacteristics(TransferFunction::fromDescending({1.0, 0.0}, {1.0})); }),
+    QCOMPARE(invalidInputField([] {
+                 xyt::stepCharacteristics(TransferFunction::fromDescending({1.0, 0.0}, {1.0}));
+             }),
              QString("system"));
-    QCOMPARE(invalidInputField([] { xyt::trackingMetrics(SimulationResult{}); }), QString("result"));
+    QCOMPARE(invalidInputField([] { xyt::trackingMetrics(SimulationResult{}); }),
+             QString("result"));
     SimulationResult bad = runWithError({1.0, 2.0}, 0.1);
     bad.u.pop_back();
     QCOMPARE(invalidInputField([&] { xyt::trackingMetrics(bad); }), QString("result"));

@@ -2,10 +2,10 @@
 // Move-and-settle figures against closed forms of signals fed as a run.
 #include "core/model/errors.h"
 #include "core/simulation/move_settle.h"
+#include "core/simulation/trajectory.h"
 #include "core/study/design_sweep.h"
 #include "core/study/specification.h"
 #include "core/study/sweep_diagnosis.h"
-#include "core/simulation/trajectory.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -18,7 +18,8 @@ namespace {
 
 /// A run that reaches xf at tf and then has the error e(t) = E0 exp(-(t - tf)/tau) (y = xf - e),
 /// sampled at dt from 0 to duration; before tf the error is E0 (outside any window below E0).
-SimulationResult decayingRun(double xf, double tf, double e0, double tau, double dt, double duration) {
+SimulationResult decayingRun(double xf, double tf, double e0, double tau, double dt,
+                             double duration) {
     SimulationResult run;
     run.dtSeconds = dt;
     for (double t : sampleTimes(duration, dt)) {
@@ -55,7 +56,8 @@ void TstMoveSettle::firstOrderDecaySettlesAtTauLnE0OverW_data() {
     QTest::addColumn<double>("tau");
     QTest::addColumn<double>("window");
     // Closed form: |e| = E0 exp(-(t - tf)/tau) = w at t - tf = tau ln(E0 / w).
-    QTest::newRow("3.5 mm, tau 143 s, 0.01 mm (the lower base's slow mode)") << 3.5 << 143.0 << 0.01;
+    QTest::newRow("3.5 mm, tau 143 s, 0.01 mm (the lower base's slow mode)")
+        << 3.5 << 143.0 << 0.01;
     QTest::newRow("negative error -2 mm, tau 10 s, 0.1 mm") << -2.0 << 10.0 << 0.1;
     QTest::newRow("1 mm, tau 0.5 s, 0.001 mm") << 1.0 << 0.5 << 0.001;
 }
@@ -93,11 +95,14 @@ void TstMoveSettle::overshootOfTheFinalPositionInTheDirectionOfTravel() {
     // A negative error after tf is y beyond xf: for a move upwards the overshoot is max(-e) = 2;
     // the same run of a move downwards (x0 > xf) has y beyond xf on the near side: no overshoot.
     const SimulationResult run = decayingRun(50.0, 5.0, -2.0, 1.0, 0.01, 20.0);
-    XYT_COMPARE_NEAR(moveSettleMetrics(run, {0.0, 50.0, 5.0}, 0.01).finalOvershootMm, 2.0, 1e-12, 0.0);
-    XYT_COMPARE_NEAR(moveSettleMetrics(run, {80.0, 50.0, 5.0}, 0.01).finalOvershootMm, 0.0, 0.0, 0.0);
+    XYT_COMPARE_NEAR(moveSettleMetrics(run, {0.0, 50.0, 5.0}, 0.01).finalOvershootMm, 2.0, 1e-12,
+                     0.0);
+    XYT_COMPARE_NEAR(moveSettleMetrics(run, {80.0, 50.0, 5.0}, 0.01).finalOvershootMm, 0.0, 0.0,
+                     0.0);
     // Inside the window already at tf: settled at once (0 s).
     const SimulationResult small = decayingRun(50.0, 5.0, 0.005, 1.0, 0.01, 20.0);
-    XYT_COMPARE_NEAR(*moveSettleMetrics(small, {0.0, 50.0, 5.0}, 0.01).settleTimeSeconds, 0.0, 0.0, 0.0);
+    XYT_COMPARE_NEAR(*moveSettleMetrics(small, {0.0, 50.0, 5.0}, 0.01).settleTimeSeconds, 0.0, 0.0,
+                     0.0);
 }
 
 void TstMoveSettle::runEndingBeforeTheMoveHasNoSettle() {
@@ -108,18 +113,23 @@ void TstMoveSettle::runEndingBeforeTheMoveHasNoSettle() {
 }
 
 void TstMoveSettle::estimateIsTheClosedForm() {
-    XYT_COMPARE_NEAR(settleTimeEstimateSeconds(-3.5, 0.01, 0.007), std::log(350.0) / 0.007, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(settleTimeEstimateSeconds(-3.5, 0.01, 0.007), std::log(350.0) / 0.007, 1e-15,
+                     0.0);
     QCOMPARE(settleTimeEstimateSeconds(0.005, 0.01, 0.007), 0.0);
     QVERIFY(std::isinf(settleTimeEstimateSeconds(1.0, 0.01, 0.0))); // not asymptotically stable
-    XYT_COMPARE_NEAR(continuousDecayPerSecond({{-80.0, 0.0}, {-0.007, 0.0}, {-1.0, 2.0}}), 0.007, 1e-15, 0.0);
-    XYT_COMPARE_NEAR(discreteDecayPerSecond({{0.5, 0.0}, {0.0, 0.9}}, 0.1), -std::log(0.9) / 0.1, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(continuousDecayPerSecond({{-80.0, 0.0}, {-0.007, 0.0}, {-1.0, 2.0}}), 0.007,
+                     1e-15, 0.0);
+    XYT_COMPARE_NEAR(discreteDecayPerSecond({{0.5, 0.0}, {0.0, 0.9}}, 0.1), -std::log(0.9) / 0.1,
+                     1e-15, 0.0);
     // The automatic run: tf + 1.5 x estimate + a tenth of the move, cut to the cap tf + 3 moves.
     const double cap = automaticMoveCapSeconds(0.0, 130.0, 0.01);
     QCOMPARE(cap, 520.0);
-    XYT_COMPARE_NEAR(automaticMoveDurationSeconds(0.0, 130.0, 100.0, cap), 130.0 + 150.0 + 13.0, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(automaticMoveDurationSeconds(0.0, 130.0, 100.0, cap), 130.0 + 150.0 + 13.0,
+                     1e-15, 0.0);
     QCOMPARE(automaticMoveDurationSeconds(0.0, 130.0, 3000.0, cap), cap);
     // A fine dt: the extension stops at a million samples, never below tf.
-    XYT_COMPARE_NEAR(automaticMoveCapSeconds(0.0, 130.0, 2e-4), (kMaxAutomaticSamples - 2.0) * 2e-4, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(automaticMoveCapSeconds(0.0, 130.0, 2e-4), (kMaxAutomaticSamples - 2.0) * 2e-4,
+                     1e-15, 0.0);
     QCOMPARE(automaticMoveCapSeconds(0.0, 130.0, 1e-4), 130.0);
 }
 
@@ -177,7 +187,8 @@ void TstMoveSettle::evaluatorAccumulatesWhatTheStoredRunGives() {
     LoopSimulationOptions options;
     options.umaxVolts = 2.5;
     options.modelUnitsPerPositionUnit = preset.modelUnitsPerPositionUnit;
-    const SimulationResult run = simulateLoop(d.plant.transferFunction(), d.controller, problem.reference, options);
+    const SimulationResult run =
+        simulateLoop(d.plant.transferFunction(), d.controller, problem.reference, options);
     const MoveSettleMetrics stored = moveSettleMetrics(run, *problem.move, 0.01);
     QVERIFY(p.move.has_value());
     QVERIFY(stored.settled && p.move->settled);
@@ -185,7 +196,8 @@ void TstMoveSettle::evaluatorAccumulatesWhatTheStoredRunGives() {
     XYT_COMPARE_NEAR(p.move->finalErrorMm, stored.finalErrorMm, 1e-9, 1e-12);
     XYT_COMPARE_NEAR(p.move->finalOvershootMm, stored.finalOvershootMm, 1e-9, 0.0);
     QVERIFY(p.check.settleApplies && p.check.settle);
-    XYT_COMPARE_NEAR(criterionValue(p, SweepCriterion::Settle), *stored.settleTimeSeconds, 1e-9, 0.0);
+    XYT_COMPARE_NEAR(criterionValue(p, SweepCriterion::Settle), *stored.settleTimeSeconds, 1e-9,
+                     0.0);
     QCOMPARE(parseCriterion("settle"), std::optional(SweepCriterion::Settle));
     // A smaller limit fails it; rejudging with another window is refused (the run measured 0.01).
     DesignSweepResult r;
@@ -240,12 +252,15 @@ void TstMoveSettle::diagnosisRelaxesTheLimitsTheLeastViolatingDesignFails() {
     XYT_COMPARE_NEAR(d.relaxed->maxErrorPct, 2.2, 1e-12, 0.0);
     QVERIFY(d.relaxed->maxErrorPct >= 2.2);
     // Judged again under the relaxed specification, the least-violating design is feasible.
-    const SpecificationCheck again = checkSpecification(*d.relaxed, r.points[1].tracking, r.points[1].step);
+    const SpecificationCheck again =
+        checkSpecification(*d.relaxed, r.points[1].tracking, r.points[1].step);
     QVERIFY(again.allPassed());
     QVERIFY(!d.onEdge()); // nothing feasible, no best to place
-    QCOMPARE(QString::fromStdString(d.warnings[0]),
-             QString("the step overshoot limit (0 %) fails at every design of the grid; the smallest step "
-                     "overshoot found is 0.5 % at wn = 1 rad/s, kp = 20"));
+    QCOMPARE(
+        QString::fromStdString(d.warnings[0]),
+        QString(
+            "the step overshoot limit (0 %) fails at every design of the grid; the smallest step "
+            "overshoot found is 0.5 % at wn = 1 rad/s, kp = 20"));
 
     // Edge: with the overshoot limit at 3 % both computed points are feasible; the ITAE (0 for
     // both) ties at the lowest index, kp = 10: the lower end of the kp range.
@@ -255,9 +270,11 @@ void TstMoveSettle::diagnosisRelaxesTheLimitsTheLeastViolatingDesignFails() {
     const SweepDiagnosis edge = diagnoseSweep(r, spec);
     QVERIFY(edge.kpAtLowerEdge && !edge.kpAtUpperEdge);
     QVERIFY(!edge.wnAtLowerEdge && !edge.wnAtUpperEdge); // a single wn value has no edge
-    QCOMPARE(QString::fromStdString(edge.warnings.back()),
-             QString("kp = 10 (the best design) is the lower end of the kp range 10..30: the optimum may "
-                     "lie below; widen the kp range below 10"));
+    QCOMPARE(
+        QString::fromStdString(edge.warnings.back()),
+        QString(
+            "kp = 10 (the best design) is the lower end of the kp range 10..30: the optimum may "
+            "lie below; widen the kp range below 10"));
 }
 
 QTEST_APPLESS_MAIN(TstMoveSettle)

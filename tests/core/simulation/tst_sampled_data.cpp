@@ -42,7 +42,9 @@ SampledDataOptions ideal(double umax = kInf) {
     return o;
 }
 
-double maxOf(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
+double maxOf(const std::vector<double>& v) {
+    return *std::max_element(v.begin(), v.end());
+}
 
 bool hasWarning(const AxisEvaluation& a, const std::string& start) {
     return std::any_of(a.warnings.begin(), a.warnings.end(),
@@ -73,8 +75,8 @@ private slots:
 // multiplies a few numbers per sample: 1e-12 relative covers the round-off of 50 samples.
 void TestSampledData::integratorUnderProportionalControlClosedForm() {
     const double k = 2.0, kp = 3.0, ts = 0.05, r = 1.5;
-    const TransferFunction plant = TransferFunction(Polynomial::fromAscending({k}),
-                                                                Polynomial::fromAscending({0.0, 1.0}));
+    const TransferFunction plant =
+        TransferFunction(Polynomial::fromAscending({k}), Polynomial::fromAscending({0.0, 1.0}));
     const DigitalPi pi = digitalPi(kp, 0.0, ts, PiDiscretization::Tustin, AntiWindup::None);
     const SampledDataRun run = simulateSampledPi(plant, pi, std::vector<double>(50, r), ideal());
     for (std::size_t i = 0; i < run.result.y.size(); ++i) {
@@ -85,17 +87,19 @@ void TestSampledData::integratorUnderProportionalControlClosedForm() {
 }
 
 // Source: closed form. G(s) = 1/(tau s + 1) under ZOH: y[k+1] = a y[k] + (1 - a) u[k],
-// a = e^(-Ts/tau); with u = kp (r - y): y[k] = r kp/(1 + kp) (1 - lambda^k), lambda = a - (1 - a) kp.
-// With the plant in model units 0.001 per mm the positions are the same (the unit cancels).
+// a = e^(-Ts/tau); with u = kp (r - y): y[k] = r kp/(1 + kp) (1 - lambda^k), lambda = a - (1 - a)
+// kp. With the plant in model units 0.001 per mm the positions are the same (the unit cancels).
 void TestSampledData::firstOrderLagClosedForm() {
     const double tau = 0.4, kp = 2.5, ts = 0.02, r = 7.0;
-    const TransferFunction plant = TransferFunction(Polynomial::fromAscending({1.0}),
-                                                                Polynomial::fromAscending({1.0, tau}));
+    const TransferFunction plant =
+        TransferFunction(Polynomial::fromAscending({1.0}), Polynomial::fromAscending({1.0, tau}));
     const DigitalPi pi = digitalPi(kp, 0.0, ts, PiDiscretization::BackwardEuler, AntiWindup::Clamp);
-    const SampledDataRun run = simulateSampledPi(plant, pi, std::vector<double>(80, r), ideal(), 0.001);
+    const SampledDataRun run =
+        simulateSampledPi(plant, pi, std::vector<double>(80, r), ideal(), 0.001);
     const double a = std::exp(-ts / tau), lambda = a - (1.0 - a) * kp;
     for (std::size_t i = 0; i < run.result.y.size(); ++i) {
-        const double expected = r * kp / (1.0 + kp) * (1.0 - std::pow(lambda, static_cast<double>(i)));
+        const double expected =
+            r * kp / (1.0 + kp) * (1.0 - std::pow(lambda, static_cast<double>(i)));
         XYT_COMPARE_NEAR(run.result.y[i], expected, 1e-11, 1e-13);
     }
 }
@@ -106,7 +110,8 @@ void TestSampledData::firstOrderLagClosedForm() {
 // polynomial with a double root near z = 1: 1e-6 absolute.
 void TestSampledData::polesMatchTheTransferFunctionRoute() {
     const GtDesign d = presetDesign("lower-base");
-    for (const PiDiscretization method : {PiDiscretization::Tustin, PiDiscretization::BackwardEuler}) {
+    for (const PiDiscretization method :
+         {PiDiscretization::Tustin, PiDiscretization::BackwardEuler}) {
         const double ts = 0.01;
         const TransferFunction plant = d.plant.transferFunction();
         const DigitalPi pi = digitalPi(d.kp, d.ki, ts, method, AntiWindup::Clamp);
@@ -126,8 +131,12 @@ void TestSampledData::polesMatchTheTransferFunctionRoute() {
         sortRoots(expected);
         for (std::size_t i = 0; i < poles.size(); ++i)
             QVERIFY2(test::nearComplex(poles[i], expected[i], 0.0, 1e-6),
-                     qPrintable(QString("pole %1: %2%3j vs %4%5j").arg(i).arg(poles[i].real()).arg(poles[i].imag())
-                                    .arg(expected[i].real()).arg(expected[i].imag())));
+                     qPrintable(QString("pole %1: %2%3j vs %4%5j")
+                                    .arg(i)
+                                    .arg(poles[i].real())
+                                    .arg(poles[i].imag())
+                                    .arg(expected[i].real())
+                                    .arg(expected[i].imag())));
     }
 }
 
@@ -146,7 +155,10 @@ void TestSampledData::delayAddsPolesAtTheOrigin() {
         for (const auto& q : poles)
             best = std::min(best, std::abs(q - z));
         QVERIFY2(best < 1e-3 * std::abs(1.0 - z) + 1e-9,
-                 qPrintable(QString("mapped pole %1 %2: nearest digital pole %3 away").arg(z.real()).arg(z.imag()).arg(best)));
+                 qPrintable(QString("mapped pole %1 %2: nearest digital pole %3 away")
+                                .arg(z.real())
+                                .arg(z.imag())
+                                .arg(best)));
     }
 }
 
@@ -163,20 +175,22 @@ void TestSampledData::convergesToTheContinuousLoopAtFirstOrder() {
     LoopSimulationOptions options;
     options.dtSeconds = fine;
     options.modelUnitsPerPositionUnit = preset.modelUnitsPerPositionUnit;
-    const SimulationResult continuous =
-        simulateLoop(plant, d.controller, cubicReference(0.0, 600.0, 130.0, duration, fine), options);
+    const SimulationResult continuous = simulateLoop(
+        plant, d.controller, cubicReference(0.0, 600.0, 130.0, duration, fine), options);
     std::vector<double> differences;
     for (const double ts : {0.02, 0.01, 0.005}) {
         const DigitalPi pi = digitalPi(d.kp, d.ki, ts, PiDiscretization::Tustin, AntiWindup::Clamp);
-        const SampledDataRun run = simulateSampledPi(plant, pi, cubicReference(0.0, 600.0, 130.0, duration, ts),
-                                                     ideal(), preset.modelUnitsPerPositionUnit);
+        const SampledDataRun run =
+            simulateSampledPi(plant, pi, cubicReference(0.0, 600.0, 130.0, duration, ts), ideal(),
+                              preset.modelUnitsPerPositionUnit);
         const auto stride = static_cast<std::size_t>(std::lround(ts / fine));
         double worst = 0.0;
         for (std::size_t k = 0; k < run.result.y.size(); ++k)
             worst = std::max(worst, std::abs(run.result.y[k] - continuous.y[k * stride]));
         differences.push_back(worst);
     }
-    qInfo("max |y_digital - y_continuous|: %.6g %.6g %.6g mm", differences[0], differences[1], differences[2]);
+    qInfo("max |y_digital - y_continuous|: %.6g %.6g %.6g mm", differences[0], differences[1],
+          differences[2]);
     for (std::size_t i = 0; i + 1 < differences.size(); ++i) {
         const double ratio = differences[i] / differences[i + 1];
         QVERIFY2(ratio > 1.8 && ratio < 2.2, qPrintable(QString("ratio %1").arg(ratio)));
@@ -197,10 +211,12 @@ void TestSampledData::antiWindupLowersTheOvershootOfASaturatedMove() {
         const DigitalPi pi = digitalPi(d.kp, d.ki, 0.01, PiDiscretization::Tustin, aw);
         const SampledDataRun run = simulateSampledPi(d.plant.transferFunction(), pi, r, ideal(2.5),
                                                      preset.modelUnitsPerPositionUnit);
-        clipped = clipped || std::count(run.result.clipped.begin(), run.result.clipped.end(), true) > 0;
+        clipped =
+            clipped || std::count(run.result.clipped.begin(), run.result.clipped.end(), true) > 0;
         overshoot[static_cast<int>(aw)] = maxOf(run.result.y) - 600.0;
     }
-    qInfo("overshoot none %.4g, clamp %.4g, back-calculation %.4g mm", overshoot[0], overshoot[1], overshoot[2]);
+    qInfo("overshoot none %.4g, clamp %.4g, back-calculation %.4g mm", overshoot[0], overshoot[1],
+          overshoot[2]);
     QVERIFY(clipped);
     QVERIFY(overshoot[0] > 0.0);
     QVERIFY(overshoot[1] < 0.5 * overshoot[0]);
@@ -220,8 +236,8 @@ void TestSampledData::antiWindupChangesNothingWithoutSaturation() {
     std::vector<SampledDataRun> runs;
     for (const AntiWindup aw : {AntiWindup::None, AntiWindup::Clamp, AntiWindup::BackCalculation})
         runs.push_back(simulateSampledPi(d.plant.transferFunction(),
-                                         digitalPi(d.kp, d.ki, 0.01, PiDiscretization::Tustin, aw), r, o,
-                                         preset.modelUnitsPerPositionUnit));
+                                         digitalPi(d.kp, d.ki, 0.01, PiDiscretization::Tustin, aw),
+                                         r, o, preset.modelUnitsPerPositionUnit));
     QCOMPARE(std::count(runs[0].result.clipped.begin(), runs[0].result.clipped.end(), true), 0);
     for (const auto& run : runs) {
         QVERIFY(run.result.y == runs[0].result.y);
@@ -238,15 +254,17 @@ void TestSampledData::encoderAndDacGrids() {
     SampledDataOptions o = ideal(2.5);
     o.encoderResolution = 0.005;
     o.dacBits = 12;
-    const SampledDataRun run = simulateSampledPi(d.plant.transferFunction(),
-                                                 digitalPi(d.kp, d.ki, 0.01, PiDiscretization::Tustin, AntiWindup::Clamp),
-                                                 cubicReference(0.0, 600.0, 130.0, 160.0, 0.01), o,
-                                                 preset.modelUnitsPerPositionUnit);
+    const SampledDataRun run = simulateSampledPi(
+        d.plant.transferFunction(),
+        digitalPi(d.kp, d.ki, 0.01, PiDiscretization::Tustin, AntiWindup::Clamp),
+        cubicReference(0.0, 600.0, 130.0, 160.0, 0.01), o, preset.modelUnitsPerPositionUnit);
     const double lsb = 2.0 * 2.5 / 4096.0;
     for (std::size_t k = 0; k < run.measured.size(); ++k) {
         const double counts = run.measured[k] / o.encoderResolution;
-        QVERIFY2(std::abs(counts - std::round(counts)) < 1e-9, qPrintable(QString("k %1: %2 counts").arg(k).arg(counts, 0, 'g', 17)));
-        QVERIFY(std::abs(run.measured[k] - run.result.y[k]) <= 0.5 * o.encoderResolution * (1 + 1e-12));
+        QVERIFY2(std::abs(counts - std::round(counts)) < 1e-9,
+                 qPrintable(QString("k %1: %2 counts").arg(k).arg(counts, 0, 'g', 17)));
+        QVERIFY(std::abs(run.measured[k] - run.result.y[k]) <=
+                0.5 * o.encoderResolution * (1 + 1e-12));
         const double codes = run.applied[k] / lsb;
         QVERIFY(std::abs(codes - std::round(codes)) < 1e-9);
         QVERIFY(run.applied[k] >= -2.5 && run.applied[k] <= 2.5 - lsb);
@@ -254,7 +272,7 @@ void TestSampledData::encoderAndDacGrids() {
     // The quantizers alone: round half up, code clamp.
     QCOMPARE(encoderReading(0.0125, 0.005), 0.015);
     QCOMPARE(encoderReading(-0.0125, 0.005), -0.01);
-    QCOMPARE(dacOutput(10.0, 2, 2.5), 1.25);  // codes -2..1 of 2.5 V
+    QCOMPARE(dacOutput(10.0, 2, 2.5), 1.25); // codes -2..1 of 2.5 V
     QCOMPARE(dacOutput(-10.0, 2, 2.5), -2.5);
     QCOMPARE(dacOutput(0.3, 0, 2.5), 0.3);
 }
@@ -273,7 +291,8 @@ void TestSampledData::quantizationLimitCycleIsFoundAndWarned() {
     QVERIFY(x.ok);
     QVERIFY(x.digital != nullptr);
     QVERIFY(x.digital->limitCycle.has_value());
-    qInfo("limit cycle: %.4g mm peak to peak, %d turns", x.digital->limitCycle->peakToPeak, x.digital->limitCycle->turns);
+    qInfo("limit cycle: %.4g mm peak to peak, %d turns", x.digital->limitCycle->peakToPeak,
+          x.digital->limitCycle->turns);
     QVERIFY(x.digital->limitCycle->peakToPeak >= 0.05 - 1e-12); // at least one count
     QVERIFY(hasWarning(x, "a limit cycle at rest"));
     s.implementation.encoderResolutionMm = 0.0;
@@ -288,8 +307,9 @@ void TestSampledData::quantizationLimitCycleIsFoundAndWarned() {
 void TestSampledData::idealRstLoopIsTheDiscreteLoop() {
     const Session s = Session::paperDefault();
     const auto& pp = s.axes[1].pp;
-    const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending(pp.a), Polynomial::fromAscending(pp.b),
-                                                         Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
+    const PolePlacementDesign loop =
+        designPolePlacement(Polynomial::fromAscending(pp.a), Polynomial::fromAscending(pp.b),
+                            Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
     const ZpetcDesign zpetc = designZpetc(loop);
     const std::size_t n = 400;
     std::vector<double> r(n + static_cast<std::size_t>(zpetc.previewSteps));
@@ -308,8 +328,9 @@ void TestSampledData::idealRstLoopIsTheDiscreteLoop() {
     const auto poles = sampledRstLoopPoles(loop, 0);
     const auto designed = (loop.a * loop.f + loop.b * loop.g);
     QCOMPARE(static_cast<int>(poles.size()), designed.degree());
-    QVERIFY(std::any_of(poles.begin(), poles.end(),
-                        [&](auto z) { return test::nearComplex(z, {-pp.t1, 0.0}, 0.0, 1e-9); }));
+    QVERIFY(std::any_of(poles.begin(), poles.end(), [&](auto z) {
+        return test::nearComplex(z, {-pp.t1, 0.0}, 0.0, 1e-9);
+    }));
 }
 
 // Source: invariant (|z| >= 1 is unstable) and closed form. Braga et al.'s lower base with its PI
@@ -322,17 +343,22 @@ void TestSampledData::dampingWarningAtALongSampleTime() {
     const SessionEvaluation ok = evaluateSession(s);
     QVERIFY(ok.axes[0].digital != nullptr);
     QVERIFY(!hasWarning(ok.axes[0], "the digital loop at Ts"));
-    XYT_COMPARE_NEAR(ok.axes[0].digital->minDamping, ok.axes[0].digital->designMinDamping, 0.05, 0.0);
+    XYT_COMPARE_NEAR(ok.axes[0].digital->minDamping, ok.axes[0].digital->designMinDamping, 0.05,
+                     0.0);
     s.controllerTsSeconds = 2.0;
     const SessionEvaluation slow = evaluateSession(s);
     const AxisEvaluation& x = slow.axes[0];
-    qInfo("Ts 2 s: min damping %.4g against %.4g", x.digital->minDamping, x.digital->designMinDamping);
+    qInfo("Ts 2 s: min damping %.4g against %.4g", x.digital->minDamping,
+          x.digital->designMinDamping);
     QVERIFY(x.digital->minDamping < 0.8 * x.digital->designMinDamping);
     QVERIFY(hasWarning(x, "the digital loop at Ts = 2 s is much less damped"));
-    const TransferFunction integrator(Polynomial::fromAscending({2.0}), Polynomial::fromAscending({0.0, 1.0}));
+    const TransferFunction integrator(Polynomial::fromAscending({2.0}),
+                                      Polynomial::fromAscending({0.0, 1.0}));
     const DigitalPi p = digitalPi(3.0, 0.0, 0.5, PiDiscretization::Tustin, AntiWindup::Clamp);
     const auto poles = sampledPiLoopPoles(sampledPlant(integrator, 0.5), p, 0);
-    QVERIFY(std::any_of(poles.begin(), poles.end(), [](auto z) { return test::nearComplex(z, {-2.0, 0.0}, 0.0, 1e-12); }));
+    QVERIFY(std::any_of(poles.begin(), poles.end(), [](auto z) {
+        return test::nearComplex(z, {-2.0, 0.0}, 0.0, 1e-12);
+    }));
     const auto warning = digitalDampingWarning(poles, 1.0, 0.5);
     QVERIFY(warning.has_value());
     QVERIFY2(warning->find("is unstable") != std::string::npos, warning->c_str());
@@ -359,11 +385,14 @@ void TestSampledData::invalidOptionsNameTheField() {
     o = ideal();
     o.dacBits = 16; // a DAC needs a full scale
     QCOMPARE(field(o), QString("dac_bits"));
-    QCOMPARE(test::invalidInputField([] { digitalPi(1.0, 0.0, 0.01, PiDiscretization::Tustin, AntiWindup::BackCalculation); }),
+    QCOMPARE(test::invalidInputField([] {
+                 digitalPi(1.0, 0.0, 0.01, PiDiscretization::Tustin, AntiWindup::BackCalculation);
+             }),
              QString("tracking_time"));
     Session s = Session::paperDefault();
     s.implementation.dacBits = 40;
-    QCOMPARE(test::invalidInputField([&] { sessionSampledDataOptions(s); }), QString("implementation.dac_bits"));
+    QCOMPARE(test::invalidInputField([&] { sessionSampledDataOptions(s); }),
+             QString("implementation.dac_bits"));
 }
 
 QTEST_APPLESS_MAIN(TestSampledData)

@@ -1,20 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Closed-loop simulation with saturation: against the linear closed loop, Octave's lsim
 // (tests/data/gt_lsim_cubic.csv, see tests/data/README.md) and closed forms.
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
-#include "core/simulation/simulation.h"
+#include "core/model/errors.h"
 #include "core/model/state_space.h"
+#include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
-#include "tests/support/reference_data.h"
 #include "tests/support/core_checks.h"
+#include "tests/support/reference_data.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
 
 #include <algorithm>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 using xyt::LoopSimulationOptions;
@@ -80,7 +80,8 @@ void TstSimulation::noSaturationEqualsLinearClosedLoop() {
     const std::vector<double> r = cubicReference(160.0, dt);
     LoopSimulationOptions options;
     options.dtSeconds = dt;
-    const SimulationResult loop = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
+    const SimulationResult loop =
+        xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
     const std::vector<double> linear = xyt::simulateLinear(d.closedLoop, r, dt);
     QCOMPARE(loop.y.size(), r.size());
     QVERIFY(std::none_of(loop.clipped.begin(), loop.clipped.end(), [](bool c) { return c; }));
@@ -99,8 +100,10 @@ void TstSimulation::noSaturationEqualsLinearClosedLoop() {
 void TstSimulation::againstOctaveLsim_data() {
     QTest::addColumn<QString>("preset");
     QTest::addColumn<QString>("column");
-    QTest::newRow("Octave lsim, lower-base closed loop") << "lower-base" << "y_lower";
-    QTest::newRow("Octave lsim, upper-base closed loop") << "upper-base" << "y_upper";
+    QTest::newRow("Octave lsim, lower-base closed loop") << "lower-base"
+                                                         << "y_lower";
+    QTest::newRow("Octave lsim, upper-base closed loop") << "upper-base"
+                                                         << "y_upper";
 }
 
 void TstSimulation::againstOctaveLsim() {
@@ -135,20 +138,23 @@ void TstSimulation::reusedResultAllocatesNothing() {
     const std::vector<double> hard(3001, 50.0);
     SimulationResult kept;
     xyt::simulateLoopInto(d.plant.transferFunction(), d.controller, hard, options, kept);
-    const double* storage[] = {kept.t.data(), kept.r.data(), kept.y.data(), kept.e.data(), kept.u.data()};
+    const double* storage[] = {kept.t.data(), kept.r.data(), kept.y.data(), kept.e.data(),
+                               kept.u.data()};
     const auto same = [](const SimulationResult& a, const SimulationResult& b) {
-        return a.t == b.t && a.r == b.r && a.y == b.y && a.e == b.e && a.u == b.u && a.clipped == b.clipped &&
-               a.dtSeconds == b.dtSeconds && a.umaxVolts == b.umaxVolts;
+        return a.t == b.t && a.r == b.r && a.y == b.y && a.e == b.e && a.u == b.u &&
+               a.clipped == b.clipped && a.dtSeconds == b.dtSeconds && a.umaxVolts == b.umaxVolts;
     };
     QVERIFY(same(kept, xyt::simulateLoop(d.plant.transferFunction(), d.controller, hard, options)));
     QVERIFY(std::any_of(kept.clipped.begin(), kept.clipped.end(), [](bool c) { return c; }));
     options.modelUnitsPerPositionUnit = 0.001; // the paper's units: 0.33 V, never clipped
     const std::vector<double> gentle(2001, 5.0);
     xyt::simulateLoopInto(d.plant.transferFunction(), d.controller, gentle, options, kept);
-    const double* after[] = {kept.t.data(), kept.r.data(), kept.y.data(), kept.e.data(), kept.u.data()};
+    const double* after[] = {kept.t.data(), kept.r.data(), kept.y.data(), kept.e.data(),
+                             kept.u.data()};
     QVERIFY(std::equal(std::begin(storage), std::end(storage), std::begin(after)));
     QCOMPARE(kept.y.size(), gentle.size());
-    QVERIFY(same(kept, xyt::simulateLoop(d.plant.transferFunction(), d.controller, gentle, options)));
+    QVERIFY(
+        same(kept, xyt::simulateLoop(d.plant.transferFunction(), d.controller, gentle, options)));
     QVERIFY(std::none_of(kept.clipped.begin(), kept.clipped.end(), [](bool c) { return c; }));
 }
 
@@ -159,7 +165,8 @@ void TstSimulation::saturationNeverExceedsUmax() {
     LoopSimulationOptions options;
     options.umaxVolts = 2.5;
     const std::vector<double> r(3001, 50.0);
-    const SimulationResult run = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
+    const SimulationResult run =
+        xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
     QVERIFY(std::any_of(run.clipped.begin(), run.clipped.end(), [](bool c) { return c; }));
     for (std::size_t k = 0; k < r.size(); ++k) {
         QVERIFY(std::abs(run.u[k]) <= 2.5);
@@ -210,12 +217,14 @@ void TstSimulation::paperUnitsNeedOneThirdOfAVolt() {
     LoopSimulationOptions metres;
     metres.umaxVolts = 2.5;
     metres.modelUnitsPerPositionUnit = preset->modelUnitsPerPositionUnit;
-    const SimulationResult m = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, metres);
+    const SimulationResult m =
+        xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, metres);
     XYT_COMPARE_NEAR(m.u[6500], 0.001 * uMid, 0.02, 0.0);
     QVERIFY(std::none_of(m.clipped.begin(), m.clipped.end(), [](bool c) { return c; }));
     QVERIFY(maxAbs(m.u) < 0.4);
     LoopSimulationOptions millimetres; // no limit, model read in mm
-    const SimulationResult mm = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, millimetres);
+    const SimulationResult mm =
+        xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, millimetres);
     XYT_COMPARE_NEAR(mm.u[6500], uMid, 0.02, 0.0);
     QVERIFY(maxAbs(mm.u) > 300.0);
 }
@@ -228,14 +237,17 @@ void TstSimulation::initialOutputAtRest() {
     options.initialOutput = 25.0;
     options.modelUnitsPerPositionUnit = 0.001;
     const std::vector<double> r(2001, 25.0);
-    const SimulationResult run = xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
+    const SimulationResult run =
+        xyt::simulateLoop(d.plant.transferFunction(), d.controller, r, options);
     for (std::size_t k = 0; k < r.size(); ++k) {
         XYT_COMPARE_NEAR(run.y[k], 25.0, 0.0, 1e-9);
         XYT_COMPARE_NEAR(run.u[k], 0.0, 0.0, 1e-9);
     }
     // A plant without a pole at 0 cannot rest away from 0.
     const TransferFunction lag = TransferFunction::fromDescending({1.0}, {1.0, 1.0});
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(lag, d.controller, r, options); }), QString("initial_output"));
+    QCOMPARE(
+        xyt::test::invalidInputField([&] { xyt::simulateLoop(lag, d.controller, r, options); }),
+        QString("initial_output"));
 }
 
 void TstSimulation::unitScaleInvariance() {
@@ -283,22 +295,48 @@ void TstSimulation::errorsNameTheField() {
     const TransferFunction biproper = TransferFunction::fromDescending({1.0, 0.0}, {1.0, 1.0});
     const TransferFunction improper = TransferFunction::fromDescending({1.0, 0.0, 0.0}, {1.0, 1.0});
     const TransferFunction discrete = xyt::c2dZoh(g, 0.01);
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(biproper, c, r, ok); }), QString("plant"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(discrete, c, r, ok); }), QString("plant"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, improper, r, ok); }), QString("controller"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {}, ok); }), QString("reference"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {0.0, std::nan("")}, ok); }), QString("reference"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {0.0, kInf}, ok); }), QString("reference"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = 0.0; })); }), QString("dt"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = -1.0; })); }), QString("dt"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = 0.0; })); }), QString("umax"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = std::nan(""); })); }), QString("umax"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.initialOutput = kInf; })); }),
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(biproper, c, r, ok); }),
+             QString("plant"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(discrete, c, r, ok); }),
+             QString("plant"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, improper, r, ok); }),
+             QString("controller"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, {}, ok); }),
+             QString("reference"));
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::simulateLoop(g, c, {0.0, std::nan("")}, ok);
+             }),
+             QString("reference"));
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::simulateLoop(g, c, {0.0, kInf}, ok);
+             }),
+             QString("reference"));
+    QCOMPARE(xyt::test::invalidInputField(
+                 [&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = 0.0; })); }),
+             QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField(
+                 [&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.dtSeconds = -1.0; })); }),
+             QString("dt"));
+    QCOMPARE(xyt::test::invalidInputField(
+                 [&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = 0.0; })); }),
+             QString("umax"));
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = std::nan(""); }));
+             }),
+             QString("umax"));
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::simulateLoop(g, c, r, with([](auto& o) { o.initialOutput = kInf; }));
+             }),
              QString("initial_output"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLoop(g, c, r, with([](auto& o) { o.modelUnitsPerPositionUnit = 0.0; })); }),
+    QCOMPARE(xyt::test::invalidInputField([&] {
+                 xyt::simulateLoop(g, c, r,
+                                   with([](auto& o) { o.modelUnitsPerPositionUnit = 0.0; }));
+             }),
              QString("model_unit_scale"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(improper, r, 0.01); }), QString("system"));
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, {}, 0.01); }), QString("input"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(improper, r, 0.01); }),
+             QString("system"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, {}, 0.01); }),
+             QString("input"));
     QCOMPARE(xyt::test::invalidInputField([&] { xyt::simulateLinear(g, r, 0.0); }), QString("dt"));
     // Regression (fuzz_design, corpus crash-stiff-loop): k0 = 4.3e12 with a pole at -5.2e8 and a
     // stable closed loop. exp()'s scaling and squaring returned a finite step matrix with
@@ -306,11 +344,15 @@ void TstSimulation::errorsNameTheField() {
     // and a stable loop looked diverged. The loss is now detected (spectral radius of the step
     // matrix against e^{max Re(lambda) dt}) and refused naming dt, never a false divergence.
     const xyt::ThirdOrderPlant stiff{4346435546875.0, 523234558.10546875, 449378967.28515625};
-    const xyt::GtDesign sd = xyt::designGuilleminTruxal(stiff, 0.00050562896728515631, 1014.83154296875);
+    const xyt::GtDesign sd =
+        xyt::designGuilleminTruxal(stiff, 0.00050562896728515631, 1014.83154296875);
     QVERIFY(sd.stable);
     QCOMPARE(xyt::test::invalidInputField([&] {
-                 xyt::simulateLoop(stiff.transferFunction(), sd.controller, std::vector<double>(142, 1.0),
-                                   with([](auto& o) { o.dtSeconds = 1e-4; o.umaxVolts = kInf; }));
+                 xyt::simulateLoop(stiff.transferFunction(), sd.controller,
+                                   std::vector<double>(142, 1.0), with([](auto& o) {
+                                       o.dtSeconds = 1e-4;
+                                       o.umaxVolts = kInf;
+                                   }));
              }),
              QString("dt"));
 }

@@ -55,14 +55,16 @@ void TstStepResponse::firstOrderIsTheClosedForm() {
 }
 
 void TstStepResponse::underdampedSecondOrderIsTheClosedForm() {
-    // wn^2 / (s^2 + 2 zeta wn s + wn^2): y = 1 - e^{-zeta wn t} (cos wd t + zeta/sqrt(1-zeta^2) sin wd t).
+    // wn^2 / (s^2 + 2 zeta wn s + wn^2): y = 1 - e^{-zeta wn t} (cos wd t + zeta/sqrt(1-zeta^2) sin
+    // wd t).
     const double wn = 2.0, zeta = 0.3, wd = wn * std::sqrt(1.0 - zeta * zeta);
-    const StepResponseCurve c =
-        stepResponseCurve(TransferFunction::fromDescending({wn * wn}, {1.0, 2.0 * zeta * wn, wn * wn}), 15.0, 3000);
+    const StepResponseCurve c = stepResponseCurve(
+        TransferFunction::fromDescending({wn * wn}, {1.0, 2.0 * zeta * wn, wn * wn}), 15.0, 3000);
     for (std::size_t k = 0; k < c.t.size(); ++k) {
         const double t = c.t[k];
-        const double y = 1.0 - std::exp(-zeta * wn * t) *
-                                   (std::cos(wd * t) + zeta / std::sqrt(1.0 - zeta * zeta) * std::sin(wd * t));
+        const double y =
+            1.0 - std::exp(-zeta * wn * t) *
+                      (std::cos(wd * t) + zeta / std::sqrt(1.0 - zeta * zeta) * std::sin(wd * t));
         XYT_COMPARE_NEAR(c.y[k], y, 0.0, 1e-12); // round-off only, as above
     }
     // Its peak is the closed form too: 1 + exp(-pi zeta / sqrt(1 - zeta^2)) at pi / wd; the
@@ -77,8 +79,9 @@ void TstStepResponse::underdampedSecondOrderIsTheClosedForm() {
 void TstStepResponse::discreteLoopFollowsItsDifferenceEquation() {
     // y(k) = 1.2 y(k-1) - 0.5 y(k-2) + 0.1 u(k-1) + 0.05 u(k-2), u = 1 from k = 0, Ts = 0.05 s.
     const double ts = 0.05;
-    const TransferFunction g = TransferFunction::fromZInverse(Polynomial::fromAscending({0.0, 0.1, 0.05}),
-                                                              Polynomial::fromAscending({1.0, -1.2, 0.5}), ts);
+    const TransferFunction g =
+        TransferFunction::fromZInverse(Polynomial::fromAscending({0.0, 0.1, 0.05}),
+                                       Polynomial::fromAscending({1.0, -1.2, 0.5}), ts);
     const StepResponseCurve c = stepResponseCurve(g, 3.0);
     QCOMPARE(c.t.size(), std::size_t{61}); // ceil(3 / 0.05) + 1 samples, at the loop's own Ts
     double y1 = 0.0, y2 = 0.0;
@@ -93,10 +96,12 @@ void TstStepResponse::discreteLoopFollowsItsDifferenceEquation() {
 }
 
 void TstStepResponse::zpetcStepReachesOne() {
-    // Patrick, Ishak and Adnan, x axis, T = 1 - 0.2 z^-1, Ts = 0.07 s: the axis with ZPETC has DC gain 1.
-    const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
-                                                         Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
-                                                         Polynomial::fromAscending({1.0, -0.2}), 0.07);
+    // Patrick, Ishak and Adnan, x axis, T = 1 - 0.2 z^-1, Ts = 0.07 s: the axis with ZPETC has DC
+    // gain 1.
+    const PolePlacementDesign loop =
+        designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
+                            Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
+                            Polynomial::fromAscending({1.0, -0.2}), 0.07);
     const ZpetcDesign z = designZpetc(loop);
     const StepResponseCurve c = zpetcStepResponseCurve(loop, z, 2.0);
     QVERIFY(c.stepAtSeconds > 0.0);
@@ -109,7 +114,8 @@ void TstStepResponse::zpetcStepReachesOne() {
     double peak = 0.0;
     for (double y : c.y)
         peak = std::max(peak, y);
-    XYT_COMPARE_NEAR(std::max(0.0, (peak - st.finalValue) / st.finalValue * 100.0), st.overshootPct, 0.0, 1e-8);
+    XYT_COMPARE_NEAR(std::max(0.0, (peak - st.finalValue) / st.finalValue * 100.0), st.overshootPct,
+                     0.0, 1e-8);
 }
 
 void TstStepResponse::riseTimeInterpolatesBetweenSamples() {
@@ -152,13 +158,14 @@ void TstStepResponse::envelopeFlagsOvershootAndLateExcursions() {
     c.t = {0, 1, 2, 3, 4, 5, 6};
     c.y = {0, 0.5, 1.15, 0.97, 1.01, 0.975, NAN};
     StepEnvelope e;
-    e.maxOvershootPct = 10.0;   // bound 1.1
+    e.maxOvershootPct = 10.0;    // bound 1.1
     e.settlingTimeSeconds = 3.0; // from t = 4 on: |y - 1| <= 0.02
     QCOMPARE(e.overshootBound(), 1.1);
     const std::vector<bool> v = envelopeViolations(c, e);
     QCOMPARE(v, (std::vector<bool>{false, false, true, false, false, true, true}));
     // No limits: nothing but the non-finite sample.
-    QCOMPARE(envelopeViolations(c, StepEnvelope{}), (std::vector<bool>{false, false, false, false, false, false, true}));
+    QCOMPARE(envelopeViolations(c, StepEnvelope{}),
+             (std::vector<bool>{false, false, false, false, false, false, true}));
     StepEnvelope bad;
     bad.band = 0.0;
     QVERIFY_THROWS_EXCEPTION(InvalidInput, envelopeViolations(c, bad));
@@ -173,9 +180,9 @@ void TstStepResponse::horizonShowsTheTransient() {
     QCOMPARE(stepViewHorizonSeconds(st), 6.0);
     st.peakTimeSeconds = 5.0; // a peak within the transient is drawn
     QCOMPARE(stepViewHorizonSeconds(st), 7.5);
-    QCOMPARE(stepViewHorizonSeconds(st, 0.0, 100.0), 7.5);       // far limit: beyond the edge
+    QCOMPARE(stepViewHorizonSeconds(st, 0.0, 100.0), 7.5); // far limit: beyond the edge
     XYT_COMPARE_NEAR(stepViewHorizonSeconds(st, 0.0, 10.0), 11.5, 1e-15, 0.0); // near: in view
-    QCOMPARE(stepViewHorizonSeconds(st, 20.0), 20.0);              // a discrete loop's floor
+    QCOMPARE(stepViewHorizonSeconds(st, 20.0), 20.0); // a discrete loop's floor
     st.stable = false;
     QCOMPARE(stepViewHorizonSeconds(st), 1.0);
     QVERIFY_THROWS_EXCEPTION(InvalidInput, stepViewHorizonSeconds(st, -1.0));
@@ -185,7 +192,8 @@ void TstStepResponse::viewOfAContinuousLoop() {
     // omega_n^2 / (s^2 + 2 zeta omega_n s + omega_n^2), zeta = 0.5, omega_n = 2: the view is the
     // curve stepResponseCurve draws over the horizon the figures ask for, its rise the curve's,
     // and the envelope flags exactly the samples above the overshoot bound (16.3 % > 10 %).
-    const TransferFunction g(Polynomial::fromDescending({4.0}), Polynomial::fromDescending({1.0, 2.0, 4.0}));
+    const TransferFunction g(Polynomial::fromDescending({4.0}),
+                             Polynomial::fromDescending({1.0, 2.0, 4.0}));
     const StepCharacteristics st = stepCharacteristics(g);
     StepEnvelope limits;
     limits.maxOvershootPct = 10.0;
@@ -208,10 +216,12 @@ void TstStepResponse::viewOfAContinuousLoop() {
 }
 
 void TstStepResponse::viewOfAPolePlacementAxis() {
-    // Patrick, Ishak and Adnan's x axis: both curves, the one the axis runs first, drawn at the loop's Ts.
-    const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
-                                                         Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
-                                                         Polynomial::fromAscending({1.0, -0.2}), 0.07);
+    // Patrick, Ishak and Adnan's x axis: both curves, the one the axis runs first, drawn at the
+    // loop's Ts.
+    const PolePlacementDesign loop =
+        designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
+                            Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
+                            Polynomial::fromAscending({1.0, -0.2}), 0.07);
     const ZpetcDesign z = designZpetc(loop);
     const StepCharacteristics with = zpetcStepCharacteristics(loop, z);
     const StepView on = stepView(loop.closedLoop(), with, StepEnvelope{}, &loop, &z, true);
@@ -232,7 +242,8 @@ void TstStepResponse::viewOfAPolePlacementAxis() {
 
 void TstStepResponse::unstableLoopHasNoView() {
     // 1 / (s - 1): no step response to draw, and no figures to mark.
-    const TransferFunction g(Polynomial::fromDescending({1.0}), Polynomial::fromDescending({1.0, -1.0}));
+    const TransferFunction g(Polynomial::fromDescending({1.0}),
+                             Polynomial::fromDescending({1.0, -1.0}));
     const StepView v = stepView(g, stepCharacteristics(g), StepEnvelope{});
     QVERIFY(!v.stable);
     QVERIFY(v.curves.empty());

@@ -3,12 +3,12 @@
 // replaces: simulateLoop, then trackingMetrics and moveSettleMetrics on the stored run. The
 // source of every expected number is that scalar path; the claim is equality bit for bit
 // (the same exact FOH matrices and the same operations in the same order per lane).
-#include "core/simulation/tracking_batch.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/model/errors.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/simulation.h"
+#include "core/simulation/tracking_batch.h"
 #include "core/simulation/trajectory.h"
 
 #include <QTest>
@@ -26,7 +26,9 @@ using namespace xyt;
 
 namespace {
 
-std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+std::uint64_t bits(double v) {
+    return std::bit_cast<std::uint64_t>(v);
+}
 
 struct Case {
     std::vector<GtDesign> designs;
@@ -94,10 +96,13 @@ void TstTrackingBatch::equalsScalarLoopBitForBit() {
     const GtPreset plant = *findGtPreset("lower-base");
     for (const auto& [at, wn, kp] : {std::tuple{10, 40.0, 2.0}, std::tuple{20, 30.0, 5.0}}) {
         c.designs.insert(c.designs.begin() + at, designGuilleminTruxal(plant.plant, wn, kp));
-        c.modes.insert(c.modes.begin() + at, loopModes(plant.plant.transferFunction(), c.designs[static_cast<std::size_t>(at)].controller));
+        c.modes.insert(c.modes.begin() + at,
+                       loopModes(plant.plant.transferFunction(),
+                                 c.designs[static_cast<std::size_t>(at)].controller));
     }
     const CubicTrajectory cubic(0.0, 600.0, 0.0, tf);
-    const std::vector<double> reference = sampled([&](double t) { return cubic.position(t); }, sampleTimes(duration, 0.01));
+    const std::vector<double> reference =
+        sampled([&](double t) { return cubic.position(t); }, sampleTimes(duration, 0.01));
     const PointToPointMove move{0.0, 600.0, tf};
     const double window = 0.01;
 
@@ -119,7 +124,8 @@ void TstTrackingBatch::equalsScalarLoopBitForBit() {
         o.dtSeconds = 0.01;
         o.umaxVolts = umax;
         o.modelUnitsPerPositionUnit = lower.modelUnitsPerPositionUnit;
-        const SimulationResult scalar = simulateLoop(lower.plant.transferFunction(), c.designs[i].controller, reference, o);
+        const SimulationResult scalar =
+            simulateLoop(lower.plant.transferFunction(), c.designs[i].controller, reference, o);
         const TrackingMetrics m = trackingMetrics(scalar);
         const QByteArray which = "design " + QByteArray::number(static_cast<int>(i));
         // The kernel gives no figures for a diverged run, nor for one whose figures overflowed
@@ -154,9 +160,11 @@ void TstTrackingBatch::equalsScalarLoopBitForBit() {
     // The batch mixes what it must keep apart: clipping and gentle lanes with a limit,
     // diverging and finite lanes without one.
     if (std::isfinite(umax))
-        QVERIFY2(clipping > 0 && gentle > 0, qPrintable(QString("clipping %1, gentle %2").arg(clipping).arg(gentle)));
+        QVERIFY2(clipping > 0 && gentle > 0,
+                 qPrintable(QString("clipping %1, gentle %2").arg(clipping).arg(gentle)));
     else
-        QVERIFY2(diverged > 0 && finite > 0, qPrintable(QString("diverged %1, finite %2").arg(diverged).arg(finite)));
+        QVERIFY2(diverged > 0 && finite > 0,
+                 qPrintable(QString("diverged %1, finite %2").arg(diverged).arg(finite)));
 }
 
 void TstTrackingBatch::badArgumentsNamed() {

@@ -66,7 +66,8 @@ void TstTrajectory::paperEq6() {
     // rounded (0.10650888): off by 5.7e-9, so only within one unit of the last printed digit.
     XYT_COMPARE_NEAR(p[3], -0.000546199, 0.0, 0.5e-9);
     XYT_COMPARE_NEAR(p[2], 0.10650887, 0.0, 1e-8);
-    QVERIFY(std::abs(p[2] - 0.10650887) > 0.5e-8); // the truncation is real, see tests/data/README.md
+    QVERIFY(std::abs(p[2] - 0.10650887) >
+            0.5e-8); // the truncation is real, see tests/data/README.md
     // Peak velocity at mid-travel 1.5 D/T = 6.923 mm/s (closed form of the cubic).
     XYT_COMPARE_NEAR(c.velocity(65.0), 1.5 * 600.0 / 130.0, 1e-14, 0.0);
 }
@@ -90,7 +91,8 @@ void TstTrajectory::boundaryConditions_data() {
     QTest::addColumn<double>("tf");
     QTest::addColumn<double>("v0");
     QTest::addColumn<double>("vf");
-    QTest::newRow("Braga et al. Eq. 6: 0 -> 600 in 130 s") << 0.0 << 600.0 << 0.0 << 130.0 << 0.0 << 0.0;
+    QTest::newRow("Braga et al. Eq. 6: 0 -> 600 in 130 s")
+        << 0.0 << 600.0 << 0.0 << 130.0 << 0.0 << 0.0;
     QTest::newRow("t0 != 0, v0, vf != 0") << 25.0 << -40.0 << 12.5 << 47.0 << 1.5 << -0.75;
     QTest::newRow("late start t0 = 200") << -10.0 << 300.0 << 200.0 << 330.0 << 0.0 << 2.0;
     QTest::newRow("negative t0, short") << 5.0 << 5.5 << -1.0 << 0.25 << -3.0 << 0.0;
@@ -197,25 +199,38 @@ void TstTrajectory::sampleTimesLimits() {
     QCOMPARE(xyt::sampleTimes(0.3, 0.1).size(), std::size_t(4)); // 0.3/0.1 = 2.9999999999999996
     // A duration whose samples do not fit: kMaxSamples + 1 samples are refused, naming duration.
     const double tooLong = static_cast<double>(xyt::kMaxSamples) * 0.01;
-    QCOMPARE(xyt::test::invalidInputField([&] { xyt::sampleTimes(tooLong, 0.01); }), QString("duration"));
-    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(1e300, 1e-300); }), QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([&] { xyt::sampleTimes(tooLong, 0.01); }),
+             QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(1e300, 1e-300); }),
+             QString("duration"));
     QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(10.0, 0.0); }), QString("dt"));
     QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(10.0, -0.01); }), QString("dt"));
-    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(-1.0, 0.01); }), QString("duration"));
-    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(std::nan(""), 0.01); }), QString("duration"));
-    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(10.0, std::numeric_limits<double>::infinity()); }),
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(-1.0, 0.01); }),
+             QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField([] { xyt::sampleTimes(std::nan(""), 0.01); }),
+             QString("duration"));
+    QCOMPARE(xyt::test::invalidInputField(
+                 [] { xyt::sampleTimes(10.0, std::numeric_limits<double>::infinity()); }),
              QString("dt"));
 }
 
 void TstTrajectory::errorsNameTheField() {
     const double nan = std::nan("");
-    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 5.0, 5.0); }), QString("tf"));
-    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 5.0, 1.0); }), QString("tf"));
-    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(nan, 1.0, 0.0, 1.0); }), QString("x0"));
-    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, nan, 0.0, 1.0); }), QString("xf"));
-    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, nan, 1.0); }), QString("t0"));
-    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, nan); }), QString("v0"));
-    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, 0.0, HUGE_VAL); }), QString("vf"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 5.0, 5.0); }),
+             QString("tf"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 5.0, 1.0); }),
+             QString("tf"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(nan, 1.0, 0.0, 1.0); }),
+             QString("x0"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, nan, 0.0, 1.0); }),
+             QString("xf"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, nan, 1.0); }),
+             QString("t0"));
+    QCOMPARE(xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, nan); }),
+             QString("v0"));
+    QCOMPARE(
+        xyt::test::invalidInputField([&] { CubicTrajectory(0.0, 1.0, 0.0, 1.0, 0.0, HUGE_VAL); }),
+        QString("vf"));
     xyt::Sinusoid s;
     s.rampInSeconds = -1.0;
     QCOMPARE(xyt::test::invalidInputField([&] { s.validate(); }), QString("ramp_in"));
@@ -241,9 +256,12 @@ void TstTrajectory::sampleLimitFollowsMemory() {
 void TstTrajectory::positionsBeyondTheBoundAreRefused() {
     // xf = 1e308 overflowed the reference ("reference: sample 1 is not a finite
     // number"); amplitude 1e308 gave null metrics beside finite ones. kMaxPositionMm = 1e9.
-    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1e308, 0.0, 130.0); }), QString("xf"));
-    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(-2e9, 0.0, 0.0, 130.0); }), QString("x0"));
-    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 0.0, 130.0, 1e10); }), QString("v0"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1e308, 0.0, 130.0); }),
+             QString("xf"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(-2e9, 0.0, 0.0, 130.0); }),
+             QString("x0"));
+    QCOMPARE(xyt::test::invalidInputField([] { CubicTrajectory(0.0, 1.0, 0.0, 130.0, 1e10); }),
+             QString("v0"));
     const CubicTrajectory atBound(-1e9, 1e9, 0.0, 130.0); // the bound itself is accepted
     QCOMPARE(atBound.position(130.0), 1e9);
     xyt::Sinusoid s;

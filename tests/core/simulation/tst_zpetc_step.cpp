@@ -28,8 +28,10 @@ void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir_data() {
     QTest::addColumn<QVector<double>>("a");
     QTest::addColumn<QVector<double>>("b");
     // Patrick, Ishak and Adnan Table 1 (x and y axes), T = 1 - 0.2 z^-1, Ts = 0.07 s.
-    QTest::newRow("x axis of Patrick, Ishak and Adnan") << QVector<double>{1, -1.658, 0.6583} << QVector<double>{0, 0.0421, 0.0628, -0.0454};
-    QTest::newRow("y axis of Patrick, Ishak and Adnan") << QVector<double>{1, -1.459, 0.4587} << QVector<double>{0, 0.0352, 0.0599, -0.0067};
+    QTest::newRow("x axis of Patrick, Ishak and Adnan")
+        << QVector<double>{1, -1.658, 0.6583} << QVector<double>{0, 0.0421, 0.0628, -0.0454};
+    QTest::newRow("y axis of Patrick, Ishak and Adnan")
+        << QVector<double>{1, -1.459, 0.4587} << QVector<double>{0, 0.0352, 0.0599, -0.0067};
 }
 
 void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir() {
@@ -40,9 +42,9 @@ void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir() {
                             Polynomial::fromAscending({b.begin(), b.end()}),
                             Polynomial::fromAscending({1.0, -0.2}), 0.07);
     const ZpetcDesign z = designZpetc(loop);
-    // With the feedforward ahead of it the loop's T and B+ cancel (Patrick, Ishak and Adnan Eq. 11-13): the
-    // axis is the FIR h = B-(z^-1) B-(z) / [B-(1)]^2 applied to r(k + s), s = deg B-. Its unit
-    // step is the partial sums of h: y(K - s + m) = h_0 + ... + h_m, m = 0 .. 2s.
+    // With the feedforward ahead of it the loop's T and B+ cancel (Patrick, Ishak and Adnan Eq.
+    // 11-13): the axis is the FIR h = B-(z^-1) B-(z) / [B-(1)]^2 applied to r(k + s), s = deg B-.
+    // Its unit step is the partial sums of h: y(K - s + m) = h_0 + ... + h_m, m = 0 .. 2s.
     const int s = z.bMinus.degree();
     std::vector<double> partial;
     double sum = 0.0;
@@ -69,16 +71,17 @@ void TstZpetcStep::equalsThePartialSumsOfTheZeroPhaseFir() {
 }
 
 void TstZpetcStep::badBandThrows() {
-    const PolePlacementDesign loop = designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
-                                                         Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
-                                                         Polynomial::fromAscending({1.0, -0.2}), 0.07);
+    const PolePlacementDesign loop =
+        designPolePlacement(Polynomial::fromAscending({1, -1.658, 0.6583}),
+                            Polynomial::fromAscending({0, 0.0421, 0.0628, -0.0454}),
+                            Polynomial::fromAscending({1.0, -0.2}), 0.07);
     QVERIFY_THROWS_EXCEPTION(InvalidInput, zpetcStepCharacteristics(loop, designZpetc(loop), 0.0));
     QVERIFY_THROWS_EXCEPTION(InvalidInput, zpetcStepCharacteristics(loop, designZpetc(loop), 1.0));
 }
 
 void TstZpetcStep::sessionJudgesThePolePlacementAxisOnWhatItRuns() {
-    // The x axis of Patrick, Ishak and Adnan was marked failed for "overshoot 52.363 %", the step of its
-    // feedback loop alone; with ZPETC on, the session's step figures are the axis's own.
+    // The x axis of Patrick, Ishak and Adnan was marked failed for "overshoot 52.363 %", the step
+    // of its feedback loop alone; with ZPETC on, the session's step figures are the axis's own.
     Session s;
     s.axes[0].method = DesignMethod::PolePlacementZpetc;
     const AxisEvaluation with = evaluateSession(s).axes[0];

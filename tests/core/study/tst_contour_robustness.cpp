@@ -5,12 +5,12 @@
 // and judged by the core's contour measures (circleContourError, contourError), and invariants
 // (bit-identical results for any thread count; the XY band's base points lie on the circle with
 // the outward unit radius as normal).
-#include "core/study/contour_robustness.h"
 #include "core/model/errors.h"
 #include "core/session/robustness_problem.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/contour_error.h"
 #include "core/simulation/simulation.h"
+#include "core/study/contour_robustness.h"
 #include "tests/support/tolerance.h"
 
 #include <QFile>
@@ -25,9 +25,12 @@ using namespace xyt;
 
 namespace {
 
-std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+std::uint64_t bits(double v) {
+    return std::bit_cast<std::uint64_t>(v);
+}
 
-/// Braga et al.'s circle (both bases, Guillemin-Truxal) or Patrick, Ishak and Adnan's (x by pole placement + ZPETC).
+/// Braga et al.'s circle (both bases, Guillemin-Truxal) or Patrick, Ishak and Adnan's (x by pole
+/// placement + ZPETC).
 Session circleSession(bool mixed) {
     Session s;
     s.trajectory.kind = TrajectoryKind::Circle;
@@ -61,8 +64,8 @@ RobustnessOptions options(int samples, int threads = 0) {
 
 /// Axis @p axis of @p s (Guillemin-Truxal) simulated directly (simulateLoop) with its nominal
 /// PI on the plant with parameters k0, a1, a2, following @p reference from rest at its start.
-std::vector<double> directRun(const Session& s, const RobustnessProblem& a, const std::vector<double>& values,
-                              std::size_t offset) {
+std::vector<double> directRun(const Session& s, const RobustnessProblem& a,
+                              const std::vector<double>& values, std::size_t offset) {
     const ThirdOrderPlant plant{values[offset], values[offset + 1], values[offset + 2]};
     LoopSimulationOptions o;
     o.dtSeconds = a.dtSeconds;
@@ -97,7 +100,8 @@ void TstContourRobustness::zeroUncertaintyIsTheSessionsContour_data() {
 void TstContourRobustness::zeroUncertaintyIsTheSessionsContour() {
     QFETCH(QString, kind);
     const bool program = kind.endsWith(".nc");
-    const Session s = program ? programSession(kind.toUtf8().constData()) : circleSession(kind == "mixed");
+    const Session s =
+        program ? programSession(kind.toUtf8().constData()) : circleSession(kind == "mixed");
     const ContourRobustnessProblem p = sessionContourRobustnessProblem(s);
     const ContourRobustnessResult r = analyzeContourRobustness(p, options(6));
     const SessionEvaluation eval = evaluateSession(s);
@@ -142,7 +146,8 @@ void TstContourRobustness::eachPairIsADirectSimulation() {
     o.corners = false;
     const ContourRobustnessResult r = analyzeContourRobustness(p, o);
     QCOMPARE(r.runs.size(), std::size_t(samples));
-    QCOMPARE(r.parameterNames, (std::vector<std::string>{"x.k0", "x.a1", "x.a2", "y.k0", "y.a1", "y.a2"}));
+    QCOMPARE(r.parameterNames,
+             (std::vector<std::string>{"x.k0", "x.a1", "x.a2", "y.k0", "y.a1", "y.a2"}));
     // A 5 % mismatch moves the contour: the pairs differ from the nominal and from each other.
     QVERIFY(r.maxAbsContourError.max > r.maxAbsContourError.min);
     for (const JointPlantRun& run : r.runs) {
@@ -153,7 +158,8 @@ void TstContourRobustness::eachPairIsADirectSimulation() {
         const std::vector<double> y = directRun(s, p.y, run.values, 3);
         const auto [expectedMax, expectedRms] = [&] {
             if (program) {
-                const ContourErrorResult c = contourError(*p.geometry.path, p.geometry.t, x, y, p.geometry.pathOptions);
+                const ContourErrorResult c =
+                    contourError(*p.geometry.path, p.geometry.t, x, y, p.geometry.pathOptions);
                 return std::pair{c.maxAbs, c.rms};
             }
             const ContourError c = circleContourError(p.geometry.t, x, y, *p.geometry.circle);
@@ -178,7 +184,8 @@ void TstContourRobustness::deterministicAcrossThreadCounts() {
         std::vector<std::uint64_t> f;
         for (const JointPlantRun& run : r.runs)
             f.insert(f.end(), {bits(run.maxAbsContourError), bits(run.rmsContourError)});
-        for (const std::vector<double>* v : {&r.error.min, &r.error.p05, &r.error.p50, &r.error.p95, &r.error.max})
+        for (const std::vector<double>* v :
+             {&r.error.min, &r.error.p05, &r.error.p50, &r.error.p95, &r.error.max})
             for (double x : *v)
                 f.push_back(bits(x));
         f.push_back(bits(r.maxAbsContourError.mean));
@@ -201,7 +208,8 @@ void TstContourRobustness::bandGeometry() {
         // On the programmed circle, with the outward unit radius as the normal (closed form).
         QVERIFY(xyt::test::near(std::hypot(r.base[j].x, r.base[j].y), s.trajectory.radius, 1e-12));
         QVERIFY(xyt::test::near(std::hypot(r.normal[j].x, r.normal[j].y), 1.0, 1e-12));
-        QVERIFY(xyt::test::near(r.base[j].x * r.normal[j].y - r.base[j].y * r.normal[j].x, 0.0, 0.0, 1e-9));
+        QVERIFY(xyt::test::near(r.base[j].x * r.normal[j].y - r.base[j].y * r.normal[j].x, 0.0, 0.0,
+                                1e-9));
         // Only samples after the ramp-in are judged.
         QVERIFY(r.error.t[j] >= s.trajectory.rampInSeconds);
     }
@@ -219,7 +227,8 @@ void TstContourRobustness::badInputsAreNamed() {
     QCOMPARE(field([] { sessionContourRobustnessProblem(Session{}); }), std::string("trajectory"));
     ContourRobustnessProblem p = sessionContourRobustnessProblem(circleSession(false));
     ContourRobustnessProblem bad = p;
-    bad.geometry.path = std::make_shared<const Path>(std::vector<PathSegment>{PathSegment::line({0, 0}, {1, 0})});
+    bad.geometry.path =
+        std::make_shared<const Path>(std::vector<PathSegment>{PathSegment::line({0, 0}, {1, 0})});
     QCOMPARE(field([&] { analyzeContourRobustness(bad); }), std::string("geometry"));
     bad = p;
     bad.geometry.t[3] = bad.geometry.t[2];

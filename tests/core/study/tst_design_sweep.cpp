@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/study/design_sweep.h"
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
-#include "core/study/sweep_diagnosis.h"
-#include "core/model/errors.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
+#include "core/study/design_sweep.h"
+#include "core/study/sweep_diagnosis.h"
 #include "tests/support/tolerance.h"
 
 #include <QFile>
@@ -38,18 +38,36 @@ DesignProblem lowerBaseCubic(double tf = 130.0, double maxOvershootPct = 0.0) {
     return p;
 }
 
-SweepAxis logAxis(double lo, double hi, int n) { return {lo, hi, n, true}; }
+SweepAxis logAxis(double lo, double hi, int n) {
+    return {lo, hi, n, true};
+}
 
-std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+std::uint64_t bits(double v) {
+    return std::bit_cast<std::uint64_t>(v);
+}
 
 /// Every number of a point, bit for bit.
 std::vector<std::uint64_t> fingerprint(const DesignPoint& p) {
     const TrackingMetrics& m = p.tracking;
     const StepCharacteristics& s = p.step;
-    return {bits(p.wn), bits(p.kp), bits(p.ki), p.stable, p.feasible, p.computed,
-            bits(m.rmse), bits(m.maxAbsError), bits(m.maxAbsErrorPct), bits(m.maxAbsU),
-            m.saturated, bits(m.saturatedTimeSeconds), bits(m.itae), bits(s.settlingTimeSeconds),
-            bits(s.overshootPct), bits(s.peakTimeSeconds), bits(p.phaseMarginDeg), bits(p.gainMarginDb)};
+    return {bits(p.wn),
+            bits(p.kp),
+            bits(p.ki),
+            p.stable,
+            p.feasible,
+            p.computed,
+            bits(m.rmse),
+            bits(m.maxAbsError),
+            bits(m.maxAbsErrorPct),
+            bits(m.maxAbsU),
+            m.saturated,
+            bits(m.saturatedTimeSeconds),
+            bits(m.itae),
+            bits(s.settlingTimeSeconds),
+            bits(s.overshootPct),
+            bits(s.peakTimeSeconds),
+            bits(p.phaseMarginDeg),
+            bits(p.gainMarginDb)};
 }
 
 } // namespace
@@ -163,7 +181,8 @@ void TstDesignSweep::fastPathMatchesFullSimulation() {
     o.dtSeconds = problem.dtSeconds;
     o.umaxVolts = problem.spec.umaxVolts;
     o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
-    const auto run = simulateLoop(problem.plant.transferFunction(), d.controller, problem.reference, o);
+    const auto run =
+        simulateLoop(problem.plant.transferFunction(), d.controller, problem.reference, o);
     const TrackingMetrics full = trackingMetrics(run);
     const StepCharacteristics step = stepCharacteristics(d.closedLoop);
 
@@ -234,7 +253,8 @@ void TstDesignSweep::handCheckedFeasibility_data() {
     QTest::addColumn<bool>("feasible");
     QTest::addColumn<QString>("failing");
     // Paper design: error 1.418 % < 2 %, 0.33 V, settling 5.46 s, overshoot 0.997 %.
-    QTest::newRow("paper design, strict spec") << 2.0 << 30.0 << 130.0 << 0.0 << false << "overshoot";
+    QTest::newRow("paper design, strict spec")
+        << 2.0 << 30.0 << 130.0 << 0.0 << false << "overshoot";
     QTest::newRow("paper design, 1 % overshoot") << 2.0 << 30.0 << 130.0 << 1.0 << true << "";
     // The cubic in 10 s needs ~4.2 V > 2.5 V whatever the design.
     QTest::newRow("saturating trajectory") << 2.0 << 30.0 << 10.0 << 5.0 << false << "saturation";
@@ -310,9 +330,11 @@ void TstDesignSweep::bestIsArgminOverFeasible() {
             continue;
         ++feasible;
         // The best is a minimum over every feasible point (ties go to the lowest index).
-        QVERIFY(criterionValue(r.points[*r.bestIndex], o.criterion) <= criterionValue(p, o.criterion));
+        QVERIFY(criterionValue(r.points[*r.bestIndex], o.criterion) <=
+                criterionValue(p, o.criterion));
         if (criterionMaximizes(o.criterion)) // ... which is the largest margin
-            QVERIFY(criterionMetric(r.points[*r.bestIndex], o.criterion) >= criterionMetric(p, o.criterion));
+            QVERIFY(criterionMetric(r.points[*r.bestIndex], o.criterion) >=
+                    criterionMetric(p, o.criterion));
     }
     QCOMPARE(feasible, r.feasibleCount);
     QVERIFY(r.points[*r.bestIndex].feasible);
@@ -327,12 +349,14 @@ void TstDesignSweep::refinementImprovesAndStaysFeasible() {
     const DesignPoint& refined = r.refined->point;
     QVERIFY(refined.feasible);
     QVERIFY(criterionValue(refined, o.criterion) <= criterionValue(best, o.criterion));
-    QCOMPARE(r.refined->improved, criterionValue(refined, o.criterion) < criterionValue(best, o.criterion));
+    QCOMPARE(r.refined->improved,
+             criterionValue(refined, o.criterion) < criterionValue(best, o.criterion));
     QVERIFY(refined.wn >= wn.minValue && refined.wn <= wn.maxValue);
     QVERIFY(refined.kp >= kp.minValue && refined.kp <= kp.maxValue);
     QVERIFY(r.refined->evaluations > 0 && r.refined->evaluations <= o.maxRefineEvaluations);
     // The refined point is what the evaluator says about its (wn, kp): no stale metrics.
-    const DesignPoint again = DesignEvaluator(lowerBaseCubic(130.0, 1.0)).evaluate(refined.wn, refined.kp);
+    const DesignPoint again =
+        DesignEvaluator(lowerBaseCubic(130.0, 1.0)).evaluate(refined.wn, refined.kp);
     QCOMPARE(fingerprint(again), fingerprint(refined));
 }
 
@@ -397,8 +421,8 @@ void TstDesignSweep::progressIsMonotoneOnCallingThread() {
         seen.push_back(f);
         return true;
     };
-    const DesignSweepResult r =
-        sweepDesignSpace(lowerBaseCubic(130.0, 1.0), logAxis(0.3, 4.0, 20), logAxis(5.0, 300.0, 20), o);
+    const DesignSweepResult r = sweepDesignSpace(lowerBaseCubic(130.0, 1.0), logAxis(0.3, 4.0, 20),
+                                                 logAxis(5.0, 300.0, 20), o);
     QCOMPARE(r.status, SweepStatus::Completed);
     QVERIFY(!otherThread);
     QVERIFY(seen.size() >= 2);
@@ -478,8 +502,9 @@ void TstDesignSweep::marginsAreTheLoopsAndJudgedByTheMinima() {
     rejudgeDesignSpace(r, spec);
     QCOMPARE(r.feasibleCount, 0);
     const SweepDiagnosis diagnosis = diagnoseSweep(r, spec);
-    const auto f = std::find_if(diagnosis.failingEverywhere.begin(), diagnosis.failingEverywhere.end(),
-                                [](const CriterionFailure& c) { return c.criterion == SpecCriterion::PhaseMargin; });
+    const auto f = std::find_if(
+        diagnosis.failingEverywhere.begin(), diagnosis.failingEverywhere.end(),
+        [](const CriterionFailure& c) { return c.criterion == SpecCriterion::PhaseMargin; });
     QVERIFY(f != diagnosis.failingEverywhere.end());
     QCOMPARE(f->bestValue, hi);
     QCOMPARE(f->limit, 179.0);

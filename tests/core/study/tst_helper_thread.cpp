@@ -25,7 +25,8 @@ private slots:
 void TstHelperThread::runsBothTasksOnTwoThreads() {
     std::thread::id there, here;
     for (int repeat = 0; repeat < 3; ++repeat) { // the helper is reused, not restarted
-        runAlongside([&] { there = std::this_thread::get_id(); }, [&] { here = std::this_thread::get_id(); });
+        runAlongside([&] { there = std::this_thread::get_id(); },
+                     [&] { here = std::this_thread::get_id(); });
         QVERIFY(here == std::this_thread::get_id());
         QVERIFY(there != std::this_thread::get_id());
     }
@@ -33,14 +34,24 @@ void TstHelperThread::runsBothTasksOnTwoThreads() {
 
 void TstHelperThread::exceptionsReachTheCaller() {
     bool hereRan = false, thereRan = false;
-    QVERIFY_THROWS_EXCEPTION(std::runtime_error,
-                             runAlongside([&] { thereRan = true; throw std::runtime_error("there"); },
-                                          [&] { hereRan = true; }));
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error, runAlongside(
+                                                     [&] {
+                                                         thereRan = true;
+                                                         throw std::runtime_error("there");
+                                                     },
+                                                     [&] { hereRan = true; }));
     QVERIFY(hereRan && thereRan);
     hereRan = thereRan = false;
     try {
-        runAlongside([&] { thereRan = true; throw std::logic_error("there"); },
-                     [&] { hereRan = true; throw std::runtime_error("here"); });
+        runAlongside(
+            [&] {
+                thereRan = true;
+                throw std::logic_error("there");
+            },
+            [&] {
+                hereRan = true;
+                throw std::runtime_error("here");
+            });
         QFAIL("no exception");
     } catch (const std::runtime_error& e) {
         QCOMPARE(QString(e.what()), QString("here")); // the caller's first

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The uncertainty of an identified model (the robustness analysis's uncertainty "from identification", taken from the model's origin).
-// Sources: the sampling distribution of a sample covariance (the bounds are stated with their
-// standard errors), the estimator's own covariance carried through the session (an invariant:
-// the problem's covariance is the model's, reordered and scaled), and named errors.
+// The uncertainty of an identified model (the robustness analysis's uncertainty "from
+// identification", taken from the model's origin). Sources: the sampling distribution of a sample
+// covariance (the bounds are stated with their standard errors), the estimator's own covariance
+// carried through the session (an invariant: the problem's covariance is the model's, reordered and
+// scaled), and named errors.
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
 #include "core/identification/identification.h"
@@ -75,7 +76,8 @@ void TstIdentifiedUncertainty::normalDrawsHaveTheCovariance() {
     const double rho = s(0, 1) / std::sqrt(s(0, 0) * s(1, 1));
     QVERIFY2(std::abs(rho + 0.9) <= 4.5 * 0.19 / std::sqrt(n), qPrintable(QString::number(rho)));
     // Same seed, same plants (any machine: 53-bit uniforms, Box-Muller by hand).
-    QCOMPARE(drawPlantsNormal(p, c, 3, 5), std::vector<std::vector<double>>(plants.begin(), plants.begin() + 3));
+    QCOMPARE(drawPlantsNormal(p, c, 3, 5),
+             std::vector<std::vector<double>>(plants.begin(), plants.begin() + 3));
 }
 
 void TstIdentifiedUncertainty::semiDefiniteAndBadCovariances() {
@@ -117,14 +119,16 @@ void TstIdentifiedUncertainty::sessionCarriesTheModelsCovariance() {
     std::vector<std::string> problemNames;
     for (const UncertainParameter& q : p.parameters)
         problemNames.push_back(q.name);
-    for (const auto& [model, loop] : {std::pair{"f1", "a1"}, {"f2", "a2"}, {"b1", "b1"}, {"b3", "b3"}})
+    for (const auto& [model, loop] :
+         {std::pair{"f1", "a1"}, {"f2", "a2"}, {"b1", "b1"}, {"b3", "b3"}})
         for (const auto& [model2, loop2] : {std::pair{"f1", "a1"}, {"b2", "b2"}})
             QCOMPARE((*p.covariance)(index(problemNames, loop), index(problemNames, loop2)),
                      m.covariance(index(m.parameterNames, model), index(m.parameterNames, model2)));
     // Ranges at 3 standard deviations for the corner search.
     const Eigen::Index a1 = index(problemNames, "a1");
     QVERIFY(test::near(p.parameters[static_cast<std::size_t>(a1)].relative,
-                       3.0 * std::sqrt((*p.covariance)(a1, a1)) / std::abs(p.parameters[static_cast<std::size_t>(a1)].nominal),
+                       3.0 * std::sqrt((*p.covariance)(a1, a1)) /
+                           std::abs(p.parameters[static_cast<std::size_t>(a1)].nominal),
                        1e-12));
     // The other axis was typed by hand: named, not guessed.
     RobustnessProblem y = sessionRobustnessProblem(s, 1);

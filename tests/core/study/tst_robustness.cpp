@@ -4,13 +4,13 @@
 // wrong B), the closed-form steady-state error of a first-order pole-placement loop whose gain
 // is uniformly distributed (Kolmogorov-Smirnov at a fixed seed), and invariants (bit-identical
 // results for any thread count; nested envelopes for nested ranges).
-#include "core/study/robustness.h"
 #include "core/design/pole_placement.h"
 #include "core/model/errors.h"
 #include "core/session/robustness_problem.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/metrics.h"
+#include "core/study/robustness.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -25,7 +25,9 @@ using namespace xyt;
 
 namespace {
 
-std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v); }
+std::uint64_t bits(double v) {
+    return std::bit_cast<std::uint64_t>(v);
+}
 
 RobustnessOptions options(int samples, std::uint64_t seed = 1, bool corners = true) {
     RobustnessOptions o;
@@ -37,8 +39,9 @@ RobustnessOptions options(int samples, std::uint64_t seed = 1, bool corners = tr
 
 Session ppSession() {
     Session s;
-    s.axes[0].method = DesignMethod::PolePlacementZpetc; // Patrick, Ishak and Adnan's x axis, ZPETC on
-    s.trajectory.kind = TrajectoryKind::Circle;          // 30 mm at 0.1 rad/s in Patrick, Ishak and Adnan
+    s.axes[0].method =
+        DesignMethod::PolePlacementZpetc;       // Patrick, Ishak and Adnan's x axis, ZPETC on
+    s.trajectory.kind = TrajectoryKind::Circle; // 30 mm at 0.1 rad/s in Patrick, Ishak and Adnan
     s.trajectory.radius = 30.0;
     s.trajectory.omegaRadPerSec = 0.1;
     s.trajectory.rampInSeconds = 0.0;
@@ -51,11 +54,13 @@ std::vector<std::uint64_t> fingerprint(const RobustnessResult& r) {
     for (const PlantRun& p : r.runs) {
         for (double v : p.values)
             f.push_back(bits(v));
-        f.insert(f.end(), {bits(p.tracking.rmse), bits(p.tracking.maxAbsError), bits(p.tracking.maxAbsU),
-                           bits(p.tracking.itae), bits(p.step.settlingTimeSeconds), p.stable, p.meetsSpec});
+        f.insert(f.end(),
+                 {bits(p.tracking.rmse), bits(p.tracking.maxAbsError), bits(p.tracking.maxAbsU),
+                  bits(p.tracking.itae), bits(p.step.settlingTimeSeconds), p.stable, p.meetsSpec});
     }
     for (const Distribution& d : {r.rmse, r.maxAbsError, r.maxAbsU})
-        f.insert(f.end(), {bits(d.min), bits(d.p05), bits(d.p50), bits(d.p95), bits(d.max), bits(d.mean)});
+        f.insert(f.end(),
+                 {bits(d.min), bits(d.p05), bits(d.p50), bits(d.p95), bits(d.max), bits(d.mean)});
     for (const SignalEnvelope* e : {&r.output, &r.error, &r.command})
         for (const std::vector<double>* v : {&e->min, &e->p05, &e->p50, &e->p95, &e->max})
             for (double x : *v)
@@ -159,7 +164,8 @@ void TstRobustness::widerRangesNeverNarrowTheEnvelope() {
         const RobustnessResult r = analyzeRobustness(p, o);
         const double w = width(r.error);
         const double spread = r.rmse.max - r.rmse.min;
-        QVERIFY2(w >= lastWidth, qPrintable(QString("scale %1: width %2 < %3").arg(scale).arg(w).arg(lastWidth)));
+        QVERIFY2(w >= lastWidth,
+                 qPrintable(QString("scale %1: width %2 < %3").arg(scale).arg(w).arg(lastWidth)));
         QVERIFY2(spread >= lastRmseSpread, qPrintable(QString("scale %1").arg(scale)));
         lastWidth = w;
         lastRmseSpread = spread;
@@ -182,7 +188,8 @@ void TstRobustness::zpetcImprovementFallsWithAWrongB() {
     RobustnessProblem problem = sessionRobustnessProblem(ppSession(), 0);
     const RobustnessResult exact = analyzeRobustness(problem, options(0));
     const AxisEvaluation eval = evaluateAxis(ppSession(), 0);
-    const double nominalImprovement = 1.0 - exact.nominal.tracking.rmse / exact.nominal.rmseWithoutFf;
+    const double nominalImprovement =
+        1.0 - exact.nominal.tracking.rmse / exact.nominal.rmseWithoutFf;
     XYT_COMPARE_NEAR(100.0 * nominalImprovement, eval.improvementPct, 1e-12, 0.0);
     // B 20 % off in b1 (the corners: b1 at 0.8 and 1.2 times the model's).
     setRelativeRange(problem.parameters, "b1", 0.2);
@@ -193,26 +200,30 @@ void TstRobustness::zpetcImprovementFallsWithAWrongB() {
     for (const PlantRun& p : wrong.runs) {
         QVERIFY(p.stable && p.finite);
         const double improvement = 1.0 - p.tracking.rmse / p.rmseWithoutFf;
-        QVERIFY2(improvement < nominalImprovement,
-                 qPrintable(QString("b1 = %1: %2 >= %3").arg(p.values[2]).arg(improvement).arg(nominalImprovement)));
+        QVERIFY2(improvement < nominalImprovement, qPrintable(QString("b1 = %1: %2 >= %3")
+                                                                  .arg(p.values[2])
+                                                                  .arg(improvement)
+                                                                  .arg(nominalImprovement)));
         // The reported RMSE is that of a direct simulation of the mismatched plant under the
         // nominal RST law and the nominal ZPETC.
         PolePlacementDesign plant = *problem.loop;
         std::vector<double> b = plant.b.ascending();
         b[1] = p.values[2];
         plant.b = Polynomial::fromAscending(b);
-        const DiscreteRun run = simulateZpetcLoop(plant, *problem.zpetc, problem.reference, problem.samples);
+        const DiscreteRun run =
+            simulateZpetcLoop(plant, *problem.zpetc, problem.reference, problem.samples);
         double sum = 0.0;
         for (std::size_t k = 0; k < problem.samples; ++k)
             sum += (problem.reference[k] - run.y[k]) * (problem.reference[k] - run.y[k]);
-        XYT_COMPARE_NEAR(p.tracking.rmse, std::sqrt(sum / static_cast<double>(problem.samples)), 1e-12, 0.0);
+        XYT_COMPARE_NEAR(p.tracking.rmse, std::sqrt(sum / static_cast<double>(problem.samples)),
+                         1e-12, 0.0);
     }
     QCOMPARE(problem.parameters[2].name, std::string("b1"));
 }
 
 void TstRobustness::zpetcSensitivityCurve() {
-    // Patrick, Ishak and Adnan: ZPETC is sensitive to mismatch. At scale 0 the curve's improvement is the
-    // nominal one (the session's evaluation); as B moves away it falls; each point is
+    // Patrick, Ishak and Adnan: ZPETC is sensitive to mismatch. At scale 0 the curve's improvement
+    // is the nominal one (the session's evaluation); as B moves away it falls; each point is
     // analyzeRobustness at that scale (same seed).
     RobustnessProblem problem = sessionRobustnessProblem(ppSession(), 0);
     for (const char* b : {"b1", "b2", "b3"})
@@ -220,7 +231,8 @@ void TstRobustness::zpetcSensitivityCurve() {
     const RobustnessOptions o = options(20, 3, false);
     const std::vector<ZpetcSensitivityPoint> curve = zpetcSensitivity(problem, {0.0, 0.5, 1.0}, o);
     QCOMPARE(curve.size(), std::size_t(3));
-    XYT_COMPARE_NEAR(curve[0].medianImprovementPct, evaluateAxis(ppSession(), 0).improvementPct, 1e-12, 0.0);
+    XYT_COMPARE_NEAR(curve[0].medianImprovementPct, evaluateAxis(ppSession(), 0).improvementPct,
+                     1e-12, 0.0);
     QVERIFY(curve[1].medianImprovementPct < curve[0].medianImprovementPct);
     QVERIFY(curve[2].medianImprovementPct < curve[1].medianImprovementPct);
     RobustnessProblem half = problem;
@@ -247,7 +259,8 @@ void TstRobustness::steadyStateErrorDistributionIsAnalytic() {
     // beta(e) = (1 - a)(1 - e) / ((1 - a) + e (t1 + a)).
     const double a = 0.8, b = 0.5, t1 = -0.5, rho = 0.5;
     RobustnessProblem p;
-    p.loop = designPolePlacement(Polynomial::fromAscending({1.0, -a}), Polynomial::fromAscending({0.0, b}),
+    p.loop = designPolePlacement(Polynomial::fromAscending({1.0, -a}),
+                                 Polynomial::fromAscending({0.0, b}),
                                  Polynomial::fromAscending({1.0, t1}), 1.0);
     p.parameters = {{"a1", -a, 0.0}, {"b1", b, rho}};
     p.samples = 200; // the closed-loop pole 0.8 - 0.3 beta is 0.35..0.65: 0.65^200 ~ 1e-37
@@ -272,7 +285,8 @@ void TstRobustness::steadyStateErrorDistributionIsAnalytic() {
     double d = 0.0; // Kolmogorov-Smirnov statistic
     const double n = static_cast<double>(e.size());
     for (std::size_t i = 0; i < e.size(); ++i)
-        d = std::max({d, std::abs(static_cast<double>(i + 1) / n - cdf(e[i])), std::abs(static_cast<double>(i) / n - cdf(e[i]))});
+        d = std::max({d, std::abs(static_cast<double>(i + 1) / n - cdf(e[i])),
+                      std::abs(static_cast<double>(i) / n - cdf(e[i]))});
     // Critical value at the 1 % level for n = 400: 1.628 / sqrt(n) = 0.0814.
     QVERIFY2(d < 1.628 / std::sqrt(n), qPrintable(QString("D = %1").arg(d)));
 }
@@ -282,7 +296,8 @@ void TstRobustness::unstablePlantsAreListedNotAveraged() {
     // closed-loop pole is a - beta b G = 0.8 - 0.3 beta, outside the unit circle for beta > 6.
     const double a = 0.8, b = 0.5, t1 = -0.5;
     RobustnessProblem p;
-    p.loop = designPolePlacement(Polynomial::fromAscending({1.0, -a}), Polynomial::fromAscending({0.0, b}),
+    p.loop = designPolePlacement(Polynomial::fromAscending({1.0, -a}),
+                                 Polynomial::fromAscending({0.0, b}),
                                  Polynomial::fromAscending({1.0, t1}), 1.0);
     p.parameters = {{"a1", -a, 0.0}, {"b1", b, 0.9}};
     p.samples = 50;

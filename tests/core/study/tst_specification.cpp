@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "core/model/errors.h"
 #include "core/analysis/stability_margins.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/errors.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/simulation.h"
-#include "core/study/specification.h"
 #include "core/simulation/trajectory.h"
+#include "core/study/specification.h"
 #include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
@@ -65,8 +65,8 @@ void TstSpecification::defaultsArePaperSpec() {
 }
 
 void TstSpecification::criterion_data() {
-    QTest::addColumn<int>("which");       // the criterion expected to fail (-1: none)
-    QTest::addColumn<int>("field");       // what is changed
+    QTest::addColumn<int>("which"); // the criterion expected to fail (-1: none)
+    QTest::addColumn<int>("field"); // what is changed
     QTest::addColumn<double>("value");
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
@@ -94,16 +94,24 @@ void TstSpecification::criterion() {
     TrackingMetrics m = goodTracking();
     StepCharacteristics s = goodStep();
     switch (field) {
-    case Stable: s.stable = false; break;
-    case Settling: s.settlingTimeSeconds = value; break;
-    case Overshoot: s.overshootPct = value; break;
+    case Stable:
+        s.stable = false;
+        break;
+    case Settling:
+        s.settlingTimeSeconds = value;
+        break;
+    case Overshoot:
+        s.overshootPct = value;
+        break;
     case Saturation:
         if (value < 0.0)
             m.saturated = true; // the command was clipped at +-umax (then maxAbsU == umax)
         else
             m.maxAbsU = value;
         break;
-    case Error: m.maxAbsErrorPct = value; break;
+    case Error:
+        m.maxAbsErrorPct = value;
+        break;
     }
     const SpecificationCheck c = checkSpecification(Specification{}, m, s);
     QCOMPARE(c.allPassed(), which < 0);
@@ -131,7 +139,7 @@ void TstSpecification::invalidSpecThrows() {
     QFETCH(QString, field);
     Specification s;
     double* fields[] = {&s.maxSettlingTimeSeconds, &s.maxOvershootPct, &s.umaxVolts, &s.maxErrorPct,
-                        &s.minPhaseMarginDeg, &s.minGainMarginDb};
+                        &s.minPhaseMarginDeg,      &s.minGainMarginDb};
     *fields[which] = -1.0;
     try {
         checkSpecification(s, goodTracking(), goodStep());
@@ -152,10 +160,9 @@ void TstSpecification::paperLowerBaseDesign() {
     o.umaxVolts = 2.5;
     o.modelUnitsPerPositionUnit = lower.modelUnitsPerPositionUnit;
     const CubicTrajectory cubic(0.0, 600.0, 0.0, 130.0);
-    const auto run = simulateLoop(lower.plant.transferFunction(), d.controller,
-                                  sampled([&](double t) { return cubic.position(t); },
-                                          sampleTimes(130.0, 0.01)),
-                                  o);
+    const auto run = simulateLoop(
+        lower.plant.transferFunction(), d.controller,
+        sampled([&](double t) { return cubic.position(t); }, sampleTimes(130.0, 0.01)), o);
     const TrackingMetrics m = trackingMetrics(run);
     const StepCharacteristics s = stepCharacteristics(d.closedLoop);
     // 1e-4 relative: the sampled peak of stepCharacteristics (dt <= 3 t / 500) vs the exact max.
@@ -178,12 +185,13 @@ void TstSpecification::marginMinimaOnTheClosedFormLoop() {
     // margin is 6 / K (closed form; 20 log10(6/K) dB). K = 1.5: 12.04 dB. The minimum is judged
     // on the margins the core computes, with the closed loop K / (s^3 + 3 s^2 + 2 s + K).
     const double k = 1.5;
-    const TransferFunction loop(Polynomial::constant(k), Polynomial::fromDescending({1.0, 3.0, 2.0, 0.0}));
+    const TransferFunction loop(Polynomial::constant(k),
+                                Polynomial::fromDescending({1.0, 3.0, 2.0, 0.0}));
     const StabilityMargins m = stabilityMargins(loop);
     const double gmDb = 20.0 * std::log10(6.0 / k);
     XYT_COMPARE_NEAR(m.gainMarginDb, gmDb, 1e-10, 0.0); // Newton-refined root: round-off only
-    const StepCharacteristics step =
-        stepCharacteristics(TransferFunction(Polynomial::constant(k), Polynomial::fromDescending({1.0, 3.0, 2.0, k})));
+    const StepCharacteristics step = stepCharacteristics(
+        TransferFunction(Polynomial::constant(k), Polynomial::fromDescending({1.0, 3.0, 2.0, k})));
     QVERIFY(step.stable);
     const LoopMarginFigures figures{m.phaseMarginDeg, m.gainMarginDb};
     Specification spec;
@@ -201,7 +209,8 @@ void TstSpecification::marginMinimaOnTheClosedFormLoop() {
     QVERIFY(!judge(0.0, gmDb + 1e-6).allPassed());
     QVERIFY(judge(m.phaseMarginDeg - 1e-6, 0.0).phaseMargin);
     QVERIFY(!judge(m.phaseMarginDeg + 1e-6, 0.0).phaseMargin);
-    QVERIFY(judge(m.phaseMarginDeg + 1e-6, 0.0).gainMargin); // one failure says nothing of the other
+    QVERIFY(
+        judge(m.phaseMarginDeg + 1e-6, 0.0).gainMargin); // one failure says nothing of the other
     // Without margins (a check that was not given them) nothing is judged.
     const SpecificationCheck none = checkSpecification(spec, goodTracking(), step);
     QVERIFY(!none.marginsApply && none.phaseMargin && none.gainMargin);
@@ -214,15 +223,18 @@ void TstSpecification::marginMinimaEdgeCases() {
     spec.minPhaseMarginDeg = 45.0;
     spec.minGainMarginDb = 6.0;
     // No crossing (+infinity) passes; NaN (not computed) fails.
-    SpecificationCheck c = checkSpecification(spec, goodTracking(), goodStep(), std::nullopt, LoopMarginFigures{inf, inf});
+    SpecificationCheck c = checkSpecification(spec, goodTracking(), goodStep(), std::nullopt,
+                                              LoopMarginFigures{inf, inf});
     QVERIFY(c.phaseMargin && c.gainMargin);
-    c = checkSpecification(spec, goodTracking(), goodStep(), std::nullopt, LoopMarginFigures{nan, nan});
+    c = checkSpecification(spec, goodTracking(), goodStep(), std::nullopt,
+                           LoopMarginFigures{nan, nan});
     QVERIFY(!c.phaseMargin && !c.gainMargin);
     // An unstable closed loop fails both, even with large numbers and zero minima: its margins
     // are not robustness measures.
     StepCharacteristics unstable;
     unstable.stable = false;
-    c = checkSpecification(Specification{}, goodTracking(), unstable, std::nullopt, LoopMarginFigures{80.0, 20.0});
+    c = checkSpecification(Specification{}, goodTracking(), unstable, std::nullopt,
+                           LoopMarginFigures{80.0, 20.0});
     QVERIFY(!c.phaseMargin && !c.gainMargin);
 }
 
@@ -231,8 +243,10 @@ void TstSpecification::invalidMarginMinimaThrow_data() {
     QTest::addColumn<double>("gain");
     QTest::addColumn<QString>("field");
     QTest::newRow("phase above 180") << 180.5 << 0.0 << "min_phase_margin";
-    QTest::newRow("phase NaN") << std::numeric_limits<double>::quiet_NaN() << 0.0 << "min_phase_margin";
-    QTest::newRow("gain infinite") << 0.0 << std::numeric_limits<double>::infinity() << "min_gain_margin";
+    QTest::newRow("phase NaN") << std::numeric_limits<double>::quiet_NaN() << 0.0
+                               << "min_phase_margin";
+    QTest::newRow("gain infinite")
+        << 0.0 << std::numeric_limits<double>::infinity() << "min_gain_margin";
 }
 
 void TstSpecification::invalidMarginMinimaThrow() {

@@ -4,9 +4,9 @@
 #include "core/design/digital_controller.h"
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
-#include "ui/files/coefficient_json.h"
 #include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
+#include "ui/files/coefficient_json.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -93,13 +93,15 @@ int main(void) {
     program.close();
     QProcess compile;
     compile.setWorkingDirectory(dir.path());
-    compile.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "main.c", "-o", "main"});
+    compile.start(cc,
+                  {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "main.c", "-o", "main"});
     QVERIFY(compile.waitForFinished(60000));
     QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
     // The header alone, as a translation unit, must also compile warning-free.
     QProcess alone;
     alone.setWorkingDirectory(dir.path());
-    alone.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "xyt.h"});
+    alone.start(cc,
+                {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "xyt.h"});
     QVERIFY(alone.waitForFinished(60000));
     QVERIFY2(alone.exitCode() == 0, alone.readAllStandardError().constData());
     QProcess run;
@@ -113,7 +115,8 @@ int main(void) {
         const auto expected = filterDifferenceEquation(c.num, c.den, std::vector<double>(50, 1.0));
         for (int k = 0; k < 50; ++k)
             // 17 printed digits round-trip exactly; the sums differ only in evaluation order.
-            XYT_COMPARE_NEAR(lines[axis * 50 + k].toDouble(), expected[static_cast<std::size_t>(k)], 1e-14, 1e-14);
+            XYT_COMPARE_NEAR(lines[axis * 50 + k].toDouble(), expected[static_cast<std::size_t>(k)],
+                             1e-14, 1e-14);
     }
     QCOMPARE(lines[100].trimmed(), QByteArray("0.01 0.01"));
 }
@@ -121,8 +124,8 @@ int main(void) {
 void TstCoefficientExport::jsonParsesBack() {
     const Session s = Session::paperDefault();
     const SessionEvaluation e = evaluateSession(s);
-    const QJsonObject json = QJsonDocument::fromJson(
-        QJsonDocument(files::coefficientsJson(s, e)).toJson()).object();
+    const QJsonObject json =
+        QJsonDocument::fromJson(QJsonDocument(files::coefficientsJson(s, e)).toJson()).object();
     QCOMPARE(json["format"].toString(), QString("xytune-coefficients"));
     // The anti-windup the controller ships with travels with the coefficients.
     QCOMPARE(json["implementation"].toObject()["anti_windup"].toString(), QString("clamp"));
@@ -131,7 +134,8 @@ void TstCoefficientExport::jsonParsesBack() {
     const QJsonObject x = axes[0].toObject();
     QCOMPARE(x["id"].toString(), QString("x"));
     QCOMPARE(x["continuous_pi"].toObject()["ki"].toDouble(), e.axes[0].gt->ki);
-    QCOMPARE(x["digital_controller"].toObject()["order"].toString(), QString("ascending powers of z^-1"));
+    QCOMPARE(x["digital_controller"].toObject()["order"].toString(),
+             QString("ascending powers of z^-1"));
     const QJsonArray den = x["reference_model"].toObject()["den"].toArray();
     // Braga et al. Eq. 19: s^4 + 125.3 s^3 + 3665 s^2 + 2334 s + 16.
     QCOMPARE(den.size(), 5);
@@ -142,14 +146,17 @@ void TstCoefficientExport::jsonParsesBack() {
 void TstCoefficientExport::octaveScriptDefinesTheTfObjects() {
     const Session s = Session::paperDefault();
     const std::string m = exportOctaveScript(s, evaluateSession(s));
-    for (const char* needle : {"pkg load control", "plant_x = tf(77.799999999999997, [1 125.3 3665 0]);",
-                               "controller_x = tf([30 ", "closed_loop_x = feedback(controller_x * plant_x, 1);",
-                               "plant_y = tf(24.440000000000001, [1 68.180000000000007 863 0]);",
-                               "closed_loop_y", "lsim(closed_loop_y"})
+    for (const char* needle :
+         {"pkg load control", "plant_x = tf(77.799999999999997, [1 125.3 3665 0]);",
+          "controller_x = tf([30 ", "closed_loop_x = feedback(controller_x * plant_x, 1);",
+          "plant_y = tf(24.440000000000001, [1 68.180000000000007 863 0]);", "closed_loop_y",
+          "lsim(closed_loop_y"})
         QVERIFY2(m.find(needle) != std::string::npos, needle);
     // The implementation travels into the script, in its default and another state.
-    QVERIFY(m.find("anti-windup clamp,\n% computation delay 0 samples, encoder 0 mm/count, DAC 0 bits") !=
-            std::string::npos);
+    QVERIFY(
+        m.find(
+            "anti-windup clamp,\n% computation delay 0 samples, encoder 0 mm/count, DAC 0 bits") !=
+        std::string::npos);
     Session q = s;
     q.implementation.antiWindup = AntiWindup::BackCalculation;
     q.implementation.trackingTimeSeconds = 0.25;
@@ -158,23 +165,26 @@ void TstCoefficientExport::octaveScriptDefinesTheTfObjects() {
     q.implementation.dacBits = 16;
     const std::string mq = exportOctaveScript(q, evaluateSession(q));
     for (const char* needle : {"anti-windup back-calculation (tracking time 0.25 s; 0: kp/ki),",
-                               "% computation delay 1 samples, encoder 0.001 mm/count, DAC 16 bits (0: ideal), umax 2.5 V."})
+                               "% computation delay 1 samples, encoder 0.001 mm/count, DAC 16 bits "
+                               "(0: ideal), umax 2.5 V."})
         QVERIFY2(mq.find(needle) != std::string::npos, needle);
 }
 
 void TstCoefficientExport::csvColumnsAndRows() {
     const Session s = Session::paperDefault();
     const SessionEvaluation e = evaluateSession(s);
-    const QList<QByteArray> lines = QByteArray::fromStdString(exportCsv(s, e)).trimmed().split('\n');
-    QCOMPARE(lines[0], QByteArray("t,r_x,y_x,e_x,u_x,r_y,y_y,e_y,u_y,t_digital_x,y_digital_x,e_digital_x,"
-                                  "u_digital_x,t_digital_y,y_digital_y,e_digital_y,u_digital_y"));
+    const QList<QByteArray> lines =
+        QByteArray::fromStdString(exportCsv(s, e)).trimmed().split('\n');
+    QCOMPARE(lines[0],
+             QByteArray("t,r_x,y_x,e_x,u_x,r_y,y_y,e_y,u_y,t_digital_x,y_digital_x,e_digital_x,"
+                        "u_digital_x,t_digital_y,y_digital_y,e_digital_y,u_digital_y"));
     // The automatic run: the move and its settle, both ends; at 0.01 s.
     const double duration = e.duration.seconds;
     QVERIFY(duration > 130.0);
     QCOMPARE(lines.size(), qsizetype(1 + std::floor(duration / 0.01 + 1e-9) + 1));
     const QList<QByteArray> last = lines.back().split(',');
     XYT_COMPARE_NEAR(last[0].toDouble(), e.axes[0].run.t.back(), 1e-9, 0.0); // 10 printed digits
-    XYT_COMPARE_NEAR(last[1].toDouble(), 600.0, 1e-9, 0.0); // 10 printed digits
+    XYT_COMPARE_NEAR(last[1].toDouble(), 600.0, 1e-9, 0.0);                  // 10 printed digits
 }
 
 namespace {
@@ -244,10 +254,11 @@ void addSessionRows(std::initializer_list<SessionRow> rows) {
 } // namespace
 
 void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow_data() {
-    addSessionRows({{"guillemin-truxal, controller_ts = dt", kGt, kGt, Implementation::Ideal},
-                    {"guillemin-truxal, controller_ts 5 dt, delay, DAC, encoder", kGt, kGt,
-                     Implementation::SlowDelayedQuantized},
-                    {"pole placement + ZPETC, Ts 0.07 s, DAC", kPp, kPp, Implementation::Dac12Bits}});
+    addSessionRows(
+        {{"guillemin-truxal, controller_ts = dt", kGt, kGt, Implementation::Ideal},
+         {"guillemin-truxal, controller_ts 5 dt, delay, DAC, encoder", kGt, kGt,
+          Implementation::SlowDelayedQuantized},
+         {"pole placement + ZPETC, Ts 0.07 s, DAC", kPp, kPp, Implementation::Dac12Bits}});
 }
 
 void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow() {
@@ -264,10 +275,13 @@ void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow() {
         QVERIFY(e.axes[i].digital);
         const SimulationResult& d = e.axes[i].digital->run.result;
         const double ts = e.axes[i].digital->tsSeconds;
-        const std::size_t ct = csv.column(("t_digital_" + id).c_str()), cy = csv.column(("y_digital_" + id).c_str()),
-                          ce = csv.column(("e_digital_" + id).c_str()), cu = csv.column(("u_digital_" + id).c_str()),
+        const std::size_t ct = csv.column(("t_digital_" + id).c_str()),
+                          cy = csv.column(("y_digital_" + id).c_str()),
+                          ce = csv.column(("e_digital_" + id).c_str()),
+                          cu = csv.column(("u_digital_" + id).c_str()),
                           cOwn = csv.column(("y_" + id).c_str());
-        QVERIFY(ct != std::size_t(-1) && cy != std::size_t(-1) && ce != std::size_t(-1) && cu != std::size_t(-1));
+        QVERIFY(ct != std::size_t(-1) && cy != std::size_t(-1) && ce != std::size_t(-1) &&
+                cu != std::size_t(-1));
         std::set<std::size_t> seen;
         bool differsFromTheDesignRun = false;
         for (std::size_t k = 0; k < csv.rows.size(); ++k) {
@@ -296,7 +310,8 @@ void TstCoefficientExport::csvHoldsTheDigitalRunAtEachRow() {
 
 void TstCoefficientExport::csvSamplesAtTheSessionDt_data() {
     addSessionRows({{"guillemin-truxal both", kGt, kGt, Implementation::Ideal},
-                    {"pole placement on x (Ts 0.07 s), guillemin-truxal on y", kPp, kGt, Implementation::Ideal},
+                    {"pole placement on x (Ts 0.07 s), guillemin-truxal on y", kPp, kGt,
+                     Implementation::Ideal},
                     {"pole placement both", kPp, kPp, Implementation::Ideal}});
 }
 
@@ -309,11 +324,13 @@ void TstCoefficientExport::csvSamplesAtTheSessionDt() {
     const double dt = session.trajectory.dtSeconds;
     QCOMPARE(csv.rows.size(), dtRows(e, dt));
     for (std::size_t k = 0; k < csv.rows.size(); ++k)
-        XYT_COMPARE_NEAR(csv.rows[k][0], static_cast<double>(k) * dt, 1e-9, 1e-12); // 10 printed digits
+        XYT_COMPARE_NEAR(csv.rows[k][0], static_cast<double>(k) * dt, 1e-9,
+                         1e-12); // 10 printed digits
     for (std::size_t i = 0; i < 2; ++i) {
         const std::string id = session.axes[i].id;
         const SimulationResult& run = e.axes[i].run;
-        const std::size_t cr = csv.column(("r_" + id).c_str()), cy = csv.column(("y_" + id).c_str());
+        const std::size_t cr = csv.column(("r_" + id).c_str()),
+                          cy = csv.column(("y_" + id).c_str());
         for (std::size_t k = 0; k < csv.rows.size(); k += 13) {
             const double t = static_cast<double>(k) * dt;
             // The run's last sample at or before t (1e-9 s for the round-off of k dt and j Ts).
@@ -327,7 +344,8 @@ void TstCoefficientExport::csvSamplesAtTheSessionDt() {
 
 void TstCoefficientExport::polePlacementAxisExports() {
     Session s = Session::paperDefault();
-    s.axes[1].method = DesignMethod::PolePlacementZpetc; // the y-axis ARX model of Patrick, Ishak and Adnan
+    s.axes[1].method =
+        DesignMethod::PolePlacementZpetc; // the y-axis ARX model of Patrick, Ishak and Adnan
     const SessionEvaluation e = evaluateSession(s);
     QVERIFY(e.axes[1].ok);
     const QJsonObject y = files::coefficientsJson(s, e)["axes"].toArray()[1].toObject();
@@ -350,11 +368,13 @@ void TstCoefficientExport::polePlacementAxisExports() {
     f.close();
     QProcess compile;
     compile.setWorkingDirectory(dir.path());
-    compile.start(cc, {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "pp.h"});
+    compile.start(cc,
+                  {"-std=c99", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-x", "c", "pp.h"});
     QVERIFY(compile.waitForFinished(60000));
     QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
     const std::string m = exportOctaveScript(s, e);
-    QVERIFY(m.find("plant_y = filt([0 0.035200000000000002 0.059900000000000002 -0.0067000000000000002]") != std::string::npos);
+    QVERIFY(m.find("plant_y = filt([0 0.035200000000000002 0.059900000000000002 "
+                   "-0.0067000000000000002]") != std::string::npos);
     QVERIFY(m.find("closed_loop_y = Kf_y * feedback(") != std::string::npos);
 }
 

@@ -58,7 +58,9 @@ QByteArray readAll(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
 }
 
-QJsonObject defaultJson() { return sessionToJson(Session::paperDefault()); }
+QJsonObject defaultJson() {
+    return sessionToJson(Session::paperDefault());
+}
 
 /// Sets the value at a dotted path with [i] indices in a copy of @p root.
 QJsonValue setPath(QJsonValue node, QStringList keys, const QJsonValue& value) {
@@ -143,7 +145,8 @@ Session gcodeSession() {
     Session s = Session::paperDefault();
     s.trajectory.kind = TrajectoryKind::Gcode;
     s.trajectory.gcode.fileName = "square.nc";
-    s.trajectory.gcode.program = "G21 G90\nG1 X10 Y0 F600\nX10 Y10\nG3 X0 Y10 I-5 J0 (half circle)\n";
+    s.trajectory.gcode.program =
+        "G21 G90\nG1 X10 Y0 F600\nX10 Y10\nG3 X0 Y10 I-5 J0 (half circle)\n";
     s.trajectory.gcode.feedScale = 1.25;
     s.trajectory.gcode.maxAccelMmPerS2 = 750.5;
     s.trajectory.gcode.maxJerkMmPerS3 = 20000.0;
@@ -193,7 +196,8 @@ void TstSessionFile::filesWithoutGcodeLoad() {
 
 namespace {
 
-/// Patrick, Ishak and Adnan's x axis as identified from a log: an ARX origin, one deviation unknown.
+/// Patrick, Ishak and Adnan's x axis as identified from a log: an ARX origin, one deviation
+/// unknown.
 Session identifiedSession() {
     Session s = Session::paperDefault();
     ModelOrigin o;
@@ -214,7 +218,8 @@ Session identifiedSession() {
 
 void TstSessionFile::roundTripModelOrigin() {
     // Invariant: load(save(s)) == s with the model's origin, an unknown deviation (NaN, null in
-    // JSON) included; a hand-typed axis has none, and files from before identification load without it.
+    // JSON) included; a hand-typed axis has none, and files from before identification load without
+    // it.
     const Session s = identifiedSession();
     const QJsonObject json = sessionToJson(s);
     const QJsonObject origin = json["axes"].toArray()[0].toObject()["model_origin"].toObject();
@@ -233,13 +238,22 @@ void TstSessionFile::badModelOriginFields_data() {
     QTest::addColumn<QString>("expectedPath");
     QTest::addColumn<QString>("expectedReason");
     const QString o = "axes[0].model_origin.";
-    QTest::newRow("ts zero") << o + "ts" << QJsonValue(0) << o + "ts" << "must be greater than zero";
-    QTest::newRow("samples fractional") << o + "samples" << QJsonValue(10.5) << o + "samples" << "must be a whole number";
-    QTest::newRow("fit a string") << o + "fit" << QJsonValue("high") << o + "fit" << "must be a finite number or null";
-    QTest::newRow("std too short") << o + "std" << QJsonValue(QJsonArray{0.1}) << o + "std" << "must be an array as long";
-    QTest::newRow("std entry text") << o + "std[1]" << QJsonValue("x") << o + "std[1]" << "must be a finite number or null";
-    QTest::newRow("parameter not a name") << o + "parameters[0]" << QJsonValue(3) << o + "parameters[0]" << "must be a string";
-    QTest::newRow("structure missing") << o + "structure" << QJsonValue(QJsonValue::Undefined) << o + "structure" << "is missing";
+    QTest::newRow("ts zero") << o + "ts" << QJsonValue(0) << o + "ts"
+                             << "must be greater than zero";
+    QTest::newRow("samples fractional") << o + "samples" << QJsonValue(10.5) << o + "samples"
+                                        << "must be a whole number";
+    QTest::newRow("fit a string") << o + "fit" << QJsonValue("high") << o + "fit"
+                                  << "must be a finite number or null";
+    QTest::newRow("std too short") << o + "std" << QJsonValue(QJsonArray{0.1}) << o + "std"
+                                   << "must be an array as long";
+    QTest::newRow("std entry text") << o + "std[1]" << QJsonValue("x") << o + "std[1]"
+                                    << "must be a finite number or null";
+    QTest::newRow("parameter not a name")
+        << o + "parameters[0]" << QJsonValue(3) << o + "parameters[0]"
+        << "must be a string";
+    QTest::newRow("structure missing")
+        << o + "structure" << QJsonValue(QJsonValue::Undefined) << o + "structure"
+        << "is missing";
 }
 
 void TstSessionFile::badModelOriginFields() {
@@ -247,7 +261,8 @@ void TstSessionFile::badModelOriginFields() {
     QFETCH(QJsonValue, value);
     QFETCH(QString, expectedPath);
     QFETCH(QString, expectedReason);
-    const QJsonObject root = setPath(sessionToJson(identifiedSession()), splitPath(path), value).toObject();
+    const QJsonObject root =
+        setPath(sessionToJson(identifiedSession()), splitPath(path), value).toObject();
     const auto r = sessionFromJson(root);
     QVERIFY(!r.ok);
     QCOMPARE(r.errorPath, expectedPath);
@@ -260,21 +275,29 @@ void TstSessionFile::badGcodeFields_data() {
     QTest::addColumn<QString>("expectedPath");
     QTest::addColumn<QString>("expectedReason");
     // The reasons of the program rows are the G-code reader's (gcode_reader.h), with its line.
-    QTest::newRow("unknown word") << "trajectory.gcode.program" << QJsonValue("G21\nG1 X1 F100\nG5 X2\n")
-                                  << "trajectory.gcode.program" << "line 3: unknown word G5 at column 1";
-    QTest::newRow("arc off its circle") << "trajectory.gcode.program"
-                                        << QJsonValue("G1 X10 F100\nG2 X20 Y0 I4 J0\n")
-                                        << "trajectory.gcode.program" << "line 2:";
+    QTest::newRow("unknown word") << "trajectory.gcode.program"
+                                  << QJsonValue("G21\nG1 X1 F100\nG5 X2\n")
+                                  << "trajectory.gcode.program"
+                                  << "line 3: unknown word G5 at column 1";
+    QTest::newRow("arc off its circle")
+        << "trajectory.gcode.program" << QJsonValue("G1 X10 F100\nG2 X20 Y0 I4 J0\n")
+        << "trajectory.gcode.program"
+        << "line 2:";
     QTest::newRow("no motion") << "trajectory.gcode.program" << QJsonValue("G21 G90\n")
-                               << "trajectory.gcode.program" << "";
-    QTest::newRow("program not a string") << "trajectory.gcode.program" << QJsonValue(3)
-                                          << "trajectory.gcode.program" << "must be a string";
-    QTest::newRow("feed scale zero") << "trajectory.gcode.feed_scale" << QJsonValue(0)
-                                     << "trajectory.gcode.feed_scale" << "must be greater than zero";
-    QTest::newRow("max accel NaN") << "trajectory.gcode.max_accel" << QJsonValue("NaN")
-                                   << "trajectory.gcode.max_accel" << "must be a finite number";
-    QTest::newRow("negative jerk") << "trajectory.gcode.max_jerk" << QJsonValue(-1)
-                                   << "trajectory.gcode.max_jerk" << "must be >= 0 (0 = none)";
+                               << "trajectory.gcode.program"
+                               << "";
+    QTest::newRow("program not a string")
+        << "trajectory.gcode.program" << QJsonValue(3) << "trajectory.gcode.program"
+        << "must be a string";
+    QTest::newRow("feed scale zero")
+        << "trajectory.gcode.feed_scale" << QJsonValue(0) << "trajectory.gcode.feed_scale"
+        << "must be greater than zero";
+    QTest::newRow("max accel NaN")
+        << "trajectory.gcode.max_accel" << QJsonValue("NaN") << "trajectory.gcode.max_accel"
+        << "must be a finite number";
+    QTest::newRow("negative jerk")
+        << "trajectory.gcode.max_jerk" << QJsonValue(-1) << "trajectory.gcode.max_jerk"
+        << "must be >= 0 (0 = none)";
     // Profile options the planner cannot plan, by their JSON path: a jerk of 1e-300 crashed every
     // command that read the session and the workbench on open. Out of the planner's range
     // (feed_profile.h) whatever the program; in it, by the time the option alone needs for the
@@ -283,17 +306,24 @@ void TstSessionFile::badGcodeFields_data() {
                                  << "trajectory.gcode.max_jerk"
                                  << "1e-300 mm/s^3 is outside the planner's range [1e-100, 1e+100]";
     QTest::newRow("jerk 1e-20") << "trajectory.gcode.max_jerk" << QJsonValue(1e-20)
-                                << "trajectory.gcode.max_jerk" << "1e-20 mm/s^3 needs at least 4.85e+07 s";
+                                << "trajectory.gcode.max_jerk"
+                                << "1e-20 mm/s^3 needs at least 4.85e+07 s";
     QTest::newRow("snapshot jerk") << "snapshots[0].trajectory.gcode.max_jerk" << QJsonValue(5e-324)
-                                   << "snapshots[0].trajectory.gcode.max_jerk" << "4.94066e-324 mm/s^3 is outside";
+                                   << "snapshots[0].trajectory.gcode.max_jerk"
+                                   << "4.94066e-324 mm/s^3 is outside";
     QTest::newRow("accel 1e300") << "trajectory.gcode.max_accel" << QJsonValue(1e300)
-                                 << "trajectory.gcode.max_accel" << "1e+300 mm/s^2 is outside";
-    QTest::newRow("feed scale 1e-300") << "trajectory.gcode.feed_scale" << QJsonValue(1e-300)
-                                       << "trajectory.gcode.feed_scale" << "1e-300 makes the feed of line 2";
-    QTest::newRow("missing file name") << "trajectory.gcode.file" << QJsonValue(QJsonValue::Undefined)
-                                       << "trajectory.gcode.file" << "is missing";
-    QTest::newRow("snapshot program") << "snapshots[0].trajectory.gcode.program" << QJsonValue("G1 X1\n")
-                                      << "snapshots[0].trajectory.gcode.program" << "line 1:";
+                                 << "trajectory.gcode.max_accel"
+                                 << "1e+300 mm/s^2 is outside";
+    QTest::newRow("feed scale 1e-300")
+        << "trajectory.gcode.feed_scale" << QJsonValue(1e-300) << "trajectory.gcode.feed_scale"
+        << "1e-300 makes the feed of line 2";
+    QTest::newRow("missing file name")
+        << "trajectory.gcode.file" << QJsonValue(QJsonValue::Undefined) << "trajectory.gcode.file"
+        << "is missing";
+    QTest::newRow("snapshot program")
+        << "snapshots[0].trajectory.gcode.program" << QJsonValue("G1 X1\n")
+        << "snapshots[0].trajectory.gcode.program"
+        << "line 1:";
 }
 
 void TstSessionFile::badGcodeFields() {
@@ -315,16 +345,18 @@ void TstSessionFile::malformed_data() {
     QTest::addColumn<QJsonValue>("value");
     QTest::addColumn<QString>("expectedPath");
     QTest::addColumn<QString>("expectedReason");
-    QTest::newRow("NaN as a string") << "axes[1].gt.plant.a2" << QJsonValue("NaN")
-                                     << "axes[1].gt.plant.a2" << "must be a finite number";
+    QTest::newRow("NaN as a string")
+        << "axes[1].gt.plant.a2" << QJsonValue("NaN") << "axes[1].gt.plant.a2"
+        << "must be a finite number";
     QTest::newRow("wrong type") << "axes[0].gt.kp" << QJsonValue(true) << "axes[0].gt.kp"
                                 << "must be a finite number";
     QTest::newRow("negative kp") << "axes[0].gt.kp" << QJsonValue(-3) << "axes[0].gt.kp"
                                  << "must be greater than zero";
     QTest::newRow("zero k0") << "axes[0].gt.plant.k0" << QJsonValue(0) << "axes[0].gt.plant.k0"
                              << "must be nonzero";
-    QTest::newRow("missing field") << "trajectory.dt" << QJsonValue(QJsonValue::Undefined)
-                                   << "trajectory.dt" << "is missing";
+    QTest::newRow("missing field")
+        << "trajectory.dt" << QJsonValue(QJsonValue::Undefined) << "trajectory.dt"
+        << "is missing";
     QTest::newRow("unknown method") << "axes[0].method" << QJsonValue("pid") << "axes[0].method"
                                     << "must be \"guillemin-truxal\" or \"pole-placement-zpetc\"";
     QJsonArray huge;
@@ -334,40 +366,53 @@ void TstSessionFile::malformed_data() {
                                 << "has 100000 entries; at most 64 are allowed";
     QTest::newRow("empty array") << "axes[1].pp.b" << QJsonValue(QJsonArray()) << "axes[1].pp.b"
                                  << "must not be empty";
-    QTest::newRow("one axis") << "axes" << QJsonValue(QJsonArray{defaultJson()["axes"].toArray()[0]})
-                              << "axes" << "must be an array of exactly two axes";
-    QTest::newRow("tf before t0") << "trajectory.cubic.tf" << QJsonValue(-1) << "trajectory.cubic.tf"
+    QTest::newRow("one axis") << "axes"
+                              << QJsonValue(QJsonArray{defaultJson()["axes"].toArray()[0]})
+                              << "axes"
+                              << "must be an array of exactly two axes";
+    QTest::newRow("tf before t0") << "trajectory.cubic.tf" << QJsonValue(-1)
+                                  << "trajectory.cubic.tf"
                                   << "must be later than t0";
     QTest::newRow("object expected") << "trajectory" << QJsonValue(3) << "trajectory"
                                      << "must be an object";
-    QTest::newRow("phase margin above 180") << "specification.min_phase_margin" << QJsonValue(190)
-                                            << "specification.min_phase_margin" << "must be 0 .. 180 degrees";
-    QTest::newRow("negative gain margin") << "specification.min_gain_margin" << QJsonValue(-1)
-                                          << "specification.min_gain_margin" << "must be >= 0 dB";
-    QTest::newRow("dac bits above 32") << "implementation.dac_bits" << QJsonValue(33)
-                                       << "implementation.dac_bits" << "must be an integer in 0..32 (0: ideal DAC)";
-    QTest::newRow("dac bits fractional") << "implementation.dac_bits" << QJsonValue(12.5)
-                                         << "implementation.dac_bits" << "must be an integer in 0..32 (0: ideal DAC)";
-    QTest::newRow("dac bits a string") << "implementation.dac_bits" << QJsonValue("16")
-                                       << "implementation.dac_bits" << "must be an integer in 0..32 (0: ideal DAC)";
-    QTest::newRow("negative delay") << "implementation.delay_samples" << QJsonValue(-1)
-                                    << "implementation.delay_samples" << "must be an integer in 0..100";
+    QTest::newRow("phase margin above 180")
+        << "specification.min_phase_margin" << QJsonValue(190) << "specification.min_phase_margin"
+        << "must be 0 .. 180 degrees";
+    QTest::newRow("negative gain margin")
+        << "specification.min_gain_margin" << QJsonValue(-1) << "specification.min_gain_margin"
+        << "must be >= 0 dB";
+    QTest::newRow("dac bits above 32")
+        << "implementation.dac_bits" << QJsonValue(33) << "implementation.dac_bits"
+        << "must be an integer in 0..32 (0: ideal DAC)";
+    QTest::newRow("dac bits fractional")
+        << "implementation.dac_bits" << QJsonValue(12.5) << "implementation.dac_bits"
+        << "must be an integer in 0..32 (0: ideal DAC)";
+    QTest::newRow("dac bits a string")
+        << "implementation.dac_bits" << QJsonValue("16") << "implementation.dac_bits"
+        << "must be an integer in 0..32 (0: ideal DAC)";
+    QTest::newRow("negative delay")
+        << "implementation.delay_samples" << QJsonValue(-1) << "implementation.delay_samples"
+        << "must be an integer in 0..100";
     QTest::newRow("negative encoder") << "implementation.encoder_resolution" << QJsonValue(-0.001)
                                       << "implementation.encoder_resolution"
                                       << "must be >= 0 (mm per count; 0: ideal encoder)";
     QTest::newRow("encoder NaN") << "implementation.encoder_resolution" << QJsonValue("NaN")
-                                 << "implementation.encoder_resolution" << "must be a finite number";
-    QTest::newRow("unknown anti-windup") << "implementation.anti_windup" << QJsonValue("integrator-reset")
-                                         << "implementation.anti_windup"
-                                         << "must be \"none\", \"clamp\" or \"back-calculation\"";
-    QTest::newRow("negative tracking time") << "implementation.tracking_time" << QJsonValue(-2)
-                                            << "implementation.tracking_time" << "must be >= 0 (s; 0: Tt = Ti = kp/ki)";
-    QTest::newRow("implementation not an object") << "implementation" << QJsonValue(1)
-                                                  << "implementation" << "must be an object";
-    QTest::newRow("duration too long") << "trajectory.duration" << QJsonValue(1e12)
-                                       << "trajectory.duration"
-                                       << QStringLiteral("needs 1e+14 samples at this dt; the limit is %1 on this machine")
-                                              .arg(xyt::sampleLimit()); // 1e12 s at dt 0.01; the limit follows the memory
+                                 << "implementation.encoder_resolution"
+                                 << "must be a finite number";
+    QTest::newRow("unknown anti-windup")
+        << "implementation.anti_windup" << QJsonValue("integrator-reset")
+        << "implementation.anti_windup"
+        << "must be \"none\", \"clamp\" or \"back-calculation\"";
+    QTest::newRow("negative tracking time")
+        << "implementation.tracking_time" << QJsonValue(-2) << "implementation.tracking_time"
+        << "must be >= 0 (s; 0: Tt = Ti = kp/ki)";
+    QTest::newRow("implementation not an object")
+        << "implementation" << QJsonValue(1) << "implementation"
+        << "must be an object";
+    QTest::newRow("duration too long")
+        << "trajectory.duration" << QJsonValue(1e12) << "trajectory.duration"
+        << QStringLiteral("needs 1e+14 samples at this dt; the limit is %1 on this machine")
+               .arg(xyt::sampleLimit()); // 1e12 s at dt 0.01; the limit follows the memory
 }
 
 void TstSessionFile::malformed() {
@@ -420,7 +465,8 @@ void TstSessionFile::filesWithoutMarginMinimaLoad() {
     QCOMPARE(r.session.spec.minPhaseMarginDeg, 0.0);
     QCOMPARE(r.session.spec.minGainMarginDb, 0.0);
     root["version"] = kSessionFormatVersion;
-    QCOMPARE(sessionFromJson(root).message(), QString("specification.min_phase_margin: is missing"));
+    QCOMPARE(sessionFromJson(root).message(),
+             QString("specification.min_phase_margin: is missing"));
 }
 
 void TstSessionFile::versionOneFilesMigrate() {
@@ -446,7 +492,8 @@ void TstSessionFile::versionOneFilesMigrate() {
     QJsonObject sparse = versionOne;
     sparse.remove("implementation");
     QJsonObject spec = sparse["specification"].toObject();
-    for (const char* key : {"in_position_window_mm", "max_settle_time", "min_phase_margin", "min_gain_margin"})
+    for (const char* key :
+         {"in_position_window_mm", "max_settle_time", "min_phase_margin", "min_gain_margin"})
         spec.remove(key);
     sparse["specification"] = spec;
     sparse = setPath(sparse, {"trajectory", "gcode"}, QJsonValue(QJsonValue::Undefined)).toObject();
@@ -469,7 +516,8 @@ void TstSessionFile::versionOneFilesMigrate() {
     QVERIFY(r.session == expected);
     // Wrong values are kept for the reader to name, not replaced by defaults.
     sparse["implementation"] = QJsonObject{{"dac_bits", 40}};
-    QCOMPARE(sessionFromJson(sparse).message(), QString("implementation.dac_bits: must be an integer in 0..32 (0: ideal DAC)"));
+    QCOMPARE(sessionFromJson(sparse).message(),
+             QString("implementation.dac_bits: must be an integer in 0..32 (0: ideal DAC)"));
 }
 
 void TstSessionFile::unknownFieldsAreReported() {
@@ -531,7 +579,8 @@ void TstSessionFile::failedSaveKeepsOldFile() {
     changed.umaxVolts = 7.0;
     QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::ExeOwner);
     const bool saved = saveSessionFile(changed, path, &error);
-    QFile::setPermissions(dir.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+    QFile::setPermissions(dir.path(),
+                          QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
     if (saved)
         QSKIP("running as root: a read-only directory does not stop the write");
     QVERIFY(!error.isEmpty());
@@ -545,7 +594,8 @@ void TstSessionFile::duplicateKeysAreRefused_data() {
     // sessions. The key is named by its JSON path, after decoding escapes.
     QTest::addColumn<QByteArray>("json");
     QTest::addColumn<QString>("path");
-    QTest::newRow("top level") << QByteArray(R"({"umax": 2.5, "format": 1, "umax": 250})") << "umax";
+    QTest::newRow("top level") << QByteArray(R"({"umax": 2.5, "format": 1, "umax": 250})")
+                               << "umax";
     QTest::newRow("nested in an array")
         << QByteArray(R"({"axes": [{}, {"gt": {"plant": {"k0": 1, "a1": 2, "k0": 3}}}]})")
         << "axes[1].gt.plant.k0";
@@ -588,8 +638,9 @@ void TstSessionFile::injectedWriteFailureKeepsOldFile() {
     const QByteArray before = readAll(path);
     Session changed = Session::paperDefault();
     changed.umaxVolts = 7.0;
-    for (const auto& [step, reason] : {std::pair{WriteStep::Write, ENOSPC}, std::pair{WriteStep::Sync, EIO},
-                                       std::pair{WriteStep::Rename, EIO}}) {
+    for (const auto& [step, reason] :
+         {std::pair{WriteStep::Write, ENOSPC}, std::pair{WriteStep::Sync, EIO},
+          std::pair{WriteStep::Rename, EIO}}) {
         injectWriteFailureForTesting(step);
         const bool saved = saveSessionFile(changed, path, &error);
         injectWriteFailureForTesting(WriteStep::None);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/session/tuning_session.h"
 #include "tests/support/tolerance.h"
+#include "ui/session/tuning_session.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -154,8 +154,9 @@ void TstTuningSession::viewChangesAreOneStepEach() {
 void TstTuningSession::loopGainScalesTheWholeLoop() {
     // Closed form (guillemin_truxal.h): the loop is L = (kp s + ki)/s k0/(s^3 + a1 s^2 + a2 s)
     // with ki = kp psi1 = wn^4 / k0, so the integral gain goes as wn^4. A root-locus gain K
-    // (L -> K L) is kp -> K kp and ki -> K ki, i.e. wn -> K^(1/4) wn, psi1 = wn^4/(kp k0) unchanged.
-    // K = 16: wn 2 -> 4 rad/s, kp 30 -> 480, ki 16/77.8 -> 256/77.8, L' = 16 L at every frequency.
+    // (L -> K L) is kp -> K kp and ki -> K ki, i.e. wn -> K^(1/4) wn, psi1 = wn^4/(kp k0)
+    // unchanged. K = 16: wn 2 -> 4 rad/s, kp 30 -> 480, ki 16/77.8 -> 256/77.8, L' = 16 L at every
+    // frequency.
     TuningSession s;
     const GtDesign before = *s.axisEvaluation(0).gt;
     QSignalSpy spy(&s, &TuningSession::designChanged);
@@ -169,7 +170,8 @@ void TstTuningSession::loopGainScalesTheWholeLoop() {
     XYT_COMPARE_NEAR(after.ki, 256.0 / 77.8, 1e-14, 0.0);
     XYT_COMPARE_NEAR(after.psi1, before.psi1, 1e-14, 0.0);
     for (double w : {0.01, 0.3, 2.0, 40.0}) {
-        const std::complex<double> ratio = after.openLoop.frequencyResponse(w) / before.openLoop.frequencyResponse(w);
+        const std::complex<double> ratio =
+            after.openLoop.frequencyResponse(w) / before.openLoop.frequencyResponse(w);
         XYT_COMPARE_NEAR(ratio.real(), 16.0, 1e-12, 0.0);
         XYT_COMPARE_NEAR(ratio.imag(), 0.0, 0.0, 1e-10);
     }
