@@ -4,6 +4,8 @@
 #include "core/model/errors.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
+#include "ui/panels/stale_veil.h"
+#include "ui/panels/status_strip.h"
 #include "ui/plots/design_space_plot.h"
 #include "ui/session/tuning_session.h"
 
@@ -56,13 +58,6 @@ void lowerThisThreadPriority() {
 #endif
 }
 
-/// The settings beyond sameStudySettings that change the runs of a study: the settle limit
-/// (the run lasts tf + 2 x it) and the in-position window (its settle figures).
-bool sameRunLimits(const Session& a, const Session& b) {
-    return a.spec.maxSettleTimeSeconds == b.spec.maxSettleTimeSeconds &&
-           a.spec.inPositionWindowMm == b.spec.inPositionWindowMm;
-}
-
 const SweepCriterion kCriteria[] = {SweepCriterion::Itae,      SweepCriterion::MaxError,
                                     SweepCriterion::Rmse,      SweepCriterion::MaxU,
                                     SweepCriterion::Settle,    SweepCriterion::PhaseMargin,
@@ -106,15 +101,6 @@ QString num(double v, int digits = 4) {
 
 QString axisName(const Session& s, int axis) {
     return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
-}
-
-/// What the study of @p axis depends on in the session (everything but wn and kp).
-bool sameStudySettings(const Session& a, const Session& b, int axis) {
-    const GtAxisSettings& ga = a.axes.at(static_cast<std::size_t>(axis)).gt;
-    const GtAxisSettings& gb = b.axes.at(static_cast<std::size_t>(axis)).gt;
-    // The runs depend on the actuator limit too; the other limits only judge them.
-    return ga.plant == gb.plant && ga.modelUnitsPerPositionUnit == gb.modelUnitsPerPositionUnit &&
-           a.trajectory == b.trajectory && a.umaxVolts == b.umaxVolts;
 }
 
 /// The criteria a design fails, for the readout.
@@ -185,7 +171,16 @@ QString shadesText() {
 } // namespace
 
 DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+    : QWidget(parent), session_(session),
+      runner_(this, {[this](double fraction) { showProgress(progress_, fraction); },
+                     [this](Outcome&& outcome, const ResultStamp& stamp) {
+                         onFinished(std::move(outcome), stamp);
+                     },
+                     [this](const QString& error, const ResultStamp&) {
+                         cancel_->setEnabled(false);
+                         progress_->setValue(0);
+                         setStatus(tr("The study failed: %1").arg(error), true);
+                     }}) {
     const Specification spec = initialSpecification(session_->session());
     lastUmaxVolts_ = session_->session().umaxVolts;
 
@@ -358,6 +353,7 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     plot_->setToolTip(shadesText());
     auto* right = new QVBoxLayout;
     right->addWidget(plot_, 1);
+    veil_ = new StaleVeil(plot_);
 
     auto* middle = new QHBoxLayout;
     middle->addWidget(controlPanel_);
@@ -380,6 +376,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     connect(plot_, &DesignSpacePlot::cellHovered, this, &DesignSpaceView::showHover);
     connect(plot_, &DesignSpacePlot::cellClicked, this, &DesignSpaceView::loadCell);
     connect(session_, &TuningSession::designChanged, this, &DesignSpaceView::updateCurrentDesign);
+    connect(session_, &TuningSession::currentAxisChanged, this,
+            &DesignSpaceView::updateCurrentDesign);
     // A new grid or criterion is a new study: the live map follows it too.
     for (QDoubleSpinBox* box : {wnMin_, wnMax_, kpMin_, kpMax_})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { scheduleLive(true); });
@@ -410,10 +408,9 @@ void DesignSpaceView::scheduleLive(bool force) {
         return; // the status says so when a study is asked for
     // What is shown, or being computed: a running study's settings, else the last result's.
     const bool running = isRunning();
-    const Session& shown = running ? pendingSession_ : studiedSession_;
-    const int shownAxis = running ? pendingAxis_ : studiedAxis_;
-    const bool upToDate = (running || result_) && shownAxis == axis &&
-                          sameStudySettings(s, shown, axis) && sameRunLimits(s, shown);
+    const bool upToDate =
+        running ? session_->isCurrent(runner_.runningStamp()) && runner_.runningStamp().axis == axis
+                : resultIsCurrent();
     if (upToDate && !force)
         return;
     startStudy(StudyKind::Preview);
@@ -423,13 +420,11 @@ void DesignSpaceView::scheduleLive(bool force) {
 void DesignSpaceView::onRest() {
     if (!live_->isChecked() || !isVisible() || isRunning())
         return; // a preview under way starts the full study when it finishes
-    if (result_ && resultIsPreview_ && result_->status == SweepStatus::Completed)
+    if (resultIsCurrent() && resultIsPreview_ && result_->status == SweepStatus::Completed)
         startStudy(StudyKind::Full);
 }
 
-DesignSpaceView::~DesignSpaceView() {
-    stopJob();
-}
+DesignSpaceView::~DesignSpaceView() = default; // the runner cancels and waits for its study
 
 QString DesignSpaceView::statusText() const {
     return status_->text();
@@ -453,19 +448,12 @@ void DesignSpaceView::setStatus(const QString& text, bool isError) {
     setStatusText(status_, text, isError);
 }
 
-void DesignSpaceView::stopJob() {
-    if (!job_)
-        return;
-    job_->stop(); // the workers stop after the item each is computing: a short wait
-    job_.reset();
-}
-
 void DesignSpaceView::run() {
     startStudy(StudyKind::Full);
 }
 
 void DesignSpaceView::startStudy(StudyKind kind) {
-    stopJob();
+    runner_.discard(); // a study of other settings: its map would not be shown
     const int axis = session_->currentAxis();
     const Session& s = session_->session();
     const AxisSettings& settings = s.axes.at(static_cast<std::size_t>(axis));
@@ -499,38 +487,22 @@ void DesignSpaceView::startStudy(StudyKind kind) {
     options.refine = !preview; // the preview shows the map; the best design is the full study's
     options.onWorkerStart = lowerThisThreadPriority;
 
-    pendingProblem_ = problem;
-    pendingSession_ = s;
-    pendingAxis_ = axis;
-    pendingLogGrid_ = logGrid_->isChecked();
-    job_ = std::make_unique<Job>();
-    job_->kind = kind;
-    const int id = job_->id = ++lastJobId_;
-    std::atomic<bool>* cancelFlag = &job_->cancel;
-    // The worker only posts to this widget; the destructor joins it before the QObject goes, and
-    // ~QObject drops the events still queued.
-    job_->thread = std::thread([this, id, cancelFlag, problem, wnAxis, kpAxis, options]() mutable {
-        lowerThisThreadPriority();
-        options.progress = [this, id, cancelFlag](double fraction) {
-            QMetaObject::invokeMethod(
-                this, [this, id, fraction] { onProgress(id, fraction); }, Qt::QueuedConnection);
-            return !cancelFlag->load();
-        };
-        auto result = std::make_shared<DesignSweepResult>();
-        QString error;
-        const auto start = std::chrono::steady_clock::now();
-        try {
-            *result = sweepDesignSpace(problem, wnAxis, kpAxis, options);
-        } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
-        }
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        QMetaObject::invokeMethod(
-            this, [this, id, result, error, ms] { onFinished(id, result, error, ms); },
-            Qt::QueuedConnection);
-    });
+    runningKind_ = kind;
+    const bool logGrid = logGrid_->isChecked();
+    // The work holds copies of its inputs only: it may outlive a change of the design.
+    runner_.start(
+        session_->stamp(axis, ResultScope::AxisStudy),
+        [problem, wnAxis, kpAxis, options, kind, logGrid](const JobProgress& progress) mutable {
+            lowerThisThreadPriority();
+            options.progress = progress;
+            const auto start = std::chrono::steady_clock::now();
+            Outcome outcome{sweepDesignSpace(problem, wnAxis, kpAxis, options), problem, kind,
+                            logGrid, 0.0};
+            outcome.elapsedMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            return outcome;
+        });
     progress_->setValue(0);
     cancel_->setEnabled(true);
     if (preview)
@@ -546,48 +518,32 @@ void DesignSpaceView::startStudy(StudyKind kind) {
 }
 
 void DesignSpaceView::cancel() {
-    if (!job_)
+    if (!runner_.isRunning())
         return;
-    job_->cancel = true;
+    runner_.cancel();
     cancel_->setEnabled(false);
     setStatus(tr("Cancelling…"));
 }
 
-void DesignSpaceView::onProgress(int jobId, double fraction) {
-    if (job_ && job_->id == jobId)
-        progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
-}
-
-void DesignSpaceView::onFinished(int jobId, std::shared_ptr<DesignSweepResult> result,
-                                 QString error, double elapsedMs) {
-    if (!job_ || job_->id != jobId)
-        return;          // a study replaced by a newer one
-    job_->thread.join(); // posting this was the worker's last act
-    const StudyKind kind = job_->kind;
-    job_.reset();
+void DesignSpaceView::onFinished(Outcome&& outcome, const ResultStamp& stamp) {
     cancel_->setEnabled(false);
-    if (!error.isEmpty()) {
-        progress_->setValue(0);
-        setStatus(tr("The study failed: %1").arg(error), true);
-        return;
-    }
-    result_ = std::move(*result);
+    const StudyKind kind = outcome.kind;
+    result_ = std::move(outcome.result);
     resultIsPreview_ = kind == StudyKind::Preview;
-    lastElapsedMs_ = elapsedMs;
-    problem_ = pendingProblem_;
-    studiedSession_ = pendingSession_;
-    studiedAxis_ = pendingAxis_;
-    studiedLogGrid_ = pendingLogGrid_;
-    const Session& s = session_->session();
+    lastElapsedMs_ = outcome.elapsedMs;
+    problem_ = std::move(outcome.problem);
+    stamp_ = stamp;
+    staleStatus_ = false;
+    studiedLogGrid_ = outcome.logGrid;
     plot_->showResult(
         *result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
-        tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
-    updateCurrentDesign();
+        tr("%1, axis %2").arg(metricLabel(selected(metric_)), axisName(stamp.session, stamp.axis)));
     showOutcome();
+    updateCurrentDesign(); // judged by the session's limits; veiled if it changed meanwhile
     emit studyFinished(kind);
     // The full study follows a completed preview once the inputs have rested.
     if (resultIsPreview_ && result_->status == SweepStatus::Completed && live_->isChecked() &&
-        !rest_->isActive())
+        !rest_->isActive() && !isRunning() && resultIsCurrent())
         startStudy(StudyKind::Full);
 }
 
@@ -691,7 +647,7 @@ void DesignSpaceView::updateCurrentDesign() {
     lastUmaxVolts_ = s.umaxVolts;
     // A study stays judged by the session's specification: when only its limits changed (the
     // runs did not), every design is judged again (exact; the refinement is dropped).
-    if (result_ && problem_ && !isRunning() && s.umaxVolts == problem_->spec.umaxVolts) {
+    if (problem_ && resultIsCurrent()) {
         Specification spec = s.spec;
         spec.umaxVolts = s.umaxVolts;
         if (!(spec == problem_->spec)) {
@@ -701,7 +657,8 @@ void DesignSpaceView::updateCurrentDesign() {
                 plot_->showResult(
                     *result_, studiedLogGrid_, selected(metric_), logColor_->isChecked(),
                     tr("%1, axis %2")
-                        .arg(metricLabel(selected(metric_)), axisName(s, studiedAxis_)));
+                        .arg(metricLabel(selected(metric_)), axisName(s, stamp_->axis)));
+                readout_->clear(); // it described a cell as judged before
                 showOutcome();
             } catch (const InvalidInput& e) {
                 setStatus(tr("Cannot judge the study: %1").arg(QString::fromStdString(e.what())),
@@ -709,22 +666,56 @@ void DesignSpaceView::updateCurrentDesign() {
             }
         }
     }
-    const int axis = result_ ? studiedAxis_ : session_->currentAxis();
-    const GtAxisSettings& gt = s.axes.at(static_cast<std::size_t>(axis)).gt;
+    const GtAxisSettings& gt = s.axes.at(static_cast<std::size_t>(studiedAxis())).gt;
     plot_->setCurrentDesign(gt.omegaNRadPerSec, gt.kp);
-    const QString staleNote = tr(
-        "The plant, the trajectory or the actuator limit changed since the study: run it again.");
-    if (result_ && !isRunning()) {
-        if (!sameStudySettings(s, studiedSession_, studiedAxis_))
-            setStatus(staleNote, true);
-        else if (status_->text() == staleNote)
-            showOutcome(); // undone back to the studied settings
-    }
+    showFreshness();
     scheduleLive();
 }
 
+bool DesignSpaceView::resultIsCurrent() const {
+    return result_ && stamp_ && session_->isCurrent(*stamp_) &&
+           stamp_->axis == session_->currentAxis();
+}
+
+void DesignSpaceView::showFreshness() {
+    if (!result_ || !stamp_)
+        return;
+    if (resultIsCurrent()) {
+        veil_->lift();
+        if (staleStatus_ && !isRunning())
+            showOutcome(); // back to the studied settings (an undo)
+        staleStatus_ = false;
+        return;
+    }
+    readout_->clear();
+    const QString what = TuningSession::describe(*stamp_);
+    const Session& s = session_->session();
+    const int axis = session_->currentAxis();
+    QString why;
+    if (stamp_->axis != axis)
+        why = tr("This tab shows axis %1.").arg(axisName(s, axis));
+    else if (s.axes.at(static_cast<std::size_t>(axis)).method != DesignMethod::GuilleminTruxal)
+        why = tr("Axis %1 now uses pole placement: the map applies to Guillemin–Truxal axes.")
+                  .arg(axisName(s, axis));
+    else
+        why = tr("The plant, the trajectory or the limits the runs depend on have changed since.");
+    const bool studiable =
+        s.axes.at(static_cast<std::size_t>(axis)).method == DesignMethod::GuilleminTruxal;
+    const QString next = !studiable ? QString()
+                         : live_->isChecked() && isVisible()
+                             ? tr("The live map of the current design follows.")
+                             : tr("Press Run to study the current design.");
+    veil_->veil(tr("Map computed for %1. %2 %3").arg(what, why, next).trimmed());
+    if (!isRunning()) {
+        setStatus(tr("The map shown is not of the session's study (computed for %1). %2")
+                      .arg(what, next)
+                      .trimmed());
+        staleStatus_ = true;
+    }
+}
+
 void DesignSpaceView::showHover(std::optional<std::pair<std::size_t, std::size_t>> cell) {
-    if (!cell || !result_)
+    if (!cell || !resultIsCurrent())
         return;
     readout_->setText(
         describePoint(result_->at(cell->first, cell->second), problem_->spec, selected(metric_)));
@@ -733,10 +724,12 @@ void DesignSpaceView::showHover(std::optional<std::pair<std::size_t, std::size_t
 void DesignSpaceView::loadCell(std::size_t iWn, std::size_t iKp) {
     if (!result_)
         return;
-    GtAxisSettings gt = session_->session().axes.at(static_cast<std::size_t>(studiedAxis_)).gt;
+    if (!resultIsCurrent())
+        return; // a cell of another study's map (veiled: no click reaches it)
+    GtAxisSettings gt = session_->session().axes.at(static_cast<std::size_t>(stamp_->axis)).gt;
     gt.omegaNRadPerSec = result_->wnValues.at(iWn);
     gt.kp = result_->kpValues.at(iKp);
-    session_->setGt(studiedAxis_, gt, tr("Load design from the design space"));
+    session_->setGt(stamp_->axis, gt, tr("Load design from the design space"));
 }
 
 } // namespace xyt::ui

@@ -6,7 +6,8 @@
 #include "core/study/design_sweep.h"
 #include "core/study/sweep_diagnosis.h"
 
-#include "ui/background_job.h"
+#include "ui/jobs/job_runner.h"
+#include "ui/session/tuning_session.h"
 
 #include <QWidget>
 
@@ -27,7 +28,7 @@ class QTimer;
 namespace xyt::ui {
 
 class DesignSpacePlot;
-class TuningSession;
+class StaleVeil;
 
 /**
  * The design-space study of Braga et al. for the presenter's current axis: a grid of
@@ -45,6 +46,11 @@ class TuningSession;
  * kLiveRestMs the full study (the grid at the session's dt) follows. A change of wn or kp only
  * moves the design marker; a change of the other limits judges the map again. The workers run
  * at a lower priority than the GUI thread, so the sliders stay as fast as without the map.
+ *
+ * A map keeps the stamp of the study settings it was computed for. When they no longer match
+ * the session (another plant, method or axis, File › New, a study finishing after a change),
+ * the map is veiled with what it was computed for, its cells neither load nor describe a
+ * design, and, Live on, a new study starts.
  */
 class DesignSpaceView : public QWidget {
     Q_OBJECT
@@ -61,7 +67,11 @@ public:
     static constexpr int kLiveRestMs = 400;      ///< rest before the full study follows
     /// Asks the running study to stop; its partial result is shown when it has stopped.
     void cancel();
-    bool isRunning() const { return job_ != nullptr; }
+    bool isRunning() const { return runner_.isRunning(); }
+    /// True when a map is shown and describes the session's current axis and study settings.
+    bool resultIsCurrent() const;
+    /// The cover over a stale map, with what it was computed for.
+    StaleVeil* veil() const { return veil_; }
 
     /// The last finished study (partial when cancelled).
     const std::optional<DesignSweepResult>& result() const { return result_; }
@@ -70,11 +80,11 @@ public:
     /// Wall time of the last finished study or preview, in ms.
     double lastElapsedMs() const { return lastElapsedMs_; }
     /// Kind of the study under way (meaningful while isRunning()).
-    StudyKind runningKind() const { return job_ ? job_->kind : StudyKind::Full; }
+    StudyKind runningKind() const { return runningKind_; }
     QCheckBox* liveBox() const { return live_; }
     /// The problem of the last finished study, and the axis it was for.
     const std::optional<DesignProblem>& studiedProblem() const { return problem_; }
-    int studiedAxis() const { return studiedAxis_; }
+    int studiedAxis() const { return stamp_ ? stamp_->axis : session_->currentAxis(); }
 
     DesignSpacePlot* plot() const { return plot_; }
     QPushButton* runButton() const { return run_; }
@@ -117,8 +127,13 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    struct Job : BackgroundJob {
+    /// What a study computes, with the inputs it was computed from.
+    struct Outcome {
+        DesignSweepResult result;
+        DesignProblem problem;
         StudyKind kind = StudyKind::Full;
+        bool logGrid = true;
+        double elapsedMs = 0.0;
     };
 
     void startStudy(StudyKind kind);
@@ -126,10 +141,9 @@ private:
     /// session's current study settings; @p force: also when it is (the grid changed).
     void scheduleLive(bool force = false);
     void onRest();
-    void stopJob();
-    void onProgress(int jobId, double fraction);
-    void onFinished(int jobId, std::shared_ptr<DesignSweepResult> result, QString error,
-                    double elapsedMs);
+    void onFinished(Outcome&& outcome, const ResultStamp& stamp);
+    /// Veils a map that no longer describes the session's study, lifts the veil when it does.
+    void showFreshness();
     void showOutcome();
     void showOutcomeText();
     void updateCurrentDesign();
@@ -140,17 +154,12 @@ private:
     void setStatus(const QString& text, bool isError = false);
 
     TuningSession* session_;
-    std::unique_ptr<Job> job_;
-    int lastJobId_ = 0;
     std::optional<DesignSweepResult> result_;
     std::optional<DesignProblem> problem_;
-    std::optional<DesignProblem> pendingProblem_;
-    Session studiedSession_;
-    Session pendingSession_;
-    int studiedAxis_ = 0;
-    int pendingAxis_ = 0;
+    std::optional<ResultStamp> stamp_; ///< what the shown map was computed for
+    StudyKind runningKind_ = StudyKind::Full;
+    bool staleStatus_ = false; ///< the status says the map is stale (not the outcome)
     bool studiedLogGrid_ = true;
-    bool pendingLogGrid_ = true;
     double lastUmaxVolts_ = 0.0;
     bool resultIsPreview_ = false;
     double lastElapsedMs_ = 0.0;
@@ -187,6 +196,8 @@ private:
     QDoubleSpinBox* umax_;
     QDoubleSpinBox* phaseMargin_;
     QDoubleSpinBox* gainMargin_;
+    StaleVeil* veil_ = nullptr;
+    JobRunner<Outcome, ResultStamp> runner_; ///< last: destroyed first, before the widgets
 };
 
 /// The specification the view starts with for @p session: the session's (the paper's by

@@ -8,8 +8,10 @@
 #include "core/io/file_io.h"
 #include "core/model/errors.h"
 #include "core/session/identified_axis.h"
+#include "ui/panels/status_strip.h"
 #include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_tools.h"
+#include "ui/plots/pole_zero_plot.h"
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
@@ -42,6 +44,9 @@
 namespace xyt::ui {
 
 namespace {
+
+/// The name of the fitted model's set on the pole-zero map.
+constexpr const char* kModelSet = "model";
 
 const QString kSampleTimeItem = QStringLiteral("(sample time)");
 
@@ -113,7 +118,12 @@ QString parameterLines(const IdentifiedModel& m) {
 } // namespace
 
 IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* parent)
-    : QDialog(parent), session_(session) {
+    : QDialog(parent), session_(session),
+      runner_(this, {[this](double fraction) { showProgress(progress_, fraction); },
+                     [this](IdentifiedModel&& model, const Candidate& candidate) {
+                         onFinished(std::move(model), candidate);
+                     },
+                     [this](const QString& error, const Candidate&) { onFailed(error); }}) {
     setWindowTitle(tr("Identify a model from data"));
     setModal(false);
     setObjectName("identificationWindow");
@@ -323,9 +333,7 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     clearPlots(tr("Fit a model to see it here."));
 }
 
-IdentificationWindow::~IdentificationWindow() {
-    stopJob();
-}
+IdentificationWindow::~IdentificationWindow() = default; // the runner cancels and waits
 
 void IdentificationWindow::buildPlots() {
     tabs_ = new QTabWidget;
@@ -380,40 +388,10 @@ void IdentificationWindow::buildPlots() {
         std::make_unique<PlotNotice>(residualPlot_, autoRect, Qt::AlignTop | Qt::AlignRight);
     tabs_->addTab(residualPlot_, tr("Residuals"));
 
-    pzPlot_ = makePlot("identificationPoleZeroPlot");
-    unitCircle_ = new QCPCurve(pzPlot_->xAxis, pzPlot_->yAxis);
-    unitCircle_->setPen(QPen(colors::snapshot, 1.0, Qt::DashLine));
-    unitCircle_->setName(tr("unit circle"));
-    QVector<double> cx, cy, ct;
-    for (int i = 0; i <= 200; ++i) {
-        const double a = 2.0 * std::numbers::pi * i / 200.0;
-        ct << i;
-        cx << std::cos(a);
-        cy << std::sin(a);
-    }
-    unitCircle_->setData(ct, cx, cy);
-    poles_ = pzPlot_->addGraph();
-    poles_->setName(tr("poles"));
-    poles_->setLineStyle(QCPGraph::lsNone);
-    poles_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, colors::error, 10));
-    poles_->setPen(QPen(colors::error, 2.0));
-    zeros_ = pzPlot_->addGraph();
-    zeros_->setName(tr("zeros"));
-    zeros_->setLineStyle(QCPGraph::lsNone);
-    zeros_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, colors::output, 10));
-    zeros_->setPen(QPen(colors::output, 2.0));
-    pzPlot_->xAxis->setLabel(tr("Re z"));
-    pzPlot_->yAxis->setLabel(tr("Im z"));
-    pzPlot_->legend->setVisible(true);
-    pzPlot_->plotLayout()->insertRow(0);
-    pzPlot_->plotLayout()->addElement(0, 0,
-                                      new QCPTextElement(pzPlot_, tr("Pole-zero map (z-plane)")));
-    placeLegendBelow(pzPlot_, 2, 3);
-    pzNotice_ =
-        std::make_unique<PlotNotice>(pzPlot_, pzPlot_->axisRect(), Qt::AlignTop | Qt::AlignRight);
-    // Equal scales at every size (the unit circle round): x follows y once the layout is known.
-    connect(pzPlot_, &QCustomPlot::afterLayout, pzPlot_,
-            [this] { pzPlot_->xAxis->setScaleRatio(pzPlot_->yAxis, 1.0); });
+    // The workbench's own map: the same marks, z-plane grid, unit circle and view fitting.
+    pzPlot_ = new PoleZeroPlot;
+    pzPlot_->setObjectName("identificationPoleZeroPlot");
+    pzPlot_->setMinimumSize(420, 300);
     tabs_->addTab(pzPlot_, tr("Poles and zeros"));
 }
 
@@ -459,8 +437,7 @@ bool IdentificationWindow::loadFile(const QString& path) {
         const QStringList names = columnNames(table);
         // The candidates were fitted to the previous file: they go with it (a running fit too).
         const bool hadCandidates = !candidates_.empty() || isRunning();
-        stopJob();
-        pending_.reset();
+        runner_.discard();
         cancel_->setEnabled(false);
         progress_->setValue(0);
         candidates_.clear();
@@ -623,32 +600,12 @@ void IdentificationWindow::fit() {
                        .arg(*y0, 0, 'g', 10);
         }
     }
-    pending_ = candidate;
-    job_ = std::make_unique<BackgroundJob>();
-    const int id = job_->id = ++lastJobId_;
-    std::atomic<bool>* cancelFlag = &job_->cancel;
     const IoData estimation = candidate.estimation;
     const std::optional<IoData> validation = candidate.validation;
-    job_->thread = std::thread([this, id, cancelFlag, spec, estimation, validation]() mutable {
-        spec.search.progress = [this, id, cancelFlag](double fraction) {
-            QMetaObject::invokeMethod(
-                this,
-                [this, id, fraction] {
-                    if (job_ && job_->id == id)
-                        progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
-                },
-                Qt::QueuedConnection);
-            return !cancelFlag->load();
-        };
-        auto model = std::make_shared<IdentifiedModel>();
-        QString error;
-        try {
-            *model = identifyModel(estimation, validation ? &*validation : nullptr, spec);
-        } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
-        }
-        QMetaObject::invokeMethod(
-            this, [this, id, model, error] { onFinished(id, model, error); }, Qt::QueuedConnection);
+    // The work holds copies of its inputs only; the candidate is the result's stamp.
+    runner_.start(candidate, [spec, estimation, validation](const JobProgress& progress) mutable {
+        spec.search.progress = progress;
+        return identifyModel(estimation, validation ? &*validation : nullptr, spec);
     });
     progress_->setValue(0);
     fit_->setEnabled(false);
@@ -659,39 +616,29 @@ void IdentificationWindow::fit() {
 }
 
 void IdentificationWindow::cancel() {
-    if (!job_)
+    if (!runner_.isRunning())
         return;
-    job_->cancel = true;
+    runner_.cancel();
     cancel_->setEnabled(false);
     setStatus(tr("Cancelling…"));
 }
 
-void IdentificationWindow::stopJob() {
-    if (!job_)
-        return;
-    job_->stop();
-    job_.reset();
-}
-
-void IdentificationWindow::onFinished(int jobId, std::shared_ptr<IdentifiedModel> model,
-                                      QString error) {
-    if (!job_ || job_->id != jobId)
-        return;
-    job_->thread.join();
-    job_.reset();
+void IdentificationWindow::onFailed(const QString& error) {
     cancel_->setEnabled(false);
     fit_->setEnabled(experiment_.has_value());
     progress_->setValue(100);
-    Candidate candidate = std::move(*pending_);
-    pending_.reset();
-    if (!error.isEmpty()) {
-        table_->clearSelection();
-        clearPlots(tr("No model: the fit failed."));
-        setStatus(tr("The fit failed: %1").arg(error), true);
-        emit fitFinished();
-        return;
-    }
-    candidate.model = std::move(*model);
+    table_->clearSelection();
+    clearPlots(tr("No model: the fit failed."));
+    setStatus(tr("The fit failed: %1").arg(error), true);
+    emit fitFinished();
+}
+
+void IdentificationWindow::onFinished(IdentifiedModel&& model, const Candidate& fitted) {
+    cancel_->setEnabled(false);
+    fit_->setEnabled(experiment_.has_value());
+    progress_->setValue(100);
+    Candidate candidate = fitted;
+    candidate.model = std::move(model);
     const IdentifiedModel& m = candidate.model;
     QString text = tr("%1: %2").arg(QString::fromStdString(m.structure),
                                     QString::fromStdString(estimationStatusName(m.status)));
@@ -757,11 +704,9 @@ void IdentificationWindow::clearPlots(const QString& reason) {
         residualPlot_, *residualNotice_,
         {autoStems_, autoBound_[0], autoBound_[1], crossStems_, crossBound_[0], crossBound_[1]},
         reason);
-    clearWithNotice(pzPlot_, *pzNotice_, {poles_, zeros_}, reason);
-    pzPlot_->xAxis->setRange(-1.3, 1.3);
-    pzPlot_->yAxis->setRange(-1.3, 1.3);
+    pzPlot_->showNoResult(tr("Pole-zero map (z-plane)"), reason);
     // Now, not queued: not one frame of the old candidate's curves next to an error.
-    for (QCustomPlot* plot : {timePlot_, residualPlot_, pzPlot_})
+    for (QCustomPlot* plot : {timePlot_, residualPlot_, static_cast<QCustomPlot*>(pzPlot_)})
         plot->replot();
 }
 
@@ -824,25 +769,12 @@ void IdentificationWindow::showCandidate(int index) {
     residualNotice_->setLines({});
     residualPlot_->replot();
 
-    // Poles and zeros in the z-plane.
-    QVector<double> pr, pi, zr, zi;
-    double extent = 1.2;
-    for (const auto& p : m.roots.poles) {
-        pr << p.real();
-        pi << p.imag();
-        extent = std::max(extent, 1.1 * std::abs(p));
-    }
-    for (const auto& z : m.roots.zeros) {
-        zr << z.real();
-        zi << z.imag();
-        extent = std::max(extent, 1.1 * std::abs(z));
-    }
-    poles_->setData(pr, pi);
-    zeros_->setData(zr, zi);
-    if (auto* title = qobject_cast<QCPTextElement*>(pzPlot_->plotLayout()->element(0, 0)))
-        title->setText(m.roots.nonMinimumPhase
-                           ? tr("Pole-zero map (z-plane): a zero outside the unit circle (NMP)")
-                           : tr("Pole-zero map (z-plane)"));
+    // Poles and zeros in the z-plane, drawn as the workbench draws its own.
+    PoleZeroSet set{kModelSet, m.roots.tsSeconds, m.roots.poles, m.roots.zeros};
+    pzPlot_->showSets({set},
+                      m.roots.nonMinimumPhase
+                          ? tr("Pole-zero map (z-plane): a zero outside the unit circle (NMP)")
+                          : tr("Pole-zero map (z-plane)"));
     QStringList notes;
     for (const std::string& n : m.roots.notes)
         notes << QString::fromStdString(n);
@@ -851,16 +783,20 @@ void IdentificationWindow::showCandidate(int index) {
                     "(every other pole is inside the unit circle).");
     else if (!m.roots.stable)
         notes << tr("A pole is on or outside the unit circle: the model is unstable.");
-    pzNotice_->setSevere(false);
-    pzNotice_->setLines(notes);
-    // Equal scales (the unit circle round): the y range as computed, x widened to match.
-    pzPlot_->yAxis->setRange(-extent, extent);
-    pzPlot_->xAxis->setRange(-extent, extent);
+    pzPlot_->setNotes(notes);
     pzPlot_->replot();
 }
 
+QCPGraph* IdentificationWindow::polesGraph() const {
+    return pzPlot_->polesGraph(kModelSet);
+}
+
+QCPGraph* IdentificationWindow::zerosGraph() const {
+    return pzPlot_->zerosGraph(kModelSet);
+}
+
 QString IdentificationWindow::poleZeroNoticeText() const {
-    return pzNotice_->text();
+    return pzPlot_->noticeText();
 }
 
 bool IdentificationWindow::rangeIsWhole() const {

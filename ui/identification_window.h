@@ -5,7 +5,7 @@
 #include "core/identification/experiment_table.h"
 #include "core/identification/identification.h"
 #include "core/identification/io_data.h"
-#include "ui/background_job.h"
+#include "ui/jobs/job_runner.h"
 
 #include <QDialog>
 #include <QStringList>
@@ -32,6 +32,7 @@ class QUndoCommand;
 namespace xyt::ui {
 
 class PlotNotice;
+class PoleZeroPlot;
 class TuningSession;
 
 /**
@@ -73,7 +74,7 @@ public:
     void cancel();
     /// Makes the selected candidate the plant of axis @p axis (0 = X, 1 = Y): one undo step.
     void useForAxis(int axis);
-    bool isRunning() const { return job_ != nullptr; }
+    bool isRunning() const { return runner_.isRunning(); }
 
     const std::vector<Candidate>& candidates() const { return candidates_; }
     /// The candidate shown in the plots, or null.
@@ -112,11 +113,12 @@ public:
     QCustomPlot* residualPlot() const { return residualPlot_; }
     QCPGraph* autocorrelationGraph() const { return autoStems_; }
     QCPGraph* crossCorrelationGraph() const { return crossStems_; }
-    QCustomPlot* poleZeroPlot() const { return pzPlot_; }
+    PoleZeroPlot* poleZeroPlot() const { return pzPlot_; }
     /// The notes under the pole-zero map (integrator, instability, NMP zeros).
     QString poleZeroNoticeText() const;
-    QCPGraph* polesGraph() const { return poles_; }
-    QCPGraph* zerosGraph() const { return zeros_; }
+    /// The model's poles and zeros on the map (nullptr while no model is shown).
+    QCPGraph* polesGraph() const;
+    QCPGraph* zerosGraph() const;
     QTabWidget* plotTabs() const { return tabs_; }
 
 signals:
@@ -127,8 +129,9 @@ private:
     void buildPlots();
     void updateOrderBoxes();
     void setStatus(const QString& text, bool isError = false);
-    void stopJob();
-    void onFinished(int jobId, std::shared_ptr<IdentifiedModel> model, QString error);
+    /// A fit ended: @p candidate is what it was fitted to, @p model what it found.
+    void onFinished(IdentifiedModel&& model, const Candidate& candidate);
+    void onFailed(const QString& error);
     void addRow(const Candidate& c);
     void showCandidate(int index);
     void clearPlots(const QString& reason);
@@ -148,9 +151,6 @@ private:
     std::optional<ExperimentTable> experiment_;
     std::optional<ExperimentTable> validationExperiment_;
     std::vector<Candidate> candidates_;
-    std::optional<Candidate> pending_;
-    std::unique_ptr<BackgroundJob> job_;
-    int lastJobId_ = 0;
     int shown_ = -1;
     /// The range boxes' values that mean the whole record (set by previewRecord).
     std::optional<std::array<double, 2>> wholeRange_;
@@ -192,13 +192,11 @@ private:
     QCPGraph* autoBound_[2];
     QCPGraph* crossStems_;
     QCPGraph* crossBound_[2];
-    QCustomPlot* pzPlot_;
-    QCPGraph* poles_;
-    QCPGraph* zeros_;
-    QCPCurve* unitCircle_;
+    PoleZeroPlot* pzPlot_;
     std::unique_ptr<PlotNotice> timeNotice_;
     std::unique_ptr<PlotNotice> residualNotice_;
-    std::unique_ptr<PlotNotice> pzNotice_;
+    /// Last: destroyed first, before the widgets. A fit's stamp is the candidate it fits.
+    JobRunner<IdentifiedModel, Candidate> runner_;
 };
 
 } // namespace xyt::ui

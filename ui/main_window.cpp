@@ -15,6 +15,7 @@
 #include "ui/panels/parameter_slider.h"
 #include "ui/panels/plant_editor.h"
 #include "ui/panels/pp_editor.h"
+#include "ui/panels/stale_veil.h"
 #include "ui/panels/trajectory_editor.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/contour_plot.h"
@@ -186,6 +187,18 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
 
     connect(session_, &TuningSession::designChanged, this, &MainWindow::refresh);
     connect(session_, &TuningSession::currentAxisChanged, this, &MainWindow::refresh);
+    // A trajectory kind chosen but not applied (G-code without a program): the trajectory plots
+    // still show the session's, and say so over it rather than pass it for the chosen one.
+    timeVeil_ = new StaleVeil(timePlot_);
+    contourVeil_ = new StaleVeil(contourPlot_);
+    connect(trajectoryEditor_, &TrajectoryEditor::refusalChanged, this, [this](const QString& why) {
+        for (StaleVeil* veil : {timeVeil_, contourVeil_}) {
+            if (why.isEmpty())
+                veil->lift();
+            else
+                veil->veil(why);
+        }
+    });
     resize(1366, 768);
     restoreLayout();
     for (QLineEdit* field : findChildren<QLineEdit*>())
@@ -610,9 +623,8 @@ void MainWindow::refresh() {
     overlayMenu_->setEnabled(!s.snapshots.empty());
     if (overlay_ >= 0) {
         const auto& snap = s.snapshots.at(static_cast<std::size_t>(overlay_));
-        QString ignored;
-        const AxisEvaluation overlay =
-            evaluateAxis(TuningSession::liveSessionOf(s.withDesign(snap), ignored), axis);
+        const AxisEvaluation& overlay =
+            session_->snapshotEvaluation(static_cast<std::size_t>(overlay_), axis);
         timePlot_->showSnapshot(overlay.ok ? overlay.run : SimulationResult{},
                                 QString::fromStdString(snap.name));
     } else {

@@ -33,6 +33,7 @@ class PpEditor;
 class RootLocusPlot;
 class StepPlot;
 class SessionFileController;
+class StaleVeil;
 class TimeResponsePlot;
 class TrajectoryEditor;
 class TuningSession;
@@ -65,6 +66,9 @@ public:
     QTabWidget* upperTabs() const { return upperTabs_; }
     QTabWidget* lowerTabs() const { return lowerTabs_; }
     ContourPlot* contourPlot() const { return contourPlot_; }
+    /// The covers over the trajectory plots while the editor's trajectory is not the session's.
+    StaleVeil* timeVeil() const { return timeVeil_; }
+    StaleVeil* contourVeil() const { return contourVeil_; }
     ContourControls* contourControls() const { return contourControls_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
     ImplementationEditor* implementationEditor() const { return implementation_; }
@@ -134,6 +138,8 @@ private:
     PpEditor* ppEditor_ = nullptr;
     QStackedWidget* methodPages_ = nullptr;
     ContourPlot* contourPlot_ = nullptr;
+    StaleVeil* timeVeil_ = nullptr;
+    StaleVeil* contourVeil_ = nullptr;
     MetricsPanel* metrics_ = nullptr;
     EquationsPanel* equations_ = nullptr;
     QLabel* status_ = nullptr;

@@ -3,6 +3,8 @@
 
 #include "core/model/errors.h"
 #include "core/session/robustness_problem.h"
+#include "ui/panels/stale_veil.h"
+#include "ui/panels/status_strip.h"
 #include "ui/plots/contour_band_plot.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
@@ -33,12 +35,6 @@ namespace {
 
 QString num(double v, int digits = 4) {
     return std::isfinite(v) ? QString::number(v, 'g', digits) : QStringLiteral("n/a");
-}
-
-/// What the analysis of an axis depends on: everything of the session but other axes.
-bool sameAxis(const Session& a, const Session& b, int axis) {
-    return a.axes.at(static_cast<std::size_t>(axis)) == b.axes.at(static_cast<std::size_t>(axis)) &&
-           a.trajectory == b.trajectory && a.umaxVolts == b.umaxVolts && a.spec == b.spec;
 }
 
 QString parameterList(const std::vector<std::string>& names, const std::vector<double>& values) {
@@ -73,7 +69,15 @@ AxisSettings perturbedAxis(AxisSettings settings, const RobustnessProblem& probl
 } // namespace
 
 RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+    : QWidget(parent), session_(session),
+      runner_(this, {[this](double fraction) { showProgress(progress_, fraction); },
+                     [this](Outcome&& outcome, const ResultStamp& stamp) {
+                         onFinished(std::move(outcome), stamp);
+                     },
+                     [this](const QString& error, const ResultStamp&) {
+                         cancel_->setEnabled(false);
+                         setStatus(tr("The analysis failed: %1").arg(error), true);
+                     }}) {
     // The ranges on the left (3 to 5 rows: they fit the lower tab at 1366 x 768 without
     // scrolling); how many plants and what to show in a row under the actions.
     auto* rangeBox = new QGroupBox(tr("Ranges (± %)"));
@@ -140,7 +144,9 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     band_ = new ContourBandPlot;
     band_->setMinimumWidth(120);
     figureStack_->addWidget(band_);
-    auto* plots = new QHBoxLayout;
+    auto* plotArea = new QWidget;
+    auto* plots = new QHBoxLayout(plotArea);
+    plots->setContentsMargins(0, 0, 0, 0);
     // Equal halves: at 1366x768 a third of the width left the figure about 150 px, too narrow
     // for the sensitivity plot's notice.
     plots->addWidget(envelope_, 1);
@@ -152,7 +158,8 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     status_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     status_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     auto* right = new QVBoxLayout;
-    right->addLayout(plots, 1);
+    right->addWidget(plotArea, 1);
+    veil_ = new StaleVeil(plotArea);
     right->addWidget(status_);
     // What to show under the ranges, in the same narrow column (a row of its own made the tab
     // wider than a 1366 x 768 window gives it).
@@ -180,6 +187,7 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     connect(figure_, &QComboBox::currentIndexChanged, this, &RobustnessView::redraw);
     connect(contour_, &QCheckBox::toggled, this, &RobustnessView::onModeChanged);
     connect(session_, &TuningSession::designChanged, this, &RobustnessView::onDesignChanged);
+    connect(session_, &TuningSession::currentAxisChanged, this, &RobustnessView::onDesignChanged);
     fillChoices();
     contour_->setEnabled(session_->session().trajectory.kind != TrajectoryKind::Cubic);
     rebuildRanges();
@@ -204,7 +212,7 @@ void RobustnessView::fillChoices() {
 }
 
 void RobustnessView::onModeChanged() {
-    stopJob();
+    runner_.discard(); // a run of the other mode would not be shown
     cancel_->setEnabled(false);
     fillChoices();
     rebuildRanges();
@@ -219,6 +227,8 @@ void RobustnessView::clearResult(const QString& why) {
     curve_.clear();
     problem_.reset();
     contourProblem_.reset();
+    stamp_.reset();
+    veil_->lift();
     worst_->setEnabled(false);
     progress_->setValue(0);
     sensitivity_->showNoResult(why);
@@ -228,9 +238,7 @@ void RobustnessView::clearResult(const QString& why) {
     setStatus(why);
 }
 
-RobustnessView::~RobustnessView() {
-    stopJob();
-}
+RobustnessView::~RobustnessView() = default; // the runner cancels and waits for its job
 
 QString RobustnessView::statusText() const {
     return status_->text();
@@ -238,13 +246,6 @@ QString RobustnessView::statusText() const {
 
 void RobustnessView::setStatus(const QString& text, bool isError) {
     setStatusText(status_, text, isError);
-}
-
-void RobustnessView::stopJob() {
-    if (!job_)
-        return;
-    job_->stop(); // the workers stop after the item each is computing: a short wait
-    job_.reset();
 }
 
 void RobustnessView::rebuildRanges() {
@@ -301,20 +302,49 @@ void RobustnessView::onDesignChanged() {
         return;                      // (onModeChanged has cleared the result)
     }
     rebuildRanges();
-    if ((!result_ && !contourResult_) || isRunning())
+    showFreshness();
+}
+
+bool RobustnessView::resultIsCurrent() const {
+    if (!stamp_ || (!result_ && !contourResult_))
+        return false;
+    return session_->isCurrent(*stamp_) &&
+           (stamp_->scope == ResultScope::BothAxes || stamp_->axis == session_->currentAxis());
+}
+
+void RobustnessView::showFreshness() {
+    if (!stamp_ || (!result_ && !contourResult_))
         return;
-    if (contourResult_ ? sameAxis(s, analyzedSession_, 0) && sameAxis(s, analyzedSession_, 1)
-                       : axis_ == session_->currentAxis() && sameAxis(s, analyzedSession_, axis_))
+    const bool current = resultIsCurrent();
+    worst_->setEnabled(current && (contourResult_ ? contourResult_->worst.has_value()
+                                                  : result_->worst.has_value()));
+    if (current) {
+        veil_->lift();
+        if (!isRunning()) // else the status says what runs
+            setStatus(summary_, summaryIsError_);
         return;
-    // The result describes another controller or plant: never show it as this design's.
-    clearResult(tr("The design changed since the analysis: press Run."));
+    }
+    const QString what = TuningSession::describe(*stamp_);
+    if (!isRunning())
+        setStatus(tr("Not the current design's (computed for %1): %2").arg(what, summary_),
+                  summaryIsError_);
+    const bool otherAxis = session_->isCurrent(*stamp_);
+    veil_->veil(
+        otherAxis
+            ? tr("Computed for %1: this tab shows axis %2. Press Run to analyze it.")
+                  .arg(what, QString::fromStdString(
+                                 session_->session()
+                                     .axes.at(static_cast<std::size_t>(session_->currentAxis()))
+                                     .id)
+                                 .toUpper())
+            : tr("Computed for %1. The design has changed since: press Run to "
+                 "analyze the current one.")
+                  .arg(what));
 }
 
 void RobustnessView::run() {
-    stopJob();
     const int axis = session_->currentAxis();
-    RobustnessProblem problem;
-    std::optional<ContourRobustnessProblem> contour;
+    Outcome work;
     const auto applyRanges = [this](std::vector<UncertainParameter>& parameters) {
         for (UncertainParameter& p : parameters)
             if (QDoubleSpinBox* box = rangeBox(QString::fromStdString(p.name)))
@@ -322,12 +352,12 @@ void RobustnessView::run() {
     };
     try {
         if (contourMode()) {
-            contour = sessionContourRobustnessProblem(session_->session());
-            applyRanges(contour->x.parameters);
-            applyRanges(contour->y.parameters);
+            work.contourProblem = sessionContourRobustnessProblem(session_->session());
+            applyRanges(work.contourProblem->x.parameters);
+            applyRanges(work.contourProblem->y.parameters);
         } else {
-            problem = sessionRobustnessProblem(session_->session(), axis);
-            applyRanges(problem.parameters);
+            work.problem = sessionRobustnessProblem(session_->session(), axis);
+            applyRanges(work.problem->parameters);
         }
     } catch (const InvalidInput& e) {
         setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
@@ -337,49 +367,25 @@ void RobustnessView::run() {
     options.samples = samples_->value();
     options.seed = static_cast<std::uint64_t>(seed_->value());
     options.corners = corners_->isChecked();
-    pendingProblem_ = problem;
-    pendingContour_ = contour;
-    pendingAxis_ = axis;
-    analyzedSession_ = session_->session();
-    job_ = std::make_unique<Job>();
-    const int id = job_->id = ++lastJobId_;
-    std::atomic<bool>* cancelFlag = &job_->cancel;
-    job_->thread = std::thread([this, id, cancelFlag, problem, contour, options]() mutable {
-        options.progress = [this, id, cancelFlag](double fraction) {
-            QMetaObject::invokeMethod(
-                this,
-                [this, id, fraction] {
-                    if (job_ && job_->id == id)
-                        progress_->setValue(static_cast<int>(std::lround(100.0 * fraction)));
-                },
-                Qt::QueuedConnection);
-            return !cancelFlag->load();
-        };
-        auto result = std::make_shared<RobustnessResult>();
-        auto joint = std::make_shared<ContourRobustnessResult>();
-        auto curve = std::make_shared<std::vector<ZpetcSensitivityPoint>>();
-        QString error;
-        try {
-            if (contour)
-                *joint = analyzeContourRobustness(*contour, options);
-            else
-                *result = analyzeRobustness(problem, options);
-            if (!contour && problem.loop && problem.zpetcEnabled &&
-                result->status == RobustnessStatus::Completed) {
-                RobustnessOptions quiet = options; // the bar has reached 100 %: cancel only
-                quiet.progress = [cancelFlag](double) { return !cancelFlag->load(); };
-                *curve = zpetcSensitivity(problem, sensitivityScales(), quiet);
-            }
-        } catch (const std::exception& e) {
-            error = QString::fromStdString(e.what());
-        }
-        QMetaObject::invokeMethod(
-            this,
-            [this, id, result, joint, curve, error] {
-                onFinished(id, result, joint, curve, error);
-            },
-            Qt::QueuedConnection);
-    });
+    const bool contour = work.contourProblem.has_value();
+    // The work holds copies of its inputs only: it may outlive a change of the design.
+    runner_.start(session_->stamp(axis, contour ? ResultScope::BothAxes : ResultScope::AxisDesign),
+                  [work, options](const JobProgress& progress) mutable {
+                      options.progress = progress;
+                      if (work.contourProblem) {
+                          work.contour = analyzeContourRobustness(*work.contourProblem, options);
+                          return work;
+                      }
+                      work.axis = analyzeRobustness(*work.problem, options);
+                      if (work.problem->loop && work.problem->zpetcEnabled &&
+                          work.axis->status == RobustnessStatus::Completed) {
+                          // The bar has reached 100 %: the curve reports nothing but may stop.
+                          RobustnessOptions quiet = options;
+                          quiet.progress = [progress](double) { return progress(1.0); };
+                          work.curve = zpetcSensitivity(*work.problem, sensitivityScales(), quiet);
+                      }
+                      return work;
+                  });
     progress_->setValue(0);
     cancel_->setEnabled(true);
     run_->setEnabled(true);
@@ -389,46 +395,37 @@ void RobustnessView::run() {
 }
 
 void RobustnessView::cancel() {
-    if (!job_)
+    if (!runner_.isRunning())
         return;
-    job_->cancel = true;
+    runner_.cancel();
     cancel_->setEnabled(false);
     setStatus(tr("Cancelling…"));
 }
 
-void RobustnessView::onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
-                                std::shared_ptr<ContourRobustnessResult> contour,
-                                std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve,
-                                QString error) {
-    if (!job_ || job_->id != jobId)
-        return;
-    job_->thread.join();
-    job_.reset();
+void RobustnessView::onFinished(Outcome&& outcome, const ResultStamp& stamp) {
     cancel_->setEnabled(false);
-    if (!error.isEmpty()) {
-        setStatus(tr("The analysis failed: %1").arg(error), true);
-        return;
-    }
     progress_->setValue(100);
-    axis_ = pendingAxis_;
-    if (pendingContour_) {
+    stamp_ = stamp;
+    if (outcome.contour) {
         result_.reset();
         problem_.reset();
         curve_.clear();
-        contourResult_ = std::move(*contour);
-        contourProblem_ = pendingContour_;
-        setStatus(contourSummary(*contourResult_), !contourResult_->unstable.empty());
-        worst_->setEnabled(contourResult_->worst.has_value());
+        contourResult_ = std::move(outcome.contour);
+        contourProblem_ = std::move(outcome.contourProblem);
+        summary_ = contourSummary(*contourResult_);
+        summaryIsError_ = !contourResult_->unstable.empty();
     } else {
         contourResult_.reset();
         contourProblem_.reset();
-        result_ = std::move(*result);
-        curve_ = std::move(*curve);
-        problem_ = pendingProblem_;
-        setStatus(axisSummary(*result_), !result_->unstable.empty());
-        worst_->setEnabled(result_->worst.has_value());
+        result_ = std::move(outcome.axis);
+        curve_ = std::move(outcome.curve);
+        problem_ = std::move(outcome.problem);
+        summary_ = axisSummary(*result_);
+        summaryIsError_ = !result_->unstable.empty();
     }
+    setStatus(summary_, summaryIsError_);
     redraw();
+    showFreshness(); // a run that ended after the design changed is shown as what it is
     emit analysisFinished();
 }
 
@@ -564,6 +561,8 @@ void RobustnessView::redraw() {
 }
 
 void RobustnessView::loadWorstCase() {
+    if (!resultIsCurrent())
+        return; // the worst plant of another design (the button is off then)
     const auto lookup = [](const std::vector<std::string>& names, const std::vector<double>& values,
                            const std::string& prefix) {
         return [&names, &values, prefix](const std::string& name, double fallback) {
@@ -584,14 +583,15 @@ void RobustnessView::loadWorstCase() {
     }
     if (!result_ || !result_->worst || !problem_)
         return;
+    const int axis = stamp_->axis;
     const std::vector<double>& v = result_->runs[*result_->worst].values;
     const AxisSettings next =
-        perturbedAxis(session_->session().axes.at(static_cast<std::size_t>(axis_)), *problem_,
+        perturbedAxis(session_->session().axes.at(static_cast<std::size_t>(axis)), *problem_,
                       lookup(result_->parameterNames, v, ""));
     if (problem_->controller)
-        session_->setPlant(axis_, next.gt.plant);
+        session_->setPlant(axis, next.gt.plant);
     else
-        session_->setPp(axis_, next.pp);
+        session_->setPp(axis, next.pp);
 }
 
 } // namespace xyt::ui

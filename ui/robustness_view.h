@@ -5,9 +5,10 @@
 #include "core/study/contour_robustness.h"
 #include "core/study/robustness.h"
 
-#include "ui/background_job.h"
-#include <QMap>
+#include "ui/jobs/job_runner.h"
+#include "ui/session/tuning_session.h"
 
+#include <QMap>
 #include <QWidget>
 
 #include <memory>
@@ -29,7 +30,7 @@ class ContourBandPlot;
 class EnvelopePlot;
 class HistogramPlot;
 class SensitivityPlot;
-class TuningSession;
+class StaleVeil;
 
 /**
  * Robustness of the current axis to plant-model mismatch: a relative range per
@@ -44,7 +45,12 @@ class TuningSession;
  * each range applies to the parameter of that name on every axis that has one, the envelope is
  * the contour error's, the figures are the max |contour error| histogram and the XY band
  * (ContourBandPlot), and "Load worst case" loads the worst pair into both axes in one undo step.
- * A change of the design clears the result (it would describe another controller).
+ * The run takes its inputs from the presenter when Run is pressed, and its result keeps the
+ * stamp of the design it was computed for: once the design (or, in axis mode, the selected axis)
+ * no longer matches, the plots are veiled with what the result was computed for ("axis X,
+ * ωn = 2 rad/s, kp = 30") and "Load worst case" is off, including for a run that finishes after
+ * the design changed; an undo back to the analyzed design lifts the veil. The range rows follow
+ * the selected axis (both axes' parameters in contour mode).
  */
 class RobustnessView : public QWidget {
     Q_OBJECT
@@ -56,11 +62,15 @@ public:
     void cancel();
     /// Makes the worst plant of the shown result the session's plant (an undoable step).
     void loadWorstCase();
-    bool isRunning() const { return job_ != nullptr; }
+    bool isRunning() const { return runner_.isRunning(); }
+    /// True when a result is shown and describes the current design (and axis).
+    bool resultIsCurrent() const;
+    /// The cover over a stale result, with what it was computed for.
+    StaleVeil* veil() const { return veil_; }
     const std::optional<RobustnessResult>& result() const { return result_; }
     /// The problem of the shown result (its ranges included).
     const std::optional<RobustnessProblem>& analyzedProblem() const { return problem_; }
-    int analyzedAxis() const { return axis_; }
+    int analyzedAxis() const { return stamp_ ? stamp_->axis : -1; }
     /// The joint XY result shown (contour mode), and its problem.
     const std::optional<ContourRobustnessResult>& contourResult() const { return contourResult_; }
     const std::optional<ContourRobustnessProblem>& analyzedContourProblem() const {
@@ -94,14 +104,20 @@ signals:
     void analysisFinished();
 
 private:
-    using Job = BackgroundJob;
+    /// What a run computes: the axis or the joint result, with the problem it solved.
+    struct Outcome {
+        std::optional<RobustnessResult> axis;
+        std::optional<RobustnessProblem> problem;
+        std::vector<ZpetcSensitivityPoint> curve;
+        std::optional<ContourRobustnessResult> contour;
+        std::optional<ContourRobustnessProblem> contourProblem;
+    };
 
-    void stopJob();
     void rebuildRanges();
     void onDesignChanged();
-    void onFinished(int jobId, std::shared_ptr<RobustnessResult> result,
-                    std::shared_ptr<ContourRobustnessResult> contour,
-                    std::shared_ptr<std::vector<ZpetcSensitivityPoint>> curve, QString error);
+    void onFinished(Outcome&& outcome, const ResultStamp& stamp);
+    /// Veils the shown result when it no longer describes the design, lifts the veil when it does.
+    void showFreshness();
     void onModeChanged();
     /// The signal and figure choices of the mode (axis or XY contour).
     void fillChoices();
@@ -113,18 +129,14 @@ private:
     void setStatus(const QString& text, bool isError = false);
 
     TuningSession* session_;
-    std::unique_ptr<Job> job_;
-    int lastJobId_ = 0;
     std::optional<RobustnessResult> result_;
     std::vector<ZpetcSensitivityPoint> curve_;
     std::optional<RobustnessProblem> problem_;
-    std::optional<RobustnessProblem> pendingProblem_;
     std::optional<ContourRobustnessResult> contourResult_;
     std::optional<ContourRobustnessProblem> contourProblem_;
-    std::optional<ContourRobustnessProblem> pendingContour_;
-    Session analyzedSession_;
-    int axis_ = 0;
-    int pendingAxis_ = 0;
+    std::optional<ResultStamp> stamp_; ///< what the shown result was computed for
+    QString summary_;                  ///< the status line of the shown result
+    bool summaryIsError_ = false;
     QMap<QString, double> rangePct_; ///< kept per parameter name across redesigns
 
     QWidget* controlContent_;
@@ -147,6 +159,8 @@ private:
     SensitivityPlot* sensitivity_;
     ContourBandPlot* band_;
     QStackedWidget* figureStack_;
+    StaleVeil* veil_;
+    JobRunner<Outcome, ResultStamp> runner_; ///< last: destroyed first, before the widgets
 };
 
 } // namespace xyt::ui

@@ -18,6 +18,7 @@ set(allowed_core_study "core/model;core/design;core/analysis;core/simulation;cor
 set(allowed_core_session "core/model;core/io;core/design;core/analysis;core/simulation;core/contour;core/identification;core/study")
 set(core_folders model io design analysis simulation contour identification study session)
 set(allowed_ui_files "core")     # the file formats: headless (Qt Core), for the CLI too
+set(allowed_ui_jobs "")      # the job runner: Qt Core and Concurrent only
 set(allowed_ui_plots "core;ui/session")
 set(allowed_ui_panels "core;ui/session;ui/plots")
 set(allowed_ui_session "core;ui/files")
@@ -32,7 +33,7 @@ function(folder_of path out)
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
     elseif(path MATCHES "^core/")
         set(${out} "core/" PARENT_SCOPE) # a file left at core/ itself: not allowed
-    elseif(path MATCHES "^(ui/(plots|panels|session|files))/")
+    elseif(path MATCHES "^(ui/(jobs|plots|panels|session|files))/")
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
     elseif(path MATCHES "^(ui|app|tests)/")
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)

@@ -8,6 +8,7 @@
 #include "core/session/robustness_problem.h"
 #include "tests/support/plot_layout_checks.h"
 #include "tests/support/tolerance.h"
+#include "ui/panels/stale_veil.h"
 #include "ui/plots/contour_band_plot.h"
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
@@ -41,7 +42,7 @@ private slots:
     void cleanup();
     void drawsTheCoresResult();
     void worstCaseLoadsAsOneUndoStep();
-    void designChangeClearsTheResult();
+    void designChangeVeilsTheResult();
     void polePlacementAxisHasItsCoefficients();
     void cancelAndDestroyWhileRunning();
     void contourModeDrawsTheCoresJointResult();
@@ -135,25 +136,36 @@ void TstRobustnessView::worstCaseLoadsAsOneUndoStep() {
     QCOMPARE(after.k0, worst[0]);
     QCOMPARE(after.a1, before.a1);
     QCOMPARE(after.a2, before.a2);
-    QVERIFY(!view_->result()); // the analysis was of the old nominal plant
+    // The analysis was of the old nominal plant: veiled, and the button off.
+    QVERIFY(!view_->resultIsCurrent() && view_->veil()->isVeiled());
+    QVERIFY(!view_->worstButton()->isEnabled());
     session_->undoStack()->undo();
     QVERIFY(session_->session().axes[0].gt.plant == before);
+    QVERIFY(view_->resultIsCurrent()); // of this plant again
 }
 
-void TstRobustnessView::designChangeClearsTheResult() {
+void TstRobustnessView::designChangeVeilsTheResult() {
     view_->samplesBox()->setValue(5);
     runAndWait();
     QVERIFY(view_->envelopePlot()->hasResult());
+    QVERIFY(!view_->veil()->isVeiled());
+    const double kp = session_->session().axes[0].gt.kp;
     session_->setKp(0, 40.0); // another controller: the result no longer applies
-    QVERIFY(!view_->result());
-    QVERIFY(!view_->envelopePlot()->hasResult());
-    QVERIFY(!view_->histogramPlot()->hasResult());
-    QVERIFY(view_->statusText().contains("design changed"));
+    // Kept under a veil that says what it was computed for, never shown as this design's.
+    QVERIFY(view_->result().has_value());
+    QVERIFY(!view_->resultIsCurrent());
+    QVERIFY(view_->veil()->isVeiled());
+    QVERIFY2(view_->veil()->note().contains(QString("kp = %1").arg(kp)) &&
+                 view_->veil()->note().contains("design has changed"),
+             qPrintable(view_->veil()->note()));
     QVERIFY(!view_->worstButton()->isEnabled());
     // A change of the other axis leaves it alone.
     runAndWait();
+    QVERIFY(!view_->veil()->isVeiled());
     session_->setKp(1, 45.0);
     QVERIFY(view_->result().has_value());
+    QVERIFY(view_->resultIsCurrent());
+    QVERIFY(!view_->veil()->isVeiled());
 }
 
 void TstRobustnessView::polePlacementAxisHasItsCoefficients() {
@@ -279,11 +291,16 @@ void TstRobustnessView::contourModeDrawsTheCoresJointResult() {
         }
         view_->figureBox()->setCurrentIndex(0);
     }
-    // A change of either axis clears the joint result.
+    // A change of either axis veils the joint result, naming both axes' designs it was for.
+    const double kpY = session_->session().axes[1].gt.kp;
     session_->setKp(1, 45.0);
-    QVERIFY(!view_->contourResult());
-    QVERIFY(!view_->bandPlot()->hasResult());
-    QVERIFY(view_->statusText().contains("design changed"));
+    QVERIFY(view_->contourResult().has_value());
+    QVERIFY(!view_->resultIsCurrent());
+    QVERIFY(view_->veil()->isVeiled());
+    QVERIFY2(view_->veil()->note().contains(QString("kp = %1").arg(kpY)) &&
+                 view_->veil()->note().contains("design has changed"),
+             qPrintable(view_->veil()->note()));
+    QVERIFY(!view_->worstButton()->isEnabled());
 }
 
 void TstRobustnessView::contourWorstPairLoadsBothAxesInOneStep() {

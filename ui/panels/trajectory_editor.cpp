@@ -306,12 +306,40 @@ void TrajectoryEditor::setTrajectory(const TrajectorySettings& t) {
     fields_["max_accel"]->setValue(t.gcode.maxAccelMmPerS2);
     fields_["max_jerk"]->setValue(t.gcode.maxJerkMmPerS3);
     showProgram(t);
+    updateRefusal();
 }
 
 void TrajectoryEditor::emitIfValid() {
+    emitTrajectory();
+    updateRefusal();
+}
+
+void TrajectoryEditor::updateRefusal() {
+    const TrajectoryKind chosen = kindAt(kind_->currentIndex());
+    QString why;
+    if (chosen != current_.kind) {
+        const QString shown = current_.kind == TrajectoryKind::Cubic    ? tr("cubic move")
+                              : current_.kind == TrajectoryKind::Circle ? tr("circle")
+                                                                        : tr("G-code program");
+        why = chosen == TrajectoryKind::Gcode && current_.gcode.program.empty() &&
+                      programField_->text().isEmpty()
+                  ? tr("The plots still show the session's %1: a G-code trajectory needs a "
+                       "program (Open… or pick an example).")
+                        .arg(shown)
+                  : tr("The plots still show the session's %1: the trajectory chosen in the "
+                       "editor is not valid yet (see the field marked red).")
+                        .arg(shown);
+    }
+    if (why == refusal_)
+        return;
+    refusal_ = why;
+    emit refusalChanged(refusal_);
+}
+
+bool TrajectoryEditor::emitTrajectory() {
     for (NumberField* f : fields_)
         if (f->hasError())
-            return;
+            return false;
     TrajectorySettings t = current_;
     t.kind = kindAt(kind_->currentIndex());
     t.x0 = fields_["x0"]->value();
@@ -331,7 +359,7 @@ void TrajectoryEditor::emitIfValid() {
     if (t.kind == TrajectoryKind::Gcode) {
         if (t.gcode.program.empty()) {
             markFieldError(programField_, tr("no program: open one or pick an example"));
-            return;
+            return false;
         }
         // A profile option the planner refuses is shown at its field, never applied.
         try {
@@ -341,13 +369,13 @@ void TrajectoryEditor::emitIfValid() {
             markFieldError(fields_.contains(field) ? fields_[field]
                                                    : static_cast<QLineEdit*>(programField_),
                            QString::fromStdString(e.what()));
-            return;
+            return false;
         }
         clearFieldError(programField_, QString::fromStdString(t.gcode.fileName));
     }
     if (t.kind == TrajectoryKind::Cubic && !(t.tfSeconds > t.t0Seconds)) {
         markFieldError(fields_["tf"], tr("tf: must be later than t0"));
-        return;
+        return false;
     }
     clearFieldError(fields_["tf"], QString());
     // A run that cannot fit in memory is refused at the field the user just edited (dt unless it
@@ -367,17 +395,18 @@ void TrajectoryEditor::emitIfValid() {
                            .arg(t.dtSeconds, 0, 'g', 6)
                            .arg(samples, 0, 'g', 3)
                            .arg(static_cast<double>(sampleLimit()), 0, 'g', 3));
-        return;
+        return false;
     }
     for (const char* name : {"duration", "tf", "t0", "dt", "feed_scale", "max_accel", "max_jerk"})
         if (!fields_[name]->hasError())
             clearFieldError(fields_[name], fields_[name]->property("normalToolTip").toString());
     if (t == current_)
-        return;
+        return true;
     current_ = t;
     if (t.kind == TrajectoryKind::Gcode)
         showProgram(t);
     emit trajectoryEdited(t);
+    return true;
 }
 
 } // namespace xyt::ui

@@ -51,15 +51,27 @@ public:
     QComboBox* examplesBox() const { return examples_; }
     QPushButton* openButton() const { return open_; }
 
+    /**
+     * Why the kind chosen in the editor is not the session's ("" when it is): a G-code kind
+     * without a program, or with fields the planner refuses. The plots still show the session's
+     * trajectory then, and the window says so over them.
+     */
+    QString refusal() const { return refusal_; }
+
 signals:
     void trajectoryEdited(const TrajectorySettings& trajectory);
+    void refusalChanged(const QString& refusal);
 
 private:
     void emitIfValid();
+    /// Emits the editor's trajectory when every field holds; false when one refuses it.
+    bool emitTrajectory();
+    void updateRefusal();
     void showProgram(const TrajectorySettings& t);
     QWidget* buildProgramPage();
 
     QComboBox* kind_;
+    QString refusal_;
     QStackedWidget* pages_;
     QMap<QString, NumberField*> fields_;
     QLineEdit* programField_ = nullptr;

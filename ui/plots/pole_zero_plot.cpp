@@ -97,6 +97,12 @@ void PoleZeroPlot::showNoResult(const QString& title, const QString& reason) {
     replot(QCustomPlot::rpQueuedReplot);
 }
 
+void PoleZeroPlot::setNotes(const QStringList& lines) {
+    notice_.setSevere(false);
+    notice_.setLines(lines);
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
 void PoleZeroPlot::showSets(const std::vector<PoleZeroSet>& sets, const QString& title) {
     title_->setText(title);
     title_->setTextColor(palette().color(QPalette::WindowText));

@@ -26,6 +26,9 @@ public:
     void setSetVisible(const QString& name, bool visible);
     /// Clears the map and says why there is nothing to show (invalid or failed design).
     void showNoResult(const QString& title, const QString& reason);
+    /// Lines said over the plane after showSets (what the poles mean: an integrator, an
+    /// unstable or non-minimum-phase model); empty clears them.
+    void setNotes(const QStringList& lines);
     bool hasResult() const { return !graphs_.isEmpty(); }
     QString noticeText() const { return notice_.text(); }
 

@@ -6,6 +6,7 @@
 #include <QLocale>
 #include <QUndoCommand>
 
+#include <algorithm>
 #include <cmath>
 
 namespace xyt::ui {
@@ -73,6 +74,7 @@ void TuningSession::assign(const Session& next) {
     locus_ = {};
     parameterLocus_ = {};
     frequency_ = {};
+    ++revision_;
     emit designChanged();
 }
 
@@ -80,6 +82,70 @@ void TuningSession::apply(const Session& next, const QString& description, int m
     if (next == session_)
         return; // no undo step (nor a modified flag) for a change that changes nothing
     undo_.push(new SessionCommand(this, session_, next, description, mergeKey));
+}
+
+const AxisEvaluation& TuningSession::snapshotEvaluation(std::size_t index, int axis) const {
+    QString ignored;
+    Session evaluated = liveSessionOf(session_.withDesign(session_.snapshots.at(index)), ignored);
+    evaluated.snapshots.clear(); // what the run depends on, not the list it came from
+    SnapshotCache& cache = snapshotCache_;
+    if (cache.evaluation && cache.axis == axis && cache.evaluated == evaluated)
+        return *cache.evaluation;
+    cache.evaluation = evaluateAxis(evaluated, axis);
+    cache.evaluated = std::move(evaluated);
+    cache.axis = axis;
+    ++cache.computed;
+    return *cache.evaluation;
+}
+
+ResultStamp TuningSession::stamp(int axis, ResultScope scope) const {
+    return {revision_, scope == ResultScope::BothAxes ? -1 : axis, scope, session_};
+}
+
+bool TuningSession::isCurrent(const ResultStamp& stamp) const {
+    return stamp.revision == revision_ ||
+           sessionsAgree(stamp.session, session_, std::max(stamp.axis, 0), stamp.scope);
+}
+
+namespace {
+
+QString axisDesignWords(const Session& s, int axis) {
+    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    if (a.method == DesignMethod::GuilleminTruxal)
+        return QObject::tr("ωn = %1 rad/s, kp = %2")
+            .arg(QString::number(a.gt.omegaNRadPerSec, 'g', 4), QString::number(a.gt.kp, 'g', 4));
+    return QObject::tr("pole placement, t1 = %1, Ts = %2 s%3")
+        .arg(QString::number(a.pp.t1, 'g', 4), QString::number(a.pp.tsSeconds, 'g', 4),
+             a.pp.zpetcEnabled ? QObject::tr(", ZPETC") : QString());
+}
+
+QString axisPlantWords(const Session& s, int axis) {
+    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    if (a.method != DesignMethod::GuilleminTruxal)
+        return QObject::tr("pole placement");
+    return QObject::tr("plant k0 = %1, a1 = %2, a2 = %3")
+        .arg(QString::number(a.gt.plant.k0, 'g', 5), QString::number(a.gt.plant.a1, 'g', 5),
+             QString::number(a.gt.plant.a2, 'g', 5));
+}
+
+QString axisLetter(const Session& s, int axis) {
+    return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
+}
+
+} // namespace
+
+QString TuningSession::describe(const ResultStamp& stamp) {
+    const Session& s = stamp.session;
+    switch (stamp.scope) {
+    case ResultScope::AxisDesign:
+        return tr("axis %1, %2").arg(axisLetter(s, stamp.axis), axisDesignWords(s, stamp.axis));
+    case ResultScope::AxisStudy:
+        return tr("axis %1, %2").arg(axisLetter(s, stamp.axis), axisPlantWords(s, stamp.axis));
+    case ResultScope::BothAxes:
+        return tr("%1: %2; %3: %4")
+            .arg(axisLetter(s, 0), axisDesignWords(s, 0), axisLetter(s, 1), axisDesignWords(s, 1));
+    }
+    return {};
 }
 
 void TuningSession::reset(const Session& next) {

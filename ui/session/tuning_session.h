@@ -5,6 +5,7 @@
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
 #include "core/session/axis_frequency.h"
+#include "core/session/result_dependence.h"
 #include "core/session/session.h"
 #include "core/session/session_evaluation.h"
 
@@ -13,9 +14,23 @@
 #include <QUndoStack>
 
 #include <array>
+#include <cstdint>
 #include <optional>
 
 namespace xyt::ui {
+
+/**
+ * What a view's result was computed for: the session's revision and the session itself at that
+ * moment, the axis (-1 for a joint XY result) and what of the session the result depends on.
+ * Views keep it beside the result and ask TuningSession::isCurrent before showing it as the
+ * current design's.
+ */
+struct ResultStamp {
+    std::uint64_t revision = 0;
+    int axis = -1;
+    ResultScope scope = ResultScope::AxisDesign;
+    Session session;
+};
 
 /**
  * The presenter of the workbench: owns the design (a core `Session`), its evaluation, and the
@@ -35,6 +50,18 @@ public:
     QUndoStack* undoStack() { return &undo_; }
 
     int currentAxis() const { return currentAxis_; }
+
+    /// Counts the changes of the session (undo, redo, load and File › New included).
+    std::uint64_t revision() const { return revision_; }
+    /// A stamp for a result of @p scope about @p axis (-1 with BothAxes) computed from now.
+    ResultStamp stamp(int axis, ResultScope scope) const;
+    /**
+     * True when a result stamped @p stamp describes the session as it is: the same revision,
+     * or a session that agrees in everything the result depends on (an undo back to it).
+     */
+    bool isCurrent(const ResultStamp& stamp) const;
+    /// What @p stamp's result was computed for, in words: "axis X, ωn = 2 rad/s, kp = 30".
+    static QString describe(const ResultStamp& stamp);
 
     /**
      * Samples per axis that one live refresh may simulate. A run that needs more (dt = 1e-5 s on
@@ -73,6 +100,15 @@ public:
     const ParameterLocus& parameterLocus(int axis, GtSweptParameter parameter) const;
     /// The frequency-domain view of an axis: responses, margins, Nyquist curve (cached).
     const AxisFrequencyAnalysis& frequencyAnalysis(int axis) const;
+    /**
+     * Axis @p axis of snapshot @p index evaluated with this session's trajectory, limits and
+     * implementation (what the time plot overlays), at the live dt. Cached: a change of the
+     * current design (a slider step) does not evaluate it again, a change of what it depends
+     * on does. @throws std::out_of_range for an index past the snapshots.
+     */
+    const AxisEvaluation& snapshotEvaluation(std::size_t index, int axis) const;
+    /// How many snapshot evaluations were computed (the cache's misses), for the tests.
+    std::size_t snapshotEvaluationsComputed() const { return snapshotCache_.computed; }
     /// Pole-zero sets of the axis: plant, controller, open loop, closed loop, reference model
     /// (GT) or plant, feedback, closed loop, ZPETC feedforward (discrete).
     std::vector<PoleZeroSet> poleZeroSets(int axis) const;
@@ -128,8 +164,16 @@ private:
     mutable std::array<std::optional<RootLocus>, 2> locus_;
     mutable std::array<std::optional<ParameterLocus>, 4> parameterLocus_;
     mutable std::array<std::optional<AxisFrequencyAnalysis>, 2> frequency_;
+    struct SnapshotCache {
+        Session evaluated; ///< the snapshot's design in this session, at the live dt
+        int axis = -1;
+        std::optional<AxisEvaluation> evaluation;
+        std::size_t computed = 0;
+    };
+    mutable SnapshotCache snapshotCache_;
     QUndoStack undo_;
     int currentAxis_ = 0;
+    std::uint64_t revision_ = 0;
 };
 
 /// Merge keys for slider drags: one per parameter and axis.

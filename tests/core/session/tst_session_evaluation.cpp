@@ -6,6 +6,7 @@
 // digital run and its figures, for the default session (automatic cubic, both axes GT), a
 // quantized and delayed implementation, and a pole-placement + ZPETC axis on a circle; and
 // repeated evaluations are identical.
+#include "core/session/result_dependence.h"
 #include "core/session/session_evaluation.h"
 #include "tests/support/tolerance.h"
 
@@ -75,6 +76,7 @@ Session ppCircleSession() {
 class TstSessionEvaluation : public QObject {
     Q_OBJECT
 private slots:
+    void resultScopesFollowWhatTheResultDependsOn();
     void axesDoNotDependOnTheThread_data();
     void axesDoNotDependOnTheThread();
     void verdictIsThatOfTheRunThatWillHappen();
@@ -377,6 +379,57 @@ void TstSessionEvaluation::moveShorterThanTheStepIsRefused() {
                      std::string::npos,
                  a.error.c_str());
     }
+}
+
+// Each scope against a change of each kind, from the definitions in result_dependence.h: the
+// study sweeps ωn and kp, so only its runs' inputs count; an axis' analysis counts its whole
+// axis; the joint result both axes.
+void TstSessionEvaluation::resultScopesFollowWhatTheResultDependsOn() {
+    const Session base = Session::paperDefault();
+    const auto agree = [&base](const Session& other, int axis, ResultScope scope) {
+        return sessionsAgree(base, other, axis, scope);
+    };
+    for (ResultScope scope :
+         {ResultScope::AxisDesign, ResultScope::AxisStudy, ResultScope::BothAxes})
+        QVERIFY(agree(base, 0, scope));
+
+    Session kp = base;
+    kp.axes[0].gt.kp *= 2.0;
+    QVERIFY(!agree(kp, 0, ResultScope::AxisDesign));
+    QVERIFY(agree(kp, 0, ResultScope::AxisStudy));
+    QVERIFY(agree(kp, 1, ResultScope::AxisDesign)); // the other axis
+    QVERIFY(!agree(kp, 0, ResultScope::BothAxes));
+
+    Session method = base;
+    method.axes[0].method = DesignMethod::PolePlacementZpetc;
+    QVERIFY(!agree(method, 0, ResultScope::AxisStudy));
+    QVERIFY(!agree(method, 0, ResultScope::AxisDesign));
+
+    Session plant = base;
+    plant.axes[1].gt.plant.a1 *= 1.1;
+    QVERIFY(!agree(plant, 1, ResultScope::AxisStudy));
+    QVERIFY(agree(plant, 0, ResultScope::AxisStudy));
+    QVERIFY(!agree(plant, 0, ResultScope::BothAxes));
+
+    Session limit = base;
+    limit.umaxVolts = 5.0;
+    for (ResultScope scope :
+         {ResultScope::AxisDesign, ResultScope::AxisStudy, ResultScope::BothAxes})
+        QVERIFY(!agree(limit, 0, scope));
+
+    // The overshoot limit judges a map (the view judges it again) but changes an analysis.
+    Session overshoot = base;
+    overshoot.spec.maxOvershootPct += 5.0;
+    QVERIFY(agree(overshoot, 0, ResultScope::AxisStudy));
+    QVERIFY(!agree(overshoot, 0, ResultScope::AxisDesign));
+    Session settle = base;
+    settle.spec.maxSettleTimeSeconds += 1.0; // sets the study's run length
+    QVERIFY(!agree(settle, 0, ResultScope::AxisStudy));
+
+    Session trajectory = base;
+    trajectory.trajectory.kind = TrajectoryKind::Circle;
+    QVERIFY(!agree(trajectory, 0, ResultScope::AxisStudy));
+    QVERIFY(!agree(trajectory, 1, ResultScope::AxisDesign));
 }
 
 QTEST_APPLESS_MAIN(TstSessionEvaluation)

@@ -14,6 +14,7 @@ using namespace xyt::ui;
 class TstTuningSession : public QObject {
     Q_OBJECT
 private slots:
+    void snapshotEvaluationIsComputedOncePerInput();
     void startsWithThePaperDesign();
     void changeReevaluatesAndSignals();
     void undoRedo();
@@ -198,6 +199,35 @@ void TstTuningSession::loopGainRefusesWhatItCannotApply() {
     QVERIFY(!s.applyLoopGain(1, 2.0));
     QCOMPARE(spy.count(), 1);
     QCOMPARE(s.undoStack()->count(), 1);
+}
+
+// The overlay's evaluation equals the core's for the snapshot's design in this session, and is
+// computed again only when what it depends on changes (not on a slider step of the design).
+void TstTuningSession::snapshotEvaluationIsComputedOncePerInput() {
+    TuningSession s;
+    s.storeSnapshot("before");
+    s.setKp(0, 45.0);
+    const auto expected = [&s] {
+        QString ignored;
+        Session e =
+            TuningSession::liveSessionOf(s.session().withDesign(s.session().snapshots[0]), ignored);
+        return evaluateAxis(e, 0);
+    };
+    const AxisEvaluation& first = s.snapshotEvaluation(0, 0);
+    QCOMPARE(s.snapshotEvaluationsComputed(), std::size_t{1});
+    QVERIFY(first.ok);
+    QCOMPARE(first.run.y, expected().run.y); // the same computation: bit for bit
+    s.setKp(0, 50.0);                        // the current design, not the snapshot's
+    s.setOmegaN(0, 3.0);
+    QCOMPARE(s.snapshotEvaluation(0, 0).run.y, expected().run.y);
+    QCOMPARE(s.snapshotEvaluationsComputed(), std::size_t{1});
+    Specification spec = s.session().spec;
+    spec.maxSettleTimeSeconds = 50.0; // sets the run's length: the overlay depends on it
+    s.setSpecification(spec);
+    QCOMPARE(s.snapshotEvaluation(0, 0).run.y, expected().run.y);
+    QCOMPARE(s.snapshotEvaluationsComputed(), std::size_t{2});
+    s.snapshotEvaluation(0, 1); // the other axis
+    QCOMPARE(s.snapshotEvaluationsComputed(), std::size_t{3});
 }
 
 QTEST_MAIN(TstTuningSession)
