@@ -16,7 +16,8 @@ bool fitTickCounts(QCustomPlot* plot);
 
 /// Asks for no more ticks on @p axis than one per @p pixels of its length (a short panel
 /// gets fewer value lines than a tall one), within the ticker's own count; fitTickCounts
-/// applies it with the label room.
+/// applies it with the label room. On a vertical axis it bounds the labels drawn (n labels
+/// need (n - 1) * @p pixels), on a horizontal one the count asked of the ticker.
 void setLeastTickSpacing(QCPAxis* axis, int pixels);
 
 } // namespace xyt::ui
