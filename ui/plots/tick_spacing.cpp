@@ -69,13 +69,16 @@ int verticalCount(QCPAxis* axis, double labelHeight, int spacing, int most) {
     return count;
 }
 
-} // namespace
-
-bool fitTickCounts(QCustomPlot* plot) {
+/// Fits the vertical axes of @p plot, and its horizontal ones with @p horizontals; true when a
+/// count changed.
+bool fitCounts(QCustomPlot* plot, bool horizontals) {
     bool changed = false;
     for (QCPAxisRect* rect : plot->axisRects())
         for (QCPAxis* axis : rect->axes()) {
             if (!axis->visible() || !axis->tickLabels() || !axis->ticker())
+                continue;
+            const bool horizontal = axis->orientation() == Qt::Horizontal;
+            if (horizontal && !horizontals)
                 continue;
             QCPAxisTicker* ticker = axis->ticker().data();
             QVariant most = axis->property(kMostTicks);
@@ -84,7 +87,6 @@ bool fitTickCounts(QCustomPlot* plot) {
                 axis->setProperty(kMostTicks, most);
             }
             const QFontMetricsF metrics(axis->tickLabelFont());
-            const bool horizontal = axis->orientation() == Qt::Horizontal;
             double widest = 0.0; // along the axis
             for (const QString& label : axis->tickVectorLabels())
                 widest = std::max(widest,
@@ -110,6 +112,16 @@ bool fitTickCounts(QCustomPlot* plot) {
             }
         }
     return changed;
+}
+
+} // namespace
+
+bool fitTickCounts(QCustomPlot* plot) {
+    return fitCounts(plot, true);
+}
+
+bool fitVerticalTickCounts(QCustomPlot* plot) {
+    return fitCounts(plot, false);
 }
 
 void setLeastTickSpacing(QCPAxis* axis, int pixels) {
