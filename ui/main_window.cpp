@@ -221,15 +221,29 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 QWidget* MainWindow::buildControls() {
     auto* panel = new QWidget(this);
     auto* layout = new QVBoxLayout(panel);
+    layout->addWidget(buildAxisTabs(panel));
+    layout->addWidget(buildDesignBox(panel));
+    auto* trajectoryBox = new QGroupBox(tr("Trajectory"), panel);
+    auto* trajectoryLayout = new QVBoxLayout(trajectoryBox);
+    trajectoryEditor_ = new TrajectoryEditor(trajectoryBox);
+    trajectoryLayout->addWidget(trajectoryEditor_);
+    layout->addWidget(trajectoryBox);
+    layout->addWidget(buildActuatorBox(panel));
+    layout->addStretch(1);
+    connectControls();
+    return panel;
+}
 
+QTabBar* MainWindow::buildAxisTabs(QWidget* panel) {
     axisTabs_ = new QTabBar(panel);
     for (const AxisSettings& a : session_->session().axes)
         axisTabs_->addTab(tr("Axis %1").arg(QString::fromStdString(a.id).toUpper()));
     axisTabs_->setExpanding(true);
     axisTabs_->setAccessibleName(tr("Axis"));
-    layout->addWidget(axisTabs_);
-    connect(axisTabs_, &QTabBar::currentChanged, session_, &TuningSession::setCurrentAxis);
+    return axisTabs_;
+}
 
+QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     auto* designBox = new QGroupBox(tr("Design"), panel);
     auto* designLayout = new QVBoxLayout(designBox);
     method_ = new QComboBox(designBox);
@@ -238,7 +252,17 @@ QWidget* MainWindow::buildControls() {
     method_->setAccessibleName(tr("Design method"));
     designLayout->addWidget(method_);
     methodPages_ = new QStackedWidget(designBox);
-    auto* gtPage = new QWidget(methodPages_);
+    QWidget* gtPage = buildGtPage(methodPages_);
+    ppEditor_ = new PpEditor(methodPages_);
+    methodPages_->addWidget(gtPage);
+    methodPages_->addWidget(ppEditor_);
+    fitStackToCurrentPage(methodPages_);
+    designLayout->addWidget(methodPages_);
+    return designBox;
+}
+
+QWidget* MainWindow::buildGtPage(QWidget* pages) {
+    auto* gtPage = new QWidget(pages);
     auto* gtLayout = new QVBoxLayout(gtPage);
     gtLayout->setContentsMargins(0, 0, 0, 0);
     plantEditor_ = new PlantEditor(gtPage);
@@ -251,48 +275,36 @@ QWidget* MainWindow::buildControls() {
     gtLayout->addWidget(omegaN_);
     gtLayout->addWidget(kp_);
     gtLayout->addStretch(1);
-    ppEditor_ = new PpEditor(methodPages_);
-    methodPages_->addWidget(gtPage);
-    methodPages_->addWidget(ppEditor_);
-    fitStackToCurrentPage(methodPages_);
-    designLayout->addWidget(methodPages_);
-    connect(method_, &QComboBox::activated, this, [this](int index) {
-        const int axis = session_->currentAxis();
-        const DesignMethod method =
-            index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
-        if (session_->session().axes[static_cast<std::size_t>(axis)].method == method)
-            return;
-        session_->setMethod(axis, method);
-        // The plant changes with the method (each method has its own model): say which.
-        const AxisSettings& a = session_->session().axes[static_cast<std::size_t>(axis)];
-        const QString name = QString::fromStdString(a.id).toUpper();
-        statusBar()->showMessage(method == DesignMethod::PolePlacementZpetc
-                                     ? (a.pp == PpAxisSettings{}
-                                            ? tr("Axis %1 now uses pole placement on Patrick, "
-                                                 "Ishak and Adnan's ARX model (the "
-                                                 "pole-placement plant, not the Guillemin–Truxal "
-                                                 "one); Edit › Undo switches back")
-                                                  .arg(name)
-                                            : tr("Axis %1 now uses pole placement on its ARX "
-                                                 "model; Edit › Undo switches back")
-                                                  .arg(name))
-                                     : tr("Axis %1 now uses the Guillemin–Truxal PI on its "
-                                          "continuous plant; Edit › Undo switches back")
-                                           .arg(name),
-                                 10000);
-    });
-    connect(ppEditor_, &PpEditor::settingsEdited, this,
-            [this](const PpAxisSettings& pp, int mergeKey) {
-                session_->setPp(session_->currentAxis(), pp, mergeKey);
-            });
-    layout->addWidget(designBox);
+    return gtPage;
+}
 
-    auto* trajectoryBox = new QGroupBox(tr("Trajectory"), panel);
-    auto* trajectoryLayout = new QVBoxLayout(trajectoryBox);
-    trajectoryEditor_ = new TrajectoryEditor(trajectoryBox);
-    trajectoryLayout->addWidget(trajectoryEditor_);
-    layout->addWidget(trajectoryBox);
+void MainWindow::chooseMethod(int index) {
+    const int axis = session_->currentAxis();
+    const DesignMethod method =
+        index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
+    if (session_->session().axes[static_cast<std::size_t>(axis)].method == method)
+        return;
+    session_->setMethod(axis, method);
+    // The plant changes with the method (each method has its own model): say which.
+    const AxisSettings& a = session_->session().axes[static_cast<std::size_t>(axis)];
+    const QString name = QString::fromStdString(a.id).toUpper();
+    statusBar()->showMessage(method == DesignMethod::PolePlacementZpetc
+                                 ? (a.pp == PpAxisSettings{}
+                                        ? tr("Axis %1 now uses pole placement on Patrick, "
+                                             "Ishak and Adnan's ARX model (the "
+                                             "pole-placement plant, not the Guillemin–Truxal "
+                                             "one); Edit › Undo switches back")
+                                              .arg(name)
+                                        : tr("Axis %1 now uses pole placement on its ARX "
+                                             "model; Edit › Undo switches back")
+                                              .arg(name))
+                                 : tr("Axis %1 now uses the Guillemin–Truxal PI on its "
+                                      "continuous plant; Edit › Undo switches back")
+                                       .arg(name),
+                             10000);
+}
 
+QGroupBox* MainWindow::buildActuatorBox(QWidget* panel) {
     auto* actuatorBox = new QGroupBox(tr("Actuator and digital controller"), panel);
     auto* actuatorForm = new QFormLayout(actuatorBox);
     umax_ = new NumberField(
@@ -319,9 +331,14 @@ QWidget* MainWindow::buildControls() {
     tsRow->addWidget(controllerTs_, 1);
     tsRow->addWidget(discretization_, 1);
     actuatorForm->addRow(tr("Controller Ts (s)"), tsRow);
+    addImplementationFold(actuatorBox, actuatorForm);
+    return actuatorBox;
+}
+
+void MainWindow::addImplementationFold(QGroupBox* box, QFormLayout* form) {
     // The implementation folds away: open, its five fields would push the default
     // session's controls below a 1366x768 window.
-    implementationToggle_ = new QToolButton(actuatorBox);
+    implementationToggle_ = new QToolButton(box);
     implementationToggle_->setCheckable(true);
     implementationToggle_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     implementationToggle_->setArrowType(Qt::RightArrow);
@@ -329,10 +346,19 @@ QWidget* MainWindow::buildControls() {
     implementationToggle_->setAccessibleName(tr("Digital implementation settings"));
     implementationToggle_->setToolTip(
         tr("Delay, encoder, DAC and anti-windup of the digital controller"));
-    implementation_ = new ImplementationEditor(actuatorBox);
+    implementation_ = new ImplementationEditor(box);
     implementation_->setVisible(false);
-    actuatorForm->addRow(implementationToggle_);
-    actuatorForm->addRow(implementation_);
+    form->addRow(implementationToggle_);
+    form->addRow(implementation_);
+}
+
+void MainWindow::connectControls() {
+    connect(axisTabs_, &QTabBar::currentChanged, session_, &TuningSession::setCurrentAxis);
+    connect(method_, &QComboBox::activated, this, &MainWindow::chooseMethod);
+    connect(ppEditor_, &PpEditor::settingsEdited, this,
+            [this](const PpAxisSettings& pp, int mergeKey) {
+                session_->setPp(session_->currentAxis(), pp, mergeKey);
+            });
     connect(implementationToggle_, &QToolButton::toggled, this, [this](bool open) {
         implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
         implementation_->setVisible(open);
@@ -348,9 +374,6 @@ QWidget* MainWindow::buildControls() {
         session_->setPiDiscretization(index == 0 ? PiDiscretization::Tustin
                                                  : PiDiscretization::BackwardEuler);
     });
-    layout->addWidget(actuatorBox);
-    layout->addStretch(1);
-
     connect(omegaN_, &ParameterSlider::valueChanged, this,
             [this](double v) { session_->setOmegaN(session_->currentAxis(), v); });
     connect(kp_, &ParameterSlider::valueChanged, this,
@@ -371,7 +394,6 @@ QWidget* MainWindow::buildControls() {
         if (v != session_->session().umaxVolts)
             session_->setUmax(v);
     });
-    return panel;
 }
 
 void MainWindow::buildMenus() {

@@ -7,6 +7,8 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
+class QGroupBox;
 class QLabel;
 class QSplitter;
 class QStackedWidget;
@@ -100,7 +102,21 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    /// The left panel: axis tabs, design, trajectory, actuator and digital controller.
     QWidget* buildControls();
+    QTabBar* buildAxisTabs(QWidget* panel);
+    /// The method box over a page per method (the Guillemin–Truxal page, the pole-placement
+    /// editor).
+    QGroupBox* buildDesignBox(QWidget* panel);
+    QWidget* buildGtPage(QWidget* pages);
+    QGroupBox* buildActuatorBox(QWidget* panel);
+    /// The implementation settings under a toggle, folded by default.
+    void addImplementationFold(QGroupBox* box, QFormLayout* form);
+    /// Every edit in the left panel goes to the presenter.
+    void connectControls();
+    /// Switches the current axis to method @p index of the method box and says in the status
+    /// bar that the plant changed with it.
+    void chooseMethod(int index);
     void buildMenus();
     void syncControls();
     void restoreLayout();

@@ -585,6 +585,19 @@ void TstPlotReadability::valueTicksFitTheirPanel() {
                 std::abs(inside[i] - inside[i - 1]) >= 16.0,
                 qPrintable(QString("%1 ticks in %2 px").arg(inside.size()).arg(rect->height())));
     }
+    // The position panel is the tallest (about 100 px here): one label per 30 px fits four
+    // (0, 200, 400, 600 mm), where it showed 0 and 500 or 0, 250, 500.
+    QCPAxis* position = plot->outputGraph()->valueAxis();
+    const QVector<double> ticks = position->tickVector();
+    const QVector<QString> labels = position->tickVectorLabels();
+    QStringList shown;
+    for (int i = 0; i < ticks.size() && i < labels.size(); ++i)
+        if (position->range().contains(ticks[i]) && !labels[i].isEmpty())
+            shown << labels[i];
+    QVERIFY2(
+        shown.size() >= 4,
+        qPrintable(
+            QString("'%1' in %2 px").arg(shown.join("', '")).arg(position->axisRect()->height())));
 }
 
 void TstPlotReadability::displayNumberHasSignificantDigits() {

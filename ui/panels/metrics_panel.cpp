@@ -40,6 +40,20 @@ QString displayNumber(double v, int significant) {
 MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    buildTable();
+    describeRows();
+    addGroupTitles();
+    fitTableToItsRows();
+    buildVerdict();
+    layout->addWidget(table_);
+    buildNotices(layout);
+    buildSpecFields();
+    layout->addLayout(specTitleRow());
+    layout->addLayout(specForm());
+    connectSpecFields();
+}
+
+void MetricsPanel::buildTable() {
     table_ = new QTableWidget(RowCount, 3, this);
     table_->setHorizontalHeaderLabels({tr("X"), tr("Y"), tr("spec")});
     table_->setVerticalHeaderLabels({QString(),
@@ -66,6 +80,9 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
                                      tr("phase margin (°)"),
                                      tr("delay margin (s)"),
                                      tr("Ms = max |S|")});
+}
+
+void MetricsPanel::describeRows() {
     table_->verticalHeaderItem(Improvement)
         ->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
     table_->verticalHeaderItem(Itae)->setToolTip(tr("integral of t·|e(t)| over the run"));
@@ -85,6 +102,12 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
         ->setToolTip(tr("1 / (closest distance of L to −1): 1.2–2 is a usual target"));
     table_->verticalHeaderItem(MaxErrorPct)
         ->setToolTip(tr("max |e| as a percentage of the travel"));
+    table_->verticalHeaderItem(DigitalDamping)
+        ->setToolTip(tr("Least damping ratio of the digital closed loop's poles (s = ln z / Ts); "
+                        "the design's in the tooltip"));
+}
+
+void MetricsPanel::addGroupTitles() {
     // Group titles: which system and which signal each block of figures belongs to.
     const QList<QPair<int, QString>> groups = {{TrackingGroup, tr("Tracking the trajectory")},
                                                {MoveGroup, tr("Move and settle (point-to-point)")},
@@ -113,9 +136,9 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
             "the "
             "limit, the anti-windup and the delay of the Digital implementation settings. An amber "
             "figure differs from the design's above by more than 5 %."));
-    table_->verticalHeaderItem(DigitalDamping)
-        ->setToolTip(tr("Least damping ratio of the digital closed loop's poles (s = ln z / Ts); "
-                        "the design's in the tooltip"));
+}
+
+void MetricsPanel::fitTableToItsRows() {
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     // Columns as wide as their figures (nothing cut to "0.000562..."); the spec column takes
     // what is left.
@@ -139,6 +162,9 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     table_->setFixedHeight(table_->horizontalHeader()->sizeHint().height() +
                            RowCount * table_->verticalHeader()->defaultSectionSize() +
                            2 * table_->frameWidth());
+}
+
+void MetricsPanel::buildVerdict() {
     // Whether the design meets the specification, why not (tooltip), and the limits it would
     // meet (the default specification, Braga et al.'s, fails every design): on the
     // specification's title line and beside its last field, where the panel has room at
@@ -156,7 +182,9 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     advice_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     advice_->setFixedHeight(advice_->fontMetrics().height() + 2);
     relax_->setFixedSize(relax_->sizeHint());
-    layout->addWidget(table_);
+}
+
+void MetricsPanel::buildNotices(QVBoxLayout* layout) {
     contour_ = new QLabel(this);
     contour_->setWordWrap(true);
     contour_->setTextFormat(Qt::PlainText);
@@ -182,6 +210,9 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     noticeArea_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
     noticeArea_->setVisible(false);
     layout->addWidget(noticeArea_);
+}
+
+void MetricsPanel::buildSpecFields() {
     auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
     auto nonNegative = [](const char* name, double max, const char* range) {
         return [name, max, range](double v) {
@@ -206,8 +237,21 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     spec_.insert("gain_margin",
                  new NumberField("min gain margin",
                                  nonNegative("min gain margin", 1e308, "must be >= 0 dB"), this));
-    // Two limits a row (label, field, label, field): seven limits in four rows keep the table
-    // above free of a scroll bar at 1366x768.
+    spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
+    spec_["error"]->setToolTip(tr("Maximum |e| as a percentage of the travel"));
+    spec_["settle"]->setToolTip(
+        tr("Maximum settle time after the end (tf) of a point-to-point move"));
+    spec_["window"]->setToolTip(tr("In-position window of a point-to-point move: |e| ≤ this (mm)"));
+    spec_["phase_margin"]->setToolTip(
+        tr("Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states "
+           "none). 45–60° is the usual rule."));
+    spec_["gain_margin"]->setToolTip(
+        tr("Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule."));
+    spec_["overshoot"]->setToolTip(tr("Every Guillemin–Truxal design overshoots a little on a step "
+                                      "(its reference model is type 2), so 0 % fails them all."));
+}
+
+QHBoxLayout* MetricsPanel::specTitleRow() {
     // The title leaves the verdict beside it the panel's width at 1366x768 (a longer title
     // cut the verdict to "hover for wh").
     auto* specTitle = new QLabel(tr("<b>Specification</b>"));
@@ -216,7 +260,12 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     auto* titleRow = new QHBoxLayout;
     titleRow->addWidget(specTitle);
     titleRow->addWidget(advice_, 1);
-    layout->addLayout(titleRow);
+    return titleRow;
+}
+
+QGridLayout* MetricsPanel::specForm() {
+    // Two limits a row (label, field, label, field): seven limits in four rows keep the table
+    // above free of a scroll bar at 1366x768.
     auto* form = new QGridLayout;
     form->setHorizontalSpacing(6);
     form->setVerticalSpacing(3);
@@ -240,19 +289,10 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
     form->addWidget(relax_, index / 2, (index % 2) * 2, 1, 2, Qt::AlignLeft);
     form->setColumnStretch(1, 1);
     form->setColumnStretch(3, 1);
-    spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
-    spec_["error"]->setToolTip(tr("Maximum |e| as a percentage of the travel"));
-    spec_["settle"]->setToolTip(
-        tr("Maximum settle time after the end (tf) of a point-to-point move"));
-    spec_["window"]->setToolTip(tr("In-position window of a point-to-point move: |e| ≤ this (mm)"));
-    spec_["phase_margin"]->setToolTip(
-        tr("Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states "
-           "none). 45–60° is the usual rule."));
-    spec_["gain_margin"]->setToolTip(
-        tr("Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule."));
-    spec_["overshoot"]->setToolTip(tr("Every Guillemin–Truxal design overshoots a little on a step "
-                                      "(its reference model is type 2), so 0 % fails them all."));
-    layout->addLayout(form);
+    return form;
+}
+
+void MetricsPanel::connectSpecFields() {
     for (NumberField* f : spec_)
         connect(f, &NumberField::valueAccepted, this, [this] {
             Specification next = current_;

@@ -10,10 +10,13 @@
 #include <array>
 #include <optional>
 
+class QGridLayout;
+class QHBoxLayout;
 class QLabel;
 class QScrollArea;
 class QPushButton;
 class QTableWidget;
+class QVBoxLayout;
 
 namespace xyt::ui {
 class NumberField;
@@ -92,6 +95,22 @@ signals:
     void specificationEdited(const Specification& spec);
 
 private:
+    // The constructor's steps, in the order the widgets are made (their tab order).
+    void buildTable();
+    /// Tooltips on the row headers that need more than their short title.
+    void describeRows();
+    void addGroupTitles();
+    void fitTableToItsRows();
+    /// The verdict beside the specification's title and the button that relaxes the limits.
+    void buildVerdict();
+    /// The contour figures and the warnings below the table, added to @p layout.
+    void buildNotices(QVBoxLayout* layout);
+    void buildSpecFields();
+    QHBoxLayout* specTitleRow();
+    QGridLayout* specForm();
+    /// Each accepted specification field emits the whole edited specification.
+    void connectSpecFields();
+
     void fitColumns();
     void showContour(const SessionEvaluation& evaluation, QStringList& notices);
     /// What one figure cell shows: its text, a pass (kPass) or fail (kFail) colour or none.

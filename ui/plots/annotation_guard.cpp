@@ -185,9 +185,13 @@ void setWrappedLines(QCPItemText* text, const QStringList& lines, const QString&
 }
 
 void guardAnnotations(QCustomPlot* plot) {
-    // The legends' columns before the layout too: the entries a new design adds or takes out
-    // then cost no second drawing.
-    QObject::connect(plot, &QCustomPlot::beforeReplot, plot, [plot] { fitLegendColumns(plot); });
+    // The legends' columns and the value ticks before the layout too: the entries a new design
+    // adds or takes out, and the ranges it moves, then cost no second drawing.
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot, [plot] {
+        fitLegendColumns(plot);
+        if (plot->isVisible() && plot->width() >= kLaidOutWidth)
+            fitVerticalTickCounts(plot);
+    });
     QObject::connect(plot, &QCustomPlot::afterLayout, plot, [plot] { placeAnnotations(plot); });
 }
 
