@@ -128,7 +128,8 @@ QString axisPlantWords(const Session& s, int axis) {
              QString::number(a.gt.plant.a2, 'g', 5));
 }
 
-QString axisLetter(const Session& s, int axis) {
+/// "X" or "Y": the axis as the window names it.
+QString axisName(const Session& s, int axis) {
     return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
 }
 
@@ -138,12 +139,12 @@ QString TuningSession::describe(const ResultStamp& stamp) {
     const Session& s = stamp.session;
     switch (stamp.scope) {
     case ResultScope::AxisDesign:
-        return tr("axis %1, %2").arg(axisLetter(s, stamp.axis), axisDesignWords(s, stamp.axis));
+        return tr("axis %1, %2").arg(axisName(s, stamp.axis), axisDesignWords(s, stamp.axis));
     case ResultScope::AxisStudy:
-        return tr("axis %1, %2").arg(axisLetter(s, stamp.axis), axisPlantWords(s, stamp.axis));
+        return tr("axis %1, %2").arg(axisName(s, stamp.axis), axisPlantWords(s, stamp.axis));
     case ResultScope::BothAxes:
         return tr("%1: %2; %3: %4")
-            .arg(axisLetter(s, 0), axisDesignWords(s, 0), axisLetter(s, 1), axisDesignWords(s, 1));
+            .arg(axisName(s, 0), axisDesignWords(s, 0), axisName(s, 1), axisDesignWords(s, 1));
     }
     return {};
 }
@@ -160,12 +161,6 @@ void TuningSession::setCurrentAxis(int axis) {
     currentAxis_ = axis;
     emit currentAxisChanged(axis);
 }
-
-namespace {
-QString axisName(const Session& s, int axis) {
-    return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
-}
-} // namespace
 
 void TuningSession::setOmegaN(int axis, double omegaNRadPerSec) {
     Session next = session_;
