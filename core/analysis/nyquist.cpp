@@ -3,6 +3,7 @@
 
 #include "core/analysis/frequency_response.h"
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,6 @@ namespace {
 
 using Complex = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// A pole is on the boundary when |Re s| <= this |s| (continuous) or ||z| - 1| <= this
 /// (discrete): the computed roots of an undamped pair scatter by round-off, those of a double

@@ -2,6 +2,7 @@
 #include "core/analysis/root_locus.h"
 
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 #include "core/model/root_matching.h"
 
 #include <algorithm>
@@ -16,7 +17,6 @@ namespace xyt {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A gain K = -D(s)/N(s) counts as real when |Im K| <= this * |K|.
 constexpr double kRealGainTolerance = 1e-6;
 /// |D(s)| below this times sum |d_i||s|^i: s is an open-loop pole (K = 0), not a feature.

@@ -3,6 +3,7 @@
 
 #include "core/analysis/frequency_response.h"
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +17,6 @@ namespace {
 
 using Complex = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// A root u of a real polynomial counts as real when |Im u| <= this * |u|. Loose on purpose:

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/contour/ballbar_circles.h"
 
+#include "core/model/math_constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,8 +11,6 @@
 namespace xyt {
 
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 /**
  * How far the sweeps of a run of arcs may add up from one turn and still close it: 1e-9 of a

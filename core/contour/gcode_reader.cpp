@@ -4,6 +4,7 @@
 #include "core/contour/feed_profile.h"
 
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 
 #include <algorithm>
@@ -17,7 +18,6 @@ namespace xyt {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// A number longer than this is refused (no G-code writer needs more digits than a double has).
 constexpr std::size_t kMaxNumberChars = 40;
 

@@ -2,6 +2,7 @@
 #include "core/contour/path.h"
 
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 
 #include <algorithm>
 #include <array>
@@ -13,7 +14,6 @@ namespace xyt {
 
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// Segments per leaf of the bounding-box hierarchy: small enough that a leaf is cheap to scan,
 /// large enough to quarter the tree's memory (16 bytes of boxes per segment instead of 64).
 constexpr std::size_t kLeafSegments = 4;

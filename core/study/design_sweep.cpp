@@ -5,6 +5,7 @@
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 #include "core/model/state_space.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/tracking_batch.h"
@@ -21,8 +22,6 @@
 namespace xyt {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 bool stepFiguresFinite(const StepCharacteristics& s) {
     return !s.stable || (std::isfinite(s.finalValue) && std::isfinite(s.settlingTimeSeconds) &&

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-// Runs the built xytune-cli (path from the XYT_CLI_PATH compile definition) and captures what
+// Runs the built xytune-cli (path from the generated built_programs.h) and captures what
 // it printed, for the CLI contract tests.
+
+#include "tests/support/built_programs.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The workbench's options that need no window work on a machine without a display
 // (before, --help aborted with Qt's platform-plugin error), and a mistyped option is bad input.
+#include "tests/support/built_programs.h"
+
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QTest>

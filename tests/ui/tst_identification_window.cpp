@@ -403,7 +403,7 @@ void TstIdentificationWindow::continuousFitFromTheExampleLog() {
     // The repository's synthetic lower-base log (.lvm, Ts stated by the file): the GT3 fit is
     // identifyModel's on the record with its first sample taken off, as xytune-cli identify does.
     const QString path =
-        QStringLiteral(XYT_EXAMPLES_SOURCE_DIR "/synthetic_lower_base_square_10ms.lvm");
+        QStringLiteral(XYT_SOURCE_DIR "/resources/examples/synthetic_lower_base_square_10ms.lvm");
     QVERIFY2(window_->loadFile(path), qPrintable(window_->statusText()));
     QCOMPARE(window_->timeBox()->currentIndex(), 0); // the file's sample time
     QVERIFY(window_->sampleTimeBox()->value() > 0.0);

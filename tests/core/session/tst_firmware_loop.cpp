@@ -16,6 +16,7 @@
 #include "core/session/session_evaluation.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/sampled_data.h"
+#include "tests/support/built_programs.h"
 #include "tests/support/tolerance.h"
 
 #include <QDir>
