@@ -181,9 +181,31 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
                          progress_->setValue(0);
                          setStatus(tr("The study failed: %1").arg(error), true);
                      }}) {
+    // The steps make the widgets in their tab order.
     const Specification spec = initialSpecification(session_->session());
     lastUmaxVolts_ = session_->session().umaxVolts;
 
+    QGroupBox* grid = buildGrid();
+    QGroupBox* choice = buildChoice();
+    QGroupBox* specBox = buildSpecification(spec);
+    QHBoxLayout* actions = buildActions();
+    buildControlPanel({grid, choice, specBox});
+    QHBoxLayout* texts = buildMapAndTexts();
+    auto* right = new QVBoxLayout;
+    right->addWidget(plot_, 1);
+    auto* middle = new QHBoxLayout;
+    middle->addWidget(controlPanel_);
+    connect(settings_, &QToolButton::toggled, controlPanel_, &QWidget::setVisible);
+    middle->addLayout(right, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(actions);
+    layout->addLayout(middle, 1);
+    layout->addLayout(texts);
+    connectControls();
+    updateCurrentDesign();
+}
+
+QGroupBox* DesignSpaceView::buildGrid() {
     wnMin_ = numberBox(0.2, 1e-3, 1e4, 3, QString());
     wnMax_ = numberBox(20.0, 1e-3, 1e4, 3, QString());
     wnCount_ = countBox(60);
@@ -209,7 +231,10 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     gridForm->addRow(tr("ωn (rad/s)"), rangeRow(wnMin_, wnMax_, wnCount_));
     gridForm->addRow(tr("kp"), rangeRow(kpMin_, kpMax_, kpCount_));
     gridForm->addRow(logGrid_);
+    return grid;
+}
 
+QGroupBox* DesignSpaceView::buildChoice() {
     criterion_ = criterionCombo();
     metric_ = criterionCombo();
     logColor_ = new QCheckBox(tr("logarithmic colour scale"));
@@ -220,7 +245,10 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     choiceForm->addRow(tr("Best design (min; max for margins)"), criterion_);
     choiceForm->addRow(tr("Heat map shows"), metric_);
     choiceForm->addRow(logColor_);
+    return choice;
+}
 
+QGroupBox* DesignSpaceView::buildSpecification(const Specification& spec) {
     settling_ = numberBox(spec.maxSettlingTimeSeconds, 0.001, 1e6, 3, tr(" s"));
     overshoot_ = numberBox(spec.maxOvershootPct, 0.0, 1000.0, 3, tr(" %"));
     error_ = numberBox(spec.maxErrorPct, 0.001, 1000.0, 3, tr(" %"));
@@ -244,7 +272,10 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     // One specification: the boxes edit the session's (an undoable step), and show it.
     for (QDoubleSpinBox* box : {settling_, overshoot_, error_, umax_, phaseMargin_, gainMargin_})
         connect(box, &QDoubleSpinBox::editingFinished, this, &DesignSpaceView::applySpecification);
+    return specBox;
+}
 
+QHBoxLayout* DesignSpaceView::buildActions() {
     run_ = new QPushButton(tr("Run"));
     run_->setDefault(true);
     cancel_ = new QPushButton(tr("Cancel"));
@@ -293,11 +324,13 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     actions->addWidget(cancel_);
     actions->addWidget(relax_);
     actions->addWidget(progress_, 1);
+    return actions;
+}
 
+void DesignSpaceView::buildControlPanel(std::initializer_list<QGroupBox*> groups) {
     auto* controls = new QVBoxLayout;
-    controls->addWidget(grid);
-    controls->addWidget(choice);
-    controls->addWidget(specBox);
+    for (QGroupBox* group : groups)
+        controls->addWidget(group);
     controls->addStretch(1);
     auto* controlContent = new QWidget;
     controlContent->setLayout(controls);
@@ -322,7 +355,9 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
         box->setFocusPolicy(Qt::StrongFocus);
         box->installEventFilter(this);
     }
+}
 
+QHBoxLayout* DesignSpaceView::buildMapAndTexts() {
     plot_ = new DesignSpacePlot;
     // The colour is the metric (its scale beside the map: yellow is a high value, not a good
     // one); feasibility is the veil and the outline.
@@ -351,19 +386,11 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
     }
     // What the cell shades mean, one hover away on the map (a label here cost the map height).
     plot_->setToolTip(shadesText());
-    auto* right = new QVBoxLayout;
-    right->addWidget(plot_, 1);
     veil_ = new StaleVeil(plot_);
+    return texts;
+}
 
-    auto* middle = new QHBoxLayout;
-    middle->addWidget(controlPanel_);
-    connect(settings_, &QToolButton::toggled, controlPanel_, &QWidget::setVisible);
-    middle->addLayout(right, 1);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(actions);
-    layout->addLayout(middle, 1);
-    layout->addLayout(texts);
-
+void DesignSpaceView::connectControls() {
     connect(run_, &QPushButton::clicked, this, &DesignSpaceView::run);
     connect(cancel_, &QPushButton::clicked, this, &DesignSpaceView::cancel);
     const auto redraw = [this] { plot_->setMetric(selected(metric_), logColor_->isChecked()); };
@@ -385,7 +412,6 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
         connect(box, &QSpinBox::valueChanged, this, [this] { scheduleLive(true); });
     connect(logGrid_, &QCheckBox::toggled, this, [this] { scheduleLive(true); });
     connect(criterion_, &QComboBox::currentIndexChanged, this, [this] { scheduleLive(true); });
-    updateCurrentDesign();
 }
 
 void DesignSpaceView::resizeEvent(QResizeEvent* event) {

@@ -11,12 +11,15 @@
 
 #include <QWidget>
 
+#include <initializer_list>
 #include <memory>
 #include <optional>
 
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QGroupBox;
+class QHBoxLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -135,6 +138,18 @@ private:
         bool logGrid = true;
         double elapsedMs = 0.0;
     };
+
+    // The constructor's steps, in the order the widgets are made (their tab order).
+    QGroupBox* buildGrid();
+    QGroupBox* buildChoice();
+    QGroupBox* buildSpecification(const Specification& spec);
+    /// Settings, Live, Run, Cancel, Relax and the progress: the row at the top of the tab.
+    QHBoxLayout* buildActions();
+    /// The scrolling column of @p groups beside the map.
+    void buildControlPanel(std::initializer_list<QGroupBox*> groups);
+    /// The map, its veil, and the status and hover strips under it (returned).
+    QHBoxLayout* buildMapAndTexts();
+    void connectControls();
 
     void startStudy(StudyKind kind);
     /// Starts a preview when live, visible, and the map shown (or under way) is not of the

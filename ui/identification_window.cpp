@@ -128,6 +128,38 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     setModal(false);
     setObjectName("identificationWindow");
 
+    // The steps make the widgets in their tab order.
+    QGroupBox* dataBox = buildDataBox();
+    QGroupBox* modelBox = buildModelBox();
+    QScrollArea* statusArea = buildStatus();
+    QHBoxLayout* useRow = buildCandidates();
+    auto* left = new QWidget;
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(dataBox);
+    leftLayout->addWidget(modelBox);
+    leftLayout->addWidget(statusArea);
+    leftLayout->addWidget(table_, 1);
+    leftLayout->addWidget(parameters_);
+    leftLayout->addLayout(useRow);
+
+    buildPlots();
+    auto* splitter = new QSplitter(Qt::Horizontal);
+    splitter->addWidget(left);
+    splitter->addWidget(tabs_);
+    splitter->setStretchFactor(0, 0);
+    splitter->setStretchFactor(1, 1);
+    splitter->setSizes({560, 740}); // the candidates' seven columns without a scroll bar
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(splitter);
+    resize(1300, 750);
+
+    connectControls();
+    updateOrderBoxes();
+    clearPlots(tr("Fit a model to see it here."));
+}
+
+QGroupBox* IdentificationWindow::buildDataBox() {
     // Data: file, columns, sample time, unit, preprocessing.
     load_ = new QPushButton(tr("Load data…"));
     fileName_ = new QLabel(tr("(no file)"));
@@ -186,7 +218,10 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     validationRow->addWidget(loadValidation_);
     validationRow->addWidget(validationName_, 1);
     dataForm->addRow(validationRow);
+    return dataBox;
+}
 
+QGroupBox* IdentificationWindow::buildModelBox() {
     // Model: structure, orders, search.
     structure_ = new QComboBox;
     structure_->addItem(tr("ARX"), static_cast<int>(ModelStructure::Arx));
@@ -227,7 +262,10 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     runRow->addWidget(cancel_);
     runRow->addWidget(progress_, 1);
     modelForm->addRow(runRow);
+    return modelBox;
+}
 
+QScrollArea* IdentificationWindow::buildStatus() {
     status_ = new QLabel;
     status_->setWordWrap(true);
     status_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
@@ -240,7 +278,10 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     statusArea->setMaximumHeight(5 * status_->fontMetrics().lineSpacing() + 6);
     status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     setStatus(tr("Load a record of the axis (input in V, output position) to begin."));
+    return statusArea;
+}
 
+QHBoxLayout* IdentificationWindow::buildCandidates() {
     // Candidates.
     table_ = new QTableWidget(0, 7);
     table_->setHorizontalHeaderLabels({tr("Model"), tr("Status"), tr("Fit % est"), tr("Fit % val"),
@@ -266,28 +307,10 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
     useRow->addWidget(useX_);
     useRow->addWidget(useY_);
     useRow->addStretch();
+    return useRow;
+}
 
-    auto* left = new QWidget;
-    auto* leftLayout = new QVBoxLayout(left);
-    leftLayout->setContentsMargins(0, 0, 0, 0);
-    leftLayout->addWidget(dataBox);
-    leftLayout->addWidget(modelBox);
-    leftLayout->addWidget(statusArea);
-    leftLayout->addWidget(table_, 1);
-    leftLayout->addWidget(parameters_);
-    leftLayout->addLayout(useRow);
-
-    buildPlots();
-    auto* splitter = new QSplitter(Qt::Horizontal);
-    splitter->addWidget(left);
-    splitter->addWidget(tabs_);
-    splitter->setStretchFactor(0, 0);
-    splitter->setStretchFactor(1, 1);
-    splitter->setSizes({560, 740}); // the candidates' seven columns without a scroll bar
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(splitter);
-    resize(1300, 750);
-
+void IdentificationWindow::connectControls() {
     connect(load_, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Load experiment data"), QString(),
@@ -329,15 +352,13 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
         if (selectedCandidate()) // the message area follows the row (an error stays until then)
             showSelectionStatus();
     });
-    updateOrderBoxes();
-    clearPlots(tr("Fit a model to see it here."));
 }
 
 IdentificationWindow::~IdentificationWindow() = default; // the runner cancels and waits
 
 void IdentificationWindow::buildPlots() {
     tabs_ = new QTabWidget;
-    const auto makePlot = [this](const QString& objectName) {
+    const auto makePlot = [](const QString& objectName) {
         auto* plot = new QCustomPlot;
         plot->setObjectName(objectName);
         plot->setMinimumSize(420, 300);

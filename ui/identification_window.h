@@ -21,9 +21,12 @@ class QCPGraph;
 class QCPCurve;
 class QCustomPlot;
 class QDoubleSpinBox;
+class QGroupBox;
+class QHBoxLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QScrollArea;
 class QSpinBox;
 class QTableWidget;
 class QTabWidget;
@@ -126,6 +129,16 @@ signals:
     void fitFinished();
 
 private:
+    // The constructor's steps, in the order the widgets are made (their tab order).
+    /// File, columns, sample time, unit, range, preprocessing and validation data.
+    QGroupBox* buildDataBox();
+    /// Structure, orders, iterations, Fit, Cancel and the progress.
+    QGroupBox* buildModelBox();
+    /// The message area (at most five lines, scrolling beyond).
+    QScrollArea* buildStatus();
+    /// The candidates' table, the selected estimate and the "Use for axis" row (returned).
+    QHBoxLayout* buildCandidates();
+    void connectControls();
     void buildPlots();
     void updateOrderBoxes();
     void setStatus(const QString& text, bool isError = false);

@@ -2,6 +2,7 @@
 #include "core/session/axis_frequency.h"
 
 #include "core/model/errors.h"
+#include "core/session/axis_loop.h"
 
 #include <cmath>
 #include <limits>
@@ -15,13 +16,13 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
     out.referenceOmegaRadPerSec = session.trajectory.kind == TrajectoryKind::Circle
                                       ? session.trajectory.omegaRadPerSec
                                       : std::numeric_limits<double>::quiet_NaN();
-    if (!evaluation.gt && !evaluation.pp) {
+    const std::optional<LoopTransferFunctions> loop = axisLoop(evaluation);
+    if (!loop) {
         out.error = evaluation.ok ? "the axis has no loop to analyse" : evaluation.error;
         return out;
     }
     try {
-        out.loop = evaluation.gt ? gtLoopTransferFunctions(*evaluation.gt)
-                                 : rstLoopTransferFunctions(*evaluation.pp);
+        out.loop = *loop;
         out.margins =
             evaluation.margins ? *evaluation.margins : stabilityMargins(out.loop.openLoop);
         // One grid for every curve, holding the crossovers (where the margins are drawn) and

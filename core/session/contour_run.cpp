@@ -6,6 +6,7 @@
 #include "core/design/zpetc.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/session/design_method_module.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/metrics.h"
@@ -17,68 +18,6 @@
 namespace xyt {
 
 namespace {
-
-std::string axisPath(int axisIndex, const std::string& field) {
-    return "axes[" + std::to_string(axisIndex) + "]." + field;
-}
-
-/// A continuous axis on the reference sampled at dt, starting at rest at its first sample.
-SimulationResult traceGt(const GtAxisSettings& gt, int axisIndex,
-                         const std::vector<double>& reference, double dtSeconds, double umaxVolts) {
-    const GtDesign design = sessionGtDesign(gt, axisIndex);
-    LoopSimulationOptions options;
-    options.dtSeconds = dtSeconds;
-    options.umaxVolts = umaxVolts;
-    options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
-    options.initialOutput = reference.front();
-    try {
-        return simulateLoop(gt.plant.transferFunction(), design.controller, reference, options);
-    } catch (const InvalidInput& e) {
-        if (e.field() == "plant" || e.field() == "initial_output")
-            throw InvalidInput(axisPath(axisIndex, "gt.plant"), e.reason());
-        throw;
-    }
-}
-
-/// A discrete axis: the reference resampled at its Ts (held at the end for the ZPETC's
-/// preview), the table at rest at the first sample (StartCondition::AtReference).
-SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vector<double>& t,
-                         const std::vector<double>& reference, double umaxVolts) {
-    PolePlacementDesign loop;
-    ZpetcDesign zpetc;
-    try {
-        requireFinite(pp.t1, "t1");
-        if (std::abs(pp.t1) >= 1.0)
-            throw InvalidInput("t1",
-                               "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
-        loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"),
-                                   Polynomial::fromAscending(pp.b, "b"),
-                                   Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
-        zpetc = designZpetc(loop);
-    } catch (const InvalidInput& e) {
-        throw InvalidInput(axisPath(axisIndex, "pp." + e.field()), e.reason());
-    }
-    const double steps = std::floor(t.back() / pp.tsSeconds + 1e-9);
-    if (!(steps >= 1.0))
-        throw InvalidInput(axisPath(axisIndex, "pp.ts"),
-                           formatNumber(pp.tsSeconds) + " s is longer than the program's run (" +
-                               formatNumber(t.back()) + " s)");
-    if (steps + 1.0 > static_cast<double>(sampleLimit()))
-        throw InvalidInput(axisPath(axisIndex, "pp.ts"),
-                           "the run needs more samples than this machine holds");
-    const std::size_t n = static_cast<std::size_t>(steps) + 1;
-    std::vector<double> times(n + static_cast<std::size_t>(zpetc.previewSteps));
-    for (std::size_t k = 0; k < times.size(); ++k)
-        times[k] = static_cast<double>(k) * pp.tsSeconds;
-    const std::vector<double> r = resampleLinear(t, reference, times);
-    times.resize(n);
-    const DiscreteRun run =
-        pp.zpetcEnabled
-            ? simulateZpetcLoop(loop, zpetc, r, n)
-            : simulateFeedbackLoop(
-                  loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)));
-    return discreteRun(times, r, run, umaxVolts, pp.tsSeconds);
-}
 
 /// Runs both axes of @p session along @p path at @p feeds.
 ContourTrace trace(const Session& session, const Path& path, const std::vector<double>& feeds,
@@ -93,13 +32,10 @@ ContourTrace trace(const Session& session, const Path& path, const std::vector<d
         const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
         const std::vector<double>& reference = i == 0 ? p.x : p.y;
         SimulationResult& run = out.axes[static_cast<std::size_t>(i)];
-        if (axis.method == DesignMethod::GuilleminTruxal) {
-            run = traceGt(axis.gt, i, reference, p.dtSeconds, session.umaxVolts);
-            (i == 0 ? out.x : out.y) = run.y;
-        } else {
-            run = tracePp(axis.pp, i, p.t, reference, session.umaxVolts);
-            (i == 0 ? out.x : out.y) = resampleLinear(run.t, run.y, p.t);
-        }
+        AxisTrace traced =
+            designMethodModule(axis.method).tracePath(session, i, p.t, reference, p.dtSeconds);
+        run = std::move(traced.run);
+        (i == 0 ? out.x : out.y) = std::move(traced.outputOnPath);
     }
     return out;
 }

@@ -2,6 +2,7 @@
 #include "core/session/robustness_problem.h"
 
 #include "core/model/errors.h"
+#include "core/session/design_method_module.h"
 #include "core/session/program_trajectory.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/resample.h"
@@ -156,25 +157,7 @@ void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session
 }
 
 std::vector<UncertainParameter> axisUncertainParameters(const AxisSettings& axis) {
-    if (axis.method == DesignMethod::GuilleminTruxal) {
-        const ThirdOrderPlant& g = axis.gt.plant;
-        return {{"k0", g.k0, 0.0}, {"a1", g.a1, 0.0}, {"a2", g.a2, 0.0}};
-    }
-    // As designPolePlacement uses the model: A and B divided by A(0).
-    const Polynomial a = Polynomial::fromAscending(axis.pp.a, "a");
-    const Polynomial b = Polynomial::fromAscending(axis.pp.b, "b");
-    const double a0 = a.coefficient(0);
-    if (a0 == 0.0)
-        throw InvalidInput("a", "A(0) must be nonzero");
-    std::vector<UncertainParameter> out;
-    const auto& ac = a.ascending();
-    for (std::size_t i = 1; i < ac.size(); ++i)
-        out.push_back({"a" + std::to_string(i), ac[i] / a0, 0.0});
-    const auto& bc = b.ascending();
-    for (std::size_t i = 1; i < bc.size(); ++i)
-        if (bc[i] != 0.0)
-            out.push_back({"b" + std::to_string(i), bc[i] / a0, 0.0});
-    return out;
+    return designMethodModule(axis.method).plantParameters(axis);
 }
 
 } // namespace xyt

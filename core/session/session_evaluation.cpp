@@ -4,6 +4,9 @@
 #include "core/analysis/loop_responses.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/session/axis_loop.h"
+#include "core/session/axis_run.h"
+#include "core/session/design_method_module.h"
 #include "core/session/program_trajectory.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/trajectory.h"
@@ -44,47 +47,6 @@ std::function<double(double)> axisReference(const TrajectorySettings& trajectory
         throw InvalidInput("trajectory.circle." + e.field(), e.reason());
     }
 }
-
-namespace {
-
-/// A refusal of the run itself (AxisEvaluation::runRefused), not of one axis' design.
-struct RunRefused : InvalidInput {
-    using InvalidInput::InvalidInput;
-};
-
-/// axisReference, its refusals marked as refusals of the run.
-std::function<double(double)> sessionReference(const TrajectorySettings& trajectory,
-                                               int axisIndex) {
-    try {
-        return axisReference(trajectory, axisIndex);
-    } catch (const InvalidInput& e) {
-        throw RunRefused(e.field(), e.reason());
-    }
-}
-
-/**
- * The sample times of one axis (step @p dt, named @p dtField in the session), refused naming
- * the session field when the run would not fit in memory or would hold a single sample (every
- * metric would read 0, which is not a result). The duration is blamed when the session sets it,
- * else the step.
- */
-std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double duration,
-                                    double dt, const std::string& dtField) {
-    const std::string culprit = trajectory.durationSeconds > 0.0 ? "trajectory.duration" : dtField;
-    std::vector<double> times;
-    try {
-        times = sampleTimes(duration, dt);
-    } catch (const InvalidInput& e) {
-        throw RunRefused(e.field() == "dt" ? dtField : culprit, e.reason());
-    }
-    if (times.size() < 2)
-        throw RunRefused(culprit, "gives a single sample (step " + formatNumber(dt) +
-                                      " s, duration " + formatNumber(duration) +
-                                      " s); at least two samples are needed for the metrics");
-    return times;
-}
-
-} // namespace
 
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     try {
@@ -140,48 +102,6 @@ SampledDataOptions sessionSampledDataOptions(const Session& session) {
 
 namespace {
 
-double minContinuousDamping(const std::vector<std::complex<double>>& poles) {
-    double out = 1.0;
-    for (const auto& p : poles)
-        if (std::abs(p) > 0.0)
-            out = std::min(out, -p.real() / std::abs(p));
-    return out;
-}
-
-double minDigitalDamping(const std::vector<std::complex<double>>& poles) {
-    double out = 1.0;
-    for (const auto& z : poles)
-        if (std::abs(z) >= 1e-9)
-            out = std::min(out, zDampingRatio(z));
-    return out;
-}
-
-/// The figures, move-and-settle, damping and limit-cycle warnings of a digital run.
-void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation& out) {
-    d.metrics = trackingMetrics(d.run.result);
-    d.minDamping = minDigitalDamping(d.poles);
-    if (const auto w = digitalDampingWarning(d.poles, d.designMinDamping, d.tsSeconds))
-        out.warnings.push_back(*w);
-    const TrajectorySettings& t = session.trajectory;
-    if (t.kind != TrajectoryKind::Cubic)
-        return;
-    d.moveSettle =
-        moveSettleMetrics(d.run.result, {t.x0, t.xf, t.tfSeconds}, session.spec.inPositionWindowMm);
-    const ImplementationSettings& impl = session.implementation;
-    if (impl.encoderResolutionMm > 0.0 || impl.dacBits > 0) {
-        const auto& times = d.run.result.t;
-        const auto rest = std::lower_bound(times.begin(), times.end(), t.tfSeconds);
-        d.limitCycle =
-            restLimitCycle(d.run.measured, static_cast<std::size_t>(rest - times.begin()));
-        if (d.limitCycle)
-            out.warnings.push_back(
-                "a limit cycle at rest: after the move the measured position keeps oscillating (" +
-                formatNumber(d.limitCycle->peakToPeak, 4) + " mm peak to peak, " +
-                std::to_string(d.limitCycle->turns) +
-                " turns in the last half of the rest), caused by the encoder/DAC quantization");
-    }
-}
-
 /// Says which criteria the design passes but its digital implementation fails, if any.
 std::optional<std::string> implementationVerdictWarning(const SpecificationCheck& design,
                                                         const SpecificationCheck& implementation) {
@@ -200,61 +120,6 @@ std::optional<std::string> implementationVerdictWarning(const SpecificationCheck
     return "the design meets " + list +
            ", its digital implementation does not: the verdict is the "
            "implementation's";
-}
-
-/// The digital implementation of a Guillemin-Truxal axis (its failures become a warning: the
-/// export names the field when asked for the code).
-void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axisIndex,
-                       double duration, AxisEvaluation& out) {
-    try {
-        DigitalEvaluation d;
-        const DigitalPi pi = sessionDigitalPi(session, *out.gt);
-        d.tsSeconds = pi.tsSeconds;
-        const SampledDataOptions options = sessionSampledDataOptions(session);
-        const TransferFunction plant = axis.gt.plant.transferFunction();
-        // At the simulation step (the default: both 10 ms) the continuous run already holds the
-        // reference at the controller's sample times.
-        const bool sameTimes = pi.tsSeconds == session.trajectory.dtSeconds;
-        d.run =
-            simulateSampledPi(plant, pi,
-                              sameTimes ? out.run.r
-                                        : sampled(sessionReference(session.trajectory, axisIndex),
-                                                  axisSampleTimes(session.trajectory, duration,
-                                                                  pi.tsSeconds, "controller_ts")),
-                              options, axis.gt.modelUnitsPerPositionUnit);
-        d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
-        d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
-        for (const auto& p : out.gt->closedLoopPoles)
-            d.designPoles.push_back(std::exp(p * pi.tsSeconds));
-        sortRoots(d.designPoles);
-        finishDigital(session, d, out);
-        out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
-    } catch (const InvalidInput& e) {
-        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
-    }
-}
-
-void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                bool withDigital, AxisEvaluation& out) {
-    const GtAxisSettings& gt = axis.gt;
-    out.gt = sessionGtDesign(gt, axisIndex);
-    LoopSimulationOptions options;
-    options.dtSeconds = session.trajectory.dtSeconds;
-    options.umaxVolts = session.umaxVolts;
-    options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
-    // The reference first: an unreadable program has no run time, and its refusal names the
-    // program rather than the step that a run of no length would be blamed on.
-    const auto reference = sessionReference(session.trajectory, axisIndex);
-    const auto times =
-        axisSampleTimes(session.trajectory, duration, options.dtSeconds, "trajectory.dt");
-    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
-                           sampled(reference, times), options);
-    out.metrics = trackingMetrics(out.run);
-    out.step = stepCharacteristics(out.gt->closedLoop);
-    if (!out.gt->stable)
-        out.warnings.push_back("the closed loop is unstable");
-    if (withDigital)
-        evaluateGtDigital(session, axis, axisIndex, duration, out);
 }
 
 } // namespace
@@ -279,112 +144,8 @@ SimulationResult discreteRun(const std::vector<double>& t, const std::vector<dou
     return out;
 }
 
-namespace {
-
-Polynomial fromCoefficients(const std::vector<double>& c, const std::string& field) {
-    return Polynomial::fromAscending(c, field);
-}
-
-/**
- * A plant that does not integrate (A(1) != 0) holds a position y only with the steady command
- * u = y A(1) / B(1): beyond the actuator limit the axis cannot stay where the trajectory goes,
- * whatever the controller (Patrick, Ishak and Adnan's x-axis model needs 3.03 V at 600 mm).
- */
-std::optional<std::string> reachWarning(const PpAxisSettings& pp,
-                                        const std::vector<double>& reference, double umaxVolts) {
-    double a1 = 0.0, b1 = 0.0, farthest = 0.0;
-    for (double c : pp.a)
-        a1 += c;
-    for (double c : pp.b)
-        b1 += c;
-    for (double r : reference)
-        farthest = std::max(farthest, std::abs(r));
-    // |A(1)| below 1e-9 of the coefficients' scale: an integrator within round-off.
-    double scale = 0.0;
-    for (double c : pp.a)
-        scale = std::max(scale, std::abs(c));
-    if (!(std::abs(a1) > 1e-9 * scale) || b1 == 0.0 || !std::isfinite(farthest))
-        return std::nullopt;
-    const double hold = farthest * a1 / b1;
-    if (!(std::abs(hold) > umaxVolts))
-        return std::nullopt;
-    return "the trajectory is out of the plant's reach: holding " + formatNumber(farthest, 4) +
-           " mm needs " + formatNumber(std::abs(hold), 3) +
-           " V (the model's steady gain B(1)/A(1) = " + formatNumber(b1 / a1, 4) +
-           " mm/V), beyond the " + formatNumber(umaxVolts) + " V limit";
-}
-
-void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
-                bool withDigital, AxisEvaluation& out) {
-    const PpAxisSettings& pp = axis.pp;
-    requireFinite(pp.t1, "t1");
-    if (std::abs(pp.t1) >= 1.0)
-        throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
-    out.pp = designPolePlacement(fromCoefficients(pp.a, "a"), fromCoefficients(pp.b, "b"),
-                                 Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
-    out.zpetc = designZpetc(*out.pp);
-    for (const auto& w : out.pp->warnings)
-        out.warnings.push_back(w);
-    const auto reference = sessionReference(session.trajectory, axisIndex); // first, as evaluateGt
-    const auto times = axisSampleTimes(session.trajectory, duration, pp.tsSeconds,
-                                       "axes[" + std::to_string(axisIndex) + "].pp.ts");
-    const std::size_t n = times.size();
-    std::vector<double> r(n + static_cast<std::size_t>(out.zpetc->previewSteps));
-    for (std::size_t k = 0; k < r.size(); ++k)
-        r[k] = reference(static_cast<double>(k) * pp.tsSeconds);
-    const std::vector<double> rLoop(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n));
-    out.feedbackOnlyRun = discreteRun(times, r, simulateFeedbackLoop(*out.pp, rLoop),
-                                      session.umaxVolts, pp.tsSeconds);
-    out.rmseWithoutFf = rootMeanSquare(out.feedbackOnlyRun.e);
-    if (pp.zpetcEnabled) {
-        out.run = discreteRun(times, r, simulateZpetcLoop(*out.pp, *out.zpetc, r, n),
-                              session.umaxVolts, pp.tsSeconds);
-        const double with = rootMeanSquare(out.run.e);
-        out.improvementPct =
-            out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - with / out.rmseWithoutFf) : 0.0;
-    } else {
-        out.run = out.feedbackOnlyRun;
-    }
-    out.metrics = trackingMetrics(out.run);
-    if (const auto w = reachWarning(pp, out.run.r, session.umaxVolts))
-        out.warnings.push_back(*w);
-    // The step figures of the system the axis runs: with ZPETC the step previewed through the
-    // feedforward and the loop (the loop Kf B / T alone overshoots 52 % through the
-    // NMP zero, which the axis never does); without it the loop alone.
-    out.step = pp.zpetcEnabled && out.zpetc && out.pp->closedLoop().isStable()
-                   ? zpetcStepCharacteristics(*out.pp, *out.zpetc)
-                   : loopStepCharacteristics(*out.pp);
-    if (!out.step.stable)
-        out.warnings.push_back("the closed loop is unstable");
-    if (out.metrics.saturated)
-        out.warnings.push_back("|u| exceeds the actuator limit (the discrete loop is simulated "
-                               "without saturation)");
-    if (!withDigital)
-        return;
-    try {
-        DigitalEvaluation d;
-        d.tsSeconds = pp.tsSeconds;
-        const SampledDataOptions options = sessionSampledDataOptions(session);
-        const ZpetcDesign* zpetc = pp.zpetcEnabled ? &*out.zpetc : nullptr;
-        d.run = simulateSampledRst(*out.pp, zpetc, r, n, options);
-        d.poles = sampledRstLoopPoles(*out.pp, options.delaySamples);
-        d.designPoles = sampledRstLoopPoles(*out.pp, 0);
-        d.designMinDamping = minDigitalDamping(d.designPoles);
-        finishDigital(session, d, out);
-        out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
-    } catch (const InvalidInput& e) {
-        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
-    }
-}
-
-} // namespace
-
 TransferFunction AxisEvaluation::closedLoop() const {
-    if (gt)
-        return gt->closedLoop;
-    if (pp)
-        return pp->closedLoop();
-    throw InvalidInput("axis", "has no design");
+    return designMethodModule(method).closedLoop(*this);
 }
 
 namespace {
@@ -398,10 +159,8 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
     out.method = axis.method;
     try {
         requirePositive(session.umaxVolts, "umax");
-        if (axis.method == DesignMethod::GuilleminTruxal)
-            evaluateGt(session, axis, axisIndex, duration.seconds, withDigital, out);
-        else
-            evaluatePp(session, axis, axisIndex, duration.seconds, withDigital, out);
+        designMethodModule(axis.method)
+            .evaluate(session, axisIndex, duration.seconds, withDigital, out);
         if (out.metrics.diverged)
             out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
                                    "it has no tracking figures");
@@ -419,8 +178,8 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
         // The move-only evaluation of chooseRunDuration (withDigital false) needs no margins.
         if (withDigital) {
             try {
-                out.margins = stabilityMargins(out.gt ? gtLoopTransferFunctions(*out.gt).openLoop
-                                                      : rstLoopTransferFunctions(*out.pp).openLoop);
+                if (const std::optional<LoopTransferFunctions> loop = axisLoop(out))
+                    out.margins = stabilityMargins(loop->openLoop);
             } catch (const InvalidInput& e) {
                 out.warnings.push_back(std::string("no stability margins: ") + e.what());
             }
@@ -463,11 +222,7 @@ std::array<AxisEvaluation, 2> evaluateAxesOver(const Session& session, const Run
 
 /// The slowest decay rate of an axis' closed loop (1/s); 0 or less when not asymptotically stable.
 double slowestDecayPerSecond(const AxisEvaluation& a) {
-    if (a.gt)
-        return continuousDecayPerSecond(a.gt->closedLoopPoles);
-    if (a.pp)
-        return discreteDecayPerSecond(a.pp->closedLoop().poles(), a.pp->tsSeconds);
-    return 0.0;
+    return designMethodModule(a.method).slowestDecayPerSecond(a);
 }
 
 std::string seconds(double v) {

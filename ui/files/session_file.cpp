@@ -5,6 +5,7 @@
 #include "core/io/json_duplicate_keys.h"
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
+#include "core/session/design_method_module.h"
 #include "core/session/program_trajectory.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/trajectory.h"
@@ -31,6 +32,19 @@ struct FormatError {
 
 QString join(const QString& path, const QString& key) {
     return path.isEmpty() ? key : path + "." + key;
+}
+
+/// The registered design method named @p name, or a FormatError at @p path listing the names.
+DesignMethod methodFromName(const QString& name, const QString& path) {
+    QStringList names;
+    for (const DesignMethodModule* m : designMethodModules()) {
+        names << QStringLiteral("\"%1\"").arg(methodName(m->method()));
+        if (name == methodName(m->method()))
+            return m->method();
+    }
+    const QString last = names.takeLast();
+    throw FormatError{
+        path, QStringLiteral("must be %1 or %2").arg(names.join(QStringLiteral(", ")), last)};
 }
 
 /// Reads one JSON object, remembering its path and which keys were used, so that unknown keys
@@ -333,15 +347,7 @@ AxisSettings readAxis(ObjectReader r) {
                           QStringLiteral("must be 1 to 16 lower-case letters or digits")};
     if (r.has("label"))
         a.label = r.string("label").toStdString();
-    const QString method = r.string("method");
-    if (method == methodName(DesignMethod::GuilleminTruxal))
-        a.method = DesignMethod::GuilleminTruxal;
-    else if (method == methodName(DesignMethod::PolePlacementZpetc))
-        a.method = DesignMethod::PolePlacementZpetc;
-    else
-        throw FormatError{
-            join(r.path(), "method"),
-            QStringLiteral("must be \"guillemin-truxal\" or \"pole-placement-zpetc\"")};
+    a.method = methodFromName(r.string("method"), join(r.path(), "method"));
     {
         ObjectReader gt = r.child("gt");
         ObjectReader plant = gt.child("plant");
@@ -457,8 +463,8 @@ TrajectorySettings readTrajectory(ObjectReader r) {
 } // namespace
 
 QString methodName(DesignMethod method) {
-    return method == DesignMethod::GuilleminTruxal ? QStringLiteral("guillemin-truxal")
-                                                   : QStringLiteral("pole-placement-zpetc");
+    const std::string_view id = designMethodModule(method).id();
+    return QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size()));
 }
 
 QJsonObject sessionToJson(const Session& s) {

@@ -477,6 +477,17 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
     QStringList notices;
     if (!liveNotice.isEmpty())
         notices << liveNotice;
+    showSpecification(session);
+    for (int c = 0; c < 2; ++c)
+        showAxis(session, evaluation.axes[static_cast<std::size_t>(c)], c, notices);
+    fitColumns();
+    showAdvice(session, evaluation);
+    showContour(evaluation, notices);
+    notices_->setText(notices.join(QLatin1Char('\n')));
+    noticeArea_->setVisible(!notices.isEmpty());
+}
+
+void MetricsPanel::showSpecification(const Session& session) {
     current_ = session.spec;
     spec_["settling"]->setValue(session.spec.maxSettlingTimeSeconds);
     spec_["overshoot"]->setValue(session.spec.maxOvershootPct);
@@ -500,166 +511,174 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
             continue;
         setCell(r, 2, Cell{specText.value(r)});
     }
-    for (int c = 0; c < 2; ++c) {
-        const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(c)];
-        marginChecks_[static_cast<std::size_t>(c)] =
-            a.ok && a.check.marginsApply ? std::optional(a.check) : std::nullopt;
-        const QString header =
-            QString::fromStdString(session.axes[static_cast<std::size_t>(c)].id).toUpper();
-        if (!table_->horizontalHeaderItem(c) || table_->horizontalHeaderItem(c)->text() != header)
-            table_->setHorizontalHeaderItem(c, new QTableWidgetItem(header));
-        QMap<int, QString> values;
-        if (!a.ok) {
-            for (int r = 0; r < RowCount; ++r)
-                values[r] = tr("—");
-        } else {
-            const auto& m = a.metrics;
-            values[Rmse] = displayNumber(m.rmse);
-            values[MaxError] = displayNumber(m.maxAbsError);
-            values[MaxErrorPct] = displayNumber(m.maxAbsErrorPct);
-            values[MaxU] = displayNumber(m.maxAbsU);
-            values[Saturated] = m.diverged     ? tr("n/a")
-                                : !m.saturated ? tr("no")
-                                : a.pp ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds))
-                                       : displayNumber(m.saturatedTimeSeconds);
-            values[Itae] = displayNumber(m.itae);
-            values[Improvement] =
-                a.zpetc && session.axes[static_cast<std::size_t>(c)].pp.zpetcEnabled
-                    ? displayNumber(a.improvementPct)
-                    : tr("—");
-            if (a.moveSettle) {
-                const MoveSettleMetrics& ms = *a.moveSettle;
-                // Not settled in the run: "> the run's time after tf", a lower bound an engineer
-                // can read in the column's width (the duration line quotes the estimate).
-                values[SettleAfterMove] =
-                    ms.diverged ? tr("n/a")
-                    : ms.settleTimeSeconds
-                        ? displayNumber(*ms.settleTimeSeconds)
-                        : tr("> %1").arg(
-                              displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
-                values[FinalError] = displayNumber(ms.finalErrorMm);
-                values[FinalOvershoot] = displayNumber(ms.finalOvershootMm);
-            } else {
-                for (int r : {SettleAfterMove, FinalError, FinalOvershoot})
-                    values[r] = tr("—");
-            }
-            for (int r : {DigitalRmse, DigitalMaxError, DigitalDamping})
-                values[r] = tr("—");
-            if (a.digital) {
-                const TrackingMetrics& dm = a.digital->metrics;
-                values[DigitalRmse] = displayNumber(dm.rmse);
-                values[DigitalMaxError] = displayNumber(dm.maxAbsError);
-                values[DigitalDamping] = displayNumber(a.digital->minDamping, 3);
-            }
-            values[Settling] =
-                a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
-            values[Overshoot] = a.step.stable ? displayNumber(a.step.overshootPct) : tr("unstable");
-        }
-        if (!a.ok)
-            notices << tr("%1: no design (%2: %3)")
-                           .arg(header, QString::fromStdString(a.errorField),
-                                QString::fromStdString(a.error));
-        for (const std::string& w : a.warnings)
-            notices << tr("%1: %2").arg(header, QString::fromStdString(w));
-        // Which rows the specification judges, and whether this axis passes them.
-        QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
-                                  {MaxU, a.check.noSaturation},
-                                  {Saturated, a.check.noSaturation},
-                                  {Settling, a.check.settlingTime},
-                                  {Overshoot, a.check.overshoot}};
-        if (a.check.settleApplies)
-            judged[SettleAfterMove] = a.check.settle;
-        // Rows the design passes but its digital implementation fails show the implementation's
-        // figure: the verdict is the run that will really happen.
-        QSet<int> byImplementation;
-        if (a.ok && a.implementationCheck && a.digital) {
-            const SpecificationCheck& d = a.designCheck;
-            const SpecificationCheck& i = *a.implementationCheck;
-            const TrackingMetrics& dm = a.digital->metrics;
-            if (d.trackingError && !i.trackingError) {
-                byImplementation << MaxErrorPct;
-                values[MaxErrorPct] = displayNumber(dm.maxAbsErrorPct);
-            }
-            if (d.noSaturation && !i.noSaturation) {
-                byImplementation << MaxU << Saturated;
-                values[MaxU] = displayNumber(dm.maxAbsU);
-                values[Saturated] =
-                    dm.diverged ? tr("n/a") : displayNumber(dm.saturatedTimeSeconds);
-            }
-            if (d.settleApplies && d.settle && !i.settle && a.digital->moveSettle) {
-                const MoveSettleMetrics& ms = *a.digital->moveSettle;
-                byImplementation << SettleAfterMove;
-                values[SettleAfterMove] =
-                    ms.diverged ? tr("n/a")
-                    : ms.settleTimeSeconds
-                        ? displayNumber(*ms.settleTimeSeconds)
-                        : tr("> %1").arg(
-                              displayNumber(std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
-            }
-        }
-        for (int r = 0; r < RowCount; ++r) {
-            if (isGroupRow(r) || isMarginRow(r))
-                continue;
-            Cell cell{values.value(r)};
-            if (a.ok && judged.contains(r)) {
-                const bool pass = judged[r];
-                cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
-                cell.color = pass ? kPass : kFail;
-                cell.toolTip =
-                    pass ? (a.implementationCheck
-                                ? tr("meets the specification, as designed and as implemented")
-                                : tr("meets the specification"))
-                         : tr("fails the specification");
-                if (byImplementation.contains(r)) {
-                    cell.text += tr(" digital");
-                    cell.toolTip =
-                        tr("the design meets the specification here, its digital implementation "
-                           "(Ts, quantization, ±umax, delay) does not: this is the "
-                           "implementation's figure");
-                }
-            }
-            if (!a.ok)
-                cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
-            if (r == SettleAfterMove && a.ok && a.moveSettle && !a.moveSettle->diverged &&
-                !a.moveSettle->settleTimeSeconds)
-                cell.toolTip =
-                    tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
-                        .arg(displayNumber(a.moveSettle->windowMm),
-                             displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
-                                                             a.moveSettle->moveEndSeconds)),
-                             cell.toolTip);
-            if (a.ok && a.digital && (r == DigitalRmse || r == DigitalMaxError)) {
-                const double design = r == DigitalRmse ? a.metrics.rmse : a.metrics.maxAbsError;
-                const TrackingMetrics& dm = a.digital->metrics;
-                const double digital = r == DigitalRmse ? dm.rmse : dm.maxAbsError;
-                const bool differs = !(std::abs(digital - design) <= 0.05 * std::abs(design));
-                if (differs)
-                    cell.color = kDiffers;
-                cell.toolTip = tr("design %1, digital %2%3")
-                                   .arg(displayNumber(design), displayNumber(digital),
-                                        differs ? tr(" (differs by more than 5 %)") : QString());
-            }
-            if (r == DigitalDamping && a.ok && a.digital) {
-                const bool low = a.digital->minDamping < 0.8 * a.digital->designMinDamping;
-                if (low)
-                    cell.color = kFail;
-                cell.toolTip = tr("digital loop %1, design %2 at Ts = %3 s")
-                                   .arg(displayNumber(a.digital->minDamping, 3),
-                                        displayNumber(a.digital->designMinDamping, 3))
-                                   .arg(a.digital->tsSeconds);
-            }
-            if (r == Saturated && a.ok && a.pp && a.metrics.saturated)
-                cell.toolTip =
-                    tr("* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated "
-                       "without a limit; |u| would be clipped this long");
-            setCell(r, c, cell);
-        }
+}
+
+void MetricsPanel::showAxis(const Session& session, const AxisEvaluation& a, int column,
+                            QStringList& notices) {
+    const auto axis = static_cast<std::size_t>(column);
+    marginChecks_[axis] = a.ok && a.check.marginsApply ? std::optional(a.check) : std::nullopt;
+    const QString header = QString::fromStdString(session.axes[axis].id).toUpper();
+    if (!table_->horizontalHeaderItem(column) ||
+        table_->horizontalHeaderItem(column)->text() != header)
+        table_->setHorizontalHeaderItem(column, new QTableWidgetItem(header));
+    QMap<int, QString> values = axisFigures(a, session.axes[axis].pp.zpetcEnabled);
+    if (!a.ok)
+        notices << tr("%1: no design (%2: %3)")
+                       .arg(header, QString::fromStdString(a.errorField),
+                            QString::fromStdString(a.error));
+    for (const std::string& w : a.warnings)
+        notices << tr("%1: %2").arg(header, QString::fromStdString(w));
+    // Which rows the specification judges, and whether this axis passes them.
+    QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
+                              {MaxU, a.check.noSaturation},
+                              {Saturated, a.check.noSaturation},
+                              {Settling, a.check.settlingTime},
+                              {Overshoot, a.check.overshoot}};
+    if (a.check.settleApplies)
+        judged[SettleAfterMove] = a.check.settle;
+    const QSet<int> byImplementation = showImplementationFigures(a, values);
+    for (int r = 0; r < RowCount; ++r) {
+        if (isGroupRow(r) || isMarginRow(r))
+            continue;
+        Cell cell{values.value(r)};
+        if (a.ok && judged.contains(r))
+            judgeCell(cell, judged[r], byImplementation.contains(r),
+                      a.implementationCheck.has_value());
+        explainCell(cell, r, a);
+        setCell(r, column, cell);
     }
-    fitColumns();
-    showAdvice(session, evaluation);
-    showContour(evaluation, notices);
-    notices_->setText(notices.join(QLatin1Char('\n')));
-    noticeArea_->setVisible(!notices.isEmpty());
+}
+
+namespace {
+
+/// "> the run's time after tf" when the run ended before the axis settled.
+QString settleText(const MoveSettleMetrics& ms) {
+    // Not settled in the run: "> the run's time after tf", a lower bound an engineer can read
+    // in the column's width (the duration line quotes the estimate).
+    return ms.diverged            ? MetricsPanel::tr("n/a")
+           : ms.settleTimeSeconds ? displayNumber(*ms.settleTimeSeconds)
+                                  : MetricsPanel::tr("> %1").arg(displayNumber(
+                                        std::max(0.0, ms.runEndSeconds - ms.moveEndSeconds)));
+}
+
+} // namespace
+
+QMap<int, QString> MetricsPanel::axisFigures(const AxisEvaluation& a, bool zpetcEnabled) const {
+    QMap<int, QString> values;
+    if (!a.ok) {
+        for (int r = 0; r < RowCount; ++r)
+            values[r] = tr("—");
+        return values;
+    }
+    const auto& m = a.metrics;
+    values[Rmse] = displayNumber(m.rmse);
+    values[MaxError] = displayNumber(m.maxAbsError);
+    values[MaxErrorPct] = displayNumber(m.maxAbsErrorPct);
+    values[MaxU] = displayNumber(m.maxAbsU);
+    values[Saturated] = m.diverged     ? tr("n/a")
+                        : !m.saturated ? tr("no")
+                        : a.pp         ? tr("%1*").arg(displayNumber(m.saturatedTimeSeconds))
+                                       : displayNumber(m.saturatedTimeSeconds);
+    values[Itae] = displayNumber(m.itae);
+    values[Improvement] = a.zpetc && zpetcEnabled ? displayNumber(a.improvementPct) : tr("—");
+    if (a.moveSettle) {
+        values[SettleAfterMove] = settleText(*a.moveSettle);
+        values[FinalError] = displayNumber(a.moveSettle->finalErrorMm);
+        values[FinalOvershoot] = displayNumber(a.moveSettle->finalOvershootMm);
+    } else {
+        for (int r : {SettleAfterMove, FinalError, FinalOvershoot})
+            values[r] = tr("—");
+    }
+    for (int r : {DigitalRmse, DigitalMaxError, DigitalDamping})
+        values[r] = tr("—");
+    if (a.digital) {
+        const TrackingMetrics& dm = a.digital->metrics;
+        values[DigitalRmse] = displayNumber(dm.rmse);
+        values[DigitalMaxError] = displayNumber(dm.maxAbsError);
+        values[DigitalDamping] = displayNumber(a.digital->minDamping, 3);
+    }
+    values[Settling] = a.step.stable ? displayNumber(a.step.settlingTimeSeconds) : tr("unstable");
+    values[Overshoot] = a.step.stable ? displayNumber(a.step.overshootPct) : tr("unstable");
+    return values;
+}
+
+QSet<int> MetricsPanel::showImplementationFigures(const AxisEvaluation& a,
+                                                  QMap<int, QString>& values) const {
+    // Rows the design passes but its digital implementation fails show the implementation's
+    // figure: the verdict is the run that will really happen.
+    QSet<int> byImplementation;
+    if (!a.ok || !a.implementationCheck || !a.digital)
+        return byImplementation;
+    const SpecificationCheck& d = a.designCheck;
+    const SpecificationCheck& i = *a.implementationCheck;
+    const TrackingMetrics& dm = a.digital->metrics;
+    if (d.trackingError && !i.trackingError) {
+        byImplementation << MaxErrorPct;
+        values[MaxErrorPct] = displayNumber(dm.maxAbsErrorPct);
+    }
+    if (d.noSaturation && !i.noSaturation) {
+        byImplementation << MaxU << Saturated;
+        values[MaxU] = displayNumber(dm.maxAbsU);
+        values[Saturated] = dm.diverged ? tr("n/a") : displayNumber(dm.saturatedTimeSeconds);
+    }
+    if (d.settleApplies && d.settle && !i.settle && a.digital->moveSettle) {
+        byImplementation << SettleAfterMove;
+        values[SettleAfterMove] = settleText(*a.digital->moveSettle);
+    }
+    return byImplementation;
+}
+
+void MetricsPanel::judgeCell(Cell& cell, bool pass, bool byImplementation,
+                             bool implementationChecked) const {
+    cell.text += pass ? QStringLiteral(" ✓") : QStringLiteral(" ✗");
+    cell.color = pass ? kPass : kFail;
+    cell.toolTip = pass ? (implementationChecked
+                               ? tr("meets the specification, as designed and as implemented")
+                               : tr("meets the specification"))
+                        : tr("fails the specification");
+    if (byImplementation) {
+        cell.text += tr(" digital");
+        cell.toolTip = tr("the design meets the specification here, its digital implementation "
+                          "(Ts, quantization, ±umax, delay) does not: this is the "
+                          "implementation's figure");
+    }
+}
+
+void MetricsPanel::explainCell(Cell& cell, int r, const AxisEvaluation& a) const {
+    if (!a.ok) {
+        cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
+        return;
+    }
+    if (r == SettleAfterMove && a.moveSettle && !a.moveSettle->diverged &&
+        !a.moveSettle->settleTimeSeconds)
+        cell.toolTip = tr("not settled into ±%1 mm by the end of the run, %2 s after tf; %3")
+                           .arg(displayNumber(a.moveSettle->windowMm),
+                                displayNumber(std::max(0.0, a.moveSettle->runEndSeconds -
+                                                                a.moveSettle->moveEndSeconds)),
+                                cell.toolTip);
+    if (a.digital && (r == DigitalRmse || r == DigitalMaxError)) {
+        const double design = r == DigitalRmse ? a.metrics.rmse : a.metrics.maxAbsError;
+        const TrackingMetrics& dm = a.digital->metrics;
+        const double digital = r == DigitalRmse ? dm.rmse : dm.maxAbsError;
+        const bool differs = !(std::abs(digital - design) <= 0.05 * std::abs(design));
+        if (differs)
+            cell.color = kDiffers;
+        cell.toolTip = tr("design %1, digital %2%3")
+                           .arg(displayNumber(design), displayNumber(digital),
+                                differs ? tr(" (differs by more than 5 %)") : QString());
+    }
+    if (r == DigitalDamping && a.digital) {
+        const bool low = a.digital->minDamping < 0.8 * a.digital->designMinDamping;
+        if (low)
+            cell.color = kFail;
+        cell.toolTip = tr("digital loop %1, design %2 at Ts = %3 s")
+                           .arg(displayNumber(a.digital->minDamping, 3),
+                                displayNumber(a.digital->designMinDamping, 3))
+                           .arg(a.digital->tsSeconds);
+    }
+    if (r == Saturated && a.pp && a.metrics.saturated)
+        cell.toolTip = tr("* not applied: the discrete loop of Patrick, Ishak and Adnan is "
+                          "simulated without a limit; |u| would be clipped this long");
 }
 
 } // namespace xyt::ui

@@ -5,6 +5,8 @@
 
 #include <QColor>
 #include <QMap>
+#include <QSet>
+#include <QStringList>
 #include <QWidget>
 
 #include <array>
@@ -124,6 +126,21 @@ private:
     static constexpr QRgb kDiffers =
         0xffb26a00; ///< a digital figure that differs from the design's
     void setCell(int row, int column, const Cell& cell);
+
+    // showEvaluation's steps.
+    void showSpecification(const Session& session);
+    void showAxis(const Session& session, const AxisEvaluation& a, int column,
+                  QStringList& notices);
+    /// The figures of one axis by row ("—" where it has none).
+    QMap<int, QString> axisFigures(const AxisEvaluation& a, bool zpetcEnabled) const;
+    /// Puts the digital implementation's figure in each row the design passes and the
+    /// implementation fails; returns those rows.
+    QSet<int> showImplementationFigures(const AxisEvaluation& a, QMap<int, QString>& values) const;
+    /// Marks a judged cell pass or fail.
+    void judgeCell(Cell& cell, bool pass, bool byImplementation, bool implementationChecked) const;
+    /// The tool tips that explain a figure (the reason of an axis without design, a settle
+    /// after the run, the digital figures against the design's, a clip not applied).
+    void explainCell(Cell& cell, int row, const AxisEvaluation& a) const;
 
     void showAdvice(const Session& session, const SessionEvaluation& evaluation);
 

@@ -77,7 +77,7 @@ std::optional<DominantPair> dominantPair(const std::vector<Complex>& poles, doub
 }
 } // namespace
 
-RequirementOverlay::RequirementOverlay(QCustomPlot* plot) : plot_(plot) {
+RequirementOverlay::RequirementOverlay(QCustomPlot* plot) {
     dampingShade_ = makeCurve(plot, Qt::NoPen, kShade);
     settlingShade_ = makeCurve(plot, Qt::NoPen, kShade);
     for (QCPCurve* shade : {dampingShade_, settlingShade_})

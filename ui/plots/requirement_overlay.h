@@ -49,7 +49,6 @@ public:
     QCPGraph* dominantPoles() const { return dominant_; }
 
 private:
-    QCustomPlot* plot_;
     QCPCurve* damping_;
     QCPCurve* settling_;
     QCPCurve* omega_;

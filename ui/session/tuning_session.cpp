@@ -2,6 +2,7 @@
 #include "ui/session/tuning_session.h"
 
 #include "core/model/errors.h"
+#include "core/session/axis_loop.h"
 
 #include <QLocale>
 #include <QUndoCommand>
@@ -258,17 +259,10 @@ namespace xyt::ui {
 const RootLocus& TuningSession::rootLocus(int axis) const {
     auto& cached = locus_.at(static_cast<std::size_t>(axis));
     if (!cached) {
-        const AxisEvaluation& e = axisEvaluation(axis);
-        if (e.gt) {
-            cached = xyt::rootLocus(e.gt->openLoop);
-        } else if (e.pp) {
-            // The feedback path: F u = -G y around A y = B u gives 1 + B G / (A F) = 0.
-            const TransferFunction loop = TransferFunction::fromZInverse(
-                e.pp->b * e.pp->g, e.pp->a * e.pp->f, e.pp->tsSeconds);
-            cached = xyt::rootLocus(loop);
-        } else {
-            cached = RootLocus{};
-        }
+        // The loop whatever the method (for pole placement F u = -G y around A y = B u gives
+        // 1 + B G / (A F) = 0).
+        const std::optional<LoopTransferFunctions> loop = axisLoop(axisEvaluation(axis));
+        cached = loop ? xyt::rootLocus(loop->openLoop) : RootLocus{};
     }
     return *cached;
 }
@@ -304,25 +298,8 @@ const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter p
 }
 
 std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
-    const AxisEvaluation& e = axisEvaluation(axis);
-    if (e.gt)
-        return gtPoleZeroSets(*e.gt);
-    std::vector<PoleZeroSet> sets;
-    if (e.pp) {
-        const double ts = e.pp->tsSeconds;
-        sets.push_back(
-            poleZeroSet("plant B/A", TransferFunction::fromZInverse(e.pp->b, e.pp->a, ts)));
-        sets.push_back(
-            poleZeroSet("feedback G/F", TransferFunction::fromZInverse(e.pp->g, e.pp->f, ts)));
-        sets.push_back(poleZeroSet("closed loop Kf B/T", e.pp->closedLoop()));
-        // The feedforward is computed for the with/without comparison even when switched off;
-        // the map shows what runs.
-        if (e.zpetc && session().axes.at(static_cast<std::size_t>(axis)).pp.zpetcEnabled)
-            sets.push_back(poleZeroSet(
-                "ZPETC feedforward", TransferFunction::fromZInverse(e.zpetc->feedforwardNum,
-                                                                    e.zpetc->feedforwardDen, ts)));
-    }
-    return sets;
+    return axisPoleZeroSets(axisEvaluation(axis),
+                            session().axes.at(static_cast<std::size_t>(axis)));
 }
 
 bool TuningSession::applyLoopGain(int axis, double gain) {

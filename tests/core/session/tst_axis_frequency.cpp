@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The frequency-domain view of a session's axes, as the workbench draws it.
 #include "core/session/axis_frequency.h"
+#include "core/session/axis_loop.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
@@ -16,6 +17,7 @@ private slots:
     void gtAxisHoldsItsCrossoversOnTheGrid();
     void polePlacementAxisHasTheZpetcTracking();
     void axisWithoutDesignSaysWhy();
+    void axisLoopIsWhatEachMethodCloses();
 };
 
 namespace {
@@ -77,6 +79,47 @@ void TstAxisFrequency::axisWithoutDesignSaysWhy() {
     const AxisFrequencyAnalysis a = analyzeAxisFrequency(s, e.axes[1]);
     QVERIFY(!a.ok);
     QVERIFY(!a.error.empty());
+}
+
+void TstAxisFrequency::axisLoopIsWhatEachMethodCloses() {
+    // One dispatch gives every analysis its loop. Guillemin-Truxal: the design's G_c G (Braga et
+    // al., unity feedback), the same polynomials. Pole placement: L = B G/(A F), the loop broken
+    // at the plant input (Patrick, Ishak and Adnan Fig. 9), from the design's polynomials.
+    Session s;
+    s.axes[1].method = DesignMethod::PolePlacementZpetc;
+    const SessionEvaluation e = evaluateSession(s);
+    const std::optional<LoopTransferFunctions> gt = axisLoop(e.axes[0]);
+    QVERIFY(gt && e.axes[0].gt);
+    QCOMPARE(gt->openLoop.num(), e.axes[0].gt->openLoop.num());
+    QCOMPARE(gt->openLoop.den(), e.axes[0].gt->openLoop.den());
+    QCOMPARE(gt->openLoop.tsSeconds(), 0.0);
+    const std::optional<LoopTransferFunctions> pp = axisLoop(e.axes[1]);
+    QVERIFY(pp && e.axes[1].pp);
+    const PolePlacementDesign& d = *e.axes[1].pp;
+    QVERIFY(pp->openLoop == TransferFunction::fromZInverse(d.b * d.g, d.a * d.f, d.tsSeconds));
+    QCOMPARE(pp->openLoop.tsSeconds(), 0.07);
+
+    // The pole-zero sets: the pole-placement map lists the ZPETC filter only when it runs.
+    const auto names = [](const std::vector<PoleZeroSet>& sets) {
+        QStringList out;
+        for (const PoleZeroSet& set : sets)
+            out << QString::fromStdString(set.name);
+        return out;
+    };
+    AxisSettings feedforwardOff = s.axes[1];
+    feedforwardOff.pp.zpetcEnabled = false;
+    QCOMPARE(names(axisPoleZeroSets(e.axes[1], feedforwardOff)),
+             QStringList({"plant B/A", "feedback G/F", "closed loop Kf B/T"}));
+    QCOMPARE(names(axisPoleZeroSets(e.axes[1], s.axes[1])),
+             QStringList({"plant B/A", "feedback G/F", "closed loop Kf B/T", "ZPETC feedforward"}));
+    QCOMPARE(names(axisPoleZeroSets(e.axes[0], s.axes[0])), names(gtPoleZeroSets(*e.axes[0].gt)));
+
+    // No design, no loop.
+    s.axes[0].gt.omegaNRadPerSec = -1.0;
+    const AxisEvaluation invalid = evaluateAxis(s, 0);
+    QVERIFY(!invalid.ok);
+    QVERIFY(!axisLoop(invalid));
+    QVERIFY(axisPoleZeroSets(invalid, s.axes[0]).empty());
 }
 
 QTEST_APPLESS_MAIN(TstAxisFrequency)

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/model/errors.h"
+#include "core/session/session_evaluation.h"
+
+#include <complex>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace xyt {
+
+// What every design method's evaluation shares (core/session/design_method_module.h): the
+// reference and the sample times an axis runs on, refused as refusals of the run, and the
+// figures of its digital run.
+
+/// A refusal of the run itself (AxisEvaluation::runRefused), not of one axis' design.
+struct RunRefused : InvalidInput {
+    using InvalidInput::InvalidInput;
+};
+
+/// axisReference, its refusals marked as refusals of the run.
+std::function<double(double)> sessionReference(const TrajectorySettings& trajectory, int axisIndex);
+
+/**
+ * The sample times of one axis (step @p dt, named @p dtField in the session), refused naming
+ * the session field when the run would not fit in memory or would hold a single sample (every
+ * metric would read 0, which is not a result). The duration is blamed when the session sets it,
+ * else the step.
+ */
+std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double duration,
+                                    double dt, const std::string& dtField);
+
+/// "axes[i].field": a setting of axis @p axisIndex as the session file names it.
+std::string axisFieldPath(int axisIndex, const std::string& field);
+
+/// The least damping ratio of continuous poles (1 without any).
+double minContinuousDamping(const std::vector<std::complex<double>>& poles);
+/// The least damping ratio of z-plane poles, those at the origin left out (1 without any).
+double minDigitalDamping(const std::vector<std::complex<double>>& poles);
+
+/// The figures, move-and-settle, damping and limit-cycle warnings of a digital run.
+void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation& out);
+
+} // namespace xyt

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/analysis/loop_responses.h"
+#include "core/analysis/pole_zero_map.h"
+#include "core/session/session_evaluation.h"
+#include "core/study/plant_uncertainty.h"
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace xyt {
+
+/**
+ * One design method as a module: everything that differs between methods is behind this
+ * interface, and the evaluation, the analyses and the views ask the module of an axis' method
+ * (designMethodModule) instead of branching on the method themselves.
+ *
+ * A module turns an axis' settings and the session into its evaluated design (evaluate): the
+ * design itself, the run the axis makes (with its feedforward, if the method has one), the step
+ * figures and the warnings, and, when asked, the digital implementation at the controller
+ * period. From an evaluated design it gives the loop every analysis takes (margins, Bode,
+ * Nyquist, root locus), the closed loop, the pole-zero sets a map draws and the slowest decay
+ * (for the automatic run duration).
+ *
+ * Adding a method: a DesignMethod value, its module (one file pair in core/session), and one
+ * line in the registry (design_method_module.cpp).
+ */
+/// One axis' run along a path (the contour run of a G-code program).
+struct AxisTrace {
+    SimulationResult run;             ///< on the method's own sample times
+    std::vector<double> outputOnPath; ///< the output at the path's sample times
+};
+
+class DesignMethodModule {
+public:
+    virtual ~DesignMethodModule() = default;
+
+    virtual DesignMethod method() const = 0;
+    /// The method's name as the session file writes it ("guillemin-truxal").
+    virtual std::string_view id() const = 0;
+
+    /**
+     * Designs axis @p axisIndex of @p session and runs it for @p durationSeconds, filling the
+     * method's part of @p out: the design, run, metrics, step, warnings and (when
+     * @p withDigital) the digital implementation. Throws InvalidInput naming the session field
+     * of a setting that allows no design, and RunRefused (axis_run.h) for a run that cannot be
+     * made.
+     */
+    virtual void evaluate(const Session& session, int axisIndex, double durationSeconds,
+                          bool withDigital, AxisEvaluation& out) const = 0;
+
+    /**
+     * Runs axis @p axisIndex on @p reference, sampled at the times @p t (step @p dtSeconds), the
+     * table at rest at its first sample: the contour run of a program. Throws InvalidInput
+     * naming the session field ("axes[1].pp.ts").
+     */
+    virtual AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
+                                const std::vector<double>& reference, double dtSeconds) const = 0;
+
+    /// The plant's parameters with their nominal values, as the robustness study varies them
+    /// (relative ranges 0). Throws InvalidInput for a plant that has none.
+    virtual std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const = 0;
+
+    /// The loop of an evaluated design (L, S, T and u/r); unset without a design.
+    virtual std::optional<LoopTransferFunctions> loop(const AxisEvaluation& axis) const = 0;
+    /// Reference to output of the loop the design closes. Throws without a design.
+    virtual TransferFunction closedLoop(const AxisEvaluation& axis) const = 0;
+    /// The pole-zero sets of an evaluated design, in the order a map lists them; empty without
+    /// a design.
+    virtual std::vector<PoleZeroSet> poleZeroSets(const AxisEvaluation& axis,
+                                                  const AxisSettings& settings) const = 0;
+    /// The slowest decay rate of the closed loop (1/s); 0 or less when not asymptotically
+    /// stable or without a design.
+    virtual double slowestDecayPerSecond(const AxisEvaluation& axis) const = 0;
+};
+
+/// The module of @p method.
+const DesignMethodModule& designMethodModule(DesignMethod method);
+
+/// Every registered module, in the order the workbench offers them.
+const std::vector<const DesignMethodModule*>& designMethodModules();
+
+} // namespace xyt
