@@ -3,6 +3,7 @@
 
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/pole_zero_map.h"
+#include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
 #include "core/study/plant_uncertainty.h"
 
@@ -31,6 +32,12 @@ namespace xyt {
 struct AxisTrace {
     SimulationResult run;             ///< on the method's own sample times
     std::vector<double> outputOnPath; ///< the output at the path's sample times
+};
+
+/// One axis' lines of the Octave/MATLAB script, and the time vector its response y_<id> is on.
+struct OctaveLines {
+    std::string text;
+    std::string timeVector;
 };
 
 class DesignMethodModule {
@@ -62,6 +69,25 @@ public:
     /// The plant's parameters with their nominal values, as the robustness study varies them
     /// (relative ranges 0). Throws InvalidInput for a plant that has none.
     virtual std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const = 0;
+
+    /**
+     * The controller of evaluated axis @p axisIndex as C for firmware, its block of
+     * exportCHeader: a comment saying what it runs, its coefficients, and its state, init and
+     * step functions (with the saturation and the anti-windup) performing the operations of
+     * the sampled-data simulation in the same order. Written with core/session/c_export.h;
+     * throws InvalidInput naming the field of a number C cannot hold.
+     */
+    virtual std::string cController(const Session& session, const AxisEvaluation& axis,
+                                    int axisIndex, const ExportOptions& options) const = 0;
+
+    /**
+     * The axis' part of exportOctaveScript: plant_<id>, controller_<id>, closed_loop_<id>, the
+     * reference r_<id> (octaveTrajectoryLines) and the linear response y_<id> over a run of
+     * @p durationSeconds.
+     */
+    virtual OctaveLines octaveController(const Session& session, const AxisEvaluation& axis,
+                                         int axisIndex, const ExportOptions& options,
+                                         double durationSeconds) const = 0;
 
     /// The loop of an evaluated design (L, S, T and u/r); unset without a design.
     virtual std::optional<LoopTransferFunctions> loop(const AxisEvaluation& axis) const = 0;

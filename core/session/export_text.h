@@ -62,6 +62,10 @@ DigitalController axisDigitalController(const Session& session, const SessionEva
 std::string exportCHeader(const Session& session, const SessionEvaluation& evaluation,
                           const ExportOptions& options = {});
 
+/// Octave/MATLAB lines computing the reference r_<id> of axis @p axisIndex on the vector t.
+std::string octaveTrajectoryLines(const TrajectorySettings& t, int axisIndex,
+                                  const std::string& id);
+
 /**
  * A GNU Octave / MATLAB script defining per axis `plant_<axis>`, `controller_<axis>` and
  * `closed_loop_<axis>` as tf objects, then plotting the closed-loop response to the session's

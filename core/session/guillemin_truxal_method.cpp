@@ -3,10 +3,12 @@
 
 #include "core/model/root_matching.h"
 #include "core/session/axis_run.h"
+#include "core/session/c_export.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/trajectory.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace xyt {
 
@@ -85,6 +87,152 @@ SimulationResult traceGt(const GtAxisSettings& gt, int axisIndex,
     }
 }
 
+using namespace cexport;
+
+/// The digital PI the export runs for a GT axis: the session's, discretized as @p options say.
+DigitalPi exportPi(const Session& session, const GtDesign& design, const ExportOptions& options) {
+    Session s = session;
+    s.piDiscretization = options.piMethod;
+    return sessionDigitalPi(s, design);
+}
+
+/// The complete digital PI of a Guillemin-Truxal axis (stepDigitalPi in C).
+std::string piImplementationBlock(const AxisSettings& axis, const DigitalPi& pi,
+                                  const std::string& id, int axisIndex, CPrecision precision) {
+    const std::string up = upper(id);
+    const std::string gt = axisField(axisIndex, "gt");
+    const std::string f = gt + " (digital PI at controller_ts)";
+    std::ostringstream out;
+    out << "/* Axis " << id << labelComment(axis, CommentSyntax::C)
+        << ": the controller. Every XYT_" << up
+        << "_TS seconds, with the table's measured\n * position in mm (encoder counts times "
+           "XYT_ENCODER_RESOLUTION_MM when the session gives it)\n * and the reference r(k) in "
+           "mm:\n"
+        << " *   u = xyt_" << id << "_step(&state, r, measured);   (volts, within +-XYT_UMAX)\n"
+        << " * after xyt_" << id
+        << "_init(&state) with the table at rest. The PI in integrator form, e in\n"
+        << " * model units:\n"
+        << " *   e = (r - measured) UNIT,  I[k] = I[k-1] + C0 e[k] + C1 e[k-1],  v = KP e + I[k],\n"
+        << " *   u = v clipped to +-XYT_UMAX, anti-windup: " << antiWindupName(pi.antiWindup);
+    if (pi.antiWindup == AntiWindup::Clamp)
+        out << " (the integrator holds while u is\n *   clipped and the increment has the sign of "
+               "v)";
+    else if (pi.antiWindup == AntiWindup::BackCalculation)
+        out << " (I[k] += AW_GAIN (u - v), AW_GAIN = Ts/Tt)";
+    out << ".\n */\n";
+    const auto constant = [&](const std::string& name, double v, const std::string& field) {
+        const std::string constantName = "XYT_" + up + "_" + name;
+        out << "static const xyt_real " << constantName
+            << " XYT_MAYBE_UNUSED = " << realNum(v, field, constantName, precision) << ";\n";
+    };
+    constant("KP", pi.kp, gt + ".kp");
+    constant("C0", pi.c0, f);
+    constant("C1", pi.c1, f);
+    constant("UNIT", axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale");
+    if (pi.antiWindup == AntiWindup::BackCalculation)
+        constant("AW_GAIN", pi.trackingGain, "implementation.tracking_time");
+    out << "typedef struct {\n    xyt_real integrator;     /* I[k-1] */\n"
+           "    xyt_real previous_error; /* e[k-1] */\n} xyt_"
+        << id << "_state;\n"
+        << "static inline XYT_MAYBE_UNUSED void xyt_" << id << "_init(xyt_" << id
+        << "_state *s) {\n"
+        << "    s->integrator = 0;\n    s->previous_error = 0;\n}\n"
+        << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
+        << "_state *s, xyt_real reference, xyt_real measured) {\n"
+        << "    const xyt_real e = (reference - measured) * XYT_" << up << "_UNIT;\n"
+        << "    const xyt_real increment = XYT_" << up << "_C0 * e + XYT_" << up
+        << "_C1 * s->previous_error;\n"
+        << "    const xyt_real candidate = s->integrator + increment;\n"
+        << "    xyt_real v = XYT_" << up << "_KP * e + candidate;\n"
+        << "    xyt_real u;\n"
+        << "    " << cSaturate("u", "v");
+    switch (pi.antiWindup) {
+    case AntiWindup::None:
+        out << "    s->integrator = candidate;\n";
+        break;
+    case AntiWindup::Clamp:
+        out << "    if (u != v && increment * v > 0) { /* clipped and pushing outwards: hold I */\n"
+            << "        v = XYT_" << up << "_KP * e + s->integrator;\n"
+            << "        " << cSaturate("u", "v") << "    } else {\n"
+            << "        s->integrator = candidate;\n    }\n";
+        break;
+    case AntiWindup::BackCalculation:
+        out << "    s->integrator = candidate + XYT_" << up << "_AW_GAIN * (u - v);\n";
+        break;
+    }
+    out << "    s->previous_error = e;\n    return u;\n}\n\n";
+    return out.str();
+}
+
+/// The Guillemin-Truxal axis' block of the firmware header: the PI as a difference equation
+/// and its complete step function.
+std::string gtFirmwareBlock(const Session& session, const AxisEvaluation& a, int i,
+                            const ExportOptions& options) {
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(i));
+    const std::string id = upper(axis.id);
+    std::ostringstream out;
+    const DigitalController c =
+        discretizePi(a.gt->kp, a.gt->ki, session.controllerTsSeconds, options.piMethod);
+    const std::string gt = axisField(i, "gt");
+    const std::string pi = gt + " (digital PI at controller_ts)";
+    out << "/* Axis " << axis.id << labelComment(axis, CommentSyntax::C) << ": ";
+    out << "Guillemin-Truxal PI, kp = " << num(a.gt->kp, gt + ".kp")
+        << " V/model unit, ki = " << num(a.gt->ki, gt + " (ki)") << " V/(model unit s),\n * "
+        << discretizationName(options.piMethod)
+        << " discretization at Ts = " << num(c.tsSeconds, "controller_ts")
+        << " s. Position in model units ("
+        << num(axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale") << " per mm).\n";
+    out << " *   u[k] = ";
+    for (std::size_t k = 1; k < c.den.size(); ++k)
+        out << "- XYT_" << id << "_DEN[" << k << "] u[k-" << k << "] ";
+    for (std::size_t k = 0; k < c.num.size(); ++k)
+        out << "+ XYT_" << id << "_NUM[" << k << "] e[k" << (k ? "-" + std::to_string(k) : "")
+            << "] ";
+    out << "\n */\n";
+    out << "#define XYT_" << id << "_NUM_LEN " << c.num.size() << "\n";
+    out << "#define XYT_" << id << "_DEN_LEN " << c.den.size() << "\n";
+    out << "static const double XYT_" << id << "_NUM[XYT_" << id << "_NUM_LEN] XYT_MAYBE_UNUSED = {"
+        << joined(c.num, ", ", pi) << "};\n";
+    out << "static const double XYT_" << id << "_DEN[XYT_" << id << "_DEN_LEN] XYT_MAYBE_UNUSED = {"
+        << joined(c.den, ", ", pi) << "};\n";
+    out << "static const double XYT_" << id
+        << "_TS XYT_MAYBE_UNUSED = " << num(c.tsSeconds, "controller_ts") << ";\n\n";
+    out << piImplementationBlock(axis, exportPi(session, *a.gt, options), axis.id, i,
+                                 options.precision);
+    return out.str();
+}
+
+/// The Guillemin-Truxal axis in the Octave/MATLAB script: plant, PI, closed loop, its digital
+/// form, the reference and the linear response on t.
+OctaveLines gtOctaveLines(const Session& session, const AxisEvaluation& a, int i,
+                          const ExportOptions& options) {
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(i));
+    const std::string& id = axis.id;
+    const std::string gt = axisField(i, "gt");
+    std::ostringstream out;
+    const auto& p = axis.gt.plant;
+    out << "plant_" << id << " = tf(" << num(p.k0, gt + ".plant.k0") << ", [1 "
+        << num(p.a1, gt + ".plant.a1") << " " << num(p.a2, gt + ".plant.a2") << " 0]);\n";
+    out << "controller_" << id << " = tf([" << num(a.gt->kp, gt + ".kp") << " "
+        << num(a.gt->ki, gt + " (ki)") << "], [1 0]);  % kp + ki/s\n";
+    out << "closed_loop_" << id << " = feedback(controller_" << id << " * plant_" << id
+        << ", 1);\n";
+    out << "% The same PI as the firmware runs it (" << discretizationName(options.piMethod)
+        << ", Ts = " << num(session.controllerTsSeconds, "controller_ts") << " s):\n";
+    const DigitalController c =
+        discretizePi(a.gt->kp, a.gt->ki, session.controllerTsSeconds, options.piMethod);
+    out << "digital_controller_" << id << " = filt([" << joined(c.num, " ", gt + " (digital PI)")
+        << "], [" << joined(c.den, " ", gt + " (digital PI)") << "], "
+        << num(c.tsSeconds, "controller_ts") << ");  % in z^-1\n";
+    out << octaveTrajectoryLines(session.trajectory, i, id);
+    out << "unit_" << id << " = "
+        << num(axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale")
+        << ";  % model units per mm\n";
+    out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << " * unit_" << id
+        << ", t) / unit_" << id << ";\n\n";
+    return {out.str(), "t"};
+}
+
 class GuilleminTruxalMethod final : public DesignMethodModule {
 public:
     DesignMethod method() const override { return DesignMethod::GuilleminTruxal; }
@@ -108,6 +256,17 @@ public:
     std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const override {
         const ThirdOrderPlant& g = settings.gt.plant;
         return {{"k0", g.k0, 0.0}, {"a1", g.a1, 0.0}, {"a2", g.a2, 0.0}};
+    }
+
+    std::string cController(const Session& session, const AxisEvaluation& axis, int axisIndex,
+                            const ExportOptions& options) const override {
+        return gtFirmwareBlock(session, axis, axisIndex, options);
+    }
+
+    OctaveLines octaveController(const Session& session, const AxisEvaluation& axis, int axisIndex,
+                                 const ExportOptions& options,
+                                 double /*durationSeconds*/) const override {
+        return gtOctaveLines(session, axis, axisIndex, options);
     }
 
     std::optional<LoopTransferFunctions> loop(const AxisEvaluation& axis) const override {

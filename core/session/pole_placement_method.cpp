@@ -3,6 +3,7 @@
 
 #include "core/model/number_format.h"
 #include "core/session/axis_run.h"
+#include "core/session/c_export.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/resample.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace xyt {
 
@@ -151,6 +153,158 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
     return discreteRun(times, r, run, umaxVolts, pp.tsSeconds);
 }
 
+using namespace cexport;
+
+/// The RST law and ZPETC filter of a pole-placement axis as C arrays.
+std::string rstHeaderBlock(const AxisSettings& axis, const AxisEvaluation& a, const std::string& id,
+                           int axisIndex) {
+    const PolePlacementDesign& pp = *a.pp;
+    const std::string field = axisField(axisIndex, "pp");
+    std::ostringstream out;
+    out << "/* Axis " << axis.id << labelComment(axis, CommentSyntax::C)
+        << ": pole placement (Patrick, Ishak and Adnan), Ts = " << num(pp.tsSeconds, field + ".ts")
+        << " s, T = 1 " << (pp.t.coefficient(1) < 0 ? "- " : "+ ")
+        << num(std::abs(pp.t.coefficient(1)), field + ".t1") << " z^-1. Every Ts:\n"
+        << " *   F(z^-1) u[k] = KF w[k] - G(z^-1) y[k], i.e. (F[0] is 1 up to round-off)\n"
+        << " *   u[k] = (KF w[k] - sum_i G[i] y[k-i] - sum_{i>=1} F[i] u[k-i]) / F[0]\n";
+    if (axis.pp.zpetcEnabled && a.zpetc)
+        out << " * with the ZPETC feedforward reading the reference PREVIEW samples ahead:\n"
+            << " *   sum_i FF_DEN[i] w[k-i] = sum_i FF_NUM[i] r[k + PREVIEW - i]\n";
+    else
+        out << " * with w = r (no feedforward).\n";
+    out << " */\n";
+    out << "#define XYT_" << id << "_TS " << num(pp.tsSeconds, field + ".ts") << "\n";
+    out << "static const double XYT_" << id
+        << "_KF XYT_MAYBE_UNUSED = " << num(pp.kf, field + " (Kf)") << ";\n";
+    out << cArray("XYT_" + id + "_F", pp.f.ascending(), field + " (F)");
+    out << cArray("XYT_" + id + "_G", pp.g.ascending(), field + " (G)");
+    if (axis.pp.zpetcEnabled && a.zpetc) {
+        out << "#define XYT_" << id << "_PREVIEW " << a.zpetc->previewSteps << "\n";
+        out << cArray("XYT_" + id + "_FF_NUM", a.zpetc->feedforwardNum.ascending(),
+                      field + ".zpetc (feedforward)");
+        out << cArray("XYT_" + id + "_FF_DEN", a.zpetc->feedforwardDen.ascending(),
+                      field + ".zpetc (feedforward)");
+    }
+    out << "\n";
+    return out.str();
+}
+
+/// The RST law (and ZPETC) of a pole-placement axis in C: the operations of simulateSampledRst.
+std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluation& a,
+                                   AntiWindup antiWindup, const std::string& id, int axisIndex,
+                                   CPrecision precision) {
+    const PolePlacementDesign& pp = *a.pp;
+    const bool ff = axis.pp.zpetcEnabled && a.zpetc;
+    const std::string up = upper(id), X = "XYT_" + upper(id);
+    const std::string field = axisField(axisIndex, "pp");
+    std::ostringstream out;
+    out << "/* Axis " << id << labelComment(axis, CommentSyntax::C) << ": the controller. Every "
+        << X << "_TS seconds, with the measured position y(k) in mm:\n";
+    if (ff)
+        out << " *   u(k) = xyt_" << id << "_step(&state, r(k + " << X
+            << "_PREVIEW), y(k));   (volts)\n"
+            << " * THE CALLER SUPPLIES THE REFERENCE " << X
+            << "_PREVIEW SAMPLES AHEAD (the ZPETC is\n"
+            << " * non-causal: it needs r(k + PREVIEW) at time k). Start with xyt_" << id
+            << "_init(&state, r(0)) with the table\n"
+            << " * at rest at r(0), and call step from k = -PREVIEW on (the table may leave r(0) "
+               "before k = 0).\n";
+    else
+        out << " *   u(k) = xyt_" << id << "_step(&state, r(k), y(k));   (volts)\n"
+            << " * after xyt_" << id << "_init(&state, r(0)) with the table at rest at r(0).\n";
+    out << " * The step runs F u = KF w - G y (w the ZPETC output, or r), clips u to +-XYT_UMAX "
+           "and\n"
+        << " * remembers "
+        << (antiWindup == AntiWindup::None ? "its unclipped output v"
+                                           : "the clipped u (anti-windup)")
+        << " in the past-u terms. U_REST = A(1)/B(1) is u at rest per mm.\n */\n";
+    // The coefficient arrays are double, but the step multiplies with them cast to xyt_real.
+    requireInPrecision(pp.kf, field + " (Kf)", X + "_KF", precision);
+    requireArrayInPrecision(pp.f.ascending(), field + " (F)", X + "_F", precision);
+    requireArrayInPrecision(pp.g.ascending(), field + " (G)", X + "_G", precision);
+    if (ff) {
+        requireArrayInPrecision(a.zpetc->feedforwardNum.ascending(), field + ".zpetc (feedforward)",
+                                X + "_FF_NUM", precision);
+        requireArrayInPrecision(a.zpetc->feedforwardDen.ascending(), field + ".zpetc (feedforward)",
+                                X + "_FF_DEN", precision);
+    }
+    out << "static const xyt_real " << X << "_U_REST XYT_MAYBE_UNUSED = "
+        << realNum(pp.a(1.0) / pp.b(1.0), field + " (A(1)/B(1))", X + "_U_REST", precision)
+        << ";\n";
+    out << "typedef struct {\n";
+    if (ff)
+        out << "    xyt_real r[" << X << "_FF_NUM_LEN]; /* r(k+P), r(k+P-1), ... */\n"
+            << "    xyt_real w[" << X << "_FF_DEN_LEN]; /* w(k), w(k-1), ... */\n";
+    out << "    xyt_real y[" << X << "_G_LEN]; /* y(k), y(k-1), ... measured */\n"
+        << "    xyt_real u[" << X << "_F_LEN]; /* u(k), u(k-1), ... */\n} xyt_" << id
+        << "_state;\n";
+    out << "static inline XYT_MAYBE_UNUSED void xyt_" << id << "_init(xyt_" << id
+        << "_state *s, xyt_real rest_position) {\n    int i;\n";
+    if (ff)
+        out << "    for (i = 0; i < " << X
+            << "_FF_NUM_LEN; ++i)\n        s->r[i] = rest_position;\n"
+            << "    for (i = 0; i < " << X
+            << "_FF_DEN_LEN; ++i)\n        s->w[i] = rest_position;\n";
+    out << "    for (i = 0; i < " << X << "_G_LEN; ++i)\n        s->y[i] = rest_position;\n"
+        << "    for (i = 0; i < " << X << "_F_LEN; ++i)\n        s->u[i] = " << X
+        << "_U_REST * rest_position;\n}\n";
+    out << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
+        << "_state *s, xyt_real " << (ff ? "reference_ahead" : "reference")
+        << ", xyt_real measured) {\n    int i;\n    xyt_real w, v, u;\n";
+    if (ff) {
+        out << cShift("s->r", X + "_FF_NUM_LEN") << cShift("s->w", X + "_FF_DEN_LEN")
+            << "    s->r[0] = reference_ahead;\n    w = 0;\n"
+            << "    for (i = 0; i < " << X
+            << "_FF_NUM_LEN; ++i)\n        w += " << cReal(X + "_FF_NUM[i]") << " * s->r[i];\n"
+            << "    for (i = 1; i < " << X
+            << "_FF_DEN_LEN; ++i)\n        w -= " << cReal(X + "_FF_DEN[i]") << " * s->w[i];\n"
+            << "    w = w / " << cReal(X + "_FF_DEN[0]") << ";\n    s->w[0] = w;\n";
+    } else {
+        out << "    w = reference;\n";
+    }
+    out << cShift("s->y", X + "_G_LEN") << cShift("s->u", X + "_F_LEN")
+        << "    s->y[0] = measured;\n"
+        << "    v = " << cReal(X + "_KF") << " * w;\n"
+        << "    for (i = 0; i < " << X << "_G_LEN; ++i)\n        v -= " << cReal(X + "_G[i]")
+        << " * s->y[i];\n"
+        << "    for (i = 1; i < " << X << "_F_LEN; ++i)\n        v -= " << cReal(X + "_F[i]")
+        << " * s->u[i];\n"
+        << "    v = v / " << cReal(X + "_F[0]") << ";\n"
+        << "    " << cSaturate("u", "v")
+        << "    s->u[0] = " << (antiWindup == AntiWindup::None ? "v" : "u")
+        << ";\n    return u;\n}\n\n";
+    return out.str();
+}
+
+/// The pole-placement axis in the Octave/MATLAB script: plant, RST law, closed loop Kf B/T, the
+/// reference and the response of the loop alone on its own time vector t_<id>.
+OctaveLines ppOctaveLines(const Session& session, const AxisEvaluation& a, int i, double duration) {
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(i));
+    const std::string& id = axis.id;
+    const std::string ppField = axisField(i, "pp");
+    std::ostringstream out;
+    const PolePlacementDesign& pp = *a.pp;
+    const std::string ts = num(pp.tsSeconds, ppField + ".ts");
+    out << "Ts_" << id << " = " << ts << ";\n";
+    out << "plant_" << id << " = filt([" << joined(pp.b.ascending(), " ", ppField + ".b") << "], ["
+        << joined(pp.a.ascending(), " ", ppField + ".a") << "], Ts_" << id << ");  % B/A in z^-1\n";
+    out << "% RST pole placement: F u = Kf w - G y (Patrick, Ishak and Adnan Eq. 7-8)\n";
+    out << "F_" << id << " = [" << joined(pp.f.ascending(), " ", ppField + " (F)") << "];\n";
+    out << "G_" << id << " = [" << joined(pp.g.ascending(), " ", ppField + " (G)") << "];\n";
+    out << "Kf_" << id << " = " << num(pp.kf, ppField + " (Kf)") << ";\n";
+    out << "controller_" << id << " = filt(G_" << id << ", F_" << id << ", Ts_" << id
+        << ");  % feedback path G/F\n";
+    out << "closed_loop_" << id << " = Kf_" << id << " * feedback(plant_" << id << " * filt(1, F_"
+        << id << ", Ts_" << id << "), filt(G_" << id << ", 1, Ts_" << id << "));  % = Kf B / T\n";
+    out << "t_" << id << " = (0:Ts_" << id << ":" << num(duration, "trajectory.duration")
+        << ")';\n";
+    out << "t_saved = t; t = t_" << id << ";\n"
+        << octaveTrajectoryLines(session.trajectory, i, id) << "t = t_saved;\n";
+    out << "y_" << id << " = lsim(closed_loop_" << id << ", r_" << id << ", t_" << id
+        << ");  % the loop alone, without the ZPETC feedforward\n\n";
+    return {out.str(), "t_" + id};
+}
+
 class PolePlacementMethod final : public DesignMethodModule {
 public:
     DesignMethod method() const override { return DesignMethod::PolePlacementZpetc; }
@@ -187,6 +341,22 @@ public:
             if (bc[i] != 0.0)
                 out.push_back({"b" + std::to_string(i), bc[i] / a0, 0.0});
         return out;
+    }
+
+    /// The RST law and the ZPETC filter as C arrays, then the complete step function.
+    std::string cController(const Session& session, const AxisEvaluation& axis, int axisIndex,
+                            const ExportOptions& options) const override {
+        const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axisIndex));
+        const SampledDataOptions implementation = sessionSampledDataOptions(session);
+        return rstHeaderBlock(settings, axis, upper(settings.id), axisIndex) +
+               rstImplementationBlock(settings, axis, implementation.antiWindup, settings.id,
+                                      axisIndex, options.precision);
+    }
+
+    OctaveLines octaveController(const Session& session, const AxisEvaluation& axis, int axisIndex,
+                                 const ExportOptions& /*options*/,
+                                 double durationSeconds) const override {
+        return ppOctaveLines(session, axis, axisIndex, durationSeconds);
     }
 
     std::optional<LoopTransferFunctions> loop(const AxisEvaluation& axis) const override {
