@@ -4,9 +4,9 @@
 #   scripts/dev.sh run    starts the workbench (or the headless report without a display)
 #   scripts/dev.sh test   runs every test: the format check, the normal build, then one clang build with
 #                         AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer coverage
-#                         (build-fuzz) in which the core, CLI and file suites and a GUI smoke
-#                         test run again (any sanitizer report fails) and each libFuzzer
-#                         harness runs on 8000 inputs from a fixed seed
+#                         (build-fuzz) in which the core, file-format and presenter suites and
+#                         a GUI smoke test run again (any sanitizer report fails) and each
+#                         libFuzzer harness runs on 8000 inputs from a fixed seed
 #   scripts/dev.sh bench  builds and runs the benchmark program
 set -euo pipefail
 
@@ -57,8 +57,9 @@ case "$mode" in
 
         # One instrumented build for two jobs: clang with AddressSanitizer + UBSan and libFuzzer's
         # coverage instrumentation (-DXYT_FUZZ=ON, in build-fuzz). What sanitizing can find runs
-        # again in it: the core, CLI, file-format and presenter suites, one GUI smoke test
-        # (tests/ui/CMakeLists.txt says which), then each libFuzzer harness. Line tables are
+        # again in it: the core, file-format and presenter suites, the job runner with its
+        # views and one GUI smoke test (tests/ui/CMakeLists.txt says which), then each libFuzzer
+        # harness; not the programs or their CLI suites (tests/CMakeLists.txt says why). Line tables are
         # all the debug information a sanitizer report needs (and build much faster than -g).
         # -O2, not the -O1 AddressSanitizer's documentation suggests: measured from fresh clones,
         # -O1 made this stage slower (18 + 4 min against 15.5 + 3), the instrumented sweeps
