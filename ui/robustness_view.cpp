@@ -78,12 +78,41 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
                          cancel_->setEnabled(false);
                          setStatus(tr("The analysis failed: %1").arg(error), true);
                      }}) {
+    // The steps make the widgets in their tab order.
+    QGroupBox* rangeBox = buildRangeBox();
+    QHBoxLayout* options = buildOptions();
+    QHBoxLayout* actions = buildActions();
+    QVBoxLayout* right = buildPlots();
+    QGroupBox* showBox = buildShowBox();
+    auto* left = new QVBoxLayout;
+    left->addWidget(rangeBox);
+    left->addWidget(showBox);
+    left->addStretch(1);
+    auto* middle = new QHBoxLayout;
+    middle->addLayout(left);
+    middle->addLayout(right, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(actions);
+    layout->addLayout(options);
+    layout->addLayout(middle, 1);
+
+    connectControls();
+    fillChoices();
+    contour_->setEnabled(session_->session().trajectory.kind != TrajectoryKind::Cubic);
+    rebuildRanges();
+}
+
+QGroupBox* RobustnessView::buildRangeBox() {
     // The ranges on the left (3 to 5 rows: they fit the lower tab at 1366 x 768 without
     // scrolling); how many plants and what to show in a row under the actions.
     auto* rangeBox = new QGroupBox(tr("Ranges (± %)"));
     rangeForm_ = new QFormLayout(rangeBox);
     controlContent_ = rangeBox;
     rangeBox->setFixedWidth(136);
+    return rangeBox;
+}
+
+QHBoxLayout* RobustnessView::buildOptions() {
     samples_ = new QSpinBox;
     samples_->setRange(1, 100000);
     samples_->setValue(200);
@@ -113,7 +142,10 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     options->addWidget(corners_);
     options->addWidget(contour_);
     options->addStretch(1);
+    return options;
+}
 
+QHBoxLayout* RobustnessView::buildActions() {
     run_ = new QPushButton(tr("Run"));
     cancel_ = new QPushButton(tr("Cancel"));
     cancel_->setEnabled(false);
@@ -129,7 +161,10 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     actions->addWidget(cancel_);
     actions->addWidget(worst_);
     actions->addWidget(progress_, 1);
+    return actions;
+}
 
+QVBoxLayout* RobustnessView::buildPlots() {
     envelope_ = new EnvelopePlot;
     histogram_ = new HistogramPlot;
     // Narrower than a plot's usual minimum: beside the controls both fit the lower tab of a
@@ -161,6 +196,10 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     right->addWidget(plotArea, 1);
     veil_ = new StaleVeil(plotArea);
     right->addWidget(status_);
+    return right;
+}
+
+QGroupBox* RobustnessView::buildShowBox() {
     // What to show under the ranges, in the same narrow column (a row of its own made the tab
     // wider than a 1366 x 768 window gives it).
     auto* showBox = new QGroupBox(tr("Show"));
@@ -168,18 +207,10 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     auto* showLayout = new QVBoxLayout(showBox);
     showLayout->addWidget(signal_);
     showLayout->addWidget(figure_);
-    auto* left = new QVBoxLayout;
-    left->addWidget(rangeBox);
-    left->addWidget(showBox);
-    left->addStretch(1);
-    auto* middle = new QHBoxLayout;
-    middle->addLayout(left);
-    middle->addLayout(right, 1);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(actions);
-    layout->addLayout(options);
-    layout->addLayout(middle, 1);
+    return showBox;
+}
 
+void RobustnessView::connectControls() {
     connect(run_, &QPushButton::clicked, this, &RobustnessView::run);
     connect(cancel_, &QPushButton::clicked, this, &RobustnessView::cancel);
     connect(worst_, &QPushButton::clicked, this, &RobustnessView::loadWorstCase);
@@ -188,9 +219,6 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
     connect(contour_, &QCheckBox::toggled, this, &RobustnessView::onModeChanged);
     connect(session_, &TuningSession::designChanged, this, &RobustnessView::onDesignChanged);
     connect(session_, &TuningSession::currentAxisChanged, this, &RobustnessView::onDesignChanged);
-    fillChoices();
-    contour_->setEnabled(session_->session().trajectory.kind != TrajectoryKind::Cubic);
-    rebuildRanges();
 }
 
 bool RobustnessView::contourMode() const {

@@ -18,11 +18,14 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
+class QGroupBox;
+class QHBoxLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QStackedWidget;
+class QVBoxLayout;
 
 namespace xyt::ui {
 
@@ -104,6 +107,18 @@ signals:
     void analysisFinished();
 
 private:
+    // The constructor's steps, in the order the widgets are made (their tab order).
+    /// The ranges of the parameters (± %), filled by rebuildRanges.
+    QGroupBox* buildRangeBox();
+    /// Plants, seed, corners and the XY-contour switch.
+    QHBoxLayout* buildOptions();
+    /// Run, Cancel, Load worst case and the progress.
+    QHBoxLayout* buildActions();
+    /// The envelope, the figure (histogram, sensitivity or XY band), the veil and the status.
+    QVBoxLayout* buildPlots();
+    /// The signal and figure choices under the ranges.
+    QGroupBox* buildShowBox();
+    void connectControls();
     /// What a run computes: the axis or the joint result, with the problem it solved.
     struct Outcome {
         std::optional<RobustnessResult> axis;
