@@ -2,7 +2,7 @@
 #include "core/session/axis_frequency.h"
 
 #include "core/model/errors.h"
-#include "core/session/axis_loop.h"
+#include "core/session/design_method_module.h"
 
 #include <cmath>
 #include <limits>

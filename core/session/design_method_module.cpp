@@ -23,4 +23,13 @@ const DesignMethodModule& designMethodModule(DesignMethod method) {
     throw InvalidInput("method", "no design method is registered for this value");
 }
 
+std::optional<LoopTransferFunctions> axisLoop(const AxisEvaluation& axis) {
+    return designMethodModule(axis.method).loop(axis);
+}
+
+std::vector<PoleZeroSet> axisPoleZeroSets(const AxisEvaluation& axis,
+                                          const AxisSettings& settings) {
+    return designMethodModule(axis.method).poleZeroSets(axis, settings);
+}
+
 } // namespace xyt

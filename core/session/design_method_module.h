@@ -108,4 +108,22 @@ const DesignMethodModule& designMethodModule(DesignMethod method);
 /// Every registered module, in the order the workbench offers them.
 const std::vector<const DesignMethodModule*>& designMethodModules();
 
+/**
+ * The loop of an evaluated axis, whatever its design method (its DesignMethodModule says):
+ * margins, frequency responses, the root locus and the views read the loop from here and never
+ * ask which method made it.
+ *
+ * Guillemin-Truxal: gtLoopTransferFunctions (continuous, unity feedback). Pole placement:
+ * rstLoopTransferFunctions (the loop broken at the plant input, L = B G/(A F), in z with the
+ * design's Ts). Unset when the axis has no design (invalid settings).
+ */
+std::optional<LoopTransferFunctions> axisLoop(const AxisEvaluation& axis);
+
+/**
+ * The pole-zero sets of an evaluated axis with @p settings, in the order a map lists them.
+ * Guillemin-Truxal: gtPoleZeroSets. Pole placement: "plant B/A", "feedback G/F", "closed loop
+ * Kf B/T" and, when the feedforward runs, "ZPETC feedforward". Empty without a design.
+ */
+std::vector<PoleZeroSet> axisPoleZeroSets(const AxisEvaluation& axis, const AxisSettings& settings);
+
 } // namespace xyt

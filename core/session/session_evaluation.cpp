@@ -4,7 +4,6 @@
 #include "core/analysis/loop_responses.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
-#include "core/session/axis_loop.h"
 #include "core/session/axis_run.h"
 #include "core/session/design_method_module.h"
 #include "core/session/program_trajectory.h"

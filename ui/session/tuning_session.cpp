@@ -2,7 +2,7 @@
 #include "ui/session/tuning_session.h"
 
 #include "core/model/errors.h"
-#include "core/session/axis_loop.h"
+#include "core/session/design_method_module.h"
 
 #include <QLocale>
 #include <QUndoCommand>

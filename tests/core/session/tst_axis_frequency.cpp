@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The frequency-domain view of a session's axes, as the workbench draws it.
 #include "core/session/axis_frequency.h"
-#include "core/session/axis_loop.h"
+#include "core/session/design_method_module.h"
 #include "tests/support/tolerance.h"
 
 #include <QTest>
