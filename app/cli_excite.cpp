@@ -50,6 +50,11 @@ ExcitationSignal respond(const CliArgs& args, ExcitationSignal s) {
             mm.k0 /= axis.gt.modelUnitsPerPositionUnit;
             return simulateExperiment(s, mm, noise, static_cast<std::uint64_t>(seed));
         }
+        if (axis.method != DesignMethod::PolePlacementZpetc)
+            throw InvalidInput("--axis", "axis " + axisName.toStdString() +
+                                             " uses a method whose plant the experiment cannot "
+                                             "simulate (a Guillemin-Truxal or pole-placement "
+                                             "axis' plant only)");
         PolynomialModel m;
         m.a = axis.pp.a;
         m.b = axis.pp.b;

@@ -11,9 +11,11 @@
 #include "core/io/file_io.h"
 #include "core/model/errors.h"
 #include "core/session/contour_run.h"
+#include "core/session/design_method_module.h"
 #include "core/session/session.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/trajectory.h"
+#include "ui/files/session_file.h"
 
 #include <QJsonArray>
 
@@ -128,14 +130,16 @@ QJsonObject isoJson(const ContourCircularTest& c) {
 QJsonObject axisJson(const AxisSettings& axis, const SimulationResult& run) {
     QJsonObject o{{"label", QString::fromStdString(axis.label)},
                   {"tracking", trackingJson(trackingMetrics(run))}};
+    o.insert("method", files::methodName(axis.method));
     if (axis.method == DesignMethod::GuilleminTruxal) {
-        o.insert("method", "guillemin-truxal");
         o.insert("wn", number(axis.gt.omegaNRadPerSec));
         o.insert("kp", number(axis.gt.kp));
-    } else {
-        o.insert("method", "pole-placement-zpetc");
+    } else if (axis.method == DesignMethod::PolePlacementZpetc) {
         o.insert("ts", number(axis.pp.tsSeconds));
         o.insert("t1", number(axis.pp.t1));
+    } else {
+        for (const auto& [name, value] : axis.parameters)
+            o.insert(QString::fromStdString(name), number(value));
     }
     return o;
 }
@@ -147,16 +151,16 @@ QJsonObject axisJson(const AxisSettings& axis, const SimulationResult& run) {
 Session sessionFor(const CliArgs& args) {
     Session session = Session::paperDefault();
     const QString method = args.text("method", "guillemin-truxal");
-    DesignMethod m;
-    if (method == "guillemin-truxal")
-        m = DesignMethod::GuilleminTruxal;
-    else if (method == "pole-placement-zpetc")
-        m = DesignMethod::PolePlacementZpetc;
-    else
-        throw InvalidInput("--method", "must be guillemin-truxal or pole-placement-zpetc, got '" +
-                                           method.toStdString() + "'");
+    const DesignMethodModule* module = findDesignMethodModule(method.toStdString());
+    if (!module) {
+        std::string names;
+        for (const DesignMethodModule* m : designMethodModules())
+            names += (names.empty() ? "" : ", ") + std::string(m->id());
+        throw InvalidInput("--method",
+                           "must be one of " + names + ", got '" + method.toStdString() + "'");
+    }
     for (AxisSettings& axis : session.axes)
-        axis.method = m;
+        axis.method = module->method();
     return session;
 }
 

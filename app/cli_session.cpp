@@ -8,6 +8,7 @@
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
 #include "core/session/axis_frequency.h"
+#include "core/session/design_method_module.h"
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
 #include "ui/files/coefficient_json.h"
@@ -133,33 +134,14 @@ int runSessionReport(const QString& path) {
             out << "  not designed: " << shown(a.errorField) << ": " << shown(a.error) << "\n";
             continue;
         }
-        if (a.gt)
-            out << "  wn = " << a.gt->omegaNRadPerSec << " rad/s, kp = " << a.gt->kp
-                << ", ki = " << QString::number(a.gt->ki, 'g', 8)
-                << (a.gt->stable ? "" : "  UNSTABLE") << "\n";
-        if (a.pp) {
-            auto poly = [](const Polynomial& p) {
-                QStringList parts;
-                for (double c : p.ascending())
-                    parts << QString::number(c, 'g', 6);
-                return "[" + parts.join(" ") + "]";
-            };
-            out << "  F = " << poly(a.pp->f) << ", G = " << poly(a.pp->g)
-                << " (ascending z^-1), Kf = " << QString::number(a.pp->kf, 'g', 6)
-                << ", Ts = " << a.pp->tsSeconds << " s\n";
-            if (s.pp.zpetcEnabled && a.zpetc)
-                out << "  ZPETC (as designed): preview " << a.zpetc->previewSteps
-                    << " samples; RMSE without " << number(a.rmseWithoutFf, 5) << " mm, with "
-                    << number(a.metrics.rmse, 5) << " mm (improvement "
-                    << number(a.improvementPct, 2) << " %)\n";
-        }
+        const DesignMethodModule& module = designMethodModule(s.method);
+        for (const std::string& line : module.reportLines(s, a))
+            out << "  " << QString::fromStdString(line) << "\n";
         // The run that will really happen first (the digital implementation: sampled, delayed,
         // quantized, |u| limited), then the design's own run, each labelled: a design whose
         // implementation saturates must not be read from the design's figures.
         const DigitalEvaluation* digital = a.digital.get();
-        const QString designRun =
-            a.pp ? QStringLiteral("the linear loop at Ts, |u| over the limit flagged, not applied")
-                 : QStringLiteral("the continuous loop, |u| limited");
+        const QString designRun = QString::fromStdString(module.designRunDescription());
         const QString digitalRun = digital ? "the digital implementation at Ts = " +
                                                  QString::number(digital->tsSeconds, 'g', 6) +
                                                  " s, |u| limited to " +

@@ -484,10 +484,9 @@ void DesignSpaceView::startStudy(StudyKind kind) {
     const Session& s = session_->session();
     const AxisSettings& settings = s.axes.at(static_cast<std::size_t>(axis));
     if (settings.method != DesignMethod::GuilleminTruxal) {
-        setStatus(
-            tr("The design space applies to Guillemin–Truxal axes; axis %1 uses pole placement.")
-                .arg(axisName(s, axis)),
-            true);
+        setStatus(tr("The design space applies to Guillemin–Truxal axes; axis %1 uses %2.")
+                      .arg(axisName(s, axis), methodDisplayName(settings.method)),
+                  true);
         return;
     }
     const bool preview = kind == StudyKind::Preview;
@@ -721,8 +720,9 @@ void DesignSpaceView::showFreshness() {
     if (stamp_->axis != axis)
         why = tr("This tab shows axis %1.").arg(axisName(s, axis));
     else if (s.axes.at(static_cast<std::size_t>(axis)).method != DesignMethod::GuilleminTruxal)
-        why = tr("Axis %1 now uses pole placement: the map applies to Guillemin–Truxal axes.")
-                  .arg(axisName(s, axis));
+        why = tr("Axis %1 now uses %2: the map applies to Guillemin–Truxal axes.")
+                  .arg(axisName(s, axis),
+                       methodDisplayName(s.axes.at(static_cast<std::size_t>(axis)).method));
     else
         why = tr("The plant, the trajectory or the limits the runs depend on have changed since.");
     const bool studiable =

@@ -2,6 +2,7 @@
 #include "ui/main_window.h"
 
 #include "core/model/errors.h"
+#include "core/session/design_method_module.h"
 #include "core/simulation/step_view.h"
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
@@ -10,6 +11,7 @@
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/fitted_stack.h"
 #include "ui/panels/implementation_editor.h"
+#include "ui/panels/method_parameter_editor.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
@@ -31,6 +33,8 @@
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 #include "ui/snapshot_compare_dialog.h"
+
+#include <algorithm>
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -247,15 +251,27 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     auto* designBox = new QGroupBox(tr("Design"), panel);
     auto* designLayout = new QVBoxLayout(designBox);
     method_ = new QComboBox(designBox);
-    method_->addItem(tr("Guillemin–Truxal PI (continuous)"));
-    method_->addItem(tr("Pole placement + ZPETC (discrete)"));
     method_->setAccessibleName(tr("Design method"));
     designLayout->addWidget(method_);
     methodPages_ = new QStackedWidget(designBox);
-    QWidget* gtPage = buildGtPage(methodPages_);
-    ppEditor_ = new PpEditor(methodPages_);
-    methodPages_->addWidget(gtPage);
-    methodPages_->addWidget(ppEditor_);
+    // One entry and one editor page per registered method, in the registry's order: the
+    // built-in methods have their own editors, a registered one its parameters' editor.
+    for (const DesignMethodModule* module : designMethodModules()) {
+        QWidget* page = nullptr;
+        if (module->method() == DesignMethod::GuilleminTruxal) {
+            method_->addItem(tr("Guillemin–Truxal PI (continuous)"));
+            page = buildGtPage(methodPages_);
+        } else if (module->method() == DesignMethod::PolePlacementZpetc) {
+            method_->addItem(tr("Pole placement + ZPETC (discrete)"));
+            page = ppEditor_ = new PpEditor(methodPages_);
+        } else {
+            method_->addItem(methodDisplayName(module->method()));
+            auto* editor = new MethodParameterEditor(*module, methodPages_);
+            parameterEditors_.push_back(editor);
+            page = editor;
+        }
+        methodPages_->addWidget(page);
+    }
     fitStackToCurrentPage(methodPages_);
     designLayout->addWidget(methodPages_);
     return designBox;
@@ -280,14 +296,21 @@ QWidget* MainWindow::buildGtPage(QWidget* pages) {
 
 void MainWindow::chooseMethod(int index) {
     const int axis = session_->currentAxis();
-    const DesignMethod method =
-        index == 0 ? DesignMethod::GuilleminTruxal : DesignMethod::PolePlacementZpetc;
+    if (index < 0 || static_cast<std::size_t>(index) >= designMethodModules().size())
+        return;
+    const DesignMethod method = designMethodModules()[static_cast<std::size_t>(index)]->method();
     if (session_->session().axes[static_cast<std::size_t>(axis)].method == method)
         return;
     session_->setMethod(axis, method);
     // The plant changes with the method (each method has its own model): say which.
     const AxisSettings& a = session_->session().axes[static_cast<std::size_t>(axis)];
     const QString name = QString::fromStdString(a.id).toUpper();
+    if (method != DesignMethod::GuilleminTruxal && method != DesignMethod::PolePlacementZpetc) {
+        statusBar()->showMessage(tr("Axis %1 now uses %2; Edit › Undo switches back")
+                                     .arg(name, methodDisplayName(method)),
+                                 10000);
+        return;
+    }
     statusBar()->showMessage(method == DesignMethod::PolePlacementZpetc
                                  ? (a.pp == PpAxisSettings{}
                                         ? tr("Axis %1 now uses pole placement on Patrick, "
@@ -359,6 +382,11 @@ void MainWindow::connectControls() {
             [this](const PpAxisSettings& pp, int mergeKey) {
                 session_->setPp(session_->currentAxis(), pp, mergeKey);
             });
+    for (MethodParameterEditor* editor : parameterEditors_)
+        connect(editor, &MethodParameterEditor::parameterEdited, this,
+                [this](const std::string& name, double value) {
+                    session_->setMethodParameter(session_->currentAxis(), name, value);
+                });
     connect(implementationToggle_, &QToolButton::toggled, this, [this](bool open) {
         implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
         implementation_->setVisible(open);
@@ -474,11 +502,16 @@ void MainWindow::syncControls() {
         const QSignalBlocker b1(omegaN_), b2(kp_), b3(method_);
         omegaN_->setValue(a.gt.omegaNRadPerSec);
         kp_->setValue(a.gt.kp);
-        const int page = a.method == DesignMethod::GuilleminTruxal ? 0 : 1;
+        const auto& modules = designMethodModules();
+        const int page = static_cast<int>(
+            std::find(modules.begin(), modules.end(), &designMethodModule(a.method)) -
+            modules.begin());
         method_->setCurrentIndex(page);
         methodPages_->setCurrentIndex(page);
     }
     ppEditor_->setSettings(a.pp);
+    for (MethodParameterEditor* editor : parameterEditors_)
+        editor->setSettings(a);
     plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
     trajectoryEditor_->setTrajectory(s.trajectory);
     umax_->setValue(s.umaxVolts);
@@ -573,13 +606,19 @@ void MainWindow::refresh() {
                              .arg(a.gt.omegaNRadPerSec / 10, 0, 'g', 3)
                              .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3)
                              .arg(a.gt.kp));
-            } else {
+            } else if (a.method == DesignMethod::PolePlacementZpetc) {
                 parameterLocusPlot_->showNoResult(
                     tr("Parameter locus of %1").arg(title),
                     tr("The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis "
                        "uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ "
                        "(pole at z = %1), placed directly by t1.")
                         .arg(-a.pp.t1, 0, 'g', 4));
+            } else {
+                parameterLocusPlot_->showNoResult(
+                    tr("Parameter locus of %1").arg(title),
+                    tr("The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis "
+                       "uses %1: the root locus shows its poles against the loop gain.")
+                        .arg(methodDisplayName(a.method)));
             }
         }
     } else {

@@ -32,6 +32,7 @@ class BodePlot;
 class NyquistPlot;
 class PoleZeroPlot;
 class PpEditor;
+class MethodParameterEditor;
 class RootLocusPlot;
 class StepPlot;
 class SessionFileController;
@@ -152,6 +153,7 @@ private:
     NyquistPlot* nyquistPlot_ = nullptr;
     QComboBox* sweptParameter_ = nullptr;
     PpEditor* ppEditor_ = nullptr;
+    std::vector<MethodParameterEditor*> parameterEditors_; ///< of the registered methods
     QStackedWidget* methodPages_ = nullptr;
     ContourPlot* contourPlot_ = nullptr;
     StaleVeil* timeVeil_ = nullptr;

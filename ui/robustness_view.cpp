@@ -2,6 +2,7 @@
 #include "ui/robustness_view.h"
 
 #include "core/model/errors.h"
+#include "core/session/design_method_module.h"
 #include "core/session/robustness_problem.h"
 #include "ui/panels/stale_veil.h"
 #include "ui/panels/status_strip.h"
@@ -42,28 +43,6 @@ QString parameterList(const std::vector<std::string>& names, const std::vector<d
     for (std::size_t i = 0; i < names.size(); ++i)
         parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(names[i]), num(values[i], 6));
     return parts.join(QStringLiteral(", "));
-}
-
-/// Axis @p settings with the plant parameters that @p value gives for @p problem's parameters
-/// (Guillemin-Truxal: k0, a1, a2; pole placement: the normalized ARX A and B coefficients).
-AxisSettings perturbedAxis(AxisSettings settings, const RobustnessProblem& problem,
-                           const std::function<double(const std::string&, double)>& value) {
-    if (problem.controller) {
-        ThirdOrderPlant& plant = settings.gt.plant;
-        plant.k0 = value("k0", plant.k0);
-        plant.a1 = value("a1", plant.a1);
-        plant.a2 = value("a2", plant.a2);
-        return settings;
-    }
-    // The typed A may not be monic: the analysis perturbed the normalized one (A/A(0), B/A(0)).
-    std::vector<double> a = problem.loop->a.ascending(), b = problem.loop->b.ascending();
-    for (std::size_t i = 1; i < a.size(); ++i)
-        a[i] = value("a" + std::to_string(i), a[i]);
-    for (std::size_t i = 1; i < b.size(); ++i)
-        b[i] = value("b" + std::to_string(i), b[i]);
-    settings.pp.a = a;
-    settings.pp.b = b;
-    return settings;
 }
 
 } // namespace
@@ -604,8 +583,10 @@ void RobustnessView::loadWorstCase() {
         const ContourRobustnessResult& r = *contourResult_;
         const std::vector<double>& v = r.runs[*r.worst].values;
         std::array<AxisSettings, 2> axes = session_->session().axes;
-        axes[0] = perturbedAxis(axes[0], contourProblem_->x, lookup(r.parameterNames, v, "x."));
-        axes[1] = perturbedAxis(axes[1], contourProblem_->y, lookup(r.parameterNames, v, "y."));
+        for (std::size_t i = 0; i < 2; ++i)
+            axes[i] = designMethodModule(axes[i].method)
+                          .withPlantParameters(axes[i],
+                                               lookup(r.parameterNames, v, i == 0 ? "x." : "y."));
         session_->setAxes(axes, tr("Load the worst plant pair of the contour analysis"));
         return;
     }
@@ -613,13 +594,11 @@ void RobustnessView::loadWorstCase() {
         return;
     const int axis = stamp_->axis;
     const std::vector<double>& v = result_->runs[*result_->worst].values;
-    const AxisSettings next =
-        perturbedAxis(session_->session().axes.at(static_cast<std::size_t>(axis)), *problem_,
-                      lookup(result_->parameterNames, v, ""));
-    if (problem_->controller)
-        session_->setPlant(axis, next.gt.plant);
-    else
-        session_->setPp(axis, next.pp);
+    const AxisSettings& current = session_->session().axes.at(static_cast<std::size_t>(axis));
+    session_->setAxis(axis,
+                      designMethodModule(current.method)
+                          .withPlantParameters(current, lookup(result_->parameterNames, v, "")),
+                      tr("Load the worst plant of the robustness analysis"));
 }
 
 } // namespace xyt::ui

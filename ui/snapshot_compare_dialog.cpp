@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/snapshot_compare_dialog.h"
 
+#include "core/session/design_method_module.h"
 #include "core/session/session_evaluation.h"
 #include "ui/panels/metrics_panel.h"
 
@@ -26,20 +27,22 @@ QList<QPair<QString, QString>> comparisonRows(const Session& design) {
                          QString::fromStdString(a.errorField + ": " + a.error)});
             continue;
         }
-        if (a.gt) {
+        for (const DesignCoefficient& c : designMethodModule(a.method).coefficients(a))
             rows.append(
-                {QObject::tr("%1 ωn (rad/s)").arg(id), displayNumber(a.gt->omegaNRadPerSec)});
-            rows.append({QObject::tr("%1 kp").arg(id), displayNumber(a.gt->kp)});
-            rows.append({QObject::tr("%1 ki").arg(id), QString::number(a.gt->ki, 'g', 6)});
-            QStringList poles;
-            for (const auto& p : a.gt->closedLoopPoles)
-                poles << (p.imag() == 0.0 ? QString::number(p.real(), 'g', 4)
-                                          : QStringLiteral("%1%2%3j")
-                                                .arg(p.real(), 0, 'g', 4)
-                                                .arg(p.imag() < 0 ? "−" : "+")
-                                                .arg(std::abs(p.imag()), 0, 'g', 4));
-            rows.append({QObject::tr("%1 closed-loop poles").arg(id), poles.join(", ")});
-        }
+                {c.unit.empty()
+                     ? QStringLiteral("%1 %2").arg(id, QString::fromStdString(c.name))
+                     : QStringLiteral("%1 %2 (%3)")
+                           .arg(id, QString::fromStdString(c.name), QString::fromStdString(c.unit)),
+                 QString::number(c.value, 'g', 6)});
+        const std::vector<std::complex<double>> poles = a.closedLoop().poles();
+        QStringList shown;
+        for (const auto& p : poles)
+            shown << (p.imag() == 0.0 ? QString::number(p.real(), 'g', 4)
+                                      : QStringLiteral("%1%2%3j")
+                                            .arg(p.real(), 0, 'g', 4)
+                                            .arg(p.imag() < 0 ? "−" : "+")
+                                            .arg(std::abs(p.imag()), 0, 'g', 4));
+        rows.append({QObject::tr("%1 closed-loop poles").arg(id), shown.join(", ")});
         rows.append({QObject::tr("%1 RMSE (mm)").arg(id), displayNumber(a.metrics.rmse)});
         rows.append({QObject::tr("%1 max |e| (mm)").arg(id), displayNumber(a.metrics.maxAbsError)});
         rows.append({QObject::tr("%1 max |u| (V)").arg(id), displayNumber(a.metrics.maxAbsU)});

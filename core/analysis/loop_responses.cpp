@@ -4,9 +4,13 @@
 namespace xyt {
 
 LoopTransferFunctions gtLoopTransferFunctions(const GtDesign& design) {
-    const TransferFunction plant = design.plant.transferFunction();
-    const Polynomial& nc = design.controller.num();
-    const Polynomial& dc = design.controller.den();
+    return unityFeedbackLoop(design.controller, design.plant.transferFunction());
+}
+
+LoopTransferFunctions unityFeedbackLoop(const TransferFunction& controller,
+                                        const TransferFunction& plant) {
+    const Polynomial& nc = controller.num();
+    const Polynomial& dc = controller.den();
     const Polynomial& ng = plant.num();
     const Polynomial& dg = plant.den();
     const Polynomial open = dc * dg;

@@ -31,6 +31,11 @@ struct LoopTransferFunctions {
  */
 LoopTransferFunctions gtLoopTransferFunctions(const GtDesign& design);
 
+/// Any continuous controller G_c ahead of a continuous plant G in unity feedback, with the
+/// polynomials of gtLoopTransferFunctions (which is this loop for the PI it designs).
+LoopTransferFunctions unityFeedbackLoop(const TransferFunction& controller,
+                                        const TransferFunction& plant);
+
 /**
  * Pole-placement (RST) axis (Patrick, Ishak and Adnan Fig. 9): F u = K_f r - G y, A y = B u, all in
  * z^-1. The loop broken at the plant input is L = B G/(A F); with P = A F + B G (= T of the design

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
 
 #include <algorithm>
@@ -81,5 +82,23 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
 }
 
 /// Says which criteria
+
+SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
+                                     const TransferFunction& controller,
+                                     const std::vector<double>& reference, double dtSeconds,
+                                     double umaxVolts) {
+    LoopSimulationOptions options;
+    options.dtSeconds = dtSeconds;
+    options.umaxVolts = umaxVolts;
+    options.modelUnitsPerPositionUnit = axis.gt.modelUnitsPerPositionUnit;
+    options.initialOutput = reference.front();
+    try {
+        return simulateLoop(axis.gt.plant.transferFunction(), controller, reference, options);
+    } catch (const InvalidInput& e) {
+        if (e.field() == "plant" || e.field() == "initial_output")
+            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
+        throw;
+    }
+}
 
 } // namespace xyt

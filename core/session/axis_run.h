@@ -35,6 +35,17 @@ std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double
 /// "axes[i].field": a setting of axis @p axisIndex as the session file names it.
 std::string axisFieldPath(int axisIndex, const std::string& field);
 
+/**
+ * A continuous controller @p controller on axis @p axisIndex's third-order plant (AxisSettings::gt:
+ * the plant and its model unit) along @p reference sampled at @p dtSeconds, |u| <= umax, the
+ * table at rest at the reference's first sample: a continuous axis' contour run. Throws
+ * InvalidInput naming "axes[i].gt.plant" for a plant the loop cannot run.
+ */
+SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
+                                     const TransferFunction& controller,
+                                     const std::vector<double>& reference, double dtSeconds,
+                                     double umaxVolts);
+
 /// The least damping ratio of continuous poles (1 without any).
 double minContinuousDamping(const std::vector<std::complex<double>>& poles);
 /// The least damping ratio of z-plane poles, those at the origin left out (1 without any).

@@ -2,18 +2,68 @@
 #include "core/session/design_method_module.h"
 
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 #include "core/session/guillemin_truxal_method.h"
 #include "core/session/pole_placement_method.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace xyt {
 
-const std::vector<const DesignMethodModule*>& designMethodModules() {
-    // The registry: one line per method.
-    static const std::vector<const DesignMethodModule*> modules = {
+namespace {
+
+std::vector<const DesignMethodModule*>& registry() {
+    // The built-in methods: one line each.
+    static std::vector<const DesignMethodModule*> modules = {
         &guilleminTruxalMethod(),
         &polePlacementMethod(),
     };
     return modules;
+}
+
+/// The modules registered at start-up, owned for the life of the program.
+std::vector<std::unique_ptr<const DesignMethodModule>>& registeredModules() {
+    static std::vector<std::unique_ptr<const DesignMethodModule>> owned;
+    return owned;
+}
+
+bool isKey(std::string_view name, bool allowDash) {
+    return !name.empty() && name.size() <= 32 && std::all_of(name.begin(), name.end(), [&](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+               (allowDash && c == '-');
+    });
+}
+
+std::string shown(double v) {
+    return formatNumber(v);
+}
+
+} // namespace
+
+std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*settings*/,
+                                                         const AxisEvaluation& axis) const {
+    std::string line;
+    for (const DesignCoefficient& c : coefficients(axis)) {
+        if (!line.empty())
+            line += ", ";
+        line += c.name + " = " + shown(c.value) + (c.unit.empty() ? "" : " " + c.unit);
+    }
+    if (line.empty())
+        return {};
+    return {line};
+}
+
+std::vector<std::string> DesignMethodModule::equations(const AxisSettings& /*settings*/,
+                                                       const AxisEvaluation& axis) const {
+    std::vector<std::string> lines;
+    for (const DesignCoefficient& c : coefficients(axis))
+        lines.push_back(c.name + " = " + shown(c.value) + (c.unit.empty() ? "" : " " + c.unit));
+    return lines;
+}
+
+const std::vector<const DesignMethodModule*>& designMethodModules() {
+    return registry();
 }
 
 const DesignMethodModule& designMethodModule(DesignMethod method) {
@@ -21,6 +71,48 @@ const DesignMethodModule& designMethodModule(DesignMethod method) {
         if (m->method() == method)
             return *m;
     throw InvalidInput("method", "no design method is registered for this value");
+}
+
+const DesignMethodModule* findDesignMethodModule(std::string_view id) {
+    for (const DesignMethodModule* m : designMethodModules())
+        if (m->id() == id)
+            return m;
+    return nullptr;
+}
+
+void registerDesignMethodModule(std::unique_ptr<const DesignMethodModule> module) {
+    if (!module)
+        throw InvalidInput("method", "no module to register");
+    const std::string id(module->id());
+    if (!isKey(id, true))
+        throw InvalidInput(
+            "method", "the id '" + id + "' must be 1 to 32 lower-case letters, digits, '-' or '_'");
+    for (const DesignMethodModule* m : registry())
+        if (m->method() == module->method() || m->id() == module->id())
+            throw InvalidInput("method", "a method with the value or the id of '" + id +
+                                             "' is registered already");
+    for (const MethodParameter& p : module->parameters())
+        if (!isKey(p.name, false) || !(p.minimum <= p.defaultValue) ||
+            !(p.defaultValue <= p.maximum))
+            throw InvalidInput("method", "the parameter '" + p.name + "' of '" + id +
+                                             "' needs a name of lower-case letters, digits and "
+                                             "'_' and minimum <= default <= maximum");
+    registry().push_back(module.get());
+    registeredModules().push_back(std::move(module));
+}
+
+double methodParameterValue(const AxisSettings& settings, int axisIndex,
+                            const MethodParameter& parameter) {
+    const auto it = settings.parameters.find(parameter.name);
+    if (it == settings.parameters.end())
+        return parameter.defaultValue;
+    const double v = it->second;
+    if (!std::isfinite(v) || v < parameter.minimum || v > parameter.maximum)
+        throw InvalidInput("axes[" + std::to_string(axisIndex) + "].parameters." + parameter.name,
+                           shown(v) + " is out of range: " + parameter.label + " must be within " +
+                               shown(parameter.minimum) + " .. " + shown(parameter.maximum) +
+                               (parameter.unit.empty() ? "" : " " + parameter.unit));
+    return v;
 }
 
 std::optional<LoopTransferFunctions> axisLoop(const AxisEvaluation& axis) {

@@ -6,7 +6,10 @@
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
 #include "core/study/plant_uncertainty.h"
+#include "core/study/robustness.h"
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -25,8 +28,13 @@ namespace xyt {
  * Nyquist, root locus), the closed loop, the pole-zero sets a map draws and the slowest decay
  * (for the automatic run duration).
  *
- * Adding a method: a DesignMethod value, its module (one file pair in core/session), and one
- * line in the registry (design_method_module.cpp).
+ * Adding a method: its module (a DesignMethodModule with a DesignMethod value of its own), and
+ * one registration: a line in the registry of built-in methods (design_method_module.cpp), or
+ * registerDesignMethodModule at start-up. A method whose settings are numbers declares them
+ * (parameters()): the session holds them in AxisSettings::parameters, the session file writes
+ * them, and the workbench's parameter editor edits them, so such a method needs no other change
+ * (tests/ui/tst_registered_method.cpp registers a proportional controller and runs the whole
+ * workbench, the exports and the report with it).
  */
 /// One axis' run along a path (the contour run of a G-code program).
 struct AxisTrace {
@@ -40,6 +48,26 @@ struct OctaveLines {
     std::string timeVector;
 };
 
+/**
+ * One number of a method's settings, held in AxisSettings::parameters under its name. The session
+ * file writes it at "axes[i].parameters.<name>", and a refusal names that path.
+ */
+struct MethodParameter {
+    std::string name;  ///< the key: lower-case letters, digits and '_' ("kp")
+    std::string label; ///< what an editor shows ("Proportional gain kp")
+    std::string unit;  ///< "V/mm"
+    double defaultValue = 0.0;
+    double minimum = 0.0; ///< the smallest value allowed (inclusive)
+    double maximum = 0.0; ///< the largest value allowed (inclusive)
+};
+
+/// One coefficient of an evaluated design as panels, reports and exports list it.
+struct DesignCoefficient {
+    std::string name; ///< "kp", "ωn"
+    double value = 0.0;
+    std::string unit; ///< "rad/s"; empty for a number without unit
+};
+
 class DesignMethodModule {
 public:
     virtual ~DesignMethodModule() = default;
@@ -47,6 +75,12 @@ public:
     virtual DesignMethod method() const = 0;
     /// The method's name as the session file writes it ("guillemin-truxal").
     virtual std::string_view id() const = 0;
+    /// The method's name as the workbench shows it within a sentence ("Guillemin-Truxal PI",
+    /// "pole placement + ZPETC").
+    virtual std::string_view displayName() const = 0;
+    /// The numbers of the method's settings held in AxisSettings::parameters (none for the
+    /// built-in methods, whose settings are typed: AxisSettings::gt, AxisSettings::pp).
+    virtual std::vector<MethodParameter> parameters() const { return {}; }
 
     /**
      * Designs axis @p axisIndex of @p session and runs it for @p durationSeconds, filling the
@@ -100,13 +134,68 @@ public:
     /// The slowest decay rate of the closed loop (1/s); 0 or less when not asymptotically
     /// stable or without a design.
     virtual double slowestDecayPerSecond(const AxisEvaluation& axis) const = 0;
+
+    /// The coefficients of an evaluated design, as the snapshot comparison, the coefficient file
+    /// and the teaching panel list them; empty without a design.
+    virtual std::vector<DesignCoefficient> coefficients(const AxisEvaluation& axis) const = 0;
+    /**
+     * The design in words, one line each, as the session report prints it under the axis (the
+     * coefficients and what the method adds, such as a feedforward's figures). By default, the
+     * coefficients as "name = value unit".
+     */
+    virtual std::vector<std::string> reportLines(const AxisSettings& settings,
+                                                 const AxisEvaluation& axis) const;
+    /**
+     * The design's equations as the teaching panel shows them, one plain-text line each (Unicode
+     * for symbols: "u = kp e"). By default, the coefficients as "name = value unit". (The
+     * built-in methods' panels are typeset by the workbench.)
+     */
+    virtual std::vector<std::string> equations(const AxisSettings& settings,
+                                               const AxisEvaluation& axis) const;
+    /// What the design's run is (AxisEvaluation::run), as the report labels it.
+    virtual std::string designRunDescription() const { return "the continuous loop, |u| limited"; }
+
+    /**
+     * The robustness problem of evaluated axis @p axisIndex (@p nominal, ok): the nominal
+     * controller with the run the evaluation made, and every plant parameter with a zero range
+     * (robustness_problem.h builds it: continuousRobustnessProblem, rstRobustnessProblem).
+     */
+    virtual RobustnessProblem robustnessProblem(const Session& session, int axisIndex,
+                                                const AxisEvaluation& nominal) const = 0;
+    /**
+     * @p settings with its plant's parameters (those of plantParameters) replaced by
+     * @p value(name, current value): a plant the robustness study drew, loaded into the session.
+     */
+    virtual AxisSettings
+    withPlantParameters(AxisSettings settings,
+                        const std::function<double(const std::string&, double)>& value) const = 0;
 };
 
-/// The module of @p method.
+/// The module of @p method. Throws InvalidInput "method" when none is registered for it.
 const DesignMethodModule& designMethodModule(DesignMethod method);
 
-/// Every registered module, in the order the workbench offers them.
+/// The module whose id() is @p id, or null.
+const DesignMethodModule* findDesignMethodModule(std::string_view id);
+
+/// Every registered module, in the order the workbench offers them: the built-in ones, then
+/// those registered by registerDesignMethodModule in their order.
 const std::vector<const DesignMethodModule*>& designMethodModules();
+
+/**
+ * Adds @p module to the registry, for the life of the program. Call it at start-up, before any
+ * session is evaluated (the registry is not guarded against concurrent use). Throws InvalidInput
+ * "method" when its DesignMethod value or its id is taken, or its id or a parameter name is not
+ * lower-case letters, digits, '-' or '_'.
+ */
+void registerDesignMethodModule(std::unique_ptr<const DesignMethodModule> module);
+
+/**
+ * The value of @p parameter of axis @p axisIndex: AxisSettings::parameters' entry, or the
+ * parameter's default when the session has none. Throws InvalidInput naming
+ * "axes[i].parameters.<name>" for a value that is not finite or out of its range.
+ */
+double methodParameterValue(const AxisSettings& settings, int axisIndex,
+                            const MethodParameter& parameter);
 
 /**
  * The loop of an evaluated axis, whatever its design method (its DesignMethodModule says):

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/guillemin_truxal_method.h"
 
+#include "core/model/number_format.h"
 #include "core/model/root_matching.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
+#include "core/session/continuous_plant_method.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/trajectory.h"
 
@@ -67,24 +69,6 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
         out.warnings.push_back("the closed loop is unstable");
     if (withDigital)
         evaluateGtDigital(session, axis, axisIndex, duration, out);
-}
-
-/// A continuous axis on the reference sampled at dt, starting at rest at its first sample.
-SimulationResult traceGt(const GtAxisSettings& gt, int axisIndex,
-                         const std::vector<double>& reference, double dtSeconds, double umaxVolts) {
-    const GtDesign design = sessionGtDesign(gt, axisIndex);
-    LoopSimulationOptions options;
-    options.dtSeconds = dtSeconds;
-    options.umaxVolts = umaxVolts;
-    options.modelUnitsPerPositionUnit = gt.modelUnitsPerPositionUnit;
-    options.initialOutput = reference.front();
-    try {
-        return simulateLoop(gt.plant.transferFunction(), design.controller, reference, options);
-    } catch (const InvalidInput& e) {
-        if (e.field() == "plant" || e.field() == "initial_output")
-            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
-        throw;
-    }
 }
 
 using namespace cexport;
@@ -233,10 +217,11 @@ OctaveLines gtOctaveLines(const Session& session, const AxisEvaluation& a, int i
     return {out.str(), "t"};
 }
 
-class GuilleminTruxalMethod final : public DesignMethodModule {
+class GuilleminTruxalMethod final : public ContinuousPlantMethod {
 public:
     DesignMethod method() const override { return DesignMethod::GuilleminTruxal; }
     std::string_view id() const override { return "guillemin-truxal"; }
+    std::string_view displayName() const override { return "Guillemin-Truxal PI"; }
 
     void evaluate(const Session& session, int axisIndex, double durationSeconds, bool withDigital,
                   AxisEvaluation& out) const override {
@@ -244,18 +229,12 @@ public:
                    durationSeconds, withDigital, out);
     }
 
-    AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& /*t*/,
-                        const std::vector<double>& reference, double dtSeconds) const override {
-        AxisTrace out;
-        out.run = traceGt(session.axes.at(static_cast<std::size_t>(axisIndex)).gt, axisIndex,
-                          reference, dtSeconds, session.umaxVolts);
-        out.outputOnPath = out.run.y;
-        return out;
+    TransferFunction evaluatedController(const AxisEvaluation& axis) const override {
+        return axis.gt->controller;
     }
-
-    std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const override {
-        const ThirdOrderPlant& g = settings.gt.plant;
-        return {{"k0", g.k0, 0.0}, {"a1", g.a1, 0.0}, {"a2", g.a2, 0.0}};
+    TransferFunction designedController(const AxisSettings& settings,
+                                        int axisIndex) const override {
+        return sessionGtDesign(settings.gt, axisIndex).controller;
     }
 
     std::string cController(const Session& session, const AxisEvaluation& axis, int axisIndex,
@@ -290,6 +269,23 @@ public:
 
     double slowestDecayPerSecond(const AxisEvaluation& axis) const override {
         return axis.gt ? continuousDecayPerSecond(axis.gt->closedLoopPoles) : 0.0;
+    }
+
+    std::vector<DesignCoefficient> coefficients(const AxisEvaluation& axis) const override {
+        if (!axis.gt)
+            return {};
+        return {{"ωn", axis.gt->omegaNRadPerSec, "rad/s"},
+                {"kp", axis.gt->kp, "V/model unit"},
+                {"ki", axis.gt->ki, "V/(model unit s)"}};
+    }
+
+    std::vector<std::string> reportLines(const AxisSettings& /*settings*/,
+                                         const AxisEvaluation& axis) const override {
+        if (!axis.gt)
+            return {};
+        const GtDesign& d = *axis.gt;
+        return {"wn = " + formatNumber(d.omegaNRadPerSec) + " rad/s, kp = " + formatNumber(d.kp) +
+                ", ki = " + formatNumber(d.ki, 8) + (d.stable ? "" : "  UNSTABLE")};
     }
 };
 

@@ -4,6 +4,7 @@
 #include "core/model/number_format.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
+#include "core/session/robustness_problem.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/resample.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace xyt {
@@ -309,6 +311,10 @@ class PolePlacementMethod final : public DesignMethodModule {
 public:
     DesignMethod method() const override { return DesignMethod::PolePlacementZpetc; }
     std::string_view id() const override { return "pole-placement-zpetc"; }
+    std::string_view displayName() const override { return "pole placement + ZPETC"; }
+    std::string designRunDescription() const override {
+        return "the linear loop at Ts, |u| over the limit flagged, not applied";
+    }
 
     void evaluate(const Session& session, int axisIndex, double durationSeconds, bool withDigital,
                   AxisEvaluation& out) const override {
@@ -394,6 +400,81 @@ public:
     double slowestDecayPerSecond(const AxisEvaluation& axis) const override {
         return axis.pp ? discreteDecayPerSecond(axis.pp->closedLoop().poles(), axis.pp->tsSeconds)
                        : 0.0;
+    }
+
+    /// F's and G's coefficients (ascending z^-1), Kf and Ts.
+    std::vector<DesignCoefficient> coefficients(const AxisEvaluation& axis) const override {
+        if (!axis.pp)
+            return {};
+        std::vector<DesignCoefficient> out;
+        const auto& f = axis.pp->f.ascending();
+        for (std::size_t i = 0; i < f.size(); ++i)
+            out.push_back({"f" + std::to_string(i), f[i], ""});
+        const auto& g = axis.pp->g.ascending();
+        for (std::size_t i = 0; i < g.size(); ++i)
+            out.push_back({"g" + std::to_string(i), g[i], ""});
+        out.push_back({"Kf", axis.pp->kf, ""});
+        out.push_back({"Ts", axis.pp->tsSeconds, "s"});
+        return out;
+    }
+
+    /// F, G, Kf and Ts, and the ZPETC's figures when it runs.
+    std::vector<std::string> reportLines(const AxisSettings& settings,
+                                         const AxisEvaluation& axis) const override {
+        if (!axis.pp)
+            return {};
+        const auto poly = [](const Polynomial& p) {
+            std::string out;
+            for (double c : p.ascending())
+                out += (out.empty() ? "" : " ") + formatNumber(c);
+            return "[" + out + "]";
+        };
+        const auto fixed = [](double v, int decimals) {
+            if (!std::isfinite(v))
+                return std::string("n/a");
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+            return std::string(buf);
+        };
+        std::vector<std::string> lines{"F = " + poly(axis.pp->f) + ", G = " + poly(axis.pp->g) +
+                                       " (ascending z^-1), Kf = " + formatNumber(axis.pp->kf) +
+                                       ", Ts = " + formatNumber(axis.pp->tsSeconds) + " s"};
+        if (settings.pp.zpetcEnabled && axis.zpetc)
+            lines.push_back("ZPETC (as designed): preview " +
+                            std::to_string(axis.zpetc->previewSteps) + " samples; RMSE without " +
+                            fixed(axis.rmseWithoutFf, 5) + " mm, with " +
+                            fixed(axis.metrics.rmse, 5) + " mm (improvement " +
+                            fixed(axis.improvementPct, 2) + " %)");
+        return lines;
+    }
+
+    RobustnessProblem robustnessProblem(const Session& session, int axisIndex,
+                                        const AxisEvaluation& nominal) const override {
+        return rstRobustnessProblem(
+            session, axisIndex, nominal, *nominal.pp, nominal.zpetc,
+            session.axes.at(static_cast<std::size_t>(axisIndex)).pp.zpetcEnabled);
+    }
+
+    /// The analysis perturbs the normalized model (A/A(0), B/A(0)), which the settings then
+    /// hold.
+    AxisSettings withPlantParameters(
+        AxisSettings settings,
+        const std::function<double(const std::string&, double)>& value) const override {
+        std::vector<double> a = settings.pp.a, b = settings.pp.b;
+        const double a0 = a.empty() ? 0.0 : a[0];
+        if (a0 == 0.0)
+            throw InvalidInput("a", "A(0) must be nonzero");
+        for (double& c : a)
+            c /= a0;
+        for (double& c : b)
+            c /= a0;
+        for (std::size_t i = 1; i < a.size(); ++i)
+            a[i] = value("a" + std::to_string(i), a[i]);
+        for (std::size_t i = 1; i < b.size(); ++i)
+            b[i] = value("b" + std::to_string(i), b[i]);
+        settings.pp.a = a;
+        settings.pp.b = b;
+        return settings;
     }
 };
 

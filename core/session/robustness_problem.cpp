@@ -14,11 +14,15 @@ namespace xyt {
 
 namespace {
 
-/// The problem of axis @p axis from its evaluation @p nominal.
+/// The problem of axis @p axis from its evaluation @p nominal, as its method's module makes it.
 RobustnessProblem problemOf(const Session& session, int axis, const AxisEvaluation& nominal) {
     if (!nominal.ok)
         throw InvalidInput(nominal.errorField, nominal.error);
-    const AxisSettings& settings = session.axes[static_cast<std::size_t>(axis)];
+    return designMethodModule(nominal.method).robustnessProblem(session, axis, nominal);
+}
+
+/// What every axis' problem holds: the specification with umax, the run's length and the move.
+RobustnessProblem commonProblem(const Session& session, const AxisEvaluation& nominal) {
     RobustnessProblem p;
     p.spec = session.spec;
     p.spec.umaxVolts = session.umaxVolts;
@@ -26,23 +30,6 @@ RobustnessProblem problemOf(const Session& session, int axis, const AxisEvaluati
     if (session.trajectory.kind == TrajectoryKind::Cubic)
         p.move = PointToPointMove{session.trajectory.x0, session.trajectory.xf,
                                   session.trajectory.tfSeconds};
-    if (nominal.gt) {
-        p.controller = nominal.gt->controller;
-        p.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
-        p.dtSeconds = nominal.run.dtSeconds;
-        p.reference = nominal.run.r;
-        p.parameters = axisUncertainParameters(settings);
-        return p;
-    }
-    p.loop = *nominal.pp;
-    p.zpetc = nominal.zpetc;
-    p.zpetcEnabled = settings.pp.zpetcEnabled;
-    // The run's reference plus the preview the ZPETC reads beyond it, as the evaluation samples it.
-    const auto r = axisReference(session.trajectory, axis);
-    const std::size_t preview = p.zpetc ? static_cast<std::size_t>(p.zpetc->previewSteps) : 0;
-    for (std::size_t k = 0; k < p.samples + preview; ++k)
-        p.reference.push_back(r(static_cast<double>(k) * p.loop->tsSeconds));
-    p.parameters = axisUncertainParameters(settings);
     return p;
 }
 
@@ -70,6 +57,49 @@ void followProfile(RobustnessProblem& p, const FeedProfile& profile, int axis) {
 }
 
 } // namespace
+
+RobustnessProblem continuousRobustnessProblem(const Session& session, int axis,
+                                              const AxisEvaluation& nominal,
+                                              const TransferFunction& controller,
+                                              double modelUnitsPerPositionUnit) {
+    RobustnessProblem p = commonProblem(session, nominal);
+    p.controller = controller;
+    p.modelUnitsPerPositionUnit = modelUnitsPerPositionUnit;
+    p.dtSeconds = nominal.run.dtSeconds;
+    p.reference = nominal.run.r;
+    p.parameters = axisUncertainParameters(session.axes.at(static_cast<std::size_t>(axis)));
+    return p;
+}
+
+RobustnessProblem rstRobustnessProblem(const Session& session, int axis,
+                                       const AxisEvaluation& nominal,
+                                       const PolePlacementDesign& loop,
+                                       const std::optional<ZpetcDesign>& zpetc, bool zpetcEnabled) {
+    RobustnessProblem p = commonProblem(session, nominal);
+    p.loop = loop;
+    p.zpetc = zpetc;
+    p.zpetcEnabled = zpetcEnabled;
+    // The run's reference plus the preview the ZPETC reads beyond it, as the evaluation samples it.
+    const auto r = axisReference(session.trajectory, axis);
+    const std::size_t preview = p.zpetc ? static_cast<std::size_t>(p.zpetc->previewSteps) : 0;
+    for (std::size_t k = 0; k < p.samples + preview; ++k)
+        p.reference.push_back(r(static_cast<double>(k) * p.loop->tsSeconds));
+    p.parameters = axisUncertainParameters(session.axes.at(static_cast<std::size_t>(axis)));
+    return p;
+}
+
+std::vector<UncertainParameter> thirdOrderPlantParameters(const ThirdOrderPlant& plant) {
+    return {{"k0", plant.k0, 0.0}, {"a1", plant.a1, 0.0}, {"a2", plant.a2, 0.0}};
+}
+
+ThirdOrderPlant
+withThirdOrderPlantParameters(ThirdOrderPlant plant,
+                              const std::function<double(const std::string&, double)>& value) {
+    plant.k0 = value("k0", plant.k0);
+    plant.a1 = value("a1", plant.a1);
+    plant.a2 = value("a2", plant.a2);
+    return plant;
+}
 
 RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
     if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
@@ -125,7 +155,7 @@ void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session
         throw InvalidInput(field, "the identified " + o.structure +
                                       " has no covariance to draw plants from");
     const bool continuous = o.parameterNames == std::vector<std::string>{"k0", "a1", "a2"};
-    if (continuous != (settings.method == DesignMethod::GuilleminTruxal))
+    if (continuous != problem.controller.has_value())
         throw InvalidInput(field, "the identified " + o.structure +
                                       " is not a model of the axis' design method");
     // The problem's index of each origin parameter (npos: not in the loop).

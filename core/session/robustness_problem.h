@@ -2,8 +2,13 @@
 #pragma once
 
 #include "core/session/session.h"
+#include "core/session/session_evaluation.h"
 #include "core/study/contour_robustness.h"
 #include "core/study/robustness.h"
+
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace xyt {
 
@@ -17,6 +22,33 @@ namespace xyt {
  *         cannot be evaluated (as evaluateAxis reports it).
  */
 RobustnessProblem sessionRobustnessProblem(const Session& session, int axis);
+
+/**
+ * The problem of a continuous controller @p controller (volts per model unit of error) on the
+ * axis' third-order plant, as a module builds it for its robustnessProblem: the run of
+ * @p nominal (its reference and step), the session's specification with umax, the move of a
+ * cubic, and the axis' plant parameters with zero ranges.
+ */
+RobustnessProblem continuousRobustnessProblem(const Session& session, int axis,
+                                              const AxisEvaluation& nominal,
+                                              const TransferFunction& controller,
+                                              double modelUnitsPerPositionUnit);
+
+/// The problem of a discrete RST loop @p loop with its ZPETC feedforward @p zpetc (run when
+/// @p zpetcEnabled): the reference sampled at the loop's Ts, with the feedforward's preview.
+RobustnessProblem rstRobustnessProblem(const Session& session, int axis,
+                                       const AxisEvaluation& nominal,
+                                       const PolePlacementDesign& loop,
+                                       const std::optional<ZpetcDesign>& zpetc, bool zpetcEnabled);
+
+/// The parameters of a third-order plant k0/(s^3 + a1 s^2 + a2 s) with zero ranges: "k0", "a1",
+/// "a2".
+std::vector<UncertainParameter> thirdOrderPlantParameters(const ThirdOrderPlant& plant);
+
+/// @p plant with k0, a1 and a2 replaced by @p value(name, current value).
+ThirdOrderPlant
+withThirdOrderPlantParameters(ThirdOrderPlant plant,
+                              const std::function<double(const std::string&, double)>& value);
 
 /**
  * The joint XY problem of @p session: both axes' problems as sessionRobustnessProblem

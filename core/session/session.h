@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,8 +42,10 @@ private:
     std::shared_ptr<const ProgramState> state_;
 };
 
-/// How an axis is controlled.
-enum class DesignMethod {
+/// How an axis is controlled. The two built-in methods are named; a method registered at
+/// start-up (registerDesignMethodModule, core/session/design_method_module.h) takes a value of
+/// its own.
+enum class DesignMethod : int {
     GuilleminTruxal,   ///< continuous PI by the reference-model method (Braga et al.)
     PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (Patrick, Ishak and
                        ///< Adnan)
@@ -96,6 +99,9 @@ struct AxisSettings {
     DesignMethod method = DesignMethod::GuilleminTruxal;
     GtAxisSettings gt;
     PpAxisSettings pp;
+    /// The settings of a registered method that declares them (DesignMethodModule::parameters),
+    /// by name; kept when the axis switches method, as gt and pp are.
+    std::map<std::string, double> parameters;
     std::optional<ModelOrigin> origin; ///< set when the plant was identified from data
     friend bool operator==(const AxisSettings&, const AxisSettings&) = default;
 };

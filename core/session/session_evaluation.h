@@ -67,6 +67,12 @@ struct DigitalEvaluation {
     std::optional<MoveSettleMetrics> moveSettle;
 };
 
+/// The design a registered method's module makes (DesignMethodModule::evaluate), held by the
+/// evaluation for the module to read back: each module derives its own.
+struct MethodDesign {
+    virtual ~MethodDesign() = default;
+};
+
 /// Everything computed for one axis of a session: the design, the run and its figures.
 struct AxisEvaluation {
     bool ok = false;
@@ -81,6 +87,8 @@ struct AxisEvaluation {
     /// Discrete designs: the pole-placement loop and its ZPETC feedforward.
     std::optional<PolePlacementDesign> pp;
     std::optional<ZpetcDesign> zpetc;
+    /// The design of a method other than the built-in ones (its module's own type).
+    std::shared_ptr<const MethodDesign> methodDesign;
     /// Discrete designs: the run of the feedback loop alone (Kf r), for comparison.
     SimulationResult feedbackOnlyRun;
     double rmseWithoutFf = 0.0;  ///< discrete designs: RMSE of the loop alone

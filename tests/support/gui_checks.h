@@ -6,6 +6,7 @@
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
 #include "core/session/axis_frequency.h"
+#include "core/session/design_method_module.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/step_view.h"
 #include "tests/support/tolerance.h"
@@ -283,9 +284,11 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
         RootLocus expected;
         if (e.gt)
             expected = rootLocus(e.gt->openLoop);
-        else
+        else if (e.pp)
             expected = rootLocus(TransferFunction::fromZInverse(
                 e.pp->b * e.pp->g, e.pp->a * e.pp->f, e.pp->tsSeconds));
+        else // a registered method: the loop its module gives
+            expected = rootLocus(axisLoop(e)->openLoop);
         if (!rl->hasResult() ||
             rl->branchCurveCount() != static_cast<int>(expected.branches.size()))
             problems << QStringLiteral("root locus: %1 branches drawn, the core has %2")
@@ -348,7 +351,7 @@ inline QString plotsMismatch(ui::MainWindow* window, ui::TuningSession* session)
         if (!sameComplexSet(clPoles, pl->currentGraph()->data(), 1e-12))
             problems << "parameter locus: the current poles differ";
     } else if (pl->hasResult() || pl->branchCount() != 0) {
-        problems << "parameter locus: shows a sweep for a pole-placement axis or an axis without a "
+        problems << "parameter locus: shows a sweep for an axis of another method or without a "
                     "design";
     }
     // Frequency domain: the Bode curve of L and the Nyquist counts are a fresh analysis's.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/files/coefficient_json.h"
 
+#include "core/session/design_method_module.h"
 #include "ui/files/session_file.h"
 
 #include <QJsonArray>
@@ -61,6 +62,19 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
                                  finite(a.zpetc->gainFactor, ppField + ".zpetc (gain factor)")},
                                 {"order", "ascending powers of z^-1"},
                                 {"law", "den(z^-1) w[k] = num(z^-1) r[k + preview_steps]"}});
+            axes.append(axis);
+            continue;
+        }
+        if (a.ok && !a.gt) {
+            // A registered method: the coefficients its module lists (its C export holds the
+            // step the firmware runs).
+            QJsonArray coefficients;
+            for (const DesignCoefficient& c : designMethodModule(a.method).coefficients(a))
+                coefficients.append(QJsonObject{
+                    {"name", QString::fromStdString(c.name)},
+                    {"value", finite(c.value, axisField(i, "parameters") + " (" + c.name + ")")},
+                    {"unit", QString::fromStdString(c.unit)}});
+            axis.insert("coefficients", coefficients);
             axes.append(axis);
             continue;
         }

@@ -17,6 +17,7 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace xyt::files {
 
@@ -61,6 +62,7 @@ public:
 
     const QString& path() const { return path_; }
     bool has(const QString& key) const { return object_.contains(key); }
+    QStringList keys() const { return object_.keys(); }
 
     QJsonValue get(const QString& key) {
         used_ << key;
@@ -256,6 +258,10 @@ QJsonObject axisToJson(const AxisSettings& a) {
                            {"ts", a.pp.tsSeconds},
                            {"zpetc", a.pp.zpetcEnabled}}},
     };
+    QJsonObject parameters;
+    for (const auto& [name, value] : a.parameters)
+        parameters.insert(QString::fromStdString(name), value);
+    out.insert("parameters", parameters);
     if (a.origin)
         out.insert("model_origin", originToJson(*a.origin));
     return out;
@@ -336,6 +342,42 @@ QJsonArray axesToJson(const std::array<AxisSettings, 2>& axes) {
     return QJsonArray{axisToJson(axes[0]), axisToJson(axes[1])};
 }
 
+/**
+ * The "parameters" object of an axis: a registered method's numbers by name (at most
+ * kMaxMethodParameters). Those that the axis' method declares are checked against its range;
+ * others are kept for the method that declares them.
+ */
+std::map<std::string, double> readMethodParameters(ObjectReader r, DesignMethod method) {
+    constexpr qsizetype kMaxMethodParameters = 64;
+    const QStringList keys = r.keys();
+    if (keys.size() > kMaxMethodParameters)
+        throw FormatError{r.path(), QStringLiteral("has %1 entries; at most %2 are allowed")
+                                        .arg(keys.size())
+                                        .arg(kMaxMethodParameters)};
+    const std::vector<MethodParameter> declared = designMethodModule(method).parameters();
+    std::map<std::string, double> out;
+    for (const QString& key : keys) {
+        const QString path = join(r.path(), key);
+        const bool wellNamed =
+            !key.isEmpty() && key.size() <= 32 && std::all_of(key.begin(), key.end(), [](QChar c) {
+                return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+            });
+        if (!wellNamed)
+            throw FormatError{path, QStringLiteral("must be named by 1 to 32 lower-case letters, "
+                                                   "digits or '_'")};
+        const double v = r.number(key);
+        for (const MethodParameter& p : declared)
+            if (p.name == key.toStdString() && !(v >= p.minimum && v <= p.maximum))
+                throw FormatError{path, QStringLiteral("must be within %1 .. %2 %3")
+                                            .arg(p.minimum)
+                                            .arg(p.maximum)
+                                            .arg(QString::fromStdString(p.unit))
+                                            .trimmed()};
+        out[key.toStdString()] = v;
+    }
+    return out;
+}
+
 AxisSettings readAxis(ObjectReader r) {
     AxisSettings a;
     a.id = r.string("id").toStdString();
@@ -374,6 +416,7 @@ AxisSettings readAxis(ObjectReader r) {
         a.pp.zpetcEnabled = pp.boolean("zpetc");
         pp.finish();
     }
+    a.parameters = readMethodParameters(r.child("parameters"), a.method);
     if (r.has("model_origin"))
         a.origin = readOrigin(r.child("model_origin"));
     r.finish();

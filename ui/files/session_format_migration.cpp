@@ -5,6 +5,8 @@
 
 #include <QJsonArray>
 
+#include <functional>
+
 namespace xyt::files {
 
 namespace {
@@ -15,6 +17,23 @@ QJsonObject withDefaults(QJsonObject object, const QJsonObject& defaults, const 
         if (!object.contains(key))
             object.insert(key, defaults.value(key));
     return object;
+}
+
+/// @p root with @p change applied to each snapshot object of its "snapshots" array.
+QJsonObject withEachSnapshot(QJsonObject root,
+                             const std::function<void(QJsonObject& snapshot)>& change) {
+    if (!root.value("snapshots").isArray())
+        return root;
+    QJsonArray snapshots = root.value("snapshots").toArray();
+    for (qsizetype i = 0; i < snapshots.size(); ++i) {
+        if (!snapshots[i].isObject())
+            continue;
+        QJsonObject snapshot = snapshots[i].toObject();
+        change(snapshot);
+        snapshots[i] = snapshot;
+    }
+    root.insert("snapshots", snapshots);
+    return root;
 }
 
 /// A version-1 trajectory with its "gcode" object (the default one) unless its kind is
@@ -45,20 +64,40 @@ QJsonObject fromVersion1(QJsonObject root) {
     if (root.contains("trajectory"))
         root.insert("trajectory",
                     trajectoryFromVersion1(root.value("trajectory"), trajectoryDefaults));
-    if (root.value("snapshots").isArray()) {
-        QJsonArray snapshots = root.value("snapshots").toArray();
-        for (qsizetype i = 0; i < snapshots.size(); ++i) {
-            if (!snapshots[i].isObject())
-                continue;
-            QJsonObject snapshot = snapshots[i].toObject();
-            if (snapshot.contains("trajectory"))
-                snapshot.insert("trajectory", trajectoryFromVersion1(snapshot.value("trajectory"),
-                                                                     trajectoryDefaults));
-            snapshots[i] = snapshot;
-        }
-        root.insert("snapshots", snapshots);
-    }
+    root = withEachSnapshot(std::move(root), [&](QJsonObject& snapshot) {
+        if (snapshot.contains("trajectory"))
+            snapshot.insert("trajectory", trajectoryFromVersion1(snapshot.value("trajectory"),
+                                                                 trajectoryDefaults));
+    });
     root.insert("version", 2);
+    return root;
+}
+
+/// @p axes (an array of axis objects) with an empty "parameters" object in each axis.
+QJsonValue axesWithParameters(const QJsonValue& axes) {
+    if (!axes.isArray())
+        return axes;
+    QJsonArray out = axes.toArray();
+    for (qsizetype i = 0; i < out.size(); ++i) {
+        if (!out[i].isObject())
+            continue;
+        QJsonObject axis = out[i].toObject();
+        if (!axis.contains("parameters"))
+            axis.insert("parameters", QJsonObject{});
+        out[i] = axis;
+    }
+    return out;
+}
+
+/// Version 2 had no registered methods, so no axis has parameters.
+QJsonObject fromVersion2(QJsonObject root) {
+    if (root.contains("axes"))
+        root.insert("axes", axesWithParameters(root.value("axes")));
+    root = withEachSnapshot(std::move(root), [](QJsonObject& snapshot) {
+        if (snapshot.contains("axes"))
+            snapshot.insert("axes", axesWithParameters(snapshot.value("axes")));
+    });
+    root.insert("version", 3);
     return root;
 }
 
@@ -67,6 +106,8 @@ QJsonObject fromVersion1(QJsonObject root) {
 QJsonObject migrateSessionJson(QJsonObject root, int version) {
     if (version <= 1)
         root = fromVersion1(std::move(root));
+    if (version <= 2)
+        root = fromVersion2(std::move(root));
     return root;
 }
 

@@ -12,12 +12,15 @@ namespace xyt::files {
  *   when missing: the "implementation" object and each of its fields, "trajectory.gcode" (and
  *   each snapshot's) unless the kind is "gcode", and the specification's
  *   "in_position_window_mm", "max_settle_time", "min_phase_margin" and "min_gain_margin".
- * - Version 2 (written now): the same fields, all of them required. Files that were written by
- *   a version-1 writer and hold every field read the same in both.
+ * - Version 2: the same fields, all of them required. Files that were written by a version-1
+ *   writer and hold every field read the same in both.
+ * - Version 3 (written now): each axis has a "parameters" object, the numbers of a method
+ *   registered at start-up (AxisSettings::parameters). A version-2 axis has none: it reads as
+ *   an empty object.
  *
  * Reading an older version is this migration to the current one, then the current reader.
  */
-inline constexpr int kSessionFormatVersion = 2;
+inline constexpr int kSessionFormatVersion = 3;
 
 /// @p root (a document of format version @p version, 1 <= version < kSessionFormatVersion)
 /// as a document of the current version: each field that version did not require and that

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/equations_panel.h"
 
+#include "core/session/design_method_module.h"
+
 #include <QScrollBar>
 
 #include <cmath>
@@ -103,7 +105,17 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
         return;
     }
     if (!axis.gt) {
-        showHtml(tr("<b>Axis %1</b>").arg(id));
+        // A registered method: its module's equations, as plain lines.
+        const DesignMethodModule& module = designMethodModule(axis.method);
+        QString html =
+            tr("<b>Axis %1 — %2</b><br>")
+                .arg(id, QString::fromUtf8(module.displayName().data(),
+                                           static_cast<qsizetype>(module.displayName().size()))
+                             .toHtmlEscaped());
+        QStringList lines;
+        for (const std::string& line : module.equations(settings, axis))
+            lines << QString::fromStdString(line).toHtmlEscaped();
+        showHtml(html + lines.join(QStringLiteral("<br>")));
         return;
     }
     const GtDesign& d = *axis.gt;

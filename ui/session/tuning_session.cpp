@@ -108,6 +108,11 @@ bool TuningSession::isCurrent(const ResultStamp& stamp) const {
            sessionsAgree(stamp.session, session_, std::max(stamp.axis, 0), stamp.scope);
 }
 
+QString methodDisplayName(DesignMethod method) {
+    const std::string_view name = designMethodModule(method).displayName();
+    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
 namespace {
 
 QString axisDesignWords(const Session& s, int axis) {
@@ -115,6 +120,17 @@ QString axisDesignWords(const Session& s, int axis) {
     if (a.method == DesignMethod::GuilleminTruxal)
         return QObject::tr("ωn = %1 rad/s, kp = %2")
             .arg(QString::number(a.gt.omegaNRadPerSec, 'g', 4), QString::number(a.gt.kp, 'g', 4));
+    if (a.method != DesignMethod::PolePlacementZpetc) {
+        // A registered method: its name and its parameters.
+        QStringList words{methodDisplayName(a.method)};
+        for (const MethodParameter& p : designMethodModule(a.method).parameters()) {
+            const auto it = a.parameters.find(p.name);
+            words << QStringLiteral("%1 = %2").arg(
+                QString::fromStdString(p.name),
+                QString::number(it == a.parameters.end() ? p.defaultValue : it->second, 'g', 4));
+        }
+        return words.join(QStringLiteral(", "));
+    }
     return QObject::tr("pole placement, t1 = %1, Ts = %2 s%3")
         .arg(QString::number(a.pp.t1, 'g', 4), QString::number(a.pp.tsSeconds, 'g', 4),
              a.pp.zpetcEnabled ? QObject::tr(", ZPETC") : QString());
@@ -123,7 +139,7 @@ QString axisDesignWords(const Session& s, int axis) {
 QString axisPlantWords(const Session& s, int axis) {
     const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
     if (a.method != DesignMethod::GuilleminTruxal)
-        return QObject::tr("pole placement");
+        return methodDisplayName(a.method);
     return QObject::tr("plant k0 = %1, a1 = %2, a2 = %3")
         .arg(QString::number(a.gt.plant.k0, 'g', 5), QString::number(a.gt.plant.a1, 'g', 5),
              QString::number(a.gt.plant.a2, 'g', 5));
@@ -318,6 +334,15 @@ void TuningSession::setMethod(int axis, DesignMethod method) {
     Session next = session_;
     next.axes.at(static_cast<std::size_t>(axis)).method = method;
     apply(next, tr("Change the design method"));
+}
+
+void TuningSession::setMethodParameter(int axis, const std::string& name, double value) {
+    Session next = session_;
+    next.axes.at(static_cast<std::size_t>(axis)).parameters[name] = value;
+    apply(
+        next,
+        tr("Set %1 of %2 to %3").arg(QString::fromStdString(name), axisName(next, axis)).arg(value),
+        kMergeMethodParameter + axis);
 }
 
 void TuningSession::setPp(int axis, const PpAxisSettings& pp, int mergeKey) {

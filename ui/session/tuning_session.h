@@ -123,6 +123,9 @@ public:
     // Convenience setters (each one apply() step). Axis index 0 = x, 1 = y.
     void setMethod(int axis, DesignMethod method);
     void setPp(int axis, const PpAxisSettings& pp, int mergeKey = -1);
+    /// One of a registered method's parameters (AxisSettings::parameters); successive changes of
+    /// the same axis merge into one undo step, as a slider's do.
+    void setMethodParameter(int axis, const std::string& name, double value);
     void setSpecification(const Specification& spec);
     void setOmegaN(int axis, double omegaNRadPerSec);
     void setKp(int axis, double kp);
@@ -176,7 +179,10 @@ private:
     std::uint64_t revision_ = 0;
 };
 
+/// The name the workbench shows for @p method (its module's displayName).
+QString methodDisplayName(DesignMethod method);
+
 /// Merge keys for slider drags: one per parameter and axis.
-enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300 };
+enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300, kMergeMethodParameter = 400 };
 
 } // namespace xyt::ui

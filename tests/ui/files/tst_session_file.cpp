@@ -481,7 +481,31 @@ void TstSessionFile::versionOneFilesMigrate() {
     s.snapshots.push_back({"before", s.axes, s.trajectory, s.umaxVolts});
     const QJsonObject current = sessionToJson(s);
     QCOMPARE(current["version"].toInt(), kSessionFormatVersion);
-    QCOMPARE(kSessionFormatVersion, 2);
+    QCOMPARE(kSessionFormatVersion, 3);
+    // Version 2 had no "parameters" object in its axes (nor in its snapshots' axes): the
+    // migration gives each an empty one, the current document.
+    QJsonObject versionTwo = current;
+    versionTwo["version"] = 2;
+    const auto withoutParameters = [](QJsonArray axes) {
+        for (qsizetype i = 0; i < axes.size(); ++i) {
+            QJsonObject axis = axes[i].toObject();
+            axis.remove("parameters");
+            axes[i] = axis;
+        }
+        return axes;
+    };
+    versionTwo["axes"] = withoutParameters(current["axes"].toArray());
+    QJsonArray twoSnapshots = versionTwo["snapshots"].toArray();
+    QJsonObject twoSnapshot = twoSnapshots[0].toObject();
+    twoSnapshot["axes"] = withoutParameters(twoSnapshot["axes"].toArray());
+    twoSnapshots[0] = twoSnapshot;
+    versionTwo["snapshots"] = twoSnapshots;
+    QCOMPARE(migrateSessionJson(versionTwo, 2), current);
+    QVERIFY(sessionFromJson(versionTwo).session == s);
+    // ... and version 3 requires it.
+    QJsonObject missing = current;
+    missing["axes"] = withoutParameters(current["axes"].toArray());
+    QCOMPARE(sessionFromJson(missing).message(), QString("axes[0].parameters: is missing"));
     QJsonObject versionOne = current;
     versionOne["version"] = 1;
     QCOMPARE(migrateSessionJson(versionOne, 1), current);

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/panels/method_parameter_editor.h"
+
+#include "core/model/errors.h"
+#include "core/model/number_format.h"
+#include "ui/panels/number_field.h"
+
+#include <QFormLayout>
+#include <QLabel>
+
+namespace xyt::ui {
+
+MethodParameterEditor::MethodParameterEditor(const DesignMethodModule& module, QWidget* parent)
+    : QWidget(parent), method_(module.method()), parameters_(module.parameters()) {
+    auto* form = new QFormLayout(this);
+    form->setContentsMargins(0, 0, 0, 0);
+    if (parameters_.empty())
+        form->addRow(new QLabel(tr("This method has no settings."), this));
+    for (const MethodParameter& p : parameters_) {
+        const QString name = QString::fromStdString(p.name);
+        auto* field = new NumberField(
+            "parameters." + name,
+            [p](double v) {
+                if (v < p.minimum || v > p.maximum)
+                    throw InvalidInput(p.name, "must be within " + xyt::formatNumber(p.minimum) +
+                                                   " .. " + xyt::formatNumber(p.maximum) +
+                                                   (p.unit.empty() ? "" : " " + p.unit));
+            },
+            this);
+        field->setAccessibleName(QString::fromStdString(p.label));
+        field->setToolTip(tr("%1 (%2 .. %3 %4)")
+                              .arg(QString::fromStdString(p.label))
+                              .arg(p.minimum)
+                              .arg(p.maximum)
+                              .arg(QString::fromStdString(p.unit)));
+        const QString label = p.unit.empty() ? QString::fromStdString(p.label)
+                                             : tr("%1 (%2)").arg(QString::fromStdString(p.label),
+                                                                 QString::fromStdString(p.unit));
+        form->addRow(label, field);
+        fields_[p.name] = field;
+        connect(field, &NumberField::valueAccepted, this,
+                [this, key = p.name](double v) { emit parameterEdited(key, v); });
+    }
+}
+
+void MethodParameterEditor::setSettings(const AxisSettings& settings) {
+    for (const MethodParameter& p : parameters_) {
+        const auto it = settings.parameters.find(p.name);
+        fields_.at(p.name)->setValue(it == settings.parameters.end() ? p.defaultValue : it->second);
+    }
+}
+
+NumberField* MethodParameterEditor::field(const std::string& name) const {
+    const auto it = fields_.find(name);
+    return it == fields_.end() ? nullptr : it->second;
+}
+
+} // namespace xyt::ui
