@@ -152,7 +152,6 @@ int main(int argc, char* argv[]) {
             runShown(window.findChild<xyt::ui::DesignSpaceView*>());
             runShown(window.findChild<xyt::ui::RobustnessView*>());
         }
-        window.refresh();
         // A few passes, as a shown window gets: a plot may lay itself out again once (a title
         // wrapped, a legend in fewer columns) in a queued drawing.
         QElapsedTimer settling;

@@ -33,6 +33,16 @@
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 #include "ui/snapshot_compare_dialog.h"
+#include "ui/views/bode_view.h"
+#include "ui/views/contour_view.h"
+#include "ui/views/equations_view.h"
+#include "ui/views/metrics_view.h"
+#include "ui/views/nyquist_view.h"
+#include "ui/views/parameter_locus_view.h"
+#include "ui/views/pole_zero_view.h"
+#include "ui/views/root_locus_view.h"
+#include "ui/views/step_response_view.h"
+#include "ui/views/time_response_view.h"
 
 #include <algorithm>
 
@@ -69,6 +79,96 @@ namespace xyt::ui {
 MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     : QMainWindow(parent), session_(session) {
     setWindowTitle(tr("XY Tune"));
+    QScrollArea* controlScroll = buildControlPanel();
+    buildPlots();
+    buildUpperTabs();
+    buildLowerTabs();
+    // A tab shown: its view is drawn if it went stale while hidden, and its controls shown.
+    const auto tabShown = [this] {
+        for (PresenterView* view : views_)
+            view->drawIfStale();
+        showTabControls();
+    };
+    connect(upperTabs_, &QTabWidget::currentChanged, this, tabShown);
+    connect(lowerTabs_, &QTabWidget::currentChanged, this, tabShown);
+    connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {
+        if (!session_->applyLoopGain(session_->currentAxis(), gain))
+            statusBar()->showMessage(
+                tr("Picking a gain sets kp and ωn of a Guillemin–Truxal axis; this axis uses %1.")
+                    .arg(methodDisplayName(
+                        session_->session()
+                            .axes.at(static_cast<std::size_t>(session_->currentAxis()))
+                            .method)),
+                6000);
+        else
+            statusBar()->showMessage(
+                tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4), 5000);
+    });
+    plotSplitter_ = new QSplitter(Qt::Vertical, this);
+    plotSplitter_->addWidget(upperTabs_);
+    plotSplitter_->addWidget(lowerTabs_);
+    plotSplitter_->setChildrenCollapsible(false);
+    plotSplitter_->setSizes({330, 400});
+
+    QWidget* right = buildSidePanel();
+    mainSplitter_ = new QSplitter(Qt::Horizontal, this);
+    mainSplitter_->addWidget(controlScroll);
+    mainSplitter_->addWidget(plotSplitter_);
+    mainSplitter_->addWidget(right);
+    mainSplitter_->setStretchFactor(0, 0);
+    mainSplitter_->setStretchFactor(1, 1);
+    mainSplitter_->setStretchFactor(2, 0);
+    mainSplitter_->setChildrenCollapsible(false);
+    setCentralWidget(mainSplitter_);
+
+    status_ = new QLabel(this);
+    statusBar()->addPermanentWidget(status_);
+    files_ = new SessionFileController(session_, this);
+    connect(files_, &SessionFileController::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(files_, &SessionFileController::currentFileChanged, this, &MainWindow::updateTitle);
+    recovery_ = new RecoveryStore(session_, RecoveryStore::defaultDirectory(), this);
+    connect(files_, &SessionFileController::currentFileChanged, recovery_,
+            &RecoveryStore::setSessionFile);
+    connect(session_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    buildMenus();
+    updateTitle();
+
+    // A change reaches the controls first, then each view (each draws what it shows), then the
+    // status (Qt calls the slots of one signal in the order they were connected).
+    const auto controlsFirst = [this] {
+        changeTimer_.start();
+        syncControls();
+    };
+    connect(session_, &TuningSession::designChanged, this, controlsFirst);
+    connect(session_, &TuningSession::currentAxisChanged, this, controlsFirst);
+    buildViews();
+    connect(session_, &TuningSession::designChanged, this, &MainWindow::updateStatus);
+    connect(session_, &TuningSession::currentAxisChanged, this, &MainWindow::updateStatus);
+    // A trajectory kind chosen but not applied (G-code without a program): the trajectory plots
+    // still show the session's, and say so over it rather than pass it for the chosen one.
+    timeVeil_ = new StaleVeil(timePlot_);
+    contourVeil_ = new StaleVeil(contourPlot_);
+    connect(trajectoryEditor_, &TrajectoryEditor::refusalChanged, this, [this](const QString& why) {
+        for (StaleVeil* veil : {timeVeil_, contourVeil_}) {
+            if (why.isEmpty())
+                veil->lift();
+            else
+                veil->veil(why);
+        }
+    });
+    resize(1366, 768);
+    restoreLayout();
+    for (QLineEdit* field : findChildren<QLineEdit*>())
+        field->installEventFilter(this);
+    changeTimer_.start();
+    syncControls();
+    for (PresenterView* view : views_)
+        view->requestRedraw();
+    updateStatus();
+}
+
+QScrollArea* MainWindow::buildControlPanel() {
     auto* controls = buildControls();
     // Compact rows: the whole left panel (design, trajectory, actuator) fits a 1366x768 window
     // without scrolling for the default cubic session.
@@ -82,6 +182,10 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     controlScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     controlScroll->setMinimumWidth(controls->sizeHint().width() + 20);
 
+    return controlScroll;
+}
+
+void MainWindow::buildPlots() {
     timePlot_ = new TimeResponsePlot(this);
     stepPlot_ = new StepPlot(this);
     contourPlot_ = new ContourPlot(this);
@@ -90,8 +194,10 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     parameterLocusPlot_ = new ParameterLocusPlot(this);
     bodePlot_ = new BodePlot(this);
     nyquistPlot_ = new NyquistPlot(this);
+}
+
+void MainWindow::buildUpperTabs() {
     upperTabs_ = new QTabWidget(this);
-    lowerTabs_ = new QTabWidget(this);
     upperTabs_->addTab(rootLocusPlot_, tr("&Root locus"));
     upperTabs_->addTab(parameterLocusPlot_, tr("P&arameter locus"));
     upperTabs_->addTab(poleZeroPlot_, tr("&Pole-zero"));
@@ -102,7 +208,14 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     sweptParameter_->addItem(tr("sweep kp (ωn fixed)"));
     sweptParameter_->setAccessibleName(tr("Swept parameter"));
     upperTabs_->setCornerWidget(sweptParameter_, Qt::TopRightCorner);
-    connect(sweptParameter_, &QComboBox::currentIndexChanged, this, &MainWindow::refresh);
+    connect(sweptParameter_, &QComboBox::currentIndexChanged, this, [this](int index) {
+        parameterLocusView_->setSweptParameter(index == 1 ? GtSweptParameter::Kp
+                                                          : GtSweptParameter::OmegaN);
+    });
+}
+
+void MainWindow::buildLowerTabs() {
+    lowerTabs_ = new QTabWidget(this);
     // Short tab names: all five tabs fit beside each other at 1366x768 (with the longer
     // "Time response" and "Step response", Robustness hid behind the scroll arrows).
     lowerTabs_->addTab(timePlot_, tr("&Time"));
@@ -128,24 +241,9 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     lowerTabs_->addTab(new RobustnessView(session_, this), tr("R&obustness"));
     lowerTabs_->setUsesScrollButtons(
         true); // six tabs and a corner control: scroll, never widen the window
-    connect(upperTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
-    connect(lowerTabs_, &QTabWidget::currentChanged, this, &MainWindow::refresh);
-    connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {
-        if (!session_->applyLoopGain(session_->currentAxis(), gain))
-            statusBar()->showMessage(
-                tr("Picking a gain sets kp and ωn of a Guillemin–Truxal axis; a pole-placement "
-                   "axis is tuned with t1."),
-                6000);
-        else
-            statusBar()->showMessage(
-                tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4), 5000);
-    });
-    plotSplitter_ = new QSplitter(Qt::Vertical, this);
-    plotSplitter_->addWidget(upperTabs_);
-    plotSplitter_->addWidget(lowerTabs_);
-    plotSplitter_->setChildrenCollapsible(false);
-    plotSplitter_->setSizes({330, 400});
+}
 
+QWidget* MainWindow::buildSidePanel() {
     auto* right = new QWidget(this);
     auto* rightLayout = new QVBoxLayout(right);
     rightLayout->setContentsMargins(4, 4, 4, 4);
@@ -166,48 +264,7 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     rightLayout->addWidget(equationsBox, 1);
     right->setMinimumWidth(400);
 
-    mainSplitter_ = new QSplitter(Qt::Horizontal, this);
-    mainSplitter_->addWidget(controlScroll);
-    mainSplitter_->addWidget(plotSplitter_);
-    mainSplitter_->addWidget(right);
-    mainSplitter_->setStretchFactor(0, 0);
-    mainSplitter_->setStretchFactor(1, 1);
-    mainSplitter_->setStretchFactor(2, 0);
-    mainSplitter_->setChildrenCollapsible(false);
-    setCentralWidget(mainSplitter_);
-
-    status_ = new QLabel(this);
-    statusBar()->addPermanentWidget(status_);
-    files_ = new SessionFileController(session_, this);
-    connect(files_, &SessionFileController::message, this,
-            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
-    connect(files_, &SessionFileController::currentFileChanged, this, &MainWindow::updateTitle);
-    recovery_ = new RecoveryStore(session_, RecoveryStore::defaultDirectory(), this);
-    connect(files_, &SessionFileController::currentFileChanged, recovery_,
-            &RecoveryStore::setSessionFile);
-    connect(session_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
-    buildMenus();
-    updateTitle();
-
-    connect(session_, &TuningSession::designChanged, this, &MainWindow::refresh);
-    connect(session_, &TuningSession::currentAxisChanged, this, &MainWindow::refresh);
-    // A trajectory kind chosen but not applied (G-code without a program): the trajectory plots
-    // still show the session's, and say so over it rather than pass it for the chosen one.
-    timeVeil_ = new StaleVeil(timePlot_);
-    contourVeil_ = new StaleVeil(contourPlot_);
-    connect(trajectoryEditor_, &TrajectoryEditor::refusalChanged, this, [this](const QString& why) {
-        for (StaleVeil* veil : {timeVeil_, contourVeil_}) {
-            if (why.isEmpty())
-                veil->lift();
-            else
-                veil->veil(why);
-        }
-    });
-    resize(1366, 768);
-    restoreLayout();
-    for (QLineEdit* field : findChildren<QLineEdit*>())
-        field->installEventFilter(this);
-    refresh();
+    return right;
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
@@ -469,11 +526,12 @@ void MainWindow::buildMenus() {
         tr("Overlay the loop as the firmware runs it on the time plots"));
     connect(digitalOverlayAction_, &QAction::toggled, this, [this](bool on) {
         timePlot_->setDigitalVisible(on);
-        refresh();
+        timeView_->requestRedraw();
     });
     zPlaneAction_ = view->addAction(tr("Pole-zero map of the digital loop (&z-plane)"));
     zPlaneAction_->setCheckable(true);
-    connect(zPlaneAction_, &QAction::toggled, this, &MainWindow::refresh);
+    connect(zPlaneAction_, &QAction::toggled, this,
+            [this](bool on) { poleZeroView_->setDigitalPlane(on); });
     view->addAction(tr("&Reset plot views"), QKeySequence(tr("Ctrl+0")), this, [this] {
         for (QCustomPlot* plot : findChildren<QCustomPlot*>())
             resetView(plot);
@@ -519,6 +577,10 @@ void MainWindow::syncControls() {
     const QSignalBlocker blockDiscretization(discretization_);
     discretization_->setCurrentIndex(s.piDiscretization == PiDiscretization::Tustin ? 0 : 1);
     implementation_->setSettings(s.implementation);
+    sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
+    showTabControls();
+    contourControls_->sync();
+    overlayMenu_->setEnabled(!s.snapshots.empty());
     const ImplementationSettings& impl = s.implementation;
     // A short summary on the folded row (the panel's width is the plots' loss), the whole in
     // its tooltip.
@@ -540,133 +602,29 @@ void MainWindow::syncControls() {
             .arg(impl.delaySamples));
 }
 
-void MainWindow::refresh() {
-    QElapsedTimer timer;
-    timer.start();
-    syncControls();
-    const int axis = session_->currentAxis();
-    const Session& s = session_->session();
-    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
-    const AxisEvaluation& e = session_->axisEvaluation(axis);
-    const QString title =
-        tr("Axis %1 (%2)")
-            .arg(QString::fromStdString(a.id).toUpper(), QString::fromStdString(a.label));
-    // Plots that are not on screen are redrawn when their tab is shown (the tabs' currentChanged
-    // calls refresh), so a slider drag only pays for what the user sees.
-    const auto shown = [this](QWidget* w) { return w->isVisible() || !isVisible(); };
-    const QStringList liveNotices =
-        session_->liveNotice().isEmpty() ? QStringList{} : QStringList{session_->liveNotice()};
-    if (shown(timePlot_))
-        timePlot_->showAxis(e, title, s.umaxVolts, liveNotices);
-    if (shown(stepPlot_))
-        showStep(e, a, s.spec, title);
-    if (shown(contourPlot_))
-        contourPlot_->showSession(session_->liveSession(), session_->evaluation(), liveNotices);
-    if (e.ok) {
-        std::vector<std::complex<double>> poles;
-        try {
-            poles = e.closedLoop().poles();
-        } catch (const std::exception&) {
-            poles.clear();
-        }
-        if (shown(rootLocusPlot_)) {
-            LocusRequirements req;
-            req.active = true;
-            req.maxOvershootPct = s.spec.maxOvershootPct;
-            req.maxSettlingTimeSeconds = s.spec.maxSettlingTimeSeconds;
-            if (a.method == DesignMethod::GuilleminTruxal)
-                req.designOmegaNRadPerSec = a.gt.omegaNRadPerSec;
-            rootLocusPlot_->setRequirements(req);
-        }
-        if (shown(rootLocusPlot_))
-            rootLocusPlot_->showLocus(session_->rootLocus(axis), poles,
-                                      tr("Root locus of %1 (K = 1: the design)").arg(title));
-        if (shown(poleZeroPlot_)) {
-            if (zPlaneAction_ && zPlaneAction_->isChecked() && e.digital)
-                poleZeroPlot_->showSets(digitalPoleZeroSets(e),
-                                        tr("Digital loop of %1 in the z-plane (Ts = %2 s)")
-                                            .arg(title)
-                                            .arg(e.digital->tsSeconds));
-            else
-                poleZeroPlot_->showSets(session_->poleZeroSets(axis),
-                                        tr("Pole-zero map of %1").arg(title));
-        }
-        if (shown(parameterLocusPlot_)) {
-            if (a.method == DesignMethod::GuilleminTruxal) {
-                const bool kp = sweptParameter_->currentIndex() == 1;
-                parameterLocusPlot_->showLocus(
-                    session_->parameterLocus(axis,
-                                             kp ? GtSweptParameter::Kp : GtSweptParameter::OmegaN),
-                    poles,
-                    kp ? tr("Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)")
-                             .arg(a.gt.kp / 10, 0, 'g', 3)
-                             .arg(a.gt.kp * 10, 0, 'g', 3)
-                             .arg(a.gt.omegaNRadPerSec)
-                       : tr("Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)")
-                             .arg(a.gt.omegaNRadPerSec / 10, 0, 'g', 3)
-                             .arg(a.gt.omegaNRadPerSec * 10, 0, 'g', 3)
-                             .arg(a.gt.kp));
-            } else if (a.method == DesignMethod::PolePlacementZpetc) {
-                parameterLocusPlot_->showNoResult(
-                    tr("Parameter locus of %1").arg(title),
-                    tr("The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis "
-                       "uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ "
-                       "(pole at z = %1), placed directly by t1.")
-                        .arg(-a.pp.t1, 0, 'g', 4));
-            } else {
-                parameterLocusPlot_->showNoResult(
-                    tr("Parameter locus of %1").arg(title),
-                    tr("The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis "
-                       "uses %1: the root locus shows its poles against the loop gain.")
-                        .arg(methodDisplayName(a.method)));
-            }
-        }
-    } else {
-        // An invalid or failed axis has no locus and no pole-zero map: never an earlier one.
-        const QString reason =
-            tr("No design: %1: %2")
-                .arg(QString::fromStdString(e.errorField), QString::fromStdString(e.error));
-        if (shown(rootLocusPlot_))
-            rootLocusPlot_->showNoResult(tr("Root locus of %1").arg(title), reason);
-        if (shown(poleZeroPlot_))
-            poleZeroPlot_->showNoResult(tr("Pole-zero map of %1").arg(title), reason);
-        if (shown(parameterLocusPlot_))
-            parameterLocusPlot_->showNoResult(tr("Parameter locus of %1").arg(title), reason);
-    }
-    // The frequency domain: drawn from the core's analysis, or its reason.
-    if (shown(bodePlot_) || shown(nyquistPlot_)) {
-        const AxisFrequencyAnalysis& f = session_->frequencyAnalysis(axis);
-        const QString reason =
-            e.ok ? tr("No frequency analysis: %1").arg(QString::fromStdString(f.error))
-                 : tr("No design: %1: %2")
-                       .arg(QString::fromStdString(e.errorField), QString::fromStdString(e.error));
-        if (shown(bodePlot_)) {
-            if (e.ok && f.ok)
-                bodePlot_->showAnalysis(
-                    f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled,
-                    tr("Bode diagram of %1").arg(title),
-                    {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb, e.check.phaseMargin,
-                     e.check.gainMargin});
-            else
-                bodePlot_->showNoResult(tr("Bode diagram of %1").arg(title), reason);
-        }
-        if (shown(nyquistPlot_)) {
-            if (e.ok && f.ok)
-                nyquistPlot_->showCurve(f.nyquist, f.margins,
-                                        tr("Nyquist diagram of %1 (open loop L)").arg(title));
-            else
-                nyquistPlot_->showNoResult(tr("Nyquist diagram of %1").arg(title), reason);
-        }
-    }
-    // Controls that act on one tab are shown with that tab only.
+void MainWindow::buildViews() {
+    timeView_ = new TimeResponseView(session_, timePlot_);
+    poleZeroView_ = new PoleZeroView(session_, poleZeroPlot_);
+    parameterLocusView_ = new ParameterLocusView(session_, parameterLocusPlot_);
+    views_ = {timeView_,
+              new StepResponseView(session_, stepPlot_),
+              new ContourView(session_, contourPlot_),
+              new RootLocusView(session_, rootLocusPlot_),
+              poleZeroView_,
+              parameterLocusView_,
+              new BodeView(session_, bodePlot_),
+              new NyquistView(session_, nyquistPlot_),
+              new MetricsView(session_, metrics_),
+              new EquationsView(session_, equations_)};
+}
+
+void MainWindow::showTabControls() {
     sweptParameter_->setVisible(upperTabs_->currentWidget() == parameterLocusPlot_);
-    sweptParameter_->setEnabled(a.method == DesignMethod::GuilleminTruxal);
     magnification_->setVisible(lowerTabs_->currentWidget() == contourPlot_);
-    contourControls_->sync();
-    metrics_->showEvaluation(s, session_->evaluation(), session_->liveNotice());
-    for (int i = 0; i < 2; ++i)
-        metrics_->showMargins(i, session_->axisEvaluation(i));
-    equations_->showAxis(a, e);
+}
+
+void MainWindow::updateStatus() {
+    const Session& s = session_->session();
     QString state;
     for (int i = 0; i < 2; ++i) {
         const AxisEvaluation& ai = session_->axisEvaluation(i);
@@ -679,42 +637,10 @@ void MainWindow::refresh() {
         else
             state += tr("%1: stable  ").arg(id);
     }
-    if (overlay_ >= static_cast<int>(s.snapshots.size()))
-        overlay_ = -1; // its snapshot was removed (undo, load)
-    overlayMenu_->setEnabled(!s.snapshots.empty());
-    if (overlay_ >= 0) {
-        const auto& snap = s.snapshots.at(static_cast<std::size_t>(overlay_));
-        const AxisEvaluation& overlay =
-            session_->snapshotEvaluation(static_cast<std::size_t>(overlay_), axis);
-        timePlot_->showSnapshot(overlay.ok ? overlay.run : SimulationResult{},
-                                QString::fromStdString(snap.name));
-    } else {
-        timePlot_->showSnapshot(SimulationResult{}, QString());
-    }
-    lastRefreshMs_ = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+    if (changeTimer_.isValid())
+        lastRefreshMs_ = static_cast<double>(changeTimer_.nsecsElapsed()) / 1e6;
     status_->setText(state + tr("| updated in %1 ms").arg(lastRefreshMs_, 0, 'f', 1));
     setWindowModified(session_->isModified());
-}
-
-void MainWindow::showStep(const AxisEvaluation& e, const AxisSettings& a, const Specification& spec,
-                          const QString& title) {
-    const QString stepTitle = tr("Unit step of %1").arg(title);
-    if (!e.ok) {
-        stepPlot_->showNoResult(stepTitle, tr("No design: %1: %2")
-                                               .arg(QString::fromStdString(e.errorField),
-                                                    QString::fromStdString(e.error)));
-        return;
-    }
-    try {
-        const bool pp = e.pp && e.zpetc;
-        stepPlot_->showView(stepView(e.closedLoop(), e.step, specificationEnvelope(spec),
-                                     pp ? &*e.pp : nullptr, pp ? &*e.zpetc : nullptr,
-                                     pp && a.pp.zpetcEnabled),
-                            stepTitle);
-    } catch (const std::exception& ex) {
-        stepPlot_->showNoResult(stepTitle,
-                                tr("No step response: %1").arg(QString::fromUtf8(ex.what())));
-    }
 }
 
 void MainWindow::storeSnapshot(const QString& name) {
@@ -722,8 +648,11 @@ void MainWindow::storeSnapshot(const QString& name) {
 }
 
 void MainWindow::setOverlaySnapshot(int index) {
-    overlay_ = index;
-    refresh();
+    timeView_->setOverlaySnapshot(index);
+}
+
+int MainWindow::overlaySnapshot() const {
+    return timeView_->overlaySnapshot();
 }
 
 void MainWindow::rebuildOverlayMenu() {
@@ -731,17 +660,18 @@ void MainWindow::rebuildOverlayMenu() {
         return;
     overlayMenu_->clear();
     const auto& snapshots = session_->session().snapshots;
-    if (overlay_ >= static_cast<int>(snapshots.size()))
-        overlay_ = -1;
+    const int overlay = timeView_->overlaySnapshot() < static_cast<int>(snapshots.size())
+                            ? timeView_->overlaySnapshot()
+                            : -1;
     QAction* none = overlayMenu_->addAction(tr("None"), this, [this] { setOverlaySnapshot(-1); });
     none->setCheckable(true);
-    none->setChecked(overlay_ < 0);
+    none->setChecked(overlay < 0);
     for (int i = 0; i < static_cast<int>(snapshots.size()); ++i) {
         QAction* a = overlayMenu_->addAction(
             QString::fromStdString(snapshots[static_cast<std::size_t>(i)].name), this,
             [this, i] { setOverlaySnapshot(i); });
         a->setCheckable(true);
-        a->setChecked(overlay_ == i);
+        a->setChecked(overlay == i);
     }
 }
 
@@ -792,6 +722,12 @@ void MainWindow::saveLayout() const {
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/mainSplitter", mainSplitter_->saveState());
     settings.setValue("window/plotSplitter", plotSplitter_->saveState());
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    for (PresenterView* view : views_)
+        view->drawIfStale();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

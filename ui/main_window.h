@@ -3,13 +3,17 @@
 
 #include "core/session/session_evaluation.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
+
+#include <vector>
 
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
 class QGroupBox;
 class QLabel;
+class QScrollArea;
 class QSplitter;
 class QStackedWidget;
 class QTabBar;
@@ -32,6 +36,10 @@ class BodePlot;
 class NyquistPlot;
 class PoleZeroPlot;
 class PpEditor;
+class PresenterView;
+class TimeResponseView;
+class PoleZeroView;
+class ParameterLocusView;
 class MethodParameterEditor;
 class RootLocusPlot;
 class StepPlot;
@@ -88,16 +96,16 @@ public:
     void storeSnapshot(const QString& name);
     /// Overlays snapshot @p index on the time plot (-1: none).
     void setOverlaySnapshot(int index);
-    int overlaySnapshot() const { return overlay_; }
-    /// Time of the last full refresh of every view, in milliseconds.
+    int overlaySnapshot() const;
+    /// Time from the last change of the design to the last view drawn, in milliseconds.
     double lastRefreshMs() const { return lastRefreshMs_; }
-
-public slots:
-    /// Redraws every view from the presenter.
-    void refresh();
+    /// The views that draw the window from the presenter.
+    const std::vector<PresenterView*>& views() const { return views_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// The views drawn before the window was shown are drawn again at their size on screen.
+    void showEvent(QShowEvent* event) override;
     /// Ctrl+Z / Ctrl+Shift+Z in a text field undo and redo the session, as the Edit menu does
     /// (not the field's own text history).
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -162,15 +170,32 @@ private:
     EquationsPanel* equations_ = nullptr;
     QLabel* status_ = nullptr;
     double lastRefreshMs_ = 0.0;
+    QElapsedTimer changeTimer_; ///< started by a design change, read when the views are drawn
+    std::vector<PresenterView*> views_;
+    TimeResponseView* timeView_ = nullptr;
+    PoleZeroView* poleZeroView_ = nullptr;
+    ParameterLocusView* parameterLocusView_ = nullptr;
     SessionFileController* files_ = nullptr;
     RecoveryStore* recovery_ = nullptr;
     QMenu* overlayMenu_ = nullptr;
-    int overlay_ = -1;
     void updateTitle();
     void rebuildOverlayMenu();
-    /// Draws the step view of the axis (its evaluation @p e, settings @p a) against @p spec.
-    void showStep(const AxisEvaluation& e, const AxisSettings& a, const Specification& spec,
-                  const QString& title);
+    /// The left panel of controls, in a scroll area.
+    QScrollArea* buildControlPanel();
+    /// The plots, each in its tab: root locus, parameter locus, pole-zero, Bode and Nyquist
+    /// above (with the swept parameter's box); time, step, contour (with its magnification),
+    /// design space and robustness below.
+    void buildPlots();
+    void buildUpperTabs();
+    void buildLowerTabs();
+    /// The right panel: the metrics and the equations.
+    QWidget* buildSidePanel();
+    /// The views that observe the presenter, one per plot and panel.
+    void buildViews();
+    /// The controls that belong to one tab, shown with it.
+    void showTabControls();
+    /// The status bar's verdict per axis and the time the views took.
+    void updateStatus();
 };
 
 } // namespace xyt::ui

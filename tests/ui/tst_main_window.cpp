@@ -15,6 +15,8 @@
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/tuning_session.h"
+#include "ui/views/step_response_view.h"
+#include "ui/views/time_response_view.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -43,6 +45,7 @@ private slots:
     void invalidCoefficientListIsRejectedAtTheField();
     void sliderStepRelaysNoSplitter();
     void manyWarningsFitA1366x768Window();
+    void viewsObserveThePresenter();
 
 private:
     std::unique_ptr<TuningSession> session_;
@@ -296,6 +299,40 @@ void TstMainWindow::manyWarningsFitA1366x768Window() {
         QVERIFY2(!r.intersects(tableRect), "the warnings cover the metrics table");
         QVERIFY(window_->rect().contains(r));
     }
+}
+
+void TstMainWindow::viewsObserveThePresenter() {
+    // Each plot is drawn by its view, which observes the presenter: a change through the
+    // presenter alone (no window call) redraws what is on screen, marks a view on a hidden tab
+    // stale without drawing it, and the hidden view is drawn when its tab is shown.
+    window_->resize(1366, 768);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    window_->lowerTabs()->setCurrentWidget(window_->timePlot());
+    StepResponseView* step = nullptr;
+    TimeResponseView* time = nullptr;
+    for (PresenterView* view : window_->views()) {
+        step = step ? step : qobject_cast<StepResponseView*>(view);
+        time = time ? time : qobject_cast<TimeResponseView*>(view);
+    }
+    QVERIFY(step && time);
+    QCOMPARE(window_->views().size(), std::size_t(10)); // every plot and both panels
+    const auto settling = [&] {
+        return window_->stepPlot()->settlingMarker()->data()->isEmpty()
+                   ? -1.0
+                   : window_->stepPlot()->settlingMarker()->data()->at(0)->key;
+    };
+    const double before = settling();
+    session_->setOmegaN(0, 3.0);
+    QVERIFY(time->isCurrent());
+    QVERIFY(test::sameSignal(window_->timePlot()->outputGraph()->data(),
+                             session_->axisEvaluation(0).run.t, session_->axisEvaluation(0).run.y));
+    QVERIFY(!step->isCurrent());
+    QCOMPARE(settling(), before); // not drawn while hidden
+    window_->lowerTabs()->setCurrentWidget(window_->stepPlot());
+    QVERIFY(step->isCurrent());
+    QCOMPARE(settling(), session_->axisEvaluation(0).step.settlingTimeSeconds);
+    QCOMPARE(test::plotsMismatch(window_.get(), session_.get()), QString());
 }
 
 QTEST_MAIN(TstMainWindow)

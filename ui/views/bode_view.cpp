@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/views/bode_view.h"
+
+#include "ui/plots/bode_plot.h"
+#include "ui/session/tuning_session.h"
+
+namespace xyt::ui {
+
+BodeView::BodeView(TuningSession* session, BodePlot* plot)
+    : PresenterView(session, plot), plot_(plot) {}
+
+void BodeView::draw() {
+    const int axis = session()->currentAxis();
+    const Session& s = session()->session();
+    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    const AxisEvaluation& e = session()->axisEvaluation(axis);
+    const QString title = tr("Bode diagram of %1").arg(axisTitle());
+    if (!e.ok) {
+        plot_->showNoResult(title, noDesignReason(e));
+        return;
+    }
+    const AxisFrequencyAnalysis& f = session()->frequencyAnalysis(axis);
+    if (!f.ok) {
+        plot_->showNoResult(title,
+                            tr("No frequency analysis: %1").arg(QString::fromStdString(f.error)));
+        return;
+    }
+    plot_->showAnalysis(f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled, title,
+                        {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb, e.check.phaseMargin,
+                         e.check.gainMargin});
+}
+
+} // namespace xyt::ui
