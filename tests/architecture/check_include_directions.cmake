@@ -22,6 +22,7 @@ set(allowed_ui_jobs "")      # the job runner: Qt Core and Concurrent only
 set(allowed_ui_plots "core;ui/session")
 set(allowed_ui_panels "core;ui/session;ui/plots")
 set(allowed_ui_session "core;ui/files")
+set(allowed_ui_views "core;ui/session;ui/plots;ui/panels")
 set(allowed_ui "core;ui")   # views and dialogs at ui/ itself
 set(allowed_app "core;ui;app")
 
@@ -33,7 +34,7 @@ function(folder_of path out)
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
     elseif(path MATCHES "^core/")
         set(${out} "core/" PARENT_SCOPE) # a file left at core/ itself: not allowed
-    elseif(path MATCHES "^(ui/(jobs|plots|panels|session|files))/")
+    elseif(path MATCHES "^(ui/(jobs|plots|panels|session|files|views))/")
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
     elseif(path MATCHES "^(ui|app|tests)/")
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
