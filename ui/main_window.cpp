@@ -11,7 +11,7 @@
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/fitted_stack.h"
 #include "ui/panels/implementation_editor.h"
-#include "ui/panels/method_parameter_editor.h"
+#include "ui/panels/method_editor.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
@@ -323,8 +323,8 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
             page = ppEditor_ = new PpEditor(methodPages_);
         } else {
             method_->addItem(methodDisplayName(module->method()));
-            auto* editor = new MethodParameterEditor(*module, methodPages_);
-            parameterEditors_.push_back(editor);
+            MethodEditor* editor = createMethodEditor(*module, methodPages_);
+            methodEditors_.push_back(editor);
             page = editor;
         }
         methodPages_->addWidget(page);
@@ -439,10 +439,10 @@ void MainWindow::connectControls() {
             [this](const PpAxisSettings& pp, int mergeKey) {
                 session_->setPp(session_->currentAxis(), pp, mergeKey);
             });
-    for (MethodParameterEditor* editor : parameterEditors_)
-        connect(editor, &MethodParameterEditor::parameterEdited, this,
-                [this](const std::string& name, double value) {
-                    session_->setMethodParameter(session_->currentAxis(), name, value);
+    for (MethodEditor* editor : methodEditors_)
+        connect(editor, &MethodEditor::settingsEdited, this,
+                [this](const AxisSettings& settings, const QString& description) {
+                    session_->setAxis(session_->currentAxis(), settings, description);
                 });
     connect(implementationToggle_, &QToolButton::toggled, this, [this](bool open) {
         implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
@@ -568,7 +568,7 @@ void MainWindow::syncControls() {
         methodPages_->setCurrentIndex(page);
     }
     ppEditor_->setSettings(a.pp);
-    for (MethodParameterEditor* editor : parameterEditors_)
+    for (MethodEditor* editor : methodEditors_)
         editor->setSettings(a);
     plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
     trajectoryEditor_->setTrajectory(s.trajectory);

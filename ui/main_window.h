@@ -40,7 +40,7 @@ class PresenterView;
 class TimeResponseView;
 class PoleZeroView;
 class ParameterLocusView;
-class MethodParameterEditor;
+class MethodEditor;
 class RootLocusPlot;
 class StepPlot;
 class SessionFileController;
@@ -161,7 +161,7 @@ private:
     NyquistPlot* nyquistPlot_ = nullptr;
     QComboBox* sweptParameter_ = nullptr;
     PpEditor* ppEditor_ = nullptr;
-    std::vector<MethodParameterEditor*> parameterEditors_; ///< of the registered methods
+    std::vector<MethodEditor*> methodEditors_; ///< of the registered methods
     QStackedWidget* methodPages_ = nullptr;
     ContourPlot* contourPlot_ = nullptr;
     StaleVeil* timeVeil_ = nullptr;

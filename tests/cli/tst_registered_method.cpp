@@ -27,6 +27,7 @@
 #include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/panels/equations_panel.h"
+#include "ui/panels/method_editor.h"
 #include "ui/panels/method_parameter_editor.h"
 #include "ui/panels/number_field.h"
 #include "ui/robustness_view.h"
@@ -34,12 +35,14 @@
 #include "ui/session/tuning_session.h"
 #include "ui/snapshot_compare_dialog.h"
 
+#include <QDoubleSpinBox>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QProcess>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
+#include <QTemporaryFile>
 #include <QTest>
 #include <QUndoStack>
 
@@ -233,6 +236,30 @@ QByteArray runCli(const QStringList& command, int* exitCode) {
     return capture.readAll();
 }
 
+/// A method's own editor panel: the gain as a spin box.
+class GainKnob final : public MethodEditor {
+    Q_OBJECT
+public:
+    explicit GainKnob(QWidget* parent) : MethodEditor(parent), box_(new QDoubleSpinBox(this)) {
+        box_->setRange(0.001, 1000.0);
+        connect(box_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+            AxisSettings next = current_;
+            next.parameters["kp"] = v;
+            emit settingsEdited(next, QStringLiteral("Turn the gain knob"));
+        });
+    }
+    void setSettings(const AxisSettings& settings) override {
+        current_ = settings;
+        const QSignalBlocker quiet(box_);
+        box_->setValue(settings.parameters.count("kp") ? settings.parameters.at("kp") : 30.0);
+    }
+    QDoubleSpinBox* box() const { return box_; }
+
+private:
+    QDoubleSpinBox* box_;
+    AxisSettings current_;
+};
+
 /// @p window shown at 1600 x 1000 on proportionalSession(), set through @p session as one step.
 bool openOnProportionalSession(TuningSession& session, MainWindow& window) {
     session.apply(proportionalSession(), "proportional");
@@ -254,6 +281,8 @@ private slots:
     void everyViewOfTheWorkbenchDrawsIt();
     void itsEditorChangesTheDesign();
     void robustnessAndDesignSpaceTakeIt();
+    // Last: it registers an editor, which every window built afterwards shows.
+    void aRegisteredEditorReplacesTheParameterEditor();
 
 private:
     QTemporaryDir dir_;
@@ -526,6 +555,28 @@ void TstRegisteredMethod::robustnessAndDesignSpaceTakeIt() {
     QTest::mouseClick(space->runButton(), Qt::LeftButton);
     QVERIFY2(space->statusLabel()->text().contains("uses proportional control"),
              qPrintable(space->statusLabel()->text()));
+}
+
+void TstRegisteredMethod::aRegisteredEditorReplacesTheParameterEditor() {
+    registerMethodEditor(kProportional,
+                         [](const DesignMethodModule&, QWidget* parent) -> MethodEditor* {
+                             return new GainKnob(parent);
+                         });
+    TuningSession session;
+    MainWindow window(&session);
+    QVERIFY(openOnProportionalSession(session, window));
+    QVERIFY(!window.findChild<MethodParameterEditor*>()); // the method's own editor instead
+    auto* knob = window.findChild<GainKnob*>();
+    QVERIFY(knob && knob->isVisible());
+    QCOMPARE(knob->box()->value(), 20.0);
+    const int steps = session.undoStack()->count();
+    knob->box()->setValue(7.5);
+    QCOMPARE(session.session().axes[0].parameters.at("kp"), 7.5);
+    QCOMPARE(session.undoStack()->count(), steps + 1);
+    QCOMPARE(session.undoStack()->undoText(), QString("Turn the gain knob"));
+    QVERIFY(window.equationsPanel()->text().contains("kp = 7.5"));
+    session.undoStack()->undo();
+    QCOMPARE(knob->box()->value(), 20.0); // the window keeps the editor in step
 }
 
 QTEST_MAIN(TstRegisteredMethod)

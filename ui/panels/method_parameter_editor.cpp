@@ -11,7 +11,7 @@
 namespace xyt::ui {
 
 MethodParameterEditor::MethodParameterEditor(const DesignMethodModule& module, QWidget* parent)
-    : QWidget(parent), method_(module.method()), parameters_(module.parameters()) {
+    : MethodEditor(parent), parameters_(module.parameters()) {
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
     if (parameters_.empty())
@@ -38,12 +38,19 @@ MethodParameterEditor::MethodParameterEditor(const DesignMethodModule& module, Q
                                                                  QString::fromStdString(p.unit));
         form->addRow(label, field);
         fields_[p.name] = field;
-        connect(field, &NumberField::valueAccepted, this,
-                [this, key = p.name](double v) { emit parameterEdited(key, v); });
+        connect(field, &NumberField::valueAccepted, this, [this, key = p.name](double v) {
+            AxisSettings next = current_;
+            next.parameters[key] = v;
+            emit settingsEdited(next, tr("Set %1 of %2 to %3")
+                                          .arg(QString::fromStdString(key),
+                                               QString::fromStdString(current_.id).toUpper())
+                                          .arg(v));
+        });
     }
 }
 
 void MethodParameterEditor::setSettings(const AxisSettings& settings) {
+    current_ = settings;
     for (const MethodParameter& p : parameters_) {
         const auto it = settings.parameters.find(p.name);
         fields_.at(p.name)->setValue(it == settings.parameters.end() ? p.defaultValue : it->second);

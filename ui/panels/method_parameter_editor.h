@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/session/design_method_module.h"
-
-#include <QWidget>
+#include "ui/panels/method_editor.h"
 
 #include <map>
 #include <string>
@@ -15,24 +13,21 @@ class NumberField;
 /**
  * The editor of a registered design method whose settings are numbers
  * (DesignMethodModule::parameters): one field per parameter, labelled with its name and unit,
- * refusing at the field a value outside its range. The workbench gives every such method this
- * editor, so a method needs no editor code of its own.
+ * refusing at the field a value outside its range; an accepted value is one undo step. The
+ * workbench gives this editor to a method registered without one of its own, so a method whose
+ * settings are numbers needs no editor code.
  */
-class MethodParameterEditor : public QWidget {
+class MethodParameterEditor : public MethodEditor {
     Q_OBJECT
 public:
     MethodParameterEditor(const DesignMethodModule& module, QWidget* parent = nullptr);
     /// Shows @p settings' values (a parameter the settings lack shows its default).
-    void setSettings(const AxisSettings& settings);
+    void setSettings(const AxisSettings& settings) override;
     /// The field of parameter @p name, or null.
     NumberField* field(const std::string& name) const;
-    DesignMethod method() const { return method_; }
-
-signals:
-    void parameterEdited(const std::string& name, double value);
 
 private:
-    DesignMethod method_;
+    AxisSettings current_;
     std::vector<MethodParameter> parameters_;
     std::map<std::string, NumberField*> fields_;
 };

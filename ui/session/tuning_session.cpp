@@ -336,15 +336,6 @@ void TuningSession::setMethod(int axis, DesignMethod method) {
     apply(next, tr("Change the design method"));
 }
 
-void TuningSession::setMethodParameter(int axis, const std::string& name, double value) {
-    Session next = session_;
-    next.axes.at(static_cast<std::size_t>(axis)).parameters[name] = value;
-    apply(
-        next,
-        tr("Set %1 of %2 to %3").arg(QString::fromStdString(name), axisName(next, axis)).arg(value),
-        kMergeMethodParameter + axis);
-}
-
 void TuningSession::setPp(int axis, const PpAxisSettings& pp, int mergeKey) {
     Session next = session_;
     next.axes.at(static_cast<std::size_t>(axis)).pp = pp;

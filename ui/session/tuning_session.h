@@ -123,9 +123,6 @@ public:
     // Convenience setters (each one apply() step). Axis index 0 = x, 1 = y.
     void setMethod(int axis, DesignMethod method);
     void setPp(int axis, const PpAxisSettings& pp, int mergeKey = -1);
-    /// One of a registered method's parameters (AxisSettings::parameters); successive changes of
-    /// the same axis merge into one undo step, as a slider's do.
-    void setMethodParameter(int axis, const std::string& name, double value);
     void setSpecification(const Specification& spec);
     void setOmegaN(int axis, double omegaNRadPerSec);
     void setKp(int axis, double kp);
@@ -183,6 +180,6 @@ private:
 QString methodDisplayName(DesignMethod method);
 
 /// Merge keys for slider drags: one per parameter and axis.
-enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300, kMergeMethodParameter = 400 };
+enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300 };
 
 } // namespace xyt::ui
