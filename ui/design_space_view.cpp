@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/design_space_view.h"
+#include "ui/plots/number_text.h"
 
 #include "core/model/errors.h"
 #include "core/session/session_evaluation.h"
@@ -95,14 +96,6 @@ SweepCriterion selected(const QComboBox* box) {
     return static_cast<SweepCriterion>(box->currentData().toInt());
 }
 
-QString num(double v, int digits = 4) {
-    return QString::number(v, 'g', digits);
-}
-
-QString axisName(const Session& s, int axis) {
-    return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
-}
-
 /// The criteria a design fails, for the readout.
 QStringList failures(const DesignPoint& p, const Specification& spec) {
     QStringList out;
@@ -114,39 +107,40 @@ QStringList failures(const DesignPoint& p, const Specification& spec) {
         out << QObject::tr("the run diverged");
     if (p.stable && !p.check.settlingTime)
         out << QObject::tr("settling %1 s > %2 s")
-                   .arg(num(p.step.settlingTimeSeconds))
-                   .arg(num(spec.maxSettlingTimeSeconds));
+                   .arg(significant(p.step.settlingTimeSeconds, 4))
+                   .arg(significant(spec.maxSettlingTimeSeconds, 4));
     if (p.stable && !p.check.overshoot)
         out << QObject::tr("overshoot %1 % > %2 %")
-                   .arg(num(p.step.overshootPct))
-                   .arg(num(spec.maxOvershootPct));
+                   .arg(significant(p.step.overshootPct, 4))
+                   .arg(significant(spec.maxOvershootPct, 4));
     if (p.metricsFinite && !p.check.noSaturation)
-        out << (p.tracking.saturated ? QObject::tr("|u| saturates at %1 V").arg(num(spec.umaxVolts))
-                                     : QObject::tr("|u| %1 V > %2 V")
-                                           .arg(num(p.tracking.maxAbsU))
-                                           .arg(num(spec.umaxVolts)));
+        out << (p.tracking.saturated
+                    ? QObject::tr("|u| saturates at %1 V").arg(significant(spec.umaxVolts, 4))
+                    : QObject::tr("|u| %1 V > %2 V")
+                          .arg(significant(p.tracking.maxAbsU, 4))
+                          .arg(significant(spec.umaxVolts, 4)));
     if (p.stable && !p.check.phaseMargin)
         out << QObject::tr("phase margin %1° < %2°")
-                   .arg(num(p.phaseMarginDeg))
-                   .arg(num(spec.minPhaseMarginDeg));
+                   .arg(significant(p.phaseMarginDeg, 4))
+                   .arg(significant(spec.minPhaseMarginDeg, 4));
     if (p.stable && !p.check.gainMargin)
         out << QObject::tr("gain margin %1 dB < %2 dB")
-                   .arg(num(p.gainMarginDb))
-                   .arg(num(spec.minGainMarginDb));
+                   .arg(significant(p.gainMarginDb, 4))
+                   .arg(significant(spec.minGainMarginDb, 4));
     if (p.metricsFinite && !p.check.trackingError)
         out << QObject::tr("max error %1 % > %2 %")
-                   .arg(num(p.tracking.maxAbsErrorPct))
-                   .arg(num(spec.maxErrorPct));
+                   .arg(significant(p.tracking.maxAbsErrorPct, 4))
+                   .arg(significant(spec.maxErrorPct, 4));
     return out;
 }
 
 QString describePoint(const DesignPoint& p, const Specification& spec, SweepCriterion metric) {
     const QString value = std::isfinite(criterionMetric(p, metric))
-                              ? num(criterionMetric(p, metric))
+                              ? significant(criterionMetric(p, metric), 4)
                               : QObject::tr("—");
     QString text = QObject::tr("ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5")
-                       .arg(num(p.wn))
-                       .arg(num(p.kp))
+                       .arg(significant(p.wn, 4))
+                       .arg(significant(p.kp, 4))
                        .arg(metricLabel(metric))
                        .arg(value)
                        .arg(p.feasible ? QObject::tr("yes") : QObject::tr("no"));
@@ -580,7 +574,7 @@ void DesignSpaceView::showOutcome() {
                "inputs rest.\n")
                     .arg(result_->wnValues.size())
                     .arg(result_->kpValues.size())
-                    .arg(num(problem_->dtSeconds, 3))
+                    .arg(significant(problem_->dtSeconds, 3))
                     .arg(qRound(lastElapsedMs_)) +
                 status_->text(),
             !status_->styleSheet().isEmpty());
@@ -619,11 +613,13 @@ void DesignSpaceView::showOutcomeText() {
     if (r.bestIndex) {
         const DesignPoint& b = r.points[*r.bestIndex];
         text += tr("\nBest on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.")
-                    .arg(num(b.wn), num(b.kp), crit, num(criterionMetric(b, r.criterion)));
+                    .arg(significant(b.wn, 4), significant(b.kp, 4), crit,
+                         significant(criterionMetric(b, r.criterion), 4));
         if (r.refined && r.refined->improved) {
             const DesignPoint& p = r.refined->point;
             text += tr("\nRefined (◆): ωn = %1 rad/s, kp = %2, %3 = %4.")
-                        .arg(num(p.wn), num(p.kp), crit, num(criterionMetric(p, r.criterion)));
+                        .arg(significant(p.wn, 4), significant(p.kp, 4), crit,
+                             significant(criterionMetric(p, r.criterion), 4));
         }
         text += tr("\nClick a cell to load its design.");
         setStatus(text, diagnosis_->onEdge());

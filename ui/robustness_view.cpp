@@ -34,14 +34,15 @@ namespace xyt::ui {
 
 namespace {
 
-QString num(double v, int digits = 4) {
+QString figure(double v, int digits = 4) {
     return std::isfinite(v) ? QString::number(v, 'g', digits) : QStringLiteral("n/a");
 }
 
 QString parameterList(const std::vector<std::string>& names, const std::vector<double>& values) {
     QStringList parts;
     for (std::size_t i = 0; i < names.size(); ++i)
-        parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(names[i]), num(values[i], 6));
+        parts << QStringLiteral("%1 = %2").arg(QString::fromStdString(names[i]),
+                                               figure(values[i], 6));
     return parts.join(QStringLiteral(", "));
 }
 
@@ -294,7 +295,7 @@ void RobustnessView::rebuildRanges() {
                                  "share of its nominal")
                                   .arg(name)
                             : tr("%1: nominal %2; drawn uniformly within ± this share of it")
-                                  .arg(name, num(p.nominal, 6)));
+                                  .arg(name, figure(p.nominal, 6)));
         rangeForm_->addRow(name, box);
         ranges_.insert(name, box);
     }
@@ -472,7 +473,7 @@ QString RobustnessView::axisSummary(const RobustnessResult& r) const {
     QString text = countsText(tr("plants"), r.computedCount, r.runs.size(), samples_->value(),
                               r.status == RobustnessStatus::Cancelled);
     text += tr("%1 % meet the spec (the nominal %2); %3 unstable.")
-                .arg(num(100.0 * r.fractionMeetingSpec, 3))
+                .arg(figure(100.0 * r.fractionMeetingSpec, 3))
                 .arg(r.nominal.meetsSpec ? tr("does") : tr("does not"))
                 .arg(r.unstable.size());
     const std::vector<UncertainParameter>& parameters = problem_->parameters;
@@ -481,7 +482,7 @@ QString RobustnessView::axisSummary(const RobustnessResult& r) const {
                     [](const UncertainParameter& p) { return p.relative > 0.0; });
     if (r.worst && anyVaried)
         text += tr("\nWorst: RMSE %1 mm at %2.")
-                    .arg(num(r.runs[*r.worst].tracking.rmse),
+                    .arg(figure(r.runs[*r.worst].tracking.rmse),
                          variedParameters(r.parameterNames, parameters, r.runs[*r.worst].values));
     if (!r.unstable.empty() && anyVaried)
         text += tr("\nUnstable, e.g. at %1.")
@@ -499,12 +500,12 @@ QString RobustnessView::contourSummary(const ContourRobustnessResult& r) const {
     const Distribution& d = r.maxAbsContourError;
     text += d.count > 0
                 ? tr("max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.")
-                      .arg(num(d.p50), num(d.p95), num(r.nominal.maxAbsContourError))
+                      .arg(figure(d.p50), figure(d.p95), figure(r.nominal.maxAbsContourError))
                       .arg(r.unstable.size())
                 : tr("no stable pair; %1 unstable.").arg(r.unstable.size());
     if (r.worst)
         text += tr("\nWorst: %1 mm at %2.")
-                    .arg(num(r.runs[*r.worst].maxAbsContourError),
+                    .arg(figure(r.runs[*r.worst].maxAbsContourError),
                          variedParameters(r.parameterNames, parameters, r.runs[*r.worst].values));
     if (!r.unstable.empty())
         text += tr("\nUnstable, e.g. at %1.")

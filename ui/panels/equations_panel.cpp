@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/equations_panel.h"
+#include "ui/plots/number_text.h"
 
 #include "core/session/design_method_module.h"
 
@@ -8,12 +9,6 @@
 #include <cmath>
 
 namespace xyt::ui {
-
-namespace {
-QString num(double v) {
-    return QString::number(v, 'g', 6);
-}
-} // namespace
 
 QString polynomialHtml(const Polynomial& p, const QString& variable) {
     if (p.isZero())
@@ -27,7 +22,7 @@ QString polynomialHtml(const Polynomial& p, const QString& variable) {
         out += first ? (c < 0 ? "−" : "") : (c < 0 ? " − " : " + ");
         const double mag = std::abs(c);
         if (mag != 1.0 || i == 0)
-            out += num(mag);
+            out += significant(mag, 6);
         if (i > 0)
             out += variable + (i > 1 ? QString("<sup>%1</sup>").arg(i) : QString());
         first = false;
@@ -43,7 +38,7 @@ QString zInverseHtml(const Polynomial& p) {
         if (c == 0.0)
             continue;
         out += first ? (c < 0 ? "−" : "") : (c < 0 ? " − " : " + ");
-        out += num(std::abs(c));
+        out += significant(std::abs(c), 6);
         if (i > 0)
             out += QStringLiteral(" z<sup>−%1</sup>").arg(i);
         first = false;
@@ -83,19 +78,19 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
     if (axis.pp) {
         const PolePlacementDesign& pp = *axis.pp;
         QString html = tr("<b>Axis %1 — pole placement + ZPETC</b> (T<sub>s</sub> = %2 s)<br>")
-                           .arg(id, num(pp.tsSeconds));
+                           .arg(id, significant(pp.tsSeconds, 6));
         html += tr("A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)<br>");
         html += tr("A = %1<br>B = %2<br>T = %3<br>")
                     .arg(zInverseHtml(pp.a), zInverseHtml(pp.b), zInverseHtml(pp.t));
         html += tr("F = %1<br>G = %2<br>").arg(zInverseHtml(pp.f), zInverseHtml(pp.g));
         html += tr("K<sub>f</sub> = T(1)/B(1) = %1, residual %2<br>")
-                    .arg(num(pp.kf), QString::number(pp.residual, 'g', 2));
+                    .arg(significant(pp.kf, 6), QString::number(pp.residual, 'g', 2));
         html += tr("control law: F u = K<sub>f</sub> w − G y<br>");
         if (axis.zpetc && settings.pp.zpetcEnabled) {
             const ZpetcDesign& z = *axis.zpetc;
             html += tr("ZPETC: w(k) = N/D · r(k + %1), [B<sup>−</sup>(1)]<sup>2</sup> = %2<br>")
                         .arg(z.previewSteps)
-                        .arg(num(z.gainFactor));
+                        .arg(significant(z.gainFactor, 6));
             html += tr("N = %1<br>D = %2")
                         .arg(zInverseHtml(z.feedforwardNum), zInverseHtml(z.feedforwardDen));
         } else {
@@ -123,16 +118,17 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
     QString html;
     html += tr("<b>Axis %1 — Guillemin–Truxal PI</b> (ω<sub>n</sub> = %2 rad/s, k<sub>p</sub> = "
                "%3)<br>")
-                .arg(id, num(wn), num(d.kp));
-    html += tr("f<sub>1</sub> = a<sub>1</sub>/ω<sub>n</sub> = %1<br>").arg(num(d.f1));
-    html += tr("f<sub>2</sub> = a<sub>2</sub>/ω<sub>n</sub><sup>2</sup> = %1<br>").arg(num(d.f2));
+                .arg(id, significant(wn, 6), significant(d.kp, 6));
+    html += tr("f<sub>1</sub> = a<sub>1</sub>/ω<sub>n</sub> = %1<br>").arg(significant(d.f1, 6));
+    html += tr("f<sub>2</sub> = a<sub>2</sub>/ω<sub>n</sub><sup>2</sup> = %1<br>")
+                .arg(significant(d.f2, 6));
     html += tr("f<sub>3</sub> = k<sub>p</sub>k<sub>0</sub>/ω<sub>n</sub><sup>3</sup> = %1<br>")
-                .arg(num(d.f3));
+                .arg(significant(d.f3, 6));
     html += tr("ψ<sub>1</sub> = ω<sub>n</sub><sup>4</sup>/(k<sub>p</sub>k<sub>0</sub>) = %1, "
                "ψ<sub>2</sub> = %2<br>")
-                .arg(num(d.psi1), num(d.psi2));
-    html += tr("k<sub>i</sub> = k<sub>p</sub>ψ<sub>1</sub> = %1<br>").arg(num(d.ki));
-    html += tr("G<sub>c</sub>(s) = %1 + %2/s<br>").arg(num(d.kp), num(d.ki));
+                .arg(significant(d.psi1, 6), significant(d.psi2, 6));
+    html += tr("k<sub>i</sub> = k<sub>p</sub>ψ<sub>1</sub> = %1<br>").arg(significant(d.ki, 6));
+    html += tr("G<sub>c</sub>(s) = %1 + %2/s<br>").arg(significant(d.kp, 6), significant(d.ki, 6));
     html += tr("G<sub>R</sub>(s) = (%1) / (%2)")
                 .arg(polynomialHtml(d.referenceModel.num(), "s"),
                      polynomialHtml(d.referenceModel.den(), "s"));

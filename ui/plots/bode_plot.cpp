@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/bode_plot.h"
+#include "ui/plots/number_text.h"
 
 #include "ui/plots/plot_tools.h"
 
@@ -18,15 +19,12 @@ const QColor kWith{0x94, 0x67, 0xbd};
 const QColor kMargin{0xc6, 0x28, 0x28}; ///< a margin that fails its minimum (or is negative)
 const QColor kMet{0x1b, 0x7f, 0x2a};    ///< one that meets it: the metrics panel's check colours
 
-QString num(double v, int digits = 3) {
-    return QString::number(v, 'g', digits);
-}
-
 /// " ✓ ≥ 30°" / " ✗ < 30°" after a margin label when the specification states a minimum.
 QString requirementText(bool met, double minimum, const QString& unit) {
     if (!(minimum > 0.0))
         return met ? QString() : QStringLiteral(" ✗");
-    return (met ? QStringLiteral(" ✓ ≥ ") : QStringLiteral(" ✗ < ")) + num(minimum) + unit;
+    return (met ? QStringLiteral(" ✓ ≥ ") : QStringLiteral(" ✗ < ")) + significant(minimum, 3) +
+           unit;
 }
 
 /// Graph data of one response (non-finite values are left out: a pole on the axis).
@@ -285,7 +283,9 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
         addVerticalMarker(magRect_, wpc, -m.gainMarginDb, 0.0,
                           QPen(color, req.gainMarginMet ? 1.6 : 2.4));
         addLabel(magRect_, wpc, -0.5 * m.gainMarginDb,
-                 tr("GM %1 dB at %2 rad/s").arg(num(m.gainMarginDb)).arg(num(wpc)) +
+                 tr("GM %1 dB at %2 rad/s")
+                         .arg(significant(m.gainMarginDb, 3))
+                         .arg(significant(wpc, 3)) +
                      requirementText(req.gainMarginMet, req.minGainMarginDb, tr(" dB")),
                  color, Qt::AlignLeft | Qt::AlignVCenter);
     }
@@ -298,7 +298,9 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
                           QPen(color, req.phaseMarginMet ? 1.6 : 2.4));
         addLabel(
             phaseRect_, wgc, 0.5 * (phase + minus180),
-            tr("PM %1° at %2 rad/s").arg(num(m.phaseMarginDeg)).arg(num(wgc)) +
+            tr("PM %1° at %2 rad/s")
+                    .arg(significant(m.phaseMarginDeg, 3))
+                    .arg(significant(wgc, 3)) +
                 requirementText(req.phaseMarginMet, req.minPhaseMarginDeg, QStringLiteral("°")),
             color, Qt::AlignLeft | Qt::AlignVCenter);
         auto* line = new QCPItemStraightLine(this);
@@ -338,7 +340,7 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     };
     if (std::isfinite(a.referenceOmegaRadPerSec) && a.referenceOmegaRadPerSec > 0.0)
         frequencyLine(a.referenceOmegaRadPerSec,
-                      tr("reference ω = %1").arg(num(a.referenceOmegaRadPerSec)),
+                      tr("reference ω = %1").arg(significant(a.referenceOmegaRadPerSec, 3)),
                       QColor(0x55, 0x55, 0x55));
     if (openLoop_.tsSeconds > 0.0)
         frequencyLine(std::numbers::pi / openLoop_.tsSeconds, tr("Nyquist π/Ts"),
@@ -390,9 +392,9 @@ void BodePlot::onMouseMove(QMouseEvent* event) {
         const std::vector<double>& w = openLoop_.omegaRadPerSec;
         if (omega >= w.front() && omega <= w.back())
             text = tr("ω = %1 rad/s   |L| = %2 dB   ∠L = %3°")
-                       .arg(num(omega, 4))
-                       .arg(num(interpolate(w, openLoop_.magnitudeDb, omega), 4))
-                       .arg(num(interpolate(w, openLoop_.phaseDeg, omega), 4));
+                       .arg(significant(omega, 4))
+                       .arg(significant(interpolate(w, openLoop_.magnitudeDb, omega), 4))
+                       .arg(significant(interpolate(w, openLoop_.phaseDeg, omega), 4));
     }
     setReadoutText(this, readout_, text);
 }

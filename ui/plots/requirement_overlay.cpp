@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/requirement_overlay.h"
+#include "ui/plots/number_text.h"
 
 #include "core/analysis/damping_grid.h"
 #include "ui/plots/plane_grid.h"
@@ -18,10 +19,6 @@ const QColor kBoundary{0xc6, 0x28, 0x28};
 const QColor kShade{0xd6, 0x27, 0x28, 16}; // light: the locus stays readable through it
 const QColor kOmega{0x94, 0x67, 0xbd};
 const QColor kAllowed{0x2c, 0xa0, 0x2c, 90};
-
-QString num(double v, int digits = 3) {
-    return QString::number(v, 'g', digits);
-}
 
 QCPCurve* makeCurve(QCustomPlot* plot, const QPen& pen, const QBrush& brush = Qt::NoBrush) {
     auto* c = new QCPCurve(plot->xAxis, plot->yAxis);
@@ -152,9 +149,10 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
         setPoints(dampingShade_, shade);
     // zeta = 1: the allowed set is a line, drawn as a wide translucent green strip.
     damping_->setPen(zeta >= 1.0 ? QPen(kAllowed, 4.0) : QPen(kBoundary, 1.6, Qt::DashLine));
-    damping_->setName(
-        zeta >= 1.0 ? QObject::tr("ζ = 1 (Mp 0 %)")
-                    : QObject::tr("ζ ≥ %1 (Mp %2 %)").arg(num(zeta), num(req.maxOvershootPct)));
+    damping_->setName(zeta >= 1.0
+                          ? QObject::tr("ζ = 1 (Mp 0 %)")
+                          : QObject::tr("ζ ≥ %1 (Mp %2 %)")
+                                .arg(significant(zeta, 3), significant(req.maxOvershootPct, 3)));
     damping_->addToLegend();
 
     // Settling: Re s <= sigma, or |z| <= exp(sigma Ts).
@@ -168,13 +166,15 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
             s.insert(s.end(), ring.begin(), ring.end());
             setPoints(settlingShade_, s);
             settling_->setName(
-                QObject::tr("|z| ≤ %1 (ts %2 s)").arg(num(r, 4), num(req.maxSettlingTimeSeconds)));
+                QObject::tr("|z| ≤ %1 (ts %2 s)")
+                    .arg(significant(r, 4), significant(req.maxSettlingTimeSeconds, 3)));
         } else {
             setPoints(settling_, {Complex(sigma, far), Complex(sigma, -far)});
             setPoints(settlingShade_,
                       {{sigma, -far}, {far, -far}, {far, far}, {sigma, far}, {sigma, -far}});
             settling_->setName(
-                QObject::tr("σ ≤ %1 (ts %2 s)").arg(num(sigma), num(req.maxSettlingTimeSeconds)));
+                QObject::tr("σ ≤ %1 (ts %2 s)")
+                    .arg(significant(sigma, 3), significant(req.maxSettlingTimeSeconds, 3)));
         }
         settling_->addToLegend();
     }
@@ -185,13 +185,14 @@ void RequirementOverlay::show(const LocusRequirements& req, double ts, double ex
         setPoints(
             omega_,
             sPlaneDampingGrid({}, {req.designOmegaNRadPerSec}, far).frequencyLines.front().points);
-        omega_->setName(QObject::tr("reference model ωn %1").arg(num(req.designOmegaNRadPerSec)));
+        omega_->setName(
+            QObject::tr("reference model ωn %1").arg(significant(req.designOmegaNRadPerSec, 3)));
         omega_->addToLegend();
     }
     if (const auto pair = dominantPair(closedLoopPoles, ts)) {
         setComplexPoints(dominant_, {pair->pole, std::conj(pair->pole)});
         dominant_->setName(QObject::tr("dominant poles: ωn %1 rad/s, ζ %2")
-                               .arg(num(pair->omegaN), num(pair->zeta, 2)));
+                               .arg(significant(pair->omegaN, 3), significant(pair->zeta, 2)));
         dominant_->addToLegend();
     }
 

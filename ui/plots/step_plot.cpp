@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/plots/step_plot.h"
+#include "ui/plots/number_text.h"
 
 #include "ui/plots/plot_tools.h"
 
@@ -13,10 +14,6 @@ const QColor kOther{0x7f, 0x7f, 0x7f};
 const QColor kMarker{0x11, 0x11, 0x11};
 const QColor kEnvelope{0xd6, 0x27, 0x28};
 const QColor kForbidden{0xd6, 0x27, 0x28, 28};
-
-QString num(double v, int digits = 3) {
-    return QString::number(v, 'g', digits);
-}
 
 QString curveName(StepCurveKind kind, bool runs) {
     switch (kind) {
@@ -214,17 +211,18 @@ void StepPlot::showView(const StepView& view, const QString& title) {
     // The envelope: the overshoot bound everywhere, the band from the settling limit on, the
     // forbidden side shaded.
     if (std::isfinite(bound)) {
-        overshootLine_->setName(tr("overshoot ≤ %1 %").arg(num(env.maxOvershootPct)));
+        overshootLine_->setName(tr("overshoot ≤ %1 %").arg(significant(env.maxOvershootPct, 3)));
         overshootLine_->data()->set({QCPGraphData(tMin, bound), QCPGraphData(tMax, bound)}, true);
         addShade(tMin, bound, true);
         if (!boundInView)
             notes << tr("overshoot limit %1 (%2 %) is above the view")
-                         .arg(num(bound, 4), num(env.maxOvershootPct));
+                         .arg(significant(bound, 4), significant(env.maxOvershootPct, 3));
     }
     const double ts = env.settlingTimeSeconds;
     if (std::isfinite(ts)) {
         const double half = env.band * std::abs(env.finalValue);
-        bandUpper_->setName(tr("±%1 % after %2 s").arg(num(100.0 * env.band)).arg(num(ts)));
+        bandUpper_->setName(
+            tr("±%1 % after %2 s").arg(significant(100.0 * env.band, 3)).arg(significant(ts, 3)));
         if (ts < tMax) {
             bandUpper_->data()->set({QCPGraphData(ts, env.finalValue + half),
                                      QCPGraphData(tMax, env.finalValue + half)},
@@ -236,7 +234,7 @@ void StepPlot::showView(const StepView& view, const QString& title) {
             addShade(ts, env.finalValue - half, false);
         } else {
             notes << tr("settling limit %1 s lies beyond the right edge (%2 s)")
-                         .arg(num(ts), num(tMax));
+                         .arg(significant(ts, 3), significant(tMax, 3));
         }
     }
     // Where the response leaves the envelope: its samples in red, gaps elsewhere.
@@ -270,8 +268,8 @@ void StepPlot::showView(const StepView& view, const QString& title) {
                     tHalf -= (c.t[k] - c.t[k - 1]) * (c.y[k] - 0.5 * fin) / (c.y[k] - c.y[k - 1]);
                 break;
             }
-        addLabel(tHalf, 0.5 * fin, tr("  rise %1 s").arg(num(view.rise.seconds)), kMarker,
-                 Qt::AlignLeft | Qt::AlignVCenter);
+        addLabel(tHalf, 0.5 * fin, tr("  rise %1 s").arg(significant(view.rise.seconds, 3)),
+                 kMarker, Qt::AlignLeft | Qt::AlignVCenter);
     } else {
         notes << tr("the response never reaches 90 % of its final value in view");
     }
@@ -279,9 +277,9 @@ void StepPlot::showView(const StepView& view, const QString& title) {
     // peak worth a marker.
     if (st.overshootPct > env.overshootSlackPct) {
         const double peakValue = fin * (1.0 + st.overshootPct / 100.0);
-        const QString text =
-            tr("peak %1 at %2 s (%3 %)")
-                .arg(num(peakValue, 4), num(st.peakTimeSeconds), num(st.overshootPct));
+        const QString text = tr("peak %1 at %2 s (%3 %)")
+                                 .arg(significant(peakValue, 4), significant(st.peakTimeSeconds, 3),
+                                      significant(st.overshootPct, 3));
         if (st.peakTimeSeconds <= tMax) {
             peak_->data()->set({QCPGraphData(st.peakTimeSeconds, peakValue)}, true);
             addLabel(st.peakTimeSeconds, peakValue, text, kMarker, Qt::AlignLeft | Qt::AlignBottom);
@@ -298,8 +296,9 @@ void StepPlot::showView(const StepView& view, const QString& title) {
             side = c.y[k] >= fin ? 1.0 : -1.0;
         const double y = fin + side * 0.02 * std::abs(fin);
         settling_->data()->set({QCPGraphData(st.settlingTimeSeconds, y)}, true);
-        addLabel(st.settlingTimeSeconds, y, tr("settles %1 s").arg(num(st.settlingTimeSeconds)),
-                 kMarker, Qt::AlignLeft | (side > 0 ? Qt::AlignBottom : Qt::AlignTop));
+        addLabel(st.settlingTimeSeconds, y,
+                 tr("settles %1 s").arg(significant(st.settlingTimeSeconds, 3)), kMarker,
+                 Qt::AlignLeft | (side > 0 ? Qt::AlignBottom : Qt::AlignTop));
     }
     if (anyBad)
         notes << tr("red: the response leaves the specification's envelope");
@@ -337,7 +336,8 @@ void StepPlot::onMouseMove(QMouseEvent* event) {
             const double s =
                 it->key > before->key ? (t - before->key) / (it->key - before->key) : 0.0;
             const double y = before->value + s * (it->value - before->value);
-            text = tr("t = %1 s   y = %2   (%3)").arg(num(t, 4), num(y, 5), main_->name());
+            text = tr("t = %1 s   y = %2   (%3)")
+                       .arg(significant(t, 4), significant(y, 5), main_->name());
         }
     }
     setReadoutText(this, readout_, text);

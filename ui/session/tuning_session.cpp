@@ -145,12 +145,11 @@ QString axisPlantWords(const Session& s, int axis) {
              QString::number(a.gt.plant.a2, 'g', 5));
 }
 
-/// "X" or "Y": the axis as the window names it.
+} // namespace
+
 QString axisName(const Session& s, int axis) {
     return QString::fromStdString(s.axes.at(static_cast<std::size_t>(axis)).id).toUpper();
 }
-
-} // namespace
 
 QString TuningSession::describe(const ResultStamp& stamp) {
     const Session& s = stamp.session;

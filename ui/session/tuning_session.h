@@ -176,6 +176,9 @@ private:
     std::uint64_t revision_ = 0;
 };
 
+/// "X" or "Y": axis @p axis of @p s as the window names it.
+QString axisName(const Session& s, int axis);
+
 /// The name the workbench shows for @p method (its module's displayName).
 QString methodDisplayName(DesignMethod method);
 
