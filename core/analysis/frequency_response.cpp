@@ -2,6 +2,7 @@
 #include "core/analysis/frequency_response.h"
 
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,6 @@
 namespace xyt {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 /// Relative residual below which z = 1 counts as a root of a discrete polynomial: integrators
 /// typed as (z - 1) products evaluate to round-off there, a genuine root at 1 - 1e-10 is an

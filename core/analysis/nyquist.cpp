@@ -15,7 +15,6 @@ namespace xyt {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kPi = std::numbers::pi;
 
 /// A pole is on the boundary when |Re s| <= this |s| (continuous) or ||z| - 1| <= this
 /// (discrete): the computed roots of an undamped pair scatter by round-off, those of a double

@@ -16,8 +16,6 @@ namespace xyt {
 namespace {
 
 using Complex = std::complex<double>;
-constexpr double kPi = std::numbers::pi;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// A root u of a real polynomial counts as real when |Im u| <= this * |u|. Loose on purpose:
 /// a tangency (double root) comes out of the companion matrix with an imaginary part of about

@@ -4,6 +4,7 @@
 #include "core/identification/continuous_fit.h"
 #include "core/identification/least_squares.h"
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 #include "core/model/polynomial.h"
 
@@ -14,8 +15,6 @@
 namespace xyt {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<double> filtered(const std::vector<double>& num, const std::vector<double>& den,
                              const std::vector<double>& x) {

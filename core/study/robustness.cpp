@@ -5,6 +5,7 @@
 #include "core/analysis/stability_margins.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/model/errors.h"
+#include "core/model/math_constants.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/zpetc_step.h"
@@ -18,8 +19,6 @@
 namespace xyt {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The value of parameter @p name among @p values, or @p fallback when it is not uncertain.
 double valueOf(const RobustnessProblem& problem, const std::vector<double>& values,

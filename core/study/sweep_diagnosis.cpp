@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/sweep_diagnosis.h"
 
+#include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 
 #include <algorithm>
@@ -11,7 +12,6 @@ namespace xyt {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr SpecCriterion kCriteria[] = {SpecCriterion::Stable,        SpecCriterion::SettlingTime,
                                        SpecCriterion::Overshoot,     SpecCriterion::NoSaturation,
                                        SpecCriterion::TrackingError, SpecCriterion::Settle,
