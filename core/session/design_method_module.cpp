@@ -39,6 +39,11 @@ std::string shown(double v) {
     return formatNumber(v);
 }
 
+/// "name = value unit".
+std::string coefficientText(const DesignCoefficient& c) {
+    return c.name + " = " + shown(c.value) + (c.unit.empty() ? "" : " " + c.unit);
+}
+
 } // namespace
 
 std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*settings*/,
@@ -47,7 +52,7 @@ std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*s
     for (const DesignCoefficient& c : coefficients(axis)) {
         if (!line.empty())
             line += ", ";
-        line += c.name + " = " + shown(c.value) + (c.unit.empty() ? "" : " " + c.unit);
+        line += coefficientText(c);
     }
     if (line.empty())
         return {};
@@ -58,7 +63,7 @@ std::vector<std::string> DesignMethodModule::equations(const AxisSettings& /*set
                                                        const AxisEvaluation& axis) const {
     std::vector<std::string> lines;
     for (const DesignCoefficient& c : coefficients(axis))
-        lines.push_back(c.name + " = " + shown(c.value) + (c.unit.empty() ? "" : " " + c.unit));
+        lines.push_back(coefficientText(c));
     return lines;
 }
 
@@ -92,13 +97,17 @@ void registerDesignMethodModule(std::unique_ptr<const DesignMethodModule> module
             throw InvalidInput("method", "a method with the value or the id of '" + id +
                                              "' is registered already");
     for (const MethodParameter& p : module->parameters())
-        if (!isKey(p.name, false) || !(p.minimum <= p.defaultValue) ||
+        if (!isMethodParameterName(p.name) || !(p.minimum <= p.defaultValue) ||
             !(p.defaultValue <= p.maximum))
             throw InvalidInput("method", "the parameter '" + p.name + "' of '" + id +
                                              "' needs a name of lower-case letters, digits and "
                                              "'_' and minimum <= default <= maximum");
     registry().push_back(module.get());
     registeredModules().push_back(std::move(module));
+}
+
+bool isMethodParameterName(std::string_view name) {
+    return isKey(name, false);
 }
 
 double methodParameterValue(const AxisSettings& settings, int axisIndex,

@@ -189,6 +189,9 @@ const std::vector<const DesignMethodModule*>& designMethodModules();
  */
 void registerDesignMethodModule(std::unique_ptr<const DesignMethodModule> module);
 
+/// Whether @p name can name a method's parameter: 1 to 32 lower-case letters, digits or '_'.
+bool isMethodParameterName(std::string_view name);
+
 /**
  * The value of @p parameter of axis @p axisIndex: AxisSettings::parameters' entry, or the
  * parameter's default when the session has none. Throws InvalidInput naming

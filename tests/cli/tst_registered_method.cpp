@@ -347,7 +347,7 @@ void TstRegisteredMethod::sessionFileHoldsItsParameters() {
     const QJsonObject json = sessionToJson(s);
     const QJsonObject x = json["axes"].toArray()[0].toObject();
     QCOMPARE(x["method"].toString(), QString("proportional"));
-    QCOMPARE(x["parameters"].toObject()["kp"].toDouble(), 20.0);
+    QCOMPARE(x["parameters"].toObject()["kp"].toDouble(), 20.0); // exact in binary and decimal
     const SessionLoadResult back = sessionFromJson(json);
     QVERIFY2(back.ok, qPrintable(back.message()));
     QVERIFY(back.session == s);
@@ -381,6 +381,7 @@ void TstRegisteredMethod::everyExportWritesIt() {
     const QJsonObject x = json["axes"].toArray()[0].toObject();
     QCOMPARE(x["method"].toString(), QString("proportional"));
     QCOMPARE(x["coefficients"].toArray()[0].toObject()["name"].toString(), QString("kp"));
+    // (20 is exact in binary and in JSON's decimal text: an exact comparison.)
     QCOMPARE(x["coefficients"].toArray()[0].toObject()["value"].toDouble(), 20.0);
     // The firmware header holds the module's block and compiles; one step of it is u = kp e UNIT.
     const std::string header = exportCHeader(s, e);
@@ -408,6 +409,8 @@ void TstRegisteredMethod::everyExportWritesIt() {
     QVERIFY(run.waitForFinished(60000));
     const QList<QByteArray> u = run.readAllStandardOutput().trimmed().split(' ');
     QCOMPARE(u.size(), 2);
+    // Exact: the C step computes (KP (r - y)) UNIT in double, the operations written here, and
+    // prints 17 significant digits, which read back to the same double.
     QCOMPARE(u[0].toDouble(), 20.0 * 10.0 * 0.001); // kp e UNIT, inside the limit
     QCOMPARE(u[1].toDouble(), s.umaxVolts);         // clipped at +umax
     // The Octave script has the module's controller and closed loop.

@@ -358,11 +358,7 @@ std::map<std::string, double> readMethodParameters(ObjectReader r, DesignMethod 
     std::map<std::string, double> out;
     for (const QString& key : keys) {
         const QString path = join(r.path(), key);
-        const bool wellNamed =
-            !key.isEmpty() && key.size() <= 32 && std::all_of(key.begin(), key.end(), [](QChar c) {
-                return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-            });
-        if (!wellNamed)
+        if (!isMethodParameterName(key.toStdString()))
             throw FormatError{path, QStringLiteral("must be named by 1 to 32 lower-case letters, "
                                                    "digits or '_'")};
         const double v = r.number(key);

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/method_parameter_editor.h"
 
-#include "core/model/errors.h"
-#include "core/model/number_format.h"
 #include "ui/panels/number_field.h"
 
 #include <QFormLayout>
@@ -18,13 +16,13 @@ MethodParameterEditor::MethodParameterEditor(const DesignMethodModule& module, Q
         form->addRow(new QLabel(tr("This method has no settings."), this));
     for (const MethodParameter& p : parameters_) {
         const QString name = QString::fromStdString(p.name);
+        // The core's check, so the field says what the evaluation and the session file say.
         auto* field = new NumberField(
             "parameters." + name,
             [p](double v) {
-                if (v < p.minimum || v > p.maximum)
-                    throw InvalidInput(p.name, "must be within " + xyt::formatNumber(p.minimum) +
-                                                   " .. " + xyt::formatNumber(p.maximum) +
-                                                   (p.unit.empty() ? "" : " " + p.unit));
+                AxisSettings probe;
+                probe.parameters[p.name] = v;
+                methodParameterValue(probe, 0, p);
             },
             this);
         field->setAccessibleName(QString::fromStdString(p.label));
