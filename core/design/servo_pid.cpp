@@ -22,7 +22,8 @@ ServoPidState servoPidAtRest(double position) {
 }
 
 ServoPidTerms stepServoPid(const ServoPidGains& g, ServoPidState& s, double command,
-                           double feedback, double tsSeconds) {
+                           double feedback, double tsSeconds,
+                           const ServoPidCommandDerivatives* given) {
     const double rate = 1.0 / tsSeconds;
     ServoPidTerms t;
     double e = limited(command - feedback, g.maxError);
@@ -36,7 +37,7 @@ ServoPidTerms stepServoPid(const ServoPidGains& g, ServoPidState& s, double comm
     if (e * s.limitState <= 0.0) // not pushing further into the output limit
         s.errorI += e * tsSeconds;
     s.errorI = limited(s.errorI, g.maxErrorI);
-    const double commandV = (command - s.previousCommand) * rate;
+    const double commandV = given ? given->velocity : (command - s.previousCommand) * rate;
     const double feedbackV = (feedback - s.previousFeedback) * rate;
     const double d = g.derivativeOnMeasurement ? -feedbackV : commandV - feedbackV;
     if (g.derivativeFilterSeconds > 0.0)
@@ -48,9 +49,11 @@ ServoPidTerms stepServoPid(const ServoPidGains& g, ServoPidState& s, double comm
     const double previousD = s.commandD, previousDD = s.commandDD;
     s.commandD = commandV;
     s.commandDD = (s.commandD - previousD) * rate;
+    if (given)
+        s.commandDD = given->acceleration;
     t.commandD = s.commandD;
     t.commandDD = s.commandDD;
-    t.commandDDD = (s.commandDD - previousDD) * rate;
+    t.commandDDD = given ? given->jerk : (s.commandDD - previousDD) * rate;
     s.previousCommand = command;
     s.previousFeedback = feedback;
     t.feedback = g.bias + g.p * e + g.i * s.errorI + g.d * t.errorD;

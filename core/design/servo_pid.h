@@ -76,10 +76,24 @@ struct ServoPidTerms {
 ServoPidState servoPidAtRest(double position);
 
 /**
+ * The command's derivatives as the trajectory generator gives them (mm/s, mm/s^2, mm/s^3), for a
+ * PID whose derivative inputs are connected (LinuxCNC's `command-deriv` pin): the feedforward and
+ * the D term read them instead of backward differences of the command.
+ */
+struct ServoPidCommandDerivatives {
+    double velocity = 0.0;
+    double acceleration = 0.0;
+    double jerk = 0.0;
+};
+
+/**
  * One sample of the PID at period @p tsSeconds (> 0): the output for @p command and
- * @p feedback (mm), updating @p state.
+ * @p feedback (mm), updating @p state. With @p given, the command's first, second and third
+ * derivatives are those values (the D term then reads given->velocity - fb'); without, the
+ * backward differences above.
  */
 ServoPidTerms stepServoPid(const ServoPidGains& gains, ServoPidState& state, double command,
-                           double feedback, double tsSeconds);
+                           double feedback, double tsSeconds,
+                           const ServoPidCommandDerivatives* given = nullptr);
 
 } // namespace xyt

@@ -12,8 +12,8 @@ AxisTrace ContinuousPlantMethod::tracePath(const Session& session, int axisIndex
                                            double dtSeconds) const {
     const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
     AxisTrace out;
-    out.run = traceContinuousAxis(axis, axisIndex, designedController(axis, axisIndex), reference,
-                                  dtSeconds, session.umaxVolts);
+    out.run = traceContinuousAxis(axis, axisIndex, designedController(session, axisIndex),
+                                  reference, dtSeconds, session.umaxVolts);
     out.outputOnPath = out.run.y;
     return out;
 }

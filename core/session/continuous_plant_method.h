@@ -16,10 +16,9 @@ class ContinuousPlantMethod : public DesignMethodModule {
 public:
     /// The controller of an evaluated design (volts per model unit of error).
     virtual TransferFunction evaluatedController(const AxisEvaluation& axis) const = 0;
-    /// The controller that axis @p axisIndex's settings design, without a run. Throws
-    /// InvalidInput naming the session field of a setting that allows no design.
-    virtual TransferFunction designedController(const AxisSettings& settings,
-                                                int axisIndex) const = 0;
+    /// The controller that axis @p axisIndex's settings in @p session design, without a run.
+    /// Throws InvalidInput naming the session field of a setting that allows no design.
+    virtual TransferFunction designedController(const Session& session, int axisIndex) const = 0;
 
     AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
                         const std::vector<double>& reference, double dtSeconds) const override;

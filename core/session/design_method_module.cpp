@@ -4,6 +4,7 @@
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/guillemin_truxal_method.h"
+#include "core/session/pid_feedforward_method.h"
 #include "core/session/pole_placement_method.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@ std::vector<const DesignMethodModule*>& registry() {
     static std::vector<const DesignMethodModule*> modules = {
         &guilleminTruxalMethod(),
         &polePlacementMethod(),
+        &pidFeedforwardMethod(),
     };
     return modules;
 }

@@ -232,9 +232,9 @@ public:
     TransferFunction evaluatedController(const AxisEvaluation& axis) const override {
         return axis.gt->controller;
     }
-    TransferFunction designedController(const AxisSettings& settings,
-                                        int axisIndex) const override {
-        return sessionGtDesign(settings.gt, axisIndex).controller;
+    TransferFunction designedController(const Session& session, int axisIndex) const override {
+        return sessionGtDesign(session.axes.at(static_cast<std::size_t>(axisIndex)).gt, axisIndex)
+            .controller;
     }
 
     std::string cController(const Session& session, const AxisEvaluation& axis, int axisIndex,

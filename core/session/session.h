@@ -46,9 +46,10 @@ private:
 /// start-up (registerDesignMethodModule, core/session/design_method_module.h) takes a value of
 /// its own.
 enum class DesignMethod : int {
-    GuilleminTruxal,   ///< continuous PI by the reference-model method (Braga et al.)
-    PolePlacementZpetc ///< discrete RST pole placement + ZPETC feedforward (Patrick, Ishak and
-                       ///< Adnan)
+    GuilleminTruxal,    ///< continuous PI by the reference-model method (Braga et al.)
+    PolePlacementZpetc, ///< discrete RST pole placement + ZPETC feedforward (Patrick, Ishak and
+                        ///< Adnan)
+    PidFeedforward      ///< the drives' PID with command feedforward (LinuxCNC's pid)
 };
 
 /// The Guillemin-Truxal parameters of one axis.
@@ -106,7 +107,13 @@ struct AxisSettings {
     friend bool operator==(const AxisSettings&, const AxisSettings&) = default;
 };
 
+/// The trajectory: a point-to-point move (Cubic: its profile is TrajectorySettings::profile),
+/// the circle, or a G-code program.
 enum class TrajectoryKind { Cubic, Circle, Gcode };
+
+/// The profile of a point-to-point move: Braga et al.'s cubic (CubicTrajectory), or the quintic
+/// with zero acceleration at both ends that machine builders use (QuinticTrajectory).
+enum class MoveProfile { Cubic, Quintic };
 
 /**
  * A G-code program as a trajectory. The program text is held in the session, so a
@@ -129,6 +136,7 @@ struct GcodeTrajectory {
 struct TrajectorySettings {
     TrajectoryKind kind = TrajectoryKind::Cubic;
     double x0 = 0.0, xf = 600.0, t0Seconds = 0.0, tfSeconds = 130.0, v0 = 0.0, vf = 0.0;
+    MoveProfile profile = MoveProfile::Cubic; ///< of the point-to-point move
     double radius = 25.0, omegaRadPerSec = 0.06, rampInSeconds = 10.0;
     GcodeTrajectory gcode;
     /// 0: automatic. A circle runs one revolution plus the ramp-in. A cubic runs past tf until

@@ -26,6 +26,11 @@ std::function<double(double)> axisReference(const TrajectorySettings& trajectory
     // Core checks name their own argument ("xf", "radius"); the session's user knows the path.
     try {
         if (trajectory.kind == TrajectoryKind::Cubic) {
+            if (trajectory.profile == MoveProfile::Quintic) {
+                const QuinticTrajectory quintic(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
+                                                trajectory.tfSeconds, trajectory.v0, trajectory.vf);
+                return [quintic](double t) { return quintic.position(t); };
+            }
             const CubicTrajectory cubic(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
                                         trajectory.tfSeconds, trajectory.v0, trajectory.vf);
             return [cubic](double t) { return cubic.position(t); };
@@ -45,6 +50,35 @@ std::function<double(double)> axisReference(const TrajectorySettings& trajectory
     } catch (const InvalidInput& e) {
         throw InvalidInput("trajectory.circle." + e.field(), e.reason());
     }
+}
+
+std::function<MotionSample(double)> axisMotion(const TrajectorySettings& trajectory,
+                                               int axisIndex) {
+    const std::function<double(double)> position = axisReference(trajectory, axisIndex);
+    if (trajectory.kind == TrajectoryKind::Cubic) {
+        // axisReference has checked the move, so these constructors do not throw.
+        if (trajectory.profile == MoveProfile::Quintic) {
+            const QuinticTrajectory q(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
+                                      trajectory.tfSeconds, trajectory.v0, trajectory.vf);
+            return [q](double t) { return q.motion(t); };
+        }
+        const CubicTrajectory c(trajectory.x0, trajectory.xf, trajectory.t0Seconds,
+                                trajectory.tfSeconds, trajectory.v0, trajectory.vf);
+        return [c](double t) { return c.motion(t); };
+    }
+    if (trajectory.kind == TrajectoryKind::Circle) {
+        const Circle circle{trajectory.radius, trajectory.omegaRadPerSec, 0.0, 0.0,
+                            trajectory.rampInSeconds};
+        const Sinusoid s = axisIndex == 0 ? circle.xAxis() : circle.yAxis();
+        return [s](double t) { return s.motion(t); };
+    }
+    const double h = trajectory.dtSeconds > 0.0 ? trajectory.dtSeconds : 0.01;
+    return [position, h](double t) {
+        const double p = position(t), p1 = position(t + h), m1 = position(t - h);
+        const double p2 = position(t + 2.0 * h), m2 = position(t - 2.0 * h);
+        return MotionSample{p, (p1 - m1) / (2.0 * h), (p1 - 2.0 * p + m1) / (h * h),
+                            (p2 - 2.0 * p1 + 2.0 * m1 - m2) / (2.0 * h * h * h)};
+    };
 }
 
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {

@@ -151,6 +151,16 @@ struct SessionEvaluation {
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex);
 
 /**
+ * The reference of axis @p axisIndex with its first three derivatives, as a feedforward reads
+ * them from the trajectory generator: exact for the point-to-point move (CubicTrajectory::motion,
+ * QuinticTrajectory::motion) and the circle (Sinusoid::motion); for a G-code program, whose feed
+ * profile is given by its positions, central differences of the position with the step h =
+ * trajectory.dt: r' = (r(t+h) - r(t-h))/2h, r'' = (r(t+h) - 2 r(t) + r(t-h))/h^2, r''' =
+ * (r(t+2h) - 2 r(t+h) + 2 r(t-h) - r(t-2h))/2h^3 (second order in h). Refusals as axisReference.
+ */
+std::function<MotionSample(double)> axisMotion(const TrajectorySettings& trajectory, int axisIndex);
+
+/**
  * The duration of the session's runs: the set duration, one revolution plus the ramp-in for the
  * circle, or for an automatic cubic tf plus the settle (see RunDuration), which simulates both
  * axes up to tf once to estimate it.

@@ -211,6 +211,70 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
     return run;
 }
 
+SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const ServoPidGains& gains,
+                                       double tsSeconds, const std::vector<MotionSample>& command,
+                                       CommandDerivativeSource source,
+                                       const SampledDataOptions& options,
+                                       double modelUnitsPerPositionUnit) {
+    validateSampledDataOptions(options);
+    requirePositive(modelUnitsPerPositionUnit, "model_unit_scale");
+    const SampledPlant p = sampledPlant(plant, tsSeconds);
+    if (command.empty())
+        throw InvalidInput("reference", "needs 1 samples, got 0");
+    for (std::size_t i = 0; i < command.size(); ++i) {
+        const MotionSample& m = command[i];
+        if (!std::isfinite(m.position) || !std::isfinite(m.velocity) ||
+            !std::isfinite(m.acceleration) || !std::isfinite(m.jerk))
+            throw InvalidInput("reference",
+                               "sample " + std::to_string(i) + " is not a finite number");
+    }
+    const double unit = modelUnitsPerPositionUnit;
+    const std::size_t n = command.size();
+    SampledDataRun run;
+    resizeRun(run, n, tsSeconds, options.umaxVolts);
+    run.result.uFeedforward.resize(n);
+    const std::size_t ns = static_cast<std::size_t>(p.states);
+    std::vector<double> x(ns, 0.0), next(ns);
+    ServoPidState state = servoPidAtRest(command.front().position);
+    state.previousFeedback = 0.0;
+    DelayLine delay(options.delaySamples, 0.0);
+    const Dac dac(options.dacBits, options.umaxVolts);
+    const double umax = options.umaxVolts;
+    SimulationResult& out = run.result;
+    for (std::size_t k = 0; k < n; ++k) {
+        double y = 0.0;
+        for (std::size_t j = 0; j < ns; ++j)
+            y += p.c[j] * x[j];
+        const double position = y / unit;
+        const double measured = encoderReading(position, options.encoderResolution);
+        const MotionSample& c = command[k];
+        const ServoPidCommandDerivatives given{c.velocity, c.acceleration, c.jerk};
+        const ServoPidTerms terms =
+            stepServoPid(gains, state, c.position, measured, tsSeconds,
+                         source == CommandDerivativeSource::TrajectoryGenerator ? &given : nullptr);
+        const bool clip = std::abs(terms.output) > umax;
+        const double u = clip ? std::copysign(umax, terms.output) : terms.output;
+        const double applied = delay.push(dac(u));
+        out.t[k] = static_cast<double>(k) * tsSeconds;
+        out.r[k] = c.position;
+        out.y[k] = position;
+        out.e[k] = c.position - position;
+        out.u[k] = u;
+        out.uFeedforward[k] = terms.feedforward;
+        out.clipped[k] = clip || terms.output != terms.feedback + terms.feedforward;
+        run.measured[k] = measured;
+        run.applied[k] = applied;
+        for (std::size_t i = 0; i < ns; ++i) {
+            double acc = 0.0;
+            for (std::size_t j = 0; j < ns; ++j)
+                acc += p.phi[i * ns + j] * x[j];
+            next[i] = acc + p.gamma[i] * applied;
+        }
+        x.swap(next);
+    }
+    return run;
+}
+
 SampledDataRun simulateSampledRst(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
                                   const std::vector<double>& r, std::size_t samples,
                                   const SampledDataOptions& options) {

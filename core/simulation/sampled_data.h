@@ -3,9 +3,11 @@
 
 #include "core/design/digital_controller.h"
 #include "core/design/pole_placement.h"
+#include "core/design/servo_pid.h"
 #include "core/design/zpetc.h"
 #include "core/model/transfer_function.h"
 #include "core/simulation/simulation.h"
+#include "core/simulation/trajectory.h"
 
 #include <cmath>
 #include <complex>
@@ -99,6 +101,33 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
                                  const std::vector<double>& reference,
                                  const SampledDataOptions& options,
                                  double modelUnitsPerPositionUnit = 1.0);
+
+/// Where a servo PID's feedforward reads the command's derivatives.
+enum class CommandDerivativeSource {
+    /// Backward differences of the commanded position each period, as LinuxCNC's `pid` forms
+    /// them when its derivative pins are not connected.
+    BackwardDifferences,
+    /// The trajectory generator's own velocity, acceleration and jerk at the sample instant.
+    TrajectoryGenerator
+};
+
+/**
+ * The loop a servo PID with feedforward runs on a continuous plant (stepServoPid, LinuxCNC's
+ * `pid` semantics): every Ts the encoder reads y (mm), the PID computes u from the command
+ * @p command[k].position and that reading, the output is clipped at +-umax and the DAC quantizes
+ * it, and after delaySamples a zero-order hold applies it to the plant (exact between samples,
+ * sampledPlant, in model units: y_model = unit * y_mm). The plant starts at rest at 0 with the
+ * PID's previous command at the first command (no derivative kick at the first sample) and its
+ * previous feedback at 0. result.u is the clipped output, result.uFeedforward its FF0..FF3 part,
+ * and `clipped` marks samples where the PID's own limit or umax cut the output.
+ * @param command r(k Ts) and, for CommandDerivativeSource::TrajectoryGenerator, its derivatives
+ * @throws InvalidInput as simulateSampledPi, "ts" unless > 0.
+ */
+SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const ServoPidGains& gains,
+                                       double tsSeconds, const std::vector<MotionSample>& command,
+                                       CommandDerivativeSource source,
+                                       const SampledDataOptions& options,
+                                       double modelUnitsPerPositionUnit = 1.0);
 
 /**
  * The pole-placement loop (F u = Kf w - G y_measured on the ARX plant A y = B u) with encoder,

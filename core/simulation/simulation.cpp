@@ -115,8 +115,8 @@ struct FlatStep {
 template <int N>
 void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc,
              const FlatStep& linear, const FlatStep& clipped, bool limited, double umax,
-             double unit, double dt, const std::vector<double>& reference, double* xInOut,
-             SimulationResult& out) {
+             double unit, double dt, const std::vector<double>& reference, const double* ff,
+             double* xInOut, SimulationResult& out) {
     const int n = N > 0 ? N : runtimeN;
     const int nc = n - np;
     constexpr int kMax = 16; // a loop of more states takes the run-time path below
@@ -131,7 +131,8 @@ void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc
     double* next = nextHeap.empty() ? nextBuffer : nextHeap.data();
     for (int i = 0; i < n; ++i)
         x[i] = xInOut[i];
-    double phiL[N > 0 ? N * N : 1], g0L[N > 0 ? N : 1], g1L[N > 0 ? N : 1];
+    // The linear mode has one input (r), or two (r, uff) with a feedforward.
+    double phiL[N > 0 ? N * N : 1], g0L[N > 0 ? 2 * N : 1], g1L[N > 0 ? 2 * N : 1];
     double phiC[N > 0 ? N * N : 1], g0C[N > 0 ? 2 * N : 1], g1C[N > 0 ? 2 * N : 1];
     if constexpr (N > 0) {
         std::copy(linear.phi.begin(), linear.phi.end(), phiL);
@@ -153,7 +154,7 @@ void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc
         for (int j = 0; j < np; ++j)
             y += cp[j] * x[j];
         const double rk = reference[k] * unit;
-        double v = dc * (rk - y);
+        double v = dc * (rk - y) + (ff ? ff[k] : 0.0);
         for (int j = 0; j < nc; ++j)
             v += cc[j] * x[np + j];
         const bool clip = limited && std::abs(v) > umax;
@@ -167,8 +168,9 @@ void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc
             break;
         const double slope = (reference[k + 1] - reference[k]) * unit / dt;
         const FlatStep& step = clip ? clipped : linear;
-        const double w[2] = {rk, u};
-        const double rho[2] = {slope, 0.0};
+        const double ffSlope = ff ? (ff[k + 1] - ff[k]) / dt : 0.0;
+        const double w[2] = {rk, clip ? u : (ff ? ff[k] : 0.0)};
+        const double rho[2] = {slope, clip ? 0.0 : ffSlope};
         const int m = step.inputs;
         const double* phi = N > 0 ? (clip ? phiC : phiL) : step.phi.data();
         const double* g0 = N > 0 ? (clip ? g0C : g0L) : step.g0.data();
@@ -205,7 +207,20 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
     const Eigen::Index np = modes.plantStates;
     const Eigen::Index nc = modes.controllerStates;
     const Eigen::Index n = np + nc;
-    const FlatStep linear(fohStep(modes.aLinear, modes.bLinear, options.dtSeconds));
+    const double* ff = nullptr;
+    if (options.feedforwardVolts && !options.feedforwardVolts->empty()) {
+        if (options.feedforwardVolts->size() != reference.size())
+            throw InvalidInput("feedforward", "must have one sample per reference sample");
+        requireFiniteSignal(*options.feedforwardVolts, "feedforward");
+        ff = options.feedforwardVolts->data();
+    }
+    // With a feedforward the linear mode's second input is uff, entering where u does.
+    Eigen::MatrixXd bLinear = modes.bLinear;
+    if (ff) {
+        bLinear.conservativeResize(Eigen::NoChange, 2);
+        bLinear.col(1) = modes.bClipped.col(1);
+    }
+    const FlatStep linear(fohStep(modes.aLinear, bLinear, options.dtSeconds));
     const bool limited = std::isfinite(options.umaxVolts);
     FlatStep clipped;
     if (limited)
@@ -235,6 +250,10 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
     for (std::vector<double>* v : {&out.t, &out.y, &out.e, &out.u})
         v->resize(count);
     out.clipped.resize(count);
+    if (ff)
+        out.uFeedforward.assign(ff, ff + count);
+    else
+        out.uFeedforward.clear();
     const std::vector<double> cp(modes.plantC.data(), modes.plantC.data() + np);
     const std::vector<double> cc(modes.controllerC.data(), modes.controllerC.data() + nc);
     const double umax = options.umaxVolts;
@@ -243,10 +262,10 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
     const int plantStates = static_cast<int>(np);
     if (states == 4) // a third-order plant under a PI controller: every Guillemin-Truxal loop
         runLoop<4>(4, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped,
-                   limited, umax, unit, dt, reference, x.data(), out);
+                   limited, umax, unit, dt, reference, ff, x.data(), out);
     else
         runLoop<0>(states, plantStates, cp.data(), cc.data(), modes.controllerD, linear, clipped,
-                   limited, umax, unit, dt, reference, x.data(), out);
+                   limited, umax, unit, dt, reference, ff, x.data(), out);
 }
 
 SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunction& controller,

@@ -24,6 +24,13 @@ struct LoopSimulationOptions {
      * initialOutput is in reference units.
      */
     double modelUnitsPerPositionUnit = 1.0;
+    /**
+     * A feedforward added to the controller's output before the limit, in volts at the
+     * reference's samples and linear between them (as the reference is): u = sat(C e + uff).
+     * Null or empty for none (then the run is the feedback loop's, bit for bit). It must have
+     * the reference's length.
+     */
+    const std::vector<double>* feedforwardVolts = nullptr;
 };
 
 /// Sampled signals of one run: t, reference r, output y, error e = r - y, actuator command u
@@ -31,6 +38,9 @@ struct LoopSimulationOptions {
 struct SimulationResult {
     std::vector<double> t, r, y, e, u;
     std::vector<bool> clipped;
+    /// The feedforward part of u before the limit (V), when the run has one (else empty): the
+    /// feedback part is u - uFeedforward while u is not clipped.
+    std::vector<double> uFeedforward;
     double dtSeconds = 0.0;
     double umaxVolts = std::numeric_limits<double>::infinity();
 };
@@ -60,8 +70,9 @@ struct LoopModes {
 LoopModes loopModes(const TransferFunction& plant, const TransferFunction& controller);
 
 /**
- * Time simulation of the unity-feedback loop r -> e = r - y -> controller -> sat(., umax) ->
- * continuous plant -> y, with the reference linear between its samples (first-order hold).
+ * Time simulation of the unity-feedback loop r -> e = r - y -> controller -> sat(. + uff, umax)
+ * -> continuous plant -> y, with the reference (and the feedforward uff, when given) linear
+ * between its samples (first-order hold).
  *
  * The loop is piecewise linear: while the controller output v is inside the limits, the closed
  * loop x' = A_cl x + B_cl r is linear; while it is clipped, the plant sees a constant u = +-umax

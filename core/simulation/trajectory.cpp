@@ -50,6 +50,46 @@ double CubicTrajectory::velocity(double t) const {
     return local_[1] + tau * (2.0 * local_[2] + tau * 3.0 * local_[3]);
 }
 
+MotionSample CubicTrajectory::motion(double t) const {
+    if (t <= t0_ || t >= tf_)
+        return {position(t), 0.0, 0.0, 0.0};
+    const double tau = t - t0_;
+    const auto& l = local_;
+    return {position(t), velocity(t), 2.0 * l[2] + 6.0 * l[3] * tau, 6.0 * l[3]};
+}
+
+QuinticTrajectory::QuinticTrajectory(double x0, double xf, double t0Seconds, double tfSeconds,
+                                     double v0, double vf)
+    : x0_(x0), xf_(xf), t0_(t0Seconds), tf_(tfSeconds) {
+    // The cubic's checks, with the same fields and messages.
+    const CubicTrajectory checked(x0, xf, t0Seconds, tfSeconds, v0, vf);
+    const double T = tfSeconds - t0Seconds;
+    const double A = xf - x0 - v0 * T;
+    const double B = vf - v0;
+    local_ = {x0,
+              v0,
+              0.0,
+              (10.0 * A - 4.0 * B * T) / (T * T * T),
+              (-15.0 * A + 7.0 * B * T) / (T * T * T * T),
+              (6.0 * A - 3.0 * B * T) / (T * T * T * T * T)};
+}
+
+MotionSample QuinticTrajectory::motion(double t) const {
+    if (t <= t0_)
+        return {x0_, 0.0, 0.0, 0.0};
+    if (t >= tf_)
+        return {xf_, 0.0, 0.0, 0.0};
+    const double tau = t - t0_;
+    const auto& c = local_;
+    MotionSample m;
+    m.position = c[0] + tau * (c[1] + tau * (c[2] + tau * (c[3] + tau * (c[4] + tau * c[5]))));
+    m.velocity =
+        c[1] + tau * (2.0 * c[2] + tau * (3.0 * c[3] + tau * (4.0 * c[4] + tau * 5.0 * c[5])));
+    m.acceleration = 2.0 * c[2] + tau * (6.0 * c[3] + tau * (12.0 * c[4] + tau * 20.0 * c[5]));
+    m.jerk = 6.0 * c[3] + tau * (24.0 * c[4] + tau * 60.0 * c[5]);
+    return m;
+}
+
 std::array<double, 4> CubicTrajectory::coefficients() const {
     // P(t) = sum_k l_k (t - t0)^k, expanded binomially.
     const double a = -t0_;
@@ -74,6 +114,22 @@ double Sinusoid::value(double t) const {
     const double envelope =
         (rampInSeconds > 0.0 && t < rampInSeconds) ? std::max(t, 0.0) / rampInSeconds : 1.0;
     return offset + amplitude * envelope * std::sin(omegaRadPerSec * t + phaseRad);
+}
+
+MotionSample Sinusoid::motion(double t) const {
+    const double w = omegaRadPerSec;
+    const double th = w * t + phaseRad;
+    const double sn = std::sin(th), cs = std::cos(th);
+    if (rampInSeconds > 0.0 && t < rampInSeconds) {
+        if (t <= 0.0)
+            return {offset, 0.0, 0.0, 0.0};
+        // d^n/dt^n of (A/Tr) t sin(th) by Leibniz: t f^(n) + n f^(n-1), f = sin(th).
+        const double k = amplitude / rampInSeconds;
+        return {offset + k * t * sn, k * (sn + w * t * cs), k * (2.0 * w * cs - w * w * t * sn),
+                k * (-3.0 * w * w * sn - w * w * w * t * cs)};
+    }
+    const double a = amplitude;
+    return {offset + a * sn, a * w * cs, -a * w * w * sn, -a * w * w * w * cs};
 }
 
 Sinusoid Circle::xAxis() const {

@@ -8,6 +8,15 @@
 
 namespace xyt {
 
+/// A reference and its first three time derivatives at one instant (mm, mm/s, mm/s^2, mm/s^3):
+/// what a feedforward reads from the trajectory generator.
+struct MotionSample {
+    double position = 0.0;
+    double velocity = 0.0;
+    double acceleration = 0.0;
+    double jerk = 0.0;
+};
+
 /**
  * Cubic point-to-point trajectory, Braga et al. Eq. 4: P(t) = p0 + p1 t + p2 t^2 + p3 t^3 on
  * [t0, tf], with P(t0) = x0, P'(t0) = v0, P(tf) = xf, P'(tf) = vf. Before t0 the reference holds
@@ -29,6 +38,11 @@ public:
 
     double position(double tSeconds) const;
     double velocity(double tSeconds) const;
+    /// The position and its derivatives: inside (t0, tf) those of the cubic (a constant jerk
+    /// 6 p3), outside it the held position with zero derivatives. The acceleration steps at t0
+    /// and tf (to 2 p2 and from 2 p2 + 6 p3 T): a model-inverse feedforward's jerk term cannot
+    /// follow a step, which is why machine builders use the quintic.
+    MotionSample motion(double tSeconds) const;
     /// p0..p3 of Eq. 4 in absolute time t.
     std::array<double, 4> coefficients() const;
     /// Coefficients of the local-time cubic in tau = t - t0.
@@ -41,6 +55,32 @@ public:
 private:
     double x0_, xf_, t0_, tf_;
     std::array<double, 4> local_{};
+};
+
+/**
+ * The quintic point-to-point move machine builders use: P(t) on [t0, tf] from x0 at velocity v0
+ * to xf at velocity vf with zero acceleration at both ends, so that the acceleration is
+ * continuous everywhere (the jerk steps, the acceleration does not). In local time tau = t - t0,
+ * T = tf - t0, D = xf - x0, A = D - v0 T, B = vf - v0:
+ *   P = x0 + v0 tau + c3 tau^3 + c4 tau^4 + c5 tau^5 with
+ *   c3 T^3 = 10 A - 4 B T, c4 T^4 = -15 A + 7 B T, c5 T^5 = 6 A - 3 B T
+ * (the three end conditions P(tf) = xf, P'(tf) = vf, P''(tf) = 0 solved in closed form; at rest,
+ * v0 = vf = 0, the classical 10 s^3 - 15 s^4 + 6 s^5 of s = tau/T). Before t0 it holds x0, after
+ * tf it holds xf.
+ */
+class QuinticTrajectory {
+public:
+    /// @throws InvalidInput as CubicTrajectory.
+    QuinticTrajectory(double x0, double xf, double t0Seconds, double tfSeconds, double v0 = 0.0,
+                      double vf = 0.0);
+    double position(double tSeconds) const { return motion(tSeconds).position; }
+    MotionSample motion(double tSeconds) const;
+    /// Coefficients of the local-time quintic in tau = t - t0 (c0 .. c5).
+    const std::array<double, 6>& localCoefficients() const { return local_; }
+
+private:
+    double x0_, xf_, t0_, tf_;
+    std::array<double, 6> local_{};
 };
 
 /**
@@ -58,6 +98,8 @@ struct Sinusoid {
     /// @throws InvalidInput naming the field when not finite, or rampInSeconds < 0.
     void validate() const;
     double value(double tSeconds) const;
+    /// The value and its derivatives; during the ramp-in those of (A/Tr) t sin(omega t + phase).
+    MotionSample motion(double tSeconds) const;
 };
 
 /**

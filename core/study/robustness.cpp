@@ -83,6 +83,8 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
         o.umaxVolts = problem.spec.umaxVolts;
         o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
         o.initialOutput = problem.initialOutput;
+        if (!problem.feedforwardVolts.empty())
+            o.feedforwardVolts = &problem.feedforwardVolts;
         simulateLoopInto(g, *problem.controller, problem.reference, o, run);
         if (out.stable)
             out.step = stepCharacteristics(closed);

@@ -40,6 +40,9 @@ struct RobustnessProblem {
     std::optional<TransferFunction> controller;
     double modelUnitsPerPositionUnit = 1.0;
     double dtSeconds = 0.01;
+    /// The controller's command feedforward in volts at the reference's samples (empty: none):
+    /// fixed numbers on a fixed trajectory, so the same for every plant drawn.
+    std::vector<double> feedforwardVolts;
     /// The table's position at rest at t = 0 (trajectory units; a G-code program starts there).
     double initialOutput = 0.0;
     // Discrete axes

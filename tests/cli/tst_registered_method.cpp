@@ -133,10 +133,10 @@ public:
     TransferFunction evaluatedController(const AxisEvaluation& axis) const override {
         return designOf(axis).controller;
     }
-    TransferFunction designedController(const AxisSettings& settings,
-                                        int axisIndex) const override {
+    TransferFunction designedController(const Session& session, int axisIndex) const override {
         return TransferFunction(
-            Polynomial::constant(methodParameterValue(settings, axisIndex, gainParameter())),
+            Polynomial::constant(methodParameterValue(
+                session.axes.at(static_cast<std::size_t>(axisIndex)), axisIndex, gainParameter())),
             Polynomial::constant(1.0));
     }
 
@@ -218,6 +218,15 @@ Session proportionalSession() {
     s.axes[0].method = kProportional;
     s.axes[0].parameters["kp"] = 20.0;
     return s;
+}
+
+/// The parameter editor of the proportional method in @p window (the built-in PID +
+/// feedforward method has parameter editors too, on its own page), or null.
+MethodParameterEditor* proportionalEditor(QWidget* window) {
+    for (auto* e : window->findChildren<MethodParameterEditor*>())
+        if (e->field("kp"))
+            return e;
+    return nullptr;
 }
 
 /// What @p command prints on stdout, run in this process; @p exitCode its exit code.
@@ -455,7 +464,7 @@ void TstRegisteredMethod::everyViewOfTheWorkbenchDrawsIt() {
     QComboBox* method = window.methodBox();
     QCOMPARE(method->count(), static_cast<int>(designMethodModules().size()));
     QCOMPARE(method->currentText(), QString("proportional control"));
-    auto* editor = window.findChild<MethodParameterEditor*>();
+    MethodParameterEditor* editor = proportionalEditor(&window);
     QVERIFY(editor && editor->isVisible());
     QCOMPARE(editor->field("kp")->value(), 20.0);
     // Every plot tab draws what the core computes for this design (plotsMismatch visits each).
@@ -504,7 +513,8 @@ void TstRegisteredMethod::itsEditorChangesTheDesign() {
     TuningSession session;
     MainWindow window(&session);
     QVERIFY(openOnProportionalSession(session, window));
-    auto* editor = window.findChild<MethodParameterEditor*>();
+    MethodParameterEditor* editor = proportionalEditor(&window);
+    QVERIFY(editor);
     NumberField* kp = editor->field("kp");
     const int steps = session.undoStack()->count();
     test::typeInto(kp, "12.5");
@@ -568,7 +578,7 @@ void TstRegisteredMethod::aRegisteredEditorReplacesTheParameterEditor() {
     TuningSession session;
     MainWindow window(&session);
     QVERIFY(openOnProportionalSession(session, window));
-    QVERIFY(!window.findChild<MethodParameterEditor*>()); // the method's own editor instead
+    QVERIFY(!proportionalEditor(&window)); // the method's own editor instead
     auto* knob = window.findChild<GainKnob*>();
     QVERIFY(knob && knob->isVisible());
     QCOMPARE(knob->box()->value(), 20.0);

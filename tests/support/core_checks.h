@@ -10,7 +10,19 @@
 
 #include <QString>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace xyt::test {
+
+/// The largest |v[k]| (0 for none): the scale a signal's tolerance is stated against.
+inline double maxAbs(const std::vector<double>& v) {
+    double m = 0.0;
+    for (double x : v)
+        m = std::max(m, std::abs(x));
+    return m;
+}
 
 /// The field of the InvalidInput that @p f throws, or "<no exception>".
 template <class F> QString invalidInputField(F&& f) {

@@ -17,6 +17,7 @@
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/sampled_data.h"
 #include "tests/support/built_programs.h"
+#include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QDir>
@@ -31,6 +32,8 @@
 #include <sstream>
 
 using namespace xyt;
+
+using xyt::test::maxAbs;
 
 namespace {
 
@@ -265,13 +268,6 @@ LoopRun runHarness(const QString& dir, const std::string& header, const std::str
         out.y.push_back(parts[1].toDouble());
     }
     return out;
-}
-
-double maxAbs(const std::vector<double>& v) {
-    double m = 0.0;
-    for (double x : v)
-        m = std::max(m, std::abs(x));
-    return m;
 }
 
 /// The largest |a - b| over the run.

@@ -21,6 +21,8 @@ using xyt::LoopSimulationOptions;
 using xyt::SimulationResult;
 using xyt::TransferFunction;
 
+using xyt::test::maxAbs;
+
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -35,12 +37,6 @@ std::vector<double> cubicReference(double duration, double dt) {
     return xyt::sampled([&](double t) { return c.position(t); }, xyt::sampleTimes(duration, dt));
 }
 
-double maxAbs(const std::vector<double>& v) {
-    double m = 0.0;
-    for (double x : v)
-        m = std::max(m, std::abs(x));
-    return m;
-}
 } // namespace
 
 class TstSimulation : public QObject {

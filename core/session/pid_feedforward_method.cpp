@@ -1,0 +1,490 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/pid_feedforward_method.h"
+
+#include "core/model/math_constants.h"
+#include "core/model/number_format.h"
+#include "core/model/root_matching.h"
+#include "core/session/axis_run.h"
+#include "core/session/continuous_plant_method.h"
+#include "core/session/pid_feedforward_export.h"
+#include "core/simulation/move_settle.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace xyt {
+
+namespace {
+
+// Braga et al.'s lower base under the paper's PI (wn = 2 rad/s, kp = 30 V/m: ki = wn^4/k0 =
+// 0.2057 V/(m s)) in mm units, with the plant's exact inverse as the feedforward
+// (modelFeedforwardGains): a new axis starts as the paper's design plus what every drive adds.
+constexpr double kPaperK0 = 77.8, kPaperA1 = 125.3, kPaperA2 = 3665.0, kPaperUnit = 0.001;
+
+MethodParameter gain(const char* name, const char* label, const char* unit, double value) {
+    return {name, label, unit, value, 0.0, 1e6};
+}
+
+/// Whether a 0/1 choice holds 0 or 1 (the parameter range admits anything between).
+bool choice(const AxisSettings& settings, int axisIndex, const MethodParameter& p) {
+    const double v = methodParameterValue(settings, axisIndex, p);
+    if (v != 0.0 && v != 1.0)
+        throw InvalidInput(axisFieldPath(axisIndex, "parameters." + p.name),
+                           "must be 0 or 1, not " + formatNumber(v));
+    return v == 1.0;
+}
+
+const MethodParameter& parameter(const std::vector<MethodParameter>& all, const char* name) {
+    for (const MethodParameter& p : all)
+        if (p.name == name)
+            return p;
+    throw InvalidInput("method", std::string("has no parameter ") + name);
+}
+
+/// C(s) = (P + I/s + D s/(Tf s + 1)) / unit, without the factors a zero gain leaves out.
+TransferFunction continuousController(const ServoPidGains& g, double tf, double unit) {
+    const double p = g.p / unit, i = g.i / unit, d = g.d / unit;
+    if (d == 0.0) {
+        if (i == 0.0)
+            return {Polynomial::constant(p), Polynomial::constant(1.0)};
+        return {Polynomial::fromDescending({p, i}), Polynomial::fromDescending({1.0, 0.0})};
+    }
+    if (i == 0.0)
+        return {Polynomial::fromDescending({p * tf + d, p}), Polynomial::fromDescending({tf, 1.0})};
+    return {Polynomial::fromDescending({p * tf + d, p + i * tf, i}),
+            Polynomial::fromDescending({tf, 1.0, 0.0})};
+}
+
+/// The feedforward's share of the continuous run along @p motion (see the header): at each
+/// sample, feedforwardVolts, less the D term's filtered share of r' when D acts on the
+/// measurement (the first-order lag on the samples of r', exact for r' linear between them).
+std::vector<double> continuousFeedforward(const PidFeedforwardDesign& d,
+                                          const std::vector<MotionSample>& motion,
+                                          double dtSeconds) {
+    std::vector<double> ff(motion.size());
+    double filtered = 0.0;
+    const double tf = d.continuousFilterSeconds;
+    const double a = std::exp(-dtSeconds / tf);
+    for (std::size_t k = 0; k < motion.size(); ++k) {
+        ff[k] = feedforwardVolts(d.gains, motion[k]);
+        if (!d.gains.derivativeOnMeasurement || d.gains.d == 0.0)
+            continue;
+        if (k > 0) {
+            // x' = (v - x)/Tf with v linear from v0 to v1 over dt: exact FOH step.
+            const double v0 = motion[k - 1].velocity, v1 = motion[k].velocity;
+            const double slope = (v1 - v0) / dtSeconds;
+            filtered = a * filtered + (1.0 - a) * v0 + slope * (dtSeconds - tf * (1.0 - a));
+        }
+        ff[k] -= d.gains.d * filtered;
+    }
+    return ff;
+}
+
+/// The axis' command samples at @p times.
+std::vector<MotionSample> motionAt(const Session& session, int axisIndex,
+                                   const std::vector<double>& times) {
+    const auto motion = axisMotion(session.trajectory, axisIndex);
+    std::vector<MotionSample> out(times.size());
+    for (std::size_t k = 0; k < times.size(); ++k)
+        out[k] = motion(times[k]);
+    return out;
+}
+
+std::vector<double> positions(const std::vector<MotionSample>& motion) {
+    std::vector<double> r(motion.size());
+    for (std::size_t k = 0; k < motion.size(); ++k)
+        r[k] = motion[k].position;
+    return r;
+}
+
+/// The continuous loop along @p motion at step @p dt with the feedforward (or without).
+SimulationResult continuousRun(const PidFeedforwardDesign& d,
+                               const std::vector<MotionSample>& motion, double dt,
+                               bool withFeedforward, double initialOutput = 0.0) {
+    LoopSimulationOptions options;
+    options.dtSeconds = dt;
+    options.umaxVolts = d.gains.maxOutput;
+    options.modelUnitsPerPositionUnit = d.unit;
+    options.initialOutput = initialOutput;
+    const std::vector<double> ff = continuousFeedforward(d, motion, dt);
+    if (withFeedforward)
+        options.feedforwardVolts = &ff;
+    return simulateLoop(d.plant, d.controller, positions(motion), options);
+}
+
+void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEvaluation& out) {
+    if (!d.stable)
+        out.warnings.push_back("the closed loop is unstable");
+    if (!out.run.uFeedforward.empty()) {
+        double peak = 0.0;
+        for (double v : out.run.uFeedforward)
+            peak = std::max(peak, std::abs(v));
+        if (peak > d.gains.maxOutput)
+            out.warnings.push_back("the feedforward alone needs " + formatNumber(peak, 4) +
+                                   " V on this trajectory, beyond the output limit of " +
+                                   formatNumber(d.gains.maxOutput, 4) + " V");
+    }
+    const TrajectorySettings& t = session.trajectory;
+    if (t.kind == TrajectoryKind::Cubic && t.profile == MoveProfile::Cubic &&
+        d.derivativeSource == CommandDerivativeSource::BackwardDifferences && d.gains.ff3 != 0.0) {
+        // The cubic's acceleration steps at t0 (from 0 to 2 l2) and at tf (from 2 l2 + 6 l3 T
+        // to 0); the backward differences turn a step of the acceleration into one sample of
+        // cmd''' = step / Ts, which FF3 multiplies.
+        const CubicTrajectory c(t.x0, t.xf, t.t0Seconds, t.tfSeconds, t.v0, t.vf);
+        const auto& l = c.localCoefficients();
+        const double step = std::max(
+            std::abs(2.0 * l[2]), std::abs(2.0 * l[2] + 6.0 * l[3] * (t.tfSeconds - t.t0Seconds)));
+        const double spike = std::abs(d.gains.ff3) * step / d.tsSeconds;
+        if (spike > 0.01 * d.gains.maxOutput)
+            out.warnings.push_back("the cubic's acceleration step becomes a " +
+                                   formatNumber(spike, 3) +
+                                   " V spike of the FF3 term (one controller period); the "
+                                   "quintic move has no acceleration step");
+    }
+}
+
+void evaluateDigital(const Session& session, int axisIndex, double duration,
+                     const PidFeedforwardDesign& design, AxisEvaluation& out) {
+    try {
+        DigitalEvaluation d;
+        d.tsSeconds = design.tsSeconds;
+        SampledDataOptions options = sessionSampledDataOptions(session);
+        const auto times =
+            axisSampleTimes(session.trajectory, duration, design.tsSeconds, "controller_ts");
+        d.run = simulateSampledServoPid(design.plant, design.gains, design.tsSeconds,
+                                        motionAt(session, axisIndex, times),
+                                        design.derivativeSource, options, design.unit);
+        d.poles = sampledServoPidLoopPoles(sampledPlant(design.plant, design.tsSeconds),
+                                           design.gains, design.unit, options.delaySamples);
+        d.designMinDamping = minContinuousDamping(design.closedLoopPoles);
+        for (const auto& p : design.closedLoopPoles)
+            d.designPoles.push_back(std::exp(p * design.tsSeconds));
+        sortRoots(d.designPoles);
+        finishDigital(session, d, out);
+        out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
+    } catch (const InvalidInput& e) {
+        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+    }
+}
+
+class PidFeedforwardMethod final : public ContinuousPlantMethod {
+public:
+    DesignMethod method() const override { return DesignMethod::PidFeedforward; }
+    std::string_view id() const override { return "pid-ff"; }
+    std::string_view displayName() const override { return "PID + feedforward"; }
+    std::vector<MethodParameter> parameters() const override { return pidFeedforwardParameters(); }
+
+    void evaluate(const Session& session, int axisIndex, double durationSeconds, bool withDigital,
+                  AxisEvaluation& out) const override {
+        auto design =
+            std::make_shared<PidFeedforwardDesign>(designPidFeedforward(session, axisIndex));
+        out.methodDesign = design;
+        const double dt = session.trajectory.dtSeconds;
+        const auto reference = sessionReference(session.trajectory, axisIndex);
+        const auto times =
+            axisSampleTimes(session.trajectory, durationSeconds, dt, "trajectory.dt");
+        const std::vector<MotionSample> motion = motionAt(session, axisIndex, times);
+        out.run = continuousRun(*design, motion, dt, true);
+        out.metrics = trackingMetrics(out.run);
+        out.feedbackOnlyRun = continuousRun(*design, motion, dt, false);
+        out.rmseWithoutFf = trackingMetrics(out.feedbackOnlyRun).rmse;
+        out.improvementPct =
+            out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - out.metrics.rmse / out.rmseWithoutFf) : 0.0;
+        out.step = stepCharacteristics(design->loop.complementarySensitivity);
+        addWarnings(session, *design, out);
+        if (withDigital)
+            evaluateDigital(session, axisIndex, durationSeconds, *design, out);
+    }
+
+    AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
+                        const std::vector<double>& reference, double dtSeconds) const override {
+        // The program's derivatives by central differences of its samples (axisMotion's rule).
+        const PidFeedforwardDesign d = designPidFeedforward(session, axisIndex);
+        std::vector<MotionSample> motion(reference.size());
+        const std::size_t n = reference.size();
+        const auto at = [&](std::ptrdiff_t k) {
+            return reference[static_cast<std::size_t>(
+                std::clamp<std::ptrdiff_t>(k, 0, static_cast<std::ptrdiff_t>(n) - 1))];
+        };
+        const double h = dtSeconds;
+        for (std::size_t k = 0; k < n; ++k) {
+            const auto i = static_cast<std::ptrdiff_t>(k);
+            motion[k] = {reference[k], (at(i + 1) - at(i - 1)) / (2.0 * h),
+                         (at(i + 1) - 2.0 * at(i) + at(i - 1)) / (h * h),
+                         (at(i + 2) - 2.0 * at(i + 1) + 2.0 * at(i - 1) - at(i - 2)) /
+                             (2.0 * h * h * h)};
+        }
+        (void)t;
+        AxisTrace out;
+        try {
+            out.run = continuousRun(d, motion, dtSeconds, true, reference.front());
+        } catch (const InvalidInput& e) {
+            if (e.field() == "plant" || e.field() == "initial_output")
+                throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
+            throw;
+        }
+        out.outputOnPath = out.run.y;
+        return out;
+    }
+
+    TransferFunction evaluatedController(const AxisEvaluation& axis) const override {
+        return pidFeedforwardDesign(axis).controller;
+    }
+    TransferFunction designedController(const Session& session, int axisIndex) const override {
+        return designPidFeedforward(session, axisIndex).controller;
+    }
+
+    RobustnessProblem robustnessProblem(const Session& session, int axisIndex,
+                                        const AxisEvaluation& nominal) const override {
+        RobustnessProblem p = ContinuousPlantMethod::robustnessProblem(session, axisIndex, nominal);
+        // The feedforward is fixed numbers on the fixed trajectory: its voltage does not depend
+        // on the plant drawn, so every plant runs with the nominal run's.
+        p.feedforwardVolts = nominal.run.uFeedforward;
+        return p;
+    }
+
+    std::string cController(const Session& session, const AxisEvaluation& axis, int axisIndex,
+                            const ExportOptions& options) const override {
+        return pidFeedforwardFirmwareBlock(session, pidFeedforwardDesign(axis), axisIndex, options);
+    }
+
+    OctaveLines octaveController(const Session& session, const AxisEvaluation& axis, int axisIndex,
+                                 const ExportOptions& /*options*/,
+                                 double /*durationSeconds*/) const override {
+        return pidFeedforwardOctaveLines(session, pidFeedforwardDesign(axis), axisIndex);
+    }
+
+    std::optional<LoopTransferFunctions> loop(const AxisEvaluation& axis) const override {
+        if (!axis.methodDesign)
+            return std::nullopt;
+        return pidFeedforwardDesign(axis).loop;
+    }
+    TransferFunction closedLoop(const AxisEvaluation& axis) const override {
+        return pidFeedforwardDesign(axis).loop.complementarySensitivity;
+    }
+    std::vector<PoleZeroSet> poleZeroSets(const AxisEvaluation& axis,
+                                          const AxisSettings& /*settings*/) const override {
+        if (!axis.methodDesign)
+            return {};
+        const PidFeedforwardDesign& d = pidFeedforwardDesign(axis);
+        return {poleZeroSet("plant G", d.plant), poleZeroSet("PID C", d.controller),
+                poleZeroSet("closed loop", d.loop.complementarySensitivity)};
+    }
+    double slowestDecayPerSecond(const AxisEvaluation& axis) const override {
+        return axis.methodDesign
+                   ? continuousDecayPerSecond(pidFeedforwardDesign(axis).closedLoopPoles)
+                   : 0.0;
+    }
+
+    std::vector<DesignCoefficient> coefficients(const AxisEvaluation& axis) const override {
+        if (!axis.methodDesign)
+            return {};
+        const ServoPidGains& g = pidFeedforwardDesign(axis).gains;
+        return {{"P", g.p, "V/mm"},          {"I", g.i, "V/(mm s)"},
+                {"D", g.d, "V s/mm"},        {"FF0", g.ff0, "V/mm"},
+                {"FF1", g.ff1, "V/(mm/s)"},  {"FF2", g.ff2, "V/(mm/s^2)"},
+                {"FF3", g.ff3, "V/(mm/s^3)"}};
+    }
+
+    std::vector<std::string> reportLines(const AxisSettings& settings,
+                                         const AxisEvaluation& axis) const override {
+        if (!axis.methodDesign)
+            return {};
+        std::vector<std::string> lines = DesignMethodModule::reportLines(settings, axis);
+        const PidFeedforwardDesign& d = pidFeedforwardDesign(axis);
+        const auto percent = [](double v, double model) {
+            return model != 0.0 ? formatNumber(100.0 * v / model, 4) + " %" : std::string("-");
+        };
+        lines.push_back(
+            "feedforward of the model's FF1, FF2, FF3: " + percent(d.gains.ff1, d.model.ff1) +
+            ", " + percent(d.gains.ff2, d.model.ff2) + ", " + percent(d.gains.ff3, d.model.ff3) +
+            "; command derivatives from " +
+            (d.derivativeSource == CommandDerivativeSource::BackwardDifferences
+                 ? "backward differences"
+                 : "the trajectory generator"));
+        if (axis.rmseWithoutFf > 0.0)
+            lines.push_back("RMSE " + formatNumber(axis.metrics.rmse, 4) +
+                            " mm with the "
+                            "feedforward, " +
+                            formatNumber(axis.rmseWithoutFf, 4) + " mm with the feedback alone");
+        if (!d.stable)
+            lines.back() += "  UNSTABLE";
+        return lines;
+    }
+
+    std::vector<std::string> equations(const AxisSettings& /*settings*/,
+                                       const AxisEvaluation& axis) const override {
+        if (!axis.methodDesign)
+            return {};
+        const PidFeedforwardDesign& d = pidFeedforwardDesign(axis);
+        const ServoPidGains& g = d.gains;
+        const auto n = [](double v) { return formatNumber(v, 6); };
+        return {"u = bias + P e + I ∫e dt + D e′ + FF0 r + FF1 r′ + FF2 r″ + FF3 r‴,  |u| ≤ " +
+                    n(g.maxOutput) + " V",
+                "P = " + n(g.p) + " V/mm, I = " + n(g.i) + " V/(mm s), D = " + n(g.d) + " V s/mm",
+                "FF1 = " + n(g.ff1) + ", FF2 = " + n(g.ff2) + ", FF3 = " + n(g.ff3) +
+                    " (model inverse: a2 u/k0 = " + n(d.model.ff1) +
+                    ", a1 u/k0 = " + n(d.model.ff2) + ", u/k0 = " + n(d.model.ff3) + ")",
+                "C(s) = (P + I/s + D s/(Tf s + 1)) / u,  Tf = " + n(d.continuousFilterSeconds) +
+                    " s, u = " + n(d.unit) + " model units per mm"};
+    }
+
+    std::string designRunDescription() const override {
+        return "the continuous loop with the feedforward, |u| limited";
+    }
+};
+
+} // namespace
+
+std::vector<MethodParameter> pidFeedforwardParameters() {
+    const ModelFeedforwardGains ff =
+        modelFeedforwardGains({kPaperK0, kPaperA1, kPaperA2}, kPaperUnit);
+    const double wn = 2.0;
+    return {
+        gain("p", "Proportional gain P", "V/mm", 30.0 * kPaperUnit),
+        gain("i", "Integral gain I", "V/(mm s)", std::pow(wn, 4) / kPaperK0 * kPaperUnit),
+        gain("d", "Derivative gain D", "V s/mm", 0.0),
+        gain("ff0", "Position feedforward FF0", "V/mm", 0.0),
+        gain("ff1", "Velocity feedforward FF1", "V/(mm/s)", ff.ff1),
+        gain("ff2", "Acceleration feedforward FF2", "V/(mm/s²)", ff.ff2),
+        gain("ff3", "Jerk feedforward FF3", "V/(mm/s³)", ff.ff3),
+        {"bias", "Bias", "V", 0.0, -1e3, 1e3},
+        {"deadband", "Deadband", "mm", 0.0, 0.0, 1e6},
+        {"max_error_i", "Integrator limit (0: none)", "mm s", 0.0, 0.0, 1e9},
+        {"max_output", "Output limit (0: umax)", "V", 0.0, 0.0, 1e6},
+        {"derivative_filter", "D filter Tf (0: none)", "s", 0.0, 0.0, 1e3},
+        {"derivative_on_measurement", "D on the measurement (1) or the error (0)", "", 0.0, 0.0,
+         1.0},
+        {"command_derivatives", "Command derivatives: backward differences (0), trajectory (1)", "",
+         0.0, 0.0, 1.0},
+    };
+}
+
+double feedforwardVolts(const ServoPidGains& g, const MotionSample& m) {
+    return g.bias + g.ff0 * m.position + g.ff1 * m.velocity + g.ff2 * m.acceleration +
+           g.ff3 * m.jerk;
+}
+
+const PidFeedforwardDesign& pidFeedforwardDesign(const AxisEvaluation& axis) {
+    const auto* d = dynamic_cast<const PidFeedforwardDesign*>(axis.methodDesign.get());
+    if (!d)
+        throw InvalidInput("axis", "has no design");
+    return *d;
+}
+
+PidFeedforwardDesign designPidFeedforward(const Session& session, int axisIndex) {
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+    const std::vector<MethodParameter> all = pidFeedforwardParameters();
+    const auto value = [&](const char* name) {
+        return methodParameterValue(axis, axisIndex, parameter(all, name));
+    };
+    PidFeedforwardDesign d;
+    ServoPidGains& g = d.gains;
+    g.p = value("p");
+    g.i = value("i");
+    g.d = value("d");
+    g.ff0 = value("ff0");
+    g.ff1 = value("ff1");
+    g.ff2 = value("ff2");
+    g.ff3 = value("ff3");
+    g.bias = value("bias");
+    g.deadband = value("deadband");
+    g.maxErrorI = value("max_error_i");
+    const double maxOutput = value("max_output");
+    g.maxOutput = maxOutput > 0.0 ? std::min(maxOutput, session.umaxVolts) : session.umaxVolts;
+    g.derivativeFilterSeconds = value("derivative_filter");
+    g.derivativeOnMeasurement =
+        choice(axis, axisIndex, parameter(all, "derivative_on_measurement"));
+    d.derivativeSource = choice(axis, axisIndex, parameter(all, "command_derivatives"))
+                             ? CommandDerivativeSource::TrajectoryGenerator
+                             : CommandDerivativeSource::BackwardDifferences;
+    d.tsSeconds = session.controllerTsSeconds;
+    requirePositive(d.tsSeconds, "controller_ts");
+    if (g.derivativeFilterSeconds > 0.0 && g.derivativeFilterSeconds < d.tsSeconds / kPi)
+        throw InvalidInput(axisFieldPath(axisIndex, "parameters.derivative_filter"),
+                           formatNumber(g.derivativeFilterSeconds) +
+                               " s puts the filter's corner 1/Tf beyond the Nyquist frequency "
+                               "pi/Ts of the controller period: use 0 (no filter) or at least " +
+                               formatNumber(d.tsSeconds / kPi, 4) + " s");
+    if (g.p == 0.0 && g.i == 0.0 && g.d == 0.0)
+        throw InvalidInput(axisFieldPath(axisIndex, "parameters.p"),
+                           "P, I and D are all 0: the axis has no feedback");
+    d.unit = axis.gt.modelUnitsPerPositionUnit;
+    try {
+        axis.gt.plant.validate();
+        requirePositive(d.unit, "model_unit_scale");
+        d.model = modelFeedforwardGains(axis.gt.plant, d.unit);
+    } catch (const InvalidInput& e) {
+        const std::string part =
+            e.field() == "model_unit_scale" ? "gt.model_unit_scale" : "gt.plant." + e.field();
+        throw InvalidInput(axisFieldPath(axisIndex, part), e.reason());
+    }
+    d.continuousFilterSeconds =
+        g.derivativeFilterSeconds > 0.0 ? g.derivativeFilterSeconds : d.tsSeconds / 2.0;
+    d.plant = axis.gt.plant.transferFunction();
+    d.controller = continuousController(g, d.continuousFilterSeconds, d.unit);
+    d.loop = unityFeedbackLoop(d.controller, d.plant);
+    d.closedLoopPoles = d.loop.complementarySensitivity.poles();
+    sortRoots(d.closedLoopPoles);
+    d.stable = std::all_of(d.closedLoopPoles.begin(), d.closedLoopPoles.end(),
+                           [](const std::complex<double>& p) { return p.real() < 0.0; });
+    // r -> y with F = FF0 + FF1 s + FF2 s^2 + FF3 s^3 in volts per mm: (C + F/u) G S.
+    const TransferFunction f(Polynomial::fromDescending(
+                                 {g.ff3 / d.unit, g.ff2 / d.unit, g.ff1 / d.unit, g.ff0 / d.unit}),
+                             Polynomial::constant(1.0));
+    d.trackingWithFeedforward =
+        parallel(d.loop.complementarySensitivity, series(series(f, d.plant), d.loop.sensitivity));
+    return d;
+}
+
+std::vector<std::complex<double>> sampledServoPidLoopPoles(const SampledPlant& plant,
+                                                           const ServoPidGains& g, double unit,
+                                                           int delaySamples) {
+    // z = [x (n); errorI; previous feedback; filtered D; u[k-1] .. u[k-m]], r = 0.
+    const Eigen::Index n = plant.states, m = delaySamples;
+    const Eigen::Index iI = n, iFb = n + 1, iDf = n + 2, iU = n + 3, size = n + 3 + m;
+    const double ts = plant.tsSeconds;
+    Eigen::RowVectorXd y = Eigen::RowVectorXd::Zero(size); // the feedback in mm
+    for (Eigen::Index j = 0; j < n; ++j)
+        y(j) = plant.c[static_cast<std::size_t>(j)] / unit;
+    Eigen::RowVectorXd integral = -ts * y; // errorI + e Ts, e = -y
+    integral(iI) += 1.0;
+    Eigen::RowVectorXd raw = -y / ts; // D = cmd' - fb' = -(y - previous)/Ts
+    raw(iFb) += 1.0 / ts;
+    const double tf = g.derivativeFilterSeconds;
+    Eigen::RowVectorXd filtered = raw;
+    if (tf > 0.0) {
+        filtered = ts * raw / (tf + ts);
+        filtered(iDf) += tf / (tf + ts);
+    }
+    const Eigen::RowVectorXd u = -g.p * y + g.i * integral + g.d * filtered;
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(size, size);
+    const Eigen::RowVectorXd applied =
+        m == 0 ? u : Eigen::RowVectorXd(Eigen::RowVectorXd::Unit(size, iU + m - 1));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        for (Eigen::Index j = 0; j < n; ++j)
+            a(i, j) = plant.phi[static_cast<std::size_t>(i * n + j)];
+        a.row(i) += plant.gamma[static_cast<std::size_t>(i)] * applied;
+    }
+    a.row(iI) = integral;
+    a.row(iFb) = y;
+    a.row(iDf) = filtered;
+    if (m > 0) {
+        a.row(iU) = u;
+        for (Eigen::Index k = 1; k < m; ++k)
+            a(iU + k, iU + k - 1) = 1.0;
+    }
+    const Eigen::VectorXcd eig = a.eigenvalues();
+    std::vector<std::complex<double>> poles(eig.data(), eig.data() + eig.size());
+    sortRoots(poles);
+    return poles;
+}
+
+const DesignMethodModule& pidFeedforwardMethod() {
+    static const PidFeedforwardMethod module;
+    return module;
+}
+
+} // namespace xyt
