@@ -441,8 +441,11 @@ void MainWindow::connectControls() {
             });
     for (MethodEditor* editor : methodEditors_)
         connect(editor, &MethodEditor::settingsEdited, this,
-                [this](const AxisSettings& settings, const QString& description) {
-                    session_->setAxis(session_->currentAxis(), settings, description);
+                [this](const AxisSettings& settings, const QString& description, int mergeKey) {
+                    const int axis = session_->currentAxis();
+                    session_->setAxis(axis, settings, description,
+                                      mergeKey < 0 ? -1
+                                                   : kMergeMethodEditor + 10 * mergeKey + axis);
                 });
     connect(implementationToggle_, &QToolButton::toggled, this, [this](bool open) {
         implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);

@@ -281,12 +281,15 @@ QString trajectoryKindName(TrajectoryKind kind) {
 
 QJsonObject trajectoryToJson(const TrajectorySettings& t) {
     return {{"kind", trajectoryKindName(t.kind)},
-            {"cubic", QJsonObject{{"x0", t.x0},
-                                  {"xf", t.xf},
-                                  {"t0", t.t0Seconds},
-                                  {"tf", t.tfSeconds},
-                                  {"v0", t.v0},
-                                  {"vf", t.vf}}},
+            {"cubic",
+             QJsonObject{{"x0", t.x0},
+                         {"xf", t.xf},
+                         {"t0", t.t0Seconds},
+                         {"tf", t.tfSeconds},
+                         {"v0", t.v0},
+                         {"vf", t.vf},
+                         {"profile", t.profile == MoveProfile::Quintic ? QStringLiteral("quintic")
+                                                                       : QStringLiteral("cubic")}}},
             {"circle", QJsonObject{{"radius", t.radius},
                                    {"omega", t.omegaRadPerSec},
                                    {"ramp_in", t.rampInSeconds}}},
@@ -441,6 +444,12 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             throw FormatError{join(c.path(), "tf"), QStringLiteral("must be later than t0")};
         t.v0 = c.number("v0");
         t.vf = c.number("vf");
+        const QString profile = c.string("profile");
+        if (profile == "quintic")
+            t.profile = MoveProfile::Quintic;
+        else if (profile != "cubic")
+            throw FormatError{join(c.path(), "profile"),
+                              QStringLiteral("must be \"cubic\" or \"quintic\"")};
         c.finish();
     }
     {

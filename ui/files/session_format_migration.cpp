@@ -101,6 +101,31 @@ QJsonObject fromVersion2(QJsonObject root) {
     return root;
 }
 
+/// @p trajectory with the cubic profile in its "cubic" object, where it has none.
+void withCubicProfile(QJsonObject& trajectory) {
+    if (!trajectory.value("cubic").isObject())
+        return;
+    QJsonObject cubic = trajectory.value("cubic").toObject();
+    if (!cubic.contains("profile"))
+        cubic.insert("profile", QStringLiteral("cubic"));
+    trajectory.insert("cubic", cubic);
+}
+
+/// Version 3's point-to-point move was always Braga et al.'s cubic.
+QJsonObject fromVersion3(QJsonObject root) {
+    const auto migrate = [](QJsonObject& holder) {
+        if (!holder.value("trajectory").isObject())
+            return;
+        QJsonObject trajectory = holder.value("trajectory").toObject();
+        withCubicProfile(trajectory);
+        holder.insert("trajectory", trajectory);
+    };
+    migrate(root);
+    root = withEachSnapshot(std::move(root), migrate);
+    root.insert("version", 4);
+    return root;
+}
+
 } // namespace
 
 QJsonObject migrateSessionJson(QJsonObject root, int version) {
@@ -108,6 +133,8 @@ QJsonObject migrateSessionJson(QJsonObject root, int version) {
         root = fromVersion1(std::move(root));
     if (version <= 2)
         root = fromVersion2(std::move(root));
+    if (version <= 3)
+        root = fromVersion3(std::move(root));
     return root;
 }
 

@@ -17,10 +17,13 @@ namespace xyt::files {
  * - Version 3 (written now): each axis has a "parameters" object, the numbers of a method
  *   registered at start-up (AxisSettings::parameters). A version-2 axis has none: it reads as
  *   an empty object.
+ * - Version 4: the point-to-point move has a "profile" ("cubic" or "quintic",
+ *   TrajectorySettings::profile) in the trajectory's "cubic" object. A version-3 move reads as
+ *   "cubic".
  *
  * Reading an older version is this migration to the current one, then the current reader.
  */
-inline constexpr int kSessionFormatVersion = 3;
+inline constexpr int kSessionFormatVersion = 4;
 
 /// @p root (a document of format version @p version, 1 <= version < kSessionFormatVersion)
 /// as a document of the current version: each field that version did not require and that

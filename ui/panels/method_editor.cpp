@@ -2,6 +2,7 @@
 #include "ui/panels/method_editor.h"
 
 #include "ui/panels/method_parameter_editor.h"
+#include "ui/panels/pid_feedforward_editor.h"
 
 #include <map>
 
@@ -10,7 +11,14 @@ namespace xyt::ui {
 namespace {
 
 std::map<DesignMethod, MethodEditorFactory>& editorFactories() {
-    static std::map<DesignMethod, MethodEditorFactory> factories;
+    // The built-in methods that are edited in a method editor (the first two have their own
+    // pages in the window).
+    static std::map<DesignMethod, MethodEditorFactory> factories = {
+        {DesignMethod::PidFeedforward,
+         [](const DesignMethodModule& module, QWidget* parent) -> MethodEditor* {
+             return new PidFeedforwardEditor(module, parent);
+         }},
+    };
     return factories;
 }
 

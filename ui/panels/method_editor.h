@@ -22,8 +22,11 @@ public:
     virtual void setSettings(const AxisSettings& settings) = 0;
 
 signals:
-    /// The axis' settings as edited, applied as one undo step named @p description.
-    void settingsEdited(const AxisSettings& settings, const QString& description);
+    /// The axis' settings as edited, applied as one undo step named @p description; successive
+    /// edits with the same @p mergeKey (>= 0, a slider being dragged; per method editor, the
+    /// window adds the axis) merge into one step.
+    void settingsEdited(const AxisSettings& settings, const QString& description,
+                        int mergeKey = -1);
 };
 
 /// Makes the editor of a method (its module, the editor's parent).

@@ -9,9 +9,15 @@
 namespace xyt::ui {
 
 MethodParameterEditor::MethodParameterEditor(const DesignMethodModule& module, QWidget* parent)
-    : MethodEditor(parent), parameters_(module.parameters()) {
+    : MethodParameterEditor(module.parameters(), parent) {}
+
+MethodParameterEditor::MethodParameterEditor(std::vector<MethodParameter> parameters,
+                                             QWidget* parent)
+    : MethodEditor(parent), parameters_(std::move(parameters)) {
     auto* form = new QFormLayout(this);
     form->setContentsMargins(0, 0, 0, 0);
+    // A long label goes above its field rather than widening the window's side panel.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     if (parameters_.empty())
         form->addRow(new QLabel(tr("This method has no settings."), this));
     for (const MethodParameter& p : parameters_) {

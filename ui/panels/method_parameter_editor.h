@@ -21,6 +21,8 @@ class MethodParameterEditor : public MethodEditor {
     Q_OBJECT
 public:
     MethodParameterEditor(const DesignMethodModule& module, QWidget* parent = nullptr);
+    /// The fields of @p parameters only (a method's editor that lays out the rest itself).
+    MethodParameterEditor(std::vector<MethodParameter> parameters, QWidget* parent = nullptr);
     /// Shows @p settings' values (a parameter the settings lack shows its default).
     void setSettings(const AxisSettings& settings) override;
     /// The field of parameter @p name, or null.

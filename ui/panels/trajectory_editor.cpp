@@ -29,11 +29,25 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     kind_ = new QComboBox(this);
-    kind_->addItem(tr("Cubic point-to-point (both axes)"));
+    kind_->addItem(tr("Point-to-point (both axes)"));
     kind_->addItem(tr("Circle (x = R sin ωt, y = R cos ωt)"));
     kind_->addItem(tr("G-code program (x and y along its feed profile)"));
     kind_->setAccessibleName(tr("Trajectory kind"));
-    layout->addWidget(kind_);
+    kind_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    kind_->setMinimumContentsLength(14);
+    // The move's profile beside the kind (a row of its own would push the panel past 768 px).
+    profile_ = new QComboBox(this);
+    profile_->addItem(tr("cubic"));
+    profile_->addItem(tr("quintic"));
+    profile_->setAccessibleName(tr("Move profile"));
+    profile_->setToolTip(tr("The move's profile: Braga et al.'s cubic, whose acceleration steps "
+                            "at the start and the end, or the quintic, whose acceleration starts "
+                            "and ends at zero, so a jerk feedforward sees no spike"));
+    connect(profile_, &QComboBox::activated, this, &TrajectoryEditor::emitIfValid);
+    auto* kindRow = new QHBoxLayout;
+    kindRow->addWidget(kind_, 1);
+    kindRow->addWidget(profile_);
+    layout->addLayout(kindRow);
     pages_ = new QStackedWidget(this);
     layout->addWidget(pages_);
 
@@ -107,6 +121,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
         connect(f, &NumberField::valueAccepted, this, &TrajectoryEditor::emitIfValid);
     connect(kind_, &QComboBox::activated, this, [this](int index) {
         pages_->setCurrentIndex(index);
+        profile_->setVisible(index == 0);
         emitIfValid();
     });
 }
@@ -291,6 +306,8 @@ void TrajectoryEditor::setTrajectory(const TrajectorySettings& t) {
     const int index = kindIndex(t.kind);
     kind_->setCurrentIndex(index);
     pages_->setCurrentIndex(index);
+    profile_->setVisible(index == 0);
+    profile_->setCurrentIndex(t.profile == MoveProfile::Quintic ? 1 : 0);
     fields_["x0"]->setValue(t.x0);
     fields_["xf"]->setValue(t.xf);
     fields_["t0"]->setValue(t.t0Seconds);
@@ -342,6 +359,7 @@ bool TrajectoryEditor::emitTrajectory() {
             return false;
     TrajectorySettings t = current_;
     t.kind = kindAt(kind_->currentIndex());
+    t.profile = profile_->currentIndex() == 1 ? MoveProfile::Quintic : MoveProfile::Cubic;
     t.x0 = fields_["x0"]->value();
     t.xf = fields_["xf"]->value();
     t.t0Seconds = fields_["t0"]->value();

@@ -28,6 +28,7 @@ public:
 
     void setTrajectory(const TrajectorySettings& trajectory);
     QComboBox* kindBox() const { return kind_; }
+    QComboBox* profileBox() const { return profile_; }
     NumberField* field(const QString& name) const;
 
     /// The most bytes of a program held in a session: 4 MiB, so that the session file (which
@@ -71,6 +72,7 @@ private:
     QWidget* buildProgramPage();
 
     QComboBox* kind_;
+    QComboBox* profile_;
     QString refusal_;
     QStackedWidget* pages_;
     QMap<QString, NumberField*> fields_;

@@ -28,6 +28,8 @@ inline const QColor limit{0xd6, 0x27, 0x28};
 inline const QColor snapshot{0xa0, 0xa0, 0xa0};
 /// The digital implementation: the loop as the firmware runs it.
 inline const QColor digital{0x94, 0x67, 0xbd};
+/// A controller's command feedforward (its share of u).
+inline const QColor feedforward{0xff, 0x7f, 0x0e};
 inline const QColor axisX{0x1f, 0x77, 0xb4};
 inline const QColor axisY{0xff, 0x7f, 0x0e};
 } // namespace colors

@@ -83,6 +83,10 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     for (QCPGraph* g : {snapshotOutput_, snapshotControl_, snapshotError_})
         g->setPen(QPen(colors::snapshot, 1.4, Qt::DashLine));
     error_->setLayer(QStringLiteral("main")); // drawn over the snapshot's error
+    // u split into its parts when the controller has a command feedforward.
+    feedforward_ = makeGraph(controlRect_, colors::feedforward, tr("feedforward part"), 1.3);
+    feedforward_->setPen(QPen(colors::feedforward, 1.3, Qt::DashLine));
+    feedbackPart_ = makeGraph(controlRect_, colors::output, tr("feedback part"), 1.2);
     control_ = makeGraph(controlRect_, colors::control, tr("control u"));
     digitalControl_->setLineStyle(QCPGraph::lsStepLeft); // zero-order hold
     upperLimit_ = new QCPItemStraightLine(this);
@@ -111,6 +115,18 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     legend->setMargins(QMargins(4, 1, 4, 1));
     legend->addItem(new QCPPlottableLegendItem(legend, reference_));
     legend->addItem(new QCPPlottableLegendItem(legend, output_));
+    controlLegend_ = new QCPLegend;
+    controlRect_->insetLayout()->addElement(controlLegend_, Qt::AlignTop | Qt::AlignRight);
+    controlLegend_->setLayer("legend");
+    controlLegend_->setFont(QFont(font().family(), 8));
+    controlLegend_->setBrush(QColor(255, 255, 255, 210));
+    compactLegend(controlLegend_);
+    controlLegend_->setRowSpacing(0);
+    controlLegend_->setMargins(QMargins(4, 1, 4, 1));
+    controlLegend_->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    for (QCPGraph* g : {control_, feedforward_, feedbackPart_})
+        controlLegend_->addItem(new QCPPlottableLegendItem(controlLegend_, g));
+    controlLegend_->setVisible(false);
     notice_ = std::make_unique<PlotNotice>(this, positionRect_, Qt::AlignTop | Qt::AlignLeft);
     controlNotice_ = std::make_unique<PlotNotice>(this, controlRect_, Qt::AlignTop | Qt::AlignLeft);
     setupInteractivePlot(this);
@@ -135,9 +151,11 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
                             .arg(axisTitle, QString::fromStdString(axis.errorField),
                                  QString::fromStdString(axis.error)));
         title_->setTextColor(colors::error);
-        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_,
-                            digitalOutput_, digitalError_, digitalControl_})
+        for (QCPGraph* g :
+             {reference_, output_, error_, control_, clipUpper_, clipLower_, digitalOutput_,
+              digitalError_, digitalControl_, feedforward_, feedbackPart_})
             g->data()->clear();
+        controlLegend_->setVisible(false);
         upperLimit_->setVisible(false);
         lowerLimit_->setVisible(false);
         legend_->setVisible(false);
@@ -156,6 +174,20 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
     output_->data()->set(minMaxDecimated(run.t, run.y), true);
     error_->data()->set(minMaxDecimated(run.t, run.e), true);
     control_->data()->set(minMaxDecimated(run.t, run.u), true);
+    const bool split = run.uFeedforward.size() == run.u.size() && !run.u.empty();
+    feedforward_->setVisible(split);
+    feedbackPart_->setVisible(split);
+    controlLegend_->setVisible(split);
+    if (split) {
+        std::vector<double> rest(run.u.size());
+        for (std::size_t k = 0; k < rest.size(); ++k)
+            rest[k] = run.u[k] - run.uFeedforward[k];
+        feedforward_->data()->set(minMaxDecimated(run.t, run.uFeedforward), true);
+        feedbackPart_->data()->set(minMaxDecimated(run.t, rest), true);
+    } else {
+        feedforward_->data()->clear();
+        feedbackPart_->data()->clear();
+    }
     const bool digital = digitalVisible_ && axis.digital != nullptr;
     for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
         g->setVisible(digital);

@@ -45,6 +45,11 @@ public:
     QCPGraph* snapshotErrorGraph() const { return snapshotError_; }
     QCPGraph* snapshotControlGraph() const { return snapshotControl_; }
     QCPLegend* positionLegend() const { return legend_; }
+    /// A run with a command feedforward: u's feedforward part and the rest (u - u_ff), and the
+    /// legend naming the three lines of the control panel (hidden without a feedforward).
+    QCPGraph* feedforwardGraph() const { return feedforward_; }
+    QCPGraph* feedbackPartGraph() const { return feedbackPart_; }
+    QCPLegend* controlLegend() const { return controlLegend_; }
     /// The warnings shown over the position panel, and the note in the control panel.
     QString noticeText() const { return notice_->text(); }
     QString controlNoticeText() const { return controlNotice_->text(); }
@@ -63,6 +68,9 @@ private:
     QCPGraph* digitalOutput_;
     QCPGraph* digitalError_;
     QCPGraph* digitalControl_;
+    QCPGraph* feedforward_;
+    QCPGraph* feedbackPart_;
+    QCPLegend* controlLegend_;
     bool digitalVisible_ = true;
     QCPLegend* legend_;
     std::unique_ptr<PlotNotice> notice_;

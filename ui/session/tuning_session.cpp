@@ -247,11 +247,12 @@ void TuningSession::setGt(int axis, const GtAxisSettings& gt, const QString& des
     apply(next, description);
 }
 
-bool TuningSession::setAxis(int axis, const AxisSettings& settings, const QString& description) {
+bool TuningSession::setAxis(int axis, const AxisSettings& settings, const QString& description,
+                            int mergeKey) {
     Session next = session_;
     next.axes.at(static_cast<std::size_t>(axis)) = settings;
     const bool changes = !(next == session_);
-    apply(next, description);
+    apply(next, description, mergeKey);
     return changes;
 }
 

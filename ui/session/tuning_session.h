@@ -138,7 +138,9 @@ public:
     /// A whole Guillemin–Truxal parameter set of an axis (a preset, a point of the design space).
     void setGt(int axis, const GtAxisSettings& gt, const QString& description);
     /// One axis replaced (an identified model with its origin); false when nothing changed.
-    bool setAxis(int axis, const AxisSettings& settings, const QString& description);
+    /// Successive changes with the same @p mergeKey (>= 0: a slider drag) are one undo step.
+    bool setAxis(int axis, const AxisSettings& settings, const QString& description,
+                 int mergeKey = -1);
     /// Both axes replaced together (a worst-case plant pair), as one step.
     void setAxes(const std::array<AxisSettings, 2>& axes, const QString& description);
     /// Stores the current design as a snapshot named @p name.
@@ -183,6 +185,6 @@ QString axisName(const Session& s, int axis);
 QString methodDisplayName(DesignMethod method);
 
 /// Merge keys for slider drags: one per parameter and axis.
-enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300 };
+enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300, kMergeMethodEditor = 400 };
 
 } // namespace xyt::ui

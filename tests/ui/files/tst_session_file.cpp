@@ -358,7 +358,11 @@ void TstSessionFile::malformed_data() {
         << "trajectory.dt" << QJsonValue(QJsonValue::Undefined) << "trajectory.dt"
         << "is missing";
     QTest::newRow("unknown method") << "axes[0].method" << QJsonValue("pid") << "axes[0].method"
-                                    << "must be \"guillemin-truxal\" or \"pole-placement-zpetc\"";
+                                    << "must be \"guillemin-truxal\", \"pole-placement-zpetc\" "
+                                       "or \"pid-ff\"";
+    QTest::newRow("unknown profile")
+        << "trajectory.cubic.profile" << QJsonValue("septic") << "trajectory.cubic.profile"
+        << "must be \"cubic\" or \"quintic\"";
     QJsonArray huge;
     for (int i = 0; i < 100000; ++i)
         huge.append(1.0);
@@ -481,7 +485,30 @@ void TstSessionFile::versionOneFilesMigrate() {
     s.snapshots.push_back({"before", s.axes, s.trajectory, s.umaxVolts});
     const QJsonObject current = sessionToJson(s);
     QCOMPARE(current["version"].toInt(), kSessionFormatVersion);
-    QCOMPARE(kSessionFormatVersion, 3);
+    QCOMPARE(kSessionFormatVersion, 4);
+    // Version 3 had no "profile" in its point-to-point move (nor in its snapshots'): the
+    // migration says "cubic", the current document.
+    const auto withoutProfile = [](QJsonObject holder) {
+        QJsonObject trajectory = holder["trajectory"].toObject();
+        QJsonObject cubic = trajectory["cubic"].toObject();
+        cubic.remove("profile");
+        trajectory["cubic"] = cubic;
+        holder["trajectory"] = trajectory;
+        return holder;
+    };
+    QJsonObject versionThree = withoutProfile(current);
+    versionThree["version"] = 3;
+    QJsonArray threeSnapshots = versionThree["snapshots"].toArray();
+    threeSnapshots[0] = withoutProfile(threeSnapshots[0].toObject());
+    versionThree["snapshots"] = threeSnapshots;
+    QCOMPARE(migrateSessionJson(versionThree, 3), current);
+    QVERIFY(sessionFromJson(versionThree).session == s);
+    // ... version 4 requires it, and the quintic move round-trips.
+    QCOMPARE(sessionFromJson(withoutProfile(current)).message(),
+             QString("trajectory.cubic.profile: is missing"));
+    Session quintic = s;
+    quintic.trajectory.profile = MoveProfile::Quintic;
+    QVERIFY(sessionFromJson(sessionToJson(quintic)).session == quintic);
     // Version 2 had no "parameters" object in its axes (nor in its snapshots' axes): the
     // migration gives each an empty one, the current document.
     QJsonObject versionTwo = current;
@@ -499,6 +526,10 @@ void TstSessionFile::versionOneFilesMigrate() {
     QJsonObject twoSnapshot = twoSnapshots[0].toObject();
     twoSnapshot["axes"] = withoutParameters(twoSnapshot["axes"].toArray());
     twoSnapshots[0] = twoSnapshot;
+    versionTwo["snapshots"] = twoSnapshots;
+    versionTwo = withoutProfile(versionTwo);
+    twoSnapshots = versionTwo["snapshots"].toArray();
+    twoSnapshots[0] = withoutProfile(twoSnapshots[0].toObject());
     versionTwo["snapshots"] = twoSnapshots;
     QCOMPARE(migrateSessionJson(versionTwo, 2), current);
     QVERIFY(sessionFromJson(versionTwo).session == s);
