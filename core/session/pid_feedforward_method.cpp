@@ -482,6 +482,36 @@ std::vector<std::complex<double>> sampledServoPidLoopPoles(const SampledPlant& p
     return poles;
 }
 
+AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex) {
+    AxisSettings out = axis;
+    if (axis.method == DesignMethod::GuilleminTruxal) {
+        const GtDesign gt = sessionGtDesign(axis.gt, axisIndex);
+        const double unit = axis.gt.modelUnitsPerPositionUnit;
+        out.method = DesignMethod::PidFeedforward;
+        out.parameters["p"] = gt.kp * unit;
+        out.parameters["i"] = gt.ki * unit;
+        out.parameters["d"] = 0.0;
+    } else if (axis.method != DesignMethod::PidFeedforward) {
+        throw InvalidInput(axisFieldPath(axisIndex, "method"),
+                           "a " + std::string(designMethodModule(axis.method).displayName()) +
+                               " axis has no feedforward from a continuous model (pole "
+                               "placement's model-inverse feedforward is its ZPETC)");
+    }
+    ModelFeedforwardGains ff;
+    try {
+        ff = modelFeedforwardGains(axis.gt.plant, axis.gt.modelUnitsPerPositionUnit);
+    } catch (const InvalidInput& e) {
+        const std::string part =
+            e.field() == "model_unit_scale" ? "gt.model_unit_scale" : "gt.plant." + e.field();
+        throw InvalidInput(axisFieldPath(axisIndex, part), e.reason());
+    }
+    out.parameters["ff0"] = 0.0;
+    out.parameters["ff1"] = ff.ff1;
+    out.parameters["ff2"] = ff.ff2;
+    out.parameters["ff3"] = ff.ff3;
+    return out;
+}
+
 const DesignMethodModule& pidFeedforwardMethod() {
     static const PidFeedforwardMethod module;
     return module;

@@ -76,6 +76,16 @@ std::vector<std::complex<double>> sampledServoPidLoopPoles(const SampledPlant& p
                                                            int delaySamples);
 
 /**
+ * Axis @p axisIndex with the plant's exact inverse as its feedforward (FF0 = 0, FF1..FF3 of
+ * modelFeedforwardGains): a PID + feedforward axis keeps its feedback; a Guillemin-Truxal axis
+ * becomes the same PI in LinuxCNC's units (P = kp u, I = ki u per mm, D = 0) on the PID +
+ * feedforward method, Braga et al.'s PI plus the feedforward. Throws InvalidInput naming the
+ * field: "axes[i].method" for a pole-placement axis (its model-inverse feedforward is ZPETC),
+ * the plant's fields for a plant without a usable inverse, the GT design's fields.
+ */
+AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex);
+
+/**
  * The feedforward voltage along @p motion (bias + FF0 r + FF1 r' + FF2 r'' + FF3 r''').
  */
 double feedforwardVolts(const ServoPidGains& gains, const MotionSample& motion);

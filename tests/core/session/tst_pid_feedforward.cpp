@@ -8,6 +8,7 @@
 #include "core/design/model_feedforward.h"
 #include "core/session/design_method_module.h"
 #include "core/session/export_text.h"
+#include "core/session/linuxcnc_export.h"
 #include "core/session/pid_feedforward_method.h"
 #include "core/session/robustness_problem.h"
 #include "core/session/session.h"
@@ -25,6 +26,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 using namespace xyt;
@@ -64,7 +66,38 @@ private slots:
     void sampledLoopPolesGovernItsDecay();
     void refusalsNameTheField();
     void firmwareRunsTheCoresLoop();
+    void linuxCncExportReadsBackTheGains();
 };
+
+namespace {
+
+/// The `setp pid.<joint>.<pin> value` lines and the commented INI `NAME = value` lines of a
+/// LinuxCNC export, by "<joint>.<pin>" and "<joint>.<NAME>".
+std::map<std::string, double> parseLinuxCnc(const std::string& text) {
+    std::map<std::string, double> out;
+    std::istringstream in(text);
+    std::string line;
+    std::string joint;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string first, name, equals;
+        double value = 0.0;
+        words >> first;
+        if (first == "setp") {
+            words >> name >> value;
+            out[name.substr(4)] = value; // "pid.0.Pgain" -> "0.Pgain"
+        } else if (first == "#") {
+            words >> name;
+            if (name.rfind("[JOINT_", 0) == 0)
+                joint = name.substr(7, name.size() - 8);
+            else if ((name == "FERROR" || name == "MIN_FERROR") && (words >> equals >> value))
+                out[joint + "." + name] = value;
+        }
+    }
+    return out;
+}
+
+} // namespace
 
 void TstPidFeedforward::quinticMeetsItsEndConditions() {
     // Source: the six end conditions the closed form solves (trajectory.h), and the derivatives
@@ -354,6 +387,57 @@ int main(void) {
     }
     QVERIFY2(du <= 1e-12 * maxAbs(d.run.result.u), qPrintable(QString::number(du)));
     QVERIFY2(dy <= 1e-12 * maxAbs(d.run.result.y), qPrintable(QString::number(dy)));
+}
+
+void TstPidFeedforward::linuxCncExportReadsBackTheGains() {
+    // Source: the session's own gains; the file writes 17 significant digits, so reading it
+    // back gives the same doubles (exact comparison). Axis y (Guillemin-Truxal) maps to P = kp u,
+    // I = ki u; FERROR and MIN_FERROR are kFollowingErrorMargin x the digital run's errors.
+    Session s = pidSession(1.0, 130.0);
+    s.axes[0].parameters["d"] = 0.0004;
+    s.axes[0].parameters["deadband"] = 0.002;
+    s.axes[0].parameters["max_error_i"] = 30.0;
+    const SessionEvaluation e = evaluateSession(s);
+    auto pins = parseLinuxCnc(exportLinuxCnc(s, e));
+    const ServoPidGains& g = pidFeedforwardDesign(e.axes[0]).gains;
+    QCOMPARE(pins.at("0.Pgain"), g.p);
+    QCOMPARE(pins.at("0.Igain"), g.i);
+    QCOMPARE(pins.at("0.Dgain"), 0.0004);
+    QCOMPARE(pins.at("0.FF1"), g.ff1);
+    QCOMPARE(pins.at("0.FF2"), g.ff2);
+    QCOMPARE(pins.at("0.FF3"), g.ff3);
+    QCOMPARE(pins.at("0.deadband"), 0.002);
+    QCOMPARE(pins.at("0.maxerrorI"), 30.0);
+    QCOMPARE(pins.at("0.maxoutput"), 2.5);
+    QCOMPARE(pins.at("0.FERROR"), kFollowingErrorMargin * maxAbs(e.axes[0].digital->run.result.e));
+    QVERIFY(pins.at("0.MIN_FERROR") <= pins.at("0.FERROR"));
+    const GtDesign y = *e.axes[1].gt;
+    QCOMPARE(pins.at("1.Pgain"), y.kp * 0.001);
+    QCOMPARE(pins.at("1.Igain"), y.ki * 0.001);
+    QCOMPARE(pins.at("1.FF1"), 0.0);
+    // With the model's feedforward: written for the Guillemin-Truxal axis too.
+    pins = parseLinuxCnc(exportLinuxCnc(s, e, true));
+    const ModelFeedforwardGains upper = modelFeedforwardGains(s.axes[1].gt.plant, 0.001);
+    QCOMPARE(pins.at("1.FF1"), upper.ff1);
+    QCOMPARE(pins.at("1.FF3"), upper.ff3);
+    // A pole-placement axis has no pid equivalent: refused by name.
+    s.axes[1].method = DesignMethod::PolePlacementZpetc;
+    const SessionEvaluation pp = evaluateSession(s);
+    try {
+        exportLinuxCnc(s, pp);
+        QFAIL("a pole-placement axis was exported");
+    } catch (const InvalidInput& error) {
+        QCOMPARE(QString::fromStdString(error.field()), QStringLiteral("axes[1].method"));
+    }
+    // withModelFeedforward refuses it too, and turns a Guillemin-Truxal axis into its PI + FF.
+    QCOMPARE(test::invalidInputField([&] { withModelFeedforward(s.axes[1], 1); }),
+             QStringLiteral("axes[1].method"));
+    const AxisSettings converted = withModelFeedforward(Session::paperDefault().axes[0], 0);
+    QCOMPARE(converted.method, DesignMethod::PidFeedforward);
+    Session gtFf = Session::paperDefault();
+    gtFf.trajectory.durationSeconds = 130.0;
+    gtFf.axes[0] = converted;
+    XYT_COMPARE_NEAR(evaluateAxis(gtFf, 0).digital->metrics.rmse, 0.00183526, 1e-5, 0.0);
 }
 
 QTEST_APPLESS_MAIN(TstPidFeedforward)
