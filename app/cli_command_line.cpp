@@ -29,7 +29,7 @@ constexpr CommandHelp kGtHelp[] = {
            "            [--k0 K --a1 A --a2 A] --wn W --kp K\n"},
     {"simulate",
      "  simulate  the design on a trajectory: design options plus\n"
-     "            --trajectory cubic --xf X --tf T [--x0 --t0 --v0 --vf]  or\n"
+     "            --trajectory cubic|quintic --xf X --tf T [--x0 --t0 --v0 --vf]  or\n"
      "            --trajectory sine --amplitude A --omega W [--phase-deg P --ramp-in S]\n"
      "            [--duration S] [--dt 0.01] [--umax 2.5] [--in-position-window 0.01] [--csv "
      "FILE]\n"
@@ -42,17 +42,34 @@ constexpr CommandHelp kGtHelp[] = {
      "            --anti-windup none|clamp|back-calculation --tracking-time S]: also the loop the\n"
      "            firmware runs (sampled-data PI, ZOH, quantization, anti-windup): JSON digital\n"
      "            {tracking, move_and_settle, poles (z-plane), min_damping, limit_cycle, "
-     "warnings}.\n"},
+     "warnings}.\n"
+     "            --method pid-ff: LinuxCNC's pid with command feedforward (position in mm) on\n"
+     "            the plant options, cubic or quintic only: [--p --i --d --ff0 --ff1 --ff2 --ff3\n"
+     "            --bias --deadband --max-error-i --max-output (0: --umax) --derivative-filter]\n"
+     "            (none negative), [--derivative-on-measurement] [--trajectory-derivatives (the\n"
+     "            command's derivatives from the trajectory, else backward differences)]. Gains\n"
+     "            not given: P, I the preset's PI (Braga et al.; the lower base's without\n"
+     "            --preset), FF1..FF3 the plant's exact inverse (a2 u/k0, a1 u/k0, u/k0), else\n"
+     "            0. --ff-from-model (any design): FF0 = 0 and FF1..FF3 the plant's inverse; a\n"
+     "            Guillemin-Truxal design runs as its PI in mm units (P = kp u, I = ki u) on\n"
+     "            pid-ff. Both run as the workbench runs a session axis; --digital takes\n"
+     "            --controller-ts --delay-samples --encoder-resolution --dac-bits. JSON: method\n"
+     "            \"pid-ff\", converted_from (\"guillemin-truxal\" or null), gains,\n"
+     "            model_feedforward {ff1, ff2, ff3}, tracking, tracking_without_feedforward_rmse,\n"
+     "            step_response, move_and_settle, margins, warnings, duration_choice, digital\n"
+     "            {controller_ts, tracking, move_and_settle, poles, min_damping, limit_cycle}.\n"},
     {"report", "  report [SESSION.json]  text report of a session, or of the default design\n"
                "            (both bases of Braga et al.) when no file is given\n"},
     {"new", "  new -o FILE             write the default session (Braga et al.: x = lower base,\n"
             "            y = upper base, controller sample time 0.01 s); prints the path\n"},
     {"export",
-     "  export SESSION.json --format json|c|m|csv -o FILE [--discretization\n"
-     "            tustin|backward-euler] [--precision double|float]  controller\n"
-     "            coefficients (JSON, C header with the complete controller per axis in\n"
-     "            double or float, Octave/MATLAB script) or simulated signals (CSV); prints\n"
-     "            the path\n"},
+     "  export SESSION.json --format json|c|m|csv|linuxcnc -o FILE [--discretization\n"
+     "            tustin|backward-euler] [--precision double|float] [--ff-from-model]\n"
+     "            controller coefficients (JSON, C header with the complete controller per axis\n"
+     "            in double or float, Octave/MATLAB script), simulated signals (CSV) or\n"
+     "            LinuxCNC's pid gains per joint (a HAL file of setp lines, position in mm, with\n"
+     "            the INI's FERROR and MIN_FERROR as comments; a pole-placement axis is refused;\n"
+     "            --ff-from-model: FF1..FF3 the plant's exact inverse); prints the path\n"},
     {"rlocus",
      "  rlocus    root locus of 1 + K N/D = 0: --num \"...\" --den \"...\" (descending powers of\n"
      "            s; with --ts T ascending powers of z^-1)  or  --gt-preset lower-base|upper-base\n"
@@ -183,6 +200,22 @@ constexpr CommandHelp kIdentificationHelp[] = {
      "            samples, ts, duration, signal, description, max_abs_u, umax\n"},
 };
 
+constexpr CommandHelp kPidHelp[] = {
+    {"tune",
+     "  tune      PID gains in LinuxCNC's units (position in mm) for the plant options\n"
+     "            [--model-unit-scale U] [--structure pid|pi (default pid, with Ti = 4 Td)]:\n"
+     "            --crossover W (rad/s) --phase-margin DEG: the closed-form gains with\n"
+     "            |L(jW)| = 1 and that margin, L = (P + I/s + D s) G / u. JSON: structure,\n"
+     "            target {crossover, phase_margin}, status (\"ok\", or \"unreachable\" with exit\n"
+     "            0 and gains null: reason says why), reason, gains {p, i, d, ti, td}, achieved\n"
+     "            {crossover, phase_margin} (computed back from the gains), closed_loop_stable,\n"
+     "            warnings.  Or --relay D (volts; exclusive with --crossover): the relay\n"
+     "            experiment's exact limit cycle (Astrom and Hagglund): relay {amplitude,\n"
+     "            period, ultimate_gain, limit_cycle_amplitude (mm)}, describing_function\n"
+     "            {period, amplitude, ultimate_gain}, ziegler_nichols and tyreus_luyben\n"
+     "            {p, i, d, ti, td} from the limit cycle's Ku and Tu\n"},
+};
+
 constexpr const char* kFrequencyLoops =
     "Frequency domain of a loop: --gt-preset lower-base|upper-base [--wn W --kp K], or\n"
     "--pp-preset x-axis|y-axis / --a A --b B --t T [--ts 0.07] (pole placement: L = BG/(AF)),\n"
@@ -206,6 +239,10 @@ std::string generalUsage() {
          "ascending powers, as space- or comma-separated lists, e.g. --a \"1 -1.6580 0.6583\"):\n";
     for (const CommandHelp& c : kPpHelp)
         u += c.text;
+    u += "\nLinuxCNC's PID with command feedforward (simulate --method pid-ff, export --format\n"
+         "linuxcnc):\n";
+    for (const CommandHelp& c : kPidHelp)
+        u += c.text;
     u += std::string("\n") + kFrequencyLoops;
     for (const CommandHelp& c : kFrequencyHelp)
         u += c.text;
@@ -226,6 +263,8 @@ std::string commandUsage(const std::string& name) {
     const CommandHelp* c = find(std::begin(kGtHelp), std::end(kGtHelp));
     if (!c)
         c = find(std::begin(kPpHelp), std::end(kPpHelp));
+    if (!c)
+        c = find(std::begin(kPidHelp), std::end(kPidHelp));
     if (!c)
         c = find(std::begin(kIdentificationHelp), std::end(kIdentificationHelp));
     std::string loops;
@@ -267,6 +306,7 @@ int xyt::cli::runCommandLine(QStringList args) {
         {"robustness", xyt::cli::runRobustness},
         {"identify", xyt::cli::runIdentify},
         {"excite", xyt::cli::runExcite},
+        {"tune", xyt::cli::runTune},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

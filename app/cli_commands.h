@@ -24,5 +24,7 @@ int runMargins(const QStringList& args);
 int runRobustness(const QStringList& args);
 int runIdentify(const QStringList& args);
 int runExcite(const QStringList& args);
+/// PID gains from a target crossover and phase margin, or from a relay experiment.
+int runTune(const QStringList& args);
 
 } // namespace xyt::cli

@@ -98,14 +98,19 @@ QJsonObject designJson(const GtDesign& d) {
 
 Reference parseTrajectory(const CliArgs& args) {
     const QString kind = args.text("trajectory", "");
-    if (kind == "cubic") {
+    if (kind == "cubic" || kind == "quintic") {
         const double t0 = args.number("t0", 0.0);
         const double x0 = args.number("x0", 0.0), xf = args.number("xf"), tf = args.number("tf");
         const double v0 = args.number("v0", 0.0), vf = args.number("vf", 0.0);
+        const PointToPointMove move{x0, xf, tf};
+        if (kind == "quintic") {
+            const QuinticTrajectory quintic =
+                asArgument([&] { return QuinticTrajectory(x0, xf, t0, tf, v0, vf); });
+            return {[quintic](double t) { return quintic.position(t); }, tf, "quintic", move, t0};
+        }
         const CubicTrajectory cubic =
             asArgument([&] { return CubicTrajectory(x0, xf, t0, tf, v0, vf); });
-        return {[cubic](double t) { return cubic.position(t); }, cubic.tf(), "cubic",
-                PointToPointMove{x0, xf, tf}, t0};
+        return {[cubic](double t) { return cubic.position(t); }, cubic.tf(), "cubic", move, t0};
     }
     if (kind == "sine") {
         Sinusoid s;
@@ -123,8 +128,9 @@ Reference parseTrajectory(const CliArgs& args) {
                 std::nullopt, 0.0};
     }
     if (kind.isEmpty())
-        throw InvalidInput("--trajectory", "is required (cubic or sine)");
-    throw InvalidInput("--trajectory", "must be cubic or sine, got '" + kind.toStdString() + "'");
+        throw InvalidInput("--trajectory", "is required (cubic, quintic or sine)");
+    throw InvalidInput("--trajectory",
+                       "must be cubic, quintic or sine, got '" + kind.toStdString() + "'");
 }
 
 double positiveNumber(const CliArgs& args, const QString& name, double fallback) {
@@ -175,17 +181,17 @@ void resampleSetup(SimulationSetup& s, const CliArgs& args, double durationSecon
     } catch (const InvalidInput& e) {
         // Too many samples: blame what the user typed (--duration, else --dt, else the
         // trajectory argument that set the default duration).
-        const std::string culprit = args.has("duration")                  ? "--duration"
-                                    : args.has("dt")                      ? "--dt"
-                                    : s.trajectory.description == "cubic" ? "--tf"
-                                                                          : "--omega";
+        const std::string culprit = args.has("duration") ? "--duration"
+                                    : args.has("dt")     ? "--dt"
+                                    : s.trajectory.move  ? "--tf"
+                                                         : "--omega";
         throw InvalidInput(e.field() == "duration" ? culprit : "--" + e.field(), e.reason());
     }
     if (times.size() < 2) // one sample: every metric would read 0, which is not a result
-        throw InvalidInput(args.has("dt")                        ? "--dt"
-                           : args.has("duration")                ? "--duration"
-                           : s.trajectory.description == "cubic" ? "--tf"
-                                                                 : "--omega",
+        throw InvalidInput(args.has("dt")         ? "--dt"
+                           : args.has("duration") ? "--duration"
+                           : s.trajectory.move    ? "--tf"
+                                                  : "--omega",
                            "gives a single sample (dt " +
                                QString::number(s.options.dtSeconds).toStdString() +
                                " s, duration " + QString::number(s.durationSeconds).toStdString() +
@@ -276,6 +282,25 @@ Session loadSessionOrThrow(const QString& path) {
     if (!r.ok)
         throw InvalidInput(name, r.message().toStdString());
     return r.session;
+}
+
+SampledDataOptions parseSampledDataOptions(const CliArgs& args, double umaxVolts) {
+    SampledDataOptions options;
+    options.delaySamples = args.integer("delay-samples", 0, 0, kMaxDelaySamples);
+    options.encoderResolution = args.number("encoder-resolution", 0.0);
+    options.dacBits = args.integer("dac-bits", 0, 0, 32);
+    options.umaxVolts = umaxVolts;
+    options.antiWindup = parseAntiWindup(args);
+    try {
+        validateSampledDataOptions(options);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(
+            e.field() == "umax"
+                ? "--umax"
+                : CliArgs::field(QString::fromStdString(e.field()).replace('_', '-')),
+            e.reason());
+    }
+    return options;
 }
 
 PiDiscretization parseDiscretization(const CliArgs& args, PiDiscretization fallback) {

@@ -13,6 +13,7 @@
 #include "core/model/errors.h"
 #include "core/session/session.h"
 #include "core/simulation/move_settle.h"
+#include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
 
 #include <QJsonObject>
@@ -62,7 +63,8 @@ struct Reference {
     std::optional<PointToPointMove> move;
     double t0Seconds = 0.0;
 };
-/// --trajectory cubic|sine and its parameters.
+/// --trajectory cubic|quintic|sine and its parameters (quintic: the rest-to-rest move with zero
+/// acceleration at both ends, QuinticTrajectory, on the cubic's options).
 Reference parseTrajectory(const CliArgs& args);
 
 /// The sampled trajectory and loop options of a simulating command: --dt (0.01), --umax (2.5),
@@ -113,6 +115,9 @@ QString marginsText(const StabilityMargins& m);
 /// @throws InvalidInput naming the path with the loader's message (field path and reason).
 Session loadSessionOrThrow(const QString& path);
 
+/// The sampled-data options of simulate --digital: --delay-samples, --encoder-resolution,
+/// --dac-bits, --anti-windup, with @p umaxVolts; a refusal names the option.
+SampledDataOptions parseSampledDataOptions(const CliArgs& args, double umaxVolts);
 /// --discretization tustin|backward-euler, or @p fallback when not given.
 PiDiscretization parseDiscretization(const CliArgs& args, PiDiscretization fallback);
 /// --anti-windup none|clamp|back-calculation (clamp when not given).

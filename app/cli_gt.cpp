@@ -4,6 +4,7 @@
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
+#include "app/cli_pid.h"
 
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
@@ -52,21 +53,7 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
     const double trackingTime = args.number("tracking-time", 0.0);
     if (trackingTime < 0.0)
         throw InvalidInput("--tracking-time", "must be >= 0 (s; 0: Tt = Ti = kp/ki)");
-    SampledDataOptions options;
-    options.delaySamples = args.integer("delay-samples", 0, 0, kMaxDelaySamples);
-    options.encoderResolution = args.number("encoder-resolution", 0.0);
-    options.dacBits = args.integer("dac-bits", 0, 0, 32);
-    options.umaxVolts = setup.options.umaxVolts;
-    options.antiWindup = antiWindup;
-    try {
-        validateSampledDataOptions(options);
-    } catch (const InvalidInput& e) {
-        throw InvalidInput(
-            e.field() == "umax"
-                ? "--umax"
-                : CliArgs::field(QString::fromStdString(e.field()).replace('_', '-')),
-            e.reason());
-    }
+    const SampledDataOptions options = parseSampledDataOptions(args, setup.options.umaxVolts);
     const DigitalPi pi =
         digitalPi(design.kp, design.ki, ts, parseDiscretization(args, PiDiscretization::Tustin),
                   antiWindup, trackingTime);
@@ -129,9 +116,15 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
 } // namespace
 
 int runSimulate(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"digital"});
+    const CliArgs args = CliArgs::parse(argv, simulateFlags());
+    if (simulatesThroughSession(args))
+        return simulateThroughSession(args);
+    for (const QString& name : kPidGainOptions + kPidFlags)
+        if (args.has(name))
+            throw InvalidInput(CliArgs::field(name),
+                               "needs --method pid-ff (the PID with command feedforward)");
     args.allowOnly(kDesignOptions + kTrajectoryOptions + kDigitalOptions +
-                   QStringList{kUnitOption, "in-position-window"});
+                   QStringList{kUnitOption, "in-position-window", "method"});
     if (!args.flag("digital"))
         for (const QString& name : kDigitalOptions)
             if (name != "digital" && args.has(name))
@@ -176,6 +169,7 @@ int runSimulate(const QStringList& argv) {
     if (const auto csv = args.value("csv"))
         writeCsv(*csv, run, args.flag("digital") ? &digitalRun : nullptr);
     QJsonObject out = designJson(design);
+    out.insert("method", "guillemin-truxal");
     insertSetupJson(out, setup);
     out.insert("duration_choice", durationJson);
     out.insert("tracking", trackingJson(trackingMetrics(run)));

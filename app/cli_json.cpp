@@ -80,6 +80,48 @@ QJsonObject moveSettleJson(const MoveSettleMetrics& m) {
             {"diverged", m.diverged}};
 }
 
+QJsonObject marginsJson(const StabilityMargins& m, const NyquistCurve& n) {
+    QJsonArray gains, phases;
+    for (const GainMarginCrossing& c : m.gainMargins)
+        gains.append(QJsonObject{{"omega", number(c.omegaRadPerSec)},
+                                 {"gain_factor", number(c.gainFactor)},
+                                 {"gain_db", number(c.gainDb)}});
+    for (const PhaseMarginCrossing& c : m.phaseMargins)
+        phases.append(QJsonObject{{"omega", number(c.omegaRadPerSec)},
+                                  {"phase_margin_deg", number(c.phaseMarginDeg)},
+                                  {"delay_margin_s", number(c.delayMarginSeconds)}});
+    QJsonArray warnings;
+    for (const std::string& w : m.warnings)
+        warnings.append(QString::fromStdString(w));
+    // number() writes null for a non-finite value; an infinite margin is said in words.
+    const auto margin = [](double v) {
+        return std::isinf(v) && v > 0 ? QJsonValue("inf") : number(v);
+    };
+    return {
+        {"gain_margin", QJsonObject{{"factor", margin(m.gainMarginFactor)},
+                                    {"db", margin(m.gainMarginDb)},
+                                    {"omega", number(m.gainMarginOmegaRadPerSec)}}},
+        {"phase_margin", QJsonObject{{"deg", margin(m.phaseMarginDeg)},
+                                     {"omega", number(m.phaseMarginOmegaRadPerSec)}}},
+        {"delay_margin",
+         QJsonObject{{"s", margin(m.delayMarginSeconds)},
+                     {"samples", m.tsSeconds > 0.0 ? margin(m.delayMarginSamples) : QJsonValue()}}},
+        {"peak_sensitivity", QJsonObject{{"ms", margin(m.peakSensitivity)},
+                                         {"omega", number(m.peakSensitivityOmegaRadPerSec)}}},
+        {"peak_complementary_sensitivity",
+         QJsonObject{{"mt", margin(m.peakComplementarySensitivity)},
+                     {"omega", number(m.peakComplementarySensitivityOmegaRadPerSec)}}},
+        {"bandwidth", margin(m.bandwidthRadPerSec)},
+        {"closed_loop_stable", m.closedLoopStable},
+        {"gain_margin_crossings", gains},   // at every phase crossover
+        {"phase_margin_crossings", phases}, // at every gain crossover
+        {"nyquist", QJsonObject{{"encirclements", n.clockwiseEncirclements},
+                                {"open_loop_unstable_poles", n.openLoopUnstablePoles},
+                                {"closed_loop_unstable_poles", n.closedLoopUnstablePoles}}},
+        {"ts", number(m.tsSeconds)},
+        {"warnings", warnings}};
+}
+
 void print(const QJsonObject& object) {
     const QByteArray bytes = QJsonDocument(object).toJson(QJsonDocument::Indented);
     std::fwrite(bytes.constData(), 1, static_cast<std::size_t>(bytes.size()), stdout);

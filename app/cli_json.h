@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/analysis/nyquist.h"
+#include "core/analysis/stability_margins.h"
 #include "core/model/polynomial.h"
 #include "core/model/transfer_function.h"
 #include "core/simulation/metrics.h"
@@ -38,6 +40,10 @@ QJsonObject stepResponseJson(const StepCharacteristics& step);
 /// {window_mm, move_end, run_end, reached_move_end, settled, settle_time (null unless
 /// settled), final_error, final_overshoot_mm, diverged}.
 QJsonObject moveSettleJson(const MoveSettleMetrics& m);
+/// {gain_margin {factor, db, omega}, phase_margin {deg, omega}, delay_margin, peak_sensitivity,
+/// peak_complementary_sensitivity, bandwidth, closed_loop_stable, every crossing, nyquist, ts,
+/// warnings}: the loop's exact margins (an infinite margin is "inf").
+QJsonObject marginsJson(const StabilityMargins& m, const NyquistCurve& n);
 /// Writes the object to stdout, indented, with a newline.
 void print(const QJsonObject& object);
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// xytune-cli new | export, and report SESSION.json: session files and coefficient exports.
+// xytune-cli new | export, and report SESSION.json: session files, coefficient exports and the
+// LinuxCNC pid gains.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
@@ -10,6 +11,7 @@
 #include "core/session/axis_frequency.h"
 #include "core/session/design_method_module.h"
 #include "core/session/export_text.h"
+#include "core/session/linuxcnc_export.h"
 #include "core/session/session_evaluation.h"
 #include "ui/files/coefficient_json.h"
 #include "ui/files/session_file.h"
@@ -207,13 +209,19 @@ int runSessionReport(const QString& path) {
 }
 
 int runExport(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv);
-    args.allowOnly({"format", "o", "discretization", "precision"});
+    const CliArgs args = CliArgs::parse(argv, {"ff-from-model"});
+    args.allowOnly({"format", "o", "discretization", "precision", "ff-from-model"});
     if (args.positional().size() != 1)
         throw InvalidInput("SESSION", "export takes exactly one session file");
     const QString format = args.text("format", "");
-    if (!QStringList{"json", "c", "m", "csv"}.contains(format))
-        throw InvalidInput("--format", "must be json, c, m or csv");
+    if (!QStringList{"json", "c", "m", "csv", "linuxcnc"}.contains(format))
+        throw InvalidInput("--format", "must be json, c, m, csv or linuxcnc");
+    if (args.flag("ff-from-model") && format != "linuxcnc")
+        throw InvalidInput("--ff-from-model", "applies to --format linuxcnc only");
+    if (args.has("discretization") && format == "linuxcnc")
+        throw InvalidInput("--discretization",
+                           "does not apply to --format linuxcnc: LinuxCNC's pid integrates by "
+                           "the rectangle rule");
     const QString path = outputPath(args);
     const Session session = loadSessionOrThrow(args.positional().first());
     ExportOptions options;
@@ -235,6 +243,9 @@ int runExport(const QStringList& argv) {
                      QJsonDocument(files::coefficientsJson(session, evaluation, options)).toJson());
     else if (format == "c")
         writeOrThrow(path, QByteArray::fromStdString(exportCHeader(session, evaluation, options)));
+    else if (format == "linuxcnc") // refuses a pole-placement axis naming axes[i].method
+        writeOrThrow(path, QByteArray::fromStdString(
+                               exportLinuxCnc(session, evaluation, args.flag("ff-from-model"))));
     else
         writeOrThrow(path,
                      QByteArray::fromStdString(exportOctaveScript(session, evaluation, options)));

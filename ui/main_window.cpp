@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/session/design_method_module.h"
+#include "core/session/pid_feedforward_method.h"
 #include "core/simulation/step_view.h"
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
@@ -19,6 +20,7 @@
 #include "ui/panels/pp_editor.h"
 #include "ui/panels/stale_veil.h"
 #include "ui/panels/trajectory_editor.h"
+#include "ui/pid_tuning_dialog.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/nyquist_plot.h"
@@ -484,6 +486,12 @@ void MainWindow::connectControls() {
     });
 }
 
+MainWindow::~MainWindow() {
+    // (The session may be gone already: the window only reads it, so it is not touched here.)
+    for (MethodEditor* editor : methodEditors_)
+        editor->disconnect(this);
+}
+
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     files_->populateMenu(file);
@@ -518,6 +526,30 @@ void MainWindow::buildMenus() {
         window->raise();
         window->activateWindow();
     });
+    design->addSeparator();
+    feedforwardAction_ = design->addAction(tr("Add &feedforward from the model"), this, [this] {
+        const int axis = session_->currentAxis();
+        try {
+            const AxisSettings next = withModelFeedforward(
+                session_->session().axes.at(static_cast<std::size_t>(axis)), axis);
+            session_->setAxis(
+                axis, next,
+                tr("Feedforward of %1 from the model").arg(axisName(session_->session(), axis)));
+        } catch (const InvalidInput& e) {
+            QMessageBox::warning(this, tr("No feedforward from the model"),
+                                 QString::fromStdString(e.what()));
+        }
+    });
+    feedforwardAction_->setToolTip(
+        tr("The plant's exact inverse as FF1, FF2, FF3: a Guillemin–Truxal axis becomes the same "
+           "PI in LinuxCNC's units on the PID + feedforward method"));
+    tuneAction_ = design->addAction(tr("&Tune the PID..."), this, [this] {
+        PidTuningDialog dialog(session_, session_->currentAxis(), this);
+        dialog.exec();
+    });
+    tuneAction_->setToolTip(tr("PI or PID gains from a crossover and phase margin, or from a "
+                               "simulated relay experiment (PID + feedforward axes)"));
+    design->addSeparator();
     overlayMenu_ = design->addMenu(tr("&Overlay snapshot"));
     // Filled when shown: never rebuilt (its actions deleted) while one of them runs.
     connect(overlayMenu_, &QMenu::aboutToShow, this, &MainWindow::rebuildOverlayMenu);
@@ -552,6 +584,9 @@ void MainWindow::syncControls() {
     const int axis = session_->currentAxis();
     const Session& s = session_->session();
     const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    feedforwardAction_->setEnabled(a.method == DesignMethod::GuilleminTruxal ||
+                                   a.method == DesignMethod::PidFeedforward);
+    tuneAction_->setEnabled(a.method == DesignMethod::PidFeedforward);
     const QSignalBlocker blockTabs(axisTabs_);
     axisTabs_->setCurrentIndex(axis);
     for (int i = 0; i < 2; ++i) {

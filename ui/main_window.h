@@ -58,6 +58,9 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(TuningSession* session, QWidget* parent = nullptr);
+    /// Stops editing first: a field that commits as the window closes (losing the focus) must
+    /// not change the session through a window half destroyed.
+    ~MainWindow() override;
 
     ParameterSlider* omegaNSlider() const { return omegaN_; }
     ParameterSlider* kpSlider() const { return kp_; }
@@ -88,6 +91,9 @@ public:
     QAction* digitalOverlayAction() const { return digitalOverlayAction_; }
     /// View > Pole-zero map of the digital loop (z-plane), off by default.
     QAction* zPlaneAction() const { return zPlaneAction_; }
+    /// Design › Add feedforward from the model, and Design › Tune the PID.
+    QAction* feedforwardAction() const { return feedforwardAction_; }
+    QAction* tuneAction() const { return tuneAction_; }
     EquationsPanel* equationsPanel() const { return equations_; }
     QTabBar* axisTabs() const { return axisTabs_; }
     SessionFileController* files() const { return files_; }
@@ -146,6 +152,8 @@ private:
     ImplementationEditor* implementation_ = nullptr;
     QAction* digitalOverlayAction_ = nullptr;
     QAction* zPlaneAction_ = nullptr;
+    QAction* feedforwardAction_ = nullptr;
+    QAction* tuneAction_ = nullptr;
     QDoubleSpinBox* magnification_ = nullptr;
     ContourControls* contourControls_ = nullptr;
     QTabWidget* upperTabs_ = nullptr;

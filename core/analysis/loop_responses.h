@@ -72,7 +72,9 @@ LoopFrequencyResponses loopFrequencyResponses(const LoopTransferFunctions& loop,
 /// The tracking responses with and without ZPETC on one grid (discrete, up to pi/Ts).
 struct TrackingFrequencyResponses {
     FrequencyResponse withoutFeedforward;
-    FrequencyResponse withZpetc; ///< phase ~ 0 (round-off), magnitude <= 0 dB
+    /// With the feedforward (ZPETC: phase ~ 0 from round-off, magnitude <= 0 dB; a PID's
+    /// command feedforward from the exact model: 0 dB and 0 deg).
+    FrequencyResponse withZpetc;
 };
 /// @throws InvalidInput "omega" as frequencyResponse.
 TrackingFrequencyResponses

@@ -43,9 +43,9 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
         const FrequencyResponse l = adaptiveFrequencyResponse(out.loop.openLoop, grid);
         out.responses = loopFrequencyResponses(out.loop, l.omegaRadPerSec);
         out.nyquist = nyquistCurve(out.loop.openLoop);
-        if (evaluation.pp && evaluation.zpetc)
-            out.tracking = zpetcTrackingFrequencyResponses(*evaluation.pp, *evaluation.zpetc,
-                                                           l.omegaRadPerSec);
+        const DesignMethodModule& module = designMethodModule(evaluation.method);
+        out.tracking = module.trackingResponses(evaluation, l.omegaRadPerSec);
+        out.feedforwardName = std::string(module.feedforwardName());
         out.ok = true;
     } catch (const InvalidInput& e) {
         const double reference = out.referenceOmegaRadPerSec;

@@ -24,7 +24,10 @@ struct AxisFrequencyAnalysis {
     LoopFrequencyResponses responses; ///< L, S, T and u/r on `responses.openLoop.omegaRadPerSec`
     StabilityMargins margins;
     NyquistCurve nyquist;
-    std::optional<TrackingFrequencyResponses> tracking; ///< pole placement + ZPETC only
+    /// r -> y without and with the method's feedforward (DesignMethodModule::trackingResponses):
+    /// pole placement + ZPETC, PID + feedforward.
+    std::optional<TrackingFrequencyResponses> tracking;
+    std::string feedforwardName; ///< what the views call that feedforward ("ZPETC")
     /// The reference frequency of the session's trajectory (the circle's omega), NaN for a
     /// point-to-point move.
     double referenceOmegaRadPerSec = 0.0;

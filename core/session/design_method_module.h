@@ -152,6 +152,18 @@ public:
      */
     virtual std::vector<std::string> equations(const AxisSettings& settings,
                                                const AxisEvaluation& axis) const;
+    /**
+     * The tracking response r -> y of an evaluated design on @p omegaRadPerSec, without and with
+     * its feedforward, when the method has one (pole placement's ZPETC, a PID's command
+     * feedforward); unset otherwise. Throws InvalidInput "omega" as frequencyResponse.
+     */
+    virtual std::optional<TrackingFrequencyResponses>
+    trackingResponses(const AxisEvaluation& /*axis*/,
+                      const std::vector<double>& /*omegaRadPerSec*/) const {
+        return std::nullopt;
+    }
+    /// The method's feedforward as the views name it ("ZPETC", "feedforward").
+    virtual std::string_view feedforwardName() const { return "feedforward"; }
     /// What the design's run is (AxisEvaluation::run), as the report labels it.
     virtual std::string designRunDescription() const { return "the continuous loop, |u| limited"; }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/pid_feedforward_method.h"
 
+#include "core/analysis/frequency_response.h"
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 #include "core/model/root_matching.h"
@@ -329,6 +330,17 @@ public:
                     ", a1 u/k0 = " + n(d.model.ff2) + ", u/k0 = " + n(d.model.ff3) + ")",
                 "C(s) = (P + I/s + D s/(Tf s + 1)) / u,  Tf = " + n(d.continuousFilterSeconds) +
                     " s, u = " + n(d.unit) + " model units per mm"};
+    }
+
+    std::optional<TrackingFrequencyResponses>
+    trackingResponses(const AxisEvaluation& axis,
+                      const std::vector<double>& omegaRadPerSec) const override {
+        if (!axis.methodDesign)
+            return std::nullopt;
+        const PidFeedforwardDesign& d = pidFeedforwardDesign(axis);
+        return TrackingFrequencyResponses{
+            frequencyResponse(d.loop.complementarySensitivity, omegaRadPerSec),
+            frequencyResponse(d.trackingWithFeedforward, omegaRadPerSec)};
     }
 
     std::string designRunDescription() const override {

@@ -312,6 +312,15 @@ public:
     DesignMethod method() const override { return DesignMethod::PolePlacementZpetc; }
     std::string_view id() const override { return "pole-placement-zpetc"; }
     std::string_view displayName() const override { return "pole placement + ZPETC"; }
+    std::optional<TrackingFrequencyResponses>
+    trackingResponses(const AxisEvaluation& axis,
+                      const std::vector<double>& omegaRadPerSec) const override {
+        if (!axis.pp || !axis.zpetc)
+            return std::nullopt;
+        return zpetcTrackingFrequencyResponses(*axis.pp, *axis.zpetc, omegaRadPerSec);
+    }
+    std::string_view feedforwardName() const override { return "ZPETC"; }
+
     std::string designRunDescription() const override {
         return "the linear loop at Ts, |u| over the limit flagged, not applied";
     }

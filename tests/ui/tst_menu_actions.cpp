@@ -96,6 +96,13 @@ Session digitalImplementation() {
     return s;
 }
 
+/// Axis x on the PID + feedforward method (its tuning dialog is enabled), y Guillemin-Truxal.
+Session pidFeedforward() {
+    Session s = Session::paperDefault();
+    s.axes[0].method = DesignMethod::PidFeedforward;
+    return s;
+}
+
 } // namespace
 
 class TstMenuActions : public QObject {
@@ -124,7 +131,8 @@ void TstMenuActions::everyActionInEveryState_data() {
         {"one axis invalid", oneAxisInvalid()},
         {"unstable", unstable()},
         {"gcode program", gcodeProgram()},
-        {"digital implementation", digitalImplementation()}};
+        {"digital implementation", digitalImplementation()},
+        {"PID + feedforward", pidFeedforward()}};
     for (const auto& [name, state] : states)
         for (const bool modified : {false, true})
             for (const bool accept : {false, true})

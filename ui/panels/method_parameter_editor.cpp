@@ -42,7 +42,12 @@ MethodParameterEditor::MethodParameterEditor(std::vector<MethodParameter> parame
                                                                  QString::fromStdString(p.unit));
         form->addRow(label, field);
         fields_[p.name] = field;
-        connect(field, &NumberField::valueAccepted, this, [this, key = p.name](double v) {
+        connect(field, &NumberField::valueAccepted, this, [this, p](double v) {
+            // A field left with its value (focus leaving it, the window closing) changes nothing.
+            const auto it = current_.parameters.find(p.name);
+            if (v == (it == current_.parameters.end() ? p.defaultValue : it->second))
+                return;
+            const std::string& key = p.name;
             AxisSettings next = current_;
             next.parameters[key] = v;
             emit settingsEdited(next, tr("Set %1 of %2 to %3")

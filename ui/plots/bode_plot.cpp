@@ -209,10 +209,13 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
                 a.responses.sensitivity.magnitudeDb);
     setResponse(curve(tr("|T| closed loop"), kComplementary, Qt::DashLine, false).magnitude, w,
                 a.responses.complementarySensitivity.magnitudeDb);
-    // Pole placement: the tracking from the desired output, without and with ZPETC.
-    const QString without = tr("tracking, loop alone"), with = tr("tracking with ZPETC");
-    for (const QString& name : {without, with})
-        if (curves_.contains(name) && !(a.tracking && (name == without || zpetcEnabled))) {
+    // A method with a feedforward (ZPETC, a PID's command feedforward): the tracking r -> y
+    // without and with it.
+    const QString without = tr("tracking, loop alone");
+    const QString with = tr("tracking with %1").arg(QString::fromStdString(a.feedforwardName));
+    for (const QString& name : curves_.keys())
+        if ((name == without || name.startsWith(tr("tracking with "))) &&
+            !(a.tracking && (name == without || (zpetcEnabled && name == with)))) {
             legend_->removeItem(legend_->itemWithPlottable(curves_[name].magnitude));
             removePlottable(curves_[name].magnitude);
             removePlottable(curves_[name].phase);

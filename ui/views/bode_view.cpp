@@ -25,7 +25,8 @@ void BodeView::draw() {
                             tr("No frequency analysis: %1").arg(QString::fromStdString(f.error)));
         return;
     }
-    plot_->showAnalysis(f, a.method == DesignMethod::PolePlacementZpetc && a.pp.zpetcEnabled, title,
+    // The feedforward's curve unless the axis has it switched off (pole placement's ZPETC).
+    plot_->showAnalysis(f, a.method != DesignMethod::PolePlacementZpetc || a.pp.zpetcEnabled, title,
                         {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb, e.check.phaseMargin,
                          e.check.gainMargin});
 }
