@@ -94,9 +94,13 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
     connect(upperTabs_, &QTabWidget::currentChanged, this, tabShown);
     connect(lowerTabs_, &QTabWidget::currentChanged, this, tabShown);
     connect(rootLocusPlot_, &RootLocusPlot::gainPicked, this, [this](double gain) {
-        if (!session_->applyLoopGain(session_->currentAxis(), gain))
+        const int axis = session_->currentAxis();
+        const bool pid = session_->session().axes.at(static_cast<std::size_t>(axis)).method ==
+                         DesignMethod::PidFeedforward;
+        if (!session_->applyLoopGain(axis, gain))
             statusBar()->showMessage(
-                tr("Picking a gain sets kp and ωn of a Guillemin–Truxal axis; this axis uses %1.")
+                tr("Picking a gain sets kp and ωn of a Guillemin–Truxal axis, or P, I and D of a "
+                   "PID; this axis uses %1.")
                     .arg(methodDisplayName(
                         session_->session()
                             .axes.at(static_cast<std::size_t>(session_->currentAxis()))
@@ -104,8 +108,23 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
                 6000);
         else
             statusBar()->showMessage(
-                tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4), 5000);
+                pid ? tr("Loop gain %1 applied: P, I and D scaled").arg(gain, 0, 'g', 4)
+                    : tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4),
+                5000);
     });
+    connect(rootLocusPlot_, &RootLocusPlot::zeroDragged, this,
+            [this](std::complex<double> from, std::complex<double> to, bool finished) {
+                const QString refused =
+                    session_->moveControllerZero(session_->currentAxis(), from, to);
+                if (!refused.isEmpty())
+                    statusBar()->showMessage(tr("The zero stays: %1").arg(refused), 6000);
+                else if (finished)
+                    statusBar()->showMessage(tr("Zero moved to %1 %2 %3j")
+                                                 .arg(to.real(), 0, 'g', 4)
+                                                 .arg(to.imag() < 0 ? "−" : "+")
+                                                 .arg(std::abs(to.imag()), 0, 'g', 4),
+                                             5000);
+            });
     plotSplitter_ = new QSplitter(Qt::Vertical, this);
     plotSplitter_->addWidget(upperTabs_);
     plotSplitter_->addWidget(lowerTabs_);
@@ -587,6 +606,7 @@ void MainWindow::syncControls() {
     feedforwardAction_->setEnabled(a.method == DesignMethod::GuilleminTruxal ||
                                    a.method == DesignMethod::PidFeedforward);
     tuneAction_->setEnabled(a.method == DesignMethod::PidFeedforward);
+    rootLocusPlot_->setZerosDraggable(a.method == DesignMethod::PidFeedforward);
     const QSignalBlocker blockTabs(axisTabs_);
     axisTabs_->setCurrentIndex(axis);
     for (int i = 0; i < 2; ++i) {

@@ -524,6 +524,49 @@ AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex) {
     return out;
 }
 
+PidFeedbackGains pidGainsWithMovedZero(const PidFeedforwardDesign& design,
+                                       std::complex<double> from, std::complex<double> to) {
+    PidFeedbackGains out;
+    const ServoPidGains& g = design.gains;
+    if (!(to.real() < 0.0) || !std::isfinite(to.real()) || !std::isfinite(to.imag())) {
+        out.reason = "a zero in the right half plane (or on the axis) would not be a PID's";
+        return out;
+    }
+    const auto finish = [&](double p, double i, double d) {
+        if (!(p >= 0.0 && i >= 0.0 && d >= 0.0) || !std::isfinite(p + i + d)) {
+            out.reason = "that zero needs a negative P, I or D";
+            return out;
+        }
+        out.ok = true;
+        out.p = p;
+        out.i = i;
+        out.d = d;
+        return out;
+    };
+    if (g.d == 0.0)
+        return finish(g.p, -g.p * to.real(), 0.0);
+    const double tf = design.continuousFilterSeconds;
+    const double n2 = g.p * tf + g.d, n1 = g.p + g.i * tf, n0 = g.i;
+    // The current zeros, the partner of the one nearest @p from.
+    const double disc = n1 * n1 - 4.0 * n2 * n0;
+    std::complex<double> z1, z2;
+    if (disc >= 0.0) {
+        const double q = -0.5 * (n1 + std::copysign(std::sqrt(disc), n1));
+        z1 = q / n2;
+        z2 = q != 0.0 ? n0 / q : 0.0;
+    } else {
+        z1 = {-n1 / (2.0 * n2), std::sqrt(-disc) / (2.0 * n2)};
+        z2 = std::conj(z1);
+    }
+    const bool pair = disc < 0.0 || std::abs(to.imag()) > 0.0;
+    const std::complex<double> partner =
+        pair ? std::conj(to) : (std::abs(from - z1) <= std::abs(from - z2) ? z2 : z1);
+    const std::complex<double> sum = to + partner, product = to * partner;
+    const double n1New = -n2 * sum.real(), n0New = n2 * product.real();
+    const double i = n0New, p = n1New - i * tf, d = n2 - p * tf;
+    return finish(p, i, d);
+}
+
 const DesignMethodModule& pidFeedforwardMethod() {
     static const PidFeedforwardMethod module;
     return module;

@@ -85,6 +85,28 @@ std::vector<std::complex<double>> sampledServoPidLoopPoles(const SampledPlant& p
  */
 AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex);
 
+/// Feedback gains P, I, D (LinuxCNC units), or why a change cannot give any.
+struct PidFeedbackGains {
+    bool ok = false;
+    std::string reason; ///< when !ok
+    double p = 0.0, i = 0.0, d = 0.0;
+};
+
+/**
+ * The feedback gains whose controller has its zero @p from moved to @p to (a zero dragged on the
+ * root locus; the design's continuous controller C(s), see pidFeedforwardMethod), the loop's
+ * other zeros and the controller's high-frequency gain kept:
+ *  - PI (D = 0): C = (P s + I)/(u s), one zero at -I/P: I' = -P Re(to) (a real zero; P kept);
+ *  - PID: C's numerator n2 s^2 + n1 s + n0 with n2 = P Tf + D, n1 = P + I Tf, n0 = I (Tf the
+ *    continuous filter): the zero moves (a complex pair moves together, a real zero keeps its
+ *    partner; a real zero dragged off the axis takes its partner as the conjugate) and n2 is
+ *    kept, so I' = n0', P' = n1' - I' Tf, D' = n2 - P' Tf.
+ * Refused (ok = false) when a gain would be negative or not finite, or @p to is in the right
+ * half plane.
+ */
+PidFeedbackGains pidGainsWithMovedZero(const PidFeedforwardDesign& design,
+                                       std::complex<double> from, std::complex<double> to);
+
 /**
  * The feedforward voltage along @p motion (bias + FF0 r + FF1 r' + FF2 r'' + FF3 r''').
  */

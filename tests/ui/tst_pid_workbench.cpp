@@ -20,6 +20,7 @@
 #include "ui/pid_tuning_dialog.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/number_text.h"
+#include "ui/plots/root_locus_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/session/tuning_session.h"
 
@@ -44,6 +45,7 @@ private slots:
     void quinticProfileIsChosenBesideTheKind();
     void addFeedforwardTurnsThePaperPiIntoPiPlusFeedforward();
     void tuningDialogAppliesEachRule();
+    void draggingAZeroOnTheRootLocusMovesIt();
 
 private:
     PidFeedforwardEditor* editor() const { return window_->findChild<PidFeedforwardEditor*>(); }
@@ -270,6 +272,56 @@ void TstPidWorkbench::tuningDialogAppliesEachRule() {
     // A refused relay amplitude stays at the field.
     test::typeInto(dialog.relayField(), "-1");
     QVERIFY(dialog.relayField()->hasError());
+}
+
+void TstPidWorkbench::draggingAZeroOnTheRootLocusMovesIt() {
+    RootLocusPlot* locus = window_->rootLocusPlot();
+    window_->upperTabs()->setCurrentWidget(locus);
+    QVERIFY(!locus->zerosDraggable()); // the Guillemin-Truxal PI: its zero is not the user's
+    choosePid();
+    QApplication::processEvents();
+    QVERIFY(locus->zerosDraggable());
+    QCOMPARE(locus->locus().zeros.size(), std::size_t{1}); // the PI's -I/P
+    const std::complex<double> zero = locus->locus().zeros.front();
+    XYT_COMPARE_NEAR(zero.real(), -pidFeedforwardDesign(session_->axisEvaluation(0)).gains.i / 0.03,
+                     1e-9, 0.0);
+    // Press on the zero, drag it left in three moves, release: one undo step, and the
+    // controller's zero where it was released (the pixel's coordinate in the view as it is at
+    // the release; I' = -P Re(s)).
+    const auto pixel = [&](std::complex<double> s) {
+        return QPoint(qRound(locus->xAxis->coordToPixel(s.real())),
+                      qRound(locus->yAxis->coordToPixel(s.imag())));
+    };
+    const QCPRange before = locus->xAxis->range();
+    const int steps = session_->undoStack()->count();
+    const QPoint start = pixel(zero);
+    QTest::mousePress(locus, Qt::LeftButton, {}, start);
+    for (int dx : {-10, -20, -30}) {
+        QMouseEvent move(QEvent::MouseMove, start + QPoint(dx, 0), locus->mapToGlobal(start),
+                         Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(locus, &move);
+    }
+    const QPoint end = start + QPoint(-30, 0);
+    const double expected = locus->xAxis->pixelToCoord(end.x());
+    QTest::mouseRelease(locus, Qt::LeftButton, {}, end);
+    QApplication::processEvents();
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    const ServoPidGains& g = pidFeedforwardDesign(session_->axisEvaluation(0)).gains;
+    XYT_COMPARE_NEAR(-g.i / g.p, expected, 1e-12, 0.0);
+    QVERIFY(locus->locus().zeros.front().real() < zero.real());
+    QCOMPARE(test::plotsMismatch(window_.get(), session_.get()), QString());
+    // Into the right half plane: refused, the design unchanged, the status bar says why.
+    const double iBefore = g.i;
+    const QPoint moved = pixel(locus->locus().zeros.front());
+    QTest::mousePress(locus, Qt::LeftButton, {}, moved);
+    QTest::mouseRelease(locus, Qt::LeftButton, {}, pixel({0.5 * before.upper, 0.0}));
+    QCOMPARE(pidFeedforwardDesign(session_->axisEvaluation(0)).gains.i, iBefore);
+    QVERIFY(window_->statusBar()->currentMessage().contains("right half plane"));
+    // Picking a gain on a branch scales P, I and D.
+    const double p = pidFeedforwardDesign(session_->axisEvaluation(0)).gains.p;
+    emit locus->gainPicked(2.0);
+    XYT_COMPARE_NEAR(pidFeedforwardDesign(session_->axisEvaluation(0)).gains.p, 2.0 * p, 1e-15,
+                     0.0);
 }
 
 QTEST_MAIN(TstPidWorkbench)

@@ -66,6 +66,26 @@ QString RootLocusPlot::readoutHint() {
     return tr("hover a branch: K, ζ, ωn; click: use that gain");
 }
 
+void RootLocusPlot::setZerosDraggable(bool draggable) {
+    zerosDraggable_ = draggable;
+    zeros_->setName(draggable ? tr("open-loop zeros (drag to move)") : tr("open-loop zeros"));
+}
+
+std::optional<std::complex<double>> RootLocusPlot::zeroAtPixel(const QPointF& pixel,
+                                                               double maxPixels) const {
+    std::optional<std::complex<double>> best;
+    double nearest = maxPixels;
+    for (const std::complex<double>& z : locus_.zeros) {
+        const double d = std::hypot(xAxis->coordToPixel(z.real()) - pixel.x(),
+                                    yAxis->coordToPixel(z.imag()) - pixel.y());
+        if (d <= nearest) {
+            nearest = d;
+            best = z;
+        }
+    }
+    return best;
+}
+
 void RootLocusPlot::showLocus(const RootLocus& locus,
                               const std::vector<std::complex<double>>& currentPoles,
                               const QString& title) {
@@ -162,6 +182,14 @@ std::optional<LocusPick> RootLocusPlot::pickAtPixel(const QPointF& pixel, double
 }
 
 void RootLocusPlot::onMouseMove(QMouseEvent* event) {
+    if (draggedZero_ && (event->buttons() & Qt::LeftButton)) {
+        const std::complex<double> to(xAxis->pixelToCoord(event->position().x()),
+                                      yAxis->pixelToCoord(event->position().y()));
+        const std::complex<double> from = *draggedZero_;
+        draggedZero_ = to;
+        emit zeroDragged(from, to, false);
+        return;
+    }
     if (event->buttons() != Qt::NoButton)
         return; // dragging pans the view
     const auto pick = pickAtPixel(event->position());
@@ -185,9 +213,23 @@ void RootLocusPlot::onMouseMove(QMouseEvent* event) {
 
 void RootLocusPlot::onMousePress(QMouseEvent* event) {
     pressPos_ = event->pos();
+    draggedZero_.reset();
+    if (zerosDraggable_ && hasLocus_ && event->button() == Qt::LeftButton)
+        draggedZero_ = zeroAtPixel(event->position());
+    // A zero is dragged, not the view.
+    setInteraction(QCP::iRangeDrag, !draggedZero_);
 }
 
 void RootLocusPlot::onMouseRelease(QMouseEvent* event) {
+    if (draggedZero_) {
+        const std::complex<double> from = *draggedZero_;
+        const std::complex<double> to(xAxis->pixelToCoord(event->position().x()),
+                                      yAxis->pixelToCoord(event->position().y()));
+        draggedZero_.reset();
+        setInteraction(QCP::iRangeDrag, true);
+        emit zeroDragged(from, to, true);
+        return;
+    }
     if (event->button() != Qt::LeftButton || (event->pos() - pressPos_).manhattanLength() > 4)
         return; // a drag, not a click
     const auto pick = pickAtPixel(event->position());

@@ -44,10 +44,17 @@ public:
     int branchCurveCount() const { return static_cast<int>(branches_.size()); }
     QCPCurve* branchCurve(int i) const { return branches_.at(static_cast<std::size_t>(i)); }
     QCPGraph* currentPolesGraph() const { return current_; }
+    QCPGraph* zerosGraph() const { return zeros_; }
+    /// Whether the open-loop zeros (o) can be dragged (a controller whose zeros are its own:
+    /// the PID's). A press within a few pixels of a zero then drags it instead of panning.
+    void setZerosDraggable(bool draggable);
+    bool zerosDraggable() const { return zerosDraggable_; }
 
 signals:
     /// The user clicked on a branch: the loop gain K at that point (K = 1 is the current design).
     void gainPicked(double gain);
+    /// The user drags the zero that was at @p from to @p to (s-plane); @p finished on release.
+    void zeroDragged(std::complex<double> from, std::complex<double> to, bool finished);
 
 protected:
     void leaveEvent(QEvent* event) override;
@@ -57,6 +64,11 @@ private:
     void onMouseMove(QMouseEvent* event);
     void onMousePress(QMouseEvent* event);
     void onMouseRelease(QMouseEvent* event);
+    /// The zero within @p maxPixels of @p pixel, if any.
+    std::optional<std::complex<double>> zeroAtPixel(const QPointF& pixel,
+                                                    double maxPixels = 8.0) const;
+    bool zerosDraggable_ = false;
+    std::optional<std::complex<double>> draggedZero_; ///< where the dragged zero is now
 
     RootLocus locus_;
     PlaneGrid grid_;

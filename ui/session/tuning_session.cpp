@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/session/design_method_module.h"
+#include "core/session/pid_feedforward_method.h"
 
 #include <QLocale>
 #include <QUndoCommand>
@@ -320,7 +321,20 @@ std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
 
 bool TuningSession::applyLoopGain(int axis, double gain) {
     const AxisSettings& a = session_.axes.at(static_cast<std::size_t>(axis));
-    if (a.method != DesignMethod::GuilleminTruxal || !(gain > 0.0) || !std::isfinite(gain))
+    if (!(gain > 0.0) || !std::isfinite(gain))
+        return false;
+    if (a.method == DesignMethod::PidFeedforward && axisEvaluation(axis).methodDesign) {
+        // K multiplies the controller: P, I and D (the feedforward is outside the loop).
+        const ServoPidGains& g = pidFeedforwardDesign(axisEvaluation(axis)).gains;
+        Session next = session_;
+        auto& parameters = next.axes.at(static_cast<std::size_t>(axis)).parameters;
+        parameters["p"] = gain * g.p;
+        parameters["i"] = gain * g.i;
+        parameters["d"] = gain * g.d;
+        apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4));
+        return true;
+    }
+    if (a.method != DesignMethod::GuilleminTruxal)
         return false;
     Session next = session_;
     auto& gt = next.axes.at(static_cast<std::size_t>(axis)).gt;
@@ -328,6 +342,24 @@ bool TuningSession::applyLoopGain(int axis, double gain) {
     gt.omegaNRadPerSec *= std::pow(gain, 0.25);
     apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4));
     return true;
+}
+
+QString TuningSession::moveControllerZero(int axis, std::complex<double> from,
+                                          std::complex<double> to) {
+    const AxisEvaluation& e = axisEvaluation(axis);
+    if (session_.axes.at(static_cast<std::size_t>(axis)).method != DesignMethod::PidFeedforward ||
+        !e.methodDesign)
+        return tr("Only a PID + feedforward axis has zeros of its own to drag.");
+    const PidFeedbackGains g = pidGainsWithMovedZero(pidFeedforwardDesign(e), from, to);
+    if (!g.ok)
+        return QString::fromStdString(g.reason);
+    Session next = session_;
+    auto& parameters = next.axes.at(static_cast<std::size_t>(axis)).parameters;
+    parameters["p"] = g.p;
+    parameters["i"] = g.i;
+    parameters["d"] = g.d;
+    apply(next, tr("Move a zero of %1's PID").arg(axisName(next, axis)), kMergeZeroDrag + axis);
+    return {};
 }
 
 void TuningSession::setMethod(int axis, DesignMethod method) {

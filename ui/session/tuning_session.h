@@ -137,6 +137,12 @@ public:
     void setSpecificationAndLimit(const Specification& spec, double umaxVolts);
     /// A whole Guillemin–Truxal parameter set of an axis (a preset, a point of the design space).
     void setGt(int axis, const GtAxisSettings& gt, const QString& description);
+    /**
+     * Moves the zero of a PID + feedforward axis' controller at @p from to @p to
+     * (pidGainsWithMovedZero): P, I, D change, successive moves of one drag merge into one undo
+     * step. Returns why nothing changed (another method, a zero a PID cannot have), or empty.
+     */
+    QString moveControllerZero(int axis, std::complex<double> from, std::complex<double> to);
     /// One axis replaced (an identified model with its origin); false when nothing changed.
     /// Successive changes with the same @p mergeKey (>= 0: a slider drag) are one undo step.
     bool setAxis(int axis, const AxisSettings& settings, const QString& description,
@@ -185,6 +191,12 @@ QString axisName(const Session& s, int axis);
 QString methodDisplayName(DesignMethod method);
 
 /// Merge keys for slider drags: one per parameter and axis.
-enum MergeKey { kMergeOmegaN = 100, kMergeKp = 200, kMergeT1 = 300, kMergeMethodEditor = 400 };
+enum MergeKey {
+    kMergeOmegaN = 100,
+    kMergeKp = 200,
+    kMergeT1 = 300,
+    kMergeMethodEditor = 400,
+    kMergeZeroDrag = 500
+};
 
 } // namespace xyt::ui

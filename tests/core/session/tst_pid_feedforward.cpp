@@ -67,6 +67,7 @@ private slots:
     void refusalsNameTheField();
     void firmwareRunsTheCoresLoop();
     void linuxCncExportReadsBackTheGains();
+    void movedZeroIsTheControllersZero();
 };
 
 namespace {
@@ -438,6 +439,50 @@ void TstPidFeedforward::linuxCncExportReadsBackTheGains() {
     gtFf.trajectory.durationSeconds = 130.0;
     gtFf.axes[0] = converted;
     XYT_COMPARE_NEAR(evaluateAxis(gtFf, 0).digital->metrics.rmse, 0.00183526, 1e-5, 0.0);
+}
+
+void TstPidFeedforward::movedZeroIsTheControllersZero() {
+    // Invariant: the gains pidGainsWithMovedZero returns give a controller C(s) whose zeros are
+    // the moved zero and the kept one (checked on the designed controller's numerator, to 1e-9
+    // relative), with the high-frequency gain n2 kept.
+    Session s = pidSession();
+    PidFeedforwardDesign d = designPidFeedforward(s, 0);
+    // PI: the one zero -I/P to -0.05 rad/s: I' = 0.05 P (closed form).
+    PidFeedbackGains g = pidGainsWithMovedZero(d, {-d.gains.i / d.gains.p, 0.0}, {-0.05, 0.3});
+    QVERIFY(g.ok);
+    QCOMPARE(g.p, d.gains.p);
+    XYT_COMPARE_NEAR(g.i, 0.05 * d.gains.p, 1e-15, 0.0);
+    // PID: move one real zero, keep the other; then pull the pair off the axis.
+    s.axes[0].parameters["d"] = 0.002;
+    s.axes[0].parameters["derivative_filter"] = 0.01;
+    d = designPidFeedforward(s, 0);
+    std::vector<std::complex<double>> zeros = d.controller.zeros();
+    QCOMPARE(zeros.size(), std::size_t{2});
+    const auto check = [&](const PidFeedbackGains& moved, std::complex<double> expected1,
+                           std::complex<double> expected2) {
+        QVERIFY2(moved.ok, moved.reason.c_str());
+        Session t = s;
+        t.axes[0].parameters["p"] = moved.p;
+        t.axes[0].parameters["i"] = moved.i;
+        t.axes[0].parameters["d"] = moved.d;
+        const PidFeedforwardDesign e = designPidFeedforward(t, 0);
+        XYT_COMPARE_NEAR(e.controller.num().descending().front(),
+                         d.controller.num().descending().front(), 1e-12, 0.0);
+        std::vector<std::complex<double>> z = e.controller.zeros();
+        QCOMPARE(z.size(), std::size_t{2});
+        const bool direct = std::abs(z[0] - expected1) <= std::abs(z[1] - expected1);
+        const std::complex<double> a = direct ? z[0] : z[1], b = direct ? z[1] : z[0];
+        QVERIFY(std::abs(a - expected1) <= 1e-9 * std::abs(expected1));
+        QVERIFY(std::abs(b - expected2) <= 1e-9 * std::abs(expected2));
+    };
+    const std::complex<double> fast = std::abs(zeros[0]) > std::abs(zeros[1]) ? zeros[0] : zeros[1];
+    const std::complex<double> slow = fast == zeros[0] ? zeros[1] : zeros[0];
+    check(pidGainsWithMovedZero(d, slow, {-0.5, 0.0}), {-0.5, 0.0}, fast);
+    const std::complex<double> pair(0.8 * fast.real(), 0.3 * std::abs(fast.real()));
+    check(pidGainsWithMovedZero(d, fast, pair), pair, std::conj(pair));
+    // Refused: the right half plane, and a zero that needs a negative gain.
+    QVERIFY(!pidGainsWithMovedZero(d, slow, {0.5, 0.0}).ok);
+    QVERIFY(!pidGainsWithMovedZero(d, slow, {-1e6, 0.0}).ok);
 }
 
 QTEST_APPLESS_MAIN(TstPidFeedforward)
