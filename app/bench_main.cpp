@@ -39,6 +39,7 @@
 #include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/panels/parameter_slider.h"
+#include "ui/panels/pid_feedforward_editor.h"
 #include "ui/plots/bode_plot.h"
 #include "ui/plots/pole_zero_plot.h"
 #include "ui/session/tuning_session.h"
@@ -688,6 +689,23 @@ private:
     int next_ = 0;
 };
 
+/// Axis x on the PID + feedforward method, its FF1 slider (percent of the model's inverse)
+/// dragged as the omega_n slider is: the continuous run with the feedforward, the run without it
+/// and the sampled-data PID each step, on the default tabs. The window is left as it was.
+void sliderWithPidFeedforward(Runner& r, xyt::ui::TuningSession& session,
+                              xyt::ui::MainWindow& window) {
+    const xyt::Session before = session.session();
+    session.setMethod(0, xyt::DesignMethod::PidFeedforward);
+    QApplication::processEvents();
+    auto* editor = window.findChild<xyt::ui::PidFeedforwardEditor*>();
+    if (!editor)
+        return;
+    SliderStep step(editor->feedforwardSlider(1)->slider());
+    r.time("gui_slider_to_repaint_pid_ff", [&step] { step(); });
+    session.apply(before, "back to the default session");
+    QApplication::processEvents();
+}
+
 /// The digital implementation overlaid (its run, figures and z-plane poles are computed with
 /// every design) with a quantized, delayed implementation, and the pole-zero map of the digital
 /// loop above (target under 16 ms); the window is left as it was.
@@ -757,6 +775,7 @@ void guiSliderToRepaint(Runner& r, int& argc, char* argv[]) {
     QApplication::processEvents();
     SliderStep step(window.omegaNSlider()->slider());
     r.time("gui_slider_to_repaint", [&step] { step(); });
+    sliderWithPidFeedforward(r, session, window);
     sliderWithDigitalOverlay(r, session, window, step);
     window.upperTabs()->setCurrentWidget(window.bodePlot());
     QApplication::processEvents();

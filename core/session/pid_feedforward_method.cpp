@@ -109,9 +109,11 @@ SimulationResult continuousRun(const PidFeedforwardDesign& d,
     options.umaxVolts = d.gains.maxOutput;
     options.modelUnitsPerPositionUnit = d.unit;
     options.initialOutput = initialOutput;
-    const std::vector<double> ff = continuousFeedforward(d, motion, dt);
-    if (withFeedforward)
+    std::vector<double> ff;
+    if (withFeedforward) {
+        ff = continuousFeedforward(d, motion, dt);
         options.feedforwardVolts = &ff;
+    }
     return simulateLoop(d.plant, d.controller, positions(motion), options);
 }
 
@@ -146,17 +148,23 @@ void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEval
     }
 }
 
+/// @p continuousMotion: the command at the continuous run's samples (trajectory.dt), reused
+/// when the controller samples at the same times.
 void evaluateDigital(const Session& session, int axisIndex, double duration,
-                     const PidFeedforwardDesign& design, AxisEvaluation& out) {
+                     const PidFeedforwardDesign& design,
+                     const std::vector<MotionSample>& continuousMotion, AxisEvaluation& out) {
     try {
         DigitalEvaluation d;
         d.tsSeconds = design.tsSeconds;
         SampledDataOptions options = sessionSampledDataOptions(session);
         const auto times =
             axisSampleTimes(session.trajectory, duration, design.tsSeconds, "controller_ts");
-        d.run = simulateSampledServoPid(design.plant, design.gains, design.tsSeconds,
-                                        motionAt(session, axisIndex, times),
-                                        design.derivativeSource, options, design.unit);
+        const bool sameTimes = design.tsSeconds == session.trajectory.dtSeconds &&
+                               times.size() == continuousMotion.size();
+        d.run = simulateSampledServoPid(
+            design.plant, design.gains, design.tsSeconds,
+            sameTimes ? continuousMotion : motionAt(session, axisIndex, times),
+            design.derivativeSource, options, design.unit);
         d.poles = sampledServoPidLoopPoles(sampledPlant(design.plant, design.tsSeconds),
                                            design.gains, design.unit, options.delaySamples);
         d.designMinDamping = minContinuousDamping(design.closedLoopPoles);
@@ -189,14 +197,17 @@ public:
         const std::vector<MotionSample> motion = motionAt(session, axisIndex, times);
         out.run = continuousRun(*design, motion, dt, true);
         out.metrics = trackingMetrics(out.run);
+        out.step = stepCharacteristics(design->loop.complementarySensitivity);
+        addWarnings(session, *design, out);
+        // The move-only evaluation that chooses the run's duration (withDigital false) needs
+        // neither the feedback's run alone nor the digital one.
+        if (!withDigital)
+            return;
         out.feedbackOnlyRun = continuousRun(*design, motion, dt, false);
         out.rmseWithoutFf = trackingMetrics(out.feedbackOnlyRun).rmse;
         out.improvementPct =
             out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - out.metrics.rmse / out.rmseWithoutFf) : 0.0;
-        out.step = stepCharacteristics(design->loop.complementarySensitivity);
-        addWarnings(session, *design, out);
-        if (withDigital)
-            evaluateDigital(session, axisIndex, durationSeconds, *design, out);
+        evaluateDigital(session, axisIndex, durationSeconds, *design, motion, out);
     }
 
     AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
