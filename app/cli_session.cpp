@@ -106,8 +106,8 @@ int runSessionReport(const QString& path) {
     const TrajectorySettings& t = session.trajectory;
     out << "XY Tune report: " << shown(fileNameBytes(path)) << "\n";
     if (t.kind == TrajectoryKind::Cubic)
-        out << "Trajectory: cubic " << t.x0 << " -> " << t.xf << " mm from " << t.t0Seconds
-            << " s to " << t.tfSeconds << " s";
+        out << "Trajectory: " << (t.profile == MoveProfile::Quintic ? "quintic " : "cubic ") << t.x0
+            << " -> " << t.xf << " mm from " << t.t0Seconds << " s to " << t.tfSeconds << " s";
     else if (t.kind == TrajectoryKind::Gcode)
         out << "Trajectory: G-code program " << shown(t.gcode.fileName) << ", feed scale "
             << t.gcode.feedScale << ", max acceleration " << t.gcode.maxAccelMmPerS2

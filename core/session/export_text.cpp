@@ -150,7 +150,16 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
 std::string octaveTrajectoryLines(const TrajectorySettings& t, int axisIndex,
                                   const std::string& id) {
     std::ostringstream out;
-    if (t.kind == TrajectoryKind::Cubic) {
+    if (t.kind == TrajectoryKind::Cubic && t.profile == MoveProfile::Quintic) {
+        const QuinticTrajectory quintic(t.x0, t.xf, t.t0Seconds, t.tfSeconds, t.v0, t.vf);
+        const auto& c = quintic.localCoefficients();
+        const std::string f = "trajectory.cubic (tf - t0 too short for the move?)";
+        out << "tau = min(max(t - " << num(t.t0Seconds, "trajectory.cubic.t0") << ", 0), "
+            << num(t.tfSeconds - t.t0Seconds, "trajectory.cubic.tf") << ");\n";
+        out << "r_" << id << " = " << num(c[0], f) << " + " << num(c[1], f) << " * tau + "
+            << num(c[3], f) << " * tau.^3 + " << num(c[4], f) << " * tau.^4 + " << num(c[5], f)
+            << " * tau.^5;  % quintic point-to-point (zero acceleration at both ends)\n";
+    } else if (t.kind == TrajectoryKind::Cubic) {
         const CubicTrajectory cubic(t.x0, t.xf, t.t0Seconds, t.tfSeconds, t.v0, t.vf);
         const auto& l = cubic.localCoefficients();
         const std::string f = "trajectory.cubic (tf - t0 too short for the move?)";

@@ -161,10 +161,10 @@ void evaluateDigital(const Session& session, int axisIndex, double duration,
             axisSampleTimes(session.trajectory, duration, design.tsSeconds, "controller_ts");
         const bool sameTimes = design.tsSeconds == session.trajectory.dtSeconds &&
                                times.size() == continuousMotion.size();
-        d.run = simulateSampledServoPid(
-            design.plant, design.gains, design.tsSeconds,
-            sameTimes ? continuousMotion : motionAt(session, axisIndex, times),
-            design.derivativeSource, options, design.unit);
+        d.run = simulateSampledServoPid(design.plant, design.gains, design.tsSeconds,
+                                        sameTimes ? continuousMotion
+                                                  : motionAt(session, axisIndex, times),
+                                        design.derivativeSource, options, design.unit);
         d.poles = sampledServoPidLoopPoles(sampledPlant(design.plant, design.tsSeconds),
                                            design.gains, design.unit, options.delaySamples);
         d.designMinDamping = minContinuousDamping(design.closedLoopPoles);
