@@ -476,6 +476,11 @@ QString RobustnessView::axisSummary(const RobustnessResult& r) const {
                 .arg(figure(100.0 * r.fractionMeetingSpec, 3))
                 .arg(r.nominal.meetsSpec ? tr("does") : tr("does not"))
                 .arg(r.unstable.size());
+    if (r.rmseWithoutFf.count > 0 && r.rmse.count > 0 && r.rmse.p50 > 0.0)
+        text += tr(" The feedforward divides the RMSE by %1 on the median plant (%2 at the 95 % "
+                   "RMSE).")
+                    .arg(figure(r.rmseWithoutFf.p50 / r.rmse.p50, 3),
+                         figure(r.rmseWithoutFf.p95 / r.rmse.p95, 3));
     const std::vector<UncertainParameter>& parameters = problem_->parameters;
     const bool anyVaried =
         std::any_of(parameters.begin(), parameters.end(),

@@ -83,8 +83,12 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
         o.umaxVolts = problem.spec.umaxVolts;
         o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
         o.initialOutput = problem.initialOutput;
-        if (!problem.feedforwardVolts.empty())
+        if (!problem.feedforwardVolts.empty()) {
+            // The feedback alone on this plant first: what the feedforward still gains here.
+            simulateLoopInto(g, *problem.controller, problem.reference, o, run);
+            out.rmseWithoutFf = rootMeanSquare(run.e);
             o.feedforwardVolts = &problem.feedforwardVolts;
+        }
         simulateLoopInto(g, *problem.controller, problem.reference, o, run);
         if (out.stable)
             out.step = stepCharacteristics(closed);

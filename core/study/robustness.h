@@ -74,7 +74,8 @@ struct PlantRun {
     bool stable = false;        ///< the closed loop with the nominal controller
     bool finite = false;        ///< every sample of the run is finite (else it diverged)
     TrackingMetrics tracking;
-    /// Discrete axes with ZPETC: the RMSE of the loop alone on this plant (NaN otherwise).
+    /// Axes with a feedforward (ZPETC, a PID's command feedforward): the RMSE of the feedback
+    /// loop alone on this plant (NaN otherwise).
     double rmseWithoutFf = std::numeric_limits<double>::quiet_NaN();
     StepCharacteristics step;
     std::optional<MoveSettleMetrics> move;

@@ -22,10 +22,14 @@
 #include "ui/plots/number_text.h"
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/time_response_plot.h"
+#include "ui/robustness_view.h"
 #include "ui/session/tuning_session.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 #include <QUndoStack>
 
@@ -46,6 +50,7 @@ private slots:
     void addFeedforwardTurnsThePaperPiIntoPiPlusFeedforward();
     void tuningDialogAppliesEachRule();
     void draggingAZeroOnTheRootLocusMovesIt();
+    void robustnessSaysWhatTheFeedforwardStillGains();
 
 private:
     PidFeedforwardEditor* editor() const { return window_->findChild<PidFeedforwardEditor*>(); }
@@ -322,6 +327,30 @@ void TstPidWorkbench::draggingAZeroOnTheRootLocusMovesIt() {
     emit locus->gainPicked(2.0);
     XYT_COMPARE_NEAR(pidFeedforwardDesign(session_->axisEvaluation(0)).gains.p, 2.0 * p, 1e-15,
                      0.0);
+}
+
+void TstPidWorkbench::robustnessSaysWhatTheFeedforwardStillGains() {
+    // The robustness tab on a PID + feedforward axis, k0 +-10 %: its summary gives the ratio of
+    // the feedback's RMSE alone to the RMSE with the feedforward on the median plant, from the
+    // core's result (Distribution p50s).
+    choosePid();
+    RobustnessView* view = window_->findChild<RobustnessView*>();
+    QVERIFY(view);
+    window_->lowerTabs()->setCurrentWidget(view);
+    QApplication::processEvents();
+    view->rangeBox("k0")->setValue(10.0);
+    view->samplesBox()->setValue(8);
+    QSignalSpy spy(view, &RobustnessView::analysisFinished);
+    QTest::mouseClick(view->runButton(), Qt::LeftButton);
+    QVERIFY(spy.wait(60000));
+    QVERIFY(view->result());
+    const RobustnessResult& r = *view->result();
+    QVERIFY(r.rmseWithoutFf.count > 0);
+    const double gain = r.rmseWithoutFf.p50 / r.rmse.p50;
+    QVERIFY(gain > 5.0); // the requirement: at least 5x with k0 10 % off
+    QVERIFY2(view->statusText().contains(
+                 QStringLiteral("divides the RMSE by %1").arg(significant(gain, 3))),
+             qPrintable(view->statusText()));
 }
 
 QTEST_MAIN(TstPidWorkbench)

@@ -232,8 +232,27 @@ void TstPidFeedforward::feedforwardSurvivesAMistunedGain() {
     RobustnessOptions o;
     o.samples = 2;
     o.corners = false;
-    const RobustnessResult r = analyzeRobustness(p, o);
+    RobustnessResult r = analyzeRobustness(p, o);
     XYT_COMPARE_NEAR(r.nominal.tracking.rmse, nominal.metrics.rmse, 1e-12, 0.0);
+    // ... and the feedback's alone (AxisEvaluation::rmseWithoutFf): what the feedforward gains.
+    XYT_COMPARE_NEAR(r.nominal.rmseWithoutFf, nominal.rmseWithoutFf, 1e-12, 0.0);
+    // On the corner k0 + 10 % the robustness run is the evaluation of that plant above.
+    RobustnessProblem off = p;
+    for (UncertainParameter& u : off.parameters)
+        if (u.name == "k0")
+            u.relative = 0.1;
+    o.corners = true;
+    o.samples = 1;
+    r = analyzeRobustness(off, o);
+    bool found = false;
+    for (const PlantRun& run : r.runs)
+        if (run.corner && run.values[0] > 77.8 && run.values[1] == 125.3 &&
+            run.values[2] == 3665.0) {
+            XYT_COMPARE_NEAR(run.tracking.rmse, a.metrics.rmse, 1e-9, 0.0);
+            XYT_COMPARE_NEAR(run.rmseWithoutFf, a.rmseWithoutFf, 1e-9, 0.0);
+            found = true;
+        }
+    QVERIFY(found);
 }
 
 void TstPidFeedforward::sampledLoopPolesGovernItsDecay() {
