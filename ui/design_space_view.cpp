@@ -3,6 +3,7 @@
 #include "ui/plots/number_text.h"
 
 #include "core/model/errors.h"
+#include "core/session/pid_feedforward_method.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
 #include "ui/panels/stale_veil.h"
@@ -419,12 +420,44 @@ void DesignSpaceView::showEvent(QShowEvent* event) {
     scheduleLive();
 }
 
+namespace {
+
+/// Whether the map can study axis @p axis of @p s: a Guillemin-Truxal axis, or a PID +
+/// feedforward axis without D (its PI over the same (wn, kp) family, sessionDesignProblem).
+bool studiable(const Session& s, int axis) {
+    const AxisSettings& a = s.axes.at(static_cast<std::size_t>(axis));
+    if (a.method == DesignMethod::GuilleminTruxal)
+        return true;
+    if (a.method != DesignMethod::PidFeedforward)
+        return false;
+    const auto d = a.parameters.find("d");
+    return d == a.parameters.end() || d->second == 0.0;
+}
+
+/// The (wn, kp) of an axis' current design as the map places it: a PID's PI as P = kp u,
+/// I = ki u with ki = wn^4 / k0 (Braga et al. Eq. 11, 16); unset when there is none.
+std::optional<std::pair<double, double>> mapCoordinates(const TuningSession& session, int axis) {
+    const AxisSettings& a = session.session().axes.at(static_cast<std::size_t>(axis));
+    if (a.method == DesignMethod::GuilleminTruxal)
+        return std::make_pair(a.gt.omegaNRadPerSec, a.gt.kp);
+    const AxisEvaluation& e = session.axisEvaluation(axis);
+    if (a.method != DesignMethod::PidFeedforward || !e.methodDesign)
+        return std::nullopt;
+    const PidFeedforwardDesign& d = pidFeedforwardDesign(e);
+    const double ki = d.gains.i / d.unit;
+    if (!(ki > 0.0) || !(a.gt.plant.k0 > 0.0))
+        return std::nullopt;
+    return std::make_pair(std::pow(ki * a.gt.plant.k0, 0.25), d.gains.p / d.unit);
+}
+
+} // namespace
+
 void DesignSpaceView::scheduleLive(bool force) {
     if (!live_ || !live_->isChecked() || !isVisible())
         return;
     const Session& s = session_->session();
     const int axis = session_->currentAxis();
-    if (s.axes.at(static_cast<std::size_t>(axis)).method != DesignMethod::GuilleminTruxal)
+    if (!studiable(s, axis))
         return; // the status says so when a study is asked for
     // What is shown, or being computed: a running study's settings, else the last result's.
     const bool running = isRunning();
@@ -477,9 +510,14 @@ void DesignSpaceView::startStudy(StudyKind kind) {
     const int axis = session_->currentAxis();
     const Session& s = session_->session();
     const AxisSettings& settings = s.axes.at(static_cast<std::size_t>(axis));
-    if (settings.method != DesignMethod::GuilleminTruxal) {
-        setStatus(tr("The design space applies to Guillemin–Truxal axes; axis %1 uses %2.")
-                      .arg(axisName(s, axis), methodDisplayName(settings.method)),
+    if (!studiable(s, axis)) {
+        setStatus(settings.method == DesignMethod::PidFeedforward
+                      ? tr("The design space maps a PI with its feedforward; axis %1 has D: set "
+                           "D to 0 to map it.")
+                            .arg(axisName(s, axis))
+                      : tr("The design space applies to Guillemin–Truxal and PI + feedforward "
+                           "axes; axis %1 uses %2.")
+                            .arg(axisName(s, axis), methodDisplayName(settings.method)),
                   true);
         return;
     }
@@ -687,8 +725,8 @@ void DesignSpaceView::updateCurrentDesign() {
             }
         }
     }
-    const GtAxisSettings& gt = s.axes.at(static_cast<std::size_t>(studiedAxis())).gt;
-    plot_->setCurrentDesign(gt.omegaNRadPerSec, gt.kp);
+    if (const auto at = mapCoordinates(*session_, studiedAxis()))
+        plot_->setCurrentDesign(at->first, at->second);
     showFreshness();
     scheduleLive();
 }
@@ -715,15 +753,14 @@ void DesignSpaceView::showFreshness() {
     QString why;
     if (stamp_->axis != axis)
         why = tr("This tab shows axis %1.").arg(axisName(s, axis));
-    else if (s.axes.at(static_cast<std::size_t>(axis)).method != DesignMethod::GuilleminTruxal)
-        why = tr("Axis %1 now uses %2: the map applies to Guillemin–Truxal axes.")
+    else if (!studiable(s, axis))
+        why = tr("Axis %1 now uses %2: the map applies to Guillemin–Truxal and PI + feedforward "
+                 "axes.")
                   .arg(axisName(s, axis),
                        methodDisplayName(s.axes.at(static_cast<std::size_t>(axis)).method));
     else
         why = tr("The plant, the trajectory or the limits the runs depend on have changed since.");
-    const bool studiable =
-        s.axes.at(static_cast<std::size_t>(axis)).method == DesignMethod::GuilleminTruxal;
-    const QString next = !studiable ? QString()
+    const QString next = !studiable(s, axis) ? QString()
                          : live_->isChecked() && isVisible()
                              ? tr("The live map of the current design follows.")
                              : tr("Press Run to study the current design.");
@@ -748,7 +785,17 @@ void DesignSpaceView::loadCell(std::size_t iWn, std::size_t iKp) {
         return;
     if (!resultIsCurrent())
         return; // a cell of another study's map (veiled: no click reaches it)
-    GtAxisSettings gt = session_->session().axes.at(static_cast<std::size_t>(stamp_->axis)).gt;
+    const AxisSettings& axis = session_->session().axes.at(static_cast<std::size_t>(stamp_->axis));
+    if (axis.method == DesignMethod::PidFeedforward) {
+        // The cell's PI in LinuxCNC's units; the feedforward and the limits stay.
+        const DesignPoint& point = result_->at(iWn, iKp);
+        AxisSettings next = axis;
+        next.parameters["p"] = point.kp * axis.gt.modelUnitsPerPositionUnit;
+        next.parameters["i"] = point.ki * axis.gt.modelUnitsPerPositionUnit;
+        session_->setAxis(stamp_->axis, next, tr("Load design from the design space"));
+        return;
+    }
+    GtAxisSettings gt = axis.gt;
     gt.omegaNRadPerSec = result_->wnValues.at(iWn);
     gt.kp = result_->kpValues.at(iKp);
     session_->setGt(stamp_->axis, gt, tr("Load design from the design space"));

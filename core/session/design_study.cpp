@@ -2,10 +2,13 @@
 #include "core/session/design_study.h"
 
 #include "core/model/errors.h"
+#include "core/session/axis_run.h"
+#include "core/session/pid_feedforward_method.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
 
 #include <cmath>
+#include <optional>
 
 namespace xyt {
 
@@ -14,15 +17,23 @@ DesignProblem sessionDesignProblem(const Session& session, int axis,
     if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
         throw InvalidInput("axis", "there is no axis " + std::to_string(axis));
     const AxisSettings& settings = session.axes[static_cast<std::size_t>(axis)];
-    if (settings.method != DesignMethod::GuilleminTruxal)
-        throw InvalidInput("method", "the design space applies to Guillemin-Truxal axes");
+    std::optional<PidFeedforwardDesign> pid;
+    if (settings.method == DesignMethod::PidFeedforward) {
+        pid = designPidFeedforward(session, axis);
+        if (pid->gains.d != 0.0)
+            throw InvalidInput(axisFieldPath(axis, "parameters.d"),
+                               "the design space maps PI gains (with the feedforward): set D to 0");
+    } else if (settings.method != DesignMethod::GuilleminTruxal) {
+        throw InvalidInput("method", "the design space applies to Guillemin-Truxal and PI + "
+                                     "feedforward axes");
+    }
     if (fidelity.maxSamples == 1)
         throw InvalidInput("max_samples", "a run needs at least 2 samples (0: no limit)");
     DesignProblem problem;
     problem.plant = settings.gt.plant;
     problem.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
     problem.spec = session.spec; // the one specification of the session
-    problem.spec.umaxVolts = session.umaxVolts;
+    problem.spec.umaxVolts = pid ? pid->gains.maxOutput : session.umaxVolts;
     problem.spec.validate();
     problem.stepSamples = fidelity.stepSamples;
     const TrajectorySettings& t = session.trajectory;
@@ -37,7 +48,14 @@ DesignProblem sessionDesignProblem(const Session& session, int axis,
         std::floor(duration / dt + 1e-9) + 1.0 > static_cast<double>(fidelity.maxSamples))
         dt = duration / static_cast<double>(fidelity.maxSamples - 1);
     problem.dtSeconds = dt;
-    problem.reference = sampled(axisReference(t, axis), sampleTimes(duration, dt));
+    const std::vector<double> times = sampleTimes(duration, dt);
+    problem.reference = sampled(axisReference(t, axis), times);
+    if (pid) {
+        const auto motion = axisMotion(t, axis);
+        problem.feedforwardVolts.resize(times.size());
+        for (std::size_t k = 0; k < times.size(); ++k)
+            problem.feedforwardVolts[k] = feedforwardVolts(pid->gains, motion(times[k]));
+    }
     if (cubic)
         problem.move = PointToPointMove{t.x0, t.xf, t.tfSeconds};
     return problem;

@@ -35,8 +35,11 @@ inline constexpr StudyFidelity kLivePreviewFidelity{1500, 100};
  * axis's plant and model unit, the session's trajectory for that axis sampled at its dt (or
  * coarser, see StudyFidelity), its specification with umax as the actuator limit. A cubic with
  * the automatic duration runs tf + 2 x the allowed settle time (moveSweepDurationSeconds) and
- * is judged on its move and settle.
- * @throws InvalidInput "axis" when out of range, "method" when the axis is not Guillemin-Truxal,
+ * is judged on its move and settle. A PID + feedforward axis with D = 0 is studied as its PI
+ * over the same (wn, kp) family (P = kp u, I = ki u, ki = wn^4/k0) with its feedforward fixed
+ * (DesignProblem::feedforwardVolts, its output limit the actuator's).
+ * @throws InvalidInput "axis" when out of range, "method" when the axis is neither
+ *         Guillemin-Truxal nor PID + feedforward, "axes[i].parameters.d" for a PID with D,
  *         and from the trajectory and the specification.
  */
 DesignProblem sessionDesignProblem(const Session& session, int axis,

@@ -31,15 +31,23 @@ FohDiscretization modeStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, d
  */
 template <int W> struct Lanes {
     double phiL[kStates * kStates][W], g0L[kStates][W], g1L[kStates][W];
+    double g0F[kStates][W], g1F[kStates][W]; ///< the feedforward's input column, when there is one
     double phiC[kStates * kStates][W], g0C[kStates][2][W], g1C[kStates][2][W];
     double cp[3][W], cc[W], dc[W];
     bool clippedReady[W];
     const LoopModes* modes[W];
 
-    void load(int l, const LoopModes& m, double dt) {
+    void load(int l, const LoopModes& m, double dt, bool feedforward) {
         if (m.plantStates != 3 || m.controllerStates != 1)
             throw std::logic_error("trackBatch: expected a third-order plant and a PI controller");
-        const FohDiscretization s = modeStep(m.aLinear, m.bLinear, dt);
+        // With a feedforward the linear mode has the plant input as its second input, as in
+        // simulateLoop (the same two-column discretization, so the same bits).
+        Eigen::MatrixXd b = m.bLinear;
+        if (feedforward) {
+            b.conservativeResize(Eigen::NoChange, 2);
+            b.col(1) = m.bClipped.col(1);
+        }
+        const FohDiscretization s = modeStep(m.aLinear, b, dt);
         for (int i = 0; i < kStates; ++i) {
             for (int j = 0; j < kStates; ++j) {
                 phiL[i * kStates + j][l] = s.phi(i, j);
@@ -47,6 +55,8 @@ template <int W> struct Lanes {
             }
             g0L[i][l] = s.gamma0(i, 0);
             g1L[i][l] = s.gamma1(i, 0);
+            g0F[i][l] = feedforward ? s.gamma0(i, 1) : 0.0;
+            g1F[i][l] = feedforward ? s.gamma1(i, 1) : 0.0;
             for (int j = 0; j < 2; ++j)
                 g0C[i][j][l] = g1C[i][j][l] = 0.0;
         }
@@ -84,7 +94,8 @@ void runBatch(const LoopModes* const* loops, int used, const TrackingRun& run, d
               MoveSettleAccumulator* const* moves, std::optional<TrackingMetrics>* results) {
     Lanes<W> lanes;
     for (int l = 0; l < W; ++l)
-        lanes.load(l, *loops[l < used ? l : 0], run.dtSeconds);
+        lanes.load(l, *loops[l < used ? l : 0], run.dtSeconds, run.feedforwardVolts != nullptr);
+    const double* ff = run.feedforwardVolts ? run.feedforwardVolts->data() : nullptr;
     const std::vector<double>& ref = *run.reference;
     const std::size_t count = ref.size();
     const double dt = run.dtSeconds;
@@ -108,6 +119,7 @@ void runBatch(const LoopModes* const* loops, int used, const TrackingRun& run, d
     constexpr double kHuge = std::numeric_limits<double>::max();
     for (std::size_t k = 0; k < count; ++k) {
         const double rk = ref[k] * unit;
+        const double ffk = ff ? ff[k] : 0.0;
         const double t = static_cast<double>(k) * dt;
         // 0 at k = 0, where trackingMetrics adds nothing: adding 0.5 * 0 * (finite) = +0.0 to
         // itae = +0.0 leaves the same bits (a lane with a non-finite sample is discarded).
@@ -118,7 +130,7 @@ void runBatch(const LoopModes* const* loops, int used, const TrackingRun& run, d
             yl += lanes.cp[0][l] * x[0][l];
             yl += lanes.cp[1][l] * x[1][l];
             yl += lanes.cp[2][l] * x[2][l];
-            double v = lanes.dc[l] * (rk - yl);
+            double v = lanes.dc[l] * (rk - yl) + ffk; // simulateLoop's order
             v += lanes.cc[l] * x[3][l];
             const bool c = limited && std::abs(v) > umax;
             u[l] = c ? std::copysign(umax, v) : v;
@@ -153,12 +165,15 @@ void runBatch(const LoopModes* const* loops, int used, const TrackingRun& run, d
             std::all_of(bad, bad + used, [](double b) { return b != 0.0; }))
             break; // every result is nullopt; the rest of the run cannot change that
         const double slope = (ref[k + 1] - ref[k]) * unit / dt;
+        const double ffSlope = ff ? (ff[k + 1] - ff[k]) / dt : 0.0;
         for (int i = 0; i < kStates; ++i)
             for (int l = 0; l < W; ++l) {
                 double acc = 0.0;
                 for (int j = 0; j < kStates; ++j)
                     acc += lanes.phiL[i * kStates + j][l] * x[j][l];
                 acc += lanes.g0L[i][l] * rk + lanes.g1L[i][l] * slope;
+                if (ff)
+                    acc += lanes.g0F[i][l] * ffk + lanes.g1F[i][l] * ffSlope;
                 next[i][l] = acc;
             }
         if (anyClip != 0.0) {
@@ -230,6 +245,8 @@ void trackBatch(std::span<const LoopModes> lanes, const TrackingRun& run,
     if (std::isnan(run.umaxVolts) || !(run.umaxVolts > 0.0))
         throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
     requirePositive(run.modelUnitsPerPositionUnit, "model_unit_scale");
+    if (run.feedforwardVolts && run.feedforwardVolts->size() != run.reference->size())
+        throw InvalidInput("feedforward", "must have one sample per reference sample");
     const auto [lo, hi] = std::minmax_element(run.reference->begin(), run.reference->end());
     const double travel = *hi - *lo; // as trackingMetrics: max r - min r
     switch (width) {

@@ -21,6 +21,9 @@ struct TrackingRun {
     double dtSeconds = 0.01;
     double umaxVolts = std::numeric_limits<double>::infinity(); ///< infinity: no limit
     double modelUnitsPerPositionUnit = 1.0;
+    /// A command feedforward added to every loop's controller output (V at the reference's
+    /// samples, linear between them), as LoopSimulationOptions::feedforwardVolts; null: none.
+    const std::vector<double>* feedforwardVolts = nullptr;
 };
 
 /**

@@ -170,6 +170,8 @@ void DesignEvaluator::evaluateBatch(std::span<const double> wn, std::span<const 
     run.dtSeconds = problem_.dtSeconds;
     run.umaxVolts = problem_.spec.umaxVolts;
     run.modelUnitsPerPositionUnit = problem_.modelUnitsPerPositionUnit;
+    if (!problem_.feedforwardVolts.empty())
+        run.feedforwardVolts = &problem_.feedforwardVolts;
     trackBatch(modes, run, movePointers, tracking, batchWidth);
     for (std::size_t i = 0; i < n; ++i)
         out[i] = finishPoint(designs[i], tracking[i], moves.empty() ? nullptr : &*moves[i]);

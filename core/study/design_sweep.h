@@ -84,6 +84,9 @@ struct DesignProblem {
     /// of the fastest closed-loop oscillation instead of 125: the sampled peak is then within
     /// 1 - cos(pi / 25) = 0.8 % of that oscillation's amplitude).
     int stepSamples = 500;
+    /// A command feedforward every design runs with (V at the reference's samples; empty:
+    /// none): a PID + feedforward axis' feedforward, fixed while its PI gains are varied.
+    std::vector<double> feedforwardVolts;
 };
 
 /**

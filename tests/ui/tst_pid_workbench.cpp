@@ -11,6 +11,7 @@
 #include "core/session/pid_feedforward_method.h"
 #include "tests/support/gui_checks.h"
 #include "tests/support/tolerance.h"
+#include "ui/design_space_view.h"
 #include "ui/main_window.h"
 #include "ui/panels/method_parameter_editor.h"
 #include "ui/panels/number_field.h"
@@ -19,6 +20,7 @@
 #include "ui/panels/trajectory_editor.h"
 #include "ui/pid_tuning_dialog.h"
 #include "ui/plots/bode_plot.h"
+#include "ui/plots/design_space_plot.h"
 #include "ui/plots/number_text.h"
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/time_response_plot.h"
@@ -51,6 +53,7 @@ private slots:
     void tuningDialogAppliesEachRule();
     void draggingAZeroOnTheRootLocusMovesIt();
     void robustnessSaysWhatTheFeedforwardStillGains();
+    void designSpaceMapsThePiAndLoadsACell();
 
 private:
     PidFeedforwardEditor* editor() const { return window_->findChild<PidFeedforwardEditor*>(); }
@@ -351,6 +354,47 @@ void TstPidWorkbench::robustnessSaysWhatTheFeedforwardStillGains() {
     QVERIFY2(view->statusText().contains(
                  QStringLiteral("divides the RMSE by %1").arg(significant(gain, 3))),
              qPrintable(view->statusText()));
+}
+
+void TstPidWorkbench::designSpaceMapsThePiAndLoadsACell() {
+    // The design-space tab on a PID + feedforward axis without D: a study of its PI over
+    // (wn, kp) with the feedforward fixed; a clicked cell sets P = kp u and I = ki u (one undo
+    // step), the feedforward kept; P and I edits leave the map current (only the marker moves);
+    // a D refuses the study at the status line.
+    choosePid();
+    TrajectorySettings t = session_->session().trajectory;
+    t.durationSeconds = 130.0; // the study's runs and the evaluation's then have one length
+    session_->setTrajectory(t);
+    DesignSpaceView* view = window_->findChild<DesignSpaceView*>();
+    QVERIFY(view);
+    view->liveBox()->setChecked(false);
+    window_->lowerTabs()->setCurrentWidget(view);
+    QApplication::processEvents();
+    view->wnCountBox()->setValue(4);
+    view->kpCountBox()->setValue(4);
+    QSignalSpy spy(view, &DesignSpaceView::studyFinished);
+    view->run();
+    QVERIFY(spy.wait(60000));
+    QVERIFY(view->result() && view->resultIsCurrent());
+    QVERIFY(!view->studiedProblem()->feedforwardVolts.empty());
+    const DesignPoint& cell = view->result()->at(1, 2);
+    const double ff1 = pidFeedforwardDesign(session_->axisEvaluation(0)).gains.ff1;
+    const int steps = session_->undoStack()->count();
+    emit view->plot()->cellClicked(1, 2);
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    const PidFeedforwardDesign& d = pidFeedforwardDesign(session_->axisEvaluation(0));
+    QCOMPARE(d.gains.p, cell.kp * 0.001);
+    QCOMPARE(d.gains.i, cell.ki * 0.001);
+    QCOMPARE(d.gains.ff1, ff1);
+    QVERIFY(view->resultIsCurrent());
+    // The cell's figures are the evaluation's (the design's run, 1e-9: the round trip).
+    XYT_COMPARE_NEAR(session_->axisEvaluation(0).metrics.rmse, cell.tracking.rmse, 1e-9, 0.0);
+    // A feedforward change stales the map; a D refuses a new study.
+    emit editor()->feedforwardSlider(1)->valueChanged(80.0);
+    QVERIFY(!view->resultIsCurrent());
+    test::typeInto(editor()->gainsEditor()->field("d"), "0.001");
+    view->run();
+    QVERIFY(view->statusLabel()->text().contains("set D to 0"));
 }
 
 QTEST_MAIN(TstPidWorkbench)

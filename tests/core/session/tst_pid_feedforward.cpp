@@ -7,6 +7,7 @@
 // the loop (double: equal to the core's sampled-data run to 1e-12 of the signal).
 #include "core/design/model_feedforward.h"
 #include "core/session/design_method_module.h"
+#include "core/session/design_study.h"
 #include "core/session/export_text.h"
 #include "core/session/linuxcnc_export.h"
 #include "core/session/pid_feedforward_method.h"
@@ -69,6 +70,7 @@ private slots:
     void linuxCncExportReadsBackTheGains();
     void movedZeroIsTheControllersZero();
     void programContourAndExportsCarryTheFeedforward();
+    void designSpaceMapsThePiWithItsFeedforward();
 };
 
 namespace {
@@ -537,6 +539,40 @@ void TstPidFeedforward::programContourAndExportsCarryTheFeedforward() {
             std::string::npos);
     QVERIFY(m.find("tracking_y = closed_loop_y + feedback(1, controller_y * plant_y) * "
                    "ff_plant_y;") != std::string::npos);
+}
+
+void TstPidFeedforward::designSpaceMapsThePiWithItsFeedforward() {
+    // Source: the sweep's batched kernel with a feedforward equals simulateLoop with it bit for
+    // bit (the same two-column discretization and sums: exact comparison); and the map's point
+    // of the paper's (wn, kp) is the evaluation of the PID + feedforward axis with that PI (its
+    // controller's coefficients differ by the mm/model-unit round trip: 1e-9).
+    const Session s = pidSession(1.0, 130.0);
+    const DesignProblem problem = sessionDesignProblem(s, 0);
+    QCOMPARE(problem.feedforwardVolts.size(), problem.reference.size());
+    const DesignEvaluator evaluator(problem);
+    const DesignPoint point = evaluator.evaluate(2.0, 30.0);
+    const GtDesign gt = designGuilleminTruxal(problem.plant, 2.0, 30.0);
+    LoopSimulationOptions o;
+    o.dtSeconds = problem.dtSeconds;
+    o.umaxVolts = problem.spec.umaxVolts;
+    o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
+    o.feedforwardVolts = &problem.feedforwardVolts;
+    const TrackingMetrics direct = trackingMetrics(
+        simulateLoop(problem.plant.transferFunction(), gt.controller, problem.reference, o));
+    QCOMPARE(point.tracking.rmse, direct.rmse);
+    QCOMPARE(point.tracking.itae, direct.itae);
+    const AxisEvaluation a = evaluateAxis(s, 0);
+    XYT_COMPARE_NEAR(point.tracking.rmse, a.metrics.rmse, 1e-9, 0.0);
+    // Without the feedforward the same point tracks as the Guillemin-Truxal axis does.
+    Session plain = Session::paperDefault();
+    plain.trajectory.durationSeconds = 130.0;
+    QVERIFY(point.tracking.rmse * 1000.0 <
+            DesignEvaluator(sessionDesignProblem(plain, 0)).evaluate(2.0, 30.0).tracking.rmse);
+    // A PID with D is refused by name.
+    Session withD = s;
+    withD.axes[0].parameters["d"] = 0.001;
+    QCOMPARE(test::invalidInputField([&] { sessionDesignProblem(withD, 0); }),
+             QStringLiteral("axes[0].parameters.d"));
 }
 
 QTEST_APPLESS_MAIN(TstPidFeedforward)
