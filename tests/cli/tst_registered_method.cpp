@@ -441,7 +441,7 @@ void TstRegisteredMethod::cliReportShowsIt() {
     QCOMPARE(code, 0);
     QVERIFY2(report.contains("== Axis x (lower base): proportional\n  kp = 20 V/model unit\n"),
              qPrintable(report));
-    const ThirdOrderPlant& g = proportionalSession().axes[0].gt.plant;
+    const ThirdOrderPlant g = proportionalSession().axes[0].gt.plant;
     const double gm = g.a1 * g.a2 / (20.0 * g.k0);
     // The margins line (3 significant digits) with the closed-form gain margin.
     QVERIFY2(report.contains(QStringLiteral("loop margins: GM %1 dB at %2 rad/s")
