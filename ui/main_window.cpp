@@ -112,6 +112,22 @@ MainWindow::MainWindow(TuningSession* session, QWidget* parent)
                     : tr("Loop gain %1 applied: kp and ωn scaled").arg(gain, 0, 'g', 4),
                 5000);
     });
+    connect(rootLocusPlot_, &RootLocusPlot::gainDragged, this, [this](double gain, bool finished) {
+        const int axis = session_->currentAxis();
+        if (!gainDragBase_)
+            gainDragBase_ = session_->session().axes.at(static_cast<std::size_t>(axis));
+        const bool applied =
+            session_->applyLoopGainTo(axis, *gainDragBase_, gain, kMergeGainDrag + axis);
+        if (finished || !applied) {
+            gainDragBase_.reset();
+            statusBar()->showMessage(
+                applied
+                    ? tr("Loop gain %1 of the design before the drag applied").arg(gain, 0, 'g', 4)
+                    : tr("Dragging a pole sets the loop gain of a Guillemin–Truxal axis or "
+                         "a PID."),
+                5000);
+        }
+    });
     connect(rootLocusPlot_, &RootLocusPlot::zeroDragged, this,
             [this](std::complex<double> from, std::complex<double> to, bool finished) {
                 const QString refused =

@@ -6,6 +6,8 @@
 #include <QElapsedTimer>
 #include <QMainWindow>
 
+#include <optional>
+
 #include <vector>
 
 class QComboBox;
@@ -153,6 +155,8 @@ private:
     QAction* digitalOverlayAction_ = nullptr;
     QAction* zPlaneAction_ = nullptr;
     QAction* feedforwardAction_ = nullptr;
+    /// The axis as it was when a drag of a closed-loop pole along the root locus began.
+    std::optional<AxisSettings> gainDragBase_;
     QAction* tuneAction_ = nullptr;
     QDoubleSpinBox* magnification_ = nullptr;
     ContourControls* contourControls_ = nullptr;

@@ -54,6 +54,7 @@ private slots:
     void draggingAZeroOnTheRootLocusMovesIt();
     void robustnessSaysWhatTheFeedforwardStillGains();
     void designSpaceMapsThePiAndLoadsACell();
+    void draggingAPoleAlongTheLocusSetsTheGain();
 
 private:
     PidFeedforwardEditor* editor() const { return window_->findChild<PidFeedforwardEditor*>(); }
@@ -395,6 +396,62 @@ void TstPidWorkbench::designSpaceMapsThePiAndLoadsACell() {
     test::typeInto(editor()->gainsEditor()->field("d"), "0.001");
     view->run();
     QVERIFY(view->statusLabel()->text().contains("set D to 0"));
+}
+
+void TstPidWorkbench::draggingAPoleAlongTheLocusSetsTheGain() {
+    // Press on a closed-loop pole of the design, drag it along the locus in three moves,
+    // release: the loop gain of the release point on the locus as it was at the press
+    // (pickLocusPoint of that locus) multiplies P, I and D of the design before the drag, once
+    // (the moves do not compound), as one undo step; the feedforward stays.
+    choosePid();
+    RootLocusPlot* plot = window_->rootLocusPlot();
+    window_->upperTabs()->setCurrentWidget(plot);
+    QApplication::processEvents();
+    const RootLocus before = plot->locus();
+    const PidFeedforwardDesign design = pidFeedforwardDesign(session_->axisEvaluation(0));
+    // A closed-loop pole of the design in view, and a point of its branch at least 20 px away.
+    const auto pixel = [&](std::complex<double> s) {
+        return QPoint(qRound(plot->xAxis->coordToPixel(s.real())),
+                      qRound(plot->yAxis->coordToPixel(s.imag())));
+    };
+    const QRect area = plot->axisRect()->rect();
+    QPoint from, to;
+    for (const std::complex<double>& pole : design.closedLoopPoles) {
+        const LocusPick start = *pickLocusPoint(before, pole);
+        const auto& roots = before.branches[start.branch].roots;
+        for (std::size_t k = 0; k < roots.size() && to.isNull(); ++k) {
+            const QPoint a = pixel(start.point), b = pixel(roots[k]);
+            if (area.contains(a) && area.contains(b) && (b - a).manhattanLength() > 20 &&
+                (b - a).manhattanLength() < 60) {
+                from = a;
+                to = b;
+            }
+        }
+        if (!to.isNull())
+            break;
+    }
+    QVERIFY(!to.isNull());
+    const int steps = session_->undoStack()->count();
+    QTest::mousePress(plot, Qt::LeftButton, {}, from);
+    for (int k = 1; k <= 3; ++k) {
+        const QPoint at = from + (to - from) * k / 3;
+        QMouseEvent move(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QApplication::sendEvent(plot, &move);
+    }
+    // The gain the release reads: the pixel's coordinate in the view at the release, on the
+    // locus of the press.
+    const auto expected = pickLocusPoint(
+        before, {plot->xAxis->pixelToCoord(to.x()), plot->yAxis->pixelToCoord(to.y())});
+    QVERIFY(expected && expected->gain != 1.0);
+    QTest::mouseRelease(plot, Qt::LeftButton, {}, to);
+    QApplication::processEvents();
+    QCOMPARE(session_->undoStack()->count(), steps + 1);
+    const PidFeedforwardDesign& after = pidFeedforwardDesign(session_->axisEvaluation(0));
+    XYT_COMPARE_NEAR(after.gains.p, expected->gain * design.gains.p, 1e-15, 0.0);
+    XYT_COMPARE_NEAR(after.gains.i, expected->gain * design.gains.i, 1e-15, 0.0);
+    QCOMPARE(after.gains.ff1, design.gains.ff1);
+    QCOMPARE(test::plotsMismatch(window_.get(), session_.get()), QString());
 }
 
 QTEST_MAIN(TstPidWorkbench)

@@ -105,6 +105,7 @@ void RootLocusPlot::showLocus(const RootLocus& locus,
     setComplexPoints(poles_, locus.poles);
     setComplexPoints(zeros_, locus.zeros);
     setComplexPoints(current_, currentPoles);
+    currentPoles_ = currentPoles;
     // A readout of K belongs to the locus it was read on: any new locus (design, axis or plane
     // changed) starts without one.
     clearHover();
@@ -181,7 +182,22 @@ std::optional<LocusPick> RootLocusPlot::pickAtPixel(const QPointF& pixel, double
     return pick;
 }
 
+std::optional<double> RootLocusPlot::dragGainAt(const QPointF& pixel) const {
+    const std::complex<double> at(xAxis->pixelToCoord(pixel.x()), yAxis->pixelToCoord(pixel.y()));
+    if (!gainDragLocus_ || !std::isfinite(at.real()) || !std::isfinite(at.imag()))
+        return std::nullopt;
+    const auto pick = pickLocusPoint(*gainDragLocus_, at);
+    if (!pick || !(pick->gain > 0.0) || !std::isfinite(pick->gain))
+        return std::nullopt;
+    return pick->gain;
+}
+
 void RootLocusPlot::onMouseMove(QMouseEvent* event) {
+    if (gainDragLocus_ && (event->buttons() & Qt::LeftButton)) {
+        if (const auto gain = dragGainAt(event->position()))
+            emit gainDragged(*gain, false);
+        return;
+    }
     if (draggedZero_ && (event->buttons() & Qt::LeftButton)) {
         const std::complex<double> to(xAxis->pixelToCoord(event->position().x()),
                                       yAxis->pixelToCoord(event->position().y()));
@@ -214,13 +230,33 @@ void RootLocusPlot::onMouseMove(QMouseEvent* event) {
 void RootLocusPlot::onMousePress(QMouseEvent* event) {
     pressPos_ = event->pos();
     draggedZero_.reset();
+    gainDragLocus_.reset();
     if (zerosDraggable_ && hasLocus_ && event->button() == Qt::LeftButton)
         draggedZero_ = zeroAtPixel(event->position());
-    // A zero is dragged, not the view.
-    setInteraction(QCP::iRangeDrag, !draggedZero_);
+    if (!draggedZero_ && hasLocus_ && event->button() == Qt::LeftButton)
+        for (const std::complex<double>& p : currentPoles_)
+            if (std::hypot(xAxis->coordToPixel(p.real()) - event->position().x(),
+                           yAxis->coordToPixel(p.imag()) - event->position().y()) <= 8.0) {
+                gainDragLocus_ = locus_; // the gains of the design at the press
+                break;
+            }
+    // A zero or a pole is dragged, not the view.
+    setInteraction(QCP::iRangeDrag, !draggedZero_ && !gainDragLocus_);
 }
 
 void RootLocusPlot::onMouseRelease(QMouseEvent* event) {
+    if (gainDragLocus_) {
+        const auto gain = dragGainAt(event->position());
+        const bool moved = (event->pos() - pressPos_).manhattanLength() > 4;
+        setInteraction(QCP::iRangeDrag, true);
+        gainDragLocus_.reset();
+        if (moved) {
+            if (gain)
+                emit gainDragged(*gain, true);
+            return;
+        }
+        // A click on a pole without a drag: a gain pick, as anywhere on a branch.
+    }
     if (draggedZero_) {
         const std::complex<double> from = *draggedZero_;
         const std::complex<double> to(xAxis->pixelToCoord(event->position().x()),

@@ -53,6 +53,10 @@ public:
 signals:
     /// The user clicked on a branch: the loop gain K at that point (K = 1 is the current design).
     void gainPicked(double gain);
+    /// The user drags a closed-loop pole of the design along the locus: the loop gain of the
+    /// point reached, relative to the design when the drag began (the locus then); @p finished
+    /// on release.
+    void gainDragged(double gain, bool finished);
     /// The user drags the zero that was at @p from to @p to (s-plane); @p finished on release.
     void zeroDragged(std::complex<double> from, std::complex<double> to, bool finished);
 
@@ -69,6 +73,11 @@ private:
                                                     double maxPixels = 8.0) const;
     bool zerosDraggable_ = false;
     std::optional<std::complex<double>> draggedZero_; ///< where the dragged zero is now
+    /// The locus when a closed-loop pole's drag began (its gains are relative to that design).
+    std::optional<RootLocus> gainDragLocus_;
+    std::vector<std::complex<double>> currentPoles_;
+    /// The gain of @p pixel on the drag's locus, if any.
+    std::optional<double> dragGainAt(const QPointF& pixel) const;
 
     RootLocus locus_;
     PlaneGrid grid_;

@@ -320,27 +320,30 @@ std::vector<PoleZeroSet> TuningSession::poleZeroSets(int axis) const {
 }
 
 bool TuningSession::applyLoopGain(int axis, double gain) {
-    const AxisSettings& a = session_.axes.at(static_cast<std::size_t>(axis));
+    return applyLoopGainTo(axis, session_.axes.at(static_cast<std::size_t>(axis)), gain);
+}
+
+bool TuningSession::applyLoopGainTo(int axis, const AxisSettings& base, double gain, int mergeKey) {
     if (!(gain > 0.0) || !std::isfinite(gain))
         return false;
-    if (a.method == DesignMethod::PidFeedforward && axisEvaluation(axis).methodDesign) {
-        // K multiplies the controller: P, I and D (the feedforward is outside the loop).
-        const ServoPidGains& g = pidFeedforwardDesign(axisEvaluation(axis)).gains;
-        Session next = session_;
-        auto& parameters = next.axes.at(static_cast<std::size_t>(axis)).parameters;
-        parameters["p"] = gain * g.p;
-        parameters["i"] = gain * g.i;
-        parameters["d"] = gain * g.d;
-        apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4));
-        return true;
-    }
-    if (a.method != DesignMethod::GuilleminTruxal)
-        return false;
     Session next = session_;
-    auto& gt = next.axes.at(static_cast<std::size_t>(axis)).gt;
-    gt.kp *= gain;
-    gt.omegaNRadPerSec *= std::pow(gain, 0.25);
-    apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4));
+    AxisSettings& a = next.axes.at(static_cast<std::size_t>(axis));
+    a = base;
+    if (base.method == DesignMethod::PidFeedforward) {
+        // K multiplies the controller: P, I and D (the feedforward is outside the loop).
+        for (const MethodParameter& p : pidFeedforwardParameters())
+            if (p.name == "p" || p.name == "i" || p.name == "d") {
+                const auto it = base.parameters.find(p.name);
+                a.parameters[p.name] =
+                    gain * (it == base.parameters.end() ? p.defaultValue : it->second);
+            }
+    } else if (base.method == DesignMethod::GuilleminTruxal) {
+        a.gt.kp *= gain;
+        a.gt.omegaNRadPerSec *= std::pow(gain, 0.25);
+    } else {
+        return false;
+    }
+    apply(next, tr("Use loop gain %1 from the root locus").arg(gain, 0, 'g', 4), mergeKey);
     return true;
 }
 

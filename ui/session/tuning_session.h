@@ -119,6 +119,9 @@ public:
      * Returns false (and changes nothing) for a discrete axis or a gain that is not > 0.
      */
     bool applyLoopGain(int axis, double gain);
+    /// The loop gain @p gain applied to @p base (the axis as it was when a drag along the locus
+    /// began), so that a drag's steps do not compound; steps with @p mergeKey merge.
+    bool applyLoopGainTo(int axis, const AxisSettings& base, double gain, int mergeKey = -1);
 
     // Convenience setters (each one apply() step). Axis index 0 = x, 1 = y.
     void setMethod(int axis, DesignMethod method);
@@ -196,7 +199,8 @@ enum MergeKey {
     kMergeKp = 200,
     kMergeT1 = 300,
     kMergeMethodEditor = 400,
-    kMergeZeroDrag = 500
+    kMergeZeroDrag = 500,
+    kMergeGainDrag = 600
 };
 
 } // namespace xyt::ui
