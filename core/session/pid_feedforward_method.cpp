@@ -223,10 +223,8 @@ public:
         const double h = dtSeconds;
         for (std::size_t k = 0; k < n; ++k) {
             const auto i = static_cast<std::ptrdiff_t>(k);
-            motion[k] = {reference[k], (at(i + 1) - at(i - 1)) / (2.0 * h),
-                         (at(i + 1) - 2.0 * at(i) + at(i - 1)) / (h * h),
-                         (at(i + 2) - 2.0 * at(i + 1) + 2.0 * at(i - 1) - at(i - 2)) /
-                             (2.0 * h * h * h)};
+            motion[k] =
+                centralDifferenceMotion(at(i - 2), at(i - 1), at(i), at(i + 1), at(i + 2), h);
         }
         (void)t;
         AxisTrace out;

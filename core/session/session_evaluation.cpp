@@ -74,10 +74,8 @@ std::function<MotionSample(double)> axisMotion(const TrajectorySettings& traject
     }
     const double h = trajectory.dtSeconds > 0.0 ? trajectory.dtSeconds : 0.01;
     return [position, h](double t) {
-        const double p = position(t), p1 = position(t + h), m1 = position(t - h);
-        const double p2 = position(t + 2.0 * h), m2 = position(t - 2.0 * h);
-        return MotionSample{p, (p1 - m1) / (2.0 * h), (p1 - 2.0 * p + m1) / (h * h),
-                            (p2 - 2.0 * p1 + 2.0 * m1 - m2) / (2.0 * h * h * h)};
+        return centralDifferenceMotion(position(t - 2.0 * h), position(t - h), position(t),
+                                       position(t + h), position(t + 2.0 * h), h);
     };
 }
 

@@ -18,6 +18,17 @@ struct MotionSample {
 };
 
 /**
+ * A position and its derivatives by central differences of step @p h from its values at
+ * t - 2h, t - h, t, t + h, t + 2h: r' = (r(t+h) - r(t-h))/2h, r'' = (r(t+h) - 2 r(t) + r(t-h))/h^2,
+ * r''' = (r(t+2h) - 2 r(t+h) + 2 r(t-h) - r(t-2h))/2h^3 (each second order in h).
+ */
+inline MotionSample centralDifferenceMotion(double m2, double m1, double p, double p1, double p2,
+                                            double h) {
+    return {p, (p1 - m1) / (2.0 * h), (p1 - 2.0 * p + m1) / (h * h),
+            (p2 - 2.0 * p1 + 2.0 * m1 - m2) / (2.0 * h * h * h)};
+}
+
+/**
  * Cubic point-to-point trajectory, Braga et al. Eq. 4: P(t) = p0 + p1 t + p2 t^2 + p3 t^3 on
  * [t0, tf], with P(t0) = x0, P'(t0) = v0, P(tf) = xf, P'(tf) = vf. Before t0 the reference holds
  * x0, after tf it holds xf.
