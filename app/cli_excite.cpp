@@ -8,11 +8,18 @@
 #include "app/cli_json.h"
 
 #include "core/identification/excitation.h"
+#include "core/identification/jog_experiment.h"
 #include "core/identification/synthetic_experiment.h"
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
+#include "core/model/normal_draws.h"
+#include "core/session/design_method_module.h"
+
+#include <QJsonArray>
 
 #include <cmath>
+#include <cstdio>
+#include <random>
 
 namespace xyt::cli {
 
@@ -77,11 +84,106 @@ int wholeNumber(const CliArgs& args, const QString& name, int lo, int hi) {
     return n;
 }
 
+/// "1,2,5": the jog speeds (mm/s).
+std::vector<double> parseSpeeds(const CliArgs& args) {
+    const auto text = args.value("speeds");
+    if (!text)
+        throw InvalidInput("--speeds", "give the jog speeds in mm/s, e.g. --speeds 1,2,5,10");
+    std::vector<double> out;
+    for (const QString& part : text->split(',')) {
+        bool ok = false;
+        const double v = part.trimmed().toDouble(&ok);
+        if (!ok)
+            throw InvalidInput("--speeds", "'" + part.toStdString() + "' is not a number");
+        out.push_back(v);
+    }
+    return out;
+}
+
+/**
+ * excite --signal jog: the friction experiment (core/identification/jog_experiment.h) run in
+ * closed loop under axis --axis of --respond SESSION (its design, its table with friction, as
+ * the contour run traces a path), logged as t, r (reference, mm), y (measured position, mm,
+ * with --noise-std) and u (command, V), as an engineer logs the jogs from the machine.
+ */
+int runJogExperiment(const CliArgs& args) {
+    args.allowOnly({"signal", "speeds", "travel", "accel", "dwell", "ts", "respond", "axis",
+                    "noise-std", "seed", "o"});
+    const auto output = args.value("o");
+    if (!output || !output->toLower().endsWith(".csv"))
+        throw InvalidInput("-o", "give the log file to write (-o FILE.csv)");
+    if (!args.has("respond"))
+        throw InvalidInput("--respond", "the jogs run in closed loop: give the session whose "
+                                        "axis runs them (--respond SESSION.json --axis x|y)");
+    JogProgram program;
+    program.speedsMmPerS = parseSpeeds(args);
+    program.travelMm = args.number("travel", program.travelMm);
+    program.accelMmPerS2 = args.number("accel", program.accelMmPerS2);
+    program.dwellSeconds = args.number("dwell", program.dwellSeconds);
+    program.tsSeconds = args.number("ts", program.tsSeconds);
+    const JogReference jog = [&] {
+        try {
+            return jogReference(program);
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(CliArgs::field(QString::fromStdString(e.field())), e.reason());
+        }
+    }();
+    const Session session = loadSessionOrThrow(*args.value("respond"));
+    const QString axisName = args.text("axis", "x");
+    if (axisName != "x" && axisName != "y")
+        throw InvalidInput("--axis", "must be x or y");
+    const int axisIndex = axisName == "x" ? 0 : 1;
+    const double noise = args.number("noise-std", 0.0);
+    if (!(noise >= 0.0) || !std::isfinite(noise))
+        throw InvalidInput("--noise-std", "must be a finite number >= 0 (mm)");
+    const double seed = args.number("seed", 1.0);
+    if (seed < 0.0 || seed > 9007199254740992.0 || seed != std::floor(seed))
+        throw InvalidInput("--seed", "must be a whole number from 0 to 2^53");
+    const AxisSettings& axis = session.axes[static_cast<std::size_t>(axisIndex)];
+    if (axis.method == DesignMethod::PolePlacementZpetc)
+        throw InvalidInput("--axis", "axis " + axisName.toStdString() +
+                                         " is a pole-placement axis: the jogs need a continuous "
+                                         "plant with its table (Guillemin-Truxal or PID)");
+    const AxisTrace trace =
+        designMethodModule(axis.method)
+            .tracePath(session, axisIndex, jog.t, jog.position, program.tsSeconds);
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+    const std::string path = fileNameBytes(*output);
+    const SimulationResult& run = trace.run;
+    writeFile("-o", *output, [&](const ByteSink& sink) {
+        sink("t,r,y,u\n");
+        char line[160];
+        for (std::size_t k = 0; k < run.t.size(); ++k) {
+            const double y = run.y[k] + (noise > 0.0 ? noise * standardNormal(rng) : 0.0);
+            const int n = std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g\n", run.t[k],
+                                        run.r[k], y, run.u[k]);
+            sink(std::string_view(line, static_cast<std::size_t>(n)));
+        }
+    });
+    QJsonArray segments;
+    for (const JogSegment& g : jog.segments)
+        segments.append(QJsonObject{{"start", number(g.startSeconds)},
+                                    {"end", number(g.endSeconds)},
+                                    {"velocity", number(g.velocityMmPerS)}});
+    print(QJsonObject{{"path", QString::fromStdString(terminalText(path))},
+                      {"signal", "jog"},
+                      {"samples", static_cast<qint64>(run.t.size())},
+                      {"ts", number(program.tsSeconds)},
+                      {"axis", axisName},
+                      {"columns", QJsonArray{"t", "r", "y", "u"}},
+                      {"segments", segments},
+                      {"noise_std", number(noise)},
+                      {"synthetic", true}});
+    return 0;
+}
+
 } // namespace
 
 int runExcite(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
     const QString signal = args.text("signal", "");
+    if (signal == "jog")
+        return runJogExperiment(args);
     QStringList allowed = kCommonOptions;
     if (signal == "square")
         allowed << "period";
@@ -92,8 +194,9 @@ int runExcite(const QStringList& argv) {
         allowed << "f0"
                 << "f1";
     else
-        throw InvalidInput("--signal", args.has("signal") ? "must be square, prbs or chirp"
-                                                          : "is required (square, prbs or chirp)");
+        throw InvalidInput("--signal", args.has("signal")
+                                           ? "must be square, prbs, chirp or jog"
+                                           : "is required (square, prbs, chirp or jog)");
     args.allowOnly(allowed);
     if (!args.positional().isEmpty())
         throw InvalidInput(args.positional().first().toStdString(), "is not an option of excite");

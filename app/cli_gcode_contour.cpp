@@ -3,6 +3,8 @@
 // for a single full circle, the ISO 230-4 circular test.
 #include "app/cli_gcode_contour.h"
 
+#include "app/cli_friction.h"
+
 #include "app/cli_design_args.h"
 #include "app/cli_json.h"
 
@@ -130,6 +132,10 @@ QJsonObject isoJson(const ContourCircularTest& c) {
 QJsonObject axisJson(const AxisSettings& axis, const SimulationResult& run) {
     QJsonObject o{{"label", QString::fromStdString(axis.label)},
                   {"tracking", trackingJson(trackingMetrics(run))}};
+    if (axis.friction.active() || axis.frictionCompensation.percent != 0.0) {
+        o.insert("friction", frictionJson(axis.friction, axis.frictionCompensation));
+        o.insert("stick_slip", stickSlipJson(run));
+    }
     o.insert("method", files::methodName(axis.method));
     if (axis.method == DesignMethod::GuilleminTruxal) {
         o.insert("wn", number(axis.gt.omegaNRadPerSec));
@@ -161,6 +167,14 @@ Session sessionFor(const CliArgs& args) {
     }
     for (AxisSettings& axis : session.axes)
         axis.method = module->method();
+    // The table: --coulomb etc. for both axes, --x.coulomb etc. for one (over the shared value).
+    const TableFriction both = parseFriction(args);
+    const FrictionCompensation bothCompensation = parseFrictionCompensation(args);
+    for (AxisSettings& axis : session.axes) {
+        const QString prefix = QString::fromStdString(axis.id) + ".";
+        axis.friction = parseFriction(args, prefix, both);
+        axis.frictionCompensation = parseFrictionCompensation(args, prefix, bothCompensation);
+    }
     return session;
 }
 
@@ -189,7 +203,8 @@ void writeContourCsv(const QString& path, const ContourRun& run) {
 } // namespace
 
 int runGcodeContour(const CliArgs& args) {
-    args.allowOnly(kGcodeContourOptions);
+    args.allowOnly(kGcodeContourOptions + frictionOptions() + frictionOptions("x.") +
+                   frictionOptions("y."));
     const QString file = *args.value("gcode");
     GcodeReadOptions readOptions;
     readOptions.rapidFeedMmPerMin =

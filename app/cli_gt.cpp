@@ -3,6 +3,7 @@
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
+#include "app/cli_friction.h"
 #include "app/cli_json.h"
 #include "app/cli_pid.h"
 
@@ -11,11 +12,13 @@
 
 #include "core/design/guillemin_truxal.h"
 #include "core/model/errors.h"
+#include "core/session/axis_run.h"
 #include "core/simulation/contour_error.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
+#include "core/simulation/stick_slip.h"
 #include "core/simulation/trajectory.h"
 #include "core/study/specification.h"
 
@@ -47,13 +50,14 @@ const QStringList kDigitalOptions{"digital",       "controller-ts",      "discre
 /// --controller-ts with the implementation options, on the same trajectory and duration; its
 /// signals in @p run (for --csv).
 QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesign& design,
-                        const SimulationSetup& setup, double window, SimulationResult& runOut) {
+                        const SimulationSetup& setup, double window, const AxisSettings& axis,
+                        SimulationResult& runOut) {
     const double ts = positiveNumber(args, "controller-ts", 0.01);
     const AntiWindup antiWindup = parseAntiWindup(args);
     const double trackingTime = args.number("tracking-time", 0.0);
     if (trackingTime < 0.0)
         throw InvalidInput("--tracking-time", "must be >= 0 (s; 0: Tt = Ti = kp/ki)");
-    const SampledDataOptions options = parseSampledDataOptions(args, setup.options.umaxVolts);
+    SampledDataOptions options = parseSampledDataOptions(args, setup.options.umaxVolts);
     const DigitalPi pi =
         digitalPi(design.kp, design.ki, ts, parseDiscretization(args, PiDiscretization::Tustin),
                   antiWindup, trackingTime);
@@ -64,8 +68,12 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
         throw InvalidInput("--controller-ts", e.reason());
     }
     const TransferFunction plant = in.plant.transferFunction();
-    const SampledDataRun run = simulateSampledPi(plant, pi, sampled(setup.trajectory.at, times),
-                                                 options, setup.options.modelUnitsPerPositionUnit);
+    const std::vector<double> reference = sampled(setup.trajectory.at, times);
+    options.table = &axis.friction;
+    const std::vector<double> ff = frictionFeedforward(axis, 0, reference, ts);
+    options.feedforwardVolts = &ff;
+    const SampledDataRun run =
+        simulateSampledPi(plant, pi, reference, options, setup.options.modelUnitsPerPositionUnit);
     const auto poles = sampledPiLoopPoles(sampledPlant(plant, ts), pi, options.delaySamples);
     double designDamping = 1.0, damping = 1.0;
     for (const auto& p : design.closedLoopPoles)
@@ -92,8 +100,12 @@ QJsonObject digitalJson(const CliArgs& args, const DesignInput& in, const GtDesi
                     .arg(cycle->peakToPeak, 0, 'g', 4));
         }
     }
+    if (const auto f = stickSlipFindings(run.result))
+        for (const std::string& w : stickSlipWarnings(*f))
+            warnings.append(QString::fromStdString(w));
     runOut = run.result;
     return {{"controller_ts", ts},
+            {"stick_slip", stickSlipJson(run.result)},
             {"discretization", QString::fromStdString(discretizationName(
                                    parseDiscretization(args, PiDiscretization::Tustin)))},
             {"delay_samples", options.delaySamples},
@@ -123,8 +135,10 @@ int runSimulate(const QStringList& argv) {
         if (args.has(name))
             throw InvalidInput(CliArgs::field(name),
                                "needs --method pid-ff (the PID with command feedforward)");
-    args.allowOnly(kDesignOptions + kTrajectoryOptions + kDigitalOptions +
+    args.allowOnly(kDesignOptions + kTrajectoryOptions + kDigitalOptions + kFrictionOptions +
                    QStringList{kUnitOption, "in-position-window", "method"});
+    const TableFriction friction = parseFriction(args);
+    const FrictionCompensation compensation = parseFrictionCompensation(args);
     if (!args.flag("digital"))
         for (const QString& name : kDigitalOptions)
             if (name != "digital" && args.has(name))
@@ -135,9 +149,17 @@ int runSimulate(const QStringList& argv) {
     const double window =
         positiveNumber(args, "in-position-window", Specification{}.inPositionWindowMm);
     const GtDesign design = designGuilleminTruxal(in.plant, in.wn, in.kp);
+    AxisSettings axis; // the table and compensation, as a session axis holds them
+    axis.friction = friction;
+    axis.frictionCompensation = compensation;
     auto simulate = [&] {
+        LoopSimulationOptions options = setup.options;
+        options.table = &friction;
+        const std::vector<double> ff =
+            frictionFeedforward(axis, 0, setup.reference, options.dtSeconds);
+        options.feedforwardVolts = &ff;
         return simulateLoop(in.plant.transferFunction(), design.controller, setup.reference,
-                            setup.options);
+                            options);
     };
     SimulationResult run = simulate();
     const std::optional<PointToPointMove>& move = setup.trajectory.move;
@@ -165,7 +187,7 @@ int runSimulate(const QStringList& argv) {
     QJsonValue digital;
     SimulationResult digitalRun;
     if (args.flag("digital"))
-        digital = digitalJson(args, in, design, setup, window, digitalRun);
+        digital = digitalJson(args, in, design, setup, window, axis, digitalRun);
     if (const auto csv = args.value("csv"))
         writeCsv(*csv, run, args.flag("digital") ? &digitalRun : nullptr);
     QJsonObject out = designJson(design);
@@ -177,6 +199,15 @@ int runSimulate(const QStringList& argv) {
     out.insert("move_and_settle",
                move ? QJsonValue(moveSettleJson(moveSettleMetrics(run, *move, window)))
                     : QJsonValue());
+    if (friction.active() || compensation.percent != 0.0) {
+        out.insert("friction", frictionJson(friction, compensation));
+        out.insert("stick_slip", stickSlipJson(run));
+        QJsonArray warnings;
+        if (const auto f = stickSlipFindings(run))
+            for (const std::string& w : stickSlipWarnings(*f))
+                warnings.append(QString::fromStdString(w));
+        out.insert("warnings", warnings);
+    }
     if (args.flag("digital"))
         out.insert("digital", digital);
     print(out);

@@ -5,6 +5,7 @@
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
+#include "app/cli_friction.h"
 #include "app/cli_json.h"
 
 #include "core/identification/continuous_fit.h"
@@ -227,7 +228,9 @@ QJsonObject orderTableJson(const std::array<OrderRange, 3>& ranges, const IoData
 } // namespace
 
 int runIdentify(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means"});
+    const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means", "no-stribeck"});
+    if (args.text("structure", QString()) == "friction")
+        return identifyFrictionCurve(args);
     args.allowOnly({"data",
                     "time-col",
                     "ts",
@@ -275,7 +278,7 @@ int runIdentify(const QStringList& argv) {
     if (!args.has("data"))
         throw InvalidInput("--data", "give the experiment file (CSV/TSV, .lvm or .mat)");
     if (!args.has("structure"))
-        throw InvalidInput("--structure", "give arx, oe, bj or gt3");
+        throw InvalidInput("--structure", "give arx, oe, bj, gt3 or friction");
     IdentificationSpec spec;
     try {
         spec.structure = parseModelStructure(args.text("structure", QString()).toStdString());

@@ -7,6 +7,7 @@
 
 #include "app/cli_commands.h"
 #include "app/cli_design_args.h"
+#include "app/cli_friction.h"
 #include "app/cli_json.h"
 
 #include "core/analysis/nyquist.h"
@@ -271,6 +272,7 @@ int simulateThroughSession(const CliArgs& args) {
             << "method"
             << "ff-from-model";
     allowed += pidMethod ? kPidGainOptions + kPidFlags : QStringList{"wn", "kp"};
+    allowed += kFrictionOptions;
     args.allowOnly(allowed);
 
     const PlantInput plant = parsePlant(args);
@@ -280,6 +282,8 @@ int simulateThroughSession(const CliArgs& args) {
 
     Session session = Session::paperDefault();
     session.axes[0] = pidAxis(args, plant, unit, pidMethod);
+    session.axes[0].friction = parseFriction(args);
+    session.axes[0].frictionCompensation = parseFrictionCompensation(args);
     session.axes[1] = session.axes[0];
     session.axes[1].id = "y";
     TrajectorySettings& t = session.trajectory;
@@ -356,6 +360,11 @@ int simulateThroughSession(const CliArgs& args) {
                      a.moveSettle ? QJsonValue(moveSettleJson(*a.moveSettle)) : QJsonValue()},
                     {"margins", marginsValue(a)},
                     {"warnings", warnings}};
+    const AxisSettings& axis = session.axes[0];
+    if (axis.friction.active() || axis.frictionCompensation.percent != 0.0) {
+        out.insert("friction", frictionJson(axis.friction, axis.frictionCompensation));
+        out.insert("stick_slip", stickSlipJson(a.run));
+    }
     if (!pidMethod) {
         const GtDesign gt = sessionGtDesign(session.axes[0].gt, 0);
         out.insert("guillemin_truxal", QJsonObject{{"wn", number(gt.omegaNRadPerSec)},

@@ -11,6 +11,7 @@
 #include "ui/panels/contour_controls.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/fitted_stack.h"
+#include "ui/panels/friction_editor.h"
 #include "ui/panels/implementation_editor.h"
 #include "ui/panels/method_editor.h"
 #include "ui/panels/metrics_panel.h"
@@ -346,7 +347,15 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     auto* designLayout = new QVBoxLayout(designBox);
     method_ = new QComboBox(designBox);
     method_->setAccessibleName(tr("Design method"));
-    designLayout->addWidget(method_);
+    // The friction fold's button shares the method's row (the panel fits 1366 x 768); its body
+    // opens below the method's page.
+    frictionEditor_ = new FrictionEditor(designBox);
+    method_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    method_->setMinimumContentsLength(10);
+    auto* methodRow = new QHBoxLayout;
+    methodRow->addWidget(method_, 1);
+    methodRow->addWidget(frictionEditor_->foldButton());
+    designLayout->addLayout(methodRow);
     methodPages_ = new QStackedWidget(designBox);
     // One entry and one editor page per registered method, in the registry's order: the
     // built-in methods have their own editors, a registered one its parameters' editor.
@@ -368,6 +377,10 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     }
     fitStackToCurrentPage(methodPages_);
     designLayout->addWidget(methodPages_);
+    designLayout->addWidget(frictionEditor_);
+    frictionEditor_->hide();
+    connect(frictionEditor_->foldButton(), &QToolButton::toggled, frictionEditor_,
+            &QWidget::setVisible);
     return designBox;
 }
 
@@ -505,6 +518,10 @@ void MainWindow::connectControls() {
             [this](double v) { session_->setKp(session_->currentAxis(), v); });
     connect(plantEditor_, &PlantEditor::plantEdited, this,
             [this](const ThirdOrderPlant& p) { session_->setPlant(session_->currentAxis(), p); });
+    connect(frictionEditor_, &FrictionEditor::frictionEdited, this,
+            [this](const TableFriction& f, const FrictionCompensation& c) {
+                session_->setFriction(session_->currentAxis(), f, c);
+            });
     connect(plantEditor_, &PlantEditor::modelUnitEdited, this,
             [this](double v) { session_->setModelUnitScale(session_->currentAxis(), v); });
     connect(plantEditor_, &PlantEditor::presetChosen, this, [this](const GtPreset& preset) {
@@ -645,6 +662,8 @@ void MainWindow::syncControls() {
     for (MethodEditor* editor : methodEditors_)
         editor->setSettings(a);
     plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
+    frictionEditor_->setSettings(a.friction, a.frictionCompensation,
+                                 a.method != DesignMethod::PolePlacementZpetc);
     trajectoryEditor_->setTrajectory(s.trajectory);
     umax_->setValue(s.umaxVolts);
     controllerTs_->setValue(s.controllerTsSeconds);

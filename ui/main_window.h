@@ -32,6 +32,7 @@ class ImplementationEditor;
 class MetricsPanel;
 class NumberField;
 class ParameterSlider;
+class FrictionEditor;
 class PlantEditor;
 class ParameterLocusPlot;
 class BodePlot;
@@ -144,6 +145,7 @@ private:
     QTabBar* axisTabs_ = nullptr;
     QComboBox* method_ = nullptr;
     PlantEditor* plantEditor_ = nullptr;
+    FrictionEditor* frictionEditor_ = nullptr;
     ParameterSlider* omegaN_ = nullptr;
     ParameterSlider* kp_ = nullptr;
     TrajectoryEditor* trajectoryEditor_ = nullptr;

@@ -19,7 +19,7 @@ using Complex = std::complex<double>;
 /// A pole is on the boundary when |Re s| <= this |s| (continuous) or ||z| - 1| <= this
 /// (discrete): the computed roots of an undamped pair scatter by round-off, those of a double
 /// pole by sqrt(eps).
-constexpr double kBoundaryTolerance = 1e-6;
+constexpr double kPoleOnBoundary = 1e-6;
 
 /// A piece of the upper half contour: point(t) and its frequency for t in [0, 1].
 struct Piece {
@@ -167,12 +167,11 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
     std::vector<double> upper; // frequencies of boundary poles with omega > 0
     if (rest.degree() > 0) {
         for (const Complex& r : rest.roots()) {
-            const bool onBoundary = discrete
-                                        ? std::abs(std::abs(r) - 1.0) <= kBoundaryTolerance
-                                        : std::abs(r.real()) <= kBoundaryTolerance * std::abs(r);
+            const bool onBoundary = discrete ? std::abs(std::abs(r) - 1.0) <= kPoleOnBoundary
+                                             : std::abs(r.real()) <= kPoleOnBoundary * std::abs(r);
             if (onBoundary) {
                 const double w = discrete ? std::arg(r) / ts : r.imag();
-                if (w >= 0.0 || (discrete && std::abs(std::arg(r)) > kPi - kBoundaryTolerance))
+                if (w >= 0.0 || (discrete && std::abs(std::arg(r)) > kPi - kPoleOnBoundary))
                     upper.push_back(std::abs(w));
             } else if (!isStableRoot(r, ts)) {
                 ++out.openLoopUnstablePoles;
@@ -183,7 +182,7 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
     for (const double w : upper) {
         if (!boundary.empty() &&
             std::abs(w - boundary.back().omega) <=
-                kBoundaryTolerance * std::max(w, discrete ? 1.0 / ts : 0.0) + 1e-300)
+                kPoleOnBoundary * std::max(w, discrete ? 1.0 / ts : 0.0) + 1e-300)
             ++boundary.back().order;
         else
             boundary.push_back({w, 1});
@@ -200,7 +199,7 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
         Polynomial factor;
         if (!discrete)
             factor = Polynomial::fromAscending({bp.omega * bp.omega, 0.0, 1.0});
-        else if (bp.omega * ts >= kPi * (1.0 - kBoundaryTolerance))
+        else if (bp.omega * ts >= kPi * (1.0 - kPoleOnBoundary))
             factor = Polynomial::fromAscending({1.0, 1.0});
         else if (bp.omega == 0.0)
             factor = Polynomial::fromAscending({-1.0, 1.0});
@@ -259,7 +258,7 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
         // Angular half-width of the indentation seen on the axis (omega units).
         const double halfWidth = discrete ? rho / ts : rho;
         const bool atZero = bp.omega == 0.0;
-        const bool atNyquist = discrete && bp.omega >= nyquist * (1.0 - kBoundaryTolerance);
+        const bool atNyquist = discrete && bp.omega >= nyquist * (1.0 - kPoleOnBoundary);
         if (!atZero)
             axisPiece(axisStart, bp.omega - halfWidth);
         out.indentations.push_back(ind);

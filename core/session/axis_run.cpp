@@ -83,6 +83,55 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
 
 /// Says which criteria
 
+const TableFriction* axisTable(const AxisSettings& axis, int axisIndex) {
+    if (!axis.friction.active())
+        return nullptr;
+    if (axis.method == DesignMethod::PolePlacementZpetc)
+        throw InvalidInput(axisFieldPath(axisIndex, "friction"),
+                           "acts on the mass of a continuous plant k0 / (s (s^2 + a1 s + a2)); a "
+                           "pole-placement axis' ARX model holds the friction its data held");
+    try {
+        validateTableFriction(axis.friction);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(axisFieldPath(axisIndex, "friction." + e.field()), e.reason());
+    }
+    return &axis.friction;
+}
+
+std::vector<double> frictionFeedforward(const AxisSettings& axis, int axisIndex,
+                                        const std::vector<double>& reference, double dtSeconds) {
+    const FrictionCompensation& c = axis.frictionCompensation;
+    if (c.percent == 0.0 || reference.size() < 2)
+        return {};
+    try {
+        validateFrictionCompensation(c);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput(axisFieldPath(axisIndex, "friction.compensation." + e.field()),
+                           e.reason());
+    }
+    const std::size_t n = reference.size();
+    std::vector<double> out(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t lo = k == 0 ? 0 : k - 1;
+        const std::size_t hi = k + 1 == n ? k : k + 1;
+        const double velocity =
+            (reference[hi] - reference[lo]) / (static_cast<double>(hi - lo) * dtSeconds);
+        out[k] = frictionCompensationVolts(axis.friction, c, velocity);
+    }
+    return out;
+}
+
+void addFeedforward(std::vector<double>& into, const std::vector<double>& add) {
+    if (add.empty())
+        return;
+    if (into.empty()) {
+        into = add;
+        return;
+    }
+    for (std::size_t k = 0; k < into.size() && k < add.size(); ++k)
+        into[k] += add[k];
+}
+
 SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
                                      const TransferFunction& controller,
                                      const std::vector<double>& reference, double dtSeconds,
@@ -92,6 +141,10 @@ SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
     options.umaxVolts = umaxVolts;
     options.modelUnitsPerPositionUnit = axis.gt.modelUnitsPerPositionUnit;
     options.initialOutput = reference.front();
+    options.table = axisTable(axis, axisIndex);
+    const std::vector<double> ff = frictionFeedforward(axis, axisIndex, reference, dtSeconds);
+    if (!ff.empty())
+        options.feedforwardVolts = &ff;
     try {
         return simulateLoop(axis.gt.plant.transferFunction(), controller, reference, options);
     } catch (const InvalidInput& e) {

@@ -46,6 +46,27 @@ SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
                                      const std::vector<double>& reference, double dtSeconds,
                                      double umaxVolts);
 
+/**
+ * The table under @p axis for a loop's options (LoopSimulationOptions::table): null for the
+ * linear table. @throws InvalidInput naming "axes[i].friction.<field>" for a value out of range
+ * (validateTableFriction) and "axes[i].friction" on a pole-placement axis, whose ARX model has no
+ * mass to put the friction on.
+ */
+const TableFriction* axisTable(const AxisSettings& axis, int axisIndex);
+
+/**
+ * The friction compensation's feedforward (V) along @p reference (mm, step @p dtSeconds):
+ * frictionCompensationVolts of the reference velocity, formed from the planned positions by
+ * central differences (one-sided at the two ends), as firmware forms it from its trajectory
+ * generator's positions. Empty when the axis has no compensation (percent 0).
+ * @throws InvalidInput "axes[i].friction.compensation.<field>" (validateFrictionCompensation).
+ */
+std::vector<double> frictionFeedforward(const AxisSettings& axis, int axisIndex,
+                                        const std::vector<double>& reference, double dtSeconds);
+
+/// @p add added to @p into sample by sample (@p into empty: a copy of @p add).
+void addFeedforward(std::vector<double>& into, const std::vector<double>& add);
+
 /// The least damping ratio of continuous poles (1 without any).
 double minContinuousDamping(const std::vector<std::complex<double>>& poles);
 /// The least damping ratio of z-plane poles, those at the origin left out (1 without any).

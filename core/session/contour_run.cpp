@@ -102,6 +102,19 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
     return test;
 }
 
+/// The height of the reversal spikes of a ballbar test on a table with friction: what the
+/// table's friction leaves at the quadrant changes (a linear table's spikes are the loops' lag).
+void addReversalSpikeWarning(const Session& session, ContourRun& out) {
+    if (!out.circular || (!session.axes[0].friction.active() && !session.axes[1].friction.active()))
+        return;
+    double largest = 0.0;
+    for (const ReversalSpike& spike : out.circular->iso.reversalSpikes)
+        largest = std::max(largest, std::abs(spike.heightMm));
+    if (largest > 0.0)
+        out.warnings.push_back("reversal spikes up to " + formatNumber(1000.0 * largest, 3) +
+                               " um at the quadrant changes (the table's friction and backlash)");
+}
+
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
                              const ContourRunOptions& options, const FeedProfile* plannedProfile) {
     const std::vector<double> feeds = programFeeds(program, options.profile.feedScale);
@@ -148,6 +161,7 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
     } else {
         out.circular = ballbarTestOfProgram(program, out.trace, options.iso, out.warnings);
     }
+    addReversalSpikeWarning(session, out);
     return out;
 }
 

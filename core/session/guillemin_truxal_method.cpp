@@ -24,18 +24,21 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
         DigitalEvaluation d;
         const DigitalPi pi = sessionDigitalPi(session, *out.gt);
         d.tsSeconds = pi.tsSeconds;
-        const SampledDataOptions options = sessionSampledDataOptions(session);
+        SampledDataOptions options = sessionSampledDataOptions(session);
         const TransferFunction plant = axis.gt.plant.transferFunction();
         // At the simulation step (the default: both 10 ms) the continuous run already holds the
         // reference at the controller's sample times.
         const bool sameTimes = pi.tsSeconds == session.trajectory.dtSeconds;
-        d.run =
-            simulateSampledPi(plant, pi,
-                              sameTimes ? out.run.r
-                                        : sampled(sessionReference(session.trajectory, axisIndex),
-                                                  axisSampleTimes(session.trajectory, duration,
-                                                                  pi.tsSeconds, "controller_ts")),
-                              options, axis.gt.modelUnitsPerPositionUnit);
+        const std::vector<double> reference =
+            sameTimes ? out.run.r
+                      : sampled(sessionReference(session.trajectory, axisIndex),
+                                axisSampleTimes(session.trajectory, duration, pi.tsSeconds,
+                                                "controller_ts"));
+        options.table = axisTable(axis, axisIndex);
+        const std::vector<double> ff =
+            frictionFeedforward(axis, axisIndex, reference, pi.tsSeconds);
+        options.feedforwardVolts = &ff;
+        d.run = simulateSampledPi(plant, pi, reference, options, axis.gt.modelUnitsPerPositionUnit);
         d.poles = sampledPiLoopPoles(sampledPlant(plant, pi.tsSeconds), pi, options.delaySamples);
         d.designMinDamping = minContinuousDamping(out.gt->closedLoopPoles);
         for (const auto& p : out.gt->closedLoopPoles)
@@ -61,8 +64,11 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     const auto reference = sessionReference(session.trajectory, axisIndex);
     const auto times =
         axisSampleTimes(session.trajectory, duration, options.dtSeconds, "trajectory.dt");
-    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller,
-                           sampled(reference, times), options);
+    options.table = axisTable(axis, axisIndex);
+    const std::vector<double> r = sampled(reference, times);
+    const std::vector<double> ff = frictionFeedforward(axis, axisIndex, r, options.dtSeconds);
+    options.feedforwardVolts = &ff;
+    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller, r, options);
     out.metrics = trackingMetrics(out.run);
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)

@@ -101,7 +101,10 @@ std::vector<double> positions(const std::vector<MotionSample>& motion) {
 }
 
 /// The continuous loop along @p motion at step @p dt with the feedforward (or without).
-SimulationResult continuousRun(const PidFeedforwardDesign& d,
+/// The table of @p axis is in the loop either way; the friction compensation belongs to the
+/// feedforward.
+SimulationResult continuousRun(const AxisSettings& axis, int axisIndex,
+                               const PidFeedforwardDesign& d,
                                const std::vector<MotionSample>& motion, double dt,
                                bool withFeedforward, double initialOutput = 0.0) {
     LoopSimulationOptions options;
@@ -109,12 +112,15 @@ SimulationResult continuousRun(const PidFeedforwardDesign& d,
     options.umaxVolts = d.gains.maxOutput;
     options.modelUnitsPerPositionUnit = d.unit;
     options.initialOutput = initialOutput;
+    options.table = axisTable(axis, axisIndex);
+    const std::vector<double> r = positions(motion);
     std::vector<double> ff;
     if (withFeedforward) {
         ff = continuousFeedforward(d, motion, dt);
+        addFeedforward(ff, frictionFeedforward(axis, axisIndex, r, dt));
         options.feedforwardVolts = &ff;
     }
-    return simulateLoop(d.plant, d.controller, positions(motion), options);
+    return simulateLoop(d.plant, d.controller, r, options);
 }
 
 void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEvaluation& out) {
@@ -161,9 +167,14 @@ void evaluateDigital(const Session& session, int axisIndex, double duration,
             axisSampleTimes(session.trajectory, duration, design.tsSeconds, "controller_ts");
         const bool sameTimes = design.tsSeconds == session.trajectory.dtSeconds &&
                                times.size() == continuousMotion.size();
-        d.run = simulateSampledServoPid(design.plant, design.gains, design.tsSeconds,
-                                        sameTimes ? continuousMotion
-                                                  : motionAt(session, axisIndex, times),
+        const std::vector<MotionSample> command =
+            sameTimes ? continuousMotion : motionAt(session, axisIndex, times);
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        options.table = axisTable(axis, axisIndex);
+        const std::vector<double> ff =
+            frictionFeedforward(axis, axisIndex, positions(command), design.tsSeconds);
+        options.feedforwardVolts = &ff;
+        d.run = simulateSampledServoPid(design.plant, design.gains, design.tsSeconds, command,
                                         design.derivativeSource, options, design.unit);
         d.poles = sampledServoPidLoopPoles(sampledPlant(design.plant, design.tsSeconds),
                                            design.gains, design.unit, options.delaySamples);
@@ -190,12 +201,13 @@ public:
         auto design =
             std::make_shared<PidFeedforwardDesign>(designPidFeedforward(session, axisIndex));
         out.methodDesign = design;
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
         const double dt = session.trajectory.dtSeconds;
         const auto reference = sessionReference(session.trajectory, axisIndex);
         const auto times =
             axisSampleTimes(session.trajectory, durationSeconds, dt, "trajectory.dt");
         const std::vector<MotionSample> motion = motionAt(session, axisIndex, times);
-        out.run = continuousRun(*design, motion, dt, true);
+        out.run = continuousRun(axis, axisIndex, *design, motion, dt, true);
         out.metrics = trackingMetrics(out.run);
         out.step = stepCharacteristics(design->loop.complementarySensitivity);
         addWarnings(session, *design, out);
@@ -203,7 +215,7 @@ public:
         // neither the feedback's run alone nor the digital one.
         if (!withDigital)
             return;
-        out.feedbackOnlyRun = continuousRun(*design, motion, dt, false);
+        out.feedbackOnlyRun = continuousRun(axis, axisIndex, *design, motion, dt, false);
         out.rmseWithoutFf = trackingMetrics(out.feedbackOnlyRun).rmse;
         out.improvementPct =
             out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - out.metrics.rmse / out.rmseWithoutFf) : 0.0;
@@ -229,7 +241,8 @@ public:
         (void)t;
         AxisTrace out;
         try {
-            out.run = continuousRun(d, motion, dtSeconds, true, reference.front());
+            out.run = continuousRun(session.axes.at(static_cast<std::size_t>(axisIndex)), axisIndex,
+                                    d, motion, dtSeconds, true, reference.front());
         } catch (const InvalidInput& e) {
             if (e.field() == "plant" || e.field() == "initial_output")
                 throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());

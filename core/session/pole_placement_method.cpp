@@ -55,6 +55,7 @@ std::optional<std::string> reachWarning(const PpAxisSettings& pp,
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 bool withDigital, AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
+    axisTable(axis, axisIndex); // refuses a friction set on the ARX model, by name
     requireFinite(pp.t1, "t1");
     if (std::abs(pp.t1) >= 1.0)
         throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");

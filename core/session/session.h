@@ -3,6 +3,7 @@
 
 #include "core/design/digital_controller.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/table_friction.h"
 #include "core/study/specification.h"
 
 #include <array>
@@ -104,6 +105,13 @@ struct AxisSettings {
     /// by name; kept when the axis switches method, as gt and pp are.
     std::map<std::string, double> parameters;
     std::optional<ModelOrigin> origin; ///< set when the plant was identified from data
+    /// The table's friction, backlash and amplifier deadband under this axis (all zero: the
+    /// linear table). They act on the continuous plant k0 / (s (s^2 + a1 s + a2)) of gt: on
+    /// Guillemin-Truxal and PID + feedforward axes. A pole-placement axis' ARX model is
+    /// identified with whatever friction the data held; a friction set on it is refused by name.
+    TableFriction friction;
+    /// The firmware's friction feedforward from the reference velocity (FrictionCompensation).
+    FrictionCompensation frictionCompensation;
     friend bool operator==(const AxisSettings&, const AxisSettings&) = default;
 };
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/session_evaluation.h"
 
+#include "core/simulation/stick_slip.h"
+
 #include "core/analysis/loop_responses.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
@@ -181,6 +183,17 @@ TransferFunction AxisEvaluation::closedLoop() const {
 
 namespace {
 
+/// The stick-slip and hunting findings of the runs of a table with dry friction.
+void addStickSlipWarnings(AxisEvaluation& out) {
+    if (const auto f = stickSlipFindings(out.run))
+        for (std::string& w : stickSlipWarnings(*f))
+            out.warnings.push_back(std::move(w));
+    if (out.digital)
+        if (const auto f = stickSlipFindings(out.digital->run.result))
+            for (std::string& w : stickSlipWarnings(*f, "the digital implementation: "))
+                out.warnings.push_back(std::move(w));
+}
+
 /// evaluateAxis over a given duration.
 AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration,
                                 bool withDigital = true) {
@@ -195,6 +208,7 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
         if (out.metrics.diverged)
             out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
                                    "it has no tracking figures");
+        addStickSlipWarnings(out);
         const TrajectorySettings& t = session.trajectory;
         if (t.kind == TrajectoryKind::Cubic) {
             try {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/sampled_data.h"
 
+#include "core/simulation/table_dynamics.h"
+
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/model/state_space.h"
@@ -102,6 +104,26 @@ private:
 
 namespace {
 
+/// The table of @p options on @p plant, or none for a linear table.
+std::optional<TablePlant> tablePlantFor(const TransferFunction& plant,
+                                        const SampledDataOptions& options, double unit) {
+    if (!options.table || !options.table->active())
+        return std::nullopt;
+    return TablePlant(tableMechanics(plant, *options.table, unit));
+}
+
+/// The feedforward of @p options for @p n samples, or null for none.
+const double* sampledFeedforward(const SampledDataOptions& options, std::size_t n) {
+    if (!options.feedforwardVolts || options.feedforwardVolts->empty())
+        return nullptr;
+    if (options.feedforwardVolts->size() < n)
+        throw InvalidInput("feedforward", "must have one sample per reference sample");
+    for (double v : *options.feedforwardVolts)
+        if (!std::isfinite(v))
+            throw InvalidInput("feedforward", "must be finite");
+    return options.feedforwardVolts->data();
+}
+
 /// dacOutput with 2^bits, q and the code range computed once for a run (the same values, so the
 /// same results).
 struct Dac {
@@ -137,7 +159,8 @@ template <> struct PlantState<0> {
 /// The loop of simulateSampledPi for a plant of N states (0: any).
 template <int N>
 void runSampledPi(const SampledPlant& p, const DigitalPi& pi, const std::vector<double>& reference,
-                  const SampledDataOptions& options, double unit, SampledDataRun& run) {
+                  const SampledDataOptions& options, double unit, TablePlant* table,
+                  SampledDataRun& run) {
     const int ns = PlantState<N>::size(p.states);
     const std::size_t n = reference.size();
     PlantState<N> plant(p.states);
@@ -149,15 +172,20 @@ void runSampledPi(const SampledPlant& p, const DigitalPi& pi, const std::vector<
     const double* phi = p.phi.data();
     const double* gamma = p.gamma.data();
     const double* c = p.c.data();
+    const double* ff = sampledFeedforward(options, n);
     SimulationResult& out = run.result;
     for (std::size_t k = 0; k < n; ++k) {
         double y = 0.0;
         for (int j = 0; j < ns; ++j)
             y += c[j] * x[static_cast<std::size_t>(j)];
+        if (table)
+            y = table->state().table;
         const double position = y / unit;
         const double measured = encoderReading(position, options.encoderResolution);
         const double error = (reference[k] - measured) * unit;
-        const double u = stepDigitalPi(pi, state, error, options.umaxVolts);
+        double u = stepDigitalPi(pi, state, error, options.umaxVolts);
+        if (ff)
+            u = std::clamp(u + ff[k], -options.umaxVolts, options.umaxVolts);
         const double applied = delay.push(dac(u));
         out.t[k] = static_cast<double>(k) * pi.tsSeconds;
         out.r[k] = reference[k];
@@ -167,6 +195,12 @@ void runSampledPi(const SampledPlant& p, const DigitalPi& pi, const std::vector<
         out.clipped[k] = std::abs(u) >= options.umaxVolts;
         run.measured[k] = measured;
         run.applied[k] = applied;
+        if (table) {
+            if (!out.sliding.empty())
+                out.sliding[k] = static_cast<std::int8_t>(table->state().sliding);
+            table->hold(applied, pi.tsSeconds);
+            continue;
+        }
         for (int i = 0; i < ns; ++i) {
             double acc = 0.0;
             for (int j = 0; j < ns; ++j)
@@ -190,22 +224,31 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
     requireFiniteSamples(reference, reference.size());
     SampledDataRun run;
     resizeRun(run, reference.size(), pi.tsSeconds, options.umaxVolts);
+    if (const double* ff = sampledFeedforward(options, reference.size()))
+        run.result.uFeedforward.assign(ff, ff + reference.size());
+    std::optional<TablePlant> table = tablePlantFor(plant, options, modelUnitsPerPositionUnit);
+    if (table) {
+        if (options.table->breakawayVolts() > 0.0)
+            run.result.sliding.resize(reference.size());
+        runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, &*table, run);
+        return run;
+    }
     // The same sums in the same order for every order: the fixed sizes only let them unroll.
     switch (p.states) {
     case 1:
-        runSampledPi<1>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        runSampledPi<1>(p, pi, reference, options, modelUnitsPerPositionUnit, nullptr, run);
         break;
     case 2:
-        runSampledPi<2>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        runSampledPi<2>(p, pi, reference, options, modelUnitsPerPositionUnit, nullptr, run);
         break;
     case 3:
-        runSampledPi<3>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        runSampledPi<3>(p, pi, reference, options, modelUnitsPerPositionUnit, nullptr, run);
         break;
     case 4:
-        runSampledPi<4>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        runSampledPi<4>(p, pi, reference, options, modelUnitsPerPositionUnit, nullptr, run);
         break;
     default:
-        runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, run);
+        runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, nullptr, run);
         break;
     }
     return run;
@@ -233,6 +276,9 @@ SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const Serv
     SampledDataRun run;
     resizeRun(run, n, tsSeconds, options.umaxVolts);
     run.result.uFeedforward.resize(n);
+    std::optional<TablePlant> table = tablePlantFor(plant, options, unit);
+    if (table && options.table->breakawayVolts() > 0.0)
+        run.result.sliding.resize(n);
     const std::size_t ns = static_cast<std::size_t>(p.states);
     std::vector<double> x(ns, 0.0), next(ns);
     ServoPidState state = servoPidAtRest(command.front().position);
@@ -240,11 +286,14 @@ SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const Serv
     DelayLine delay(options.delaySamples, 0.0);
     const Dac dac(options.dacBits, options.umaxVolts);
     const double umax = options.umaxVolts;
+    const double* ff = sampledFeedforward(options, n);
     SimulationResult& out = run.result;
     for (std::size_t k = 0; k < n; ++k) {
         double y = 0.0;
         for (std::size_t j = 0; j < ns; ++j)
             y += p.c[j] * x[j];
+        if (table)
+            y = table->state().table;
         const double position = y / unit;
         const double measured = encoderReading(position, options.encoderResolution);
         const MotionSample& c = command[k];
@@ -252,18 +301,25 @@ SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const Serv
         const ServoPidTerms terms =
             stepServoPid(gains, state, c.position, measured, tsSeconds,
                          source == CommandDerivativeSource::TrajectoryGenerator ? &given : nullptr);
-        const bool clip = std::abs(terms.output) > umax;
-        const double u = clip ? std::copysign(umax, terms.output) : terms.output;
+        const double v = ff ? terms.output + ff[k] : terms.output;
+        const bool clip = std::abs(v) > umax;
+        const double u = clip ? std::copysign(umax, v) : v;
         const double applied = delay.push(dac(u));
         out.t[k] = static_cast<double>(k) * tsSeconds;
         out.r[k] = c.position;
         out.y[k] = position;
         out.e[k] = c.position - position;
         out.u[k] = u;
-        out.uFeedforward[k] = terms.feedforward;
+        out.uFeedforward[k] = terms.feedforward + (ff ? ff[k] : 0.0);
         out.clipped[k] = clip || terms.output != terms.feedback + terms.feedforward;
         run.measured[k] = measured;
         run.applied[k] = applied;
+        if (table) {
+            if (!out.sliding.empty())
+                out.sliding[k] = static_cast<std::int8_t>(table->state().sliding);
+            table->hold(applied, tsSeconds);
+            continue;
+        }
         for (std::size_t i = 0; i < ns; ++i) {
             double acc = 0.0;
             for (std::size_t j = 0; j < ns; ++j)

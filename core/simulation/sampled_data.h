@@ -39,6 +39,14 @@ struct SampledDataOptions {
     /// and Astrom: the controller remembers what the actuator did). Digital PI axes carry
     /// their anti-windup in DigitalPi.
     AntiWindup antiWindup = AntiWindup::Clamp;
+    /// The table's friction, backlash and amplifier deadband (core/simulation/table_dynamics.h)
+    /// for the continuous-plant loops (simulateSampledPi, simulateSampledServoPid): between
+    /// samples the held command drives TablePlant. Null or inactive: the exact linear step.
+    const TableFriction* table = nullptr;
+    /// A feedforward (V) per controller sample added to the controller's output before the
+    /// limit, as firmware adds its friction compensation after the PI or PID: u = sat(v + uff)
+    /// (the PI's anti-windup acts on its own output). Null or empty: none, bit for bit.
+    const std::vector<double>* feedforwardVolts = nullptr;
 };
 
 /// Largest computation delay accepted (samples).

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
+#include "core/simulation/table_dynamics.h"
 
 #include <Eigen/QR>
 
@@ -254,6 +255,11 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
         out.uFeedforward.assign(ff, ff + count);
     else
         out.uFeedforward.clear();
+    out.sliding.clear();
+    if (options.table && options.table->active()) {
+        simulateTableLoopInto(plant, controller, reference, options, ff, out);
+        return;
+    }
     const std::vector<double> cp(modes.plantC.data(), modes.plantC.data() + np);
     const std::vector<double> cc(modes.controllerC.data(), modes.controllerC.data() + nc);
     const double umax = options.umaxVolts;

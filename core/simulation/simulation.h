@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/table_friction.h"
 #include "core/model/transfer_function.h"
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -31,6 +33,14 @@ struct LoopSimulationOptions {
      * the reference's length.
      */
     const std::vector<double>* feedforwardVolts = nullptr;
+    /**
+     * The table's friction, backlash and amplifier deadband (core/simulation/table_dynamics.h).
+     * Null or inactive (TableFriction::active): the linear plant, and the run is the linear one
+     * bit for bit. Active: the plant must be k0 / (s (s^2 + a1 s + a2)) with real poles.
+     */
+    const TableFriction* table = nullptr;
+    /// Runge-Kutta sub-steps per sample of a run with a table; 0: automatic (h lambda <= 1/4).
+    int tableSubsteps = 0;
 };
 
 /// Sampled signals of one run: t, reference r, output y, error e = r - y, actuator command u
@@ -41,6 +51,9 @@ struct SimulationResult {
     /// The feedforward part of u before the limit (V), when the run has one (else empty): the
     /// feedback part is u - uFeedforward while u is not clipped.
     std::vector<double> uFeedforward;
+    /// With a table that has dry friction: whether the mass slides (+1 forward, -1 backward) or
+    /// sticks (0) at each sample; empty otherwise.
+    std::vector<std::int8_t> sliding;
     double dtSeconds = 0.0;
     double umaxVolts = std::numeric_limits<double>::infinity();
 };

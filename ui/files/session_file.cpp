@@ -241,6 +241,52 @@ ModelOrigin readOrigin(ObjectReader r) {
     return o;
 }
 
+QJsonObject frictionToJson(const TableFriction& f, const FrictionCompensation& c) {
+    return {{"coulomb", f.coulombVolts},
+            {"static", f.staticVolts},
+            {"stribeck_velocity", f.stribeckVelocityMmPerS},
+            {"viscous", f.viscousVoltsPerMmPerS},
+            {"backlash", f.backlashMm},
+            {"amplifier_deadband", f.amplifierDeadbandVolts},
+            {"electrical_pole", f.electricalPole == ElectricalPole::Faster
+                                    ? QStringLiteral("faster")
+                                    : QStringLiteral("slower")},
+            {"compensation", QJsonObject{{"percent", c.percent}, {"band", c.bandMmPerS}}}};
+}
+
+/// An axis' "friction" object, every field required, checked by the core's rules at its path.
+void readFriction(ObjectReader r, AxisSettings& a) {
+    TableFriction& f = a.friction;
+    f.coulombVolts = r.number("coulomb");
+    f.staticVolts = r.number("static");
+    f.stribeckVelocityMmPerS = r.number("stribeck_velocity");
+    f.viscousVoltsPerMmPerS = r.number("viscous");
+    f.backlashMm = r.number("backlash");
+    f.amplifierDeadbandVolts = r.number("amplifier_deadband");
+    const QString pole = r.string("electrical_pole");
+    if (pole != "faster" && pole != "slower")
+        throw FormatError{join(r.path(), "electrical_pole"),
+                          QStringLiteral("must be \"faster\" or \"slower\"")};
+    f.electricalPole = pole == "faster" ? ElectricalPole::Faster : ElectricalPole::Slower;
+    ObjectReader c = r.child("compensation");
+    a.frictionCompensation.percent = c.number("percent");
+    a.frictionCompensation.bandMmPerS = c.number("band");
+    try {
+        validateTableFriction(f);
+    } catch (const InvalidInput& e) {
+        throw FormatError{join(r.path(), QString::fromStdString(e.field())),
+                          QString::fromStdString(e.reason())};
+    }
+    try {
+        validateFrictionCompensation(a.frictionCompensation);
+    } catch (const InvalidInput& e) {
+        throw FormatError{join(c.path(), QString::fromStdString(e.field())),
+                          QString::fromStdString(e.reason())};
+    }
+    c.finish();
+    r.finish();
+}
+
 QJsonObject axisToJson(const AxisSettings& a) {
     QJsonObject out{
         {"id", QString::fromStdString(a.id)},
@@ -264,6 +310,8 @@ QJsonObject axisToJson(const AxisSettings& a) {
     out.insert("parameters", parameters);
     if (a.origin)
         out.insert("model_origin", originToJson(*a.origin));
+    if (a.friction.active() || a.frictionCompensation != FrictionCompensation{})
+        out.insert("friction", frictionToJson(a.friction, a.frictionCompensation));
     return out;
 }
 
@@ -418,6 +466,8 @@ AxisSettings readAxis(ObjectReader r) {
     a.parameters = readMethodParameters(r.child("parameters"), a.method);
     if (r.has("model_origin"))
         a.origin = readOrigin(r.child("model_origin"));
+    if (r.has("friction"))
+        readFriction(r.child("friction"), a);
     r.finish();
     return a;
 }

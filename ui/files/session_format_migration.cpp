@@ -135,6 +135,8 @@ QJsonObject migrateSessionJson(QJsonObject root, int version) {
         root = fromVersion2(std::move(root));
     if (version <= 3)
         root = fromVersion3(std::move(root));
+    // Version 5 only adds the optional "friction" object: nothing to fill in.
+    root.insert("version", 5);
     return root;
 }
 

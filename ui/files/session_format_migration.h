@@ -20,10 +20,13 @@ namespace xyt::files {
  * - Version 4: the point-to-point move has a "profile" ("cubic" or "quintic",
  *   TrajectorySettings::profile) in the trajectory's "cubic" object. A version-3 move reads as
  *   "cubic".
+ * - Version 5: an axis may have a "friction" object (AxisSettings::friction and
+ *   frictionCompensation), written when any of it is set. A version-4 axis has none: the linear
+ *   table, no compensation.
  *
  * Reading an older version is this migration to the current one, then the current reader.
  */
-inline constexpr int kSessionFormatVersion = 4;
+inline constexpr int kSessionFormatVersion = 5;
 
 /// @p root (a document of format version @p version, 1 <= version < kSessionFormatVersion)
 /// as a document of the current version: each field that version did not require and that

@@ -205,6 +205,15 @@ void TuningSession::setModelUnitScale(int axis, double modelUnitsPerPositionUnit
     apply(next, tr("Change the model unit of %1").arg(axisName(next, axis)));
 }
 
+void TuningSession::setFriction(int axis, const TableFriction& friction,
+                                const FrictionCompensation& compensation) {
+    Session next = session_;
+    AxisSettings& a = next.axes.at(static_cast<std::size_t>(axis));
+    a.friction = friction;
+    a.frictionCompensation = compensation;
+    apply(next, tr("Change the friction of %1").arg(axisName(next, axis)));
+}
+
 void TuningSession::setTrajectory(const TrajectorySettings& trajectory) {
     Session next = session_;
     next.trajectory = trajectory;

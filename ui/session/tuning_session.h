@@ -131,6 +131,9 @@ public:
     void setKp(int axis, double kp);
     void setPlant(int axis, const ThirdOrderPlant& plant);
     void setModelUnitScale(int axis, double modelUnitsPerPositionUnit);
+    /// The table's friction and the friction compensation of @p axis, as one undo step.
+    void setFriction(int axis, const TableFriction& friction,
+                     const FrictionCompensation& compensation);
     void setTrajectory(const TrajectorySettings& trajectory);
     void setUmax(double umaxVolts);
     void setImplementation(const ImplementationSettings& implementation);

@@ -485,7 +485,7 @@ void TstSessionFile::versionOneFilesMigrate() {
     s.snapshots.push_back({"before", s.axes, s.trajectory, s.umaxVolts});
     const QJsonObject current = sessionToJson(s);
     QCOMPARE(current["version"].toInt(), kSessionFormatVersion);
-    QCOMPARE(kSessionFormatVersion, 4);
+    QCOMPARE(kSessionFormatVersion, 5);
     // Version 3 had no "profile" in its point-to-point move (nor in its snapshots'): the
     // migration says "cubic", the current document.
     const auto withoutProfile = [](QJsonObject holder) {

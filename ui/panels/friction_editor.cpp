@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/panels/friction_editor.h"
+
+#include "core/model/errors.h"
+#include "ui/panels/number_field.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace xyt::ui {
+
+namespace {
+
+void requireNonNegative(double v) {
+    if (!(v >= 0.0))
+        throw InvalidInput("value", "must be >= 0");
+}
+
+} // namespace
+
+FrictionEditor::FrictionEditor(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    fold_ = new QToolButton(this);
+    fold_->setCheckable(true);
+    fold_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    fold_->setArrowType(Qt::RightArrow);
+    fold_->setAutoRaise(true);
+    fold_->setAccessibleName(tr("Friction and backlash"));
+    layout->addWidget(fold_);
+    body_ = new QWidget(this);
+    auto* form = new QFormLayout(body_);
+    form->setContentsMargins(12, 0, 0, 0);
+    const auto add = [&](const QString& key, const QString& label, const QString& tip) {
+        auto* f = new NumberField(key, requireNonNegative, body_);
+        f->setToolTip(tip);
+        fields_.insert(key, f);
+        tips_.insert(key, tip);
+        form->addRow(label, f);
+        connect(f, &NumberField::valueAccepted, this, [this] { emitIfValid(); });
+    };
+    add("coulomb", tr("Coulomb (V)"),
+        tr("Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its "
+           "linear model to keep sliding"));
+    add("static", tr("Static (V)"),
+        tr("Static (breakaway) level Fs in volts; 0 takes the Coulomb level (no Stribeck dip)"));
+    add("stribeck_velocity", tr("Stribeck velocity (mm/s)"),
+        tr("vs of f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): how fast the friction falls "
+           "from Fs to Fc"));
+    add("viscous", tr("Viscous (V per mm/s)"),
+        tr("Viscous friction beyond the model's own damping (a2/k0 already holds it): 0 by "
+           "default"));
+    add("backlash", tr("Backlash (mm)"),
+        tr("Play between motor and table: the table stays while the motor crosses the gap"));
+    add("amplifier_deadband", tr("Amplifier deadband (V)"),
+        tr("|u| below it gives no output; beyond it the amplifier gives u - d sign(u)"));
+    pole_ = new QComboBox(body_);
+    pole_->addItem(tr("the faster pole"));
+    pole_->addItem(tr("the slower pole"));
+    pole_->setToolTip(tr("Which root of s² + a1 s + a2 is the drive's electrical lag; the other "
+                         "is the moving mass, where the friction acts"));
+    form->addRow(tr("Electrical lag"), pole_);
+    connect(pole_, &QComboBox::activated, this, [this] { emitIfValid(); });
+    add("percent", tr("Compensation (%)"),
+        tr("Friction feedforward from the reference velocity, in percent of the Coulomb and "
+           "viscous levels above (0: none)"));
+    add("band", tr("Compensation band (mm/s)"),
+        tr("The Coulomb term ramps linearly across |v| < band instead of jumping at v = 0"));
+    note_ = new QLabel(this);
+    note_->setWordWrap(true);
+    note_->hide();
+    layout->addWidget(body_);
+    layout->addWidget(note_);
+    body_->hide();
+    connect(fold_, &QToolButton::toggled, this, [this](bool open) {
+        body_->setVisible(open);
+        fold_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+    });
+    setSettings({}, {}, true);
+}
+
+bool FrictionEditor::isOpen() const {
+    return fold_->isChecked();
+}
+
+void FrictionEditor::setSettings(const TableFriction& friction,
+                                 const FrictionCompensation& compensation, bool applicable) {
+    friction_ = friction;
+    compensation_ = compensation;
+    fields_["coulomb"]->setValue(friction.coulombVolts);
+    fields_["static"]->setValue(friction.staticVolts);
+    fields_["stribeck_velocity"]->setValue(friction.stribeckVelocityMmPerS);
+    fields_["viscous"]->setValue(friction.viscousVoltsPerMmPerS);
+    fields_["backlash"]->setValue(friction.backlashMm);
+    fields_["amplifier_deadband"]->setValue(friction.amplifierDeadbandVolts);
+    fields_["percent"]->setValue(compensation.percent);
+    fields_["band"]->setValue(compensation.bandMmPerS);
+    pole_->setCurrentIndex(friction.electricalPole == ElectricalPole::Faster ? 0 : 1);
+    fold_->setEnabled(applicable);
+    body_->setEnabled(applicable);
+    note_->setVisible(false);
+    fold_->setToolTip(applicable ? QString()
+                                 : tr("A pole-placement axis' ARX model holds the friction its "
+                                      "data held: the table's friction acts on Guillemin-Truxal "
+                                      "and PID axes"));
+    if (!applicable && fold_->isChecked())
+        fold_->setChecked(false);
+    updateHeader();
+}
+
+void FrictionEditor::emitIfValid() {
+    for (NumberField* f : fields_)
+        if (f->hasError())
+            return;
+    TableFriction next;
+    next.coulombVolts = fields_["coulomb"]->value();
+    next.staticVolts = fields_["static"]->value();
+    next.stribeckVelocityMmPerS = fields_["stribeck_velocity"]->value();
+    next.viscousVoltsPerMmPerS = fields_["viscous"]->value();
+    next.backlashMm = fields_["backlash"]->value();
+    next.amplifierDeadbandVolts = fields_["amplifier_deadband"]->value();
+    next.electricalPole =
+        pole_->currentIndex() == 0 ? ElectricalPole::Faster : ElectricalPole::Slower;
+    FrictionCompensation c;
+    c.percent = fields_["percent"]->value();
+    c.bandMmPerS = fields_["band"]->value();
+    try {
+        validateTableFriction(next);
+        validateFrictionCompensation(c);
+    } catch (const InvalidInput& e) {
+        if (NumberField* f = fields_.value(QString::fromStdString(e.field())))
+            markFieldError(f, QString::fromStdString(e.reason()));
+        return;
+    }
+    for (auto it = fields_.begin(); it != fields_.end(); ++it)
+        clearFieldError(it.value(), tips_.value(it.key()));
+    if (next == friction_ && c == compensation_)
+        return;
+    friction_ = next;
+    compensation_ = c;
+    updateHeader();
+    emit frictionEdited(next, c);
+}
+
+void FrictionEditor::updateHeader() {
+    QStringList set;
+    if (friction_.coulombVolts > 0.0 || friction_.staticVolts > 0.0)
+        set << tr("Coulomb %1 V").arg(formatNumber(friction_.coulombVolts));
+    if (friction_.backlashMm > 0.0)
+        set << tr("backlash %1 mm").arg(formatNumber(friction_.backlashMm));
+    if (friction_.amplifierDeadbandVolts > 0.0)
+        set << tr("deadband %1 V").arg(formatNumber(friction_.amplifierDeadbandVolts));
+    if (friction_.viscousVoltsPerMmPerS > 0.0)
+        set << tr("viscous");
+    if (compensation_.percent > 0.0)
+        set << tr("compensated %1 %").arg(formatNumber(compensation_.percent));
+    fold_->setText(set.isEmpty() ? tr("Friction") : tr("Friction ●"));
+    if (fold_->isEnabled())
+        fold_->setToolTip(set.isEmpty() ? tr("Friction and backlash: none (the linear table)")
+                                        : tr("Friction and backlash: %1").arg(set.join(", ")));
+}
+
+} // namespace xyt::ui
