@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/export_text.h"
 
+#include "core/session/friction_export.h"
+
 #include "core/design/pole_placement.h"
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
@@ -142,6 +144,7 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
         requireCIdentifier(session, i);
         const AxisEvaluation& a = validAxis(evaluation, i);
         out << designMethodModule(a.method).cController(session, a, i, options);
+        out << frictionCompensationCBlock(session, i, options.precision);
     }
     out << "#endif /* XYT_CONTROLLER_COEFFICIENTS_H */\n";
     return out.str();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/linuxcnc_export.h"
 
+#include "core/session/friction_export.h"
+
 #include "core/model/errors.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
@@ -97,6 +99,7 @@ std::string exportLinuxCnc(const Session& session, const SessionEvaluation& eval
                 << " s has no pid pin: LinuxCNC differentiates without a filter.\n";
         if (g.derivativeOnMeasurement)
             out << "# D acts on the measurement here; LinuxCNC's pid differentiates the error.\n";
+        out << linuxCncFrictionNote(session.axes[i], index, i);
         if (d.derivativeSource == CommandDerivativeSource::TrajectoryGenerator)
             out << "# The session reads the command's derivatives from the trajectory: connect "
                    "pid."

@@ -36,6 +36,21 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
         QJsonObject axis{{"id", QString::fromStdString(settings.id)},
                          {"label", QString::fromStdString(settings.label)},
                          {"method", methodName(settings.method)}};
+        const FrictionCompensation& fc = settings.frictionCompensation;
+        if (fc.percent != 0.0) {
+            const std::string field = axisField(i, "friction");
+            axis.insert(
+                "friction_compensation",
+                QJsonObject{{"scale", finite(fc.percent / 100.0, field + ".compensation.percent")},
+                            {"coulomb", finite(settings.friction.coulombVolts, field + ".coulomb")},
+                            {"viscous",
+                             finite(settings.friction.viscousVoltsPerMmPerS, field + ".viscous")},
+                            {"band", finite(fc.bandMmPerS, field + ".compensation.band")},
+                            {"law",
+                             "u_fc = scale (coulomb sat(v / band) + viscous v), v the reference "
+                             "velocity, added to the controller's output before the limit"},
+                            {"units", "coulomb in V, viscous in V per mm/s, band and v in mm/s"}});
+        }
         const std::string ppField = axisField(i, "pp"), gtField = axisField(i, "gt");
         if (a.ok && a.pp) {
             axis.insert("position_unit", "mm (the ARX model's units)");
