@@ -88,6 +88,7 @@ public:
     StaleVeil* contourVeil() const { return contourVeil_; }
     ContourControls* contourControls() const { return contourControls_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
+    FrictionEditor* frictionEditor() const { return frictionEditor_; }
     ImplementationEditor* implementationEditor() const { return implementation_; }
     QToolButton* implementationToggle() const { return implementationToggle_; }
     /// View > Show the digital implementation (time-plot overlay), on by default.

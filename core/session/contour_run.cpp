@@ -149,6 +149,17 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
                              feed, options);
         pointsOnSegments(test.forward, {0, 1}, test.x, test.y);
         pointsOnSegments(test.reverse, {0, 1}, test.reverseX, test.reverseY);
+        if (session.axes[0].frictionCompensation.percent != 0.0 ||
+            session.axes[1].frictionCompensation.percent != 0.0) {
+            Session plain = session;
+            for (AxisSettings& a : plain.axes)
+                a.frictionCompensation.percent = 0.0;
+            const ContourTrace without = trace(plain, Path({circle}), feed, options);
+            pointsOnSegments(without, {0, 1}, test.uncompensatedX, test.uncompensatedY);
+            if (test.uncompensatedX.size() >= 3)
+                test.uncompensatedIso = iso230Circular(test.uncompensatedX, test.uncompensatedY,
+                                                       test.nominal, options.iso);
+        }
         if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
             test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal,
                                       options.iso);

@@ -62,6 +62,11 @@ struct ContourCircularTest {
     ContourTrace reverse;        ///< the same circle run the other way (re-run alone only)
     /// The traced points of each run (x, y forward; reverseX, reverseY reverse).
     std::vector<double> x, y, reverseX, reverseY;
+    /// When an axis compensates its table's friction (AxisSettings::frictionCompensation): the
+    /// first run again without the compensation, its points and its figures (re-run alone
+    /// only), for the compensated/uncompensated comparison.
+    std::optional<Iso230Circular> uncompensatedIso;
+    std::vector<double> uncompensatedX, uncompensatedY;
 };
 
 /// A G-code program run by the session's two axes.

@@ -406,6 +406,10 @@ QString MetricsPanel::contourText() const {
     return contour_->text();
 }
 
+QString MetricsPanel::contourToolTip() const {
+    return contour_->toolTip();
+}
+
 QString MetricsPanel::adviceText() const {
     return advice_->toolTip();
 }
@@ -439,7 +443,8 @@ void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& e
                             : tr("No limit makes this design pass (see why): change the design"));
 }
 
-void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList& notices) {
+void MetricsPanel::showContour(const SessionEvaluation& evaluation, bool withFriction,
+                               QStringList& notices) {
     const auto mm = [](double v) { return QString::number(v, 'f', 4); };
     QStringList lines;
     if (evaluation.program) {
@@ -462,6 +467,23 @@ void MetricsPanel::showContour(const SessionEvaluation& evaluation, QStringList&
                                            mm(iso.radialDeviationFMin));
             if (iso.hysteresisH)
                 iso230 += tr(", H %1").arg(mm(*iso.hysteresisH));
+            // With a table that has friction: the largest reversal spike on the ISO line (the
+            // panel has no room for another line at 1366 x 768), each quadrant's and G without
+            // the compensation in the tooltip (and on the ballbar view).
+            if (withFriction && !iso.reversalSpikes.empty()) {
+                QStringList spikes;
+                double largest = 0.0;
+                for (const ReversalSpike& spike : iso.reversalSpikes) {
+                    spikes << tr("%1° %2").arg(spike.angleDeg, 0, 'f', 0).arg(mm(spike.heightMm));
+                    largest = std::max(largest, std::abs(spike.heightMm));
+                }
+                iso230 += tr(", spikes ≤ %1").arg(mm(largest));
+                QString tip = tr("Reversal spikes (mm): %1").arg(spikes.join(QStringLiteral(", ")));
+                if (test.uncompensatedIso)
+                    tip += tr("\nWithout the friction compensation: G %1 mm")
+                               .arg(mm(test.uncompensatedIso->circularDeviationG));
+                contour_->setToolTip(tip);
+            }
             lines << iso230 + tr(" mm");
         }
         // The program's warnings are on the XY contour view and in the editor's summary.
@@ -482,7 +504,8 @@ void MetricsPanel::showEvaluation(const Session& session, const SessionEvaluatio
         showAxis(session, evaluation.axes[static_cast<std::size_t>(c)], c, notices);
     fitColumns();
     showAdvice(session, evaluation);
-    showContour(evaluation, notices);
+    showContour(evaluation, session.axes[0].friction.active() || session.axes[1].friction.active(),
+                notices);
     notices_->setText(notices.join(QLatin1Char('\n')));
     noticeArea_->setVisible(!notices.isEmpty());
 }

@@ -47,6 +47,8 @@ public:
     /// The XY figures of a G-code program: contour error max and RMS, and for one full circle
     /// the ISO 230-4 G, F max, F min and H ("" for the presets).
     QString contourText() const;
+    /// The contour figures' tooltip (the reversal spikes of a table with friction).
+    QString contourToolTip() const;
     /// Why the design fails the specification, one reason per line ("" when it passes).
     QString adviceText() const;
     /// The one-line verdict beside the specification's title (adviceText is its tooltip).
@@ -114,7 +116,7 @@ private:
     void connectSpecFields();
 
     void fitColumns();
-    void showContour(const SessionEvaluation& evaluation, QStringList& notices);
+    void showContour(const SessionEvaluation& evaluation, bool withFriction, QStringList& notices);
     /// What one figure cell shows: its text, a pass (kPass) or fail (kFail) colour or none.
     struct Cell {
         QString text;

@@ -50,6 +50,7 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     for (std::size_t b = 0; b < bands_.size(); ++b)
         bands_[b] = newCurve(this, QPen(kBandColors[b + 1], 2.0), QString());
     reverse_ = newCurve(this, QPen(colors::axisY, 1.2), QString());
+    uncompensated_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DashDotLine), QString());
     fMax_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), tr("F max/min"));
     fMin_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), QString());
     gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (LS centre)"));
@@ -145,7 +146,8 @@ void ContourPlot::showSession(const Session& session, const SessionEvaluation& e
 }
 
 void ContourPlot::clearCurves() {
-    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_, fMax_, fMin_, gInner_, gOuter_})
+    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_, uncompensated_, fMax_, fMin_,
+                        gInner_, gOuter_})
         c->data()->clear();
     for (QCPCurve* c : bands_)
         c->data()->clear();
@@ -312,6 +314,14 @@ void ContourPlot::drawCircularTest() {
                             mm(iso.radialDeviationFMin));
     if (iso.hysteresisH)
         text += tr(", H %1").arg(mm(*iso.hysteresisH));
+    if (test.uncompensatedIso) {
+        // The comparison: the first run again without the friction compensation.
+        setPoints(uncompensated_,
+                  polarDeviationPoints(test.uncompensatedX, test.uncompensatedY, n, m));
+        uncompensated_->setName(tr("%1 without friction compensation ×%2").arg(forward).arg(m));
+        text += tr("; without friction compensation G %1")
+                    .arg(mm(test.uncompensatedIso->circularDeviationG));
+    }
     figures_->setText(text);
 }
 
@@ -342,11 +352,11 @@ void ContourPlot::fitEqualScale() {
     // the commanded and traced paths, the magnified error (which leaves the path by
     // magnification times the error), and in the polar view both runs and the F and G circles.
     QCPRange xr, yr;
-    const bool found =
-        curvesBoundingBox(polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_,
-                                                           reverse_, fMax_, fMin_, gInner_, gOuter_}
-                                  : std::vector<QCPCurve*>{commanded_, traced_, magnified_},
-                          xr, yr);
+    const bool found = curvesBoundingBox(
+        polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_, uncompensated_,
+                                         fMax_, fMin_, gInner_, gOuter_}
+                : std::vector<QCPCurve*>{commanded_, traced_, magnified_},
+        xr, yr);
     if (found)
         showBox(xr.lower, xr.upper, yr.lower, yr.upper);
 }

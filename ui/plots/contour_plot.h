@@ -68,6 +68,8 @@ public:
     QCPGraph* cornerMarkers() const { return corners_; }
     /// Polar mode: the reverse run, the F max/F min circles, the G circles (inner, outer).
     QCPCurve* reverseCurve() const { return reverse_; }
+    /// The ballbar's first run without the friction compensation (empty without one).
+    QCPCurve* uncompensatedCurve() const { return uncompensated_; }
     QCPCurve* fMaxCircle() const { return fMax_; }
     QCPCurve* fMinCircle() const { return fMin_; }
     QCPCurve* gInnerCircle() const { return gInner_; }
@@ -99,6 +101,7 @@ private:
     QCPGraph* worst_;
     QCPGraph* corners_;
     QCPCurve* reverse_;
+    QCPCurve* uncompensated_;
     QCPCurve* fMax_;
     QCPCurve* fMin_;
     QCPCurve* gInner_;
