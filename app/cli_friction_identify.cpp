@@ -53,6 +53,15 @@ int identifyFrictionCurve(const CliArgs& args) {
         table = readExperimentTable(fileNameBytes(path), 1, columns);
     } catch (const FileError& e) {
         throw InvalidInput("--data", e.what());
+    } catch (const InvalidInput& e) {
+        // A column the file lacks: named by the option that asked for it.
+        const QString what = QString::fromStdString(e.what());
+        const std::pair<const char*, std::size_t> options[] = {
+            {"time-col", 0}, {"reference-col", 1}, {"output-col", 2}, {"input-col", 3}};
+        for (const auto& [option, index] : options)
+            if (what.contains("'" + QString::fromStdString(columns[index]) + "'"))
+                throw InvalidInput(CliArgs::field(option), e.what());
+        throw;
     }
     const auto t = numericColumn(table, args, "time-col", "t");
     const auto r = numericColumn(table, args, "reference-col", "r");

@@ -20,6 +20,8 @@ namespace {
 // The core is built as a unity build: the names below are unique across it.
 
 constexpr std::size_t kFrictionMinSegmentSamples = 20;
+/// Samples left out at the end of each cruise (see steadyJogPoints).
+constexpr std::size_t kFrictionLookAheadSamples = 2;
 constexpr std::size_t kFrictionMinSteadySamples = 10;
 /// Speeds within this fraction of each other count as one (the distinct-speed rule).
 constexpr double kFrictionDistinctSpeed = 0.01;
@@ -225,9 +227,15 @@ std::vector<FrictionPoint> steadyJogPoints(const std::vector<double>& t,
         // 1e-9 of a step: a steady start that falls on a sample keeps that sample.
         while (first < run.last && t[first] < steadyStart - 1e-9 * step)
             ++first;
-        if (run.last - first + 1 < kFrictionMinSteadySamples)
+        // A controller that reads the planned path ahead (a feedforward from central
+        // differences reads r[k + 1] and r[k + 2]) already commands the next ramp at the
+        // cruise's last samples: they are left out.
+        if (run.last < first + kFrictionLookAheadSamples)
             continue;
-        points.push_back(frictionPoint(t, position, command, first, run.last));
+        const std::size_t last = run.last - kFrictionLookAheadSamples;
+        if (last - first + 1 < kFrictionMinSteadySamples)
+            continue;
+        points.push_back(frictionPoint(t, position, command, first, last));
         (run.direction > 0 ? forward : backward) += 1;
     }
     if (forward < 2 || backward < 2)

@@ -4,6 +4,9 @@
 #include "core/session/axis_run.h"
 #include "core/session/robustness_problem.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace xyt {
 
 AxisTrace ContinuousPlantMethod::tracePath(const Session& session, int axisIndex,
@@ -20,7 +23,16 @@ AxisTrace ContinuousPlantMethod::tracePath(const Session& session, int axisIndex
 
 std::vector<UncertainParameter>
 ContinuousPlantMethod::plantParameters(const AxisSettings& settings) const {
-    return thirdOrderPlantParameters(settings.gt.plant);
+    std::vector<UncertainParameter> out = thirdOrderPlantParameters(settings.gt.plant);
+    // The table's friction levels that are set (a zero level has no relative range).
+    const TableFriction& f = settings.friction;
+    for (const auto& [name, value] : {std::pair<const char*, double>{"coulomb", f.coulombVolts},
+                                      {"static", f.staticVolts},
+                                      {"viscous", f.viscousVoltsPerMmPerS},
+                                      {"backlash", f.backlashMm}})
+        if (value > 0.0)
+            out.push_back({name, value, 0.0});
+    return out;
 }
 
 RobustnessProblem ContinuousPlantMethod::robustnessProblem(const Session& session, int axisIndex,
@@ -33,6 +45,15 @@ RobustnessProblem ContinuousPlantMethod::robustnessProblem(const Session& sessio
 AxisSettings ContinuousPlantMethod::withPlantParameters(
     AxisSettings settings, const std::function<double(const std::string&, double)>& value) const {
     settings.gt.plant = withThirdOrderPlantParameters(settings.gt.plant, value);
+    TableFriction& f = settings.friction;
+    if (f.coulombVolts > 0.0)
+        f.coulombVolts = value("coulomb", f.coulombVolts);
+    if (f.staticVolts > 0.0)
+        f.staticVolts = std::max(value("static", f.staticVolts), f.coulombVolts);
+    if (f.viscousVoltsPerMmPerS > 0.0)
+        f.viscousVoltsPerMmPerS = value("viscous", f.viscousVoltsPerMmPerS);
+    if (f.backlashMm > 0.0)
+        f.backlashMm = value("backlash", f.backlashMm);
     return settings;
 }
 

@@ -111,8 +111,8 @@ void addReversalSpikeWarning(const Session& session, ContourRun& out) {
     for (const ReversalSpike& spike : out.circular->iso.reversalSpikes)
         largest = std::max(largest, std::abs(spike.heightMm));
     if (largest > 0.0)
-        out.warnings.push_back("reversal spikes up to " + formatNumber(1000.0 * largest, 3) +
-                               " um at the quadrant changes (the table's friction and backlash)");
+        out.warnings.push_back("reversal spikes up to " + formatNumber(largest, 4) +
+                               " mm at the quadrant changes (the table's friction and backlash)");
 }
 
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,

@@ -58,6 +58,16 @@ DesignProblem sessionDesignProblem(const Session& session, int axis,
     }
     if (cubic)
         problem.move = PointToPointMove{t.x0, t.xf, t.tfSeconds};
+    // The table with friction, and its compensation with the command feedforward.
+    if (const TableFriction* table = axisTable(settings, axis))
+        problem.table = *table;
+    const std::vector<double> compensation =
+        frictionFeedforward(settings, axis, problem.reference, dt);
+    if (!compensation.empty()) {
+        if (problem.feedforwardVolts.empty())
+            problem.feedforwardVolts.assign(compensation.size(), 0.0);
+        addFeedforward(problem.feedforwardVolts, compensation);
+    }
     return problem;
 }
 

@@ -67,7 +67,13 @@ RobustnessProblem continuousRobustnessProblem(const Session& session, int axis,
     p.modelUnitsPerPositionUnit = modelUnitsPerPositionUnit;
     p.dtSeconds = nominal.run.dtSeconds;
     p.reference = nominal.run.r;
-    p.parameters = axisUncertainParameters(session.axes.at(static_cast<std::size_t>(axis)));
+    const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
+    p.parameters = axisUncertainParameters(settings);
+    if (settings.friction.active())
+        p.table = settings.friction;
+    // The nominal run's feedforward (a friction compensation, the PID's command feedforward):
+    // fixed volts on the fixed trajectory, whatever plant is drawn.
+    p.feedforwardVolts = nominal.run.uFeedforward;
     return p;
 }
 

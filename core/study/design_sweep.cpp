@@ -172,7 +172,27 @@ void DesignEvaluator::evaluateBatch(std::span<const double> wn, std::span<const 
     run.modelUnitsPerPositionUnit = problem_.modelUnitsPerPositionUnit;
     if (!problem_.feedforwardVolts.empty())
         run.feedforwardVolts = &problem_.feedforwardVolts;
-    trackBatch(modes, run, movePointers, tracking, batchWidth);
+    if (problem_.table && problem_.table->active()) {
+        // The nonlinear table: simulateLoop per design, its samples fed to the same figures.
+        LoopSimulationOptions o;
+        o.dtSeconds = problem_.dtSeconds;
+        o.umaxVolts = problem_.spec.umaxVolts;
+        o.modelUnitsPerPositionUnit = problem_.modelUnitsPerPositionUnit;
+        o.feedforwardVolts = run.feedforwardVolts;
+        o.table = &*problem_.table;
+        SimulationResult r;
+        for (std::size_t i = 0; i < n; ++i) {
+            simulateLoopInto(plantTf_, designs[i].controller, problem_.reference, o, r);
+            const TrackingMetrics m = trackingMetrics(r);
+            if (!m.diverged)
+                tracking[i] = m;
+            if (!moves.empty() && !m.diverged)
+                for (std::size_t k = 0; k < r.t.size(); ++k)
+                    movePointers[i]->add(r.t[k], r.y[k], r.e[k]);
+        }
+    } else {
+        trackBatch(modes, run, movePointers, tracking, batchWidth);
+    }
     for (std::size_t i = 0; i < n; ++i)
         out[i] = finishPoint(designs[i], tracking[i], moves.empty() ? nullptr : &*moves[i]);
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/design/guillemin_truxal.h"
+#include "core/model/table_friction.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
 #include "core/study/specification.h"
@@ -87,6 +88,10 @@ struct DesignProblem {
     /// A command feedforward every design runs with (V at the reference's samples; empty:
     /// none): a PID + feedforward axis' feedforward, fixed while its PI gains are varied.
     std::vector<double> feedforwardVolts;
+    /// The axis' table with friction (core/simulation/table_dynamics.h): every design then runs
+    /// simulateLoop's nonlinear integration instead of the batched linear kernel, one design at
+    /// a time (a few times the kernel's cost per design: xytune-bench design_space_friction).
+    std::optional<TableFriction> table;
 };
 
 /**

@@ -83,6 +83,18 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
         o.umaxVolts = problem.spec.umaxVolts;
         o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
         o.initialOutput = problem.initialOutput;
+        // The table with this draw's friction levels (the compensation keeps the nominal ones).
+        std::optional<TableFriction> table = problem.table;
+        if (table) {
+            table->coulombVolts = valueOf(problem, values, "coulomb", table->coulombVolts);
+            table->viscousVoltsPerMmPerS =
+                valueOf(problem, values, "viscous", table->viscousVoltsPerMmPerS);
+            table->backlashMm = valueOf(problem, values, "backlash", table->backlashMm);
+            if (table->staticVolts > 0.0)
+                table->staticVolts = std::max(
+                    valueOf(problem, values, "static", table->staticVolts), table->coulombVolts);
+            o.table = &*table;
+        }
         if (!problem.feedforwardVolts.empty()) {
             // The feedback alone on this plant first: what the feedforward still gains here.
             simulateLoopInto(g, *problem.controller, problem.reference, o, run);
@@ -167,6 +179,21 @@ void validateRobustnessProblem(const RobustnessProblem& problem) {
     for (const UncertainParameter& p : problem.parameters)
         if (!std::isfinite(p.relative) || p.relative < 0.0 || p.relative >= 1.0)
             throw InvalidInput("range." + p.name, "must be from 0 to below 100 %");
+    if (problem.controller && problem.table && problem.table->active()) {
+        // The table splits the plant at the real poles of s^2 + a1 s + a2: the box's worst
+        // corner (a1 at its least, a2 at its most) must keep a1^2 >= 4 a2.
+        const auto bound = [&](const char* name, double sign) {
+            for (const UncertainParameter& p : problem.parameters)
+                if (p.name == name)
+                    return p.nominal * (1.0 + sign * p.relative);
+            return 0.0;
+        };
+        const double a1 = bound("a1", -1.0), a2 = bound("a2", 1.0);
+        if (a1 * a1 < 4.0 * a2)
+            throw InvalidInput("range.a2", "with the table's friction the poles of s^2 + a1 s + a2 "
+                                           "must stay real (a1^2 >= 4 a2) over the ranges of a1 "
+                                           "and a2: narrow them");
+    }
 }
 
 RobustnessResult analyzeRobustness(const RobustnessProblem& problem,

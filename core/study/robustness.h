@@ -3,6 +3,7 @@
 
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
+#include "core/model/table_friction.h"
 #include "core/model/transfer_function.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
@@ -43,6 +44,14 @@ struct RobustnessProblem {
     /// The controller's command feedforward in volts at the reference's samples (empty: none):
     /// fixed numbers on a fixed trajectory, so the same for every plant drawn.
     std::vector<double> feedforwardVolts;
+    /**
+     * Continuous axes: the table's friction, backlash and deadband (nominal), run as the
+     * nonlinear plant of core/simulation/table_dynamics.h. The parameters "coulomb", "static",
+     * "viscous" and "backlash", when listed, vary its levels; the plant's poles must stay real
+     * over the box (validateRobustnessProblem). Costs the Runge-Kutta integration per plant:
+     * a few times the linear run (xytune-bench robustness_friction).
+     */
+    std::optional<TableFriction> table;
     /// The table's position at rest at t = 0 (trajectory units; a G-code program starts there).
     double initialOutput = 0.0;
     // Discrete axes
