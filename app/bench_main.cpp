@@ -203,6 +203,56 @@ void simulateCubic(Runner& r) {
     });
 }
 
+/// The same cubic on a table with friction and backlash (Coulomb 0.05 V, static 0.07 V with a
+/// 0.5 mm/s Stribeck velocity, backlash 0.01 mm; the target: within 3x the linear run),
+/// and the two studies that then run the nonlinear plant: 100 robustness plants and a 20 x 20
+/// design-space grid, each beside its linear figure.
+void simulateCubicFriction(Runner& r) {
+    const CubicRun c;
+    xyt::TableFriction table;
+    table.coulombVolts = 0.05;
+    table.staticVolts = 0.07;
+    table.stribeckVelocityMmPerS = 0.5;
+    table.backlashMm = 0.01;
+    xyt::LoopSimulationOptions o = c.options;
+    o.table = &table;
+    const double nonlinear = r.time("simulate_cubic_130s_dt0.01_friction", [&] {
+        const auto run = xyt::simulateLoop(c.plant, c.design.controller, c.reference, o);
+        sink = sink + run.y.back();
+    });
+    const double linear = r.time("simulate_cubic_130s_dt0.01_linear_same_run", [&] {
+        const auto run = xyt::simulateLoop(c.plant, c.design.controller, c.reference, c.options);
+        sink = sink + run.y.back();
+    });
+    printRatio("simulate_cubic_130s_dt0.01_friction", nonlinear, linear,
+               "friction and backlash / linear, target 3");
+    xyt::Session session = xyt::Session::paperDefault();
+    session.axes[0].friction = table;
+    xyt::Session plain = xyt::Session::paperDefault();
+    for (const bool withTable : {true, false}) {
+        const xyt::Session& s = withTable ? session : plain;
+        xyt::RobustnessProblem p = xyt::sessionRobustnessProblem(s, 0);
+        xyt::setRelativeRange(p.parameters, "k0", 0.05);
+        xyt::RobustnessOptions options;
+        options.samples = 100;
+        options.corners = false;
+        r.time(withTable ? "robustness_100_plants_friction" : "robustness_100_plants_linear",
+               [&] { sink = sink + xyt::analyzeRobustness(p, options).runs.size(); });
+        const xyt::DesignEvaluator evaluator(xyt::sessionDesignProblem(s, 0));
+        std::vector<double> wn, kp;
+        for (int i = 0; i < 20; ++i)
+            for (int j = 0; j < 20; ++j) {
+                wn.push_back(0.5 + 0.1 * i);
+                kp.push_back(10.0 + 2.0 * j);
+            }
+        std::vector<xyt::DesignPoint> points(wn.size());
+        r.time(withTable ? "design_space_20x20_friction" : "design_space_20x20_linear", [&] {
+            evaluator.evaluateBatch(wn, kp, points, 8);
+            sink = sink + points.back().tracking.rmse;
+        });
+    }
+}
+
 /// The sampled-data loop of the digital PI on the same cubic at 10 ms (target under 1 ms), ideal
 /// or with a 1 um encoder, a 16-bit DAC and one sample of delay.
 void digitalSimulateCubic(Runner& r, bool quantized) {
@@ -800,6 +850,7 @@ std::vector<Benchmark> benchmarks(int& argc, char* argv[]) {
         {"sweep_point_stability_margins", sweepPointStabilityMargins},
         {"frequency_response_1000_and_margins", frequencyResponseAndMargins},
         {"simulate_cubic_130s_dt0.01", simulateCubic},
+        {"simulate_cubic_130s_dt0.01_friction", simulateCubicFriction},
         {"digital_simulate_cubic_130s_ts0.01", [](Runner& r) { digitalSimulateCubic(r, false); }},
         {"digital_simulate_cubic_130s_ts0.01_quantized",
          [](Runner& r) { digitalSimulateCubic(r, true); }},

@@ -7,6 +7,7 @@
 #include "core/simulation/step_view.h"
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
+#include "ui/friction_curve_dialog.h"
 #include "ui/identification_window.h"
 #include "ui/panels/contour_controls.h"
 #include "ui/panels/equations_panel.h"
@@ -577,6 +578,14 @@ void MainWindow::buildMenus() {
         window->show();
         window->raise();
         window->activateWindow();
+    });
+    design->addAction(tr("F&riction curve from a jog log..."), this, [this] {
+        auto* dialog = findChild<FrictionCurveDialog*>();
+        if (!dialog)
+            dialog = new FrictionCurveDialog(session_, this);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
     });
     design->addSeparator();
     feedforwardAction_ = design->addAction(tr("Add &feedforward from the model"), this, [this] {
