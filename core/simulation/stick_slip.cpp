@@ -60,14 +60,16 @@ std::optional<StickSlipFindings> stickSlipFindings(const SimulationResult& run) 
 
 std::vector<std::string> stickSlipWarnings(const StickSlipFindings& f, const std::string& what) {
     std::vector<std::string> out;
+    const auto times = [](int n) {
+        return n == 1 ? std::string("once") : std::to_string(n) + " times";
+    };
     if (f.stopsDuringMove > 0)
         out.push_back(what + "stick-slip during the move: the table stopped " +
-                      std::to_string(f.stopsDuringMove) +
-                      " times while the reference kept moving (first at t = " +
+                      times(f.stopsDuringMove) + " while the reference kept moving (first at t = " +
                       formatNumber(f.firstStopSeconds, 4) + " s)");
     if (f.breakawaysAtRest >= 2)
         out.push_back(what + "hunting at rest: the integral action broke the table free " +
-                      std::to_string(f.breakawaysAtRest) + " times after the move (" +
+                      times(f.breakawaysAtRest) + " after the move (" +
                       formatNumber(1000.0 * f.restPeakToPeakMm, 3) +
                       " um peak to peak): integral action against stiction");
     return out;

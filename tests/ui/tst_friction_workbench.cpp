@@ -10,6 +10,7 @@
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/plots/contour_plot.h"
+#include "ui/plots/time_response_plot.h"
 #include "ui/session/tuning_session.h"
 
 #include <QComboBox>
@@ -18,6 +19,9 @@
 #include <QToolButton>
 #include <QUndoStack>
 #include <qcustomplot.h>
+
+#include <algorithm>
+#include <cstdint>
 
 using namespace xyt;
 using namespace xyt::ui;
@@ -48,8 +52,13 @@ private slots:
         QCOMPARE(session_->undoStack()->count(), steps + 1);
         QVERIFY(fold->text().contains(QStringLiteral("●")));
         QVERIFY(fold->toolTip().contains(QStringLiteral("Coulomb 0.02 V")));
-        // The run now sticks: the evaluation's run has the table's sliding flags.
-        QVERIFY(!session_->axisEvaluation(0).run.sliding.empty());
+        // The run now sticks: the evaluation's run has the table's sliding flags, and the time
+        // plot shades the stuck samples over the error (none drawn where the table slides).
+        const std::vector<std::int8_t>& sliding = session_->axisEvaluation(0).run.sliding;
+        QVERIFY(!sliding.empty());
+        QVERIFY(std::count(sliding.begin(), sliding.end(), std::int8_t{0}) > 0);
+        window_->lowerTabs()->setCurrentWidget(window_->timePlot());
+        QVERIFY(window_->timePlot()->stuckGraph()->dataCount() > 0);
         test::typeInto(editor->field("percent"), "100");
         QCOMPARE(session_->session().axes[0].frictionCompensation.percent, 100.0);
         session_->undoStack()->undo();
@@ -59,6 +68,7 @@ private slots:
         QCOMPARE(session_->session().axes[0].friction.coulombVolts, 0.0);
         QCOMPARE(editor->field("coulomb")->value(), 0.0);
         QVERIFY(session_->axisEvaluation(0).run.sliding.empty()); // the linear table again
+        QCOMPARE(window_->timePlot()->stuckGraph()->dataCount(), 0);
         // The other axis has its own table: y is untouched, and its fields show its values.
         session_->setCurrentAxis(1);
         QCOMPARE(editor->field("coulomb")->value(), 0.0);

@@ -72,6 +72,15 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
         g->setVisible(false);
     output_ = makeGraph(positionRect_, colors::output, tr("output y"));
     error_ = makeGraph(errorRect_, colors::error, tr("error e"));
+    // Where the table sticks (a table with dry friction): a band over the error plot.
+    stuckUpper_ = makeGraph(errorRect_, Qt::transparent, tr("table stuck"));
+    stuckLower_ = makeGraph(errorRect_, Qt::transparent, QString());
+    stuckUpper_->setBrush(QColor(0x7f, 0x7f, 0x7f, 45));
+    stuckUpper_->setChannelFillGraph(stuckLower_);
+    for (QCPGraph* g : {stuckUpper_, stuckLower_}) {
+        g->setAdaptiveSampling(false);
+        g->removeFromLegend();
+    }
     clipUpper_ = makeGraph(controlRect_, Qt::transparent, tr("clipped"));
     clipLower_ = makeGraph(controlRect_, Qt::transparent, QString());
     clipUpper_->setBrush(QColor(0xd6, 0x27, 0x28, 50));
@@ -206,6 +215,26 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
             g->data()->clear();
         if (legend_->hasItemWithPlottable(digitalOutput_))
             legend_->removeItem(legend_->itemWithPlottable(digitalOutput_));
+    }
+    // Shade the samples where the table sticks, over the error's range.
+    if (!run.sliding.empty()) {
+        double peak = 0.0;
+        for (double e : run.e)
+            if (std::isfinite(e))
+                peak = std::max(peak, std::abs(e));
+        std::vector<bool> stuck(run.sliding.size());
+        for (std::size_t k = 0; k < stuck.size(); ++k)
+            stuck[k] = run.sliding[k] == 0;
+        const double half = peak > 0.0 ? 1.05 * peak : 1.0;
+        stuckUpper_->data()->set(flagDecimated(run.t, stuck, half), true);
+        stuckLower_->data()->set(flagDecimated(run.t, stuck, -half), true);
+        if (!legend_->hasItemWithPlottable(stuckUpper_))
+            legend_->addItem(new QCPPlottableLegendItem(legend_, stuckUpper_));
+    } else {
+        stuckUpper_->data()->clear();
+        stuckLower_->data()->clear();
+        if (legend_->hasItemWithPlottable(stuckUpper_))
+            legend_->removeItem(legend_->itemWithPlottable(stuckUpper_));
     }
     // Shade the clipped samples: a band from -1.1 umax to 1.1 umax, NaN (a gap) elsewhere.
     const double band = std::isfinite(umaxVolts) ? 1.1 * umaxVolts : 0.0;

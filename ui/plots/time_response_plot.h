@@ -44,6 +44,8 @@ public:
     QCPGraph* snapshotOutputGraph() const { return snapshotOutput_; }
     QCPGraph* snapshotErrorGraph() const { return snapshotError_; }
     QCPGraph* snapshotControlGraph() const { return snapshotControl_; }
+    /// The band over the error plot where the table sticks (empty for a table without friction).
+    QCPGraph* stuckGraph() const { return stuckUpper_; }
     QCPLegend* positionLegend() const { return legend_; }
     /// A run with a command feedforward: u's feedforward part and the rest (u - u_ff), and the
     /// legend naming the three lines of the control panel (hidden without a feedforward).
@@ -77,6 +79,8 @@ private:
     std::unique_ptr<PlotNotice> controlNotice_;
     QCPGraph* clipUpper_;
     QCPGraph* clipLower_;
+    QCPGraph* stuckUpper_; ///< the error plot's band where the table sticks (friction)
+    QCPGraph* stuckLower_;
     QCPItemStraightLine* upperLimit_;
     QCPItemStraightLine* lowerLimit_;
     QCPTextElement* title_;

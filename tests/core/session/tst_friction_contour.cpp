@@ -14,6 +14,7 @@
 #include "core/contour/gcode_reader.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
+#include "core/session/session_evaluation.h"
 
 #include <QTest>
 
@@ -84,6 +85,38 @@ private slots:
         };
         QVERIFY(warned(high));
         QVERIFY(!warned(linear));
+    }
+
+    void theEvaluationWarnsOfHuntingAndStickSlip() {
+        // A stiff PID (crossover 20 rad/s, phase margin 60 deg: xytune-cli tune's gains for the
+        // lower base) on a 50 mm move in 10 s: with a static level four times the Coulomb level
+        // the integral action breaks the table free again and again at rest (the classic
+        // hunting limit cycle); with a static level just above Coulomb it settles.
+        const auto evaluate = [](double staticVolts) {
+            Session s = Session::paperDefault();
+            s.trajectory.xf = 50.0;
+            s.trajectory.tfSeconds = 10.0;
+            s.trajectory.durationSeconds = 30.0;
+            AxisSettings& a = s.axes[0];
+            a.method = DesignMethod::PidFeedforward;
+            a.parameters = {{"p", 1.049}, {"i", 9.198}, {"d", 0.0299}};
+            a.friction.coulombVolts = 0.05;
+            a.friction.staticVolts = staticVolts;
+            a.friction.stribeckVelocityMmPerS = 0.5;
+            return evaluateAxis(s, 0);
+        };
+        const auto warns = [](const AxisEvaluation& e, const char* start) {
+            return std::any_of(e.warnings.begin(), e.warnings.end(),
+                               [&](const std::string& w) { return w.rfind(start, 0) == 0; });
+        };
+        const AxisEvaluation hunting = evaluate(0.2);
+        QVERIFY2(hunting.ok, hunting.error.c_str());
+        QVERIFY(warns(hunting, "hunting at rest"));
+        QVERIFY(warns(hunting, "stick-slip during the move"));
+        QVERIFY(warns(hunting, "the digital implementation: hunting at rest"));
+        const AxisEvaluation settled = evaluate(0.06);
+        QVERIFY(!warns(settled, "hunting at rest"));
+        QVERIFY(!warns(settled, "stick-slip during the move"));
     }
 
     void aTableOfZerosIsTheLinearRunBitForBit() {
