@@ -78,11 +78,19 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     legend->setRowSpacing(0);
     legend->setMargins(QMargins(4, 0, 4, 0));
     plotLayout()->setRowStretchFactor(1, 0.001);
+    legendSpacer_ = new QCPLayoutElement(this);
+    legendSpacer_->setMargins(QMargins());
+    legendSpacer_->setMinimumMargins(QMargins());
+    legendSpacer_->setMaximumSize(QWIDGETSIZE_MAX, 0);
     notice_ = std::make_unique<PlotNotice>(this, axisRect(), Qt::AlignBottom | Qt::AlignLeft);
     setupInteractivePlot(this);
 }
 
-ContourPlot::~ContourPlot() = default;
+ContourPlot::~ContourPlot() {
+    // The layout deletes what it holds: the legend goes back in, the spacer is deleted here.
+    showLegendRow(true);
+    delete legendSpacer_;
+}
 
 void ContourPlot::reserveTitleRoom(int px) {
     // The right end of the title row holds the corner and ballbar buttons (ContourControls);
@@ -189,7 +197,21 @@ void ContourPlot::redraw() {
         if (!empty && !p->name().isEmpty())
             p->addToLegend();
     }
+    showLegendRow(legend->itemCount() > 0);
     replot(QCustomPlot::rpQueuedReplot);
+}
+
+void ContourPlot::showLegendRow(bool show) {
+    // An empty legend's largest size is its margins (8 px): in the layout it would cap the
+    // whole column, the plane and its title, at the title's least width. Without entries its
+    // row holds a spacer of no height and no width limit instead.
+    QCPLayoutElement* now = plotLayout()->element(1, 0);
+    QCPLayoutElement* wanted = show ? static_cast<QCPLayoutElement*>(legend) : legendSpacer_;
+    if (now == wanted)
+        return;
+    plotLayout()->take(now);
+    plotLayout()->addElement(1, 0, wanted);
+    legend->setVisible(show);
 }
 
 void ContourPlot::drawPresetRun() {

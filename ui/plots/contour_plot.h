@@ -93,6 +93,8 @@ private:
     void drawProgram();
     void drawCircularTest();
     void clearCurves();
+    /// Row 1 holds the legend when it has entries, else a spacer (see the definition).
+    void showLegendRow(bool show);
 
     QCPCurve* commanded_;
     QCPCurve* traced_;
@@ -102,6 +104,7 @@ private:
     QCPGraph* corners_;
     QCPCurve* reverse_;
     QCPCurve* uncompensated_;
+    QCPLayoutElement* legendSpacer_ = nullptr; ///< row 1 while the legend is empty
     QCPCurve* fMax_;
     QCPCurve* fMin_;
     QCPCurve* gInner_;
