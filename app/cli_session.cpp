@@ -139,6 +139,19 @@ int runSessionReport(const QString& path) {
         const DesignMethodModule& module = designMethodModule(s.method);
         for (const std::string& line : module.reportLines(s, a))
             out << "  " << QString::fromStdString(line) << "\n";
+        if (s.friction.active() || s.frictionCompensation.percent != 0.0) {
+            const TableFriction& f = s.friction;
+            const auto g = [](double v) { return QString::number(v, 'g', 6); };
+            out << "  table: Coulomb " << g(f.coulombVolts) << " V, static "
+                << g(f.breakawayVolts()) << " V"
+                << (f.staticVolts > f.coulombVolts
+                        ? " (Stribeck velocity " + g(f.stribeckVelocityMmPerS) + " mm/s)"
+                        : QString())
+                << ", viscous " << g(f.viscousVoltsPerMmPerS) << " V per mm/s, backlash "
+                << g(f.backlashMm) << " mm, amplifier deadband " << g(f.amplifierDeadbandVolts)
+                << " V; friction compensation " << g(s.frictionCompensation.percent) << " % (band "
+                << g(s.frictionCompensation.bandMmPerS) << " mm/s)\n";
+        }
         // The run that will really happen first (the digital implementation: sampled, delayed,
         // quantized, |u| limited), then the design's own run, each labelled: a design whose
         // implementation saturates must not be read from the design's figures.

@@ -11,6 +11,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <unordered_map>
 
 namespace xyt {
 
@@ -272,6 +274,128 @@ void TablePlant::hold(double volts, double seconds, int minSubsteps) {
     state_.motor = x[2];
 }
 
+namespace {
+
+/**
+ * The exact steps of the loop on a table whose friction is Coulomb and viscous only (no Stribeck
+ * dip) and whose amplifier has no deadband: in each mode (the mass stuck or sliding either way;
+ * the motor pushing the table forward, backward or crossing the backlash gap; u inside the limits
+ * or clipped at either one) the loop is affine, x' = A x + B w with w = [r, uff, 1, y_free], and
+ * its sample step is discretized exactly (first-order hold on r and uff, discretizeFoh), once per
+ * mode met. A sample whose mode holds from start to end (checked at its end: the mass did not
+ * reverse, stick or break away, the gap was not crossed, u did not cross a limit) takes that
+ * step; any other sample is integrated by the Runge-Kutta engine with its located events. So the
+ * run costs about one linear step per sample away from the events, and the events keep the
+ * engine's accuracy. (A switch and its undoing within one sample would go unseen; at the
+ * sample times of a loop this is a motion faster than the loop resolves.)
+ */
+class AffineModes {
+public:
+    AffineModes(const TableMechanics& m, int nc, const double* ac, const double* bc,
+                const double* cc, double dc, double umax, double dt)
+        : m_(m), nc_(nc), ac_(ac), bc_(bc), cc_(cc), dc_(dc), umax_(umax), dt_(dt),
+          half_(0.5 * m.backlash) {}
+
+    static bool applies(const TableMechanics& m) {
+        return m.deadband == 0.0 && !(m.breakaway > m.coulomb);
+    }
+
+    /// One sample from @p x in mode (sliding, contact, clip) with inputs w and slopes rho.
+    void step(int sliding, int contact, int clip, const double* x, const double* w,
+              const double* rho, double* out) {
+        const int key = (sliding + 1) * 9 + (contact + 1) * 3 + (clip + 1);
+        if (key != lastKey_) {
+            auto it = steps_.find(key);
+            if (it == steps_.end())
+                it = steps_.emplace(key, flat(build(sliding, contact, clip))).first;
+            last_ = &it->second;
+            lastKey_ = key;
+        }
+        const int n = 3 + nc_;
+        const double* phi = last_->phi.data();
+        const double* g0 = last_->g0.data();
+        const double* g1 = last_->g1.data();
+        for (int i = 0; i < n; ++i) {
+            double acc = 0.0;
+            for (int j = 0; j < n; ++j)
+                acc += phi[i * n + j] * x[j];
+            for (int j = 0; j < 4; ++j)
+                acc += g0[i * 4 + j] * w[j] + g1[i * 4 + j] * rho[j];
+            out[i] = acc;
+        }
+    }
+
+private:
+    /// A mode's step in row-major arrays (the hot loop reads them in order).
+    struct FlatMode {
+        std::vector<double> phi, g0, g1;
+    };
+    static FlatMode flat(const FohDiscretization& f) {
+        FlatMode out;
+        const auto rows = [](const Eigen::MatrixXd& m) {
+            std::vector<double> v(static_cast<std::size_t>(m.size()));
+            for (Eigen::Index i = 0; i < m.rows(); ++i)
+                for (Eigen::Index j = 0; j < m.cols(); ++j)
+                    v[static_cast<std::size_t>(i * m.cols() + j)] = m(i, j);
+            return v;
+        };
+        out.phi = rows(f.phi);
+        out.g0 = rows(f.gamma0);
+        out.g1 = rows(f.gamma1);
+        return out;
+    }
+
+    FohDiscretization build(int sliding, int contact, int clip) const {
+        const int n = 3 + nc_;
+        // e = r - y: engaged y = x_m - contact b/2; free y = y_free.
+        Eigen::RowVectorXd ex = Eigen::RowVectorXd::Zero(n), ew = Eigen::RowVectorXd::Zero(4);
+        ew(0) = 1.0;
+        if (contact != 0) {
+            ex(2) = -1.0;
+            ew(2) = static_cast<double>(contact) * half_;
+        } else {
+            ew(3) = -1.0;
+        }
+        Eigen::RowVectorXd ux = Eigen::RowVectorXd::Zero(n), uw = Eigen::RowVectorXd::Zero(4);
+        if (clip == 0) {
+            ux = dc_ * ex;
+            uw = dc_ * ew;
+            for (int j = 0; j < nc_; ++j)
+                ux(3 + j) += cc_[j];
+            uw(1) += 1.0;
+        } else {
+            uw(2) = static_cast<double>(clip) * umax_;
+        }
+        Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n), b = Eigen::MatrixXd::Zero(n, 4);
+        a.row(0) = m_.electricalPole * ux;
+        a(0, 0) -= m_.electricalPole;
+        b.row(0) = m_.electricalPole * uw;
+        if (sliding != 0) {
+            a(1, 0) = m_.forceGain;
+            a(1, 1) = -(m_.mechanicalPole + m_.forceGain * m_.viscous);
+            b(1, 2) = -m_.forceGain * static_cast<double>(sliding) * m_.coulomb;
+            a(2, 1) = 1.0;
+        }
+        for (int i = 0; i < nc_; ++i) {
+            a.row(3 + i) = bc_[i] * ex;
+            for (int j = 0; j < nc_; ++j)
+                a(3 + i, 3 + j) += ac_[i * nc_ + j];
+            b.row(3 + i) = bc_[i] * ew;
+        }
+        return discretizeFoh(a, b, dt_);
+    }
+
+    const TableMechanics& m_;
+    int nc_;
+    const double *ac_, *bc_, *cc_;
+    double dc_, umax_, dt_, half_;
+    std::unordered_map<int, FlatMode> steps_;
+    const FlatMode* last_ = nullptr;
+    int lastKey_ = -1;
+};
+
+} // namespace
+
 void simulateTableLoopInto(const TransferFunction& plant, const TransferFunction& controller,
                            const std::vector<double>& reference,
                            const LoopSimulationOptions& options, const double* ff,
@@ -317,6 +441,61 @@ void simulateTableLoopInto(const TransferFunction& plant, const TransferFunction
     double table = x[2];
     int sliding = engine.mechanics().dry() ? 0 : 1;
     std::uint64_t transitions = 0;
+    // The exact steps where they apply (AffineModes); the engine for the rest.
+    const TableMechanics& mech = engine.mechanics();
+    std::optional<AffineModes> affine;
+    if (AffineModes::applies(mech) && options.tableSubsteps == 0)
+        affine.emplace(mech, nc, ac.data(), bc.data(), cc.data(), c.d(0, 0), options.umaxVolts, dt);
+    const bool exact = affine.has_value();
+    const double half = 0.5 * mech.backlash;
+    /// The side the motor pushes the table from (+1: the table at x_m - b/2), or 0 inside the gap.
+    const auto contactOf = [&](const Vec& state, double y) {
+        if (half == 0.0)
+            return 1;
+        // At the gap's edge to round-off: x_m - (x_m - b/2) is b/2 to a few ulps of x_m.
+        const double gap = state[2] - y;
+        const double tolerance = 1e-9 * half + 1e-14 * std::abs(state[2]);
+        if (gap >= half - tolerance)
+            return 1;
+        if (gap <= -half + tolerance)
+            return -1;
+        return 0;
+    };
+    const auto exactStep = [&](const Drive& drive, double raw, Vec& state, double& y, int& s) {
+        const int contact = contactOf(state, y);
+        // Moving forward the motor can only push forward (or cross the gap), and so on. Without
+        // dry friction the mass never sticks (s stays +1): its velocity gives the direction.
+        const int direction = mech.dry() ? s : (state[1] > 0.0 ? 1 : (state[1] < 0.0 ? -1 : 0));
+        if (direction != 0 && contact != 0 && contact != direction && half > 0.0)
+            return false;
+        const int clip = std::abs(raw) > drive.umax ? (raw > 0.0 ? 1 : -1) : 0;
+        const double w[4] = {drive.r0, drive.ff0, 1.0, y};
+        const double rho[4] = {drive.rSlope, drive.ffSlope, 0.0, 0.0};
+        Vec next; // its first n entries are written
+        affine->step(s, contact, clip, state.data(), w, rho, next.data());
+        // The mode must hold to the sample's end.
+        if (mech.dry() && s != 0 && static_cast<double>(s) * next[1] < 0.0)
+            return false; // the mass reversed or stopped: the engine locates it
+        if (half > 0.0 && contact != 0 && static_cast<double>(contact) * next[1] < 0.0)
+            return false; // the motor turned back from the table: the gap opens
+        if (s == 0 && std::abs(next[0]) > mech.breakaway)
+            return false; // it broke away
+        const double yNext = contact != 0 ? next[2] - static_cast<double>(contact) * half : y;
+        if (contact == 0 && std::abs(next[2] - y) >= half)
+            return false; // the motor reached the other side of the gap
+        Drive end = drive;
+        end.r0 = drive.r0 + drive.rSlope * dt;
+        end.ff0 = drive.ff0 + drive.ffSlope * dt;
+        end.rSlope = end.ffSlope = 0.0;
+        double rawEnd = 0.0;
+        engine.command(end, 0.0, next, yNext, &rawEnd);
+        const int clipEnd = std::abs(rawEnd) > drive.umax ? (rawEnd > 0.0 ? 1 : -1) : 0;
+        if (clipEnd != clip)
+            return false; // u crossed a limit
+        std::copy_n(next.begin(), n, state.begin());
+        y = yNext;
+        return true;
+    };
     const std::size_t count = reference.size();
     const bool dry = engine.mechanics().dry();
     out.sliding.assign(dry ? count : 0, 0);
@@ -337,6 +516,8 @@ void simulateTableLoopInto(const TransferFunction& plant, const TransferFunction
             out.sliding[k] = static_cast<std::int8_t>(sliding);
         if (last)
             break;
+        if (exact && exactStep(d, raw, x, table, sliding))
+            continue;
         for (int i = 0; i < steps; ++i)
             engine.substep(d, static_cast<double>(i) * h, h, n, x, table, sliding, transitions);
     }

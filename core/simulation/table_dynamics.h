@@ -33,7 +33,10 @@ namespace xyt {
  * anything else in the loop; the located switch needs neither, and what LuGre would add (the
  * pre-sliding micro-displacement, micrometres) is below what the ballbar test resolves.
  *
- * Integration. Classical fourth-order Runge-Kutta on sub-steps of each sample (h lambda <= 1/4,
+ * Integration. Where every element is affine in its mode (Coulomb and viscous friction,
+ * backlash, no Stribeck dip, no deadband) the closed loop takes exact steps between events
+ * (simulateTableLoopInto). Otherwise, and at the samples holding an event, classical
+ * fourth-order Runge-Kutta on sub-steps of each sample (h lambda <= 1/4,
  * lambda the largest rate in the loop: pe, pm, the linear closed loop's fastest pole, the
  * Stribeck and viscous slopes g df/dv), with the stick and slip events located inside a sub-step
  * by the Illinois variant of regula falsi on the Runge-Kutta solution to 1e-13 s, so between

@@ -41,6 +41,9 @@ private slots:
     void roundTripModelOrigin();
     void badModelOriginFields_data();
     void badModelOriginFields();
+    void roundTripFriction();
+    void badFrictionFields_data();
+    void badFrictionFields();
     void newerVersionIsRefused();
     void fileErrors();
     void failedSaveKeepsOldFile();
@@ -263,6 +266,88 @@ void TstSessionFile::badModelOriginFields() {
     QFETCH(QString, expectedReason);
     const QJsonObject root =
         setPath(sessionToJson(identifiedSession()), splitPath(path), value).toObject();
+    const auto r = sessionFromJson(root);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, expectedPath);
+    QVERIFY2(r.error.startsWith(expectedReason), qPrintable(r.message()));
+}
+
+namespace {
+
+/// The default session with a table under x: every friction field set, compensation on.
+Session frictionSession() {
+    Session s = Session::paperDefault();
+    TableFriction& f = s.axes[0].friction;
+    f.coulombVolts = 0.02;
+    f.staticVolts = 0.03;
+    f.stribeckVelocityMmPerS = 0.4;
+    f.viscousVoltsPerMmPerS = 0.001;
+    f.backlashMm = 0.005;
+    f.amplifierDeadbandVolts = 0.01;
+    f.electricalPole = ElectricalPole::Slower;
+    s.axes[0].frictionCompensation = {80.0, 0.1};
+    return s;
+}
+
+} // namespace
+
+void TstSessionFile::roundTripFriction() {
+    // Invariant: load(save(s)) == s with every friction field; an axis without friction writes
+    // no "friction" object, and a version-4 file (none) loads as the linear table.
+    const Session s = frictionSession();
+    const QJsonObject json = sessionToJson(s);
+    QCOMPARE(json["version"].toInt(), 5);
+    const QJsonObject f = json["axes"].toArray()[0].toObject()["friction"].toObject();
+    QCOMPARE(f["electrical_pole"].toString(), QStringLiteral("slower"));
+    QCOMPARE(f["compensation"].toObject()["percent"].toDouble(), 80.0);
+    QVERIFY(!json["axes"].toArray()[1].toObject().contains("friction"));
+    const auto r = sessionFromBytes(QJsonDocument(json).toJson());
+    QVERIFY2(r.ok, qPrintable(r.message()));
+    QVERIFY(r.session == s);
+    QJsonObject v4 = sessionToJson(Session::paperDefault());
+    v4["version"] = 4;
+    const auto old = sessionFromJson(v4);
+    QVERIFY2(old.ok, qPrintable(old.message()));
+    QVERIFY(!old.session.axes[0].friction.active());
+    QCOMPARE(old.session.axes[0].frictionCompensation, FrictionCompensation{});
+}
+
+void TstSessionFile::badFrictionFields_data() {
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<QString>("expectedPath");
+    QTest::addColumn<QString>("expectedReason");
+    const QString f = "axes[0].friction.";
+    QTest::newRow("negative coulomb") << f + "coulomb" << QJsonValue(-0.1) << f + "coulomb"
+                                      << "must be a finite number >= 0";
+    QTest::newRow("static below coulomb") << f + "static" << QJsonValue(0.01) << f + "static"
+                                          << "must be at least the Coulomb level";
+    QTest::newRow("no stribeck velocity")
+        << f + "stribeck_velocity" << QJsonValue(0) << f + "stribeck_velocity"
+        << "must be > 0 when the static level";
+    QTest::newRow("backlash text") << f + "backlash" << QJsonValue("wide") << f + "backlash"
+                                   << "must be a finite number";
+    QTest::newRow("pole unknown") << f + "electrical_pole" << QJsonValue("middle")
+                                  << f + "electrical_pole"
+                                  << "must be \"faster\" or \"slower\"";
+    QTest::newRow("percent too high")
+        << f + "compensation.percent" << QJsonValue(300) << f + "compensation.percent"
+        << "must be between 0 and 200";
+    QTest::newRow("band zero") << f + "compensation.band" << QJsonValue(0)
+                               << f + "compensation.band"
+                               << "must be a finite number > 0";
+    QTest::newRow("deadband missing")
+        << f + "amplifier_deadband" << QJsonValue(QJsonValue::Undefined) << f + "amplifier_deadband"
+        << "is missing";
+}
+
+void TstSessionFile::badFrictionFields() {
+    QFETCH(QString, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(QString, expectedPath);
+    QFETCH(QString, expectedReason);
+    const QJsonObject root =
+        setPath(sessionToJson(frictionSession()), splitPath(path), value).toObject();
     const auto r = sessionFromJson(root);
     QVERIFY(!r.ok);
     QCOMPARE(r.errorPath, expectedPath);
