@@ -84,18 +84,38 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
 /// Says which criteria
 
 const TableFriction* axisTable(const AxisSettings& axis, int axisIndex) {
+    if (axis.method == DesignMethod::PolePlacementZpetc) {
+        // An ARX model has no mass to put friction on: its table is an input dead zone.
+        const TableFriction& f = axis.friction;
+        const auto refuse = [&](const char* field, const char* what) {
+            throw InvalidInput(axisFieldPath(axisIndex, std::string("friction.") + field),
+                               std::string(what) +
+                                   " needs the moving mass of a continuous plant; a "
+                                   "pole-placement axis' ARX model takes the Coulomb level and "
+                                   "the amplifier deadband only, as a dead zone of its input");
+        };
+        if (f.staticVolts > f.coulombVolts)
+            refuse("static", "a static level above the Coulomb level");
+        if (f.viscousVoltsPerMmPerS != 0.0)
+            refuse("viscous", "viscous friction");
+        if (f.backlashMm != 0.0)
+            refuse("backlash", "backlash");
+        if (axis.frictionCompensation.percent != 0.0)
+            refuse("compensation.percent", "friction compensation");
+    }
     if (!axis.friction.active())
         return nullptr;
-    if (axis.method == DesignMethod::PolePlacementZpetc)
-        throw InvalidInput(axisFieldPath(axisIndex, "friction"),
-                           "acts on the mass of a continuous plant k0 / (s (s^2 + a1 s + a2)); a "
-                           "pole-placement axis' ARX model holds the friction its data held");
     try {
         validateTableFriction(axis.friction);
     } catch (const InvalidInput& e) {
         throw InvalidInput(axisFieldPath(axisIndex, "friction." + e.field()), e.reason());
     }
     return &axis.friction;
+}
+
+double arxInputDeadzoneVolts(const AxisSettings& axis, int axisIndex) {
+    const TableFriction* table = axisTable(axis, axisIndex);
+    return table ? table->coulombVolts + table->amplifierDeadbandVolts : 0.0;
 }
 
 std::vector<double> frictionFeedforward(const AxisSettings& axis, int axisIndex,

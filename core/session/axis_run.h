@@ -49,10 +49,19 @@ SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
 /**
  * The table under @p axis for a loop's options (LoopSimulationOptions::table): null for the
  * linear table. @throws InvalidInput naming "axes[i].friction.<field>" for a value out of range
- * (validateTableFriction) and "axes[i].friction" on a pole-placement axis, whose ARX model has no
- * mass to put the friction on.
+ * (validateTableFriction), and on a pole-placement axis, whose ARX model has no mass to put
+ * friction on, for a static level above Coulomb, viscous friction, backlash or a compensation.
  */
 const TableFriction* axisTable(const AxisSettings& axis, int axisIndex);
+
+/**
+ * What a pole-placement axis offers of a table: its Coulomb level plus the amplifier deadband as
+ * a dead zone w of the ARX plant's input, u_plant = u - clamp(u, -w, w): the quasi-static form of
+ * Coulomb friction at the input, exact while the axis moves the way it is pushed and ignoring
+ * the flip of the friction at a reversal of the velocity against the command. 0 without one.
+ * @throws InvalidInput as axisTable.
+ */
+double arxInputDeadzoneVolts(const AxisSettings& axis, int axisIndex);
 
 /**
  * The friction compensation's feedforward (V) along @p reference (mm, step @p dtSeconds):

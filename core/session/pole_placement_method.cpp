@@ -55,7 +55,7 @@ std::optional<std::string> reachWarning(const PpAxisSettings& pp,
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
                 bool withDigital, AxisEvaluation& out) {
     const PpAxisSettings& pp = axis.pp;
-    axisTable(axis, axisIndex); // refuses a friction set on the ARX model, by name
+    const double deadzone = arxInputDeadzoneVolts(axis, axisIndex);
     requireFinite(pp.t1, "t1");
     if (std::abs(pp.t1) >= 1.0)
         throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
@@ -72,12 +72,15 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     for (std::size_t k = 0; k < r.size(); ++k)
         r[k] = reference(static_cast<double>(k) * pp.tsSeconds);
     const std::vector<double> rLoop(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n));
-    out.feedbackOnlyRun = discreteRun(times, r, simulateFeedbackLoop(*out.pp, rLoop),
-                                      session.umaxVolts, pp.tsSeconds);
+    out.feedbackOnlyRun = discreteRun(
+        times, r, simulateFeedbackLoop(*out.pp, rLoop, StartCondition::AtReference, deadzone),
+        session.umaxVolts, pp.tsSeconds);
     out.rmseWithoutFf = rootMeanSquare(out.feedbackOnlyRun.e);
     if (pp.zpetcEnabled) {
-        out.run = discreteRun(times, r, simulateZpetcLoop(*out.pp, *out.zpetc, r, n),
-                              session.umaxVolts, pp.tsSeconds);
+        out.run = discreteRun(
+            times, r,
+            simulateZpetcLoop(*out.pp, *out.zpetc, r, n, StartCondition::AtReference, deadzone),
+            session.umaxVolts, pp.tsSeconds);
         const double with = rootMeanSquare(out.run.e);
         out.improvementPct =
             out.rmseWithoutFf > 0.0 ? 100.0 * (1.0 - with / out.rmseWithoutFf) : 0.0;
@@ -103,7 +106,8 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     try {
         DigitalEvaluation d;
         d.tsSeconds = pp.tsSeconds;
-        const SampledDataOptions options = sessionSampledDataOptions(session);
+        SampledDataOptions options = sessionSampledDataOptions(session);
+        options.table = axisTable(axis, axisIndex);
         const ZpetcDesign* zpetc = pp.zpetcEnabled ? &*out.zpetc : nullptr;
         d.run = simulateSampledRst(*out.pp, zpetc, r, n, options);
         d.poles = sampledRstLoopPoles(*out.pp, options.delaySamples);
@@ -119,7 +123,7 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
 /// A discrete axis: the reference resampled at its Ts (held at the end for the ZPETC's
 /// preview), the table at rest at the first sample (StartCondition::AtReference).
 SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vector<double>& t,
-                         const std::vector<double>& reference, double umaxVolts) {
+                         const std::vector<double>& reference, double umaxVolts, double deadzone) {
     PolePlacementDesign loop;
     ZpetcDesign zpetc;
     try {
@@ -150,9 +154,10 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
     times.resize(n);
     const DiscreteRun run =
         pp.zpetcEnabled
-            ? simulateZpetcLoop(loop, zpetc, r, n)
+            ? simulateZpetcLoop(loop, zpetc, r, n, StartCondition::AtReference, deadzone)
             : simulateFeedbackLoop(
-                  loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)));
+                  loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)),
+                  StartCondition::AtReference, deadzone);
     return discreteRun(times, r, run, umaxVolts, pp.tsSeconds);
 }
 
@@ -335,8 +340,9 @@ public:
     AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
                         const std::vector<double>& reference, double /*dtSeconds*/) const override {
         AxisTrace out;
-        out.run = tracePp(session.axes.at(static_cast<std::size_t>(axisIndex)).pp, axisIndex, t,
-                          reference, session.umaxVolts);
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        out.run = tracePp(axis.pp, axisIndex, t, reference, session.umaxVolts,
+                          arxInputDeadzoneVolts(axis, axisIndex));
         out.outputOnPath = resampleLinear(out.run.t, out.run.y, t);
         return out;
     }

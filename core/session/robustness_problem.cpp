@@ -90,7 +90,10 @@ RobustnessProblem rstRobustnessProblem(const Session& session, int axis,
     const std::size_t preview = p.zpetc ? static_cast<std::size_t>(p.zpetc->previewSteps) : 0;
     for (std::size_t k = 0; k < p.samples + preview; ++k)
         p.reference.push_back(r(static_cast<double>(k) * p.loop->tsSeconds));
-    p.parameters = axisUncertainParameters(session.axes.at(static_cast<std::size_t>(axis)));
+    const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
+    p.parameters = axisUncertainParameters(settings);
+    if (settings.friction.active())
+        p.table = settings.friction; // the input dead zone of the ARX plant
     return p;
 }
 

@@ -107,8 +107,9 @@ struct AxisSettings {
     std::optional<ModelOrigin> origin; ///< set when the plant was identified from data
     /// The table's friction, backlash and amplifier deadband under this axis (all zero: the
     /// linear table). They act on the continuous plant k0 / (s (s^2 + a1 s + a2)) of gt: on
-    /// Guillemin-Truxal and PID + feedforward axes. A pole-placement axis' ARX model is
-    /// identified with whatever friction the data held; a friction set on it is refused by name.
+    /// Guillemin-Truxal and PID + feedforward axes. A pole-placement axis' ARX model has no
+    /// moving mass: it takes the Coulomb level and the deadband as an input dead zone
+    /// (arxInputDeadzoneVolts) and refuses the other elements by name.
     TableFriction friction;
     /// The firmware's friction feedforward from the reference velocity (FrictionCompensation).
     FrictionCompensation frictionCompensation;

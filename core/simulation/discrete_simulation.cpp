@@ -34,11 +34,17 @@ std::size_t maxDegree(std::initializer_list<const Polynomial*> ps) {
 
 /// The RST loop on the loop input v(0 .. n-1), histories at the steady state of v = rest (the
 /// closed loop has unity DC gain, so y = rest and u = A(1)/B(1) rest) or zero.
-DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& v, double rest) {
+DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& v, double rest,
+                       double deadzone) {
     const std::size_t n = v.size();
     const std::size_t h = maxDegree({&d.a, &d.b, &d.f, &d.g});
     const double uRest = d.a(1.0) / d.b(1.0) * rest;
     History y(h, n, rest), u(h, n, uRest);
+    // The plant's input: the controller's u less the dead zone (what the table receives).
+    const auto dead = [deadzone](double x) {
+        return deadzone == 0.0 ? x : x - std::clamp(x, -deadzone, deadzone);
+    };
+    History ua(h, n, dead(uRest));
     const auto& a = d.a.ascending();
     const auto& b = d.b.ascending();
     const auto& f = d.f.ascending();
@@ -47,7 +53,7 @@ DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& 
         // Plant A y = B u with A(0) = 1 and B(0) = 0: y(k) from the past only.
         double yk = 0.0;
         for (std::size_t i = 1; i < b.size(); ++i)
-            yk += b[i] * u[k - static_cast<std::ptrdiff_t>(i)];
+            yk += b[i] * ua[k - static_cast<std::ptrdiff_t>(i)];
         for (std::size_t i = 1; i < a.size(); ++i)
             yk -= a[i] * y[k - static_cast<std::ptrdiff_t>(i)];
         y[k] = yk;
@@ -58,6 +64,7 @@ DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& 
         for (std::size_t i = 1; i < f.size(); ++i)
             uk -= f[i] * u[k - static_cast<std::ptrdiff_t>(i)];
         u[k] = uk / f[0];
+        ua[k] = dead(u[k]);
     }
     return {y.present(), u.present()};
 }
@@ -96,14 +103,15 @@ std::vector<double> filterZInverse(const Polynomial& num, const Polynomial& den,
 }
 
 DiscreteRun simulateFeedbackLoop(const PolePlacementDesign& loop, const std::vector<double>& r,
-                                 StartCondition start) {
+                                 StartCondition start, double inputDeadzoneVolts) {
     requireReference(r, r.size(), 1);
-    return runRstLoop(loop, r, start == StartCondition::AtReference ? r.front() : 0.0);
+    return runRstLoop(loop, r, start == StartCondition::AtReference ? r.front() : 0.0,
+                      inputDeadzoneVolts);
 }
 
 DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
                               const std::vector<double>& r, std::size_t samples,
-                              StartCondition start) {
+                              StartCondition start, double inputDeadzoneVolts) {
     const auto p = static_cast<std::size_t>(zpetc.previewSteps);
     requireReference(r, samples, samples + p);
     // Run on k = -p .. samples-1: the feedforward input at k is r(k + p) = r[k + p].
@@ -113,7 +121,7 @@ DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign
     const double rest = start == StartCondition::AtReference ? r.front() : 0.0;
     const std::vector<double> uff =
         filterZInverse(zpetc.feedforwardNum, zpetc.feedforwardDen, w, rest, rest);
-    DiscreteRun run = runRstLoop(loop, uff, rest);
+    DiscreteRun run = runRstLoop(loop, uff, rest, inputDeadzoneVolts);
     run.y.erase(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(p));
     run.u.erase(run.u.begin(), run.u.begin() + static_cast<std::ptrdiff_t>(p));
     return run;

@@ -40,11 +40,14 @@ std::vector<double> filterZInverse(const Polynomial& num, const Polynomial& den,
 
 /**
  * Structure (1): the pole-placement loop alone (paper Fig. 9), F u = Kf r - G y, A y = B u,
- * driven by r(0 .. n-1). Returns y and u for k = 0 .. n-1.
+ * driven by r(0 .. n-1). Returns y and u for k = 0 .. n-1. With @p inputDeadzoneVolts > 0 the
+ * plant receives u - clamp(u, -w, w) (an ARX axis' Coulomb friction and amplifier deadband as a
+ * dead zone of its input, AxisSettings::friction); 0 is the linear loop bit for bit.
  * @throws InvalidInput "reference" when empty.
  */
 DiscreteRun simulateFeedbackLoop(const PolePlacementDesign& loop, const std::vector<double>& r,
-                                 StartCondition start = StartCondition::AtReference);
+                                 StartCondition start = StartCondition::AtReference,
+                                 double inputDeadzoneVolts = 0.0);
 
 /**
  * Structure (2): the ZPETC (paper Fig. 6) ahead of the pole-placement loop (Fig. 9): the loop's
@@ -54,7 +57,8 @@ DiscreteRun simulateFeedbackLoop(const PolePlacementDesign& loop, const std::vec
  */
 DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
                               const std::vector<double>& r, std::size_t samples,
-                              StartCondition start = StartCondition::AtReference);
+                              StartCondition start = StartCondition::AtReference,
+                              double inputDeadzoneVolts = 0.0);
 
 /**
  * Structure (3), the trajectory ZPETC of paper Fig. 8: y = B-(z^-1) B-(z) / [B-(1)]^2 r, i.e.

@@ -354,6 +354,8 @@ SampledDataRun simulateSampledRst(const PolePlacementDesign& loop, const ZpetcDe
     // exported C code keeps them).
     const std::size_t h = static_cast<std::size_t>(
         std::max({loop.a.degree(), loop.b.degree(), loop.f.degree(), loop.g.degree()}) + 1);
+    const double deadzone =
+        options.table ? options.table->coulombVolts + options.table->amplifierDeadbandVolts : 0.0;
     std::vector<double> yTrue(h, rest), uApplied(h, uRest), yMeasured(g.size(), rest),
         uController(f.size(), uRest), ffIn(ffNum.size(), rest), ffOut(ffDen.size(), rest);
     const auto shift = [](std::vector<double>& v) {
@@ -400,7 +402,10 @@ SampledDataRun simulateSampledRst(const PolePlacementDesign& loop, const ZpetcDe
         const double u = v > umax ? umax : (v < -umax ? -umax : v);
         uController[0] = options.antiWindup == AntiWindup::None ? v : u;
         const double applied = delay.push(dacOutput(u, options.dacBits, umax));
-        uApplied[0] = applied;
+        // An ARX axis' table (AxisSettings::friction): its Coulomb level and the amplifier's
+        // deadband as a dead zone of the plant's input.
+        uApplied[0] =
+            deadzone == 0.0 ? applied : applied - std::clamp(applied, -deadzone, deadzone);
         if (j < preview)
             continue;
         const std::size_t k = j - preview;

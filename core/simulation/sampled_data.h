@@ -41,7 +41,9 @@ struct SampledDataOptions {
     AntiWindup antiWindup = AntiWindup::Clamp;
     /// The table's friction, backlash and amplifier deadband (core/simulation/table_dynamics.h)
     /// for the continuous-plant loops (simulateSampledPi, simulateSampledServoPid): between
-    /// samples the held command drives TablePlant. Null or inactive: the exact linear step.
+    /// samples the held command drives TablePlant. simulateSampledRst (an ARX plant) takes its
+    /// Coulomb level plus the amplifier deadband as a dead zone of the plant's input. Null or
+    /// inactive: the exact linear step.
     const TableFriction* table = nullptr;
     /// A feedforward (V) per controller sample added to the controller's output before the
     /// limit, as firmware adds its friction compensation after the PI or PID: u = sat(v + uff)

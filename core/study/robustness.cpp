@@ -114,19 +114,26 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
         loop.closedLoopDen = loop.a * loop.f + loop.b * loop.g;
         out.stable = loop.closedLoop().isStable();
         const std::size_t n = problem.samples;
+        // An ARX axis' table: its Coulomb level and amplifier deadband as an input dead zone.
+        const double deadzone =
+            problem.table ? problem.table->coulombVolts + problem.table->amplifierDeadbandVolts
+                          : 0.0;
         const std::vector<double> rLoop(problem.reference.begin(),
                                         problem.reference.begin() + static_cast<std::ptrdiff_t>(n));
         const double umax = problem.spec.umaxVolts;
         if (problem.zpetcEnabled) {
-            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax,
-                         n, run);
+            fillDiscrete(problem.reference,
+                         simulateFeedbackLoop(loop, rLoop, StartCondition::AtReference, deadzone),
+                         loop.tsSeconds, umax, n, run);
             out.rmseWithoutFf = rootMeanSquare(run.e);
             fillDiscrete(problem.reference,
-                         simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n),
+                         simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n,
+                                           StartCondition::AtReference, deadzone),
                          loop.tsSeconds, umax, n, run);
         } else {
-            fillDiscrete(problem.reference, simulateFeedbackLoop(loop, rLoop), loop.tsSeconds, umax,
-                         n, run);
+            fillDiscrete(problem.reference,
+                         simulateFeedbackLoop(loop, rLoop, StartCondition::AtReference, deadzone),
+                         loop.tsSeconds, umax, n, run);
         }
         if (out.stable)
             out.step = problem.zpetcEnabled ? zpetcStepCharacteristics(loop, *problem.zpetc)

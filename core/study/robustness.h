@@ -46,10 +46,11 @@ struct RobustnessProblem {
     std::vector<double> feedforwardVolts;
     /**
      * Continuous axes: the table's friction, backlash and deadband (nominal), run as the
-     * nonlinear plant of core/simulation/table_dynamics.h. The parameters "coulomb", "static",
-     * "viscous" and "backlash", when listed, vary its levels; the plant's poles must stay real
-     * over the box (validateRobustnessProblem). Costs the Runge-Kutta integration per plant:
-     * a few times the linear run (xytune-bench robustness_friction).
+     * nonlinear plant of core/simulation/table_dynamics.h (discrete axes: its Coulomb level and
+     * deadband as a dead zone of the ARX plant's input, simulateFeedbackLoop). The parameters
+     * "coulomb", "static", "viscous" and "backlash", when listed, vary its levels; the plant's
+     * poles must stay real over the box (validateRobustnessProblem). Costs the Runge-Kutta
+     * integration per plant: a few times the linear run (xytune-bench robustness_friction).
      */
     std::optional<TableFriction> table;
     /// The table's position at rest at t = 0 (trajectory units; a G-code program starts there).

@@ -97,13 +97,25 @@ private slots:
         QCOMPARE(session_->session().axes[0].friction.stribeckVelocityMmPerS, 0.5);
     }
 
-    void aPolePlacementAxisHasNoTable() {
+    void aPolePlacementAxisTakesAnInputDeadZone() {
+        // An ARX model has no moving mass: the fold offers the Coulomb level and the amplifier
+        // deadband only (its input dead zone), the other fields disabled saying why.
         session_->setMethod(0, DesignMethod::PolePlacementZpetc);
-        QToolButton* fold = window_->frictionEditor()->foldButton();
-        QVERIFY(!fold->isEnabled());
-        QVERIFY(fold->toolTip().contains(QStringLiteral("ARX")));
+        FrictionEditor* editor = window_->frictionEditor();
+        QVERIFY(editor->foldButton()->isEnabled());
+        QVERIFY(editor->field("coulomb")->isEnabled());
+        QVERIFY(editor->field("amplifier_deadband")->isEnabled());
+        for (const char* name : {"static", "stribeck_velocity", "viscous", "backlash", "percent"}) {
+            QVERIFY(!editor->field(name)->isEnabled());
+            QVERIFY(editor->field(name)->toolTip().contains(QStringLiteral("ARX")));
+        }
+        QTest::mouseClick(editor->foldButton(), Qt::LeftButton);
+        test::typeInto(editor->field("coulomb"), "0.5");
+        QCOMPARE(session_->session().axes[0].friction.coulombVolts, 0.5);
+        const AxisEvaluation& a = session_->axisEvaluation(0);
+        QVERIFY2(a.ok, a.error.c_str());
         session_->setMethod(0, DesignMethod::GuilleminTruxal);
-        QVERIFY(fold->isEnabled());
+        QVERIFY(editor->field("backlash")->isEnabled());
     }
 
     void theBallbarComparesTheCompensation() {

@@ -87,7 +87,7 @@ bool FrictionEditor::isOpen() const {
 }
 
 void FrictionEditor::setSettings(const TableFriction& friction,
-                                 const FrictionCompensation& compensation, bool applicable) {
+                                 const FrictionCompensation& compensation, bool massModel) {
     friction_ = friction;
     compensation_ = compensation;
     fields_["coulomb"]->setValue(friction.coulombVolts);
@@ -99,15 +99,16 @@ void FrictionEditor::setSettings(const TableFriction& friction,
     fields_["percent"]->setValue(compensation.percent);
     fields_["band"]->setValue(compensation.bandMmPerS);
     pole_->setCurrentIndex(friction.electricalPole == ElectricalPole::Faster ? 0 : 1);
-    fold_->setEnabled(applicable);
-    body_->setEnabled(applicable);
+    // An ARX model has no moving mass: only the input dead zone's two levels apply.
+    const QString arx = tr("A pole-placement axis' ARX model has no moving mass: it takes the "
+                           "Coulomb level and the amplifier deadband, as a dead zone of its input");
+    for (auto it = fields_.begin(); it != fields_.end(); ++it) {
+        const bool used = massModel || it.key() == "coulomb" || it.key() == "amplifier_deadband";
+        it.value()->setEnabled(used);
+        it.value()->setToolTip(used ? tips_.value(it.key()) : arx);
+    }
+    pole_->setEnabled(massModel);
     note_->setVisible(false);
-    fold_->setToolTip(applicable ? QString()
-                                 : tr("A pole-placement axis' ARX model holds the friction its "
-                                      "data held: the table's friction acts on Guillemin-Truxal "
-                                      "and PID axes"));
-    if (!applicable && fold_->isChecked())
-        fold_->setChecked(false);
     updateHeader();
 }
 
@@ -158,9 +159,8 @@ void FrictionEditor::updateHeader() {
     if (compensation_.percent > 0.0)
         set << tr("compensated %1 %").arg(formatNumber(compensation_.percent));
     fold_->setText(set.isEmpty() ? tr("Friction") : tr("Friction ●"));
-    if (fold_->isEnabled())
-        fold_->setToolTip(set.isEmpty() ? tr("Friction and backlash: none (the linear table)")
-                                        : tr("Friction and backlash: %1").arg(set.join(", ")));
+    fold_->setToolTip(set.isEmpty() ? tr("Friction and backlash: none (the linear table)")
+                                    : tr("Friction and backlash: %1").arg(set.join(", ")));
 }
 
 } // namespace xyt::ui

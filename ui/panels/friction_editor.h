@@ -26,10 +26,11 @@ class FrictionEditor : public QWidget {
 
 public:
     explicit FrictionEditor(QWidget* parent = nullptr);
-    /// Shows the axis' settings; @p applicable false (a pole-placement axis) disables the fold
-    /// with the reason.
+    /// Shows the axis' settings; @p massModel false (a pole-placement axis, whose ARX model takes
+    /// the Coulomb level and the amplifier deadband only, as an input dead zone) disables the
+    /// other fields with the reason.
     void setSettings(const TableFriction& friction, const FrictionCompensation& compensation,
-                     bool applicable);
+                     bool massModel);
     /// The field of a TableFriction / FrictionCompensation field name ("coulomb", "static",
     /// "stribeck_velocity", "viscous", "backlash", "amplifier_deadband", "percent", "band").
     NumberField* field(const QString& name) const { return fields_.value(name); }

@@ -119,6 +119,37 @@ private slots:
         QVERIFY(!warns(settled, "stick-slip during the move"));
     }
 
+    void aPolePlacementAxisTakesAnInputDeadZone() {
+        // Patrick, Ishak and Adnan's x axis on the default cubic: a dead zone wider than any
+        // command the loop can give (1e6 V: the error is at most the 600 mm travel) keeps the
+        // table exactly at rest (the plant's input is 0 at every sample), in the design's run
+        // and in the digital one; an ARX axis refuses what needs a moving mass, by name; and
+        // without a table the run is the linear one.
+        Session s = Session::paperDefault();
+        s.axes[0].method = DesignMethod::PolePlacementZpetc;
+        const AxisEvaluation linear = evaluateAxis(s, 0);
+        QVERIFY2(linear.ok, linear.error.c_str());
+        s.axes[0].friction.coulombVolts = 1e6;
+        const AxisEvaluation stuck = evaluateAxis(s, 0);
+        QVERIFY2(stuck.ok, stuck.error.c_str());
+        for (double y : stuck.run.y)
+            QCOMPARE(y, 0.0);
+        QVERIFY(stuck.digital);
+        for (double y : stuck.digital->run.result.y)
+            QCOMPARE(y, 0.0);
+        // A small dead zone changes the run but not its end: the RST integrator winds through it.
+        s.axes[0].friction.coulombVolts = 0.05;
+        s.axes[0].friction.amplifierDeadbandVolts = 0.0;
+        const AxisEvaluation some = evaluateAxis(s, 0);
+        QVERIFY(some.ok);
+        QVERIFY(some.run.y != linear.run.y);
+        s.axes[0].friction.backlashMm = 0.01;
+        const AxisEvaluation refused = evaluateAxis(s, 0);
+        QVERIFY(!refused.ok);
+        QCOMPARE(QString::fromStdString(refused.errorField),
+                 QStringLiteral("axes[0].friction.backlash"));
+    }
+
     void aTableOfZerosIsTheLinearRunBitForBit() {
         Session s = Session::paperDefault();
         for (AxisSettings& a : s.axes)
