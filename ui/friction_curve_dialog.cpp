@@ -4,6 +4,7 @@
 #include "core/identification/experiment_file.h"
 #include "core/io/file_io.h"
 #include "core/model/errors.h"
+#include "core/model/table_friction.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/session/tuning_session.h"
 
@@ -26,15 +27,11 @@ namespace {
 
 const char* const kRoles[4] = {"t", "r", "y", "u"};
 
-/// The Stribeck curve of @p e at velocity @p v (mm/s).
+/// The fitted curve of @p e at velocity @p v (mm/s).
 double curve(const FrictionEstimate& e, double v) {
-    const double s = v > 0.0 ? 1.0 : -1.0;
-    double level = e.coulombVolts;
-    if (e.hasStribeck) {
-        const double q = v / e.stribeckVelocityMmPerS;
-        level += (e.staticVolts - e.coulombVolts) * std::exp(-q * q);
-    }
-    return s * level + e.viscousVoltsPerMmPerS * v;
+    return stribeckFriction(e.coulombVolts, e.hasStribeck ? e.staticVolts : e.coulombVolts,
+                            e.stribeckVelocityMmPerS, e.viscousVoltsPerMmPerS, v,
+                            v > 0.0 ? 1.0 : -1.0);
 }
 
 QString withStd(double v, double sd, const QString& unit) {

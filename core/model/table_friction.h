@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cmath>
 #include <string>
 
 namespace xyt {
@@ -42,6 +43,24 @@ struct TableFriction {
     bool active() const;
     friend bool operator==(const TableFriction&, const TableFriction&) = default;
 };
+
+/**
+ * The friction of TableFriction's header while sliding at velocity @p v in @p direction (+1 or
+ * -1; the sign of v except at the instant of a breakaway, v = 0), for levels in any one set of
+ * units (volts and mm/s, or the simulation's model units):
+ *   direction (coulomb + (breakaway - coulomb) exp(-(v / stribeckVelocity)^2)) + viscous v,
+ * the dip left out when breakaway <= coulomb. The simulation, the jog estimate's curve and the
+ * workbench's drawing of it all read it here.
+ */
+inline double stribeckFriction(double coulomb, double breakaway, double stribeckVelocity,
+                               double viscous, double v, double direction) {
+    double level = coulomb;
+    if (breakaway > coulomb) {
+        const double q = v / stribeckVelocity;
+        level += (breakaway - coulomb) * std::exp(-q * q);
+    }
+    return direction * level + viscous * v;
+}
 
 /**
  * Friction compensation as drive firmware does it: a feedforward from the reference velocity v

@@ -127,12 +127,8 @@ public:
     double friction(double v, int sliding) const {
         if (!m_.dry())
             return m_.viscous * v;
-        double level = m_.coulomb;
-        if (m_.breakaway > m_.coulomb) {
-            const double q = v / m_.stribeckVelocity;
-            level += (m_.breakaway - m_.coulomb) * std::exp(-q * q);
-        }
-        return static_cast<double>(sliding) * level + m_.viscous * v;
+        return stribeckFriction(m_.coulomb, m_.breakaway, m_.stribeckVelocity, m_.viscous, v,
+                                static_cast<double>(sliding));
     }
 
     void rk4(const Drive& d, int sliding, double tau, const Vec& x, double table, double h, int n,

@@ -75,7 +75,7 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     // Where the table sticks (a table with dry friction): a band over the error plot.
     stuckUpper_ = makeGraph(errorRect_, Qt::transparent, tr("table stuck"));
     stuckLower_ = makeGraph(errorRect_, Qt::transparent, QString());
-    stuckUpper_->setBrush(QColor(0x7f, 0x7f, 0x7f, 45));
+    stuckUpper_->setBrush(QColor(0x7f, 0x7f, 0x7f, 70)); // visible as a legend swatch too
     stuckUpper_->setChannelFillGraph(stuckLower_);
     for (QCPGraph* g : {stuckUpper_, stuckLower_}) {
         g->setAdaptiveSampling(false);

@@ -16,13 +16,11 @@
 #include "core/session/session_evaluation.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/sampled_data.h"
-#include "tests/support/built_programs.h"
+#include "tests/support/c_harness.h"
 #include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
 #include <QDir>
-#include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -234,33 +232,15 @@ std::string writeInput(const Session& session, const SessionEvaluation& evaluati
 /// Compiles the harness for axis @p i against @p header and runs it on @p input.
 LoopRun runHarness(const QString& dir, const std::string& header, const std::string& id, bool pi,
                    const std::string& input) {
-    QFile h(dir + "/xyt.h"), c(dir + "/harness.c");
-    if (!h.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        !c.open(QIODevice::WriteOnly | QIODevice::Truncate))
-        qFatal("cannot write the harness");
-    h.write(QByteArray::fromStdString(header));
-    c.write(kHarness);
-    h.close();
-    c.close();
     const QString name = QString::fromStdString(id);
-    QProcess compile;
-    compile.setWorkingDirectory(dir);
-    compile.start(QStringLiteral(XYT_C_COMPILER),
-                  {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-ffp-contract=off",
-                   "-DKIND=" + QString(pi ? "0" : "1"), "-DSTATE=xyt_" + name + "_state",
-                   "-DINIT=xyt_" + name + "_init", "-DSTEP=xyt_" + name + "_step", "harness.c",
-                   "-o", "harness", "-lm"});
-    if (!compile.waitForFinished(120000) || compile.exitCode() != 0)
-        qFatal("the harness did not compile: %s", compile.readAllStandardError().constData());
-    QProcess run;
-    run.setWorkingDirectory(dir);
-    run.start(dir + "/harness", {});
-    run.write(QByteArray::fromStdString(input));
-    run.closeWriteChannel();
-    if (!run.waitForFinished(120000) || run.exitCode() != 0)
-        qFatal("the harness failed: %s", run.readAllStandardError().constData());
+    const test::CHarnessRun run =
+        test::runCHarness(dir, header, kHarness, QByteArray::fromStdString(input),
+                          {"-DKIND=" + QString(pi ? "0" : "1"), "-DSTATE=xyt_" + name + "_state",
+                           "-DINIT=xyt_" + name + "_init", "-DSTEP=xyt_" + name + "_step"});
+    if (!run.ok)
+        qFatal("%s", qPrintable(run.error));
     LoopRun out;
-    for (const QByteArray& line : run.readAllStandardOutput().split('\n')) {
+    for (const QByteArray& line : run.output.split('\n')) {
         const QList<QByteArray> parts = line.split(' ');
         if (parts.size() != 2)
             continue;

@@ -8,10 +8,8 @@
 #include "core/session/linuxcnc_export.h"
 #include "core/session/session.h"
 #include "core/session/session_evaluation.h"
-#include "tests/support/built_programs.h"
+#include "tests/support/c_harness.h"
 
-#include <QFile>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -61,31 +59,15 @@ private slots:
         QVERIFY(header.find("xyt_x_friction_ff") != std::string::npos);
         QVERIFY(header.find("xyt_y_friction_ff") == std::string::npos); // y has none
         QTemporaryDir dir;
-        QFile h(dir.filePath("xyt.h")), c(dir.filePath("harness.c"));
-        QVERIFY(h.open(QIODevice::WriteOnly) && c.open(QIODevice::WriteOnly));
-        h.write(QByteArray::fromStdString(header));
-        c.write(kHarness);
-        h.close();
-        c.close();
-        QProcess compile;
-        compile.setWorkingDirectory(dir.path());
-        compile.start(QStringLiteral(XYT_C_COMPILER),
-                      {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-ffp-contract=off",
-                       "harness.c", "-o", "harness", "-lm"});
-        QVERIFY(compile.waitForFinished(120000));
-        QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
-        QProcess run;
-        run.start(dir.filePath("harness"), {});
         QByteArray input;
         char buf[40];
         for (double v : kVelocities) {
             std::snprintf(buf, sizeof buf, "%.17g\n", v);
             input += buf;
         }
-        run.write(input);
-        run.closeWriteChannel();
-        QVERIFY(run.waitForFinished(60000) && run.exitCode() == 0);
-        const QList<QByteArray> lines = run.readAllStandardOutput().trimmed().split('\n');
+        const test::CHarnessRun run = test::runCHarness(dir.path(), header, kHarness, input);
+        QVERIFY2(run.ok, qPrintable(run.error));
+        const QList<QByteArray> lines = run.output.trimmed().split('\n');
         QCOMPARE(lines.size(), static_cast<qsizetype>(kVelocities.size()));
         for (std::size_t i = 0; i < kVelocities.size(); ++i) {
             const double expected = frictionCompensationVolts(

@@ -16,12 +16,10 @@
 #include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
 #include "core/study/robustness.h"
-#include "tests/support/built_programs.h"
+#include "tests/support/c_harness.h"
 #include "tests/support/core_checks.h"
 #include "tests/support/tolerance.h"
 
-#include <QFile>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -390,19 +388,6 @@ int main(void) {
     return 0;
 }
 )";
-    QFile h(dir.path() + "/xyt.h"), c(dir.path() + "/harness.c");
-    QVERIFY(h.open(QIODevice::WriteOnly) && c.open(QIODevice::WriteOnly));
-    h.write(QByteArray::fromStdString(header));
-    c.write(harness);
-    h.close();
-    c.close();
-    QProcess compile;
-    compile.setWorkingDirectory(dir.path());
-    compile.start(QStringLiteral(XYT_C_COMPILER),
-                  {"-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-ffp-contract=off",
-                   "harness.c", "-o", "harness", "-lm"});
-    QVERIFY(compile.waitForFinished(120000));
-    QVERIFY2(compile.exitCode() == 0, compile.readAllStandardError().constData());
     const DigitalEvaluation& d = *e.axes[0].digital;
     const PidFeedforwardDesign& design = pidFeedforwardDesign(e.axes[0]);
     const SampledPlant p = sampledPlant(design.plant, d.tsSeconds);
@@ -417,14 +402,11 @@ int main(void) {
         in << v << " ";
     for (double v : d.run.result.r)
         in << v << " ";
-    QProcess run;
-    run.start(dir.path() + "/harness", {});
-    run.write(QByteArray::fromStdString(in.str()));
-    run.closeWriteChannel();
-    QVERIFY(run.waitForFinished(120000));
-    QCOMPARE(run.exitCode(), 0);
+    const test::CHarnessRun run =
+        test::runCHarness(dir.path(), header, harness, QByteArray::fromStdString(in.str()));
+    QVERIFY2(run.ok, qPrintable(run.error));
     std::vector<double> u, y;
-    for (const QByteArray& line : run.readAllStandardOutput().split('\n')) {
+    for (const QByteArray& line : run.output.split('\n')) {
         const QList<QByteArray> parts = line.split(' ');
         if (parts.size() == 2) {
             u.push_back(parts[0].toDouble());

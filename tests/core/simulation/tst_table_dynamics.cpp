@@ -79,6 +79,14 @@ SimulationResult sineRun(const TableFriction& table, int substeps = 0) {
     return simulateLoop(p->plant.transferFunction(), d.controller, r, o);
 }
 
+/// v' = g (z - bv v) - pm v is the mass with pole pm + g bv: the linear plant k0 / (s (s + pe)
+/// (s + pm + g bv)) that a table with viscous friction alone (@p f) is exactly.
+ThirdOrderPlant slowerMass(const ThirdOrderPlant& p, const TableFriction& f) {
+    const TableMechanics m = tableMechanics(p.transferFunction(), f, 0.001);
+    const double slower = m.mechanicalPole + m.forceGain * m.viscous;
+    return {p.k0, m.electricalPole + slower, m.electricalPole * slower};
+}
+
 double maxDiff(const std::vector<double>& a, const std::vector<double>& b) {
     double m = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -255,10 +263,7 @@ private slots:
         TableFriction f;
         f.viscousVoltsPerMmPerS = 0.02;
         const ThirdOrderPlant p = lowerBase();
-        const TableMechanics m = tableMechanics(p.transferFunction(), f, 0.001);
-        const double slower = m.mechanicalPole + m.forceGain * m.viscous;
-        const ThirdOrderPlant equivalent{p.k0, m.electricalPole + slower,
-                                         m.electricalPole * slower};
+        const ThirdOrderPlant equivalent = slowerMass(p, f);
         const GtDesign d = paperDesign();
         const std::vector<double> r = cubic(0.0, 600.0, 130.0, 150.0, 0.01);
         LoopSimulationOptions o;
@@ -374,10 +379,7 @@ private slots:
         TableFriction f;
         f.viscousVoltsPerMmPerS = 0.02;
         const ThirdOrderPlant p = lowerBase();
-        const TableMechanics m = tableMechanics(p.transferFunction(), f, 0.001);
-        const double slower = m.mechanicalPole + m.forceGain * m.viscous;
-        const ThirdOrderPlant equivalent{p.k0, m.electricalPole + slower,
-                                         m.electricalPole * slower};
+        const ThirdOrderPlant equivalent = slowerMass(p, f);
         const GtDesign d = paperDesign();
         const DigitalPi pi =
             digitalPi(d.kp, d.ki, 0.01, PiDiscretization::Tustin, AntiWindup::Clamp);
