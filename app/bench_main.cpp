@@ -522,6 +522,19 @@ void gcodeContour(Runner& r) {
             sink = sink + run.contour.rms;
         },
         5, 0.0);
+    // The same run with the cross-coupled controller (its comparison run with independent axes
+    // left out): what the coupling costs over the uncoupled run above (target 1.5x).
+    xyt::Session coupled = session;
+    coupled.crossCoupling = {0.1, 1.0, xyt::ContourEstimateKind::Circular};
+    xyt::ContourRunOptions coupledOptions = options;
+    coupledOptions.compareIndependentAxes = false;
+    r.time(
+        "gcode_contour_10000_blocks_cross_coupled",
+        [&] {
+            const auto run = xyt::runProgramContour(coupled, xyt::readGcode(text), coupledOptions);
+            sink = sink + run.contour.rms;
+        },
+        5, 0.0);
     r.time(
         "gcode_contour_10000_blocks_read",
         [&] { sink = sink + xyt::readGcode(text).path.length(); }, 5, 0.0);

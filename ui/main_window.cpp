@@ -10,6 +10,7 @@
 #include "ui/friction_curve_dialog.h"
 #include "ui/identification_window.h"
 #include "ui/panels/contour_controls.h"
+#include "ui/panels/cross_coupling_editor.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/fitted_stack.h"
 #include "ui/panels/friction_editor.h"
@@ -327,6 +328,8 @@ QWidget* MainWindow::buildControls() {
     auto* trajectoryLayout = new QVBoxLayout(trajectoryBox);
     trajectoryEditor_ = new TrajectoryEditor(trajectoryBox);
     trajectoryLayout->addWidget(trajectoryEditor_);
+    crossCouplingEditor_ = new CrossCouplingEditor(trajectoryBox);
+    trajectoryLayout->addWidget(crossCouplingEditor_);
     layout->addWidget(trajectoryBox);
     layout->addWidget(buildActuatorBox(panel));
     layout->addStretch(1);
@@ -533,6 +536,8 @@ void MainWindow::connectControls() {
     });
     connect(trajectoryEditor_, &TrajectoryEditor::trajectoryEdited, session_,
             &TuningSession::setTrajectory);
+    connect(crossCouplingEditor_, &CrossCouplingEditor::couplingEdited, session_,
+            &TuningSession::setCrossCoupling);
     connect(umax_, &NumberField::valueAccepted, this, [this](double v) {
         if (v != session_->session().umaxVolts)
             session_->setUmax(v);
@@ -641,6 +646,66 @@ void MainWindow::buildMenus() {
     });
 }
 
+namespace {
+
+/// The coupled loop's stability as the coupling's fold states it (CouplingStability).
+QString stabilityText(const CouplingStability& st) {
+    const CoupledLineLoop& w = st.worst;
+    const QString direction = QString::number(st.worstThetaRad * 180.0 / M_PI, 'f', 1);
+    QString text = st.linesChecked > 0
+                       ? MainWindow::tr("On its lines the coupled loop is stable: spectral radius "
+                                        "%1 at worst (direction %2°)")
+                       : MainWindow::tr("Frozen at each direction the coupled loop is stable: "
+                                        "spectral radius %1 at worst (direction %2°)");
+    text = text.arg(QString::number(w.spectralRadius, 'g', 6), direction);
+    if (w.hiddenIntegralMode)
+        text += MainWindow::tr(", beside a pole at z = 1 the contour never sees (the coupling's "
+                               "integral and the axes' integrators sharing a constant voltage)");
+    if (w.diskMargin > 0.0)
+        text += MainWindow::tr("; disk margin %1: ±%2 dB, ±%3°")
+                    .arg(QString::number(w.diskMargin, 'g', 3),
+                         QString::number(w.diskGainMarginDb, 'g', 3),
+                         QString::number(w.diskPhaseMarginDeg, 'g', 3));
+    return text + ".";
+}
+
+} // namespace
+
+void MainWindow::showCouplingStatus() {
+    const Session& s = session_->session();
+    const SessionEvaluation& ev = session_->evaluation();
+    QString text;
+    bool warning = false;
+    if (!s.crossCoupling.active()) {
+        // nothing to say
+    } else if (!ev.couplingError.empty()) {
+        text = QString::fromStdString(ev.couplingError);
+        warning = true;
+    } else if (ev.program && ev.program->independent) {
+        text = tr("Contour error max %1 mm (independent axes %2 mm).")
+                   .arg(QString::number(ev.program->contour.maxAbs, 'g', 3),
+                        QString::number(ev.program->independent->contour.maxAbs, 'g', 3));
+        if (const auto& st = ev.program->couplingStability) {
+            text += " " + stabilityText(*st);
+            if (!st->warning.empty()) {
+                text += " " + QString::fromStdString(st->warning) + ".";
+                warning = true;
+            }
+        }
+    } else if (ev.coupledTrajectory) {
+        const CoupledTrajectoryRun& run = *ev.coupledTrajectory;
+        text = tr("Contour error max %1 mm (independent axes %2 mm). ")
+                   .arg(QString::number(run.coupledError.maxAbs, 'g', 3),
+                        QString::number(run.independentError.maxAbs, 'g', 3)) +
+               stabilityText(run.stability);
+        if (!run.stability.warning.empty()) {
+            text += " " + QString::fromStdString(run.stability.warning) + ".";
+            warning = true;
+        }
+    }
+    crossCouplingEditor_->setStability(text, warning);
+}
+
 void MainWindow::syncControls() {
     const int axis = session_->currentAxis();
     const Session& s = session_->session();
@@ -674,6 +739,8 @@ void MainWindow::syncControls() {
     frictionEditor_->setSettings(a.friction, a.frictionCompensation,
                                  a.method != DesignMethod::PolePlacementZpetc);
     trajectoryEditor_->setTrajectory(s.trajectory);
+    crossCouplingEditor_->setCoupling(s.crossCoupling);
+    showCouplingStatus();
     umax_->setValue(s.umaxVolts);
     controllerTs_->setValue(s.controllerTsSeconds);
     const QSignalBlocker blockDiscretization(discretization_);

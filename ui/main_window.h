@@ -32,6 +32,7 @@ class ImplementationEditor;
 class MetricsPanel;
 class NumberField;
 class ParameterSlider;
+class CrossCouplingEditor;
 class FrictionEditor;
 class PlantEditor;
 class ParameterLocusPlot;
@@ -89,6 +90,7 @@ public:
     ContourControls* contourControls() const { return contourControls_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
     FrictionEditor* frictionEditor() const { return frictionEditor_; }
+    CrossCouplingEditor* crossCouplingEditor() const { return crossCouplingEditor_; }
     ImplementationEditor* implementationEditor() const { return implementation_; }
     QToolButton* implementationToggle() const { return implementationToggle_; }
     /// View > Show the digital implementation (time-plot overlay), on by default.
@@ -138,6 +140,8 @@ private:
     void chooseMethod(int index);
     void buildMenus();
     void syncControls();
+    /// The coupling editor's line: what the evaluation found of the cross-coupling.
+    void showCouplingStatus();
     void restoreLayout();
 
     void saveLayout() const;
@@ -147,6 +151,7 @@ private:
     QComboBox* method_ = nullptr;
     PlantEditor* plantEditor_ = nullptr;
     FrictionEditor* frictionEditor_ = nullptr;
+    CrossCouplingEditor* crossCouplingEditor_ = nullptr;
     ParameterSlider* omegaN_ = nullptr;
     ParameterSlider* kp_ = nullptr;
     TrajectoryEditor* trajectoryEditor_ = nullptr;

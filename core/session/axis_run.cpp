@@ -152,10 +152,12 @@ void addFeedforward(std::vector<double>& into, const std::vector<double>& add) {
         into[k] += add[k];
 }
 
-SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
-                                     const TransferFunction& controller,
-                                     const std::vector<double>& reference, double dtSeconds,
-                                     double umaxVolts) {
+namespace {
+
+/// traceContinuousAxis' loop, run by @p run(plant, options) with the options it needs.
+template <typename Run>
+auto onContinuousAxis(const AxisSettings& axis, int axisIndex, const std::vector<double>& reference,
+                      double dtSeconds, double umaxVolts, Run run) {
     LoopSimulationOptions options;
     options.dtSeconds = dtSeconds;
     options.umaxVolts = umaxVolts;
@@ -166,12 +168,34 @@ SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
     if (!ff.empty())
         options.feedforwardVolts = &ff;
     try {
-        return simulateLoop(axis.gt.plant.transferFunction(), controller, reference, options);
+        return run(axis.gt.plant.transferFunction(), options);
     } catch (const InvalidInput& e) {
         if (e.field() == "plant" || e.field() == "initial_output")
             throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
         throw;
     }
+}
+
+} // namespace
+
+SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
+                                     const TransferFunction& controller,
+                                     const std::vector<double>& reference, double dtSeconds,
+                                     double umaxVolts) {
+    return onContinuousAxis(axis, axisIndex, reference, dtSeconds, umaxVolts,
+                            [&](const TransferFunction& plant, const LoopSimulationOptions& o) {
+                                return simulateLoop(plant, controller, reference, o);
+                            });
+}
+
+std::unique_ptr<SteppedLoop> steppedContinuousAxis(const AxisSettings& axis, int axisIndex,
+                                                   const TransferFunction& controller,
+                                                   const std::vector<double>& reference,
+                                                   double dtSeconds, double umaxVolts) {
+    return onContinuousAxis(axis, axisIndex, reference, dtSeconds, umaxVolts,
+                            [&](const TransferFunction& plant, const LoopSimulationOptions& o) {
+                                return steppedLoop(plant, controller, reference, o);
+                            });
 }
 
 } // namespace xyt

@@ -3,9 +3,11 @@
 
 #include "core/model/errors.h"
 #include "core/session/session_evaluation.h"
+#include "core/simulation/loop_stepper.h"
 
 #include <complex>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -45,6 +47,12 @@ SimulationResult traceContinuousAxis(const AxisSettings& axis, int axisIndex,
                                      const TransferFunction& controller,
                                      const std::vector<double>& reference, double dtSeconds,
                                      double umaxVolts);
+
+/// traceContinuousAxis' run as a loop advanced sample by sample (core/simulation/loop_stepper.h).
+std::unique_ptr<SteppedLoop> steppedContinuousAxis(const AxisSettings& axis, int axisIndex,
+                                                   const TransferFunction& controller,
+                                                   const std::vector<double>& reference,
+                                                   double dtSeconds, double umaxVolts);
 
 /**
  * The table under @p axis for a loop's options (LoopSimulationOptions::table): null for the

@@ -21,6 +21,23 @@ AxisTrace ContinuousPlantMethod::tracePath(const Session& session, int axisIndex
     return out;
 }
 
+std::unique_ptr<SteppedLoop>
+ContinuousPlantMethod::steppedPath(const Session& session, int axisIndex,
+                                   const std::vector<double>& /*t*/,
+                                   const std::vector<double>& reference, double dtSeconds) const {
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+    return steppedContinuousAxis(axis, axisIndex, designedController(session, axisIndex), reference,
+                                 dtSeconds, session.umaxVolts);
+}
+
+SampledAxisModel ContinuousPlantMethod::couplingModel(const Session& session, int axisIndex,
+                                                      double periodSeconds) const {
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+    return continuousAxisModel(axis.gt.plant.transferFunction(),
+                               designedController(session, axisIndex),
+                               axis.gt.modelUnitsPerPositionUnit, periodSeconds);
+}
+
 std::vector<UncertainParameter>
 ContinuousPlantMethod::plantParameters(const AxisSettings& settings) const {
     std::vector<UncertainParameter> out = thirdOrderPlantParameters(settings.gt.plant);

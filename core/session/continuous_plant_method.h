@@ -22,6 +22,12 @@ public:
 
     AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
                         const std::vector<double>& reference, double dtSeconds) const override;
+    std::unique_ptr<SteppedLoop> steppedPath(const Session& session, int axisIndex,
+                                             const std::vector<double>& t,
+                                             const std::vector<double>& reference,
+                                             double dtSeconds) const override;
+    SampledAxisModel couplingModel(const Session& session, int axisIndex,
+                                   double periodSeconds) const override;
     std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const override;
     RobustnessProblem robustnessProblem(const Session& session, int axisIndex,
                                         const AxisEvaluation& nominal) const override;

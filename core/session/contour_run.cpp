@@ -6,10 +6,13 @@
 #include "core/design/zpetc.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/session/coupling_stability.h"
 #include "core/session/design_method_module.h"
 #include "core/session/session_evaluation.h"
+#include "core/simulation/cross_coupled_run.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/metrics.h"
+#include "core/simulation/resample.h"
 #include "core/simulation/trajectory.h"
 
 #include <algorithm>
@@ -19,15 +22,78 @@ namespace xyt {
 
 namespace {
 
-/// Runs both axes of @p session along @p path at @p feeds.
+/// The path's direction and curvature at the times k T (k < n) of a coupled run on @p profile.
+CouplingDirections couplingDirections(const Path& path, const FeedProfile& profile, double period,
+                                      std::size_t n, const std::vector<bool>* rapid) {
+    CouplingDirections out;
+    out.thetaRad.resize(n);
+    out.curvaturePerMm.resize(n);
+    if (rapid)
+        out.active.resize(n);
+    const bool sameGrid =
+        n <= profile.t.size() && std::abs(period - profile.dtSeconds) <= 1e-9 * profile.dtSeconds;
+    std::vector<double> s;
+    if (!sameGrid) {
+        std::vector<double> times(n);
+        for (std::size_t k = 0; k < n; ++k)
+            times[k] = static_cast<double>(k) * period;
+        s = resampleLinear(profile.t, profile.s, times);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const PathPoint at = sameGrid ? path.at(profile.s[k], profile.segment[k]) : path.at(s[k]);
+        out.thetaRad[k] = std::atan2(at.tangent.y, at.tangent.x);
+        out.curvaturePerMm[k] = path.segments()[at.segment].curvature();
+        if (rapid)
+            out.active[k] = !(*rapid)[at.segment];
+    }
+    return out;
+}
+
+/// Both axes of @p session along @p p's path in lockstep with the session's cross-coupling, off
+/// on the segments @p rapid marks (null: none).
+void coupledTrace(const Session& session, const Path& path, const std::vector<bool>* rapid,
+                  ContourTrace& out) {
+    const FeedProfile& p = out.profile;
+    std::array<std::unique_ptr<SteppedLoop>, 2> loops;
+    for (int i = 0; i < 2; ++i) {
+        const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+        loops[static_cast<std::size_t>(i)] =
+            designMethodModule(axis.method)
+                .steppedPath(session, i, p.t, i == 0 ? p.x : p.y, p.dtSeconds);
+    }
+    if (std::abs(loops[0]->periodSeconds() - loops[1]->periodSeconds()) >
+        1e-9 * loops[0]->periodSeconds())
+        throw InvalidInput("cross_coupling",
+                           "needs both axes at one controller period: the x axis runs every " +
+                               formatNumber(loops[0]->periodSeconds()) + " s, the y axis every " +
+                               formatNumber(loops[1]->periodSeconds()) +
+                               " s (a pole-placement axis runs at its Ts, a continuous one at "
+                               "the trajectory's dt)");
+    const CouplingDirections directions =
+        couplingDirections(path, p, loops[0]->periodSeconds(), loops[0]->samples(), rapid);
+    out.coupling = runCrossCoupled(*loops[0], *loops[1], directions, session.crossCoupling);
+    for (std::size_t i = 0; i < 2; ++i) {
+        SimulationResult& run = out.axes[i] = loops[i]->takeResult();
+        std::vector<double>& onPath = i == 0 ? out.x : out.y;
+        onPath = run.t.size() == p.t.size() ? run.y : resampleLinear(run.t, run.y, p.t);
+    }
+}
+
+/// Runs both axes of @p session along @p path at @p feeds: independently, or in lockstep with
+/// the session's cross-coupling when it is on (@p coupled), off on the @p rapid segments.
 ContourTrace trace(const Session& session, const Path& path, const std::vector<double>& feeds,
-                   const ContourRunOptions& options, const FeedProfile* planned = nullptr) {
+                   const ContourRunOptions& options, const FeedProfile* planned = nullptr,
+                   bool coupled = true, const std::vector<bool>* rapid = nullptr) {
     requirePositive(session.umaxVolts, "umax");
     FeedProfileOptions profileOptions = options.profile;
     profileOptions.maxSamples = std::min(profileOptions.maxSamples, sampleLimit());
     ContourTrace out;
     out.profile = planned ? *planned : planFeedProfile(path, feeds, profileOptions);
     const FeedProfile& p = out.profile;
+    if (coupled && session.crossCoupling.active()) {
+        coupledTrace(session, path, rapid, out);
+        return out;
+    }
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
         const std::vector<double>& reference = i == 0 ? p.x : p.y;
@@ -119,7 +185,27 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
                              const ContourRunOptions& options, const FeedProfile* plannedProfile) {
     const std::vector<double> feeds = programFeeds(program, options.profile.feedScale);
     ContourRun out;
-    out.trace = trace(session, program.path, feeds, options, plannedProfile);
+    if (session.crossCoupling.active()) {
+        // The coupled loop on each line of the program, before anything is simulated.
+        std::vector<CoupledLine> lines;
+        bool arcs = false;
+        for (std::size_t i = 0; i < program.path.size(); ++i) {
+            const PathSegment& segment = program.path.segments()[i];
+            if (segment.isArc()) {
+                arcs = true;
+            } else if (segment.length() > 0.0 && !program.segments[i].rapid) {
+                const Point2 d = segment.end() - segment.start();
+                lines.push_back({std::atan2(d.y, d.x),
+                                 "program line " + std::to_string(program.segments[i].line)});
+            }
+        }
+        out.couplingStability =
+            checkCouplingStability(session, options.profile.dtSeconds, lines, arcs);
+    }
+    std::vector<bool> rapid(program.segments.size());
+    for (std::size_t i = 0; i < program.segments.size(); ++i)
+        rapid[i] = program.segments[i].rapid;
+    out.trace = trace(session, program.path, feeds, options, plannedProfile, true, &rapid);
     ContourErrorOptions errorOptions;
     errorOptions.cornerAngleDeg = options.profile.cornerAngleDeg;
     errorOptions.cornerWindowMm = options.cornerWindowMm;
@@ -128,8 +214,17 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         errorOptions.measuredSegments[i] = !program.segments[i].rapid;
     out.contour =
         contourError(program.path, out.trace.profile.t, out.trace.x, out.trace.y, errorOptions);
+    if (session.crossCoupling.active() && options.compareIndependentAxes) {
+        IndependentAxesRun independent;
+        independent.trace = trace(session, program.path, feeds, options, &out.trace.profile, false);
+        independent.contour = contourError(program.path, independent.trace.profile.t,
+                                           independent.trace.x, independent.trace.y, errorOptions);
+        out.independent = std::move(independent);
+    }
     out.warnings = program.warnings;
     addAxisWarnings(out.trace, out.warnings);
+    if (out.couplingStability && !out.couplingStability->warning.empty())
+        out.warnings.push_back("cross-coupling: " + out.couplingStability->warning);
 
     if (program.isSingleFullCircle()) {
         const std::size_t c = program.fullCircleSegment();
@@ -160,6 +255,14 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
                 test.uncompensatedIso = iso230Circular(test.uncompensatedX, test.uncompensatedY,
                                                        test.nominal, options.iso);
         }
+        if (out.independent) {
+            const ContourTrace alone =
+                trace(session, Path({circle}), feed, options, nullptr, false);
+            pointsOnSegments(alone, {0, 1}, out.independent->circleX, out.independent->circleY);
+            if (out.independent->circleX.size() >= 3)
+                out.independent->iso = iso230Circular(
+                    out.independent->circleX, out.independent->circleY, test.nominal, options.iso);
+        }
         if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
             test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal,
                                       options.iso);
@@ -171,6 +274,14 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         }
     } else {
         out.circular = ballbarTestOfProgram(program, out.trace, options.iso, out.warnings);
+        if (out.circular && out.independent) {
+            const BallbarCircles circles = findBallbarCircles(program);
+            IndependentAxesRun& alone = *out.independent;
+            pointsOnSegments(alone.trace, *circles.first, alone.circleX, alone.circleY);
+            if (alone.circleX.size() >= 3)
+                alone.iso = iso230Circular(alone.circleX, alone.circleY, out.circular->nominal,
+                                           options.iso);
+        }
     }
     addReversalSpikeWarning(session, out);
     return out;

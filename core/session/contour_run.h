@@ -4,7 +4,9 @@
 #include "core/contour/contour_metrics.h"
 #include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
+#include "core/session/coupling_stability.h"
 #include "core/session/session.h"
+#include "core/simulation/cross_coupled_run.h"
 #include "core/simulation/simulation.h"
 
 #include <array>
@@ -23,6 +25,9 @@ struct ContourRunOptions {
     /// profile's).
     double cornerWindowMm = 1.0;
     Iso230Options iso;
+    /// With cross-coupling on (Session::crossCoupling): run the program once more with the axes
+    /// independent, for the comparison (ContourRun::independent).
+    bool compareIndependentAxes = true;
 };
 
 /// Both axes traced along one direction of a program.
@@ -33,6 +38,9 @@ struct ContourTrace {
     std::array<SimulationResult, 2> axes;
     /// The traced point on the profile's time grid (discrete axes interpolated linearly).
     std::vector<double> x, y;
+    /// With cross-coupling (Session::crossCoupling on): what the coupling did at each sample of
+    /// the axes' runs.
+    std::optional<CouplingSignals> coupling;
 };
 
 /**
@@ -69,6 +77,16 @@ struct ContourCircularTest {
     std::vector<double> uncompensatedX, uncompensatedY;
 };
 
+/// The program run with the axes independent (no cross-coupling), beside a coupled run.
+struct IndependentAxesRun {
+    ContourTrace trace;
+    ContourErrorResult contour; ///< of trace
+    /// The first run of the circular test (ContourCircularTest: its circle, its direction) with
+    /// independent axes: its points and figures, when the coupled run has the test.
+    std::vector<double> circleX, circleY;
+    std::optional<Iso230Circular> iso;
+};
+
 /// A G-code program run by the session's two axes.
 struct ContourRun {
     ContourTrace trace;
@@ -77,6 +95,12 @@ struct ContourRun {
     std::optional<ContourCircularTest> circular;
     /// The program's warnings, then each axis' ("x axis: |u| reached the 2.5 V limit ...").
     std::vector<std::string> warnings;
+    /// With cross-coupling on and ContourRunOptions::compareIndependentAxes: the same program
+    /// with independent axes.
+    std::optional<IndependentAxesRun> independent;
+    /// With cross-coupling on: the coupled loop's stability on the program's lines and arcs
+    /// (a line where it is unstable refuses the run instead).
+    std::optional<CouplingStability> couplingStability;
 };
 
 /**

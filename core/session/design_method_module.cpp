@@ -48,6 +48,19 @@ std::string coefficientText(const DesignCoefficient& c) {
 
 } // namespace
 
+std::unique_ptr<SteppedLoop> DesignMethodModule::steppedPath(
+    const Session& /*session*/, int /*axisIndex*/, const std::vector<double>& /*t*/,
+    const std::vector<double>& /*reference*/, double /*dtSeconds*/) const {
+    throw InvalidInput("cross_coupling",
+                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+}
+
+SampledAxisModel DesignMethodModule::couplingModel(const Session& /*session*/, int /*axisIndex*/,
+                                                   double /*periodSeconds*/) const {
+    throw InvalidInput("cross_coupling",
+                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+}
+
 std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*settings*/,
                                                          const AxisEvaluation& axis) const {
     std::string line;

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/analysis/coupled_line_loop.h"
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/pole_zero_map.h"
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
+#include "core/simulation/loop_stepper.h"
 #include "core/study/plant_uncertainty.h"
 #include "core/study/robustness.h"
 
@@ -99,6 +101,29 @@ public:
      */
     virtual AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
                                 const std::vector<double>& reference, double dtSeconds) const = 0;
+
+    /**
+     * tracePath's run as a loop advanced one sample at a time (core/simulation/loop_stepper.h),
+     * for the cross-coupled contour run (core/simulation/cross_coupled_run.h): the same design,
+     * limit, feedforward, table and refusals, on the method's own samples (a continuous axis at
+     * @p dtSeconds on @p t, a discrete one at its controller period from t = 0); the extra
+     * voltage of each sample is the coupling's, added to the axis' command before its limit.
+     * By default throws InvalidInput "cross_coupling": a method whose loop takes no coupling.
+     */
+    virtual std::unique_ptr<SteppedLoop> steppedPath(const Session& session, int axisIndex,
+                                                     const std::vector<double>& t,
+                                                     const std::vector<double>& reference,
+                                                     double dtSeconds) const;
+
+    /**
+     * Axis @p axisIndex's loop as the cross-coupled controller of period @p periodSeconds sees
+     * it on a straight line (core/analysis/coupled_line_loop.h): linear, from the coupling's
+     * voltage to the output in mm. By default throws InvalidInput "cross_coupling", as
+     * steppedPath. Throws InvalidInput naming the session field of a setting that allows no
+     * design.
+     */
+    virtual SampledAxisModel couplingModel(const Session& session, int axisIndex,
+                                           double periodSeconds) const;
 
     /// The plant's parameters with their nominal values, as the robustness study varies them
     /// (relative ranges 0). Throws InvalidInput for a plant that has none.

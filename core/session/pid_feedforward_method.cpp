@@ -103,10 +103,10 @@ std::vector<double> positions(const std::vector<MotionSample>& motion) {
 /// The continuous loop along @p motion at step @p dt with the feedforward (or without).
 /// The table of @p axis is in the loop either way; the friction compensation belongs to the
 /// feedforward.
-SimulationResult continuousRun(const AxisSettings& axis, int axisIndex,
-                               const PidFeedforwardDesign& d,
-                               const std::vector<MotionSample>& motion, double dt,
-                               bool withFeedforward, double initialOutput = 0.0) {
+template <typename Run>
+auto onContinuousRun(const AxisSettings& axis, int axisIndex, const PidFeedforwardDesign& d,
+                     const std::vector<MotionSample>& motion, double dt, bool withFeedforward,
+                     double initialOutput, Run run) {
     LoopSimulationOptions options;
     options.dtSeconds = dt;
     options.umaxVolts = d.gains.maxOutput;
@@ -120,7 +120,43 @@ SimulationResult continuousRun(const AxisSettings& axis, int axisIndex,
         addFeedforward(ff, frictionFeedforward(axis, axisIndex, r, dt));
         options.feedforwardVolts = &ff;
     }
-    return simulateLoop(d.plant, d.controller, r, options);
+    return run(r, options);
+}
+
+SimulationResult continuousRun(const AxisSettings& axis, int axisIndex,
+                               const PidFeedforwardDesign& d,
+                               const std::vector<MotionSample>& motion, double dt,
+                               bool withFeedforward, double initialOutput = 0.0) {
+    return onContinuousRun(axis, axisIndex, d, motion, dt, withFeedforward, initialOutput,
+                           [&](const std::vector<double>& r, const LoopSimulationOptions& options) {
+                               return simulateLoop(d.plant, d.controller, r, options);
+                           });
+}
+
+/// The program's derivatives by central differences of its samples (axisMotion's rule).
+std::vector<MotionSample> programMotion(const std::vector<double>& reference, double h) {
+    const std::size_t n = reference.size();
+    std::vector<MotionSample> motion(n);
+    const auto at = [&](std::ptrdiff_t k) {
+        return reference[static_cast<std::size_t>(
+            std::clamp<std::ptrdiff_t>(k, 0, static_cast<std::ptrdiff_t>(n) - 1))];
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+        const auto i = static_cast<std::ptrdiff_t>(k);
+        motion[k] = centralDifferenceMotion(at(i - 2), at(i - 1), at(i), at(i + 1), at(i + 2), h);
+    }
+    return motion;
+}
+
+/// A program's run refused naming the session's plant field for the loop's plant refusals.
+template <typename Run> auto namingPlant(int axisIndex, Run run) {
+    try {
+        return run();
+    } catch (const InvalidInput& e) {
+        if (e.field() == "plant" || e.field() == "initial_output")
+            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
+        throw;
+    }
 }
 
 void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEvaluation& out) {
@@ -222,34 +258,39 @@ public:
         evaluateDigital(session, axisIndex, durationSeconds, *design, motion, out);
     }
 
-    AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& t,
+    AxisTrace tracePath(const Session& session, int axisIndex, const std::vector<double>& /*t*/,
                         const std::vector<double>& reference, double dtSeconds) const override {
-        // The program's derivatives by central differences of its samples (axisMotion's rule).
         const PidFeedforwardDesign d = designPidFeedforward(session, axisIndex);
-        std::vector<MotionSample> motion(reference.size());
-        const std::size_t n = reference.size();
-        const auto at = [&](std::ptrdiff_t k) {
-            return reference[static_cast<std::size_t>(
-                std::clamp<std::ptrdiff_t>(k, 0, static_cast<std::ptrdiff_t>(n) - 1))];
-        };
-        const double h = dtSeconds;
-        for (std::size_t k = 0; k < n; ++k) {
-            const auto i = static_cast<std::ptrdiff_t>(k);
-            motion[k] =
-                centralDifferenceMotion(at(i - 2), at(i - 1), at(i), at(i + 1), at(i + 2), h);
-        }
-        (void)t;
+        const std::vector<MotionSample> motion = programMotion(reference, dtSeconds);
         AxisTrace out;
-        try {
-            out.run = continuousRun(session.axes.at(static_cast<std::size_t>(axisIndex)), axisIndex,
-                                    d, motion, dtSeconds, true, reference.front());
-        } catch (const InvalidInput& e) {
-            if (e.field() == "plant" || e.field() == "initial_output")
-                throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
-            throw;
-        }
+        out.run = namingPlant(axisIndex, [&] {
+            return continuousRun(session.axes.at(static_cast<std::size_t>(axisIndex)), axisIndex, d,
+                                 motion, dtSeconds, true, reference.front());
+        });
         out.outputOnPath = out.run.y;
         return out;
+    }
+
+    SampledAxisModel couplingModel(const Session& session, int axisIndex,
+                                   double periodSeconds) const override {
+        const PidFeedforwardDesign d = designPidFeedforward(session, axisIndex);
+        return continuousAxisModel(d.plant, d.controller, d.unit, periodSeconds);
+    }
+
+    std::unique_ptr<SteppedLoop> steppedPath(const Session& session, int axisIndex,
+                                             const std::vector<double>& /*t*/,
+                                             const std::vector<double>& reference,
+                                             double dtSeconds) const override {
+        const PidFeedforwardDesign d = designPidFeedforward(session, axisIndex);
+        const std::vector<MotionSample> motion = programMotion(reference, dtSeconds);
+        return namingPlant(axisIndex, [&] {
+            return onContinuousRun(
+                session.axes.at(static_cast<std::size_t>(axisIndex)), axisIndex, d, motion,
+                dtSeconds, true, reference.front(),
+                [&](const std::vector<double>& r, const LoopSimulationOptions& options) {
+                    return steppedLoop(d.plant, d.controller, r, options);
+                });
+        });
     }
 
     TransferFunction evaluatedController(const AxisEvaluation& axis) const override {

@@ -120,21 +120,27 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     }
 }
 
-/// A discrete axis: the reference resampled at its Ts (held at the end for the ZPETC's
-/// preview), the table at rest at the first sample (StartCondition::AtReference).
-SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vector<double>& t,
-                         const std::vector<double>& reference, double umaxVolts, double deadzone) {
+/// What a discrete axis' program run needs: its design, its sample times k Ts (n of them) and
+/// the reference resampled on them (held at the end for the ZPETC's preview).
+struct PpProgramRun {
     PolePlacementDesign loop;
     ZpetcDesign zpetc;
+    std::vector<double> times, r;
+    std::size_t n = 0;
+};
+
+PpProgramRun ppProgramRun(const PpAxisSettings& pp, int axisIndex, const std::vector<double>& t,
+                          const std::vector<double>& reference) {
+    PpProgramRun out;
     try {
         requireFinite(pp.t1, "t1");
         if (std::abs(pp.t1) >= 1.0)
             throw InvalidInput("t1",
                                "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
-        loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"),
-                                   Polynomial::fromAscending(pp.b, "b"),
-                                   Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
-        zpetc = designZpetc(loop);
+        out.loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"),
+                                       Polynomial::fromAscending(pp.b, "b"),
+                                       Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
+        out.zpetc = designZpetc(out.loop);
     } catch (const InvalidInput& e) {
         throw InvalidInput(axisFieldPath(axisIndex, "pp." + e.field()), e.reason());
     }
@@ -146,20 +152,66 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
     if (steps + 1.0 > static_cast<double>(sampleLimit()))
         throw InvalidInput(axisFieldPath(axisIndex, "pp.ts"),
                            "the run needs more samples than this machine holds");
-    const std::size_t n = static_cast<std::size_t>(steps) + 1;
-    std::vector<double> times(n + static_cast<std::size_t>(zpetc.previewSteps));
-    for (std::size_t k = 0; k < times.size(); ++k)
-        times[k] = static_cast<double>(k) * pp.tsSeconds;
-    const std::vector<double> r = resampleLinear(t, reference, times);
-    times.resize(n);
+    out.n = static_cast<std::size_t>(steps) + 1;
+    out.times.resize(out.n + static_cast<std::size_t>(out.zpetc.previewSteps));
+    for (std::size_t k = 0; k < out.times.size(); ++k)
+        out.times[k] = static_cast<double>(k) * pp.tsSeconds;
+    out.r = resampleLinear(t, reference, out.times);
+    out.times.resize(out.n);
+    return out;
+}
+
+/// A discrete axis: the reference resampled at its Ts (held at the end for the ZPETC's
+/// preview), the table at rest at the first sample (StartCondition::AtReference).
+SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vector<double>& t,
+                         const std::vector<double>& reference, double umaxVolts, double deadzone) {
+    const PpProgramRun p = ppProgramRun(pp, axisIndex, t, reference);
     const DiscreteRun run =
         pp.zpetcEnabled
-            ? simulateZpetcLoop(loop, zpetc, r, n, StartCondition::AtReference, deadzone)
+            ? simulateZpetcLoop(p.loop, p.zpetc, p.r, p.n, StartCondition::AtReference, deadzone)
             : simulateFeedbackLoop(
-                  loop, std::vector<double>(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)),
+                  p.loop,
+                  std::vector<double>(p.r.begin(), p.r.begin() + static_cast<std::ptrdiff_t>(p.n)),
                   StartCondition::AtReference, deadzone);
-    return discreteRun(times, r, run, umaxVolts, pp.tsSeconds);
+    return discreteRun(p.times, p.r, run, umaxVolts, pp.tsSeconds);
 }
+
+/// tracePp's run advanced sample by sample (SteppedLoop): the ZPETC's preview samples before
+/// k = 0 are run at construction, without coupling, as the batch run has them.
+class PpSteppedPath final : public SteppedLoop {
+public:
+    PpSteppedPath(PpProgramRun run, bool zpetc, double umaxVolts, double deadzone)
+        : p_(std::move(run)), preview_(zpetc ? static_cast<std::size_t>(p_.zpetc.previewSteps) : 0),
+          umax_(umaxVolts),
+          loop_(p_.loop,
+                zpetc ? zpetcLoopInput(p_.zpetc, p_.r, p_.n, p_.r.front())
+                      : std::vector<double>(p_.r.begin(),
+                                            p_.r.begin() + static_cast<std::ptrdiff_t>(p_.n)),
+                p_.r.front(), deadzone) {
+        for (std::size_t k = 0; k < preview_; ++k)
+            loop_.advance(0.0);
+    }
+    std::size_t samples() const override { return p_.n; }
+    double periodSeconds() const override { return p_.loop.tsSeconds; }
+    std::size_t index() const override { return loop_.index() - preview_; }
+    double output() const override { return loop_.output(); }
+    double reference() const override { return p_.r[index()]; }
+    bool advance(double extraVolts) override {
+        const bool clipped = std::abs(loop_.advance(extraVolts)) > umax_;
+        if (index() == samples())
+            out_ = discreteRun(p_.times, p_.r, loop_.run(preview_), umax_, p_.loop.tsSeconds);
+        return clipped;
+    }
+    const SimulationResult& result() const override { return out_; }
+    SimulationResult takeResult() override { return std::move(out_); }
+
+private:
+    PpProgramRun p_;
+    std::size_t preview_;
+    double umax_;
+    RstLoopStepper loop_;
+    SimulationResult out_;
+};
 
 using namespace cexport;
 
@@ -345,6 +397,29 @@ public:
                           arxInputDeadzoneVolts(axis, axisIndex));
         out.outputOnPath = resampleLinear(out.run.t, out.run.y, t);
         return out;
+    }
+
+    SampledAxisModel couplingModel(const Session& session, int axisIndex,
+                                   double /*periodSeconds*/) const override {
+        // The same design as the program's run (ppProgramRun's): its period is its Ts.
+        const PpAxisSettings& pp = session.axes.at(static_cast<std::size_t>(axisIndex)).pp;
+        try {
+            return rstAxisModel(designPolePlacement(
+                Polynomial::fromAscending(pp.a, "a"), Polynomial::fromAscending(pp.b, "b"),
+                Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds));
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(axisFieldPath(axisIndex, "pp." + e.field()), e.reason());
+        }
+    }
+
+    std::unique_ptr<SteppedLoop> steppedPath(const Session& session, int axisIndex,
+                                             const std::vector<double>& t,
+                                             const std::vector<double>& reference,
+                                             double /*dtSeconds*/) const override {
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        return std::make_unique<PpSteppedPath>(ppProgramRun(axis.pp, axisIndex, t, reference),
+                                               axis.pp.zpetcEnabled, session.umaxVolts,
+                                               arxInputDeadzoneVolts(axis, axisIndex));
     }
 
     std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const override {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/design/cross_coupling.h"
 #include "core/design/digital_controller.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/model/table_friction.h"
@@ -212,6 +213,9 @@ struct Session {
     /// What the design must meet (Braga et al.: settling <= 100 s, no overshoot, no saturation,
     /// max error <= 2 %). Its umaxVolts is ignored: the session's umaxVolts is the limit.
     Specification spec;
+    /// Koren's cross-coupled contouring controller over both axes on a program's contour run
+    /// (core/design/cross_coupling.h); off (gains 0) by default.
+    CrossCoupling crossCoupling;
     std::vector<DesignSnapshot> snapshots;
 
     /// The current design as a snapshot named @p name.

@@ -365,6 +365,17 @@ SessionEvaluation evaluateSession(const Session& session) {
             out.programPath = std::shared_ptr<const Path>(program, &program->path);
         } catch (const InvalidInput& e) {
             out.programError = e.what();
+            if (e.field().rfind("cross_coupling", 0) == 0)
+                out.couplingError = e.what();
+        }
+    }
+    if (session.crossCoupling.active() && session.trajectory.kind != TrajectoryKind::Gcode &&
+        x.ok && y.ok) {
+        try {
+            out.coupledTrajectory = std::make_shared<const CoupledTrajectoryRun>(
+                runCoupledTrajectory(session, x.run, y.run));
+        } catch (const InvalidInput& e) {
+            out.couplingError = e.what();
         }
     }
     return out;

@@ -7,6 +7,7 @@
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
 #include "core/session/contour_run.h"
+#include "core/session/coupled_trajectory.h"
 #include "core/session/session.h"
 #include "core/simulation/contour_error.h"
 #include "core/simulation/discrete_simulation.h"
@@ -143,6 +144,12 @@ struct SessionEvaluation {
     std::shared_ptr<const ContourRun> program;
     std::shared_ptr<const Path> programPath; ///< the programmed path of `program`
     std::string programError; ///< why `program` is unset although both axes are valid
+    /// With cross-coupling on and a trajectory that is not a program (which runs coupled in
+    /// `program`), both axes valid: the trajectory run coupled beside the independent axes.
+    std::shared_ptr<const CoupledTrajectoryRun> coupledTrajectory;
+    /// Why the coupling could not run, or is unstable on a line of the path (its refusal or
+    /// warning, for the coupling's editor); empty otherwise.
+    std::string couplingError;
 };
 
 /// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows.

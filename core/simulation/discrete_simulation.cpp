@@ -32,41 +32,78 @@ std::size_t maxDegree(std::initializer_list<const Polynomial*> ps) {
     return static_cast<std::size_t>(n);
 }
 
+} // namespace
+
+RstLoopStepper::RstLoopStepper(const PolePlacementDesign& design, std::vector<double> loopInput,
+                               double rest, double inputDeadzoneVolts)
+    : d_(design), v_(std::move(loopInput)), deadzone_(inputDeadzoneVolts),
+      history_(maxDegree({&d_.a, &d_.b, &d_.f, &d_.g})) {
+    const std::size_t n = v_.size();
+    const std::size_t h = history_;
+    const double uRest = d_.a(1.0) / d_.b(1.0) * rest;
+    y_.assign(h + n, rest);
+    u_.assign(h + n, uRest);
+    ua_.assign(h + n, dead(uRest));
+    command_.assign(n, 0.0);
+    if (n > 0)
+        y_[h] = plantOutput(0);
+}
+
+double RstLoopStepper::dead(double x) const {
+    return deadzone_ == 0.0 ? x : x - std::clamp(x, -deadzone_, deadzone_);
+}
+
+double RstLoopStepper::plantOutput(std::size_t k) const {
+    // Plant A y = B u with A(0) = 1 and B(0) = 0: y(k) from the past only.
+    const std::size_t at = k + history_;
+    const auto& a = d_.a.ascending();
+    const auto& b = d_.b.ascending();
+    double yk = 0.0;
+    for (std::size_t i = 1; i < b.size(); ++i)
+        yk += b[i] * ua_[at - i];
+    for (std::size_t i = 1; i < a.size(); ++i)
+        yk -= a[i] * y_[at - i];
+    return yk;
+}
+
+double RstLoopStepper::advance(double extraVolts) {
+    const std::size_t k = k_++;
+    const std::size_t at = k + history_;
+    const auto& f = d_.f.ascending();
+    const auto& g = d_.g.ascending();
+    // Controller F u = Kf v - G y with F(0) = 1.
+    double uk = d_.kf * v_[k];
+    for (std::size_t i = 0; i < g.size(); ++i)
+        uk -= g[i] * y_[at - i];
+    for (std::size_t i = 1; i < f.size(); ++i)
+        uk -= f[i] * u_[at - i];
+    u_[at] = uk / f[0];
+    const double command = u_[at] + extraVolts;
+    command_[k] = command;
+    ua_[at] = dead(command);
+    if (k_ < v_.size())
+        y_[at + 1] = plantOutput(k_);
+    return command;
+}
+
+DiscreteRun RstLoopStepper::run(std::size_t from) const {
+    const auto begin = static_cast<std::ptrdiff_t>(history_ + from);
+    const auto end = static_cast<std::ptrdiff_t>(history_ + k_);
+    return {std::vector<double>(y_.begin() + begin, y_.begin() + end),
+            std::vector<double>(command_.begin() + static_cast<std::ptrdiff_t>(from),
+                                command_.begin() + static_cast<std::ptrdiff_t>(k_))};
+}
+
+namespace {
+
 /// The RST loop on the loop input v(0 .. n-1), histories at the steady state of v = rest (the
 /// closed loop has unity DC gain, so y = rest and u = A(1)/B(1) rest) or zero.
 DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& v, double rest,
                        double deadzone) {
-    const std::size_t n = v.size();
-    const std::size_t h = maxDegree({&d.a, &d.b, &d.f, &d.g});
-    const double uRest = d.a(1.0) / d.b(1.0) * rest;
-    History y(h, n, rest), u(h, n, uRest);
-    // The plant's input: the controller's u less the dead zone (what the table receives).
-    const auto dead = [deadzone](double x) {
-        return deadzone == 0.0 ? x : x - std::clamp(x, -deadzone, deadzone);
-    };
-    History ua(h, n, dead(uRest));
-    const auto& a = d.a.ascending();
-    const auto& b = d.b.ascending();
-    const auto& f = d.f.ascending();
-    const auto& g = d.g.ascending();
-    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
-        // Plant A y = B u with A(0) = 1 and B(0) = 0: y(k) from the past only.
-        double yk = 0.0;
-        for (std::size_t i = 1; i < b.size(); ++i)
-            yk += b[i] * ua[k - static_cast<std::ptrdiff_t>(i)];
-        for (std::size_t i = 1; i < a.size(); ++i)
-            yk -= a[i] * y[k - static_cast<std::ptrdiff_t>(i)];
-        y[k] = yk;
-        // Controller F u = Kf v - G y with F(0) = 1.
-        double uk = d.kf * v[static_cast<std::size_t>(k)];
-        for (std::size_t i = 0; i < g.size(); ++i)
-            uk -= g[i] * y[k - static_cast<std::ptrdiff_t>(i)];
-        for (std::size_t i = 1; i < f.size(); ++i)
-            uk -= f[i] * u[k - static_cast<std::ptrdiff_t>(i)];
-        u[k] = uk / f[0];
-        ua[k] = dead(u[k]);
-    }
-    return {y.present(), u.present()};
+    RstLoopStepper loop(d, v, rest, deadzone);
+    for (std::size_t k = 0; k < v.size(); ++k)
+        loop.advance(0.0);
+    return loop.run();
 }
 
 void requireReference(const std::vector<double>& r, std::size_t samples, std::size_t needed) {
@@ -109,18 +146,24 @@ DiscreteRun simulateFeedbackLoop(const PolePlacementDesign& loop, const std::vec
                       inputDeadzoneVolts);
 }
 
-DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
-                              const std::vector<double>& r, std::size_t samples,
-                              StartCondition start, double inputDeadzoneVolts) {
+std::vector<double> zpetcLoopInput(const ZpetcDesign& zpetc, const std::vector<double>& r,
+                                   std::size_t samples, double rest) {
     const auto p = static_cast<std::size_t>(zpetc.previewSteps);
     requireReference(r, samples, samples + p);
     // Run on k = -p .. samples-1: the feedforward input at k is r(k + p) = r[k + p].
     const std::vector<double> w(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(samples + p));
     // Both the feedforward filter and the loop have unity DC gain: at rest every signal is r(0)
     // (u_ff included), so the steady state of the extended reference is the histories' value.
+    return filterZInverse(zpetc.feedforwardNum, zpetc.feedforwardDen, w, rest, rest);
+}
+
+DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
+                              const std::vector<double>& r, std::size_t samples,
+                              StartCondition start, double inputDeadzoneVolts) {
+    const auto p = static_cast<std::size_t>(zpetc.previewSteps);
+    requireReference(r, samples, samples + p);
     const double rest = start == StartCondition::AtReference ? r.front() : 0.0;
-    const std::vector<double> uff =
-        filterZInverse(zpetc.feedforwardNum, zpetc.feedforwardDen, w, rest, rest);
+    const std::vector<double> uff = zpetcLoopInput(zpetc, r, samples, rest);
     DiscreteRun run = runRstLoop(loop, uff, rest, inputDeadzoneVolts);
     run.y.erase(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(p));
     run.u.erase(run.u.begin(), run.u.begin() + static_cast<std::ptrdiff_t>(p));

@@ -39,6 +39,38 @@ std::vector<double> filterZInverse(const Polynomial& num, const Polynomial& den,
                                    double pastOutput = 0.0);
 
 /**
+ * The RST loop F u = Kf w - G y, A y = B (u + v) one sample at a time, on the loop input
+ * w(0 .. n-1), every history at the steady state of w = rest: at sample k, output() is y(k)
+ * (from the past only, B(0) = 0) and advance(v) forms u(k), adds v (V, the cross-coupled
+ * controller's voltage) and passes u + v, less the input dead zone, to the plant. Advanced with
+ * v = 0 throughout it is simulateFeedbackLoop's (and the ZPETC loop's) run bit for bit.
+ */
+class RstLoopStepper {
+public:
+    RstLoopStepper(const PolePlacementDesign& design, std::vector<double> loopInput, double rest,
+                   double inputDeadzoneVolts = 0.0);
+    std::size_t samples() const { return v_.size(); }
+    std::size_t index() const { return k_; }
+    double output() const { return y_[history_ + k_]; }
+    /// Records sample k with @p extraVolts added at the plant input; returns the plant's
+    /// command u(k) + v (before the dead zone).
+    double advance(double extraVolts);
+    /// y and the plant's command u + v of samples from .. index()-1.
+    DiscreteRun run(std::size_t from = 0) const;
+
+private:
+    double dead(double x) const;
+    double plantOutput(std::size_t k) const;
+
+    PolePlacementDesign d_;
+    std::vector<double> v_;
+    double deadzone_;
+    std::size_t history_;
+    std::vector<double> y_, u_, ua_, command_;
+    std::size_t k_ = 0;
+};
+
+/**
  * Structure (1): the pole-placement loop alone (paper Fig. 9), F u = Kf r - G y, A y = B u,
  * driven by r(0 .. n-1). Returns y and u for k = 0 .. n-1. With @p inputDeadzoneVolts > 0 the
  * plant receives u - clamp(u, -w, w) (an ARX axis' Coulomb friction and amplifier deadband as a
@@ -59,6 +91,14 @@ DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign
                               const std::vector<double>& r, std::size_t samples,
                               StartCondition start = StartCondition::AtReference,
                               double inputDeadzoneVolts = 0.0);
+
+/**
+ * The loop input of simulateZpetcLoop: the ZPETC's output u_ff(k) = N_ff/D_ff r(k + p) for
+ * k = -p .. samples-1 (samples + p values), its histories at @p rest.
+ * @throws InvalidInput as simulateZpetcLoop.
+ */
+std::vector<double> zpetcLoopInput(const ZpetcDesign& zpetc, const std::vector<double>& r,
+                                   std::size_t samples, double rest);
 
 /**
  * Structure (3), the trajectory ZPETC of paper Fig. 8: y = B-(z^-1) B-(z) / [B-(1)]^2 r, i.e.

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
+#include "core/simulation/loop_stepper.h"
 #include "core/simulation/table_dynamics.h"
 
 #include <Eigen/QR>
@@ -193,10 +194,20 @@ void runLoop(int runtimeN, int np, const double* cp, const double* cc, double dc
 
 } // namespace
 
-void simulateLoopInto(const TransferFunction& plant, const TransferFunction& controller,
-                      const std::vector<double>& reference, const LoopSimulationOptions& options,
-                      SimulationResult& out) {
-    const LoopModes modes = loopModes(plant, controller);
+namespace {
+
+/// What simulateLoopInto and the stepped loop check and set up alike: the loop's modes, the
+/// feedforward (null for none) and the plant's state at rest at the initial output.
+struct PreparedLoop {
+    LoopModes modes;
+    const double* ff = nullptr;
+    std::vector<double> x;
+};
+
+PreparedLoop prepareLoop(const TransferFunction& plant, const TransferFunction& controller,
+                         const std::vector<double>& reference,
+                         const LoopSimulationOptions& options) {
+    PreparedLoop out{loopModes(plant, controller), nullptr, {}};
     requirePositive(options.dtSeconds, "dt");
     if (std::isnan(options.umaxVolts) || !(options.umaxVolts > 0.0))
         throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
@@ -204,30 +215,16 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
     requirePositive(options.modelUnitsPerPositionUnit, "model_unit_scale");
     requireFiniteSignal(reference, "reference");
     const double unit = options.modelUnitsPerPositionUnit;
-
+    const LoopModes& modes = out.modes;
     const Eigen::Index np = modes.plantStates;
-    const Eigen::Index nc = modes.controllerStates;
-    const Eigen::Index n = np + nc;
-    const double* ff = nullptr;
+    const Eigen::Index n = np + modes.controllerStates;
     if (options.feedforwardVolts && !options.feedforwardVolts->empty()) {
         if (options.feedforwardVolts->size() != reference.size())
             throw InvalidInput("feedforward", "must have one sample per reference sample");
         requireFiniteSignal(*options.feedforwardVolts, "feedforward");
-        ff = options.feedforwardVolts->data();
+        out.ff = options.feedforwardVolts->data();
     }
-    // With a feedforward the linear mode's second input is uff, entering where u does.
-    Eigen::MatrixXd bLinear = modes.bLinear;
-    if (ff) {
-        bLinear.conservativeResize(Eigen::NoChange, 2);
-        bLinear.col(1) = modes.bClipped.col(1);
-    }
-    const FlatStep linear(fohStep(modes.aLinear, bLinear, options.dtSeconds));
-    const bool limited = std::isfinite(options.umaxVolts);
-    FlatStep clipped;
-    if (limited)
-        clipped = FlatStep(fohStep(modes.aClipped, modes.bClipped, options.dtSeconds));
-
-    std::vector<double> x(static_cast<std::size_t>(n), 0.0);
+    out.x.assign(static_cast<std::size_t>(n), 0.0);
     if (options.initialOutput != 0.0) {
         // At rest with output y0: A_p x = 0 and C_p x = y0 (only possible with a pole at 0).
         Eigen::MatrixXd m(np + 1, np);
@@ -239,11 +236,14 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
             throw InvalidInput("initial_output",
                                "the plant has no pole at s = 0, so it cannot rest away from 0");
         for (Eigen::Index i = 0; i < np; ++i)
-            x[static_cast<std::size_t>(i)] = xp(i);
+            out.x[static_cast<std::size_t>(i)] = xp(i);
     }
+    return out;
+}
 
-    // The buffers keep their capacity: a caller that simulates again and again with one
-    // SimulationResult (a live view, a benchmark) allocates nothing after the first run.
+/// Sizes @p out's signals for @p reference (keeping their capacity) and sets what a run shares.
+void startResult(const std::vector<double>& reference, const LoopSimulationOptions& options,
+                 const double* ff, SimulationResult& out) {
     const std::size_t count = reference.size();
     out.dtSeconds = options.dtSeconds;
     out.umaxVolts = options.umaxVolts;
@@ -256,6 +256,123 @@ void simulateLoopInto(const TransferFunction& plant, const TransferFunction& con
     else
         out.uFeedforward.clear();
     out.sliding.clear();
+}
+
+/// simulateLoop's linear-table loop, one sample at a time (SteppedLoop). The linear mode always
+/// has the command's input column, carrying the feedforward plus the extra voltage. The sample
+/// allocates nothing.
+class LinearLoopStepper final : public SteppedLoop {
+public:
+    LinearLoopStepper(PreparedLoop prepared, const std::vector<double>& reference,
+                      const LoopSimulationOptions& options)
+        : x_(std::move(prepared.x)), next_(x_.size()),
+          np_(static_cast<std::size_t>(prepared.modes.plantStates)),
+          cp_(prepared.modes.plantC.data(), prepared.modes.plantC.data() + np_),
+          cc_(prepared.modes.controllerC.data(),
+              prepared.modes.controllerC.data() + prepared.modes.controllerStates),
+          dc_(prepared.modes.controllerD), unit_(options.modelUnitsPerPositionUnit),
+          umax_(options.umaxVolts), dt_(options.dtSeconds) {
+        const LoopModes& modes = prepared.modes;
+        if (prepared.ff)
+            ff_.assign(prepared.ff, prepared.ff + reference.size());
+        startResult(reference, options, prepared.ff ? ff_.data() : nullptr, out_);
+        Eigen::MatrixXd b(modes.bLinear.rows(), 2);
+        b << modes.bLinear, modes.bClipped.col(1);
+        linear_ = fohStep(modes.aLinear, b, dt_);
+        if (std::isfinite(umax_))
+            clipped_ = fohStep(modes.aClipped, modes.bClipped, dt_);
+    }
+    std::size_t samples() const override { return out_.r.size(); }
+    double periodSeconds() const override { return dt_; }
+    std::size_t index() const override { return k_; }
+    double output() const override { return plantOutput() / unit_; }
+    double reference() const override { return out_.r[k_]; }
+    bool advance(double extraVolts) override {
+        const std::size_t k = k_;
+        const double ffk = ff_.empty() ? 0.0 : ff_[k];
+        const double y = plantOutput();
+        const double rk = out_.r[k] * unit_;
+        double v = dc_ * (rk - y) + ffk + extraVolts;
+        for (std::size_t j = 0; j < cc_.size(); ++j)
+            v += cc_[j] * x_[np_ + j];
+        const bool clip = std::abs(v) > umax_;
+        const double u = clip ? std::copysign(umax_, v) : v;
+        out_.t[k] = static_cast<double>(k) * dt_;
+        out_.y[k] = y / unit_;
+        out_.e[k] = out_.r[k] - y / unit_;
+        out_.u[k] = u;
+        out_.clipped[k] = clip;
+        ++k_;
+        if (k_ == samples())
+            return clip;
+        const double slope = (out_.r[k + 1] - out_.r[k]) * unit_ / dt_;
+        const double ffSlope = ff_.empty() ? 0.0 : (ff_[k + 1] - ff_[k]) / dt_;
+        const double w[2] = {rk, clip ? u : ffk + extraVolts};
+        const double rho[2] = {slope, clip ? 0.0 : ffSlope};
+        (clip ? clipped_ : linear_).step(x_.data(), w, rho, next_.data());
+        x_.swap(next_);
+        return clip;
+    }
+    const SimulationResult& result() const override { return out_; }
+    SimulationResult takeResult() override { return std::move(out_); }
+
+private:
+    double plantOutput() const {
+        double y = 0.0;
+        for (std::size_t j = 0; j < np_; ++j)
+            y += cp_[j] * x_[j];
+        return y;
+    }
+
+    std::vector<double> x_, next_;
+    std::size_t np_;
+    std::vector<double> cp_, cc_;
+    double dc_;
+    std::vector<double> ff_;
+    StepMatrices linear_, clipped_;
+    double unit_, umax_, dt_;
+    std::size_t k_ = 0;
+    SimulationResult out_;
+};
+
+} // namespace
+
+std::unique_ptr<SteppedLoop> steppedLoop(const TransferFunction& plant,
+                                         const TransferFunction& controller,
+                                         const std::vector<double>& reference,
+                                         const LoopSimulationOptions& options) {
+    PreparedLoop prepared = prepareLoop(plant, controller, reference, options);
+    if (options.table && options.table->active())
+        return steppedTableLoop(plant, controller, reference, options, prepared.ff);
+    return std::make_unique<LinearLoopStepper>(std::move(prepared), reference, options);
+}
+
+void simulateLoopInto(const TransferFunction& plant, const TransferFunction& controller,
+                      const std::vector<double>& reference, const LoopSimulationOptions& options,
+                      SimulationResult& out) {
+    PreparedLoop prepared = prepareLoop(plant, controller, reference, options);
+    const LoopModes& modes = prepared.modes;
+    const double* ff = prepared.ff;
+    const double unit = options.modelUnitsPerPositionUnit;
+    const Eigen::Index np = modes.plantStates;
+    const Eigen::Index nc = modes.controllerStates;
+    const Eigen::Index n = np + nc;
+    // With a feedforward the linear mode's second input is uff, entering where u does.
+    Eigen::MatrixXd bLinear = modes.bLinear;
+    if (ff) {
+        bLinear.conservativeResize(Eigen::NoChange, 2);
+        bLinear.col(1) = modes.bClipped.col(1);
+    }
+    const FlatStep linear(fohStep(modes.aLinear, bLinear, options.dtSeconds));
+    const bool limited = std::isfinite(options.umaxVolts);
+    FlatStep clipped;
+    if (limited)
+        clipped = FlatStep(fohStep(modes.aClipped, modes.bClipped, options.dtSeconds));
+    std::vector<double>& x = prepared.x;
+
+    // The buffers keep their capacity: a caller that simulates again and again with one
+    // SimulationResult (a live view, a benchmark) allocates nothing after the first run.
+    startResult(reference, options, ff, out);
     if (options.table && options.table->active()) {
         simulateTableLoopInto(plant, controller, reference, options, ff, out);
         return;

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
+#include "core/simulation/loop_stepper.h"
 #include "core/simulation/simulation.h"
 
 #include <Eigen/Eigenvalues>
@@ -133,7 +134,7 @@ public:
 
     void rk4(const Drive& d, int sliding, double tau, const Vec& x, double table, double h, int n,
              Vec& out) const {
-        Vec k1, k2, k3, k4, tmp;
+        Vec k1, k2, k3, k4, tmp{}; // tmp zeroed: its entries past n are never read
         derivative(d, sliding, tau, x, table, k1);
         for (int i = 0; i < n; ++i)
             tmp[i] = x[i] + 0.5 * h * k1[i];
@@ -392,131 +393,218 @@ private:
 
 } // namespace
 
+namespace {
+
+/// simulateTableLoopInto's loop, one sample at a time: its state is the run's, so that
+/// simulateTableLoopInto and the stepped loop (SteppedLoop) are the very same arithmetic.
+class TableLoop {
+public:
+    TableLoop(const TransferFunction& plant, const TransferFunction& controller,
+              const LoopSimulationOptions& options, const double* ff, SimulationResult& out)
+        : engine_(tableMechanics(plant, *options.table, options.modelUnitsPerPositionUnit)),
+          unit_(options.modelUnitsPerPositionUnit), dt_(options.dtSeconds), ff_(ff), out_(out) {
+        const StateSpace c = realize(controller);
+        nc_ = static_cast<int>(c.states());
+        if (nc_ + 3 > kMaxStates)
+            throw InvalidInput("controller",
+                               "has more states than the friction simulation holds (" +
+                                   std::to_string(kMaxStates - 3) + ")");
+        const auto size = static_cast<std::size_t>(nc_);
+        ac_.resize(size * size);
+        bc_.resize(size);
+        cc_.resize(size);
+        for (int i = 0; i < nc_; ++i) {
+            for (int j = 0; j < nc_; ++j)
+                ac_[static_cast<std::size_t>(i * nc_ + j)] = c.a(i, j);
+            bc_[static_cast<std::size_t>(i)] = c.b(i, 0);
+            cc_[static_cast<std::size_t>(i)] = c.c(0, i);
+        }
+        // The fastest rate of the loop: the table's own and the linear closed loop's poles.
+        double rate = engine_.tableRate();
+        const LoopModes modes = loopModes(plant, controller);
+        for (const Eigen::MatrixXd* a : {&modes.aLinear, &modes.aClipped})
+            if (a->rows() > 0)
+                rate = std::max(rate, a->eigenvalues().cwiseAbs().maxCoeff());
+        if (options.tableSubsteps < 0)
+            throw InvalidInput("table_substeps", "must be >= 0 (0: automatic)");
+        steps_ = options.tableSubsteps > 0 ? options.tableSubsteps : substepsFor(rate, dt_, 1);
+        h_ = dt_ / steps_;
+
+        d_.closed = true;
+        d_.nc = nc_;
+        d_.ac = ac_.data();
+        d_.bc = bc_.data();
+        d_.cc = cc_.data();
+        d_.dc = c.d(0, 0);
+        d_.umax = options.umaxVolts;
+        n_ = 3 + nc_;
+        x_[2] = options.initialOutput * unit_;
+        table_ = x_[2];
+        const TableMechanics& mech = engine_.mechanics();
+        sliding_ = mech.dry() ? 0 : 1;
+        // The exact steps where they apply (AffineModes); the engine for the rest.
+        if (AffineModes::applies(mech) && options.tableSubsteps == 0)
+            affine_.emplace(mech, nc_, ac_.data(), bc_.data(), cc_.data(), c.d(0, 0),
+                            options.umaxVolts, dt_);
+        half_ = 0.5 * mech.backlash;
+        out_.sliding.assign(mech.dry() ? out_.r.size() : 0, 0);
+    }
+
+    std::size_t index() const { return k_; }
+    double output() const { return table_ / unit_; }
+
+    /// Records sample k with @p extra volts held over the period (a feedforward offset) and
+    /// advances to k + 1; returns whether u was clipped.
+    bool advance(double extra) {
+        const std::size_t k = k_++;
+        const std::vector<double>& reference = out_.r;
+        const std::size_t count = reference.size();
+        d_.r0 = reference[k] * unit_;
+        d_.ff0 = (ff_ ? ff_[k] : 0.0) + extra;
+        const bool last = k + 1 == count;
+        d_.rSlope = last ? 0.0 : (reference[k + 1] - reference[k]) * unit_ / dt_;
+        d_.ffSlope = (ff_ && !last) ? (ff_[k + 1] - ff_[k]) / dt_ : 0.0;
+        double raw = 0.0;
+        const double u = engine_.command(d_, 0.0, x_, table_, &raw);
+        out_.t[k] = static_cast<double>(k) * dt_;
+        out_.y[k] = table_ / unit_;
+        out_.e[k] = reference[k] - table_ / unit_;
+        out_.u[k] = u;
+        const bool clip = std::abs(raw) > d_.umax;
+        out_.clipped[k] = clip;
+        if (engine_.mechanics().dry())
+            out_.sliding[k] = static_cast<std::int8_t>(sliding_);
+        if (last)
+            return clip;
+        if (affine_ && exactStep(raw))
+            return clip;
+        for (int i = 0; i < steps_; ++i)
+            engine_.substep(d_, static_cast<double>(i) * h_, h_, n_, x_, table_, sliding_,
+                            transitions_);
+        return clip;
+    }
+
+private:
+    /// The side the motor pushes the table from (+1: the table at x_m - b/2), or 0 inside the
+    /// gap.
+    int contactOf() const {
+        if (half_ == 0.0)
+            return 1;
+        // At the gap's edge to round-off: x_m - (x_m - b/2) is b/2 to a few ulps of x_m.
+        const double gap = x_[2] - table_;
+        const double tolerance = 1e-9 * half_ + 1e-14 * std::abs(x_[2]);
+        if (gap >= half_ - tolerance)
+            return 1;
+        if (gap <= -half_ + tolerance)
+            return -1;
+        return 0;
+    }
+
+    /// One exact step of the sample (AffineModes) when its mode holds to the sample's end.
+    bool exactStep(double raw) {
+        const TableMechanics& mech = engine_.mechanics();
+        const int contact = contactOf();
+        int& s = sliding_;
+        // Moving forward the motor can only push forward (or cross the gap), and so on. Without
+        // dry friction the mass never sticks (s stays +1): its velocity gives the direction.
+        const int direction = mech.dry() ? s : (x_[1] > 0.0 ? 1 : (x_[1] < 0.0 ? -1 : 0));
+        if (direction != 0 && contact != 0 && contact != direction && half_ > 0.0)
+            return false;
+        const int clip = std::abs(raw) > d_.umax ? (raw > 0.0 ? 1 : -1) : 0;
+        const double w[4] = {d_.r0, d_.ff0, 1.0, table_};
+        const double rho[4] = {d_.rSlope, d_.ffSlope, 0.0, 0.0};
+        Vec next; // its first n entries are written
+        affine_->step(s, contact, clip, x_.data(), w, rho, next.data());
+        // The mode must hold to the sample's end.
+        if (mech.dry() && s != 0 && static_cast<double>(s) * next[1] < 0.0)
+            return false; // the mass reversed or stopped: the engine locates it
+        if (half_ > 0.0 && contact != 0 && static_cast<double>(contact) * next[1] < 0.0)
+            return false; // the motor turned back from the table: the gap opens
+        if (s == 0 && std::abs(next[0]) > mech.breakaway)
+            return false; // it broke away
+        const double yNext = contact != 0 ? next[2] - static_cast<double>(contact) * half_ : table_;
+        if (contact == 0 && std::abs(next[2] - table_) >= half_)
+            return false; // the motor reached the other side of the gap
+        Drive end = d_;
+        end.r0 = d_.r0 + d_.rSlope * dt_;
+        end.ff0 = d_.ff0 + d_.ffSlope * dt_;
+        end.rSlope = end.ffSlope = 0.0;
+        double rawEnd = 0.0;
+        engine_.command(end, 0.0, next, yNext, &rawEnd);
+        const int clipEnd = std::abs(rawEnd) > d_.umax ? (rawEnd > 0.0 ? 1 : -1) : 0;
+        if (clipEnd != clip)
+            return false; // u crossed a limit
+        std::copy_n(next.begin(), n_, x_.begin());
+        table_ = yNext;
+        return true;
+    }
+
+    const Engine engine_;
+    double unit_, dt_;
+    const double* ff_;
+    SimulationResult& out_;
+    int nc_ = 0, n_ = 0, steps_ = 1;
+    double h_ = 0.0, half_ = 0.0;
+    std::vector<double> ac_, bc_, cc_;
+    Drive d_;
+    Vec x_{};
+    double table_ = 0.0;
+    int sliding_ = 0;
+    std::uint64_t transitions_ = 0;
+    std::optional<AffineModes> affine_;
+    std::size_t k_ = 0;
+};
+
+/// TableLoop as a SteppedLoop, owning its run and its feedforward.
+class TableLoopStepper final : public SteppedLoop {
+public:
+    TableLoopStepper(const TransferFunction& plant, const TransferFunction& controller,
+                     const std::vector<double>& reference, const LoopSimulationOptions& options,
+                     const double* ff)
+        : ff_(ff ? std::vector<double>(ff, ff + reference.size()) : std::vector<double>()),
+          dt_(options.dtSeconds) {
+        out_.dtSeconds = options.dtSeconds;
+        out_.umaxVolts = options.umaxVolts;
+        out_.r = reference;
+        for (std::vector<double>* v : {&out_.t, &out_.y, &out_.e, &out_.u})
+            v->resize(reference.size());
+        out_.clipped.resize(reference.size());
+        out_.uFeedforward = ff_;
+        loop_.emplace(plant, controller, options, ff_.empty() ? nullptr : ff_.data(), out_);
+    }
+    std::size_t samples() const override { return out_.r.size(); }
+    double periodSeconds() const override { return dt_; }
+    std::size_t index() const override { return loop_->index(); }
+    double output() const override { return loop_->output(); }
+    double reference() const override { return out_.r[loop_->index()]; }
+    bool advance(double extraVolts) override { return loop_->advance(extraVolts); }
+    const SimulationResult& result() const override { return out_; }
+    SimulationResult takeResult() override { return std::move(out_); }
+
+private:
+    std::vector<double> ff_;
+    double dt_;
+    SimulationResult out_;
+    std::optional<TableLoop> loop_;
+};
+
+} // namespace
+
 void simulateTableLoopInto(const TransferFunction& plant, const TransferFunction& controller,
                            const std::vector<double>& reference,
                            const LoopSimulationOptions& options, const double* ff,
                            SimulationResult& out) {
-    const double unit = options.modelUnitsPerPositionUnit;
-    const Engine engine(tableMechanics(plant, *options.table, unit));
-    const StateSpace c = realize(controller);
-    const int nc = static_cast<int>(c.states());
-    if (nc + 3 > kMaxStates)
-        throw InvalidInput("controller", "has more states than the friction simulation holds (" +
-                                             std::to_string(kMaxStates - 3) + ")");
-    std::vector<double> ac(static_cast<std::size_t>(nc * nc)), bc(static_cast<std::size_t>(nc)),
-        cc(static_cast<std::size_t>(nc));
-    for (int i = 0; i < nc; ++i) {
-        for (int j = 0; j < nc; ++j)
-            ac[static_cast<std::size_t>(i * nc + j)] = c.a(i, j);
-        bc[static_cast<std::size_t>(i)] = c.b(i, 0);
-        cc[static_cast<std::size_t>(i)] = c.c(0, i);
-    }
-    // The fastest rate of the loop: the table's own and the linear closed loop's poles.
-    double rate = engine.tableRate();
-    const LoopModes modes = loopModes(plant, controller);
-    for (const Eigen::MatrixXd* a : {&modes.aLinear, &modes.aClipped})
-        if (a->rows() > 0)
-            rate = std::max(rate, a->eigenvalues().cwiseAbs().maxCoeff());
-    const double dt = options.dtSeconds;
-    if (options.tableSubsteps < 0)
-        throw InvalidInput("table_substeps", "must be >= 0 (0: automatic)");
-    const int steps = options.tableSubsteps > 0 ? options.tableSubsteps : substepsFor(rate, dt, 1);
-    const double h = dt / steps;
+    TableLoop loop(plant, controller, options, ff, out);
+    for (std::size_t k = 0; k < reference.size(); ++k)
+        loop.advance(0.0);
+}
 
-    Drive d;
-    d.closed = true;
-    d.nc = nc;
-    d.ac = ac.data();
-    d.bc = bc.data();
-    d.cc = cc.data();
-    d.dc = c.d(0, 0);
-    d.umax = options.umaxVolts;
-    const int n = 3 + nc;
-    Vec x{};
-    x[2] = options.initialOutput * unit;
-    double table = x[2];
-    int sliding = engine.mechanics().dry() ? 0 : 1;
-    std::uint64_t transitions = 0;
-    // The exact steps where they apply (AffineModes); the engine for the rest.
-    const TableMechanics& mech = engine.mechanics();
-    std::optional<AffineModes> affine;
-    if (AffineModes::applies(mech) && options.tableSubsteps == 0)
-        affine.emplace(mech, nc, ac.data(), bc.data(), cc.data(), c.d(0, 0), options.umaxVolts, dt);
-    const bool exact = affine.has_value();
-    const double half = 0.5 * mech.backlash;
-    /// The side the motor pushes the table from (+1: the table at x_m - b/2), or 0 inside the gap.
-    const auto contactOf = [&](const Vec& state, double y) {
-        if (half == 0.0)
-            return 1;
-        // At the gap's edge to round-off: x_m - (x_m - b/2) is b/2 to a few ulps of x_m.
-        const double gap = state[2] - y;
-        const double tolerance = 1e-9 * half + 1e-14 * std::abs(state[2]);
-        if (gap >= half - tolerance)
-            return 1;
-        if (gap <= -half + tolerance)
-            return -1;
-        return 0;
-    };
-    const auto exactStep = [&](const Drive& drive, double raw, Vec& state, double& y, int& s) {
-        const int contact = contactOf(state, y);
-        // Moving forward the motor can only push forward (or cross the gap), and so on. Without
-        // dry friction the mass never sticks (s stays +1): its velocity gives the direction.
-        const int direction = mech.dry() ? s : (state[1] > 0.0 ? 1 : (state[1] < 0.0 ? -1 : 0));
-        if (direction != 0 && contact != 0 && contact != direction && half > 0.0)
-            return false;
-        const int clip = std::abs(raw) > drive.umax ? (raw > 0.0 ? 1 : -1) : 0;
-        const double w[4] = {drive.r0, drive.ff0, 1.0, y};
-        const double rho[4] = {drive.rSlope, drive.ffSlope, 0.0, 0.0};
-        Vec next; // its first n entries are written
-        affine->step(s, contact, clip, state.data(), w, rho, next.data());
-        // The mode must hold to the sample's end.
-        if (mech.dry() && s != 0 && static_cast<double>(s) * next[1] < 0.0)
-            return false; // the mass reversed or stopped: the engine locates it
-        if (half > 0.0 && contact != 0 && static_cast<double>(contact) * next[1] < 0.0)
-            return false; // the motor turned back from the table: the gap opens
-        if (s == 0 && std::abs(next[0]) > mech.breakaway)
-            return false; // it broke away
-        const double yNext = contact != 0 ? next[2] - static_cast<double>(contact) * half : y;
-        if (contact == 0 && std::abs(next[2] - y) >= half)
-            return false; // the motor reached the other side of the gap
-        Drive end = drive;
-        end.r0 = drive.r0 + drive.rSlope * dt;
-        end.ff0 = drive.ff0 + drive.ffSlope * dt;
-        end.rSlope = end.ffSlope = 0.0;
-        double rawEnd = 0.0;
-        engine.command(end, 0.0, next, yNext, &rawEnd);
-        const int clipEnd = std::abs(rawEnd) > drive.umax ? (rawEnd > 0.0 ? 1 : -1) : 0;
-        if (clipEnd != clip)
-            return false; // u crossed a limit
-        std::copy_n(next.begin(), n, state.begin());
-        y = yNext;
-        return true;
-    };
-    const std::size_t count = reference.size();
-    const bool dry = engine.mechanics().dry();
-    out.sliding.assign(dry ? count : 0, 0);
-    for (std::size_t k = 0; k < count; ++k) {
-        d.r0 = reference[k] * unit;
-        d.ff0 = ff ? ff[k] : 0.0;
-        const bool last = k + 1 == count;
-        d.rSlope = last ? 0.0 : (reference[k + 1] - reference[k]) * unit / dt;
-        d.ffSlope = (ff && !last) ? (ff[k + 1] - ff[k]) / dt : 0.0;
-        double raw = 0.0;
-        const double u = engine.command(d, 0.0, x, table, &raw);
-        out.t[k] = static_cast<double>(k) * dt;
-        out.y[k] = table / unit;
-        out.e[k] = reference[k] - table / unit;
-        out.u[k] = u;
-        out.clipped[k] = std::abs(raw) > d.umax;
-        if (dry)
-            out.sliding[k] = static_cast<std::int8_t>(sliding);
-        if (last)
-            break;
-        if (exact && exactStep(d, raw, x, table, sliding))
-            continue;
-        for (int i = 0; i < steps; ++i)
-            engine.substep(d, static_cast<double>(i) * h, h, n, x, table, sliding, transitions);
-    }
+std::unique_ptr<SteppedLoop> steppedTableLoop(const TransferFunction& plant,
+                                              const TransferFunction& controller,
+                                              const std::vector<double>& reference,
+                                              const LoopSimulationOptions& options,
+                                              const double* ff) {
+    return std::make_unique<TableLoopStepper>(plant, controller, reference, options, ff);
 }
 
 } // namespace xyt

@@ -5,6 +5,7 @@
 #include "core/model/transfer_function.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace xyt {
@@ -108,5 +109,19 @@ void simulateTableLoopInto(const TransferFunction& plant, const TransferFunction
                            const std::vector<double>& reference,
                            const LoopSimulationOptions& options, const double* feedforwardVolts,
                            SimulationResult& out);
+
+class SteppedLoop;
+
+/**
+ * simulateTableLoopInto's loop as a SteppedLoop (core/simulation/loop_stepper.h), owning copies
+ * of @p reference and @p feedforwardVolts: the extra voltage of each sample is a feedforward
+ * offset held over the period. With every extra voltage 0 the run is simulateTableLoopInto's
+ * bit for bit. @throws InvalidInput as simulateTableLoopInto.
+ */
+std::unique_ptr<SteppedLoop> steppedTableLoop(const TransferFunction& plant,
+                                              const TransferFunction& controller,
+                                              const std::vector<double>& reference,
+                                              const LoopSimulationOptions& options,
+                                              const double* feedforwardVolts);
 
 } // namespace xyt

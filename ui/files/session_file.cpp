@@ -389,6 +389,28 @@ ImplementationSettings readImplementation(ObjectReader r) {
     return i;
 }
 
+QJsonObject crossCouplingToJson(const CrossCoupling& c) {
+    return {{"kp", c.kp}, {"ki", c.ki}, {"estimate", contourEstimateName(c.estimate)}};
+}
+
+/// The optional "cross_coupling" object, every field required, checked by the core's rules.
+CrossCoupling readCrossCoupling(ObjectReader r) {
+    CrossCoupling c;
+    c.kp = r.number("kp");
+    c.ki = r.number("ki");
+    const QString estimate = r.string("estimate");
+    if (!contourEstimateFromName(estimate.toStdString(), c.estimate))
+        throw FormatError{join(r.path(), "estimate"),
+                          QStringLiteral("must be \"linear\" or \"circular\"")};
+    try {
+        validateCrossCoupling(c, "cross_coupling");
+    } catch (const InvalidInput& e) {
+        throw FormatError{QString::fromStdString(e.field()), QString::fromStdString(e.reason())};
+    }
+    r.finish();
+    return c;
+}
+
 QJsonArray axesToJson(const std::array<AxisSettings, 2>& axes) {
     return QJsonArray{axisToJson(axes[0]), axisToJson(axes[1])};
 }
@@ -572,22 +594,26 @@ QJsonObject sessionToJson(const Session& s) {
                                      {"axes", axesToJson(snap.axes)},
                                      {"trajectory", trajectoryToJson(snap.trajectory)},
                                      {"umax", snap.umaxVolts}});
-    return {{"format", kSessionFormatName},
-            {"version", kSessionFormatVersion},
-            {"axes", axesToJson(s.axes)},
-            {"trajectory", trajectoryToJson(s.trajectory)},
-            {"umax", s.umaxVolts},
-            {"controller_ts", s.controllerTsSeconds},
-            {"pi_discretization", QString::fromStdString(discretizationName(s.piDiscretization))},
-            {"implementation", implementationToJson(s.implementation)},
-            {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
-                                          {"max_overshoot_pct", s.spec.maxOvershootPct},
-                                          {"max_error_pct", s.spec.maxErrorPct},
-                                          {"in_position_window_mm", s.spec.inPositionWindowMm},
-                                          {"max_settle_time", s.spec.maxSettleTimeSeconds},
-                                          {"min_phase_margin", s.spec.minPhaseMarginDeg},
-                                          {"min_gain_margin", s.spec.minGainMarginDb}}},
-            {"snapshots", snapshots}};
+    QJsonObject root{
+        {"format", kSessionFormatName},
+        {"version", kSessionFormatVersion},
+        {"axes", axesToJson(s.axes)},
+        {"trajectory", trajectoryToJson(s.trajectory)},
+        {"umax", s.umaxVolts},
+        {"controller_ts", s.controllerTsSeconds},
+        {"pi_discretization", QString::fromStdString(discretizationName(s.piDiscretization))},
+        {"implementation", implementationToJson(s.implementation)},
+        {"specification", QJsonObject{{"max_settling_time", s.spec.maxSettlingTimeSeconds},
+                                      {"max_overshoot_pct", s.spec.maxOvershootPct},
+                                      {"max_error_pct", s.spec.maxErrorPct},
+                                      {"in_position_window_mm", s.spec.inPositionWindowMm},
+                                      {"max_settle_time", s.spec.maxSettleTimeSeconds},
+                                      {"min_phase_margin", s.spec.minPhaseMarginDeg},
+                                      {"min_gain_margin", s.spec.minGainMarginDb}}},
+        {"snapshots", snapshots}};
+    if (s.crossCoupling != CrossCoupling{})
+        root.insert("cross_coupling", crossCouplingToJson(s.crossCoupling));
+    return root;
 }
 
 namespace {
@@ -649,6 +675,8 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             throw FormatError{"pi_discretization",
                               QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
         s.implementation = readImplementation(r.child("implementation"));
+        if (r.has("cross_coupling"))
+            s.crossCoupling = readCrossCoupling(r.child("cross_coupling"));
         {
             ObjectReader spec = r.child("specification");
             s.spec.maxSettlingTimeSeconds = spec.positive("max_settling_time");

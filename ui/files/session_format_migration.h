@@ -23,10 +23,13 @@ namespace xyt::files {
  * - Version 5: an axis may have a "friction" object (AxisSettings::friction and
  *   frictionCompensation), written when any of it is set. A version-4 axis has none: the linear
  *   table, no compensation.
+ * - Version 6: the session may have a "cross_coupling" object (Session::crossCoupling: kp, ki,
+ *   estimate), written when it differs from the default (off). A version-5 session has none:
+ *   the axes run independently.
  *
  * Reading an older version is this migration to the current one, then the current reader.
  */
-inline constexpr int kSessionFormatVersion = 5;
+inline constexpr int kSessionFormatVersion = 6;
 
 /// @p root (a document of format version @p version, 1 <= version < kSessionFormatVersion)
 /// as a document of the current version: each field that version did not require and that

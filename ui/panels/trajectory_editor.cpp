@@ -113,8 +113,20 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     duration->setProperty("normalToolTip", duration->toolTip());
     fields_.insert("dt", dt);
     fields_.insert("duration", duration);
-    common->addRow(tr("Step dt (s)"), dt);
-    common->addRow(tr("Duration (s)"), duration);
+    // Both on one row: the panel fits 1366 x 768 with the cross-coupling fold below.
+    auto* stepRow = new QWidget(this);
+    auto* stepLayout = new QHBoxLayout(stepRow);
+    stepLayout->setContentsMargins(0, 0, 0, 0);
+    for (NumberField* f : {dt, duration}) { // as wide as the row gives, not their text's hint
+        f->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        f->setMinimumWidth(60);
+    }
+    stepLayout->addWidget(dt, 1);
+    auto* durationLabel = new QLabel(tr("Duration (s)"), stepRow);
+    durationLabel->setBuddy(duration);
+    stepLayout->addWidget(durationLabel);
+    stepLayout->addWidget(duration, 1);
+    common->addRow(tr("Step dt (s)"), stepRow);
     layout->addLayout(common);
 
     for (NumberField* f : fields_)

@@ -51,6 +51,8 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
         bands_[b] = newCurve(this, QPen(kBandColors[b + 1], 2.0), QString());
     reverse_ = newCurve(this, QPen(colors::axisY, 1.2), QString());
     uncompensated_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DashDotLine), QString());
+    // The same run with the axes independent, beside a cross-coupled one.
+    independent_ = newCurve(this, QPen(QColor(0x9e, 0x9e, 0x9e), 1.2, Qt::DotLine), QString());
     fMax_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), tr("F max/min"));
     fMin_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), QString());
     gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (LS centre)"));
@@ -154,8 +156,8 @@ void ContourPlot::showSession(const Session& session, const SessionEvaluation& e
 }
 
 void ContourPlot::clearCurves() {
-    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_, uncompensated_, fMax_, fMin_,
-                        gInner_, gOuter_})
+    for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_, uncompensated_, independent_,
+                        fMax_, fMin_, gInner_, gOuter_})
         c->data()->clear();
     for (QCPCurve* c : bands_)
         c->data()->clear();
@@ -214,49 +216,87 @@ void ContourPlot::showLegendRow(bool show) {
     legend->setVisible(show);
 }
 
+namespace {
+
+/// The magnified contour of a preset run: the traced (tx, ty) about the commanded (cx, cy),
+/// radially about the circle after its ramp-in (none drawn during it), else along the error.
+XyPoints magnifiedPresetPoints(const QVector<double>& t, const QVector<double>& cx,
+                               const QVector<double>& cy, const QVector<double>& tx,
+                               const QVector<double>& ty, bool circle, double radius, double ramp,
+                               double magnification) {
+    XyPoints out;
+    for (qsizetype i = 0; i < t.size(); ++i) {
+        if (circle && t[i] >= ramp) {
+            const double rho = std::hypot(tx[i], ty[i]);
+            const double scaled = radius + magnification * (rho - radius);
+            const double angle = std::atan2(ty[i], tx[i]);
+            out.x.append(scaled * std::cos(angle));
+            out.y.append(scaled * std::sin(angle));
+        } else if (circle) {
+            out.x.append(qQNaN());
+            out.y.append(qQNaN());
+        } else {
+            out.x.append(cx[i] + magnification * (tx[i] - cx[i]));
+            out.y.append(cy[i] + magnification * (ty[i] - cy[i]));
+        }
+    }
+    return out;
+}
+
+QVector<double> toVector(const std::vector<double>& v) {
+    return QVector<double>(v.begin(), v.end());
+}
+
+} // namespace
+
 void ContourPlot::drawPresetRun() {
     const auto& x = evaluation_.axes[0];
     const auto& y = evaluation_.axes[1];
-    const std::vector<double> yr = resampleLinear(y.run.t, y.run.r, x.run.t);
-    const std::vector<double> yy = resampleLinear(y.run.t, y.run.y, x.run.t);
     const bool circle = session_.trajectory.kind == TrajectoryKind::Circle;
     const double radius = session_.trajectory.radius;
     const double ramp = session_.trajectory.rampInSeconds;
-    const std::size_t n = x.run.t.size();
-    QVector<double> t(static_cast<qsizetype>(n)), cx(t.size()), cy(t.size()), tx(t.size()),
-        ty(t.size()), mx(t.size()), my(t.size());
-    for (std::size_t k = 0; k < n; ++k) {
-        const auto i = static_cast<qsizetype>(k);
-        t[i] = x.run.t[k];
-        cx[i] = x.run.r[k];
-        cy[i] = yr[k];
-        tx[i] = x.run.y[k];
-        ty[i] = yy[k];
-        if (circle && x.run.t[k] >= ramp) {
-            const double rho = std::hypot(tx[i], ty[i]);
-            const double scaled = radius + magnification_ * (rho - radius);
-            const double angle = std::atan2(ty[i], tx[i]);
-            mx[i] = scaled * std::cos(angle);
-            my[i] = scaled * std::sin(angle);
-        } else if (circle) {
-            mx[i] = qQNaN(); // no contour during the ramp-in
-            my[i] = qQNaN();
-        } else {
-            mx[i] = cx[i] + magnification_ * (tx[i] - cx[i]);
-            my[i] = cy[i] + magnification_ * (ty[i] - cy[i]);
-        }
+    const auto& coupled = evaluation_.coupledTrajectory;
+    QVector<double> t, cx, cy, tx, ty;
+    if (coupled) {
+        // Cross-coupled: the coupled trace, and the independent axes' for the comparison.
+        t = toVector(coupled->t);
+        cx = toVector(coupled->referenceX);
+        cy = toVector(coupled->referenceY);
+        tx = toVector(coupled->coupled[0].y);
+        ty = toVector(coupled->coupled[1].y);
+    } else {
+        t = toVector(x.run.t);
+        cx = toVector(x.run.r);
+        cy = toVector(resampleLinear(y.run.t, y.run.r, x.run.t));
+        tx = toVector(x.run.y);
+        ty = toVector(resampleLinear(y.run.t, y.run.y, x.run.t));
     }
     commanded_->setName(tr("commanded"));
     commanded_->setData(t, cx, cy, true);
     traced_->setData(t, tx, ty, true);
-    magnified_->setData(t, mx, my, true);
+    const XyPoints m =
+        magnifiedPresetPoints(t, cx, cy, tx, ty, circle, radius, ramp, magnification_);
+    magnified_->setData(t, m.x, m.y, true);
     magnified_->setName(tr("error × %1").arg(magnification_));
-    if (evaluation_.contour)
+    if (coupled) {
+        const XyPoints alone = magnifiedPresetPoints(t, cx, cy, toVector(coupled->independent[0].y),
+                                                     toVector(coupled->independent[1].y), circle,
+                                                     radius, ramp, magnification_);
+        independent_->setData(t, alone.x, alone.y, true);
+        independent_->setName(tr("independent axes, error × %1").arg(magnification_));
+        const QString what = circle ? tr("radial, after the ramp-in") : tr("from the line");
+        figures_->setText(
+            tr("Cross-coupled contour error (%1): max %2 mm, RMS %3 mm; independent axes: max "
+               "%4 mm")
+                .arg(what, mm(coupled->coupledError.maxAbs), mm(coupled->coupledError.rms),
+                     mm(coupled->independentError.maxAbs)));
+    } else if (evaluation_.contour) {
         figures_->setText(tr("Contour error (radial, after the ramp-in): max %1 mm, RMS %2 mm")
                               .arg(mm(evaluation_.contour->maxAbs), mm(evaluation_.contour->rms)));
-    else
+    } else {
         figures_->setText(tr("Tracking error: max |e_x| %1 mm, max |e_y| %2 mm")
                               .arg(mm(x.metrics.maxAbsError), mm(y.metrics.maxAbsError)));
+    }
 }
 
 void ContourPlot::drawProgram() {
@@ -307,6 +347,14 @@ void ContourPlot::drawProgram() {
     } else if (!c.corners.empty()) {
         text += tr("; %n corner(s)", nullptr, static_cast<int>(c.corners.size()));
     }
+    if (run.independent) {
+        // The comparison: the same program with the axes independent, magnified alike.
+        const ContourErrorResult& alone = run.independent->contour;
+        setPoints(independent_, magnifiedContourPoints(path, alone, magnification_));
+        independent_->setName(tr("independent axes, error × %1").arg(magnification_));
+        text = tr("Cross-coupled: ") + text +
+               tr("; independent axes: max %1 mm").arg(QString::number(alone.maxAbs, 'g', 3));
+    }
     figures_->setText(text);
 }
 
@@ -344,6 +392,14 @@ void ContourPlot::drawCircularTest() {
         text += tr("; without friction compensation G %1")
                     .arg(mm(test.uncompensatedIso->circularDeviationG));
     }
+    const auto& independent = evaluation_.program->independent;
+    if (independent && independent->iso) {
+        // The comparison: the first run with the axes independent.
+        setPoints(independent_,
+                  polarDeviationPoints(independent->circleX, independent->circleY, n, m));
+        independent_->setName(tr("%1 with independent axes ×%2").arg(forward).arg(m));
+        text += tr("; independent axes G %1").arg(mm(independent->iso->circularDeviationG));
+    }
     figures_->setText(text);
 }
 
@@ -376,8 +432,8 @@ void ContourPlot::fitEqualScale() {
     QCPRange xr, yr;
     const bool found = curvesBoundingBox(
         polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_, uncompensated_,
-                                         fMax_, fMin_, gInner_, gOuter_}
-                : std::vector<QCPCurve*>{commanded_, traced_, magnified_},
+                                         independent_, fMax_, fMin_, gInner_, gOuter_}
+                : std::vector<QCPCurve*>{commanded_, traced_, magnified_, independent_},
         xr, yr);
     if (found)
         showBox(xr.lower, xr.upper, yr.lower, yr.upper);

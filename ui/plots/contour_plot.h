@@ -70,6 +70,8 @@ public:
     QCPCurve* reverseCurve() const { return reverse_; }
     /// The ballbar's first run without the friction compensation (empty without one).
     QCPCurve* uncompensatedCurve() const { return uncompensated_; }
+    /// The same run with the axes independent, beside a cross-coupled one (else empty).
+    QCPCurve* independentCurve() const { return independent_; }
     QCPCurve* fMaxCircle() const { return fMax_; }
     QCPCurve* fMinCircle() const { return fMin_; }
     QCPCurve* gInnerCircle() const { return gInner_; }
@@ -104,6 +106,7 @@ private:
     QCPGraph* corners_;
     QCPCurve* reverse_;
     QCPCurve* uncompensated_;
+    QCPCurve* independent_;
     QCPLayoutElement* legendSpacer_ = nullptr; ///< row 1 while the legend is empty
     QCPCurve* fMax_;
     QCPCurve* fMin_;

@@ -220,6 +220,13 @@ void TuningSession::setTrajectory(const TrajectorySettings& trajectory) {
     apply(next, tr("Change the trajectory"));
 }
 
+void TuningSession::setCrossCoupling(const CrossCoupling& coupling) {
+    Session next = session_;
+    next.crossCoupling = coupling;
+    apply(next, coupling.active() ? tr("Change the cross-coupling")
+                                  : tr("Switch the cross-coupling off"));
+}
+
 void TuningSession::setUmax(double umaxVolts) {
     Session next = session_;
     next.umaxVolts = umaxVolts;

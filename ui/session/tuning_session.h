@@ -135,6 +135,7 @@ public:
     void setFriction(int axis, const TableFriction& friction,
                      const FrictionCompensation& compensation);
     void setTrajectory(const TrajectorySettings& trajectory);
+    void setCrossCoupling(const CrossCoupling& coupling);
     void setUmax(double umaxVolts);
     void setImplementation(const ImplementationSettings& implementation);
     void setControllerTs(double seconds);

@@ -41,9 +41,9 @@ private slots:
     void roundTripModelOrigin();
     void badModelOriginFields_data();
     void badModelOriginFields();
-    void roundTripFriction();
-    void badFrictionFields_data();
-    void badFrictionFields();
+    void roundTripFrictionAndCoupling();
+    void badFrictionAndCouplingFields_data();
+    void badFrictionAndCouplingFields();
     void newerVersionIsRefused();
     void fileErrors();
     void failedSaveKeepsOldFile();
@@ -274,7 +274,8 @@ void TstSessionFile::badModelOriginFields() {
 
 namespace {
 
-/// The default session with a table under x: every friction field set, compensation on.
+/// The default session with a table under x (every friction field set, compensation on) and a
+/// cross-coupled controller.
 Session frictionSession() {
     Session s = Session::paperDefault();
     TableFriction& f = s.axes[0].friction;
@@ -286,17 +287,21 @@ Session frictionSession() {
     f.amplifierDeadbandVolts = 0.01;
     f.electricalPole = ElectricalPole::Slower;
     s.axes[0].frictionCompensation = {80.0, 0.1};
+    s.crossCoupling = {0.1, 1.5, ContourEstimateKind::Linear};
     return s;
 }
 
 } // namespace
 
-void TstSessionFile::roundTripFriction() {
-    // Invariant: load(save(s)) == s with every friction field; an axis without friction writes
-    // no "friction" object, and a version-4 file (none) loads as the linear table.
+void TstSessionFile::roundTripFrictionAndCoupling() {
+    // Invariant: load(save(s)) == s with every friction field and the cross-coupling; an axis
+    // without friction writes no "friction" object, a session without coupling no
+    // "cross_coupling", and a version-4 file (neither) loads as the linear table, uncoupled.
     const Session s = frictionSession();
     const QJsonObject json = sessionToJson(s);
-    QCOMPARE(json["version"].toInt(), 5);
+    QCOMPARE(json["version"].toInt(), 6);
+    QCOMPARE(json["cross_coupling"].toObject()["estimate"].toString(), QStringLiteral("linear"));
+    QVERIFY(!sessionToJson(Session::paperDefault()).contains("cross_coupling"));
     const QJsonObject f = json["axes"].toArray()[0].toObject()["friction"].toObject();
     QCOMPARE(f["electrical_pole"].toString(), QStringLiteral("slower"));
     QCOMPARE(f["compensation"].toObject()["percent"].toDouble(), 80.0);
@@ -310,9 +315,10 @@ void TstSessionFile::roundTripFriction() {
     QVERIFY2(old.ok, qPrintable(old.message()));
     QVERIFY(!old.session.axes[0].friction.active());
     QCOMPARE(old.session.axes[0].frictionCompensation, FrictionCompensation{});
+    QVERIFY(old.session.crossCoupling == CrossCoupling{});
 }
 
-void TstSessionFile::badFrictionFields_data() {
+void TstSessionFile::badFrictionAndCouplingFields_data() {
     QTest::addColumn<QString>("path");
     QTest::addColumn<QJsonValue>("value");
     QTest::addColumn<QString>("expectedPath");
@@ -336,12 +342,21 @@ void TstSessionFile::badFrictionFields_data() {
     QTest::newRow("band zero") << f + "compensation.band" << QJsonValue(0)
                                << f + "compensation.band"
                                << "must be a finite number > 0";
+    QTest::newRow("coupling gain negative")
+        << "cross_coupling.kp" << QJsonValue(-1) << "cross_coupling.kp"
+        << "must be >= 0";
+    QTest::newRow("coupling gain text")
+        << "cross_coupling.ki" << QJsonValue("high") << "cross_coupling.ki"
+        << "must be a finite number";
+    QTest::newRow("coupling estimate unknown")
+        << "cross_coupling.estimate" << QJsonValue("parabolic") << "cross_coupling.estimate"
+        << "must be \"linear\" or \"circular\"";
     QTest::newRow("deadband missing")
         << f + "amplifier_deadband" << QJsonValue(QJsonValue::Undefined) << f + "amplifier_deadband"
         << "is missing";
 }
 
-void TstSessionFile::badFrictionFields() {
+void TstSessionFile::badFrictionAndCouplingFields() {
     QFETCH(QString, path);
     QFETCH(QJsonValue, value);
     QFETCH(QString, expectedPath);
@@ -570,7 +585,7 @@ void TstSessionFile::versionOneFilesMigrate() {
     s.snapshots.push_back({"before", s.axes, s.trajectory, s.umaxVolts});
     const QJsonObject current = sessionToJson(s);
     QCOMPARE(current["version"].toInt(), kSessionFormatVersion);
-    QCOMPARE(kSessionFormatVersion, 5);
+    QCOMPARE(kSessionFormatVersion, 6);
     // Version 3 had no "profile" in its point-to-point move (nor in its snapshots'): the
     // migration says "cubic", the current document.
     const auto withoutProfile = [](QJsonObject holder) {

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/simulation/cross_coupled_run.h"
+
+#include "core/model/errors.h"
+#include "core/model/number_format.h"
+
+#include <cmath>
+
+namespace xyt {
+
+namespace {
+constexpr double kCouplingPi = 3.14159265358979323846;
+} // namespace
+
+CouplingSignals runCrossCoupled(SteppedLoop& x, SteppedLoop& y,
+                                const CouplingDirections& directions,
+                                const CrossCoupling& coupling) {
+    validateCrossCoupling(coupling, "cross_coupling");
+    const double period = x.periodSeconds();
+    if (std::abs(period - y.periodSeconds()) > 1e-9 * period)
+        throw InvalidInput("cross_coupling",
+                           "needs both axes at one controller period: the x axis runs every " +
+                               formatNumber(period) + " s, the y axis every " +
+                               formatNumber(y.periodSeconds()) + " s");
+    const std::size_t n = x.samples();
+    if (y.samples() != n || directions.thetaRad.size() != n ||
+        directions.curvaturePerMm.size() != n ||
+        (!directions.active.empty() && directions.active.size() != n) || x.index() != 0 ||
+        y.index() != 0)
+        throw InvalidInput("cross_coupling", "the two axes' runs do not have the same samples");
+    CouplingSignals out;
+    out.estimate.resize(n);
+    out.correction.resize(n);
+    double integral = 0.0;
+    const bool circular = coupling.estimate == ContourEstimateKind::Circular;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double ex = x.reference() - x.output();
+        const double ey = y.reference() - y.output();
+        const double theta = directions.thetaRad[k];
+        if (k > 0 && std::abs(std::remainder(theta - directions.thetaRad[k - 1],
+                                             2.0 * kCouplingPi)) > kCornerTurnRad)
+            integral = 0.0; // a corner: what built up along the old normal means nothing now
+        const ContourEstimate eps =
+            circular ? circularContourEstimate(ex, ey, theta, directions.curvaturePerMm[k])
+                     : linearContourEstimate(ex, ey, theta);
+        if (!directions.active.empty() && !directions.active[k]) {
+            integral = 0.0;
+            x.advance(0.0);
+            y.advance(0.0);
+            out.estimate[k] = eps.value;
+            out.correction[k] = 0.0;
+            continue;
+        }
+        const double next = integral + period * eps.value;
+        const double uc = coupling.kp * eps.value + coupling.ki * next;
+        const bool clipX = x.advance(eps.gainX * uc);
+        const bool clipY = y.advance(eps.gainY * uc);
+        if (!clipX && !clipY)
+            integral = next;
+        out.estimate[k] = eps.value;
+        out.correction[k] = uc;
+    }
+    return out;
+}
+
+} // namespace xyt
