@@ -153,7 +153,11 @@ constexpr CommandHelp kPpHelp[] = {
     {"contour",
      "  contour   both axes on the circle: [--preset paper-zpetc] [--radius 30 --omega 0.1]\n"
      "            [--duration S --start reference|origin --margin 0.05]; per-axis metrics and\n"
-     "            contour_error {without_ff, with_ff} {max, rms} (radial, mm)\n"
+     "            contour_error {without_ff, with_ff} {max, rms} (radial, mm); with [--ccc-kp\n"
+     "            KP --ccc-ki KI (V/mm, V/(mm s); 0: off) --ccc-estimate circular|linear] also\n"
+     "            cross_coupling {kp, ki, estimate, line_loop, contour_error, independent_axes}:\n"
+     "            the same two axes (ZPETC at its default margin) on the circle from rest at\n"
+     "            r(0), Koren's cross-coupled controller over both against independent axes\n"
      "  contour --gcode FILE [--feed-scale 1] [--max-accel 100 (mm/s^2)] [--max-jerk 0 (mm/s^3,\n"
      "            0: trapezoidal)] [--dt 0.001] [--rapid-feed 3000 (mm/min)] [--corner-angle 1\n"
      "            (deg)] [--corner-window 1 (mm)] [--method "
@@ -172,7 +176,12 @@ constexpr CommandHelp kPpHelp[] = {
      "            contour_error {max, rms, max_at, corners} (signed, + left of travel, mm; G0\n"
      "            rapids left out), iso230_4 (a single full circle: the circle alone from rest,\n"
      "            both ways: G, F_max, F_min, H, G_bidirectional, reversal_spikes; else null),\n"
-     "            warnings.\n"
+     "            warnings. --ccc-kp KP --ccc-ki KI (V/mm, V/(mm s); 0: off) [--ccc-estimate\n"
+     "            circular|linear]: Koren's cross-coupled controller over both axes (off on G0\n"
+     "            rapids); JSON cross_coupling {kp, ki, estimate, line_loop {spectral_radius,\n"
+     "            poles, disk_margin, ... of the least stable line direction}, independent_axes\n"
+     "            {contour_error, circular_deviation_g}}; a line where the coupled loop is\n"
+     "            unstable is refused naming the program line.\n"
      "            CSV: t,s,v,x_ref,y_ref,x,y,contour_error. A program error names the file,\n"
      "            line and column (--gcode part.nc: line 12: unknown word G5 at column 4)\n"},
 };

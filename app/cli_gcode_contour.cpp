@@ -3,6 +3,8 @@
 // for a single full circle, the ISO 230-4 circular test.
 #include "app/cli_gcode_contour.h"
 
+#include "app/cli_cross_coupling.h"
+
 #include "app/cli_friction.h"
 
 #include "app/cli_design_args.h"
@@ -175,49 +177,20 @@ Session sessionFor(const CliArgs& args) {
         axis.friction = parseFriction(args, prefix, both);
         axis.frictionCompensation = parseFrictionCompensation(args, prefix, bothCompensation);
     }
-    // The cross-coupled controller: --ccc-kp, --ccc-ki (0: off) and its estimate.
-    session.crossCoupling.kp = args.number("ccc-kp", 0.0);
-    session.crossCoupling.ki = args.number("ccc-ki", 0.0);
-    for (const auto& [option, value] :
-         {std::pair<const char*, double>{"--ccc-kp", session.crossCoupling.kp},
-          {"--ccc-ki", session.crossCoupling.ki}})
-        if (!std::isfinite(value) || value < 0.0)
-            throw InvalidInput(option,
-                               "must be a finite number >= 0 (0 switches the coupling off)");
-    const QString estimate = args.text("ccc-estimate", "circular");
-    if (!contourEstimateFromName(estimate.toStdString(), session.crossCoupling.estimate))
-        throw InvalidInput("--ccc-estimate",
-                           "must be linear or circular, got '" + estimate.toStdString() + "'");
+    session.crossCoupling = parseCrossCoupling(args);
     return session;
 }
 
-/// The cross-coupling's gains and, beside them, the same program with independent axes.
-QJsonValue couplingJson(const Session& session, const ContourRun& run) {
+} // namespace
+
+QJsonValue programCouplingJson(const Session& session, const ContourRun& run) {
     const CrossCoupling& c = session.crossCoupling;
     if (!c.active())
         return QJsonValue();
     QJsonObject o{
         {"kp", number(c.kp)}, {"ki", number(c.ki)}, {"estimate", contourEstimateName(c.estimate)}};
-    if (run.couplingStability) {
-        const CouplingStability& st = *run.couplingStability;
-        const CoupledLineLoop& w = st.worst;
-        QJsonArray poles;
-        for (const std::complex<double>& p : w.poles)
-            poles.append(QJsonArray{number(p.real()), number(p.imag())});
-        o.insert("line_loop",
-                 QJsonObject{{"period", number(st.periodSeconds)},
-                             {"lines_checked", static_cast<qint64>(st.linesChecked)},
-                             {"frozen_directions", static_cast<qint64>(st.frozenDirections)},
-                             {"unbounded_frozen_directions",
-                              static_cast<qint64>(st.unboundedFrozenDirections)},
-                             {"worst_direction_deg", number(st.worstThetaRad * 180.0 / M_PI)},
-                             {"spectral_radius", number(w.spectralRadius)},
-                             {"hidden_integral_mode", w.hiddenIntegralMode},
-                             {"poles", poles},
-                             {"disk_margin", number(w.diskMargin)},
-                             {"disk_gain_margin_db", number(w.diskGainMarginDb)},
-                             {"disk_phase_margin_deg", number(w.diskPhaseMarginDeg)}});
-    }
+    if (run.couplingStability)
+        o.insert("line_loop", couplingStabilityJson(*run.couplingStability));
     if (run.independent) {
         QJsonObject alone{{"contour_error", contourJson(run.independent->contour)}};
         if (run.independent->iso)
@@ -226,6 +199,8 @@ QJsonValue couplingJson(const Session& session, const ContourRun& run) {
     }
     return o;
 }
+
+namespace {
 
 /// t, s, v, the reference and traced points and the contour error, one row per sample.
 void writeContourCsv(const QString& path, const ContourRun& run) {
@@ -252,8 +227,8 @@ void writeContourCsv(const QString& path, const ContourRun& run) {
 } // namespace
 
 int runGcodeContour(const CliArgs& args) {
-    args.allowOnly(kGcodeContourOptions + frictionOptions() + frictionOptions("x.") +
-                   frictionOptions("y."));
+    args.allowOnly(kGcodeContourOptions + kCrossCouplingOptions + frictionOptions() +
+                   frictionOptions("x.") + frictionOptions("y."));
     const QString file = *args.value("gcode");
     GcodeReadOptions readOptions;
     readOptions.rapidFeedMmPerMin =
@@ -301,7 +276,7 @@ int runGcodeContour(const CliArgs& args) {
            {"y_axis", axisJson(session.axes[1], run.trace.axes[1])},
            {"contour_error", contourJson(run.contour)},
            {"iso230_4", run.circular ? QJsonValue(isoJson(*run.circular)) : QJsonValue()},
-           {"cross_coupling", couplingJson(session, run)},
+           {"cross_coupling", programCouplingJson(session, run)},
            {"warnings", warnings}});
     return 0;
 }

@@ -2,6 +2,7 @@
 // xytune-cli pp | zpetc | contour: discrete pole placement and ZPETC of Patrick, Ishak and Adnan.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
+#include "app/cli_cross_coupling.h"
 #include "app/cli_gcode_contour.h"
 #include "app/cli_json.h"
 
@@ -9,6 +10,7 @@
 #include "core/design/zpetc.h"
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
+#include "core/session/session_evaluation.h"
 #include "core/simulation/trajectory.h"
 #include "core/simulation/zpetc_tracking.h"
 
@@ -234,7 +236,9 @@ int runContour(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv);
     if (args.has("gcode"))
         return runGcodeContour(args);
-    args.allowOnly({"preset", "radius", "omega", "duration", "start", "margin"});
+    args.allowOnly(QStringList{"preset", "radius", "omega", "duration", "start", "margin"} +
+                   kCrossCouplingOptions);
+    const CrossCoupling coupling = parseCrossCoupling(args);
     const QString preset = args.text("preset", "paper-zpetc");
     if (preset != "paper-zpetc")
         throw InvalidInput("--preset",
@@ -259,6 +263,40 @@ int runContour(const QStringList& argv) {
     const ZpetcCircleRun run = namingRunArguments(args, "--radius", [&] {
         return runZpetcCircle(xLoop, xZ, yLoop, yZ, circle, duration, start);
     });
+    // The cross-coupled run: the session's two pole-placement axes (these presets, ZPETC with
+    // its default margin) on the circle, coupled and independent, both from rest at r(0).
+    QJsonValue couplingJson;
+    if (coupling.active()) {
+        if (args.has("margin"))
+            throw InvalidInput("--margin", "cannot go with --ccc-kp/--ccc-ki: the coupled run "
+                                           "uses the session's ZPETC (its default margin)");
+        if (start != StartCondition::AtReference)
+            throw InvalidInput("--start", "must be reference with --ccc-kp/--ccc-ki: the coupled "
+                                          "run starts at rest at the reference");
+        Session session = Session::paperDefault();
+        for (int i = 0; i < 2; ++i) {
+            const PolePlacementPreset p = *findPolePlacementPreset(i == 0 ? "x-axis" : "y-axis");
+            AxisSettings& axis = session.axes[static_cast<std::size_t>(i)];
+            axis.method = DesignMethod::PolePlacementZpetc;
+            axis.pp.a = p.a.ascending();
+            axis.pp.b = p.b.ascending();
+            axis.pp.t1 = p.t.coefficient(1);
+            axis.pp.tsSeconds = p.tsSeconds;
+        }
+        session.trajectory.kind = TrajectoryKind::Circle;
+        session.trajectory.radius = circle.radius;
+        session.trajectory.omegaRadPerSec = circle.omegaRadPerSec;
+        session.trajectory.rampInSeconds = 0.0;
+        session.trajectory.durationSeconds = duration;
+        session.crossCoupling = coupling;
+        const SessionEvaluation evaluation = evaluateSession(session);
+        if (!evaluation.couplingError.empty())
+            throw InvalidInput("--ccc-kp", evaluation.couplingError);
+        if (!evaluation.coupledTrajectory)
+            throw InvalidInput("--ccc-kp", "the coupled run could not be made: " +
+                                               evaluation.axes[0].error + evaluation.axes[1].error);
+        couplingJson = trajectoryCouplingJson(session, *evaluation.coupledTrajectory);
+    }
     print({{"preset", preset},
            {"radius", number(circle.radius)},
            {"omega", number(circle.omegaRadPerSec)},
@@ -269,7 +307,8 @@ int runContour(const QStringList& argv) {
            {"y_axis",
             QJsonObject{{"metrics", trackingJson(run.y)}, {"preview_steps", yZ.previewSteps}}},
            {"contour_error", QJsonObject{{"without_ff", contourJson(run.contourWithoutFf)},
-                                         {"with_ff", contourJson(run.contourWithFf)}}}});
+                                         {"with_ff", contourJson(run.contourWithFf)}}},
+           {"cross_coupling", couplingJson}});
     return 0;
 }
 

@@ -38,6 +38,8 @@ private slots:
     void circleMatchesTheCore();
     void squareCornersAndCsv();
     void ballbarProgramGivesBothDirections();
+    void crossCouplingMatchesTheCore();
+    void presetCrossCoupling();
     void badInput_data();
     void badInput();
 };
@@ -186,6 +188,57 @@ void TstCliContour::squareCornersAndCsv() {
     XYT_COMPARE_NEAR(last[4].toDouble(), 0.0, 0.0, 1e-9);
 }
 
+void TstCliContour::crossCouplingMatchesTheCore() {
+    // The square under the paper's PIs with Koren's coupling: the figures are those of
+    // runProgramContour with Session::crossCoupling set, computed here again; the independent
+    // axes' contour error is the plain run's.
+    const auto run =
+        xyt::test::runCli({"contour", "--gcode", example("square_sharp_corners.nc"), "--ccc-kp",
+                           "0.1", "--ccc-ki", "0.5", "--ccc-estimate", "linear"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    xyt::Session s = xyt::Session::paperDefault();
+    s.crossCoupling = {0.1, 0.5, xyt::ContourEstimateKind::Linear};
+    xyt::ContourRunOptions options;
+    options.profile.maxAccelMmPerS2 = 100.0; // the CLI's default
+    options.profile.dtSeconds = 0.001;
+    const xyt::ContourRun core =
+        xyt::runProgramContour(s, readExample("square_sharp_corners.nc"), options);
+    // JSON numbers are printed with 17 significant digits: the same doubles.
+    QCOMPARE(o["contour_error"].toObject()["max"].toDouble(), core.contour.maxAbs);
+    const QJsonObject c = o["cross_coupling"].toObject();
+    QCOMPARE(c["kp"].toDouble(), 0.1);
+    QCOMPARE(c["estimate"].toString(), QStringLiteral("linear"));
+    QCOMPARE(c["independent_axes"].toObject()["contour_error"].toObject()["max"].toDouble(),
+             core.independent->contour.maxAbs);
+    const QJsonObject line = c["line_loop"].toObject();
+    QCOMPARE(line["spectral_radius"].toDouble(), core.couplingStability->worst.spectralRadius);
+    QCOMPARE(line["lines_checked"].toInt(), 2);     // the square's lines at 0 and 90 degrees
+    QCOMPARE(line["frozen_directions"].toInt(), 0); // no arc
+    QCOMPARE(line["poles"].toArray().size(),
+             static_cast<qsizetype>(core.couplingStability->worst.poles.size()));
+    // Off: no cross_coupling block.
+    const auto plain =
+        xyt::test::runCli({"contour", "--gcode", example("square_sharp_corners.nc")});
+    QVERIFY(plain.json()["cross_coupling"].isNull());
+}
+
+void TstCliContour::presetCrossCoupling() {
+    // The paper-zpetc pair on its circle: the coupled block runs the session's two
+    // pole-placement axes, coupled and independent (both from rest at r(0)).
+    const auto run = xyt::test::runCli({"contour", "--ccc-kp", "3", "--ccc-ki", "1"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject c = run.json()["cross_coupling"].toObject();
+    const double coupled = c["contour_error"].toObject()["max"].toDouble();
+    const double alone =
+        c["independent_axes"].toObject()["contour_error"].toObject()["max"].toDouble();
+    QVERIFY(coupled > 0.0 && alone > 0.0);
+    QVERIFY(coupled <= alone); // the ZPETC axes are near-perfect; the coupling does not hurt
+    QCOMPARE(c["line_loop"].toObject()["period"].toDouble(), 0.07);
+}
+
 void TstCliContour::badInput_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("message"); // a part of the one stderr line
@@ -243,6 +296,20 @@ void TstCliContour::badInput_data() {
                             << "--method: must be";
     QTest::newRow("preset option")
         << QStringList{"--gcode", star, "--radius", "5"} << "--radius: is not an option";
+    QTest::newRow("negative coupling gain") << QStringList{"--gcode", star, "--ccc-kp", "-0.1"}
+                                            << "--ccc-kp: must be a finite number >= 0";
+    QTest::newRow("coupling gain nan") << QStringList{"--gcode", star, "--ccc-ki", "nan"}
+                                       << "--ccc-ki: 'nan' is not a finite number";
+    QTest::newRow("coupling estimate")
+        << QStringList{"--gcode", star, "--ccc-kp", "1", "--ccc-estimate", "parabolic"}
+        << "--ccc-estimate: must be linear or circular";
+    // The coupled loop of the paper's PIs is unstable for this gain on MOVE's feed line
+    // (program line 2, along x: spectral radius 1.048); the G0 rapid is not coupled.
+    QTest::newRow("unstable line")
+        << QStringList{"--gcode", "MOVE", "--ccc-kp", "100"}
+        << "cross_coupling: the coupled loop is unstable on program line 2 (direction 0 deg)";
+    QTest::newRow("preset margin with coupling")
+        << QStringList{"--ccc-kp", "1", "--margin", "0.1"} << "--margin: cannot go with";
     QTest::newRow("unwritable csv")
         << QStringList{"--gcode", star, "--csv", "/nonexistent/x.csv"} << "--csv: cannot write";
 }

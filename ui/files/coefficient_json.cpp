@@ -137,11 +137,30 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
         {"note",
          "the PI runs in integrator form I[k] = I[k-1] + c0 e[k] + c1 e[k-1], u = sat(kp e + I), "
          "with this anti-windup; see the C export for the exact step"}};
-    return {{"format", "xytune-coefficients"},
-            {"version", 1},
-            {"umax_volts", finite(session.umaxVolts, "umax")},
-            {"implementation", implementation},
-            {"axes", axes}};
+    QJsonObject out{{"format", "xytune-coefficients"},
+                    {"version", 1},
+                    {"umax_volts", finite(session.umaxVolts, "umax")},
+                    {"implementation", implementation},
+                    {"axes", axes}};
+    if (session.crossCoupling.active()) {
+        // The cross-coupled controller over both axes (core/design/cross_coupling.h).
+        const CrossCoupling& c = session.crossCoupling;
+        out.insert(
+            "cross_coupling",
+            QJsonObject{{"kp", finite(c.kp, "cross_coupling.kp")},
+                        {"ki", finite(c.ki, "cross_coupling.ki")},
+                        {"estimate", contourEstimateName(c.estimate)},
+                        {"corner_turn_rad", kCornerTurnRad},
+                        {"units", "kp in V/mm, ki in V/(mm s), errors in mm"},
+                        {"law",
+                         "each period T: eps = -ex sin(theta) + ey cos(theta) (+ kappa tau^2 / 2, "
+                         "tau = ex cos(theta) + ey sin(theta), circular); I+ = I + T eps; "
+                         "uc = kp eps + ki I+; u_x += Cx uc, u_y += Cy uc (Cx, Cy = d eps / d "
+                         "ex, d eps / d ey) before each axis' limit; I+ kept unless an axis "
+                         "clips; I = 0 where theta turns by more than corner_turn_rad in one "
+                         "period and on rapid moves"}});
+    }
+    return out;
 }
 
 } // namespace xyt::files

@@ -10,6 +10,7 @@
 #include "core/session/contour_run.h"
 #include "core/session/design_method_module.h"
 #include "core/session/session.h"
+#include "tests/support/reference_data.h"
 
 #include <QTest>
 
@@ -244,6 +245,37 @@ private slots:
                 QCOMPARE(coupled.independent->iso->circularDeviationG,
                          plain.circular->iso.circularDeviationG);
             }
+    }
+
+    /// The same run simulated independently in SciPy (tests/data/gen_cross_coupling.py: each
+    /// axis' closed loop discretized with scipy.linalg.expm, the law written again in Python):
+    /// max and RMS contour error of every case to 1e-8 relative. Both are exact discretizations
+    /// of one linear system; a one-ulp change of the step matrices moves these figures by 9e-11
+    /// (the loops' slow poles at 1 - 7e-6 amplify it), so 1e-8 leaves a margin of 100.
+    void thePaperCircleAgreesWithAnIndependentSimulation() {
+        const test::CsvTable table = test::readCsv("cross_coupling_circle.csv");
+        QCOMPARE(table.rows.size(), std::size_t{5});
+        const GcodeProgram program = readGcode(kPaperCircle);
+        for (std::size_t row = 0; row < table.rows.size(); ++row) {
+            Session s = Session::paperDefault();
+            const QString estimate = table.rows[row].at(table.column("estimate"));
+            s.crossCoupling.kp = table.number(row, "kp");
+            s.crossCoupling.ki = table.number(row, "ki");
+            s.crossCoupling.estimate =
+                estimate == "linear" ? ContourEstimateKind::Linear : ContourEstimateKind::Circular;
+            ContourRunOptions o = contourOptions();
+            o.compareIndependentAxes = false;
+            const ContourRun run = runProgramContour(s, program, o);
+            QCOMPARE(run.trace.coupling.has_value(), estimate != "none");
+            const double max = table.number(row, "max_contour_error_mm");
+            const double rms = table.number(row, "rms_contour_error_mm");
+            QVERIFY2(
+                std::abs(run.contour.maxAbs - max) <= 1e-8 * max,
+                qPrintable(QString("%1: %2 vs %3").arg(estimate).arg(run.contour.maxAbs).arg(max)));
+            QVERIFY2(
+                std::abs(run.contour.rms - rms) <= 1e-8 * rms,
+                qPrintable(QString("%1: %2 vs %3").arg(estimate).arg(run.contour.rms).arg(rms)));
+        }
     }
 
     /// Refusals name the field: a negative or non-finite gain, and axes at two periods.

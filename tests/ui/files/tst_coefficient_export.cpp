@@ -141,6 +141,16 @@ void TstCoefficientExport::jsonParsesBack() {
     QCOMPARE(den.size(), 5);
     XYT_COMPARE_NEAR(den[3].toDouble(), 2334.0, 1e-14, 0.0);
     XYT_COMPARE_NEAR(den[4].toDouble(), 16.0, 1e-14, 0.0);
+    // The cross-coupled controller travels with the coefficients when it is on, and only then.
+    QVERIFY(!json.contains("cross_coupling"));
+    Session coupled = s;
+    coupled.crossCoupling = {0.1, 1.5, ContourEstimateKind::Linear};
+    const QJsonObject c =
+        files::coefficientsJson(coupled, evaluateSession(coupled))["cross_coupling"].toObject();
+    QCOMPARE(c["kp"].toDouble(), 0.1);
+    QCOMPARE(c["ki"].toDouble(), 1.5);
+    QCOMPARE(c["estimate"].toString(), QStringLiteral("linear"));
+    QCOMPARE(c["corner_turn_rad"].toDouble(), kCornerTurnRad);
 }
 
 void TstCoefficientExport::octaveScriptDefinesTheTfObjects() {
