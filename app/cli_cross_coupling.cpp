@@ -61,6 +61,94 @@ QJsonObject deviationJson(const ContourDeviation& d) {
 
 } // namespace
 
+const QStringList kCouplingSweepOptions = {"ccc-sweep", "ccc-sweep-kp", "ccc-sweep-ki"};
+
+namespace {
+
+/// A comma-separated list of gains, refused naming @p option.
+std::vector<double> gainList(const QString& text, const std::string& option) {
+    std::vector<double> out;
+    for (const QString& word : text.split(',')) {
+        const QString w = word.trimmed();
+        bool ok = false;
+        const double v = w.toDouble(&ok);
+        if (!ok)
+            throw InvalidInput(option, "'" + w.toStdString() +
+                                           "' is not a number (a comma-separated list of gains, "
+                                           "e.g. 0,0.1,1)");
+        out.push_back(v);
+    }
+    return out;
+}
+
+QJsonObject sweepCellJson(const CouplingSweepCell& c) {
+    const bool ok = c.status == CouplingCellStatus::Ok;
+    QJsonObject o{{"kp", number(c.coupling.kp)},
+                  {"ki", number(c.coupling.ki)},
+                  {"status", couplingCellStatusName(c.status)},
+                  {"contour_error", ok ? QJsonValue(QJsonObject{{"max", number(c.maxAbsMm)},
+                                                                {"rms", number(c.rmsMm)}})
+                                       : QJsonValue()},
+                  {"spectral_radius", ok ? number(c.spectralRadius) : QJsonValue()},
+                  {"disk_margin", ok ? number(c.diskMargin) : QJsonValue()},
+                  {"saturated", ok ? QJsonValue(c.saturated) : QJsonValue()}};
+    if (!c.message.empty())
+        o.insert("message", QString::fromStdString(c.message));
+    if (!c.warning.empty())
+        o.insert("warning", QString::fromStdString(c.warning));
+    return o;
+}
+
+} // namespace
+
+std::optional<CouplingSweepGrid> parseCouplingSweepGrid(const CliArgs& args) {
+    if (!args.flag("ccc-sweep")) {
+        for (const char* option : {"ccc-sweep-kp", "ccc-sweep-ki"})
+            if (args.has(option))
+                throw InvalidInput(CliArgs::field(option), "needs --ccc-sweep");
+        return std::nullopt;
+    }
+    CouplingSweepGrid grid = defaultCouplingSweepGrid();
+    if (const auto kp = args.value("ccc-sweep-kp"))
+        grid.kpVoltsPerMm = gainList(*kp, "--ccc-sweep-kp");
+    if (const auto ki = args.value("ccc-sweep-ki"))
+        grid.kiVoltsPerMmSecond = gainList(*ki, "--ccc-sweep-ki");
+    try {
+        return normalizedCouplingSweepGrid(grid);
+    } catch (const InvalidInput& e) {
+        if (e.field() == "ki")
+            throw InvalidInput("--ccc-sweep-ki", e.reason());
+        throw InvalidInput("--ccc-sweep-kp", // "kp", or the pairs of both lists ("grid")
+                           e.field() == "grid" ? "with --ccc-sweep-ki: " + e.reason() : e.reason());
+    }
+}
+
+QJsonObject couplingSweepJson(const CouplingSweepResult& sweep) {
+    QJsonArray cells;
+    for (const CouplingSweepCell& c : sweep.cells)
+        cells.append(sweepCellJson(c));
+    QJsonValue best;
+    if (sweep.best) {
+        QJsonObject b = sweepCellJson(sweep.cells[*sweep.best]);
+        b.insert("index", static_cast<qint64>(*sweep.best));
+        b.insert("among", sweep.bestBasis == CouplingBestBasis::Robust        ? "robust"
+                          : sweep.bestBasis == CouplingBestBasis::WithinLimit ? "within_limit"
+                                                                              : "saturating");
+        best = b;
+    }
+    QJsonObject independent = sweepCellJson(sweep.independent);
+    for (const char* key : {"kp", "ki", "spectral_radius", "disk_margin"})
+        independent.remove(key);
+    return {{"estimate", contourEstimateName(sweep.estimate)},
+            {"grid", QJsonObject{{"kp", numbers(sweep.grid.kpVoltsPerMm)},
+                                 {"ki", numbers(sweep.grid.kiVoltsPerMmSecond)}}},
+            {"independent_axes", independent},
+            {"cells", cells},
+            {"best", best},
+            {"rule", kBestCouplingRule},
+            {"cancelled", sweep.cancelled}};
+}
+
 QJsonValue trajectoryCouplingJson(const Session& session, const CoupledTrajectoryRun& run) {
     QJsonObject o = gains(session.crossCoupling);
     o.insert("line_loop", couplingStabilityJson(run.stability));

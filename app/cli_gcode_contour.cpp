@@ -15,6 +15,7 @@
 #include "core/io/file_io.h"
 #include "core/model/errors.h"
 #include "core/session/contour_run.h"
+#include "core/session/coupled_digital_run.h"
 #include "core/session/design_method_module.h"
 #include "core/session/session.h"
 #include "core/simulation/metrics.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace xyt::cli {
@@ -183,7 +185,8 @@ Session sessionFor(const CliArgs& args) {
 
 } // namespace
 
-QJsonValue programCouplingJson(const Session& session, const ContourRun& run) {
+QJsonValue programCouplingJson(const Session& session, const ContourRun& run,
+                               const DigitalContourRun* digital) {
     const CrossCoupling& c = session.crossCoupling;
     if (!c.active())
         return QJsonValue();
@@ -191,6 +194,11 @@ QJsonValue programCouplingJson(const Session& session, const ContourRun& run) {
         {"kp", number(c.kp)}, {"ki", number(c.ki)}, {"estimate", contourEstimateName(c.estimate)}};
     if (run.couplingStability)
         o.insert("line_loop", couplingStabilityJson(*run.couplingStability));
+    if (digital) {
+        // The axes' digital implementations (what the C export runs) coupled alike.
+        o.insert("digital", QJsonObject{{"period", number(digital->periodSeconds)},
+                                        {"contour_error", contourJson(digital->contour)}});
+    }
     if (run.independent) {
         QJsonObject alone{{"contour_error", contourJson(run.independent->contour)}};
         if (run.independent->iso)
@@ -227,8 +235,9 @@ void writeContourCsv(const QString& path, const ContourRun& run) {
 } // namespace
 
 int runGcodeContour(const CliArgs& args) {
-    args.allowOnly(kGcodeContourOptions + kCrossCouplingOptions + frictionOptions() +
-                   frictionOptions("x.") + frictionOptions("y."));
+    args.allowOnly(kGcodeContourOptions + kCrossCouplingOptions + kCouplingSweepOptions +
+                   frictionOptions() + frictionOptions("x.") + frictionOptions("y."));
+    const std::optional<CouplingSweepGrid> sweepGrid = parseCouplingSweepGrid(args);
     const QString file = *args.value("gcode");
     GcodeReadOptions readOptions;
     readOptions.rapidFeedMmPerMin =
@@ -254,30 +263,45 @@ int runGcodeContour(const CliArgs& args) {
         namingOptions(file, [&] { return runProgramContour(session, program, options); });
     if (const auto csv = args.value("csv"))
         writeContourCsv(*csv, run);
+    std::optional<DigitalContourRun> digital;
+    if (session.crossCoupling.active())
+        digital = namingOptions(
+            file, [&] { return runDigitalProgramContour(session, program, options); });
+    // The coupling's gains swept over the same program and profile (the session's estimate).
+    std::optional<CouplingSweepResult> sweep;
+    if (sweepGrid)
+        sweep = namingOptions(file, [&] {
+            return sweepProgramCoupling(session, program, options, *sweepGrid, {},
+                                        &run.trace.profile);
+        });
 
     const FeedProfile& p = run.trace.profile;
     QJsonArray warnings;
     for (const std::string& w : run.warnings)
         warnings.append(QString::fromStdString(w));
-    print({{"gcode", file},
-           {"lines", static_cast<qint64>(program.lines)},
-           {"segments", static_cast<qint64>(program.path.size())},
-           {"length", number(program.path.length())},
-           {"profile", QJsonObject{{"duration", number(p.totalTimeSeconds)},
-                                   {"dt", number(p.dtSeconds)},
-                                   {"samples", static_cast<qint64>(p.t.size())},
-                                   {"feed_scale", number(options.profile.feedScale)},
-                                   {"max_accel", number(options.profile.maxAccelMmPerS2)},
-                                   {"max_jerk", number(options.profile.maxJerkMmPerS3)},
-                                   {"corner_angle", number(options.profile.cornerAngleDeg)},
-                                   {"sharp_corners", static_cast<qint64>(p.corners.size())}}},
-           {"umax", number(session.umaxVolts)},
-           {"x_axis", axisJson(session.axes[0], run.trace.axes[0])},
-           {"y_axis", axisJson(session.axes[1], run.trace.axes[1])},
-           {"contour_error", contourJson(run.contour)},
-           {"iso230_4", run.circular ? QJsonValue(isoJson(*run.circular)) : QJsonValue()},
-           {"cross_coupling", programCouplingJson(session, run)},
-           {"warnings", warnings}});
+    QJsonObject out{
+        {"gcode", file},
+        {"lines", static_cast<qint64>(program.lines)},
+        {"segments", static_cast<qint64>(program.path.size())},
+        {"length", number(program.path.length())},
+        {"profile", QJsonObject{{"duration", number(p.totalTimeSeconds)},
+                                {"dt", number(p.dtSeconds)},
+                                {"samples", static_cast<qint64>(p.t.size())},
+                                {"feed_scale", number(options.profile.feedScale)},
+                                {"max_accel", number(options.profile.maxAccelMmPerS2)},
+                                {"max_jerk", number(options.profile.maxJerkMmPerS3)},
+                                {"corner_angle", number(options.profile.cornerAngleDeg)},
+                                {"sharp_corners", static_cast<qint64>(p.corners.size())}}},
+        {"umax", number(session.umaxVolts)},
+        {"x_axis", axisJson(session.axes[0], run.trace.axes[0])},
+        {"y_axis", axisJson(session.axes[1], run.trace.axes[1])},
+        {"contour_error", contourJson(run.contour)},
+        {"iso230_4", run.circular ? QJsonValue(isoJson(*run.circular)) : QJsonValue()},
+        {"cross_coupling", programCouplingJson(session, run, digital ? &*digital : nullptr)},
+        {"warnings", warnings}};
+    if (sweep)
+        out.insert("cross_coupling_sweep", couplingSweepJson(*sweep));
+    print(out);
     return 0;
 }
 

@@ -233,7 +233,7 @@ int runZpetc(const QStringList& argv) {
 }
 
 int runContour(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv);
+    const CliArgs args = CliArgs::parse(argv, {"ccc-sweep"}); // the one flag (--gcode only)
     if (args.has("gcode"))
         return runGcodeContour(args);
     args.allowOnly(QStringList{"preset", "radius", "omega", "duration", "start", "margin"} +

@@ -5,6 +5,7 @@
 #include "core/session/design_method_module.h"
 #include "core/session/pid_feedforward_method.h"
 #include "core/simulation/step_view.h"
+#include "ui/coupling_sweep_dialog.h"
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
 #include "ui/friction_curve_dialog.h"
@@ -538,6 +539,16 @@ void MainWindow::connectControls() {
             &TuningSession::setTrajectory);
     connect(crossCouplingEditor_, &CrossCouplingEditor::couplingEdited, session_,
             &TuningSession::setCrossCoupling);
+    connect(crossCouplingEditor_, &CrossCouplingEditor::tuneRequested, this, [this] {
+        // One dialog, kept with its last sweep; opened without a current one, it sweeps.
+        auto* dialog = findChild<CouplingSweepDialog*>();
+        if (!dialog)
+            dialog = new CouplingSweepDialog(session_, this);
+        dialog->show();
+        dialog->raise();
+        dialog->activateWindow();
+        dialog->runUnlessCurrent();
+    });
     connect(umax_, &NumberField::valueAccepted, this, [this](double v) {
         if (v != session_->session().umaxVolts)
             session_->setUmax(v);

@@ -7,19 +7,24 @@
 
 namespace xyt {
 
-ContourEstimate linearContourEstimate(double ex, double ey, double thetaRad) {
-    const double s = std::sin(thetaRad), c = std::cos(thetaRad);
-    return {-ex * s + ey * c, -s, c};
-}
-
-ContourEstimate circularContourEstimate(double ex, double ey, double thetaRad,
-                                        double curvaturePerMm) {
-    const double s = std::sin(thetaRad), c = std::cos(thetaRad);
-    if (curvaturePerMm == 0.0)
+ContourEstimate contourEstimateAlong(double ex, double ey, double cosTheta, double sinTheta,
+                                     double curvaturePerMm, bool circular) {
+    const double c = cosTheta, s = sinTheta;
+    if (!circular || curvaturePerMm == 0.0)
         return {-ex * s + ey * c, -s, c};
     const double tau = ex * c + ey * s;
     const double k = curvaturePerMm;
     return {-ex * s + ey * c + 0.5 * k * tau * tau, -s + k * tau * c, c + k * tau * s};
+}
+
+ContourEstimate linearContourEstimate(double ex, double ey, double thetaRad) {
+    return contourEstimateAlong(ex, ey, std::cos(thetaRad), std::sin(thetaRad), 0.0, false);
+}
+
+ContourEstimate circularContourEstimate(double ex, double ey, double thetaRad,
+                                        double curvaturePerMm) {
+    return contourEstimateAlong(ex, ey, std::cos(thetaRad), std::sin(thetaRad), curvaturePerMm,
+                                true);
 }
 
 double exactContourErrorNearReference(double rx, double ry, double thetaRad, double curvaturePerMm,

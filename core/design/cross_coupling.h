@@ -28,6 +28,15 @@ struct ContourEstimate {
     double gainX = 0.0, gainY = 0.0;
 };
 
+/**
+ * The estimate along the unit tangent (@p cosTheta, @p sinTheta) of the direction of travel:
+ * the circular one with @p curvaturePerMm when @p circular, else (or at zero curvature) the
+ * linear one. linearContourEstimate and circularContourEstimate are this with the cosine and
+ * sine of theta; the coupled run and the exported C step perform exactly its operations.
+ */
+ContourEstimate contourEstimateAlong(double ex, double ey, double cosTheta, double sinTheta,
+                                     double curvaturePerMm, bool circular);
+
 /// The linear estimate (see ContourEstimate).
 ContourEstimate linearContourEstimate(double ex, double ey, double thetaRad);
 
@@ -59,8 +68,8 @@ enum class ContourEstimateKind { Linear, Circular };
  * and I_k+ is kept only when neither axis' command is clipped at its limit at that sample
  * (conditional integration, the anti-windup); otherwise I stays I_k. Where the path's direction
  * turns by more than kCornerTurnRad from one sample to the next (a sharp corner, where the feed
- * profile stops), I_k is first set to 0: what built up along the old normal means nothing along
- * the new one.
+ * profile stops: the tangents of two samples have a dot product below cos(kCornerTurnRad)),
+ * I_k is first set to 0: what built up along the old normal means nothing along the new one.
  * kp = ki = 0 switches the coupling off: every run is then the uncoupled one, bit for bit.
  */
 /// A turn of the direction of travel between two samples beyond which the coupling's integral

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/simulation/resample.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
 
@@ -150,6 +151,22 @@ void addFeedforward(std::vector<double>& into, const std::vector<double>& add) {
     }
     for (std::size_t k = 0; k < into.size() && k < add.size(); ++k)
         into[k] += add[k];
+}
+
+std::vector<double> programAtPeriod(const std::vector<double>& t,
+                                    const std::vector<double>& reference, double periodSeconds,
+                                    const std::string& field, std::size_t lead) {
+    const double steps = std::floor(t.back() / periodSeconds + 1e-9);
+    if (!(steps >= 1.0))
+        throw InvalidInput(field, formatNumber(periodSeconds) +
+                                      " s is longer than the program's run (" +
+                                      formatNumber(t.back()) + " s)");
+    if (steps + 1.0 + static_cast<double>(lead) > static_cast<double>(sampleLimit()))
+        throw InvalidInput(field, "the run needs more samples than this machine holds");
+    std::vector<double> times(static_cast<std::size_t>(steps) + 1 + lead);
+    for (std::size_t k = 0; k < times.size(); ++k)
+        times[k] = static_cast<double>(k) * periodSeconds;
+    return resampleLinear(t, reference, times);
 }
 
 namespace {

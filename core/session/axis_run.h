@@ -55,6 +55,17 @@ std::unique_ptr<SteppedLoop> steppedContinuousAxis(const AxisSettings& axis, int
                                                    double dtSeconds, double umaxVolts);
 
 /**
+ * A program's reference (@p reference at the times @p t, from t = 0) at the times k
+ * @p periodSeconds, k = 0 .. floor(t.back() / period) (+ @p lead samples beyond, the last value
+ * held, for a ZPETC's preview): linear between the program's samples.
+ * @throws InvalidInput @p field when the period is longer than the run or the run needs more
+ *         samples than the machine holds.
+ */
+std::vector<double> programAtPeriod(const std::vector<double>& t,
+                                    const std::vector<double>& reference, double periodSeconds,
+                                    const std::string& field, std::size_t lead = 0);
+
+/**
  * The table under @p axis for a loop's options (LoopSimulationOptions::table): null for the
  * linear table. @throws InvalidInput naming "axes[i].friction.<field>" for a value out of range
  * (validateTableFriction), and on a pole-placement axis, whose ARX model has no mass to put

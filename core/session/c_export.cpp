@@ -76,6 +76,17 @@ std::string cReal(const std::string& constant) {
     return "(xyt_real)" + constant;
 }
 
+std::string cCoupledAxisFunction(const std::string& id, const std::string& command,
+                                 bool usesGiven) {
+    return "static inline XYT_MAYBE_UNUSED xyt_real xyt_" + id + "_coupled(xyt_" + id +
+           "_state *s, xyt_real reference, xyt_real measured, xyt_real ff, xyt_real extra, "
+           "const xyt_real *given) {\n"
+           "    xyt_real t = " +
+           command + " + ff;\n" + (usesGiven ? "" : "    (void)given;\n") +
+           "    if (extra != (xyt_real)0)\n        t += extra;\n"
+           "    return t > XYT_UMAX ? XYT_UMAX : (t < -XYT_UMAX ? -XYT_UMAX : t);\n}\n";
+}
+
 std::string cSaturate(const std::string& target, const std::string& v) {
     return target + " = " + v + " > XYT_UMAX ? XYT_UMAX : (" + v +
            " < -XYT_UMAX ? -XYT_UMAX : " + v + ");\n";

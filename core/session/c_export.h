@@ -46,6 +46,13 @@ std::string cArray(const std::string& name, const std::vector<double>& v, const 
 std::string cReal(const std::string& constant);
 /// The saturation of v at +-XYT_UMAX into u, as stepDigitalPi writes it.
 std::string cSaturate(const std::string& target, const std::string& v);
+/**
+ * An axis' xyt_<id>_coupled for the cross-coupled step (DesignMethodModule::cCoupledAxis): the
+ * axis' own command @p command (a C expression of s, reference, measured and, when
+ * @p usesGiven, given), plus the feedforward ff and the coupling's extra volts, clipped to
+ * +-XYT_UMAX.
+ */
+std::string cCoupledAxisFunction(const std::string& id, const std::string& command, bool usesGiven);
 /// A shift register update "for i = n-1 .. 1: a[i] = a[i-1]" in C.
 std::string cShift(const std::string& array, const std::string& length);
 

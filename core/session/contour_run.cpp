@@ -22,33 +22,6 @@ namespace xyt {
 
 namespace {
 
-/// The path's direction and curvature at the times k T (k < n) of a coupled run on @p profile.
-CouplingDirections couplingDirections(const Path& path, const FeedProfile& profile, double period,
-                                      std::size_t n, const std::vector<bool>* rapid) {
-    CouplingDirections out;
-    out.thetaRad.resize(n);
-    out.curvaturePerMm.resize(n);
-    if (rapid)
-        out.active.resize(n);
-    const bool sameGrid =
-        n <= profile.t.size() && std::abs(period - profile.dtSeconds) <= 1e-9 * profile.dtSeconds;
-    std::vector<double> s;
-    if (!sameGrid) {
-        std::vector<double> times(n);
-        for (std::size_t k = 0; k < n; ++k)
-            times[k] = static_cast<double>(k) * period;
-        s = resampleLinear(profile.t, profile.s, times);
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        const PathPoint at = sameGrid ? path.at(profile.s[k], profile.segment[k]) : path.at(s[k]);
-        out.thetaRad[k] = std::atan2(at.tangent.y, at.tangent.x);
-        out.curvaturePerMm[k] = path.segments()[at.segment].curvature();
-        if (rapid)
-            out.active[k] = !(*rapid)[at.segment];
-    }
-    return out;
-}
-
 /// Both axes of @p session along @p p's path in lockstep with the session's cross-coupling, off
 /// on the segments @p rapid marks (null: none).
 void coupledTrace(const Session& session, const Path& path, const std::vector<bool>* rapid,
@@ -70,7 +43,7 @@ void coupledTrace(const Session& session, const Path& path, const std::vector<bo
                                " s (a pole-placement axis runs at its Ts, a continuous one at "
                                "the trajectory's dt)");
     const CouplingDirections directions =
-        couplingDirections(path, p, loops[0]->periodSeconds(), loops[0]->samples(), rapid);
+        pathCouplingDirections(path, p, loops[0]->periodSeconds(), loops[0]->samples(), rapid);
     out.coupling = runCrossCoupled(*loops[0], *loops[1], directions, session.crossCoupling);
     for (std::size_t i = 0; i < 2; ++i) {
         SimulationResult& run = out.axes[i] = loops[i]->takeResult();
@@ -133,6 +106,50 @@ void addAxisWarnings(const ContourTrace& t, std::vector<std::string>& warnings) 
 }
 
 } // namespace
+
+CouplingDirections pathCouplingDirections(const Path& path, const FeedProfile& profile,
+                                          double period, std::size_t n,
+                                          const std::vector<bool>* rapid) {
+    CouplingDirections out;
+    out.thetaRad.resize(n);
+    out.curvaturePerMm.resize(n);
+    if (rapid)
+        out.active.resize(n);
+    const bool sameGrid =
+        n <= profile.t.size() && std::abs(period - profile.dtSeconds) <= 1e-9 * profile.dtSeconds;
+    std::vector<double> s;
+    if (!sameGrid) {
+        std::vector<double> times(n);
+        for (std::size_t k = 0; k < n; ++k)
+            times[k] = static_cast<double>(k) * period;
+        s = resampleLinear(profile.t, profile.s, times);
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+        const PathPoint at = sameGrid ? path.at(profile.s[k], profile.segment[k]) : path.at(s[k]);
+        out.thetaRad[k] = std::atan2(at.tangent.y, at.tangent.x);
+        out.curvaturePerMm[k] = path.segments()[at.segment].curvature();
+        if (rapid)
+            out.active[k] = !(*rapid)[at.segment];
+    }
+    return out;
+}
+
+std::vector<bool> programRapidSegments(const GcodeProgram& program) {
+    std::vector<bool> rapid(program.segments.size());
+    for (std::size_t i = 0; i < program.segments.size(); ++i)
+        rapid[i] = program.segments[i].rapid;
+    return rapid;
+}
+
+ContourErrorOptions programContourErrorOptions(const GcodeProgram& program,
+                                               const ContourRunOptions& options) {
+    ContourErrorOptions out;
+    out.cornerAngleDeg = options.profile.cornerAngleDeg;
+    out.cornerWindowMm = options.cornerWindowMm;
+    out.measuredSegments = programRapidSegments(program);
+    out.measuredSegments.flip();
+    return out;
+}
 
 std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program,
                                                         const ContourTrace& trace,
@@ -202,16 +219,9 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         out.couplingStability =
             checkCouplingStability(session, options.profile.dtSeconds, lines, arcs);
     }
-    std::vector<bool> rapid(program.segments.size());
-    for (std::size_t i = 0; i < program.segments.size(); ++i)
-        rapid[i] = program.segments[i].rapid;
+    const std::vector<bool> rapid = programRapidSegments(program);
     out.trace = trace(session, program.path, feeds, options, plannedProfile, true, &rapid);
-    ContourErrorOptions errorOptions;
-    errorOptions.cornerAngleDeg = options.profile.cornerAngleDeg;
-    errorOptions.cornerWindowMm = options.cornerWindowMm;
-    errorOptions.measuredSegments.resize(program.segments.size());
-    for (std::size_t i = 0; i < program.segments.size(); ++i)
-        errorOptions.measuredSegments[i] = !program.segments[i].rapid;
+    const ContourErrorOptions errorOptions = programContourErrorOptions(program, options);
     out.contour =
         contourError(program.path, out.trace.profile.t, out.trace.x, out.trace.y, errorOptions);
     if (session.crossCoupling.active() && options.compareIndependentAxes) {

@@ -104,6 +104,24 @@ struct ContourRun {
 };
 
 /**
+ * The direction of travel and signed curvature of @p path at the times k @p periodSeconds
+ * (k < @p n) of a run along @p profile (its samples when the period is its dt, else its arc
+ * length interpolated), and with @p rapid (one flag per segment, or null) whether the coupling
+ * acts there: what the cross-coupled controller is given each period.
+ */
+CouplingDirections pathCouplingDirections(const Path& path, const FeedProfile& profile,
+                                          double periodSeconds, std::size_t n,
+                                          const std::vector<bool>* rapid);
+
+/// Whether each segment of @p program is a rapid move (G0): no contouring there.
+std::vector<bool> programRapidSegments(const GcodeProgram& program);
+
+/// How a program's contour error is measured: the corners of @p options' profile and window,
+/// rapids (G0) left out of the statistics.
+ContourErrorOptions programContourErrorOptions(const GcodeProgram& program,
+                                               const ContourRunOptions& options);
+
+/**
  * Runs @p program with the session's axes (x = axes[0] follows x(t), y = axes[1] follows y(t)),
  * each with its own method and controller, under the session's actuator limit. The profile is
  * planned once; each axis starts at rest at the program's start point. When the program is a

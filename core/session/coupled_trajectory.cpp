@@ -14,9 +14,64 @@ namespace xyt {
 
 namespace {
 
-/// The reference's direction of travel and curvature by central differences (see
-/// CoupledTrajectoryRun), the standing samples given the nearest direction of travel.
-CouplingDirections referenceDirections(const std::vector<double>& x, const std::vector<double>& y) {
+/// The contour error of the traced (tx, ty) against the reference (see CoupledTrajectoryRun).
+ContourDeviation deviation(const Session& session, const std::vector<double>& t,
+                           const std::vector<double>& rx, const std::vector<double>& ry,
+                           const std::vector<double>& tx, const std::vector<double>& ty) {
+    ContourDeviation out;
+    const TrajectorySettings& traj = session.trajectory;
+    if (traj.kind == TrajectoryKind::Circle) {
+        const Circle circle{traj.radius, traj.omegaRadPerSec, 0.0, 0.0, traj.rampInSeconds};
+        try {
+            const ContourError e = circleContourError(t, tx, ty, circle);
+            return {e.maxAbs, e.rms, e.samples};
+        } catch (const InvalidInput&) {
+            return out; // the run ends inside the ramp-in
+        }
+    }
+    const double ax = rx.front(), ay = ry.front();
+    const double lx = rx.back() - ax, ly = ry.back() - ay;
+    const double length = std::hypot(lx, ly);
+    if (!(length > 0.0))
+        return out;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const double d = std::abs((tx[k] - ax) * ly - (ty[k] - ay) * lx) / length;
+        out.maxAbs = std::max(out.maxAbs, d);
+        sum += d * d;
+    }
+    out.samples = t.size();
+    out.rms = std::sqrt(sum / static_cast<double>(t.size()));
+    return out;
+}
+
+void requireOnePeriod(const SimulationResult& x, const SimulationResult& y) {
+    if (x.t.size() != y.t.size() || std::abs(x.dtSeconds - y.dtSeconds) > 1e-9 * x.dtSeconds)
+        throw InvalidInput("cross_coupling",
+                           "needs both axes at one controller period: the x axis runs every " +
+                               formatNumber(x.dtSeconds) + " s, the y axis every " +
+                               formatNumber(y.dtSeconds) + " s");
+}
+
+} // namespace
+
+IndependentTrajectoryRun runIndependentTrajectory(const Session& session, const SimulationResult& x,
+                                                  const SimulationResult& y) {
+    requireOnePeriod(x, y);
+    IndependentTrajectoryRun out;
+    for (int i = 0; i < 2; ++i) {
+        const DesignMethodModule& m =
+            designMethodModule(session.axes[static_cast<std::size_t>(i)].method);
+        const SimulationResult& axis = i == 0 ? x : y;
+        out.axes[static_cast<std::size_t>(i)] =
+            m.tracePath(session, i, axis.t, axis.r, x.dtSeconds).run;
+    }
+    out.error = deviation(session, x.t, x.r, y.r, out.axes[0].y, out.axes[1].y);
+    return out;
+}
+
+CouplingDirections referenceCouplingDirections(const std::vector<double>& x,
+                                               const std::vector<double>& y) {
     const std::size_t n = x.size();
     CouplingDirections out;
     out.thetaRad.assign(n, 0.0);
@@ -53,49 +108,12 @@ CouplingDirections referenceDirections(const std::vector<double>& x, const std::
     return out;
 }
 
-/// The contour error of the traced (tx, ty) against the reference (see CoupledTrajectoryRun).
-ContourDeviation deviation(const Session& session, const std::vector<double>& t,
-                           const std::vector<double>& rx, const std::vector<double>& ry,
-                           const std::vector<double>& tx, const std::vector<double>& ty) {
-    ContourDeviation out;
-    const TrajectorySettings& traj = session.trajectory;
-    if (traj.kind == TrajectoryKind::Circle) {
-        const Circle circle{traj.radius, traj.omegaRadPerSec, 0.0, 0.0, traj.rampInSeconds};
-        try {
-            const ContourError e = circleContourError(t, tx, ty, circle);
-            return {e.maxAbs, e.rms, e.samples};
-        } catch (const InvalidInput&) {
-            return out; // the run ends inside the ramp-in
-        }
-    }
-    const double ax = rx.front(), ay = ry.front();
-    const double lx = rx.back() - ax, ly = ry.back() - ay;
-    const double length = std::hypot(lx, ly);
-    if (!(length > 0.0))
-        return out;
-    double sum = 0.0;
-    for (std::size_t k = 0; k < t.size(); ++k) {
-        const double d = std::abs((tx[k] - ax) * ly - (ty[k] - ay) * lx) / length;
-        out.maxAbs = std::max(out.maxAbs, d);
-        sum += d * d;
-    }
-    out.samples = t.size();
-    out.rms = std::sqrt(sum / static_cast<double>(t.size()));
-    return out;
-}
-
-} // namespace
-
 CoupledTrajectoryRun runCoupledTrajectory(const Session& session, const SimulationResult& x,
                                           const SimulationResult& y) {
     if (!session.crossCoupling.active())
         throw InvalidInput("cross_coupling", "is off (kp and ki are 0)");
     validateCrossCoupling(session.crossCoupling, "cross_coupling");
-    if (x.t.size() != y.t.size() || std::abs(x.dtSeconds - y.dtSeconds) > 1e-9 * x.dtSeconds)
-        throw InvalidInput("cross_coupling",
-                           "needs both axes at one controller period: the x axis runs every " +
-                               formatNumber(x.dtSeconds) + " s, the y axis every " +
-                               formatNumber(y.dtSeconds) + " s");
+    requireOnePeriod(x, y);
     CoupledTrajectoryRun out;
     const bool circle = session.trajectory.kind == TrajectoryKind::Circle;
     std::vector<CoupledLine> lines;
@@ -107,24 +125,23 @@ CoupledTrajectoryRun runCoupledTrajectory(const Session& session, const Simulati
     out.referenceX = x.r;
     out.referenceY = y.r;
     const double dt = x.dtSeconds;
+    IndependentTrajectoryRun independent = runIndependentTrajectory(session, x, y);
+    out.independent = std::move(independent.axes);
+    out.independentError = independent.error;
     std::array<std::unique_ptr<SteppedLoop>, 2> loops;
     for (int i = 0; i < 2; ++i) {
         const DesignMethodModule& m =
             designMethodModule(session.axes[static_cast<std::size_t>(i)].method);
         const SimulationResult& axis = i == 0 ? x : y;
-        out.independent[static_cast<std::size_t>(i)] =
-            m.tracePath(session, i, axis.t, axis.r, dt).run;
         loops[static_cast<std::size_t>(i)] = m.steppedPath(session, i, axis.t, axis.r, dt);
     }
     if (loops[0]->samples() != out.t.size() || loops[1]->samples() != out.t.size())
         throw InvalidInput("cross_coupling", "the two axes' runs do not have the same samples");
-    out.coupling =
-        runCrossCoupled(*loops[0], *loops[1], referenceDirections(x.r, y.r), session.crossCoupling);
+    out.coupling = runCrossCoupled(*loops[0], *loops[1], referenceCouplingDirections(x.r, y.r),
+                                   session.crossCoupling);
     for (std::size_t i = 0; i < 2; ++i)
         out.coupled[i] = loops[i]->takeResult();
     out.coupledError = deviation(session, out.t, x.r, y.r, out.coupled[0].y, out.coupled[1].y);
-    out.independentError =
-        deviation(session, out.t, x.r, y.r, out.independent[0].y, out.independent[1].y);
     return out;
 }
 

@@ -46,6 +46,31 @@ struct CoupledTrajectoryRun {
     ContourDeviation coupledError, independentError;
 };
 
+/// The independent half of CoupledTrajectoryRun: each axis' own run along its reference and
+/// their contour error, what the trajectory gives with the coupling off.
+struct IndependentTrajectoryRun {
+    std::array<SimulationResult, 2> axes;
+    ContourDeviation error;
+};
+
+/**
+ * The axes of @p session run independently on the references of @p x and @p y as
+ * runCoupledTrajectory runs them beside the coupled run (the same runs, bit for bit), whatever
+ * the coupling's gains.
+ * @throws InvalidInput "cross_coupling" when the axes run at different periods; as the methods'
+ *         runs for their settings.
+ */
+IndependentTrajectoryRun runIndependentTrajectory(const Session& session, const SimulationResult& x,
+                                                  const SimulationResult& y);
+
+/**
+ * The direction of travel and curvature of a two-axis reference (@p x, @p y at the same
+ * samples) by central differences, the samples where it stands still given the nearest
+ * direction of travel (see CoupledTrajectoryRun).
+ */
+CouplingDirections referenceCouplingDirections(const std::vector<double>& x,
+                                               const std::vector<double>& y);
+
 /**
  * Runs @p session's trajectory as CoupledTrajectoryRun says, on the references @p x and @p y of
  * its axes' evaluated runs (their t and r).

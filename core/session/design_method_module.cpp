@@ -61,6 +61,21 @@ SampledAxisModel DesignMethodModule::couplingModel(const Session& /*session*/, i
                        "the " + std::string(displayName()) + " method's loop takes no coupling");
 }
 
+std::unique_ptr<SampledLoopStepper>
+DesignMethodModule::steppedDigitalPath(const Session& /*session*/, int /*axisIndex*/,
+                                       const std::vector<double>& /*t*/,
+                                       const std::vector<double>& /*reference*/) const {
+    throw InvalidInput("cross_coupling",
+                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+}
+
+std::string DesignMethodModule::cCoupledAxis(const Session& /*session*/,
+                                             const AxisEvaluation& /*axis*/,
+                                             int /*axisIndex*/) const {
+    throw InvalidInput("cross_coupling",
+                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+}
+
 std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*settings*/,
                                                          const AxisEvaluation& axis) const {
     std::string line;

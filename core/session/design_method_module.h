@@ -7,6 +7,7 @@
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/loop_stepper.h"
+#include "core/simulation/sampled_data.h"
 #include "core/study/plant_uncertainty.h"
 #include "core/study/robustness.h"
 
@@ -124,6 +125,31 @@ public:
      */
     virtual SampledAxisModel couplingModel(const Session& session, int axisIndex,
                                            double periodSeconds) const;
+
+    /**
+     * The digital implementation of axis @p axisIndex (what cController exports: its controller
+     * at its period, the encoder, DAC, delay and limit of the session's implementation) along a
+     * program's reference @p reference sampled at @p t, resampled at the controller's period
+     * from t = 0 and run from rest as the axis' digital evaluation runs (a pole-placement axis
+     * at rest at the reference's first sample, a continuous plant at 0), one sample at a time:
+     * the cross-coupled digital run the exported coupled step is checked against. By default
+     * throws InvalidInput "cross_coupling", as steppedPath.
+     */
+    virtual std::unique_ptr<SampledLoopStepper>
+    steppedDigitalPath(const Session& session, int axisIndex, const std::vector<double>& t,
+                       const std::vector<double>& reference) const;
+
+    /**
+     * The C function the exported cross-coupled step (exportCHeader with the coupling on) calls
+     * for this axis: `xyt_<id>_coupled(state, reference, measured, ff, extra, given)` forming
+     * the axis' command with the feedforward @c ff and the coupling's @c extra volts added
+     * before the limit, the operations of steppedDigitalPath's advance in their order
+     * (@c reference is what the axis' own step takes: r(k + preview) for a ZPETC axis; @c given
+     * the trajectory generator's derivatives or null, for a PID that reads them). By default
+     * throws InvalidInput "cross_coupling".
+     */
+    virtual std::string cCoupledAxis(const Session& session, const AxisEvaluation& axis,
+                                     int axisIndex) const;
 
     /// The plant's parameters with their nominal values, as the robustness study varies them
     /// (relative ranges 0). Throws InvalidInput for a plant that has none.

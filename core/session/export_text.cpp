@@ -7,6 +7,7 @@
 #include "core/io/text_escape.h"
 #include "core/model/errors.h"
 #include "core/session/c_export.h"
+#include "core/session/coupling_export.h"
 #include "core/session/design_method_module.h"
 #include "core/simulation/resample.h"
 #include "core/simulation/sampled_data.h"
@@ -146,6 +147,8 @@ std::string exportCHeader(const Session& session, const SessionEvaluation& evalu
         out << designMethodModule(a.method).cController(session, a, i, options);
         out << frictionCompensationCBlock(session, i, options.precision);
     }
+    if (session.crossCoupling.active())
+        out << crossCouplingCBlock(session, evaluation, options);
     out << "#endif /* XYT_CONTROLLER_COEFFICIENTS_H */\n";
     return out.str();
 }

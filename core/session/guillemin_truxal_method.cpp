@@ -243,6 +243,31 @@ public:
             .controller;
     }
 
+    std::unique_ptr<SampledLoopStepper>
+    steppedDigitalPath(const Session& session, int axisIndex, const std::vector<double>& t,
+                       const std::vector<double>& reference) const override {
+        // As evaluateGtDigital: the digital PI at controller_ts, the session's implementation,
+        // the table and its friction compensation.
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        const DigitalPi pi = sessionDigitalPi(session, sessionGtDesign(axis.gt, axisIndex));
+        const std::vector<double> r = programAtPeriod(t, reference, pi.tsSeconds, "controller_ts");
+        SampledDataOptions options = sessionSampledDataOptions(session);
+        options.table = axisTable(axis, axisIndex);
+        const std::vector<double> ff = frictionFeedforward(axis, axisIndex, r, pi.tsSeconds);
+        options.feedforwardVolts = &ff;
+        return steppedSampledPi(axis.gt.plant.transferFunction(), pi, r, options,
+                                axis.gt.modelUnitsPerPositionUnit);
+    }
+
+    std::string cCoupledAxis(const Session& session, const AxisEvaluation& /*axis*/,
+                             int axisIndex) const override {
+        // The PI's own step (its limit and anti-windup), then the feedforward and the
+        // coupling's voltage, clipped again: SampledPiLoop::advance's operations.
+        const std::string& id = session.axes.at(static_cast<std::size_t>(axisIndex)).id;
+        return cexport::cCoupledAxisFunction(id, "xyt_" + id + "_step(s, reference, measured)",
+                                             false);
+    }
+
     std::string cController(const Session& session, const AxisEvaluation& axis, int axisIndex,
                             const ExportOptions& options) const override {
         return gtFirmwareBlock(session, axis, axisIndex, options);

@@ -71,11 +71,11 @@ std::string pidFeedforwardFirmwareBlock(const Session& session, const PidFeedfor
         << "    return v > limit ? limit : (v < -limit ? -limit : v);\n}\n";
     // The PID step; given points at the trajectory generator's velocity, acceleration and jerk,
     // or is null for backward differences.
-    out << "static inline xyt_real xyt_" << id << "_pid(xyt_" << id
+    out << "static inline xyt_real xyt_" << id << "_pid_output(xyt_" << id
         << "_state *s, xyt_real reference, xyt_real measured, const xyt_real *given) {\n"
         << "    const xyt_real rate = (xyt_real)1 / " << k << "TS;\n"
         << "    xyt_real e = reference - measured, command_v, feedback_v, d, previous_d, "
-           "previous_dd, command_ddd, feedback, feedforward, v, out, u;\n"
+           "previous_dd, command_ddd, feedback, feedforward, v, out;\n"
         << "    if (!s->started) {\n        s->prev_cmd = reference;\n"
         << "        s->prev_fb = measured;\n        s->started = 1;\n    }\n"
         << "    if (e > " << k << "DEADBAND)\n        e -= " << k << "DEADBAND;\n"
@@ -102,6 +102,13 @@ std::string pidFeedforwardFirmwareBlock(const Session& session, const PidFeedfor
         << "    out = xyt_" << id << "_limited(v, " << k << "MAXOUTPUT);\n"
         << "    if (" << k << "MAXOUTPUT != (xyt_real)0)\n        s->limit_state = v > " << k
         << "MAXOUTPUT ? (xyt_real)1 : (v < -" << k << "MAXOUTPUT ? (xyt_real)-1 : (xyt_real)0);\n"
+        << "    return out;\n}\n";
+    // The PID's output limited to MAXOUTPUT, then to XYT_UMAX (the coupled step adds its
+    // voltage in between: xyt_<id>_coupled).
+    out << "static inline xyt_real xyt_" << id << "_pid(xyt_" << id
+        << "_state *s, xyt_real reference, xyt_real measured, const xyt_real *given) {\n"
+        << "    const xyt_real out = xyt_" << id << "_pid_output(s, reference, measured, given);\n"
+        << "    xyt_real u;\n"
         << "    " << cSaturate("u", "out") << "    return u;\n}\n";
     out << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
         << "_state *s, xyt_real reference, xyt_real measured) {\n    return xyt_" << id

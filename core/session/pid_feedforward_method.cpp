@@ -6,6 +6,7 @@
 #include "core/model/number_format.h"
 #include "core/model/root_matching.h"
 #include "core/session/axis_run.h"
+#include "core/session/c_export.h"
 #include "core/session/continuous_plant_method.h"
 #include "core/session/pid_feedforward_export.h"
 #include "core/simulation/move_settle.h"
@@ -269,6 +270,35 @@ public:
         });
         out.outputOnPath = out.run.y;
         return out;
+    }
+
+    std::unique_ptr<SampledLoopStepper>
+    steppedDigitalPath(const Session& session, int axisIndex, const std::vector<double>& t,
+                       const std::vector<double>& reference) const override {
+        // As evaluateDigital: the servo PID at its Ts, the command's derivatives by central
+        // differences of the program's positions (programMotion), the session's implementation,
+        // the table and its friction compensation.
+        const PidFeedforwardDesign design = designPidFeedforward(session, axisIndex);
+        const std::vector<double> r =
+            programAtPeriod(t, reference, design.tsSeconds, "controller_ts");
+        const std::vector<MotionSample> command = programMotion(r, design.tsSeconds);
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        SampledDataOptions options = sessionSampledDataOptions(session);
+        options.table = axisTable(axis, axisIndex);
+        const std::vector<double> ff =
+            frictionFeedforward(axis, axisIndex, positions(command), design.tsSeconds);
+        options.feedforwardVolts = &ff;
+        return steppedSampledServoPid(design.plant, design.gains, design.tsSeconds, command,
+                                      design.derivativeSource, options, design.unit);
+    }
+
+    std::string cCoupledAxis(const Session& session, const AxisEvaluation& /*axis*/,
+                             int axisIndex) const override {
+        // The PID's output (limited to MAXOUTPUT), the feedforward and the coupling's voltage,
+        // then the limit: SampledServoPidLoop::advance's operations.
+        const std::string& id = session.axes.at(static_cast<std::size_t>(axisIndex)).id;
+        return cexport::cCoupledAxisFunction(
+            id, "xyt_" + id + "_pid_output(s, reference, measured, given)", true);
     }
 
     SampledAxisModel couplingModel(const Session& session, int axisIndex,

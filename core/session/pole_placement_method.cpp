@@ -176,43 +176,6 @@ SimulationResult tracePp(const PpAxisSettings& pp, int axisIndex, const std::vec
     return discreteRun(p.times, p.r, run, umaxVolts, pp.tsSeconds);
 }
 
-/// tracePp's run advanced sample by sample (SteppedLoop): the ZPETC's preview samples before
-/// k = 0 are run at construction, without coupling, as the batch run has them.
-class PpSteppedPath final : public SteppedLoop {
-public:
-    PpSteppedPath(PpProgramRun run, bool zpetc, double umaxVolts, double deadzone)
-        : p_(std::move(run)), preview_(zpetc ? static_cast<std::size_t>(p_.zpetc.previewSteps) : 0),
-          umax_(umaxVolts),
-          loop_(p_.loop,
-                zpetc ? zpetcLoopInput(p_.zpetc, p_.r, p_.n, p_.r.front())
-                      : std::vector<double>(p_.r.begin(),
-                                            p_.r.begin() + static_cast<std::ptrdiff_t>(p_.n)),
-                p_.r.front(), deadzone) {
-        for (std::size_t k = 0; k < preview_; ++k)
-            loop_.advance(0.0);
-    }
-    std::size_t samples() const override { return p_.n; }
-    double periodSeconds() const override { return p_.loop.tsSeconds; }
-    std::size_t index() const override { return loop_.index() - preview_; }
-    double output() const override { return loop_.output(); }
-    double reference() const override { return p_.r[index()]; }
-    bool advance(double extraVolts) override {
-        const bool clipped = std::abs(loop_.advance(extraVolts)) > umax_;
-        if (index() == samples())
-            out_ = discreteRun(p_.times, p_.r, loop_.run(preview_), umax_, p_.loop.tsSeconds);
-        return clipped;
-    }
-    const SimulationResult& result() const override { return out_; }
-    SimulationResult takeResult() override { return std::move(out_); }
-
-private:
-    PpProgramRun p_;
-    std::size_t preview_;
-    double umax_;
-    RstLoopStepper loop_;
-    SimulationResult out_;
-};
-
 using namespace cexport;
 
 /// The RST law and ZPETC filter of a pole-placement axis as C arrays.
@@ -308,9 +271,11 @@ std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluatio
     out << "    for (i = 0; i < " << X << "_G_LEN; ++i)\n        s->y[i] = rest_position;\n"
         << "    for (i = 0; i < " << X << "_F_LEN; ++i)\n        s->u[i] = " << X
         << "_U_REST * rest_position;\n}\n";
-    out << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
-        << "_state *s, xyt_real " << (ff ? "reference_ahead" : "reference")
-        << ", xyt_real measured) {\n    int i;\n    xyt_real w, v, u;\n";
+    // The step with a voltage added before the limit (the cross-coupling's; 0 in
+    // xyt_<id>_step): the law remembers its own share of the clipped command.
+    out << "static inline xyt_real xyt_" << id << "_step_with(xyt_" << id << "_state *s, xyt_real "
+        << (ff ? "reference_ahead" : "reference")
+        << ", xyt_real measured, xyt_real extra) {\n    int i;\n    xyt_real w, v, t, u;\n";
     if (ff) {
         out << cShift("s->r", X + "_FF_NUM_LEN") << cShift("s->w", X + "_FF_DEN_LEN")
             << "    s->r[0] = reference_ahead;\n    w = 0;\n"
@@ -330,9 +295,14 @@ std::string rstImplementationBlock(const AxisSettings& axis, const AxisEvaluatio
         << "    for (i = 1; i < " << X << "_F_LEN; ++i)\n        v -= " << cReal(X + "_F[i]")
         << " * s->u[i];\n"
         << "    v = v / " << cReal(X + "_F[0]") << ";\n"
-        << "    " << cSaturate("u", "v")
-        << "    s->u[0] = " << (antiWindup == AntiWindup::None ? "v" : "u")
-        << ";\n    return u;\n}\n\n";
+        << "    t = extra != (xyt_real)0 ? v + extra : v;\n"
+        << "    " << cSaturate("u", "t") << "    s->u[0] = "
+        << (antiWindup == AntiWindup::None ? "v" : "extra != (xyt_real)0 ? u - extra : u")
+        << ";\n    return u;\n}\n";
+    out << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
+        << "_state *s, xyt_real " << (ff ? "reference_ahead" : "reference")
+        << ", xyt_real measured) {\n    return xyt_" << id << "_step_with(s, "
+        << (ff ? "reference_ahead" : "reference") << ", measured, 0);\n}\n\n";
     return out.str();
 }
 
@@ -412,14 +382,40 @@ public:
         }
     }
 
+    std::unique_ptr<SampledLoopStepper>
+    steppedDigitalPath(const Session& session, int axisIndex, const std::vector<double>& t,
+                       const std::vector<double>& reference) const override {
+        // As evaluatePp's digital run: the RST law (and ZPETC) at Ts with the session's
+        // implementation, the table as the input's dead zone.
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        const PpProgramRun p = ppProgramRun(axis.pp, axisIndex, t, reference);
+        SampledDataOptions options = sessionSampledDataOptions(session);
+        options.table = axisTable(axis, axisIndex);
+        return steppedSampledRst(p.loop, axis.pp.zpetcEnabled ? &p.zpetc : nullptr, p.r, p.n,
+                                 options);
+    }
+
+    std::string cCoupledAxis(const Session& session, const AxisEvaluation& /*axis*/,
+                             int axisIndex) const override {
+        // The RST step with the coupling's voltage before its limit (SampledRstLoop::advance);
+        // an ARX axis takes no feedforward.
+        const std::string& id = session.axes.at(static_cast<std::size_t>(axisIndex)).id;
+        return "static inline XYT_MAYBE_UNUSED xyt_real xyt_" + id + "_coupled(xyt_" + id +
+               "_state *s, xyt_real reference, xyt_real measured, xyt_real ff, xyt_real extra, "
+               "const xyt_real *given) {\n"
+               "    (void)ff;\n    (void)given;\n"
+               "    return xyt_" +
+               id + "_step_with(s, reference, measured, extra);\n}\n";
+    }
+
     std::unique_ptr<SteppedLoop> steppedPath(const Session& session, int axisIndex,
                                              const std::vector<double>& t,
                                              const std::vector<double>& reference,
                                              double /*dtSeconds*/) const override {
         const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
-        return std::make_unique<PpSteppedPath>(ppProgramRun(axis.pp, axisIndex, t, reference),
-                                               axis.pp.zpetcEnabled, session.umaxVolts,
-                                               arxInputDeadzoneVolts(axis, axisIndex));
+        const PpProgramRun p = ppProgramRun(axis.pp, axisIndex, t, reference);
+        return steppedRstRun(p.loop, axis.pp.zpetcEnabled ? &p.zpetc : nullptr, p.r, p.n,
+                             session.umaxVolts, arxInputDeadzoneVolts(axis, axisIndex));
     }
 
     std::vector<UncertainParameter> plantParameters(const AxisSettings& settings) const override {

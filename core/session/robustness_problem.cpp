@@ -2,6 +2,9 @@
 #include "core/session/robustness_problem.h"
 
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
+#include "core/session/contour_run.h"
+#include "core/session/coupled_trajectory.h"
 #include "core/session/design_method_module.h"
 #include "core/session/program_trajectory.h"
 #include "core/session/session_evaluation.h"
@@ -126,6 +129,9 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         p.geometry.circle = Circle{session.trajectory.radius, session.trajectory.omegaRadPerSec,
                                    0.0, 0.0, session.trajectory.rampInSeconds};
         p.geometry.t = x.run.t; // the evaluation's contour is judged on x's samples too
+        if (session.crossCoupling.active())
+            p.coupling = ContourCoupling{session.crossCoupling,
+                                         referenceCouplingDirections(x.run.r, y.run.r)};
         return p;
     }
     if (session.trajectory.kind != TrajectoryKind::Gcode)
@@ -143,12 +149,24 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
     followProfile(p.x, profile, 0);
     followProfile(p.y, profile, 1);
     p.geometry.path = std::shared_ptr<const Path>(shared, &shared->path); // the shared program's
-    p.geometry.pathOptions.cornerAngleDeg = run.profile.cornerAngleDeg;
-    p.geometry.pathOptions.cornerWindowMm = run.cornerWindowMm;
-    p.geometry.pathOptions.measuredSegments.resize(program.segments.size());
-    for (std::size_t i = 0; i < program.segments.size(); ++i)
-        p.geometry.pathOptions.measuredSegments[i] = !program.segments[i].rapid;
+    p.geometry.pathOptions = programContourErrorOptions(program, run);
     p.geometry.t = profile.t;
+    if (session.crossCoupling.active()) {
+        // On the axes' grid: the profile's dt for continuous axes, Ts for discrete ones
+        // (axes at two periods are refused by name).
+        const double period = p.x.controller ? p.x.dtSeconds : p.x.loop->tsSeconds;
+        const double periodY = p.y.controller ? p.y.dtSeconds : p.y.loop->tsSeconds;
+        if (std::abs(period - periodY) > 1e-9 * period)
+            throw InvalidInput("cross_coupling",
+                               "needs both axes at one controller period: the x axis runs every " +
+                                   formatNumber(period) + " s, the y axis every " +
+                                   formatNumber(periodY) + " s");
+        const std::size_t n = p.x.controller ? p.x.reference.size() : p.x.samples;
+        const std::vector<bool> rapid = programRapidSegments(program);
+        p.coupling =
+            ContourCoupling{session.crossCoupling,
+                            pathCouplingDirections(program.path, profile, period, n, &rapid)};
+    }
     return p;
 }
 

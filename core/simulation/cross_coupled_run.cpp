@@ -8,10 +8,6 @@
 
 namespace xyt {
 
-namespace {
-constexpr double kCouplingPi = 3.14159265358979323846;
-} // namespace
-
 CouplingSignals runCrossCoupled(SteppedLoop& x, SteppedLoop& y,
                                 const CouplingDirections& directions,
                                 const CrossCoupling& coupling) {
@@ -33,21 +29,24 @@ CouplingSignals runCrossCoupled(SteppedLoop& x, SteppedLoop& y,
     out.correction.resize(n);
     double integral = 0.0;
     const bool circular = coupling.estimate == ContourEstimateKind::Circular;
+    const double cosCorner = std::cos(kCornerTurnRad);
+    double previousCos = 0.0, previousSin = 0.0;
     for (std::size_t k = 0; k < n; ++k) {
         const double ex = x.reference() - x.output();
         const double ey = y.reference() - y.output();
         const double theta = directions.thetaRad[k];
-        if (k > 0 && std::abs(std::remainder(theta - directions.thetaRad[k - 1],
-                                             2.0 * kCouplingPi)) > kCornerTurnRad)
+        const double c = std::cos(theta), s = std::sin(theta);
+        if (k > 0 && c * previousCos + s * previousSin < cosCorner)
             integral = 0.0; // a corner: what built up along the old normal means nothing now
+        previousCos = c;
+        previousSin = s;
         const ContourEstimate eps =
-            circular ? circularContourEstimate(ex, ey, theta, directions.curvaturePerMm[k])
-                     : linearContourEstimate(ex, ey, theta);
+            contourEstimateAlong(ex, ey, c, s, directions.curvaturePerMm[k], circular);
+        out.estimate[k] = eps.value;
         if (!directions.active.empty() && !directions.active[k]) {
             integral = 0.0;
             x.advance(0.0);
             y.advance(0.0);
-            out.estimate[k] = eps.value;
             out.correction[k] = 0.0;
             continue;
         }
@@ -57,7 +56,6 @@ CouplingSignals runCrossCoupled(SteppedLoop& x, SteppedLoop& y,
         const bool clipY = y.advance(eps.gainY * uc);
         if (!clipX && !clipY)
             integral = next;
-        out.estimate[k] = eps.value;
         out.correction[k] = uc;
     }
     return out;

@@ -4,6 +4,7 @@
 #include "core/model/errors.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace xyt {
 
@@ -168,6 +169,77 @@ DiscreteRun simulateZpetcLoop(const PolePlacementDesign& loop, const ZpetcDesign
     run.y.erase(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(p));
     run.u.erase(run.u.begin(), run.u.begin() + static_cast<std::ptrdiff_t>(p));
     return run;
+}
+
+void discreteResult(const std::vector<double>& r, const DiscreteRun& run, double ts, double umax,
+                    std::size_t n, SimulationResult& out) {
+    out.t.resize(n);
+    out.r.assign(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n));
+    out.y.assign(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(n));
+    out.u.assign(n, 0.0);
+    std::copy_n(run.u.begin(), std::min(n, run.u.size()), out.u.begin());
+    out.e.resize(n);
+    out.clipped.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        out.t[k] = static_cast<double>(k) * ts;
+        out.e[k] = out.r[k] - out.y[k];
+        out.clipped[k] = std::abs(out.u[k]) > umax;
+    }
+    out.dtSeconds = ts;
+    out.umaxVolts = umax;
+}
+
+namespace {
+
+/// steppedRstRun's loop: an RstLoopStepper on the (ZPETC-filtered) reference.
+class RstRunStepper final : public SteppedLoop {
+public:
+    RstRunStepper(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
+                  const std::vector<double>& r, std::size_t samples, double umax, double deadzone)
+        : r_(r), samples_(samples),
+          preview_(zpetc ? static_cast<std::size_t>(zpetc->previewSteps) : 0), umax_(umax),
+          ts_(loop.tsSeconds),
+          loop_(loop,
+                zpetc ? zpetcLoopInput(*zpetc, r, samples, r.front())
+                      : std::vector<double>(r.begin(),
+                                            r.begin() + static_cast<std::ptrdiff_t>(samples)),
+                r.front(), deadzone) {
+        for (std::size_t k = 0; k < preview_; ++k)
+            loop_.advance(0.0);
+    }
+    std::size_t samples() const override { return samples_; }
+    double periodSeconds() const override { return ts_; }
+    std::size_t index() const override { return loop_.index() - preview_; }
+    double output() const override { return loop_.output(); }
+    double reference() const override { return r_[index()]; }
+    bool advance(double extraVolts) override {
+        const bool clipped = std::abs(loop_.advance(extraVolts)) > umax_;
+        if (index() == samples_)
+            finish();
+        return clipped;
+    }
+    const SimulationResult& result() const override { return out_; }
+    SimulationResult takeResult() override { return std::move(out_); }
+
+private:
+    void finish() { discreteResult(r_, loop_.run(preview_), ts_, umax_, samples_, out_); }
+
+    std::vector<double> r_;
+    std::size_t samples_, preview_;
+    double umax_, ts_;
+    RstLoopStepper loop_;
+    SimulationResult out_;
+};
+
+} // namespace
+
+std::unique_ptr<SteppedLoop> steppedRstRun(const PolePlacementDesign& loop,
+                                           const ZpetcDesign* zpetc, const std::vector<double>& r,
+                                           std::size_t samples, double umaxVolts,
+                                           double inputDeadzoneVolts) {
+    const std::size_t preview = zpetc ? static_cast<std::size_t>(zpetc->previewSteps) : 0;
+    requireReference(r, samples, samples + preview);
+    return std::make_unique<RstRunStepper>(loop, zpetc, r, samples, umaxVolts, inputDeadzoneVolts);
 }
 
 DiscreteRun simulateTrajectoryZpetc(const ZpetcDesign& zpetc, const std::vector<double>& r,

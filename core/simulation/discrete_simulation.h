@@ -3,8 +3,11 @@
 
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
+#include "core/simulation/loop_stepper.h"
+#include "core/simulation/simulation.h"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace xyt {
@@ -69,6 +72,28 @@ private:
     std::vector<double> y_, u_, ua_, command_;
     std::size_t k_ = 0;
 };
+
+/**
+ * The first @p n samples of a discrete run on t = k @p ts as a SimulationResult in @p out (its
+ * buffers reused): r from @p r, e = r - y, u zero-padded when the run has none, and `clipped`
+ * where |u| > @p umax (the discrete loops are linear: flagged, not applied).
+ */
+void discreteResult(const std::vector<double>& r, const DiscreteRun& run, double ts, double umax,
+                    std::size_t n, SimulationResult& out);
+
+/**
+ * The pole-placement loop (with @p zpetc: its ZPETC ahead) on @p r (r(0 .. samples + p - 1),
+ * p its preview), at rest at r(0), as a SteppedLoop (core/simulation/loop_stepper.h): the
+ * preview's samples before k = 0 run at construction without extra voltage, as
+ * simulateZpetcLoop has them; the extra voltage joins the plant's input (RstLoopStepper). Its
+ * result is on t = k Ts, the loop linear with |u| > @p umaxVolts flagged, not applied; with
+ * every extra voltage 0 it is simulateZpetcLoop's (simulateFeedbackLoop's) run bit for bit.
+ * @throws InvalidInput "reference" as simulateZpetcLoop.
+ */
+std::unique_ptr<SteppedLoop> steppedRstRun(const PolePlacementDesign& loop,
+                                           const ZpetcDesign* zpetc, const std::vector<double>& r,
+                                           std::size_t samples, double umaxVolts,
+                                           double inputDeadzoneVolts = 0.0);
 
 /**
  * Structure (1): the pole-placement loop alone (paper Fig. 9), F u = Kf r - G y, A y = B u,

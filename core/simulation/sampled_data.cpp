@@ -156,60 +156,129 @@ template <> struct PlantState<0> {
     static int size(int n) { return n; }
 };
 
-/// The loop of simulateSampledPi for a plant of N states (0: any).
+/// The loop of simulateSampledPi for a plant of N states (0: any), one sample at a time: at
+/// sample k measured() is the encoder's reading the controller uses, and advance(extra) forms
+/// the command (the PI, then the feedforward and @p extra volts added and clipped, as firmware
+/// adds its friction compensation after the PI), records sample k and moves the plant on.
+template <int N> class SampledPiLoop {
+public:
+    SampledPiLoop(const SampledPlant& p, const DigitalPi& pi, const std::vector<double>& reference,
+                  const SampledDataOptions& options, double unit, TablePlant* table,
+                  SampledDataRun& run)
+        : p_(p), pi_(pi), reference_(reference), options_(options), unit_(unit), table_(table),
+          run_(run), plant_(p.states), delay_(options.delaySamples, 0.0),
+          dac_(options.dacBits, options.umaxVolts),
+          ff_(sampledFeedforward(options, reference.size())) {
+        read();
+    }
+    std::size_t index() const { return k_; }
+    double measured() const { return measured_; }
+
+    bool advance(double extra) {
+        const int ns = PlantState<N>::size(p_.states);
+        auto& x = plant_.x;
+        auto& next = plant_.next;
+        const std::size_t k = k_;
+        const double error = (reference_[k] - measured_) * unit_;
+        double u = stepDigitalPi(pi_, state_, error, options_.umaxVolts);
+        if (ff_ || extra != 0.0) {
+            double total = u;
+            if (ff_)
+                total += ff_[k];
+            if (extra != 0.0)
+                total += extra;
+            u = std::clamp(total, -options_.umaxVolts, options_.umaxVolts);
+        }
+        const double applied = delay_.push(dac_(u));
+        SimulationResult& out = run_.result;
+        out.t[k] = static_cast<double>(k) * pi_.tsSeconds;
+        out.r[k] = reference_[k];
+        out.y[k] = position_;
+        out.e[k] = reference_[k] - position_;
+        out.u[k] = u;
+        const bool clipped = std::abs(u) >= options_.umaxVolts;
+        out.clipped[k] = clipped;
+        run_.measured[k] = measured_;
+        run_.applied[k] = applied;
+        ++k_;
+        if (table_) {
+            if (!out.sliding.empty())
+                out.sliding[k] = static_cast<std::int8_t>(table_->state().sliding);
+            table_->hold(applied, pi_.tsSeconds);
+        } else {
+            const double* phi = p_.phi.data();
+            const double* gamma = p_.gamma.data();
+            for (int i = 0; i < ns; ++i) {
+                double acc = 0.0;
+                for (int j = 0; j < ns; ++j)
+                    acc += phi[i * ns + j] * x[static_cast<std::size_t>(j)];
+                acc += gamma[i] * applied;
+                next[static_cast<std::size_t>(i)] = acc;
+            }
+            x.swap(next);
+        }
+        if (k_ < reference_.size())
+            read();
+        return clipped;
+    }
+
+private:
+    /// The plant's output and the encoder's reading at the current sample.
+    void read() {
+        const int ns = PlantState<N>::size(p_.states);
+        double y = 0.0;
+        for (int j = 0; j < ns; ++j)
+            y += p_.c[static_cast<std::size_t>(j)] * plant_.x[static_cast<std::size_t>(j)];
+        if (table_)
+            y = table_->state().table;
+        position_ = y / unit_;
+        measured_ = encoderReading(position_, options_.encoderResolution);
+    }
+
+    const SampledPlant& p_;
+    const DigitalPi& pi_;
+    const std::vector<double>& reference_;
+    const SampledDataOptions& options_;
+    double unit_;
+    TablePlant* table_;
+    SampledDataRun& run_;
+    PlantState<N> plant_;
+    DigitalPiState state_;
+    DelayLine delay_;
+    const Dac dac_;
+    const double* ff_;
+    std::size_t k_ = 0;
+    double position_ = 0.0, measured_ = 0.0;
+};
+
 template <int N>
 void runSampledPi(const SampledPlant& p, const DigitalPi& pi, const std::vector<double>& reference,
                   const SampledDataOptions& options, double unit, TablePlant* table,
                   SampledDataRun& run) {
-    const int ns = PlantState<N>::size(p.states);
-    const std::size_t n = reference.size();
-    PlantState<N> plant(p.states);
-    auto& x = plant.x;
-    auto& next = plant.next;
-    DigitalPiState state;
-    DelayLine delay(options.delaySamples, 0.0);
-    const Dac dac(options.dacBits, options.umaxVolts);
-    const double* phi = p.phi.data();
-    const double* gamma = p.gamma.data();
-    const double* c = p.c.data();
-    const double* ff = sampledFeedforward(options, n);
-    SimulationResult& out = run.result;
-    for (std::size_t k = 0; k < n; ++k) {
-        double y = 0.0;
-        for (int j = 0; j < ns; ++j)
-            y += c[j] * x[static_cast<std::size_t>(j)];
-        if (table)
-            y = table->state().table;
-        const double position = y / unit;
-        const double measured = encoderReading(position, options.encoderResolution);
-        const double error = (reference[k] - measured) * unit;
-        double u = stepDigitalPi(pi, state, error, options.umaxVolts);
-        if (ff)
-            u = std::clamp(u + ff[k], -options.umaxVolts, options.umaxVolts);
-        const double applied = delay.push(dac(u));
-        out.t[k] = static_cast<double>(k) * pi.tsSeconds;
-        out.r[k] = reference[k];
-        out.y[k] = position;
-        out.e[k] = reference[k] - position;
-        out.u[k] = u;
-        out.clipped[k] = std::abs(u) >= options.umaxVolts;
-        run.measured[k] = measured;
-        run.applied[k] = applied;
-        if (table) {
-            if (!out.sliding.empty())
-                out.sliding[k] = static_cast<std::int8_t>(table->state().sliding);
-            table->hold(applied, pi.tsSeconds);
-            continue;
-        }
-        for (int i = 0; i < ns; ++i) {
-            double acc = 0.0;
-            for (int j = 0; j < ns; ++j)
-                acc += phi[i * ns + j] * x[static_cast<std::size_t>(j)];
-            acc += gamma[i] * applied;
-            next[static_cast<std::size_t>(i)] = acc;
-        }
-        x.swap(next);
-    }
+    SampledPiLoop<N> loop(p, pi, reference, options, unit, table, run);
+    for (std::size_t k = 0; k < reference.size(); ++k)
+        loop.advance(0.0);
+}
+
+} // namespace
+
+namespace {
+
+/// What simulateSampledPi checks and sizes before its loop (shared with its stepper): the
+/// run's signals and the table.
+std::optional<TablePlant> startPiRun(SampledDataRun& run, const TransferFunction& plant,
+                                     const DigitalPi& pi, const std::vector<double>& reference,
+                                     const SampledDataOptions& options, double unit) {
+    validateSampledDataOptions(options);
+    requirePositive(unit, "model_unit_scale");
+    requireFiniteSamples(reference, reference.size());
+    resizeRun(run, reference.size(), pi.tsSeconds, options.umaxVolts);
+    if (const double* ff = sampledFeedforward(options, reference.size()))
+        run.result.uFeedforward.assign(ff, ff + reference.size());
+    std::optional<TablePlant> table = tablePlantFor(plant, options, unit);
+    if (table && options.table->breakawayVolts() > 0.0)
+        run.result.sliding.resize(reference.size());
+    return table;
 }
 
 } // namespace
@@ -219,17 +288,11 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
                                  const SampledDataOptions& options,
                                  double modelUnitsPerPositionUnit) {
     validateSampledDataOptions(options);
-    requirePositive(modelUnitsPerPositionUnit, "model_unit_scale");
     const SampledPlant p = sampledPlant(plant, pi.tsSeconds);
-    requireFiniteSamples(reference, reference.size());
     SampledDataRun run;
-    resizeRun(run, reference.size(), pi.tsSeconds, options.umaxVolts);
-    if (const double* ff = sampledFeedforward(options, reference.size()))
-        run.result.uFeedforward.assign(ff, ff + reference.size());
-    std::optional<TablePlant> table = tablePlantFor(plant, options, modelUnitsPerPositionUnit);
+    std::optional<TablePlant> table =
+        startPiRun(run, plant, pi, reference, options, modelUnitsPerPositionUnit);
     if (table) {
-        if (options.table->breakawayVolts() > 0.0)
-            run.result.sliding.resize(reference.size());
         runSampledPi<0>(p, pi, reference, options, modelUnitsPerPositionUnit, &*table, run);
         return run;
     }
@@ -254,14 +317,104 @@ SampledDataRun simulateSampledPi(const TransferFunction& plant, const DigitalPi&
     return run;
 }
 
-SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const ServoPidGains& gains,
-                                       double tsSeconds, const std::vector<MotionSample>& command,
-                                       CommandDerivativeSource source,
-                                       const SampledDataOptions& options,
-                                       double modelUnitsPerPositionUnit) {
-    validateSampledDataOptions(options);
-    requirePositive(modelUnitsPerPositionUnit, "model_unit_scale");
-    const SampledPlant p = sampledPlant(plant, tsSeconds);
+namespace {
+
+/// The loop of simulateSampledServoPid one sample at a time (as SampledPiLoop): @p extra volts
+/// join the PID's output and the feedforward before the limit.
+class SampledServoPidLoop {
+public:
+    SampledServoPidLoop(const SampledPlant& p, const ServoPidGains& gains, double tsSeconds,
+                        const std::vector<MotionSample>& command, CommandDerivativeSource source,
+                        const SampledDataOptions& options, double unit, TablePlant* table,
+                        SampledDataRun& run)
+        : p_(p), gains_(gains), ts_(tsSeconds), command_(command), source_(source),
+          options_(options), unit_(unit), table_(table), run_(run),
+          x_(static_cast<std::size_t>(p.states), 0.0), next_(x_.size()),
+          state_(servoPidAtRest(command.front().position)), delay_(options.delaySamples, 0.0),
+          dac_(options.dacBits, options.umaxVolts),
+          ff_(sampledFeedforward(options, command.size())) {
+        state_.previousFeedback = 0.0;
+        read();
+    }
+    std::size_t index() const { return k_; }
+    double measured() const { return measured_; }
+
+    bool advance(double extra) {
+        const std::size_t k = k_;
+        const double umax = options_.umaxVolts;
+        const MotionSample& c = command_[k];
+        const ServoPidCommandDerivatives given{c.velocity, c.acceleration, c.jerk};
+        const ServoPidTerms terms = stepServoPid(
+            gains_, state_, c.position, measured_, ts_,
+            source_ == CommandDerivativeSource::TrajectoryGenerator ? &given : nullptr);
+        double v = ff_ ? terms.output + ff_[k] : terms.output;
+        if (extra != 0.0)
+            v += extra;
+        const bool clip = std::abs(v) > umax;
+        const double u = clip ? std::copysign(umax, v) : v;
+        const double applied = delay_.push(dac_(u));
+        SimulationResult& out = run_.result;
+        out.t[k] = static_cast<double>(k) * ts_;
+        out.r[k] = c.position;
+        out.y[k] = position_;
+        out.e[k] = c.position - position_;
+        out.u[k] = u;
+        out.uFeedforward[k] = terms.feedforward + (ff_ ? ff_[k] : 0.0);
+        out.clipped[k] = clip || terms.output != terms.feedback + terms.feedforward;
+        const bool clipped =
+            std::abs(u) >= umax; // at the limit: what the coupling's anti-windup reads
+        run_.measured[k] = measured_;
+        run_.applied[k] = applied;
+        ++k_;
+        if (table_) {
+            if (!out.sliding.empty())
+                out.sliding[k] = static_cast<std::int8_t>(table_->state().sliding);
+            table_->hold(applied, ts_);
+        } else {
+            const std::size_t ns = x_.size();
+            for (std::size_t i = 0; i < ns; ++i) {
+                double acc = 0.0;
+                for (std::size_t j = 0; j < ns; ++j)
+                    acc += p_.phi[i * ns + j] * x_[j];
+                next_[i] = acc + p_.gamma[i] * applied;
+            }
+            x_.swap(next_);
+        }
+        if (k_ < command_.size())
+            read();
+        return clipped;
+    }
+
+private:
+    void read() {
+        double y = 0.0;
+        for (std::size_t j = 0; j < x_.size(); ++j)
+            y += p_.c[j] * x_[j];
+        if (table_)
+            y = table_->state().table;
+        position_ = y / unit_;
+        measured_ = encoderReading(position_, options_.encoderResolution);
+    }
+
+    const SampledPlant& p_;
+    const ServoPidGains& gains_;
+    double ts_;
+    const std::vector<MotionSample>& command_;
+    CommandDerivativeSource source_;
+    const SampledDataOptions& options_;
+    double unit_;
+    TablePlant* table_;
+    SampledDataRun& run_;
+    std::vector<double> x_, next_;
+    ServoPidState state_;
+    DelayLine delay_;
+    const Dac dac_;
+    const double* ff_;
+    std::size_t k_ = 0;
+    double position_ = 0.0, measured_ = 0.0;
+};
+
+void requireFiniteCommand(const std::vector<MotionSample>& command) {
     if (command.empty())
         throw InvalidInput("reference", "needs 1 samples, got 0");
     for (std::size_t i = 0; i < command.size(); ++i) {
@@ -271,155 +424,337 @@ SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const Serv
             throw InvalidInput("reference",
                                "sample " + std::to_string(i) + " is not a finite number");
     }
-    const double unit = modelUnitsPerPositionUnit;
-    const std::size_t n = command.size();
-    SampledDataRun run;
+}
+
+/// Sizes a servo PID's run and its table: what simulateSampledServoPid and its stepper share.
+void startServoPidRun(SampledDataRun& run, std::optional<TablePlant>& table,
+                      const TransferFunction& plant, double tsSeconds, std::size_t n,
+                      const SampledDataOptions& options, double unit) {
     resizeRun(run, n, tsSeconds, options.umaxVolts);
     run.result.uFeedforward.resize(n);
-    std::optional<TablePlant> table = tablePlantFor(plant, options, unit);
+    table = tablePlantFor(plant, options, unit);
     if (table && options.table->breakawayVolts() > 0.0)
         run.result.sliding.resize(n);
-    const std::size_t ns = static_cast<std::size_t>(p.states);
-    std::vector<double> x(ns, 0.0), next(ns);
-    ServoPidState state = servoPidAtRest(command.front().position);
-    state.previousFeedback = 0.0;
-    DelayLine delay(options.delaySamples, 0.0);
-    const Dac dac(options.dacBits, options.umaxVolts);
-    const double umax = options.umaxVolts;
-    const double* ff = sampledFeedforward(options, n);
-    SimulationResult& out = run.result;
-    for (std::size_t k = 0; k < n; ++k) {
-        double y = 0.0;
-        for (std::size_t j = 0; j < ns; ++j)
-            y += p.c[j] * x[j];
-        if (table)
-            y = table->state().table;
-        const double position = y / unit;
-        const double measured = encoderReading(position, options.encoderResolution);
-        const MotionSample& c = command[k];
-        const ServoPidCommandDerivatives given{c.velocity, c.acceleration, c.jerk};
-        const ServoPidTerms terms =
-            stepServoPid(gains, state, c.position, measured, tsSeconds,
-                         source == CommandDerivativeSource::TrajectoryGenerator ? &given : nullptr);
-        const double v = ff ? terms.output + ff[k] : terms.output;
-        const bool clip = std::abs(v) > umax;
-        const double u = clip ? std::copysign(umax, v) : v;
-        const double applied = delay.push(dac(u));
-        out.t[k] = static_cast<double>(k) * tsSeconds;
-        out.r[k] = c.position;
-        out.y[k] = position;
-        out.e[k] = c.position - position;
-        out.u[k] = u;
-        out.uFeedforward[k] = terms.feedforward + (ff ? ff[k] : 0.0);
-        out.clipped[k] = clip || terms.output != terms.feedback + terms.feedforward;
-        run.measured[k] = measured;
-        run.applied[k] = applied;
-        if (table) {
-            if (!out.sliding.empty())
-                out.sliding[k] = static_cast<std::int8_t>(table->state().sliding);
-            table->hold(applied, tsSeconds);
-            continue;
-        }
-        for (std::size_t i = 0; i < ns; ++i) {
-            double acc = 0.0;
-            for (std::size_t j = 0; j < ns; ++j)
-                acc += p.phi[i * ns + j] * x[j];
-            next[i] = acc + p.gamma[i] * applied;
-        }
-        x.swap(next);
-    }
+}
+
+} // namespace
+
+SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const ServoPidGains& gains,
+                                       double tsSeconds, const std::vector<MotionSample>& command,
+                                       CommandDerivativeSource source,
+                                       const SampledDataOptions& options,
+                                       double modelUnitsPerPositionUnit) {
+    validateSampledDataOptions(options);
+    requirePositive(modelUnitsPerPositionUnit, "model_unit_scale");
+    const SampledPlant p = sampledPlant(plant, tsSeconds);
+    requireFiniteCommand(command);
+    SampledDataRun run;
+    std::optional<TablePlant> table;
+    startServoPidRun(run, table, plant, tsSeconds, command.size(), options,
+                     modelUnitsPerPositionUnit);
+    SampledServoPidLoop loop(p, gains, tsSeconds, command, source, options,
+                             modelUnitsPerPositionUnit, table ? &*table : nullptr, run);
+    for (std::size_t k = 0; k < command.size(); ++k)
+        loop.advance(0.0);
     return run;
 }
 
-SampledDataRun simulateSampledRst(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
-                                  const std::vector<double>& r, std::size_t samples,
-                                  const SampledDataOptions& options) {
+namespace {
+
+/// The loop of simulateSampledRst one sample at a time (as SampledPiLoop), from j = 0 (k = -p,
+/// the ZPETC's preview) to samples + p - 1: @p extra volts join the RST law's output before
+/// the limit; the law remembers its own share of what the actuator did (the clipped command
+/// less @p extra) under an anti-windup, its own output without.
+class SampledRstLoop {
+public:
+    SampledRstLoop(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
+                   const std::vector<double>& r, std::size_t samples,
+                   const SampledDataOptions& options, SampledDataRun& run)
+        : loop_(loop), r_(r), samples_(samples),
+          preview_(zpetc ? static_cast<std::size_t>(zpetc->previewSteps) : 0), options_(options),
+          run_(run), a_(loop.a.ascending()), b_(loop.b.ascending()), f_(loop.f.ascending()),
+          g_(loop.g.ascending()), ffNum_(zpetc ? zpetc->feedforwardNum.ascending() : kOne()),
+          ffDen_(zpetc ? zpetc->feedforwardDen.ascending() : kOne()),
+          deadzone_(options.table
+                        ? options.table->coulombVolts + options.table->amplifierDeadbandVolts
+                        : 0.0),
+          delay_(options.delaySamples, loop.a(1.0) / loop.b(1.0) * r.front()) {
+        if (ffDen_[0] == 0.0)
+            throw InvalidInput("zpetc", "the feedforward's z^0 denominator coefficient is zero");
+        const double rest = r.front();
+        const double uRest = loop.a(1.0) / loop.b(1.0) * rest;
+        // Histories, newest first: index i holds the value i samples back (shift registers, as
+        // the exported C code keeps them).
+        const std::size_t h = static_cast<std::size_t>(
+            std::max({loop.a.degree(), loop.b.degree(), loop.f.degree(), loop.g.degree()}) + 1);
+        yTrue_.assign(h, rest);
+        uApplied_.assign(h, uRest);
+        yMeasured_.assign(g_.size(), rest);
+        uController_.assign(f_.size(), uRest);
+        ffIn_.assign(ffNum_.size(), rest);
+        ffOut_.assign(ffDen_.size(), rest);
+        read();
+    }
+    std::size_t preview() const { return preview_; }
+    std::size_t step() const { return j_; } ///< j: k + preview
+    double measured() const { return measured_; }
+
+    bool advance(double extra) {
+        const std::size_t j = j_;
+        // Feedforward on r(k + p) (or w = r without it).
+        shift(ffIn_);
+        shift(ffOut_);
+        ffIn_[0] = r_[j];
+        double w = 0.0;
+        for (std::size_t i = 0; i < ffNum_.size(); ++i)
+            w += ffNum_[i] * ffIn_[i];
+        for (std::size_t i = 1; i < ffDen_.size(); ++i)
+            w -= ffDen_[i] * ffOut_[i];
+        w = w / ffDen_[0];
+        ffOut_[0] = w;
+        // Controller F u = Kf w - G y_measured.
+        shift(yMeasured_);
+        shift(uController_);
+        yMeasured_[0] = measured_;
+        double v = loop_.kf * w;
+        for (std::size_t i = 0; i < g_.size(); ++i)
+            v -= g_[i] * yMeasured_[i];
+        for (std::size_t i = 1; i < f_.size(); ++i)
+            v -= f_[i] * uController_[i];
+        v = v / f_[0];
+        const double umax = options_.umaxVolts;
+        const double total = extra != 0.0 ? v + extra : v;
+        const double u = total > umax ? umax : (total < -umax ? -umax : total);
+        const double own = extra != 0.0 ? u - extra : u;
+        uController_[0] = options_.antiWindup == AntiWindup::None ? v : own;
+        const double applied = delay_.push(dacOutput(u, options_.dacBits, umax));
+        // An ARX axis' table (AxisSettings::friction): its Coulomb level and the amplifier's
+        // deadband as a dead zone of the plant's input.
+        uApplied_[0] =
+            deadzone_ == 0.0 ? applied : applied - std::clamp(applied, -deadzone_, deadzone_);
+        const bool clipped = std::abs(u) >= umax; // at the limit: what the coupling reads
+        if (j >= preview_) {
+            const std::size_t k = j - preview_;
+            const double rk = r_[k];
+            SimulationResult& out = run_.result;
+            out.t[k] = static_cast<double>(k) * loop_.tsSeconds;
+            out.r[k] = rk;
+            out.y[k] = yk_;
+            out.e[k] = rk - yk_;
+            out.u[k] = u;
+            out.clipped[k] = u != total;
+            run_.measured[k] = measured_;
+            run_.applied[k] = applied;
+        }
+        ++j_;
+        if (j_ < samples_ + preview_)
+            read();
+        return clipped;
+    }
+
+private:
+    static const std::vector<double>& kOne() {
+        static const std::vector<double> one{1.0};
+        return one;
+    }
+    static void shift(std::vector<double>& v) {
+        for (std::size_t i = v.size() - 1; i > 0; --i)
+            v[i] = v[i - 1];
+    }
+    /// Plant A y = B u (A(0) = 1, B(0) = 0): y(k) from the past applied commands, and its
+    /// reading.
+    void read() {
+        shift(yTrue_);
+        shift(uApplied_);
+        double yk = 0.0;
+        for (std::size_t i = 1; i < b_.size(); ++i)
+            yk += b_[i] * uApplied_[i];
+        for (std::size_t i = 1; i < a_.size(); ++i)
+            yk -= a_[i] * yTrue_[i];
+        yTrue_[0] = yk;
+        yk_ = yk;
+        measured_ = encoderReading(yk, options_.encoderResolution);
+    }
+
+    const PolePlacementDesign& loop_;
+    const std::vector<double>& r_;
+    std::size_t samples_, preview_;
+    const SampledDataOptions& options_;
+    SampledDataRun& run_;
+    const std::vector<double>&a_, &b_, &f_, &g_, &ffNum_, &ffDen_;
+    double deadzone_;
+    std::vector<double> yTrue_, uApplied_, yMeasured_, uController_, ffIn_, ffOut_;
+    DelayLine delay_;
+    std::size_t j_ = 0;
+    double yk_ = 0.0, measured_ = 0.0;
+};
+
+void checkRstRun(const ZpetcDesign* zpetc, const std::vector<double>& r, std::size_t samples,
+                 const SampledDataOptions& options) {
     validateSampledDataOptions(options);
     const std::size_t preview = zpetc ? static_cast<std::size_t>(zpetc->previewSteps) : 0;
     requireFiniteSamples(r, samples + preview);
     if (samples == 0)
         throw InvalidInput("reference", "needs at least one sample");
-    const auto& a = loop.a.ascending();
-    const auto& b = loop.b.ascending();
-    const auto& f = loop.f.ascending();
-    const auto& g = loop.g.ascending();
-    static const std::vector<double> kOne{1.0};
-    const auto& ffNum = zpetc ? zpetc->feedforwardNum.ascending() : kOne;
-    const auto& ffDen = zpetc ? zpetc->feedforwardDen.ascending() : kOne;
-    if (ffDen[0] == 0.0)
-        throw InvalidInput("zpetc", "the feedforward's z^0 denominator coefficient is zero");
-    const double rest = r.front();
-    const double uRest = loop.a(1.0) / loop.b(1.0) * rest;
-    // Histories, newest first: index i holds the value i samples back (shift registers, as the
-    // exported C code keeps them).
-    const std::size_t h = static_cast<std::size_t>(
-        std::max({loop.a.degree(), loop.b.degree(), loop.f.degree(), loop.g.degree()}) + 1);
-    const double deadzone =
-        options.table ? options.table->coulombVolts + options.table->amplifierDeadbandVolts : 0.0;
-    std::vector<double> yTrue(h, rest), uApplied(h, uRest), yMeasured(g.size(), rest),
-        uController(f.size(), uRest), ffIn(ffNum.size(), rest), ffOut(ffDen.size(), rest);
-    const auto shift = [](std::vector<double>& v) {
-        for (std::size_t i = v.size() - 1; i > 0; --i)
-            v[i] = v[i - 1];
-    };
-    DelayLine delay(options.delaySamples, uRest);
-    const double ts = loop.tsSeconds;
+}
+
+} // namespace
+
+SampledDataRun simulateSampledRst(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
+                                  const std::vector<double>& r, std::size_t samples,
+                                  const SampledDataOptions& options) {
+    checkRstRun(zpetc, r, samples, options);
     SampledDataRun run;
-    resizeRun(run, samples, ts, options.umaxVolts);
-    const double umax = options.umaxVolts;
-    for (std::size_t j = 0; j < samples + preview; ++j) {
-        // Plant A y = B u (A(0) = 1, B(0) = 0): y(k) from the past applied commands.
-        shift(yTrue);
-        shift(uApplied);
-        double yk = 0.0;
-        for (std::size_t i = 1; i < b.size(); ++i)
-            yk += b[i] * uApplied[i];
-        for (std::size_t i = 1; i < a.size(); ++i)
-            yk -= a[i] * yTrue[i];
-        yTrue[0] = yk;
-        const double measured = encoderReading(yk, options.encoderResolution);
-        // Feedforward on r(k + p) (or w = r without it).
-        shift(ffIn);
-        shift(ffOut);
-        ffIn[0] = r[j];
-        double w = 0.0;
-        for (std::size_t i = 0; i < ffNum.size(); ++i)
-            w += ffNum[i] * ffIn[i];
-        for (std::size_t i = 1; i < ffDen.size(); ++i)
-            w -= ffDen[i] * ffOut[i];
-        w = w / ffDen[0];
-        ffOut[0] = w;
-        // Controller F u = Kf w - G y_measured.
-        shift(yMeasured);
-        shift(uController);
-        yMeasured[0] = measured;
-        double v = loop.kf * w;
-        for (std::size_t i = 0; i < g.size(); ++i)
-            v -= g[i] * yMeasured[i];
-        for (std::size_t i = 1; i < f.size(); ++i)
-            v -= f[i] * uController[i];
-        v = v / f[0];
-        const double u = v > umax ? umax : (v < -umax ? -umax : v);
-        uController[0] = options.antiWindup == AntiWindup::None ? v : u;
-        const double applied = delay.push(dacOutput(u, options.dacBits, umax));
-        // An ARX axis' table (AxisSettings::friction): its Coulomb level and the amplifier's
-        // deadband as a dead zone of the plant's input.
-        uApplied[0] =
-            deadzone == 0.0 ? applied : applied - std::clamp(applied, -deadzone, deadzone);
-        if (j < preview)
-            continue;
-        const std::size_t k = j - preview;
-        const double rk = r[k];
-        run.result.t[k] = static_cast<double>(k) * ts;
-        run.result.r[k] = rk;
-        run.result.y[k] = yk;
-        run.result.e[k] = rk - yk;
-        run.result.u[k] = u;
-        run.result.clipped[k] = u != v;
-        run.measured[k] = measured;
-        run.applied[k] = applied;
-    }
+    resizeRun(run, samples, loop.tsSeconds, options.umaxVolts);
+    SampledRstLoop rst(loop, zpetc, r, samples, options, run);
+    for (std::size_t j = 0; j < samples + rst.preview(); ++j)
+        rst.advance(0.0);
     return run;
+}
+
+namespace {
+
+/// What a stepped sampled-data loop owns of its options: copies of the table and the
+/// feedforward they point to, so that the loop's references into them stay valid.
+struct OwnedOptions {
+    explicit OwnedOptions(const SampledDataOptions& o) : options(o) {
+        if (o.table) {
+            table = *o.table;
+            options.table = &table;
+        }
+        if (o.feedforwardVolts && !o.feedforwardVolts->empty()) {
+            feedforward = *o.feedforwardVolts;
+            options.feedforwardVolts = &feedforward;
+        }
+    }
+    OwnedOptions(const OwnedOptions&) = delete;
+    SampledDataOptions options;
+    TableFriction table;
+    std::vector<double> feedforward;
+};
+
+/// What the sampled steppers share: the run, the loop (built by each stepper once its inputs
+/// are in place) and the overrides that only forward to them.
+template <class Loop> class SampledStepperBase : public SampledLoopStepper {
+public:
+    double output() const override { return loop_->measured(); }
+    bool advance(double extraVolts) override { return loop_->advance(extraVolts); }
+    const SimulationResult& result() const override { return run_.result; }
+    SimulationResult takeResult() override { return std::move(run_.result); }
+    SampledDataRun takeRun() override { return std::move(run_); }
+
+protected:
+    SampledDataRun run_;
+    std::optional<Loop> loop_;
+};
+
+/// simulateSampledPi's loop as a SampledLoopStepper.
+class SampledPiStepper final : public SampledStepperBase<SampledPiLoop<0>> {
+public:
+    SampledPiStepper(const TransferFunction& plant, const DigitalPi& pi,
+                     std::vector<double> reference, const SampledDataOptions& options, double unit)
+        : owned_(options), pi_(pi), reference_(std::move(reference)),
+          plant_((validateSampledDataOptions(options), sampledPlant(plant, pi.tsSeconds))),
+          table_(startPiRun(run_, plant, pi_, reference_, owned_.options, unit)) {
+        loop_.emplace(plant_, pi_, reference_, owned_.options, unit, table_ ? &*table_ : nullptr,
+                      run_);
+    }
+    std::size_t samples() const override { return reference_.size(); }
+    double periodSeconds() const override { return pi_.tsSeconds; }
+    std::size_t index() const override { return loop_->index(); }
+    double reference() const override { return reference_[loop_->index()]; }
+
+private:
+    OwnedOptions owned_;
+    DigitalPi pi_;
+    std::vector<double> reference_;
+    SampledPlant plant_;
+    std::optional<TablePlant> table_;
+};
+
+/// simulateSampledServoPid's loop as a SampledLoopStepper.
+class SampledServoPidStepper final : public SampledStepperBase<SampledServoPidLoop> {
+public:
+    SampledServoPidStepper(const TransferFunction& plant, const ServoPidGains& gains,
+                           double tsSeconds, std::vector<MotionSample> command,
+                           CommandDerivativeSource source, const SampledDataOptions& options,
+                           double unit)
+        : owned_(options), gains_(gains), ts_(tsSeconds), command_(std::move(command)) {
+        validateSampledDataOptions(options);
+        requirePositive(unit, "model_unit_scale");
+        plant_ = sampledPlant(plant, tsSeconds);
+        requireFiniteCommand(command_);
+        startServoPidRun(run_, table_, plant, tsSeconds, command_.size(), owned_.options, unit);
+        loop_.emplace(plant_, gains_, ts_, command_, source, owned_.options, unit,
+                      table_ ? &*table_ : nullptr, run_);
+    }
+    std::size_t samples() const override { return command_.size(); }
+    double periodSeconds() const override { return ts_; }
+    std::size_t index() const override { return loop_->index(); }
+    double reference() const override { return command_[loop_->index()].position; }
+
+private:
+    OwnedOptions owned_;
+    ServoPidGains gains_;
+    double ts_;
+    std::vector<MotionSample> command_;
+    SampledPlant plant_;
+    std::optional<TablePlant> table_;
+};
+
+/// simulateSampledRst's loop as a SampledLoopStepper: the ZPETC's preview samples before
+/// k = 0 are run at construction, without coupling, as the batch run has them.
+class SampledRstStepper final : public SampledStepperBase<SampledRstLoop> {
+public:
+    SampledRstStepper(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
+                      std::vector<double> r, std::size_t samples, const SampledDataOptions& options)
+        : owned_(options), design_(loop), r_(std::move(r)), samples_(samples) {
+        if (zpetc)
+            zpetc_ = *zpetc;
+        checkRstRun(zpetc, r_, samples, options);
+        resizeRun(run_, samples, loop.tsSeconds, options.umaxVolts);
+        loop_.emplace(design_, zpetc_ ? &*zpetc_ : nullptr, r_, samples, owned_.options, run_);
+        for (std::size_t j = 0; j < loop_->preview(); ++j)
+            loop_->advance(0.0);
+    }
+    std::size_t samples() const override { return samples_; }
+    double periodSeconds() const override { return design_.tsSeconds; }
+    std::size_t index() const override { return loop_->step() - loop_->preview(); }
+    double reference() const override { return r_[index()]; }
+
+private:
+    OwnedOptions owned_;
+    PolePlacementDesign design_;
+    std::optional<ZpetcDesign> zpetc_;
+    std::vector<double> r_;
+    std::size_t samples_;
+};
+
+} // namespace
+
+std::unique_ptr<SampledLoopStepper> steppedSampledPi(const TransferFunction& plant,
+                                                     const DigitalPi& pi,
+                                                     const std::vector<double>& reference,
+                                                     const SampledDataOptions& options,
+                                                     double modelUnitsPerPositionUnit) {
+    return std::make_unique<SampledPiStepper>(plant, pi, reference, options,
+                                              modelUnitsPerPositionUnit);
+}
+
+std::unique_ptr<SampledLoopStepper>
+steppedSampledServoPid(const TransferFunction& plant, const ServoPidGains& gains, double tsSeconds,
+                       const std::vector<MotionSample>& command, CommandDerivativeSource source,
+                       const SampledDataOptions& options, double modelUnitsPerPositionUnit) {
+    return std::make_unique<SampledServoPidStepper>(plant, gains, tsSeconds, command, source,
+                                                    options, modelUnitsPerPositionUnit);
+}
+
+std::unique_ptr<SampledLoopStepper> steppedSampledRst(const PolePlacementDesign& loop,
+                                                      const ZpetcDesign* zpetc,
+                                                      const std::vector<double>& r,
+                                                      std::size_t samples,
+                                                      const SampledDataOptions& options) {
+    return std::make_unique<SampledRstStepper>(loop, zpetc, r, samples, options);
 }
 
 std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, const DigitalPi& pi,

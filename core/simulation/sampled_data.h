@@ -6,6 +6,7 @@
 #include "core/design/servo_pid.h"
 #include "core/design/zpetc.h"
 #include "core/model/transfer_function.h"
+#include "core/simulation/loop_stepper.h"
 #include "core/simulation/simulation.h"
 #include "core/simulation/trajectory.h"
 
@@ -13,6 +14,7 @@
 #include <complex>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -151,6 +153,43 @@ SampledDataRun simulateSampledServoPid(const TransferFunction& plant, const Serv
 SampledDataRun simulateSampledRst(const PolePlacementDesign& loop, const ZpetcDesign* zpetc,
                                   const std::vector<double>& r, std::size_t samples,
                                   const SampledDataOptions& options);
+
+/**
+ * A sampled-data loop advanced one sample at a time (SteppedLoop), for the cross-coupled
+ * controller over two digital axes: output() is the encoder's reading the controller uses at
+ * the current sample (what the coupling reads too), and advance(v) adds v volts to the axis
+ * controller's output before the limit, as firmware adds its friction compensation (a PI's or
+ * a PID's anti-windup acts on its own output; a pole-placement law under an anti-windup
+ * remembers its own share of the clipped command); advance returns whether the command is at
+ * the limit (|u| >= umax). Advanced with v = 0 throughout it is the batch run's, bit for bit.
+ */
+class SampledLoopStepper : public SteppedLoop {
+public:
+    /// The whole run (the encoder readings and the applied commands too), once every sample is
+    /// recorded.
+    virtual SampledDataRun takeRun() = 0;
+};
+
+/// simulateSampledPi's loop as a SampledLoopStepper (its inputs copied). Throws as it does.
+std::unique_ptr<SampledLoopStepper> steppedSampledPi(const TransferFunction& plant,
+                                                     const DigitalPi& pi,
+                                                     const std::vector<double>& reference,
+                                                     const SampledDataOptions& options,
+                                                     double modelUnitsPerPositionUnit = 1.0);
+
+/// simulateSampledServoPid's loop as a SampledLoopStepper. Throws as it does.
+std::unique_ptr<SampledLoopStepper>
+steppedSampledServoPid(const TransferFunction& plant, const ServoPidGains& gains, double tsSeconds,
+                       const std::vector<MotionSample>& command, CommandDerivativeSource source,
+                       const SampledDataOptions& options, double modelUnitsPerPositionUnit = 1.0);
+
+/// simulateSampledRst's loop as a SampledLoopStepper; the ZPETC's preview samples before k = 0
+/// run at construction, without coupling. Throws as it does.
+std::unique_ptr<SampledLoopStepper> steppedSampledRst(const PolePlacementDesign& loop,
+                                                      const ZpetcDesign* zpetc,
+                                                      const std::vector<double>& r,
+                                                      std::size_t samples,
+                                                      const SampledDataOptions& options);
 
 /**
  * The closed-loop poles (z-plane) of the linear sampled-data PI loop (no clipping, no

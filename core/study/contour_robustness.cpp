@@ -90,16 +90,48 @@ void validate(const ContourRobustnessProblem& p) {
         if (!std::isfinite(g.t[k]) || (k > 0 && !(g.t[k] > g.t[k - 1])))
             throw InvalidInput("geometry", "the time base must be finite and increasing (sample " +
                                                std::to_string(k) + ")");
+    if (p.coupling) {
+        validateCrossCoupling(p.coupling->gains, "cross_coupling");
+        // One grid for both axes: the continuous loop runs on k dt over its reference, the
+        // discrete one on k Ts over its samples.
+        const auto grid = [](const RobustnessProblem& a) {
+            return a.controller ? std::pair{a.dtSeconds, a.reference.size()}
+                                : std::pair{a.loop->tsSeconds, a.samples};
+        };
+        const auto [tx, nx] = grid(p.x);
+        const auto [ty, ny] = grid(p.y);
+        const CouplingDirections& d = p.coupling->directions;
+        if (std::abs(tx - ty) > 1e-9 * tx || nx != ny || d.thetaRad.size() != nx ||
+            d.curvaturePerMm.size() != nx || (!d.active.empty() && d.active.size() != nx))
+            throw InvalidInput("cross_coupling",
+                               "needs both axes on one grid with a direction for each sample");
+    }
 }
 
 /// Runs the pair @p values (x's parameters then y's) into the reused runs.
 JointPlantRun runPair(const ContourRobustnessProblem& p, const std::vector<double>& values,
                       SimulationResult& runX, SimulationResult& runY) {
     const auto split = values.begin() + static_cast<std::ptrdiff_t>(p.x.parameters.size());
-    const PlantRun x = runPerturbedPlant(p.x, std::vector<double>(values.begin(), split), runX);
-    const PlantRun y = runPerturbedPlant(p.y, std::vector<double>(split, values.end()), runY);
+    const std::vector<double> valuesX(values.begin(), split), valuesY(split, values.end());
     JointPlantRun out;
     out.values = values;
+    if (p.coupling) {
+        // Both axes in lockstep with the coupling; a diverging pair ends with non-finite
+        // samples, which the figures leave out as any unstable run.
+        const std::unique_ptr<SteppedLoop> lx = steppedPerturbedRun(p.x, valuesX);
+        const std::unique_ptr<SteppedLoop> ly = steppedPerturbedRun(p.y, valuesY);
+        runCrossCoupled(*lx, *ly, p.coupling->directions, p.coupling->gains);
+        runX = lx->takeResult();
+        runY = ly->takeResult();
+        out.stable = perturbedLoopStable(p.x, valuesX) && perturbedLoopStable(p.y, valuesY);
+        const auto finite = [](const SimulationResult& r) {
+            return std::all_of(r.y.begin(), r.y.end(), [](double v) { return std::isfinite(v); });
+        };
+        out.finite = finite(runX) && finite(runY);
+        return out;
+    }
+    const PlantRun x = runPerturbedPlant(p.x, valuesX, runX);
+    const PlantRun y = runPerturbedPlant(p.y, valuesY, runY);
     out.stable = x.stable && y.stable;
     out.finite = x.finite && y.finite;
     return out;

@@ -3,6 +3,7 @@
 
 #include "core/contour/contour_metrics.h"
 #include "core/contour/path.h"
+#include "core/simulation/cross_coupled_run.h"
 #include "core/simulation/trajectory.h"
 #include "core/study/robustness.h"
 
@@ -30,10 +31,21 @@ struct ContourGeometry {
     std::vector<double> t;
 };
 
+/// Koren's cross-coupled controller over both axes of a joint analysis: its gains and the
+/// direction of travel and curvature of the path at each sample of the axes' runs.
+struct ContourCoupling {
+    CrossCoupling gains;
+    CouplingDirections directions;
+};
+
 /// Both axes of a joint analysis: each with its nominal controller, its parameters and ranges.
 struct ContourRobustnessProblem {
     RobustnessProblem x, y;
     ContourGeometry geometry;
+    /// With a coupling, every pair runs cross-coupled (runCrossCoupled over
+    /// steppedPerturbedRun), the same controller on each plant drawn; both axes must then run
+    /// on one grid (one period, as many samples).
+    std::optional<ContourCoupling> coupling;
 };
 
 /// One pair of plants (x's parameters then y's) and the contour the two traced.

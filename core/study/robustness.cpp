@@ -43,48 +43,24 @@ struct Decimated {
     std::vector<double> y, e, u;
 };
 
-/// A discrete run on the grid k Ts as a SimulationResult (|u| > umax flagged, not applied).
-void fillDiscrete(const std::vector<double>& r, const DiscreteRun& run, double ts, double umax,
-                  std::size_t n, SimulationResult& out) {
-    out.t.resize(n);
-    out.r.assign(r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n));
-    out.y.assign(run.y.begin(), run.y.begin() + static_cast<std::ptrdiff_t>(n));
-    out.u.assign(n, 0.0);
-    std::copy_n(run.u.begin(), std::min(n, run.u.size()), out.u.begin());
-    out.e.resize(n);
-    out.clipped.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        out.t[k] = static_cast<double>(k) * ts;
-        out.e[k] = out.r[k] - out.y[k];
-        out.clipped[k] = std::abs(out.u[k]) > umax;
-    }
-    out.dtSeconds = ts;
-    out.umaxVolts = umax;
-}
-
-} // namespace
-
-PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values,
-                           SimulationResult& run) {
-    PlantRun out;
-    out.values = values;
-    std::optional<LoopMarginFigures> margins;
-    if (problem.controller) {
-        ThirdOrderPlant plant;
-        plant.k0 = valueOf(problem, values, "k0", kNaN);
-        plant.a1 = valueOf(problem, values, "a1", kNaN);
-        plant.a2 = valueOf(problem, values, "a2", kNaN);
-        const TransferFunction g = plant.transferFunction();
-        const TransferFunction open = series(*problem.controller, g);
-        const TransferFunction closed = feedback(open);
-        out.stable = closed.isStable();
-        LoopSimulationOptions o;
-        o.dtSeconds = problem.dtSeconds;
-        o.umaxVolts = problem.spec.umaxVolts;
-        o.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
-        o.initialOutput = problem.initialOutput;
-        // The table with this draw's friction levels (the compensation keeps the nominal ones).
-        std::optional<TableFriction> table = problem.table;
+/// A continuous axis' loop on the plant drawn: the plant, and the simulation's options with
+/// this draw's table (the compensation keeps the nominal friction levels).
+struct PerturbedContinuous {
+    TransferFunction plant;
+    LoopSimulationOptions options;
+    std::optional<TableFriction> table;
+    PerturbedContinuous(const PerturbedContinuous&) = delete;
+    PerturbedContinuous(const RobustnessProblem& problem, const std::vector<double>& values) {
+        ThirdOrderPlant p;
+        p.k0 = valueOf(problem, values, "k0", kNaN);
+        p.a1 = valueOf(problem, values, "a1", kNaN);
+        p.a2 = valueOf(problem, values, "a2", kNaN);
+        plant = p.transferFunction();
+        options.dtSeconds = problem.dtSeconds;
+        options.umaxVolts = problem.spec.umaxVolts;
+        options.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;
+        options.initialOutput = problem.initialOutput;
+        table = problem.table;
         if (table) {
             table->coulombVolts = valueOf(problem, values, "coulomb", table->coulombVolts);
             table->viscousVoltsPerMmPerS =
@@ -93,8 +69,63 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
             if (table->staticVolts > 0.0)
                 table->staticVolts = std::max(
                     valueOf(problem, values, "static", table->staticVolts), table->coulombVolts);
-            o.table = &*table;
+            options.table = &*table;
         }
+    }
+};
+
+/// A discrete axis' RST loop on the ARX plant drawn.
+PolePlacementDesign perturbedRst(const RobustnessProblem& problem,
+                                 const std::vector<double>& values) {
+    PolePlacementDesign loop = *problem.loop;
+    loop.a = perturbedArx(problem, values, problem.loop->a, "a");
+    loop.b = perturbedArx(problem, values, problem.loop->b, "b");
+    loop.closedLoopNum = loop.kf * loop.b;
+    loop.closedLoopDen = loop.a * loop.f + loop.b * loop.g;
+    return loop;
+}
+
+/// An ARX axis' table: its Coulomb level and amplifier deadband as an input dead zone.
+double rstDeadzone(const RobustnessProblem& problem) {
+    return problem.table ? problem.table->coulombVolts + problem.table->amplifierDeadbandVolts
+                         : 0.0;
+}
+
+} // namespace
+
+bool perturbedLoopStable(const RobustnessProblem& problem, const std::vector<double>& values) {
+    if (problem.controller) {
+        const PerturbedContinuous loop(problem, values);
+        return feedback(series(*problem.controller, loop.plant)).isStable();
+    }
+    return perturbedRst(problem, values).closedLoop().isStable();
+}
+
+std::unique_ptr<SteppedLoop> steppedPerturbedRun(const RobustnessProblem& problem,
+                                                 const std::vector<double>& values) {
+    if (problem.controller) {
+        PerturbedContinuous loop(problem, values);
+        if (!problem.feedforwardVolts.empty())
+            loop.options.feedforwardVolts = &problem.feedforwardVolts;
+        return steppedLoop(loop.plant, *problem.controller, problem.reference, loop.options);
+    }
+    const PolePlacementDesign loop = perturbedRst(problem, values);
+    return steppedRstRun(loop, problem.zpetcEnabled ? &*problem.zpetc : nullptr, problem.reference,
+                         problem.samples, problem.spec.umaxVolts, rstDeadzone(problem));
+}
+
+PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values,
+                           SimulationResult& run) {
+    PlantRun out;
+    out.values = values;
+    std::optional<LoopMarginFigures> margins;
+    if (problem.controller) {
+        PerturbedContinuous perturbed(problem, values);
+        const TransferFunction& g = perturbed.plant;
+        const TransferFunction open = series(*problem.controller, g);
+        const TransferFunction closed = feedback(open);
+        out.stable = closed.isStable();
+        LoopSimulationOptions& o = perturbed.options;
         if (!problem.feedforwardVolts.empty()) {
             // The feedback alone on this plant first: what the feedforward still gains here.
             simulateLoopInto(g, *problem.controller, problem.reference, o, run);
@@ -107,33 +138,26 @@ PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<d
         const StabilityMargins m = stabilityMargins(open);
         margins = LoopMarginFigures{m.phaseMarginDeg, m.gainMarginDb};
     } else {
-        PolePlacementDesign loop = *problem.loop;
-        loop.a = perturbedArx(problem, values, problem.loop->a, "a");
-        loop.b = perturbedArx(problem, values, problem.loop->b, "b");
-        loop.closedLoopNum = loop.kf * loop.b;
-        loop.closedLoopDen = loop.a * loop.f + loop.b * loop.g;
+        const PolePlacementDesign loop = perturbedRst(problem, values);
         out.stable = loop.closedLoop().isStable();
         const std::size_t n = problem.samples;
-        // An ARX axis' table: its Coulomb level and amplifier deadband as an input dead zone.
-        const double deadzone =
-            problem.table ? problem.table->coulombVolts + problem.table->amplifierDeadbandVolts
-                          : 0.0;
+        const double deadzone = rstDeadzone(problem);
         const std::vector<double> rLoop(problem.reference.begin(),
                                         problem.reference.begin() + static_cast<std::ptrdiff_t>(n));
         const double umax = problem.spec.umaxVolts;
         if (problem.zpetcEnabled) {
-            fillDiscrete(problem.reference,
-                         simulateFeedbackLoop(loop, rLoop, StartCondition::AtReference, deadzone),
-                         loop.tsSeconds, umax, n, run);
+            discreteResult(problem.reference,
+                           simulateFeedbackLoop(loop, rLoop, StartCondition::AtReference, deadzone),
+                           loop.tsSeconds, umax, n, run);
             out.rmseWithoutFf = rootMeanSquare(run.e);
-            fillDiscrete(problem.reference,
-                         simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n,
-                                           StartCondition::AtReference, deadzone),
-                         loop.tsSeconds, umax, n, run);
+            discreteResult(problem.reference,
+                           simulateZpetcLoop(loop, *problem.zpetc, problem.reference, n,
+                                             StartCondition::AtReference, deadzone),
+                           loop.tsSeconds, umax, n, run);
         } else {
-            fillDiscrete(problem.reference,
-                         simulateFeedbackLoop(loop, rLoop, StartCondition::AtReference, deadzone),
-                         loop.tsSeconds, umax, n, run);
+            discreteResult(problem.reference,
+                           simulateFeedbackLoop(loop, rLoop, StartCondition::AtReference, deadzone),
+                           loop.tsSeconds, umax, n, run);
         }
         if (out.stable)
             out.step = problem.zpetcEnabled ? zpetcStepCharacteristics(loop, *problem.zpetc)

@@ -5,6 +5,7 @@
 #include "core/design/zpetc.h"
 #include "core/model/table_friction.h"
 #include "core/model/transfer_function.h"
+#include "core/simulation/loop_stepper.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
 #include "core/study/plant_uncertainty.h"
@@ -14,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -142,6 +144,18 @@ void validateRobustnessProblem(const RobustnessProblem& problem);
  */
 PlantRun runPerturbedPlant(const RobustnessProblem& problem, const std::vector<double>& values,
                            SimulationResult& run);
+
+/// Whether the nominal controller's closed loop on the plant @p values is stable (as
+/// runPerturbedPlant's PlantRun::stable).
+bool perturbedLoopStable(const RobustnessProblem& problem, const std::vector<double>& values);
+
+/**
+ * runPerturbedPlant's run on the plant @p values (with the feedforward, when the problem has
+ * one) as a loop advanced sample by sample (core/simulation/loop_stepper.h), for the
+ * cross-coupled contour of two axes (analyzeContourRobustness). The problem must be valid.
+ */
+std::unique_ptr<SteppedLoop> steppedPerturbedRun(const RobustnessProblem& problem,
+                                                 const std::vector<double>& values);
 
 /// Which figure of the runs a histogram shows.
 enum class RobustnessFigure { Rmse, MaxAbsError, MaxAbsU };

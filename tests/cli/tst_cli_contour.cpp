@@ -4,6 +4,7 @@
 // series, and bad arguments or programs exit 2 naming the argument, file, line and column.
 #include "core/contour/gcode_reader.h"
 #include "core/session/contour_run.h"
+#include "core/session/coupling_sweep.h"
 #include "core/session/session.h"
 #include "tests/support/ballbar_program.h"
 #include "tests/support/cli_runner.h"
@@ -40,6 +41,8 @@ private slots:
     void ballbarProgramGivesBothDirections();
     void crossCouplingMatchesTheCore();
     void presetCrossCoupling();
+    void couplingSweepMatchesTheCore();
+    void couplingSweepDefaultGrid();
     void badInput_data();
     void badInput();
 };
@@ -239,6 +242,96 @@ void TstCliContour::presetCrossCoupling() {
     QCOMPARE(c["line_loop"].toObject()["period"].toDouble(), 0.07);
 }
 
+void TstCliContour::couplingSweepMatchesTheCore() {
+    // The square under the paper's PIs, its coupling's gains swept on a 3 x 2 grid given out of
+    // order: every cell is the core's sweepProgramCoupling on the same program and options,
+    // computed here again (17 digits: the same doubles), kp 3 refused on the square's line 7
+    // with the core's message; the best is the core's.
+    const auto run =
+        xyt::test::runCli({"contour", "--gcode", example("square_sharp_corners.nc"), "--ccc-sweep",
+                           "--ccc-sweep-kp", "3,0,0.1", "--ccc-sweep-ki", "0.1, 0"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    QVERIFY(o["cross_coupling"].isNull()); // the run itself is uncoupled (no --ccc-kp)
+    const QJsonObject sweep = o["cross_coupling_sweep"].toObject();
+    xyt::ContourRunOptions options;
+    options.profile.maxAccelMmPerS2 = 100.0; // the CLI's default
+    options.profile.dtSeconds = 0.001;
+    const xyt::CouplingSweepResult core = xyt::sweepProgramCoupling(
+        xyt::Session::paperDefault(), readExample("square_sharp_corners.nc"), options,
+        {{0.0, 0.1, 3.0}, {0.0, 0.1}});
+    QCOMPARE(sweep["grid"].toObject()["kp"].toArray(), (QJsonArray{0, 0.1, 3}));
+    QCOMPARE(sweep["grid"].toObject()["ki"].toArray(), (QJsonArray{0, 0.1}));
+    QCOMPARE(sweep["estimate"].toString(), QStringLiteral("circular"));
+    const QJsonArray cells = sweep["cells"].toArray();
+    QCOMPARE(cells.size(), qsizetype(6));
+    for (qsizetype i = 0; i < cells.size(); ++i) {
+        const QJsonObject c = cells[i].toObject();
+        const xyt::CouplingSweepCell& expected = core.cells[static_cast<std::size_t>(i)];
+        QCOMPARE(c["kp"].toDouble(), expected.coupling.kp);
+        QCOMPARE(c["ki"].toDouble(), expected.coupling.ki);
+        QCOMPARE(c["status"].toString(),
+                 QString::fromUtf8(xyt::couplingCellStatusName(expected.status)));
+        if (expected.status == xyt::CouplingCellStatus::Ok) {
+            QCOMPARE(c["contour_error"].toObject()["max"].toDouble(), expected.maxAbsMm);
+            QCOMPARE(c["contour_error"].toObject()["rms"].toDouble(), expected.rmsMm);
+            QCOMPARE(c["saturated"].toBool(), expected.saturated);
+            if (expected.coupling.active())
+                QCOMPARE(c["spectral_radius"].toDouble(), expected.spectralRadius);
+            else
+                QVERIFY(c["spectral_radius"].isNull()); // no coupled loop at (0, 0)
+        } else {
+            QCOMPARE(c["message"].toString(), QString::fromStdString(expected.message));
+            QVERIFY(c["contour_error"].isNull());
+        }
+    }
+    QCOMPARE(cells[4].toObject()["status"].toString(), QStringLiteral("unstable"));
+    QVERIFY(cells[4].toObject()["message"].toString().contains("unstable on program line 7"));
+    // (0, 0) is the independent axes' run, which is the plain run's contour error.
+    const QJsonObject alone = sweep["independent_axes"].toObject();
+    QCOMPARE(alone["contour_error"].toObject()["max"].toDouble(), core.independent.maxAbsMm);
+    QCOMPARE(alone["contour_error"].toObject()["max"].toDouble(),
+             o["contour_error"].toObject()["max"].toDouble());
+    QVERIFY(core.best.has_value());
+    const QJsonObject best = sweep["best"].toObject();
+    QCOMPARE(best["index"].toInteger(), qint64(*core.best));
+    QCOMPARE(best["among"].toString(), QStringLiteral("robust"));
+    QCOMPARE(sweep["rule"].toString(), QString::fromUtf8(xyt::kBestCouplingRule));
+    QCOMPARE(sweep["cancelled"].toBool(), false);
+}
+
+void TstCliContour::couplingSweepDefaultGrid() {
+    // --ccc-sweep alone sweeps defaultCouplingSweepGrid (30 pairs) with the --ccc-estimate;
+    // the run itself keeps its --ccc-kp.
+    const auto run = xyt::test::runCli({"contour", "--gcode", example("star.nc"), "--ccc-sweep",
+                                        "--ccc-kp", "0.03", "--ccc-estimate", "linear"});
+    QVERIFY(run.finished);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject o = run.json();
+    const QJsonObject sweep = o["cross_coupling_sweep"].toObject();
+    const xyt::CouplingSweepGrid grid = xyt::defaultCouplingSweepGrid();
+    const QJsonObject g = sweep["grid"].toObject();
+    QCOMPARE(g["kp"].toArray().size(), static_cast<qsizetype>(grid.kpVoltsPerMm.size()));
+    QCOMPARE(g["ki"].toArray().size(), static_cast<qsizetype>(grid.kiVoltsPerMmSecond.size()));
+    for (std::size_t i = 0; i < grid.kpVoltsPerMm.size(); ++i)
+        QCOMPARE(g["kp"].toArray()[static_cast<qsizetype>(i)].toDouble(), grid.kpVoltsPerMm[i]);
+    QCOMPARE(sweep["cells"].toArray().size(), qsizetype(30));
+    QCOMPARE(sweep["estimate"].toString(), QStringLiteral("linear"));
+    // The cell of the run's own gains (kp 0.03, ki 0: index 1 * 5 + 0) is the run.
+    const QJsonObject own = sweep["cells"].toArray()[5].toObject();
+    QCOMPARE(own["kp"].toDouble(), 0.03);
+    QCOMPARE(own["ki"].toDouble(), 0.0);
+    QCOMPARE(own["contour_error"].toObject()["max"].toDouble(),
+             o["contour_error"].toObject()["max"].toDouble());
+    QCOMPARE(sweep["independent_axes"].toObject()["contour_error"].toObject()["max"].toDouble(),
+             o["cross_coupling"]
+                 .toObject()["independent_axes"]
+                 .toObject()["contour_error"]
+                 .toObject()["max"]
+                 .toDouble());
+}
+
 void TstCliContour::badInput_data() {
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QString>("message"); // a part of the one stderr line
@@ -308,6 +401,35 @@ void TstCliContour::badInput_data() {
     QTest::newRow("unstable line")
         << QStringList{"--gcode", "MOVE", "--ccc-kp", "100"}
         << "cross_coupling: the coupled loop is unstable on program line 2 (direction 0 deg)";
+    QTest::newRow("sweep list not a number")
+        << QStringList{"--gcode", star, "--ccc-sweep", "--ccc-sweep-kp", "0,0.1,x"}
+        << "--ccc-sweep-kp: 'x' is not a number";
+    QTest::newRow("sweep list empty")
+        << QStringList{"--gcode", star, "--ccc-sweep", "--ccc-sweep-ki", ""}
+        << "--ccc-sweep-ki: '' is not a number";
+    QTest::newRow("sweep gain negative")
+        << QStringList{"--gcode", star, "--ccc-sweep", "--ccc-sweep-ki", "0,-1"}
+        << "--ccc-sweep-ki: -1 is not a finite gain >= 0";
+    QTest::newRow("sweep gain infinite")
+        << QStringList{"--gcode", star, "--ccc-sweep", "--ccc-sweep-kp", "inf"}
+        << "--ccc-sweep-kp: inf is not a finite gain >= 0";
+    QTest::newRow("sweep too many pairs")
+        << QStringList{"--gcode",
+                       star,
+                       "--ccc-sweep",
+                       "--ccc-sweep-kp",
+                       "0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20",
+                       "--ccc-sweep-ki",
+                       "0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19"}
+        << "--ccc-sweep-kp: with --ccc-sweep-ki: 21 values of kp and 20 of ki make 420 pairs: "
+           "at most 400";
+    QTest::newRow("sweep list without the flag")
+        << QStringList{"--gcode", star, "--ccc-sweep-kp", "0,1"}
+        << "--ccc-sweep-kp: needs --ccc-sweep";
+    QTest::newRow("sweep flag with a value")
+        << QStringList{"--gcode", star, "--ccc-sweep=1"} << "--ccc-sweep: takes no value";
+    QTest::newRow("sweep on the preset")
+        << QStringList{"--ccc-sweep"} << "--ccc-sweep: is not an option of this command";
     QTest::newRow("preset margin with coupling")
         << QStringList{"--ccc-kp", "1", "--margin", "0.1"} << "--margin: cannot go with";
     QTest::newRow("unwritable csv")

@@ -18,6 +18,39 @@
 
 namespace xyt::test {
 
+/// What every firmware harness starts with: the headers, the generated xyt.h, and the hardware
+/// both kinds share: read_number (stdin, exit 2 on bad input), encoder (round half up, as
+/// encoderReading) and dac (the generated conversion when the header has a DAC).
+inline constexpr const char* kCHarnessCommon = R"(#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "xyt.h"
+
+#define MAX_STATES 64
+#define MAX_DELAY 128
+
+static double read_number(void) {
+    double v;
+    if (scanf("%lf", &v) != 1) {
+        fprintf(stderr, "bad input\n");
+        exit(2);
+    }
+    return v;
+}
+
+static double encoder(double y, double resolution) {
+    return resolution == 0.0 ? y : resolution * floor(y / resolution + 0.5);
+}
+
+static double dac(xyt_real u) {
+#ifdef XYT_DAC_BITS
+    return (double)xyt_dac_volts(xyt_dac_code(u));
+#else
+    return (double)u;
+#endif
+}
+)";
+
 struct CHarnessRun {
     bool ok = false;
     QString error;     ///< why not, when !ok (the compiler's or the harness' stderr)

@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
+#include <QPushButton>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -49,6 +50,10 @@ CrossCouplingEditor::CrossCouplingEditor(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("kp (V/mm)"), kp_);
     form->addRow(tr("ki (V/(mm·s))"), ki_);
     form->addRow(tr("Estimate"), estimate_);
+    tune_ = new QPushButton(tr("Tune…"), body_);
+    tune_->setToolTip(tr("Run the contour once for each kp and ki of a small grid and pick the "
+                         "gains with the smallest contour error"));
+    form->addRow(QString(), tune_);
     stability_ = new QLabel(body_);
     stability_->setWordWrap(true);
     stability_->hide();
@@ -58,6 +63,7 @@ CrossCouplingEditor::CrossCouplingEditor(QWidget* parent) : QWidget(parent) {
     for (NumberField* f : {kp_, ki_})
         connect(f, &NumberField::valueAccepted, this, [this] { emitIfValid(); });
     connect(estimate_, &QComboBox::activated, this, [this] { emitIfValid(); });
+    connect(tune_, &QPushButton::clicked, this, &CrossCouplingEditor::tuneRequested);
     connect(fold_, &QToolButton::toggled, this, [this](bool open) {
         body_->setVisible(open);
         fold_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);

@@ -7,6 +7,7 @@
 
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QToolButton;
 
 namespace xyt::ui {
@@ -19,7 +20,8 @@ class NumberField;
  * off) and the estimate (linear or circular). Folded, its header says whether it is on. A gain
  * the core refuses (validateCrossCoupling) stays at its field, red with the reason, and nothing
  * is applied. Below the fields, the coupled loop's stability on straight lines as the last
- * evaluation found it (setStability).
+ * evaluation found it (setStability), and "Tune…", which asks for the sweep of the gains over
+ * the contour error (tuneRequested: the window opens CouplingSweepDialog).
  */
 class CrossCouplingEditor : public QWidget {
     Q_OBJECT
@@ -35,9 +37,12 @@ public:
     QComboBox* estimateBox() const { return estimate_; }
     QToolButton* foldButton() const { return fold_; }
     QLabel* stabilityLabel() const { return stability_; }
+    QPushButton* tuneButton() const { return tune_; }
 
 signals:
     void couplingEdited(const CrossCoupling& coupling);
+    /// "Tune…" was pressed.
+    void tuneRequested();
 
 private:
     void emitIfValid();
@@ -49,6 +54,7 @@ private:
     NumberField* ki_;
     QComboBox* estimate_;
     QLabel* stability_;
+    QPushButton* tune_;
     CrossCoupling coupling_;
 };
 

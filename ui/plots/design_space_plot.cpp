@@ -116,21 +116,6 @@ QString metricAxisLabel(SweepCriterion metric) {
 
 namespace {
 
-/// A perceptually ordered blue-green-yellow map (the stops of matplotlib's viridis).
-QCPColorGradient metricGradient() {
-    QCPColorGradient g;
-    g.clearColorStops();
-    g.setColorStopAt(0.0, QColor(0x44, 0x01, 0x54));
-    g.setColorStopAt(0.25, QColor(0x3b, 0x52, 0x8b));
-    g.setColorStopAt(0.5, QColor(0x21, 0x91, 0x8c));
-    g.setColorStopAt(0.75, QColor(0x5e, 0xc9, 0x62));
-    g.setColorStopAt(1.0, QColor(0xfd, 0xe7, 0x25));
-    g.setColorInterpolation(QCPColorGradient::ciRGB);
-    g.setNanHandling(QCPColorGradient::nhTransparent);
-    g.setLevelCount(256);
-    return g;
-}
-
 /// Four levels, one per CellStatus: clear, a white veil, grey, light grey.
 QCPColorGradient statusGradient() {
     QCPColorGradient g;
@@ -221,7 +206,7 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     map_ = new QCPColorMap(xAxis, yAxis);
     map_->setName(tr("metric"));
     map_->setInterpolate(false);
-    map_->setGradient(metricGradient());
+    map_->setGradient(viridisGradient());
     map_->removeFromLegend();
     status_ = new QCPColorMap(xAxis, yAxis);
     status_->setInterpolate(false);
@@ -234,7 +219,7 @@ DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
     scale_->setBarWidth(14);
     plotLayout()->addElement(1, 1, scale_);
     map_->setColorScale(scale_);
-    scale_->setGradient(metricGradient());
+    scale_->setGradient(viridisGradient());
     styleAxisRect(axisRect());
     QFont f = scale_->axis()->labelFont();
     f.setPointSizeF(9);

@@ -75,6 +75,10 @@ void compactLegend(QCPLegend* legend);
 
 void styleAxisRect(QCPAxisRect* rect);
 
+/// A perceptually ordered blue-green-yellow map (the stops of matplotlib's viridis), 256
+/// levels, NaN transparent (the plot's background shows where a cell has no figure).
+QCPColorGradient viridisGradient();
+
 /// A row of small left-aligned text (a hover readout, a criterion) under the plot at layout row
 /// @p row, as short as its text.
 QCPTextElement* addTextRow(QCustomPlot* plot, int row, const QString& text);

@@ -9,7 +9,10 @@
 #include "core/session/axis_run.h"
 #include "core/session/contour_run.h"
 #include "core/session/design_method_module.h"
+#include "core/session/program_trajectory.h"
+#include "core/session/robustness_problem.h"
 #include "core/session/session.h"
+#include "core/study/contour_robustness.h"
 #include "tests/support/reference_data.h"
 
 #include <QTest>
@@ -275,6 +278,43 @@ private slots:
             QVERIFY2(
                 std::abs(run.contour.rms - rms) <= 1e-8 * rms,
                 qPrintable(QString("%1: %2 vs %3").arg(estimate).arg(run.contour.rms).arg(rms)));
+        }
+    }
+
+    /// The robustness analysis of the contour runs every pair of plants cross-coupled: its
+    /// nominal pair is the session's coupled contour run (the same runs on the same time base:
+    /// equal to the bit), and a drawn pair moves it.
+    void theContourRobustnessRunsCoupled() {
+        Session s = Session::paperDefault();
+        s.trajectory.kind = TrajectoryKind::Gcode;
+        s.trajectory.gcode.program = kPaperCircle;
+        s.trajectory.gcode.maxAccelMmPerS2 = 100.0;
+        s.crossCoupling = {0.1, 1.0, ContourEstimateKind::Circular};
+        ContourRobustnessProblem problem = sessionContourRobustnessProblem(s);
+        QVERIFY(problem.coupling.has_value());
+        RobustnessOptions options;
+        options.samples = 0;
+        options.corners = false;
+        const ContourRobustnessResult coupled = analyzeContourRobustness(problem, options);
+        ContourRunOptions runOptions = programRunOptions(s.trajectory);
+        runOptions.compareIndependentAxes = false;
+        const ContourRun run = runProgramContour(s, readGcode(kPaperCircle), runOptions);
+        QCOMPARE(coupled.nominal.maxAbsContourError, run.contour.maxAbs);
+        QCOMPARE(coupled.nominal.rmsContourError, run.contour.rms);
+        problem.coupling.reset();
+        const ContourRobustnessResult alone = analyzeContourRobustness(problem, options);
+        QVERIFY(coupled.nominal.maxAbsContourError < 0.5 * alone.nominal.maxAbsContourError);
+        // A plant 10 % slower on x: the pair still runs coupled and its error differs.
+        problem = sessionContourRobustnessProblem(s);
+        for (UncertainParameter& q : problem.x.parameters)
+            if (q.name == "k0")
+                q.relative = 0.1;
+        options.corners = true;
+        const ContourRobustnessResult drawn = analyzeContourRobustness(problem, options);
+        QCOMPARE(drawn.runs.size(), std::size_t{2});
+        for (const JointPlantRun& r : drawn.runs) {
+            QVERIFY(r.stable && r.finite);
+            QVERIFY(r.maxAbsContourError != coupled.nominal.maxAbsContourError);
         }
     }
 

@@ -38,26 +38,7 @@ namespace {
 /// The hardware around the generated controller. KIND 0: continuous plant (ZOH matrices), the
 /// Guillemin-Truxal PI; KIND 1: ARX plant, the RST law (+ ZPETC). The sums are written in the
 /// order of core/simulation/sampled_data.cpp. Input on stdin: see writeInput().
-constexpr const char* kHarness = R"(#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include "xyt.h"
-
-#define MAX_STATES 64
-#define MAX_DELAY 128
-
-static double encoder(double y, double resolution) {
-    return resolution == 0.0 ? y : resolution * floor(y / resolution + 0.5);
-}
-
-static double dac(xyt_real u) {
-#ifdef XYT_DAC_BITS
-    return (double)xyt_dac_volts(xyt_dac_code(u));
-#else
-    return (double)u;
-#endif
-}
-
+constexpr const char* kHarness = R"(
 static double line[MAX_DELAY];
 static int delay, head;
 static double delayed(double u) {
@@ -68,15 +49,6 @@ static double delayed(double u) {
     line[head] = u;
     head = (head + 1) % delay;
     return out;
-}
-
-static double read_number(void) {
-    double v;
-    if (scanf("%lf", &v) != 1) {
-        fprintf(stderr, "bad input\n");
-        exit(2);
-    }
-    return v;
 }
 
 int main(void) {
@@ -233,10 +205,10 @@ std::string writeInput(const Session& session, const SessionEvaluation& evaluati
 LoopRun runHarness(const QString& dir, const std::string& header, const std::string& id, bool pi,
                    const std::string& input) {
     const QString name = QString::fromStdString(id);
-    const test::CHarnessRun run =
-        test::runCHarness(dir, header, kHarness, QByteArray::fromStdString(input),
-                          {"-DKIND=" + QString(pi ? "0" : "1"), "-DSTATE=xyt_" + name + "_state",
-                           "-DINIT=xyt_" + name + "_init", "-DSTEP=xyt_" + name + "_step"});
+    const test::CHarnessRun run = test::runCHarness(
+        dir, header, QByteArray(test::kCHarnessCommon) + kHarness, QByteArray::fromStdString(input),
+        {"-DKIND=" + QString(pi ? "0" : "1"), "-DSTATE=xyt_" + name + "_state",
+         "-DINIT=xyt_" + name + "_init", "-DSTEP=xyt_" + name + "_step"});
     if (!run.ok)
         qFatal("%s", qPrintable(run.error));
     LoopRun out;
