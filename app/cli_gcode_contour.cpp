@@ -205,6 +205,13 @@ QJsonValue programCouplingJson(const Session& session, const ContourRun& run,
             alone.insert("circular_deviation_g", number(run.independent->iso->circularDeviationG));
         o.insert("independent_axes", alone);
     }
+    if (run.feedbackOnly) {
+        QJsonObject feedback{{"contour_error", contourJson(run.feedbackOnly->contour)}};
+        if (run.feedbackOnly->iso)
+            feedback.insert("circular_deviation_g",
+                            number(run.feedbackOnly->iso->circularDeviationG));
+        o.insert("feedback_only", feedback);
+    }
     return o;
 }
 

@@ -224,12 +224,30 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
     const ContourErrorOptions errorOptions = programContourErrorOptions(program, options);
     out.contour =
         contourError(program.path, out.trace.profile.t, out.trace.x, out.trace.y, errorOptions);
+    // The comparison runs: the independent axes, and without their feedforward when they have
+    // one (the session's design alone, then its feedback alone).
+    std::optional<Session> feedbackOnly;
     if (session.crossCoupling.active() && options.compareIndependentAxes) {
-        IndependentAxesRun independent;
-        independent.trace = trace(session, program.path, feeds, options, &out.trace.profile, false);
-        independent.contour = contourError(program.path, independent.trace.profile.t,
-                                           independent.trace.x, independent.trace.y, errorOptions);
-        out.independent = std::move(independent);
+        const auto independentRun = [&](const Session& s) {
+            IndependentAxesRun run;
+            run.trace = trace(s, program.path, feeds, options, &out.trace.profile, false);
+            run.contour = contourError(program.path, run.trace.profile.t, run.trace.x, run.trace.y,
+                                       errorOptions);
+            return run;
+        };
+        out.independent = independentRun(session);
+        Session plain = session;
+        bool changed = false;
+        for (std::size_t i = 0; i < 2; ++i)
+            if (auto without = designMethodModule(session.axes[i].method)
+                                   .withoutFeedforward(session.axes[i])) {
+                plain.axes[i] = std::move(*without);
+                changed = true;
+            }
+        if (changed) {
+            out.feedbackOnly = independentRun(plain);
+            feedbackOnly = std::move(plain);
+        }
     }
     out.warnings = program.warnings;
     addAxisWarnings(out.trace, out.warnings);
@@ -265,13 +283,18 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
                 test.uncompensatedIso = iso230Circular(test.uncompensatedX, test.uncompensatedY,
                                                        test.nominal, options.iso);
         }
-        if (out.independent) {
-            const ContourTrace alone =
-                trace(session, Path({circle}), feed, options, nullptr, false);
-            pointsOnSegments(alone, {0, 1}, out.independent->circleX, out.independent->circleY);
-            if (out.independent->circleX.size() >= 3)
-                out.independent->iso = iso230Circular(
-                    out.independent->circleX, out.independent->circleY, test.nominal, options.iso);
+        // The comparison runs' first circle, alone as the test runs it.
+        using Comparison = std::pair<std::optional<IndependentAxesRun>*, const Session*>;
+        for (auto [run, s] :
+             {Comparison{&out.independent, &session},
+              Comparison{&out.feedbackOnly, feedbackOnly ? &*feedbackOnly : nullptr}}) {
+            if (!*run || !s)
+                continue;
+            const ContourTrace alone = trace(*s, Path({circle}), feed, options, nullptr, false);
+            pointsOnSegments(alone, {0, 1}, (*run)->circleX, (*run)->circleY);
+            if ((*run)->circleX.size() >= 3)
+                (*run)->iso =
+                    iso230Circular((*run)->circleX, (*run)->circleY, test.nominal, options.iso);
         }
         if (test.x.size() >= 3 && test.reverseX.size() >= 3) {
             test.iso = iso230Circular(test.x, test.y, test.reverseX, test.reverseY, test.nominal,
@@ -284,13 +307,17 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         }
     } else {
         out.circular = ballbarTestOfProgram(program, out.trace, options.iso, out.warnings);
-        if (out.circular && out.independent) {
+        if (out.circular) {
             const BallbarCircles circles = findBallbarCircles(program);
-            IndependentAxesRun& alone = *out.independent;
-            pointsOnSegments(alone.trace, *circles.first, alone.circleX, alone.circleY);
-            if (alone.circleX.size() >= 3)
-                alone.iso = iso230Circular(alone.circleX, alone.circleY, out.circular->nominal,
-                                           options.iso);
+            for (std::optional<IndependentAxesRun>* run : {&out.independent, &out.feedbackOnly}) {
+                if (!*run)
+                    continue;
+                IndependentAxesRun& alone = **run;
+                pointsOnSegments(alone.trace, *circles.first, alone.circleX, alone.circleY);
+                if (alone.circleX.size() >= 3)
+                    alone.iso = iso230Circular(alone.circleX, alone.circleY, out.circular->nominal,
+                                               options.iso);
+            }
         }
     }
     addReversalSpikeWarning(session, out);

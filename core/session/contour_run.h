@@ -98,6 +98,9 @@ struct ContourRun {
     /// With cross-coupling on and ContourRunOptions::compareIndependentAxes: the same program
     /// with independent axes.
     std::optional<IndependentAxesRun> independent;
+    /// Beside it, when an axis has a command feedforward (ZPETC, a PID's FF0..FF3): the
+    /// independent axes without it, the feedback alone (DesignMethodModule::withoutFeedforward).
+    std::optional<IndependentAxesRun> feedbackOnly;
     /// With cross-coupling on: the coupled loop's stability on the program's lines and arcs
     /// (a line where it is unstable refuses the run instead).
     std::optional<CouplingStability> couplingStability;

@@ -213,6 +213,14 @@ public:
                       const std::vector<double>& /*omegaRadPerSec*/) const {
         return std::nullopt;
     }
+    /**
+     * @p settings without the method's command feedforward (pole placement's ZPETC, a PID's
+     * FF0..FF3; a friction compensation stays), for the contour views' comparison of the
+     * feedback alone; unset when the method has none or it is off already.
+     */
+    virtual std::optional<AxisSettings> withoutFeedforward(const AxisSettings& /*settings*/) const {
+        return std::nullopt;
+    }
     /// The method's feedforward as the views name it ("ZPETC", "feedforward").
     virtual std::string_view feedforwardName() const { return "feedforward"; }
     /// What the design's run is (AxisEvaluation::run), as the report labels it.

@@ -233,6 +233,21 @@ public:
     std::string_view displayName() const override { return "PID + feedforward"; }
     std::vector<MethodParameter> parameters() const override { return pidFeedforwardParameters(); }
 
+    std::optional<AxisSettings> withoutFeedforward(const AxisSettings& settings) const override {
+        // FF0..FF3 at 0 (a missing one would take its default, the plant's inverse).
+        AxisSettings out = settings;
+        bool any = false;
+        for (const MethodParameter& p : pidFeedforwardParameters())
+            if (p.name == "ff0" || p.name == "ff1" || p.name == "ff2" || p.name == "ff3") {
+                const auto at = settings.parameters.find(p.name);
+                any = any || (at == settings.parameters.end() ? p.defaultValue : at->second) != 0.0;
+                out.parameters[p.name] = 0.0;
+            }
+        if (!any)
+            return std::nullopt;
+        return out;
+    }
+
     void evaluate(const Session& session, int axisIndex, double durationSeconds, bool withDigital,
                   AxisEvaluation& out) const override {
         auto design =

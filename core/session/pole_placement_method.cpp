@@ -349,6 +349,14 @@ public:
     }
     std::string_view feedforwardName() const override { return "ZPETC"; }
 
+    std::optional<AxisSettings> withoutFeedforward(const AxisSettings& settings) const override {
+        if (!settings.pp.zpetcEnabled)
+            return std::nullopt;
+        AxisSettings out = settings;
+        out.pp.zpetcEnabled = false;
+        return out;
+    }
+
     std::string designRunDescription() const override {
         return "the linear loop at Ts, |u| over the limit flagged, not applied";
     }

@@ -114,6 +114,30 @@ private slots:
         QVERIFY(window_->crossCouplingEditor()->stabilityLabel()->isHidden());
     }
 
+    void polePlacementAxesAlsoShowTheFeedbackAlone() {
+        // Axes with a ZPETC: the contour and ballbar views add the feedback alone (the core's
+        // feedbackOnly run) beside the independent axes.
+        Session s = circleProgramSession(session_->session());
+        for (AxisSettings& a : s.axes)
+            a.method = DesignMethod::PolePlacementZpetc;
+        s.crossCoupling = {3.0, 1.0, ContourEstimateKind::Circular};
+        session_->apply(s, QStringLiteral("pp coupled"));
+        const auto& program = session_->evaluation().program;
+        QVERIFY(program && program->feedbackOnly && program->feedbackOnly->iso);
+        ContourPlot* plot = window_->contourPlot();
+        window_->lowerTabs()->setCurrentWidget(plot);
+        QCOMPARE(plot->feedbackOnlyCurve()->data()->size(),
+                 static_cast<int>(program->feedbackOnly->contour.error.size()));
+        QVERIFY(plot->figuresText().contains(
+            QStringLiteral("without feedforward: max %1 mm")
+                .arg(QString::number(program->feedbackOnly->contour.maxAbs, 'g', 3))));
+        plot->setPolar(true);
+        QCOMPARE(plot->feedbackOnlyCurve()->data()->size(),
+                 static_cast<int>(program->feedbackOnly->circleX.size()));
+        QVERIFY(plot->figuresText().contains(QStringLiteral("without feedforward G")));
+        plot->setPolar(false);
+    }
+
     void theCirclePresetRunsCoupled() {
         Session s = session_->session();
         s.trajectory.kind = TrajectoryKind::Circle;

@@ -53,6 +53,8 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     uncompensated_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DashDotLine), QString());
     // The same run with the axes independent, beside a cross-coupled one.
     independent_ = newCurve(this, QPen(QColor(0x9e, 0x9e, 0x9e), 1.2, Qt::DotLine), QString());
+    // ... and without the axes' feedforward (ZPETC, a PID's FF0..FF3): the feedback alone.
+    feedbackOnly_ = newCurve(this, QPen(QColor(0xe5, 0x73, 0x73), 1.2, Qt::DotLine), QString());
     fMax_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), tr("F max/min"));
     fMin_ = newCurve(this, QPen(colors::reference, 1.2, Qt::DotLine), QString());
     gOuter_ = newCurve(this, QPen(colors::error, 1.0, Qt::DashDotLine), tr("G (LS centre)"));
@@ -157,7 +159,7 @@ void ContourPlot::showSession(const Session& session, const SessionEvaluation& e
 
 void ContourPlot::clearCurves() {
     for (QCPCurve* c : {commanded_, traced_, magnified_, reverse_, uncompensated_, independent_,
-                        fMax_, fMin_, gInner_, gOuter_})
+                        feedbackOnly_, fMax_, fMin_, gInner_, gOuter_})
         c->data()->clear();
     for (QCPCurve* c : bands_)
         c->data()->clear();
@@ -354,6 +356,13 @@ void ContourPlot::drawProgram() {
         independent_->setName(tr("independent axes, error × %1").arg(magnification_));
         text = tr("Cross-coupled: ") + text +
                tr("; independent axes: max %1 mm").arg(QString::number(alone.maxAbs, 'g', 3));
+        if (run.feedbackOnly) {
+            const ContourErrorResult& feedback = run.feedbackOnly->contour;
+            setPoints(feedbackOnly_, magnifiedContourPoints(path, feedback, magnification_));
+            feedbackOnly_->setName(tr("without feedforward, error × %1").arg(magnification_));
+            text += tr("; without feedforward: max %1 mm")
+                        .arg(QString::number(feedback.maxAbs, 'g', 3));
+        }
     }
     figures_->setText(text);
 }
@@ -400,6 +409,12 @@ void ContourPlot::drawCircularTest() {
         independent_->setName(tr("%1 with independent axes ×%2").arg(forward).arg(m));
         text += tr("; independent axes G %1").arg(mm(independent->iso->circularDeviationG));
     }
+    const auto& feedback = evaluation_.program->feedbackOnly;
+    if (feedback && feedback->iso) {
+        setPoints(feedbackOnly_, polarDeviationPoints(feedback->circleX, feedback->circleY, n, m));
+        feedbackOnly_->setName(tr("%1 without feedforward ×%2").arg(forward).arg(m));
+        text += tr("; without feedforward G %1").arg(mm(feedback->iso->circularDeviationG));
+    }
     figures_->setText(text);
 }
 
@@ -431,9 +446,10 @@ void ContourPlot::fitEqualScale() {
     // magnification times the error), and in the polar view both runs and the F and G circles.
     QCPRange xr, yr;
     const bool found = curvesBoundingBox(
-        polar() ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_, uncompensated_,
-                                         independent_, fMax_, fMin_, gInner_, gOuter_}
-                : std::vector<QCPCurve*>{commanded_, traced_, magnified_, independent_},
+        polar()
+            ? std::vector<QCPCurve*>{commanded_, traced_, magnified_, reverse_, uncompensated_,
+                                     independent_, feedbackOnly_, fMax_, fMin_, gInner_, gOuter_}
+            : std::vector<QCPCurve*>{commanded_, traced_, magnified_, independent_, feedbackOnly_},
         xr, yr);
     if (found)
         showBox(xr.lower, xr.upper, yr.lower, yr.upper);

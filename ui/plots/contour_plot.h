@@ -72,6 +72,8 @@ public:
     QCPCurve* uncompensatedCurve() const { return uncompensated_; }
     /// The same run with the axes independent, beside a cross-coupled one (else empty).
     QCPCurve* independentCurve() const { return independent_; }
+    /// ... and without the axes' feedforward (ContourRun::feedbackOnly; else empty).
+    QCPCurve* feedbackOnlyCurve() const { return feedbackOnly_; }
     QCPCurve* fMaxCircle() const { return fMax_; }
     QCPCurve* fMinCircle() const { return fMin_; }
     QCPCurve* gInnerCircle() const { return gInner_; }
@@ -107,6 +109,7 @@ private:
     QCPCurve* reverse_;
     QCPCurve* uncompensated_;
     QCPCurve* independent_;
+    QCPCurve* feedbackOnly_;
     QCPLayoutElement* legendSpacer_ = nullptr; ///< row 1 while the legend is empty
     QCPCurve* fMax_;
     QCPCurve* fMin_;

@@ -318,6 +318,37 @@ private slots:
         }
     }
 
+    /// The comparison runs beside a coupled one: the independent axes (the session's design)
+    /// and, for axes with a feedforward, the feedback alone: each is runProgramContour of that
+    /// session uncoupled, bit for bit. The paper's PIs have no feedforward: no second run.
+    void theComparisonRunsAreTheirSessionsRuns() {
+        const GcodeProgram program = readGcode("F300\nG2 X0 Y0 I0 J15\n");
+        Session pp = Session::paperDefault();
+        for (AxisSettings& a : pp.axes)
+            a.method = DesignMethod::PolePlacementZpetc;
+        pp.crossCoupling = {3.0, 1.0, ContourEstimateKind::Circular};
+        const ContourRun coupled = runProgramContour(pp, program, contourOptions(0.01));
+        QVERIFY(coupled.independent && coupled.feedbackOnly);
+        Session alone = pp;
+        alone.crossCoupling = {};
+        const ContourRun design = runProgramContour(alone, program, contourOptions(0.01));
+        QVERIFY(coupled.independent->contour.error == design.contour.error);
+        for (AxisSettings& a : alone.axes)
+            a.pp.zpetcEnabled = false;
+        const ContourRun feedback = runProgramContour(alone, program, contourOptions(0.01));
+        QVERIFY(coupled.feedbackOnly->contour.error == feedback.contour.error);
+        QCOMPARE(coupled.feedbackOnly->iso->circularDeviationG,
+                 feedback.circular->iso.circularDeviationG);
+        // The ZPETC already tracks: the feedback alone is far worse, the coupling no worse.
+        QVERIFY(feedback.contour.maxAbs > 10.0 * design.contour.maxAbs);
+        qInfo("pole placement on a 15 mm circle at F300: feedback alone %.4g mm, ZPETC %.4g mm, "
+              "ZPETC and coupling %.4g mm",
+              feedback.contour.maxAbs, design.contour.maxAbs, coupled.contour.maxAbs);
+        Session gt = Session::paperDefault();
+        gt.crossCoupling = {0.1, 0.0, ContourEstimateKind::Circular};
+        QVERIFY(!runProgramContour(gt, program, contourOptions(0.01)).feedbackOnly);
+    }
+
     /// Refusals name the field: a negative or non-finite gain, and axes at two periods.
     void badCouplingsAreRefusedByName() {
         const GcodeProgram program = readGcode(kPaperCircle);
