@@ -35,7 +35,15 @@ QJsonObject couplingStabilityJson(const CouplingStability& st) {
     QJsonArray poles;
     for (const std::complex<double>& p : w.poles)
         poles.append(QJsonArray{number(p.real()), number(p.imag())});
+    const auto broken = [](const std::optional<AxisBrokenLoop>& b) {
+        if (!b)
+            return QJsonValue();
+        return QJsonValue(QJsonObject{{"gain_margin_db", number(b->gainMarginDb)},
+                                      {"phase_margin_deg", number(b->phaseMarginDeg)}});
+    };
     return {{"period", number(st.periodSeconds)},
+            {"broken_at_x", broken(w.brokenAtX)},
+            {"broken_at_y", broken(w.brokenAtY)},
             {"lines_checked", static_cast<qint64>(st.linesChecked)},
             {"frozen_directions", static_cast<qint64>(st.frozenDirections)},
             {"unbounded_frozen_directions", static_cast<qint64>(st.unboundedFrozenDirections)},

@@ -194,6 +194,17 @@ QJsonValue programCouplingJson(const Session& session, const ContourRun& run,
         {"kp", number(c.kp)}, {"ki", number(c.ki)}, {"estimate", contourEstimateName(c.estimate)}};
     if (run.couplingStability)
         o.insert("line_loop", couplingStabilityJson(*run.couplingStability));
+    if (run.trace.coupling && run.trace.coupling->estimate.size() == run.contour.error.size()) {
+        // How good the estimate was: against the exact distance of each traced point from the
+        // path (the contour error, positive left: the estimate is its negative), over the
+        // samples the contour error measures.
+        double worst = 0.0;
+        for (std::size_t k = 0; k < run.contour.error.size(); ++k)
+            if (run.contour.measured[k])
+                worst = std::max(worst,
+                                 std::abs(run.trace.coupling->estimate[k] + run.contour.error[k]));
+        o.insert("estimate_error_max", number(worst));
+    }
     if (digital) {
         // The axes' digital implementations (what the C export runs) coupled alike.
         o.insert("digital", QJsonObject{{"period", number(digital->periodSeconds)},

@@ -51,6 +51,7 @@
 #include "ui/views/time_response_view.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <QApplication>
 #include <QCloseEvent>
@@ -677,6 +678,12 @@ QString stabilityText(const CouplingStability& st) {
                     .arg(QString::number(w.diskMargin, 'g', 3),
                          QString::number(w.diskGainMarginDb, 'g', 3),
                          QString::number(w.diskPhaseMarginDeg, 'g', 3));
+    // Broken at each axis' input, the other closed.
+    for (const auto& [broken, axis] : {std::pair{&w.brokenAtX, "x"}, std::pair{&w.brokenAtY, "y"}})
+        if (*broken && std::isfinite((*broken)->phaseMarginDeg))
+            text +=
+                MainWindow::tr("; at the %1 input: phase margin %2°")
+                    .arg(QLatin1String(axis), QString::number((*broken)->phaseMarginDeg, 'f', 1));
     return text + ".";
 }
 

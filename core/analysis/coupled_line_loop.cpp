@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 namespace xyt {
@@ -224,6 +225,84 @@ double lineLoopDiskPeak(const LineLoopDiskEvaluator& f,
     return peak;
 }
 
+/// c (zI - Phi)^-1 gamma at one point z (an LU solve).
+std::complex<double> lineLoopAxisAt(const SampledAxisModel& m, std::complex<double> z) {
+    const Eigen::Index n = m.phi.rows();
+    const Eigen::MatrixXcd a =
+        z * Eigen::MatrixXcd::Identity(n, n) - m.phi.cast<std::complex<double>>();
+    const Eigen::VectorXcd r = a.partialPivLu().solve(m.gamma.cast<std::complex<double>>().eval());
+    return (m.c.cast<std::complex<double>>() * r)(0);
+}
+
+/**
+ * Gain and phase margins of a loop given by its frequency response @p l(theta) on
+ * 0 < theta <= pi (theta = omega T): the crossings of |L| = 1 and of arg L = 180 degrees on a
+ * log grid (300 points a decade from @p thetaMin, plus the arguments of @p poles), each refined
+ * by bisection to 1e-13 in theta; the margins closest to 0 (dB, degrees), inf without a crossing.
+ */
+template <class F>
+void lineLoopGridMargins(const F& l, double thetaMin,
+                         const std::vector<std::complex<double>>& poles, double periodSeconds,
+                         AxisBrokenLoop& out) {
+    constexpr double kPi = std::numbers::pi;
+    const double decades = std::log10(kPi / thetaMin);
+    const int points = std::max(2, static_cast<int>(std::ceil(300.0 * decades)) + 1);
+    std::vector<double> grid;
+    for (int i = 0; i < points; ++i)
+        grid.push_back(thetaMin * std::pow(10.0, decades * i / (points - 1)));
+    grid.back() = kPi;
+    for (const auto& p : poles) {
+        const double angle = std::abs(std::arg(p));
+        if (angle > thetaMin && angle < kPi)
+            grid.push_back(angle);
+    }
+    std::sort(grid.begin(), grid.end());
+    grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+    const auto refine = [&](double a, double b, const auto& sign) {
+        const bool sa = sign(a);
+        for (int i = 0; i < 200 && b - a > 1e-13 * b; ++i) {
+            const double m = 0.5 * (a + b);
+            (sign(m) == sa ? a : b) = m;
+        }
+        return 0.5 * (a + b);
+    };
+    const auto magnitudeAbove = [&](double t) { return std::abs(l(t)) > 1.0; };
+    const auto upper = [&](double t) { return l(t).imag() > 0.0; };
+    out.gainMarginDb = out.phaseMarginDeg = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
+        const double a = grid[i], b = grid[i + 1];
+        if (magnitudeAbove(a) != magnitudeAbove(b)) {
+            const double t = refine(a, b, magnitudeAbove);
+            double pm = 180.0 + std::arg(l(t)) * 180.0 / kPi;
+            if (pm > 180.0)
+                pm -= 360.0;
+            if (std::abs(pm) < std::abs(out.phaseMarginDeg)) {
+                out.phaseMarginDeg = pm;
+                out.phaseCrossoverRadPerSec = t / periodSeconds;
+            }
+        }
+        if (upper(a) != upper(b)) {
+            const double t = refine(a, b, upper);
+            const std::complex<double> v = l(t);
+            if (v.real() < 0.0) {
+                const double gm = -20.0 * std::log10(std::abs(v));
+                if (std::abs(gm) < std::abs(out.gainMarginDb)) {
+                    out.gainMarginDb = gm;
+                    out.gainCrossoverRadPerSec = t / periodSeconds;
+                }
+            }
+        }
+    }
+    const std::complex<double> atNyquist = l(kPi); // z = -1: real
+    if (atNyquist.real() < 0.0) {
+        const double gm = -20.0 * std::log10(std::abs(atNyquist));
+        if (std::abs(gm) < std::abs(out.gainMarginDb)) {
+            out.gainMarginDb = gm;
+            out.gainCrossoverRadPerSec = kPi / periodSeconds;
+        }
+    }
+}
+
 } // namespace
 
 SampledAxisModel continuousAxisModel(const TransferFunction& plant,
@@ -393,6 +472,49 @@ CoupledLineLoop coupledLineLoop(const SampledAxisModel& x, const SampledAxisMode
     else
         out.couplingLoop = TransferFunction(coupling.kp * sum.num(), sum.den(), ts);
     out.margins = stabilityMargins(out.couplingLoop);
+    // Broken at each axis' input, the other axis and the coupling closed:
+    // L_x = C Cx^2 Gx / (1 + C Cy^2 Gy) = Cn Cx^2 Nx Dy / (Dx (Cd Dy + Cn Cy^2 Ny)).
+    const Polynomial cn = integral ? Polynomial::fromAscending({-coupling.kp, kc})
+                                   : Polynomial::constant(coupling.kp);
+    const Polynomial cd =
+        integral ? Polynomial::fromAscending({-1.0, 1.0}) : Polynomial::constant(1.0);
+    const auto brokenAt = [&](const SampledAxisModel& at, double cAt, const SampledAxisModel& other,
+                              double cOther) -> std::optional<AxisBrokenLoop> {
+        if (std::abs(cAt) <= kLineLoopNegligibleGain)
+            return std::nullopt; // the coupling does not reach this axis at this direction
+        const TransferFunction g = lineLoopAxisTransfer(at);
+        TransferFunction loop(cAt * cAt * cn * g.num(), cd * g.den(), ts);
+        if (std::abs(cOther) > kLineLoopNegligibleGain) {
+            const TransferFunction h = lineLoopAxisTransfer(other);
+            loop = TransferFunction(cAt * cAt * cn * g.num() * h.den(),
+                                    g.den() * (cd * h.den() + cOther * cOther * cn * h.num()), ts);
+        }
+        AxisBrokenLoop broken;
+        broken.loop = loop;
+        // The margins from the state-space models on the unit circle (L's polynomials are ill
+        // conditioned near z = 1 when the axes' poles cluster there), as the disk margin.
+        const auto l = [&](double theta) {
+            const std::complex<double> z = std::polar(1.0, theta);
+            const std::complex<double> c =
+                integral ? (kc * z - coupling.kp) / (z - 1.0) : std::complex<double>(coupling.kp);
+            const std::complex<double> g = cAt * cAt * lineLoopAxisAt(at, z);
+            const std::complex<double> h = cOther * cOther * lineLoopAxisAt(other, z);
+            return c * g / (1.0 + c * h);
+        };
+        std::vector<std::complex<double>> poles = out.poles;
+        for (const Eigen::MatrixXd* phi : {&x.phi, &y.phi}) {
+            const auto p = lineLoopEigenvalues(*phi);
+            poles.insert(poles.end(), p.begin(), p.end());
+        }
+        double thetaMin = 1e-4;
+        for (const auto& p : poles)
+            if (std::abs(1.0 - p) > 0.0)
+                thetaMin = std::min(thetaMin, 0.1 * std::abs(1.0 - p));
+        lineLoopGridMargins(l, std::max(thetaMin, 1e-12), poles, ts, broken);
+        return broken;
+    };
+    out.brokenAtX = brokenAt(x, cx, y, cy);
+    out.brokenAtY = brokenAt(y, cy, x, cx);
 
     if (out.bounded) { // the hidden integral mode is not in L (G(1) = 0 cancels C's pole)
         std::vector<std::complex<double>> poles = out.poles;

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <complex>
+#include <optional>
 #include <vector>
 
 namespace xyt {
@@ -58,6 +59,23 @@ SampledAxisModel continuousAxisModel(const TransferFunction& plant,
  *         when B(0) != 0, "f" when F(0) = 0.
  */
 SampledAxisModel rstAxisModel(const PolePlacementDesign& loop);
+
+/// The coupled loop broken at one axis' input (CoupledLineLoop::brokenAtX).
+struct AxisBrokenLoop {
+    TransferFunction loop;
+    /**
+     * Its gain and phase margins (negative feedback) from the state-space models on the unit
+     * circle: the crossings of |L| = 1 and arg L = 180 degrees found on a log grid of omega T
+     * (300 points a decade from min(1e-4, 0.1 |1 - p|) over the poles to pi, plus the poles'
+     * arguments) and refined by bisection to 1e-13 relative; the margin closest to 0 of each,
+     * +inf without a crossing. (stabilityMargins on `loop` would do the same from polynomials,
+     * which lose the low frequencies when poles cluster near z = 1.)
+     */
+    double gainMarginDb = 0.0;
+    double phaseMarginDeg = 0.0;
+    double gainCrossoverRadPerSec = 0.0;  ///< where the gain margin is read (phase 180 degrees)
+    double phaseCrossoverRadPerSec = 0.0; ///< where the phase margin is read (|L| = 1)
+};
 
 /**
  * The coupled loop of two axes on a straight line at angle @p thetaRad: linear and
@@ -112,6 +130,15 @@ struct CoupledLineLoop {
     TransferFunction couplingLoop;
     /// stabilityMargins(couplingLoop); left default (not computed) when the coupling is off.
     StabilityMargins margins;
+    /**
+     * The 2 x 2 loop broken at each axis' input in turn (where the coupling's voltage joins
+     * that axis' command), the other axis and the coupling closed: L_x = C Cx^2 Gx /
+     * (1 + C Cy^2 Gy), L_y alike, with their margins; 1 + L_x has the coupled loop's
+     * characteristic polynomial (up to the bookkeeping of couplingLoop). Unset for an axis the
+     * coupling does not reach at this direction (|C| <= 1e-12), and without margins
+     * (withMargins false).
+     */
+    std::optional<AxisBrokenLoop> brokenAtX, brokenAtY;
     /**
      * The symmetric disk margin of couplingLoop: alpha = 1 / max_omega |(1 - L) / (2 (1 + L))|
      * over 0 <= omega <= pi/T; the loop tolerates any simultaneous gain and phase change of the

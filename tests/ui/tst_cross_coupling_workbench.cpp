@@ -99,6 +99,16 @@ private slots:
             QStringLiteral("independent axes: max %1 mm").arg(QString::number(alone, 'g', 3))));
         QVERIFY(window_->crossCouplingEditor()->stabilityLabel()->text().contains(
             QString::number(alone, 'g', 3)));
+        // The coupled loop's stability as the evaluation found it: the least stable direction's
+        // spectral radius and the phase margin broken at each axis' input.
+        const CouplingStability& st = *program->couplingStability;
+        const QString status = window_->crossCouplingEditor()->stabilityLabel()->text();
+        QVERIFY2(status.contains(QString::number(st.worst.spectralRadius, 'g', 6)),
+                 qPrintable(status));
+        QVERIFY(st.worst.brokenAtX && st.worst.brokenAtY);
+        QVERIFY2(status.contains(QStringLiteral("at the x input: phase margin %1°")
+                                     .arg(st.worst.brokenAtX->phaseMarginDeg, 0, 'f', 1)),
+                 qPrintable(status));
         // The ballbar view: the program is one full circle, run alone for ISO 230-4; the
         // independent axes' run beside the coupled one, with its G.
         plot->setPolar(true);
