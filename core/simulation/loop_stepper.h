@@ -32,7 +32,8 @@ public:
     /// Records sample k with @p extraVolts added to the command before the limit and advances;
     /// returns whether the command was clipped at the limit at sample k.
     virtual bool advance(double extraVolts) = 0;
-    /// The run so far (all of it once index() == samples()).
+    /// The run, complete once index() == samples() (a continuous loop fills it as it goes, a
+    /// discrete one when its last sample is recorded).
     virtual const SimulationResult& result() const = 0;
     virtual SimulationResult takeResult() = 0;
 };
