@@ -4,7 +4,7 @@
 namespace xyt {
 
 LoopTransferFunctions gtLoopTransferFunctions(const GtDesign& design) {
-    return unityFeedbackLoop(design.controller, design.plant.transferFunction());
+    return unityFeedbackLoop(design.controller, design.loopPlant);
 }
 
 LoopTransferFunctions unityFeedbackLoop(const TransferFunction& controller,

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/design/notch_filter.h"
+
 #include <string>
 #include <vector>
 
@@ -59,6 +61,10 @@ struct DigitalPi {
     AntiWindup antiWindup = AntiWindup::Clamp;
     /// Back-calculation gain Ts / Tt (0 for the other methods).
     double trackingGain = 0.0;
+    /// A notch on the error the PI reads (core/design/notch_filter.h): e_f = N(z) e, then the
+    /// PI of e_f. The loops and the exported code step it with stepBiquad before stepDigitalPi.
+    bool hasNotch = false;
+    Biquad errorNotch;
 };
 
 /**

@@ -68,13 +68,26 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     d.referenceModel = TransferFunction::fromDescending(
         {d.f3 * wn3, wn4}, {1.0, d.f1 * wn, d.f2 * wn2, d.f3 * wn3, wn4});
     d.controller = TransferFunction::fromDescending({kp, d.ki}, {1.0, 0.0});
-    d.openLoop = series(d.controller, plant.transferFunction());
+    d.loopPlant = plant.transferFunction();
+    closeGtLoop(d);
+    return d;
+}
+
+void closeGtLoop(GtDesign& d) {
+    d.openLoop = series(d.controller, d.loopPlant);
     d.closedLoop = feedback(d.openLoop);
     d.closedLoopPoles = d.closedLoop.poles();
     // TransferFunction::isStable on the poles just found (not finding them again).
     d.stable = std::all_of(d.closedLoopPoles.begin(), d.closedLoopPoles.end(),
                            [](std::complex<double> p) { return isStableRoot(p, 0.0); });
-    return d;
+}
+
+GtDesign withLoopElements(GtDesign design, const TransferFunction& plantFactor,
+                          const TransferFunction& controllerFilter) {
+    design.loopPlant = series(design.loopPlant, plantFactor);
+    design.controller = series(design.controller, controllerFilter);
+    closeGtLoop(design);
+    return design;
 }
 
 const std::vector<GtPreset>& gtPresets() {

@@ -37,9 +37,13 @@ struct GtDesign {
     double psi1 = 0.0, psi2 = 0.0;
     double kp = 0.0, ki = 0.0;
     TransferFunction referenceModel; ///< G_R(s), Eq. 7
-    TransferFunction controller;     ///< (kp s + ki)/s, Eq. 16
-    TransferFunction openLoop;       ///< G_c G
-    TransferFunction closedLoop;     ///< feedback(G_c G), which equals G_R
+    /// (kp s + ki)/s, Eq. 16; times the controller's filter (a notch) after withLoopElements
+    TransferFunction controller;
+    /// The plant the loop is closed around: plant's own G, or G times the factors
+    /// withLoopElements adds (a flexible mode the design does not know of)
+    TransferFunction loopPlant;
+    TransferFunction openLoop;   ///< G_c G
+    TransferFunction closedLoop; ///< feedback(G_c G), which equals G_R on the design's own plant
     std::vector<std::complex<double>> closedLoopPoles;
     bool stable = false; ///< an unstable result is returned, not thrown: a slider can reach it
 };
@@ -49,6 +53,19 @@ struct GtDesign {
 ///         kp k0, psi1 or ki overflows or vanishes (the factor farther from 1 in decades), and
 ///         the plant's fields.
 GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPerSec, double kp);
+
+/// openLoop, closedLoop, its poles and stable from @p design's controller and loopPlant.
+void closeGtLoop(GtDesign& design);
+
+/**
+ * The design, made on its third-order plant, closed around that plant times @p plantFactor (a
+ * flexible mode, core/model/flexible_mode.h) with its controller followed by @p
+ * controllerFilter (a notch, core/design/notch_filter.h): what the table really does with the
+ * controller the method designed. The design's own figures (f1..f3, psi, kp, ki, referenceModel)
+ * are unchanged; closedLoop no longer equals referenceModel.
+ */
+GtDesign withLoopElements(GtDesign design, const TransferFunction& plantFactor,
+                          const TransferFunction& controllerFilter);
 
 /// A named plant and design of Braga et al.
 struct GtPreset {

@@ -106,6 +106,11 @@ const TableFriction* axisTable(const AxisSettings& axis, int axisIndex) {
     }
     if (!axis.friction.active())
         return nullptr;
+    if (axis.method != DesignMethod::PolePlacementZpetc && axis.gt.flexibleMode.present())
+        throw InvalidInput(axisFieldPath(axisIndex, "gt.flexible_mode.frequency"),
+                           "a flexible mode and the table's friction are not simulated together "
+                           "(the friction model's moving mass is rigid): set the mode's "
+                           "frequency or the friction levels to 0");
     try {
         validateTableFriction(axis.friction);
     } catch (const InvalidInput& e) {
@@ -185,7 +190,7 @@ auto onContinuousAxis(const AxisSettings& axis, int axisIndex, const std::vector
     if (!ff.empty())
         options.feedforwardVolts = &ff;
     try {
-        return run(axis.gt.plant.transferFunction(), options);
+        return run(axisPlantTransferFunction(axis.gt, axisIndex), options);
     } catch (const InvalidInput& e) {
         if (e.field() == "plant" || e.field() == "initial_output")
             throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());

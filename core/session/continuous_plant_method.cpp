@@ -33,7 +33,7 @@ ContinuousPlantMethod::steppedPath(const Session& session, int axisIndex,
 SampledAxisModel ContinuousPlantMethod::couplingModel(const Session& session, int axisIndex,
                                                       double periodSeconds) const {
     const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
-    return continuousAxisModel(axis.gt.plant.transferFunction(),
+    return continuousAxisModel(axisPlantTransferFunction(axis.gt, axisIndex),
                                designedController(session, axisIndex),
                                axis.gt.modelUnitsPerPositionUnit, periodSeconds);
 }
@@ -49,6 +49,13 @@ ContinuousPlantMethod::plantParameters(const AxisSettings& settings) const {
                                       {"backlash", f.backlashMm}})
         if (value > 0.0)
             out.push_back({name, value, 0.0});
+    // The flexible mode's frequency and damping, the least certain numbers of a table's model.
+    const FlexibleMode& m = settings.gt.flexibleMode;
+    if (m.present()) {
+        out.push_back({"mode_frequency", m.frequencyHz, 0.0});
+        if (m.dampingRatio > 0.0)
+            out.push_back({"mode_damping", m.dampingRatio, 0.0});
+    }
     return out;
 }
 
@@ -71,6 +78,14 @@ AxisSettings ContinuousPlantMethod::withPlantParameters(
         f.viscousVoltsPerMmPerS = value("viscous", f.viscousVoltsPerMmPerS);
     if (f.backlashMm > 0.0)
         f.backlashMm = value("backlash", f.backlashMm);
+    FlexibleMode& m = settings.gt.flexibleMode;
+    if (m.present()) {
+        m.frequencyHz = value("mode_frequency", m.frequencyHz);
+        if (m.dampingRatio > 0.0)
+            m.dampingRatio = std::clamp(value("mode_damping", m.dampingRatio), 0.0, 0.999);
+        if (m.twoMass())
+            m.antiResonanceHz = std::min(m.antiResonanceHz, 0.999 * m.frequencyHz);
+    }
     return settings;
 }
 

@@ -31,6 +31,10 @@ DesignProblem sessionDesignProblem(const Session& session, int axis,
         throw InvalidInput("max_samples", "a run needs at least 2 samples (0: no limit)");
     DesignProblem problem;
     problem.plant = settings.gt.plant;
+    if (settings.gt.flexibleMode.present())
+        problem.plantFactor = flexibleModeTransferFunction(settings.gt, axis);
+    if (settings.gt.notch.present() && !pid)
+        problem.controllerFilter = notchTransferFunction(settings.gt, axis);
     problem.modelUnitsPerPositionUnit = settings.gt.modelUnitsPerPositionUnit;
     problem.spec = session.spec; // the one specification of the session
     problem.spec.umaxVolts = pid ? pid->gains.maxOutput : session.umaxVolts;

@@ -22,10 +22,10 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
                        double duration, AxisEvaluation& out) {
     try {
         DigitalEvaluation d;
-        const DigitalPi pi = sessionDigitalPi(session, *out.gt);
+        const DigitalPi pi = sessionDigitalPi(session, *out.gt, axisIndex);
         d.tsSeconds = pi.tsSeconds;
         SampledDataOptions options = sessionSampledDataOptions(session);
-        const TransferFunction plant = axis.gt.plant.transferFunction();
+        const TransferFunction plant = axisPlantTransferFunction(axis.gt, axisIndex);
         // At the simulation step (the default: both 10 ms) the continuous run already holds the
         // reference at the controller's sample times.
         const bool sameTimes = pi.tsSeconds == session.trajectory.dtSeconds;
@@ -68,7 +68,7 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     const std::vector<double> r = sampled(reference, times);
     const std::vector<double> ff = frictionFeedforward(axis, axisIndex, r, options.dtSeconds);
     options.feedforwardVolts = &ff;
-    out.run = simulateLoop(gt.plant.transferFunction(), out.gt->controller, r, options);
+    out.run = simulateLoop(out.gt->loopPlant, out.gt->controller, r, options);
     out.metrics = trackingMetrics(out.run);
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
@@ -80,10 +80,11 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
 using namespace cexport;
 
 /// The digital PI the export runs for a GT axis: the session's, discretized as @p options say.
-DigitalPi exportPi(const Session& session, const GtDesign& design, const ExportOptions& options) {
+DigitalPi exportPi(const Session& session, const GtDesign& design, const ExportOptions& options,
+                   int axisIndex) {
     Session s = session;
     s.piDiscretization = options.piMethod;
-    return sessionDigitalPi(s, design);
+    return sessionDigitalPi(s, design, axisIndex);
 }
 
 /// The complete digital PI of a Guillemin-Truxal axis (stepDigitalPi in C).
@@ -121,15 +122,36 @@ std::string piImplementationBlock(const AxisSettings& axis, const DigitalPi& pi,
     constant("UNIT", axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale");
     if (pi.antiWindup == AntiWindup::BackCalculation)
         constant("AW_GAIN", pi.trackingGain, "implementation.tracking_time");
+    const std::string notchField = gt + ".notch (prewarped at its centre, controller_ts)";
+    if (pi.hasNotch) {
+        out << "/* The notch on the error the PI reads, a biquad in direct form II transposed:\n"
+               " *   e = B0 e_raw + s1,  s1 = B1 e_raw - A1 e + s2,  s2 = B2 e_raw - A2 e. */\n";
+        constant("NOTCH_B0", pi.errorNotch.b0, notchField);
+        constant("NOTCH_B1", pi.errorNotch.b1, notchField);
+        constant("NOTCH_B2", pi.errorNotch.b2, notchField);
+        constant("NOTCH_A1", pi.errorNotch.a1, notchField);
+        constant("NOTCH_A2", pi.errorNotch.a2, notchField);
+    }
     out << "typedef struct {\n    xyt_real integrator;     /* I[k-1] */\n"
-           "    xyt_real previous_error; /* e[k-1] */\n} xyt_"
-        << id << "_state;\n"
+           "    xyt_real previous_error; /* e[k-1] */\n"
+        << (pi.hasNotch ? "    xyt_real notch_s1, notch_s2; /* the notch's state */\n" : "")
+        << "} xyt_" << id << "_state;\n"
         << "static inline XYT_MAYBE_UNUSED void xyt_" << id << "_init(xyt_" << id
         << "_state *s) {\n"
-        << "    s->integrator = 0;\n    s->previous_error = 0;\n}\n"
+        << "    s->integrator = 0;\n    s->previous_error = 0;\n"
+        << (pi.hasNotch ? "    s->notch_s1 = 0;\n    s->notch_s2 = 0;\n" : "") << "}\n"
         << "static inline XYT_MAYBE_UNUSED xyt_real xyt_" << id << "_step(xyt_" << id
-        << "_state *s, xyt_real reference, xyt_real measured) {\n"
-        << "    const xyt_real e = (reference - measured) * XYT_" << up << "_UNIT;\n"
+        << "_state *s, xyt_real reference, xyt_real measured) {\n";
+    if (pi.hasNotch)
+        out << "    const xyt_real e_raw = (reference - measured) * XYT_" << up << "_UNIT;\n"
+            << "    const xyt_real e = XYT_" << up << "_NOTCH_B0 * e_raw + s->notch_s1;\n"
+            << "    s->notch_s1 = XYT_" << up << "_NOTCH_B1 * e_raw - XYT_" << up
+            << "_NOTCH_A1 * e + s->notch_s2;\n"
+            << "    s->notch_s2 = XYT_" << up << "_NOTCH_B2 * e_raw - XYT_" << up
+            << "_NOTCH_A2 * e;\n";
+    else
+        out << "    const xyt_real e = (reference - measured) * XYT_" << up << "_UNIT;\n";
+    out
         << "    const xyt_real increment = XYT_" << up << "_C0 * e + XYT_" << up
         << "_C1 * s->previous_error;\n"
         << "    const xyt_real candidate = s->integrator + increment;\n"
@@ -187,7 +209,7 @@ std::string gtFirmwareBlock(const Session& session, const AxisEvaluation& a, int
         << joined(c.den, ", ", pi) << "};\n";
     out << "static const double XYT_" << id
         << "_TS XYT_MAYBE_UNUSED = " << num(c.tsSeconds, "controller_ts") << ";\n\n";
-    out << piImplementationBlock(axis, exportPi(session, *a.gt, options), axis.id, i,
+    out << piImplementationBlock(axis, exportPi(session, *a.gt, options, i), axis.id, i,
                                  options.precision);
     return out.str();
 }
@@ -249,13 +271,14 @@ public:
         // As evaluateGtDigital: the digital PI at controller_ts, the session's implementation,
         // the table and its friction compensation.
         const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
-        const DigitalPi pi = sessionDigitalPi(session, sessionGtDesign(axis.gt, axisIndex));
+        const DigitalPi pi =
+            sessionDigitalPi(session, sessionGtDesign(axis.gt, axisIndex), axisIndex);
         const std::vector<double> r = programAtPeriod(t, reference, pi.tsSeconds, "controller_ts");
         SampledDataOptions options = sessionSampledDataOptions(session);
         options.table = axisTable(axis, axisIndex);
         const std::vector<double> ff = frictionFeedforward(axis, axisIndex, r, pi.tsSeconds);
         options.feedforwardVolts = &ff;
-        return steppedSampledPi(axis.gt.plant.transferFunction(), pi, r, options,
+        return steppedSampledPi(axisPlantTransferFunction(axis.gt, axisIndex), pi, r, options,
                                 axis.gt.modelUnitsPerPositionUnit);
     }
 

@@ -531,6 +531,11 @@ PidFeedforwardDesign designPidFeedforward(const Session& session, int axisIndex)
     if (g.p == 0.0 && g.i == 0.0 && g.d == 0.0)
         throw InvalidInput(axisFieldPath(axisIndex, "parameters.p"),
                            "P, I and D are all 0: the axis has no feedback");
+    if (axis.gt.notch.present())
+        throw InvalidInput(axisFieldPath(axisIndex, "gt.notch.centre"),
+                           "a PID + feedforward axis runs LinuxCNC's pid, which has no notch "
+                           "stage: set the centre to 0, or design the axis by Guillemin-Truxal, "
+                           "whose PI takes the notch");
     d.unit = axis.gt.modelUnitsPerPositionUnit;
     try {
         axis.gt.plant.validate();
@@ -543,7 +548,7 @@ PidFeedforwardDesign designPidFeedforward(const Session& session, int axisIndex)
     }
     d.continuousFilterSeconds =
         g.derivativeFilterSeconds > 0.0 ? g.derivativeFilterSeconds : d.tsSeconds / 2.0;
-    d.plant = axis.gt.plant.transferFunction();
+    d.plant = axisPlantTransferFunction(axis.gt, axisIndex);
     d.controller = continuousController(g, d.continuousFilterSeconds, d.unit);
     d.loop = unityFeedbackLoop(d.controller, d.plant);
     d.closedLoopPoles = d.loop.complementarySensitivity.poles();

@@ -72,6 +72,7 @@ RobustnessProblem continuousRobustnessProblem(const Session& session, int axis,
     p.reference = nominal.run.r;
     const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
     p.parameters = axisUncertainParameters(settings);
+    p.flexibleMode = settings.gt.flexibleMode;
     if (settings.friction.active())
         p.table = settings.friction;
     // The nominal run's feedforward (a friction compensation, the PID's command feedforward):

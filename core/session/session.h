@@ -4,6 +4,8 @@
 #include "core/design/cross_coupling.h"
 #include "core/design/digital_controller.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/design/notch_filter.h"
+#include "core/model/flexible_mode.h"
 #include "core/model/table_friction.h"
 #include "core/study/specification.h"
 
@@ -61,6 +63,13 @@ struct GtAxisSettings {
     double kp = 30.0;
     /// Model output units per trajectory unit (0.001 for the paper's metre models, mm paths).
     double modelUnitsPerPositionUnit = 0.001;
+    /// A mode of the table above the rigid plant (none by default). The design is made on the
+    /// rigid plant, as the method knows it; every run and analysis closes the loop around the
+    /// plant with the mode (axisPlantTransferFunction). Guillemin-Truxal and PID + feedforward
+    /// axes; a pole-placement axis' ARX model holds whatever mode its data showed.
+    FlexibleMode flexibleMode;
+    /// A notch after the Guillemin-Truxal PI, on the position error it reads (none by default).
+    NotchFilter notch;
     friend bool operator==(const GtAxisSettings&, const GtAxisSettings&) = default;
 };
 

@@ -82,8 +82,9 @@ std::function<MotionSample(double)> axisMotion(const TrajectorySettings& traject
 }
 
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
+    GtDesign design;
     try {
-        return designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
+        design = designGuilleminTruxal(gt.plant, gt.omegaNRadPerSec, gt.kp);
     } catch (const InvalidInput& e) {
         const std::string axis = "axes[" + std::to_string(axisIndex) + "].gt.";
         if (e.field() == "wn" || e.field() == "kp")
@@ -93,13 +94,46 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
             throw InvalidInput(axis + "plant." + e.field(), e.reason());
         throw;
     }
+    if (!gt.flexibleMode.present() && !gt.notch.present())
+        return design;
+    return withLoopElements(design, flexibleModeTransferFunction(gt, axisIndex),
+                            notchTransferFunction(gt, axisIndex));
 }
 
-DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design) {
+TransferFunction flexibleModeTransferFunction(const GtAxisSettings& gt, int axisIndex) {
+    const std::string prefix = "axes[" + std::to_string(axisIndex) + "].gt.flexible_mode.";
+    validateFlexibleMode(gt.flexibleMode, prefix);
+    return gt.flexibleMode.transferFunction();
+}
+
+TransferFunction notchTransferFunction(const GtAxisSettings& gt, int axisIndex) {
+    const std::string prefix = "axes[" + std::to_string(axisIndex) + "].gt.notch.";
+    validateNotchFilter(gt.notch, prefix);
+    return gt.notch.transferFunction();
+}
+
+TransferFunction axisPlantTransferFunction(const GtAxisSettings& gt, int axisIndex) {
+    const TransferFunction rigid = gt.plant.transferFunction();
+    if (!gt.flexibleMode.present()) {
+        validateFlexibleMode(gt.flexibleMode,
+                             "axes[" + std::to_string(axisIndex) + "].gt.flexible_mode.");
+        return rigid;
+    }
+    return series(rigid, flexibleModeTransferFunction(gt, axisIndex));
+}
+
+DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design, int axisIndex) {
     try {
-        return digitalPi(design.kp, design.ki, session.controllerTsSeconds,
-                         session.piDiscretization, session.implementation.antiWindup,
-                         session.implementation.trackingTimeSeconds);
+        DigitalPi pi = digitalPi(design.kp, design.ki, session.controllerTsSeconds,
+                                 session.piDiscretization, session.implementation.antiWindup,
+                                 session.implementation.trackingTimeSeconds);
+        const NotchFilter& notch = session.axes.at(static_cast<std::size_t>(axisIndex)).gt.notch;
+        if (notch.present()) {
+            pi.errorNotch = discreteNotch(
+                notch, pi.tsSeconds, "axes[" + std::to_string(axisIndex) + "].gt.notch.");
+            pi.hasNotch = true;
+        }
+        return pi;
     } catch (const InvalidInput& e) {
         if (e.field() == "ts")
             throw InvalidInput("controller_ts", e.reason());
@@ -209,6 +243,12 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
                                    "it has no tracking figures");
         addStickSlipWarnings(out);
+        if (axis.method == DesignMethod::PolePlacementZpetc &&
+            (axis.gt.flexibleMode.present() || axis.gt.notch.present()))
+            out.warnings.push_back(
+                "the flexible mode and the notch of gt apply to a continuous plant: this "
+                "pole-placement axis runs its ARX model, which holds whatever mode its data "
+                "showed (identify it from a log that excites the mode)");
         const TrajectorySettings& t = session.trajectory;
         if (t.kind == TrajectoryKind::Cubic) {
             try {

@@ -183,7 +183,18 @@ SessionEvaluation evaluateSession(const Session& session);
 /// The Guillemin-Truxal design of an axis, a refusal of wn, kp or the plant named by the session
 /// path ("axes[0].gt.wn: 1e+308 rad/s is out of range: wn^4 = inf ... the reference model",
 /// "axes[1].gt.plant.k0: plant gain k0 = 1e+308 is out of range with kp = 460.852 ...").
+/// Made on the rigid plant, it is closed around the plant with the axis' flexible mode and with
+/// its notch after the PI (withLoopElements) when the axis has either.
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex);
+
+/// The axis' table as every run and analysis sees it: the rigid plant k0 / (s (s^2 + a1 s +
+/// a2)) times the flexible mode (FlexibleMode::transferFunction; the rigid plant itself, bit for
+/// bit, without one). @throws InvalidInput naming "axes[i].gt.flexible_mode.<field>".
+TransferFunction axisPlantTransferFunction(const GtAxisSettings& gt, int axisIndex);
+/// The mode's factor alone, and the notch's N(s) (1 without one), refusals named as above
+/// ("axes[i].gt.notch.<field>").
+TransferFunction flexibleModeTransferFunction(const GtAxisSettings& gt, int axisIndex);
+TransferFunction notchTransferFunction(const GtAxisSettings& gt, int axisIndex);
 
 /// A discrete run sampled at @p t (k Ts) as a SimulationResult: r (the first t.size() samples
 /// of @p r), y, e = r - y, u (zero-padded when the run has none), and `clipped` where
@@ -196,9 +207,11 @@ SimulationResult discreteRun(const std::vector<double>& t, const std::vector<dou
 /// the axis has no digital evaluation.
 std::vector<PoleZeroSet> digitalPoleZeroSets(const AxisEvaluation& axis);
 
-/// The digital PI of a Guillemin-Truxal design as the session runs and exports it.
-/// @throws InvalidInput "controller_ts", "implementation.tracking_time".
-DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design);
+/// The digital PI of a Guillemin-Truxal design as the session runs and exports it, with axis
+/// @p axisIndex's notch discretized at controller_ts (discreteNotch) when it has one.
+/// @throws InvalidInput "controller_ts", "implementation.tracking_time",
+///         "axes[i].gt.notch.<field>" (a notch at or above the controller's Nyquist frequency).
+DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design, int axisIndex);
 
 /// The sampled-data options of the session (umax and the implementation settings).
 /// @throws InvalidInput "implementation.delay_samples", "implementation.encoder_resolution",

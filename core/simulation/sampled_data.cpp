@@ -179,7 +179,9 @@ public:
         auto& x = plant_.x;
         auto& next = plant_.next;
         const std::size_t k = k_;
-        const double error = (reference_[k] - measured_) * unit_;
+        double error = (reference_[k] - measured_) * unit_;
+        if (pi_.hasNotch)
+            error = stepBiquad(pi_.errorNotch, notch_, error);
         double u = stepDigitalPi(pi_, state_, error, options_.umaxVolts);
         if (ff_ || extra != 0.0) {
             double total = u;
@@ -244,6 +246,7 @@ private:
     SampledDataRun& run_;
     PlantState<N> plant_;
     DigitalPiState state_;
+    BiquadState notch_;
     DelayLine delay_;
     const Dac dac_;
     const double* ff_;
@@ -761,13 +764,25 @@ std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, 
                                                      int delaySamples) {
     const int n = plant.states;
     const int d = std::max(delaySamples, 0);
-    const int size = n + 2 + d;
-    // u[k] = -(kp + c0) C x + I[k-1] + c1 e[k-1] (r = 0, e = -C x in model units).
-    Eigen::RowVectorXd uRow = Eigen::RowVectorXd::Zero(size);
+    // The state: x (n), I[k-1], e_f[k-1], the notch's s1 and s2 when it has one, then the delay
+    // line. With r = 0 the error is e = -C x (model units) and the PI reads e_f = b0 e + s1
+    // (b0 = 1, s1 = 0 without a notch).
+    const int notchStates = pi.hasNotch ? 2 : 0;
+    const int s1 = n + 2, s2 = n + 3;
+    const int line = n + 2 + notchStates; // the first delay-line state
+    const int size = line + d;
+    const Biquad& f = pi.errorNotch;
+    const double b0 = pi.hasNotch ? f.b0 : 1.0;
+    // e_f as a row over the state.
+    Eigen::RowVectorXd ef = Eigen::RowVectorXd::Zero(size);
     for (int j = 0; j < n; ++j)
-        uRow(j) = -(pi.kp + pi.c0) * plant.c[static_cast<std::size_t>(j)];
-    uRow(n) = 1.0;
-    uRow(n + 1) = pi.c1;
+        ef(j) = -b0 * plant.c[static_cast<std::size_t>(j)];
+    if (pi.hasNotch)
+        ef(s1) = 1.0;
+    // u[k] = (kp + c0) e_f + I[k-1] + c1 e_f[k-1].
+    Eigen::RowVectorXd uRow = (pi.kp + pi.c0) * ef;
+    uRow(n) += 1.0;
+    uRow(n + 1) += pi.c1;
     Eigen::MatrixXd m = Eigen::MatrixXd::Zero(size, size);
     for (int i = 0; i < n; ++i) {
         for (int j = 0; j < n; ++j)
@@ -776,18 +791,27 @@ std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, 
         if (d == 0)
             m.row(i) += gamma * uRow;
         else
-            m(i, n + 1 + d) += gamma; // the oldest command in the delay line
+            m(i, line + d - 1) += gamma; // the oldest command in the delay line
     }
-    for (int j = 0; j < n; ++j) {
-        m(n, j) = -pi.c0 * plant.c[static_cast<std::size_t>(j)]; // I[k] = I[k-1] + c0 e + c1 e[k-1]
-        m(n + 1, j) = -plant.c[static_cast<std::size_t>(j)];     // e[k]
+    m.row(n) = pi.c0 * ef; // I[k] = I[k-1] + c0 e_f + c1 e_f[k-1]
+    m(n, n) += 1.0;
+    m(n, n + 1) += pi.c1;
+    m.row(n + 1) = ef; // e_f[k]
+    if (pi.hasNotch) {
+        // s1' = b1 e - a1 e_f + s2,  s2' = b2 e - a2 e_f,  e = -C x.
+        for (int j = 0; j < n; ++j) {
+            const double c = plant.c[static_cast<std::size_t>(j)];
+            m(s1, j) = -f.b1 * c;
+            m(s2, j) = -f.b2 * c;
+        }
+        m.row(s1) -= f.a1 * ef;
+        m(s1, s2) += 1.0;
+        m.row(s2) -= f.a2 * ef;
     }
-    m(n, n) = 1.0;
-    m(n, n + 1) = pi.c1;
     if (d > 0) {
-        m.row(n + 2) = uRow; // u[k]
+        m.row(line) = uRow; // u[k]
         for (int i = 1; i < d; ++i)
-            m(n + 2 + i, n + 1 + i) = 1.0;
+            m(line + i, line + i - 1) = 1.0;
     }
     const Eigen::EigenSolver<Eigen::MatrixXd> solver(m, false);
     std::vector<std::complex<double>> poles;

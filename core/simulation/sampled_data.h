@@ -194,7 +194,7 @@ std::unique_ptr<SampledLoopStepper> steppedSampledRst(const PolePlacementDesign&
 /**
  * The closed-loop poles (z-plane) of the linear sampled-data PI loop (no clipping, no
  * quantization) with @p delaySamples: the eigenvalues of its state matrix over
- * [x; I[k-1]; e[k-1]; u[k-1] .. u[k-delay]].
+ * [x; I[k-1]; e[k-1]; the notch's s1, s2 when the PI has one; u[k-1] .. u[k-delay]].
  */
 std::vector<std::complex<double>> sampledPiLoopPoles(const SampledPlant& plant, const DigitalPi& pi,
                                                      int delaySamples);

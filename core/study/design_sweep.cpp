@@ -125,6 +125,8 @@ double moveSweepDurationSeconds(double tfSeconds, double maxSettleTimeSeconds) {
 
 DesignEvaluator::DesignEvaluator(DesignProblem problem) : problem_(std::move(problem)) {
     plantTf_ = problem_.plant.transferFunction(); // validates the plant
+    if (problem_.plantFactor)
+        plantTf_ = series(plantTf_, *problem_.plantFactor);
     requirePositive(problem_.modelUnitsPerPositionUnit, "model_unit_scale");
     requirePositive(problem_.dtSeconds, "dt");
     problem_.spec.validate();
@@ -158,6 +160,10 @@ void DesignEvaluator::evaluateBatch(std::span<const double> wn, std::span<const 
     modes.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
         designs.push_back(designGuilleminTruxal(problem_.plant, wn[i], kp[i]));
+        if (problem_.plantFactor || problem_.controllerFilter)
+            designs.back() = withLoopElements(
+                std::move(designs.back()), problem_.plantFactor.value_or(TransferFunction::gain(1.0)),
+                problem_.controllerFilter.value_or(TransferFunction::gain(1.0)));
         modes.push_back(loopModes(plantTf_, designs.back().controller));
     }
     std::vector<std::optional<MoveSettleAccumulator>> moves(problem_.move ? n : 0);

@@ -68,6 +68,9 @@ struct SweepAxis {
 /// What is studied: one plant, one sampled trajectory, one specification.
 struct DesignProblem {
     ThirdOrderPlant plant;
+    /// What each design is closed around besides the plant it is made on (withLoopElements): a
+    /// flexible mode of the table and a notch after the PI; absent (no factor) by default.
+    std::optional<TransferFunction> plantFactor, controllerFilter;
     /// Plant output units per trajectory unit (0.001 for the paper's presets: m per mm), as
     /// LoopSimulationOptions::modelUnitsPerPositionUnit.
     double modelUnitsPerPositionUnit = 1.0;

@@ -56,6 +56,16 @@ struct PerturbedContinuous {
         p.a1 = valueOf(problem, values, "a1", kNaN);
         p.a2 = valueOf(problem, values, "a2", kNaN);
         plant = p.transferFunction();
+        if (problem.flexibleMode.present()) {
+            FlexibleMode m = problem.flexibleMode;
+            m.frequencyHz = valueOf(problem, values, "mode_frequency", m.frequencyHz);
+            // A drawn damping stays a damping ratio (a relative range of +-100 % reaches 0).
+            m.dampingRatio =
+                std::clamp(valueOf(problem, values, "mode_damping", m.dampingRatio), 0.0, 0.999);
+            if (m.twoMass())
+                m.antiResonanceHz = std::min(m.antiResonanceHz, 0.999 * m.frequencyHz);
+            plant = series(plant, m.transferFunction());
+        }
         options.dtSeconds = problem.dtSeconds;
         options.umaxVolts = problem.spec.umaxVolts;
         options.modelUnitsPerPositionUnit = problem.modelUnitsPerPositionUnit;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/flexible_mode.h"
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
 #include "core/model/table_friction.h"
@@ -34,6 +35,9 @@ namespace xyt {
  */
 struct RobustnessProblem {
     std::vector<UncertainParameter> parameters;
+    /// A continuous axis' flexible mode, in series with each drawn plant; its frequency and
+    /// damping are drawn as "mode_frequency" and "mode_damping" when parameters name them.
+    FlexibleMode flexibleMode;
     /// The parameters' covariance (their order) of an identified model: the random plants are
     /// then drawn from N(nominal, covariance) (drawPlantsNormal) instead of the uniform ranges,
     /// which only give the box whose corners are searched (identifiedUncertainty sets them to

@@ -110,6 +110,28 @@ QJsonObject coefficientsJson(const Session& session, const SessionEvaluation& ev
                                     {"den", array(a.gt->referenceModel.den().descending(),
                                                   gtField + " (reference model)")},
                                     {"order", "descending powers of s"}});
+            const NotchFilter& n = settings.gt.notch;
+            if (n.present()) {
+                const std::string f = gtField + ".notch";
+                const Biquad b = discreteNotch(n, digital.tsSeconds, f + ".");
+                axis.insert(
+                    "notch",
+                    QJsonObject{
+                        {"centre_hz", finite(n.centreHz, f + ".centre")},
+                        {"width_hz", finite(n.widthHz, f + ".width")},
+                        {"depth_db", finite(n.depthDb, f + ".depth")},
+                        {"continuous",
+                         QJsonObject{{"num", array(n.transferFunction().num().descending(), f)},
+                                     {"den", array(n.transferFunction().den().descending(), f)},
+                                     {"order", "descending powers of s"}}},
+                        {"biquad", QJsonObject{{"b", array({b.b0, b.b1, b.b2}, f)},
+                                               {"a", array({1.0, b.a1, b.a2}, f)},
+                                               {"ts", finite(digital.tsSeconds, "controller_ts")},
+                                               {"order", "ascending powers of z^-1"}}},
+                        {"discretization", "bilinear, prewarped at the centre"},
+                        {"placement", "on the error e = r - y, ahead of the digital PI: the PI "
+                                      "reads e_f = N(z) e"}});
+            }
         }
         axis.insert(
             "digital_controller",

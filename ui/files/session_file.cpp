@@ -287,17 +287,69 @@ void readFriction(ObjectReader r, AxisSettings& a) {
     r.finish();
 }
 
+/// An axis' "gt" object: the plant, the design's wn and kp, the unit, and the flexible mode and
+/// notch when set.
+QJsonObject gtToJson(const GtAxisSettings& g) {
+    QJsonObject out{
+        {"plant", QJsonObject{{"k0", g.plant.k0}, {"a1", g.plant.a1}, {"a2", g.plant.a2}}},
+        {"wn", g.omegaNRadPerSec},
+        {"kp", g.kp},
+        {"model_unit_scale", g.modelUnitsPerPositionUnit}};
+    const FlexibleMode& m = g.flexibleMode;
+    if (m.present())
+        out.insert("flexible_mode", QJsonObject{{"frequency", m.frequencyHz},
+                                                {"damping", m.dampingRatio},
+                                                {"anti_resonance", m.antiResonanceHz},
+                                                {"anti_resonance_damping", m.antiResonanceDamping}});
+    if (g.notch.present())
+        out.insert("notch", QJsonObject{{"centre", g.notch.centreHz},
+                                        {"width", g.notch.widthHz},
+                                        {"depth", g.notch.depthDb}});
+    return out;
+}
+
+/// The optional "flexible_mode" and "notch" of an axis' "gt", every field required, checked by
+/// the core's rules at their paths.
+void readGtLoopElements(ObjectReader& gt, GtAxisSettings& g) {
+    const auto fieldError = [](const ObjectReader& r, const InvalidInput& e) {
+        return FormatError{join(r.path(), QString::fromStdString(e.field())),
+                           QString::fromStdString(e.reason())};
+    };
+    if (gt.has("flexible_mode")) {
+        ObjectReader r = gt.child("flexible_mode");
+        FlexibleMode& m = g.flexibleMode;
+        m.frequencyHz = r.positive("frequency");
+        m.dampingRatio = r.number("damping");
+        m.antiResonanceHz = r.number("anti_resonance");
+        m.antiResonanceDamping = r.number("anti_resonance_damping");
+        try {
+            validateFlexibleMode(m);
+        } catch (const InvalidInput& e) {
+            throw fieldError(r, e);
+        }
+        r.finish();
+    }
+    if (gt.has("notch")) {
+        ObjectReader r = gt.child("notch");
+        NotchFilter& n = g.notch;
+        n.centreHz = r.positive("centre");
+        n.widthHz = r.number("width");
+        n.depthDb = r.number("depth");
+        try {
+            validateNotchFilter(n);
+        } catch (const InvalidInput& e) {
+            throw fieldError(r, e);
+        }
+        r.finish();
+    }
+}
+
 QJsonObject axisToJson(const AxisSettings& a) {
     QJsonObject out{
         {"id", QString::fromStdString(a.id)},
         {"label", QString::fromStdString(a.label)},
         {"method", methodName(a.method)},
-        {"gt", QJsonObject{{"plant", QJsonObject{{"k0", a.gt.plant.k0},
-                                                 {"a1", a.gt.plant.a1},
-                                                 {"a2", a.gt.plant.a2}}},
-                           {"wn", a.gt.omegaNRadPerSec},
-                           {"kp", a.gt.kp},
-                           {"model_unit_scale", a.gt.modelUnitsPerPositionUnit}}},
+        {"gt", gtToJson(a.gt)},
         {"pp", QJsonObject{{"a", toArray(a.pp.a)},
                            {"b", toArray(a.pp.b)},
                            {"t1", a.pp.t1},
@@ -471,6 +523,7 @@ AxisSettings readAxis(ObjectReader r) {
         a.gt.omegaNRadPerSec = gt.positive("wn");
         a.gt.kp = gt.positive("kp");
         a.gt.modelUnitsPerPositionUnit = gt.positive("model_unit_scale");
+        readGtLoopElements(gt, a.gt);
         gt.finish();
     }
     {

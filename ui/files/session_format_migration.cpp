@@ -135,8 +135,9 @@ QJsonObject migrateSessionJson(QJsonObject root, int version) {
         root = fromVersion2(std::move(root));
     if (version <= 3)
         root = fromVersion3(std::move(root));
-    // Version 5 only adds the optional "friction" object of an axis and version 6 the optional
-    // "cross_coupling" object: nothing to fill in.
+    // Version 5 only adds the optional "friction" object of an axis, version 6 the optional
+    // "cross_coupling" object and version 7 the optional "flexible_mode" and "notch" of an
+    // axis' "gt": nothing to fill in.
     root.insert("version", kSessionFormatVersion);
     return root;
 }

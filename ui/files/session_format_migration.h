@@ -26,10 +26,13 @@ namespace xyt::files {
  * - Version 6: the session may have a "cross_coupling" object (Session::crossCoupling: kp, ki,
  *   estimate), written when it differs from the default (off). A version-5 session has none:
  *   the axes run independently.
+ * - Version 7: an axis' "gt" object may have a "flexible_mode" (GtAxisSettings::flexibleMode:
+ *   frequency, damping, anti_resonance, anti_resonance_damping) and a "notch" (centre, width,
+ *   depth), each written when set. A version-6 axis has neither: the rigid table, no notch.
  *
  * Reading an older version is this migration to the current one, then the current reader.
  */
-inline constexpr int kSessionFormatVersion = 6;
+inline constexpr int kSessionFormatVersion = 7;
 
 /// @p root (a document of format version @p version, 1 <= version < kSessionFormatVersion)
 /// as a document of the current version: each field that version did not require and that

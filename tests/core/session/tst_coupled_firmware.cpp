@@ -373,7 +373,7 @@ private slots:
         const DigitalContourRun plain = runDigitalProgramContour(s, g, options);
         QVERIFY(plain.coupling.correction.empty());
         const FeedProfile p = planFeedProfile(g.path, programFeeds(g, 1.0), options.profile);
-        const DigitalPi pi = sessionDigitalPi(s, sessionGtDesign(s.axes[0].gt, 0));
+        const DigitalPi pi = sessionDigitalPi(s, sessionGtDesign(s.axes[0].gt, 0), 0);
         const std::vector<double> r = programAtPeriod(p.t, p.x, pi.tsSeconds, "ts");
         const SampledDataRun alone =
             simulateSampledPi(s.axes[0].gt.plant.transferFunction(), pi, r,

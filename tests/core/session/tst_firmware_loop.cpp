@@ -353,7 +353,7 @@ std::array<double, 2> floatBound(const Session& session, const SessionEvaluation
     const std::size_t n = run.result.t.size();
     std::array<double, 2> bound{};
     if (a.gt) {
-        const DigitalPi pi = sessionDigitalPi(session, *a.gt);
+        const DigitalPi pi = sessionDigitalPi(session, *a.gt, i);
         const double unit = session.axes[static_cast<std::size_t>(i)].gt.modelUnitsPerPositionUnit;
         double nMax = 0.0, rhoMax = 0.0, dMax = 0.0, integrator = 0.0, previous = 0.0;
         for (std::size_t k = 0; k < n; ++k) {
