@@ -14,6 +14,7 @@
 #include "ui/panels/cross_coupling_editor.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/fitted_stack.h"
+#include "ui/panels/fold_button.h"
 #include "ui/panels/friction_editor.h"
 #include "ui/panels/implementation_editor.h"
 #include "ui/panels/method_editor.h"
@@ -474,16 +475,11 @@ QGroupBox* MainWindow::buildActuatorBox(QWidget* panel) {
 void MainWindow::addImplementationFold(QGroupBox* box, QFormLayout* form) {
     // The implementation folds away: open, its five fields would push the default
     // session's controls below a 1366x768 window.
-    implementationToggle_ = new QToolButton(box);
-    implementationToggle_->setCheckable(true);
-    implementationToggle_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    implementationToggle_->setArrowType(Qt::RightArrow);
-    implementationToggle_->setAutoRaise(true);
-    implementationToggle_->setAccessibleName(tr("Digital implementation settings"));
+    implementation_ = new ImplementationEditor(box);
+    implementationToggle_ =
+        makeFoldButton(box, tr("Digital implementation settings"), implementation_);
     implementationToggle_->setToolTip(
         tr("Delay, encoder, DAC and anti-windup of the digital controller"));
-    implementation_ = new ImplementationEditor(box);
-    implementation_->setVisible(false);
     form->addRow(implementationToggle_);
     form->addRow(implementation_);
 }
@@ -503,10 +499,6 @@ void MainWindow::connectControls() {
                                       mergeKey < 0 ? -1
                                                    : kMergeMethodEditor + 10 * mergeKey + axis);
                 });
-    connect(implementationToggle_, &QToolButton::toggled, this, [this](bool open) {
-        implementationToggle_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
-        implementation_->setVisible(open);
-    });
     connect(
         implementation_, &ImplementationEditor::implementationEdited, this,
         [this](const ImplementationSettings& settings) { session_->setImplementation(settings); });

@@ -2,6 +2,7 @@
 #include "ui/panels/cross_coupling_editor.h"
 
 #include "core/model/errors.h"
+#include "ui/panels/fold_button.h"
 #include "ui/panels/number_field.h"
 
 #include <QComboBox>
@@ -16,14 +17,9 @@ namespace xyt::ui {
 CrossCouplingEditor::CrossCouplingEditor(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    fold_ = new QToolButton(this);
-    fold_->setCheckable(true);
-    fold_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    fold_->setArrowType(Qt::RightArrow);
-    fold_->setAutoRaise(true);
-    fold_->setAccessibleName(tr("Cross-coupling"));
-    layout->addWidget(fold_);
     body_ = new QWidget(this);
+    fold_ = makeFoldButton(this, tr("Cross-coupling"), body_);
+    layout->addWidget(fold_);
     auto* form = new QFormLayout(body_);
     form->setContentsMargins(12, 0, 0, 0);
     const auto gain = [this](const QString& field) {
@@ -59,15 +55,10 @@ CrossCouplingEditor::CrossCouplingEditor(QWidget* parent) : QWidget(parent) {
     stability_->hide();
     form->addRow(stability_);
     layout->addWidget(body_);
-    body_->hide();
     for (NumberField* f : {kp_, ki_})
         connect(f, &NumberField::valueAccepted, this, [this] { emitIfValid(); });
     connect(estimate_, &QComboBox::activated, this, [this] { emitIfValid(); });
     connect(tune_, &QPushButton::clicked, this, &CrossCouplingEditor::tuneRequested);
-    connect(fold_, &QToolButton::toggled, this, [this](bool open) {
-        body_->setVisible(open);
-        fold_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
-    });
     setCoupling({});
 }
 

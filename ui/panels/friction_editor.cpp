@@ -2,6 +2,7 @@
 #include "ui/panels/friction_editor.h"
 
 #include "core/model/errors.h"
+#include "ui/panels/fold_button.h"
 #include "ui/panels/number_field.h"
 
 #include <QComboBox>
@@ -24,14 +25,9 @@ void requireNonNegative(double v) {
 FrictionEditor::FrictionEditor(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    fold_ = new QToolButton(this);
-    fold_->setCheckable(true);
-    fold_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    fold_->setArrowType(Qt::RightArrow);
-    fold_->setAutoRaise(true);
-    fold_->setAccessibleName(tr("Friction and backlash"));
-    layout->addWidget(fold_);
     body_ = new QWidget(this);
+    fold_ = makeFoldButton(this, tr("Friction and backlash"), body_);
+    layout->addWidget(fold_);
     auto* form = new QFormLayout(body_);
     form->setContentsMargins(12, 0, 0, 0);
     const auto add = [&](const QString& key, const QString& label, const QString& tip) {
@@ -74,11 +70,6 @@ FrictionEditor::FrictionEditor(QWidget* parent) : QWidget(parent) {
     note_->hide();
     layout->addWidget(body_);
     layout->addWidget(note_);
-    body_->hide();
-    connect(fold_, &QToolButton::toggled, this, [this](bool open) {
-        body_->setVisible(open);
-        fold_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
-    });
     setSettings({}, {}, true);
 }
 
