@@ -14,6 +14,7 @@
 #include "ui/panels/cross_coupling_editor.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/fitted_stack.h"
+#include "ui/panels/flexible_mode_editor.h"
 #include "ui/panels/fold_button.h"
 #include "ui/panels/friction_editor.h"
 #include "ui/panels/implementation_editor.h"
@@ -35,6 +36,7 @@
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/step_plot.h"
 #include "ui/plots/time_response_plot.h"
+#include "ui/plots/vibration_plot.h"
 #include "ui/robustness_view.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
@@ -50,6 +52,7 @@
 #include "ui/views/root_locus_view.h"
 #include "ui/views/step_response_view.h"
 #include "ui/views/time_response_view.h"
+#include "ui/views/vibration_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -237,6 +240,7 @@ void MainWindow::buildPlots() {
     parameterLocusPlot_ = new ParameterLocusPlot(this);
     bodePlot_ = new BodePlot(this);
     nyquistPlot_ = new NyquistPlot(this);
+    vibrationPlot_ = new VibrationPlot(this);
 }
 
 void MainWindow::buildUpperTabs() {
@@ -246,6 +250,7 @@ void MainWindow::buildUpperTabs() {
     upperTabs_->addTab(poleZeroPlot_, tr("&Pole-zero"));
     upperTabs_->addTab(bodePlot_, tr("&Bode"));
     upperTabs_->addTab(nyquistPlot_, tr("&Nyquist"));
+    upperTabs_->addTab(vibrationPlot_, tr("&Vibration"));
     sweptParameter_ = new QComboBox(this);
     sweptParameter_->addItem(tr("sweep ωn (kp fixed)"));
     sweptParameter_->addItem(tr("sweep kp (ωn fixed)"));
@@ -357,11 +362,13 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     // The friction fold's button shares the method's row (the panel fits 1366 x 768); its body
     // opens below the method's page.
     frictionEditor_ = new FrictionEditor(designBox);
+    flexibleModeEditor_ = new FlexibleModeEditor(designBox);
     method_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     method_->setMinimumContentsLength(10);
     auto* methodRow = new QHBoxLayout;
     methodRow->addWidget(method_, 1);
     methodRow->addWidget(frictionEditor_->foldButton());
+    methodRow->addWidget(flexibleModeEditor_->foldButton());
     designLayout->addLayout(methodRow);
     methodPages_ = new QStackedWidget(designBox);
     // One entry and one editor page per registered method, in the registry's order: the
@@ -387,6 +394,10 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     designLayout->addWidget(frictionEditor_);
     frictionEditor_->hide();
     connect(frictionEditor_->foldButton(), &QToolButton::toggled, frictionEditor_,
+            &QWidget::setVisible);
+    designLayout->addWidget(flexibleModeEditor_);
+    flexibleModeEditor_->hide();
+    connect(flexibleModeEditor_->foldButton(), &QToolButton::toggled, flexibleModeEditor_,
             &QWidget::setVisible);
     return designBox;
 }
@@ -520,13 +531,28 @@ void MainWindow::connectControls() {
             [this](const TableFriction& f, const FrictionCompensation& c) {
                 session_->setFriction(session_->currentAxis(), f, c);
             });
+    connect(flexibleModeEditor_, &FlexibleModeEditor::loopElementsEdited, this,
+            [this](const FlexibleMode& m, const NotchFilter& n) {
+                session_->setLoopElements(session_->currentAxis(), m, n);
+            });
+    connect(flexibleModeEditor_, &FlexibleModeEditor::shapingEdited, this,
+            [this](const ReferenceShaping& shaping) {
+                TrajectorySettings t = session_->session().trajectory;
+                t.shaping = shaping;
+                session_->setTrajectory(t);
+            });
     connect(plantEditor_, &PlantEditor::modelUnitEdited, this,
             [this](double v) { session_->setModelUnitScale(session_->currentAxis(), v); });
     connect(plantEditor_, &PlantEditor::presetChosen, this, [this](const GtPreset& preset) {
-        session_->setGt(
-            session_->currentAxis(),
-            {preset.plant, preset.omegaNRadPerSec, preset.kp, preset.modelUnitsPerPositionUnit},
-            tr("Load preset %1").arg(QString::fromStdString(preset.name)));
+        // The preset is a rigid plant and its design; the axis keeps its flexible mode and notch.
+        GtAxisSettings gt =
+            session_->session().axes.at(static_cast<std::size_t>(session_->currentAxis())).gt;
+        gt.plant = preset.plant;
+        gt.omegaNRadPerSec = preset.omegaNRadPerSec;
+        gt.kp = preset.kp;
+        gt.modelUnitsPerPositionUnit = preset.modelUnitsPerPositionUnit;
+        session_->setGt(session_->currentAxis(), gt,
+                        tr("Load preset %1").arg(QString::fromStdString(preset.name)));
     });
     connect(trajectoryEditor_, &TrajectoryEditor::trajectoryEdited, session_,
             &TuningSession::setTrajectory);
@@ -748,6 +774,10 @@ void MainWindow::syncControls() {
     plantEditor_->setPlant(a.gt.plant, a.gt.modelUnitsPerPositionUnit);
     frictionEditor_->setSettings(a.friction, a.frictionCompensation,
                                  a.method != DesignMethod::PolePlacementZpetc);
+    flexibleModeEditor_->setSettings(a.gt.flexibleMode, a.gt.notch,
+                                     a.method != DesignMethod::PolePlacementZpetc,
+                                     a.method == DesignMethod::GuilleminTruxal);
+    flexibleModeEditor_->setShaping(s.trajectory.shaping);
     trajectoryEditor_->setTrajectory(s.trajectory);
     crossCouplingEditor_->setCoupling(s.crossCoupling);
     showCouplingStatus();
@@ -793,6 +823,7 @@ void MainWindow::buildViews() {
               parameterLocusView_,
               new BodeView(session_, bodePlot_),
               new NyquistView(session_, nyquistPlot_),
+              new VibrationView(session_, vibrationPlot_),
               new MetricsView(session_, metrics_),
               new EquationsView(session_, equations_)};
 }

@@ -33,11 +33,13 @@ class MetricsPanel;
 class NumberField;
 class ParameterSlider;
 class CrossCouplingEditor;
+class FlexibleModeEditor;
 class FrictionEditor;
 class PlantEditor;
 class ParameterLocusPlot;
 class BodePlot;
 class NyquistPlot;
+class VibrationPlot;
 class PoleZeroPlot;
 class PpEditor;
 class PresenterView;
@@ -79,6 +81,7 @@ public:
     ParameterLocusPlot* parameterLocusPlot() const { return parameterLocusPlot_; }
     BodePlot* bodePlot() const { return bodePlot_; }
     NyquistPlot* nyquistPlot() const { return nyquistPlot_; }
+    VibrationPlot* vibrationPlot() const { return vibrationPlot_; }
     PpEditor* ppEditor() const { return ppEditor_; }
     QComboBox* methodBox() const { return method_; }
     QTabWidget* upperTabs() const { return upperTabs_; }
@@ -90,6 +93,7 @@ public:
     ContourControls* contourControls() const { return contourControls_; }
     MetricsPanel* metricsPanel() const { return metrics_; }
     FrictionEditor* frictionEditor() const { return frictionEditor_; }
+    FlexibleModeEditor* flexibleModeEditor() const { return flexibleModeEditor_; }
     CrossCouplingEditor* crossCouplingEditor() const { return crossCouplingEditor_; }
     ImplementationEditor* implementationEditor() const { return implementation_; }
     QToolButton* implementationToggle() const { return implementationToggle_; }
@@ -151,6 +155,7 @@ private:
     QComboBox* method_ = nullptr;
     PlantEditor* plantEditor_ = nullptr;
     FrictionEditor* frictionEditor_ = nullptr;
+    FlexibleModeEditor* flexibleModeEditor_ = nullptr;
     CrossCouplingEditor* crossCouplingEditor_ = nullptr;
     ParameterSlider* omegaN_ = nullptr;
     ParameterSlider* kp_ = nullptr;
@@ -179,6 +184,7 @@ private:
     ParameterLocusPlot* parameterLocusPlot_ = nullptr;
     BodePlot* bodePlot_ = nullptr;
     NyquistPlot* nyquistPlot_ = nullptr;
+    VibrationPlot* vibrationPlot_ = nullptr;
     QComboBox* sweptParameter_ = nullptr;
     PpEditor* ppEditor_ = nullptr;
     std::vector<MethodEditor*> methodEditors_; ///< of the registered methods

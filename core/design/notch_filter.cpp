@@ -45,8 +45,8 @@ NotchFilter notchForMode(const FlexibleMode& mode) {
 }
 
 TransferFunction Biquad::transferFunction(double tsSeconds) const {
-    return TransferFunction::fromZInverse(Polynomial({b0, b1, b2}), Polynomial({1.0, a1, a2}),
-                                          tsSeconds);
+    return TransferFunction::fromZInverse(Polynomial::fromAscending({b0, b1, b2}),
+                                          Polynomial::fromAscending({1.0, a1, a2}), tsSeconds);
 }
 
 Biquad discreteNotch(const NotchFilter& notch, double tsSeconds, const std::string& prefix) {

@@ -42,19 +42,28 @@ bool operator==(const ProgramText& a, const ProgramText& b) {
 }
 
 double TrajectorySettings::effectiveDurationSeconds() const {
+    if (durationSeconds > 0.0 && kind != TrajectoryKind::Gcode)
+        return durationSeconds;
+    double shaper = 0.0;
+    if (shaping.active()) {
+        try {
+            shaper = designInputShaper(shaping.type, shaping.frequencyHz, shaping.dampingRatio)
+                         .duration();
+        } catch (const InvalidInput&) {
+            // the evaluation names the bad field
+        }
+    }
     if (kind == TrajectoryKind::Gcode) {
         try {
-            return programRunSeconds(*this);
+            return programRunSeconds(*this) + shaper;
         } catch (const InvalidInput&) {
             return 0.0; // the evaluation names the bad field
         }
     }
-    if (durationSeconds > 0.0)
-        return durationSeconds;
     if (kind == TrajectoryKind::Cubic)
-        return automaticMoveCapSeconds(t0Seconds, tfSeconds, dtSeconds);
+        return automaticMoveCapSeconds(t0Seconds, tfSeconds + shaper, dtSeconds);
     const double w = std::abs(omegaRadPerSec);
-    return (w > 0.0 ? 2.0 * std::numbers::pi / w : 0.0) + rampInSeconds;
+    return (w > 0.0 ? 2.0 * std::numbers::pi / w : 0.0) + rampInSeconds + shaper;
 }
 
 DesignSnapshot Session::snapshot(const std::string& name) const {
@@ -75,10 +84,16 @@ Session Session::paperDefault() {
     const GtPreset upper = *findGtPreset("upper-base");
     s.axes[0].id = "x";
     s.axes[0].label = "lower base";
-    s.axes[0].gt = {lower.plant, lower.omegaNRadPerSec, lower.kp, lower.modelUnitsPerPositionUnit};
+    s.axes[0].gt.plant = lower.plant;
+    s.axes[0].gt.omegaNRadPerSec = lower.omegaNRadPerSec;
+    s.axes[0].gt.kp = lower.kp;
+    s.axes[0].gt.modelUnitsPerPositionUnit = lower.modelUnitsPerPositionUnit;
     s.axes[1].id = "y";
     s.axes[1].label = "upper base";
-    s.axes[1].gt = {upper.plant, upper.omegaNRadPerSec, upper.kp, upper.modelUnitsPerPositionUnit};
+    s.axes[1].gt.plant = upper.plant;
+    s.axes[1].gt.omegaNRadPerSec = upper.omegaNRadPerSec;
+    s.axes[1].gt.kp = upper.kp;
+    s.axes[1].gt.modelUnitsPerPositionUnit = upper.modelUnitsPerPositionUnit;
     s.axes[1].pp.a = {1.0, -1.4590, 0.4587};
     s.axes[1].pp.b = {0.0, 0.0352, 0.0599, -0.0067};
     return s;

@@ -4,6 +4,7 @@
 #include "core/design/cross_coupling.h"
 #include "core/design/digital_controller.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/design/input_shaper.h"
 #include "core/design/notch_filter.h"
 #include "core/model/flexible_mode.h"
 #include "core/model/table_friction.h"
@@ -149,6 +150,21 @@ struct GcodeTrajectory {
     friend bool operator==(const GcodeTrajectory&, const GcodeTrajectory&) = default;
 };
 
+/**
+ * An input shaper on the reference of both axes (core/design/input_shaper.h): each axis'
+ * reference becomes r_s(t) = sum A_i r(t - t_i), which cancels or bounds the residual vibration
+ * of a mode of frequencyHz and dampingRatio at the price of a delay and, on a path, smoothing.
+ * It acts on the trajectory at its own step, so the controller's period does not limit it.
+ * frequencyHz = 0: no shaping, bit for bit.
+ */
+struct ReferenceShaping {
+    ShaperType type = ShaperType::Zv;
+    double frequencyHz = 0.0; ///< 0: none
+    double dampingRatio = 0.1;
+    bool active() const { return frequencyHz != 0.0; }
+    friend bool operator==(const ReferenceShaping&, const ReferenceShaping&) = default;
+};
+
 /// The commanded motion. A cubic drives both axes with the same profile (a diagonal move, as
 /// Braga et al. Fig. 8); the circle drives x with R sin(w t) and y with R cos(w t); a G-code
 /// program drives x and y along its feed profile (core/session/program_trajectory.h).
@@ -158,6 +174,9 @@ struct TrajectorySettings {
     MoveProfile profile = MoveProfile::Cubic; ///< of the point-to-point move
     double radius = 25.0, omegaRadPerSec = 0.06, rampInSeconds = 10.0;
     GcodeTrajectory gcode;
+    /// The input shaper on the reference (none by default). A shaped run lasts the shaper's
+    /// duration longer (effectiveDurationSeconds) so that the shaped move ends.
+    ReferenceShaping shaping;
     /// 0: automatic. A circle runs one revolution plus the ramp-in. A cubic runs past tf until
     /// the response has settled into the specification's in-position window, as the evaluation
     /// estimates from the closed-loop poles (SessionEvaluation::duration says what it chose), at

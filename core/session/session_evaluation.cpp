@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/session_evaluation.h"
 
+#include "core/simulation/mode_excitation.h"
+
 #include "core/simulation/stick_slip.h"
 
 #include "core/analysis/loop_responses.h"
@@ -22,7 +24,72 @@
 
 namespace xyt {
 
+namespace {
+
+/// The reference of the trajectory before its input shaper.
+std::function<double(double)> unshapedAxisReference(const TrajectorySettings& trajectory,
+                                                    int axisIndex);
+/// Its motion (position and derivatives), as axisMotion gives it.
+std::function<MotionSample(double)> unshapedAxisMotion(const TrajectorySettings& trajectory,
+                                                       int axisIndex);
+
+/// The trajectory's input shaper, refused at "trajectory.shaping.<field>"; a shaper longer than
+/// a point-to-point move or a program is refused at its frequency.
+std::optional<InputShaper> trajectoryShaper(const TrajectorySettings& trajectory) {
+    if (!trajectory.shaping.active())
+        return std::nullopt;
+    const ReferenceShaping& s = trajectory.shaping;
+    InputShaper shaper;
+    try {
+        shaper = designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
+    } catch (const InvalidInput& e) {
+        throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+    }
+    double move = 0.0;
+    if (trajectory.kind == TrajectoryKind::Cubic)
+        move = trajectory.tfSeconds - trajectory.t0Seconds;
+    else if (trajectory.kind == TrajectoryKind::Gcode)
+        move = trajectory.effectiveDurationSeconds() - shaper.duration();
+    if (move > 0.0 && shaper.duration() > move)
+        throw InvalidInput(
+            "trajectory.shaping.frequency",
+            std::string("the ") + shaperName(s.type) + " shaper at " + formatNumber(s.frequencyHz) +
+                " Hz lasts " + formatNumber(shaper.duration()) + " s, longer than the move of " +
+                formatNumber(move) + " s: raise the frequency or shorten the shaper");
+    return shaper;
+}
+
+} // namespace
+
+double shapedMoveEndSeconds(const TrajectorySettings& trajectory) {
+    double shaper = 0.0;
+    try {
+        if (const std::optional<InputShaper> s = trajectoryShaper(trajectory))
+            shaper = s->duration();
+    } catch (const InvalidInput&) {
+        // the evaluation names the bad field
+    }
+    return trajectory.tfSeconds + shaper;
+}
+
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex) {
+    std::function<double(double)> r = unshapedAxisReference(trajectory, axisIndex);
+    const std::optional<InputShaper> shaper = trajectoryShaper(trajectory);
+    if (!shaper)
+        return r;
+    // r_s(t) = sum A_i r(t - t_i): exact, the reference being a function of time.
+    return [r, a = shaper->amplitudes, tau = shaper->times](double t) {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            sum += a[i] * r(t - tau[i]);
+        return sum;
+    };
+}
+
+namespace {
+
+std::function<double(double)> unshapedAxisReference(const TrajectorySettings& trajectory,
+                                                    int axisIndex) {
     if (trajectory.kind == TrajectoryKind::Gcode)
         return programAxisReference(trajectory, axisIndex); // names the session paths itself
     // Core checks name their own argument ("xf", "radius"); the session's user knows the path.
@@ -54,9 +121,33 @@ std::function<double(double)> axisReference(const TrajectorySettings& trajectory
     }
 }
 
+} // namespace
+
 std::function<MotionSample(double)> axisMotion(const TrajectorySettings& trajectory,
                                                int axisIndex) {
-    const std::function<double(double)> position = axisReference(trajectory, axisIndex);
+    const std::function<MotionSample(double)> motion = unshapedAxisMotion(trajectory, axisIndex);
+    const std::optional<InputShaper> shaper = trajectoryShaper(trajectory);
+    if (!shaper)
+        return motion;
+    // Shaping is linear and time-invariant: each derivative is shaped as the position is.
+    return [motion, a = shaper->amplitudes, tau = shaper->times](double t) {
+        MotionSample sum;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            const MotionSample m = motion(t - tau[i]);
+            sum.position += a[i] * m.position;
+            sum.velocity += a[i] * m.velocity;
+            sum.acceleration += a[i] * m.acceleration;
+            sum.jerk += a[i] * m.jerk;
+        }
+        return sum;
+    };
+}
+
+namespace {
+
+std::function<MotionSample(double)> unshapedAxisMotion(const TrajectorySettings& trajectory,
+                                                       int axisIndex) {
+    const std::function<double(double)> position = unshapedAxisReference(trajectory, axisIndex);
     if (trajectory.kind == TrajectoryKind::Cubic) {
         // axisReference has checked the move, so these constructors do not throw.
         if (trajectory.profile == MoveProfile::Quintic) {
@@ -80,6 +171,8 @@ std::function<MotionSample(double)> axisMotion(const TrajectorySettings& traject
                                        position(t + h), position(t + 2.0 * h), h);
     };
 }
+
+} // namespace
 
 GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     GtDesign design;
@@ -129,8 +222,8 @@ DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design, int a
                                  session.implementation.trackingTimeSeconds);
         const NotchFilter& notch = session.axes.at(static_cast<std::size_t>(axisIndex)).gt.notch;
         if (notch.present()) {
-            pi.errorNotch = discreteNotch(
-                notch, pi.tsSeconds, "axes[" + std::to_string(axisIndex) + "].gt.notch.");
+            pi.errorNotch = discreteNotch(notch, pi.tsSeconds,
+                                          "axes[" + std::to_string(axisIndex) + "].gt.notch.");
             pi.hasNotch = true;
         }
         return pi;
@@ -229,6 +322,52 @@ void addStickSlipWarnings(AxisEvaluation& out) {
 }
 
 /// evaluateAxis over a given duration.
+/// The residual vibration of ShapingComparison for the trajectory @p t (shaped or not) on the
+/// times of @p run: the mode's amplitude at @p moveEnd (a move) or its largest over the run.
+double shapingResidualMm(const TrajectorySettings& t, int axisIndex, const SimulationResult& run,
+                         double modeHz, double modeDamping, double moveEnd) {
+    if (run.t.size() < 2)
+        return 0.0;
+    const auto motion = axisMotion(t, axisIndex);
+    std::vector<double> a(run.t.size());
+    for (std::size_t k = 0; k < a.size(); ++k)
+        a[k] = motion(run.t[k]).acceleration;
+    const double dt = run.t[1] - run.t[0];
+    const std::vector<double> amplitude = modeAmplitudes(a, dt, modeHz, modeDamping);
+    if (t.kind != TrajectoryKind::Cubic)
+        return *std::max_element(amplitude.begin(), amplitude.end());
+    const auto end = std::lower_bound(run.t.begin(), run.t.end(), moveEnd - 1e-9 * dt);
+    return end == run.t.end() ? amplitude.back()
+                              : amplitude[static_cast<std::size_t>(end - run.t.begin())];
+}
+
+/// The axis' run unshaped beside the shaped @p shaped (ShapingComparison).
+std::shared_ptr<const ShapingComparison> compareShaping(const Session& session, int axisIndex,
+                                                        double seconds,
+                                                        const SimulationResult& shaped) {
+    auto out = std::make_shared<ShapingComparison>();
+    const TrajectorySettings& t = session.trajectory;
+    out->shaper = designInputShaper(t.shaping.type, t.shaping.frequencyHz, t.shaping.dampingRatio);
+    Session plain = session;
+    plain.trajectory.shaping = {};
+    AxisEvaluation unshaped;
+    designMethodModule(plain.axes.at(static_cast<std::size_t>(axisIndex)).method)
+        .evaluate(plain, axisIndex, seconds, false, unshaped);
+    out->unshapedRun = std::move(unshaped.run);
+    const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+    out->fromAxisMode =
+        axis.method != DesignMethod::PolePlacementZpetc && axis.gt.flexibleMode.present();
+    out->modeHz = out->fromAxisMode ? axis.gt.flexibleMode.frequencyHz : out->shaper.frequencyHz;
+    out->modeDamping =
+        out->fromAxisMode ? axis.gt.flexibleMode.dampingRatio : out->shaper.dampingRatio;
+    out->afterMove = t.kind == TrajectoryKind::Cubic;
+    out->residualShapedMm = shapingResidualMm(t, axisIndex, shaped, out->modeHz, out->modeDamping,
+                                              shapedMoveEndSeconds(t));
+    out->residualUnshapedMm = shapingResidualMm(plain.trajectory, axisIndex, out->unshapedRun,
+                                                out->modeHz, out->modeDamping, t.tfSeconds);
+    return out;
+}
+
 AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const RunDuration& duration,
                                 bool withDigital = true) {
     AxisEvaluation out;
@@ -250,6 +389,8 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 "pole-placement axis runs its ARX model, which holds whatever mode its data "
                 "showed (identify it from a log that excites the mode)");
         const TrajectorySettings& t = session.trajectory;
+        if (withDigital && t.shaping.active() && !out.run.t.empty())
+            out.shaping = compareShaping(session, axisIndex, duration.seconds, out.run);
         if (t.kind == TrajectoryKind::Cubic) {
             try {
                 out.moveSettle = moveSettleMetrics(out.run, {t.x0, t.xf, t.tfSeconds},
@@ -335,9 +476,11 @@ RunDuration chooseRunDuration(const Session& session) {
         d.description = "duration " + seconds(d.seconds) + " (the program's feed profile)";
         return d;
     }
-    // The move alone first, on both axes, for their error at tf.
+    // The move alone first, on both axes, for their error at its end: tf, later by the input
+    // shaper's duration when the reference is shaped.
+    const double moveEnd = shapedMoveEndSeconds(t);
     RunDuration moveOnly = d;
-    moveOnly.seconds = t.tfSeconds;
+    moveOnly.seconds = moveEnd;
     double need = 0.0;
     bool any = false;
     for (const AxisEvaluation& a : evaluateAxesOver(session, moveOnly, false)) {
@@ -351,13 +494,13 @@ RunDuration chooseRunDuration(const Session& session) {
     d.includesSettle = any;
     d.settleEstimateSeconds = need;
     if (!any) {
-        d.seconds = t.tfSeconds;
+        d.seconds = moveEnd;
         d.description = "duration " + seconds(d.seconds) +
                         " (automatic: the move only; no axis has a stable design to settle)";
         return d;
     }
-    d.seconds = automaticMoveDurationSeconds(t.t0Seconds, t.tfSeconds, need, d.capSeconds);
-    d.capped = d.seconds == d.capSeconds && d.capSeconds > t.tfSeconds;
+    d.seconds = automaticMoveDurationSeconds(t.t0Seconds, moveEnd, need, d.capSeconds);
+    d.capped = d.seconds == d.capSeconds && d.capSeconds > moveEnd;
     d.description =
         "duration " + seconds(d.seconds) + " (automatic: the move to tf = " + seconds(t.tfSeconds) +
         " and the settle into " + formatNumber(session.spec.inPositionWindowMm) +

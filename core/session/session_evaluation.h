@@ -75,6 +75,26 @@ struct MethodDesign {
 };
 
 /// Everything computed for one axis of a session: the design, the run and its figures.
+/**
+ * What an input shaper on the reference does to an axis' run: the shaper, the run without it,
+ * and the residual vibration of the mode it is meant for, shaped and unshaped. The mode is the
+ * axis' flexible mode, else the one the shaper is designed for; its deflection between table
+ * and tool point is driven by the commanded acceleration (modeDeflection, the model shapers are
+ * designed for), and the residual is the amplitude it rings with once a point-to-point move has
+ * ended (tf, plus the shaper's duration when shaped), or its largest amplitude over a circle or
+ * a program. For a move the ratio shaped / unshaped is the shaper's residualVibration at that
+ * mode (Singer and Seering).
+ */
+struct ShapingComparison {
+    InputShaper shaper;
+    SimulationResult unshapedRun;
+    double modeHz = 0.0, modeDamping = 0.0; ///< the mode the residuals are of
+    bool fromAxisMode = false;              ///< the axis' flexible mode (else the shaper's own)
+    bool afterMove = false;                 ///< the residuals are after a point-to-point move
+    double residualShapedMm = 0.0;
+    double residualUnshapedMm = 0.0;
+};
+
 struct AxisEvaluation {
     bool ok = false;
     std::string errorField; ///< when !ok: the invalid setting, e.g. "axes[0].gt.kp"
@@ -105,6 +125,9 @@ struct AxisEvaluation {
     std::optional<MoveSettleMetrics> moveSettle;
     /// The duration of this axis' run (the session's; see RunDuration).
     RunDuration duration;
+    /// With an input shaper on the reference (TrajectorySettings::shaping): the same run
+    /// unshaped, to show what the shaper does (the full evaluation only).
+    std::shared_ptr<const ShapingComparison> shaping;
     /// The unit step of the system the axis runs: G_R (GT); the pole-placement loop Kf B / T
     /// alone, or with ZPETC enabled the step previewed through the feedforward and the loop
     /// (zpetcStepCharacteristics).
@@ -152,10 +175,17 @@ struct SessionEvaluation {
     std::string couplingError;
 };
 
-/// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows.
+/// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows; with the trajectory's
+/// input shaper (ReferenceShaping) r_s(t) = sum A_i r(t - t_i), before t0 the start position.
 /// @throws InvalidInput naming the session path ("trajectory.cubic.xf", "trajectory.circle.radius")
-///         for a non-finite value or a position beyond kMaxPositionMm.
+///         for a non-finite value or a position beyond kMaxPositionMm, "trajectory.shaping.<field>"
+///         for a shaper designInputShaper refuses or one that lasts longer than the point-to-point
+///         move (tf - t0) or the program's run time.
 std::function<double(double)> axisReference(const TrajectorySettings& trajectory, int axisIndex);
+
+/// When the (shaped) point-to-point move ends: tf, plus the input shaper's duration when the
+/// reference is shaped.
+double shapedMoveEndSeconds(const TrajectorySettings& trajectory);
 
 /**
  * The reference of axis @p axisIndex with its first three derivatives, as a feedforward reads
@@ -163,7 +193,8 @@ std::function<double(double)> axisReference(const TrajectorySettings& trajectory
  * QuinticTrajectory::motion) and the circle (Sinusoid::motion); for a G-code program, whose feed
  * profile is given by its positions, central differences of the position with the step h =
  * trajectory.dt: r' = (r(t+h) - r(t-h))/2h, r'' = (r(t+h) - 2 r(t) + r(t-h))/h^2, r''' =
- * (r(t+2h) - 2 r(t+h) + 2 r(t-h) - r(t-2h))/2h^3 (second order in h). Refusals as axisReference.
+ * (r(t+2h) - 2 r(t+h) + 2 r(t-h) - r(t-2h))/2h^3 (second order in h). Shaped, each
+ * derivative is shaped as the position is. Refusals as axisReference.
  */
 std::function<MotionSample(double)> axisMotion(const TrajectorySettings& trajectory, int axisIndex);
 

@@ -316,7 +316,7 @@ void TstMainWindow::viewsObserveThePresenter() {
         time = time ? time : qobject_cast<TimeResponseView*>(view);
     }
     QVERIFY(step && time);
-    QCOMPARE(window_->views().size(), std::size_t(10)); // every plot and both panels
+    QCOMPARE(window_->views().size(), std::size_t(11)); // every plot and both panels
     const auto settling = [&] {
         return window_->stepPlot()->settlingMarker()->data()->isEmpty()
                    ? -1.0

@@ -297,10 +297,11 @@ QJsonObject gtToJson(const GtAxisSettings& g) {
         {"model_unit_scale", g.modelUnitsPerPositionUnit}};
     const FlexibleMode& m = g.flexibleMode;
     if (m.present())
-        out.insert("flexible_mode", QJsonObject{{"frequency", m.frequencyHz},
-                                                {"damping", m.dampingRatio},
-                                                {"anti_resonance", m.antiResonanceHz},
-                                                {"anti_resonance_damping", m.antiResonanceDamping}});
+        out.insert("flexible_mode",
+                   QJsonObject{{"frequency", m.frequencyHz},
+                               {"damping", m.dampingRatio},
+                               {"anti_resonance", m.antiResonanceHz},
+                               {"anti_resonance_damping", m.antiResonanceDamping}});
     if (g.notch.present())
         out.insert("notch", QJsonObject{{"centre", g.notch.centreHz},
                                         {"width", g.notch.widthHz},
@@ -379,7 +380,38 @@ QString trajectoryKindName(TrajectoryKind kind) {
     return QStringLiteral("gcode");
 }
 
+QJsonObject trajectoryMotionToJson(const TrajectorySettings& t);
+
 QJsonObject trajectoryToJson(const TrajectorySettings& t) {
+    QJsonObject out = trajectoryMotionToJson(t);
+    if (t.shaping.active())
+        out.insert("shaping", QJsonObject{{"type", QString(shaperName(t.shaping.type))},
+                                          {"frequency", t.shaping.frequencyHz},
+                                          {"damping", t.shaping.dampingRatio}});
+    return out;
+}
+
+/// The trajectory's "shaping" object: the shaper's type, frequency and damping, refused at
+/// their paths as designInputShaper refuses them.
+ReferenceShaping readShaping(ObjectReader r) {
+    ReferenceShaping s;
+    const QString type = r.string("type");
+    if (!shaperFromName(type.toStdString(), s.type))
+        throw FormatError{join(r.path(), "type"),
+                          QStringLiteral("must be zv, mzv, zvd, zvdd, ei, 2hump_ei or 3hump_ei")};
+    s.frequencyHz = r.positive("frequency");
+    s.dampingRatio = r.number("damping");
+    try {
+        designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
+    } catch (const InvalidInput& e) {
+        throw FormatError{join(r.path(), QString::fromStdString(e.field())),
+                          QString::fromStdString(e.reason())};
+    }
+    r.finish();
+    return s;
+}
+
+QJsonObject trajectoryMotionToJson(const TrajectorySettings& t) {
     return {{"kind", trajectoryKindName(t.kind)},
             {"cubic",
              QJsonObject{{"x0", t.x0},
@@ -604,6 +636,8 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         }
         g.finish();
     }
+    if (r.has("shaping"))
+        t.shaping = readShaping(r.child("shaping"));
     t.durationSeconds = r.number("duration");
     if (t.durationSeconds < 0)
         throw FormatError{join(r.path(), "duration"),

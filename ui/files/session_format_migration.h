@@ -28,7 +28,9 @@ namespace xyt::files {
  *   the axes run independently.
  * - Version 7: an axis' "gt" object may have a "flexible_mode" (GtAxisSettings::flexibleMode:
  *   frequency, damping, anti_resonance, anti_resonance_damping) and a "notch" (centre, width,
- *   depth), each written when set. A version-6 axis has neither: the rigid table, no notch.
+ *   depth), each written when set, and the trajectory a "shaping" object (ReferenceShaping:
+ *   type, frequency, damping), written when on. A version-6 session has none of them: the rigid
+ *   table, no notch, the reference unshaped.
  *
  * Reading an older version is this migration to the current one, then the current reader.
  */

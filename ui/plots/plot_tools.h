@@ -30,6 +30,8 @@ inline const QColor snapshot{0xa0, 0xa0, 0xa0};
 inline const QColor digital{0x94, 0x67, 0xbd};
 /// A controller's command feedforward (its share of u).
 inline const QColor feedforward{0xff, 0x7f, 0x0e};
+/// A run without the input shaper, under the shaped one.
+inline const QColor unshaped{0x8c, 0x56, 0x4b};
 inline const QColor axisX{0x1f, 0x77, 0xb4};
 inline const QColor axisY{0xff, 0x7f, 0x0e};
 } // namespace colors

@@ -70,6 +70,14 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
     digitalControl_ = makeGraph(controlRect_, band, tr("digital u (held)"), 2.5);
     for (QCPGraph* g : {digitalOutput_, digitalError_, digitalControl_})
         g->setVisible(false);
+    // The run without the input shaper, under the shaped one.
+    unshapedOutput_ = makeGraph(positionRect_, colors::unshaped, tr("y without the shaper"), 1.3);
+    unshapedError_ = makeGraph(errorRect_, colors::unshaped, tr("e without the shaper"), 1.3);
+    for (QCPGraph* g : {unshapedOutput_, unshapedError_}) {
+        g->setPen(QPen(colors::unshaped, 1.3, Qt::DotLine));
+        g->setVisible(false);
+    }
+    unshapedError_->removeFromLegend();
     output_ = makeGraph(positionRect_, colors::output, tr("output y"));
     error_ = makeGraph(errorRect_, colors::error, tr("error e"));
     // Where the table sticks (a table with dry friction): a band over the error plot.
@@ -160,9 +168,9 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
                             .arg(axisTitle, QString::fromStdString(axis.errorField),
                                  QString::fromStdString(axis.error)));
         title_->setTextColor(colors::error);
-        for (QCPGraph* g :
-             {reference_, output_, error_, control_, clipUpper_, clipLower_, digitalOutput_,
-              digitalError_, digitalControl_, feedforward_, feedbackPart_})
+        for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_,
+                            digitalOutput_, digitalError_, digitalControl_, feedforward_,
+                            feedbackPart_, unshapedOutput_, unshapedError_})
             g->data()->clear();
         controlLegend_->setVisible(false);
         upperLimit_->setVisible(false);
@@ -215,6 +223,22 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
             g->data()->clear();
         if (legend_->hasItemWithPlottable(digitalOutput_))
             legend_->removeItem(legend_->itemWithPlottable(digitalOutput_));
+    }
+    // With an input shaper on the reference: the tool point and its error without it.
+    const bool unshaped = axis.shaping != nullptr && !axis.shaping->unshapedRun.t.empty();
+    for (QCPGraph* g : {unshapedOutput_, unshapedError_})
+        g->setVisible(unshaped);
+    if (unshaped) {
+        const SimulationResult& u = axis.shaping->unshapedRun;
+        unshapedOutput_->data()->set(minMaxDecimated(u.t, u.y), true);
+        unshapedError_->data()->set(minMaxDecimated(u.t, u.e), true);
+        if (!legend_->hasItemWithPlottable(unshapedOutput_))
+            legend_->addItem(new QCPPlottableLegendItem(legend_, unshapedOutput_));
+    } else {
+        for (QCPGraph* g : {unshapedOutput_, unshapedError_})
+            g->data()->clear();
+        if (legend_->hasItemWithPlottable(unshapedOutput_))
+            legend_->removeItem(legend_->itemWithPlottable(unshapedOutput_));
     }
     // Shade the samples where the table sticks, over the error's range.
     if (!run.sliding.empty()) {

@@ -42,6 +42,9 @@ public:
     QCPGraph* digitalErrorGraph() const { return digitalError_; }
     QCPGraph* digitalControlGraph() const { return digitalControl_; }
     QCPGraph* snapshotOutputGraph() const { return snapshotOutput_; }
+    /// The tool point and its error without the input shaper (AxisEvaluation::shaping).
+    QCPGraph* unshapedOutputGraph() const { return unshapedOutput_; }
+    QCPGraph* unshapedErrorGraph() const { return unshapedError_; }
     QCPGraph* snapshotErrorGraph() const { return snapshotError_; }
     QCPGraph* snapshotControlGraph() const { return snapshotControl_; }
     /// The band over the error plot where the table sticks (empty for a table without friction).
@@ -77,6 +80,8 @@ private:
     QCPLegend* legend_;
     std::unique_ptr<PlotNotice> notice_;
     std::unique_ptr<PlotNotice> controlNotice_;
+    QCPGraph* unshapedOutput_;
+    QCPGraph* unshapedError_;
     QCPGraph* clipUpper_;
     QCPGraph* clipLower_;
     QCPGraph* stuckUpper_; ///< the error plot's band where the table sticks (friction)

@@ -214,6 +214,14 @@ void TuningSession::setFriction(int axis, const TableFriction& friction,
     apply(next, tr("Change the friction of %1").arg(axisName(next, axis)));
 }
 
+void TuningSession::setLoopElements(int axis, const FlexibleMode& mode, const NotchFilter& notch) {
+    Session next = session_;
+    GtAxisSettings& gt = next.axes.at(static_cast<std::size_t>(axis)).gt;
+    gt.flexibleMode = mode;
+    gt.notch = notch;
+    apply(next, tr("Change the flexible mode and notch of %1").arg(axisName(next, axis)));
+}
+
 void TuningSession::setTrajectory(const TrajectorySettings& trajectory) {
     Session next = session_;
     next.trajectory = trajectory;

@@ -134,6 +134,8 @@ public:
     /// The table's friction and the friction compensation of @p axis, as one undo step.
     void setFriction(int axis, const TableFriction& friction,
                      const FrictionCompensation& compensation);
+    /// The axis' flexible mode and notch (GtAxisSettings), one undo step.
+    void setLoopElements(int axis, const FlexibleMode& mode, const NotchFilter& notch);
     void setTrajectory(const TrajectorySettings& trajectory);
     void setCrossCoupling(const CrossCoupling& coupling);
     void setUmax(double umaxVolts);

@@ -179,7 +179,7 @@ std::string writeInput(const Session& session, const SessionEvaluation& evaluati
     const ImplementationSettings& impl = session.implementation;
     std::ostringstream out;
     if (a.gt) {
-        const SampledPlant p = sampledPlant(a.gt->plant.transferFunction(), d.tsSeconds);
+        const SampledPlant p = sampledPlant(a.gt->loopPlant, d.tsSeconds);
         out << n << " 0 " << numbers({impl.encoderResolutionMm}) << impl.delaySamples << "\n"
             << numbers({session.axes[static_cast<std::size_t>(i)].gt.modelUnitsPerPositionUnit})
             << p.states << "\n"
@@ -457,6 +457,8 @@ void TstFirmwareLoop::doubleMatchesTheCore_data() {
         QTest::newRow("GT tustin " + name) << 0 << static_cast<int>(aw);
         QTest::newRow("GT backward euler " + name) << 1 << static_cast<int>(aw);
     }
+    // A table with a flexible mode and the notch designed for it: the notch's biquad in C.
+    QTest::newRow("GT tustin clamp, mode and notch") << 3 << static_cast<int>(AntiWindup::Clamp);
     QTest::newRow("pole placement clamp") << 2 << static_cast<int>(AntiWindup::Clamp);
     QTest::newRow("pole placement none") << 2 << static_cast<int>(AntiWindup::None);
 }
@@ -468,10 +470,15 @@ void TstFirmwareLoop::doubleMatchesTheCore() {
     QFETCH(int, kind);
     QFETCH(int, antiWindup);
     Session s;
-    if (kind < 2) {
-        s = saturatingGtSession(kind == 0 ? PiDiscretization::Tustin
-                                          : PiDiscretization::BackwardEuler,
+    if (kind < 2 || kind == 3) {
+        s = saturatingGtSession(kind == 1 ? PiDiscretization::BackwardEuler
+                                          : PiDiscretization::Tustin,
                                 static_cast<AntiWindup>(antiWindup));
+        if (kind == 3)
+            for (AxisSettings& a : s.axes) {
+                a.gt.flexibleMode = {20.0, 0.05, 0.0, 0.02};
+                a.gt.notch = notchForMode(a.gt.flexibleMode);
+            }
     } else {
         s = ppSession();
         s.implementation.antiWindup = static_cast<AntiWindup>(antiWindup);

@@ -288,6 +288,10 @@ Session frictionSession() {
     f.electricalPole = ElectricalPole::Slower;
     s.axes[0].frictionCompensation = {80.0, 0.1};
     s.crossCoupling = {0.1, 1.5, ContourEstimateKind::Linear};
+    // The vibration settings of format 7: a two-mass mode and a notch on y, a shaper.
+    s.axes[1].gt.flexibleMode = {42.0, 0.03, 30.0, 0.02};
+    s.axes[1].gt.notch = {42.0, 8.0, 25.0};
+    s.trajectory.shaping = {ShaperType::TwoHumpEi, 38.5, 0.08};
     return s;
 }
 
@@ -299,7 +303,16 @@ void TstSessionFile::roundTripFrictionAndCoupling() {
     // "cross_coupling", and a version-4 file (neither) loads as the linear table, uncoupled.
     const Session s = frictionSession();
     const QJsonObject json = sessionToJson(s);
-    QCOMPARE(json["version"].toInt(), 6);
+    QCOMPARE(json["version"].toInt(), 7);
+    const QJsonObject gtY = json["axes"].toArray()[1].toObject()["gt"].toObject();
+    QCOMPARE(gtY["flexible_mode"].toObject()["anti_resonance"].toDouble(), 30.0);
+    QCOMPARE(gtY["notch"].toObject()["depth"].toDouble(), 25.0);
+    QCOMPARE(json["trajectory"].toObject()["shaping"].toObject()["type"].toString(),
+             QStringLiteral("2hump_ei"));
+    // The rigid, unshaped session writes none of them (a version-6 reader's file).
+    const QJsonObject plain = sessionToJson(Session::paperDefault());
+    QVERIFY(!plain["axes"].toArray()[0].toObject()["gt"].toObject().contains("flexible_mode"));
+    QVERIFY(!plain["trajectory"].toObject().contains("shaping"));
     QCOMPARE(json["cross_coupling"].toObject()["estimate"].toString(), QStringLiteral("linear"));
     QVERIFY(!sessionToJson(Session::paperDefault()).contains("cross_coupling"));
     const QJsonObject f = json["axes"].toArray()[0].toObject()["friction"].toObject();
@@ -351,6 +364,25 @@ void TstSessionFile::badFrictionAndCouplingFields_data() {
     QTest::newRow("coupling estimate unknown")
         << "cross_coupling.estimate" << QJsonValue("parabolic") << "cross_coupling.estimate"
         << "must be \"linear\" or \"circular\"";
+    const QString m = "axes[1].gt.flexible_mode.";
+    QTest::newRow("mode damping one") << m + "damping" << QJsonValue(1.0) << m + "damping"
+                                      << "must be a damping ratio in [0, 1)";
+    QTest::newRow("anti-resonance above the mode")
+        << m + "anti_resonance" << QJsonValue(50.0) << m + "anti_resonance"
+        << "must lie below the resonance";
+    QTest::newRow("mode frequency zero") << m + "frequency" << QJsonValue(0) << m + "frequency"
+                                         << "must be greater than zero";
+    const QString n = "axes[1].gt.notch.";
+    QTest::newRow("notch too wide") << n + "width" << QJsonValue(100.0) << n + "width"
+                                    << "must be a bandwidth > 0 Hz and below twice";
+    QTest::newRow("notch depth missing")
+        << n + "depth" << QJsonValue(QJsonValue::Undefined) << n + "depth"
+        << "is missing";
+    const QString sh = "trajectory.shaping.";
+    QTest::newRow("shaper unknown") << sh + "type" << QJsonValue("zvx") << sh + "type"
+                                    << "must be zv, mzv, zvd, zvdd, ei, 2hump_ei or 3hump_ei";
+    QTest::newRow("shaper damping negative") << sh + "damping" << QJsonValue(-0.1) << sh + "damping"
+                                             << "must be in [0, 1)";
     QTest::newRow("deadband missing")
         << f + "amplifier_deadband" << QJsonValue(QJsonValue::Undefined) << f + "amplifier_deadband"
         << "is missing";
@@ -585,7 +617,7 @@ void TstSessionFile::versionOneFilesMigrate() {
     s.snapshots.push_back({"before", s.axes, s.trajectory, s.umaxVolts});
     const QJsonObject current = sessionToJson(s);
     QCOMPARE(current["version"].toInt(), kSessionFormatVersion);
-    QCOMPARE(kSessionFormatVersion, 6);
+    QCOMPARE(kSessionFormatVersion, 7);
     // Version 3 had no "profile" in its point-to-point move (nor in its snapshots'): the
     // migration says "cubic", the current document.
     const auto withoutProfile = [](QJsonObject holder) {

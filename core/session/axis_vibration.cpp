@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/session/axis_vibration.h"
+
+#include "core/model/errors.h"
+#include "core/model/math_constants.h"
+#include "core/session/session_evaluation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace xyt {
+
+namespace {
+
+/// 20 log10 |H(j 2 pi f)|.
+double magnitudeDb(const TransferFunction& h, double hz) {
+    return 20.0 * std::log10(std::abs(h.frequencyResponse(kTwoPi * hz)));
+}
+
+} // namespace
+
+ShaperSensitivityCurve shaperSensitivityCurve(const InputShaper& shaper, double upToHz,
+                                              int points) {
+    requirePositive(upToHz, "up_to");
+    if (points < 2)
+        throw InvalidInput("points", "must be at least 2");
+    ShaperSensitivityCurve out;
+    out.frequencyHz.reserve(static_cast<std::size_t>(points));
+    out.vibration.reserve(static_cast<std::size_t>(points));
+    for (int i = 0; i < points; ++i) {
+        // From a small fraction of the range, not 0: residualVibration needs f > 0 (it is 1 at
+        // f -> 0, where a shaper of unit sum passes the slow motion whole).
+        const double f = upToHz * (static_cast<double>(i) + 0.5) / static_cast<double>(points);
+        out.frequencyHz.push_back(f);
+        out.vibration.push_back(residualVibration(shaper, f, shaper.dampingRatio));
+    }
+    return out;
+}
+
+AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
+    AxisVibration out;
+    try {
+        const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
+        if (axis.method == DesignMethod::PolePlacementZpetc)
+            throw InvalidInput("method", "a pole-placement axis runs its ARX model, which holds "
+                                         "whatever mode its data showed: the flexible mode and "
+                                         "the notch apply to continuous plants");
+        const GtAxisSettings& gt = axis.gt;
+        const TransferFunction rigid = gt.plant.transferFunction();
+        const TransferFunction plant = axisPlantTransferFunction(gt, axisIndex);
+        const TransferFunction notch = notchTransferFunction(gt, axisIndex);
+        out.modeHz = gt.flexibleMode.frequencyHz;
+        out.notchHz = gt.notch.centreHz;
+        if (session.trajectory.shaping.active()) {
+            const ReferenceShaping& s = session.trajectory.shaping;
+            try {
+                out.shaper = designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
+            } catch (const InvalidInput& e) {
+                throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+            }
+        }
+        // The grid: three decades below the highest frequency of interest up to 3 times it.
+        double top = std::max({out.modeHz, out.notchHz, out.shaper ? out.shaper->frequencyHz : 0.0,
+                               std::sqrt(std::abs(gt.plant.a2)) / kTwoPi});
+        if (!(top > 0.0))
+            top = 10.0;
+        const double lo = top / 1000.0, hi = 3.0 * top;
+        constexpr int kPoints = 600;
+        for (int i = 0; i < kPoints; ++i) {
+            const double f = lo * std::pow(hi / lo, static_cast<double>(i) / (kPoints - 1));
+            out.frequencyHz.push_back(f);
+            out.rigidDb.push_back(magnitudeDb(rigid, f));
+            out.plantDb.push_back(magnitudeDb(plant, f));
+            if (gt.notch.present())
+                out.notchDb.push_back(magnitudeDb(notch, f));
+        }
+        if (out.shaper) {
+            const double at = out.modeHz > 0.0 ? out.modeHz : out.shaper->frequencyHz;
+            const double zeta =
+                out.modeHz > 0.0 ? gt.flexibleMode.dampingRatio : out.shaper->dampingRatio;
+            out.sensitivity =
+                shaperSensitivityCurve(*out.shaper, 2.5 * std::max(at, out.shaper->frequencyHz));
+            out.residualAtModePercent = 100.0 * residualVibration(*out.shaper, at, zeta);
+        }
+        out.ok = true;
+    } catch (const InvalidInput& e) {
+        out = {};
+        out.error = e.what();
+    }
+    return out;
+}
+
+} // namespace xyt

@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/panels/flexible_mode_editor.h"
+
+#include "core/model/errors.h"
+#include "ui/panels/fold_button.h"
+#include "ui/panels/number_field.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace xyt::ui {
+
+namespace {
+
+void requireNonNegativeNumber(double v) {
+    if (!(v >= 0.0))
+        throw InvalidInput("value", "must be >= 0");
+}
+
+/// The notch's fields, by the core's names.
+const QStringList& notchFieldNames() {
+    static const QStringList names{"centre", "width", "depth"};
+    return names;
+}
+
+} // namespace
+
+FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    body_ = new QWidget(this);
+    fold_ = makeFoldButton(this, tr("Flexible mode and notch"), body_);
+    layout->addWidget(fold_);
+    auto* form = new QFormLayout(body_);
+    form->setContentsMargins(12, 0, 0, 0);
+    const auto add = [&](const QString& key, const QString& label, const QString& tip) {
+        auto* f = new NumberField(key, requireNonNegativeNumber, body_);
+        f->setToolTip(tip);
+        fields_.insert(key, f);
+        tips_.insert(key, tip);
+        form->addRow(label, f);
+        connect(f, &NumberField::valueAccepted, this, [this] { emitIfValid(); });
+    };
+    add("frequency", tr("Mode (Hz)"),
+        tr("The table's resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid "
+           "table. The design is made on the rigid plant; every run and analysis has the mode"));
+    add("damping", tr("Mode damping"),
+        tr("Damping ratio of the resonance, in [0, 1); its peak stands 1/(2 ζ) above the rigid "
+           "plant"));
+    add("anti_resonance", tr("Anti-resonance (Hz)"),
+        tr("A two-mass model measured at the motor: its anti-resonance below fr; 0: the "
+           "resonant pair fr² / (s² + 2 ζ fr s + fr²) alone"));
+    add("anti_resonance_damping", tr("Anti-res. damping"),
+        tr("Damping ratio of the anti-resonance, in [0, 1)"));
+    add("centre", tr("Notch centre (Hz)"),
+        tr("Notch on the error the PI reads, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); "
+           "0: none. Digital: bilinear, prewarped at the centre, below the controller's Nyquist "
+           "frequency"));
+    add("width", tr("Notch width (Hz)"), tr("Bandwidth of the notch's pole pair: 2 ζp f0"));
+    add("depth", tr("Notch depth (dB)"), tr("Attenuation at the centre, in (0, 120] dB"));
+    fromMode_ = new QPushButton(tr("Notch at the mode"), body_);
+    fromMode_->setToolTip(tr("Centre on the mode, as deep as its peak (6 to 40 dB) and four "
+                             "half-power bandwidths wide"));
+    form->addRow(QString(), fromMode_);
+    connect(fromMode_, &QPushButton::clicked, this, [this] {
+        try {
+            const NotchFilter n = notchForMode(mode_);
+            fields_["centre"]->setValue(n.centreHz);
+            fields_["width"]->setValue(n.widthHz);
+            fields_["depth"]->setValue(n.depthDb);
+            emitIfValid();
+        } catch (const InvalidInput& e) {
+            markFieldError(fields_["frequency"], QString::fromStdString(e.reason()));
+        }
+    });
+    note_ = new QLabel(body_);
+    note_->setWordWrap(true);
+    note_->hide();
+    form->addRow(note_);
+    // The input shaper: the trajectory's, on both axes.
+    shaperType_ = new QComboBox(body_);
+    shaperType_->addItem(tr("none"));
+    for (const ShaperType t : {ShaperType::Zv, ShaperType::Mzv, ShaperType::Zvd, ShaperType::Zvdd,
+                               ShaperType::Ei, ShaperType::TwoHumpEi, ShaperType::ThreeHumpEi})
+        shaperType_->addItem(QString(shaperName(t)).toUpper(), static_cast<int>(t));
+    shaperType_->setToolTip(tr("Input shaper on both axes' reference: ZV, ZVD, ZVDD (Singer and "
+                               "Seering), MZV (Klipper), EI and the multi-hump EI (Singhose et "
+                               "al.)"));
+    form->addRow(tr("Input shaper"), shaperType_);
+    connect(shaperType_, &QComboBox::activated, this, [this] { emitShapingIfValid(); });
+    const auto addShaper = [&](const QString& key, const QString& label, const QString& tip) {
+        auto* f = new NumberField(key, requireNonNegativeNumber, body_);
+        f->setToolTip(tip);
+        shaperFields_.insert(key, f);
+        tips_.insert("shaper_" + key, tip);
+        form->addRow(label, f);
+        connect(f, &NumberField::valueAccepted, this, [this] { emitShapingIfValid(); });
+    };
+    addShaper("frequency", tr("Shaper frequency (Hz)"),
+              tr("The mode the shaper is designed for; acts on the reference at the trajectory's "
+                 "step, so the controller's period does not limit it"));
+    addShaper("damping", tr("Shaper damping"), tr("The damping ratio it is designed for, [0, 1)"));
+    shaperAtMode_ = new QPushButton(tr("Shaper at the mode"), body_);
+    shaperAtMode_->setToolTip(tr("Design the shaper for this axis' mode (ZV unless a type is "
+                                 "chosen)"));
+    form->addRow(QString(), shaperAtMode_);
+    connect(shaperAtMode_, &QPushButton::clicked, this, [this] {
+        if (!mode_.present()) {
+            markFieldError(fields_["frequency"], tr("no flexible mode to tune the shaper to"));
+            return;
+        }
+        if (shaperType_->currentIndex() == 0)
+            shaperType_->setCurrentIndex(1);
+        shaperFields_["frequency"]->setValue(mode_.frequencyHz);
+        shaperFields_["damping"]->setValue(mode_.dampingRatio);
+        emitShapingIfValid();
+    });
+    setShaping({});
+    layout->addWidget(body_);
+    setSettings({}, {}, true, true);
+}
+
+void FlexibleModeEditor::setSettings(const FlexibleMode& mode, const NotchFilter& notch,
+                                     bool continuousPlant, bool notchAllowed) {
+    mode_ = mode;
+    notch_ = notch;
+    notchAllowed_ = notchAllowed;
+    fields_["frequency"]->setValue(mode.frequencyHz);
+    fields_["damping"]->setValue(mode.dampingRatio);
+    fields_["anti_resonance"]->setValue(mode.antiResonanceHz);
+    fields_["anti_resonance_damping"]->setValue(mode.antiResonanceDamping);
+    fields_["centre"]->setValue(notch.centreHz);
+    // An empty notch shows the width and depth a notch would start from.
+    const NotchFilter start = notch.present() ? notch : NotchFilter{0.0, 0.0, 20.0};
+    fields_["width"]->setValue(start.widthHz);
+    fields_["depth"]->setValue(start.depthDb);
+    for (auto it = fields_.begin(); it != fields_.end(); ++it) {
+        const bool isNotch = notchFieldNames().contains(it.key());
+        const bool used = continuousPlant && (!isNotch || notchAllowed);
+        it.value()->setEnabled(used);
+        clearFieldError(it.value(), tips_.value(it.key()));
+    }
+    fromMode_->setEnabled(continuousPlant && notchAllowed);
+    if (!continuousPlant)
+        note_->setText(tr("A pole-placement axis' ARX model holds whatever mode its data showed: "
+                          "identify it from a log that excites the mode."));
+    else if (!notchAllowed)
+        note_->setText(tr("LinuxCNC's pid has no notch stage: the notch is offered on "
+                          "Guillemin–Truxal axes."));
+    note_->setVisible(!continuousPlant || !notchAllowed);
+    updateHeader();
+}
+
+void FlexibleModeEditor::emitIfValid() {
+    for (NumberField* f : fields_)
+        if (f->hasError())
+            return;
+    FlexibleMode mode;
+    mode.frequencyHz = fields_["frequency"]->value();
+    mode.dampingRatio = fields_["damping"]->value();
+    mode.antiResonanceHz = fields_["anti_resonance"]->value();
+    mode.antiResonanceDamping = fields_["anti_resonance_damping"]->value();
+    NotchFilter notch;
+    notch.centreHz = fields_["centre"]->value();
+    notch.widthHz = fields_["width"]->value();
+    notch.depthDb = fields_["depth"]->value();
+    if (!notch.present())
+        notch = {};
+    try {
+        validateFlexibleMode(mode);
+        validateNotchFilter(notch);
+    } catch (const InvalidInput& e) {
+        if (NumberField* f = fields_.value(QString::fromStdString(e.field())))
+            markFieldError(f, QString::fromStdString(e.reason()));
+        return;
+    }
+    for (auto it = fields_.begin(); it != fields_.end(); ++it)
+        clearFieldError(it.value(), tips_.value(it.key()));
+    if (mode == mode_ && notch == notch_)
+        return;
+    mode_ = mode;
+    notch_ = notch;
+    updateHeader();
+    emit loopElementsEdited(mode, notch);
+}
+
+void FlexibleModeEditor::setShaping(const ReferenceShaping& shaping) {
+    shaping_ = shaping;
+    shaperType_->setCurrentIndex(
+        shaping.active() ? shaperType_->findData(static_cast<int>(shaping.type)) : 0);
+    shaperFields_["frequency"]->setValue(shaping.frequencyHz);
+    shaperFields_["damping"]->setValue(shaping.dampingRatio);
+    updateHeader();
+}
+
+void FlexibleModeEditor::emitShapingIfValid() {
+    for (NumberField* f : shaperFields_)
+        if (f->hasError())
+            return;
+    ReferenceShaping next;
+    if (shaperType_->currentIndex() > 0) {
+        next.type = static_cast<ShaperType>(shaperType_->currentData().toInt());
+        next.frequencyHz = shaperFields_["frequency"]->value();
+        next.dampingRatio = shaperFields_["damping"]->value();
+        try {
+            designInputShaper(next.type, next.frequencyHz, next.dampingRatio);
+        } catch (const InvalidInput& e) {
+            if (NumberField* f = shaperFields_.value(QString::fromStdString(e.field())))
+                markFieldError(f, QString::fromStdString(e.reason()));
+            return;
+        }
+    }
+    for (auto it = shaperFields_.begin(); it != shaperFields_.end(); ++it)
+        clearFieldError(it.value(), tips_.value("shaper_" + it.key()));
+    if (next == shaping_)
+        return;
+    shaping_ = next;
+    updateHeader();
+    emit shapingEdited(next);
+}
+
+void FlexibleModeEditor::updateHeader() {
+    QStringList set;
+    if (mode_.present())
+        set << tr("mode %1 Hz, ζ %2")
+                   .arg(formatNumber(mode_.frequencyHz), formatNumber(mode_.dampingRatio));
+    if (notch_.present())
+        set << tr("notch %1 Hz, %2 dB")
+                   .arg(formatNumber(notch_.centreHz), formatNumber(notch_.depthDb));
+    if (shaping_.active())
+        set << tr("%1 shaper at %2 Hz")
+                   .arg(QString(shaperName(shaping_.type)).toUpper(),
+                        formatNumber(shaping_.frequencyHz));
+    fold_->setText(set.isEmpty() ? tr("Mode") : tr("Mode ●"));
+    fold_->setToolTip(set.isEmpty() ? tr("Flexible mode and notch: none (the rigid table)")
+                                    : tr("Flexible mode and notch: %1").arg(set.join(", ")));
+}
+
+} // namespace xyt::ui

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "core/design/notch_filter.h"
+#include "core/model/flexible_mode.h"
+#include "core/session/session.h"
+
+#include <QMap>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QToolButton;
+
+namespace xyt::ui {
+
+class NumberField;
+
+/**
+ * The "Flexible mode" fold of a Guillemin-Truxal or PID + feedforward axis: the table's
+ * resonance above the rigid plant (FlexibleMode: frequency, damping, and for a two-mass model
+ * the anti-resonance) and the notch after the PI (NotchFilter: centre, width, depth), with a
+ * button that designs the notch from the mode (notchForMode); and the input shaper on both axes'
+ * reference (ReferenceShaping: type, frequency, damping), with a button that tunes it to the
+ * mode. Folded, its header says what is set. A value the core refuses stays at its field, red with
+ * the reason, and nothing is applied.
+ */
+class FlexibleModeEditor : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit FlexibleModeEditor(QWidget* parent = nullptr);
+    /// Shows the axis' settings; @p continuousPlant false (a pole-placement axis, whose ARX model
+    /// holds what its data showed) disables the fields with the reason; @p notchAllowed false (a
+    /// PID + feedforward axis: LinuxCNC's pid has no notch stage) disables the notch's.
+    void setSettings(const FlexibleMode& mode, const NotchFilter& notch, bool continuousPlant,
+                     bool notchAllowed);
+    /// "frequency", "damping", "anti_resonance", "anti_resonance_damping", "centre", "width",
+    /// "depth".
+    NumberField* field(const QString& name) const { return fields_.value(name); }
+    QPushButton* notchFromModeButton() const { return fromMode_; }
+    /// The trajectory's shaper (both axes): "none" then the seven types.
+    void setShaping(const ReferenceShaping& shaping);
+    QComboBox* shaperTypeBox() const { return shaperType_; }
+    NumberField* shaperField(const QString& name) const { return shaperFields_.value(name); }
+    QPushButton* shaperAtModeButton() const { return shaperAtMode_; }
+    QToolButton* foldButton() const { return fold_; }
+
+signals:
+    void loopElementsEdited(const FlexibleMode& mode, const NotchFilter& notch);
+    void shapingEdited(const ReferenceShaping& shaping);
+
+private:
+    void emitIfValid();
+    void emitShapingIfValid();
+    void updateHeader();
+
+    QToolButton* fold_;
+    QWidget* body_;
+    QPushButton* fromMode_;
+    QLabel* note_;
+    QComboBox* shaperType_;
+    QPushButton* shaperAtMode_;
+    QMap<QString, NumberField*> shaperFields_;
+    ReferenceShaping shaping_;
+    QMap<QString, NumberField*> fields_;
+    QMap<QString, QString> tips_;
+    FlexibleMode mode_;
+    NotchFilter notch_;
+    bool notchAllowed_ = true;
+};
+
+} // namespace xyt::ui

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/views/vibration_view.h"
+
+#include "core/session/axis_vibration.h"
+#include "ui/plots/number_text.h"
+#include "ui/plots/vibration_plot.h"
+#include "ui/session/tuning_session.h"
+
+namespace xyt::ui {
+
+VibrationView::VibrationView(TuningSession* session, VibrationPlot* plot)
+    : PresenterView(session, plot), plot_(plot) {}
+
+void VibrationView::draw() {
+    const int axis = session()->currentAxis();
+    const QString title = tr("Vibration of %1").arg(axisTitle());
+    const AxisVibration v = analyzeAxisVibration(session()->session(), axis);
+    if (!v.ok) {
+        plot_->showNoResult(title, QString::fromStdString(v.error));
+        return;
+    }
+    QString summary;
+    const AxisEvaluation& e = session()->axisEvaluation(axis);
+    if (e.ok && e.shaping) {
+        const ShapingComparison& c = *e.shaping;
+        summary = tr("%1 shaper: %2 impulses over %3 ms, the delay it adds")
+                      .arg(QString(shaperName(c.shaper.type)).toUpper())
+                      .arg(c.shaper.amplitudes.size())
+                      .arg(significant(1000.0 * c.shaper.duration(), 3));
+        summary +=
+            tr("; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm "
+               "unshaped")
+                .arg(significant(c.modeHz, 4),
+                     c.fromAxisMode ? QString() : tr(" it is designed for"),
+                     c.afterMove ? tr("after the move") : tr("along the path"),
+                     significant(c.residualShapedMm, 3), significant(c.residualUnshapedMm, 3));
+    }
+    plot_->showVibration(v, title, summary);
+}
+
+} // namespace xyt::ui
