@@ -11,8 +11,8 @@ PoleZeroSet poleZeroSet(const std::string& name, const TransferFunction& tf) {
 }
 
 std::vector<PoleZeroSet> gtPoleZeroSets(const GtDesign& design) {
-    return {poleZeroSet("plant", design.loopPlant),
-            poleZeroSet("controller", design.controller), poleZeroSet("open loop", design.openLoop),
+    return {poleZeroSet("plant", design.loopPlant), poleZeroSet("controller", design.controller),
+            poleZeroSet("open loop", design.openLoop),
             poleZeroSet("closed loop", design.closedLoop),
             poleZeroSet("reference model", design.referenceModel)};
 }

@@ -36,8 +36,8 @@ TransferFunction FlexibleMode::transferFunction() const {
         return TransferFunction::fromDescending({wr * wr}, den);
     const double wa = 2.0 * kPi * antiResonanceHz;
     const double g = (wr * wr) / (wa * wa);
-    return TransferFunction::fromDescending(
-        {g, g * 2.0 * antiResonanceDamping * wa, g * wa * wa}, den);
+    return TransferFunction::fromDescending({g, g * 2.0 * antiResonanceDamping * wa, g * wa * wa},
+                                            den);
 }
 
 } // namespace xyt

@@ -19,9 +19,9 @@ namespace xyt {
  * with w = 2 pi f. frequencyHz = 0 is the rigid table, bit for bit.
  */
 struct FlexibleMode {
-    double frequencyHz = 0.0;          ///< wr / 2 pi; 0: no mode
-    double dampingRatio = 0.02;        ///< zr, in [0, 1)
-    double antiResonanceHz = 0.0;      ///< wa / 2 pi; 0: a resonant pair only
+    double frequencyHz = 0.0;           ///< wr / 2 pi; 0: no mode
+    double dampingRatio = 0.02;         ///< zr, in [0, 1)
+    double antiResonanceHz = 0.0;       ///< wa / 2 pi; 0: a resonant pair only
     double antiResonanceDamping = 0.02; ///< za, in [0, 1)
 
     bool present() const { return frequencyHz != 0.0; }

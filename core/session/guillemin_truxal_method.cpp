@@ -151,8 +151,7 @@ std::string piImplementationBlock(const AxisSettings& axis, const DigitalPi& pi,
             << "_NOTCH_A2 * e;\n";
     else
         out << "    const xyt_real e = (reference - measured) * XYT_" << up << "_UNIT;\n";
-    out
-        << "    const xyt_real increment = XYT_" << up << "_C0 * e + XYT_" << up
+    out << "    const xyt_real increment = XYT_" << up << "_C0 * e + XYT_" << up
         << "_C1 * s->previous_error;\n"
         << "    const xyt_real candidate = s->integrator + increment;\n"
         << "    xyt_real v = XYT_" << up << "_KP * e + candidate;\n"

@@ -161,9 +161,10 @@ void DesignEvaluator::evaluateBatch(std::span<const double> wn, std::span<const 
     for (std::size_t i = 0; i < n; ++i) {
         designs.push_back(designGuilleminTruxal(problem_.plant, wn[i], kp[i]));
         if (problem_.plantFactor || problem_.controllerFilter)
-            designs.back() = withLoopElements(
-                std::move(designs.back()), problem_.plantFactor.value_or(TransferFunction::gain(1.0)),
-                problem_.controllerFilter.value_or(TransferFunction::gain(1.0)));
+            designs.back() =
+                withLoopElements(std::move(designs.back()),
+                                 problem_.plantFactor.value_or(TransferFunction::gain(1.0)),
+                                 problem_.controllerFilter.value_or(TransferFunction::gain(1.0)));
         modes.push_back(loopModes(plantTf_, designs.back().controller));
     }
     std::vector<std::optional<MoveSettleAccumulator>> moves(problem_.move ? n : 0);

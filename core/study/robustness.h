@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/model/flexible_mode.h"
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
+#include "core/model/flexible_mode.h"
 #include "core/model/table_friction.h"
 #include "core/model/transfer_function.h"
 #include "core/simulation/loop_stepper.h"

@@ -95,7 +95,8 @@ private slots:
         for (const double f : {1.0, 30.0, 100.0, 140.0, 400.0, 499.0}) {
             const double w = 2.0 * kPi * f;
             const Complex warped = tf.frequencyResponse(k * std::tan(w * ts / 2.0));
-            QVERIFY2(std::abs(biquadResponse(b, w, ts) - warped) < 1e-11, qPrintable(QString::number(f)));
+            QVERIFY2(std::abs(biquadResponse(b, w, ts) - warped) < 1e-11,
+                     qPrintable(QString::number(f)));
         }
         // Unit static gain: b0 + b1 + b2 = 1 + a1 + a2.
         QVERIFY(std::abs((b.b0 + b.b1 + b.b2) - (1.0 + b.a1 + b.a2)) < 1e-15);
@@ -124,19 +125,33 @@ private slots:
     }
 
     void badValuesAreRefusedNamingTheField() {
-        QCOMPARE(refusedField([] { validateFlexibleMode({40.0, 1.0, 0.0, 0.02}, "m."); }),
+        QCOMPARE(refusedField([] {
+                     validateFlexibleMode({40.0, 1.0, 0.0, 0.02}, "m.");
+                 }),
                  std::string("m.damping"));
-        QCOMPARE(refusedField([] { validateFlexibleMode({40.0, -0.1, 0.0, 0.02}); }),
+        QCOMPARE(refusedField([] {
+                     validateFlexibleMode({40.0, -0.1, 0.0, 0.02});
+                 }),
                  std::string("damping"));
-        QCOMPARE(refusedField([] { validateFlexibleMode({40.0, 0.1, 50.0, 0.02}); }),
+        QCOMPARE(refusedField([] {
+                     validateFlexibleMode({40.0, 0.1, 50.0, 0.02});
+                 }),
                  std::string("anti_resonance"));
-        QCOMPARE(refusedField([] { validateFlexibleMode({std::nan(""), 0.1, 0.0, 0.02}); }),
+        QCOMPARE(refusedField([] {
+                     validateFlexibleMode({std::nan(""), 0.1, 0.0, 0.02});
+                 }),
                  std::string("frequency"));
-        QCOMPARE(refusedField([] { discreteNotch({600.0, 50.0, 20.0}, 0.001, "gt.notch."); }),
+        QCOMPARE(refusedField([] {
+                     discreteNotch({600.0, 50.0, 20.0}, 0.001, "gt.notch.");
+                 }),
                  std::string("gt.notch.centre"));
-        QCOMPARE(refusedField([] { validateNotchFilter({100.0, 250.0, 20.0}); }),
+        QCOMPARE(refusedField([] {
+                     validateNotchFilter({100.0, 250.0, 20.0});
+                 }),
                  std::string("width"));
-        QCOMPARE(refusedField([] { validateNotchFilter({100.0, 10.0, 0.0}); }),
+        QCOMPARE(refusedField([] {
+                     validateNotchFilter({100.0, 10.0, 0.0});
+                 }),
                  std::string("depth"));
         QCOMPARE(refusedField([] { notchForMode({}); }), std::string("frequency"));
         QCOMPARE(refusedField([] { validateNotchFilter({}); }), std::string());
