@@ -2,7 +2,7 @@
 // Klipper's input shaper auto-tuning (klippy/extras/shaper_calibrate.py by Dmitry Butyugin):
 // each function below names the Klipper function it reproduces. The search evaluates a shaper's
 // response at every spectrum bin for about a thousand frequencies per shaper and three damping
-// ratios; the inner loop (shaperResponseInto) runs over the bins as Eigen arrays, with one
+// ratios; the inner loop (recommendationResponseInto) runs over the bins as Eigen arrays, with one
 // exp and one sin/cos pair per bin for shapers with evenly spaced impulses (all seven).
 #include "core/design/shaper_recommendation.h"
 
@@ -27,7 +27,7 @@ constexpr double kRecommendationTargetSmoothing = 0.12;
 constexpr double kRecommendationSmoothingAccel = 5000.0;
 
 /// Klipper's min_freq per shaper (shaper_defs.py INPUT_SHAPERS); 0 when Klipper has none.
-double klipperMinimumFrequency(ShaperType type) {
+double recommendationKlipperMinFrequency(ShaperType type) {
     switch (type) {
     case ShaperType::Zv:
         return 21.0;
@@ -66,7 +66,7 @@ struct RecommendationScratch {
 
 /// True when t_i = i t_1 (to 1e-12 of the duration): then exp(-zeta omega (t_n - t_i)) and
 /// exp(j omega_d t_i) are powers of one exp and one sin/cos pair per bin.
-bool evenlySpacedImpulses(const InputShaper& s) {
+bool recommendationEvenlySpaced(const InputShaper& s) {
     const std::size_t n = s.times.size();
     if (n < 2)
         return false;
@@ -82,8 +82,8 @@ bool evenlySpacedImpulses(const InputShaper& s) {
 /// p = e^{j omega_d h}, the sum is sum_i A_i q^(n-1-i) p^i, evaluated by Horner's rule
 /// (acc <- acc q + A_i p^i), which agrees with Klipper's term-by-term sum to a few ulps per
 /// impulse; otherwise term by term as Klipper does.
-void shaperResponseInto(const InputShaper& shaper, const RecommendationDamping& d,
-                        RecommendationScratch& w, Eigen::ArrayXd& out) {
+void recommendationResponseInto(const InputShaper& shaper, const RecommendationDamping& d,
+                                RecommendationScratch& w, Eigen::ArrayXd& out) {
     const std::vector<double>& a = shaper.amplitudes;
     const std::vector<double>& t = shaper.times;
     double sumA = 0.0;
@@ -91,7 +91,7 @@ void shaperResponseInto(const InputShaper& shaper, const RecommendationDamping& 
         sumA += ai;
     const double invD = 1.0 / sumA;
     const Eigen::Index bins = d.omegaD.size();
-    if (evenlySpacedImpulses(shaper)) {
+    if (recommendationEvenlySpaced(shaper)) {
         const double h = t[1];
         w.q = (-h * d.decay).exp(); // Eigen's vectorized exp
         for (Eigen::Index k = 0; k < bins; ++k) {
@@ -166,7 +166,7 @@ RecommendationPsd recommendationPsd(const Eigen::ArrayXd& power) {
     return p;
 }
 
-double remainingFrom(const Eigen::ArrayXd& response, const RecommendationPsd& p) {
+double recommendationRemaining(const Eigen::ArrayXd& response, const RecommendationPsd& p) {
     return (response * p.power - p.threshold).max(0.0).sum() / p.allVibrations;
 }
 
@@ -207,7 +207,8 @@ std::vector<double> klipperShaperResponse(const InputShaper& shaper, double test
                                          static_cast<Eigen::Index>(frequencyHz.size()));
     RecommendationScratch scratch(omega.size());
     Eigen::ArrayXd out(omega.size());
-    shaperResponseInto(shaper, recommendationDamping(testDampingRatio, omega), scratch, out);
+    recommendationResponseInto(shaper, recommendationDamping(testDampingRatio, omega), scratch,
+                               out);
     return {out.begin(), out.end()};
 }
 
@@ -218,7 +219,8 @@ double klipperRemainingVibrations(const InputShaper& shaper, double testDampingR
         klipperShaperResponse(shaper, testDampingRatio, spectrum.frequencyHz);
     const RecommendationPsd psd = recommendationPsd(Eigen::Map<const Eigen::ArrayXd>(
         spectrum.power.data(), static_cast<Eigen::Index>(spectrum.power.size())));
-    return remainingFrom(Eigen::Map<const Eigen::ArrayXd>(response.data(), psd.power.size()), psd);
+    return recommendationRemaining(
+        Eigen::Map<const Eigen::ArrayXd>(response.data(), psd.power.size()), psd);
 }
 
 double klipperShaperSmoothing(const InputShaper& shaper, double accelMmPerS2,
@@ -318,8 +320,8 @@ ShaperRecommendation recommendShaper(const PowerSpectrum& spectrum,
     double highestTested = 0.0;
     for (ShaperType type : o.shapers) {
         double start = o.minFrequencyHz;
-        if (o.useKlipperMinimumFrequencies && klipperMinimumFrequency(type) > 0.0)
-            start = std::min(klipperMinimumFrequency(type), o.maxFrequencyHz - 1e-7);
+        if (o.useKlipperMinimumFrequencies && recommendationKlipperMinFrequency(type) > 0.0)
+            start = std::min(recommendationKlipperMinFrequency(type), o.maxFrequencyHz - 1e-7);
         testFrequencies.push_back(recommendationArange(start, o.maxFrequencyHz, o.stepHz));
         if (testFrequencies.back().empty())
             throw InvalidInput("stepHz", "leaves no frequency to test");
@@ -366,8 +368,8 @@ ShaperRecommendation recommendShaper(const PowerSpectrum& spectrum,
             }
             double vibrations = 0.0;
             for (const RecommendationDamping& d : dampings) {
-                shaperResponseInto(shaper, d, scratch, response);
-                vibrations = std::max(vibrations, remainingFrom(response, psd));
+                recommendationResponseInto(shaper, d, scratch, response);
+                vibrations = std::max(vibrations, recommendationRemaining(response, psd));
             }
             const double score = smoothing * (std::pow(vibrations, 1.5) + vibrations * 0.2 + 0.01);
             search.results.push_back({*it, vibrations, smoothing, score});
@@ -436,7 +438,7 @@ ShaperRecommendation recommendShaper(const PowerSpectrum& spectrum,
         fit.maxAccelMmPerS2 = klipperMaxAccel(fit.shaper, scv);
         Eigen::ArrayXd worst = Eigen::ArrayXd::Zero(bins);
         for (const RecommendationDamping& d : dampings) {
-            shaperResponseInto(fit.shaper, d, scratch, response);
+            recommendationResponseInto(fit.shaper, d, scratch, response);
             worst = worst.max(response);
         }
         fit.response.assign(worst.begin(), worst.end());
