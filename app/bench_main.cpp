@@ -19,6 +19,7 @@
 #include "core/design/digital_controller.h"
 #include "core/design/guillemin_truxal.h"
 #include "core/design/pole_placement.h"
+#include "core/design/shaper_recommendation.h"
 #include "core/design/zpetc.h"
 #include "core/identification/arx.h"
 #include "core/identification/continuous_fit.h"
@@ -54,6 +55,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <map>
 #include <memory>
@@ -646,6 +648,39 @@ void identifyGt3Fit(Runner& r) {
         0.5);
 }
 
+// ---- Input shaping ------------------------------------------------------------------------------
+
+/// The machine's load (the first three fields of /proc/loadavg), "?" when unreadable: the
+/// machine is shared, so a figure is read beside it.
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    if (!(in >> one >> five >> fifteen))
+        return "?";
+    return one + " " + five + " " + fifteen;
+}
+
+/**
+ * Klipper's shaper recommendation over all seven shapers, 10 to 200 Hz every 0.2 Hz (950
+ * frequencies each, three test damping ratios), target under 200 ms. The spectrum has the size
+ * Klipper's calc_freq_response gives for a 2 s log at 3200 Hz: Welch segments of the power of
+ * two above 0.5 s of samples, M = 2048, so 1025 bins 1.5625 Hz apart up to 1600 Hz, of which
+ * the 129 up to 200 Hz are used. Two resonance peaks (42 and 67 Hz) on a floor.
+ */
+void shaperRecommendation(Runner& r) {
+    xyt::PowerSpectrum psd;
+    for (int k = 0; k <= 1024; ++k) {
+        const double f = 3200.0 * k / 2048.0;
+        const double a = (f - 42.0) / 2.5, b = (f - 67.0) / 4.0;
+        psd.frequencyHz.push_back(f);
+        psd.power.push_back(1.0 / (1.0 + a * a) + 0.45 / (1.0 + b * b) + 0.01);
+    }
+    const char* name = "shaper_recommendation_7_shapers_10_200hz_0p2";
+    r.time(
+        name, [&] { sink = sink + xyt::recommendShaper(psd).best().shaper.frequencyHz; }, 10, 1.0);
+    std::printf("%s: loadavg=%s\n", name, loadAverage().c_str());
+}
+
 // ---- A 128 MiB experiment file ------------------------------------------------------------------
 
 /// Writes to @p path the largest CSV the reader takes (kMaxExperimentBytes) as a 1 kHz logger
@@ -898,6 +933,7 @@ std::vector<Benchmark> benchmarks(int& argc, char* argv[]) {
         {"identify_oe221_10000", identifyOe},
         {"identify_bj21121_10000", identifyBj},
         {"identify_gt3_fit_10000", identifyGt3Fit},
+        {"shaper_recommendation_7_shapers_10_200hz_0p2", shaperRecommendation},
         {"read_csv_128mib", readCsv128MiB},
         // Last: the QApplication lives only in here. Its figures: _digital_overlay, _bode,
         // _design_space_live.

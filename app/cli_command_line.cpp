@@ -234,6 +234,18 @@ constexpr CommandHelp kPidHelp[] = {
      "            {p, i, d, ti, td} from the limit cycle's Ku and Tu\n"},
 };
 
+constexpr CommandHelp kShaperHelp[] = {
+    {"shaper",
+     "  shaper    one input shaper: --type zv|mzv|zvd|zvdd|ei|2hump_ei|3hump_ei --frequency HZ\n"
+     "            [--damping 0.1 (the mode's damping ratio, Klipper's default)] [--points 251]\n"
+     "            [--scv 5 (mm/s)]. JSON: type, frequency, damping, amplitudes, times (s),\n"
+     "            duration (the last impulse: how much longer a shaped move lasts), delay (the\n"
+     "            centroid sum A_i t_i: a shaped ramp's lag), scv, smoothing (mm, Klipper's\n"
+     "            estimate at 5000 mm/s^2), max_accel (mm/s^2, Klipper's for 0.12 mm of\n"
+     "            smoothing), sensitivity {damping, frequency (0 .. 2.5 HZ, --points values),\n"
+     "            vibration (residual vibration as a fraction of the unshaped one)}\n"},
+};
+
 constexpr const char* kFrequencyLoops =
     "Frequency domain of a loop: --gt-preset lower-base|upper-base [--wn W --kp K], or\n"
     "--pp-preset x-axis|y-axis / --a A --b B --t T [--ts 0.07] (pole placement: L = BG/(AF)),\n"
@@ -264,6 +276,9 @@ std::string generalUsage() {
     u += std::string("\n") + kFrequencyLoops;
     for (const CommandHelp& c : kFrequencyHelp)
         u += c.text;
+    u += "\nInput shaping (Singer and Seering; Klipper's shaper set and estimates):\n";
+    for (const CommandHelp& c : kShaperHelp)
+        u += c.text;
     u += "\nSystem identification experiments:\n";
     for (const CommandHelp& c : kIdentificationHelp)
         u += c.text;
@@ -285,6 +300,8 @@ std::string commandUsage(const std::string& name) {
         c = find(std::begin(kPidHelp), std::end(kPidHelp));
     if (!c)
         c = find(std::begin(kIdentificationHelp), std::end(kIdentificationHelp));
+    if (!c)
+        c = find(std::begin(kShaperHelp), std::end(kShaperHelp));
     std::string loops;
     if (!c && (c = find(std::begin(kFrequencyHelp), std::end(kFrequencyHelp))))
         loops = std::string(kFrequencyLoops) + "\n";
@@ -325,6 +342,7 @@ int xyt::cli::runCommandLine(QStringList args) {
         {"identify", xyt::cli::runIdentify},
         {"excite", xyt::cli::runExcite},
         {"tune", xyt::cli::runTune},
+        {"shaper", xyt::cli::runShaper},
     };
     const QString name = args.takeFirst();
     const auto it = commands.find(name);

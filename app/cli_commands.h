@@ -26,5 +26,7 @@ int runIdentify(const QStringList& args);
 int runExcite(const QStringList& args);
 /// PID gains from a target crossover and phase margin, or from a relay experiment.
 int runTune(const QStringList& args);
+/// One input shaper: impulses, delay, Klipper's smoothing and max accel, sensitivity curve.
+int runShaper(const QStringList& args);
 
 } // namespace xyt::cli

@@ -42,7 +42,9 @@ inline constexpr double kShaperVibrationTolerance = 0.05;
  *  - MZV (Klipper's): K' = exp(-0.75 zeta pi / sqrt(1 - zeta^2)), amplitudes
  *    a1 = 1 - 1/sqrt(2), (sqrt(2) - 1) K', a1 K'^2 at 0, 0.375 td, 0.75 td;
  *  - EI, 2-hump EI, 3-hump EI (Singhose, Seering and Singer's extra-insensitive shapers for the
- *    tolerance V = kShaperVibrationTolerance, in the closed forms Klipper uses): EI
+ *    tolerance V = kShaperVibrationTolerance, in the closed forms of Klipper's shaper_defs.py
+ *    as of 2020-2021; later Klipper fits the EI family's amplitudes and times as polynomials
+ *    in the damping ratio, which this does not follow): EI
  *    0.25 (1 + V), 0.5 (1 - V) K, 0.25 (1 + V) K^2 at 0, td/2, td; 2-hump with
  *    X = (V^2 (sqrt(1 - V^2) + 1))^(1/3), a1 = (3 X^2 + 2 X + 3 V^2) / (16 X),
  *    a2 = (0.5 - a1) K, a3 = a2 K, a4 = a1 K^3 at 0 .. 1.5 td; 3-hump with

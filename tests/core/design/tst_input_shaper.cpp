@@ -5,7 +5,10 @@
 // EI leaves its tolerance at the design frequency of an undamped mode (Singhose, Seering and
 // Singer 1994) and cancels at the two frequencies around it; every shaper's amplitudes sum to 1.
 #include "core/design/input_shaper.h"
+#include "core/design/shaper_sensitivity.h"
 #include "core/model/errors.h"
+
+#include "tests/support/tolerance.h"
 
 #include <QTest>
 
@@ -85,6 +88,59 @@ private slots:
         };
         QVERIFY(band(ShaperType::TwoHumpEi) > band(ShaperType::Ei));
         QVERIFY(band(ShaperType::ThreeHumpEi) > band(ShaperType::TwoHumpEi));
+    }
+
+    /// ZVD's sensitivity curve for an undamped mode: H(w) = (1 + 2 e^{-j w T/2} + e^{-j w T})/4
+    /// = e^{-j w T/2} cos^2(w T/4) with T = 1/f_d, so V(f) = cos^2(pi f / (2 f_d)) (Singer and
+    /// Seering 1990), on the stated grid 0 .. 2.5 f_d in 250 steps; round-off 1e-14.
+    void zvdSensitivityCurveIsCosineSquared() {
+        const InputShaper zvd = designInputShaper(ShaperType::Zvd, 40.0, 0.0);
+        const ShaperSensitivity s = shaperSensitivity(zvd);
+        QCOMPARE(s.frequencyHz.size(), std::size_t(251));
+        QCOMPARE(s.frequencyHz.front(), 0.0);
+        XYT_COMPARE_NEAR(s.frequencyHz.back(), 100.0, 1e-15, 0.0);
+        for (std::size_t k = 0; k < s.frequencyHz.size(); ++k) {
+            const double c = std::cos(std::numbers::pi * s.frequencyHz[k] / 80.0);
+            XYT_COMPARE_NEAR(s.vibration[k], c * c, 0.0, 1e-14);
+        }
+    }
+
+    /// EI for an undamped mode (amplitudes (1+V)/4, (1-V)/2, (1+V)/4 at 0, T/2, T): H(w) =
+    /// e^{-j w T/2} ((1-V)/2 + (1+V)/2 cos(pi r)), r = f/f_d, so V(r) = |(1-V)/2 + (1+V)/2
+    /// cos(pi r)|: V at r = 1 and zero where cos(pi r) = -(1-V)/(1+V), at r1 = acos(-(1-V)/(1+V))
+    /// / pi = 0.86 and 2 - r1 = 1.14 for V = 5 %: the hump of height V between two zeros that
+    /// Singhose, Seering and Singer (1994) place around the design frequency. Round-off 1e-14.
+    void eiSensitivityHasItsHumpBetweenTwoZeros() {
+        const double v = kShaperVibrationTolerance, fd = 40.0;
+        const InputShaper ei = designInputShaper(ShaperType::Ei, fd, 0.0);
+        const ShaperSensitivity s = shaperSensitivity(ei, 501);
+        for (std::size_t k = 0; k < s.frequencyHz.size(); ++k) {
+            const double r = s.frequencyHz[k] / fd;
+            const double closed =
+                std::abs(0.5 * (1.0 - v) + 0.5 * (1.0 + v) * std::cos(std::numbers::pi * r));
+            XYT_COMPARE_NEAR(s.vibration[k], closed, 0.0, 1e-14);
+        }
+        const double r1 = std::acos(-(1.0 - v) / (1.0 + v)) / std::numbers::pi;
+        QVERIFY(r1 > 0.85 && r1 < 0.87);
+        QVERIFY(residualVibration(ei, r1 * fd, 0.0) < 1e-14);
+        QVERIFY(residualVibration(ei, (2.0 - r1) * fd, 0.0) < 1e-14);
+        XYT_COMPARE_NEAR(residualVibration(ei, fd, 0.0), v, 1e-13, 0.0);
+    }
+
+    /// The delay is the centroid sum A_i t_i: for an undamped mode every shaper's amplitudes
+    /// are symmetric (K = 1), so the centroid is half the duration (1e-15 s); damping makes the
+    /// later impulses smaller (K < 1), so it moves earlier.
+    void delayIsTheCentroid() {
+        for (const ShaperType t :
+             {ShaperType::Zv, ShaperType::Zvd, ShaperType::Zvdd, ShaperType::Mzv, ShaperType::Ei,
+              ShaperType::TwoHumpEi, ShaperType::ThreeHumpEi}) {
+            const InputShaper s = designInputShaper(t, 40.0, 0.0);
+            XYT_COMPARE_NEAR(shaperDelaySeconds(s), 0.5 * s.duration(), 0.0, 1e-15);
+            const InputShaper damped = designInputShaper(t, 40.0, 0.1);
+            QVERIFY(shaperDelaySeconds(damped) < 0.5 * damped.duration());
+        }
+        QVERIFY_THROWS_EXCEPTION(InvalidInput,
+                                 shaperSensitivity(designInputShaper(ShaperType::Zv, 40, 0), 1));
     }
 
     void badModesAreRefusedByName() {
