@@ -134,6 +134,13 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
                                            std::to_string(column) + " (" + kAccelColumnNames[c] +
                                            ")",
                                        "'" + shownCell(cell) + "' " + reason);
+                if (c > 0 && std::abs(*v) > kMaxAccelerometerMmPerS2)
+                    throw InvalidInput(accelLineField(fileName, n) + ", column " +
+                                           std::to_string(column) + " (" + kAccelColumnNames[c] +
+                                           ")",
+                                       formatNumber(*v) + " mm/s^2 is beyond " +
+                                           formatNumber(kMaxAccelerometerMmPerS2) +
+                                           " mm/s^2 (100 000 g): not an acceleration");
                 value[c] = *v;
             }
         }
@@ -164,6 +171,7 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
           std::isfinite(log.klipperSamplingHz)))
         throw InvalidInput(fileName, "the times span " + formatNumber(span) +
                                          " s: no sample interval can be derived");
+    requireSampleTime(log.meanIntervalSeconds, fileName);
     // The interval check, with the lines found again (a second pass over the text rather than
     // a table of line numbers: 8 bytes a row saved).
     for (std::size_t i = 1; i < count; ++i) {

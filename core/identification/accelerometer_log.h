@@ -18,6 +18,10 @@ namespace xyt {
 /// refused anyway. 25 % lies far from both.
 inline constexpr double kAccelerometerIntervalTolerance = 0.25;
 
+/// The largest acceleration accepted, mm/s^2: 1e9 is 100 000 g, far beyond any accelerometer
+/// (the ADXL345 saturates at 16 g, 157 000 mm/s^2); it keeps the spectra far from overflow.
+inline constexpr double kMaxAccelerometerMmPerS2 = 1e9;
+
 /// The fewest rows a log must hold: two half-overlapping Welch segments of the smallest
 /// segment Klipper chooses would need more; this only refuses logs too short to be a
 /// measurement before the spectra refuse them with the segment length.
@@ -50,15 +54,17 @@ struct AccelerometerLog {
  *   - Every later line that starts with '#' is a comment (numpy.loadtxt(comments='#'), as
  *     calibrate_shaper.py reads it); every other line holds exactly as many comma-separated
  *     numbers as the header names.
+ *   - Accelerations are at most kMaxAccelerometerMmPerS2 in magnitude; the mean interval is an
+ *     accepted sample time (requireSampleTime: 1 ns to 10 000 s).
  *   - Times increase strictly; each interval is within kAccelerometerIntervalTolerance of the
  *     mean interval.
  *   - Memory: at most kMaxExperimentBytes of text; the rows are counted first and 32 bytes a
  *     row reserved, so no number in the file drives an allocation.
  * @throws InvalidInput whose field is "<file>: line N" (", column C (name)" for a cell): no
  *         header ("line 1: no header ..."), a missing column ("line 1: no accel_y column"), a
- *         field that is not a number, too few or too many fields, a time not after the one
- *         before, an interval off the mean by more than the tolerance (a gap), fewer than
- *         kMinAccelerometerSamples rows, more than kMaxExperimentBytes bytes.
+ *         field that is not a number or an acceleration beyond the bound, too few or too many
+ * fields, a time not after the one before, an interval off the mean by more than the tolerance (a
+ * gap), fewer than kMinAccelerometerSamples rows, more than kMaxExperimentBytes bytes.
  */
 AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& fileName);
 

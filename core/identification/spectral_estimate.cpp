@@ -69,6 +69,13 @@ void requireSpectralSignal(const std::vector<double>& x, const std::string& fiel
                                       std::to_string(s.segmentLength + s.step) + ")");
 }
 
+/// Samples near the top of the double range (1e160 and up) square past it: refused rather than
+/// returned as an infinite spectrum.
+void requireSpectralFinite(double value, const std::string& field) {
+    if (!std::isfinite(value))
+        throw InvalidInput(field, "is too large: its power spectral density overflows a double");
+}
+
 void requireSpectralTs(double ts) {
     if (!(std::isfinite(ts) && ts > 0.0))
         throw InvalidInput("ts", "must be positive and finite");
@@ -173,8 +180,10 @@ PowerSpectrum powerSpectralDensity(const std::vector<double>& x, double tsSecond
             out.psd[k] += std::norm(X[k]);
     }
     const std::vector<double> scale = spectralDensityScale(w, tsSeconds, bins);
-    for (std::size_t k = 0; k < bins; ++k)
+    for (std::size_t k = 0; k < bins; ++k) {
         out.psd[k] *= scale[k] / static_cast<double>(s.count);
+        requireSpectralFinite(out.psd[k], "x");
+    }
     return out;
 }
 
@@ -223,6 +232,9 @@ FrequencyResponseEstimate estimateFrequencyResponse(const std::vector<double>& u
         puu[k] *= scale[k] * perSegment;
         pyy[k] *= scale[k] * perSegment;
         puy[k] *= scale[k] * perSegment;
+        requireSpectralFinite(puu[k], "u");
+        requireSpectralFinite(pyy[k], "y");
+        requireSpectralFinite(std::abs(puy[k]), "y");
         // An input without power at a bin (a constant, or a multisine's empty bins) gives no
         // estimate there: H1 = 0 with coherence 0 and an infinite error, never a NaN.
         const std::complex<double> h = puu[k] > 0.0 ? puy[k] / puu[k] : 0.0;

@@ -76,7 +76,8 @@ struct PowerSpectrum {
  * Equal to scipy.signal.welch(x, fs, window, nperseg=M, noverlap=M//2, detrend="constant",
  * scaling="density") and, with SpectralWindow::Kaiser, to Klipper's shaper_calibrate.py _psd.
  * The integral of P over frequency is the variance of x (Parseval).
- * @throws InvalidInput naming "x" (non-finite sample, fewer samples than two segments),
+ * @throws InvalidInput naming "x" (non-finite sample, fewer samples than two segments, a PSD
+ *         that overflows a double),
  *         "ts" (not positive and finite), "segment" (fewer than 4), "kaiser_beta".
  */
 PowerSpectrum powerSpectralDensity(const std::vector<double>& x, double tsSeconds,
@@ -110,7 +111,8 @@ struct FrequencyResponseEstimate {
     WelchSegments segments;
 };
 
-/// @throws InvalidInput naming "u" or "y" (non-finite sample; fewer samples than two segments),
+/// @throws InvalidInput naming "u" or "y" (non-finite sample; fewer samples than two segments;
+///         a spectrum that overflows a double),
 ///         "y" (a length other than u's), "ts", "segment", and "band_sigmas" (not > 0).
 FrequencyResponseEstimate estimateFrequencyResponse(const std::vector<double>& u,
                                                     const std::vector<double>& y, double tsSeconds,

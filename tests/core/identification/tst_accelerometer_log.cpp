@@ -162,6 +162,8 @@ void TstAccelerometerLog::refusals_data() {
     row("not a number", withLine(good, 5, "3.003000,abc,1,2"),
         "raw.csv: line 5, column 2 (accel_x)", "'abc' is not a number");
     row("nan", withLine(good, 5, "3.003000,1,nan,2"), "raw.csv: line 5, column 3 (accel_y)", "NaN");
+    row("beyond 100 000 g", withLine(good, 6, "3.004000,1e10,0,0"),
+        "raw.csv: line 6, column 2 (accel_x)", "not an acceleration");
     row("too few fields", withLine(good, 7, "3.005000,1,2"), "raw.csv: line 7", "has 3 fields");
     row("too many fields", withLine(good, 7, "3.005000,1,2,3,4"), "raw.csv: line 7",
         "more than the header's 4 fields");

@@ -384,6 +384,11 @@ void TstSpectralEstimate::refusals() {
     expectRefusal([&] { powerSpectralDensity(bad, 1e-3); }, "x", "sample 18 is not finite");
     expectRefusal([&] { estimateFrequencyResponse(x, bad, 1e-3); }, "y", "sample 18");
     expectRefusal([&] { estimateFrequencyResponse(bad, y, 1e-3); }, "u", "sample 18");
+    // Finite samples whose squares overflow: refused, never an infinite spectrum.
+    std::vector<double> huge = x;
+    huge[3] = 1e200;
+    expectRefusal([&] { powerSpectralDensity(huge, 1e-3); }, "x", "overflows a double");
+    expectRefusal([&] { estimateFrequencyResponse(x, huge, 1e-3); }, "y", "overflows a double");
     std::vector<double> shorter(99, 0.0);
     expectRefusal([&] { estimateFrequencyResponse(x, shorter, 1e-3); }, "y", "equally long");
     // Two half-overlapping segments of 64 need 96 samples: 95 are refused, 96 are accepted.
