@@ -31,14 +31,18 @@ int runPsd(const QStringList& argv) {
         throw InvalidInput("--data", e.what());
     }
     const AccelerometerSpectra s = accelerometerSpectra(log, maxHz);
+    // The default band is Klipper's: from MIN_FREQ to the maximum shown (from the third bin
+    // when the maximum is lower still); a band too narrow is the option's fault that set it.
     ResonanceBand band{kPsdMinPickHz, maxHz};
+    if (maxHz <= kPsdMinPickHz)
+        band.lowHz.reset();
     if (const auto text = args.value("band"))
         band = parseResonanceBand("--band", *text);
     ResonancePick pick;
     try {
         pick = pickResonance(s.frequencyHz, s.psdSum, ResonanceQuantity::Power, band);
     } catch (const InvalidInput& e) {
-        throw InvalidInput("--band", e.reason());
+        throw InvalidInput(args.has("band") ? "--band" : "--max-frequency", e.reason());
     }
     print(QJsonObject{{"frequency", numbers(s.frequencyHz)},
                       {"psd_x", numbers(s.psdX)},

@@ -217,6 +217,10 @@ void TstCliSpectra::badInput_data() {
     QTest::newRow("psd max frequency")
         << QStringList{"psd", "--max-frequency", "0"} << "--max-frequency";
     QTest::newRow("psd band") << QStringList{"psd", "--band", "x"} << "--band";
+    // 400 Hz and 256-sample segments: bins 1.56 Hz apart, so up to 2 Hz there are two bins,
+    // too few for a peak; the message names the option that cut the spectrum.
+    QTest::newRow("psd max frequency too low")
+        << QStringList{"psd", "--max-frequency", "2"} << "--max-frequency: needs at least 3 bins";
     QTest::newRow("psd unknown") << QStringList{"psd", "--segment", "3"} << "--segment";
 }
 
