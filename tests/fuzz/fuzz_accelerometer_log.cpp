@@ -41,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                          xyt::kAccelerometerIntervalTolerance);
     }
     // The last byte picks the band shown: Klipper's 200 Hz, or a lower one.
-    const double maxHz = size > 0 && data[size - 1] % 2 ? 200.0 : 1.0 + data[size - 1];
+    const std::uint8_t last = size > 0 ? data[size - 1] : 1;
+    const double maxHz = last % 2 ? 200.0 : 1.0 + last;
     xyt::AccelerometerSpectra s;
     try {
         s = xyt::accelerometerSpectra(log, maxHz);
