@@ -25,6 +25,7 @@
 #include "core/identification/continuous_fit.h"
 #include "core/identification/experiment_file.h"
 #include "core/identification/prediction_error.h"
+#include "core/identification/spectral_estimate.h"
 #include "core/model/state_space.h"
 #include "core/session/contour_run.h"
 #include "core/session/design_study.h"
@@ -596,6 +597,18 @@ void identifyArx(Runner& r) {
         10, 0.5);
 }
 
+/// Welch's H1 estimate with coherence and its band (spectral_estimate.h) of Patrick, Ishak and
+/// Adnan's x-axis ARX model driven by a binary signal, 100,000 samples with output noise: the
+/// default segment (4096, 47 half-overlapping segments, two signals). Target < 50 ms.
+void welchFrequencyResponse(Runner& r) {
+    const std::vector<double> a{1.0, -1.6580, 0.6583}, b{0.0, 0.0421, 0.0628, -0.0454};
+    const std::vector<double> u = binarySignal(100000, 4);
+    const std::vector<double> y = withNoise(xyt::filterDifferenceEquation(b, a, u), 0.01, 5);
+    r.time(
+        "welch_frequency_response_100000_samples",
+        [&] { sink = sink + xyt::estimateFrequencyResponse(u, y, 0.07).magnitude[10]; }, 10, 0.5);
+}
+
 // Soderstrom & Stoica's plant (q^-1 + 0.5 q^-2) / (1 - 1.5 q^-1 + 0.7 q^-2), 10,000 samples; OE
 // with white output noise, BJ with noise (1 - 0.3 q^-1) / (1 - 0.7 q^-1). Target < 300 ms each.
 const std::vector<double> kSoderstromB{0.0, 1.0, 0.5}, kSoderstromF{1.0, -1.5, 0.7};
@@ -930,6 +943,7 @@ std::vector<Benchmark> benchmarks(int& argc, char* argv[]) {
         {"pp_zpetc_revolution", ppZpetcRevolution},
         {"gcode_contour_10000_blocks", gcodeContour}, // and its _read, _profile, _contour_error
         {"identify_arx231_100000", identifyArx},
+        {"welch_frequency_response_100000_samples", welchFrequencyResponse},
         {"identify_oe221_10000", identifyOe},
         {"identify_bj21121_10000", identifyBj},
         {"identify_gt3_fit_10000", identifyGt3Fit},

@@ -116,7 +116,17 @@ constexpr CommandHelp kGtHelp[] = {
      "            --session IN.json --axis x|y -o OUT.json: the session with the model as that\n"
      "            axis' plant (gt3: the Guillemin-Truxal plant; arx/oe/bj: the pole-placement "
      "model)\n"
-     "            and where it came from (model_origin).\n"},
+     "            and where it came from (model_origin).\n"
+     "            --structure frf [--segment-length M (default: the largest power of two <= 4096\n"
+     "            giving 8 half-overlapping segments)] [--band F0:F1] [--mode-frequency HZ]: the\n"
+     "            Welch H1 estimate (Hann, 50 % overlap, segment means removed). JSON: structure,\n"
+     "            data, frequency, magnitude, phase_deg (unwrapped), coherence, relative_error\n"
+     "            (Bendat and Piersol's sqrt(1 - g2) / (|g| sqrt(2 n_d))), magnitude_low/high\n"
+     "            (|H| (1 -+ 2 relative_error)), band_sigmas, averages, equivalent_averages\n"
+     "            (n_d), segment, window, overlap, resonance {frequency, peak, damping\n"
+     "            (half-power; null when a crossing is outside the band), low/high_half_power,\n"
+     "            note}, mode (the estimate at --mode-frequency; refused above the Nyquist\n"
+     "            frequency).\n"},
     {"sweep",
      "  sweep     design-space study: the plant options, the trajectory options of simulate and\n"
      "            --wn MIN:MAX:N --kp MIN:MAX:N [--log] (N 1..500, --log: both axes log-spaced)\n"
@@ -208,6 +218,15 @@ constexpr CommandHelp kFrequencyHelp[] = {
 };
 
 constexpr CommandHelp kIdentificationHelp[] = {
+    {"psd",
+     "  psd       --data FILE (Klipper's raw accelerometer CSV: #time,accel_x,accel_y,accel_z)\n"
+     "            [--max-frequency 200] [--band F0:F1 (default 5 Hz to the maximum)]: the power\n"
+     "            spectral densities as Klipper's shaper_calibrate.py computes them (fs = N / T,\n"
+     "            0.5 s segments rounded up to a power of two, Kaiser window beta 6, 50 %\n"
+     "            overlap). JSON: frequency, psd_x, psd_y, psd_z, psd_sum ((mm/s^2)^2/Hz),\n"
+     "            sample_time, sampling_frequency, samples, segment, averages, window,\n"
+     "            kaiser_beta, overlap, peak {frequency, peak, damping (half-power of psd_sum),\n"
+     "            low/high_half_power, note}\n"},
     {"excite",
      "  excite    --signal square|prbs|chirp --ts S --duration S --amplitude V [--offset 0]\n"
      "            [--umax 2.5] -o FILE.csv|FILE.lvm, and per signal: square --period S;\n"
@@ -341,6 +360,7 @@ int xyt::cli::runCommandLine(QStringList args) {
         {"robustness", xyt::cli::runRobustness},
         {"identify", xyt::cli::runIdentify},
         {"excite", xyt::cli::runExcite},
+        {"psd", xyt::cli::runPsd},
         {"tune", xyt::cli::runTune},
         {"shaper", xyt::cli::runShaper},
     };

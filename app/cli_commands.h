@@ -24,6 +24,8 @@ int runMargins(const QStringList& args);
 int runRobustness(const QStringList& args);
 int runIdentify(const QStringList& args);
 int runExcite(const QStringList& args);
+/// The power spectral densities of a Klipper accelerometer log (app/cli_psd.cpp).
+int runPsd(const QStringList& args);
 /// PID gains from a target crossover and phase margin, or from a relay experiment.
 int runTune(const QStringList& args);
 /// One input shaper: impulses, delay, Klipper's smoothing and max accel, sensitivity curve.

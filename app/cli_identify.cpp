@@ -7,6 +7,7 @@
 #include "app/cli_design_args.h"
 #include "app/cli_friction.h"
 #include "app/cli_json.h"
+#include "app/cli_spectra.h"
 
 #include "core/identification/continuous_fit.h"
 #include "core/identification/experiment_data.h"
@@ -227,10 +228,16 @@ QJsonObject orderTableJson(const std::array<OrderRange, 3>& ranges, const IoData
 
 } // namespace
 
+IoData identifyRecord(const CliArgs& args, const QString& option, const QString& path) {
+    return record(args, option, path);
+}
+
 int runIdentify(const QStringList& argv) {
     const CliArgs args = CliArgs::parse(argv, {"detrend", "remove-means", "no-stribeck"});
     if (args.text("structure", QString()) == "friction")
         return identifyFrictionCurve(args);
+    if (args.text("structure", QString()) == "frf")
+        return identifyFrequencyResponse(args);
     args.allowOnly({"data",
                     "time-col",
                     "ts",
@@ -278,7 +285,7 @@ int runIdentify(const QStringList& argv) {
     if (!args.has("data"))
         throw InvalidInput("--data", "give the experiment file (CSV/TSV, .lvm or .mat)");
     if (!args.has("structure"))
-        throw InvalidInput("--structure", "give arx, oe, bj, gt3 or friction");
+        throw InvalidInput("--structure", "give arx, oe, bj, gt3, friction or frf");
     IdentificationSpec spec;
     try {
         spec.structure = parseModelStructure(args.text("structure", QString()).toStdString());

@@ -14,7 +14,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${XYT_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 harnesses=(fuzz_coefficients fuzz_design fuzz_session_loader fuzz_gcode_reader
-           fuzz_delimited_reader fuzz_lvm_reader fuzz_mat_reader)
+           fuzz_delimited_reader fuzz_lvm_reader fuzz_mat_reader fuzz_accelerometer_log)
 # XYT_FUZZ_HARNESSES="fuzz_lvm_reader fuzz_mat_reader" builds and runs only those.
 if [ -n "${XYT_FUZZ_HARNESSES:-}" ]; then
     read -r -a harnesses <<< "$XYT_FUZZ_HARNESSES"
