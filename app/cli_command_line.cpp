@@ -262,7 +262,13 @@ constexpr CommandHelp kShaperHelp[] = {
      "            centroid sum A_i t_i: a shaped ramp's lag), scv, smoothing (mm, Klipper's\n"
      "            estimate at 5000 mm/s^2), max_accel (mm/s^2, Klipper's for 0.12 mm of\n"
      "            smoothing), sensitivity {damping, frequency (0 .. 2.5 HZ, --points values),\n"
-     "            vibration (residual vibration as a fraction of the unshaped one)}\n"},
+     "            vibration (residual vibration as a fraction of the unshaped one)}\n"
+     "  shaper --recommend (--data LOG.csv [--axis x|y|z|sum] | --mode-frequency HZ\n"
+     "            [--mode-damping 0.05]) [--max-smoothing MM] [--klipper-shapers] [--damping 0.1]\n"
+     "            [--scv 5]: Klipper's choice (find_best_shaper) over the spectrum of a Klipper\n"
+     "            accelerometer log (normalized as Klipper does) or of a modelled mode. JSON:\n"
+     "            source, recommended and shapers [{type, frequency, remaining_vibration,\n"
+     "            smoothing, score, max_accel}], damping, scv\n"},
 };
 
 constexpr const char* kFrequencyLoops =

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune-cli shaper: one input shaper, its impulses, delay, Klipper's smoothing and max accel,
-// and its sensitivity curve.
+// and its sensitivity curve; with --recommend, Klipper's choice of shaper for an accelerometer
+// log or a modelled mode.
 #include "app/cli_args.h"
 #include "app/cli_commands.h"
 #include "app/cli_json.h"
@@ -8,7 +9,12 @@
 #include "core/design/input_shaper.h"
 #include "core/design/shaper_recommendation.h"
 #include "core/design/shaper_sensitivity.h"
+#include "core/identification/accelerometer_log.h"
 #include "core/model/errors.h"
+#include "core/session/shaper_advice.h"
+
+#include <QJsonArray>
+#include <QJsonObject>
 
 #include <string>
 
@@ -24,10 +30,87 @@ std::string shaperNamesList() {
     return names;
 }
 
+QJsonObject fitJson(const ShaperFit& f) {
+    return {{"type", shaperName(f.shaper.type)},
+            {"frequency", number(f.shaper.frequencyHz)},
+            {"remaining_vibration", number(f.remainingVibrations)},
+            {"smoothing", number(f.smoothing)},
+            {"score", number(f.score)},
+            {"max_accel", number(f.maxAccelMmPerS2)}};
+}
+
+/// shaper --recommend: the spectrum of --data (a Klipper accelerometer log, its --axis) or of
+/// the mode --mode-frequency/--mode-damping, then recommendShaper.
+int recommend(const CliArgs& args) {
+    args.allowOnly({"recommend", "data", "axis", "mode-frequency", "mode-damping", "max-smoothing",
+                    "scv", "damping", "klipper-shapers"});
+    if (args.has("data") == args.has("mode-frequency"))
+        throw InvalidInput("--recommend", "give either --data LOG.csv (a Klipper accelerometer "
+                                          "log) or --mode-frequency F (a modelled mode)");
+    ShaperRecommendationOptions options;
+    options.dampingRatio = args.number("damping", 0.1);
+    if (!(options.dampingRatio >= 0.0 && options.dampingRatio < 1.0))
+        throw InvalidInput("--damping", "give a damping ratio in [0, 1)");
+    options.squareCornerVelocityMmPerS = args.number("scv", 5.0);
+    if (!(options.squareCornerVelocityMmPerS >= 0.0))
+        throw InvalidInput("--scv", "give a square corner velocity >= 0 mm/s");
+    if (args.has("max-smoothing")) {
+        options.maxSmoothing = args.number("max-smoothing");
+        if (!(*options.maxSmoothing > 0.0))
+            throw InvalidInput("--max-smoothing", "give a smoothing limit > 0 mm");
+    }
+    if (args.flag("klipper-shapers")) {
+        options.shapers = klipperAutotuneShapers();
+        options.useKlipperMinimumFrequencies = true;
+    }
+    PowerSpectrum spectrum;
+    QJsonObject source;
+    if (args.has("data")) {
+        const std::string path = args.text("data", QString()).toStdString();
+        const AccelerometerLog log = readAccelerometerLogFile(path);
+        const std::string axis = args.text("axis", "sum").toStdString();
+        try {
+            spectrum = accelerometerShaperSpectrum(
+                accelerometerSpectra(log, options.maxSpectrumFrequencyHz), axis);
+        } catch (const InvalidInput& e) {
+            if (e.field() == "axis")
+                throw InvalidInput("--axis", e.reason());
+            throw;
+        }
+        source = {{"data", QString::fromStdString(path)},
+                  {"axis", QString::fromStdString(axis)},
+                  {"samples", static_cast<double>(log.timeSeconds.size())}};
+    } else {
+        FlexibleMode mode;
+        mode.frequencyHz = args.number("mode-frequency");
+        mode.dampingRatio = args.number("mode-damping", 0.05);
+        try {
+            spectrum = flexibleModeSpectrum(mode, options.maxSpectrumFrequencyHz, 0.2);
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(e.field() == "damping" ? "--mode-damping" : "--mode-frequency",
+                               e.reason());
+        }
+        source = {{"mode_frequency", number(mode.frequencyHz)},
+                  {"mode_damping", number(mode.dampingRatio)}};
+    }
+    const ShaperRecommendation r = recommendShaper(spectrum, options);
+    QJsonArray fits;
+    for (const ShaperFit& f : r.fits)
+        fits.append(fitJson(f));
+    print(QJsonObject{{"source", source},
+                      {"recommended", fitJson(r.best())},
+                      {"shapers", fits},
+                      {"damping", number(options.dampingRatio)},
+                      {"scv", number(options.squareCornerVelocityMmPerS)}});
+    return 0;
+}
+
 } // namespace
 
 int runShaper(const QStringList& argv) {
-    const CliArgs args = CliArgs::parse(argv);
+    const CliArgs args = CliArgs::parse(argv, {"recommend", "klipper-shapers"});
+    if (args.flag("recommend"))
+        return recommend(args);
     args.allowOnly({"type", "frequency", "damping", "points", "scv"});
     if (!args.positional().isEmpty())
         throw InvalidInput(args.positional().first().toStdString(), "unexpected argument");

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/identification_window.h"
 
+#include "core/identification/spectral_estimate.h"
+
 #include "core/identification/continuous_fit.h"
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
@@ -303,10 +305,18 @@ QHBoxLayout* IdentificationWindow::buildCandidates() {
     useY_ = new QPushButton(tr("Use for axis Y"));
     useX_->setEnabled(false);
     useY_->setEnabled(false);
+    // The record's measured frequency response (Welch), drawn against the model of an axis.
+    frequencyX_ = new QPushButton(tr("Response → X"));
+    frequencyY_ = new QPushButton(tr("Response → Y"));
+    for (QPushButton* b : {frequencyX_, frequencyY_})
+        b->setToolTip(tr("Welch's estimate of y/u (Hann window, 50 % overlap) with its coherence, "
+                         "drawn over the axis' model in the Vibration view"));
     auto* useRow = new QHBoxLayout;
     useRow->addWidget(useX_);
     useRow->addWidget(useY_);
     useRow->addStretch();
+    useRow->addWidget(frequencyX_);
+    useRow->addWidget(frequencyY_);
     return useRow;
 }
 
@@ -344,6 +354,8 @@ void IdentificationWindow::connectControls() {
             &IdentificationWindow::updateOrderBoxes);
     connect(fit_, &QPushButton::clicked, this, &IdentificationWindow::fit);
     connect(cancel_, &QPushButton::clicked, this, &IdentificationWindow::cancel);
+    connect(frequencyX_, &QPushButton::clicked, this, [this] { showFrequencyResponse(0); });
+    connect(frequencyY_, &QPushButton::clicked, this, [this] { showFrequencyResponse(1); });
     connect(useX_, &QPushButton::clicked, this, [this] { useForAxis(0); });
     connect(useY_, &QPushButton::clicked, this, [this] { useForAxis(1); });
     connect(table_, &QTableWidget::itemSelectionChanged, this, [this] {
@@ -634,6 +646,31 @@ void IdentificationWindow::fit() {
     setStatus(tr("Fitting %1 to %2 samples…")
                   .arg(QString::fromStdString(spec.describe()))
                   .arg(candidate.estimation.size()));
+}
+
+bool IdentificationWindow::showFrequencyResponse(int axis) {
+    if (!experiment_) {
+        setStatus(tr("No frequency response: load a record first"), true);
+        return false;
+    }
+    try {
+        const IoData d = record(*experiment_);
+        auto measured = std::make_shared<TuningSession::MeasuredResponse>();
+        measured->estimate = estimateFrequencyResponse(d.u, d.y, d.tsSeconds);
+        measured->source = QString::fromStdString(d.source);
+        const auto& e = measured->estimate;
+        session_->setMeasuredResponse(axis, std::move(measured));
+        setStatus(tr("Frequency response of %1: %2 averages of %3 samples, drawn in the Vibration "
+                     "view of axis %4")
+                      .arg(QString::fromStdString(d.source))
+                      .arg(e.segments.count)
+                      .arg(e.segments.segmentLength)
+                      .arg(axis == 0 ? "X" : "Y"));
+        return true;
+    } catch (const std::exception& e) {
+        setStatus(tr("No frequency response: %1").arg(QString::fromStdString(e.what())), true);
+        return false;
+    }
 }
 
 void IdentificationWindow::cancel() {

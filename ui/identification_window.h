@@ -77,6 +77,10 @@ public:
     void cancel();
     /// Makes the selected candidate the plant of axis @p axis (0 = X, 1 = Y): one undo step.
     void useForAxis(int axis);
+    /// Welch's estimate of the record's y/u (its columns, range and preprocessing as a fit
+    /// takes them), handed to the workbench as axis @p axis' measured response; false, with the
+    /// reason in the status line, when the record cannot give one.
+    bool showFrequencyResponse(int axis);
     bool isRunning() const { return runner_.isRunning(); }
 
     const std::vector<Candidate>& candidates() const { return candidates_; }
@@ -90,6 +94,9 @@ public:
     QPushButton* cancelButton() const { return cancel_; }
     QPushButton* useXButton() const { return useX_; }
     QPushButton* useYButton() const { return useY_; }
+    QPushButton* frequencyResponseButton(int axis) const {
+        return axis == 0 ? frequencyX_ : frequencyY_;
+    }
     QComboBox* inputBox() const { return input_; }
     QComboBox* outputBox() const { return output_; }
     QComboBox* timeBox() const { return time_; }
@@ -196,6 +203,8 @@ private:
     QLabel* parameters_;
     QPushButton* useX_;
     QPushButton* useY_;
+    QPushButton* frequencyX_;
+    QPushButton* frequencyY_;
     QTabWidget* tabs_;
     QCustomPlot* timePlot_;
     QCPGraph* measured_;

@@ -535,6 +535,12 @@ void MainWindow::connectControls() {
             [this](const FlexibleMode& m, const NotchFilter& n) {
                 session_->setLoopElements(session_->currentAxis(), m, n);
             });
+    connect(flexibleModeEditor_, &FlexibleModeEditor::accelerationLoaded, this,
+            [this](const AccelerometerSpectra& spectra, const QString& source) {
+                session_->setMeasuredAcceleration(
+                    std::make_shared<const TuningSession::MeasuredAcceleration>(
+                        TuningSession::MeasuredAcceleration{spectra, source}));
+            });
     connect(flexibleModeEditor_, &FlexibleModeEditor::shapingEdited, this,
             [this](const ReferenceShaping& shaping) {
                 TrajectorySettings t = session_->session().trajectory;

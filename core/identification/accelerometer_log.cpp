@@ -232,9 +232,9 @@ AccelerometerSpectra accelerometerSpectra(const AccelerometerLog& log, double ma
                                std::to_string(o.segmentLength + o.segmentLength / 2) +
                                " (two half-overlapping segments)");
     const double ts = 1.0 / out.samplingHz;
-    const PowerSpectrum px = powerSpectralDensity(log.x, ts, o);
-    const PowerSpectrum py = powerSpectralDensity(log.y, ts, o);
-    const PowerSpectrum pz = powerSpectralDensity(log.z, ts, o);
+    const WelchSpectrum px = powerSpectralDensity(log.x, ts, o);
+    const WelchSpectrum py = powerSpectralDensity(log.y, ts, o);
+    const WelchSpectrum pz = powerSpectralDensity(log.z, ts, o);
     out.segments = px.segments;
     for (std::size_t k = 0; k < px.frequencyHz.size() && px.frequencyHz[k] <= maxFrequencyHz; ++k) {
         out.frequencyHz.push_back(px.frequencyHz[k]);

@@ -161,14 +161,14 @@ WelchSegments welchSegments(std::size_t samples, const WelchOptions& options) {
     return s;
 }
 
-PowerSpectrum powerSpectralDensity(const std::vector<double>& x, double tsSeconds,
+WelchSpectrum powerSpectralDensity(const std::vector<double>& x, double tsSeconds,
                                    const WelchOptions& options) {
     requireSpectralTs(tsSeconds);
     const WelchSegments s = welchSegments(x.size(), options);
     requireSpectralSignal(x, "x", s);
     const std::vector<double> w = spectralWindow(options, s.segmentLength);
     const std::size_t bins = s.segmentLength / 2 + 1;
-    PowerSpectrum out;
+    WelchSpectrum out;
     out.sampleTimeSeconds = tsSeconds;
     out.segments = s;
     out.frequencyHz = spectralFrequencyAxis(bins, s.segmentLength, tsSeconds);

@@ -62,7 +62,7 @@ struct WelchSegments {
 WelchSegments welchSegments(std::size_t samples, const WelchOptions& options);
 
 /// One-sided power spectral density of a signal.
-struct PowerSpectrum {
+struct WelchSpectrum {
     std::vector<double> frequencyHz; ///< k / (M ts), k = 0..floor(M/2)
     std::vector<double> psd;         ///< (unit)^2 / Hz
     double sampleTimeSeconds = 0.0;
@@ -80,7 +80,7 @@ struct PowerSpectrum {
  *         that overflows a double),
  *         "ts" (not positive and finite), "segment" (fewer than 4), "kaiser_beta".
  */
-PowerSpectrum powerSpectralDensity(const std::vector<double>& x, double tsSeconds,
+WelchSpectrum powerSpectralDensity(const std::vector<double>& x, double tsSeconds,
                                    const WelchOptions& options = {});
 
 /**

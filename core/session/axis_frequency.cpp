@@ -46,6 +46,15 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
         const DesignMethodModule& module = designMethodModule(evaluation.method);
         out.tracking = module.trackingResponses(evaluation, l.omegaRadPerSec);
         out.feedforwardName = std::string(module.feedforwardName());
+        if (evaluation.gt) {
+            const TransferFunction pi = TransferFunction::fromDescending(
+                {evaluation.gt->kp, evaluation.gt->ki}, {1.0, 0.0});
+            if (!(evaluation.gt->controller == pi)) {
+                const TransferFunction open = series(pi, evaluation.gt->loopPlant);
+                out.openLoopWithoutNotch = frequencyResponse(open, l.omegaRadPerSec);
+                out.marginsWithoutNotch = stabilityMargins(open);
+            }
+        }
         out.ok = true;
     } catch (const InvalidInput& e) {
         const double reference = out.referenceOmegaRadPerSec;

@@ -28,6 +28,10 @@ struct AxisFrequencyAnalysis {
     /// pole placement + ZPETC, PID + feedforward.
     std::optional<TrackingFrequencyResponses> tracking;
     std::string feedforwardName; ///< what the views call that feedforward ("ZPETC")
+    /// A Guillemin-Truxal axis with a notch: the open loop without it (the PI alone on the same
+    /// plant) on the same grid, and its margins: what the notch changes.
+    std::optional<FrequencyResponse> openLoopWithoutNotch;
+    std::optional<StabilityMargins> marginsWithoutNotch;
     /// The reference frequency of the session's trajectory (the circle's omega), NaN for a
     /// point-to-point move.
     double referenceOmegaRadPerSec = 0.0;

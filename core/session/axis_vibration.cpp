@@ -19,24 +19,6 @@ double magnitudeDb(const TransferFunction& h, double hz) {
 
 } // namespace
 
-ShaperSensitivityCurve shaperSensitivityCurve(const InputShaper& shaper, double upToHz,
-                                              int points) {
-    requirePositive(upToHz, "up_to");
-    if (points < 2)
-        throw InvalidInput("points", "must be at least 2");
-    ShaperSensitivityCurve out;
-    out.frequencyHz.reserve(static_cast<std::size_t>(points));
-    out.vibration.reserve(static_cast<std::size_t>(points));
-    for (int i = 0; i < points; ++i) {
-        // From a small fraction of the range, not 0: residualVibration needs f > 0 (it is 1 at
-        // f -> 0, where a shaper of unit sum passes the slow motion whole).
-        const double f = upToHz * (static_cast<double>(i) + 0.5) / static_cast<double>(points);
-        out.frequencyHz.push_back(f);
-        out.vibration.push_back(residualVibration(shaper, f, shaper.dampingRatio));
-    }
-    return out;
-}
-
 AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
     AxisVibration out;
     try {
@@ -66,11 +48,13 @@ AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
             top = 10.0;
         const double lo = top / 1000.0, hi = 3.0 * top;
         constexpr int kPoints = 600;
+        requirePositive(gt.modelUnitsPerPositionUnit, "gt.model_unit_scale");
+        const double unitDb = 20.0 * std::log10(gt.modelUnitsPerPositionUnit);
         for (int i = 0; i < kPoints; ++i) {
             const double f = lo * std::pow(hi / lo, static_cast<double>(i) / (kPoints - 1));
             out.frequencyHz.push_back(f);
-            out.rigidDb.push_back(magnitudeDb(rigid, f));
-            out.plantDb.push_back(magnitudeDb(plant, f));
+            out.rigidDb.push_back(magnitudeDb(rigid, f) - unitDb);
+            out.plantDb.push_back(magnitudeDb(plant, f) - unitDb);
             if (gt.notch.present())
                 out.notchDb.push_back(magnitudeDb(notch, f));
         }
@@ -78,8 +62,9 @@ AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
             const double at = out.modeHz > 0.0 ? out.modeHz : out.shaper->frequencyHz;
             const double zeta =
                 out.modeHz > 0.0 ? gt.flexibleMode.dampingRatio : out.shaper->dampingRatio;
-            out.sensitivity =
-                shaperSensitivityCurve(*out.shaper, 2.5 * std::max(at, out.shaper->frequencyHz));
+            out.sensitivity = shaperSensitivity(*out.shaper, 401,
+                                                2.5 * std::max(at, out.shaper->frequencyHz) /
+                                                    out.shaper->frequencyHz);
             out.residualAtModePercent = 100.0 * residualVibration(*out.shaper, at, zeta);
         }
         out.ok = true;

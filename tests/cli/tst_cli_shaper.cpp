@@ -6,6 +6,8 @@
 #include "core/design/input_shaper.h"
 #include "core/design/shaper_recommendation.h"
 #include "core/design/shaper_sensitivity.h"
+#include "core/identification/accelerometer_log.h"
+#include "core/session/shaper_advice.h"
 #include "tests/support/cli_runner.h"
 #include "tests/support/tolerance.h"
 
@@ -34,6 +36,8 @@ private slots:
     void undampedZvClosedForm();
     void badInputExitsWithTwo_data();
     void badInputExitsWithTwo();
+    void recommendationIsTheCores_data();
+    void recommendationIsTheCores();
 };
 
 void TstCliShaper::jsonIsTheCoreFunctions_data() {
@@ -117,6 +121,21 @@ void TstCliShaper::badInputExitsWithTwo_data() {
                               << "--points";
     QTest::newRow("unknown option")
         << QStringList{"--type", "ei", "--frequency", "40", "--zeta", "0.1"} << "--zeta";
+    QTest::newRow("recommend from nothing")
+        << QStringList{"--recommend"} << "--recommend: give either --data";
+    QTest::newRow("recommend from both")
+        << QStringList{"--recommend", "--mode-frequency", "40", "--data", "x.csv"}
+        << "--recommend: give either --data";
+    QTest::newRow("recommend damping 1")
+        << QStringList{"--recommend", "--mode-frequency", "40", "--mode-damping", "1"}
+        << "--mode-damping: must be a damping ratio in [0, 1)";
+    QTest::newRow("recommend axis w")
+        << QStringList{"--recommend", "--data",
+                       QStringLiteral(XYT_TEST_DATA_DIR) + "/klipper_accel_raw.csv", "--axis", "w"}
+        << "--axis: must be x, y, z or sum";
+    QTest::newRow("recommend smoothing 0")
+        << QStringList{"--recommend", "--mode-frequency", "40", "--max-smoothing", "0"}
+        << "--max-smoothing: give a smoothing limit > 0 mm";
 }
 
 void TstCliShaper::badInputExitsWithTwo() {
@@ -128,6 +147,49 @@ void TstCliShaper::badInputExitsWithTwo() {
     QVERIFY(run.out.isEmpty());
     QVERIFY2(QString::fromUtf8(run.err).contains(message), run.err.constData());
     QCOMPARE(run.err.count('\n'), 1); // one line
+}
+
+void TstCliShaper::recommendationIsTheCores_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::newRow("modelled mode")
+        << QStringList{"--mode-frequency", "47", "--mode-damping", "0.04"};
+    QTest::newRow("klipper log, x") << QStringList{
+        "--data", QStringLiteral(XYT_TEST_DATA_DIR) + "/klipper_accel_raw.csv", "--axis", "x"};
+    QTest::newRow("klipper log, sum, limited")
+        << QStringList{"--data", QStringLiteral(XYT_TEST_DATA_DIR) + "/klipper_accel_raw.csv",
+                       "--max-smoothing", "0.1", "--klipper-shapers"};
+}
+
+// Source: the core's recommendShaper on the same spectrum (accelerometerShaperSpectrum of the
+// log, flexibleModeSpectrum of the mode); the JSON prints shortest round-trip doubles, so equal.
+void TstCliShaper::recommendationIsTheCores() {
+    QFETCH(QStringList, args);
+    const auto run = xyt::test::runCli(QStringList{"shaper", "--recommend"} + args);
+    QVERIFY(run.finished);
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    const QJsonObject o = run.json();
+    xyt::ShaperRecommendationOptions options;
+    xyt::PowerSpectrum spectrum;
+    if (args.first() == "--data") {
+        const xyt::AccelerometerLog log = xyt::readAccelerometerLogFile(args[1].toStdString());
+        spectrum = xyt::accelerometerShaperSpectrum(
+            xyt::accelerometerSpectra(log, options.maxSpectrumFrequencyHz),
+            args.contains("--axis") ? "x" : "sum");
+        if (args.contains("--max-smoothing")) {
+            options.maxSmoothing = 0.1;
+            options.shapers = xyt::klipperAutotuneShapers();
+            options.useKlipperMinimumFrequencies = true;
+        }
+    } else {
+        spectrum = xyt::flexibleModeSpectrum({47.0, 0.04, 0.0, 0.02}, 200.0, 0.2);
+    }
+    const xyt::ShaperRecommendation r = xyt::recommendShaper(spectrum, options);
+    const QJsonObject best = o["recommended"].toObject();
+    QCOMPARE(best["type"].toString(), QString(xyt::shaperName(r.best().shaper.type)));
+    QCOMPARE(best["frequency"].toDouble(), r.best().shaper.frequencyHz);
+    QCOMPARE(best["remaining_vibration"].toDouble(), r.best().remainingVibrations);
+    QCOMPARE(best["max_accel"].toDouble(), r.best().maxAccelMmPerS2);
+    QCOMPARE(o["shapers"].toArray().size(), static_cast<qsizetype>(r.fits.size()));
 }
 
 QTEST_APPLESS_MAIN(TstCliShaper)

@@ -9,6 +9,7 @@
 #include "core/identification/experiment_data.h"
 #include "core/identification/experiment_file.h"
 #include "core/identification/preprocessing.h"
+#include "core/identification/spectral_estimate.h"
 #include "core/session/identified_axis.h"
 #include "tests/support/gui_checks.h"
 #include "tests/support/identification_data.h"
@@ -123,6 +124,7 @@ class TstIdentificationWindow : public QObject {
 private slots:
     void init();
     void cleanup();
+    void frequencyResponseGoesToTheAxis();
     void arxCandidateIsTheCoresModel();
     void secondCandidateAddsARow();
     void useForAxisIsOneUndoStep();
@@ -162,6 +164,28 @@ void TstIdentificationWindow::cleanup() {
     window_.reset();
     session_.reset();
     dir_.reset();
+}
+
+// The record's Welch estimate reaches the workbench as the chosen axis' measured response, on
+// the one-sided grid k / (M Ts) up to the Nyquist frequency 1 / (2 Ts) (M the segment length it
+// reports); without a record the window refuses and says why.
+void TstIdentificationWindow::frequencyResponseGoesToTheAxis() {
+    QVERIFY(!window_->showFrequencyResponse(0));
+    QVERIFY(window_->statusText().contains(QStringLiteral("load a record first")));
+    QVERIFY(window_->loadFile(path_));
+    pickColumns();
+    QTest::mouseClick(window_->frequencyResponseButton(1), Qt::LeftButton);
+    QVERIFY(!session_->measuredResponse(0));
+    const auto& measured = session_->measuredResponse(1);
+    QVERIFY(measured);
+    const FrequencyResponseEstimate& e = measured->estimate;
+    const double ts = window_->sampleTimeBox()->value();
+    const double m = static_cast<double>(e.segments.segmentLength);
+    QVERIFY(e.segments.count >= 2);
+    QCOMPARE(e.frequencyHz.size(), e.segments.segmentLength / 2 + 1);
+    QVERIFY(std::abs(e.frequencyHz[1] - 1.0 / (m * ts)) < 1e-12 / ts);
+    QVERIFY(std::abs(e.frequencyHz.back() - 0.5 / ts) < 1e-12 / ts);
+    QVERIFY(window_->statusText().contains(QStringLiteral("Vibration view of axis Y")));
 }
 
 void TstIdentificationWindow::pickColumns() {

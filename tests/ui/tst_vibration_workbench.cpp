@@ -4,11 +4,15 @@
 // the field, the notch and the shaper designed from the mode, disabled where they do not apply),
 // the Vibration view (what it draws against the core's AxisVibration and the resonant pair's
 // closed-form peak) and the time plot's run without the shaper (the evaluation's own run).
+#include "core/identification/accelerometer_log.h"
+#include "core/identification/spectral_estimate.h"
 #include "core/session/axis_vibration.h"
+#include "core/session/shaper_advice.h"
 #include "tests/support/gui_checks.h"
 #include "ui/main_window.h"
 #include "ui/panels/flexible_mode_editor.h"
 #include "ui/panels/number_field.h"
+#include "ui/plots/bode_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/plots/vibration_plot.h"
 #include "ui/session/tuning_session.h"
@@ -22,6 +26,7 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <random>
 
 using namespace xyt;
 using namespace xyt::ui;
@@ -90,6 +95,13 @@ private slots:
         QCOMPARE(session_->frequencyAnalysis(0).loop.openLoop.den().degree(), 8);
         window_->upperTabs()->setCurrentWidget(window_->vibrationPlot());
         QVERIFY(window_->vibrationPlot()->notchGraph()->visible());
+        // The Bode view draws L without the notch beside L, named with its phase margin.
+        window_->upperTabs()->setCurrentWidget(window_->bodePlot());
+        QCPGraph* withoutNotch =
+            window_->bodePlot()->magnitudeGraph(QStringLiteral("L without the notch"));
+        QVERIFY(withoutNotch && withoutNotch->dataCount() > 0);
+        QVERIFY(withoutNotch->name().contains(QStringLiteral("PM")));
+        window_->upperTabs()->setCurrentWidget(window_->vibrationPlot());
         // The shaper at the mode: ZV at 20 Hz, damping 0.05, on the trajectory (both axes).
         QTest::mouseClick(editor->shaperAtModeButton(), Qt::LeftButton);
         const ReferenceShaping& sh = session_->session().trajectory.shaping;
@@ -120,6 +132,92 @@ private slots:
         emit editor->shaperTypeBox()->activated(0);
         QVERIFY(!session_->session().trajectory.shaping.active());
         QVERIFY(!time->unshapedOutputGraph()->visible());
+    }
+
+    /// Klipper's recommendation from the mode and from a log: the shaper the core's
+    /// recommendShaper picks on the same spectrum, applied as one undo step; a bad log is
+    /// reported and changes nothing.
+    void theRecommendationIsTheCoresAndApplies() {
+        FlexibleModeEditor* editor = window_->flexibleModeEditor();
+        QTest::mouseClick(editor->foldButton(), Qt::LeftButton);
+        test::typeInto(editor->field("frequency"), "47");
+        test::typeInto(editor->field("damping"), "0.04");
+        const int steps = session_->undoStack()->count();
+        QTest::mouseClick(editor->recommendFromModeButton(), Qt::LeftButton);
+        ShaperRecommendationOptions options;
+        options.dampingRatio = 0.04;
+        const ShaperFit model =
+            recommendShaper(flexibleModeSpectrum({47.0, 0.04, 0.0, 0.02}), options).best();
+        const ReferenceShaping& sh = session_->session().trajectory.shaping;
+        QCOMPARE(sh.type, model.shaper.type);
+        QCOMPARE(sh.frequencyHz, model.shaper.frequencyHz);
+        QCOMPARE(session_->undoStack()->count(), steps + 1);
+        QVERIFY2(
+            editor->adviceText().startsWith(QStringLiteral("Klipper's choice for the 47 Hz mode")),
+            qPrintable(editor->adviceText()));
+        const QString log = QStringLiteral(XYT_TEST_DATA_DIR) + "/klipper_accel_raw.csv";
+        editor->recommendFromLog(log);
+        const ShaperFit measured =
+            recommendShaper(
+                accelerometerShaperSpectrum(
+                    accelerometerSpectra(readAccelerometerLogFile(log.toStdString()), 200.0),
+                    "sum"))
+                .best();
+        QCOMPARE(session_->session().trajectory.shaping.type, measured.shaper.type);
+        QCOMPARE(session_->session().trajectory.shaping.frequencyHz, measured.shaper.frequencyHz);
+        QVERIFY(editor->adviceText().contains(QStringLiteral("klipper_accel_raw.csv")));
+        const Session before = session_->session();
+        editor->recommendFromLog(QStringLiteral(XYT_TEST_DATA_DIR) + "/README.md");
+        QVERIFY(editor->adviceText().startsWith(QStringLiteral("No recommendation:")));
+        QVERIFY(session_->session() == before);
+    }
+
+    /// Measurements over the model: a frequency-response estimate set for x is drawn where its
+    /// coherence is at least kMinCoherence, as 20 log10 |H| (mm/V), point for point; the
+    /// accelerometer log read for a recommendation is drawn as its PSD sum in dB re its peak.
+    void measurementsAreDrawnOverTheModel() {
+        std::mt19937_64 random(20261126);
+        std::normal_distribution<double> normal;
+        const double ts = 0.001;
+        std::vector<double> u(20000), y(u.size());
+        double state = 0.0;
+        for (std::size_t k = 0; k < u.size(); ++k) {
+            u[k] = normal(random);
+            y[k] = state + 0.01 * normal(random);
+            state = 0.95 * state + 0.05 * u[k]; // a first-order lag, 1 mm/V at DC
+        }
+        auto measured = std::make_shared<TuningSession::MeasuredResponse>();
+        measured->estimate = estimateFrequencyResponse(u, y, ts);
+        measured->source = QStringLiteral("simulated");
+        const FrequencyResponseEstimate expected = measured->estimate;
+        session_->setMeasuredResponse(0, measured);
+        window_->upperTabs()->setCurrentWidget(window_->vibrationPlot());
+        QCPGraph* drawn = window_->vibrationPlot()->measuredGraph();
+        QVERIFY(drawn->visible());
+        int k = 0;
+        auto it = drawn->data()->constBegin();
+        for (std::size_t i = 0; i < expected.frequencyHz.size(); ++i) {
+            if (!(expected.frequencyHz[i] > 0.0 && expected.magnitude[i] > 0.0 &&
+                  expected.coherence[i] >= VibrationPlot::kMinCoherence))
+                continue;
+            QVERIFY(it != drawn->data()->constEnd());
+            QCOMPARE(it->key, expected.frequencyHz[i]);
+            QCOMPARE(it->value, 20.0 * std::log10(expected.magnitude[i]));
+            ++it;
+            ++k;
+        }
+        QVERIFY(k > 10);
+        QVERIFY(it == drawn->data()->constEnd());
+        session_->setMeasuredResponse(0, nullptr);
+        QVERIFY(!drawn->visible());
+        FlexibleModeEditor* editor = window_->flexibleModeEditor();
+        editor->recommendFromLog(QStringLiteral(XYT_TEST_DATA_DIR) + "/klipper_accel_raw.csv");
+        QCPGraph* psd = window_->vibrationPlot()->accelerationGraph();
+        QVERIFY(psd->visible() && psd->dataCount() > 10);
+        double top = -1e300;
+        for (auto p = psd->data()->constBegin(); p != psd->data()->constEnd(); ++p)
+            top = std::max(top, p->value);
+        QVERIFY(std::abs(top) < 1e-12); // dB re its own peak
     }
 
     void refusedValuesStayAtTheField() {

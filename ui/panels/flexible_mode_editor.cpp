@@ -2,15 +2,21 @@
 #include "ui/panels/flexible_mode_editor.h"
 
 #include "core/model/errors.h"
+#include "core/session/shaper_advice.h"
 #include "ui/panels/fold_button.h"
 #include "ui/panels/number_field.h"
 
 #include <QComboBox>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QToolButton>
 #include <QVBoxLayout>
+
+#include <cmath>
 
 namespace xyt::ui {
 
@@ -108,6 +114,35 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
     shaperAtMode_->setToolTip(tr("Design the shaper for this axis' mode (ZV unless a type is "
                                  "chosen)"));
     form->addRow(QString(), shaperAtMode_);
+    recommendMode_ = new QPushButton(tr("Recommend"), body_);
+    recommendMode_->setToolTip(tr("Klipper's choice of shaper and frequency for this mode: the "
+                                  "least vibration left for the smoothing, and the acceleration "
+                                  "it allows"));
+    recommendLog_ = new QPushButton(tr("From a log…"), body_);
+    recommendLog_->setToolTip(tr("Klipper's choice from an accelerometer log "
+                                 "(#time,accel_x,accel_y,accel_z), as calibrate_shaper.py makes "
+                                 "it"));
+    auto* recommendRow = new QHBoxLayout;
+    recommendRow->addWidget(recommendMode_);
+    recommendRow->addWidget(recommendLog_);
+    form->addRow(QString(), recommendRow);
+    advice_ = new QLabel(body_);
+    advice_->setWordWrap(true);
+    form->addRow(advice_);
+    connect(recommendMode_, &QPushButton::clicked, this, [this] {
+        try {
+            applyRecommendation(flexibleModeSpectrum(mode_), mode_.dampingRatio,
+                                tr("the %1 Hz mode").arg(formatNumber(mode_.frequencyHz)));
+        } catch (const InvalidInput& e) {
+            advice_->setText(tr("No recommendation: %1").arg(QString::fromStdString(e.what())));
+        }
+    });
+    connect(recommendLog_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Accelerometer log"), QString(),
+                                                          tr("Klipper CSV (*.csv);;All files (*)"));
+        if (!path.isEmpty())
+            recommendFromLog(path);
+    });
     connect(shaperAtMode_, &QPushButton::clicked, this, [this] {
         if (!mode_.present()) {
             markFieldError(fields_["frequency"], tr("no flexible mode to tune the shaper to"));
@@ -186,6 +221,43 @@ void FlexibleModeEditor::emitIfValid() {
     notch_ = notch;
     updateHeader();
     emit loopElementsEdited(mode, notch);
+}
+
+QString FlexibleModeEditor::adviceText() const {
+    return advice_->text();
+}
+
+void FlexibleModeEditor::recommendFromLog(const QString& path) {
+    try {
+        const AccelerometerLog log = readAccelerometerLogFile(path.toStdString());
+        const ShaperRecommendationOptions defaults;
+        const AccelerometerSpectra spectra =
+            accelerometerSpectra(log, defaults.maxSpectrumFrequencyHz);
+        const QString name = QFileInfo(path).fileName();
+        emit accelerationLoaded(spectra, name);
+        applyRecommendation(accelerometerShaperSpectrum(spectra, "sum"), defaults.dampingRatio,
+                            name);
+    } catch (const InvalidInput& e) {
+        advice_->setText(tr("No recommendation: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
+void FlexibleModeEditor::applyRecommendation(const PowerSpectrum& spectrum, double dampingRatio,
+                                             const QString& source) {
+    ShaperRecommendationOptions options;
+    options.dampingRatio = dampingRatio;
+    const ShaperFit& best = recommendShaper(spectrum, options).best();
+    advice_->setText(tr("Klipper's choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing "
+                        "%5 mm, max accel %6 mm/s²")
+                         .arg(source, QString(shaperName(best.shaper.type)).toUpper(),
+                              formatNumber(std::round(best.shaper.frequencyHz * 10.0) / 10.0),
+                              formatNumber(std::round(best.remainingVibrations * 1000.0) / 10.0),
+                              formatNumber(std::round(best.smoothing * 1000.0) / 1000.0),
+                              formatNumber(std::round(best.maxAccelMmPerS2 / 100.0) * 100.0)));
+    shaperType_->setCurrentIndex(shaperType_->findData(static_cast<int>(best.shaper.type)));
+    shaperFields_["frequency"]->setValue(best.shaper.frequencyHz);
+    shaperFields_["damping"]->setValue(best.shaper.dampingRatio);
+    emitShapingIfValid();
 }
 
 void FlexibleModeEditor::setShaping(const ReferenceShaping& shaping) {

@@ -2,6 +2,8 @@
 #pragma once
 
 #include "core/design/notch_filter.h"
+#include "core/design/shaper_recommendation.h"
+#include "core/identification/accelerometer_log.h"
 #include "core/model/flexible_mode.h"
 #include "core/session/session.h"
 
@@ -45,15 +47,26 @@ public:
     QComboBox* shaperTypeBox() const { return shaperType_; }
     NumberField* shaperField(const QString& name) const { return shaperFields_.value(name); }
     QPushButton* shaperAtModeButton() const { return shaperAtMode_; }
+    /// Klipper's recommendation (recommendShaper) over the spectrum of the axis' mode, or of a
+    /// Klipper accelerometer log; applied as the trajectory's shaper, its figures shown below
+    /// the buttons (adviceText). A log the reader refuses is reported there, nothing applied.
+    QPushButton* recommendFromModeButton() const { return recommendMode_; }
+    QPushButton* recommendFromLogButton() const { return recommendLog_; }
+    void recommendFromLog(const QString& path);
+    QString adviceText() const;
     QToolButton* foldButton() const { return fold_; }
 
 signals:
     void loopElementsEdited(const FlexibleMode& mode, const NotchFilter& notch);
     void shapingEdited(const ReferenceShaping& shaping);
+    /// recommendFromLog read a log: its spectra, for the Vibration view.
+    void accelerationLoaded(const AccelerometerSpectra& spectra, const QString& source);
 
 private:
     void emitIfValid();
     void emitShapingIfValid();
+    void applyRecommendation(const PowerSpectrum& spectrum, double dampingRatio,
+                             const QString& source);
     void updateHeader();
 
     QToolButton* fold_;
@@ -62,6 +75,9 @@ private:
     QLabel* note_;
     QComboBox* shaperType_;
     QPushButton* shaperAtMode_;
+    QPushButton* recommendMode_;
+    QPushButton* recommendLog_;
+    QLabel* advice_;
     QMap<QString, NumberField*> shaperFields_;
     ReferenceShaping shaping_;
     QMap<QString, NumberField*> fields_;

@@ -232,6 +232,23 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
         }
     }
 
+    // A notch in the loop: L without it, dashed, named with the margins it had.
+    const QString withoutNotch = tr("L without the notch");
+    if (a.openLoopWithoutNotch) {
+        Curve& n = curve(withoutNotch, kLoop, Qt::DashLine, true);
+        setResponse(n.magnitude, w, a.openLoopWithoutNotch->magnitudeDb);
+        setResponse(n.phase, w, a.openLoopWithoutNotch->phaseDeg);
+        QString name = withoutNotch;
+        if (a.marginsWithoutNotch && std::isfinite(a.marginsWithoutNotch->phaseMarginDeg))
+            name += tr(" (PM %1°)").arg(significant(a.marginsWithoutNotch->phaseMarginDeg, 3));
+        n.magnitude->setName(name);
+    } else if (curves_.contains(withoutNotch)) {
+        legend_->removeItem(legend_->itemWithPlottable(curves_[withoutNotch].magnitude));
+        removePlottable(curves_[withoutNotch].magnitude);
+        removePlottable(curves_[withoutNotch].phase);
+        curves_.remove(withoutNotch);
+    }
+
     // The view: the grid's frequencies, and magnitudes clipped to a readable band (an
     // integrator's +200 dB at low frequency would flatten everything else). The view follows
     // the curves as the design changes, unless the user zoomed or panned it (kept until it

@@ -2,6 +2,8 @@
 #include "ui/plots/vibration_plot.h"
 
 #include "core/design/input_shaper.h"
+#include "core/identification/accelerometer_log.h"
+#include "core/identification/spectral_estimate.h"
 #include "ui/plots/number_text.h"
 #include "ui/plots/plot_tools.h"
 
@@ -16,6 +18,19 @@ const QColor kPlant{0x1f, 0x77, 0xb4};
 const QColor kNotch{0x2c, 0xa0, 0x2c};
 const QColor kShaper{0x94, 0x67, 0xbd};
 const QColor kMode{0xc6, 0x28, 0x28};
+const QColor kMeasured{0xd6, 0x27, 0x28};
+const QColor kAcceleration{0x8c, 0x56, 0x4b};
+
+/// 20 log10 of @p values (> 0) at @p x, where @p keep (when given) is at least @p threshold.
+QVector<QCPGraphData> decibels(const std::vector<double>& x, const std::vector<double>& values,
+                               double reference, const std::vector<double>* keep = nullptr,
+                               double threshold = 0.0) {
+    QVector<QCPGraphData> data;
+    for (std::size_t i = 0; i < x.size() && i < values.size(); ++i)
+        if (x[i] > 0.0 && values[i] > 0.0 && (!keep || (*keep)[i] >= threshold))
+            data.append(QCPGraphData(x[i], 20.0 * std::log10(values[i] / reference)));
+    return data;
+}
 
 QVector<QCPGraphData> curveData(const std::vector<double>& x, const std::vector<double>& y,
                                 double scale = 1.0) {
@@ -61,9 +76,18 @@ VibrationPlot::VibrationPlot(QWidget* parent) : PlotWidget(parent) {
         g->setPen(QPen(color, style == Qt::SolidLine ? 1.8 : 1.3, style));
         return g;
     };
-    rigid_ = graph(responseRect_, tr("rigid |G|"), kRigid, Qt::DashLine);
+    rigid_ = graph(responseRect_, tr("rigid |G| (mm/V)"), kRigid, Qt::DashLine);
     plant_ = graph(responseRect_, tr("with the mode"), kPlant, Qt::SolidLine);
     notch_ = graph(responseRect_, tr("notch |N|"), kNotch, Qt::SolidLine);
+    measured_ = graph(responseRect_, tr("measured |H|"), kMeasured, Qt::NoPen);
+    measured_->setLineStyle(QCPGraph::lsNone);
+    measured_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, kMeasured, 3.5));
+    QCPAxis* psdAxis = responseRect_->axis(QCPAxis::atRight);
+    psdAxis->setVisible(false);
+    psdAxis->setLabel(tr("PSD (dB re its peak)"));
+    acceleration_ = addGraph(responseRect_->axis(QCPAxis::atBottom), psdAxis);
+    acceleration_->setPen(QPen(kAcceleration, 1.2));
+    acceleration_->setName(tr("accelerometer PSD"));
     sensitivity_ = graph(shaperRect_, tr("input shaper"), kShaper, Qt::SolidLine);
     tolerance_ = graph(shaperRect_, tr("5 % tolerance"), kRigid, Qt::DotLine);
     legend_ = new QCPLegend;
@@ -120,12 +144,15 @@ void VibrationPlot::showNoResult(const QString& title, const QString& reason) {
     hasResult_ = false;
     legend_->clearItems();
     placeLegend(false);
+    responseRect_->axis(QCPAxis::atRight)->setVisible(false);
     shaperNotice_->setLines({});
-    clearWithNotice(this, *notice_, {rigid_, plant_, notch_, sensitivity_, tolerance_}, reason);
+    clearWithNotice(this, *notice_,
+                    {rigid_, plant_, notch_, sensitivity_, tolerance_, measured_, acceleration_},
+                    reason);
 }
 
 void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
-                                  const QString& summary) {
+                                  const QString& summary, const VibrationMeasurements& measured) {
     title_->setText(title);
     clearMarkers();
     notice_->setSevere(false);
@@ -139,6 +166,35 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
     QCPAxis* fy = responseRect_->axis(QCPAxis::atLeft);
     if (!v.frequencyHz.empty())
         fx->setRange(v.frequencyHz.front(), v.frequencyHz.back());
+    // The measurements: |H| in mm/V on the model's scale, the PSD on its own (right) axis.
+    if (measured.response) {
+        const FrequencyResponseEstimate& h = *measured.response;
+        measured_->data()->set(
+            decibels(h.frequencyHz, h.magnitude, 1.0, &h.coherence, kMinCoherence), true);
+        measured_->setName(
+            tr("measured |H|, γ² ≥ %1 (%2)").arg(kMinCoherence).arg(measured.responseSource));
+    } else {
+        measured_->data()->clear();
+    }
+    measured_->setVisible(measured.response != nullptr);
+    QCPAxis* psdAxis = responseRect_->axis(QCPAxis::atRight);
+    if (measured.acceleration) {
+        const AccelerometerSpectra& a = *measured.acceleration;
+        double peak = 0.0;
+        for (double p : a.psdSum)
+            peak = std::max(peak, p);
+        // A power: 10 log10, i.e. 20 log10 of its square root.
+        std::vector<double> root(a.psdSum.size());
+        for (std::size_t i = 0; i < root.size(); ++i)
+            root[i] = std::sqrt(a.psdSum[i]);
+        acceleration_->data()->set(decibels(a.frequencyHz, root, std::sqrt(peak)), true);
+        acceleration_->setName(tr("accelerometer PSD (%1)").arg(measured.accelerationSource));
+        psdAxis->setRange(-60.0, 5.0);
+    } else {
+        acceleration_->data()->clear();
+    }
+    acceleration_->setVisible(measured.acceleration != nullptr);
+    psdAxis->setVisible(measured.acceleration != nullptr);
     // The magnitude range: what the curves reach within the grid, the deep low-frequency part
     // of an integrating plant cut at 60 dB below the top so the mode's peak stays readable.
     double top = -1e300;
@@ -210,7 +266,7 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
     }
     // The legend lists what is drawn.
     legend_->clearItems();
-    for (QCPGraph* g : {rigid_, plant_, notch_, sensitivity_})
+    for (QCPGraph* g : {rigid_, plant_, notch_, measured_, acceleration_, sensitivity_})
         if (g->visible() && !g->data()->isEmpty())
             legend_->addItem(new QCPPlottableLegendItem(legend_, g));
     placeLegend(legend_->itemCount() > 0);

@@ -7,7 +7,21 @@
 
 #include <memory>
 
+namespace xyt {
+struct AccelerometerSpectra;
+struct FrequencyResponseEstimate;
+} // namespace xyt
+
 namespace xyt::ui {
+
+/// What was measured, drawn over the model: a frequency-response estimate of the axis (mm/V)
+/// and an accelerometer log's spectra; null when there is none.
+struct VibrationMeasurements {
+    const FrequencyResponseEstimate* response = nullptr;
+    QString responseSource;
+    const AccelerometerSpectra* acceleration = nullptr;
+    QString accelerationSource;
+};
 
 /**
  * The Vibration view of one axis: above, the magnitude of the rigid plant, of the plant with its
@@ -22,8 +36,8 @@ public:
     explicit VibrationPlot(QWidget* parent = nullptr);
     ~VibrationPlot() override;
     /// @p summary: the shaper's effect on the run, or "" when the reference is not shaped.
-    void showVibration(const AxisVibration& vibration, const QString& title,
-                       const QString& summary);
+    void showVibration(const AxisVibration& vibration, const QString& title, const QString& summary,
+                       const VibrationMeasurements& measured = {});
     void showNoResult(const QString& title, const QString& reason);
     bool hasResult() const { return hasResult_; }
     QString noticeText() const { return notice_->text(); }
@@ -32,6 +46,11 @@ public:
     QCPGraph* plantGraph() const { return plant_; }
     QCPGraph* notchGraph() const { return notch_; }
     QCPGraph* sensitivityGraph() const { return sensitivity_; }
+    /// The measured |H| (where its coherence is at least kMinCoherence) and the accelerometer
+    /// PSD (dB re its largest bin, on the right axis).
+    QCPGraph* measuredGraph() const { return measured_; }
+    QCPGraph* accelerationGraph() const { return acceleration_; }
+    static constexpr double kMinCoherence = 0.5;
     QCPAxisRect* responseRect() const { return responseRect_; }
     QCPAxisRect* shaperRect() const { return shaperRect_; }
     /// The texts of the labels drawn (the mode, the notch, the residual at the mode).
@@ -44,7 +63,7 @@ private:
     QCPTextElement* title_;
     QCPAxisRect* responseRect_;
     QCPAxisRect* shaperRect_;
-    QCPGraph *rigid_, *plant_, *notch_, *sensitivity_, *tolerance_;
+    QCPGraph *rigid_, *plant_, *notch_, *sensitivity_, *tolerance_, *measured_, *acceleration_;
     QCPTextElement* summary_;
     QList<QCPAbstractItem*> markers_;
     QCPLegend* legend_;

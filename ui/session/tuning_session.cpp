@@ -222,6 +222,18 @@ void TuningSession::setLoopElements(int axis, const FlexibleMode& mode, const No
     apply(next, tr("Change the flexible mode and notch of %1").arg(axisName(next, axis)));
 }
 
+void TuningSession::setMeasuredResponse(int axis,
+                                        std::shared_ptr<const MeasuredResponse> response) {
+    measuredResponse_.at(static_cast<std::size_t>(axis)) = std::move(response);
+    emit measurementsChanged();
+}
+
+void TuningSession::setMeasuredAcceleration(
+    std::shared_ptr<const MeasuredAcceleration> acceleration) {
+    measuredAcceleration_ = std::move(acceleration);
+    emit measurementsChanged();
+}
+
 void TuningSession::setTrajectory(const TrajectorySettings& trajectory) {
     Session next = session_;
     next.trajectory = trajectory;

@@ -4,6 +4,8 @@
 #include "core/analysis/parameter_locus.h"
 #include "core/analysis/pole_zero_map.h"
 #include "core/analysis/root_locus.h"
+#include "core/identification/accelerometer_log.h"
+#include "core/identification/spectral_estimate.h"
 #include "core/session/axis_frequency.h"
 #include "core/session/result_dependence.h"
 #include "core/session/session.h"
@@ -15,6 +17,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 namespace xyt::ui {
@@ -161,10 +164,33 @@ public:
     /// Stores the current design as a snapshot named @p name.
     void storeSnapshot(const QString& name);
 
+    /// A measured frequency response of axis @p axis (Welch's estimate of a logged experiment,
+    /// y in mm over u in V), drawn against the model in the Vibration view. Measurements are
+    /// not part of the session (nor of its undo): they stay until replaced or cleared (null).
+    struct MeasuredResponse {
+        FrequencyResponseEstimate estimate;
+        QString source;
+    };
+    void setMeasuredResponse(int axis, std::shared_ptr<const MeasuredResponse> response);
+    const std::shared_ptr<const MeasuredResponse>& measuredResponse(int axis) const {
+        return measuredResponse_.at(static_cast<std::size_t>(axis));
+    }
+    /// An accelerometer log's spectra (Klipper's), drawn in the Vibration view.
+    struct MeasuredAcceleration {
+        AccelerometerSpectra spectra;
+        QString source;
+    };
+    void setMeasuredAcceleration(std::shared_ptr<const MeasuredAcceleration> acceleration);
+    const std::shared_ptr<const MeasuredAcceleration>& measuredAcceleration() const {
+        return measuredAcceleration_;
+    }
+
 public slots:
     void setCurrentAxis(int axis);
 
 signals:
+    /// A measurement was set or cleared: the views that draw one redraw.
+    void measurementsChanged();
     /// The session or its evaluation changed: every view redraws from the getters.
     void designChanged();
     void currentAxisChanged(int axis);
@@ -190,6 +216,8 @@ private:
     mutable SnapshotCache snapshotCache_;
     QUndoStack undo_;
     int currentAxis_ = 0;
+    std::array<std::shared_ptr<const MeasuredResponse>, 2> measuredResponse_;
+    std::shared_ptr<const MeasuredAcceleration> measuredAcceleration_;
     std::uint64_t revision_ = 0;
 };
 

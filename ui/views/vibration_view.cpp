@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/views/vibration_view.h"
 
+#include "core/design/shaper_sensitivity.h"
 #include "core/session/axis_vibration.h"
 #include "ui/plots/number_text.h"
 #include "ui/plots/vibration_plot.h"
@@ -9,7 +10,9 @@
 namespace xyt::ui {
 
 VibrationView::VibrationView(TuningSession* session, VibrationPlot* plot)
-    : PresenterView(session, plot), plot_(plot) {}
+    : PresenterView(session, plot), plot_(plot) {
+    connect(session, &TuningSession::measurementsChanged, this, &PresenterView::requestRedraw);
+}
 
 void VibrationView::draw() {
     const int axis = session()->currentAxis();
@@ -23,10 +26,12 @@ void VibrationView::draw() {
     const AxisEvaluation& e = session()->axisEvaluation(axis);
     if (e.ok && e.shaping) {
         const ShapingComparison& c = *e.shaping;
-        summary = tr("%1 shaper: %2 impulses over %3 ms, the delay it adds")
+        summary = tr("%1 shaper: %2 impulses over %3 ms, a delay of %4 ms")
                       .arg(QString(shaperName(c.shaper.type)).toUpper())
                       .arg(c.shaper.amplitudes.size())
-                      .arg(significant(1000.0 * c.shaper.duration(), 3));
+                      .arg(significant(1000.0 * c.shaper.duration(), 3),
+                           significant(1000.0 * shaperDelaySeconds(c.shaper), 3));
+
         summary +=
             tr("; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm "
                "unshaped")
@@ -35,7 +40,16 @@ void VibrationView::draw() {
                      c.afterMove ? tr("after the move") : tr("along the path"),
                      significant(c.residualShapedMm, 3), significant(c.residualUnshapedMm, 3));
     }
-    plot_->showVibration(v, title, summary);
+    VibrationMeasurements measured;
+    if (const auto& r = session()->measuredResponse(axis)) {
+        measured.response = &r->estimate;
+        measured.responseSource = r->source;
+    }
+    if (const auto& a = session()->measuredAcceleration()) {
+        measured.acceleration = &a->spectra;
+        measured.accelerationSource = a->source;
+    }
+    plot_->showVibration(v, title, summary, measured);
 }
 
 } // namespace xyt::ui

@@ -125,7 +125,7 @@ void TstSpectralEstimate::psdCsdCoherenceMatchScipy() {
     const double ts = h["ts"].toDouble();
     WelchOptions o;
     o.segmentLength = static_cast<std::size_t>(h["segment"].toInt());
-    const PowerSpectrum pu = powerSpectralDensity(u, ts, o);
+    const WelchSpectrum pu = powerSpectralDensity(u, ts, o);
     compareVectors(pu.frequencyHz, doubles(h["frequency"]), "frequency");
     compareVectors(pu.psd, doubles(h["puu"]), "welch(u)");
     const FrequencyResponseEstimate e = estimateFrequencyResponse(u, y, ts, o);
@@ -156,7 +156,7 @@ void TstSpectralEstimate::oddSegmentMatchesScipy() {
     const QJsonObject odd = r["odd"].toObject();
     WelchOptions o;
     o.segmentLength = static_cast<std::size_t>(odd["segment"].toInt());
-    const PowerSpectrum p = powerSpectralDensity(doubles(r["hann"].toObject()["u"]),
+    const WelchSpectrum p = powerSpectralDensity(doubles(r["hann"].toObject()["u"]),
                                                  r["hann"].toObject()["ts"].toDouble(), o);
     compareVectors(p.frequencyHz, doubles(odd["frequency"]), "frequency");
     compareVectors(p.psd, doubles(odd["psd"]), "welch(u, nperseg=45)");
@@ -345,7 +345,7 @@ void TstSpectralEstimate::parsevalOnWhiteNoise() {
     std::vector<double> x(100000);
     for (double& v : x)
         v = normal(rng);
-    const PowerSpectrum p = powerSpectralDensity(x, ts);
+    const WelchSpectrum p = powerSpectralDensity(x, ts);
     const std::size_t m = p.segments.segmentLength;
     const double df = 1.0 / (m * ts);
     double integral = 0.0;
