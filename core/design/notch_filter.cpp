@@ -39,7 +39,8 @@ NotchFilter notchForMode(const FlexibleMode& mode) {
     n.centreHz = mode.frequencyHz;
     const double peakDb =
         mode.dampingRatio > 0.0 ? 20.0 * std::log10(1.0 / (2.0 * mode.dampingRatio)) : 40.0;
-    n.depthDb = std::clamp(peakDb, 6.0, 40.0);
+    // To 0.01 dB: a number to type into a drive's parameter, and what the field shows.
+    n.depthDb = std::round(std::clamp(peakDb, 6.0, 40.0) * 100.0) / 100.0;
     n.widthHz = std::max(4.0 * 2.0 * mode.dampingRatio * mode.frequencyHz, 0.1 * mode.frequencyHz);
     return n;
 }

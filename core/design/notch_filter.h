@@ -37,7 +37,8 @@ void validateNotchFilter(const NotchFilter& notch, const std::string& prefix = "
 
 /**
  * The notch for @p mode: centred on its resonance, as deep as its peak stands above the rigid
- * plant, 1 / (2 zr) (the resonant pair's gain at wr), held between 6 and 40 dB, and four times
+ * plant, 1 / (2 zr) (the resonant pair's gain at wr), held between 6 and 40 dB and rounded to
+ * 0.01 dB, and four times
  * its half-power bandwidth 2 zr fr wide (at least a tenth of fr), so that the mode may move by
  * about its own bandwidth either way and stay in the notch.
  * @throws InvalidInput as validateFlexibleMode, "frequency" when there is no mode.

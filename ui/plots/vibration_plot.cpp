@@ -66,9 +66,9 @@ VibrationPlot::VibrationPlot(QWidget* parent) : PlotWidget(parent) {
     fx->setNumberFormat("gb");
     fx->setNumberPrecision(0);
     fx->setLabel(tr("frequency (Hz)"));
-    responseRect_->axis(QCPAxis::atLeft)->setLabel(tr("magnitude (dB)"));
+    responseRect_->axis(QCPAxis::atLeft)->setLabel(tr("|G| (dB re mm/V)"));
     shaperRect_->axis(QCPAxis::atBottom)->setLabel(tr("frequency of the mode (Hz)"));
-    shaperRect_->axis(QCPAxis::atLeft)->setLabel(tr("residual vibration (%)"));
+    shaperRect_->axis(QCPAxis::atLeft)->setLabel(tr("residual (%)"));
     const auto graph = [this](QCPAxisRect* rect, const QString& name, const QColor& color,
                               Qt::PenStyle style) {
         QCPGraph* g = addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
@@ -76,7 +76,7 @@ VibrationPlot::VibrationPlot(QWidget* parent) : PlotWidget(parent) {
         g->setPen(QPen(color, style == Qt::SolidLine ? 1.8 : 1.3, style));
         return g;
     };
-    rigid_ = graph(responseRect_, tr("rigid |G| (mm/V)"), kRigid, Qt::DashLine);
+    rigid_ = graph(responseRect_, tr("rigid |G|"), kRigid, Qt::DashLine);
     plant_ = graph(responseRect_, tr("with the mode"), kPlant, Qt::SolidLine);
     notch_ = graph(responseRect_, tr("notch |N|"), kNotch, Qt::SolidLine);
     measured_ = graph(responseRect_, tr("measured |H|"), kMeasured, Qt::NoPen);
@@ -84,10 +84,10 @@ VibrationPlot::VibrationPlot(QWidget* parent) : PlotWidget(parent) {
     measured_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, kMeasured, 3.5));
     QCPAxis* psdAxis = responseRect_->axis(QCPAxis::atRight);
     psdAxis->setVisible(false);
-    psdAxis->setLabel(tr("PSD (dB re its peak)"));
+    psdAxis->setLabel(tr("PSD (dB)"));
     acceleration_ = addGraph(responseRect_->axis(QCPAxis::atBottom), psdAxis);
     acceleration_->setPen(QPen(kAcceleration, 1.2));
-    acceleration_->setName(tr("accelerometer PSD"));
+    acceleration_->setName(tr("accel. PSD"));
     sensitivity_ = graph(shaperRect_, tr("input shaper"), kShaper, Qt::SolidLine);
     tolerance_ = graph(shaperRect_, tr("5 % tolerance"), kRigid, Qt::DotLine);
     legend_ = new QCPLegend;
@@ -97,7 +97,7 @@ VibrationPlot::VibrationPlot(QWidget* parent) : PlotWidget(parent) {
     legend_->setFont(QFont(font().family(), 8));
     legend_->setBorderPen(Qt::NoPen);
     legend_->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    legend_->setWrap(2);
+    legend_->setWrap(3);
     compactLegend(legend_);
     summary_ = addTextRow(this, 4, QString());
     plotLayout()->setRowStretchFactor(1, 1.2);
@@ -166,13 +166,17 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
     QCPAxis* fy = responseRect_->axis(QCPAxis::atLeft);
     if (!v.frequencyHz.empty())
         fx->setRange(v.frequencyHz.front(), v.frequencyHz.back());
-    // The measurements: |H| in mm/V on the model's scale, the PSD on its own (right) axis.
+    // The measurements: |H| in mm/V on the model's scale, the PSD on its own (right) axis;
+    // where they come from in the plot's tooltip.
+    QStringList sources;
     if (measured.response) {
         const FrequencyResponseEstimate& h = *measured.response;
         measured_->data()->set(
             decibels(h.frequencyHz, h.magnitude, 1.0, &h.coherence, kMinCoherence), true);
-        measured_->setName(
-            tr("measured |H|, γ² ≥ %1 (%2)").arg(kMinCoherence).arg(measured.responseSource));
+        measured_->setName(tr("measured |H|"));
+        sources << tr("|H| measured from %1, drawn where γ² ≥ %2")
+                       .arg(measured.responseSource)
+                       .arg(kMinCoherence);
     } else {
         measured_->data()->clear();
     }
@@ -188,13 +192,15 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
         for (std::size_t i = 0; i < root.size(); ++i)
             root[i] = std::sqrt(a.psdSum[i]);
         acceleration_->data()->set(decibels(a.frequencyHz, root, std::sqrt(peak)), true);
-        acceleration_->setName(tr("accelerometer PSD (%1)").arg(measured.accelerationSource));
+        acceleration_->setName(tr("accel. PSD"));
+        sources << tr("PSD of %1").arg(measured.accelerationSource);
         psdAxis->setRange(-60.0, 5.0);
     } else {
         acceleration_->data()->clear();
     }
     acceleration_->setVisible(measured.acceleration != nullptr);
     psdAxis->setVisible(measured.acceleration != nullptr);
+    setToolTip(sources.join('\n'));
     // The magnitude range: what the curves reach within the grid, the deep low-frequency part
     // of an integrating plant cut at 60 dB below the top so the mode's peak stays readable.
     double top = -1e300;
@@ -211,6 +217,12 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
         bottom = std::max(bottom, top - 160.0);
         fy->setRange(bottom - 5.0, top + 5.0);
     }
+    // Whether a frequency lies in the right half of the logarithmic axis.
+    const auto rightHalf = [&v](double hz) {
+        return !v.frequencyHz.empty() &&
+               std::log(hz / v.frequencyHz.front()) >
+                   0.5 * std::log(v.frequencyHz.back() / v.frequencyHz.front());
+    };
     const auto verticalLine = [this](QCPAxisRect* rect, double x, const QColor& color) {
         auto* line = new QCPItemStraightLine(this);
         line->setClipAxisRect(rect);
@@ -225,18 +237,18 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
         verticalLine(responseRect_, v.modeHz, kMode);
         markers_ << addAnnotation(this, responseRect_, v.modeHz, fy->range().upper,
                                   tr("mode %1 Hz").arg(significant(v.modeHz, 4)), kMode,
-                                  Qt::AlignLeft | Qt::AlignTop, false);
+                                  Qt::AlignLeft | Qt::AlignTop, rightHalf(v.modeHz));
     }
     if (v.notchHz > 0.0 && v.notchHz != v.modeHz) {
         verticalLine(responseRect_, v.notchHz, kNotch);
         markers_ << addAnnotation(this, responseRect_, v.notchHz, fy->range().lower,
                                   tr("notch %1 Hz").arg(significant(v.notchHz, 4)), kNotch,
-                                  Qt::AlignLeft | Qt::AlignBottom, false);
+                                  Qt::AlignLeft | Qt::AlignBottom, rightHalf(v.notchHz));
     }
     QCPAxis* sx = shaperRect_->axis(QCPAxis::atBottom);
     QCPAxis* sy = shaperRect_->axis(QCPAxis::atLeft);
     if (v.shaper && !v.sensitivity.frequencyHz.empty()) {
-        sensitivity_->setName(tr("%1 at %2 Hz, ζ %3")
+        sensitivity_->setName(tr("%1 %2 Hz, ζ %3")
                                   .arg(QString(shaperName(v.shaper->type)).toUpper(),
                                        significant(v.shaper->frequencyHz, 4),
                                        significant(v.shaper->dampingRatio, 3)));
