@@ -108,7 +108,11 @@ InputShaper designInputShaper(ShaperType type, double frequencyHz, double dampin
 }
 
 double residualVibration(const InputShaper& shaper, double frequencyHz, double dampingRatio) {
-    requireMode(frequencyHz, dampingRatio);
+    // f = 0 is allowed here (the formula gives sum A_i = 1: a static move passes whole).
+    if (!(std::isfinite(frequencyHz) && frequencyHz >= 0.0))
+        throw InvalidInput("frequency", "must be a finite number >= 0");
+    if (!(dampingRatio >= 0.0 && dampingRatio < 1.0))
+        throw InvalidInput("damping", "must be in [0, 1)");
     const double w = 2.0 * std::numbers::pi * frequencyHz;
     const double wd = w * std::sqrt(1.0 - dampingRatio * dampingRatio);
     const double tn = shaper.duration();

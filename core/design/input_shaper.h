@@ -58,8 +58,8 @@ InputShaper designInputShaper(ShaperType type, double frequencyHz, double dampin
  * The residual vibration of a mode of @p frequencyHz and @p dampingRatio after the shaper, as a
  * fraction of the unshaped command's (Singer and Seering): with w = 2 pi f, wd = w sqrt(1 -
  * zeta^2) and the impulses (A_i, t_i), V = exp(-zeta w t_n) |sum A_i exp(zeta w t_i) e^{j wd t_i}|
- * (0: cancelled, 1: as unshaped).
- * @throws InvalidInput as designInputShaper for the mode.
+ * (0: cancelled, 1: as unshaped; at f = 0 the sum of the amplitudes, 1).
+ * @throws InvalidInput "frequency" unless finite and >= 0, "damping" unless in [0, 1).
  */
 double residualVibration(const InputShaper& shaper, double frequencyHz, double dampingRatio);
 

@@ -4,27 +4,8 @@
 #include "core/model/errors.h"
 
 #include <cmath>
-#include <complex>
-#include <numbers>
 
 namespace xyt {
-
-namespace {
-
-/// residualVibration's formula, also at f = 0 (where it is |sum A_i|).
-double sensitivityVibrationAt(const InputShaper& s, double frequencyHz) {
-    const double zeta = s.dampingRatio;
-    const double w = 2.0 * std::numbers::pi * frequencyHz;
-    const double wd = w * std::sqrt(1.0 - zeta * zeta);
-    const double tn = s.duration();
-    std::complex<double> sum = 0.0;
-    for (std::size_t i = 0; i < s.amplitudes.size(); ++i)
-        sum += s.amplitudes[i] * std::exp(-zeta * w * (tn - s.times[i])) *
-               std::polar(1.0, wd * s.times[i]);
-    return std::abs(sum);
-}
-
-} // namespace
 
 ShaperSensitivity shaperSensitivity(const InputShaper& shaper, int points,
                                     double maxFrequencyRatio) {
@@ -42,7 +23,7 @@ ShaperSensitivity shaperSensitivity(const InputShaper& shaper, int points,
     for (int k = 0; k < points; ++k) {
         const double f = fMax * static_cast<double>(k) / static_cast<double>(points - 1);
         out.frequencyHz.push_back(f);
-        out.vibration.push_back(sensitivityVibrationAt(shaper, f));
+        out.vibration.push_back(residualVibration(shaper, f, shaper.dampingRatio));
     }
     return out;
 }

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "core/session/shaper_advice.h"
+#include "ui/panels/field_form.h"
 #include "ui/panels/fold_button.h"
 #include "ui/panels/number_field.h"
 
@@ -43,13 +44,10 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
     layout->addWidget(fold_);
     auto* form = new QFormLayout(body_);
     form->setContentsMargins(12, 0, 0, 0);
+    form_ = std::make_unique<FieldForm>(form);
+    shaperForm_ = std::make_unique<FieldForm>(form);
     const auto add = [&](const QString& key, const QString& label, const QString& tip) {
-        auto* f = new NumberField(key, requireNonNegativeNumber, body_);
-        f->setToolTip(tip);
-        fields_.insert(key, f);
-        tips_.insert(key, tip);
-        form->addRow(label, f);
-        connect(f, &NumberField::valueAccepted, this, [this] { emitIfValid(); });
+        form_->add(key, label, tip, requireNonNegativeNumber, this, [this] { emitIfValid(); });
     };
     add("frequency", tr("Mode (Hz)"),
         tr("The table's resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid "
@@ -75,12 +73,12 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
     connect(fromMode_, &QPushButton::clicked, this, [this] {
         try {
             const NotchFilter n = notchForMode(mode_);
-            fields_["centre"]->setValue(n.centreHz);
-            fields_["width"]->setValue(n.widthHz);
-            fields_["depth"]->setValue(n.depthDb);
+            form_->field("centre")->setValue(n.centreHz);
+            form_->field("width")->setValue(n.widthHz);
+            form_->field("depth")->setValue(n.depthDb);
             emitIfValid();
         } catch (const InvalidInput& e) {
-            markFieldError(fields_["frequency"], QString::fromStdString(e.reason()));
+            markFieldError(form_->field("frequency"), QString::fromStdString(e.reason()));
         }
     });
     note_ = new QLabel(body_);
@@ -99,12 +97,8 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Input shaper"), shaperType_);
     connect(shaperType_, &QComboBox::activated, this, [this] { emitShapingIfValid(); });
     const auto addShaper = [&](const QString& key, const QString& label, const QString& tip) {
-        auto* f = new NumberField(key, requireNonNegativeNumber, body_);
-        f->setToolTip(tip);
-        shaperFields_.insert(key, f);
-        tips_.insert("shaper_" + key, tip);
-        form->addRow(label, f);
-        connect(f, &NumberField::valueAccepted, this, [this] { emitShapingIfValid(); });
+        shaperForm_->add(key, label, tip, requireNonNegativeNumber, this,
+                         [this] { emitShapingIfValid(); });
     };
     addShaper("frequency", tr("Shaper frequency (Hz)"),
               tr("The mode the shaper is designed for; acts on the reference at the trajectory's "
@@ -145,13 +139,13 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
     });
     connect(shaperAtMode_, &QPushButton::clicked, this, [this] {
         if (!mode_.present()) {
-            markFieldError(fields_["frequency"], tr("no flexible mode to tune the shaper to"));
+            markFieldError(form_->field("frequency"), tr("no flexible mode to tune the shaper to"));
             return;
         }
         if (shaperType_->currentIndex() == 0)
             shaperType_->setCurrentIndex(1);
-        shaperFields_["frequency"]->setValue(mode_.frequencyHz);
-        shaperFields_["damping"]->setValue(mode_.dampingRatio);
+        shaperForm_->field("frequency")->setValue(mode_.frequencyHz);
+        shaperForm_->field("damping")->setValue(mode_.dampingRatio);
         emitShapingIfValid();
     });
     setShaping({});
@@ -164,21 +158,20 @@ void FlexibleModeEditor::setSettings(const FlexibleMode& mode, const NotchFilter
     mode_ = mode;
     notch_ = notch;
     notchAllowed_ = notchAllowed;
-    fields_["frequency"]->setValue(mode.frequencyHz);
-    fields_["damping"]->setValue(mode.dampingRatio);
-    fields_["anti_resonance"]->setValue(mode.antiResonanceHz);
-    fields_["anti_resonance_damping"]->setValue(mode.antiResonanceDamping);
-    fields_["centre"]->setValue(notch.centreHz);
+    form_->field("frequency")->setValue(mode.frequencyHz);
+    form_->field("damping")->setValue(mode.dampingRatio);
+    form_->field("anti_resonance")->setValue(mode.antiResonanceHz);
+    form_->field("anti_resonance_damping")->setValue(mode.antiResonanceDamping);
+    form_->field("centre")->setValue(notch.centreHz);
     // An empty notch shows the width and depth a notch would start from.
     const NotchFilter start = notch.present() ? notch : NotchFilter{0.0, 0.0, 20.0};
-    fields_["width"]->setValue(start.widthHz);
-    fields_["depth"]->setValue(start.depthDb);
-    for (auto it = fields_.begin(); it != fields_.end(); ++it) {
+    form_->field("width")->setValue(start.widthHz);
+    form_->field("depth")->setValue(start.depthDb);
+    for (auto it = form_->fields().begin(); it != form_->fields().end(); ++it) {
         const bool isNotch = notchFieldNames().contains(it.key());
-        const bool used = continuousPlant && (!isNotch || notchAllowed);
-        it.value()->setEnabled(used);
-        clearFieldError(it.value(), tips_.value(it.key()));
+        it.value()->setEnabled(continuousPlant && (!isNotch || notchAllowed));
     }
+    form_->clearErrors();
     fromMode_->setEnabled(continuousPlant && notchAllowed);
     if (!continuousPlant)
         note_->setText(tr("A pole-placement axis' ARX model holds whatever mode its data showed: "
@@ -191,36 +184,43 @@ void FlexibleModeEditor::setSettings(const FlexibleMode& mode, const NotchFilter
 }
 
 void FlexibleModeEditor::emitIfValid() {
-    for (NumberField* f : fields_)
-        if (f->hasError())
-            return;
+    if (form_->anyError())
+        return;
     FlexibleMode mode;
-    mode.frequencyHz = fields_["frequency"]->value();
-    mode.dampingRatio = fields_["damping"]->value();
-    mode.antiResonanceHz = fields_["anti_resonance"]->value();
-    mode.antiResonanceDamping = fields_["anti_resonance_damping"]->value();
+    mode.frequencyHz = form_->value("frequency");
+    mode.dampingRatio = form_->value("damping");
+    mode.antiResonanceHz = form_->value("anti_resonance");
+    mode.antiResonanceDamping = form_->value("anti_resonance_damping");
     NotchFilter notch;
-    notch.centreHz = fields_["centre"]->value();
-    notch.widthHz = fields_["width"]->value();
-    notch.depthDb = fields_["depth"]->value();
+    notch.centreHz = form_->value("centre");
+    notch.widthHz = form_->value("width");
+    notch.depthDb = form_->value("depth");
     if (!notch.present())
         notch = {};
     try {
         validateFlexibleMode(mode);
         validateNotchFilter(notch);
     } catch (const InvalidInput& e) {
-        if (NumberField* f = fields_.value(QString::fromStdString(e.field())))
-            markFieldError(f, QString::fromStdString(e.reason()));
+        form_->markError(e);
         return;
     }
-    for (auto it = fields_.begin(); it != fields_.end(); ++it)
-        clearFieldError(it.value(), tips_.value(it.key()));
+    form_->clearErrors();
     if (mode == mode_ && notch == notch_)
         return;
     mode_ = mode;
     notch_ = notch;
     updateHeader();
     emit loopElementsEdited(mode, notch);
+}
+
+FlexibleModeEditor::~FlexibleModeEditor() = default;
+
+NumberField* FlexibleModeEditor::field(const QString& name) const {
+    return form_->field(name);
+}
+
+NumberField* FlexibleModeEditor::shaperField(const QString& name) const {
+    return shaperForm_->field(name);
 }
 
 QString FlexibleModeEditor::adviceText() const {
@@ -255,8 +255,8 @@ void FlexibleModeEditor::applyRecommendation(const PowerSpectrum& spectrum, doub
                               formatNumber(std::round(best.smoothing * 1000.0) / 1000.0),
                               formatNumber(std::round(best.maxAccelMmPerS2 / 100.0) * 100.0)));
     shaperType_->setCurrentIndex(shaperType_->findData(static_cast<int>(best.shaper.type)));
-    shaperFields_["frequency"]->setValue(best.shaper.frequencyHz);
-    shaperFields_["damping"]->setValue(best.shaper.dampingRatio);
+    shaperForm_->field("frequency")->setValue(best.shaper.frequencyHz);
+    shaperForm_->field("damping")->setValue(best.shaper.dampingRatio);
     emitShapingIfValid();
 }
 
@@ -264,30 +264,27 @@ void FlexibleModeEditor::setShaping(const ReferenceShaping& shaping) {
     shaping_ = shaping;
     shaperType_->setCurrentIndex(
         shaping.active() ? shaperType_->findData(static_cast<int>(shaping.type)) : 0);
-    shaperFields_["frequency"]->setValue(shaping.frequencyHz);
-    shaperFields_["damping"]->setValue(shaping.dampingRatio);
+    shaperForm_->field("frequency")->setValue(shaping.frequencyHz);
+    shaperForm_->field("damping")->setValue(shaping.dampingRatio);
     updateHeader();
 }
 
 void FlexibleModeEditor::emitShapingIfValid() {
-    for (NumberField* f : shaperFields_)
-        if (f->hasError())
-            return;
+    if (shaperForm_->anyError())
+        return;
     ReferenceShaping next;
     if (shaperType_->currentIndex() > 0) {
         next.type = static_cast<ShaperType>(shaperType_->currentData().toInt());
-        next.frequencyHz = shaperFields_["frequency"]->value();
-        next.dampingRatio = shaperFields_["damping"]->value();
+        next.frequencyHz = shaperForm_->value("frequency");
+        next.dampingRatio = shaperForm_->value("damping");
         try {
             designInputShaper(next.type, next.frequencyHz, next.dampingRatio);
         } catch (const InvalidInput& e) {
-            if (NumberField* f = shaperFields_.value(QString::fromStdString(e.field())))
-                markFieldError(f, QString::fromStdString(e.reason()));
+            shaperForm_->markError(e);
             return;
         }
     }
-    for (auto it = shaperFields_.begin(); it != shaperFields_.end(); ++it)
-        clearFieldError(it.value(), tips_.value("shaper_" + it.key()));
+    shaperForm_->clearErrors();
     if (next == shaping_)
         return;
     shaping_ = next;

@@ -7,8 +7,9 @@
 #include "core/model/flexible_mode.h"
 #include "core/session/session.h"
 
-#include <QMap>
 #include <QWidget>
+
+#include <memory>
 
 class QComboBox;
 class QLabel;
@@ -17,6 +18,7 @@ class QToolButton;
 
 namespace xyt::ui {
 
+class FieldForm;
 class NumberField;
 
 /**
@@ -33,6 +35,7 @@ class FlexibleModeEditor : public QWidget {
 
 public:
     explicit FlexibleModeEditor(QWidget* parent = nullptr);
+    ~FlexibleModeEditor() override;
     /// Shows the axis' settings; @p continuousPlant false (a pole-placement axis, whose ARX model
     /// holds what its data showed) disables the fields with the reason; @p notchAllowed false (a
     /// PID + feedforward axis: LinuxCNC's pid has no notch stage) disables the notch's.
@@ -40,12 +43,12 @@ public:
                      bool notchAllowed);
     /// "frequency", "damping", "anti_resonance", "anti_resonance_damping", "centre", "width",
     /// "depth".
-    NumberField* field(const QString& name) const { return fields_.value(name); }
+    NumberField* field(const QString& name) const;
     QPushButton* notchFromModeButton() const { return fromMode_; }
     /// The trajectory's shaper (both axes): "none" then the seven types.
     void setShaping(const ReferenceShaping& shaping);
     QComboBox* shaperTypeBox() const { return shaperType_; }
-    NumberField* shaperField(const QString& name) const { return shaperFields_.value(name); }
+    NumberField* shaperField(const QString& name) const;
     QPushButton* shaperAtModeButton() const { return shaperAtMode_; }
     /// Klipper's recommendation (recommendShaper) over the spectrum of the axis' mode, or of a
     /// Klipper accelerometer log; applied as the trajectory's shaper, its figures shown below
@@ -78,10 +81,9 @@ private:
     QPushButton* recommendMode_;
     QPushButton* recommendLog_;
     QLabel* advice_;
-    QMap<QString, NumberField*> shaperFields_;
+    std::unique_ptr<FieldForm> shaperForm_;
     ReferenceShaping shaping_;
-    QMap<QString, NumberField*> fields_;
-    QMap<QString, QString> tips_;
+    std::unique_ptr<FieldForm> form_; ///< the mode's and the notch's fields
     FlexibleMode mode_;
     NotchFilter notch_;
     bool notchAllowed_ = true;

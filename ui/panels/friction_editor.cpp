@@ -2,6 +2,7 @@
 #include "ui/panels/friction_editor.h"
 
 #include "core/model/errors.h"
+#include "ui/panels/field_form.h"
 #include "ui/panels/fold_button.h"
 #include "ui/panels/number_field.h"
 
@@ -30,13 +31,9 @@ FrictionEditor::FrictionEditor(QWidget* parent) : QWidget(parent) {
     layout->addWidget(fold_);
     auto* form = new QFormLayout(body_);
     form->setContentsMargins(12, 0, 0, 0);
+    form_ = std::make_unique<FieldForm>(form);
     const auto add = [&](const QString& key, const QString& label, const QString& tip) {
-        auto* f = new NumberField(key, requireNonNegative, body_);
-        f->setToolTip(tip);
-        fields_.insert(key, f);
-        tips_.insert(key, tip);
-        form->addRow(label, f);
-        connect(f, &NumberField::valueAccepted, this, [this] { emitIfValid(); });
+        form_->add(key, label, tip, requireNonNegative, this, [this] { emitIfValid(); });
     };
     add("coulomb", tr("Coulomb (V)"),
         tr("Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its "
@@ -73,6 +70,12 @@ FrictionEditor::FrictionEditor(QWidget* parent) : QWidget(parent) {
     setSettings({}, {}, true);
 }
 
+FrictionEditor::~FrictionEditor() = default;
+
+NumberField* FrictionEditor::field(const QString& name) const {
+    return form_->field(name);
+}
+
 bool FrictionEditor::isOpen() const {
     return fold_->isChecked();
 }
@@ -81,22 +84,22 @@ void FrictionEditor::setSettings(const TableFriction& friction,
                                  const FrictionCompensation& compensation, bool massModel) {
     friction_ = friction;
     compensation_ = compensation;
-    fields_["coulomb"]->setValue(friction.coulombVolts);
-    fields_["static"]->setValue(friction.staticVolts);
-    fields_["stribeck_velocity"]->setValue(friction.stribeckVelocityMmPerS);
-    fields_["viscous"]->setValue(friction.viscousVoltsPerMmPerS);
-    fields_["backlash"]->setValue(friction.backlashMm);
-    fields_["amplifier_deadband"]->setValue(friction.amplifierDeadbandVolts);
-    fields_["percent"]->setValue(compensation.percent);
-    fields_["band"]->setValue(compensation.bandMmPerS);
+    form_->field("coulomb")->setValue(friction.coulombVolts);
+    form_->field("static")->setValue(friction.staticVolts);
+    form_->field("stribeck_velocity")->setValue(friction.stribeckVelocityMmPerS);
+    form_->field("viscous")->setValue(friction.viscousVoltsPerMmPerS);
+    form_->field("backlash")->setValue(friction.backlashMm);
+    form_->field("amplifier_deadband")->setValue(friction.amplifierDeadbandVolts);
+    form_->field("percent")->setValue(compensation.percent);
+    form_->field("band")->setValue(compensation.bandMmPerS);
     pole_->setCurrentIndex(friction.electricalPole == ElectricalPole::Faster ? 0 : 1);
     // An ARX model has no moving mass: only the input dead zone's two levels apply.
     const QString arx = tr("A pole-placement axis' ARX model has no moving mass: it takes the "
                            "Coulomb level and the amplifier deadband, as a dead zone of its input");
-    for (auto it = fields_.begin(); it != fields_.end(); ++it) {
+    for (auto it = form_->fields().begin(); it != form_->fields().end(); ++it) {
         const bool used = massModel || it.key() == "coulomb" || it.key() == "amplifier_deadband";
         it.value()->setEnabled(used);
-        it.value()->setToolTip(used ? tips_.value(it.key()) : arx);
+        it.value()->setToolTip(used ? form_->tip(it.key()) : arx);
     }
     pole_->setEnabled(massModel);
     note_->setVisible(false);
@@ -104,31 +107,28 @@ void FrictionEditor::setSettings(const TableFriction& friction,
 }
 
 void FrictionEditor::emitIfValid() {
-    for (NumberField* f : fields_)
-        if (f->hasError())
-            return;
+    if (form_->anyError())
+        return;
     TableFriction next;
-    next.coulombVolts = fields_["coulomb"]->value();
-    next.staticVolts = fields_["static"]->value();
-    next.stribeckVelocityMmPerS = fields_["stribeck_velocity"]->value();
-    next.viscousVoltsPerMmPerS = fields_["viscous"]->value();
-    next.backlashMm = fields_["backlash"]->value();
-    next.amplifierDeadbandVolts = fields_["amplifier_deadband"]->value();
+    next.coulombVolts = form_->value("coulomb");
+    next.staticVolts = form_->value("static");
+    next.stribeckVelocityMmPerS = form_->value("stribeck_velocity");
+    next.viscousVoltsPerMmPerS = form_->value("viscous");
+    next.backlashMm = form_->value("backlash");
+    next.amplifierDeadbandVolts = form_->value("amplifier_deadband");
     next.electricalPole =
         pole_->currentIndex() == 0 ? ElectricalPole::Faster : ElectricalPole::Slower;
     FrictionCompensation c;
-    c.percent = fields_["percent"]->value();
-    c.bandMmPerS = fields_["band"]->value();
+    c.percent = form_->value("percent");
+    c.bandMmPerS = form_->value("band");
     try {
         validateTableFriction(next);
         validateFrictionCompensation(c);
     } catch (const InvalidInput& e) {
-        if (NumberField* f = fields_.value(QString::fromStdString(e.field())))
-            markFieldError(f, QString::fromStdString(e.reason()));
+        form_->markError(e);
         return;
     }
-    for (auto it = fields_.begin(); it != fields_.end(); ++it)
-        clearFieldError(it.value(), tips_.value(it.key()));
+    form_->clearErrors();
     if (next == friction_ && c == compensation_)
         return;
     friction_ = next;

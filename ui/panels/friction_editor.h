@@ -3,8 +3,9 @@
 
 #include "core/model/table_friction.h"
 
-#include <QMap>
 #include <QWidget>
+
+#include <memory>
 
 class QComboBox;
 class QLabel;
@@ -12,6 +13,7 @@ class QToolButton;
 
 namespace xyt::ui {
 
+class FieldForm;
 class NumberField;
 
 /**
@@ -26,6 +28,7 @@ class FrictionEditor : public QWidget {
 
 public:
     explicit FrictionEditor(QWidget* parent = nullptr);
+    ~FrictionEditor() override;
     /// Shows the axis' settings; @p massModel false (a pole-placement axis, whose ARX model takes
     /// the Coulomb level and the amplifier deadband only, as an input dead zone) disables the
     /// other fields with the reason.
@@ -33,7 +36,7 @@ public:
                      bool massModel);
     /// The field of a TableFriction / FrictionCompensation field name ("coulomb", "static",
     /// "stribeck_velocity", "viscous", "backlash", "amplifier_deadband", "percent", "band").
-    NumberField* field(const QString& name) const { return fields_.value(name); }
+    NumberField* field(const QString& name) const;
     QComboBox* electricalPoleBox() const { return pole_; }
     QToolButton* foldButton() const { return fold_; }
     bool isOpen() const;
@@ -49,8 +52,7 @@ private:
     QWidget* body_;
     QComboBox* pole_;
     QLabel* note_;
-    QMap<QString, NumberField*> fields_;
-    QMap<QString, QString> tips_;
+    std::unique_ptr<FieldForm> form_;
     TableFriction friction_;
     FrictionCompensation compensation_;
 };
