@@ -226,6 +226,22 @@ OctaveLines gtOctaveLines(const Session& session, const AxisEvaluation& a, int i
         << num(p.a1, gt + ".plant.a1") << " " << num(p.a2, gt + ".plant.a2") << " 0]);\n";
     out << "controller_" << id << " = tf([" << num(a.gt->kp, gt + ".kp") << " "
         << num(a.gt->ki, gt + " (ki)") << "], [1 0]);  % kp + ki/s\n";
+    // The table's flexible mode and the notch, as every run of the workbench has them.
+    const auto tfLine = [&](const std::string& name, const TransferFunction& g,
+                            const std::string& field, const char* comment) {
+        out << name << "_" << id << " = tf([" << joined(g.num().descending(), " ", field) << "], ["
+            << joined(g.den().descending(), " ", field) << "]);  % " << comment << "\n";
+    };
+    if (axis.gt.flexibleMode.present()) {
+        tfLine("mode", axis.gt.flexibleMode.transferFunction(), gt + ".flexible_mode",
+               "the flexible mode, unit static gain");
+        out << "plant_" << id << " = plant_" << id << " * mode_" << id << ";\n";
+    }
+    if (axis.gt.notch.present()) {
+        tfLine("notch", axis.gt.notch.transferFunction(), gt + ".notch",
+               "the notch on the error ahead of the PI");
+        out << "controller_" << id << " = controller_" << id << " * notch_" << id << ";\n";
+    }
     out << "closed_loop_" << id << " = feedback(controller_" << id << " * plant_" << id
         << ", 1);\n";
     out << "% The same PI as the firmware runs it (" << discretizationName(options.piMethod)
@@ -235,6 +251,13 @@ OctaveLines gtOctaveLines(const Session& session, const AxisEvaluation& a, int i
     out << "digital_controller_" << id << " = filt([" << joined(c.num, " ", gt + " (digital PI)")
         << "], [" << joined(c.den, " ", gt + " (digital PI)") << "], "
         << num(c.tsSeconds, "controller_ts") << ");  % in z^-1\n";
+    if (axis.gt.notch.present()) {
+        const Biquad b = discreteNotch(axis.gt.notch, c.tsSeconds, gt + ".notch.");
+        const std::string f = gt + ".notch (bilinear, prewarped)";
+        out << "digital_controller_" << id << " = digital_controller_" << id << " * filt(["
+            << joined({b.b0, b.b1, b.b2}, " ", f) << "], [" << joined({1.0, b.a1, b.a2}, " ", f)
+            << "], " << num(c.tsSeconds, "controller_ts") << ");  % the notch, prewarped\n";
+    }
     out << octaveTrajectoryLines(session.trajectory, i, id);
     out << "unit_" << id << " = "
         << num(axis.gt.modelUnitsPerPositionUnit, gt + ".model_unit_scale")

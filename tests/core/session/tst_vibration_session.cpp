@@ -13,6 +13,7 @@
 #include "core/model/state_space.h"
 #include "core/session/axis_frequency.h"
 #include "core/session/axis_vibration.h"
+#include "core/session/export_text.h"
 #include "core/session/pid_feedforward_method.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/sampled_data.h"
@@ -241,6 +242,29 @@ private slots:
         const AxisEvaluation b = evaluateAxis(s, 0);
         QVERIFY(a.run.y == b.run.y);
         QVERIFY(a.gt->openLoop == b.gt->openLoop);
+    }
+
+    /// The Octave script closes the loop the workbench runs: the plant times the mode (its
+    /// denominator s^2 + 2 zr wr s + wr^2, wr = 2 pi 20), the PI times the notch, and the
+    /// digital PI times the prewarped biquad; the rigid session's script has none of them.
+    void theOctaveScriptHasTheModeAndTheNotch() {
+        const Session s = sessionWithMode(true);
+        const std::string script = exportOctaveScript(s, evaluateSession(s), ExportOptions{});
+        const double wr = kTwoPi * 20.0;
+        const std::size_t at = script.find("mode_x = tf([");
+        QVERIFY(at != std::string::npos);
+        const double numerator = std::stod(script.substr(at + 13, 30));
+        QVERIFY(std::abs(numerator - wr * wr) <= 1e-15 * wr * wr); // printed to 17 digits
+        QVERIFY(script.find("plant_x = plant_x * mode_x;") != std::string::npos);
+        QVERIFY(script.find("controller_x = controller_x * notch_x;") != std::string::npos);
+        QVERIFY(script.find("digital_controller_x = digital_controller_x * filt([") !=
+                std::string::npos);
+        QVERIFY(script.find("mode_y") == std::string::npos); // y has no mode
+        const Session rigid = Session::paperDefault();
+        const std::string plain =
+            exportOctaveScript(rigid, evaluateSession(rigid), ExportOptions{});
+        QVERIFY(plain.find("mode_") == std::string::npos &&
+                plain.find("notch_") == std::string::npos);
     }
 
     void badSettingsAreRefusedNamingTheField() {
