@@ -19,6 +19,31 @@ double magnitudeDb(const TransferFunction& h, double hz) {
 
 } // namespace
 
+std::optional<ResonancePick> measuredModePick(const FrequencyResponseEstimate& measured,
+                                              const GtAxisSettings& gt, double minCoherence) {
+    try {
+        const TransferFunction rigid = gt.plant.transferFunction();
+        requirePositive(gt.modelUnitsPerPositionUnit, "model_unit_scale");
+        std::vector<double> f, ratio;
+        for (std::size_t i = 0; i < measured.frequencyHz.size(); ++i) {
+            const double hz = measured.frequencyHz[i];
+            if (!(hz > 0.0) || !(measured.coherence[i] >= minCoherence))
+                continue;
+            const double model =
+                std::abs(rigid.frequencyResponse(kTwoPi * hz)) / gt.modelUnitsPerPositionUnit;
+            if (model > 0.0 && std::isfinite(model)) {
+                f.push_back(hz);
+                ratio.push_back(measured.magnitude[i] / model);
+            }
+        }
+        if (f.size() < 3)
+            return std::nullopt;
+        return pickResonance(f, ratio, ResonanceQuantity::Magnitude);
+    } catch (const InvalidInput&) {
+        return std::nullopt;
+    }
+}
+
 AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
     AxisVibration out;
     try {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/design/shaper_sensitivity.h"
+#include "core/identification/spectral_estimate.h"
 #include "core/session/session.h"
 
 #include <optional>
@@ -31,6 +32,15 @@ struct AxisVibration {
     ShaperSensitivity sensitivity;      ///< empty without a shaper
     double residualAtModePercent = 0.0; ///< 100 V at modeHz (or the shaper's frequency)
 };
+
+/**
+ * The mode a measured frequency response shows above the axis' rigid plant: the half-power
+ * pick (pickResonance) of |H| / |G_rigid| (G in mm/V) over the bins whose coherence is at least
+ * @p minCoherence, where the rigid part divides out and the mode's peak remains. Empty when
+ * fewer than three bins qualify or the pick is refused.
+ */
+std::optional<ResonancePick> measuredModePick(const FrequencyResponseEstimate& measured,
+                                              const GtAxisSettings& gt, double minCoherence = 0.5);
 
 /// Never throws: an axis that cannot be analysed gives ok = false with the reason.
 AxisVibration analyzeAxisVibration(const Session& session, int axisIndex);

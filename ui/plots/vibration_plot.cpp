@@ -245,6 +245,16 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
                                   tr("notch %1 Hz").arg(significant(v.notchHz, 4)), kNotch,
                                   Qt::AlignLeft | Qt::AlignBottom, rightHalf(v.notchHz));
     }
+    if (measured.measuredModeHz) {
+        verticalLine(responseRect_, *measured.measuredModeHz, kMeasured);
+        QString text = tr("measured %1 Hz").arg(significant(*measured.measuredModeHz, 4));
+        if (measured.measuredModeDamping)
+            text += tr(", ζ %1").arg(significant(*measured.measuredModeDamping, 2));
+        markers_ << addAnnotation(this, responseRect_, *measured.measuredModeHz,
+                                  fy->range().lower + 0.15 * fy->range().size(), text, kMeasured,
+                                  Qt::AlignLeft | Qt::AlignBottom,
+                                  rightHalf(*measured.measuredModeHz));
+    }
     QCPAxis* sx = shaperRect_->axis(QCPAxis::atBottom);
     QCPAxis* sy = shaperRect_->axis(QCPAxis::atLeft);
     if (v.shaper && !v.sensitivity.frequencyHz.empty()) {

@@ -6,6 +6,7 @@
 #include "ui/plots/plot_widget.h"
 
 #include <memory>
+#include <optional>
 
 namespace xyt {
 struct AccelerometerSpectra;
@@ -21,6 +22,8 @@ struct VibrationMeasurements {
     QString responseSource;
     const AccelerometerSpectra* acceleration = nullptr;
     QString accelerationSource;
+    /// The mode picked from the measured response (measuredModePick), marked where it lies.
+    std::optional<double> measuredModeHz, measuredModeDamping;
 };
 
 /**

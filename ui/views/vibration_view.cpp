@@ -44,6 +44,11 @@ void VibrationView::draw() {
     if (const auto& r = session()->measuredResponse(axis)) {
         measured.response = &r->estimate;
         measured.responseSource = r->source;
+        const GtAxisSettings& gt = session()->session().axes.at(static_cast<std::size_t>(axis)).gt;
+        if (const auto pick = measuredModePick(r->estimate, gt, VibrationPlot::kMinCoherence)) {
+            measured.measuredModeHz = pick->frequencyHz;
+            measured.measuredModeDamping = pick->dampingRatio;
+        }
     }
     if (const auto& a = session()->measuredAcceleration()) {
         measured.acceleration = &a->spectra;
