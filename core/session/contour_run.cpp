@@ -9,6 +9,7 @@
 #include "core/session/coupling_stability.h"
 #include "core/session/design_method_module.h"
 #include "core/session/session_evaluation.h"
+#include "core/session/shaped_program.h"
 #include "core/simulation/cross_coupled_run.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/metrics.h"
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace xyt {
 
@@ -218,6 +220,29 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         }
         out.couplingStability =
             checkCouplingStability(session, options.profile.dtSeconds, lines, arcs);
+    }
+    // An input shaper on the reference: the planned profile shaped (both axes, as each axis'
+    // own run shapes its reference), and every run of this contour on it.
+    std::optional<FeedProfile> shaped;
+    if (const ReferenceShaping& shaping = session.trajectory.shaping; shaping.active()) {
+        InputShaper shaper;
+        try {
+            shaper = designInputShaper(shaping.type, shaping.frequencyHz, shaping.dampingRatio);
+        } catch (const InvalidInput& e) {
+            throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+        }
+        FeedProfileOptions profileOptions = options.profile;
+        profileOptions.maxSamples = std::min(profileOptions.maxSamples, sampleLimit());
+        const FeedProfile base =
+            plannedProfile ? *plannedProfile : planFeedProfile(program.path, feeds, profileOptions);
+        try {
+            shaped = shapedFeedProfile(base, shaper);
+        } catch (const InvalidInput& e) {
+            throw InvalidInput(e.field() == "shaper.frequency" ? "trajectory.shaping.frequency"
+                                                               : e.field(),
+                               e.reason());
+        }
+        plannedProfile = &*shaped;
     }
     const std::vector<bool> rapid = programRapidSegments(program);
     out.trace = trace(session, program.path, feeds, options, plannedProfile, true, &rapid);

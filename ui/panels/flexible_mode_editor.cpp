@@ -246,7 +246,8 @@ void FlexibleModeEditor::applyRecommendation(const PowerSpectrum& spectrum, doub
                                              const QString& source) {
     ShaperRecommendationOptions options;
     options.dampingRatio = dampingRatio;
-    const ShaperFit& best = recommendShaper(spectrum, options).best();
+    const ShaperFit best =
+        recommendShaper(spectrum, options).best(); // a copy: the result is a temporary
     advice_->setText(tr("Klipper's choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing "
                         "%5 mm, max accel %6 mm/s²")
                          .arg(source, QString(shaperName(best.shaper.type)).toUpper(),

@@ -13,6 +13,7 @@
 #include "core/model/state_space.h"
 #include "core/session/axis_frequency.h"
 #include "core/session/axis_vibration.h"
+#include "core/session/contour_run.h"
 #include "core/session/export_text.h"
 #include "core/session/pid_feedforward_method.h"
 #include "core/session/session_evaluation.h"
@@ -304,6 +305,34 @@ private slots:
         qInfo("picked %.4f Hz, zeta %.4f", pick->frequencyHz, *pick->dampingRatio);
         QVERIFY(std::abs(pick->frequencyHz - 20.0 * std::sqrt(1.0 - 2.0 * 0.0025)) < 0.25);
         QVERIFY(std::abs(*pick->dampingRatio - 0.05 * (1.0 + 2.0 * 0.0025)) < 0.25 * 0.05);
+    }
+
+    /// A G-code program with a shaper: the contour run traces the shaped profile (shapePath of
+    /// the planned one) and each axis' own run follows the shaped reference function; both
+    /// routes interpolate the profile linearly, so the traced x is each axis' y sample for
+    /// sample (1e-9 mm: round-off of two summation orders over a 10 mm square).
+    void aProgramRunsOnItsShapedProfile() {
+        Session s = Session::paperDefault();
+        s.trajectory.kind = TrajectoryKind::Gcode;
+        s.trajectory.gcode.program = "G21 G90\nG1 X10 F600\nG1 Y10\nG1 X0\nG1 Y0\n";
+        s.trajectory.dtSeconds = 0.001;
+        s.trajectory.shaping = {ShaperType::Zvd, 15.0, 0.05};
+        const SessionEvaluation e = evaluateSession(s);
+        QVERIFY(e.axes[0].ok && e.program);
+        const ContourTrace& trace = e.program->trace;
+        const InputShaper zvd = designInputShaper(ShaperType::Zvd, 15.0, 0.05);
+        // Longer by the shaper's duration, ending where the program ends.
+        QVERIFY(trace.profile.t.back() >= s.trajectory.effectiveDurationSeconds() - 0.0015);
+        QVERIFY(std::abs(trace.profile.x.back()) < 1e-12 &&
+                std::abs(trace.profile.y.back()) < 1e-12);
+        const SimulationResult& x = e.axes[0].run;
+        const std::size_t n = std::min(x.y.size(), trace.x.size());
+        QVERIFY(n > 1000);
+        double worst = 0.0;
+        for (std::size_t k = 0; k < n; ++k)
+            worst = std::max(worst, std::abs(x.y[k] - trace.x[k]));
+        QVERIFY2(worst < 1e-9, qPrintable(QString::number(worst)));
+        QVERIFY(zvd.duration() > 0.0);
     }
 
     void badSettingsAreRefusedNamingTheField() {
