@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace xyt {
 
@@ -42,6 +43,40 @@ std::optional<ResonancePick> measuredModePick(const FrequencyResponseEstimate& m
     } catch (const InvalidInput&) {
         return std::nullopt;
     }
+}
+
+MeasuredOpenLoop measuredOpenLoop(const FrequencyResponseEstimate& measured,
+                                  const TransferFunction& controller, double modelUnitsPerMm,
+                                  const FrequencyResponse& model, double minCoherence) {
+    if (controller.tsSeconds() > 0.0)
+        throw InvalidInput("controller", "must be continuous (a discrete loop has its own model)");
+    requirePositive(modelUnitsPerMm, "model_unit_scale");
+    MeasuredOpenLoop out;
+    for (std::size_t i = 0; i < measured.frequencyHz.size(); ++i) {
+        const double w = kTwoPi * measured.frequencyHz[i];
+        if (!(w > 0.0) || !(measured.coherence[i] >= minCoherence) ||
+            !(measured.magnitude[i] > 0.0))
+            continue;
+        const std::complex<double> c = controller.frequencyResponse(w);
+        out.omegaRadPerSec.push_back(w);
+        out.magnitudeDb.push_back(
+            20.0 * std::log10(std::abs(c) * measured.magnitude[i] * modelUnitsPerMm));
+        out.phaseDeg.push_back((measured.phaseRad[i] + std::arg(c)) * 180.0 / kPi);
+    }
+    // One branch with the model: whole turns that bring the first bin within 180 degrees of
+    // the model's phase there (interpolated on the model's grid).
+    if (!out.phaseDeg.empty() && model.omegaRadPerSec.size() > 1) {
+        const auto& mw = model.omegaRadPerSec;
+        const double w0 = out.omegaRadPerSec.front();
+        const auto it = std::lower_bound(mw.begin(), mw.end(), w0);
+        const std::size_t j =
+            it == mw.end() ? mw.size() - 1 : static_cast<std::size_t>(it - mw.begin());
+        const double reference = model.phaseDeg[j];
+        const double turns = std::round((reference - out.phaseDeg.front()) / 360.0);
+        for (double& p : out.phaseDeg)
+            p += 360.0 * turns;
+    }
+    return out;
 }
 
 AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {

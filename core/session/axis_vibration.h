@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/analysis/frequency_response.h"
 #include "core/design/shaper_sensitivity.h"
 #include "core/identification/spectral_estimate.h"
 #include "core/session/session.h"
@@ -41,6 +42,23 @@ struct AxisVibration {
  */
 std::optional<ResonancePick> measuredModePick(const FrequencyResponseEstimate& measured,
                                               const GtAxisSettings& gt, double minCoherence = 0.5);
+
+/// The loop with the measured plant, as the Bode view draws it against the model's.
+struct MeasuredOpenLoop {
+    std::vector<double> omegaRadPerSec, magnitudeDb, phaseDeg;
+};
+
+/**
+ * L = C H at the measured response's bins whose coherence is at least @p minCoherence: the
+ * axis' @p controller (as the loop runs it, with its notch; V per model unit) times the
+ * measured plant H (mm/V) in model units (H @p modelUnitsPerMm). The phase (H's, unwrapped,
+ * plus C's) is moved by whole turns to lie within half a turn of @p model's phase at the first
+ * bin, so both are drawn on one branch.
+ * @throws InvalidInput "controller" unless continuous, "model_unit_scale" unless > 0.
+ */
+MeasuredOpenLoop measuredOpenLoop(const FrequencyResponseEstimate& measured,
+                                  const TransferFunction& controller, double modelUnitsPerMm,
+                                  const FrequencyResponse& model, double minCoherence = 0.5);
 
 /// Never throws: an axis that cannot be analysed gives ok = false with the reason.
 AxisVibration analyzeAxisVibration(const Session& session, int axisIndex);

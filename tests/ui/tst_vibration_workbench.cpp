@@ -208,6 +208,12 @@ private slots:
         }
         QVERIFY(k > 10);
         QVERIFY(it == drawn->data()->constEnd());
+        // The Bode view draws the loop it makes with the axis' controller: one dot per drawn bin.
+        window_->upperTabs()->setCurrentWidget(window_->bodePlot());
+        QCPGraph* loop = window_->bodePlot()->measuredMagnitudeGraph();
+        QVERIFY(loop && loop->visible());
+        QCOMPARE(loop->dataCount(), k);
+        window_->upperTabs()->setCurrentWidget(window_->vibrationPlot());
         session_->setMeasuredResponse(0, nullptr);
         QVERIFY(!drawn->visible());
         FlexibleModeEditor* editor = window_->flexibleModeEditor();

@@ -127,6 +127,38 @@ BodePlot::BodePlot(QWidget* parent) : PlotWidget(parent) {
 
 BodePlot::~BodePlot() = default;
 
+void BodePlot::showMeasuredLoop(const MeasuredOpenLoop* loop, const QString& source) {
+    const QColor measured{0xd6, 0x27, 0x28};
+    if (!measuredMagnitude_) {
+        measuredMagnitude_ =
+            addGraph(magRect_->axis(QCPAxis::atBottom), magRect_->axis(QCPAxis::atLeft));
+        measuredPhase_ =
+            addGraph(phaseRect_->axis(QCPAxis::atBottom), phaseRect_->axis(QCPAxis::atLeft));
+        for (QCPGraph* g : {measuredMagnitude_, measuredPhase_}) {
+            g->setLineStyle(QCPGraph::lsNone);
+            g->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, measured, 3.5));
+            g->setPen(QPen(measured));
+        }
+        measuredMagnitude_->setName(tr("measured L = C H"));
+    }
+    const bool shown = loop && !loop->omegaRadPerSec.empty();
+    if (shown) {
+        setResponse(measuredMagnitude_, loop->omegaRadPerSec, loop->magnitudeDb);
+        setResponse(measuredPhase_, loop->omegaRadPerSec, loop->phaseDeg);
+        measuredMagnitude_->setName(tr("measured L = C H (%1)").arg(source));
+        if (!legend_->hasItemWithPlottable(measuredMagnitude_))
+            legend_->addItem(new QCPPlottableLegendItem(legend_, measuredMagnitude_));
+    } else {
+        measuredMagnitude_->data()->clear();
+        measuredPhase_->data()->clear();
+        if (legend_->hasItemWithPlottable(measuredMagnitude_))
+            legend_->removeItem(legend_->itemWithPlottable(measuredMagnitude_));
+    }
+    measuredMagnitude_->setVisible(shown);
+    measuredPhase_->setVisible(shown);
+    replot(QCustomPlot::rpQueuedReplot);
+}
+
 QString BodePlot::readoutHint() {
     return tr("hover the plot: ω, |L| and ∠L of the open loop");
 }
@@ -379,6 +411,8 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
 
 void BodePlot::showNoResult(const QString& title, const QString& reason) {
     hasResult_ = false;
+    if (measuredMagnitude_)
+        showMeasuredLoop(nullptr, QString());
     title_->setText(title);
     title_->setTextColor(colors::error);
     for (const Curve& c : std::as_const(curves_)) {

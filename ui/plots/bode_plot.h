@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/session/axis_frequency.h"
+#include "core/session/axis_vibration.h"
 #include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_widget.h"
 
@@ -36,6 +37,11 @@ public:
     void showAnalysis(const AxisFrequencyAnalysis& analysis, bool zpetcEnabled,
                       const QString& title, const BodeMarginRequirements& requirements = {});
     void showNoResult(const QString& title, const QString& reason);
+    /// The loop with a measured plant (measuredOpenLoop), dots over L on both panels; null
+    /// removes it. Call after showAnalysis.
+    void showMeasuredLoop(const MeasuredOpenLoop* loop, const QString& source);
+    QCPGraph* measuredMagnitudeGraph() const { return measuredMagnitude_; }
+    QCPGraph* measuredPhaseGraph() const { return measuredPhase_; }
     bool hasResult() const { return hasResult_; }
     QString noticeText() const { return notice_->text(); }
     /// "ω = …  |L| = … dB  ∠L = …°" at the hovered frequency, or the hint.
@@ -64,6 +70,8 @@ private:
                   const QColor& color, Qt::Alignment align);
     void onMouseMove(QMouseEvent* event);
 
+    QCPGraph* measuredMagnitude_ = nullptr;
+    QCPGraph* measuredPhase_ = nullptr;
     QCPAxisRect* magRect_;
     QCPAxisRect* phaseRect_;
     QCPTextElement* title_;

@@ -335,6 +335,45 @@ private slots:
         QVERIFY(zvd.duration() > 0.0);
     }
 
+    /// The loop with a measured plant: given the model plant's own response as the
+    /// "measurement" (|G| / unit in mm/V, its phase unwrapped, coherence 1), C H is the model's
+    /// L at every bin, magnitude and phase on the model's branch (round-off: 1e-9 dB, 1e-9
+    /// degrees).
+    void theMeasuredLoopIsCTimesH() {
+        const Session s = sessionWithMode(true);
+        const AxisEvaluation e = evaluateAxis(s, 0);
+        const AxisFrequencyAnalysis f = analyzeAxisFrequency(s, e);
+        QVERIFY(f.ok);
+        const TransferFunction plant = axisPlantTransferFunction(s.axes[0].gt, 0);
+        const double unit = s.axes[0].gt.modelUnitsPerPositionUnit;
+        FrequencyResponseEstimate h;
+        double previous = 0.0;
+        for (int k = 1; k <= 400; ++k) {
+            const double hz = 0.25 * k;
+            const std::complex<double> g = plant.frequencyResponse(kTwoPi * hz);
+            double phase = std::arg(g);
+            if (k > 1) // unwrap against the previous bin
+                phase += 2.0 * kPi * std::round((previous - phase) / (2.0 * kPi));
+            previous = phase;
+            h.frequencyHz.push_back(hz);
+            h.magnitude.push_back(std::abs(g) / unit);
+            h.phaseRad.push_back(phase);
+            h.coherence.push_back(1.0);
+        }
+        const MeasuredOpenLoop l =
+            measuredOpenLoop(h, e.gt->controller, unit, f.responses.openLoop);
+        QCOMPARE(l.omegaRadPerSec.size(), h.frequencyHz.size());
+        const FrequencyResponse model = frequencyResponse(e.gt->openLoop, l.omegaRadPerSec);
+        for (std::size_t i = 0; i < l.omegaRadPerSec.size(); ++i) {
+            QVERIFY(std::abs(l.magnitudeDb[i] - model.magnitudeDb[i]) < 1e-9);
+            // On one branch with the model's drawn phase (whole turns apart at most elsewhere).
+            const double d = l.phaseDeg[i] - model.phaseDeg[i];
+            QVERIFY2(std::abs(d - 360.0 * std::round(d / 360.0)) < 1e-9,
+                     qPrintable(QString::number(d)));
+        }
+        QVERIFY(std::abs(l.phaseDeg.front() - model.phaseDeg.front()) < 1e-9);
+    }
+
     void badSettingsAreRefusedNamingTheField() {
         Session s = sessionWithMode(true);
         s.axes[0].gt.flexibleMode.dampingRatio = 1.0;
