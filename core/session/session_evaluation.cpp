@@ -322,31 +322,38 @@ void addStickSlipWarnings(AxisEvaluation& out) {
 }
 
 /// evaluateAxis over a given duration.
-/// The residual vibration of ShapingComparison for the trajectory @p t (shaped or not) over the
-/// span of @p run: the mode's amplitude at @p moveEnd (a move) or its largest over the run. The
-/// commanded acceleration is sampled finer than the run when the run's step is coarse for the
-/// mode: at most 1 / (400 f), so that a jump of it (the cubic's ends, delayed by each impulse)
-/// costs at most w h / 2 = 0.8 % of that impulse's share (at most 4 million samples).
-double shapingResidualMm(const TrajectorySettings& t, int axisIndex, const SimulationResult& run,
-                         double modeHz, double modeDamping, double moveEnd) {
+/// The largest amplitude of the mode over the run of the trajectory @p t (a circle or a
+/// program, shaped or not), its commanded acceleration sampled at the run's step.
+double pathResidualMm(const TrajectorySettings& t, int axisIndex, const SimulationResult& run,
+                      double modeHz, double modeDamping) {
     if (run.t.size() < 2)
         return 0.0;
-    const double start = run.t.front(), span = run.t.back() - start;
-    double h = std::min(run.t[1] - run.t[0], 1.0 / (400.0 * modeHz));
-    constexpr double kMaxSamples = 4e6;
-    if (span / h > kMaxSamples)
-        h = span / kMaxSamples;
-    const auto n = static_cast<std::size_t>(std::floor(span / h + 1e-9)) + 1;
     const auto motion = axisMotion(t, axisIndex);
-    std::vector<double> a(n);
-    for (std::size_t k = 0; k < n; ++k)
-        a[k] = motion(start + static_cast<double>(k) * h).acceleration;
-    const std::vector<double> amplitude = modeAmplitudes(a, h, modeHz, modeDamping);
-    if (t.kind != TrajectoryKind::Cubic)
-        return *std::max_element(amplitude.begin(), amplitude.end());
-    const double at = std::ceil((moveEnd - start) / h - 1e-9);
-    return at >= static_cast<double>(n) ? amplitude.back()
-                                        : amplitude[static_cast<std::size_t>(std::max(at, 0.0))];
+    std::vector<double> a(run.t.size());
+    for (std::size_t k = 0; k < a.size(); ++k)
+        a[k] = motion(run.t[k]).acceleration;
+    const std::vector<double> amplitude =
+        modeAmplitudes(a, run.t[1] - run.t[0], modeHz, modeDamping);
+    return *std::max_element(amplitude.begin(), amplitude.end());
+}
+
+/// The amplitude the mode rings with when the unshaped point-to-point move of @p t ends (tf):
+/// its acceleration on kMoveSteps equal steps of [t0, tf], linear within each (the cubic's is
+/// linear on the whole move, so exact; the quintic's a smooth polynomial, O(h^2)).
+double moveResidualMm(const TrajectorySettings& t, int axisIndex, double modeHz,
+                      double modeDamping) {
+    constexpr int kMoveSteps = 2000;
+    TrajectorySettings plain = t;
+    plain.shaping = {};
+    const auto motion = axisMotion(plain, axisIndex);
+    const double h = (t.tfSeconds - t.t0Seconds) / kMoveSteps;
+    std::vector<double> a(kMoveSteps + 1);
+    for (int k = 0; k <= kMoveSteps; ++k)
+        a[static_cast<std::size_t>(k)] =
+            k == 0 ? motion(t.t0Seconds + 0.5 * h * 1e-9).acceleration // the move's side of t0
+                   : (k == kMoveSteps ? motion(t.tfSeconds - 0.5 * h * 1e-9).acceleration
+                                      : motion(t.t0Seconds + k * h).acceleration);
+    return modeAmplitudes(a, h, modeHz, modeDamping).back();
 }
 
 /// The axis' run unshaped beside the shaped @p shaped (ShapingComparison).
@@ -369,10 +376,17 @@ std::shared_ptr<const ShapingComparison> compareShaping(const Session& session, 
     out->modeDamping =
         out->fromAxisMode ? axis.gt.flexibleMode.dampingRatio : out->shaper.dampingRatio;
     out->afterMove = t.kind == TrajectoryKind::Cubic;
-    out->residualShapedMm = shapingResidualMm(t, axisIndex, shaped, out->modeHz, out->modeDamping,
-                                              shapedMoveEndSeconds(t));
-    out->residualUnshapedMm = shapingResidualMm(plain.trajectory, axisIndex, out->unshapedRun,
-                                                out->modeHz, out->modeDamping, t.tfSeconds);
+    if (out->afterMove) {
+        // After the move the mode rings freely, so by superposition the shaped move leaves the
+        // unshaped amplitude times the shaper's residual vibration (Singer and Seering).
+        out->residualUnshapedMm = moveResidualMm(t, axisIndex, out->modeHz, out->modeDamping);
+        out->residualShapedMm =
+            out->residualUnshapedMm * residualVibration(out->shaper, out->modeHz, out->modeDamping);
+    } else {
+        out->residualShapedMm = pathResidualMm(t, axisIndex, shaped, out->modeHz, out->modeDamping);
+        out->residualUnshapedMm = pathResidualMm(plain.trajectory, axisIndex, out->unshapedRun,
+                                                 out->modeHz, out->modeDamping);
+    }
     return out;
 }
 

@@ -82,9 +82,9 @@ struct MethodDesign {
  * and tool point is driven by the commanded acceleration (modeDeflection, the model shapers are
  * designed for), and the residual is the amplitude it rings with once a point-to-point move has
  * ended (tf, plus the shaper's duration when shaped), or its largest amplitude over a circle or
- * a program, on the acceleration sampled at most 1 / (400 f) apart (within 1 % of the unshaped
- * amplitude). For a move the ratio shaped / unshaped is the shaper's residualVibration at that
- * mode (Singer and Seering).
+ * a program (the acceleration sampled at the run's step, linear between samples). After a move
+ * the mode rings freely, so the shaped residual is the unshaped one times the shaper's
+ * residualVibration at that mode (Singer and Seering's superposition).
  */
 struct ShapingComparison {
     InputShaper shaper;

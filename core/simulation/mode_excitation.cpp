@@ -12,7 +12,8 @@ namespace xyt {
 
 namespace {
 
-/// The states (q, q') at every sample of the mode driven by -a, a linear between samples.
+/// The states (q, q') at every sample of the mode driven by -a, a linear between samples (the
+/// exact steps in fixed-size matrices: this runs once per sample of a run).
 std::vector<Eigen::Vector2d> modeStates(const std::vector<double>& a, double dt, double f,
                                         double zeta) {
     requirePositive(f, "frequency");
@@ -24,13 +25,15 @@ std::vector<Eigen::Vector2d> modeStates(const std::vector<double>& a, double dt,
     Eigen::MatrixXd bm(2, 1);
     bm << 0.0, -1.0;
     const FohDiscretization d = discretizeFoh(am, bm, dt);
+    const Eigen::Matrix2d phi = d.phi;
+    const Eigen::Vector2d g0 = d.gamma0.col(0), g1 = d.gamma1.col(0) / dt;
     std::vector<Eigen::Vector2d> out;
     out.reserve(a.size());
     Eigen::Vector2d x = Eigen::Vector2d::Zero();
     for (std::size_t k = 0; k < a.size(); ++k) {
         out.push_back(x);
         const double next = k + 1 < a.size() ? a[k + 1] : a[k];
-        x = d.phi * x + d.gamma0 * a[k] + d.gamma1 * ((next - a[k]) / dt);
+        x = phi * x + g0 * a[k] + g1 * (next - a[k]);
     }
     return out;
 }

@@ -26,19 +26,21 @@ void VibrationView::draw() {
     const AxisEvaluation& e = session()->axisEvaluation(axis);
     if (e.ok && e.shaping) {
         const ShapingComparison& c = *e.shaping;
+        // Round-off of a cancelled mode (1e-19 mm) reads as 0.
+        const double shaped =
+            c.residualShapedMm < 1e-9 * c.residualUnshapedMm ? 0.0 : c.residualShapedMm;
         summary = tr("%1 shaper: %2 impulses over %3 ms, a delay of %4 ms")
                       .arg(QString(shaperName(c.shaper.type)).toUpper())
                       .arg(c.shaper.amplitudes.size())
                       .arg(significant(1000.0 * c.shaper.duration(), 3),
                            significant(1000.0 * shaperDelaySeconds(c.shaper), 3));
 
-        summary +=
-            tr("; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm "
-               "unshaped")
-                .arg(significant(c.modeHz, 4),
-                     c.fromAxisMode ? QString() : tr(" it is designed for"),
-                     c.afterMove ? tr("after the move") : tr("along the path"),
-                     significant(c.residualShapedMm, 3), significant(c.residualUnshapedMm, 3));
+        summary += tr("; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm "
+                      "unshaped")
+                       .arg(significant(c.modeHz, 4),
+                            c.fromAxisMode ? QString() : tr(" it is designed for"),
+                            c.afterMove ? tr("after the move") : tr("along the path"),
+                            significant(shaped, 3), significant(c.residualUnshapedMm, 3));
     }
     VibrationMeasurements measured;
     if (const auto& r = session()->measuredResponse(axis)) {

@@ -17,6 +17,7 @@
 #include "core/session/export_text.h"
 #include "core/session/pid_feedforward_method.h"
 #include "core/session/session_evaluation.h"
+#include "core/simulation/mode_excitation.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/trajectory.h"
 
@@ -168,46 +169,39 @@ private slots:
         QVERIFY(e.shaping->afterMove);
     }
 
-    /// The residual vibration after a move: the mode driven by the commanded acceleration
-    /// rings after a shaped move with residualVibration(shaper, f, zeta) times the amplitude it
-    /// rings with after the unshaped one (Singer and Seering: the shaper's impulses superpose
-    /// time-shifted copies of the same response). The first-order hold integrates the cubic's
-    /// linear acceleration exactly, but a jump of it (at t0 and tf) that a shaped copy puts
-    /// between two samples is spread over one sample: a first-order error w dt / 2 of that
-    /// copy's share (6.3e-4 at 20 Hz and dt = 10 us); hence 1e-3 of the unshaped amplitude. A
-    /// ZVD designed at 22 Hz (the mode off its design point) leaves a known fraction; the ZV at
-    /// the mode, nothing but that error.
-    void theResidualRatioIsTheShapersSensitivity() {
+    /// The residual vibration after a move, against a direct simulation: the mode driven by
+    /// the shaped move's commanded acceleration (axisMotion), sampled every 10 us and stepped
+    /// exactly between samples (modeAmplitudes), its amplitude at the shaped move's end. The
+    /// evaluation gets it by superposition (the unshaped amplitude times residualVibration),
+    /// from the unshaped move alone. The direct route spreads each jump of the acceleration
+    /// (the cubic's ends, delayed by each impulse) over one sample: a first-order error
+    /// w dt / 2 of that impulse's share (6.3e-4 at 20 Hz); hence 1e-3 of the unshaped amplitude.
+    /// A ZVD designed at 22 Hz (the mode off its design point) leaves a known fraction; the ZV
+    /// at the mode, nothing.
+    void theResidualMatchesADirectSimulation() {
         Session s = sessionWithMode(false);
         s.trajectory.xf = 50.0;
         s.trajectory.tfSeconds = 0.2;
         s.trajectory.durationSeconds = 0.3;
-        s.trajectory.dtSeconds = 1e-5;
         for (const auto& [type, f] : {std::pair{ShaperType::Zvd, 22.0}, {ShaperType::Zv, 20.0}}) {
             s.trajectory.shaping = {type, f, 0.05};
             const AxisEvaluation e = evaluateAxis(s, 0);
             QVERIFY2(e.ok, e.error.c_str());
             QVERIFY(e.shaping && e.shaping->fromAxisMode);
-            const double expected =
-                residualVibration(e.shaping->shaper, 20.0, 0.05) * e.shaping->residualUnshapedMm;
-            qInfo("%s: residual %.6g mm shaped, %.6g mm unshaped, expected %.6g mm",
-                  shaperName(type), e.shaping->residualShapedMm, e.shaping->residualUnshapedMm,
-                  expected);
+            const double h = 1e-5;
+            const auto motion = axisMotion(s.trajectory, 0);
+            std::vector<double> a;
+            for (double t = 0.0; t <= 0.3; t += h)
+                a.push_back(motion(t).acceleration);
+            const std::vector<double> amplitude = modeAmplitudes(a, h, 20.0, 0.05);
+            const auto end =
+                static_cast<std::size_t>(std::ceil(shapedMoveEndSeconds(s.trajectory) / h - 1e-9));
+            qInfo("%s: residual %.6g mm shaped (direct %.6g), %.6g mm unshaped", shaperName(type),
+                  e.shaping->residualShapedMm, amplitude[end], e.shaping->residualUnshapedMm);
             QVERIFY(e.shaping->residualUnshapedMm > 0.0);
-            QVERIFY(std::abs(e.shaping->residualShapedMm - expected) <=
+            QVERIFY(std::abs(e.shaping->residualShapedMm - amplitude[end]) <=
                     1e-3 * e.shaping->residualUnshapedMm);
         }
-        // At the default step (10 ms, a fifth of the mode's period) the residual is computed on
-        // the acceleration sampled 1 / (400 f) apart: w h / 2 = 0.8 % of an impulse's share,
-        // hence 1e-2 of the unshaped amplitude.
-        s.trajectory.dtSeconds = 0.01;
-        s.trajectory.durationSeconds = 1.0;
-        s.trajectory.shaping = {ShaperType::Zv, 20.0, 0.05};
-        const AxisEvaluation e = evaluateAxis(s, 0);
-        QVERIFY2(e.ok && e.shaping, e.error.c_str());
-        qInfo("zv at dt 10 ms: %.6g mm shaped, %.6g mm unshaped", e.shaping->residualShapedMm,
-              e.shaping->residualUnshapedMm);
-        QVERIFY(e.shaping->residualShapedMm <= 1e-2 * e.shaping->residualUnshapedMm);
     }
 
     /// The Vibration view's data: the resonant pair's peak 1 / (2 zeta sqrt(1 - zeta^2)) above
