@@ -74,6 +74,7 @@
 #include <QMessageBox>
 #include <QScreen>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
@@ -311,8 +312,17 @@ QWidget* MainWindow::buildSidePanel() {
     rightLayout->addWidget(metricsBox);
     rightLayout->addWidget(equationsBox, 1);
     right->setMinimumWidth(400);
-
-    return right;
+    // The column scrolls when the window is shorter than it: with a program's contour figures
+    // and several warnings it needs about 790 px, and a 1366x768 screen must not get a window
+    // taller than itself.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(right);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(right->minimumWidth() +
+                            scroll->verticalScrollBar()->sizeHint().width());
+    return scroll;
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {

@@ -3,6 +3,7 @@
 // data, not on pixels.
 #include "tests/support/gui_checks.h"
 #include "tests/support/tolerance.h"
+#include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/panels/equations_panel.h"
 #include "ui/panels/metrics_panel.h"
@@ -45,6 +46,7 @@ private slots:
     void invalidCoefficientListIsRejectedAtTheField();
     void sliderStepRelaysNoSplitter();
     void manyWarningsFitA1366x768Window();
+    void programWithFrictionFitsA1366x768Window();
     void viewsObserveThePresenter();
 
 private:
@@ -273,6 +275,32 @@ void TstMainWindow::sliderStepRelaysNoSplitter() {
         QVERIFY(session_->session().axes[0].gt.omegaNRadPerSec != before || step % 2); // it moved
     }
     QCOMPARE(counter.count, 0);
+}
+
+void TstMainWindow::programWithFrictionFitsA1366x768Window() {
+    // The friction tutorial's session: a G-code circle (contour and ISO 230-4 figures under the
+    // metrics table) with stick-slip and saturation warnings on both axes. The side column
+    // needed 792 px and the window grew taller than a 1366x768 screen; it now scrolls.
+    const auto loaded = xyt::files::loadSessionFile(
+        QStringLiteral(XYT_SOURCE_DIR "/resources/examples/friction_quadrant_glitches.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.message()));
+    session_->reset(loaded.session);
+    window_->lowerTabs()->setCurrentWidget(window_->contourPlot());
+    window_->resize(1366, 768);
+    QTest::qWait(50);
+    QVERIFY(!window_->metricsPanel()->noticeText().isEmpty());
+    QVERIFY2(window_->minimumSizeHint().height() <= 768,
+             qPrintable(QString::number(window_->minimumSizeHint().height())));
+    QCOMPARE(window_->height(), 768);
+    // The contour keeps one scale on both axes once laid out (a circle stays round): mm per
+    // pixel equal within 1 % (a pixel of rounding in an axis rect about 250 px tall is 0.4 %).
+    ContourPlot* plot = window_->contourPlot();
+    plot->replot();
+    const QRect rect = plot->axisRect()->rect();
+    const double xScale = plot->xAxis->range().size() / rect.width();
+    const double yScale = plot->yAxis->range().size() / rect.height();
+    QVERIFY2(std::abs(xScale / yScale - 1.0) < 0.01,
+             qPrintable(QStringLiteral("x %1 mm/px, y %2 mm/px").arg(xScale).arg(yScale)));
 }
 
 void TstMainWindow::manyWarningsFitA1366x768Window() {

@@ -68,6 +68,17 @@ ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
     worst_->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5),
                                             QColor(0xc6, 0x28, 0x28), 9));
     worst_->setName(tr("largest error"));
+    // One scale on both axes holds for the axis rect as laid out. A resize, or a legend that
+    // wraps to another row, changes that size only in the next replot's layout (after the fit
+    // that the resize or the new run made): the fit is made again there, before drawing.
+    connect(this, &QCustomPlot::afterLayout, this, [this] {
+        if (viewHeld() || axisRect()->rect().size() == fittedRectSize_)
+            return;
+        if (corner_ >= 0 && corner_ < cornerCount())
+            showCornerBox();
+        else
+            fitEqualScale();
+    });
     legend->setVisible(true);
     legend->setFont(QFont(font().family(), 8));
     legend->setBrush(QColor(255, 255, 255, 210));
@@ -459,6 +470,7 @@ void ContourPlot::showBox(double minX, double maxX, double minY, double maxY) {
     const double w = axisRect()->width(), h = axisRect()->height();
     if (w <= 0 || h <= 0)
         return;
+    fittedRectSize_ = axisRect()->rect().size();
     const double span = std::max({(maxX - minX) / w, (maxY - minY) / h, 1e-9}) * 1.12;
     xAxis->setRange((minX + maxX) / 2.0, span * w, Qt::AlignCenter);
     yAxis->setRange((minY + maxY) / 2.0, span * h, Qt::AlignCenter);

@@ -118,6 +118,7 @@ private:
     QCPTextElement* figures_;
     std::unique_ptr<PlotNotice> notice_;
     double magnification_ = 10.0;
+    QSize fittedRectSize_; ///< the axis rect's size at the last equal-scale fit
     bool polar_ = false;
     int corner_ = -1;
     Session session_;
