@@ -50,17 +50,18 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # xytune_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+# The extended description (CPack puts CPACK_PACKAGE_DESCRIPTION_SUMMARY before it as the
+# synopsis line and indents each line by one space).
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
-    "${PROJECT_DESCRIPTION}
- XY Tune designs, simulates and compares position controllers for the axes of an
- XY coordinate table: Guillemin-Truxal PI, pole placement with ZPETC feedforward
- and LinuxCNC's PID with command feedforward, with root locus, Bode, Nyquist,
- step and contour views, system identification from logged experiments, input
- shaping and robustness studies. The package holds the workbench (xytune), the
- command-line tool (xytune-cli), example G-code programs and logs.")
-# Depends from dpkg-shlibdeps over the installed binaries; it has to be told where the
-# package's own private libraries are, which belong to no other package.
+    "XY Tune designs, simulates and compares position controllers for the axes of an
+XY coordinate table: Guillemin-Truxal PI, pole placement with ZPETC feedforward
+and LinuxCNC's PID with command feedforward, with root locus, Bode, Nyquist,
+step and contour views, system identification from logged experiments, input
+shaping and robustness studies. The package holds the workbench (xytune), the
+command-line tool (xytune-cli), example G-code programs and logs.")
+# Depends from dpkg-shlibdeps over the staged binaries and libraries. It finds the private
+# libraries in the package itself through the RUNPATH ($ORIGIN resolved), so no
+# CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS into the build tree is needed (tests/install's
+# deb_package checks that Depends names no project library).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS
-    "${CMAKE_BINARY_DIR}/core" "${CMAKE_BINARY_DIR}/ui" "${CMAKE_BINARY_DIR}/ui/files")
 include(CPack)

@@ -1,12 +1,12 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Makes the Debian package of the build in a temporary folder and reads it back:
-#   cmake -DBUILD=<build dir> -DVERSION=<project version> -DAPP_ID=<id>
+#   cmake -DBUILD=<build dir> -DVERSION=<project version> -DAPP_ID=<id> -DCPACK=<cpack>
 #         -P check_deb_package.cmake
 # Checks: the control fields (name, version, section), Depends as dpkg-shlibdeps wrote them
 # (Qt Widgets, QCustomPlot, matio and the C library, nothing of the build tree: the private
 # libraries are in the package), and the package's files under /usr.
 cmake_minimum_required(VERSION 3.25)
-foreach(var BUILD VERSION APP_ID)
+foreach(var BUILD VERSION APP_ID CPACK)
     if(NOT DEFINED ${var})
         message(FATAL_ERROR "check_deb_package.cmake: -D${var}=... is missing")
     endif()
@@ -16,16 +16,16 @@ execute_process(COMMAND mktemp -d -t xytune-deb.XXXXXX OUTPUT_VARIABLE tmp
 if(NOT rc EQUAL 0 OR NOT IS_DIRECTORY "${tmp}")
     message(FATAL_ERROR "mktemp -d failed (${rc})")
 endif()
-macro(fail text)
+function(fail text)
     if("$ENV{XYT_KEEP_INSTALL}" STREQUAL "")
         file(REMOVE_RECURSE "${tmp}")
     else()
         message(STATUS "kept ${tmp}")
     endif()
     message(FATAL_ERROR "${text}")
-endmacro()
+endfunction()
 
-execute_process(COMMAND cpack -G DEB --config "${BUILD}/CPackConfig.cmake" -B "${tmp}"
+execute_process(COMMAND ${CPACK} -G DEB --config "${BUILD}/CPackConfig.cmake" -B "${tmp}"
                 OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
 file(GLOB debs "${tmp}/xytune_*.deb")
 list(LENGTH debs count)
@@ -33,13 +33,13 @@ if(NOT rc EQUAL 0 OR NOT count EQUAL 1)
     fail("cpack -G DEB: exit ${rc}, ${count} package(s):\n${out}\n${err}")
 endif()
 
-macro(field name expected_regex)
+function(field name expected_regex)
     execute_process(COMMAND dpkg-deb -f "${debs}" ${name} OUTPUT_VARIABLE value
                     OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE rc)
     if(NOT rc EQUAL 0 OR NOT value MATCHES "${expected_regex}")
         fail("${debs}: ${name} is '${value}', expected to match '${expected_regex}'")
     endif()
-endmacro()
+endfunction()
 field(Package "^xytune$")
 field(Version "^${VERSION}$")
 field(Section "^science$")
