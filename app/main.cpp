@@ -6,6 +6,7 @@
 #include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/robustness_view.h"
+#include "ui/session/install_paths.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
@@ -43,6 +44,10 @@ struct Options {
                            "With --screenshot: show this tab first (e.g. \"Design space\"; "
                            "a design-space or robustness study is run before the picture).",
                            "NAME"};
+    QCommandLineOption printExamplesFolder{
+        "print-examples-folder",
+        "Print the folder of the example programs the workbench offers (installed: "
+        "<prefix>/share/xytune/examples) and exit; empty when none is found."};
     void addTo(QCommandLineParser& parser) const {
         parser.setApplicationDescription(
             "Tuning workbench for XY coordinate-table position controllers");
@@ -51,6 +56,7 @@ struct Options {
         parser.addOption(screenshot);
         parser.addOption(size);
         parser.addOption(tab);
+        parser.addOption(printExamplesFolder);
         parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
     }
 };
@@ -76,6 +82,10 @@ int main(int argc, char* argv[]) {
             return 2;
         }
         early.process(core); // prints and exits for --help, --help-all and --version
+        if (early.isSet(options.printExamplesFolder)) {
+            std::printf("%s\n", qPrintable(xyt::ui::examplesFolder()));
+            return 0;
+        }
         const bool displayed = !qEnvironmentVariableIsEmpty("DISPLAY") ||
                                !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
                                !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");

@@ -24,6 +24,10 @@ void TstAppOptions::optionsWithoutADisplay_data() {
     QTest::newRow("mistyped option")
         << QStringList{"--screnshot", "a.png"} << 2 << "Unknown option 'screnshot'";
     QTest::newRow("no display, no screenshot") << QStringList{} << 2 << "no display";
+    // Run from the build tree, the examples are the source tree's (ui/session/install_paths.h;
+    // tests/install's install_prefix checks the installed program's).
+    QTest::newRow("--print-examples-folder")
+        << QStringList{"--print-examples-folder"} << 0 << "/resources/examples\n";
 }
 
 void TstAppOptions::optionsWithoutADisplay() {

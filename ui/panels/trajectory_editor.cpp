@@ -6,12 +6,12 @@
 #include "core/simulation/trajectory.h"
 #include "ui/panels/fitted_stack.h"
 #include "ui/panels/number_field.h"
+#include "ui/session/install_paths.h"
 
 #include "core/io/file_io.h"
 #include "core/session/program_trajectory.h"
 
 #include <QComboBox>
-#include <QCoreApplication>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -231,12 +231,7 @@ QWidget* TrajectoryEditor::buildProgramPage() {
 }
 
 QString TrajectoryEditor::examplesFolder() {
-    const QString installed =
-        QDir(QCoreApplication::applicationDirPath()).filePath("../share/xytune/examples");
-    for (const QString& folder : {installed, QStringLiteral(XYT_EXAMPLES_SOURCE_DIR)})
-        if (QFileInfo(folder).isDir())
-            return QDir(folder).absolutePath();
-    return QString();
+    return xyt::ui::examplesFolder();
 }
 
 bool TrajectoryEditor::loadProgramFile(const QString& path) {
