@@ -26,12 +26,19 @@ namespace {
  * the screen's pixels.
  */
 template <class Plot, class Fill>
-ReportFigure reportFigure(const QString& name, const QString& caption, int height, Fill fill) {
+ReportFigure reportFigure(const QString& name, const QString& caption, int height, Fill fill,
+                          const QString& hoverHint = QString()) {
     Plot plot;
     plot.setAttribute(Qt::WA_DontShowOnScreen);
     plot.resize(kReportFigureWidth, height);
     plot.show();
     fill(plot);
+    // The readout's "hover ..." hint asks for a mouse a page does not have: left out.
+    if (!hoverHint.isEmpty())
+        for (QCPLayoutElement* element : plot.plotLayout()->elements(true))
+            if (auto* text = qobject_cast<QCPTextElement*>(element);
+                text && text->text() == hoverHint)
+                text->setText(QString());
     for (int pass = 0; pass < 3; ++pass) // the queued layout passes (legend columns, titles)
         QCoreApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
     ReportFigure figure;
@@ -72,7 +79,8 @@ ReportFigure rootLocusFigure(const Session& s, const AxisEvaluation& e, int axis
                                     "Root locus of the loop 1 + K L = 0; the closed-loop poles of "
                                     "the design (K = 1) are marked, with the region the "
                                     "specification allows."),
-        460, [&](RootLocusPlot& plot) {
+        460,
+        [&](RootLocusPlot& plot) {
             if (!e.ok) {
                 plot.showNoResult(title, noDesignText(e));
                 return;
@@ -92,7 +100,8 @@ ReportFigure rootLocusFigure(const Session& s, const AxisEvaluation& e, int axis
             }
             const std::optional<LoopTransferFunctions> loop = axisLoop(e);
             plot.showLocus(loop ? rootLocus(loop->openLoop) : RootLocus{}, poles, title);
-        });
+        },
+        RootLocusPlot::readoutHint());
 }
 
 ReportFigure bodeFigure(const Session& s, const AxisEvaluation& e, int axis) {
@@ -105,7 +114,8 @@ ReportFigure bodeFigure(const Session& s, const AxisEvaluation& e, int axis) {
         QCoreApplication::translate("xyt::ui::ReportFigures",
                                     "Bode diagram of the open loop L with the gain and phase "
                                     "margins, and the closed loop."),
-        520, [&](BodePlot& plot) {
+        520,
+        [&](BodePlot& plot) {
             if (!e.ok) {
                 plot.showNoResult(title, noDesignText(e));
                 return;
@@ -121,7 +131,8 @@ ReportFigure bodeFigure(const Session& s, const AxisEvaluation& e, int axis) {
                               title,
                               {s.spec.minPhaseMarginDeg, s.spec.minGainMarginDb,
                                e.check.phaseMargin, e.check.gainMargin});
-        });
+        },
+        BodePlot::readoutHint());
 }
 
 ReportFigure stepFigure(const Session& s, const AxisEvaluation& e, int axis) {
@@ -133,7 +144,8 @@ ReportFigure stepFigure(const Session& s, const AxisEvaluation& e, int axis) {
         QCoreApplication::translate("xyt::ui::ReportFigures",
                                     "Unit step of the closed loop, with the specification's "
                                     "overshoot and settling limits."),
-        400, [&](StepPlot& plot) {
+        400,
+        [&](StepPlot& plot) {
             if (!e.ok) {
                 plot.showNoResult(title, noDesignText(e));
                 return;
@@ -149,7 +161,8 @@ ReportFigure stepFigure(const Session& s, const AxisEvaluation& e, int axis) {
                                                                      "No step response: %1")
                                              .arg(QString::fromUtf8(ex.what())));
             }
-        });
+        },
+        StepPlot::readoutHint());
 }
 
 ReportFigure timeFigure(const Session& s, const AxisEvaluation& e, int axis) {
