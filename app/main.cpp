@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // xytune: the tuning workbench. `xytune --screenshot FILE.png [--size WxH]` renders the main
-// window with the default design offscreen and exits.
+// window with the default design offscreen and exits; `xytune --report SESSION.json --pdf OUT.pdf`
+// writes the session's design report as a PDF, offscreen too.
 #include "app/allocator_tuning.h"
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
 #include "ui/main_window.h"
+#include "ui/report/report_writer.h"
 #include "ui/robustness_view.h"
 #include "ui/session/install_paths.h"
 #include "ui/session/recovery_store.h"
@@ -14,6 +16,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QPixmap>
 #include <QSettings>
 #include <QTabWidget>
@@ -25,9 +28,10 @@
 
 namespace {
 
-bool wantsScreenshot(int argc, char* argv[]) {
+/// A picture or a report: drawn offscreen, no display needed.
+bool wantsOffscreen(int argc, char* argv[]) {
     for (int i = 1; i < argc; ++i)
-        if (std::strcmp(argv[i], "--screenshot") == 0)
+        if (std::strcmp(argv[i], "--screenshot") == 0 || std::strcmp(argv[i], "--report") == 0)
             return true;
     return false;
 }
@@ -48,6 +52,11 @@ struct Options {
         "print-examples-folder",
         "Print the folder of the example programs the workbench offers (installed: "
         "<prefix>/share/xytune/examples) and exit; empty when none is found."};
+    QCommandLineOption report{"report",
+                              "Write the design report of SESSION.json as a PDF (needs --pdf) and "
+                              "exit.",
+                              "SESSION.json"};
+    QCommandLineOption pdf{"pdf", "With --report: the PDF file to write.", "OUT.pdf"};
     void addTo(QCommandLineParser& parser) const {
         parser.setApplicationDescription(
             "Tuning workbench for XY coordinate-table position controllers");
@@ -57,6 +66,8 @@ struct Options {
         parser.addOption(size);
         parser.addOption(tab);
         parser.addOption(printExamplesFolder);
+        parser.addOption(report);
+        parser.addOption(pdf);
         parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
     }
 };
@@ -65,6 +76,35 @@ void nameApplication() {
     QCoreApplication::setApplicationName("XY Tune");
     QCoreApplication::setOrganizationName("xytune");
     QCoreApplication::setApplicationVersion(QStringLiteral(PROJECT_VERSION_STRING));
+}
+
+/// --report SESSION.json --pdf OUT.pdf: the design report, no window shown. Exit 2 naming the
+/// option or the session's path on bad input.
+int writeReport(const QCommandLineParser& parser, const Options& options) {
+    if (!parser.isSet(options.report)) {
+        std::fprintf(stderr, "xytune: --pdf: needs --report SESSION.json\n");
+        return 2;
+    }
+    if (!parser.isSet(options.pdf) || parser.value(options.pdf).isEmpty()) {
+        std::fprintf(stderr, "xytune: --pdf: missing: --report needs --pdf OUT.pdf\n");
+        return 2;
+    }
+    const QString sessionPath = parser.value(options.report);
+    const auto loaded = xyt::files::loadSessionFile(sessionPath);
+    if (!loaded.ok) {
+        std::fprintf(stderr, "xytune: --report: %s: %s\n", qPrintable(sessionPath),
+                     qPrintable(loaded.message()));
+        return 2;
+    }
+    const QString path = parser.value(options.pdf);
+    QString error;
+    if (!xyt::ui::ReportWriter::write(loaded.session, QFileInfo(sessionPath).fileName(), path,
+                                      &error)) {
+        std::fprintf(stderr, "xytune: --pdf: %s\n", qPrintable(error));
+        return 2;
+    }
+    std::printf("%s\n", qPrintable(path));
+    return 0;
 }
 
 int main(int argc, char* argv[]) {
@@ -89,7 +129,7 @@ int main(int argc, char* argv[]) {
         const bool displayed = !qEnvironmentVariableIsEmpty("DISPLAY") ||
                                !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
                                !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
-        if (!early.isSet(options.screenshot) && !displayed) {
+        if (!early.isSet(options.screenshot) && !early.isSet(options.report) && !displayed) {
             std::fprintf(stderr,
                          "xytune: no display (DISPLAY and WAYLAND_DISPLAY are unset): run it in a "
                          "desktop session, use --screenshot FILE.png, or xytune-cli for the "
@@ -98,7 +138,7 @@ int main(int argc, char* argv[]) {
         }
     }
     // A screenshot needs no display: use the offscreen platform unless one was chosen.
-    if (wantsScreenshot(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    if (wantsOffscreen(argc, argv) && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
     nameApplication();
@@ -110,6 +150,8 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption& size = options.size;
     const QCommandLineOption& tab = options.tab;
 
+    if (parser.isSet(options.report) || parser.isSet(options.pdf))
+        return writeReport(parser, options);
     xyt::ui::TuningSession session;
     if (parser.isSet(screenshot)) {
         const QStringList wh = parser.value(size).split('x');

@@ -37,6 +37,7 @@
 #include "ui/plots/step_plot.h"
 #include "ui/plots/time_response_plot.h"
 #include "ui/plots/vibration_plot.h"
+#include "ui/report/report_exporter.h"
 #include "ui/robustness_view.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
@@ -599,6 +600,10 @@ MainWindow::~MainWindow() {
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     files_->populateMenu(file);
+    report_ = new ReportExporter(session_, files_, this);
+    report_->addToMenu(file);
+    connect(report_, &ReportExporter::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));

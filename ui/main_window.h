@@ -27,6 +27,7 @@ namespace xyt::ui {
 class ContourControls;
 class ContourPlot;
 class RecoveryStore;
+class ReportExporter;
 class EquationsPanel;
 class ImplementationEditor;
 class MetricsPanel;
@@ -107,6 +108,8 @@ public:
     EquationsPanel* equationsPanel() const { return equations_; }
     QTabBar* axisTabs() const { return axisTabs_; }
     SessionFileController* files() const { return files_; }
+    /// File › Export report.
+    ReportExporter* reportExporter() const { return report_; }
     RecoveryStore* recovery() const { return recovery_; }
     /// Stores the current design as a snapshot named @p name (undoable).
     void storeSnapshot(const QString& name);
@@ -202,6 +205,7 @@ private:
     PoleZeroView* poleZeroView_ = nullptr;
     ParameterLocusView* parameterLocusView_ = nullptr;
     SessionFileController* files_ = nullptr;
+    ReportExporter* report_ = nullptr;
     RecoveryStore* recovery_ = nullptr;
     QMenu* overlayMenu_ = nullptr;
     void updateTitle();

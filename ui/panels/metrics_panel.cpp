@@ -56,30 +56,70 @@ MetricsPanel::MetricsPanel(QWidget* parent) : QWidget(parent) {
 void MetricsPanel::buildTable() {
     table_ = new QTableWidget(RowCount, 3, this);
     table_->setHorizontalHeaderLabels({tr("X"), tr("Y"), tr("spec")});
-    table_->setVerticalHeaderLabels({QString(),
-                                     tr("RMSE (mm)"),
-                                     tr("max |e| (mm)"),
-                                     tr("max |e| (%)"),
-                                     tr("max |u| (V)"),
-                                     tr("saturated (s)"),
-                                     tr("ITAE (mm·s²)"),
-                                     tr("ZPETC gain (%)"),
-                                     QString(),
-                                     tr("settle time (s)"),
-                                     tr("final e (mm)"),
-                                     tr("overrun (mm)"),
-                                     QString(),
-                                     tr("settling 2 % (s)"),
-                                     tr("overshoot (%)"),
-                                     QString(),
-                                     tr("RMSE (mm)"),
-                                     tr("max |e| (mm)"),
-                                     tr("min ζ (z-plane)"),
-                                     QString(),
-                                     tr("gain margin (dB)"),
-                                     tr("phase margin (°)"),
-                                     tr("delay margin (s)"),
-                                     tr("Ms = max |S|")});
+    QStringList titles;
+    for (int r = 0; r < RowCount; ++r)
+        titles << rowTitle(r);
+    table_->setVerticalHeaderLabels(titles);
+}
+
+QString MetricsPanel::rowTitle(int row) {
+    switch (row) {
+    case Rmse:
+    case DigitalRmse:
+        return tr("RMSE (mm)");
+    case MaxError:
+    case DigitalMaxError:
+        return tr("max |e| (mm)");
+    case MaxErrorPct:
+        return tr("max |e| (%)");
+    case MaxU:
+        return tr("max |u| (V)");
+    case Saturated:
+        return tr("saturated (s)");
+    case Itae:
+        return tr("ITAE (mm·s²)");
+    case Improvement:
+        return tr("ZPETC gain (%)");
+    case SettleAfterMove:
+        return tr("settle time (s)");
+    case FinalError:
+        return tr("final e (mm)");
+    case FinalOvershoot:
+        return tr("overrun (mm)");
+    case Settling:
+        return tr("settling 2 % (s)");
+    case Overshoot:
+        return tr("overshoot (%)");
+    case DigitalDamping:
+        return tr("min ζ (z-plane)");
+    case GainMargin:
+        return tr("gain margin (dB)");
+    case PhaseMargin:
+        return tr("phase margin (°)");
+    case DelayMargin:
+        return tr("delay margin (s)");
+    case PeakSensitivity:
+        return tr("Ms = max |S|");
+    default:
+        return QString(); // a group's title row
+    }
+}
+
+QString MetricsPanel::groupTitle(int row) {
+    switch (row) {
+    case TrackingGroup:
+        return tr("Tracking the trajectory");
+    case MoveGroup:
+        return tr("Move and settle (point-to-point)");
+    case StepGroup:
+        return tr("Unit step, as each axis runs");
+    case DigitalGroup:
+        return tr("Digital implementation");
+    case MarginGroup:
+        return tr("Loop margins (open loop L)");
+    default:
+        return QString();
+    }
 }
 
 void MetricsPanel::describeRows() {
@@ -109,12 +149,8 @@ void MetricsPanel::describeRows() {
 
 void MetricsPanel::addGroupTitles() {
     // Group titles: which system and which signal each block of figures belongs to.
-    const QList<QPair<int, QString>> groups = {{TrackingGroup, tr("Tracking the trajectory")},
-                                               {MoveGroup, tr("Move and settle (point-to-point)")},
-                                               {StepGroup, tr("Unit step, as each axis runs")},
-                                               {DigitalGroup, tr("Digital implementation")},
-                                               {MarginGroup, tr("Loop margins (open loop L)")}};
-    for (const auto& [row, title] : groups) {
+    for (const int row : {TrackingGroup, MoveGroup, StepGroup, DigitalGroup, MarginGroup}) {
+        const QString title = groupTitle(row);
         table_->setSpan(row, 0, 1, 3);
         auto* item = new QTableWidgetItem(title);
         QFont bold = item->font();

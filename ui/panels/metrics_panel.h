@@ -89,6 +89,11 @@ public:
                row == DigitalGroup || row == MarginGroup;
     }
     static bool isMarginRow(int row) { return row > MarginGroup; }
+    /// The title of figure row @p row as the table's header shows it ("RMSE (mm)"; "" for a
+    /// group row), and of group row @p row ("Tracking the trajectory"; "" for a figure row):
+    /// the design report names its rows with them.
+    static QString rowTitle(int row);
+    static QString groupTitle(int row);
     /// Fills the loop-margin rows of column @p axis from the axis' evaluation (its margins are
     /// the ones the frequency analysis draws; the panel does not need the curves, so a slider
     /// step does not compute them for the table), judged (✓/✗) against the minima with the
