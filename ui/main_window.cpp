@@ -312,7 +312,6 @@ QWidget* MainWindow::buildSidePanel() {
     equationsLayout->addWidget(equations_);
     rightLayout->addWidget(metricsBox);
     rightLayout->addWidget(equationsBox, 1);
-    right->setMinimumWidth(400);
     // The column scrolls when the window is shorter than it: with a program's contour figures
     // and several warnings it needs about 790 px, and a 1366x768 screen must not get a window
     // taller than itself.
@@ -321,8 +320,10 @@ QWidget* MainWindow::buildSidePanel() {
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(right->minimumWidth() +
-                            scroll->verticalScrollBar()->sizeHint().width());
+    // 400 px with the scroll bar, as wide as the column was before it scrolled: the plots in
+    // the middle keep their width (their legends are laid out for it at 1366 px).
+    scroll->setMinimumWidth(400);
+    right->setMinimumWidth(400 - scroll->verticalScrollBar()->sizeHint().width());
     return scroll;
 }
 
