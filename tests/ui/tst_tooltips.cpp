@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Every input, button, plot and metric row of the workbench says what it is: the main window in
+// two states (a Guillemin–Truxal axis; a PID + feedforward axis beside a pole-placement one),
+// with every fold open and every tab shown in turn, and the dialogs of the Design menu.
+//
+// The rule, as a user meets it: hovering a widget shows its own toolTip(). A widget is checked
+// when it is visible and is a QLineEdit, QAbstractSpinBox, QSlider, QComboBox, QCheckBox,
+// QCustomPlot or QAbstractButton, except the parts Qt builds inside another widget, which the
+// user sees as that widget (so that one is checked instead): the line edit of a spin box or of an
+// editable combo box, the scroll buttons of a tab bar, the corner button of a table, and the
+// standard buttons of a QDialogButtonBox (OK, Cancel, Close say what they do; a button of its own
+// added to the box is checked). It passes when its
+// own toolTip() is not empty; a tooltip on a group box or a label beside it does not count,
+// since hovering the field does not show it. A metric row passes when its header item (the row
+// title the user hovers) has a tooltip.
+#include "ui/coupling_sweep_dialog.h"
+#include "ui/friction_curve_dialog.h"
+#include "ui/identification_window.h"
+#include "ui/main_window.h"
+#include "ui/panels/metrics_panel.h"
+#include "ui/pid_tuning_dialog.h"
+#include "ui/session/tuning_session.h"
+
+#include <QAbstractItemView>
+#include <QAbstractSpinBox>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLineEdit>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QTest>
+#include <QToolButton>
+#include <qcustomplot.h>
+
+#include <memory>
+
+using namespace xyt;
+using namespace xyt::ui;
+
+namespace {
+
+bool tooltipChecked(QWidget* w) {
+    const bool kind = qobject_cast<QLineEdit*>(w) || qobject_cast<QAbstractSpinBox*>(w) ||
+                      qobject_cast<QSlider*>(w) || qobject_cast<QComboBox*>(w) ||
+                      qobject_cast<QCheckBox*>(w) || qobject_cast<QCustomPlot*>(w) ||
+                      qobject_cast<QAbstractButton*>(w);
+    if (!kind)
+        return false;
+    QWidget* parent = w->parentWidget();
+    // Parts Qt builds inside another widget (see the rule above).
+    if (qobject_cast<QLineEdit*>(w) && parent &&
+        (qobject_cast<QAbstractSpinBox*>(parent) || qobject_cast<QComboBox*>(parent)))
+        return false;
+    if (auto* button = qobject_cast<QAbstractButton*>(w); button && parent) {
+        if (qobject_cast<QTabBar*>(parent) || qobject_cast<QAbstractItemView*>(parent) ||
+            QByteArray(w->metaObject()->className()) == "QTableCornerButton")
+            return false;
+        if (auto* box = qobject_cast<QDialogButtonBox*>(parent);
+            box && box->standardButton(button) != QDialogButtonBox::NoButton)
+            return false;
+    }
+    return true;
+}
+
+/// How an offender is named in the failure message: class, object and accessible names, its
+/// text, and the nearest named ancestor.
+QString describe(QWidget* w) {
+    QString text;
+    if (auto* button = qobject_cast<QAbstractButton*>(w))
+        text = button->text();
+    else if (auto* edit = qobject_cast<QLineEdit*>(w))
+        text = edit->placeholderText();
+    QString ancestor;
+    for (QWidget* p = w->parentWidget(); p && ancestor.isEmpty(); p = p->parentWidget())
+        if (!p->objectName().isEmpty() && !p->objectName().startsWith("qt_"))
+            ancestor = p->objectName();
+    return QStringLiteral("%1 '%2' (accessible '%3', text '%4', in '%5')")
+        .arg(QString::fromLatin1(w->metaObject()->className()), w->objectName(),
+             w->accessibleName(), text, ancestor);
+}
+
+/// The visible widgets of @p root that the rule checks and that have no tooltip.
+QStringList offenders(QWidget* root) {
+    QStringList found;
+    QList<QWidget*> widgets = root->findChildren<QWidget*>();
+    widgets.prepend(root);
+    for (QWidget* w : widgets)
+        if (w->isVisible() && tooltipChecked(w) && w->toolTip().trimmed().isEmpty())
+            found << describe(w);
+    return found;
+}
+
+/// Opens every fold of the window (checkable flat tool buttons with a body under them).
+void openFolds(QWidget* root) {
+    for (QToolButton* fold : root->findChildren<QToolButton*>())
+        if (fold->isCheckable() && !fold->isChecked() && fold->isVisible() && fold->isEnabled() &&
+            fold->autoRaise())
+            fold->click();
+    QApplication::processEvents();
+}
+
+/// Every tab of every tab widget shown in turn: the offenders found on any of them.
+QStringList offendersOnEveryTab(QWidget* root) {
+    QStringList found = offenders(root);
+    for (QTabWidget* tabs : root->findChildren<QTabWidget*>()) {
+        if (!tabs->isVisible())
+            continue;
+        const int before = tabs->currentIndex();
+        for (int i = 0; i < tabs->count(); ++i) {
+            tabs->setCurrentIndex(i);
+            QApplication::processEvents();
+            openFolds(tabs->widget(i));
+            for (const QString& o : offenders(root))
+                if (!found.contains(o))
+                    found << o;
+        }
+        tabs->setCurrentIndex(before);
+    }
+    return found;
+}
+
+} // namespace
+
+class TstTooltips : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true); // settings stay out of $HOME
+        QCoreApplication::setOrganizationName("xytune-tests");
+    }
+
+    void init() {
+        window_.reset(); // before its session
+        session_ = std::make_unique<TuningSession>();
+        window_ = std::make_unique<MainWindow>(session_.get());
+        window_->resize(1366, 900);
+        window_->show();
+        QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+    }
+    void cleanup() {
+        window_.reset();
+        session_.reset();
+    }
+
+    // The default session: Guillemin–Truxal axes, every fold open, every tab shown.
+    void guilleminTruxalAxis() {
+        openFolds(window_.get());
+        const QStringList found = offendersOnEveryTab(window_.get());
+        QVERIFY2(found.isEmpty(), qPrintable("without a tooltip:\n" + found.join("\n")));
+        // The test sees the fields it claims to: the sliders, the method box, the plots.
+        QVERIFY(window_->findChildren<QSlider*>().size() >= 2);
+        QVERIFY(window_->findChildren<QCustomPlot*>().size() >= 8);
+    }
+
+    // A PID + feedforward axis x (its own editor) and a pole-placement axis y.
+    void pidAndPolePlacementAxes() {
+        Session s = Session::paperDefault();
+        s.axes[0].method = DesignMethod::PidFeedforward;
+        s.axes[1].method = DesignMethod::PolePlacementZpetc;
+        session_->reset(s);
+        QApplication::processEvents();
+        for (int axis : {0, 1}) {
+            session_->setCurrentAxis(axis);
+            QApplication::processEvents();
+            openFolds(window_.get());
+            const QStringList found = offendersOnEveryTab(window_.get());
+            QVERIFY2(found.isEmpty(),
+                     qPrintable(QStringLiteral("axis %1, without a tooltip:\n").arg(axis) +
+                                found.join("\n")));
+        }
+    }
+
+    // Every figure row of the metrics panel says what it is, its unit and how it is computed.
+    void everyMetricRowIsDescribed() {
+        QTableWidget* table = window_->metricsPanel()->table();
+        QStringList missing;
+        for (int row = 0; row < table->rowCount(); ++row) {
+            if (MetricsPanel::isGroupRow(row))
+                continue;
+            const QTableWidgetItem* header = table->verticalHeaderItem(row);
+            QVERIFY(header);
+            if (header->toolTip().trimmed().isEmpty())
+                missing << header->text();
+        }
+        QVERIFY2(missing.isEmpty(),
+                 qPrintable("metric rows without a tooltip: " + missing.join(", ")));
+        QCOMPARE(table->rowCount(), int(MetricsPanel::RowCount));
+    }
+
+    // The dialogs of the Design menu, shown as the menu shows them.
+    void designDialogs() {
+        std::vector<std::unique_ptr<QWidget>> dialogs;
+        dialogs.emplace_back(new PidTuningDialog(session_.get(), 0));
+        dialogs.emplace_back(new FrictionCurveDialog(session_.get()));
+        dialogs.emplace_back(new IdentificationWindow(session_.get()));
+        dialogs.emplace_back(new CouplingSweepDialog(session_.get()));
+        for (const auto& dialog : dialogs) {
+            dialog->show();
+            QVERIFY(QTest::qWaitForWindowExposed(dialog.get()));
+            const QStringList found = offendersOnEveryTab(dialog.get());
+            QVERIFY2(found.isEmpty(), qPrintable(QStringLiteral("%1, without a tooltip:\n")
+                                                     .arg(dialog->metaObject()->className()) +
+                                                 found.join("\n")));
+            dialog->close();
+        }
+    }
+
+    // The rule catches a widget without one (so that the checks above cannot pass vacuously).
+    void theRuleCatchesAMissingTooltip() {
+        QWidget root;
+        auto* named = new QCheckBox("described", &root);
+        named->setToolTip("a tooltip");
+        auto* bare = new QCheckBox("bare", &root);
+        bare->setObjectName("bareBox");
+        auto* spin = new QSpinBox(&root); // its inner line edit is not checked, the box is
+        spin->setToolTip("a spin box");
+        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok, &root);
+        auto* layout = new QVBoxLayout(&root);
+        for (QWidget* w : std::initializer_list<QWidget*>{named, bare, spin, buttons})
+            layout->addWidget(w);
+        root.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&root));
+        const QStringList found = offenders(&root);
+        QCOMPARE(found.size(), 1);
+        QVERIFY(found.first().contains("bareBox"));
+    }
+
+private:
+    std::unique_ptr<TuningSession> session_;
+    std::unique_ptr<MainWindow> window_;
+};
+
+QTEST_MAIN(TstTooltips)
+#include "tst_tooltips.moc"
