@@ -17,7 +17,9 @@
 #include "ui/friction_curve_dialog.h"
 #include "ui/identification_window.h"
 #include "ui/main_window.h"
+#include "ui/panels/friction_editor.h"
 #include "ui/panels/metrics_panel.h"
+#include "ui/panels/number_field.h"
 #include "ui/pid_tuning_dialog.h"
 #include "ui/session/tuning_session.h"
 
@@ -27,15 +29,19 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QLineEdit>
+#include <QSet>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
 #include <QToolButton>
+#include <QVBoxLayout>
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <memory>
 
 using namespace xyt;
@@ -83,15 +89,36 @@ QString describe(QWidget* w) {
              w->accessibleName(), text, ancestor);
 }
 
-/// The visible widgets of @p root that the rule checks and that have no tooltip.
-QStringList offenders(QWidget* root) {
-    QStringList found;
+/// What a walk found: the offenders, and every widget it checked.
+struct Walk {
+    QStringList offenders;
+    QSet<QWidget*> checked;
+    /// The checked widgets of type T (to show the walk saw what it claims to).
+    template <typename T> int count() const {
+        return static_cast<int>(std::count_if(checked.begin(), checked.end(),
+                                              [](QWidget* w) { return qobject_cast<T*>(w); }));
+    }
+};
+
+/// Adds the visible widgets of @p root that the rule checks to @p walk, and those without a
+/// tooltip to its offenders.
+void walkVisible(QWidget* root, Walk& walk) {
     QList<QWidget*> widgets = root->findChildren<QWidget*>();
     widgets.prepend(root);
-    for (QWidget* w : widgets)
-        if (w->isVisible() && tooltipChecked(w) && w->toolTip().trimmed().isEmpty())
-            found << describe(w);
-    return found;
+    for (QWidget* w : widgets) {
+        if (!w->isVisible() || !tooltipChecked(w))
+            continue;
+        walk.checked.insert(w);
+        const QString name = describe(w);
+        if (w->toolTip().trimmed().isEmpty() && !walk.offenders.contains(name))
+            walk.offenders << name;
+    }
+}
+
+QStringList offenders(QWidget* root) {
+    Walk walk;
+    walkVisible(root, walk);
+    return walk.offenders;
 }
 
 /// Opens every fold of the window (checkable flat tool buttons with a body under them).
@@ -103,9 +130,10 @@ void openFolds(QWidget* root) {
     QApplication::processEvents();
 }
 
-/// Every tab of every tab widget shown in turn: the offenders found on any of them.
-QStringList offendersOnEveryTab(QWidget* root) {
-    QStringList found = offenders(root);
+/// The walk of @p root with every tab of every tab widget shown in turn.
+Walk walkEveryTab(QWidget* root) {
+    Walk walk;
+    walkVisible(root, walk);
     for (QTabWidget* tabs : root->findChildren<QTabWidget*>()) {
         if (!tabs->isVisible())
             continue;
@@ -114,13 +142,11 @@ QStringList offendersOnEveryTab(QWidget* root) {
             tabs->setCurrentIndex(i);
             QApplication::processEvents();
             openFolds(tabs->widget(i));
-            for (const QString& o : offenders(root))
-                if (!found.contains(o))
-                    found << o;
+            walkVisible(root, walk);
         }
         tabs->setCurrentIndex(before);
     }
-    return found;
+    return walk;
 }
 
 } // namespace
@@ -150,11 +176,20 @@ private slots:
     // The default session: Guillemin–Truxal axes, every fold open, every tab shown.
     void guilleminTruxalAxis() {
         openFolds(window_.get());
-        const QStringList found = offendersOnEveryTab(window_.get());
-        QVERIFY2(found.isEmpty(), qPrintable("without a tooltip:\n" + found.join("\n")));
-        // The test sees the fields it claims to: the sliders, the method box, the plots.
-        QVERIFY(window_->findChildren<QSlider*>().size() >= 2);
-        QVERIFY(window_->findChildren<QCustomPlot*>().size() >= 8);
+        const Walk walk = walkEveryTab(window_.get());
+        QVERIFY2(walk.offenders.isEmpty(),
+                 qPrintable("without a tooltip:\n" + walk.offenders.join("\n")));
+        // The walk saw what it claims to: the ωn and kp sliders, every plot of the six upper and
+        // three lower plot tabs plus the design-space map and the robustness plots, the method
+        // and trajectory boxes, and the folds' fields.
+        QVERIFY2(walk.count<QSlider>() >= 2, qPrintable(QString::number(walk.count<QSlider>())));
+        QVERIFY2(walk.count<QCustomPlot>() >= 11,
+                 qPrintable(QString::number(walk.count<QCustomPlot>())));
+        QVERIFY2(walk.count<QComboBox>() >= 5,
+                 qPrintable(QString::number(walk.count<QComboBox>())));
+        QVERIFY2(walk.count<QLineEdit>() >= 25,
+                 qPrintable(QString::number(walk.count<QLineEdit>())));
+        QVERIFY(walk.checked.contains(window_->frictionEditor()->field("coulomb")));
     }
 
     // A PID + feedforward axis x (its own editor) and a pole-placement axis y.
@@ -168,10 +203,11 @@ private slots:
             session_->setCurrentAxis(axis);
             QApplication::processEvents();
             openFolds(window_.get());
-            const QStringList found = offendersOnEveryTab(window_.get());
-            QVERIFY2(found.isEmpty(),
+            const Walk walk = walkEveryTab(window_.get());
+            QVERIFY2(walk.offenders.isEmpty(),
                      qPrintable(QStringLiteral("axis %1, without a tooltip:\n").arg(axis) +
-                                found.join("\n")));
+                                walk.offenders.join("\n")));
+            QVERIFY(walk.checked.size() >= 40);
         }
     }
 
@@ -202,10 +238,12 @@ private slots:
         for (const auto& dialog : dialogs) {
             dialog->show();
             QVERIFY(QTest::qWaitForWindowExposed(dialog.get()));
-            const QStringList found = offendersOnEveryTab(dialog.get());
-            QVERIFY2(found.isEmpty(), qPrintable(QStringLiteral("%1, without a tooltip:\n")
-                                                     .arg(dialog->metaObject()->className()) +
-                                                 found.join("\n")));
+            const Walk walk = walkEveryTab(dialog.get());
+            QVERIFY2(walk.offenders.isEmpty(),
+                     qPrintable(QStringLiteral("%1, without a tooltip:\n")
+                                    .arg(dialog->metaObject()->className()) +
+                                walk.offenders.join("\n")));
+            QVERIFY(walk.checked.size() >= 3);
             dialog->close();
         }
     }

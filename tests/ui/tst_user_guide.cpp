@@ -136,9 +136,12 @@ private slots:
         const QPoint at = guide.browser()->cursorRect(cursor).center();
         QTest::mouseClick(guide.browser()->viewport(), Qt::LeftButton, {}, at);
         QTRY_COMPARE(guide.currentPage(), expected);
+        // The contents mark the page shown (a new page, as after Back and Forward below).
+        QCOMPARE(guide.contents()->currentItem()->data(Qt::UserRole).toUrl(), expected);
         QVERIFY(guide.backButton()->isEnabled());
         QTest::mouseClick(guide.backButton(), Qt::LeftButton);
         QTRY_COMPARE(guide.currentPage(), from);
+        QCOMPARE(guide.contents()->currentItem()->data(Qt::UserRole).toUrl(), from);
         QVERIFY(guide.forwardButton()->isEnabled());
         QTest::mouseClick(guide.forwardButton(), Qt::LeftButton);
         QTRY_COMPARE(guide.currentPage(), expected);
@@ -192,9 +195,11 @@ private slots:
         page.show();
         QVERIFY(QTest::qWaitForWindowExposed(&page));
         QCOMPARE(page.sessionList()->count(), 2);
-        QCOMPARE(page.sessionList()->item(0)->text(), "PID and feedforward (pid.json)");
-        QCOMPARE(page.sessionList()->item(1)->text(), "A lower limit (slow_axes.json)");
-        QCOMPARE(page.examples().at(0).tutorial, "feedforward");
+        QCOMPARE(page.sessionList()->item(0)->text(),
+                 QStringLiteral("PID and feedforward (pid.json)"));
+        QCOMPARE(page.sessionList()->item(1)->text(),
+                 QStringLiteral("A lower limit (slow_axes.json)"));
+        QCOMPARE(page.examples().at(0).tutorial, QStringLiteral("feedforward"));
         QCOMPARE(WelcomeDialog::tutorialPage("feedforward"),
                  UserGuideWindow::docsUrl("user-guide/feedforward.md"));
         QVERIFY(session.session().umaxVolts != 1.75);
@@ -202,6 +207,8 @@ private slots:
         QListWidget* list = page.sessionList();
         list->scrollToItem(list->item(1));
         const QPoint at = list->visualItemRect(list->item(1)).center();
+        // (A press first, as a real double click has: the view activates the pressed item.)
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, at);
         QTest::mouseDClick(list->viewport(), Qt::LeftButton, {}, at);
         QCOMPARE(session.session().umaxVolts, 1.75);
         QCOMPARE(window.files()->currentFile(), QDir(folder.path()).filePath("slow_axes.json"));
@@ -218,9 +225,9 @@ private slots:
         QVERIFY(other.open(QIODevice::WriteOnly));
         const QList<ExampleSession> found = WelcomeDialog::exampleSessions(folder.path());
         QCOMPARE(found.size(), 2);
-        QCOMPARE(found.at(0).file, "a.json");
-        QCOMPARE(found.at(0).title, "a.json");
-        QCOMPARE(found.at(1).file, "b.json");
+        QCOMPARE(found.at(0).file, QStringLiteral("a.json"));
+        QCOMPARE(found.at(0).title, QStringLiteral("a.json"));
+        QCOMPARE(found.at(1).file, QStringLiteral("b.json"));
     }
 
     // A tutorial chosen on the page asks for its user-guide page.

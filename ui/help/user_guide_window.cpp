@@ -170,10 +170,13 @@ UserGuideWindow::UserGuideWindow(QWidget* parent) : QWidget(parent, Qt::Window) 
     connect(browser_, &QTextBrowser::backwardAvailable, back_, &QToolButton::setEnabled);
     connect(browser_, &QTextBrowser::forwardAvailable, forward_, &QToolButton::setEnabled);
     connect(browser_, &QTextBrowser::anchorClicked, this, &UserGuideWindow::followLink);
-    connect(browser_, &QTextBrowser::sourceChanged, this, [this] {
-        markCurrent();
-        const QString title = browser_->documentTitle().isEmpty() ? pageTitle(currentPage())
-                                                                  : browser_->documentTitle();
+    // (source() is still the page before while sourceChanged is emitted for a new page: the
+    // signal's own URL is the page shown.)
+    connect(browser_, &QTextBrowser::sourceChanged, this, [this](const QUrl& source) {
+        const QUrl page = source.adjusted(QUrl::RemoveFragment);
+        markCurrent(page);
+        const QString title =
+            browser_->documentTitle().isEmpty() ? pageTitle(page) : browser_->documentTitle();
         setWindowTitle(tr("%1 – XY Tune user guide").arg(title));
     });
     connect(contents_, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* item) {
@@ -212,8 +215,7 @@ void UserGuideWindow::followLink(const QUrl& link) {
     QDesktopServices::openUrl(target); // a web page or a mail address: the system's program
 }
 
-void UserGuideWindow::markCurrent() {
-    const QUrl page = currentPage();
+void UserGuideWindow::markCurrent(const QUrl& page) {
     const QSignalBlocker blocker(contents_);
     for (int row = 0; row < contents_->count(); ++row)
         if (contents_->item(row)->data(Qt::UserRole).toUrl() == page) {

@@ -53,8 +53,8 @@ public:
 private:
     /// A link clicked in a page: a bundled page is shown, a web address opened outside.
     void followLink(const QUrl& link);
-    /// Selects the page shown in the contents list (without following the selection).
-    void markCurrent();
+    /// Selects @p page in the contents list (without following the selection).
+    void markCurrent(const QUrl& page);
 
     QTextBrowser* browser_ = nullptr;
     QListWidget* contents_ = nullptr;

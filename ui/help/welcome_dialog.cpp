@@ -110,6 +110,7 @@ WelcomeDialog::WelcomeDialog(SessionFileController* files, const QString& exampl
     auto* sessionBox = new QGroupBox(tr("Example sessions"), this);
     sessions_ = new QListWidget(sessionBox);
     sessions_->setObjectName("welcomeSessions");
+    sessions_->setWordWrap(true);
     sessions_->setToolTip(tr("Example sessions shipped with XY Tune: double-click one to open "
                              "it in the workbench (as File › Open would)"));
     for (const ExampleSession& example : examples_) {
