@@ -18,6 +18,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -157,6 +158,28 @@ private slots:
         QCOMPARE(guide.currentPage(), UserGuideWindow::docsUrl("equations.md"));
         QTest::mouseClick(guide.homeButton(), Qt::LeftButton);
         QCOMPARE(guide.currentPage(), UserGuideWindow::homePage());
+    }
+
+    // A link to a section (GitHub's anchor of a heading, as the pages write them) scrolls to it:
+    // the command table of cli.md links to each command's section.
+    void aSectionLinkScrollsToIt() {
+        UserGuideWindow guide;
+        guide.resize(900, 500);
+        guide.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&guide));
+        guide.showPage(QStringLiteral("cli.md"));
+        QScrollBar* scroll = guide.browser()->verticalScrollBar();
+        QCOMPARE(scroll->value(), 0);
+        emit guide.browser()->anchorClicked(QUrl(QStringLiteral("#excite"))); // the last command
+        QTRY_VERIFY(scroll->value() > 0);
+        QCOMPARE(guide.currentPage(), UserGuideWindow::docsUrl("cli.md"));
+        const int excite = scroll->value();
+        // From another page, to a section of cli.md: the page opens at that section.
+        guide.showPage(QStringLiteral("exports.md"));
+        emit guide.browser()->anchorClicked(QUrl(QStringLiteral("cli.md#export")));
+        QTRY_COMPARE(guide.currentPage(), UserGuideWindow::docsUrl("cli.md"));
+        QTRY_VERIFY(scroll->value() > 0);
+        QVERIFY(scroll->value() < excite); // export comes before excite
     }
 
     // Help › User guide and Help › Command-line reference open one window at the right page.

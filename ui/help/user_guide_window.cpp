@@ -11,7 +11,10 @@
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStyle>
+#include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -27,6 +30,35 @@ const QStringList& userGuideReferenceOrder() {
                                    "equations.md",    "report.md",         "install.md",
                                    "architecture.md", "contributing.md"};
     return order;
+}
+
+/// The anchor GitHub gives a heading ("## Guillemin–Truxal PI (Braga et al.)" →
+/// "guillemintruxal-pi-braga-et-al"): lower case, letters, digits, '-' and '_' kept, spaces
+/// made '-', everything else dropped. The pages link to sections by it (`cli.md#export`).
+QString userGuideHeadingSlug(const QString& heading) {
+    QString slug;
+    for (const QChar c : heading.trimmed().toLower()) {
+        if (c.isLetterOrNumber() || c == u'-' || c == u'_')
+            slug += c;
+        else if (c == u' ')
+            slug += u'-';
+    }
+    return slug;
+}
+
+/// Gives each heading of @p document its GitHub anchor name, so that links to a section work
+/// here as on the web (Qt's Markdown reader names no heading).
+void userGuideNameHeadings(QTextDocument* document) {
+    for (QTextBlock block = document->begin(); block.isValid(); block = block.next()) {
+        if (block.blockFormat().headingLevel() == 0 || block.text().isEmpty())
+            continue;
+        QTextCursor cursor(block);
+        cursor.movePosition(QTextCursor::EndOfBlock, QTextCursor::KeepAnchor);
+        QTextCharFormat named;
+        named.setAnchor(true);
+        named.setAnchorNames({userGuideHeadingSlug(block.text())});
+        cursor.mergeCharFormat(named);
+    }
 }
 
 bool userGuideIsMarkdown(const QUrl& url) {
@@ -174,6 +206,9 @@ UserGuideWindow::UserGuideWindow(QWidget* parent) : QWidget(parent, Qt::Window) 
     // signal's own URL is the page shown.)
     connect(browser_, &QTextBrowser::sourceChanged, this, [this](const QUrl& source) {
         const QUrl page = source.adjusted(QUrl::RemoveFragment);
+        userGuideNameHeadings(browser_->document());
+        if (source.hasFragment())
+            browser_->scrollToAnchor(source.fragment());
         markCurrent(page);
         const QString title =
             browser_->documentTitle().isEmpty() ? pageTitle(page) : browser_->documentTitle();
