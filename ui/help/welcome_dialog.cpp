@@ -61,6 +61,8 @@ QUrl WelcomeDialog::tutorialPage(const QString& tutorial) {
     QString path = tutorial.trimmed();
     if (path.isEmpty())
         return QUrl();
+    if (path.startsWith("docs/"))
+        path = path.mid(QStringLiteral("docs/").size());
     if (path.startsWith("user-guide/"))
         path = path.mid(QStringLiteral("user-guide/").size());
     if (!path.endsWith(".md"))

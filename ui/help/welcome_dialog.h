@@ -50,8 +50,9 @@ public:
     /// The example sessions of @p folder (see the class comment), in the list's order or by file
     /// name; a listed file that does not exist is left out.
     static QList<ExampleSession> exampleSessions(const QString& folder);
-    /// The user-guide page of a tutorial named in sessions.json ("ballbar",
-    /// "user-guide/ballbar.md" or "ballbar.md" all name qrc:/docs/user-guide/ballbar.md).
+    /// The user-guide page of a tutorial named in sessions.json ("ballbar", "ballbar.md",
+    /// "user-guide/ballbar.md" and "docs/user-guide/ballbar.md" all name
+    /// qrc:/docs/user-guide/ballbar.md).
     static QUrl tutorialPage(const QString& tutorial);
 
     QListWidget* tutorialList() const { return tutorials_; }
