@@ -22,6 +22,7 @@
 #include "ui/panels/friction_editor.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
+#include "ui/panels/trajectory_editor.h"
 #include "ui/pid_tuning_dialog.h"
 #include "ui/session/tuning_session.h"
 #include "ui/snapshot_compare_dialog.h"
@@ -212,6 +213,30 @@ private slots:
                                 walk.offenders.join("\n")));
             QVERIFY(walk.checked.size() >= 40);
         }
+    }
+
+    // The other trajectory pages: a circle, then a G-code program (its fields, the examples box,
+    // the contour controls and the cross-coupling fold that a contour brings).
+    void circleAndProgramTrajectories() {
+        Session s = Session::paperDefault();
+        s.trajectory.kind = TrajectoryKind::Circle;
+        session_->reset(s);
+        QApplication::processEvents();
+        openFolds(window_.get());
+        Walk walk = walkEveryTab(window_.get());
+        QVERIFY(walk.checked.contains(window_->trajectoryEditor()->field("radius")));
+        QVERIFY2(walk.offenders.isEmpty(),
+                 qPrintable("circle, without a tooltip:\n" + walk.offenders.join("\n")));
+        QVERIFY(window_->trajectoryEditor()->loadProgramFile(TrajectoryEditor::examplesFolder() +
+                                                             "/circle_25mm.nc"));
+        QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Gcode);
+        QApplication::processEvents();
+        openFolds(window_.get());
+        walk = walkEveryTab(window_.get());
+        QVERIFY(walk.checked.contains(window_->trajectoryEditor()->field("max_accel")));
+        QVERIFY(walk.checked.contains(window_->trajectoryEditor()->programField()));
+        QVERIFY2(walk.offenders.isEmpty(),
+                 qPrintable("G-code program, without a tooltip:\n" + walk.offenders.join("\n")));
     }
 
     // Every figure row of the metrics panel says what it is, its unit and how it is computed.
