@@ -5,6 +5,7 @@
 #include "app/allocator_tuning.h"
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
+#include "ui/help/welcome_dialog.h"
 #include "ui/main_window.h"
 #include "ui/report/report_writer.h"
 #include "ui/robustness_view.h"
@@ -234,5 +235,9 @@ int main(int argc, char* argv[]) {
         xyt::ui::offerRecovery(&window, &session, window.files(),
                                xyt::ui::RecoveryStore::defaultDirectory());
     });
+    // The first-start page: here, in the interactive path only (never for --screenshot, which
+    // returned above, nor in the tests, which build the window without main()).
+    if (xyt::ui::WelcomeDialog::shouldShowAtStart())
+        QTimer::singleShot(0, &window, [&window] { window.showWelcome(); });
     return QApplication::exec();
 }

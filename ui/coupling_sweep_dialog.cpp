@@ -166,6 +166,7 @@ CouplingSweepDialog::CouplingSweepDialog(TuningSession* session, QWidget* parent
     progress_->setRange(0, 1000);
     progress_->setTextVisible(false);
     cancel_ = new QPushButton(tr("&Cancel"), this);
+    cancel_->setToolTip(tr("Stop the sweep; the cells run so far are shown"));
     running->addWidget(progress_, 1);
     running->addWidget(cancel_);
     layout->addLayout(running);
@@ -173,6 +174,10 @@ CouplingSweepDialog::CouplingSweepDialog(TuningSession* session, QWidget* parent
     plot_ = new PlotWidget(this);
     plot_->setObjectName(QStringLiteral("coupling-sweep"));
     plot_->setMinimumSize(420, 260);
+    plotDescription_ = tr("The sweep's map: each cell one (kp, ki) pair of the cross-coupling, "
+                          "coloured by the program's max contour error (mm); hover a cell for its "
+                          "figures, click it to select it");
+    plot_->setToolTip(plotDescription_);
     styleAxisRect(plot_->axisRect());
     plot_->axisRect()->setBackground(kSweepNoFigure);
     plot_->xAxis->setLabel(tr("kp (V/mm)"));
@@ -600,6 +605,8 @@ QPointF CouplingSweepDialog::pixelOfCell(std::size_t index) const {
 void CouplingSweepDialog::hover(const QPoint& pixel, const QPoint& global) {
     const auto cell = veil_->isVeiled() ? std::nullopt : cellAtPixel(pixel);
     hover_ = cell ? cellToolTip(*cell) : QString();
+    // Resting on a cell shows its figures, elsewhere what the map is.
+    plot_->setToolTip(hover_.isEmpty() ? plotDescription_ : hover_);
     if (hover_.isEmpty())
         QToolTip::hideText();
     else

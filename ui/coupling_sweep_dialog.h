@@ -132,6 +132,7 @@ private:
     ResultStamp stamp_; ///< what result_ was computed for
     std::optional<std::size_t> selected_;
     QString failure_;
+    QString plotDescription_; ///< the map's tooltip away from a cell
     QString hover_;
     QElapsedTimer clock_;
     qint64 elapsedMs_ = 0;

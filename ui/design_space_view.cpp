@@ -211,6 +211,16 @@ QGroupBox* DesignSpaceView::buildGrid() {
     for (QDoubleSpinBox* box : {wnMin_, wnMax_, kpMin_, kpMax_})
         box->setButtonSymbols(QAbstractSpinBox::NoButtons);
     logGrid_ = new QCheckBox(tr("logarithmic spacing"));
+    wnMin_->setToolTip(tr("Smallest ωn (rad/s) of the grid: the reference model's natural "
+                          "frequency of the first row of designs"));
+    wnMax_->setToolTip(tr("Largest ωn (rad/s) of the grid"));
+    wnCount_->setToolTip(tr("Number of ωn values of the grid (rows); each cell is one design run "
+                            "on the session's trajectory"));
+    kpMin_->setToolTip(tr("Smallest proportional gain kp (V per model unit) of the grid"));
+    kpMax_->setToolTip(tr("Largest proportional gain kp (V per model unit) of the grid"));
+    kpCount_->setToolTip(tr("Number of kp values of the grid (columns)"));
+    logGrid_->setToolTip(tr("Space the ωn and kp values evenly on a logarithmic scale (else "
+                            "linearly between the bounds)"));
     logGrid_->setChecked(true);
     auto* grid = new QGroupBox(tr("Grid"));
     auto* gridForm = new QFormLayout(grid);
@@ -233,6 +243,11 @@ QGroupBox* DesignSpaceView::buildChoice() {
     criterion_ = criterionCombo();
     metric_ = criterionCombo();
     logColor_ = new QCheckBox(tr("logarithmic colour scale"));
+    criterion_->setToolTip(tr("The figure that picks the best feasible design: minimized (ITAE, "
+                              "max |e|, RMSE, max |u|, settle time) or maximized (the margins)"));
+    metric_->setToolTip(tr("The figure the heat map's colours show for each design of the grid"));
+    logColor_->setToolTip(tr("Colour the heat map by the logarithm of the figure (its values "
+                             "often span decades)"));
     logColor_->setChecked(true);
     auto* choice = new QGroupBox(tr("Choice"));
     auto* choiceForm = new QFormLayout(choice);
@@ -250,6 +265,16 @@ QGroupBox* DesignSpaceView::buildSpecification(const Specification& spec) {
     umax_ = numberBox(spec.umaxVolts, 0.001, 1e4, 3, tr(" V"));
     phaseMargin_ = numberBox(spec.minPhaseMarginDeg, 0.0, 180.0, 2, tr("°"));
     gainMargin_ = numberBox(spec.minGainMarginDb, 0.0, 1000.0, 2, tr(" dB"));
+    settling_->setToolTip(tr("Maximum settling time (s, 2 % band) of the closed loop's unit "
+                             "step"));
+    overshoot_->setToolTip(tr("Maximum overshoot (%) of the closed loop's unit step"));
+    error_->setToolTip(tr("Maximum tracking error max |e| as a percentage of the travel"));
+    umax_->setToolTip(tr("Actuator limit umax (V): a design whose run asks for more is "
+                         "infeasible; the session's |u| limit"));
+    phaseMargin_->setToolTip(tr("Minimum phase margin (°) of the loop, 180° + arg L(jωc); 0: "
+                                "none"));
+    gainMargin_->setToolTip(tr("Minimum gain margin (dB) of the loop, −20 log10 |L(jω180)|; 0: "
+                               "none"));
     auto* specBox = new QGroupBox(tr("Specification"));
     auto* specForm = new QFormLayout(specBox);
     specForm->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fits a narrow column
@@ -275,6 +300,9 @@ QHBoxLayout* DesignSpaceView::buildActions() {
     run_->setDefault(true);
     cancel_ = new QPushButton(tr("Cancel"));
     cancel_->setEnabled(false);
+    run_->setToolTip(tr("Run the study: every design of the grid on the session's trajectory at "
+                        "its dt, judged against the specification"));
+    cancel_->setToolTip(tr("Stop the study; the designs computed so far are shown"));
     progress_ = new QProgressBar;
     progress_->setRange(0, 100);
     progress_->setValue(0);

@@ -60,6 +60,7 @@ FrictionCurveDialog::FrictionCurveDialog(TuningSession* session, QWidget* parent
     for (int i = 0; i < 4; ++i) {
         columns_[i] = new QComboBox(this);
         columns_[i]->setAccessibleName(labels[i]);
+        columns_[i]->setToolTip(tr("The log's column of the %1").arg(labels[i]));
         columnRow->addWidget(new QLabel(labels[i], this));
         columnRow->addWidget(columns_[i], 1);
         connect(columns_[i], &QComboBox::activated, this, [this] { runEstimate(); });
@@ -68,6 +69,11 @@ FrictionCurveDialog::FrictionCurveDialog(TuningSession* session, QWidget* parent
     layout->addLayout(form);
     plot_ = new QCustomPlot(this);
     plot_->setMinimumSize(560, 340);
+    plot_->setToolTip(tr("The Stribeck curve: each jog's steady command (V, mean ± one standard "
+                         "deviation over its cruise) against its velocity (mm/s), and the fitted "
+                         "friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v"));
+    open->setToolTip(tr("Read a jog log (CSV with time, reference, position and command "
+                        "columns) and estimate the friction levels"));
     styleAxisRect(plot_->axisRect());
     plot_->xAxis->setLabel(tr("velocity (mm/s)"));
     plot_->yAxis->setLabel(tr("steady command (V)"));
@@ -95,6 +101,8 @@ FrictionCurveDialog::FrictionCurveDialog(TuningSession* session, QWidget* parent
     layout->addWidget(result_);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     apply_ = buttons->addButton(tr("&Use for the current axis"), QDialogButtonBox::ApplyRole);
+    apply_->setToolTip(tr("Set the estimated levels as the current axis' table friction (one "
+                          "undoable step)"));
     apply_->setEnabled(false);
     layout->addWidget(buttons);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);

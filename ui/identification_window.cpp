@@ -188,6 +188,17 @@ QGroupBox* IdentificationWindow::buildDataBox() {
     t0_->setToolTip(tr("Range of the record to use; 0 to 0 uses all of it"));
     t1_->setToolTip(t0_->toolTip());
     detrend_ = new QCheckBox(tr("Remove trends"));
+    detrend_->setToolTip(tr("Remove a straight line fitted by least squares from the input and "
+                            "the output before the fit (else their means)"));
+    load_->setToolTip(tr("Read a logged experiment: CSV/TSV, LabVIEW .lvm or MATLAB .mat, with "
+                         "the input in V and the position"));
+    loadValidation_->setToolTip(tr("A second record of the same axis on which the candidates' "
+                                   "fit is judged (else on the estimation data)"));
+    input_->setToolTip(tr("The column of the command u (V) sent to the amplifier"));
+    output_->setToolTip(tr("The column of the measured position y"));
+    time_->setToolTip(tr("The column of the time (s), or none: the sample time Ts below"));
+    ts_->setToolTip(tr("Sample time Ts (s) of the record when it has no time column"));
+    unit_->setToolTip(tr("The unit of the output column: mm, or m (converted to mm)"));
     decimate_ = new QSpinBox;
     decimate_->setRange(1, 1000);
     decimate_->setToolTip(tr("Keep every n-th sample after an anti-alias filter (1: all)"));
@@ -234,6 +245,9 @@ QGroupBox* IdentificationWindow::buildModelBox() {
     auto* modelBox = new QGroupBox(tr("Model"));
     auto* modelForm = new QFormLayout(modelBox);
     modelForm->addRow(tr("Structure:"), structure_);
+    structure_->setToolTip(tr("ARX: A y = B u + e by least squares; OE: y = B/F u + e and BJ: "
+                              "y = B/F u + C/D e by prediction error (Levenberg–Marquardt); GT3: "
+                              "Braga et al.'s k0/(s³ + a1 s² + a2 s) fitted to the output"));
     auto* orderRow = new QHBoxLayout;
     for (const auto& [name, value, minimum] :
          {std::tuple{"na", 2, 0}, std::tuple{"nb", 3, 1}, std::tuple{"nc", 1, 0},
@@ -242,6 +256,9 @@ QGroupBox* IdentificationWindow::buildModelBox() {
         box->setRange(minimum, 100);
         box->setValue(value);
         box->setObjectName(name);
+        box->setToolTip(tr("Order %1 of the model: na, nb, nc, nd, nf the numbers of "
+                           "coefficients of A, B, C, D, F; nk the input delay in samples")
+                            .arg(QString::fromLatin1(name)));
         orderRow->addWidget(new QLabel(QString::fromLatin1(name)));
         orderRow->addWidget(box);
         orders_.emplace_back(QString::fromLatin1(name), box);
@@ -251,11 +268,16 @@ QGroupBox* IdentificationWindow::buildModelBox() {
     maxIterations_ = new QSpinBox;
     maxIterations_->setRange(1, 100000);
     maxIterations_->setValue(100);
+    maxIterations_->setToolTip(tr("The most Levenberg–Marquardt iterations of an OE, BJ or GT3 "
+                                  "fit before it stops with the best estimate so far"));
     modelForm->addRow(tr("Max iterations:"), maxIterations_);
     fit_ = new QPushButton(tr("Fit"));
     fit_->setEnabled(false);
     cancel_ = new QPushButton(tr("Cancel"));
     cancel_->setEnabled(false);
+    fit_->setToolTip(tr("Estimate the model of the chosen structure and orders; it is added to "
+                        "the candidates with its fit, AIC and residual tests"));
+    cancel_->setToolTip(tr("Stop the fit running"));
     progress_ = new QProgressBar;
     progress_->setRange(0, 100);
     progress_->setValue(0);
@@ -303,6 +325,9 @@ QHBoxLayout* IdentificationWindow::buildCandidates() {
     parameters_->hide();
     useX_ = new QPushButton(tr("Use for axis X"));
     useY_ = new QPushButton(tr("Use for axis Y"));
+    useX_->setToolTip(tr("Make the selected model axis X's plant (an undoable step): GT3 as "
+                         "the Guillemin–Truxal plant, ARX/OE/BJ as the pole-placement model"));
+    useY_->setToolTip(tr("Make the selected model axis Y's plant (an undoable step)"));
     useX_->setEnabled(false);
     useY_->setEnabled(false);
     // The record's measured frequency response (Welch), drawn against the model of an axis.
@@ -393,10 +418,15 @@ void IdentificationWindow::buildPlots() {
     placeLegendBelow(timePlot_, 1, 2);
     timeNotice_ = std::make_unique<PlotNotice>(timePlot_, timePlot_->axisRect(),
                                                Qt::AlignTop | Qt::AlignRight);
+    timePlot_->setToolTip(tr("The measured output y (mm) against time (s) and the selected "
+                             "model's simulated output ŷ from the same input"));
     tabs_->addTab(timePlot_, tr("Output"));
 
     // Two stacked axis rects: residual autocorrelation, input-residual cross-correlation.
     residualPlot_ = makePlot("identificationResidualPlot");
+    residualPlot_->setToolTip(tr("The residuals' autocorrelation and their cross-correlation "
+                                 "with the input against the lag, with the 99 % confidence band "
+                                 "of white, independent residuals"));
     QCPAxisRect* autoRect = residualPlot_->axisRect();
     auto* crossRect = new QCPAxisRect(residualPlot_);
     styleAxisRect(crossRect);

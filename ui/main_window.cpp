@@ -9,6 +9,8 @@
 #include "ui/design_space_view.h"
 #include "ui/files/session_file.h"
 #include "ui/friction_curve_dialog.h"
+#include "ui/help/user_guide_window.h"
+#include "ui/help/welcome_dialog.h"
 #include "ui/identification_window.h"
 #include "ui/panels/contour_controls.h"
 #include "ui/panels/cross_coupling_editor.h"
@@ -257,6 +259,8 @@ void MainWindow::buildUpperTabs() {
     sweptParameter_->addItem(tr("sweep ωn (kp fixed)"));
     sweptParameter_->addItem(tr("sweep kp (ωn fixed)"));
     sweptParameter_->setAccessibleName(tr("Swept parameter"));
+    sweptParameter_->setToolTip(tr("The parameter the parameter locus sweeps over its slider's "
+                                   "range, the other held at the design's value"));
     upperTabs_->setCornerWidget(sweptParameter_, Qt::TopRightCorner);
     connect(sweptParameter_, &QComboBox::currentIndexChanged, this, [this](int index) {
         parameterLocusView_->setSweptParameter(index == 1 ? GtSweptParameter::Kp
@@ -371,6 +375,9 @@ QGroupBox* MainWindow::buildDesignBox(QWidget* panel) {
     auto* designLayout = new QVBoxLayout(designBox);
     method_ = new QComboBox(designBox);
     method_->setAccessibleName(tr("Design method"));
+    method_->setToolTip(tr("How the current axis is controlled: Guillemin–Truxal PI (Braga et "
+                           "al.), pole placement + ZPETC (Patrick, Ishak and Adnan) or LinuxCNC's "
+                           "PID with command feedforward"));
     // The friction fold's button shares the method's row (the panel fits 1366 x 768); its body
     // opens below the method's page.
     frictionEditor_ = new FrictionEditor(designBox);
@@ -424,6 +431,11 @@ QWidget* MainWindow::buildGtPage(QWidget* pages) {
     kp_ = new ParameterSlider(tr("k&p"), tr("V/m"), 0.1, 1000.0, true, gtPage);
     // The fields take any positive value a design can have; the sliders cover the usual range.
     omegaN_->setFieldRange(1e-6, 1e6);
+    omegaN_->setDescription(tr("ωn (rad/s): the natural frequency of the 4th-order reference "
+                               "model G_R(s); the PI follows as f3 = kp k0/ωn³, ki = ωn⁴/k0 "
+                               "(Braga et al. Eq. 11–18)"));
+    kp_->setDescription(tr("kp (V per model unit): the PI's proportional gain; with ωn it sets "
+                           "ki = kp ψ1 = ωn⁴/k0 and the reference model's f3 = kp k0/ωn³"));
     kp_->setFieldRange(1e-6, 1e12);
     gtLayout->addWidget(omegaN_);
     gtLayout->addWidget(kp_);
@@ -469,15 +481,20 @@ QGroupBox* MainWindow::buildActuatorBox(QWidget* panel) {
     auto* actuatorForm = new QFormLayout(actuatorBox);
     umax_ = new NumberField(
         "umax", [](double v) { requirePositive(v, "umax"); }, actuatorBox);
+    umax_->setToolTip(tr("Actuator limit umax (V): every run clips the command to ±umax, and "
+                         "the anti-windup acts at it"));
     actuatorForm->addRow(tr("|u| limit (V)"), umax_);
     controllerTs_ = new NumberField(
         "controller Ts", [](double v) { requirePositive(v, "controller Ts"); }, actuatorBox);
-    controllerTs_->setToolTip(tr("Sample time of the digital PI in the exports"));
+    controllerTs_->setToolTip(tr("Controller sample time Ts (s) of the digital PI or PID: the "
+                                 "digital implementation runs and the exports are at it"));
     discretization_ = new QComboBox(actuatorBox);
     discretization_->addItem(tr("Tustin"));
     discretization_->addItem(tr("backward Euler"));
     discretization_->setAccessibleName(tr("PI discretization"));
-    discretization_->setToolTip(tr("How the PI is discretized at the controller sample time"));
+    discretization_->setToolTip(tr("How the PI kp + ki/s is discretized at the controller sample "
+                                   "time: Tustin s = (2/Ts)(z − 1)/(z + 1), or backward Euler "
+                                   "s = (z − 1)/(z Ts)"));
     // One row for the sample time and the discretization: the implementation's row below
     // keeps the left panel within a 1366x768 window.
     auto* tsRow = new QHBoxLayout;
@@ -690,12 +707,44 @@ void MainWindow::buildMenus() {
             resetView(plot);
     });
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&User guide"), QKeySequence::HelpContents, this,
+                    [this] { showUserGuide(); });
+    help->addAction(tr("&Tutorials..."), this, [this] { showWelcome(); });
+    help->addAction(tr("&Command-line reference"), this,
+                    [this] { showUserGuide(UserGuideWindow::docsUrl("cli.md")); });
+    help->addSeparator();
     help->addAction(tr("&About XY Tune"), this, [this] {
         QMessageBox::about(this, tr("About XY Tune"),
                            tr("<b>XY Tune</b> %1<br>Tuning workbench for XY coordinate-table "
                               "position controllers.<br>GPL-3.0-or-later.")
                                .arg(QApplication::applicationVersion()));
     });
+}
+
+UserGuideWindow* MainWindow::showUserGuide(const QUrl& page) {
+    // One window, kept (with its history) when closed; a child, so found again here.
+    auto* guide = findChild<UserGuideWindow*>();
+    if (!guide)
+        guide = new UserGuideWindow(this);
+    if (page.isValid())
+        guide->showPage(page);
+    guide->show();
+    guide->raise();
+    guide->activateWindow();
+    return guide;
+}
+
+QDialog* MainWindow::showWelcome() {
+    auto* welcome = findChild<WelcomeDialog*>();
+    if (!welcome) {
+        welcome = new WelcomeDialog(files_, TrajectoryEditor::examplesFolder(), this);
+        connect(welcome, &WelcomeDialog::tutorialRequested, this,
+                [this](const QUrl& page) { showUserGuide(page); });
+    }
+    welcome->show();
+    welcome->raise();
+    welcome->activateWindow();
+    return welcome;
 }
 
 namespace {

@@ -5,12 +5,14 @@
 
 #include <QElapsedTimer>
 #include <QMainWindow>
+#include <QUrl>
 
 #include <optional>
 
 #include <vector>
 
 class QComboBox;
+class QDialog;
 class QDoubleSpinBox;
 class QFormLayout;
 class QGroupBox;
@@ -55,6 +57,7 @@ class StaleVeil;
 class TimeResponsePlot;
 class TrajectoryEditor;
 class TuningSession;
+class UserGuideWindow;
 
 /**
  * The workbench window: axis and design controls on the left, plots in the middle, figures and
@@ -118,6 +121,11 @@ public:
     int overlaySnapshot() const;
     /// Time from the last change of the design to the last view drawn, in milliseconds.
     double lastRefreshMs() const { return lastRefreshMs_; }
+    /// Help › User guide: shows the guide's window (one, kept when closed) at @p page (a qrc URL
+    /// under :/docs; its home page when empty) and returns it.
+    UserGuideWindow* showUserGuide(const QUrl& page = QUrl());
+    /// Help › Tutorials: the first-start page (WelcomeDialog), non-modal; returns it.
+    QDialog* showWelcome();
     /// The views that draw the window from the presenter.
     const std::vector<PresenterView*>& views() const { return views_; }
 

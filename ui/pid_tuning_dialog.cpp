@@ -53,6 +53,7 @@ PidTuningDialog::PidTuningDialog(TuningSession* session, int axis, QWidget* pare
     structure_->addItem(tr("PI"));
     structure_->addItem(tr("PID (Ti = 4 Td)"));
     structure_->setAccessibleName(tr("Controller structure"));
+    structure_->setToolTip(tr("PI, or PID with Ti = 4 Td, for the closed-form rule"));
     const auto positive = [](const char* name) {
         return [name](double v) { requirePositive(v, name); };
     };
@@ -69,6 +70,12 @@ PidTuningDialog::PidTuningDialog(TuningSession* session, int axis, QWidget* pare
     crossover_->setValue(5.0); // reachable by a PI on both of Braga et al.'s bases
     phaseMargin_->setValue(60.0);
     relay_->setValue(1.0);
+    crossover_->setToolTip(tr("Target gain crossover ωc (rad/s): the closed-form gains make "
+                              "|L(jωc)| = 1, L = (P + I/s + D s) G/u"));
+    phaseMargin_->setToolTip(tr("Target phase margin (°) at ωc: arg L(jωc) = −180° + PM"));
+    relay_->setToolTip(tr("Relay amplitude d (V) of the simulated relay experiment; its limit "
+                          "cycle's amplitude a and period Tu give Ku = 4d/(πa) for Ziegler–Nichols "
+                          "and Tyreus–Luyben"));
     form->addRow(tr("Structure"), structure_);
     form->addRow(tr("Crossover ωc (rad/s)"), crossover_);
     form->addRow(tr("Phase margin (°)"), phaseMargin_);
@@ -82,6 +89,7 @@ PidTuningDialog::PidTuningDialog(TuningSession* session, int axis, QWidget* pare
     table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     for (int row = 0; row < 3; ++row) {
         auto* button = new QPushButton(tr("Apply"), table_);
+        button->setToolTip(tr("Set this row's P, I and D on the axis (one undoable step)"));
         apply_[static_cast<std::size_t>(row)] = button;
         table_->setCellWidget(row, 6, button);
         connect(button, &QPushButton::clicked, this, [this, row] { apply(row); });
@@ -93,6 +101,8 @@ PidTuningDialog::PidTuningDialog(TuningSession* session, int axis, QWidget* pare
     layout->addWidget(relayLabel_);
     plot_ = new QCustomPlot(this);
     plot_->setMinimumHeight(180);
+    plot_->setToolTip(tr("The simulated relay experiment: the position y (mm) and the relay's "
+                         "command u (V) against time (s), settling into the limit cycle"));
     plot_->addGraph();
     plot_->graph(0)->setName(tr("position y (mm)"));
     plot_->graph(0)->setPen(QPen(colors::output, 1.5));

@@ -129,6 +129,9 @@ QHBoxLayout* RobustnessView::buildActions() {
     run_ = new QPushButton(tr("Run"));
     cancel_ = new QPushButton(tr("Cancel"));
     cancel_->setEnabled(false);
+    run_->setToolTip(tr("Run the analysis: the session's unchanged controller on every plant "
+                        "drawn within the ranges (and the box's corners), each on the trajectory"));
+    cancel_->setToolTip(tr("Stop the analysis; the plants run so far are shown"));
     worst_ = new QPushButton(tr("Load worst case"));
     worst_->setToolTip(
         tr("Make the worst plant found (largest RMSE) the session's plant (an undoable step)"));

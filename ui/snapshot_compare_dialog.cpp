@@ -73,6 +73,10 @@ SnapshotCompareDialog::SnapshotCompareDialog(const Session& session, QWidget* pa
     if (right_->count() > 1)
         right_->setCurrentIndex(right_->count() - 1);
     pick->addWidget(new QLabel(tr("Compare"), this));
+    left_->setToolTip(tr("The first design of the comparison: the current one or a stored "
+                         "snapshot (Design › Store snapshot)"));
+    right_->setToolTip(tr("The second design of the comparison; the table lists both designs' "
+                          "settings and figures side by side"));
     pick->addWidget(left_, 1);
     pick->addWidget(new QLabel(tr("with"), this));
     pick->addWidget(right_, 1);

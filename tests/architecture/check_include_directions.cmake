@@ -24,6 +24,7 @@ set(allowed_ui_panels "core;ui/session;ui/plots")
 set(allowed_ui_session "core;ui/files")
 set(allowed_ui_views "core;ui/session;ui/plots;ui/panels")
 set(allowed_ui_report "core;ui/files;ui/session;ui/plots;ui/panels") # the design report
+set(allowed_ui_help "core;ui/session")   # the user guide and the first-start page
 set(allowed_ui "core;ui")   # views and dialogs at ui/ itself
 set(allowed_app "core;ui;app")
 
@@ -35,7 +36,7 @@ function(folder_of path out)
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
     elseif(path MATCHES "^core/")
         set(${out} "core/" PARENT_SCOPE) # a file left at core/ itself: not allowed
-    elseif(path MATCHES "^(ui/(jobs|plots|panels|session|files|views|report))/")
+    elseif(path MATCHES "^(ui/(jobs|plots|panels|session|files|views|report|help))/")
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)
     elseif(path MATCHES "^(ui|app|tests)/")
         set(${out} "${CMAKE_MATCH_1}" PARENT_SCOPE)

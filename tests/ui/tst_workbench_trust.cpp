@@ -712,10 +712,17 @@ void TstWorkbenchTrust::sliderFieldsTakeWhatIsTyped() {
     QCOMPARE(field->value(), 2111.0);
     QVERIFY(kp->fieldError().isEmpty());
     QVERIFY2(kp->exactText().startsWith("2111, beyond the slider"), qPrintable(kp->exactText()));
-    // The tooltips read the parameter's name, not its mnemonic ("k&p").
-    QCOMPARE(kp->slider()->toolTip(), QStringLiteral("kp (logarithmic scale)"));
-    QCOMPARE(window_->omegaNSlider()->slider()->toolTip(),
-             QStringLiteral("ωn (logarithmic scale)"));
+    // The tooltips read the parameter's name, not its mnemonic ("k&p"), and say what it is
+    // (ParameterSlider::setDescription) and that the slider is logarithmic.
+    for (ParameterSlider* slider : {kp, window_->omegaNSlider()}) {
+        const QString tip = slider->slider()->toolTip();
+        QVERIFY2(!tip.contains('&') && tip.endsWith(QStringLiteral("(logarithmic scale)")),
+                 qPrintable(tip));
+    }
+    QVERIFY2(kp->slider()->toolTip().startsWith(QStringLiteral("kp (V per model unit)")),
+             qPrintable(kp->slider()->toolTip()));
+    QVERIFY2(window_->omegaNSlider()->slider()->toolTip().startsWith(QStringLiteral("ωn (rad/s)")),
+             qPrintable(window_->omegaNSlider()->slider()->toolTip()));
 }
 
 // ---- Freezes --------------------------------------------------------------------------------

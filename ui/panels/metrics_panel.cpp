@@ -123,28 +123,51 @@ QString MetricsPanel::groupTitle(int row) {
 }
 
 void MetricsPanel::describeRows() {
-    table_->verticalHeaderItem(Improvement)
-        ->setToolTip(tr("RMSE improvement of the ZPETC feedforward over the loop alone"));
-    table_->verticalHeaderItem(Itae)->setToolTip(tr("integral of t·|e(t)| over the run"));
-    table_->verticalHeaderItem(SettleAfterMove)
-        ->setToolTip(
-            tr("From the end of the move (tf) until |e| stays inside the in-position window"));
-    table_->verticalHeaderItem(FinalOvershoot)
-        ->setToolTip(tr("How far the axis went beyond the target, in the direction of travel"));
-    table_->verticalHeaderItem(GainMargin)
-        ->setToolTip(tr("How much the loop gain may grow (dB) before the closed loop becomes "
-                        "unstable; ∞: never"));
-    table_->verticalHeaderItem(PhaseMargin)
-        ->setToolTip(tr("Phase lag that would bring L to −1 at the gain crossover"));
-    table_->verticalHeaderItem(DelayMargin)
-        ->setToolTip(tr("Extra delay the loop tolerates: phase margin / crossover frequency"));
-    table_->verticalHeaderItem(PeakSensitivity)
-        ->setToolTip(tr("1 / (closest distance of L to −1): 1.2–2 is a usual target"));
-    table_->verticalHeaderItem(MaxErrorPct)
-        ->setToolTip(tr("max |e| as a percentage of the travel"));
-    table_->verticalHeaderItem(DigitalDamping)
-        ->setToolTip(tr("Least damping ratio of the digital closed loop's poles (s = ln z / Ts); "
-                        "the design's in the tooltip"));
+    // Every figure: what it is, its unit and how it is computed (one or two sentences).
+    const QList<QPair<int, QString>> rows = {
+        {Rmse, tr("RMSE (mm): the root mean square of the tracking error e = r − y over the "
+                  "samples of the run on the trajectory.")},
+        {MaxError, tr("max |e| (mm): the largest absolute tracking error e = r − y over the run "
+                      "on the trajectory.")},
+        {MaxErrorPct, tr("max |e| (%): the largest absolute tracking error as a percentage of "
+                         "the travel; judged against the specification's maximum error.")},
+        {MaxU, tr("max |u| (V): the largest absolute command applied to the plant over the run "
+                  "(after the ±umax limit).")},
+        {Saturated, tr("saturated (s): the time the command spends clipped at ±umax during the "
+                       "run (sample count × dt).")},
+        {Itae, tr("ITAE (mm·s²): the integral of t·|e(t)| over the run (trapezoidal rule on "
+                  "the samples); it weighs late errors more than early ones.")},
+        {Improvement, tr("ZPETC gain (%): the RMSE improvement of the ZPETC feedforward over the "
+                         "loop alone, 100 (1 − RMSE with / RMSE without).")},
+        {SettleAfterMove,
+         tr("settle time (s): from the end of the move (tf) until |e| stays inside the "
+            "in-position window; judged against the specification's settle limit.")},
+        {FinalError, tr("final e (mm): the tracking error r − y at the last sample of the run.")},
+        {FinalOvershoot, tr("overrun (mm): how far the axis went beyond the target after tf, "
+                            "in the direction of travel (0 when it never passed it).")},
+        {Settling, tr("settling 2 % (s): the time after which the closed loop's unit step stays "
+                      "within ±2 % of its final value.")},
+        {Overshoot, tr("overshoot (%): the unit step's peak above its final value, 100 (peak − "
+                       "final)/final; judged against the specification's maximum overshoot.")},
+        {DigitalRmse, tr("RMSE (mm) of the digital implementation: the same figure for the "
+                         "sampled-data loop (controller at its Ts, hold, quantization, limit, "
+                         "delay); amber when it differs from the design's by more than 5 %.")},
+        {DigitalMaxError, tr("max |e| (mm) of the digital implementation: the largest absolute "
+                             "error of the sampled-data loop's run; amber when it differs from "
+                             "the design's by more than 5 %.")},
+        {DigitalDamping, tr("min ζ: the least damping ratio of the digital closed loop's poles, "
+                            "ζ = −Re s/|s| with s = ln z / Ts; the design's in the tooltip.")},
+        {GainMargin, tr("Gain margin (dB): −20 log10 |L(jω180)| at the phase crossover ω180 "
+                        "where arg L = −180°: how much the loop gain may grow before the closed "
+                        "loop becomes unstable; ∞: never. Computed on the continuous loop.")},
+        {PhaseMargin, tr("Phase margin (°): 180° + arg L(jωc) at the gain crossover ωc where "
+                         "|L| = 1; computed on the continuous loop.")},
+        {DelayMargin, tr("Delay margin (s): the extra loop delay the closed loop tolerates, "
+                         "phase margin (rad) / ωc, the smallest over the gain crossovers.")},
+        {PeakSensitivity, tr("Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / "
+                             "the closest distance of L to −1; 1.2–2 is a usual target.")}};
+    for (const auto& [row, tip] : rows)
+        table_->verticalHeaderItem(row)->setToolTip(tip);
 }
 
 void MetricsPanel::addGroupTitles() {

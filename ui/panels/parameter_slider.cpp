@@ -90,7 +90,6 @@ ParameterSlider::ParameterSlider(const QString& label, const QString& unit, doub
     slider_->setRange(0, kSteps);
     slider_->setTracking(true);
     slider_->setAccessibleName(name_);
-    slider_->setToolTip(logScale ? tr("%1 (logarithmic scale)").arg(name_) : name_);
     auto* spin = new NotationSpinBox(this);
     spin_ = spin;
     spin_->setRange(minimum, maximum);
@@ -98,8 +97,7 @@ ParameterSlider::ParameterSlider(const QString& label, const QString& unit, doub
     spin_->setKeyboardTracking(false);
     spin_->setSuffix(unit.isEmpty() ? QString() : " " + unit);
     spin_->setAccessibleName(name_ + tr(" value"));
-    spin_->setToolTip(
-        tr("%1: type a value (scientific notation such as 2.5e3 is accepted)").arg(name_));
+    describe();
     spin_->setMinimumWidth(110);
     spin->onRefused = [this](const QString& text) { refuse(text); };
     exact_ = new QLabel(this);
@@ -182,8 +180,20 @@ void ParameterSlider::clearFieldError() {
     fieldError_.clear();
     if (QLineEdit* edit = spin_->findChild<QLineEdit*>())
         xyt::ui::clearFieldError(edit, QString());
+    describe();
+}
+
+void ParameterSlider::setDescription(const QString& description) {
+    description_ = description;
+    if (fieldError_.isEmpty())
+        describe();
+}
+
+void ParameterSlider::describe() {
+    const QString what = description_.isEmpty() ? name_ : description_;
+    slider_->setToolTip(log_ ? tr("%1 (logarithmic scale)").arg(what) : what);
     spin_->setToolTip(
-        tr("%1: type a value (scientific notation such as 2.5e3 is accepted)").arg(name_));
+        tr("%1\nType a value (scientific notation such as 2.5e3 is accepted).").arg(what));
 }
 
 void ParameterSlider::setValue(double v) {

@@ -40,6 +40,9 @@ public:
     QString fieldError() const { return fieldError_; }
     /// The note beside the slider: the exact value, and "beyond the slider" when it is.
     QString exactText() const;
+    /// What the parameter is, its unit and what it sets (one or two sentences): the tooltip of
+    /// the slider and of the field, ahead of how to type a value.
+    void setDescription(const QString& description);
 
 signals:
     void valueChanged(double value);
@@ -50,6 +53,8 @@ private:
     void showValue(double v);
     void refuse(const QString& text);
     void clearFieldError();
+    /// The tooltips of the slider and the field from the name and the description.
+    void describe();
 
     QSlider* slider_;
     QDoubleSpinBox* spin_;
@@ -60,6 +65,7 @@ private:
     bool updating_ = false;
     QString name_; ///< the label without its mnemonic '&', for tooltips and messages
     QString fieldError_;
+    QString description_; ///< setDescription's text (empty: the name alone)
 };
 
 } // namespace xyt::ui

@@ -58,9 +58,10 @@ PidFeedforwardEditor::PidFeedforwardEditor(const DesignMethodModule& module, QWi
     for (int k = 0; k < 3; ++k) {
         auto* slider = new ParameterSlider(labels[k], QStringLiteral("%"), 0.0, 200.0, false, ff);
         slider->setFieldRange(0.0, 1e6);
-        slider->setToolTip(tr("The gain %1 as a percentage of the plant's exact inverse: 100 % "
-                              "cancels the plant's dynamics along the trajectory")
-                               .arg(QString(kFeedforwardNames[k]).toUpper()));
+        slider->setDescription(tr("The gain %1 as a percentage (%) of the plant's exact inverse "
+                                  "(FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancels "
+                                  "the plant's dynamics along the trajectory")
+                                   .arg(QString(kFeedforwardNames[k]).toUpper()));
         sliders_[static_cast<std::size_t>(k)] = slider;
         ffLayout->addWidget(slider);
         connect(slider, &ParameterSlider::valueChanged, this, [this, k](double percent) {
@@ -113,6 +114,8 @@ PidFeedforwardEditor::PidFeedforwardEditor(const DesignMethodModule& module, QWi
     });
     layout->addWidget(new QLabel(tr("<b>Limits and filter</b>"), this));
     layout->addWidget(limits_);
+    onMeasurement_->setToolTip(tr("The D term differentiates the measured position (D = −fb′) "
+                                  "instead of the error, so a step of the command gives no kick"));
     layout->addWidget(onMeasurement_);
     connect(onMeasurement_, &QCheckBox::clicked, this, [this](bool on) {
         AxisSettings next = current_;

@@ -18,6 +18,9 @@ PlantEditor::PlantEditor(QWidget* parent) : QWidget(parent) {
         preset_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
     preset_->addItem(tr("custom"), QString());
     preset_->setAccessibleName(tr("Plant preset"));
+    preset_->setToolTip(tr("A plant of Braga et al.: the lower base (Eq. 2) or the upper base "
+                           "(Eq. 1) with the paper's ωn and kp; \"custom\" once a coefficient "
+                           "is edited"));
     k0_ = new NumberField(
         "k0", [](double v) { requireNonZero(v, "k0"); }, this);
     a1_ = new NumberField("a1", {}, this);
@@ -25,6 +28,10 @@ PlantEditor::PlantEditor(QWidget* parent) : QWidget(parent) {
     unit_ = new NumberField(
         "model unit", [](double v) { requirePositive(v, "model unit"); }, this);
     k0_->setToolTip(tr("Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³"));
+    a1_->setToolTip(tr("Coefficient a1 (1/s) of G(s) = k0 / (s³ + a1 s² + a2 s): the sum of the "
+                       "two non-zero poles' magnitudes"));
+    a2_->setToolTip(tr("Coefficient a2 (1/s²) of G(s) = k0 / (s³ + a1 s² + a2 s): the product of "
+                       "the two non-zero poles; k0/a2 is the velocity gain"));
     unit_->setToolTip(
         tr("Model output units per mm of trajectory (0.001: the model is in metres)"));
     auto* formula = new QLabel(tr("G(s) = k0 / (s³ + a1 s² + a2 s)"), this);

@@ -34,6 +34,8 @@ PpEditor::PpEditor(QWidget* parent) : QWidget(parent) {
         preset_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
     preset_->addItem(tr("custom"), QString());
     preset_->setAccessibleName(tr("ARX preset"));
+    preset_->setToolTip(tr("An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the "
+                           "y axis (Eq. 3), with T = 1 − 0.2 z⁻¹ and Ts = 70 ms"));
     a_ = new QLineEdit(this);
     b_ = new QLineEdit(this);
     a_->setAccessibleName("A");
@@ -44,9 +46,15 @@ PpEditor::PpEditor(QWidget* parent) : QWidget(parent) {
     b_->setProperty("normalToolTip", b_->toolTip());
     t1_ = new ParameterSlider(tr("Desired pole t&1 (T = 1 + t1 z⁻¹)"), QString(), -0.95, 0.95,
                               false, this);
+    t1_->setDescription(tr("The desired closed-loop pole: T = 1 + t1 z⁻¹ puts the RST loop's "
+                           "pole at z = −t1; the Diophantine equation A F + B G = T gives F, G"));
     ts_ = new NumberField(
         "ts", [](double v) { requirePositive(v, "ts"); }, this);
     zpetc_ = new QCheckBox(tr("ZPETC feedforward"), this);
+    ts_->setToolTip(tr("Sample time Ts (s) of the ARX model and of its RST controller"));
+    zpetc_->setToolTip(tr("Tomizuka's zero-phase-error tracking controller ahead of the loop: "
+                          "u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference "
+                          "previewed p samples"));
     form->addRow(tr("Preset"), preset_);
     form->addRow(tr("&A"), a_);
     form->addRow(tr("&B"), b_);

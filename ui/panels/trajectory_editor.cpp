@@ -33,6 +33,9 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     kind_->addItem(tr("Circle (x = R sin ωt, y = R cos ωt)"));
     kind_->addItem(tr("G-code program (x and y along its feed profile)"));
     kind_->setAccessibleName(tr("Trajectory kind"));
+    kind_->setToolTip(
+        tr("The commanded motion both axes follow: a point-to-point move, a circle "
+           "(x = R sin ωt, y = R cos ωt) or a G-code program along its feed profile"));
     kind_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     kind_->setMinimumContentsLength(14);
     // The move's profile beside the kind (a row of its own would push the panel past 768 px).
@@ -127,6 +130,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
     stepLayout->addWidget(durationLabel);
     stepLayout->addWidget(duration, 1);
     common->addRow(tr("Step dt (s)"), stepRow);
+    describeFields();
     layout->addLayout(common);
 
     for (NumberField* f : fields_)
@@ -181,6 +185,8 @@ QWidget* TrajectoryEditor::buildProgramPage() {
     form->addRow(tr("Program"), fileRow);
     examples_ = new QComboBox(page);
     examples_->setAccessibleName(tr("Example programs"));
+    examples_->setToolTip(tr("The example programs shipped with XY Tune (circles, a square, a "
+                             "star, an engraving): choose one to load it as the program"));
     examples_->addItem(tr("Examples…"));
     // Sized to a short name, not the longest example's: the editor column must not widen the
     // window past 1366 px (square_sharp_corners.nc did by 15 px).
@@ -213,7 +219,6 @@ QWidget* TrajectoryEditor::buildProgramPage() {
             throw InvalidInput("max_jerk", "must be >= 0 (0 = none)");
         requireProfileRate(v, "max_jerk", "mm/s^3", true);
     });
-    fields_["max_jerk"]->setToolTip(tr("0 = no jerk limit (a trapezoidal profile)"));
     connect(open_, &QPushButton::clicked, this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Open a G-code program"), examplesFolder(),
@@ -228,6 +233,45 @@ QWidget* TrajectoryEditor::buildProgramPage() {
             loadProgramFile(path);
     });
     return page;
+}
+
+void TrajectoryEditor::describeFields() {
+    // What each field is, its unit and how the run uses it; a field keeps its own tooltip
+    // where one was set with it (duration, max_jerk).
+    const QList<QPair<QString, QString>> tips = {
+        {"x0", tr("Start position x0 (mm) of the point-to-point move, held before t0")},
+        {"xf", tr("End position xf (mm) of the point-to-point move, reached at tf")},
+        {"t0", tr("Start time t0 (s) of the move")},
+        {"tf", tr("End time tf (s) of the move: the cubic (or quintic) joins x0 at t0 to xf at "
+                  "tf with the end velocities v0, vf (Braga et al. Eq. 4–6)")},
+        {"v0", tr("Velocity v0 (mm/s) at the start of the move")},
+        {"vf", tr("Velocity vf (mm/s) at the end of the move")},
+        {"radius", tr("Radius R (mm) of the circle x = R sin ωt, y = R cos ωt")},
+        {"omega", tr("Angular speed ω (rad/s) of the circle: one revolution takes 2π/ω seconds")},
+        {"ramp_in", tr("Ramp-in (s): the circle's speed rises smoothly from 0 to ω over this "
+                       "time, so the axes do not start with a step in velocity")},
+        {"feed_scale", tr("Feed scale: the feed override applied to every F word of the program "
+                          "(1 = as programmed)")},
+        {"max_accel", tr("Maximum acceleration (mm/s²) of the feed profile along the path; on "
+                         "arcs v²/R stays below it too")},
+        {"dt", tr("Simulation step dt (s): the continuous runs are sampled at it (and a G-code "
+                  "program's profile is planned at it)")}};
+    for (const auto& [name, tip] : tips)
+        if (NumberField* f = fields_.value(name); f && f->toolTip().isEmpty())
+            f->setToolTip(tip);
+    if (fields_.value("max_jerk"))
+        fields_["max_jerk"]->setToolTip(tr("Maximum jerk (mm/s³) of the feed profile (an "
+                                           "S-curve); 0 = no jerk limit (a trapezoidal profile)"));
+    // What a field shows again once an error at it is cleared.
+    for (NumberField* f : fields_)
+        f->setProperty("normalToolTip", f->toolTip());
+    programField_->setToolTip(programToolTip(QString()));
+}
+
+QString TrajectoryEditor::programToolTip(const QString& fileName) {
+    const QString what = tr("The G-code program; its whole text is kept in the session, so a "
+                            "shared session needs no .nc file");
+    return fileName.isEmpty() ? what : tr("%1\n%2").arg(fileName, what);
 }
 
 QString TrajectoryEditor::examplesFolder() {
@@ -272,7 +316,7 @@ bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::strin
         summary_->setText(message);
         return false;
     }
-    clearFieldError(programField_, QString());
+    clearFieldError(programField_, programToolTip(QString()));
     current_ = t;
     setTrajectory(t);
     emit trajectoryEdited(t);
@@ -282,7 +326,7 @@ bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::strin
 void TrajectoryEditor::showProgram(const TrajectorySettings& t) {
     programField_->setText(QString::fromStdString(t.gcode.fileName));
     programField_->setCursorPosition(0); // the name's start when it is wider than the field
-    programField_->setToolTip(QString::fromStdString(t.gcode.fileName));
+    programField_->setToolTip(programToolTip(QString::fromStdString(t.gcode.fileName)));
     if (t.gcode.program.empty()) {
         summary_->setText(tr("Open a program or pick an example."));
         return;
@@ -396,13 +440,13 @@ bool TrajectoryEditor::emitTrajectory() {
                            QString::fromStdString(e.what()));
             return false;
         }
-        clearFieldError(programField_, QString::fromStdString(t.gcode.fileName));
+        clearFieldError(programField_, programToolTip(QString::fromStdString(t.gcode.fileName)));
     }
     if (t.kind == TrajectoryKind::Cubic && !(t.tfSeconds > t.t0Seconds)) {
         markFieldError(fields_["tf"], tr("tf: must be later than t0"));
         return false;
     }
-    clearFieldError(fields_["tf"], QString());
+    clearFieldError(fields_["tf"], fields_["tf"]->property("normalToolTip").toString());
     // A run that cannot fit in memory is refused at the field the user just edited (dt unless it
     // was a time field), naming the count, never simulated.
     auto* edited = qobject_cast<NumberField*>(sender());

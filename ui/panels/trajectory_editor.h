@@ -65,6 +65,10 @@ signals:
     void refusalChanged(const QString& refusal);
 
 private:
+    /// The tooltips of the fields: what each is, its unit and how the run uses it.
+    void describeFields();
+    /// The program field's tooltip: the file name (when there is one) and what the field is.
+    static QString programToolTip(const QString& fileName);
     void emitIfValid();
     /// Emits the editor's trajectory when every field holds; false when one refuses it.
     bool emitTrajectory();

@@ -52,6 +52,10 @@ double interpolate(const std::vector<double>& omega, const std::vector<double>& 
 } // namespace
 
 BodePlot::BodePlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("Bode diagram of the loop L(jω) = C(jω) G(jω): magnitude (dB) and phase (°) "
+                  "against ω (rad/s) on an adaptive grid, with the gain and phase margins drawn "
+                  "where they are read (green when they meet the specification's minima, red when "
+                  "not), and |S| = |1/(1 + L)| and |T| = |L/(1 + L)|."));
     setObjectName("bode");
     setAutoAddPlottableToLegend(
         false); // the legend lists each curve once (magnitude and phase share it)

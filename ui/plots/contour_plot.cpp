@@ -36,6 +36,9 @@ QString mm(double v) {
 } // namespace
 
 ContourPlot::ContourPlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("The XY contour: the programmed path, the traced path of both axes' run, and the "
+                  "contour error (mm, the signed distance from each traced point to the nearest "
+                  "point of the path) magnified along the path normal by the \"error ×\" factor."));
     setObjectName("xy-contour");
     plotLayout()->insertRow(0);
     figures_ = new QCPTextElement(this, QString(), QFont(font().family(), 9));

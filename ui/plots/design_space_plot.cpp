@@ -185,6 +185,9 @@ void setScale(QCPAxis* axis, bool logarithmic) {
 } // namespace
 
 DesignSpacePlot::DesignSpacePlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("Design space: each cell of the (ωn, kp) grid is one Guillemin–Truxal design run "
+                  "on the session's trajectory, coloured by the chosen criterion; feasible cells "
+                  "meet every limit of the specification. Click a cell to take its ωn and kp."));
     setObjectName("design-space");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Design space"), QFont(font().family(), 10, QFont::Bold));

@@ -28,6 +28,9 @@ void setCurve(QCPGraph* g, const std::vector<double>& t, const std::vector<doubl
 } // namespace
 
 EnvelopePlot::EnvelopePlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("Envelope of the perturbed plants' runs: the range (min to max over the stable "
+                  "plants) of the chosen signal (error or output in mm, command in V) around the "
+                  "nominal run, against time (s)."));
     setObjectName("robustness-envelope");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Envelope"), QFont(font().family(), 10, QFont::Bold));

@@ -27,6 +27,8 @@ void placeVertical(QCPItemStraightLine* line, double x) {
 } // namespace
 
 HistogramPlot::HistogramPlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("Histogram of the chosen figure (RMSE or max |e| in mm, max |u| in V) over the "
+                  "stable perturbed plants, with the specification's limit drawn."));
     setObjectName("robustness-histogram");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Distribution"), QFont(font().family(), 10, QFont::Bold));

@@ -28,6 +28,10 @@ void setCurve(QCPCurve* curve, const std::vector<std::complex<double>>& points) 
 } // namespace
 
 NyquistPlot::NyquistPlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(
+        tr("Nyquist diagram: L(jω) in the complex plane for ω from 0 to ∞ (mirrored for negative "
+           "ω), with the critical point −1; Z = N + P counts the closed-loop unstable poles from "
+           "the encirclements N of −1 and the open-loop unstable poles P."));
     setObjectName("nyquist");
     setAutoAddPlottableToLegend(true);
     plotLayout()->insertRow(0);

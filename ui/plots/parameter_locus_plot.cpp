@@ -40,6 +40,9 @@ std::vector<double> niceValues(double lo, double hi, std::size_t wanted) {
 
 ParameterLocusPlot::ParameterLocusPlot(QWidget* parent)
     : PlotWidget(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    setToolTip(tr("Parameter locus: the closed-loop poles as the chosen parameter (ωn or kp) "
+                  "sweeps its range, with the design's value marked and the value where the loop "
+                  "turns unstable (a pole crossing the imaginary axis) marked."));
     setObjectName("parameter-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));

@@ -35,6 +35,9 @@ QCPScatterStyle zeroStyle(int index, const QColor& color) {
 
 PoleZeroPlot::PoleZeroPlot(QWidget* parent)
     : PlotWidget(parent), grid_(this), notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    setToolTip(tr("Pole-zero map: the plant's, controller's and closed loop's poles (×) and zeros "
+                  "(○) in the s-plane, or in the z-plane for the digital loop (View › Pole-zero "
+                  "map of the digital loop), with lines of constant damping."));
     setObjectName("pole-zero");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Pole-zero map"), QFont(font().family(), 10, QFont::Bold));

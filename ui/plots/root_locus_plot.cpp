@@ -29,6 +29,10 @@ QString formatGain(double k) {
 RootLocusPlot::RootLocusPlot(QWidget* parent)
     : PlotWidget(parent), grid_(this), overlay_(this),
       notice_(this, axisRect(), Qt::AlignTop | Qt::AlignRight) {
+    setToolTip(
+        tr("Root locus: the closed-loop poles of 1 + K L(s) = 0 as the loop gain K goes from 0 to "
+           "∞ (K = 1 is the design), with the specification's ζ wedge and settling line; click a "
+           "point to apply its gain, drag a closed-loop pole along the locus or a PID's zero."));
     setObjectName("root-locus");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Root locus"), QFont(font().family(), 10, QFont::Bold));

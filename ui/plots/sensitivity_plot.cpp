@@ -21,6 +21,9 @@ QCPGraph* line(QCustomPlot* plot, const QColor& color, const QString& name, bool
 } // namespace
 
 SensitivityPlot::SensitivityPlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("ZPETC sensitivity: the RMSE (mm) of the run with and without the feedforward as "
+                  "the plant mismatch grows from the nominal model (0 %) to the ranges set (100 "
+                  "%), each point over the same seeded plants."));
     setObjectName("zpetc-sensitivity");
     plotLayout()->insertRow(0);
     plotLayout()->addElement(

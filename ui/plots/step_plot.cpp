@@ -61,6 +61,9 @@ StepEnvelope specificationEnvelope(const Specification& spec) {
 }
 
 StepPlot::StepPlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("Unit step of the closed loop (not the trajectory): output against time (s), "
+                  "with the rise, peak and settling (2 % band) markers and the specification's "
+                  "overshoot and settling envelope; samples outside it are red."));
     setObjectName("step-response");
     plotLayout()->insertRow(0);
     title_ = new QCPTextElement(this, tr("Step response"), QFont(font().family(), 10, QFont::Bold));

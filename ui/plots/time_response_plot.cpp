@@ -21,6 +21,9 @@ QCPGraph* makeGraph(QCPAxisRect* rect, const QColor& color, const QString& name,
 } // namespace
 
 TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
+    setToolTip(tr("Time response of the selected axis on the trajectory: reference r, output y and "
+                  "error e = r − y (mm), and the command u (V) with the ±umax band and clipped "
+                  "intervals shaded; the digital implementation's run as a translucent band."));
     setObjectName("time-response");
     plotLayout()->clear();
     title_ = new QCPTextElement(this, QString(), QFont(font().family(), 10, QFont::Bold));

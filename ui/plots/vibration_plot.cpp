@@ -44,6 +44,11 @@ QVector<QCPGraphData> curveData(const std::vector<double>& x, const std::vector<
 } // namespace
 
 VibrationPlot::VibrationPlot(QWidget* parent) : PlotWidget(parent) {
+    description_ =
+        tr("Vibration: the rigid plant, the plant with its flexible mode and the notch (mm/V "
+           "against Hz), the input shaper's sensitivity curve with the 5 % tolerance, and the "
+           "residual vibration of the run's move shaped and unshaped.");
+    setToolTip(description_);
     setObjectName("vibration");
     setAutoAddPlottableToLegend(false);
     plotLayout()->clear();
@@ -200,7 +205,7 @@ void VibrationPlot::showVibration(const AxisVibration& v, const QString& title,
     }
     acceleration_->setVisible(measured.acceleration != nullptr);
     psdAxis->setVisible(measured.acceleration != nullptr);
-    setToolTip(sources.join('\n'));
+    setToolTip(sources.isEmpty() ? description_ : description_ + '\n' + sources.join('\n'));
     // The magnitude range: what the curves reach within the grid, the deep low-frequency part
     // of an integrating plant cut at 60 dB below the top so the mode's peak stays readable.
     double top = -1e300;

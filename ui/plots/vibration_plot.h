@@ -60,6 +60,7 @@ public:
     QStringList markerTexts() const;
 
 private:
+    QString description_; ///< what the plot draws: the start of its tooltip
     void clearMarkers();
     void placeLegend(bool shown);
 
