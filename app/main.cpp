@@ -9,6 +9,7 @@
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
+#include "ui/session/ui_language.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -43,6 +44,11 @@ struct Options {
                            "With --screenshot: show this tab first (e.g. \"Design space\"; "
                            "a design-space or robustness study is run before the picture).",
                            "NAME"};
+    QCommandLineOption language{
+        "language",
+        "Language of the window: pt_BR (Brazilian Portuguese), en (English), or \"\" for the "
+        "system's; overrides the one chosen in View > Language (--screenshot: en by default).",
+        "CODE"};
     void addTo(QCommandLineParser& parser) const {
         parser.setApplicationDescription(
             "Tuning workbench for XY coordinate-table position controllers");
@@ -51,6 +57,7 @@ struct Options {
         parser.addOption(screenshot);
         parser.addOption(size);
         parser.addOption(tab);
+        parser.addOption(language);
         parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
     }
 };
@@ -99,6 +106,20 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption& screenshot = options.screenshot;
     const QCommandLineOption& size = options.size;
     const QCommandLineOption& tab = options.tab;
+
+    // The language, before any widget is built: --language, else English for a screenshot
+    // (the same picture on every machine), else the user's choice (View > Language).
+    QString languageCode =
+        parser.isSet(screenshot) ? QStringLiteral("en") : xyt::ui::storedUiLanguage();
+    if (parser.isSet(options.language)) {
+        languageCode = parser.value(options.language);
+        if (!xyt::ui::uiLanguageCodes().contains(languageCode)) {
+            std::fprintf(stderr, "xytune: --language: expected pt_BR, en or \"\", got '%s'\n",
+                         qPrintable(languageCode));
+            return 2;
+        }
+    }
+    xyt::ui::installUiLanguage(languageCode);
 
     xyt::ui::TuningSession session;
     if (parser.isSet(screenshot)) {

@@ -41,6 +41,7 @@
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
+#include "ui/session/ui_language.h"
 #include "ui/snapshot_compare_dialog.h"
 #include "ui/views/bode_view.h"
 #include "ui/views/contour_view.h"
@@ -57,6 +58,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -673,6 +675,7 @@ void MainWindow::buildMenus() {
         for (QCustomPlot* plot : findChildren<QCustomPlot*>())
             resetView(plot);
     });
+    buildLanguageMenu(view);
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About XY Tune"), this, [this] {
         QMessageBox::about(this, tr("About XY Tune"),
@@ -680,6 +683,36 @@ void MainWindow::buildMenus() {
                               "position controllers.<br>GPL-3.0-or-later.")
                                .arg(QApplication::applicationVersion()));
     });
+}
+
+void MainWindow::buildLanguageMenu(QMenu* view) {
+    // The languages by their own names (a user who cannot read the current one finds theirs);
+    // the choice applies at the next start, when the window is built in it (ui_language.h).
+    QMenu* languages = view->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(languages);
+    const QString stored = storedUiLanguage();
+    const QList<QPair<QString, QString>> choices = {
+        {QString(), tr("&System language")},
+        {QStringLiteral("en"), QStringLiteral("&English")},
+        {QStringLiteral("pt_BR"), QStringLiteral("&Português (Brasil)")}};
+    for (const auto& [code, name] : choices) {
+        QAction* action = languages->addAction(name);
+        action->setCheckable(true);
+        action->setChecked(code == stored);
+        action->setData(code);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code = code] {
+            storeUiLanguage(code);
+            const char* const context = "xyt::ui::MainWindow";
+            QMessageBox::information(
+                this,
+                translatedFor(code, context, QT_TRANSLATE_NOOP("xyt::ui::MainWindow", "Language")),
+                translatedFor(
+                    code, context,
+                    QT_TRANSLATE_NOOP("xyt::ui::MainWindow",
+                                      "The language changes when XY Tune is started again.")));
+        });
+    }
 }
 
 namespace {

@@ -10,6 +10,10 @@ QString formatNumber(double v) {
     return QString::number(v, 'g', 10);
 }
 
+QString withDecimalPoint(QString text) {
+    return text.replace(QLatin1Char(','), QLatin1Char('.'));
+}
+
 NumberField::NumberField(const QString& fieldName, Validator validator, QWidget* parent)
     : QLineEdit(parent), fieldName_(fieldName), validator_(std::move(validator)) {
     setAccessibleName(fieldName);
@@ -28,7 +32,8 @@ void NumberField::setValue(double v) {
 
 bool NumberField::commit() {
     try {
-        const double v = parseNumber(text().toStdString(), fieldName_.toStdString());
+        const double v =
+            parseNumber(withDecimalPoint(text()).toStdString(), fieldName_.toStdString());
         if (validator_)
             validator_(v);
         clearError();
