@@ -1,4818 +1,4821 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_BR">
-<context>
-    <name>QObject</name>
-    <message>
-        <source>ITAE</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RMSE</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |u|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settle time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>phase margin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>gain margin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mm·s²</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>s after tf</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>deg, larger is better</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>dB, larger is better</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1%2 (%3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> ∫t|e|dt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not write %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save plot</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PNG image (*.png);;PDF document (*.pdf)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reset view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save as PNG...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save as PDF...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>breaks spec</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ζ = 1 (Mp 0 %)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ζ ≥ %1 (Mp %2 %)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|z| ≤ %1 (ts %2 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>σ ≤ %1 (ts %2 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reference model ωn %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>dominant poles: ωn %1 rad/s, ζ %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>closed-loop unit step</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>loop alone Kf B/T</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>loop alone (no ZPETC)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>with ZPETC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>with ZPETC (off)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>n/a</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the axis has no loop to analyse</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>an untitled session</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>“%1”</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Recover unsaved work</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY Tune was closed without saving changes to %1 (last kept %2).
+    <context>
+        <name>QObject</name>
+        <message>
+            <source>ITAE</source>
+            <translation>ITAE</translation>
+        </message>
+        <message>
+            <source>max |e|</source>
+            <translation>máx |e|</translation>
+        </message>
+        <message>
+            <source>RMSE</source>
+            <translation>RMSE</translation>
+        </message>
+        <message>
+            <source>max |u|</source>
+            <translation>máx |u|</translation>
+        </message>
+        <message>
+            <source>settle time</source>
+            <translation>tempo de acomodação</translation>
+        </message>
+        <message>
+            <source>phase margin</source>
+            <translation>margem de fase</translation>
+        </message>
+        <message>
+            <source>gain margin</source>
+            <translation>margem de ganho</translation>
+        </message>
+        <message>
+            <source>mm·s²</source>
+            <translation>mm·s²</translation>
+        </message>
+        <message>
+            <source>V</source>
+            <translation>V</translation>
+        </message>
+        <message>
+            <source>s after tf</source>
+            <translation>s após tf</translation>
+        </message>
+        <message>
+            <source>deg, larger is better</source>
+            <translation>graus, maior é melhor</translation>
+        </message>
+        <message>
+            <source>dB, larger is better</source>
+            <translation>dB, maior é melhor</translation>
+        </message>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>%1%2 (%3)</source>
+            <translation>%1%2 (%3)</translation>
+        </message>
+        <message>
+            <source> ∫t|e|dt</source>
+            <translation> ∫t|e|dt</translation>
+        </message>
+        <message>
+            <source>Could not write %1</source>
+            <translation>Não foi possível gravar %1</translation>
+        </message>
+        <message>
+            <source>Save plot</source>
+            <translation>Salvar gráfico</translation>
+        </message>
+        <message>
+            <source>PNG image (*.png);;PDF document (*.pdf)</source>
+            <translation>Imagem PNG (*.png);;Documento PDF (*.pdf)</translation>
+        </message>
+        <message>
+            <source>Reset view</source>
+            <translation>Restaurar vista</translation>
+        </message>
+        <message>
+            <source>Save as PNG...</source>
+            <translation>Salvar como PNG...</translation>
+        </message>
+        <message>
+            <source>Save as PDF...</source>
+            <translation>Salvar como PDF...</translation>
+        </message>
+        <message>
+            <source>breaks spec</source>
+            <translation>viola a especificação</translation>
+        </message>
+        <message>
+            <source>ζ = 1 (Mp 0 %)</source>
+            <translation>ζ = 1 (Mp 0 %)</translation>
+        </message>
+        <message>
+            <source>ζ ≥ %1 (Mp %2 %)</source>
+            <translation>ζ ≥ %1 (Mp %2 %)</translation>
+        </message>
+        <message>
+            <source>|z| ≤ %1 (ts %2 s)</source>
+            <translation>|z| ≤ %1 (ts %2 s)</translation>
+        </message>
+        <message>
+            <source>σ ≤ %1 (ts %2 s)</source>
+            <translation>σ ≤ %1 (ts %2 s)</translation>
+        </message>
+        <message>
+            <source>reference model ωn %1</source>
+            <translation>modelo de referência ωn %1</translation>
+        </message>
+        <message>
+            <source>dominant poles: ωn %1 rad/s, ζ %2</source>
+            <translation>polos dominantes: ωn %1 rad/s, ζ %2</translation>
+        </message>
+        <message>
+            <source>closed-loop unit step</source>
+            <translation>degrau unitário em malha fechada</translation>
+        </message>
+        <message>
+            <source>loop alone Kf B/T</source>
+            <translation>só a malha Kf B/T</translation>
+        </message>
+        <message>
+            <source>loop alone (no ZPETC)</source>
+            <translation>só a malha (sem ZPETC)</translation>
+        </message>
+        <message>
+            <source>with ZPETC</source>
+            <translation>com ZPETC</translation>
+        </message>
+        <message>
+            <source>with ZPETC (off)</source>
+            <translation>com ZPETC (desligado)</translation>
+        </message>
+        <message>
+            <source>n/a</source>
+            <translation>n/d</translation>
+        </message>
+        <message>
+            <source>the axis has no loop to analyse</source>
+            <translation>o eixo não tem malha para analisar</translation>
+        </message>
+        <message>
+            <source>an untitled session</source>
+            <translation>uma sessão sem título</translation>
+        </message>
+        <message>
+            <source>“%1”</source>
+            <translation>“%1”</translation>
+        </message>
+        <message>
+            <source>Recover unsaved work</source>
+            <translation>Recuperar trabalho não salvo</translation>
+        </message>
+        <message>
+            <source>XY Tune was closed without saving changes to %1 (last kept %2).
 
 Restore that work?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Restore</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Discard</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Restore unsaved work</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live limit of %4 (the exports and the report use dt = %2 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ωn = %1 rad/s, kp = %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pole placement, t1 = %1, Ts = %2 s%3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, ZPETC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>plant k0 = %1, a1 = %2, a2 = %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not computed (the study was cancelled)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unstable closed loop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the run diverged</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling %1 s &gt; %2 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overshoot %1 % &gt; %2 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|u| saturates at %1 V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|u| %1 V &gt; %2 V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>phase margin %1° &lt; %2°</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>gain margin %1 dB &lt; %2 dB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max error %1 % &gt; %2 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>—</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation>O XY Tune foi fechado sem salvar as alterações em %1 (guardadas pela última vez em %2).
+
+Restaurar esse trabalho?</translation>
+        </message>
+        <message>
+            <source>&amp;Restore</source>
+            <translation>&amp;Restaurar</translation>
+        </message>
+        <message>
+            <source>&amp;Discard</source>
+            <translation>&amp;Descartar</translation>
+        </message>
+        <message>
+            <source>Restore unsaved work</source>
+            <translation>Restaurar trabalho não salvo</translation>
+        </message>
+        <message>
+            <source>live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live limit of %4 (the exports and the report use dt = %2 s)</source>
+            <translation>vista ao vivo simulada com dt = %1 s, não %2 s: %3 amostras excedem o limite ao vivo de %4 (as exportações e o relatório usam dt = %2 s)</translation>
+        </message>
+        <message>
+            <source>ωn = %1 rad/s, kp = %2</source>
+            <translation>ωn = %1 rad/s, kp = %2</translation>
+        </message>
+        <message>
+            <source>pole placement, t1 = %1, Ts = %2 s%3</source>
+            <translation>alocação de polos, t1 = %1, Ts = %2 s%3</translation>
+        </message>
+        <message>
+            <source>, ZPETC</source>
+            <translation>, ZPETC</translation>
+        </message>
+        <message>
+            <source>plant k0 = %1, a1 = %2, a2 = %3</source>
+            <translation>planta k0 = %1, a1 = %2, a2 = %3</translation>
+        </message>
+        <message>
+            <source>not computed (the study was cancelled)</source>
+            <translation>não calculado (o estudo foi cancelado)</translation>
+        </message>
+        <message>
+            <source>unstable closed loop</source>
+            <translation>malha fechada instável</translation>
+        </message>
+        <message>
+            <source>the run diverged</source>
+            <translation>a simulação divergiu</translation>
+        </message>
+        <message>
+            <source>settling %1 s &gt; %2 s</source>
+            <translation>acomodação %1 s &gt; %2 s</translation>
+        </message>
+        <message>
+            <source>overshoot %1 % &gt; %2 %</source>
+            <translation>sobressinal %1 % &gt; %2 %</translation>
+        </message>
+        <message>
+            <source>|u| saturates at %1 V</source>
+            <translation>|u| satura em %1 V</translation>
+        </message>
+        <message>
+            <source>|u| %1 V &gt; %2 V</source>
+            <translation>|u| %1 V &gt; %2 V</translation>
+        </message>
+        <message>
+            <source>phase margin %1° &lt; %2°</source>
+            <translation>margem de fase %1° &lt; %2°</translation>
+        </message>
+        <message>
+            <source>gain margin %1 dB &lt; %2 dB</source>
+            <translation>margem de ganho %1 dB &lt; %2 dB</translation>
+        </message>
+        <message>
+            <source>max error %1 % &gt; %2 %</source>
+            <translation>erro máx %1 % &gt; %2 %</translation>
+        </message>
+        <message>
+            <source>—</source>
+            <translation>—</translation>
+        </message>
+        <message>
+            <source>ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5</source>
+            <translation>ωn = %1 rad/s   kp = %2   %3 = %4   viável: %5</translation>
+        </message>
+        <message>
+            <source>yes</source>
+            <translation>sim</translation>
+        </message>
+        <message>
+            <source>no</source>
+            <translation>não</translation>
+        </message>
+        <message>
+            <source>
 fails: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>colour: the metric, by the scale at the right (yellow is the high end, better only for the margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or diverged · light grey: not computed (cancelled)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>within ±bound</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 lags outside</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp %1 V/mm, ki %2 V/(mm·s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>circular</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>linear</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the G-code program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the program %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the %1 mm circle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the point-to-point move</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The contour of %1, run once for each pair of gains with the axes, the limit and the %2 estimate of the session as it is when the sweep starts.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the actuator limit, %1 V then</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>axis %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the coupling&apos;s estimate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the implementation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 closed-loop poles</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 RMSE (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 max |e| (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 max |u| (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 settling (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unstable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 overshoot (%)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 ITAE</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::BodePlot</name>
-    <message>
-        <source>Bode diagram</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>magnitude (dB)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>phase (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>frequency ω (rad/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>measured L = C H</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>measured L = C H (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hover the plot: ω, |L| and ∠L of the open loop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>open loop L</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|S| sensitivity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|T| closed loop</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tracking, loop alone</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tracking with %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tracking with </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>L without the notch</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> (PM %1°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>GM %1 dB at %2 rad/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> dB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PM %1° at %2 rad/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reference ω = %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Nyquist π/Ts</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the closed loop is unstable: the margins are not robustness measures</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::BodeView</name>
-    <message>
-        <source>Bode diagram of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No frequency analysis: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ContourBandPlot</name>
-    <message>
-        <source>XY contour</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>x (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>y (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The programmed contour dashed, the nominal design&apos;s traced contour solid, and the band the mismatched plant pairs trace (min–max light, 5–95 % darker); the contour error is magnified about the contour by the factor in the title.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not computed yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No stable plant pair: no band.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY contour, error ×%1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ContourControls</name>
-    <message>
-        <source>Ballbar</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ballbar polar view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The ISO 230-4 circular test of the program&apos;s full circles, as a ballbar plots it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>◀</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Previous corner</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom to the previous sharp corner</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>▶</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Next corner</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zoom to the next sharp corner (after the last one: the whole path)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ContourPlot</name>
-    <message>
-        <source>x (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>y (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>commanded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>traced</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>F max/min</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G (LS centre)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>sharp corners</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>largest error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY contour: an axis could not be simulated</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY contour: the program could not be run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error × %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>independent axes, error × %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>radial, after the ramp-in</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>from the line</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cross-coupled contour error (%1): max %2 mm, RMS %3 mm; independent axes: max %4 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error (radial, after the ramp-in): max %1 mm, RMS %2 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tracking error: max |e_x| %1 mm, max |e_y| %2 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>programmed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error × %1, |e| (mm) &lt; %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>≥ %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error max %1, RMS %2 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; corner %1/%2: %3 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; corner %1/%2: no sample near it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>; %n corner(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Cross-coupled: </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; independent axes: max %1 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>without feedforward, error × %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; without feedforward: max %1 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>nominal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CW run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CCW run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 ×%2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ISO 230-4 (mm): G %1, F max %2, F min %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, H %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 without friction compensation ×%2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; without friction compensation G %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 with independent axes ×%2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; independent axes G %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 without feedforward ×%2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; without feedforward G %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::CouplingSweepDialog</name>
-    <message>
-        <source>Tune the cross-coupling by the contour error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp values</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ki values</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The values of kp to try (V/mm), separated by commas; 0 and 0 is the coupling off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The values of ki to try (V/(mm·s)), separated by commas</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp (V/mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ki (V/(mm·s))</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Run the sweep on the session as it is now (at most %1 pairs)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max contour error (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>refused: the coupled loop is unstable on a line</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>failed: the run was refused or diverged</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not run (cancelled)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>an axis reaches its limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>best</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save as PNG...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save as PDF...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The best: %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Apply</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set the selected cell&apos;s gains as the session&apos;s cross-coupling</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp 0, ki 0: the coupling off (the independent axes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not run: the sweep was cancelled before it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Refused: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Max contour error %1, RMS %2 (independent axes: max %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Coupled loop at its least stable direction: spectral radius %1, disk margin %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>An axis reaches its actuator limit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Both axes stay inside their actuator limit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Warning: %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The best of the grid.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Run again</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Computed for the session before it changed (%1). Press Run again for the session as it is.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelling: the runs under way finish first…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Running the contour for each pair of gains…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> The session has changed since the sweep started: its result will be for the session as it was.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The sweep could not run: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelled: %1 of %2 pairs ran.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 pairs ran in %2 s.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> %1 refused: the coupled loop is unstable on a line of the path.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> %1 failed.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> %1 drive an axis to its limit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stale: the session has changed since this sweep (%1); nothing can be applied until it runs again. </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not run yet: press Run.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Independent axes (coupling off): max %1, RMS %2.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Independent axes (coupling off): %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Best of the pairs that ran</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Best</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No pair of gains ran: no best.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: the coupling off.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> No pair of the grid beats the independent axes on this path.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2: max %3, RMS %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, %1 times smaller than the independent axes&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, no smaller than the independent axes&apos;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> Every pair inside the limit has a coupled loop unstable at some direction of an arc: chosen among them.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> Every pair that ran drives an axis to its limit: chosen among them.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Selected: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>: max %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>: %1, nothing to apply.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> These are the session&apos;s gains.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::CrossCouplingEditor</name>
-    <message>
-        <source>Cross-coupling</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Proportional gain of the coupling (V per mm of estimated contour error); kp and ki 0: off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Integral gain of the coupling (V per mm·s); it stops integrating while an axis is at its limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>circular</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>linear</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How the contour error is estimated from the two axis errors: the tangent line&apos;s, or the circle&apos;s with the path&apos;s curvature</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp (V/mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ki (V/(mm·s))</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Estimate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tune…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Run the contour once for each kp and ki of a small grid and pick the gains with the smallest contour error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cross-coupling ●</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cross-coupled contouring: kp %1 V/mm, ki %2 V/(mm·s), %3 estimate</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cross-coupled contouring: off (each axis follows its own reference)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::DesignSpacePlot</name>
-    <message>
-        <source>Design space</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ωn (rad/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp (V per model unit)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>metric</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>current</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>best</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>refined</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>least violating</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not computed yet: set the grid and press Run.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show the whole grid</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save as PNG...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save as PDF...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>feasible region</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::DesignSpaceView</name>
-    <message>
-        <source>The study failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>logarithmic spacing</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Grid</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ωn (rad/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>kp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>logarithmic colour scale</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Choice</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Best design (min; max for margins)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Heat map shows</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>°</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> dB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling time ≤</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>step overshoot ≤</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max tracking error ≤</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|u| ≤ (actuator limit)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>phase margin ≥ (0 = none)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>gain margin ≥ (0 = none)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;i&gt;The session&apos;s specification, shared with the metrics panel.&lt;/i&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set the grid and press Run to study the current axis.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Relax the limits</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set the specification to the smallest limits the least-violating design (▲) meets (an undoable step)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Live</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Recompute the map when the plant, the trajectory or the limits change: a coarse preview at once, the full study when the inputs rest</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Settings</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show or hide the grid, the choice of the best design and the specification (hidden, the map takes the whole width)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Hover a cell for its figures; click it to load that design. Colour: the metric (scale at the right) · unveiled, outlined: feasible · veiled: infeasible · grey: unstable or diverged.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The design space maps a PI with its feedforward; axis %1 has D: set D to 0 to map it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The design space applies to Guillemin–Truxal and PI + feedforward axes; axis %1 uses %2.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot run: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Live preview of axis %1: %2 × %3 designs…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Studying %1 × %2 designs of axis %3…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1, axis %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the inputs rest.
+            <translation>
+falha: %1</translation>
+        </message>
+        <message>
+            <source>colour: the metric, by the scale at the right (yellow is the high end, better only for the margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or diverged · light grey: not computed (cancelled)</source>
+            <translation>cor: a métrica, pela escala à direita (amarelo é o extremo alto, melhor só para as margens) · sem véu e contornado: viável · com véu: inviável · cinza: instável ou divergente · cinza-claro: não calculado (cancelado)</translation>
+        </message>
+        <message>
+            <source>within ±bound</source>
+            <translation>dentro de ±limite</translation>
+        </message>
+        <message>
+            <source>%1 lags outside</source>
+            <translation>%1 atrasos fora</translation>
+        </message>
+        <message>
+            <source> mm</source>
+            <translation> mm</translation>
+        </message>
+        <message>
+            <source>kp %1 V/mm, ki %2 V/(mm·s)</source>
+            <translation>kp %1 V/mm, ki %2 V/(mm·s)</translation>
+        </message>
+        <message>
+            <source>circular</source>
+            <translation>circular</translation>
+        </message>
+        <message>
+            <source>linear</source>
+            <translation>linear</translation>
+        </message>
+        <message>
+            <source>the G-code program</source>
+            <translation>o programa G-code</translation>
+        </message>
+        <message>
+            <source>the program %1</source>
+            <translation>o programa %1</translation>
+        </message>
+        <message>
+            <source>the %1 mm circle</source>
+            <translation>o círculo de %1 mm</translation>
+        </message>
+        <message>
+            <source>the point-to-point move</source>
+            <translation>o movimento ponto a ponto</translation>
+        </message>
+        <message>
+            <source>The contour of %1, run once for each pair of gains with the axes, the limit and the %2 estimate of the session as it is when the sweep starts.</source>
+            <translation>O contorno de %1, simulado uma vez para cada par de ganhos com os eixos, o limite e a estimativa %2 da sessão como está quando a varredura começa.</translation>
+        </message>
+        <message>
+            <source>the actuator limit, %1 V then</source>
+            <translation>o limite do atuador, %1 V naquele momento</translation>
+        </message>
+        <message>
+            <source>axis %1</source>
+            <translation>eixo %1</translation>
+        </message>
+        <message>
+            <source>the trajectory</source>
+            <translation>a trajetória</translation>
+        </message>
+        <message>
+            <source>the coupling's estimate</source>
+            <translation>a estimativa do acoplamento</translation>
+        </message>
+        <message>
+            <source>the specification</source>
+            <translation>a especificação</translation>
+        </message>
+        <message>
+            <source>the implementation</source>
+            <translation>a implementação</translation>
+        </message>
+        <message>
+            <source>%1 design</source>
+            <translation>projeto %1</translation>
+        </message>
+        <message>
+            <source>%1 closed-loop poles</source>
+            <translation>polos de malha fechada %1</translation>
+        </message>
+        <message>
+            <source>%1 RMSE (mm)</source>
+            <translation>%1 RMSE (mm)</translation>
+        </message>
+        <message>
+            <source>%1 max |e| (mm)</source>
+            <translation>%1 máx |e| (mm)</translation>
+        </message>
+        <message>
+            <source>%1 max |u| (V)</source>
+            <translation>%1 máx |u| (V)</translation>
+        </message>
+        <message>
+            <source>%1 settling (s)</source>
+            <translation>%1 acomodação (s)</translation>
+        </message>
+        <message>
+            <source>unstable</source>
+            <translation>instável</translation>
+        </message>
+        <message>
+            <source>%1 overshoot (%)</source>
+            <translation>%1 sobressinal (%)</translation>
+        </message>
+        <message>
+            <source>%1 ITAE</source>
+            <translation>%1 ITAE</translation>
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::BodePlot</name>
+        <message>
+            <source>Bode diagram</source>
+            <translation>Diagrama de Bode</translation>
+        </message>
+        <message>
+            <source>magnitude (dB)</source>
+            <translation>módulo (dB)</translation>
+        </message>
+        <message>
+            <source>phase (°)</source>
+            <translation>fase (°)</translation>
+        </message>
+        <message>
+            <source>frequency ω (rad/s)</source>
+            <translation>frequência ω (rad/s)</translation>
+        </message>
+        <message>
+            <source>measured L = C H</source>
+            <translation>L = C H medido</translation>
+        </message>
+        <message>
+            <source>measured L = C H (%1)</source>
+            <translation>L = C H medido (%1)</translation>
+        </message>
+        <message>
+            <source>hover the plot: ω, |L| and ∠L of the open loop</source>
+            <translation>passe o mouse sobre o gráfico: ω, |L| e ∠L da malha aberta</translation>
+        </message>
+        <message>
+            <source>open loop L</source>
+            <translation>malha aberta L</translation>
+        </message>
+        <message>
+            <source>|S| sensitivity</source>
+            <translation>|S| sensibilidade</translation>
+        </message>
+        <message>
+            <source>|T| closed loop</source>
+            <translation>|T| malha fechada</translation>
+        </message>
+        <message>
+            <source>tracking, loop alone</source>
+            <translation>seguimento, só a malha</translation>
+        </message>
+        <message>
+            <source>tracking with %1</source>
+            <translation>seguimento com %1</translation>
+        </message>
+        <message>
+            <source>tracking with </source>
+            <translation>seguimento com </translation>
+        </message>
+        <message>
+            <source>L without the notch</source>
+            <translation>L sem o notch</translation>
+        </message>
+        <message>
+            <source> (PM %1°)</source>
+            <translation> (MF %1°)</translation>
+        </message>
+        <message>
+            <source>GM %1 dB at %2 rad/s</source>
+            <translation>MG %1 dB em %2 rad/s</translation>
+        </message>
+        <message>
+            <source> dB</source>
+            <translation> dB</translation>
+        </message>
+        <message>
+            <source>PM %1° at %2 rad/s</source>
+            <translation>MF %1° em %2 rad/s</translation>
+        </message>
+        <message>
+            <source>reference ω = %1</source>
+            <translation>referência ω = %1</translation>
+        </message>
+        <message>
+            <source>Nyquist π/Ts</source>
+            <translation>Nyquist π/Ts</translation>
+        </message>
+        <message>
+            <source>the closed loop is unstable: the margins are not robustness measures</source>
+            <translation>a malha fechada é instável: as margens não são medidas de robustez</translation>
+        </message>
+        <message>
+            <source>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</source>
+            <translation>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</translation>
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::BodeView</name>
+        <message>
+            <source>Bode diagram of %1</source>
+            <translation>Diagrama de Bode de %1</translation>
+        </message>
+        <message>
+            <source>No frequency analysis: %1</source>
+            <translation>Sem análise em frequência: %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ContourBandPlot</name>
+        <message>
+            <source>XY contour</source>
+            <translation>Contorno XY</translation>
+        </message>
+        <message>
+            <source>x (mm)</source>
+            <translation>x (mm)</translation>
+        </message>
+        <message>
+            <source>y (mm)</source>
+            <translation>y (mm)</translation>
+        </message>
+        <message>
+            <source>The programmed contour dashed, the nominal design's traced contour solid, and the band the mismatched plant pairs trace (min–max light, 5–95 % darker); the contour error is magnified about the contour by the factor in the title.</source>
+            <translation>O contorno programado tracejado, o contorno percorrido pelo projeto nominal em linha cheia e a faixa que os pares de plantas discrepantes percorrem (mín–máx claro, 5–95 % mais escuro); o erro de contorno é ampliado em torno do contorno pelo fator do título.</translation>
+        </message>
+        <message>
+            <source>Not computed yet.</source>
+            <translation>Ainda não calculado.</translation>
+        </message>
+        <message>
+            <source>No stable plant pair: no band.</source>
+            <translation>Nenhum par de plantas estável: sem faixa.</translation>
+        </message>
+        <message>
+            <source>XY contour, error ×%1</source>
+            <translation>Contorno XY, erro ×%1</translation>
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ContourControls</name>
+        <message>
+            <source>Ballbar</source>
+            <translation>Ballbar</translation>
+        </message>
+        <message>
+            <source>Ballbar polar view</source>
+            <translation>Vista polar do ballbar</translation>
+        </message>
+        <message>
+            <source>The ISO 230-4 circular test of the program's full circles, as a ballbar plots it</source>
+            <translation>O ensaio circular ISO 230-4 dos círculos completos do programa, como um ballbar o traça</translation>
+        </message>
+        <message>
+            <source>◀</source>
+            <translation>◀</translation>
+        </message>
+        <message>
+            <source>Previous corner</source>
+            <translation>Canto anterior</translation>
+        </message>
+        <message>
+            <source>Zoom to the previous sharp corner</source>
+            <translation>Ampliar o canto vivo anterior</translation>
+        </message>
+        <message>
+            <source>▶</source>
+            <translation>▶</translation>
+        </message>
+        <message>
+            <source>Next corner</source>
+            <translation>Próximo canto</translation>
+        </message>
+        <message>
+            <source>Zoom to the next sharp corner (after the last one: the whole path)</source>
+            <translation>Ampliar o próximo canto vivo (depois do último: o percurso inteiro)</translation>
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ContourPlot</name>
+        <message>
+            <source>x (mm)</source>
+            <translation>x (mm)</translation>
+        </message>
+        <message>
+            <source>y (mm)</source>
+            <translation>y (mm)</translation>
+        </message>
+        <message>
+            <source>commanded</source>
+            <translation>comandado</translation>
+        </message>
+        <message>
+            <source>traced</source>
+            <translation>percorrido</translation>
+        </message>
+        <message>
+            <source>F max/min</source>
+            <translation>F máx/mín</translation>
+        </message>
+        <message>
+            <source>G (LS centre)</source>
+            <translation>G (centro MQ)</translation>
+        </message>
+        <message>
+            <source>sharp corners</source>
+            <translation>cantos vivos</translation>
+        </message>
+        <message>
+            <source>largest error</source>
+            <translation>maior erro</translation>
+        </message>
+        <message>
+            <source>XY contour: an axis could not be simulated</source>
+            <translation>Contorno XY: um eixo não pôde ser simulado</translation>
+        </message>
+        <message>
+            <source>XY contour: the program could not be run</source>
+            <translation>Contorno XY: o programa não pôde ser executado</translation>
+        </message>
+        <message>
+            <source>error × %1</source>
+            <translation>erro × %1</translation>
+        </message>
+        <message>
+            <source>independent axes, error × %1</source>
+            <translation>eixos independentes, erro × %1</translation>
+        </message>
+        <message>
+            <source>radial, after the ramp-in</source>
+            <translation>radial, após a rampa de entrada</translation>
+        </message>
+        <message>
+            <source>from the line</source>
+            <translation>em relação à linha</translation>
+        </message>
+        <message>
+            <source>Cross-coupled contour error (%1): max %2 mm, RMS %3 mm; independent axes: max %4 mm</source>
+            <translation>Erro de contorno com acoplamento cruzado (%1): máx %2 mm, RMS %3 mm; eixos independentes: máx %4 mm</translation>
+        </message>
+        <message>
+            <source>Contour error (radial, after the ramp-in): max %1 mm, RMS %2 mm</source>
+            <translation>Erro de contorno (radial, após a rampa de entrada): máx %1 mm, RMS %2 mm</translation>
+        </message>
+        <message>
+            <source>Tracking error: max |e_x| %1 mm, max |e_y| %2 mm</source>
+            <translation>Erro de seguimento: máx |e_x| %1 mm, máx |e_y| %2 mm</translation>
+        </message>
+        <message>
+            <source>programmed</source>
+            <translation>programado</translation>
+        </message>
+        <message>
+            <source>error × %1, |e| (mm) &lt; %2</source>
+            <translation>erro × %1, |e| (mm) &lt; %2</translation>
+        </message>
+        <message>
+            <source>≥ %1</source>
+            <translation>≥ %1</translation>
+        </message>
+        <message>
+            <source>Contour error max %1, RMS %2 mm</source>
+            <translation>Erro de contorno máx %1, RMS %2 mm</translation>
+        </message>
+        <message>
+            <source>; corner %1/%2: %3 mm</source>
+            <translation>; canto %1/%2: %3 mm</translation>
+        </message>
+        <message>
+            <source>; corner %1/%2: no sample near it</source>
+            <translation>; canto %1/%2: nenhuma amostra perto dele</translation>
+        </message>
+        <message numerus="yes">
+            <source>; %n corner(s)</source>
+            <translation>
+                <numerusform>; %n canto</numerusform>
+                <numerusform>; %n cantos</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Cross-coupled: </source>
+            <translation>Acoplamento cruzado: </translation>
+        </message>
+        <message>
+            <source>; independent axes: max %1 mm</source>
+            <translation>; eixos independentes: máx %1 mm</translation>
+        </message>
+        <message>
+            <source>without feedforward, error × %1</source>
+            <translation>sem pré-alimentação, erro × %1</translation>
+        </message>
+        <message>
+            <source>; without feedforward: max %1 mm</source>
+            <translation>; sem pré-alimentação: máx %1 mm</translation>
+        </message>
+        <message>
+            <source>nominal</source>
+            <translation>nominal</translation>
+        </message>
+        <message>
+            <source>CW run</source>
+            <translation>percurso horário</translation>
+        </message>
+        <message>
+            <source>CCW run</source>
+            <translation>percurso anti-horário</translation>
+        </message>
+        <message>
+            <source>%1 ×%2</source>
+            <translation>%1 ×%2</translation>
+        </message>
+        <message>
+            <source>ISO 230-4 (mm): G %1, F max %2, F min %3</source>
+            <translation>ISO 230-4 (mm): G %1, F máx %2, F mín %3</translation>
+        </message>
+        <message>
+            <source>, H %1</source>
+            <translation>, H %1</translation>
+        </message>
+        <message>
+            <source>%1 without friction compensation ×%2</source>
+            <translation>%1 sem compensação de atrito ×%2</translation>
+        </message>
+        <message>
+            <source>; without friction compensation G %1</source>
+            <translation>; sem compensação de atrito G %1</translation>
+        </message>
+        <message>
+            <source>%1 with independent axes ×%2</source>
+            <translation>%1 com eixos independentes ×%2</translation>
+        </message>
+        <message>
+            <source>; independent axes G %1</source>
+            <translation>; eixos independentes G %1</translation>
+        </message>
+        <message>
+            <source>%1 without feedforward ×%2</source>
+            <translation>%1 sem pré-alimentação ×%2</translation>
+        </message>
+        <message>
+            <source>; without feedforward G %1</source>
+            <translation>; sem pré-alimentação G %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::CouplingSweepDialog</name>
+        <message>
+            <source>Tune the cross-coupling by the contour error</source>
+            <translation>Sintonizar o acoplamento cruzado pelo erro de contorno</translation>
+        </message>
+        <message>
+            <source>kp values</source>
+            <translation>valores de kp</translation>
+        </message>
+        <message>
+            <source>ki values</source>
+            <translation>valores de ki</translation>
+        </message>
+        <message>
+            <source>The values of kp to try (V/mm), separated by commas; 0 and 0 is the coupling off</source>
+            <translation>Os valores de kp a testar (V/mm), separados por vírgulas; 0 e 0 é o acoplamento desligado</translation>
+        </message>
+        <message>
+            <source>The values of ki to try (V/(mm·s)), separated by commas</source>
+            <translation>Os valores de ki a testar (V/(mm·s)), separados por vírgulas</translation>
+        </message>
+        <message>
+            <source>kp (V/mm)</source>
+            <translation>kp (V/mm)</translation>
+        </message>
+        <message>
+            <source>ki (V/(mm·s))</source>
+            <translation>ki (V/(mm·s))</translation>
+        </message>
+        <message>
+            <source>&amp;Run</source>
+            <translation>&amp;Executar</translation>
+        </message>
+        <message>
+            <source>Run the sweep on the session as it is now (at most %1 pairs)</source>
+            <translation>Executar a varredura na sessão como está agora (no máximo %1 pares)</translation>
+        </message>
+        <message>
+            <source>&amp;Cancel</source>
+            <translation>&amp;Cancelar</translation>
+        </message>
+        <message>
+            <source>max contour error (mm)</source>
+            <translation>erro de contorno máx (mm)</translation>
+        </message>
+        <message>
+            <source>refused: the coupled loop is unstable on a line</source>
+            <translation>recusado: a malha acoplada é instável em uma linha</translation>
+        </message>
+        <message>
+            <source>failed: the run was refused or diverged</source>
+            <translation>falhou: a simulação foi recusada ou divergiu</translation>
+        </message>
+        <message>
+            <source>not run (cancelled)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>an axis reaches its limit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>best</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Save as PNG...</source>
+            <translation>Salvar como PNG...</translation>
+        </message>
+        <message>
+            <source>Save as PDF...</source>
+            <translation>Salvar como PDF...</translation>
+        </message>
+        <message>
+            <source>The best: %1.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Apply</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set the selected cell's gains as the session's cross-coupling</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>kp 0, ki 0: the coupling off (the independent axes)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Not run: the sweep was cancelled before it.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Refused: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Max contour error %1, RMS %2 (independent axes: max %3)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Coupled loop at its least stable direction: spectral radius %1, disk margin %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>An axis reaches its actuator limit.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Both axes stay inside their actuator limit.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Warning: %1.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The best of the grid.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Run again</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Computed for the session before it changed (%1). Press Run again for the session as it is.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelling: the runs under way finish first…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Running the contour for each pair of gains…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> The session has changed since the sweep started: its result will be for the session as it was.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The sweep could not run: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelled: %1 of %2 pairs ran.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 pairs ran in %2 s.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> %1 refused: the coupled loop is unstable on a line of the path.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> %1 failed.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> %1 drive an axis to its limit.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Stale: the session has changed since this sweep (%1); nothing can be applied until it runs again. </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Not run yet: press Run.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Independent axes (coupling off): max %1, RMS %2.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Independent axes (coupling off): %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Best of the pairs that ran</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Best</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No pair of gains ran: no best.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: the coupling off.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> No pair of the grid beats the independent axes on this path.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2: max %3, RMS %4</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, %1 times smaller than the independent axes'</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, no smaller than the independent axes'</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> Every pair inside the limit has a coupled loop unstable at some direction of an arc: chosen among them.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> Every pair that ran drives an axis to its limit: chosen among them.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Selected: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>: max %1.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>: %1, nothing to apply.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> These are the session's gains.</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::CrossCouplingEditor</name>
+        <message>
+            <source>Cross-coupling</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Proportional gain of the coupling (V per mm of estimated contour error); kp and ki 0: off</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Integral gain of the coupling (V per mm·s); it stops integrating while an axis is at its limit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>circular</source>
+            <translation>circular</translation>
+        </message>
+        <message>
+            <source>linear</source>
+            <translation>linear</translation>
+        </message>
+        <message>
+            <source>How the contour error is estimated from the two axis errors: the tangent line's, or the circle's with the path's curvature</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>kp (V/mm)</source>
+            <translation>kp (V/mm)</translation>
+        </message>
+        <message>
+            <source>ki (V/(mm·s))</source>
+            <translation>ki (V/(mm·s))</translation>
+        </message>
+        <message>
+            <source>Estimate</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Tune…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Run the contour once for each kp and ki of a small grid and pick the gains with the smallest contour error</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cross-coupling ●</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cross-coupled contouring: kp %1 V/mm, ki %2 V/(mm·s), %3 estimate</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cross-coupled contouring: off (each axis follows its own reference)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::DesignSpacePlot</name>
+        <message>
+            <source>Design space</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ωn (rad/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>kp (V per model unit)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>metric</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>current</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>best</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>refined</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>least violating</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Not computed yet: set the grid and press Run.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Show the whole grid</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Save as PNG...</source>
+            <translation>Salvar como PNG...</translation>
+        </message>
+        <message>
+            <source>Save as PDF...</source>
+            <translation>Salvar como PDF...</translation>
+        </message>
+        <message>
+            <source>feasible region</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::DesignSpaceView</name>
+        <message>
+            <source>The study failed: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>logarithmic spacing</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Grid</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ωn (rad/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>kp</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>logarithmic colour scale</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Choice</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Best design (min; max for margins)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Heat map shows</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> V</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>°</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> dB</source>
+            <translation> dB</translation>
+        </message>
+        <message>
+            <source>Specification</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settling time ≤</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>step overshoot ≤</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max tracking error ≤</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>|u| ≤ (actuator limit)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>phase margin ≥ (0 = none)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>gain margin ≥ (0 = none)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;i&gt;The session's specification, shared with the metrics panel.&lt;/i&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Run</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set the grid and press Run to study the current axis.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Relax the limits</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set the specification to the smallest limits the least-violating design (▲) meets (an undoable step)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Live</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Recompute the map when the plant, the trajectory or the limits change: a coarse preview at once, the full study when the inputs rest</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Settings</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Show or hide the grid, the choice of the best design and the specification (hidden, the map takes the whole width)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Hover a cell for its figures; click it to load that design. Colour: the metric (scale at the right) · unveiled, outlined: feasible · veiled: infeasible · grey: unstable or diverged.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The design space maps a PI with its feedforward; axis %1 has D: set D to 0 to map it.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The design space applies to Guillemin–Truxal and PI + feedforward axes; axis %1 uses %2.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cannot run: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Live preview of axis %1: %2 × %3 designs…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Studying %1 × %2 designs of axis %3…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelling…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1, axis %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the inputs rest.
 </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelled: %1 of %2 designs computed, %3 feasible.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Done: %1 designs, %2 stable, %3 feasible.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelled: %1 of %2 designs computed, %3 feasible.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Done: %1 designs, %2 stable, %3 feasible.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Best on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Refined (◆): ωn = %1 rad/s, kp = %2, %3 = %4.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Click a cell to load its design.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Every GT design overshoots (its reference model is type 2); relax the overshoot limit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot judge the study: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>This tab shows axis %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1 now uses %2: the map applies to Guillemin–Truxal and PI + feedforward axes.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The plant, the trajectory or the limits the runs depend on have changed since.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The live map of the current design follows.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Press Run to study the current design.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Map computed for %1. %2 %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The map shown is not of the session&apos;s study (computed for %1). %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load design from the design space</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::EnvelopePlot</name>
-    <message>
-        <source>Envelope</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>min–max</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>5–95 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>median</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>nominal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not computed yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No stable plant: no envelope.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::EquationsPanel</name>
-    <message>
-        <source>Design equations</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Axis %1&lt;/b&gt;: %2: %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Axis %1 — pole placement + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>F = %1&lt;br&gt;G = %2&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, residual %2&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>control law: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>N = %1&lt;br&gt;D = %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no feedforward: w = r</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Axis %1 — %2&lt;/b&gt;&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Axis %1 — Guillemin–Truxal PI&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;br&gt;&lt;span style=&apos;color:#d32f2f&apos;&gt;&lt;b&gt;The closed loop is unstable.&lt;/b&gt;&lt;/span&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::FlexibleModeEditor</name>
-    <message>
-        <source>Flexible mode and notch</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mode (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The table&apos;s resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid table. The design is made on the rigid plant; every run and analysis has the mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mode damping</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Damping ratio of the resonance, in [0, 1); its peak stands 1/(2 ζ) above the rigid plant</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Anti-resonance (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A two-mass model measured at the motor: its anti-resonance below fr; 0: the resonant pair fr² / (s² + 2 ζ fr s + fr²) alone</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Anti-res. damping</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Damping ratio of the anti-resonance, in [0, 1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Notch centre (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Notch on the error the PI reads, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: none. Digital: bilinear, prewarped at the centre, below the controller&apos;s Nyquist frequency</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Notch width (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Bandwidth of the notch&apos;s pole pair: 2 ζp f0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Notch depth (dB)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Attenuation at the centre, in (0, 120] dB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Notch at the mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Centre on the mode, as deep as its peak (6 to 40 dB) and four half-power bandwidths wide</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Input shaper on both axes&apos; reference: ZV, ZVD, ZVDD (Singer and Seering), MZV (Klipper), EI and the multi-hump EI (Singhose et al.)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Input shaper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shaper frequency (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The mode the shaper is designed for; acts on the reference at the trajectory&apos;s step, so the controller&apos;s period does not limit it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shaper damping</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The damping ratio it is designed for, [0, 1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Shaper at the mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Design the shaper for this axis&apos; mode (ZV unless a type is chosen)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Recommend</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Klipper&apos;s choice of shaper and frequency for this mode: the least vibration left for the smoothing, and the acceleration it allows</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>From a log…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Klipper&apos;s choice from an accelerometer log (#time,accel_x,accel_y,accel_z), as calibrate_shaper.py makes it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the %1 Hz mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No recommendation: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Accelerometer log</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Klipper CSV (*.csv);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no flexible mode to tune the shaper to</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A pole-placement axis&apos; ARX model holds whatever mode its data showed: identify it from a log that excites the mode.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>LinuxCNC&apos;s pid has no notch stage: the notch is offered on Guillemin–Truxal axes.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Klipper&apos;s choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing %5 mm, max accel %6 mm/s²</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mode %1 Hz, ζ %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>notch %1 Hz, %2 dB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 shaper at %2 Hz</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mode ●</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Flexible mode and notch: none (the rigid table)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Flexible mode and notch: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::FrictionCurveDialog</name>
-    <message>
-        <source>Friction curve from a jog log</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Open log…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No log: run xytune-cli excite --signal jog, or log jogs from the machine (time, reference, position, command)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reference (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Position (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Command (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>velocity (mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>steady command (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>jogs (mean ± 1 sd)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fitted curve</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Use for the current axis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open a jog log</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Experiment logs (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2 columns, %3 rows</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reference</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>position</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>command</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Coulomb %1; slope %2 (the model&apos;s own a2/k0: %3 V per mm/s, so %4 beyond it)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>V per mm/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; static %1, Stribeck velocity %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mm/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>. %1 jogs, residual sd %2 V.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::FrictionEditor</name>
-    <message>
-        <source>Friction and backlash</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Coulomb (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its linear model to keep sliding</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Static (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Static (breakaway) level Fs in volts; 0 takes the Coulomb level (no Stribeck dip)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stribeck velocity (mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>vs of f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): how fast the friction falls from Fs to Fc</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Viscous (V per mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Viscous friction beyond the model&apos;s own damping (a2/k0 already holds it): 0 by default</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Backlash (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Play between motor and table: the table stays while the motor crosses the gap</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Amplifier deadband (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|u| below it gives no output; beyond it the amplifier gives u - d sign(u)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the faster pole</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the slower pole</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Which root of s² + a1 s + a2 is the drive&apos;s electrical lag; the other is the moving mass, where the friction acts</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Electrical lag</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compensation (%)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Friction feedforward from the reference velocity, in percent of the Coulomb and viscous levels above (0: none)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compensation band (mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The Coulomb term ramps linearly across |v| &lt; band instead of jumping at v = 0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A pole-placement axis&apos; ARX model has no moving mass: it takes the Coulomb level and the amplifier deadband, as a dead zone of its input</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Coulomb %1 V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>backlash %1 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>deadband %1 V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>viscous</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>compensated %1 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Friction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Friction ●</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Friction and backlash: none (the linear table)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Friction and backlash: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::HistogramPlot</name>
-    <message>
-        <source>Distribution</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>plants</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>nominal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not computed yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No stable plant: no distribution.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::IdentificationWindow</name>
-    <message>
-        <source>Identify a model from data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fit a model to see it here.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load data…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(no file)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Validation data…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>(none: judged on the estimation data)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>m</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Range of the record to use; 0 to 0 uses all of it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Remove trends</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Keep every n-th sample after an anti-alias filter (1: all)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Input (V):</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Output:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Output unit:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ts:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>to</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Range:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Decimate:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ARX</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>OE</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>BJ</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>GT3 continuous</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Structure:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Max iterations:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load a record of the axis (input in V, output position) to begin.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Status</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fit % est</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fit % val</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>AIC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Residuals</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>NMP</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The selected model&apos;s parameters, each ± one standard deviation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Use for axis X</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Use for axis Y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Response → X</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Response → Y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Welch&apos;s estimate of y/u (Hann window, 50 % overlap) with its coherence, drawn over the axis&apos; model in the Vibration view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load experiment data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load validation data</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>measured y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>simulated ŷ (model)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>t (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>position (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Output</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>residual autocorr.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>lag (samples)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>input–residual corr.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Poles and zeros</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2 columns, %3 rows%4. Pick the columns and press Fit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, Ts = %1 s stated by the file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The candidates fitted to the previous file were cleared.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>These columns cannot be used yet: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No data loaded.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Validation data: %1 (%2 rows).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No model: the data could not be used.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot fit: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); the fit estimates where the table stood</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fitting %1 to %2 samples…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No frequency response: load a record first</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Frequency response of %1: %2 averages of %3 samples, drawn in the Vibration view of axis %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No frequency response: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No model: the fit failed.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The fit failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Estimated initial position: %1 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No estimate: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>GT3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>pass</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fail</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>yes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pole-zero map (z-plane)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Select a candidate to see it here.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Parameters (± 1 SD): %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>residual autocorr. (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>input–residual corr. (%1)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pole-zero map (z-plane): a zero outside the unit circle (NMP)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A pole at z = 1: the model integrates, as the position of a motor axis does (every other pole is inside the unit circle).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A pole is on or outside the unit circle: the model is unstable.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pick the columns and press Fit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The record cannot be drawn: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Use the identified %1 for axis %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>X</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot use this model: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ImplementationEditor</name>
-    <message>
-        <source>Computation delay: the command computed at sample k is applied at k + delay</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Encoder resolution in mm per count; 0 = ideal (no quantization)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>DAC resolution over ±umax; 0 = ideal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>clamping</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>back-calculation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Anti-windup</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How the digital PI&apos;s integrator is kept from winding up while u is clipped: clamping (conditional integration) is what ships</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Back-calculation tracking time Tt (s); 0 = Ti = kp/ki</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Delay (samples)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Encoder (mm/count)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>DAC bits</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tracking time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::MainWindow</name>
-    <message>
-        <source>XY Tune</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Picking a gain sets kp and ωn of a Guillemin–Truxal axis, or P, I and D of a PID; this axis uses %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Loop gain %1 applied: P, I and D scaled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Loop gain %1 applied: kp and ωn scaled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Loop gain %1 of the design before the drag applied</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Dragging a pole sets the loop gain of a Guillemin–Truxal axis or a PID.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The zero stays: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Zero moved to %1 %2 %3j</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Root locus</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>P&amp;arameter locus</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Pole-zero</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Bode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Nyquist</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Vibration</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>sweep ωn (kp fixed)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>sweep kp (ωn fixed)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Swept parameter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Time response: the trajectory, the tracking error and the control signal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Step</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Step response of each axis against the specification&apos;s envelope</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;XY contour</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error × </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error magnification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Magnification of the contour error in the XY plot (as a ballbar plot)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Design space</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>R&amp;obustness</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Metrics</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Equations</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Design method</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Guillemin–Truxal PI (continuous)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pole placement + ZPETC (discrete)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ω&amp;n</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rad/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>k&amp;p</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>V/m</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1 now uses %2; Edit › Undo switches back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1 now uses pole placement on Patrick, Ishak and Adnan&apos;s ARX model (the pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Actuator and digital controller</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|u| limit (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Sample time of the digital PI in the exports</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tustin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>backward Euler</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PI discretization</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How the PI is discretized at the controller sample time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Controller Ts (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Digital implementation settings</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Delay, encoder, DAC and anti-windup of the digital controller</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load preset %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;File</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Store snapshot...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ctrl+T</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Store snapshot</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Name of the snapshot:</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>design %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Compare designs...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Identify from data...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>F&amp;riction curve from a jog log...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Add &amp;feedforward from the model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feedforward of %1 from the model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No feedforward from the model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The plant&apos;s exact inverse as FF1, FF2, FF3: a Guillemin–Truxal axis becomes the same PI in LinuxCNC&apos;s units on the PID + feedforward method</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Tune the PID...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PI or PID gains from a crossover and phase margin, or from a simulated relay experiment (PID + feedforward axes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Overlay snapshot</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;View</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show the &amp;digital implementation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Overlay the loop as the firmware runs it on the time plots</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pole-zero map of the digital loop (&amp;z-plane)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Reset plot views</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ctrl+0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;About XY Tune</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>About XY Tune</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Tuning workbench for XY coordinate-table position controllers.&lt;br&gt;GPL-3.0-or-later.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>On its lines the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Frozen at each direction the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, beside a pole at z = 1 the contour never sees (the coupling&apos;s integral and the axes&apos; integrators sharing a constant voltage)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; disk margin %1: ±%2 dB, ±%3°</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; at the %1 input: phase margin %2°</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error max %1 mm (independent axes %2 mm).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error max %1 mm (independent axes %2 mm). </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>clamp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>back-calc.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no anti-windup</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Implementation: %1, %2%3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>quantized</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ideal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, delay %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 mm/count</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 bits</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: invalid (%2)  </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: UNSTABLE  </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: stable  </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>| updated in %1 ms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>None</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1[*] — XY Tune</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>untitled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;System language</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The language changes when XY Tune is started again.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::MethodParameterEditor</name>
-    <message>
-        <source>This method has no settings.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 (%2 .. %3 %4)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set %1 of %2 to %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::MetricsPanel</name>
-    <message>
-        <source>X</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>spec</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RMSE (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e| (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e| (%)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |u| (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>saturated (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ITAE (mm·s²)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ZPETC gain (%)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settle time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>final e (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overrun (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling 2 % (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overshoot (%)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>min ζ (z-plane)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>gain margin (dB)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>phase margin (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>delay margin (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ms = max |S|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RMSE improvement of the ZPETC feedforward over the loop alone</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>integral of t·|e(t)| over the run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>From the end of the move (tf) until |e| stays inside the in-position window</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How far the axis went beyond the target, in the direction of travel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Phase lag that would bring L to −1 at the gain crossover</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Extra delay the loop tolerates: phase margin / crossover frequency</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>1 / (closest distance of L to −1): 1.2–2 is a usual target</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e| as a percentage of the travel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Least damping ratio of the digital closed loop&apos;s poles (s = ln z / Ts); the design&apos;s in the tooltip</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tracking the trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Move and settle (point-to-point)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Unit step, as each axis runs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Digital implementation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Loop margins (open loop L)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the step of the feedback loop Kf·B/T alone.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The controller at its sample time with the hold, the encoder and DAC quantization, the limit, the anti-windup and the delay of the Digital implementation settings. An amber figure differs from the design&apos;s above by more than 5 %.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Metrics</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Why the specification fails</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Relax the limits</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error figures</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Warnings</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Maximum settling time (2 % band) of the unit step</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Maximum |e| as a percentage of the travel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Maximum settle time after the end (tf) of a point-to-point move</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>In-position window of a point-to-point move: |e| ≤ this (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states none). 45–60° is the usual rule.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Every Guillemin–Truxal design overshoots a little on a step (its reference model is type 2), so 0 % fails them all.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Specification&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The limits of the spec column above: each figure is judged against them</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling ≤ s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overshoot ≤ %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e| ≤ %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settle ≤ s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>window mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PM ≥ °</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>GM ≥ dB</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>—</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>n/a</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the closed loop is unstable: not a robustness measure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>at %1 rad/s (factor %2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>at %1 rad/s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>✓ both axes meet it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>✗ fails: hover for why</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set the limits to what this design reaches: %1 (one undo step)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The design meets the specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No limit makes this design pass (see why): change the design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error (XY): max %1, RMS %2 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The program&apos;s warnings are shown on the XY contour view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CW</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CCW</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ISO 230-4: G %1 %2, %3 %4, F %5/%6</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ISO 230-4: G %1, F %2/%3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, H %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1° %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, spikes ≤ %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Reversal spikes (mm): %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cannot judge the study: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>This tab shows axis %1.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1 now uses %2: the map applies to Guillemin–Truxal and PI + feedforward axes.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The plant, the trajectory or the limits the runs depend on have changed since.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The live map of the current design follows.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Press Run to study the current design.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Map computed for %1. %2 %3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The map shown is not of the session's study (computed for %1). %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load design from the design space</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::EnvelopePlot</name>
+        <message>
+            <source>Envelope</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>time (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>min–max</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>5–95 %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>median</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>nominal</source>
+            <translation>nominal</translation>
+        </message>
+        <message>
+            <source>Not computed yet.</source>
+            <translation>Ainda não calculado.</translation>
+        </message>
+        <message>
+            <source>No stable plant: no envelope.</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::EquationsPanel</name>
+        <message>
+            <source>Design equations</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Axis %1&lt;/b&gt;: %2: %3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Axis %1 — pole placement + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>F = %1&lt;br&gt;G = %2&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, residual %2&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>control law: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>N = %1&lt;br&gt;D = %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no feedforward: w = r</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Axis %1 — %2&lt;/b&gt;&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Axis %1 — Guillemin–Truxal PI&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;br&gt;&lt;span style='color:#d32f2f'&gt;&lt;b&gt;The closed loop is unstable.&lt;/b&gt;&lt;/span&gt;</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::FlexibleModeEditor</name>
+        <message>
+            <source>Flexible mode and notch</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Mode (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The table's resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid table. The design is made on the rigid plant; every run and analysis has the mode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Mode damping</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Damping ratio of the resonance, in [0, 1); its peak stands 1/(2 ζ) above the rigid plant</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Anti-resonance (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A two-mass model measured at the motor: its anti-resonance below fr; 0: the resonant pair fr² / (s² + 2 ζ fr s + fr²) alone</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Anti-res. damping</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Damping ratio of the anti-resonance, in [0, 1)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Notch centre (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Notch on the error the PI reads, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: none. Digital: bilinear, prewarped at the centre, below the controller's Nyquist frequency</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Notch width (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Bandwidth of the notch's pole pair: 2 ζp f0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Notch depth (dB)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Attenuation at the centre, in (0, 120] dB</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Notch at the mode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Centre on the mode, as deep as its peak (6 to 40 dB) and four half-power bandwidths wide</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>none</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Input shaper on both axes' reference: ZV, ZVD, ZVDD (Singer and Seering), MZV (Klipper), EI and the multi-hump EI (Singhose et al.)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Input shaper</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Shaper frequency (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The mode the shaper is designed for; acts on the reference at the trajectory's step, so the controller's period does not limit it</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Shaper damping</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The damping ratio it is designed for, [0, 1)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Shaper at the mode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Design the shaper for this axis' mode (ZV unless a type is chosen)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Recommend</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Klipper's choice of shaper and frequency for this mode: the least vibration left for the smoothing, and the acceleration it allows</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>From a log…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Klipper's choice from an accelerometer log (#time,accel_x,accel_y,accel_z), as calibrate_shaper.py makes it</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the %1 Hz mode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No recommendation: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Accelerometer log</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Klipper CSV (*.csv);;All files (*)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no flexible mode to tune the shaper to</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A pole-placement axis' ARX model holds whatever mode its data showed: identify it from a log that excites the mode.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>LinuxCNC's pid has no notch stage: the notch is offered on Guillemin–Truxal axes.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Klipper's choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing %5 mm, max accel %6 mm/s²</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>mode %1 Hz, ζ %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>notch %1 Hz, %2 dB</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 shaper at %2 Hz</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Mode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Mode ●</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Flexible mode and notch: none (the rigid table)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Flexible mode and notch: %1</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::FrictionCurveDialog</name>
+        <message>
+            <source>Friction curve from a jog log</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Open log…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No log: run xytune-cli excite --signal jog, or log jogs from the machine (time, reference, position, command)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Time (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Reference (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Position (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Command (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>velocity (mm/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>steady command (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>jogs (mean ± 1 sd)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>fitted curve</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Use for the current axis</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Open a jog log</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Experiment logs (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2 columns, %3 rows</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>time</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>reference</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>position</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>command</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Coulomb %1; slope %2 (the model's own a2/k0: %3 V per mm/s, so %4 beyond it)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>V</source>
+            <translation>V</translation>
+        </message>
+        <message>
+            <source>V per mm/s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>; static %1, Stribeck velocity %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>mm/s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>. %1 jogs, residual sd %2 V.</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::FrictionEditor</name>
+        <message>
+            <source>Friction and backlash</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Coulomb (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its linear model to keep sliding</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Static (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Static (breakaway) level Fs in volts; 0 takes the Coulomb level (no Stribeck dip)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Stribeck velocity (mm/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>vs of f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): how fast the friction falls from Fs to Fc</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Viscous (V per mm/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Viscous friction beyond the model's own damping (a2/k0 already holds it): 0 by default</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Backlash (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Play between motor and table: the table stays while the motor crosses the gap</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Amplifier deadband (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>|u| below it gives no output; beyond it the amplifier gives u - d sign(u)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the faster pole</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the slower pole</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Which root of s² + a1 s + a2 is the drive's electrical lag; the other is the moving mass, where the friction acts</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Electrical lag</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Compensation (%)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Friction feedforward from the reference velocity, in percent of the Coulomb and viscous levels above (0: none)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Compensation band (mm/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The Coulomb term ramps linearly across |v| &lt; band instead of jumping at v = 0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A pole-placement axis' ARX model has no moving mass: it takes the Coulomb level and the amplifier deadband, as a dead zone of its input</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Coulomb %1 V</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>backlash %1 mm</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>deadband %1 V</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>viscous</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>compensated %1 %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Friction</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Friction ●</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Friction and backlash: none (the linear table)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Friction and backlash: %1</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::HistogramPlot</name>
+        <message>
+            <source>Distribution</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>plants</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>limit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>nominal</source>
+            <translation>nominal</translation>
+        </message>
+        <message>
+            <source>Not computed yet.</source>
+            <translation>Ainda não calculado.</translation>
+        </message>
+        <message>
+            <source>No stable plant: no distribution.</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::IdentificationWindow</name>
+        <message>
+            <source>Identify a model from data</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Fit a model to see it here.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load data…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>(no file)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Validation data…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>(none: judged on the estimation data)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>mm</source>
+            <translation>mm</translation>
+        </message>
+        <message>
+            <source>m</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Range of the record to use; 0 to 0 uses all of it</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Remove trends</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Keep every n-th sample after an anti-alias filter (1: all)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Data</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Input (V):</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Output:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Output unit:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Time:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ts:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>to</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Range:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Decimate:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ARX</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>OE</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>BJ</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>GT3 continuous</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Structure:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Max iterations:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Fit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load a record of the axis (input in V, output position) to begin.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Status</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Fit % est</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Fit % val</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>AIC</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Residuals</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>NMP</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The selected model's parameters, each ± one standard deviation</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Use for axis X</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Use for axis Y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Response → X</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Response → Y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Welch's estimate of y/u (Hann window, 50 % overlap) with its coherence, drawn over the axis' model in the Vibration view</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load experiment data</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load validation data</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>measured y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>simulated ŷ (model)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>t (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>position (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Output</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>residual autocorr.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>lag (samples)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>input–residual corr.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Poles and zeros</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2 columns, %3 rows%4. Pick the columns and press Fit.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, Ts = %1 s stated by the file</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The candidates fitted to the previous file were cleared.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>These columns cannot be used yet: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No data loaded.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cannot read %1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Validation data: %1 (%2 rows).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No model: the data could not be used.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cannot fit: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); the fit estimates where the table stood</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Fitting %1 to %2 samples…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No frequency response: load a record first</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Frequency response of %1: %2 averages of %3 samples, drawn in the Vibration view of axis %4</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No frequency response: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelling…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No model: the fit failed.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The fit failed: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> (%1)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Estimated initial position: %1 mm</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No estimate: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>GT3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>pass</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>fail</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>yes</source>
+            <translation>sim</translation>
+        </message>
+        <message>
+            <source>no</source>
+            <translation>não</translation>
+        </message>
+        <message>
+            <source>Pole-zero map (z-plane)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Select a candidate to see it here.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Parameters (± 1 SD): %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>residual autocorr. (%1)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>input–residual corr. (%1)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Pole-zero map (z-plane): a zero outside the unit circle (NMP)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A pole at z = 1: the model integrates, as the position of a motor axis does (every other pole is inside the unit circle).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A pole is on or outside the unit circle: the model is unstable.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Pick the columns and press Fit.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The record cannot be drawn: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Use the identified %1 for axis %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>X</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cannot use this model: %1</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ImplementationEditor</name>
+        <message>
+            <source>Computation delay: the command computed at sample k is applied at k + delay</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Encoder resolution in mm per count; 0 = ideal (no quantization)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>DAC resolution over ±umax; 0 = ideal</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>clamping</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>back-calculation</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>none</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Anti-windup</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>How the digital PI's integrator is kept from winding up while u is clipped: clamping (conditional integration) is what ships</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Back-calculation tracking time Tt (s); 0 = Ti = kp/ki</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Delay (samples)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Encoder (mm/count)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>DAC bits</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Tracking time (s)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::MainWindow</name>
+        <message>
+            <source>XY Tune</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Picking a gain sets kp and ωn of a Guillemin–Truxal axis, or P, I and D of a PID; this axis uses %1.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Loop gain %1 applied: P, I and D scaled</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Loop gain %1 applied: kp and ωn scaled</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Loop gain %1 of the design before the drag applied</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Dragging a pole sets the loop gain of a Guillemin–Truxal axis or a PID.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The zero stays: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Zero moved to %1 %2 %3j</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Root locus</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>P&amp;arameter locus</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Pole-zero</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Bode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Nyquist</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Vibration</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>sweep ωn (kp fixed)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>sweep kp (ωn fixed)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Swept parameter</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Time</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Time response: the trajectory, the tracking error and the control signal</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Step</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Step response of each axis against the specification's envelope</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;XY contour</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>error × </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Contour error magnification</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Magnification of the contour error in the XY plot (as a ballbar plot)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Design space</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>R&amp;obustness</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Metrics</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Equations</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Trajectory</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Design</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Design method</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Guillemin–Truxal PI (continuous)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Pole placement + ZPETC (discrete)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ω&amp;n</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>rad/s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>k&amp;p</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>V/m</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1 now uses %2; Edit › Undo switches back</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1 now uses pole placement on Patrick, Ishak and Adnan's ARX model (the pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Actuator and digital controller</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>|u| limit (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Sample time of the digital PI in the exports</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Tustin</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>backward Euler</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PI discretization</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>How the PI is discretized at the controller sample time</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Controller Ts (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Digital implementation settings</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Delay, encoder, DAC and anti-windup of the digital controller</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load preset %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;File</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Quit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Edit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Undo</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Redo</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Design</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Store snapshot...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ctrl+T</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Store snapshot</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Name of the snapshot:</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>design %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Compare designs...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Identify from data...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>F&amp;riction curve from a jog log...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Add &amp;feedforward from the model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Feedforward of %1 from the model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No feedforward from the model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The plant's exact inverse as FF1, FF2, FF3: a Guillemin–Truxal axis becomes the same PI in LinuxCNC's units on the PID + feedforward method</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Tune the PID...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PI or PID gains from a crossover and phase margin, or from a simulated relay experiment (PID + feedforward axes)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Overlay snapshot</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;View</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Show the &amp;digital implementation</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Overlay the loop as the firmware runs it on the time plots</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Pole-zero map of the digital loop (&amp;z-plane)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Reset plot views</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ctrl+0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Help</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;About XY Tune</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>About XY Tune</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Tuning workbench for XY coordinate-table position controllers.&lt;br&gt;GPL-3.0-or-later.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>On its lines the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Frozen at each direction the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, beside a pole at z = 1 the contour never sees (the coupling's integral and the axes' integrators sharing a constant voltage)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>; disk margin %1: ±%2 dB, ±%3°</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>; at the %1 input: phase margin %2°</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Contour error max %1 mm (independent axes %2 mm).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Contour error max %1 mm (independent axes %2 mm). </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>clamp</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>back-calc.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no anti-windup</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Implementation: %1, %2%3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>quantized</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ideal</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, delay %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 mm/count</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 bits</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: invalid (%2)  </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: UNSTABLE  </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: stable  </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>| updated in %1 ms</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>None</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1[*] — XY Tune</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>untitled</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Language</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;System language</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Language</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The language changes when XY Tune is started again.</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::MethodParameterEditor</name>
+        <message>
+            <source>This method has no settings.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 (%2 .. %3 %4)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 (%2)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set %1 of %2 to %3</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::MetricsPanel</name>
+        <message>
+            <source>X</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>spec</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>RMSE (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |e| (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |e| (%)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |u| (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>saturated (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ITAE (mm·s²)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ZPETC gain (%)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settle time (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>final e (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>overrun (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settling 2 % (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>overshoot (%)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>min ζ (z-plane)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>gain margin (dB)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>phase margin (°)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>delay margin (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ms = max |S|</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>RMSE improvement of the ZPETC feedforward over the loop alone</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>integral of t·|e(t)| over the run</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>From the end of the move (tf) until |e| stays inside the in-position window</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>How far the axis went beyond the target, in the direction of travel</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Phase lag that would bring L to −1 at the gain crossover</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Extra delay the loop tolerates: phase margin / crossover frequency</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>1 / (closest distance of L to −1): 1.2–2 is a usual target</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |e| as a percentage of the travel</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Least damping ratio of the digital closed loop's poles (s = ln z / Ts); the design's in the tooltip</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Tracking the trajectory</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Move and settle (point-to-point)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Unit step, as each axis runs</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Digital implementation</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Loop margins (open loop L)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the step of the feedback loop Kf·B/T alone.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The controller at its sample time with the hold, the encoder and DAC quantization, the limit, the anti-windup and the delay of the Digital implementation settings. An amber figure differs from the design's above by more than 5 %.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Metrics</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Why the specification fails</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Relax the limits</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Contour error figures</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Warnings</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Maximum settling time (2 % band) of the unit step</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Maximum |e| as a percentage of the travel</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Maximum settle time after the end (tf) of a point-to-point move</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>In-position window of a point-to-point move: |e| ≤ this (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states none). 45–60° is the usual rule.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Every Guillemin–Truxal design overshoots a little on a step (its reference model is type 2), so 0 % fails them all.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Specification&lt;/b&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The limits of the spec column above: each figure is judged against them</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settling ≤ s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>overshoot ≤ %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |e| ≤ %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settle ≤ s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>window mm</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PM ≥ °</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>GM ≥ dB</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>—</source>
+            <translation>—</translation>
+        </message>
+        <message>
+            <source>n/a</source>
+            <translation>n/d</translation>
+        </message>
+        <message>
+            <source>the closed loop is unstable: not a robustness measure</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>at %1 rad/s (factor %2)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>at %1 rad/s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>✓ both axes meet it</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>✗ fails: hover for why</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set the limits to what this design reaches: %1 (one undo step)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The design meets the specification</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No limit makes this design pass (see why): change the design</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Contour error (XY): max %1, RMS %2 mm</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The program's warnings are shown on the XY contour view</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>CW</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>CCW</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ISO 230-4: G %1 %2, %3 %4, F %5/%6</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ISO 230-4: G %1, F %2/%3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, H %1</source>
+            <translation>, H %1</translation>
+        </message>
+        <message>
+            <source>%1° %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, spikes ≤ %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Reversal spikes (mm): %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Without the friction compensation: G %1 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>program: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>≤ %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|e| ≤ %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>≥ %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: no design (%2: %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&gt; %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1*</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unstable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>meets the specification, as designed and as implemented</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>meets the specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fails the specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> digital</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the design meets the specification here, its digital implementation (Ts, quantization, ±umax, delay) does not: this is the implementation&apos;s figure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not settled into ±%1 mm by the end of the run, %2 s after tf; %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>design %1, digital %2%3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> (differs by more than 5 %)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>digital loop %1, design %2 at Ts = %3 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated without a limit; |u| would be clipped this long</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::NumberField</name>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::NyquistPlot</name>
-    <message>
-        <source>Nyquist diagram</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Re L</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Im L</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|L| = 1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>distance 1/Ms to −1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>L(jω), ω ≥ 0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ω &lt; 0 (mirror)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>−1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the curve passes through −1: a closed-loop pole on the stability boundary</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>closed loop stable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 closed-loop pole(s) unstable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop poles → Z = N + P = %3: %4   (Ms = %5)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>∞</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>n/a, the closed loop is unstable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>poles on the boundary are passed on small indentations: the curve closes at infinity there</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::NyquistView</name>
-    <message>
-        <source>Nyquist diagram of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No frequency analysis: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Nyquist diagram of %1 (open loop L)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ParameterLocusPlot</name>
-    <message>
-        <source>real</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>imaginary</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>current design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>start of the sweep</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>stability boundary crossed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>framed on the poles that move; one pole barely moves and may lie outside the view: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>framed on the poles that move; %1 poles barely move and may lie outside the view: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unstable above %1 = %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unstable below %1 = %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ParameterLocusView</name>
-    <message>
-        <source>Parameter locus of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ (pole at z = %1), placed directly by t1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses %1: the root locus shows its poles against the loop gain.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::ParameterSlider</name>
-    <message>
-        <source>%1 (logarithmic scale)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> value</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: type a value (scientific notation such as 2.5e3 is accepted)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1, beyond the slider (%2 to %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: &apos;%2&apos; is not a number from %3 to %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PidFeedforwardEditor</name>
-    <message>
-        <source>From model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>D on the measurement (no kick)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Feedforward&lt;/b&gt;, % of the model&apos;s inverse</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>FF1 (velocity)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>FF2 (acceleration)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>FF3 (jerk)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The gain %1 as a percentage of the plant&apos;s exact inverse: 100 % cancels the plant&apos;s dynamics along the trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set %1 of %2 to %3 % of the model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set FF1, FF2 and FF3 to the plant&apos;s exact inverse (a2 u/k0, a1 u/k0, u/k0) and FF0 to 0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feedforward of %1 from the model</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>r′, r″, r‴ by backward differences</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>r′, r″, r‴ from the trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Where the feedforward reads the command&apos;s derivatives: backward differences of the commanded position each period (LinuxCNC&apos;s pid), or the trajectory generator&apos;s own velocity, acceleration and jerk</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Command derivatives</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Take the command&apos;s derivatives of %1 from the %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>backward differences</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>trajectory generator</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Limits and filter&lt;/b&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Differentiate the measurement of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Differentiate the error of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The plant has no usable inverse (k0 must be finite and nonzero): no feedforward from the model.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PidTuningDialog</name>
-    <message>
-        <source>Tune the PID of axis %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PI</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PID (Ti = 4 Td)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Controller structure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Structure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Crossover ωc (rad/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Phase margin (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Relay amplitude d (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Rule</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>P (V/mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>I (V/(mm s))</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>D (V s/mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ωc (rad/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PM (°)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Apply</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>position y (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>relay u (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>y (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>u (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Crossover and phase margin</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Relay: Ziegler–Nichols</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Relay: Tyreus–Luyben</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Relay limit cycle on the model: period Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (describing function: Tu = %4 s, a = %5 mm).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No relay experiment: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tune %1 by %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PlantEditor</name>
-    <message>
-        <source>custom</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Plant preset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Model output units per mm of trajectory (0.001: the model is in metres)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G(s) = k0 / (s³ + a1 s² + a2 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Preset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>k&amp;0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a&amp;1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a&amp;2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Model unit per mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PoleZeroPlot</name>
-    <message>
-        <source>Pole-zero map</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>real</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>imaginary</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PoleZeroView</name>
-    <message>
-        <source>Pole-zero map of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Digital loop of %1 in the z-plane (Ts = %2 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PpEditor</name>
-    <message>
-        <source>B(z⁻¹)/A(z⁻¹), ascending powers of z⁻¹</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>custom</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ARX preset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coefficients separated by spaces or commas</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>B(z⁻¹) = 0 + b1 z⁻¹ + ...: leading zeros are the delay</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Desired pole t&amp;1 (T = 1 + t1 z⁻¹)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ZPETC feedforward</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Preset</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;A</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;B</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ts (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::PresenterView</name>
-    <message>
-        <source>Axis %1 (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No design: %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::RobustnessView</name>
-    <message>
-        <source>The analysis failed: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ranges (± %)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>random plants, drawn uniformly within the ranges</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the same seed draws the same plants</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>corners</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>also every corner of the box of ranges (the deterministic worst-case search)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY contour</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Analyze both axes together on the circle or G-code program: pairs of plants, the contour error they trace, its XY band. Each range applies to the parameter of that name on every axis that has one.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the signal whose envelope is drawn</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the figure whose distribution is drawn</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>plants</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>seed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load worst case</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Make the worst plant found (largest RMSE) the session&apos;s plant (an undoable step)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set a range for the parameters you doubt and press Run.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Show</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>contour error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |contour e|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY band</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error e</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>output y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>command u</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RMSE</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |u|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ZPETC sensitivity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY contour: set the ranges and press Run.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Envelope</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Distribution</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 of every axis that has one: drawn uniformly within ± this share of its nominal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: nominal %2; drawn uniformly within ± this share of it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not the current design&apos;s (computed for %1): %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Computed for %1: this tab shows axis %2. Press Run to analyze it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Computed for %1. The design has changed since: press Run to analyze the current one.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cannot run: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Running %1 plant pairs%2…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Running %1 plants%2…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> and the corners</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancelled after %1 of %2 %3. </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 %2%3: </source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> + %1 corners</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 % meet the spec (the nominal %2); %3 unstable.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>does</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>does not</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> The feedforward divides the RMSE by %1 on the median plant (%2 at the 95 % RMSE).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> mm</source>
+            <translation> mm</translation>
+        </message>
+        <message>
+            <source>program: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>≤ %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no</source>
+            <translation>não</translation>
+        </message>
+        <message>
+            <source>|e| ≤ %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>≥ %1</source>
+            <translation>≥ %1</translation>
+        </message>
+        <message>
+            <source>%1: no design (%2: %3)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&gt; %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1*</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>unstable</source>
+            <translation>instável</translation>
+        </message>
+        <message>
+            <source>meets the specification, as designed and as implemented</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>meets the specification</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>fails the specification</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> digital</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the design meets the specification here, its digital implementation (Ts, quantization, ±umax, delay) does not: this is the implementation's figure</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>not settled into ±%1 mm by the end of the run, %2 s after tf; %3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>design %1, digital %2%3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> (differs by more than 5 %)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>digital loop %1, design %2 at Ts = %3 s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated without a limit; |u| would be clipped this long</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::NumberField</name>
+        <message>
+            <source>%1: %2</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::NyquistPlot</name>
+        <message>
+            <source>Nyquist diagram</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Re L</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Im L</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>|L| = 1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>distance 1/Ms to −1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>L(jω), ω ≥ 0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ω &lt; 0 (mirror)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>−1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the curve passes through −1: a closed-loop pole on the stability boundary</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>closed loop stable</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 closed-loop pole(s) unstable</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop poles → Z = N + P = %3: %4   (Ms = %5)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>∞</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>n/a, the closed loop is unstable</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>poles on the boundary are passed on small indentations: the curve closes at infinity there</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::NyquistView</name>
+        <message>
+            <source>Nyquist diagram of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No frequency analysis: %1</source>
+            <translation>Sem análise em frequência: %1</translation>
+        </message>
+        <message>
+            <source>Nyquist diagram of %1 (open loop L)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ParameterLocusPlot</name>
+        <message>
+            <source>real</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>imaginary</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>current design</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>start of the sweep</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>stability boundary crossed</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>framed on the poles that move; one pole barely moves and may lie outside the view: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>framed on the poles that move; %1 poles barely move and may lie outside the view: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>unstable above %1 = %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>unstable below %1 = %2</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ParameterLocusView</name>
+        <message>
+            <source>Parameter locus of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ (pole at z = %1), placed directly by t1.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses %1: the root locus shows its poles against the loop gain.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::ParameterSlider</name>
+        <message>
+            <source>%1 (logarithmic scale)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> value</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: type a value (scientific notation such as 2.5e3 is accepted)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1, beyond the slider (%2 to %3)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: '%2' is not a number from %3 to %4</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PidFeedforwardEditor</name>
+        <message>
+            <source>From model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>D on the measurement (no kick)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Feedforward&lt;/b&gt;, % of the model's inverse</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>FF1 (velocity)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>FF2 (acceleration)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>FF3 (jerk)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The gain %1 as a percentage of the plant's exact inverse: 100 % cancels the plant's dynamics along the trajectory</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set %1 of %2 to %3 % of the model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set FF1, FF2 and FF3 to the plant's exact inverse (a2 u/k0, a1 u/k0, u/k0) and FF0 to 0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Feedforward of %1 from the model</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>r′, r″, r‴ by backward differences</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>r′, r″, r‴ from the trajectory</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Where the feedforward reads the command's derivatives: backward differences of the commanded position each period (LinuxCNC's pid), or the trajectory generator's own velocity, acceleration and jerk</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Command derivatives</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Take the command's derivatives of %1 from the %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>backward differences</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>trajectory generator</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&lt;b&gt;Limits and filter&lt;/b&gt;</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Differentiate the measurement of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Differentiate the error of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The plant has no usable inverse (k0 must be finite and nonzero): no feedforward from the model.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PidTuningDialog</name>
+        <message>
+            <source>Tune the PID of axis %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PI</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PID (Ti = 4 Td)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Controller structure</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Structure</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Crossover ωc (rad/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Phase margin (°)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Relay amplitude d (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Rule</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>P (V/mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>I (V/(mm s))</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>D (V s/mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ωc (rad/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PM (°)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Apply</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>position y (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>relay u (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>time (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>y (mm)</source>
+            <translation>y (mm)</translation>
+        </message>
+        <message>
+            <source>u (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Crossover and phase margin</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Relay: Ziegler–Nichols</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Relay: Tyreus–Luyben</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Relay limit cycle on the model: period Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (describing function: Tu = %4 s, a = %5 mm).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No relay experiment: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Tune %1 by %2</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PlantEditor</name>
+        <message>
+            <source>custom</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Plant preset</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Model output units per mm of trajectory (0.001: the model is in metres)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>G(s) = k0 / (s³ + a1 s² + a2 s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Preset</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>k&amp;0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>a&amp;1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>a&amp;2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Model unit per mm</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PoleZeroPlot</name>
+        <message>
+            <source>Pole-zero map</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>real</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>imaginary</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PoleZeroView</name>
+        <message>
+            <source>Pole-zero map of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Digital loop of %1 in the z-plane (Ts = %2 s)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PpEditor</name>
+        <message>
+            <source>B(z⁻¹)/A(z⁻¹), ascending powers of z⁻¹</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>custom</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ARX preset</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coefficients separated by spaces or commas</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>B(z⁻¹) = 0 + b1 z⁻¹ + ...: leading zeros are the delay</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Desired pole t&amp;1 (T = 1 + t1 z⁻¹)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ZPETC feedforward</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Preset</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;A</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;B</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ts (s)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::PresenterView</name>
+        <message>
+            <source>Axis %1 (%2)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No design: %1: %2</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::RobustnessView</name>
+        <message>
+            <source>The analysis failed: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ranges (± %)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>random plants, drawn uniformly within the ranges</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the same seed draws the same plants</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>corners</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>also every corner of the box of ranges (the deterministic worst-case search)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>XY contour</source>
+            <translation>Contorno XY</translation>
+        </message>
+        <message>
+            <source>Analyze both axes together on the circle or G-code program: pairs of plants, the contour error they trace, its XY band. Each range applies to the parameter of that name on every axis that has one.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the signal whose envelope is drawn</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the figure whose distribution is drawn</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>plants</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>seed</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Run</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load worst case</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Make the worst plant found (largest RMSE) the session's plant (an undoable step)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set a range for the parameters you doubt and press Run.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Show</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>contour error</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |contour e|</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>XY band</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>error e</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>output y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>command u</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>RMSE</source>
+            <translation>RMSE</translation>
+        </message>
+        <message>
+            <source>max |e|</source>
+            <translation>máx |e|</translation>
+        </message>
+        <message>
+            <source>max |u|</source>
+            <translation>máx |u|</translation>
+        </message>
+        <message>
+            <source>ZPETC sensitivity</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>XY contour: set the ranges and press Run.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Envelope</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Distribution</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 of every axis that has one: drawn uniformly within ± this share of its nominal</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: nominal %2; drawn uniformly within ± this share of it</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Not the current design's (computed for %1): %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Computed for %1: this tab shows axis %2. Press Run to analyze it.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Computed for %1. The design has changed since: press Run to analyze the current one.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cannot run: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Running %1 plant pairs%2…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Running %1 plants%2…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> and the corners</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelling…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Cancelled after %1 of %2 %3. </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 %2%3: </source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> + %1 corners</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 % meet the spec (the nominal %2); %3 unstable.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>does</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>does not</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> The feedforward divides the RMSE by %1 on the median plant (%2 at the 95 % RMSE).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Worst: RMSE %1 mm at %2.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Unstable, e.g. at %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>plant pairs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no stable pair; %1 unstable.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>plant pairs</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no stable pair; %1 unstable.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>
 Worst: %1 mm at %2.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contour error of the plant pairs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>contour e (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |contour e| (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Error e of the plants</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Output y of the plants</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Command u of the plants</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>e (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>y (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>u (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>For a pole-placement axis with ZPETC.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RMSE (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |e| (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>max |u| (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load the worst plant pair of the contour analysis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load the worst plant of the robustness analysis</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::RootLocusPlot</name>
-    <message>
-        <source>Root locus</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>real</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>imaginary</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>open-loop poles</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>open-loop zeros</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>closed-loop poles</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hover a branch: K, ζ, ωn; click: use that gain</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>open-loop zeros (drag to move)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the locus is incomplete</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::RootLocusView</name>
-    <message>
-        <source>Root locus of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Root locus of %1 (K = 1: the design)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::SensitivityPlot</name>
-    <message>
-        <source>ZPETC sensitivity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mismatch (% of ranges)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>RMSE (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>with ZPETC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>loop alone</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not computed yet.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No stable plant at any mismatch.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::SessionFileController</name>
-    <message>
-        <source>&amp;New</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Open...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Export</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Coefficients as &amp;JSON...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Firmware &amp;C header...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Octave/MATLAB script...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulated signals as CS&amp;V...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Not for a G-code trajectory: the script computes the reference in closed form, and a program&apos;s feed profile has none. Export the simulated signals as CSV instead.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A GNU Octave / MATLAB script with each axis&apos; plant, controller and closed loop, plotting the response to the trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY Tune</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The design has unsaved changes. Save them first?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>New session with the paper&apos;s default design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open session</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY Tune sessions (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 could not be opened; the current design is unchanged.
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Contour error of the plant pairs</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>contour e (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |contour e| (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Error e of the plants</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Output y of the plants</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Command u of the plants</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>e (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>y (mm)</source>
+            <translation>y (mm)</translation>
+        </message>
+        <message>
+            <source>u (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>For a pole-placement axis with ZPETC.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>RMSE (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |e| (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>max |u| (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load the worst plant pair of the contour analysis</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Load the worst plant of the robustness analysis</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::RootLocusPlot</name>
+        <message>
+            <source>Root locus</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>real</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>imaginary</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>open-loop poles</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>open-loop zeros</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>closed-loop poles</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>hover a branch: K, ζ, ωn; click: use that gain</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>open-loop zeros (drag to move)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the locus is incomplete</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::RootLocusView</name>
+        <message>
+            <source>Root locus of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Root locus of %1 (K = 1: the design)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::SensitivityPlot</name>
+        <message>
+            <source>ZPETC sensitivity</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>mismatch (% of ranges)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>RMSE (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>with ZPETC</source>
+            <translation>com ZPETC</translation>
+        </message>
+        <message>
+            <source>loop alone</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Not computed yet.</source>
+            <translation>Ainda não calculado.</translation>
+        </message>
+        <message>
+            <source>No stable plant at any mismatch.</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::SessionFileController</name>
+        <message>
+            <source>&amp;New</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Open...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Open &amp;Recent</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Save</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Save &amp;As...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Export</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Coefficients as &amp;JSON...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Firmware &amp;C header...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>&amp;Octave/MATLAB script...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Simulated signals as CS&amp;V...</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Not for a G-code trajectory: the script computes the reference in closed form, and a program's feed profile has none. Export the simulated signals as CSV instead.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>A GNU Octave / MATLAB script with each axis' plant, controller and closed loop, plotting the response to the trajectory</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>XY Tune</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The design has unsaved changes. Save them first?</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>New session with the paper's default design</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Open session</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>XY Tune sessions (*.json);;All files (*)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 could not be opened; the current design is unchanged.
 
 %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Opened with notes:
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Opened with notes:
 %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Opened %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Save session</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>XY Tune sessions (*.json)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The session was not saved; any existing file is unchanged.
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Opened %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Save session</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>XY Tune sessions (*.json)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The session was not saved; any existing file is unchanged.
 
 %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Export</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Exported %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>JSON (*.json)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>C header (*.h)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Octave/MATLAB script (*.m)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::SnapshotCompareDialog</name>
-    <message>
-        <source>Compare designs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Current design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Compare</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>with</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::StepPlot</name>
-    <message>
-        <source>Step response</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>time after the step (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>output (unit step)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overshoot limit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling band</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>violates the spec</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rise 10–90 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>peak</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling (2 %)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hover the plot: t and y of the step the axis runs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>unstable: no step response (the closed loop has a pole outside the stability region)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overshoot ≤ %1 %</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>overshoot limit %1 (%2 %) is above the view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>±%1 % after %2 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settling limit %1 s lies beyond the right edge (%2 s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>  rise %1 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the response never reaches 90 % of its final value in view</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>peak %1 at %2 s (%3 %)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>: beyond the right edge</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>settles %1 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>red: the response leaves the specification&apos;s envelope</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>t = %1 s   y = %2   (%3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::StepResponseView</name>
-    <message>
-        <source>Unit step of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No step response: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::TimeResponsePlot</name>
-    <message>
-        <source>position (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>u (V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>time (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reference r</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>snapshot</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>digital y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>digital e</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>digital u (held)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>y without the shaper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>e without the shaper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>output y</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>error e</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>table stuck</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>clipped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>snapshot u</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>snapshot e</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>feedforward part</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>feedback part</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>control u</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>linear loop: |u| is not clipped at ±%1 V here (the shaded time would saturate)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: not simulated (%2: %3)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 — time response</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>  (UNSTABLE closed loop)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>digital y (Ts %1 s, held u)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>digital y (encoder, DAC, limit)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>snapshot «%1» (y, e, u)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::TrajectoryEditor</name>
-    <message>
-        <source>Point-to-point (both axes)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Circle (x = R sin ωt, y = R cos ωt)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G-code program (x and y along its feed profile)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Trajectory kind</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>cubic</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>quintic</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Move profile</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The move&apos;s profile: Braga et al.&apos;s cubic, whose acceleration steps at the start and the end, or the quintic, whose acceleration starts and ends at zero, so a jerk feedforward sees no spike</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>x0 (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>xf (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>t0 (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tf (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>v0 (mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>vf (mm/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Radius (mm)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ω (rad/s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ramp-in (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle; a G-code program always runs its feed profile&apos;s time</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Duration (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Step dt (s)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G-code program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Read a G-code program (.nc); it is kept in the session</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Example programs</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Examples…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed scale</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Max accel. (mm/s²)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Max jerk (mm/s³)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>0 = no jerk limit (a trapezoidal profile)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open a G-code program</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>G-code programs (*.nc *.ngc *.gcode *.tap);;All files (*)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Open a program or pick an example.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%n motion block(s), %1 mm, run %2 s</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>, %n sharp corner(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>; one full circle: ISO 230-4 test</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>; %n warning(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>cubic move</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>circle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The plots still show the session&apos;s %1: a G-code trajectory needs a program (Open… or pick an example).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The plots still show the session&apos;s %1: the trajectory chosen in the editor is not valid yet (see the field marked red).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no program: open one or pick an example</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tf: must be later than t0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::TuningSession</name>
-    <message>
-        <source>axis %1, %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1: %2; %3: %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set ωn of %1 to %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set kp of %1 to %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the plant of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the model unit of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the friction of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the flexible mode and notch of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the trajectory</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the cross-coupling</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Switch the cross-coupling off</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set the actuator limit to %1 V</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the digital implementation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Set the controller sample time to %1 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the PI discretization</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the specification</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Store snapshot %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Use loop gain %1 from the root locus</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Only a PID + feedforward axis has zeros of its own to drag.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Move a zero of %1&apos;s PID</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the design method</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Change the pole-placement design</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::VibrationPlot</name>
-    <message>
-        <source>Vibration</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>frequency (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|G| (dB re mm/V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>frequency of the mode (Hz)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>residual (%)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rigid |G|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>with the mode</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>notch |N|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>measured |H|</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PSD (dB)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>accel. PSD</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>input shaper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>5 % tolerance</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>|H| measured from %1, drawn where γ² ≥ %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PSD of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mode %1 Hz</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>notch %1 Hz</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>measured %1 Hz</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>, ζ %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 %2 Hz, ζ %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 % left at %2 Hz</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No input shaper: the Mode fold&apos;s Input shaper sets one</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no input shaper</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The table is rigid: set a flexible mode in the Design box&apos;s Mode fold</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::VibrationView</name>
-    <message>
-        <source>Vibration of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 shaper: %2 impulses over %3 ms, a delay of %4 ms</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm unshaped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> it is designed for</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>after the move</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>along the path</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Saved %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Export</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Exported %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>JSON (*.json)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>C header (*.h)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Octave/MATLAB script (*.m)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>CSV (*.csv)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::SnapshotCompareDialog</name>
+        <message>
+            <source>Compare designs</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Current design</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Compare</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>with</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::StepPlot</name>
+        <message>
+            <source>Step response</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>time after the step (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>output (unit step)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>overshoot limit</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settling band</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>violates the spec</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>rise 10–90 %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>peak</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settling (2 %)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>hover the plot: t and y of the step the axis runs</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>unstable: no step response (the closed loop has a pole outside the stability region)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>overshoot ≤ %1 %</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>overshoot limit %1 (%2 %) is above the view</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>±%1 % after %2 s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settling limit %1 s lies beyond the right edge (%2 s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>  rise %1 s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>the response never reaches 90 % of its final value in view</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>peak %1 at %2 s (%3 %)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>: beyond the right edge</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>settles %1 s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>red: the response leaves the specification's envelope</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>t = %1 s   y = %2   (%3)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::StepResponseView</name>
+        <message>
+            <source>Unit step of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No step response: %1</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::TimeResponsePlot</name>
+        <message>
+            <source>position (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>error (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>u (V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>time (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>reference r</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>snapshot</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>digital y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>digital e</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>digital u (held)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>y without the shaper</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>e without the shaper</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>output y</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>error e</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>table stuck</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>clipped</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>snapshot u</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>snapshot e</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>feedforward part</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>feedback part</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>control u</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>linear loop: |u| is not clipped at ±%1 V here (the shaded time would saturate)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: not simulated (%2: %3)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 — time response</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>  (UNSTABLE closed loop)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>digital y (Ts %1 s, held u)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>digital y (encoder, DAC, limit)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>snapshot «%1» (y, e, u)</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::TrajectoryEditor</name>
+        <message>
+            <source>Point-to-point (both axes)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Circle (x = R sin ωt, y = R cos ωt)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>G-code program (x and y along its feed profile)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Trajectory kind</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>cubic</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>quintic</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Move profile</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The move's profile: Braga et al.'s cubic, whose acceleration steps at the start and the end, or the quintic, whose acceleration starts and ends at zero, so a jerk feedforward sees no spike</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>x0 (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>xf (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>t0 (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>tf (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>v0 (mm/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>vf (mm/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Radius (mm)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>ω (rad/s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Ramp-in (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle; a G-code program always runs its feed profile's time</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Duration (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Step dt (s)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>G-code program</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no program</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Open…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Read a G-code program (.nc); it is kept in the session</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Program</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Example programs</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Examples…</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Feed scale</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Max accel. (mm/s²)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Max jerk (mm/s³)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>0 = no jerk limit (a trapezoidal profile)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Open a G-code program</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>G-code programs (*.nc *.ngc *.gcode *.tap);;All files (*)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Open a program or pick an example.</source>
+            <translation type="unfinished" />
+        </message>
+        <message numerus="yes">
+            <source>%n motion block(s), %1 mm, run %2 s</source>
+            <translation type="unfinished">
+                <numerusform />
+                <numerusform />
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>, %n sharp corner(s)</source>
+            <translation type="unfinished">
+                <numerusform />
+                <numerusform />
+            </translation>
+        </message>
+        <message>
+            <source>; one full circle: ISO 230-4 test</source>
+            <translation type="unfinished" />
+        </message>
+        <message numerus="yes">
+            <source>; %n warning(s)</source>
+            <translation type="unfinished">
+                <numerusform />
+                <numerusform />
+            </translation>
+        </message>
+        <message>
+            <source>cubic move</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>circle</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The plots still show the session's %1: a G-code trajectory needs a program (Open… or pick an example).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The plots still show the session's %1: the trajectory chosen in the editor is not valid yet (see the field marked red).</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no program: open one or pick an example</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>tf: must be later than t0</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::TuningSession</name>
+        <message>
+            <source>axis %1, %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1: %2; %3: %4</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set ωn of %1 to %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set kp of %1 to %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the plant of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the model unit of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the friction of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the flexible mode and notch of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the trajectory</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the cross-coupling</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Switch the cross-coupling off</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set the actuator limit to %1 V</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the digital implementation</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Set the controller sample time to %1 s</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the PI discretization</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the specification</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Store snapshot %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Use loop gain %1 from the root locus</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Only a PID + feedforward axis has zeros of its own to drag.</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Move a zero of %1's PID</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the design method</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>Change the pole-placement design</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::VibrationPlot</name>
+        <message>
+            <source>Vibration</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>frequency (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>|G| (dB re mm/V)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>frequency of the mode (Hz)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>residual (%)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>rigid |G|</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>with the mode</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>notch |N|</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>measured |H|</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PSD (dB)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>accel. PSD</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>input shaper</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>5 % tolerance</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>|H| measured from %1, drawn where γ² ≥ %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>PSD of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>mode %1 Hz</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>notch %1 Hz</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>measured %1 Hz</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>, ζ %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 %2 Hz, ζ %3</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 % left at %2 Hz</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>No input shaper: the Mode fold's Input shaper sets one</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>no input shaper</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>The table is rigid: set a flexible mode in the Design box's Mode fold</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>xyt::ui::VibrationView</name>
+        <message>
+            <source>Vibration of %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>%1 shaper: %2 impulses over %3 ms, a delay of %4 ms</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm unshaped</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source> it is designed for</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>after the move</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <source>along the path</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
 </TS>
