@@ -760,15 +760,15 @@ falha: %1</translation>
         </message>
         <message>
             <source>not run (cancelled)</source>
-            <translation type="unfinished" />
+            <translation>não executado (cancelado)</translation>
         </message>
         <message>
             <source>an axis reaches its limit</source>
-            <translation type="unfinished" />
+            <translation>um eixo atinge seu limite</translation>
         </message>
         <message>
             <source>best</source>
-            <translation type="unfinished" />
+            <translation>melhor</translation>
         </message>
         <message>
             <source>Save as PNG...</source>
@@ -780,182 +780,182 @@ falha: %1</translation>
         </message>
         <message>
             <source>The best: %1.</source>
-            <translation type="unfinished" />
+            <translation>O melhor: %1.</translation>
         </message>
         <message>
             <source>&amp;Apply</source>
-            <translation type="unfinished" />
+            <translation>&amp;Aplicar</translation>
         </message>
         <message>
             <source>Set the selected cell's gains as the session's cross-coupling</source>
-            <translation type="unfinished" />
+            <translation>Usar os ganhos da célula selecionada como o acoplamento cruzado da sessão</translation>
         </message>
         <message>
             <source>kp 0, ki 0: the coupling off (the independent axes)</source>
-            <translation type="unfinished" />
+            <translation>kp 0, ki 0: o acoplamento desligado (eixos independentes)</translation>
         </message>
         <message>
             <source>Not run: the sweep was cancelled before it.</source>
-            <translation type="unfinished" />
+            <translation>Não executado: a varredura foi cancelada antes.</translation>
         </message>
         <message>
             <source>Refused: %1</source>
-            <translation type="unfinished" />
+            <translation>Recusado: %1</translation>
         </message>
         <message>
             <source>Max contour error %1, RMS %2 (independent axes: max %3)</source>
-            <translation type="unfinished" />
+            <translation>Erro de contorno máx %1, RMS %2 (eixos independentes: máx %3)</translation>
         </message>
         <message>
             <source>Coupled loop at its least stable direction: spectral radius %1, disk margin %2</source>
-            <translation type="unfinished" />
+            <translation>Malha acoplada na direção menos estável: raio espectral %1, margem de disco %2</translation>
         </message>
         <message>
             <source>An axis reaches its actuator limit.</source>
-            <translation type="unfinished" />
+            <translation>Um eixo atinge o limite do atuador.</translation>
         </message>
         <message>
             <source>Both axes stay inside their actuator limit.</source>
-            <translation type="unfinished" />
+            <translation>Os dois eixos ficam dentro do limite do atuador.</translation>
         </message>
         <message>
             <source>Warning: %1.</source>
-            <translation type="unfinished" />
+            <translation>Aviso: %1.</translation>
         </message>
         <message>
             <source>The best of the grid.</source>
-            <translation type="unfinished" />
+            <translation>O melhor da grade.</translation>
         </message>
         <message>
             <source>&amp;Run again</source>
-            <translation type="unfinished" />
+            <translation>Executar &amp;novamente</translation>
         </message>
         <message>
             <source>Computed for the session before it changed (%1). Press Run again for the session as it is.</source>
-            <translation type="unfinished" />
+            <translation>Calculado para a sessão antes de ela mudar (%1). Clique em Executar novamente para a sessão como está.</translation>
         </message>
         <message>
             <source>Cancelling: the runs under way finish first…</source>
-            <translation type="unfinished" />
+            <translation>Cancelando: as simulações em andamento terminam primeiro…</translation>
         </message>
         <message>
             <source>Running the contour for each pair of gains…</source>
-            <translation type="unfinished" />
+            <translation>Simulando o contorno para cada par de ganhos…</translation>
         </message>
         <message>
             <source> The session has changed since the sweep started: its result will be for the session as it was.</source>
-            <translation type="unfinished" />
+            <translation> A sessão mudou desde o início da varredura: o resultado será para a sessão como estava.</translation>
         </message>
         <message>
             <source>The sweep could not run: %1</source>
-            <translation type="unfinished" />
+            <translation>A varredura não pôde ser executada: %1</translation>
         </message>
         <message>
             <source>Cancelled: %1 of %2 pairs ran.</source>
-            <translation type="unfinished" />
+            <translation>Cancelada: %1 de %2 pares executados.</translation>
         </message>
         <message>
             <source>%1 pairs ran in %2 s.</source>
-            <translation type="unfinished" />
+            <translation>%1 pares executados em %2 s.</translation>
         </message>
         <message>
             <source> %1 refused: the coupled loop is unstable on a line of the path.</source>
-            <translation type="unfinished" />
+            <translation> %1 recusados: a malha acoplada é instável em uma linha do percurso.</translation>
         </message>
         <message>
             <source> %1 failed.</source>
-            <translation type="unfinished" />
+            <translation> %1 falharam.</translation>
         </message>
         <message>
             <source> %1 drive an axis to its limit.</source>
-            <translation type="unfinished" />
+            <translation> %1 levam um eixo ao limite.</translation>
         </message>
         <message>
             <source>Stale: the session has changed since this sweep (%1); nothing can be applied until it runs again. </source>
-            <translation type="unfinished" />
+            <translation>Desatualizado: a sessão mudou desde esta varredura (%1); nada pode ser aplicado até que ela seja executada novamente. </translation>
         </message>
         <message>
             <source>Not run yet: press Run.</source>
-            <translation type="unfinished" />
+            <translation>Ainda não executado: clique em Executar.</translation>
         </message>
         <message>
             <source>Independent axes (coupling off): max %1, RMS %2.</source>
-            <translation type="unfinished" />
+            <translation>Eixos independentes (acoplamento desligado): máx %1, RMS %2.</translation>
         </message>
         <message>
             <source>Independent axes (coupling off): %1</source>
-            <translation type="unfinished" />
+            <translation>Eixos independentes (acoplamento desligado): %1</translation>
         </message>
         <message>
             <source>Best of the pairs that ran</source>
-            <translation type="unfinished" />
+            <translation>Melhor dos pares executados</translation>
         </message>
         <message>
             <source>Best</source>
-            <translation type="unfinished" />
+            <translation>Melhor</translation>
         </message>
         <message>
             <source>No pair of gains ran: no best.</source>
-            <translation type="unfinished" />
+            <translation>Nenhum par de ganhos foi executado: não há melhor.</translation>
         </message>
         <message>
             <source>%1: the coupling off.</source>
-            <translation type="unfinished" />
+            <translation>%1: o acoplamento desligado.</translation>
         </message>
         <message>
             <source> No pair of the grid beats the independent axes on this path.</source>
-            <translation type="unfinished" />
+            <translation> Nenhum par da grade supera os eixos independentes neste percurso.</translation>
         </message>
         <message>
             <source>%1: %2: max %3, RMS %4</source>
-            <translation type="unfinished" />
+            <translation>%1: %2: máx %3, RMS %4</translation>
         </message>
         <message>
             <source>, %1 times smaller than the independent axes'</source>
-            <translation type="unfinished" />
+            <translation>, %1 vezes menor que o dos eixos independentes</translation>
         </message>
         <message>
             <source>, no smaller than the independent axes'</source>
-            <translation type="unfinished" />
+            <translation>, não menor que o dos eixos independentes</translation>
         </message>
         <message>
             <source> Every pair inside the limit has a coupled loop unstable at some direction of an arc: chosen among them.</source>
-            <translation type="unfinished" />
+            <translation> Todo par dentro do limite tem uma malha acoplada instável em alguma direção de um arco: escolhido entre eles.</translation>
         </message>
         <message>
             <source> Every pair that ran drives an axis to its limit: chosen among them.</source>
-            <translation type="unfinished" />
+            <translation> Todo par executado leva um eixo ao limite: escolhido entre eles.</translation>
         </message>
         <message>
             <source>Selected: %1</source>
-            <translation type="unfinished" />
+            <translation>Selecionado: %1</translation>
         </message>
         <message>
             <source>: max %1.</source>
-            <translation type="unfinished" />
+            <translation>: máx %1.</translation>
         </message>
         <message>
             <source>: %1, nothing to apply.</source>
-            <translation type="unfinished" />
+            <translation>: %1, nada a aplicar.</translation>
         </message>
         <message>
             <source> These are the session's gains.</source>
-            <translation type="unfinished" />
+            <translation> Estes são os ganhos da sessão.</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::CrossCouplingEditor</name>
         <message>
             <source>Cross-coupling</source>
-            <translation type="unfinished" />
+            <translation>Acoplamento cruzado</translation>
         </message>
         <message>
             <source>Proportional gain of the coupling (V per mm of estimated contour error); kp and ki 0: off</source>
-            <translation type="unfinished" />
+            <translation>Ganho proporcional do acoplamento (V por mm de erro de contorno estimado); kp e ki 0: desligado</translation>
         </message>
         <message>
             <source>Integral gain of the coupling (V per mm·s); it stops integrating while an axis is at its limit</source>
-            <translation type="unfinished" />
+            <translation>Ganho integral do acoplamento (V por mm·s); para de integrar enquanto um eixo está no limite</translation>
         </message>
         <message>
             <source>circular</source>
@@ -967,7 +967,7 @@ falha: %1</translation>
         </message>
         <message>
             <source>How the contour error is estimated from the two axis errors: the tangent line's, or the circle's with the path's curvature</source>
-            <translation type="unfinished" />
+            <translation>Como o erro de contorno é estimado a partir dos erros dos dois eixos: o da reta tangente, ou o do círculo com a curvatura do percurso</translation>
         </message>
         <message>
             <source>kp (V/mm)</source>
@@ -979,70 +979,70 @@ falha: %1</translation>
         </message>
         <message>
             <source>Estimate</source>
-            <translation type="unfinished" />
+            <translation>Estimativa</translation>
         </message>
         <message>
             <source>Tune…</source>
-            <translation type="unfinished" />
+            <translation>Sintonizar…</translation>
         </message>
         <message>
             <source>Run the contour once for each kp and ki of a small grid and pick the gains with the smallest contour error</source>
-            <translation type="unfinished" />
+            <translation>Simular o contorno uma vez para cada kp e ki de uma pequena grade e escolher os ganhos com o menor erro de contorno</translation>
         </message>
         <message>
             <source>Cross-coupling ●</source>
-            <translation type="unfinished" />
+            <translation>Acoplamento cruzado ●</translation>
         </message>
         <message>
             <source>Cross-coupled contouring: kp %1 V/mm, ki %2 V/(mm·s), %3 estimate</source>
-            <translation type="unfinished" />
+            <translation>Contorno com acoplamento cruzado: kp %1 V/mm, ki %2 V/(mm·s), estimativa %3</translation>
         </message>
         <message>
             <source>Cross-coupled contouring: off (each axis follows its own reference)</source>
-            <translation type="unfinished" />
+            <translation>Contorno com acoplamento cruzado: desligado (cada eixo segue sua própria referência)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::DesignSpacePlot</name>
         <message>
             <source>Design space</source>
-            <translation type="unfinished" />
+            <translation>Espaço de projeto</translation>
         </message>
         <message>
             <source>ωn (rad/s)</source>
-            <translation type="unfinished" />
+            <translation>ωn (rad/s)</translation>
         </message>
         <message>
             <source>kp (V per model unit)</source>
-            <translation type="unfinished" />
+            <translation>kp (V por unidade do modelo)</translation>
         </message>
         <message>
             <source>metric</source>
-            <translation type="unfinished" />
+            <translation>métrica</translation>
         </message>
         <message>
             <source>current</source>
-            <translation type="unfinished" />
+            <translation>atual</translation>
         </message>
         <message>
             <source>best</source>
-            <translation type="unfinished" />
+            <translation>melhor</translation>
         </message>
         <message>
             <source>refined</source>
-            <translation type="unfinished" />
+            <translation>refinado</translation>
         </message>
         <message>
             <source>least violating</source>
-            <translation type="unfinished" />
+            <translation>menos violador</translation>
         </message>
         <message>
             <source>Not computed yet: set the grid and press Run.</source>
-            <translation type="unfinished" />
+            <translation>Ainda não calculado: defina a grade e clique em Executar.</translation>
         </message>
         <message>
             <source>Show the whole grid</source>
-            <translation type="unfinished" />
+            <translation>Mostrar a grade inteira</translation>
         </message>
         <message>
             <source>Save as PNG...</source>
@@ -1054,62 +1054,62 @@ falha: %1</translation>
         </message>
         <message>
             <source>feasible region</source>
-            <translation type="unfinished" />
+            <translation>região viável</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::DesignSpaceView</name>
         <message>
             <source>The study failed: %1</source>
-            <translation type="unfinished" />
+            <translation>O estudo falhou: %1</translation>
         </message>
         <message>
             <source>logarithmic spacing</source>
-            <translation type="unfinished" />
+            <translation>espaçamento logarítmico</translation>
         </message>
         <message>
             <source>Grid</source>
-            <translation type="unfinished" />
+            <translation>Grade</translation>
         </message>
         <message>
             <source>ωn (rad/s)</source>
-            <translation type="unfinished" />
+            <translation>ωn (rad/s)</translation>
         </message>
         <message>
             <source>kp</source>
-            <translation type="unfinished" />
+            <translation>kp</translation>
         </message>
         <message>
             <source>logarithmic colour scale</source>
-            <translation type="unfinished" />
+            <translation>escala de cores logarítmica</translation>
         </message>
         <message>
             <source>Choice</source>
-            <translation type="unfinished" />
+            <translation>Escolha</translation>
         </message>
         <message>
             <source>Best design (min; max for margins)</source>
-            <translation type="unfinished" />
+            <translation>Melhor projeto (mín; máx para margens)</translation>
         </message>
         <message>
             <source>Heat map shows</source>
-            <translation type="unfinished" />
+            <translation>O mapa de calor mostra</translation>
         </message>
         <message>
             <source> s</source>
-            <translation type="unfinished" />
+            <translation> s</translation>
         </message>
         <message>
             <source> %</source>
-            <translation type="unfinished" />
+            <translation> %</translation>
         </message>
         <message>
             <source> V</source>
-            <translation type="unfinished" />
+            <translation> V</translation>
         </message>
         <message>
             <source>°</source>
-            <translation type="unfinished" />
+            <translation>°</translation>
         </message>
         <message>
             <source> dB</source>
@@ -1117,195 +1117,200 @@ falha: %1</translation>
         </message>
         <message>
             <source>Specification</source>
-            <translation type="unfinished" />
+            <translation>Especificação</translation>
         </message>
         <message>
             <source>settling time ≤</source>
-            <translation type="unfinished" />
+            <translation>tempo de acomodação ≤</translation>
         </message>
         <message>
             <source>step overshoot ≤</source>
-            <translation type="unfinished" />
+            <translation>sobressinal ao degrau ≤</translation>
         </message>
         <message>
             <source>max tracking error ≤</source>
-            <translation type="unfinished" />
+            <translation>erro de seguimento máx ≤</translation>
         </message>
         <message>
             <source>|u| ≤ (actuator limit)</source>
-            <translation type="unfinished" />
+            <translation>|u| ≤ (limite do atuador)</translation>
         </message>
         <message>
             <source>phase margin ≥ (0 = none)</source>
-            <translation type="unfinished" />
+            <translation>margem de fase ≥ (0 = nenhuma)</translation>
         </message>
         <message>
             <source>gain margin ≥ (0 = none)</source>
-            <translation type="unfinished" />
+            <translation>margem de ganho ≥ (0 = nenhuma)</translation>
         </message>
         <message>
             <source>&lt;i&gt;The session's specification, shared with the metrics panel.&lt;/i&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;i&gt;A especificação da sessão, compartilhada com o painel de métricas.&lt;/i&gt;</translation>
         </message>
         <message>
             <source>Run</source>
-            <translation type="unfinished" />
+            <translation>Executar</translation>
         </message>
         <message>
             <source>Cancel</source>
-            <translation type="unfinished" />
+            <translation>Cancelar</translation>
         </message>
         <message>
             <source>Set the grid and press Run to study the current axis.</source>
-            <translation type="unfinished" />
+            <translation>Defina a grade e clique em Executar para estudar o eixo atual.</translation>
         </message>
         <message>
             <source>Relax the limits</source>
-            <translation type="unfinished" />
+            <translation>Relaxar os limites</translation>
         </message>
         <message>
             <source>Set the specification to the smallest limits the least-violating design (▲) meets (an undoable step)</source>
-            <translation type="unfinished" />
+            <translation>Ajustar a especificação aos menores limites que o projeto menos violador (▲) atende (um passo que pode ser desfeito)</translation>
         </message>
         <message>
             <source>Live</source>
-            <translation type="unfinished" />
+            <translation>Ao vivo</translation>
         </message>
         <message>
             <source>Recompute the map when the plant, the trajectory or the limits change: a coarse preview at once, the full study when the inputs rest</source>
-            <translation type="unfinished" />
+            <translation>Recalcular o mapa quando a planta, a trajetória ou os limites mudam: uma prévia grosseira na hora, o estudo completo quando as entradas param</translation>
         </message>
         <message>
             <source>Settings</source>
-            <translation type="unfinished" />
+            <translation>Configurações</translation>
         </message>
         <message>
             <source>Show or hide the grid, the choice of the best design and the specification (hidden, the map takes the whole width)</source>
-            <translation type="unfinished" />
+            <translation>Mostrar ou ocultar a grade, a escolha do melhor projeto e a especificação (ocultos, o mapa ocupa toda a largura)</translation>
         </message>
         <message>
             <source>Hover a cell for its figures; click it to load that design. Colour: the metric (scale at the right) · unveiled, outlined: feasible · veiled: infeasible · grey: unstable or diverged.</source>
-            <translation type="unfinished" />
+            <translation>Passe o mouse sobre uma célula para ver seus valores; clique para carregar esse projeto. Cor: a métrica (escala à direita) · sem véu, contornado: viável · com véu: inviável · cinza: instável ou divergente.</translation>
         </message>
         <message>
             <source>The design space maps a PI with its feedforward; axis %1 has D: set D to 0 to map it.</source>
-            <translation type="unfinished" />
+            <translation>O espaço de projeto mapeia um PI com sua pré-alimentação; o eixo %1 tem D: ajuste D para 0 para mapeá-lo.</translation>
         </message>
         <message>
             <source>The design space applies to Guillemin–Truxal and PI + feedforward axes; axis %1 uses %2.</source>
-            <translation type="unfinished" />
+            <translation>O espaço de projeto se aplica a eixos Guillemin–Truxal e PI + pré-alimentação; o eixo %1 usa %2.</translation>
         </message>
         <message>
             <source>Cannot run: %1</source>
-            <translation type="unfinished" />
+            <translation>Não é possível executar: %1</translation>
         </message>
         <message>
             <source>Live preview of axis %1: %2 × %3 designs…</source>
-            <translation type="unfinished" />
+            <translation>Prévia ao vivo do eixo %1: %2 × %3 projetos…</translation>
         </message>
         <message>
             <source>Studying %1 × %2 designs of axis %3…</source>
-            <translation type="unfinished" />
+            <translation>Estudando %1 × %2 projetos do eixo %3…</translation>
         </message>
         <message>
             <source>Cancelling…</source>
-            <translation type="unfinished" />
+            <translation>Cancelando…</translation>
         </message>
         <message>
             <source>%1, axis %2</source>
-            <translation type="unfinished" />
+            <translation>%1, eixo %2</translation>
         </message>
         <message>
             <source>Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the inputs rest.
 </source>
-            <translation type="unfinished" />
+            <translation>Prévia ao vivo (%1 × %2 projetos, dt %3 s, %4 ms): o estudo completo vem quando as entradas param.
+</translation>
         </message>
         <message>
             <source>Cancelled: %1 of %2 designs computed, %3 feasible.</source>
-            <translation type="unfinished" />
+            <translation>Cancelado: %1 de %2 projetos calculados, %3 viáveis.</translation>
         </message>
         <message>
             <source>Done: %1 designs, %2 stable, %3 feasible.</source>
-            <translation type="unfinished" />
+            <translation>Concluído: %1 projetos, %2 estáveis, %3 viáveis.</translation>
         </message>
         <message>
             <source>
 Best on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.</source>
-            <translation type="unfinished" />
+            <translation>
+Melhor da grade (★): ωn = %1 rad/s, kp = %2, %3 = %4.</translation>
         </message>
         <message>
             <source>
 Refined (◆): ωn = %1 rad/s, kp = %2, %3 = %4.</source>
-            <translation type="unfinished" />
+            <translation>
+Refinado (◆): ωn = %1 rad/s, kp = %2, %3 = %4.</translation>
         </message>
         <message>
             <source>
 Click a cell to load its design.</source>
-            <translation type="unfinished" />
+            <translation>
+Clique em uma célula para carregar seu projeto.</translation>
         </message>
         <message>
             <source>
 Every GT design overshoots (its reference model is type 2); relax the overshoot limit.</source>
-            <translation type="unfinished" />
+            <translation>
+Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe o limite de sobressinal.</translation>
         </message>
         <message>
             <source>Cannot judge the study: %1</source>
-            <translation type="unfinished" />
+            <translation>Não é possível avaliar o estudo: %1</translation>
         </message>
         <message>
             <source>This tab shows axis %1.</source>
-            <translation type="unfinished" />
+            <translation>Esta aba mostra o eixo %1.</translation>
         </message>
         <message>
             <source>Axis %1 now uses %2: the map applies to Guillemin–Truxal and PI + feedforward axes.</source>
-            <translation type="unfinished" />
+            <translation>O eixo %1 agora usa %2: o mapa se aplica a eixos Guillemin–Truxal e PI + pré-alimentação.</translation>
         </message>
         <message>
             <source>The plant, the trajectory or the limits the runs depend on have changed since.</source>
-            <translation type="unfinished" />
+            <translation>A planta, a trajetória ou os limites de que as simulações dependem mudaram desde então.</translation>
         </message>
         <message>
             <source>The live map of the current design follows.</source>
-            <translation type="unfinished" />
+            <translation>Segue o mapa ao vivo do projeto atual.</translation>
         </message>
         <message>
             <source>Press Run to study the current design.</source>
-            <translation type="unfinished" />
+            <translation>Clique em Executar para estudar o projeto atual.</translation>
         </message>
         <message>
             <source>Map computed for %1. %2 %3</source>
-            <translation type="unfinished" />
+            <translation>Mapa calculado para %1. %2 %3</translation>
         </message>
         <message>
             <source>The map shown is not of the session's study (computed for %1). %2</source>
-            <translation type="unfinished" />
+            <translation>O mapa mostrado não é do estudo da sessão (calculado para %1). %2</translation>
         </message>
         <message>
             <source>Load design from the design space</source>
-            <translation type="unfinished" />
+            <translation>Carregar projeto do espaço de projeto</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::EnvelopePlot</name>
         <message>
             <source>Envelope</source>
-            <translation type="unfinished" />
+            <translation>Envoltória</translation>
         </message>
         <message>
             <source>time (s)</source>
-            <translation type="unfinished" />
+            <translation>tempo (s)</translation>
         </message>
         <message>
             <source>min–max</source>
-            <translation type="unfinished" />
+            <translation>mín–máx</translation>
         </message>
         <message>
             <source>5–95 %</source>
-            <translation type="unfinished" />
+            <translation>5–95 %</translation>
         </message>
         <message>
             <source>median</source>
-            <translation type="unfinished" />
+            <translation>mediana</translation>
         </message>
         <message>
             <source>nominal</source>
@@ -1317,201 +1322,201 @@ Every GT design overshoots (its reference model is type 2); relax the overshoot 
         </message>
         <message>
             <source>No stable plant: no envelope.</source>
-            <translation type="unfinished" />
+            <translation>Nenhuma planta estável: sem envoltória.</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::EquationsPanel</name>
         <message>
             <source>Design equations</source>
-            <translation type="unfinished" />
+            <translation>Equações de projeto</translation>
         </message>
         <message>
             <source>&lt;b&gt;Axis %1&lt;/b&gt;: %2: %3</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Eixo %1&lt;/b&gt;: %2: %3</translation>
         </message>
         <message>
             <source>&lt;b&gt;Axis %1 — pole placement + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Eixo %1 — alocação de polos + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</translation>
         </message>
         <message>
             <source>A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>A F + B G = T (diofantina, Patrick, Ishak e Adnan Eq. 8)&lt;br&gt;</translation>
         </message>
         <message>
             <source>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</translation>
         </message>
         <message>
             <source>F = %1&lt;br&gt;G = %2&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>F = %1&lt;br&gt;G = %2&lt;br&gt;</translation>
         </message>
         <message>
             <source>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, residual %2&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, resíduo %2&lt;br&gt;</translation>
         </message>
         <message>
             <source>control law: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>lei de controle: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</translation>
         </message>
         <message>
             <source>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</translation>
         </message>
         <message>
             <source>N = %1&lt;br&gt;D = %2</source>
-            <translation type="unfinished" />
+            <translation>N = %1&lt;br&gt;D = %2</translation>
         </message>
         <message>
             <source>no feedforward: w = r</source>
-            <translation type="unfinished" />
+            <translation>sem pré-alimentação: w = r</translation>
         </message>
         <message>
             <source>&lt;b&gt;Axis %1 — %2&lt;/b&gt;&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Eixo %1 — %2&lt;/b&gt;&lt;br&gt;</translation>
         </message>
         <message>
             <source>&lt;b&gt;Axis %1 — Guillemin–Truxal PI&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Eixo %1 — PI de Guillemin–Truxal&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</translation>
         </message>
         <message>
             <source>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</translation>
         </message>
         <message>
             <source>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</translation>
         </message>
         <message>
             <source>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</translation>
         </message>
         <message>
             <source>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</translation>
         </message>
         <message>
             <source>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</translation>
         </message>
         <message>
             <source>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</source>
-            <translation type="unfinished" />
+            <translation>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</translation>
         </message>
         <message>
             <source>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</source>
-            <translation type="unfinished" />
+            <translation>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</translation>
         </message>
         <message>
             <source>&lt;br&gt;&lt;span style='color:#d32f2f'&gt;&lt;b&gt;The closed loop is unstable.&lt;/b&gt;&lt;/span&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;br&gt;&lt;span style='color:#d32f2f'&gt;&lt;b&gt;A malha fechada é instável.&lt;/b&gt;&lt;/span&gt;</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::FlexibleModeEditor</name>
         <message>
             <source>Flexible mode and notch</source>
-            <translation type="unfinished" />
+            <translation>Modo flexível e notch</translation>
         </message>
         <message>
             <source>Mode (Hz)</source>
-            <translation type="unfinished" />
+            <translation>Modo (Hz)</translation>
         </message>
         <message>
             <source>The table's resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid table. The design is made on the rigid plant; every run and analysis has the mode</source>
-            <translation type="unfinished" />
+            <translation>A ressonância fr da mesa acima da planta rígida (correia, fuso, pórtico); 0: mesa rígida. O projeto é feito na planta rígida; toda simulação e análise inclui o modo</translation>
         </message>
         <message>
             <source>Mode damping</source>
-            <translation type="unfinished" />
+            <translation>Amortecimento do modo</translation>
         </message>
         <message>
             <source>Damping ratio of the resonance, in [0, 1); its peak stands 1/(2 ζ) above the rigid plant</source>
-            <translation type="unfinished" />
+            <translation>Coeficiente de amortecimento da ressonância, em [0, 1); seu pico fica 1/(2 ζ) acima da planta rígida</translation>
         </message>
         <message>
             <source>Anti-resonance (Hz)</source>
-            <translation type="unfinished" />
+            <translation>Antirressonância (Hz)</translation>
         </message>
         <message>
             <source>A two-mass model measured at the motor: its anti-resonance below fr; 0: the resonant pair fr² / (s² + 2 ζ fr s + fr²) alone</source>
-            <translation type="unfinished" />
+            <translation>Um modelo de duas massas medido no motor: sua antirressonância abaixo de fr; 0: só o par ressonante fr² / (s² + 2 ζ fr s + fr²)</translation>
         </message>
         <message>
             <source>Anti-res. damping</source>
-            <translation type="unfinished" />
+            <translation>Amort. antirress.</translation>
         </message>
         <message>
             <source>Damping ratio of the anti-resonance, in [0, 1)</source>
-            <translation type="unfinished" />
+            <translation>Coeficiente de amortecimento da antirressonância, em [0, 1)</translation>
         </message>
         <message>
             <source>Notch centre (Hz)</source>
-            <translation type="unfinished" />
+            <translation>Centro do notch (Hz)</translation>
         </message>
         <message>
             <source>Notch on the error the PI reads, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: none. Digital: bilinear, prewarped at the centre, below the controller's Nyquist frequency</source>
-            <translation type="unfinished" />
+            <translation>Filtro notch no erro que o PI lê, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: nenhum. Digital: bilinear, com pré-distorção no centro, abaixo da frequência de Nyquist do controlador</translation>
         </message>
         <message>
             <source>Notch width (Hz)</source>
-            <translation type="unfinished" />
+            <translation>Largura do notch (Hz)</translation>
         </message>
         <message>
             <source>Bandwidth of the notch's pole pair: 2 ζp f0</source>
-            <translation type="unfinished" />
+            <translation>Largura de banda do par de polos do notch: 2 ζp f0</translation>
         </message>
         <message>
             <source>Notch depth (dB)</source>
-            <translation type="unfinished" />
+            <translation>Profundidade do notch (dB)</translation>
         </message>
         <message>
             <source>Attenuation at the centre, in (0, 120] dB</source>
-            <translation type="unfinished" />
+            <translation>Atenuação no centro, em (0, 120] dB</translation>
         </message>
         <message>
             <source>Notch at the mode</source>
-            <translation type="unfinished" />
+            <translation>Notch no modo</translation>
         </message>
         <message>
             <source>Centre on the mode, as deep as its peak (6 to 40 dB) and four half-power bandwidths wide</source>
-            <translation type="unfinished" />
+            <translation>Centrado no modo, tão profundo quanto seu pico (6 a 40 dB) e com quatro larguras de banda de meia potência</translation>
         </message>
         <message>
             <source>none</source>
-            <translation type="unfinished" />
+            <translation>nenhum</translation>
         </message>
         <message>
             <source>Input shaper on both axes' reference: ZV, ZVD, ZVDD (Singer and Seering), MZV (Klipper), EI and the multi-hump EI (Singhose et al.)</source>
-            <translation type="unfinished" />
+            <translation>Modelador de entrada na referência dos dois eixos: ZV, ZVD, ZVDD (Singer e Seering), MZV (Klipper), EI e o EI de várias corcovas (Singhose et al.)</translation>
         </message>
         <message>
             <source>Input shaper</source>
-            <translation type="unfinished" />
+            <translation>Modelador de entrada</translation>
         </message>
         <message>
             <source>Shaper frequency (Hz)</source>
-            <translation type="unfinished" />
+            <translation>Frequência do modelador (Hz)</translation>
         </message>
         <message>
             <source>The mode the shaper is designed for; acts on the reference at the trajectory's step, so the controller's period does not limit it</source>
-            <translation type="unfinished" />
+            <translation>O modo para o qual o modelador é projetado; atua na referência no passo da trajetória, então o período do controlador não o limita</translation>
         </message>
         <message>
             <source>Shaper damping</source>
-            <translation type="unfinished" />
+            <translation>Amortecimento do modelador</translation>
         </message>
         <message>
             <source>The damping ratio it is designed for, [0, 1)</source>
-            <translation type="unfinished" />
+            <translation>O coeficiente de amortecimento para o qual é projetado, [0, 1)</translation>
         </message>
         <message>
             <source>Shaper at the mode</source>
-            <translation type="unfinished" />
+            <translation>Modelador no modo</translation>
         </message>
         <message>
             <source>Design the shaper for this axis' mode (ZV unless a type is chosen)</source>
-            <translation type="unfinished" />
+            <translation>Projetar o modelador para o modo deste eixo (ZV, a menos que um tipo seja escolhido)</translation>
         </message>
         <message>
             <source>Recommend</source>
@@ -1875,7 +1880,7 @@ Every GT design overshoots (its reference model is type 2); relax the overshoot 
         </message>
         <message>
             <source> s</source>
-            <translation type="unfinished" />
+            <translation> s</translation>
         </message>
         <message>
             <source>mm</source>
@@ -1967,7 +1972,7 @@ Every GT design overshoots (its reference model is type 2); relax the overshoot 
         </message>
         <message>
             <source>Cancel</source>
-            <translation type="unfinished" />
+            <translation>Cancelar</translation>
         </message>
         <message>
             <source>Load a record of the axis (input in V, output position) to begin.</source>
@@ -2127,7 +2132,7 @@ Every GT design overshoots (its reference model is type 2); relax the overshoot 
         </message>
         <message>
             <source>Cancelling…</source>
-            <translation type="unfinished" />
+            <translation>Cancelando…</translation>
         </message>
         <message>
             <source>No model: the fit failed.</source>
@@ -2262,7 +2267,7 @@ Every GT design overshoots (its reference model is type 2); relax the overshoot 
         </message>
         <message>
             <source>none</source>
-            <translation type="unfinished" />
+            <translation>nenhum</translation>
         </message>
         <message>
             <source>Anti-windup</source>
@@ -2935,7 +2940,7 @@ Every GT design overshoots (its reference model is type 2); relax the overshoot 
         </message>
         <message>
             <source>Relax the limits</source>
-            <translation type="unfinished" />
+            <translation>Relaxar os limites</translation>
         </message>
         <message>
             <source>Contour error figures</source>
@@ -3516,7 +3521,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>time (s)</source>
-            <translation type="unfinished" />
+            <translation>tempo (s)</translation>
         </message>
         <message>
             <source>y (mm)</source>
@@ -3730,11 +3735,11 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Run</source>
-            <translation type="unfinished" />
+            <translation>Executar</translation>
         </message>
         <message>
             <source>Cancel</source>
-            <translation type="unfinished" />
+            <translation>Cancelar</translation>
         </message>
         <message>
             <source>Load worst case</source>
@@ -3798,7 +3803,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Envelope</source>
-            <translation type="unfinished" />
+            <translation>Envoltória</translation>
         </message>
         <message>
             <source>Distribution</source>
@@ -3826,7 +3831,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Cannot run: %1</source>
-            <translation type="unfinished" />
+            <translation>Não é possível executar: %1</translation>
         </message>
         <message>
             <source>Running %1 plant pairs%2…</source>
@@ -3842,7 +3847,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Cancelling…</source>
-            <translation type="unfinished" />
+            <translation>Cancelando…</translation>
         </message>
         <message>
             <source>Cancelled after %1 of %2 %3. </source>
@@ -4310,7 +4315,7 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>time (s)</source>
-            <translation type="unfinished" />
+            <translation>tempo (s)</translation>
         </message>
         <message>
             <source>reference r</source>
