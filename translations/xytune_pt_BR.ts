@@ -1520,162 +1520,162 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Recommend</source>
-            <translation type="unfinished" />
+            <translation>Recomendar</translation>
         </message>
         <message>
             <source>Klipper's choice of shaper and frequency for this mode: the least vibration left for the smoothing, and the acceleration it allows</source>
-            <translation type="unfinished" />
+            <translation>A escolha do Klipper de modelador e frequência para este modo: a menor vibração restante para a suavização, e a aceleração que ela permite</translation>
         </message>
         <message>
             <source>From a log…</source>
-            <translation type="unfinished" />
+            <translation>De um registro…</translation>
         </message>
         <message>
             <source>Klipper's choice from an accelerometer log (#time,accel_x,accel_y,accel_z), as calibrate_shaper.py makes it</source>
-            <translation type="unfinished" />
+            <translation>A escolha do Klipper a partir de um registro de acelerômetro (#time,accel_x,accel_y,accel_z), como o calibrate_shaper.py a faz</translation>
         </message>
         <message>
             <source>the %1 Hz mode</source>
-            <translation type="unfinished" />
+            <translation>o modo de %1 Hz</translation>
         </message>
         <message>
             <source>No recommendation: %1</source>
-            <translation type="unfinished" />
+            <translation>Sem recomendação: %1</translation>
         </message>
         <message>
             <source>Accelerometer log</source>
-            <translation type="unfinished" />
+            <translation>Registro de acelerômetro</translation>
         </message>
         <message>
             <source>Klipper CSV (*.csv);;All files (*)</source>
-            <translation type="unfinished" />
+            <translation>CSV do Klipper (*.csv);;Todos os arquivos (*)</translation>
         </message>
         <message>
             <source>no flexible mode to tune the shaper to</source>
-            <translation type="unfinished" />
+            <translation>nenhum modo flexível para sintonizar o modelador</translation>
         </message>
         <message>
             <source>A pole-placement axis' ARX model holds whatever mode its data showed: identify it from a log that excites the mode.</source>
-            <translation type="unfinished" />
+            <translation>O modelo ARX de um eixo por alocação de polos contém o modo que seus dados mostraram: identifique-o a partir de um registro que excite o modo.</translation>
         </message>
         <message>
             <source>LinuxCNC's pid has no notch stage: the notch is offered on Guillemin–Truxal axes.</source>
-            <translation type="unfinished" />
+            <translation>O pid do LinuxCNC não tem estágio notch: o notch é oferecido em eixos Guillemin–Truxal.</translation>
         </message>
         <message>
             <source>Klipper's choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing %5 mm, max accel %6 mm/s²</source>
-            <translation type="unfinished" />
+            <translation>Escolha do Klipper para %1: %2 em %3 Hz, %4 % de vibração restante, suavização %5 mm, acel. máx %6 mm/s²</translation>
         </message>
         <message>
             <source>mode %1 Hz, ζ %2</source>
-            <translation type="unfinished" />
+            <translation>modo %1 Hz, ζ %2</translation>
         </message>
         <message>
             <source>notch %1 Hz, %2 dB</source>
-            <translation type="unfinished" />
+            <translation>notch %1 Hz, %2 dB</translation>
         </message>
         <message>
             <source>%1 shaper at %2 Hz</source>
-            <translation type="unfinished" />
+            <translation>modelador %1 em %2 Hz</translation>
         </message>
         <message>
             <source>Mode</source>
-            <translation type="unfinished" />
+            <translation>Modo</translation>
         </message>
         <message>
             <source>Mode ●</source>
-            <translation type="unfinished" />
+            <translation>Modo ●</translation>
         </message>
         <message>
             <source>Flexible mode and notch: none (the rigid table)</source>
-            <translation type="unfinished" />
+            <translation>Modo flexível e notch: nenhum (mesa rígida)</translation>
         </message>
         <message>
             <source>Flexible mode and notch: %1</source>
-            <translation type="unfinished" />
+            <translation>Modo flexível e notch: %1</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::FrictionCurveDialog</name>
         <message>
             <source>Friction curve from a jog log</source>
-            <translation type="unfinished" />
+            <translation>Curva de atrito de um registro de jog</translation>
         </message>
         <message>
             <source>&amp;Open log…</source>
-            <translation type="unfinished" />
+            <translation>&amp;Abrir registro…</translation>
         </message>
         <message>
             <source>No log: run xytune-cli excite --signal jog, or log jogs from the machine (time, reference, position, command)</source>
-            <translation type="unfinished" />
+            <translation>Nenhum registro: execute xytune-cli excite --signal jog, ou registre jogs da máquina (tempo, referência, posição, comando)</translation>
         </message>
         <message>
             <source>Time (s)</source>
-            <translation type="unfinished" />
+            <translation>Tempo (s)</translation>
         </message>
         <message>
             <source>Reference (mm)</source>
-            <translation type="unfinished" />
+            <translation>Referência (mm)</translation>
         </message>
         <message>
             <source>Position (mm)</source>
-            <translation type="unfinished" />
+            <translation>Posição (mm)</translation>
         </message>
         <message>
             <source>Command (V)</source>
-            <translation type="unfinished" />
+            <translation>Comando (V)</translation>
         </message>
         <message>
             <source>velocity (mm/s)</source>
-            <translation type="unfinished" />
+            <translation>velocidade (mm/s)</translation>
         </message>
         <message>
             <source>steady command (V)</source>
-            <translation type="unfinished" />
+            <translation>comando em regime (V)</translation>
         </message>
         <message>
             <source>jogs (mean ± 1 sd)</source>
-            <translation type="unfinished" />
+            <translation>jogs (média ± 1 dp)</translation>
         </message>
         <message>
             <source>fitted curve</source>
-            <translation type="unfinished" />
+            <translation>curva ajustada</translation>
         </message>
         <message>
             <source>&amp;Use for the current axis</source>
-            <translation type="unfinished" />
+            <translation>&amp;Usar para o eixo atual</translation>
         </message>
         <message>
             <source>Open a jog log</source>
-            <translation type="unfinished" />
+            <translation>Abrir um registro de jog</translation>
         </message>
         <message>
             <source>Experiment logs (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
-            <translation type="unfinished" />
+            <translation>Registros de ensaio (*.csv *.tsv *.txt *.lvm *.mat);;Todos os arquivos (*)</translation>
         </message>
         <message>
             <source>%1: %2 columns, %3 rows</source>
-            <translation type="unfinished" />
+            <translation>%1: %2 colunas, %3 linhas</translation>
         </message>
         <message>
             <source>time</source>
-            <translation type="unfinished" />
+            <translation>tempo</translation>
         </message>
         <message>
             <source>reference</source>
-            <translation type="unfinished" />
+            <translation>referência</translation>
         </message>
         <message>
             <source>position</source>
-            <translation type="unfinished" />
+            <translation>posição</translation>
         </message>
         <message>
             <source>command</source>
-            <translation type="unfinished" />
+            <translation>comando</translation>
         </message>
         <message>
             <source>Coulomb %1; slope %2 (the model's own a2/k0: %3 V per mm/s, so %4 beyond it)</source>
-            <translation type="unfinished" />
+            <translation>Coulomb %1; inclinação %2 (o a2/k0 do próprio modelo: %3 V por mm/s, portanto %4 além dele)</translation>
         </message>
         <message>
             <source>V</source>
@@ -1683,161 +1683,161 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>V per mm/s</source>
-            <translation type="unfinished" />
+            <translation>V por mm/s</translation>
         </message>
         <message>
             <source>; static %1, Stribeck velocity %2</source>
-            <translation type="unfinished" />
+            <translation>; estático %1, velocidade de Stribeck %2</translation>
         </message>
         <message>
             <source>mm/s</source>
-            <translation type="unfinished" />
+            <translation>mm/s</translation>
         </message>
         <message>
             <source>. %1 jogs, residual sd %2 V.</source>
-            <translation type="unfinished" />
+            <translation>. %1 jogs, dp do resíduo %2 V.</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::FrictionEditor</name>
         <message>
             <source>Friction and backlash</source>
-            <translation type="unfinished" />
+            <translation>Atrito e folga</translation>
         </message>
         <message>
             <source>Coulomb (V)</source>
-            <translation type="unfinished" />
+            <translation>Coulomb (V)</translation>
         </message>
         <message>
             <source>Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its linear model to keep sliding</source>
-            <translation type="unfinished" />
+            <translation>Atrito de Coulomb Fc em volts de comando equivalente: o que o eixo precisa além de seu modelo linear para continuar deslizando</translation>
         </message>
         <message>
             <source>Static (V)</source>
-            <translation type="unfinished" />
+            <translation>Estático (V)</translation>
         </message>
         <message>
             <source>Static (breakaway) level Fs in volts; 0 takes the Coulomb level (no Stribeck dip)</source>
-            <translation type="unfinished" />
+            <translation>Nível estático (de desprendimento) Fs em volts; 0 usa o nível de Coulomb (sem a queda de Stribeck)</translation>
         </message>
         <message>
             <source>Stribeck velocity (mm/s)</source>
-            <translation type="unfinished" />
+            <translation>Velocidade de Stribeck (mm/s)</translation>
         </message>
         <message>
             <source>vs of f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): how fast the friction falls from Fs to Fc</source>
-            <translation type="unfinished" />
+            <translation>vs de f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): quão rápido o atrito cai de Fs para Fc</translation>
         </message>
         <message>
             <source>Viscous (V per mm/s)</source>
-            <translation type="unfinished" />
+            <translation>Viscoso (V por mm/s)</translation>
         </message>
         <message>
             <source>Viscous friction beyond the model's own damping (a2/k0 already holds it): 0 by default</source>
-            <translation type="unfinished" />
+            <translation>Atrito viscoso além do amortecimento do próprio modelo (a2/k0 já o contém): 0 por padrão</translation>
         </message>
         <message>
             <source>Backlash (mm)</source>
-            <translation type="unfinished" />
+            <translation>Folga (mm)</translation>
         </message>
         <message>
             <source>Play between motor and table: the table stays while the motor crosses the gap</source>
-            <translation type="unfinished" />
+            <translation>Folga entre motor e mesa: a mesa fica parada enquanto o motor atravessa a folga</translation>
         </message>
         <message>
             <source>Amplifier deadband (V)</source>
-            <translation type="unfinished" />
+            <translation>Zona morta do amplificador (V)</translation>
         </message>
         <message>
             <source>|u| below it gives no output; beyond it the amplifier gives u - d sign(u)</source>
-            <translation type="unfinished" />
+            <translation>|u| abaixo dela não dá saída; acima dela o amplificador dá u - d sign(u)</translation>
         </message>
         <message>
             <source>the faster pole</source>
-            <translation type="unfinished" />
+            <translation>o polo mais rápido</translation>
         </message>
         <message>
             <source>the slower pole</source>
-            <translation type="unfinished" />
+            <translation>o polo mais lento</translation>
         </message>
         <message>
             <source>Which root of s² + a1 s + a2 is the drive's electrical lag; the other is the moving mass, where the friction acts</source>
-            <translation type="unfinished" />
+            <translation>Qual raiz de s² + a1 s + a2 é o atraso elétrico do acionamento; a outra é a massa em movimento, onde o atrito atua</translation>
         </message>
         <message>
             <source>Electrical lag</source>
-            <translation type="unfinished" />
+            <translation>Atraso elétrico</translation>
         </message>
         <message>
             <source>Compensation (%)</source>
-            <translation type="unfinished" />
+            <translation>Compensação (%)</translation>
         </message>
         <message>
             <source>Friction feedforward from the reference velocity, in percent of the Coulomb and viscous levels above (0: none)</source>
-            <translation type="unfinished" />
+            <translation>Pré-alimentação de atrito a partir da velocidade de referência, em porcentagem dos níveis de Coulomb e viscoso acima (0: nenhuma)</translation>
         </message>
         <message>
             <source>Compensation band (mm/s)</source>
-            <translation type="unfinished" />
+            <translation>Faixa de compensação (mm/s)</translation>
         </message>
         <message>
             <source>The Coulomb term ramps linearly across |v| &lt; band instead of jumping at v = 0</source>
-            <translation type="unfinished" />
+            <translation>O termo de Coulomb varia linearmente em |v| &lt; faixa em vez de saltar em v = 0</translation>
         </message>
         <message>
             <source>A pole-placement axis' ARX model has no moving mass: it takes the Coulomb level and the amplifier deadband, as a dead zone of its input</source>
-            <translation type="unfinished" />
+            <translation>O modelo ARX de um eixo por alocação de polos não tem massa em movimento: ele usa o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
         </message>
         <message>
             <source>Coulomb %1 V</source>
-            <translation type="unfinished" />
+            <translation>Coulomb %1 V</translation>
         </message>
         <message>
             <source>backlash %1 mm</source>
-            <translation type="unfinished" />
+            <translation>folga %1 mm</translation>
         </message>
         <message>
             <source>deadband %1 V</source>
-            <translation type="unfinished" />
+            <translation>zona morta %1 V</translation>
         </message>
         <message>
             <source>viscous</source>
-            <translation type="unfinished" />
+            <translation>viscoso</translation>
         </message>
         <message>
             <source>compensated %1 %</source>
-            <translation type="unfinished" />
+            <translation>compensado %1 %</translation>
         </message>
         <message>
             <source>Friction</source>
-            <translation type="unfinished" />
+            <translation>Atrito</translation>
         </message>
         <message>
             <source>Friction ●</source>
-            <translation type="unfinished" />
+            <translation>Atrito ●</translation>
         </message>
         <message>
             <source>Friction and backlash: none (the linear table)</source>
-            <translation type="unfinished" />
+            <translation>Atrito e folga: nenhum (mesa linear)</translation>
         </message>
         <message>
             <source>Friction and backlash: %1</source>
-            <translation type="unfinished" />
+            <translation>Atrito e folga: %1</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::HistogramPlot</name>
         <message>
             <source>Distribution</source>
-            <translation type="unfinished" />
+            <translation>Distribuição</translation>
         </message>
         <message>
             <source>plants</source>
-            <translation type="unfinished" />
+            <translation>plantas</translation>
         </message>
         <message>
             <source>limit</source>
-            <translation type="unfinished" />
+            <translation>limite</translation>
         </message>
         <message>
             <source>nominal</source>
@@ -1849,34 +1849,34 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>No stable plant: no distribution.</source>
-            <translation type="unfinished" />
+            <translation>Nenhuma planta estável: sem distribuição.</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::IdentificationWindow</name>
         <message>
             <source>Identify a model from data</source>
-            <translation type="unfinished" />
+            <translation>Identificar um modelo a partir de dados</translation>
         </message>
         <message>
             <source>Fit a model to see it here.</source>
-            <translation type="unfinished" />
+            <translation>Ajuste um modelo para vê-lo aqui.</translation>
         </message>
         <message>
             <source>Load data…</source>
-            <translation type="unfinished" />
+            <translation>Carregar dados…</translation>
         </message>
         <message>
             <source>(no file)</source>
-            <translation type="unfinished" />
+            <translation>(nenhum arquivo)</translation>
         </message>
         <message>
             <source>Validation data…</source>
-            <translation type="unfinished" />
+            <translation>Dados de validação…</translation>
         </message>
         <message>
             <source>(none: judged on the estimation data)</source>
-            <translation type="unfinished" />
+            <translation>(nenhum: avaliado nos dados de estimação)</translation>
         </message>
         <message>
             <source> s</source>
@@ -1888,87 +1888,87 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>m</source>
-            <translation type="unfinished" />
+            <translation>m</translation>
         </message>
         <message>
             <source>Range of the record to use; 0 to 0 uses all of it</source>
-            <translation type="unfinished" />
+            <translation>Intervalo do registro a usar; 0 a 0 usa o registro inteiro</translation>
         </message>
         <message>
             <source>Remove trends</source>
-            <translation type="unfinished" />
+            <translation>Remover tendências</translation>
         </message>
         <message>
             <source>Keep every n-th sample after an anti-alias filter (1: all)</source>
-            <translation type="unfinished" />
+            <translation>Manter uma amostra a cada n após um filtro anti-aliasing (1: todas)</translation>
         </message>
         <message>
             <source>Data</source>
-            <translation type="unfinished" />
+            <translation>Dados</translation>
         </message>
         <message>
             <source>Input (V):</source>
-            <translation type="unfinished" />
+            <translation>Entrada (V):</translation>
         </message>
         <message>
             <source>Output:</source>
-            <translation type="unfinished" />
+            <translation>Saída:</translation>
         </message>
         <message>
             <source>Output unit:</source>
-            <translation type="unfinished" />
+            <translation>Unidade da saída:</translation>
         </message>
         <message>
             <source>Time:</source>
-            <translation type="unfinished" />
+            <translation>Tempo:</translation>
         </message>
         <message>
             <source>Ts:</source>
-            <translation type="unfinished" />
+            <translation>Ts:</translation>
         </message>
         <message>
             <source>to</source>
-            <translation type="unfinished" />
+            <translation>a</translation>
         </message>
         <message>
             <source>Range:</source>
-            <translation type="unfinished" />
+            <translation>Intervalo:</translation>
         </message>
         <message>
             <source>Decimate:</source>
-            <translation type="unfinished" />
+            <translation>Decimar:</translation>
         </message>
         <message>
             <source>ARX</source>
-            <translation type="unfinished" />
+            <translation>ARX</translation>
         </message>
         <message>
             <source>OE</source>
-            <translation type="unfinished" />
+            <translation>OE</translation>
         </message>
         <message>
             <source>BJ</source>
-            <translation type="unfinished" />
+            <translation>BJ</translation>
         </message>
         <message>
             <source>GT3 continuous</source>
-            <translation type="unfinished" />
+            <translation>GT3 contínuo</translation>
         </message>
         <message>
             <source>Model</source>
-            <translation type="unfinished" />
+            <translation>Modelo</translation>
         </message>
         <message>
             <source>Structure:</source>
-            <translation type="unfinished" />
+            <translation>Estrutura:</translation>
         </message>
         <message>
             <source>Max iterations:</source>
-            <translation type="unfinished" />
+            <translation>Iterações máx:</translation>
         </message>
         <message>
             <source>Fit</source>
-            <translation type="unfinished" />
+            <translation>Ajustar</translation>
         </message>
         <message>
             <source>Cancel</source>
@@ -1976,159 +1976,159 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Load a record of the axis (input in V, output position) to begin.</source>
-            <translation type="unfinished" />
+            <translation>Carregue um registro do eixo (entrada em V, saída posição) para começar.</translation>
         </message>
         <message>
             <source>Status</source>
-            <translation type="unfinished" />
+            <translation>Estado</translation>
         </message>
         <message>
             <source>Fit % est</source>
-            <translation type="unfinished" />
+            <translation>Ajuste % est</translation>
         </message>
         <message>
             <source>Fit % val</source>
-            <translation type="unfinished" />
+            <translation>Ajuste % val</translation>
         </message>
         <message>
             <source>AIC</source>
-            <translation type="unfinished" />
+            <translation>AIC</translation>
         </message>
         <message>
             <source>Residuals</source>
-            <translation type="unfinished" />
+            <translation>Resíduos</translation>
         </message>
         <message>
             <source>NMP</source>
-            <translation type="unfinished" />
+            <translation>FNM</translation>
         </message>
         <message>
             <source>The selected model's parameters, each ± one standard deviation</source>
-            <translation type="unfinished" />
+            <translation>Os parâmetros do modelo selecionado, cada um ± um desvio padrão</translation>
         </message>
         <message>
             <source>Use for axis X</source>
-            <translation type="unfinished" />
+            <translation>Usar para o eixo X</translation>
         </message>
         <message>
             <source>Use for axis Y</source>
-            <translation type="unfinished" />
+            <translation>Usar para o eixo Y</translation>
         </message>
         <message>
             <source>Response → X</source>
-            <translation type="unfinished" />
+            <translation>Resposta → X</translation>
         </message>
         <message>
             <source>Response → Y</source>
-            <translation type="unfinished" />
+            <translation>Resposta → Y</translation>
         </message>
         <message>
             <source>Welch's estimate of y/u (Hann window, 50 % overlap) with its coherence, drawn over the axis' model in the Vibration view</source>
-            <translation type="unfinished" />
+            <translation>Estimativa de Welch de y/u (janela de Hann, 50 % de sobreposição) com sua coerência, desenhada sobre o modelo do eixo na vista Vibração</translation>
         </message>
         <message>
             <source>Load experiment data</source>
-            <translation type="unfinished" />
+            <translation>Carregar dados de ensaio</translation>
         </message>
         <message>
             <source>Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
-            <translation type="unfinished" />
+            <translation>Arquivos de ensaio (*.csv *.tsv *.txt *.lvm *.mat);;Todos os arquivos (*)</translation>
         </message>
         <message>
             <source>Load validation data</source>
-            <translation type="unfinished" />
+            <translation>Carregar dados de validação</translation>
         </message>
         <message>
             <source>measured y</source>
-            <translation type="unfinished" />
+            <translation>y medido</translation>
         </message>
         <message>
             <source>simulated ŷ (model)</source>
-            <translation type="unfinished" />
+            <translation>ŷ simulado (modelo)</translation>
         </message>
         <message>
             <source>t (s)</source>
-            <translation type="unfinished" />
+            <translation>t (s)</translation>
         </message>
         <message>
             <source>position (mm)</source>
-            <translation type="unfinished" />
+            <translation>posição (mm)</translation>
         </message>
         <message>
             <source>Output</source>
-            <translation type="unfinished" />
+            <translation>Saída</translation>
         </message>
         <message>
             <source>residual autocorr.</source>
-            <translation type="unfinished" />
+            <translation>autocorr. do resíduo</translation>
         </message>
         <message>
             <source>lag (samples)</source>
-            <translation type="unfinished" />
+            <translation>atraso (amostras)</translation>
         </message>
         <message>
             <source>input–residual corr.</source>
-            <translation type="unfinished" />
+            <translation>corr. entrada–resíduo</translation>
         </message>
         <message>
             <source>Poles and zeros</source>
-            <translation type="unfinished" />
+            <translation>Polos e zeros</translation>
         </message>
         <message>
             <source>%1: %2 columns, %3 rows%4. Pick the columns and press Fit.</source>
-            <translation type="unfinished" />
+            <translation>%1: %2 colunas, %3 linhas%4. Escolha as colunas e clique em Ajustar.</translation>
         </message>
         <message>
             <source>, Ts = %1 s stated by the file</source>
-            <translation type="unfinished" />
+            <translation>, Ts = %1 s informado pelo arquivo</translation>
         </message>
         <message>
             <source>The candidates fitted to the previous file were cleared.</source>
-            <translation type="unfinished" />
+            <translation>Os candidatos ajustados ao arquivo anterior foram removidos.</translation>
         </message>
         <message>
             <source>These columns cannot be used yet: %1</source>
-            <translation type="unfinished" />
+            <translation>Estas colunas ainda não podem ser usadas: %1</translation>
         </message>
         <message>
             <source>No data loaded.</source>
-            <translation type="unfinished" />
+            <translation>Nenhum dado carregado.</translation>
         </message>
         <message>
             <source>Cannot read %1: %2</source>
-            <translation type="unfinished" />
+            <translation>Não é possível ler %1: %2</translation>
         </message>
         <message>
             <source>Validation data: %1 (%2 rows).</source>
-            <translation type="unfinished" />
+            <translation>Dados de validação: %1 (%2 linhas).</translation>
         </message>
         <message>
             <source>No model: the data could not be used.</source>
-            <translation type="unfinished" />
+            <translation>Nenhum modelo: os dados não puderam ser usados.</translation>
         </message>
         <message>
             <source>Cannot fit: %1</source>
-            <translation type="unfinished" />
+            <translation>Não é possível ajustar: %1</translation>
         </message>
         <message>
             <source>%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); the fit estimates where the table stood</source>
-            <translation type="unfinished" />
+            <translation>%1: a primeira amostra %2 mm foi subtraída (a planta parte do repouso em 0); o ajuste estima onde a mesa estava</translation>
         </message>
         <message>
             <source>Fitting %1 to %2 samples…</source>
-            <translation type="unfinished" />
+            <translation>Ajustando %1 a %2 amostras…</translation>
         </message>
         <message>
             <source>No frequency response: load a record first</source>
-            <translation type="unfinished" />
+            <translation>Sem resposta em frequência: carregue um registro primeiro</translation>
         </message>
         <message>
             <source>Frequency response of %1: %2 averages of %3 samples, drawn in the Vibration view of axis %4</source>
-            <translation type="unfinished" />
+            <translation>Resposta em frequência de %1: %2 médias de %3 amostras, desenhada na vista Vibração do eixo %4</translation>
         </message>
         <message>
             <source>No frequency response: %1</source>
-            <translation type="unfinished" />
+            <translation>Sem resposta em frequência: %1</translation>
         </message>
         <message>
             <source>Cancelling…</source>
@@ -2136,39 +2136,39 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>No model: the fit failed.</source>
-            <translation type="unfinished" />
+            <translation>Nenhum modelo: o ajuste falhou.</translation>
         </message>
         <message>
             <source>The fit failed: %1</source>
-            <translation type="unfinished" />
+            <translation>O ajuste falhou: %1</translation>
         </message>
         <message>
             <source>%1: %2</source>
-            <translation type="unfinished" />
+            <translation>%1: %2</translation>
         </message>
         <message>
             <source> (%1)</source>
-            <translation type="unfinished" />
+            <translation> (%1)</translation>
         </message>
         <message>
             <source>Estimated initial position: %1 mm</source>
-            <translation type="unfinished" />
+            <translation>Posição inicial estimada: %1 mm</translation>
         </message>
         <message>
             <source>No estimate: %1</source>
-            <translation type="unfinished" />
+            <translation>Sem estimativa: %1</translation>
         </message>
         <message>
             <source>GT3</source>
-            <translation type="unfinished" />
+            <translation>GT3</translation>
         </message>
         <message>
             <source>pass</source>
-            <translation type="unfinished" />
+            <translation>aprovado</translation>
         </message>
         <message>
             <source>fail</source>
-            <translation type="unfinished" />
+            <translation>reprovado</translation>
         </message>
         <message>
             <source>yes</source>
@@ -2180,74 +2180,74 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Pole-zero map (z-plane)</source>
-            <translation type="unfinished" />
+            <translation>Mapa de polos e zeros (plano z)</translation>
         </message>
         <message>
             <source>Select a candidate to see it here.</source>
-            <translation type="unfinished" />
+            <translation>Selecione um candidato para vê-lo aqui.</translation>
         </message>
         <message>
             <source>Parameters (± 1 SD): %1</source>
-            <translation type="unfinished" />
+            <translation>Parâmetros (± 1 DP): %1</translation>
         </message>
         <message>
             <source>residual autocorr. (%1)</source>
-            <translation type="unfinished" />
+            <translation>autocorr. do resíduo (%1)</translation>
         </message>
         <message>
             <source>input–residual corr. (%1)</source>
-            <translation type="unfinished" />
+            <translation>corr. entrada–resíduo (%1)</translation>
         </message>
         <message>
             <source>Pole-zero map (z-plane): a zero outside the unit circle (NMP)</source>
-            <translation type="unfinished" />
+            <translation>Mapa de polos e zeros (plano z): um zero fora do círculo unitário (FNM)</translation>
         </message>
         <message>
             <source>A pole at z = 1: the model integrates, as the position of a motor axis does (every other pole is inside the unit circle).</source>
-            <translation type="unfinished" />
+            <translation>Um polo em z = 1: o modelo integra, como a posição de um eixo motorizado (todos os outros polos estão dentro do círculo unitário).</translation>
         </message>
         <message>
             <source>A pole is on or outside the unit circle: the model is unstable.</source>
-            <translation type="unfinished" />
+            <translation>Um polo está sobre ou fora do círculo unitário: o modelo é instável.</translation>
         </message>
         <message>
             <source>Pick the columns and press Fit.</source>
-            <translation type="unfinished" />
+            <translation>Escolha as colunas e clique em Ajustar.</translation>
         </message>
         <message>
             <source>The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)</source>
-            <translation type="unfinished" />
+            <translation>O registro: %1 amostras, %2 s a %3 s, Ts = %4 s (ainda sem modelo)</translation>
         </message>
         <message>
             <source>The record cannot be drawn: %1</source>
-            <translation type="unfinished" />
+            <translation>O registro não pode ser desenhado: %1</translation>
         </message>
         <message>
             <source>Use the identified %1 for axis %2</source>
-            <translation type="unfinished" />
+            <translation>Usar o %1 identificado para o eixo %2</translation>
         </message>
         <message>
             <source>X</source>
-            <translation type="unfinished" />
+            <translation>X</translation>
         </message>
         <message>
             <source>Y</source>
-            <translation type="unfinished" />
+            <translation>Y</translation>
         </message>
         <message>
             <source>Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).</source>
-            <translation type="unfinished" />
+            <translation>O eixo %1 agora usa o %2 identificado (Editar › Desfazer restaura a planta anterior).</translation>
         </message>
         <message>
             <source>Cannot use this model: %1</source>
-            <translation type="unfinished" />
+            <translation>Não é possível usar este modelo: %1</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::ImplementationEditor</name>
         <message>
             <source>Computation delay: the command computed at sample k is applied at k + delay</source>
-            <translation type="unfinished" />
+            <translation>Atraso de cálculo: o comando calculado na amostra k é aplicado em k + atraso</translation>
         </message>
         <message>
             <source>Encoder resolution in mm per count; 0 = ideal (no quantization)</source>
@@ -2674,7 +2674,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>%1: %2</source>
-            <translation type="unfinished" />
+            <translation>%1: %2</translation>
         </message>
         <message>
             <source>clamp</source>
@@ -2784,11 +2784,11 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <name>xyt::ui::MetricsPanel</name>
         <message>
             <source>X</source>
-            <translation type="unfinished" />
+            <translation>X</translation>
         </message>
         <message>
             <source>Y</source>
-            <translation type="unfinished" />
+            <translation>Y</translation>
         </message>
         <message>
             <source>spec</source>
@@ -3133,7 +3133,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>%1: %2</source>
-            <translation type="unfinished" />
+            <translation>%1: %2</translation>
         </message>
         <message>
             <source>&gt; %1</source>
@@ -3192,7 +3192,7 @@ Without the friction compensation: G %1 mm</source>
         <name>xyt::ui::NumberField</name>
         <message>
             <source>%1: %2</source>
-            <translation type="unfinished" />
+            <translation>%1: %2</translation>
         </message>
     </context>
     <context>
@@ -3727,7 +3727,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>plants</source>
-            <translation type="unfinished" />
+            <translation>plantas</translation>
         </message>
         <message>
             <source>seed</source>
@@ -3807,7 +3807,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Distribution</source>
-            <translation type="unfinished" />
+            <translation>Distribuição</translation>
         </message>
         <message>
             <source>%1 of every axis that has one: drawn uniformly within ± this share of its nominal</source>
@@ -4303,7 +4303,7 @@ Worst: %1 mm at %2.</source>
         <name>xyt::ui::TimeResponsePlot</name>
         <message>
             <source>position (mm)</source>
-            <translation type="unfinished" />
+            <translation>posição (mm)</translation>
         </message>
         <message>
             <source>error (mm)</source>
@@ -4546,7 +4546,7 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>%1: %2</source>
-            <translation type="unfinished" />
+            <translation>%1: %2</translation>
         </message>
         <message>
             <source>Open a program or pick an example.</source>
