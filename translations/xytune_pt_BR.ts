@@ -2251,19 +2251,19 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Encoder resolution in mm per count; 0 = ideal (no quantization)</source>
-            <translation type="unfinished" />
+            <translation>Resolução do encoder em mm por contagem; 0 = ideal (sem quantização)</translation>
         </message>
         <message>
             <source>DAC resolution over ±umax; 0 = ideal</source>
-            <translation type="unfinished" />
+            <translation>Resolução do DAC em ±umax; 0 = ideal</translation>
         </message>
         <message>
             <source>clamping</source>
-            <translation type="unfinished" />
+            <translation>grampeamento</translation>
         </message>
         <message>
             <source>back-calculation</source>
-            <translation type="unfinished" />
+            <translation>retrocálculo</translation>
         </message>
         <message>
             <source>none</source>
@@ -2271,406 +2271,406 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Anti-windup</source>
-            <translation type="unfinished" />
+            <translation>Anti-windup</translation>
         </message>
         <message>
             <source>How the digital PI's integrator is kept from winding up while u is clipped: clamping (conditional integration) is what ships</source>
-            <translation type="unfinished" />
+            <translation>Como o integrador do PI digital é impedido de acumular enquanto u está limitado: o grampeamento (integração condicional) é o que se usa na prática</translation>
         </message>
         <message>
             <source>Back-calculation tracking time Tt (s); 0 = Ti = kp/ki</source>
-            <translation type="unfinished" />
+            <translation>Tempo de rastreamento Tt do retrocálculo (s); 0 = Ti = kp/ki</translation>
         </message>
         <message>
             <source>Delay (samples)</source>
-            <translation type="unfinished" />
+            <translation>Atraso (amostras)</translation>
         </message>
         <message>
             <source>Encoder (mm/count)</source>
-            <translation type="unfinished" />
+            <translation>Encoder (mm/contagem)</translation>
         </message>
         <message>
             <source>DAC bits</source>
-            <translation type="unfinished" />
+            <translation>Bits do DAC</translation>
         </message>
         <message>
             <source>Tracking time (s)</source>
-            <translation type="unfinished" />
+            <translation>Tempo de rastreamento (s)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::MainWindow</name>
         <message>
             <source>XY Tune</source>
-            <translation type="unfinished" />
+            <translation>XY Tune</translation>
         </message>
         <message>
             <source>Picking a gain sets kp and ωn of a Guillemin–Truxal axis, or P, I and D of a PID; this axis uses %1.</source>
-            <translation type="unfinished" />
+            <translation>Escolher um ganho define kp e ωn de um eixo Guillemin–Truxal, ou P, I e D de um PID; este eixo usa %1.</translation>
         </message>
         <message>
             <source>Loop gain %1 applied: P, I and D scaled</source>
-            <translation type="unfinished" />
+            <translation>Ganho de malha %1 aplicado: P, I e D escalados</translation>
         </message>
         <message>
             <source>Loop gain %1 applied: kp and ωn scaled</source>
-            <translation type="unfinished" />
+            <translation>Ganho de malha %1 aplicado: kp e ωn escalados</translation>
         </message>
         <message>
             <source>Loop gain %1 of the design before the drag applied</source>
-            <translation type="unfinished" />
+            <translation>Ganho de malha %1 do projeto anterior ao arraste aplicado</translation>
         </message>
         <message>
             <source>Dragging a pole sets the loop gain of a Guillemin–Truxal axis or a PID.</source>
-            <translation type="unfinished" />
+            <translation>Arrastar um polo define o ganho de malha de um eixo Guillemin–Truxal ou de um PID.</translation>
         </message>
         <message>
             <source>The zero stays: %1</source>
-            <translation type="unfinished" />
+            <translation>O zero permanece: %1</translation>
         </message>
         <message>
             <source>Zero moved to %1 %2 %3j</source>
-            <translation type="unfinished" />
+            <translation>Zero movido para %1 %2 %3j</translation>
         </message>
         <message>
             <source>&amp;Root locus</source>
-            <translation type="unfinished" />
+            <translation>&amp;Lugar das raízes</translation>
         </message>
         <message>
             <source>P&amp;arameter locus</source>
-            <translation type="unfinished" />
+            <translation>Lugar do p&amp;arâmetro</translation>
         </message>
         <message>
             <source>&amp;Pole-zero</source>
-            <translation type="unfinished" />
+            <translation>&amp;Polos e zeros</translation>
         </message>
         <message>
             <source>&amp;Bode</source>
-            <translation type="unfinished" />
+            <translation>&amp;Bode</translation>
         </message>
         <message>
             <source>&amp;Nyquist</source>
-            <translation type="unfinished" />
+            <translation>&amp;Nyquist</translation>
         </message>
         <message>
             <source>&amp;Vibration</source>
-            <translation type="unfinished" />
+            <translation>&amp;Vibração</translation>
         </message>
         <message>
             <source>sweep ωn (kp fixed)</source>
-            <translation type="unfinished" />
+            <translation>varrer ωn (kp fixo)</translation>
         </message>
         <message>
             <source>sweep kp (ωn fixed)</source>
-            <translation type="unfinished" />
+            <translation>varrer kp (ωn fixo)</translation>
         </message>
         <message>
             <source>Swept parameter</source>
-            <translation type="unfinished" />
+            <translation>Parâmetro varrido</translation>
         </message>
         <message>
             <source>&amp;Time</source>
-            <translation type="unfinished" />
+            <translation>&amp;Tempo</translation>
         </message>
         <message>
             <source>Time response: the trajectory, the tracking error and the control signal</source>
-            <translation type="unfinished" />
+            <translation>Resposta no tempo: a trajetória, o erro de seguimento e o sinal de controle</translation>
         </message>
         <message>
             <source>&amp;Step</source>
-            <translation type="unfinished" />
+            <translation>&amp;Degrau</translation>
         </message>
         <message>
             <source>Step response of each axis against the specification's envelope</source>
-            <translation type="unfinished" />
+            <translation>Resposta ao degrau de cada eixo contra a envoltória da especificação</translation>
         </message>
         <message>
             <source>&amp;XY contour</source>
-            <translation type="unfinished" />
+            <translation>Contorno &amp;XY</translation>
         </message>
         <message>
             <source>error × </source>
-            <translation type="unfinished" />
+            <translation>erro × </translation>
         </message>
         <message>
             <source>Contour error magnification</source>
-            <translation type="unfinished" />
+            <translation>Ampliação do erro de contorno</translation>
         </message>
         <message>
             <source>Magnification of the contour error in the XY plot (as a ballbar plot)</source>
-            <translation type="unfinished" />
+            <translation>Ampliação do erro de contorno no gráfico XY (como em um gráfico de ballbar)</translation>
         </message>
         <message>
             <source>&amp;Design space</source>
-            <translation type="unfinished" />
+            <translation>&amp;Espaço de projeto</translation>
         </message>
         <message>
             <source>R&amp;obustness</source>
-            <translation type="unfinished" />
+            <translation>R&amp;obustez</translation>
         </message>
         <message>
             <source>Metrics</source>
-            <translation type="unfinished" />
+            <translation>Métricas</translation>
         </message>
         <message>
             <source>Equations</source>
-            <translation type="unfinished" />
+            <translation>Equações</translation>
         </message>
         <message>
             <source>Trajectory</source>
-            <translation type="unfinished" />
+            <translation>Trajetória</translation>
         </message>
         <message>
             <source>Axis %1</source>
-            <translation type="unfinished" />
+            <translation>Eixo %1</translation>
         </message>
         <message>
             <source>Axis</source>
-            <translation type="unfinished" />
+            <translation>Eixo</translation>
         </message>
         <message>
             <source>Design</source>
-            <translation type="unfinished" />
+            <translation>Projeto</translation>
         </message>
         <message>
             <source>Design method</source>
-            <translation type="unfinished" />
+            <translation>Método de projeto</translation>
         </message>
         <message>
             <source>Guillemin–Truxal PI (continuous)</source>
-            <translation type="unfinished" />
+            <translation>PI de Guillemin–Truxal (contínuo)</translation>
         </message>
         <message>
             <source>Pole placement + ZPETC (discrete)</source>
-            <translation type="unfinished" />
+            <translation>Alocação de polos + ZPETC (discreto)</translation>
         </message>
         <message>
             <source>ω&amp;n</source>
-            <translation type="unfinished" />
+            <translation>ω&amp;n</translation>
         </message>
         <message>
             <source>rad/s</source>
-            <translation type="unfinished" />
+            <translation>rad/s</translation>
         </message>
         <message>
             <source>k&amp;p</source>
-            <translation type="unfinished" />
+            <translation>k&amp;p</translation>
         </message>
         <message>
             <source>V/m</source>
-            <translation type="unfinished" />
+            <translation>V/m</translation>
         </message>
         <message>
             <source>Axis %1 now uses %2; Edit › Undo switches back</source>
-            <translation type="unfinished" />
+            <translation>O eixo %1 agora usa %2; Editar › Desfazer volta atrás</translation>
         </message>
         <message>
             <source>Axis %1 now uses pole placement on Patrick, Ishak and Adnan's ARX model (the pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back</source>
-            <translation type="unfinished" />
+            <translation>O eixo %1 agora usa alocação de polos no modelo ARX de Patrick, Ishak e Adnan (a planta da alocação de polos, não a de Guillemin–Truxal); Editar › Desfazer volta atrás</translation>
         </message>
         <message>
             <source>Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back</source>
-            <translation type="unfinished" />
+            <translation>O eixo %1 agora usa alocação de polos em seu modelo ARX; Editar › Desfazer volta atrás</translation>
         </message>
         <message>
             <source>Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back</source>
-            <translation type="unfinished" />
+            <translation>O eixo %1 agora usa o PI de Guillemin–Truxal em sua planta contínua; Editar › Desfazer volta atrás</translation>
         </message>
         <message>
             <source>Actuator and digital controller</source>
-            <translation type="unfinished" />
+            <translation>Atuador e controlador digital</translation>
         </message>
         <message>
             <source>|u| limit (V)</source>
-            <translation type="unfinished" />
+            <translation>Limite de |u| (V)</translation>
         </message>
         <message>
             <source>Sample time of the digital PI in the exports</source>
-            <translation type="unfinished" />
+            <translation>Período de amostragem do PI digital nas exportações</translation>
         </message>
         <message>
             <source>Tustin</source>
-            <translation type="unfinished" />
+            <translation>Tustin</translation>
         </message>
         <message>
             <source>backward Euler</source>
-            <translation type="unfinished" />
+            <translation>Euler regressivo</translation>
         </message>
         <message>
             <source>PI discretization</source>
-            <translation type="unfinished" />
+            <translation>Discretização do PI</translation>
         </message>
         <message>
             <source>How the PI is discretized at the controller sample time</source>
-            <translation type="unfinished" />
+            <translation>Como o PI é discretizado no período de amostragem do controlador</translation>
         </message>
         <message>
             <source>Controller Ts (s)</source>
-            <translation type="unfinished" />
+            <translation>Ts do controlador (s)</translation>
         </message>
         <message>
             <source>Digital implementation settings</source>
-            <translation type="unfinished" />
+            <translation>Configurações da implementação digital</translation>
         </message>
         <message>
             <source>Delay, encoder, DAC and anti-windup of the digital controller</source>
-            <translation type="unfinished" />
+            <translation>Atraso, encoder, DAC e anti-windup do controlador digital</translation>
         </message>
         <message>
             <source>Load preset %1</source>
-            <translation type="unfinished" />
+            <translation>Carregar predefinição %1</translation>
         </message>
         <message>
             <source>&amp;File</source>
-            <translation type="unfinished" />
+            <translation>&amp;Arquivo</translation>
         </message>
         <message>
             <source>&amp;Quit</source>
-            <translation type="unfinished" />
+            <translation>&amp;Sair</translation>
         </message>
         <message>
             <source>&amp;Edit</source>
-            <translation type="unfinished" />
+            <translation>&amp;Editar</translation>
         </message>
         <message>
             <source>&amp;Undo</source>
-            <translation type="unfinished" />
+            <translation>&amp;Desfazer</translation>
         </message>
         <message>
             <source>&amp;Redo</source>
-            <translation type="unfinished" />
+            <translation>&amp;Refazer</translation>
         </message>
         <message>
             <source>&amp;Design</source>
-            <translation type="unfinished" />
+            <translation>&amp;Projeto</translation>
         </message>
         <message>
             <source>&amp;Store snapshot...</source>
-            <translation type="unfinished" />
+            <translation>&amp;Guardar instantâneo...</translation>
         </message>
         <message>
             <source>Ctrl+T</source>
-            <translation type="unfinished" />
+            <translation>Ctrl+T</translation>
         </message>
         <message>
             <source>Store snapshot</source>
-            <translation type="unfinished" />
+            <translation>Guardar instantâneo</translation>
         </message>
         <message>
             <source>Name of the snapshot:</source>
-            <translation type="unfinished" />
+            <translation>Nome do instantâneo:</translation>
         </message>
         <message>
             <source>design %1</source>
-            <translation type="unfinished" />
+            <translation>projeto %1</translation>
         </message>
         <message>
             <source>&amp;Compare designs...</source>
-            <translation type="unfinished" />
+            <translation>&amp;Comparar projetos...</translation>
         </message>
         <message>
             <source>&amp;Identify from data...</source>
-            <translation type="unfinished" />
+            <translation>&amp;Identificar a partir de dados...</translation>
         </message>
         <message>
             <source>F&amp;riction curve from a jog log...</source>
-            <translation type="unfinished" />
+            <translation>Curva de a&amp;trito de um registro de jog...</translation>
         </message>
         <message>
             <source>Add &amp;feedforward from the model</source>
-            <translation type="unfinished" />
+            <translation>Adicionar pré-&amp;alimentação do modelo</translation>
         </message>
         <message>
             <source>Feedforward of %1 from the model</source>
-            <translation type="unfinished" />
+            <translation>Pré-alimentação de %1 a partir do modelo</translation>
         </message>
         <message>
             <source>No feedforward from the model</source>
-            <translation type="unfinished" />
+            <translation>Sem pré-alimentação a partir do modelo</translation>
         </message>
         <message>
             <source>The plant's exact inverse as FF1, FF2, FF3: a Guillemin–Truxal axis becomes the same PI in LinuxCNC's units on the PID + feedforward method</source>
-            <translation type="unfinished" />
+            <translation>A inversa exata da planta como FF1, FF2, FF3: um eixo Guillemin–Truxal passa a ser o mesmo PI nas unidades do LinuxCNC no método PID + pré-alimentação</translation>
         </message>
         <message>
             <source>&amp;Tune the PID...</source>
-            <translation type="unfinished" />
+            <translation>&amp;Sintonizar o PID...</translation>
         </message>
         <message>
             <source>PI or PID gains from a crossover and phase margin, or from a simulated relay experiment (PID + feedforward axes)</source>
-            <translation type="unfinished" />
+            <translation>Ganhos PI ou PID a partir de uma frequência de cruzamento e margem de fase, ou de um ensaio de relé simulado (eixos PID + pré-alimentação)</translation>
         </message>
         <message>
             <source>&amp;Overlay snapshot</source>
-            <translation type="unfinished" />
+            <translation>S&amp;obrepor instantâneo</translation>
         </message>
         <message>
             <source>&amp;View</source>
-            <translation type="unfinished" />
+            <translation>E&amp;xibir</translation>
         </message>
         <message>
             <source>Show the &amp;digital implementation</source>
-            <translation type="unfinished" />
+            <translation>Mostrar a implementação &amp;digital</translation>
         </message>
         <message>
             <source>Overlay the loop as the firmware runs it on the time plots</source>
-            <translation type="unfinished" />
+            <translation>Sobrepor a malha como o firmware a executa nos gráficos no tempo</translation>
         </message>
         <message>
             <source>Pole-zero map of the digital loop (&amp;z-plane)</source>
-            <translation type="unfinished" />
+            <translation>Mapa de polos e zeros da malha digital (plano &amp;z)</translation>
         </message>
         <message>
             <source>&amp;Reset plot views</source>
-            <translation type="unfinished" />
+            <translation>&amp;Restaurar as vistas dos gráficos</translation>
         </message>
         <message>
             <source>Ctrl+0</source>
-            <translation type="unfinished" />
+            <translation>Ctrl+0</translation>
         </message>
         <message>
             <source>&amp;Help</source>
-            <translation type="unfinished" />
+            <translation>Aj&amp;uda</translation>
         </message>
         <message>
             <source>&amp;About XY Tune</source>
-            <translation type="unfinished" />
+            <translation>&amp;Sobre o XY Tune</translation>
         </message>
         <message>
             <source>About XY Tune</source>
-            <translation type="unfinished" />
+            <translation>Sobre o XY Tune</translation>
         </message>
         <message>
             <source>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Tuning workbench for XY coordinate-table position controllers.&lt;br&gt;GPL-3.0-or-later.</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Bancada de sintonia de controladores de posição de mesas de coordenadas XY.&lt;br&gt;GPL-3.0-or-later.</translation>
         </message>
         <message>
             <source>On its lines the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
-            <translation type="unfinished" />
+            <translation>Em suas linhas a malha acoplada é estável: raio espectral %1 no pior caso (direção %2°)</translation>
         </message>
         <message>
             <source>Frozen at each direction the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
-            <translation type="unfinished" />
+            <translation>Congelada em cada direção, a malha acoplada é estável: raio espectral %1 no pior caso (direção %2°)</translation>
         </message>
         <message>
             <source>, beside a pole at z = 1 the contour never sees (the coupling's integral and the axes' integrators sharing a constant voltage)</source>
-            <translation type="unfinished" />
+            <translation>, além de um polo em z = 1 que o contorno nunca vê (a integral do acoplamento e os integradores dos eixos dividindo uma tensão constante)</translation>
         </message>
         <message>
             <source>; disk margin %1: ±%2 dB, ±%3°</source>
-            <translation type="unfinished" />
+            <translation>; margem de disco %1: ±%2 dB, ±%3°</translation>
         </message>
         <message>
             <source>; at the %1 input: phase margin %2°</source>
-            <translation type="unfinished" />
+            <translation>; na entrada %1: margem de fase %2°</translation>
         </message>
         <message>
             <source>Contour error max %1 mm (independent axes %2 mm).</source>
-            <translation type="unfinished" />
+            <translation>Erro de contorno máx %1 mm (eixos independentes %2 mm).</translation>
         </message>
         <message>
             <source>Contour error max %1 mm (independent axes %2 mm). </source>
-            <translation type="unfinished" />
+            <translation>Erro de contorno máx %1 mm (eixos independentes %2 mm). </translation>
         </message>
         <message>
             <source>%1: %2</source>
@@ -2678,106 +2678,106 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>clamp</source>
-            <translation type="unfinished" />
+            <translation>grampeamento</translation>
         </message>
         <message>
             <source>back-calc.</source>
-            <translation type="unfinished" />
+            <translation>retrocálc.</translation>
         </message>
         <message>
             <source>no anti-windup</source>
-            <translation type="unfinished" />
+            <translation>sem anti-windup</translation>
         </message>
         <message>
             <source>Implementation: %1, %2%3</source>
-            <translation type="unfinished" />
+            <translation>Implementação: %1, %2%3</translation>
         </message>
         <message>
             <source>quantized</source>
-            <translation type="unfinished" />
+            <translation>quantizada</translation>
         </message>
         <message>
             <source>ideal</source>
-            <translation type="unfinished" />
+            <translation>ideal</translation>
         </message>
         <message>
             <source>, delay %1</source>
-            <translation type="unfinished" />
+            <translation>, atraso %1</translation>
         </message>
         <message>
             <source>Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.</source>
-            <translation type="unfinished" />
+            <translation>Encoder %1, DAC %2, anti-windup %3, atraso de cálculo %4 amostra(s). Clique para editar.</translation>
         </message>
         <message>
             <source>%1 mm/count</source>
-            <translation type="unfinished" />
+            <translation>%1 mm/contagem</translation>
         </message>
         <message>
             <source>%1 bits</source>
-            <translation type="unfinished" />
+            <translation>%1 bits</translation>
         </message>
         <message>
             <source>%1: invalid (%2)  </source>
-            <translation type="unfinished" />
+            <translation>%1: inválido (%2)  </translation>
         </message>
         <message>
             <source>%1: UNSTABLE  </source>
-            <translation type="unfinished" />
+            <translation>%1: INSTÁVEL  </translation>
         </message>
         <message>
             <source>%1: stable  </source>
-            <translation type="unfinished" />
+            <translation>%1: estável  </translation>
         </message>
         <message>
             <source>| updated in %1 ms</source>
-            <translation type="unfinished" />
+            <translation>| atualizado em %1 ms</translation>
         </message>
         <message>
             <source>None</source>
-            <translation type="unfinished" />
+            <translation>Nenhum</translation>
         </message>
         <message>
             <source>%1[*] — XY Tune</source>
-            <translation type="unfinished" />
+            <translation>%1[*] — XY Tune</translation>
         </message>
         <message>
             <source>untitled</source>
-            <translation type="unfinished" />
+            <translation>sem título</translation>
         </message>
         <message>
             <source>&amp;Language</source>
-            <translation type="unfinished" />
+            <translation>&amp;Idioma</translation>
         </message>
         <message>
             <source>&amp;System language</source>
-            <translation type="unfinished" />
+            <translation>Idioma do &amp;sistema</translation>
         </message>
         <message>
             <source>Language</source>
-            <translation type="unfinished" />
+            <translation>Idioma</translation>
         </message>
         <message>
             <source>The language changes when XY Tune is started again.</source>
-            <translation type="unfinished" />
+            <translation>O idioma muda quando o XY Tune for iniciado novamente.</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::MethodParameterEditor</name>
         <message>
             <source>This method has no settings.</source>
-            <translation type="unfinished" />
+            <translation>Este método não tem configurações.</translation>
         </message>
         <message>
             <source>%1 (%2 .. %3 %4)</source>
-            <translation type="unfinished" />
+            <translation>%1 (%2 .. %3 %4)</translation>
         </message>
         <message>
             <source>%1 (%2)</source>
-            <translation type="unfinished" />
+            <translation>%1 (%2)</translation>
         </message>
         <message>
             <source>Set %1 of %2 to %3</source>
-            <translation type="unfinished" />
+            <translation>Definir %1 de %2 como %3</translation>
         </message>
     </context>
     <context>
@@ -2792,151 +2792,151 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>spec</source>
-            <translation type="unfinished" />
+            <translation>espec.</translation>
         </message>
         <message>
             <source>RMSE (mm)</source>
-            <translation type="unfinished" />
+            <translation>RMSE (mm)</translation>
         </message>
         <message>
             <source>max |e| (mm)</source>
-            <translation type="unfinished" />
+            <translation>máx |e| (mm)</translation>
         </message>
         <message>
             <source>max |e| (%)</source>
-            <translation type="unfinished" />
+            <translation>máx |e| (%)</translation>
         </message>
         <message>
             <source>max |u| (V)</source>
-            <translation type="unfinished" />
+            <translation>máx |u| (V)</translation>
         </message>
         <message>
             <source>saturated (s)</source>
-            <translation type="unfinished" />
+            <translation>saturado (s)</translation>
         </message>
         <message>
             <source>ITAE (mm·s²)</source>
-            <translation type="unfinished" />
+            <translation>ITAE (mm·s²)</translation>
         </message>
         <message>
             <source>ZPETC gain (%)</source>
-            <translation type="unfinished" />
+            <translation>ganho do ZPETC (%)</translation>
         </message>
         <message>
             <source>settle time (s)</source>
-            <translation type="unfinished" />
+            <translation>tempo de acomodação (s)</translation>
         </message>
         <message>
             <source>final e (mm)</source>
-            <translation type="unfinished" />
+            <translation>e final (mm)</translation>
         </message>
         <message>
             <source>overrun (mm)</source>
-            <translation type="unfinished" />
+            <translation>ultrapassagem (mm)</translation>
         </message>
         <message>
             <source>settling 2 % (s)</source>
-            <translation type="unfinished" />
+            <translation>acomodação 2 % (s)</translation>
         </message>
         <message>
             <source>overshoot (%)</source>
-            <translation type="unfinished" />
+            <translation>sobressinal (%)</translation>
         </message>
         <message>
             <source>min ζ (z-plane)</source>
-            <translation type="unfinished" />
+            <translation>ζ mín (plano z)</translation>
         </message>
         <message>
             <source>gain margin (dB)</source>
-            <translation type="unfinished" />
+            <translation>margem de ganho (dB)</translation>
         </message>
         <message>
             <source>phase margin (°)</source>
-            <translation type="unfinished" />
+            <translation>margem de fase (°)</translation>
         </message>
         <message>
             <source>delay margin (s)</source>
-            <translation type="unfinished" />
+            <translation>margem de atraso (s)</translation>
         </message>
         <message>
             <source>Ms = max |S|</source>
-            <translation type="unfinished" />
+            <translation>Ms = máx |S|</translation>
         </message>
         <message>
             <source>RMSE improvement of the ZPETC feedforward over the loop alone</source>
-            <translation type="unfinished" />
+            <translation>Melhora do RMSE da pré-alimentação ZPETC em relação à malha sozinha</translation>
         </message>
         <message>
             <source>integral of t·|e(t)| over the run</source>
-            <translation type="unfinished" />
+            <translation>integral de t·|e(t)| ao longo da simulação</translation>
         </message>
         <message>
             <source>From the end of the move (tf) until |e| stays inside the in-position window</source>
-            <translation type="unfinished" />
+            <translation>Do fim do movimento (tf) até |e| ficar dentro da janela de posição</translation>
         </message>
         <message>
             <source>How far the axis went beyond the target, in the direction of travel</source>
-            <translation type="unfinished" />
+            <translation>Quanto o eixo passou do alvo, no sentido do movimento</translation>
         </message>
         <message>
             <source>How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never</source>
-            <translation type="unfinished" />
+            <translation>Quanto o ganho de malha pode crescer (dB) antes de a malha fechada ficar instável; ∞: nunca</translation>
         </message>
         <message>
             <source>Phase lag that would bring L to −1 at the gain crossover</source>
-            <translation type="unfinished" />
+            <translation>Atraso de fase que levaria L a −1 na frequência de cruzamento de ganho</translation>
         </message>
         <message>
             <source>Extra delay the loop tolerates: phase margin / crossover frequency</source>
-            <translation type="unfinished" />
+            <translation>Atraso adicional que a malha tolera: margem de fase / frequência de cruzamento</translation>
         </message>
         <message>
             <source>1 / (closest distance of L to −1): 1.2–2 is a usual target</source>
-            <translation type="unfinished" />
+            <translation>1 / (menor distância de L a −1): 1.2–2 é um alvo usual</translation>
         </message>
         <message>
             <source>max |e| as a percentage of the travel</source>
-            <translation type="unfinished" />
+            <translation>máx |e| como porcentagem do curso</translation>
         </message>
         <message>
             <source>Least damping ratio of the digital closed loop's poles (s = ln z / Ts); the design's in the tooltip</source>
-            <translation type="unfinished" />
+            <translation>Menor coeficiente de amortecimento dos polos da malha fechada digital (s = ln z / Ts); o do projeto na dica</translation>
         </message>
         <message>
             <source>Tracking the trajectory</source>
-            <translation type="unfinished" />
+            <translation>Seguimento da trajetória</translation>
         </message>
         <message>
             <source>Move and settle (point-to-point)</source>
-            <translation type="unfinished" />
+            <translation>Mover e acomodar (ponto a ponto)</translation>
         </message>
         <message>
             <source>Unit step, as each axis runs</source>
-            <translation type="unfinished" />
+            <translation>Degrau unitário, como cada eixo o executa</translation>
         </message>
         <message>
             <source>Digital implementation</source>
-            <translation type="unfinished" />
+            <translation>Implementação digital</translation>
         </message>
         <message>
             <source>Loop margins (open loop L)</source>
-            <translation type="unfinished" />
+            <translation>Margens da malha (malha aberta L)</translation>
         </message>
         <message>
             <source>Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the step of the feedback loop Kf·B/T alone.</source>
-            <translation type="unfinished" />
+            <translation>Guillemin–Truxal: o degrau de G_R(s), a malha fechada contínua. Alocação de polos: o degrau pré-visto pela pré-alimentação ZPETC e pela malha quando o ZPETC está ligado; senão, o degrau só da malha de realimentação Kf·B/T.</translation>
         </message>
         <message>
             <source>The controller at its sample time with the hold, the encoder and DAC quantization, the limit, the anti-windup and the delay of the Digital implementation settings. An amber figure differs from the design's above by more than 5 %.</source>
-            <translation type="unfinished" />
+            <translation>O controlador no seu período de amostragem com o retentor, a quantização do encoder e do DAC, o limite, o anti-windup e o atraso das configurações da implementação digital. Um valor em âmbar difere do projeto acima em mais de 5 %.</translation>
         </message>
         <message>
             <source>Metrics</source>
-            <translation type="unfinished" />
+            <translation>Métricas</translation>
         </message>
         <message>
             <source>Why the specification fails</source>
-            <translation type="unfinished" />
+            <translation>Por que a especificação falha</translation>
         </message>
         <message>
             <source>Relax the limits</source>
@@ -2944,23 +2944,23 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Contour error figures</source>
-            <translation type="unfinished" />
+            <translation>Valores do erro de contorno</translation>
         </message>
         <message>
             <source>Warnings</source>
-            <translation type="unfinished" />
+            <translation>Avisos</translation>
         </message>
         <message>
             <source>Maximum settling time (2 % band) of the unit step</source>
-            <translation type="unfinished" />
+            <translation>Tempo de acomodação máximo (faixa de 2 %) do degrau unitário</translation>
         </message>
         <message>
             <source>Maximum |e| as a percentage of the travel</source>
-            <translation type="unfinished" />
+            <translation>|e| máximo como porcentagem do curso</translation>
         </message>
         <message>
             <source>Maximum settle time after the end (tf) of a point-to-point move</source>
-            <translation type="unfinished" />
+            <translation>Tempo de acomodação máximo após o fim (tf) de um movimento ponto a ponto</translation>
         </message>
         <message>
             <source>In-position window of a point-to-point move: |e| ≤ this (mm)</source>
@@ -3398,7 +3398,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Feedforward of %1 from the model</source>
-            <translation type="unfinished" />
+            <translation>Pré-alimentação de %1 a partir do modelo</translation>
         </message>
         <message>
             <source>r′, r″, r‴ by backward differences</source>
@@ -3946,15 +3946,15 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>RMSE (mm)</source>
-            <translation type="unfinished" />
+            <translation>RMSE (mm)</translation>
         </message>
         <message>
             <source>max |e| (mm)</source>
-            <translation type="unfinished" />
+            <translation>máx |e| (mm)</translation>
         </message>
         <message>
             <source>max |u| (V)</source>
-            <translation type="unfinished" />
+            <translation>máx |u| (V)</translation>
         </message>
         <message>
             <source>Load the worst plant pair of the contour analysis</source>
@@ -4031,7 +4031,7 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>RMSE (mm)</source>
-            <translation type="unfinished" />
+            <translation>RMSE (mm)</translation>
         </message>
         <message>
             <source>with ZPETC</source>
@@ -4102,7 +4102,7 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>XY Tune</source>
-            <translation type="unfinished" />
+            <translation>XY Tune</translation>
         </message>
         <message>
             <source>The design has unsaved changes. Save them first?</source>
