@@ -2964,55 +2964,55 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>In-position window of a point-to-point move: |e| ≤ this (mm)</source>
-            <translation type="unfinished" />
+            <translation>Janela de posição de um movimento ponto a ponto: |e| ≤ este valor (mm)</translation>
         </message>
         <message>
             <source>Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states none). 45–60° is the usual rule.</source>
-            <translation type="unfinished" />
+            <translation>Margem de fase mínima (MF, graus) da malha; 0 = nenhuma (o artigo não define). 45–60° é a regra usual.</translation>
         </message>
         <message>
             <source>Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule.</source>
-            <translation type="unfinished" />
+            <translation>Margem de ganho mínima (MG, dB) da malha; 0 = nenhuma. 6 dB é a regra usual.</translation>
         </message>
         <message>
             <source>Every Guillemin–Truxal design overshoots a little on a step (its reference model is type 2), so 0 % fails them all.</source>
-            <translation type="unfinished" />
+            <translation>Todo projeto Guillemin–Truxal tem um pequeno sobressinal ao degrau (seu modelo de referência é do tipo 2), então 0 % reprova todos.</translation>
         </message>
         <message>
             <source>&lt;b&gt;Specification&lt;/b&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Especificação&lt;/b&gt;</translation>
         </message>
         <message>
             <source>The limits of the spec column above: each figure is judged against them</source>
-            <translation type="unfinished" />
+            <translation>Os limites da coluna espec. acima: cada valor é avaliado em relação a eles</translation>
         </message>
         <message>
             <source>settling ≤ s</source>
-            <translation type="unfinished" />
+            <translation>acomodação ≤ s</translation>
         </message>
         <message>
             <source>overshoot ≤ %</source>
-            <translation type="unfinished" />
+            <translation>sobressinal ≤ %</translation>
         </message>
         <message>
             <source>max |e| ≤ %</source>
-            <translation type="unfinished" />
+            <translation>máx |e| ≤ %</translation>
         </message>
         <message>
             <source>settle ≤ s</source>
-            <translation type="unfinished" />
+            <translation>acomodação ≤ s</translation>
         </message>
         <message>
             <source>window mm</source>
-            <translation type="unfinished" />
+            <translation>janela mm</translation>
         </message>
         <message>
             <source>PM ≥ °</source>
-            <translation type="unfinished" />
+            <translation>MF ≥ °</translation>
         </message>
         <message>
             <source>GM ≥ dB</source>
-            <translation type="unfinished" />
+            <translation>MG ≥ dB</translation>
         </message>
         <message>
             <source>—</source>
@@ -3024,63 +3024,63 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>the closed loop is unstable: not a robustness measure</source>
-            <translation type="unfinished" />
+            <translation>a malha fechada é instável: não é uma medida de robustez</translation>
         </message>
         <message>
             <source>at %1 rad/s (factor %2)</source>
-            <translation type="unfinished" />
+            <translation>em %1 rad/s (fator %2)</translation>
         </message>
         <message>
             <source>at %1 rad/s</source>
-            <translation type="unfinished" />
+            <translation>em %1 rad/s</translation>
         </message>
         <message>
             <source>✓ both axes meet it</source>
-            <translation type="unfinished" />
+            <translation>✓ os dois eixos a atendem</translation>
         </message>
         <message>
             <source>✗ fails: hover for why</source>
-            <translation type="unfinished" />
+            <translation>✗ falha: passe o mouse para ver por quê</translation>
         </message>
         <message>
             <source>Set the limits to what this design reaches: %1 (one undo step)</source>
-            <translation type="unfinished" />
+            <translation>Ajustar os limites ao que este projeto alcança: %1 (um passo de desfazer)</translation>
         </message>
         <message>
             <source>, </source>
-            <translation type="unfinished" />
+            <translation>, </translation>
         </message>
         <message>
             <source>The design meets the specification</source>
-            <translation type="unfinished" />
+            <translation>O projeto atende à especificação</translation>
         </message>
         <message>
             <source>No limit makes this design pass (see why): change the design</source>
-            <translation type="unfinished" />
+            <translation>Nenhum limite faz este projeto passar (veja por quê): mude o projeto</translation>
         </message>
         <message>
             <source>Contour error (XY): max %1, RMS %2 mm</source>
-            <translation type="unfinished" />
+            <translation>Erro de contorno (XY): máx %1, RMS %2 mm</translation>
         </message>
         <message>
             <source>The program's warnings are shown on the XY contour view</source>
-            <translation type="unfinished" />
+            <translation>Os avisos do programa são mostrados na vista Contorno XY</translation>
         </message>
         <message>
             <source>CW</source>
-            <translation type="unfinished" />
+            <translation>H</translation>
         </message>
         <message>
             <source>CCW</source>
-            <translation type="unfinished" />
+            <translation>AH</translation>
         </message>
         <message>
             <source>ISO 230-4: G %1 %2, %3 %4, F %5/%6</source>
-            <translation type="unfinished" />
+            <translation>ISO 230-4: G %1 %2, %3 %4, F %5/%6</translation>
         </message>
         <message>
             <source>ISO 230-4: G %1, F %2/%3</source>
-            <translation type="unfinished" />
+            <translation>ISO 230-4: G %1, F %2/%3</translation>
         </message>
         <message>
             <source>, H %1</source>
@@ -3088,20 +3088,21 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>%1° %2</source>
-            <translation type="unfinished" />
+            <translation>%1° %2</translation>
         </message>
         <message>
             <source>, spikes ≤ %1</source>
-            <translation type="unfinished" />
+            <translation>, picos ≤ %1</translation>
         </message>
         <message>
             <source>Reversal spikes (mm): %1</source>
-            <translation type="unfinished" />
+            <translation>Picos de reversão (mm): %1</translation>
         </message>
         <message>
             <source>
 Without the friction compensation: G %1 mm</source>
-            <translation type="unfinished" />
+            <translation>
+Sem a compensação de atrito: G %1 mm</translation>
         </message>
         <message>
             <source> mm</source>
@@ -3109,11 +3110,11 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>program: %1</source>
-            <translation type="unfinished" />
+            <translation>programa: %1</translation>
         </message>
         <message>
             <source>≤ %1</source>
-            <translation type="unfinished" />
+            <translation>≤ %1</translation>
         </message>
         <message>
             <source>no</source>
@@ -3121,7 +3122,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>|e| ≤ %1</source>
-            <translation type="unfinished" />
+            <translation>|e| ≤ %1</translation>
         </message>
         <message>
             <source>≥ %1</source>
@@ -3129,7 +3130,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>%1: no design (%2: %3)</source>
-            <translation type="unfinished" />
+            <translation>%1: sem projeto (%2: %3)</translation>
         </message>
         <message>
             <source>%1: %2</source>
@@ -3137,11 +3138,11 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>&gt; %1</source>
-            <translation type="unfinished" />
+            <translation>&gt; %1</translation>
         </message>
         <message>
             <source>%1*</source>
-            <translation type="unfinished" />
+            <translation>%1*</translation>
         </message>
         <message>
             <source>unstable</source>
@@ -3149,43 +3150,43 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>meets the specification, as designed and as implemented</source>
-            <translation type="unfinished" />
+            <translation>atende à especificação, como projetado e como implementado</translation>
         </message>
         <message>
             <source>meets the specification</source>
-            <translation type="unfinished" />
+            <translation>atende à especificação</translation>
         </message>
         <message>
             <source>fails the specification</source>
-            <translation type="unfinished" />
+            <translation>não atende à especificação</translation>
         </message>
         <message>
             <source> digital</source>
-            <translation type="unfinished" />
+            <translation> digital</translation>
         </message>
         <message>
             <source>the design meets the specification here, its digital implementation (Ts, quantization, ±umax, delay) does not: this is the implementation's figure</source>
-            <translation type="unfinished" />
+            <translation>o projeto atende à especificação aqui, sua implementação digital (Ts, quantização, ±umax, atraso) não: este é o valor da implementação</translation>
         </message>
         <message>
             <source>not settled into ±%1 mm by the end of the run, %2 s after tf; %3</source>
-            <translation type="unfinished" />
+            <translation>não acomodado em ±%1 mm até o fim da simulação, %2 s após tf; %3</translation>
         </message>
         <message>
             <source>design %1, digital %2%3</source>
-            <translation type="unfinished" />
+            <translation>projeto %1, digital %2%3</translation>
         </message>
         <message>
             <source> (differs by more than 5 %)</source>
-            <translation type="unfinished" />
+            <translation> (difere em mais de 5 %)</translation>
         </message>
         <message>
             <source>digital loop %1, design %2 at Ts = %3 s</source>
-            <translation type="unfinished" />
+            <translation>malha digital %1, projeto %2 com Ts = %3 s</translation>
         </message>
         <message>
             <source>* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated without a limit; |u| would be clipped this long</source>
-            <translation type="unfinished" />
+            <translation>* não aplicado: a malha discreta de Patrick, Ishak e Adnan é simulada sem limite; |u| seria limitado por este tempo</translation>
         </message>
     </context>
     <context>
@@ -3199,70 +3200,70 @@ Without the friction compensation: G %1 mm</source>
         <name>xyt::ui::NyquistPlot</name>
         <message>
             <source>Nyquist diagram</source>
-            <translation type="unfinished" />
+            <translation>Diagrama de Nyquist</translation>
         </message>
         <message>
             <source>Re L</source>
-            <translation type="unfinished" />
+            <translation>Re L</translation>
         </message>
         <message>
             <source>Im L</source>
-            <translation type="unfinished" />
+            <translation>Im L</translation>
         </message>
         <message>
             <source>|L| = 1</source>
-            <translation type="unfinished" />
+            <translation>|L| = 1</translation>
         </message>
         <message>
             <source>distance 1/Ms to −1</source>
-            <translation type="unfinished" />
+            <translation>distância 1/Ms até −1</translation>
         </message>
         <message>
             <source>L(jω), ω ≥ 0</source>
-            <translation type="unfinished" />
+            <translation>L(jω), ω ≥ 0</translation>
         </message>
         <message>
             <source>ω &lt; 0 (mirror)</source>
-            <translation type="unfinished" />
+            <translation>ω &lt; 0 (espelho)</translation>
         </message>
         <message>
             <source>−1</source>
-            <translation type="unfinished" />
+            <translation>−1</translation>
         </message>
         <message>
             <source>the curve passes through −1: a closed-loop pole on the stability boundary</source>
-            <translation type="unfinished" />
+            <translation>a curva passa por −1: um polo de malha fechada no limite de estabilidade</translation>
         </message>
         <message>
             <source>closed loop stable</source>
-            <translation type="unfinished" />
+            <translation>malha fechada estável</translation>
         </message>
         <message>
             <source>%1 closed-loop pole(s) unstable</source>
-            <translation type="unfinished" />
+            <translation>%1 polo(s) de malha fechada instável(is)</translation>
         </message>
         <message>
             <source>Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop poles → Z = N + P = %3: %4   (Ms = %5)</source>
-            <translation type="unfinished" />
+            <translation>Nyquist: N = %1 envolvimentos de −1 no sentido horário, P = %2 polos de malha aberta instáveis → Z = N + P = %3: %4   (Ms = %5)</translation>
         </message>
         <message>
             <source>∞</source>
-            <translation type="unfinished" />
+            <translation>∞</translation>
         </message>
         <message>
             <source>n/a, the closed loop is unstable</source>
-            <translation type="unfinished" />
+            <translation>n/d, a malha fechada é instável</translation>
         </message>
         <message>
             <source>poles on the boundary are passed on small indentations: the curve closes at infinity there</source>
-            <translation type="unfinished" />
+            <translation>polos no limite são contornados por pequenas indentações: a curva se fecha no infinito ali</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::NyquistView</name>
         <message>
             <source>Nyquist diagram of %1</source>
-            <translation type="unfinished" />
+            <translation>Diagrama de Nyquist de %1</translation>
         </message>
         <message>
             <source>No frequency analysis: %1</source>
@@ -3270,131 +3271,131 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Nyquist diagram of %1 (open loop L)</source>
-            <translation type="unfinished" />
+            <translation>Diagrama de Nyquist de %1 (malha aberta L)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::ParameterLocusPlot</name>
         <message>
             <source>real</source>
-            <translation type="unfinished" />
+            <translation>real</translation>
         </message>
         <message>
             <source>imaginary</source>
-            <translation type="unfinished" />
+            <translation>imaginário</translation>
         </message>
         <message>
             <source>current design</source>
-            <translation type="unfinished" />
+            <translation>projeto atual</translation>
         </message>
         <message>
             <source>start of the sweep</source>
-            <translation type="unfinished" />
+            <translation>início da varredura</translation>
         </message>
         <message>
             <source>stability boundary crossed</source>
-            <translation type="unfinished" />
+            <translation>limite de estabilidade cruzado</translation>
         </message>
         <message>
             <source>framed on the poles that move; one pole barely moves and may lie outside the view: %1</source>
-            <translation type="unfinished" />
+            <translation>enquadrado nos polos que se movem; um polo quase não se move e pode ficar fora da vista: %1</translation>
         </message>
         <message>
             <source>framed on the poles that move; %1 poles barely move and may lie outside the view: %2</source>
-            <translation type="unfinished" />
+            <translation>enquadrado nos polos que se movem; %1 polos quase não se movem e podem ficar fora da vista: %2</translation>
         </message>
         <message>
             <source>unstable above %1 = %2</source>
-            <translation type="unfinished" />
+            <translation>instável acima de %1 = %2</translation>
         </message>
         <message>
             <source>unstable below %1 = %2</source>
-            <translation type="unfinished" />
+            <translation>instável abaixo de %1 = %2</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::ParameterLocusView</name>
         <message>
             <source>Parameter locus of %1</source>
-            <translation type="unfinished" />
+            <translation>Lugar do parâmetro de %1</translation>
         </message>
         <message>
             <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ (pole at z = %1), placed directly by t1.</source>
-            <translation type="unfinished" />
+            <translation>O lugar do parâmetro varre ωn ou kp de um eixo Guillemin–Truxal. Este eixo usa alocação de polos: seus polos de malha fechada são as raízes de T = 1 + t1 z⁻¹ (polo em z = %1), alocados diretamente por t1.</translation>
         </message>
         <message>
             <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses %1: the root locus shows its poles against the loop gain.</source>
-            <translation type="unfinished" />
+            <translation>O lugar do parâmetro varre ωn ou kp de um eixo Guillemin–Truxal. Este eixo usa %1: o lugar das raízes mostra seus polos em função do ganho de malha.</translation>
         </message>
         <message>
             <source>Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)</source>
-            <translation type="unfinished" />
+            <translation>Polos de malha fechada com kp varrendo %1 … %2 (ωn = %3)</translation>
         </message>
         <message>
             <source>Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)</source>
-            <translation type="unfinished" />
+            <translation>Polos de malha fechada com ωn varrendo %1 … %2 rad/s (kp = %3)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::ParameterSlider</name>
         <message>
             <source>%1 (logarithmic scale)</source>
-            <translation type="unfinished" />
+            <translation>%1 (escala logarítmica)</translation>
         </message>
         <message>
             <source> value</source>
-            <translation type="unfinished" />
+            <translation> valor</translation>
         </message>
         <message>
             <source>%1: type a value (scientific notation such as 2.5e3 is accepted)</source>
-            <translation type="unfinished" />
+            <translation>%1: digite um valor (notação científica como 2.5e3 é aceita)</translation>
         </message>
         <message>
             <source>%1, beyond the slider (%2 to %3)</source>
-            <translation type="unfinished" />
+            <translation>%1, além do controle deslizante (%2 a %3)</translation>
         </message>
         <message>
             <source>%1: '%2' is not a number from %3 to %4</source>
-            <translation type="unfinished" />
+            <translation>%1: '%2' não é um número de %3 a %4</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PidFeedforwardEditor</name>
         <message>
             <source>From model</source>
-            <translation type="unfinished" />
+            <translation>Do modelo</translation>
         </message>
         <message>
             <source>D on the measurement (no kick)</source>
-            <translation type="unfinished" />
+            <translation>D na medição (sem pico)</translation>
         </message>
         <message>
             <source>&lt;b&gt;Feedforward&lt;/b&gt;, % of the model's inverse</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Pré-alimentação&lt;/b&gt;, % da inversa do modelo</translation>
         </message>
         <message>
             <source>FF1 (velocity)</source>
-            <translation type="unfinished" />
+            <translation>FF1 (velocidade)</translation>
         </message>
         <message>
             <source>FF2 (acceleration)</source>
-            <translation type="unfinished" />
+            <translation>FF2 (aceleração)</translation>
         </message>
         <message>
             <source>FF3 (jerk)</source>
-            <translation type="unfinished" />
+            <translation>FF3 (jerk)</translation>
         </message>
         <message>
             <source>The gain %1 as a percentage of the plant's exact inverse: 100 % cancels the plant's dynamics along the trajectory</source>
-            <translation type="unfinished" />
+            <translation>O ganho %1 como porcentagem da inversa exata da planta: 100 % cancela a dinâmica da planta ao longo da trajetória</translation>
         </message>
         <message>
             <source>Set %1 of %2 to %3 % of the model</source>
-            <translation type="unfinished" />
+            <translation>Definir %1 de %2 como %3 % do modelo</translation>
         </message>
         <message>
             <source>Set FF1, FF2 and FF3 to the plant's exact inverse (a2 u/k0, a1 u/k0, u/k0) and FF0 to 0</source>
-            <translation type="unfinished" />
+            <translation>Definir FF1, FF2 e FF3 como a inversa exata da planta (a2 u/k0, a1 u/k0, u/k0) e FF0 como 0</translation>
         </message>
         <message>
             <source>Feedforward of %1 from the model</source>
@@ -3402,122 +3403,122 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>r′, r″, r‴ by backward differences</source>
-            <translation type="unfinished" />
+            <translation>r′, r″, r‴ por diferenças regressivas</translation>
         </message>
         <message>
             <source>r′, r″, r‴ from the trajectory</source>
-            <translation type="unfinished" />
+            <translation>r′, r″, r‴ da trajetória</translation>
         </message>
         <message>
             <source>Where the feedforward reads the command's derivatives: backward differences of the commanded position each period (LinuxCNC's pid), or the trajectory generator's own velocity, acceleration and jerk</source>
-            <translation type="unfinished" />
+            <translation>De onde a pré-alimentação lê as derivadas do comando: diferenças regressivas da posição comandada a cada período (o pid do LinuxCNC), ou a velocidade, aceleração e jerk do próprio gerador de trajetória</translation>
         </message>
         <message>
             <source>Command derivatives</source>
-            <translation type="unfinished" />
+            <translation>Derivadas do comando</translation>
         </message>
         <message>
             <source>Take the command's derivatives of %1 from the %2</source>
-            <translation type="unfinished" />
+            <translation>Obter as derivadas do comando de %1 por %2</translation>
         </message>
         <message>
             <source>backward differences</source>
-            <translation type="unfinished" />
+            <translation>diferenças regressivas</translation>
         </message>
         <message>
             <source>trajectory generator</source>
-            <translation type="unfinished" />
+            <translation>gerador de trajetória</translation>
         </message>
         <message>
             <source>&lt;b&gt;Limits and filter&lt;/b&gt;</source>
-            <translation type="unfinished" />
+            <translation>&lt;b&gt;Limites e filtro&lt;/b&gt;</translation>
         </message>
         <message>
             <source>Differentiate the measurement of %1</source>
-            <translation type="unfinished" />
+            <translation>Derivar a medição de %1</translation>
         </message>
         <message>
             <source>Differentiate the error of %1</source>
-            <translation type="unfinished" />
+            <translation>Derivar o erro de %1</translation>
         </message>
         <message>
             <source>The plant has no usable inverse (k0 must be finite and nonzero): no feedforward from the model.</source>
-            <translation type="unfinished" />
+            <translation>A planta não tem inversa utilizável (k0 deve ser finito e não nulo): sem pré-alimentação a partir do modelo.</translation>
         </message>
         <message>
             <source>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</source>
-            <translation type="unfinished" />
+            <translation>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PidTuningDialog</name>
         <message>
             <source>Tune the PID of axis %1</source>
-            <translation type="unfinished" />
+            <translation>Sintonizar o PID do eixo %1</translation>
         </message>
         <message>
             <source>PI</source>
-            <translation type="unfinished" />
+            <translation>PI</translation>
         </message>
         <message>
             <source>PID (Ti = 4 Td)</source>
-            <translation type="unfinished" />
+            <translation>PID (Ti = 4 Td)</translation>
         </message>
         <message>
             <source>Controller structure</source>
-            <translation type="unfinished" />
+            <translation>Estrutura do controlador</translation>
         </message>
         <message>
             <source>Structure</source>
-            <translation type="unfinished" />
+            <translation>Estrutura</translation>
         </message>
         <message>
             <source>Crossover ωc (rad/s)</source>
-            <translation type="unfinished" />
+            <translation>Cruzamento ωc (rad/s)</translation>
         </message>
         <message>
             <source>Phase margin (°)</source>
-            <translation type="unfinished" />
+            <translation>Margem de fase (°)</translation>
         </message>
         <message>
             <source>Relay amplitude d (V)</source>
-            <translation type="unfinished" />
+            <translation>Amplitude do relé d (V)</translation>
         </message>
         <message>
             <source>Rule</source>
-            <translation type="unfinished" />
+            <translation>Regra</translation>
         </message>
         <message>
             <source>P (V/mm)</source>
-            <translation type="unfinished" />
+            <translation>P (V/mm)</translation>
         </message>
         <message>
             <source>I (V/(mm s))</source>
-            <translation type="unfinished" />
+            <translation>I (V/(mm s))</translation>
         </message>
         <message>
             <source>D (V s/mm)</source>
-            <translation type="unfinished" />
+            <translation>D (V s/mm)</translation>
         </message>
         <message>
             <source>ωc (rad/s)</source>
-            <translation type="unfinished" />
+            <translation>ωc (rad/s)</translation>
         </message>
         <message>
             <source>PM (°)</source>
-            <translation type="unfinished" />
+            <translation>MF (°)</translation>
         </message>
         <message>
             <source>Apply</source>
-            <translation type="unfinished" />
+            <translation>Aplicar</translation>
         </message>
         <message>
             <source>position y (mm)</source>
-            <translation type="unfinished" />
+            <translation>posição y (mm)</translation>
         </message>
         <message>
             <source>relay u (V)</source>
-            <translation type="unfinished" />
+            <translation>relé u (V)</translation>
         </message>
         <message>
             <source>time (s)</source>
@@ -3529,185 +3530,185 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>u (V)</source>
-            <translation type="unfinished" />
+            <translation>u (V)</translation>
         </message>
         <message>
             <source>Crossover and phase margin</source>
-            <translation type="unfinished" />
+            <translation>Cruzamento e margem de fase</translation>
         </message>
         <message>
             <source>Relay: Ziegler–Nichols</source>
-            <translation type="unfinished" />
+            <translation>Relé: Ziegler–Nichols</translation>
         </message>
         <message>
             <source>Relay: Tyreus–Luyben</source>
-            <translation type="unfinished" />
+            <translation>Relé: Tyreus–Luyben</translation>
         </message>
         <message>
             <source>Relay limit cycle on the model: period Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (describing function: Tu = %4 s, a = %5 mm).</source>
-            <translation type="unfinished" />
+            <translation>Ciclo-limite do relé no modelo: período Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (função descritiva: Tu = %4 s, a = %5 mm).</translation>
         </message>
         <message>
             <source>No relay experiment: %1</source>
-            <translation type="unfinished" />
+            <translation>Sem ensaio de relé: %1</translation>
         </message>
         <message>
             <source>Tune %1 by %2</source>
-            <translation type="unfinished" />
+            <translation>Sintonizar %1 por %2</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PlantEditor</name>
         <message>
             <source>custom</source>
-            <translation type="unfinished" />
+            <translation>personalizado</translation>
         </message>
         <message>
             <source>Plant preset</source>
-            <translation type="unfinished" />
+            <translation>Predefinição da planta</translation>
         </message>
         <message>
             <source>Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³</source>
-            <translation type="unfinished" />
+            <translation>Ganho k0 de G(s) = k0 / (s³ + a1 s² + a2 s), em unidades do modelo por volt·s³</translation>
         </message>
         <message>
             <source>Model output units per mm of trajectory (0.001: the model is in metres)</source>
-            <translation type="unfinished" />
+            <translation>Unidades da saída do modelo por mm de trajetória (0.001: o modelo está em metros)</translation>
         </message>
         <message>
             <source>G(s) = k0 / (s³ + a1 s² + a2 s)</source>
-            <translation type="unfinished" />
+            <translation>G(s) = k0 / (s³ + a1 s² + a2 s)</translation>
         </message>
         <message>
             <source>Preset</source>
-            <translation type="unfinished" />
+            <translation>Predefinição</translation>
         </message>
         <message>
             <source>k&amp;0</source>
-            <translation type="unfinished" />
+            <translation>k&amp;0</translation>
         </message>
         <message>
             <source>a&amp;1</source>
-            <translation type="unfinished" />
+            <translation>a&amp;1</translation>
         </message>
         <message>
             <source>a&amp;2</source>
-            <translation type="unfinished" />
+            <translation>a&amp;2</translation>
         </message>
         <message>
             <source>Model unit per mm</source>
-            <translation type="unfinished" />
+            <translation>Unidade do modelo por mm</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PoleZeroPlot</name>
         <message>
             <source>Pole-zero map</source>
-            <translation type="unfinished" />
+            <translation>Mapa de polos e zeros</translation>
         </message>
         <message>
             <source>real</source>
-            <translation type="unfinished" />
+            <translation>real</translation>
         </message>
         <message>
             <source>imaginary</source>
-            <translation type="unfinished" />
+            <translation>imaginário</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PoleZeroView</name>
         <message>
             <source>Pole-zero map of %1</source>
-            <translation type="unfinished" />
+            <translation>Mapa de polos e zeros de %1</translation>
         </message>
         <message>
             <source>Digital loop of %1 in the z-plane (Ts = %2 s)</source>
-            <translation type="unfinished" />
+            <translation>Malha digital de %1 no plano z (Ts = %2 s)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PpEditor</name>
         <message>
             <source>B(z⁻¹)/A(z⁻¹), ascending powers of z⁻¹</source>
-            <translation type="unfinished" />
+            <translation>B(z⁻¹)/A(z⁻¹), potências crescentes de z⁻¹</translation>
         </message>
         <message>
             <source>custom</source>
-            <translation type="unfinished" />
+            <translation>personalizado</translation>
         </message>
         <message>
             <source>ARX preset</source>
-            <translation type="unfinished" />
+            <translation>Predefinição ARX</translation>
         </message>
         <message>
             <source>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coefficients separated by spaces or commas</source>
-            <translation type="unfinished" />
+            <translation>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coeficientes separados por espaços ou vírgulas</translation>
         </message>
         <message>
             <source>B(z⁻¹) = 0 + b1 z⁻¹ + ...: leading zeros are the delay</source>
-            <translation type="unfinished" />
+            <translation>B(z⁻¹) = 0 + b1 z⁻¹ + ...: os zeros iniciais são o atraso</translation>
         </message>
         <message>
             <source>Desired pole t&amp;1 (T = 1 + t1 z⁻¹)</source>
-            <translation type="unfinished" />
+            <translation>Polo desejado t&amp;1 (T = 1 + t1 z⁻¹)</translation>
         </message>
         <message>
             <source>ZPETC feedforward</source>
-            <translation type="unfinished" />
+            <translation>Pré-alimentação ZPETC</translation>
         </message>
         <message>
             <source>Preset</source>
-            <translation type="unfinished" />
+            <translation>Predefinição</translation>
         </message>
         <message>
             <source>&amp;A</source>
-            <translation type="unfinished" />
+            <translation>&amp;A</translation>
         </message>
         <message>
             <source>&amp;B</source>
-            <translation type="unfinished" />
+            <translation>&amp;B</translation>
         </message>
         <message>
             <source>Ts (s)</source>
-            <translation type="unfinished" />
+            <translation>Ts (s)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::PresenterView</name>
         <message>
             <source>Axis %1 (%2)</source>
-            <translation type="unfinished" />
+            <translation>Eixo %1 (%2)</translation>
         </message>
         <message>
             <source>No design: %1: %2</source>
-            <translation type="unfinished" />
+            <translation>Sem projeto: %1: %2</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::RobustnessView</name>
         <message>
             <source>The analysis failed: %1</source>
-            <translation type="unfinished" />
+            <translation>A análise falhou: %1</translation>
         </message>
         <message>
             <source>Ranges (± %)</source>
-            <translation type="unfinished" />
+            <translation>Faixas (± %)</translation>
         </message>
         <message>
             <source>random plants, drawn uniformly within the ranges</source>
-            <translation type="unfinished" />
+            <translation>plantas aleatórias, sorteadas uniformemente dentro das faixas</translation>
         </message>
         <message>
             <source>the same seed draws the same plants</source>
-            <translation type="unfinished" />
+            <translation>a mesma semente sorteia as mesmas plantas</translation>
         </message>
         <message>
             <source>corners</source>
-            <translation type="unfinished" />
+            <translation>vértices</translation>
         </message>
         <message>
             <source>also every corner of the box of ranges (the deterministic worst-case search)</source>
-            <translation type="unfinished" />
+            <translation>também todos os vértices da caixa de faixas (a busca determinística do pior caso)</translation>
         </message>
         <message>
             <source>XY contour</source>
@@ -3715,15 +3716,15 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Analyze both axes together on the circle or G-code program: pairs of plants, the contour error they trace, its XY band. Each range applies to the parameter of that name on every axis that has one.</source>
-            <translation type="unfinished" />
+            <translation>Analisar os dois eixos juntos no círculo ou no programa G-code: pares de plantas, o erro de contorno que percorrem, sua faixa XY. Cada faixa se aplica ao parâmetro com esse nome em todo eixo que o tenha.</translation>
         </message>
         <message>
             <source>the signal whose envelope is drawn</source>
-            <translation type="unfinished" />
+            <translation>o sinal cuja envoltória é desenhada</translation>
         </message>
         <message>
             <source>the figure whose distribution is drawn</source>
-            <translation type="unfinished" />
+            <translation>o valor cuja distribuição é desenhada</translation>
         </message>
         <message>
             <source>plants</source>
@@ -3731,7 +3732,7 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>seed</source>
-            <translation type="unfinished" />
+            <translation>semente</translation>
         </message>
         <message>
             <source>Run</source>
@@ -3743,43 +3744,43 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Load worst case</source>
-            <translation type="unfinished" />
+            <translation>Carregar o pior caso</translation>
         </message>
         <message>
             <source>Make the worst plant found (largest RMSE) the session's plant (an undoable step)</source>
-            <translation type="unfinished" />
+            <translation>Tornar a pior planta encontrada (maior RMSE) a planta da sessão (um passo que pode ser desfeito)</translation>
         </message>
         <message>
             <source>Set a range for the parameters you doubt and press Run.</source>
-            <translation type="unfinished" />
+            <translation>Defina uma faixa para os parâmetros de que você duvida e clique em Executar.</translation>
         </message>
         <message>
             <source>Show</source>
-            <translation type="unfinished" />
+            <translation>Mostrar</translation>
         </message>
         <message>
             <source>contour error</source>
-            <translation type="unfinished" />
+            <translation>erro de contorno</translation>
         </message>
         <message>
             <source>max |contour e|</source>
-            <translation type="unfinished" />
+            <translation>máx |e de contorno|</translation>
         </message>
         <message>
             <source>XY band</source>
-            <translation type="unfinished" />
+            <translation>faixa XY</translation>
         </message>
         <message>
             <source>error e</source>
-            <translation type="unfinished" />
+            <translation>erro e</translation>
         </message>
         <message>
             <source>output y</source>
-            <translation type="unfinished" />
+            <translation>saída y</translation>
         </message>
         <message>
             <source>command u</source>
-            <translation type="unfinished" />
+            <translation>comando u</translation>
         </message>
         <message>
             <source>RMSE</source>
@@ -3795,11 +3796,11 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>ZPETC sensitivity</source>
-            <translation type="unfinished" />
+            <translation>sensibilidade do ZPETC</translation>
         </message>
         <message>
             <source>XY contour: set the ranges and press Run.</source>
-            <translation type="unfinished" />
+            <translation>Contorno XY: defina as faixas e clique em Executar.</translation>
         </message>
         <message>
             <source>Envelope</source>
@@ -3811,23 +3812,23 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>%1 of every axis that has one: drawn uniformly within ± this share of its nominal</source>
-            <translation type="unfinished" />
+            <translation>%1 de todo eixo que o tenha: sorteado uniformemente dentro de ± esta fração do nominal</translation>
         </message>
         <message>
             <source>%1: nominal %2; drawn uniformly within ± this share of it</source>
-            <translation type="unfinished" />
+            <translation>%1: nominal %2; sorteado uniformemente dentro de ± esta fração dele</translation>
         </message>
         <message>
             <source>Not the current design's (computed for %1): %2</source>
-            <translation type="unfinished" />
+            <translation>Não é do projeto atual (calculado para %1): %2</translation>
         </message>
         <message>
             <source>Computed for %1: this tab shows axis %2. Press Run to analyze it.</source>
-            <translation type="unfinished" />
+            <translation>Calculado para %1: esta aba mostra o eixo %2. Clique em Executar para analisá-lo.</translation>
         </message>
         <message>
             <source>Computed for %1. The design has changed since: press Run to analyze the current one.</source>
-            <translation type="unfinished" />
+            <translation>Calculado para %1. O projeto mudou desde então: clique em Executar para analisar o atual.</translation>
         </message>
         <message>
             <source>Cannot run: %1</source>
@@ -3835,15 +3836,15 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Running %1 plant pairs%2…</source>
-            <translation type="unfinished" />
+            <translation>Simulando %1 pares de plantas%2…</translation>
         </message>
         <message>
             <source>Running %1 plants%2…</source>
-            <translation type="unfinished" />
+            <translation>Simulando %1 plantas%2…</translation>
         </message>
         <message>
             <source> and the corners</source>
-            <translation type="unfinished" />
+            <translation> e os vértices</translation>
         </message>
         <message>
             <source>Cancelling…</source>
@@ -3851,86 +3852,89 @@ Without the friction compensation: G %1 mm</source>
         </message>
         <message>
             <source>Cancelled after %1 of %2 %3. </source>
-            <translation type="unfinished" />
+            <translation>Cancelado após %1 de %2 %3. </translation>
         </message>
         <message>
             <source>%1 %2%3: </source>
-            <translation type="unfinished" />
+            <translation>%1 %2%3: </translation>
         </message>
         <message>
             <source> + %1 corners</source>
-            <translation type="unfinished" />
+            <translation> + %1 vértices</translation>
         </message>
         <message>
             <source>%1 % meet the spec (the nominal %2); %3 unstable.</source>
-            <translation type="unfinished" />
+            <translation>%1 % atendem à especificação (o nominal %2); %3 instáveis.</translation>
         </message>
         <message>
             <source>does</source>
-            <translation type="unfinished" />
+            <translation>atende</translation>
         </message>
         <message>
             <source>does not</source>
-            <translation type="unfinished" />
+            <translation>não atende</translation>
         </message>
         <message>
             <source> The feedforward divides the RMSE by %1 on the median plant (%2 at the 95 % RMSE).</source>
-            <translation type="unfinished" />
+            <translation> A pré-alimentação divide o RMSE por %1 na planta mediana (%2 no RMSE de 95 %).</translation>
         </message>
         <message>
             <source>
 Worst: RMSE %1 mm at %2.</source>
-            <translation type="unfinished" />
+            <translation>
+Pior: RMSE %1 mm em %2.</translation>
         </message>
         <message>
             <source>
 Unstable, e.g. at %1.</source>
-            <translation type="unfinished" />
+            <translation>
+Instável, p. ex. em %1.</translation>
         </message>
         <message>
             <source>plant pairs</source>
-            <translation type="unfinished" />
+            <translation>pares de plantas</translation>
         </message>
         <message>
             <source>max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.</source>
-            <translation type="unfinished" />
+            <translation>erro de contorno máx: mediana %1 mm, 95 % %2 mm (nominal %3 mm); %4 instáveis.</translation>
         </message>
         <message>
             <source>no stable pair; %1 unstable.</source>
-            <translation type="unfinished" />
+            <translation>nenhum par estável; %1 instáveis.</translation>
         </message>
         <message>
             <source>
 Worst: %1 mm at %2.</source>
-            <translation type="unfinished" />
+            <translation>
+Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>Contour error of the plant pairs</source>
-            <translation type="unfinished" />
+            <translation>Erro de contorno dos pares de plantas</translation>
         </message>
         <message>
             <source>contour e (mm)</source>
-            <translation type="unfinished" />
+            <translation>e de contorno (mm)</translation>
         </message>
         <message>
             <source>max |contour e| (mm)</source>
-            <translation type="unfinished" />
+            <translation>máx |e de contorno| (mm)</translation>
         </message>
         <message>
             <source>Error e of the plants</source>
-            <translation type="unfinished" />
+            <translation>Erro e das plantas</translation>
         </message>
         <message>
             <source>Output y of the plants</source>
-            <translation type="unfinished" />
+            <translation>Saída y das plantas</translation>
         </message>
         <message>
             <source>Command u of the plants</source>
-            <translation type="unfinished" />
+            <translation>Comando u das plantas</translation>
         </message>
         <message>
             <source>e (mm)</source>
-            <translation type="unfinished" />
+            <translation>e (mm)</translation>
         </message>
         <message>
             <source>y (mm)</source>
@@ -3938,11 +3942,11 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>u (V)</source>
-            <translation type="unfinished" />
+            <translation>u (V)</translation>
         </message>
         <message>
             <source>For a pole-placement axis with ZPETC.</source>
-            <translation type="unfinished" />
+            <translation>Para um eixo por alocação de polos com ZPETC.</translation>
         </message>
         <message>
             <source>RMSE (mm)</source>
@@ -3958,38 +3962,38 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>Load the worst plant pair of the contour analysis</source>
-            <translation type="unfinished" />
+            <translation>Carregar o pior par de plantas da análise de contorno</translation>
         </message>
         <message>
             <source>Load the worst plant of the robustness analysis</source>
-            <translation type="unfinished" />
+            <translation>Carregar a pior planta da análise de robustez</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::RootLocusPlot</name>
         <message>
             <source>Root locus</source>
-            <translation type="unfinished" />
+            <translation>Lugar das raízes</translation>
         </message>
         <message>
             <source>real</source>
-            <translation type="unfinished" />
+            <translation>real</translation>
         </message>
         <message>
             <source>imaginary</source>
-            <translation type="unfinished" />
+            <translation>imaginário</translation>
         </message>
         <message>
             <source>open-loop poles</source>
-            <translation type="unfinished" />
+            <translation>polos de malha aberta</translation>
         </message>
         <message>
             <source>open-loop zeros</source>
-            <translation type="unfinished" />
+            <translation>zeros de malha aberta</translation>
         </message>
         <message>
             <source>closed-loop poles</source>
-            <translation type="unfinished" />
+            <translation>polos de malha fechada</translation>
         </message>
         <message>
             <source>hover a branch: K, ζ, ωn; click: use that gain</source>
@@ -4023,7 +4027,7 @@ Worst: %1 mm at %2.</source>
         <name>xyt::ui::SensitivityPlot</name>
         <message>
             <source>ZPETC sensitivity</source>
-            <translation type="unfinished" />
+            <translation>sensibilidade do ZPETC</translation>
         </message>
         <message>
             <source>mismatch (% of ranges)</source>
@@ -4311,7 +4315,7 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>u (V)</source>
-            <translation type="unfinished" />
+            <translation>u (V)</translation>
         </message>
         <message>
             <source>time (s)</source>
@@ -4347,11 +4351,11 @@ Worst: %1 mm at %2.</source>
         </message>
         <message>
             <source>output y</source>
-            <translation type="unfinished" />
+            <translation>saída y</translation>
         </message>
         <message>
             <source>error e</source>
-            <translation type="unfinished" />
+            <translation>erro e</translation>
         </message>
         <message>
             <source>table stuck</source>
