@@ -3997,30 +3997,30 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>hover a branch: K, ζ, ωn; click: use that gain</source>
-            <translation type="unfinished" />
+            <translation>passe o mouse sobre um ramo: K, ζ, ωn; clique: usar esse ganho</translation>
         </message>
         <message>
             <source>open-loop zeros (drag to move)</source>
-            <translation type="unfinished" />
+            <translation>zeros de malha aberta (arraste para mover)</translation>
         </message>
         <message>
             <source>the locus is incomplete</source>
-            <translation type="unfinished" />
+            <translation>o lugar está incompleto</translation>
         </message>
         <message>
             <source>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</source>
-            <translation type="unfinished" />
+            <translation>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::RootLocusView</name>
         <message>
             <source>Root locus of %1</source>
-            <translation type="unfinished" />
+            <translation>Lugar das raízes de %1</translation>
         </message>
         <message>
             <source>Root locus of %1 (K = 1: the design)</source>
-            <translation type="unfinished" />
+            <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
         </message>
     </context>
     <context>
@@ -4031,7 +4031,7 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>mismatch (% of ranges)</source>
-            <translation type="unfinished" />
+            <translation>discrepância (% das faixas)</translation>
         </message>
         <message>
             <source>RMSE (mm)</source>
@@ -4043,7 +4043,7 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>loop alone</source>
-            <translation type="unfinished" />
+            <translation>só a malha</translation>
         </message>
         <message>
             <source>Not computed yet.</source>
@@ -4051,58 +4051,58 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>No stable plant at any mismatch.</source>
-            <translation type="unfinished" />
+            <translation>Nenhuma planta estável em nenhuma discrepância.</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::SessionFileController</name>
         <message>
             <source>&amp;New</source>
-            <translation type="unfinished" />
+            <translation>&amp;Novo</translation>
         </message>
         <message>
             <source>&amp;Open...</source>
-            <translation type="unfinished" />
+            <translation>&amp;Abrir...</translation>
         </message>
         <message>
             <source>Open &amp;Recent</source>
-            <translation type="unfinished" />
+            <translation>Abrir &amp;recente</translation>
         </message>
         <message>
             <source>&amp;Save</source>
-            <translation type="unfinished" />
+            <translation>&amp;Salvar</translation>
         </message>
         <message>
             <source>Save &amp;As...</source>
-            <translation type="unfinished" />
+            <translation>Salvar c&amp;omo...</translation>
         </message>
         <message>
             <source>&amp;Export</source>
-            <translation type="unfinished" />
+            <translation>E&amp;xportar</translation>
         </message>
         <message>
             <source>Coefficients as &amp;JSON...</source>
-            <translation type="unfinished" />
+            <translation>Coeficientes como &amp;JSON...</translation>
         </message>
         <message>
             <source>Firmware &amp;C header...</source>
-            <translation type="unfinished" />
+            <translation>Cabeçalho &amp;C para firmware...</translation>
         </message>
         <message>
             <source>&amp;Octave/MATLAB script...</source>
-            <translation type="unfinished" />
+            <translation>Script &amp;Octave/MATLAB...</translation>
         </message>
         <message>
             <source>Simulated signals as CS&amp;V...</source>
-            <translation type="unfinished" />
+            <translation>Sinais simulados como CS&amp;V...</translation>
         </message>
         <message>
             <source>Not for a G-code trajectory: the script computes the reference in closed form, and a program's feed profile has none. Export the simulated signals as CSV instead.</source>
-            <translation type="unfinished" />
+            <translation>Não para uma trajetória G-code: o script calcula a referência em forma fechada, e o perfil de avanço de um programa não tem uma. Exporte os sinais simulados como CSV.</translation>
         </message>
         <message>
             <source>A GNU Octave / MATLAB script with each axis' plant, controller and closed loop, plotting the response to the trajectory</source>
-            <translation type="unfinished" />
+            <translation>Um script GNU Octave / MATLAB com a planta, o controlador e a malha fechada de cada eixo, traçando a resposta à trajetória</translation>
         </message>
         <message>
             <source>XY Tune</source>
@@ -4110,197 +4110,202 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>The design has unsaved changes. Save them first?</source>
-            <translation type="unfinished" />
+            <translation>O projeto tem alterações não salvas. Salvá-las primeiro?</translation>
         </message>
         <message>
             <source>New session with the paper's default design</source>
-            <translation type="unfinished" />
+            <translation>Nova sessão com o projeto padrão do artigo</translation>
         </message>
         <message>
             <source>Open session</source>
-            <translation type="unfinished" />
+            <translation>Abrir sessão</translation>
         </message>
         <message>
             <source>XY Tune sessions (*.json);;All files (*)</source>
-            <translation type="unfinished" />
+            <translation>Sessões do XY Tune (*.json);;Todos os arquivos (*)</translation>
         </message>
         <message>
             <source>%1 could not be opened; the current design is unchanged.
 
 %2</source>
-            <translation type="unfinished" />
+            <translation>%1 não pôde ser aberto; o projeto atual não foi alterado.
+
+%2</translation>
         </message>
         <message>
             <source>Opened with notes:
 %1</source>
-            <translation type="unfinished" />
+            <translation>Aberto com observações:
+%1</translation>
         </message>
         <message>
             <source>Opened %1</source>
-            <translation type="unfinished" />
+            <translation>%1 aberto</translation>
         </message>
         <message>
             <source>Save session</source>
-            <translation type="unfinished" />
+            <translation>Salvar sessão</translation>
         </message>
         <message>
             <source>XY Tune sessions (*.json)</source>
-            <translation type="unfinished" />
+            <translation>Sessões do XY Tune (*.json)</translation>
         </message>
         <message>
             <source>The session was not saved; any existing file is unchanged.
 
 %1</source>
-            <translation type="unfinished" />
+            <translation>A sessão não foi salva; um arquivo existente não foi alterado.
+
+%1</translation>
         </message>
         <message>
             <source>Saved %1</source>
-            <translation type="unfinished" />
+            <translation>%1 salvo</translation>
         </message>
         <message>
             <source>Export</source>
-            <translation type="unfinished" />
+            <translation>Exportar</translation>
         </message>
         <message>
             <source>Exported %1</source>
-            <translation type="unfinished" />
+            <translation>%1 exportado</translation>
         </message>
         <message>
             <source>JSON (*.json)</source>
-            <translation type="unfinished" />
+            <translation>JSON (*.json)</translation>
         </message>
         <message>
             <source>C header (*.h)</source>
-            <translation type="unfinished" />
+            <translation>Cabeçalho C (*.h)</translation>
         </message>
         <message>
             <source>Octave/MATLAB script (*.m)</source>
-            <translation type="unfinished" />
+            <translation>Script Octave/MATLAB (*.m)</translation>
         </message>
         <message>
             <source>CSV (*.csv)</source>
-            <translation type="unfinished" />
+            <translation>CSV (*.csv)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::SnapshotCompareDialog</name>
         <message>
             <source>Compare designs</source>
-            <translation type="unfinished" />
+            <translation>Comparar projetos</translation>
         </message>
         <message>
             <source>Current design</source>
-            <translation type="unfinished" />
+            <translation>Projeto atual</translation>
         </message>
         <message>
             <source>Compare</source>
-            <translation type="unfinished" />
+            <translation>Comparar</translation>
         </message>
         <message>
             <source>with</source>
-            <translation type="unfinished" />
+            <translation>com</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::StepPlot</name>
         <message>
             <source>Step response</source>
-            <translation type="unfinished" />
+            <translation>Resposta ao degrau</translation>
         </message>
         <message>
             <source>time after the step (s)</source>
-            <translation type="unfinished" />
+            <translation>tempo após o degrau (s)</translation>
         </message>
         <message>
             <source>output (unit step)</source>
-            <translation type="unfinished" />
+            <translation>saída (degrau unitário)</translation>
         </message>
         <message>
             <source>overshoot limit</source>
-            <translation type="unfinished" />
+            <translation>limite de sobressinal</translation>
         </message>
         <message>
             <source>settling band</source>
-            <translation type="unfinished" />
+            <translation>faixa de acomodação</translation>
         </message>
         <message>
             <source>violates the spec</source>
-            <translation type="unfinished" />
+            <translation>viola a especificação</translation>
         </message>
         <message>
             <source>rise 10–90 %</source>
-            <translation type="unfinished" />
+            <translation>subida 10–90 %</translation>
         </message>
         <message>
             <source>peak</source>
-            <translation type="unfinished" />
+            <translation>pico</translation>
         </message>
         <message>
             <source>settling (2 %)</source>
-            <translation type="unfinished" />
+            <translation>acomodação (2 %)</translation>
         </message>
         <message>
             <source>hover the plot: t and y of the step the axis runs</source>
-            <translation type="unfinished" />
+            <translation>passe o mouse sobre o gráfico: t e y do degrau que o eixo executa</translation>
         </message>
         <message>
             <source>unstable: no step response (the closed loop has a pole outside the stability region)</source>
-            <translation type="unfinished" />
+            <translation>instável: sem resposta ao degrau (a malha fechada tem um polo fora da região de estabilidade)</translation>
         </message>
         <message>
             <source>overshoot ≤ %1 %</source>
-            <translation type="unfinished" />
+            <translation>sobressinal ≤ %1 %</translation>
         </message>
         <message>
             <source>overshoot limit %1 (%2 %) is above the view</source>
-            <translation type="unfinished" />
+            <translation>o limite de sobressinal %1 (%2 %) está acima da vista</translation>
         </message>
         <message>
             <source>±%1 % after %2 s</source>
-            <translation type="unfinished" />
+            <translation>±%1 % após %2 s</translation>
         </message>
         <message>
             <source>settling limit %1 s lies beyond the right edge (%2 s)</source>
-            <translation type="unfinished" />
+            <translation>o limite de acomodação %1 s fica além da borda direita (%2 s)</translation>
         </message>
         <message>
             <source>  rise %1 s</source>
-            <translation type="unfinished" />
+            <translation>  subida %1 s</translation>
         </message>
         <message>
             <source>the response never reaches 90 % of its final value in view</source>
-            <translation type="unfinished" />
+            <translation>a resposta nunca atinge 90 % do valor final na vista</translation>
         </message>
         <message>
             <source>peak %1 at %2 s (%3 %)</source>
-            <translation type="unfinished" />
+            <translation>pico %1 em %2 s (%3 %)</translation>
         </message>
         <message>
             <source>: beyond the right edge</source>
-            <translation type="unfinished" />
+            <translation>: além da borda direita</translation>
         </message>
         <message>
             <source>settles %1 s</source>
-            <translation type="unfinished" />
+            <translation>acomoda em %1 s</translation>
         </message>
         <message>
             <source>red: the response leaves the specification's envelope</source>
-            <translation type="unfinished" />
+            <translation>vermelho: a resposta sai da envoltória da especificação</translation>
         </message>
         <message>
             <source>t = %1 s   y = %2   (%3)</source>
-            <translation type="unfinished" />
+            <translation>t = %1 s   y = %2   (%3)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::StepResponseView</name>
         <message>
             <source>Unit step of %1</source>
-            <translation type="unfinished" />
+            <translation>Degrau unitário de %1</translation>
         </message>
         <message>
             <source>No step response: %1</source>
-            <translation type="unfinished" />
+            <translation>Sem resposta ao degrau: %1</translation>
         </message>
     </context>
     <context>
@@ -4311,7 +4316,7 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>error (mm)</source>
-            <translation type="unfinished" />
+            <translation>erro (mm)</translation>
         </message>
         <message>
             <source>u (V)</source>
@@ -4323,31 +4328,31 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>reference r</source>
-            <translation type="unfinished" />
+            <translation>referência r</translation>
         </message>
         <message>
             <source>snapshot</source>
-            <translation type="unfinished" />
+            <translation>instantâneo</translation>
         </message>
         <message>
             <source>digital y</source>
-            <translation type="unfinished" />
+            <translation>y digital</translation>
         </message>
         <message>
             <source>digital e</source>
-            <translation type="unfinished" />
+            <translation>e digital</translation>
         </message>
         <message>
             <source>digital u (held)</source>
-            <translation type="unfinished" />
+            <translation>u digital (retido)</translation>
         </message>
         <message>
             <source>y without the shaper</source>
-            <translation type="unfinished" />
+            <translation>y sem o modelador</translation>
         </message>
         <message>
             <source>e without the shaper</source>
-            <translation type="unfinished" />
+            <translation>e sem o modelador</translation>
         </message>
         <message>
             <source>output y</source>
@@ -4359,194 +4364,194 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>table stuck</source>
-            <translation type="unfinished" />
+            <translation>mesa presa</translation>
         </message>
         <message>
             <source>clipped</source>
-            <translation type="unfinished" />
+            <translation>limitado</translation>
         </message>
         <message>
             <source>snapshot u</source>
-            <translation type="unfinished" />
+            <translation>u do instantâneo</translation>
         </message>
         <message>
             <source>snapshot e</source>
-            <translation type="unfinished" />
+            <translation>e do instantâneo</translation>
         </message>
         <message>
             <source>feedforward part</source>
-            <translation type="unfinished" />
+            <translation>parte de pré-alimentação</translation>
         </message>
         <message>
             <source>feedback part</source>
-            <translation type="unfinished" />
+            <translation>parte de realimentação</translation>
         </message>
         <message>
             <source>control u</source>
-            <translation type="unfinished" />
+            <translation>controle u</translation>
         </message>
         <message>
             <source>linear loop: |u| is not clipped at ±%1 V here (the shaded time would saturate)</source>
-            <translation type="unfinished" />
+            <translation>malha linear: |u| não é limitado em ±%1 V aqui (o tempo sombreado saturaria)</translation>
         </message>
         <message>
             <source>%1: not simulated (%2: %3)</source>
-            <translation type="unfinished" />
+            <translation>%1: não simulado (%2: %3)</translation>
         </message>
         <message>
             <source>%1 — time response</source>
-            <translation type="unfinished" />
+            <translation>%1 — resposta no tempo</translation>
         </message>
         <message>
             <source>  (UNSTABLE closed loop)</source>
-            <translation type="unfinished" />
+            <translation>  (malha fechada INSTÁVEL)</translation>
         </message>
         <message>
             <source>digital y (Ts %1 s, held u)</source>
-            <translation type="unfinished" />
+            <translation>y digital (Ts %1 s, u retido)</translation>
         </message>
         <message>
             <source>digital y (encoder, DAC, limit)</source>
-            <translation type="unfinished" />
+            <translation>y digital (encoder, DAC, limite)</translation>
         </message>
         <message>
             <source>snapshot «%1» (y, e, u)</source>
-            <translation type="unfinished" />
+            <translation>instantâneo «%1» (y, e, u)</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::TrajectoryEditor</name>
         <message>
             <source>Point-to-point (both axes)</source>
-            <translation type="unfinished" />
+            <translation>Ponto a ponto (os dois eixos)</translation>
         </message>
         <message>
             <source>Circle (x = R sin ωt, y = R cos ωt)</source>
-            <translation type="unfinished" />
+            <translation>Círculo (x = R sin ωt, y = R cos ωt)</translation>
         </message>
         <message>
             <source>G-code program (x and y along its feed profile)</source>
-            <translation type="unfinished" />
+            <translation>Programa G-code (x e y ao longo do seu perfil de avanço)</translation>
         </message>
         <message>
             <source>Trajectory kind</source>
-            <translation type="unfinished" />
+            <translation>Tipo de trajetória</translation>
         </message>
         <message>
             <source>cubic</source>
-            <translation type="unfinished" />
+            <translation>cúbica</translation>
         </message>
         <message>
             <source>quintic</source>
-            <translation type="unfinished" />
+            <translation>quíntica</translation>
         </message>
         <message>
             <source>Move profile</source>
-            <translation type="unfinished" />
+            <translation>Perfil do movimento</translation>
         </message>
         <message>
             <source>The move's profile: Braga et al.'s cubic, whose acceleration steps at the start and the end, or the quintic, whose acceleration starts and ends at zero, so a jerk feedforward sees no spike</source>
-            <translation type="unfinished" />
+            <translation>O perfil do movimento: a cúbica de Braga et al., cuja aceleração salta no início e no fim, ou a quíntica, cuja aceleração começa e termina em zero, de modo que uma pré-alimentação de jerk não vê pico</translation>
         </message>
         <message>
             <source>x0 (mm)</source>
-            <translation type="unfinished" />
+            <translation>x0 (mm)</translation>
         </message>
         <message>
             <source>xf (mm)</source>
-            <translation type="unfinished" />
+            <translation>xf (mm)</translation>
         </message>
         <message>
             <source>t0 (s)</source>
-            <translation type="unfinished" />
+            <translation>t0 (s)</translation>
         </message>
         <message>
             <source>tf (s)</source>
-            <translation type="unfinished" />
+            <translation>tf (s)</translation>
         </message>
         <message>
             <source>v0 (mm/s)</source>
-            <translation type="unfinished" />
+            <translation>v0 (mm/s)</translation>
         </message>
         <message>
             <source>vf (mm/s)</source>
-            <translation type="unfinished" />
+            <translation>vf (mm/s)</translation>
         </message>
         <message>
             <source>Radius (mm)</source>
-            <translation type="unfinished" />
+            <translation>Raio (mm)</translation>
         </message>
         <message>
             <source>ω (rad/s)</source>
-            <translation type="unfinished" />
+            <translation>ω (rad/s)</translation>
         </message>
         <message>
             <source>Ramp-in (s)</source>
-            <translation type="unfinished" />
+            <translation>Rampa de entrada (s)</translation>
         </message>
         <message>
             <source>0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle; a G-code program always runs its feed profile's time</source>
-            <translation type="unfinished" />
+            <translation>0 = automático: tf para uma cúbica, uma volta mais a rampa de entrada para um círculo; um programa G-code sempre dura o tempo do seu perfil de avanço</translation>
         </message>
         <message>
             <source>Duration (s)</source>
-            <translation type="unfinished" />
+            <translation>Duração (s)</translation>
         </message>
         <message>
             <source>Step dt (s)</source>
-            <translation type="unfinished" />
+            <translation>Passo dt (s)</translation>
         </message>
         <message>
             <source>G-code program</source>
-            <translation type="unfinished" />
+            <translation>Programa G-code</translation>
         </message>
         <message>
             <source>no program</source>
-            <translation type="unfinished" />
+            <translation>nenhum programa</translation>
         </message>
         <message>
             <source>Open…</source>
-            <translation type="unfinished" />
+            <translation>Abrir…</translation>
         </message>
         <message>
             <source>Read a G-code program (.nc); it is kept in the session</source>
-            <translation type="unfinished" />
+            <translation>Ler um programa G-code (.nc); ele é guardado na sessão</translation>
         </message>
         <message>
             <source>Program</source>
-            <translation type="unfinished" />
+            <translation>Programa</translation>
         </message>
         <message>
             <source>Example programs</source>
-            <translation type="unfinished" />
+            <translation>Programas de exemplo</translation>
         </message>
         <message>
             <source>Examples…</source>
-            <translation type="unfinished" />
+            <translation>Exemplos…</translation>
         </message>
         <message>
             <source>Feed scale</source>
-            <translation type="unfinished" />
+            <translation>Escala de avanço</translation>
         </message>
         <message>
             <source>Max accel. (mm/s²)</source>
-            <translation type="unfinished" />
+            <translation>Acel. máx (mm/s²)</translation>
         </message>
         <message>
             <source>Max jerk (mm/s³)</source>
-            <translation type="unfinished" />
+            <translation>Jerk máx (mm/s³)</translation>
         </message>
         <message>
             <source>0 = no jerk limit (a trapezoidal profile)</source>
-            <translation type="unfinished" />
+            <translation>0 = sem limite de jerk (perfil trapezoidal)</translation>
         </message>
         <message>
             <source>Open a G-code program</source>
-            <translation type="unfinished" />
+            <translation>Abrir um programa G-code</translation>
         </message>
         <message>
             <source>G-code programs (*.nc *.ngc *.gcode *.tap);;All files (*)</source>
-            <translation type="unfinished" />
+            <translation>Programas G-code (*.nc *.ngc *.gcode *.tap);;Todos os arquivos (*)</translation>
         </message>
         <message>
             <source>%1: %2</source>
@@ -4554,277 +4559,277 @@ Pior: %1 mm em %2.</translation>
         </message>
         <message>
             <source>Open a program or pick an example.</source>
-            <translation type="unfinished" />
+            <translation>Abra um programa ou escolha um exemplo.</translation>
         </message>
         <message numerus="yes">
             <source>%n motion block(s), %1 mm, run %2 s</source>
-            <translation type="unfinished">
-                <numerusform />
-                <numerusform />
+            <translation>
+                <numerusform>%n bloco de movimento, %1 mm, execução %2 s</numerusform>
+                <numerusform>%n blocos de movimento, %1 mm, execução %2 s</numerusform>
             </translation>
         </message>
         <message numerus="yes">
             <source>, %n sharp corner(s)</source>
-            <translation type="unfinished">
-                <numerusform />
-                <numerusform />
+            <translation>
+                <numerusform>, %n canto vivo</numerusform>
+                <numerusform>, %n cantos vivos</numerusform>
             </translation>
         </message>
         <message>
             <source>; one full circle: ISO 230-4 test</source>
-            <translation type="unfinished" />
+            <translation>; um círculo completo: ensaio ISO 230-4</translation>
         </message>
         <message numerus="yes">
             <source>; %n warning(s)</source>
-            <translation type="unfinished">
-                <numerusform />
-                <numerusform />
+            <translation>
+                <numerusform>; %n aviso</numerusform>
+                <numerusform>; %n avisos</numerusform>
             </translation>
         </message>
         <message>
             <source>cubic move</source>
-            <translation type="unfinished" />
+            <translation>movimento cúbico</translation>
         </message>
         <message>
             <source>circle</source>
-            <translation type="unfinished" />
+            <translation>círculo</translation>
         </message>
         <message>
             <source>The plots still show the session's %1: a G-code trajectory needs a program (Open… or pick an example).</source>
-            <translation type="unfinished" />
+            <translation>Os gráficos ainda mostram o %1 da sessão: uma trajetória G-code precisa de um programa (Abrir… ou escolha um exemplo).</translation>
         </message>
         <message>
             <source>The plots still show the session's %1: the trajectory chosen in the editor is not valid yet (see the field marked red).</source>
-            <translation type="unfinished" />
+            <translation>Os gráficos ainda mostram o %1 da sessão: a trajetória escolhida no editor ainda não é válida (veja o campo marcado em vermelho).</translation>
         </message>
         <message>
             <source>no program: open one or pick an example</source>
-            <translation type="unfinished" />
+            <translation>nenhum programa: abra um ou escolha um exemplo</translation>
         </message>
         <message>
             <source>tf: must be later than t0</source>
-            <translation type="unfinished" />
+            <translation>tf: deve ser posterior a t0</translation>
         </message>
         <message>
             <source>%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory</source>
-            <translation type="unfinished" />
+            <translation>%1: uma simulação de %2 s com dt = %3 s precisa de %4 amostras; cabem no máximo %5 na memória</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::TuningSession</name>
         <message>
             <source>axis %1, %2</source>
-            <translation type="unfinished" />
+            <translation>eixo %1, %2</translation>
         </message>
         <message>
             <source>%1: %2; %3: %4</source>
-            <translation type="unfinished" />
+            <translation>%1: %2; %3: %4</translation>
         </message>
         <message>
             <source>Set ωn of %1 to %2</source>
-            <translation type="unfinished" />
+            <translation>Definir ωn de %1 como %2</translation>
         </message>
         <message>
             <source>Set kp of %1 to %2</source>
-            <translation type="unfinished" />
+            <translation>Definir kp de %1 como %2</translation>
         </message>
         <message>
             <source>Change the plant of %1</source>
-            <translation type="unfinished" />
+            <translation>Alterar a planta de %1</translation>
         </message>
         <message>
             <source>Change the model unit of %1</source>
-            <translation type="unfinished" />
+            <translation>Alterar a unidade do modelo de %1</translation>
         </message>
         <message>
             <source>Change the friction of %1</source>
-            <translation type="unfinished" />
+            <translation>Alterar o atrito de %1</translation>
         </message>
         <message>
             <source>Change the flexible mode and notch of %1</source>
-            <translation type="unfinished" />
+            <translation>Alterar o modo flexível e o notch de %1</translation>
         </message>
         <message>
             <source>Change the trajectory</source>
-            <translation type="unfinished" />
+            <translation>Alterar a trajetória</translation>
         </message>
         <message>
             <source>Change the cross-coupling</source>
-            <translation type="unfinished" />
+            <translation>Alterar o acoplamento cruzado</translation>
         </message>
         <message>
             <source>Switch the cross-coupling off</source>
-            <translation type="unfinished" />
+            <translation>Desligar o acoplamento cruzado</translation>
         </message>
         <message>
             <source>Set the actuator limit to %1 V</source>
-            <translation type="unfinished" />
+            <translation>Definir o limite do atuador como %1 V</translation>
         </message>
         <message>
             <source>Change the digital implementation</source>
-            <translation type="unfinished" />
+            <translation>Alterar a implementação digital</translation>
         </message>
         <message>
             <source>Set the controller sample time to %1 s</source>
-            <translation type="unfinished" />
+            <translation>Definir o período de amostragem do controlador como %1 s</translation>
         </message>
         <message>
             <source>Change the PI discretization</source>
-            <translation type="unfinished" />
+            <translation>Alterar a discretização do PI</translation>
         </message>
         <message>
             <source>Change the specification</source>
-            <translation type="unfinished" />
+            <translation>Alterar a especificação</translation>
         </message>
         <message>
             <source>Store snapshot %1</source>
-            <translation type="unfinished" />
+            <translation>Guardar instantâneo %1</translation>
         </message>
         <message>
             <source>Use loop gain %1 from the root locus</source>
-            <translation type="unfinished" />
+            <translation>Usar o ganho de malha %1 do lugar das raízes</translation>
         </message>
         <message>
             <source>Only a PID + feedforward axis has zeros of its own to drag.</source>
-            <translation type="unfinished" />
+            <translation>Só um eixo PID + pré-alimentação tem zeros próprios para arrastar.</translation>
         </message>
         <message>
             <source>Move a zero of %1's PID</source>
-            <translation type="unfinished" />
+            <translation>Mover um zero do PID de %1</translation>
         </message>
         <message>
             <source>Change the design method</source>
-            <translation type="unfinished" />
+            <translation>Alterar o método de projeto</translation>
         </message>
         <message>
             <source>Change the pole-placement design</source>
-            <translation type="unfinished" />
+            <translation>Alterar o projeto por alocação de polos</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::VibrationPlot</name>
         <message>
             <source>Vibration</source>
-            <translation type="unfinished" />
+            <translation>Vibração</translation>
         </message>
         <message>
             <source>frequency (Hz)</source>
-            <translation type="unfinished" />
+            <translation>frequência (Hz)</translation>
         </message>
         <message>
             <source>|G| (dB re mm/V)</source>
-            <translation type="unfinished" />
+            <translation>|G| (dB ref. mm/V)</translation>
         </message>
         <message>
             <source>frequency of the mode (Hz)</source>
-            <translation type="unfinished" />
+            <translation>frequência do modo (Hz)</translation>
         </message>
         <message>
             <source>residual (%)</source>
-            <translation type="unfinished" />
+            <translation>residual (%)</translation>
         </message>
         <message>
             <source>rigid |G|</source>
-            <translation type="unfinished" />
+            <translation>|G| rígido</translation>
         </message>
         <message>
             <source>with the mode</source>
-            <translation type="unfinished" />
+            <translation>com o modo</translation>
         </message>
         <message>
             <source>notch |N|</source>
-            <translation type="unfinished" />
+            <translation>notch |N|</translation>
         </message>
         <message>
             <source>measured |H|</source>
-            <translation type="unfinished" />
+            <translation>|H| medido</translation>
         </message>
         <message>
             <source>PSD (dB)</source>
-            <translation type="unfinished" />
+            <translation>DEP (dB)</translation>
         </message>
         <message>
             <source>accel. PSD</source>
-            <translation type="unfinished" />
+            <translation>DEP da acel.</translation>
         </message>
         <message>
             <source>input shaper</source>
-            <translation type="unfinished" />
+            <translation>modelador de entrada</translation>
         </message>
         <message>
             <source>5 % tolerance</source>
-            <translation type="unfinished" />
+            <translation>tolerância de 5 %</translation>
         </message>
         <message>
             <source>|H| measured from %1, drawn where γ² ≥ %2</source>
-            <translation type="unfinished" />
+            <translation>|H| medido de %1, desenhado onde γ² ≥ %2</translation>
         </message>
         <message>
             <source>PSD of %1</source>
-            <translation type="unfinished" />
+            <translation>DEP de %1</translation>
         </message>
         <message>
             <source>mode %1 Hz</source>
-            <translation type="unfinished" />
+            <translation>modo %1 Hz</translation>
         </message>
         <message>
             <source>notch %1 Hz</source>
-            <translation type="unfinished" />
+            <translation>notch %1 Hz</translation>
         </message>
         <message>
             <source>measured %1 Hz</source>
-            <translation type="unfinished" />
+            <translation>medido %1 Hz</translation>
         </message>
         <message>
             <source>, ζ %1</source>
-            <translation type="unfinished" />
+            <translation>, ζ %1</translation>
         </message>
         <message>
             <source>%1 %2 Hz, ζ %3</source>
-            <translation type="unfinished" />
+            <translation>%1 %2 Hz, ζ %3</translation>
         </message>
         <message>
             <source>%1 % left at %2 Hz</source>
-            <translation type="unfinished" />
+            <translation>%1 % restante em %2 Hz</translation>
         </message>
         <message>
             <source>No input shaper: the Mode fold's Input shaper sets one</source>
-            <translation type="unfinished" />
+            <translation>Sem modelador de entrada: o Modelador de entrada da seção Modo define um</translation>
         </message>
         <message>
             <source>no input shaper</source>
-            <translation type="unfinished" />
+            <translation>sem modelador de entrada</translation>
         </message>
         <message>
             <source>The table is rigid: set a flexible mode in the Design box's Mode fold</source>
-            <translation type="unfinished" />
+            <translation>A mesa é rígida: defina um modo flexível na seção Modo da caixa Projeto</translation>
         </message>
     </context>
     <context>
         <name>xyt::ui::VibrationView</name>
         <message>
             <source>Vibration of %1</source>
-            <translation type="unfinished" />
+            <translation>Vibração de %1</translation>
         </message>
         <message>
             <source>%1 shaper: %2 impulses over %3 ms, a delay of %4 ms</source>
-            <translation type="unfinished" />
+            <translation>modelador %1: %2 impulsos em %3 ms, um atraso de %4 ms</translation>
         </message>
         <message>
             <source>; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm unshaped</source>
-            <translation type="unfinished" />
+            <translation>; o modo de %1 Hz%2 oscila %3 com amplitude de %4 mm com modelagem, %5 mm sem modelagem</translation>
         </message>
         <message>
             <source> it is designed for</source>
-            <translation type="unfinished" />
+            <translation> para o qual foi projetado</translation>
         </message>
         <message>
             <source>after the move</source>
-            <translation type="unfinished" />
+            <translation>após o movimento</translation>
         </message>
         <message>
             <source>along the path</source>
-            <translation type="unfinished" />
+            <translation>ao longo do percurso</translation>
         </message>
     </context>
 </TS>
