@@ -9,7 +9,7 @@
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
-#include "ui/session/ui_language.h"
+#include "ui/session/interface_language.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

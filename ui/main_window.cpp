@@ -41,7 +41,7 @@
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
-#include "ui/session/ui_language.h"
+#include "ui/session/interface_language.h"
 #include "ui/snapshot_compare_dialog.h"
 #include "ui/views/bode_view.h"
 #include "ui/views/contour_view.h"
@@ -687,7 +687,7 @@ void MainWindow::buildMenus() {
 
 void MainWindow::buildLanguageMenu(QMenu* view) {
     // The languages by their own names (a user who cannot read the current one finds theirs);
-    // the choice applies at the next start, when the window is built in it (ui_language.h).
+    // the choice applies at the next start, when the window is built in it (interface_language.h).
     QMenu* languages = view->addMenu(tr("&Language"));
     auto* group = new QActionGroup(languages);
     const QString stored = storedUiLanguage();

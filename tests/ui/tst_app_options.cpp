@@ -24,6 +24,10 @@ void TstAppOptions::optionsWithoutADisplay_data() {
     QTest::newRow("mistyped option")
         << QStringList{"--screnshot", "a.png"} << 2 << "Unknown option 'screnshot'";
     QTest::newRow("no display, no screenshot") << QStringList{} << 2 << "no display";
+    QTest::newRow("--help names --language") << QStringList{"--help"} << 0 << "--language <CODE>";
+    QTest::newRow("unknown language")
+        << QStringList{"--screenshot", "never-written.png", "--language", "xx"} << 2
+        << "--language: expected pt_BR, en";
 }
 
 void TstAppOptions::optionsWithoutADisplay() {

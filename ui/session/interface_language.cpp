@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ui/session/ui_language.h"
+#include "ui/session/interface_language.h"
 
 #include <QCoreApplication>
 #include <QLibraryInfo>
