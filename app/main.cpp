@@ -6,10 +6,10 @@
 #include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/robustness_view.h"
+#include "ui/session/interface_language.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
-#include "ui/session/interface_language.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

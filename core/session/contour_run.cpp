@@ -102,9 +102,9 @@ void addAxisWarnings(const ContourTrace& t, std::vector<Diagnostic>& warnings) {
         if (m.diverged)
             warnings.push_back(makeDiagnostic("contour_axis_diverged", {axis}));
         else if (m.saturated)
-            warnings.push_back(makeDiagnostic("contour_axis_saturated",
-                                              {axis, formatNumber(run.umaxVolts),
-                                               formatNumber(m.saturatedTimeSeconds)}));
+            warnings.push_back(
+                makeDiagnostic("contour_axis_saturated", {axis, formatNumber(run.umaxVolts),
+                                                          formatNumber(m.saturatedTimeSeconds)}));
     }
 }
 

@@ -169,8 +169,9 @@ void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEval
         for (double v : out.run.uFeedforward)
             peak = std::max(peak, std::abs(v));
         if (peak > d.gains.maxOutput)
-            out.warnings.push_back(makeDiagnostic(
-                "feedforward_beyond_limit", {formatNumber(peak, 4), formatNumber(d.gains.maxOutput, 4)}));
+            out.warnings.push_back(
+                makeDiagnostic("feedforward_beyond_limit",
+                               {formatNumber(peak, 4), formatNumber(d.gains.maxOutput, 4)}));
     }
     const TrajectorySettings& t = session.trajectory;
     if (t.kind == TrajectoryKind::Cubic && t.profile == MoveProfile::Cubic &&
@@ -184,7 +185,8 @@ void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEval
             std::abs(2.0 * l[2]), std::abs(2.0 * l[2] + 6.0 * l[3] * (t.tfSeconds - t.t0Seconds)));
         const double spike = std::abs(d.gains.ff3) * step / d.tsSeconds;
         if (spike > 0.01 * d.gains.maxOutput)
-            out.warnings.push_back(makeDiagnostic("ff3_acceleration_spike", {formatNumber(spike, 3)}));
+            out.warnings.push_back(
+                makeDiagnostic("ff3_acceleration_spike", {formatNumber(spike, 3)}));
     }
 }
 

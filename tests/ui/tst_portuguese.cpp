@@ -11,8 +11,8 @@
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
 #include "ui/session/diagnostic_text.h"
-#include "ui/session/tuning_session.h"
 #include "ui/session/interface_language.h"
+#include "ui/session/tuning_session.h"
 
 #include <QDialogButtonBox>
 #include <QFile>
@@ -111,8 +111,8 @@ void TstPortuguese::menusArePortuguese() {
     TuningSession session;
     MainWindow window(&session);
     // The titles chosen in the catalogue, accelerators included (each its own letter).
-    QCOMPARE(menuTitles(window), (QStringList{"&Arquivo", "&Editar", "&Projeto", "E&xibir",
-                                              "Aj&uda"}));
+    QCOMPARE(menuTitles(window),
+             (QStringList{"&Arquivo", "&Editar", "&Projeto", "E&xibir", "Aj&uda"}));
     const QStringList tabs = [&] {
         QStringList all;
         for (QTabWidget* t : window.findChildren<QTabWidget*>())
@@ -170,8 +170,9 @@ void TstPortuguese::coreWarningIsPortugueseWithItsNumber() {
     const Diagnostic d = makeDiagnostic("feedforward_beyond_limit", {"12.5", "10"});
     QCOMPARE(d.text, std::string("the feedforward alone needs 12.5 V on this trajectory, beyond "
                                  "the output limit of 10 V"));
-    QCOMPARE(diagnosticText(d), QStringLiteral("a pré-alimentação sozinha precisa de 12.5 V "
-                                               "nesta trajetória, além do limite de saída de 10 V"));
+    QCOMPARE(diagnosticText(d),
+             QStringLiteral("a pré-alimentação sozinha precisa de 12.5 V "
+                            "nesta trajetória, além do limite de saída de 10 V"));
     const Diagnostic c = makeDiagnostic("contour_axis_saturated", {"x", "2.5", "0.75"});
     QCOMPARE(diagnosticText(c),
              QStringLiteral("eixo x: |u| atingiu o limite do atuador de 2.5 V por 0.75 s"));
@@ -229,7 +230,8 @@ void TstPortuguese::numberFieldAcceptsADecimalComma() {
     NumberField field("kp");
     field.setText(typed);
     QVERIFY2(field.commit(), qPrintable(field.errorText()));
-    QCOMPARE(field.value(), value); // "-2.25e-1" parses to the double nearest -0.225, as does the literal
+    QCOMPARE(field.value(),
+             value); // "-2.25e-1" parses to the double nearest -0.225, as does the literal
     // Shown with a point in every language (the default locale is C).
     field.setValue(1.5);
     QCOMPARE(field.text(), QStringLiteral("1.5"));
