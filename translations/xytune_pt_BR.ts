@@ -2593,7 +2593,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation>&amp;Sair</translation>
+        <translation>Sa&amp;ir</translation>
     </message>
     <message>
         <source>&amp;Edit</source>

@@ -37,12 +37,15 @@ if(n_messages LESS 1)
     message(FATAL_ERROR "${ts_name}: lupdate found no message at all: the sources list is wrong")
 endif()
 if(n_flagged GREATER 0 OR n_empty GREATER 0)
-    # Name the offending sources so the translator knows what to do.
+    # Name the offending sources so the translator knows what to do (';' would split the
+    # list of matches: entities such as &amp; are shown without it).
+    string(REPLACE ";" "" updated "${updated}")
     string(REGEX MATCHALL "<source>[^<]*</source>[^<]*(<oldsource>[^<]*</oldsource>[^<]*)?(<comment>[^<]*</comment>[^<]*)?<translation type=\"(unfinished|vanished|obsolete)\""
            which "${updated}")
     set(listing "")
     foreach(m IN LISTS which)
-        string(REGEX REPLACE "^<source>([^<]*)</source>.*type=\"([a-z]+)\"$" "  [\\2] \\1" line "${m}")
+        string(REGEX REPLACE "^<source>([^<]*)</source>.*type=\"([a-z]+)\"$" "  [\\2] \\1" line
+                             "${m}")
         string(APPEND listing "${line}\n")
     endforeach()
     message(FATAL_ERROR

@@ -214,7 +214,7 @@ void TstPortuguese::numberFieldAcceptsADecimalComma_data() {
     QTest::addColumn<QString>("language");
     QTest::addColumn<QString>("typed");
     QTest::addColumn<double>("value");
-    // Exact binary fractions: the parsed value equals the literal.
+    // The field parses as the compiler reads the literal with a point (both the nearest double).
     for (const QString& lang : {QStringLiteral("pt_BR"), QStringLiteral("en")}) {
         QTest::addRow("%s 1,5", qPrintable(lang)) << lang << "1,5" << 1.5;
         QTest::addRow("%s 1.5", qPrintable(lang)) << lang << "1.5" << 1.5;
