@@ -1352,6 +1352,14 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>reversal spikes up to %1 mm at the quadrant changes (the table&apos;s friction and backlash)</source>
         <translation>picos de reversão de até %1 mm nas mudanças de quadrante (o atrito e a folga da mesa)</translation>
     </message>
+    <message>
+        <source>the digital loop at Ts = %1 s is unstable (its largest closed-loop pole has |z| = %2); lower the controller sample time</source>
+        <translation>a malha digital com Ts = %1 s é instável (seu maior polo de malha fechada tem |z| = %2); reduza o período de amostragem do controlador</translation>
+    </message>
+    <message>
+        <source>the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 against %3 in the z-plane poles); lower the controller sample time or the delay</source>
+        <translation>a malha digital com Ts = %1 s é muito menos amortecida que o projeto (coeficiente de amortecimento %2 contra %3 nos polos do plano z); reduza o período de amostragem do controlador ou o atraso</translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::EnvelopePlot</name>

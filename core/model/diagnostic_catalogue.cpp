@@ -29,6 +29,13 @@ const std::vector<DiagnosticTemplate>& diagnosticCatalogue() {
          "a limit cycle at rest: after the move the measured position keeps oscillating (%1 mm "
          "peak to peak, %2 turns in the last half of the rest), caused by the encoder/DAC "
          "quantization"},
+        // The digital implementation's poles (sampled_data.cpp).
+        {"digital_loop_unstable",
+         "the digital loop at Ts = %1 s is unstable (its largest closed-loop pole has |z| = %2); "
+         "lower the controller sample time"},
+        {"digital_loop_less_damped",
+         "the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 "
+         "against %3 in the z-plane poles); lower the controller sample time or the delay"},
         // The contour run (contour_run.cpp).
         {"contour_axis_diverged", "%1 axis: the simulated run diverged (a sample is not a finite "
                                   "number)"},

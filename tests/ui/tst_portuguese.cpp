@@ -90,6 +90,7 @@ private slots:
     void aboutDialogAndQtButtonsArePortuguese();
     void coreWarningIsPortugueseWithItsNumber();
     void unstableLoopWarnsInPortuguese();
+    void digitalLoopWarnsWithItsSampleTime();
     void everyCatalogueCodeHasItsEnglishTemplate();
     void numberFieldAcceptsADecimalComma_data();
     void numberFieldAcceptsADecimalComma();
@@ -195,6 +196,35 @@ void TstPortuguese::unstableLoopWarnsInPortuguese() {
     QTRY_VERIFY2(window.metricsPanel()->noticeText().contains("a malha fechada é instável"),
                  qPrintable(window.metricsPanel()->noticeText()));
     QVERIFY(!window.metricsPanel()->noticeText().contains("the closed loop is unstable"));
+}
+
+void TstPortuguese::digitalLoopWarnsWithItsSampleTime() {
+    // The paper's PI (ωn = 2 rad/s) sampled at Ts = 2 s: the hold and the sampling at ωn Ts = 4
+    // leave the digital loop's poles far less damped than the continuous design's (ζ = 1 in the
+    // z-plane, below 0.8 of it: sampled_data.h). The warning carries Ts and both damping ratios
+    // as the core formats them; the panel shows it in Portuguese with those numbers.
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    Session s = Session::paperDefault();
+    s.controllerTsSeconds = 2.0;
+    TuningSession session;
+    session.reset(s);
+    MainWindow window(&session);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const auto& warnings = session.axisEvaluation(0).warnings;
+    const auto found = std::find_if(warnings.begin(), warnings.end(), [](const Diagnostic& w) {
+        return w.code == "digital_loop_less_damped";
+    });
+    QVERIFY(found != warnings.end());
+    QCOMPARE(found->args.size(), std::size_t(3));
+    QCOMPARE(found->args[0], std::string("2"));
+    const QString expected =
+        QStringLiteral("a malha digital com Ts = 2 s é muito menos amortecida "
+                       "que o projeto (coeficiente de amortecimento %1 "
+                       "contra %2 nos polos do plano z)")
+            .arg(QString::fromStdString(found->args[1]), QString::fromStdString(found->args[2]));
+    QTRY_VERIFY2(window.metricsPanel()->noticeText().contains(expected),
+                 qPrintable(window.metricsPanel()->noticeText()));
 }
 
 void TstPortuguese::everyCatalogueCodeHasItsEnglishTemplate() {

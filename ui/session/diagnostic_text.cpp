@@ -52,6 +52,15 @@ constexpr DiagnosticTextEntry kDiagnosticTexts[] = {
                        "a limit cycle at rest: after the move the measured position keeps "
                        "oscillating (%1 mm peak to peak, %2 turns in the last half of the rest), "
                        "caused by the encoder/DAC quantization")},
+    {"digital_loop_unstable",
+     QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText",
+                       "the digital loop at Ts = %1 s is unstable (its largest closed-loop pole "
+                       "has |z| = %2); lower the controller sample time")},
+    {"digital_loop_less_damped",
+     QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText",
+                       "the digital loop at Ts = %1 s is much less damped than the design "
+                       "(damping ratio %2 against %3 in the z-plane poles); lower the controller "
+                       "sample time or the delay")},
     {"contour_axis_diverged",
      QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText",
                        "%1 axis: the simulated run diverged (a sample is not a finite number)")},
