@@ -1360,6 +1360,22 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 against %3 in the z-plane poles); lower the controller sample time or the delay</source>
         <translation>a malha digital com Ts = %1 s é muito menos amortecida que o projeto (coeficiente de amortecimento %2 contra %3 nos polos do plano z); reduza o período de amostragem do controlador ou o atraso</translation>
     </message>
+    <message>
+        <source>must be a number, got NaN</source>
+        <translation>deve ser um número, recebido NaN</translation>
+    </message>
+    <message>
+        <source>must be finite, got infinity</source>
+        <translation>deve ser finito, recebido infinito</translation>
+    </message>
+    <message>
+        <source>must be greater than zero</source>
+        <translation>deve ser maior que zero</translation>
+    </message>
+    <message>
+        <source>must be nonzero</source>
+        <translation>deve ser diferente de zero</translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::EnvelopePlot</name>

@@ -7,6 +7,11 @@ namespace xyt {
 
 const std::vector<DiagnosticTemplate>& diagnosticCatalogue() {
     static const std::vector<DiagnosticTemplate> catalogue = {
+        // The generic reasons of InvalidInput (errors.cpp): "<field>: <reason>".
+        {"not_a_number", "must be a number, got NaN"},
+        {"not_finite", "must be finite, got infinity"},
+        {"not_positive", "must be greater than zero"},
+        {"zero", "must be nonzero"},
         // The session evaluation of an axis (session_evaluation.cpp and the design methods).
         {"closed_loop_unstable", "the closed loop is unstable"},
         {"run_diverged", "the simulated run diverged (a sample is not a finite number): it has no "

@@ -5,6 +5,7 @@
 // are the ones chosen for translations/xytune_pt_BR.ts, written here literally (reading them
 // from the catalogue would make the test circular).
 #include "core/model/diagnostic_catalogue.h"
+#include "core/model/errors.h"
 #include "core/session/session.h"
 #include "tests/support/gui_checks.h"
 #include "ui/main_window.h"
@@ -94,6 +95,8 @@ private slots:
     void everyCatalogueCodeHasItsEnglishTemplate();
     void numberFieldAcceptsADecimalComma_data();
     void numberFieldAcceptsADecimalComma();
+    void fieldErrorIsPortuguese_data();
+    void fieldErrorIsPortuguese();
     void englishIsTheSource();
     void storedLanguageRoundTrips();
 };
@@ -266,6 +269,33 @@ void TstPortuguese::numberFieldAcceptsADecimalComma() {
     field.setValue(1.5);
     QCOMPARE(field.text(), QStringLiteral("1.5"));
     QCOMPARE(QLocale().decimalPoint(), QStringLiteral("."));
+}
+
+void TstPortuguese::fieldErrorIsPortuguese_data() {
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("error");
+    QTest::newRow("pt_BR") << "pt_BR"
+                           << "kp: deve ser maior que zero";
+    QTest::newRow("en") << "en"
+                        << "kp: must be greater than zero";
+}
+
+void TstPortuguese::fieldErrorIsPortuguese() {
+    // requirePositive's reason is coded (not_positive): the field shows it in the language.
+    QFETCH(QString, language);
+    QFETCH(QString, error);
+    QVERIFY(installUiLanguage(language));
+    NumberField field("kp", [](double v) { requirePositive(v, "kp"); });
+    field.setText("0");
+    QVERIFY(!field.commit());
+    QCOMPARE(field.errorText(), error);
+    try {
+        requirePositive(0.0, "kp");
+        QFAIL("requirePositive accepted 0");
+    } catch (const InvalidInput& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("not_positive"));
+        QCOMPARE(std::string(e.what()), std::string("kp: must be greater than zero"));
+    }
 }
 
 void TstPortuguese::englishIsTheSource() {

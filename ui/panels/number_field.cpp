@@ -3,6 +3,7 @@
 
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
+#include "ui/session/diagnostic_text.h"
 
 namespace xyt::ui {
 
@@ -41,7 +42,7 @@ bool NumberField::commit() {
         emit valueAccepted(v);
         return true;
     } catch (const InvalidInput& e) {
-        showError(QString::fromStdString(e.reason()));
+        showError(diagnosticText(e.reasonDiagnostic()));
         return false;
     }
 }

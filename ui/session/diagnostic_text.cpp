@@ -17,6 +17,10 @@ struct DiagnosticTextEntry {
 /// The translatable templates of the catalogue's codes (core/model/diagnostic_catalogue.cpp):
 /// each with the same English and placeholders (tst_portuguese checks they agree).
 constexpr DiagnosticTextEntry kDiagnosticTexts[] = {
+    {"not_a_number", QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText", "must be a number, got NaN")},
+    {"not_finite", QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText", "must be finite, got infinity")},
+    {"not_positive", QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText", "must be greater than zero")},
+    {"zero", QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText", "must be nonzero")},
     {"closed_loop_unstable",
      QT_TRANSLATE_NOOP("xyt::ui::DiagnosticText", "the closed loop is unstable")},
     {"run_diverged",
