@@ -10,6 +10,7 @@
 #include "ui/report/report_writer.h"
 #include "ui/robustness_view.h"
 #include "ui/session/install_paths.h"
+#include "ui/session/interface_language.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
@@ -58,6 +59,11 @@ struct Options {
                               "exit.",
                               "SESSION.json"};
     QCommandLineOption pdf{"pdf", "With --report: the PDF file to write.", "OUT.pdf"};
+    QCommandLineOption language{
+        "language",
+        "Language of the window: pt_BR (Brazilian Portuguese), en (English), or \"\" for the "
+        "system's; overrides the one chosen in View > Language (--screenshot: en by default).",
+        "CODE"};
     void addTo(QCommandLineParser& parser) const {
         parser.setApplicationDescription(
             "Tuning workbench for XY coordinate-table position controllers");
@@ -69,6 +75,7 @@ struct Options {
         parser.addOption(printExamplesFolder);
         parser.addOption(report);
         parser.addOption(pdf);
+        parser.addOption(language);
         parser.addPositionalArgument("session", "A session file to open.", "[SESSION.json]");
     }
 };
@@ -150,6 +157,20 @@ int main(int argc, char* argv[]) {
     const QCommandLineOption& screenshot = options.screenshot;
     const QCommandLineOption& size = options.size;
     const QCommandLineOption& tab = options.tab;
+
+    // The language, before any widget is built: --language, else English for a screenshot
+    // (the same picture on every machine), else the user's choice (View > Language).
+    QString languageCode =
+        parser.isSet(screenshot) ? QStringLiteral("en") : xyt::ui::storedUiLanguage();
+    if (parser.isSet(options.language)) {
+        languageCode = parser.value(options.language);
+        if (!xyt::ui::uiLanguageCodes().contains(languageCode)) {
+            std::fprintf(stderr, "xytune: --language: expected pt_BR, en or \"\", got '%s'\n",
+                         qPrintable(languageCode));
+            return 2;
+        }
+    }
+    xyt::ui::installUiLanguage(languageCode);
 
     if (parser.isSet(options.report) || parser.isSet(options.pdf))
         return writeReport(parser, options);

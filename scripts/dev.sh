@@ -17,7 +17,8 @@ build="${XYT_BUILD_DIR:-$root/build}"
 packages=(build-essential cmake pkg-config qt6-base-dev libqcustomplot-dev libqcustomplot2.1-qt6
           libeigen3-dev libmatio-dev libgl1-mesa-dev libxkbcommon-dev xvfb xauth
           clang libclang-rt-14-dev clang-format-14 ninja-build
-          dpkg-dev file appstream desktop-file-utils groff-base poppler-utils)
+          dpkg-dev file appstream desktop-file-utils groff-base poppler-utils
+          qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n)
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

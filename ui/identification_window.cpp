@@ -50,8 +50,6 @@ namespace {
 /// The name of the fitted model's set on the pole-zero map.
 constexpr const char* kModelSet = "model";
 
-const QString kSampleTimeItem = QStringLiteral("(sample time)");
-
 QStringList columnNames(const ExperimentTable& table) {
     QStringList names;
     for (const std::string& n : table.names)
@@ -518,7 +516,7 @@ bool IdentificationWindow::loadFile(const QString& path) {
         time_->clear();
         input_->addItems(names);
         output_->addItems(names);
-        time_->addItem(kSampleTimeItem);
+        time_->addItem(tr("(sample time)"));
         time_->addItems(names);
         const int timeLike = guessTimeColumn(names);
         const int timeColumn = table.sampleTimeSeconds ? -1 : timeLike;

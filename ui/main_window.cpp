@@ -41,6 +41,7 @@
 #include "ui/plots/vibration_plot.h"
 #include "ui/report/report_exporter.h"
 #include "ui/robustness_view.h"
+#include "ui/session/interface_language.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
@@ -60,6 +61,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -706,6 +708,7 @@ void MainWindow::buildMenus() {
         for (QCustomPlot* plot : findChildren<QCustomPlot*>())
             resetView(plot);
     });
+    buildLanguageMenu(view);
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&User guide"), QKeySequence::HelpContents, this,
                     [this] { showUserGuide(); });
@@ -745,6 +748,36 @@ QDialog* MainWindow::showWelcome() {
     welcome->raise();
     welcome->activateWindow();
     return welcome;
+}
+
+void MainWindow::buildLanguageMenu(QMenu* view) {
+    // The languages by their own names (a user who cannot read the current one finds theirs);
+    // the choice applies at the next start, when the window is built in it (interface_language.h).
+    QMenu* languages = view->addMenu(tr("&Language"));
+    auto* group = new QActionGroup(languages);
+    const QString stored = storedUiLanguage();
+    const QList<QPair<QString, QString>> choices = {
+        {QString(), tr("&System language")},
+        {QStringLiteral("en"), QStringLiteral("&English")},
+        {QStringLiteral("pt_BR"), QStringLiteral("&Português (Brasil)")}};
+    for (const auto& [code, name] : choices) {
+        QAction* action = languages->addAction(name);
+        action->setCheckable(true);
+        action->setChecked(code == stored);
+        action->setData(code);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code = code] {
+            storeUiLanguage(code);
+            const char* const context = "xyt::ui::MainWindow";
+            QMessageBox::information(
+                this,
+                translatedFor(code, context, QT_TRANSLATE_NOOP("xyt::ui::MainWindow", "Language")),
+                translatedFor(
+                    code, context,
+                    QT_TRANSLATE_NOOP("xyt::ui::MainWindow",
+                                      "The language changes when XY Tune is started again.")));
+        });
+    }
 }
 
 namespace {

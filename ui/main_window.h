@@ -154,6 +154,7 @@ private:
     /// bar that the plant changed with it.
     void chooseMethod(int index);
     void buildMenus();
+    void buildLanguageMenu(QMenu* view);
     void syncControls();
     /// The coupling editor's line: what the evaluation found of the cross-coupling.
     void showCouplingStatus();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
+
 #include <stdexcept>
 #include <string>
 
@@ -9,18 +11,26 @@ namespace xyt {
 /**
  * Invalid input to a core function: a NaN, a zero denominator, a wrong size, a value out of
  * range. what() reads "<field>: <reason>" so a caller can show it next to the field.
+ * The generic reasons (requireFinite, requirePositive, requireNonZero) carry a code the
+ * workbench translates (reasonDiagnostic, diagnostic_catalogue.h); the others are English only.
  */
 class InvalidInput : public std::invalid_argument {
 public:
     InvalidInput(std::string field, const std::string& reason);
+    InvalidInput(std::string field, const char* reason)
+        : InvalidInput(std::move(field), std::string(reason)) {}
+    /// A coded reason: its English text is the reason.
+    InvalidInput(std::string field, const Diagnostic& reason);
     /// The name of the offending input, e.g. "kp" or "plant.den".
     const std::string& field() const noexcept { return field_; }
     /// The reason alone, without the field prefix.
-    const std::string& reason() const noexcept { return reason_; }
+    const std::string& reason() const noexcept { return reason_.text; }
+    /// The reason with its code (uncoded, the English alone, for most throw sites).
+    const Diagnostic& reasonDiagnostic() const noexcept { return reason_; }
 
 private:
     std::string field_;
-    std::string reason_;
+    Diagnostic reason_;
 };
 
 /// @throws InvalidInput when @p value is NaN or infinite.

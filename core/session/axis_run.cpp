@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/axis_run.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/simulation/resample.h"
@@ -75,10 +76,8 @@ void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation&
             restLimitCycle(d.run.measured, static_cast<std::size_t>(rest - times.begin()));
         if (d.limitCycle)
             out.warnings.push_back(
-                "a limit cycle at rest: after the move the measured position keeps oscillating (" +
-                formatNumber(d.limitCycle->peakToPeak, 4) + " mm peak to peak, " +
-                std::to_string(d.limitCycle->turns) +
-                " turns in the last half of the rest), caused by the encoder/DAC quantization");
+                makeDiagnostic("limit_cycle_at_rest", {formatNumber(d.limitCycle->peakToPeak, 4),
+                                                       std::to_string(d.limitCycle->turns)}));
     }
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/contour_run.h"
 
+#include "core/model/diagnostic_catalogue.h"
+
 #include "core/contour/ballbar_circles.h"
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
@@ -92,18 +94,17 @@ void pointsOnSegments(const ContourTrace& t, const CircleSegments& circle, std::
         }
 }
 
-void addAxisWarnings(const ContourTrace& t, std::vector<std::string>& warnings) {
+void addAxisWarnings(const ContourTrace& t, std::vector<Diagnostic>& warnings) {
     for (int i = 0; i < 2; ++i) {
         const SimulationResult& run = t.axes[static_cast<std::size_t>(i)];
         const TrackingMetrics m = trackingMetrics(run);
-        const std::string axis = i == 0 ? "x axis: " : "y axis: ";
+        const std::string axis = i == 0 ? "x" : "y";
         if (m.diverged)
-            warnings.push_back(axis +
-                               "the simulated run diverged (a sample is not a finite number)");
+            warnings.push_back(makeDiagnostic("contour_axis_diverged", {axis}));
         else if (m.saturated)
-            warnings.push_back(axis + "|u| reached the actuator limit of " +
-                               formatNumber(run.umaxVolts) + " V for " +
-                               formatNumber(m.saturatedTimeSeconds) + " s");
+            warnings.push_back(
+                makeDiagnostic("contour_axis_saturated", {axis, formatNumber(run.umaxVolts),
+                                                          formatNumber(m.saturatedTimeSeconds)}));
     }
 }
 
@@ -156,7 +157,7 @@ ContourErrorOptions programContourErrorOptions(const GcodeProgram& program,
 std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program,
                                                         const ContourTrace& trace,
                                                         const Iso230Options& iso,
-                                                        std::vector<std::string>& warnings) {
+                                                        std::vector<Diagnostic>& warnings) {
     const BallbarCircles circles = findBallbarCircles(program);
     if (!circles.first)
         return std::nullopt;
@@ -174,8 +175,7 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
     if (!circles.note.empty())
         warnings.push_back("ISO 230-4: " + circles.note);
     if (test.x.size() < 3 || (circles.opposite && test.reverseX.size() < 3)) {
-        warnings.push_back(
-            "ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures");
+        warnings.push_back(makeDiagnostic("iso230_circle_too_short"));
         return std::nullopt;
     }
     if (circles.opposite) {
@@ -196,8 +196,7 @@ void addReversalSpikeWarning(const Session& session, ContourRun& out) {
     for (const ReversalSpike& spike : out.circular->iso.reversalSpikes)
         largest = std::max(largest, std::abs(spike.heightMm));
     if (largest > 0.0)
-        out.warnings.push_back("reversal spikes up to " + formatNumber(largest, 4) +
-                               " mm at the quadrant changes (the table's friction and backlash)");
+        out.warnings.push_back(makeDiagnostic("reversal_spikes", {formatNumber(largest, 4)}));
 }
 
 ContourRun runProgramContour(const Session& session, const GcodeProgram& program,
@@ -274,7 +273,7 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
             feedbackOnly = std::move(plain);
         }
     }
-    out.warnings = program.warnings;
+    out.warnings.assign(program.warnings.begin(), program.warnings.end());
     addAxisWarnings(out.trace, out.warnings);
     if (out.couplingStability && !out.couplingStability->warning.empty())
         out.warnings.push_back("cross-coupling: " + out.couplingStability->warning);
@@ -328,7 +327,7 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
                 iso230Circular(test.reverseX, test.reverseY, test.nominal, options.iso);
             out.circular = std::move(test);
         } else {
-            out.warnings.push_back("the circle lasts fewer than 3 samples: no ISO 230-4 figures");
+            out.warnings.push_back(makeDiagnostic("circle_too_short"));
         }
     } else {
         out.circular = ballbarTestOfProgram(program, out.trace, options.iso, out.warnings);

@@ -4,6 +4,7 @@
 #include "core/contour/contour_metrics.h"
 #include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
+#include "core/model/diagnostic.h"
 #include "core/session/coupling_stability.h"
 #include "core/session/session.h"
 #include "core/simulation/cross_coupled_run.h"
@@ -94,7 +95,7 @@ struct ContourRun {
     /// When the program holds a full circle (see ContourCircularTest).
     std::optional<ContourCircularTest> circular;
     /// The program's warnings, then each axis' ("x axis: |u| reached the 2.5 V limit ...").
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
     /// With cross-coupling on and ContourRunOptions::compareIndependentAxes: the same program
     /// with independent axes.
     std::optional<IndependentAxesRun> independent;
@@ -149,6 +150,6 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
 std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& program,
                                                         const ContourTrace& trace,
                                                         const Iso230Options& iso,
-                                                        std::vector<std::string>& warnings);
+                                                        std::vector<Diagnostic>& warnings);
 
 } // namespace xyt

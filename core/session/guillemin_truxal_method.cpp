@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/guillemin_truxal_method.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/number_format.h"
 #include "core/model/root_matching.h"
 #include "core/session/axis_run.h"
@@ -47,7 +48,7 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+        out.warnings.push_back(makeDiagnostic("no_digital_implementation", {e.what()}));
     }
 }
 
@@ -72,7 +73,7 @@ void evaluateGt(const Session& session, const AxisSettings& axis, int axisIndex,
     out.metrics = trackingMetrics(out.run);
     out.step = stepCharacteristics(out.gt->closedLoop);
     if (!out.gt->stable)
-        out.warnings.push_back("the closed loop is unstable");
+        out.warnings.push_back(makeDiagnostic("closed_loop_unstable"));
     if (withDigital)
         evaluateGtDigital(session, axis, axisIndex, duration, out);
 }

@@ -2,6 +2,7 @@
 #include "core/session/pid_feedforward_method.h"
 
 #include "core/analysis/frequency_response.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 #include "core/model/root_matching.h"
@@ -162,15 +163,15 @@ template <typename Run> auto namingPlant(int axisIndex, Run run) {
 
 void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEvaluation& out) {
     if (!d.stable)
-        out.warnings.push_back("the closed loop is unstable");
+        out.warnings.push_back(makeDiagnostic("closed_loop_unstable"));
     if (!out.run.uFeedforward.empty()) {
         double peak = 0.0;
         for (double v : out.run.uFeedforward)
             peak = std::max(peak, std::abs(v));
         if (peak > d.gains.maxOutput)
-            out.warnings.push_back("the feedforward alone needs " + formatNumber(peak, 4) +
-                                   " V on this trajectory, beyond the output limit of " +
-                                   formatNumber(d.gains.maxOutput, 4) + " V");
+            out.warnings.push_back(
+                makeDiagnostic("feedforward_beyond_limit",
+                               {formatNumber(peak, 4), formatNumber(d.gains.maxOutput, 4)}));
     }
     const TrajectorySettings& t = session.trajectory;
     if (t.kind == TrajectoryKind::Cubic && t.profile == MoveProfile::Cubic &&
@@ -184,10 +185,8 @@ void addWarnings(const Session& session, const PidFeedforwardDesign& d, AxisEval
             std::abs(2.0 * l[2]), std::abs(2.0 * l[2] + 6.0 * l[3] * (t.tfSeconds - t.t0Seconds)));
         const double spike = std::abs(d.gains.ff3) * step / d.tsSeconds;
         if (spike > 0.01 * d.gains.maxOutput)
-            out.warnings.push_back("the cubic's acceleration step becomes a " +
-                                   formatNumber(spike, 3) +
-                                   " V spike of the FF3 term (one controller period); the "
-                                   "quintic move has no acceleration step");
+            out.warnings.push_back(
+                makeDiagnostic("ff3_acceleration_spike", {formatNumber(spike, 3)}));
     }
 }
 
@@ -222,7 +221,7 @@ void evaluateDigital(const Session& session, int axisIndex, double duration,
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+        out.warnings.push_back(makeDiagnostic("no_digital_implementation", {e.what()}));
     }
 }
 

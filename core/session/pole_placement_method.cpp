@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/pole_placement_method.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/number_format.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
@@ -97,10 +98,9 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
                    ? zpetcStepCharacteristics(*out.pp, *out.zpetc)
                    : loopStepCharacteristics(*out.pp);
     if (!out.step.stable)
-        out.warnings.push_back("the closed loop is unstable");
+        out.warnings.push_back(makeDiagnostic("closed_loop_unstable"));
     if (out.metrics.saturated)
-        out.warnings.push_back("|u| exceeds the actuator limit (the discrete loop is simulated "
-                               "without saturation)");
+        out.warnings.push_back(makeDiagnostic("pp_u_exceeds_limit"));
     if (!withDigital)
         return;
     try {
@@ -116,7 +116,7 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back("no digital implementation: " + std::string(e.what()));
+        out.warnings.push_back(makeDiagnostic("no_digital_implementation", {e.what()}));
     }
 }
 

@@ -6,6 +6,7 @@
 #include "core/simulation/stick_slip.h"
 
 #include "core/analysis/loop_responses.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/axis_run.h"
@@ -401,15 +402,11 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
         designMethodModule(axis.method)
             .evaluate(session, axisIndex, duration.seconds, withDigital, out);
         if (out.metrics.diverged)
-            out.warnings.push_back("the simulated run diverged (a sample is not a finite number): "
-                                   "it has no tracking figures");
+            out.warnings.push_back(makeDiagnostic("run_diverged"));
         addStickSlipWarnings(out);
         if (axis.method == DesignMethod::PolePlacementZpetc &&
             (axis.gt.flexibleMode.present() || axis.gt.notch.present()))
-            out.warnings.push_back(
-                "the flexible mode and the notch of gt apply to a continuous plant: this "
-                "pole-placement axis runs its ARX model, which holds whatever mode its data "
-                "showed (identify it from a log that excites the mode)");
+            out.warnings.push_back(makeDiagnostic("flexible_mode_on_arx"));
         const TrajectorySettings& t = session.trajectory;
         if (withDigital && t.shaping.active() && !out.run.t.empty())
             out.shaping = compareShaping(session, axisIndex, duration.seconds, out.run);
@@ -421,7 +418,7 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 throw InvalidInput("specification." + e.field(), e.reason());
             }
             if (!out.moveSettle->reachedMoveEnd)
-                out.warnings.push_back("the run ends before the move does (tf): no settle figures");
+                out.warnings.push_back(makeDiagnostic("run_ends_before_move"));
         }
         // The move-only evaluation of chooseRunDuration (withDigital false) needs no margins.
         if (withDigital) {
@@ -429,7 +426,7 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 if (const std::optional<LoopTransferFunctions> loop = axisLoop(out))
                     out.margins = stabilityMargins(loop->openLoop);
             } catch (const InvalidInput& e) {
-                out.warnings.push_back(std::string("no stability margins: ") + e.what());
+                out.warnings.push_back(makeDiagnostic("no_stability_margins", {e.what()}));
             }
         }
         std::optional<LoopMarginFigures> margins;

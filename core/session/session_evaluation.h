@@ -147,7 +147,8 @@ struct AxisEvaluation {
     /// The specification judged on the digital implementation's run (its tracking and
     /// move-and-settle figures; the step and margins are the design's); unset without one.
     std::optional<SpecificationCheck> implementationCheck;
-    std::vector<std::string> warnings;
+    /// What the user should know about this axis' result (coded: diagnostic_catalogue.h).
+    std::vector<Diagnostic> warnings;
     /// The digital implementation of the axis; unset when the axis could not be designed.
     /// Shared (its runs hold megabytes at the default length, and evaluations are copied into
     /// every view on each slider step): set once by the evaluation, never changed.

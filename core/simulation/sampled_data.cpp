@@ -3,6 +3,7 @@
 
 #include "core/simulation/table_dynamics.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/model/state_space.h"
@@ -844,7 +845,7 @@ double zDampingRatio(std::complex<double> z) {
     return -s.real() / magnitude;
 }
 
-std::optional<std::string>
+std::optional<Diagnostic>
 digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
                       double referenceMinDamping, double tsSeconds) {
     double largest = 0.0, minDamping = 1.0;
@@ -854,15 +855,13 @@ digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
         largest = std::max(largest, std::abs(z));
         minDamping = std::min(minDamping, zDampingRatio(z));
     }
-    const std::string at = "the digital loop at Ts = " + formatNumber(tsSeconds) + " s";
     if (!(largest < 1.0))
-        return at +
-               " is unstable (its largest closed-loop pole has |z| = " + formatNumber(largest) +
-               "); lower the controller sample time";
+        return makeDiagnostic("digital_loop_unstable",
+                              {formatNumber(tsSeconds), formatNumber(largest)});
     if (minDamping < 0.8 * referenceMinDamping)
-        return at + " is much less damped than the design (damping ratio " +
-               formatNumber(minDamping, 3) + " against " + formatNumber(referenceMinDamping, 3) +
-               " in the z-plane poles); lower the controller sample time or the delay";
+        return makeDiagnostic("digital_loop_less_damped",
+                              {formatNumber(tsSeconds), formatNumber(minDamping, 3),
+                               formatNumber(referenceMinDamping, 3)});
     return std::nullopt;
 }
 

@@ -5,6 +5,7 @@
 #include "core/design/pole_placement.h"
 #include "core/design/servo_pid.h"
 #include "core/design/zpetc.h"
+#include "core/model/diagnostic.h"
 #include "core/model/transfer_function.h"
 #include "core/simulation/loop_stepper.h"
 #include "core/simulation/simulation.h"
@@ -211,9 +212,10 @@ double zDampingRatio(std::complex<double> z);
 /**
  * The warning when the digital loop is unstable, or much less damped (minimum damping ratio
  * below 0.8 times) than @p referenceMinDamping, the continuous design's (or, for a discrete
- * design, the loop without the delay). Poles within 1e-9 of z = 0 are left out.
+ * design, the loop without the delay). Poles within 1e-9 of z = 0 are left out. Coded
+ * "digital_loop_unstable" or "digital_loop_less_damped" (diagnostic_catalogue.h).
  */
-std::optional<std::string>
+std::optional<Diagnostic>
 digitalDampingWarning(const std::vector<std::complex<double>>& digitalPoles,
                       double referenceMinDamping, double tsSeconds);
 

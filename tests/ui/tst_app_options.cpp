@@ -28,6 +28,10 @@ void TstAppOptions::optionsWithoutADisplay_data() {
     // tests/install's install_prefix checks the installed program's).
     QTest::newRow("--print-examples-folder")
         << QStringList{"--print-examples-folder"} << 0 << "/resources/examples\n";
+    QTest::newRow("--help names --language") << QStringList{"--help"} << 0 << "--language <CODE>";
+    QTest::newRow("unknown language")
+        << QStringList{"--screenshot", "never-written.png", "--language", "xx"} << 2
+        << "--language: expected pt_BR, en";
 }
 
 void TstAppOptions::optionsWithoutADisplay() {

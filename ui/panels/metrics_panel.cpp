@@ -4,6 +4,7 @@
 #include "core/model/errors.h"
 #include "core/session/specification_advice.h"
 #include "ui/panels/number_field.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -409,9 +410,9 @@ namespace {
 QString noMarginsReason(const AxisEvaluation& e) {
     if (!e.ok)
         return QString::fromStdString(e.errorField + ": " + e.error);
-    for (const std::string& w : e.warnings)
-        if (w.rfind("no stability margins", 0) == 0)
-            return QString::fromStdString(w);
+    for (const Diagnostic& w : e.warnings)
+        if (w.code == "no_stability_margins")
+            return diagnosticText(w);
     return QObject::tr("the axis has no loop to analyse");
 }
 
@@ -608,8 +609,8 @@ void MetricsPanel::showAxis(const Session& session, const AxisEvaluation& a, int
         notices << tr("%1: no design (%2: %3)")
                        .arg(header, QString::fromStdString(a.errorField),
                             QString::fromStdString(a.error));
-    for (const std::string& w : a.warnings)
-        notices << tr("%1: %2").arg(header, QString::fromStdString(w));
+    for (const Diagnostic& w : a.warnings)
+        notices << tr("%1: %2").arg(header, diagnosticText(w));
     // Which rows the specification judges, and whether this axis passes them.
     QMap<int, bool> judged = {{MaxErrorPct, a.check.trackingError},
                               {MaxU, a.check.noSaturation},

@@ -3,11 +3,16 @@
 
 #include "core/model/coefficient_parser.h"
 #include "core/model/errors.h"
+#include "ui/session/diagnostic_text.h"
 
 namespace xyt::ui {
 
 QString formatNumber(double v) {
     return QString::number(v, 'g', 10);
+}
+
+QString withDecimalPoint(QString text) {
+    return text.replace(QLatin1Char(','), QLatin1Char('.'));
 }
 
 NumberField::NumberField(const QString& fieldName, Validator validator, QWidget* parent)
@@ -28,7 +33,8 @@ void NumberField::setValue(double v) {
 
 bool NumberField::commit() {
     try {
-        const double v = parseNumber(text().toStdString(), fieldName_.toStdString());
+        const double v =
+            parseNumber(withDecimalPoint(text()).toStdString(), fieldName_.toStdString());
         if (validator_)
             validator_(v);
         clearError();
@@ -36,7 +42,7 @@ bool NumberField::commit() {
         emit valueAccepted(v);
         return true;
     } catch (const InvalidInput& e) {
-        showError(QString::fromStdString(e.reason()));
+        showError(diagnosticText(e.reasonDiagnostic()));
         return false;
     }
 }

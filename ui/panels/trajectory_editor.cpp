@@ -303,7 +303,7 @@ bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::strin
         if (!(samples <= static_cast<double>(sampleLimit())))
             throw InvalidInput(
                 "trajectory.dt",
-                QString("a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory")
+                tr("a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory")
                     .arg(summary.runSeconds, 0, 'g', 6)
                     .arg(t.dtSeconds, 0, 'g', 6)
                     .arg(samples, 0, 'g', 3)

@@ -2,6 +2,7 @@
 #include "ui/plots/time_response_plot.h"
 
 #include "ui/plots/tick_spacing.h"
+#include "ui/session/diagnostic_text.h"
 
 #include "ui/plots/plot_tools.h"
 
@@ -155,8 +156,8 @@ TimeResponsePlot::TimeResponsePlot(QWidget* parent) : PlotWidget(parent) {
 void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisTitle,
                                 double umaxVolts, const QStringList& extraNotices) {
     QStringList notices = extraNotices;
-    for (const std::string& w : axis.warnings)
-        notices << QString::fromStdString(w);
+    for (const Diagnostic& w : axis.warnings)
+        notices << diagnosticText(w);
     notice_->setSevere(!axis.ok || axis.metrics.diverged);
     notice_->setLines(notices);
     // Patrick, Ishak and Adnan's loop has no actuator limit: the command is shown unclipped, and

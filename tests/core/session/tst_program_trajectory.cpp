@@ -346,7 +346,7 @@ void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation() {
         (cw ? cwY : ccwY).push_back(trace.y[k]);
     }
     QVERIFY(cwX.size() > 1000 && ccwX.size() > 1000);
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
     const auto testResult = ballbarTestOfProgram(read, trace, Iso230Options{}, warnings);
     QVERIFY(testResult);
     QVERIFY(warnings.empty());

@@ -361,7 +361,8 @@ void TestSampledData::dampingWarningAtALongSampleTime() {
     }));
     const auto warning = digitalDampingWarning(poles, 1.0, 0.5);
     QVERIFY(warning.has_value());
-    QVERIFY2(warning->find("is unstable") != std::string::npos, warning->c_str());
+    QCOMPARE(warning->code, std::string("digital_loop_unstable"));
+    QVERIFY2(warning->text.find("is unstable") != std::string::npos, warning->text.c_str());
 }
 
 // Source: the field-level errors.
