@@ -2,6 +2,364 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_BR">
 <context>
+    <name>DesignReport</name>
+    <message>
+        <source>&lt;h1&gt;XY Tune design report&lt;/h1&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>XY Tune version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Session file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(unsaved session)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation type="unfinished">Eixo %1</translation>
+    </message>
+    <message>
+        <source>%1%2</source>
+        <translation type="unfinished">%1* {1%2?}</translation>
+    </message>
+    <message>
+        <source> (%1)</source>
+        <translation type="unfinished"> (%1)</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Verdict&lt;/h2&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;span style=&apos;color:#1b7f2a&apos;&gt;✓&lt;/span&gt; Both axes meet the specification, as designed and as implemented.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;span style=&apos;color:#c62828&apos;&gt;✗&lt;/span&gt; The design fails the specification:&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Limits this design would meet: %1.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation type="unfinished">, </translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Specification&lt;/h2&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unit step: settling time (2 %) ≤ %1 s, overshoot ≤ %2 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tracking: max |e| ≤ %1 % of the travel, |u| ≤ %2 V and never clipped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point-to-point move: settled into ±%1 mm within %2 s of its end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loop margins: phase margin ≥ %1°, gain margin ≥ %2 dB (0: none stated)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Trajectory and implementation&lt;/h2&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 move from %2 mm to %3 mm, from t = %4 s to %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quintic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cubic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Circle of radius %1 mm at %2 rad/s, ramp-in %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G-code program %1, feed scale %2, max acceleration %3 mm/s², max jerk %4 mm/s³</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (tracking time %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ti = kp/ki</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulation: %1 (step %2 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Actuator limit: |u| ≤ %1 V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Digital PI: Ts = %1 s, %2 discretization; anti-windup %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computation delay %1 samples; encoder %2; DAC %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm per count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ideal</source>
+        <translation type="unfinished">ideal</translation>
+    </message>
+    <message>
+        <source>%1 bits over ±umax</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 (%2)</source>
+        <translation type="unfinished">Eixo %1 (%2)</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Figures against the specification&lt;/h3&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Plots&lt;/h3&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Plant&lt;/h3&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARX model A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (position in mm, u in V)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a valid model: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>model units per mm of trajectory: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>flexible mode: %1 Hz, damping %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; anti-resonance %1 Hz, damping %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>as every run and analysis sees it: G(s) = (%1) / (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a valid plant: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>identified as %1 from %2 (%3 samples at %4 s), fit %5 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, on validation data %1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entered by hand: the session records no identification</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>table friction: Coulomb %1 V, static %2 V, viscous %3 V per mm/s, backlash %4 mm, amplifier deadband %5 V; friction compensation %6 % (band %7 mm/s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Design: %1&lt;/h3&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k&lt;sub&gt;p&lt;/sub&gt; = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZPETC feedforward on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZPETC feedforward off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 = %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Settings: %1&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;No design&lt;/b&gt;: %1: %2&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Coefficients of the design:&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th&gt;Name&lt;/th&gt;&lt;th&gt;Value&lt;/th&gt;&lt;th&gt;Unit&lt;/th&gt;&lt;/tr&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Controller&lt;/h3&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>digital PI at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>difference equation: %1, e = r − y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>num = [%1], den = [%2] (ascending powers of z&lt;sup&gt;−1&lt;/sup&gt;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>notch at %1 Hz, width %2 Hz, depth %3 dB on the error: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, prewarped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no digital controller: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the RST law above runs as designed, at T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the method&apos;s step runs at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (File › Export › Firmware C header)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>digital loop: least damping of its z-plane poles %1 (the design&apos;s %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Digital implementation&lt;/b&gt;&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no design: %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Warnings&lt;/h3&gt;&lt;p&gt;None.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Warnings&lt;/h3&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h2 style=&apos;page-break-before: always&apos;&gt;Both axes: the XY contour&lt;/h2&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>radial error of the circle: max %1 mm, RMS %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contour error of the program: max %1 mm, RMS %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ISO 230-4: circular deviation G %1 mm, radial deviation F max %2 mm, F min %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>program: %1</source>
+        <translation type="unfinished">programa: %1</translation>
+    </message>
+    <message>
+        <source>input shaper %1 on the reference at %2 Hz, damping %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; axis %1: residual vibration %2 mm shaped, %3 mm unshaped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cross-coupled contouring controller (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), %3 contour estimate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cross-coupling: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FoldButton</name>
+    <message>
+        <source>%1: click to show or hide these settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>ITAE</source>
@@ -367,6 +725,84 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>ReportMetrics</name>
+    <message>
+        <source>n/a</source>
+        <translation type="unfinished">n/d</translation>
+    </message>
+    <message>
+        <source>&gt; %1 (not settled in the run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished">não</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No figures: the axis has no design (%1: %2).&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation type="unfinished">—</translation>
+    </message>
+    <message>
+        <source>≤ %1</source>
+        <translation type="unfinished">≤ %1</translation>
+    </message>
+    <message>
+        <source> (flagged, not applied)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>|e| ≤ %1</source>
+        <translation type="unfinished">|e| ≤ %1</translation>
+    </message>
+    <message>
+        <source>same step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unstable</source>
+        <translation type="unfinished">instável</translation>
+    </message>
+    <message>
+        <source>same loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation type="unfinished">≥ %1</translation>
+    </message>
+    <message>
+        <source>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th align=&apos;left&apos;&gt;Figure&lt;/th&gt;&lt;th&gt;Limit&lt;/th&gt;&lt;th&gt;As designed&lt;/th&gt;&lt;th&gt;As implemented%1&lt;/th&gt;&lt;/tr&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (digital, Ts = %1 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ReportWriter</name>
+    <message>
+        <source>Cannot write the report to %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No report: the session&apos;s run is refused: %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>XY Tune design report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>XY Tune %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>xyt::ui::BodePlot</name>
     <message>
         <source>Bode diagram</source>
@@ -455,6 +891,10 @@ falha: %1</translation>
     <message>
         <source>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</source>
         <translation>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</translation>
+    </message>
+    <message>
+        <source>Bode diagram of the loop L(jω) = C(jω) G(jω): magnitude (dB) and phase (°) against ω (rad/s) on an adaptive grid, with the gain and phase margins drawn where they are read (green when they meet the specification&apos;s minima, red when not), and |S| = |1/(1 + L)| and |T| = |L/(1 + L)|.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -703,6 +1143,10 @@ falha: %1</translation>
         <source>; without feedforward G %1</source>
         <translation>; sem pré-alimentação G %1</translation>
     </message>
+    <message>
+        <source>The XY contour: the programmed path, the traced path of both axes&apos; run, and the contour error (mm, the signed distance from each traced point to the nearest point of the path) magnified along the path normal by the &quot;error ×&quot; factor.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::CouplingSweepDialog</name>
@@ -942,6 +1386,14 @@ falha: %1</translation>
         <source> These are the session&apos;s gains.</source>
         <translation> Estes são os ganhos da sessão.</translation>
     </message>
+    <message>
+        <source>Stop the sweep; the cells run so far are shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The sweep&apos;s map: each cell one (kp, ki) pair of the cross-coupling, coloured by the program&apos;s max contour error (mm); hover a cell for its figures, click it to select it</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::CrossCouplingEditor</name>
@@ -1055,6 +1507,10 @@ falha: %1</translation>
     <message>
         <source>feasible region</source>
         <translation>região viável</translation>
+    </message>
+    <message>
+        <source>Design space: each cell of the (ωn, kp) grid is one Guillemin–Truxal design run on the session&apos;s trajectory, coloured by the chosen criterion; feasible cells meet every limit of the specification. Click a cell to take its ωn and kp.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1289,6 +1745,78 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>Load design from the design space</source>
         <translation>Carregar projeto do espaço de projeto</translation>
     </message>
+    <message>
+        <source>Smallest ωn (rad/s) of the grid: the reference model&apos;s natural frequency of the first row of designs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest ωn (rad/s) of the grid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of ωn values of the grid (rows); each cell is one design run on the session&apos;s trajectory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smallest proportional gain kp (V per model unit) of the grid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest proportional gain kp (V per model unit) of the grid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Number of kp values of the grid (columns)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Space the ωn and kp values evenly on a logarithmic scale (else linearly between the bounds)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The figure that picks the best feasible design: minimized (ITAE, max |e|, RMSE, max |u|, settle time) or maximized (the margins)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The figure the heat map&apos;s colours show for each design of the grid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour the heat map by the logarithm of the figure (its values often span decades)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum settling time (s, 2 % band) of the closed loop&apos;s unit step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum overshoot (%) of the closed loop&apos;s unit step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum tracking error max |e| as a percentage of the travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Actuator limit umax (V): a design whose run asks for more is infeasible; the session&apos;s |u| limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Minimum phase margin (°) of the loop, 180° + arg L(jωc); 0: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Minimum gain margin (dB) of the loop, −20 log10 |L(jω180)|; 0: none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the study: every design of the grid on the session&apos;s trajectory at its dt, judged against the specification</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the study; the designs computed so far are shown</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::DiagnosticText</name>
@@ -1410,6 +1938,10 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     <message>
         <source>No stable plant: no envelope.</source>
         <translation>Nenhuma planta estável: sem envoltória.</translation>
+    </message>
+    <message>
+        <source>Envelope of the perturbed plants&apos; runs: the range (min to max over the stable plants) of the chosen signal (error or output in mm, command in V) around the nominal run, against time (s).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1784,6 +2316,22 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>. %1 jogs, residual sd %2 V.</source>
         <translation>. %1 jogs, dp do resíduo %2 V.</translation>
     </message>
+    <message>
+        <source>The log&apos;s column of the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The Stribeck curve: each jog&apos;s steady command (V, mean ± one standard deviation over its cruise) against its velocity (mm/s), and the fitted friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read a jog log (CSV with time, reference, position and command columns) and estimate the friction levels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the estimated levels as the current axis&apos; table friction (one undoable step)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::FrictionEditor</name>
@@ -1937,6 +2485,10 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     <message>
         <source>No stable plant: no distribution.</source>
         <translation>Nenhuma planta estável: sem distribuição.</translation>
+    </message>
+    <message>
+        <source>Histogram of the chosen figure (RMSE or max |e| in mm, max |u| in V) over the stable perturbed plants, with the specification&apos;s limit drawn.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2333,6 +2885,74 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>(sample time)</source>
         <translation>(período de amostragem)</translation>
     </message>
+    <message>
+        <source>Remove a straight line fitted by least squares from the input and the output before the fit (else their means)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read a logged experiment: CSV/TSV, LabVIEW .lvm or MATLAB .mat, with the input in V and the position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A second record of the same axis on which the candidates&apos; fit is judged (else on the estimation data)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The column of the command u (V) sent to the amplifier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The column of the measured position y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The column of the time (s), or none: the sample time Ts below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sample time Ts (s) of the record when it has no time column</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The unit of the output column: mm, or m (converted to mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARX: A y = B u + e by least squares; OE: y = B/F u + e and BJ: y = B/F u + C/D e by prediction error (Levenberg–Marquardt); GT3: Braga et al.&apos;s k0/(s³ + a1 s² + a2 s) fitted to the output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Order %1 of the model: na, nb, nc, nd, nf the numbers of coefficients of A, B, C, D, F; nk the input delay in samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The most Levenberg–Marquardt iterations of an OE, BJ or GT3 fit before it stops with the best estimate so far</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Estimate the model of the chosen structure and orders; it is added to the candidates with its fit, AIC and residual tests</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the fit running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make the selected model axis X&apos;s plant (an undoable step): GT3 as the Guillemin–Truxal plant, ARX/OE/BJ as the pole-placement model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Make the selected model axis Y&apos;s plant (an undoable step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The measured output y (mm) against time (s) and the selected model&apos;s simulated output ŷ from the same input</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The residuals&apos; autocorrelation and their cross-correlation with the input against the lag, with the 99 % confidence band of white, independent residuals</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::ImplementationEditor</name>
@@ -2576,10 +3196,6 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <translation>Limite de |u| (V)</translation>
     </message>
     <message>
-        <source>Sample time of the digital PI in the exports</source>
-        <translation>Período de amostragem do PI digital nas exportações</translation>
-    </message>
-    <message>
         <source>Tustin</source>
         <translation>Tustin</translation>
     </message>
@@ -2590,10 +3206,6 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     <message>
         <source>PI discretization</source>
         <translation>Discretização do PI</translation>
-    </message>
-    <message>
-        <source>How the PI is discretized at the controller sample time</source>
-        <translation>Como o PI é discretizado no período de amostragem do controlador</translation>
     </message>
     <message>
         <source>Controller Ts (s)</source>
@@ -2851,6 +3463,46 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>The language changes when XY Tune is started again.</source>
         <translation>O idioma muda quando o XY Tune for iniciado novamente.</translation>
     </message>
+    <message>
+        <source>The parameter the parameter locus sweeps over its slider&apos;s range, the other held at the design&apos;s value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the current axis is controlled: Guillemin–Truxal PI (Braga et al.), pole placement + ZPETC (Patrick, Ishak and Adnan) or LinuxCNC&apos;s PID with command feedforward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ωn (rad/s): the natural frequency of the 4th-order reference model G_R(s); the PI follows as f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al. Eq. 11–18)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kp (V per model unit): the PI&apos;s proportional gain; with ωn it sets ki = kp ψ1 = ωn⁴/k0 and the reference model&apos;s f3 = kp k0/ωn³</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Actuator limit umax (V): every run clips the command to ±umax, and the anti-windup acts at it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller sample time Ts (s) of the digital PI or PID: the digital implementation runs and the exports are at it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the PI kp + ki/s is discretized at the controller sample time: Tustin s = (2/Ts)(z − 1)/(z + 1), or backward Euler s = (z − 1)/(z Ts)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tutorials...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Command-line reference</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::MethodParameterEditor</name>
@@ -2952,46 +3604,6 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     <message>
         <source>Ms = max |S|</source>
         <translation>Ms = máx |S|</translation>
-    </message>
-    <message>
-        <source>RMSE improvement of the ZPETC feedforward over the loop alone</source>
-        <translation>Melhora do RMSE da pré-alimentação ZPETC em relação à malha sozinha</translation>
-    </message>
-    <message>
-        <source>integral of t·|e(t)| over the run</source>
-        <translation>integral de t·|e(t)| ao longo da simulação</translation>
-    </message>
-    <message>
-        <source>From the end of the move (tf) until |e| stays inside the in-position window</source>
-        <translation>Do fim do movimento (tf) até |e| ficar dentro da janela de posição</translation>
-    </message>
-    <message>
-        <source>How far the axis went beyond the target, in the direction of travel</source>
-        <translation>Quanto o eixo passou do alvo, no sentido do movimento</translation>
-    </message>
-    <message>
-        <source>How much the loop gain may grow (dB) before the closed loop becomes unstable; ∞: never</source>
-        <translation>Quanto o ganho de malha pode crescer (dB) antes de a malha fechada ficar instável; ∞: nunca</translation>
-    </message>
-    <message>
-        <source>Phase lag that would bring L to −1 at the gain crossover</source>
-        <translation>Atraso de fase que levaria L a −1 na frequência de cruzamento de ganho</translation>
-    </message>
-    <message>
-        <source>Extra delay the loop tolerates: phase margin / crossover frequency</source>
-        <translation>Atraso adicional que a malha tolera: margem de fase / frequência de cruzamento</translation>
-    </message>
-    <message>
-        <source>1 / (closest distance of L to −1): 1.2–2 is a usual target</source>
-        <translation>1 / (menor distância de L a −1): 1.2–2 é um alvo usual</translation>
-    </message>
-    <message>
-        <source>max |e| as a percentage of the travel</source>
-        <translation>máx |e| como porcentagem do curso</translation>
-    </message>
-    <message>
-        <source>Least damping ratio of the digital closed loop&apos;s poles (s = ln z / Ts); the design&apos;s in the tooltip</source>
-        <translation>Menor coeficiente de amortecimento dos polos da malha fechada digital (s = ln z / Ts); o do projeto na dica</translation>
     </message>
     <message>
         <source>Tracking the trajectory</source>
@@ -3279,6 +3891,82 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated without a limit; |u| would be clipped this long</source>
         <translation>* não aplicado: a malha discreta de Patrick, Ishak e Adnan é simulada sem limite; |u| seria limitado por este tempo</translation>
     </message>
+    <message>
+        <source>RMSE (mm): the root mean square of the tracking error e = r − y over the samples of the run on the trajectory.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |e| (mm): the largest absolute tracking error e = r − y over the run on the trajectory.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |e| (%): the largest absolute tracking error as a percentage of the travel; judged against the specification&apos;s maximum error.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |u| (V): the largest absolute command applied to the plant over the run (after the ±umax limit).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>saturated (s): the time the command spends clipped at ±umax during the run (sample count × dt).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ITAE (mm·s²): the integral of t·|e(t)| over the run (trapezoidal rule on the samples); it weighs late errors more than early ones.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZPETC gain (%): the RMSE improvement of the ZPETC feedforward over the loop alone, 100 (1 − RMSE with / RMSE without).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>settle time (s): from the end of the move (tf) until |e| stays inside the in-position window; judged against the specification&apos;s settle limit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>final e (mm): the tracking error r − y at the last sample of the run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overrun (mm): how far the axis went beyond the target after tf, in the direction of travel (0 when it never passed it).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>settling 2 % (s): the time after which the closed loop&apos;s unit step stays within ±2 % of its final value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overshoot (%): the unit step&apos;s peak above its final value, 100 (peak − final)/final; judged against the specification&apos;s maximum overshoot.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RMSE (mm) of the digital implementation: the same figure for the sampled-data loop (controller at its Ts, hold, quantization, limit, delay); amber when it differs from the design&apos;s by more than 5 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>max |e| (mm) of the digital implementation: the largest absolute error of the sampled-data loop&apos;s run; amber when it differs from the design&apos;s by more than 5 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min ζ: the least damping ratio of the digital closed loop&apos;s poles, ζ = −Re s/|s| with s = ln z / Ts; the design&apos;s in the tooltip.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gain margin (dB): −20 log10 |L(jω180)| at the phase crossover ω180 where arg L = −180°: how much the loop gain may grow before the closed loop becomes unstable; ∞: never. Computed on the continuous loop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Phase margin (°): 180° + arg L(jωc) at the gain crossover ωc where |L| = 1; computed on the continuous loop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delay margin (s): the extra loop delay the closed loop tolerates, phase margin (rad) / ωc, the smallest over the gain crossovers.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / the closest distance of L to −1; 1.2–2 is a usual target.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::NumberField</name>
@@ -3349,6 +4037,10 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>poles on the boundary are passed on small indentations: the curve closes at infinity there</source>
         <translation>polos no limite são contornados por pequenas indentações: a curva se fecha no infinito ali</translation>
     </message>
+    <message>
+        <source>Nyquist diagram: L(jω) in the complex plane for ω from 0 to ∞ (mirrored for negative ω), with the critical point −1; Z = N + P counts the closed-loop unstable poles from the encirclements N of −1 and the open-loop unstable poles P.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::NyquistView</name>
@@ -3403,6 +4095,10 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>unstable below %1 = %2</source>
         <translation>instável abaixo de %1 = %2</translation>
     </message>
+    <message>
+        <source>Parameter locus: the closed-loop poles as the chosen parameter (ωn or kp) sweeps its range, with the design&apos;s value marked and the value where the loop turns unstable (a pole crossing the imaginary axis) marked.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::ParameterLocusView</name>
@@ -3438,16 +4134,17 @@ Sem a compensação de atrito: G %1 mm</translation>
         <translation> valor</translation>
     </message>
     <message>
-        <source>%1: type a value (scientific notation such as 2.5e3 is accepted)</source>
-        <translation>%1: digite um valor (notação científica como 2.5e3 é aceita)</translation>
-    </message>
-    <message>
         <source>%1, beyond the slider (%2 to %3)</source>
         <translation>%1, além do controle deslizante (%2 a %3)</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number from %3 to %4</source>
         <translation>%1: &apos;%2&apos; não é um número de %3 a %4</translation>
+    </message>
+    <message>
+        <source>%1
+Type a value (scientific notation such as 2.5e3 is accepted).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3475,10 +4172,6 @@ Sem a compensação de atrito: G %1 mm</translation>
     <message>
         <source>FF3 (jerk)</source>
         <translation>FF3 (jerk)</translation>
-    </message>
-    <message>
-        <source>The gain %1 as a percentage of the plant&apos;s exact inverse: 100 % cancels the plant&apos;s dynamics along the trajectory</source>
-        <translation>O ganho %1 como porcentagem da inversa exata da planta: 100 % cancela a dinâmica da planta ao longo da trajetória</translation>
     </message>
     <message>
         <source>Set %1 of %2 to %3 % of the model</source>
@@ -3539,6 +4232,14 @@ Sem a compensação de atrito: G %1 mm</translation>
     <message>
         <source>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</source>
         <translation>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</translation>
+    </message>
+    <message>
+        <source>The gain %1 as a percentage (%) of the plant&apos;s exact inverse (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancels the plant&apos;s dynamics along the trajectory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The D term differentiates the measured position (D = −fb′) instead of the error, so a step of the command gives no kick</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3647,6 +4348,30 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>Tune %1 by %2</source>
         <translation>Sintonizar %1 por %2</translation>
     </message>
+    <message>
+        <source>PI, or PID with Ti = 4 Td, for the closed-form rule</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target gain crossover ωc (rad/s): the closed-form gains make |L(jωc)| = 1, L = (P + I/s + D s) G/u</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Target phase margin (°) at ωc: arg L(jωc) = −180° + PM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Relay amplitude d (V) of the simulated relay experiment; its limit cycle&apos;s amplitude a and period Tu give Ku = 4d/(πa) for Ziegler–Nichols and Tyreus–Luyben</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set this row&apos;s P, I and D on the axis (one undoable step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulated relay experiment: the position y (mm) and the relay&apos;s command u (V) against time (s), settling into the limit cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::PlantEditor</name>
@@ -3690,6 +4415,18 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>Model unit per mm</source>
         <translation>Unidade do modelo por mm</translation>
     </message>
+    <message>
+        <source>A plant of Braga et al.: the lower base (Eq. 2) or the upper base (Eq. 1) with the paper&apos;s ωn and kp; &quot;custom&quot; once a coefficient is edited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coefficient a1 (1/s) of G(s) = k0 / (s³ + a1 s² + a2 s): the sum of the two non-zero poles&apos; magnitudes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coefficient a2 (1/s²) of G(s) = k0 / (s³ + a1 s² + a2 s): the product of the two non-zero poles; k0/a2 is the velocity gain</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::PoleZeroPlot</name>
@@ -3704,6 +4441,10 @@ Sem a compensação de atrito: G %1 mm</translation>
     <message>
         <source>imaginary</source>
         <translation>imaginário</translation>
+    </message>
+    <message>
+        <source>Pole-zero map: the plant&apos;s, controller&apos;s and closed loop&apos;s poles (×) and zeros (○) in the s-plane, or in the z-plane for the digital loop (View › Pole-zero map of the digital loop), with lines of constant damping.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3763,6 +4504,22 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>Ts (s)</source>
         <translation>Ts (s)</translation>
     </message>
+    <message>
+        <source>An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the y axis (Eq. 3), with T = 1 − 0.2 z⁻¹ and Ts = 70 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The desired closed-loop pole: T = 1 + t1 z⁻¹ puts the RST loop&apos;s pole at z = −t1; the Diophantine equation A F + B G = T gives F, G</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sample time Ts (s) of the ARX model and of its RST controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tomizuka&apos;s zero-phase-error tracking controller ahead of the loop: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference previewed p samples</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::PresenterView</name>
@@ -3773,6 +4530,98 @@ Sem a compensação de atrito: G %1 mm</translation>
     <message>
         <source>No design: %1: %2</source>
         <translation>Sem projeto: %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ReportExporter</name>
+    <message>
+        <source>Export &amp;report (PDF)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A PDF of the design for a lab report or a design review: plants, controllers, figures against the specification, warnings and plots</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the report...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The report was not written; any existing file is unchanged.
+
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Report written to %1 (%2 s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ReportFigures</name>
+    <message>
+        <source>Axis %1</source>
+        <translation type="unfinished">Eixo %1</translation>
+    </message>
+    <message>
+        <source>Axis %1 (%2)</source>
+        <translation type="unfinished">Eixo %1 (%2)</translation>
+    </message>
+    <message>
+        <source>No design: %1: %2</source>
+        <translation type="unfinished">Sem projeto: %1: %2</translation>
+    </message>
+    <message>
+        <source>Root locus of %1 (K = 1: the design)</source>
+        <translation type="unfinished">Lugar das raízes de %1 (K = 1: o projeto)</translation>
+    </message>
+    <message>
+        <source>Root locus of the loop 1 + K L = 0; the closed-loop poles of the design (K = 1) are marked, with the region the specification allows.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bode diagram of %1</source>
+        <translation type="unfinished">Diagrama de Bode de %1</translation>
+    </message>
+    <message>
+        <source>Bode diagram of the open loop L with the gain and phase margins, and the closed loop.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No frequency analysis: %1</source>
+        <translation type="unfinished">Sem análise em frequência: %1</translation>
+    </message>
+    <message>
+        <source>Unit step of %1</source>
+        <translation type="unfinished">Degrau unitário de %1</translation>
+    </message>
+    <message>
+        <source>Unit step of the closed loop, with the specification&apos;s overshoot and settling limits.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No step response: %1</source>
+        <translation type="unfinished">Sem resposta ao degrau: %1</translation>
+    </message>
+    <message>
+        <source>Response to the trajectory: reference and output, tracking error, control voltage; the digital implementation overlaid.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The XY contour: commanded and traced path, the error magnified about the path.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ballbar view of the circle (ISO 230-4): the radial deviation magnified about the nominal centre.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4059,6 +4908,14 @@ Pior: %1 mm em %2.</translation>
         <source>Load the worst plant of the robustness analysis</source>
         <translation>Carregar a pior planta da análise de robustez</translation>
     </message>
+    <message>
+        <source>Run the analysis: the session&apos;s unchanged controller on every plant drawn within the ranges (and the box&apos;s corners), each on the trajectory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop the analysis; the plants run so far are shown</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::RootLocusPlot</name>
@@ -4102,6 +4959,10 @@ Pior: %1 mm em %2.</translation>
         <source>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</source>
         <translation>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</translation>
     </message>
+    <message>
+        <source>Root locus: the closed-loop poles of 1 + K L(s) = 0 as the loop gain K goes from 0 to ∞ (K = 1 is the design), with the specification&apos;s ζ wedge and settling line; click a point to apply its gain, drag a closed-loop pole along the locus or a PID&apos;s zero.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::RootLocusView</name>
@@ -4143,6 +5004,10 @@ Pior: %1 mm em %2.</translation>
     <message>
         <source>No stable plant at any mismatch.</source>
         <translation>Nenhuma planta estável em nenhuma discrepância.</translation>
+    </message>
+    <message>
+        <source>ZPETC sensitivity: the RMSE (mm) of the run with and without the feedforward as the plant mismatch grows from the nominal model (0 %) to the ranges set (100 %), each point over the same seeded plants.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4296,6 +5161,14 @@ Pior: %1 mm em %2.</translation>
         <source>with</source>
         <translation>com</translation>
     </message>
+    <message>
+        <source>The first design of the comparison: the current one or a stored snapshot (Design › Store snapshot)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The second design of the comparison; the table lists both designs&apos; settings and figures side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::StepPlot</name>
@@ -4386,6 +5259,10 @@ Pior: %1 mm em %2.</translation>
     <message>
         <source>t = %1 s   y = %2   (%3)</source>
         <translation>t = %1 s   y = %2   (%3)</translation>
+    </message>
+    <message>
+        <source>Unit step of the closed loop (not the trajectory): output against time (s), with the rise, peak and settling (2 % band) markers and the specification&apos;s overshoot and settling envelope; samples outside it are red.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4508,6 +5385,10 @@ Pior: %1 mm em %2.</translation>
     <message>
         <source>snapshot «%1» (y, e, u)</source>
         <translation>instantâneo «%1» (y, e, u)</translation>
+    </message>
+    <message>
+        <source>Time response of the selected axis on the trajectory: reference r, output y and error e = r − y (mm), and the command u (V) with the ±umax band and clipped intervals shaded; the digital implementation&apos;s run as a translucent band.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4633,10 +5514,6 @@ Pior: %1 mm em %2.</translation>
         <translation>Jerk máx (mm/s³)</translation>
     </message>
     <message>
-        <source>0 = no jerk limit (a trapezoidal profile)</source>
-        <translation>0 = sem limite de jerk (perfil trapezoidal)</translation>
-    </message>
-    <message>
         <source>Open a G-code program</source>
         <translation>Abrir um programa G-code</translation>
     </message>
@@ -4708,6 +5585,76 @@ Pior: %1 mm em %2.</translation>
     <message>
         <source>a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory</source>
         <translation>uma simulação de %1 s com dt = %2 s precisa de %3 amostras; cabem no máximo %4 na memória</translation>
+    </message>
+    <message>
+        <source>The commanded motion both axes follow: a point-to-point move, a circle (x = R sin ωt, y = R cos ωt) or a G-code program along its feed profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The example programs shipped with XY Tune (circles, a square, a star, an engraving): choose one to load it as the program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start position x0 (mm) of the point-to-point move, held before t0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End position xf (mm) of the point-to-point move, reached at tf</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start time t0 (s) of the move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>End time tf (s) of the move: the cubic (or quintic) joins x0 at t0 to xf at tf with the end velocities v0, vf (Braga et al. Eq. 4–6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity v0 (mm/s) at the start of the move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity vf (mm/s) at the end of the move</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radius R (mm) of the circle x = R sin ωt, y = R cos ωt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angular speed ω (rad/s) of the circle: one revolution takes 2π/ω seconds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ramp-in (s): the circle&apos;s speed rises smoothly from 0 to ω over this time, so the axes do not start with a step in velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed scale: the feed override applied to every F word of the program (1 = as programmed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum acceleration (mm/s²) of the feed profile along the path; on arcs v²/R stays below it too</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulation step dt (s): the continuous runs are sampled at it (and a G-code program&apos;s profile is planned at it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Maximum jerk (mm/s³) of the feed profile (an S-curve); 0 = no jerk limit (a trapezoidal profile)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The G-code program; its whole text is kept in the session, so a shared session needs no .nc file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1
+%2</source>
+        <translation type="unfinished">%1* {1
+%2?}</translation>
     </message>
 </context>
 <context>
@@ -4799,6 +5746,59 @@ Pior: %1 mm em %2.</translation>
     <message>
         <source>Change the pole-placement design</source>
         <translation>Alterar o projeto por alocação de polos</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::UserGuideWindow</name>
+    <message>
+        <source>XY Tune user guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the page shown before (Alt+Left)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forward to the page left with Back (Alt+Right)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The guide&apos;s first page: the list of tutorials</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The pages of the guide: the tutorials, then the reference pages (command line, session file, exports, equations, architecture)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 – XY Tune user guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source># No pages
+
+This build of XY Tune holds no documentation pages (the folder docs/ was empty when it was built).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -4899,6 +5899,10 @@ Pior: %1 mm em %2.</translation>
         <source>The table is rigid: set a flexible mode in the Design box&apos;s Mode fold</source>
         <translation>A mesa é rígida: defina um modo flexível na seção Modo da caixa Projeto</translation>
     </message>
+    <message>
+        <source>Vibration: the rigid plant, the plant with its flexible mode and the notch (mm/V against Hz), the input shaper&apos;s sensitivity curve with the 5 % tolerance, and the residual vibration of the run&apos;s move shaped and unshaped.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::VibrationView</name>
@@ -4925,6 +5929,85 @@ Pior: %1 mm em %2.</translation>
     <message>
         <source>along the path</source>
         <translation>ao longo do percurso</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::WelcomeDialog</name>
+    <message>
+        <source>Welcome to XY Tune</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>XY Tune tunes the position controllers of two-axis XY tables. Start with a tutorial (it opens in the user guide, F1) or open an example session in the workbench.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tutorials</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The user guide&apos;s tutorials: double-click one to read it in the user guide window</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The user guide: contents</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The user guide (reference pages)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the selected tutorial in the user guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Example sessions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Example sessions shipped with XY Tune: double-click one to open it in the workbench (as File › Open would)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished">%1 (%2)</translation>
+    </message>
+    <message>
+        <source>No example sessions were found in %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(no examples folder)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open session</source>
+        <translation type="unfinished">Abrir sessão</translation>
+    </message>
+    <message>
+        <source>Open the selected example in the workbench</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its tutorial</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read the tutorial that walks through the selected example</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show at start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show this page each time XY Tune starts (it is always in Help › Tutorials)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>
