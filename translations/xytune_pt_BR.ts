@@ -894,7 +894,7 @@ falha: %1</translation>
         </message>
         <message>
             <source>Bode diagram of the loop L(jω) = C(jω) G(jω): magnitude (dB) and phase (°) against ω (rad/s) on an adaptive grid, with the gain and phase margins drawn where they are read (green when they meet the specification's minima, red when not), and |S| = |1/(1 + L)| and |T| = |L/(1 + L)|.</source>
-            <translation type="unfinished" />
+            <translation>Diagrama de Bode da malha L(jω) = C(jω) G(jω): módulo (dB) e fase (°) em função de ω (rad/s) numa grade adaptativa, com as margens de ganho e de fase desenhadas onde são lidas (em verde quando atendem aos mínimos da especificação, em vermelho quando não), e |S| = |1/(1 + L)| e |T| = |L/(1 + L)|.</translation>
         </message>
     </context>
     <context>
@@ -1145,7 +1145,7 @@ falha: %1</translation>
         </message>
         <message>
             <source>The XY contour: the programmed path, the traced path of both axes' run, and the contour error (mm, the signed distance from each traced point to the nearest point of the path) magnified along the path normal by the "error ×" factor.</source>
-            <translation type="unfinished" />
+            <translation>O contorno XY: o percurso programado, o percurso traçado pela simulação dos dois eixos e o erro de contorno (mm, a distância com sinal de cada ponto traçado ao ponto mais próximo do percurso) ampliado ao longo da normal ao percurso pelo fator "erro ×".</translation>
         </message>
     </context>
     <context>
@@ -1388,11 +1388,11 @@ falha: %1</translation>
         </message>
         <message>
             <source>Stop the sweep; the cells run so far are shown</source>
-            <translation type="unfinished" />
+            <translation>Interromper a varredura; as células simuladas até aqui são mostradas</translation>
         </message>
         <message>
             <source>The sweep's map: each cell one (kp, ki) pair of the cross-coupling, coloured by the program's max contour error (mm); hover a cell for its figures, click it to select it</source>
-            <translation type="unfinished" />
+            <translation>O mapa da varredura: cada célula é um par (kp, ki) do acoplamento cruzado, colorida pelo erro de contorno máx do programa (mm); passe o mouse sobre uma célula para ver seus valores, clique para selecioná-la</translation>
         </message>
     </context>
     <context>
@@ -1510,7 +1510,7 @@ falha: %1</translation>
         </message>
         <message>
             <source>Design space: each cell of the (ωn, kp) grid is one Guillemin–Truxal design run on the session's trajectory, coloured by the chosen criterion; feasible cells meet every limit of the specification. Click a cell to take its ωn and kp.</source>
-            <translation type="unfinished" />
+            <translation>Espaço de projeto: cada célula da grade (ωn, kp) é um projeto Guillemin–Truxal simulado na trajetória da sessão, colorido pelo critério escolhido; as células viáveis atendem a todos os limites da especificação. Clique numa célula para adotar seus ωn e kp.</translation>
         </message>
     </context>
     <context>
@@ -1747,75 +1747,75 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Smallest ωn (rad/s) of the grid: the reference model's natural frequency of the first row of designs</source>
-            <translation type="unfinished" />
+            <translation>Menor ωn (rad/s) da grade: a frequência natural do modelo de referência da primeira linha de projetos</translation>
         </message>
         <message>
             <source>Largest ωn (rad/s) of the grid</source>
-            <translation type="unfinished" />
+            <translation>Maior ωn (rad/s) da grade</translation>
         </message>
         <message>
             <source>Number of ωn values of the grid (rows); each cell is one design run on the session's trajectory</source>
-            <translation type="unfinished" />
+            <translation>Número de valores de ωn da grade (linhas); cada célula é um projeto simulado na trajetória da sessão</translation>
         </message>
         <message>
             <source>Smallest proportional gain kp (V per model unit) of the grid</source>
-            <translation type="unfinished" />
+            <translation>Menor ganho proporcional kp (V por unidade do modelo) da grade</translation>
         </message>
         <message>
             <source>Largest proportional gain kp (V per model unit) of the grid</source>
-            <translation type="unfinished" />
+            <translation>Maior ganho proporcional kp (V por unidade do modelo) da grade</translation>
         </message>
         <message>
             <source>Number of kp values of the grid (columns)</source>
-            <translation type="unfinished" />
+            <translation>Número de valores de kp da grade (colunas)</translation>
         </message>
         <message>
             <source>Space the ωn and kp values evenly on a logarithmic scale (else linearly between the bounds)</source>
-            <translation type="unfinished" />
+            <translation>Espaçar os valores de ωn e kp uniformemente em escala logarítmica (senão, linearmente entre os limites)</translation>
         </message>
         <message>
             <source>The figure that picks the best feasible design: minimized (ITAE, max |e|, RMSE, max |u|, settle time) or maximized (the margins)</source>
-            <translation type="unfinished" />
+            <translation>O valor que escolhe o melhor projeto viável: minimizado (ITAE, |e| máx, RMSE, |u| máx, tempo de acomodação) ou maximizado (as margens)</translation>
         </message>
         <message>
             <source>The figure the heat map's colours show for each design of the grid</source>
-            <translation type="unfinished" />
+            <translation>O valor que as cores do mapa de calor mostram para cada projeto da grade</translation>
         </message>
         <message>
             <source>Colour the heat map by the logarithm of the figure (its values often span decades)</source>
-            <translation type="unfinished" />
+            <translation>Colorir o mapa de calor pelo logaritmo do valor (seus valores costumam abranger várias décadas)</translation>
         </message>
         <message>
             <source>Maximum settling time (s, 2 % band) of the closed loop's unit step</source>
-            <translation type="unfinished" />
+            <translation>Tempo de acomodação máximo (s, faixa de 2 %) do degrau unitário da malha fechada</translation>
         </message>
         <message>
             <source>Maximum overshoot (%) of the closed loop's unit step</source>
-            <translation type="unfinished" />
+            <translation>Sobressinal máximo (%) do degrau unitário da malha fechada</translation>
         </message>
         <message>
             <source>Maximum tracking error max |e| as a percentage of the travel</source>
-            <translation type="unfinished" />
+            <translation>Erro de seguimento máximo |e| máx como porcentagem do curso</translation>
         </message>
         <message>
             <source>Actuator limit umax (V): a design whose run asks for more is infeasible; the session's |u| limit</source>
-            <translation type="unfinished" />
+            <translation>Limite do atuador umax (V): um projeto cuja simulação exige mais é inviável; o limite de |u| da sessão</translation>
         </message>
         <message>
             <source>Minimum phase margin (°) of the loop, 180° + arg L(jωc); 0: none</source>
-            <translation type="unfinished" />
+            <translation>Margem de fase mínima (°) da malha, 180° + arg L(jωc); 0: nenhuma</translation>
         </message>
         <message>
             <source>Minimum gain margin (dB) of the loop, −20 log10 |L(jω180)|; 0: none</source>
-            <translation type="unfinished" />
+            <translation>Margem de ganho mínima (dB) da malha, −20 log10 |L(jω180)|; 0: nenhuma</translation>
         </message>
         <message>
             <source>Run the study: every design of the grid on the session's trajectory at its dt, judged against the specification</source>
-            <translation type="unfinished" />
+            <translation>Executar o estudo: cada projeto da grade na trajetória da sessão com o seu dt, avaliado frente à especificação</translation>
         </message>
         <message>
             <source>Stop the study; the designs computed so far are shown</source>
-            <translation type="unfinished" />
+            <translation>Interromper o estudo; os projetos calculados até aqui são mostrados</translation>
         </message>
     </context>
     <context>
@@ -1941,7 +1941,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Envelope of the perturbed plants' runs: the range (min to max over the stable plants) of the chosen signal (error or output in mm, command in V) around the nominal run, against time (s).</source>
-            <translation type="unfinished" />
+            <translation>Envoltória das simulações das plantas perturbadas: a faixa (do mínimo ao máximo sobre as plantas estáveis) do sinal escolhido (erro ou saída em mm, comando em V) em torno da simulação nominal, em função do tempo (s).</translation>
         </message>
     </context>
     <context>
@@ -2318,19 +2318,19 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>The log's column of the %1</source>
-            <translation type="unfinished" />
+            <translation>A coluna do registro com %1</translation>
         </message>
         <message>
             <source>The Stribeck curve: each jog's steady command (V, mean ± one standard deviation over its cruise) against its velocity (mm/s), and the fitted friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</source>
-            <translation type="unfinished" />
+            <translation>A curva de Stribeck: o comando em regime de cada jog (V, média ± um desvio-padrão no trecho de velocidade constante) em função da sua velocidade (mm/s), e a curva de atrito ajustada sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</translation>
         </message>
         <message>
             <source>Read a jog log (CSV with time, reference, position and command columns) and estimate the friction levels</source>
-            <translation type="unfinished" />
+            <translation>Ler um registro de jog (CSV com colunas de tempo, referência, posição e comando) e estimar os níveis de atrito</translation>
         </message>
         <message>
             <source>Set the estimated levels as the current axis' table friction (one undoable step)</source>
-            <translation type="unfinished" />
+            <translation>Definir os níveis estimados como o atrito da mesa do eixo atual (um passo que pode ser desfeito)</translation>
         </message>
     </context>
     <context>
@@ -2488,7 +2488,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Histogram of the chosen figure (RMSE or max |e| in mm, max |u| in V) over the stable perturbed plants, with the specification's limit drawn.</source>
-            <translation type="unfinished" />
+            <translation>Histograma do valor escolhido (RMSE ou |e| máx em mm, |u| máx em V) sobre as plantas perturbadas estáveis, com o limite da especificação desenhado.</translation>
         </message>
     </context>
     <context>
@@ -2887,71 +2887,71 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>Remove a straight line fitted by least squares from the input and the output before the fit (else their means)</source>
-            <translation type="unfinished" />
+            <translation>Remover da entrada e da saída uma reta ajustada por mínimos quadrados antes do ajuste (senão, suas médias)</translation>
         </message>
         <message>
             <source>Read a logged experiment: CSV/TSV, LabVIEW .lvm or MATLAB .mat, with the input in V and the position</source>
-            <translation type="unfinished" />
+            <translation>Ler um ensaio registrado: CSV/TSV, LabVIEW .lvm ou MATLAB .mat, com a entrada em V e a posição</translation>
         </message>
         <message>
             <source>A second record of the same axis on which the candidates' fit is judged (else on the estimation data)</source>
-            <translation type="unfinished" />
+            <translation>Um segundo registro do mesmo eixo no qual o ajuste dos candidatos é avaliado (senão, nos dados de estimação)</translation>
         </message>
         <message>
             <source>The column of the command u (V) sent to the amplifier</source>
-            <translation type="unfinished" />
+            <translation>A coluna do comando u (V) enviado ao amplificador</translation>
         </message>
         <message>
             <source>The column of the measured position y</source>
-            <translation type="unfinished" />
+            <translation>A coluna da posição medida y</translation>
         </message>
         <message>
             <source>The column of the time (s), or none: the sample time Ts below</source>
-            <translation type="unfinished" />
+            <translation>A coluna do tempo (s), ou nenhuma: o período de amostragem Ts abaixo</translation>
         </message>
         <message>
             <source>Sample time Ts (s) of the record when it has no time column</source>
-            <translation type="unfinished" />
+            <translation>Período de amostragem Ts (s) do registro quando ele não tem coluna de tempo</translation>
         </message>
         <message>
             <source>The unit of the output column: mm, or m (converted to mm)</source>
-            <translation type="unfinished" />
+            <translation>A unidade da coluna de saída: mm, ou m (convertido para mm)</translation>
         </message>
         <message>
             <source>ARX: A y = B u + e by least squares; OE: y = B/F u + e and BJ: y = B/F u + C/D e by prediction error (Levenberg–Marquardt); GT3: Braga et al.'s k0/(s³ + a1 s² + a2 s) fitted to the output</source>
-            <translation type="unfinished" />
+            <translation>ARX: A y = B u + e por mínimos quadrados; OE: y = B/F u + e e BJ: y = B/F u + C/D e por erro de predição (Levenberg–Marquardt); GT3: o k0/(s³ + a1 s² + a2 s) de Braga et al. ajustado à saída</translation>
         </message>
         <message>
             <source>Order %1 of the model: na, nb, nc, nd, nf the numbers of coefficients of A, B, C, D, F; nk the input delay in samples</source>
-            <translation type="unfinished" />
+            <translation>Ordem %1 do modelo: na, nb, nc, nd, nf são os números de coeficientes de A, B, C, D, F; nk é o atraso da entrada em amostras</translation>
         </message>
         <message>
             <source>The most Levenberg–Marquardt iterations of an OE, BJ or GT3 fit before it stops with the best estimate so far</source>
-            <translation type="unfinished" />
+            <translation>O número máximo de iterações de Levenberg–Marquardt de um ajuste OE, BJ ou GT3 antes que ele pare com a melhor estimativa até então</translation>
         </message>
         <message>
             <source>Estimate the model of the chosen structure and orders; it is added to the candidates with its fit, AIC and residual tests</source>
-            <translation type="unfinished" />
+            <translation>Estimar o modelo com a estrutura e as ordens escolhidas; ele é adicionado aos candidatos com seu ajuste, AIC e testes de resíduos</translation>
         </message>
         <message>
             <source>Stop the fit running</source>
-            <translation type="unfinished" />
+            <translation>Interromper o ajuste em andamento</translation>
         </message>
         <message>
             <source>Make the selected model axis X's plant (an undoable step): GT3 as the Guillemin–Truxal plant, ARX/OE/BJ as the pole-placement model</source>
-            <translation type="unfinished" />
+            <translation>Tornar o modelo selecionado a planta do eixo X (um passo que pode ser desfeito): GT3 como planta de Guillemin–Truxal, ARX/OE/BJ como modelo da alocação de polos</translation>
         </message>
         <message>
             <source>Make the selected model axis Y's plant (an undoable step)</source>
-            <translation type="unfinished" />
+            <translation>Tornar o modelo selecionado a planta do eixo Y (um passo que pode ser desfeito)</translation>
         </message>
         <message>
             <source>The measured output y (mm) against time (s) and the selected model's simulated output ŷ from the same input</source>
-            <translation type="unfinished" />
+            <translation>A saída medida y (mm) em função do tempo (s) e a saída simulada ŷ do modelo selecionado a partir da mesma entrada</translation>
         </message>
         <message>
             <source>The residuals' autocorrelation and their cross-correlation with the input against the lag, with the 99 % confidence band of white, independent residuals</source>
-            <translation type="unfinished" />
+            <translation>A autocorrelação dos resíduos e sua correlação cruzada com a entrada em função do atraso, com a faixa de confiança de 99 % de resíduos brancos e independentes</translation>
         </message>
     </context>
     <context>
@@ -3465,43 +3465,43 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>The parameter the parameter locus sweeps over its slider's range, the other held at the design's value</source>
-            <translation type="unfinished" />
+            <translation>O parâmetro que o lugar do parâmetro varre na faixa do seu controle deslizante, com o outro mantido no valor do projeto</translation>
         </message>
         <message>
             <source>How the current axis is controlled: Guillemin–Truxal PI (Braga et al.), pole placement + ZPETC (Patrick, Ishak and Adnan) or LinuxCNC's PID with command feedforward</source>
-            <translation type="unfinished" />
+            <translation>Como o eixo atual é controlado: PI de Guillemin–Truxal (Braga et al.), alocação de polos + ZPETC (Patrick, Ishak e Adnan) ou o PID do LinuxCNC com pré-alimentação do comando</translation>
         </message>
         <message>
             <source>ωn (rad/s): the natural frequency of the 4th-order reference model G_R(s); the PI follows as f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al. Eq. 11–18)</source>
-            <translation type="unfinished" />
+            <translation>ωn (rad/s): a frequência natural do modelo de referência de 4ª ordem G_R(s); o PI decorre como f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al., Eq. 11–18)</translation>
         </message>
         <message>
             <source>kp (V per model unit): the PI's proportional gain; with ωn it sets ki = kp ψ1 = ωn⁴/k0 and the reference model's f3 = kp k0/ωn³</source>
-            <translation type="unfinished" />
+            <translation>kp (V por unidade do modelo): o ganho proporcional do PI; junto com ωn ele define ki = kp ψ1 = ωn⁴/k0 e o f3 = kp k0/ωn³ do modelo de referência</translation>
         </message>
         <message>
             <source>Actuator limit umax (V): every run clips the command to ±umax, and the anti-windup acts at it</source>
-            <translation type="unfinished" />
+            <translation>Limite do atuador umax (V): toda simulação limita o comando a ±umax, e o anti-windup atua nesse limite</translation>
         </message>
         <message>
             <source>Controller sample time Ts (s) of the digital PI or PID: the digital implementation runs and the exports are at it</source>
-            <translation type="unfinished" />
+            <translation>Período de amostragem Ts (s) do controlador do PI ou PID digital: a implementação digital é simulada e as exportações são feitas nesse período</translation>
         </message>
         <message>
             <source>How the PI kp + ki/s is discretized at the controller sample time: Tustin s = (2/Ts)(z − 1)/(z + 1), or backward Euler s = (z − 1)/(z Ts)</source>
-            <translation type="unfinished" />
+            <translation>Como o PI kp + ki/s é discretizado no período de amostragem do controlador: Tustin s = (2/Ts)(z − 1)/(z + 1), ou Euler regressivo s = (z − 1)/(z Ts)</translation>
         </message>
         <message>
             <source>&amp;User guide</source>
-            <translation type="unfinished" />
+            <translation>&amp;Guia do usuário</translation>
         </message>
         <message>
             <source>&amp;Tutorials...</source>
-            <translation type="unfinished" />
+            <translation>&amp;Tutoriais...</translation>
         </message>
         <message>
             <source>&amp;Command-line reference</source>
-            <translation type="unfinished" />
+            <translation>Referência da &amp;linha de comando</translation>
         </message>
     </context>
     <context>
