@@ -2318,7 +2318,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         </message>
         <message>
             <source>The log's column of the %1</source>
-            <translation>A coluna do registro com %1</translation>
+            <translation>A coluna do registro para %1</translation>
         </message>
         <message>
             <source>The Stribeck curve: each jog's steady command (V, mean ± one standard deviation over its cruise) against its velocity (mm/s), and the fitted friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</source>
@@ -3893,79 +3893,79 @@ Sem a compensação de atrito: G %1 mm</translation>
         </message>
         <message>
             <source>RMSE (mm): the root mean square of the tracking error e = r − y over the samples of the run on the trajectory.</source>
-            <translation type="unfinished" />
+            <translation>RMSE (mm): a raiz do valor quadrático médio do erro de seguimento e = r − y sobre as amostras da simulação na trajetória.</translation>
         </message>
         <message>
             <source>max |e| (mm): the largest absolute tracking error e = r − y over the run on the trajectory.</source>
-            <translation type="unfinished" />
+            <translation>|e| máx (mm): o maior erro de seguimento absoluto e = r − y ao longo da simulação na trajetória.</translation>
         </message>
         <message>
             <source>max |e| (%): the largest absolute tracking error as a percentage of the travel; judged against the specification's maximum error.</source>
-            <translation type="unfinished" />
+            <translation>|e| máx (%): o maior erro de seguimento absoluto como porcentagem do curso; avaliado frente ao erro máximo da especificação.</translation>
         </message>
         <message>
             <source>max |u| (V): the largest absolute command applied to the plant over the run (after the ±umax limit).</source>
-            <translation type="unfinished" />
+            <translation>|u| máx (V): o maior comando absoluto aplicado à planta ao longo da simulação (após o limite de ±umax).</translation>
         </message>
         <message>
             <source>saturated (s): the time the command spends clipped at ±umax during the run (sample count × dt).</source>
-            <translation type="unfinished" />
+            <translation>saturado (s): o tempo que o comando passa limitado em ±umax durante a simulação (número de amostras × dt).</translation>
         </message>
         <message>
             <source>ITAE (mm·s²): the integral of t·|e(t)| over the run (trapezoidal rule on the samples); it weighs late errors more than early ones.</source>
-            <translation type="unfinished" />
+            <translation>ITAE (mm·s²): a integral de t·|e(t)| ao longo da simulação (regra dos trapézios sobre as amostras); pondera mais os erros tardios que os iniciais.</translation>
         </message>
         <message>
             <source>ZPETC gain (%): the RMSE improvement of the ZPETC feedforward over the loop alone, 100 (1 − RMSE with / RMSE without).</source>
-            <translation type="unfinished" />
+            <translation>ganho do ZPETC (%): a melhora do RMSE com a pré-alimentação ZPETC em relação à malha sozinha, 100 (1 − RMSE com / RMSE sem).</translation>
         </message>
         <message>
             <source>settle time (s): from the end of the move (tf) until |e| stays inside the in-position window; judged against the specification's settle limit.</source>
-            <translation type="unfinished" />
+            <translation>tempo de acomodação (s): do fim do movimento (tf) até |e| permanecer dentro da janela de posição; avaliado frente ao limite de acomodação da especificação.</translation>
         </message>
         <message>
             <source>final e (mm): the tracking error r − y at the last sample of the run.</source>
-            <translation type="unfinished" />
+            <translation>e final (mm): o erro de seguimento r − y na última amostra da simulação.</translation>
         </message>
         <message>
             <source>overrun (mm): how far the axis went beyond the target after tf, in the direction of travel (0 when it never passed it).</source>
-            <translation type="unfinished" />
+            <translation>ultrapassagem (mm): quanto o eixo foi além do alvo após tf, no sentido do movimento (0 quando nunca o ultrapassou).</translation>
         </message>
         <message>
             <source>settling 2 % (s): the time after which the closed loop's unit step stays within ±2 % of its final value.</source>
-            <translation type="unfinished" />
+            <translation>acomodação 2 % (s): o tempo após o qual o degrau unitário da malha fechada permanece dentro de ±2 % do seu valor final.</translation>
         </message>
         <message>
             <source>overshoot (%): the unit step's peak above its final value, 100 (peak − final)/final; judged against the specification's maximum overshoot.</source>
-            <translation type="unfinished" />
+            <translation>sobressinal (%): o pico do degrau unitário acima do seu valor final, 100 (pico − final)/final; avaliado frente ao sobressinal máximo da especificação.</translation>
         </message>
         <message>
             <source>RMSE (mm) of the digital implementation: the same figure for the sampled-data loop (controller at its Ts, hold, quantization, limit, delay); amber when it differs from the design's by more than 5 %.</source>
-            <translation type="unfinished" />
+            <translation>RMSE (mm) da implementação digital: o mesmo valor para a malha amostrada (controlador no seu Ts, retentor, quantização, limite, atraso); em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
         </message>
         <message>
             <source>max |e| (mm) of the digital implementation: the largest absolute error of the sampled-data loop's run; amber when it differs from the design's by more than 5 %.</source>
-            <translation type="unfinished" />
+            <translation>|e| máx (mm) da implementação digital: o maior erro absoluto da simulação da malha amostrada; em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
         </message>
         <message>
             <source>min ζ: the least damping ratio of the digital closed loop's poles, ζ = −Re s/|s| with s = ln z / Ts; the design's in the tooltip.</source>
-            <translation type="unfinished" />
+            <translation>ζ mín: o menor coeficiente de amortecimento dos polos da malha fechada digital, ζ = −Re s/|s| com s = ln z / Ts; o do projeto aparece na dica.</translation>
         </message>
         <message>
             <source>Gain margin (dB): −20 log10 |L(jω180)| at the phase crossover ω180 where arg L = −180°: how much the loop gain may grow before the closed loop becomes unstable; ∞: never. Computed on the continuous loop.</source>
-            <translation type="unfinished" />
+            <translation>Margem de ganho (dB): −20 log10 |L(jω180)| na frequência de cruzamento de fase ω180, onde arg L = −180°: quanto o ganho de malha pode crescer antes que a malha fechada se torne instável; ∞: nunca. Calculada na malha contínua.</translation>
         </message>
         <message>
             <source>Phase margin (°): 180° + arg L(jωc) at the gain crossover ωc where |L| = 1; computed on the continuous loop.</source>
-            <translation type="unfinished" />
+            <translation>Margem de fase (°): 180° + arg L(jωc) na frequência de cruzamento de ganho ωc, onde |L| = 1; calculada na malha contínua.</translation>
         </message>
         <message>
             <source>Delay margin (s): the extra loop delay the closed loop tolerates, phase margin (rad) / ωc, the smallest over the gain crossovers.</source>
-            <translation type="unfinished" />
+            <translation>Margem de atraso (s): o atraso adicional na malha que a malha fechada tolera, margem de fase (rad) / ωc, a menor entre os cruzamentos de ganho.</translation>
         </message>
         <message>
             <source>Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / the closest distance of L to −1; 1.2–2 is a usual target.</source>
-            <translation type="unfinished" />
+            <translation>Ms: o pico da sensibilidade |S(jω)| = |1/(1 + L(jω))|, isto é, 1 / a menor distância de L a −1; 1.2–2 é um alvo usual.</translation>
         </message>
     </context>
     <context>
@@ -4039,7 +4039,7 @@ Sem a compensação de atrito: G %1 mm</translation>
         </message>
         <message>
             <source>Nyquist diagram: L(jω) in the complex plane for ω from 0 to ∞ (mirrored for negative ω), with the critical point −1; Z = N + P counts the closed-loop unstable poles from the encirclements N of −1 and the open-loop unstable poles P.</source>
-            <translation type="unfinished" />
+            <translation>Diagrama de Nyquist: L(jω) no plano complexo para ω de 0 a ∞ (espelhado para ω negativo), com o ponto crítico −1; Z = N + P conta os polos instáveis de malha fechada a partir dos envolvimentos N de −1 e dos polos instáveis de malha aberta P.</translation>
         </message>
     </context>
     <context>
@@ -4097,7 +4097,7 @@ Sem a compensação de atrito: G %1 mm</translation>
         </message>
         <message>
             <source>Parameter locus: the closed-loop poles as the chosen parameter (ωn or kp) sweeps its range, with the design's value marked and the value where the loop turns unstable (a pole crossing the imaginary axis) marked.</source>
-            <translation type="unfinished" />
+            <translation>Lugar do parâmetro: os polos de malha fechada à medida que o parâmetro escolhido (ωn ou kp) varre sua faixa, com o valor do projeto marcado e também o valor em que a malha se torna instável (um polo cruzando o eixo imaginário).</translation>
         </message>
     </context>
     <context>
@@ -4144,7 +4144,8 @@ Sem a compensação de atrito: G %1 mm</translation>
         <message>
             <source>%1
 Type a value (scientific notation such as 2.5e3 is accepted).</source>
-            <translation type="unfinished" />
+            <translation>%1
+Digite um valor (notação científica como 2.5e3 é aceita).</translation>
         </message>
     </context>
     <context>
@@ -4235,11 +4236,11 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         </message>
         <message>
             <source>The gain %1 as a percentage (%) of the plant's exact inverse (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancels the plant's dynamics along the trajectory</source>
-            <translation type="unfinished" />
+            <translation>O ganho %1 como porcentagem (%) da inversa exata da planta (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancela a dinâmica da planta ao longo da trajetória</translation>
         </message>
         <message>
             <source>The D term differentiates the measured position (D = −fb′) instead of the error, so a step of the command gives no kick</source>
-            <translation type="unfinished" />
+            <translation>O termo D deriva a posição medida (D = −fb′) em vez do erro, de modo que um degrau no comando não provoca pico (derivative kick)</translation>
         </message>
     </context>
     <context>
@@ -4350,27 +4351,27 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         </message>
         <message>
             <source>PI, or PID with Ti = 4 Td, for the closed-form rule</source>
-            <translation type="unfinished" />
+            <translation>PI, ou PID com Ti = 4 Td, para a regra em forma fechada</translation>
         </message>
         <message>
             <source>Target gain crossover ωc (rad/s): the closed-form gains make |L(jωc)| = 1, L = (P + I/s + D s) G/u</source>
-            <translation type="unfinished" />
+            <translation>Frequência de cruzamento de ganho desejada ωc (rad/s): os ganhos em forma fechada fazem |L(jωc)| = 1, L = (P + I/s + D s) G/u</translation>
         </message>
         <message>
             <source>Target phase margin (°) at ωc: arg L(jωc) = −180° + PM</source>
-            <translation type="unfinished" />
+            <translation>Margem de fase desejada (°) em ωc: arg L(jωc) = −180° + PM</translation>
         </message>
         <message>
             <source>Relay amplitude d (V) of the simulated relay experiment; its limit cycle's amplitude a and period Tu give Ku = 4d/(πa) for Ziegler–Nichols and Tyreus–Luyben</source>
-            <translation type="unfinished" />
+            <translation>Amplitude d (V) do relé no ensaio de relé simulado; a amplitude a e o período Tu do seu ciclo-limite dão Ku = 4d/(πa) para Ziegler–Nichols e Tyreus–Luyben</translation>
         </message>
         <message>
             <source>Set this row's P, I and D on the axis (one undoable step)</source>
-            <translation type="unfinished" />
+            <translation>Aplicar P, I e D desta linha ao eixo (um passo que pode ser desfeito)</translation>
         </message>
         <message>
             <source>The simulated relay experiment: the position y (mm) and the relay's command u (V) against time (s), settling into the limit cycle</source>
-            <translation type="unfinished" />
+            <translation>O ensaio de relé simulado: a posição y (mm) e o comando u (V) do relé em função do tempo (s), acomodando-se no ciclo-limite</translation>
         </message>
     </context>
     <context>
@@ -4417,15 +4418,15 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         </message>
         <message>
             <source>A plant of Braga et al.: the lower base (Eq. 2) or the upper base (Eq. 1) with the paper's ωn and kp; "custom" once a coefficient is edited</source>
-            <translation type="unfinished" />
+            <translation>Uma planta de Braga et al.: a base inferior (Eq. 2) ou a base superior (Eq. 1) com os ωn e kp do artigo; "personalizada" assim que um coeficiente é editado</translation>
         </message>
         <message>
             <source>Coefficient a1 (1/s) of G(s) = k0 / (s³ + a1 s² + a2 s): the sum of the two non-zero poles' magnitudes</source>
-            <translation type="unfinished" />
+            <translation>Coeficiente a1 (1/s) de G(s) = k0 / (s³ + a1 s² + a2 s): a soma dos módulos dos dois polos não nulos</translation>
         </message>
         <message>
             <source>Coefficient a2 (1/s²) of G(s) = k0 / (s³ + a1 s² + a2 s): the product of the two non-zero poles; k0/a2 is the velocity gain</source>
-            <translation type="unfinished" />
+            <translation>Coeficiente a2 (1/s²) de G(s) = k0 / (s³ + a1 s² + a2 s): o produto dos dois polos não nulos; k0/a2 é o ganho de velocidade</translation>
         </message>
     </context>
     <context>
@@ -4444,7 +4445,7 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         </message>
         <message>
             <source>Pole-zero map: the plant's, controller's and closed loop's poles (×) and zeros (○) in the s-plane, or in the z-plane for the digital loop (View › Pole-zero map of the digital loop), with lines of constant damping.</source>
-            <translation type="unfinished" />
+            <translation>Mapa de polos e zeros: os polos (×) e zeros (○) da planta, do controlador e da malha fechada no plano s, ou no plano z para a malha digital (Exibir › Mapa de polos e zeros da malha digital), com linhas de amortecimento constante.</translation>
         </message>
     </context>
     <context>
@@ -4506,19 +4507,19 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         </message>
         <message>
             <source>An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the y axis (Eq. 3), with T = 1 − 0.2 z⁻¹ and Ts = 70 ms</source>
-            <translation type="unfinished" />
+            <translation>Um modelo de eixo de Patrick, Ishak e Adnan: o eixo x (Eq. 1) ou o eixo y (Eq. 3), com T = 1 − 0.2 z⁻¹ e Ts = 70 ms</translation>
         </message>
         <message>
             <source>The desired closed-loop pole: T = 1 + t1 z⁻¹ puts the RST loop's pole at z = −t1; the Diophantine equation A F + B G = T gives F, G</source>
-            <translation type="unfinished" />
+            <translation>O polo de malha fechada desejado: T = 1 + t1 z⁻¹ coloca o polo da malha RST em z = −t1; a equação diofantina A F + B G = T fornece F e G</translation>
         </message>
         <message>
             <source>Sample time Ts (s) of the ARX model and of its RST controller</source>
-            <translation type="unfinished" />
+            <translation>Período de amostragem Ts (s) do modelo ARX e do seu controlador RST</translation>
         </message>
         <message>
             <source>Tomizuka's zero-phase-error tracking controller ahead of the loop: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference previewed p samples</source>
-            <translation type="unfinished" />
+            <translation>O controlador de seguimento com erro de fase nulo (ZPETC) de Tomizuka antes da malha: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), com a referência antecipada em p amostras</translation>
         </message>
     </context>
     <context>
@@ -4536,33 +4537,35 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         <name>xyt::ui::ReportExporter</name>
         <message>
             <source>Export &amp;report (PDF)...</source>
-            <translation type="unfinished" />
+            <translation>Exportar relatório (&amp;PDF)...</translation>
         </message>
         <message>
             <source>A PDF of the design for a lab report or a design review: plants, controllers, figures against the specification, warnings and plots</source>
-            <translation type="unfinished" />
+            <translation>Um PDF do projeto para um relatório de laboratório ou uma revisão de projeto: plantas, controladores, valores frente à especificação, avisos e gráficos</translation>
         </message>
         <message>
             <source>Export report</source>
-            <translation type="unfinished" />
+            <translation>Exportar relatório</translation>
         </message>
         <message>
             <source>PDF (*.pdf)</source>
-            <translation type="unfinished" />
+            <translation>PDF (*.pdf)</translation>
         </message>
         <message>
             <source>Writing the report...</source>
-            <translation type="unfinished" />
+            <translation>Gravando o relatório...</translation>
         </message>
         <message>
             <source>The report was not written; any existing file is unchanged.
 
 %1</source>
-            <translation type="unfinished" />
+            <translation>O relatório não foi gravado; um arquivo já existente permanece inalterado.
+
+%1</translation>
         </message>
         <message>
             <source>Report written to %1 (%2 s)</source>
-            <translation type="unfinished" />
+            <translation>Relatório gravado em %1 (%2 s)</translation>
         </message>
     </context>
     <context>
@@ -4577,51 +4580,51 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
         </message>
         <message>
             <source>No design: %1: %2</source>
-            <translation type="unfinished">Sem projeto: %1: %2</translation>
+            <translation>Sem projeto: %1: %2</translation>
         </message>
         <message>
             <source>Root locus of %1 (K = 1: the design)</source>
-            <translation type="unfinished">Lugar das raízes de %1 (K = 1: o projeto)</translation>
+            <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
         </message>
         <message>
             <source>Root locus of the loop 1 + K L = 0; the closed-loop poles of the design (K = 1) are marked, with the region the specification allows.</source>
-            <translation type="unfinished" />
+            <translation>Lugar das raízes da malha 1 + K L = 0; os polos de malha fechada do projeto (K = 1) estão marcados, com a região que a especificação permite.</translation>
         </message>
         <message>
             <source>Bode diagram of %1</source>
-            <translation type="unfinished">Diagrama de Bode de %1</translation>
+            <translation>Diagrama de Bode de %1</translation>
         </message>
         <message>
             <source>Bode diagram of the open loop L with the gain and phase margins, and the closed loop.</source>
-            <translation type="unfinished" />
+            <translation>Diagrama de Bode da malha aberta L com as margens de ganho e de fase, e da malha fechada.</translation>
         </message>
         <message>
             <source>No frequency analysis: %1</source>
-            <translation type="unfinished">Sem análise em frequência: %1</translation>
+            <translation>Sem análise em frequência: %1</translation>
         </message>
         <message>
             <source>Unit step of %1</source>
-            <translation type="unfinished">Degrau unitário de %1</translation>
+            <translation>Degrau unitário de %1</translation>
         </message>
         <message>
             <source>Unit step of the closed loop, with the specification's overshoot and settling limits.</source>
-            <translation type="unfinished" />
+            <translation>Degrau unitário da malha fechada, com os limites de sobressinal e de acomodação da especificação.</translation>
         </message>
         <message>
             <source>No step response: %1</source>
-            <translation type="unfinished">Sem resposta ao degrau: %1</translation>
+            <translation>Sem resposta ao degrau: %1</translation>
         </message>
         <message>
             <source>Response to the trajectory: reference and output, tracking error, control voltage; the digital implementation overlaid.</source>
-            <translation type="unfinished" />
+            <translation>Resposta à trajetória: referência e saída, erro de seguimento, tensão de controle; com a implementação digital sobreposta.</translation>
         </message>
         <message>
             <source>The XY contour: commanded and traced path, the error magnified about the path.</source>
-            <translation type="unfinished" />
+            <translation>O contorno XY: percurso comandado e percurso traçado, com o erro ampliado em torno do percurso.</translation>
         </message>
         <message>
             <source>Ballbar view of the circle (ISO 230-4): the radial deviation magnified about the nominal centre.</source>
-            <translation type="unfinished" />
+            <translation>Vista de ballbar do círculo (ISO 230-4): o desvio radial ampliado em torno do centro nominal.</translation>
         </message>
     </context>
     <context>
