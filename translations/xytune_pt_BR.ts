@@ -1,6016 +1,6018 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_BR">
-    <context>
-        <name>DesignReport</name>
-        <message>
-            <source>&lt;h1&gt;XY Tune design report&lt;/h1&gt;</source>
-            <translation>&lt;h1&gt;Relatório de projeto do XY Tune&lt;/h1&gt;</translation>
-        </message>
-        <message>
-            <source>Date</source>
-            <translation>Data</translation>
-        </message>
-        <message>
-            <source>XY Tune version</source>
-            <translation>Versão do XY Tune</translation>
-        </message>
-        <message>
-            <source>Session file</source>
-            <translation>Arquivo da sessão</translation>
-        </message>
-        <message>
-            <source>(unsaved session)</source>
-            <translation>(sessão não salva)</translation>
-        </message>
-        <message>
-            <source>Axis %1</source>
-            <translation>Eixo %1</translation>
-        </message>
-        <message>
-            <source>%1%2</source>
-            <translation>%1%2</translation>
-        </message>
-        <message>
-            <source> (%1)</source>
-            <translation> (%1)</translation>
-        </message>
-        <message>
-            <source>&lt;h2&gt;Verdict&lt;/h2&gt;</source>
-            <translation>&lt;h2&gt;Veredito&lt;/h2&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;span style='color:#1b7f2a'&gt;✓&lt;/span&gt; Both axes meet the specification, as designed and as implemented.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;span style='color:#1b7f2a'&gt;✓&lt;/span&gt; Os dois eixos atendem à especificação, tanto como projetados quanto como implementados.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;span style='color:#c62828'&gt;✗&lt;/span&gt; The design fails the specification:&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;span style='color:#c62828'&gt;✗&lt;/span&gt; O projeto não atende à especificação:&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Limits this design would meet: %1.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;Limites que este projeto atenderia: %1.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>, </source>
-            <translation>, </translation>
-        </message>
-        <message>
-            <source>&lt;h2&gt;Specification&lt;/h2&gt;</source>
-            <translation>&lt;h2&gt;Especificação&lt;/h2&gt;</translation>
-        </message>
-        <message>
-            <source>unit step: settling time (2 %) ≤ %1 s, overshoot ≤ %2 %</source>
-            <translation>degrau unitário: tempo de acomodação (2 %) ≤ %1 s, sobressinal ≤ %2 %</translation>
-        </message>
-        <message>
-            <source>tracking: max |e| ≤ %1 % of the travel, |u| ≤ %2 V and never clipped</source>
-            <translation>seguimento: |e| máx ≤ %1 % do curso, |u| ≤ %2 V e nunca limitado</translation>
-        </message>
-        <message>
-            <source>point-to-point move: settled into ±%1 mm within %2 s of its end</source>
-            <translation>movimento ponto a ponto: acomodado em ±%1 mm até %2 s após o seu fim</translation>
-        </message>
-        <message>
-            <source>loop margins: phase margin ≥ %1°, gain margin ≥ %2 dB (0: none stated)</source>
-            <translation>margens da malha: margem de fase ≥ %1°, margem de ganho ≥ %2 dB (0: nenhuma exigida)</translation>
-        </message>
-        <message>
-            <source>&lt;h2&gt;Trajectory and implementation&lt;/h2&gt;</source>
-            <translation>&lt;h2&gt;Trajetória e implementação&lt;/h2&gt;</translation>
-        </message>
-        <message>
-            <source>%1 move from %2 mm to %3 mm, from t = %4 s to %5 s</source>
-            <translation>Movimento %1 de %2 mm a %3 mm, de t = %4 s a %5 s</translation>
-        </message>
-        <message>
-            <source>Quintic</source>
-            <translation>quíntico</translation>
-        </message>
-        <message>
-            <source>Cubic</source>
-            <translation>cúbico</translation>
-        </message>
-        <message>
-            <source>Circle of radius %1 mm at %2 rad/s, ramp-in %3 s</source>
-            <translation>Círculo de raio %1 mm a %2 rad/s, rampa de entrada de %3 s</translation>
-        </message>
-        <message>
-            <source>G-code program %1, feed scale %2, max acceleration %3 mm/s², max jerk %4 mm/s³</source>
-            <translation>Programa G-code %1, escala de avanço %2, aceleração máx %3 mm/s², jerk máx %4 mm/s³</translation>
-        </message>
-        <message>
-            <source> (tracking time %1)</source>
-            <translation> (tempo de rastreamento %1)</translation>
-        </message>
-        <message>
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <source>Ti = kp/ki</source>
-            <translation>Ti = kp/ki</translation>
-        </message>
-        <message>
-            <source>Simulation: %1 (step %2 s)</source>
-            <translation>Simulação: %1 (passo de %2 s)</translation>
-        </message>
-        <message>
-            <source>Actuator limit: |u| ≤ %1 V</source>
-            <translation>Limite do atuador: |u| ≤ %1 V</translation>
-        </message>
-        <message>
-            <source>Digital PI: Ts = %1 s, %2 discretization; anti-windup %3</source>
-            <translation>PI digital: Ts = %1 s, discretização %2; anti-windup %3</translation>
-        </message>
-        <message>
-            <source>Computation delay %1 samples; encoder %2; DAC %3</source>
-            <translation>Atraso de cálculo de %1 amostras; encoder %2; DAC %3</translation>
-        </message>
-        <message>
-            <source>%1 mm per count</source>
-            <translation>%1 mm por contagem</translation>
-        </message>
-        <message>
-            <source>ideal</source>
-            <translation>ideal</translation>
-        </message>
-        <message>
-            <source>%1 bits over ±umax</source>
-            <translation>%1 bits em ±umax</translation>
-        </message>
-        <message>
-            <source>Axis %1 (%2)</source>
-            <translation>Eixo %1 (%2)</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Figures against the specification&lt;/h3&gt;</source>
-            <translation>&lt;h3&gt;Valores frente à especificação&lt;/h3&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Plots&lt;/h3&gt;</source>
-            <translation>&lt;h3&gt;Gráficos&lt;/h3&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Plant&lt;/h3&gt;</source>
-            <translation>&lt;h3&gt;Planta&lt;/h3&gt;</translation>
-        </message>
-        <message>
-            <source>ARX model A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (position in mm, u in V)</source>
-            <translation>Modelo ARX A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (posição em mm, u em V)</translation>
-        </message>
-        <message>
-            <source>A = %1</source>
-            <translation>A = %1</translation>
-        </message>
-        <message>
-            <source>B = %1</source>
-            <translation>B = %1</translation>
-        </message>
-        <message>
-            <source>not a valid model: %1</source>
-            <translation>modelo inválido: %1</translation>
-        </message>
-        <message>
-            <source>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</source>
-            <translation>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</translation>
-        </message>
-        <message>
-            <source>model units per mm of trajectory: %1</source>
-            <translation>unidades do modelo por mm de trajetória: %1</translation>
-        </message>
-        <message>
-            <source>flexible mode: %1 Hz, damping %2</source>
-            <translation>modo flexível: %1 Hz, amortecimento %2</translation>
-        </message>
-        <message>
-            <source>; anti-resonance %1 Hz, damping %2</source>
-            <translation>; antirressonância %1 Hz, amortecimento %2</translation>
-        </message>
-        <message>
-            <source>as every run and analysis sees it: G(s) = (%1) / (%2)</source>
-            <translation>como toda simulação e análise a vê: G(s) = (%1) / (%2)</translation>
-        </message>
-        <message>
-            <source>not a valid plant: %1</source>
-            <translation>planta inválida: %1</translation>
-        </message>
-        <message>
-            <source>identified as %1 from %2 (%3 samples at %4 s), fit %5 %</source>
-            <translation>identificada como %1 a partir de %2 (%3 amostras a %4 s), ajuste de %5 %</translation>
-        </message>
-        <message>
-            <source>, on validation data %1 %</source>
-            <translation>, nos dados de validação %1 %</translation>
-        </message>
-        <message>
-            <source>entered by hand: the session records no identification</source>
-            <translation>inserida manualmente: a sessão não registra identificação</translation>
-        </message>
-        <message>
-            <source>table friction: Coulomb %1 V, static %2 V, viscous %3 V per mm/s, backlash %4 mm, amplifier deadband %5 V; friction compensation %6 % (band %7 mm/s)</source>
-            <translation>atrito da mesa: Coulomb %1 V, estático %2 V, viscoso %3 V por mm/s, folga %4 mm, zona morta do amplificador %5 V; compensação de atrito %6 % (faixa de %7 mm/s)</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Design: %1&lt;/h3&gt;</source>
-            <translation>&lt;h3&gt;Projeto: %1&lt;/h3&gt;</translation>
-        </message>
-        <message>
-            <source>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</source>
-            <translation>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</translation>
-        </message>
-        <message>
-            <source>k&lt;sub&gt;p&lt;/sub&gt; = %1</source>
-            <translation>k&lt;sub&gt;p&lt;/sub&gt; = %1</translation>
-        </message>
-        <message>
-            <source>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</source>
-            <translation>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</translation>
-        </message>
-        <message>
-            <source>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
-            <translation>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</translation>
-        </message>
-        <message>
-            <source>ZPETC feedforward on</source>
-            <translation>pré-alimentação ZPETC ligada</translation>
-        </message>
-        <message>
-            <source>ZPETC feedforward off</source>
-            <translation>pré-alimentação ZPETC desligada</translation>
-        </message>
-        <message>
-            <source>%1 = %2 %3</source>
-            <translation>%1 = %2 %3</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Settings: %1&lt;/p&gt;</source>
-            <translation>&lt;p&gt;Configurações: %1&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>; </source>
-            <translation>; </translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;No design&lt;/b&gt;: %1: %2&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;Sem projeto&lt;/b&gt;: %1: %2&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Coefficients of the design:&lt;/p&gt;</source>
-            <translation>&lt;p&gt;Coeficientes do projeto:&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;tr style='background:#dddddd'&gt;&lt;th&gt;Name&lt;/th&gt;&lt;th&gt;Value&lt;/th&gt;&lt;th&gt;Unit&lt;/th&gt;&lt;/tr&gt;</source>
-            <translation>&lt;tr style='background:#dddddd'&gt;&lt;th&gt;Nome&lt;/th&gt;&lt;th&gt;Valor&lt;/th&gt;&lt;th&gt;Unidade&lt;/th&gt;&lt;/tr&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Controller&lt;/h3&gt;</source>
-            <translation>&lt;h3&gt;Controlador&lt;/h3&gt;</translation>
-        </message>
-        <message>
-            <source>digital PI at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</source>
-            <translation>PI digital com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</translation>
-        </message>
-        <message>
-            <source>difference equation: %1, e = r − y</source>
-            <translation>equação de diferenças: %1, e = r − y</translation>
-        </message>
-        <message>
-            <source>num = [%1], den = [%2] (ascending powers of z&lt;sup&gt;−1&lt;/sup&gt;)</source>
-            <translation>num = [%1], den = [%2] (potências crescentes de z&lt;sup&gt;−1&lt;/sup&gt;)</translation>
-        </message>
-        <message>
-            <source>notch at %1 Hz, width %2 Hz, depth %3 dB on the error: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, prewarped)</source>
-            <translation>notch em %1 Hz, largura %2 Hz, profundidade %3 dB no erro: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, com pré-distorção)</translation>
-        </message>
-        <message>
-            <source>no digital controller: %1</source>
-            <translation>sem controlador digital: %1</translation>
-        </message>
-        <message>
-            <source>the RST law above runs as designed, at T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
-            <translation>a lei RST acima é executada como projetada, com T&lt;sub&gt;s&lt;/sub&gt; = %1 s</translation>
-        </message>
-        <message>
-            <source>the method's step runs at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (File › Export › Firmware C header)</source>
-            <translation>o passo do método é executado com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (Arquivo › Exportar › Cabeçalho C para firmware)</translation>
-        </message>
-        <message>
-            <source>digital loop: least damping of its z-plane poles %1 (the design's %2)</source>
-            <translation>malha digital: menor amortecimento dos seus polos no plano z %1 (o do projeto: %2)</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;&lt;b&gt;Digital implementation&lt;/b&gt;&lt;/p&gt;</source>
-            <translation>&lt;p&gt;&lt;b&gt;Implementação digital&lt;/b&gt;&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>no design: %1: %2</source>
-            <translation>sem projeto: %1: %2</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Warnings&lt;/h3&gt;&lt;p&gt;None.&lt;/p&gt;</source>
-            <translation>&lt;h3&gt;Avisos&lt;/h3&gt;&lt;p&gt;Nenhum.&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Warnings&lt;/h3&gt;</source>
-            <translation>&lt;h3&gt;Avisos&lt;/h3&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;h2 style='page-break-before: always'&gt;Both axes: the XY contour&lt;/h2&gt;</source>
-            <translation>&lt;h2 style='page-break-before: always'&gt;Os dois eixos: o contorno XY&lt;/h2&gt;</translation>
-        </message>
-        <message>
-            <source>radial error of the circle: max %1 mm, RMS %2 mm</source>
-            <translation>erro radial do círculo: máx %1 mm, RMS %2 mm</translation>
-        </message>
-        <message>
-            <source>contour error of the program: max %1 mm, RMS %2 mm</source>
-            <translation>erro de contorno do programa: máx %1 mm, RMS %2 mm</translation>
-        </message>
-        <message>
-            <source>ISO 230-4: circular deviation G %1 mm, radial deviation F max %2 mm, F min %3 mm</source>
-            <translation>ISO 230-4: desvio circular G %1 mm, desvio radial F máx %2 mm, F mín %3 mm</translation>
-        </message>
-        <message>
-            <source>program: %1</source>
-            <translation>programa: %1</translation>
-        </message>
-        <message>
-            <source>input shaper %1 on the reference at %2 Hz, damping %3</source>
-            <translation>modelador de entrada %1 na referência em %2 Hz, amortecimento %3</translation>
-        </message>
-        <message>
-            <source>; axis %1: residual vibration %2 mm shaped, %3 mm unshaped</source>
-            <translation>; eixo %1: vibração residual de %2 mm com modelagem, %3 mm sem modelagem</translation>
-        </message>
-        <message>
-            <source>cross-coupled contouring controller (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), %3 contour estimate</source>
-            <translation>controlador de contorno com acoplamento cruzado (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), estimativa de contorno %3</translation>
-        </message>
-        <message>
-            <source>cross-coupling: %1</source>
-            <translation>acoplamento cruzado: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>FoldButton</name>
-        <message>
-            <source>%1: click to show or hide these settings</source>
-            <translation>%1: clique para mostrar ou ocultar estas configurações</translation>
-        </message>
-    </context>
-    <context>
-        <name>QObject</name>
-        <message>
-            <source>ITAE</source>
-            <translation>ITAE</translation>
-        </message>
-        <message>
-            <source>max |e|</source>
-            <translation>máx |e|</translation>
-        </message>
-        <message>
-            <source>RMSE</source>
-            <translation>RMSE</translation>
-        </message>
-        <message>
-            <source>max |u|</source>
-            <translation>máx |u|</translation>
-        </message>
-        <message>
-            <source>settle time</source>
-            <translation>tempo de acomodação</translation>
-        </message>
-        <message>
-            <source>phase margin</source>
-            <translation>margem de fase</translation>
-        </message>
-        <message>
-            <source>gain margin</source>
-            <translation>margem de ganho</translation>
-        </message>
-        <message>
-            <source>mm·s²</source>
-            <translation>mm·s²</translation>
-        </message>
-        <message>
-            <source>V</source>
-            <translation>V</translation>
-        </message>
-        <message>
-            <source>s after tf</source>
-            <translation>s após tf</translation>
-        </message>
-        <message>
-            <source>deg, larger is better</source>
-            <translation>graus, maior é melhor</translation>
-        </message>
-        <message>
-            <source>dB, larger is better</source>
-            <translation>dB, maior é melhor</translation>
-        </message>
-        <message>
-            <source>mm</source>
-            <translation>mm</translation>
-        </message>
-        <message>
-            <source>%1%2 (%3)</source>
-            <translation>%1%2 (%3)</translation>
-        </message>
-        <message>
-            <source> ∫t|e|dt</source>
-            <translation> ∫t|e|dt</translation>
-        </message>
-        <message>
-            <source>Could not write %1</source>
-            <translation>Não foi possível gravar %1</translation>
-        </message>
-        <message>
-            <source>Save plot</source>
-            <translation>Salvar gráfico</translation>
-        </message>
-        <message>
-            <source>PNG image (*.png);;PDF document (*.pdf)</source>
-            <translation>Imagem PNG (*.png);;Documento PDF (*.pdf)</translation>
-        </message>
-        <message>
-            <source>Reset view</source>
-            <translation>Restaurar vista</translation>
-        </message>
-        <message>
-            <source>Save as PNG...</source>
-            <translation>Salvar como PNG...</translation>
-        </message>
-        <message>
-            <source>Save as PDF...</source>
-            <translation>Salvar como PDF...</translation>
-        </message>
-        <message>
-            <source>breaks spec</source>
-            <translation>viola a especificação</translation>
-        </message>
-        <message>
-            <source>ζ = 1 (Mp 0 %)</source>
-            <translation>ζ = 1 (Mp 0 %)</translation>
-        </message>
-        <message>
-            <source>ζ ≥ %1 (Mp %2 %)</source>
-            <translation>ζ ≥ %1 (Mp %2 %)</translation>
-        </message>
-        <message>
-            <source>|z| ≤ %1 (ts %2 s)</source>
-            <translation>|z| ≤ %1 (ts %2 s)</translation>
-        </message>
-        <message>
-            <source>σ ≤ %1 (ts %2 s)</source>
-            <translation>σ ≤ %1 (ts %2 s)</translation>
-        </message>
-        <message>
-            <source>reference model ωn %1</source>
-            <translation>modelo de referência ωn %1</translation>
-        </message>
-        <message>
-            <source>dominant poles: ωn %1 rad/s, ζ %2</source>
-            <translation>polos dominantes: ωn %1 rad/s, ζ %2</translation>
-        </message>
-        <message>
-            <source>closed-loop unit step</source>
-            <translation>degrau unitário em malha fechada</translation>
-        </message>
-        <message>
-            <source>loop alone Kf B/T</source>
-            <translation>só a malha Kf B/T</translation>
-        </message>
-        <message>
-            <source>loop alone (no ZPETC)</source>
-            <translation>só a malha (sem ZPETC)</translation>
-        </message>
-        <message>
-            <source>with ZPETC</source>
-            <translation>com ZPETC</translation>
-        </message>
-        <message>
-            <source>with ZPETC (off)</source>
-            <translation>com ZPETC (desligado)</translation>
-        </message>
-        <message>
-            <source>n/a</source>
-            <translation>n/d</translation>
-        </message>
-        <message>
-            <source>the axis has no loop to analyse</source>
-            <translation>o eixo não tem malha para analisar</translation>
-        </message>
-        <message>
-            <source>an untitled session</source>
-            <translation>uma sessão sem título</translation>
-        </message>
-        <message>
-            <source>“%1”</source>
-            <translation>“%1”</translation>
-        </message>
-        <message>
-            <source>Recover unsaved work</source>
-            <translation>Recuperar trabalho não salvo</translation>
-        </message>
-        <message>
-            <source>XY Tune was closed without saving changes to %1 (last kept %2).
+<context>
+    <name>DesignReport</name>
+    <message>
+        <source>&lt;h1&gt;XY Tune design report&lt;/h1&gt;</source>
+        <translation>&lt;h1&gt;Relatório de projeto do XY Tune&lt;/h1&gt;</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Data</translation>
+    </message>
+    <message>
+        <source>XY Tune version</source>
+        <translation>Versão do XY Tune</translation>
+    </message>
+    <message>
+        <source>Session file</source>
+        <translation>Arquivo da sessão</translation>
+    </message>
+    <message>
+        <source>(unsaved session)</source>
+        <translation>(sessão não salva)</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Eixo %1</translation>
+    </message>
+    <message>
+        <source>%1%2</source>
+        <translation>%1%2</translation>
+    </message>
+    <message>
+        <source> (%1)</source>
+        <translation> (%1)</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Verdict&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Veredito&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;span style=&apos;color:#1b7f2a&apos;&gt;✓&lt;/span&gt; Both axes meet the specification, as designed and as implemented.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;span style=&apos;color:#1b7f2a&apos;&gt;✓&lt;/span&gt; Os dois eixos atendem à especificação, tanto como projetados quanto como implementados.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;span style=&apos;color:#c62828&apos;&gt;✗&lt;/span&gt; The design fails the specification:&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;span style=&apos;color:#c62828&apos;&gt;✗&lt;/span&gt; O projeto não atende à especificação:&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Limits this design would meet: %1.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Limites que este projeto atenderia: %1.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Specification&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Especificação&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>unit step: settling time (2 %) ≤ %1 s, overshoot ≤ %2 %</source>
+        <translation>degrau unitário: tempo de acomodação (2 %) ≤ %1 s, sobressinal ≤ %2 %</translation>
+    </message>
+    <message>
+        <source>tracking: max |e| ≤ %1 % of the travel, |u| ≤ %2 V and never clipped</source>
+        <translation>seguimento: |e| máx ≤ %1 % do curso, |u| ≤ %2 V e nunca limitado</translation>
+    </message>
+    <message>
+        <source>point-to-point move: settled into ±%1 mm within %2 s of its end</source>
+        <translation>movimento ponto a ponto: acomodado em ±%1 mm até %2 s após o seu fim</translation>
+    </message>
+    <message>
+        <source>loop margins: phase margin ≥ %1°, gain margin ≥ %2 dB (0: none stated)</source>
+        <translation>margens da malha: margem de fase ≥ %1°, margem de ganho ≥ %2 dB (0: nenhuma exigida)</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;Trajectory and implementation&lt;/h2&gt;</source>
+        <translation>&lt;h2&gt;Trajetória e implementação&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>%1 move from %2 mm to %3 mm, from t = %4 s to %5 s</source>
+        <translation>Movimento %1 de %2 mm a %3 mm, de t = %4 s a %5 s</translation>
+    </message>
+    <message>
+        <source>Quintic</source>
+        <translation>quíntico</translation>
+    </message>
+    <message>
+        <source>Cubic</source>
+        <translation>cúbico</translation>
+    </message>
+    <message>
+        <source>Circle of radius %1 mm at %2 rad/s, ramp-in %3 s</source>
+        <translation>Círculo de raio %1 mm a %2 rad/s, rampa de entrada de %3 s</translation>
+    </message>
+    <message>
+        <source>G-code program %1, feed scale %2, max acceleration %3 mm/s², max jerk %4 mm/s³</source>
+        <translation>Programa G-code %1, escala de avanço %2, aceleração máx %3 mm/s², jerk máx %4 mm/s³</translation>
+    </message>
+    <message>
+        <source> (tracking time %1)</source>
+        <translation> (tempo de rastreamento %1)</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Ti = kp/ki</source>
+        <translation>Ti = kp/ki</translation>
+    </message>
+    <message>
+        <source>Simulation: %1 (step %2 s)</source>
+        <translation>Simulação: %1 (passo de %2 s)</translation>
+    </message>
+    <message>
+        <source>Actuator limit: |u| ≤ %1 V</source>
+        <translation>Limite do atuador: |u| ≤ %1 V</translation>
+    </message>
+    <message>
+        <source>Digital PI: Ts = %1 s, %2 discretization; anti-windup %3</source>
+        <translation>PI digital: Ts = %1 s, discretização %2; anti-windup %3</translation>
+    </message>
+    <message>
+        <source>Computation delay %1 samples; encoder %2; DAC %3</source>
+        <translation>Atraso de cálculo de %1 amostras; encoder %2; DAC %3</translation>
+    </message>
+    <message>
+        <source>%1 mm per count</source>
+        <translation>%1 mm por contagem</translation>
+    </message>
+    <message>
+        <source>ideal</source>
+        <translation>ideal</translation>
+    </message>
+    <message>
+        <source>%1 bits over ±umax</source>
+        <translation>%1 bits em ±umax</translation>
+    </message>
+    <message>
+        <source>Axis %1 (%2)</source>
+        <translation>Eixo %1 (%2)</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Figures against the specification&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;Valores frente à especificação&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Plots&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;Gráficos&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Plant&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;Planta&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>ARX model A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (position in mm, u in V)</source>
+        <translation>Modelo ARX A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (posição em mm, u em V)</translation>
+    </message>
+    <message>
+        <source>A = %1</source>
+        <translation>A = %1</translation>
+    </message>
+    <message>
+        <source>B = %1</source>
+        <translation>B = %1</translation>
+    </message>
+    <message>
+        <source>not a valid model: %1</source>
+        <translation>modelo inválido: %1</translation>
+    </message>
+    <message>
+        <source>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</source>
+        <translation>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</translation>
+    </message>
+    <message>
+        <source>model units per mm of trajectory: %1</source>
+        <translation>unidades do modelo por mm de trajetória: %1</translation>
+    </message>
+    <message>
+        <source>flexible mode: %1 Hz, damping %2</source>
+        <translation>modo flexível: %1 Hz, amortecimento %2</translation>
+    </message>
+    <message>
+        <source>; anti-resonance %1 Hz, damping %2</source>
+        <translation>; antirressonância %1 Hz, amortecimento %2</translation>
+    </message>
+    <message>
+        <source>as every run and analysis sees it: G(s) = (%1) / (%2)</source>
+        <translation>como toda simulação e análise a vê: G(s) = (%1) / (%2)</translation>
+    </message>
+    <message>
+        <source>not a valid plant: %1</source>
+        <translation>planta inválida: %1</translation>
+    </message>
+    <message>
+        <source>identified as %1 from %2 (%3 samples at %4 s), fit %5 %</source>
+        <translation>identificada como %1 a partir de %2 (%3 amostras a %4 s), ajuste de %5 %</translation>
+    </message>
+    <message>
+        <source>, on validation data %1 %</source>
+        <translation>, nos dados de validação %1 %</translation>
+    </message>
+    <message>
+        <source>entered by hand: the session records no identification</source>
+        <translation>inserida manualmente: a sessão não registra identificação</translation>
+    </message>
+    <message>
+        <source>table friction: Coulomb %1 V, static %2 V, viscous %3 V per mm/s, backlash %4 mm, amplifier deadband %5 V; friction compensation %6 % (band %7 mm/s)</source>
+        <translation>atrito da mesa: Coulomb %1 V, estático %2 V, viscoso %3 V por mm/s, folga %4 mm, zona morta do amplificador %5 V; compensação de atrito %6 % (faixa de %7 mm/s)</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Design: %1&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;Projeto: %1&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</source>
+        <translation>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</translation>
+    </message>
+    <message>
+        <source>k&lt;sub&gt;p&lt;/sub&gt; = %1</source>
+        <translation>k&lt;sub&gt;p&lt;/sub&gt; = %1</translation>
+    </message>
+    <message>
+        <source>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</source>
+        <translation>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</translation>
+    </message>
+    <message>
+        <source>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
+        <translation>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</translation>
+    </message>
+    <message>
+        <source>ZPETC feedforward on</source>
+        <translation>pré-alimentação ZPETC ligada</translation>
+    </message>
+    <message>
+        <source>ZPETC feedforward off</source>
+        <translation>pré-alimentação ZPETC desligada</translation>
+    </message>
+    <message>
+        <source>%1 = %2 %3</source>
+        <translation>%1 = %2 %3</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Settings: %1&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Configurações: %1&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;No design&lt;/b&gt;: %1: %2&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Sem projeto&lt;/b&gt;: %1: %2&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Coefficients of the design:&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Coeficientes do projeto:&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th&gt;Name&lt;/th&gt;&lt;th&gt;Value&lt;/th&gt;&lt;th&gt;Unit&lt;/th&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th&gt;Nome&lt;/th&gt;&lt;th&gt;Valor&lt;/th&gt;&lt;th&gt;Unidade&lt;/th&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Controller&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;Controlador&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>digital PI at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</source>
+        <translation>PI digital com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</translation>
+    </message>
+    <message>
+        <source>difference equation: %1, e = r − y</source>
+        <translation>equação de diferenças: %1, e = r − y</translation>
+    </message>
+    <message>
+        <source>num = [%1], den = [%2] (ascending powers of z&lt;sup&gt;−1&lt;/sup&gt;)</source>
+        <translation>num = [%1], den = [%2] (potências crescentes de z&lt;sup&gt;−1&lt;/sup&gt;)</translation>
+    </message>
+    <message>
+        <source>notch at %1 Hz, width %2 Hz, depth %3 dB on the error: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, prewarped)</source>
+        <translation>notch em %1 Hz, largura %2 Hz, profundidade %3 dB no erro: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, com pré-distorção)</translation>
+    </message>
+    <message>
+        <source>no digital controller: %1</source>
+        <translation>sem controlador digital: %1</translation>
+    </message>
+    <message>
+        <source>the RST law above runs as designed, at T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
+        <translation>a lei RST acima é executada como projetada, com T&lt;sub&gt;s&lt;/sub&gt; = %1 s</translation>
+    </message>
+    <message>
+        <source>the method&apos;s step runs at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (File › Export › Firmware C header)</source>
+        <translation>o passo do método é executado com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (Arquivo › Exportar › Cabeçalho C para firmware)</translation>
+    </message>
+    <message>
+        <source>digital loop: least damping of its z-plane poles %1 (the design&apos;s %2)</source>
+        <translation>malha digital: menor amortecimento dos seus polos no plano z %1 (o do projeto: %2)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Digital implementation&lt;/b&gt;&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Implementação digital&lt;/b&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>no design: %1: %2</source>
+        <translation>sem projeto: %1: %2</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Warnings&lt;/h3&gt;&lt;p&gt;None.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Avisos&lt;/h3&gt;&lt;p&gt;Nenhum.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Warnings&lt;/h3&gt;</source>
+        <translation>&lt;h3&gt;Avisos&lt;/h3&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h2 style=&apos;page-break-before: always&apos;&gt;Both axes: the XY contour&lt;/h2&gt;</source>
+        <translation>&lt;h2 style=&apos;page-break-before: always&apos;&gt;Os dois eixos: o contorno XY&lt;/h2&gt;</translation>
+    </message>
+    <message>
+        <source>radial error of the circle: max %1 mm, RMS %2 mm</source>
+        <translation>erro radial do círculo: máx %1 mm, RMS %2 mm</translation>
+    </message>
+    <message>
+        <source>contour error of the program: max %1 mm, RMS %2 mm</source>
+        <translation>erro de contorno do programa: máx %1 mm, RMS %2 mm</translation>
+    </message>
+    <message>
+        <source>ISO 230-4: circular deviation G %1 mm, radial deviation F max %2 mm, F min %3 mm</source>
+        <translation>ISO 230-4: desvio circular G %1 mm, desvio radial F máx %2 mm, F mín %3 mm</translation>
+    </message>
+    <message>
+        <source>program: %1</source>
+        <translation>programa: %1</translation>
+    </message>
+    <message>
+        <source>input shaper %1 on the reference at %2 Hz, damping %3</source>
+        <translation>modelador de entrada %1 na referência em %2 Hz, amortecimento %3</translation>
+    </message>
+    <message>
+        <source>; axis %1: residual vibration %2 mm shaped, %3 mm unshaped</source>
+        <translation>; eixo %1: vibração residual de %2 mm com modelagem, %3 mm sem modelagem</translation>
+    </message>
+    <message>
+        <source>cross-coupled contouring controller (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), %3 contour estimate</source>
+        <translation>controlador de contorno com acoplamento cruzado (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), estimativa de contorno %3</translation>
+    </message>
+    <message>
+        <source>cross-coupling: %1</source>
+        <translation>acoplamento cruzado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>FoldButton</name>
+    <message>
+        <source>%1: click to show or hide these settings</source>
+        <translation>%1: clique para mostrar ou ocultar estas configurações</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>ITAE</source>
+        <translation>ITAE</translation>
+    </message>
+    <message>
+        <source>max |e|</source>
+        <translation>máx |e|</translation>
+    </message>
+    <message>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <source>max |u|</source>
+        <translation>máx |u|</translation>
+    </message>
+    <message>
+        <source>settle time</source>
+        <translation>tempo de acomodação</translation>
+    </message>
+    <message>
+        <source>phase margin</source>
+        <translation>margem de fase</translation>
+    </message>
+    <message>
+        <source>gain margin</source>
+        <translation>margem de ganho</translation>
+    </message>
+    <message>
+        <source>mm·s²</source>
+        <translation>mm·s²</translation>
+    </message>
+    <message>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <source>s after tf</source>
+        <translation>s após tf</translation>
+    </message>
+    <message>
+        <source>deg, larger is better</source>
+        <translation>graus, maior é melhor</translation>
+    </message>
+    <message>
+        <source>dB, larger is better</source>
+        <translation>dB, maior é melhor</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>%1%2 (%3)</source>
+        <translation>%1%2 (%3)</translation>
+    </message>
+    <message>
+        <source> ∫t|e|dt</source>
+        <translation> ∫t|e|dt</translation>
+    </message>
+    <message>
+        <source>Could not write %1</source>
+        <translation>Não foi possível gravar %1</translation>
+    </message>
+    <message>
+        <source>Save plot</source>
+        <translation>Salvar gráfico</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;PDF document (*.pdf)</source>
+        <translation>Imagem PNG (*.png);;Documento PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation>Restaurar vista</translation>
+    </message>
+    <message>
+        <source>Save as PNG...</source>
+        <translation>Salvar como PNG...</translation>
+    </message>
+    <message>
+        <source>Save as PDF...</source>
+        <translation>Salvar como PDF...</translation>
+    </message>
+    <message>
+        <source>breaks spec</source>
+        <translation>viola a especificação</translation>
+    </message>
+    <message>
+        <source>ζ = 1 (Mp 0 %)</source>
+        <translation>ζ = 1 (Mp 0 %)</translation>
+    </message>
+    <message>
+        <source>ζ ≥ %1 (Mp %2 %)</source>
+        <translation>ζ ≥ %1 (Mp %2 %)</translation>
+    </message>
+    <message>
+        <source>|z| ≤ %1 (ts %2 s)</source>
+        <translation>|z| ≤ %1 (ts %2 s)</translation>
+    </message>
+    <message>
+        <source>σ ≤ %1 (ts %2 s)</source>
+        <translation>σ ≤ %1 (ts %2 s)</translation>
+    </message>
+    <message>
+        <source>reference model ωn %1</source>
+        <translation>modelo de referência ωn %1</translation>
+    </message>
+    <message>
+        <source>dominant poles: ωn %1 rad/s, ζ %2</source>
+        <translation>polos dominantes: ωn %1 rad/s, ζ %2</translation>
+    </message>
+    <message>
+        <source>closed-loop unit step</source>
+        <translation>degrau unitário em malha fechada</translation>
+    </message>
+    <message>
+        <source>loop alone Kf B/T</source>
+        <translation>só a malha Kf B/T</translation>
+    </message>
+    <message>
+        <source>loop alone (no ZPETC)</source>
+        <translation>só a malha (sem ZPETC)</translation>
+    </message>
+    <message>
+        <source>with ZPETC</source>
+        <translation>com ZPETC</translation>
+    </message>
+    <message>
+        <source>with ZPETC (off)</source>
+        <translation>com ZPETC (desligado)</translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation>n/d</translation>
+    </message>
+    <message>
+        <source>the axis has no loop to analyse</source>
+        <translation>o eixo não tem malha para analisar</translation>
+    </message>
+    <message>
+        <source>an untitled session</source>
+        <translation>uma sessão sem título</translation>
+    </message>
+    <message>
+        <source>“%1”</source>
+        <translation>“%1”</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>Recuperar trabalho não salvo</translation>
+    </message>
+    <message>
+        <source>XY Tune was closed without saving changes to %1 (last kept %2).
 
 Restore that work?</source>
-            <translation>O XY Tune foi fechado sem salvar as alterações em %1 (guardadas pela última vez em %2).
+        <translation>O XY Tune foi fechado sem salvar as alterações em %1 (guardadas pela última vez em %2).
 
 Restaurar esse trabalho?</translation>
-        </message>
-        <message>
-            <source>&amp;Restore</source>
-            <translation>&amp;Restaurar</translation>
-        </message>
-        <message>
-            <source>&amp;Discard</source>
-            <translation>&amp;Descartar</translation>
-        </message>
-        <message>
-            <source>Restore unsaved work</source>
-            <translation>Restaurar trabalho não salvo</translation>
-        </message>
-        <message>
-            <source>live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live limit of %4 (the exports and the report use dt = %2 s)</source>
-            <translation>vista ao vivo simulada com dt = %1 s, não %2 s: %3 amostras excedem o limite ao vivo de %4 (as exportações e o relatório usam dt = %2 s)</translation>
-        </message>
-        <message>
-            <source>ωn = %1 rad/s, kp = %2</source>
-            <translation>ωn = %1 rad/s, kp = %2</translation>
-        </message>
-        <message>
-            <source>pole placement, t1 = %1, Ts = %2 s%3</source>
-            <translation>alocação de polos, t1 = %1, Ts = %2 s%3</translation>
-        </message>
-        <message>
-            <source>, ZPETC</source>
-            <translation>, ZPETC</translation>
-        </message>
-        <message>
-            <source>plant k0 = %1, a1 = %2, a2 = %3</source>
-            <translation>planta k0 = %1, a1 = %2, a2 = %3</translation>
-        </message>
-        <message>
-            <source>not computed (the study was cancelled)</source>
-            <translation>não calculado (o estudo foi cancelado)</translation>
-        </message>
-        <message>
-            <source>unstable closed loop</source>
-            <translation>malha fechada instável</translation>
-        </message>
-        <message>
-            <source>the run diverged</source>
-            <translation>a simulação divergiu</translation>
-        </message>
-        <message>
-            <source>settling %1 s &gt; %2 s</source>
-            <translation>acomodação %1 s &gt; %2 s</translation>
-        </message>
-        <message>
-            <source>overshoot %1 % &gt; %2 %</source>
-            <translation>sobressinal %1 % &gt; %2 %</translation>
-        </message>
-        <message>
-            <source>|u| saturates at %1 V</source>
-            <translation>|u| satura em %1 V</translation>
-        </message>
-        <message>
-            <source>|u| %1 V &gt; %2 V</source>
-            <translation>|u| %1 V &gt; %2 V</translation>
-        </message>
-        <message>
-            <source>phase margin %1° &lt; %2°</source>
-            <translation>margem de fase %1° &lt; %2°</translation>
-        </message>
-        <message>
-            <source>gain margin %1 dB &lt; %2 dB</source>
-            <translation>margem de ganho %1 dB &lt; %2 dB</translation>
-        </message>
-        <message>
-            <source>max error %1 % &gt; %2 %</source>
-            <translation>erro máx %1 % &gt; %2 %</translation>
-        </message>
-        <message>
-            <source>—</source>
-            <translation>—</translation>
-        </message>
-        <message>
-            <source>ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5</source>
-            <translation>ωn = %1 rad/s   kp = %2   %3 = %4   viável: %5</translation>
-        </message>
-        <message>
-            <source>yes</source>
-            <translation>sim</translation>
-        </message>
-        <message>
-            <source>no</source>
-            <translation>não</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>&amp;Restore</source>
+        <translation>&amp;Restaurar</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>&amp;Descartar</translation>
+    </message>
+    <message>
+        <source>Restore unsaved work</source>
+        <translation>Restaurar trabalho não salvo</translation>
+    </message>
+    <message>
+        <source>live view simulated at dt = %1 s, not %2 s: %3 samples exceed the live limit of %4 (the exports and the report use dt = %2 s)</source>
+        <translation>vista ao vivo simulada com dt = %1 s, não %2 s: %3 amostras excedem o limite ao vivo de %4 (as exportações e o relatório usam dt = %2 s)</translation>
+    </message>
+    <message>
+        <source>ωn = %1 rad/s, kp = %2</source>
+        <translation>ωn = %1 rad/s, kp = %2</translation>
+    </message>
+    <message>
+        <source>pole placement, t1 = %1, Ts = %2 s%3</source>
+        <translation>alocação de polos, t1 = %1, Ts = %2 s%3</translation>
+    </message>
+    <message>
+        <source>, ZPETC</source>
+        <translation>, ZPETC</translation>
+    </message>
+    <message>
+        <source>plant k0 = %1, a1 = %2, a2 = %3</source>
+        <translation>planta k0 = %1, a1 = %2, a2 = %3</translation>
+    </message>
+    <message>
+        <source>not computed (the study was cancelled)</source>
+        <translation>não calculado (o estudo foi cancelado)</translation>
+    </message>
+    <message>
+        <source>unstable closed loop</source>
+        <translation>malha fechada instável</translation>
+    </message>
+    <message>
+        <source>the run diverged</source>
+        <translation>a simulação divergiu</translation>
+    </message>
+    <message>
+        <source>settling %1 s &gt; %2 s</source>
+        <translation>acomodação %1 s &gt; %2 s</translation>
+    </message>
+    <message>
+        <source>overshoot %1 % &gt; %2 %</source>
+        <translation>sobressinal %1 % &gt; %2 %</translation>
+    </message>
+    <message>
+        <source>|u| saturates at %1 V</source>
+        <translation>|u| satura em %1 V</translation>
+    </message>
+    <message>
+        <source>|u| %1 V &gt; %2 V</source>
+        <translation>|u| %1 V &gt; %2 V</translation>
+    </message>
+    <message>
+        <source>phase margin %1° &lt; %2°</source>
+        <translation>margem de fase %1° &lt; %2°</translation>
+    </message>
+    <message>
+        <source>gain margin %1 dB &lt; %2 dB</source>
+        <translation>margem de ganho %1 dB &lt; %2 dB</translation>
+    </message>
+    <message>
+        <source>max error %1 % &gt; %2 %</source>
+        <translation>erro máx %1 % &gt; %2 %</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>ωn = %1 rad/s   kp = %2   %3 = %4   feasible: %5</source>
+        <translation>ωn = %1 rad/s   kp = %2   %3 = %4   viável: %5</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sim</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>não</translation>
+    </message>
+    <message>
+        <source>
 fails: %1</source>
-            <translation>
+        <translation>
 falha: %1</translation>
-        </message>
-        <message>
-            <source>colour: the metric, by the scale at the right (yellow is the high end, better only for the margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or diverged · light grey: not computed (cancelled)</source>
-            <translation>cor: a métrica, pela escala à direita (amarelo é o extremo alto, melhor só para as margens) · sem véu e contornado: viável · com véu: inviável · cinza: instável ou divergente · cinza-claro: não calculado (cancelado)</translation>
-        </message>
-        <message>
-            <source>within ±bound</source>
-            <translation>dentro de ±limite</translation>
-        </message>
-        <message>
-            <source>%1 lags outside</source>
-            <translation>%1 atrasos fora</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source>kp %1 V/mm, ki %2 V/(mm·s)</source>
-            <translation>kp %1 V/mm, ki %2 V/(mm·s)</translation>
-        </message>
-        <message>
-            <source>circular</source>
-            <translation>circular</translation>
-        </message>
-        <message>
-            <source>linear</source>
-            <translation>linear</translation>
-        </message>
-        <message>
-            <source>the G-code program</source>
-            <translation>o programa G-code</translation>
-        </message>
-        <message>
-            <source>the program %1</source>
-            <translation>o programa %1</translation>
-        </message>
-        <message>
-            <source>the %1 mm circle</source>
-            <translation>o círculo de %1 mm</translation>
-        </message>
-        <message>
-            <source>the point-to-point move</source>
-            <translation>o movimento ponto a ponto</translation>
-        </message>
-        <message>
-            <source>The contour of %1, run once for each pair of gains with the axes, the limit and the %2 estimate of the session as it is when the sweep starts.</source>
-            <translation>O contorno de %1, simulado uma vez para cada par de ganhos com os eixos, o limite e a estimativa %2 da sessão como está quando a varredura começa.</translation>
-        </message>
-        <message>
-            <source>the actuator limit, %1 V then</source>
-            <translation>o limite do atuador, %1 V naquele momento</translation>
-        </message>
-        <message>
-            <source>axis %1</source>
-            <translation>eixo %1</translation>
-        </message>
-        <message>
-            <source>the trajectory</source>
-            <translation>a trajetória</translation>
-        </message>
-        <message>
-            <source>the coupling's estimate</source>
-            <translation>a estimativa do acoplamento</translation>
-        </message>
-        <message>
-            <source>the specification</source>
-            <translation>a especificação</translation>
-        </message>
-        <message>
-            <source>the implementation</source>
-            <translation>a implementação</translation>
-        </message>
-        <message>
-            <source>%1 design</source>
-            <translation>projeto %1</translation>
-        </message>
-        <message>
-            <source>%1 closed-loop poles</source>
-            <translation>polos de malha fechada %1</translation>
-        </message>
-        <message>
-            <source>%1 RMSE (mm)</source>
-            <translation>%1 RMSE (mm)</translation>
-        </message>
-        <message>
-            <source>%1 max |e| (mm)</source>
-            <translation>%1 máx |e| (mm)</translation>
-        </message>
-        <message>
-            <source>%1 max |u| (V)</source>
-            <translation>%1 máx |u| (V)</translation>
-        </message>
-        <message>
-            <source>%1 settling (s)</source>
-            <translation>%1 acomodação (s)</translation>
-        </message>
-        <message>
-            <source>unstable</source>
-            <translation>instável</translation>
-        </message>
-        <message>
-            <source>%1 overshoot (%)</source>
-            <translation>%1 sobressinal (%)</translation>
-        </message>
-        <message>
-            <source>%1 ITAE</source>
-            <translation>%1 ITAE</translation>
-        </message>
-    </context>
-    <context>
-        <name>ReportMetrics</name>
-        <message>
-            <source>n/a</source>
-            <translation>n/d</translation>
-        </message>
-        <message>
-            <source>&gt; %1 (not settled in the run)</source>
-            <translation>&gt; %1 (não acomodou na simulação)</translation>
-        </message>
-        <message>
-            <source>no</source>
-            <translation>não</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;No figures: the axis has no design (%1: %2).&lt;/p&gt;</source>
-            <translation>&lt;p&gt;Sem valores: o eixo não tem projeto (%1: %2).&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>—</source>
-            <translation>—</translation>
-        </message>
-        <message>
-            <source>≤ %1</source>
-            <translation>≤ %1</translation>
-        </message>
-        <message>
-            <source> (flagged, not applied)</source>
-            <translation> (sinalizado, não aplicado)</translation>
-        </message>
-        <message>
-            <source>|e| ≤ %1</source>
-            <translation>|e| ≤ %1</translation>
-        </message>
-        <message>
-            <source>same step</source>
-            <translation>mesmo degrau</translation>
-        </message>
-        <message>
-            <source>unstable</source>
-            <translation>instável</translation>
-        </message>
-        <message>
-            <source>same loop</source>
-            <translation>mesma malha</translation>
-        </message>
-        <message>
-            <source>≥ %1</source>
-            <translation>≥ %1</translation>
-        </message>
-        <message>
-            <source>&lt;tr style='background:#dddddd'&gt;&lt;th align='left'&gt;Figure&lt;/th&gt;&lt;th&gt;Limit&lt;/th&gt;&lt;th&gt;As designed&lt;/th&gt;&lt;th&gt;As implemented%1&lt;/th&gt;&lt;/tr&gt;</source>
-            <translation>&lt;tr style='background:#dddddd'&gt;&lt;th align='left'&gt;Valor&lt;/th&gt;&lt;th&gt;Limite&lt;/th&gt;&lt;th&gt;Como projetado&lt;/th&gt;&lt;th&gt;Como implementado%1&lt;/th&gt;&lt;/tr&gt;</translation>
-        </message>
-        <message>
-            <source> (digital, Ts = %1 s)</source>
-            <translation> (digital, Ts = %1 s)</translation>
-        </message>
-    </context>
-    <context>
-        <name>ReportWriter</name>
-        <message>
-            <source>Cannot write the report to %1: %2</source>
-            <translation>Não é possível gravar o relatório em %1: %2</translation>
-        </message>
-        <message>
-            <source>No report: the session's run is refused: %1: %2</source>
-            <translation>Sem relatório: a simulação da sessão foi recusada: %1: %2</translation>
-        </message>
-        <message>
-            <source>XY Tune design report</source>
-            <translation>Relatório de projeto do XY Tune</translation>
-        </message>
-        <message>
-            <source>XY Tune %1</source>
-            <translation>XY Tune %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::BodePlot</name>
-        <message>
-            <source>Bode diagram</source>
-            <translation>Diagrama de Bode</translation>
-        </message>
-        <message>
-            <source>magnitude (dB)</source>
-            <translation>módulo (dB)</translation>
-        </message>
-        <message>
-            <source>phase (°)</source>
-            <translation>fase (°)</translation>
-        </message>
-        <message>
-            <source>frequency ω (rad/s)</source>
-            <translation>frequência ω (rad/s)</translation>
-        </message>
-        <message>
-            <source>measured L = C H</source>
-            <translation>L = C H medido</translation>
-        </message>
-        <message>
-            <source>measured L = C H (%1)</source>
-            <translation>L = C H medido (%1)</translation>
-        </message>
-        <message>
-            <source>hover the plot: ω, |L| and ∠L of the open loop</source>
-            <translation>passe o mouse sobre o gráfico: ω, |L| e ∠L da malha aberta</translation>
-        </message>
-        <message>
-            <source>open loop L</source>
-            <translation>malha aberta L</translation>
-        </message>
-        <message>
-            <source>|S| sensitivity</source>
-            <translation>|S| sensibilidade</translation>
-        </message>
-        <message>
-            <source>|T| closed loop</source>
-            <translation>|T| malha fechada</translation>
-        </message>
-        <message>
-            <source>tracking, loop alone</source>
-            <translation>seguimento, só a malha</translation>
-        </message>
-        <message>
-            <source>tracking with %1</source>
-            <translation>seguimento com %1</translation>
-        </message>
-        <message>
-            <source>tracking with </source>
-            <translation>seguimento com </translation>
-        </message>
-        <message>
-            <source>L without the notch</source>
-            <translation>L sem o notch</translation>
-        </message>
-        <message>
-            <source> (PM %1°)</source>
-            <translation> (MF %1°)</translation>
-        </message>
-        <message>
-            <source>GM %1 dB at %2 rad/s</source>
-            <translation>MG %1 dB em %2 rad/s</translation>
-        </message>
-        <message>
-            <source> dB</source>
-            <translation> dB</translation>
-        </message>
-        <message>
-            <source>PM %1° at %2 rad/s</source>
-            <translation>MF %1° em %2 rad/s</translation>
-        </message>
-        <message>
-            <source>reference ω = %1</source>
-            <translation>referência ω = %1</translation>
-        </message>
-        <message>
-            <source>Nyquist π/Ts</source>
-            <translation>Nyquist π/Ts</translation>
-        </message>
-        <message>
-            <source>the closed loop is unstable: the margins are not robustness measures</source>
-            <translation>a malha fechada é instável: as margens não são medidas de robustez</translation>
-        </message>
-        <message>
-            <source>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</source>
-            <translation>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</translation>
-        </message>
-        <message>
-            <source>Bode diagram of the loop L(jω) = C(jω) G(jω): magnitude (dB) and phase (°) against ω (rad/s) on an adaptive grid, with the gain and phase margins drawn where they are read (green when they meet the specification's minima, red when not), and |S| = |1/(1 + L)| and |T| = |L/(1 + L)|.</source>
-            <translation>Diagrama de Bode da malha L(jω) = C(jω) G(jω): módulo (dB) e fase (°) em função de ω (rad/s) numa grade adaptativa, com as margens de ganho e de fase desenhadas onde são lidas (em verde quando atendem aos mínimos da especificação, em vermelho quando não), e |S| = |1/(1 + L)| e |T| = |L/(1 + L)|.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::BodeView</name>
-        <message>
-            <source>Bode diagram of %1</source>
-            <translation>Diagrama de Bode de %1</translation>
-        </message>
-        <message>
-            <source>No frequency analysis: %1</source>
-            <translation>Sem análise em frequência: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ContourBandPlot</name>
-        <message>
-            <source>XY contour</source>
-            <translation>Contorno XY</translation>
-        </message>
-        <message>
-            <source>x (mm)</source>
-            <translation>x (mm)</translation>
-        </message>
-        <message>
-            <source>y (mm)</source>
-            <translation>y (mm)</translation>
-        </message>
-        <message>
-            <source>The programmed contour dashed, the nominal design's traced contour solid, and the band the mismatched plant pairs trace (min–max light, 5–95 % darker); the contour error is magnified about the contour by the factor in the title.</source>
-            <translation>O contorno programado tracejado, o contorno percorrido pelo projeto nominal em linha cheia e a faixa que os pares de plantas discrepantes percorrem (mín–máx claro, 5–95 % mais escuro); o erro de contorno é ampliado em torno do contorno pelo fator do título.</translation>
-        </message>
-        <message>
-            <source>Not computed yet.</source>
-            <translation>Ainda não calculado.</translation>
-        </message>
-        <message>
-            <source>No stable plant pair: no band.</source>
-            <translation>Nenhum par de plantas estável: sem faixa.</translation>
-        </message>
-        <message>
-            <source>XY contour, error ×%1</source>
-            <translation>Contorno XY, erro ×%1</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ContourControls</name>
-        <message>
-            <source>Ballbar</source>
-            <translation>Ballbar</translation>
-        </message>
-        <message>
-            <source>Ballbar polar view</source>
-            <translation>Vista polar do ballbar</translation>
-        </message>
-        <message>
-            <source>The ISO 230-4 circular test of the program's full circles, as a ballbar plots it</source>
-            <translation>O ensaio circular ISO 230-4 dos círculos completos do programa, como um ballbar o traça</translation>
-        </message>
-        <message>
-            <source>◀</source>
-            <translation>◀</translation>
-        </message>
-        <message>
-            <source>Previous corner</source>
-            <translation>Canto anterior</translation>
-        </message>
-        <message>
-            <source>Zoom to the previous sharp corner</source>
-            <translation>Ampliar o canto vivo anterior</translation>
-        </message>
-        <message>
-            <source>▶</source>
-            <translation>▶</translation>
-        </message>
-        <message>
-            <source>Next corner</source>
-            <translation>Próximo canto</translation>
-        </message>
-        <message>
-            <source>Zoom to the next sharp corner (after the last one: the whole path)</source>
-            <translation>Ampliar o próximo canto vivo (depois do último: o percurso inteiro)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ContourPlot</name>
-        <message>
-            <source>x (mm)</source>
-            <translation>x (mm)</translation>
-        </message>
-        <message>
-            <source>y (mm)</source>
-            <translation>y (mm)</translation>
-        </message>
-        <message>
-            <source>commanded</source>
-            <translation>comandado</translation>
-        </message>
-        <message>
-            <source>traced</source>
-            <translation>percorrido</translation>
-        </message>
-        <message>
-            <source>F max/min</source>
-            <translation>F máx/mín</translation>
-        </message>
-        <message>
-            <source>G (LS centre)</source>
-            <translation>G (centro MQ)</translation>
-        </message>
-        <message>
-            <source>sharp corners</source>
-            <translation>cantos vivos</translation>
-        </message>
-        <message>
-            <source>largest error</source>
-            <translation>maior erro</translation>
-        </message>
-        <message>
-            <source>XY contour: an axis could not be simulated</source>
-            <translation>Contorno XY: um eixo não pôde ser simulado</translation>
-        </message>
-        <message>
-            <source>XY contour: the program could not be run</source>
-            <translation>Contorno XY: o programa não pôde ser executado</translation>
-        </message>
-        <message>
-            <source>error × %1</source>
-            <translation>erro × %1</translation>
-        </message>
-        <message>
-            <source>independent axes, error × %1</source>
-            <translation>eixos independentes, erro × %1</translation>
-        </message>
-        <message>
-            <source>radial, after the ramp-in</source>
-            <translation>radial, após a rampa de entrada</translation>
-        </message>
-        <message>
-            <source>from the line</source>
-            <translation>em relação à linha</translation>
-        </message>
-        <message>
-            <source>Cross-coupled contour error (%1): max %2 mm, RMS %3 mm; independent axes: max %4 mm</source>
-            <translation>Erro de contorno com acoplamento cruzado (%1): máx %2 mm, RMS %3 mm; eixos independentes: máx %4 mm</translation>
-        </message>
-        <message>
-            <source>Contour error (radial, after the ramp-in): max %1 mm, RMS %2 mm</source>
-            <translation>Erro de contorno (radial, após a rampa de entrada): máx %1 mm, RMS %2 mm</translation>
-        </message>
-        <message>
-            <source>Tracking error: max |e_x| %1 mm, max |e_y| %2 mm</source>
-            <translation>Erro de seguimento: máx |e_x| %1 mm, máx |e_y| %2 mm</translation>
-        </message>
-        <message>
-            <source>programmed</source>
-            <translation>programado</translation>
-        </message>
-        <message>
-            <source>error × %1, |e| (mm) &lt; %2</source>
-            <translation>erro × %1, |e| (mm) &lt; %2</translation>
-        </message>
-        <message>
-            <source>≥ %1</source>
-            <translation>≥ %1</translation>
-        </message>
-        <message>
-            <source>Contour error max %1, RMS %2 mm</source>
-            <translation>Erro de contorno máx %1, RMS %2 mm</translation>
-        </message>
-        <message>
-            <source>; corner %1/%2: %3 mm</source>
-            <translation>; canto %1/%2: %3 mm</translation>
-        </message>
-        <message>
-            <source>; corner %1/%2: no sample near it</source>
-            <translation>; canto %1/%2: nenhuma amostra perto dele</translation>
-        </message>
-        <message numerus="yes">
-            <source>; %n corner(s)</source>
-            <translation>
-                <numerusform>; %n canto</numerusform>
-                <numerusform>; %n cantos</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Cross-coupled: </source>
-            <translation>Acoplamento cruzado: </translation>
-        </message>
-        <message>
-            <source>; independent axes: max %1 mm</source>
-            <translation>; eixos independentes: máx %1 mm</translation>
-        </message>
-        <message>
-            <source>without feedforward, error × %1</source>
-            <translation>sem pré-alimentação, erro × %1</translation>
-        </message>
-        <message>
-            <source>; without feedforward: max %1 mm</source>
-            <translation>; sem pré-alimentação: máx %1 mm</translation>
-        </message>
-        <message>
-            <source>nominal</source>
-            <translation>nominal</translation>
-        </message>
-        <message>
-            <source>CW run</source>
-            <translation>percurso horário</translation>
-        </message>
-        <message>
-            <source>CCW run</source>
-            <translation>percurso anti-horário</translation>
-        </message>
-        <message>
-            <source>%1 ×%2</source>
-            <translation>%1 ×%2</translation>
-        </message>
-        <message>
-            <source>ISO 230-4 (mm): G %1, F max %2, F min %3</source>
-            <translation>ISO 230-4 (mm): G %1, F máx %2, F mín %3</translation>
-        </message>
-        <message>
-            <source>, H %1</source>
-            <translation>, H %1</translation>
-        </message>
-        <message>
-            <source>%1 without friction compensation ×%2</source>
-            <translation>%1 sem compensação de atrito ×%2</translation>
-        </message>
-        <message>
-            <source>; without friction compensation G %1</source>
-            <translation>; sem compensação de atrito G %1</translation>
-        </message>
-        <message>
-            <source>%1 with independent axes ×%2</source>
-            <translation>%1 com eixos independentes ×%2</translation>
-        </message>
-        <message>
-            <source>; independent axes G %1</source>
-            <translation>; eixos independentes G %1</translation>
-        </message>
-        <message>
-            <source>%1 without feedforward ×%2</source>
-            <translation>%1 sem pré-alimentação ×%2</translation>
-        </message>
-        <message>
-            <source>; without feedforward G %1</source>
-            <translation>; sem pré-alimentação G %1</translation>
-        </message>
-        <message>
-            <source>The XY contour: the programmed path, the traced path of both axes' run, and the contour error (mm, the signed distance from each traced point to the nearest point of the path) magnified along the path normal by the "error ×" factor.</source>
-            <translation>O contorno XY: o percurso programado, o percurso traçado pela simulação dos dois eixos e o erro de contorno (mm, a distância com sinal de cada ponto traçado ao ponto mais próximo do percurso) ampliado ao longo da normal ao percurso pelo fator "erro ×".</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::CouplingSweepDialog</name>
-        <message>
-            <source>Tune the cross-coupling by the contour error</source>
-            <translation>Sintonizar o acoplamento cruzado pelo erro de contorno</translation>
-        </message>
-        <message>
-            <source>kp values</source>
-            <translation>valores de kp</translation>
-        </message>
-        <message>
-            <source>ki values</source>
-            <translation>valores de ki</translation>
-        </message>
-        <message>
-            <source>The values of kp to try (V/mm), separated by commas; 0 and 0 is the coupling off</source>
-            <translation>Os valores de kp a testar (V/mm), separados por vírgulas; 0 e 0 é o acoplamento desligado</translation>
-        </message>
-        <message>
-            <source>The values of ki to try (V/(mm·s)), separated by commas</source>
-            <translation>Os valores de ki a testar (V/(mm·s)), separados por vírgulas</translation>
-        </message>
-        <message>
-            <source>kp (V/mm)</source>
-            <translation>kp (V/mm)</translation>
-        </message>
-        <message>
-            <source>ki (V/(mm·s))</source>
-            <translation>ki (V/(mm·s))</translation>
-        </message>
-        <message>
-            <source>&amp;Run</source>
-            <translation>&amp;Executar</translation>
-        </message>
-        <message>
-            <source>Run the sweep on the session as it is now (at most %1 pairs)</source>
-            <translation>Executar a varredura na sessão como está agora (no máximo %1 pares)</translation>
-        </message>
-        <message>
-            <source>&amp;Cancel</source>
-            <translation>&amp;Cancelar</translation>
-        </message>
-        <message>
-            <source>max contour error (mm)</source>
-            <translation>erro de contorno máx (mm)</translation>
-        </message>
-        <message>
-            <source>refused: the coupled loop is unstable on a line</source>
-            <translation>recusado: a malha acoplada é instável em uma linha</translation>
-        </message>
-        <message>
-            <source>failed: the run was refused or diverged</source>
-            <translation>falhou: a simulação foi recusada ou divergiu</translation>
-        </message>
-        <message>
-            <source>not run (cancelled)</source>
-            <translation>não executado (cancelado)</translation>
-        </message>
-        <message>
-            <source>an axis reaches its limit</source>
-            <translation>um eixo atinge seu limite</translation>
-        </message>
-        <message>
-            <source>best</source>
-            <translation>melhor</translation>
-        </message>
-        <message>
-            <source>Save as PNG...</source>
-            <translation>Salvar como PNG...</translation>
-        </message>
-        <message>
-            <source>Save as PDF...</source>
-            <translation>Salvar como PDF...</translation>
-        </message>
-        <message>
-            <source>The best: %1.</source>
-            <translation>O melhor: %1.</translation>
-        </message>
-        <message>
-            <source>&amp;Apply</source>
-            <translation>&amp;Aplicar</translation>
-        </message>
-        <message>
-            <source>Set the selected cell's gains as the session's cross-coupling</source>
-            <translation>Usar os ganhos da célula selecionada como o acoplamento cruzado da sessão</translation>
-        </message>
-        <message>
-            <source>kp 0, ki 0: the coupling off (the independent axes)</source>
-            <translation>kp 0, ki 0: o acoplamento desligado (eixos independentes)</translation>
-        </message>
-        <message>
-            <source>Not run: the sweep was cancelled before it.</source>
-            <translation>Não executado: a varredura foi cancelada antes.</translation>
-        </message>
-        <message>
-            <source>Refused: %1</source>
-            <translation>Recusado: %1</translation>
-        </message>
-        <message>
-            <source>Max contour error %1, RMS %2 (independent axes: max %3)</source>
-            <translation>Erro de contorno máx %1, RMS %2 (eixos independentes: máx %3)</translation>
-        </message>
-        <message>
-            <source>Coupled loop at its least stable direction: spectral radius %1, disk margin %2</source>
-            <translation>Malha acoplada na direção menos estável: raio espectral %1, margem de disco %2</translation>
-        </message>
-        <message>
-            <source>An axis reaches its actuator limit.</source>
-            <translation>Um eixo atinge o limite do atuador.</translation>
-        </message>
-        <message>
-            <source>Both axes stay inside their actuator limit.</source>
-            <translation>Os dois eixos ficam dentro do limite do atuador.</translation>
-        </message>
-        <message>
-            <source>Warning: %1.</source>
-            <translation>Aviso: %1.</translation>
-        </message>
-        <message>
-            <source>The best of the grid.</source>
-            <translation>O melhor da grade.</translation>
-        </message>
-        <message>
-            <source>&amp;Run again</source>
-            <translation>Executar &amp;novamente</translation>
-        </message>
-        <message>
-            <source>Computed for the session before it changed (%1). Press Run again for the session as it is.</source>
-            <translation>Calculado para a sessão antes de ela mudar (%1). Clique em Executar novamente para a sessão como está.</translation>
-        </message>
-        <message>
-            <source>Cancelling: the runs under way finish first…</source>
-            <translation>Cancelando: as simulações em andamento terminam primeiro…</translation>
-        </message>
-        <message>
-            <source>Running the contour for each pair of gains…</source>
-            <translation>Simulando o contorno para cada par de ganhos…</translation>
-        </message>
-        <message>
-            <source> The session has changed since the sweep started: its result will be for the session as it was.</source>
-            <translation> A sessão mudou desde o início da varredura: o resultado será para a sessão como estava.</translation>
-        </message>
-        <message>
-            <source>The sweep could not run: %1</source>
-            <translation>A varredura não pôde ser executada: %1</translation>
-        </message>
-        <message>
-            <source>Cancelled: %1 of %2 pairs ran.</source>
-            <translation>Cancelada: %1 de %2 pares executados.</translation>
-        </message>
-        <message>
-            <source>%1 pairs ran in %2 s.</source>
-            <translation>%1 pares executados em %2 s.</translation>
-        </message>
-        <message>
-            <source> %1 refused: the coupled loop is unstable on a line of the path.</source>
-            <translation> %1 recusados: a malha acoplada é instável em uma linha do percurso.</translation>
-        </message>
-        <message>
-            <source> %1 failed.</source>
-            <translation> %1 falharam.</translation>
-        </message>
-        <message>
-            <source> %1 drive an axis to its limit.</source>
-            <translation> %1 levam um eixo ao limite.</translation>
-        </message>
-        <message>
-            <source>Stale: the session has changed since this sweep (%1); nothing can be applied until it runs again. </source>
-            <translation>Desatualizado: a sessão mudou desde esta varredura (%1); nada pode ser aplicado até que ela seja executada novamente. </translation>
-        </message>
-        <message>
-            <source>Not run yet: press Run.</source>
-            <translation>Ainda não executado: clique em Executar.</translation>
-        </message>
-        <message>
-            <source>Independent axes (coupling off): max %1, RMS %2.</source>
-            <translation>Eixos independentes (acoplamento desligado): máx %1, RMS %2.</translation>
-        </message>
-        <message>
-            <source>Independent axes (coupling off): %1</source>
-            <translation>Eixos independentes (acoplamento desligado): %1</translation>
-        </message>
-        <message>
-            <source>Best of the pairs that ran</source>
-            <translation>Melhor dos pares executados</translation>
-        </message>
-        <message>
-            <source>Best</source>
-            <translation>Melhor</translation>
-        </message>
-        <message>
-            <source>No pair of gains ran: no best.</source>
-            <translation>Nenhum par de ganhos foi executado: não há melhor.</translation>
-        </message>
-        <message>
-            <source>%1: the coupling off.</source>
-            <translation>%1: o acoplamento desligado.</translation>
-        </message>
-        <message>
-            <source> No pair of the grid beats the independent axes on this path.</source>
-            <translation> Nenhum par da grade supera os eixos independentes neste percurso.</translation>
-        </message>
-        <message>
-            <source>%1: %2: max %3, RMS %4</source>
-            <translation>%1: %2: máx %3, RMS %4</translation>
-        </message>
-        <message>
-            <source>, %1 times smaller than the independent axes'</source>
-            <translation>, %1 vezes menor que o dos eixos independentes</translation>
-        </message>
-        <message>
-            <source>, no smaller than the independent axes'</source>
-            <translation>, não menor que o dos eixos independentes</translation>
-        </message>
-        <message>
-            <source> Every pair inside the limit has a coupled loop unstable at some direction of an arc: chosen among them.</source>
-            <translation> Todo par dentro do limite tem uma malha acoplada instável em alguma direção de um arco: escolhido entre eles.</translation>
-        </message>
-        <message>
-            <source> Every pair that ran drives an axis to its limit: chosen among them.</source>
-            <translation> Todo par executado leva um eixo ao limite: escolhido entre eles.</translation>
-        </message>
-        <message>
-            <source>Selected: %1</source>
-            <translation>Selecionado: %1</translation>
-        </message>
-        <message>
-            <source>: max %1.</source>
-            <translation>: máx %1.</translation>
-        </message>
-        <message>
-            <source>: %1, nothing to apply.</source>
-            <translation>: %1, nada a aplicar.</translation>
-        </message>
-        <message>
-            <source> These are the session's gains.</source>
-            <translation> Estes são os ganhos da sessão.</translation>
-        </message>
-        <message>
-            <source>Stop the sweep; the cells run so far are shown</source>
-            <translation>Interromper a varredura; as células simuladas até aqui são mostradas</translation>
-        </message>
-        <message>
-            <source>The sweep's map: each cell one (kp, ki) pair of the cross-coupling, coloured by the program's max contour error (mm); hover a cell for its figures, click it to select it</source>
-            <translation>O mapa da varredura: cada célula é um par (kp, ki) do acoplamento cruzado, colorida pelo erro de contorno máx do programa (mm); passe o mouse sobre uma célula para ver seus valores, clique para selecioná-la</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::CrossCouplingEditor</name>
-        <message>
-            <source>Cross-coupling</source>
-            <translation>Acoplamento cruzado</translation>
-        </message>
-        <message>
-            <source>Proportional gain of the coupling (V per mm of estimated contour error); kp and ki 0: off</source>
-            <translation>Ganho proporcional do acoplamento (V por mm de erro de contorno estimado); kp e ki 0: desligado</translation>
-        </message>
-        <message>
-            <source>Integral gain of the coupling (V per mm·s); it stops integrating while an axis is at its limit</source>
-            <translation>Ganho integral do acoplamento (V por mm·s); para de integrar enquanto um eixo está no limite</translation>
-        </message>
-        <message>
-            <source>circular</source>
-            <translation>circular</translation>
-        </message>
-        <message>
-            <source>linear</source>
-            <translation>linear</translation>
-        </message>
-        <message>
-            <source>How the contour error is estimated from the two axis errors: the tangent line's, or the circle's with the path's curvature</source>
-            <translation>Como o erro de contorno é estimado a partir dos erros dos dois eixos: o da reta tangente, ou o do círculo com a curvatura do percurso</translation>
-        </message>
-        <message>
-            <source>kp (V/mm)</source>
-            <translation>kp (V/mm)</translation>
-        </message>
-        <message>
-            <source>ki (V/(mm·s))</source>
-            <translation>ki (V/(mm·s))</translation>
-        </message>
-        <message>
-            <source>Estimate</source>
-            <translation>Estimativa</translation>
-        </message>
-        <message>
-            <source>Tune…</source>
-            <translation>Sintonizar…</translation>
-        </message>
-        <message>
-            <source>Run the contour once for each kp and ki of a small grid and pick the gains with the smallest contour error</source>
-            <translation>Simular o contorno uma vez para cada kp e ki de uma pequena grade e escolher os ganhos com o menor erro de contorno</translation>
-        </message>
-        <message>
-            <source>Cross-coupling ●</source>
-            <translation>Acoplamento cruzado ●</translation>
-        </message>
-        <message>
-            <source>Cross-coupled contouring: kp %1 V/mm, ki %2 V/(mm·s), %3 estimate</source>
-            <translation>Contorno com acoplamento cruzado: kp %1 V/mm, ki %2 V/(mm·s), estimativa %3</translation>
-        </message>
-        <message>
-            <source>Cross-coupled contouring: off (each axis follows its own reference)</source>
-            <translation>Contorno com acoplamento cruzado: desligado (cada eixo segue sua própria referência)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::DesignSpacePlot</name>
-        <message>
-            <source>Design space</source>
-            <translation>Espaço de projeto</translation>
-        </message>
-        <message>
-            <source>ωn (rad/s)</source>
-            <translation>ωn (rad/s)</translation>
-        </message>
-        <message>
-            <source>kp (V per model unit)</source>
-            <translation>kp (V por unidade do modelo)</translation>
-        </message>
-        <message>
-            <source>metric</source>
-            <translation>métrica</translation>
-        </message>
-        <message>
-            <source>current</source>
-            <translation>atual</translation>
-        </message>
-        <message>
-            <source>best</source>
-            <translation>melhor</translation>
-        </message>
-        <message>
-            <source>refined</source>
-            <translation>refinado</translation>
-        </message>
-        <message>
-            <source>least violating</source>
-            <translation>menos violador</translation>
-        </message>
-        <message>
-            <source>Not computed yet: set the grid and press Run.</source>
-            <translation>Ainda não calculado: defina a grade e clique em Executar.</translation>
-        </message>
-        <message>
-            <source>Show the whole grid</source>
-            <translation>Mostrar a grade inteira</translation>
-        </message>
-        <message>
-            <source>Save as PNG...</source>
-            <translation>Salvar como PNG...</translation>
-        </message>
-        <message>
-            <source>Save as PDF...</source>
-            <translation>Salvar como PDF...</translation>
-        </message>
-        <message>
-            <source>feasible region</source>
-            <translation>região viável</translation>
-        </message>
-        <message>
-            <source>Design space: each cell of the (ωn, kp) grid is one Guillemin–Truxal design run on the session's trajectory, coloured by the chosen criterion; feasible cells meet every limit of the specification. Click a cell to take its ωn and kp.</source>
-            <translation>Espaço de projeto: cada célula da grade (ωn, kp) é um projeto Guillemin–Truxal simulado na trajetória da sessão, colorido pelo critério escolhido; as células viáveis atendem a todos os limites da especificação. Clique numa célula para adotar seus ωn e kp.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::DesignSpaceView</name>
-        <message>
-            <source>The study failed: %1</source>
-            <translation>O estudo falhou: %1</translation>
-        </message>
-        <message>
-            <source>logarithmic spacing</source>
-            <translation>espaçamento logarítmico</translation>
-        </message>
-        <message>
-            <source>Grid</source>
-            <translation>Grade</translation>
-        </message>
-        <message>
-            <source>ωn (rad/s)</source>
-            <translation>ωn (rad/s)</translation>
-        </message>
-        <message>
-            <source>kp</source>
-            <translation>kp</translation>
-        </message>
-        <message>
-            <source>logarithmic colour scale</source>
-            <translation>escala de cores logarítmica</translation>
-        </message>
-        <message>
-            <source>Choice</source>
-            <translation>Escolha</translation>
-        </message>
-        <message>
-            <source>Best design (min; max for margins)</source>
-            <translation>Melhor projeto (mín; máx para margens)</translation>
-        </message>
-        <message>
-            <source>Heat map shows</source>
-            <translation>O mapa de calor mostra</translation>
-        </message>
-        <message>
-            <source> s</source>
-            <translation> s</translation>
-        </message>
-        <message>
-            <source> %</source>
-            <translation> %</translation>
-        </message>
-        <message>
-            <source> V</source>
-            <translation> V</translation>
-        </message>
-        <message>
-            <source>°</source>
-            <translation>°</translation>
-        </message>
-        <message>
-            <source> dB</source>
-            <translation> dB</translation>
-        </message>
-        <message>
-            <source>Specification</source>
-            <translation>Especificação</translation>
-        </message>
-        <message>
-            <source>settling time ≤</source>
-            <translation>tempo de acomodação ≤</translation>
-        </message>
-        <message>
-            <source>step overshoot ≤</source>
-            <translation>sobressinal ao degrau ≤</translation>
-        </message>
-        <message>
-            <source>max tracking error ≤</source>
-            <translation>erro de seguimento máx ≤</translation>
-        </message>
-        <message>
-            <source>|u| ≤ (actuator limit)</source>
-            <translation>|u| ≤ (limite do atuador)</translation>
-        </message>
-        <message>
-            <source>phase margin ≥ (0 = none)</source>
-            <translation>margem de fase ≥ (0 = nenhuma)</translation>
-        </message>
-        <message>
-            <source>gain margin ≥ (0 = none)</source>
-            <translation>margem de ganho ≥ (0 = nenhuma)</translation>
-        </message>
-        <message>
-            <source>&lt;i&gt;The session's specification, shared with the metrics panel.&lt;/i&gt;</source>
-            <translation>&lt;i&gt;A especificação da sessão, compartilhada com o painel de métricas.&lt;/i&gt;</translation>
-        </message>
-        <message>
-            <source>Run</source>
-            <translation>Executar</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Cancelar</translation>
-        </message>
-        <message>
-            <source>Set the grid and press Run to study the current axis.</source>
-            <translation>Defina a grade e clique em Executar para estudar o eixo atual.</translation>
-        </message>
-        <message>
-            <source>Relax the limits</source>
-            <translation>Relaxar os limites</translation>
-        </message>
-        <message>
-            <source>Set the specification to the smallest limits the least-violating design (▲) meets (an undoable step)</source>
-            <translation>Ajustar a especificação aos menores limites que o projeto menos violador (▲) atende (um passo que pode ser desfeito)</translation>
-        </message>
-        <message>
-            <source>Live</source>
-            <translation>Ao vivo</translation>
-        </message>
-        <message>
-            <source>Recompute the map when the plant, the trajectory or the limits change: a coarse preview at once, the full study when the inputs rest</source>
-            <translation>Recalcular o mapa quando a planta, a trajetória ou os limites mudam: uma prévia grosseira na hora, o estudo completo quando as entradas param</translation>
-        </message>
-        <message>
-            <source>Settings</source>
-            <translation>Configurações</translation>
-        </message>
-        <message>
-            <source>Show or hide the grid, the choice of the best design and the specification (hidden, the map takes the whole width)</source>
-            <translation>Mostrar ou ocultar a grade, a escolha do melhor projeto e a especificação (ocultos, o mapa ocupa toda a largura)</translation>
-        </message>
-        <message>
-            <source>Hover a cell for its figures; click it to load that design. Colour: the metric (scale at the right) · unveiled, outlined: feasible · veiled: infeasible · grey: unstable or diverged.</source>
-            <translation>Passe o mouse sobre uma célula para ver seus valores; clique para carregar esse projeto. Cor: a métrica (escala à direita) · sem véu, contornado: viável · com véu: inviável · cinza: instável ou divergente.</translation>
-        </message>
-        <message>
-            <source>The design space maps a PI with its feedforward; axis %1 has D: set D to 0 to map it.</source>
-            <translation>O espaço de projeto mapeia um PI com sua pré-alimentação; o eixo %1 tem D: ajuste D para 0 para mapeá-lo.</translation>
-        </message>
-        <message>
-            <source>The design space applies to Guillemin–Truxal and PI + feedforward axes; axis %1 uses %2.</source>
-            <translation>O espaço de projeto se aplica a eixos Guillemin–Truxal e PI + pré-alimentação; o eixo %1 usa %2.</translation>
-        </message>
-        <message>
-            <source>Cannot run: %1</source>
-            <translation>Não é possível executar: %1</translation>
-        </message>
-        <message>
-            <source>Live preview of axis %1: %2 × %3 designs…</source>
-            <translation>Prévia ao vivo do eixo %1: %2 × %3 projetos…</translation>
-        </message>
-        <message>
-            <source>Studying %1 × %2 designs of axis %3…</source>
-            <translation>Estudando %1 × %2 projetos do eixo %3…</translation>
-        </message>
-        <message>
-            <source>Cancelling…</source>
-            <translation>Cancelando…</translation>
-        </message>
-        <message>
-            <source>%1, axis %2</source>
-            <translation>%1, eixo %2</translation>
-        </message>
-        <message>
-            <source>Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the inputs rest.
+    </message>
+    <message>
+        <source>colour: the metric, by the scale at the right (yellow is the high end, better only for the margins) · unveiled and outlined: feasible · veiled: infeasible · grey: unstable or diverged · light grey: not computed (cancelled)</source>
+        <translation>cor: a métrica, pela escala à direita (amarelo é o extremo alto, melhor só para as margens) · sem véu e contornado: viável · com véu: inviável · cinza: instável ou divergente · cinza-claro: não calculado (cancelado)</translation>
+    </message>
+    <message>
+        <source>within ±bound</source>
+        <translation>dentro de ±limite</translation>
+    </message>
+    <message>
+        <source>%1 lags outside</source>
+        <translation>%1 atrasos fora</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>kp %1 V/mm, ki %2 V/(mm·s)</source>
+        <translation>kp %1 V/mm, ki %2 V/(mm·s)</translation>
+    </message>
+    <message>
+        <source>circular</source>
+        <translation>circular</translation>
+    </message>
+    <message>
+        <source>linear</source>
+        <translation>linear</translation>
+    </message>
+    <message>
+        <source>the G-code program</source>
+        <translation>o programa G-code</translation>
+    </message>
+    <message>
+        <source>the program %1</source>
+        <translation>o programa %1</translation>
+    </message>
+    <message>
+        <source>the %1 mm circle</source>
+        <translation>o círculo de %1 mm</translation>
+    </message>
+    <message>
+        <source>the point-to-point move</source>
+        <translation>o movimento ponto a ponto</translation>
+    </message>
+    <message>
+        <source>The contour of %1, run once for each pair of gains with the axes, the limit and the %2 estimate of the session as it is when the sweep starts.</source>
+        <translation>O contorno de %1, simulado uma vez para cada par de ganhos com os eixos, o limite e a estimativa %2 da sessão como está quando a varredura começa.</translation>
+    </message>
+    <message>
+        <source>the actuator limit, %1 V then</source>
+        <translation>o limite do atuador, %1 V naquele momento</translation>
+    </message>
+    <message>
+        <source>axis %1</source>
+        <translation>eixo %1</translation>
+    </message>
+    <message>
+        <source>the trajectory</source>
+        <translation>a trajetória</translation>
+    </message>
+    <message>
+        <source>the coupling&apos;s estimate</source>
+        <translation>a estimativa do acoplamento</translation>
+    </message>
+    <message>
+        <source>the specification</source>
+        <translation>a especificação</translation>
+    </message>
+    <message>
+        <source>the implementation</source>
+        <translation>a implementação</translation>
+    </message>
+    <message>
+        <source>%1 design</source>
+        <translation>projeto %1</translation>
+    </message>
+    <message>
+        <source>%1 closed-loop poles</source>
+        <translation>polos de malha fechada %1</translation>
+    </message>
+    <message>
+        <source>%1 RMSE (mm)</source>
+        <translation>%1 RMSE (mm)</translation>
+    </message>
+    <message>
+        <source>%1 max |e| (mm)</source>
+        <translation>%1 máx |e| (mm)</translation>
+    </message>
+    <message>
+        <source>%1 max |u| (V)</source>
+        <translation>%1 máx |u| (V)</translation>
+    </message>
+    <message>
+        <source>%1 settling (s)</source>
+        <translation>%1 acomodação (s)</translation>
+    </message>
+    <message>
+        <source>unstable</source>
+        <translation>instável</translation>
+    </message>
+    <message>
+        <source>%1 overshoot (%)</source>
+        <translation>%1 sobressinal (%)</translation>
+    </message>
+    <message>
+        <source>%1 ITAE</source>
+        <translation>%1 ITAE</translation>
+    </message>
+</context>
+<context>
+    <name>ReportMetrics</name>
+    <message>
+        <source>n/a</source>
+        <translation>n/d</translation>
+    </message>
+    <message>
+        <source>&gt; %1 (not settled in the run)</source>
+        <translation>&gt; %1 (não acomodou na simulação)</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>não</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;No figures: the axis has no design (%1: %2).&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Sem valores: o eixo não tem projeto (%1: %2).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>≤ %1</source>
+        <translation>≤ %1</translation>
+    </message>
+    <message>
+        <source> (flagged, not applied)</source>
+        <translation> (sinalizado, não aplicado)</translation>
+    </message>
+    <message>
+        <source>|e| ≤ %1</source>
+        <translation>|e| ≤ %1</translation>
+    </message>
+    <message>
+        <source>same step</source>
+        <translation>mesmo degrau</translation>
+    </message>
+    <message>
+        <source>unstable</source>
+        <translation>instável</translation>
+    </message>
+    <message>
+        <source>same loop</source>
+        <translation>mesma malha</translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <source>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th align=&apos;left&apos;&gt;Figure&lt;/th&gt;&lt;th&gt;Limit&lt;/th&gt;&lt;th&gt;As designed&lt;/th&gt;&lt;th&gt;As implemented%1&lt;/th&gt;&lt;/tr&gt;</source>
+        <translation>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th align=&apos;left&apos;&gt;Valor&lt;/th&gt;&lt;th&gt;Limite&lt;/th&gt;&lt;th&gt;Como projetado&lt;/th&gt;&lt;th&gt;Como implementado%1&lt;/th&gt;&lt;/tr&gt;</translation>
+    </message>
+    <message>
+        <source> (digital, Ts = %1 s)</source>
+        <translation> (digital, Ts = %1 s)</translation>
+    </message>
+</context>
+<context>
+    <name>ReportWriter</name>
+    <message>
+        <source>Cannot write the report to %1: %2</source>
+        <translation>Não é possível gravar o relatório em %1: %2</translation>
+    </message>
+    <message>
+        <source>No report: the session&apos;s run is refused: %1: %2</source>
+        <translation>Sem relatório: a simulação da sessão foi recusada: %1: %2</translation>
+    </message>
+    <message>
+        <source>XY Tune design report</source>
+        <translation>Relatório de projeto do XY Tune</translation>
+    </message>
+    <message>
+        <source>XY Tune %1</source>
+        <translation>XY Tune %1</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::BodePlot</name>
+    <message>
+        <source>Bode diagram</source>
+        <translation>Diagrama de Bode</translation>
+    </message>
+    <message>
+        <source>magnitude (dB)</source>
+        <translation>módulo (dB)</translation>
+    </message>
+    <message>
+        <source>phase (°)</source>
+        <translation>fase (°)</translation>
+    </message>
+    <message>
+        <source>frequency ω (rad/s)</source>
+        <translation>frequência ω (rad/s)</translation>
+    </message>
+    <message>
+        <source>measured L = C H</source>
+        <translation>L = C H medido</translation>
+    </message>
+    <message>
+        <source>measured L = C H (%1)</source>
+        <translation>L = C H medido (%1)</translation>
+    </message>
+    <message>
+        <source>hover the plot: ω, |L| and ∠L of the open loop</source>
+        <translation>passe o mouse sobre o gráfico: ω, |L| e ∠L da malha aberta</translation>
+    </message>
+    <message>
+        <source>open loop L</source>
+        <translation>malha aberta L</translation>
+    </message>
+    <message>
+        <source>|S| sensitivity</source>
+        <translation>|S| sensibilidade</translation>
+    </message>
+    <message>
+        <source>|T| closed loop</source>
+        <translation>|T| malha fechada</translation>
+    </message>
+    <message>
+        <source>tracking, loop alone</source>
+        <translation>seguimento, só a malha</translation>
+    </message>
+    <message>
+        <source>tracking with %1</source>
+        <translation>seguimento com %1</translation>
+    </message>
+    <message>
+        <source>tracking with </source>
+        <translation>seguimento com </translation>
+    </message>
+    <message>
+        <source>L without the notch</source>
+        <translation>L sem o notch</translation>
+    </message>
+    <message>
+        <source> (PM %1°)</source>
+        <translation> (MF %1°)</translation>
+    </message>
+    <message>
+        <source>GM %1 dB at %2 rad/s</source>
+        <translation>MG %1 dB em %2 rad/s</translation>
+    </message>
+    <message>
+        <source> dB</source>
+        <translation> dB</translation>
+    </message>
+    <message>
+        <source>PM %1° at %2 rad/s</source>
+        <translation>MF %1° em %2 rad/s</translation>
+    </message>
+    <message>
+        <source>reference ω = %1</source>
+        <translation>referência ω = %1</translation>
+    </message>
+    <message>
+        <source>Nyquist π/Ts</source>
+        <translation>Nyquist π/Ts</translation>
+    </message>
+    <message>
+        <source>the closed loop is unstable: the margins are not robustness measures</source>
+        <translation>a malha fechada é instável: as margens não são medidas de robustez</translation>
+    </message>
+    <message>
+        <source>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</source>
+        <translation>ω = %1 rad/s   |L| = %2 dB   ∠L = %3°</translation>
+    </message>
+    <message>
+        <source>Bode diagram of the loop L(jω) = C(jω) G(jω): magnitude (dB) and phase (°) against ω (rad/s) on an adaptive grid, with the gain and phase margins drawn where they are read (green when they meet the specification&apos;s minima, red when not), and |S| = |1/(1 + L)| and |T| = |L/(1 + L)|.</source>
+        <translation>Diagrama de Bode da malha L(jω) = C(jω) G(jω): módulo (dB) e fase (°) em função de ω (rad/s) numa grade adaptativa, com as margens de ganho e de fase desenhadas onde são lidas (em verde quando atendem aos mínimos da especificação, em vermelho quando não), e |S| = |1/(1 + L)| e |T| = |L/(1 + L)|.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::BodeView</name>
+    <message>
+        <source>Bode diagram of %1</source>
+        <translation>Diagrama de Bode de %1</translation>
+    </message>
+    <message>
+        <source>No frequency analysis: %1</source>
+        <translation>Sem análise em frequência: %1</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ContourBandPlot</name>
+    <message>
+        <source>XY contour</source>
+        <translation>Contorno XY</translation>
+    </message>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>The programmed contour dashed, the nominal design&apos;s traced contour solid, and the band the mismatched plant pairs trace (min–max light, 5–95 % darker); the contour error is magnified about the contour by the factor in the title.</source>
+        <translation>O contorno programado tracejado, o contorno percorrido pelo projeto nominal em linha cheia e a faixa que os pares de plantas discrepantes percorrem (mín–máx claro, 5–95 % mais escuro); o erro de contorno é ampliado em torno do contorno pelo fator do título.</translation>
+    </message>
+    <message>
+        <source>Not computed yet.</source>
+        <translation>Ainda não calculado.</translation>
+    </message>
+    <message>
+        <source>No stable plant pair: no band.</source>
+        <translation>Nenhum par de plantas estável: sem faixa.</translation>
+    </message>
+    <message>
+        <source>XY contour, error ×%1</source>
+        <translation>Contorno XY, erro ×%1</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ContourControls</name>
+    <message>
+        <source>Ballbar</source>
+        <translation>Ballbar</translation>
+    </message>
+    <message>
+        <source>Ballbar polar view</source>
+        <translation>Vista polar do ballbar</translation>
+    </message>
+    <message>
+        <source>The ISO 230-4 circular test of the program&apos;s full circles, as a ballbar plots it</source>
+        <translation>O ensaio circular ISO 230-4 dos círculos completos do programa, como um ballbar o traça</translation>
+    </message>
+    <message>
+        <source>◀</source>
+        <translation>◀</translation>
+    </message>
+    <message>
+        <source>Previous corner</source>
+        <translation>Canto anterior</translation>
+    </message>
+    <message>
+        <source>Zoom to the previous sharp corner</source>
+        <translation>Ampliar o canto vivo anterior</translation>
+    </message>
+    <message>
+        <source>▶</source>
+        <translation>▶</translation>
+    </message>
+    <message>
+        <source>Next corner</source>
+        <translation>Próximo canto</translation>
+    </message>
+    <message>
+        <source>Zoom to the next sharp corner (after the last one: the whole path)</source>
+        <translation>Ampliar o próximo canto vivo (depois do último: o percurso inteiro)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ContourPlot</name>
+    <message>
+        <source>x (mm)</source>
+        <translation>x (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>commanded</source>
+        <translation>comandado</translation>
+    </message>
+    <message>
+        <source>traced</source>
+        <translation>percorrido</translation>
+    </message>
+    <message>
+        <source>F max/min</source>
+        <translation>F máx/mín</translation>
+    </message>
+    <message>
+        <source>G (LS centre)</source>
+        <translation>G (centro MQ)</translation>
+    </message>
+    <message>
+        <source>sharp corners</source>
+        <translation>cantos vivos</translation>
+    </message>
+    <message>
+        <source>largest error</source>
+        <translation>maior erro</translation>
+    </message>
+    <message>
+        <source>XY contour: an axis could not be simulated</source>
+        <translation>Contorno XY: um eixo não pôde ser simulado</translation>
+    </message>
+    <message>
+        <source>XY contour: the program could not be run</source>
+        <translation>Contorno XY: o programa não pôde ser executado</translation>
+    </message>
+    <message>
+        <source>error × %1</source>
+        <translation>erro × %1</translation>
+    </message>
+    <message>
+        <source>independent axes, error × %1</source>
+        <translation>eixos independentes, erro × %1</translation>
+    </message>
+    <message>
+        <source>radial, after the ramp-in</source>
+        <translation>radial, após a rampa de entrada</translation>
+    </message>
+    <message>
+        <source>from the line</source>
+        <translation>em relação à linha</translation>
+    </message>
+    <message>
+        <source>Cross-coupled contour error (%1): max %2 mm, RMS %3 mm; independent axes: max %4 mm</source>
+        <translation>Erro de contorno com acoplamento cruzado (%1): máx %2 mm, RMS %3 mm; eixos independentes: máx %4 mm</translation>
+    </message>
+    <message>
+        <source>Contour error (radial, after the ramp-in): max %1 mm, RMS %2 mm</source>
+        <translation>Erro de contorno (radial, após a rampa de entrada): máx %1 mm, RMS %2 mm</translation>
+    </message>
+    <message>
+        <source>Tracking error: max |e_x| %1 mm, max |e_y| %2 mm</source>
+        <translation>Erro de seguimento: máx |e_x| %1 mm, máx |e_y| %2 mm</translation>
+    </message>
+    <message>
+        <source>programmed</source>
+        <translation>programado</translation>
+    </message>
+    <message>
+        <source>error × %1, |e| (mm) &lt; %2</source>
+        <translation>erro × %1, |e| (mm) &lt; %2</translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <source>Contour error max %1, RMS %2 mm</source>
+        <translation>Erro de contorno máx %1, RMS %2 mm</translation>
+    </message>
+    <message>
+        <source>; corner %1/%2: %3 mm</source>
+        <translation>; canto %1/%2: %3 mm</translation>
+    </message>
+    <message>
+        <source>; corner %1/%2: no sample near it</source>
+        <translation>; canto %1/%2: nenhuma amostra perto dele</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n corner(s)</source>
+        <translation>
+            <numerusform>; %n canto</numerusform>
+            <numerusform>; %n cantos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cross-coupled: </source>
+        <translation>Acoplamento cruzado: </translation>
+    </message>
+    <message>
+        <source>; independent axes: max %1 mm</source>
+        <translation>; eixos independentes: máx %1 mm</translation>
+    </message>
+    <message>
+        <source>without feedforward, error × %1</source>
+        <translation>sem pré-alimentação, erro × %1</translation>
+    </message>
+    <message>
+        <source>; without feedforward: max %1 mm</source>
+        <translation>; sem pré-alimentação: máx %1 mm</translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation>nominal</translation>
+    </message>
+    <message>
+        <source>CW run</source>
+        <translation>percurso horário</translation>
+    </message>
+    <message>
+        <source>CCW run</source>
+        <translation>percurso anti-horário</translation>
+    </message>
+    <message>
+        <source>%1 ×%2</source>
+        <translation>%1 ×%2</translation>
+    </message>
+    <message>
+        <source>ISO 230-4 (mm): G %1, F max %2, F min %3</source>
+        <translation>ISO 230-4 (mm): G %1, F máx %2, F mín %3</translation>
+    </message>
+    <message>
+        <source>, H %1</source>
+        <translation>, H %1</translation>
+    </message>
+    <message>
+        <source>%1 without friction compensation ×%2</source>
+        <translation>%1 sem compensação de atrito ×%2</translation>
+    </message>
+    <message>
+        <source>; without friction compensation G %1</source>
+        <translation>; sem compensação de atrito G %1</translation>
+    </message>
+    <message>
+        <source>%1 with independent axes ×%2</source>
+        <translation>%1 com eixos independentes ×%2</translation>
+    </message>
+    <message>
+        <source>; independent axes G %1</source>
+        <translation>; eixos independentes G %1</translation>
+    </message>
+    <message>
+        <source>%1 without feedforward ×%2</source>
+        <translation>%1 sem pré-alimentação ×%2</translation>
+    </message>
+    <message>
+        <source>; without feedforward G %1</source>
+        <translation>; sem pré-alimentação G %1</translation>
+    </message>
+    <message>
+        <source>The XY contour: the programmed path, the traced path of both axes&apos; run, and the contour error (mm, the signed distance from each traced point to the nearest point of the path) magnified along the path normal by the &quot;error ×&quot; factor.</source>
+        <translation>O contorno XY: o percurso programado, o percurso traçado pela simulação dos dois eixos e o erro de contorno (mm, a distância com sinal de cada ponto traçado ao ponto mais próximo do percurso) ampliado ao longo da normal ao percurso pelo fator &quot;erro ×&quot;.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::CouplingSweepDialog</name>
+    <message>
+        <source>Tune the cross-coupling by the contour error</source>
+        <translation>Sintonizar o acoplamento cruzado pelo erro de contorno</translation>
+    </message>
+    <message>
+        <source>kp values</source>
+        <translation>valores de kp</translation>
+    </message>
+    <message>
+        <source>ki values</source>
+        <translation>valores de ki</translation>
+    </message>
+    <message>
+        <source>The values of kp to try (V/mm), separated by commas; 0 and 0 is the coupling off</source>
+        <translation>Os valores de kp a testar (V/mm), separados por vírgulas; 0 e 0 é o acoplamento desligado</translation>
+    </message>
+    <message>
+        <source>The values of ki to try (V/(mm·s)), separated by commas</source>
+        <translation>Os valores de ki a testar (V/(mm·s)), separados por vírgulas</translation>
+    </message>
+    <message>
+        <source>kp (V/mm)</source>
+        <translation>kp (V/mm)</translation>
+    </message>
+    <message>
+        <source>ki (V/(mm·s))</source>
+        <translation>ki (V/(mm·s))</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Executar</translation>
+    </message>
+    <message>
+        <source>Run the sweep on the session as it is now (at most %1 pairs)</source>
+        <translation>Executar a varredura na sessão como está agora (no máximo %1 pares)</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Cancelar</translation>
+    </message>
+    <message>
+        <source>max contour error (mm)</source>
+        <translation>erro de contorno máx (mm)</translation>
+    </message>
+    <message>
+        <source>refused: the coupled loop is unstable on a line</source>
+        <translation>recusado: a malha acoplada é instável em uma linha</translation>
+    </message>
+    <message>
+        <source>failed: the run was refused or diverged</source>
+        <translation>falhou: a simulação foi recusada ou divergiu</translation>
+    </message>
+    <message>
+        <source>not run (cancelled)</source>
+        <translation>não executado (cancelado)</translation>
+    </message>
+    <message>
+        <source>an axis reaches its limit</source>
+        <translation>um eixo atinge seu limite</translation>
+    </message>
+    <message>
+        <source>best</source>
+        <translation>melhor</translation>
+    </message>
+    <message>
+        <source>Save as PNG...</source>
+        <translation>Salvar como PNG...</translation>
+    </message>
+    <message>
+        <source>Save as PDF...</source>
+        <translation>Salvar como PDF...</translation>
+    </message>
+    <message>
+        <source>The best: %1.</source>
+        <translation>O melhor: %1.</translation>
+    </message>
+    <message>
+        <source>&amp;Apply</source>
+        <translation>&amp;Aplicar</translation>
+    </message>
+    <message>
+        <source>Set the selected cell&apos;s gains as the session&apos;s cross-coupling</source>
+        <translation>Usar os ganhos da célula selecionada como o acoplamento cruzado da sessão</translation>
+    </message>
+    <message>
+        <source>kp 0, ki 0: the coupling off (the independent axes)</source>
+        <translation>kp 0, ki 0: o acoplamento desligado (eixos independentes)</translation>
+    </message>
+    <message>
+        <source>Not run: the sweep was cancelled before it.</source>
+        <translation>Não executado: a varredura foi cancelada antes.</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Recusado: %1</translation>
+    </message>
+    <message>
+        <source>Max contour error %1, RMS %2 (independent axes: max %3)</source>
+        <translation>Erro de contorno máx %1, RMS %2 (eixos independentes: máx %3)</translation>
+    </message>
+    <message>
+        <source>Coupled loop at its least stable direction: spectral radius %1, disk margin %2</source>
+        <translation>Malha acoplada na direção menos estável: raio espectral %1, margem de disco %2</translation>
+    </message>
+    <message>
+        <source>An axis reaches its actuator limit.</source>
+        <translation>Um eixo atinge o limite do atuador.</translation>
+    </message>
+    <message>
+        <source>Both axes stay inside their actuator limit.</source>
+        <translation>Os dois eixos ficam dentro do limite do atuador.</translation>
+    </message>
+    <message>
+        <source>Warning: %1.</source>
+        <translation>Aviso: %1.</translation>
+    </message>
+    <message>
+        <source>The best of the grid.</source>
+        <translation>O melhor da grade.</translation>
+    </message>
+    <message>
+        <source>&amp;Run again</source>
+        <translation>Executar &amp;novamente</translation>
+    </message>
+    <message>
+        <source>Computed for the session before it changed (%1). Press Run again for the session as it is.</source>
+        <translation>Calculado para a sessão antes de ela mudar (%1). Clique em Executar novamente para a sessão como está.</translation>
+    </message>
+    <message>
+        <source>Cancelling: the runs under way finish first…</source>
+        <translation>Cancelando: as simulações em andamento terminam primeiro…</translation>
+    </message>
+    <message>
+        <source>Running the contour for each pair of gains…</source>
+        <translation>Simulando o contorno para cada par de ganhos…</translation>
+    </message>
+    <message>
+        <source> The session has changed since the sweep started: its result will be for the session as it was.</source>
+        <translation> A sessão mudou desde o início da varredura: o resultado será para a sessão como estava.</translation>
+    </message>
+    <message>
+        <source>The sweep could not run: %1</source>
+        <translation>A varredura não pôde ser executada: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled: %1 of %2 pairs ran.</source>
+        <translation>Cancelada: %1 de %2 pares executados.</translation>
+    </message>
+    <message>
+        <source>%1 pairs ran in %2 s.</source>
+        <translation>%1 pares executados em %2 s.</translation>
+    </message>
+    <message>
+        <source> %1 refused: the coupled loop is unstable on a line of the path.</source>
+        <translation> %1 recusados: a malha acoplada é instável em uma linha do percurso.</translation>
+    </message>
+    <message>
+        <source> %1 failed.</source>
+        <translation> %1 falharam.</translation>
+    </message>
+    <message>
+        <source> %1 drive an axis to its limit.</source>
+        <translation> %1 levam um eixo ao limite.</translation>
+    </message>
+    <message>
+        <source>Stale: the session has changed since this sweep (%1); nothing can be applied until it runs again. </source>
+        <translation>Desatualizado: a sessão mudou desde esta varredura (%1); nada pode ser aplicado até que ela seja executada novamente. </translation>
+    </message>
+    <message>
+        <source>Not run yet: press Run.</source>
+        <translation>Ainda não executado: clique em Executar.</translation>
+    </message>
+    <message>
+        <source>Independent axes (coupling off): max %1, RMS %2.</source>
+        <translation>Eixos independentes (acoplamento desligado): máx %1, RMS %2.</translation>
+    </message>
+    <message>
+        <source>Independent axes (coupling off): %1</source>
+        <translation>Eixos independentes (acoplamento desligado): %1</translation>
+    </message>
+    <message>
+        <source>Best of the pairs that ran</source>
+        <translation>Melhor dos pares executados</translation>
+    </message>
+    <message>
+        <source>Best</source>
+        <translation>Melhor</translation>
+    </message>
+    <message>
+        <source>No pair of gains ran: no best.</source>
+        <translation>Nenhum par de ganhos foi executado: não há melhor.</translation>
+    </message>
+    <message>
+        <source>%1: the coupling off.</source>
+        <translation>%1: o acoplamento desligado.</translation>
+    </message>
+    <message>
+        <source> No pair of the grid beats the independent axes on this path.</source>
+        <translation> Nenhum par da grade supera os eixos independentes neste percurso.</translation>
+    </message>
+    <message>
+        <source>%1: %2: max %3, RMS %4</source>
+        <translation>%1: %2: máx %3, RMS %4</translation>
+    </message>
+    <message>
+        <source>, %1 times smaller than the independent axes&apos;</source>
+        <translation>, %1 vezes menor que o dos eixos independentes</translation>
+    </message>
+    <message>
+        <source>, no smaller than the independent axes&apos;</source>
+        <translation>, não menor que o dos eixos independentes</translation>
+    </message>
+    <message>
+        <source> Every pair inside the limit has a coupled loop unstable at some direction of an arc: chosen among them.</source>
+        <translation> Todo par dentro do limite tem uma malha acoplada instável em alguma direção de um arco: escolhido entre eles.</translation>
+    </message>
+    <message>
+        <source> Every pair that ran drives an axis to its limit: chosen among them.</source>
+        <translation> Todo par executado leva um eixo ao limite: escolhido entre eles.</translation>
+    </message>
+    <message>
+        <source>Selected: %1</source>
+        <translation>Selecionado: %1</translation>
+    </message>
+    <message>
+        <source>: max %1.</source>
+        <translation>: máx %1.</translation>
+    </message>
+    <message>
+        <source>: %1, nothing to apply.</source>
+        <translation>: %1, nada a aplicar.</translation>
+    </message>
+    <message>
+        <source> These are the session&apos;s gains.</source>
+        <translation> Estes são os ganhos da sessão.</translation>
+    </message>
+    <message>
+        <source>Stop the sweep; the cells run so far are shown</source>
+        <translation>Interromper a varredura; as células simuladas até aqui são mostradas</translation>
+    </message>
+    <message>
+        <source>The sweep&apos;s map: each cell one (kp, ki) pair of the cross-coupling, coloured by the program&apos;s max contour error (mm); hover a cell for its figures, click it to select it</source>
+        <translation>O mapa da varredura: cada célula é um par (kp, ki) do acoplamento cruzado, colorida pelo erro de contorno máx do programa (mm); passe o mouse sobre uma célula para ver seus valores, clique para selecioná-la</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::CrossCouplingEditor</name>
+    <message>
+        <source>Cross-coupling</source>
+        <translation>Acoplamento cruzado</translation>
+    </message>
+    <message>
+        <source>Proportional gain of the coupling (V per mm of estimated contour error); kp and ki 0: off</source>
+        <translation>Ganho proporcional do acoplamento (V por mm de erro de contorno estimado); kp e ki 0: desligado</translation>
+    </message>
+    <message>
+        <source>Integral gain of the coupling (V per mm·s); it stops integrating while an axis is at its limit</source>
+        <translation>Ganho integral do acoplamento (V por mm·s); para de integrar enquanto um eixo está no limite</translation>
+    </message>
+    <message>
+        <source>circular</source>
+        <translation>circular</translation>
+    </message>
+    <message>
+        <source>linear</source>
+        <translation>linear</translation>
+    </message>
+    <message>
+        <source>How the contour error is estimated from the two axis errors: the tangent line&apos;s, or the circle&apos;s with the path&apos;s curvature</source>
+        <translation>Como o erro de contorno é estimado a partir dos erros dos dois eixos: o da reta tangente, ou o do círculo com a curvatura do percurso</translation>
+    </message>
+    <message>
+        <source>kp (V/mm)</source>
+        <translation>kp (V/mm)</translation>
+    </message>
+    <message>
+        <source>ki (V/(mm·s))</source>
+        <translation>ki (V/(mm·s))</translation>
+    </message>
+    <message>
+        <source>Estimate</source>
+        <translation>Estimativa</translation>
+    </message>
+    <message>
+        <source>Tune…</source>
+        <translation>Sintonizar…</translation>
+    </message>
+    <message>
+        <source>Run the contour once for each kp and ki of a small grid and pick the gains with the smallest contour error</source>
+        <translation>Simular o contorno uma vez para cada kp e ki de uma pequena grade e escolher os ganhos com o menor erro de contorno</translation>
+    </message>
+    <message>
+        <source>Cross-coupling ●</source>
+        <translation>Acoplamento cruzado ●</translation>
+    </message>
+    <message>
+        <source>Cross-coupled contouring: kp %1 V/mm, ki %2 V/(mm·s), %3 estimate</source>
+        <translation>Contorno com acoplamento cruzado: kp %1 V/mm, ki %2 V/(mm·s), estimativa %3</translation>
+    </message>
+    <message>
+        <source>Cross-coupled contouring: off (each axis follows its own reference)</source>
+        <translation>Contorno com acoplamento cruzado: desligado (cada eixo segue sua própria referência)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::DesignSpacePlot</name>
+    <message>
+        <source>Design space</source>
+        <translation>Espaço de projeto</translation>
+    </message>
+    <message>
+        <source>ωn (rad/s)</source>
+        <translation>ωn (rad/s)</translation>
+    </message>
+    <message>
+        <source>kp (V per model unit)</source>
+        <translation>kp (V por unidade do modelo)</translation>
+    </message>
+    <message>
+        <source>metric</source>
+        <translation>métrica</translation>
+    </message>
+    <message>
+        <source>current</source>
+        <translation>atual</translation>
+    </message>
+    <message>
+        <source>best</source>
+        <translation>melhor</translation>
+    </message>
+    <message>
+        <source>refined</source>
+        <translation>refinado</translation>
+    </message>
+    <message>
+        <source>least violating</source>
+        <translation>menos violador</translation>
+    </message>
+    <message>
+        <source>Not computed yet: set the grid and press Run.</source>
+        <translation>Ainda não calculado: defina a grade e clique em Executar.</translation>
+    </message>
+    <message>
+        <source>Show the whole grid</source>
+        <translation>Mostrar a grade inteira</translation>
+    </message>
+    <message>
+        <source>Save as PNG...</source>
+        <translation>Salvar como PNG...</translation>
+    </message>
+    <message>
+        <source>Save as PDF...</source>
+        <translation>Salvar como PDF...</translation>
+    </message>
+    <message>
+        <source>feasible region</source>
+        <translation>região viável</translation>
+    </message>
+    <message>
+        <source>Design space: each cell of the (ωn, kp) grid is one Guillemin–Truxal design run on the session&apos;s trajectory, coloured by the chosen criterion; feasible cells meet every limit of the specification. Click a cell to take its ωn and kp.</source>
+        <translation>Espaço de projeto: cada célula da grade (ωn, kp) é um projeto Guillemin–Truxal simulado na trajetória da sessão, colorido pelo critério escolhido; as células viáveis atendem a todos os limites da especificação. Clique numa célula para adotar seus ωn e kp.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::DesignSpaceView</name>
+    <message>
+        <source>The study failed: %1</source>
+        <translation>O estudo falhou: %1</translation>
+    </message>
+    <message>
+        <source>logarithmic spacing</source>
+        <translation>espaçamento logarítmico</translation>
+    </message>
+    <message>
+        <source>Grid</source>
+        <translation>Grade</translation>
+    </message>
+    <message>
+        <source>ωn (rad/s)</source>
+        <translation>ωn (rad/s)</translation>
+    </message>
+    <message>
+        <source>kp</source>
+        <translation>kp</translation>
+    </message>
+    <message>
+        <source>logarithmic colour scale</source>
+        <translation>escala de cores logarítmica</translation>
+    </message>
+    <message>
+        <source>Choice</source>
+        <translation>Escolha</translation>
+    </message>
+    <message>
+        <source>Best design (min; max for margins)</source>
+        <translation>Melhor projeto (mín; máx para margens)</translation>
+    </message>
+    <message>
+        <source>Heat map shows</source>
+        <translation>O mapa de calor mostra</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source> V</source>
+        <translation> V</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source> dB</source>
+        <translation> dB</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Especificação</translation>
+    </message>
+    <message>
+        <source>settling time ≤</source>
+        <translation>tempo de acomodação ≤</translation>
+    </message>
+    <message>
+        <source>step overshoot ≤</source>
+        <translation>sobressinal ao degrau ≤</translation>
+    </message>
+    <message>
+        <source>max tracking error ≤</source>
+        <translation>erro de seguimento máx ≤</translation>
+    </message>
+    <message>
+        <source>|u| ≤ (actuator limit)</source>
+        <translation>|u| ≤ (limite do atuador)</translation>
+    </message>
+    <message>
+        <source>phase margin ≥ (0 = none)</source>
+        <translation>margem de fase ≥ (0 = nenhuma)</translation>
+    </message>
+    <message>
+        <source>gain margin ≥ (0 = none)</source>
+        <translation>margem de ganho ≥ (0 = nenhuma)</translation>
+    </message>
+    <message>
+        <source>&lt;i&gt;The session&apos;s specification, shared with the metrics panel.&lt;/i&gt;</source>
+        <translation>&lt;i&gt;A especificação da sessão, compartilhada com o painel de métricas.&lt;/i&gt;</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Executar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Set the grid and press Run to study the current axis.</source>
+        <translation>Defina a grade e clique em Executar para estudar o eixo atual.</translation>
+    </message>
+    <message>
+        <source>Relax the limits</source>
+        <translation>Relaxar os limites</translation>
+    </message>
+    <message>
+        <source>Set the specification to the smallest limits the least-violating design (▲) meets (an undoable step)</source>
+        <translation>Ajustar a especificação aos menores limites que o projeto menos violador (▲) atende (um passo que pode ser desfeito)</translation>
+    </message>
+    <message>
+        <source>Live</source>
+        <translation>Ao vivo</translation>
+    </message>
+    <message>
+        <source>Recompute the map when the plant, the trajectory or the limits change: a coarse preview at once, the full study when the inputs rest</source>
+        <translation>Recalcular o mapa quando a planta, a trajetória ou os limites mudam: uma prévia grosseira na hora, o estudo completo quando as entradas param</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Configurações</translation>
+    </message>
+    <message>
+        <source>Show or hide the grid, the choice of the best design and the specification (hidden, the map takes the whole width)</source>
+        <translation>Mostrar ou ocultar a grade, a escolha do melhor projeto e a especificação (ocultos, o mapa ocupa toda a largura)</translation>
+    </message>
+    <message>
+        <source>Hover a cell for its figures; click it to load that design. Colour: the metric (scale at the right) · unveiled, outlined: feasible · veiled: infeasible · grey: unstable or diverged.</source>
+        <translation>Passe o mouse sobre uma célula para ver seus valores; clique para carregar esse projeto. Cor: a métrica (escala à direita) · sem véu, contornado: viável · com véu: inviável · cinza: instável ou divergente.</translation>
+    </message>
+    <message>
+        <source>The design space maps a PI with its feedforward; axis %1 has D: set D to 0 to map it.</source>
+        <translation>O espaço de projeto mapeia um PI com sua pré-alimentação; o eixo %1 tem D: ajuste D para 0 para mapeá-lo.</translation>
+    </message>
+    <message>
+        <source>The design space applies to Guillemin–Truxal and PI + feedforward axes; axis %1 uses %2.</source>
+        <translation>O espaço de projeto se aplica a eixos Guillemin–Truxal e PI + pré-alimentação; o eixo %1 usa %2.</translation>
+    </message>
+    <message>
+        <source>Cannot run: %1</source>
+        <translation>Não é possível executar: %1</translation>
+    </message>
+    <message>
+        <source>Live preview of axis %1: %2 × %3 designs…</source>
+        <translation>Prévia ao vivo do eixo %1: %2 × %3 projetos…</translation>
+    </message>
+    <message>
+        <source>Studying %1 × %2 designs of axis %3…</source>
+        <translation>Estudando %1 × %2 projetos do eixo %3…</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Cancelando…</translation>
+    </message>
+    <message>
+        <source>%1, axis %2</source>
+        <translation>%1, eixo %2</translation>
+    </message>
+    <message>
+        <source>Live preview (%1 × %2 designs, dt %3 s, %4 ms): the full study follows when the inputs rest.
 </source>
-            <translation>Prévia ao vivo (%1 × %2 projetos, dt %3 s, %4 ms): o estudo completo vem quando as entradas param.
+        <translation>Prévia ao vivo (%1 × %2 projetos, dt %3 s, %4 ms): o estudo completo vem quando as entradas param.
 </translation>
-        </message>
-        <message>
-            <source>Cancelled: %1 of %2 designs computed, %3 feasible.</source>
-            <translation>Cancelado: %1 de %2 projetos calculados, %3 viáveis.</translation>
-        </message>
-        <message>
-            <source>Done: %1 designs, %2 stable, %3 feasible.</source>
-            <translation>Concluído: %1 projetos, %2 estáveis, %3 viáveis.</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>Cancelled: %1 of %2 designs computed, %3 feasible.</source>
+        <translation>Cancelado: %1 de %2 projetos calculados, %3 viáveis.</translation>
+    </message>
+    <message>
+        <source>Done: %1 designs, %2 stable, %3 feasible.</source>
+        <translation>Concluído: %1 projetos, %2 estáveis, %3 viáveis.</translation>
+    </message>
+    <message>
+        <source>
 Best on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.</source>
-            <translation>
+        <translation>
 Melhor da grade (★): ωn = %1 rad/s, kp = %2, %3 = %4.</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>
 Refined (◆): ωn = %1 rad/s, kp = %2, %3 = %4.</source>
-            <translation>
+        <translation>
 Refinado (◆): ωn = %1 rad/s, kp = %2, %3 = %4.</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>
 Click a cell to load its design.</source>
-            <translation>
+        <translation>
 Clique em uma célula para carregar seu projeto.</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>
 Every GT design overshoots (its reference model is type 2); relax the overshoot limit.</source>
-            <translation>
+        <translation>
 Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe o limite de sobressinal.</translation>
-        </message>
-        <message>
-            <source>Cannot judge the study: %1</source>
-            <translation>Não é possível avaliar o estudo: %1</translation>
-        </message>
-        <message>
-            <source>This tab shows axis %1.</source>
-            <translation>Esta aba mostra o eixo %1.</translation>
-        </message>
-        <message>
-            <source>Axis %1 now uses %2: the map applies to Guillemin–Truxal and PI + feedforward axes.</source>
-            <translation>O eixo %1 agora usa %2: o mapa se aplica a eixos Guillemin–Truxal e PI + pré-alimentação.</translation>
-        </message>
-        <message>
-            <source>The plant, the trajectory or the limits the runs depend on have changed since.</source>
-            <translation>A planta, a trajetória ou os limites de que as simulações dependem mudaram desde então.</translation>
-        </message>
-        <message>
-            <source>The live map of the current design follows.</source>
-            <translation>Segue o mapa ao vivo do projeto atual.</translation>
-        </message>
-        <message>
-            <source>Press Run to study the current design.</source>
-            <translation>Clique em Executar para estudar o projeto atual.</translation>
-        </message>
-        <message>
-            <source>Map computed for %1. %2 %3</source>
-            <translation>Mapa calculado para %1. %2 %3</translation>
-        </message>
-        <message>
-            <source>The map shown is not of the session's study (computed for %1). %2</source>
-            <translation>O mapa mostrado não é do estudo da sessão (calculado para %1). %2</translation>
-        </message>
-        <message>
-            <source>Load design from the design space</source>
-            <translation>Carregar projeto do espaço de projeto</translation>
-        </message>
-        <message>
-            <source>Smallest ωn (rad/s) of the grid: the reference model's natural frequency of the first row of designs</source>
-            <translation>Menor ωn (rad/s) da grade: a frequência natural do modelo de referência da primeira linha de projetos</translation>
-        </message>
-        <message>
-            <source>Largest ωn (rad/s) of the grid</source>
-            <translation>Maior ωn (rad/s) da grade</translation>
-        </message>
-        <message>
-            <source>Number of ωn values of the grid (rows); each cell is one design run on the session's trajectory</source>
-            <translation>Número de valores de ωn da grade (linhas); cada célula é um projeto simulado na trajetória da sessão</translation>
-        </message>
-        <message>
-            <source>Smallest proportional gain kp (V per model unit) of the grid</source>
-            <translation>Menor ganho proporcional kp (V por unidade do modelo) da grade</translation>
-        </message>
-        <message>
-            <source>Largest proportional gain kp (V per model unit) of the grid</source>
-            <translation>Maior ganho proporcional kp (V por unidade do modelo) da grade</translation>
-        </message>
-        <message>
-            <source>Number of kp values of the grid (columns)</source>
-            <translation>Número de valores de kp da grade (colunas)</translation>
-        </message>
-        <message>
-            <source>Space the ωn and kp values evenly on a logarithmic scale (else linearly between the bounds)</source>
-            <translation>Espaçar os valores de ωn e kp uniformemente em escala logarítmica (senão, linearmente entre os limites)</translation>
-        </message>
-        <message>
-            <source>The figure that picks the best feasible design: minimized (ITAE, max |e|, RMSE, max |u|, settle time) or maximized (the margins)</source>
-            <translation>O valor que escolhe o melhor projeto viável: minimizado (ITAE, |e| máx, RMSE, |u| máx, tempo de acomodação) ou maximizado (as margens)</translation>
-        </message>
-        <message>
-            <source>The figure the heat map's colours show for each design of the grid</source>
-            <translation>O valor que as cores do mapa de calor mostram para cada projeto da grade</translation>
-        </message>
-        <message>
-            <source>Colour the heat map by the logarithm of the figure (its values often span decades)</source>
-            <translation>Colorir o mapa de calor pelo logaritmo do valor (seus valores costumam abranger várias décadas)</translation>
-        </message>
-        <message>
-            <source>Maximum settling time (s, 2 % band) of the closed loop's unit step</source>
-            <translation>Tempo de acomodação máximo (s, faixa de 2 %) do degrau unitário da malha fechada</translation>
-        </message>
-        <message>
-            <source>Maximum overshoot (%) of the closed loop's unit step</source>
-            <translation>Sobressinal máximo (%) do degrau unitário da malha fechada</translation>
-        </message>
-        <message>
-            <source>Maximum tracking error max |e| as a percentage of the travel</source>
-            <translation>Erro de seguimento máximo |e| máx como porcentagem do curso</translation>
-        </message>
-        <message>
-            <source>Actuator limit umax (V): a design whose run asks for more is infeasible; the session's |u| limit</source>
-            <translation>Limite do atuador umax (V): um projeto cuja simulação exige mais é inviável; o limite de |u| da sessão</translation>
-        </message>
-        <message>
-            <source>Minimum phase margin (°) of the loop, 180° + arg L(jωc); 0: none</source>
-            <translation>Margem de fase mínima (°) da malha, 180° + arg L(jωc); 0: nenhuma</translation>
-        </message>
-        <message>
-            <source>Minimum gain margin (dB) of the loop, −20 log10 |L(jω180)|; 0: none</source>
-            <translation>Margem de ganho mínima (dB) da malha, −20 log10 |L(jω180)|; 0: nenhuma</translation>
-        </message>
-        <message>
-            <source>Run the study: every design of the grid on the session's trajectory at its dt, judged against the specification</source>
-            <translation>Executar o estudo: cada projeto da grade na trajetória da sessão com o seu dt, avaliado frente à especificação</translation>
-        </message>
-        <message>
-            <source>Stop the study; the designs computed so far are shown</source>
-            <translation>Interromper o estudo; os projetos calculados até aqui são mostrados</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::DiagnosticText</name>
-        <message>
-            <source>the closed loop is unstable</source>
-            <translation>a malha fechada é instável</translation>
-        </message>
-        <message>
-            <source>the simulated run diverged (a sample is not a finite number): it has no tracking figures</source>
-            <translation>a simulação divergiu (uma amostra não é um número finito): não há valores de seguimento</translation>
-        </message>
-        <message>
-            <source>the flexible mode and the notch of gt apply to a continuous plant: this pole-placement axis runs its ARX model, which holds whatever mode its data showed (identify it from a log that excites the mode)</source>
-            <translation>o modo flexível e o notch de gt se aplicam a uma planta contínua: este eixo por alocação de polos usa seu modelo ARX, que contém o modo que seus dados mostraram (identifique-o a partir de um registro que excite o modo)</translation>
-        </message>
-        <message>
-            <source>the run ends before the move does (tf): no settle figures</source>
-            <translation>a simulação termina antes do movimento (tf): sem valores de acomodação</translation>
-        </message>
-        <message>
-            <source>no stability margins: %1</source>
-            <translation>sem margens de estabilidade: %1</translation>
-        </message>
-        <message>
-            <source>no digital implementation: %1</source>
-            <translation>sem implementação digital: %1</translation>
-        </message>
-        <message>
-            <source>|u| exceeds the actuator limit (the discrete loop is simulated without saturation)</source>
-            <translation>|u| excede o limite do atuador (a malha discreta é simulada sem saturação)</translation>
-        </message>
-        <message>
-            <source>the feedforward alone needs %1 V on this trajectory, beyond the output limit of %2 V</source>
-            <translation>a pré-alimentação sozinha precisa de %1 V nesta trajetória, além do limite de saída de %2 V</translation>
-        </message>
-        <message>
-            <source>the cubic's acceleration step becomes a %1 V spike of the FF3 term (one controller period); the quintic move has no acceleration step</source>
-            <translation>o degrau de aceleração da cúbica vira um pico de %1 V do termo FF3 (um período do controlador); o movimento quíntico não tem degrau de aceleração</translation>
-        </message>
-        <message>
-            <source>a limit cycle at rest: after the move the measured position keeps oscillating (%1 mm peak to peak, %2 turns in the last half of the rest), caused by the encoder/DAC quantization</source>
-            <translation>um ciclo-limite em repouso: após o movimento a posição medida continua oscilando (%1 mm pico a pico, %2 inversões na segunda metade do repouso), causado pela quantização do encoder/DAC</translation>
-        </message>
-        <message>
-            <source>%1 axis: the simulated run diverged (a sample is not a finite number)</source>
-            <translation>eixo %1: a simulação divergiu (uma amostra não é um número finito)</translation>
-        </message>
-        <message>
-            <source>%1 axis: |u| reached the actuator limit of %2 V for %3 s</source>
-            <translation>eixo %1: |u| atingiu o limite do atuador de %2 V por %3 s</translation>
-        </message>
-        <message>
-            <source>ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures</source>
-            <translation>ISO 230-4: um círculo completo do programa dura menos de 3 amostras: sem valores</translation>
-        </message>
-        <message>
-            <source>the circle lasts fewer than 3 samples: no ISO 230-4 figures</source>
-            <translation>o círculo dura menos de 3 amostras: sem valores ISO 230-4</translation>
-        </message>
-        <message>
-            <source>reversal spikes up to %1 mm at the quadrant changes (the table's friction and backlash)</source>
-            <translation>picos de reversão de até %1 mm nas mudanças de quadrante (o atrito e a folga da mesa)</translation>
-        </message>
-        <message>
-            <source>the digital loop at Ts = %1 s is unstable (its largest closed-loop pole has |z| = %2); lower the controller sample time</source>
-            <translation>a malha digital com Ts = %1 s é instável (seu maior polo de malha fechada tem |z| = %2); reduza o período de amostragem do controlador</translation>
-        </message>
-        <message>
-            <source>the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 against %3 in the z-plane poles); lower the controller sample time or the delay</source>
-            <translation>a malha digital com Ts = %1 s é muito menos amortecida que o projeto (coeficiente de amortecimento %2 contra %3 nos polos do plano z); reduza o período de amostragem do controlador ou o atraso</translation>
-        </message>
-        <message>
-            <source>must be a number, got NaN</source>
-            <translation>deve ser um número, recebido NaN</translation>
-        </message>
-        <message>
-            <source>must be finite, got infinity</source>
-            <translation>deve ser finito, recebido infinito</translation>
-        </message>
-        <message>
-            <source>must be greater than zero</source>
-            <translation>deve ser maior que zero</translation>
-        </message>
-        <message>
-            <source>must be nonzero</source>
-            <translation>deve ser diferente de zero</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::EnvelopePlot</name>
-        <message>
-            <source>Envelope</source>
-            <translation>Envoltória</translation>
-        </message>
-        <message>
-            <source>time (s)</source>
-            <translation>tempo (s)</translation>
-        </message>
-        <message>
-            <source>min–max</source>
-            <translation>mín–máx</translation>
-        </message>
-        <message>
-            <source>5–95 %</source>
-            <translation>5–95 %</translation>
-        </message>
-        <message>
-            <source>median</source>
-            <translation>mediana</translation>
-        </message>
-        <message>
-            <source>nominal</source>
-            <translation>nominal</translation>
-        </message>
-        <message>
-            <source>Not computed yet.</source>
-            <translation>Ainda não calculado.</translation>
-        </message>
-        <message>
-            <source>No stable plant: no envelope.</source>
-            <translation>Nenhuma planta estável: sem envoltória.</translation>
-        </message>
-        <message>
-            <source>Envelope of the perturbed plants' runs: the range (min to max over the stable plants) of the chosen signal (error or output in mm, command in V) around the nominal run, against time (s).</source>
-            <translation>Envoltória das simulações das plantas perturbadas: a faixa (do mínimo ao máximo sobre as plantas estáveis) do sinal escolhido (erro ou saída em mm, comando em V) em torno da simulação nominal, em função do tempo (s).</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::EquationsPanel</name>
-        <message>
-            <source>Design equations</source>
-            <translation>Equações de projeto</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Axis %1&lt;/b&gt;: %2: %3</source>
-            <translation>&lt;b&gt;Eixo %1&lt;/b&gt;: %2: %3</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Axis %1 — pole placement + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</source>
-            <translation>&lt;b&gt;Eixo %1 — alocação de polos + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)&lt;br&gt;</source>
-            <translation>A F + B G = T (diofantina, Patrick, Ishak e Adnan Eq. 8)&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</source>
-            <translation>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>F = %1&lt;br&gt;G = %2&lt;br&gt;</source>
-            <translation>F = %1&lt;br&gt;G = %2&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, residual %2&lt;br&gt;</source>
-            <translation>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, resíduo %2&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>control law: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</source>
-            <translation>lei de controle: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</source>
-            <translation>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>N = %1&lt;br&gt;D = %2</source>
-            <translation>N = %1&lt;br&gt;D = %2</translation>
-        </message>
-        <message>
-            <source>no feedforward: w = r</source>
-            <translation>sem pré-alimentação: w = r</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Axis %1 — %2&lt;/b&gt;&lt;br&gt;</source>
-            <translation>&lt;b&gt;Eixo %1 — %2&lt;/b&gt;&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Axis %1 — Guillemin–Truxal PI&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</source>
-            <translation>&lt;b&gt;Eixo %1 — PI de Guillemin–Truxal&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</source>
-            <translation>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</source>
-            <translation>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</source>
-            <translation>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</source>
-            <translation>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</source>
-            <translation>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</source>
-            <translation>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</translation>
-        </message>
-        <message>
-            <source>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</source>
-            <translation>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</translation>
-        </message>
-        <message>
-            <source>&lt;br&gt;&lt;span style='color:#d32f2f'&gt;&lt;b&gt;The closed loop is unstable.&lt;/b&gt;&lt;/span&gt;</source>
-            <translation>&lt;br&gt;&lt;span style='color:#d32f2f'&gt;&lt;b&gt;A malha fechada é instável.&lt;/b&gt;&lt;/span&gt;</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::FlexibleModeEditor</name>
-        <message>
-            <source>Flexible mode and notch</source>
-            <translation>Modo flexível e notch</translation>
-        </message>
-        <message>
-            <source>Mode (Hz)</source>
-            <translation>Modo (Hz)</translation>
-        </message>
-        <message>
-            <source>The table's resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid table. The design is made on the rigid plant; every run and analysis has the mode</source>
-            <translation>A ressonância fr da mesa acima da planta rígida (correia, fuso, pórtico); 0: mesa rígida. O projeto é feito na planta rígida; toda simulação e análise inclui o modo</translation>
-        </message>
-        <message>
-            <source>Mode damping</source>
-            <translation>Amortecimento do modo</translation>
-        </message>
-        <message>
-            <source>Damping ratio of the resonance, in [0, 1); its peak stands 1/(2 ζ) above the rigid plant</source>
-            <translation>Coeficiente de amortecimento da ressonância, em [0, 1); seu pico fica 1/(2 ζ) acima da planta rígida</translation>
-        </message>
-        <message>
-            <source>Anti-resonance (Hz)</source>
-            <translation>Antirressonância (Hz)</translation>
-        </message>
-        <message>
-            <source>A two-mass model measured at the motor: its anti-resonance below fr; 0: the resonant pair fr² / (s² + 2 ζ fr s + fr²) alone</source>
-            <translation>Um modelo de duas massas medido no motor: sua antirressonância abaixo de fr; 0: só o par ressonante fr² / (s² + 2 ζ fr s + fr²)</translation>
-        </message>
-        <message>
-            <source>Anti-res. damping</source>
-            <translation>Amort. antirress.</translation>
-        </message>
-        <message>
-            <source>Damping ratio of the anti-resonance, in [0, 1)</source>
-            <translation>Coeficiente de amortecimento da antirressonância, em [0, 1)</translation>
-        </message>
-        <message>
-            <source>Notch centre (Hz)</source>
-            <translation>Centro do notch (Hz)</translation>
-        </message>
-        <message>
-            <source>Notch on the error the PI reads, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: none. Digital: bilinear, prewarped at the centre, below the controller's Nyquist frequency</source>
-            <translation>Filtro notch no erro que o PI lê, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: nenhum. Digital: bilinear, com pré-distorção no centro, abaixo da frequência de Nyquist do controlador</translation>
-        </message>
-        <message>
-            <source>Notch width (Hz)</source>
-            <translation>Largura do notch (Hz)</translation>
-        </message>
-        <message>
-            <source>Bandwidth of the notch's pole pair: 2 ζp f0</source>
-            <translation>Largura de banda do par de polos do notch: 2 ζp f0</translation>
-        </message>
-        <message>
-            <source>Notch depth (dB)</source>
-            <translation>Profundidade do notch (dB)</translation>
-        </message>
-        <message>
-            <source>Attenuation at the centre, in (0, 120] dB</source>
-            <translation>Atenuação no centro, em (0, 120] dB</translation>
-        </message>
-        <message>
-            <source>Notch at the mode</source>
-            <translation>Notch no modo</translation>
-        </message>
-        <message>
-            <source>Centre on the mode, as deep as its peak (6 to 40 dB) and four half-power bandwidths wide</source>
-            <translation>Centrado no modo, tão profundo quanto seu pico (6 a 40 dB) e com quatro larguras de banda de meia potência</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>nenhum</translation>
-        </message>
-        <message>
-            <source>Input shaper on both axes' reference: ZV, ZVD, ZVDD (Singer and Seering), MZV (Klipper), EI and the multi-hump EI (Singhose et al.)</source>
-            <translation>Modelador de entrada na referência dos dois eixos: ZV, ZVD, ZVDD (Singer e Seering), MZV (Klipper), EI e o EI de várias corcovas (Singhose et al.)</translation>
-        </message>
-        <message>
-            <source>Input shaper</source>
-            <translation>Modelador de entrada</translation>
-        </message>
-        <message>
-            <source>Shaper frequency (Hz)</source>
-            <translation>Frequência do modelador (Hz)</translation>
-        </message>
-        <message>
-            <source>The mode the shaper is designed for; acts on the reference at the trajectory's step, so the controller's period does not limit it</source>
-            <translation>O modo para o qual o modelador é projetado; atua na referência no passo da trajetória, então o período do controlador não o limita</translation>
-        </message>
-        <message>
-            <source>Shaper damping</source>
-            <translation>Amortecimento do modelador</translation>
-        </message>
-        <message>
-            <source>The damping ratio it is designed for, [0, 1)</source>
-            <translation>O coeficiente de amortecimento para o qual é projetado, [0, 1)</translation>
-        </message>
-        <message>
-            <source>Shaper at the mode</source>
-            <translation>Modelador no modo</translation>
-        </message>
-        <message>
-            <source>Design the shaper for this axis' mode (ZV unless a type is chosen)</source>
-            <translation>Projetar o modelador para o modo deste eixo (ZV, a menos que um tipo seja escolhido)</translation>
-        </message>
-        <message>
-            <source>Recommend</source>
-            <translation>Recomendar</translation>
-        </message>
-        <message>
-            <source>Klipper's choice of shaper and frequency for this mode: the least vibration left for the smoothing, and the acceleration it allows</source>
-            <translation>A escolha do Klipper de modelador e frequência para este modo: a menor vibração restante para a suavização, e a aceleração que ela permite</translation>
-        </message>
-        <message>
-            <source>From a log…</source>
-            <translation>De um registro…</translation>
-        </message>
-        <message>
-            <source>Klipper's choice from an accelerometer log (#time,accel_x,accel_y,accel_z), as calibrate_shaper.py makes it</source>
-            <translation>A escolha do Klipper a partir de um registro de acelerômetro (#time,accel_x,accel_y,accel_z), como o calibrate_shaper.py a faz</translation>
-        </message>
-        <message>
-            <source>the %1 Hz mode</source>
-            <translation>o modo de %1 Hz</translation>
-        </message>
-        <message>
-            <source>No recommendation: %1</source>
-            <translation>Sem recomendação: %1</translation>
-        </message>
-        <message>
-            <source>Accelerometer log</source>
-            <translation>Registro de acelerômetro</translation>
-        </message>
-        <message>
-            <source>Klipper CSV (*.csv);;All files (*)</source>
-            <translation>CSV do Klipper (*.csv);;Todos os arquivos (*)</translation>
-        </message>
-        <message>
-            <source>no flexible mode to tune the shaper to</source>
-            <translation>nenhum modo flexível para sintonizar o modelador</translation>
-        </message>
-        <message>
-            <source>A pole-placement axis' ARX model holds whatever mode its data showed: identify it from a log that excites the mode.</source>
-            <translation>O modelo ARX de um eixo por alocação de polos contém o modo que seus dados mostraram: identifique-o a partir de um registro que excite o modo.</translation>
-        </message>
-        <message>
-            <source>LinuxCNC's pid has no notch stage: the notch is offered on Guillemin–Truxal axes.</source>
-            <translation>O pid do LinuxCNC não tem estágio notch: o notch é oferecido em eixos Guillemin–Truxal.</translation>
-        </message>
-        <message>
-            <source>Klipper's choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing %5 mm, max accel %6 mm/s²</source>
-            <translation>Escolha do Klipper para %1: %2 em %3 Hz, %4 % de vibração restante, suavização %5 mm, acel. máx %6 mm/s²</translation>
-        </message>
-        <message>
-            <source>mode %1 Hz, ζ %2</source>
-            <translation>modo %1 Hz, ζ %2</translation>
-        </message>
-        <message>
-            <source>notch %1 Hz, %2 dB</source>
-            <translation>notch %1 Hz, %2 dB</translation>
-        </message>
-        <message>
-            <source>%1 shaper at %2 Hz</source>
-            <translation>modelador %1 em %2 Hz</translation>
-        </message>
-        <message>
-            <source>Mode</source>
-            <translation>Modo</translation>
-        </message>
-        <message>
-            <source>Mode ●</source>
-            <translation>Modo ●</translation>
-        </message>
-        <message>
-            <source>Flexible mode and notch: none (the rigid table)</source>
-            <translation>Modo flexível e notch: nenhum (mesa rígida)</translation>
-        </message>
-        <message>
-            <source>Flexible mode and notch: %1</source>
-            <translation>Modo flexível e notch: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::FrictionCurveDialog</name>
-        <message>
-            <source>Friction curve from a jog log</source>
-            <translation>Curva de atrito de um registro de jog</translation>
-        </message>
-        <message>
-            <source>&amp;Open log…</source>
-            <translation>&amp;Abrir registro…</translation>
-        </message>
-        <message>
-            <source>No log: run xytune-cli excite --signal jog, or log jogs from the machine (time, reference, position, command)</source>
-            <translation>Nenhum registro: execute xytune-cli excite --signal jog, ou registre jogs da máquina (tempo, referência, posição, comando)</translation>
-        </message>
-        <message>
-            <source>Time (s)</source>
-            <translation>Tempo (s)</translation>
-        </message>
-        <message>
-            <source>Reference (mm)</source>
-            <translation>Referência (mm)</translation>
-        </message>
-        <message>
-            <source>Position (mm)</source>
-            <translation>Posição (mm)</translation>
-        </message>
-        <message>
-            <source>Command (V)</source>
-            <translation>Comando (V)</translation>
-        </message>
-        <message>
-            <source>velocity (mm/s)</source>
-            <translation>velocidade (mm/s)</translation>
-        </message>
-        <message>
-            <source>steady command (V)</source>
-            <translation>comando em regime (V)</translation>
-        </message>
-        <message>
-            <source>jogs (mean ± 1 sd)</source>
-            <translation>jogs (média ± 1 dp)</translation>
-        </message>
-        <message>
-            <source>fitted curve</source>
-            <translation>curva ajustada</translation>
-        </message>
-        <message>
-            <source>&amp;Use for the current axis</source>
-            <translation>&amp;Usar para o eixo atual</translation>
-        </message>
-        <message>
-            <source>Open a jog log</source>
-            <translation>Abrir um registro de jog</translation>
-        </message>
-        <message>
-            <source>Experiment logs (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
-            <translation>Registros de ensaio (*.csv *.tsv *.txt *.lvm *.mat);;Todos os arquivos (*)</translation>
-        </message>
-        <message>
-            <source>%1: %2 columns, %3 rows</source>
-            <translation>%1: %2 colunas, %3 linhas</translation>
-        </message>
-        <message>
-            <source>time</source>
-            <translation>tempo</translation>
-        </message>
-        <message>
-            <source>reference</source>
-            <translation>referência</translation>
-        </message>
-        <message>
-            <source>position</source>
-            <translation>posição</translation>
-        </message>
-        <message>
-            <source>command</source>
-            <translation>comando</translation>
-        </message>
-        <message>
-            <source>Coulomb %1; slope %2 (the model's own a2/k0: %3 V per mm/s, so %4 beyond it)</source>
-            <translation>Coulomb %1; inclinação %2 (o a2/k0 do próprio modelo: %3 V por mm/s, portanto %4 além dele)</translation>
-        </message>
-        <message>
-            <source>V</source>
-            <translation>V</translation>
-        </message>
-        <message>
-            <source>V per mm/s</source>
-            <translation>V por mm/s</translation>
-        </message>
-        <message>
-            <source>; static %1, Stribeck velocity %2</source>
-            <translation>; estático %1, velocidade de Stribeck %2</translation>
-        </message>
-        <message>
-            <source>mm/s</source>
-            <translation>mm/s</translation>
-        </message>
-        <message>
-            <source>. %1 jogs, residual sd %2 V.</source>
-            <translation>. %1 jogs, dp do resíduo %2 V.</translation>
-        </message>
-        <message>
-            <source>The log's column of the %1</source>
-            <translation>A coluna do registro para %1</translation>
-        </message>
-        <message>
-            <source>The Stribeck curve: each jog's steady command (V, mean ± one standard deviation over its cruise) against its velocity (mm/s), and the fitted friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</source>
-            <translation>A curva de Stribeck: o comando em regime de cada jog (V, média ± um desvio-padrão no trecho de velocidade constante) em função da sua velocidade (mm/s), e a curva de atrito ajustada sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</translation>
-        </message>
-        <message>
-            <source>Read a jog log (CSV with time, reference, position and command columns) and estimate the friction levels</source>
-            <translation>Ler um registro de jog (CSV com colunas de tempo, referência, posição e comando) e estimar os níveis de atrito</translation>
-        </message>
-        <message>
-            <source>Set the estimated levels as the current axis' table friction (one undoable step)</source>
-            <translation>Definir os níveis estimados como o atrito da mesa do eixo atual (um passo que pode ser desfeito)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::FrictionEditor</name>
-        <message>
-            <source>Friction and backlash</source>
-            <translation>Atrito e folga</translation>
-        </message>
-        <message>
-            <source>Coulomb (V)</source>
-            <translation>Coulomb (V)</translation>
-        </message>
-        <message>
-            <source>Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its linear model to keep sliding</source>
-            <translation>Atrito de Coulomb Fc em volts de comando equivalente: o que o eixo precisa além de seu modelo linear para continuar deslizando</translation>
-        </message>
-        <message>
-            <source>Static (V)</source>
-            <translation>Estático (V)</translation>
-        </message>
-        <message>
-            <source>Static (breakaway) level Fs in volts; 0 takes the Coulomb level (no Stribeck dip)</source>
-            <translation>Nível estático (de desprendimento) Fs em volts; 0 usa o nível de Coulomb (sem a queda de Stribeck)</translation>
-        </message>
-        <message>
-            <source>Stribeck velocity (mm/s)</source>
-            <translation>Velocidade de Stribeck (mm/s)</translation>
-        </message>
-        <message>
-            <source>vs of f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): how fast the friction falls from Fs to Fc</source>
-            <translation>vs de f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): quão rápido o atrito cai de Fs para Fc</translation>
-        </message>
-        <message>
-            <source>Viscous (V per mm/s)</source>
-            <translation>Viscoso (V por mm/s)</translation>
-        </message>
-        <message>
-            <source>Viscous friction beyond the model's own damping (a2/k0 already holds it): 0 by default</source>
-            <translation>Atrito viscoso além do amortecimento do próprio modelo (a2/k0 já o contém): 0 por padrão</translation>
-        </message>
-        <message>
-            <source>Backlash (mm)</source>
-            <translation>Folga (mm)</translation>
-        </message>
-        <message>
-            <source>Play between motor and table: the table stays while the motor crosses the gap</source>
-            <translation>Folga entre motor e mesa: a mesa fica parada enquanto o motor atravessa a folga</translation>
-        </message>
-        <message>
-            <source>Amplifier deadband (V)</source>
-            <translation>Zona morta do amplificador (V)</translation>
-        </message>
-        <message>
-            <source>|u| below it gives no output; beyond it the amplifier gives u - d sign(u)</source>
-            <translation>|u| abaixo dela não dá saída; acima dela o amplificador dá u - d sign(u)</translation>
-        </message>
-        <message>
-            <source>the faster pole</source>
-            <translation>o polo mais rápido</translation>
-        </message>
-        <message>
-            <source>the slower pole</source>
-            <translation>o polo mais lento</translation>
-        </message>
-        <message>
-            <source>Which root of s² + a1 s + a2 is the drive's electrical lag; the other is the moving mass, where the friction acts</source>
-            <translation>Qual raiz de s² + a1 s + a2 é o atraso elétrico do acionamento; a outra é a massa em movimento, onde o atrito atua</translation>
-        </message>
-        <message>
-            <source>Electrical lag</source>
-            <translation>Atraso elétrico</translation>
-        </message>
-        <message>
-            <source>Compensation (%)</source>
-            <translation>Compensação (%)</translation>
-        </message>
-        <message>
-            <source>Friction feedforward from the reference velocity, in percent of the Coulomb and viscous levels above (0: none)</source>
-            <translation>Pré-alimentação de atrito a partir da velocidade de referência, em porcentagem dos níveis de Coulomb e viscoso acima (0: nenhuma)</translation>
-        </message>
-        <message>
-            <source>Compensation band (mm/s)</source>
-            <translation>Faixa de compensação (mm/s)</translation>
-        </message>
-        <message>
-            <source>The Coulomb term ramps linearly across |v| &lt; band instead of jumping at v = 0</source>
-            <translation>O termo de Coulomb varia linearmente em |v| &lt; faixa em vez de saltar em v = 0</translation>
-        </message>
-        <message>
-            <source>A pole-placement axis' ARX model has no moving mass: it takes the Coulomb level and the amplifier deadband, as a dead zone of its input</source>
-            <translation>O modelo ARX de um eixo por alocação de polos não tem massa em movimento: ele usa o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
-        </message>
-        <message>
-            <source>Coulomb %1 V</source>
-            <translation>Coulomb %1 V</translation>
-        </message>
-        <message>
-            <source>backlash %1 mm</source>
-            <translation>folga %1 mm</translation>
-        </message>
-        <message>
-            <source>deadband %1 V</source>
-            <translation>zona morta %1 V</translation>
-        </message>
-        <message>
-            <source>viscous</source>
-            <translation>viscoso</translation>
-        </message>
-        <message>
-            <source>compensated %1 %</source>
-            <translation>compensado %1 %</translation>
-        </message>
-        <message>
-            <source>Friction</source>
-            <translation>Atrito</translation>
-        </message>
-        <message>
-            <source>Friction ●</source>
-            <translation>Atrito ●</translation>
-        </message>
-        <message>
-            <source>Friction and backlash: none (the linear table)</source>
-            <translation>Atrito e folga: nenhum (mesa linear)</translation>
-        </message>
-        <message>
-            <source>Friction and backlash: %1</source>
-            <translation>Atrito e folga: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::HistogramPlot</name>
-        <message>
-            <source>Distribution</source>
-            <translation>Distribuição</translation>
-        </message>
-        <message>
-            <source>plants</source>
-            <translation>plantas</translation>
-        </message>
-        <message>
-            <source>limit</source>
-            <translation>limite</translation>
-        </message>
-        <message>
-            <source>nominal</source>
-            <translation>nominal</translation>
-        </message>
-        <message>
-            <source>Not computed yet.</source>
-            <translation>Ainda não calculado.</translation>
-        </message>
-        <message>
-            <source>No stable plant: no distribution.</source>
-            <translation>Nenhuma planta estável: sem distribuição.</translation>
-        </message>
-        <message>
-            <source>Histogram of the chosen figure (RMSE or max |e| in mm, max |u| in V) over the stable perturbed plants, with the specification's limit drawn.</source>
-            <translation>Histograma do valor escolhido (RMSE ou |e| máx em mm, |u| máx em V) sobre as plantas perturbadas estáveis, com o limite da especificação desenhado.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::IdentificationWindow</name>
-        <message>
-            <source>Identify a model from data</source>
-            <translation>Identificar um modelo a partir de dados</translation>
-        </message>
-        <message>
-            <source>Fit a model to see it here.</source>
-            <translation>Ajuste um modelo para vê-lo aqui.</translation>
-        </message>
-        <message>
-            <source>Load data…</source>
-            <translation>Carregar dados…</translation>
-        </message>
-        <message>
-            <source>(no file)</source>
-            <translation>(nenhum arquivo)</translation>
-        </message>
-        <message>
-            <source>Validation data…</source>
-            <translation>Dados de validação…</translation>
-        </message>
-        <message>
-            <source>(none: judged on the estimation data)</source>
-            <translation>(nenhum: avaliado nos dados de estimação)</translation>
-        </message>
-        <message>
-            <source> s</source>
-            <translation> s</translation>
-        </message>
-        <message>
-            <source>mm</source>
-            <translation>mm</translation>
-        </message>
-        <message>
-            <source>m</source>
-            <translation>m</translation>
-        </message>
-        <message>
-            <source>Range of the record to use; 0 to 0 uses all of it</source>
-            <translation>Intervalo do registro a usar; 0 a 0 usa o registro inteiro</translation>
-        </message>
-        <message>
-            <source>Remove trends</source>
-            <translation>Remover tendências</translation>
-        </message>
-        <message>
-            <source>Keep every n-th sample after an anti-alias filter (1: all)</source>
-            <translation>Manter uma amostra a cada n após um filtro anti-aliasing (1: todas)</translation>
-        </message>
-        <message>
-            <source>Data</source>
-            <translation>Dados</translation>
-        </message>
-        <message>
-            <source>Input (V):</source>
-            <translation>Entrada (V):</translation>
-        </message>
-        <message>
-            <source>Output:</source>
-            <translation>Saída:</translation>
-        </message>
-        <message>
-            <source>Output unit:</source>
-            <translation>Unidade da saída:</translation>
-        </message>
-        <message>
-            <source>Time:</source>
-            <translation>Tempo:</translation>
-        </message>
-        <message>
-            <source>Ts:</source>
-            <translation>Ts:</translation>
-        </message>
-        <message>
-            <source>to</source>
-            <translation>a</translation>
-        </message>
-        <message>
-            <source>Range:</source>
-            <translation>Intervalo:</translation>
-        </message>
-        <message>
-            <source>Decimate:</source>
-            <translation>Decimar:</translation>
-        </message>
-        <message>
-            <source>ARX</source>
-            <translation>ARX</translation>
-        </message>
-        <message>
-            <source>OE</source>
-            <translation>OE</translation>
-        </message>
-        <message>
-            <source>BJ</source>
-            <translation>BJ</translation>
-        </message>
-        <message>
-            <source>GT3 continuous</source>
-            <translation>GT3 contínuo</translation>
-        </message>
-        <message>
-            <source>Model</source>
-            <translation>Modelo</translation>
-        </message>
-        <message>
-            <source>Structure:</source>
-            <translation>Estrutura:</translation>
-        </message>
-        <message>
-            <source>Max iterations:</source>
-            <translation>Iterações máx:</translation>
-        </message>
-        <message>
-            <source>Fit</source>
-            <translation>Ajustar</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Cancelar</translation>
-        </message>
-        <message>
-            <source>Load a record of the axis (input in V, output position) to begin.</source>
-            <translation>Carregue um registro do eixo (entrada em V, saída posição) para começar.</translation>
-        </message>
-        <message>
-            <source>Status</source>
-            <translation>Estado</translation>
-        </message>
-        <message>
-            <source>Fit % est</source>
-            <translation>Ajuste % est</translation>
-        </message>
-        <message>
-            <source>Fit % val</source>
-            <translation>Ajuste % val</translation>
-        </message>
-        <message>
-            <source>AIC</source>
-            <translation>AIC</translation>
-        </message>
-        <message>
-            <source>Residuals</source>
-            <translation>Resíduos</translation>
-        </message>
-        <message>
-            <source>NMP</source>
-            <translation>FNM</translation>
-        </message>
-        <message>
-            <source>The selected model's parameters, each ± one standard deviation</source>
-            <translation>Os parâmetros do modelo selecionado, cada um ± um desvio padrão</translation>
-        </message>
-        <message>
-            <source>Use for axis X</source>
-            <translation>Usar para o eixo X</translation>
-        </message>
-        <message>
-            <source>Use for axis Y</source>
-            <translation>Usar para o eixo Y</translation>
-        </message>
-        <message>
-            <source>Response → X</source>
-            <translation>Resposta → X</translation>
-        </message>
-        <message>
-            <source>Response → Y</source>
-            <translation>Resposta → Y</translation>
-        </message>
-        <message>
-            <source>Welch's estimate of y/u (Hann window, 50 % overlap) with its coherence, drawn over the axis' model in the Vibration view</source>
-            <translation>Estimativa de Welch de y/u (janela de Hann, 50 % de sobreposição) com sua coerência, desenhada sobre o modelo do eixo na vista Vibração</translation>
-        </message>
-        <message>
-            <source>Load experiment data</source>
-            <translation>Carregar dados de ensaio</translation>
-        </message>
-        <message>
-            <source>Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
-            <translation>Arquivos de ensaio (*.csv *.tsv *.txt *.lvm *.mat);;Todos os arquivos (*)</translation>
-        </message>
-        <message>
-            <source>Load validation data</source>
-            <translation>Carregar dados de validação</translation>
-        </message>
-        <message>
-            <source>measured y</source>
-            <translation>y medido</translation>
-        </message>
-        <message>
-            <source>simulated ŷ (model)</source>
-            <translation>ŷ simulado (modelo)</translation>
-        </message>
-        <message>
-            <source>t (s)</source>
-            <translation>t (s)</translation>
-        </message>
-        <message>
-            <source>position (mm)</source>
-            <translation>posição (mm)</translation>
-        </message>
-        <message>
-            <source>Output</source>
-            <translation>Saída</translation>
-        </message>
-        <message>
-            <source>residual autocorr.</source>
-            <translation>autocorr. do resíduo</translation>
-        </message>
-        <message>
-            <source>lag (samples)</source>
-            <translation>atraso (amostras)</translation>
-        </message>
-        <message>
-            <source>input–residual corr.</source>
-            <translation>corr. entrada–resíduo</translation>
-        </message>
-        <message>
-            <source>Poles and zeros</source>
-            <translation>Polos e zeros</translation>
-        </message>
-        <message>
-            <source>%1: %2 columns, %3 rows%4. Pick the columns and press Fit.</source>
-            <translation>%1: %2 colunas, %3 linhas%4. Escolha as colunas e clique em Ajustar.</translation>
-        </message>
-        <message>
-            <source>, Ts = %1 s stated by the file</source>
-            <translation>, Ts = %1 s informado pelo arquivo</translation>
-        </message>
-        <message>
-            <source>The candidates fitted to the previous file were cleared.</source>
-            <translation>Os candidatos ajustados ao arquivo anterior foram removidos.</translation>
-        </message>
-        <message>
-            <source>These columns cannot be used yet: %1</source>
-            <translation>Estas colunas ainda não podem ser usadas: %1</translation>
-        </message>
-        <message>
-            <source>No data loaded.</source>
-            <translation>Nenhum dado carregado.</translation>
-        </message>
-        <message>
-            <source>Cannot read %1: %2</source>
-            <translation>Não é possível ler %1: %2</translation>
-        </message>
-        <message>
-            <source>Validation data: %1 (%2 rows).</source>
-            <translation>Dados de validação: %1 (%2 linhas).</translation>
-        </message>
-        <message>
-            <source>No model: the data could not be used.</source>
-            <translation>Nenhum modelo: os dados não puderam ser usados.</translation>
-        </message>
-        <message>
-            <source>Cannot fit: %1</source>
-            <translation>Não é possível ajustar: %1</translation>
-        </message>
-        <message>
-            <source>%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); the fit estimates where the table stood</source>
-            <translation>%1: a primeira amostra %2 mm foi subtraída (a planta parte do repouso em 0); o ajuste estima onde a mesa estava</translation>
-        </message>
-        <message>
-            <source>Fitting %1 to %2 samples…</source>
-            <translation>Ajustando %1 a %2 amostras…</translation>
-        </message>
-        <message>
-            <source>No frequency response: load a record first</source>
-            <translation>Sem resposta em frequência: carregue um registro primeiro</translation>
-        </message>
-        <message>
-            <source>Frequency response of %1: %2 averages of %3 samples, drawn in the Vibration view of axis %4</source>
-            <translation>Resposta em frequência de %1: %2 médias de %3 amostras, desenhada na vista Vibração do eixo %4</translation>
-        </message>
-        <message>
-            <source>No frequency response: %1</source>
-            <translation>Sem resposta em frequência: %1</translation>
-        </message>
-        <message>
-            <source>Cancelling…</source>
-            <translation>Cancelando…</translation>
-        </message>
-        <message>
-            <source>No model: the fit failed.</source>
-            <translation>Nenhum modelo: o ajuste falhou.</translation>
-        </message>
-        <message>
-            <source>The fit failed: %1</source>
-            <translation>O ajuste falhou: %1</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
-        </message>
-        <message>
-            <source> (%1)</source>
-            <translation> (%1)</translation>
-        </message>
-        <message>
-            <source>Estimated initial position: %1 mm</source>
-            <translation>Posição inicial estimada: %1 mm</translation>
-        </message>
-        <message>
-            <source>No estimate: %1</source>
-            <translation>Sem estimativa: %1</translation>
-        </message>
-        <message>
-            <source>GT3</source>
-            <translation>GT3</translation>
-        </message>
-        <message>
-            <source>pass</source>
-            <translation>aprovado</translation>
-        </message>
-        <message>
-            <source>fail</source>
-            <translation>reprovado</translation>
-        </message>
-        <message>
-            <source>yes</source>
-            <translation>sim</translation>
-        </message>
-        <message>
-            <source>no</source>
-            <translation>não</translation>
-        </message>
-        <message>
-            <source>Pole-zero map (z-plane)</source>
-            <translation>Mapa de polos e zeros (plano z)</translation>
-        </message>
-        <message>
-            <source>Select a candidate to see it here.</source>
-            <translation>Selecione um candidato para vê-lo aqui.</translation>
-        </message>
-        <message>
-            <source>Parameters (± 1 SD): %1</source>
-            <translation>Parâmetros (± 1 DP): %1</translation>
-        </message>
-        <message>
-            <source>residual autocorr. (%1)</source>
-            <translation>autocorr. do resíduo (%1)</translation>
-        </message>
-        <message>
-            <source>input–residual corr. (%1)</source>
-            <translation>corr. entrada–resíduo (%1)</translation>
-        </message>
-        <message>
-            <source>Pole-zero map (z-plane): a zero outside the unit circle (NMP)</source>
-            <translation>Mapa de polos e zeros (plano z): um zero fora do círculo unitário (FNM)</translation>
-        </message>
-        <message>
-            <source>A pole at z = 1: the model integrates, as the position of a motor axis does (every other pole is inside the unit circle).</source>
-            <translation>Um polo em z = 1: o modelo integra, como a posição de um eixo motorizado (todos os outros polos estão dentro do círculo unitário).</translation>
-        </message>
-        <message>
-            <source>A pole is on or outside the unit circle: the model is unstable.</source>
-            <translation>Um polo está sobre ou fora do círculo unitário: o modelo é instável.</translation>
-        </message>
-        <message>
-            <source>Pick the columns and press Fit.</source>
-            <translation>Escolha as colunas e clique em Ajustar.</translation>
-        </message>
-        <message>
-            <source>The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)</source>
-            <translation>O registro: %1 amostras, %2 s a %3 s, Ts = %4 s (ainda sem modelo)</translation>
-        </message>
-        <message>
-            <source>The record cannot be drawn: %1</source>
-            <translation>O registro não pode ser desenhado: %1</translation>
-        </message>
-        <message>
-            <source>Use the identified %1 for axis %2</source>
-            <translation>Usar o %1 identificado para o eixo %2</translation>
-        </message>
-        <message>
-            <source>X</source>
-            <translation>X</translation>
-        </message>
-        <message>
-            <source>Y</source>
-            <translation>Y</translation>
-        </message>
-        <message>
-            <source>Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).</source>
-            <translation>O eixo %1 agora usa o %2 identificado (Editar › Desfazer restaura a planta anterior).</translation>
-        </message>
-        <message>
-            <source>Cannot use this model: %1</source>
-            <translation>Não é possível usar este modelo: %1</translation>
-        </message>
-        <message>
-            <source>(sample time)</source>
-            <translation>(período de amostragem)</translation>
-        </message>
-        <message>
-            <source>Remove a straight line fitted by least squares from the input and the output before the fit (else their means)</source>
-            <translation>Remover da entrada e da saída uma reta ajustada por mínimos quadrados antes do ajuste (senão, suas médias)</translation>
-        </message>
-        <message>
-            <source>Read a logged experiment: CSV/TSV, LabVIEW .lvm or MATLAB .mat, with the input in V and the position</source>
-            <translation>Ler um ensaio registrado: CSV/TSV, LabVIEW .lvm ou MATLAB .mat, com a entrada em V e a posição</translation>
-        </message>
-        <message>
-            <source>A second record of the same axis on which the candidates' fit is judged (else on the estimation data)</source>
-            <translation>Um segundo registro do mesmo eixo no qual o ajuste dos candidatos é avaliado (senão, nos dados de estimação)</translation>
-        </message>
-        <message>
-            <source>The column of the command u (V) sent to the amplifier</source>
-            <translation>A coluna do comando u (V) enviado ao amplificador</translation>
-        </message>
-        <message>
-            <source>The column of the measured position y</source>
-            <translation>A coluna da posição medida y</translation>
-        </message>
-        <message>
-            <source>The column of the time (s), or none: the sample time Ts below</source>
-            <translation>A coluna do tempo (s), ou nenhuma: o período de amostragem Ts abaixo</translation>
-        </message>
-        <message>
-            <source>Sample time Ts (s) of the record when it has no time column</source>
-            <translation>Período de amostragem Ts (s) do registro quando ele não tem coluna de tempo</translation>
-        </message>
-        <message>
-            <source>The unit of the output column: mm, or m (converted to mm)</source>
-            <translation>A unidade da coluna de saída: mm, ou m (convertido para mm)</translation>
-        </message>
-        <message>
-            <source>ARX: A y = B u + e by least squares; OE: y = B/F u + e and BJ: y = B/F u + C/D e by prediction error (Levenberg–Marquardt); GT3: Braga et al.'s k0/(s³ + a1 s² + a2 s) fitted to the output</source>
-            <translation>ARX: A y = B u + e por mínimos quadrados; OE: y = B/F u + e e BJ: y = B/F u + C/D e por erro de predição (Levenberg–Marquardt); GT3: o k0/(s³ + a1 s² + a2 s) de Braga et al. ajustado à saída</translation>
-        </message>
-        <message>
-            <source>Order %1 of the model: na, nb, nc, nd, nf the numbers of coefficients of A, B, C, D, F; nk the input delay in samples</source>
-            <translation>Ordem %1 do modelo: na, nb, nc, nd, nf são os números de coeficientes de A, B, C, D, F; nk é o atraso da entrada em amostras</translation>
-        </message>
-        <message>
-            <source>The most Levenberg–Marquardt iterations of an OE, BJ or GT3 fit before it stops with the best estimate so far</source>
-            <translation>O número máximo de iterações de Levenberg–Marquardt de um ajuste OE, BJ ou GT3 antes que ele pare com a melhor estimativa até então</translation>
-        </message>
-        <message>
-            <source>Estimate the model of the chosen structure and orders; it is added to the candidates with its fit, AIC and residual tests</source>
-            <translation>Estimar o modelo com a estrutura e as ordens escolhidas; ele é adicionado aos candidatos com seu ajuste, AIC e testes de resíduos</translation>
-        </message>
-        <message>
-            <source>Stop the fit running</source>
-            <translation>Interromper o ajuste em andamento</translation>
-        </message>
-        <message>
-            <source>Make the selected model axis X's plant (an undoable step): GT3 as the Guillemin–Truxal plant, ARX/OE/BJ as the pole-placement model</source>
-            <translation>Tornar o modelo selecionado a planta do eixo X (um passo que pode ser desfeito): GT3 como planta de Guillemin–Truxal, ARX/OE/BJ como modelo da alocação de polos</translation>
-        </message>
-        <message>
-            <source>Make the selected model axis Y's plant (an undoable step)</source>
-            <translation>Tornar o modelo selecionado a planta do eixo Y (um passo que pode ser desfeito)</translation>
-        </message>
-        <message>
-            <source>The measured output y (mm) against time (s) and the selected model's simulated output ŷ from the same input</source>
-            <translation>A saída medida y (mm) em função do tempo (s) e a saída simulada ŷ do modelo selecionado a partir da mesma entrada</translation>
-        </message>
-        <message>
-            <source>The residuals' autocorrelation and their cross-correlation with the input against the lag, with the 99 % confidence band of white, independent residuals</source>
-            <translation>A autocorrelação dos resíduos e sua correlação cruzada com a entrada em função do atraso, com a faixa de confiança de 99 % de resíduos brancos e independentes</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ImplementationEditor</name>
-        <message>
-            <source>Computation delay: the command computed at sample k is applied at k + delay</source>
-            <translation>Atraso de cálculo: o comando calculado na amostra k é aplicado em k + atraso</translation>
-        </message>
-        <message>
-            <source>Encoder resolution in mm per count; 0 = ideal (no quantization)</source>
-            <translation>Resolução do encoder em mm por contagem; 0 = ideal (sem quantização)</translation>
-        </message>
-        <message>
-            <source>DAC resolution over ±umax; 0 = ideal</source>
-            <translation>Resolução do DAC em ±umax; 0 = ideal</translation>
-        </message>
-        <message>
-            <source>clamping</source>
-            <translation>grampeamento</translation>
-        </message>
-        <message>
-            <source>back-calculation</source>
-            <translation>retrocálculo</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>nenhum</translation>
-        </message>
-        <message>
-            <source>Anti-windup</source>
-            <translation>Anti-windup</translation>
-        </message>
-        <message>
-            <source>How the digital PI's integrator is kept from winding up while u is clipped: clamping (conditional integration) is what ships</source>
-            <translation>Como o integrador do PI digital é impedido de acumular enquanto u está limitado: o grampeamento (integração condicional) é o que se usa na prática</translation>
-        </message>
-        <message>
-            <source>Back-calculation tracking time Tt (s); 0 = Ti = kp/ki</source>
-            <translation>Tempo de rastreamento Tt do retrocálculo (s); 0 = Ti = kp/ki</translation>
-        </message>
-        <message>
-            <source>Delay (samples)</source>
-            <translation>Atraso (amostras)</translation>
-        </message>
-        <message>
-            <source>Encoder (mm/count)</source>
-            <translation>Encoder (mm/contagem)</translation>
-        </message>
-        <message>
-            <source>DAC bits</source>
-            <translation>Bits do DAC</translation>
-        </message>
-        <message>
-            <source>Tracking time (s)</source>
-            <translation>Tempo de rastreamento (s)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::MainWindow</name>
-        <message>
-            <source>XY Tune</source>
-            <translation>XY Tune</translation>
-        </message>
-        <message>
-            <source>Picking a gain sets kp and ωn of a Guillemin–Truxal axis, or P, I and D of a PID; this axis uses %1.</source>
-            <translation>Escolher um ganho define kp e ωn de um eixo Guillemin–Truxal, ou P, I e D de um PID; este eixo usa %1.</translation>
-        </message>
-        <message>
-            <source>Loop gain %1 applied: P, I and D scaled</source>
-            <translation>Ganho de malha %1 aplicado: P, I e D escalados</translation>
-        </message>
-        <message>
-            <source>Loop gain %1 applied: kp and ωn scaled</source>
-            <translation>Ganho de malha %1 aplicado: kp e ωn escalados</translation>
-        </message>
-        <message>
-            <source>Loop gain %1 of the design before the drag applied</source>
-            <translation>Ganho de malha %1 do projeto anterior ao arraste aplicado</translation>
-        </message>
-        <message>
-            <source>Dragging a pole sets the loop gain of a Guillemin–Truxal axis or a PID.</source>
-            <translation>Arrastar um polo define o ganho de malha de um eixo Guillemin–Truxal ou de um PID.</translation>
-        </message>
-        <message>
-            <source>The zero stays: %1</source>
-            <translation>O zero permanece: %1</translation>
-        </message>
-        <message>
-            <source>Zero moved to %1 %2 %3j</source>
-            <translation>Zero movido para %1 %2 %3j</translation>
-        </message>
-        <message>
-            <source>&amp;Root locus</source>
-            <translation>&amp;Lugar das raízes</translation>
-        </message>
-        <message>
-            <source>P&amp;arameter locus</source>
-            <translation>Lugar do p&amp;arâmetro</translation>
-        </message>
-        <message>
-            <source>&amp;Pole-zero</source>
-            <translation>&amp;Polos e zeros</translation>
-        </message>
-        <message>
-            <source>&amp;Bode</source>
-            <translation>&amp;Bode</translation>
-        </message>
-        <message>
-            <source>&amp;Nyquist</source>
-            <translation>&amp;Nyquist</translation>
-        </message>
-        <message>
-            <source>&amp;Vibration</source>
-            <translation>&amp;Vibração</translation>
-        </message>
-        <message>
-            <source>sweep ωn (kp fixed)</source>
-            <translation>varrer ωn (kp fixo)</translation>
-        </message>
-        <message>
-            <source>sweep kp (ωn fixed)</source>
-            <translation>varrer kp (ωn fixo)</translation>
-        </message>
-        <message>
-            <source>Swept parameter</source>
-            <translation>Parâmetro varrido</translation>
-        </message>
-        <message>
-            <source>&amp;Time</source>
-            <translation>&amp;Tempo</translation>
-        </message>
-        <message>
-            <source>Time response: the trajectory, the tracking error and the control signal</source>
-            <translation>Resposta no tempo: a trajetória, o erro de seguimento e o sinal de controle</translation>
-        </message>
-        <message>
-            <source>&amp;Step</source>
-            <translation>&amp;Degrau</translation>
-        </message>
-        <message>
-            <source>Step response of each axis against the specification's envelope</source>
-            <translation>Resposta ao degrau de cada eixo contra a envoltória da especificação</translation>
-        </message>
-        <message>
-            <source>&amp;XY contour</source>
-            <translation>Contorno &amp;XY</translation>
-        </message>
-        <message>
-            <source>error × </source>
-            <translation>erro × </translation>
-        </message>
-        <message>
-            <source>Contour error magnification</source>
-            <translation>Ampliação do erro de contorno</translation>
-        </message>
-        <message>
-            <source>Magnification of the contour error in the XY plot (as a ballbar plot)</source>
-            <translation>Ampliação do erro de contorno no gráfico XY (como em um gráfico de ballbar)</translation>
-        </message>
-        <message>
-            <source>&amp;Design space</source>
-            <translation>&amp;Espaço de projeto</translation>
-        </message>
-        <message>
-            <source>R&amp;obustness</source>
-            <translation>R&amp;obustez</translation>
-        </message>
-        <message>
-            <source>Metrics</source>
-            <translation>Métricas</translation>
-        </message>
-        <message>
-            <source>Equations</source>
-            <translation>Equações</translation>
-        </message>
-        <message>
-            <source>Trajectory</source>
-            <translation>Trajetória</translation>
-        </message>
-        <message>
-            <source>Axis %1</source>
-            <translation>Eixo %1</translation>
-        </message>
-        <message>
-            <source>Axis</source>
-            <translation>Eixo</translation>
-        </message>
-        <message>
-            <source>Design</source>
-            <translation>Projeto</translation>
-        </message>
-        <message>
-            <source>Design method</source>
-            <translation>Método de projeto</translation>
-        </message>
-        <message>
-            <source>Guillemin–Truxal PI (continuous)</source>
-            <translation>PI de Guillemin–Truxal (contínuo)</translation>
-        </message>
-        <message>
-            <source>Pole placement + ZPETC (discrete)</source>
-            <translation>Alocação de polos + ZPETC (discreto)</translation>
-        </message>
-        <message>
-            <source>ω&amp;n</source>
-            <translation>ω&amp;n</translation>
-        </message>
-        <message>
-            <source>rad/s</source>
-            <translation>rad/s</translation>
-        </message>
-        <message>
-            <source>k&amp;p</source>
-            <translation>k&amp;p</translation>
-        </message>
-        <message>
-            <source>V/m</source>
-            <translation>V/m</translation>
-        </message>
-        <message>
-            <source>Axis %1 now uses %2; Edit › Undo switches back</source>
-            <translation>O eixo %1 agora usa %2; Editar › Desfazer volta atrás</translation>
-        </message>
-        <message>
-            <source>Axis %1 now uses pole placement on Patrick, Ishak and Adnan's ARX model (the pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back</source>
-            <translation>O eixo %1 agora usa alocação de polos no modelo ARX de Patrick, Ishak e Adnan (a planta da alocação de polos, não a de Guillemin–Truxal); Editar › Desfazer volta atrás</translation>
-        </message>
-        <message>
-            <source>Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back</source>
-            <translation>O eixo %1 agora usa alocação de polos em seu modelo ARX; Editar › Desfazer volta atrás</translation>
-        </message>
-        <message>
-            <source>Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back</source>
-            <translation>O eixo %1 agora usa o PI de Guillemin–Truxal em sua planta contínua; Editar › Desfazer volta atrás</translation>
-        </message>
-        <message>
-            <source>Actuator and digital controller</source>
-            <translation>Atuador e controlador digital</translation>
-        </message>
-        <message>
-            <source>|u| limit (V)</source>
-            <translation>Limite de |u| (V)</translation>
-        </message>
-        <message>
-            <source>Tustin</source>
-            <translation>Tustin</translation>
-        </message>
-        <message>
-            <source>backward Euler</source>
-            <translation>Euler regressivo</translation>
-        </message>
-        <message>
-            <source>PI discretization</source>
-            <translation>Discretização do PI</translation>
-        </message>
-        <message>
-            <source>Controller Ts (s)</source>
-            <translation>Ts do controlador (s)</translation>
-        </message>
-        <message>
-            <source>Digital implementation settings</source>
-            <translation>Configurações da implementação digital</translation>
-        </message>
-        <message>
-            <source>Delay, encoder, DAC and anti-windup of the digital controller</source>
-            <translation>Atraso, encoder, DAC e anti-windup do controlador digital</translation>
-        </message>
-        <message>
-            <source>Load preset %1</source>
-            <translation>Carregar predefinição %1</translation>
-        </message>
-        <message>
-            <source>&amp;File</source>
-            <translation>&amp;Arquivo</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>Sa&amp;ir</translation>
-        </message>
-        <message>
-            <source>&amp;Edit</source>
-            <translation>&amp;Editar</translation>
-        </message>
-        <message>
-            <source>&amp;Undo</source>
-            <translation>&amp;Desfazer</translation>
-        </message>
-        <message>
-            <source>&amp;Redo</source>
-            <translation>&amp;Refazer</translation>
-        </message>
-        <message>
-            <source>&amp;Design</source>
-            <translation>&amp;Projeto</translation>
-        </message>
-        <message>
-            <source>&amp;Store snapshot...</source>
-            <translation>&amp;Guardar instantâneo...</translation>
-        </message>
-        <message>
-            <source>Ctrl+T</source>
-            <translation>Ctrl+T</translation>
-        </message>
-        <message>
-            <source>Store snapshot</source>
-            <translation>Guardar instantâneo</translation>
-        </message>
-        <message>
-            <source>Name of the snapshot:</source>
-            <translation>Nome do instantâneo:</translation>
-        </message>
-        <message>
-            <source>design %1</source>
-            <translation>projeto %1</translation>
-        </message>
-        <message>
-            <source>&amp;Compare designs...</source>
-            <translation>&amp;Comparar projetos...</translation>
-        </message>
-        <message>
-            <source>&amp;Identify from data...</source>
-            <translation>&amp;Identificar a partir de dados...</translation>
-        </message>
-        <message>
-            <source>F&amp;riction curve from a jog log...</source>
-            <translation>Curva de a&amp;trito de um registro de jog...</translation>
-        </message>
-        <message>
-            <source>Add &amp;feedforward from the model</source>
-            <translation>Adicionar pré-&amp;alimentação do modelo</translation>
-        </message>
-        <message>
-            <source>Feedforward of %1 from the model</source>
-            <translation>Pré-alimentação de %1 a partir do modelo</translation>
-        </message>
-        <message>
-            <source>No feedforward from the model</source>
-            <translation>Sem pré-alimentação a partir do modelo</translation>
-        </message>
-        <message>
-            <source>The plant's exact inverse as FF1, FF2, FF3: a Guillemin–Truxal axis becomes the same PI in LinuxCNC's units on the PID + feedforward method</source>
-            <translation>A inversa exata da planta como FF1, FF2, FF3: um eixo Guillemin–Truxal passa a ser o mesmo PI nas unidades do LinuxCNC no método PID + pré-alimentação</translation>
-        </message>
-        <message>
-            <source>&amp;Tune the PID...</source>
-            <translation>&amp;Sintonizar o PID...</translation>
-        </message>
-        <message>
-            <source>PI or PID gains from a crossover and phase margin, or from a simulated relay experiment (PID + feedforward axes)</source>
-            <translation>Ganhos PI ou PID a partir de uma frequência de cruzamento e margem de fase, ou de um ensaio de relé simulado (eixos PID + pré-alimentação)</translation>
-        </message>
-        <message>
-            <source>&amp;Overlay snapshot</source>
-            <translation>S&amp;obrepor instantâneo</translation>
-        </message>
-        <message>
-            <source>&amp;View</source>
-            <translation>E&amp;xibir</translation>
-        </message>
-        <message>
-            <source>Show the &amp;digital implementation</source>
-            <translation>Mostrar a implementação &amp;digital</translation>
-        </message>
-        <message>
-            <source>Overlay the loop as the firmware runs it on the time plots</source>
-            <translation>Sobrepor a malha como o firmware a executa nos gráficos no tempo</translation>
-        </message>
-        <message>
-            <source>Pole-zero map of the digital loop (&amp;z-plane)</source>
-            <translation>Mapa de polos e zeros da malha digital (plano &amp;z)</translation>
-        </message>
-        <message>
-            <source>&amp;Reset plot views</source>
-            <translation>&amp;Restaurar as vistas dos gráficos</translation>
-        </message>
-        <message>
-            <source>Ctrl+0</source>
-            <translation>Ctrl+0</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>Aj&amp;uda</translation>
-        </message>
-        <message>
-            <source>&amp;About XY Tune</source>
-            <translation>&amp;Sobre o XY Tune</translation>
-        </message>
-        <message>
-            <source>About XY Tune</source>
-            <translation>Sobre o XY Tune</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Tuning workbench for XY coordinate-table position controllers.&lt;br&gt;GPL-3.0-or-later.</source>
-            <translation>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Bancada de sintonia de controladores de posição de mesas de coordenadas XY.&lt;br&gt;GPL-3.0-or-later.</translation>
-        </message>
-        <message>
-            <source>On its lines the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
-            <translation>Em suas linhas a malha acoplada é estável: raio espectral %1 no pior caso (direção %2°)</translation>
-        </message>
-        <message>
-            <source>Frozen at each direction the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
-            <translation>Congelada em cada direção, a malha acoplada é estável: raio espectral %1 no pior caso (direção %2°)</translation>
-        </message>
-        <message>
-            <source>, beside a pole at z = 1 the contour never sees (the coupling's integral and the axes' integrators sharing a constant voltage)</source>
-            <translation>, além de um polo em z = 1 que o contorno nunca vê (a integral do acoplamento e os integradores dos eixos dividindo uma tensão constante)</translation>
-        </message>
-        <message>
-            <source>; disk margin %1: ±%2 dB, ±%3°</source>
-            <translation>; margem de disco %1: ±%2 dB, ±%3°</translation>
-        </message>
-        <message>
-            <source>; at the %1 input: phase margin %2°</source>
-            <translation>; na entrada %1: margem de fase %2°</translation>
-        </message>
-        <message>
-            <source>Contour error max %1 mm (independent axes %2 mm).</source>
-            <translation>Erro de contorno máx %1 mm (eixos independentes %2 mm).</translation>
-        </message>
-        <message>
-            <source>Contour error max %1 mm (independent axes %2 mm). </source>
-            <translation>Erro de contorno máx %1 mm (eixos independentes %2 mm). </translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
-        </message>
-        <message>
-            <source>clamp</source>
-            <translation>grampeamento</translation>
-        </message>
-        <message>
-            <source>back-calc.</source>
-            <translation>retrocálc.</translation>
-        </message>
-        <message>
-            <source>no anti-windup</source>
-            <translation>sem anti-windup</translation>
-        </message>
-        <message>
-            <source>Implementation: %1, %2%3</source>
-            <translation>Implementação: %1, %2%3</translation>
-        </message>
-        <message>
-            <source>quantized</source>
-            <translation>quantizada</translation>
-        </message>
-        <message>
-            <source>ideal</source>
-            <translation>ideal</translation>
-        </message>
-        <message>
-            <source>, delay %1</source>
-            <translation>, atraso %1</translation>
-        </message>
-        <message>
-            <source>Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.</source>
-            <translation>Encoder %1, DAC %2, anti-windup %3, atraso de cálculo %4 amostra(s). Clique para editar.</translation>
-        </message>
-        <message>
-            <source>%1 mm/count</source>
-            <translation>%1 mm/contagem</translation>
-        </message>
-        <message>
-            <source>%1 bits</source>
-            <translation>%1 bits</translation>
-        </message>
-        <message>
-            <source>%1: invalid (%2)  </source>
-            <translation>%1: inválido (%2)  </translation>
-        </message>
-        <message>
-            <source>%1: UNSTABLE  </source>
-            <translation>%1: INSTÁVEL  </translation>
-        </message>
-        <message>
-            <source>%1: stable  </source>
-            <translation>%1: estável  </translation>
-        </message>
-        <message>
-            <source>| updated in %1 ms</source>
-            <translation>| atualizado em %1 ms</translation>
-        </message>
-        <message>
-            <source>None</source>
-            <translation>Nenhum</translation>
-        </message>
-        <message>
-            <source>%1[*] — XY Tune</source>
-            <translation>%1[*] — XY Tune</translation>
-        </message>
-        <message>
-            <source>untitled</source>
-            <translation>sem título</translation>
-        </message>
-        <message>
-            <source>&amp;Language</source>
-            <translation>&amp;Idioma</translation>
-        </message>
-        <message>
-            <source>&amp;System language</source>
-            <translation>Idioma do &amp;sistema</translation>
-        </message>
-        <message>
-            <source>Language</source>
-            <translation>Idioma</translation>
-        </message>
-        <message>
-            <source>The language changes when XY Tune is started again.</source>
-            <translation>O idioma muda quando o XY Tune for iniciado novamente.</translation>
-        </message>
-        <message>
-            <source>The parameter the parameter locus sweeps over its slider's range, the other held at the design's value</source>
-            <translation>O parâmetro que o lugar do parâmetro varre na faixa do seu controle deslizante, com o outro mantido no valor do projeto</translation>
-        </message>
-        <message>
-            <source>How the current axis is controlled: Guillemin–Truxal PI (Braga et al.), pole placement + ZPETC (Patrick, Ishak and Adnan) or LinuxCNC's PID with command feedforward</source>
-            <translation>Como o eixo atual é controlado: PI de Guillemin–Truxal (Braga et al.), alocação de polos + ZPETC (Patrick, Ishak e Adnan) ou o PID do LinuxCNC com pré-alimentação do comando</translation>
-        </message>
-        <message>
-            <source>ωn (rad/s): the natural frequency of the 4th-order reference model G_R(s); the PI follows as f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al. Eq. 11–18)</source>
-            <translation>ωn (rad/s): a frequência natural do modelo de referência de 4ª ordem G_R(s); o PI decorre como f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al., Eq. 11–18)</translation>
-        </message>
-        <message>
-            <source>kp (V per model unit): the PI's proportional gain; with ωn it sets ki = kp ψ1 = ωn⁴/k0 and the reference model's f3 = kp k0/ωn³</source>
-            <translation>kp (V por unidade do modelo): o ganho proporcional do PI; junto com ωn ele define ki = kp ψ1 = ωn⁴/k0 e o f3 = kp k0/ωn³ do modelo de referência</translation>
-        </message>
-        <message>
-            <source>Actuator limit umax (V): every run clips the command to ±umax, and the anti-windup acts at it</source>
-            <translation>Limite do atuador umax (V): toda simulação limita o comando a ±umax, e o anti-windup atua nesse limite</translation>
-        </message>
-        <message>
-            <source>Controller sample time Ts (s) of the digital PI or PID: the digital implementation runs and the exports are at it</source>
-            <translation>Período de amostragem Ts (s) do controlador do PI ou PID digital: a implementação digital é simulada e as exportações são feitas nesse período</translation>
-        </message>
-        <message>
-            <source>How the PI kp + ki/s is discretized at the controller sample time: Tustin s = (2/Ts)(z − 1)/(z + 1), or backward Euler s = (z − 1)/(z Ts)</source>
-            <translation>Como o PI kp + ki/s é discretizado no período de amostragem do controlador: Tustin s = (2/Ts)(z − 1)/(z + 1), ou Euler regressivo s = (z − 1)/(z Ts)</translation>
-        </message>
-        <message>
-            <source>&amp;User guide</source>
-            <translation>&amp;Guia do usuário</translation>
-        </message>
-        <message>
-            <source>&amp;Tutorials...</source>
-            <translation>&amp;Tutoriais...</translation>
-        </message>
-        <message>
-            <source>&amp;Command-line reference</source>
-            <translation>Referência da &amp;linha de comando</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::MethodParameterEditor</name>
-        <message>
-            <source>This method has no settings.</source>
-            <translation>Este método não tem configurações.</translation>
-        </message>
-        <message>
-            <source>%1 (%2 .. %3 %4)</source>
-            <translation>%1 (%2 .. %3 %4)</translation>
-        </message>
-        <message>
-            <source>%1 (%2)</source>
-            <translation>%1 (%2)</translation>
-        </message>
-        <message>
-            <source>Set %1 of %2 to %3</source>
-            <translation>Definir %1 de %2 como %3</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::MetricsPanel</name>
-        <message>
-            <source>X</source>
-            <translation>X</translation>
-        </message>
-        <message>
-            <source>Y</source>
-            <translation>Y</translation>
-        </message>
-        <message>
-            <source>spec</source>
-            <translation>espec.</translation>
-        </message>
-        <message>
-            <source>RMSE (mm)</source>
-            <translation>RMSE (mm)</translation>
-        </message>
-        <message>
-            <source>max |e| (mm)</source>
-            <translation>máx |e| (mm)</translation>
-        </message>
-        <message>
-            <source>max |e| (%)</source>
-            <translation>máx |e| (%)</translation>
-        </message>
-        <message>
-            <source>max |u| (V)</source>
-            <translation>máx |u| (V)</translation>
-        </message>
-        <message>
-            <source>saturated (s)</source>
-            <translation>saturado (s)</translation>
-        </message>
-        <message>
-            <source>ITAE (mm·s²)</source>
-            <translation>ITAE (mm·s²)</translation>
-        </message>
-        <message>
-            <source>ZPETC gain (%)</source>
-            <translation>ganho do ZPETC (%)</translation>
-        </message>
-        <message>
-            <source>settle time (s)</source>
-            <translation>tempo de acomodação (s)</translation>
-        </message>
-        <message>
-            <source>final e (mm)</source>
-            <translation>e final (mm)</translation>
-        </message>
-        <message>
-            <source>overrun (mm)</source>
-            <translation>ultrapassagem (mm)</translation>
-        </message>
-        <message>
-            <source>settling 2 % (s)</source>
-            <translation>acomodação 2 % (s)</translation>
-        </message>
-        <message>
-            <source>overshoot (%)</source>
-            <translation>sobressinal (%)</translation>
-        </message>
-        <message>
-            <source>min ζ (z-plane)</source>
-            <translation>ζ mín (plano z)</translation>
-        </message>
-        <message>
-            <source>gain margin (dB)</source>
-            <translation>margem de ganho (dB)</translation>
-        </message>
-        <message>
-            <source>phase margin (°)</source>
-            <translation>margem de fase (°)</translation>
-        </message>
-        <message>
-            <source>delay margin (s)</source>
-            <translation>margem de atraso (s)</translation>
-        </message>
-        <message>
-            <source>Ms = max |S|</source>
-            <translation>Ms = máx |S|</translation>
-        </message>
-        <message>
-            <source>Tracking the trajectory</source>
-            <translation>Seguimento da trajetória</translation>
-        </message>
-        <message>
-            <source>Move and settle (point-to-point)</source>
-            <translation>Mover e acomodar (ponto a ponto)</translation>
-        </message>
-        <message>
-            <source>Unit step, as each axis runs</source>
-            <translation>Degrau unitário, como cada eixo o executa</translation>
-        </message>
-        <message>
-            <source>Digital implementation</source>
-            <translation>Implementação digital</translation>
-        </message>
-        <message>
-            <source>Loop margins (open loop L)</source>
-            <translation>Margens da malha (malha aberta L)</translation>
-        </message>
-        <message>
-            <source>Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the step of the feedback loop Kf·B/T alone.</source>
-            <translation>Guillemin–Truxal: o degrau de G_R(s), a malha fechada contínua. Alocação de polos: o degrau pré-visto pela pré-alimentação ZPETC e pela malha quando o ZPETC está ligado; senão, o degrau só da malha de realimentação Kf·B/T.</translation>
-        </message>
-        <message>
-            <source>The controller at its sample time with the hold, the encoder and DAC quantization, the limit, the anti-windup and the delay of the Digital implementation settings. An amber figure differs from the design's above by more than 5 %.</source>
-            <translation>O controlador no seu período de amostragem com o retentor, a quantização do encoder e do DAC, o limite, o anti-windup e o atraso das configurações da implementação digital. Um valor em âmbar difere do projeto acima em mais de 5 %.</translation>
-        </message>
-        <message>
-            <source>Metrics</source>
-            <translation>Métricas</translation>
-        </message>
-        <message>
-            <source>Why the specification fails</source>
-            <translation>Por que a especificação falha</translation>
-        </message>
-        <message>
-            <source>Relax the limits</source>
-            <translation>Relaxar os limites</translation>
-        </message>
-        <message>
-            <source>Contour error figures</source>
-            <translation>Valores do erro de contorno</translation>
-        </message>
-        <message>
-            <source>Warnings</source>
-            <translation>Avisos</translation>
-        </message>
-        <message>
-            <source>Maximum settling time (2 % band) of the unit step</source>
-            <translation>Tempo de acomodação máximo (faixa de 2 %) do degrau unitário</translation>
-        </message>
-        <message>
-            <source>Maximum |e| as a percentage of the travel</source>
-            <translation>|e| máximo como porcentagem do curso</translation>
-        </message>
-        <message>
-            <source>Maximum settle time after the end (tf) of a point-to-point move</source>
-            <translation>Tempo de acomodação máximo após o fim (tf) de um movimento ponto a ponto</translation>
-        </message>
-        <message>
-            <source>In-position window of a point-to-point move: |e| ≤ this (mm)</source>
-            <translation>Janela de posição de um movimento ponto a ponto: |e| ≤ este valor (mm)</translation>
-        </message>
-        <message>
-            <source>Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states none). 45–60° is the usual rule.</source>
-            <translation>Margem de fase mínima (MF, graus) da malha; 0 = nenhuma (o artigo não define). 45–60° é a regra usual.</translation>
-        </message>
-        <message>
-            <source>Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule.</source>
-            <translation>Margem de ganho mínima (MG, dB) da malha; 0 = nenhuma. 6 dB é a regra usual.</translation>
-        </message>
-        <message>
-            <source>Every Guillemin–Truxal design overshoots a little on a step (its reference model is type 2), so 0 % fails them all.</source>
-            <translation>Todo projeto Guillemin–Truxal tem um pequeno sobressinal ao degrau (seu modelo de referência é do tipo 2), então 0 % reprova todos.</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Specification&lt;/b&gt;</source>
-            <translation>&lt;b&gt;Especificação&lt;/b&gt;</translation>
-        </message>
-        <message>
-            <source>The limits of the spec column above: each figure is judged against them</source>
-            <translation>Os limites da coluna espec. acima: cada valor é avaliado em relação a eles</translation>
-        </message>
-        <message>
-            <source>settling ≤ s</source>
-            <translation>acomodação ≤ s</translation>
-        </message>
-        <message>
-            <source>overshoot ≤ %</source>
-            <translation>sobressinal ≤ %</translation>
-        </message>
-        <message>
-            <source>max |e| ≤ %</source>
-            <translation>máx |e| ≤ %</translation>
-        </message>
-        <message>
-            <source>settle ≤ s</source>
-            <translation>acomodação ≤ s</translation>
-        </message>
-        <message>
-            <source>window mm</source>
-            <translation>janela mm</translation>
-        </message>
-        <message>
-            <source>PM ≥ °</source>
-            <translation>MF ≥ °</translation>
-        </message>
-        <message>
-            <source>GM ≥ dB</source>
-            <translation>MG ≥ dB</translation>
-        </message>
-        <message>
-            <source>—</source>
-            <translation>—</translation>
-        </message>
-        <message>
-            <source>n/a</source>
-            <translation>n/d</translation>
-        </message>
-        <message>
-            <source>the closed loop is unstable: not a robustness measure</source>
-            <translation>a malha fechada é instável: não é uma medida de robustez</translation>
-        </message>
-        <message>
-            <source>at %1 rad/s (factor %2)</source>
-            <translation>em %1 rad/s (fator %2)</translation>
-        </message>
-        <message>
-            <source>at %1 rad/s</source>
-            <translation>em %1 rad/s</translation>
-        </message>
-        <message>
-            <source>✓ both axes meet it</source>
-            <translation>✓ os dois eixos a atendem</translation>
-        </message>
-        <message>
-            <source>✗ fails: hover for why</source>
-            <translation>✗ falha: passe o mouse para ver por quê</translation>
-        </message>
-        <message>
-            <source>Set the limits to what this design reaches: %1 (one undo step)</source>
-            <translation>Ajustar os limites ao que este projeto alcança: %1 (um passo de desfazer)</translation>
-        </message>
-        <message>
-            <source>, </source>
-            <translation>, </translation>
-        </message>
-        <message>
-            <source>The design meets the specification</source>
-            <translation>O projeto atende à especificação</translation>
-        </message>
-        <message>
-            <source>No limit makes this design pass (see why): change the design</source>
-            <translation>Nenhum limite faz este projeto passar (veja por quê): mude o projeto</translation>
-        </message>
-        <message>
-            <source>Contour error (XY): max %1, RMS %2 mm</source>
-            <translation>Erro de contorno (XY): máx %1, RMS %2 mm</translation>
-        </message>
-        <message>
-            <source>The program's warnings are shown on the XY contour view</source>
-            <translation>Os avisos do programa são mostrados na vista Contorno XY</translation>
-        </message>
-        <message>
-            <source>CW</source>
-            <translation>H</translation>
-        </message>
-        <message>
-            <source>CCW</source>
-            <translation>AH</translation>
-        </message>
-        <message>
-            <source>ISO 230-4: G %1 %2, %3 %4, F %5/%6</source>
-            <translation>ISO 230-4: G %1 %2, %3 %4, F %5/%6</translation>
-        </message>
-        <message>
-            <source>ISO 230-4: G %1, F %2/%3</source>
-            <translation>ISO 230-4: G %1, F %2/%3</translation>
-        </message>
-        <message>
-            <source>, H %1</source>
-            <translation>, H %1</translation>
-        </message>
-        <message>
-            <source>%1° %2</source>
-            <translation>%1° %2</translation>
-        </message>
-        <message>
-            <source>, spikes ≤ %1</source>
-            <translation>, picos ≤ %1</translation>
-        </message>
-        <message>
-            <source>Reversal spikes (mm): %1</source>
-            <translation>Picos de reversão (mm): %1</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>Cannot judge the study: %1</source>
+        <translation>Não é possível avaliar o estudo: %1</translation>
+    </message>
+    <message>
+        <source>This tab shows axis %1.</source>
+        <translation>Esta aba mostra o eixo %1.</translation>
+    </message>
+    <message>
+        <source>Axis %1 now uses %2: the map applies to Guillemin–Truxal and PI + feedforward axes.</source>
+        <translation>O eixo %1 agora usa %2: o mapa se aplica a eixos Guillemin–Truxal e PI + pré-alimentação.</translation>
+    </message>
+    <message>
+        <source>The plant, the trajectory or the limits the runs depend on have changed since.</source>
+        <translation>A planta, a trajetória ou os limites de que as simulações dependem mudaram desde então.</translation>
+    </message>
+    <message>
+        <source>The live map of the current design follows.</source>
+        <translation>Segue o mapa ao vivo do projeto atual.</translation>
+    </message>
+    <message>
+        <source>Press Run to study the current design.</source>
+        <translation>Clique em Executar para estudar o projeto atual.</translation>
+    </message>
+    <message>
+        <source>Map computed for %1. %2 %3</source>
+        <translation>Mapa calculado para %1. %2 %3</translation>
+    </message>
+    <message>
+        <source>The map shown is not of the session&apos;s study (computed for %1). %2</source>
+        <translation>O mapa mostrado não é do estudo da sessão (calculado para %1). %2</translation>
+    </message>
+    <message>
+        <source>Load design from the design space</source>
+        <translation>Carregar projeto do espaço de projeto</translation>
+    </message>
+    <message>
+        <source>Smallest ωn (rad/s) of the grid: the reference model&apos;s natural frequency of the first row of designs</source>
+        <translation>Menor ωn (rad/s) da grade: a frequência natural do modelo de referência da primeira linha de projetos</translation>
+    </message>
+    <message>
+        <source>Largest ωn (rad/s) of the grid</source>
+        <translation>Maior ωn (rad/s) da grade</translation>
+    </message>
+    <message>
+        <source>Number of ωn values of the grid (rows); each cell is one design run on the session&apos;s trajectory</source>
+        <translation>Número de valores de ωn da grade (linhas); cada célula é um projeto simulado na trajetória da sessão</translation>
+    </message>
+    <message>
+        <source>Smallest proportional gain kp (V per model unit) of the grid</source>
+        <translation>Menor ganho proporcional kp (V por unidade do modelo) da grade</translation>
+    </message>
+    <message>
+        <source>Largest proportional gain kp (V per model unit) of the grid</source>
+        <translation>Maior ganho proporcional kp (V por unidade do modelo) da grade</translation>
+    </message>
+    <message>
+        <source>Number of kp values of the grid (columns)</source>
+        <translation>Número de valores de kp da grade (colunas)</translation>
+    </message>
+    <message>
+        <source>Space the ωn and kp values evenly on a logarithmic scale (else linearly between the bounds)</source>
+        <translation>Espaçar os valores de ωn e kp uniformemente em escala logarítmica (senão, linearmente entre os limites)</translation>
+    </message>
+    <message>
+        <source>The figure that picks the best feasible design: minimized (ITAE, max |e|, RMSE, max |u|, settle time) or maximized (the margins)</source>
+        <translation>O valor que escolhe o melhor projeto viável: minimizado (ITAE, |e| máx, RMSE, |u| máx, tempo de acomodação) ou maximizado (as margens)</translation>
+    </message>
+    <message>
+        <source>The figure the heat map&apos;s colours show for each design of the grid</source>
+        <translation>O valor que as cores do mapa de calor mostram para cada projeto da grade</translation>
+    </message>
+    <message>
+        <source>Colour the heat map by the logarithm of the figure (its values often span decades)</source>
+        <translation>Colorir o mapa de calor pelo logaritmo do valor (seus valores costumam abranger várias décadas)</translation>
+    </message>
+    <message>
+        <source>Maximum settling time (s, 2 % band) of the closed loop&apos;s unit step</source>
+        <translation>Tempo de acomodação máximo (s, faixa de 2 %) do degrau unitário da malha fechada</translation>
+    </message>
+    <message>
+        <source>Maximum overshoot (%) of the closed loop&apos;s unit step</source>
+        <translation>Sobressinal máximo (%) do degrau unitário da malha fechada</translation>
+    </message>
+    <message>
+        <source>Maximum tracking error max |e| as a percentage of the travel</source>
+        <translation>Erro de seguimento máximo |e| máx como porcentagem do curso</translation>
+    </message>
+    <message>
+        <source>Actuator limit umax (V): a design whose run asks for more is infeasible; the session&apos;s |u| limit</source>
+        <translation>Limite do atuador umax (V): um projeto cuja simulação exige mais é inviável; o limite de |u| da sessão</translation>
+    </message>
+    <message>
+        <source>Minimum phase margin (°) of the loop, 180° + arg L(jωc); 0: none</source>
+        <translation>Margem de fase mínima (°) da malha, 180° + arg L(jωc); 0: nenhuma</translation>
+    </message>
+    <message>
+        <source>Minimum gain margin (dB) of the loop, −20 log10 |L(jω180)|; 0: none</source>
+        <translation>Margem de ganho mínima (dB) da malha, −20 log10 |L(jω180)|; 0: nenhuma</translation>
+    </message>
+    <message>
+        <source>Run the study: every design of the grid on the session&apos;s trajectory at its dt, judged against the specification</source>
+        <translation>Executar o estudo: cada projeto da grade na trajetória da sessão com o seu dt, avaliado frente à especificação</translation>
+    </message>
+    <message>
+        <source>Stop the study; the designs computed so far are shown</source>
+        <translation>Interromper o estudo; os projetos calculados até aqui são mostrados</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::DiagnosticText</name>
+    <message>
+        <source>the closed loop is unstable</source>
+        <translation>a malha fechada é instável</translation>
+    </message>
+    <message>
+        <source>the simulated run diverged (a sample is not a finite number): it has no tracking figures</source>
+        <translation>a simulação divergiu (uma amostra não é um número finito): não há valores de seguimento</translation>
+    </message>
+    <message>
+        <source>the flexible mode and the notch of gt apply to a continuous plant: this pole-placement axis runs its ARX model, which holds whatever mode its data showed (identify it from a log that excites the mode)</source>
+        <translation>o modo flexível e o notch de gt se aplicam a uma planta contínua: este eixo por alocação de polos usa seu modelo ARX, que contém o modo que seus dados mostraram (identifique-o a partir de um registro que excite o modo)</translation>
+    </message>
+    <message>
+        <source>the run ends before the move does (tf): no settle figures</source>
+        <translation>a simulação termina antes do movimento (tf): sem valores de acomodação</translation>
+    </message>
+    <message>
+        <source>no stability margins: %1</source>
+        <translation>sem margens de estabilidade: %1</translation>
+    </message>
+    <message>
+        <source>no digital implementation: %1</source>
+        <translation>sem implementação digital: %1</translation>
+    </message>
+    <message>
+        <source>|u| exceeds the actuator limit (the discrete loop is simulated without saturation)</source>
+        <translation>|u| excede o limite do atuador (a malha discreta é simulada sem saturação)</translation>
+    </message>
+    <message>
+        <source>the feedforward alone needs %1 V on this trajectory, beyond the output limit of %2 V</source>
+        <translation>a pré-alimentação sozinha precisa de %1 V nesta trajetória, além do limite de saída de %2 V</translation>
+    </message>
+    <message>
+        <source>the cubic&apos;s acceleration step becomes a %1 V spike of the FF3 term (one controller period); the quintic move has no acceleration step</source>
+        <translation>o degrau de aceleração da cúbica vira um pico de %1 V do termo FF3 (um período do controlador); o movimento quíntico não tem degrau de aceleração</translation>
+    </message>
+    <message>
+        <source>a limit cycle at rest: after the move the measured position keeps oscillating (%1 mm peak to peak, %2 turns in the last half of the rest), caused by the encoder/DAC quantization</source>
+        <translation>um ciclo-limite em repouso: após o movimento a posição medida continua oscilando (%1 mm pico a pico, %2 inversões na segunda metade do repouso), causado pela quantização do encoder/DAC</translation>
+    </message>
+    <message>
+        <source>%1 axis: the simulated run diverged (a sample is not a finite number)</source>
+        <translation>eixo %1: a simulação divergiu (uma amostra não é um número finito)</translation>
+    </message>
+    <message>
+        <source>%1 axis: |u| reached the actuator limit of %2 V for %3 s</source>
+        <translation>eixo %1: |u| atingiu o limite do atuador de %2 V por %3 s</translation>
+    </message>
+    <message>
+        <source>ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures</source>
+        <translation>ISO 230-4: um círculo completo do programa dura menos de 3 amostras: sem valores</translation>
+    </message>
+    <message>
+        <source>the circle lasts fewer than 3 samples: no ISO 230-4 figures</source>
+        <translation>o círculo dura menos de 3 amostras: sem valores ISO 230-4</translation>
+    </message>
+    <message>
+        <source>reversal spikes up to %1 mm at the quadrant changes (the table&apos;s friction and backlash)</source>
+        <translation>picos de reversão de até %1 mm nas mudanças de quadrante (o atrito e a folga da mesa)</translation>
+    </message>
+    <message>
+        <source>the digital loop at Ts = %1 s is unstable (its largest closed-loop pole has |z| = %2); lower the controller sample time</source>
+        <translation>a malha digital com Ts = %1 s é instável (seu maior polo de malha fechada tem |z| = %2); reduza o período de amostragem do controlador</translation>
+    </message>
+    <message>
+        <source>the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 against %3 in the z-plane poles); lower the controller sample time or the delay</source>
+        <translation>a malha digital com Ts = %1 s é muito menos amortecida que o projeto (coeficiente de amortecimento %2 contra %3 nos polos do plano z); reduza o período de amostragem do controlador ou o atraso</translation>
+    </message>
+    <message>
+        <source>must be a number, got NaN</source>
+        <translation>deve ser um número, recebido NaN</translation>
+    </message>
+    <message>
+        <source>must be finite, got infinity</source>
+        <translation>deve ser finito, recebido infinito</translation>
+    </message>
+    <message>
+        <source>must be greater than zero</source>
+        <translation>deve ser maior que zero</translation>
+    </message>
+    <message>
+        <source>must be nonzero</source>
+        <translation>deve ser diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::EnvelopePlot</name>
+    <message>
+        <source>Envelope</source>
+        <translation>Envoltória</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>min–max</source>
+        <translation>mín–máx</translation>
+    </message>
+    <message>
+        <source>5–95 %</source>
+        <translation>5–95 %</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>mediana</translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation>nominal</translation>
+    </message>
+    <message>
+        <source>Not computed yet.</source>
+        <translation>Ainda não calculado.</translation>
+    </message>
+    <message>
+        <source>No stable plant: no envelope.</source>
+        <translation>Nenhuma planta estável: sem envoltória.</translation>
+    </message>
+    <message>
+        <source>Envelope of the perturbed plants&apos; runs: the range (min to max over the stable plants) of the chosen signal (error or output in mm, command in V) around the nominal run, against time (s).</source>
+        <translation>Envoltória das simulações das plantas perturbadas: a faixa (do mínimo ao máximo sobre as plantas estáveis) do sinal escolhido (erro ou saída em mm, comando em V) em torno da simulação nominal, em função do tempo (s).</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::EquationsPanel</name>
+    <message>
+        <source>Design equations</source>
+        <translation>Equações de projeto</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Axis %1&lt;/b&gt;: %2: %3</source>
+        <translation>&lt;b&gt;Eixo %1&lt;/b&gt;: %2: %3</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Axis %1 — pole placement + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</source>
+        <translation>&lt;b&gt;Eixo %1 — alocação de polos + ZPETC&lt;/b&gt; (T&lt;sub&gt;s&lt;/sub&gt; = %2 s)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>A F + B G = T (Diophantine, Patrick, Ishak and Adnan Eq. 8)&lt;br&gt;</source>
+        <translation>A F + B G = T (diofantina, Patrick, Ishak e Adnan Eq. 8)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</source>
+        <translation>A = %1&lt;br&gt;B = %2&lt;br&gt;T = %3&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>F = %1&lt;br&gt;G = %2&lt;br&gt;</source>
+        <translation>F = %1&lt;br&gt;G = %2&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, residual %2&lt;br&gt;</source>
+        <translation>K&lt;sub&gt;f&lt;/sub&gt; = T(1)/B(1) = %1, resíduo %2&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>control law: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</source>
+        <translation>lei de controle: F u = K&lt;sub&gt;f&lt;/sub&gt; w − G y&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</source>
+        <translation>ZPETC: w(k) = N/D · r(k + %1), [B&lt;sup&gt;−&lt;/sup&gt;(1)]&lt;sup&gt;2&lt;/sup&gt; = %2&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>N = %1&lt;br&gt;D = %2</source>
+        <translation>N = %1&lt;br&gt;D = %2</translation>
+    </message>
+    <message>
+        <source>no feedforward: w = r</source>
+        <translation>sem pré-alimentação: w = r</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Axis %1 — %2&lt;/b&gt;&lt;br&gt;</source>
+        <translation>&lt;b&gt;Eixo %1 — %2&lt;/b&gt;&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Axis %1 — Guillemin–Truxal PI&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</source>
+        <translation>&lt;b&gt;Eixo %1 — PI de Guillemin–Truxal&lt;/b&gt; (ω&lt;sub&gt;n&lt;/sub&gt; = %2 rad/s, k&lt;sub&gt;p&lt;/sub&gt; = %3)&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</source>
+        <translation>f&lt;sub&gt;1&lt;/sub&gt; = a&lt;sub&gt;1&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt; = %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</source>
+        <translation>f&lt;sub&gt;2&lt;/sub&gt; = a&lt;sub&gt;2&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;2&lt;/sup&gt; = %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</source>
+        <translation>f&lt;sub&gt;3&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;/ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;3&lt;/sup&gt; = %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</source>
+        <translation>ψ&lt;sub&gt;1&lt;/sub&gt; = ω&lt;sub&gt;n&lt;/sub&gt;&lt;sup&gt;4&lt;/sup&gt;/(k&lt;sub&gt;p&lt;/sub&gt;k&lt;sub&gt;0&lt;/sub&gt;) = %1, ψ&lt;sub&gt;2&lt;/sub&gt; = %2&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</source>
+        <translation>k&lt;sub&gt;i&lt;/sub&gt; = k&lt;sub&gt;p&lt;/sub&gt;ψ&lt;sub&gt;1&lt;/sub&gt; = %1&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</source>
+        <translation>G&lt;sub&gt;c&lt;/sub&gt;(s) = %1 + %2/s&lt;br&gt;</translation>
+    </message>
+    <message>
+        <source>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</source>
+        <translation>G&lt;sub&gt;R&lt;/sub&gt;(s) = (%1) / (%2)</translation>
+    </message>
+    <message>
+        <source>&lt;br&gt;&lt;span style=&apos;color:#d32f2f&apos;&gt;&lt;b&gt;The closed loop is unstable.&lt;/b&gt;&lt;/span&gt;</source>
+        <translation>&lt;br&gt;&lt;span style=&apos;color:#d32f2f&apos;&gt;&lt;b&gt;A malha fechada é instável.&lt;/b&gt;&lt;/span&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::FlexibleModeEditor</name>
+    <message>
+        <source>Flexible mode and notch</source>
+        <translation>Modo flexível e notch</translation>
+    </message>
+    <message>
+        <source>Mode (Hz)</source>
+        <translation>Modo (Hz)</translation>
+    </message>
+    <message>
+        <source>The table&apos;s resonance fr above the rigid plant (belt, screw, gantry); 0: a rigid table. The design is made on the rigid plant; every run and analysis has the mode</source>
+        <translation>A ressonância fr da mesa acima da planta rígida (correia, fuso, pórtico); 0: mesa rígida. O projeto é feito na planta rígida; toda simulação e análise inclui o modo</translation>
+    </message>
+    <message>
+        <source>Mode damping</source>
+        <translation>Amortecimento do modo</translation>
+    </message>
+    <message>
+        <source>Damping ratio of the resonance, in [0, 1); its peak stands 1/(2 ζ) above the rigid plant</source>
+        <translation>Coeficiente de amortecimento da ressonância, em [0, 1); seu pico fica 1/(2 ζ) acima da planta rígida</translation>
+    </message>
+    <message>
+        <source>Anti-resonance (Hz)</source>
+        <translation>Antirressonância (Hz)</translation>
+    </message>
+    <message>
+        <source>A two-mass model measured at the motor: its anti-resonance below fr; 0: the resonant pair fr² / (s² + 2 ζ fr s + fr²) alone</source>
+        <translation>Um modelo de duas massas medido no motor: sua antirressonância abaixo de fr; 0: só o par ressonante fr² / (s² + 2 ζ fr s + fr²)</translation>
+    </message>
+    <message>
+        <source>Anti-res. damping</source>
+        <translation>Amort. antirress.</translation>
+    </message>
+    <message>
+        <source>Damping ratio of the anti-resonance, in [0, 1)</source>
+        <translation>Coeficiente de amortecimento da antirressonância, em [0, 1)</translation>
+    </message>
+    <message>
+        <source>Notch centre (Hz)</source>
+        <translation>Centro do notch (Hz)</translation>
+    </message>
+    <message>
+        <source>Notch on the error the PI reads, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: none. Digital: bilinear, prewarped at the centre, below the controller&apos;s Nyquist frequency</source>
+        <translation>Filtro notch no erro que o PI lê, (s² + 2 ζz w0 s + w0²) / (s² + 2 ζp w0 s + w0²); 0: nenhum. Digital: bilinear, com pré-distorção no centro, abaixo da frequência de Nyquist do controlador</translation>
+    </message>
+    <message>
+        <source>Notch width (Hz)</source>
+        <translation>Largura do notch (Hz)</translation>
+    </message>
+    <message>
+        <source>Bandwidth of the notch&apos;s pole pair: 2 ζp f0</source>
+        <translation>Largura de banda do par de polos do notch: 2 ζp f0</translation>
+    </message>
+    <message>
+        <source>Notch depth (dB)</source>
+        <translation>Profundidade do notch (dB)</translation>
+    </message>
+    <message>
+        <source>Attenuation at the centre, in (0, 120] dB</source>
+        <translation>Atenuação no centro, em (0, 120] dB</translation>
+    </message>
+    <message>
+        <source>Notch at the mode</source>
+        <translation>Notch no modo</translation>
+    </message>
+    <message>
+        <source>Centre on the mode, as deep as its peak (6 to 40 dB) and four half-power bandwidths wide</source>
+        <translation>Centrado no modo, tão profundo quanto seu pico (6 a 40 dB) e com quatro larguras de banda de meia potência</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>Input shaper on both axes&apos; reference: ZV, ZVD, ZVDD (Singer and Seering), MZV (Klipper), EI and the multi-hump EI (Singhose et al.)</source>
+        <translation>Modelador de entrada na referência dos dois eixos: ZV, ZVD, ZVDD (Singer e Seering), MZV (Klipper), EI e o EI de várias corcovas (Singhose et al.)</translation>
+    </message>
+    <message>
+        <source>Input shaper</source>
+        <translation>Modelador de entrada</translation>
+    </message>
+    <message>
+        <source>Shaper frequency (Hz)</source>
+        <translation>Frequência do modelador (Hz)</translation>
+    </message>
+    <message>
+        <source>The mode the shaper is designed for; acts on the reference at the trajectory&apos;s step, so the controller&apos;s period does not limit it</source>
+        <translation>O modo para o qual o modelador é projetado; atua na referência no passo da trajetória, então o período do controlador não o limita</translation>
+    </message>
+    <message>
+        <source>Shaper damping</source>
+        <translation>Amortecimento do modelador</translation>
+    </message>
+    <message>
+        <source>The damping ratio it is designed for, [0, 1)</source>
+        <translation>O coeficiente de amortecimento para o qual é projetado, [0, 1)</translation>
+    </message>
+    <message>
+        <source>Shaper at the mode</source>
+        <translation>Modelador no modo</translation>
+    </message>
+    <message>
+        <source>Design the shaper for this axis&apos; mode (ZV unless a type is chosen)</source>
+        <translation>Projetar o modelador para o modo deste eixo (ZV, a menos que um tipo seja escolhido)</translation>
+    </message>
+    <message>
+        <source>Recommend</source>
+        <translation>Recomendar</translation>
+    </message>
+    <message>
+        <source>Klipper&apos;s choice of shaper and frequency for this mode: the least vibration left for the smoothing, and the acceleration it allows</source>
+        <translation>A escolha do Klipper de modelador e frequência para este modo: a menor vibração restante para a suavização, e a aceleração que ela permite</translation>
+    </message>
+    <message>
+        <source>From a log…</source>
+        <translation>De um registro…</translation>
+    </message>
+    <message>
+        <source>Klipper&apos;s choice from an accelerometer log (#time,accel_x,accel_y,accel_z), as calibrate_shaper.py makes it</source>
+        <translation>A escolha do Klipper a partir de um registro de acelerômetro (#time,accel_x,accel_y,accel_z), como o calibrate_shaper.py a faz</translation>
+    </message>
+    <message>
+        <source>the %1 Hz mode</source>
+        <translation>o modo de %1 Hz</translation>
+    </message>
+    <message>
+        <source>No recommendation: %1</source>
+        <translation>Sem recomendação: %1</translation>
+    </message>
+    <message>
+        <source>Accelerometer log</source>
+        <translation>Registro de acelerômetro</translation>
+    </message>
+    <message>
+        <source>Klipper CSV (*.csv);;All files (*)</source>
+        <translation>CSV do Klipper (*.csv);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>no flexible mode to tune the shaper to</source>
+        <translation>nenhum modo flexível para sintonizar o modelador</translation>
+    </message>
+    <message>
+        <source>A pole-placement axis&apos; ARX model holds whatever mode its data showed: identify it from a log that excites the mode.</source>
+        <translation>O modelo ARX de um eixo por alocação de polos contém o modo que seus dados mostraram: identifique-o a partir de um registro que excite o modo.</translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s pid has no notch stage: the notch is offered on Guillemin–Truxal axes.</source>
+        <translation>O pid do LinuxCNC não tem estágio notch: o notch é oferecido em eixos Guillemin–Truxal.</translation>
+    </message>
+    <message>
+        <source>Klipper&apos;s choice for %1: %2 at %3 Hz, %4 % vibration left, smoothing %5 mm, max accel %6 mm/s²</source>
+        <translation>Escolha do Klipper para %1: %2 em %3 Hz, %4 % de vibração restante, suavização %5 mm, acel. máx %6 mm/s²</translation>
+    </message>
+    <message>
+        <source>mode %1 Hz, ζ %2</source>
+        <translation>modo %1 Hz, ζ %2</translation>
+    </message>
+    <message>
+        <source>notch %1 Hz, %2 dB</source>
+        <translation>notch %1 Hz, %2 dB</translation>
+    </message>
+    <message>
+        <source>%1 shaper at %2 Hz</source>
+        <translation>modelador %1 em %2 Hz</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Mode ●</source>
+        <translation>Modo ●</translation>
+    </message>
+    <message>
+        <source>Flexible mode and notch: none (the rigid table)</source>
+        <translation>Modo flexível e notch: nenhum (mesa rígida)</translation>
+    </message>
+    <message>
+        <source>Flexible mode and notch: %1</source>
+        <translation>Modo flexível e notch: %1</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::FrictionCurveDialog</name>
+    <message>
+        <source>Friction curve from a jog log</source>
+        <translation>Curva de atrito de um registro de jog</translation>
+    </message>
+    <message>
+        <source>&amp;Open log…</source>
+        <translation>&amp;Abrir registro…</translation>
+    </message>
+    <message>
+        <source>No log: run xytune-cli excite --signal jog, or log jogs from the machine (time, reference, position, command)</source>
+        <translation>Nenhum registro: execute xytune-cli excite --signal jog, ou registre jogs da máquina (tempo, referência, posição, comando)</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Tempo (s)</translation>
+    </message>
+    <message>
+        <source>Reference (mm)</source>
+        <translation>Referência (mm)</translation>
+    </message>
+    <message>
+        <source>Position (mm)</source>
+        <translation>Posição (mm)</translation>
+    </message>
+    <message>
+        <source>Command (V)</source>
+        <translation>Comando (V)</translation>
+    </message>
+    <message>
+        <source>velocity (mm/s)</source>
+        <translation>velocidade (mm/s)</translation>
+    </message>
+    <message>
+        <source>steady command (V)</source>
+        <translation>comando em regime (V)</translation>
+    </message>
+    <message>
+        <source>jogs (mean ± 1 sd)</source>
+        <translation>jogs (média ± 1 dp)</translation>
+    </message>
+    <message>
+        <source>fitted curve</source>
+        <translation>curva ajustada</translation>
+    </message>
+    <message>
+        <source>&amp;Use for the current axis</source>
+        <translation>&amp;Usar para o eixo atual</translation>
+    </message>
+    <message>
+        <source>Open a jog log</source>
+        <translation>Abrir um registro de jog</translation>
+    </message>
+    <message>
+        <source>Experiment logs (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
+        <translation>Registros de ensaio (*.csv *.tsv *.txt *.lvm *.mat);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>%1: %2 columns, %3 rows</source>
+        <translation>%1: %2 colunas, %3 linhas</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>tempo</translation>
+    </message>
+    <message>
+        <source>reference</source>
+        <translation>referência</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>posição</translation>
+    </message>
+    <message>
+        <source>command</source>
+        <translation>comando</translation>
+    </message>
+    <message>
+        <source>Coulomb %1; slope %2 (the model&apos;s own a2/k0: %3 V per mm/s, so %4 beyond it)</source>
+        <translation>Coulomb %1; inclinação %2 (o a2/k0 do próprio modelo: %3 V por mm/s, portanto %4 além dele)</translation>
+    </message>
+    <message>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <source>V per mm/s</source>
+        <translation>V por mm/s</translation>
+    </message>
+    <message>
+        <source>; static %1, Stribeck velocity %2</source>
+        <translation>; estático %1, velocidade de Stribeck %2</translation>
+    </message>
+    <message>
+        <source>mm/s</source>
+        <translation>mm/s</translation>
+    </message>
+    <message>
+        <source>. %1 jogs, residual sd %2 V.</source>
+        <translation>. %1 jogs, dp do resíduo %2 V.</translation>
+    </message>
+    <message>
+        <source>The log&apos;s column of the %1</source>
+        <translation>A coluna do registro para %1</translation>
+    </message>
+    <message>
+        <source>The Stribeck curve: each jog&apos;s steady command (V, mean ± one standard deviation over its cruise) against its velocity (mm/s), and the fitted friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</source>
+        <translation>A curva de Stribeck: o comando em regime de cada jog (V, média ± um desvio-padrão no trecho de velocidade constante) em função da sua velocidade (mm/s), e a curva de atrito ajustada sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</translation>
+    </message>
+    <message>
+        <source>Read a jog log (CSV with time, reference, position and command columns) and estimate the friction levels</source>
+        <translation>Ler um registro de jog (CSV com colunas de tempo, referência, posição e comando) e estimar os níveis de atrito</translation>
+    </message>
+    <message>
+        <source>Set the estimated levels as the current axis&apos; table friction (one undoable step)</source>
+        <translation>Definir os níveis estimados como o atrito da mesa do eixo atual (um passo que pode ser desfeito)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::FrictionEditor</name>
+    <message>
+        <source>Friction and backlash</source>
+        <translation>Atrito e folga</translation>
+    </message>
+    <message>
+        <source>Coulomb (V)</source>
+        <translation>Coulomb (V)</translation>
+    </message>
+    <message>
+        <source>Coulomb friction Fc in volts of equivalent command: what the axis needs beyond its linear model to keep sliding</source>
+        <translation>Atrito de Coulomb Fc em volts de comando equivalente: o que o eixo precisa além de seu modelo linear para continuar deslizando</translation>
+    </message>
+    <message>
+        <source>Static (V)</source>
+        <translation>Estático (V)</translation>
+    </message>
+    <message>
+        <source>Static (breakaway) level Fs in volts; 0 takes the Coulomb level (no Stribeck dip)</source>
+        <translation>Nível estático (de desprendimento) Fs em volts; 0 usa o nível de Coulomb (sem a queda de Stribeck)</translation>
+    </message>
+    <message>
+        <source>Stribeck velocity (mm/s)</source>
+        <translation>Velocidade de Stribeck (mm/s)</translation>
+    </message>
+    <message>
+        <source>vs of f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): how fast the friction falls from Fs to Fc</source>
+        <translation>vs de f(v) = sign(v) (Fc + (Fs - Fc) exp(-(v/vs)²)): quão rápido o atrito cai de Fs para Fc</translation>
+    </message>
+    <message>
+        <source>Viscous (V per mm/s)</source>
+        <translation>Viscoso (V por mm/s)</translation>
+    </message>
+    <message>
+        <source>Viscous friction beyond the model&apos;s own damping (a2/k0 already holds it): 0 by default</source>
+        <translation>Atrito viscoso além do amortecimento do próprio modelo (a2/k0 já o contém): 0 por padrão</translation>
+    </message>
+    <message>
+        <source>Backlash (mm)</source>
+        <translation>Folga (mm)</translation>
+    </message>
+    <message>
+        <source>Play between motor and table: the table stays while the motor crosses the gap</source>
+        <translation>Folga entre motor e mesa: a mesa fica parada enquanto o motor atravessa a folga</translation>
+    </message>
+    <message>
+        <source>Amplifier deadband (V)</source>
+        <translation>Zona morta do amplificador (V)</translation>
+    </message>
+    <message>
+        <source>|u| below it gives no output; beyond it the amplifier gives u - d sign(u)</source>
+        <translation>|u| abaixo dela não dá saída; acima dela o amplificador dá u - d sign(u)</translation>
+    </message>
+    <message>
+        <source>the faster pole</source>
+        <translation>o polo mais rápido</translation>
+    </message>
+    <message>
+        <source>the slower pole</source>
+        <translation>o polo mais lento</translation>
+    </message>
+    <message>
+        <source>Which root of s² + a1 s + a2 is the drive&apos;s electrical lag; the other is the moving mass, where the friction acts</source>
+        <translation>Qual raiz de s² + a1 s + a2 é o atraso elétrico do acionamento; a outra é a massa em movimento, onde o atrito atua</translation>
+    </message>
+    <message>
+        <source>Electrical lag</source>
+        <translation>Atraso elétrico</translation>
+    </message>
+    <message>
+        <source>Compensation (%)</source>
+        <translation>Compensação (%)</translation>
+    </message>
+    <message>
+        <source>Friction feedforward from the reference velocity, in percent of the Coulomb and viscous levels above (0: none)</source>
+        <translation>Pré-alimentação de atrito a partir da velocidade de referência, em porcentagem dos níveis de Coulomb e viscoso acima (0: nenhuma)</translation>
+    </message>
+    <message>
+        <source>Compensation band (mm/s)</source>
+        <translation>Faixa de compensação (mm/s)</translation>
+    </message>
+    <message>
+        <source>The Coulomb term ramps linearly across |v| &lt; band instead of jumping at v = 0</source>
+        <translation>O termo de Coulomb varia linearmente em |v| &lt; faixa em vez de saltar em v = 0</translation>
+    </message>
+    <message>
+        <source>A pole-placement axis&apos; ARX model has no moving mass: it takes the Coulomb level and the amplifier deadband, as a dead zone of its input</source>
+        <translation>O modelo ARX de um eixo por alocação de polos não tem massa em movimento: ele usa o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
+    </message>
+    <message>
+        <source>Coulomb %1 V</source>
+        <translation>Coulomb %1 V</translation>
+    </message>
+    <message>
+        <source>backlash %1 mm</source>
+        <translation>folga %1 mm</translation>
+    </message>
+    <message>
+        <source>deadband %1 V</source>
+        <translation>zona morta %1 V</translation>
+    </message>
+    <message>
+        <source>viscous</source>
+        <translation>viscoso</translation>
+    </message>
+    <message>
+        <source>compensated %1 %</source>
+        <translation>compensado %1 %</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Atrito</translation>
+    </message>
+    <message>
+        <source>Friction ●</source>
+        <translation>Atrito ●</translation>
+    </message>
+    <message>
+        <source>Friction and backlash: none (the linear table)</source>
+        <translation>Atrito e folga: nenhum (mesa linear)</translation>
+    </message>
+    <message>
+        <source>Friction and backlash: %1</source>
+        <translation>Atrito e folga: %1</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::HistogramPlot</name>
+    <message>
+        <source>Distribution</source>
+        <translation>Distribuição</translation>
+    </message>
+    <message>
+        <source>plants</source>
+        <translation>plantas</translation>
+    </message>
+    <message>
+        <source>limit</source>
+        <translation>limite</translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation>nominal</translation>
+    </message>
+    <message>
+        <source>Not computed yet.</source>
+        <translation>Ainda não calculado.</translation>
+    </message>
+    <message>
+        <source>No stable plant: no distribution.</source>
+        <translation>Nenhuma planta estável: sem distribuição.</translation>
+    </message>
+    <message>
+        <source>Histogram of the chosen figure (RMSE or max |e| in mm, max |u| in V) over the stable perturbed plants, with the specification&apos;s limit drawn.</source>
+        <translation>Histograma do valor escolhido (RMSE ou |e| máx em mm, |u| máx em V) sobre as plantas perturbadas estáveis, com o limite da especificação desenhado.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::IdentificationWindow</name>
+    <message>
+        <source>Identify a model from data</source>
+        <translation>Identificar um modelo a partir de dados</translation>
+    </message>
+    <message>
+        <source>Fit a model to see it here.</source>
+        <translation>Ajuste um modelo para vê-lo aqui.</translation>
+    </message>
+    <message>
+        <source>Load data…</source>
+        <translation>Carregar dados…</translation>
+    </message>
+    <message>
+        <source>(no file)</source>
+        <translation>(nenhum arquivo)</translation>
+    </message>
+    <message>
+        <source>Validation data…</source>
+        <translation>Dados de validação…</translation>
+    </message>
+    <message>
+        <source>(none: judged on the estimation data)</source>
+        <translation>(nenhum: avaliado nos dados de estimação)</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation>m</translation>
+    </message>
+    <message>
+        <source>Range of the record to use; 0 to 0 uses all of it</source>
+        <translation>Intervalo do registro a usar; 0 a 0 usa o registro inteiro</translation>
+    </message>
+    <message>
+        <source>Remove trends</source>
+        <translation>Remover tendências</translation>
+    </message>
+    <message>
+        <source>Keep every n-th sample after an anti-alias filter (1: all)</source>
+        <translation>Manter uma amostra a cada n após um filtro anti-aliasing (1: todas)</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>Dados</translation>
+    </message>
+    <message>
+        <source>Input (V):</source>
+        <translation>Entrada (V):</translation>
+    </message>
+    <message>
+        <source>Output:</source>
+        <translation>Saída:</translation>
+    </message>
+    <message>
+        <source>Output unit:</source>
+        <translation>Unidade da saída:</translation>
+    </message>
+    <message>
+        <source>Time:</source>
+        <translation>Tempo:</translation>
+    </message>
+    <message>
+        <source>Ts:</source>
+        <translation>Ts:</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>a</translation>
+    </message>
+    <message>
+        <source>Range:</source>
+        <translation>Intervalo:</translation>
+    </message>
+    <message>
+        <source>Decimate:</source>
+        <translation>Decimar:</translation>
+    </message>
+    <message>
+        <source>ARX</source>
+        <translation>ARX</translation>
+    </message>
+    <message>
+        <source>OE</source>
+        <translation>OE</translation>
+    </message>
+    <message>
+        <source>BJ</source>
+        <translation>BJ</translation>
+    </message>
+    <message>
+        <source>GT3 continuous</source>
+        <translation>GT3 contínuo</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modelo</translation>
+    </message>
+    <message>
+        <source>Structure:</source>
+        <translation>Estrutura:</translation>
+    </message>
+    <message>
+        <source>Max iterations:</source>
+        <translation>Iterações máx:</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Ajustar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Load a record of the axis (input in V, output position) to begin.</source>
+        <translation>Carregue um registro do eixo (entrada em V, saída posição) para começar.</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Fit % est</source>
+        <translation>Ajuste % est</translation>
+    </message>
+    <message>
+        <source>Fit % val</source>
+        <translation>Ajuste % val</translation>
+    </message>
+    <message>
+        <source>AIC</source>
+        <translation>AIC</translation>
+    </message>
+    <message>
+        <source>Residuals</source>
+        <translation>Resíduos</translation>
+    </message>
+    <message>
+        <source>NMP</source>
+        <translation>FNM</translation>
+    </message>
+    <message>
+        <source>The selected model&apos;s parameters, each ± one standard deviation</source>
+        <translation>Os parâmetros do modelo selecionado, cada um ± um desvio padrão</translation>
+    </message>
+    <message>
+        <source>Use for axis X</source>
+        <translation>Usar para o eixo X</translation>
+    </message>
+    <message>
+        <source>Use for axis Y</source>
+        <translation>Usar para o eixo Y</translation>
+    </message>
+    <message>
+        <source>Response → X</source>
+        <translation>Resposta → X</translation>
+    </message>
+    <message>
+        <source>Response → Y</source>
+        <translation>Resposta → Y</translation>
+    </message>
+    <message>
+        <source>Welch&apos;s estimate of y/u (Hann window, 50 % overlap) with its coherence, drawn over the axis&apos; model in the Vibration view</source>
+        <translation>Estimativa de Welch de y/u (janela de Hann, 50 % de sobreposição) com sua coerência, desenhada sobre o modelo do eixo na vista Vibração</translation>
+    </message>
+    <message>
+        <source>Load experiment data</source>
+        <translation>Carregar dados de ensaio</translation>
+    </message>
+    <message>
+        <source>Experiment files (*.csv *.tsv *.txt *.lvm *.mat);;All files (*)</source>
+        <translation>Arquivos de ensaio (*.csv *.tsv *.txt *.lvm *.mat);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>Load validation data</source>
+        <translation>Carregar dados de validação</translation>
+    </message>
+    <message>
+        <source>measured y</source>
+        <translation>y medido</translation>
+    </message>
+    <message>
+        <source>simulated ŷ (model)</source>
+        <translation>ŷ simulado (modelo)</translation>
+    </message>
+    <message>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
+    </message>
+    <message>
+        <source>position (mm)</source>
+        <translation>posição (mm)</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Saída</translation>
+    </message>
+    <message>
+        <source>residual autocorr.</source>
+        <translation>autocorr. do resíduo</translation>
+    </message>
+    <message>
+        <source>lag (samples)</source>
+        <translation>atraso (amostras)</translation>
+    </message>
+    <message>
+        <source>input–residual corr.</source>
+        <translation>corr. entrada–resíduo</translation>
+    </message>
+    <message>
+        <source>Poles and zeros</source>
+        <translation>Polos e zeros</translation>
+    </message>
+    <message>
+        <source>%1: %2 columns, %3 rows%4. Pick the columns and press Fit.</source>
+        <translation>%1: %2 colunas, %3 linhas%4. Escolha as colunas e clique em Ajustar.</translation>
+    </message>
+    <message>
+        <source>, Ts = %1 s stated by the file</source>
+        <translation>, Ts = %1 s informado pelo arquivo</translation>
+    </message>
+    <message>
+        <source>The candidates fitted to the previous file were cleared.</source>
+        <translation>Os candidatos ajustados ao arquivo anterior foram removidos.</translation>
+    </message>
+    <message>
+        <source>These columns cannot be used yet: %1</source>
+        <translation>Estas colunas ainda não podem ser usadas: %1</translation>
+    </message>
+    <message>
+        <source>No data loaded.</source>
+        <translation>Nenhum dado carregado.</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Não é possível ler %1: %2</translation>
+    </message>
+    <message>
+        <source>Validation data: %1 (%2 rows).</source>
+        <translation>Dados de validação: %1 (%2 linhas).</translation>
+    </message>
+    <message>
+        <source>No model: the data could not be used.</source>
+        <translation>Nenhum modelo: os dados não puderam ser usados.</translation>
+    </message>
+    <message>
+        <source>Cannot fit: %1</source>
+        <translation>Não é possível ajustar: %1</translation>
+    </message>
+    <message>
+        <source>%1: the first sample %2 mm was subtracted (the plant starts at rest at 0); the fit estimates where the table stood</source>
+        <translation>%1: a primeira amostra %2 mm foi subtraída (a planta parte do repouso em 0); o ajuste estima onde a mesa estava</translation>
+    </message>
+    <message>
+        <source>Fitting %1 to %2 samples…</source>
+        <translation>Ajustando %1 a %2 amostras…</translation>
+    </message>
+    <message>
+        <source>No frequency response: load a record first</source>
+        <translation>Sem resposta em frequência: carregue um registro primeiro</translation>
+    </message>
+    <message>
+        <source>Frequency response of %1: %2 averages of %3 samples, drawn in the Vibration view of axis %4</source>
+        <translation>Resposta em frequência de %1: %2 médias de %3 amostras, desenhada na vista Vibração do eixo %4</translation>
+    </message>
+    <message>
+        <source>No frequency response: %1</source>
+        <translation>Sem resposta em frequência: %1</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Cancelando…</translation>
+    </message>
+    <message>
+        <source>No model: the fit failed.</source>
+        <translation>Nenhum modelo: o ajuste falhou.</translation>
+    </message>
+    <message>
+        <source>The fit failed: %1</source>
+        <translation>O ajuste falhou: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source> (%1)</source>
+        <translation> (%1)</translation>
+    </message>
+    <message>
+        <source>Estimated initial position: %1 mm</source>
+        <translation>Posição inicial estimada: %1 mm</translation>
+    </message>
+    <message>
+        <source>No estimate: %1</source>
+        <translation>Sem estimativa: %1</translation>
+    </message>
+    <message>
+        <source>GT3</source>
+        <translation>GT3</translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation>aprovado</translation>
+    </message>
+    <message>
+        <source>fail</source>
+        <translation>reprovado</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sim</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>não</translation>
+    </message>
+    <message>
+        <source>Pole-zero map (z-plane)</source>
+        <translation>Mapa de polos e zeros (plano z)</translation>
+    </message>
+    <message>
+        <source>Select a candidate to see it here.</source>
+        <translation>Selecione um candidato para vê-lo aqui.</translation>
+    </message>
+    <message>
+        <source>Parameters (± 1 SD): %1</source>
+        <translation>Parâmetros (± 1 DP): %1</translation>
+    </message>
+    <message>
+        <source>residual autocorr. (%1)</source>
+        <translation>autocorr. do resíduo (%1)</translation>
+    </message>
+    <message>
+        <source>input–residual corr. (%1)</source>
+        <translation>corr. entrada–resíduo (%1)</translation>
+    </message>
+    <message>
+        <source>Pole-zero map (z-plane): a zero outside the unit circle (NMP)</source>
+        <translation>Mapa de polos e zeros (plano z): um zero fora do círculo unitário (FNM)</translation>
+    </message>
+    <message>
+        <source>A pole at z = 1: the model integrates, as the position of a motor axis does (every other pole is inside the unit circle).</source>
+        <translation>Um polo em z = 1: o modelo integra, como a posição de um eixo motorizado (todos os outros polos estão dentro do círculo unitário).</translation>
+    </message>
+    <message>
+        <source>A pole is on or outside the unit circle: the model is unstable.</source>
+        <translation>Um polo está sobre ou fora do círculo unitário: o modelo é instável.</translation>
+    </message>
+    <message>
+        <source>Pick the columns and press Fit.</source>
+        <translation>Escolha as colunas e clique em Ajustar.</translation>
+    </message>
+    <message>
+        <source>The record: %1 samples, %2 s to %3 s, Ts = %4 s (no model yet)</source>
+        <translation>O registro: %1 amostras, %2 s a %3 s, Ts = %4 s (ainda sem modelo)</translation>
+    </message>
+    <message>
+        <source>The record cannot be drawn: %1</source>
+        <translation>O registro não pode ser desenhado: %1</translation>
+    </message>
+    <message>
+        <source>Use the identified %1 for axis %2</source>
+        <translation>Usar o %1 identificado para o eixo %2</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).</source>
+        <translation>O eixo %1 agora usa o %2 identificado (Editar › Desfazer restaura a planta anterior).</translation>
+    </message>
+    <message>
+        <source>Cannot use this model: %1</source>
+        <translation>Não é possível usar este modelo: %1</translation>
+    </message>
+    <message>
+        <source>(sample time)</source>
+        <translation>(período de amostragem)</translation>
+    </message>
+    <message>
+        <source>Remove a straight line fitted by least squares from the input and the output before the fit (else their means)</source>
+        <translation>Remover da entrada e da saída uma reta ajustada por mínimos quadrados antes do ajuste (senão, suas médias)</translation>
+    </message>
+    <message>
+        <source>Read a logged experiment: CSV/TSV, LabVIEW .lvm or MATLAB .mat, with the input in V and the position</source>
+        <translation>Ler um ensaio registrado: CSV/TSV, LabVIEW .lvm ou MATLAB .mat, com a entrada em V e a posição</translation>
+    </message>
+    <message>
+        <source>A second record of the same axis on which the candidates&apos; fit is judged (else on the estimation data)</source>
+        <translation>Um segundo registro do mesmo eixo no qual o ajuste dos candidatos é avaliado (senão, nos dados de estimação)</translation>
+    </message>
+    <message>
+        <source>The column of the command u (V) sent to the amplifier</source>
+        <translation>A coluna do comando u (V) enviado ao amplificador</translation>
+    </message>
+    <message>
+        <source>The column of the measured position y</source>
+        <translation>A coluna da posição medida y</translation>
+    </message>
+    <message>
+        <source>The column of the time (s), or none: the sample time Ts below</source>
+        <translation>A coluna do tempo (s), ou nenhuma: o período de amostragem Ts abaixo</translation>
+    </message>
+    <message>
+        <source>Sample time Ts (s) of the record when it has no time column</source>
+        <translation>Período de amostragem Ts (s) do registro quando ele não tem coluna de tempo</translation>
+    </message>
+    <message>
+        <source>The unit of the output column: mm, or m (converted to mm)</source>
+        <translation>A unidade da coluna de saída: mm, ou m (convertido para mm)</translation>
+    </message>
+    <message>
+        <source>ARX: A y = B u + e by least squares; OE: y = B/F u + e and BJ: y = B/F u + C/D e by prediction error (Levenberg–Marquardt); GT3: Braga et al.&apos;s k0/(s³ + a1 s² + a2 s) fitted to the output</source>
+        <translation>ARX: A y = B u + e por mínimos quadrados; OE: y = B/F u + e e BJ: y = B/F u + C/D e por erro de predição (Levenberg–Marquardt); GT3: o k0/(s³ + a1 s² + a2 s) de Braga et al. ajustado à saída</translation>
+    </message>
+    <message>
+        <source>Order %1 of the model: na, nb, nc, nd, nf the numbers of coefficients of A, B, C, D, F; nk the input delay in samples</source>
+        <translation>Ordem %1 do modelo: na, nb, nc, nd, nf são os números de coeficientes de A, B, C, D, F; nk é o atraso da entrada em amostras</translation>
+    </message>
+    <message>
+        <source>The most Levenberg–Marquardt iterations of an OE, BJ or GT3 fit before it stops with the best estimate so far</source>
+        <translation>O número máximo de iterações de Levenberg–Marquardt de um ajuste OE, BJ ou GT3 antes que ele pare com a melhor estimativa até então</translation>
+    </message>
+    <message>
+        <source>Estimate the model of the chosen structure and orders; it is added to the candidates with its fit, AIC and residual tests</source>
+        <translation>Estimar o modelo com a estrutura e as ordens escolhidas; ele é adicionado aos candidatos com seu ajuste, AIC e testes de resíduos</translation>
+    </message>
+    <message>
+        <source>Stop the fit running</source>
+        <translation>Interromper o ajuste em andamento</translation>
+    </message>
+    <message>
+        <source>Make the selected model axis X&apos;s plant (an undoable step): GT3 as the Guillemin–Truxal plant, ARX/OE/BJ as the pole-placement model</source>
+        <translation>Tornar o modelo selecionado a planta do eixo X (um passo que pode ser desfeito): GT3 como planta de Guillemin–Truxal, ARX/OE/BJ como modelo da alocação de polos</translation>
+    </message>
+    <message>
+        <source>Make the selected model axis Y&apos;s plant (an undoable step)</source>
+        <translation>Tornar o modelo selecionado a planta do eixo Y (um passo que pode ser desfeito)</translation>
+    </message>
+    <message>
+        <source>The measured output y (mm) against time (s) and the selected model&apos;s simulated output ŷ from the same input</source>
+        <translation>A saída medida y (mm) em função do tempo (s) e a saída simulada ŷ do modelo selecionado a partir da mesma entrada</translation>
+    </message>
+    <message>
+        <source>The residuals&apos; autocorrelation and their cross-correlation with the input against the lag, with the 99 % confidence band of white, independent residuals</source>
+        <translation>A autocorrelação dos resíduos e sua correlação cruzada com a entrada em função do atraso, com a faixa de confiança de 99 % de resíduos brancos e independentes</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ImplementationEditor</name>
+    <message>
+        <source>Computation delay: the command computed at sample k is applied at k + delay</source>
+        <translation>Atraso de cálculo: o comando calculado na amostra k é aplicado em k + atraso</translation>
+    </message>
+    <message>
+        <source>Encoder resolution in mm per count; 0 = ideal (no quantization)</source>
+        <translation>Resolução do encoder em mm por contagem; 0 = ideal (sem quantização)</translation>
+    </message>
+    <message>
+        <source>DAC resolution over ±umax; 0 = ideal</source>
+        <translation>Resolução do DAC em ±umax; 0 = ideal</translation>
+    </message>
+    <message>
+        <source>clamping</source>
+        <translation>grampeamento</translation>
+    </message>
+    <message>
+        <source>back-calculation</source>
+        <translation>retrocálculo</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>Anti-windup</source>
+        <translation>Anti-windup</translation>
+    </message>
+    <message>
+        <source>How the digital PI&apos;s integrator is kept from winding up while u is clipped: clamping (conditional integration) is what ships</source>
+        <translation>Como o integrador do PI digital é impedido de acumular enquanto u está limitado: o grampeamento (integração condicional) é o que se usa na prática</translation>
+    </message>
+    <message>
+        <source>Back-calculation tracking time Tt (s); 0 = Ti = kp/ki</source>
+        <translation>Tempo de rastreamento Tt do retrocálculo (s); 0 = Ti = kp/ki</translation>
+    </message>
+    <message>
+        <source>Delay (samples)</source>
+        <translation>Atraso (amostras)</translation>
+    </message>
+    <message>
+        <source>Encoder (mm/count)</source>
+        <translation>Encoder (mm/contagem)</translation>
+    </message>
+    <message>
+        <source>DAC bits</source>
+        <translation>Bits do DAC</translation>
+    </message>
+    <message>
+        <source>Tracking time (s)</source>
+        <translation>Tempo de rastreamento (s)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::MainWindow</name>
+    <message>
+        <source>XY Tune</source>
+        <translation>XY Tune</translation>
+    </message>
+    <message>
+        <source>Picking a gain sets kp and ωn of a Guillemin–Truxal axis, or P, I and D of a PID; this axis uses %1.</source>
+        <translation>Escolher um ganho define kp e ωn de um eixo Guillemin–Truxal, ou P, I e D de um PID; este eixo usa %1.</translation>
+    </message>
+    <message>
+        <source>Loop gain %1 applied: P, I and D scaled</source>
+        <translation>Ganho de malha %1 aplicado: P, I e D escalados</translation>
+    </message>
+    <message>
+        <source>Loop gain %1 applied: kp and ωn scaled</source>
+        <translation>Ganho de malha %1 aplicado: kp e ωn escalados</translation>
+    </message>
+    <message>
+        <source>Loop gain %1 of the design before the drag applied</source>
+        <translation>Ganho de malha %1 do projeto anterior ao arraste aplicado</translation>
+    </message>
+    <message>
+        <source>Dragging a pole sets the loop gain of a Guillemin–Truxal axis or a PID.</source>
+        <translation>Arrastar um polo define o ganho de malha de um eixo Guillemin–Truxal ou de um PID.</translation>
+    </message>
+    <message>
+        <source>The zero stays: %1</source>
+        <translation>O zero permanece: %1</translation>
+    </message>
+    <message>
+        <source>Zero moved to %1 %2 %3j</source>
+        <translation>Zero movido para %1 %2 %3j</translation>
+    </message>
+    <message>
+        <source>&amp;Root locus</source>
+        <translation>&amp;Lugar das raízes</translation>
+    </message>
+    <message>
+        <source>P&amp;arameter locus</source>
+        <translation>Lugar do p&amp;arâmetro</translation>
+    </message>
+    <message>
+        <source>&amp;Pole-zero</source>
+        <translation>&amp;Polos e zeros</translation>
+    </message>
+    <message>
+        <source>&amp;Bode</source>
+        <translation>&amp;Bode</translation>
+    </message>
+    <message>
+        <source>&amp;Nyquist</source>
+        <translation>&amp;Nyquist</translation>
+    </message>
+    <message>
+        <source>&amp;Vibration</source>
+        <translation>&amp;Vibração</translation>
+    </message>
+    <message>
+        <source>sweep ωn (kp fixed)</source>
+        <translation>varrer ωn (kp fixo)</translation>
+    </message>
+    <message>
+        <source>sweep kp (ωn fixed)</source>
+        <translation>varrer kp (ωn fixo)</translation>
+    </message>
+    <message>
+        <source>Swept parameter</source>
+        <translation>Parâmetro varrido</translation>
+    </message>
+    <message>
+        <source>&amp;Time</source>
+        <translation>&amp;Tempo</translation>
+    </message>
+    <message>
+        <source>Time response: the trajectory, the tracking error and the control signal</source>
+        <translation>Resposta no tempo: a trajetória, o erro de seguimento e o sinal de controle</translation>
+    </message>
+    <message>
+        <source>&amp;Step</source>
+        <translation>&amp;Degrau</translation>
+    </message>
+    <message>
+        <source>Step response of each axis against the specification&apos;s envelope</source>
+        <translation>Resposta ao degrau de cada eixo contra a envoltória da especificação</translation>
+    </message>
+    <message>
+        <source>&amp;XY contour</source>
+        <translation>Contorno &amp;XY</translation>
+    </message>
+    <message>
+        <source>error × </source>
+        <translation>erro × </translation>
+    </message>
+    <message>
+        <source>Contour error magnification</source>
+        <translation>Ampliação do erro de contorno</translation>
+    </message>
+    <message>
+        <source>Magnification of the contour error in the XY plot (as a ballbar plot)</source>
+        <translation>Ampliação do erro de contorno no gráfico XY (como em um gráfico de ballbar)</translation>
+    </message>
+    <message>
+        <source>&amp;Design space</source>
+        <translation>&amp;Espaço de projeto</translation>
+    </message>
+    <message>
+        <source>R&amp;obustness</source>
+        <translation>R&amp;obustez</translation>
+    </message>
+    <message>
+        <source>Metrics</source>
+        <translation>Métricas</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Equações</translation>
+    </message>
+    <message>
+        <source>Trajectory</source>
+        <translation>Trajetória</translation>
+    </message>
+    <message>
+        <source>Axis %1</source>
+        <translation>Eixo %1</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Eixo</translation>
+    </message>
+    <message>
+        <source>Design</source>
+        <translation>Projeto</translation>
+    </message>
+    <message>
+        <source>Design method</source>
+        <translation>Método de projeto</translation>
+    </message>
+    <message>
+        <source>Guillemin–Truxal PI (continuous)</source>
+        <translation>PI de Guillemin–Truxal (contínuo)</translation>
+    </message>
+    <message>
+        <source>Pole placement + ZPETC (discrete)</source>
+        <translation>Alocação de polos + ZPETC (discreto)</translation>
+    </message>
+    <message>
+        <source>ω&amp;n</source>
+        <translation>ω&amp;n</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <source>k&amp;p</source>
+        <translation>k&amp;p</translation>
+    </message>
+    <message>
+        <source>V/m</source>
+        <translation>V/m</translation>
+    </message>
+    <message>
+        <source>Axis %1 now uses %2; Edit › Undo switches back</source>
+        <translation>O eixo %1 agora usa %2; Editar › Desfazer volta atrás</translation>
+    </message>
+    <message>
+        <source>Axis %1 now uses pole placement on Patrick, Ishak and Adnan&apos;s ARX model (the pole-placement plant, not the Guillemin–Truxal one); Edit › Undo switches back</source>
+        <translation>O eixo %1 agora usa alocação de polos no modelo ARX de Patrick, Ishak e Adnan (a planta da alocação de polos, não a de Guillemin–Truxal); Editar › Desfazer volta atrás</translation>
+    </message>
+    <message>
+        <source>Axis %1 now uses pole placement on its ARX model; Edit › Undo switches back</source>
+        <translation>O eixo %1 agora usa alocação de polos em seu modelo ARX; Editar › Desfazer volta atrás</translation>
+    </message>
+    <message>
+        <source>Axis %1 now uses the Guillemin–Truxal PI on its continuous plant; Edit › Undo switches back</source>
+        <translation>O eixo %1 agora usa o PI de Guillemin–Truxal em sua planta contínua; Editar › Desfazer volta atrás</translation>
+    </message>
+    <message>
+        <source>Actuator and digital controller</source>
+        <translation>Atuador e controlador digital</translation>
+    </message>
+    <message>
+        <source>|u| limit (V)</source>
+        <translation>Limite de |u| (V)</translation>
+    </message>
+    <message>
+        <source>Tustin</source>
+        <translation>Tustin</translation>
+    </message>
+    <message>
+        <source>backward Euler</source>
+        <translation>Euler regressivo</translation>
+    </message>
+    <message>
+        <source>PI discretization</source>
+        <translation>Discretização do PI</translation>
+    </message>
+    <message>
+        <source>Controller Ts (s)</source>
+        <translation>Ts do controlador (s)</translation>
+    </message>
+    <message>
+        <source>Digital implementation settings</source>
+        <translation>Configurações da implementação digital</translation>
+    </message>
+    <message>
+        <source>Delay, encoder, DAC and anti-windup of the digital controller</source>
+        <translation>Atraso, encoder, DAC e anti-windup do controlador digital</translation>
+    </message>
+    <message>
+        <source>Load preset %1</source>
+        <translation>Carregar predefinição %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>Sa&amp;ir</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Desfazer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Refazer</translation>
+    </message>
+    <message>
+        <source>&amp;Design</source>
+        <translation>&amp;Projeto</translation>
+    </message>
+    <message>
+        <source>&amp;Store snapshot...</source>
+        <translation>&amp;Guardar instantâneo...</translation>
+    </message>
+    <message>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <source>Store snapshot</source>
+        <translation>Guardar instantâneo</translation>
+    </message>
+    <message>
+        <source>Name of the snapshot:</source>
+        <translation>Nome do instantâneo:</translation>
+    </message>
+    <message>
+        <source>design %1</source>
+        <translation>projeto %1</translation>
+    </message>
+    <message>
+        <source>&amp;Compare designs...</source>
+        <translation>&amp;Comparar projetos...</translation>
+    </message>
+    <message>
+        <source>&amp;Identify from data...</source>
+        <translation>&amp;Identificar a partir de dados...</translation>
+    </message>
+    <message>
+        <source>F&amp;riction curve from a jog log...</source>
+        <translation>Curva de a&amp;trito de um registro de jog...</translation>
+    </message>
+    <message>
+        <source>Add &amp;feedforward from the model</source>
+        <translation>Adicionar pré-&amp;alimentação do modelo</translation>
+    </message>
+    <message>
+        <source>Feedforward of %1 from the model</source>
+        <translation>Pré-alimentação de %1 a partir do modelo</translation>
+    </message>
+    <message>
+        <source>No feedforward from the model</source>
+        <translation>Sem pré-alimentação a partir do modelo</translation>
+    </message>
+    <message>
+        <source>The plant&apos;s exact inverse as FF1, FF2, FF3: a Guillemin–Truxal axis becomes the same PI in LinuxCNC&apos;s units on the PID + feedforward method</source>
+        <translation>A inversa exata da planta como FF1, FF2, FF3: um eixo Guillemin–Truxal passa a ser o mesmo PI nas unidades do LinuxCNC no método PID + pré-alimentação</translation>
+    </message>
+    <message>
+        <source>&amp;Tune the PID...</source>
+        <translation>&amp;Sintonizar o PID...</translation>
+    </message>
+    <message>
+        <source>PI or PID gains from a crossover and phase margin, or from a simulated relay experiment (PID + feedforward axes)</source>
+        <translation>Ganhos PI ou PID a partir de uma frequência de cruzamento e margem de fase, ou de um ensaio de relé simulado (eixos PID + pré-alimentação)</translation>
+    </message>
+    <message>
+        <source>&amp;Overlay snapshot</source>
+        <translation>S&amp;obrepor instantâneo</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>E&amp;xibir</translation>
+    </message>
+    <message>
+        <source>Show the &amp;digital implementation</source>
+        <translation>Mostrar a implementação &amp;digital</translation>
+    </message>
+    <message>
+        <source>Overlay the loop as the firmware runs it on the time plots</source>
+        <translation>Sobrepor a malha como o firmware a executa nos gráficos no tempo</translation>
+    </message>
+    <message>
+        <source>Pole-zero map of the digital loop (&amp;z-plane)</source>
+        <translation>Mapa de polos e zeros da malha digital (plano &amp;z)</translation>
+    </message>
+    <message>
+        <source>&amp;Reset plot views</source>
+        <translation>&amp;Restaurar as vistas dos gráficos</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Aj&amp;uda</translation>
+    </message>
+    <message>
+        <source>&amp;About XY Tune</source>
+        <translation>&amp;Sobre o XY Tune</translation>
+    </message>
+    <message>
+        <source>About XY Tune</source>
+        <translation>Sobre o XY Tune</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Tuning workbench for XY coordinate-table position controllers.&lt;br&gt;GPL-3.0-or-later.</source>
+        <translation>&lt;b&gt;XY Tune&lt;/b&gt; %1&lt;br&gt;Bancada de sintonia de controladores de posição de mesas de coordenadas XY.&lt;br&gt;GPL-3.0-or-later.</translation>
+    </message>
+    <message>
+        <source>On its lines the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
+        <translation>Em suas linhas a malha acoplada é estável: raio espectral %1 no pior caso (direção %2°)</translation>
+    </message>
+    <message>
+        <source>Frozen at each direction the coupled loop is stable: spectral radius %1 at worst (direction %2°)</source>
+        <translation>Congelada em cada direção, a malha acoplada é estável: raio espectral %1 no pior caso (direção %2°)</translation>
+    </message>
+    <message>
+        <source>, beside a pole at z = 1 the contour never sees (the coupling&apos;s integral and the axes&apos; integrators sharing a constant voltage)</source>
+        <translation>, além de um polo em z = 1 que o contorno nunca vê (a integral do acoplamento e os integradores dos eixos dividindo uma tensão constante)</translation>
+    </message>
+    <message>
+        <source>; disk margin %1: ±%2 dB, ±%3°</source>
+        <translation>; margem de disco %1: ±%2 dB, ±%3°</translation>
+    </message>
+    <message>
+        <source>; at the %1 input: phase margin %2°</source>
+        <translation>; na entrada %1: margem de fase %2°</translation>
+    </message>
+    <message>
+        <source>Contour error max %1 mm (independent axes %2 mm).</source>
+        <translation>Erro de contorno máx %1 mm (eixos independentes %2 mm).</translation>
+    </message>
+    <message>
+        <source>Contour error max %1 mm (independent axes %2 mm). </source>
+        <translation>Erro de contorno máx %1 mm (eixos independentes %2 mm). </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>clamp</source>
+        <translation>grampeamento</translation>
+    </message>
+    <message>
+        <source>back-calc.</source>
+        <translation>retrocálc.</translation>
+    </message>
+    <message>
+        <source>no anti-windup</source>
+        <translation>sem anti-windup</translation>
+    </message>
+    <message>
+        <source>Implementation: %1, %2%3</source>
+        <translation>Implementação: %1, %2%3</translation>
+    </message>
+    <message>
+        <source>quantized</source>
+        <translation>quantizada</translation>
+    </message>
+    <message>
+        <source>ideal</source>
+        <translation>ideal</translation>
+    </message>
+    <message>
+        <source>, delay %1</source>
+        <translation>, atraso %1</translation>
+    </message>
+    <message>
+        <source>Encoder %1, DAC %2, anti-windup %3, computation delay %4 sample(s). Click to edit.</source>
+        <translation>Encoder %1, DAC %2, anti-windup %3, atraso de cálculo %4 amostra(s). Clique para editar.</translation>
+    </message>
+    <message>
+        <source>%1 mm/count</source>
+        <translation>%1 mm/contagem</translation>
+    </message>
+    <message>
+        <source>%1 bits</source>
+        <translation>%1 bits</translation>
+    </message>
+    <message>
+        <source>%1: invalid (%2)  </source>
+        <translation>%1: inválido (%2)  </translation>
+    </message>
+    <message>
+        <source>%1: UNSTABLE  </source>
+        <translation>%1: INSTÁVEL  </translation>
+    </message>
+    <message>
+        <source>%1: stable  </source>
+        <translation>%1: estável  </translation>
+    </message>
+    <message>
+        <source>| updated in %1 ms</source>
+        <translation>| atualizado em %1 ms</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Nenhum</translation>
+    </message>
+    <message>
+        <source>%1[*] — XY Tune</source>
+        <translation>%1[*] — XY Tune</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>sem título</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;System language</source>
+        <translation>Idioma do &amp;sistema</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>The language changes when XY Tune is started again.</source>
+        <translation>O idioma muda quando o XY Tune for iniciado novamente.</translation>
+    </message>
+    <message>
+        <source>The parameter the parameter locus sweeps over its slider&apos;s range, the other held at the design&apos;s value</source>
+        <translation>O parâmetro que o lugar do parâmetro varre na faixa do seu controle deslizante, com o outro mantido no valor do projeto</translation>
+    </message>
+    <message>
+        <source>How the current axis is controlled: Guillemin–Truxal PI (Braga et al.), pole placement + ZPETC (Patrick, Ishak and Adnan) or LinuxCNC&apos;s PID with command feedforward</source>
+        <translation>Como o eixo atual é controlado: PI de Guillemin–Truxal (Braga et al.), alocação de polos + ZPETC (Patrick, Ishak e Adnan) ou o PID do LinuxCNC com pré-alimentação do comando</translation>
+    </message>
+    <message>
+        <source>ωn (rad/s): the natural frequency of the 4th-order reference model G_R(s); the PI follows as f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al. Eq. 11–18)</source>
+        <translation>ωn (rad/s): a frequência natural do modelo de referência de 4ª ordem G_R(s); o PI decorre como f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al., Eq. 11–18)</translation>
+    </message>
+    <message>
+        <source>kp (V per model unit): the PI&apos;s proportional gain; with ωn it sets ki = kp ψ1 = ωn⁴/k0 and the reference model&apos;s f3 = kp k0/ωn³</source>
+        <translation>kp (V por unidade do modelo): o ganho proporcional do PI; junto com ωn ele define ki = kp ψ1 = ωn⁴/k0 e o f3 = kp k0/ωn³ do modelo de referência</translation>
+    </message>
+    <message>
+        <source>Actuator limit umax (V): every run clips the command to ±umax, and the anti-windup acts at it</source>
+        <translation>Limite do atuador umax (V): toda simulação limita o comando a ±umax, e o anti-windup atua nesse limite</translation>
+    </message>
+    <message>
+        <source>Controller sample time Ts (s) of the digital PI or PID: the digital implementation runs and the exports are at it</source>
+        <translation>Período de amostragem Ts (s) do controlador do PI ou PID digital: a implementação digital é simulada e as exportações são feitas nesse período</translation>
+    </message>
+    <message>
+        <source>How the PI kp + ki/s is discretized at the controller sample time: Tustin s = (2/Ts)(z − 1)/(z + 1), or backward Euler s = (z − 1)/(z Ts)</source>
+        <translation>Como o PI kp + ki/s é discretizado no período de amostragem do controlador: Tustin s = (2/Ts)(z − 1)/(z + 1), ou Euler regressivo s = (z − 1)/(z Ts)</translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;Guia do usuário</translation>
+    </message>
+    <message>
+        <source>&amp;Tutorials...</source>
+        <translation>&amp;Tutoriais...</translation>
+    </message>
+    <message>
+        <source>&amp;Command-line reference</source>
+        <translation>Referência da &amp;linha de comando</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::MethodParameterEditor</name>
+    <message>
+        <source>This method has no settings.</source>
+        <translation>Este método não tem configurações.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 .. %3 %4)</source>
+        <translation>%1 (%2 .. %3 %4)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2 to %3</source>
+        <translation>Definir %1 de %2 como %3</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::MetricsPanel</name>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>spec</source>
+        <translation>espec.</translation>
+    </message>
+    <message>
+        <source>RMSE (mm)</source>
+        <translation>RMSE (mm)</translation>
+    </message>
+    <message>
+        <source>max |e| (mm)</source>
+        <translation>máx |e| (mm)</translation>
+    </message>
+    <message>
+        <source>max |e| (%)</source>
+        <translation>máx |e| (%)</translation>
+    </message>
+    <message>
+        <source>max |u| (V)</source>
+        <translation>máx |u| (V)</translation>
+    </message>
+    <message>
+        <source>saturated (s)</source>
+        <translation>saturado (s)</translation>
+    </message>
+    <message>
+        <source>ITAE (mm·s²)</source>
+        <translation>ITAE (mm·s²)</translation>
+    </message>
+    <message>
+        <source>ZPETC gain (%)</source>
+        <translation>ganho do ZPETC (%)</translation>
+    </message>
+    <message>
+        <source>settle time (s)</source>
+        <translation>tempo de acomodação (s)</translation>
+    </message>
+    <message>
+        <source>final e (mm)</source>
+        <translation>e final (mm)</translation>
+    </message>
+    <message>
+        <source>overrun (mm)</source>
+        <translation>ultrapassagem (mm)</translation>
+    </message>
+    <message>
+        <source>settling 2 % (s)</source>
+        <translation>acomodação 2 % (s)</translation>
+    </message>
+    <message>
+        <source>overshoot (%)</source>
+        <translation>sobressinal (%)</translation>
+    </message>
+    <message>
+        <source>min ζ (z-plane)</source>
+        <translation>ζ mín (plano z)</translation>
+    </message>
+    <message>
+        <source>gain margin (dB)</source>
+        <translation>margem de ganho (dB)</translation>
+    </message>
+    <message>
+        <source>phase margin (°)</source>
+        <translation>margem de fase (°)</translation>
+    </message>
+    <message>
+        <source>delay margin (s)</source>
+        <translation>margem de atraso (s)</translation>
+    </message>
+    <message>
+        <source>Ms = max |S|</source>
+        <translation>Ms = máx |S|</translation>
+    </message>
+    <message>
+        <source>Tracking the trajectory</source>
+        <translation>Seguimento da trajetória</translation>
+    </message>
+    <message>
+        <source>Move and settle (point-to-point)</source>
+        <translation>Mover e acomodar (ponto a ponto)</translation>
+    </message>
+    <message>
+        <source>Unit step, as each axis runs</source>
+        <translation>Degrau unitário, como cada eixo o executa</translation>
+    </message>
+    <message>
+        <source>Digital implementation</source>
+        <translation>Implementação digital</translation>
+    </message>
+    <message>
+        <source>Loop margins (open loop L)</source>
+        <translation>Margens da malha (malha aberta L)</translation>
+    </message>
+    <message>
+        <source>Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the step of the feedback loop Kf·B/T alone.</source>
+        <translation>Guillemin–Truxal: o degrau de G_R(s), a malha fechada contínua. Alocação de polos: o degrau pré-visto pela pré-alimentação ZPETC e pela malha quando o ZPETC está ligado; senão, o degrau só da malha de realimentação Kf·B/T.</translation>
+    </message>
+    <message>
+        <source>The controller at its sample time with the hold, the encoder and DAC quantization, the limit, the anti-windup and the delay of the Digital implementation settings. An amber figure differs from the design&apos;s above by more than 5 %.</source>
+        <translation>O controlador no seu período de amostragem com o retentor, a quantização do encoder e do DAC, o limite, o anti-windup e o atraso das configurações da implementação digital. Um valor em âmbar difere do projeto acima em mais de 5 %.</translation>
+    </message>
+    <message>
+        <source>Metrics</source>
+        <translation>Métricas</translation>
+    </message>
+    <message>
+        <source>Why the specification fails</source>
+        <translation>Por que a especificação falha</translation>
+    </message>
+    <message>
+        <source>Relax the limits</source>
+        <translation>Relaxar os limites</translation>
+    </message>
+    <message>
+        <source>Contour error figures</source>
+        <translation>Valores do erro de contorno</translation>
+    </message>
+    <message>
+        <source>Warnings</source>
+        <translation>Avisos</translation>
+    </message>
+    <message>
+        <source>Maximum settling time (2 % band) of the unit step</source>
+        <translation>Tempo de acomodação máximo (faixa de 2 %) do degrau unitário</translation>
+    </message>
+    <message>
+        <source>Maximum |e| as a percentage of the travel</source>
+        <translation>|e| máximo como porcentagem do curso</translation>
+    </message>
+    <message>
+        <source>Maximum settle time after the end (tf) of a point-to-point move</source>
+        <translation>Tempo de acomodação máximo após o fim (tf) de um movimento ponto a ponto</translation>
+    </message>
+    <message>
+        <source>In-position window of a point-to-point move: |e| ≤ this (mm)</source>
+        <translation>Janela de posição de um movimento ponto a ponto: |e| ≤ este valor (mm)</translation>
+    </message>
+    <message>
+        <source>Minimum phase margin (PM, degrees) of the loop; 0 = none (the paper states none). 45–60° is the usual rule.</source>
+        <translation>Margem de fase mínima (MF, graus) da malha; 0 = nenhuma (o artigo não define). 45–60° é a regra usual.</translation>
+    </message>
+    <message>
+        <source>Minimum gain margin (GM, dB) of the loop; 0 = none. 6 dB is the usual rule.</source>
+        <translation>Margem de ganho mínima (MG, dB) da malha; 0 = nenhuma. 6 dB é a regra usual.</translation>
+    </message>
+    <message>
+        <source>Every Guillemin–Truxal design overshoots a little on a step (its reference model is type 2), so 0 % fails them all.</source>
+        <translation>Todo projeto Guillemin–Truxal tem um pequeno sobressinal ao degrau (seu modelo de referência é do tipo 2), então 0 % reprova todos.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Specification&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Especificação&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>The limits of the spec column above: each figure is judged against them</source>
+        <translation>Os limites da coluna espec. acima: cada valor é avaliado em relação a eles</translation>
+    </message>
+    <message>
+        <source>settling ≤ s</source>
+        <translation>acomodação ≤ s</translation>
+    </message>
+    <message>
+        <source>overshoot ≤ %</source>
+        <translation>sobressinal ≤ %</translation>
+    </message>
+    <message>
+        <source>max |e| ≤ %</source>
+        <translation>máx |e| ≤ %</translation>
+    </message>
+    <message>
+        <source>settle ≤ s</source>
+        <translation>acomodação ≤ s</translation>
+    </message>
+    <message>
+        <source>window mm</source>
+        <translation>janela mm</translation>
+    </message>
+    <message>
+        <source>PM ≥ °</source>
+        <translation>MF ≥ °</translation>
+    </message>
+    <message>
+        <source>GM ≥ dB</source>
+        <translation>MG ≥ dB</translation>
+    </message>
+    <message>
+        <source>—</source>
+        <translation>—</translation>
+    </message>
+    <message>
+        <source>n/a</source>
+        <translation>n/d</translation>
+    </message>
+    <message>
+        <source>the closed loop is unstable: not a robustness measure</source>
+        <translation>a malha fechada é instável: não é uma medida de robustez</translation>
+    </message>
+    <message>
+        <source>at %1 rad/s (factor %2)</source>
+        <translation>em %1 rad/s (fator %2)</translation>
+    </message>
+    <message>
+        <source>at %1 rad/s</source>
+        <translation>em %1 rad/s</translation>
+    </message>
+    <message>
+        <source>✓ both axes meet it</source>
+        <translation>✓ os dois eixos a atendem</translation>
+    </message>
+    <message>
+        <source>✗ fails: hover for why</source>
+        <translation>✗ falha: passe o mouse para ver por quê</translation>
+    </message>
+    <message>
+        <source>Set the limits to what this design reaches: %1 (one undo step)</source>
+        <translation>Ajustar os limites ao que este projeto alcança: %1 (um passo de desfazer)</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>The design meets the specification</source>
+        <translation>O projeto atende à especificação</translation>
+    </message>
+    <message>
+        <source>No limit makes this design pass (see why): change the design</source>
+        <translation>Nenhum limite faz este projeto passar (veja por quê): mude o projeto</translation>
+    </message>
+    <message>
+        <source>Contour error (XY): max %1, RMS %2 mm</source>
+        <translation>Erro de contorno (XY): máx %1, RMS %2 mm</translation>
+    </message>
+    <message>
+        <source>The program&apos;s warnings are shown on the XY contour view</source>
+        <translation>Os avisos do programa são mostrados na vista Contorno XY</translation>
+    </message>
+    <message>
+        <source>CW</source>
+        <translation>H</translation>
+    </message>
+    <message>
+        <source>CCW</source>
+        <translation>AH</translation>
+    </message>
+    <message>
+        <source>ISO 230-4: G %1 %2, %3 %4, F %5/%6</source>
+        <translation>ISO 230-4: G %1 %2, %3 %4, F %5/%6</translation>
+    </message>
+    <message>
+        <source>ISO 230-4: G %1, F %2/%3</source>
+        <translation>ISO 230-4: G %1, F %2/%3</translation>
+    </message>
+    <message>
+        <source>, H %1</source>
+        <translation>, H %1</translation>
+    </message>
+    <message>
+        <source>%1° %2</source>
+        <translation>%1° %2</translation>
+    </message>
+    <message>
+        <source>, spikes ≤ %1</source>
+        <translation>, picos ≤ %1</translation>
+    </message>
+    <message>
+        <source>Reversal spikes (mm): %1</source>
+        <translation>Picos de reversão (mm): %1</translation>
+    </message>
+    <message>
+        <source>
 Without the friction compensation: G %1 mm</source>
-            <translation>
+        <translation>
 Sem a compensação de atrito: G %1 mm</translation>
-        </message>
-        <message>
-            <source> mm</source>
-            <translation> mm</translation>
-        </message>
-        <message>
-            <source>program: %1</source>
-            <translation>programa: %1</translation>
-        </message>
-        <message>
-            <source>≤ %1</source>
-            <translation>≤ %1</translation>
-        </message>
-        <message>
-            <source>no</source>
-            <translation>não</translation>
-        </message>
-        <message>
-            <source>|e| ≤ %1</source>
-            <translation>|e| ≤ %1</translation>
-        </message>
-        <message>
-            <source>≥ %1</source>
-            <translation>≥ %1</translation>
-        </message>
-        <message>
-            <source>%1: no design (%2: %3)</source>
-            <translation>%1: sem projeto (%2: %3)</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
-        </message>
-        <message>
-            <source>&gt; %1</source>
-            <translation>&gt; %1</translation>
-        </message>
-        <message>
-            <source>%1*</source>
-            <translation>%1*</translation>
-        </message>
-        <message>
-            <source>unstable</source>
-            <translation>instável</translation>
-        </message>
-        <message>
-            <source>meets the specification, as designed and as implemented</source>
-            <translation>atende à especificação, como projetado e como implementado</translation>
-        </message>
-        <message>
-            <source>meets the specification</source>
-            <translation>atende à especificação</translation>
-        </message>
-        <message>
-            <source>fails the specification</source>
-            <translation>não atende à especificação</translation>
-        </message>
-        <message>
-            <source> digital</source>
-            <translation> digital</translation>
-        </message>
-        <message>
-            <source>the design meets the specification here, its digital implementation (Ts, quantization, ±umax, delay) does not: this is the implementation's figure</source>
-            <translation>o projeto atende à especificação aqui, sua implementação digital (Ts, quantização, ±umax, atraso) não: este é o valor da implementação</translation>
-        </message>
-        <message>
-            <source>not settled into ±%1 mm by the end of the run, %2 s after tf; %3</source>
-            <translation>não acomodado em ±%1 mm até o fim da simulação, %2 s após tf; %3</translation>
-        </message>
-        <message>
-            <source>design %1, digital %2%3</source>
-            <translation>projeto %1, digital %2%3</translation>
-        </message>
-        <message>
-            <source> (differs by more than 5 %)</source>
-            <translation> (difere em mais de 5 %)</translation>
-        </message>
-        <message>
-            <source>digital loop %1, design %2 at Ts = %3 s</source>
-            <translation>malha digital %1, projeto %2 com Ts = %3 s</translation>
-        </message>
-        <message>
-            <source>* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated without a limit; |u| would be clipped this long</source>
-            <translation>* não aplicado: a malha discreta de Patrick, Ishak e Adnan é simulada sem limite; |u| seria limitado por este tempo</translation>
-        </message>
-        <message>
-            <source>RMSE (mm): the root mean square of the tracking error e = r − y over the samples of the run on the trajectory.</source>
-            <translation>RMSE (mm): a raiz do valor quadrático médio do erro de seguimento e = r − y sobre as amostras da simulação na trajetória.</translation>
-        </message>
-        <message>
-            <source>max |e| (mm): the largest absolute tracking error e = r − y over the run on the trajectory.</source>
-            <translation>|e| máx (mm): o maior erro de seguimento absoluto e = r − y ao longo da simulação na trajetória.</translation>
-        </message>
-        <message>
-            <source>max |e| (%): the largest absolute tracking error as a percentage of the travel; judged against the specification's maximum error.</source>
-            <translation>|e| máx (%): o maior erro de seguimento absoluto como porcentagem do curso; avaliado frente ao erro máximo da especificação.</translation>
-        </message>
-        <message>
-            <source>max |u| (V): the largest absolute command applied to the plant over the run (after the ±umax limit).</source>
-            <translation>|u| máx (V): o maior comando absoluto aplicado à planta ao longo da simulação (após o limite de ±umax).</translation>
-        </message>
-        <message>
-            <source>saturated (s): the time the command spends clipped at ±umax during the run (sample count × dt).</source>
-            <translation>saturado (s): o tempo que o comando passa limitado em ±umax durante a simulação (número de amostras × dt).</translation>
-        </message>
-        <message>
-            <source>ITAE (mm·s²): the integral of t·|e(t)| over the run (trapezoidal rule on the samples); it weighs late errors more than early ones.</source>
-            <translation>ITAE (mm·s²): a integral de t·|e(t)| ao longo da simulação (regra dos trapézios sobre as amostras); pondera mais os erros tardios que os iniciais.</translation>
-        </message>
-        <message>
-            <source>ZPETC gain (%): the RMSE improvement of the ZPETC feedforward over the loop alone, 100 (1 − RMSE with / RMSE without).</source>
-            <translation>ganho do ZPETC (%): a melhora do RMSE com a pré-alimentação ZPETC em relação à malha sozinha, 100 (1 − RMSE com / RMSE sem).</translation>
-        </message>
-        <message>
-            <source>settle time (s): from the end of the move (tf) until |e| stays inside the in-position window; judged against the specification's settle limit.</source>
-            <translation>tempo de acomodação (s): do fim do movimento (tf) até |e| permanecer dentro da janela de posição; avaliado frente ao limite de acomodação da especificação.</translation>
-        </message>
-        <message>
-            <source>final e (mm): the tracking error r − y at the last sample of the run.</source>
-            <translation>e final (mm): o erro de seguimento r − y na última amostra da simulação.</translation>
-        </message>
-        <message>
-            <source>overrun (mm): how far the axis went beyond the target after tf, in the direction of travel (0 when it never passed it).</source>
-            <translation>ultrapassagem (mm): quanto o eixo foi além do alvo após tf, no sentido do movimento (0 quando nunca o ultrapassou).</translation>
-        </message>
-        <message>
-            <source>settling 2 % (s): the time after which the closed loop's unit step stays within ±2 % of its final value.</source>
-            <translation>acomodação 2 % (s): o tempo após o qual o degrau unitário da malha fechada permanece dentro de ±2 % do seu valor final.</translation>
-        </message>
-        <message>
-            <source>overshoot (%): the unit step's peak above its final value, 100 (peak − final)/final; judged against the specification's maximum overshoot.</source>
-            <translation>sobressinal (%): o pico do degrau unitário acima do seu valor final, 100 (pico − final)/final; avaliado frente ao sobressinal máximo da especificação.</translation>
-        </message>
-        <message>
-            <source>RMSE (mm) of the digital implementation: the same figure for the sampled-data loop (controller at its Ts, hold, quantization, limit, delay); amber when it differs from the design's by more than 5 %.</source>
-            <translation>RMSE (mm) da implementação digital: o mesmo valor para a malha amostrada (controlador no seu Ts, retentor, quantização, limite, atraso); em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
-        </message>
-        <message>
-            <source>max |e| (mm) of the digital implementation: the largest absolute error of the sampled-data loop's run; amber when it differs from the design's by more than 5 %.</source>
-            <translation>|e| máx (mm) da implementação digital: o maior erro absoluto da simulação da malha amostrada; em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
-        </message>
-        <message>
-            <source>min ζ: the least damping ratio of the digital closed loop's poles, ζ = −Re s/|s| with s = ln z / Ts; the design's in the tooltip.</source>
-            <translation>ζ mín: o menor coeficiente de amortecimento dos polos da malha fechada digital, ζ = −Re s/|s| com s = ln z / Ts; o do projeto aparece na dica.</translation>
-        </message>
-        <message>
-            <source>Gain margin (dB): −20 log10 |L(jω180)| at the phase crossover ω180 where arg L = −180°: how much the loop gain may grow before the closed loop becomes unstable; ∞: never. Computed on the continuous loop.</source>
-            <translation>Margem de ganho (dB): −20 log10 |L(jω180)| na frequência de cruzamento de fase ω180, onde arg L = −180°: quanto o ganho de malha pode crescer antes que a malha fechada se torne instável; ∞: nunca. Calculada na malha contínua.</translation>
-        </message>
-        <message>
-            <source>Phase margin (°): 180° + arg L(jωc) at the gain crossover ωc where |L| = 1; computed on the continuous loop.</source>
-            <translation>Margem de fase (°): 180° + arg L(jωc) na frequência de cruzamento de ganho ωc, onde |L| = 1; calculada na malha contínua.</translation>
-        </message>
-        <message>
-            <source>Delay margin (s): the extra loop delay the closed loop tolerates, phase margin (rad) / ωc, the smallest over the gain crossovers.</source>
-            <translation>Margem de atraso (s): o atraso adicional na malha que a malha fechada tolera, margem de fase (rad) / ωc, a menor entre os cruzamentos de ganho.</translation>
-        </message>
-        <message>
-            <source>Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / the closest distance of L to −1; 1.2–2 is a usual target.</source>
-            <translation>Ms: o pico da sensibilidade |S(jω)| = |1/(1 + L(jω))|, isto é, 1 / a menor distância de L a −1; 1.2–2 é um alvo usual.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::NumberField</name>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::NyquistPlot</name>
-        <message>
-            <source>Nyquist diagram</source>
-            <translation>Diagrama de Nyquist</translation>
-        </message>
-        <message>
-            <source>Re L</source>
-            <translation>Re L</translation>
-        </message>
-        <message>
-            <source>Im L</source>
-            <translation>Im L</translation>
-        </message>
-        <message>
-            <source>|L| = 1</source>
-            <translation>|L| = 1</translation>
-        </message>
-        <message>
-            <source>distance 1/Ms to −1</source>
-            <translation>distância 1/Ms até −1</translation>
-        </message>
-        <message>
-            <source>L(jω), ω ≥ 0</source>
-            <translation>L(jω), ω ≥ 0</translation>
-        </message>
-        <message>
-            <source>ω &lt; 0 (mirror)</source>
-            <translation>ω &lt; 0 (espelho)</translation>
-        </message>
-        <message>
-            <source>−1</source>
-            <translation>−1</translation>
-        </message>
-        <message>
-            <source>the curve passes through −1: a closed-loop pole on the stability boundary</source>
-            <translation>a curva passa por −1: um polo de malha fechada no limite de estabilidade</translation>
-        </message>
-        <message>
-            <source>closed loop stable</source>
-            <translation>malha fechada estável</translation>
-        </message>
-        <message>
-            <source>%1 closed-loop pole(s) unstable</source>
-            <translation>%1 polo(s) de malha fechada instável(is)</translation>
-        </message>
-        <message>
-            <source>Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop poles → Z = N + P = %3: %4   (Ms = %5)</source>
-            <translation>Nyquist: N = %1 envolvimentos de −1 no sentido horário, P = %2 polos de malha aberta instáveis → Z = N + P = %3: %4   (Ms = %5)</translation>
-        </message>
-        <message>
-            <source>∞</source>
-            <translation>∞</translation>
-        </message>
-        <message>
-            <source>n/a, the closed loop is unstable</source>
-            <translation>n/d, a malha fechada é instável</translation>
-        </message>
-        <message>
-            <source>poles on the boundary are passed on small indentations: the curve closes at infinity there</source>
-            <translation>polos no limite são contornados por pequenas indentações: a curva se fecha no infinito ali</translation>
-        </message>
-        <message>
-            <source>Nyquist diagram: L(jω) in the complex plane for ω from 0 to ∞ (mirrored for negative ω), with the critical point −1; Z = N + P counts the closed-loop unstable poles from the encirclements N of −1 and the open-loop unstable poles P.</source>
-            <translation>Diagrama de Nyquist: L(jω) no plano complexo para ω de 0 a ∞ (espelhado para ω negativo), com o ponto crítico −1; Z = N + P conta os polos instáveis de malha fechada a partir dos envolvimentos N de −1 e dos polos instáveis de malha aberta P.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::NyquistView</name>
-        <message>
-            <source>Nyquist diagram of %1</source>
-            <translation>Diagrama de Nyquist de %1</translation>
-        </message>
-        <message>
-            <source>No frequency analysis: %1</source>
-            <translation>Sem análise em frequência: %1</translation>
-        </message>
-        <message>
-            <source>Nyquist diagram of %1 (open loop L)</source>
-            <translation>Diagrama de Nyquist de %1 (malha aberta L)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ParameterLocusPlot</name>
-        <message>
-            <source>real</source>
-            <translation>real</translation>
-        </message>
-        <message>
-            <source>imaginary</source>
-            <translation>imaginário</translation>
-        </message>
-        <message>
-            <source>current design</source>
-            <translation>projeto atual</translation>
-        </message>
-        <message>
-            <source>start of the sweep</source>
-            <translation>início da varredura</translation>
-        </message>
-        <message>
-            <source>stability boundary crossed</source>
-            <translation>limite de estabilidade cruzado</translation>
-        </message>
-        <message>
-            <source>framed on the poles that move; one pole barely moves and may lie outside the view: %1</source>
-            <translation>enquadrado nos polos que se movem; um polo quase não se move e pode ficar fora da vista: %1</translation>
-        </message>
-        <message>
-            <source>framed on the poles that move; %1 poles barely move and may lie outside the view: %2</source>
-            <translation>enquadrado nos polos que se movem; %1 polos quase não se movem e podem ficar fora da vista: %2</translation>
-        </message>
-        <message>
-            <source>unstable above %1 = %2</source>
-            <translation>instável acima de %1 = %2</translation>
-        </message>
-        <message>
-            <source>unstable below %1 = %2</source>
-            <translation>instável abaixo de %1 = %2</translation>
-        </message>
-        <message>
-            <source>Parameter locus: the closed-loop poles as the chosen parameter (ωn or kp) sweeps its range, with the design's value marked and the value where the loop turns unstable (a pole crossing the imaginary axis) marked.</source>
-            <translation>Lugar do parâmetro: os polos de malha fechada à medida que o parâmetro escolhido (ωn ou kp) varre sua faixa, com o valor do projeto marcado e também o valor em que a malha se torna instável (um polo cruzando o eixo imaginário).</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ParameterLocusView</name>
-        <message>
-            <source>Parameter locus of %1</source>
-            <translation>Lugar do parâmetro de %1</translation>
-        </message>
-        <message>
-            <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ (pole at z = %1), placed directly by t1.</source>
-            <translation>O lugar do parâmetro varre ωn ou kp de um eixo Guillemin–Truxal. Este eixo usa alocação de polos: seus polos de malha fechada são as raízes de T = 1 + t1 z⁻¹ (polo em z = %1), alocados diretamente por t1.</translation>
-        </message>
-        <message>
-            <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses %1: the root locus shows its poles against the loop gain.</source>
-            <translation>O lugar do parâmetro varre ωn ou kp de um eixo Guillemin–Truxal. Este eixo usa %1: o lugar das raízes mostra seus polos em função do ganho de malha.</translation>
-        </message>
-        <message>
-            <source>Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)</source>
-            <translation>Polos de malha fechada com kp varrendo %1 … %2 (ωn = %3)</translation>
-        </message>
-        <message>
-            <source>Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)</source>
-            <translation>Polos de malha fechada com ωn varrendo %1 … %2 rad/s (kp = %3)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ParameterSlider</name>
-        <message>
-            <source>%1 (logarithmic scale)</source>
-            <translation>%1 (escala logarítmica)</translation>
-        </message>
-        <message>
-            <source> value</source>
-            <translation> valor</translation>
-        </message>
-        <message>
-            <source>%1, beyond the slider (%2 to %3)</source>
-            <translation>%1, além do controle deslizante (%2 a %3)</translation>
-        </message>
-        <message>
-            <source>%1: '%2' is not a number from %3 to %4</source>
-            <translation>%1: '%2' não é um número de %3 a %4</translation>
-        </message>
-        <message>
-            <source>%1
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>program: %1</source>
+        <translation>programa: %1</translation>
+    </message>
+    <message>
+        <source>≤ %1</source>
+        <translation>≤ %1</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>não</translation>
+    </message>
+    <message>
+        <source>|e| ≤ %1</source>
+        <translation>|e| ≤ %1</translation>
+    </message>
+    <message>
+        <source>≥ %1</source>
+        <translation>≥ %1</translation>
+    </message>
+    <message>
+        <source>%1: no design (%2: %3)</source>
+        <translation>%1: sem projeto (%2: %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>&gt; %1</source>
+        <translation>&gt; %1</translation>
+    </message>
+    <message>
+        <source>%1*</source>
+        <translation>%1*</translation>
+    </message>
+    <message>
+        <source>unstable</source>
+        <translation>instável</translation>
+    </message>
+    <message>
+        <source>meets the specification, as designed and as implemented</source>
+        <translation>atende à especificação, como projetado e como implementado</translation>
+    </message>
+    <message>
+        <source>meets the specification</source>
+        <translation>atende à especificação</translation>
+    </message>
+    <message>
+        <source>fails the specification</source>
+        <translation>não atende à especificação</translation>
+    </message>
+    <message>
+        <source> digital</source>
+        <translation> digital</translation>
+    </message>
+    <message>
+        <source>the design meets the specification here, its digital implementation (Ts, quantization, ±umax, delay) does not: this is the implementation&apos;s figure</source>
+        <translation>o projeto atende à especificação aqui, sua implementação digital (Ts, quantização, ±umax, atraso) não: este é o valor da implementação</translation>
+    </message>
+    <message>
+        <source>not settled into ±%1 mm by the end of the run, %2 s after tf; %3</source>
+        <translation>não acomodado em ±%1 mm até o fim da simulação, %2 s após tf; %3</translation>
+    </message>
+    <message>
+        <source>design %1, digital %2%3</source>
+        <translation>projeto %1, digital %2%3</translation>
+    </message>
+    <message>
+        <source> (differs by more than 5 %)</source>
+        <translation> (difere em mais de 5 %)</translation>
+    </message>
+    <message>
+        <source>digital loop %1, design %2 at Ts = %3 s</source>
+        <translation>malha digital %1, projeto %2 com Ts = %3 s</translation>
+    </message>
+    <message>
+        <source>* not applied: the discrete loop of Patrick, Ishak and Adnan is simulated without a limit; |u| would be clipped this long</source>
+        <translation>* não aplicado: a malha discreta de Patrick, Ishak e Adnan é simulada sem limite; |u| seria limitado por este tempo</translation>
+    </message>
+    <message>
+        <source>RMSE (mm): the root mean square of the tracking error e = r − y over the samples of the run on the trajectory.</source>
+        <translation>RMSE (mm): a raiz do valor quadrático médio do erro de seguimento e = r − y sobre as amostras da simulação na trajetória.</translation>
+    </message>
+    <message>
+        <source>max |e| (mm): the largest absolute tracking error e = r − y over the run on the trajectory.</source>
+        <translation>|e| máx (mm): o maior erro de seguimento absoluto e = r − y ao longo da simulação na trajetória.</translation>
+    </message>
+    <message>
+        <source>max |e| (%): the largest absolute tracking error as a percentage of the travel; judged against the specification&apos;s maximum error.</source>
+        <translation>|e| máx (%): o maior erro de seguimento absoluto como porcentagem do curso; avaliado frente ao erro máximo da especificação.</translation>
+    </message>
+    <message>
+        <source>max |u| (V): the largest absolute command applied to the plant over the run (after the ±umax limit).</source>
+        <translation>|u| máx (V): o maior comando absoluto aplicado à planta ao longo da simulação (após o limite de ±umax).</translation>
+    </message>
+    <message>
+        <source>saturated (s): the time the command spends clipped at ±umax during the run (sample count × dt).</source>
+        <translation>saturado (s): o tempo que o comando passa limitado em ±umax durante a simulação (número de amostras × dt).</translation>
+    </message>
+    <message>
+        <source>ITAE (mm·s²): the integral of t·|e(t)| over the run (trapezoidal rule on the samples); it weighs late errors more than early ones.</source>
+        <translation>ITAE (mm·s²): a integral de t·|e(t)| ao longo da simulação (regra dos trapézios sobre as amostras); pondera mais os erros tardios que os iniciais.</translation>
+    </message>
+    <message>
+        <source>ZPETC gain (%): the RMSE improvement of the ZPETC feedforward over the loop alone, 100 (1 − RMSE with / RMSE without).</source>
+        <translation>ganho do ZPETC (%): a melhora do RMSE com a pré-alimentação ZPETC em relação à malha sozinha, 100 (1 − RMSE com / RMSE sem).</translation>
+    </message>
+    <message>
+        <source>settle time (s): from the end of the move (tf) until |e| stays inside the in-position window; judged against the specification&apos;s settle limit.</source>
+        <translation>tempo de acomodação (s): do fim do movimento (tf) até |e| permanecer dentro da janela de posição; avaliado frente ao limite de acomodação da especificação.</translation>
+    </message>
+    <message>
+        <source>final e (mm): the tracking error r − y at the last sample of the run.</source>
+        <translation>e final (mm): o erro de seguimento r − y na última amostra da simulação.</translation>
+    </message>
+    <message>
+        <source>overrun (mm): how far the axis went beyond the target after tf, in the direction of travel (0 when it never passed it).</source>
+        <translation>ultrapassagem (mm): quanto o eixo foi além do alvo após tf, no sentido do movimento (0 quando nunca o ultrapassou).</translation>
+    </message>
+    <message>
+        <source>settling 2 % (s): the time after which the closed loop&apos;s unit step stays within ±2 % of its final value.</source>
+        <translation>acomodação 2 % (s): o tempo após o qual o degrau unitário da malha fechada permanece dentro de ±2 % do seu valor final.</translation>
+    </message>
+    <message>
+        <source>overshoot (%): the unit step&apos;s peak above its final value, 100 (peak − final)/final; judged against the specification&apos;s maximum overshoot.</source>
+        <translation>sobressinal (%): o pico do degrau unitário acima do seu valor final, 100 (pico − final)/final; avaliado frente ao sobressinal máximo da especificação.</translation>
+    </message>
+    <message>
+        <source>RMSE (mm) of the digital implementation: the same figure for the sampled-data loop (controller at its Ts, hold, quantization, limit, delay); amber when it differs from the design&apos;s by more than 5 %.</source>
+        <translation>RMSE (mm) da implementação digital: o mesmo valor para a malha amostrada (controlador no seu Ts, retentor, quantização, limite, atraso); em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
+    </message>
+    <message>
+        <source>max |e| (mm) of the digital implementation: the largest absolute error of the sampled-data loop&apos;s run; amber when it differs from the design&apos;s by more than 5 %.</source>
+        <translation>|e| máx (mm) da implementação digital: o maior erro absoluto da simulação da malha amostrada; em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
+    </message>
+    <message>
+        <source>min ζ: the least damping ratio of the digital closed loop&apos;s poles, ζ = −Re s/|s| with s = ln z / Ts; the design&apos;s in the tooltip.</source>
+        <translation>ζ mín: o menor coeficiente de amortecimento dos polos da malha fechada digital, ζ = −Re s/|s| com s = ln z / Ts; o do projeto aparece na dica.</translation>
+    </message>
+    <message>
+        <source>Gain margin (dB): −20 log10 |L(jω180)| at the phase crossover ω180 where arg L = −180°: how much the loop gain may grow before the closed loop becomes unstable; ∞: never. Computed on the continuous loop.</source>
+        <translation>Margem de ganho (dB): −20 log10 |L(jω180)| na frequência de cruzamento de fase ω180, onde arg L = −180°: quanto o ganho de malha pode crescer antes que a malha fechada se torne instável; ∞: nunca. Calculada na malha contínua.</translation>
+    </message>
+    <message>
+        <source>Phase margin (°): 180° + arg L(jωc) at the gain crossover ωc where |L| = 1; computed on the continuous loop.</source>
+        <translation>Margem de fase (°): 180° + arg L(jωc) na frequência de cruzamento de ganho ωc, onde |L| = 1; calculada na malha contínua.</translation>
+    </message>
+    <message>
+        <source>Delay margin (s): the extra loop delay the closed loop tolerates, phase margin (rad) / ωc, the smallest over the gain crossovers.</source>
+        <translation>Margem de atraso (s): o atraso adicional na malha que a malha fechada tolera, margem de fase (rad) / ωc, a menor entre os cruzamentos de ganho.</translation>
+    </message>
+    <message>
+        <source>Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / the closest distance of L to −1; 1.2–2 is a usual target.</source>
+        <translation>Ms: o pico da sensibilidade |S(jω)| = |1/(1 + L(jω))|, isto é, 1 / a menor distância de L a −1; 1.2–2 é um alvo usual.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::NumberField</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::NyquistPlot</name>
+    <message>
+        <source>Nyquist diagram</source>
+        <translation>Diagrama de Nyquist</translation>
+    </message>
+    <message>
+        <source>Re L</source>
+        <translation>Re L</translation>
+    </message>
+    <message>
+        <source>Im L</source>
+        <translation>Im L</translation>
+    </message>
+    <message>
+        <source>|L| = 1</source>
+        <translation>|L| = 1</translation>
+    </message>
+    <message>
+        <source>distance 1/Ms to −1</source>
+        <translation>distância 1/Ms até −1</translation>
+    </message>
+    <message>
+        <source>L(jω), ω ≥ 0</source>
+        <translation>L(jω), ω ≥ 0</translation>
+    </message>
+    <message>
+        <source>ω &lt; 0 (mirror)</source>
+        <translation>ω &lt; 0 (espelho)</translation>
+    </message>
+    <message>
+        <source>−1</source>
+        <translation>−1</translation>
+    </message>
+    <message>
+        <source>the curve passes through −1: a closed-loop pole on the stability boundary</source>
+        <translation>a curva passa por −1: um polo de malha fechada no limite de estabilidade</translation>
+    </message>
+    <message>
+        <source>closed loop stable</source>
+        <translation>malha fechada estável</translation>
+    </message>
+    <message>
+        <source>%1 closed-loop pole(s) unstable</source>
+        <translation>%1 polo(s) de malha fechada instável(is)</translation>
+    </message>
+    <message>
+        <source>Nyquist: N = %1 clockwise encirclements of −1, P = %2 unstable open-loop poles → Z = N + P = %3: %4   (Ms = %5)</source>
+        <translation>Nyquist: N = %1 envolvimentos de −1 no sentido horário, P = %2 polos de malha aberta instáveis → Z = N + P = %3: %4   (Ms = %5)</translation>
+    </message>
+    <message>
+        <source>∞</source>
+        <translation>∞</translation>
+    </message>
+    <message>
+        <source>n/a, the closed loop is unstable</source>
+        <translation>n/d, a malha fechada é instável</translation>
+    </message>
+    <message>
+        <source>poles on the boundary are passed on small indentations: the curve closes at infinity there</source>
+        <translation>polos no limite são contornados por pequenas indentações: a curva se fecha no infinito ali</translation>
+    </message>
+    <message>
+        <source>Nyquist diagram: L(jω) in the complex plane for ω from 0 to ∞ (mirrored for negative ω), with the critical point −1; Z = N + P counts the closed-loop unstable poles from the encirclements N of −1 and the open-loop unstable poles P.</source>
+        <translation>Diagrama de Nyquist: L(jω) no plano complexo para ω de 0 a ∞ (espelhado para ω negativo), com o ponto crítico −1; Z = N + P conta os polos instáveis de malha fechada a partir dos envolvimentos N de −1 e dos polos instáveis de malha aberta P.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::NyquistView</name>
+    <message>
+        <source>Nyquist diagram of %1</source>
+        <translation>Diagrama de Nyquist de %1</translation>
+    </message>
+    <message>
+        <source>No frequency analysis: %1</source>
+        <translation>Sem análise em frequência: %1</translation>
+    </message>
+    <message>
+        <source>Nyquist diagram of %1 (open loop L)</source>
+        <translation>Diagrama de Nyquist de %1 (malha aberta L)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ParameterLocusPlot</name>
+    <message>
+        <source>real</source>
+        <translation>real</translation>
+    </message>
+    <message>
+        <source>imaginary</source>
+        <translation>imaginário</translation>
+    </message>
+    <message>
+        <source>current design</source>
+        <translation>projeto atual</translation>
+    </message>
+    <message>
+        <source>start of the sweep</source>
+        <translation>início da varredura</translation>
+    </message>
+    <message>
+        <source>stability boundary crossed</source>
+        <translation>limite de estabilidade cruzado</translation>
+    </message>
+    <message>
+        <source>framed on the poles that move; one pole barely moves and may lie outside the view: %1</source>
+        <translation>enquadrado nos polos que se movem; um polo quase não se move e pode ficar fora da vista: %1</translation>
+    </message>
+    <message>
+        <source>framed on the poles that move; %1 poles barely move and may lie outside the view: %2</source>
+        <translation>enquadrado nos polos que se movem; %1 polos quase não se movem e podem ficar fora da vista: %2</translation>
+    </message>
+    <message>
+        <source>unstable above %1 = %2</source>
+        <translation>instável acima de %1 = %2</translation>
+    </message>
+    <message>
+        <source>unstable below %1 = %2</source>
+        <translation>instável abaixo de %1 = %2</translation>
+    </message>
+    <message>
+        <source>Parameter locus: the closed-loop poles as the chosen parameter (ωn or kp) sweeps its range, with the design&apos;s value marked and the value where the loop turns unstable (a pole crossing the imaginary axis) marked.</source>
+        <translation>Lugar do parâmetro: os polos de malha fechada à medida que o parâmetro escolhido (ωn ou kp) varre sua faixa, com o valor do projeto marcado e também o valor em que a malha se torna instável (um polo cruzando o eixo imaginário).</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ParameterLocusView</name>
+    <message>
+        <source>Parameter locus of %1</source>
+        <translation>Lugar do parâmetro de %1</translation>
+    </message>
+    <message>
+        <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses pole placement: its closed-loop poles are the roots of T = 1 + t1 z⁻¹ (pole at z = %1), placed directly by t1.</source>
+        <translation>O lugar do parâmetro varre ωn ou kp de um eixo Guillemin–Truxal. Este eixo usa alocação de polos: seus polos de malha fechada são as raízes de T = 1 + t1 z⁻¹ (polo em z = %1), alocados diretamente por t1.</translation>
+    </message>
+    <message>
+        <source>The parameter locus sweeps ωn or kp of a Guillemin–Truxal axis. This axis uses %1: the root locus shows its poles against the loop gain.</source>
+        <translation>O lugar do parâmetro varre ωn ou kp de um eixo Guillemin–Truxal. Este eixo usa %1: o lugar das raízes mostra seus polos em função do ganho de malha.</translation>
+    </message>
+    <message>
+        <source>Closed-loop poles as kp sweeps %1 … %2 (ωn = %3)</source>
+        <translation>Polos de malha fechada com kp varrendo %1 … %2 (ωn = %3)</translation>
+    </message>
+    <message>
+        <source>Closed-loop poles as ωn sweeps %1 … %2 rad/s (kp = %3)</source>
+        <translation>Polos de malha fechada com ωn varrendo %1 … %2 rad/s (kp = %3)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ParameterSlider</name>
+    <message>
+        <source>%1 (logarithmic scale)</source>
+        <translation>%1 (escala logarítmica)</translation>
+    </message>
+    <message>
+        <source> value</source>
+        <translation> valor</translation>
+    </message>
+    <message>
+        <source>%1, beyond the slider (%2 to %3)</source>
+        <translation>%1, além do controle deslizante (%2 a %3)</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number from %3 to %4</source>
+        <translation>%1: &apos;%2&apos; não é um número de %3 a %4</translation>
+    </message>
+    <message>
+        <source>%1
 Type a value (scientific notation such as 2.5e3 is accepted).</source>
-            <translation>%1
+        <translation>%1
 Digite um valor (notação científica como 2.5e3 é aceita).</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PidFeedforwardEditor</name>
-        <message>
-            <source>From model</source>
-            <translation>Do modelo</translation>
-        </message>
-        <message>
-            <source>D on the measurement (no kick)</source>
-            <translation>D na medição (sem pico)</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Feedforward&lt;/b&gt;, % of the model's inverse</source>
-            <translation>&lt;b&gt;Pré-alimentação&lt;/b&gt;, % da inversa do modelo</translation>
-        </message>
-        <message>
-            <source>FF1 (velocity)</source>
-            <translation>FF1 (velocidade)</translation>
-        </message>
-        <message>
-            <source>FF2 (acceleration)</source>
-            <translation>FF2 (aceleração)</translation>
-        </message>
-        <message>
-            <source>FF3 (jerk)</source>
-            <translation>FF3 (jerk)</translation>
-        </message>
-        <message>
-            <source>Set %1 of %2 to %3 % of the model</source>
-            <translation>Definir %1 de %2 como %3 % do modelo</translation>
-        </message>
-        <message>
-            <source>Set FF1, FF2 and FF3 to the plant's exact inverse (a2 u/k0, a1 u/k0, u/k0) and FF0 to 0</source>
-            <translation>Definir FF1, FF2 e FF3 como a inversa exata da planta (a2 u/k0, a1 u/k0, u/k0) e FF0 como 0</translation>
-        </message>
-        <message>
-            <source>Feedforward of %1 from the model</source>
-            <translation>Pré-alimentação de %1 a partir do modelo</translation>
-        </message>
-        <message>
-            <source>r′, r″, r‴ by backward differences</source>
-            <translation>r′, r″, r‴ por diferenças regressivas</translation>
-        </message>
-        <message>
-            <source>r′, r″, r‴ from the trajectory</source>
-            <translation>r′, r″, r‴ da trajetória</translation>
-        </message>
-        <message>
-            <source>Where the feedforward reads the command's derivatives: backward differences of the commanded position each period (LinuxCNC's pid), or the trajectory generator's own velocity, acceleration and jerk</source>
-            <translation>De onde a pré-alimentação lê as derivadas do comando: diferenças regressivas da posição comandada a cada período (o pid do LinuxCNC), ou a velocidade, aceleração e jerk do próprio gerador de trajetória</translation>
-        </message>
-        <message>
-            <source>Command derivatives</source>
-            <translation>Derivadas do comando</translation>
-        </message>
-        <message>
-            <source>Take the command's derivatives of %1 from the %2</source>
-            <translation>Obter as derivadas do comando de %1 por %2</translation>
-        </message>
-        <message>
-            <source>backward differences</source>
-            <translation>diferenças regressivas</translation>
-        </message>
-        <message>
-            <source>trajectory generator</source>
-            <translation>gerador de trajetória</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;Limits and filter&lt;/b&gt;</source>
-            <translation>&lt;b&gt;Limites e filtro&lt;/b&gt;</translation>
-        </message>
-        <message>
-            <source>Differentiate the measurement of %1</source>
-            <translation>Derivar a medição de %1</translation>
-        </message>
-        <message>
-            <source>Differentiate the error of %1</source>
-            <translation>Derivar o erro de %1</translation>
-        </message>
-        <message>
-            <source>The plant has no usable inverse (k0 must be finite and nonzero): no feedforward from the model.</source>
-            <translation>A planta não tem inversa utilizável (k0 deve ser finito e não nulo): sem pré-alimentação a partir do modelo.</translation>
-        </message>
-        <message>
-            <source>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</source>
-            <translation>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</translation>
-        </message>
-        <message>
-            <source>The gain %1 as a percentage (%) of the plant's exact inverse (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancels the plant's dynamics along the trajectory</source>
-            <translation>O ganho %1 como porcentagem (%) da inversa exata da planta (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancela a dinâmica da planta ao longo da trajetória</translation>
-        </message>
-        <message>
-            <source>The D term differentiates the measured position (D = −fb′) instead of the error, so a step of the command gives no kick</source>
-            <translation>O termo D deriva a posição medida (D = −fb′) em vez do erro, de modo que um degrau no comando não provoca pico (derivative kick)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PidTuningDialog</name>
-        <message>
-            <source>Tune the PID of axis %1</source>
-            <translation>Sintonizar o PID do eixo %1</translation>
-        </message>
-        <message>
-            <source>PI</source>
-            <translation>PI</translation>
-        </message>
-        <message>
-            <source>PID (Ti = 4 Td)</source>
-            <translation>PID (Ti = 4 Td)</translation>
-        </message>
-        <message>
-            <source>Controller structure</source>
-            <translation>Estrutura do controlador</translation>
-        </message>
-        <message>
-            <source>Structure</source>
-            <translation>Estrutura</translation>
-        </message>
-        <message>
-            <source>Crossover ωc (rad/s)</source>
-            <translation>Cruzamento ωc (rad/s)</translation>
-        </message>
-        <message>
-            <source>Phase margin (°)</source>
-            <translation>Margem de fase (°)</translation>
-        </message>
-        <message>
-            <source>Relay amplitude d (V)</source>
-            <translation>Amplitude do relé d (V)</translation>
-        </message>
-        <message>
-            <source>Rule</source>
-            <translation>Regra</translation>
-        </message>
-        <message>
-            <source>P (V/mm)</source>
-            <translation>P (V/mm)</translation>
-        </message>
-        <message>
-            <source>I (V/(mm s))</source>
-            <translation>I (V/(mm s))</translation>
-        </message>
-        <message>
-            <source>D (V s/mm)</source>
-            <translation>D (V s/mm)</translation>
-        </message>
-        <message>
-            <source>ωc (rad/s)</source>
-            <translation>ωc (rad/s)</translation>
-        </message>
-        <message>
-            <source>PM (°)</source>
-            <translation>MF (°)</translation>
-        </message>
-        <message>
-            <source>Apply</source>
-            <translation>Aplicar</translation>
-        </message>
-        <message>
-            <source>position y (mm)</source>
-            <translation>posição y (mm)</translation>
-        </message>
-        <message>
-            <source>relay u (V)</source>
-            <translation>relé u (V)</translation>
-        </message>
-        <message>
-            <source>time (s)</source>
-            <translation>tempo (s)</translation>
-        </message>
-        <message>
-            <source>y (mm)</source>
-            <translation>y (mm)</translation>
-        </message>
-        <message>
-            <source>u (V)</source>
-            <translation>u (V)</translation>
-        </message>
-        <message>
-            <source>Crossover and phase margin</source>
-            <translation>Cruzamento e margem de fase</translation>
-        </message>
-        <message>
-            <source>Relay: Ziegler–Nichols</source>
-            <translation>Relé: Ziegler–Nichols</translation>
-        </message>
-        <message>
-            <source>Relay: Tyreus–Luyben</source>
-            <translation>Relé: Tyreus–Luyben</translation>
-        </message>
-        <message>
-            <source>Relay limit cycle on the model: period Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (describing function: Tu = %4 s, a = %5 mm).</source>
-            <translation>Ciclo-limite do relé no modelo: período Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (função descritiva: Tu = %4 s, a = %5 mm).</translation>
-        </message>
-        <message>
-            <source>No relay experiment: %1</source>
-            <translation>Sem ensaio de relé: %1</translation>
-        </message>
-        <message>
-            <source>Tune %1 by %2</source>
-            <translation>Sintonizar %1 por %2</translation>
-        </message>
-        <message>
-            <source>PI, or PID with Ti = 4 Td, for the closed-form rule</source>
-            <translation>PI, ou PID com Ti = 4 Td, para a regra em forma fechada</translation>
-        </message>
-        <message>
-            <source>Target gain crossover ωc (rad/s): the closed-form gains make |L(jωc)| = 1, L = (P + I/s + D s) G/u</source>
-            <translation>Frequência de cruzamento de ganho desejada ωc (rad/s): os ganhos em forma fechada fazem |L(jωc)| = 1, L = (P + I/s + D s) G/u</translation>
-        </message>
-        <message>
-            <source>Target phase margin (°) at ωc: arg L(jωc) = −180° + PM</source>
-            <translation>Margem de fase desejada (°) em ωc: arg L(jωc) = −180° + PM</translation>
-        </message>
-        <message>
-            <source>Relay amplitude d (V) of the simulated relay experiment; its limit cycle's amplitude a and period Tu give Ku = 4d/(πa) for Ziegler–Nichols and Tyreus–Luyben</source>
-            <translation>Amplitude d (V) do relé no ensaio de relé simulado; a amplitude a e o período Tu do seu ciclo-limite dão Ku = 4d/(πa) para Ziegler–Nichols e Tyreus–Luyben</translation>
-        </message>
-        <message>
-            <source>Set this row's P, I and D on the axis (one undoable step)</source>
-            <translation>Aplicar P, I e D desta linha ao eixo (um passo que pode ser desfeito)</translation>
-        </message>
-        <message>
-            <source>The simulated relay experiment: the position y (mm) and the relay's command u (V) against time (s), settling into the limit cycle</source>
-            <translation>O ensaio de relé simulado: a posição y (mm) e o comando u (V) do relé em função do tempo (s), acomodando-se no ciclo-limite</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PlantEditor</name>
-        <message>
-            <source>custom</source>
-            <translation>personalizado</translation>
-        </message>
-        <message>
-            <source>Plant preset</source>
-            <translation>Predefinição da planta</translation>
-        </message>
-        <message>
-            <source>Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³</source>
-            <translation>Ganho k0 de G(s) = k0 / (s³ + a1 s² + a2 s), em unidades do modelo por volt·s³</translation>
-        </message>
-        <message>
-            <source>Model output units per mm of trajectory (0.001: the model is in metres)</source>
-            <translation>Unidades da saída do modelo por mm de trajetória (0.001: o modelo está em metros)</translation>
-        </message>
-        <message>
-            <source>G(s) = k0 / (s³ + a1 s² + a2 s)</source>
-            <translation>G(s) = k0 / (s³ + a1 s² + a2 s)</translation>
-        </message>
-        <message>
-            <source>Preset</source>
-            <translation>Predefinição</translation>
-        </message>
-        <message>
-            <source>k&amp;0</source>
-            <translation>k&amp;0</translation>
-        </message>
-        <message>
-            <source>a&amp;1</source>
-            <translation>a&amp;1</translation>
-        </message>
-        <message>
-            <source>a&amp;2</source>
-            <translation>a&amp;2</translation>
-        </message>
-        <message>
-            <source>Model unit per mm</source>
-            <translation>Unidade do modelo por mm</translation>
-        </message>
-        <message>
-            <source>A plant of Braga et al.: the lower base (Eq. 2) or the upper base (Eq. 1) with the paper's ωn and kp; "custom" once a coefficient is edited</source>
-            <translation>Uma planta de Braga et al.: a base inferior (Eq. 2) ou a base superior (Eq. 1) com os ωn e kp do artigo; "personalizada" assim que um coeficiente é editado</translation>
-        </message>
-        <message>
-            <source>Coefficient a1 (1/s) of G(s) = k0 / (s³ + a1 s² + a2 s): the sum of the two non-zero poles' magnitudes</source>
-            <translation>Coeficiente a1 (1/s) de G(s) = k0 / (s³ + a1 s² + a2 s): a soma dos módulos dos dois polos não nulos</translation>
-        </message>
-        <message>
-            <source>Coefficient a2 (1/s²) of G(s) = k0 / (s³ + a1 s² + a2 s): the product of the two non-zero poles; k0/a2 is the velocity gain</source>
-            <translation>Coeficiente a2 (1/s²) de G(s) = k0 / (s³ + a1 s² + a2 s): o produto dos dois polos não nulos; k0/a2 é o ganho de velocidade</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PoleZeroPlot</name>
-        <message>
-            <source>Pole-zero map</source>
-            <translation>Mapa de polos e zeros</translation>
-        </message>
-        <message>
-            <source>real</source>
-            <translation>real</translation>
-        </message>
-        <message>
-            <source>imaginary</source>
-            <translation>imaginário</translation>
-        </message>
-        <message>
-            <source>Pole-zero map: the plant's, controller's and closed loop's poles (×) and zeros (○) in the s-plane, or in the z-plane for the digital loop (View › Pole-zero map of the digital loop), with lines of constant damping.</source>
-            <translation>Mapa de polos e zeros: os polos (×) e zeros (○) da planta, do controlador e da malha fechada no plano s, ou no plano z para a malha digital (Exibir › Mapa de polos e zeros da malha digital), com linhas de amortecimento constante.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PoleZeroView</name>
-        <message>
-            <source>Pole-zero map of %1</source>
-            <translation>Mapa de polos e zeros de %1</translation>
-        </message>
-        <message>
-            <source>Digital loop of %1 in the z-plane (Ts = %2 s)</source>
-            <translation>Malha digital de %1 no plano z (Ts = %2 s)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PpEditor</name>
-        <message>
-            <source>B(z⁻¹)/A(z⁻¹), ascending powers of z⁻¹</source>
-            <translation>B(z⁻¹)/A(z⁻¹), potências crescentes de z⁻¹</translation>
-        </message>
-        <message>
-            <source>custom</source>
-            <translation>personalizado</translation>
-        </message>
-        <message>
-            <source>ARX preset</source>
-            <translation>Predefinição ARX</translation>
-        </message>
-        <message>
-            <source>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coefficients separated by spaces or commas</source>
-            <translation>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coeficientes separados por espaços ou vírgulas</translation>
-        </message>
-        <message>
-            <source>B(z⁻¹) = 0 + b1 z⁻¹ + ...: leading zeros are the delay</source>
-            <translation>B(z⁻¹) = 0 + b1 z⁻¹ + ...: os zeros iniciais são o atraso</translation>
-        </message>
-        <message>
-            <source>Desired pole t&amp;1 (T = 1 + t1 z⁻¹)</source>
-            <translation>Polo desejado t&amp;1 (T = 1 + t1 z⁻¹)</translation>
-        </message>
-        <message>
-            <source>ZPETC feedforward</source>
-            <translation>Pré-alimentação ZPETC</translation>
-        </message>
-        <message>
-            <source>Preset</source>
-            <translation>Predefinição</translation>
-        </message>
-        <message>
-            <source>&amp;A</source>
-            <translation>&amp;A</translation>
-        </message>
-        <message>
-            <source>&amp;B</source>
-            <translation>&amp;B</translation>
-        </message>
-        <message>
-            <source>Ts (s)</source>
-            <translation>Ts (s)</translation>
-        </message>
-        <message>
-            <source>An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the y axis (Eq. 3), with T = 1 − 0.2 z⁻¹ and Ts = 70 ms</source>
-            <translation>Um modelo de eixo de Patrick, Ishak e Adnan: o eixo x (Eq. 1) ou o eixo y (Eq. 3), com T = 1 − 0.2 z⁻¹ e Ts = 70 ms</translation>
-        </message>
-        <message>
-            <source>The desired closed-loop pole: T = 1 + t1 z⁻¹ puts the RST loop's pole at z = −t1; the Diophantine equation A F + B G = T gives F, G</source>
-            <translation>O polo de malha fechada desejado: T = 1 + t1 z⁻¹ coloca o polo da malha RST em z = −t1; a equação diofantina A F + B G = T fornece F e G</translation>
-        </message>
-        <message>
-            <source>Sample time Ts (s) of the ARX model and of its RST controller</source>
-            <translation>Período de amostragem Ts (s) do modelo ARX e do seu controlador RST</translation>
-        </message>
-        <message>
-            <source>Tomizuka's zero-phase-error tracking controller ahead of the loop: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference previewed p samples</source>
-            <translation>O controlador de seguimento com erro de fase nulo (ZPETC) de Tomizuka antes da malha: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), com a referência antecipada em p amostras</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::PresenterView</name>
-        <message>
-            <source>Axis %1 (%2)</source>
-            <translation>Eixo %1 (%2)</translation>
-        </message>
-        <message>
-            <source>No design: %1: %2</source>
-            <translation>Sem projeto: %1: %2</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ReportExporter</name>
-        <message>
-            <source>Export &amp;report (PDF)...</source>
-            <translation>Exportar relatório (&amp;PDF)...</translation>
-        </message>
-        <message>
-            <source>A PDF of the design for a lab report or a design review: plants, controllers, figures against the specification, warnings and plots</source>
-            <translation>Um PDF do projeto para um relatório de laboratório ou uma revisão de projeto: plantas, controladores, valores frente à especificação, avisos e gráficos</translation>
-        </message>
-        <message>
-            <source>Export report</source>
-            <translation>Exportar relatório</translation>
-        </message>
-        <message>
-            <source>PDF (*.pdf)</source>
-            <translation>PDF (*.pdf)</translation>
-        </message>
-        <message>
-            <source>Writing the report...</source>
-            <translation>Gravando o relatório...</translation>
-        </message>
-        <message>
-            <source>The report was not written; any existing file is unchanged.
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PidFeedforwardEditor</name>
+    <message>
+        <source>From model</source>
+        <translation>Do modelo</translation>
+    </message>
+    <message>
+        <source>D on the measurement (no kick)</source>
+        <translation>D na medição (sem pico)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Feedforward&lt;/b&gt;, % of the model&apos;s inverse</source>
+        <translation>&lt;b&gt;Pré-alimentação&lt;/b&gt;, % da inversa do modelo</translation>
+    </message>
+    <message>
+        <source>FF1 (velocity)</source>
+        <translation>FF1 (velocidade)</translation>
+    </message>
+    <message>
+        <source>FF2 (acceleration)</source>
+        <translation>FF2 (aceleração)</translation>
+    </message>
+    <message>
+        <source>FF3 (jerk)</source>
+        <translation>FF3 (jerk)</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2 to %3 % of the model</source>
+        <translation>Definir %1 de %2 como %3 % do modelo</translation>
+    </message>
+    <message>
+        <source>Set FF1, FF2 and FF3 to the plant&apos;s exact inverse (a2 u/k0, a1 u/k0, u/k0) and FF0 to 0</source>
+        <translation>Definir FF1, FF2 e FF3 como a inversa exata da planta (a2 u/k0, a1 u/k0, u/k0) e FF0 como 0</translation>
+    </message>
+    <message>
+        <source>Feedforward of %1 from the model</source>
+        <translation>Pré-alimentação de %1 a partir do modelo</translation>
+    </message>
+    <message>
+        <source>r′, r″, r‴ by backward differences</source>
+        <translation>r′, r″, r‴ por diferenças regressivas</translation>
+    </message>
+    <message>
+        <source>r′, r″, r‴ from the trajectory</source>
+        <translation>r′, r″, r‴ da trajetória</translation>
+    </message>
+    <message>
+        <source>Where the feedforward reads the command&apos;s derivatives: backward differences of the commanded position each period (LinuxCNC&apos;s pid), or the trajectory generator&apos;s own velocity, acceleration and jerk</source>
+        <translation>De onde a pré-alimentação lê as derivadas do comando: diferenças regressivas da posição comandada a cada período (o pid do LinuxCNC), ou a velocidade, aceleração e jerk do próprio gerador de trajetória</translation>
+    </message>
+    <message>
+        <source>Command derivatives</source>
+        <translation>Derivadas do comando</translation>
+    </message>
+    <message>
+        <source>Take the command&apos;s derivatives of %1 from the %2</source>
+        <translation>Obter as derivadas do comando de %1 por %2</translation>
+    </message>
+    <message>
+        <source>backward differences</source>
+        <translation>diferenças regressivas</translation>
+    </message>
+    <message>
+        <source>trajectory generator</source>
+        <translation>gerador de trajetória</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Limits and filter&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Limites e filtro&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Differentiate the measurement of %1</source>
+        <translation>Derivar a medição de %1</translation>
+    </message>
+    <message>
+        <source>Differentiate the error of %1</source>
+        <translation>Derivar o erro de %1</translation>
+    </message>
+    <message>
+        <source>The plant has no usable inverse (k0 must be finite and nonzero): no feedforward from the model.</source>
+        <translation>A planta não tem inversa utilizável (k0 deve ser finito e não nulo): sem pré-alimentação a partir do modelo.</translation>
+    </message>
+    <message>
+        <source>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</source>
+        <translation>100 % = FF1 %1 V/(mm/s), FF2 %2 V/(mm/s²), FF3 %3 V/(mm/s³)</translation>
+    </message>
+    <message>
+        <source>The gain %1 as a percentage (%) of the plant&apos;s exact inverse (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancels the plant&apos;s dynamics along the trajectory</source>
+        <translation>O ganho %1 como porcentagem (%) da inversa exata da planta (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancela a dinâmica da planta ao longo da trajetória</translation>
+    </message>
+    <message>
+        <source>The D term differentiates the measured position (D = −fb′) instead of the error, so a step of the command gives no kick</source>
+        <translation>O termo D deriva a posição medida (D = −fb′) em vez do erro, de modo que um degrau no comando não provoca pico (derivative kick)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PidTuningDialog</name>
+    <message>
+        <source>Tune the PID of axis %1</source>
+        <translation>Sintonizar o PID do eixo %1</translation>
+    </message>
+    <message>
+        <source>PI</source>
+        <translation>PI</translation>
+    </message>
+    <message>
+        <source>PID (Ti = 4 Td)</source>
+        <translation>PID (Ti = 4 Td)</translation>
+    </message>
+    <message>
+        <source>Controller structure</source>
+        <translation>Estrutura do controlador</translation>
+    </message>
+    <message>
+        <source>Structure</source>
+        <translation>Estrutura</translation>
+    </message>
+    <message>
+        <source>Crossover ωc (rad/s)</source>
+        <translation>Cruzamento ωc (rad/s)</translation>
+    </message>
+    <message>
+        <source>Phase margin (°)</source>
+        <translation>Margem de fase (°)</translation>
+    </message>
+    <message>
+        <source>Relay amplitude d (V)</source>
+        <translation>Amplitude do relé d (V)</translation>
+    </message>
+    <message>
+        <source>Rule</source>
+        <translation>Regra</translation>
+    </message>
+    <message>
+        <source>P (V/mm)</source>
+        <translation>P (V/mm)</translation>
+    </message>
+    <message>
+        <source>I (V/(mm s))</source>
+        <translation>I (V/(mm s))</translation>
+    </message>
+    <message>
+        <source>D (V s/mm)</source>
+        <translation>D (V s/mm)</translation>
+    </message>
+    <message>
+        <source>ωc (rad/s)</source>
+        <translation>ωc (rad/s)</translation>
+    </message>
+    <message>
+        <source>PM (°)</source>
+        <translation>MF (°)</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Aplicar</translation>
+    </message>
+    <message>
+        <source>position y (mm)</source>
+        <translation>posição y (mm)</translation>
+    </message>
+    <message>
+        <source>relay u (V)</source>
+        <translation>relé u (V)</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>u (V)</source>
+        <translation>u (V)</translation>
+    </message>
+    <message>
+        <source>Crossover and phase margin</source>
+        <translation>Cruzamento e margem de fase</translation>
+    </message>
+    <message>
+        <source>Relay: Ziegler–Nichols</source>
+        <translation>Relé: Ziegler–Nichols</translation>
+    </message>
+    <message>
+        <source>Relay: Tyreus–Luyben</source>
+        <translation>Relé: Tyreus–Luyben</translation>
+    </message>
+    <message>
+        <source>Relay limit cycle on the model: period Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (describing function: Tu = %4 s, a = %5 mm).</source>
+        <translation>Ciclo-limite do relé no modelo: período Tu = %1 s, amplitude a = %2 mm, Ku = 4d/(πa) = %3 V/mm (função descritiva: Tu = %4 s, a = %5 mm).</translation>
+    </message>
+    <message>
+        <source>No relay experiment: %1</source>
+        <translation>Sem ensaio de relé: %1</translation>
+    </message>
+    <message>
+        <source>Tune %1 by %2</source>
+        <translation>Sintonizar %1 por %2</translation>
+    </message>
+    <message>
+        <source>PI, or PID with Ti = 4 Td, for the closed-form rule</source>
+        <translation>PI, ou PID com Ti = 4 Td, para a regra em forma fechada</translation>
+    </message>
+    <message>
+        <source>Target gain crossover ωc (rad/s): the closed-form gains make |L(jωc)| = 1, L = (P + I/s + D s) G/u</source>
+        <translation>Frequência de cruzamento de ganho desejada ωc (rad/s): os ganhos em forma fechada fazem |L(jωc)| = 1, L = (P + I/s + D s) G/u</translation>
+    </message>
+    <message>
+        <source>Target phase margin (°) at ωc: arg L(jωc) = −180° + PM</source>
+        <translation>Margem de fase desejada (°) em ωc: arg L(jωc) = −180° + PM</translation>
+    </message>
+    <message>
+        <source>Relay amplitude d (V) of the simulated relay experiment; its limit cycle&apos;s amplitude a and period Tu give Ku = 4d/(πa) for Ziegler–Nichols and Tyreus–Luyben</source>
+        <translation>Amplitude d (V) do relé no ensaio de relé simulado; a amplitude a e o período Tu do seu ciclo-limite dão Ku = 4d/(πa) para Ziegler–Nichols e Tyreus–Luyben</translation>
+    </message>
+    <message>
+        <source>Set this row&apos;s P, I and D on the axis (one undoable step)</source>
+        <translation>Aplicar P, I e D desta linha ao eixo (um passo que pode ser desfeito)</translation>
+    </message>
+    <message>
+        <source>The simulated relay experiment: the position y (mm) and the relay&apos;s command u (V) against time (s), settling into the limit cycle</source>
+        <translation>O ensaio de relé simulado: a posição y (mm) e o comando u (V) do relé em função do tempo (s), acomodando-se no ciclo-limite</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PlantEditor</name>
+    <message>
+        <source>custom</source>
+        <translation>personalizado</translation>
+    </message>
+    <message>
+        <source>Plant preset</source>
+        <translation>Predefinição da planta</translation>
+    </message>
+    <message>
+        <source>Gain k0 of G(s) = k0 / (s³ + a1 s² + a2 s), in model units per volt·s³</source>
+        <translation>Ganho k0 de G(s) = k0 / (s³ + a1 s² + a2 s), em unidades do modelo por volt·s³</translation>
+    </message>
+    <message>
+        <source>Model output units per mm of trajectory (0.001: the model is in metres)</source>
+        <translation>Unidades da saída do modelo por mm de trajetória (0.001: o modelo está em metros)</translation>
+    </message>
+    <message>
+        <source>G(s) = k0 / (s³ + a1 s² + a2 s)</source>
+        <translation>G(s) = k0 / (s³ + a1 s² + a2 s)</translation>
+    </message>
+    <message>
+        <source>Preset</source>
+        <translation>Predefinição</translation>
+    </message>
+    <message>
+        <source>k&amp;0</source>
+        <translation>k&amp;0</translation>
+    </message>
+    <message>
+        <source>a&amp;1</source>
+        <translation>a&amp;1</translation>
+    </message>
+    <message>
+        <source>a&amp;2</source>
+        <translation>a&amp;2</translation>
+    </message>
+    <message>
+        <source>Model unit per mm</source>
+        <translation>Unidade do modelo por mm</translation>
+    </message>
+    <message>
+        <source>A plant of Braga et al.: the lower base (Eq. 2) or the upper base (Eq. 1) with the paper&apos;s ωn and kp; &quot;custom&quot; once a coefficient is edited</source>
+        <translation>Uma planta de Braga et al.: a base inferior (Eq. 2) ou a base superior (Eq. 1) com os ωn e kp do artigo; &quot;personalizada&quot; assim que um coeficiente é editado</translation>
+    </message>
+    <message>
+        <source>Coefficient a1 (1/s) of G(s) = k0 / (s³ + a1 s² + a2 s): the sum of the two non-zero poles&apos; magnitudes</source>
+        <translation>Coeficiente a1 (1/s) de G(s) = k0 / (s³ + a1 s² + a2 s): a soma dos módulos dos dois polos não nulos</translation>
+    </message>
+    <message>
+        <source>Coefficient a2 (1/s²) of G(s) = k0 / (s³ + a1 s² + a2 s): the product of the two non-zero poles; k0/a2 is the velocity gain</source>
+        <translation>Coeficiente a2 (1/s²) de G(s) = k0 / (s³ + a1 s² + a2 s): o produto dos dois polos não nulos; k0/a2 é o ganho de velocidade</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PoleZeroPlot</name>
+    <message>
+        <source>Pole-zero map</source>
+        <translation>Mapa de polos e zeros</translation>
+    </message>
+    <message>
+        <source>real</source>
+        <translation>real</translation>
+    </message>
+    <message>
+        <source>imaginary</source>
+        <translation>imaginário</translation>
+    </message>
+    <message>
+        <source>Pole-zero map: the plant&apos;s, controller&apos;s and closed loop&apos;s poles (×) and zeros (○) in the s-plane, or in the z-plane for the digital loop (View › Pole-zero map of the digital loop), with lines of constant damping.</source>
+        <translation>Mapa de polos e zeros: os polos (×) e zeros (○) da planta, do controlador e da malha fechada no plano s, ou no plano z para a malha digital (Exibir › Mapa de polos e zeros da malha digital), com linhas de amortecimento constante.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PoleZeroView</name>
+    <message>
+        <source>Pole-zero map of %1</source>
+        <translation>Mapa de polos e zeros de %1</translation>
+    </message>
+    <message>
+        <source>Digital loop of %1 in the z-plane (Ts = %2 s)</source>
+        <translation>Malha digital de %1 no plano z (Ts = %2 s)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PpEditor</name>
+    <message>
+        <source>B(z⁻¹)/A(z⁻¹), ascending powers of z⁻¹</source>
+        <translation>B(z⁻¹)/A(z⁻¹), potências crescentes de z⁻¹</translation>
+    </message>
+    <message>
+        <source>custom</source>
+        <translation>personalizado</translation>
+    </message>
+    <message>
+        <source>ARX preset</source>
+        <translation>Predefinição ARX</translation>
+    </message>
+    <message>
+        <source>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coefficients separated by spaces or commas</source>
+        <translation>A(z⁻¹) = 1 + a1 z⁻¹ + ...: coeficientes separados por espaços ou vírgulas</translation>
+    </message>
+    <message>
+        <source>B(z⁻¹) = 0 + b1 z⁻¹ + ...: leading zeros are the delay</source>
+        <translation>B(z⁻¹) = 0 + b1 z⁻¹ + ...: os zeros iniciais são o atraso</translation>
+    </message>
+    <message>
+        <source>Desired pole t&amp;1 (T = 1 + t1 z⁻¹)</source>
+        <translation>Polo desejado t&amp;1 (T = 1 + t1 z⁻¹)</translation>
+    </message>
+    <message>
+        <source>ZPETC feedforward</source>
+        <translation>Pré-alimentação ZPETC</translation>
+    </message>
+    <message>
+        <source>Preset</source>
+        <translation>Predefinição</translation>
+    </message>
+    <message>
+        <source>&amp;A</source>
+        <translation>&amp;A</translation>
+    </message>
+    <message>
+        <source>&amp;B</source>
+        <translation>&amp;B</translation>
+    </message>
+    <message>
+        <source>Ts (s)</source>
+        <translation>Ts (s)</translation>
+    </message>
+    <message>
+        <source>An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the y axis (Eq. 3), with T = 1 − 0.2 z⁻¹ and Ts = 70 ms</source>
+        <translation>Um modelo de eixo de Patrick, Ishak e Adnan: o eixo x (Eq. 1) ou o eixo y (Eq. 3), com T = 1 − 0.2 z⁻¹ e Ts = 70 ms</translation>
+    </message>
+    <message>
+        <source>The desired closed-loop pole: T = 1 + t1 z⁻¹ puts the RST loop&apos;s pole at z = −t1; the Diophantine equation A F + B G = T gives F, G</source>
+        <translation>O polo de malha fechada desejado: T = 1 + t1 z⁻¹ coloca o polo da malha RST em z = −t1; a equação diofantina A F + B G = T fornece F e G</translation>
+    </message>
+    <message>
+        <source>Sample time Ts (s) of the ARX model and of its RST controller</source>
+        <translation>Período de amostragem Ts (s) do modelo ARX e do seu controlador RST</translation>
+    </message>
+    <message>
+        <source>Tomizuka&apos;s zero-phase-error tracking controller ahead of the loop: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference previewed p samples</source>
+        <translation>O controlador de seguimento com erro de fase nulo (ZPETC) de Tomizuka antes da malha: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), com a referência antecipada em p amostras</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::PresenterView</name>
+    <message>
+        <source>Axis %1 (%2)</source>
+        <translation>Eixo %1 (%2)</translation>
+    </message>
+    <message>
+        <source>No design: %1: %2</source>
+        <translation>Sem projeto: %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ReportExporter</name>
+    <message>
+        <source>Export &amp;report (PDF)...</source>
+        <translation>Exportar relatório (&amp;PDF)...</translation>
+    </message>
+    <message>
+        <source>A PDF of the design for a lab report or a design review: plants, controllers, figures against the specification, warnings and plots</source>
+        <translation>Um PDF do projeto para um relatório de laboratório ou uma revisão de projeto: plantas, controladores, valores frente à especificação, avisos e gráficos</translation>
+    </message>
+    <message>
+        <source>Export report</source>
+        <translation>Exportar relatório</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Writing the report...</source>
+        <translation>Gravando o relatório...</translation>
+    </message>
+    <message>
+        <source>The report was not written; any existing file is unchanged.
 
 %1</source>
-            <translation>O relatório não foi gravado; um arquivo já existente permanece inalterado.
+        <translation>O relatório não foi gravado; um arquivo já existente permanece inalterado.
 
 %1</translation>
-        </message>
-        <message>
-            <source>Report written to %1 (%2 s)</source>
-            <translation>Relatório gravado em %1 (%2 s)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::ReportFigures</name>
-        <message>
-            <source>Axis %1</source>
-            <translation>Eixo %1</translation>
-        </message>
-        <message>
-            <source>Axis %1 (%2)</source>
-            <translation>Eixo %1 (%2)</translation>
-        </message>
-        <message>
-            <source>No design: %1: %2</source>
-            <translation>Sem projeto: %1: %2</translation>
-        </message>
-        <message>
-            <source>Root locus of %1 (K = 1: the design)</source>
-            <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
-        </message>
-        <message>
-            <source>Root locus of the loop 1 + K L = 0; the closed-loop poles of the design (K = 1) are marked, with the region the specification allows.</source>
-            <translation>Lugar das raízes da malha 1 + K L = 0; os polos de malha fechada do projeto (K = 1) estão marcados, com a região que a especificação permite.</translation>
-        </message>
-        <message>
-            <source>Bode diagram of %1</source>
-            <translation>Diagrama de Bode de %1</translation>
-        </message>
-        <message>
-            <source>Bode diagram of the open loop L with the gain and phase margins, and the closed loop.</source>
-            <translation>Diagrama de Bode da malha aberta L com as margens de ganho e de fase, e da malha fechada.</translation>
-        </message>
-        <message>
-            <source>No frequency analysis: %1</source>
-            <translation>Sem análise em frequência: %1</translation>
-        </message>
-        <message>
-            <source>Unit step of %1</source>
-            <translation>Degrau unitário de %1</translation>
-        </message>
-        <message>
-            <source>Unit step of the closed loop, with the specification's overshoot and settling limits.</source>
-            <translation>Degrau unitário da malha fechada, com os limites de sobressinal e de acomodação da especificação.</translation>
-        </message>
-        <message>
-            <source>No step response: %1</source>
-            <translation>Sem resposta ao degrau: %1</translation>
-        </message>
-        <message>
-            <source>Response to the trajectory: reference and output, tracking error, control voltage; the digital implementation overlaid.</source>
-            <translation>Resposta à trajetória: referência e saída, erro de seguimento, tensão de controle; com a implementação digital sobreposta.</translation>
-        </message>
-        <message>
-            <source>The XY contour: commanded and traced path, the error magnified about the path.</source>
-            <translation>O contorno XY: percurso comandado e percurso traçado, com o erro ampliado em torno do percurso.</translation>
-        </message>
-        <message>
-            <source>Ballbar view of the circle (ISO 230-4): the radial deviation magnified about the nominal centre.</source>
-            <translation>Vista de ballbar do círculo (ISO 230-4): o desvio radial ampliado em torno do centro nominal.</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::RobustnessView</name>
-        <message>
-            <source>The analysis failed: %1</source>
-            <translation>A análise falhou: %1</translation>
-        </message>
-        <message>
-            <source>Ranges (± %)</source>
-            <translation>Faixas (± %)</translation>
-        </message>
-        <message>
-            <source>random plants, drawn uniformly within the ranges</source>
-            <translation>plantas aleatórias, sorteadas uniformemente dentro das faixas</translation>
-        </message>
-        <message>
-            <source>the same seed draws the same plants</source>
-            <translation>a mesma semente sorteia as mesmas plantas</translation>
-        </message>
-        <message>
-            <source>corners</source>
-            <translation>vértices</translation>
-        </message>
-        <message>
-            <source>also every corner of the box of ranges (the deterministic worst-case search)</source>
-            <translation>também todos os vértices da caixa de faixas (a busca determinística do pior caso)</translation>
-        </message>
-        <message>
-            <source>XY contour</source>
-            <translation>Contorno XY</translation>
-        </message>
-        <message>
-            <source>Analyze both axes together on the circle or G-code program: pairs of plants, the contour error they trace, its XY band. Each range applies to the parameter of that name on every axis that has one.</source>
-            <translation>Analisar os dois eixos juntos no círculo ou no programa G-code: pares de plantas, o erro de contorno que percorrem, sua faixa XY. Cada faixa se aplica ao parâmetro com esse nome em todo eixo que o tenha.</translation>
-        </message>
-        <message>
-            <source>the signal whose envelope is drawn</source>
-            <translation>o sinal cuja envoltória é desenhada</translation>
-        </message>
-        <message>
-            <source>the figure whose distribution is drawn</source>
-            <translation>o valor cuja distribuição é desenhada</translation>
-        </message>
-        <message>
-            <source>plants</source>
-            <translation>plantas</translation>
-        </message>
-        <message>
-            <source>seed</source>
-            <translation>semente</translation>
-        </message>
-        <message>
-            <source>Run</source>
-            <translation>Executar</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Cancelar</translation>
-        </message>
-        <message>
-            <source>Load worst case</source>
-            <translation>Carregar o pior caso</translation>
-        </message>
-        <message>
-            <source>Make the worst plant found (largest RMSE) the session's plant (an undoable step)</source>
-            <translation>Tornar a pior planta encontrada (maior RMSE) a planta da sessão (um passo que pode ser desfeito)</translation>
-        </message>
-        <message>
-            <source>Set a range for the parameters you doubt and press Run.</source>
-            <translation>Defina uma faixa para os parâmetros de que você duvida e clique em Executar.</translation>
-        </message>
-        <message>
-            <source>Show</source>
-            <translation>Mostrar</translation>
-        </message>
-        <message>
-            <source>contour error</source>
-            <translation>erro de contorno</translation>
-        </message>
-        <message>
-            <source>max |contour e|</source>
-            <translation>máx |e de contorno|</translation>
-        </message>
-        <message>
-            <source>XY band</source>
-            <translation>faixa XY</translation>
-        </message>
-        <message>
-            <source>error e</source>
-            <translation>erro e</translation>
-        </message>
-        <message>
-            <source>output y</source>
-            <translation>saída y</translation>
-        </message>
-        <message>
-            <source>command u</source>
-            <translation>comando u</translation>
-        </message>
-        <message>
-            <source>RMSE</source>
-            <translation>RMSE</translation>
-        </message>
-        <message>
-            <source>max |e|</source>
-            <translation>máx |e|</translation>
-        </message>
-        <message>
-            <source>max |u|</source>
-            <translation>máx |u|</translation>
-        </message>
-        <message>
-            <source>ZPETC sensitivity</source>
-            <translation>sensibilidade do ZPETC</translation>
-        </message>
-        <message>
-            <source>XY contour: set the ranges and press Run.</source>
-            <translation>Contorno XY: defina as faixas e clique em Executar.</translation>
-        </message>
-        <message>
-            <source>Envelope</source>
-            <translation>Envoltória</translation>
-        </message>
-        <message>
-            <source>Distribution</source>
-            <translation>Distribuição</translation>
-        </message>
-        <message>
-            <source>%1 of every axis that has one: drawn uniformly within ± this share of its nominal</source>
-            <translation>%1 de todo eixo que o tenha: sorteado uniformemente dentro de ± esta fração do nominal</translation>
-        </message>
-        <message>
-            <source>%1: nominal %2; drawn uniformly within ± this share of it</source>
-            <translation>%1: nominal %2; sorteado uniformemente dentro de ± esta fração dele</translation>
-        </message>
-        <message>
-            <source>Not the current design's (computed for %1): %2</source>
-            <translation>Não é do projeto atual (calculado para %1): %2</translation>
-        </message>
-        <message>
-            <source>Computed for %1: this tab shows axis %2. Press Run to analyze it.</source>
-            <translation>Calculado para %1: esta aba mostra o eixo %2. Clique em Executar para analisá-lo.</translation>
-        </message>
-        <message>
-            <source>Computed for %1. The design has changed since: press Run to analyze the current one.</source>
-            <translation>Calculado para %1. O projeto mudou desde então: clique em Executar para analisar o atual.</translation>
-        </message>
-        <message>
-            <source>Cannot run: %1</source>
-            <translation>Não é possível executar: %1</translation>
-        </message>
-        <message>
-            <source>Running %1 plant pairs%2…</source>
-            <translation>Simulando %1 pares de plantas%2…</translation>
-        </message>
-        <message>
-            <source>Running %1 plants%2…</source>
-            <translation>Simulando %1 plantas%2…</translation>
-        </message>
-        <message>
-            <source> and the corners</source>
-            <translation> e os vértices</translation>
-        </message>
-        <message>
-            <source>Cancelling…</source>
-            <translation>Cancelando…</translation>
-        </message>
-        <message>
-            <source>Cancelled after %1 of %2 %3. </source>
-            <translation>Cancelado após %1 de %2 %3. </translation>
-        </message>
-        <message>
-            <source>%1 %2%3: </source>
-            <translation>%1 %2%3: </translation>
-        </message>
-        <message>
-            <source> + %1 corners</source>
-            <translation> + %1 vértices</translation>
-        </message>
-        <message>
-            <source>%1 % meet the spec (the nominal %2); %3 unstable.</source>
-            <translation>%1 % atendem à especificação (o nominal %2); %3 instáveis.</translation>
-        </message>
-        <message>
-            <source>does</source>
-            <translation>atende</translation>
-        </message>
-        <message>
-            <source>does not</source>
-            <translation>não atende</translation>
-        </message>
-        <message>
-            <source> The feedforward divides the RMSE by %1 on the median plant (%2 at the 95 % RMSE).</source>
-            <translation> A pré-alimentação divide o RMSE por %1 na planta mediana (%2 no RMSE de 95 %).</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>Report written to %1 (%2 s)</source>
+        <translation>Relatório gravado em %1 (%2 s)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::ReportFigures</name>
+    <message>
+        <source>Axis %1</source>
+        <translation>Eixo %1</translation>
+    </message>
+    <message>
+        <source>Axis %1 (%2)</source>
+        <translation>Eixo %1 (%2)</translation>
+    </message>
+    <message>
+        <source>No design: %1: %2</source>
+        <translation>Sem projeto: %1: %2</translation>
+    </message>
+    <message>
+        <source>Root locus of %1 (K = 1: the design)</source>
+        <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
+    </message>
+    <message>
+        <source>Root locus of the loop 1 + K L = 0; the closed-loop poles of the design (K = 1) are marked, with the region the specification allows.</source>
+        <translation>Lugar das raízes da malha 1 + K L = 0; os polos de malha fechada do projeto (K = 1) estão marcados, com a região que a especificação permite.</translation>
+    </message>
+    <message>
+        <source>Bode diagram of %1</source>
+        <translation>Diagrama de Bode de %1</translation>
+    </message>
+    <message>
+        <source>Bode diagram of the open loop L with the gain and phase margins, and the closed loop.</source>
+        <translation>Diagrama de Bode da malha aberta L com as margens de ganho e de fase, e da malha fechada.</translation>
+    </message>
+    <message>
+        <source>No frequency analysis: %1</source>
+        <translation>Sem análise em frequência: %1</translation>
+    </message>
+    <message>
+        <source>Unit step of %1</source>
+        <translation>Degrau unitário de %1</translation>
+    </message>
+    <message>
+        <source>Unit step of the closed loop, with the specification&apos;s overshoot and settling limits.</source>
+        <translation>Degrau unitário da malha fechada, com os limites de sobressinal e de acomodação da especificação.</translation>
+    </message>
+    <message>
+        <source>No step response: %1</source>
+        <translation>Sem resposta ao degrau: %1</translation>
+    </message>
+    <message>
+        <source>Response to the trajectory: reference and output, tracking error, control voltage; the digital implementation overlaid.</source>
+        <translation>Resposta à trajetória: referência e saída, erro de seguimento, tensão de controle; com a implementação digital sobreposta.</translation>
+    </message>
+    <message>
+        <source>The XY contour: commanded and traced path, the error magnified about the path.</source>
+        <translation>O contorno XY: percurso comandado e percurso traçado, com o erro ampliado em torno do percurso.</translation>
+    </message>
+    <message>
+        <source>Ballbar view of the circle (ISO 230-4): the radial deviation magnified about the nominal centre.</source>
+        <translation>Vista de ballbar do círculo (ISO 230-4): o desvio radial ampliado em torno do centro nominal.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::RobustnessView</name>
+    <message>
+        <source>The analysis failed: %1</source>
+        <translation>A análise falhou: %1</translation>
+    </message>
+    <message>
+        <source>Ranges (± %)</source>
+        <translation>Faixas (± %)</translation>
+    </message>
+    <message>
+        <source>random plants, drawn uniformly within the ranges</source>
+        <translation>plantas aleatórias, sorteadas uniformemente dentro das faixas</translation>
+    </message>
+    <message>
+        <source>the same seed draws the same plants</source>
+        <translation>a mesma semente sorteia as mesmas plantas</translation>
+    </message>
+    <message>
+        <source>corners</source>
+        <translation>vértices</translation>
+    </message>
+    <message>
+        <source>also every corner of the box of ranges (the deterministic worst-case search)</source>
+        <translation>também todos os vértices da caixa de faixas (a busca determinística do pior caso)</translation>
+    </message>
+    <message>
+        <source>XY contour</source>
+        <translation>Contorno XY</translation>
+    </message>
+    <message>
+        <source>Analyze both axes together on the circle or G-code program: pairs of plants, the contour error they trace, its XY band. Each range applies to the parameter of that name on every axis that has one.</source>
+        <translation>Analisar os dois eixos juntos no círculo ou no programa G-code: pares de plantas, o erro de contorno que percorrem, sua faixa XY. Cada faixa se aplica ao parâmetro com esse nome em todo eixo que o tenha.</translation>
+    </message>
+    <message>
+        <source>the signal whose envelope is drawn</source>
+        <translation>o sinal cuja envoltória é desenhada</translation>
+    </message>
+    <message>
+        <source>the figure whose distribution is drawn</source>
+        <translation>o valor cuja distribuição é desenhada</translation>
+    </message>
+    <message>
+        <source>plants</source>
+        <translation>plantas</translation>
+    </message>
+    <message>
+        <source>seed</source>
+        <translation>semente</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Executar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Load worst case</source>
+        <translation>Carregar o pior caso</translation>
+    </message>
+    <message>
+        <source>Make the worst plant found (largest RMSE) the session&apos;s plant (an undoable step)</source>
+        <translation>Tornar a pior planta encontrada (maior RMSE) a planta da sessão (um passo que pode ser desfeito)</translation>
+    </message>
+    <message>
+        <source>Set a range for the parameters you doubt and press Run.</source>
+        <translation>Defina uma faixa para os parâmetros de que você duvida e clique em Executar.</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>Mostrar</translation>
+    </message>
+    <message>
+        <source>contour error</source>
+        <translation>erro de contorno</translation>
+    </message>
+    <message>
+        <source>max |contour e|</source>
+        <translation>máx |e de contorno|</translation>
+    </message>
+    <message>
+        <source>XY band</source>
+        <translation>faixa XY</translation>
+    </message>
+    <message>
+        <source>error e</source>
+        <translation>erro e</translation>
+    </message>
+    <message>
+        <source>output y</source>
+        <translation>saída y</translation>
+    </message>
+    <message>
+        <source>command u</source>
+        <translation>comando u</translation>
+    </message>
+    <message>
+        <source>RMSE</source>
+        <translation>RMSE</translation>
+    </message>
+    <message>
+        <source>max |e|</source>
+        <translation>máx |e|</translation>
+    </message>
+    <message>
+        <source>max |u|</source>
+        <translation>máx |u|</translation>
+    </message>
+    <message>
+        <source>ZPETC sensitivity</source>
+        <translation>sensibilidade do ZPETC</translation>
+    </message>
+    <message>
+        <source>XY contour: set the ranges and press Run.</source>
+        <translation>Contorno XY: defina as faixas e clique em Executar.</translation>
+    </message>
+    <message>
+        <source>Envelope</source>
+        <translation>Envoltória</translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation>Distribuição</translation>
+    </message>
+    <message>
+        <source>%1 of every axis that has one: drawn uniformly within ± this share of its nominal</source>
+        <translation>%1 de todo eixo que o tenha: sorteado uniformemente dentro de ± esta fração do nominal</translation>
+    </message>
+    <message>
+        <source>%1: nominal %2; drawn uniformly within ± this share of it</source>
+        <translation>%1: nominal %2; sorteado uniformemente dentro de ± esta fração dele</translation>
+    </message>
+    <message>
+        <source>Not the current design&apos;s (computed for %1): %2</source>
+        <translation>Não é do projeto atual (calculado para %1): %2</translation>
+    </message>
+    <message>
+        <source>Computed for %1: this tab shows axis %2. Press Run to analyze it.</source>
+        <translation>Calculado para %1: esta aba mostra o eixo %2. Clique em Executar para analisá-lo.</translation>
+    </message>
+    <message>
+        <source>Computed for %1. The design has changed since: press Run to analyze the current one.</source>
+        <translation>Calculado para %1. O projeto mudou desde então: clique em Executar para analisar o atual.</translation>
+    </message>
+    <message>
+        <source>Cannot run: %1</source>
+        <translation>Não é possível executar: %1</translation>
+    </message>
+    <message>
+        <source>Running %1 plant pairs%2…</source>
+        <translation>Simulando %1 pares de plantas%2…</translation>
+    </message>
+    <message>
+        <source>Running %1 plants%2…</source>
+        <translation>Simulando %1 plantas%2…</translation>
+    </message>
+    <message>
+        <source> and the corners</source>
+        <translation> e os vértices</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Cancelando…</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 of %2 %3. </source>
+        <translation>Cancelado após %1 de %2 %3. </translation>
+    </message>
+    <message>
+        <source>%1 %2%3: </source>
+        <translation>%1 %2%3: </translation>
+    </message>
+    <message>
+        <source> + %1 corners</source>
+        <translation> + %1 vértices</translation>
+    </message>
+    <message>
+        <source>%1 % meet the spec (the nominal %2); %3 unstable.</source>
+        <translation>%1 % atendem à especificação (o nominal %2); %3 instáveis.</translation>
+    </message>
+    <message>
+        <source>does</source>
+        <translation>atende</translation>
+    </message>
+    <message>
+        <source>does not</source>
+        <translation>não atende</translation>
+    </message>
+    <message>
+        <source> The feedforward divides the RMSE by %1 on the median plant (%2 at the 95 % RMSE).</source>
+        <translation> A pré-alimentação divide o RMSE por %1 na planta mediana (%2 no RMSE de 95 %).</translation>
+    </message>
+    <message>
+        <source>
 Worst: RMSE %1 mm at %2.</source>
-            <translation>
+        <translation>
 Pior: RMSE %1 mm em %2.</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>
 Unstable, e.g. at %1.</source>
-            <translation>
+        <translation>
 Instável, p. ex. em %1.</translation>
-        </message>
-        <message>
-            <source>plant pairs</source>
-            <translation>pares de plantas</translation>
-        </message>
-        <message>
-            <source>max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.</source>
-            <translation>erro de contorno máx: mediana %1 mm, 95 % %2 mm (nominal %3 mm); %4 instáveis.</translation>
-        </message>
-        <message>
-            <source>no stable pair; %1 unstable.</source>
-            <translation>nenhum par estável; %1 instáveis.</translation>
-        </message>
-        <message>
-            <source>
+    </message>
+    <message>
+        <source>plant pairs</source>
+        <translation>pares de plantas</translation>
+    </message>
+    <message>
+        <source>max contour error median %1 mm, 95 % %2 mm (nominal %3 mm); %4 unstable.</source>
+        <translation>erro de contorno máx: mediana %1 mm, 95 % %2 mm (nominal %3 mm); %4 instáveis.</translation>
+    </message>
+    <message>
+        <source>no stable pair; %1 unstable.</source>
+        <translation>nenhum par estável; %1 instáveis.</translation>
+    </message>
+    <message>
+        <source>
 Worst: %1 mm at %2.</source>
-            <translation>
+        <translation>
 Pior: %1 mm em %2.</translation>
-        </message>
-        <message>
-            <source>Contour error of the plant pairs</source>
-            <translation>Erro de contorno dos pares de plantas</translation>
-        </message>
-        <message>
-            <source>contour e (mm)</source>
-            <translation>e de contorno (mm)</translation>
-        </message>
-        <message>
-            <source>max |contour e| (mm)</source>
-            <translation>máx |e de contorno| (mm)</translation>
-        </message>
-        <message>
-            <source>Error e of the plants</source>
-            <translation>Erro e das plantas</translation>
-        </message>
-        <message>
-            <source>Output y of the plants</source>
-            <translation>Saída y das plantas</translation>
-        </message>
-        <message>
-            <source>Command u of the plants</source>
-            <translation>Comando u das plantas</translation>
-        </message>
-        <message>
-            <source>e (mm)</source>
-            <translation>e (mm)</translation>
-        </message>
-        <message>
-            <source>y (mm)</source>
-            <translation>y (mm)</translation>
-        </message>
-        <message>
-            <source>u (V)</source>
-            <translation>u (V)</translation>
-        </message>
-        <message>
-            <source>For a pole-placement axis with ZPETC.</source>
-            <translation>Para um eixo por alocação de polos com ZPETC.</translation>
-        </message>
-        <message>
-            <source>RMSE (mm)</source>
-            <translation>RMSE (mm)</translation>
-        </message>
-        <message>
-            <source>max |e| (mm)</source>
-            <translation>máx |e| (mm)</translation>
-        </message>
-        <message>
-            <source>max |u| (V)</source>
-            <translation>máx |u| (V)</translation>
-        </message>
-        <message>
-            <source>Load the worst plant pair of the contour analysis</source>
-            <translation>Carregar o pior par de plantas da análise de contorno</translation>
-        </message>
-        <message>
-            <source>Load the worst plant of the robustness analysis</source>
-            <translation>Carregar a pior planta da análise de robustez</translation>
-        </message>
-        <message>
-            <source>Run the analysis: the session's unchanged controller on every plant drawn within the ranges (and the box's corners), each on the trajectory</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Stop the analysis; the plants run so far are shown</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::RootLocusPlot</name>
-        <message>
-            <source>Root locus</source>
-            <translation>Lugar das raízes</translation>
-        </message>
-        <message>
-            <source>real</source>
-            <translation>real</translation>
-        </message>
-        <message>
-            <source>imaginary</source>
-            <translation>imaginário</translation>
-        </message>
-        <message>
-            <source>open-loop poles</source>
-            <translation>polos de malha aberta</translation>
-        </message>
-        <message>
-            <source>open-loop zeros</source>
-            <translation>zeros de malha aberta</translation>
-        </message>
-        <message>
-            <source>closed-loop poles</source>
-            <translation>polos de malha fechada</translation>
-        </message>
-        <message>
-            <source>hover a branch: K, ζ, ωn; click: use that gain</source>
-            <translation>passe o mouse sobre um ramo: K, ζ, ωn; clique: usar esse ganho</translation>
-        </message>
-        <message>
-            <source>open-loop zeros (drag to move)</source>
-            <translation>zeros de malha aberta (arraste para mover)</translation>
-        </message>
-        <message>
-            <source>the locus is incomplete</source>
-            <translation>o lugar está incompleto</translation>
-        </message>
-        <message>
-            <source>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</source>
-            <translation>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</translation>
-        </message>
-        <message>
-            <source>Root locus: the closed-loop poles of 1 + K L(s) = 0 as the loop gain K goes from 0 to ∞ (K = 1 is the design), with the specification's ζ wedge and settling line; click a point to apply its gain, drag a closed-loop pole along the locus or a PID's zero.</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::RootLocusView</name>
-        <message>
-            <source>Root locus of %1</source>
-            <translation>Lugar das raízes de %1</translation>
-        </message>
-        <message>
-            <source>Root locus of %1 (K = 1: the design)</source>
-            <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::SensitivityPlot</name>
-        <message>
-            <source>ZPETC sensitivity</source>
-            <translation>sensibilidade do ZPETC</translation>
-        </message>
-        <message>
-            <source>mismatch (% of ranges)</source>
-            <translation>discrepância (% das faixas)</translation>
-        </message>
-        <message>
-            <source>RMSE (mm)</source>
-            <translation>RMSE (mm)</translation>
-        </message>
-        <message>
-            <source>with ZPETC</source>
-            <translation>com ZPETC</translation>
-        </message>
-        <message>
-            <source>loop alone</source>
-            <translation>só a malha</translation>
-        </message>
-        <message>
-            <source>Not computed yet.</source>
-            <translation>Ainda não calculado.</translation>
-        </message>
-        <message>
-            <source>No stable plant at any mismatch.</source>
-            <translation>Nenhuma planta estável em nenhuma discrepância.</translation>
-        </message>
-        <message>
-            <source>ZPETC sensitivity: the RMSE (mm) of the run with and without the feedforward as the plant mismatch grows from the nominal model (0 %) to the ranges set (100 %), each point over the same seeded plants.</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::SessionFileController</name>
-        <message>
-            <source>&amp;New</source>
-            <translation>&amp;Novo</translation>
-        </message>
-        <message>
-            <source>&amp;Open...</source>
-            <translation>&amp;Abrir...</translation>
-        </message>
-        <message>
-            <source>Open &amp;Recent</source>
-            <translation>Abrir &amp;recente</translation>
-        </message>
-        <message>
-            <source>&amp;Save</source>
-            <translation>&amp;Salvar</translation>
-        </message>
-        <message>
-            <source>Save &amp;As...</source>
-            <translation>Salvar c&amp;omo...</translation>
-        </message>
-        <message>
-            <source>&amp;Export</source>
-            <translation>E&amp;xportar</translation>
-        </message>
-        <message>
-            <source>Coefficients as &amp;JSON...</source>
-            <translation>Coeficientes como &amp;JSON...</translation>
-        </message>
-        <message>
-            <source>Firmware &amp;C header...</source>
-            <translation>Cabeçalho &amp;C para firmware...</translation>
-        </message>
-        <message>
-            <source>&amp;Octave/MATLAB script...</source>
-            <translation>Script &amp;Octave/MATLAB...</translation>
-        </message>
-        <message>
-            <source>Simulated signals as CS&amp;V...</source>
-            <translation>Sinais simulados como CS&amp;V...</translation>
-        </message>
-        <message>
-            <source>Not for a G-code trajectory: the script computes the reference in closed form, and a program's feed profile has none. Export the simulated signals as CSV instead.</source>
-            <translation>Não para uma trajetória G-code: o script calcula a referência em forma fechada, e o perfil de avanço de um programa não tem uma. Exporte os sinais simulados como CSV.</translation>
-        </message>
-        <message>
-            <source>A GNU Octave / MATLAB script with each axis' plant, controller and closed loop, plotting the response to the trajectory</source>
-            <translation>Um script GNU Octave / MATLAB com a planta, o controlador e a malha fechada de cada eixo, traçando a resposta à trajetória</translation>
-        </message>
-        <message>
-            <source>XY Tune</source>
-            <translation>XY Tune</translation>
-        </message>
-        <message>
-            <source>The design has unsaved changes. Save them first?</source>
-            <translation>O projeto tem alterações não salvas. Salvá-las primeiro?</translation>
-        </message>
-        <message>
-            <source>New session with the paper's default design</source>
-            <translation>Nova sessão com o projeto padrão do artigo</translation>
-        </message>
-        <message>
-            <source>Open session</source>
-            <translation>Abrir sessão</translation>
-        </message>
-        <message>
-            <source>XY Tune sessions (*.json);;All files (*)</source>
-            <translation>Sessões do XY Tune (*.json);;Todos os arquivos (*)</translation>
-        </message>
-        <message>
-            <source>%1 could not be opened; the current design is unchanged.
+    </message>
+    <message>
+        <source>Contour error of the plant pairs</source>
+        <translation>Erro de contorno dos pares de plantas</translation>
+    </message>
+    <message>
+        <source>contour e (mm)</source>
+        <translation>e de contorno (mm)</translation>
+    </message>
+    <message>
+        <source>max |contour e| (mm)</source>
+        <translation>máx |e de contorno| (mm)</translation>
+    </message>
+    <message>
+        <source>Error e of the plants</source>
+        <translation>Erro e das plantas</translation>
+    </message>
+    <message>
+        <source>Output y of the plants</source>
+        <translation>Saída y das plantas</translation>
+    </message>
+    <message>
+        <source>Command u of the plants</source>
+        <translation>Comando u das plantas</translation>
+    </message>
+    <message>
+        <source>e (mm)</source>
+        <translation>e (mm)</translation>
+    </message>
+    <message>
+        <source>y (mm)</source>
+        <translation>y (mm)</translation>
+    </message>
+    <message>
+        <source>u (V)</source>
+        <translation>u (V)</translation>
+    </message>
+    <message>
+        <source>For a pole-placement axis with ZPETC.</source>
+        <translation>Para um eixo por alocação de polos com ZPETC.</translation>
+    </message>
+    <message>
+        <source>RMSE (mm)</source>
+        <translation>RMSE (mm)</translation>
+    </message>
+    <message>
+        <source>max |e| (mm)</source>
+        <translation>máx |e| (mm)</translation>
+    </message>
+    <message>
+        <source>max |u| (V)</source>
+        <translation>máx |u| (V)</translation>
+    </message>
+    <message>
+        <source>Load the worst plant pair of the contour analysis</source>
+        <translation>Carregar o pior par de plantas da análise de contorno</translation>
+    </message>
+    <message>
+        <source>Load the worst plant of the robustness analysis</source>
+        <translation>Carregar a pior planta da análise de robustez</translation>
+    </message>
+    <message>
+        <source>Run the analysis: the session&apos;s unchanged controller on every plant drawn within the ranges (and the box&apos;s corners), each on the trajectory</source>
+        <translation>Executar a análise: o controlador da sessão, inalterado, em cada planta sorteada dentro das faixas (e nos vértices da caixa), cada uma na trajetória</translation>
+    </message>
+    <message>
+        <source>Stop the analysis; the plants run so far are shown</source>
+        <translation>Interromper a análise; as plantas simuladas até aqui são mostradas</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::RootLocusPlot</name>
+    <message>
+        <source>Root locus</source>
+        <translation>Lugar das raízes</translation>
+    </message>
+    <message>
+        <source>real</source>
+        <translation>real</translation>
+    </message>
+    <message>
+        <source>imaginary</source>
+        <translation>imaginário</translation>
+    </message>
+    <message>
+        <source>open-loop poles</source>
+        <translation>polos de malha aberta</translation>
+    </message>
+    <message>
+        <source>open-loop zeros</source>
+        <translation>zeros de malha aberta</translation>
+    </message>
+    <message>
+        <source>closed-loop poles</source>
+        <translation>polos de malha fechada</translation>
+    </message>
+    <message>
+        <source>hover a branch: K, ζ, ωn; click: use that gain</source>
+        <translation>passe o mouse sobre um ramo: K, ζ, ωn; clique: usar esse ganho</translation>
+    </message>
+    <message>
+        <source>open-loop zeros (drag to move)</source>
+        <translation>zeros de malha aberta (arraste para mover)</translation>
+    </message>
+    <message>
+        <source>the locus is incomplete</source>
+        <translation>o lugar está incompleto</translation>
+    </message>
+    <message>
+        <source>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</source>
+        <translation>K = %1   ζ = %2   ωn = %3 rad/s   s = %4 %5 %6j</translation>
+    </message>
+    <message>
+        <source>Root locus: the closed-loop poles of 1 + K L(s) = 0 as the loop gain K goes from 0 to ∞ (K = 1 is the design), with the specification&apos;s ζ wedge and settling line; click a point to apply its gain, drag a closed-loop pole along the locus or a PID&apos;s zero.</source>
+        <translation>Lugar das raízes: os polos de malha fechada de 1 + K L(s) = 0 à medida que o ganho de malha K vai de 0 a ∞ (K = 1 é o projeto), com a cunha de ζ e a linha de acomodação da especificação; clique num ponto para aplicar seu ganho, arraste um polo de malha fechada ao longo do lugar ou um zero do PID.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::RootLocusView</name>
+    <message>
+        <source>Root locus of %1</source>
+        <translation>Lugar das raízes de %1</translation>
+    </message>
+    <message>
+        <source>Root locus of %1 (K = 1: the design)</source>
+        <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::SensitivityPlot</name>
+    <message>
+        <source>ZPETC sensitivity</source>
+        <translation>sensibilidade do ZPETC</translation>
+    </message>
+    <message>
+        <source>mismatch (% of ranges)</source>
+        <translation>discrepância (% das faixas)</translation>
+    </message>
+    <message>
+        <source>RMSE (mm)</source>
+        <translation>RMSE (mm)</translation>
+    </message>
+    <message>
+        <source>with ZPETC</source>
+        <translation>com ZPETC</translation>
+    </message>
+    <message>
+        <source>loop alone</source>
+        <translation>só a malha</translation>
+    </message>
+    <message>
+        <source>Not computed yet.</source>
+        <translation>Ainda não calculado.</translation>
+    </message>
+    <message>
+        <source>No stable plant at any mismatch.</source>
+        <translation>Nenhuma planta estável em nenhuma discrepância.</translation>
+    </message>
+    <message>
+        <source>ZPETC sensitivity: the RMSE (mm) of the run with and without the feedforward as the plant mismatch grows from the nominal model (0 %) to the ranges set (100 %), each point over the same seeded plants.</source>
+        <translation>Sensibilidade do ZPETC: o RMSE (mm) da simulação com e sem a pré-alimentação à medida que a discrepância da planta cresce do modelo nominal (0 %) até as faixas definidas (100 %), cada ponto sobre as mesmas plantas sorteadas com a mesma semente.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::SessionFileController</name>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Novo</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Abrir...</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Abrir &amp;recente</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Salvar</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Salvar c&amp;omo...</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>E&amp;xportar</translation>
+    </message>
+    <message>
+        <source>Coefficients as &amp;JSON...</source>
+        <translation>Coeficientes como &amp;JSON...</translation>
+    </message>
+    <message>
+        <source>Firmware &amp;C header...</source>
+        <translation>Cabeçalho &amp;C para firmware...</translation>
+    </message>
+    <message>
+        <source>&amp;Octave/MATLAB script...</source>
+        <translation>Script &amp;Octave/MATLAB...</translation>
+    </message>
+    <message>
+        <source>Simulated signals as CS&amp;V...</source>
+        <translation>Sinais simulados como CS&amp;V...</translation>
+    </message>
+    <message>
+        <source>Not for a G-code trajectory: the script computes the reference in closed form, and a program&apos;s feed profile has none. Export the simulated signals as CSV instead.</source>
+        <translation>Não para uma trajetória G-code: o script calcula a referência em forma fechada, e o perfil de avanço de um programa não tem uma. Exporte os sinais simulados como CSV.</translation>
+    </message>
+    <message>
+        <source>A GNU Octave / MATLAB script with each axis&apos; plant, controller and closed loop, plotting the response to the trajectory</source>
+        <translation>Um script GNU Octave / MATLAB com a planta, o controlador e a malha fechada de cada eixo, traçando a resposta à trajetória</translation>
+    </message>
+    <message>
+        <source>XY Tune</source>
+        <translation>XY Tune</translation>
+    </message>
+    <message>
+        <source>The design has unsaved changes. Save them first?</source>
+        <translation>O projeto tem alterações não salvas. Salvá-las primeiro?</translation>
+    </message>
+    <message>
+        <source>New session with the paper&apos;s default design</source>
+        <translation>Nova sessão com o projeto padrão do artigo</translation>
+    </message>
+    <message>
+        <source>Open session</source>
+        <translation>Abrir sessão</translation>
+    </message>
+    <message>
+        <source>XY Tune sessions (*.json);;All files (*)</source>
+        <translation>Sessões do XY Tune (*.json);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>%1 could not be opened; the current design is unchanged.
 
 %2</source>
-            <translation>%1 não pôde ser aberto; o projeto atual não foi alterado.
+        <translation>%1 não pôde ser aberto; o projeto atual não foi alterado.
 
 %2</translation>
-        </message>
-        <message>
-            <source>Opened with notes:
+    </message>
+    <message>
+        <source>Opened with notes:
 %1</source>
-            <translation>Aberto com observações:
+        <translation>Aberto com observações:
 %1</translation>
-        </message>
-        <message>
-            <source>Opened %1</source>
-            <translation>%1 aberto</translation>
-        </message>
-        <message>
-            <source>Save session</source>
-            <translation>Salvar sessão</translation>
-        </message>
-        <message>
-            <source>XY Tune sessions (*.json)</source>
-            <translation>Sessões do XY Tune (*.json)</translation>
-        </message>
-        <message>
-            <source>The session was not saved; any existing file is unchanged.
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 aberto</translation>
+    </message>
+    <message>
+        <source>Save session</source>
+        <translation>Salvar sessão</translation>
+    </message>
+    <message>
+        <source>XY Tune sessions (*.json)</source>
+        <translation>Sessões do XY Tune (*.json)</translation>
+    </message>
+    <message>
+        <source>The session was not saved; any existing file is unchanged.
 
 %1</source>
-            <translation>A sessão não foi salva; um arquivo existente não foi alterado.
+        <translation>A sessão não foi salva; um arquivo existente não foi alterado.
 
 %1</translation>
-        </message>
-        <message>
-            <source>Saved %1</source>
-            <translation>%1 salvo</translation>
-        </message>
-        <message>
-            <source>Export</source>
-            <translation>Exportar</translation>
-        </message>
-        <message>
-            <source>Exported %1</source>
-            <translation>%1 exportado</translation>
-        </message>
-        <message>
-            <source>JSON (*.json)</source>
-            <translation>JSON (*.json)</translation>
-        </message>
-        <message>
-            <source>C header (*.h)</source>
-            <translation>Cabeçalho C (*.h)</translation>
-        </message>
-        <message>
-            <source>Octave/MATLAB script (*.m)</source>
-            <translation>Script Octave/MATLAB (*.m)</translation>
-        </message>
-        <message>
-            <source>CSV (*.csv)</source>
-            <translation>CSV (*.csv)</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::SnapshotCompareDialog</name>
-        <message>
-            <source>Compare designs</source>
-            <translation>Comparar projetos</translation>
-        </message>
-        <message>
-            <source>Current design</source>
-            <translation>Projeto atual</translation>
-        </message>
-        <message>
-            <source>Compare</source>
-            <translation>Comparar</translation>
-        </message>
-        <message>
-            <source>with</source>
-            <translation>com</translation>
-        </message>
-        <message>
-            <source>The first design of the comparison: the current one or a stored snapshot (Design › Store snapshot)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The second design of the comparison; the table lists both designs' settings and figures side by side</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::StepPlot</name>
-        <message>
-            <source>Step response</source>
-            <translation>Resposta ao degrau</translation>
-        </message>
-        <message>
-            <source>time after the step (s)</source>
-            <translation>tempo após o degrau (s)</translation>
-        </message>
-        <message>
-            <source>output (unit step)</source>
-            <translation>saída (degrau unitário)</translation>
-        </message>
-        <message>
-            <source>overshoot limit</source>
-            <translation>limite de sobressinal</translation>
-        </message>
-        <message>
-            <source>settling band</source>
-            <translation>faixa de acomodação</translation>
-        </message>
-        <message>
-            <source>violates the spec</source>
-            <translation>viola a especificação</translation>
-        </message>
-        <message>
-            <source>rise 10–90 %</source>
-            <translation>subida 10–90 %</translation>
-        </message>
-        <message>
-            <source>peak</source>
-            <translation>pico</translation>
-        </message>
-        <message>
-            <source>settling (2 %)</source>
-            <translation>acomodação (2 %)</translation>
-        </message>
-        <message>
-            <source>hover the plot: t and y of the step the axis runs</source>
-            <translation>passe o mouse sobre o gráfico: t e y do degrau que o eixo executa</translation>
-        </message>
-        <message>
-            <source>unstable: no step response (the closed loop has a pole outside the stability region)</source>
-            <translation>instável: sem resposta ao degrau (a malha fechada tem um polo fora da região de estabilidade)</translation>
-        </message>
-        <message>
-            <source>overshoot ≤ %1 %</source>
-            <translation>sobressinal ≤ %1 %</translation>
-        </message>
-        <message>
-            <source>overshoot limit %1 (%2 %) is above the view</source>
-            <translation>o limite de sobressinal %1 (%2 %) está acima da vista</translation>
-        </message>
-        <message>
-            <source>±%1 % after %2 s</source>
-            <translation>±%1 % após %2 s</translation>
-        </message>
-        <message>
-            <source>settling limit %1 s lies beyond the right edge (%2 s)</source>
-            <translation>o limite de acomodação %1 s fica além da borda direita (%2 s)</translation>
-        </message>
-        <message>
-            <source>  rise %1 s</source>
-            <translation>  subida %1 s</translation>
-        </message>
-        <message>
-            <source>the response never reaches 90 % of its final value in view</source>
-            <translation>a resposta nunca atinge 90 % do valor final na vista</translation>
-        </message>
-        <message>
-            <source>peak %1 at %2 s (%3 %)</source>
-            <translation>pico %1 em %2 s (%3 %)</translation>
-        </message>
-        <message>
-            <source>: beyond the right edge</source>
-            <translation>: além da borda direita</translation>
-        </message>
-        <message>
-            <source>settles %1 s</source>
-            <translation>acomoda em %1 s</translation>
-        </message>
-        <message>
-            <source>red: the response leaves the specification's envelope</source>
-            <translation>vermelho: a resposta sai da envoltória da especificação</translation>
-        </message>
-        <message>
-            <source>t = %1 s   y = %2   (%3)</source>
-            <translation>t = %1 s   y = %2   (%3)</translation>
-        </message>
-        <message>
-            <source>Unit step of the closed loop (not the trajectory): output against time (s), with the rise, peak and settling (2 % band) markers and the specification's overshoot and settling envelope; samples outside it are red.</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::StepResponseView</name>
-        <message>
-            <source>Unit step of %1</source>
-            <translation>Degrau unitário de %1</translation>
-        </message>
-        <message>
-            <source>No step response: %1</source>
-            <translation>Sem resposta ao degrau: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::TimeResponsePlot</name>
-        <message>
-            <source>position (mm)</source>
-            <translation>posição (mm)</translation>
-        </message>
-        <message>
-            <source>error (mm)</source>
-            <translation>erro (mm)</translation>
-        </message>
-        <message>
-            <source>u (V)</source>
-            <translation>u (V)</translation>
-        </message>
-        <message>
-            <source>time (s)</source>
-            <translation>tempo (s)</translation>
-        </message>
-        <message>
-            <source>reference r</source>
-            <translation>referência r</translation>
-        </message>
-        <message>
-            <source>snapshot</source>
-            <translation>instantâneo</translation>
-        </message>
-        <message>
-            <source>digital y</source>
-            <translation>y digital</translation>
-        </message>
-        <message>
-            <source>digital e</source>
-            <translation>e digital</translation>
-        </message>
-        <message>
-            <source>digital u (held)</source>
-            <translation>u digital (retido)</translation>
-        </message>
-        <message>
-            <source>y without the shaper</source>
-            <translation>y sem o modelador</translation>
-        </message>
-        <message>
-            <source>e without the shaper</source>
-            <translation>e sem o modelador</translation>
-        </message>
-        <message>
-            <source>output y</source>
-            <translation>saída y</translation>
-        </message>
-        <message>
-            <source>error e</source>
-            <translation>erro e</translation>
-        </message>
-        <message>
-            <source>table stuck</source>
-            <translation>mesa presa</translation>
-        </message>
-        <message>
-            <source>clipped</source>
-            <translation>limitado</translation>
-        </message>
-        <message>
-            <source>snapshot u</source>
-            <translation>u do instantâneo</translation>
-        </message>
-        <message>
-            <source>snapshot e</source>
-            <translation>e do instantâneo</translation>
-        </message>
-        <message>
-            <source>feedforward part</source>
-            <translation>parte de pré-alimentação</translation>
-        </message>
-        <message>
-            <source>feedback part</source>
-            <translation>parte de realimentação</translation>
-        </message>
-        <message>
-            <source>control u</source>
-            <translation>controle u</translation>
-        </message>
-        <message>
-            <source>linear loop: |u| is not clipped at ±%1 V here (the shaded time would saturate)</source>
-            <translation>malha linear: |u| não é limitado em ±%1 V aqui (o tempo sombreado saturaria)</translation>
-        </message>
-        <message>
-            <source>%1: not simulated (%2: %3)</source>
-            <translation>%1: não simulado (%2: %3)</translation>
-        </message>
-        <message>
-            <source>%1 — time response</source>
-            <translation>%1 — resposta no tempo</translation>
-        </message>
-        <message>
-            <source>  (UNSTABLE closed loop)</source>
-            <translation>  (malha fechada INSTÁVEL)</translation>
-        </message>
-        <message>
-            <source>digital y (Ts %1 s, held u)</source>
-            <translation>y digital (Ts %1 s, u retido)</translation>
-        </message>
-        <message>
-            <source>digital y (encoder, DAC, limit)</source>
-            <translation>y digital (encoder, DAC, limite)</translation>
-        </message>
-        <message>
-            <source>snapshot «%1» (y, e, u)</source>
-            <translation>instantâneo «%1» (y, e, u)</translation>
-        </message>
-        <message>
-            <source>Time response of the selected axis on the trajectory: reference r, output y and error e = r − y (mm), and the command u (V) with the ±umax band and clipped intervals shaded; the digital implementation's run as a translucent band.</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::TrajectoryEditor</name>
-        <message>
-            <source>Point-to-point (both axes)</source>
-            <translation>Ponto a ponto (os dois eixos)</translation>
-        </message>
-        <message>
-            <source>Circle (x = R sin ωt, y = R cos ωt)</source>
-            <translation>Círculo (x = R sin ωt, y = R cos ωt)</translation>
-        </message>
-        <message>
-            <source>G-code program (x and y along its feed profile)</source>
-            <translation>Programa G-code (x e y ao longo do seu perfil de avanço)</translation>
-        </message>
-        <message>
-            <source>Trajectory kind</source>
-            <translation>Tipo de trajetória</translation>
-        </message>
-        <message>
-            <source>cubic</source>
-            <translation>cúbica</translation>
-        </message>
-        <message>
-            <source>quintic</source>
-            <translation>quíntica</translation>
-        </message>
-        <message>
-            <source>Move profile</source>
-            <translation>Perfil do movimento</translation>
-        </message>
-        <message>
-            <source>The move's profile: Braga et al.'s cubic, whose acceleration steps at the start and the end, or the quintic, whose acceleration starts and ends at zero, so a jerk feedforward sees no spike</source>
-            <translation>O perfil do movimento: a cúbica de Braga et al., cuja aceleração salta no início e no fim, ou a quíntica, cuja aceleração começa e termina em zero, de modo que uma pré-alimentação de jerk não vê pico</translation>
-        </message>
-        <message>
-            <source>x0 (mm)</source>
-            <translation>x0 (mm)</translation>
-        </message>
-        <message>
-            <source>xf (mm)</source>
-            <translation>xf (mm)</translation>
-        </message>
-        <message>
-            <source>t0 (s)</source>
-            <translation>t0 (s)</translation>
-        </message>
-        <message>
-            <source>tf (s)</source>
-            <translation>tf (s)</translation>
-        </message>
-        <message>
-            <source>v0 (mm/s)</source>
-            <translation>v0 (mm/s)</translation>
-        </message>
-        <message>
-            <source>vf (mm/s)</source>
-            <translation>vf (mm/s)</translation>
-        </message>
-        <message>
-            <source>Radius (mm)</source>
-            <translation>Raio (mm)</translation>
-        </message>
-        <message>
-            <source>ω (rad/s)</source>
-            <translation>ω (rad/s)</translation>
-        </message>
-        <message>
-            <source>Ramp-in (s)</source>
-            <translation>Rampa de entrada (s)</translation>
-        </message>
-        <message>
-            <source>0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle; a G-code program always runs its feed profile's time</source>
-            <translation>0 = automático: tf para uma cúbica, uma volta mais a rampa de entrada para um círculo; um programa G-code sempre dura o tempo do seu perfil de avanço</translation>
-        </message>
-        <message>
-            <source>Duration (s)</source>
-            <translation>Duração (s)</translation>
-        </message>
-        <message>
-            <source>Step dt (s)</source>
-            <translation>Passo dt (s)</translation>
-        </message>
-        <message>
-            <source>G-code program</source>
-            <translation>Programa G-code</translation>
-        </message>
-        <message>
-            <source>no program</source>
-            <translation>nenhum programa</translation>
-        </message>
-        <message>
-            <source>Open…</source>
-            <translation>Abrir…</translation>
-        </message>
-        <message>
-            <source>Read a G-code program (.nc); it is kept in the session</source>
-            <translation>Ler um programa G-code (.nc); ele é guardado na sessão</translation>
-        </message>
-        <message>
-            <source>Program</source>
-            <translation>Programa</translation>
-        </message>
-        <message>
-            <source>Example programs</source>
-            <translation>Programas de exemplo</translation>
-        </message>
-        <message>
-            <source>Examples…</source>
-            <translation>Exemplos…</translation>
-        </message>
-        <message>
-            <source>Feed scale</source>
-            <translation>Escala de avanço</translation>
-        </message>
-        <message>
-            <source>Max accel. (mm/s²)</source>
-            <translation>Acel. máx (mm/s²)</translation>
-        </message>
-        <message>
-            <source>Max jerk (mm/s³)</source>
-            <translation>Jerk máx (mm/s³)</translation>
-        </message>
-        <message>
-            <source>Open a G-code program</source>
-            <translation>Abrir um programa G-code</translation>
-        </message>
-        <message>
-            <source>G-code programs (*.nc *.ngc *.gcode *.tap);;All files (*)</source>
-            <translation>Programas G-code (*.nc *.ngc *.gcode *.tap);;Todos os arquivos (*)</translation>
-        </message>
-        <message>
-            <source>%1: %2</source>
-            <translation>%1: %2</translation>
-        </message>
-        <message>
-            <source>Open a program or pick an example.</source>
-            <translation>Abra um programa ou escolha um exemplo.</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n motion block(s), %1 mm, run %2 s</source>
-            <translation>
-                <numerusform>%n bloco de movimento, %1 mm, execução %2 s</numerusform>
-                <numerusform>%n blocos de movimento, %1 mm, execução %2 s</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>, %n sharp corner(s)</source>
-            <translation>
-                <numerusform>, %n canto vivo</numerusform>
-                <numerusform>, %n cantos vivos</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>; one full circle: ISO 230-4 test</source>
-            <translation>; um círculo completo: ensaio ISO 230-4</translation>
-        </message>
-        <message numerus="yes">
-            <source>; %n warning(s)</source>
-            <translation>
-                <numerusform>; %n aviso</numerusform>
-                <numerusform>; %n avisos</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>cubic move</source>
-            <translation>movimento cúbico</translation>
-        </message>
-        <message>
-            <source>circle</source>
-            <translation>círculo</translation>
-        </message>
-        <message>
-            <source>The plots still show the session's %1: a G-code trajectory needs a program (Open… or pick an example).</source>
-            <translation>Os gráficos ainda mostram o %1 da sessão: uma trajetória G-code precisa de um programa (Abrir… ou escolha um exemplo).</translation>
-        </message>
-        <message>
-            <source>The plots still show the session's %1: the trajectory chosen in the editor is not valid yet (see the field marked red).</source>
-            <translation>Os gráficos ainda mostram o %1 da sessão: a trajetória escolhida no editor ainda não é válida (veja o campo marcado em vermelho).</translation>
-        </message>
-        <message>
-            <source>no program: open one or pick an example</source>
-            <translation>nenhum programa: abra um ou escolha um exemplo</translation>
-        </message>
-        <message>
-            <source>tf: must be later than t0</source>
-            <translation>tf: deve ser posterior a t0</translation>
-        </message>
-        <message>
-            <source>%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory</source>
-            <translation>%1: uma simulação de %2 s com dt = %3 s precisa de %4 amostras; cabem no máximo %5 na memória</translation>
-        </message>
-        <message>
-            <source>a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory</source>
-            <translation>uma simulação de %1 s com dt = %2 s precisa de %3 amostras; cabem no máximo %4 na memória</translation>
-        </message>
-        <message>
-            <source>The commanded motion both axes follow: a point-to-point move, a circle (x = R sin ωt, y = R cos ωt) or a G-code program along its feed profile</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The example programs shipped with XY Tune (circles, a square, a star, an engraving): choose one to load it as the program</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Start position x0 (mm) of the point-to-point move, held before t0</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>End position xf (mm) of the point-to-point move, reached at tf</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Start time t0 (s) of the move</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>End time tf (s) of the move: the cubic (or quintic) joins x0 at t0 to xf at tf with the end velocities v0, vf (Braga et al. Eq. 4–6)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Velocity v0 (mm/s) at the start of the move</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Velocity vf (mm/s) at the end of the move</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Radius R (mm) of the circle x = R sin ωt, y = R cos ωt</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Angular speed ω (rad/s) of the circle: one revolution takes 2π/ω seconds</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Ramp-in (s): the circle's speed rises smoothly from 0 to ω over this time, so the axes do not start with a step in velocity</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Feed scale: the feed override applied to every F word of the program (1 = as programmed)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Maximum acceleration (mm/s²) of the feed profile along the path; on arcs v²/R stays below it too</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Simulation step dt (s): the continuous runs are sampled at it (and a G-code program's profile is planned at it)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Maximum jerk (mm/s³) of the feed profile (an S-curve); 0 = no jerk limit (a trapezoidal profile)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The G-code program; its whole text is kept in the session, so a shared session needs no .nc file</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>%1
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 salvo</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportar</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportado</translation>
+    </message>
+    <message>
+        <source>JSON (*.json)</source>
+        <translation>JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>C header (*.h)</source>
+        <translation>Cabeçalho C (*.h)</translation>
+    </message>
+    <message>
+        <source>Octave/MATLAB script (*.m)</source>
+        <translation>Script Octave/MATLAB (*.m)</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::SnapshotCompareDialog</name>
+    <message>
+        <source>Compare designs</source>
+        <translation>Comparar projetos</translation>
+    </message>
+    <message>
+        <source>Current design</source>
+        <translation>Projeto atual</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Comparar</translation>
+    </message>
+    <message>
+        <source>with</source>
+        <translation>com</translation>
+    </message>
+    <message>
+        <source>The first design of the comparison: the current one or a stored snapshot (Design › Store snapshot)</source>
+        <translation>O primeiro projeto da comparação: o atual ou um instantâneo guardado (Projeto › Guardar instantâneo)</translation>
+    </message>
+    <message>
+        <source>The second design of the comparison; the table lists both designs&apos; settings and figures side by side</source>
+        <translation>O segundo projeto da comparação; a tabela lista as configurações e os valores dos dois projetos lado a lado</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::StepPlot</name>
+    <message>
+        <source>Step response</source>
+        <translation>Resposta ao degrau</translation>
+    </message>
+    <message>
+        <source>time after the step (s)</source>
+        <translation>tempo após o degrau (s)</translation>
+    </message>
+    <message>
+        <source>output (unit step)</source>
+        <translation>saída (degrau unitário)</translation>
+    </message>
+    <message>
+        <source>overshoot limit</source>
+        <translation>limite de sobressinal</translation>
+    </message>
+    <message>
+        <source>settling band</source>
+        <translation>faixa de acomodação</translation>
+    </message>
+    <message>
+        <source>violates the spec</source>
+        <translation>viola a especificação</translation>
+    </message>
+    <message>
+        <source>rise 10–90 %</source>
+        <translation>subida 10–90 %</translation>
+    </message>
+    <message>
+        <source>peak</source>
+        <translation>pico</translation>
+    </message>
+    <message>
+        <source>settling (2 %)</source>
+        <translation>acomodação (2 %)</translation>
+    </message>
+    <message>
+        <source>hover the plot: t and y of the step the axis runs</source>
+        <translation>passe o mouse sobre o gráfico: t e y do degrau que o eixo executa</translation>
+    </message>
+    <message>
+        <source>unstable: no step response (the closed loop has a pole outside the stability region)</source>
+        <translation>instável: sem resposta ao degrau (a malha fechada tem um polo fora da região de estabilidade)</translation>
+    </message>
+    <message>
+        <source>overshoot ≤ %1 %</source>
+        <translation>sobressinal ≤ %1 %</translation>
+    </message>
+    <message>
+        <source>overshoot limit %1 (%2 %) is above the view</source>
+        <translation>o limite de sobressinal %1 (%2 %) está acima da vista</translation>
+    </message>
+    <message>
+        <source>±%1 % after %2 s</source>
+        <translation>±%1 % após %2 s</translation>
+    </message>
+    <message>
+        <source>settling limit %1 s lies beyond the right edge (%2 s)</source>
+        <translation>o limite de acomodação %1 s fica além da borda direita (%2 s)</translation>
+    </message>
+    <message>
+        <source>  rise %1 s</source>
+        <translation>  subida %1 s</translation>
+    </message>
+    <message>
+        <source>the response never reaches 90 % of its final value in view</source>
+        <translation>a resposta nunca atinge 90 % do valor final na vista</translation>
+    </message>
+    <message>
+        <source>peak %1 at %2 s (%3 %)</source>
+        <translation>pico %1 em %2 s (%3 %)</translation>
+    </message>
+    <message>
+        <source>: beyond the right edge</source>
+        <translation>: além da borda direita</translation>
+    </message>
+    <message>
+        <source>settles %1 s</source>
+        <translation>acomoda em %1 s</translation>
+    </message>
+    <message>
+        <source>red: the response leaves the specification&apos;s envelope</source>
+        <translation>vermelho: a resposta sai da envoltória da especificação</translation>
+    </message>
+    <message>
+        <source>t = %1 s   y = %2   (%3)</source>
+        <translation>t = %1 s   y = %2   (%3)</translation>
+    </message>
+    <message>
+        <source>Unit step of the closed loop (not the trajectory): output against time (s), with the rise, peak and settling (2 % band) markers and the specification&apos;s overshoot and settling envelope; samples outside it are red.</source>
+        <translation>Degrau unitário da malha fechada (não a trajetória): saída em função do tempo (s), com os marcadores de subida, pico e acomodação (faixa de 2 %) e a envoltória de sobressinal e acomodação da especificação; as amostras fora dela ficam em vermelho.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::StepResponseView</name>
+    <message>
+        <source>Unit step of %1</source>
+        <translation>Degrau unitário de %1</translation>
+    </message>
+    <message>
+        <source>No step response: %1</source>
+        <translation>Sem resposta ao degrau: %1</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::TimeResponsePlot</name>
+    <message>
+        <source>position (mm)</source>
+        <translation>posição (mm)</translation>
+    </message>
+    <message>
+        <source>error (mm)</source>
+        <translation>erro (mm)</translation>
+    </message>
+    <message>
+        <source>u (V)</source>
+        <translation>u (V)</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>reference r</source>
+        <translation>referência r</translation>
+    </message>
+    <message>
+        <source>snapshot</source>
+        <translation>instantâneo</translation>
+    </message>
+    <message>
+        <source>digital y</source>
+        <translation>y digital</translation>
+    </message>
+    <message>
+        <source>digital e</source>
+        <translation>e digital</translation>
+    </message>
+    <message>
+        <source>digital u (held)</source>
+        <translation>u digital (retido)</translation>
+    </message>
+    <message>
+        <source>y without the shaper</source>
+        <translation>y sem o modelador</translation>
+    </message>
+    <message>
+        <source>e without the shaper</source>
+        <translation>e sem o modelador</translation>
+    </message>
+    <message>
+        <source>output y</source>
+        <translation>saída y</translation>
+    </message>
+    <message>
+        <source>error e</source>
+        <translation>erro e</translation>
+    </message>
+    <message>
+        <source>table stuck</source>
+        <translation>mesa presa</translation>
+    </message>
+    <message>
+        <source>clipped</source>
+        <translation>limitado</translation>
+    </message>
+    <message>
+        <source>snapshot u</source>
+        <translation>u do instantâneo</translation>
+    </message>
+    <message>
+        <source>snapshot e</source>
+        <translation>e do instantâneo</translation>
+    </message>
+    <message>
+        <source>feedforward part</source>
+        <translation>parte de pré-alimentação</translation>
+    </message>
+    <message>
+        <source>feedback part</source>
+        <translation>parte de realimentação</translation>
+    </message>
+    <message>
+        <source>control u</source>
+        <translation>controle u</translation>
+    </message>
+    <message>
+        <source>linear loop: |u| is not clipped at ±%1 V here (the shaded time would saturate)</source>
+        <translation>malha linear: |u| não é limitado em ±%1 V aqui (o tempo sombreado saturaria)</translation>
+    </message>
+    <message>
+        <source>%1: not simulated (%2: %3)</source>
+        <translation>%1: não simulado (%2: %3)</translation>
+    </message>
+    <message>
+        <source>%1 — time response</source>
+        <translation>%1 — resposta no tempo</translation>
+    </message>
+    <message>
+        <source>  (UNSTABLE closed loop)</source>
+        <translation>  (malha fechada INSTÁVEL)</translation>
+    </message>
+    <message>
+        <source>digital y (Ts %1 s, held u)</source>
+        <translation>y digital (Ts %1 s, u retido)</translation>
+    </message>
+    <message>
+        <source>digital y (encoder, DAC, limit)</source>
+        <translation>y digital (encoder, DAC, limite)</translation>
+    </message>
+    <message>
+        <source>snapshot «%1» (y, e, u)</source>
+        <translation>instantâneo «%1» (y, e, u)</translation>
+    </message>
+    <message>
+        <source>Time response of the selected axis on the trajectory: reference r, output y and error e = r − y (mm), and the command u (V) with the ±umax band and clipped intervals shaded; the digital implementation&apos;s run as a translucent band.</source>
+        <translation>Resposta no tempo do eixo selecionado na trajetória: referência r, saída y e erro e = r − y (mm), e o comando u (V) com a faixa de ±umax e os intervalos limitados sombreados; a simulação da implementação digital como uma faixa translúcida.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::TrajectoryEditor</name>
+    <message>
+        <source>Point-to-point (both axes)</source>
+        <translation>Ponto a ponto (os dois eixos)</translation>
+    </message>
+    <message>
+        <source>Circle (x = R sin ωt, y = R cos ωt)</source>
+        <translation>Círculo (x = R sin ωt, y = R cos ωt)</translation>
+    </message>
+    <message>
+        <source>G-code program (x and y along its feed profile)</source>
+        <translation>Programa G-code (x e y ao longo do seu perfil de avanço)</translation>
+    </message>
+    <message>
+        <source>Trajectory kind</source>
+        <translation>Tipo de trajetória</translation>
+    </message>
+    <message>
+        <source>cubic</source>
+        <translation>cúbica</translation>
+    </message>
+    <message>
+        <source>quintic</source>
+        <translation>quíntica</translation>
+    </message>
+    <message>
+        <source>Move profile</source>
+        <translation>Perfil do movimento</translation>
+    </message>
+    <message>
+        <source>The move&apos;s profile: Braga et al.&apos;s cubic, whose acceleration steps at the start and the end, or the quintic, whose acceleration starts and ends at zero, so a jerk feedforward sees no spike</source>
+        <translation>O perfil do movimento: a cúbica de Braga et al., cuja aceleração salta no início e no fim, ou a quíntica, cuja aceleração começa e termina em zero, de modo que uma pré-alimentação de jerk não vê pico</translation>
+    </message>
+    <message>
+        <source>x0 (mm)</source>
+        <translation>x0 (mm)</translation>
+    </message>
+    <message>
+        <source>xf (mm)</source>
+        <translation>xf (mm)</translation>
+    </message>
+    <message>
+        <source>t0 (s)</source>
+        <translation>t0 (s)</translation>
+    </message>
+    <message>
+        <source>tf (s)</source>
+        <translation>tf (s)</translation>
+    </message>
+    <message>
+        <source>v0 (mm/s)</source>
+        <translation>v0 (mm/s)</translation>
+    </message>
+    <message>
+        <source>vf (mm/s)</source>
+        <translation>vf (mm/s)</translation>
+    </message>
+    <message>
+        <source>Radius (mm)</source>
+        <translation>Raio (mm)</translation>
+    </message>
+    <message>
+        <source>ω (rad/s)</source>
+        <translation>ω (rad/s)</translation>
+    </message>
+    <message>
+        <source>Ramp-in (s)</source>
+        <translation>Rampa de entrada (s)</translation>
+    </message>
+    <message>
+        <source>0 = automatic: tf for a cubic, one revolution plus the ramp-in for a circle; a G-code program always runs its feed profile&apos;s time</source>
+        <translation>0 = automático: tf para uma cúbica, uma volta mais a rampa de entrada para um círculo; um programa G-code sempre dura o tempo do seu perfil de avanço</translation>
+    </message>
+    <message>
+        <source>Duration (s)</source>
+        <translation>Duração (s)</translation>
+    </message>
+    <message>
+        <source>Step dt (s)</source>
+        <translation>Passo dt (s)</translation>
+    </message>
+    <message>
+        <source>G-code program</source>
+        <translation>Programa G-code</translation>
+    </message>
+    <message>
+        <source>no program</source>
+        <translation>nenhum programa</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Abrir…</translation>
+    </message>
+    <message>
+        <source>Read a G-code program (.nc); it is kept in the session</source>
+        <translation>Ler um programa G-code (.nc); ele é guardado na sessão</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programa</translation>
+    </message>
+    <message>
+        <source>Example programs</source>
+        <translation>Programas de exemplo</translation>
+    </message>
+    <message>
+        <source>Examples…</source>
+        <translation>Exemplos…</translation>
+    </message>
+    <message>
+        <source>Feed scale</source>
+        <translation>Escala de avanço</translation>
+    </message>
+    <message>
+        <source>Max accel. (mm/s²)</source>
+        <translation>Acel. máx (mm/s²)</translation>
+    </message>
+    <message>
+        <source>Max jerk (mm/s³)</source>
+        <translation>Jerk máx (mm/s³)</translation>
+    </message>
+    <message>
+        <source>Open a G-code program</source>
+        <translation>Abrir um programa G-code</translation>
+    </message>
+    <message>
+        <source>G-code programs (*.nc *.ngc *.gcode *.tap);;All files (*)</source>
+        <translation>Programas G-code (*.nc *.ngc *.gcode *.tap);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Open a program or pick an example.</source>
+        <translation>Abra um programa ou escolha um exemplo.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n motion block(s), %1 mm, run %2 s</source>
+        <translation>
+            <numerusform>%n bloco de movimento, %1 mm, execução %2 s</numerusform>
+            <numerusform>%n blocos de movimento, %1 mm, execução %2 s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n sharp corner(s)</source>
+        <translation>
+            <numerusform>, %n canto vivo</numerusform>
+            <numerusform>, %n cantos vivos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>; one full circle: ISO 230-4 test</source>
+        <translation>; um círculo completo: ensaio ISO 230-4</translation>
+    </message>
+    <message numerus="yes">
+        <source>; %n warning(s)</source>
+        <translation>
+            <numerusform>; %n aviso</numerusform>
+            <numerusform>; %n avisos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>cubic move</source>
+        <translation>movimento cúbico</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>círculo</translation>
+    </message>
+    <message>
+        <source>The plots still show the session&apos;s %1: a G-code trajectory needs a program (Open… or pick an example).</source>
+        <translation>Os gráficos ainda mostram o %1 da sessão: uma trajetória G-code precisa de um programa (Abrir… ou escolha um exemplo).</translation>
+    </message>
+    <message>
+        <source>The plots still show the session&apos;s %1: the trajectory chosen in the editor is not valid yet (see the field marked red).</source>
+        <translation>Os gráficos ainda mostram o %1 da sessão: a trajetória escolhida no editor ainda não é válida (veja o campo marcado em vermelho).</translation>
+    </message>
+    <message>
+        <source>no program: open one or pick an example</source>
+        <translation>nenhum programa: abra um ou escolha um exemplo</translation>
+    </message>
+    <message>
+        <source>tf: must be later than t0</source>
+        <translation>tf: deve ser posterior a t0</translation>
+    </message>
+    <message>
+        <source>%1: a %2 s run at dt = %3 s needs %4 samples; at most %5 fit in memory</source>
+        <translation>%1: uma simulação de %2 s com dt = %3 s precisa de %4 amostras; cabem no máximo %5 na memória</translation>
+    </message>
+    <message>
+        <source>a %1 s run at dt = %2 s needs %3 samples; at most %4 fit in memory</source>
+        <translation>uma simulação de %1 s com dt = %2 s precisa de %3 amostras; cabem no máximo %4 na memória</translation>
+    </message>
+    <message>
+        <source>The commanded motion both axes follow: a point-to-point move, a circle (x = R sin ωt, y = R cos ωt) or a G-code program along its feed profile</source>
+        <translation>O movimento comandado que os dois eixos seguem: um movimento ponto a ponto, um círculo (x = R sin ωt, y = R cos ωt) ou um programa G-code ao longo do seu perfil de avanço</translation>
+    </message>
+    <message>
+        <source>The example programs shipped with XY Tune (circles, a square, a star, an engraving): choose one to load it as the program</source>
+        <translation>Os programas de exemplo que acompanham o XY Tune (círculos, um quadrado, uma estrela, uma gravação): escolha um para carregá-lo como programa</translation>
+    </message>
+    <message>
+        <source>Start position x0 (mm) of the point-to-point move, held before t0</source>
+        <translation>Posição inicial x0 (mm) do movimento ponto a ponto, mantida antes de t0</translation>
+    </message>
+    <message>
+        <source>End position xf (mm) of the point-to-point move, reached at tf</source>
+        <translation>Posição final xf (mm) do movimento ponto a ponto, atingida em tf</translation>
+    </message>
+    <message>
+        <source>Start time t0 (s) of the move</source>
+        <translation>Instante inicial t0 (s) do movimento</translation>
+    </message>
+    <message>
+        <source>End time tf (s) of the move: the cubic (or quintic) joins x0 at t0 to xf at tf with the end velocities v0, vf (Braga et al. Eq. 4–6)</source>
+        <translation>Instante final tf (s) do movimento: a cúbica (ou quíntica) liga x0 em t0 a xf em tf com as velocidades nas extremidades v0, vf (Braga et al., Eq. 4–6)</translation>
+    </message>
+    <message>
+        <source>Velocity v0 (mm/s) at the start of the move</source>
+        <translation>Velocidade v0 (mm/s) no início do movimento</translation>
+    </message>
+    <message>
+        <source>Velocity vf (mm/s) at the end of the move</source>
+        <translation>Velocidade vf (mm/s) no fim do movimento</translation>
+    </message>
+    <message>
+        <source>Radius R (mm) of the circle x = R sin ωt, y = R cos ωt</source>
+        <translation>Raio R (mm) do círculo x = R sin ωt, y = R cos ωt</translation>
+    </message>
+    <message>
+        <source>Angular speed ω (rad/s) of the circle: one revolution takes 2π/ω seconds</source>
+        <translation>Velocidade angular ω (rad/s) do círculo: uma volta leva 2π/ω segundos</translation>
+    </message>
+    <message>
+        <source>Ramp-in (s): the circle&apos;s speed rises smoothly from 0 to ω over this time, so the axes do not start with a step in velocity</source>
+        <translation>Rampa de entrada (s): a velocidade do círculo sobe suavemente de 0 a ω nesse tempo, para que os eixos não partam com um degrau de velocidade</translation>
+    </message>
+    <message>
+        <source>Feed scale: the feed override applied to every F word of the program (1 = as programmed)</source>
+        <translation>Escala de avanço: o ajuste de avanço (feed override) aplicado a cada palavra F do programa (1 = como programado)</translation>
+    </message>
+    <message>
+        <source>Maximum acceleration (mm/s²) of the feed profile along the path; on arcs v²/R stays below it too</source>
+        <translation>Aceleração máxima (mm/s²) do perfil de avanço ao longo do percurso; nos arcos, v²/R também fica abaixo dela</translation>
+    </message>
+    <message>
+        <source>Simulation step dt (s): the continuous runs are sampled at it (and a G-code program&apos;s profile is planned at it)</source>
+        <translation>Passo de simulação dt (s): as simulações contínuas são amostradas com ele (e o perfil de um programa G-code é planejado com ele)</translation>
+    </message>
+    <message>
+        <source>Maximum jerk (mm/s³) of the feed profile (an S-curve); 0 = no jerk limit (a trapezoidal profile)</source>
+        <translation>Jerk máximo (mm/s³) do perfil de avanço (uma curva em S); 0 = sem limite de jerk (um perfil trapezoidal)</translation>
+    </message>
+    <message>
+        <source>The G-code program; its whole text is kept in the session, so a shared session needs no .nc file</source>
+        <translation>O programa G-code; seu texto completo é guardado na sessão, de modo que uma sessão compartilhada dispensa o arquivo .nc</translation>
+    </message>
+    <message>
+        <source>%1
 %2</source>
-            <translation type="unfinished">%1* {1
-%2?}</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::TuningSession</name>
-        <message>
-            <source>axis %1, %2</source>
-            <translation>eixo %1, %2</translation>
-        </message>
-        <message>
-            <source>%1: %2; %3: %4</source>
-            <translation>%1: %2; %3: %4</translation>
-        </message>
-        <message>
-            <source>Set ωn of %1 to %2</source>
-            <translation>Definir ωn de %1 como %2</translation>
-        </message>
-        <message>
-            <source>Set kp of %1 to %2</source>
-            <translation>Definir kp de %1 como %2</translation>
-        </message>
-        <message>
-            <source>Change the plant of %1</source>
-            <translation>Alterar a planta de %1</translation>
-        </message>
-        <message>
-            <source>Change the model unit of %1</source>
-            <translation>Alterar a unidade do modelo de %1</translation>
-        </message>
-        <message>
-            <source>Change the friction of %1</source>
-            <translation>Alterar o atrito de %1</translation>
-        </message>
-        <message>
-            <source>Change the flexible mode and notch of %1</source>
-            <translation>Alterar o modo flexível e o notch de %1</translation>
-        </message>
-        <message>
-            <source>Change the trajectory</source>
-            <translation>Alterar a trajetória</translation>
-        </message>
-        <message>
-            <source>Change the cross-coupling</source>
-            <translation>Alterar o acoplamento cruzado</translation>
-        </message>
-        <message>
-            <source>Switch the cross-coupling off</source>
-            <translation>Desligar o acoplamento cruzado</translation>
-        </message>
-        <message>
-            <source>Set the actuator limit to %1 V</source>
-            <translation>Definir o limite do atuador como %1 V</translation>
-        </message>
-        <message>
-            <source>Change the digital implementation</source>
-            <translation>Alterar a implementação digital</translation>
-        </message>
-        <message>
-            <source>Set the controller sample time to %1 s</source>
-            <translation>Definir o período de amostragem do controlador como %1 s</translation>
-        </message>
-        <message>
-            <source>Change the PI discretization</source>
-            <translation>Alterar a discretização do PI</translation>
-        </message>
-        <message>
-            <source>Change the specification</source>
-            <translation>Alterar a especificação</translation>
-        </message>
-        <message>
-            <source>Store snapshot %1</source>
-            <translation>Guardar instantâneo %1</translation>
-        </message>
-        <message>
-            <source>Use loop gain %1 from the root locus</source>
-            <translation>Usar o ganho de malha %1 do lugar das raízes</translation>
-        </message>
-        <message>
-            <source>Only a PID + feedforward axis has zeros of its own to drag.</source>
-            <translation>Só um eixo PID + pré-alimentação tem zeros próprios para arrastar.</translation>
-        </message>
-        <message>
-            <source>Move a zero of %1's PID</source>
-            <translation>Mover um zero do PID de %1</translation>
-        </message>
-        <message>
-            <source>Change the design method</source>
-            <translation>Alterar o método de projeto</translation>
-        </message>
-        <message>
-            <source>Change the pole-placement design</source>
-            <translation>Alterar o projeto por alocação de polos</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::UserGuideWindow</name>
-        <message>
-            <source>XY Tune user guide</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Back</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Back to the page shown before (Alt+Left)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Forward</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Forward to the page left with Back (Alt+Right)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Home</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The guide's first page: the list of tutorials</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The pages of the guide: the tutorials, then the reference pages (command line, session file, exports, equations, architecture)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>User guide</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Reference</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>%1 – XY Tune user guide</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source># No pages
+        <translation>%1
+%2</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::TuningSession</name>
+    <message>
+        <source>axis %1, %2</source>
+        <translation>eixo %1, %2</translation>
+    </message>
+    <message>
+        <source>%1: %2; %3: %4</source>
+        <translation>%1: %2; %3: %4</translation>
+    </message>
+    <message>
+        <source>Set ωn of %1 to %2</source>
+        <translation>Definir ωn de %1 como %2</translation>
+    </message>
+    <message>
+        <source>Set kp of %1 to %2</source>
+        <translation>Definir kp de %1 como %2</translation>
+    </message>
+    <message>
+        <source>Change the plant of %1</source>
+        <translation>Alterar a planta de %1</translation>
+    </message>
+    <message>
+        <source>Change the model unit of %1</source>
+        <translation>Alterar a unidade do modelo de %1</translation>
+    </message>
+    <message>
+        <source>Change the friction of %1</source>
+        <translation>Alterar o atrito de %1</translation>
+    </message>
+    <message>
+        <source>Change the flexible mode and notch of %1</source>
+        <translation>Alterar o modo flexível e o notch de %1</translation>
+    </message>
+    <message>
+        <source>Change the trajectory</source>
+        <translation>Alterar a trajetória</translation>
+    </message>
+    <message>
+        <source>Change the cross-coupling</source>
+        <translation>Alterar o acoplamento cruzado</translation>
+    </message>
+    <message>
+        <source>Switch the cross-coupling off</source>
+        <translation>Desligar o acoplamento cruzado</translation>
+    </message>
+    <message>
+        <source>Set the actuator limit to %1 V</source>
+        <translation>Definir o limite do atuador como %1 V</translation>
+    </message>
+    <message>
+        <source>Change the digital implementation</source>
+        <translation>Alterar a implementação digital</translation>
+    </message>
+    <message>
+        <source>Set the controller sample time to %1 s</source>
+        <translation>Definir o período de amostragem do controlador como %1 s</translation>
+    </message>
+    <message>
+        <source>Change the PI discretization</source>
+        <translation>Alterar a discretização do PI</translation>
+    </message>
+    <message>
+        <source>Change the specification</source>
+        <translation>Alterar a especificação</translation>
+    </message>
+    <message>
+        <source>Store snapshot %1</source>
+        <translation>Guardar instantâneo %1</translation>
+    </message>
+    <message>
+        <source>Use loop gain %1 from the root locus</source>
+        <translation>Usar o ganho de malha %1 do lugar das raízes</translation>
+    </message>
+    <message>
+        <source>Only a PID + feedforward axis has zeros of its own to drag.</source>
+        <translation>Só um eixo PID + pré-alimentação tem zeros próprios para arrastar.</translation>
+    </message>
+    <message>
+        <source>Move a zero of %1&apos;s PID</source>
+        <translation>Mover um zero do PID de %1</translation>
+    </message>
+    <message>
+        <source>Change the design method</source>
+        <translation>Alterar o método de projeto</translation>
+    </message>
+    <message>
+        <source>Change the pole-placement design</source>
+        <translation>Alterar o projeto por alocação de polos</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::UserGuideWindow</name>
+    <message>
+        <source>XY Tune user guide</source>
+        <translation>Guia do usuário do XY Tune</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Voltar</translation>
+    </message>
+    <message>
+        <source>Back to the page shown before (Alt+Left)</source>
+        <translation>Voltar à página mostrada antes (Alt+Left)</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Avançar</translation>
+    </message>
+    <message>
+        <source>Forward to the page left with Back (Alt+Right)</source>
+        <translation>Avançar para a página deixada com Voltar (Alt+Right)</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Início</translation>
+    </message>
+    <message>
+        <source>The guide&apos;s first page: the list of tutorials</source>
+        <translation>A primeira página do guia: a lista de tutoriais</translation>
+    </message>
+    <message>
+        <source>The pages of the guide: the tutorials, then the reference pages (command line, session file, exports, equations, architecture)</source>
+        <translation>As páginas do guia: os tutoriais e depois as páginas de referência (linha de comando, arquivo de sessão, exportações, equações, arquitetura)</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>Guia do usuário</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>Referência</translation>
+    </message>
+    <message>
+        <source>%1 – XY Tune user guide</source>
+        <translation>%1 – Guia do usuário do XY Tune</translation>
+    </message>
+    <message>
+        <source># No pages
 
 This build of XY Tune holds no documentation pages (the folder docs/ was empty when it was built).</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::VibrationPlot</name>
-        <message>
-            <source>Vibration</source>
-            <translation>Vibração</translation>
-        </message>
-        <message>
-            <source>frequency (Hz)</source>
-            <translation>frequência (Hz)</translation>
-        </message>
-        <message>
-            <source>|G| (dB re mm/V)</source>
-            <translation>|G| (dB ref. mm/V)</translation>
-        </message>
-        <message>
-            <source>frequency of the mode (Hz)</source>
-            <translation>frequência do modo (Hz)</translation>
-        </message>
-        <message>
-            <source>residual (%)</source>
-            <translation>residual (%)</translation>
-        </message>
-        <message>
-            <source>rigid |G|</source>
-            <translation>|G| rígido</translation>
-        </message>
-        <message>
-            <source>with the mode</source>
-            <translation>com o modo</translation>
-        </message>
-        <message>
-            <source>notch |N|</source>
-            <translation>notch |N|</translation>
-        </message>
-        <message>
-            <source>measured |H|</source>
-            <translation>|H| medido</translation>
-        </message>
-        <message>
-            <source>PSD (dB)</source>
-            <translation>DEP (dB)</translation>
-        </message>
-        <message>
-            <source>accel. PSD</source>
-            <translation>DEP da acel.</translation>
-        </message>
-        <message>
-            <source>input shaper</source>
-            <translation>modelador de entrada</translation>
-        </message>
-        <message>
-            <source>5 % tolerance</source>
-            <translation>tolerância de 5 %</translation>
-        </message>
-        <message>
-            <source>|H| measured from %1, drawn where γ² ≥ %2</source>
-            <translation>|H| medido de %1, desenhado onde γ² ≥ %2</translation>
-        </message>
-        <message>
-            <source>PSD of %1</source>
-            <translation>DEP de %1</translation>
-        </message>
-        <message>
-            <source>mode %1 Hz</source>
-            <translation>modo %1 Hz</translation>
-        </message>
-        <message>
-            <source>notch %1 Hz</source>
-            <translation>notch %1 Hz</translation>
-        </message>
-        <message>
-            <source>measured %1 Hz</source>
-            <translation>medido %1 Hz</translation>
-        </message>
-        <message>
-            <source>, ζ %1</source>
-            <translation>, ζ %1</translation>
-        </message>
-        <message>
-            <source>%1 %2 Hz, ζ %3</source>
-            <translation>%1 %2 Hz, ζ %3</translation>
-        </message>
-        <message>
-            <source>%1 % left at %2 Hz</source>
-            <translation>%1 % restante em %2 Hz</translation>
-        </message>
-        <message>
-            <source>No input shaper: the Mode fold's Input shaper sets one</source>
-            <translation>Sem modelador de entrada: o Modelador de entrada da seção Modo define um</translation>
-        </message>
-        <message>
-            <source>no input shaper</source>
-            <translation>sem modelador de entrada</translation>
-        </message>
-        <message>
-            <source>The table is rigid: set a flexible mode in the Design box's Mode fold</source>
-            <translation>A mesa é rígida: defina um modo flexível na seção Modo da caixa Projeto</translation>
-        </message>
-        <message>
-            <source>Vibration: the rigid plant, the plant with its flexible mode and the notch (mm/V against Hz), the input shaper's sensitivity curve with the 5 % tolerance, and the residual vibration of the run's move shaped and unshaped.</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::VibrationView</name>
-        <message>
-            <source>Vibration of %1</source>
-            <translation>Vibração de %1</translation>
-        </message>
-        <message>
-            <source>%1 shaper: %2 impulses over %3 ms, a delay of %4 ms</source>
-            <translation>modelador %1: %2 impulsos em %3 ms, um atraso de %4 ms</translation>
-        </message>
-        <message>
-            <source>; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm unshaped</source>
-            <translation>; o modo de %1 Hz%2 oscila %3 com amplitude de %4 mm com modelagem, %5 mm sem modelagem</translation>
-        </message>
-        <message>
-            <source> it is designed for</source>
-            <translation> para o qual foi projetado</translation>
-        </message>
-        <message>
-            <source>after the move</source>
-            <translation>após o movimento</translation>
-        </message>
-        <message>
-            <source>along the path</source>
-            <translation>ao longo do percurso</translation>
-        </message>
-    </context>
-    <context>
-        <name>xyt::ui::WelcomeDialog</name>
-        <message>
-            <source>Welcome to XY Tune</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>XY Tune tunes the position controllers of two-axis XY tables. Start with a tutorial (it opens in the user guide, F1) or open an example session in the workbench.</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Tutorials</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The user guide's tutorials: double-click one to read it in the user guide window</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The user guide: contents</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>The user guide (reference pages)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Read</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Open the selected tutorial in the user guide</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Example sessions</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Example sessions shipped with XY Tune: double-click one to open it in the workbench (as File › Open would)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>%1 (%2)</source>
-            <translation type="unfinished">%1 (%2)</translation>
-        </message>
-        <message>
-            <source>No example sessions were found in %1</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>(no examples folder)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Open session</source>
-            <translation type="unfinished">Abrir sessão</translation>
-        </message>
-        <message>
-            <source>Open the selected example in the workbench</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Its tutorial</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Read the tutorial that walks through the selected example</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Show at start</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Show this page each time XY Tune starts (it is always in Help › Tutorials)</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
+        <translation># Nenhuma página
+
+Esta compilação do XY Tune não contém páginas de documentação (a pasta docs/ estava vazia quando ela foi compilada).</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::VibrationPlot</name>
+    <message>
+        <source>Vibration</source>
+        <translation>Vibração</translation>
+    </message>
+    <message>
+        <source>frequency (Hz)</source>
+        <translation>frequência (Hz)</translation>
+    </message>
+    <message>
+        <source>|G| (dB re mm/V)</source>
+        <translation>|G| (dB ref. mm/V)</translation>
+    </message>
+    <message>
+        <source>frequency of the mode (Hz)</source>
+        <translation>frequência do modo (Hz)</translation>
+    </message>
+    <message>
+        <source>residual (%)</source>
+        <translation>residual (%)</translation>
+    </message>
+    <message>
+        <source>rigid |G|</source>
+        <translation>|G| rígido</translation>
+    </message>
+    <message>
+        <source>with the mode</source>
+        <translation>com o modo</translation>
+    </message>
+    <message>
+        <source>notch |N|</source>
+        <translation>notch |N|</translation>
+    </message>
+    <message>
+        <source>measured |H|</source>
+        <translation>|H| medido</translation>
+    </message>
+    <message>
+        <source>PSD (dB)</source>
+        <translation>DEP (dB)</translation>
+    </message>
+    <message>
+        <source>accel. PSD</source>
+        <translation>DEP da acel.</translation>
+    </message>
+    <message>
+        <source>input shaper</source>
+        <translation>modelador de entrada</translation>
+    </message>
+    <message>
+        <source>5 % tolerance</source>
+        <translation>tolerância de 5 %</translation>
+    </message>
+    <message>
+        <source>|H| measured from %1, drawn where γ² ≥ %2</source>
+        <translation>|H| medido de %1, desenhado onde γ² ≥ %2</translation>
+    </message>
+    <message>
+        <source>PSD of %1</source>
+        <translation>DEP de %1</translation>
+    </message>
+    <message>
+        <source>mode %1 Hz</source>
+        <translation>modo %1 Hz</translation>
+    </message>
+    <message>
+        <source>notch %1 Hz</source>
+        <translation>notch %1 Hz</translation>
+    </message>
+    <message>
+        <source>measured %1 Hz</source>
+        <translation>medido %1 Hz</translation>
+    </message>
+    <message>
+        <source>, ζ %1</source>
+        <translation>, ζ %1</translation>
+    </message>
+    <message>
+        <source>%1 %2 Hz, ζ %3</source>
+        <translation>%1 %2 Hz, ζ %3</translation>
+    </message>
+    <message>
+        <source>%1 % left at %2 Hz</source>
+        <translation>%1 % restante em %2 Hz</translation>
+    </message>
+    <message>
+        <source>No input shaper: the Mode fold&apos;s Input shaper sets one</source>
+        <translation>Sem modelador de entrada: o Modelador de entrada da seção Modo define um</translation>
+    </message>
+    <message>
+        <source>no input shaper</source>
+        <translation>sem modelador de entrada</translation>
+    </message>
+    <message>
+        <source>The table is rigid: set a flexible mode in the Design box&apos;s Mode fold</source>
+        <translation>A mesa é rígida: defina um modo flexível na seção Modo da caixa Projeto</translation>
+    </message>
+    <message>
+        <source>Vibration: the rigid plant, the plant with its flexible mode and the notch (mm/V against Hz), the input shaper&apos;s sensitivity curve with the 5 % tolerance, and the residual vibration of the run&apos;s move shaped and unshaped.</source>
+        <translation>Vibração: a planta rígida, a planta com seu modo flexível e o notch (mm/V em função de Hz), a curva de sensibilidade do modelador de entrada com a tolerância de 5 %, e a vibração residual do movimento simulado com e sem modelagem.</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::VibrationView</name>
+    <message>
+        <source>Vibration of %1</source>
+        <translation>Vibração de %1</translation>
+    </message>
+    <message>
+        <source>%1 shaper: %2 impulses over %3 ms, a delay of %4 ms</source>
+        <translation>modelador %1: %2 impulsos em %3 ms, um atraso de %4 ms</translation>
+    </message>
+    <message>
+        <source>; the %1 Hz mode%2 rings %3 with an amplitude of %4 mm shaped, %5 mm unshaped</source>
+        <translation>; o modo de %1 Hz%2 oscila %3 com amplitude de %4 mm com modelagem, %5 mm sem modelagem</translation>
+    </message>
+    <message>
+        <source> it is designed for</source>
+        <translation> para o qual foi projetado</translation>
+    </message>
+    <message>
+        <source>after the move</source>
+        <translation>após o movimento</translation>
+    </message>
+    <message>
+        <source>along the path</source>
+        <translation>ao longo do percurso</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ui::WelcomeDialog</name>
+    <message>
+        <source>Welcome to XY Tune</source>
+        <translation>Bem-vindo ao XY Tune</translation>
+    </message>
+    <message>
+        <source>XY Tune tunes the position controllers of two-axis XY tables. Start with a tutorial (it opens in the user guide, F1) or open an example session in the workbench.</source>
+        <translation>O XY Tune sintoniza os controladores de posição de mesas XY de dois eixos. Comece por um tutorial (ele abre no guia do usuário, F1) ou abra uma sessão de exemplo na bancada.</translation>
+    </message>
+    <message>
+        <source>Tutorials</source>
+        <translation>Tutoriais</translation>
+    </message>
+    <message>
+        <source>The user guide&apos;s tutorials: double-click one to read it in the user guide window</source>
+        <translation>Os tutoriais do guia do usuário: dê um clique duplo em um deles para lê-lo na janela do guia do usuário</translation>
+    </message>
+    <message>
+        <source>The user guide: contents</source>
+        <translation>O guia do usuário: sumário</translation>
+    </message>
+    <message>
+        <source>The user guide (reference pages)</source>
+        <translation>O guia do usuário (páginas de referência)</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>Ler</translation>
+    </message>
+    <message>
+        <source>Open the selected tutorial in the user guide</source>
+        <translation>Abrir o tutorial selecionado no guia do usuário</translation>
+    </message>
+    <message>
+        <source>Example sessions</source>
+        <translation>Sessões de exemplo</translation>
+    </message>
+    <message>
+        <source>Example sessions shipped with XY Tune: double-click one to open it in the workbench (as File › Open would)</source>
+        <translation>Sessões de exemplo que acompanham o XY Tune: dê um clique duplo em uma delas para abri-la na bancada (como faria Arquivo › Abrir)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>No example sessions were found in %1</source>
+        <translation>Nenhuma sessão de exemplo foi encontrada em %1</translation>
+    </message>
+    <message>
+        <source>(no examples folder)</source>
+        <translation>(sem pasta de exemplos)</translation>
+    </message>
+    <message>
+        <source>Open session</source>
+        <translation>Abrir sessão</translation>
+    </message>
+    <message>
+        <source>Open the selected example in the workbench</source>
+        <translation>Abrir o exemplo selecionado na bancada</translation>
+    </message>
+    <message>
+        <source>Its tutorial</source>
+        <translation>Seu tutorial</translation>
+    </message>
+    <message>
+        <source>Read the tutorial that walks through the selected example</source>
+        <translation>Ler o tutorial que percorre o exemplo selecionado</translation>
+    </message>
+    <message>
+        <source>Show at start</source>
+        <translation>Mostrar ao iniciar</translation>
+    </message>
+    <message>
+        <source>Show this page each time XY Tune starts (it is always in Help › Tutorials)</source>
+        <translation>Mostrar esta página sempre que o XY Tune iniciar (ela está sempre em Ajuda › Tutoriais)</translation>
+    </message>
+</context>
 </TS>
