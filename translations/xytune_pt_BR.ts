@@ -5,358 +5,358 @@
     <name>DesignReport</name>
     <message>
         <source>&lt;h1&gt;XY Tune design report&lt;/h1&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h1&gt;Relatório de projeto do XY Tune&lt;/h1&gt;</translation>
     </message>
     <message>
         <source>Date</source>
-        <translation type="unfinished"></translation>
+        <translation>Data</translation>
     </message>
     <message>
         <source>XY Tune version</source>
-        <translation type="unfinished"></translation>
+        <translation>Versão do XY Tune</translation>
     </message>
     <message>
         <source>Session file</source>
-        <translation type="unfinished"></translation>
+        <translation>Arquivo da sessão</translation>
     </message>
     <message>
         <source>(unsaved session)</source>
-        <translation type="unfinished"></translation>
+        <translation>(sessão não salva)</translation>
     </message>
     <message>
         <source>Axis %1</source>
-        <translation type="unfinished">Eixo %1</translation>
+        <translation>Eixo %1</translation>
     </message>
     <message>
         <source>%1%2</source>
-        <translation type="unfinished">%1* {1%2?}</translation>
+        <translation>%1%2</translation>
     </message>
     <message>
         <source> (%1)</source>
-        <translation type="unfinished"> (%1)</translation>
+        <translation> (%1)</translation>
     </message>
     <message>
         <source>&lt;h2&gt;Verdict&lt;/h2&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h2&gt;Veredito&lt;/h2&gt;</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;span style=&apos;color:#1b7f2a&apos;&gt;✓&lt;/span&gt; Both axes meet the specification, as designed and as implemented.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;span style=&apos;color:#1b7f2a&apos;&gt;✓&lt;/span&gt; Os dois eixos atendem à especificação, tanto como projetados quanto como implementados.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;span style=&apos;color:#c62828&apos;&gt;✗&lt;/span&gt; The design fails the specification:&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;span style=&apos;color:#c62828&apos;&gt;✗&lt;/span&gt; O projeto não atende à especificação:&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p&gt;Limits this design would meet: %1.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Limites que este projeto atenderia: %1.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>, </source>
-        <translation type="unfinished">, </translation>
+        <translation>, </translation>
     </message>
     <message>
         <source>&lt;h2&gt;Specification&lt;/h2&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h2&gt;Especificação&lt;/h2&gt;</translation>
     </message>
     <message>
         <source>unit step: settling time (2 %) ≤ %1 s, overshoot ≤ %2 %</source>
-        <translation type="unfinished"></translation>
+        <translation>degrau unitário: tempo de acomodação (2 %) ≤ %1 s, sobressinal ≤ %2 %</translation>
     </message>
     <message>
         <source>tracking: max |e| ≤ %1 % of the travel, |u| ≤ %2 V and never clipped</source>
-        <translation type="unfinished"></translation>
+        <translation>seguimento: |e| máx ≤ %1 % do curso, |u| ≤ %2 V e nunca limitado</translation>
     </message>
     <message>
         <source>point-to-point move: settled into ±%1 mm within %2 s of its end</source>
-        <translation type="unfinished"></translation>
+        <translation>movimento ponto a ponto: acomodado em ±%1 mm até %2 s após o seu fim</translation>
     </message>
     <message>
         <source>loop margins: phase margin ≥ %1°, gain margin ≥ %2 dB (0: none stated)</source>
-        <translation type="unfinished"></translation>
+        <translation>margens da malha: margem de fase ≥ %1°, margem de ganho ≥ %2 dB (0: nenhuma exigida)</translation>
     </message>
     <message>
         <source>&lt;h2&gt;Trajectory and implementation&lt;/h2&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h2&gt;Trajetória e implementação&lt;/h2&gt;</translation>
     </message>
     <message>
         <source>%1 move from %2 mm to %3 mm, from t = %4 s to %5 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Movimento %1 de %2 mm a %3 mm, de t = %4 s a %5 s</translation>
     </message>
     <message>
         <source>Quintic</source>
-        <translation type="unfinished"></translation>
+        <translation>quíntico</translation>
     </message>
     <message>
         <source>Cubic</source>
-        <translation type="unfinished"></translation>
+        <translation>cúbico</translation>
     </message>
     <message>
         <source>Circle of radius %1 mm at %2 rad/s, ramp-in %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Círculo de raio %1 mm a %2 rad/s, rampa de entrada de %3 s</translation>
     </message>
     <message>
         <source>G-code program %1, feed scale %2, max acceleration %3 mm/s², max jerk %4 mm/s³</source>
-        <translation type="unfinished"></translation>
+        <translation>Programa G-code %1, escala de avanço %2, aceleração máx %3 mm/s², jerk máx %4 mm/s³</translation>
     </message>
     <message>
         <source> (tracking time %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (tempo de rastreamento %1)</translation>
     </message>
     <message>
         <source>%1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s</translation>
     </message>
     <message>
         <source>Ti = kp/ki</source>
-        <translation type="unfinished"></translation>
+        <translation>Ti = kp/ki</translation>
     </message>
     <message>
         <source>Simulation: %1 (step %2 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulação: %1 (passo de %2 s)</translation>
     </message>
     <message>
         <source>Actuator limit: |u| ≤ %1 V</source>
-        <translation type="unfinished"></translation>
+        <translation>Limite do atuador: |u| ≤ %1 V</translation>
     </message>
     <message>
         <source>Digital PI: Ts = %1 s, %2 discretization; anti-windup %3</source>
-        <translation type="unfinished"></translation>
+        <translation>PI digital: Ts = %1 s, discretização %2; anti-windup %3</translation>
     </message>
     <message>
         <source>Computation delay %1 samples; encoder %2; DAC %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Atraso de cálculo de %1 amostras; encoder %2; DAC %3</translation>
     </message>
     <message>
         <source>%1 mm per count</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mm por contagem</translation>
     </message>
     <message>
         <source>ideal</source>
-        <translation type="unfinished">ideal</translation>
+        <translation>ideal</translation>
     </message>
     <message>
         <source>%1 bits over ±umax</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bits em ±umax</translation>
     </message>
     <message>
         <source>Axis %1 (%2)</source>
-        <translation type="unfinished">Eixo %1 (%2)</translation>
+        <translation>Eixo %1 (%2)</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Figures against the specification&lt;/h3&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Valores frente à especificação&lt;/h3&gt;</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Plots&lt;/h3&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Gráficos&lt;/h3&gt;</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Plant&lt;/h3&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Planta&lt;/h3&gt;</translation>
     </message>
     <message>
         <source>ARX model A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (position in mm, u in V)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modelo ARX A(z&lt;sup&gt;−1&lt;/sup&gt;) y = B(z&lt;sup&gt;−1&lt;/sup&gt;) u com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (posição em mm, u em V)</translation>
     </message>
     <message>
         <source>A = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>A = %1</translation>
     </message>
     <message>
         <source>B = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>B = %1</translation>
     </message>
     <message>
         <source>not a valid model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>modelo inválido: %1</translation>
     </message>
     <message>
         <source>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</source>
-        <translation type="unfinished"></translation>
+        <translation>G(s) = k&lt;sub&gt;0&lt;/sub&gt; / (s (s&lt;sup&gt;2&lt;/sup&gt; + a&lt;sub&gt;1&lt;/sub&gt; s + a&lt;sub&gt;2&lt;/sub&gt;)), k&lt;sub&gt;0&lt;/sub&gt; = %1, a&lt;sub&gt;1&lt;/sub&gt; = %2, a&lt;sub&gt;2&lt;/sub&gt; = %3</translation>
     </message>
     <message>
         <source>model units per mm of trajectory: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>unidades do modelo por mm de trajetória: %1</translation>
     </message>
     <message>
         <source>flexible mode: %1 Hz, damping %2</source>
-        <translation type="unfinished"></translation>
+        <translation>modo flexível: %1 Hz, amortecimento %2</translation>
     </message>
     <message>
         <source>; anti-resonance %1 Hz, damping %2</source>
-        <translation type="unfinished"></translation>
+        <translation>; antirressonância %1 Hz, amortecimento %2</translation>
     </message>
     <message>
         <source>as every run and analysis sees it: G(s) = (%1) / (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>como toda simulação e análise a vê: G(s) = (%1) / (%2)</translation>
     </message>
     <message>
         <source>not a valid plant: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>planta inválida: %1</translation>
     </message>
     <message>
         <source>identified as %1 from %2 (%3 samples at %4 s), fit %5 %</source>
-        <translation type="unfinished"></translation>
+        <translation>identificada como %1 a partir de %2 (%3 amostras a %4 s), ajuste de %5 %</translation>
     </message>
     <message>
         <source>, on validation data %1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>, nos dados de validação %1 %</translation>
     </message>
     <message>
         <source>entered by hand: the session records no identification</source>
-        <translation type="unfinished"></translation>
+        <translation>inserida manualmente: a sessão não registra identificação</translation>
     </message>
     <message>
         <source>table friction: Coulomb %1 V, static %2 V, viscous %3 V per mm/s, backlash %4 mm, amplifier deadband %5 V; friction compensation %6 % (band %7 mm/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>atrito da mesa: Coulomb %1 V, estático %2 V, viscoso %3 V por mm/s, folga %4 mm, zona morta do amplificador %5 V; compensação de atrito %6 % (faixa de %7 mm/s)</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Design: %1&lt;/h3&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Projeto: %1&lt;/h3&gt;</translation>
     </message>
     <message>
         <source>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>ω&lt;sub&gt;n&lt;/sub&gt; = %1 rad/s</translation>
     </message>
     <message>
         <source>k&lt;sub&gt;p&lt;/sub&gt; = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>k&lt;sub&gt;p&lt;/sub&gt; = %1</translation>
     </message>
     <message>
         <source>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>T = 1 + t&lt;sub&gt;1&lt;/sub&gt; z&lt;sup&gt;−1&lt;/sup&gt;, t&lt;sub&gt;1&lt;/sub&gt; = %1</translation>
     </message>
     <message>
         <source>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>T&lt;sub&gt;s&lt;/sub&gt; = %1 s</translation>
     </message>
     <message>
         <source>ZPETC feedforward on</source>
-        <translation type="unfinished"></translation>
+        <translation>pré-alimentação ZPETC ligada</translation>
     </message>
     <message>
         <source>ZPETC feedforward off</source>
-        <translation type="unfinished"></translation>
+        <translation>pré-alimentação ZPETC desligada</translation>
     </message>
     <message>
         <source>%1 = %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2 %3</translation>
     </message>
     <message>
         <source>&lt;p&gt;Settings: %1&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Configurações: %1&lt;/p&gt;</translation>
     </message>
     <message>
         <source>; </source>
-        <translation type="unfinished"></translation>
+        <translation>; </translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;No design&lt;/b&gt;: %1: %2&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;Sem projeto&lt;/b&gt;: %1: %2&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;p&gt;Coefficients of the design:&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Coeficientes do projeto:&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th&gt;Name&lt;/th&gt;&lt;th&gt;Value&lt;/th&gt;&lt;th&gt;Unit&lt;/th&gt;&lt;/tr&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th&gt;Nome&lt;/th&gt;&lt;th&gt;Valor&lt;/th&gt;&lt;th&gt;Unidade&lt;/th&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Controller&lt;/h3&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Controlador&lt;/h3&gt;</translation>
     </message>
     <message>
         <source>digital PI at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>PI digital com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (%2): C(z) = (%3) / (%4)</translation>
     </message>
     <message>
         <source>difference equation: %1, e = r − y</source>
-        <translation type="unfinished"></translation>
+        <translation>equação de diferenças: %1, e = r − y</translation>
     </message>
     <message>
         <source>num = [%1], den = [%2] (ascending powers of z&lt;sup&gt;−1&lt;/sup&gt;)</source>
-        <translation type="unfinished"></translation>
+        <translation>num = [%1], den = [%2] (potências crescentes de z&lt;sup&gt;−1&lt;/sup&gt;)</translation>
     </message>
     <message>
         <source>notch at %1 Hz, width %2 Hz, depth %3 dB on the error: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, prewarped)</source>
-        <translation type="unfinished"></translation>
+        <translation>notch em %1 Hz, largura %2 Hz, profundidade %3 dB no erro: N(s) = (%4) / (%5); biquad b = [%6], a = [1, %7, %8] (bilinear, com pré-distorção)</translation>
     </message>
     <message>
         <source>no digital controller: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>sem controlador digital: %1</translation>
     </message>
     <message>
         <source>the RST law above runs as designed, at T&lt;sub&gt;s&lt;/sub&gt; = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>a lei RST acima é executada como projetada, com T&lt;sub&gt;s&lt;/sub&gt; = %1 s</translation>
     </message>
     <message>
         <source>the method&apos;s step runs at T&lt;sub&gt;s&lt;/sub&gt; = %1 s (File › Export › Firmware C header)</source>
-        <translation type="unfinished"></translation>
+        <translation>o passo do método é executado com T&lt;sub&gt;s&lt;/sub&gt; = %1 s (Arquivo › Exportar › Cabeçalho C para firmware)</translation>
     </message>
     <message>
         <source>digital loop: least damping of its z-plane poles %1 (the design&apos;s %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>malha digital: menor amortecimento dos seus polos no plano z %1 (o do projeto: %2)</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;Digital implementation&lt;/b&gt;&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;Implementação digital&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
         <source>no design: %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>sem projeto: %1: %2</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Warnings&lt;/h3&gt;&lt;p&gt;None.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Avisos&lt;/h3&gt;&lt;p&gt;Nenhum.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>&lt;h3&gt;Warnings&lt;/h3&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;Avisos&lt;/h3&gt;</translation>
     </message>
     <message>
         <source>&lt;h2 style=&apos;page-break-before: always&apos;&gt;Both axes: the XY contour&lt;/h2&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h2 style=&apos;page-break-before: always&apos;&gt;Os dois eixos: o contorno XY&lt;/h2&gt;</translation>
     </message>
     <message>
         <source>radial error of the circle: max %1 mm, RMS %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>erro radial do círculo: máx %1 mm, RMS %2 mm</translation>
     </message>
     <message>
         <source>contour error of the program: max %1 mm, RMS %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>erro de contorno do programa: máx %1 mm, RMS %2 mm</translation>
     </message>
     <message>
         <source>ISO 230-4: circular deviation G %1 mm, radial deviation F max %2 mm, F min %3 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>ISO 230-4: desvio circular G %1 mm, desvio radial F máx %2 mm, F mín %3 mm</translation>
     </message>
     <message>
         <source>program: %1</source>
-        <translation type="unfinished">programa: %1</translation>
+        <translation>programa: %1</translation>
     </message>
     <message>
         <source>input shaper %1 on the reference at %2 Hz, damping %3</source>
-        <translation type="unfinished"></translation>
+        <translation>modelador de entrada %1 na referência em %2 Hz, amortecimento %3</translation>
     </message>
     <message>
         <source>; axis %1: residual vibration %2 mm shaped, %3 mm unshaped</source>
-        <translation type="unfinished"></translation>
+        <translation>; eixo %1: vibração residual de %2 mm com modelagem, %3 mm sem modelagem</translation>
     </message>
     <message>
         <source>cross-coupled contouring controller (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), %3 contour estimate</source>
-        <translation type="unfinished"></translation>
+        <translation>controlador de contorno com acoplamento cruzado (Koren): k&lt;sub&gt;p&lt;/sub&gt; = %1 V/mm, k&lt;sub&gt;i&lt;/sub&gt; = %2 V/(mm s), estimativa de contorno %3</translation>
     </message>
     <message>
         <source>cross-coupling: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>acoplamento cruzado: %1</translation>
     </message>
 </context>
 <context>
     <name>FoldButton</name>
     <message>
         <source>%1: click to show or hide these settings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: clique para mostrar ou ocultar estas configurações</translation>
     </message>
 </context>
 <context>
@@ -728,78 +728,78 @@ falha: %1</translation>
     <name>ReportMetrics</name>
     <message>
         <source>n/a</source>
-        <translation type="unfinished">n/d</translation>
+        <translation>n/d</translation>
     </message>
     <message>
         <source>&gt; %1 (not settled in the run)</source>
-        <translation type="unfinished"></translation>
+        <translation>&gt; %1 (não acomodou na simulação)</translation>
     </message>
     <message>
         <source>no</source>
-        <translation type="unfinished">não</translation>
+        <translation>não</translation>
     </message>
     <message>
         <source>&lt;p&gt;No figures: the axis has no design (%1: %2).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Sem valores: o eixo não tem projeto (%1: %2).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>—</source>
-        <translation type="unfinished">—</translation>
+        <translation>—</translation>
     </message>
     <message>
         <source>≤ %1</source>
-        <translation type="unfinished">≤ %1</translation>
+        <translation>≤ %1</translation>
     </message>
     <message>
         <source> (flagged, not applied)</source>
-        <translation type="unfinished"></translation>
+        <translation> (sinalizado, não aplicado)</translation>
     </message>
     <message>
         <source>|e| ≤ %1</source>
-        <translation type="unfinished">|e| ≤ %1</translation>
+        <translation>|e| ≤ %1</translation>
     </message>
     <message>
         <source>same step</source>
-        <translation type="unfinished"></translation>
+        <translation>mesmo degrau</translation>
     </message>
     <message>
         <source>unstable</source>
-        <translation type="unfinished">instável</translation>
+        <translation>instável</translation>
     </message>
     <message>
         <source>same loop</source>
-        <translation type="unfinished"></translation>
+        <translation>mesma malha</translation>
     </message>
     <message>
         <source>≥ %1</source>
-        <translation type="unfinished">≥ %1</translation>
+        <translation>≥ %1</translation>
     </message>
     <message>
         <source>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th align=&apos;left&apos;&gt;Figure&lt;/th&gt;&lt;th&gt;Limit&lt;/th&gt;&lt;th&gt;As designed&lt;/th&gt;&lt;th&gt;As implemented%1&lt;/th&gt;&lt;/tr&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;tr style=&apos;background:#dddddd&apos;&gt;&lt;th align=&apos;left&apos;&gt;Valor&lt;/th&gt;&lt;th&gt;Limite&lt;/th&gt;&lt;th&gt;Como projetado&lt;/th&gt;&lt;th&gt;Como implementado%1&lt;/th&gt;&lt;/tr&gt;</translation>
     </message>
     <message>
         <source> (digital, Ts = %1 s)</source>
-        <translation type="unfinished"></translation>
+        <translation> (digital, Ts = %1 s)</translation>
     </message>
 </context>
 <context>
     <name>ReportWriter</name>
     <message>
         <source>Cannot write the report to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Não é possível gravar o relatório em %1: %2</translation>
     </message>
     <message>
         <source>No report: the session&apos;s run is refused: %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Sem relatório: a simulação da sessão foi recusada: %1: %2</translation>
     </message>
     <message>
         <source>XY Tune design report</source>
-        <translation type="unfinished"></translation>
+        <translation>Relatório de projeto do XY Tune</translation>
     </message>
     <message>
         <source>XY Tune %1</source>
-        <translation type="unfinished"></translation>
+        <translation>XY Tune %1</translation>
     </message>
 </context>
 <context>
@@ -894,7 +894,7 @@ falha: %1</translation>
     </message>
     <message>
         <source>Bode diagram of the loop L(jω) = C(jω) G(jω): magnitude (dB) and phase (°) against ω (rad/s) on an adaptive grid, with the gain and phase margins drawn where they are read (green when they meet the specification&apos;s minima, red when not), and |S| = |1/(1 + L)| and |T| = |L/(1 + L)|.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagrama de Bode da malha L(jω) = C(jω) G(jω): módulo (dB) e fase (°) em função de ω (rad/s) numa grade adaptativa, com as margens de ganho e de fase desenhadas onde são lidas (em verde quando atendem aos mínimos da especificação, em vermelho quando não), e |S| = |1/(1 + L)| e |T| = |L/(1 + L)|.</translation>
     </message>
 </context>
 <context>
@@ -1145,7 +1145,7 @@ falha: %1</translation>
     </message>
     <message>
         <source>The XY contour: the programmed path, the traced path of both axes&apos; run, and the contour error (mm, the signed distance from each traced point to the nearest point of the path) magnified along the path normal by the &quot;error ×&quot; factor.</source>
-        <translation type="unfinished"></translation>
+        <translation>O contorno XY: o percurso programado, o percurso traçado pela simulação dos dois eixos e o erro de contorno (mm, a distância com sinal de cada ponto traçado ao ponto mais próximo do percurso) ampliado ao longo da normal ao percurso pelo fator &quot;erro ×&quot;.</translation>
     </message>
 </context>
 <context>
@@ -1388,11 +1388,11 @@ falha: %1</translation>
     </message>
     <message>
         <source>Stop the sweep; the cells run so far are shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Interromper a varredura; as células simuladas até aqui são mostradas</translation>
     </message>
     <message>
         <source>The sweep&apos;s map: each cell one (kp, ki) pair of the cross-coupling, coloured by the program&apos;s max contour error (mm); hover a cell for its figures, click it to select it</source>
-        <translation type="unfinished"></translation>
+        <translation>O mapa da varredura: cada célula é um par (kp, ki) do acoplamento cruzado, colorida pelo erro de contorno máx do programa (mm); passe o mouse sobre uma célula para ver seus valores, clique para selecioná-la</translation>
     </message>
 </context>
 <context>
@@ -1510,7 +1510,7 @@ falha: %1</translation>
     </message>
     <message>
         <source>Design space: each cell of the (ωn, kp) grid is one Guillemin–Truxal design run on the session&apos;s trajectory, coloured by the chosen criterion; feasible cells meet every limit of the specification. Click a cell to take its ωn and kp.</source>
-        <translation type="unfinished"></translation>
+        <translation>Espaço de projeto: cada célula da grade (ωn, kp) é um projeto Guillemin–Truxal simulado na trajetória da sessão, colorido pelo critério escolhido; as células viáveis atendem a todos os limites da especificação. Clique numa célula para adotar seus ωn e kp.</translation>
     </message>
 </context>
 <context>
@@ -1747,75 +1747,75 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>Smallest ωn (rad/s) of the grid: the reference model&apos;s natural frequency of the first row of designs</source>
-        <translation type="unfinished"></translation>
+        <translation>Menor ωn (rad/s) da grade: a frequência natural do modelo de referência da primeira linha de projetos</translation>
     </message>
     <message>
         <source>Largest ωn (rad/s) of the grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Maior ωn (rad/s) da grade</translation>
     </message>
     <message>
         <source>Number of ωn values of the grid (rows); each cell is one design run on the session&apos;s trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Número de valores de ωn da grade (linhas); cada célula é um projeto simulado na trajetória da sessão</translation>
     </message>
     <message>
         <source>Smallest proportional gain kp (V per model unit) of the grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Menor ganho proporcional kp (V por unidade do modelo) da grade</translation>
     </message>
     <message>
         <source>Largest proportional gain kp (V per model unit) of the grid</source>
-        <translation type="unfinished"></translation>
+        <translation>Maior ganho proporcional kp (V por unidade do modelo) da grade</translation>
     </message>
     <message>
         <source>Number of kp values of the grid (columns)</source>
-        <translation type="unfinished"></translation>
+        <translation>Número de valores de kp da grade (colunas)</translation>
     </message>
     <message>
         <source>Space the ωn and kp values evenly on a logarithmic scale (else linearly between the bounds)</source>
-        <translation type="unfinished"></translation>
+        <translation>Espaçar os valores de ωn e kp uniformemente em escala logarítmica (senão, linearmente entre os limites)</translation>
     </message>
     <message>
         <source>The figure that picks the best feasible design: minimized (ITAE, max |e|, RMSE, max |u|, settle time) or maximized (the margins)</source>
-        <translation type="unfinished"></translation>
+        <translation>O valor que escolhe o melhor projeto viável: minimizado (ITAE, |e| máx, RMSE, |u| máx, tempo de acomodação) ou maximizado (as margens)</translation>
     </message>
     <message>
         <source>The figure the heat map&apos;s colours show for each design of the grid</source>
-        <translation type="unfinished"></translation>
+        <translation>O valor que as cores do mapa de calor mostram para cada projeto da grade</translation>
     </message>
     <message>
         <source>Colour the heat map by the logarithm of the figure (its values often span decades)</source>
-        <translation type="unfinished"></translation>
+        <translation>Colorir o mapa de calor pelo logaritmo do valor (seus valores costumam abranger várias décadas)</translation>
     </message>
     <message>
         <source>Maximum settling time (s, 2 % band) of the closed loop&apos;s unit step</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempo de acomodação máximo (s, faixa de 2 %) do degrau unitário da malha fechada</translation>
     </message>
     <message>
         <source>Maximum overshoot (%) of the closed loop&apos;s unit step</source>
-        <translation type="unfinished"></translation>
+        <translation>Sobressinal máximo (%) do degrau unitário da malha fechada</translation>
     </message>
     <message>
         <source>Maximum tracking error max |e| as a percentage of the travel</source>
-        <translation type="unfinished"></translation>
+        <translation>Erro de seguimento máximo |e| máx como porcentagem do curso</translation>
     </message>
     <message>
         <source>Actuator limit umax (V): a design whose run asks for more is infeasible; the session&apos;s |u| limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Limite do atuador umax (V): um projeto cuja simulação exige mais é inviável; o limite de |u| da sessão</translation>
     </message>
     <message>
         <source>Minimum phase margin (°) of the loop, 180° + arg L(jωc); 0: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Margem de fase mínima (°) da malha, 180° + arg L(jωc); 0: nenhuma</translation>
     </message>
     <message>
         <source>Minimum gain margin (dB) of the loop, −20 log10 |L(jω180)|; 0: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Margem de ganho mínima (dB) da malha, −20 log10 |L(jω180)|; 0: nenhuma</translation>
     </message>
     <message>
         <source>Run the study: every design of the grid on the session&apos;s trajectory at its dt, judged against the specification</source>
-        <translation type="unfinished"></translation>
+        <translation>Executar o estudo: cada projeto da grade na trajetória da sessão com o seu dt, avaliado frente à especificação</translation>
     </message>
     <message>
         <source>Stop the study; the designs computed so far are shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Interromper o estudo; os projetos calculados até aqui são mostrados</translation>
     </message>
 </context>
 <context>
@@ -1941,7 +1941,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>Envelope of the perturbed plants&apos; runs: the range (min to max over the stable plants) of the chosen signal (error or output in mm, command in V) around the nominal run, against time (s).</source>
-        <translation type="unfinished"></translation>
+        <translation>Envoltória das simulações das plantas perturbadas: a faixa (do mínimo ao máximo sobre as plantas estáveis) do sinal escolhido (erro ou saída em mm, comando em V) em torno da simulação nominal, em função do tempo (s).</translation>
     </message>
 </context>
 <context>
@@ -2318,19 +2318,19 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>The log&apos;s column of the %1</source>
-        <translation type="unfinished"></translation>
+        <translation>A coluna do registro para %1</translation>
     </message>
     <message>
         <source>The Stribeck curve: each jog&apos;s steady command (V, mean ± one standard deviation over its cruise) against its velocity (mm/s), and the fitted friction curve sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</source>
-        <translation type="unfinished"></translation>
+        <translation>A curva de Stribeck: o comando em regime de cada jog (V, média ± um desvio-padrão no trecho de velocidade constante) em função da sua velocidade (mm/s), e a curva de atrito ajustada sign(v)(Fc + (Fs − Fc) exp(−(v/vs)²)) + bv v</translation>
     </message>
     <message>
         <source>Read a jog log (CSV with time, reference, position and command columns) and estimate the friction levels</source>
-        <translation type="unfinished"></translation>
+        <translation>Ler um registro de jog (CSV com colunas de tempo, referência, posição e comando) e estimar os níveis de atrito</translation>
     </message>
     <message>
         <source>Set the estimated levels as the current axis&apos; table friction (one undoable step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Definir os níveis estimados como o atrito da mesa do eixo atual (um passo que pode ser desfeito)</translation>
     </message>
 </context>
 <context>
@@ -2488,7 +2488,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>Histogram of the chosen figure (RMSE or max |e| in mm, max |u| in V) over the stable perturbed plants, with the specification&apos;s limit drawn.</source>
-        <translation type="unfinished"></translation>
+        <translation>Histograma do valor escolhido (RMSE ou |e| máx em mm, |u| máx em V) sobre as plantas perturbadas estáveis, com o limite da especificação desenhado.</translation>
     </message>
 </context>
 <context>
@@ -2887,71 +2887,71 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>Remove a straight line fitted by least squares from the input and the output before the fit (else their means)</source>
-        <translation type="unfinished"></translation>
+        <translation>Remover da entrada e da saída uma reta ajustada por mínimos quadrados antes do ajuste (senão, suas médias)</translation>
     </message>
     <message>
         <source>Read a logged experiment: CSV/TSV, LabVIEW .lvm or MATLAB .mat, with the input in V and the position</source>
-        <translation type="unfinished"></translation>
+        <translation>Ler um ensaio registrado: CSV/TSV, LabVIEW .lvm ou MATLAB .mat, com a entrada em V e a posição</translation>
     </message>
     <message>
         <source>A second record of the same axis on which the candidates&apos; fit is judged (else on the estimation data)</source>
-        <translation type="unfinished"></translation>
+        <translation>Um segundo registro do mesmo eixo no qual o ajuste dos candidatos é avaliado (senão, nos dados de estimação)</translation>
     </message>
     <message>
         <source>The column of the command u (V) sent to the amplifier</source>
-        <translation type="unfinished"></translation>
+        <translation>A coluna do comando u (V) enviado ao amplificador</translation>
     </message>
     <message>
         <source>The column of the measured position y</source>
-        <translation type="unfinished"></translation>
+        <translation>A coluna da posição medida y</translation>
     </message>
     <message>
         <source>The column of the time (s), or none: the sample time Ts below</source>
-        <translation type="unfinished"></translation>
+        <translation>A coluna do tempo (s), ou nenhuma: o período de amostragem Ts abaixo</translation>
     </message>
     <message>
         <source>Sample time Ts (s) of the record when it has no time column</source>
-        <translation type="unfinished"></translation>
+        <translation>Período de amostragem Ts (s) do registro quando ele não tem coluna de tempo</translation>
     </message>
     <message>
         <source>The unit of the output column: mm, or m (converted to mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>A unidade da coluna de saída: mm, ou m (convertido para mm)</translation>
     </message>
     <message>
         <source>ARX: A y = B u + e by least squares; OE: y = B/F u + e and BJ: y = B/F u + C/D e by prediction error (Levenberg–Marquardt); GT3: Braga et al.&apos;s k0/(s³ + a1 s² + a2 s) fitted to the output</source>
-        <translation type="unfinished"></translation>
+        <translation>ARX: A y = B u + e por mínimos quadrados; OE: y = B/F u + e e BJ: y = B/F u + C/D e por erro de predição (Levenberg–Marquardt); GT3: o k0/(s³ + a1 s² + a2 s) de Braga et al. ajustado à saída</translation>
     </message>
     <message>
         <source>Order %1 of the model: na, nb, nc, nd, nf the numbers of coefficients of A, B, C, D, F; nk the input delay in samples</source>
-        <translation type="unfinished"></translation>
+        <translation>Ordem %1 do modelo: na, nb, nc, nd, nf são os números de coeficientes de A, B, C, D, F; nk é o atraso da entrada em amostras</translation>
     </message>
     <message>
         <source>The most Levenberg–Marquardt iterations of an OE, BJ or GT3 fit before it stops with the best estimate so far</source>
-        <translation type="unfinished"></translation>
+        <translation>O número máximo de iterações de Levenberg–Marquardt de um ajuste OE, BJ ou GT3 antes que ele pare com a melhor estimativa até então</translation>
     </message>
     <message>
         <source>Estimate the model of the chosen structure and orders; it is added to the candidates with its fit, AIC and residual tests</source>
-        <translation type="unfinished"></translation>
+        <translation>Estimar o modelo com a estrutura e as ordens escolhidas; ele é adicionado aos candidatos com seu ajuste, AIC e testes de resíduos</translation>
     </message>
     <message>
         <source>Stop the fit running</source>
-        <translation type="unfinished"></translation>
+        <translation>Interromper o ajuste em andamento</translation>
     </message>
     <message>
         <source>Make the selected model axis X&apos;s plant (an undoable step): GT3 as the Guillemin–Truxal plant, ARX/OE/BJ as the pole-placement model</source>
-        <translation type="unfinished"></translation>
+        <translation>Tornar o modelo selecionado a planta do eixo X (um passo que pode ser desfeito): GT3 como planta de Guillemin–Truxal, ARX/OE/BJ como modelo da alocação de polos</translation>
     </message>
     <message>
         <source>Make the selected model axis Y&apos;s plant (an undoable step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tornar o modelo selecionado a planta do eixo Y (um passo que pode ser desfeito)</translation>
     </message>
     <message>
         <source>The measured output y (mm) against time (s) and the selected model&apos;s simulated output ŷ from the same input</source>
-        <translation type="unfinished"></translation>
+        <translation>A saída medida y (mm) em função do tempo (s) e a saída simulada ŷ do modelo selecionado a partir da mesma entrada</translation>
     </message>
     <message>
         <source>The residuals&apos; autocorrelation and their cross-correlation with the input against the lag, with the 99 % confidence band of white, independent residuals</source>
-        <translation type="unfinished"></translation>
+        <translation>A autocorrelação dos resíduos e sua correlação cruzada com a entrada em função do atraso, com a faixa de confiança de 99 % de resíduos brancos e independentes</translation>
     </message>
 </context>
 <context>
@@ -3465,43 +3465,43 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>The parameter the parameter locus sweeps over its slider&apos;s range, the other held at the design&apos;s value</source>
-        <translation type="unfinished"></translation>
+        <translation>O parâmetro que o lugar do parâmetro varre na faixa do seu controle deslizante, com o outro mantido no valor do projeto</translation>
     </message>
     <message>
         <source>How the current axis is controlled: Guillemin–Truxal PI (Braga et al.), pole placement + ZPETC (Patrick, Ishak and Adnan) or LinuxCNC&apos;s PID with command feedforward</source>
-        <translation type="unfinished"></translation>
+        <translation>Como o eixo atual é controlado: PI de Guillemin–Truxal (Braga et al.), alocação de polos + ZPETC (Patrick, Ishak e Adnan) ou o PID do LinuxCNC com pré-alimentação do comando</translation>
     </message>
     <message>
         <source>ωn (rad/s): the natural frequency of the 4th-order reference model G_R(s); the PI follows as f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al. Eq. 11–18)</source>
-        <translation type="unfinished"></translation>
+        <translation>ωn (rad/s): a frequência natural do modelo de referência de 4ª ordem G_R(s); o PI decorre como f3 = kp k0/ωn³, ki = ωn⁴/k0 (Braga et al., Eq. 11–18)</translation>
     </message>
     <message>
         <source>kp (V per model unit): the PI&apos;s proportional gain; with ωn it sets ki = kp ψ1 = ωn⁴/k0 and the reference model&apos;s f3 = kp k0/ωn³</source>
-        <translation type="unfinished"></translation>
+        <translation>kp (V por unidade do modelo): o ganho proporcional do PI; junto com ωn ele define ki = kp ψ1 = ωn⁴/k0 e o f3 = kp k0/ωn³ do modelo de referência</translation>
     </message>
     <message>
         <source>Actuator limit umax (V): every run clips the command to ±umax, and the anti-windup acts at it</source>
-        <translation type="unfinished"></translation>
+        <translation>Limite do atuador umax (V): toda simulação limita o comando a ±umax, e o anti-windup atua nesse limite</translation>
     </message>
     <message>
         <source>Controller sample time Ts (s) of the digital PI or PID: the digital implementation runs and the exports are at it</source>
-        <translation type="unfinished"></translation>
+        <translation>Período de amostragem Ts (s) do controlador do PI ou PID digital: a implementação digital é simulada e as exportações são feitas nesse período</translation>
     </message>
     <message>
         <source>How the PI kp + ki/s is discretized at the controller sample time: Tustin s = (2/Ts)(z − 1)/(z + 1), or backward Euler s = (z − 1)/(z Ts)</source>
-        <translation type="unfinished"></translation>
+        <translation>Como o PI kp + ki/s é discretizado no período de amostragem do controlador: Tustin s = (2/Ts)(z − 1)/(z + 1), ou Euler regressivo s = (z − 1)/(z Ts)</translation>
     </message>
     <message>
         <source>&amp;User guide</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Guia do usuário</translation>
     </message>
     <message>
         <source>&amp;Tutorials...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tutoriais...</translation>
     </message>
     <message>
         <source>&amp;Command-line reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Referência da &amp;linha de comando</translation>
     </message>
 </context>
 <context>
@@ -3893,79 +3893,79 @@ Sem a compensação de atrito: G %1 mm</translation>
     </message>
     <message>
         <source>RMSE (mm): the root mean square of the tracking error e = r − y over the samples of the run on the trajectory.</source>
-        <translation type="unfinished"></translation>
+        <translation>RMSE (mm): a raiz do valor quadrático médio do erro de seguimento e = r − y sobre as amostras da simulação na trajetória.</translation>
     </message>
     <message>
         <source>max |e| (mm): the largest absolute tracking error e = r − y over the run on the trajectory.</source>
-        <translation type="unfinished"></translation>
+        <translation>|e| máx (mm): o maior erro de seguimento absoluto e = r − y ao longo da simulação na trajetória.</translation>
     </message>
     <message>
         <source>max |e| (%): the largest absolute tracking error as a percentage of the travel; judged against the specification&apos;s maximum error.</source>
-        <translation type="unfinished"></translation>
+        <translation>|e| máx (%): o maior erro de seguimento absoluto como porcentagem do curso; avaliado frente ao erro máximo da especificação.</translation>
     </message>
     <message>
         <source>max |u| (V): the largest absolute command applied to the plant over the run (after the ±umax limit).</source>
-        <translation type="unfinished"></translation>
+        <translation>|u| máx (V): o maior comando absoluto aplicado à planta ao longo da simulação (após o limite de ±umax).</translation>
     </message>
     <message>
         <source>saturated (s): the time the command spends clipped at ±umax during the run (sample count × dt).</source>
-        <translation type="unfinished"></translation>
+        <translation>saturado (s): o tempo que o comando passa limitado em ±umax durante a simulação (número de amostras × dt).</translation>
     </message>
     <message>
         <source>ITAE (mm·s²): the integral of t·|e(t)| over the run (trapezoidal rule on the samples); it weighs late errors more than early ones.</source>
-        <translation type="unfinished"></translation>
+        <translation>ITAE (mm·s²): a integral de t·|e(t)| ao longo da simulação (regra dos trapézios sobre as amostras); pondera mais os erros tardios que os iniciais.</translation>
     </message>
     <message>
         <source>ZPETC gain (%): the RMSE improvement of the ZPETC feedforward over the loop alone, 100 (1 − RMSE with / RMSE without).</source>
-        <translation type="unfinished"></translation>
+        <translation>ganho do ZPETC (%): a melhora do RMSE com a pré-alimentação ZPETC em relação à malha sozinha, 100 (1 − RMSE com / RMSE sem).</translation>
     </message>
     <message>
         <source>settle time (s): from the end of the move (tf) until |e| stays inside the in-position window; judged against the specification&apos;s settle limit.</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo de acomodação (s): do fim do movimento (tf) até |e| permanecer dentro da janela de posição; avaliado frente ao limite de acomodação da especificação.</translation>
     </message>
     <message>
         <source>final e (mm): the tracking error r − y at the last sample of the run.</source>
-        <translation type="unfinished"></translation>
+        <translation>e final (mm): o erro de seguimento r − y na última amostra da simulação.</translation>
     </message>
     <message>
         <source>overrun (mm): how far the axis went beyond the target after tf, in the direction of travel (0 when it never passed it).</source>
-        <translation type="unfinished"></translation>
+        <translation>ultrapassagem (mm): quanto o eixo foi além do alvo após tf, no sentido do movimento (0 quando nunca o ultrapassou).</translation>
     </message>
     <message>
         <source>settling 2 % (s): the time after which the closed loop&apos;s unit step stays within ±2 % of its final value.</source>
-        <translation type="unfinished"></translation>
+        <translation>acomodação 2 % (s): o tempo após o qual o degrau unitário da malha fechada permanece dentro de ±2 % do seu valor final.</translation>
     </message>
     <message>
         <source>overshoot (%): the unit step&apos;s peak above its final value, 100 (peak − final)/final; judged against the specification&apos;s maximum overshoot.</source>
-        <translation type="unfinished"></translation>
+        <translation>sobressinal (%): o pico do degrau unitário acima do seu valor final, 100 (pico − final)/final; avaliado frente ao sobressinal máximo da especificação.</translation>
     </message>
     <message>
         <source>RMSE (mm) of the digital implementation: the same figure for the sampled-data loop (controller at its Ts, hold, quantization, limit, delay); amber when it differs from the design&apos;s by more than 5 %.</source>
-        <translation type="unfinished"></translation>
+        <translation>RMSE (mm) da implementação digital: o mesmo valor para a malha amostrada (controlador no seu Ts, retentor, quantização, limite, atraso); em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
     </message>
     <message>
         <source>max |e| (mm) of the digital implementation: the largest absolute error of the sampled-data loop&apos;s run; amber when it differs from the design&apos;s by more than 5 %.</source>
-        <translation type="unfinished"></translation>
+        <translation>|e| máx (mm) da implementação digital: o maior erro absoluto da simulação da malha amostrada; em âmbar quando difere do valor do projeto em mais de 5 %.</translation>
     </message>
     <message>
         <source>min ζ: the least damping ratio of the digital closed loop&apos;s poles, ζ = −Re s/|s| with s = ln z / Ts; the design&apos;s in the tooltip.</source>
-        <translation type="unfinished"></translation>
+        <translation>ζ mín: o menor coeficiente de amortecimento dos polos da malha fechada digital, ζ = −Re s/|s| com s = ln z / Ts; o do projeto aparece na dica.</translation>
     </message>
     <message>
         <source>Gain margin (dB): −20 log10 |L(jω180)| at the phase crossover ω180 where arg L = −180°: how much the loop gain may grow before the closed loop becomes unstable; ∞: never. Computed on the continuous loop.</source>
-        <translation type="unfinished"></translation>
+        <translation>Margem de ganho (dB): −20 log10 |L(jω180)| na frequência de cruzamento de fase ω180, onde arg L = −180°: quanto o ganho de malha pode crescer antes que a malha fechada se torne instável; ∞: nunca. Calculada na malha contínua.</translation>
     </message>
     <message>
         <source>Phase margin (°): 180° + arg L(jωc) at the gain crossover ωc where |L| = 1; computed on the continuous loop.</source>
-        <translation type="unfinished"></translation>
+        <translation>Margem de fase (°): 180° + arg L(jωc) na frequência de cruzamento de ganho ωc, onde |L| = 1; calculada na malha contínua.</translation>
     </message>
     <message>
         <source>Delay margin (s): the extra loop delay the closed loop tolerates, phase margin (rad) / ωc, the smallest over the gain crossovers.</source>
-        <translation type="unfinished"></translation>
+        <translation>Margem de atraso (s): o atraso adicional na malha que a malha fechada tolera, margem de fase (rad) / ωc, a menor entre os cruzamentos de ganho.</translation>
     </message>
     <message>
         <source>Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / the closest distance of L to −1; 1.2–2 is a usual target.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ms: o pico da sensibilidade |S(jω)| = |1/(1 + L(jω))|, isto é, 1 / a menor distância de L a −1; 1.2–2 é um alvo usual.</translation>
     </message>
 </context>
 <context>
@@ -4039,7 +4039,7 @@ Sem a compensação de atrito: G %1 mm</translation>
     </message>
     <message>
         <source>Nyquist diagram: L(jω) in the complex plane for ω from 0 to ∞ (mirrored for negative ω), with the critical point −1; Z = N + P counts the closed-loop unstable poles from the encirclements N of −1 and the open-loop unstable poles P.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagrama de Nyquist: L(jω) no plano complexo para ω de 0 a ∞ (espelhado para ω negativo), com o ponto crítico −1; Z = N + P conta os polos instáveis de malha fechada a partir dos envolvimentos N de −1 e dos polos instáveis de malha aberta P.</translation>
     </message>
 </context>
 <context>
@@ -4097,7 +4097,7 @@ Sem a compensação de atrito: G %1 mm</translation>
     </message>
     <message>
         <source>Parameter locus: the closed-loop poles as the chosen parameter (ωn or kp) sweeps its range, with the design&apos;s value marked and the value where the loop turns unstable (a pole crossing the imaginary axis) marked.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lugar do parâmetro: os polos de malha fechada à medida que o parâmetro escolhido (ωn ou kp) varre sua faixa, com o valor do projeto marcado e também o valor em que a malha se torna instável (um polo cruzando o eixo imaginário).</translation>
     </message>
 </context>
 <context>
@@ -4144,7 +4144,8 @@ Sem a compensação de atrito: G %1 mm</translation>
     <message>
         <source>%1
 Type a value (scientific notation such as 2.5e3 is accepted).</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+Digite um valor (notação científica como 2.5e3 é aceita).</translation>
     </message>
 </context>
 <context>
@@ -4235,11 +4236,11 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
     </message>
     <message>
         <source>The gain %1 as a percentage (%) of the plant&apos;s exact inverse (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancels the plant&apos;s dynamics along the trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>O ganho %1 como porcentagem (%) da inversa exata da planta (FF1 = a2 u/k0, FF2 = a1 u/k0, FF3 = u/k0): 100 % cancela a dinâmica da planta ao longo da trajetória</translation>
     </message>
     <message>
         <source>The D term differentiates the measured position (D = −fb′) instead of the error, so a step of the command gives no kick</source>
-        <translation type="unfinished"></translation>
+        <translation>O termo D deriva a posição medida (D = −fb′) em vez do erro, de modo que um degrau no comando não provoca pico (derivative kick)</translation>
     </message>
 </context>
 <context>
@@ -4350,27 +4351,27 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
     </message>
     <message>
         <source>PI, or PID with Ti = 4 Td, for the closed-form rule</source>
-        <translation type="unfinished"></translation>
+        <translation>PI, ou PID com Ti = 4 Td, para a regra em forma fechada</translation>
     </message>
     <message>
         <source>Target gain crossover ωc (rad/s): the closed-form gains make |L(jωc)| = 1, L = (P + I/s + D s) G/u</source>
-        <translation type="unfinished"></translation>
+        <translation>Frequência de cruzamento de ganho desejada ωc (rad/s): os ganhos em forma fechada fazem |L(jωc)| = 1, L = (P + I/s + D s) G/u</translation>
     </message>
     <message>
         <source>Target phase margin (°) at ωc: arg L(jωc) = −180° + PM</source>
-        <translation type="unfinished"></translation>
+        <translation>Margem de fase desejada (°) em ωc: arg L(jωc) = −180° + PM</translation>
     </message>
     <message>
         <source>Relay amplitude d (V) of the simulated relay experiment; its limit cycle&apos;s amplitude a and period Tu give Ku = 4d/(πa) for Ziegler–Nichols and Tyreus–Luyben</source>
-        <translation type="unfinished"></translation>
+        <translation>Amplitude d (V) do relé no ensaio de relé simulado; a amplitude a e o período Tu do seu ciclo-limite dão Ku = 4d/(πa) para Ziegler–Nichols e Tyreus–Luyben</translation>
     </message>
     <message>
         <source>Set this row&apos;s P, I and D on the axis (one undoable step)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar P, I e D desta linha ao eixo (um passo que pode ser desfeito)</translation>
     </message>
     <message>
         <source>The simulated relay experiment: the position y (mm) and the relay&apos;s command u (V) against time (s), settling into the limit cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>O ensaio de relé simulado: a posição y (mm) e o comando u (V) do relé em função do tempo (s), acomodando-se no ciclo-limite</translation>
     </message>
 </context>
 <context>
@@ -4417,15 +4418,15 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
     </message>
     <message>
         <source>A plant of Braga et al.: the lower base (Eq. 2) or the upper base (Eq. 1) with the paper&apos;s ωn and kp; &quot;custom&quot; once a coefficient is edited</source>
-        <translation type="unfinished"></translation>
+        <translation>Uma planta de Braga et al.: a base inferior (Eq. 2) ou a base superior (Eq. 1) com os ωn e kp do artigo; &quot;personalizada&quot; assim que um coeficiente é editado</translation>
     </message>
     <message>
         <source>Coefficient a1 (1/s) of G(s) = k0 / (s³ + a1 s² + a2 s): the sum of the two non-zero poles&apos; magnitudes</source>
-        <translation type="unfinished"></translation>
+        <translation>Coeficiente a1 (1/s) de G(s) = k0 / (s³ + a1 s² + a2 s): a soma dos módulos dos dois polos não nulos</translation>
     </message>
     <message>
         <source>Coefficient a2 (1/s²) of G(s) = k0 / (s³ + a1 s² + a2 s): the product of the two non-zero poles; k0/a2 is the velocity gain</source>
-        <translation type="unfinished"></translation>
+        <translation>Coeficiente a2 (1/s²) de G(s) = k0 / (s³ + a1 s² + a2 s): o produto dos dois polos não nulos; k0/a2 é o ganho de velocidade</translation>
     </message>
 </context>
 <context>
@@ -4444,7 +4445,7 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
     </message>
     <message>
         <source>Pole-zero map: the plant&apos;s, controller&apos;s and closed loop&apos;s poles (×) and zeros (○) in the s-plane, or in the z-plane for the digital loop (View › Pole-zero map of the digital loop), with lines of constant damping.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mapa de polos e zeros: os polos (×) e zeros (○) da planta, do controlador e da malha fechada no plano s, ou no plano z para a malha digital (Exibir › Mapa de polos e zeros da malha digital), com linhas de amortecimento constante.</translation>
     </message>
 </context>
 <context>
@@ -4506,19 +4507,19 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
     </message>
     <message>
         <source>An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the y axis (Eq. 3), with T = 1 − 0.2 z⁻¹ and Ts = 70 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Um modelo de eixo de Patrick, Ishak e Adnan: o eixo x (Eq. 1) ou o eixo y (Eq. 3), com T = 1 − 0.2 z⁻¹ e Ts = 70 ms</translation>
     </message>
     <message>
         <source>The desired closed-loop pole: T = 1 + t1 z⁻¹ puts the RST loop&apos;s pole at z = −t1; the Diophantine equation A F + B G = T gives F, G</source>
-        <translation type="unfinished"></translation>
+        <translation>O polo de malha fechada desejado: T = 1 + t1 z⁻¹ coloca o polo da malha RST em z = −t1; a equação diofantina A F + B G = T fornece F e G</translation>
     </message>
     <message>
         <source>Sample time Ts (s) of the ARX model and of its RST controller</source>
-        <translation type="unfinished"></translation>
+        <translation>Período de amostragem Ts (s) do modelo ARX e do seu controlador RST</translation>
     </message>
     <message>
         <source>Tomizuka&apos;s zero-phase-error tracking controller ahead of the loop: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference previewed p samples</source>
-        <translation type="unfinished"></translation>
+        <translation>O controlador de seguimento com erro de fase nulo (ZPETC) de Tomizuka antes da malha: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), com a referência antecipada em p amostras</translation>
     </message>
 </context>
 <context>
@@ -4536,92 +4537,94 @@ Type a value (scientific notation such as 2.5e3 is accepted).</source>
     <name>xyt::ui::ReportExporter</name>
     <message>
         <source>Export &amp;report (PDF)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar relatório (&amp;PDF)...</translation>
     </message>
     <message>
         <source>A PDF of the design for a lab report or a design review: plants, controllers, figures against the specification, warnings and plots</source>
-        <translation type="unfinished"></translation>
+        <translation>Um PDF do projeto para um relatório de laboratório ou uma revisão de projeto: plantas, controladores, valores frente à especificação, avisos e gráficos</translation>
     </message>
     <message>
         <source>Export report</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar relatório</translation>
     </message>
     <message>
         <source>PDF (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>PDF (*.pdf)</translation>
     </message>
     <message>
         <source>Writing the report...</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravando o relatório...</translation>
     </message>
     <message>
         <source>The report was not written; any existing file is unchanged.
 
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>O relatório não foi gravado; um arquivo já existente permanece inalterado.
+
+%1</translation>
     </message>
     <message>
         <source>Report written to %1 (%2 s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Relatório gravado em %1 (%2 s)</translation>
     </message>
 </context>
 <context>
     <name>xyt::ui::ReportFigures</name>
     <message>
         <source>Axis %1</source>
-        <translation type="unfinished">Eixo %1</translation>
+        <translation>Eixo %1</translation>
     </message>
     <message>
         <source>Axis %1 (%2)</source>
-        <translation type="unfinished">Eixo %1 (%2)</translation>
+        <translation>Eixo %1 (%2)</translation>
     </message>
     <message>
         <source>No design: %1: %2</source>
-        <translation type="unfinished">Sem projeto: %1: %2</translation>
+        <translation>Sem projeto: %1: %2</translation>
     </message>
     <message>
         <source>Root locus of %1 (K = 1: the design)</source>
-        <translation type="unfinished">Lugar das raízes de %1 (K = 1: o projeto)</translation>
+        <translation>Lugar das raízes de %1 (K = 1: o projeto)</translation>
     </message>
     <message>
         <source>Root locus of the loop 1 + K L = 0; the closed-loop poles of the design (K = 1) are marked, with the region the specification allows.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lugar das raízes da malha 1 + K L = 0; os polos de malha fechada do projeto (K = 1) estão marcados, com a região que a especificação permite.</translation>
     </message>
     <message>
         <source>Bode diagram of %1</source>
-        <translation type="unfinished">Diagrama de Bode de %1</translation>
+        <translation>Diagrama de Bode de %1</translation>
     </message>
     <message>
         <source>Bode diagram of the open loop L with the gain and phase margins, and the closed loop.</source>
-        <translation type="unfinished"></translation>
+        <translation>Diagrama de Bode da malha aberta L com as margens de ganho e de fase, e da malha fechada.</translation>
     </message>
     <message>
         <source>No frequency analysis: %1</source>
-        <translation type="unfinished">Sem análise em frequência: %1</translation>
+        <translation>Sem análise em frequência: %1</translation>
     </message>
     <message>
         <source>Unit step of %1</source>
-        <translation type="unfinished">Degrau unitário de %1</translation>
+        <translation>Degrau unitário de %1</translation>
     </message>
     <message>
         <source>Unit step of the closed loop, with the specification&apos;s overshoot and settling limits.</source>
-        <translation type="unfinished"></translation>
+        <translation>Degrau unitário da malha fechada, com os limites de sobressinal e de acomodação da especificação.</translation>
     </message>
     <message>
         <source>No step response: %1</source>
-        <translation type="unfinished">Sem resposta ao degrau: %1</translation>
+        <translation>Sem resposta ao degrau: %1</translation>
     </message>
     <message>
         <source>Response to the trajectory: reference and output, tracking error, control voltage; the digital implementation overlaid.</source>
-        <translation type="unfinished"></translation>
+        <translation>Resposta à trajetória: referência e saída, erro de seguimento, tensão de controle; com a implementação digital sobreposta.</translation>
     </message>
     <message>
         <source>The XY contour: commanded and traced path, the error magnified about the path.</source>
-        <translation type="unfinished"></translation>
+        <translation>O contorno XY: percurso comandado e percurso traçado, com o erro ampliado em torno do percurso.</translation>
     </message>
     <message>
         <source>Ballbar view of the circle (ISO 230-4): the radial deviation magnified about the nominal centre.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista de ballbar do círculo (ISO 230-4): o desvio radial ampliado em torno do centro nominal.</translation>
     </message>
 </context>
 <context>
@@ -4910,11 +4913,11 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>Run the analysis: the session&apos;s unchanged controller on every plant drawn within the ranges (and the box&apos;s corners), each on the trajectory</source>
-        <translation type="unfinished"></translation>
+        <translation>Executar a análise: o controlador da sessão, inalterado, em cada planta sorteada dentro das faixas (e nos vértices da caixa), cada uma na trajetória</translation>
     </message>
     <message>
         <source>Stop the analysis; the plants run so far are shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Interromper a análise; as plantas simuladas até aqui são mostradas</translation>
     </message>
 </context>
 <context>
@@ -4961,7 +4964,7 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>Root locus: the closed-loop poles of 1 + K L(s) = 0 as the loop gain K goes from 0 to ∞ (K = 1 is the design), with the specification&apos;s ζ wedge and settling line; click a point to apply its gain, drag a closed-loop pole along the locus or a PID&apos;s zero.</source>
-        <translation type="unfinished"></translation>
+        <translation>Lugar das raízes: os polos de malha fechada de 1 + K L(s) = 0 à medida que o ganho de malha K vai de 0 a ∞ (K = 1 é o projeto), com a cunha de ζ e a linha de acomodação da especificação; clique num ponto para aplicar seu ganho, arraste um polo de malha fechada ao longo do lugar ou um zero do PID.</translation>
     </message>
 </context>
 <context>
@@ -5007,7 +5010,7 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>ZPETC sensitivity: the RMSE (mm) of the run with and without the feedforward as the plant mismatch grows from the nominal model (0 %) to the ranges set (100 %), each point over the same seeded plants.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sensibilidade do ZPETC: o RMSE (mm) da simulação com e sem a pré-alimentação à medida que a discrepância da planta cresce do modelo nominal (0 %) até as faixas definidas (100 %), cada ponto sobre as mesmas plantas sorteadas com a mesma semente.</translation>
     </message>
 </context>
 <context>
@@ -5163,11 +5166,11 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>The first design of the comparison: the current one or a stored snapshot (Design › Store snapshot)</source>
-        <translation type="unfinished"></translation>
+        <translation>O primeiro projeto da comparação: o atual ou um instantâneo guardado (Projeto › Guardar instantâneo)</translation>
     </message>
     <message>
         <source>The second design of the comparison; the table lists both designs&apos; settings and figures side by side</source>
-        <translation type="unfinished"></translation>
+        <translation>O segundo projeto da comparação; a tabela lista as configurações e os valores dos dois projetos lado a lado</translation>
     </message>
 </context>
 <context>
@@ -5262,7 +5265,7 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>Unit step of the closed loop (not the trajectory): output against time (s), with the rise, peak and settling (2 % band) markers and the specification&apos;s overshoot and settling envelope; samples outside it are red.</source>
-        <translation type="unfinished"></translation>
+        <translation>Degrau unitário da malha fechada (não a trajetória): saída em função do tempo (s), com os marcadores de subida, pico e acomodação (faixa de 2 %) e a envoltória de sobressinal e acomodação da especificação; as amostras fora dela ficam em vermelho.</translation>
     </message>
 </context>
 <context>
@@ -5388,7 +5391,7 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>Time response of the selected axis on the trajectory: reference r, output y and error e = r − y (mm), and the command u (V) with the ±umax band and clipped intervals shaded; the digital implementation&apos;s run as a translucent band.</source>
-        <translation type="unfinished"></translation>
+        <translation>Resposta no tempo do eixo selecionado na trajetória: referência r, saída y e erro e = r − y (mm), e o comando u (V) com a faixa de ±umax e os intervalos limitados sombreados; a simulação da implementação digital como uma faixa translúcida.</translation>
     </message>
 </context>
 <context>
@@ -5588,73 +5591,73 @@ Pior: %1 mm em %2.</translation>
     </message>
     <message>
         <source>The commanded motion both axes follow: a point-to-point move, a circle (x = R sin ωt, y = R cos ωt) or a G-code program along its feed profile</source>
-        <translation type="unfinished"></translation>
+        <translation>O movimento comandado que os dois eixos seguem: um movimento ponto a ponto, um círculo (x = R sin ωt, y = R cos ωt) ou um programa G-code ao longo do seu perfil de avanço</translation>
     </message>
     <message>
         <source>The example programs shipped with XY Tune (circles, a square, a star, an engraving): choose one to load it as the program</source>
-        <translation type="unfinished"></translation>
+        <translation>Os programas de exemplo que acompanham o XY Tune (círculos, um quadrado, uma estrela, uma gravação): escolha um para carregá-lo como programa</translation>
     </message>
     <message>
         <source>Start position x0 (mm) of the point-to-point move, held before t0</source>
-        <translation type="unfinished"></translation>
+        <translation>Posição inicial x0 (mm) do movimento ponto a ponto, mantida antes de t0</translation>
     </message>
     <message>
         <source>End position xf (mm) of the point-to-point move, reached at tf</source>
-        <translation type="unfinished"></translation>
+        <translation>Posição final xf (mm) do movimento ponto a ponto, atingida em tf</translation>
     </message>
     <message>
         <source>Start time t0 (s) of the move</source>
-        <translation type="unfinished"></translation>
+        <translation>Instante inicial t0 (s) do movimento</translation>
     </message>
     <message>
         <source>End time tf (s) of the move: the cubic (or quintic) joins x0 at t0 to xf at tf with the end velocities v0, vf (Braga et al. Eq. 4–6)</source>
-        <translation type="unfinished"></translation>
+        <translation>Instante final tf (s) do movimento: a cúbica (ou quíntica) liga x0 em t0 a xf em tf com as velocidades nas extremidades v0, vf (Braga et al., Eq. 4–6)</translation>
     </message>
     <message>
         <source>Velocity v0 (mm/s) at the start of the move</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidade v0 (mm/s) no início do movimento</translation>
     </message>
     <message>
         <source>Velocity vf (mm/s) at the end of the move</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidade vf (mm/s) no fim do movimento</translation>
     </message>
     <message>
         <source>Radius R (mm) of the circle x = R sin ωt, y = R cos ωt</source>
-        <translation type="unfinished"></translation>
+        <translation>Raio R (mm) do círculo x = R sin ωt, y = R cos ωt</translation>
     </message>
     <message>
         <source>Angular speed ω (rad/s) of the circle: one revolution takes 2π/ω seconds</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidade angular ω (rad/s) do círculo: uma volta leva 2π/ω segundos</translation>
     </message>
     <message>
         <source>Ramp-in (s): the circle&apos;s speed rises smoothly from 0 to ω over this time, so the axes do not start with a step in velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>Rampa de entrada (s): a velocidade do círculo sobe suavemente de 0 a ω nesse tempo, para que os eixos não partam com um degrau de velocidade</translation>
     </message>
     <message>
         <source>Feed scale: the feed override applied to every F word of the program (1 = as programmed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Escala de avanço: o ajuste de avanço (feed override) aplicado a cada palavra F do programa (1 = como programado)</translation>
     </message>
     <message>
         <source>Maximum acceleration (mm/s²) of the feed profile along the path; on arcs v²/R stays below it too</source>
-        <translation type="unfinished"></translation>
+        <translation>Aceleração máxima (mm/s²) do perfil de avanço ao longo do percurso; nos arcos, v²/R também fica abaixo dela</translation>
     </message>
     <message>
         <source>Simulation step dt (s): the continuous runs are sampled at it (and a G-code program&apos;s profile is planned at it)</source>
-        <translation type="unfinished"></translation>
+        <translation>Passo de simulação dt (s): as simulações contínuas são amostradas com ele (e o perfil de um programa G-code é planejado com ele)</translation>
     </message>
     <message>
         <source>Maximum jerk (mm/s³) of the feed profile (an S-curve); 0 = no jerk limit (a trapezoidal profile)</source>
-        <translation type="unfinished"></translation>
+        <translation>Jerk máximo (mm/s³) do perfil de avanço (uma curva em S); 0 = sem limite de jerk (um perfil trapezoidal)</translation>
     </message>
     <message>
         <source>The G-code program; its whole text is kept in the session, so a shared session needs no .nc file</source>
-        <translation type="unfinished"></translation>
+        <translation>O programa G-code; seu texto completo é guardado na sessão, de modo que uma sessão compartilhada dispensa o arquivo .nc</translation>
     </message>
     <message>
         <source>%1
 %2</source>
-        <translation type="unfinished">%1* {1
-%2?}</translation>
+        <translation>%1
+%2</translation>
     </message>
 </context>
 <context>
@@ -5752,53 +5755,55 @@ Pior: %1 mm em %2.</translation>
     <name>xyt::ui::UserGuideWindow</name>
     <message>
         <source>XY Tune user guide</source>
-        <translation type="unfinished"></translation>
+        <translation>Guia do usuário do XY Tune</translation>
     </message>
     <message>
         <source>Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Voltar</translation>
     </message>
     <message>
         <source>Back to the page shown before (Alt+Left)</source>
-        <translation type="unfinished"></translation>
+        <translation>Voltar à página mostrada antes (Alt+Left)</translation>
     </message>
     <message>
         <source>Forward</source>
-        <translation type="unfinished"></translation>
+        <translation>Avançar</translation>
     </message>
     <message>
         <source>Forward to the page left with Back (Alt+Right)</source>
-        <translation type="unfinished"></translation>
+        <translation>Avançar para a página deixada com Voltar (Alt+Right)</translation>
     </message>
     <message>
         <source>Home</source>
-        <translation type="unfinished"></translation>
+        <translation>Início</translation>
     </message>
     <message>
         <source>The guide&apos;s first page: the list of tutorials</source>
-        <translation type="unfinished"></translation>
+        <translation>A primeira página do guia: a lista de tutoriais</translation>
     </message>
     <message>
         <source>The pages of the guide: the tutorials, then the reference pages (command line, session file, exports, equations, architecture)</source>
-        <translation type="unfinished"></translation>
+        <translation>As páginas do guia: os tutoriais e depois as páginas de referência (linha de comando, arquivo de sessão, exportações, equações, arquitetura)</translation>
     </message>
     <message>
         <source>User guide</source>
-        <translation type="unfinished"></translation>
+        <translation>Guia do usuário</translation>
     </message>
     <message>
         <source>Reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Referência</translation>
     </message>
     <message>
         <source>%1 – XY Tune user guide</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – Guia do usuário do XY Tune</translation>
     </message>
     <message>
         <source># No pages
 
 This build of XY Tune holds no documentation pages (the folder docs/ was empty when it was built).</source>
-        <translation type="unfinished"></translation>
+        <translation># Nenhuma página
+
+Esta compilação do XY Tune não contém páginas de documentação (a pasta docs/ estava vazia quando ela foi compilada).</translation>
     </message>
 </context>
 <context>
@@ -5901,7 +5906,7 @@ This build of XY Tune holds no documentation pages (the folder docs/ was empty w
     </message>
     <message>
         <source>Vibration: the rigid plant, the plant with its flexible mode and the notch (mm/V against Hz), the input shaper&apos;s sensitivity curve with the 5 % tolerance, and the residual vibration of the run&apos;s move shaped and unshaped.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vibração: a planta rígida, a planta com seu modo flexível e o notch (mm/V em função de Hz), a curva de sensibilidade do modelador de entrada com a tolerância de 5 %, e a vibração residual do movimento simulado com e sem modelagem.</translation>
     </message>
 </context>
 <context>
@@ -5935,79 +5940,79 @@ This build of XY Tune holds no documentation pages (the folder docs/ was empty w
     <name>xyt::ui::WelcomeDialog</name>
     <message>
         <source>Welcome to XY Tune</source>
-        <translation type="unfinished"></translation>
+        <translation>Bem-vindo ao XY Tune</translation>
     </message>
     <message>
         <source>XY Tune tunes the position controllers of two-axis XY tables. Start with a tutorial (it opens in the user guide, F1) or open an example session in the workbench.</source>
-        <translation type="unfinished"></translation>
+        <translation>O XY Tune sintoniza os controladores de posição de mesas XY de dois eixos. Comece por um tutorial (ele abre no guia do usuário, F1) ou abra uma sessão de exemplo na bancada.</translation>
     </message>
     <message>
         <source>Tutorials</source>
-        <translation type="unfinished"></translation>
+        <translation>Tutoriais</translation>
     </message>
     <message>
         <source>The user guide&apos;s tutorials: double-click one to read it in the user guide window</source>
-        <translation type="unfinished"></translation>
+        <translation>Os tutoriais do guia do usuário: dê um clique duplo em um deles para lê-lo na janela do guia do usuário</translation>
     </message>
     <message>
         <source>The user guide: contents</source>
-        <translation type="unfinished"></translation>
+        <translation>O guia do usuário: sumário</translation>
     </message>
     <message>
         <source>The user guide (reference pages)</source>
-        <translation type="unfinished"></translation>
+        <translation>O guia do usuário (páginas de referência)</translation>
     </message>
     <message>
         <source>Read</source>
-        <translation type="unfinished"></translation>
+        <translation>Ler</translation>
     </message>
     <message>
         <source>Open the selected tutorial in the user guide</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir o tutorial selecionado no guia do usuário</translation>
     </message>
     <message>
         <source>Example sessions</source>
-        <translation type="unfinished"></translation>
+        <translation>Sessões de exemplo</translation>
     </message>
     <message>
         <source>Example sessions shipped with XY Tune: double-click one to open it in the workbench (as File › Open would)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sessões de exemplo que acompanham o XY Tune: dê um clique duplo em uma delas para abri-la na bancada (como faria Arquivo › Abrir)</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished">%1 (%2)</translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>No example sessions were found in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nenhuma sessão de exemplo foi encontrada em %1</translation>
     </message>
     <message>
         <source>(no examples folder)</source>
-        <translation type="unfinished"></translation>
+        <translation>(sem pasta de exemplos)</translation>
     </message>
     <message>
         <source>Open session</source>
-        <translation type="unfinished">Abrir sessão</translation>
+        <translation>Abrir sessão</translation>
     </message>
     <message>
         <source>Open the selected example in the workbench</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir o exemplo selecionado na bancada</translation>
     </message>
     <message>
         <source>Its tutorial</source>
-        <translation type="unfinished"></translation>
+        <translation>Seu tutorial</translation>
     </message>
     <message>
         <source>Read the tutorial that walks through the selected example</source>
-        <translation type="unfinished"></translation>
+        <translation>Ler o tutorial que percorre o exemplo selecionado</translation>
     </message>
     <message>
         <source>Show at start</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar ao iniciar</translation>
     </message>
     <message>
         <source>Show this page each time XY Tune starts (it is always in Help › Tutorials)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar esta página sempre que o XY Tune iniciar (ela está sempre em Ajuda › Tutoriais)</translation>
     </message>
 </context>
 </TS>
