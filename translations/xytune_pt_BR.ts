@@ -3563,11 +3563,11 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>ZPETC gain (%)</source>
-        <translation>ganho do ZPETC (%)</translation>
+        <translation>ganho ZPETC (%)</translation>
     </message>
     <message>
         <source>settle time (s)</source>
-        <translation>tempo de acomodação (s)</translation>
+        <translation>t. acomodação (s)</translation>
     </message>
     <message>
         <source>final e (mm)</source>
@@ -3575,11 +3575,11 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>overrun (mm)</source>
-        <translation>ultrapassagem (mm)</translation>
+        <translation>excesso (mm)</translation>
     </message>
     <message>
         <source>settling 2 % (s)</source>
-        <translation>acomodação 2 % (s)</translation>
+        <translation>acomod. 2 % (s)</translation>
     </message>
     <message>
         <source>overshoot (%)</source>
@@ -3591,15 +3591,15 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>gain margin (dB)</source>
-        <translation>margem de ganho (dB)</translation>
+        <translation>marg. ganho (dB)</translation>
     </message>
     <message>
         <source>phase margin (°)</source>
-        <translation>margem de fase (°)</translation>
+        <translation>marg. fase (°)</translation>
     </message>
     <message>
         <source>delay margin (s)</source>
-        <translation>margem de atraso (s)</translation>
+        <translation>marg. atraso (s)</translation>
     </message>
     <message>
         <source>Ms = max |S|</source>
@@ -3611,11 +3611,11 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>Move and settle (point-to-point)</source>
-        <translation>Mover e acomodar (ponto a ponto)</translation>
+        <translation>Movimento e acomodação</translation>
     </message>
     <message>
         <source>Unit step, as each axis runs</source>
-        <translation>Degrau unitário, como cada eixo o executa</translation>
+        <translation>Degrau unitário de cada eixo</translation>
     </message>
     <message>
         <source>Digital implementation</source>
@@ -3623,7 +3623,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>Loop margins (open loop L)</source>
-        <translation>Margens da malha (malha aberta L)</translation>
+        <translation>Margens (malha aberta L)</translation>
     </message>
     <message>
         <source>Guillemin–Truxal: the step of G_R(s), the continuous closed loop. Pole placement: the step previewed through the ZPETC feedforward and the loop when ZPETC is on, else the step of the feedback loop Kf·B/T alone.</source>
@@ -3691,7 +3691,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>settling ≤ s</source>
-        <translation>acomodação ≤ s</translation>
+        <translation>acomod. 2 % ≤ s</translation>
     </message>
     <message>
         <source>overshoot ≤ %</source>
@@ -3703,7 +3703,7 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     </message>
     <message>
         <source>settle ≤ s</source>
-        <translation>acomodação ≤ s</translation>
+        <translation>t. acomodação ≤ s</translation>
     </message>
     <message>
         <source>window mm</source>

@@ -232,7 +232,10 @@ QScrollArea* MainWindow::buildControlPanel() {
     controlScroll->setWidget(controls);
     controlScroll->setWidgetResizable(true);
     controlScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    controlScroll->setMinimumWidth(controls->sizeHint().width() + 20);
+    // It may shrink to what its rows can (their minimum, not their preferred width): the
+    // Portuguese labels are longer, and at their preferred width the window outgrew 1366 px.
+    // The splitter still gives it its preferred width when the window has room.
+    controlScroll->setMinimumWidth(controls->minimumSizeHint().width() + 20);
 
     return controlScroll;
 }

@@ -23,6 +23,7 @@
 #include <QPushButton>
 #include <QSet>
 #include <QStandardPaths>
+#include <QTableWidget>
 #include <QTest>
 
 using namespace xyt;
@@ -88,6 +89,7 @@ private slots:
     void cleanup();
     void menusArePortuguese();
     void acceleratorsDoNotClash();
+    void windowFitsA1366x768ScreenInPortuguese();
     void aboutDialogAndQtButtonsArePortuguese();
     void coreWarningIsPortugueseWithItsNumber();
     void unstableLoopWarnsInPortuguese();
@@ -126,6 +128,28 @@ void TstPortuguese::menusArePortuguese() {
     }();
     QVERIFY2(tabs.contains("&Lugar das raízes") && tabs.contains("&Degrau"),
              qPrintable(tabs.join(", ")));
+}
+
+void TstPortuguese::windowFitsA1366x768ScreenInPortuguese() {
+    // The longer Portuguese labels made the control panel's preferred width its minimum, and
+    // the window 1371 px wide: wider than the screen it is meant for. The metrics table's
+    // specification column keeps room for its limits ("≤ 100" was cut to "≤ 1…").
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    TuningSession session;
+    MainWindow window(&session);
+    window.resize(1366, 768);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY2(window.minimumSizeHint().width() <= 1366,
+             qPrintable(QString::number(window.minimumSizeHint().width())));
+    QCOMPARE(window.width(), 1366);
+    auto* table = window.metricsPanel()->findChild<QTableWidget*>();
+    QVERIFY(table);
+    QVERIFY(table->item(MetricsPanel::SettleAfterMove, 2));
+    const QString limit = table->item(MetricsPanel::SettleAfterMove, 2)->text();
+    QCOMPARE(limit, QStringLiteral("≤ 100"));
+    QVERIFY2(table->fontMetrics().horizontalAdvance(limit) + 6 <= table->columnWidth(2),
+             qPrintable(QStringLiteral("%1 px for '%2'").arg(table->columnWidth(2)).arg(limit)));
 }
 
 void TstPortuguese::acceleratorsDoNotClash() {
