@@ -26,6 +26,8 @@
 #include <QTest>
 #include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextDocument>
+#include <QTextImageFormat>
 #include <QToolButton>
 
 #include <memory>
@@ -183,6 +185,40 @@ private slots:
     }
 
     // Help › User guide and Help › Command-line reference open one window at the right page.
+    // The screenshots (1366 px) are drawn at the width the page has, their aspect kept; never
+    // wider than the page (it would scroll sideways) and never enlarged.
+    void imagesFitThePage() {
+        UserGuideWindow guide;
+        guide.resize(800, 600);
+        guide.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&guide));
+        guide.showPage(QStringLiteral("user-guide/index.md"));
+        const auto imageWidths = [&guide] {
+            std::vector<std::pair<double, double>> sizes;
+            QTextDocument* document = guide.browser()->document();
+            for (QTextBlock block = document->begin(); block.isValid(); block = block.next())
+                for (auto it = block.begin(); !it.atEnd(); ++it)
+                    if (it.fragment().charFormat().isImageFormat()) {
+                        const QTextImageFormat f = it.fragment().charFormat().toImageFormat();
+                        sizes.emplace_back(f.width(), f.height());
+                    }
+            return sizes;
+        };
+        const auto narrow = imageWidths();
+        QVERIFY(!narrow.empty()); // the index shows the window
+        const int page = guide.browser()->viewport()->width();
+        for (const auto& [w, h] : narrow) {
+            QVERIFY2(w > 0 && w <= page,
+                     qPrintable(QStringLiteral("%1 px on %2").arg(w).arg(page)));
+            QVERIFY(std::abs(h / w - 768.0 / 1366.0) < 0.01); // the screenshots' 1366x768
+        }
+        // Wider than the picture: its own width, not enlarged.
+        guide.resize(1800, 700);
+        QTest::qWait(20);
+        for (const auto& [w, h] : imageWidths())
+            QCOMPARE(w, 1366.0);
+    }
+
     void theHelpMenuOpensTheGuide() {
         TuningSession session;
         MainWindow window(&session);

@@ -6,8 +6,11 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QLabel>
 #include <QListWidget>
+#include <QPixmap>
+#include <QResizeEvent>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QStyle>
@@ -15,10 +18,14 @@
 #include <QTextBrowser>
 #include <QTextCursor>
 #include <QTextDocument>
+#include <QTextFragment>
+#include <QTextImageFormat>
 #include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 namespace xyt::ui {
 
@@ -30,6 +37,72 @@ const QStringList& userGuideReferenceOrder() {
                                    "equations.md",    "report.md",         "install.md",
                                    "architecture.md", "contributing.md"};
     return order;
+}
+
+/// The tutorials in the order the guide's index lists them (a reader goes from the papers to
+/// the table's imperfections); pages not named here follow by name.
+const QStringList& userGuideTutorialOrder() {
+    static const QStringList order{"user-guide/index.md",
+                                   "user-guide/braga-guillemin-truxal.md",
+                                   "user-guide/patrick-pole-placement.md",
+                                   "user-guide/log-to-firmware.md",
+                                   "user-guide/ballbar.md",
+                                   "user-guide/design-space-and-robustness.md",
+                                   "user-guide/feedforward.md",
+                                   "user-guide/friction.md",
+                                   "user-guide/vibration.md",
+                                   "user-guide/cross-coupling.md"};
+    return order;
+}
+
+/// Sorts @p paths by their rank in @p order, the others after them by name.
+void userGuideSortBy(QStringList& paths, const QStringList& order) {
+    std::sort(paths.begin(), paths.end(), [&order](const QString& a, const QString& b) {
+        const qsizetype ra = order.contains(a) ? order.indexOf(a) : order.size();
+        const qsizetype rb = order.contains(b) ? order.indexOf(b) : order.size();
+        return ra != rb ? ra < rb : a < b;
+    });
+}
+
+/// Scales every image of @p browser's page down to the width the page has (never up): the
+/// screenshots are 1366 px wide, wider than the guide's window, and a picture cut at the right
+/// edge or a page that scrolls sideways is worse than a smaller picture (it keeps its aspect).
+void userGuideFitImages(QTextBrowser* browser) {
+    QTextDocument* document = browser->document();
+    const double available = browser->viewport()->width() - 2.0 * document->documentMargin() - 4.0;
+    if (available < 50.0)
+        return;
+    struct Placed {
+        int position;
+        int length;
+        QTextImageFormat format;
+    };
+    std::vector<Placed> images;
+    for (QTextBlock block = document->begin(); block.isValid(); block = block.next())
+        for (auto it = block.begin(); !it.atEnd(); ++it) {
+            const QTextFragment fragment = it.fragment();
+            if (fragment.isValid() && fragment.charFormat().isImageFormat())
+                images.push_back({fragment.position(), fragment.length(),
+                                  fragment.charFormat().toImageFormat()});
+        }
+    for (Placed& placed : images) {
+        const QVariant resource =
+            document->resource(QTextDocument::ImageResource, QUrl(placed.format.name()));
+        QSize natural = resource.value<QImage>().size();
+        if (natural.isEmpty())
+            natural = resource.value<QPixmap>().size();
+        if (natural.isEmpty())
+            continue;
+        const double width = std::min<double>(natural.width(), available);
+        if (std::abs(placed.format.width() - width) < 0.5)
+            continue;
+        placed.format.setWidth(width);
+        placed.format.setHeight(natural.height() * width / natural.width());
+        QTextCursor cursor(document);
+        cursor.setPosition(placed.position);
+        cursor.setPosition(placed.position + placed.length, QTextCursor::KeepAnchor);
+        cursor.setCharFormat(placed.format);
+    }
 }
 
 /// The anchor GitHub gives a heading ("## Guillemin–Truxal PI (Braga et al.)" →
@@ -83,18 +156,10 @@ QList<QUrl> UserGuideWindow::pages() {
         const QString path = it.next().mid(QStringLiteral(":/docs/").size());
         (path.startsWith("user-guide/") ? guide : reference).append(path);
     }
-    // The guide: its index first, then the tutorials by file name.
-    std::sort(guide.begin(), guide.end(), [](const QString& a, const QString& b) {
-        const bool ia = a == "user-guide/index.md", ib = b == "user-guide/index.md";
-        return ia != ib ? ia : a < b;
-    });
-    // The reference: the known pages in reading order, the others after them by name.
-    const QStringList& order = userGuideReferenceOrder();
-    std::sort(reference.begin(), reference.end(), [&order](const QString& a, const QString& b) {
-        const qsizetype ra = order.contains(a) ? order.indexOf(a) : order.size();
-        const qsizetype rb = order.contains(b) ? order.indexOf(b) : order.size();
-        return ra != rb ? ra < rb : a < b;
-    });
+    // The guide: its index first, then the tutorials as the index lists them; the reference:
+    // the known pages in reading order; in both, the others after them by name.
+    userGuideSortBy(guide, userGuideTutorialOrder());
+    userGuideSortBy(reference, userGuideReferenceOrder());
     QList<QUrl> urls;
     for (const QString& path : guide + reference)
         urls.append(docsUrl(path));
@@ -207,6 +272,7 @@ UserGuideWindow::UserGuideWindow(QWidget* parent) : QWidget(parent, Qt::Window) 
     connect(browser_, &QTextBrowser::sourceChanged, this, [this](const QUrl& source) {
         const QUrl page = source.adjusted(QUrl::RemoveFragment);
         userGuideNameHeadings(browser_->document());
+        userGuideFitImages(browser_);
         if (source.hasFragment())
             browser_->scrollToAnchor(source.fragment());
         markCurrent(page);
@@ -225,6 +291,11 @@ UserGuideWindow::UserGuideWindow(QWidget* parent) : QWidget(parent, Qt::Window) 
     else
         browser_->setMarkdown(tr("# No pages\n\nThis build of XY Tune holds no documentation "
                                  "pages (the folder docs/ was empty when it was built)."));
+}
+
+void UserGuideWindow::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    userGuideFitImages(browser_); // the page's width changed with the window's
 }
 
 void UserGuideWindow::showPage(const QUrl& page) {

@@ -50,6 +50,9 @@ public:
     /// qrc:/docs/<path>.
     static QUrl docsUrl(const QString& pathUnderDocs);
 
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
     /// A link clicked in a page: a bundled page is shown, a web address opened outside.
     void followLink(const QUrl& link);
