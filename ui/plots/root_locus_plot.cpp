@@ -277,4 +277,23 @@ void RootLocusPlot::onMouseRelease(QMouseEvent* event) {
         emit gainPicked(pick->gain);
 }
 
+LocusRequirements axisLocusRequirements(const Session& session, int axis) {
+    const AxisSettings& a = session.axes.at(static_cast<std::size_t>(axis));
+    LocusRequirements req;
+    req.active = true;
+    req.maxOvershootPct = session.spec.maxOvershootPct;
+    req.maxSettlingTimeSeconds = session.spec.maxSettlingTimeSeconds;
+    if (a.method == DesignMethod::GuilleminTruxal)
+        req.designOmegaNRadPerSec = a.gt.omegaNRadPerSec;
+    return req;
+}
+
+std::vector<std::complex<double>> designClosedLoopPoles(const AxisEvaluation& evaluation) {
+    try {
+        return evaluation.closedLoop().poles();
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
 } // namespace xyt::ui

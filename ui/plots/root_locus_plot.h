@@ -2,6 +2,8 @@
 #pragma once
 
 #include "core/analysis/root_locus.h"
+#include "core/session/session.h"
+#include "core/session/session_evaluation.h"
 #include "ui/plots/plane_grid.h"
 #include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_widget.h"
@@ -95,5 +97,12 @@ private:
     bool hasLocus_ = false;
     double lastTs_ = -1.0;
 };
+
+/// The specification's step limits, and a Guillemin–Truxal axis' ωn, as the locus of @p axis
+/// draws them (the root-locus view and the design report alike).
+LocusRequirements axisLocusRequirements(const Session& session, int axis);
+
+/// The closed-loop poles of an evaluated axis' design; none when they cannot be computed.
+std::vector<std::complex<double>> designClosedLoopPoles(const AxisEvaluation& evaluation);
 
 } // namespace xyt::ui

@@ -85,21 +85,10 @@ ReportFigure rootLocusFigure(const Session& s, const AxisEvaluation& e, int axis
                 plot.showNoResult(title, noDesignText(e));
                 return;
             }
-            LocusRequirements req;
-            req.active = true;
-            req.maxOvershootPct = s.spec.maxOvershootPct;
-            req.maxSettlingTimeSeconds = s.spec.maxSettlingTimeSeconds;
-            if (a.method == DesignMethod::GuilleminTruxal)
-                req.designOmegaNRadPerSec = a.gt.omegaNRadPerSec;
-            plot.setRequirements(req);
-            std::vector<std::complex<double>> poles;
-            try {
-                poles = e.closedLoop().poles();
-            } catch (const std::exception&) {
-                poles.clear();
-            }
+            plot.setRequirements(axisLocusRequirements(s, axis));
             const std::optional<LoopTransferFunctions> loop = axisLoop(e);
-            plot.showLocus(loop ? rootLocus(loop->openLoop) : RootLocus{}, poles, title);
+            plot.showLocus(loop ? rootLocus(loop->openLoop) : RootLocus{}, designClosedLoopPoles(e),
+                           title);
         },
         RootLocusPlot::readoutHint());
 }
