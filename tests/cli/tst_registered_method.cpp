@@ -113,7 +113,10 @@ public:
         if (!withDigital)
             return;
         DigitalEvaluation d;
-        const DigitalPi p{design->kp, 0.0, 0.0, session.controllerTsSeconds, AntiWindup::None, 0.0};
+        DigitalPi p; // a proportional controller: no integral, no notch
+        p.kp = design->kp;
+        p.tsSeconds = session.controllerTsSeconds;
+        p.antiWindup = AntiWindup::None;
         d.tsSeconds = p.tsSeconds;
         d.run = simulateSampledPi(
             design->plant, p,
