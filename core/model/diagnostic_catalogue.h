@@ -15,20 +15,38 @@ struct DiagnosticTemplate {
     const char* englishTemplate;
 };
 
-/// Every coded warning the session evaluation and the contour run give, in one table: the user
-/// interface translates each code (ui/session/diagnostic_text.cpp), the CLI prints the English.
+/**
+ * Every coded warning and refusal of the core, in one catalogue: the CLI prints the English,
+ * the user interface translates each code (ui/session/diagnostic_text.h). The tables are kept
+ * per concern (core/model/diagnostics_<concern>.cpp, diagnostic_tables.h); every code is unique
+ * across them (checked by tst_diagnostic_catalogue).
+ */
 const std::vector<DiagnosticTemplate>& diagnosticCatalogue();
 
 /// The English template of @p code. @throws std::out_of_range for a code not in the catalogue
 /// (a programming error: every code used is listed there).
 const char* diagnosticTemplate(std::string_view code);
 
-/// @p templ with %1 .. %9 replaced by @p args[0] .. @p args[8] (a placeholder without an
-/// argument is left as it is).
-std::string fillDiagnosticTemplate(std::string_view templ, const std::vector<std::string>& args);
+/// @p templ with %1 .. %9 replaced by the texts of @p args[0] .. @p args[8] in one pass (an
+/// argument's own '%' is not read again; a placeholder without an argument is left as it is).
+std::string fillDiagnosticTemplate(std::string_view templ, const std::vector<Diagnostic>& args);
 
 /// The diagnostic @p code with @p args, its text the catalogue's English template filled in.
+/// An argument is a formatted number or a name (text), or a coded diagnostic of its own.
 /// @throws std::out_of_range for a code not in the catalogue.
-Diagnostic makeDiagnostic(std::string_view code, std::vector<std::string> args = {});
+Diagnostic makeDiagnostic(std::string_view code, std::vector<Diagnostic> args = {});
 
 } // namespace xyt
+
+/**
+ * One catalogue entry, in the tables of diagnostics_<concern>.cpp: XYT_DIAGNOSTIC("code",
+ * "English template with %1"). The build tells Qt Linguist's lupdate that this spells
+ * QT_TRANSLATE_NOOP(context, source) (ui/CMakeLists.txt), so each template is a message of the
+ * workbench's catalogue with its code as the context, without Qt in the core.
+ */
+#define XYT_DIAGNOSTIC(code, englishTemplate)                                                      \
+    ::xyt::DiagnosticTemplate {                                                                    \
+        code, englishTemplate                                                                      \
+    }
+
+namespace xyt {} // namespace xyt

@@ -11,8 +11,10 @@ namespace xyt {
 /**
  * Invalid input to a core function: a NaN, a zero denominator, a wrong size, a value out of
  * range. what() reads "<field>: <reason>" so a caller can show it next to the field.
- * The generic reasons (requireFinite, requirePositive, requireNonZero) carry a code the
- * workbench translates (reasonDiagnostic, diagnostic_catalogue.h); the others are English only.
+ * The core gives every reason as a coded diagnostic (makeDiagnostic, diagnostic_catalogue.h), so
+ * the workbench shows it in the user's language (reasonDiagnostic); tst_diagnostic_catalogue
+ * fails on a refusal of the core without one. The English constructors serve the programs
+ * (the CLI's own option checks).
  */
 class InvalidInput : public std::invalid_argument {
 public:
@@ -25,7 +27,7 @@ public:
     const std::string& field() const noexcept { return field_; }
     /// The reason alone, without the field prefix.
     const std::string& reason() const noexcept { return reason_.text; }
-    /// The reason with its code (uncoded, the English alone, for most throw sites).
+    /// The reason with its code (uncoded, the English alone, when thrown by English text).
     const Diagnostic& reasonDiagnostic() const noexcept { return reason_; }
 
 private:

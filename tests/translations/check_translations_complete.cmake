@@ -6,7 +6,8 @@
 # empty <translation> or an empty plural form is untranslated. Arguments:
 #   -DLUPDATE=<lupdate> -DTS=<committed .ts> -DWORK=<scratch dir> -DINCLUDE=<repo root>
 #   -DSOURCES_FILE=<file listing the translated sources, one a line>
-foreach(var LUPDATE TS WORK INCLUDE SOURCES_FILE)
+#   -DALIASES=<lupdate -tr-function-alias value: the core's marks, core/CMakeLists.txt>
+foreach(var LUPDATE TS WORK INCLUDE SOURCES_FILE ALIASES)
     if(NOT DEFINED ${var})
         message(FATAL_ERROR "check_translations_complete.cmake: -D${var}=... is required")
     endif()
@@ -20,7 +21,8 @@ set(copy "${WORK}/${ts_name}")
 file(COPY_FILE "${TS}" "${copy}")
 file(READ "${TS}" committed)
 execute_process(
-    COMMAND "${LUPDATE}" -locations none -I "${INCLUDE}" "@${SOURCES_FILE}" -ts "${copy}"
+    COMMAND "${LUPDATE}" -locations none -tr-function-alias "${ALIASES}" -I "${INCLUDE}"
+            "@${SOURCES_FILE}" -ts "${copy}"
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "lupdate failed (${rc}):\n${out}\n${err}")

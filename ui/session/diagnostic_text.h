@@ -2,19 +2,33 @@
 #pragma once
 
 #include "core/model/diagnostic.h"
+#include "core/model/errors.h"
 
 #include <QString>
+
+#include <exception>
 
 namespace xyt::ui {
 
 /**
- * A core warning in the user's language: the translation of its code's template (the same
- * placeholders as the core's English template, diagnostic_catalogue.h) filled with its
- * arguments. An uncoded warning, or a code this table does not know, shows the English text.
+ * A core warning or refusal in the user's language: the translation of its code's template
+ * (Qt Linguist's context is the code, the source the catalogue's English template,
+ * core/model/diagnostic_catalogue.h) with its arguments, each translated in turn when it is
+ * coded. An uncoded diagnostic (a number, a name) shows its text; so does a code the catalogue
+ * does not know.
  */
 QString diagnosticText(const Diagnostic& d);
 
-/// Whether @p code has a translatable template here (tests check every catalogue code has).
-bool hasDiagnosticText(const std::string& code);
+/// A refusal as the workbench shows it: "<field>: <reason>", the reason in the user's language.
+QString invalidInputText(const InvalidInput& e);
+
+/// Any exception's message for the user: an InvalidInput's as invalidInputText, another's what().
+QString exceptionText(const std::exception& e);
+
+/**
+ * A name the core marks with XYT_TRANSLATE_NOOP(@p context, @p text) (a method's name, a
+ * parameter's label, ...) in the user's language; the English where no translation is loaded.
+ */
+QString coreText(const char* context, const std::string& text);
 
 } // namespace xyt::ui
