@@ -72,4 +72,13 @@ Diagnostic makeDiagnostic(std::string_view code, std::vector<Diagnostic> args) {
     return d;
 }
 
+Diagnostic joinDiagnostics(const std::vector<Diagnostic>& parts, std::string_view joinCode) {
+    if (parts.empty())
+        return Diagnostic();
+    Diagnostic joined = parts.front();
+    for (std::size_t i = 1; i < parts.size(); ++i)
+        joined = makeDiagnostic(joinCode, {joined, parts[i]});
+    return joined;
+}
+
 } // namespace xyt

@@ -36,6 +36,11 @@ std::string fillDiagnosticTemplate(std::string_view templ, const std::vector<Dia
 /// @throws std::out_of_range for a code not in the catalogue.
 Diagnostic makeDiagnostic(std::string_view code, std::vector<Diagnostic> args = {});
 
+/// @p parts joined in order by the joint @p joinCode ("%1; %2": "list_semicolon", "%1, %2":
+/// "list_comma"), each part keeping its own code: one part is itself, none an uncoded "".
+Diagnostic joinDiagnostics(const std::vector<Diagnostic>& parts,
+                           std::string_view joinCode = "list_semicolon");
+
 } // namespace xyt
 
 /**

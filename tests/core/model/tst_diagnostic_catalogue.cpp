@@ -23,6 +23,7 @@ private slots:
     void placeholdersAreNumberedFromOne();
     void argumentsFillTheTemplate();
     void codedArgumentsNest();
+    void joinKeepsEachPartsCode();
     void unknownCodeIsRefused();
     void everyCodeUsedIsInTheCatalogue();
     void everyRefusalOfTheCoreIsCoded();
@@ -172,6 +173,20 @@ void TstDiagnosticCatalogue::codedArgumentsNest() {
         QCOMPARE(e.reasonDiagnostic(), inner);
         QCOMPARE(std::string(e.what()), std::string("kp: must be greater than zero"));
     }
+}
+
+void TstDiagnosticCatalogue::joinKeepsEachPartsCode() {
+    const Diagnostic a = makeDiagnostic("at_least", {"2"});
+    const Diagnostic b = makeDiagnostic("is_empty");
+    const Diagnostic c("x");
+    const Diagnostic j = joinDiagnostics({a, b, c});
+    QCOMPARE(j.text, std::string("must be at least 2; is empty; x")); // "%1; %2" folded left
+    QCOMPARE(j.code, std::string("list_semicolon"));
+    QCOMPARE(j.args.at(0).args.at(0), a);
+    QCOMPARE(j.args.at(0).args.at(1), b);
+    QCOMPARE(joinDiagnostics({a}), a);
+    QCOMPARE(joinDiagnostics({b, c}, "list_comma").text, std::string("is empty, x"));
+    QVERIFY(!joinDiagnostics({}).coded());
 }
 
 void TstDiagnosticCatalogue::unknownCodeIsRefused() {
