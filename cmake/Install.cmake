@@ -4,7 +4,8 @@
 #   lib/xytune/ (LIBDIR)         the project's shared libraries, private to the programs
 #   share/xytune/examples/       the example programs, logs and sessions (ui/session/install_paths.h)
 #   share/applications/, share/icons/hicolor/scalable/apps/, share/metainfo/: desktop integration
-#   share/man/man1/              xytune.1, xytune-cli.1
+#   share/man/man1/              xytune.1.gz, xytune-cli.1.gz
+#   share/doc/xytune/            copyright (Debian's format), changelog.gz (the package's Debian changelog)
 # Tests and the benchmark program are not installed. docs/install.md describes the result.
 
 # The libraries are no public API: they go to a folder of their own, which the executables
@@ -35,7 +36,32 @@ install(FILES resources/desktop/${XYT_APP_ID}.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
 install(FILES resources/desktop/${XYT_APP_ID}.metainfo.xml
         DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo)
-install(FILES docs/man/xytune.1 docs/man/xytune-cli.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+# The man pages and the change log compressed as Debian's policy asks (gzip -9n: no name or
+# time stamp, so the package is reproducible), the copyright file in Debian's machine-readable
+# format; `lintian` finds no error in the package (tests/install's deb_package).
+file(STRINGS resources/debian/changelog xyt_deb_changelog_head LIMIT_COUNT 1)
+if(NOT xyt_deb_changelog_head MATCHES "^xytune \\(${PROJECT_VERSION}\\) ")
+    message(FATAL_ERROR "resources/debian/changelog's first entry is not version "
+                        "${PROJECT_VERSION} (the project's): ${xyt_deb_changelog_head}")
+endif()
+set(xyt_gzipped "")
+foreach(pair "docs/man/xytune.1|man/xytune.1.gz" "docs/man/xytune-cli.1|man/xytune-cli.1.gz"
+        "resources/debian/changelog|doc/changelog.gz")
+    string(REPLACE "|" ";" pair "${pair}")
+    list(GET pair 0 source)
+    list(GET pair 1 target)
+    get_filename_component(target_dir "${PROJECT_BINARY_DIR}/${target}" DIRECTORY)
+    add_custom_command(OUTPUT ${PROJECT_BINARY_DIR}/${target}
+        COMMAND ${CMAKE_COMMAND} -E make_directory ${target_dir}
+        COMMAND gzip -9nc ${PROJECT_SOURCE_DIR}/${source} > ${PROJECT_BINARY_DIR}/${target}
+        DEPENDS ${PROJECT_SOURCE_DIR}/${source} VERBATIM)
+    list(APPEND xyt_gzipped ${PROJECT_BINARY_DIR}/${target})
+endforeach()
+add_custom_target(xyt_install_documents ALL DEPENDS ${xyt_gzipped})
+install(FILES ${PROJECT_BINARY_DIR}/man/xytune.1.gz ${PROJECT_BINARY_DIR}/man/xytune-cli.1.gz
+        DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+install(FILES ${PROJECT_BINARY_DIR}/doc/changelog.gz resources/debian/copyright
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/xytune)
 
 # The Debian package: `cpack -G DEB` in the build folder, after a complete build.
 set(CPACK_GENERATOR DEB)

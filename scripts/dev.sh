@@ -17,7 +17,7 @@ build="${XYT_BUILD_DIR:-$root/build}"
 packages=(build-essential cmake pkg-config qt6-base-dev libqcustomplot-dev libqcustomplot2.1-qt6
           libeigen3-dev libmatio-dev libgl1-mesa-dev libxkbcommon-dev xvfb xauth
           clang libclang-rt-14-dev clang-format-14 ninja-build
-          dpkg-dev file appstream desktop-file-utils groff-base poppler-utils
+          dpkg-dev file appstream desktop-file-utils groff-base poppler-utils lintian
           qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n)
 missing=()
 for p in "${packages[@]}"; do

@@ -4,7 +4,7 @@
 #         -P check_deb_package.cmake
 # Checks: the control fields (name, version, section), Depends as dpkg-shlibdeps wrote them
 # (Qt Widgets, QCustomPlot, matio and the C library, nothing of the build tree: the private
-# libraries are in the package), and the package's files under /usr.
+# libraries are in the package), the package's files under /usr, and lintian's findings.
 cmake_minimum_required(VERSION 3.25)
 foreach(var BUILD VERSION APP_ID CPACK)
     if(NOT DEFINED ${var})
@@ -55,7 +55,9 @@ endif()
 execute_process(COMMAND dpkg-deb -c "${debs}" OUTPUT_VARIABLE listing RESULT_VARIABLE rc)
 foreach(path usr/bin/xytune usr/bin/xytune-cli usr/lib/xytune/libxyt_ui.so
         usr/share/applications/${APP_ID}.desktop usr/share/metainfo/${APP_ID}.metainfo.xml
-        usr/share/icons/hicolor/scalable/apps/${APP_ID}.svg usr/share/man/man1/xytune-cli.1)
+        usr/share/icons/hicolor/scalable/apps/${APP_ID}.svg usr/share/man/man1/xytune-cli.1.gz
+        usr/share/man/man1/xytune.1.gz usr/share/doc/xytune/copyright
+        usr/share/doc/xytune/changelog.gz)
     string(REPLACE "." "\\." path_regex "${path}")
     string(REPLACE "+" "\\+" path_regex "${path_regex}")
     if(NOT listing MATCHES " \\./${path_regex}\n")
@@ -67,6 +69,20 @@ if(NOT listing MATCHES " \\./usr/share/xytune/examples/[^/\n]+\\.nc\n")
 endif()
 if(listing MATCHES "tst_|xytune-bench")
     fail("${debs} holds a test or the benchmark:\n${listing}")
+endif()
+# Debian's package checker: no error. Its one warning, maintscript-calls-ldconfig, comes from
+# CPack, which calls ldconfig for any library under /usr/lib (here the private ones in
+# /usr/lib/xytune, which need no ldconfig but whose call does no harm).
+find_program(LINTIAN lintian)
+if(NOT LINTIAN)
+    fail("lintian is not installed (Debian package lintian; scripts/dev.sh installs it)")
+endif()
+execute_process(COMMAND ${LINTIAN} --tag-display-limit 0 "${debs}"
+                OUTPUT_VARIABLE lintian_out ERROR_VARIABLE lintian_err)
+string(REGEX MATCHALL "(^|\n)[EW]: [^\n]*" lintian_findings "${lintian_out}")
+list(FILTER lintian_findings EXCLUDE REGEX "maintscript-calls-ldconfig")
+if(lintian_findings)
+    fail("lintian on ${debs}:\n${lintian_out}${lintian_err}")
 endif()
 get_filename_component(name "${debs}" NAME)
 file(REMOVE_RECURSE "${tmp}")

@@ -54,7 +54,8 @@ set(expected_files
     "${DATADIR}/applications/${APP_ID}.desktop"
     "${DATADIR}/icons/hicolor/scalable/apps/${APP_ID}.svg"
     "${DATADIR}/metainfo/${APP_ID}.metainfo.xml"
-    "${MANDIR}/man1/xytune.1" "${MANDIR}/man1/xytune-cli.1")
+    "${MANDIR}/man1/xytune.1.gz" "${MANDIR}/man1/xytune-cli.1.gz"
+    "${DATADIR}/doc/xytune/copyright" "${DATADIR}/doc/xytune/changelog.gz")
 foreach(f IN LISTS expected_files)
     if(NOT EXISTS "${prefix}/${f}")
         fail("not installed: ${prefix}/${f}")
@@ -78,7 +79,7 @@ foreach(f IN LISTS source_programs)
 endforeach()
 set(allowed_folders "${BINDIR}" "${LIBDIR}/xytune" "${DATADIR}/applications"
     "${DATADIR}/icons/hicolor/scalable/apps" "${DATADIR}/metainfo" "${MANDIR}/man1"
-    "${DATADIR}/xytune/examples")
+    "${DATADIR}/xytune/examples" "${DATADIR}/doc/xytune")
 file(GLOB_RECURSE installed RELATIVE "${prefix}" "${prefix}/*")
 foreach(f IN LISTS installed)
     get_filename_component(folder "${f}" DIRECTORY)
