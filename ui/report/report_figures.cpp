@@ -79,7 +79,7 @@ ReportFigure rootLocusFigure(const Session& s, const AxisEvaluation& e, int axis
                                     "Root locus of the loop 1 + K L = 0; the closed-loop poles of "
                                     "the design (K = 1) are marked, with the region the "
                                     "specification allows."),
-        460,
+        400,
         [&](RootLocusPlot& plot) {
             if (!e.ok) {
                 plot.showNoResult(title, noDesignText(e));
@@ -103,7 +103,7 @@ ReportFigure bodeFigure(const Session& s, const AxisEvaluation& e, int axis) {
         QCoreApplication::translate("xyt::ui::ReportFigures",
                                     "Bode diagram of the open loop L with the gain and phase "
                                     "margins, and the closed loop."),
-        520,
+        460,
         [&](BodePlot& plot) {
             if (!e.ok) {
                 plot.showNoResult(title, noDesignText(e));
@@ -133,7 +133,7 @@ ReportFigure stepFigure(const Session& s, const AxisEvaluation& e, int axis) {
         QCoreApplication::translate("xyt::ui::ReportFigures",
                                     "Unit step of the closed loop, with the specification's "
                                     "overshoot and settling limits."),
-        400,
+        320,
         [&](StepPlot& plot) {
             if (!e.ok) {
                 plot.showNoResult(title, noDesignText(e));
