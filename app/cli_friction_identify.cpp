@@ -33,7 +33,7 @@ std::vector<double> numericColumn(const ExperimentTable& table, const CliArgs& a
     }
     if (const auto& problem = table.firstProblem[c])
         throw InvalidInput(table.cellField(c, problem->row),
-                           "'" + problem->text + "' " + problem->reason);
+                           "'" + problem->text + "' " + problem->reason.text);
     return table.columns[c];
 }
 

@@ -728,7 +728,7 @@ void IdentificationWindow::onFinished(IdentifiedModel&& model, const Candidate& 
     const IdentifiedModel& m = candidate.model;
     QString text = tr("%1: %2").arg(QString::fromStdString(m.structure),
                                     QString::fromStdString(estimationStatusName(m.status)));
-    if (!m.message.empty())
+    if (!m.message.text.empty())
         text += tr(" (%1)").arg(QString::fromStdString(m.message));
     for (const QString& n : candidate.notes)
         text += "\n" + n;

@@ -2,6 +2,7 @@
 #include "core/identification/accelerometer_log.h"
 
 #include "core/identification/experiment_table.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -59,8 +60,8 @@ constexpr std::array<const char*, 4> kAccelColumnNames = {"time", "accel_x", "ac
 
 AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& fileName) {
     if (text.size() > kMaxExperimentBytes)
-        throw InvalidInput(fileName,
-                           "is larger than " + std::to_string(kMaxExperimentBytes >> 20) + " MiB");
+        throw InvalidInput(fileName, makeDiagnostic("ident_larger_than_mib",
+                                                    {std::to_string(kMaxExperimentBytes >> 20)}));
     AccelerometerLog log;
     log.fileName = fileName;
     TextLines lines(text);
@@ -71,8 +72,7 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
     const std::size_t headerLine = lines.atEnd() ? 1 : lines.number();
     if (lines.atEnd() || lines.line().empty() || lines.line().front() != '#')
         throw InvalidInput(accelLineField(fileName, headerLine),
-                           "no header: a Klipper accelerometer log starts with "
-                           "#time,accel_x,accel_y,accel_z");
+                           makeDiagnostic("ident_accel_no_header"));
     std::array<std::size_t, 4> position{}; // 1-based field of time, accel_x, accel_y, accel_z
     std::size_t fieldCount = 0;
     {
@@ -82,8 +82,8 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
             ++fieldCount;
             if (fieldCount > kMaxExperimentColumns)
                 throw InvalidInput(accelLineField(fileName, headerLine),
-                                   "has more than " + std::to_string(kMaxExperimentColumns) +
-                                       " names");
+                                   makeDiagnostic("ident_more_than_names",
+                                                  {std::to_string(kMaxExperimentColumns)}));
             for (std::size_t c = 0; c < 4; ++c)
                 if (accelTrim(name) == kAccelColumnNames[c] && position[c] == 0)
                     position[c] = fieldCount;
@@ -92,7 +92,7 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
     for (std::size_t c = 0; c < 4; ++c)
         if (position[c] == 0)
             throw InvalidInput(accelLineField(fileName, headerLine),
-                               std::string("no ") + kAccelColumnNames[c] + " column");
+                               makeDiagnostic("ident_accel_no_column", {kAccelColumnNames[c]}));
     lines.next();
     // Count the data lines first (bounded by the text's size, never by a number in it), so
     // each column is allocated once.
@@ -106,11 +106,12 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
         log.y.reserve(rows);
         log.z.reserve(rows);
     } catch (const std::bad_alloc&) {
-        throwOutOfMemory(fileName, rows * 32, std::to_string(rows) + " rows, 32 bytes a row");
+        throwOutOfMemory(fileName, rows * 32,
+                         makeDiagnostic("ident_oom_rows_32_bytes", {std::to_string(rows)}));
     }
     std::size_t previousLine = 0;
     std::array<double, 4> value{};
-    std::string reason;
+    Diagnostic reason;
     for (; !lines.atEnd(); lines.next()) {
         const std::string_view line = lines.line();
         if (accelBlank(line) || line.front() == '#')
@@ -122,38 +123,38 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
         while (fields.next(cell)) {
             ++column;
             if (column > fieldCount)
-                throw InvalidInput(accelLineField(fileName, n), "has more than the header's " +
-                                                                    std::to_string(fieldCount) +
-                                                                    " fields");
+                throw InvalidInput(
+                    accelLineField(fileName, n),
+                    makeDiagnostic("ident_more_than_header_fields", {std::to_string(fieldCount)}));
             for (std::size_t c = 0; c < 4; ++c) {
                 if (position[c] != column)
                     continue;
                 const auto v = parseCellNumber(cell, false, reason);
                 if (!v)
-                    throw InvalidInput(accelLineField(fileName, n) + ", column " +
-                                           std::to_string(column) + " (" + kAccelColumnNames[c] +
-                                           ")",
-                                       "'" + shownCell(cell) + "' " + reason);
+                    throw InvalidInput(
+                        accelLineField(fileName, n) + ", column " + std::to_string(column) + " (" +
+                            kAccelColumnNames[c] + ")",
+                        makeDiagnostic("ident_cell_reason", {shownCell(cell), reason}));
                 if (c > 0 && std::abs(*v) > kMaxAccelerometerMmPerS2)
-                    throw InvalidInput(accelLineField(fileName, n) + ", column " +
-                                           std::to_string(column) + " (" + kAccelColumnNames[c] +
-                                           ")",
-                                       formatNumber(*v) + " mm/s^2 is beyond " +
-                                           formatNumber(kMaxAccelerometerMmPerS2) +
-                                           " mm/s^2 (100 000 g): not an acceleration");
+                    throw InvalidInput(
+                        accelLineField(fileName, n) + ", column " + std::to_string(column) + " (" +
+                            kAccelColumnNames[c] + ")",
+                        makeDiagnostic("ident_accel_beyond",
+                                       {formatNumber(*v), formatNumber(kMaxAccelerometerMmPerS2)}));
                 value[c] = *v;
             }
         }
         if (column < fieldCount)
-            throw InvalidInput(accelLineField(fileName, n), "has " + std::to_string(column) +
-                                                                " fields, the header names " +
-                                                                std::to_string(fieldCount));
+            throw InvalidInput(
+                accelLineField(fileName, n),
+                makeDiagnostic("ident_accel_fields_header",
+                               {std::to_string(column), std::to_string(fieldCount)}));
         if (!log.timeSeconds.empty() && !(value[0] > log.timeSeconds.back()))
-            throw InvalidInput(accelLineField(fileName, n) + ", column " +
-                                   std::to_string(position[0]) + " (time)",
-                               "time " + formatNumber(value[0], 9) + " s is not after " +
-                                   formatNumber(log.timeSeconds.back(), 9) + " s on line " +
-                                   std::to_string(previousLine));
+            throw InvalidInput(
+                accelLineField(fileName, n) + ", column " + std::to_string(position[0]) + " (time)",
+                makeDiagnostic("ident_accel_time_not_after",
+                               {formatNumber(value[0], 9), formatNumber(log.timeSeconds.back(), 9),
+                                std::to_string(previousLine)}));
         previousLine = n;
         log.timeSeconds.push_back(value[0]);
         log.x.push_back(value[1]);
@@ -162,15 +163,16 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
     }
     const std::size_t count = log.timeSeconds.size();
     if (count < kMinAccelerometerSamples)
-        throw InvalidInput(fileName, "has " + std::to_string(count) + " samples, fewer than " +
-                                         std::to_string(kMinAccelerometerSamples));
+        throw InvalidInput(fileName, makeDiagnostic("ident_fewer_samples_than",
+                                                    {std::to_string(count),
+                                                     std::to_string(kMinAccelerometerSamples)}));
     const double span = log.timeSeconds.back() - log.timeSeconds.front();
     log.meanIntervalSeconds = span / static_cast<double>(count - 1);
     log.klipperSamplingHz = static_cast<double>(count) / span;
     if (!(std::isfinite(log.meanIntervalSeconds) && log.meanIntervalSeconds > 0.0 &&
           std::isfinite(log.klipperSamplingHz)))
-        throw InvalidInput(fileName, "the times span " + formatNumber(span) +
-                                         " s: no sample interval can be derived");
+        throw InvalidInput(fileName,
+                           makeDiagnostic("ident_accel_times_span", {formatNumber(span)}));
     requireSampleTime(log.meanIntervalSeconds, fileName);
     // The interval check, with the lines found again (a second pass over the text rather than
     // a table of line numbers: 8 bytes a row saved).
@@ -187,13 +189,10 @@ AccelerometerLog readAccelerometerLog(std::string_view text, const std::string& 
                 break;
             }
         throw InvalidInput(accelLineField(fileName, line),
-                           "the sample interval " + formatNumber(dt * 1e3, 6) +
-                               " ms differs from "
-                               "the log's mean " +
-                               formatNumber(log.meanIntervalSeconds * 1e3, 6) +
-                               " ms by more than " +
-                               formatNumber(kAccelerometerIntervalTolerance * 100.0) +
-                               " % (samples lost, or logs joined)");
+                           makeDiagnostic("ident_accel_interval",
+                                          {formatNumber(dt * 1e3, 6),
+                                           formatNumber(log.meanIntervalSeconds * 1e3, 6),
+                                           formatNumber(kAccelerometerIntervalTolerance * 100.0)}));
     }
     return log;
 }
@@ -214,7 +213,7 @@ std::size_t klipperSegmentLength(double samplingHz) {
 
 AccelerometerSpectra accelerometerSpectra(const AccelerometerLog& log, double maxFrequencyHz) {
     if (!(std::isfinite(maxFrequencyHz) && maxFrequencyHz > 0.0))
-        throw InvalidInput("--max-frequency", "must be a positive frequency in Hz");
+        throw InvalidInput("--max-frequency", makeDiagnostic("ident_positive_frequency_hz"));
     AccelerometerSpectra out;
     out.samplingHz = log.klipperSamplingHz;
     out.samples = log.size();
@@ -224,13 +223,12 @@ AccelerometerSpectra accelerometerSpectra(const AccelerometerLog& log, double ma
     o.segmentLength = std::max<std::size_t>(4, klipperSegmentLength(out.samplingHz));
     // calc_freq_response returns nothing when N <= M; fewer than two segments are refused too.
     if (log.size() <= o.segmentLength || log.size() < o.segmentLength + o.segmentLength / 2)
-        throw InvalidInput(log.fileName,
-                           "has " + std::to_string(log.size()) + " samples at " +
-                               formatNumber(out.samplingHz) + " Hz: Klipper's segment of " +
-                               std::to_string(o.segmentLength) + " samples (" +
-                               formatNumber(kKlipperWindowSeconds) + " s) needs at least " +
-                               std::to_string(o.segmentLength + o.segmentLength / 2) +
-                               " (two half-overlapping segments)");
+        throw InvalidInput(
+            log.fileName,
+            makeDiagnostic("ident_accel_klipper_too_few",
+                           {std::to_string(log.size()), formatNumber(out.samplingHz),
+                            std::to_string(o.segmentLength), formatNumber(kKlipperWindowSeconds),
+                            std::to_string(o.segmentLength + o.segmentLength / 2)}));
     const double ts = 1.0 / out.samplingHz;
     const WelchSpectrum px = powerSpectralDensity(log.x, ts, o);
     const WelchSpectrum py = powerSpectralDensity(log.y, ts, o);

@@ -2,6 +2,7 @@
 #include "core/identification/arx.h"
 
 #include "core/identification/least_squares.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <Eigen/QR>
@@ -17,11 +18,11 @@ std::string ArxOrders::toString() const {
 
 void ArxOrders::validate() const {
     if (na < 0 || na > 100)
-        throw InvalidInput("na", "must be between 0 and 100");
+        throw InvalidInput("na", makeDiagnostic("ident_between_n_100", {"0"}));
     if (nb < 1 || nb > 100)
-        throw InvalidInput("nb", "must be between 1 and 100");
+        throw InvalidInput("nb", makeDiagnostic("ident_between_n_100", {"1"}));
     if (nk < 0 || nk > 100)
-        throw InvalidInput("nk", "must be between 0 and 100");
+        throw InvalidInput("nk", makeDiagnostic("ident_between_n_100", {"0"}));
 }
 
 ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankThreshold) {
@@ -35,9 +36,9 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
     const std::size_t d = na + nb;
     // One more row than parameters, so that the noise variance has a degree of freedom.
     if (n < n0 + d + 1)
-        throw InvalidInput("data", std::to_string(n) + " samples are too few for " +
-                                       orders.toString() + ": at least " +
-                                       std::to_string(n0 + d + 1) + " needed");
+        throw InvalidInput("data", makeDiagnostic("ident_too_few_samples_for",
+                                                  {std::to_string(n), orders.toString(),
+                                                   std::to_string(n0 + d + 1)}));
     ArxResult out;
     out.orders = orders;
     out.rankThreshold = rankThreshold;
@@ -72,15 +73,12 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
         const LinearLeastSquares uOnly =
             linearLeastSquares(uBlock, Eigen::VectorXd::Zero(rows), rankThreshold);
         if (!uOnly.fullRank())
-            out.message = "input not persistently exciting for nb = " + std::to_string(nb) +
-                          " (the input block has rank " + std::to_string(uOnly.rank) + ")";
+            out.message = makeDiagnostic("ident_arx_input_not_exciting",
+                                         {std::to_string(nb), std::to_string(uOnly.rank)});
         else
-            out.message =
-                "regressor of " + orders.toString() + " has rank " + std::to_string(ls.rank) +
-                " < " + std::to_string(d) +
-                ": the input is not persistently exciting of order na + nb = " + std::to_string(d) +
-                ", or the data are exactly of lower order "
-                "(noise-free): lower na or nb";
+            out.message = makeDiagnostic(
+                "ident_arx_regressor_rank",
+                {orders.toString(), std::to_string(ls.rank), std::to_string(d), std::to_string(d)});
         return out;
     }
     out.status = EstimationStatus::Converged;
@@ -113,8 +111,7 @@ ArxResult estimateArx(const IoData& data, const ArxOrders& orders, double rankTh
     out.model.b.insert(out.model.b.end(), out.parameters.begin() + static_cast<std::ptrdiff_t>(na),
                        out.parameters.end());
     if (maxRootMagnitude(out.model.a) > 1.0)
-        out.warnings.push_back("A has a root outside the unit circle: the model is unstable "
-                               "(an integrating axis gives a root near z = 1)");
+        out.warnings.push_back(makeDiagnostic("ident_arx_unstable"));
     return out;
 }
 

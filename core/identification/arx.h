@@ -3,6 +3,7 @@
 
 #include "core/identification/io_data.h"
 #include "core/identification/polynomial_model.h"
+#include "core/model/diagnostic.h"
 
 #include <Eigen/Core>
 
@@ -39,8 +40,8 @@ struct ArxOrders {
  */
 struct ArxResult {
     EstimationStatus status = EstimationStatus::Failed; ///< Converged or NotPersistentlyExciting
-    std::string message; ///< why a status other than Converged, e.g. "input not persistently
-                         ///< exciting for nb = 3"
+    Diagnostic message; ///< why a status other than Converged, e.g. "input not persistently
+                        ///< exciting for nb = 3" (coded)
     ArxOrders orders;
     PolynomialModel model;
     std::vector<double> parameters;
@@ -58,7 +59,7 @@ struct ArxResult {
     double rankThreshold = 0.0; ///< the relative pivot threshold that rank used
     /// Equation errors e(t) = A y - B u for t >= firstRow (0 before it), length N.
     std::vector<double> residuals;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings; ///< coded
 };
 
 /**

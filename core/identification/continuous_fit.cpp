@@ -3,6 +3,7 @@
 
 #include "core/identification/arx.h"
 #include "core/identification/least_squares.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/polynomial.h"
 #include "core/model/state_space.h"
@@ -212,13 +213,13 @@ PolynomialModel discretizedThirdOrderPlant(const ThirdOrderPlant& plant, double 
 ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOptions& options) {
     validateIoData(data);
     if (options.search.maxIterations < 1)
-        throw InvalidInput("max_iterations", "must be at least 1");
+        throw InvalidInput("max_iterations", makeDiagnostic("at_least", {"1"}));
     if (!(options.finiteDifferenceStep > 0.0 && options.finiteDifferenceStep <= 0.1))
-        throw InvalidInput("finite_difference_step", "must be in (0, 0.1]");
+        throw InvalidInput("finite_difference_step", makeDiagnostic("ident_in_zero_0_1"));
     if (data.size() < 10)
-        throw InvalidInput("data", std::to_string(data.size()) +
-                                       " samples are too few for k0/(s^3 + a1 s^2 + a2 s): at "
-                                       "least 10 needed");
+        throw InvalidInput("data", makeDiagnostic("ident_too_few_samples_for",
+                                                  {std::to_string(data.size()),
+                                                   "k0/(s^3 + a1 s^2 + a2 s)", "10"}));
     ContinuousFitResult out;
     out.samples = data.size();
     if (options.initial) {
@@ -291,8 +292,7 @@ ContinuousFitResult fitThirdOrderPlant(const IoData& data, const ContinuousFitOp
     else
         out.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
     if (out.plant.a1 <= 0.0 || out.plant.a2 <= 0.0)
-        out.warnings.push_back("a1 or a2 is not positive: the fitted plant has a pole in the "
-                               "right half plane or a second integrator");
+        out.warnings.push_back(makeDiagnostic("ident_fit_a_not_positive"));
     return out;
 }
 

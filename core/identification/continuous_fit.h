@@ -52,7 +52,7 @@ struct ContinuousFitOptions {
 /// The fit of Braga et al.'s plant structure to sampled data.
 struct ContinuousFitResult {
     EstimationStatus status = EstimationStatus::Failed;
-    std::string message;
+    Diagnostic message;    ///< how the search ended, or why it failed (coded)
     ThirdOrderPlant plant; ///< k0, a1, a2: fills the Guillemin-Truxal design directly
     /// Standard deviations of {k0, a1, a2}, from sigma^2 (J^T J)^-1 (NaN when J is singular).
     std::array<double, 3> standardDeviations{};
@@ -67,9 +67,9 @@ struct ContinuousFitResult {
     std::vector<double> lossHistory;
     /// The estimated initial position y0 (mm) with estimateInitialPosition, else 0.
     double initialPositionMm = 0.0;
-    std::vector<double> simulated; ///< model output at the estimate (with y0 when estimated)
-    std::vector<double> residuals; ///< y - simulated
-    std::vector<std::string> warnings;
+    std::vector<double> simulated;    ///< model output at the estimate (with y0 when estimated)
+    std::vector<double> residuals;    ///< y - simulated
+    std::vector<Diagnostic> warnings; ///< coded
 };
 
 /**

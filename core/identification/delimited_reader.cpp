@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/delimited_reader.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -76,7 +77,7 @@ public:
             if (j < line_.size() && line_[j] != sep_)
                 throw InvalidInput(
                     lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
-                    "text follows the closing quote at character " + std::to_string(j + 1));
+                    makeDiagnostic("ident_text_after_quote", {std::to_string(j + 1)}));
             text = buffer_;
         } else {
             const std::size_t end = std::min(line_.find(sep_, i_), line_.size());
@@ -96,9 +97,9 @@ public:
 private:
     void counted() {
         if (++count_ > kMaxExperimentColumns + 1)
-            throw InvalidInput(lineField(fileName_, lineNumber_),
-                               "has more than " + std::to_string(kMaxExperimentColumns) +
-                                   " fields");
+            throw InvalidInput(
+                lineField(fileName_, lineNumber_),
+                makeDiagnostic("ident_more_than_fields", {std::to_string(kMaxExperimentColumns)}));
     }
 
     /// Reads the quoted field opening at line_[open] into buffer_ ("" inside stands for one
@@ -118,8 +119,7 @@ private:
             buffer_ += line_[i++];
         }
         throw InvalidInput(lineField(fileName_, lineNumber_) + ", column " + std::to_string(count_),
-                           "the quote opened at character " + std::to_string(open + 1) +
-                               " is not closed");
+                           makeDiagnostic("ident_quote_not_closed", {std::to_string(open + 1)}));
     }
 
     Delimiter d_;
@@ -162,7 +162,7 @@ DelimitedTable parse(std::string_view text, const std::string& fileName,
     while (!lines.atEnd() && isBlank(lines.line()))
         lines.next();
     if (lines.atEnd())
-        throw InvalidInput(fileName, "holds no header line (the first line must name the columns)");
+        throw InvalidInput(fileName, makeDiagnostic("ident_csv_no_header"));
 
     DelimitedTable out;
     ExperimentTable& t = out.table;
@@ -173,8 +173,7 @@ DelimitedTable parse(std::string_view text, const std::string& fileName,
         options.decimal == DecimalSeparator::Comma ||
         (options.decimal == DecimalSeparator::Detect && out.delimiter == Delimiter::Semicolon);
     if (out.decimalComma && out.delimiter == Delimiter::Comma)
-        throw InvalidInput(fileName,
-                           "a decimal comma cannot be read with ',' separating the fields");
+        throw InvalidInput(fileName, makeDiagnostic("ident_csv_decimal_comma_separator"));
 
     const std::size_t headerLine = lines.number();
     FieldScanner fields(out.delimiter, fileName);
@@ -190,24 +189,25 @@ DelimitedTable parse(std::string_view text, const std::string& fileName,
         nameFields.pop_back();
     }
     if (names.size() > kMaxExperimentColumns)
-        throw InvalidInput(lineField(fileName, headerLine),
-                           "has more than " + std::to_string(kMaxExperimentColumns) + " columns");
+        throw InvalidInput(
+            lineField(fileName, headerLine),
+            makeDiagnostic("ident_more_than_columns", {std::to_string(kMaxExperimentColumns)}));
     bool allNumbers = true;
     for (std::size_t c = 0; c < names.size(); ++c) {
         const std::string field =
             lineField(fileName, headerLine) + ", column " + std::to_string(nameFields[c]);
         if (names[c].empty())
-            throw InvalidInput(field, "the column name is empty");
+            throw InvalidInput(field, makeDiagnostic("ident_column_name_empty"));
         for (std::size_t other = 0; other < c; ++other)
             if (names[other] == names[c])
-                throw InvalidInput(field,
-                                   "the column name '" + shownCell(names[c]) + "' is used twice");
-        std::string reason;
+                throw InvalidInput(
+                    field, makeDiagnostic("ident_column_name_twice", {shownCell(names[c])}));
+        Diagnostic reason;
         allNumbers = allNumbers && parseCellNumber(names[c], out.decimalComma, reason).has_value();
     }
     if (allNumbers)
         throw InvalidInput(lineField(fileName, headerLine),
-                           "holds numbers, not column names: the first line must name the columns");
+                           makeDiagnostic("ident_csv_header_numbers"));
     const std::size_t columns = names.size();
     const std::vector<bool> kept = keptColumns(names, options.columns, fileName);
     std::vector<std::size_t> tableColumn(columns, columns); // columns: not kept
@@ -225,7 +225,8 @@ DelimitedTable parse(std::string_view text, const std::string& fileName,
     reserveRows(t, rows);
 
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::string reason;
+    Diagnostic reason;
+    const Diagnostic missing = makeDiagnostic("is_missing");
     for (; !lines.atEnd(); lines.next()) {
         if (isBlank(lines.line()))
             continue;
@@ -255,11 +256,11 @@ DelimitedTable parse(std::string_view text, const std::string& fileName,
         if (extra != 0)
             throw InvalidInput(lineField(fileName, lineNumber) + ", column " +
                                    std::to_string(extra),
-                               "the line has " + std::to_string(seen) +
-                                   " fields but the header names " + std::to_string(columns));
+                               makeDiagnostic("ident_csv_line_fields",
+                                              {std::to_string(seen), std::to_string(columns)}));
         for (std::size_t c = seen; c < columns; ++c)
             if (tableColumn[c] != columns)
-                noteCellProblem(t, tableColumn[c], row, "", "is missing");
+                noteCellProblem(t, tableColumn[c], row, "", missing);
     }
     return out;
 }
@@ -269,12 +270,12 @@ DelimitedTable parse(std::string_view text, const std::string& fileName,
 DelimitedTable readDelimited(std::string_view text, const std::string& fileName,
                              const DelimitedReadOptions& options) {
     if (text.size() > kMaxExperimentBytes)
-        throw InvalidInput(fileName,
-                           "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
+        throw InvalidInput(fileName, makeDiagnostic("ident_larger_than_bytes",
+                                                    {std::to_string(kMaxExperimentBytes)}));
     try {
         return parse(text, fileName, options);
     } catch (const std::bad_alloc&) {
-        throwOutOfMemory(fileName, 0, "its table");
+        throwOutOfMemory(fileName, 0, makeDiagnostic("ident_oom_its_table"));
     }
 }
 

@@ -2,6 +2,7 @@
 #include "core/identification/excitation.h"
 
 #include "core/io/file_io.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -27,12 +28,12 @@ std::size_t sampleCount(const ExcitationTiming& t) {
     requirePositive(t.durationSeconds, "duration");
     const double x = t.durationSeconds / t.tsSeconds;
     if (!(x <= double(kMaxExcitationSamples) * (1.0 + 1e-9)))
-        throw InvalidInput("duration", "gives more than " + std::to_string(kMaxExcitationSamples) +
-                                           " samples at this ts");
+        throw InvalidInput("duration", makeDiagnostic("ident_excite_too_many_samples",
+                                                      {std::to_string(kMaxExcitationSamples)}));
     const double r = std::round(x);
     const double n = std::abs(x - r) <= 1e-9 * x ? r : std::ceil(x);
     if (n < 1.0)
-        throw InvalidInput("duration", "is shorter than one sample time");
+        throw InvalidInput("duration", makeDiagnostic("ident_excite_shorter_than_ts"));
     return static_cast<std::size_t>(n);
 }
 
@@ -43,9 +44,9 @@ void checkAmplitude(double amplitude, double offset, const ExcitationTiming& t) 
         requirePositive(*t.umaxVolts, "umax");
         const double peak = std::abs(offset) + amplitude;
         if (peak > *t.umaxVolts)
-            throw InvalidInput("amplitude", "|offset| + amplitude = " + formatNumber(peak) +
-                                                " V exceeds umax = " + formatNumber(*t.umaxVolts) +
-                                                " V");
+            throw InvalidInput("amplitude",
+                               makeDiagnostic("ident_excite_exceeds_umax",
+                                              {formatNumber(peak), formatNumber(*t.umaxVolts)}));
     }
 }
 
@@ -57,7 +58,7 @@ std::string volts(double v) {
 
 std::vector<int> prbsTaps(int n) {
     if (n < 2 || n > 31)
-        throw InvalidInput("register", "the register length must be 2 to 31");
+        throw InvalidInput("register", makeDiagnostic("ident_excite_register"));
     return kTaps[static_cast<std::size_t>(n - 2)];
 }
 
@@ -81,8 +82,8 @@ ExcitationSignal squareWave(const SquareWave& w, const ExcitationTiming& t) {
     checkAmplitude(w.amplitudeVolts, w.offsetVolts, t);
     requirePositive(w.periodSeconds, "period");
     if (w.periodSeconds < 2.0 * t.tsSeconds)
-        throw InvalidInput("period", "must be at least two sample times (" +
-                                         formatNumber(2.0 * t.tsSeconds) + " s)");
+        throw InvalidInput("period", makeDiagnostic("ident_excite_two_sample_times",
+                                                    {formatNumber(2.0 * t.tsSeconds)}));
     ExcitationSignal s;
     s.tsSeconds = t.tsSeconds;
     s.u.resize(n);
@@ -101,7 +102,7 @@ ExcitationSignal prbs(const Prbs& p, const ExcitationTiming& t) {
     const std::size_t n = sampleCount(t);
     checkAmplitude(p.amplitudeVolts, p.offsetVolts, t);
     if (p.clockSamples < 1 || p.clockSamples > 1'000'000)
-        throw InvalidInput("clock", "the clock period must be 1 to 1000000 samples");
+        throw InvalidInput("clock", makeDiagnostic("ident_excite_clock"));
     prbsTaps(p.registerLength);
     const std::size_t clock = static_cast<std::size_t>(p.clockSamples);
     const std::vector<std::uint8_t> bits = prbsBits(p.registerLength, (n + clock - 1) / clock);
@@ -125,8 +126,8 @@ ExcitationSignal chirp(const Chirp& c, const ExcitationTiming& t) {
     for (const auto& [f, name] : {std::pair{c.f0Hz, "f0"}, std::pair{c.f1Hz, "f1"}}) {
         requireFinite(f, name);
         if (f < 0.0 || f > nyquist)
-            throw InvalidInput(name, "must be from 0 to the Nyquist frequency " +
-                                         formatNumber(nyquist) + " Hz");
+            throw InvalidInput(name,
+                               makeDiagnostic("ident_excite_nyquist", {formatNumber(nyquist)}));
     }
     ExcitationSignal s;
     s.tsSeconds = t.tsSeconds;
@@ -225,7 +226,7 @@ void writeExcitation(const std::string& path, const ExcitationSignal& s) {
     else if (endsWith(".lvm"))
         writeFileAtomically(path, excitationLvmText(s));
     else
-        throw InvalidInput("output", "the file name must end in .csv or .lvm");
+        throw InvalidInput("output", makeDiagnostic("ident_excite_file_extension"));
 }
 
 } // namespace xyt

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/experiment_data.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -13,9 +14,10 @@ namespace {
 /// The column's values after checking every cell is a usable number.
 const std::vector<double>& usedColumn(const ExperimentTable& t, std::size_t c) {
     if (const auto& p = t.firstProblem[c])
-        throw InvalidInput(t.cellField(c, p->row), p->text.empty()
-                                                       ? std::string("the value is missing")
-                                                       : "'" + p->text + "' " + p->reason);
+        throw InvalidInput(t.cellField(c, p->row),
+                           p->text.empty()
+                               ? makeDiagnostic("ident_value_missing")
+                               : makeDiagnostic("ident_cell_reason", {p->text, p->reason}));
     return t.columns[c];
 }
 
@@ -23,8 +25,8 @@ const std::vector<double>& usedColumn(const ExperimentTable& t, std::size_t c) {
 
 std::vector<std::string> usedColumns(const ExperimentColumns& cols, const std::string& fileName) {
     if (cols.input == cols.output)
-        throw InvalidInput(fileName, "column '" + shownCell(cols.input) +
-                                         "' is chosen as both input and output");
+        throw InvalidInput(fileName,
+                           makeDiagnostic("ident_column_input_output", {shownCell(cols.input)}));
     std::vector<std::string> names{cols.input, cols.output};
     if (!cols.time.empty() && cols.time != cols.input && cols.time != cols.output)
         names.push_back(cols.time);
@@ -39,11 +41,8 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
     const int timeSources = int(!cols.time.empty()) + int(cols.sampleTimeSeconds.has_value()) +
                             int(cols.fileSampleTime);
     if (timeSources != 1)
-        throw InvalidInput(
-            t.fileName,
-            timeSources == 0
-                ? "no time source: give a time column or a sample time"
-                : "give one time source: a time column, a sample time or the file's sample time");
+        throw InvalidInput(t.fileName, makeDiagnostic(timeSources == 0 ? "ident_no_time_source"
+                                                                       : "ident_one_time_source"));
     usedColumns(cols, t.fileName);
     const std::size_t ui = t.column(cols.input);
     const std::size_t yi = t.column(cols.output);
@@ -63,10 +62,10 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
     const std::vector<double>& u = usedColumn(t, ui);
     const std::vector<double>& y = usedColumn(t, yi);
     if (u.size() != y.size())
-        throw InvalidInput(t.fileName, "'" + shownCell(cols.input) + "' has " +
-                                           std::to_string(u.size()) + " values but '" +
-                                           shownCell(cols.output) + "' has " +
-                                           std::to_string(y.size()));
+        throw InvalidInput(t.fileName,
+                           makeDiagnostic("ident_column_lengths",
+                                          {shownCell(cols.input), std::to_string(u.size()),
+                                           shownCell(cols.output), std::to_string(y.size())}));
     IoData d;
     // Names shown escaped: a header may hold control characters, and messages are one line.
     d.source =
@@ -80,47 +79,42 @@ IoData record(const ExperimentTable& t, const ExperimentColumns& cols, Experimen
     for (std::size_t k = 0; k < y.size(); ++k) {
         d.y[k] = scale * y[k];
         if (!std::isfinite(d.y[k]))
-            throw InvalidInput(t.cellField(yi, k),
-                               "the value scaled to mm is beyond the range of a double");
+            throw InvalidInput(t.cellField(yi, k), makeDiagnostic("ident_scaled_beyond_double"));
     }
-    requireSamples(d, 2, "a sampled record");
+    requireSamples(d, 2, makeDiagnostic("ident_a_sampled_record"));
 
     if (cols.sampleTimeSeconds) {
         requireSampleTime(*cols.sampleTimeSeconds, "sample_time");
         d.tsSeconds = *cols.sampleTimeSeconds;
     } else if (cols.fileSampleTime) {
         if (!t.sampleTimeSeconds)
-            throw InvalidInput(t.fileName,
-                               "states no sample time (no Delta_X equal for every channel): "
-                               "give a time column or a sample time");
+            throw InvalidInput(t.fileName, makeDiagnostic("ident_no_stated_sample_time"));
         requireSampleTime(*t.sampleTimeSeconds, t.fileName + ": the stated sample time");
         d.tsSeconds = *t.sampleTimeSeconds;
     } else {
         const std::size_t ti = t.column(cols.time);
         const std::vector<double>& time = usedColumn(t, ti);
         if (time.size() != n)
-            throw InvalidInput(t.fileName, "the time '" + shownCell(cols.time) + "' has " +
-                                               std::to_string(time.size()) +
-                                               " values but the data " + std::to_string(n));
+            throw InvalidInput(t.fileName,
+                               makeDiagnostic("ident_time_lengths",
+                                              {shownCell(cols.time), std::to_string(time.size()),
+                                               std::to_string(n)}));
         for (std::size_t k = 1; k < time.size(); ++k)
             if (!(time[k] > time[k - 1]))
-                throw InvalidInput(t.cellField(ti, k),
-                                   "time " + formatNumber(time[k], 10) +
-                                       " s does not increase (the line before holds " +
-                                       formatNumber(time[k - 1], 10) + " s)");
+                throw InvalidInput(
+                    t.cellField(ti, k),
+                    makeDiagnostic("ident_time_not_increasing",
+                                   {formatNumber(time[k], 10), formatNumber(time[k - 1], 10)}));
         const double ts = (time[n - 1] - time[0]) / double(n - 1);
         if (!(ts > 0.0) || !std::isfinite(ts))
-            throw InvalidInput(t.cellField(ti, n - 1),
-                               "the time column gives no usable sample time");
+            throw InvalidInput(t.cellField(ti, n - 1), makeDiagnostic("ident_time_no_sample_time"));
         requireSampleTime(ts, t.cellField(ti, n - 1) + ": the time column's sample time");
         for (std::size_t k = 1; k < n; ++k) {
             const double step = time[k] - time[k - 1];
             if (std::abs(step - ts) > kSampleTimeTolerance * ts)
                 throw InvalidInput(t.cellField(ti, k),
-                                   "the time step " + formatNumber(step, 6) +
-                                       " s differs from the mean sample time " +
-                                       formatNumber(ts, 6) +
-                                       " s by more than 1 % (non-uniform sampling)");
+                                   makeDiagnostic("ident_time_step_differs",
+                                                  {formatNumber(step, 6), formatNumber(ts, 6)}));
         }
         d.tsSeconds = ts;
         d.startSeconds = time[0];
@@ -138,15 +132,17 @@ IoData experimentData(ExperimentTable&& table, const ExperimentColumns& columns)
     return record(table, columns, &table);
 }
 
-void requireSamples(const IoData& data, std::size_t minimum, const std::string& what) {
+void requireSamples(const IoData& data, std::size_t minimum, const Diagnostic& what) {
     const std::string field = data.source.empty() ? std::string("data") : data.source;
     if (data.u.size() != data.y.size())
-        throw InvalidInput(field, "u has " + std::to_string(data.u.size()) + " samples but y has " +
-                                      std::to_string(data.y.size()));
+        throw InvalidInput(
+            field, makeDiagnostic("ident_u_y_lengths",
+                                  {std::to_string(data.u.size()), std::to_string(data.y.size())}));
     if (data.size() < minimum)
-        throw InvalidInput(field, "has " + std::to_string(data.size()) + " sample" +
-                                      (data.size() == 1 ? "" : "s") + "; " + what +
-                                      " needs at least " + std::to_string(minimum));
+        throw InvalidInput(
+            field,
+            makeDiagnostic(data.size() == 1 ? "ident_one_sample_needs" : "ident_samples_needs",
+                           {std::to_string(data.size()), what, std::to_string(minimum)}));
 }
 
 } // namespace xyt

@@ -68,6 +68,6 @@ std::vector<std::string> usedColumns(const ExperimentColumns& columns, const std
  * @throws InvalidInput whose field is data.source (or "data" when empty): "has N samples;
  *         <what> needs at least <minimum>"; also when u and y differ in length.
  */
-void requireSamples(const IoData& data, std::size_t minimum, const std::string& what);
+void requireSamples(const IoData& data, std::size_t minimum, const Diagnostic& what);
 
 } // namespace xyt

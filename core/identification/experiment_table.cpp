@@ -3,6 +3,7 @@
 
 #include "core/io/file_io.h"
 #include "core/io/text_escape.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -22,10 +23,13 @@ std::size_t ExperimentTable::column(std::string_view name) const {
     std::string list;
     for (std::size_t c = 0; c < names.size() && c < 50; ++c)
         list += (c ? ", " : "") + shownCell(names[c]);
-    if (names.size() > 50)
-        list += ", ... (" + std::to_string(names.size()) + " in all)";
-    throw InvalidInput(fileName, "has no column '" + shownCell(name) +
-                                     "'; the columns are: " + (list.empty() ? "(none)" : list));
+    const Diagnostic shown =
+        names.size() > 50
+            ? makeDiagnostic("ident_column_list_cut", {list, std::to_string(names.size())})
+            : Diagnostic(list);
+    throw InvalidInput(fileName, list.empty()
+                                     ? makeDiagnostic("ident_no_column_none", {shownCell(name)})
+                                     : makeDiagnostic("ident_no_column", {shownCell(name), shown}));
 }
 
 std::string ExperimentTable::cellField(std::size_t c, std::size_t row) const {
@@ -45,7 +49,14 @@ void ExperimentTable::addColumn(std::string name, std::size_t fieldNumber) {
 }
 
 std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
-                                      std::string& reason) {
+                                      Diagnostic& reason) {
+    // Made once: a column of text that is never used is refused cell by cell.
+    static const Diagnostic missing = makeDiagnostic("is_missing");
+    static const Diagnostic notNumber = makeDiagnostic("ident_cell_not_number");
+    static const Diagnostic notFinite = makeDiagnostic("not_finite_value");
+    static const Diagnostic outOfRange = makeDiagnostic("ident_cell_out_of_range");
+    static const Diagnostic decimalPoint = makeDiagnostic("ident_cell_decimal_point");
+    static const Diagnostic decimalCommaReason = makeDiagnostic("ident_cell_decimal_comma");
     auto space = [](char c) {
         return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
     };
@@ -54,14 +65,14 @@ std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
     while (!cell.empty() && space(cell.back()))
         cell.remove_suffix(1);
     if (cell.empty()) {
-        reason = "is missing";
+        reason = missing;
         return std::nullopt;
     }
     // from_chars takes no '+'; a doubled sign stays an error.
     if (cell.front() == '+' && cell.size() > 1 && cell[1] != '-' && cell[1] != '+')
         cell.remove_prefix(1);
     if (cell.size() > 64) {
-        reason = "is not a number";
+        reason = notNumber;
         return std::nullopt;
     }
     char buffer[64];
@@ -80,14 +91,11 @@ std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
             if (lower == "nan" || lower == "-nan" || lower == "inf" || lower == "-inf" ||
                 lower == "infinity" || lower == "-infinity" || lower == "1.#qnan" ||
                 lower == "1.#inf")
-                reason = "is NaN or infinite";
+                reason = notFinite;
             else if (c == (decimalComma ? '.' : ','))
-                reason = decimalComma ? "is not a number (a decimal point where the file's decimal "
-                                        "separator is the comma)"
-                                      : "is not a number (a decimal comma where the file's decimal "
-                                        "separator is the point)";
+                reason = decimalComma ? decimalPoint : decimalCommaReason;
             else
-                reason = "is not a number";
+                reason = notNumber;
             return std::nullopt;
         }
         buffer[n++] = c == ',' ? '.' : c;
@@ -95,22 +103,22 @@ std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
     double value = 0.0;
     const auto [end, ec] = std::from_chars(buffer, buffer + n, value, std::chars_format::general);
     if (ec == std::errc::result_out_of_range) {
-        reason = "is out of the range of a double";
+        reason = outOfRange;
         return std::nullopt;
     }
     if (ec != std::errc() || end != buffer + n) {
-        reason = "is not a number";
+        reason = notNumber;
         return std::nullopt;
     }
     if (!std::isfinite(value)) {
-        reason = "is NaN or infinite";
+        reason = notFinite;
         return std::nullopt;
     }
     return value;
 }
 
 void noteCellProblem(ExperimentTable& table, std::size_t column, std::size_t row,
-                     std::string_view text, const std::string& reason) {
+                     std::string_view text, const Diagnostic& reason) {
     if (!table.firstProblem[column])
         table.firstProblem[column] = CellProblem{row, shownCell(text), reason};
 }
@@ -186,29 +194,29 @@ void reserveRows(ExperimentTable& table, std::size_t rows) {
             c.reserve(rows);
     } catch (const std::bad_alloc&) {
         const double bytes = double(rows) * double(columns + 1) * 8.0;
-        throwOutOfMemory(table.fileName, std::size_t(std::min(bytes, 1e18)),
-                         std::to_string(rows) + " rows of " + std::to_string(columns) + " column" +
-                             (columns == 1 ? "" : "s") + ", 8 bytes a number");
+        throwOutOfMemory(
+            table.fileName, std::size_t(std::min(bytes, 1e18)),
+            makeDiagnostic(columns == 1 ? "ident_oom_rows_of_column" : "ident_oom_rows_of_columns",
+                           {std::to_string(rows), std::to_string(columns)}));
     } catch (const std::length_error&) {
-        throwOutOfMemory(table.fileName, 0, std::to_string(rows) + " rows");
+        throwOutOfMemory(table.fileName, 0,
+                         makeDiagnostic("ident_oom_rows", {std::to_string(rows)}));
     }
 }
 
-void throwOutOfMemory(const std::string& fileName, std::size_t bytes, const std::string& what) {
-    const std::string amount =
-        bytes > 0 ? std::to_string((bytes + (1u << 20) - 1) >> 20) + " MB for " + what : what;
-    throw InvalidInput(fileName, "the file needs more memory than is available (" + amount + ")");
+void throwOutOfMemory(const std::string& fileName, std::size_t bytes, const Diagnostic& what) {
+    const Diagnostic amount =
+        bytes > 0 ? makeDiagnostic("ident_oom_mb_for",
+                                   {std::to_string((bytes + (1u << 20) - 1) >> 20), what})
+                  : what;
+    throw InvalidInput(fileName, makeDiagnostic("ident_oom", {amount}));
 }
 
 void requireSampleTime(double seconds, const std::string& field) {
     requirePositive(seconds, field);
     if (seconds < kMinSampleTimeSeconds || seconds > kMaxSampleTimeSeconds)
-        throw InvalidInput(
-            field, formatNumber(seconds, 6) +
-                       " s is outside the accepted sample times, 1e-09 s "
-                       "to 10000 s (no axis experiment is sampled faster or slower, and beyond "
-                       "them a fitted gain underflows to 0 or a session's run needs more than "
-                       "1e308 samples)");
+        throw InvalidInput(field,
+                           makeDiagnostic("ident_sample_time_outside", {formatNumber(seconds, 6)}));
 }
 
 std::string readExperimentFile(const std::string& path) {
@@ -217,7 +225,8 @@ std::string readExperimentFile(const std::string& path) {
     } catch (const std::bad_alloc&) {
         std::error_code ignored;
         const auto size = std::filesystem::file_size(path, ignored);
-        throwOutOfMemory(path, ignored ? 0 : std::size_t(size), "the file's text");
+        throwOutOfMemory(path, ignored ? 0 : std::size_t(size),
+                         makeDiagnostic("ident_oom_file_text"));
     }
 }
 

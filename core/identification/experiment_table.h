@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -20,8 +22,8 @@ inline constexpr std::size_t kMaxExperimentColumns = 1000;
 /// The first cell of a column that holds no usable number.
 struct CellProblem {
     std::size_t row = 0; ///< index into ExperimentTable::rowNumbers
-    std::string text;   ///< the cell as written (shown one-line, at most 40 characters); "" = empty
-    std::string reason; ///< "is not a number", "is missing", "is NaN", ...
+    std::string text;  ///< the cell as written (shown one-line, at most 40 characters); "" = empty
+    Diagnostic reason; ///< "is not a number", "is missing", "is NaN", ... (coded)
 };
 
 /**
@@ -42,7 +44,7 @@ struct ExperimentTable {
     std::vector<std::optional<CellProblem>> firstProblem; ///< per column
     /// The sample time the file states, if any (LVM Delta_X, equal for every channel), s.
     std::optional<double> sampleTimeSeconds;
-    std::vector<std::string> warnings; ///< what was read in an unusual way
+    std::vector<Diagnostic> warnings; ///< what was read in an unusual way (coded)
 
     /// Index of the column called @p name (exact, case-sensitive).
     /// @throws InvalidInput naming the file: no such column, with the list of those that exist.
@@ -61,12 +63,11 @@ struct ExperimentTable {
  * of the range of a double"). "1.5" is refused with @p decimalComma and "1,5" without it: a cell
  * holding the other separator is a sign of a wrong setting, not something to guess.
  */
-std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma,
-                                      std::string& reason);
+std::optional<double> parseCellNumber(std::string_view cell, bool decimalComma, Diagnostic& reason);
 
 /// Records the first problem of column @p column at row @p row (later ones are ignored).
 void noteCellProblem(ExperimentTable& table, std::size_t column, std::size_t row,
-                     std::string_view text, const std::string& reason);
+                     std::string_view text, const Diagnostic& reason);
 
 /// Text of a file for a one-line message: escaped (core/io/text_escape.h rules) and cut to
 /// @p maxChars characters.
@@ -114,7 +115,7 @@ void reserveRows(ExperimentTable& table, std::size_t rows);
 /// "<file>: the file needs more memory than is available (<N> MB for <what>)": what a reader
 /// throws instead of std::bad_alloc. @p bytes 0 leaves the amount out.
 [[noreturn]] void throwOutOfMemory(const std::string& fileName, std::size_t bytes,
-                                   const std::string& what);
+                                   const Diagnostic& what);
 
 /**
  * The bytes of an experiment file, at most kMaxExperimentBytes (core/io/file_io.h

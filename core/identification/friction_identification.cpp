@@ -2,6 +2,7 @@
 #include "core/identification/friction_identification.h"
 
 #include "core/identification/least_squares.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <Eigen/Core>
@@ -37,11 +38,13 @@ std::string frictionNumber(double x) {
 void requireFrictionColumn(const std::vector<double>& column, std::size_t n,
                            const std::string& field) {
     if (column.size() != n)
-        throw InvalidInput(field, std::to_string(column.size()) + " values for " +
-                                      std::to_string(n) + " times");
+        throw InvalidInput(field,
+                           makeDiagnostic("ident_friction_values_for_times",
+                                          {std::to_string(column.size()), std::to_string(n)}));
     for (std::size_t k = 0; k < n; ++k)
         if (!std::isfinite(column[k]))
-            throw InvalidInput(field, "value " + std::to_string(k + 1) + " is not finite");
+            throw InvalidInput(field,
+                               makeDiagnostic("ident_value_not_finite", {std::to_string(k + 1)}));
 }
 
 /// A constant-velocity run of the reference: samples first..last (inclusive) and its direction.
@@ -196,27 +199,29 @@ std::vector<FrictionPoint> steadyJogPoints(const std::vector<double>& t,
                                            const FrictionIdentificationOptions& options) {
     const std::size_t n = t.size();
     if (n < 2)
-        throw InvalidInput("t", "needs at least 2 samples");
+        throw InvalidInput("t", makeDiagnostic("ident_needs_two_samples"));
     for (std::size_t k = 0; k < n; ++k)
         if (!std::isfinite(t[k]))
-            throw InvalidInput("t", "value " + std::to_string(k + 1) + " is not finite");
+            throw InvalidInput("t",
+                               makeDiagnostic("ident_value_not_finite", {std::to_string(k + 1)}));
     const double step = (t[n - 1] - t[0]) / static_cast<double>(n - 1);
     for (std::size_t k = 0; k + 1 < n; ++k) {
         const double dt = t[k + 1] - t[k];
         if (!(dt > 0.0))
-            throw InvalidInput("t", "not strictly increasing at sample " + std::to_string(k + 2));
+            throw InvalidInput(
+                "t", makeDiagnostic("ident_friction_not_increasing", {std::to_string(k + 2)}));
         if (std::abs(dt - step) > 1e-6 * step)
-            throw InvalidInput("t", "not uniformly sampled: step " + std::to_string(k + 1) +
-                                        " is " + frictionNumber(dt) + " s, the mean step " +
-                                        frictionNumber(step) + " s");
+            throw InvalidInput("t", makeDiagnostic("ident_friction_not_uniform",
+                                                   {std::to_string(k + 1), frictionNumber(dt),
+                                                    frictionNumber(step)}));
     }
     requireFrictionColumn(reference, n, "reference");
     requireFrictionColumn(position, n, "position");
     requireFrictionColumn(command, n, "command");
     if (!(options.settleFraction >= 0.0 && options.settleFraction < 1.0))
-        throw InvalidInput("settle_fraction", "must be in [0, 1)");
+        throw InvalidInput("settle_fraction", makeDiagnostic("in_zero_one_open_right"));
     if (!(options.referenceTolerance > 0.0 && options.referenceTolerance <= 0.1))
-        throw InvalidInput("reference_tolerance", "must be in (0, 0.1]");
+        throw InvalidInput("reference_tolerance", makeDiagnostic("ident_in_zero_0_1"));
 
     std::vector<FrictionPoint> points;
     std::size_t forward = 0, backward = 0;
@@ -239,11 +244,9 @@ std::vector<FrictionPoint> steadyJogPoints(const std::vector<double>& t,
         (run.direction > 0 ? forward : backward) += 1;
     }
     if (forward < 2 || backward < 2)
-        throw InvalidInput("reference", std::to_string(forward) +
-                                            " constant-velocity segments in " +
-                                            "the + direction and " + std::to_string(backward) +
-                                            " in the - direction: needs jogs in both directions "
-                                            "at two or more speeds");
+        throw InvalidInput("reference",
+                           makeDiagnostic("ident_friction_segments",
+                                          {std::to_string(forward), std::to_string(backward)}));
     return points;
 }
 
@@ -254,17 +257,18 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
         const FrictionPoint& p = points[i];
         if (!std::isfinite(p.velocityMmPerS) || !std::isfinite(p.volts) ||
             !std::isfinite(p.voltsStd))
-            throw InvalidInput("points", "point " + std::to_string(i + 1) + " is not finite");
+            throw InvalidInput("points", makeDiagnostic("ident_friction_point_not_finite",
+                                                        {std::to_string(i + 1)}));
         if (p.velocityMmPerS == 0.0)
-            throw InvalidInput("points",
-                               "point " + std::to_string(i + 1) + " has velocity 0: no direction");
+            throw InvalidInput("points", makeDiagnostic("ident_friction_point_velocity_zero",
+                                                        {std::to_string(i + 1)}));
         (p.velocityMmPerS > 0 ? forwardSpeeds : backwardSpeeds)
             .push_back(std::abs(p.velocityMmPerS));
     }
     if (forwardSpeeds.size() < 2 || backwardSpeeds.size() < 2)
-        throw InvalidInput("points", std::to_string(forwardSpeeds.size()) + " points in the + " +
-                                         "direction and " + std::to_string(backwardSpeeds.size()) +
-                                         " in the - direction: needs at least 2 in each");
+        throw InvalidInput("points", makeDiagnostic("ident_friction_points_directions",
+                                                    {std::to_string(forwardSpeeds.size()),
+                                                     std::to_string(backwardSpeeds.size())}));
 
     const Eigen::Index n = static_cast<Eigen::Index>(points.size());
     Eigen::VectorXd u(n);
@@ -278,8 +282,7 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
     Eigen::MatrixXd phiCopy = phi;
     const LinearLeastSquares line = linearLeastSquares(std::move(phiCopy), u);
     if (!line.fullRank())
-        throw InvalidInput("points", "all speeds are equal: the Coulomb level and the viscous "
-                                     "slope cannot be told apart");
+        throw InvalidInput("points", makeDiagnostic("ident_friction_speeds_equal"));
     const double rssLine = (u - phi * line.theta).squaredNorm();
     const double dofLine = static_cast<double>(n - 2);
     const double s2Line = rssLine / dofLine;
@@ -294,15 +297,15 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
     e.degreesOfFreedom = static_cast<std::size_t>(n - 2);
 
     if (!options.allowStribeck) {
-        e.modelSelection = "Stribeck model not tried (not allowed)";
+        e.modelSelection = makeDiagnostic("ident_stribeck_not_allowed");
         return e;
     }
     if (distinctFrictionSpeeds(forwardSpeeds) < 3 || distinctFrictionSpeeds(backwardSpeeds) < 3) {
-        e.modelSelection = "Stribeck model not tried: fewer than 3 distinct speeds per direction";
+        e.modelSelection = makeDiagnostic("ident_stribeck_few_speeds");
         return e;
     }
     if (std::sqrt(rssLine) <= 1e-12 * u.norm()) {
-        e.modelSelection = "Stribeck model not tried: the line fits to round-off";
+        e.modelSelection = makeDiagnostic("ident_stribeck_line_exact");
         return e;
     }
 
@@ -336,27 +339,26 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
         status == Lm::RelativeErrorAndReductionTooSmall || status == Lm::CosinusTooSmall ||
         status == Lm::FtolTooSmall || status == Lm::XtolTooSmall || status == Lm::GtolTooSmall;
     if (!converged || !theta.allFinite()) {
-        e.modelSelection = "Stribeck model not kept: the search did not converge (MINPACK info " +
-                           std::to_string(static_cast<int>(status)) + ")";
+        e.modelSelection = makeDiagnostic("ident_stribeck_not_converged",
+                                          {std::to_string(static_cast<int>(status))});
         return e;
     }
     theta(2) = std::abs(theta(2)); // the model holds v_s^2 only
     if (!(theta(2) > 0.0) || !(theta(1) > theta(0))) {
-        e.modelSelection =
-            "Stribeck model not kept: it converged to v_s = " + frictionNumber(theta(2)) +
-            " mm/s, F_s = " + frictionNumber(theta(1)) + " V, F_c = " + frictionNumber(theta(0)) +
-            " V (needs v_s > 0, F_s > F_c)";
+        e.modelSelection = makeDiagnostic(
+            "ident_stribeck_converged_wrong",
+            {frictionNumber(theta(2)), frictionNumber(theta(1)), frictionNumber(theta(0))});
         return e;
     }
     Eigen::VectorXd residuals;
     Eigen::MatrixXd jacobian;
     if (functor(theta, residuals) < 0 || functor.df(theta, jacobian) < 0) {
-        e.modelSelection = "Stribeck model not kept: not finite at the optimum";
+        e.modelSelection = makeDiagnostic("ident_stribeck_not_finite");
         return e;
     }
     const LinearLeastSquares local = linearLeastSquares(jacobian, residuals);
     if (!local.fullRank()) {
-        e.modelSelection = "Stribeck model not kept: its Jacobian is rank deficient at the optimum";
+        e.modelSelection = makeDiagnostic("ident_stribeck_rank_deficient");
         return e;
     }
     const double rssStribeck = residuals.squaredNorm();
@@ -370,7 +372,7 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
                              "F(2, " + std::to_string(n - 4) +
                              "; 0.99) = " + frictionNumber(critical);
     if (!(f > critical)) {
-        e.modelSelection = test + ": Stribeck model not kept";
+        e.modelSelection = makeDiagnostic("ident_stribeck_test_not_kept", {test});
         return e;
     }
     const double s2 = rssStribeck / nu;
@@ -385,7 +387,7 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
     e.viscousStd = std::sqrt(s2 * local.inverseGram(3, 3));
     e.residualStdVolts = std::sqrt(s2);
     e.degreesOfFreedom = static_cast<std::size_t>(n - 4);
-    e.modelSelection = test + ": Stribeck model kept";
+    e.modelSelection = makeDiagnostic("ident_stribeck_test_kept", {test});
     return e;
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -76,7 +78,7 @@ struct FrictionEstimate {
     std::size_t degreesOfFreedom = 0; ///< N - p
     /// Why the Stribeck model was or was not kept, for the user: e.g. "F = 52.1 > F(2, 10;
     /// 0.99) = 7.56: Stribeck model kept" or "fewer than 3 distinct speeds per direction".
-    std::string modelSelection;
+    Diagnostic modelSelection; ///< coded
 };
 
 /**

@@ -2,6 +2,7 @@
 #include "core/identification/identification.h"
 
 #include "core/identification/least_squares.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -27,7 +28,7 @@ ModelStructure parseModelStructure(const std::string& name) {
                              ModelStructure::ContinuousThirdOrder})
         if (modelStructureName(s) == name)
             return s;
-    throw InvalidInput("structure", "'" + name + "' is not arx, oe, bj or gt3");
+    throw InvalidInput("structure", makeDiagnostic("ident_structure_unknown", {name}));
 }
 
 std::string IdentificationSpec::describe() const {
@@ -79,15 +80,14 @@ PolynomialModel outputErrorForm(const ThirdOrderPlant& plant, double ts) {
 IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation,
                               const IdentificationSpec& spec) {
     if (spec.predictionHorizon < 1)
-        throw InvalidInput("prediction_horizon", "must be at least 1");
+        throw InvalidInput("prediction_horizon", makeDiagnostic("at_least", {"1"}));
     if (spec.maxLag < 1)
-        throw InvalidInput("max_lag", "must be at least 1");
+        throw InvalidInput("max_lag", makeDiagnostic("at_least", {"1"}));
     if (validation &&
         !(std::abs(validation->tsSeconds - estimation.tsSeconds) <= 0.01 * estimation.tsSeconds))
-        throw InvalidInput("validation", "its sample time " +
-                                             std::to_string(validation->tsSeconds) +
-                                             " s differs from the estimation data's " +
-                                             std::to_string(estimation.tsSeconds) + " s");
+        throw InvalidInput("validation", makeDiagnostic("ident_validation_sample_time",
+                                                        {std::to_string(validation->tsSeconds),
+                                                         std::to_string(estimation.tsSeconds)}));
     IdentifiedModel out;
     out.spec = spec;
     out.structure = spec.describe();
@@ -158,7 +158,7 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
     if (loss > 0.0 && std::isfinite(loss) && samples > out.parameters.size())
         out.criteria = informationCriteria(loss, samples, out.parameters.size());
     else
-        out.warnings.push_back("the loss is zero (an exact fit): FPE and AIC are not defined");
+        out.warnings.push_back(makeDiagnostic("ident_loss_zero"));
     out.fit = fitReport(out.model, estimationFrom, validationFrom ? &*validationFrom : nullptr,
                         spec.predictionHorizon);
     if (out.residuals.size() > out.firstSample + static_cast<std::size_t>(spec.maxLag) &&
@@ -167,8 +167,7 @@ IdentifiedModel identifyModel(const IoData& estimation, const IoData* validation
             residualAnalysis(out.residuals, estimation.u, spec.maxLag, 2.576, out.firstSample);
     out.roots =
         out.plant ? thirdOrderPlantRoots(*out.plant, estimation.tsSeconds) : modelRoots(out.model);
-    for (const std::string& note : out.roots.notes)
-        out.warnings.push_back(note);
+    out.warnings.insert(out.warnings.end(), out.roots.notes.begin(), out.roots.notes.end());
     return out;
 }
 

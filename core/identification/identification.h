@@ -60,7 +60,7 @@ struct IdentifiedModel {
     IdentificationSpec spec;
     std::string structure; ///< spec.describe()
     EstimationStatus status = EstimationStatus::Failed;
-    std::string message;
+    Diagnostic message; ///< the estimator's (coded)
     PolynomialModel model;
     std::optional<ThirdOrderPlant> plant;
     std::vector<std::string> parameterNames; ///< "a1", "b1", "f1", ... or "k0", "a1", "a2"
@@ -76,7 +76,7 @@ struct IdentifiedModel {
     std::size_t firstSample = 0;   ///< the first sample the fits and tests use (ARX start rows)
     ResidualAnalysis residualTests;
     ModelRoots roots;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings; ///< coded
 
     /// An estimate exists (converged, or stopped at the iteration limit or by a cancel).
     bool hasEstimate() const;

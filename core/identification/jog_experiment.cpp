@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/jog_experiment.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -42,18 +43,19 @@ double jogMovePosition(const JogMove& m, double tau, double travel, double accel
 JogReference jogReference(const JogProgram& program) {
     const std::vector<double>& speeds = program.speedsMmPerS;
     if (speeds.empty())
-        throw InvalidInput("speeds", "give at least one jog speed");
+        throw InvalidInput("speeds", makeDiagnostic("ident_jog_no_speed"));
     if (speeds.size() > kMaxJogSpeeds)
-        throw InvalidInput("speeds", std::to_string(speeds.size()) + " speeds: at most " +
-                                         std::to_string(kMaxJogSpeeds));
+        throw InvalidInput(
+            "speeds", makeDiagnostic("ident_jog_too_many_speeds", {std::to_string(speeds.size()),
+                                                                   std::to_string(kMaxJogSpeeds)}));
     for (double v : speeds)
         if (!std::isfinite(v) || v <= 0)
-            throw InvalidInput("speeds", "every speed must be finite and > 0 (mm/s), got " +
-                                             std::to_string(v));
+            throw InvalidInput("speeds",
+                               makeDiagnostic("ident_jog_speed_positive", {std::to_string(v)}));
     requirePositive(program.travelMm, "travel");
     requirePositive(program.accelMmPerS2, "accel");
     if (!std::isfinite(program.dwellSeconds) || program.dwellSeconds < 0)
-        throw InvalidInput("dwell", "must be finite and >= 0 (s)");
+        throw InvalidInput("dwell", makeDiagnostic("ident_jog_dwell"));
     requirePositive(program.tsSeconds, "ts");
 
     const double travel = program.travelMm;
@@ -69,8 +71,8 @@ JogReference jogReference(const JogProgram& program) {
         const double minimum = 3.0 * v * v / accel;
         if (travel < minimum)
             throw InvalidInput(
-                "travel", "at " + std::to_string(v) + " mm/s the cruise must last half the " +
-                              "move: travel >= 3 V^2 / A = " + std::to_string(minimum) + " mm");
+                "travel",
+                makeDiagnostic("ident_jog_travel", {std::to_string(v), std::to_string(minimum)}));
         JogMove m;
         m.speed = v;
         m.rampSeconds = v / accel;
@@ -91,9 +93,9 @@ JogReference jogReference(const JogProgram& program) {
     const double nearest = std::round(steps);
     steps = std::abs(steps - nearest) <= 1e-9 * std::max(1.0, nearest) ? nearest : std::ceil(steps);
     if (!(steps + 1.0 <= static_cast<double>(kMaxJogSamples)))
-        throw InvalidInput("ts", "the program lasts " + std::to_string(duration) +
-                                     " s: more than " + std::to_string(kMaxJogSamples) +
-                                     " samples at this ts");
+        throw InvalidInput(
+            "ts", makeDiagnostic("ident_jog_too_long",
+                                 {std::to_string(duration), std::to_string(kMaxJogSamples)}));
     const std::size_t n = static_cast<std::size_t>(steps) + 1;
 
     JogReference r;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/least_squares.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/polynomial.h"
 
@@ -58,7 +59,7 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
     if (problem.project)
         problem.project(out.theta);
     if (!problem.evaluate(out.theta, out.residuals, &out.jacobian) || !out.jacobian.allFinite()) {
-        out.message = "the loss or its gradient is not finite at the initial estimate";
+        out.message = makeDiagnostic("ident_search_not_finite_initial");
         return out;
     }
     const Eigen::Index d = out.theta.size();
@@ -72,12 +73,13 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
         if (options.progress &&
             !options.progress(static_cast<double>(iter) / options.maxIterations)) {
             out.status = EstimationStatus::Cancelled;
-            out.message = "cancelled after " + std::to_string(out.iterations) + " iterations";
+            out.message =
+                makeDiagnostic("ident_search_cancelled", {std::to_string(out.iterations)});
             return out;
         }
         if (out.loss <= exactFitLoss) {
             out.status = EstimationStatus::Converged;
-            out.message = "exact fit (the loss is at the round-off level of the data)";
+            out.message = makeDiagnostic("ident_search_exact_fit");
             break;
         }
         // QR of the scaled Jacobian once per iteration; each damping trial then solves the
@@ -115,7 +117,7 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
         }
         if (!accepted) {
             out.status = EstimationStatus::Converged;
-            out.message = "no damped step lowers the loss: a minimum to working precision";
+            out.message = makeDiagnostic("ident_search_no_damped_step");
             break;
         }
         const double lossDrop = (out.loss - trialLoss) / out.loss;
@@ -125,7 +127,7 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
         Eigen::VectorXd residuals;
         if (!problem.evaluate(trialTheta, residuals, &jacobian) || !jacobian.allFinite()) {
             out.status = EstimationStatus::Failed;
-            out.message = "the gradient is not finite at an accepted estimate";
+            out.message = makeDiagnostic("ident_search_gradient_not_finite");
             break;
         }
         out.theta = trialTheta;
@@ -137,14 +139,15 @@ SearchOutcome levenbergMarquardt(const NonlinearProblem& problem, const Eigen::V
         lambda = std::max(lambda / 10.0, 1e-12);
         if (lossDrop < options.relativeLossTolerance || stepSize < options.relativeStepTolerance) {
             out.status = EstimationStatus::Converged;
-            out.message = lossDrop < options.relativeLossTolerance
-                              ? "the loss changed by less than the tolerance"
-                              : "the step was smaller than the tolerance";
+            out.message = makeDiagnostic(lossDrop < options.relativeLossTolerance
+                                             ? "ident_search_loss_tolerance"
+                                             : "ident_search_step_tolerance");
             break;
         }
     }
     if (out.status == EstimationStatus::IterationLimit)
-        out.message = "stopped at " + std::to_string(options.maxIterations) + " iterations";
+        out.message =
+            makeDiagnostic("ident_search_stopped", {std::to_string(options.maxIterations)});
     if (options.progress)
         options.progress(1.0);
     return out;
@@ -159,17 +162,15 @@ double exactFitLoss(const std::vector<double>& y) {
 
 void parameterCovariance(const Eigen::MatrixXd& jacobian, double sigma2,
                          Eigen::MatrixXd& covariance, std::vector<double>& standardDeviations,
-                         std::vector<std::string>& warnings) {
+                         std::vector<Diagnostic>& warnings) {
     const LinearLeastSquares ls =
         linearLeastSquares(jacobian, Eigen::VectorXd::Zero(jacobian.rows()));
     standardDeviations.assign(static_cast<std::size_t>(jacobian.cols()),
                               std::numeric_limits<double>::quiet_NaN());
     if (!ls.fullRank()) {
         covariance.resize(0, 0);
-        warnings.push_back("the Jacobian has rank " + std::to_string(ls.rank) + " < " +
-                           std::to_string(jacobian.cols()) +
-                           ": not every parameter is identifiable from these data (no "
-                           "covariance); a lower order may do");
+        warnings.push_back(makeDiagnostic(
+            "ident_jacobian_rank", {std::to_string(ls.rank), std::to_string(jacobian.cols())}));
         return;
     }
     covariance = sigma2 * ls.inverseGram;
@@ -179,16 +180,18 @@ void parameterCovariance(const Eigen::MatrixXd& jacobian, double sigma2,
 
 void validateIoData(const IoData& data) {
     if (data.y.empty())
-        throw InvalidInput("data.y", "has no samples");
+        throw InvalidInput("data.y", makeDiagnostic("has_no_samples"));
     if (data.u.size() != data.y.size())
-        throw InvalidInput("data.u", "has " + std::to_string(data.u.size()) +
-                                         " samples but data.y has " +
-                                         std::to_string(data.y.size()));
+        throw InvalidInput(
+            "data.u", makeDiagnostic("ident_data_u_y_lengths", {std::to_string(data.u.size()),
+                                                                std::to_string(data.y.size())}));
     for (std::size_t k = 0; k < data.y.size(); ++k) {
         if (!std::isfinite(data.u[k]))
-            throw InvalidInput("data.u", "sample " + std::to_string(k) + " is not finite");
+            throw InvalidInput("data.u",
+                               makeDiagnostic("ident_sample_not_finite", {std::to_string(k)}));
         if (!std::isfinite(data.y[k]))
-            throw InvalidInput("data.y", "sample " + std::to_string(k) + " is not finite");
+            throw InvalidInput("data.y",
+                               makeDiagnostic("ident_sample_not_finite", {std::to_string(k)}));
     }
     requirePositive(data.tsSeconds, "data.ts");
 }

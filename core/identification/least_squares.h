@@ -3,6 +3,7 @@
 
 #include "core/identification/io_data.h"
 #include "core/identification/polynomial_model.h"
+#include "core/model/diagnostic.h"
 
 #include <Eigen/Core>
 
@@ -81,7 +82,7 @@ struct SearchOutcome {
     double loss = 0.0;               ///< V = mean(e^2) at theta
     int iterations = 0;              ///< accepted steps
     std::vector<double> lossHistory; ///< V at the start and after every accepted step
-    std::string message;
+    Diagnostic message;              ///< how the search ended (coded)
 };
 
 /**
@@ -114,7 +115,7 @@ double exactFitLoss(const std::vector<double>& y);
  */
 void parameterCovariance(const Eigen::MatrixXd& jacobian, double sigma2,
                          Eigen::MatrixXd& covariance, std::vector<double>& standardDeviations,
-                         std::vector<std::string>& warnings);
+                         std::vector<Diagnostic>& warnings);
 
 /// @throws InvalidInput "data.u" / "data.y" (empty, different lengths, not finite),
 ///         "data.ts" unless tsSeconds > 0.

@@ -2,6 +2,7 @@
 #include "core/identification/lvm_reader.h"
 
 #include "core/identification/experiment_data.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -79,22 +80,24 @@ public:
     LvmTable run() {
         readFileHeader();
         if (decimalComma_ && sep_ == ',')
-            throw InvalidInput(fileName_, "a decimal comma cannot be read with Comma separators");
+            throw InvalidInput(fileName_, makeDiagnostic("ident_lvm_decimal_comma_separator"));
         while (!lines_.atEnd())
             step();
         if (out_.segmentCount == 0)
-            throw InvalidInput(fileName_, "holds no data segment");
+            throw InvalidInput(fileName_, makeDiagnostic("ident_lvm_no_segment"));
         if (wanted_ > out_.segmentCount)
-            throw InvalidInput(fileName_, "has " + std::to_string(out_.segmentCount) + " segment" +
-                                              (out_.segmentCount == 1 ? "" : "s") +
-                                              ", not a segment " + std::to_string(wanted_));
+            throw InvalidInput(
+                fileName_,
+                makeDiagnostic(out_.segmentCount == 1 ? "ident_lvm_one_segment_not"
+                                                      : "ident_lvm_segments_not",
+                               {std::to_string(out_.segmentCount), std::to_string(wanted_)}));
         if (out_.segmentCount > 1)
-            out_.table.warnings.push_back("the file has " + std::to_string(out_.segmentCount) +
-                                          " segments; segment " + std::to_string(wanted_) +
-                                          " was read");
+            out_.table.warnings.push_back(
+                makeDiagnostic("ident_lvm_segment_read",
+                               {std::to_string(out_.segmentCount), std::to_string(wanted_)}));
         if (allNames_.empty())
-            throw InvalidInput(fileName_,
-                               "segment " + std::to_string(wanted_) + " holds no channel");
+            throw InvalidInput(fileName_, makeDiagnostic("ident_lvm_segment_no_channel",
+                                                         {std::to_string(wanted_)}));
         if (!countOnly_)
             checkDeltaX();
         return std::move(out_);
@@ -115,8 +118,7 @@ private:
                 lines_.next();
                 return;
             }
-        throw InvalidInput(at(start),
-                           "the ***Start_Special*** block is not closed by ***End_Special***");
+        throw InvalidInput(at(start), makeDiagnostic("ident_lvm_special_not_closed"));
     }
 
     void readFileHeader() {
@@ -124,8 +126,7 @@ private:
             lines_.next();
         if (lines_.atEnd() || tagValue(lines_.line()).first != "LabVIEW Measurement")
             throw InvalidInput(lines_.atEnd() ? fileName_ : at(lines_.number()),
-                               "is not a LabVIEW Measurement file (the first line must be the tag "
-                               "'LabVIEW Measurement')");
+                               makeDiagnostic("ident_lvm_not_lvm"));
         const std::size_t start = lines_.number();
         lines_.next();
         bool separatorSeen = false, xColumnsSeen = false;
@@ -139,11 +140,9 @@ private:
             if (tag == kEndOfHeader) {
                 lines_.next();
                 if (!separatorSeen)
-                    out_.table.warnings.push_back(
-                        "the file header has no Separator tag: Tab assumed");
+                    out_.table.warnings.push_back(makeDiagnostic("ident_lvm_no_separator_tag"));
                 if (!xColumnsSeen)
-                    out_.table.warnings.push_back(
-                        "the file header has no X_Columns tag: One assumed");
+                    out_.table.warnings.push_back(makeDiagnostic("ident_lvm_no_x_columns_tag"));
                 return;
             }
             if (tag == "Separator") {
@@ -153,8 +152,9 @@ private:
                 else if (value == "Comma")
                     sep_ = ',';
                 else
-                    throw InvalidInput(at(lines_.number()),
-                                       "Separator '" + shownCell(value) + "' is not Tab or Comma");
+                    throw InvalidInput(
+                        at(lines_.number()),
+                        makeDiagnostic("ident_lvm_bad_separator", {shownCell(value)}));
             } else if (tag == "Decimal_Separator") {
                 // With comma-separated fields the value itself is the second field:
                 // "Decimal_Separator,," holds an empty value between two commas, so look at the raw
@@ -165,9 +165,9 @@ private:
                 else if (value == "," || raw == ",," || raw == "\t,")
                     decimalComma_ = true;
                 else
-                    throw InvalidInput(at(lines_.number()), "Decimal_Separator '" +
-                                                                shownCell(value) +
-                                                                "' is not '.' or ','");
+                    throw InvalidInput(
+                        at(lines_.number()),
+                        makeDiagnostic("ident_lvm_bad_decimal_separator", {shownCell(value)}));
             } else if (tag == "X_Columns") {
                 xColumnsSeen = true;
                 if (value == "No")
@@ -177,12 +177,13 @@ private:
                 else if (value == "Multi")
                     xColumns_ = XColumns::Multi;
                 else
-                    throw InvalidInput(at(lines_.number()), "X_Columns '" + shownCell(value) +
-                                                                "' is not No, One or Multi");
+                    throw InvalidInput(
+                        at(lines_.number()),
+                        makeDiagnostic("ident_lvm_bad_x_columns", {shownCell(value)}));
             }
             lines_.next();
         }
-        throw InvalidInput(at(start), "the file header is not closed by ***End_of_Header***");
+        throw InvalidInput(at(start), makeDiagnostic("ident_lvm_header_not_closed"));
     }
 
     /// One line (or a block) of the data part.
@@ -204,8 +205,8 @@ private:
             if (segmentHasRows_ || !inSegment_)
                 beginSegment();
             if (current() && namesSeen_)
-                throw InvalidInput(at(lines_.number()), "a second column-name row in segment " +
-                                                            std::to_string(wanted_));
+                throw InvalidInput(at(lines_.number()), makeDiagnostic("ident_lvm_second_name_row",
+                                                                       {std::to_string(wanted_)}));
             if (current())
                 setColumnsFromNames(fields_);
             namesSeen_ = true;
@@ -266,9 +267,8 @@ private:
                 }
             }
         }
-        throw InvalidInput(at(start), "the segment header that starts here with '" +
-                                          shownCell(startTag) +
-                                          "' is not closed by ***End_of_Header***");
+        throw InvalidInput(at(start), makeDiagnostic("ident_lvm_segment_header_not_closed",
+                                                     {shownCell(startTag)}));
     }
 
     void setSampleTime(const std::vector<double>& deltaX, std::size_t line) {
@@ -276,9 +276,8 @@ private:
             return;
         for (double d : deltaX)
             if (!(d > 0.0) || d != deltaX.front()) {
-                out_.table.warnings.push_back("the Delta_X of segment " + std::to_string(wanted_) +
-                                              " differ between channels or are not positive: no "
-                                              "sample time taken from the file");
+                out_.table.warnings.push_back(
+                    makeDiagnostic("ident_lvm_delta_x_differ", {std::to_string(wanted_)}));
                 return;
             }
         // A stated sample time nobody can use is refused here, where the line is known, rather
@@ -301,25 +300,24 @@ private:
             if (std::abs(step - dx) > kSampleTimeTolerance * dx)
                 throw InvalidInput(
                     at(deltaXLine_),
-                    "Delta_X " + formatNumber(dx, 10) + " contradicts the X_Value column (field " +
-                        std::to_string(x.field + 1) + "), whose mean step from line " +
-                        std::to_string(x.firstLine) + " to line " + std::to_string(x.lastLine) +
-                        " is " + formatNumber(step, 10) +
-                        ": one of the two is wrong (give the sample time or a time column, "
-                        "after correcting the file)");
+                    makeDiagnostic("ident_lvm_delta_x_contradicts",
+                                   {formatNumber(dx, 10), std::to_string(x.field + 1),
+                                    std::to_string(x.firstLine), std::to_string(x.lastLine),
+                                    formatNumber(step, 10)}));
         }
     }
 
     /// A name of the name row (or a default name): checked, and kept when asked for.
     void addName(std::string name, std::size_t field) {
         if (allNames_.size() >= kMaxExperimentColumns)
-            throw InvalidInput(at(lines_.number()), "has more than " +
-                                                        std::to_string(kMaxExperimentColumns) +
-                                                        " columns");
+            throw InvalidInput(
+                at(lines_.number()),
+                makeDiagnostic("ident_more_than_columns", {std::to_string(kMaxExperimentColumns)}));
         for (const std::string& other : allNames_)
             if (other == name)
-                throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(field),
-                                   "the channel name '" + shownCell(name) + "' is used twice");
+                throw InvalidInput(
+                    at(lines_.number()) + ", column " + std::to_string(field),
+                    makeDiagnostic("ident_lvm_channel_name_twice", {shownCell(name)}));
         allNames_.push_back(std::move(name));
         allFields_.push_back(field);
     }
@@ -356,14 +354,12 @@ private:
         }
         if (xColumns_ == XColumns::Multi) {
             if (n % 2 != 0)
-                throw InvalidInput(at(lines_.number()),
-                                   "X_Columns is Multi but the name row does not pair every "
-                                   "channel with an X_Value column");
+                throw InvalidInput(at(lines_.number()), makeDiagnostic("ident_lvm_multi_unpaired"));
             for (std::size_t k = 0; k < n; k += 2) {
                 const std::string name(trim(fields[k + 1]));
                 if (name.empty())
                     throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 2),
-                                       "the channel name is empty");
+                                       makeDiagnostic("ident_lvm_channel_name_empty"));
                 addName("X_Value (" + name + ")", k + 1);
                 addName(name, k + 2);
             }
@@ -376,7 +372,7 @@ private:
             const std::string name(trim(fields[k]));
             if (name.empty())
                 throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 1),
-                                   "the channel name is empty");
+                                   makeDiagnostic("ident_lvm_channel_name_empty"));
             addName(name, k + 1);
         }
         keepColumns();
@@ -405,8 +401,7 @@ private:
         commentField_ = xColumns_ == XColumns::Multi ? 2 * channels : channels + 1;
         keepColumns();
         out_.table.warnings.push_back(
-            "segment " + std::to_string(wanted_) +
-            " has no column-name row: the channels are named Untitled, Untitled 1, ...");
+            makeDiagnostic("ident_lvm_no_name_row", {std::to_string(wanted_)}));
     }
 
     void addRow(const std::vector<std::string_view>& fields) {
@@ -419,7 +414,7 @@ private:
         for (std::size_t k = lastField_; k < fields.size() && k < used; ++k)
             if (!blank(fields[k]))
                 throw InvalidInput(at(lines_.number()) + ", column " + std::to_string(k + 1),
-                                   "the row has more fields than the column-name row names");
+                                   makeDiagnostic("ident_lvm_row_more_fields"));
         ++rows_;
         if (countOnly_)
             return;
@@ -431,7 +426,7 @@ private:
             const std::size_t f = columnFields_[c];
             double value = std::numeric_limits<double>::quiet_NaN();
             if (f >= fields.size())
-                noteCellProblem(t, c, row, "", "is missing");
+                noteCellProblem(t, c, row, "", missing_);
             else if (const auto v = parseCellNumber(fields[f], decimalComma_, reason_))
                 value = *v;
             else
@@ -476,7 +471,8 @@ private:
     std::vector<XSteps> xSteps_;
     std::size_t deltaXLine_ = 0;
     std::vector<std::string_view> fields_; ///< the fields of the current line
-    std::string reason_; ///< parseCellNumber's, unused where only "is it a number" counts
+    Diagnostic reason_; ///< parseCellNumber's, unused where only "is it a number" counts
+    const Diagnostic missing_ = makeDiagnostic("is_missing");
     LvmTable out_;
 };
 
@@ -485,16 +481,16 @@ private:
 LvmTable readLvm(std::string_view text, const std::string& fileName,
                  const LvmReadOptions& options) {
     if (text.size() > kMaxExperimentBytes)
-        throw InvalidInput(fileName,
-                           "is larger than " + std::to_string(kMaxExperimentBytes) + " bytes");
+        throw InvalidInput(fileName, makeDiagnostic("ident_larger_than_bytes",
+                                                    {std::to_string(kMaxExperimentBytes)}));
     if (options.segment < 1)
-        throw InvalidInput("segment", "must be 1 or more (segments are counted from 1)");
+        throw InvalidInput("segment", makeDiagnostic("ident_lvm_segment_from_one"));
     try {
         LvmParser counter(text, fileName, options, true, 0);
         counter.run();
         return LvmParser(text, fileName, options, false, counter.rowsCounted()).run();
     } catch (const std::bad_alloc&) {
-        throwOutOfMemory(fileName, 0, "its table");
+        throwOutOfMemory(fileName, 0, makeDiagnostic("ident_oom_its_table"));
     }
 }
 

@@ -2,6 +2,7 @@
 #include "core/identification/mat_reader.h"
 
 #include "core/io/file_io.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <matio.h>
@@ -200,7 +201,7 @@ bool v4ChainFits(const std::string& path, std::uint64_t fileSize, bool swap) {
  * v4 matrix header whose type code, sizes and name length are valid and whose data fits in the
  * file. Returns "" when acceptable, else why not.
  */
-std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
+Diagnostic checkHeader(const std::string& path, std::uint64_t fileSize) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0)
         throw FileError(path, std::strerror(errno));
@@ -213,13 +214,12 @@ std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
         const bool little = h[126] == 'I'; // "IM" read as bytes: written little-endian
         const unsigned version = little ? (h[124] | (h[125] << 8)) : ((h[124] << 8) | h[125]);
         if (version != 0x0100 && version != 0x0200)
-            return "its MATLAB header states version 0x" + std::to_string(version) +
-                   ", not 5 (0x0100) or 7.3 (0x0200)";
+            return makeDiagnostic("ident_mat_header_version", {std::to_string(version)});
         if (version == 0x0100 && fileSize < 128 + 8)
-            return "it holds a MATLAB header and no variable";
+            return makeDiagnostic("ident_mat_header_no_variable");
         if (version == 0x0100 &&
             !v5ElementsFit(path, fileSize, little != (std::endian::native == std::endian::little)))
-            return "a variable's element does not fit in the file or has a malformed array header";
+            return makeDiagnostic("ident_mat_element_not_fit");
         return {};
     }
     if (got >= 20) {
@@ -231,7 +231,7 @@ std::string checkHeader(const std::string& path, std::uint64_t fileSize) {
             if (v4ChainFits(path, fileSize, swap))
                 return {};
     }
-    return "it starts with neither a MATLAB v5/v7.3 header nor a valid v4 matrix header";
+    return makeDiagnostic("ident_mat_no_header");
 }
 
 /// Opens the file after the size and header checks. @throws FileError / InvalidInput.
@@ -244,17 +244,17 @@ MatHandle openMat(const std::string& path) {
     if (static_cast<std::uint64_t>(st.st_size) > kMaxExperimentBytes)
         throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) +
                                   " bytes");
-    if (const std::string why = checkHeader(path, static_cast<std::uint64_t>(st.st_size));
-        !why.empty())
-        throw InvalidInput(path, "is not a MAT file: " + why);
+    if (const Diagnostic why = checkHeader(path, static_cast<std::uint64_t>(st.st_size));
+        !why.text.empty())
+        throw InvalidInput(path, makeDiagnostic("ident_mat_not_mat", {why}));
     installMatioLog();
     matioMessage.clear();
     mat_t* m = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
     if (!m)
-        throw InvalidInput(
-            path,
-            "libmatio cannot open it as a MAT file" +
-                (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+        throw InvalidInput(path, matioMessage.empty()
+                                     ? makeDiagnostic("ident_mat_cannot_open")
+                                     : makeDiagnostic("ident_mat_cannot_open_why",
+                                                      {shownCell(matioMessage, 200)}));
     return MatHandle(m);
 }
 
@@ -314,24 +314,24 @@ std::string dimensionText(const matvar_t& v) {
 }
 
 /// What a variable that is not a real numeric vector is, in words ("a cell array", ...).
-std::string notNumericWhy(int classType) {
+Diagnostic notNumericWhy(int classType) {
     switch (classType) {
     case MAT_C_CELL:
-        return "is a cell array";
+        return makeDiagnostic("ident_mat_cell");
     case MAT_C_STRUCT:
-        return "is a struct";
+        return makeDiagnostic("ident_mat_struct");
     case MAT_C_OBJECT:
-        return "is an object";
+        return makeDiagnostic("ident_mat_object");
     case MAT_C_CHAR:
-        return "is text (a char array)";
+        return makeDiagnostic("ident_mat_char");
     case MAT_C_SPARSE:
-        return "is a sparse matrix";
+        return makeDiagnostic("ident_mat_sparse");
     case MAT_C_FUNCTION:
-        return "is a function handle";
+        return makeDiagnostic("ident_mat_function");
     case MAT_C_OPAQUE:
-        return "is an opaque object";
+        return makeDiagnostic("ident_mat_opaque");
     default:
-        return "is of an unknown class";
+        return makeDiagnostic("ident_mat_unknown_class");
     }
 }
 
@@ -350,24 +350,25 @@ MatVariableInfo describe(const matvar_t& v) {
                             ? UINT64_MAX
                             : info.elements * v.dims[k];
     if (!numericClass(v.class_type))
-        info.whyNot = v.class_type == MAT_C_EMPTY ? "is empty" : notNumericWhy(v.class_type);
+        info.whyNot =
+            v.class_type == MAT_C_EMPTY ? makeDiagnostic("is_empty") : notNumericWhy(v.class_type);
     else if (v.isLogical)
-        info.whyNot = "is logical (true/false)";
+        info.whyNot = makeDiagnostic("ident_mat_logical");
     else if (v.isComplex)
-        info.whyNot = "is complex";
+        info.whyNot = makeDiagnostic("ident_mat_complex");
     else if (v.rank > 2 && v.dims)
         info.whyNot =
-            "is a " + dimensionText(v) + " array (" + std::to_string(v.rank) + " dimensions)";
+            makeDiagnostic("ident_mat_nd_array", {dimensionText(v), std::to_string(v.rank)});
     else if (v.rank != 2 || !v.dims)
-        info.whyNot = "has " + std::to_string(v.rank) + " dimensions";
+        info.whyNot = makeDiagnostic("ident_mat_dimensions", {std::to_string(v.rank)});
     else if (info.rows == 0 || info.columns == 0)
-        info.whyNot = "is empty";
+        info.whyNot = makeDiagnostic("is_empty");
     else if (info.rows != 1 && info.columns != 1)
-        info.whyNot = "is a " + std::to_string(info.rows) + " x " + std::to_string(info.columns) +
-                      " matrix, not a vector";
+        info.whyNot = makeDiagnostic("ident_mat_matrix",
+                                     {std::to_string(info.rows), std::to_string(info.columns)});
     else if (info.name.empty())
-        info.whyNot = "has no name";
-    info.usable = info.whyNot.empty();
+        info.whyNot = makeDiagnostic("ident_mat_no_name");
+    info.usable = info.whyNot.text.empty();
     return info;
 }
 
@@ -383,10 +384,11 @@ template <class T> void convert(const void* data, std::size_t n, std::vector<dou
 
 /// A variable whose data libmatio could not read, with libmatio's reason when it gave one.
 InvalidInput unreadable(const std::string& path, const std::string& name) {
-    return InvalidInput(
-        path,
-        "the data of variable '" + shownCell(name) + "' cannot be read" +
-            (matioMessage.empty() ? std::string() : " (" + shownCell(matioMessage, 200) + ")"));
+    return InvalidInput(path,
+                        matioMessage.empty()
+                            ? makeDiagnostic("ident_mat_unreadable", {shownCell(name)})
+                            : makeDiagnostic("ident_mat_unreadable_why",
+                                             {shownCell(name), shownCell(matioMessage, 200)}));
 }
 
 /// The elements of a read variable as doubles. @throws InvalidInput when the data is absent or
@@ -430,7 +432,7 @@ std::vector<double> elements(const matvar_t& v, const std::string& path, const s
         convert<std::uint64_t>(v.data, n, out);
         break;
     default:
-        throw InvalidInput(path, "variable '" + shownCell(name) + "' is not numeric");
+        throw InvalidInput(path, makeDiagnostic("ident_mat_not_numeric", {shownCell(name)}));
     }
     return out;
 }
@@ -477,18 +479,20 @@ MatFileInfo listMatVariables(const std::string& path) {
 namespace {
 
 /// "the real numeric vectors are: t, u, y" (cut near 2000 characters), for a name not usable.
-std::string usableList(const std::vector<MatVariableInfo>& vars) {
+Diagnostic usableList(const std::vector<MatVariableInfo>& vars) {
     std::string list;
     for (const MatVariableInfo& v : vars)
         if (v.usable && list.size() < 2000)
             list += (list.empty() ? "" : ", ") + shownCell(v.name);
-    return "the real numeric vectors are: " + (list.empty() ? std::string("(none)") : list);
+    return list.empty() ? makeDiagnostic("ident_mat_usable_none")
+                        : makeDiagnostic("ident_mat_usable", {list});
 }
 
-std::string elementsText(const MatVariableInfo& v) {
+Diagnostic elementsText(const MatVariableInfo& v) {
     return v.rows * v.columns == v.elements
-               ? std::to_string(v.rows) + " x " + std::to_string(v.columns) + " elements"
-               : std::to_string(v.elements) + " elements";
+               ? makeDiagnostic("ident_mat_elements_matrix",
+                                {std::to_string(v.rows), std::to_string(v.columns)})
+               : makeDiagnostic("ident_mat_elements", {std::to_string(v.elements)});
 }
 
 /// The listed variables @p names refers to, every check made before any data is read.
@@ -496,35 +500,32 @@ std::vector<const MatVariableInfo*> chosenVariables(const std::string& path,
                                                     const std::vector<MatVariableInfo>& vars,
                                                     const std::vector<std::string>& names) {
     if (names.size() > kMaxExperimentColumns)
-        throw InvalidInput(path, std::to_string(names.size()) +
-                                     " variables asked for, more than the " +
-                                     std::to_string(kMaxExperimentColumns) + " a table may hold");
+        throw InvalidInput(path, makeDiagnostic("ident_mat_too_many_asked",
+                                                {std::to_string(names.size()),
+                                                 std::to_string(kMaxExperimentColumns)}));
     std::vector<const MatVariableInfo*> chosen;
     std::uint64_t total = 0;
     for (const std::string& name : names) {
         const auto found = std::find_if(vars.begin(), vars.end(),
                                         [&](const MatVariableInfo& v) { return v.name == name; });
         if (found == vars.end())
-            throw InvalidInput(path,
-                               "has no variable '" + shownCell(name) + "'; " + usableList(vars));
+            throw InvalidInput(
+                path, makeDiagnostic("ident_mat_no_variable", {shownCell(name), usableList(vars)}));
         const MatVariableInfo& v = *found;
         if (!v.usable)
-            throw InvalidInput(path, "variable '" + shownCell(name) + "' " + v.whyNot +
-                                         "; a vector of real numbers is needed (" +
-                                         usableList(vars) + ")");
+            throw InvalidInput(path, makeDiagnostic("ident_mat_not_vector",
+                                                    {shownCell(name), v.whyNot, usableList(vars)}));
         if (std::find(chosen.begin(), chosen.end(), &v) != chosen.end())
-            throw InvalidInput(path, "variable '" + shownCell(name) + "' is asked for twice");
+            throw InvalidInput(path, makeDiagnostic("ident_mat_asked_twice", {shownCell(name)}));
         if (v.elements > kMaxMatVariableElements)
-            throw InvalidInput(path, "variable '" + shownCell(name) + "' claims " +
-                                         elementsText(v) + ", more than the " +
-                                         std::to_string(kMaxMatVariableElements) +
-                                         " one variable may hold");
+            throw InvalidInput(path, makeDiagnostic("ident_mat_variable_claims",
+                                                    {shownCell(name), elementsText(v),
+                                                     std::to_string(kMaxMatVariableElements)}));
         total += v.elements;
         if (total > kMaxMatTableElements)
-            throw InvalidInput(path,
-                               "the variables asked for, up to '" + shownCell(name) + "', hold " +
-                                   std::to_string(total) + " elements, more than the " +
-                                   std::to_string(kMaxMatTableElements) + " one read may hold");
+            throw InvalidInput(path, makeDiagnostic("ident_mat_total_claims",
+                                                    {shownCell(name), std::to_string(total),
+                                                     std::to_string(kMaxMatTableElements)}));
         chosen.push_back(&v);
     }
     return chosen;
@@ -532,34 +533,35 @@ std::vector<const MatVariableInfo*> chosenVariables(const std::string& path,
 
 /// Every usable variable within the bounds (see readMat), the others named in @p warnings.
 std::vector<const MatVariableInfo*> everyUsableVariable(const std::vector<MatVariableInfo>& vars,
-                                                        std::vector<std::string>& warnings) {
+                                                        std::vector<Diagnostic>& warnings) {
     std::vector<const MatVariableInfo*> chosen;
     std::uint64_t total = 0;
     std::size_t leftOut = 0;
-    const auto leave = [&](const MatVariableInfo& v, const std::string& why) {
+    const auto leave = [&](const MatVariableInfo& v, const Diagnostic& why) {
         if (++leftOut <= 10)
-            warnings.push_back("variable '" + shownCell(v.name) + "' (" + elementsText(v) +
-                               ") is not read: " + why);
+            warnings.push_back(
+                makeDiagnostic("ident_mat_not_read", {shownCell(v.name), elementsText(v), why}));
     };
     for (const MatVariableInfo& v : vars) {
         if (!v.usable)
             continue;
         if (v.elements > kMaxMatVariableElements)
-            leave(v, "more than the " + std::to_string(kMaxMatVariableElements) +
-                         " elements one variable may hold");
+            leave(v, makeDiagnostic("ident_mat_why_variable_limit",
+                                    {std::to_string(kMaxMatVariableElements)}));
         else if (chosen.size() == kMaxExperimentColumns)
-            leave(v,
-                  "a table holds at most " + std::to_string(kMaxExperimentColumns) + " variables");
+            leave(v, makeDiagnostic("ident_mat_why_column_limit",
+                                    {std::to_string(kMaxExperimentColumns)}));
         else if (total + v.elements > kMaxMatTableElements)
-            leave(v, "the variables before it already hold " + std::to_string(total) + " of the " +
-                         std::to_string(kMaxMatTableElements) + " elements one read may hold");
+            leave(v, makeDiagnostic("ident_mat_why_total_limit",
+                                    {std::to_string(total), std::to_string(kMaxMatTableElements)}));
         else {
             total += v.elements;
             chosen.push_back(&v);
         }
     }
     if (leftOut > 10)
-        warnings.push_back(std::to_string(leftOut - 10) + " more variables are not read");
+        warnings.push_back(
+            makeDiagnostic("ident_mat_more_not_read", {std::to_string(leftOut - 10)}));
     return chosen;
 }
 
@@ -608,7 +610,7 @@ ExperimentTable readMat(const std::string& path, const std::vector<std::string>&
         for (std::size_t r = 0; r < t.columns[c].size(); ++r)
             if (!std::isfinite(t.columns[c][r])) {
                 noteCellProblem(t, c, r, std::isnan(t.columns[c][r]) ? "NaN" : "Inf",
-                                "is NaN or infinite");
+                                makeDiagnostic("not_finite_value"));
                 break;
             }
         longest = std::max(longest, t.columns[c].size());

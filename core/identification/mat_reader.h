@@ -17,7 +17,7 @@ struct MatVariableInfo {
     std::string className;             ///< "double", "single", "int16", ..., "char", "struct", ...
     std::uint64_t elements = 0;        ///< the product of all its dimensions (what it claims)
     bool usable = false; ///< a real numeric vector (1 x n or n x 1, n >= 1), not logical
-    std::string whyNot;  ///< when not usable: "is complex", "is a cell array", ...
+    Diagnostic whyNot;   ///< when not usable: "is complex", "is a cell array", ... (coded)
 };
 
 /// The most elements one MAT variable may hold to be read: 2^24 (16 777 216, 128 MiB as

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/polynomial_model.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -12,16 +13,16 @@ namespace {
 
 void requireFiniteCoefficients(const std::vector<double>& p, const std::string& field) {
     if (p.empty())
-        throw InvalidInput(field, "is empty");
+        throw InvalidInput(field, makeDiagnostic("is_empty"));
     for (double v : p)
         if (!std::isfinite(v))
-            throw InvalidInput(field, "has a coefficient that is not finite");
+            throw InvalidInput(field, makeDiagnostic("ident_coefficient_not_finite"));
 }
 
 void requireMonic(const std::vector<double>& p, const std::string& field) {
     requireFiniteCoefficients(p, field);
     if (p[0] != 1.0)
-        throw InvalidInput(field, "must be monic (first coefficient 1, ascending powers of z^-1)");
+        throw InvalidInput(field, makeDiagnostic("ident_not_monic"));
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 
 #include "core/identification/arx.h"
 #include "core/identification/least_squares.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -15,7 +16,7 @@ namespace {
 
 void requireOrder(int value, int minimum, const char* field) {
     if (value < minimum || value > 100)
-        throw InvalidInput(field, "must be between " + std::to_string(minimum) + " and 100");
+        throw InvalidInput(field, makeDiagnostic("ident_between_n_100", {std::to_string(minimum)}));
 }
 
 /// The BJ structure; OE is nc = nd = 0.
@@ -139,7 +140,7 @@ double outputErrorLoss(const std::vector<double>& b, const std::vector<double>& 
  * regressor is rank-deficient.
  */
 bool initialPlant(const Structure& s, const IoData& data, PolynomialModel& model,
-                  std::string& source, std::string& message, std::vector<std::string>& warnings) {
+                  std::string& source, Diagnostic& message, std::vector<Diagnostic>& warnings) {
     const ArxResult arx = estimateArx(
         data, ArxOrders{static_cast<int>(s.nf), static_cast<int>(s.nb), static_cast<int>(s.nk)});
     if (arx.status != EstimationStatus::Converged) {
@@ -148,7 +149,7 @@ bool initialPlant(const Structure& s, const IoData& data, PolynomialModel& model
     }
     std::vector<double> a = arx.model.a;
     if (reflectUnstableRoots(a))
-        warnings.push_back("the initial ARX estimate had an unstable A; its roots were reflected");
+        warnings.push_back(makeDiagnostic("ident_pem_initial_reflected"));
     const std::size_t n = data.size();
     std::vector<double> x(n);
     filterMonic(arx.model.b, a, data.u.data(), x.data(), n);
@@ -222,26 +223,27 @@ void initialNoiseModel(const Structure& s, const IoData& data, PolynomialModel& 
 
 void requireInitialLengths(const Structure& s, const PolynomialModel& m) {
     if (m.b.size() != s.nk + s.nb)
-        throw InvalidInput("initial", "B must have nk + nb = " + std::to_string(s.nk + s.nb) +
-                                          " coefficients");
+        throw InvalidInput("initial",
+                           makeDiagnostic("ident_pem_initial_b", {std::to_string(s.nk + s.nb)}));
     if (m.f.size() != s.nf + 1 || m.f[0] != 1.0)
-        throw InvalidInput("initial", "F must be monic with nf + 1 coefficients");
+        throw InvalidInput("initial", makeDiagnostic("ident_pem_initial_f"));
     if (s.boxJenkins &&
         (m.c.size() != s.nc + 1 || m.d.size() != s.nd + 1 || m.c[0] != 1.0 || m.d[0] != 1.0))
-        throw InvalidInput("initial", "C and D must be monic with nc + 1 and nd + 1 coefficients");
+        throw InvalidInput("initial", makeDiagnostic("ident_pem_initial_c_d"));
 }
 
 PemResult estimate(const Structure& s, const std::string& name, const IoData& data,
                    const PemOptions& options) {
     validateIoData(data);
     if (options.search.maxIterations < 1)
-        throw InvalidInput("max_iterations", "must be at least 1");
+        throw InvalidInput("max_iterations", makeDiagnostic("at_least", {"1"}));
     const std::size_t n = data.size();
     const std::size_t d = s.parameters();
     const std::size_t n0 = std::max(s.nf, s.nk + s.nb - 1);
     if (n < n0 + d + 1)
-        throw InvalidInput("data", std::to_string(n) + " samples are too few for " + name +
-                                       ": at least " + std::to_string(n0 + d + 1) + " needed");
+        throw InvalidInput("data",
+                           makeDiagnostic("ident_too_few_samples_for",
+                                          {std::to_string(n), name, std::to_string(n0 + d + 1)}));
     PemResult out;
     out.structure = name;
     out.samples = n;
@@ -301,8 +303,7 @@ PemResult estimate(const Structure& s, const std::string& name, const IoData& da
     parameterCovariance(r.jacobian, out.noiseVariance, out.covariance, out.standardDeviations,
                         out.warnings);
     if (maxRootMagnitude(out.model.f) >= 1.0)
-        out.warnings.push_back("F has a root on the unit circle: the model is not asymptotically "
-                               "stable (an integrator in the plant?)");
+        out.warnings.push_back(makeDiagnostic("ident_pem_f_unit_circle"));
     return out;
 }
 

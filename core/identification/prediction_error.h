@@ -65,7 +65,7 @@ struct PemOptions {
  */
 struct PemResult {
     EstimationStatus status = EstimationStatus::Failed;
-    std::string message;   ///< how the search ended, or why it failed
+    Diagnostic message;    ///< how the search ended, or why it failed (coded)
     std::string structure; ///< "OE(3,2,1)" or "BJ(3,1,1,2,1)"
     PolynomialModel model;
     PolynomialModel initialModel; ///< where the search started
@@ -83,7 +83,7 @@ struct PemResult {
     std::vector<double> lossHistory; ///< V at the start and after every accepted step
     /// One-step prediction errors e(t) = D/C (y - B/F u) at the estimate, from rest, length N.
     std::vector<double> residuals;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings; ///< coded
 };
 
 /**

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/preprocessing.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -15,8 +16,9 @@ namespace {
 
 void requireRecord(const IoData& d) {
     if (d.u.size() != d.y.size())
-        throw InvalidInput("data", "u has " + std::to_string(d.u.size()) + " samples but y has " +
-                                       std::to_string(d.y.size()));
+        throw InvalidInput(
+            "data", makeDiagnostic("ident_u_y_lengths",
+                                   {std::to_string(d.u.size()), std::to_string(d.y.size())}));
 }
 
 /// Offset and slope of the least-squares line through x_k over k = 0..n-1.
@@ -74,14 +76,14 @@ IoData selectTimeRange(const IoData& data, double t0, double t1) {
     requireFinite(t1, "t1");
     requirePositive(data.tsSeconds, "data");
     if (t1 < t0)
-        throw InvalidInput("t1", "the range ends before it starts (t1 < t0)");
+        throw InvalidInput("t1", makeDiagnostic("ident_range_reversed"));
     const double ts = data.tsSeconds;
     const double first = std::ceil((t0 - data.startSeconds) / ts - 1e-9);
     const double last = std::floor((t1 - data.startSeconds) / ts + 1e-9);
     const double n = double(data.size());
     const double from = std::max(first, 0.0), to = std::min(last, n - 1.0);
     if (!(to >= from))
-        throw InvalidInput("range", "no sample lies within [t0, t1]");
+        throw InvalidInput("range", makeDiagnostic("ident_range_no_sample"));
     IoData out = data;
     const auto a = static_cast<std::ptrdiff_t>(from), b = static_cast<std::ptrdiff_t>(to) + 1;
     out.u.assign(data.u.begin() + a, data.u.begin() + b);
@@ -93,7 +95,7 @@ IoData selectTimeRange(const IoData& data, double t0, double t1) {
 Detrended removeMeans(const IoData& data) {
     requireRecord(data);
     if (data.size() == 0)
-        throw InvalidInput("data", "holds no sample");
+        throw InvalidInput("data", makeDiagnostic("ident_holds_no_sample"));
     Detrended r;
     r.data = data;
     double su = 0.0, sy = 0.0;
@@ -111,7 +113,7 @@ Detrended removeMeans(const IoData& data) {
 Detrended removeTrends(const IoData& data) {
     requireRecord(data);
     if (data.size() < 2)
-        throw InvalidInput("data", "a trend needs at least 2 samples");
+        throw InvalidInput("data", makeDiagnostic("ident_trend_two_samples"));
     Detrended r;
     r.data = data;
     std::tie(r.uOffset, r.uSlopePerSample) = line(data.u);
@@ -123,7 +125,7 @@ Detrended removeTrends(const IoData& data) {
 
 std::vector<BiquadSection> decimationFilter(int factor) {
     if (factor < 2 || factor > 1000)
-        throw InvalidInput("factor", "the anti-alias filter is for factors 2 to 1000");
+        throw InvalidInput("factor", makeDiagnostic("ident_anti_alias_factors"));
     constexpr int n = kDecimationFilterOrder;
     const double eps = std::sqrt(std::pow(10.0, kDecimationRippleDb / 10.0) - 1.0);
     const double mu = std::asinh(1.0 / eps) / n;
@@ -152,8 +154,8 @@ std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections,
                                     const std::vector<double>& x) {
     const std::size_t n = x.size();
     if (n <= kPad)
-        throw InvalidInput("data", "zero-phase filtering needs more than " + std::to_string(kPad) +
-                                       " samples");
+        throw InvalidInput("data",
+                           makeDiagnostic("ident_zero_phase_samples", {std::to_string(kPad)}));
     std::vector<double> padded;
     padded.reserve(n + 2 * kPad);
     for (std::size_t k = kPad; k >= 1; --k)
@@ -172,14 +174,14 @@ std::vector<double> zeroPhaseFilter(const std::vector<BiquadSection>& sections,
 IoData decimate(const IoData& data, int factor) {
     requireRecord(data);
     if (factor < 1 || factor > 1000)
-        throw InvalidInput("factor", "must be a whole number from 1 to 1000");
+        throw InvalidInput("factor", makeDiagnostic("ident_factor_whole"));
     requirePositive(data.tsSeconds, "data");
     if (factor == 1)
         return data;
     if (data.size() <= kPad)
-        throw InvalidInput("data", "has " + std::to_string(data.size()) +
-                                       " samples; decimation needs more than " +
-                                       std::to_string(kPad));
+        throw InvalidInput("data",
+                           makeDiagnostic("ident_decimation_samples",
+                                          {std::to_string(data.size()), std::to_string(kPad)}));
     const std::vector<BiquadSection> sections = decimationFilter(factor);
     const std::vector<double> u = zeroPhaseFilter(sections, data.u);
     const std::vector<double> y = zeroPhaseFilter(sections, data.y);

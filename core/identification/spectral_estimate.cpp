@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/identification/spectral_estimate.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -50,35 +51,36 @@ std::vector<double> spectralWindow(const WelchOptions& o, std::size_t m) {
 
 void requireSpectralSegmentOptions(const WelchOptions& o) {
     if (o.segmentLength != 0 && o.segmentLength < 4)
-        throw InvalidInput("segment", "must be at least 4 samples (got " +
-                                          std::to_string(o.segmentLength) + ")");
+        throw InvalidInput("segment", makeDiagnostic("ident_segment_at_least_4",
+                                                     {std::to_string(o.segmentLength)}));
     if (o.window == SpectralWindow::Kaiser &&
         !(std::isfinite(o.kaiserBeta) && o.kaiserBeta >= 0.0 && o.kaiserBeta <= 50.0))
-        throw InvalidInput("kaiser_beta", "must be in [0, 50]");
+        throw InvalidInput("kaiser_beta", makeDiagnostic("ident_kaiser_beta_range"));
 }
 
 void requireSpectralSignal(const std::vector<double>& x, const std::string& field,
                            const WelchSegments& s) {
     for (std::size_t i = 0; i < x.size(); ++i)
         if (!std::isfinite(x[i]))
-            throw InvalidInput(field, "sample " + std::to_string(i + 1) + " is not finite");
+            throw InvalidInput(field,
+                               makeDiagnostic("ident_sample_not_finite", {std::to_string(i + 1)}));
     if (s.count < 2)
-        throw InvalidInput(field, "has " + std::to_string(x.size()) +
-                                      " samples: fewer than two half-overlapping segments of " +
-                                      std::to_string(s.segmentLength) + " (at least " +
-                                      std::to_string(s.segmentLength + s.step) + ")");
+        throw InvalidInput(
+            field, makeDiagnostic("ident_welch_too_few",
+                                  {std::to_string(x.size()), std::to_string(s.segmentLength),
+                                   std::to_string(s.segmentLength + s.step)}));
 }
 
 /// Samples near the top of the double range (1e160 and up) square past it: refused rather than
 /// returned as an infinite spectrum.
 void requireSpectralFinite(double value, const std::string& field) {
     if (!std::isfinite(value))
-        throw InvalidInput(field, "is too large: its power spectral density overflows a double");
+        throw InvalidInput(field, makeDiagnostic("ident_psd_overflows"));
 }
 
 void requireSpectralTs(double ts) {
     if (!(std::isfinite(ts) && ts > 0.0))
-        throw InvalidInput("ts", "must be positive and finite");
+        throw InvalidInput("ts", makeDiagnostic("ident_positive_finite"));
 }
 
 /// The windowed, mean-removed FFT (bins 0..M/2) of every segment of one signal, in turn.
@@ -193,10 +195,11 @@ FrequencyResponseEstimate estimateFrequencyResponse(const std::vector<double>& u
                                                     double bandSigmas) {
     requireSpectralTs(tsSeconds);
     if (!(std::isfinite(bandSigmas) && bandSigmas > 0.0))
-        throw InvalidInput("band_sigmas", "must be positive and finite");
+        throw InvalidInput("band_sigmas", makeDiagnostic("ident_positive_finite"));
     if (y.size() != u.size())
-        throw InvalidInput("y", "has " + std::to_string(y.size()) + " samples, u has " +
-                                    std::to_string(u.size()) + ": they must be equally long");
+        throw InvalidInput("y",
+                           makeDiagnostic("ident_y_u_equally_long",
+                                          {std::to_string(y.size()), std::to_string(u.size())}));
     const WelchSegments s = welchSegments(u.size(), options);
     requireSpectralSignal(u, "u", s);
     requireSpectralSignal(y, "y", s);
@@ -268,23 +271,24 @@ FrequencyResponseEstimate estimateFrequencyResponse(const std::vector<double>& u
 ResonancePick pickResonance(const std::vector<double>& f, const std::vector<double>& v,
                             ResonanceQuantity quantity, const ResonanceBand& band) {
     if (f.size() != v.size())
-        throw InvalidInput("frequency", "has " + std::to_string(f.size()) + " values, values " +
-                                            std::to_string(v.size()));
+        throw InvalidInput("frequency",
+                           makeDiagnostic("ident_frequency_values_lengths",
+                                          {std::to_string(f.size()), std::to_string(v.size())}));
     if (f.size() < 3)
-        throw InvalidInput("frequency", "needs at least 3 bins");
+        throw InvalidInput("frequency", makeDiagnostic("ident_three_bins"));
     for (std::size_t k = 0; k < f.size(); ++k) {
         if (!std::isfinite(f[k]) || (k > 0 && !(f[k] > f[k - 1])))
             throw InvalidInput("frequency",
-                               "must be finite and increasing (bin " + std::to_string(k + 1) + ")");
+                               makeDiagnostic("ident_bin_increasing", {std::to_string(k + 1)}));
         if (!std::isfinite(v[k]) || v[k] < 0.0)
-            throw InvalidInput("values", "must be finite and not negative (bin " +
-                                             std::to_string(k + 1) + ")");
+            throw InvalidInput("values",
+                               makeDiagnostic("ident_bin_not_negative", {std::to_string(k + 1)}));
     }
     const double lowHz = band.lowHz.value_or(f[2]);
     const double highHz = band.highHz.value_or(f.back());
     const std::string bandText = "[" + formatNumber(lowHz) + ", " + formatNumber(highHz) + "] Hz";
     if (!(std::isfinite(lowHz) && std::isfinite(highHz) && lowHz < highHz))
-        throw InvalidInput("band", bandText + " is empty or reversed");
+        throw InvalidInput("band", makeDiagnostic("ident_band_empty", {bandText}));
     std::size_t first = f.size(), last = 0;
     for (std::size_t k = 0; k < f.size(); ++k)
         if (f[k] >= lowHz && f[k] <= highHz) {
@@ -292,9 +296,9 @@ ResonancePick pickResonance(const std::vector<double>& f, const std::vector<doub
             last = k;
         }
     if (first >= f.size() || last < first + 2)
-        throw InvalidInput("band",
-                           bandText + " holds fewer than 3 frequency bins of the estimate (" +
-                               formatNumber(f.front()) + " to " + formatNumber(f.back()) + " Hz)");
+        throw InvalidInput(
+            "band", makeDiagnostic("ident_band_few_bins",
+                                   {bandText, formatNumber(f.front()), formatNumber(f.back())}));
     std::size_t p = first;
     for (std::size_t k = first; k <= last; ++k)
         if (v[k] > v[p])
@@ -330,11 +334,9 @@ ResonancePick pickResonance(const std::vector<double>& f, const std::vector<doub
             break;
         }
     if (!r.lowHalfPowerHz)
-        r.note = "no damping: the half-power crossing below the peak at " +
-                 formatNumber(r.frequencyHz) + " Hz lies outside the band " + bandText;
+        r.note = makeDiagnostic("ident_no_damping_below", {formatNumber(r.frequencyHz), bandText});
     else if (!r.highHalfPowerHz)
-        r.note = "no damping: the half-power crossing above the peak at " +
-                 formatNumber(r.frequencyHz) + " Hz lies outside the band " + bandText;
+        r.note = makeDiagnostic("ident_no_damping_above", {formatNumber(r.frequencyHz), bandText});
     else
         r.dampingRatio = (*r.highHalfPowerHz - *r.lowHalfPowerHz) / (2.0 * r.frequencyHz);
     return r;
@@ -342,12 +344,12 @@ ResonancePick pickResonance(const std::vector<double>& f, const std::vector<doub
 
 void requireBelowNyquist(double frequencyHz, double tsSeconds, const std::string& field) {
     if (!(std::isfinite(frequencyHz) && frequencyHz > 0.0))
-        throw InvalidInput(field, "must be a positive frequency in Hz");
+        throw InvalidInput(field, makeDiagnostic("ident_positive_frequency_hz"));
     const double nyquist = 0.5 / tsSeconds;
     if (frequencyHz > nyquist)
-        throw InvalidInput(field, formatNumber(frequencyHz) +
-                                      " Hz: frequency above the log's Nyquist frequency of " +
-                                      formatNumber(nyquist) + " Hz");
+        throw InvalidInput(field,
+                           makeDiagnostic("ident_above_log_nyquist",
+                                          {formatNumber(frequencyHz), formatNumber(nyquist)}));
 }
 
 } // namespace xyt

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -150,7 +152,7 @@ struct ResonancePick {
     std::optional<double> lowHalfPowerHz;
     std::optional<double> highHalfPowerHz;
     std::optional<double> dampingRatio;
-    std::string note; ///< why dampingRatio is unset; empty otherwise
+    Diagnostic note; ///< why dampingRatio is unset; empty otherwise (coded)
 };
 
 /// @throws InvalidInput naming "frequency" (sizes differ, fewer than 3 bins, not increasing,

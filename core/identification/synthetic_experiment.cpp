@@ -3,6 +3,7 @@
 
 #include "core/identification/continuous_fit.h"
 #include "core/identification/validation.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/normal_draws.h"
 #include "core/model/number_format.h"
@@ -17,7 +18,7 @@ namespace {
 /// Adds N(0, sigma^2) noise to y, sample by sample (Box-Muller, the cosine branch only).
 void addNoise(std::vector<double>& y, double sigma, std::uint64_t seed) {
     if (!(sigma >= 0.0) || !std::isfinite(sigma))
-        throw InvalidInput("noise_std", "must be a finite number >= 0 (mm)");
+        throw InvalidInput("noise_std", makeDiagnostic("ident_noise_std"));
     if (sigma == 0.0)
         return;
     std::mt19937_64 rng(seed);
@@ -49,9 +50,9 @@ ExcitationSignal simulateExperiment(ExcitationSignal command, const PolynomialMo
                                     double noiseStdMm, std::uint64_t seed) {
     model.validate();
     if (!(std::abs(model.tsSeconds - command.tsSeconds) <= 1e-9 * command.tsSeconds))
-        throw InvalidInput("ts", "the command's sample time " + formatNumber(command.tsSeconds) +
-                                     " s is not the model's " + formatNumber(model.tsSeconds) +
-                                     " s");
+        throw InvalidInput(
+            "ts", makeDiagnostic("ident_synthetic_sample_time",
+                                 {formatNumber(command.tsSeconds), formatNumber(model.tsSeconds)}));
     command.y = simulateModel(model, command.u);
     addNoise(command.y, noiseStdMm, seed);
     std::string a, b;

@@ -3,6 +3,7 @@
 
 #include "core/identification/continuous_fit.h"
 #include "core/identification/least_squares.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
@@ -56,10 +57,8 @@ void flagRoots(ModelRoots& out) {
     for (const auto& z : out.zeros)
         if (std::abs(z) >= 1.0) {
             out.nonMinimumPhase = true;
-            out.notes.push_back("zero outside the unit circle at z = " + formatRoot(z) +
-                                " (|z| = " + formatNumber(std::abs(z)) +
-                                "): non-minimum-phase, its inverse is unstable; this is what "
-                                "makes ZPETC necessary");
+            out.notes.push_back(
+                makeDiagnostic("ident_nmp_zero", {formatRoot(z), formatNumber(std::abs(z))}));
         }
 }
 
@@ -86,10 +85,11 @@ CorrelationTest correlationTest(std::vector<int> lags, std::vector<double> value
 double fitPercent(const std::vector<double>& y, const std::vector<double>& yhat,
                   std::size_t firstSample) {
     if (yhat.size() != y.size())
-        throw InvalidInput("yhat", "has " + std::to_string(yhat.size()) + " samples, y has " +
-                                       std::to_string(y.size()));
+        throw InvalidInput("yhat",
+                           makeDiagnostic("ident_yhat_y_lengths",
+                                          {std::to_string(yhat.size()), std::to_string(y.size())}));
     if (firstSample >= y.size())
-        throw InvalidInput("first_sample", "is beyond the last sample");
+        throw InvalidInput("first_sample", makeDiagnostic("ident_beyond_last_sample"));
     double mean = 0.0;
     for (std::size_t k = firstSample; k < y.size(); ++k)
         mean += y[k];
@@ -113,7 +113,7 @@ std::vector<double> predictModel(const PolynomialModel& model, const IoData& dat
     model.validate();
     validateIoData(data);
     if (horizon < 1)
-        throw InvalidInput("horizon", "must be at least 1");
+        throw InvalidInput("horizon", makeDiagnostic("at_least", {"1"}));
     const std::size_t n = data.size();
     if (static_cast<std::size_t>(horizon) >= n)
         return simulateModel(model, data.u);
@@ -177,10 +177,10 @@ FitReport fitReport(const PolynomialModel& model, const IoData& estimation,
 
 InformationCriteria informationCriteria(double loss, std::size_t samples, std::size_t parameters) {
     if (!(loss > 0.0) || !std::isfinite(loss))
-        throw InvalidInput("loss", "must be finite and > 0");
+        throw InvalidInput("loss", makeDiagnostic("ident_finite_gt_zero"));
     if (samples <= parameters)
-        throw InvalidInput("samples", "must exceed the number of parameters (" +
-                                          std::to_string(parameters) + ")");
+        throw InvalidInput("samples",
+                           makeDiagnostic("ident_exceed_parameters", {std::to_string(parameters)}));
     InformationCriteria c;
     c.loss = loss;
     c.samples = samples;
@@ -201,7 +201,7 @@ ArxOrderTable arxOrderTable(const IoData& estimation, const IoData* validation, 
     for (const auto& [range, field] :
          {std::pair{na, "na"}, std::pair{nb, "nb"}, std::pair{nk, "nk"}})
         if (range.min > range.max)
-            throw InvalidInput(field, "range has min > max");
+            throw InvalidInput(field, makeDiagnostic("ident_range_min_max"));
     ArxOrders{na.min, nb.min, nk.min}.validate();
     ArxOrders{na.max, nb.max, nk.max}.validate();
     ArxOrderTable table;
@@ -264,15 +264,15 @@ ResidualAnalysis residualAnalysis(const std::vector<double>& residuals,
                                   const std::vector<double>& input, int maxLag, double confidenceZ,
                                   std::size_t firstSample) {
     if (maxLag < 1)
-        throw InvalidInput("max_lag", "must be at least 1");
+        throw InvalidInput("max_lag", makeDiagnostic("at_least", {"1"}));
     if (!(confidenceZ > 0.0) || !std::isfinite(confidenceZ))
-        throw InvalidInput("confidence_z", "must be finite and > 0");
+        throw InvalidInput("confidence_z", makeDiagnostic("ident_finite_gt_zero"));
     if (input.size() != residuals.size())
-        throw InvalidInput("input", "has " + std::to_string(input.size()) +
-                                        " samples, the residuals " +
-                                        std::to_string(residuals.size()));
+        throw InvalidInput("input", makeDiagnostic("ident_input_residuals_lengths",
+                                                   {std::to_string(input.size()),
+                                                    std::to_string(residuals.size())}));
     if (residuals.size() <= firstSample + static_cast<std::size_t>(maxLag))
-        throw InvalidInput("residuals", "need more than first_sample + max_lag samples");
+        throw InvalidInput("residuals", makeDiagnostic("ident_residuals_need_more"));
     const std::size_t n = residuals.size() - firstSample;
     std::vector<double> e(residuals.begin() + static_cast<std::ptrdiff_t>(firstSample),
                           residuals.end());
@@ -281,7 +281,7 @@ ResidualAnalysis residualAnalysis(const std::vector<double>& residuals,
         for (double x : *v)
             if (!std::isfinite(x))
                 throw InvalidInput(v == &e ? "residuals" : "input",
-                                   "has a value that is not finite");
+                                   makeDiagnostic("ident_has_value_not_finite"));
     }
     const auto demean = [](std::vector<double>& v) {
         double m = 0.0;
@@ -329,7 +329,7 @@ ResidualAnalysis residualAnalysis(const std::vector<double>& residuals,
 ModelRoots modelRoots(const PolynomialModel& model) {
     model.validate();
     if (std::all_of(model.b.begin(), model.b.end(), [](double c) { return c == 0.0; }))
-        throw InvalidInput("model.b", "is all zeros: the model has no input path");
+        throw InvalidInput("model.b", makeDiagnostic("ident_b_all_zeros"));
     ModelRoots out;
     out.tsSeconds = model.tsSeconds;
     out.poles = zRoots(model.inputDenominator());
@@ -347,9 +347,7 @@ ModelRoots thirdOrderPlantRoots(const ThirdOrderPlant& plant, double tsSeconds) 
     out.continuousPoles = plant.transferFunction().poles();
     sortRoots(out.continuousPoles);
     if (out.nonMinimumPhase)
-        out.notes.push_back("the continuous plant has no finite zeros: the zero outside the unit "
-                            "circle is a sampling zero of the ZOH discretization (relative "
-                            "degree 3)");
+        out.notes.push_back(makeDiagnostic("ident_sampling_zero"));
     return out;
 }
 

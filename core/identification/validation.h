@@ -92,9 +92,9 @@ struct OrderRange {
 struct ArxOrderRow {
     ArxOrders orders;
     EstimationStatus status = EstimationStatus::Failed;
-    std::string message;
-    double loss = 0.0; ///< V on the common estimation rows
-    double fpe = 0.0;  ///< informationCriteria(loss, rows, na + nb)
+    Diagnostic message; ///< the ARX estimate's (coded)
+    double loss = 0.0;  ///< V on the common estimation rows
+    double fpe = 0.0;   ///< informationCriteria(loss, rows, na + nb)
     double aic = 0.0;
     double validationLoss = 0.0; ///< one-step loss on the validation data (NaN without them)
 };
@@ -180,8 +180,8 @@ struct ModelRoots {
     /// accuracy of a double root there from the companion-matrix eigenvalues (sqrt(eps) ~ 1.5e-8)
     /// with margin; a pole at 1 and a pole just outside cannot be told apart better than that.
     bool integrating = false;
-    bool nonMinimumPhase = false;   ///< a zero of B on or outside the unit circle
-    std::vector<std::string> notes; ///< e.g. the NMP zero and what it implies
+    bool nonMinimumPhase = false;  ///< a zero of B on or outside the unit circle
+    std::vector<Diagnostic> notes; ///< e.g. the NMP zero and what it implies (coded)
 };
 /// @throws InvalidInput from model.validate(), "model.b" when B is all zeros.
 ModelRoots modelRoots(const PolynomialModel& model);

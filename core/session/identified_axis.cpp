@@ -10,7 +10,8 @@ AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedM
     if (!model.hasEstimate())
         throw InvalidInput(
             "model", model.structure + " has no estimate (" + estimationStatusName(model.status) +
-                         (model.message.empty() ? std::string() : ": " + model.message) + ")");
+                         (model.message.text.empty() ? std::string() : ": " + model.message.text) +
+                         ")");
     AxisSettings out = axis;
     if (model.plant) {
         out.method = DesignMethod::GuilleminTruxal;

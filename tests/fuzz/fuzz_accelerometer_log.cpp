@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             XYT_FUZZ_REQUIRE_FINITE(p.frequencyHz);
             XYT_FUZZ_REQUIRE(p.frequencyHz >= s.frequencyHz.front() &&
                              p.frequencyHz <= s.frequencyHz.back());
-            XYT_FUZZ_REQUIRE(p.dampingRatio.has_value() == p.note.empty());
+            XYT_FUZZ_REQUIRE(p.dampingRatio.has_value() == p.note.text.empty());
             if (p.dampingRatio)
                 XYT_FUZZ_REQUIRE(std::isfinite(*p.dampingRatio) && *p.dampingRatio >= 0.0);
         } catch (const xyt::InvalidInput& e) {

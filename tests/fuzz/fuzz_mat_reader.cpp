@@ -89,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 ++usable;
                 XYT_FUZZ_REQUIRE(v.rows >= 1 && v.columns >= 1 && (v.rows == 1 || v.columns == 1));
             } else {
-                XYT_FUZZ_REQUIRE(!v.whyNot.empty());
+                XYT_FUZZ_REQUIRE(!v.whyNot.text.empty());
             }
         }
         // Every usable vector, as the identification window reads a file: within the bounds,

@@ -189,16 +189,24 @@ private slots:
         const IoData d1 = ioData(step, filterDifferenceEquation(kB, kA, step), kTs);
         const ArxResult r1 = estimateArx(d1, ArxOrders{2, 3, 1});
         QCOMPARE(r1.status, EstimationStatus::NotPersistentlyExciting);
-        QVERIFY2(r1.message.find("input not persistently exciting for nb = 3") != std::string::npos,
-                 r1.message.c_str());
+        QVERIFY2(r1.message.text.find("input not persistently exciting for nb = 3") !=
+                     std::string::npos,
+                 r1.message.text.c_str());
         QVERIFY(r1.parameters.empty());
+        // The status message is coded for the workbench's translation, nb its first argument.
+        QCOMPARE(r1.message.code, std::string("ident_arx_input_not_exciting"));
+        QCOMPARE(r1.message.args.at(0).text, std::string("3"));
+        QCOMPARE(r1.message.text.rfind("input not persistently exciting for nb = 3 (the input "
+                                       "block has rank ",
+                                       0),
+                 std::size_t(0));
         std::vector<double> sine(300);
         for (std::size_t k = 0; k < sine.size(); ++k)
             sine[k] = std::sin(0.3 * static_cast<double>(k));
         const ArxResult r2 = estimateArx(ioData(sine, filterDifferenceEquation(kB, kA, sine), kTs),
                                          ArxOrders{2, 3, 1});
         QCOMPARE(r2.status, EstimationStatus::NotPersistentlyExciting);
-        QVERIFY2(r2.message.find("nb = 3") != std::string::npos, r2.message.c_str());
+        QVERIFY2(r2.message.text.find("nb = 3") != std::string::npos, r2.message.text.c_str());
         // ... while nb = 2 with the same sinusoid has a full-rank input block.
         const ArxResult r3 = estimateArx(
             ioData(sine, filterDifferenceEquation({0.0, 0.0421, 0.0628}, kA, sine), kTs),
@@ -211,7 +219,7 @@ private slots:
     void overParameterizedNoiseFreeIsRankDeficient() {
         const ArxResult r = estimateArx(arxData(300, 0.0, 5), ArxOrders{3, 4, 1});
         QCOMPARE(r.status, EstimationStatus::NotPersistentlyExciting);
-        QVERIFY2(r.message.find("ARX(3,4,1)") != std::string::npos, r.message.c_str());
+        QVERIFY2(r.message.text.find("ARX(3,4,1)") != std::string::npos, r.message.text.c_str());
         QCOMPARE(r.rank, Eigen::Index{6});
     }
 

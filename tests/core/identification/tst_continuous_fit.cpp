@@ -83,7 +83,7 @@ private slots:
         QFETCH(double, a2);
         const ThirdOrderPlant truth{k0, a1, a2};
         const ContinuousFitResult r = fitThirdOrderPlant(plantData(truth, 1000, 0.0, 0));
-        QVERIFY2(r.status == EstimationStatus::Converged, r.message.c_str());
+        QVERIFY2(r.status == EstimationStatus::Converged, r.message.text.c_str());
         QCOMPARE(r.initialization, std::string("ARX(3,3,1) converted"));
         XYT_COMPARE_NEAR(r.plant.k0, k0, 1e-9, 0.0);
         XYT_COMPARE_NEAR(r.plant.a1, a1, 1e-9, 0.0);

@@ -34,6 +34,7 @@ private slots:
     void lineEndsOfEveryConvention_data();
     void lineEndsOfEveryConvention();
     void chosenColumnsAreCheckedBeforeTheRows();
+    void refusalsCarryTheirCode();
 };
 
 void TstDelimitedReader::detectsTheDelimiter_data() {
@@ -103,7 +104,10 @@ void TstDelimitedReader::keepsLineNumbersAndProblems() {
     QVERIFY(t.firstProblem[1] && t.firstProblem[2] && t.firstProblem[3]);
     QCOMPARE(t.firstProblem[1]->text, std::string("abc"));
     QCOMPARE(t.firstProblem[1]->row, std::size_t(1));
-    QCOMPARE(t.firstProblem[2]->reason, std::string("is NaN or infinite"));
+    QCOMPARE(t.firstProblem[2]->reason.text, std::string("is NaN or infinite"));
+    // The reasons are coded, so the workbench can translate them.
+    QCOMPARE(t.firstProblem[1]->reason.code, std::string("ident_cell_not_number"));
+    QCOMPARE(t.firstProblem[2]->reason.code, std::string("not_finite_value"));
     QCOMPARE(t.firstProblem[3]->text, std::string("ok")); // "ok" comes first, at line 3
     QCOMPARE(QString::fromStdString(t.cellField(1, 1)), QString("run.csv: line 4, column 2 (u)"));
     QVERIFY(std::isnan(t.columns[1][1]));
@@ -217,6 +221,21 @@ void TstDelimitedReader::chosenColumnsAreCheckedBeforeTheRows() {
     QCOMPARE(
         xyt::test::invalidInputMessage([&] { xyt::readDelimited("t,u\n0,1,9\n", "run.csv", o); }),
         QString("run.csv: line 2, column 3: the line has 3 fields but the header names 2"));
+}
+
+void TstDelimitedReader::refusalsCarryTheirCode() {
+    // The workbench translates a refusal by its code; the numbers are its arguments.
+    try {
+        xyt::readDelimited("t,u\n0,1,2\n", "run.csv");
+        QFAIL("a line with more fields than the header was read");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.field(), std::string("run.csv: line 2, column 3"));
+        QCOMPARE(e.reasonDiagnostic().code, std::string("ident_csv_line_fields"));
+        QCOMPARE(e.reasonDiagnostic().args.size(), std::size_t(2));
+        QCOMPARE(e.reasonDiagnostic().args[0].text, std::string("3"));
+        QCOMPARE(e.reasonDiagnostic().args[1].text, std::string("2"));
+        QCOMPARE(e.reason(), std::string("the line has 3 fields but the header names 2"));
+    }
 }
 
 QTEST_APPLESS_MAIN(TstDelimitedReader)

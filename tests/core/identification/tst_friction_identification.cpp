@@ -407,7 +407,7 @@ private slots:
     // the estimate is far closer than that: 1e-8 relative bounds it from the stopping rule.
     void exactStribeckIsRecovered() {
         const FrictionEstimate e = fitFrictionCurve(curvePoints(dip(), kDipSpeeds, 0.0, 0));
-        QVERIFY2(e.hasStribeck, e.modelSelection.c_str());
+        QVERIFY2(e.hasStribeck, e.modelSelection.text.c_str());
         XYT_COMPARE_NEAR(e.coulombVolts, 0.3, 1e-8, 0.0);
         XYT_COMPARE_NEAR(e.staticVolts, 0.5, 1e-8, 0.0);
         XYT_COMPARE_NEAR(e.stribeckVelocityMmPerS, 2.0, 1e-8, 0.0);
@@ -464,21 +464,27 @@ private slots:
     void stribeckKeptOnlyWhereTheDataHoldIt() {
         const double sigma = 0.005;
         const FrictionEstimate e = fitFrictionCurve(curvePoints(dip(), kDipSpeeds, sigma, 7));
-        QVERIFY2(e.hasStribeck, e.modelSelection.c_str());
+        QVERIFY2(e.hasStribeck, e.modelSelection.text.c_str());
         XYT_COMPARE_NEAR(e.coulombVolts, 0.3, 0.0, 3.0 * e.coulombStd);
         XYT_COMPARE_NEAR(e.staticVolts, 0.5, 0.0, 3.0 * e.staticStd);
         XYT_COMPARE_NEAR(e.stribeckVelocityMmPerS, 2.0, 0.0, 3.0 * e.stribeckStd);
         XYT_COMPARE_NEAR(e.viscousVoltsPerMmPerS, 0.02, 0.0, 3.0 * e.viscousStd);
         QCOMPARE(e.degreesOfFreedom, std::size_t(10));
         const FrictionEstimate flat = fitFrictionCurve(curvePoints(line(), kDipSpeeds, sigma, 7));
-        QVERIFY2(!flat.hasStribeck, flat.modelSelection.c_str());
+        QVERIFY2(!flat.hasStribeck, flat.modelSelection.text.c_str());
         QCOMPARE(flat.staticVolts, 0.0);
         QCOMPARE(flat.degreesOfFreedom, std::size_t(12));
         // Not tried below 3 distinct speeds per direction, nor when not allowed.
         QVERIFY(!fitFrictionCurve(curvePoints(dip(), {0.5, 1}, sigma, 7)).hasStribeck);
         FrictionIdentificationOptions o;
         o.allowStribeck = false;
-        QVERIFY(!fitFrictionCurve(curvePoints(dip(), kDipSpeeds, sigma, 7), o).hasStribeck);
+        const FrictionEstimate notAllowed =
+            fitFrictionCurve(curvePoints(dip(), kDipSpeeds, sigma, 7), o);
+        QVERIFY(!notAllowed.hasStribeck);
+        // The selection is told to the user in words of a code the workbench translates.
+        QCOMPARE(notAllowed.modelSelection.code, std::string("ident_stribeck_not_allowed"));
+        QCOMPARE(notAllowed.modelSelection.text,
+                 std::string("Stribeck model not tried (not allowed)"));
     }
 
     // The F-test at the 1 % level on data without a dip: over 2000 seeds (10 mV of noise on the
@@ -507,7 +513,7 @@ private slots:
         const FrictionEstimate e = identifyFriction(log.reference.t, log.reference.position,
                                                     log.position, log.command, {});
         QCOMPARE(e.points.size(), std::size_t(12));
-        QVERIFY2(e.hasStribeck, e.modelSelection.c_str());
+        QVERIFY2(e.hasStribeck, e.modelSelection.text.c_str());
         XYT_COMPARE_NEAR(e.coulombVolts, 0.3, 0.0, 3.0 * e.coulombStd);
         XYT_COMPARE_NEAR(e.staticVolts, 0.5, 0.0, 3.0 * e.staticStd);
         XYT_COMPARE_NEAR(e.stribeckVelocityMmPerS, 2.0, 0.0, 3.0 * e.stribeckStd);

@@ -109,7 +109,7 @@ private slots:
     void noiseFreeBjRecoversBAndF() {
         const PemResult r = estimateBj(data(300, 0.0, 2, false), BjOrders{2, 1, 1, 2, 1});
         QVERIFY2(r.status == EstimationStatus::Converged,
-                 (estimationStatusName(r.status) + ": " + r.message).c_str());
+                 (estimationStatusName(r.status) + ": " + r.message.text).c_str());
         for (std::size_t i = 1; i < 3; ++i) {
             XYT_COMPARE_NEAR(r.model.b[i], kB[i], 1e-9, 0.0);
             XYT_COMPARE_NEAR(r.model.f[i], kF[i], 1e-9, 0.0);
@@ -289,7 +289,7 @@ private slots:
         const PemResult r = estimateOe(ioData(step, filterDifferenceEquation(kB, kF, step), kTs),
                                        OeOrders{2, 2, 1});
         QCOMPARE(r.status, EstimationStatus::NotPersistentlyExciting);
-        QVERIFY2(r.message.find("nb = 2") != std::string::npos, r.message.c_str());
+        QVERIFY2(r.message.text.find("nb = 2") != std::string::npos, r.message.text.c_str());
     }
 };
 

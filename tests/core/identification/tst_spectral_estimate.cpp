@@ -296,7 +296,7 @@ void TstSpectralEstimate::resonancePickOfASecondOrderGain() {
             // Against zeta itself: the O(zeta^2) term 2 zeta^2 (5 % more for zeta 0.1), plus
             // the interpolation (0.04 df / (2 fn) = 2e-5).
             XYT_COMPARE_NEAR(*r.dampingRatio, zeta, 2.1 * zeta * zeta, 2e-5);
-            QVERIFY(r.note.empty());
+            QVERIFY(r.note.text.empty());
         }
     }
 }
@@ -313,9 +313,9 @@ void TstSpectralEstimate::resonancePickWithoutACrossingInTheBand() {
     const ResonancePick r = pickResonance(f, gain, ResonanceQuantity::Magnitude, {48.5, 80.0});
     QVERIFY(!r.dampingRatio.has_value());
     QVERIFY(r.highHalfPowerHz.has_value());
-    QVERIFY2(r.note.find("below the peak") != std::string::npos &&
-                 r.note.find("[48.5, 80] Hz") != std::string::npos,
-             r.note.c_str());
+    QVERIFY2(r.note.text.find("below the peak") != std::string::npos &&
+                 r.note.text.find("[48.5, 80] Hz") != std::string::npos,
+             r.note.text.c_str());
     // A band below the resonance: the largest value is at its upper edge, no damping.
     const ResonancePick edge = pickResonance(f, gain, ResonanceQuantity::Magnitude, {10.0, 30.0});
     XYT_COMPARE_NEAR(edge.frequencyHz, 30.0, 0.0, 1e-9);

@@ -256,7 +256,7 @@ private slots:
         QVERIFY(r.nonMinimumPhase);
         QVERIFY(r.stable);
         QCOMPARE(r.notes.size(), std::size_t{1});
-        QVERIFY(r.notes[0].find("ZPETC") != std::string::npos);
+        QVERIFY(r.notes[0].text.find("ZPETC") != std::string::npos);
         m.b = kB;
         const ModelRoots mp = modelRoots(m);
         QVERIFY(!mp.nonMinimumPhase);
