@@ -30,8 +30,8 @@ struct Word {
     std::size_t column = 0;
 };
 
-/// The column of a word or character, an argument of the messages ("at column %2").
-std::string at(std::size_t column) {
+/// The 1-based column of a word or character as the messages' argument ("at column %2").
+std::string columnText(std::size_t column) {
     return std::to_string(column);
 }
 
@@ -88,8 +88,8 @@ void malformedNumber(std::string_view line, std::size_t next, const Word& w,
     const std::string text =
         std::string(1, w.letter) + number + std::string(line.substr(next, end - next));
     throw InvalidInput(field, makeDiagnostic("contour_gcode_malformed_number",
-                                             {text.substr(0, kMaxNumberChars + 1), at(w.column),
-                                              makeDiagnostic(whyCode)}));
+                                             {text.substr(0, kMaxNumberChars + 1),
+                                              columnText(w.column), makeDiagnostic(whyCode)}));
 }
 
 /// Splits one line into words, dropping comments. @throws InvalidInput @p field.
@@ -105,8 +105,8 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
         } else if (c == '(') {
             const std::size_t close = line.find(')', i + 1);
             if (close == std::string_view::npos)
-                throw InvalidInput(field,
-                                   makeDiagnostic("contour_gcode_comment_not_closed", {at(i + 1)}));
+                throw InvalidInput(
+                    field, makeDiagnostic("contour_gcode_comment_not_closed", {columnText(i + 1)}));
             i = close + 1;
         } else if (isLetter(c)) {
             Word w;
@@ -124,14 +124,15 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
                 point = point || line[i] == '.';
                 number += line[i++];
                 if (number.size() > kMaxNumberChars)
-                    throw InvalidInput(field,
-                                       makeDiagnostic("contour_gcode_number_too_long",
-                                                      {std::string(1, w.letter), at(w.column),
-                                                       std::to_string(kMaxNumberChars)}));
+                    throw InvalidInput(
+                        field, makeDiagnostic("contour_gcode_number_too_long",
+                                              {std::string(1, w.letter), columnText(w.column),
+                                               std::to_string(kMaxNumberChars)}));
             }
             if (!digits)
-                throw InvalidInput(field, makeDiagnostic("contour_gcode_word_no_number",
-                                                         {std::string(1, w.letter), at(w.column)}));
+                throw InvalidInput(
+                    field, makeDiagnostic("contour_gcode_word_no_number",
+                                          {std::string(1, w.letter), columnText(w.column)}));
             malformedNumber(line, i, w, number, field);
             w.text = std::string(1, w.letter) + number;
             const char* begin = number.data() + (number[0] == '+' ? 1 : 0);
@@ -140,11 +141,11 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
             if (error != std::errc() || end != number.data() + number.size() ||
                 !std::isfinite(w.value))
                 throw InvalidInput(field, makeDiagnostic("contour_gcode_number_not_representable",
-                                                         {w.text, at(w.column)}));
+                                                         {w.text, columnText(w.column)}));
             out.push_back(std::move(w));
         } else {
-            throw InvalidInput(
-                field, makeDiagnostic("contour_gcode_unexpected_character", {shown(c), at(i + 1)}));
+            throw InvalidInput(field, makeDiagnostic("contour_gcode_unexpected_character",
+                                                     {shown(c), columnText(i + 1)}));
         }
     }
     return out;
@@ -216,9 +217,9 @@ void Reader::warn(const Diagnostic& message) {
 double Reader::millimetres(const Word& w) const {
     const double mm = w.value * unit();
     if (!(std::abs(mm) <= kMaxGcodeCoordinateMm))
-        throw InvalidInput(
-            field_, makeDiagnostic("contour_gcode_beyond_limit",
-                                   {w.text, at(w.column), formatNumber(kMaxGcodeCoordinateMm)}));
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_beyond_limit",
+                                                  {w.text, columnText(w.column),
+                                                   formatNumber(kMaxGcodeCoordinateMm)}));
     return mm;
 }
 
@@ -238,26 +239,26 @@ void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word
     const std::string name = motionWord.text;
     if (!i && !j && !r)
         throw InvalidInput(field_, makeDiagnostic("contour_gcode_arc_needs_centre",
-                                                  {name, at(motionWord.column)}));
+                                                  {name, columnText(motionWord.column)}));
     if (r && (i || j))
-        throw InvalidInput(
-            field_, makeDiagnostic("contour_gcode_arc_both_r_ij", {name, at(motionWord.column)}));
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_arc_both_r_ij",
+                                                  {name, columnText(motionWord.column)}));
     const double chord = norm(target - start);
     Point2 centre;
     if (r) {
         if (chord == 0.0)
-            throw InvalidInput(field_,
-                               makeDiagnostic("contour_gcode_full_circle_r", {at(r->column)}));
+            throw InvalidInput(
+                field_, makeDiagnostic("contour_gcode_full_circle_r", {columnText(r->column)}));
         const double radius = std::abs(millimetres(*r));
         if (radius == 0.0)
-            throw InvalidInput(
-                field_, makeDiagnostic("contour_gcode_zero_radius_word", {r->text, at(r->column)}));
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_zero_radius_word",
+                                                      {r->text, columnText(r->column)}));
         const double half = chord / 2.0;
         const double tolerance = arcEndTolerance(radius, modal_.inch);
         if (half > radius + tolerance)
-            throw InvalidInput(field_,
-                               makeDiagnostic("contour_gcode_radius_below_half_chord",
-                                              {r->text, at(r->column), formatNumber(half)}));
+            throw InvalidInput(
+                field_, makeDiagnostic("contour_gcode_radius_below_half_chord",
+                                       {r->text, columnText(r->column), formatNumber(half)}));
         const double h = std::sqrt(std::max(radius * radius - half * half, 0.0));
         const Point2 u = (1.0 / chord) * (target - start);
         const Point2 left{-u.y, u.x};
@@ -270,15 +271,15 @@ void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word
     }
     const double radius = norm(start - centre);
     if (radius == 0.0)
-        throw InvalidInput(
-            field_, makeDiagnostic("contour_gcode_arc_zero_radius", {name, at(motionWord.column)}));
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_arc_zero_radius",
+                                                  {name, columnText(motionWord.column)}));
     const double endRadius = norm(target - centre);
     const double tolerance = arcEndTolerance(radius, modal_.inch);
     if (std::abs(endRadius - radius) > tolerance)
-        throw InvalidInput(field_,
-                           makeDiagnostic("contour_gcode_arc_end_off_circle",
-                                          {name, at(motionWord.column), formatNumber(endRadius),
-                                           formatNumber(radius), formatNumber(tolerance)}));
+        throw InvalidInput(
+            field_, makeDiagnostic("contour_gcode_arc_end_off_circle",
+                                   {name, columnText(motionWord.column), formatNumber(endRadius),
+                                    formatNumber(radius), formatNumber(tolerance)}));
     const double a0 = std::atan2(start.y - centre.y, start.x - centre.x);
     const double a1 = std::atan2(target.y - centre.y, target.x - centre.x);
     double sweep = std::fmod(clockwise ? a0 - a1 : a1 - a0, kTwoPi);
@@ -345,9 +346,9 @@ void Reader::line(std::string_view text, std::size_t number) {
         }
         if (slot) {
             if (*slot)
-                throw InvalidInput(
-                    field_, makeDiagnostic("contour_gcode_word_twice",
-                                           {std::string(1, w.letter), w.text, at(w.column)}));
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_word_twice",
+                                                          {std::string(1, w.letter), w.text,
+                                                           columnText(w.column)}));
             *slot = &w;
             continue;
         }
@@ -355,9 +356,9 @@ void Reader::line(std::string_view text, std::size_t number) {
         if (w.letter == 'G') {
             if (c >= 0 && c <= 3) {
                 if (motionWord)
-                    throw InvalidInput(field_,
-                                       makeDiagnostic("contour_gcode_two_motion_codes",
-                                                      {motionWord->text, w.text, at(w.column)}));
+                    throw InvalidInput(
+                        field_, makeDiagnostic("contour_gcode_two_motion_codes",
+                                               {motionWord->text, w.text, columnText(w.column)}));
                 motionWord = &w;
                 motion = c == 0   ? Motion::Rapid
                          : c == 1 ? Motion::Line
@@ -366,21 +367,21 @@ void Reader::line(std::string_view text, std::size_t number) {
             } else if (c == 20 || c == 21) {
                 if (unitsSeen)
                     throw InvalidInput(field_, makeDiagnostic("contour_gcode_two_unit_codes",
-                                                              {w.text, at(w.column)}));
+                                                              {w.text, columnText(w.column)}));
                 unitsSeen = true;
                 modal_.inch = c == 20;
             } else if (c == 90 || c == 91) {
                 if (distanceSeen)
                     throw InvalidInput(field_, makeDiagnostic("contour_gcode_two_distance_modes",
-                                                              {w.text, at(w.column)}));
+                                                              {w.text, columnText(w.column)}));
                 distanceSeen = true;
                 modal_.incremental = c == 91;
             } else if (c == 18 || c == 19) {
-                throw InvalidInput(
-                    field_, makeDiagnostic("contour_gcode_plane_not_xy", {w.text, at(w.column)}));
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_plane_not_xy",
+                                                          {w.text, columnText(w.column)}));
             } else if (c != 17 && c != 94) {
-                throw InvalidInput(
-                    field_, makeDiagnostic("contour_gcode_unknown_word", {w.text, at(w.column)}));
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_unknown_word",
+                                                          {w.text, columnText(w.column)}));
             }
         } else if (w.letter == 'M') {
             // M2 and M30 end the program: nothing to warn about, as every program ends so.
@@ -391,8 +392,8 @@ void Reader::line(std::string_view text, std::size_t number) {
             }
             static constexpr int kIgnored[] = {0, 1, 3, 4, 5, 6, 7, 8, 9};
             if (std::find(std::begin(kIgnored), std::end(kIgnored), c) == std::end(kIgnored))
-                throw InvalidInput(
-                    field_, makeDiagnostic("contour_gcode_unknown_word", {w.text, at(w.column)}));
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_unknown_word",
+                                                          {w.text, columnText(w.column)}));
             warn(makeDiagnostic("contour_gcode_ignored_not_xy", {w.text}));
         } else if (w.letter == 'Z') {
             warn(makeDiagnostic("contour_gcode_ignored_z", {w.text}));
@@ -401,20 +402,20 @@ void Reader::line(std::string_view text, std::size_t number) {
                                                 : "contour_gcode_ignored_tool",
                                 {w.text}));
         } else {
-            throw InvalidInput(
-                field_, makeDiagnostic("contour_gcode_unknown_word", {w.text, at(w.column)}));
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_unknown_word",
+                                                      {w.text, columnText(w.column)}));
         }
     }
     if (n) {
         if (n->value < 0.0 || n->value != std::floor(n->value) || n->value > 1e9)
-            throw InvalidInput(
-                field_, makeDiagnostic("contour_gcode_block_number", {n->text, at(n->column)}));
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_block_number",
+                                                      {n->text, columnText(n->column)}));
         blockNumber_ = static_cast<long>(n->value);
     }
     if (f) {
         if (!(f->value > 0.0))
             throw InvalidInput(field_, makeDiagnostic("contour_gcode_feed_not_positive",
-                                                      {f->text, at(f->column)}));
+                                                      {f->text, columnText(f->column)}));
         modal_.feed = f->value;
     }
     if (motion)
@@ -425,23 +426,23 @@ void Reader::line(std::string_view text, std::size_t number) {
         modal_.motion == Motion::Clockwise || modal_.motion == Motion::CounterClockwise;
     if (arcWords && !arcMode) {
         const Word* w = i ? i : j ? j : r;
-        throw InvalidInput(field_,
-                           makeDiagnostic("contour_gcode_needs_arc", {w->text, at(w->column)}));
+        throw InvalidInput(
+            field_, makeDiagnostic("contour_gcode_needs_arc", {w->text, columnText(w->column)}));
     }
     if (!axisWords && !arcWords)
         return; // modes, feed, ignored words: no motion
     if (modal_.motion == Motion::None) {
         const Word* w = x ? x : y;
-        throw InvalidInput(
-            field_, makeDiagnostic("contour_gcode_no_motion_mode", {w->text, at(w->column)}));
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_no_motion_mode",
+                                                  {w->text, columnText(w->column)}));
     }
     const Word& modeWord = motionWord ? *motionWord : *(x ? x : y ? y : i ? i : j ? j : r);
     if (modal_.motion != Motion::Rapid && !modal_.feed)
         throw InvalidInput(
-            field_,
-            motionWord
-                ? makeDiagnostic("contour_gcode_no_feed", {motionWord->text, at(modeWord.column)})
-                : makeDiagnostic("contour_gcode_no_feed_modal", {at(modeWord.column)}));
+            field_, motionWord ? makeDiagnostic("contour_gcode_no_feed",
+                                                {motionWord->text, columnText(modeWord.column)})
+                               : makeDiagnostic("contour_gcode_no_feed_modal",
+                                                {columnText(modeWord.column)}));
     Point2 target = modal_.position;
     if (x)
         target.x = modal_.incremental ? target.x + millimetres(*x) : millimetres(*x);
@@ -449,9 +450,9 @@ void Reader::line(std::string_view text, std::size_t number) {
         target.y = modal_.incremental ? target.y + millimetres(*y) : millimetres(*y);
     if (!(std::abs(target.x) <= kMaxGcodeCoordinateMm &&
           std::abs(target.y) <= kMaxGcodeCoordinateMm))
-        throw InvalidInput(
-            field_, makeDiagnostic("contour_gcode_incremental_beyond",
-                                   {at(modeWord.column), formatNumber(kMaxGcodeCoordinateMm)}));
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_incremental_beyond",
+                                                  {columnText(modeWord.column),
+                                                   formatNumber(kMaxGcodeCoordinateMm)}));
     if (arcMode) {
         Word named = modeWord;
         if (!motionWord)
