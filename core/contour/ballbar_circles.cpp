@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/contour/ballbar_circles.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/math_constants.h"
 
 #include <algorithm>
@@ -24,11 +25,12 @@ namespace {
  */
 constexpr double kTurnTolerance = 1e-9 * kTwoPi;
 
-std::string linesOf(const GcodeProgram& program, const CircleSegments& circle) {
+Diagnostic linesOf(const GcodeProgram& program, const CircleSegments& circle) {
     const std::size_t first = program.segments[circle.begin].line,
                       last = program.segments[circle.end - 1].line;
-    return first == last ? "line " + std::to_string(first)
-                         : "lines " + std::to_string(first) + "-" + std::to_string(last);
+    return first == last ? makeDiagnostic("contour_gcode_line", {std::to_string(first)})
+                         : makeDiagnostic("contour_gcode_lines",
+                                          {std::to_string(first), std::to_string(last)});
 }
 
 /// The same programmed circle: the reader turns the same I, J and end point into the same
@@ -102,21 +104,16 @@ BallbarCircles findBallbarCircles(const GcodeProgram& program) {
         if (sameCircle(first, s) && (s.sweep() < 0.0) != (first.sweep() < 0.0))
             out.opposite = circles[k];
     }
-    const std::string firstLines = linesOf(program, circles.front());
+    const Diagnostic firstLines = linesOf(program, circles.front());
     if (!out.opposite) {
-        out.note =
-            circles.size() == 1
-                ? "the program runs its full circle (" + firstLines +
-                      ") one way only: no circular hysteresis H, which needs a clockwise and a "
-                      "counter-clockwise run of the same circle"
-                : "none of the program's " + std::to_string(circles.size()) +
-                      " full circles runs the circle of " + firstLines +
-                      " the other way on the same centre and radius: G and F are that circle's, "
-                      "no circular hysteresis H";
+        out.note = circles.size() == 1
+                       ? makeDiagnostic("contour_ballbar_one_way", {firstLines})
+                       : makeDiagnostic("contour_ballbar_no_opposite",
+                                        {std::to_string(circles.size()), firstLines});
     } else if (circles.size() > 2) {
-        out.note = "the program holds " + std::to_string(circles.size()) +
-                   " full circles: the figures are those of " + firstLines + " and " +
-                   linesOf(program, *out.opposite);
+        out.note =
+            makeDiagnostic("contour_ballbar_many", {std::to_string(circles.size()), firstLines,
+                                                    linesOf(program, *out.opposite)});
     }
     return out;
 }

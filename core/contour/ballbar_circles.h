@@ -37,7 +37,7 @@ struct BallbarCircles {
     /// Why the figures are fewer than G, F and H of a clockwise and counter-clockwise pair, or
     /// which circles they are of when the program holds more than two; empty otherwise (and
     /// when the program holds no full circle: it is no circular test).
-    std::string note;
+    Diagnostic note;
 };
 
 /// Finds the full circles of @p program and pairs the first with one run the other way.

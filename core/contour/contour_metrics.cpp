@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/contour/contour_metrics.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <Eigen/Dense>
@@ -19,12 +20,14 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 void requirePoints(const std::vector<double>& x, const std::vector<double>& y, const char* field,
                    std::size_t minimum) {
     if (x.size() != y.size())
-        throw InvalidInput(field, "x and y have different lengths");
+        throw InvalidInput(field, makeDiagnostic("contour_xy_different_lengths"));
     if (x.size() < minimum)
-        throw InvalidInput(field, "needs at least " + std::to_string(minimum) + " points");
+        throw InvalidInput(field,
+                           makeDiagnostic("contour_needs_points", {std::to_string(minimum)}));
     for (std::size_t i = 0; i < x.size(); ++i)
         if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
-            throw InvalidInput(field, "point " + std::to_string(i) + " is not finite");
+            throw InvalidInput(field,
+                               makeDiagnostic("contour_point_not_finite", {std::to_string(i)}));
 }
 
 /// Radii of the points about @p c.
@@ -132,11 +135,11 @@ std::vector<ReversalSpike> reversalSpikes(const std::vector<double>& x,
 
 void validateNominal(const NominalCircle& nominal, const Iso230Options& options) {
     if (!(nominal.radius > 0.0) || !std::isfinite(nominal.radius))
-        throw InvalidInput("nominal_radius", "must be a finite number greater than zero");
+        throw InvalidInput("nominal_radius", makeDiagnostic("finite_positive"));
     if (!std::isfinite(nominal.centre.x) || !std::isfinite(nominal.centre.y))
-        throw InvalidInput("nominal_centre", "must be finite");
+        throw InvalidInput("nominal_centre", makeDiagnostic("sim_must_be_finite"));
     if (!(options.reversalWindowDeg > 0.0 && options.reversalWindowDeg <= 45.0))
-        throw InvalidInput("reversal_window", "must be in (0, 45] degrees");
+        throw InvalidInput("reversal_window", makeDiagnostic("contour_reversal_window"));
 }
 
 } // namespace
@@ -145,13 +148,13 @@ ContourErrorResult contourError(const Path& path, const std::vector<double>& t,
                                 const std::vector<double>& x, const std::vector<double>& y,
                                 const ContourErrorOptions& options) {
     if (t.size() != x.size() || t.size() != y.size())
-        throw InvalidInput("traced", "t, x and y have different lengths");
+        throw InvalidInput("traced", makeDiagnostic("sim_txy_different_lengths"));
     if (t.empty())
-        throw InvalidInput("traced", "has no sample");
+        throw InvalidInput("traced", makeDiagnostic("contour_has_no_sample"));
     if (!options.measuredSegments.empty() && options.measuredSegments.size() != path.size())
-        throw InvalidInput("measured_segments", "needs one flag per path segment");
+        throw InvalidInput("measured_segments", makeDiagnostic("contour_one_flag_per_segment"));
     if (!(options.cornerWindowMm >= 0.0) || !std::isfinite(options.cornerWindowMm))
-        throw InvalidInput("corner_window", "must be a finite number >= 0");
+        throw InvalidInput("corner_window", makeDiagnostic("finite_not_negative"));
     const std::size_t n = t.size();
     ContourErrorResult out;
     out.error.resize(n);
@@ -174,7 +177,8 @@ ContourErrorResult contourError(const Path& path, const std::vector<double>& t,
     std::size_t hint = 0;
     for (std::size_t k = 0; k < n; ++k) {
         if (!std::isfinite(t[k]) || !std::isfinite(x[k]) || !std::isfinite(y[k]))
-            throw InvalidInput("traced", "sample " + std::to_string(k) + " is not finite");
+            throw InvalidInput("traced",
+                               makeDiagnostic("contour_sample_not_finite", {std::to_string(k)}));
         const PathProjection p = path.nearest({x[k], y[k]}, hint);
         hint = p.segment;
         out.error[k] = p.signedDistance;
@@ -238,11 +242,11 @@ CircleFit fitCircleKasa(const std::vector<double>& x, const std::vector<double>&
     }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
     if (qr.rank() < 3)
-        throw InvalidInput("points", "are collinear (or coincide): no circle fits them");
+        throw InvalidInput("points", makeDiagnostic("contour_points_collinear"));
     const Eigen::Vector3d s = qr.solve(b);
     const double r2 = s(2) + s(0) * s(0) + s(1) * s(1);
     if (!(r2 > 0.0) || !std::isfinite(r2))
-        throw InvalidInput("points", "give no circle (the algebraic fit's radius is not real)");
+        throw InvalidInput("points", makeDiagnostic("contour_fit_radius_not_real"));
     return {{s(0) + mx, s(1) + my}, std::sqrt(r2), false, 0};
 }
 

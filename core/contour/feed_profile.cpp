@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/contour/feed_profile.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -9,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <string_view>
 
 namespace xyt {
 
@@ -114,8 +116,9 @@ private:
 };
 
 /// "1.2e+03 s", or "more time than a double holds" for an overflowed bound.
-std::string secondsText(double seconds) {
-    return std::isfinite(seconds) ? formatNumber(seconds, 3) + " s" : "more than 1.8e+308 s";
+Diagnostic secondsText(double seconds) {
+    return std::isfinite(seconds) ? Diagnostic(formatNumber(seconds, 3) + " s")
+                                  : makeDiagnostic("sim_more_than", {"1.8e+308 s"});
 }
 
 /// True when a run of @p seconds fits in maxSamples samples at dt: the planned profile's count
@@ -127,16 +130,17 @@ bool fitsSamples(double seconds, const FeedProfileOptions& o) {
 }
 
 /// Refuses @p field when @p seconds, a lower bound on the run time, does not fit in the samples:
-/// "<who> needs at least <seconds> <how>, more than the <n> samples at dt <dt> s hold (<span>)".
-void requireWithinSamples(double seconds, const std::string& field, const std::string& who,
-                          const std::string& how, const FeedProfileOptions& o) {
+/// the diagnostic @p code, "<who> needs at least <seconds> <how>, more than the <n> samples at
+/// dt <dt> s hold (<span>)", its arguments seconds, n, dt, span, then @p more.
+void requireWithinSamples(double seconds, const std::string& field, std::string_view code,
+                          const FeedProfileOptions& o, const std::vector<Diagnostic>& more = {}) {
     if (fitsSamples(seconds, o))
         return;
     const double span = (static_cast<double>(o.maxSamples) - 1.0) * o.dtSeconds;
-    throw InvalidInput(field, who + " needs at least " + secondsText(seconds) + " " + how +
-                                  ", more than the " + std::to_string(o.maxSamples) +
-                                  " samples at dt " + formatNumber(o.dtSeconds) + " s hold (" +
-                                  secondsText(std::max(span, 0.0)) + ")");
+    std::vector<Diagnostic> args = {secondsText(seconds), std::to_string(o.maxSamples),
+                                    formatNumber(o.dtSeconds), secondsText(std::max(span, 0.0))};
+    args.insert(args.end(), more.begin(), more.end());
+    throw InvalidInput(field, makeDiagnostic(code, std::move(args)));
 }
 
 /// sum(L_i / f_i): the run time with every segment at its feed.
@@ -149,42 +153,40 @@ double feedSeconds(const Path& path, const std::vector<double>& feeds) {
 
 void validate(const Path& path, const std::vector<double>& feeds, const FeedProfileOptions& o) {
     if (path.size() == 0)
-        throw InvalidInput("path", "has no segment");
+        throw InvalidInput("path", makeDiagnostic("contour_has_no_segment"));
     if (feeds.size() != path.size())
-        throw InvalidInput("feed", "needs one value per path segment (" +
-                                       std::to_string(path.size()) + "), got " +
-                                       std::to_string(feeds.size()));
+        throw InvalidInput(
+            "feed", makeDiagnostic("contour_feed_per_segment",
+                                   {std::to_string(path.size()), std::to_string(feeds.size())}));
     for (std::size_t i = 0; i < feeds.size(); ++i)
         if (!(feeds[i] > 0.0) || !std::isfinite(feeds[i]))
-            throw InvalidInput("feed", "segment " + std::to_string(i) +
-                                           ": must be a finite number > 0, got " +
-                                           formatNumber(feeds[i]));
+            throw InvalidInput("feed", makeDiagnostic("contour_segment_feed_invalid",
+                                                      {std::to_string(i), formatNumber(feeds[i])}));
     if (!(o.maxAccelMmPerS2 > 0.0) || !std::isfinite(o.maxAccelMmPerS2))
-        throw InvalidInput("max_accel", "must be a finite number greater than zero");
+        throw InvalidInput("max_accel", makeDiagnostic("finite_positive"));
     if (!(o.maxJerkMmPerS3 >= 0.0) || !std::isfinite(o.maxJerkMmPerS3))
-        throw InvalidInput("max_jerk", "must be a finite number >= 0 (0: no jerk limit)");
+        throw InvalidInput("max_jerk", makeDiagnostic("contour_max_jerk"));
     if (!(o.cornerAngleDeg >= 0.0 && o.cornerAngleDeg < 180.0))
-        throw InvalidInput("corner_angle", "must be in [0, 180) degrees");
+        throw InvalidInput("corner_angle", makeDiagnostic("contour_corner_angle"));
     if (!(o.dtSeconds > 0.0) || !std::isfinite(o.dtSeconds))
-        throw InvalidInput("dt", "must be a finite number greater than zero");
+        throw InvalidInput("dt", makeDiagnostic("finite_positive"));
     // What each option alone asks of the run time (the header derives the bounds). The roots
     // are taken of the length and the rate apart, so that a subnormal rate gives a finite bound.
     const double length = path.length();
-    const std::string overPath = "to move the path's " + formatNumber(length) + " mm";
-    requireWithinSamples(feedSeconds(path, feeds), "feed", "every segment at its feed", overPath,
-                         o);
+    const std::string pathMm = formatNumber(length);
+    requireWithinSamples(feedSeconds(path, feeds), "feed", "contour_feeds_too_long", o, {pathMm});
     const double a = o.maxAccelMmPerS2;
     requireWithinSamples(2.0 * std::sqrt(length) / std::sqrt(a), "max_accel",
-                         formatNumber(a) + " mm/s^2",
-                         overPath + " from rest to rest (2 sqrt(L / A))", o);
+                         "contour_accel_too_long", o, {formatNumber(a), pathMm});
     const double j = o.maxJerkMmPerS3;
     if (j > 0.0)
         requireWithinSamples(4.0 * std::cbrt(length) / std::cbrt(2.0 * j), "max_jerk",
-                             formatNumber(j) + " mm/s^3",
-                             overPath + " from rest to rest (4 (L / 2J)^(1/3))", o);
+                             "contour_jerk_too_long", o, {formatNumber(j), pathMm});
     // What the arithmetic holds, for a dt so long that the sample bound does not bite.
     for (std::size_t i = 0; i < feeds.size(); ++i)
-        requireProfileRate(feeds[i], "feed", "mm/s (segment " + std::to_string(i) + ")");
+        requireProfileRate(
+            feeds[i], "feed",
+            makeDiagnostic("contour_rate_unit_segment", {"mm/s", std::to_string(i)}));
     requireProfileRate(a, "max_accel", "mm/s^2");
     requireProfileRate(j, "max_jerk", "mm/s^3", true);
 }
@@ -250,10 +252,9 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
         // A segment of positive length takes time; none (a peak speed that rounds to 0) would
         // leave the samples without a piece to read.
         if (!(writer.time() > before))
-            throw InvalidInput("feed", "segment " + std::to_string(i) + " (" +
-                                           formatNumber(length) +
-                                           " mm) cannot be planned: its peak speed rounds to " +
-                                           formatNumber(peak) + " mm/s");
+            throw InvalidInput("feed", makeDiagnostic("contour_segment_peak_speed",
+                                                      {std::to_string(i), formatNumber(length),
+                                                       formatNumber(peak)}));
     }
     out.totalTimeSeconds = writer.time();
 
@@ -262,11 +263,11 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
     // still ends on a sample (at dt, holding the end of the path).
     const double steps = std::max(1.0, std::ceil(out.totalTimeSeconds / options.dtSeconds - 1e-9));
     if (!(steps + 1.0 <= static_cast<double>(options.maxSamples)))
-        throw InvalidInput("dt", "the profile lasts " + formatNumber(out.totalTimeSeconds) +
-                                     " s, " + formatNumber(steps + 1.0) + " samples at dt " +
-                                     formatNumber(options.dtSeconds) +
-                                     " s, more than the limit of " +
-                                     std::to_string(options.maxSamples));
+        throw InvalidInput(
+            "dt",
+            makeDiagnostic("contour_profile_too_long",
+                           {formatNumber(out.totalTimeSeconds), formatNumber(steps + 1.0),
+                            formatNumber(options.dtSeconds), std::to_string(options.maxSamples)}));
     if (!options.withSamples)
         return out;
     const std::size_t count = static_cast<std::size_t>(std::max(steps, 0.0)) + 1;
@@ -302,21 +303,22 @@ FeedProfile planFeedProfile(const Path& path, const std::vector<double>& feedMmP
 
 std::vector<double> programFeeds(const GcodeProgram& program, double feedScale) {
     if (!(feedScale > 0.0) || !std::isfinite(feedScale))
-        throw InvalidInput("feed_scale", "must be a finite number greater than zero");
+        throw InvalidInput("feed_scale", makeDiagnostic("finite_positive"));
     std::vector<double> feeds(program.segments.size());
     for (std::size_t i = 0; i < feeds.size(); ++i) {
         const GcodeSegmentInfo& info = program.segments[i];
         feeds[i] = info.feedMmPerSec * (info.rapid ? 1.0 : feedScale);
-        const std::string line = "line " + std::to_string(info.line);
+        const std::string line = std::to_string(info.line);
         if (info.rapid)
-            requireProfileRate(feeds[i], "rapid_feed", "mm/s (the rapid of " + line + ")");
+            requireProfileRate(feeds[i], "rapid_feed",
+                               makeDiagnostic("contour_rapid_of_line", {"mm/s", line}));
         else if (!(feeds[i] >= kMinProfileRate && feeds[i] <= kMaxProfileRate))
-            throw InvalidInput("feed_scale", formatNumber(feedScale) + " makes the feed of " +
-                                                 line + " (" + formatNumber(info.feedMmPerSec) +
-                                                 " mm/s) " + formatNumber(feeds[i]) +
-                                                 " mm/s, outside the planner's [" +
-                                                 formatNumber(kMinProfileRate) + ", " +
-                                                 formatNumber(kMaxProfileRate) + "] mm/s");
+            throw InvalidInput(
+                "feed_scale",
+                makeDiagnostic("contour_feed_scale_outside",
+                               {formatNumber(feedScale), line, formatNumber(info.feedMmPerSec),
+                                formatNumber(feeds[i]), formatNumber(kMinProfileRate),
+                                formatNumber(kMaxProfileRate)}));
     }
     return feeds;
 }
@@ -337,29 +339,27 @@ FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOption
                 programmed += length / program.segments[i].feedMmPerSec;
             }
         }
-        requireWithinSamples(programmed, "dt", "the program", "at its own feeds (the F words)",
-                             options);
-        requireWithinSamples(rapid, "rapid_feed", "running the rapids", "at the rapid feed",
-                             options);
+        requireWithinSamples(programmed, "dt", "contour_program_own_feeds_too_long", options);
+        requireWithinSamples(rapid, "rapid_feed", "contour_rapids_too_long", options);
         // A scale is named when the program fits at scale 1; else the sum is the feeds' (below).
         if (fitsSamples(programmed + rapid, options))
-            requireWithinSamples(scaled + rapid, "feed_scale", "the program",
-                                 "at " + formatNumber(options.feedScale) + " times its feeds",
-                                 options);
+            requireWithinSamples(scaled + rapid, "feed_scale", "contour_program_scaled_too_long",
+                                 options, {formatNumber(options.feedScale)});
     }
     return planFeedProfile(program.path, feeds, options);
 }
 
-void requireProfileRate(double rate, const std::string& field, const std::string& unit,
+void requireProfileRate(double rate, const std::string& field, const Diagnostic& unit,
                         bool zeroAllowed) {
     if (zeroAllowed && rate == 0.0)
         return;
     if (rate >= kMinProfileRate && rate <= kMaxProfileRate)
         return;
     throw InvalidInput(field,
-                       formatNumber(rate) + " " + unit + " is outside the planner's range [" +
-                           formatNumber(kMinProfileRate) + ", " + formatNumber(kMaxProfileRate) +
-                           "]" + (zeroAllowed ? " (0: none)" : ""));
+                       makeDiagnostic(zeroAllowed ? "contour_rate_outside_range_or_zero"
+                                                  : "contour_rate_outside_range",
+                                      {formatNumber(rate), unit, formatNumber(kMinProfileRate),
+                                       formatNumber(kMaxProfileRate)}));
 }
 
 } // namespace xyt

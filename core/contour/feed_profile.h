@@ -135,7 +135,7 @@ FeedProfile planFeedProfile(const GcodeProgram& program, const FeedProfileOption
  * @throws InvalidInput @p field unless @p rate is finite and within [kMinProfileRate,
  *         kMaxProfileRate] (or 0 when @p zeroAllowed: a jerk of 0 is none); @p unit names it.
  */
-void requireProfileRate(double rate, const std::string& field, const std::string& unit,
+void requireProfileRate(double rate, const std::string& field, const Diagnostic& unit,
                         bool zeroAllowed = false);
 
 /**

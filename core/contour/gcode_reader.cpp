@@ -2,6 +2,7 @@
 #include "core/contour/gcode_reader.h"
 
 #include "core/contour/feed_profile.h"
+#include "core/model/diagnostic_catalogue.h"
 
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
@@ -29,9 +30,9 @@ struct Word {
     std::size_t column = 0;
 };
 
-/// "at column 4"
-std::string at(std::size_t column) {
-    return "at column " + std::to_string(column);
+/// The 1-based column of a word or character as the messages' argument ("at column %2").
+std::string columnText(std::size_t column) {
+    return std::to_string(column);
 }
 
 /// A byte as it may be shown in a one-line message: printable ASCII as is, else \xNN.
@@ -68,26 +69,27 @@ void malformedNumber(std::string_view line, std::size_t next, const Word& w,
                      const std::string& number, const std::string& field) {
     if (next >= line.size())
         return;
-    std::string_view why;
+    const char* whyCode = nullptr;
     std::size_t end = next;
     if (line[next] == '.') {
         while (end < line.size() && (isDigit(line[end]) || line[end] == '.'))
             ++end;
-        why = "more than one decimal point";
+        whyCode = "contour_gcode_two_decimal_points";
     } else if (w.letter == 'X' && (line[next] == 'x' || line[next] == 'X') &&
                next + 1 < line.size() && isHexDigit(line[next + 1]) &&
                number.find_first_not_of("+-0") == std::string::npos) {
         end = next + 1;
         while (end < line.size() && isHexDigit(line[end]))
             ++end;
-        why = "G-code numbers are decimal (no 0x prefix)";
+        whyCode = "contour_gcode_hex_number";
     } else {
         return;
     }
     const std::string text =
         std::string(1, w.letter) + number + std::string(line.substr(next, end - next));
-    throw InvalidInput(field, "malformed number " + text.substr(0, kMaxNumberChars + 1) + " " +
-                                  at(w.column) + ": " + std::string(why));
+    throw InvalidInput(field, makeDiagnostic("contour_gcode_malformed_number",
+                                             {text.substr(0, kMaxNumberChars + 1),
+                                              columnText(w.column), makeDiagnostic(whyCode)}));
 }
 
 /// Splits one line into words, dropping comments. @throws InvalidInput @p field.
@@ -103,7 +105,8 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
         } else if (c == '(') {
             const std::size_t close = line.find(')', i + 1);
             if (close == std::string_view::npos)
-                throw InvalidInput(field, "comment opened " + at(i + 1) + " is not closed");
+                throw InvalidInput(
+                    field, makeDiagnostic("contour_gcode_comment_not_closed", {columnText(i + 1)}));
             i = close + 1;
         } else if (isLetter(c)) {
             Word w;
@@ -121,13 +124,15 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
                 point = point || line[i] == '.';
                 number += line[i++];
                 if (number.size() > kMaxNumberChars)
-                    throw InvalidInput(field, std::string("the number of word ") + w.letter + " " +
-                                                  at(w.column) + " is longer than " +
-                                                  std::to_string(kMaxNumberChars) + " characters");
+                    throw InvalidInput(
+                        field, makeDiagnostic("contour_gcode_number_too_long",
+                                              {std::string(1, w.letter), columnText(w.column),
+                                               std::to_string(kMaxNumberChars)}));
             }
             if (!digits)
-                throw InvalidInput(field, std::string("word ") + w.letter + " " + at(w.column) +
-                                              " has no number");
+                throw InvalidInput(
+                    field, makeDiagnostic("contour_gcode_word_no_number",
+                                          {std::string(1, w.letter), columnText(w.column)}));
             malformedNumber(line, i, w, number, field);
             w.text = std::string(1, w.letter) + number;
             const char* begin = number.data() + (number[0] == '+' ? 1 : 0);
@@ -135,11 +140,12 @@ std::vector<Word> words(std::string_view line, const std::string& field) {
                                                       std::chars_format::fixed);
             if (error != std::errc() || end != number.data() + number.size() ||
                 !std::isfinite(w.value))
-                throw InvalidInput(field, "the number of word " + w.text + " " + at(w.column) +
-                                              " is not a representable number");
+                throw InvalidInput(field, makeDiagnostic("contour_gcode_number_not_representable",
+                                                         {w.text, columnText(w.column)}));
             out.push_back(std::move(w));
         } else {
-            throw InvalidInput(field, "unexpected character '" + shown(c) + "' " + at(i + 1));
+            throw InvalidInput(field, makeDiagnostic("contour_gcode_unexpected_character",
+                                                     {shown(c), columnText(i + 1)}));
         }
     }
     return out;
@@ -174,11 +180,11 @@ public:
     bool ended() const { return ended_; }
     /// Says that lines holding more than blanks and '%' follow the program end (they are not
     /// run, which their author may not expect).
-    void textAfterEnd() { warn("the lines after the program end " + endWord_ + " are not read"); }
+    void textAfterEnd() { warn(makeDiagnostic("contour_gcode_lines_after_end", {endWord_})); }
     GcodeProgram finish();
 
 private:
-    void warn(const std::string& message);
+    void warn(const Diagnostic& message);
     double unit() const { return modal_.inch ? kMmPerInch : 1.0; }
     /// A length word in mm, refused beyond kMaxGcodeCoordinateMm.
     double millimetres(const Word& w) const;
@@ -193,16 +199,17 @@ private:
     long blockNumber_ = -1;
     std::vector<PathSegment> segments_;
     std::vector<GcodeSegmentInfo> info_;
-    std::vector<std::string> warnings_;
+    std::vector<Diagnostic> warnings_;
     std::size_t droppedWarnings_ = 0;
     std::size_t lines_ = 0;
     bool ended_ = false;
     std::string endWord_;
 };
 
-void Reader::warn(const std::string& message) {
+void Reader::warn(const Diagnostic& message) {
     if (warnings_.size() < kMaxGcodeWarnings)
-        warnings_.push_back(field_ + ": " + message);
+        warnings_.push_back(
+            makeDiagnostic("contour_gcode_line_warning", {std::to_string(lineNumber_), message}));
     else
         ++droppedWarnings_;
 }
@@ -210,8 +217,9 @@ void Reader::warn(const std::string& message) {
 double Reader::millimetres(const Word& w) const {
     const double mm = w.value * unit();
     if (!(std::abs(mm) <= kMaxGcodeCoordinateMm))
-        throw InvalidInput(field_, w.text + " " + at(w.column) + " is beyond " +
-                                       formatNumber(kMaxGcodeCoordinateMm) + " mm");
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_beyond_limit",
+                                                  {w.text, columnText(w.column),
+                                                   formatNumber(kMaxGcodeCoordinateMm)}));
     return mm;
 }
 
@@ -230,26 +238,27 @@ void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word
     const Point2 start = modal_.position;
     const std::string name = motionWord.text;
     if (!i && !j && !r)
-        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
-                                       " needs I/J (its centre) or R (its radius)");
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_arc_needs_centre",
+                                                  {name, columnText(motionWord.column)}));
     if (r && (i || j))
-        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
-                                       " has both R and I/J; give one of them");
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_arc_both_r_ij",
+                                                  {name, columnText(motionWord.column)}));
     const double chord = norm(target - start);
     Point2 centre;
     if (r) {
         if (chord == 0.0)
-            throw InvalidInput(field_, "a full circle needs I and J: R " + at(r->column) +
-                                           " leaves its centre undefined");
+            throw InvalidInput(
+                field_, makeDiagnostic("contour_gcode_full_circle_r", {columnText(r->column)}));
         const double radius = std::abs(millimetres(*r));
         if (radius == 0.0)
-            throw InvalidInput(field_, r->text + " " + at(r->column) + " is a zero radius");
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_zero_radius_word",
+                                                      {r->text, columnText(r->column)}));
         const double half = chord / 2.0;
         const double tolerance = arcEndTolerance(radius, modal_.inch);
         if (half > radius + tolerance)
-            throw InvalidInput(field_, r->text + " " + at(r->column) +
-                                           " is smaller than half the chord (" +
-                                           formatNumber(half) + " mm) to the end point");
+            throw InvalidInput(
+                field_, makeDiagnostic("contour_gcode_radius_below_half_chord",
+                                       {r->text, columnText(r->column), formatNumber(half)}));
         const double h = std::sqrt(std::max(radius * radius - half * half, 0.0));
         const Point2 u = (1.0 / chord) * (target - start);
         const Point2 left{-u.y, u.x};
@@ -262,16 +271,15 @@ void Reader::arc(const Point2& target, bool clockwise, const Word* i, const Word
     }
     const double radius = norm(start - centre);
     if (radius == 0.0)
-        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
-                                       " has a zero radius (I and J are 0)");
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_arc_zero_radius",
+                                                  {name, columnText(motionWord.column)}));
     const double endRadius = norm(target - centre);
     const double tolerance = arcEndTolerance(radius, modal_.inch);
     if (std::abs(endRadius - radius) > tolerance)
-        throw InvalidInput(field_, "arc " + name + " " + at(motionWord.column) +
-                                       ": the end point is off the circle (radius " +
-                                       formatNumber(endRadius) + " mm at the end, " +
-                                       formatNumber(radius) + " mm at the start; tolerance " +
-                                       formatNumber(tolerance) + " mm)");
+        throw InvalidInput(
+            field_, makeDiagnostic("contour_gcode_arc_end_off_circle",
+                                   {name, columnText(motionWord.column), formatNumber(endRadius),
+                                    formatNumber(radius), formatNumber(tolerance)}));
     const double a0 = std::atan2(start.y - centre.y, start.x - centre.x);
     const double a1 = std::atan2(target.y - centre.y, target.x - centre.x);
     double sweep = std::fmod(clockwise ? a0 - a1 : a1 - a0, kTwoPi);
@@ -338,8 +346,9 @@ void Reader::line(std::string_view text, std::size_t number) {
         }
         if (slot) {
             if (*slot)
-                throw InvalidInput(field_, std::string("word ") + w.letter + " is given twice (" +
-                                               w.text + " " + at(w.column) + ")");
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_word_twice",
+                                                          {std::string(1, w.letter), w.text,
+                                                           columnText(w.column)}));
             *slot = &w;
             continue;
         }
@@ -347,8 +356,9 @@ void Reader::line(std::string_view text, std::size_t number) {
         if (w.letter == 'G') {
             if (c >= 0 && c <= 3) {
                 if (motionWord)
-                    throw InvalidInput(field_, "two motion codes " + motionWord->text + " and " +
-                                                   w.text + " on one line (" + at(w.column) + ")");
+                    throw InvalidInput(
+                        field_, makeDiagnostic("contour_gcode_two_motion_codes",
+                                               {motionWord->text, w.text, columnText(w.column)}));
                 motionWord = &w;
                 motion = c == 0   ? Motion::Rapid
                          : c == 1 ? Motion::Line
@@ -356,21 +366,22 @@ void Reader::line(std::string_view text, std::size_t number) {
                                   : Motion::CounterClockwise;
             } else if (c == 20 || c == 21) {
                 if (unitsSeen)
-                    throw InvalidInput(field_, "two unit codes on one line (" + w.text + " " +
-                                                   at(w.column) + ")");
+                    throw InvalidInput(field_, makeDiagnostic("contour_gcode_two_unit_codes",
+                                                              {w.text, columnText(w.column)}));
                 unitsSeen = true;
                 modal_.inch = c == 20;
             } else if (c == 90 || c == 91) {
                 if (distanceSeen)
-                    throw InvalidInput(field_, "two distance modes on one line (" + w.text + " " +
-                                                   at(w.column) + ")");
+                    throw InvalidInput(field_, makeDiagnostic("contour_gcode_two_distance_modes",
+                                                              {w.text, columnText(w.column)}));
                 distanceSeen = true;
                 modal_.incremental = c == 91;
             } else if (c == 18 || c == 19) {
-                throw InvalidInput(field_, "only the XY plane (G17) is supported, not " + w.text +
-                                               " " + at(w.column));
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_plane_not_xy",
+                                                          {w.text, columnText(w.column)}));
             } else if (c != 17 && c != 94) {
-                throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_unknown_word",
+                                                          {w.text, columnText(w.column)}));
             }
         } else if (w.letter == 'M') {
             // M2 and M30 end the program: nothing to warn about, as every program ends so.
@@ -381,26 +392,30 @@ void Reader::line(std::string_view text, std::size_t number) {
             }
             static constexpr int kIgnored[] = {0, 1, 3, 4, 5, 6, 7, 8, 9};
             if (std::find(std::begin(kIgnored), std::end(kIgnored), c) == std::end(kIgnored))
-                throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
-            warn(w.text + " ignored (not an XY motion)");
+                throw InvalidInput(field_, makeDiagnostic("contour_gcode_unknown_word",
+                                                          {w.text, columnText(w.column)}));
+            warn(makeDiagnostic("contour_gcode_ignored_not_xy", {w.text}));
         } else if (w.letter == 'Z') {
-            warn(w.text + " ignored (the path is XY only)");
+            warn(makeDiagnostic("contour_gcode_ignored_z", {w.text}));
         } else if (w.letter == 'S' || w.letter == 'T') {
-            warn(w.text + " ignored (" + (w.letter == 'S' ? "spindle speed" : "tool") + ")");
+            warn(makeDiagnostic(w.letter == 'S' ? "contour_gcode_ignored_spindle"
+                                                : "contour_gcode_ignored_tool",
+                                {w.text}));
         } else {
-            throw InvalidInput(field_, "unknown word " + w.text + " " + at(w.column));
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_unknown_word",
+                                                      {w.text, columnText(w.column)}));
         }
     }
     if (n) {
         if (n->value < 0.0 || n->value != std::floor(n->value) || n->value > 1e9)
-            throw InvalidInput(field_, "block number " + n->text + " " + at(n->column) +
-                                           " must be a whole number 0..1e9");
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_block_number",
+                                                      {n->text, columnText(n->column)}));
         blockNumber_ = static_cast<long>(n->value);
     }
     if (f) {
         if (!(f->value > 0.0))
-            throw InvalidInput(field_, "feed " + f->text + " " + at(f->column) +
-                                           " must be greater than zero");
+            throw InvalidInput(field_, makeDiagnostic("contour_gcode_feed_not_positive",
+                                                      {f->text, columnText(f->column)}));
         modal_.feed = f->value;
     }
     if (motion)
@@ -411,20 +426,23 @@ void Reader::line(std::string_view text, std::size_t number) {
         modal_.motion == Motion::Clockwise || modal_.motion == Motion::CounterClockwise;
     if (arcWords && !arcMode) {
         const Word* w = i ? i : j ? j : r;
-        throw InvalidInput(field_, w->text + " " + at(w->column) + " needs an arc (G2 or G3)");
+        throw InvalidInput(
+            field_, makeDiagnostic("contour_gcode_needs_arc", {w->text, columnText(w->column)}));
     }
     if (!axisWords && !arcWords)
         return; // modes, feed, ignored words: no motion
     if (modal_.motion == Motion::None) {
         const Word* w = x ? x : y;
-        throw InvalidInput(field_, w->text + " " + at(w->column) +
-                                       " has no motion mode (G0, G1, G2 or G3) before it");
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_no_motion_mode",
+                                                  {w->text, columnText(w->column)}));
     }
     const Word& modeWord = motionWord ? *motionWord : *(x ? x : y ? y : i ? i : j ? j : r);
     if (modal_.motion != Motion::Rapid && !modal_.feed)
-        throw InvalidInput(field_, "feed move " + std::string(motionWord ? motionWord->text : "") +
-                                       (motionWord ? " " : "") + at(modeWord.column) +
-                                       " has no feed rate (no F programmed before it)");
+        throw InvalidInput(
+            field_, motionWord ? makeDiagnostic("contour_gcode_no_feed",
+                                                {motionWord->text, columnText(modeWord.column)})
+                               : makeDiagnostic("contour_gcode_no_feed_modal",
+                                                {columnText(modeWord.column)}));
     Point2 target = modal_.position;
     if (x)
         target.x = modal_.incremental ? target.x + millimetres(*x) : millimetres(*x);
@@ -432,8 +450,9 @@ void Reader::line(std::string_view text, std::size_t number) {
         target.y = modal_.incremental ? target.y + millimetres(*y) : millimetres(*y);
     if (!(std::abs(target.x) <= kMaxGcodeCoordinateMm &&
           std::abs(target.y) <= kMaxGcodeCoordinateMm))
-        throw InvalidInput(field_, "the incremental move " + at(modeWord.column) + " ends beyond " +
-                                       formatNumber(kMaxGcodeCoordinateMm) + " mm");
+        throw InvalidInput(field_, makeDiagnostic("contour_gcode_incremental_beyond",
+                                                  {columnText(modeWord.column),
+                                                   formatNumber(kMaxGcodeCoordinateMm)}));
     if (arcMode) {
         Word named = modeWord;
         if (!motionWord)
@@ -447,9 +466,10 @@ void Reader::line(std::string_view text, std::size_t number) {
 
 GcodeProgram Reader::finish() {
     if (segments_.empty())
-        throw InvalidInput("program", "has no XY motion (no G0, G1, G2 or G3 move)");
+        throw InvalidInput("program", makeDiagnostic("contour_gcode_no_motion"));
     if (droppedWarnings_ > 0)
-        warnings_.push_back("... and " + std::to_string(droppedWarnings_) + " more warnings");
+        warnings_.push_back(
+            makeDiagnostic("contour_gcode_more_warnings", {std::to_string(droppedWarnings_)}));
     GcodeProgram program;
     program.path = Path(std::move(segments_));
     program.segments = std::move(info_);
@@ -466,21 +486,21 @@ double arcEndTolerance(double radiusMm, bool inch) {
 
 GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
     if (!(options.rapidFeedMmPerMin > 0.0) || !std::isfinite(options.rapidFeedMmPerMin))
-        throw InvalidInput("rapid_feed", "must be a finite number greater than zero");
+        throw InvalidInput("rapid_feed", makeDiagnostic("finite_positive"));
     // The planner's range of feeds (feed_profile.h), in mm/min.
     if (!(options.rapidFeedMmPerMin >= 60.0 * kMinProfileRate &&
           options.rapidFeedMmPerMin <= 60.0 * kMaxProfileRate))
-        throw InvalidInput("rapid_feed", formatNumber(options.rapidFeedMmPerMin) +
-                                             " mm/min is outside the planner's range [" +
-                                             formatNumber(60.0 * kMinProfileRate) + ", " +
-                                             formatNumber(60.0 * kMaxProfileRate) + "] mm/min");
+        throw InvalidInput("rapid_feed", makeDiagnostic("contour_rapid_feed_outside",
+                                                        {formatNumber(options.rapidFeedMmPerMin),
+                                                         formatNumber(60.0 * kMinProfileRate),
+                                                         formatNumber(60.0 * kMaxProfileRate)}));
     if (!(std::abs(options.start.x) <= kMaxGcodeCoordinateMm &&
           std::abs(options.start.y) <= kMaxGcodeCoordinateMm))
-        throw InvalidInput("start", "must be finite and within " +
-                                        formatNumber(kMaxGcodeCoordinateMm) + " mm");
+        throw InvalidInput(
+            "start", makeDiagnostic("contour_start_within", {formatNumber(kMaxGcodeCoordinateMm)}));
     if (text.size() > kMaxGcodeBytes)
-        throw InvalidInput("program", "is larger than the limit of " +
-                                          std::to_string(kMaxGcodeBytes) + " bytes");
+        throw InvalidInput(
+            "program", makeDiagnostic("contour_gcode_too_large", {std::to_string(kMaxGcodeBytes)}));
     // Lines end at LF (Unix), CR LF (DOS) or a lone CR (classic Mac OS): a CR not followed by LF
     // ends a line too, so a CR-only file has its lines and their numbers.
     const auto lineEnd = [&](std::size_t begin) {
@@ -496,8 +516,8 @@ GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
     for (std::size_t begin = 0; begin < text.size(); begin = nextLine(lineEnd(begin)))
         ++lines;
     if (lines > kMaxGcodeLines)
-        throw InvalidInput("program", "has more than the limit of " +
-                                          std::to_string(kMaxGcodeLines) + " lines");
+        throw InvalidInput("program", makeDiagnostic("contour_gcode_too_many_lines",
+                                                     {std::to_string(kMaxGcodeLines)}));
     Reader reader(options);
     std::size_t number = 0;
     // The program end's line is read whole (its motion comes before the end, as RS274/NGC

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/contour/path.h"
+#include "core/model/diagnostic.h"
 
 #include <cstddef>
 #include <string>
@@ -25,7 +26,7 @@ struct GcodeProgram {
     /// Words that were read but do not change the XY path (Z, M3, S, T, ...), each naming its
     /// line ("line 3: Z word ignored (the path is XY only)"); at most kMaxGcodeWarnings, then
     /// one line saying how many more there were.
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
     std::size_t lines = 0; ///< lines read
 
     /// True when the program's feed moves (G1, G2, G3) are exactly one full-circle arc (G0

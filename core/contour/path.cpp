@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/contour/path.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -38,9 +39,9 @@ double norm(Point2 a) {
 
 PathSegment PathSegment::line(Point2 start, Point2 end) {
     if (!finite(start) || !finite(end))
-        throw InvalidInput("segment", "a line's end points must be finite numbers");
+        throw InvalidInput("segment", makeDiagnostic("contour_line_not_finite"));
     if (start == end)
-        throw InvalidInput("segment", "a line must have a nonzero length");
+        throw InvalidInput("segment", makeDiagnostic("contour_line_zero_length"));
     PathSegment s;
     s.kind_ = Kind::Line;
     s.start_ = start;
@@ -48,18 +49,18 @@ PathSegment PathSegment::line(Point2 start, Point2 end) {
     s.centre_ = start;
     s.length_ = norm(end - start);
     if (!std::isfinite(s.length_))
-        throw InvalidInput("segment", "a line's length overflows a double");
+        throw InvalidInput("segment", makeDiagnostic("contour_line_length_overflows"));
     return s;
 }
 
 PathSegment PathSegment::arc(Point2 centre, double radius, double startAngleRad, double sweepRad) {
     if (!finite(centre) || !std::isfinite(radius) || !std::isfinite(startAngleRad) ||
         !std::isfinite(sweepRad))
-        throw InvalidInput("segment", "an arc's centre, radius and angles must be finite numbers");
+        throw InvalidInput("segment", makeDiagnostic("contour_arc_not_finite"));
     if (!(radius > 0.0))
-        throw InvalidInput("segment", "an arc's radius must be greater than zero");
+        throw InvalidInput("segment", makeDiagnostic("contour_arc_radius_not_positive"));
     if (std::abs(sweepRad) > kTwoPi + 1e-12 || sweepRad == 0.0)
-        throw InvalidInput("segment", "an arc's sweep must be nonzero and at most one turn");
+        throw InvalidInput("segment", makeDiagnostic("contour_arc_sweep"));
     PathSegment s;
     s.kind_ = Kind::Arc;
     s.centre_ = centre;
@@ -68,7 +69,7 @@ PathSegment PathSegment::arc(Point2 centre, double radius, double startAngleRad,
     s.sweep_ = std::clamp(sweepRad, -kTwoPi, kTwoPi);
     s.length_ = radius * std::abs(s.sweep_);
     if (!std::isfinite(s.length_))
-        throw InvalidInput("segment", "an arc's length overflows a double");
+        throw InvalidInput("segment", makeDiagnostic("contour_arc_length_overflows"));
     s.start_ = centre + radius * Point2{std::cos(startAngleRad), std::sin(startAngleRad)};
     const double endAngle = startAngleRad + s.sweep_;
     s.end_ = std::abs(s.sweep_) == kTwoPi
@@ -147,13 +148,13 @@ void PathSegment::bounds(double& minX, double& minY, double& maxX, double& maxY)
 
 Path::Path(std::vector<PathSegment> segments) : segments_(std::move(segments)) {
     if (segments_.empty())
-        throw InvalidInput("path", "has no segment");
+        throw InvalidInput("path", makeDiagnostic("contour_has_no_segment"));
     starts_.resize(segments_.size() + 1);
     starts_[0] = 0.0;
     for (std::size_t i = 0; i < segments_.size(); ++i)
         starts_[i + 1] = starts_[i] + segments_[i].length();
     if (!std::isfinite(starts_.back()))
-        throw InvalidInput("path", "its length overflows a double");
+        throw InvalidInput("path", makeDiagnostic("contour_path_length_overflows"));
     std::size_t leaves = (segments_.size() + kLeafSegments - 1) / kLeafSegments;
     std::size_t nodes = 1;
     while (nodes < leaves)
@@ -240,7 +241,7 @@ double Path::sideAtJoin(std::size_t segment, double u, Point2 q, Point2 point) c
 
 PathProjection Path::nearest(Point2 q, std::size_t hintSegment) const {
     if (segments_.empty())
-        throw InvalidInput("path", "has no segment");
+        throw InvalidInput("path", makeDiagnostic("contour_has_no_segment"));
     std::size_t bestSegment = 0;
     PathSegment::Nearest best{0.0, std::numeric_limits<double>::infinity()};
     const auto consider = [&](std::size_t i) {

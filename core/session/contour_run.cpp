@@ -172,8 +172,8 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
         test.reverseLine = program.segments[circles.opposite->begin].line;
         pointsOnSegments(trace, *circles.opposite, test.reverseX, test.reverseY);
     }
-    if (!circles.note.empty())
-        warnings.push_back("ISO 230-4: " + circles.note);
+    if (!circles.note.text.empty())
+        warnings.push_back(makeDiagnostic("field_reason", {"ISO 230-4", circles.note}));
     if (test.x.size() < 3 || (circles.opposite && test.reverseX.size() < 3)) {
         warnings.push_back(makeDiagnostic("iso230_circle_too_short"));
         return std::nullopt;

@@ -314,11 +314,11 @@ namespace {
 /// The stick-slip and hunting findings of the runs of a table with dry friction.
 void addStickSlipWarnings(AxisEvaluation& out) {
     if (const auto f = stickSlipFindings(out.run))
-        for (std::string& w : stickSlipWarnings(*f))
+        for (Diagnostic& w : stickSlipWarnings(*f))
             out.warnings.push_back(std::move(w));
     if (out.digital)
         if (const auto f = stickSlipFindings(out.digital->run.result))
-            for (std::string& w : stickSlipWarnings(*f, "the digital implementation: "))
+            for (Diagnostic& w : stickSlipWarnings(*f, StickSlipRun::digitalImplementation))
                 out.warnings.push_back(std::move(w));
 }
 

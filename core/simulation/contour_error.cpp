@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/contour_error.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace xyt {
 ContourError circleContourError(const std::vector<double>& t, const std::vector<double>& x,
                                 const std::vector<double>& y, const Circle& circle) {
     if (t.size() != x.size() || t.size() != y.size())
-        throw InvalidInput("path", "t, x and y have different lengths");
+        throw InvalidInput("path", makeDiagnostic("sim_txy_different_lengths"));
     ContourError out;
     double sumSquares = 0.0;
     for (std::size_t k = 0; k < t.size(); ++k) {
@@ -24,7 +25,7 @@ ContourError circleContourError(const std::vector<double>& t, const std::vector<
         ++out.samples;
     }
     if (out.samples == 0)
-        throw InvalidInput("path", "no sample after the ramp-in");
+        throw InvalidInput("path", makeDiagnostic("sim_no_sample_after_ramp_in"));
     out.rms = std::sqrt(sumSquares / static_cast<double>(out.samples));
     return out;
 }

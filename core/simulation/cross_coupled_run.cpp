@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/cross_coupled_run.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -15,15 +16,14 @@ CouplingSignals runCrossCoupled(SteppedLoop& x, SteppedLoop& y,
     const double period = x.periodSeconds();
     if (std::abs(period - y.periodSeconds()) > 1e-9 * period)
         throw InvalidInput("cross_coupling",
-                           "needs both axes at one controller period: the x axis runs every " +
-                               formatNumber(period) + " s, the y axis every " +
-                               formatNumber(y.periodSeconds()) + " s");
+                           makeDiagnostic("sim_coupling_periods_differ",
+                                          {formatNumber(period), formatNumber(y.periodSeconds())}));
     const std::size_t n = x.samples();
     if (y.samples() != n || directions.thetaRad.size() != n ||
         directions.curvaturePerMm.size() != n ||
         (!directions.active.empty() && directions.active.size() != n) || x.index() != 0 ||
         y.index() != 0)
-        throw InvalidInput("cross_coupling", "the two axes' runs do not have the same samples");
+        throw InvalidInput("cross_coupling", makeDiagnostic("sim_coupling_samples_differ"));
     CouplingSignals out;
     out.estimate.resize(n);
     out.correction.resize(n);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/discrete_simulation.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -109,11 +110,11 @@ DiscreteRun runRstLoop(const PolePlacementDesign& d, const std::vector<double>& 
 
 void requireReference(const std::vector<double>& r, std::size_t samples, std::size_t needed) {
     if (samples == 0)
-        throw InvalidInput("reference", "needs at least one sample");
+        throw InvalidInput("reference", makeDiagnostic("sim_needs_one_sample"));
     if (r.size() < needed)
-        throw InvalidInput("reference", "needs " + std::to_string(needed) +
-                                            " samples (run length plus preview), got " +
-                                            std::to_string(r.size()));
+        throw InvalidInput("reference",
+                           makeDiagnostic("sim_needs_samples_preview",
+                                          {std::to_string(needed), std::to_string(r.size())}));
 }
 
 } // namespace
@@ -123,7 +124,7 @@ std::vector<double> filterZInverse(const Polynomial& num, const Polynomial& den,
                                    double pastOutput) {
     const double d0 = den.coefficient(0);
     if (d0 == 0.0)
-        throw InvalidInput("den", "the z^0 coefficient must be nonzero (causal filter)");
+        throw InvalidInput("den", makeDiagnostic("sim_filter_not_causal"));
     const std::size_t h = maxDegree({&num, &den});
     History in(h, x.size(), pastInput), out(h, x.size(), pastOutput);
     const auto& nc = num.ascending();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/metrics.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
 
@@ -25,10 +26,10 @@ double rootMeanSquare(const std::vector<double>& v) {
 TrackingMetrics trackingMetrics(const SimulationResult& run) {
     const std::size_t n = run.t.size();
     if (n == 0)
-        throw InvalidInput("result", "the run has no samples");
+        throw InvalidInput("result", makeDiagnostic("sim_run_has_no_samples"));
     if (run.r.size() != n || run.y.size() != n || run.e.size() != n || run.u.size() != n ||
         run.clipped.size() != n)
-        throw InvalidInput("result", "signals of different lengths");
+        throw InvalidInput("result", makeDiagnostic("sim_signals_different_lengths"));
     TrackingMetrics m;
     for (std::size_t k = 0; k < n; ++k) {
         if (!std::isfinite(run.y[k]) || !std::isfinite(run.e[k]) || !std::isfinite(run.u[k])) {
@@ -262,7 +263,7 @@ StepScan scanStep(const StateSpace& ss, double finalValue, double bandAbs, doubl
 StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop, double band,
                                         int samples) {
     if (closedLoop.isDiscrete() || !closedLoop.isProper())
-        throw InvalidInput("system", "must be a continuous, proper transfer function");
+        throw InvalidInput("system", makeDiagnostic("not_continuous_proper"));
     return stepCharacteristics(closedLoop, closedLoop.poles(), band, samples);
 }
 
@@ -270,11 +271,11 @@ StepCharacteristics stepCharacteristics(const TransferFunction& closedLoop,
                                         const std::vector<std::complex<double>>& poles, double band,
                                         int samples) {
     if (closedLoop.isDiscrete() || !closedLoop.isProper())
-        throw InvalidInput("system", "must be a continuous, proper transfer function");
+        throw InvalidInput("system", makeDiagnostic("not_continuous_proper"));
     if (!(band > 0.0 && band < 1.0))
-        throw InvalidInput("band", "must be between 0 and 1");
+        throw InvalidInput("band", makeDiagnostic("sim_between_zero_one"));
     if (samples < 100)
-        throw InvalidInput("samples", "must be at least 100");
+        throw InvalidInput("samples", makeDiagnostic("at_least", {"100"}));
     StepCharacteristics out;
     // Same test as TransferFunction::isStable (real part < 0), on the poles already at hand.
     out.stable = std::all_of(poles.begin(), poles.end(),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/move_settle.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"
 
@@ -15,7 +16,7 @@ MoveSettleAccumulator::MoveSettleAccumulator(const PointToPointMove& move, doubl
     requirePositive(windowMm, "in_position_window_mm");
     if (!std::isfinite(move.startMm) || !std::isfinite(move.targetMm) ||
         !std::isfinite(move.endSeconds))
-        throw InvalidInput("move", "start, target and end time must be finite numbers");
+        throw InvalidInput("move", makeDiagnostic("sim_move_not_finite"));
 }
 
 void MoveSettleAccumulator::add(double t, double y, double e) {
@@ -49,7 +50,7 @@ void MoveSettleAccumulator::add(double t, double y, double e) {
 
 MoveSettleMetrics MoveSettleAccumulator::finish() const {
     if (count_ == 0)
-        throw InvalidInput("run", "has no samples");
+        throw InvalidInput("run", makeDiagnostic("has_no_samples"));
     MoveSettleMetrics m;
     m.windowMm = window_;
     m.moveEndSeconds = move_.endSeconds;
@@ -84,9 +85,9 @@ MoveSettleMetrics moveSettleMetrics(const SimulationResult& run, const PointToPo
                                     double windowMm) {
     const std::size_t n = run.t.size();
     if (n == 0)
-        throw InvalidInput("run", "has no samples");
+        throw InvalidInput("run", makeDiagnostic("has_no_samples"));
     if (run.y.size() != n || run.e.size() != n)
-        throw InvalidInput("run", "signals of different lengths");
+        throw InvalidInput("run", makeDiagnostic("sim_signals_different_lengths"));
     MoveSettleAccumulator acc(move, windowMm);
     for (std::size_t k = 0; k < n; ++k)
         acc.add(run.t[k], run.y[k], run.e[k]);

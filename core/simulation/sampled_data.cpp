@@ -19,16 +19,15 @@ namespace xyt {
 void validateSampledDataOptions(const SampledDataOptions& options) {
     if (options.delaySamples < 0 || options.delaySamples > kMaxDelaySamples)
         throw InvalidInput("delay_samples",
-                           "must be an integer in 0.." + std::to_string(kMaxDelaySamples));
+                           makeDiagnostic("sim_integer_up_to", {std::to_string(kMaxDelaySamples)}));
     if (!std::isfinite(options.encoderResolution) || options.encoderResolution < 0.0)
-        throw InvalidInput("encoder_resolution",
-                           "must be a finite number >= 0 (mm per count; 0: ideal)");
+        throw InvalidInput("encoder_resolution", makeDiagnostic("sim_encoder_resolution"));
     if (options.dacBits < 0 || options.dacBits > 32)
-        throw InvalidInput("dac_bits", "must be an integer in 0..32 (0: ideal DAC)");
+        throw InvalidInput("dac_bits", makeDiagnostic("sim_dac_bits"));
     if (std::isnan(options.umaxVolts) || !(options.umaxVolts > 0.0))
-        throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
+        throw InvalidInput("umax", makeDiagnostic("sim_umax_positive"));
     if (options.dacBits > 0 && !std::isfinite(options.umaxVolts))
-        throw InvalidInput("dac_bits", "a DAC needs a finite actuator limit umax (its full scale)");
+        throw InvalidInput("dac_bits", makeDiagnostic("sim_dac_needs_umax"));
 }
 
 double dacOutput(double volts, int bits, double umaxVolts) {
@@ -43,7 +42,7 @@ double dacOutput(double volts, int bits, double umaxVolts) {
 
 SampledPlant sampledPlant(const TransferFunction& plant, double tsSeconds) {
     if (plant.isDiscrete() || !plant.isStrictlyProper())
-        throw InvalidInput("plant", "must be a continuous, strictly proper transfer function");
+        throw InvalidInput("plant", makeDiagnostic("not_continuous_strictly_proper"));
     requirePositive(tsSeconds, "ts");
     const StateSpace d = discretizeZoh(realize(plant), tsSeconds);
     SampledPlant p;
@@ -57,7 +56,7 @@ SampledPlant sampledPlant(const TransferFunction& plant, double tsSeconds) {
     }
     for (double v : p.phi)
         if (!std::isfinite(v))
-            throw InvalidInput("ts", "the plant's discretization at this sample time overflows");
+            throw InvalidInput("ts", makeDiagnostic("sim_discretization_overflows"));
     return p;
 }
 
@@ -65,12 +64,14 @@ namespace {
 
 void requireFiniteSamples(const std::vector<double>& v, std::size_t count) {
     if (count == 0 || v.size() < count)
-        throw InvalidInput("reference", "needs " + std::to_string(std::max<std::size_t>(count, 1)) +
-                                            " samples, got " + std::to_string(v.size()));
+        throw InvalidInput(
+            "reference",
+            makeDiagnostic("sim_needs_samples", {std::to_string(std::max<std::size_t>(count, 1)),
+                                                 std::to_string(v.size())}));
     for (std::size_t i = 0; i < count; ++i)
         if (!std::isfinite(v[i]))
             throw InvalidInput("reference",
-                               "sample " + std::to_string(i) + " is not a finite number");
+                               makeDiagnostic("sim_sample_not_finite", {std::to_string(i)}));
 }
 
 void resizeRun(SampledDataRun& run, std::size_t n, double ts, double umax) {
@@ -118,10 +119,10 @@ const double* sampledFeedforward(const SampledDataOptions& options, std::size_t 
     if (!options.feedforwardVolts || options.feedforwardVolts->empty())
         return nullptr;
     if (options.feedforwardVolts->size() < n)
-        throw InvalidInput("feedforward", "must have one sample per reference sample");
+        throw InvalidInput("feedforward", makeDiagnostic("sim_one_sample_per_reference"));
     for (double v : *options.feedforwardVolts)
         if (!std::isfinite(v))
-            throw InvalidInput("feedforward", "must be finite");
+            throw InvalidInput("feedforward", makeDiagnostic("sim_must_be_finite"));
     return options.feedforwardVolts->data();
 }
 
@@ -420,13 +421,13 @@ private:
 
 void requireFiniteCommand(const std::vector<MotionSample>& command) {
     if (command.empty())
-        throw InvalidInput("reference", "needs 1 samples, got 0");
+        throw InvalidInput("reference", makeDiagnostic("sim_needs_samples", {"1", "0"}));
     for (std::size_t i = 0; i < command.size(); ++i) {
         const MotionSample& m = command[i];
         if (!std::isfinite(m.position) || !std::isfinite(m.velocity) ||
             !std::isfinite(m.acceleration) || !std::isfinite(m.jerk))
             throw InvalidInput("reference",
-                               "sample " + std::to_string(i) + " is not a finite number");
+                               makeDiagnostic("sim_sample_not_finite", {std::to_string(i)}));
     }
 }
 
@@ -484,7 +485,7 @@ public:
                         : 0.0),
           delay_(options.delaySamples, loop.a(1.0) / loop.b(1.0) * r.front()) {
         if (ffDen_[0] == 0.0)
-            throw InvalidInput("zpetc", "the feedforward's z^0 denominator coefficient is zero");
+            throw InvalidInput("zpetc", makeDiagnostic("sim_zpetc_den_zero"));
         const double rest = r.front();
         const double uRest = loop.a(1.0) / loop.b(1.0) * rest;
         // Histories, newest first: index i holds the value i samples back (shift registers, as
@@ -599,7 +600,7 @@ void checkRstRun(const ZpetcDesign* zpetc, const std::vector<double>& r, std::si
     const std::size_t preview = zpetc ? static_cast<std::size_t>(zpetc->previewSteps) : 0;
     requireFiniteSamples(r, samples + preview);
     if (samples == 0)
-        throw InvalidInput("reference", "needs at least one sample");
+        throw InvalidInput("reference", makeDiagnostic("sim_needs_one_sample"));
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/shaped_reference.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -21,12 +22,12 @@ std::string shapedSeconds(double s) {
 
 void requireShapedShaper(const InputShaper& s) {
     if (s.amplitudes.empty() || s.amplitudes.size() != s.times.size())
-        throw InvalidInput("shaper", "needs as many impulse times as amplitudes (at least one)");
+        throw InvalidInput("shaper", makeDiagnostic("sim_shaper_sizes"));
     for (std::size_t i = 0; i < s.times.size(); ++i) {
         if (!std::isfinite(s.amplitudes[i]) || !std::isfinite(s.times[i]))
-            throw InvalidInput("shaper", "has a value that is not a number");
+            throw InvalidInput("shaper", makeDiagnostic("sim_shaper_not_number"));
         if (i == 0 ? s.times[0] != 0.0 : !(s.times[i] > s.times[i - 1]))
-            throw InvalidInput("shaper", "impulse times must start at 0 and increase");
+            throw InvalidInput("shaper", makeDiagnostic("sim_shaper_times_order"));
     }
 }
 
@@ -75,13 +76,13 @@ ShapedReference shapeReference(const InputShaper& shaper, const std::vector<doub
     requirePositive(moveSeconds, "move");
     requireShapedShaper(shaper);
     if (r.empty())
-        throw InvalidInput("reference", "is empty");
+        throw InvalidInput("reference", makeDiagnostic("is_empty"));
     for (double v : r)
         requireFinite(v, "reference");
     if (shaper.duration() > moveSeconds)
-        throw InvalidInput("shaper.frequency",
-                           "the shaper lasts " + shapedSeconds(shaper.duration()) +
-                               " s, longer than the move of " + shapedSeconds(moveSeconds) + " s");
+        throw InvalidInput("shaper.frequency", makeDiagnostic("sim_shaper_longer_than_move",
+                                                              {shapedSeconds(shaper.duration()),
+                                                               shapedSeconds(moveSeconds)}));
     const std::vector<ShapedImpulse> impulses = shapedImpulses(shaper, dtSeconds);
     ShapedReference out;
     out.addedSamples = shapedAddedSamples(shaper, dtSeconds);
@@ -106,8 +107,8 @@ ShapedReference shapeReference(const InputShaper& shaper, const std::vector<doub
 ShapedPath shapePath(const InputShaper& shaper, const std::vector<double>& x,
                      const std::vector<double>& y, double dtSeconds, double moveSeconds) {
     if (x.size() != y.size())
-        throw InvalidInput("y", "has " + std::to_string(y.size()) + " samples, x has " +
-                                    std::to_string(x.size()));
+        throw InvalidInput("y", makeDiagnostic("sim_y_x_sizes", {std::to_string(y.size()),
+                                                                 std::to_string(x.size())}));
     ShapedReference sx = shapeReference(shaper, x, dtSeconds, moveSeconds);
     ShapedReference sy = shapeReference(shaper, y, dtSeconds, moveSeconds);
     return {std::move(sx.values), std::move(sy.values), sx.addedSamples};
@@ -119,12 +120,12 @@ PathDeviation shapedPathDeviation(const ShapedPath& shaped, const std::vector<do
     requirePositive(dtSeconds, "dt");
     requireShapedShaper(shaper);
     if (x.empty())
-        throw InvalidInput("x", "is empty");
+        throw InvalidInput("x", makeDiagnostic("is_empty"));
     if (x.size() != y.size())
-        throw InvalidInput("y", "has " + std::to_string(y.size()) + " samples, x has " +
-                                    std::to_string(x.size()));
+        throw InvalidInput("y", makeDiagnostic("sim_y_x_sizes", {std::to_string(y.size()),
+                                                                 std::to_string(x.size())}));
     if (shaped.x.size() != shaped.y.size())
-        throw InvalidInput("shaped.y", "differs in size from shaped.x");
+        throw InvalidInput("shaped.y", makeDiagnostic("sim_shaped_sizes_differ"));
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
     const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(shapedAddedSamples(shaper, dtSeconds));
     PathDeviation out;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/simulation.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
 #include "core/simulation/loop_stepper.h"
@@ -18,10 +19,10 @@ namespace {
 
 void requireFiniteSignal(const std::vector<double>& v, const std::string& field) {
     if (v.empty())
-        throw InvalidInput(field, "has no samples");
+        throw InvalidInput(field, makeDiagnostic("has_no_samples"));
     for (std::size_t i = 0; i < v.size(); ++i)
         if (!std::isfinite(v[i]))
-            throw InvalidInput(field, "sample " + std::to_string(i) + " is not a finite number");
+            throw InvalidInput(field, makeDiagnostic("sim_sample_not_finite", {std::to_string(i)}));
 }
 
 /// x <- phi x + g0 w + g1 rho, with raw loops: the matrices are tiny and this is the hot path.
@@ -46,7 +47,7 @@ StepMatrices fohStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double 
         FohDiscretization foh = discretizeFoh(a, b, dt);
         return {std::move(foh.phi), std::move(foh.gamma0), std::move(foh.gamma1)};
     } catch (const InvalidInput& e) {
-        throw InvalidInput("dt", e.reason()); // the simulation's step is the user's dt
+        throw InvalidInput("dt", e.reasonDiagnostic()); // the simulation's step is the user's dt
     }
 }
 
@@ -54,9 +55,9 @@ StepMatrices fohStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double 
 
 LoopModes loopModes(const TransferFunction& plant, const TransferFunction& controller) {
     if (plant.isDiscrete() || !plant.isStrictlyProper())
-        throw InvalidInput("plant", "must be a continuous, strictly proper transfer function");
+        throw InvalidInput("plant", makeDiagnostic("not_continuous_strictly_proper"));
     if (controller.isDiscrete() || !controller.isProper())
-        throw InvalidInput("controller", "must be a continuous, proper transfer function");
+        throw InvalidInput("controller", makeDiagnostic("not_continuous_proper"));
     const StateSpace p = realize(plant);
     const StateSpace c = realize(controller);
     LoopModes m;
@@ -210,7 +211,7 @@ PreparedLoop prepareLoop(const TransferFunction& plant, const TransferFunction& 
     PreparedLoop out{loopModes(plant, controller), nullptr, {}};
     requirePositive(options.dtSeconds, "dt");
     if (std::isnan(options.umaxVolts) || !(options.umaxVolts > 0.0))
-        throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
+        throw InvalidInput("umax", makeDiagnostic("sim_umax_positive"));
     requireFinite(options.initialOutput, "initial_output");
     requirePositive(options.modelUnitsPerPositionUnit, "model_unit_scale");
     requireFiniteSignal(reference, "reference");
@@ -220,7 +221,7 @@ PreparedLoop prepareLoop(const TransferFunction& plant, const TransferFunction& 
     const Eigen::Index n = np + modes.controllerStates;
     if (options.feedforwardVolts && !options.feedforwardVolts->empty()) {
         if (options.feedforwardVolts->size() != reference.size())
-            throw InvalidInput("feedforward", "must have one sample per reference sample");
+            throw InvalidInput("feedforward", makeDiagnostic("sim_one_sample_per_reference"));
         requireFiniteSignal(*options.feedforwardVolts, "feedforward");
         out.ff = options.feedforwardVolts->data();
     }
@@ -233,8 +234,7 @@ PreparedLoop prepareLoop(const TransferFunction& plant, const TransferFunction& 
         rhs(np) = options.initialOutput * unit;
         const Eigen::VectorXd xp = m.completeOrthogonalDecomposition().solve(rhs);
         if ((m * xp - rhs).norm() > 1e-9 * (1.0 + std::abs(options.initialOutput)))
-            throw InvalidInput("initial_output",
-                               "the plant has no pole at s = 0, so it cannot rest away from 0");
+            throw InvalidInput("initial_output", makeDiagnostic("sim_plant_cannot_rest_away"));
         for (Eigen::Index i = 0; i < np; ++i)
             out.x[static_cast<std::size_t>(i)] = xp(i);
     }
@@ -402,7 +402,7 @@ SimulationResult simulateLoop(const TransferFunction& plant, const TransferFunct
 std::vector<double> simulateLinear(const TransferFunction& system, const std::vector<double>& input,
                                    double dtSeconds) {
     if (system.isDiscrete() || !system.isProper())
-        throw InvalidInput("system", "must be a continuous, proper transfer function");
+        throw InvalidInput("system", makeDiagnostic("not_continuous_proper"));
     requirePositive(dtSeconds, "dt");
     requireFiniteSignal(input, "input");
     const StateSpace ss = realize(system);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/step_envelope.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -16,9 +17,9 @@ double StepEnvelope::overshootBound() const {
 
 std::vector<bool> envelopeViolations(const StepResponseCurve& curve, const StepEnvelope& envelope) {
     if (curve.t.size() != curve.y.size())
-        throw InvalidInput("curve", "t and y must have the same length");
+        throw InvalidInput("curve", makeDiagnostic("sim_ty_same_length"));
     if (!std::isfinite(envelope.finalValue) || !(envelope.band > 0.0 && envelope.band < 1.0))
-        throw InvalidInput("envelope", "needs a finite final value and a band in (0, 1)");
+        throw InvalidInput("envelope", makeDiagnostic("sim_envelope_invalid"));
     const double bound = envelope.overshootBound();
     const double halfBand = envelope.band * std::abs(envelope.finalValue);
     std::vector<bool> out(curve.y.size(), false);
@@ -34,7 +35,7 @@ std::vector<bool> envelopeViolations(const StepResponseCurve& curve, const StepE
 double stepViewHorizonSeconds(const StepCharacteristics& step, double minimumSeconds,
                               double settlingLimitSeconds) {
     if (!(minimumSeconds >= 0.0) || !std::isfinite(minimumSeconds))
-        throw InvalidInput("minimumSeconds", "must be a finite number >= 0");
+        throw InvalidInput("minimumSeconds", makeDiagnostic("finite_not_negative"));
     const double floor = minimumSeconds > 0.0 ? minimumSeconds : 1.0;
     if (!step.stable)
         return floor;

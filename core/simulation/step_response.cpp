@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/step_response.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/simulation/discrete_simulation.h"
 #include "core/simulation/simulation.h"
@@ -14,9 +15,9 @@ namespace xyt {
 StepResponseCurve stepResponseCurve(const TransferFunction& closedLoop, double horizonSeconds,
                                     int samples) {
     if (!(horizonSeconds > 0.0) || !std::isfinite(horizonSeconds))
-        throw InvalidInput("horizon", "must be a finite number greater than zero");
+        throw InvalidInput("horizon", makeDiagnostic("finite_positive"));
     if (samples < 10 || samples > 1000000)
-        throw InvalidInput("samples", "must lie in 10 .. 1000000");
+        throw InvalidInput("samples", makeDiagnostic("sim_samples_range"));
     StepResponseCurve out;
     const double ts = closedLoop.tsSeconds();
     if (ts > 0.0) {
@@ -40,7 +41,7 @@ StepResponseCurve stepResponseCurve(const TransferFunction& closedLoop, double h
 StepResponseCurve zpetcStepResponseCurve(const PolePlacementDesign& loop, const ZpetcDesign& zpetc,
                                          double horizonSeconds) {
     if (!(horizonSeconds > 0.0) || !std::isfinite(horizonSeconds))
-        throw InvalidInput("horizon", "must be a finite number greater than zero");
+        throw InvalidInput("horizon", makeDiagnostic("finite_positive"));
     const double ts = loop.tsSeconds;
     const std::size_t preview = static_cast<std::size_t>(std::max(zpetc.previewSteps, 0));
     const std::size_t stepAt =
@@ -62,11 +63,11 @@ StepResponseCurve zpetcStepResponseCurve(const PolePlacementDesign& loop, const 
 RiseTime riseTime(const StepResponseCurve& curve, double finalValue, double lowFraction,
                   double highFraction) {
     if (curve.t.size() != curve.y.size() || curve.t.size() < 2)
-        throw InvalidInput("curve", "t and y must have the same length, at least 2");
+        throw InvalidInput("curve", makeDiagnostic("sim_ty_same_length_two"));
     if (!std::isfinite(finalValue) || finalValue == 0.0)
-        throw InvalidInput("finalValue", "must be a finite number other than zero");
+        throw InvalidInput("finalValue", makeDiagnostic("sim_finite_nonzero"));
     if (!(lowFraction >= 0.0 && lowFraction < highFraction && highFraction <= 1.0))
-        throw InvalidInput("fractions", "must satisfy 0 <= low < high <= 1");
+        throw InvalidInput("fractions", makeDiagnostic("sim_fractions_order"));
     // The first instant at which y / final reaches the level (dividing by the final value lets
     // a response to a negative final value rise "up" as well).
     const auto crossing = [&](double level) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/stick_slip.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/number_format.h"
 
 #include <algorithm>
@@ -58,20 +59,25 @@ std::optional<StickSlipFindings> stickSlipFindings(const SimulationResult& run) 
     return out;
 }
 
-std::vector<std::string> stickSlipWarnings(const StickSlipFindings& f, const std::string& what) {
-    std::vector<std::string> out;
-    const auto times = [](int n) {
-        return n == 1 ? std::string("once") : std::to_string(n) + " times";
+std::vector<Diagnostic> stickSlipWarnings(const StickSlipFindings& f, StickSlipRun run) {
+    std::vector<Diagnostic> out;
+    const auto timesDiagnostic = [](int n) {
+        return n == 1 ? makeDiagnostic("sim_once")
+                      : makeDiagnostic("sim_times", {std::to_string(n)});
+    };
+    const auto ofRunDiagnostic = [run](Diagnostic finding) {
+        return run == StickSlipRun::digitalImplementation
+                   ? makeDiagnostic("sim_digital_implementation_finding", {std::move(finding)})
+                   : finding;
     };
     if (f.stopsDuringMove > 0)
-        out.push_back(what + "stick-slip during the move: the table stopped " +
-                      times(f.stopsDuringMove) + " while the reference kept moving (first at t = " +
-                      formatNumber(f.firstStopSeconds, 4) + " s)");
+        out.push_back(ofRunDiagnostic(
+            makeDiagnostic("sim_stick_slip_during_move", {timesDiagnostic(f.stopsDuringMove),
+                                                          formatNumber(f.firstStopSeconds, 4)})));
     if (f.breakawaysAtRest >= 2)
-        out.push_back(what + "hunting at rest: the integral action broke the table free " +
-                      times(f.breakawaysAtRest) + " after the move (" +
-                      formatNumber(1000.0 * f.restPeakToPeakMm, 3) +
-                      " um peak to peak): integral action against stiction");
+        out.push_back(ofRunDiagnostic(
+            makeDiagnostic("sim_hunting_at_rest", {timesDiagnostic(f.breakawaysAtRest),
+                                                   formatNumber(1000.0 * f.restPeakToPeakMm, 3)})));
     return out;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/simulation/simulation.h"
 
 #include <optional>
@@ -27,9 +28,12 @@ struct StickSlipFindings {
 /// @return none for a run without dry friction (sliding empty).
 std::optional<StickSlipFindings> stickSlipFindings(const SimulationResult& run);
 
-/// The warnings of @p findings (none when there is nothing to say), prefixed by @p what (e.g.
-/// "the digital run: ").
-std::vector<std::string> stickSlipWarnings(const StickSlipFindings& findings,
-                                           const std::string& what = "");
+/// Which run the findings are of: the continuous run's are said as they are, the digital
+/// implementation's are prefixed "the digital implementation: ".
+enum class StickSlipRun { continuous, digitalImplementation };
+
+/// The coded warnings of @p findings (none when there is nothing to say), of the run @p run.
+std::vector<Diagnostic> stickSlipWarnings(const StickSlipFindings& findings,
+                                          StickSlipRun run = StickSlipRun::continuous);
 
 } // namespace xyt

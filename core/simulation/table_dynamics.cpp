@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/table_dynamics.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
 #include "core/simulation/loop_stepper.h"
@@ -23,18 +24,17 @@ TableMechanics tableMechanics(const TransferFunction& plant, const TableFriction
     requirePositive(modelUnitsPerMm, "model_unit_scale");
     const auto& num = plant.num().ascending();
     const auto& den = plant.den().ascending();
-    const char* shape = "must be k0 / (s (s^2 + a1 s + a2)) with k0 > 0 for the table's friction";
+    const auto shapeDiagnostic = [] { return makeDiagnostic("sim_table_plant_shape"); };
     if (plant.isDiscrete() || plant.num().degree() != 0 || plant.den().degree() != 3 ||
         den[0] != 0.0)
-        throw InvalidInput("plant", shape);
+        throw InvalidInput("plant", shapeDiagnostic());
     const double lead = den[3];
     const double k0 = num[0] / lead, a1 = den[2] / lead, a2 = den[1] / lead;
     if (!(k0 > 0.0) || !std::isfinite(k0))
-        throw InvalidInput("plant", shape);
+        throw InvalidInput("plant", shapeDiagnostic());
     const double disc = a1 * a1 - 4.0 * a2;
     if (!(disc >= 0.0) || !(a1 > 0.0) || a2 < 0.0)
-        throw InvalidInput("plant", "the poles of s^2 + a1 s + a2 must be real and stable to "
-                                    "split the plant into an electrical lag and a moving mass");
+        throw InvalidInput("plant", makeDiagnostic("sim_table_poles_not_real"));
     // Roots of s^2 + a1 s + a2 as -fast and -slow, the smaller one from the product (no
     // cancellation).
     const double fast = 0.5 * (a1 + std::sqrt(disc));
@@ -43,8 +43,7 @@ TableMechanics tableMechanics(const TransferFunction& plant, const TableFriction
     m.electricalPole = friction.electricalPole == ElectricalPole::Faster ? fast : slow;
     m.mechanicalPole = friction.electricalPole == ElectricalPole::Faster ? slow : fast;
     if (!(m.electricalPole > 0.0))
-        throw InvalidInput("plant", "the electrical pole must be > 0 (a2 = 0 leaves one pole at "
-                                    "0, which can only be the mechanical one)");
+        throw InvalidInput("plant", makeDiagnostic("sim_table_electrical_pole"));
     m.forceGain = k0 / m.electricalPole;
     m.coulomb = friction.coulombVolts;
     m.breakaway = friction.breakawayVolts();
@@ -406,9 +405,8 @@ public:
         const StateSpace c = realize(controller);
         nc_ = static_cast<int>(c.states());
         if (nc_ + 3 > kMaxStates)
-            throw InvalidInput("controller",
-                               "has more states than the friction simulation holds (" +
-                                   std::to_string(kMaxStates - 3) + ")");
+            throw InvalidInput("controller", makeDiagnostic("sim_table_controller_states",
+                                                            {std::to_string(kMaxStates - 3)}));
         const auto size = static_cast<std::size_t>(nc_);
         ac_.resize(size * size);
         bc_.resize(size);
@@ -426,7 +424,7 @@ public:
             if (a->rows() > 0)
                 rate = std::max(rate, a->eigenvalues().cwiseAbs().maxCoeff());
         if (options.tableSubsteps < 0)
-            throw InvalidInput("table_substeps", "must be >= 0 (0: automatic)");
+            throw InvalidInput("table_substeps", makeDiagnostic("sim_substeps_not_negative"));
         steps_ = options.tableSubsteps > 0 ? options.tableSubsteps : substepsFor(rate, dt_, 1);
         h_ = dt_ / steps_;
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/tracking_batch.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
 
@@ -21,7 +22,7 @@ FohDiscretization modeStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, d
     try {
         return discretizeFoh(a, b, dt);
     } catch (const InvalidInput& e) {
-        throw InvalidInput("dt", e.reason());
+        throw InvalidInput("dt", e.reasonDiagnostic());
     }
 }
 
@@ -238,15 +239,15 @@ void trackBatch(std::span<const LoopModes> lanes, const TrackingRun& run,
                 std::span<MoveSettleAccumulator* const> moves,
                 std::span<std::optional<TrackingMetrics>> results, int width) {
     if (results.size() != lanes.size() || (!moves.empty() && moves.size() != lanes.size()))
-        throw InvalidInput("lanes", "the results and moves must have one entry per loop");
+        throw InvalidInput("lanes", makeDiagnostic("sim_batch_lanes"));
     if (!run.reference || run.reference->empty())
-        throw InvalidInput("reference", "has no samples");
+        throw InvalidInput("reference", makeDiagnostic("has_no_samples"));
     requirePositive(run.dtSeconds, "dt");
     if (std::isnan(run.umaxVolts) || !(run.umaxVolts > 0.0))
-        throw InvalidInput("umax", "must be greater than zero (infinity for no limit)");
+        throw InvalidInput("umax", makeDiagnostic("sim_umax_positive"));
     requirePositive(run.modelUnitsPerPositionUnit, "model_unit_scale");
     if (run.feedforwardVolts && run.feedforwardVolts->size() != run.reference->size())
-        throw InvalidInput("feedforward", "must have one sample per reference sample");
+        throw InvalidInput("feedforward", makeDiagnostic("sim_one_sample_per_reference"));
     const auto [lo, hi] = std::minmax_element(run.reference->begin(), run.reference->end());
     const double travel = *hi - *lo; // as trackingMetrics: max r - min r
     switch (width) {
@@ -259,7 +260,7 @@ void trackBatch(std::span<const LoopModes> lanes, const TrackingRun& run,
     case 8:
         return runAll<8>(lanes, run, travel, moves, results);
     default:
-        throw InvalidInput("batch_width", "must be 1, 2, 4 or 8");
+        throw InvalidInput("batch_width", makeDiagnostic("sim_batch_width"));
     }
 }
 

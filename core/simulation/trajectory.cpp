@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/trajectory.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -27,7 +28,7 @@ CubicTrajectory::CubicTrajectory(double x0, double xf, double t0Seconds, double 
     requirePosition(v0, "v0");
     requirePosition(vf, "vf");
     if (!(tfSeconds > t0Seconds))
-        throw InvalidInput("tf", "must be later than t0");
+        throw InvalidInput("tf", makeDiagnostic("sim_tf_after_t0"));
     const double T = tfSeconds - t0Seconds;
     const double D = xf - x0;
     local_ = {x0, v0, (3.0 * D - (2.0 * v0 + vf) * T) / (T * T),
@@ -107,7 +108,7 @@ void Sinusoid::validate() const {
     requirePosition(amplitude, "amplitude");
     requirePosition(offset, "offset");
     if (rampInSeconds < 0.0)
-        throw InvalidInput("ramp_in", "must be >= 0");
+        throw InvalidInput("ramp_in", makeDiagnostic("not_negative"));
 }
 
 double Sinusoid::value(double t) const {
@@ -151,9 +152,7 @@ void requirePosition(double value, const std::string& field) {
         char shown[32];
         std::snprintf(shown, sizeof shown, "%.6g", value);
         throw InvalidInput(field,
-                           std::string(shown) +
-                               " is beyond the 1e9 mm (1000 km) that any "
-                               "table could move; refused before it overflows the simulation");
+                           makeDiagnostic("sim_position_beyond_limit", {std::string(shown)}));
     }
 }
 
@@ -182,23 +181,23 @@ std::vector<double> sampleTimes(double durationSeconds, double dtSeconds) {
     requirePositive(dtSeconds, "dt");
     requireFinite(durationSeconds, "duration");
     if (durationSeconds < 0.0)
-        throw InvalidInput("duration", "must be >= 0");
+        throw InvalidInput("duration", makeDiagnostic("not_negative"));
     const double count = std::floor(durationSeconds / dtSeconds + 1e-9) + 1.0;
     const std::size_t limit = sampleLimit();
     if (!(count <= static_cast<double>(limit))) { // also inf (dt = 5e-324)
         char needs[32], memory[32];
         std::snprintf(needs, sizeof needs, "%.3g", count); // never cast an out-of-range count
         std::snprintf(memory, sizeof memory, "%.3g", physicalMemoryBytes() / 1e9);
+        const Diagnostic needed =
+            std::isfinite(count) ? Diagnostic(needs) : makeDiagnostic("sim_more_than", {"1e308"});
         throw InvalidInput(
             "duration",
-            std::string("needs ") + (std::isfinite(count) ? needs : "more than 1e308") +
-                " samples at this dt; the limit is " + std::to_string(limit) +
-                (limit < kMaxSamples
-                     ? std::string(" on this machine (") +
-                           std::to_string(static_cast<int>(kSampleMemoryFraction * 100)) +
-                           " % of its " + memory + " GB of memory at " +
-                           std::to_string(static_cast<int>(kBytesPerSample)) + " bytes per sample)"
-                     : std::string()));
+            limit < kMaxSamples
+                ? makeDiagnostic("sim_samples_beyond_memory",
+                                 {needed, std::to_string(limit),
+                                  std::to_string(static_cast<int>(kSampleMemoryFraction * 100)),
+                                  memory, std::to_string(static_cast<int>(kBytesPerSample))})
+                : makeDiagnostic("sim_samples_beyond_limit", {needed, std::to_string(limit)}));
     }
     std::vector<double> t(static_cast<std::size_t>(count));
     for (std::size_t k = 0; k < t.size(); ++k)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/zpetc_step.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/simulation/discrete_simulation.h"
 
@@ -12,7 +13,7 @@ namespace xyt {
 StepCharacteristics zpetcStepCharacteristics(const PolePlacementDesign& loop,
                                              const ZpetcDesign& zpetc, double band) {
     if (!(band > 0.0 && band < 1.0))
-        throw InvalidInput("band", "must lie in (0, 1)");
+        throw InvalidInput("band", makeDiagnostic("sim_lie_in_zero_one"));
     StepCharacteristics out;
     const TransferFunction cl = loop.closedLoop();
     out.stable = cl.isStable();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/simulation/zpetc_tracking.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -38,9 +39,9 @@ ZpetcTrackingRun runZpetcTracking(const PolePlacementDesign& loop, const ZpetcDe
     run.t = sampleTimes(durationSeconds, loop.tsSeconds);
     const std::size_t n = run.t.size();
     if (n < 2) // one sample: every error figure would read 0, which is not a result
-        throw InvalidInput("duration", "gives a single sample (Ts " + formatNumber(loop.tsSeconds) +
-                                           " s, duration " + formatNumber(durationSeconds) +
-                                           " s); at least two samples are needed for the metrics");
+        throw InvalidInput("duration",
+                           makeDiagnostic("sim_single_sample", {formatNumber(loop.tsSeconds),
+                                                                formatNumber(durationSeconds)}));
     const auto p = static_cast<std::size_t>(zpetc.previewSteps);
     // The last time read (preview included) and its phase omega t must be finite, or sin() gives
     // NaN for a run that looks valid (found by fuzz_design with Ts = 1.8e308; regression input
@@ -48,8 +49,7 @@ ZpetcTrackingRun runZpetcTracking(const PolePlacementDesign& loop, const ZpetcDe
     const double lastTime = static_cast<double>(n + p) * loop.tsSeconds;
     if (!std::isfinite(lastTime) ||
         !std::isfinite(reference.omegaRadPerSec * lastTime + reference.phaseRad))
-        throw InvalidInput("duration", "the last sample time of the run, or omega times it, "
-                                       "overflows a double");
+        throw InvalidInput("duration", makeDiagnostic("sim_time_overflows"));
     std::vector<double> previewed(n + p);
     for (std::size_t k = 0; k < n + p; ++k)
         previewed[k] = reference.value(static_cast<double>(k) * loop.tsSeconds);
@@ -71,7 +71,7 @@ ZpetcCircleRun runZpetcCircle(const PolePlacementDesign& xLoop, const ZpetcDesig
                               const PolePlacementDesign& yLoop, const ZpetcDesign& yZpetc,
                               const Circle& circle, double durationSeconds, StartCondition start) {
     if (xLoop.tsSeconds != yLoop.tsSeconds)
-        throw InvalidInput("ts", "the two axes must share one sample time");
+        throw InvalidInput("ts", makeDiagnostic("sim_axes_share_ts"));
     ZpetcCircleRun out;
     out.x = runZpetcTracking(xLoop, xZpetc, circle.xAxis(), durationSeconds, start);
     out.y = runZpetcTracking(yLoop, yZpetc, circle.yAxis(), durationSeconds, start);

@@ -204,8 +204,15 @@ void TstGcodeReader::commentsBlockNumbersAndWarnings() {
     // Z, M3 and S each warn, naming line 4.
     QCOMPARE(p.warnings.size(), std::size_t(3));
     for (const auto& w : p.warnings)
-        QVERIFY2(w.rfind("line 4: ", 0) == 0, w.c_str());
-    QVERIFY(p.warnings[0].find("Z5") != std::string::npos);
+        QVERIFY2(w.text.rfind("line 4: ", 0) == 0, w.text.c_str());
+    QVERIFY(p.warnings[0].text.find("Z5") != std::string::npos);
+    // Each warning is coded "line %1: %2", its reason coded in turn (the workbench translates
+    // both), the English unchanged.
+    QCOMPARE(p.warnings[0].code, std::string("contour_gcode_line_warning"));
+    QCOMPARE(p.warnings[0].args.at(0).text, std::string("4"));
+    QCOMPARE(p.warnings[0].args.at(1).code, std::string("contour_gcode_ignored_z"));
+    QCOMPARE(p.warnings[0].args.at(1).args.at(0).text, std::string("Z5"));
+    QCOMPARE(p.warnings[0].text, std::string("line 4: Z5 ignored (the path is XY only)"));
     // The warnings are bounded: 150 Z words keep 100 and count the rest.
     std::string many = "G0 X1\n";
     for (int i = 0; i < 150; ++i)
@@ -213,6 +220,18 @@ void TstGcodeReader::commentsBlockNumbersAndWarnings() {
     const auto bounded = readGcode(many).warnings;
     QCOMPARE(bounded.size(), xyt::kMaxGcodeWarnings + 1);
     QCOMPARE(bounded.back(), std::string("... and 50 more warnings"));
+    QCOMPARE(bounded.back().code, std::string("contour_gcode_more_warnings"));
+    // A refusal names the line as its field and gives its reason coded, the column an argument.
+    try {
+        readGcode("G1 X1 F60\nG1 X2 Q7\n");
+        QFAIL("an unknown word was accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.field(), std::string("line 2"));
+        QCOMPARE(e.reasonDiagnostic().code, std::string("contour_gcode_unknown_word"));
+        QCOMPARE(e.reasonDiagnostic().args.at(0).text, std::string("Q7"));
+        QCOMPARE(e.reasonDiagnostic().args.at(1).text, std::string("7"));
+        QCOMPARE(e.reason(), std::string("unknown word Q7 at column 7"));
+    }
 }
 
 void TstGcodeReader::programEndStopsReadingSilently_data() {
@@ -241,7 +260,7 @@ void TstGcodeReader::programEndStopsReadingSilently() {
     QCOMPARE(p.path.size(), std::size_t(segments));
     QCOMPARE(p.lines, std::size_t(lines));
     if (warning.isEmpty()) {
-        QVERIFY2(p.warnings.empty(), p.warnings.empty() ? "" : p.warnings.front().c_str());
+        QVERIFY2(p.warnings.empty(), p.warnings.empty() ? "" : p.warnings.front().text.c_str());
     } else {
         QCOMPARE(p.warnings.size(), std::size_t(1));
         QCOMPARE(QString::fromStdString(p.warnings.front()), warning);

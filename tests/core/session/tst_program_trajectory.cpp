@@ -282,8 +282,8 @@ void TstProgramTrajectory::ballbarProgramCirclesAreFound() {
     QCOMPARE(c.first ? int(c.first->end) : -1, firstEnd);
     QCOMPARE(c.opposite ? int(c.opposite->begin) : -1, opposite);
     QCOMPARE(c.opposite ? int(c.opposite->end) : -1, oppositeEnd);
-    QVERIFY2(note.isEmpty() ? c.note.empty() : QString::fromStdString(c.note).contains(note),
-             c.note.c_str());
+    QVERIFY2(note.isEmpty() ? c.note.text.empty() : QString::fromStdString(c.note).contains(note),
+             c.note.text.c_str());
 }
 
 void TstProgramTrajectory::ballbarFiguresOfAKnownRadialDeviation_data() {

@@ -351,6 +351,24 @@ void TstSimulation::errorsNameTheField() {
                                    }));
              }),
              QString("dt"));
+    // The refusals carry their codes and arguments (the workbench translates them), with the
+    // English unchanged.
+    try {
+        xyt::simulateLoop(g, c, {0.0, std::nan("")}, ok);
+        QFAIL("a NaN reference was accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("sim_sample_not_finite"));
+        QCOMPARE(e.reasonDiagnostic().args.size(), std::size_t(1));
+        QCOMPARE(e.reasonDiagnostic().args.at(0).text, std::string("1"));
+        QCOMPARE(std::string(e.what()), std::string("reference: sample 1 is not a finite number"));
+    }
+    try {
+        xyt::simulateLoop(g, c, r, with([](auto& o) { o.umaxVolts = 0.0; }));
+        QFAIL("umax = 0 was accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("sim_umax_positive"));
+        QCOMPARE(e.reason(), std::string("must be greater than zero (infinity for no limit)"));
+    }
 }
 
 QTEST_APPLESS_MAIN(TstSimulation)

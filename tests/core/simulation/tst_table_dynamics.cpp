@@ -9,6 +9,7 @@
 #include "core/model/errors.h"
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/simulation.h"
+#include "core/simulation/stick_slip.h"
 #include "core/simulation/table_dynamics.h"
 #include "core/simulation/trajectory.h"
 #include "tests/support/core_checks.h"
@@ -392,6 +393,26 @@ private slots:
         const SampledDataRun table = simulateSampledPi(p.transferFunction(), pi, r, o, 0.001);
         const double diff = maxDiff(linear.result.y, table.result.y);
         QVERIFY2(diff < 2e-6 * 600.0, qPrintable(QString::number(diff)));
+    }
+
+    void stickSlipWarningsAreCoded() {
+        // The findings reach the user as coded warnings (the workbench translates each, the
+        // count of stops a coded argument of its own), the English unchanged.
+        StickSlipFindings f;
+        f.stopsDuringMove = 2;
+        f.firstStopSeconds = 0.125;
+        const std::vector<Diagnostic> plain = stickSlipWarnings(f);
+        QCOMPARE(plain.size(), std::size_t(1));
+        QCOMPARE(plain[0].code, std::string("sim_stick_slip_during_move"));
+        QCOMPARE(plain[0].args.at(0).code, std::string("sim_times"));
+        QCOMPARE(plain[0].text, std::string("stick-slip during the move: the table stopped 2 "
+                                            "times while the reference kept moving (first at "
+                                            "t = 0.125 s)"));
+        const std::vector<Diagnostic> digital =
+            stickSlipWarnings(f, StickSlipRun::digitalImplementation);
+        QCOMPARE(digital.at(0).code, std::string("sim_digital_implementation_finding"));
+        QCOMPARE(digital.at(0).args.at(0), plain[0]);
+        QCOMPARE(digital.at(0).text, "the digital implementation: " + plain[0].text);
     }
 };
 
