@@ -205,11 +205,9 @@ void TstDiophantine::commonRootIsAnError() {
         // The reason carries its code and the root as an argument, for the translation.
         QCOMPARE(e.reasonDiagnostic().code, std::string("design_common_factor_root"));
         QCOMPARE(e.reasonDiagnostic().args.size(), std::size_t(2));
-        const std::string root = e.reasonDiagnostic().args[0].text;
-        QVERIFY2(root.rfind("0.5 ", 0) == 0, root.c_str());
-        QCOMPARE(e.reason(), "shares the root z = " + root +
-                                 " with A (common factor of A and B): A F + B G = T has no "
-                                 "solution (Sylvester condition number " +
+        QCOMPARE(e.reasonDiagnostic().args[0].text, std::string("0.5"));
+        QCOMPARE(e.reason(), "shares the root z = 0.5 with A (common factor of A and B): "
+                             "A F + B G = T has no solution (Sylvester condition number " +
                                  e.reasonDiagnostic().args[1].text + ")");
     }
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
