@@ -405,7 +405,7 @@ QString structureName(PidStructure s) {
     return s == PidStructure::Pi ? "pi" : "pid";
 }
 
-QJsonArray textArray(const std::vector<std::string>& lines) {
+QJsonArray textArray(const std::vector<Diagnostic>& lines) {
     QJsonArray out;
     for (const std::string& line : lines)
         out.append(QString::fromStdString(line));

@@ -66,7 +66,7 @@ PolePlacementDesign parseDesign(const CliArgs& args) {
     return namingArguments([&] { return designPolePlacement(a, b, t, ts); });
 }
 
-QJsonArray strings(const std::vector<std::string>& v) {
+QJsonArray strings(const std::vector<Diagnostic>& v) {
     QJsonArray a;
     for (const auto& s : v)
         a.append(QString::fromStdString(s));

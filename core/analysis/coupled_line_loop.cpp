@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/coupled_line_loop.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/state_space.h"
 
@@ -28,16 +29,16 @@ constexpr double kLineLoopNegligibleGain = 1e-12;
 void lineLoopRequireModel(const SampledAxisModel& m, const std::string& field) {
     const Eigen::Index n = m.phi.rows();
     if (n == 0)
-        throw InvalidInput(field, "has no state");
+        throw InvalidInput(field, makeDiagnostic("analysis_model_has_no_state"));
     if (m.phi.cols() != n || m.gamma.size() != n || m.c.size() != n)
-        throw InvalidInput(field, "phi (" + std::to_string(m.phi.rows()) + " x " +
-                                      std::to_string(m.phi.cols()) + "), gamma (" +
-                                      std::to_string(m.gamma.size()) + ") and c (" +
-                                      std::to_string(m.c.size()) + ") sizes disagree");
+        throw InvalidInput(
+            field, makeDiagnostic("analysis_model_sizes_disagree",
+                                  {std::to_string(m.phi.rows()), std::to_string(m.phi.cols()),
+                                   std::to_string(m.gamma.size()), std::to_string(m.c.size())}));
     if (!m.phi.allFinite() || !m.gamma.allFinite() || !m.c.allFinite())
-        throw InvalidInput(field, "has a coefficient that is not a finite number");
+        throw InvalidInput(field, makeDiagnostic("analysis_model_not_finite"));
     if (!(m.periodSeconds > 0.0) || !std::isfinite(m.periodSeconds))
-        throw InvalidInput("period", "must be a finite number greater than zero");
+        throw InvalidInput("period", makeDiagnostic("finite_positive"));
 }
 
 std::vector<std::complex<double>> lineLoopEigenvalues(const Eigen::MatrixXd& m) {
@@ -310,9 +311,9 @@ SampledAxisModel continuousAxisModel(const TransferFunction& plant,
                                      double periodSeconds) {
     // The wording of loopModes (core/simulation), which this module may not include.
     if (plant.isDiscrete() || !plant.isStrictlyProper())
-        throw InvalidInput("plant", "must be a continuous, strictly proper transfer function");
+        throw InvalidInput("plant", makeDiagnostic("not_continuous_strictly_proper"));
     if (controller.isDiscrete() || !controller.isProper())
-        throw InvalidInput("controller", "must be a continuous, proper transfer function");
+        throw InvalidInput("controller", makeDiagnostic("not_continuous_proper"));
     requirePositive(periodSeconds, "period");
     requirePositive(modelUnitsPerMm, "model_unit_scale");
     const StateSpace p = realize(plant);
@@ -332,8 +333,7 @@ SampledAxisModel continuousAxisModel(const TransferFunction& plant,
     loop.d = Eigen::MatrixXd::Zero(1, 1);
     const StateSpace d = discretizeZoh(loop, periodSeconds);
     if (!d.a.allFinite() || !d.b.allFinite())
-        throw InvalidInput("period", "the exact discretization overflows double precision (a "
-                                     "very fast pole): use a shorter period");
+        throw InvalidInput("period", makeDiagnostic("analysis_discretization_overflows"));
     SampledAxisModel m;
     m.phi = d.a;
     m.gamma = d.b.col(0);
@@ -346,12 +346,12 @@ SampledAxisModel rstAxisModel(const PolePlacementDesign& loop) {
     requirePositive(loop.tsSeconds, "ts");
     const double a0 = loop.a.coefficient(0);
     if (a0 == 0.0)
-        throw InvalidInput("a", "A(0) must be nonzero");
+        throw InvalidInput("a", makeDiagnostic("analysis_a0_nonzero"));
     if (loop.b.coefficient(0) != 0.0)
-        throw InvalidInput("b", "B(0) must be 0 (a delay of at least one sample)");
+        throw InvalidInput("b", makeDiagnostic("analysis_b0_zero"));
     const double f0 = loop.f.coefficient(0);
     if (f0 == 0.0)
-        throw InvalidInput("f", "F(0) must be nonzero");
+        throw InvalidInput("f", makeDiagnostic("analysis_f0_nonzero"));
     const int na = loop.a.degree(), nb = loop.b.degree(), nf = loop.f.degree();
     const int ng = loop.g.degree();
     const int ny = std::max(na, ng);
@@ -407,7 +407,7 @@ CoupledLineLoop coupledLineLoop(const SampledAxisModel& x, const SampledAxisMode
     const double ts = x.periodSeconds;
     if (std::abs(x.periodSeconds - y.periodSeconds) >
         1e-12 * std::max(x.periodSeconds, y.periodSeconds))
-        throw InvalidInput("period", "the two axes' models must have the same period");
+        throw InvalidInput("period", makeDiagnostic("analysis_axes_periods_differ"));
     requireFinite(thetaRad, "theta");
 
     CoupledLineLoop out;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/damping_grid.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -17,12 +18,12 @@ using Complex = std::complex<double>;
 void requireZetas(const std::vector<double>& zetas) {
     for (double z : zetas)
         if (!(z >= 0.0 && z <= 1.0))
-            throw InvalidInput("zetas", "each damping ratio must be in [0, 1]");
+            throw InvalidInput("zetas", makeDiagnostic("analysis_damping_ratios_range"));
 }
 
 void requirePointCount(int pointsPerLine) {
     if (pointsPerLine < 2)
-        throw InvalidInput("pointsPerLine", "must be at least 2");
+        throw InvalidInput("pointsPerLine", makeDiagnostic("at_least", {"2"}));
 }
 
 /// Upper half then its mirror image: one polyline through the real axis. The upper half runs
@@ -51,7 +52,7 @@ DampingAndFrequency dampingOf(std::complex<double> root, double tsSeconds) {
     requireFinite(root.real(), "root");
     requireFinite(root.imag(), "root");
     if (!(tsSeconds >= 0.0) || !std::isfinite(tsSeconds))
-        throw InvalidInput("tsSeconds", "must be finite and >= 0");
+        throw InvalidInput("tsSeconds", makeDiagnostic("analysis_finite_and_not_negative"));
     if (tsSeconds > 0.0) {
         if (root == Complex(0.0))
             return {1.0, std::numeric_limits<double>::infinity()};
@@ -92,7 +93,7 @@ DampingGrid zPlaneDampingGrid(const std::vector<double>& zetas,
     for (double w : omegasRadPerSec) {
         requirePositive(w, "omegasRadPerSec");
         if (w > nyquist * (1.0 + 1e-12))
-            throw InvalidInput("omegasRadPerSec", "must not exceed the Nyquist frequency pi/Ts");
+            throw InvalidInput("omegasRadPerSec", makeDiagnostic("analysis_exceeds_nyquist"));
     }
     DampingGrid grid;
     grid.tsSeconds = tsSeconds;
@@ -127,7 +128,7 @@ std::vector<double> defaultGridZetas() {
 std::vector<double> niceGridFrequencies(double maxRadPerSec, int count) {
     requirePositive(maxRadPerSec, "maxRadPerSec");
     if (count < 1)
-        throw InvalidInput("count", "must be at least 1");
+        throw InvalidInput("count", makeDiagnostic("at_least", {"1"}));
     std::vector<double> values;
     double decade = std::pow(10.0, std::floor(std::log10(maxRadPerSec)));
     // Walk down the 1-2-5 sequence from the largest value not above the maximum.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/frequency_response.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -87,9 +88,9 @@ std::vector<std::complex<double>> polesAndZeros(const TransferFunction& g) {
 void requireFrequency(double omega, double tsSeconds) {
     requireFinite(omega, "omega");
     if (omega < 0.0)
-        throw InvalidInput("omega", "frequencies must be >= 0");
+        throw InvalidInput("omega", makeDiagnostic("analysis_frequencies_not_negative"));
     if (tsSeconds > 0.0 && omega > (kPi / tsSeconds) * (1.0 + 1e-12))
-        throw InvalidInput("omega", "above the Nyquist frequency pi/Ts of a discrete system");
+        throw InvalidInput("omega", makeDiagnostic("analysis_above_nyquist_discrete"));
 }
 
 } // namespace
@@ -175,9 +176,9 @@ std::vector<double> logFrequencyGrid(double omegaMin, double omegaMax, int point
     requirePositive(omegaMin, "omegaMin");
     requirePositive(omegaMax, "omegaMax");
     if (!(omegaMin < omegaMax))
-        throw InvalidInput("omegaMax", "must be above omegaMin");
+        throw InvalidInput("omegaMax", makeDiagnostic("analysis_above_omega_min"));
     if (points < 2)
-        throw InvalidInput("points", "must be at least 2");
+        throw InvalidInput("points", makeDiagnostic("at_least", {"2"}));
     std::vector<double> w(static_cast<std::size_t>(points));
     const double a = std::log10(omegaMin), b = std::log10(omegaMax);
     for (int i = 0; i < points; ++i)
@@ -204,15 +205,15 @@ std::vector<double> characteristicFrequencies(const TransferFunction& g) {
 FrequencyResponse adaptiveFrequencyResponse(const TransferFunction& g,
                                             const FrequencyGridOptions& options) {
     if (!(options.pointsPerDecade >= 1))
-        throw InvalidInput("pointsPerDecade", "must be at least 1");
+        throw InvalidInput("pointsPerDecade", makeDiagnostic("at_least", {"1"}));
     if (!(options.maxMagnitudeStepDb > 0.0) || !std::isfinite(options.maxMagnitudeStepDb))
-        throw InvalidInput("maxMagnitudeStepDb", "must be a finite number > 0");
+        throw InvalidInput("maxMagnitudeStepDb", makeDiagnostic("analysis_finite_above_zero"));
     if (!(options.maxPhaseStepDeg > 0.0) || !std::isfinite(options.maxPhaseStepDeg))
-        throw InvalidInput("maxPhaseStepDeg", "must be a finite number > 0");
+        throw InvalidInput("maxPhaseStepDeg", makeDiagnostic("analysis_finite_above_zero"));
     if (!(options.minFrequencyRatio > 1.0) || !std::isfinite(options.minFrequencyRatio))
-        throw InvalidInput("minFrequencyRatio", "must be a finite number > 1");
+        throw InvalidInput("minFrequencyRatio", makeDiagnostic("analysis_finite_above_one"));
     if (options.maxPoints < 2)
-        throw InvalidInput("maxPoints", "must be at least 2");
+        throw InvalidInput("maxPoints", makeDiagnostic("at_least", {"2"}));
     const double ts = g.tsSeconds();
     const double nyquist = ts > 0.0 ? kPi / ts : std::numeric_limits<double>::infinity();
 
@@ -237,11 +238,11 @@ FrequencyResponse adaptiveFrequencyResponse(const TransferFunction& g,
     if (options.omegaMaxRadPerSec != 0.0) {
         requirePositive(options.omegaMaxRadPerSec, "omegaMax");
         if (options.omegaMaxRadPerSec > nyquist * (1.0 + 1e-12))
-            throw InvalidInput("omegaMax", "above the Nyquist frequency pi/Ts");
+            throw InvalidInput("omegaMax", makeDiagnostic("analysis_above_nyquist"));
         hi = std::min(options.omegaMaxRadPerSec, nyquist);
     }
     if (!(lo < hi))
-        throw InvalidInput("omegaMax", "must be above omegaMin");
+        throw InvalidInput("omegaMax", makeDiagnostic("analysis_above_omega_min"));
 
     const double decades = std::log10(hi / lo);
     const int start =

@@ -2,6 +2,7 @@
 #include "core/analysis/nyquist.h"
 
 #include "core/analysis/frequency_response.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -141,13 +142,15 @@ private:
 
 NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions& options) {
     if (!openLoop.isProper())
-        throw InvalidInput("num", "the loop is improper (more zeros than poles)");
+        throw InvalidInput("num", makeDiagnostic("analysis_loop_improper"));
     if (!(options.indentationRelativeRadius > 0.0 && options.indentationRelativeRadius < 0.1))
-        throw InvalidInput("indentationRelativeRadius", "must be in (0, 0.1)");
+        throw InvalidInput("indentationRelativeRadius",
+                           makeDiagnostic("analysis_in_open_range", {"0", "0.1"}));
     if (!(options.maxArgStepDeg > 0.0 && options.maxArgStepDeg <= 90.0))
-        throw InvalidInput("maxArgStepDeg", "must be in (0, 90]");
+        throw InvalidInput("maxArgStepDeg",
+                           makeDiagnostic("analysis_in_range_open_left", {"0", "90"}));
     if (options.maxPoints < 100)
-        throw InvalidInput("maxPoints", "must be at least 100");
+        throw InvalidInput("maxPoints", makeDiagnostic("at_least", {"100"}));
 
     const bool discrete = openLoop.isDiscrete();
     const double ts = openLoop.tsSeconds();
@@ -293,13 +296,11 @@ NyquistCurve nyquistCurve(const TransferFunction& openLoop, const NyquistOptions
     out.clockwiseEncirclements = -static_cast<int>(std::lround(turns));
     out.closedLoopUnstablePoles = out.clockwiseEncirclements + out.openLoopUnstablePoles;
     if (sampler.limited_)
-        out.warnings.push_back("the sampling bound was reached near a sharp turn of the curve: "
-                               "the encirclement count may be wrong");
+        out.warnings.push_back(makeDiagnostic("analysis_nyquist_sampling_bound"));
     if (std::abs(turns - std::round(turns)) > 0.05)
-        out.warnings.push_back("the curve's turn around -1 is not a whole number of turns");
+        out.warnings.push_back(makeDiagnostic("analysis_nyquist_fractional_turns"));
     if (out.passesThroughMinusOne)
-        out.warnings.push_back("the curve passes through -1: a closed-loop pole lies on the "
-                               "stability boundary, the encirclement count is not defined");
+        out.warnings.push_back(makeDiagnostic("analysis_nyquist_through_minus_one"));
     return out;
 }
 

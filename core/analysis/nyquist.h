@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/model/transfer_function.h"
 
 #include <complex>
@@ -67,7 +68,7 @@ struct NyquistCurve {
     /// True when a sample lies within 1e-9 of -1 (a closed-loop pole on the boundary): N is
     /// then not defined.
     bool passesThroughMinusOne = false;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 
 /// @throws InvalidInput "num" for an improper loop, and "indentationRelativeRadius" (in (0, 0.1)),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/parameter_locus.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/root_matching.h"
 
@@ -63,17 +64,18 @@ std::vector<double> sweepValues(const ParameterSweep& s) {
     requireFinite(s.from, "from");
     requireFinite(s.to, "to");
     if (s.from == s.to)
-        throw InvalidInput("to", "must differ from 'from'");
+        throw InvalidInput("to", makeDiagnostic("analysis_to_equals_from"));
     if (s.logSpacing) {
         requirePositive(s.from, "from");
         requirePositive(s.to, "to");
     }
     if (s.count < 2 || s.count > 100000)
-        throw InvalidInput("count", "must be in 2..100000");
+        throw InvalidInput("count", makeDiagnostic("analysis_in_integer_range", {"2", "100000"}));
     if (!(s.maxStepFraction > 0.0 && s.maxStepFraction <= 1.0))
-        throw InvalidInput("maxStepFraction", "must be in (0, 1]");
+        throw InvalidInput("maxStepFraction", makeDiagnostic("in_zero_one_open_left"));
     if (s.maxRefinements < 0 || s.maxRefinements > 20)
-        throw InvalidInput("maxRefinements", "must be in 0..20");
+        throw InvalidInput("maxRefinements",
+                           makeDiagnostic("analysis_in_integer_range", {"0", "20"}));
     std::vector<double> v(static_cast<std::size_t>(s.count));
     for (int i = 0; i < s.count; ++i) {
         const double t = static_cast<double>(i) / (s.count - 1);
@@ -94,8 +96,8 @@ parameterLocus(const std::string& parameterName, const ParameterSweep& sweep,
     for (double v : values) {
         std::vector<Complex> roots = poles(v);
         if (!base.empty() && roots.size() != base.front().roots.size()) {
-            locus.warnings.push_back(parameterName + " = " + std::to_string(v) +
-                                     ": skipped, the pole count changed");
+            locus.warnings.push_back(makeDiagnostic("analysis_locus_sample_skipped",
+                                                    {parameterName, std::to_string(v)}));
             continue;
         }
         base.push_back({v, std::move(roots)});
@@ -167,7 +169,7 @@ ParameterLocus gtParameterLocus(const ThirdOrderPlant& plant, GtSweptParameter p
     requirePositive(fixedValue, sweepsOmega ? "kp" : "wn");
     const std::string name = sweepsOmega ? "wn" : "kp";
     if (!(std::min(sweep.from, sweep.to) > 0.0))
-        throw InvalidInput(name, "the swept values must be > 0");
+        throw InvalidInput(name, makeDiagnostic("analysis_swept_values_not_positive"));
     return parameterLocus(name, sweep, [&](double value) {
         const GtDesign d = sweepsOmega ? designGuilleminTruxal(plant, value, fixedValue)
                                        : designGuilleminTruxal(plant, fixedValue, value);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/design/guillemin_truxal.h"
+#include "core/model/diagnostic.h"
 
 #include <complex>
 #include <functional>
@@ -40,7 +41,7 @@ struct ParameterLocus {
     std::string parameterName;
     std::vector<double> values;
     std::vector<std::vector<std::complex<double>>> branches;
-    std::vector<std::string> warnings; ///< samples skipped because the pole count changed
+    std::vector<Diagnostic> warnings; ///< samples skipped because the pole count changed
     /// Every change of stability between consecutive samples (max Re of the poles changes
     /// sign), located by bisection on the parameter. A change between two samples that
     /// undoes itself (unstable and back within one interval) is not seen.

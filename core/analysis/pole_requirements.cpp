@@ -2,6 +2,7 @@
 #include "core/analysis/pole_requirements.h"
 
 #include "core/analysis/damping_grid.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -11,7 +12,7 @@ namespace xyt {
 
 double dampingForOvershoot(double overshootPct) {
     if (!(overshootPct >= 0.0))
-        throw InvalidInput("overshootPct", "must be a number >= 0");
+        throw InvalidInput("overshootPct", makeDiagnostic("analysis_number_not_negative"));
     const double mp = overshootPct / 100.0;
     if (mp == 0.0)
         return 1.0;
@@ -23,9 +24,9 @@ double dampingForOvershoot(double overshootPct) {
 
 PoleRequirements poleRequirements(double maxOvershootPct, double maxSettlingTimeSeconds) {
     if (!(maxOvershootPct >= 0.0))
-        throw InvalidInput("maxOvershootPct", "must be a number >= 0");
+        throw InvalidInput("maxOvershootPct", makeDiagnostic("analysis_number_not_negative"));
     if (!(maxSettlingTimeSeconds > 0.0))
-        throw InvalidInput("maxSettlingTimeSeconds", "must be greater than zero");
+        throw InvalidInput("maxSettlingTimeSeconds", makeDiagnostic("not_positive"));
     PoleRequirements out;
     out.minDamping = dampingForOvershoot(maxOvershootPct);
     if (std::isfinite(maxSettlingTimeSeconds))
@@ -35,7 +36,7 @@ PoleRequirements poleRequirements(double maxOvershootPct, double maxSettlingTime
 
 double settlingRadius(const PoleRequirements& requirements, double tsSeconds) {
     if (!(tsSeconds > 0.0) || !std::isfinite(tsSeconds))
-        throw InvalidInput("tsSeconds", "must be a finite number greater than zero");
+        throw InvalidInput("tsSeconds", makeDiagnostic("finite_positive"));
     return std::exp(requirements.maxRealPartPerSec * tsSeconds);
 }
 

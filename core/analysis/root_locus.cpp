@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/analysis/root_locus.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 #include "core/model/root_matching.h"
@@ -90,19 +91,20 @@ void validateOptions(const RootLocusOptions& o) {
     if (o.view)
         o.view->validate();
     if (!(o.kMax >= 0.0) || !std::isfinite(o.kMax))
-        throw InvalidInput("kMax", "must be finite and >= 0 (0: automatic)");
+        throw InvalidInput("kMax", makeDiagnostic("analysis_kmax_range"));
     if (!(o.maxStepFraction > 0.0 && o.maxStepFraction <= 0.5))
-        throw InvalidInput("maxStepFraction", "must be in (0, 0.5]");
+        throw InvalidInput("maxStepFraction",
+                           makeDiagnostic("analysis_in_range_open_left", {"0", "0.5"}));
     if (!(o.approachFraction > 0.0 && o.approachFraction <= 1.0))
-        throw InvalidInput("approachFraction", "must be in (0, 1]");
+        throw InvalidInput("approachFraction", makeDiagnostic("in_zero_one_open_left"));
     if (!(o.minStepFraction > 0.0 && o.minStepFraction <= 1.0))
-        throw InvalidInput("minStepFraction", "must be in (0, 1]");
+        throw InvalidInput("minStepFraction", makeDiagnostic("in_zero_one_open_left"));
     if (o.maxPoints < 2)
-        throw InvalidInput("maxPoints", "must be at least 2");
+        throw InvalidInput("maxPoints", makeDiagnostic("at_least", {"2"}));
     if (!(o.maxWork > 0.0))
-        throw InvalidInput("maxWork", "must be positive");
+        throw InvalidInput("maxWork", makeDiagnostic("analysis_positive"));
     if (!(o.maxSeconds > 0.0))
-        throw InvalidInput("maxSeconds", "must be positive");
+        throw InvalidInput("maxSeconds", makeDiagnostic("analysis_positive"));
 }
 
 /**
@@ -213,8 +215,8 @@ public:
             const double kStar = -den.leading() / num.leading();
             if (kStar > 0.0) {
                 mustPassGain_ = kStar;
-                r_.warnings.push_back("the loop is biproper and d_n + K n_n vanishes at K = " +
-                                      std::to_string(kStar) + ": a root passes through infinity");
+                r_.warnings.push_back(
+                    makeDiagnostic("analysis_locus_biproper_infinity", {std::to_string(kStar)}));
             }
         }
     }
@@ -235,18 +237,16 @@ public:
             if (static_cast<int>(r_.gains.size()) >= o_.maxPoints) {
                 r_.status = RootLocusStatus::PointLimitReached;
                 r_.warnings.push_back(
-                    "stopped at the point limit (" + std::to_string(o_.maxPoints) +
-                    ") at K = " + std::to_string(k) + " before every branch converged");
+                    makeDiagnostic("analysis_locus_point_limit",
+                                   {std::to_string(o_.maxPoints), std::to_string(k)}));
                 break;
             }
             if (work_ > o_.maxWork) {
                 r_.status = RootLocusStatus::PointLimitReached;
-                r_.warnings.push_back("stopped at the work bound (about " +
-                                      std::to_string(static_cast<long long>(o_.maxWork / 1e6)) +
-                                      " million operations, " + std::to_string(r_.gains.size()) +
-                                      " points) at K = " + std::to_string(k) +
-                                      " before every branch converged: the loop's order " +
-                                      std::to_string(n_) + " makes each point expensive");
+                r_.warnings.push_back(makeDiagnostic(
+                    "analysis_locus_work_bound",
+                    {std::to_string(static_cast<long long>(o_.maxWork / 1e6)),
+                     std::to_string(r_.gains.size()), std::to_string(k), std::to_string(n_)}));
                 break;
             }
             if (std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
@@ -254,16 +254,14 @@ public:
                 r_.status = RootLocusStatus::PointLimitReached;
                 std::ostringstream bound;
                 bound << o_.maxSeconds;
-                r_.warnings.push_back("stopped at the time bound (" + bound.str() + " s, " +
-                                      std::to_string(r_.gains.size()) +
-                                      " points) at K = " + std::to_string(k) +
-                                      " before every branch converged: its roots are hard to find "
-                                      "(an ill-conditioned loop)");
+                r_.warnings.push_back(makeDiagnostic(
+                    "analysis_locus_time_bound",
+                    {bound.str(), std::to_string(r_.gains.size()), std::to_string(k)}));
                 break;
             }
             if (k > 1e250) {
                 r_.status = RootLocusStatus::GainLimitReached;
-                r_.warnings.push_back("stopped at K > 1e250 before every branch converged");
+                r_.warnings.push_back(makeDiagnostic("analysis_locus_gain_limit"));
                 break;
             }
             const std::vector<double> bounds = stepBounds(current);
@@ -290,8 +288,8 @@ public:
                     break;
                 if (attempt >= 80 || step <= minGainStep) {
                     if (!warnedBound) {
-                        r_.warnings.push_back("the step bound could not be met near K = " +
-                                              std::to_string(nextK));
+                        r_.warnings.push_back(
+                            makeDiagnostic("analysis_locus_step_bound", {std::to_string(nextK)}));
                         warnedBound = true;
                     }
                     break;
@@ -437,7 +435,7 @@ void LocusView::validate() const {
     for (double v : {reMin, reMax, imMin, imMax})
         requireFinite(v, "view");
     if (!(reMin < reMax) || !(imMin < imMax))
-        throw InvalidInput("view", "needs reMin < reMax and imMin < imMax");
+        throw InvalidInput("view", makeDiagnostic("analysis_view_empty"));
 }
 
 LocusAsymptotes locusAsymptotes(const Polynomial& num, const Polynomial& den) {
@@ -517,8 +515,8 @@ namespace {
  * with poles at -2.28 instead of -1; a double pole of a discrete loop (about 1e-8) is fine.
  * We warn when the estimate exceeds 1e-6 relative.
  */
-void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots,
-                        const std::string& what, std::vector<std::string>& warnings) {
+void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots, const char* code,
+                        std::vector<Diagnostic>& warnings) {
     const auto& a = p.ascending();
     const double eps = std::numeric_limits<double>::epsilon();
     double worst = 0.0;
@@ -551,10 +549,7 @@ void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots,
     if (!(worst <= 1e-6)) {
         char size[32];
         std::snprintf(size, sizeof size, "%.2g", worst);
-        warnings.push_back("the " + what + " near " + formatComplex(where) +
-                           " are ill-conditioned (clustered or multiple roots): round-off alone "
-                           "can move them by about " +
-                           size + " of their size, so they and the locus near them may be wrong");
+        warnings.push_back(makeDiagnostic(code, {formatComplex(where), std::string(size)}));
     }
 }
 
@@ -563,15 +558,15 @@ void warnIllConditioned(const Polynomial& p, const std::vector<Complex>& roots,
 RootLocus rootLocus(const Polynomial& num, const Polynomial& den, double tsSeconds,
                     const RootLocusOptions& options) {
     if (!(tsSeconds >= 0.0) || !std::isfinite(tsSeconds))
-        throw InvalidInput("ts", "must be finite and >= 0 (0: continuous)");
+        throw InvalidInput("ts", makeDiagnostic("analysis_ts_range"));
     if (num.isZero())
-        throw InvalidInput("num", "the numerator is zero: there is no locus");
+        throw InvalidInput("num", makeDiagnostic("analysis_locus_zero_numerator"));
     if (den.degree() < 1)
-        throw InvalidInput("den", "must have degree >= 1 (a loop without poles has no locus)");
+        throw InvalidInput("den", makeDiagnostic("analysis_locus_no_poles"));
     if (num.degree() > den.degree())
-        throw InvalidInput("num", "degree " + std::to_string(num.degree()) +
-                                      " exceeds the denominator's " + std::to_string(den.degree()) +
-                                      ": the loop is improper");
+        throw InvalidInput(
+            "num", makeDiagnostic("analysis_locus_improper",
+                                  {std::to_string(num.degree()), std::to_string(den.degree())}));
     validateOptions(options);
     RootLocus r;
     r.tsSeconds = tsSeconds;
@@ -579,20 +574,20 @@ RootLocus rootLocus(const Polynomial& num, const Polynomial& den, double tsSecon
         try {
             return p.roots();
         } catch (const InvalidInput& e) {
-            throw InvalidInput(field, e.reason());
+            throw InvalidInput(field, e.reasonDiagnostic());
         }
     };
     r.poles = rootsOf(den, "den");
     r.zeros = num.degree() > 0 ? rootsOf(num, "num") : std::vector<Complex>{};
-    warnIllConditioned(den, r.poles, "open-loop poles", r.warnings);
-    warnIllConditioned(num, r.zeros, "open-loop zeros", r.warnings);
+    warnIllConditioned(den, r.poles, "analysis_locus_poles_ill_conditioned", r.warnings);
+    warnIllConditioned(num, r.zeros, "analysis_locus_zeros_ill_conditioned", r.warnings);
     sortRoots(r.poles);
     sortRoots(r.zeros);
     for (const Complex& p : r.poles)
         for (const Complex& z : r.zeros)
             if (std::abs(p - z) <= 1e-8 * (1.0 + std::abs(p))) {
-                r.warnings.push_back("near pole-zero cancellation at " + formatComplex(p) +
-                                     ": that branch has (almost) no length");
+                r.warnings.push_back(
+                    makeDiagnostic("analysis_locus_cancellation", {formatComplex(p)}));
                 break;
             }
     r.asymptotes = locusAsymptotes(num, den);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/analysis/damping_grid.h"
+#include "core/model/diagnostic.h"
 #include "core/model/polynomial.h"
 #include "core/model/transfer_function.h"
 
@@ -103,7 +104,7 @@ struct RootLocus {
     LocusView view;
     double maxStep = 0.0; ///< the step bound used, maxStepFraction * view.span()
     RootLocusStatus status = RootLocusStatus::Complete;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
     double work = 0.0; ///< root-finding operations counted (RootLocusOptions::maxWork)
 };
 

@@ -2,6 +2,7 @@
 #include "core/analysis/stability_margins.h"
 
 #include "core/analysis/frequency_response.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -146,7 +147,7 @@ void sortAndDedupe(std::vector<double>& w) {
 
 Polynomial bilinearToW(const Polynomial& p, int n) {
     if (n < p.degree())
-        throw InvalidInput("n", "must be at least the degree of the polynomial");
+        throw InvalidInput("n", makeDiagnostic("analysis_below_degree"));
     const Polynomial plus = Polynomial::fromAscending({1.0, 1.0});
     const Polynomial minus = Polynomial::fromAscending({1.0, -1.0});
     // Powers of (1 + w) and (1 - w) built once.
@@ -168,13 +169,13 @@ Polynomial bilinearToW(const Polynomial& p, int n) {
 
 StabilityMargins stabilityMargins(const TransferFunction& openLoop) {
     if (!openLoop.isProper())
-        throw InvalidInput("num", "the loop is improper (more zeros than poles)");
+        throw InvalidInput("num", makeDiagnostic("analysis_loop_improper"));
     Loop loop;
     loop.n = openLoop.num();
     loop.d = openLoop.den();
     loop.c = loop.d + loop.n;
     if (loop.c.isZero())
-        throw InvalidInput("den", "1 + L is zero (L = -1)");
+        throw InvalidInput("den", makeDiagnostic("analysis_return_difference_zero"));
     loop.dn = loop.n.derivative();
     loop.dd = loop.d.derivative();
     loop.dc = loop.c.derivative();
@@ -369,8 +370,7 @@ StabilityMargins stabilityMargins(const TransferFunction& openLoop) {
         }
     }
     if (!out.closedLoopStable)
-        out.warnings.push_back("the closed loop is unstable: the margins and peaks describe the "
-                               "frequency response, not robustness");
+        out.warnings.push_back(makeDiagnostic("analysis_margins_closed_loop_unstable"));
     return out;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/model/polynomial.h"
 #include "core/model/transfer_function.h"
 
@@ -100,7 +101,7 @@ struct StabilityMargins {
 
     /// All roots of D + N strictly inside the stable region.
     bool closedLoopStable = false;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 
 /**

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/cross_coupling.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -47,7 +48,7 @@ void validateCrossCoupling(const CrossCoupling& coupling, const std::string& fie
          {std::pair<const char*, double>{"kp", coupling.kp}, {"ki", coupling.ki}}) {
         requireFinite(value, field + "." + name);
         if (value < 0.0)
-            throw InvalidInput(field + "." + name, "must be >= 0 (0 switches the coupling off)");
+            throw InvalidInput(field + "." + name, makeDiagnostic("design_coupling_not_negative"));
     }
 }
 

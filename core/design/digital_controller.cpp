@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/digital_controller.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -44,7 +45,7 @@ DigitalPi digitalPi(double kp, double ki, double tsSeconds, PiDiscretization met
     requirePositive(tsSeconds, "ts");
     requireFinite(trackingTimeSeconds, "tracking_time");
     if (trackingTimeSeconds < 0.0)
-        throw InvalidInput("tracking_time", "must be >= 0 (0: Tt = Ti = kp/ki)");
+        throw InvalidInput("tracking_time", makeDiagnostic("design_tracking_time_not_negative"));
     DigitalPi pi;
     pi.kp = kp;
     pi.tsSeconds = tsSeconds;
@@ -56,7 +57,7 @@ DigitalPi digitalPi(double kp, double ki, double tsSeconds, PiDiscretization met
     if (antiWindup == AntiWindup::BackCalculation) {
         const double tt = trackingTimeSeconds > 0.0 ? trackingTimeSeconds : kp / ki;
         if (!std::isfinite(tt) || !(tt > 0.0))
-            throw InvalidInput("tracking_time", "Ti = kp/ki is not a positive time; give Tt (s)");
+            throw InvalidInput("tracking_time", makeDiagnostic("design_ti_not_positive"));
         pi.trackingGain = tsSeconds / tt;
     }
     return pi;
@@ -66,9 +67,9 @@ std::vector<double> filterDifferenceEquation(const std::vector<double>& num,
                                              const std::vector<double>& den,
                                              const std::vector<double>& input) {
     if (num.empty())
-        throw InvalidInput("num", "is empty");
+        throw InvalidInput("num", makeDiagnostic("is_empty"));
     if (den.empty() || den[0] == 0.0)
-        throw InvalidInput("den", "the z^0 coefficient must be nonzero");
+        throw InvalidInput("den", makeDiagnostic("design_z0_nonzero"));
     std::vector<double> out(input.size(), 0.0);
     for (std::size_t k = 0; k < input.size(); ++k) {
         double acc = 0.0;

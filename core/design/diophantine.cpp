@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/diophantine.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -39,7 +40,7 @@ ClosestPair closestPoleZero(const Polynomial& a, const Polynomial& b) {
 
 std::vector<std::complex<double>> zInverseRoots(const Polynomial& p) {
     if (p.isZero())
-        throw InvalidInput("polynomial", "the zero polynomial has no roots");
+        throw InvalidInput("polynomial", makeDiagnostic("design_zero_polynomial_no_roots"));
     // z^n p(1/z); the Polynomial constructor trims the high powers a delay leaves at zero.
     std::vector<std::complex<double>> r = p.reversed(p.degree()).roots();
     sortRoots(r);
@@ -49,13 +50,13 @@ std::vector<std::complex<double>> zInverseRoots(const Polynomial& p) {
 DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b,
                                      const Polynomial& t) {
     if (a.isZero())
-        throw InvalidInput("a", "must be nonzero");
+        throw InvalidInput("a", makeDiagnostic("zero"));
     if (a.coefficient(0) == 0.0)
-        throw InvalidInput("a", "the z^0 coefficient must be nonzero");
+        throw InvalidInput("a", makeDiagnostic("design_z0_nonzero"));
     if (b.isZero())
-        throw InvalidInput("b", "must be nonzero");
+        throw InvalidInput("b", makeDiagnostic("zero"));
     if (t.isZero())
-        throw InvalidInput("t", "must be nonzero");
+        throw InvalidInput("t", makeDiagnostic("zero"));
 
     const int na = a.degree();
     const int nb = b.degree();
@@ -86,12 +87,12 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b,
 
     if (!(condition <= kCommonFactorCondition)) {
         const ClosestPair pair = closestPoleZero(a, b);
-        std::string where =
-            pair.found ? "the root z = " + formatComplex(0.5 * (pair.pole + pair.zero)) : "a root";
-        throw InvalidInput("b", "shares " + where +
-                                    " with A (common factor of A and B): A F + B G = T has no "
-                                    "solution (Sylvester condition number " +
-                                    formatNumber(condition, 3) + ")");
+        if (pair.found)
+            throw InvalidInput("b", makeDiagnostic("design_common_factor_root",
+                                                   {formatComplex(0.5 * (pair.pole + pair.zero)),
+                                                    formatNumber(condition, 3)}));
+        throw InvalidInput("b",
+                           makeDiagnostic("design_common_factor", {formatNumber(condition, 3)}));
     }
 
     const Eigen::VectorXd m = svd.solve(d);
@@ -110,17 +111,17 @@ DiophantineSolution solveDiophantine(const Polynomial& a, const Polynomial& b,
     if (!std::isfinite(out.residual))
         // F and G are finite but A F + B G overflows: coefficients near the double range
         // (found by fuzz_design, input kept in tests/fuzz/corpus/fuzz_design).
-        throw InvalidInput("b", "the coefficients of A and B are too large in magnitude: "
-                                "A F + B G overflows a double");
+        throw InvalidInput("b", makeDiagnostic("design_diophantine_overflow"));
     if (condition > kNearCommonFactorCondition) {
         const ClosestPair pair = closestPoleZero(a, b);
-        std::string what = "near-common factor of A and B";
         if (pair.found)
-            what += ": pole z = " + formatComplex(pair.pole) +
-                    " and zero z = " + formatComplex(pair.zero) + " are " +
-                    formatNumber(std::abs(pair.pole - pair.zero), 3) + " apart";
-        out.warnings.push_back(what + "; Sylvester condition number " + formatNumber(condition, 3) +
-                               ", F and G are large and sensitive");
+            out.warnings.push_back(makeDiagnostic(
+                "design_near_common_factor_pair",
+                {formatComplex(pair.pole), formatComplex(pair.zero),
+                 formatNumber(std::abs(pair.pole - pair.zero), 3), formatNumber(condition, 3)}));
+        else
+            out.warnings.push_back(
+                makeDiagnostic("design_near_common_factor", {formatNumber(condition, 3)}));
     }
     return out;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/model/polynomial.h"
 
 #include <string>
@@ -25,7 +26,7 @@ struct DiophantineSolution {
     /// 2-norm condition number of the Sylvester matrix after scaling its A and B column blocks to
     /// unit largest coefficient (so a small plant gain does not look like a common factor).
     double conditionNumber = 0.0;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 
 /**

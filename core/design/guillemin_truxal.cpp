@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/guillemin_truxal.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -44,26 +45,22 @@ GtDesign designGuilleminTruxal(const ThirdOrderPlant& plant, double omegaNRadPer
     const auto representable = [](double v) { return std::isfinite(v) && v != 0.0; };
     if (!representable(wn4) || !std::isfinite(d.f1) || !std::isfinite(d.f2))
         throw InvalidInput(
-            "wn",
-            formatNumber(wn) + " rad/s is out of range: wn^4 = " + formatNumber(wn4) +
-                " and a2/wn^2 = " + formatNumber(d.f2) +
-                " must be finite nonzero numbers for the reference model (Braga et al. Eq. 11-18)");
+            "wn", makeDiagnostic("design_gt_wn_out_of_range",
+                                 {formatNumber(wn), formatNumber(wn4), formatNumber(d.f2)}));
     if (!std::isfinite(d.f3) || !representable(d.psi1) || !representable(d.ki) ||
         !std::isfinite(d.f3 * wn3)) {
         // kp and k0 enter as their product: name the factor that is out of all proportion (the
         // one farther from 1 in decades), so that a plant gain of 1e308 typed with kp = 460 is
         // not reported as kp's fault.
-        const std::string why = ": kp k0 = " + formatNumber(kp * plant.k0) +
-                                ", psi1 = wn^4/(kp k0) = " + formatNumber(d.psi1) +
-                                " and ki = kp psi1 = " + formatNumber(d.ki) +
-                                " must be finite nonzero numbers for the Guillemin-Truxal design";
+        const std::vector<Diagnostic> why = {formatNumber(kp * plant.k0), formatNumber(d.psi1),
+                                             formatNumber(d.ki)};
         if (std::abs(std::log10(std::abs(plant.k0))) > std::abs(std::log10(kp)))
-            throw InvalidInput("k0", "plant gain k0 = " + formatNumber(plant.k0) +
-                                         " is out of range with kp = " + formatNumber(kp) +
-                                         " and wn = " + formatNumber(wn) + " rad/s" + why);
-        throw InvalidInput(
-            "kp", formatNumber(kp) + " is out of range with this plant and wn (plant gain k0 = " +
-                      formatNumber(plant.k0) + ", wn = " + formatNumber(wn) + " rad/s)" + why);
+            throw InvalidInput("k0", makeDiagnostic("design_gt_k0_out_of_range",
+                                                    {formatNumber(plant.k0), formatNumber(kp),
+                                                     formatNumber(wn), why[0], why[1], why[2]}));
+        throw InvalidInput("kp", makeDiagnostic("design_gt_kp_out_of_range",
+                                                {formatNumber(kp), formatNumber(plant.k0),
+                                                 formatNumber(wn), why[0], why[1], why[2]}));
     }
     d.referenceModel = TransferFunction::fromDescending(
         {d.f3 * wn3, wn4}, {1.0, d.f1 * wn, d.f2 * wn2, d.f3 * wn3, wn4});

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/input_shaper.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -14,7 +15,7 @@ namespace {
 void requireMode(double frequencyHz, double dampingRatio) {
     requirePositive(frequencyHz, "frequency");
     if (!(dampingRatio >= 0.0 && dampingRatio < 1.0))
-        throw InvalidInput("damping", "must be in [0, 1)");
+        throw InvalidInput("damping", makeDiagnostic("in_zero_one_open_right"));
 }
 
 struct ShaperName {
@@ -110,9 +111,9 @@ InputShaper designInputShaper(ShaperType type, double frequencyHz, double dampin
 double residualVibration(const InputShaper& shaper, double frequencyHz, double dampingRatio) {
     // f = 0 is allowed here (the formula gives sum A_i = 1: a static move passes whole).
     if (!(std::isfinite(frequencyHz) && frequencyHz >= 0.0))
-        throw InvalidInput("frequency", "must be a finite number >= 0");
+        throw InvalidInput("frequency", makeDiagnostic("finite_not_negative"));
     if (!(dampingRatio >= 0.0 && dampingRatio < 1.0))
-        throw InvalidInput("damping", "must be in [0, 1)");
+        throw InvalidInput("damping", makeDiagnostic("in_zero_one_open_right"));
     const double w = 2.0 * std::numbers::pi * frequencyHz;
     const double wd = w * std::sqrt(1.0 - dampingRatio * dampingRatio);
     const double tn = shaper.duration();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/notch_filter.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -11,15 +12,14 @@ namespace xyt {
 
 void validateNotchFilter(const NotchFilter& notch, const std::string& prefix) {
     if (!std::isfinite(notch.centreHz) || notch.centreHz < 0.0)
-        throw InvalidInput(prefix + "centre", "must be 0 (no notch) or a frequency > 0 Hz");
+        throw InvalidInput(prefix + "centre", makeDiagnostic("design_notch_centre_range"));
     if (!notch.present())
         return;
     if (!std::isfinite(notch.widthHz) || notch.widthHz <= 0.0 ||
         notch.widthHz >= 2.0 * notch.centreHz)
-        throw InvalidInput(prefix + "width",
-                           "must be a bandwidth > 0 Hz and below twice the centre frequency");
+        throw InvalidInput(prefix + "width", makeDiagnostic("design_notch_width_range"));
     if (!std::isfinite(notch.depthDb) || notch.depthDb <= 0.0 || notch.depthDb > 120.0)
-        throw InvalidInput(prefix + "depth", "must be an attenuation in (0, 120] dB");
+        throw InvalidInput(prefix + "depth", makeDiagnostic("design_notch_depth_range"));
 }
 
 TransferFunction NotchFilter::transferFunction() const {
@@ -34,7 +34,7 @@ TransferFunction NotchFilter::transferFunction() const {
 NotchFilter notchForMode(const FlexibleMode& mode) {
     validateFlexibleMode(mode);
     if (!mode.present())
-        throw InvalidInput("frequency", "the axis has no flexible mode to design a notch for");
+        throw InvalidInput("frequency", makeDiagnostic("design_notch_no_mode"));
     NotchFilter n;
     n.centreHz = mode.frequencyHz;
     const double peakDb =
@@ -57,9 +57,8 @@ Biquad discreteNotch(const NotchFilter& notch, double tsSeconds, const std::stri
         return {};
     const double nyquistHz = 0.5 / tsSeconds;
     if (notch.centreHz >= nyquistHz)
-        throw InvalidInput(prefix + "centre",
-                           "lies at or above the controller's Nyquist frequency of " +
-                               std::to_string(nyquistHz) + " Hz (1 / (2 Ts))");
+        throw InvalidInput(prefix + "centre", makeDiagnostic("design_notch_above_nyquist",
+                                                             {std::to_string(nyquistHz)}));
     const double w0 = kTwoPi * notch.centreHz;
     const double k = w0 / std::tan(0.5 * w0 * tsSeconds);
     const double k2 = k * k, w2 = w0 * w0;

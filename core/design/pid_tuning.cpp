@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/pid_tuning.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
@@ -82,22 +83,22 @@ PidTuningResult tunePidForMargin(const ThirdOrderPlant& plant, double modelUnits
     const double gainC = u * wc * wc * wc * quadMag / plant.k0;
     r.requiredControllerGainVoltsPerMm = gainC;
 
-    const auto refuse = [&](PidTuningStatus status, const std::string& why) {
+    const auto refuse = [&](PidTuningStatus status, const Diagnostic& why) {
         r.status = status;
         r.reason = why;
         return r;
     };
-    const std::string where = " at " + formatNumber(wc) + " rad/s (plant phase " +
-                              formatNumber(r.plantPhaseDeg, 4) + " deg, so the phase margin of " +
-                              formatNumber(phaseMarginDeg, 4) +
-                              " deg needs a controller phase of " +
-                              formatNumber(r.requiredControllerPhaseDeg, 4) + " deg)";
+    // The crossover, the plant phase, the phase margin and the controller phase each refusal
+    // names (its " at %1 rad/s (plant phase %2 deg, ...)").
+    const std::vector<Diagnostic> where = {formatNumber(wc), formatNumber(r.plantPhaseDeg, 4),
+                                           formatNumber(phaseMarginDeg, 4),
+                                           formatNumber(r.requiredControllerPhaseDeg, 4)};
     if (structure == PidStructure::Pi) {
         if (!(phiC > -kPi / 2.0 && phiC <= 0.0))
             return refuse(PidTuningStatus::PhaseOutOfReach,
-                          "a PI gives a phase between -90 and 0 deg" + where +
-                              (phiC > 0.0 ? ": lower the phase margin or the crossover, or add D"
-                                          : ": raise the crossover or the phase margin"));
+                          makeDiagnostic(phiC > 0.0 ? "design_pid_pi_phase_too_high"
+                                                    : "design_pid_pi_phase_too_low",
+                                         where));
         r.p = gainC * std::cos(phiC);
         r.i = r.p * wc * std::tan(-phiC);
         r.d = 0.0;
@@ -106,8 +107,7 @@ PidTuningResult tunePidForMargin(const ThirdOrderPlant& plant, double modelUnits
     } else {
         if (!(phiC > -kPi / 2.0 && phiC < kPi / 2.0))
             return refuse(PidTuningStatus::PhaseOutOfReach,
-                          "a PID with Ti = 4 Td gives a phase between -90 and 90 deg" + where +
-                              ": lower the phase margin or the crossover");
+                          makeDiagnostic("design_pid_phase_out_of_reach", where));
         // tau = wc Td, the positive root of 4 tau^2 - 4 tau tan(phi) - 1 = 0:
         // (tan phi + sec phi)/2 = (1 + sin phi)/(2 cos phi) = tan(pi/4 + phi/2)/2.
         const double tau = 0.5 * std::tan(kPi / 4.0 + phiC / 2.0);
@@ -119,10 +119,9 @@ PidTuningResult tunePidForMargin(const ThirdOrderPlant& plant, double modelUnits
     }
     if (!std::isfinite(gainC) || !std::isfinite(r.p) || !std::isfinite(r.i) ||
         !std::isfinite(r.d) || !(r.p > 0.0) || !std::isfinite(r.tdSeconds)) {
-        const std::string why = "the gains for this target overflow or vanish in double precision "
-                                "(P = " +
-                                formatNumber(r.p) + " V/mm, I = " + formatNumber(r.i) +
-                                " V/(mm s), D = " + formatNumber(r.d) + " V s/mm)" + where;
+        std::vector<Diagnostic> args = {formatNumber(r.p), formatNumber(r.i), formatNumber(r.d)};
+        args.insert(args.end(), where.begin(), where.end());
+        const Diagnostic why = makeDiagnostic("design_pid_gains_out_of_range", args);
         r.p = r.i = r.d = 0.0;
         r.tiSeconds = kInf;
         r.tdSeconds = 0.0;
@@ -158,14 +157,11 @@ PidTuningResult tunePidForMargin(const ThirdOrderPlant& plant, double modelUnits
         r.achievedPhaseMarginDeg =
             phaseMarginDegOf(loopAt(plant, u, r.p, r.i, r.d, r.achievedCrossoverRadPerSec));
     if (r.gainCrossoverCount > 1)
-        r.warnings.push_back("the loop has " + std::to_string(r.gainCrossoverCount) +
-                             " gain crossovers (a lightly damped plant, a1^2 < 2 a2): the margin "
-                             "holds at the target, check the others on the Bode plot");
+        r.warnings.push_back(makeDiagnostic("design_pid_several_crossovers",
+                                            {std::to_string(r.gainCrossoverCount)}));
     r.closedLoopStable = hurwitz(alpha1, alpha2 + gamma2, gamma1, gamma0);
     if (!r.closedLoopStable)
-        r.warnings.push_back("the closed loop is unstable although the phase margin at the "
-                             "crossover is met (a conditionally stable loop): lower the phase "
-                             "margin or raise the crossover");
+        r.warnings.push_back(makeDiagnostic("design_pid_conditionally_stable"));
     return r;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/design/guillemin_truxal.h"
+#include "core/model/diagnostic.h"
 
 #include <limits>
 #include <string>
@@ -31,7 +32,7 @@ enum class PidTuningStatus {
 struct PidTuningResult {
     PidStructure structure = PidStructure::Pi;
     PidTuningStatus status = PidTuningStatus::Ok;
-    std::string reason; ///< empty when status is Ok, else why (for the user)
+    Diagnostic reason; ///< empty (uncoded) when status is Ok, else why (coded, for the user)
 
     double targetCrossoverRadPerSec = 0.0;
     double targetPhaseMarginDeg = 0.0;
@@ -60,7 +61,7 @@ struct PidTuningResult {
     /// The closed loop 1/(1 + L) has all its poles in the open left half plane (Routh-Hurwitz).
     bool closedLoopStable = false;
     /// Oddities: several gain crossovers, an unstable closed loop despite the margin.
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 
     bool ok() const { return status == PidTuningStatus::Ok; }
 };

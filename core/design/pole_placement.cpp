@@ -2,6 +2,7 @@
 #include "core/design/pole_placement.h"
 
 #include "core/design/diophantine.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -17,19 +18,16 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
                                         const Polynomial& t, double tsSeconds) {
     requirePositive(tsSeconds, "ts");
     if (aTyped.isZero() || aTyped.coefficient(0) == 0.0)
-        throw InvalidInput("a", "the z^0 coefficient must be nonzero");
+        throw InvalidInput("a", makeDiagnostic("design_z0_nonzero"));
     if (bTyped.isZero())
-        throw InvalidInput("b", "must be nonzero");
+        throw InvalidInput("b", makeDiagnostic("zero"));
     if (bTyped.coefficient(0) != 0.0)
-        throw InvalidInput("b", "the z^0 coefficient must be 0 (at least one sample of delay; "
-                                "otherwise u(k) and y(k) form an algebraic loop)");
+        throw InvalidInput("b", makeDiagnostic("design_b0_not_zero"));
     if (t.isZero() || t.coefficient(0) != 1.0)
-        throw InvalidInput("t", "T(0), the z^0 coefficient, must be 1");
+        throw InvalidInput("t", makeDiagnostic("design_t0_not_one"));
     for (const auto& r : zInverseRoots(t))
         if (!(std::abs(r) < 1.0))
-            throw InvalidInput("t", "root z = " + formatComplex(r) +
-                                        " is not inside the unit circle: the closed loop would "
-                                        "be unstable");
+            throw InvalidInput("t", makeDiagnostic("design_t_root_outside", {formatComplex(r)}));
 
     PolePlacementDesign d;
     const double a0 = aTyped.coefficient(0);
@@ -38,19 +36,17 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     if (a0 != 1.0) {
         d.a = (1.0 / a0) * aTyped;
         d.b = (1.0 / a0) * bTyped;
-        d.warnings.push_back("A(0) = " + formatNumber(a0) +
-                             ": A and B divided by it so that A is monic (same plant)");
+        d.warnings.push_back(makeDiagnostic("design_a0_normalized", {formatNumber(a0)}));
     }
     d.t = t;
     d.tsSeconds = tsSeconds;
     if (d.b.isZero())
-        throw InvalidInput("b", "B is zero: the plant has no input");
+        throw InvalidInput("b", makeDiagnostic("design_b_zero"));
     while (d.delay < d.b.degree() && d.b.coefficient(d.delay) == 0.0)
         ++d.delay;
     const double b1 = d.b(1.0);
     if (std::abs(b1) <= 1e-12 * d.b.maxAbsCoefficient())
-        throw InvalidInput("b", "B(1) = 0 (a zero at z = 1): the plant has no steady-state gain "
-                                "and Kf = T(1)/B(1) does not exist");
+        throw InvalidInput("b", makeDiagnostic("design_b1_zero"));
 
     DiophantineSolution s = solveDiophantine(d.a, d.b, d.t);
     d.f = s.f;
@@ -63,8 +59,7 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     // the division by A(0)) that Kf overflows (found by fuzz_design, regression input
     // tests/fuzz/corpus/fuzz_design/crash-kf-overflow).
     if (!std::isfinite(d.kf))
-        throw InvalidInput("b", "B(1) = " + formatNumber(b1) +
-                                    " is too small: Kf = T(1)/B(1) overflows a double");
+        throw InvalidInput("b", makeDiagnostic("design_b1_too_small", {formatNumber(b1)}));
     // Finite is not enough: with B scaled down to ~1e-307 (A(0) = -DBL_MAX) Kf and G reach
     // ~1e306, and Kf r or G y overflow within a few samples of a stable loop (found by
     // fuzz_design, regression input tests/fuzz/corpus/fuzz_design/crash-kf-command-overflow).
@@ -73,10 +68,8 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
     constexpr double kMaxGain = 1e100;
     if (std::abs(d.kf) > kMaxGain || d.g.maxAbsCoefficient() > kMaxGain ||
         d.f.maxAbsCoefficient() > kMaxGain)
-        throw InvalidInput("b", "B(1) = " + formatNumber(b1) +
-                                    " is negligible: the controller "
-                                    "(Kf = " +
-                                    formatNumber(d.kf) + ") would need gains beyond 1e100");
+        throw InvalidInput(
+            "b", makeDiagnostic("design_b1_negligible", {formatNumber(b1), formatNumber(d.kf)}));
     d.closedLoopNum = d.kf * d.b;
     d.closedLoopDen = d.t;
     if (d.a.degree() > 0)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/model/polynomial.h"
 #include "core/model/transfer_function.h"
 
@@ -34,7 +35,7 @@ struct PolePlacementDesign {
     Polynomial closedLoopDen;     ///< T(z^-1)
     std::vector<std::complex<double>> plantPoles; ///< roots of A in z
     std::vector<std::complex<double>> plantZeros; ///< nonzero roots of B in z
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 
     /// Kf B / T as a discrete transfer function in z (sample time tsSeconds).
     TransferFunction closedLoop() const;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/relay_experiment.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
@@ -94,8 +95,8 @@ RelayLimitCycle relayLimitCycle(const ThirdOrderPlant& plant, double modelUnitsP
         hi *= 2.0;
     }
     if (!(yAtSwitch(lo) > 0.0 && yAtSwitch(hi) < 0.0)) {
-        r.status = "no half period between " + formatNumber(lo) + " and " + formatNumber(hi) +
-                   " s gives a symmetric relay oscillation (y at the switch keeps its sign)";
+        r.status =
+            makeDiagnostic("design_relay_no_half_period", {formatNumber(lo), formatNumber(hi)});
         return r;
     }
     const double h = bisectToAdjacent(lo, hi, [&](double t) { return !(yAtSwitch(t) > 0.0); });
@@ -108,9 +109,7 @@ RelayLimitCycle relayLimitCycle(const ThirdOrderPlant& plant, double modelUnitsP
     // The relay goes to +d because e = -y turns positive: y must be falling at t = 0 ...
     if (!(x0(1) < 0.0)) {
         r.status =
-            "the periodic solution of half period " + formatNumber(h) +
-            " s does not cross zero downwards at the switch (y' = " + formatNumber(x0(1) / u) +
-            " mm/s): not a relay oscillation";
+            makeDiagnostic("design_relay_not_falling", {formatNumber(h), formatNumber(x0(1) / u)});
         return r;
     }
     // ... and stay negative until t = h, or the relay would have switched earlier.
@@ -123,9 +122,8 @@ RelayLimitCycle relayLimitCycle(const ThirdOrderPlant& plant, double modelUnitsP
     for (int k = 1; k <= kGrid; ++k) {
         x[std::size_t(k)] = grid.phi * x[std::size_t(k - 1)] + grid.gamma * d;
         if (k < kGrid && !(x[std::size_t(k)](0) < 0.0)) {
-            r.status = "the periodic solution of half period " + formatNumber(h) +
-                       " s crosses zero at t = " + formatNumber(k * dt) +
-                       " s inside the half period: the relay would switch more often";
+            r.status = makeDiagnostic("design_relay_early_crossing",
+                                      {formatNumber(h), formatNumber(k * dt)});
             return r;
         }
         if (k < kGrid && x[std::size_t(k)](0) < x[std::size_t(kMin)](0))
@@ -183,12 +181,12 @@ RelaySimulation simulateRelayFeedback(const ThirdOrderPlant& plant,
     if (stepCount > 1.0 && (stepCount - 1.0) * options.stepSeconds >= options.durationSeconds)
         stepCount -= 1.0;
     if (!(stepCount <= 2e6))
-        throw InvalidInput("step", formatNumber(options.stepSeconds) + " s makes " +
-                                       formatNumber(stepCount) + " steps over " +
-                                       formatNumber(options.durationSeconds) +
-                                       " s; at most 2e6: raise the step or shorten the run");
+        throw InvalidInput(
+            "step", makeDiagnostic("design_relay_too_many_steps",
+                                   {formatNumber(options.stepSeconds), formatNumber(stepCount),
+                                    formatNumber(options.durationSeconds)}));
     if (options.cyclesToMeasure < 1)
-        throw InvalidInput("cycles_to_measure", "must be at least 1");
+        throw InvalidInput("cycles_to_measure", makeDiagnostic("at_least", {"1"}));
 
     const double u = modelUnitsPerPositionUnit;
     const double d = relayAmplitudeVolts;
@@ -198,9 +196,8 @@ RelaySimulation simulateRelayFeedback(const ThirdOrderPlant& plant,
     RelaySimulation sim;
     const double periodDf = kTwoPi / std::sqrt(plant.a2);
     if (step > periodDf / 50.0)
-        sim.warnings.push_back(
-            "the step of " + formatNumber(step) + " s is coarse against the expected period of " +
-            formatNumber(periodDf) + " s: a step spanning two sign changes of y misses both");
+        sim.warnings.push_back(makeDiagnostic("design_relay_coarse_step",
+                                              {formatNumber(step), formatNumber(periodDf)}));
 
     Vector3d x(options.initialOffsetMm * u, 0.0, 0.0); // at rest at the offset
     double relay = x(0) > 0.0 ? -d : d;                // u = d sign(-y)
@@ -256,9 +253,8 @@ RelaySimulation simulateRelayFeedback(const ThirdOrderPlant& plant,
                 if (relay > 0.0)
                     upSwitches.push_back(t);
                 if (++switchesInStep > 64) {
-                    sim.warnings.push_back("the relay switched more than 64 times within one step "
-                                           "near t = " +
-                                           formatNumber(t) + " s (chattering): stopped there");
+                    sim.warnings.push_back(
+                        makeDiagnostic("design_relay_chattering", {formatNumber(t)}));
                     k = n;
                     break;
                 }
@@ -269,9 +265,8 @@ RelaySimulation simulateRelayFeedback(const ThirdOrderPlant& plant,
 
     const std::size_t ups = upSwitches.size();
     if (ups < 2) {
-        sim.warnings.push_back("fewer than two switches to +d in " +
-                               formatNumber(options.durationSeconds) +
-                               " s: no period or amplitude measured (run longer)");
+        sim.warnings.push_back(makeDiagnostic("design_relay_too_few_switches",
+                                              {formatNumber(options.durationSeconds)}));
         return sim;
     }
     const std::size_t cycles = std::min<std::size_t>(std::size_t(options.cyclesToMeasure), ups - 1);

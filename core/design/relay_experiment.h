@@ -3,6 +3,7 @@
 
 #include "core/design/guillemin_truxal.h"
 #include "core/design/pid_tuning.h"
+#include "core/model/diagnostic.h"
 
 #include <array>
 #include <limits>
@@ -46,7 +47,7 @@ namespace xyt {
  */
 struct RelayLimitCycle {
     bool found = false;
-    std::string status; ///< empty when found, else why not
+    Diagnostic status; ///< empty (uncoded) when found, else why not (coded)
     double halfPeriodSeconds = std::numeric_limits<double>::quiet_NaN();  ///< h
     double periodSeconds = std::numeric_limits<double>::quiet_NaN();      ///< Tu = 2 h
     double frequencyRadPerSec = std::numeric_limits<double>::quiet_NaN(); ///< 2 pi / Tu
@@ -119,7 +120,7 @@ struct RelaySimulation {
     double measuredPeriodSeconds = std::numeric_limits<double>::quiet_NaN();
     double measuredAmplitudeMm = std::numeric_limits<double>::quiet_NaN();
     int cyclesMeasured = 0;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 
 /// @throws InvalidInput as relayLimitCycle, and "initial_offset" (finite, nonzero),

@@ -6,6 +6,7 @@
 // exp and one sin/cos pair per bin for shapers with evenly spaced impulses (all seven).
 #include "core/design/shaper_recommendation.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <Eigen/Core>
@@ -128,25 +129,27 @@ void recommendationResponseInto(const InputShaper& shaper, const RecommendationD
 /// The spectrum checked: sizes, increasing finite frequencies >= 0, finite powers >= 0.
 void requireRecommendationSpectrum(const PowerSpectrum& p) {
     if (p.frequencyHz.size() != p.power.size())
-        throw InvalidInput("spectrum.power",
-                           "has " + std::to_string(p.power.size()) + " values for " +
-                               std::to_string(p.frequencyHz.size()) + " frequencies");
+        throw InvalidInput(
+            "spectrum.power",
+            makeDiagnostic("design_spectrum_sizes_differ",
+                           {std::to_string(p.power.size()), std::to_string(p.frequencyHz.size())}));
     if (p.frequencyHz.empty())
-        throw InvalidInput("spectrum.frequency", "is empty");
+        throw InvalidInput("spectrum.frequency", makeDiagnostic("is_empty"));
     for (std::size_t k = 0; k < p.frequencyHz.size(); ++k) {
         const double f = p.frequencyHz[k];
         if (!std::isfinite(f) || f < 0.0 || (k > 0 && !(f > p.frequencyHz[k - 1])))
-            throw InvalidInput("spectrum.frequency", "must be finite, >= 0 and increasing (value " +
-                                                         std::to_string(k + 1) + ")");
+            throw InvalidInput(
+                "spectrum.frequency",
+                makeDiagnostic("design_spectrum_frequency_order", {std::to_string(k + 1)}));
         if (!std::isfinite(p.power[k]) || p.power[k] < 0.0)
-            throw InvalidInput("spectrum.power",
-                               "must be finite and >= 0 (value " + std::to_string(k + 1) + ")");
+            throw InvalidInput("spectrum.power", makeDiagnostic("design_spectrum_power_negative",
+                                                                {std::to_string(k + 1)}));
     }
 }
 
 void requireRecommendationDamping(double zeta, const std::string& field) {
     if (!(zeta >= 0.0 && zeta < 1.0))
-        throw InvalidInput(field, "must be in [0, 1)");
+        throw InvalidInput(field, makeDiagnostic("in_zero_one_open_right"));
 }
 
 /// The vibration threshold and the denominator of _estimate_remaining_vibrations.
@@ -162,7 +165,7 @@ RecommendationPsd recommendationPsd(const Eigen::ArrayXd& power) {
     p.threshold = power.maxCoeff() / kRecommendationVibrationReduction;
     p.allVibrations = (power - p.threshold).max(0.0).sum();
     if (!(p.allVibrations > 0.0))
-        throw InvalidInput("spectrum.power", "is zero at every frequency used");
+        throw InvalidInput("spectrum.power", makeDiagnostic("design_spectrum_power_zero"));
     return p;
 }
 
@@ -294,25 +297,25 @@ ShaperRecommendation recommendShaper(const PowerSpectrum& spectrum,
     requirePositive(o.maxFrequencyHz, "maxFrequencyHz");
     requirePositive(o.stepHz, "stepHz");
     if (!(o.maxFrequencyHz > o.minFrequencyHz))
-        throw InvalidInput("maxFrequencyHz", "must be above minFrequencyHz");
+        throw InvalidInput("maxFrequencyHz", makeDiagnostic("design_above_min_frequency"));
     requireRecommendationDamping(o.dampingRatio, "dampingRatio");
     if (o.testDampingRatios.empty())
-        throw InvalidInput("testDampingRatios", "is empty");
+        throw InvalidInput("testDampingRatios", makeDiagnostic("is_empty"));
     for (double zeta : o.testDampingRatios)
         requireRecommendationDamping(zeta, "testDampingRatios");
     requireFinite(o.squareCornerVelocityMmPerS, "squareCornerVelocityMmPerS");
     if (o.squareCornerVelocityMmPerS < 0.0)
-        throw InvalidInput("squareCornerVelocityMmPerS", "must be >= 0");
+        throw InvalidInput("squareCornerVelocityMmPerS", makeDiagnostic("not_negative"));
     requirePositive(o.maxSpectrumFrequencyHz, "maxSpectrumFrequencyHz");
     if (o.maxSmoothing)
         requirePositive(*o.maxSmoothing, "maxSmoothing");
     if (o.maxVibrations) {
         requireFinite(*o.maxVibrations, "maxVibrations");
         if (*o.maxVibrations < 0.0)
-            throw InvalidInput("maxVibrations", "must be >= 0");
+            throw InvalidInput("maxVibrations", makeDiagnostic("not_negative"));
     }
     if (o.shapers.empty())
-        throw InvalidInput("shapers", "is empty");
+        throw InvalidInput("shapers", makeDiagnostic("is_empty"));
 
     // The tested frequencies of each shaper, and the spectrum bins used (fit_shaper's max_freq
     // = max(MAX_FREQ, the highest tested frequency)).
@@ -324,7 +327,7 @@ ShaperRecommendation recommendShaper(const PowerSpectrum& spectrum,
             start = std::min(recommendationKlipperMinFrequency(type), o.maxFrequencyHz - 1e-7);
         testFrequencies.push_back(recommendationArange(start, o.maxFrequencyHz, o.stepHz));
         if (testFrequencies.back().empty())
-            throw InvalidInput("stepHz", "leaves no frequency to test");
+            throw InvalidInput("stepHz", makeDiagnostic("design_no_frequency_to_test"));
         highestTested = std::max(highestTested, testFrequencies.back().back());
     }
     const double maxBin = std::max(o.maxSpectrumFrequencyHz, highestTested);
@@ -336,8 +339,8 @@ ShaperRecommendation recommendShaper(const PowerSpectrum& spectrum,
             power.push_back(spectrum.power[k]);
         }
     if (out.frequencyHz.empty())
-        throw InvalidInput("spectrum.frequency",
-                           "has no frequency up to " + std::to_string(maxBin) + " Hz");
+        throw InvalidInput("spectrum.frequency", makeDiagnostic("design_spectrum_no_frequency",
+                                                                {std::to_string(maxBin)}));
     const Eigen::Index bins = static_cast<Eigen::Index>(power.size());
     const RecommendationPsd psd =
         recommendationPsd(Eigen::Map<const Eigen::ArrayXd>(power.data(), bins));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/design/shaper_sensitivity.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -10,11 +11,11 @@ namespace xyt {
 ShaperSensitivity shaperSensitivity(const InputShaper& shaper, int points,
                                     double maxFrequencyRatio) {
     if (points < 2)
-        throw InvalidInput("points", "must be at least 2");
+        throw InvalidInput("points", makeDiagnostic("at_least", {"2"}));
     requirePositive(maxFrequencyRatio, "maxFrequencyRatio");
     requirePositive(shaper.frequencyHz, "frequency");
     if (!(shaper.dampingRatio >= 0.0 && shaper.dampingRatio < 1.0))
-        throw InvalidInput("damping", "must be in [0, 1)");
+        throw InvalidInput("damping", makeDiagnostic("in_zero_one_open_right"));
     ShaperSensitivity out;
     out.dampingRatio = shaper.dampingRatio;
     const double fMax = maxFrequencyRatio * shaper.frequencyHz;

@@ -2,6 +2,7 @@
 #include "core/design/zpetc.h"
 
 #include "core/design/diophantine.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -12,7 +13,7 @@ namespace xyt {
 ZpetcDesign designZpetc(const PolePlacementDesign& loop, double margin) {
     requireFinite(margin, "margin");
     if (margin < 0.0 || margin >= 1.0)
-        throw InvalidInput("margin", "must be in [0, 1)");
+        throw InvalidInput("margin", makeDiagnostic("in_zero_one_open_right"));
     ZpetcDesign z;
     z.delay = loop.delay;
     z.margin = margin;
@@ -36,15 +37,14 @@ ZpetcDesign designZpetc(const PolePlacementDesign& loop, double margin) {
                    .reversed(static_cast<int>(outside.size()));
     const double bMinusAtOne = z.bMinus(1.0);
     if (std::abs(bMinusAtOne) <= 1e-12 * z.bMinus.maxAbsCoefficient())
-        throw InvalidInput("b", "B-(1) = 0 (a zero at z = 1): ZPETC cannot normalize the gain");
+        throw InvalidInput("b", makeDiagnostic("design_zpetc_b_minus_zero"));
     z.gainFactor = bMinusAtOne * bMinusAtOne;
     // The relative check above passes for a B- whose coefficients are all tiny (B-(1) ~ 2e-307):
     // the square then underflows to a subnormal or 0, and 1/[B-(1)]^2 to inf, so the filter
     // would hold NaN. Refuse a gain that is not a normal double with a finite inverse.
     if (!std::isnormal(z.gainFactor) || !std::isfinite(1.0 / z.gainFactor))
-        throw InvalidInput("b", "B-(1) = " + std::to_string(bMinusAtOne) +
-                                    " is too small (or too large) to square in double precision: "
-                                    "scale B, ZPETC cannot normalize its gain");
+        throw InvalidInput("b", makeDiagnostic("design_zpetc_b_minus_out_of_range",
+                                               {std::to_string(bMinusAtOne)}));
     const int s = z.bMinus.degree();
     z.previewSteps = z.delay + s;
     const Polynomial bMinusStar = z.bMinus.reversed(s);
@@ -54,8 +54,7 @@ ZpetcDesign designZpetc(const PolePlacementDesign& loop, double margin) {
     for (const Polynomial* p : {&z.feedforwardNum, &z.feedforwardDen, &z.overallFir})
         for (const double c : p->ascending())
             if (!std::isfinite(c))
-                throw InvalidInput("b", "the ZPETC filter overflows in double precision for this "
-                                        "B and T: scale B");
+                throw InvalidInput("b", makeDiagnostic("design_zpetc_overflow"));
     return z;
 }
 
@@ -66,7 +65,7 @@ ZpetcFrequencyResponse zpetcFrequencyResponse(const PolePlacementDesign& loop,
     for (const double w : omegaRadPerSec) {
         requireFinite(w, "omega");
         if (w < 0.0)
-            throw InvalidInput("omega", "must be >= 0");
+            throw InvalidInput("omega", makeDiagnostic("not_negative"));
         const double theta = w * loop.tsSeconds;
         const std::complex<double> q = std::polar(1.0, -theta); // z^-1 on the unit circle
         const std::complex<double> closed = loop.closedLoopNum(q) / loop.closedLoopDen(q);
@@ -93,7 +92,7 @@ ZpetcFrequencyResponse zpetcFrequencyResponse(const PolePlacementDesign& loop,
 std::vector<double> nyquistLogGrid(double tsSeconds, int points) {
     requirePositive(tsSeconds, "ts");
     if (points < 2)
-        throw InvalidInput("points", "must be at least 2");
+        throw InvalidInput("points", makeDiagnostic("at_least", {"2"}));
     const double nyquist = std::numbers::pi / tsSeconds;
     std::vector<double> w(static_cast<std::size_t>(points));
     for (int i = 0; i < points; ++i)

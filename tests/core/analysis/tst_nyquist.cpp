@@ -76,7 +76,7 @@ void TstNyquist::criterionOnRandomLoops() {
         const NyquistCurve c = nyquistCurve(l);
         const QByteArray where = "draw " + QByteArray::number(draw);
         QVERIFY2(c.warnings.empty(),
-                 (where + " " + (c.warnings.empty() ? std::string() : c.warnings[0]).c_str())
+                 (where + " " + (c.warnings.empty() ? std::string() : c.warnings[0].text).c_str())
                      .constData());
         QVERIFY2(c.openLoopUnstablePoles == counts.openLoopUnstable, where.constData());
         if (c.clockwiseEncirclements + counts.openLoopUnstable != counts.closedLoopUnstable)

@@ -115,6 +115,7 @@ private slots:
     void pickOnDiscreteLocusUsesLogMap();
     void invalidInputThrows_data();
     void invalidInputThrows();
+    void refusalsAndWarningsAreCoded();
     void clusteredPolesWarnAndWorkIsBounded();
 };
 
@@ -517,7 +518,34 @@ void TstRootLocus::invalidInputThrows() {
         QFAIL("no exception");
     } catch (const InvalidInput& e) {
         QCOMPARE(QString::fromStdString(e.field()), field);
+        QVERIFY2(e.reasonDiagnostic().coded(), e.what()); // the workbench translates it
     }
+}
+
+void TstRootLocus::refusalsAndWarningsAreCoded() {
+    // The improper loop: its reason names both degrees as arguments of its template.
+    try {
+        rootLocus(Polynomial::fromDescending({1, 0, 0, 0}), Polynomial::fromDescending({1, 1, 0}),
+                  0.0);
+        QFAIL("no exception");
+    } catch (const InvalidInput& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("analysis_locus_improper"));
+        QCOMPARE(e.reasonDiagnostic().args.size(), std::size_t(2));
+        QCOMPARE(e.reasonDiagnostic().args[0].text, std::string("3"));
+        QCOMPARE(e.reasonDiagnostic().args[1].text, std::string("2"));
+        QCOMPARE(e.reason(),
+                 std::string("degree 3 exceeds the denominator's 2: the loop is improper"));
+    }
+    // A pole cancelled by a zero: the warning's code, with the place as its argument.
+    const RootLocus r =
+        rootLocus(Polynomial::fromDescending({1, 1}), Polynomial::fromDescending({1, 3, 2}), 0.0);
+    const auto it = std::find_if(r.warnings.begin(), r.warnings.end(), [](const Diagnostic& w) {
+        return w.code == "analysis_locus_cancellation";
+    });
+    QVERIFY(it != r.warnings.end());
+    QCOMPARE(it->args.size(), std::size_t(1));
+    QCOMPARE(it->text, "near pole-zero cancellation at " + it->args[0].text +
+                           ": that branch has (almost) no length");
 }
 
 void TstRootLocus::clusteredPolesWarnAndWorkIsBounded() {

@@ -202,6 +202,13 @@ void TstDiophantine::commonRootIsAnError() {
     } catch (const xyt::InvalidInput& e) {
         QCOMPARE(e.field(), std::string("b"));
         QVERIFY2(std::string(e.what()).find("z = 0.5 ") != std::string::npos, e.what());
+        // The reason carries its code and the root as an argument, for the translation.
+        QCOMPARE(e.reasonDiagnostic().code, std::string("design_common_factor_root"));
+        QCOMPARE(e.reasonDiagnostic().args.size(), std::size_t(2));
+        QCOMPARE(e.reasonDiagnostic().args[0].text, std::string("0.5"));
+        QCOMPARE(e.reason(), "shares the root z = 0.5 with A (common factor of A and B): "
+                             "A F + B G = T has no solution (Sylvester condition number " +
+                                 e.reasonDiagnostic().args[1].text + ")");
     }
     QVERIFY_THROWS_EXCEPTION(xyt::InvalidInput,
                              xyt::designPolePlacement(a, b, poly({1.0, -0.2}), 0.07));
@@ -214,7 +221,8 @@ void TstDiophantine::nearCommonRootWarns() {
     const Polynomial b = poly({0.0, 1.0, -0.501});
     const auto s = xyt::solveDiophantine(a, b, poly({1.0, -0.2}));
     QCOMPARE(s.warnings.size(), std::size_t(1));
-    QVERIFY2(s.warnings[0].find("condition number") != std::string::npos, s.warnings[0].c_str());
+    QVERIFY2(s.warnings[0].text.find("condition number") != std::string::npos,
+             s.warnings[0].text.c_str());
     QVERIFY(s.conditionNumber > xyt::kNearCommonFactorCondition);
     // Still a valid solution: the residual is at round-off times the condition number.
     QVERIFY2(s.residual < 1e-10, qPrintable(QString::number(s.residual)));
@@ -226,6 +234,11 @@ void TstDiophantine::nonMonicAIsNormalized() {
     const auto ref = xyt::designPolePlacement(p.a, p.b, p.t, p.tsSeconds);
     const auto d = xyt::designPolePlacement(2.0 * p.a, 2.0 * p.b, p.t, p.tsSeconds);
     QCOMPARE(d.warnings.size(), std::size_t(1));
+    // The warning is coded, A(0) its argument.
+    QCOMPARE(d.warnings[0].code, std::string("design_a0_normalized"));
+    QCOMPARE(d.warnings[0].args.at(0).text, std::string("2"));
+    QCOMPARE(d.warnings[0].text,
+             std::string("A(0) = 2: A and B divided by it so that A is monic (same plant)"));
     // Division by 2 is exact in binary, so the normalized inputs are bit-identical.
     QVERIFY(d.a == ref.a);
     QVERIFY(d.b == ref.b);

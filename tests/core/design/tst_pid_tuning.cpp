@@ -105,8 +105,8 @@ void TstPidTuning::targetIsMetOnTheLoop() {
     const double u = kMetresPerMm;
     const PidTuningResult r =
         xyt::tunePidForMargin(g, u, pid ? PidStructure::Pid : PidStructure::Pi, wc, pm);
-    QVERIFY2(r.ok(), r.reason.c_str());
-    QVERIFY(r.reason.empty());
+    QVERIFY2(r.ok(), r.reason.text.c_str());
+    QVERIFY(r.reason.text.empty());
     QVERIFY(r.p > 0.0 && r.i > 0.0);
     if (pid) {
         // The stated third condition Ti = 4 Td, i.e. (P/I) = 4 (D/P): P^2 = 4 I D. Three
@@ -177,8 +177,18 @@ void TstPidTuning::unreachableTargetGivesAStatus() {
     }
     QVERIFY(!r.ok());
     QCOMPARE(r.status, PidTuningStatus::PhaseOutOfReach);
-    QVERIFY(!r.reason.empty());
-    QVERIFY(r.reason.find("deg") != std::string::npos);
+    QVERIFY(!r.reason.text.empty());
+    QVERIFY(r.reason.text.find("deg") != std::string::npos);
+    // A coded reason (the workbench translates it): the crossover is its first argument.
+    QCOMPARE(r.reason.code,
+             std::string(pid ? "design_pid_phase_out_of_reach" : "design_pid_pi_phase_too_high"));
+    QCOMPARE(r.reason.args.size(), std::size_t(4));
+    QVERIFY2(r.reason.text.rfind((pid ? "a PID with Ti = 4 Td gives a phase between -90 and 90 "
+                                        "deg at "
+                                      : "a PI gives a phase between -90 and 0 deg at ") +
+                                     r.reason.args[0].text + " rad/s (plant phase ",
+                                 0) == 0,
+             r.reason.text.c_str());
     QCOMPARE(r.p, 0.0);
     QCOMPARE(r.i, 0.0);
     QCOMPARE(r.d, 0.0);
@@ -194,7 +204,7 @@ void TstPidTuning::unrepresentableGainsGiveAStatus() {
     for (const PidStructure s : {PidStructure::Pi, PidStructure::Pid}) {
         const PidTuningResult r = xyt::tunePidForMargin(kLower, kMetresPerMm, s, 1e-200, 45.0);
         QCOMPARE(r.status, PidTuningStatus::GainsOutOfRange);
-        QVERIFY(!r.reason.empty());
+        QVERIFY(!r.reason.text.empty());
         QCOMPARE(r.p, 0.0);
         QCOMPARE(r.i, 0.0);
         QCOMPARE(r.d, 0.0);

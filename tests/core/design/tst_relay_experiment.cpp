@@ -85,7 +85,7 @@ void TstRelayExperiment::limitCycleAgainstLongSimulation() {
     QFETCH(double, d);
     const ThirdOrderPlant g{k0, a1, a2};
     const RelayLimitCycle lc = xyt::relayLimitCycle(g, kMetresPerMm, d);
-    QVERIFY2(lc.found, lc.status.c_str());
+    QVERIFY2(lc.found, lc.status.text.c_str());
     XYT_COMPARE_NEAR(lc.periodSeconds, 2.0 * lc.halfPeriodSeconds, 0.0, 0.0);
     XYT_COMPARE_NEAR(lc.frequencyRadPerSec * lc.periodSeconds, 2.0 * kPi, 1e-15, 0.0);
     XYT_COMPARE_NEAR(lc.ultimateGainVoltsPerMm, 4.0 * d / (kPi * lc.amplitudeMm), 1e-15, 0.0);
@@ -131,7 +131,7 @@ void TstRelayExperiment::limitCycleAgainstTsypkinSeries() {
     QFETCH(double, d);
     const ThirdOrderPlant g{k0, a1, a2};
     const RelayLimitCycle lc = xyt::relayLimitCycle(g, kMetresPerMm, d);
-    QVERIFY2(lc.found, lc.status.c_str());
+    QVERIFY2(lc.found, lc.status.text.c_str());
 
     // y(0) changes sign between w = sqrt(a2)/2 and 2 sqrt(a2) (the describing function's
     // w180 = sqrt(a2) is within a few percent of the true frequency).
