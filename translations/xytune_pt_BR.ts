@@ -803,6 +803,3394 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>analysis_a0_nonzero</name>
+    <message>
+        <source>A(0) must be nonzero</source>
+        <translation>A(0) deve ser diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_above_nyquist</name>
+    <message>
+        <source>above the Nyquist frequency pi/Ts</source>
+        <translation>acima da frequência de Nyquist pi/Ts</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_above_nyquist_discrete</name>
+    <message>
+        <source>above the Nyquist frequency pi/Ts of a discrete system</source>
+        <translation>acima da frequência de Nyquist pi/Ts de um sistema discreto</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_above_omega_min</name>
+    <message>
+        <source>must be above omegaMin</source>
+        <translation>deve ser maior que omegaMin</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_axes_periods_differ</name>
+    <message>
+        <source>the two axes&apos; models must have the same period</source>
+        <translation>os modelos dos dois eixos devem ter o mesmo período</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_b0_zero</name>
+    <message>
+        <source>B(0) must be 0 (a delay of at least one sample)</source>
+        <translation>B(0) deve ser 0 (um atraso de pelo menos uma amostra)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_below_degree</name>
+    <message>
+        <source>must be at least the degree of the polynomial</source>
+        <translation>deve ser pelo menos o grau do polinômio</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_damping_ratios_range</name>
+    <message>
+        <source>each damping ratio must be in [0, 1]</source>
+        <translation>cada coeficiente de amortecimento deve estar em [0, 1]</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_discretization_overflows</name>
+    <message>
+        <source>the exact discretization overflows double precision (a very fast pole): use a shorter period</source>
+        <translation>a discretização exata estoura a precisão dupla (um polo muito rápido): use um período menor</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_exceeds_nyquist</name>
+    <message>
+        <source>must not exceed the Nyquist frequency pi/Ts</source>
+        <translation>não deve exceder a frequência de Nyquist pi/Ts</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_f0_nonzero</name>
+    <message>
+        <source>F(0) must be nonzero</source>
+        <translation>F(0) deve ser diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_finite_above_one</name>
+    <message>
+        <source>must be a finite number &gt; 1</source>
+        <translation>deve ser um número finito &gt; 1</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_finite_above_zero</name>
+    <message>
+        <source>must be a finite number &gt; 0</source>
+        <translation>deve ser um número finito &gt; 0</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_finite_and_not_negative</name>
+    <message>
+        <source>must be finite and &gt;= 0</source>
+        <translation>deve ser finito e &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_frequencies_not_negative</name>
+    <message>
+        <source>frequencies must be &gt;= 0</source>
+        <translation>as frequências devem ser &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_in_integer_range</name>
+    <message>
+        <source>must be in %1..%2</source>
+        <translation>deve estar em %1..%2</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_in_open_range</name>
+    <message>
+        <source>must be in (%1, %2)</source>
+        <translation>deve estar em (%1, %2)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_in_range_open_left</name>
+    <message>
+        <source>must be in (%1, %2]</source>
+        <translation>deve estar em (%1, %2]</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_kmax_range</name>
+    <message>
+        <source>must be finite and &gt;= 0 (0: automatic)</source>
+        <translation>deve ser finito e &gt;= 0 (0: automático)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_biproper_infinity</name>
+    <message>
+        <source>the loop is biproper and d_n + K n_n vanishes at K = %1: a root passes through infinity</source>
+        <translation>a malha é biprópria e d_n + K n_n se anula em K = %1: uma raiz passa pelo infinito</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_cancellation</name>
+    <message>
+        <source>near pole-zero cancellation at %1: that branch has (almost) no length</source>
+        <translation>quase cancelamento polo-zero em %1: esse ramo tem comprimento (quase) nulo</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_gain_limit</name>
+    <message>
+        <source>stopped at K &gt; 1e250 before every branch converged</source>
+        <translation>parou em K &gt; 1e250 antes de todos os ramos convergirem</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_improper</name>
+    <message>
+        <source>degree %1 exceeds the denominator&apos;s %2: the loop is improper</source>
+        <translation>o grau %1 excede o do denominador, %2: a malha é imprópria</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_no_poles</name>
+    <message>
+        <source>must have degree &gt;= 1 (a loop without poles has no locus)</source>
+        <translation>deve ter grau &gt;= 1 (uma malha sem polos não tem lugar das raízes)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_point_limit</name>
+    <message>
+        <source>stopped at the point limit (%1) at K = %2 before every branch converged</source>
+        <translation>parou no limite de pontos (%1) em K = %2 antes de todos os ramos convergirem</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_poles_ill_conditioned</name>
+    <message>
+        <source>the open-loop poles near %1 are ill-conditioned (clustered or multiple roots): round-off alone can move them by about %2 of their size, so they and the locus near them may be wrong</source>
+        <translation>os polos de malha aberta perto de %1 são mal condicionados (raízes agrupadas ou múltiplas): o arredondamento sozinho pode movê-los em cerca de %2 do seu tamanho, então eles e o lugar das raízes perto deles podem estar errados</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_sample_skipped</name>
+    <message>
+        <source>%1 = %2: skipped, the pole count changed</source>
+        <translation>%1 = %2: ignorado, o número de polos mudou</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_step_bound</name>
+    <message>
+        <source>the step bound could not be met near K = %1</source>
+        <translation>o limite de passo não pôde ser respeitado perto de K = %1</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_time_bound</name>
+    <message>
+        <source>stopped at the time bound (%1 s, %2 points) at K = %3 before every branch converged: its roots are hard to find (an ill-conditioned loop)</source>
+        <translation>parou no limite de tempo (%1 s, %2 pontos) em K = %3 antes de todos os ramos convergirem: suas raízes são difíceis de encontrar (uma malha mal condicionada)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_work_bound</name>
+    <message>
+        <source>stopped at the work bound (about %1 million operations, %2 points) at K = %3 before every branch converged: the loop&apos;s order %4 makes each point expensive</source>
+        <translation>parou no limite de trabalho (cerca de %1 milhões de operações, %2 pontos) em K = %3 antes de todos os ramos convergirem: a ordem %4 da malha torna cada ponto caro</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_zero_numerator</name>
+    <message>
+        <source>the numerator is zero: there is no locus</source>
+        <translation>o numerador é zero: não há lugar das raízes</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_locus_zeros_ill_conditioned</name>
+    <message>
+        <source>the open-loop zeros near %1 are ill-conditioned (clustered or multiple roots): round-off alone can move them by about %2 of their size, so they and the locus near them may be wrong</source>
+        <translation>os zeros de malha aberta perto de %1 são mal condicionados (raízes agrupadas ou múltiplas): o arredondamento sozinho pode movê-los em cerca de %2 do seu tamanho, então eles e o lugar das raízes perto deles podem estar errados</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_loop_improper</name>
+    <message>
+        <source>the loop is improper (more zeros than poles)</source>
+        <translation>a malha é imprópria (mais zeros que polos)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_margins_closed_loop_unstable</name>
+    <message>
+        <source>the closed loop is unstable: the margins and peaks describe the frequency response, not robustness</source>
+        <translation>a malha fechada é instável: as margens e os picos descrevem a resposta em frequência, não a robustez</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_model_has_no_state</name>
+    <message>
+        <source>has no state</source>
+        <translation>não tem estado</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_model_not_finite</name>
+    <message>
+        <source>has a coefficient that is not a finite number</source>
+        <translation>tem um coeficiente que não é um número finito</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_model_sizes_disagree</name>
+    <message>
+        <source>phi (%1 x %2), gamma (%3) and c (%4) sizes disagree</source>
+        <translation>os tamanhos de phi (%1 x %2), gamma (%3) e c (%4) não concordam</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_number_not_negative</name>
+    <message>
+        <source>must be a number &gt;= 0</source>
+        <translation>deve ser um número &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_nyquist_fractional_turns</name>
+    <message>
+        <source>the curve&apos;s turn around -1 is not a whole number of turns</source>
+        <translation>a volta da curva em torno de -1 não é um número inteiro de voltas</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_nyquist_sampling_bound</name>
+    <message>
+        <source>the sampling bound was reached near a sharp turn of the curve: the encirclement count may be wrong</source>
+        <translation>o limite de amostragem foi atingido perto de uma curva acentuada: a contagem de envolvimentos pode estar errada</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_nyquist_through_minus_one</name>
+    <message>
+        <source>the curve passes through -1: a closed-loop pole lies on the stability boundary, the encirclement count is not defined</source>
+        <translation>a curva passa por -1: um polo de malha fechada está na fronteira de estabilidade, a contagem de envolvimentos não é definida</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_positive</name>
+    <message>
+        <source>must be positive</source>
+        <translation>deve ser positivo</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_return_difference_zero</name>
+    <message>
+        <source>1 + L is zero (L = -1)</source>
+        <translation>1 + L é zero (L = -1)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_swept_values_not_positive</name>
+    <message>
+        <source>the swept values must be &gt; 0</source>
+        <translation>os valores da varredura devem ser &gt; 0</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_to_equals_from</name>
+    <message>
+        <source>must differ from &apos;from&apos;</source>
+        <translation>deve ser diferente de &apos;from&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_ts_range</name>
+    <message>
+        <source>must be finite and &gt;= 0 (0: continuous)</source>
+        <translation>deve ser finito e &gt;= 0 (0: contínuo)</translation>
+    </message>
+</context>
+<context>
+    <name>analysis_view_empty</name>
+    <message>
+        <source>needs reMin &lt; reMax and imMin &lt; imMax</source>
+        <translation>exige reMin &lt; reMax e imMin &lt; imMax</translation>
+    </message>
+</context>
+<context>
+    <name>at_least</name>
+    <message>
+        <source>must be at least %1</source>
+        <translation>deve ser pelo menos %1</translation>
+    </message>
+</context>
+<context>
+    <name>circle_too_short</name>
+    <message>
+        <source>the circle lasts fewer than 3 samples: no ISO 230-4 figures</source>
+        <translation>o círculo dura menos de 3 amostras: sem valores ISO 230-4</translation>
+    </message>
+</context>
+<context>
+    <name>closed_loop_unstable</name>
+    <message>
+        <source>the closed loop is unstable</source>
+        <translation>a malha fechada é instável</translation>
+    </message>
+</context>
+<context>
+    <name>contour_accel_too_long</name>
+    <message>
+        <source>%5 mm/s^2 needs at least %1 to move the path&apos;s %6 mm from rest to rest (2 sqrt(L / A)), more than the %2 samples at dt %3 s hold (%4)</source>
+        <translation>%5 mm/s^2 precisa de pelo menos %1 para percorrer os %6 mm do caminho de repouso a repouso (2 sqrt(L / A)), mais do que comportam as %2 amostras com dt %3 s (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_arc_length_overflows</name>
+    <message>
+        <source>an arc&apos;s length overflows a double</source>
+        <translation>o comprimento de um arco excede a faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>contour_arc_not_finite</name>
+    <message>
+        <source>an arc&apos;s centre, radius and angles must be finite numbers</source>
+        <translation>o centro, o raio e os ângulos de um arco devem ser números finitos</translation>
+    </message>
+</context>
+<context>
+    <name>contour_arc_radius_not_positive</name>
+    <message>
+        <source>an arc&apos;s radius must be greater than zero</source>
+        <translation>o raio de um arco deve ser maior que zero</translation>
+    </message>
+</context>
+<context>
+    <name>contour_arc_sweep</name>
+    <message>
+        <source>an arc&apos;s sweep must be nonzero and at most one turn</source>
+        <translation>a varredura angular de um arco deve ser não nula e de no máximo uma volta</translation>
+    </message>
+</context>
+<context>
+    <name>contour_axis_diverged</name>
+    <message>
+        <source>%1 axis: the simulated run diverged (a sample is not a finite number)</source>
+        <translation>eixo %1: a simulação divergiu (uma amostra não é um número finito)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_axis_saturated</name>
+    <message>
+        <source>%1 axis: |u| reached the actuator limit of %2 V for %3 s</source>
+        <translation>eixo %1: |u| atingiu o limite do atuador de %2 V por %3 s</translation>
+    </message>
+</context>
+<context>
+    <name>contour_ballbar_many</name>
+    <message>
+        <source>the program holds %1 full circles: the figures are those of %2 and %3</source>
+        <translation>o programa contém %1 círculos completos: os valores são os de %2 e %3</translation>
+    </message>
+</context>
+<context>
+    <name>contour_ballbar_no_opposite</name>
+    <message>
+        <source>none of the program&apos;s %1 full circles runs the circle of %2 the other way on the same centre and radius: G and F are that circle&apos;s, no circular hysteresis H</source>
+        <translation>nenhum dos %1 círculos completos do programa percorre o círculo de %2 no outro sentido com o mesmo centro e raio: G e F são desse círculo, sem histerese circular H</translation>
+    </message>
+</context>
+<context>
+    <name>contour_ballbar_one_way</name>
+    <message>
+        <source>the program runs its full circle (%1) one way only: no circular hysteresis H, which needs a clockwise and a counter-clockwise run of the same circle</source>
+        <translation>o programa percorre seu círculo completo (%1) em um só sentido: sem histerese circular H, que precisa de uma execução horária e de uma anti-horária do mesmo círculo</translation>
+    </message>
+</context>
+<context>
+    <name>contour_corner_angle</name>
+    <message>
+        <source>must be in [0, 180) degrees</source>
+        <translation>deve estar em [0, 180) graus</translation>
+    </message>
+</context>
+<context>
+    <name>contour_feed_per_segment</name>
+    <message>
+        <source>needs one value per path segment (%1), got %2</source>
+        <translation>precisa de um valor por segmento do caminho (%1), recebeu %2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_feed_scale_outside</name>
+    <message>
+        <source>%1 makes the feed of line %2 (%3 mm/s) %4 mm/s, outside the planner&apos;s [%5, %6] mm/s</source>
+        <translation>%1 torna o avanço da linha %2 (%3 mm/s) %4 mm/s, fora da faixa [%5, %6] mm/s do planejador</translation>
+    </message>
+</context>
+<context>
+    <name>contour_feeds_too_long</name>
+    <message>
+        <source>every segment at its feed needs at least %1 to move the path&apos;s %5 mm, more than the %2 samples at dt %3 s hold (%4)</source>
+        <translation>todos os segmentos em seus avanços precisam de pelo menos %1 para percorrer os %5 mm do caminho, mais do que comportam as %2 amostras com dt %3 s (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_fit_radius_not_real</name>
+    <message>
+        <source>give no circle (the algebraic fit&apos;s radius is not real)</source>
+        <translation>não dão nenhum círculo (o raio do ajuste algébrico não é real)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_arc_both_r_ij</name>
+    <message>
+        <source>arc %1 at column %2 has both R and I/J; give one of them</source>
+        <translation>o arco %1 na coluna %2 tem R e I/J; dê apenas um deles</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_arc_end_off_circle</name>
+    <message>
+        <source>arc %1 at column %2: the end point is off the circle (radius %3 mm at the end, %4 mm at the start; tolerance %5 mm)</source>
+        <translation>arco %1 na coluna %2: o ponto final está fora do círculo (raio %3 mm no fim, %4 mm no início; tolerância %5 mm)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_arc_needs_centre</name>
+    <message>
+        <source>arc %1 at column %2 needs I/J (its centre) or R (its radius)</source>
+        <translation>o arco %1 na coluna %2 precisa de I/J (seu centro) ou R (seu raio)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_arc_zero_radius</name>
+    <message>
+        <source>arc %1 at column %2 has a zero radius (I and J are 0)</source>
+        <translation>o arco %1 na coluna %2 tem raio nulo (I e J são 0)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_beyond_limit</name>
+    <message>
+        <source>%1 at column %2 is beyond %3 mm</source>
+        <translation>%1 na coluna %2 está além de %3 mm</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_block_number</name>
+    <message>
+        <source>block number %1 at column %2 must be a whole number 0..1e9</source>
+        <translation>o número de bloco %1 na coluna %2 deve ser um inteiro 0..1e9</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_comment_not_closed</name>
+    <message>
+        <source>comment opened at column %1 is not closed</source>
+        <translation>o comentário aberto na coluna %1 não está fechado</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_feed_not_positive</name>
+    <message>
+        <source>feed %1 at column %2 must be greater than zero</source>
+        <translation>o avanço %1 na coluna %2 deve ser maior que zero</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_full_circle_r</name>
+    <message>
+        <source>a full circle needs I and J: R at column %1 leaves its centre undefined</source>
+        <translation>um círculo completo precisa de I e J: R na coluna %1 deixa seu centro indefinido</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_hex_number</name>
+    <message>
+        <source>G-code numbers are decimal (no 0x prefix)</source>
+        <translation>os números de G-code são decimais (sem prefixo 0x)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_ignored_not_xy</name>
+    <message>
+        <source>%1 ignored (not an XY motion)</source>
+        <translation>%1 ignorado (não é um movimento XY)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_ignored_spindle</name>
+    <message>
+        <source>%1 ignored (spindle speed)</source>
+        <translation>%1 ignorado (velocidade do fuso)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_ignored_tool</name>
+    <message>
+        <source>%1 ignored (tool)</source>
+        <translation>%1 ignorado (ferramenta)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_ignored_z</name>
+    <message>
+        <source>%1 ignored (the path is XY only)</source>
+        <translation>%1 ignorado (o caminho é somente XY)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_incremental_beyond</name>
+    <message>
+        <source>the incremental move at column %1 ends beyond %2 mm</source>
+        <translation>o movimento incremental na coluna %1 termina além de %2 mm</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_line</name>
+    <message>
+        <source>line %1</source>
+        <translation>linha %1</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_line_warning</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation>linha %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_lines</name>
+    <message>
+        <source>lines %1-%2</source>
+        <translation>linhas %1-%2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_lines_after_end</name>
+    <message>
+        <source>the lines after the program end %1 are not read</source>
+        <translation>as linhas após o fim de programa %1 não são lidas</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_malformed_number</name>
+    <message>
+        <source>malformed number %1 at column %2: %3</source>
+        <translation>número malformado %1 na coluna %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_more_warnings</name>
+    <message>
+        <source>... and %1 more warnings</source>
+        <translation>... e mais %1 avisos</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_needs_arc</name>
+    <message>
+        <source>%1 at column %2 needs an arc (G2 or G3)</source>
+        <translation>%1 na coluna %2 precisa de um arco (G2 ou G3)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_no_feed</name>
+    <message>
+        <source>feed move %1 at column %2 has no feed rate (no F programmed before it)</source>
+        <translation>o movimento de avanço %1 na coluna %2 não tem velocidade de avanço (nenhum F programado antes dele)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_no_feed_modal</name>
+    <message>
+        <source>feed move at column %1 has no feed rate (no F programmed before it)</source>
+        <translation>o movimento de avanço na coluna %1 não tem velocidade de avanço (nenhum F programado antes dele)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_no_motion</name>
+    <message>
+        <source>has no XY motion (no G0, G1, G2 or G3 move)</source>
+        <translation>não tem movimento XY (nenhum movimento G0, G1, G2 ou G3)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_no_motion_mode</name>
+    <message>
+        <source>%1 at column %2 has no motion mode (G0, G1, G2 or G3) before it</source>
+        <translation>%1 na coluna %2 não tem modo de movimento (G0, G1, G2 ou G3) antes dele</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_number_not_representable</name>
+    <message>
+        <source>the number of word %1 at column %2 is not a representable number</source>
+        <translation>o número da palavra %1 na coluna %2 não é um número representável</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_number_too_long</name>
+    <message>
+        <source>the number of word %1 at column %2 is longer than %3 characters</source>
+        <translation>o número da palavra %1 na coluna %2 tem mais de %3 caracteres</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_plane_not_xy</name>
+    <message>
+        <source>only the XY plane (G17) is supported, not %1 at column %2</source>
+        <translation>somente o plano XY (G17) é suportado, não %1 na coluna %2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_radius_below_half_chord</name>
+    <message>
+        <source>%1 at column %2 is smaller than half the chord (%3 mm) to the end point</source>
+        <translation>%1 na coluna %2 é menor que a metade da corda (%3 mm) até o ponto final</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_too_large</name>
+    <message>
+        <source>is larger than the limit of %1 bytes</source>
+        <translation>é maior que o limite de %1 bytes</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_too_many_lines</name>
+    <message>
+        <source>has more than the limit of %1 lines</source>
+        <translation>tem mais que o limite de %1 linhas</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_two_decimal_points</name>
+    <message>
+        <source>more than one decimal point</source>
+        <translation>mais de um ponto decimal</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_two_distance_modes</name>
+    <message>
+        <source>two distance modes on one line (%1 at column %2)</source>
+        <translation>dois modos de distância em uma linha (%1 na coluna %2)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_two_motion_codes</name>
+    <message>
+        <source>two motion codes %1 and %2 on one line (at column %3)</source>
+        <translation>dois códigos de movimento %1 e %2 em uma linha (na coluna %3)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_two_unit_codes</name>
+    <message>
+        <source>two unit codes on one line (%1 at column %2)</source>
+        <translation>dois códigos de unidade em uma linha (%1 na coluna %2)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_unexpected_character</name>
+    <message>
+        <source>unexpected character &apos;%1&apos; at column %2</source>
+        <translation>caractere inesperado &apos;%1&apos; na coluna %2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_unknown_word</name>
+    <message>
+        <source>unknown word %1 at column %2</source>
+        <translation>palavra desconhecida %1 na coluna %2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_word_no_number</name>
+    <message>
+        <source>word %1 at column %2 has no number</source>
+        <translation>a palavra %1 na coluna %2 não tem número</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_word_twice</name>
+    <message>
+        <source>word %1 is given twice (%2 at column %3)</source>
+        <translation>a palavra %1 é dada duas vezes (%2 na coluna %3)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_gcode_zero_radius_word</name>
+    <message>
+        <source>%1 at column %2 is a zero radius</source>
+        <translation>%1 na coluna %2 é um raio nulo</translation>
+    </message>
+</context>
+<context>
+    <name>contour_has_no_sample</name>
+    <message>
+        <source>has no sample</source>
+        <translation>não tem amostra</translation>
+    </message>
+</context>
+<context>
+    <name>contour_has_no_segment</name>
+    <message>
+        <source>has no segment</source>
+        <translation>não tem segmento</translation>
+    </message>
+</context>
+<context>
+    <name>contour_jerk_too_long</name>
+    <message>
+        <source>%5 mm/s^3 needs at least %1 to move the path&apos;s %6 mm from rest to rest (4 (L / 2J)^(1/3)), more than the %2 samples at dt %3 s hold (%4)</source>
+        <translation>%5 mm/s^3 precisa de pelo menos %1 para percorrer os %6 mm do caminho de repouso a repouso (4 (L / 2J)^(1/3)), mais do que comportam as %2 amostras com dt %3 s (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_line_length_overflows</name>
+    <message>
+        <source>a line&apos;s length overflows a double</source>
+        <translation>o comprimento de uma reta excede a faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>contour_line_not_finite</name>
+    <message>
+        <source>a line&apos;s end points must be finite numbers</source>
+        <translation>os pontos extremos de uma reta devem ser números finitos</translation>
+    </message>
+</context>
+<context>
+    <name>contour_line_zero_length</name>
+    <message>
+        <source>a line must have a nonzero length</source>
+        <translation>uma reta deve ter comprimento não nulo</translation>
+    </message>
+</context>
+<context>
+    <name>contour_max_jerk</name>
+    <message>
+        <source>must be a finite number &gt;= 0 (0: no jerk limit)</source>
+        <translation>deve ser um número finito &gt;= 0 (0: sem limite de jerk)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_needs_points</name>
+    <message>
+        <source>needs at least %1 points</source>
+        <translation>precisa de pelo menos %1 pontos</translation>
+    </message>
+</context>
+<context>
+    <name>contour_one_flag_per_segment</name>
+    <message>
+        <source>needs one flag per path segment</source>
+        <translation>precisa de um indicador por segmento do caminho</translation>
+    </message>
+</context>
+<context>
+    <name>contour_path_length_overflows</name>
+    <message>
+        <source>its length overflows a double</source>
+        <translation>seu comprimento excede a faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>contour_point_not_finite</name>
+    <message>
+        <source>point %1 is not finite</source>
+        <translation>o ponto %1 não é finito</translation>
+    </message>
+</context>
+<context>
+    <name>contour_points_collinear</name>
+    <message>
+        <source>are collinear (or coincide): no circle fits them</source>
+        <translation>são colineares (ou coincidem): nenhum círculo se ajusta a eles</translation>
+    </message>
+</context>
+<context>
+    <name>contour_profile_too_long</name>
+    <message>
+        <source>the profile lasts %1 s, %2 samples at dt %3 s, more than the limit of %4</source>
+        <translation>o perfil dura %1 s, %2 amostras com dt %3 s, mais que o limite de %4</translation>
+    </message>
+</context>
+<context>
+    <name>contour_program_own_feeds_too_long</name>
+    <message>
+        <source>the program needs at least %1 at its own feeds (the F words), more than the %2 samples at dt %3 s hold (%4)</source>
+        <translation>o programa precisa de pelo menos %1 com seus próprios avanços (as palavras F), mais do que comportam as %2 amostras com dt %3 s (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_program_scaled_too_long</name>
+    <message>
+        <source>the program needs at least %1 at %5 times its feeds, more than the %2 samples at dt %3 s hold (%4)</source>
+        <translation>o programa precisa de pelo menos %1 com %5 vezes seus avanços, mais do que comportam as %2 amostras com dt %3 s (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_rapid_feed_outside</name>
+    <message>
+        <source>%1 mm/min is outside the planner&apos;s range [%2, %3] mm/min</source>
+        <translation>%1 mm/min está fora da faixa [%2, %3] mm/min do planejador</translation>
+    </message>
+</context>
+<context>
+    <name>contour_rapid_of_line</name>
+    <message>
+        <source>%1 (the rapid of line %2)</source>
+        <translation>%1 (o movimento rápido da linha %2)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_rapids_too_long</name>
+    <message>
+        <source>running the rapids needs at least %1 at the rapid feed, more than the %2 samples at dt %3 s hold (%4)</source>
+        <translation>executar os movimentos rápidos precisa de pelo menos %1 com o avanço rápido, mais do que comportam as %2 amostras com dt %3 s (%4)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_rate_outside_range</name>
+    <message>
+        <source>%1 %2 is outside the planner&apos;s range [%3, %4]</source>
+        <translation>%1 %2 está fora da faixa [%3, %4] do planejador</translation>
+    </message>
+</context>
+<context>
+    <name>contour_rate_outside_range_or_zero</name>
+    <message>
+        <source>%1 %2 is outside the planner&apos;s range [%3, %4] (0: none)</source>
+        <translation>%1 %2 está fora da faixa [%3, %4] do planejador (0: nenhum)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_rate_unit_segment</name>
+    <message>
+        <source>%1 (segment %2)</source>
+        <translation>%1 (segmento %2)</translation>
+    </message>
+</context>
+<context>
+    <name>contour_reversal_window</name>
+    <message>
+        <source>must be in (0, 45] degrees</source>
+        <translation>deve estar em (0, 45] graus</translation>
+    </message>
+</context>
+<context>
+    <name>contour_sample_not_finite</name>
+    <message>
+        <source>sample %1 is not finite</source>
+        <translation>a amostra %1 não é finita</translation>
+    </message>
+</context>
+<context>
+    <name>contour_segment_feed_invalid</name>
+    <message>
+        <source>segment %1: must be a finite number &gt; 0, got %2</source>
+        <translation>segmento %1: deve ser um número finito &gt; 0, recebeu %2</translation>
+    </message>
+</context>
+<context>
+    <name>contour_segment_peak_speed</name>
+    <message>
+        <source>segment %1 (%2 mm) cannot be planned: its peak speed rounds to %3 mm/s</source>
+        <translation>o segmento %1 (%2 mm) não pode ser planejado: sua velocidade de pico arredonda para %3 mm/s</translation>
+    </message>
+</context>
+<context>
+    <name>contour_start_within</name>
+    <message>
+        <source>must be finite and within %1 mm</source>
+        <translation>deve ser finito e estar dentro de %1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>contour_xy_different_lengths</name>
+    <message>
+        <source>x and y have different lengths</source>
+        <translation>x e y têm comprimentos diferentes</translation>
+    </message>
+</context>
+<context>
+    <name>design_a0_normalized</name>
+    <message>
+        <source>A(0) = %1: A and B divided by it so that A is monic (same plant)</source>
+        <translation>A(0) = %1: A e B divididos por ele para que A seja mônico (mesma planta)</translation>
+    </message>
+</context>
+<context>
+    <name>design_above_min_frequency</name>
+    <message>
+        <source>must be above minFrequencyHz</source>
+        <translation>deve ser maior que minFrequencyHz</translation>
+    </message>
+</context>
+<context>
+    <name>design_b0_not_zero</name>
+    <message>
+        <source>the z^0 coefficient must be 0 (at least one sample of delay; otherwise u(k) and y(k) form an algebraic loop)</source>
+        <translation>o coeficiente de z^0 deve ser 0 (pelo menos uma amostra de atraso; caso contrário u(k) e y(k) formam um laço algébrico)</translation>
+    </message>
+</context>
+<context>
+    <name>design_b1_negligible</name>
+    <message>
+        <source>B(1) = %1 is negligible: the controller (Kf = %2) would need gains beyond 1e100</source>
+        <translation>B(1) = %1 é desprezível: o controlador (Kf = %2) precisaria de ganhos acima de 1e100</translation>
+    </message>
+</context>
+<context>
+    <name>design_b1_too_small</name>
+    <message>
+        <source>B(1) = %1 is too small: Kf = T(1)/B(1) overflows a double</source>
+        <translation>B(1) = %1 é pequeno demais: Kf = T(1)/B(1) estoura um double</translation>
+    </message>
+</context>
+<context>
+    <name>design_b1_zero</name>
+    <message>
+        <source>B(1) = 0 (a zero at z = 1): the plant has no steady-state gain and Kf = T(1)/B(1) does not exist</source>
+        <translation>B(1) = 0 (um zero em z = 1): a planta não tem ganho em regime e Kf = T(1)/B(1) não existe</translation>
+    </message>
+</context>
+<context>
+    <name>design_b_zero</name>
+    <message>
+        <source>B is zero: the plant has no input</source>
+        <translation>B é zero: a planta não tem entrada</translation>
+    </message>
+</context>
+<context>
+    <name>design_common_factor</name>
+    <message>
+        <source>shares a root with A (common factor of A and B): A F + B G = T has no solution (Sylvester condition number %1)</source>
+        <translation>compartilha uma raiz com A (fator comum de A e B): A F + B G = T não tem solução (número de condição de Sylvester %1)</translation>
+    </message>
+</context>
+<context>
+    <name>design_common_factor_root</name>
+    <message>
+        <source>shares the root z = %1 with A (common factor of A and B): A F + B G = T has no solution (Sylvester condition number %2)</source>
+        <translation>compartilha a raiz z = %1 com A (fator comum de A e B): A F + B G = T não tem solução (número de condição de Sylvester %2)</translation>
+    </message>
+</context>
+<context>
+    <name>design_coupling_not_negative</name>
+    <message>
+        <source>must be &gt;= 0 (0 switches the coupling off)</source>
+        <translation>deve ser &gt;= 0 (0 desliga o acoplamento)</translation>
+    </message>
+</context>
+<context>
+    <name>design_diophantine_overflow</name>
+    <message>
+        <source>the coefficients of A and B are too large in magnitude: A F + B G overflows a double</source>
+        <translation>os coeficientes de A e B são grandes demais em módulo: A F + B G estoura um double</translation>
+    </message>
+</context>
+<context>
+    <name>design_gt_k0_out_of_range</name>
+    <message>
+        <source>plant gain k0 = %1 is out of range with kp = %2 and wn = %3 rad/s: kp k0 = %4, psi1 = wn^4/(kp k0) = %5 and ki = kp psi1 = %6 must be finite nonzero numbers for the Guillemin-Truxal design</source>
+        <translation>o ganho da planta k0 = %1 está fora da faixa com kp = %2 e wn = %3 rad/s: kp k0 = %4, psi1 = wn^4/(kp k0) = %5 e ki = kp psi1 = %6 devem ser números finitos não nulos para o projeto de Guillemin-Truxal</translation>
+    </message>
+</context>
+<context>
+    <name>design_gt_kp_out_of_range</name>
+    <message>
+        <source>%1 is out of range with this plant and wn (plant gain k0 = %2, wn = %3 rad/s): kp k0 = %4, psi1 = wn^4/(kp k0) = %5 and ki = kp psi1 = %6 must be finite nonzero numbers for the Guillemin-Truxal design</source>
+        <translation>%1 está fora da faixa com esta planta e wn (ganho da planta k0 = %2, wn = %3 rad/s): kp k0 = %4, psi1 = wn^4/(kp k0) = %5 e ki = kp psi1 = %6 devem ser números finitos não nulos para o projeto de Guillemin-Truxal</translation>
+    </message>
+</context>
+<context>
+    <name>design_gt_wn_out_of_range</name>
+    <message>
+        <source>%1 rad/s is out of range: wn^4 = %2 and a2/wn^2 = %3 must be finite nonzero numbers for the reference model (Braga et al. Eq. 11-18)</source>
+        <translation>%1 rad/s está fora da faixa: wn^4 = %2 e a2/wn^2 = %3 devem ser números finitos não nulos para o modelo de referência (Braga et al. Eq. 11-18)</translation>
+    </message>
+</context>
+<context>
+    <name>design_near_common_factor</name>
+    <message>
+        <source>near-common factor of A and B; Sylvester condition number %1, F and G are large and sensitive</source>
+        <translation>quase fator comum de A e B; número de condição de Sylvester %1, F e G são grandes e sensíveis</translation>
+    </message>
+</context>
+<context>
+    <name>design_near_common_factor_pair</name>
+    <message>
+        <source>near-common factor of A and B: pole z = %1 and zero z = %2 are %3 apart; Sylvester condition number %4, F and G are large and sensitive</source>
+        <translation>quase fator comum de A e B: o polo z = %1 e o zero z = %2 estão a %3 de distância; número de condição de Sylvester %4, F e G são grandes e sensíveis</translation>
+    </message>
+</context>
+<context>
+    <name>design_no_frequency_to_test</name>
+    <message>
+        <source>leaves no frequency to test</source>
+        <translation>não deixa nenhuma frequência para testar</translation>
+    </message>
+</context>
+<context>
+    <name>design_notch_above_nyquist</name>
+    <message>
+        <source>lies at or above the controller&apos;s Nyquist frequency of %1 Hz (1 / (2 Ts))</source>
+        <translation>está na frequência de Nyquist do controlador, %1 Hz (1 / (2 Ts)), ou acima dela</translation>
+    </message>
+</context>
+<context>
+    <name>design_notch_centre_range</name>
+    <message>
+        <source>must be 0 (no notch) or a frequency &gt; 0 Hz</source>
+        <translation>deve ser 0 (sem notch) ou uma frequência &gt; 0 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>design_notch_depth_range</name>
+    <message>
+        <source>must be an attenuation in (0, 120] dB</source>
+        <translation>deve ser uma atenuação em (0, 120] dB</translation>
+    </message>
+</context>
+<context>
+    <name>design_notch_no_mode</name>
+    <message>
+        <source>the axis has no flexible mode to design a notch for</source>
+        <translation>o eixo não tem modo flexível para o qual projetar um filtro notch</translation>
+    </message>
+</context>
+<context>
+    <name>design_notch_width_range</name>
+    <message>
+        <source>must be a bandwidth &gt; 0 Hz and below twice the centre frequency</source>
+        <translation>deve ser uma largura de banda &gt; 0 Hz e abaixo do dobro da frequência central</translation>
+    </message>
+</context>
+<context>
+    <name>design_pid_conditionally_stable</name>
+    <message>
+        <source>the closed loop is unstable although the phase margin at the crossover is met (a conditionally stable loop): lower the phase margin or raise the crossover</source>
+        <translation>a malha fechada é instável embora a margem de fase no cruzamento seja atendida (uma malha condicionalmente estável): reduza a margem de fase ou aumente a frequência de cruzamento</translation>
+    </message>
+</context>
+<context>
+    <name>design_pid_gains_out_of_range</name>
+    <message>
+        <source>the gains for this target overflow or vanish in double precision (P = %1 V/mm, I = %2 V/(mm s), D = %3 V s/mm) at %4 rad/s (plant phase %5 deg, so the phase margin of %6 deg needs a controller phase of %7 deg)</source>
+        <translation>os ganhos para este alvo estouram ou se anulam em precisão dupla (P = %1 V/mm, I = %2 V/(mm s), D = %3 V s/mm) em %4 rad/s (fase da planta %5 graus, então a margem de fase de %6 graus exige uma fase do controlador de %7 graus)</translation>
+    </message>
+</context>
+<context>
+    <name>design_pid_phase_out_of_reach</name>
+    <message>
+        <source>a PID with Ti = 4 Td gives a phase between -90 and 90 deg at %1 rad/s (plant phase %2 deg, so the phase margin of %3 deg needs a controller phase of %4 deg): lower the phase margin or the crossover</source>
+        <translation>um PID com Ti = 4 Td dá uma fase entre -90 e 90 graus em %1 rad/s (fase da planta %2 graus, então a margem de fase de %3 graus exige uma fase do controlador de %4 graus): reduza a margem de fase ou a frequência de cruzamento</translation>
+    </message>
+</context>
+<context>
+    <name>design_pid_pi_phase_too_high</name>
+    <message>
+        <source>a PI gives a phase between -90 and 0 deg at %1 rad/s (plant phase %2 deg, so the phase margin of %3 deg needs a controller phase of %4 deg): lower the phase margin or the crossover, or add D</source>
+        <translation>um PI dá uma fase entre -90 e 0 graus em %1 rad/s (fase da planta %2 graus, então a margem de fase de %3 graus exige uma fase do controlador de %4 graus): reduza a margem de fase ou a frequência de cruzamento, ou adicione D</translation>
+    </message>
+</context>
+<context>
+    <name>design_pid_pi_phase_too_low</name>
+    <message>
+        <source>a PI gives a phase between -90 and 0 deg at %1 rad/s (plant phase %2 deg, so the phase margin of %3 deg needs a controller phase of %4 deg): raise the crossover or the phase margin</source>
+        <translation>um PI dá uma fase entre -90 e 0 graus em %1 rad/s (fase da planta %2 graus, então a margem de fase de %3 graus exige uma fase do controlador de %4 graus): aumente a frequência de cruzamento ou a margem de fase</translation>
+    </message>
+</context>
+<context>
+    <name>design_pid_several_crossovers</name>
+    <message>
+        <source>the loop has %1 gain crossovers (a lightly damped plant, a1^2 &lt; 2 a2): the margin holds at the target, check the others on the Bode plot</source>
+        <translation>a malha tem %1 cruzamentos de ganho (uma planta pouco amortecida, a1^2 &lt; 2 a2): a margem vale no alvo, verifique os outros no diagrama de Bode</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_chattering</name>
+    <message>
+        <source>the relay switched more than 64 times within one step near t = %1 s (chattering): stopped there</source>
+        <translation>o relé chaveou mais de 64 vezes em um passo perto de t = %1 s (chattering): parou ali</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_coarse_step</name>
+    <message>
+        <source>the step of %1 s is coarse against the expected period of %2 s: a step spanning two sign changes of y misses both</source>
+        <translation>o passo de %1 s é grosseiro diante do período esperado de %2 s: um passo que abrange duas trocas de sinal de y perde ambas</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_early_crossing</name>
+    <message>
+        <source>the periodic solution of half period %1 s crosses zero at t = %2 s inside the half period: the relay would switch more often</source>
+        <translation>a solução periódica de meio período %1 s cruza o zero em t = %2 s dentro do meio período: o relé chavearia com mais frequência</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_no_half_period</name>
+    <message>
+        <source>no half period between %1 and %2 s gives a symmetric relay oscillation (y at the switch keeps its sign)</source>
+        <translation>nenhum meio período entre %1 e %2 s dá uma oscilação simétrica do relé (y no chaveamento mantém o sinal)</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_not_falling</name>
+    <message>
+        <source>the periodic solution of half period %1 s does not cross zero downwards at the switch (y&apos; = %2 mm/s): not a relay oscillation</source>
+        <translation>a solução periódica de meio período %1 s não cruza o zero descendo no chaveamento (y&apos; = %2 mm/s): não é uma oscilação de relé</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_too_few_switches</name>
+    <message>
+        <source>fewer than two switches to +d in %1 s: no period or amplitude measured (run longer)</source>
+        <translation>menos de dois chaveamentos para +d em %1 s: nenhum período ou amplitude medidos (simule por mais tempo)</translation>
+    </message>
+</context>
+<context>
+    <name>design_relay_too_many_steps</name>
+    <message>
+        <source>%1 s makes %2 steps over %3 s; at most 2e6: raise the step or shorten the run</source>
+        <translation>%1 s dá %2 passos em %3 s; no máximo 2e6: aumente o passo ou encurte a simulação</translation>
+    </message>
+</context>
+<context>
+    <name>design_spectrum_frequency_order</name>
+    <message>
+        <source>must be finite, &gt;= 0 and increasing (value %1)</source>
+        <translation>deve ser finita, &gt;= 0 e crescente (valor %1)</translation>
+    </message>
+</context>
+<context>
+    <name>design_spectrum_no_frequency</name>
+    <message>
+        <source>has no frequency up to %1 Hz</source>
+        <translation>não tem frequência até %1 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>design_spectrum_power_negative</name>
+    <message>
+        <source>must be finite and &gt;= 0 (value %1)</source>
+        <translation>deve ser finita e &gt;= 0 (valor %1)</translation>
+    </message>
+</context>
+<context>
+    <name>design_spectrum_power_zero</name>
+    <message>
+        <source>is zero at every frequency used</source>
+        <translation>é zero em todas as frequências usadas</translation>
+    </message>
+</context>
+<context>
+    <name>design_spectrum_sizes_differ</name>
+    <message>
+        <source>has %1 values for %2 frequencies</source>
+        <translation>tem %1 valores para %2 frequências</translation>
+    </message>
+</context>
+<context>
+    <name>design_t0_not_one</name>
+    <message>
+        <source>T(0), the z^0 coefficient, must be 1</source>
+        <translation>T(0), o coeficiente de z^0, deve ser 1</translation>
+    </message>
+</context>
+<context>
+    <name>design_t_root_outside</name>
+    <message>
+        <source>root z = %1 is not inside the unit circle: the closed loop would be unstable</source>
+        <translation>a raiz z = %1 não está dentro do círculo unitário: a malha fechada seria instável</translation>
+    </message>
+</context>
+<context>
+    <name>design_ti_not_positive</name>
+    <message>
+        <source>Ti = kp/ki is not a positive time; give Tt (s)</source>
+        <translation>Ti = kp/ki não é um tempo positivo; informe Tt (s)</translation>
+    </message>
+</context>
+<context>
+    <name>design_tracking_time_not_negative</name>
+    <message>
+        <source>must be &gt;= 0 (0: Tt = Ti = kp/ki)</source>
+        <translation>deve ser &gt;= 0 (0: Tt = Ti = kp/ki)</translation>
+    </message>
+</context>
+<context>
+    <name>design_z0_nonzero</name>
+    <message>
+        <source>the z^0 coefficient must be nonzero</source>
+        <translation>o coeficiente de z^0 deve ser diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>design_zero_polynomial_no_roots</name>
+    <message>
+        <source>the zero polynomial has no roots</source>
+        <translation>o polinômio nulo não tem raízes</translation>
+    </message>
+</context>
+<context>
+    <name>design_zpetc_b_minus_out_of_range</name>
+    <message>
+        <source>B-(1) = %1 is too small (or too large) to square in double precision: scale B, ZPETC cannot normalize its gain</source>
+        <translation>B-(1) = %1 é pequeno (ou grande) demais para ser elevado ao quadrado em precisão dupla: escale B, o ZPETC não consegue normalizar seu ganho</translation>
+    </message>
+</context>
+<context>
+    <name>design_zpetc_b_minus_zero</name>
+    <message>
+        <source>B-(1) = 0 (a zero at z = 1): ZPETC cannot normalize the gain</source>
+        <translation>B-(1) = 0 (um zero em z = 1): o ZPETC não consegue normalizar o ganho</translation>
+    </message>
+</context>
+<context>
+    <name>design_zpetc_overflow</name>
+    <message>
+        <source>the ZPETC filter overflows in double precision for this B and T: scale B</source>
+        <translation>o filtro ZPETC estoura a precisão dupla para estes B e T: escale B</translation>
+    </message>
+</context>
+<context>
+    <name>digital_loop_less_damped</name>
+    <message>
+        <source>the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 against %3 in the z-plane poles); lower the controller sample time or the delay</source>
+        <translation>a malha digital com Ts = %1 s é muito menos amortecida que o projeto (coeficiente de amortecimento %2 contra %3 nos polos do plano z); reduza o período de amostragem do controlador ou o atraso</translation>
+    </message>
+</context>
+<context>
+    <name>digital_loop_unstable</name>
+    <message>
+        <source>the digital loop at Ts = %1 s is unstable (its largest closed-loop pole has |z| = %2); lower the controller sample time</source>
+        <translation>a malha digital com Ts = %1 s é instável (seu maior polo de malha fechada tem |z| = %2); reduza o período de amostragem do controlador</translation>
+    </message>
+</context>
+<context>
+    <name>feedforward_beyond_limit</name>
+    <message>
+        <source>the feedforward alone needs %1 V on this trajectory, beyond the output limit of %2 V</source>
+        <translation>a pré-alimentação sozinha precisa de %1 V nesta trajetória, além do limite de saída de %2 V</translation>
+    </message>
+</context>
+<context>
+    <name>ff3_acceleration_spike</name>
+    <message>
+        <source>the cubic&apos;s acceleration step becomes a %1 V spike of the FF3 term (one controller period); the quintic move has no acceleration step</source>
+        <translation>o degrau de aceleração da cúbica vira um pico de %1 V do termo FF3 (um período do controlador); o movimento quíntico não tem degrau de aceleração</translation>
+    </message>
+</context>
+<context>
+    <name>field_reason</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>finite_not_negative</name>
+    <message>
+        <source>must be a finite number &gt;= 0</source>
+        <translation>deve ser um número finito &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>finite_positive</name>
+    <message>
+        <source>must be a finite number greater than zero</source>
+        <translation>deve ser um número finito maior que zero</translation>
+    </message>
+</context>
+<context>
+    <name>flexible_mode_on_arx</name>
+    <message>
+        <source>the flexible mode and the notch of gt apply to a continuous plant: this pole-placement axis runs its ARX model, which holds whatever mode its data showed (identify it from a log that excites the mode)</source>
+        <translation>o modo flexível e o notch de gt se aplicam a uma planta contínua: este eixo por alocação de polos usa seu modelo ARX, que contém o modo que seus dados mostraram (identifique-o a partir de um registro que excite o modo)</translation>
+    </message>
+</context>
+<context>
+    <name>has_no_samples</name>
+    <message>
+        <source>has no samples</source>
+        <translation>não tem amostras</translation>
+    </message>
+</context>
+<context>
+    <name>ident_a_sampled_record</name>
+    <message>
+        <source>a sampled record</source>
+        <translation>um registro amostrado</translation>
+    </message>
+</context>
+<context>
+    <name>ident_above_log_nyquist</name>
+    <message>
+        <source>%1 Hz: frequency above the log&apos;s Nyquist frequency of %2 Hz</source>
+        <translation>%1 Hz: frequência acima da frequência de Nyquist do log, %2 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_beyond</name>
+    <message>
+        <source>%1 mm/s^2 is beyond %2 mm/s^2 (100 000 g): not an acceleration</source>
+        <translation>%1 mm/s^2 está além de %2 mm/s^2 (100 000 g): não é uma aceleração</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_fields_header</name>
+    <message>
+        <source>has %1 fields, the header names %2</source>
+        <translation>tem %1 campos, o cabeçalho nomeia %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_interval</name>
+    <message>
+        <source>the sample interval %1 ms differs from the log&apos;s mean %2 ms by more than %3 % (samples lost, or logs joined)</source>
+        <translation>o intervalo de amostragem %1 ms difere da média do log, %2 ms, em mais de %3 % (amostras perdidas, ou logs unidos)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_klipper_too_few</name>
+    <message>
+        <source>has %1 samples at %2 Hz: Klipper&apos;s segment of %3 samples (%4 s) needs at least %5 (two half-overlapping segments)</source>
+        <translation>tem %1 amostras a %2 Hz: o segmento do Klipper de %3 amostras (%4 s) precisa de pelo menos %5 (dois segmentos com sobreposição de metade)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_no_column</name>
+    <message>
+        <source>no %1 column</source>
+        <translation>sem coluna %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_no_header</name>
+    <message>
+        <source>no header: a Klipper accelerometer log starts with #time,accel_x,accel_y,accel_z</source>
+        <translation>sem cabeçalho: um log de acelerômetro do Klipper começa com #time,accel_x,accel_y,accel_z</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_time_not_after</name>
+    <message>
+        <source>time %1 s is not after %2 s on line %3</source>
+        <translation>o tempo %1 s não é posterior a %2 s da linha %3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_accel_times_span</name>
+    <message>
+        <source>the times span %1 s: no sample interval can be derived</source>
+        <translation>os tempos abrangem %1 s: nenhum intervalo de amostragem pode ser derivado</translation>
+    </message>
+</context>
+<context>
+    <name>ident_anti_alias_factors</name>
+    <message>
+        <source>the anti-alias filter is for factors 2 to 1000</source>
+        <translation>o filtro anti-aliasing é para fatores de 2 a 1000</translation>
+    </message>
+</context>
+<context>
+    <name>ident_arx_input_not_exciting</name>
+    <message>
+        <source>input not persistently exciting for nb = %1 (the input block has rank %2)</source>
+        <translation>entrada não persistentemente excitante para nb = %1 (o bloco da entrada tem posto %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_arx_regressor_rank</name>
+    <message>
+        <source>regressor of %1 has rank %2 &lt; %3: the input is not persistently exciting of order na + nb = %4, or the data are exactly of lower order (noise-free): lower na or nb</source>
+        <translation>o regressor de %1 tem posto %2 &lt; %3: a entrada não é persistentemente excitante de ordem na + nb = %4, ou os dados são exatamente de ordem menor (sem ruído): reduza na ou nb</translation>
+    </message>
+</context>
+<context>
+    <name>ident_arx_unstable</name>
+    <message>
+        <source>A has a root outside the unit circle: the model is unstable (an integrating axis gives a root near z = 1)</source>
+        <translation>A tem uma raiz fora do círculo unitário: o modelo é instável (um eixo integrador dá uma raiz perto de z = 1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_b_all_zeros</name>
+    <message>
+        <source>is all zeros: the model has no input path</source>
+        <translation>é toda nula: o modelo não tem caminho de entrada</translation>
+    </message>
+</context>
+<context>
+    <name>ident_band_empty</name>
+    <message>
+        <source>%1 is empty or reversed</source>
+        <translation>%1 está vazia ou invertida</translation>
+    </message>
+</context>
+<context>
+    <name>ident_band_few_bins</name>
+    <message>
+        <source>%1 holds fewer than 3 frequency bins of the estimate (%2 to %3 Hz)</source>
+        <translation>%1 contém menos de 3 raias de frequência da estimativa (%2 a %3 Hz)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_between_n_100</name>
+    <message>
+        <source>must be between %1 and 100</source>
+        <translation>deve estar entre %1 e 100</translation>
+    </message>
+</context>
+<context>
+    <name>ident_beyond_last_sample</name>
+    <message>
+        <source>is beyond the last sample</source>
+        <translation>está além da última amostra</translation>
+    </message>
+</context>
+<context>
+    <name>ident_bin_increasing</name>
+    <message>
+        <source>must be finite and increasing (bin %1)</source>
+        <translation>deve ser finito e crescente (raia %1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_bin_not_negative</name>
+    <message>
+        <source>must be finite and not negative (bin %1)</source>
+        <translation>deve ser finito e não negativo (raia %1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_cell_decimal_comma</name>
+    <message>
+        <source>is not a number (a decimal comma where the file&apos;s decimal separator is the point)</source>
+        <translation>não é um número (uma vírgula decimal onde o separador decimal do arquivo é o ponto)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_cell_decimal_point</name>
+    <message>
+        <source>is not a number (a decimal point where the file&apos;s decimal separator is the comma)</source>
+        <translation>não é um número (um ponto decimal onde o separador decimal do arquivo é a vírgula)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_cell_not_number</name>
+    <message>
+        <source>is not a number</source>
+        <translation>não é um número</translation>
+    </message>
+</context>
+<context>
+    <name>ident_cell_out_of_range</name>
+    <message>
+        <source>is out of the range of a double</source>
+        <translation>está fora da faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>ident_cell_reason</name>
+    <message>
+        <source>&apos;%1&apos; %2</source>
+        <translation>&apos;%1&apos; %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_coefficient_not_finite</name>
+    <message>
+        <source>has a coefficient that is not finite</source>
+        <translation>tem um coeficiente que não é finito</translation>
+    </message>
+</context>
+<context>
+    <name>ident_column_input_output</name>
+    <message>
+        <source>column &apos;%1&apos; is chosen as both input and output</source>
+        <translation>a coluna &apos;%1&apos; foi escolhida como entrada e como saída</translation>
+    </message>
+</context>
+<context>
+    <name>ident_column_lengths</name>
+    <message>
+        <source>&apos;%1&apos; has %2 values but &apos;%3&apos; has %4</source>
+        <translation>&apos;%1&apos; tem %2 valores, mas &apos;%3&apos; tem %4</translation>
+    </message>
+</context>
+<context>
+    <name>ident_column_list_cut</name>
+    <message>
+        <source>%1, ... (%2 in all)</source>
+        <translation>%1, ... (%2 ao todo)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_column_name_empty</name>
+    <message>
+        <source>the column name is empty</source>
+        <translation>o nome da coluna está vazio</translation>
+    </message>
+</context>
+<context>
+    <name>ident_column_name_twice</name>
+    <message>
+        <source>the column name &apos;%1&apos; is used twice</source>
+        <translation>o nome de coluna &apos;%1&apos; é usado duas vezes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_csv_decimal_comma_separator</name>
+    <message>
+        <source>a decimal comma cannot be read with &apos;,&apos; separating the fields</source>
+        <translation>uma vírgula decimal não pode ser lida com &apos;,&apos; separando os campos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_csv_header_numbers</name>
+    <message>
+        <source>holds numbers, not column names: the first line must name the columns</source>
+        <translation>contém números, não nomes de colunas: a primeira linha deve nomear as colunas</translation>
+    </message>
+</context>
+<context>
+    <name>ident_csv_line_fields</name>
+    <message>
+        <source>the line has %1 fields but the header names %2</source>
+        <translation>a linha tem %1 campos, mas o cabeçalho nomeia %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_csv_no_header</name>
+    <message>
+        <source>holds no header line (the first line must name the columns)</source>
+        <translation>não contém linha de cabeçalho (a primeira linha deve nomear as colunas)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_data_u_y_lengths</name>
+    <message>
+        <source>has %1 samples but data.y has %2</source>
+        <translation>tem %1 amostras, mas data.y tem %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_decimation_samples</name>
+    <message>
+        <source>has %1 samples; decimation needs more than %2</source>
+        <translation>tem %1 amostras; a decimação precisa de mais de %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_exceed_parameters</name>
+    <message>
+        <source>must exceed the number of parameters (%1)</source>
+        <translation>deve exceder o número de parâmetros (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_clock</name>
+    <message>
+        <source>the clock period must be 1 to 1000000 samples</source>
+        <translation>o período do clock deve ser de 1 a 1000000 amostras</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_exceeds_umax</name>
+    <message>
+        <source>|offset| + amplitude = %1 V exceeds umax = %2 V</source>
+        <translation>|offset| + amplitude = %1 V excede umax = %2 V</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_file_extension</name>
+    <message>
+        <source>the file name must end in .csv or .lvm</source>
+        <translation>o nome do arquivo deve terminar em .csv ou .lvm</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_nyquist</name>
+    <message>
+        <source>must be from 0 to the Nyquist frequency %1 Hz</source>
+        <translation>deve estar entre 0 e a frequência de Nyquist %1 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_register</name>
+    <message>
+        <source>the register length must be 2 to 31</source>
+        <translation>o comprimento do registrador deve ser de 2 a 31</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_shorter_than_ts</name>
+    <message>
+        <source>is shorter than one sample time</source>
+        <translation>é mais curta que um período de amostragem</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_too_many_samples</name>
+    <message>
+        <source>gives more than %1 samples at this ts</source>
+        <translation>dá mais de %1 amostras com este ts</translation>
+    </message>
+</context>
+<context>
+    <name>ident_excite_two_sample_times</name>
+    <message>
+        <source>must be at least two sample times (%1 s)</source>
+        <translation>deve ser de pelo menos dois períodos de amostragem (%1 s)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_factor_whole</name>
+    <message>
+        <source>must be a whole number from 1 to 1000</source>
+        <translation>deve ser um número inteiro de 1 a 1000</translation>
+    </message>
+</context>
+<context>
+    <name>ident_fewer_samples_than</name>
+    <message>
+        <source>has %1 samples, fewer than %2</source>
+        <translation>tem %1 amostras, menos que %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_finite_gt_zero</name>
+    <message>
+        <source>must be finite and &gt; 0</source>
+        <translation>deve ser finito e &gt; 0</translation>
+    </message>
+</context>
+<context>
+    <name>ident_fit_a_not_positive</name>
+    <message>
+        <source>a1 or a2 is not positive: the fitted plant has a pole in the right half plane or a second integrator</source>
+        <translation>a1 ou a2 não é positivo: a planta ajustada tem um polo no semiplano direito ou um segundo integrador</translation>
+    </message>
+</context>
+<context>
+    <name>ident_frequency_values_lengths</name>
+    <message>
+        <source>has %1 values, values %2</source>
+        <translation>tem %1 valores, values %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_not_increasing</name>
+    <message>
+        <source>not strictly increasing at sample %1</source>
+        <translation>não é estritamente crescente na amostra %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_not_uniform</name>
+    <message>
+        <source>not uniformly sampled: step %1 is %2 s, the mean step %3 s</source>
+        <translation>não é amostrado uniformemente: o passo %1 é %2 s, o passo médio %3 s</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_point_not_finite</name>
+    <message>
+        <source>point %1 is not finite</source>
+        <translation>o ponto %1 não é finito</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_point_velocity_zero</name>
+    <message>
+        <source>point %1 has velocity 0: no direction</source>
+        <translation>o ponto %1 tem velocidade 0: sem sentido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_points_directions</name>
+    <message>
+        <source>%1 points in the + direction and %2 in the - direction: needs at least 2 in each</source>
+        <translation>%1 pontos no sentido + e %2 no sentido -: são necessários pelo menos 2 em cada</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_segments</name>
+    <message>
+        <source>%1 constant-velocity segments in the + direction and %2 in the - direction: needs jogs in both directions at two or more speeds</source>
+        <translation>%1 segmentos de velocidade constante no sentido + e %2 no sentido -: são necessários jogs nos dois sentidos a duas ou mais velocidades</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_speeds_equal</name>
+    <message>
+        <source>all speeds are equal: the Coulomb level and the viscous slope cannot be told apart</source>
+        <translation>todas as velocidades são iguais: o nível de Coulomb e a inclinação viscosa não podem ser distinguidos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_friction_values_for_times</name>
+    <message>
+        <source>%1 values for %2 times</source>
+        <translation>%1 valores para %2 tempos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_has_value_not_finite</name>
+    <message>
+        <source>has a value that is not finite</source>
+        <translation>tem um valor que não é finito</translation>
+    </message>
+</context>
+<context>
+    <name>ident_holds_no_sample</name>
+    <message>
+        <source>holds no sample</source>
+        <translation>não contém amostra</translation>
+    </message>
+</context>
+<context>
+    <name>ident_in_zero_0_1</name>
+    <message>
+        <source>must be in (0, 0.1]</source>
+        <translation>deve estar em (0, 0.1]</translation>
+    </message>
+</context>
+<context>
+    <name>ident_input_residuals_lengths</name>
+    <message>
+        <source>has %1 samples, the residuals %2</source>
+        <translation>tem %1 amostras, os resíduos %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jacobian_rank</name>
+    <message>
+        <source>the Jacobian has rank %1 &lt; %2: not every parameter is identifiable from these data (no covariance); a lower order may do</source>
+        <translation>o jacobiano tem posto %1 &lt; %2: nem todo parâmetro é identificável a partir destes dados (sem covariância); uma ordem menor pode servir</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jog_dwell</name>
+    <message>
+        <source>must be finite and &gt;= 0 (s)</source>
+        <translation>deve ser finito e &gt;= 0 (s)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jog_no_speed</name>
+    <message>
+        <source>give at least one jog speed</source>
+        <translation>informe pelo menos uma velocidade de jog</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jog_speed_positive</name>
+    <message>
+        <source>every speed must be finite and &gt; 0 (mm/s), got %1</source>
+        <translation>toda velocidade deve ser finita e &gt; 0 (mm/s), recebido %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jog_too_long</name>
+    <message>
+        <source>the program lasts %1 s: more than %2 samples at this ts</source>
+        <translation>o programa dura %1 s: mais de %2 amostras com este ts</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jog_too_many_speeds</name>
+    <message>
+        <source>%1 speeds: at most %2</source>
+        <translation>%1 velocidades: no máximo %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_jog_travel</name>
+    <message>
+        <source>at %1 mm/s the cruise must last half the move: travel &gt;= 3 V^2 / A = %2 mm</source>
+        <translation>a %1 mm/s o cruzeiro deve durar metade do movimento: curso &gt;= 3 V^2 / A = %2 mm</translation>
+    </message>
+</context>
+<context>
+    <name>ident_kaiser_beta_range</name>
+    <message>
+        <source>must be in [0, 50]</source>
+        <translation>deve estar em [0, 50]</translation>
+    </message>
+</context>
+<context>
+    <name>ident_larger_than_bytes</name>
+    <message>
+        <source>is larger than %1 bytes</source>
+        <translation>é maior que %1 bytes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_larger_than_mib</name>
+    <message>
+        <source>is larger than %1 MiB</source>
+        <translation>é maior que %1 MiB</translation>
+    </message>
+</context>
+<context>
+    <name>ident_loss_zero</name>
+    <message>
+        <source>the loss is zero (an exact fit): FPE and AIC are not defined</source>
+        <translation>a perda é zero (um ajuste exato): FPE e AIC não são definidos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_bad_decimal_separator</name>
+    <message>
+        <source>Decimal_Separator &apos;%1&apos; is not &apos;.&apos; or &apos;,&apos;</source>
+        <translation>Decimal_Separator &apos;%1&apos; não é &apos;.&apos; nem &apos;,&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_bad_separator</name>
+    <message>
+        <source>Separator &apos;%1&apos; is not Tab or Comma</source>
+        <translation>Separator &apos;%1&apos; não é Tab nem Comma</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_bad_x_columns</name>
+    <message>
+        <source>X_Columns &apos;%1&apos; is not No, One or Multi</source>
+        <translation>X_Columns &apos;%1&apos; não é No, One nem Multi</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_channel_name_empty</name>
+    <message>
+        <source>the channel name is empty</source>
+        <translation>o nome do canal está vazio</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_channel_name_twice</name>
+    <message>
+        <source>the channel name &apos;%1&apos; is used twice</source>
+        <translation>o nome de canal &apos;%1&apos; é usado duas vezes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_decimal_comma_separator</name>
+    <message>
+        <source>a decimal comma cannot be read with Comma separators</source>
+        <translation>uma vírgula decimal não pode ser lida com separadores Comma</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_delta_x_contradicts</name>
+    <message>
+        <source>Delta_X %1 contradicts the X_Value column (field %2), whose mean step from line %3 to line %4 is %5: one of the two is wrong (give the sample time or a time column, after correcting the file)</source>
+        <translation>Delta_X %1 contradiz a coluna X_Value (campo %2), cujo passo médio da linha %3 à linha %4 é %5: um dos dois está errado (informe o período de amostragem ou uma coluna de tempo, depois de corrigir o arquivo)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_delta_x_differ</name>
+    <message>
+        <source>the Delta_X of segment %1 differ between channels or are not positive: no sample time taken from the file</source>
+        <translation>os Delta_X do segmento %1 diferem entre canais ou não são positivos: nenhum período de amostragem tomado do arquivo</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_header_not_closed</name>
+    <message>
+        <source>the file header is not closed by ***End_of_Header***</source>
+        <translation>o cabeçalho do arquivo não é fechado por ***End_of_Header***</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_multi_unpaired</name>
+    <message>
+        <source>X_Columns is Multi but the name row does not pair every channel with an X_Value column</source>
+        <translation>X_Columns é Multi, mas a linha de nomes não pareia cada canal com uma coluna X_Value</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_no_name_row</name>
+    <message>
+        <source>segment %1 has no column-name row: the channels are named Untitled, Untitled 1, ...</source>
+        <translation>o segmento %1 não tem linha de nomes de colunas: os canais recebem os nomes Untitled, Untitled 1, ...</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_no_segment</name>
+    <message>
+        <source>holds no data segment</source>
+        <translation>não contém segmento de dados</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_no_separator_tag</name>
+    <message>
+        <source>the file header has no Separator tag: Tab assumed</source>
+        <translation>o cabeçalho do arquivo não tem a tag Separator: Tab assumido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_no_x_columns_tag</name>
+    <message>
+        <source>the file header has no X_Columns tag: One assumed</source>
+        <translation>o cabeçalho do arquivo não tem a tag X_Columns: One assumido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_not_lvm</name>
+    <message>
+        <source>is not a LabVIEW Measurement file (the first line must be the tag &apos;LabVIEW Measurement&apos;)</source>
+        <translation>não é um arquivo LabVIEW Measurement (a primeira linha deve ser a tag &apos;LabVIEW Measurement&apos;)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_one_segment_not</name>
+    <message>
+        <source>has %1 segment, not a segment %2</source>
+        <translation>tem %1 segmento, não um segmento %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_row_more_fields</name>
+    <message>
+        <source>the row has more fields than the column-name row names</source>
+        <translation>a linha tem mais campos do que a linha de nomes de colunas nomeia</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_second_name_row</name>
+    <message>
+        <source>a second column-name row in segment %1</source>
+        <translation>uma segunda linha de nomes de colunas no segmento %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_segment_from_one</name>
+    <message>
+        <source>must be 1 or more (segments are counted from 1)</source>
+        <translation>deve ser 1 ou mais (os segmentos são contados a partir de 1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_segment_header_not_closed</name>
+    <message>
+        <source>the segment header that starts here with &apos;%1&apos; is not closed by ***End_of_Header***</source>
+        <translation>o cabeçalho de segmento que começa aqui com &apos;%1&apos; não é fechado por ***End_of_Header***</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_segment_no_channel</name>
+    <message>
+        <source>segment %1 holds no channel</source>
+        <translation>o segmento %1 não contém canal</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_segment_read</name>
+    <message>
+        <source>the file has %1 segments; segment %2 was read</source>
+        <translation>o arquivo tem %1 segmentos; o segmento %2 foi lido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_segments_not</name>
+    <message>
+        <source>has %1 segments, not a segment %2</source>
+        <translation>tem %1 segmentos, não um segmento %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_lvm_special_not_closed</name>
+    <message>
+        <source>the ***Start_Special*** block is not closed by ***End_Special***</source>
+        <translation>o bloco ***Start_Special*** não é fechado por ***End_Special***</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_asked_twice</name>
+    <message>
+        <source>variable &apos;%1&apos; is asked for twice</source>
+        <translation>a variável &apos;%1&apos; é pedida duas vezes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_cannot_open</name>
+    <message>
+        <source>libmatio cannot open it as a MAT file</source>
+        <translation>a libmatio não consegue abri-lo como arquivo MAT</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_cannot_open_why</name>
+    <message>
+        <source>libmatio cannot open it as a MAT file (%1)</source>
+        <translation>a libmatio não consegue abri-lo como arquivo MAT (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_cell</name>
+    <message>
+        <source>is a cell array</source>
+        <translation>é um cell array</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_char</name>
+    <message>
+        <source>is text (a char array)</source>
+        <translation>é texto (um char array)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_complex</name>
+    <message>
+        <source>is complex</source>
+        <translation>é complexa</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_dimensions</name>
+    <message>
+        <source>has %1 dimensions</source>
+        <translation>tem %1 dimensões</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_element_not_fit</name>
+    <message>
+        <source>a variable&apos;s element does not fit in the file or has a malformed array header</source>
+        <translation>um elemento de variável não cabe no arquivo ou tem um cabeçalho de array malformado</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_elements</name>
+    <message>
+        <source>%1 elements</source>
+        <translation>%1 elementos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_elements_matrix</name>
+    <message>
+        <source>%1 x %2 elements</source>
+        <translation>%1 x %2 elementos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_function</name>
+    <message>
+        <source>is a function handle</source>
+        <translation>é um function handle</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_header_no_variable</name>
+    <message>
+        <source>it holds a MATLAB header and no variable</source>
+        <translation>contém um cabeçalho MATLAB e nenhuma variável</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_header_version</name>
+    <message>
+        <source>its MATLAB header states version 0x%1, not 5 (0x0100) or 7.3 (0x0200)</source>
+        <translation>seu cabeçalho MATLAB declara a versão 0x%1, não 5 (0x0100) nem 7.3 (0x0200)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_logical</name>
+    <message>
+        <source>is logical (true/false)</source>
+        <translation>é lógica (true/false)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_matrix</name>
+    <message>
+        <source>is a %1 x %2 matrix, not a vector</source>
+        <translation>é uma matriz %1 x %2, não um vetor</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_more_not_read</name>
+    <message>
+        <source>%1 more variables are not read</source>
+        <translation>mais %1 variáveis não são lidas</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_nd_array</name>
+    <message>
+        <source>is a %1 array (%2 dimensions)</source>
+        <translation>é um array %1 (%2 dimensões)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_no_header</name>
+    <message>
+        <source>it starts with neither a MATLAB v5/v7.3 header nor a valid v4 matrix header</source>
+        <translation>não começa nem com um cabeçalho MATLAB v5/v7.3 nem com um cabeçalho de matriz v4 válido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_no_name</name>
+    <message>
+        <source>has no name</source>
+        <translation>não tem nome</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_no_variable</name>
+    <message>
+        <source>has no variable &apos;%1&apos;; %2</source>
+        <translation>não tem a variável &apos;%1&apos;; %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_not_mat</name>
+    <message>
+        <source>is not a MAT file: %1</source>
+        <translation>não é um arquivo MAT: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_not_numeric</name>
+    <message>
+        <source>variable &apos;%1&apos; is not numeric</source>
+        <translation>a variável &apos;%1&apos; não é numérica</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_not_read</name>
+    <message>
+        <source>variable &apos;%1&apos; (%2) is not read: %3</source>
+        <translation>a variável &apos;%1&apos; (%2) não é lida: %3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_not_vector</name>
+    <message>
+        <source>variable &apos;%1&apos; %2; a vector of real numbers is needed (%3)</source>
+        <translation>a variável &apos;%1&apos; %2; é necessário um vetor de números reais (%3)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_object</name>
+    <message>
+        <source>is an object</source>
+        <translation>é um objeto</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_opaque</name>
+    <message>
+        <source>is an opaque object</source>
+        <translation>é um objeto opaco</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_sparse</name>
+    <message>
+        <source>is a sparse matrix</source>
+        <translation>é uma matriz esparsa</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_struct</name>
+    <message>
+        <source>is a struct</source>
+        <translation>é uma struct</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_too_many_asked</name>
+    <message>
+        <source>%1 variables asked for, more than the %2 a table may hold</source>
+        <translation>%1 variáveis pedidas, mais que as %2 que uma tabela pode conter</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_total_claims</name>
+    <message>
+        <source>the variables asked for, up to &apos;%1&apos;, hold %2 elements, more than the %3 one read may hold</source>
+        <translation>as variáveis pedidas, até &apos;%1&apos;, contêm %2 elementos, mais que os %3 que uma leitura pode conter</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_unknown_class</name>
+    <message>
+        <source>is of an unknown class</source>
+        <translation>é de uma classe desconhecida</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_unreadable</name>
+    <message>
+        <source>the data of variable &apos;%1&apos; cannot be read</source>
+        <translation>os dados da variável &apos;%1&apos; não podem ser lidos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_unreadable_why</name>
+    <message>
+        <source>the data of variable &apos;%1&apos; cannot be read (%2)</source>
+        <translation>os dados da variável &apos;%1&apos; não podem ser lidos (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_usable</name>
+    <message>
+        <source>the real numeric vectors are: %1</source>
+        <translation>os vetores numéricos reais são: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_usable_none</name>
+    <message>
+        <source>the real numeric vectors are: (none)</source>
+        <translation>os vetores numéricos reais são: (nenhum)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_variable_claims</name>
+    <message>
+        <source>variable &apos;%1&apos; claims %2, more than the %3 one variable may hold</source>
+        <translation>a variável &apos;%1&apos; declara %2, mais que os %3 que uma variável pode conter</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_why_column_limit</name>
+    <message>
+        <source>a table holds at most %1 variables</source>
+        <translation>uma tabela contém no máximo %1 variáveis</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_why_total_limit</name>
+    <message>
+        <source>the variables before it already hold %1 of the %2 elements one read may hold</source>
+        <translation>as variáveis anteriores já contêm %1 dos %2 elementos que uma leitura pode conter</translation>
+    </message>
+</context>
+<context>
+    <name>ident_mat_why_variable_limit</name>
+    <message>
+        <source>more than the %1 elements one variable may hold</source>
+        <translation>mais que os %1 elementos que uma variável pode conter</translation>
+    </message>
+</context>
+<context>
+    <name>ident_more_than_columns</name>
+    <message>
+        <source>has more than %1 columns</source>
+        <translation>tem mais de %1 colunas</translation>
+    </message>
+</context>
+<context>
+    <name>ident_more_than_fields</name>
+    <message>
+        <source>has more than %1 fields</source>
+        <translation>tem mais de %1 campos</translation>
+    </message>
+</context>
+<context>
+    <name>ident_more_than_header_fields</name>
+    <message>
+        <source>has more than the header&apos;s %1 fields</source>
+        <translation>tem mais que os %1 campos do cabeçalho</translation>
+    </message>
+</context>
+<context>
+    <name>ident_more_than_names</name>
+    <message>
+        <source>has more than %1 names</source>
+        <translation>tem mais de %1 nomes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_needs_two_samples</name>
+    <message>
+        <source>needs at least 2 samples</source>
+        <translation>precisa de pelo menos 2 amostras</translation>
+    </message>
+</context>
+<context>
+    <name>ident_nmp_zero</name>
+    <message>
+        <source>zero outside the unit circle at z = %1 (|z| = %2): non-minimum-phase, its inverse is unstable; this is what makes ZPETC necessary</source>
+        <translation>zero fora do círculo unitário em z = %1 (|z| = %2): FNM, sua inversa é instável; é isto que torna o ZPETC necessário</translation>
+    </message>
+</context>
+<context>
+    <name>ident_no_column</name>
+    <message>
+        <source>has no column &apos;%1&apos;; the columns are: %2</source>
+        <translation>não tem a coluna &apos;%1&apos;; as colunas são: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_no_column_none</name>
+    <message>
+        <source>has no column &apos;%1&apos;; the columns are: (none)</source>
+        <translation>não tem a coluna &apos;%1&apos;; as colunas são: (nenhuma)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_no_damping_above</name>
+    <message>
+        <source>no damping: the half-power crossing above the peak at %1 Hz lies outside the band %2</source>
+        <translation>sem amortecimento: o cruzamento de meia potência acima do pico em %1 Hz fica fora da banda %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_no_damping_below</name>
+    <message>
+        <source>no damping: the half-power crossing below the peak at %1 Hz lies outside the band %2</source>
+        <translation>sem amortecimento: o cruzamento de meia potência abaixo do pico em %1 Hz fica fora da banda %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_no_stated_sample_time</name>
+    <message>
+        <source>states no sample time (no Delta_X equal for every channel): give a time column or a sample time</source>
+        <translation>não declara período de amostragem (nenhum Delta_X igual para todos os canais): informe uma coluna de tempo ou um período de amostragem</translation>
+    </message>
+</context>
+<context>
+    <name>ident_no_time_source</name>
+    <message>
+        <source>no time source: give a time column or a sample time</source>
+        <translation>nenhuma fonte de tempo: informe uma coluna de tempo ou um período de amostragem</translation>
+    </message>
+</context>
+<context>
+    <name>ident_noise_std</name>
+    <message>
+        <source>must be a finite number &gt;= 0 (mm)</source>
+        <translation>deve ser um número finito &gt;= 0 (mm)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_not_monic</name>
+    <message>
+        <source>must be monic (first coefficient 1, ascending powers of z^-1)</source>
+        <translation>deve ser mônico (primeiro coeficiente 1, potências crescentes de z^-1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_one_sample_needs</name>
+    <message>
+        <source>has %1 sample; %2 needs at least %3</source>
+        <translation>tem %1 amostra; %2 precisa de pelo menos %3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_one_time_source</name>
+    <message>
+        <source>give one time source: a time column, a sample time or the file&apos;s sample time</source>
+        <translation>informe uma só fonte de tempo: uma coluna de tempo, um período de amostragem ou o período de amostragem do arquivo</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom</name>
+    <message>
+        <source>the file needs more memory than is available (%1)</source>
+        <translation>o arquivo precisa de mais memória do que a disponível (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_file_text</name>
+    <message>
+        <source>the file&apos;s text</source>
+        <translation>o texto do arquivo</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_its_table</name>
+    <message>
+        <source>its table</source>
+        <translation>a sua tabela</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_mb_for</name>
+    <message>
+        <source>%1 MB for %2</source>
+        <translation>%1 MB para %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_rows</name>
+    <message>
+        <source>%1 rows</source>
+        <translation>%1 linhas</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_rows_32_bytes</name>
+    <message>
+        <source>%1 rows, 32 bytes a row</source>
+        <translation>%1 linhas, 32 bytes por linha</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_rows_of_column</name>
+    <message>
+        <source>%1 rows of %2 column, 8 bytes a number</source>
+        <translation>%1 linhas de %2 coluna, 8 bytes por número</translation>
+    </message>
+</context>
+<context>
+    <name>ident_oom_rows_of_columns</name>
+    <message>
+        <source>%1 rows of %2 columns, 8 bytes a number</source>
+        <translation>%1 linhas de %2 colunas, 8 bytes por número</translation>
+    </message>
+</context>
+<context>
+    <name>ident_pem_f_unit_circle</name>
+    <message>
+        <source>F has a root on the unit circle: the model is not asymptotically stable (an integrator in the plant?)</source>
+        <translation>F tem uma raiz no círculo unitário: o modelo não é assintoticamente estável (um integrador na planta?)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_pem_initial_b</name>
+    <message>
+        <source>B must have nk + nb = %1 coefficients</source>
+        <translation>B deve ter nk + nb = %1 coeficientes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_pem_initial_c_d</name>
+    <message>
+        <source>C and D must be monic with nc + 1 and nd + 1 coefficients</source>
+        <translation>C e D devem ser mônicos com nc + 1 e nd + 1 coeficientes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_pem_initial_f</name>
+    <message>
+        <source>F must be monic with nf + 1 coefficients</source>
+        <translation>F deve ser mônico com nf + 1 coeficientes</translation>
+    </message>
+</context>
+<context>
+    <name>ident_pem_initial_reflected</name>
+    <message>
+        <source>the initial ARX estimate had an unstable A; its roots were reflected</source>
+        <translation>a estimativa ARX inicial tinha um A instável; suas raízes foram refletidas</translation>
+    </message>
+</context>
+<context>
+    <name>ident_positive_finite</name>
+    <message>
+        <source>must be positive and finite</source>
+        <translation>deve ser positivo e finito</translation>
+    </message>
+</context>
+<context>
+    <name>ident_positive_frequency_hz</name>
+    <message>
+        <source>must be a positive frequency in Hz</source>
+        <translation>deve ser uma frequência positiva em Hz</translation>
+    </message>
+</context>
+<context>
+    <name>ident_psd_overflows</name>
+    <message>
+        <source>is too large: its power spectral density overflows a double</source>
+        <translation>é grande demais: sua DEP excede a faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>ident_quote_not_closed</name>
+    <message>
+        <source>the quote opened at character %1 is not closed</source>
+        <translation>as aspas abertas no caractere %1 não são fechadas</translation>
+    </message>
+</context>
+<context>
+    <name>ident_range_min_max</name>
+    <message>
+        <source>range has min &gt; max</source>
+        <translation>o intervalo tem min &gt; max</translation>
+    </message>
+</context>
+<context>
+    <name>ident_range_no_sample</name>
+    <message>
+        <source>no sample lies within [t0, t1]</source>
+        <translation>nenhuma amostra está dentro de [t0, t1]</translation>
+    </message>
+</context>
+<context>
+    <name>ident_range_reversed</name>
+    <message>
+        <source>the range ends before it starts (t1 &lt; t0)</source>
+        <translation>o intervalo termina antes de começar (t1 &lt; t0)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_residuals_need_more</name>
+    <message>
+        <source>need more than first_sample + max_lag samples</source>
+        <translation>precisam de mais de first_sample + max_lag amostras</translation>
+    </message>
+</context>
+<context>
+    <name>ident_sample_not_finite</name>
+    <message>
+        <source>sample %1 is not finite</source>
+        <translation>a amostra %1 não é finita</translation>
+    </message>
+</context>
+<context>
+    <name>ident_sample_time_outside</name>
+    <message>
+        <source>%1 s is outside the accepted sample times, 1e-09 s to 10000 s (no axis experiment is sampled faster or slower, and beyond them a fitted gain underflows to 0 or a session&apos;s run needs more than 1e308 samples)</source>
+        <translation>%1 s está fora dos períodos de amostragem aceitos, 1e-09 s a 10000 s (nenhum experimento de eixo é amostrado mais rápido ou mais devagar, e além deles um ganho ajustado cai para 0 por underflow ou uma execução da sessão precisa de mais de 1e308 amostras)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_samples_needs</name>
+    <message>
+        <source>has %1 samples; %2 needs at least %3</source>
+        <translation>tem %1 amostras; %2 precisa de pelo menos %3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_sampling_zero</name>
+    <message>
+        <source>the continuous plant has no finite zeros: the zero outside the unit circle is a sampling zero of the ZOH discretization (relative degree 3)</source>
+        <translation>a planta contínua não tem zeros finitos: o zero fora do círculo unitário é um zero de amostragem da discretização ZOH (grau relativo 3)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_scaled_beyond_double</name>
+    <message>
+        <source>the value scaled to mm is beyond the range of a double</source>
+        <translation>o valor convertido para mm está além da faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_cancelled</name>
+    <message>
+        <source>cancelled after %1 iterations</source>
+        <translation>cancelado após %1 iterações</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_exact_fit</name>
+    <message>
+        <source>exact fit (the loss is at the round-off level of the data)</source>
+        <translation>ajuste exato (a perda está no nível de arredondamento dos dados)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_gradient_not_finite</name>
+    <message>
+        <source>the gradient is not finite at an accepted estimate</source>
+        <translation>o gradiente não é finito em uma estimativa aceita</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_loss_tolerance</name>
+    <message>
+        <source>the loss changed by less than the tolerance</source>
+        <translation>a perda mudou menos que a tolerância</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_no_damped_step</name>
+    <message>
+        <source>no damped step lowers the loss: a minimum to working precision</source>
+        <translation>nenhum passo amortecido reduz a perda: um mínimo dentro da precisão de trabalho</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_not_finite_initial</name>
+    <message>
+        <source>the loss or its gradient is not finite at the initial estimate</source>
+        <translation>a perda ou seu gradiente não é finito na estimativa inicial</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_step_tolerance</name>
+    <message>
+        <source>the step was smaller than the tolerance</source>
+        <translation>o passo foi menor que a tolerância</translation>
+    </message>
+</context>
+<context>
+    <name>ident_search_stopped</name>
+    <message>
+        <source>stopped at %1 iterations</source>
+        <translation>parou em %1 iterações</translation>
+    </message>
+</context>
+<context>
+    <name>ident_segment_at_least_4</name>
+    <message>
+        <source>must be at least 4 samples (got %1)</source>
+        <translation>deve ter pelo menos 4 amostras (recebido %1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_converged_wrong</name>
+    <message>
+        <source>Stribeck model not kept: it converged to v_s = %1 mm/s, F_s = %2 V, F_c = %3 V (needs v_s &gt; 0, F_s &gt; F_c)</source>
+        <translation>modelo de Stribeck não mantido: convergiu para v_s = %1 mm/s, F_s = %2 V, F_c = %3 V (precisa de v_s &gt; 0, F_s &gt; F_c)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_few_speeds</name>
+    <message>
+        <source>Stribeck model not tried: fewer than 3 distinct speeds per direction</source>
+        <translation>modelo de Stribeck não tentado: menos de 3 velocidades distintas por sentido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_line_exact</name>
+    <message>
+        <source>Stribeck model not tried: the line fits to round-off</source>
+        <translation>modelo de Stribeck não tentado: a reta se ajusta até o arredondamento</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_not_allowed</name>
+    <message>
+        <source>Stribeck model not tried (not allowed)</source>
+        <translation>modelo de Stribeck não tentado (não permitido)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_not_converged</name>
+    <message>
+        <source>Stribeck model not kept: the search did not converge (MINPACK info %1)</source>
+        <translation>modelo de Stribeck não mantido: a busca não convergiu (MINPACK info %1)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_not_finite</name>
+    <message>
+        <source>Stribeck model not kept: not finite at the optimum</source>
+        <translation>modelo de Stribeck não mantido: não finito no ótimo</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_rank_deficient</name>
+    <message>
+        <source>Stribeck model not kept: its Jacobian is rank deficient at the optimum</source>
+        <translation>modelo de Stribeck não mantido: seu jacobiano tem posto deficiente no ótimo</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_test_kept</name>
+    <message>
+        <source>%1: Stribeck model kept</source>
+        <translation>%1: modelo de Stribeck mantido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_stribeck_test_not_kept</name>
+    <message>
+        <source>%1: Stribeck model not kept</source>
+        <translation>%1: modelo de Stribeck não mantido</translation>
+    </message>
+</context>
+<context>
+    <name>ident_structure_unknown</name>
+    <message>
+        <source>&apos;%1&apos; is not arx, oe, bj or gt3</source>
+        <translation>&apos;%1&apos; não é arx, oe, bj nem gt3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_synthetic_sample_time</name>
+    <message>
+        <source>the command&apos;s sample time %1 s is not the model&apos;s %2 s</source>
+        <translation>o período de amostragem do comando, %1 s, não é o do modelo, %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>ident_text_after_quote</name>
+    <message>
+        <source>text follows the closing quote at character %1</source>
+        <translation>há texto após as aspas de fechamento no caractere %1</translation>
+    </message>
+</context>
+<context>
+    <name>ident_three_bins</name>
+    <message>
+        <source>needs at least 3 bins</source>
+        <translation>precisa de pelo menos 3 raias</translation>
+    </message>
+</context>
+<context>
+    <name>ident_time_lengths</name>
+    <message>
+        <source>the time &apos;%1&apos; has %2 values but the data %3</source>
+        <translation>o tempo &apos;%1&apos; tem %2 valores, mas os dados %3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_time_no_sample_time</name>
+    <message>
+        <source>the time column gives no usable sample time</source>
+        <translation>a coluna de tempo não dá um período de amostragem utilizável</translation>
+    </message>
+</context>
+<context>
+    <name>ident_time_not_increasing</name>
+    <message>
+        <source>time %1 s does not increase (the line before holds %2 s)</source>
+        <translation>o tempo %1 s não aumenta (a linha anterior contém %2 s)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_time_step_differs</name>
+    <message>
+        <source>the time step %1 s differs from the mean sample time %2 s by more than 1 % (non-uniform sampling)</source>
+        <translation>o passo de tempo %1 s difere do período de amostragem médio %2 s em mais de 1 % (amostragem não uniforme)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_too_few_samples_for</name>
+    <message>
+        <source>%1 samples are too few for %2: at least %3 needed</source>
+        <translation>%1 amostras são poucas demais para %2: são necessárias pelo menos %3</translation>
+    </message>
+</context>
+<context>
+    <name>ident_trend_two_samples</name>
+    <message>
+        <source>a trend needs at least 2 samples</source>
+        <translation>uma tendência precisa de pelo menos 2 amostras</translation>
+    </message>
+</context>
+<context>
+    <name>ident_u_y_lengths</name>
+    <message>
+        <source>u has %1 samples but y has %2</source>
+        <translation>u tem %1 amostras, mas y tem %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_validation_sample_time</name>
+    <message>
+        <source>its sample time %1 s differs from the estimation data&apos;s %2 s</source>
+        <translation>seu período de amostragem %1 s difere do dos dados de estimação, %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>ident_value_missing</name>
+    <message>
+        <source>the value is missing</source>
+        <translation>o valor está faltando</translation>
+    </message>
+</context>
+<context>
+    <name>ident_value_not_finite</name>
+    <message>
+        <source>value %1 is not finite</source>
+        <translation>o valor %1 não é finito</translation>
+    </message>
+</context>
+<context>
+    <name>ident_welch_too_few</name>
+    <message>
+        <source>has %1 samples: fewer than two half-overlapping segments of %2 (at least %3)</source>
+        <translation>tem %1 amostras: menos que dois segmentos com sobreposição de metade de %2 (pelo menos %3)</translation>
+    </message>
+</context>
+<context>
+    <name>ident_y_u_equally_long</name>
+    <message>
+        <source>has %1 samples, u has %2: they must be equally long</source>
+        <translation>tem %1 amostras, u tem %2: devem ter o mesmo comprimento</translation>
+    </message>
+</context>
+<context>
+    <name>ident_yhat_y_lengths</name>
+    <message>
+        <source>has %1 samples, y has %2</source>
+        <translation>tem %1 amostras, y tem %2</translation>
+    </message>
+</context>
+<context>
+    <name>ident_zero_phase_samples</name>
+    <message>
+        <source>zero-phase filtering needs more than %1 samples</source>
+        <translation>a filtragem de fase zero precisa de mais de %1 amostras</translation>
+    </message>
+</context>
+<context>
+    <name>in_zero_one_open_left</name>
+    <message>
+        <source>must be in (0, 1]</source>
+        <translation>deve estar em (0, 1]</translation>
+    </message>
+</context>
+<context>
+    <name>in_zero_one_open_right</name>
+    <message>
+        <source>must be in [0, 1)</source>
+        <translation>deve estar em [0, 1)</translation>
+    </message>
+</context>
+<context>
+    <name>is_empty</name>
+    <message>
+        <source>is empty</source>
+        <translation>está vazio</translation>
+    </message>
+</context>
+<context>
+    <name>is_missing</name>
+    <message>
+        <source>is missing</source>
+        <translation>está faltando</translation>
+    </message>
+</context>
+<context>
+    <name>iso230_circle_too_short</name>
+    <message>
+        <source>ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures</source>
+        <translation>ISO 230-4: um círculo completo do programa dura menos de 3 amostras: sem valores</translation>
+    </message>
+</context>
+<context>
+    <name>limit_cycle_at_rest</name>
+    <message>
+        <source>a limit cycle at rest: after the move the measured position keeps oscillating (%1 mm peak to peak, %2 turns in the last half of the rest), caused by the encoder/DAC quantization</source>
+        <translation>um ciclo-limite em repouso: após o movimento a posição medida continua oscilando (%1 mm pico a pico, %2 inversões na segunda metade do repouso), causado pela quantização do encoder/DAC</translation>
+    </message>
+</context>
+<context>
+    <name>list_comma</name>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>list_semicolon</name>
+    <message>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
+    </message>
+</context>
+<context>
+    <name>no_digital_implementation</name>
+    <message>
+        <source>no digital implementation: %1</source>
+        <translation>sem implementação digital: %1</translation>
+    </message>
+</context>
+<context>
+    <name>no_stability_margins</name>
+    <message>
+        <source>no stability margins: %1</source>
+        <translation>sem margens de estabilidade: %1</translation>
+    </message>
+</context>
+<context>
+    <name>not_a_number</name>
+    <message>
+        <source>must be a number, got NaN</source>
+        <translation>deve ser um número, recebido NaN</translation>
+    </message>
+</context>
+<context>
+    <name>not_continuous_proper</name>
+    <message>
+        <source>must be a continuous, proper transfer function</source>
+        <translation>deve ser uma função de transferência contínua e própria</translation>
+    </message>
+</context>
+<context>
+    <name>not_continuous_strictly_proper</name>
+    <message>
+        <source>must be a continuous, strictly proper transfer function</source>
+        <translation>deve ser uma função de transferência contínua e estritamente própria</translation>
+    </message>
+</context>
+<context>
+    <name>not_finite</name>
+    <message>
+        <source>must be finite, got infinity</source>
+        <translation>deve ser finito, recebido infinito</translation>
+    </message>
+</context>
+<context>
+    <name>not_finite_value</name>
+    <message>
+        <source>is NaN or infinite</source>
+        <translation>é NaN ou infinito</translation>
+    </message>
+</context>
+<context>
+    <name>not_negative</name>
+    <message>
+        <source>must be &gt;= 0</source>
+        <translation>deve ser &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>not_positive</name>
+    <message>
+        <source>must be greater than zero</source>
+        <translation>deve ser maior que zero</translation>
+    </message>
+</context>
+<context>
+    <name>pp_u_exceeds_limit</name>
+    <message>
+        <source>|u| exceeds the actuator limit (the discrete loop is simulated without saturation)</source>
+        <translation>|u| excede o limite do atuador (a malha discreta é simulada sem saturação)</translation>
+    </message>
+</context>
+<context>
+    <name>reversal_spikes</name>
+    <message>
+        <source>reversal spikes up to %1 mm at the quadrant changes (the table&apos;s friction and backlash)</source>
+        <translation>picos de reversão de até %1 mm nas mudanças de quadrante (o atrito e a folga da mesa)</translation>
+    </message>
+</context>
+<context>
+    <name>run_diverged</name>
+    <message>
+        <source>the simulated run diverged (a sample is not a finite number): it has no tracking figures</source>
+        <translation>a simulação divergiu (uma amostra não é um número finito): não há valores de seguimento</translation>
+    </message>
+</context>
+<context>
+    <name>run_ends_before_move</name>
+    <message>
+        <source>the run ends before the move does (tf): no settle figures</source>
+        <translation>a simulação termina antes do movimento (tf): sem valores de acomodação</translation>
+    </message>
+</context>
+<context>
+    <name>sim_axes_share_ts</name>
+    <message>
+        <source>the two axes must share one sample time</source>
+        <translation>os dois eixos devem ter o mesmo período de amostragem</translation>
+    </message>
+</context>
+<context>
+    <name>sim_batch_lanes</name>
+    <message>
+        <source>the results and moves must have one entry per loop</source>
+        <translation>os resultados e os movimentos devem ter uma entrada por malha</translation>
+    </message>
+</context>
+<context>
+    <name>sim_batch_width</name>
+    <message>
+        <source>must be 1, 2, 4 or 8</source>
+        <translation>deve ser 1, 2, 4 ou 8</translation>
+    </message>
+</context>
+<context>
+    <name>sim_between_zero_one</name>
+    <message>
+        <source>must be between 0 and 1</source>
+        <translation>deve estar entre 0 e 1</translation>
+    </message>
+</context>
+<context>
+    <name>sim_coupling_periods_differ</name>
+    <message>
+        <source>needs both axes at one controller period: the x axis runs every %1 s, the y axis every %2 s</source>
+        <translation>precisa dos dois eixos com um mesmo período do controlador: o eixo x executa a cada %1 s, o eixo y a cada %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>sim_coupling_samples_differ</name>
+    <message>
+        <source>the two axes&apos; runs do not have the same samples</source>
+        <translation>as execuções dos dois eixos não têm as mesmas amostras</translation>
+    </message>
+</context>
+<context>
+    <name>sim_dac_bits</name>
+    <message>
+        <source>must be an integer in 0..32 (0: ideal DAC)</source>
+        <translation>deve ser um inteiro em 0..32 (0: DAC ideal)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_dac_needs_umax</name>
+    <message>
+        <source>a DAC needs a finite actuator limit umax (its full scale)</source>
+        <translation>um DAC precisa de um limite finito do atuador umax (seu fundo de escala)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_digital_implementation_finding</name>
+    <message>
+        <source>the digital implementation: %1</source>
+        <translation>a implementação digital: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sim_discretization_overflows</name>
+    <message>
+        <source>the plant&apos;s discretization at this sample time overflows</source>
+        <translation>a discretização da planta com este período de amostragem estoura</translation>
+    </message>
+</context>
+<context>
+    <name>sim_encoder_resolution</name>
+    <message>
+        <source>must be a finite number &gt;= 0 (mm per count; 0: ideal)</source>
+        <translation>deve ser um número finito &gt;= 0 (mm por contagem; 0: ideal)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_envelope_invalid</name>
+    <message>
+        <source>needs a finite final value and a band in (0, 1)</source>
+        <translation>precisa de um valor final finito e de uma faixa em (0, 1)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_filter_not_causal</name>
+    <message>
+        <source>the z^0 coefficient must be nonzero (causal filter)</source>
+        <translation>o coeficiente de z^0 deve ser não nulo (filtro causal)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_finite_nonzero</name>
+    <message>
+        <source>must be a finite number other than zero</source>
+        <translation>deve ser um número finito diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>sim_fractions_order</name>
+    <message>
+        <source>must satisfy 0 &lt;= low &lt; high &lt;= 1</source>
+        <translation>deve satisfazer 0 &lt;= low &lt; high &lt;= 1</translation>
+    </message>
+</context>
+<context>
+    <name>sim_hunting_at_rest</name>
+    <message>
+        <source>hunting at rest: the integral action broke the table free %1 after the move (%2 um peak to peak): integral action against stiction</source>
+        <translation>oscilação em repouso (hunting): a ação integral destravou a mesa %1 após o movimento (%2 um pico a pico): ação integral contra o atrito estático</translation>
+    </message>
+</context>
+<context>
+    <name>sim_integer_up_to</name>
+    <message>
+        <source>must be an integer in 0..%1</source>
+        <translation>deve ser um inteiro em 0..%1</translation>
+    </message>
+</context>
+<context>
+    <name>sim_lie_in_zero_one</name>
+    <message>
+        <source>must lie in (0, 1)</source>
+        <translation>deve estar em (0, 1)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_more_than</name>
+    <message>
+        <source>more than %1</source>
+        <translation>mais de %1</translation>
+    </message>
+</context>
+<context>
+    <name>sim_move_not_finite</name>
+    <message>
+        <source>start, target and end time must be finite numbers</source>
+        <translation>início, alvo e instante final devem ser números finitos</translation>
+    </message>
+</context>
+<context>
+    <name>sim_must_be_finite</name>
+    <message>
+        <source>must be finite</source>
+        <translation>deve ser finito</translation>
+    </message>
+</context>
+<context>
+    <name>sim_needs_one_sample</name>
+    <message>
+        <source>needs at least one sample</source>
+        <translation>precisa de pelo menos uma amostra</translation>
+    </message>
+</context>
+<context>
+    <name>sim_needs_samples</name>
+    <message>
+        <source>needs %1 samples, got %2</source>
+        <translation>precisa de %1 amostras, recebeu %2</translation>
+    </message>
+</context>
+<context>
+    <name>sim_needs_samples_preview</name>
+    <message>
+        <source>needs %1 samples (run length plus preview), got %2</source>
+        <translation>precisa de %1 amostras (duração da execução mais a antecipação), recebeu %2</translation>
+    </message>
+</context>
+<context>
+    <name>sim_no_sample_after_ramp_in</name>
+    <message>
+        <source>no sample after the ramp-in</source>
+        <translation>nenhuma amostra após a rampa de entrada</translation>
+    </message>
+</context>
+<context>
+    <name>sim_once</name>
+    <message>
+        <source>once</source>
+        <translation>uma vez</translation>
+    </message>
+</context>
+<context>
+    <name>sim_one_sample_per_reference</name>
+    <message>
+        <source>must have one sample per reference sample</source>
+        <translation>deve ter uma amostra por amostra da referência</translation>
+    </message>
+</context>
+<context>
+    <name>sim_plant_cannot_rest_away</name>
+    <message>
+        <source>the plant has no pole at s = 0, so it cannot rest away from 0</source>
+        <translation>a planta não tem polo em s = 0, portanto não pode repousar fora de 0</translation>
+    </message>
+</context>
+<context>
+    <name>sim_position_beyond_limit</name>
+    <message>
+        <source>%1 is beyond the 1e9 mm (1000 km) that any table could move; refused before it overflows the simulation</source>
+        <translation>%1 está além dos 1e9 mm (1000 km) que qualquer mesa poderia percorrer; recusado antes que estoure a simulação</translation>
+    </message>
+</context>
+<context>
+    <name>sim_run_has_no_samples</name>
+    <message>
+        <source>the run has no samples</source>
+        <translation>a execução não tem amostras</translation>
+    </message>
+</context>
+<context>
+    <name>sim_sample_not_finite</name>
+    <message>
+        <source>sample %1 is not a finite number</source>
+        <translation>a amostra %1 não é um número finito</translation>
+    </message>
+</context>
+<context>
+    <name>sim_samples_beyond_limit</name>
+    <message>
+        <source>needs %1 samples at this dt; the limit is %2</source>
+        <translation>precisa de %1 amostras com este dt; o limite é %2</translation>
+    </message>
+</context>
+<context>
+    <name>sim_samples_beyond_memory</name>
+    <message>
+        <source>needs %1 samples at this dt; the limit is %2 on this machine (%3 % of its %4 GB of memory at %5 bytes per sample)</source>
+        <translation>precisa de %1 amostras com este dt; o limite é %2 nesta máquina (%3 % dos seus %4 GB de memória a %5 bytes por amostra)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_samples_range</name>
+    <message>
+        <source>must lie in 10 .. 1000000</source>
+        <translation>deve estar em 10 .. 1000000</translation>
+    </message>
+</context>
+<context>
+    <name>sim_shaped_sizes_differ</name>
+    <message>
+        <source>differs in size from shaped.x</source>
+        <translation>difere em tamanho de shaped.x</translation>
+    </message>
+</context>
+<context>
+    <name>sim_shaper_longer_than_move</name>
+    <message>
+        <source>the shaper lasts %1 s, longer than the move of %2 s</source>
+        <translation>o modelador de entrada dura %1 s, mais que o movimento de %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>sim_shaper_not_number</name>
+    <message>
+        <source>has a value that is not a number</source>
+        <translation>tem um valor que não é um número</translation>
+    </message>
+</context>
+<context>
+    <name>sim_shaper_sizes</name>
+    <message>
+        <source>needs as many impulse times as amplitudes (at least one)</source>
+        <translation>precisa de tantos instantes de impulso quanto amplitudes (pelo menos um)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_shaper_times_order</name>
+    <message>
+        <source>impulse times must start at 0 and increase</source>
+        <translation>os instantes dos impulsos devem começar em 0 e crescer</translation>
+    </message>
+</context>
+<context>
+    <name>sim_signals_different_lengths</name>
+    <message>
+        <source>signals of different lengths</source>
+        <translation>sinais de comprimentos diferentes</translation>
+    </message>
+</context>
+<context>
+    <name>sim_single_sample</name>
+    <message>
+        <source>gives a single sample (Ts %1 s, duration %2 s); at least two samples are needed for the metrics</source>
+        <translation>dá uma única amostra (Ts %1 s, duração %2 s); as métricas precisam de pelo menos duas amostras</translation>
+    </message>
+</context>
+<context>
+    <name>sim_stick_slip_during_move</name>
+    <message>
+        <source>stick-slip during the move: the table stopped %1 while the reference kept moving (first at t = %2 s)</source>
+        <translation>stick-slip durante o movimento: a mesa parou %1 enquanto a referência continuava a se mover (a primeira em t = %2 s)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_substeps_not_negative</name>
+    <message>
+        <source>must be &gt;= 0 (0: automatic)</source>
+        <translation>deve ser &gt;= 0 (0: automático)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_table_controller_states</name>
+    <message>
+        <source>has more states than the friction simulation holds (%1)</source>
+        <translation>tem mais estados do que a simulação com atrito comporta (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_table_electrical_pole</name>
+    <message>
+        <source>the electrical pole must be &gt; 0 (a2 = 0 leaves one pole at 0, which can only be the mechanical one)</source>
+        <translation>o polo elétrico deve ser &gt; 0 (a2 = 0 deixa um polo em 0, que só pode ser o mecânico)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_table_plant_shape</name>
+    <message>
+        <source>must be k0 / (s (s^2 + a1 s + a2)) with k0 &gt; 0 for the table&apos;s friction</source>
+        <translation>deve ser k0 / (s (s^2 + a1 s + a2)) com k0 &gt; 0 para o atrito da mesa</translation>
+    </message>
+</context>
+<context>
+    <name>sim_table_poles_not_real</name>
+    <message>
+        <source>the poles of s^2 + a1 s + a2 must be real and stable to split the plant into an electrical lag and a moving mass</source>
+        <translation>os polos de s^2 + a1 s + a2 devem ser reais e estáveis para separar a planta em um atraso elétrico e uma massa móvel</translation>
+    </message>
+</context>
+<context>
+    <name>sim_tf_after_t0</name>
+    <message>
+        <source>must be later than t0</source>
+        <translation>deve ser posterior a t0</translation>
+    </message>
+</context>
+<context>
+    <name>sim_time_overflows</name>
+    <message>
+        <source>the last sample time of the run, or omega times it, overflows a double</source>
+        <translation>o último instante de amostragem da execução, ou ômega vezes ele, excede a faixa de um double</translation>
+    </message>
+</context>
+<context>
+    <name>sim_times</name>
+    <message>
+        <source>%1 times</source>
+        <translation>%1 vezes</translation>
+    </message>
+</context>
+<context>
+    <name>sim_txy_different_lengths</name>
+    <message>
+        <source>t, x and y have different lengths</source>
+        <translation>t, x e y têm comprimentos diferentes</translation>
+    </message>
+</context>
+<context>
+    <name>sim_ty_same_length</name>
+    <message>
+        <source>t and y must have the same length</source>
+        <translation>t e y devem ter o mesmo comprimento</translation>
+    </message>
+</context>
+<context>
+    <name>sim_ty_same_length_two</name>
+    <message>
+        <source>t and y must have the same length, at least 2</source>
+        <translation>t e y devem ter o mesmo comprimento, pelo menos 2</translation>
+    </message>
+</context>
+<context>
+    <name>sim_umax_positive</name>
+    <message>
+        <source>must be greater than zero (infinity for no limit)</source>
+        <translation>deve ser maior que zero (infinito para nenhum limite)</translation>
+    </message>
+</context>
+<context>
+    <name>sim_y_x_sizes</name>
+    <message>
+        <source>has %1 samples, x has %2</source>
+        <translation>tem %1 amostras, x tem %2</translation>
+    </message>
+</context>
+<context>
+    <name>sim_zpetc_den_zero</name>
+    <message>
+        <source>the feedforward&apos;s z^0 denominator coefficient is zero</source>
+        <translation>o coeficiente de z^0 do denominador da pré-alimentação é zero</translation>
+    </message>
+</context>
+<context>
     <name>xyt::ui::BodePlot</name>
     <message>
         <source>Bode diagram</source>
@@ -1816,93 +5204,6 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     <message>
         <source>Stop the study; the designs computed so far are shown</source>
         <translation>Interromper o estudo; os projetos calculados até aqui são mostrados</translation>
-    </message>
-</context>
-<context>
-    <name>xyt::ui::DiagnosticText</name>
-    <message>
-        <source>the closed loop is unstable</source>
-        <translation>a malha fechada é instável</translation>
-    </message>
-    <message>
-        <source>the simulated run diverged (a sample is not a finite number): it has no tracking figures</source>
-        <translation>a simulação divergiu (uma amostra não é um número finito): não há valores de seguimento</translation>
-    </message>
-    <message>
-        <source>the flexible mode and the notch of gt apply to a continuous plant: this pole-placement axis runs its ARX model, which holds whatever mode its data showed (identify it from a log that excites the mode)</source>
-        <translation>o modo flexível e o notch de gt se aplicam a uma planta contínua: este eixo por alocação de polos usa seu modelo ARX, que contém o modo que seus dados mostraram (identifique-o a partir de um registro que excite o modo)</translation>
-    </message>
-    <message>
-        <source>the run ends before the move does (tf): no settle figures</source>
-        <translation>a simulação termina antes do movimento (tf): sem valores de acomodação</translation>
-    </message>
-    <message>
-        <source>no stability margins: %1</source>
-        <translation>sem margens de estabilidade: %1</translation>
-    </message>
-    <message>
-        <source>no digital implementation: %1</source>
-        <translation>sem implementação digital: %1</translation>
-    </message>
-    <message>
-        <source>|u| exceeds the actuator limit (the discrete loop is simulated without saturation)</source>
-        <translation>|u| excede o limite do atuador (a malha discreta é simulada sem saturação)</translation>
-    </message>
-    <message>
-        <source>the feedforward alone needs %1 V on this trajectory, beyond the output limit of %2 V</source>
-        <translation>a pré-alimentação sozinha precisa de %1 V nesta trajetória, além do limite de saída de %2 V</translation>
-    </message>
-    <message>
-        <source>the cubic&apos;s acceleration step becomes a %1 V spike of the FF3 term (one controller period); the quintic move has no acceleration step</source>
-        <translation>o degrau de aceleração da cúbica vira um pico de %1 V do termo FF3 (um período do controlador); o movimento quíntico não tem degrau de aceleração</translation>
-    </message>
-    <message>
-        <source>a limit cycle at rest: after the move the measured position keeps oscillating (%1 mm peak to peak, %2 turns in the last half of the rest), caused by the encoder/DAC quantization</source>
-        <translation>um ciclo-limite em repouso: após o movimento a posição medida continua oscilando (%1 mm pico a pico, %2 inversões na segunda metade do repouso), causado pela quantização do encoder/DAC</translation>
-    </message>
-    <message>
-        <source>%1 axis: the simulated run diverged (a sample is not a finite number)</source>
-        <translation>eixo %1: a simulação divergiu (uma amostra não é um número finito)</translation>
-    </message>
-    <message>
-        <source>%1 axis: |u| reached the actuator limit of %2 V for %3 s</source>
-        <translation>eixo %1: |u| atingiu o limite do atuador de %2 V por %3 s</translation>
-    </message>
-    <message>
-        <source>ISO 230-4: a full circle of the program lasts fewer than 3 samples: no figures</source>
-        <translation>ISO 230-4: um círculo completo do programa dura menos de 3 amostras: sem valores</translation>
-    </message>
-    <message>
-        <source>the circle lasts fewer than 3 samples: no ISO 230-4 figures</source>
-        <translation>o círculo dura menos de 3 amostras: sem valores ISO 230-4</translation>
-    </message>
-    <message>
-        <source>reversal spikes up to %1 mm at the quadrant changes (the table&apos;s friction and backlash)</source>
-        <translation>picos de reversão de até %1 mm nas mudanças de quadrante (o atrito e a folga da mesa)</translation>
-    </message>
-    <message>
-        <source>the digital loop at Ts = %1 s is unstable (its largest closed-loop pole has |z| = %2); lower the controller sample time</source>
-        <translation>a malha digital com Ts = %1 s é instável (seu maior polo de malha fechada tem |z| = %2); reduza o período de amostragem do controlador</translation>
-    </message>
-    <message>
-        <source>the digital loop at Ts = %1 s is much less damped than the design (damping ratio %2 against %3 in the z-plane poles); lower the controller sample time or the delay</source>
-        <translation>a malha digital com Ts = %1 s é muito menos amortecida que o projeto (coeficiente de amortecimento %2 contra %3 nos polos do plano z); reduza o período de amostragem do controlador ou o atraso</translation>
-    </message>
-    <message>
-        <source>must be a number, got NaN</source>
-        <translation>deve ser um número, recebido NaN</translation>
-    </message>
-    <message>
-        <source>must be finite, got infinity</source>
-        <translation>deve ser finito, recebido infinito</translation>
-    </message>
-    <message>
-        <source>must be greater than zero</source>
-        <translation>deve ser maior que zero</translation>
-    </message>
-    <message>
-        <source>must be nonzero</source>
-        <translation>deve ser diferente de zero</translation>
     </message>
 </context>
 <context>
@@ -6013,6 +9314,13 @@ Esta compilação do XY Tune não contém páginas de documentação (a pasta do
     <message>
         <source>Show this page each time XY Tune starts (it is always in Help › Tutorials)</source>
         <translation>Mostrar esta página sempre que o XY Tune iniciar (ela está sempre em Ajuda › Tutoriais)</translation>
+    </message>
+</context>
+<context>
+    <name>zero</name>
+    <message>
+        <source>must be nonzero</source>
+        <translation>deve ser diferente de zero</translation>
     </message>
 </context>
 </TS>
