@@ -3,6 +3,7 @@
 #include "ui/plots/number_text.h"
 
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -405,8 +406,8 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     QStringList notes;
     if (!m.closedLoopStable)
         notes << tr("the closed loop is unstable: the margins are not robustness measures");
-    for (const std::string& warning : m.warnings)
-        notes << QString::fromStdString(warning);
+    for (const auto& warning : m.warnings)
+        notes << diagnosticText(warning);
     notice_->setSevere(!m.closedLoopStable);
     notice_->setLines(notes);
 

@@ -5,6 +5,7 @@
 #include "core/session/export_text.h"
 #include "ui/files/coefficient_json.h"
 #include "ui/files/session_file.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QFileDialog>
@@ -149,7 +150,7 @@ bool SessionFileController::exportTo(const QString& format, const QString& path)
         else
             bytes = QByteArray::fromStdString(exportCsv(s, e));
     } catch (const InvalidInput& e) {
-        QMessageBox::warning(window_, tr("Export"), QString::fromStdString(e.what()));
+        QMessageBox::warning(window_, tr("Export"), exceptionText(e));
         return false;
     }
     QString error;
