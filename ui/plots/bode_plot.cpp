@@ -249,7 +249,7 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     // A method with a feedforward (ZPETC, a PID's command feedforward): the tracking r -> y
     // without and with it.
     const QString without = tr("tracking, loop alone");
-    const QString with = tr("tracking with %1").arg(QString::fromStdString(a.feedforwardName));
+    const QString with = tr("tracking with %1").arg(coreText("xyt::CoreText", a.feedforwardName));
     for (const QString& name : curves_.keys())
         if ((name == without || name.startsWith(tr("tracking with "))) &&
             !(a.tracking && (name == without || (zpetcEnabled && name == with)))) {
