@@ -6,9 +6,11 @@
 #include "ui/plots/number_text.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/plot_widget.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <qcustomplot.h>
 
+#include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -65,7 +67,10 @@ std::vector<double> sweepDialogList(const QString& text, const std::string& fiel
         bool ok = false;
         const double v = word.toDouble(&ok);
         if (!ok)
-            throw InvalidInput(field, "'" + word.toStdString() + "' is not a number");
+            throw InvalidInput(field, QCoreApplication::translate("xyt::ui::CouplingSweepDialog",
+                                                                  "'%1' is not a number")
+                                          .arg(word)
+                                          .toStdString());
         out.push_back(v);
     }
     return out;
@@ -333,7 +338,7 @@ bool CouplingSweepDialog::run() {
         grid.kiVoltsPerMmSecond = sweepDialogList(kiList_->text(), "ki");
         grid = normalizedCouplingSweepGrid(grid);
     } catch (const InvalidInput& e) {
-        fieldError_->setText(QString::fromStdString(e.what()));
+        fieldError_->setText(exceptionText(e));
         fieldError_->show();
         for (QLineEdit* field : {kpList_, kiList_})
             if (e.field() == "grid" || (field == kpList_) == (e.field() == "kp"))
@@ -560,7 +565,7 @@ QString CouplingSweepDialog::cellToolTip(std::size_t index) const {
         break;
     case CouplingCellStatus::Unstable:
     case CouplingCellStatus::Failed:
-        lines << tr("Refused: %1").arg(QString::fromStdString(c.message));
+        lines << tr("Refused: %1").arg(diagnosticText(c.message));
         break;
     case CouplingCellStatus::Ok:
         lines << tr("Max contour error %1, RMS %2 (independent axes: max %3)")
@@ -573,7 +578,7 @@ QString CouplingSweepDialog::cellToolTip(std::size_t index) const {
         lines << (c.saturated ? tr("An axis reaches its actuator limit.")
                               : tr("Both axes stay inside their actuator limit."));
         if (!c.warning.empty())
-            lines << tr("Warning: %1.").arg(QString::fromStdString(c.warning));
+            lines << tr("Warning: %1.").arg(diagnosticText(c.warning));
         break;
     }
     if (result_->best == index)
@@ -696,7 +701,7 @@ void CouplingSweepDialog::updateState() {
                         ? tr("Independent axes (coupling off): max %1, RMS %2.")
                               .arg(sweepDialogMm(alone), sweepDialogMm(r.independent.rmsMm))
                         : tr("Independent axes (coupling off): %1")
-                              .arg(QString::fromStdString(r.independent.message)));
+                              .arg(diagnosticText(r.independent.message)));
         const QString bestOf = r.cancelled ? tr("Best of the pairs that ran") : tr("Best");
         if (!r.best) {
             summary << tr("No pair of gains ran: no best.");

@@ -9,6 +9,7 @@
 #include "ui/panels/stale_veil.h"
 #include "ui/panels/status_strip.h"
 #include "ui/plots/design_space_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
@@ -564,7 +565,7 @@ void DesignSpaceView::startStudy(StudyKind kind) {
         kpAxis.validate("kp range");
         problem = sessionDesignProblem(s, axis, preview ? kLivePreviewFidelity : StudyFidelity{});
     } catch (const InvalidInput& e) {
-        setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
+        setStatus(tr("Cannot run: %1").arg(exceptionText(e)), true);
         return;
     }
     SweepOptions options;
@@ -673,9 +674,9 @@ void DesignSpaceView::showOutcomeText() {
                                                         r.points[*diagnosis_->leastViolating].kp}}
             : std::nullopt);
     relax_->setVisible(!r.bestIndex && diagnosis_->relaxed.has_value());
-    for (const std::string& w : diagnosis_->warnings)
+    for (const auto& w : diagnosis_->warnings)
         if (r.bestIndex || diagnosis_->noneFeasible)
-            text += QStringLiteral("\n") + QString::fromStdString(w);
+            text += QStringLiteral("\n") + diagnosticText(w);
     if (r.bestIndex) {
         const DesignPoint& b = r.points[*r.bestIndex];
         text += tr("\nBest on the grid (★): ωn = %1 rad/s, kp = %2, %3 = %4.")
@@ -748,8 +749,7 @@ void DesignSpaceView::updateCurrentDesign() {
                 readout_->clear(); // it described a cell as judged before
                 showOutcome();
             } catch (const InvalidInput& e) {
-                setStatus(tr("Cannot judge the study: %1").arg(QString::fromStdString(e.what())),
-                          true);
+                setStatus(tr("Cannot judge the study: %1").arg(exceptionText(e)), true);
             }
         }
     }

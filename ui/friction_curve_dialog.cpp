@@ -6,6 +6,7 @@
 #include "core/model/errors.h"
 #include "core/model/table_friction.h"
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QComboBox>
@@ -130,7 +131,7 @@ void FrictionCurveDialog::loadFile(const QString& path) {
     } catch (const std::exception& e) {
         file_->setText(QFileInfo(path).fileName());
         result_->setText(QStringLiteral("<span style='color:#d62728'>%1</span>")
-                             .arg(QString::fromStdString(e.what()).toHtmlEscaped()));
+                             .arg(exceptionText(e).toHtmlEscaped()));
         draw();
         return;
     }
@@ -156,13 +157,13 @@ void FrictionCurveDialog::runEstimate() {
         for (int i = 0; i < 4; ++i) {
             const int c = columns_[i]->currentIndex();
             if (c < 0)
-                throw InvalidInput(roles[i].toStdString(), "choose its column");
+                throw InvalidInput(roles[i].toStdString(), tr("choose its column").toStdString());
             cols[i] = data_[static_cast<std::size_t>(c)];
         }
         estimate_ = identifyFriction(cols[0], cols[1], cols[2], cols[3]);
     } catch (const InvalidInput& e) {
         result_->setText(QStringLiteral("<span style='color:#d62728'>%1</span>")
-                             .arg(QString::fromStdString(e.what()).toHtmlEscaped()));
+                             .arg(exceptionText(e).toHtmlEscaped()));
     }
     draw();
 }
@@ -237,7 +238,7 @@ void FrictionCurveDialog::apply() {
     try {
         validateTableFriction(f);
     } catch (const InvalidInput& error) {
-        result_->setText(QString::fromStdString(error.what()).toHtmlEscaped());
+        result_->setText(exceptionText(error).toHtmlEscaped());
         return;
     }
     session_->setFriction(axisIndex, f, axis.frictionCompensation);

@@ -14,6 +14,7 @@
 #include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_tools.h"
 #include "ui/plots/pole_zero_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
@@ -545,8 +546,8 @@ bool IdentificationWindow::loadFile(const QString& path) {
                          : QString());
         if (hadCandidates)
             text += "\n" + tr("The candidates fitted to the previous file were cleared.");
-        for (const std::string& w : experiment_->warnings)
-            text += "\n" + QString::fromStdString(w);
+        for (const auto& w : experiment_->warnings)
+            text += "\n" + diagnosticText(w);
         const QString problem = previewRecord();
         if (!problem.isEmpty())
             text += "\n" + tr("These columns cannot be used yet: %1").arg(problem);
@@ -562,9 +563,7 @@ bool IdentificationWindow::loadFile(const QString& path) {
         wholeRange_.reset();
         table_->clearSelection();
         clearPlots(tr("No data loaded."));
-        setStatus(tr("Cannot read %1: %2")
-                      .arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())),
-                  true);
+        setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), exceptionText(e)), true);
         return false;
     }
 }
@@ -586,9 +585,7 @@ bool IdentificationWindow::loadValidationFile(const QString& path) {
     } catch (const std::exception& e) {
         validationExperiment_.reset();
         validationName_->setText(tr("(none: judged on the estimation data)"));
-        setStatus(tr("Cannot read %1: %2")
-                      .arg(QFileInfo(path).fileName(), QString::fromStdString(e.what())),
-                  true);
+        setStatus(tr("Cannot read %1: %2").arg(QFileInfo(path).fileName(), exceptionText(e)), true);
         return false;
     }
 }
@@ -613,8 +610,9 @@ IoData IdentificationWindow::record(const ExperimentTable& table) const {
     const double t0 = t0_->value(), t1 = t1_->value();
     if (!rangeIsWhole()) {
         if (!(t1 > t0))
-            throw InvalidInput("range",
-                               "the end must be after the start (0 to 0 uses the whole record)");
+            throw InvalidInput(
+                "range",
+                tr("the end must be after the start (0 to 0 uses the whole record)").toStdString());
         steps.rangeSeconds = std::array<double, 2>{t0, t1};
     }
     steps.offsets = detrend_->isChecked() ? OffsetRemoval::Trends : OffsetRemoval::None;
@@ -642,7 +640,7 @@ void IdentificationWindow::fit() {
     } catch (const std::exception& e) {
         table_->clearSelection();
         clearPlots(tr("No model: the data could not be used."));
-        setStatus(tr("Cannot fit: %1").arg(QString::fromStdString(e.what())), true);
+        setStatus(tr("Cannot fit: %1").arg(exceptionText(e)), true);
         emit fitFinished();
         return;
     }
@@ -696,7 +694,7 @@ bool IdentificationWindow::showFrequencyResponse(int axis) {
                       .arg(axis == 0 ? "X" : "Y"));
         return true;
     } catch (const std::exception& e) {
-        setStatus(tr("No frequency response: %1").arg(QString::fromStdString(e.what())), true);
+        setStatus(tr("No frequency response: %1").arg(exceptionText(e)), true);
         return false;
     }
 }
@@ -726,16 +724,17 @@ void IdentificationWindow::onFinished(IdentifiedModel&& model, const Candidate& 
     Candidate candidate = fitted;
     candidate.model = std::move(model);
     const IdentifiedModel& m = candidate.model;
-    QString text = tr("%1: %2").arg(QString::fromStdString(m.structure),
-                                    QString::fromStdString(estimationStatusName(m.status)));
+    QString text =
+        tr("%1: %2").arg(QString::fromStdString(m.structure),
+                         coreText("xyt::EstimationStatus", estimationStatusName(m.status)));
     if (!m.message.text.empty())
-        text += tr(" (%1)").arg(QString::fromStdString(m.message));
+        text += tr(" (%1)").arg(diagnosticText(m.message));
     for (const QString& n : candidate.notes)
         text += "\n" + n;
     if (m.plant)
         text += "\n" + tr("Estimated initial position: %1 mm").arg(m.initialPositionMm, 0, 'g', 6);
-    for (const std::string& w : m.warnings)
-        text += "\n" + QString::fromStdString(w);
+    for (const auto& w : m.warnings)
+        text += "\n" + diagnosticText(w);
     if (!m.hasEstimate()) {
         setStatus(tr("No estimate: %1").arg(text), true);
         emit fitFinished();
@@ -761,7 +760,7 @@ void IdentificationWindow::addRow(const Candidate& c) {
     set(0, m.spec.structure == ModelStructure::ContinuousThirdOrder
                ? tr("GT3")
                : QString::fromStdString(m.structure));
-    set(1, QString::fromStdString(estimationStatusName(m.status)));
+    set(1, coreText("xyt::EstimationStatus", estimationStatusName(m.status)));
     set(2, percent(m.fit.estimationSimulation.fitPercent));
     set(3, m.fit.validationSimulation ? percent(m.fit.validationSimulation->fitPercent)
                                       : QStringLiteral("–"));
@@ -862,8 +861,8 @@ void IdentificationWindow::showCandidate(int index) {
                           ? tr("Pole-zero map (z-plane): a zero outside the unit circle (NMP)")
                           : tr("Pole-zero map (z-plane)"));
     QStringList notes;
-    for (const std::string& n : m.roots.notes)
-        notes << QString::fromStdString(n);
+    for (const auto& n : m.roots.notes)
+        notes << diagnosticText(n);
     if (m.roots.integrating)
         notes << tr("A pole at z = 1: the model integrates, as the position of a motor axis does "
                     "(every other pole is inside the unit circle).");
@@ -945,8 +944,8 @@ QString IdentificationWindow::previewRecord() {
             wholeRange_.reset();
         }
         if (shown_ < 0)
-            clearPlots(tr("The record cannot be drawn: %1").arg(QString::fromStdString(e.what())));
-        return QString::fromStdString(e.what());
+            clearPlots(tr("The record cannot be drawn: %1").arg(exceptionText(e)));
+        return exceptionText(e);
     }
 }
 
@@ -968,7 +967,7 @@ void IdentificationWindow::useForAxis(int axis) {
             tr("Axis %1 now uses the identified %2 (Edit › Undo restores the previous plant).")
                 .arg(axis == 0 ? tr("X") : tr("Y"), QString::fromStdString(c->model.structure)));
     } catch (const std::exception& e) {
-        setStatus(tr("Cannot use this model: %1").arg(QString::fromStdString(e.what())), true);
+        setStatus(tr("Cannot use this model: %1").arg(exceptionText(e)), true);
     }
 }
 

@@ -41,6 +41,7 @@
 #include "ui/plots/vibration_plot.h"
 #include "ui/report/report_exporter.h"
 #include "ui/robustness_view.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/interface_language.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
@@ -592,7 +593,7 @@ void MainWindow::connectControls() {
         gt.kp = preset.kp;
         gt.modelUnitsPerPositionUnit = preset.modelUnitsPerPositionUnit;
         session_->setGt(session_->currentAxis(), gt,
-                        tr("Load preset %1").arg(QString::fromStdString(preset.name)));
+                        tr("Load preset %1").arg(coreText("xyt::PresetName", preset.name)));
     });
     connect(trajectoryEditor_, &TrajectoryEditor::trajectoryEdited, session_,
             &TuningSession::setTrajectory);
@@ -676,8 +677,7 @@ void MainWindow::buildMenus() {
                 axis, next,
                 tr("Feedforward of %1 from the model").arg(axisName(session_->session(), axis)));
         } catch (const InvalidInput& e) {
-            QMessageBox::warning(this, tr("No feedforward from the model"),
-                                 QString::fromStdString(e.what()));
+            QMessageBox::warning(this, tr("No feedforward from the model"), exceptionText(e));
         }
     });
     feedforwardAction_->setToolTip(
@@ -822,7 +822,7 @@ void MainWindow::showCouplingStatus() {
     if (!s.crossCoupling.active()) {
         // nothing to say
     } else if (!ev.couplingError.empty()) {
-        text = QString::fromStdString(ev.couplingError);
+        text = diagnosticText(ev.couplingError);
         warning = true;
     } else if (ev.program && ev.program->independent) {
         text = tr("Contour error max %1 mm (independent axes %2 mm).")
@@ -831,7 +831,7 @@ void MainWindow::showCouplingStatus() {
         if (const auto& st = ev.program->couplingStability) {
             text += " " + stabilityText(*st);
             if (!st->warning.empty()) {
-                text += " " + QString::fromStdString(st->warning) + ".";
+                text += " " + diagnosticText(st->warning) + ".";
                 warning = true;
             }
         }
@@ -842,7 +842,7 @@ void MainWindow::showCouplingStatus() {
                         QString::number(run.independentError.maxAbs, 'g', 3)) +
                stabilityText(run.stability);
         if (!run.stability.warning.empty()) {
-            text += " " + QString::fromStdString(run.stability.warning) + ".";
+            text += " " + diagnosticText(run.stability.warning) + ".";
             warning = true;
         }
     }
@@ -914,7 +914,7 @@ void MainWindow::syncControls() {
             .arg(impl.encoderResolutionMm > 0 ? tr("%1 mm/count").arg(impl.encoderResolutionMm)
                                               : tr("ideal"),
                  impl.dacBits > 0 ? tr("%1 bits").arg(impl.dacBits) : tr("ideal"),
-                 QString::fromStdString(antiWindupName(impl.antiWindup)))
+                 coreText("xyt::AntiWindup", antiWindupName(impl.antiWindup)))
             .arg(impl.delaySamples));
 }
 

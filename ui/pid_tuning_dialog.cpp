@@ -6,6 +6,7 @@
 #include "ui/panels/number_field.h"
 #include "ui/plots/number_text.h"
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <qcustomplot.h>
@@ -63,7 +64,8 @@ PidTuningDialog::PidTuningDialog(TuningSession* session, int axis, QWidget* pare
         [](double v) {
             requireFinite(v, "phase_margin");
             if (!(v > 0.0 && v < 180.0))
-                throw InvalidInput("phase_margin", "must be between 0 and 180 degrees");
+                throw InvalidInput("phase_margin",
+                                   tr("must be between 0 and 180 degrees").toStdString());
         },
         this);
     relay_ = new NumberField("relay_amplitude", positive("relay_amplitude"), this);
@@ -152,10 +154,10 @@ void PidTuningDialog::recompute() {
             g.crossoverRadPerSec = r.achievedCrossoverRadPerSec;
             g.phaseMarginDeg = r.achievedPhaseMarginDeg;
         } else {
-            fail(g, QString::fromStdString(r.reason));
+            fail(g, diagnosticText(r.reason));
         }
     } catch (const InvalidInput& e) {
-        fail(rows_[0], QString::fromStdString(e.what()));
+        fail(rows_[0], exceptionText(e));
     }
     plot_->graph(0)->data()->clear();
     plot_->graph(1)->data()->clear();
@@ -197,7 +199,7 @@ void PidTuningDialog::recompute() {
             measureLoop(g, plant_, unit_);
         }
     } catch (const InvalidInput& e) {
-        relayLabel_->setText(tr("No relay experiment: %1").arg(QString::fromStdString(e.what())));
+        relayLabel_->setText(tr("No relay experiment: %1").arg(exceptionText(e)));
         fail(rows_[1], relayLabel_->text());
         fail(rows_[2], relayLabel_->text());
     }

@@ -10,6 +10,7 @@
 #include "ui/plots/envelope_plot.h"
 #include "ui/plots/histogram_plot.h"
 #include "ui/plots/sensitivity_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
@@ -371,7 +372,7 @@ void RobustnessView::run() {
             applyRanges(work.problem->parameters);
         }
     } catch (const InvalidInput& e) {
-        setStatus(tr("Cannot run: %1").arg(QString::fromStdString(e.what())), true);
+        setStatus(tr("Cannot run: %1").arg(exceptionText(e)), true);
         return;
     }
     RobustnessOptions options;

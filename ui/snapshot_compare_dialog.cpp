@@ -4,6 +4,7 @@
 #include "core/session/design_method_module.h"
 #include "core/session/session_evaluation.h"
 #include "ui/panels/metrics_panel.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -23,8 +24,9 @@ QList<QPair<QString, QString>> comparisonRows(const Session& design) {
         const AxisEvaluation& a = e.axes[static_cast<std::size_t>(i)];
         const QString id = QString::fromStdString(s.id).toUpper();
         if (!a.ok) {
-            rows.append({QObject::tr("%1 design").arg(id),
-                         QString::fromStdString(a.errorField + ": " + a.error)});
+            rows.append({QObject::tr("%1 design").arg(id), QString::fromStdString(a.errorField) +
+                                                               QStringLiteral(": ") +
+                                                               diagnosticText(a.error)});
             continue;
         }
         for (const DesignCoefficient& c : designMethodModule(a.method).coefficients(a))

@@ -3,6 +3,7 @@
 
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
+#include "core/model/translatable_text.h"
 
 #include <cmath>
 
@@ -23,19 +24,21 @@ DigitalController discretizePi(double kp, double ki, double tsSeconds, PiDiscret
 }
 
 std::string discretizationName(PiDiscretization method) {
-    return method == PiDiscretization::Tustin ? "tustin" : "backward-euler";
+    return method == PiDiscretization::Tustin
+               ? XYT_TRANSLATE_NOOP("xyt::Discretization", "tustin")
+               : XYT_TRANSLATE_NOOP("xyt::Discretization", "backward-euler");
 }
 
 std::string antiWindupName(AntiWindup method) {
     switch (method) {
     case AntiWindup::None:
-        return "none";
+        return XYT_TRANSLATE_NOOP("xyt::AntiWindup", "none");
     case AntiWindup::Clamp:
-        return "clamp";
+        return XYT_TRANSLATE_NOOP("xyt::AntiWindup", "clamp");
     case AntiWindup::BackCalculation:
         break;
     }
-    return "back-calculation";
+    return XYT_TRANSLATE_NOOP("xyt::AntiWindup", "back-calculation");
 }
 
 DigitalPi digitalPi(double kp, double ki, double tsSeconds, PiDiscretization method,

@@ -4,6 +4,7 @@
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/model/translatable_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,13 +90,13 @@ GtDesign withLoopElements(GtDesign design, const TransferFunction& plantFactor,
 
 const std::vector<GtPreset>& gtPresets() {
     static const std::vector<GtPreset> presets = {
-        {"lower-base",
+        {XYT_TRANSLATE_NOOP("xyt::PresetName", "lower-base"),
          "Lower base, Braga et al. Eq. 2 (design of Sec. 3.1)",
          {77.8, 125.3, 3665.0},
          2.0,
          30.0,
          0.001},
-        {"upper-base",
+        {XYT_TRANSLATE_NOOP("xyt::PresetName", "upper-base"),
          "Upper base, Braga et al. Eq. 1 (design of Sec. 3.2)",
          {24.44, 68.18, 863.0},
          1.0,

@@ -5,6 +5,7 @@
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
+#include "core/model/translatable_text.h"
 
 #include <cmath>
 
@@ -82,10 +83,12 @@ PolePlacementDesign designPolePlacement(const Polynomial& aTyped, const Polynomi
 std::vector<PolePlacementPreset> polePlacementPresets() {
     const Polynomial t = Polynomial::fromAscending({1.0, -0.2}); // Eq. 9-10, t1 = -0.2
     return {
-        {"x-axis", "X axis, ARX231 at 70 ms (Patrick, Ishak and Adnan Eq. 1)",
+        {XYT_TRANSLATE_NOOP("xyt::PresetName", "x-axis"),
+         "X axis, ARX231 at 70 ms (Patrick, Ishak and Adnan Eq. 1)",
          Polynomial::fromAscending({1.0, -1.6580, 0.6583}),
          Polynomial::fromAscending({0.0, 0.0421, 0.0628, -0.0454}), t, 0.07},
-        {"y-axis", "Y axis, ARX231 at 70 ms (Patrick, Ishak and Adnan Eq. 3)",
+        {XYT_TRANSLATE_NOOP("xyt::PresetName", "y-axis"),
+         "Y axis, ARX231 at 70 ms (Patrick, Ishak and Adnan Eq. 3)",
          Polynomial::fromAscending({1.0, -1.4590, 0.4587}),
          Polynomial::fromAscending({0.0, 0.0352, 0.0599, -0.0067}), t, 0.07},
     };

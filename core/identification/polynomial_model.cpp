@@ -3,6 +3,7 @@
 
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
+#include "core/model/translatable_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,15 +48,15 @@ void PolynomialModel::validate() const {
 std::string estimationStatusName(EstimationStatus status) {
     switch (status) {
     case EstimationStatus::Converged:
-        return "converged";
+        return XYT_TRANSLATE_NOOP("xyt::EstimationStatus", "converged");
     case EstimationStatus::IterationLimit:
-        return "iteration-limit";
+        return XYT_TRANSLATE_NOOP("xyt::EstimationStatus", "iteration-limit");
     case EstimationStatus::Cancelled:
-        return "cancelled";
+        return XYT_TRANSLATE_NOOP("xyt::EstimationStatus", "cancelled");
     case EstimationStatus::NotPersistentlyExciting:
-        return "not-persistently-exciting";
+        return XYT_TRANSLATE_NOOP("xyt::EstimationStatus", "not-persistently-exciting");
     case EstimationStatus::Failed:
-        return "failed";
+        return XYT_TRANSLATE_NOOP("xyt::EstimationStatus", "failed");
     }
     return "failed";
 }

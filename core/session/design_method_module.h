@@ -4,6 +4,7 @@
 #include "core/analysis/coupled_line_loop.h"
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/pole_zero_map.h"
+#include "core/model/translatable_text.h"
 #include "core/session/export_text.h"
 #include "core/session/session_evaluation.h"
 #include "core/simulation/loop_stepper.h"
@@ -222,7 +223,9 @@ public:
         return std::nullopt;
     }
     /// The method's feedforward as the views name it ("ZPETC", "feedforward").
-    virtual std::string_view feedforwardName() const { return "feedforward"; }
+    virtual std::string_view feedforwardName() const {
+        return XYT_TRANSLATE_NOOP("xyt::CoreText", "feedforward");
+    }
     /// What the design's run is (AxisEvaluation::run), as the report labels it.
     virtual std::string designRunDescription() const { return "the continuous loop, |u| limited"; }
 

@@ -4,6 +4,7 @@
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/number_format.h"
 #include "core/model/root_matching.h"
+#include "core/model/translatable_text.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
 #include "core/session/continuous_plant_method.h"
@@ -272,7 +273,9 @@ class GuilleminTruxalMethod final : public ContinuousPlantMethod {
 public:
     DesignMethod method() const override { return DesignMethod::GuilleminTruxal; }
     std::string_view id() const override { return "guillemin-truxal"; }
-    std::string_view displayName() const override { return "Guillemin-Truxal PI"; }
+    std::string_view displayName() const override {
+        return XYT_TRANSLATE_NOOP("xyt::MethodName", "Guillemin-Truxal PI");
+    }
 
     void evaluate(const Session& session, int axisIndex, double durationSeconds, bool withDigital,
                   AxisEvaluation& out) const override {

@@ -6,6 +6,7 @@
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 #include "core/model/root_matching.h"
+#include "core/model/translatable_text.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
 #include "core/session/continuous_plant_method.h"
@@ -229,7 +230,9 @@ class PidFeedforwardMethod final : public ContinuousPlantMethod {
 public:
     DesignMethod method() const override { return DesignMethod::PidFeedforward; }
     std::string_view id() const override { return "pid-ff"; }
-    std::string_view displayName() const override { return "PID + feedforward"; }
+    std::string_view displayName() const override {
+        return XYT_TRANSLATE_NOOP("xyt::MethodName", "PID + feedforward");
+    }
     std::vector<MethodParameter> parameters() const override { return pidFeedforwardParameters(); }
 
     std::optional<AxisSettings> withoutFeedforward(const AxisSettings& settings) const override {
@@ -462,22 +465,34 @@ std::vector<MethodParameter> pidFeedforwardParameters() {
         modelFeedforwardGains({kPaperK0, kPaperA1, kPaperA2}, kPaperUnit);
     const double wn = 2.0;
     return {
-        gain("p", "Proportional gain P", "V/mm", 30.0 * kPaperUnit),
-        gain("i", "Integral gain I", "V/(mm s)", std::pow(wn, 4) / kPaperK0 * kPaperUnit),
-        gain("d", "Derivative gain D", "V s/mm", 0.0),
-        gain("ff0", "Position feedforward FF0", "V/mm", 0.0),
-        gain("ff1", "Velocity feedforward FF1", "V/(mm/s)", ff.ff1),
-        gain("ff2", "Acceleration feedforward FF2", "V/(mm/s²)", ff.ff2),
-        gain("ff3", "Jerk feedforward FF3", "V/(mm/s³)", ff.ff3),
-        {"bias", "Bias", "V", 0.0, -1e3, 1e3},
-        {"deadband", "Deadband", "mm", 0.0, 0.0, 1e6},
-        {"max_error_i", "Integrator limit (0: none)", "mm s", 0.0, 0.0, 1e9},
-        {"max_output", "Output limit (0: umax)", "V", 0.0, 0.0, 1e6},
-        {"derivative_filter", "D filter Tf (0: none)", "s", 0.0, 0.0, 1e3},
-        {"derivative_on_measurement", "D on the measurement (1) or the error (0)", "", 0.0, 0.0,
-         1.0},
-        {"command_derivatives", "Command derivatives: backward differences (0), trajectory (1)", "",
+        gain("p", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Proportional gain P"), "V/mm",
+             30.0 * kPaperUnit),
+        gain("i", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Integral gain I"), "V/(mm s)",
+             std::pow(wn, 4) / kPaperK0 * kPaperUnit),
+        gain("d", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Derivative gain D"), "V s/mm", 0.0),
+        gain("ff0", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Position feedforward FF0"), "V/mm",
+             0.0),
+        gain("ff1", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Velocity feedforward FF1"),
+             "V/(mm/s)", ff.ff1),
+        gain("ff2", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Acceleration feedforward FF2"),
+             "V/(mm/s²)", ff.ff2),
+        gain("ff3", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Jerk feedforward FF3"), "V/(mm/s³)",
+             ff.ff3),
+        {"bias", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Bias"), "V", 0.0, -1e3, 1e3},
+        {"deadband", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Deadband"), "mm", 0.0, 0.0, 1e6},
+        {"max_error_i", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Integrator limit (0: none)"),
+         "mm s", 0.0, 0.0, 1e9},
+        {"max_output", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "Output limit (0: umax)"), "V",
+         0.0, 0.0, 1e6},
+        {"derivative_filter", XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "D filter Tf (0: none)"),
+         "s", 0.0, 0.0, 1e3},
+        {"derivative_on_measurement",
+         XYT_TRANSLATE_NOOP("xyt::ParameterLabel", "D on the measurement (1) or the error (0)"), "",
          0.0, 0.0, 1.0},
+        {"command_derivatives",
+         XYT_TRANSLATE_NOOP("xyt::ParameterLabel",
+                            "Command derivatives: backward differences (0), trajectory (1)"),
+         "", 0.0, 0.0, 1.0},
     };
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/number_format.h"
+#include "core/model/translatable_text.h"
 #include "core/session/axis_run.h"
 #include "core/session/c_export.h"
 #include "core/session/robustness_problem.h"
@@ -339,7 +340,9 @@ class PolePlacementMethod final : public DesignMethodModule {
 public:
     DesignMethod method() const override { return DesignMethod::PolePlacementZpetc; }
     std::string_view id() const override { return "pole-placement-zpetc"; }
-    std::string_view displayName() const override { return "pole placement + ZPETC"; }
+    std::string_view displayName() const override {
+        return XYT_TRANSLATE_NOOP("xyt::MethodName", "pole placement + ZPETC");
+    }
     std::optional<TrackingFrequencyResponses>
     trackingResponses(const AxisEvaluation& axis,
                       const std::vector<double>& omegaRadPerSec) const override {

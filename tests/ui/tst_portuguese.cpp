@@ -6,17 +6,22 @@
 // from the catalogue would make the test circular).
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
+#include "core/session/design_method_module.h"
 #include "core/session/session.h"
 #include "tests/support/gui_checks.h"
 #include "ui/main_window.h"
+#include "ui/panels/method_parameter_editor.h"
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/number_field.h"
+#include "ui/plots/contour_plot.h"
 #include "ui/session/diagnostic_text.h"
 #include "ui/session/interface_language.h"
 #include "ui/session/tuning_session.h"
 
+#include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFile>
+#include <QLabel>
 #include <QLibraryInfo>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -25,6 +30,9 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
+
+#include <algorithm>
+#include <stdexcept>
 
 using namespace xyt;
 using namespace xyt::ui;
@@ -99,6 +107,10 @@ private slots:
     void numberFieldAcceptsADecimalComma();
     void fieldErrorIsPortuguese_data();
     void fieldErrorIsPortuguese();
+    void methodNameAndParameterLabelArePortuguese();
+    void coreRefusalIsPortugueseWithItsField();
+    void nestedReasonIsPortugueseInBothParts();
+    void contourViewWarnsInPortuguese();
     void englishIsTheSource();
     void storedLanguageRoundTrips();
 };
@@ -319,6 +331,97 @@ void TstPortuguese::fieldErrorIsPortuguese() {
         QCOMPARE(e.reasonDiagnostic().code, std::string("not_positive"));
         QCOMPARE(std::string(e.what()), std::string("kp: must be greater than zero"));
     }
+}
+
+void TstPortuguese::methodNameAndParameterLabelArePortuguese() {
+    // The core's names (XYT_TRANSLATE_NOOP in core/session/pid_feedforward_method.cpp): the
+    // method's display name in the method list, a parameter's label in its editor.
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    Session s = Session::paperDefault();
+    s.axes[0].method = DesignMethod::PidFeedforward;
+    TuningSession session;
+    session.reset(s);
+    MainWindow window(&session);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QStringList methods;
+    for (const QComboBox* box : window.findChildren<QComboBox*>())
+        for (int i = 0; i < box->count(); ++i)
+            methods << box->itemText(i);
+    QVERIFY2(methods.contains(QStringLiteral("PID + pré-alimentação")),
+             qPrintable(methods.join(", ")));
+    QVERIFY(!methods.contains(QStringLiteral("PID + feedforward")));
+    QStringList labels;
+    for (const MethodParameterEditor* editor : window.findChildren<MethodParameterEditor*>())
+        for (const QLabel* label : editor->findChildren<QLabel*>())
+            labels << label->text();
+    QVERIFY2(labels.contains(QStringLiteral("Ganho proporcional P (V/mm)")),
+             qPrintable(labels.join(", ")));
+    QVERIFY(!labels.contains(QStringLiteral("Proportional gain P (V/mm)")));
+    // The session keeps the English key and the core its English name.
+    QCOMPARE(methodDisplayName(DesignMethod::PidFeedforward),
+             QStringLiteral("PID + pré-alimentação"));
+    QCOMPARE(std::string(designMethodModule(DesignMethod::PidFeedforward).displayName()),
+             std::string("PID + feedforward"));
+}
+
+void TstPortuguese::coreRefusalIsPortugueseWithItsField() {
+    // requirePositive's coded reason (not_positive), caught as any exception: the field stays,
+    // the reason is translated; what() keeps the English for the CLI.
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    try {
+        requirePositive(0.0, "plant.k0");
+        QFAIL("requirePositive accepted 0");
+    } catch (const std::exception& e) {
+        QCOMPARE(exceptionText(e), QStringLiteral("plant.k0: deve ser maior que zero"));
+        QCOMPARE(std::string(e.what()), std::string("plant.k0: must be greater than zero"));
+    }
+    // An exception that is not a refusal shows its own text.
+    QCOMPARE(exceptionText(std::runtime_error("disk full")), QStringLiteral("disk full"));
+}
+
+void TstPortuguese::nestedReasonIsPortugueseInBothParts() {
+    // A reason caught and put into a longer sentence keeps its code: both are translated.
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    const InvalidInput e("axes[0]",
+                         makeDiagnostic("no_stability_margins", {makeDiagnostic("not_positive")}));
+    QCOMPARE(std::string(e.what()),
+             std::string("axes[0]: no stability margins: must be greater than zero"));
+    QCOMPARE(e.reasonDiagnostic().args.at(0).code, std::string("not_positive"));
+    QCOMPARE(exceptionText(e),
+             QStringLiteral("axes[0]: sem margens de estabilidade: deve ser maior que zero"));
+    QCOMPARE(diagnosticText(e.reasonDiagnostic()),
+             QStringLiteral("sem margens de estabilidade: deve ser maior que zero"));
+}
+
+void TstPortuguese::contourViewWarnsInPortuguese() {
+    // A circle traced with a 0.2 V actuator saturates both axes: the program's coded warning
+    // (contour_axis_saturated, core/session/contour_run.cpp) is shown on the XY contour plot in
+    // Portuguese, with the core's numbers.
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    Session s = Session::paperDefault();
+    s.umaxVolts = 0.2;
+    s.trajectory.kind = TrajectoryKind::Gcode;
+    s.trajectory.gcode.fileName = "circle.nc";
+    s.trajectory.gcode.program = "G21 G90 G17\nG0 X25 Y0\nG2 X25 Y0 I-25 J0 F150\n";
+    TuningSession session;
+    session.reset(s);
+    const auto& program = session.evaluation().program;
+    QVERIFY(program);
+    const auto found =
+        std::find_if(program->warnings.begin(), program->warnings.end(),
+                     [](const Diagnostic& w) { return w.code == "contour_axis_saturated"; });
+    QVERIFY(found != program->warnings.end());
+    QCOMPARE(found->args.size(), std::size_t(3));
+    const QString expected =
+        QStringLiteral("eixo %1: |u| atingiu o limite do atuador de %2 V por %3 s")
+            .arg(QString::fromStdString(found->args[0].text),
+                 QString::fromStdString(found->args[1].text),
+                 QString::fromStdString(found->args[2].text));
+    ContourPlot plot;
+    plot.showSession(session.session(), session.evaluation());
+    QVERIFY2(plot.noticeText().contains(expected), qPrintable(plot.noticeText()));
+    QVERIFY(!plot.noticeText().contains(QString::fromStdString(found->text)));
 }
 
 void TstPortuguese::englishIsTheSource() {

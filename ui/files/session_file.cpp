@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace xyt::files {
 
@@ -27,8 +28,13 @@ constexpr int kMaxSnapshots = 200;
 
 /// A bad value at a JSON path.
 struct FormatError {
+    FormatError(QString atPath, QString why, Diagnostic coded = {})
+        : path(std::move(atPath)), reason(std::move(why)), reasonDiagnostic(std::move(coded)) {}
     QString path;
     QString reason;
+    /// The core's coded reason when the core refused the value (uncoded otherwise), so the
+    /// workbench can show it in the user's language.
+    Diagnostic reasonDiagnostic;
 };
 
 QString join(const QString& path, const QString& key) {
@@ -275,13 +281,13 @@ void readFriction(ObjectReader r, AxisSettings& a) {
         validateTableFriction(f);
     } catch (const InvalidInput& e) {
         throw FormatError{join(r.path(), QString::fromStdString(e.field())),
-                          QString::fromStdString(e.reason())};
+                          QString::fromStdString(e.reason()), e.reasonDiagnostic()};
     }
     try {
         validateFrictionCompensation(a.frictionCompensation);
     } catch (const InvalidInput& e) {
         throw FormatError{join(c.path(), QString::fromStdString(e.field())),
-                          QString::fromStdString(e.reason())};
+                          QString::fromStdString(e.reason()), e.reasonDiagnostic()};
     }
     c.finish();
     r.finish();
@@ -314,7 +320,7 @@ QJsonObject gtToJson(const GtAxisSettings& g) {
 void readGtLoopElements(ObjectReader& gt, GtAxisSettings& g) {
     const auto fieldError = [](const ObjectReader& r, const InvalidInput& e) {
         return FormatError{join(r.path(), QString::fromStdString(e.field())),
-                           QString::fromStdString(e.reason())};
+                           QString::fromStdString(e.reason()), e.reasonDiagnostic()};
     };
     if (gt.has("flexible_mode")) {
         ObjectReader r = gt.child("flexible_mode");
@@ -405,7 +411,7 @@ ReferenceShaping readShaping(ObjectReader r) {
         designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
     } catch (const InvalidInput& e) {
         throw FormatError{join(r.path(), QString::fromStdString(e.field())),
-                          QString::fromStdString(e.reason())};
+                          QString::fromStdString(e.reason()), e.reasonDiagnostic()};
     }
     r.finish();
     return s;
@@ -489,7 +495,8 @@ CrossCoupling readCrossCoupling(ObjectReader r) {
     try {
         validateCrossCoupling(c, "cross_coupling");
     } catch (const InvalidInput& e) {
-        throw FormatError{QString::fromStdString(e.field()), QString::fromStdString(e.reason())};
+        throw FormatError{QString::fromStdString(e.field()), QString::fromStdString(e.reason()),
+                          e.reasonDiagnostic()};
     }
     r.finish();
     return c;
@@ -632,7 +639,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             checkProgramOptions(t.gcode);
         } catch (const InvalidInput& e) {
             throw FormatError{join(g.path(), QString::fromStdString(e.field()).section('.', -1)),
-                              QString::fromStdString(e.reason())};
+                              QString::fromStdString(e.reason()), e.reasonDiagnostic()};
         }
         g.finish();
     }
@@ -652,7 +659,8 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             // The core names "trajectory.<field>"; a snapshot's trajectory has its own path.
             QString field = QString::fromStdString(e.field());
             field.remove(0, field.indexOf('.') + 1);
-            throw FormatError{join(r.path(), field), QString::fromStdString(e.reason())};
+            throw FormatError{join(r.path(), field), QString::fromStdString(e.reason()),
+                              e.reasonDiagnostic()};
         }
     }
     const double samples = std::floor(t.effectiveDurationSeconds() / t.dtSeconds) + 1.0;
@@ -809,6 +817,7 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
         result.ok = false;
         result.errorPath = e.path;
         result.error = e.reason;
+        result.errorDiagnostic = e.reasonDiagnostic;
     }
     return result;
 }

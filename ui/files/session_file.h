@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/session/session.h"
 #include "ui/files/session_format_migration.h"
 
@@ -21,6 +22,9 @@ struct SessionLoadResult {
     Session session;
     QString errorPath; ///< e.g. "axes[1].gt.plant.a2" (empty for file-level errors)
     QString error;     ///< e.g. "must be a finite number"
+    /// The core's coded reason when the core refused a value (`error` is its English text);
+    /// uncoded for the file format's own messages.
+    Diagnostic errorDiagnostic;
     QStringList warnings;
     /// "axes[1].gt.plant.a2: must be a finite number", or the file-level error.
     QString message() const { return errorPath.isEmpty() ? error : errorPath + ": " + error; }

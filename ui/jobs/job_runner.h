@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "ui/session/diagnostic_text.h"
+
 #include <QFutureWatcher>
 #include <QObject>
 #include <QPromise>
@@ -92,7 +94,7 @@ public:
                 try {
                     outcome.value.emplace(work(progress));
                 } catch (const std::exception& e) {
-                    outcome.error = QString::fromStdString(e.what());
+                    outcome.error = exceptionText(e);
                 } catch (...) {
                     outcome.error = QStringLiteral("an unknown error");
                 }

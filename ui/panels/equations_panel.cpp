@@ -3,6 +3,7 @@
 #include "ui/plots/number_text.h"
 
 #include "core/session/design_method_module.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QScrollBar>
 
@@ -71,8 +72,7 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
     const QString id = QString::fromStdString(settings.id).toUpper();
     if (!axis.ok) {
         showHtml(tr("<b>Axis %1</b>: %2: %3")
-                     .arg(id, QString::fromStdString(axis.errorField),
-                          QString::fromStdString(axis.error)));
+                     .arg(id, QString::fromStdString(axis.errorField), diagnosticText(axis.error)));
         return;
     }
     if (axis.pp) {
@@ -104,9 +104,9 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
         const DesignMethodModule& module = designMethodModule(axis.method);
         QString html =
             tr("<b>Axis %1 — %2</b><br>")
-                .arg(id, QString::fromUtf8(module.displayName().data(),
-                                           static_cast<qsizetype>(module.displayName().size()))
-                             .toHtmlEscaped());
+                .arg(
+                    id,
+                    coreText("xyt::MethodName", std::string(module.displayName())).toHtmlEscaped());
         QStringList lines;
         for (const std::string& line : module.equations(settings, axis))
             lines << QString::fromStdString(line).toHtmlEscaped();

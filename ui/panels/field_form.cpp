@@ -2,6 +2,7 @@
 #include "ui/panels/field_form.h"
 
 #include "core/model/errors.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QFormLayout>
 
@@ -29,7 +30,7 @@ bool FieldForm::anyError() const {
 bool FieldForm::markError(const InvalidInput& e) const {
     NumberField* f = fields_.value(QString::fromStdString(e.field()));
     if (f)
-        markFieldError(f, QString::fromStdString(e.reason()));
+        markFieldError(f, diagnosticText(e.reasonDiagnostic()));
     return f != nullptr;
 }
 

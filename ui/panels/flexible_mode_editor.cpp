@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/flexible_mode_editor.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/shaper_advice.h"
 #include "ui/panels/field_form.h"
 #include "ui/panels/fold_button.h"
 #include "ui/panels/number_field.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QComboBox>
 #include <QFileDialog>
@@ -25,7 +27,7 @@ namespace {
 
 void requireNonNegativeNumber(double v) {
     if (!(v >= 0.0))
-        throw InvalidInput("value", "must be >= 0");
+        throw InvalidInput("value", makeDiagnostic("not_negative"));
 }
 
 /// The notch's fields, by the core's names.
@@ -78,7 +80,7 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
             form_->field("depth")->setValue(n.depthDb);
             emitIfValid();
         } catch (const InvalidInput& e) {
-            markFieldError(form_->field("frequency"), QString::fromStdString(e.reason()));
+            markFieldError(form_->field("frequency"), diagnosticText(e.reasonDiagnostic()));
         }
     });
     note_ = new QLabel(body_);
@@ -128,7 +130,7 @@ FlexibleModeEditor::FlexibleModeEditor(QWidget* parent) : QWidget(parent) {
             applyRecommendation(flexibleModeSpectrum(mode_), mode_.dampingRatio,
                                 tr("the %1 Hz mode").arg(formatNumber(mode_.frequencyHz)));
         } catch (const InvalidInput& e) {
-            advice_->setText(tr("No recommendation: %1").arg(QString::fromStdString(e.what())));
+            advice_->setText(tr("No recommendation: %1").arg(exceptionText(e)));
         }
     });
     connect(recommendLog_, &QPushButton::clicked, this, [this] {
@@ -238,7 +240,7 @@ void FlexibleModeEditor::recommendFromLog(const QString& path) {
         applyRecommendation(accelerometerShaperSpectrum(spectra, "sum"), defaults.dampingRatio,
                             name);
     } catch (const InvalidInput& e) {
-        advice_->setText(tr("No recommendation: %1").arg(QString::fromStdString(e.what())));
+        advice_->setText(tr("No recommendation: %1").arg(exceptionText(e)));
     }
 }
 

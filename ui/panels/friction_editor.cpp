@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/friction_editor.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "ui/panels/field_form.h"
 #include "ui/panels/fold_button.h"
@@ -18,7 +19,7 @@ namespace {
 
 void requireNonNegative(double v) {
     if (!(v >= 0.0))
-        throw InvalidInput("value", "must be >= 0");
+        throw InvalidInput("value", makeDiagnostic("not_negative"));
 }
 
 } // namespace

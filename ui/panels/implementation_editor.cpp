@@ -4,6 +4,7 @@
 #include "core/model/errors.h"
 #include "core/simulation/sampled_data.h"
 #include "ui/panels/number_field.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -22,10 +23,13 @@ NumberField::Validator implementationRule(const char* field) {
         const std::string name(field);
         const bool integer = name == "delay_samples" || name == "dac_bits";
         if (integer && (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 1e9))
-            throw InvalidInput("implementation." + name,
-                               name == "dac_bits" ? "must be an integer in 0..32 (0: ideal DAC)"
-                                                  : "must be an integer in 0.." +
-                                                        std::to_string(kMaxDelaySamples));
+            throw InvalidInput(
+                "implementation." + name,
+                (name == "dac_bits"
+                     ? ImplementationEditor::tr("must be an integer in 0..32 (0: ideal DAC)")
+                     : ImplementationEditor::tr("must be an integer in 0..%1")
+                           .arg(kMaxDelaySamples))
+                    .toStdString());
         if (name == "delay_samples")
             o.delaySamples = static_cast<int>(v);
         else if (name == "dac_bits")
@@ -33,12 +37,13 @@ NumberField::Validator implementationRule(const char* field) {
         else if (name == "encoder_resolution")
             o.encoderResolution = v;
         else if (!std::isfinite(v) || v < 0.0)
-            throw InvalidInput("implementation.tracking_time",
-                               "must be >= 0 (s; 0: Tt = Ti = kp/ki)");
+            throw InvalidInput(
+                "implementation.tracking_time",
+                ImplementationEditor::tr("must be >= 0 (s; 0: Tt = Ti = kp/ki)").toStdString());
         try {
             validateSampledDataOptions(o);
         } catch (const InvalidInput& e) {
-            throw InvalidInput("implementation." + e.field(), e.reason());
+            throw InvalidInput("implementation." + e.field(), e.reasonDiagnostic());
         }
     };
 }

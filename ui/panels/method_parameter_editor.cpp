@@ -2,6 +2,7 @@
 #include "ui/panels/method_parameter_editor.h"
 
 #include "ui/panels/number_field.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QFormLayout>
 #include <QLabel>
@@ -31,15 +32,15 @@ MethodParameterEditor::MethodParameterEditor(std::vector<MethodParameter> parame
                 methodParameterValue(probe, 0, p);
             },
             this);
-        field->setAccessibleName(QString::fromStdString(p.label));
+        const QString shown = coreText("xyt::ParameterLabel", p.label);
+        field->setAccessibleName(shown);
         field->setToolTip(tr("%1 (%2 .. %3 %4)")
-                              .arg(QString::fromStdString(p.label))
+                              .arg(shown)
                               .arg(p.minimum)
                               .arg(p.maximum)
                               .arg(QString::fromStdString(p.unit)));
-        const QString label = p.unit.empty() ? QString::fromStdString(p.label)
-                                             : tr("%1 (%2)").arg(QString::fromStdString(p.label),
-                                                                 QString::fromStdString(p.unit));
+        const QString label =
+            p.unit.empty() ? shown : tr("%1 (%2)").arg(shown, QString::fromStdString(p.unit));
         form->addRow(label, field);
         fields_[p.name] = field;
         connect(field, &NumberField::valueAccepted, this, [this, p](double v) {

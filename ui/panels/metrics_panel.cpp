@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/metrics_panel.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/specification_advice.h"
 #include "ui/panels/number_field.h"
@@ -274,7 +275,7 @@ void MetricsPanel::buildNotices(QVBoxLayout* layout) {
 
 void MetricsPanel::buildSpecFields() {
     auto positive = [](const char* name) { return [name](double v) { requirePositive(v, name); }; };
-    auto nonNegative = [](const char* name, double max, const char* range) {
+    auto nonNegative = [](const char* name, double max, const Diagnostic& range) {
         return [name, max, range](double v) {
             requireFinite(v, name);
             if (v < 0 || v > max)
@@ -283,20 +284,23 @@ void MetricsPanel::buildSpecFields() {
     };
     spec_.insert("settling",
                  new NumberField("max settling time", positive("max settling time"), this));
-    spec_.insert("overshoot",
-                 new NumberField("max overshoot",
-                                 nonNegative("max overshoot", 1e308, "must be >= 0"), this));
+    spec_.insert(
+        "overshoot",
+        new NumberField("max overshoot",
+                        nonNegative("max overshoot", 1e308, makeDiagnostic("not_negative")), this));
     spec_.insert("error", new NumberField("max error", positive("max error"), this));
     spec_.insert("settle", new NumberField("max settle time", positive("max settle time"), this));
     spec_.insert("window",
                  new NumberField("in-position window", positive("in-position window"), this));
     spec_.insert("phase_margin",
                  new NumberField("min phase margin",
-                                 nonNegative("min phase margin", 180.0, "must be 0 .. 180 degrees"),
+                                 nonNegative("min phase margin", 180.0,
+                                             tr("must be 0 .. 180 degrees").toStdString()),
                                  this));
-    spec_.insert("gain_margin",
-                 new NumberField("min gain margin",
-                                 nonNegative("min gain margin", 1e308, "must be >= 0 dB"), this));
+    spec_.insert("gain_margin", new NumberField("min gain margin",
+                                                nonNegative("min gain margin", 1e308,
+                                                            tr("must be >= 0 dB").toStdString()),
+                                                this));
     spec_["settling"]->setToolTip(tr("Maximum settling time (2 % band) of the unit step"));
     spec_["error"]->setToolTip(tr("Maximum |e| as a percentage of the travel"));
     spec_["settle"]->setToolTip(
@@ -409,7 +413,8 @@ namespace {
 /// Why an axis has no margins: its error, or the evaluation's "no stability margins" warning.
 QString noMarginsReason(const AxisEvaluation& e) {
     if (!e.ok)
-        return QString::fromStdString(e.errorField + ": " + e.error);
+        return QString::fromStdString(e.errorField) + QStringLiteral(": ") +
+               diagnosticText(e.error);
     for (const Diagnostic& w : e.warnings)
         if (w.code == "no_stability_margins")
             return diagnosticText(w);
@@ -477,8 +482,8 @@ QString MetricsPanel::adviceText() const {
 void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& evaluation) {
     const SpecificationAdvice advice = adviseSpecification(session, evaluation);
     QStringList reasons;
-    for (const std::string& r : advice.reasons)
-        reasons << QString::fromStdString(r);
+    for (const auto& r : advice.reasons)
+        reasons << diagnosticText(r);
     relaxed_ = advice.relaxed;
     // One line whose size does not change with the figures, and nothing shown or hidden: a new
     // size would make the window lay itself out again on every slider step. The reasons,
@@ -494,8 +499,8 @@ void MetricsPanel::showAdvice(const Session& session, const SessionEvaluation& e
     advice_->setToolTip(reasons.join(QLatin1Char('\n')));
     relax_->setEnabled(relaxed_.has_value());
     QStringList changes;
-    for (const std::string& c : advice.changes)
-        changes << QString::fromStdString(c);
+    for (const auto& c : advice.changes)
+        changes << diagnosticText(c);
     relax_->setToolTip(
         relaxed_ ? tr("Set the limits to what this design reaches: %1 (one undo step)")
                        .arg(changes.join(tr(", ")))
@@ -548,7 +553,7 @@ void MetricsPanel::showContour(const SessionEvaluation& evaluation, bool withFri
         }
         // The program's warnings are on the XY contour view and in the editor's summary.
     } else if (!evaluation.programError.empty()) {
-        notices << tr("program: %1").arg(QString::fromStdString(evaluation.programError));
+        notices << tr("program: %1").arg(diagnosticText(evaluation.programError));
     }
     contour_->setText(lines.join(QLatin1Char('\n')));
     contour_->setVisible(!lines.isEmpty());
@@ -607,8 +612,7 @@ void MetricsPanel::showAxis(const Session& session, const AxisEvaluation& a, int
     QMap<int, QString> values = axisFigures(a, session.axes[axis].pp.zpetcEnabled);
     if (!a.ok)
         notices << tr("%1: no design (%2: %3)")
-                       .arg(header, QString::fromStdString(a.errorField),
-                            QString::fromStdString(a.error));
+                       .arg(header, QString::fromStdString(a.errorField), diagnosticText(a.error));
     for (const Diagnostic& w : a.warnings)
         notices << tr("%1: %2").arg(header, diagnosticText(w));
     // Which rows the specification judges, and whether this axis passes them.
@@ -729,7 +733,8 @@ void MetricsPanel::judgeCell(Cell& cell, bool pass, bool byImplementation,
 
 void MetricsPanel::explainCell(Cell& cell, int r, const AxisEvaluation& a) const {
     if (!a.ok) {
-        cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
+        cell.toolTip =
+            QString::fromStdString(a.errorField) + QStringLiteral(": ") + diagnosticText(a.error);
         return;
     }
     if (r == SettleAfterMove && a.moveSettle && !a.moveSettle->diverged &&

@@ -3,6 +3,7 @@
 
 #include "core/model/errors.h"
 #include "ui/panels/number_field.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -15,7 +16,7 @@ PlantEditor::PlantEditor(QWidget* parent) : QWidget(parent) {
     form->setContentsMargins(0, 0, 0, 0);
     preset_ = new QComboBox(this);
     for (const GtPreset& p : gtPresets())
-        preset_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
+        preset_->addItem(coreText("xyt::PresetName", p.name), QString::fromStdString(p.name));
     preset_->addItem(tr("custom"), QString());
     preset_->setAccessibleName(tr("Plant preset"));
     preset_->setToolTip(tr("A plant of Braga et al.: the lower base (Eq. 2) or the upper base "

@@ -6,6 +6,7 @@
 #include "core/model/errors.h"
 #include "ui/panels/number_field.h"
 #include "ui/panels/parameter_slider.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QCheckBox>
@@ -31,7 +32,7 @@ PpEditor::PpEditor(QWidget* parent) : QWidget(parent) {
     form->addRow(new QLabel(tr("B(z⁻¹)/A(z⁻¹), ascending powers of z⁻¹"), this));
     preset_ = new QComboBox(this);
     for (const auto& p : polePlacementPresets())
-        preset_->addItem(QString::fromStdString(p.name), QString::fromStdString(p.name));
+        preset_->addItem(coreText("xyt::PresetName", p.name), QString::fromStdString(p.name));
     preset_->addItem(tr("custom"), QString());
     preset_->setAccessibleName(tr("ARX preset"));
     preset_->setToolTip(tr("An axis model of Patrick, Ishak and Adnan: the x axis (Eq. 1) or the "
@@ -109,11 +110,12 @@ bool PpEditor::parseList(QLineEdit* field, const char* name, std::vector<double>
     try {
         out = parseCoefficientList(field->text().toStdString(), name);
         if (std::string(name) == "A" && out[0] == 0.0)
-            throw InvalidInput("A", "the z^0 coefficient must be nonzero (A is monic)");
+            throw InvalidInput(
+                "A", tr("the z^0 coefficient must be nonzero (A is monic)").toStdString());
         clearFieldError(field, field->property("normalToolTip").toString());
         return true;
     } catch (const InvalidInput& e) {
-        markFieldError(field, QString::fromStdString(e.what()));
+        markFieldError(field, exceptionText(e));
         return false;
     }
 }

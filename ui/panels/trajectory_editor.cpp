@@ -2,6 +2,7 @@
 #include "ui/panels/trajectory_editor.h"
 
 #include "core/contour/feed_profile.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"
 #include "ui/panels/fitted_stack.h"
@@ -10,6 +11,7 @@
 
 #include "core/io/file_io.h"
 #include "core/session/program_trajectory.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -60,7 +62,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
         return [name](double v) {
             requireFinite(v, name);
             if (v < 0)
-                throw InvalidInput(name, "must be >= 0");
+                throw InvalidInput(name, makeDiagnostic("not_negative"));
         };
     };
     auto* cubic = new QWidget(pages_);
@@ -98,7 +100,7 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
         [](double v) {
             requirePositive(v, "dt");
             if (v > 1.0)
-                throw InvalidInput("dt", "must be at most 1 s");
+                throw InvalidInput("dt", tr("must be at most 1 s").toStdString());
         },
         this);
     auto* duration = new NumberField(
@@ -106,9 +108,9 @@ TrajectoryEditor::TrajectoryEditor(QWidget* parent) : QWidget(parent) {
         [](double v) {
             requireFinite(v, "duration");
             if (v < 0)
-                throw InvalidInput("duration", "must be >= 0 (0 = automatic)");
+                throw InvalidInput("duration", tr("must be >= 0 (0 = automatic)").toStdString());
             if (v > 1.0e5)
-                throw InvalidInput("duration", "must be at most 100000 s");
+                throw InvalidInput("duration", tr("must be at most 100000 s").toStdString());
         },
         this);
     duration->setToolTip(tr("0 = automatic: tf for a cubic, one revolution plus the ramp-in for a "
@@ -216,7 +218,7 @@ QWidget* TrajectoryEditor::buildProgramPage() {
     addField("max_jerk", tr("Max jerk (mm/s³)"), [](double v) {
         requireFinite(v, "max_jerk");
         if (v < 0)
-            throw InvalidInput("max_jerk", "must be >= 0 (0 = none)");
+            throw InvalidInput("max_jerk", tr("must be >= 0 (0 = none)").toStdString());
         requireProfileRate(v, "max_jerk", "mm/s^3", true);
     });
     connect(open_, &QPushButton::clicked, this, [this] {
@@ -284,7 +286,7 @@ bool TrajectoryEditor::loadProgramFile(const QString& path) {
     try {
         text = readRegularFile(path.toStdString(), kMaxProgramBytes);
     } catch (const std::exception& e) {
-        const QString message = tr("%1: %2").arg(name, QString::fromStdString(e.what()));
+        const QString message = tr("%1: %2").arg(name, exceptionText(e));
         markFieldError(programField_, message);
         summary_->setText(message);
         return false;
@@ -311,7 +313,7 @@ bool TrajectoryEditor::loadProgramText(const QString& fileName, const std::strin
                     .toStdString());
     } catch (const InvalidInput& e) {
         // The session keeps its trajectory; the error is shown at the program field.
-        const QString message = tr("%1: %2").arg(fileName, QString::fromStdString(e.what()));
+        const QString message = tr("%1: %2").arg(fileName, exceptionText(e));
         markFieldError(programField_, message);
         summary_->setText(message);
         return false;
@@ -344,11 +346,11 @@ void TrajectoryEditor::showProgram(const TrajectorySettings& t) {
             text += tr("; %n warning(s)", nullptr, static_cast<int>(s.warnings.size()));
         summary_->setText(text);
         QStringList warnings;
-        for (const std::string& w : s.warnings)
-            warnings << QString::fromStdString(w);
+        for (const auto& w : s.warnings)
+            warnings << diagnosticText(w);
         summary_->setToolTip(warnings.join('\n'));
     } catch (const InvalidInput& e) {
-        summary_->setText(QString::fromStdString(e.what()));
+        summary_->setText(exceptionText(e));
     }
 }
 
@@ -437,7 +439,7 @@ bool TrajectoryEditor::emitTrajectory() {
             const QString field = QString::fromStdString(e.field()).section('.', -1);
             markFieldError(fields_.contains(field) ? fields_[field]
                                                    : static_cast<QLineEdit*>(programField_),
-                           QString::fromStdString(e.what()));
+                           exceptionText(e));
             return false;
         }
         clearFieldError(programField_, programToolTip(QString::fromStdString(t.gcode.fileName)));

@@ -3,6 +3,7 @@
 #include "ui/plots/number_text.h"
 
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -248,7 +249,7 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     // A method with a feedforward (ZPETC, a PID's command feedforward): the tracking r -> y
     // without and with it.
     const QString without = tr("tracking, loop alone");
-    const QString with = tr("tracking with %1").arg(QString::fromStdString(a.feedforwardName));
+    const QString with = tr("tracking with %1").arg(coreText("xyt::CoreText", a.feedforwardName));
     for (const QString& name : curves_.keys())
         if ((name == without || name.startsWith(tr("tracking with "))) &&
             !(a.tracking && (name == without || (zpetcEnabled && name == with)))) {
@@ -405,8 +406,8 @@ void BodePlot::showAnalysis(const AxisFrequencyAnalysis& a, bool zpetcEnabled, c
     QStringList notes;
     if (!m.closedLoopStable)
         notes << tr("the closed loop is unstable: the margins are not robustness measures");
-    for (const std::string& warning : m.warnings)
-        notes << QString::fromStdString(warning);
+    for (const auto& warning : m.warnings)
+        notes << diagnosticText(warning);
     notice_->setSevere(!m.closedLoopStable);
     notice_->setLines(notes);
 

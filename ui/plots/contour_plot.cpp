@@ -5,6 +5,7 @@
 #include "ui/plots/contour_points.h"
 #include "ui/plots/plot_notice.h"
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -191,10 +192,10 @@ void ContourPlot::redraw() {
         figures_->setText(tr("XY contour: an axis could not be simulated"));
     } else if (session_.trajectory.kind == TrajectoryKind::Gcode && !evaluation_.program) {
         figures_->setText(tr("XY contour: the program could not be run"));
-        notices << QString::fromStdString(evaluation_.programError);
+        notices << diagnosticText(evaluation_.programError);
     } else if (evaluation_.program) {
-        for (const std::string& w : evaluation_.program->warnings)
-            notices << QString::fromStdString(w);
+        for (const auto& w : evaluation_.program->warnings)
+            notices << diagnosticText(w);
         if (polar())
             drawCircularTest();
         else

@@ -3,6 +3,7 @@
 
 #include "ui/plots/plane_grid.h"
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <cmath>
 #include <numbers>
@@ -104,8 +105,8 @@ void NyquistPlot::showCurve(const NyquistCurve& c, const StabilityMargins& margi
     criterion_->setTextColor(
         z == 0 && !c.passesThroughMinusOne ? palette().color(QPalette::WindowText) : colors::error);
     QStringList notes;
-    for (const std::string& w : c.warnings)
-        notes << QString::fromStdString(w);
+    for (const auto& w : c.warnings)
+        notes << diagnosticText(w);
     if (!c.indentations.empty())
         notes << tr("poles on the boundary are passed on small indentations: the curve closes at "
                     "infinity there");

@@ -2,6 +2,7 @@
 #include "ui/plots/parameter_locus_plot.h"
 
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,8 +78,8 @@ void ParameterLocusPlot::showLocus(const ParameterLocus& locus,
     title_->setTextColor(palette().color(QPalette::WindowText));
     hasResult_ = true;
     QStringList warnings;
-    for (const std::string& w : locus.warnings)
-        warnings << QString::fromStdString(w);
+    for (const auto& w : locus.warnings)
+        warnings << diagnosticText(w);
     legend->setVisible(true);
     notice_.setSevere(false);
     showBranches(this, branches_, locus.branches,

@@ -2,6 +2,7 @@
 #include "ui/plots/root_locus_plot.h"
 
 #include "ui/plots/plot_tools.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <cmath>
 
@@ -116,8 +117,8 @@ void RootLocusPlot::showLocus(const RootLocus& locus,
     readout_->setVisible(true);
     legend->setVisible(true);
     QStringList warnings;
-    for (const std::string& w : locus.warnings)
-        warnings << QString::fromStdString(w);
+    for (const auto& w : locus.warnings)
+        warnings << diagnosticText(w);
     if (locus.status != RootLocusStatus::Complete && warnings.isEmpty())
         warnings << tr("the locus is incomplete");
     notice_.setSevere(false);

@@ -170,7 +170,7 @@ void TimeResponsePlot::showAxis(const AxisEvaluation& axis, const QString& axisT
     if (!axis.ok) {
         title_->setText(tr("%1: not simulated (%2: %3)")
                             .arg(axisTitle, QString::fromStdString(axis.errorField),
-                                 QString::fromStdString(axis.error)));
+                                 diagnosticText(axis.error)));
         title_->setTextColor(colors::error);
         for (QCPGraph* g : {reference_, output_, error_, control_, clipUpper_, clipLower_,
                             digitalOutput_, digitalError_, digitalControl_, feedforward_,

@@ -10,6 +10,7 @@
 #include "ui/panels/metrics_panel.h"
 #include "ui/plots/number_text.h"
 #include "ui/report/report_metrics.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QTextDocument>
 #include <QUrl>
@@ -25,6 +26,11 @@ QString coefficientText(double v) {
 
 QString escaped(const std::string& text) {
     return QString::fromStdString(text).toHtmlEscaped();
+}
+
+/// A core warning or reason in the user's language, escaped for HTML.
+QString escapedDiagnostic(const Diagnostic& d) {
+    return diagnosticText(d).toHtmlEscaped();
 }
 
 QString listHtml(const QStringList& items) {
@@ -128,11 +134,12 @@ QString DesignReport::titleBlock(const ReportSource& source) const {
                 source.sessionName.isEmpty() ? tr("(unsaved session)") : source.sessionName);
     for (int i = 0; i < 2; ++i) {
         const AxisSettings& a = session_.axes.at(static_cast<std::size_t>(i));
-        html += row(
-            tr("Axis %1").arg(QString::fromStdString(a.id).toUpper()),
-            tr("%1%2").arg(
-                QString::fromStdString(std::string(designMethodModule(a.method).displayName())),
-                a.label.empty() ? QString() : tr(" (%1)").arg(QString::fromStdString(a.label))));
+        html +=
+            row(tr("Axis %1").arg(QString::fromStdString(a.id).toUpper()),
+                tr("%1%2").arg(coreText("xyt::MethodName",
+                                        std::string(designMethodModule(a.method).displayName())),
+                               a.label.empty() ? QString()
+                                               : tr(" (%1)").arg(QString::fromStdString(a.label))));
     }
     return html + QStringLiteral("</table>");
 }
@@ -147,13 +154,13 @@ QString DesignReport::overview() const {
         html += tr("<p><span style='color:#c62828'>✗</span> The design fails the "
                    "specification:</p>");
         QStringList reasons;
-        for (const std::string& r : advice.reasons)
-            reasons << escaped(r);
+        for (const auto& r : advice.reasons)
+            reasons << escapedDiagnostic(r);
         html += listHtml(reasons);
         if (!advice.changes.empty()) {
             QStringList changes;
-            for (const std::string& c : advice.changes)
-                changes << escaped(c);
+            for (const auto& c : advice.changes)
+                changes << escapedDiagnostic(c);
             html += tr("<p>Limits this design would meet: %1.</p>").arg(changes.join(tr(", ")));
         }
     }
@@ -195,7 +202,7 @@ QString DesignReport::overview() const {
                          .arg(t.gcode.maxAccelMmPerS2)
                          .arg(t.gcode.maxJerkMmPerS3);
     const ImplementationSettings& impl = session_.implementation;
-    QString antiWindup = QString::fromStdString(antiWindupName(impl.antiWindup));
+    QString antiWindup = coreText("xyt::AntiWindup", antiWindupName(impl.antiWindup));
     if (impl.antiWindup == AntiWindup::BackCalculation)
         antiWindup +=
             tr(" (tracking time %1)")
@@ -209,7 +216,7 @@ QString DesignReport::overview() const {
          tr("Actuator limit: |u| ≤ %1 V").arg(session_.umaxVolts),
          tr("Digital PI: Ts = %1 s, %2 discretization; anti-windup %3")
              .arg(session_.controllerTsSeconds)
-             .arg(QString::fromStdString(discretizationName(session_.piDiscretization)),
+             .arg(coreText("xyt::Discretization", discretizationName(session_.piDiscretization)),
                   antiWindup.toHtmlEscaped()),
          tr("Computation delay %1 samples; encoder %2; DAC %3")
              .arg(impl.delaySamples)
@@ -251,7 +258,7 @@ QString DesignReport::plantHtml(int axis) const {
             lines << tr("A = %1").arg(zInverseHtml(Polynomial::fromAscending(a.pp.a)));
             lines << tr("B = %1").arg(zInverseHtml(Polynomial::fromAscending(a.pp.b)));
         } catch (const InvalidInput& ex) {
-            lines << tr("not a valid model: %1").arg(QString::fromUtf8(ex.what()).toHtmlEscaped());
+            lines << tr("not a valid model: %1").arg(exceptionText(ex).toHtmlEscaped());
         }
     } else {
         const ThirdOrderPlant& p = a.gt.plant;
@@ -276,7 +283,7 @@ QString DesignReport::plantHtml(int axis) const {
             lines << tr("as every run and analysis sees it: G(s) = (%1) / (%2)")
                          .arg(polynomialHtml(g.num(), "s"), polynomialHtml(g.den(), "s"));
         } catch (const InvalidInput& ex) {
-            lines << tr("not a valid plant: %1").arg(QString::fromUtf8(ex.what()).toHtmlEscaped());
+            lines << tr("not a valid plant: %1").arg(exceptionText(ex).toHtmlEscaped());
         }
     }
     if (a.origin) {
@@ -312,7 +319,7 @@ QString DesignReport::designHtml(int axis) const {
     const DesignMethodModule& module = designMethodModule(a.method);
     QString html =
         tr("<h3>Design: %1</h3>")
-            .arg(QString::fromStdString(std::string(module.displayName())).toHtmlEscaped());
+            .arg(coreText("xyt::MethodName", std::string(module.displayName())).toHtmlEscaped());
     QStringList settings;
     if (a.method == DesignMethod::GuilleminTruxal) {
         settings << tr("ω<sub>n</sub> = %1 rad/s").arg(coefficientText(a.gt.omegaNRadPerSec))
@@ -326,18 +333,18 @@ QString DesignReport::designHtml(int axis) const {
     for (const MethodParameter& p : module.parameters()) {
         try {
             settings << tr("%1 = %2 %3")
-                            .arg(QString::fromStdString(p.label).toHtmlEscaped(),
+                            .arg(coreText("xyt::ParameterLabel", p.label).toHtmlEscaped(),
                                  coefficientText(methodParameterValue(a, axis, p)),
                                  QString::fromStdString(p.unit).toHtmlEscaped());
         } catch (const InvalidInput& ex) {
-            settings << QString::fromUtf8(ex.what()).toHtmlEscaped();
+            settings << exceptionText(ex).toHtmlEscaped();
         }
     }
     if (!settings.isEmpty())
         html += tr("<p>Settings: %1</p>").arg(settings.join(tr("; ")));
     if (!e.ok)
-        return html +
-               tr("<p><b>No design</b>: %1: %2</p>").arg(escaped(e.errorField), escaped(e.error));
+        return html + tr("<p><b>No design</b>: %1: %2</p>")
+                          .arg(escaped(e.errorField), escapedDiagnostic(e.error));
     const std::vector<DesignCoefficient> coefficients = module.coefficients(e);
     if (!coefficients.empty()) {
         html += tr("<p>Coefficients of the design:</p>");
@@ -371,7 +378,8 @@ QString DesignReport::controllerHtml(int axis) const {
             const DigitalController c = axisDigitalController(session_, evaluation_, axis, options);
             digital << tr("digital PI at T<sub>s</sub> = %1 s (%2): C(z) = (%3) / (%4)")
                            .arg(coefficientText(c.tsSeconds),
-                                QString::fromStdString(discretizationName(options.piMethod)),
+                                coreText("xyt::Discretization",
+                                         discretizationName(options.piMethod)),
                                 zInverseHtml(Polynomial::fromAscending(c.num)),
                                 zInverseHtml(Polynomial::fromAscending(c.den)));
             digital << tr("difference equation: %1, e = r − y").arg(differenceEquationHtml(c));
@@ -391,8 +399,7 @@ QString DesignReport::controllerHtml(int axis) const {
                                 coefficientText(b.a2));
             }
         } catch (const InvalidInput& ex) {
-            digital << tr("no digital controller: %1")
-                           .arg(QString::fromUtf8(ex.what()).toHtmlEscaped());
+            digital << tr("no digital controller: %1").arg(exceptionText(ex).toHtmlEscaped());
         }
     } else if (e.pp) {
         digital << tr("the RST law above runs as designed, at T<sub>s</sub> = %1 s")
@@ -414,9 +421,9 @@ QString DesignReport::warningsHtml(int axis) const {
     const AxisEvaluation& e = evaluation_.axes.at(static_cast<std::size_t>(axis));
     QStringList warnings;
     if (!e.ok)
-        warnings << tr("no design: %1: %2").arg(escaped(e.errorField), escaped(e.error));
-    for (const std::string& w : e.warnings)
-        warnings << escaped(w);
+        warnings << tr("no design: %1: %2").arg(escaped(e.errorField), escapedDiagnostic(e.error));
+    for (const auto& w : e.warnings)
+        warnings << escapedDiagnostic(w);
     if (warnings.isEmpty())
         return tr("<h3>Warnings</h3><p>None.</p>");
     return tr("<h3>Warnings</h3>") + listHtml(warnings);

@@ -10,6 +10,7 @@
 #include "ui/plots/root_locus_plot.h"
 #include "ui/plots/step_plot.h"
 #include "ui/plots/time_response_plot.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QCoreApplication>
 #include <QPixmap>
@@ -61,7 +62,7 @@ QString reportAxisTitle(const AxisSettings& a) {
 
 QString noDesignText(const AxisEvaluation& e) {
     return QCoreApplication::translate("xyt::ui::ReportFigures", "No design: %1: %2")
-        .arg(QString::fromStdString(e.errorField), QString::fromStdString(e.error));
+        .arg(QString::fromStdString(e.errorField), diagnosticText(e.error));
 }
 
 // The four plots of an axis, each fed as its view feeds it (ui/views/*_view.cpp), from the
@@ -113,7 +114,7 @@ ReportFigure bodeFigure(const Session& s, const AxisEvaluation& e, int axis) {
             if (!f.ok) {
                 plot.showNoResult(title, QCoreApplication::translate("xyt::ui::ReportFigures",
                                                                      "No frequency analysis: %1")
-                                             .arg(QString::fromStdString(f.error)));
+                                             .arg(diagnosticText(f.error)));
                 return;
             }
             plot.showAnalysis(f, a.method != DesignMethod::PolePlacementZpetc || a.pp.zpetcEnabled,
@@ -148,7 +149,7 @@ ReportFigure stepFigure(const Session& s, const AxisEvaluation& e, int axis) {
             } catch (const std::exception& ex) {
                 plot.showNoResult(title, QCoreApplication::translate("xyt::ui::ReportFigures",
                                                                      "No step response: %1")
-                                             .arg(QString::fromUtf8(ex.what())));
+                                             .arg(exceptionText(ex)));
             }
         },
         StepPlot::readoutHint());

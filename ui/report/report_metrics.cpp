@@ -2,6 +2,7 @@
 #include "ui/report/report_metrics.h"
 
 #include "ui/panels/metrics_panel.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QStringList>
 
@@ -53,7 +54,7 @@ QString ReportMetrics::tableHtml(const Session& session, int axis, const AxisEva
     if (!a.ok)
         return tr("<p>No figures: the axis has no design (%1: %2).</p>")
             .arg(QString::fromStdString(a.errorField).toHtmlEscaped(),
-                 QString::fromStdString(a.error).toHtmlEscaped());
+                 diagnosticText(a.error).toHtmlEscaped());
     const Specification& spec = session.spec;
     const SpecificationCheck& d = a.designCheck;
     const std::optional<SpecificationCheck>& im = a.implementationCheck;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/report/report_writer.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QPageLayout>
 #include <QPageSize>
@@ -23,9 +24,9 @@ bool ReportWriter::write(const Session& session, const QString& sessionName, con
     const SessionEvaluation evaluation = evaluateSession(session);
     for (const AxisEvaluation& axis : evaluation.axes)
         if (axis.runRefused) // no figure of such a session means anything (AxisEvaluation)
-            return fail(tr("No report: the session's run is refused: %1: %2")
-                            .arg(QString::fromStdString(axis.errorField),
-                                 QString::fromStdString(axis.error)));
+            return fail(
+                tr("No report: the session's run is refused: %1: %2")
+                    .arg(QString::fromStdString(axis.errorField), diagnosticText(axis.error)));
     const DesignReport report(session, evaluation, {sessionName, QDateTime::currentDateTime()},
                               progress);
     {

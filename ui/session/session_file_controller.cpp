@@ -5,6 +5,7 @@
 #include "core/session/export_text.h"
 #include "ui/files/coefficient_json.h"
 #include "ui/files/session_file.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QFileDialog>
@@ -18,7 +19,16 @@ namespace xyt::ui {
 
 namespace {
 constexpr int kMaxRecent = 8;
+
+/// Why a session file was refused: the core's coded reason in the user's language (the file
+/// format's own messages in English), with its JSON path.
+QString loadErrorText(const files::SessionLoadResult& r) {
+    if (!r.errorDiagnostic.coded())
+        return r.message();
+    const QString reason = diagnosticText(r.errorDiagnostic);
+    return r.errorPath.isEmpty() ? reason : r.errorPath + QStringLiteral(": ") + reason;
 }
+} // namespace
 
 SessionFileController::SessionFileController(TuningSession* session, QWidget* window)
     : QObject(window), session_(session), window_(window) {}
@@ -94,7 +104,7 @@ bool SessionFileController::openFile(const QString& path) {
     if (!r.ok) {
         QMessageBox::warning(window_, tr("Open session"),
                              tr("%1 could not be opened; the current design is unchanged.\n\n%2")
-                                 .arg(QFileInfo(path).fileName(), r.message()));
+                                 .arg(QFileInfo(path).fileName(), loadErrorText(r)));
         return false;
     }
     session_->reset(r.session);
@@ -149,7 +159,7 @@ bool SessionFileController::exportTo(const QString& format, const QString& path)
         else
             bytes = QByteArray::fromStdString(exportCsv(s, e));
     } catch (const InvalidInput& e) {
-        QMessageBox::warning(window_, tr("Export"), QString::fromStdString(e.what()));
+        QMessageBox::warning(window_, tr("Export"), exceptionText(e));
         return false;
     }
     QString error;

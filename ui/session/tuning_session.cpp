@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/session/tuning_session.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/design_method_module.h"
 #include "core/session/pid_feedforward_method.h"
+#include "ui/session/diagnostic_text.h"
 
 #include <QLocale>
 #include <QUndoCommand>
@@ -110,8 +112,7 @@ bool TuningSession::isCurrent(const ResultStamp& stamp) const {
 }
 
 QString methodDisplayName(DesignMethod method) {
-    const std::string_view name = designMethodModule(method).displayName();
-    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    return coreText("xyt::MethodName", std::string(designMethodModule(method).displayName()));
 }
 
 namespace {
@@ -344,7 +345,8 @@ const ParameterLocus& TuningSession::parameterLocus(int axis, GtSweptParameter p
                                                                             : gt.omegaNRadPerSec);
         } catch (const InvalidInput& e) {
             cached = ParameterLocus{};
-            cached->warnings.push_back(e.what());
+            cached->warnings.emplace_back(
+                makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()}));
         }
     }
     return *cached;
@@ -391,7 +393,7 @@ QString TuningSession::moveControllerZero(int axis, std::complex<double> from,
         return tr("Only a PID + feedforward axis has zeros of its own to drag.");
     const PidFeedbackGains g = pidGainsWithMovedZero(pidFeedforwardDesign(e), from, to);
     if (!g.ok)
-        return QString::fromStdString(g.reason);
+        return diagnosticText(g.reason);
     Session next = session_;
     auto& parameters = next.axes.at(static_cast<std::size_t>(axis)).parameters;
     parameters["p"] = g.p;

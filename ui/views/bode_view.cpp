@@ -5,6 +5,7 @@
 #include "core/session/continuous_plant_method.h"
 #include "core/session/design_method_module.h"
 #include "ui/plots/bode_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 namespace xyt::ui {
@@ -26,8 +27,7 @@ void BodeView::draw() {
     }
     const AxisFrequencyAnalysis& f = session()->frequencyAnalysis(axis);
     if (!f.ok) {
-        plot_->showNoResult(title,
-                            tr("No frequency analysis: %1").arg(QString::fromStdString(f.error)));
+        plot_->showNoResult(title, tr("No frequency analysis: %1").arg(diagnosticText(f.error)));
         return;
     }
     // The feedforward's curve unless the axis has it switched off (pole placement's ZPETC).

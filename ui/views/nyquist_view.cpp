@@ -2,6 +2,7 @@
 #include "ui/views/nyquist_view.h"
 
 #include "ui/plots/nyquist_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 namespace xyt::ui {
@@ -19,7 +20,7 @@ void NyquistView::draw() {
     const AxisFrequencyAnalysis& f = session()->frequencyAnalysis(axis);
     if (!f.ok) {
         plot_->showNoResult(tr("Nyquist diagram of %1").arg(axisTitle()),
-                            tr("No frequency analysis: %1").arg(QString::fromStdString(f.error)));
+                            tr("No frequency analysis: %1").arg(diagnosticText(f.error)));
         return;
     }
     plot_->showCurve(f.nyquist, f.margins,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/views/presenter_view.h"
 
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 #include <QWidget>
@@ -44,7 +45,7 @@ QStringList PresenterView::liveNotices() const {
 
 QString PresenterView::noDesignReason(const AxisEvaluation& axis) {
     return tr("No design: %1: %2")
-        .arg(QString::fromStdString(axis.errorField), QString::fromStdString(axis.error));
+        .arg(QString::fromStdString(axis.errorField), diagnosticText(axis.error));
 }
 
 } // namespace xyt::ui

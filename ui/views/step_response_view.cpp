@@ -3,6 +3,7 @@
 
 #include "core/simulation/step_view.h"
 #include "ui/plots/step_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 namespace xyt::ui {
@@ -26,7 +27,7 @@ void StepResponseView::draw() {
                      pp ? &*e.pp : nullptr, pp ? &*e.zpetc : nullptr, pp && a.pp.zpetcEnabled),
             title);
     } catch (const std::exception& ex) {
-        plot_->showNoResult(title, tr("No step response: %1").arg(QString::fromUtf8(ex.what())));
+        plot_->showNoResult(title, tr("No step response: %1").arg(exceptionText(ex)));
     }
 }
 

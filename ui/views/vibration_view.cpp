@@ -5,6 +5,7 @@
 #include "core/session/axis_vibration.h"
 #include "ui/plots/number_text.h"
 #include "ui/plots/vibration_plot.h"
+#include "ui/session/diagnostic_text.h"
 #include "ui/session/tuning_session.h"
 
 namespace xyt::ui {
@@ -19,7 +20,7 @@ void VibrationView::draw() {
     const QString title = tr("Vibration of %1").arg(axisTitle());
     const AxisVibration v = analyzeAxisVibration(session()->session(), axis);
     if (!v.ok) {
-        plot_->showNoResult(title, QString::fromStdString(v.error));
+        plot_->showNoResult(title, diagnosticText(v.error));
         return;
     }
     QString summary;
