@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/analysis/coupled_line_loop.h"
+#include "core/model/diagnostic.h"
 
 #include <cstddef>
 #include <string>
@@ -38,7 +39,7 @@ struct CouplingStability {
     std::size_t frozenDirections = 0;
     std::size_t unboundedFrozenDirections = 0;
     /// The arcs' warning ("" when none).
-    std::string warning;
+    Diagnostic warning;
 };
 
 /**

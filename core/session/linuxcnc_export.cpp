@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/linuxcnc_export.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/session/friction_export.h"
 
 #include "core/model/errors.h"
@@ -53,10 +54,10 @@ std::string exportLinuxCnc(const Session& session, const SessionEvaluation& eval
         if (axis.method != DesignMethod::GuilleminTruxal &&
             axis.method != DesignMethod::PidFeedforward)
             throw InvalidInput(axisFieldPath(index, "method"),
-                               "a " + std::string(designMethodModule(axis.method).displayName()) +
-                                   " axis has no LinuxCNC pid equivalent");
+                               makeDiagnostic("session_no_linuxcnc_pid",
+                                              {std::string(designMethodModule(axis.method).displayName())}));
         if (!a.ok)
-            throw InvalidInput(a.errorField, a.error);
+            throw InvalidInput(a.errorField, Diagnostic(a.error)); // its coded reason
         if (feedforwardFromModel || axis.method == DesignMethod::GuilleminTruxal) {
             const AxisSettings withFf = withModelFeedforward(axis, index);
             axis = withFf;

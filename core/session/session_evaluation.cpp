@@ -44,7 +44,7 @@ std::optional<InputShaper> trajectoryShaper(const TrajectorySettings& trajectory
     try {
         shaper = designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
     } catch (const InvalidInput& e) {
-        throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+        throw InvalidInput("trajectory.shaping." + e.field(), e.reasonDiagnostic());
     }
     double move = 0.0;
     if (trajectory.kind == TrajectoryKind::Cubic)
@@ -52,11 +52,10 @@ std::optional<InputShaper> trajectoryShaper(const TrajectorySettings& trajectory
     else if (trajectory.kind == TrajectoryKind::Gcode)
         move = trajectory.effectiveDurationSeconds() - shaper.duration();
     if (move > 0.0 && shaper.duration() > move)
-        throw InvalidInput(
-            "trajectory.shaping.frequency",
-            std::string("the ") + shaperName(s.type) + " shaper at " + formatNumber(s.frequencyHz) +
-                " Hz lasts " + formatNumber(shaper.duration()) + " s, longer than the move of " +
-                formatNumber(move) + " s: raise the frequency or shorten the shaper");
+        throw InvalidInput("trajectory.shaping.frequency",
+                           makeDiagnostic("session_shaper_longer_than_move",
+                                          {shaperName(s.type), formatNumber(s.frequencyHz),
+                                           formatNumber(shaper.duration()), formatNumber(move)}));
     return shaper;
 }
 
@@ -106,7 +105,7 @@ std::function<double(double)> unshapedAxisReference(const TrajectorySettings& tr
             return [cubic](double t) { return cubic.position(t); };
         }
     } catch (const InvalidInput& e) {
-        throw InvalidInput("trajectory.cubic." + e.field(), e.reason());
+        throw InvalidInput("trajectory.cubic." + e.field(), e.reasonDiagnostic());
     }
     try {
         requirePositive(trajectory.radius, "radius");
@@ -118,7 +117,7 @@ std::function<double(double)> unshapedAxisReference(const TrajectorySettings& tr
         s.validate();
         return [s](double t) { return s.value(t); };
     } catch (const InvalidInput& e) {
-        throw InvalidInput("trajectory.circle." + e.field(), e.reason());
+        throw InvalidInput("trajectory.circle." + e.field(), e.reasonDiagnostic());
     }
 }
 
@@ -182,10 +181,10 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     } catch (const InvalidInput& e) {
         const std::string axis = "axes[" + std::to_string(axisIndex) + "].gt.";
         if (e.field() == "wn" || e.field() == "kp")
-            throw InvalidInput(axis + e.field(), e.reason());
+            throw InvalidInput(axis + e.field(), e.reasonDiagnostic());
         if (e.field() == "k0" || e.field() == "a1" ||
             e.field() == "a2") // the session file's plant object
-            throw InvalidInput(axis + "plant." + e.field(), e.reason());
+            throw InvalidInput(axis + "plant." + e.field(), e.reasonDiagnostic());
         throw;
     }
     if (!gt.flexibleMode.present() && !gt.notch.present())
@@ -230,9 +229,9 @@ DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design, int a
         return pi;
     } catch (const InvalidInput& e) {
         if (e.field() == "ts")
-            throw InvalidInput("controller_ts", e.reason());
+            throw InvalidInput("controller_ts", e.reasonDiagnostic());
         if (e.field() == "tracking_time")
-            throw InvalidInput("implementation.tracking_time", e.reason());
+            throw InvalidInput("implementation.tracking_time", e.reasonDiagnostic());
         throw;
     }
 }
@@ -256,7 +255,7 @@ SampledDataOptions sessionSampledDataOptions(const Session& session) {
         validateSampledDataOptions(o);
     } catch (const InvalidInput& e) {
         throw InvalidInput(e.field() == "umax" ? "umax" : "implementation." + e.field(),
-                           e.reason());
+                           e.reasonDiagnostic());
     }
     return o;
 }
@@ -264,23 +263,24 @@ SampledDataOptions sessionSampledDataOptions(const Session& session) {
 namespace {
 
 /// Says which criteria the design passes but its digital implementation fails, if any.
-std::optional<std::string> implementationVerdictWarning(const SpecificationCheck& design,
-                                                        const SpecificationCheck& implementation) {
-    std::vector<std::string> failed;
+std::optional<Diagnostic> implementationVerdictWarning(const SpecificationCheck& design,
+                                                       const SpecificationCheck& implementation) {
+    std::vector<Diagnostic> failed;
     if (design.trackingError && !implementation.trackingError)
-        failed.push_back("the tracking error");
+        failed.push_back(makeDiagnostic("session_criterion_tracking_error"));
     if (design.noSaturation && !implementation.noSaturation)
-        failed.push_back("the actuator limit");
+        failed.push_back(makeDiagnostic("session_criterion_actuator_limit"));
     if (design.settleApplies && design.settle && !implementation.settle)
-        failed.push_back("the settle after the move");
+        failed.push_back(makeDiagnostic("session_criterion_settle"));
     if (failed.empty())
         return std::nullopt;
-    std::string list;
-    for (std::size_t i = 0; i < failed.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == failed.size() ? " and " : ", ") + failed[i];
-    return "the design meets " + list +
-           ", its digital implementation does not: the verdict is the "
-           "implementation's";
+    // "a", "a and b", "a, b and c"
+    Diagnostic list = failed.back();
+    if (failed.size() > 1) {
+        failed.pop_back();
+        list = makeDiagnostic("session_list_and", {joinDiagnostics(failed, "list_comma"), list});
+    }
+    return makeDiagnostic("session_implementation_fails", {list});
 }
 
 } // namespace
@@ -313,13 +313,16 @@ namespace {
 
 /// The stick-slip and hunting findings of the runs of a table with dry friction.
 void addStickSlipWarnings(AxisEvaluation& out) {
+    // The findings come from core/simulation, each kept as it comes; the digital run's are
+    // prefixed here.
     if (const auto f = stickSlipFindings(out.run))
-        for (std::string& w : stickSlipWarnings(*f))
-            out.warnings.push_back(std::move(w));
+        for (auto& w : stickSlipWarnings(*f))
+            out.warnings.push_back(Diagnostic(std::move(w)));
     if (out.digital)
         if (const auto f = stickSlipFindings(out.digital->run.result))
-            for (std::string& w : stickSlipWarnings(*f, "the digital implementation: "))
-                out.warnings.push_back(std::move(w));
+            for (auto& w : stickSlipWarnings(*f))
+                out.warnings.push_back(
+                    makeDiagnostic("session_digital_implementation_finding", {std::move(w)}));
 }
 
 /// evaluateAxis over a given duration.
@@ -415,7 +418,7 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 out.moveSettle = moveSettleMetrics(out.run, {t.x0, t.xf, t.tfSeconds},
                                                    session.spec.inPositionWindowMm);
             } catch (const InvalidInput& e) {
-                throw InvalidInput("specification." + e.field(), e.reason());
+                throw InvalidInput("specification." + e.field(), e.reasonDiagnostic());
             }
             if (!out.moveSettle->reachedMoveEnd)
                 out.warnings.push_back(makeDiagnostic("run_ends_before_move"));
@@ -426,7 +429,9 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 if (const std::optional<LoopTransferFunctions> loop = axisLoop(out))
                     out.margins = stabilityMargins(loop->openLoop);
             } catch (const InvalidInput& e) {
-                out.warnings.push_back(makeDiagnostic("no_stability_margins", {e.what()}));
+                out.warnings.push_back(makeDiagnostic(
+                    "no_stability_margins",
+                    {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
             }
         }
         std::optional<LoopMarginFigures> margins;
@@ -440,15 +445,15 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             out.implementationCheck = checkSpecification(spec, out.digital->metrics, out.step,
                                                          out.digital->moveSettle, margins);
             out.check = bothPass(out.designCheck, *out.implementationCheck);
-            if (const auto w =
+            if (const auto verdictDiagnostic =
                     implementationVerdictWarning(out.designCheck, *out.implementationCheck))
-                out.warnings.push_back(*w);
+                out.warnings.push_back(*verdictDiagnostic);
         }
         out.ok = true;
     } catch (const InvalidInput& e) {
         out.ok = false;
         out.errorField = e.field();
-        out.error = e.reason();
+        out.error = e.reasonDiagnostic();
         out.runRefused = dynamic_cast<const RunRefused*>(&e) != nullptr;
     }
     return out;
@@ -566,9 +571,9 @@ SessionEvaluation evaluateSession(const Session& session) {
             // The path of the shared program itself (aliasing it), not a copy per evaluation.
             out.programPath = std::shared_ptr<const Path>(program, &program->path);
         } catch (const InvalidInput& e) {
-            out.programError = e.what();
+            out.programError = makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
             if (e.field().rfind("cross_coupling", 0) == 0)
-                out.couplingError = e.what();
+                out.couplingError = out.programError;
         }
     }
     if (session.crossCoupling.active() && session.trajectory.kind != TrajectoryKind::Gcode &&
@@ -577,7 +582,8 @@ SessionEvaluation evaluateSession(const Session& session) {
             out.coupledTrajectory = std::make_shared<const CoupledTrajectoryRun>(
                 runCoupledTrajectory(session, x.run, y.run));
         } catch (const InvalidInput& e) {
-            out.couplingError = e.what();
+            out.couplingError =
+                makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
         }
     }
     return out;

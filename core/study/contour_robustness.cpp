@@ -78,7 +78,7 @@ void validate(const ContourRobustnessProblem& p) {
         try {
             validateRobustnessProblem(*axis);
         } catch (const InvalidInput& e) {
-            throw InvalidInput(prefixed(e.field(), name), e.reason());
+            throw InvalidInput(prefixed(e.field(), name), e.reasonDiagnostic());
         }
     }
     const ContourGeometry& g = p.geometry;
