@@ -69,7 +69,7 @@ std::vector<double> parseCoefficientList(std::string_view text, const std::strin
             ++j;
         if (values.size() == kMaxCoefficients)
             throw InvalidInput(field, makeDiagnostic("model_too_many_coefficients",
-                                                      {std::to_string(kMaxCoefficients)}));
+                                                     {std::to_string(kMaxCoefficients)}));
         values.push_back(
             parseNumber(text.substr(i, j - i), field + "[" + std::to_string(values.size()) + "]"));
         i = j;

@@ -22,8 +22,7 @@ void validateFlexibleMode(const FlexibleMode& mode, const std::string& prefix) {
         throw InvalidInput(prefix + "anti_resonance",
                            makeDiagnostic("model_anti_resonance_frequency"));
     if (mode.present() && mode.twoMass() && mode.antiResonanceHz >= mode.frequencyHz)
-        throw InvalidInput(prefix + "anti_resonance",
-                           makeDiagnostic("model_anti_resonance_below"));
+        throw InvalidInput(prefix + "anti_resonance", makeDiagnostic("model_anti_resonance_below"));
     requireDampingRatio(mode.antiResonanceDamping, prefix + "anti_resonance_damping");
 }
 

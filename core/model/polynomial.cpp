@@ -105,7 +105,8 @@ Polynomial Polynomial::monic() const {
 
 Polynomial Polynomial::reversed(int n) const {
     if (n < degree())
-        throw InvalidInput("n", makeDiagnostic("model_at_least_degree", {std::to_string(degree())}));
+        throw InvalidInput("n",
+                           makeDiagnostic("model_at_least_degree", {std::to_string(degree())}));
     std::vector<double> r(static_cast<std::size_t>(n) + 1, 0.0);
     for (std::size_t i = 0; i < c_.size(); ++i)
         r[static_cast<std::size_t>(n) - i] = c_[i];

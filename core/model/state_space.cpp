@@ -88,8 +88,8 @@ FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
     // as crash-stiff-discretization) makes the scaling and squaring of exp() overflow on the way
     // (transient growth of a non-normal matrix) although the exact result is finite.
     if (!e.allFinite())
-        throw InvalidInput("ts", makeDiagnostic("model_discretization_overflows",
-                                                      {formatNumber(tsSeconds)}));
+        throw InvalidInput(
+            "ts", makeDiagnostic("model_discretization_overflows", {formatNumber(tsSeconds)}));
     // The same loss can stay finite: a plant with k0 = 4e12 and a pole at -5e8 (fuzz_design,
     // crash-stiff-loop) gave a step matrix with eigenvalues of 1e38 for a stable A, whose run
     // then overflowed. By the spectral mapping theorem the eigenvalues of e^{A Ts} are
@@ -105,8 +105,8 @@ FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
         const double expected = std::exp(alpha * tsSeconds);
         if (std::isfinite(expected) && !(std::abs(rho - expected) <= 1e-3 * expected + 1e-3))
             throw InvalidInput("ts", makeDiagnostic("model_discretization_loses_precision",
-                                                     {formatNumber(tsSeconds), formatNumber(rho, 3),
-                                                      formatNumber(expected, 3)}));
+                                                    {formatNumber(tsSeconds), formatNumber(rho, 3),
+                                                     formatNumber(expected, 3)}));
     }
     return foh;
 }

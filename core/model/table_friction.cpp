@@ -40,11 +40,9 @@ void validateTableFriction(const TableFriction& f, const std::string& prefix) {
     requireNonNegative(f.backlashMm, prefix + "backlash");
     requireNonNegative(f.amplifierDeadbandVolts, prefix + "amplifier_deadband");
     if (f.staticVolts != 0.0 && f.staticVolts < f.coulombVolts)
-        throw InvalidInput(prefix + "static",
-                           makeDiagnostic("model_static_below_coulomb"));
+        throw InvalidInput(prefix + "static", makeDiagnostic("model_static_below_coulomb"));
     if (f.staticVolts > f.coulombVolts && !(f.stribeckVelocityMmPerS > 0.0))
-        throw InvalidInput(prefix + "stribeck_velocity",
-                           makeDiagnostic("model_stribeck_velocity"));
+        throw InvalidInput(prefix + "stribeck_velocity", makeDiagnostic("model_stribeck_velocity"));
 }
 
 void validateFrictionCompensation(const FrictionCompensation& c, const std::string& prefix) {

@@ -158,8 +158,9 @@ std::vector<double> programAtPeriod(const std::vector<double>& t,
                                     const std::string& field, std::size_t lead) {
     const double steps = std::floor(t.back() / periodSeconds + 1e-9);
     if (!(steps >= 1.0))
-        throw InvalidInput(field, makeDiagnostic("session_period_longer_than_run",
-                                                 {formatNumber(periodSeconds), formatNumber(t.back())}));
+        throw InvalidInput(field,
+                           makeDiagnostic("session_period_longer_than_run",
+                                          {formatNumber(periodSeconds), formatNumber(t.back())}));
     if (steps + 1.0 + static_cast<double>(lead) > static_cast<double>(sampleLimit()))
         throw InvalidInput(field, makeDiagnostic("session_too_many_samples"));
     std::vector<double> times(static_cast<std::size_t>(steps) + 1 + lead);

@@ -29,10 +29,9 @@ void requireInPrecision(double v, const std::string& field, const std::string& c
         throw InvalidInput(field, makeDiagnostic("session_float_overflow",
                                                  {exactNumber(v), constant, exactNumber(FLT_MAX)}));
     if (v != 0.0 && static_cast<float>(v) == 0.0f)
-        throw InvalidInput(field,
-                           makeDiagnostic("session_float_underflow",
-                                          {exactNumber(v), constant,
-                                           exactNumber(static_cast<double>(FLT_TRUE_MIN))}));
+        throw InvalidInput(field, makeDiagnostic("session_float_underflow",
+                                                 {exactNumber(v), constant,
+                                                  exactNumber(static_cast<double>(FLT_TRUE_MIN))}));
 }
 
 std::string realNum(double v, const std::string& field, const std::string& constant,

@@ -212,7 +212,8 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
             } else if (segment.length() > 0.0 && !program.segments[i].rapid) {
                 const Point2 d = segment.end() - segment.start();
                 lines.push_back({std::atan2(d.y, d.x),
-                                 "program line " + std::to_string(program.segments[i].line)});
+                                 makeDiagnostic("session_program_line",
+                                                {std::to_string(program.segments[i].line)})});
             }
         }
         out.couplingStability =

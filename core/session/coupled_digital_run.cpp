@@ -27,10 +27,10 @@ DigitalContourRun runDigitalProgramContour(const Session& session, const GcodePr
                 .steppedDigitalPath(session, i, p.t, i == 0 ? p.x : p.y);
     const double period = loops[0]->periodSeconds();
     if (std::abs(period - loops[1]->periodSeconds()) > 1e-9 * period)
-        throw InvalidInput("cross_coupling",
-                           makeDiagnostic("session_coupling_one_digital_period",
-                                          {formatNumber(period),
-                                           formatNumber(loops[1]->periodSeconds())}));
+        throw InvalidInput(
+            "cross_coupling",
+            makeDiagnostic("session_coupling_one_digital_period",
+                           {formatNumber(period), formatNumber(loops[1]->periodSeconds())}));
     const std::size_t n = std::min(loops[0]->samples(), loops[1]->samples());
     if (loops[0]->samples() != loops[1]->samples())
         throw InvalidInput("cross_coupling", makeDiagnostic("session_digital_runs_samples"));

@@ -118,8 +118,8 @@ CoupledTrajectoryRun runCoupledTrajectory(const Session& session, const Simulati
     const bool circle = session.trajectory.kind == TrajectoryKind::Circle;
     std::vector<CoupledLine> lines;
     if (!circle && !x.r.empty())
-        lines.push_back(
-            {std::atan2(y.r.back() - y.r.front(), x.r.back() - x.r.front()), "the move"});
+        lines.push_back({std::atan2(y.r.back() - y.r.front(), x.r.back() - x.r.front()),
+                         makeDiagnostic("session_the_move")});
     out.stability = checkCouplingStability(session, x.dtSeconds, lines, circle);
     out.t = x.t;
     out.referenceX = x.r;

@@ -38,9 +38,8 @@ CouplingStability checkCouplingStability(const Session& session, double periodSe
                 .couplingModel(session, i, periodSeconds);
     const double tx = models[0].periodSeconds, ty = models[1].periodSeconds;
     if (std::abs(tx - ty) > 1e-9 * std::max(tx, ty))
-        throw InvalidInput("cross_coupling",
-                           makeDiagnostic("session_coupling_one_period_why",
-                                          {formatNumber(tx), formatNumber(ty)}));
+        throw InvalidInput("cross_coupling", makeDiagnostic("session_coupling_one_period_why",
+                                                            {formatNumber(tx), formatNumber(ty)}));
     models[1].periodSeconds = tx; // equal to round-off: one period for the analysis
     CouplingStability out;
     out.periodSeconds = tx;
@@ -92,10 +91,10 @@ CouplingStability checkCouplingStability(const Session& session, double periodSe
             any = true;
         }
         if (out.unboundedFrozenDirections > 0)
-            out.warning = makeDiagnostic(
-                "session_coupling_frozen_unstable",
-                {std::to_string(out.unboundedFrozenDirections), std::to_string(kDirections),
-                 formatNumber(worstFrozen, 6), degrees(worstFrozenTheta)});
+            out.warning = makeDiagnostic("session_coupling_frozen_unstable",
+                                         {std::to_string(out.unboundedFrozenDirections),
+                                          std::to_string(kDirections), formatNumber(worstFrozen, 6),
+                                          degrees(worstFrozenTheta)});
     }
     if (any) // the margins of the worst direction
         out.worst = loopAt(out.worstThetaRad, true);

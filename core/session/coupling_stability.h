@@ -15,7 +15,7 @@ struct Session;
 /// One straight stretch of a path the coupled loop runs along: its direction and where it is.
 struct CoupledLine {
     double thetaRad = 0.0;
-    std::string where; ///< "program line 12", "the move"
+    Diagnostic where; ///< "program line 12", "the move"
 };
 
 /**

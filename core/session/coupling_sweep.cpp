@@ -26,8 +26,8 @@ CouplingSweepGrid normalizedCouplingSweepGrid(CouplingSweepGrid grid) {
             throw InvalidInput(field, makeDiagnostic("session_needs_one_value"));
         for (double v : *list)
             if (!std::isfinite(v) || v < 0.0)
-                throw InvalidInput(
-                    field, makeDiagnostic("session_not_a_finite_gain", {formatNumber(v)}));
+                throw InvalidInput(field,
+                                   makeDiagnostic("session_not_a_finite_gain", {formatNumber(v)}));
         std::sort(list->begin(), list->end());
         list->erase(std::unique(list->begin(), list->end()), list->end());
     }

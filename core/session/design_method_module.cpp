@@ -52,29 +52,29 @@ std::string coefficientText(const DesignCoefficient& c) {
 std::unique_ptr<SteppedLoop> DesignMethodModule::steppedPath(
     const Session& /*session*/, int /*axisIndex*/, const std::vector<double>& /*t*/,
     const std::vector<double>& /*reference*/, double /*dtSeconds*/) const {
-    throw InvalidInput("cross_coupling",
-                       makeDiagnostic("session_method_takes_no_coupling", {std::string(displayName())}));
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 SampledAxisModel DesignMethodModule::couplingModel(const Session& /*session*/, int /*axisIndex*/,
                                                    double /*periodSeconds*/) const {
-    throw InvalidInput("cross_coupling",
-                       makeDiagnostic("session_method_takes_no_coupling", {std::string(displayName())}));
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 std::unique_ptr<SampledLoopStepper>
 DesignMethodModule::steppedDigitalPath(const Session& /*session*/, int /*axisIndex*/,
                                        const std::vector<double>& /*t*/,
                                        const std::vector<double>& /*reference*/) const {
-    throw InvalidInput("cross_coupling",
-                       makeDiagnostic("session_method_takes_no_coupling", {std::string(displayName())}));
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 std::string DesignMethodModule::cCoupledAxis(const Session& /*session*/,
                                              const AxisEvaluation& /*axis*/,
                                              int /*axisIndex*/) const {
-    throw InvalidInput("cross_coupling",
-                       makeDiagnostic("session_method_takes_no_coupling", {std::string(displayName())}));
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*settings*/,
@@ -128,7 +128,8 @@ void registerDesignMethodModule(std::unique_ptr<const DesignMethodModule> module
     for (const MethodParameter& p : module->parameters())
         if (!isMethodParameterName(p.name) || !(p.minimum <= p.defaultValue) ||
             !(p.defaultValue <= p.maximum))
-            throw InvalidInput("method", makeDiagnostic("session_bad_method_parameter", {p.name, id}));
+            throw InvalidInput("method",
+                               makeDiagnostic("session_bad_method_parameter", {p.name, id}));
     registry().push_back(module.get());
     registeredModules().push_back(std::move(module));
 }
@@ -144,14 +145,15 @@ double methodParameterValue(const AxisSettings& settings, int axisIndex,
         return parameter.defaultValue;
     const double v = it->second;
     if (!std::isfinite(v) || v < parameter.minimum || v > parameter.maximum)
-        throw InvalidInput("axes[" + std::to_string(axisIndex) + "].parameters." + parameter.name,
-                           parameter.unit.empty()
-                               ? makeDiagnostic("session_parameter_out_of_range",
-                                                {shown(v), parameter.label, shown(parameter.minimum),
-                                                 shown(parameter.maximum)})
-                               : makeDiagnostic("session_parameter_out_of_range_unit",
-                                                {shown(v), parameter.label, shown(parameter.minimum),
-                                                 shown(parameter.maximum), parameter.unit}));
+        throw InvalidInput(
+            "axes[" + std::to_string(axisIndex) + "].parameters." + parameter.name,
+            parameter.unit.empty()
+                ? makeDiagnostic("session_parameter_out_of_range",
+                                 {shown(v), parameter.label, shown(parameter.minimum),
+                                  shown(parameter.maximum)})
+                : makeDiagnostic("session_parameter_out_of_range_unit",
+                                 {shown(v), parameter.label, shown(parameter.minimum),
+                                  shown(parameter.maximum), parameter.unit}));
     return v;
 }
 

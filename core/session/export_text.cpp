@@ -55,8 +55,7 @@ void requireCIdentifier(const Session& session, int axisIndex) {
         return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
     });
     if (!ok)
-        throw InvalidInput(axisField(axisIndex, "id"),
-                           makeDiagnostic("session_bad_axis_id"));
+        throw InvalidInput(axisField(axisIndex, "id"), makeDiagnostic("session_bad_axis_id"));
     if (axisIndex == 1 && session.axes[0].id == id)
         throw InvalidInput(axisField(1, "id"), makeDiagnostic("session_axis_id_not_unique"));
 }
@@ -174,8 +173,7 @@ std::string octaveTrajectoryLines(const TrajectorySettings& t, int axisIndex,
             << num(l[2], f) << " * tau.^2 + " << num(l[3], f)
             << " * tau.^3;  % cubic point-to-point (Braga et al. Eq. 4)\n";
     } else if (t.kind == TrajectoryKind::Gcode) {
-        throw InvalidInput("trajectory.kind",
-                           makeDiagnostic("session_program_no_closed_form"));
+        throw InvalidInput("trajectory.kind", makeDiagnostic("session_program_no_closed_form"));
     } else {
         out << "envelope = "
             << (t.rampInSeconds > 0
@@ -248,7 +246,8 @@ std::vector<double> csvTimes(const Session& session, const SessionEvaluation& ev
     try {
         return sampleTimes(evaluation.duration.seconds, session.trajectory.dtSeconds);
     } catch (const InvalidInput& e) {
-        throw InvalidInput(e.field() == "dt" ? "trajectory.dt" : "trajectory.duration", e.reasonDiagnostic());
+        throw InvalidInput(e.field() == "dt" ? "trajectory.dt" : "trajectory.duration",
+                           e.reasonDiagnostic());
     }
 }
 
@@ -278,11 +277,11 @@ void exportCsv(const Session& session, const SessionEvaluation& evaluation, cons
         for (const auto& [name, v] : columns)
             for (std::size_t k = 0; k < v->size(); ++k)
                 if (!std::isfinite((*v)[k]))
-                    throw InvalidInput(axisField(i, ""),
-                                       makeDiagnostic("session_simulated_not_finite",
-                                                      {std::string(name) + "_" + id,
-                                                       exactNumber((*v)[k]),
-                                                       exactNumber(run.t[k])}));
+                    throw InvalidInput(
+                        axisField(i, ""),
+                        makeDiagnostic("session_simulated_not_finite",
+                                       {std::string(name) + "_" + id, exactNumber((*v)[k]),
+                                        exactNumber(run.t[k])}));
     }
     const std::vector<double> times = csvTimes(session, evaluation);
     const std::array<const AxisEvaluation*, 2> axes{&x, &y};

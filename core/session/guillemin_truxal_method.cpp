@@ -48,9 +48,9 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back(makeDiagnostic(
-            "no_digital_implementation",
-            {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
+        out.warnings.push_back(
+            makeDiagnostic("no_digital_implementation",
+                           {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
     }
 }
 

@@ -9,14 +9,13 @@ namespace xyt {
 AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedModel& model,
                                      const IoData& data) {
     if (!model.hasEstimate())
-        throw InvalidInput("model", model.message.empty()
-                                        ? makeDiagnostic("session_model_no_estimate",
-                                                         {model.structure,
-                                                          estimationStatusName(model.status)})
-                                        : makeDiagnostic("session_model_no_estimate_because",
-                                                         {model.structure,
-                                                          estimationStatusName(model.status),
-                                                          model.message}));
+        throw InvalidInput(
+            "model", model.message.empty()
+                         ? makeDiagnostic("session_model_no_estimate",
+                                          {model.structure, estimationStatusName(model.status)})
+                         : makeDiagnostic("session_model_no_estimate_because",
+                                          {model.structure, estimationStatusName(model.status),
+                                           model.message}));
     AxisSettings out = axis;
     if (model.plant) {
         out.method = DesignMethod::GuilleminTruxal;

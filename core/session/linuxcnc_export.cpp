@@ -53,9 +53,10 @@ std::string exportLinuxCnc(const Session& session, const SessionEvaluation& eval
         AxisSettings axis = session.axes[i];
         if (axis.method != DesignMethod::GuilleminTruxal &&
             axis.method != DesignMethod::PidFeedforward)
-            throw InvalidInput(axisFieldPath(index, "method"),
-                               makeDiagnostic("session_no_linuxcnc_pid",
-                                              {std::string(designMethodModule(axis.method).displayName())}));
+            throw InvalidInput(
+                axisFieldPath(index, "method"),
+                makeDiagnostic("session_no_linuxcnc_pid",
+                               {std::string(designMethodModule(axis.method).displayName())}));
         if (!a.ok)
             throw InvalidInput(a.errorField, Diagnostic(a.error)); // its coded reason
         if (feedforwardFromModel || axis.method == DesignMethod::GuilleminTruxal) {

@@ -221,9 +221,9 @@ void evaluateDigital(const Session& session, int axisIndex, double duration,
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back(makeDiagnostic(
-            "no_digital_implementation",
-            {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
+        out.warnings.push_back(
+            makeDiagnostic("no_digital_implementation",
+                           {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
     }
 }
 
@@ -615,9 +615,10 @@ AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex) {
         out.parameters["i"] = gt.ki * unit;
         out.parameters["d"] = 0.0;
     } else if (axis.method != DesignMethod::PidFeedforward) {
-        throw InvalidInput(axisFieldPath(axisIndex, "method"),
-                           makeDiagnostic("session_no_model_feedforward",
-                                          {std::string(designMethodModule(axis.method).displayName())}));
+        throw InvalidInput(
+            axisFieldPath(axisIndex, "method"),
+            makeDiagnostic("session_no_model_feedforward",
+                           {std::string(designMethodModule(axis.method).displayName())}));
     }
     ModelFeedforwardGains ff;
     try {

@@ -30,7 +30,7 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
  * whatever the controller (Patrick, Ishak and Adnan's x-axis model needs 3.03 V at 600 mm).
  */
 std::optional<Diagnostic> reachWarning(const PpAxisSettings& pp,
-                                        const std::vector<double>& reference, double umaxVolts) {
+                                       const std::vector<double>& reference, double umaxVolts) {
     double a1 = 0.0, b1 = 0.0, farthest = 0.0;
     for (double c : pp.a)
         a1 += c;

@@ -166,7 +166,7 @@ ProgramSummary summarizeProgram(const TrajectorySettings& trajectory) {
     out.runSeconds = profile.totalTimeSeconds;
     out.corners = profile.corners.size();
     out.singleFullCircle = program.isSingleFullCircle();
-    out.warnings = program.warnings;
+    out.warnings.assign(program.warnings.begin(), program.warnings.end());
     return out;
 }
 

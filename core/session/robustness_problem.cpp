@@ -137,8 +137,7 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         return p;
     }
     if (session.trajectory.kind != TrajectoryKind::Gcode)
-        throw InvalidInput("trajectory",
-                           makeDiagnostic("session_contour_needs_path"));
+        throw InvalidInput("trajectory", makeDiagnostic("session_contour_needs_path"));
     const std::shared_ptr<const GcodeProgram> shared = sessionProgram(session.trajectory.gcode);
     const GcodeProgram& program = *shared;
     const ContourRunOptions run = programRunOptions(session.trajectory);
@@ -174,8 +173,7 @@ void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session
     const std::string field = "axes[" + std::to_string(axis) + "].model_origin";
     const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
     if (!settings.origin)
-        throw InvalidInput(field,
-                           makeDiagnostic("session_model_not_identified"));
+        throw InvalidInput(field, makeDiagnostic("session_model_not_identified"));
     const ModelOrigin& o = *settings.origin;
     const std::size_t d = o.parameterNames.size();
     if (o.covariance.size() != d * d || d == 0)
@@ -183,8 +181,7 @@ void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session
                            makeDiagnostic("session_identified_no_covariance", {o.structure}));
     const bool continuous = o.parameterNames == std::vector<std::string>{"k0", "a1", "a2"};
     if (continuous != problem.controller.has_value())
-        throw InvalidInput(field,
-                           makeDiagnostic("session_identified_wrong_method", {o.structure}));
+        throw InvalidInput(field, makeDiagnostic("session_identified_wrong_method", {o.structure}));
     // The problem's index of each origin parameter (npos: not in the loop).
     std::vector<std::size_t> at(d, std::string::npos);
     std::vector<double> scale(d, 1.0);

@@ -475,10 +475,6 @@ double slowestDecayPerSecond(const AxisEvaluation& a) {
     return designMethodModule(a.method).slowestDecayPerSecond(a);
 }
 
-std::string seconds(double v) {
-    return formatNumber(v) + " s";
-}
-
 } // namespace
 
 RunDuration chooseRunDuration(const Session& session) {
@@ -488,16 +484,15 @@ RunDuration chooseRunDuration(const Session& session) {
     d.seconds = d.capSeconds;
     d.automatic = !(t.durationSeconds > 0.0) || t.kind == TrajectoryKind::Gcode;
     if (!d.automatic) {
-        d.description = "duration " + seconds(d.seconds) + " (set in the session)";
+        d.description = makeDiagnostic("session_duration_set", {formatNumber(d.seconds)});
         return d;
     }
     if (t.kind == TrajectoryKind::Circle) {
-        d.description =
-            "duration " + seconds(d.seconds) + " (automatic: the ramp-in and one revolution)";
+        d.description = makeDiagnostic("session_duration_circle", {formatNumber(d.seconds)});
         return d;
     }
     if (t.kind == TrajectoryKind::Gcode) {
-        d.description = "duration " + seconds(d.seconds) + " (the program's feed profile)";
+        d.description = makeDiagnostic("session_duration_program", {formatNumber(d.seconds)});
         return d;
     }
     // The move alone first, on both axes, for their error at its end: tf, later by the input
@@ -519,25 +514,24 @@ RunDuration chooseRunDuration(const Session& session) {
     d.settleEstimateSeconds = need;
     if (!any) {
         d.seconds = moveEnd;
-        d.description = "duration " + seconds(d.seconds) +
-                        " (automatic: the move only; no axis has a stable design to settle)";
+        d.description = makeDiagnostic("session_duration_move_only", {formatNumber(d.seconds)});
         return d;
     }
     d.seconds = automaticMoveDurationSeconds(t.t0Seconds, moveEnd, need, d.capSeconds);
     d.capped = d.seconds == d.capSeconds && d.capSeconds > moveEnd;
-    d.description =
-        "duration " + seconds(d.seconds) + " (automatic: the move to tf = " + seconds(t.tfSeconds) +
-        " and the settle into " + formatNumber(session.spec.inPositionWindowMm) +
-        " mm, estimated " + (std::isfinite(need) ? seconds(need) : std::string("never")) +
-        " after tf from the slowest closed-loop pole" +
-        (d.capped
-             ? "; cut to the cap of tf + " + formatNumber(kAutomaticSettleMoves) +
-                   " move durations" +
-                   (d.capSeconds < t.tfSeconds + kAutomaticSettleMoves * (t.tfSeconds - t.t0Seconds)
-                        ? " (lowered to what a million samples hold at this dt)"
-                        : "")
-             : "") +
-        ")";
+    std::vector<Diagnostic> args = {
+        formatNumber(d.seconds), formatNumber(t.tfSeconds),
+        formatNumber(session.spec.inPositionWindowMm),
+        std::isfinite(need) ? makeDiagnostic("study_value_seconds", {formatNumber(need)})
+                            : makeDiagnostic("session_duration_never")};
+    const char* code = "session_duration_settle";
+    if (d.capped) {
+        args.push_back(formatNumber(kAutomaticSettleMoves));
+        code = d.capSeconds < t.tfSeconds + kAutomaticSettleMoves * (t.tfSeconds - t.t0Seconds)
+                   ? "session_duration_settle_lowered"
+                   : "session_duration_settle_capped";
+    }
+    d.description = makeDiagnostic(code, std::move(args));
     return d;
 }
 
@@ -582,8 +576,7 @@ SessionEvaluation evaluateSession(const Session& session) {
             out.coupledTrajectory = std::make_shared<const CoupledTrajectoryRun>(
                 runCoupledTrajectory(session, x.run, y.run));
         } catch (const InvalidInput& e) {
-            out.couplingError =
-                makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
+            out.couplingError = makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
         }
     }
     return out;

@@ -40,7 +40,7 @@ struct RunDuration {
     double settleEstimateSeconds = 0.0; ///< that estimate, s after tf (infinity: never settles)
     bool capped = false;     ///< the wanted run was longer than the cap and was cut to it
     double capSeconds = 0.0; ///< TrajectorySettings::effectiveDurationSeconds()
-    std::string description; ///< one sentence saying what was chosen and why
+    Diagnostic description;  ///< one sentence saying what was chosen and why
 };
 
 /**

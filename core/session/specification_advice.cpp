@@ -132,11 +132,10 @@ SpecificationAdvice adviseSpecification(const Session& session,
         }
         if (!c.overshoot) {
             overshoot.failedAt(a.step.overshootPct);
-            out.reasons.push_back(makeDiagnostic(a.gt && spec.maxOvershootPct == 0.0
-                                                     ? "session_advice_overshoot_gt"
-                                                     : "session_advice_overshoot",
-                                                 {name, formatNumber(a.step.overshootPct, 3),
-                                                  formatNumber(spec.maxOvershootPct)}));
+            out.reasons.push_back(makeDiagnostic(
+                a.gt && spec.maxOvershootPct == 0.0 ? "session_advice_overshoot_gt"
+                                                    : "session_advice_overshoot",
+                {name, formatNumber(a.step.overshootPct, 3), formatNumber(spec.maxOvershootPct)}));
         }
         if (!c.settlingTime) {
             settling.failedAt(a.step.settlingTimeSeconds);
@@ -155,9 +154,9 @@ SpecificationAdvice adviseSpecification(const Session& session,
             if (!std::isfinite(worst))
                 possible = false;
             error.failedAt(worst);
-            out.reasons.push_back(makeDiagnostic(
-                "session_advice_tracking",
-                {name, formatNumber(worst, 3), formatNumber(spec.maxErrorPct)}));
+            out.reasons.push_back(
+                makeDiagnostic("session_advice_tracking",
+                               {name, formatNumber(worst, 3), formatNumber(spec.maxErrorPct)}));
         }
         if (c.settleApplies && !c.settle) {
             std::optional<double> t = settleSeconds(a);
@@ -190,9 +189,10 @@ SpecificationAdvice adviseSpecification(const Session& session,
         if (c.marginsApply && a.margins) {
             if (!c.phaseMargin) {
                 phase.failedAt(a.margins->phaseMarginDeg);
-                out.reasons.push_back(makeDiagnostic(
-                    "session_advice_phase_margin", {name, formatNumber(a.margins->phaseMarginDeg, 3),
-                                                    formatNumber(spec.minPhaseMarginDeg)}));
+                out.reasons.push_back(
+                    makeDiagnostic("session_advice_phase_margin",
+                                   {name, formatNumber(a.margins->phaseMarginDeg, 3),
+                                    formatNumber(spec.minPhaseMarginDeg)}));
             }
             if (!c.gainMargin) {
                 gain.failedAt(a.margins->gainMarginDb);

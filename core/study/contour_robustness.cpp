@@ -89,8 +89,8 @@ void validate(const ContourRobustnessProblem& p) {
         throw InvalidInput("geometry", makeDiagnostic("study_time_base_empty"));
     for (std::size_t k = 0; k < g.t.size(); ++k)
         if (!std::isfinite(g.t[k]) || (k > 0 && !(g.t[k] > g.t[k - 1])))
-            throw InvalidInput("geometry", makeDiagnostic("study_time_base_not_increasing",
-                                                          {std::to_string(k)}));
+            throw InvalidInput(
+                "geometry", makeDiagnostic("study_time_base_not_increasing", {std::to_string(k)}));
     if (p.coupling) {
         validateCrossCoupling(p.coupling->gains, "cross_coupling");
         // One grid for both axes: the continuous loop runs on k dt over its reference, the
@@ -104,8 +104,7 @@ void validate(const ContourRobustnessProblem& p) {
         const CouplingDirections& d = p.coupling->directions;
         if (std::abs(tx - ty) > 1e-9 * tx || nx != ny || d.thetaRad.size() != nx ||
             d.curvaturePerMm.size() != nx || (!d.active.empty() && d.active.size() != nx))
-            throw InvalidInput("cross_coupling",
-                               makeDiagnostic("study_coupling_one_grid"));
+            throw InvalidInput("cross_coupling", makeDiagnostic("study_coupling_one_grid"));
     }
 }
 
@@ -279,8 +278,8 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     result.rmsContourError = distributionOf(rms);
     result.error = envelopeOf(g.t, idx, es, nominalError.e);
     if (!result.unstable.empty())
-        result.warnings.push_back(makeDiagnostic("study_unstable_plant_pairs",
-                                                 {std::to_string(result.unstable.size())}));
+        result.warnings.push_back(
+            makeDiagnostic("study_unstable_plant_pairs", {std::to_string(result.unstable.size())}));
     return result;
 }
 

@@ -340,8 +340,7 @@ void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
     spec.validate();
     for (const DesignPoint& p : result.points)
         if (p.computed && p.move && p.move->windowMm != spec.inPositionWindowMm)
-            throw InvalidInput("in_position_window_mm",
-                               makeDiagnostic("study_other_window"));
+            throw InvalidInput("in_position_window_mm", makeDiagnostic("study_other_window"));
     for (DesignPoint& p : result.points) {
         if (!p.computed)
             continue;
@@ -396,8 +395,9 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
     tallyDesignSpace(result);
     if (outcome.cancelled || result.computedCount < static_cast<int>(total)) {
         result.status = SweepStatus::Cancelled;
-        result.warnings.push_back(makeDiagnostic(
-            "study_sweep_cancelled", {std::to_string(result.computedCount), std::to_string(total)}));
+        result.warnings.push_back(
+            makeDiagnostic("study_sweep_cancelled",
+                           {std::to_string(result.computedCount), std::to_string(total)}));
         return result;
     }
     if (!result.bestIndex)

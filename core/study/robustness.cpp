@@ -207,8 +207,7 @@ void validateRobustnessProblem(const RobustnessProblem& problem) {
                                     ? static_cast<std::size_t>(problem.zpetc->previewSteps)
                                     : 0;
     if (problem.samples < 2 || problem.reference.size() < problem.samples + preview)
-        throw InvalidInput("problem",
-                           makeDiagnostic("study_reference_too_short"));
+        throw InvalidInput("problem", makeDiagnostic("study_reference_too_short"));
     if (problem.controller)
         for (const char* name : {"k0", "a1", "a2"})
             if (std::none_of(problem.parameters.begin(), problem.parameters.end(),
@@ -331,8 +330,8 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem,
     result.error = envelopeOf(nominalRun.t, idx, es, nominalRun.e);
     result.command = envelopeOf(nominalRun.t, idx, us, nominalRun.u);
     if (!result.unstable.empty())
-        result.warnings.push_back(makeDiagnostic("study_unstable_plants",
-                                                 {std::to_string(result.unstable.size())}));
+        result.warnings.push_back(
+            makeDiagnostic("study_unstable_plants", {std::to_string(result.unstable.size())}));
     return result;
 }
 
@@ -376,8 +375,7 @@ std::vector<ZpetcSensitivityPoint> zpetcSensitivity(const RobustnessProblem& pro
                                                     const std::vector<double>& scales,
                                                     const RobustnessOptions& options) {
     if (!problem.loop || !problem.zpetcEnabled)
-        throw InvalidInput("problem",
-                           makeDiagnostic("study_zpetc_sensitivity_needs_zpetc"));
+        throw InvalidInput("problem", makeDiagnostic("study_zpetc_sensitivity_needs_zpetc"));
     if (scales.empty())
         throw InvalidInput("scales", makeDiagnostic("study_no_scale"));
     std::vector<ZpetcSensitivityPoint> curve;
@@ -387,10 +385,10 @@ std::vector<ZpetcSensitivityPoint> zpetcSensitivity(const RobustnessProblem& pro
             scaled.parameters = scaledRanges(problem.parameters, scale);
         } catch (const InvalidInput& e) {
             throw InvalidInput(
-                "scales",
-                makeDiagnostic("study_scale_reason",
-                               {std::to_string(scale),
-                                makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
+                "scales", makeDiagnostic(
+                              "study_scale_reason",
+                              {std::to_string(scale),
+                               makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
         }
         const RobustnessResult r = analyzeRobustness(scaled, options);
         ZpetcSensitivityPoint point;

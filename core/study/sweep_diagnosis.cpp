@@ -142,9 +142,9 @@ Diagnostic at(const DesignSweepResult& r, std::size_t i) {
 /// One edge warning: "kp = 60 is the upper end of the kp range 5..60: ...".
 Diagnostic edgeDiagnostic(const char* axis, const std::vector<double>& values, bool upper) {
     const std::string v = formatNumber(upper ? values.back() : values.front(), 6);
-    return makeDiagnostic(upper ? "study_best_at_upper_edge" : "study_best_at_lower_edge",
-                          {axis, v, axis, formatNumber(values.front(), 6),
-                           formatNumber(values.back(), 6), axis, v});
+    return makeDiagnostic(
+        upper ? "study_best_at_upper_edge" : "study_best_at_lower_edge",
+        {axis, v, axis, formatNumber(values.front(), 6), formatNumber(values.back(), 6), axis, v});
 }
 
 } // namespace
@@ -211,9 +211,9 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
             if (c == SpecCriterion::Stable)
                 diagnostic = makeDiagnostic("study_none_stable");
             else if (c == SpecCriterion::Settle && !f.bestIndex)
-                diagnostic = makeDiagnostic(
-                    "study_none_settles",
-                    {formatNumber(spec.inPositionWindowMm), formatNumber(f.limit)});
+                diagnostic =
+                    makeDiagnostic("study_none_settles",
+                                   {formatNumber(spec.inPositionWindowMm), formatNumber(f.limit)});
             else if (!f.bestIndex)
                 diagnostic = makeDiagnostic("study_limit_fails_everywhere",
                                             {nameOf(c), valueIn(c, formatNumber(f.limit))});
@@ -308,17 +308,18 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                 default:
                     break;
                 }
-                changes.push_back(
-                    makeDiagnostic(largerIsBetter(c) ? "study_change_at_least" : "study_change_at_most",
-                                   {nameOf(c), valueIn(c, formatNumber(limit))}));
+                changes.push_back(makeDiagnostic(largerIsBetter(c) ? "study_change_at_least"
+                                                                   : "study_change_at_most",
+                                                 {nameOf(c), valueIn(c, formatNumber(limit))}));
             }
             const Diagnostic design = at(result, *d.leastViolating);
             const std::string point = std::to_string(*d.leastViolating);
             Diagnostic diagnostic = makeDiagnostic("study_least_violating", {design, point});
             if (possible && !changes.empty()) {
                 d.relaxed = relaxed;
-                diagnostic = makeDiagnostic("study_least_violating_relaxed",
-                                            {design, point, joinDiagnostics(changes, "list_comma")});
+                diagnostic =
+                    makeDiagnostic("study_least_violating_relaxed",
+                                   {design, point, joinDiagnostics(changes, "list_comma")});
             } else if (!possible) {
                 diagnostic = makeDiagnostic("study_least_violating_no_relaxing", {design, point});
             }

@@ -128,7 +128,7 @@ private slots:
                     }
                 } catch (const InvalidInput& e) {
                     QCOMPARE(cell.status, CouplingCellStatus::Unstable);
-                    QCOMPARE(cell.message, std::string(e.what()));
+                    QCOMPARE(cell.message.text, std::string(e.what()));
                     sawUnstable = true;
                 }
             }
