@@ -66,6 +66,8 @@ const std::vector<DiagnosticTemplate>& session() {
                        "%1 s is longer than the program's run (%2 s)"),
         XYT_DIAGNOSTIC("session_too_many_samples",
                        "the run needs more samples than this machine holds"),
+        XYT_DIAGNOSTIC("session_single_sample", "gives a single sample (step %1 s, duration %2 s); "
+                                                "at least two samples are needed for the metrics"),
         XYT_DIAGNOSTIC("session_controller_continuous",
                        "must be continuous (a discrete loop has its own model)"),
         XYT_DIAGNOSTIC("session_vibration_arx_axis",

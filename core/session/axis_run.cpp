@@ -36,9 +36,8 @@ std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double
         throw RunRefused(e.field() == "dt" ? dtField : culprit, e.reasonDiagnostic());
     }
     if (times.size() < 2)
-        throw RunRefused(culprit, "gives a single sample (step " + formatNumber(dt) +
-                                      " s, duration " + formatNumber(duration) +
-                                      " s); at least two samples are needed for the metrics");
+        throw RunRefused(culprit, makeDiagnostic("session_single_sample",
+                                                 {formatNumber(dt), formatNumber(duration)}));
     return times;
 }
 
