@@ -24,7 +24,7 @@ QList<QPair<QString, QString>> comparisonRows(const Session& design) {
         const QString id = QString::fromStdString(s.id).toUpper();
         if (!a.ok) {
             rows.append({QObject::tr("%1 design").arg(id),
-                         QString::fromStdString(a.errorField + ": " + a.error)});
+                         QString::fromStdString(a.errorField + ": " + a.error.text)});
             continue;
         }
         for (const DesignCoefficient& c : designMethodModule(a.method).coefficients(a))

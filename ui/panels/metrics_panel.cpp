@@ -409,7 +409,7 @@ namespace {
 /// Why an axis has no margins: its error, or the evaluation's "no stability margins" warning.
 QString noMarginsReason(const AxisEvaluation& e) {
     if (!e.ok)
-        return QString::fromStdString(e.errorField + ": " + e.error);
+        return QString::fromStdString(e.errorField + ": " + e.error.text);
     for (const Diagnostic& w : e.warnings)
         if (w.code == "no_stability_margins")
             return diagnosticText(w);
@@ -729,7 +729,7 @@ void MetricsPanel::judgeCell(Cell& cell, bool pass, bool byImplementation,
 
 void MetricsPanel::explainCell(Cell& cell, int r, const AxisEvaluation& a) const {
     if (!a.ok) {
-        cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error);
+        cell.toolTip = QString::fromStdString(a.errorField + ": " + a.error.text);
         return;
     }
     if (r == SettleAfterMove && a.moveSettle && !a.moveSettle->diverged &&

@@ -128,7 +128,7 @@ private slots:
         Session s = Session::paperDefault();
         s.axes[0].method = DesignMethod::PolePlacementZpetc;
         const AxisEvaluation linear = evaluateAxis(s, 0);
-        QVERIFY2(linear.ok, linear.error.c_str());
+        QVERIFY2(linear.ok, linear.error.text.c_str());
         s.axes[0].friction.coulombVolts = 1e6;
         const AxisEvaluation stuck = evaluateAxis(s, 0);
         QVERIFY2(stuck.ok, stuck.error.text.c_str());
