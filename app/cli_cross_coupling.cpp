@@ -100,9 +100,9 @@ QJsonObject sweepCellJson(const CouplingSweepCell& c) {
                   {"spectral_radius", ok ? number(c.spectralRadius) : QJsonValue()},
                   {"disk_margin", ok ? number(c.diskMargin) : QJsonValue()},
                   {"saturated", ok ? QJsonValue(c.saturated) : QJsonValue()}};
-    if (!c.message.empty())
+    if (!c.message.text.empty())
         o.insert("message", QString::fromStdString(c.message));
-    if (!c.warning.empty())
+    if (!c.warning.text.empty())
         o.insert("warning", QString::fromStdString(c.warning));
     return o;
 }

@@ -376,7 +376,7 @@ int runIdentify(const QStringList& argv) {
         try {
             for (const AxisEvaluation& a : evaluateSession(*session).axes)
                 if (!a.ok && a.runRefused && refused.empty())
-                    refused = a.errorField + ": " + a.error;
+                    refused = a.errorField + ": " + a.error.text;
         } catch (const InvalidInput& e) {
             refused = e.what();
         }

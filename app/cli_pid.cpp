@@ -316,7 +316,7 @@ int simulateThroughSession(const CliArgs& args) {
         if (a.errorField.find(".parameters.") != std::string::npos &&
             kPidGainOptions.contains(name) && !args.has(name))
             throw InvalidInput(plantOption(args), "gives " + option + " a default out of range (" +
-                                                      a.error + "): give " + option);
+                                                      a.error.text + "): give " + option);
         throw InvalidInput(option, a.error);
     }
     if (args.flag("digital") && !a.digital) {

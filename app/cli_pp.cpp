@@ -290,11 +290,12 @@ int runContour(const QStringList& argv) {
         session.trajectory.durationSeconds = duration;
         session.crossCoupling = coupling;
         const SessionEvaluation evaluation = evaluateSession(session);
-        if (!evaluation.couplingError.empty())
+        if (!evaluation.couplingError.text.empty())
             throw InvalidInput("--ccc-kp", evaluation.couplingError);
         if (!evaluation.coupledTrajectory)
-            throw InvalidInput("--ccc-kp", "the coupled run could not be made: " +
-                                               evaluation.axes[0].error + evaluation.axes[1].error);
+            throw InvalidInput(
+                "--ccc-kp", "the coupled run could not be made: " + evaluation.axes[0].error.text +
+                                evaluation.axes[1].error.text);
         couplingJson = trajectoryCouplingJson(session, *evaluation.coupledTrajectory);
     }
     print({{"preset", preset},

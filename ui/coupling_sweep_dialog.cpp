@@ -577,7 +577,7 @@ QString CouplingSweepDialog::cellToolTip(std::size_t index) const {
                          .arg(significant(c.spectralRadius, 6), significant(c.diskMargin, 3));
         lines << (c.saturated ? tr("An axis reaches its actuator limit.")
                               : tr("Both axes stay inside their actuator limit."));
-        if (!c.warning.empty())
+        if (!c.warning.text.empty())
             lines << tr("Warning: %1.").arg(diagnosticText(c.warning));
         break;
     }

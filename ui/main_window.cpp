@@ -821,7 +821,7 @@ void MainWindow::showCouplingStatus() {
     bool warning = false;
     if (!s.crossCoupling.active()) {
         // nothing to say
-    } else if (!ev.couplingError.empty()) {
+    } else if (!ev.couplingError.text.empty()) {
         text = diagnosticText(ev.couplingError);
         warning = true;
     } else if (ev.program && ev.program->independent) {
@@ -830,7 +830,7 @@ void MainWindow::showCouplingStatus() {
                         QString::number(ev.program->independent->contour.maxAbs, 'g', 3));
         if (const auto& st = ev.program->couplingStability) {
             text += " " + stabilityText(*st);
-            if (!st->warning.empty()) {
+            if (!st->warning.text.empty()) {
                 text += " " + diagnosticText(st->warning) + ".";
                 warning = true;
             }
@@ -841,7 +841,7 @@ void MainWindow::showCouplingStatus() {
                    .arg(QString::number(run.coupledError.maxAbs, 'g', 3),
                         QString::number(run.independentError.maxAbs, 'g', 3)) +
                stabilityText(run.stability);
-        if (!run.stability.warning.empty()) {
+        if (!run.stability.warning.text.empty()) {
             text += " " + diagnosticText(run.stability.warning) + ".";
             warning = true;
         }

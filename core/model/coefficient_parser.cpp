@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/coefficient_parser.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <charconv>
@@ -29,18 +30,18 @@ double parseNumber(std::string_view text, const std::string& field) {
     while (!text.empty() && (text.back() == ' ' || text.back() == '\t'))
         text.remove_suffix(1);
     if (text.empty())
-        throw InvalidInput(field, "expected a number, got nothing");
+        throw InvalidInput(field, makeDiagnostic("model_expected_number"));
     std::string_view digits = text;
     if (digits.front() == '+')
         digits.remove_prefix(1);
     double value = 0.0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec == std::errc::result_out_of_range)
-        throw InvalidInput(field, quoted(text) + " is out of the range of a double");
+        throw InvalidInput(field, makeDiagnostic("model_number_out_of_range", {quoted(text)}));
     if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
-        throw InvalidInput(field, quoted(text) + " is not a number");
+        throw InvalidInput(field, makeDiagnostic("model_not_a_number_text", {quoted(text)}));
     if (!std::isfinite(value))
-        throw InvalidInput(field, quoted(text) + " is not a finite number");
+        throw InvalidInput(field, makeDiagnostic("model_not_a_finite_number_text", {quoted(text)}));
     return value;
 }
 
@@ -52,7 +53,7 @@ std::vector<double> parseCoefficientList(std::string_view text, const std::strin
         --end;
     if (begin < end && text[begin] == '[') {
         if (text[end - 1] != ']')
-            throw InvalidInput(field, "an opening '[' has no closing ']'");
+            throw InvalidInput(field, makeDiagnostic("model_unclosed_bracket"));
         ++begin;
         --end;
     }
@@ -67,14 +68,14 @@ std::vector<double> parseCoefficientList(std::string_view text, const std::strin
         while (j < end && !isSeparator(text[j]))
             ++j;
         if (values.size() == kMaxCoefficients)
-            throw InvalidInput(field,
-                               "more than " + std::to_string(kMaxCoefficients) + " coefficients");
+            throw InvalidInput(field, makeDiagnostic("model_too_many_coefficients",
+                                                     {std::to_string(kMaxCoefficients)}));
         values.push_back(
             parseNumber(text.substr(i, j - i), field + "[" + std::to_string(values.size()) + "]"));
         i = j;
     }
     if (values.empty())
-        throw InvalidInput(field, "the coefficient list is empty");
+        throw InvalidInput(field, makeDiagnostic("model_empty_coefficient_list"));
     return values;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/flexible_mode.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -10,19 +11,18 @@ namespace xyt {
 
 void requireDampingRatio(double zeta, const std::string& field) {
     if (!std::isfinite(zeta) || zeta < 0.0 || zeta >= 1.0)
-        throw InvalidInput(field, "must be a damping ratio in [0, 1)");
+        throw InvalidInput(field, makeDiagnostic("model_damping_ratio"));
 }
 
 void validateFlexibleMode(const FlexibleMode& mode, const std::string& prefix) {
     if (!std::isfinite(mode.frequencyHz) || mode.frequencyHz < 0.0)
-        throw InvalidInput(prefix + "frequency", "must be 0 (no mode) or a frequency > 0 Hz");
+        throw InvalidInput(prefix + "frequency", makeDiagnostic("model_mode_frequency"));
     requireDampingRatio(mode.dampingRatio, prefix + "damping");
     if (!std::isfinite(mode.antiResonanceHz) || mode.antiResonanceHz < 0.0)
         throw InvalidInput(prefix + "anti_resonance",
-                           "must be 0 (a resonant pair) or a frequency > 0 Hz");
+                           makeDiagnostic("model_anti_resonance_frequency"));
     if (mode.present() && mode.twoMass() && mode.antiResonanceHz >= mode.frequencyHz)
-        throw InvalidInput(prefix + "anti_resonance",
-                           "must lie below the resonance (a two-mass model's motor side)");
+        throw InvalidInput(prefix + "anti_resonance", makeDiagnostic("model_anti_resonance_below"));
     requireDampingRatio(mode.antiResonanceDamping, prefix + "anti_resonance_damping");
 }
 

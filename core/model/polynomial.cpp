@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/polynomial.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -98,13 +99,14 @@ Polynomial Polynomial::derivative() const {
 
 Polynomial Polynomial::monic() const {
     if (isZero())
-        throw InvalidInput("polynomial", "the zero polynomial has no leading coefficient");
+        throw InvalidInput("polynomial", makeDiagnostic("model_zero_polynomial_no_leading"));
     return (1.0 / leading()) * *this;
 }
 
 Polynomial Polynomial::reversed(int n) const {
     if (n < degree())
-        throw InvalidInput("n", "must be at least the degree " + std::to_string(degree()));
+        throw InvalidInput("n",
+                           makeDiagnostic("model_at_least_degree", {std::to_string(degree())}));
     std::vector<double> r(static_cast<std::size_t>(n) + 1, 0.0);
     for (std::size_t i = 0; i < c_.size(); ++i)
         r[static_cast<std::size_t>(n) - i] = c_[i];
@@ -130,7 +132,7 @@ double Polynomial::maxAbsCoefficient() const {
 
 std::vector<Polynomial::Complex> Polynomial::roots() const {
     if (isZero())
-        throw InvalidInput("polynomial", "the zero polynomial has no finite set of roots");
+        throw InvalidInput("polynomial", makeDiagnostic("model_zero_polynomial_no_roots"));
     std::vector<Complex> result;
     // Roots at exactly zero: split them off so the companion matrix stays nonsingular.
     std::size_t low = 0;
@@ -174,8 +176,7 @@ std::vector<Polynomial::Complex> Polynomial::roots() const {
     // fuzz_design, tests/fuzz/corpus/fuzz_design/crash-root-beyond-double).
     for (const Complex& r : result)
         if (!std::isfinite(r.real()) || !std::isfinite(r.imag()))
-            throw InvalidInput("polynomial", "has a root beyond the range of a double (its leading "
-                                             "coefficient is negligible against the others)");
+            throw InvalidInput("polynomial", makeDiagnostic("model_root_beyond_double"));
     return result;
 }
 
@@ -210,7 +211,7 @@ Polynomial operator*(double k, const Polynomial& p) {
 void Polynomial::divide(const Polynomial& a, const Polynomial& b, Polynomial& quotient,
                         Polynomial& remainder) {
     if (b.isZero())
-        throw InvalidInput("divisor", "division by the zero polynomial");
+        throw InvalidInput("divisor", makeDiagnostic("model_division_by_zero_polynomial"));
     std::vector<double> rem(a.c_);
     const int db = b.degree();
     const int da = a.degree();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/root_matching.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -36,8 +37,8 @@ std::vector<std::size_t> matchRoots(const std::vector<std::complex<double>>& pre
                                     const std::vector<std::complex<double>>& next) {
     const std::size_t n = previous.size();
     if (next.size() != n)
-        throw InvalidInput("next", "has " + std::to_string(next.size()) + " roots, expected " +
-                                       std::to_string(n));
+        throw InvalidInput("next", makeDiagnostic("model_root_count", {std::to_string(next.size()),
+                                                                       std::to_string(n)}));
     if (n <= 1)
         return std::vector<std::size_t>(n, 0);
     // Hungarian method with potentials (rows = previous roots, columns = next roots), 1-based

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/state_space.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 
@@ -11,7 +12,7 @@ namespace xyt {
 
 StateSpace realize(const TransferFunction& tf) {
     if (!tf.isProper())
-        throw InvalidInput("num", "an improper transfer function has no state-space realization");
+        throw InvalidInput("num", makeDiagnostic("model_improper_no_realization"));
     const int n = tf.den().degree();
     Polynomial direct, rest;
     Polynomial::divide(tf.num(), tf.den(), direct, rest);
@@ -35,7 +36,7 @@ StateSpace realize(const TransferFunction& tf) {
 StateSpace discretizeZoh(const StateSpace& continuous, double tsSeconds) {
     requirePositive(tsSeconds, "ts");
     if (continuous.tsSeconds > 0.0)
-        throw InvalidInput("system", "is already discrete");
+        throw InvalidInput("system", makeDiagnostic("model_already_discrete"));
     const Eigen::Index n = continuous.states();
     const Eigen::Index m = continuous.b.cols();
     Eigen::MatrixXd aug = Eigen::MatrixXd::Zero(n + m, n + m);
@@ -60,7 +61,7 @@ Polynomial characteristicPolynomial(const Eigen::MatrixXd& m) {
 
 TransferFunction c2dZoh(const TransferFunction& continuous, double tsSeconds) {
     if (continuous.isDiscrete())
-        throw InvalidInput("system", "is already discrete");
+        throw InvalidInput("system", makeDiagnostic("model_already_discrete"));
     const StateSpace d = discretizeZoh(realize(continuous), tsSeconds);
     const Polynomial den = characteristicPolynomial(d.a);
     const Polynomial closed = characteristicPolynomial(d.a - d.b * d.c);
@@ -87,9 +88,8 @@ FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
     // as crash-stiff-discretization) makes the scaling and squaring of exp() overflow on the way
     // (transient growth of a non-normal matrix) although the exact result is finite.
     if (!e.allFinite())
-        throw InvalidInput("ts", "the exact discretization over " + formatNumber(tsSeconds) +
-                                     " s overflows double precision (a very fast pole): use a "
-                                     "smaller sample time");
+        throw InvalidInput(
+            "ts", makeDiagnostic("model_discretization_overflows", {formatNumber(tsSeconds)}));
     // The same loss can stay finite: a plant with k0 = 4e12 and a pole at -5e8 (fuzz_design,
     // crash-stiff-loop) gave a step matrix with eigenvalues of 1e38 for a stable A, whose run
     // then overflowed. By the spectral mapping theorem the eigenvalues of e^{A Ts} are
@@ -104,13 +104,9 @@ FohDiscretization discretizeFoh(const Eigen::MatrixXd& a, const Eigen::MatrixXd&
             Eigen::EigenSolver<Eigen::MatrixXd>(foh.phi, false).eigenvalues().cwiseAbs().maxCoeff();
         const double expected = std::exp(alpha * tsSeconds);
         if (std::isfinite(expected) && !(std::abs(rho - expected) <= 1e-3 * expected + 1e-3))
-            throw InvalidInput("ts", "the exact discretization over " + formatNumber(tsSeconds) +
-                                         " s loses double precision (a very fast pole beside a "
-                                         "large gain): its step matrix grows by " +
-                                         formatNumber(rho, 3) +
-                                         " a step where the system grows by " +
-                                         formatNumber(expected, 3) +
-                                         "; use a smaller sample time or rescale the model");
+            throw InvalidInput("ts", makeDiagnostic("model_discretization_loses_precision",
+                                                    {formatNumber(tsSeconds), formatNumber(rho, 3),
+                                                     formatNumber(expected, 3)}));
     }
     return foh;
 }

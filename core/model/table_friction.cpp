@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/table_friction.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -26,7 +27,7 @@ namespace {
 
 void requireNonNegative(double value, const std::string& field) {
     if (!std::isfinite(value) || value < 0.0)
-        throw InvalidInput(field, "must be a finite number >= 0");
+        throw InvalidInput(field, makeDiagnostic("finite_not_negative"));
 }
 
 } // namespace
@@ -39,18 +40,16 @@ void validateTableFriction(const TableFriction& f, const std::string& prefix) {
     requireNonNegative(f.backlashMm, prefix + "backlash");
     requireNonNegative(f.amplifierDeadbandVolts, prefix + "amplifier_deadband");
     if (f.staticVolts != 0.0 && f.staticVolts < f.coulombVolts)
-        throw InvalidInput(prefix + "static",
-                           "must be at least the Coulomb level (or 0 for the Coulomb level)");
+        throw InvalidInput(prefix + "static", makeDiagnostic("model_static_below_coulomb"));
     if (f.staticVolts > f.coulombVolts && !(f.stribeckVelocityMmPerS > 0.0))
-        throw InvalidInput(prefix + "stribeck_velocity",
-                           "must be > 0 when the static level is above the Coulomb level");
+        throw InvalidInput(prefix + "stribeck_velocity", makeDiagnostic("model_stribeck_velocity"));
 }
 
 void validateFrictionCompensation(const FrictionCompensation& c, const std::string& prefix) {
     if (!std::isfinite(c.percent) || c.percent < 0.0 || c.percent > 200.0)
-        throw InvalidInput(prefix + "percent", "must be between 0 and 200 %");
+        throw InvalidInput(prefix + "percent", makeDiagnostic("model_compensation_percent"));
     if (!std::isfinite(c.bandMmPerS) || !(c.bandMmPerS > 0.0))
-        throw InvalidInput(prefix + "band", "must be a finite number > 0 (mm/s)");
+        throw InvalidInput(prefix + "band", makeDiagnostic("model_compensation_band"));
 }
 
 } // namespace xyt

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/model/transfer_function.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -14,9 +15,9 @@ TransferFunction::TransferFunction()
 TransferFunction::TransferFunction(const Polynomial& num, const Polynomial& den, double tsSeconds)
     : ts_(tsSeconds) {
     if (!std::isfinite(tsSeconds) || tsSeconds < 0.0)
-        throw InvalidInput("ts", "sample time must be a finite number >= 0 (0 for continuous)");
+        throw InvalidInput("ts", makeDiagnostic("model_sample_time"));
     if (den.isZero())
-        throw InvalidInput("den", "the denominator is zero");
+        throw InvalidInput("den", makeDiagnostic("model_denominator_zero"));
     const double scale = 1.0 / den.leading();
     num_ = scale * num;
     den_ = scale * den;
@@ -32,9 +33,9 @@ TransferFunction TransferFunction::fromZInverse(const Polynomial& numZInv,
                                                 const Polynomial& denZInv, double tsSeconds) {
     requirePositive(tsSeconds, "ts");
     if (denZInv.isZero())
-        throw InvalidInput("den", "the denominator is zero");
+        throw InvalidInput("den", makeDiagnostic("model_denominator_zero"));
     if (denZInv.coefficient(0) == 0.0)
-        throw InvalidInput("den", "the z^0 coefficient of the denominator must be nonzero");
+        throw InvalidInput("den", makeDiagnostic("model_z0_coefficient_zero"));
     const int n = std::max(numZInv.degree(), denZInv.degree());
     return TransferFunction(numZInv.reversed(n), denZInv.reversed(n), tsSeconds);
 }
@@ -45,15 +46,15 @@ TransferFunction TransferFunction::gain(double k, double tsSeconds) {
 
 Polynomial TransferFunction::numZInverse() const {
     if (!isDiscrete())
-        throw InvalidInput("ts", "a continuous system has no z^-1 form");
+        throw InvalidInput("ts", makeDiagnostic("model_continuous_no_zinv"));
     if (!isProper())
-        throw InvalidInput("num", "an improper discrete system has no causal z^-1 form");
+        throw InvalidInput("num", makeDiagnostic("model_improper_no_zinv"));
     return num_.reversed(den_.degree());
 }
 
 Polynomial TransferFunction::denZInverse() const {
     if (!isDiscrete())
-        throw InvalidInput("ts", "a continuous system has no z^-1 form");
+        throw InvalidInput("ts", makeDiagnostic("model_continuous_no_zinv"));
     return den_.reversed(den_.degree());
 }
 
@@ -128,7 +129,7 @@ bool TransferFunction::isStable() const {
 namespace {
 double commonSampleTime(const TransferFunction& a, const TransferFunction& b) {
     if (a.tsSeconds() != b.tsSeconds())
-        throw InvalidInput("ts", "cannot combine systems with different sample times");
+        throw InvalidInput("ts", makeDiagnostic("model_different_sample_times"));
     return a.tsSeconds();
 }
 } // namespace
@@ -146,7 +147,7 @@ TransferFunction parallel(const TransferFunction& a, const TransferFunction& b) 
 TransferFunction feedback(const TransferFunction& g, const TransferFunction& h, int sign) {
     const double ts = commonSampleTime(g, h);
     if (sign != 1 && sign != -1)
-        throw InvalidInput("sign", "must be +1 or -1");
+        throw InvalidInput("sign", makeDiagnostic("model_sign"));
     // g/(1 - sign g h) = Ng Dh / (Dg Dh - sign Ng Nh)
     return TransferFunction(
         g.num() * h.den(), g.den() * h.den() - static_cast<double>(sign) * (g.num() * h.num()), ts);

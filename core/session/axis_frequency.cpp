@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/axis_frequency.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/design_method_module.h"
 
@@ -18,7 +19,7 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
                                       : std::numeric_limits<double>::quiet_NaN();
     const std::optional<LoopTransferFunctions> loop = axisLoop(evaluation);
     if (!loop) {
-        out.error = evaluation.ok ? "the axis has no loop to analyse" : evaluation.error;
+        out.error = evaluation.ok ? makeDiagnostic("session_no_loop_to_analyse") : evaluation.error;
         return out;
     }
     try {
@@ -60,7 +61,7 @@ AxisFrequencyAnalysis analyzeAxisFrequency(const Session& session,
         const double reference = out.referenceOmegaRadPerSec;
         out = AxisFrequencyAnalysis{};
         out.referenceOmegaRadPerSec = reference;
-        out.error = e.what();
+        out.error = makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
     }
     return out;
 }

@@ -4,6 +4,7 @@
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/nyquist.h"
 #include "core/analysis/stability_margins.h"
+#include "core/model/diagnostic.h"
 #include "core/session/session_evaluation.h"
 
 #include <optional>
@@ -19,7 +20,7 @@ namespace xyt {
  */
 struct AxisFrequencyAnalysis {
     bool ok = false;
-    std::string error; ///< when !ok: why there is no analysis (e.g. the axis has no design)
+    Diagnostic error; ///< when !ok: why there is no analysis (e.g. the axis has no design)
     LoopTransferFunctions loop;
     LoopFrequencyResponses responses; ///< L, S, T and u/r on `responses.openLoop.omegaRadPerSec`
     StabilityMargins margins;

@@ -22,7 +22,7 @@ std::function<double(double)> sessionReference(const TrajectorySettings& traject
     try {
         return axisReference(trajectory, axisIndex);
     } catch (const InvalidInput& e) {
-        throw RunRefused(e.field(), e.reason());
+        throw RunRefused(e.field(), e.reasonDiagnostic());
     }
 }
 
@@ -33,12 +33,11 @@ std::vector<double> axisSampleTimes(const TrajectorySettings& trajectory, double
     try {
         times = sampleTimes(duration, dt);
     } catch (const InvalidInput& e) {
-        throw RunRefused(e.field() == "dt" ? dtField : culprit, e.reason());
+        throw RunRefused(e.field() == "dt" ? dtField : culprit, e.reasonDiagnostic());
     }
     if (times.size() < 2)
-        throw RunRefused(culprit, "gives a single sample (step " + formatNumber(dt) +
-                                      " s, duration " + formatNumber(duration) +
-                                      " s); at least two samples are needed for the metrics");
+        throw RunRefused(culprit, makeDiagnostic("session_single_sample",
+                                                 {formatNumber(dt), formatNumber(duration)}));
     return times;
 }
 
@@ -61,8 +60,9 @@ double minDigitalDamping(const std::vector<std::complex<double>>& poles) {
 void finishDigital(const Session& session, DigitalEvaluation& d, AxisEvaluation& out) {
     d.metrics = trackingMetrics(d.run.result);
     d.minDamping = minDigitalDamping(d.poles);
+    // (a diagnostic of core/simulation, kept as it comes)
     if (const auto w = digitalDampingWarning(d.poles, d.designMinDamping, d.tsSeconds))
-        out.warnings.push_back(*w);
+        out.warnings.push_back(Diagnostic(*w));
     const TrajectorySettings& t = session.trajectory;
     if (t.kind != TrajectoryKind::Cubic)
         return;
@@ -87,33 +87,28 @@ const TableFriction* axisTable(const AxisSettings& axis, int axisIndex) {
     if (axis.method == DesignMethod::PolePlacementZpetc) {
         // An ARX model has no mass to put friction on: its table is an input dead zone.
         const TableFriction& f = axis.friction;
-        const auto refuse = [&](const char* field, const char* what) {
+        const auto refuse = [&](const char* field, const char* code) {
             throw InvalidInput(axisFieldPath(axisIndex, std::string("friction.") + field),
-                               std::string(what) +
-                                   " needs the moving mass of a continuous plant; a "
-                                   "pole-placement axis' ARX model takes the Coulomb level and "
-                                   "the amplifier deadband only, as a dead zone of its input");
+                               makeDiagnostic(code));
         };
         if (f.staticVolts > f.coulombVolts)
-            refuse("static", "a static level above the Coulomb level");
+            refuse("static", "session_arx_static_level");
         if (f.viscousVoltsPerMmPerS != 0.0)
-            refuse("viscous", "viscous friction");
+            refuse("viscous", "session_arx_viscous");
         if (f.backlashMm != 0.0)
-            refuse("backlash", "backlash");
+            refuse("backlash", "session_arx_backlash");
         if (axis.frictionCompensation.percent != 0.0)
-            refuse("compensation.percent", "friction compensation");
+            refuse("compensation.percent", "session_arx_compensation");
     }
     if (!axis.friction.active())
         return nullptr;
     if (axis.method != DesignMethod::PolePlacementZpetc && axis.gt.flexibleMode.present())
         throw InvalidInput(axisFieldPath(axisIndex, "gt.flexible_mode.frequency"),
-                           "a flexible mode and the table's friction are not simulated together "
-                           "(the friction model's moving mass is rigid): set the mode's "
-                           "frequency or the friction levels to 0");
+                           makeDiagnostic("session_mode_and_friction"));
     try {
         validateTableFriction(axis.friction);
     } catch (const InvalidInput& e) {
-        throw InvalidInput(axisFieldPath(axisIndex, "friction." + e.field()), e.reason());
+        throw InvalidInput(axisFieldPath(axisIndex, "friction." + e.field()), e.reasonDiagnostic());
     }
     return &axis.friction;
 }
@@ -132,7 +127,7 @@ std::vector<double> frictionFeedforward(const AxisSettings& axis, int axisIndex,
         validateFrictionCompensation(c);
     } catch (const InvalidInput& e) {
         throw InvalidInput(axisFieldPath(axisIndex, "friction.compensation." + e.field()),
-                           e.reason());
+                           e.reasonDiagnostic());
     }
     const std::size_t n = reference.size();
     std::vector<double> out(n);
@@ -162,11 +157,11 @@ std::vector<double> programAtPeriod(const std::vector<double>& t,
                                     const std::string& field, std::size_t lead) {
     const double steps = std::floor(t.back() / periodSeconds + 1e-9);
     if (!(steps >= 1.0))
-        throw InvalidInput(field, formatNumber(periodSeconds) +
-                                      " s is longer than the program's run (" +
-                                      formatNumber(t.back()) + " s)");
+        throw InvalidInput(field,
+                           makeDiagnostic("session_period_longer_than_run",
+                                          {formatNumber(periodSeconds), formatNumber(t.back())}));
     if (steps + 1.0 + static_cast<double>(lead) > static_cast<double>(sampleLimit()))
-        throw InvalidInput(field, "the run needs more samples than this machine holds");
+        throw InvalidInput(field, makeDiagnostic("session_too_many_samples"));
     std::vector<double> times(static_cast<std::size_t>(steps) + 1 + lead);
     for (std::size_t k = 0; k < times.size(); ++k)
         times[k] = static_cast<double>(k) * periodSeconds;
@@ -192,7 +187,7 @@ auto onContinuousAxis(const AxisSettings& axis, int axisIndex, const std::vector
         return run(axisPlantTransferFunction(axis.gt, axisIndex), options);
     } catch (const InvalidInput& e) {
         if (e.field() == "plant" || e.field() == "initial_output")
-            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
+            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reasonDiagnostic());
         throw;
     }
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/axis_vibration.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 #include "core/session/session_evaluation.h"
@@ -49,7 +50,7 @@ MeasuredOpenLoop measuredOpenLoop(const FrequencyResponseEstimate& measured,
                                   const TransferFunction& controller, double modelUnitsPerMm,
                                   const FrequencyResponse& model, double minCoherence) {
     if (controller.tsSeconds() > 0.0)
-        throw InvalidInput("controller", "must be continuous (a discrete loop has its own model)");
+        throw InvalidInput("controller", makeDiagnostic("session_controller_continuous"));
     requirePositive(modelUnitsPerMm, "model_unit_scale");
     MeasuredOpenLoop out;
     for (std::size_t i = 0; i < measured.frequencyHz.size(); ++i) {
@@ -84,9 +85,7 @@ AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
     try {
         const AxisSettings& axis = session.axes.at(static_cast<std::size_t>(axisIndex));
         if (axis.method == DesignMethod::PolePlacementZpetc)
-            throw InvalidInput("method", "a pole-placement axis runs its ARX model, which holds "
-                                         "whatever mode its data showed: the flexible mode and "
-                                         "the notch apply to continuous plants");
+            throw InvalidInput("method", makeDiagnostic("session_vibration_arx_axis"));
         const GtAxisSettings& gt = axis.gt;
         const TransferFunction rigid = gt.plant.transferFunction();
         const TransferFunction plant = axisPlantTransferFunction(gt, axisIndex);
@@ -98,7 +97,7 @@ AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
             try {
                 out.shaper = designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
             } catch (const InvalidInput& e) {
-                throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+                throw InvalidInput("trajectory.shaping." + e.field(), e.reasonDiagnostic());
             }
         }
         // The grid: three decades below the highest frequency of interest up to 3 times it.
@@ -130,7 +129,7 @@ AxisVibration analyzeAxisVibration(const Session& session, int axisIndex) {
         out.ok = true;
     } catch (const InvalidInput& e) {
         out = {};
-        out.error = e.what();
+        out.error = makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
     }
     return out;
 }

@@ -4,6 +4,7 @@
 #include "core/analysis/frequency_response.h"
 #include "core/design/shaper_sensitivity.h"
 #include "core/identification/spectral_estimate.h"
+#include "core/model/diagnostic.h"
 #include "core/session/session.h"
 
 #include <optional>
@@ -21,7 +22,7 @@ namespace xyt {
  */
 struct AxisVibration {
     bool ok = false;
-    std::string error; ///< when !ok: why (a pole-placement axis, a refused field)
+    Diagnostic error; ///< when !ok: why (a pole-placement axis, a refused field)
     std::vector<double> frequencyHz;
     /// |G| and |G R| in dB re 1 mm/V (the model's units per mm taken out, so a measured
     /// response in mm/V lies on them; R the mode, 1 without one)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/c_export.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -25,16 +26,12 @@ void requireInPrecision(double v, const std::string& field, const std::string& c
     if (precision != CPrecision::Float)
         return;
     if (std::abs(v) > static_cast<double>(FLT_MAX))
-        throw InvalidInput(
-            field, "gives " + exactNumber(v) + " for " + constant + ", beyond the largest float (" +
-                       exactNumber(FLT_MAX) +
-                       "): it would be inf in float arithmetic; export in double precision; "
-                       "nothing was exported");
+        throw InvalidInput(field, makeDiagnostic("session_float_overflow",
+                                                 {exactNumber(v), constant, exactNumber(FLT_MAX)}));
     if (v != 0.0 && static_cast<float>(v) == 0.0f)
-        throw InvalidInput(field, "gives " + exactNumber(v) + " for " + constant +
-                                      ", which rounds to 0 in float (the smallest is " +
-                                      exactNumber(static_cast<double>(FLT_TRUE_MIN)) +
-                                      "); export in double precision; nothing was exported");
+        throw InvalidInput(field, makeDiagnostic("session_float_underflow",
+                                                 {exactNumber(v), constant,
+                                                  exactNumber(static_cast<double>(FLT_TRUE_MIN))}));
 }
 
 std::string realNum(double v, const std::string& field, const std::string& constant,

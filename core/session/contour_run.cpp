@@ -41,11 +41,9 @@ void coupledTrace(const Session& session, const Path& path, const std::vector<bo
     if (std::abs(loops[0]->periodSeconds() - loops[1]->periodSeconds()) >
         1e-9 * loops[0]->periodSeconds())
         throw InvalidInput("cross_coupling",
-                           "needs both axes at one controller period: the x axis runs every " +
-                               formatNumber(loops[0]->periodSeconds()) + " s, the y axis every " +
-                               formatNumber(loops[1]->periodSeconds()) +
-                               " s (a pole-placement axis runs at its Ts, a continuous one at "
-                               "the trajectory's dt)");
+                           makeDiagnostic("session_coupling_one_period_why",
+                                          {formatNumber(loops[0]->periodSeconds()),
+                                           formatNumber(loops[1]->periodSeconds())}));
     const CouplingDirections directions =
         pathCouplingDirections(path, p, loops[0]->periodSeconds(), loops[0]->samples(), rapid);
     out.coupling = runCrossCoupled(*loops[0], *loops[1], directions, session.crossCoupling);
@@ -173,7 +171,7 @@ std::optional<ContourCircularTest> ballbarTestOfProgram(const GcodeProgram& prog
         pointsOnSegments(trace, *circles.opposite, test.reverseX, test.reverseY);
     }
     if (!circles.note.text.empty())
-        warnings.push_back(makeDiagnostic("field_reason", {"ISO 230-4", circles.note}));
+        warnings.push_back(makeDiagnostic("session_iso230_note", {circles.note}));
     if (test.x.size() < 3 || (circles.opposite && test.reverseX.size() < 3)) {
         warnings.push_back(makeDiagnostic("iso230_circle_too_short"));
         return std::nullopt;
@@ -214,7 +212,8 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
             } else if (segment.length() > 0.0 && !program.segments[i].rapid) {
                 const Point2 d = segment.end() - segment.start();
                 lines.push_back({std::atan2(d.y, d.x),
-                                 "program line " + std::to_string(program.segments[i].line)});
+                                 makeDiagnostic("session_program_line",
+                                                {std::to_string(program.segments[i].line)})});
             }
         }
         out.couplingStability =
@@ -228,7 +227,7 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         try {
             shaper = designInputShaper(shaping.type, shaping.frequencyHz, shaping.dampingRatio);
         } catch (const InvalidInput& e) {
-            throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+            throw InvalidInput("trajectory.shaping." + e.field(), e.reasonDiagnostic());
         }
         FeedProfileOptions profileOptions = options.profile;
         profileOptions.maxSamples = std::min(profileOptions.maxSamples, sampleLimit());
@@ -239,7 +238,7 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
         } catch (const InvalidInput& e) {
             throw InvalidInput(e.field() == "shaper.frequency" ? "trajectory.shaping.frequency"
                                                                : e.field(),
-                               e.reason());
+                               e.reasonDiagnostic());
         }
         plannedProfile = &*shaped;
     }
@@ -275,8 +274,9 @@ ContourRun runProgramContour(const Session& session, const GcodeProgram& program
     }
     out.warnings.assign(program.warnings.begin(), program.warnings.end());
     addAxisWarnings(out.trace, out.warnings);
-    if (out.couplingStability && !out.couplingStability->warning.empty())
-        out.warnings.push_back("cross-coupling: " + out.couplingStability->warning);
+    if (out.couplingStability && !out.couplingStability->warning.text.empty())
+        out.warnings.push_back(
+            makeDiagnostic("session_cross_coupling_note", {out.couplingStability->warning}));
 
     if (program.isSingleFullCircle()) {
         const std::size_t c = program.fullCircleSegment();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/coupled_digital_run.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/design_method_module.h"
@@ -26,13 +27,13 @@ DigitalContourRun runDigitalProgramContour(const Session& session, const GcodePr
                 .steppedDigitalPath(session, i, p.t, i == 0 ? p.x : p.y);
     const double period = loops[0]->periodSeconds();
     if (std::abs(period - loops[1]->periodSeconds()) > 1e-9 * period)
-        throw InvalidInput("cross_coupling",
-                           "needs both digital controllers at one period: the x axis runs every " +
-                               formatNumber(period) + " s, the y axis every " +
-                               formatNumber(loops[1]->periodSeconds()) + " s");
+        throw InvalidInput(
+            "cross_coupling",
+            makeDiagnostic("session_coupling_one_digital_period",
+                           {formatNumber(period), formatNumber(loops[1]->periodSeconds())}));
     const std::size_t n = std::min(loops[0]->samples(), loops[1]->samples());
     if (loops[0]->samples() != loops[1]->samples())
-        throw InvalidInput("cross_coupling", "the two digital runs do not have the same samples");
+        throw InvalidInput("cross_coupling", makeDiagnostic("session_digital_runs_samples"));
     const std::vector<bool> rapid = programRapidSegments(program);
     DigitalContourRun out;
     out.periodSeconds = period;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/coupled_trajectory.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/design_method_module.h"
@@ -48,9 +49,8 @@ ContourDeviation deviation(const Session& session, const std::vector<double>& t,
 void requireOnePeriod(const SimulationResult& x, const SimulationResult& y) {
     if (x.t.size() != y.t.size() || std::abs(x.dtSeconds - y.dtSeconds) > 1e-9 * x.dtSeconds)
         throw InvalidInput("cross_coupling",
-                           "needs both axes at one controller period: the x axis runs every " +
-                               formatNumber(x.dtSeconds) + " s, the y axis every " +
-                               formatNumber(y.dtSeconds) + " s");
+                           makeDiagnostic("session_coupling_one_period",
+                                          {formatNumber(x.dtSeconds), formatNumber(y.dtSeconds)}));
 }
 
 } // namespace
@@ -111,15 +111,15 @@ CouplingDirections referenceCouplingDirections(const std::vector<double>& x,
 CoupledTrajectoryRun runCoupledTrajectory(const Session& session, const SimulationResult& x,
                                           const SimulationResult& y) {
     if (!session.crossCoupling.active())
-        throw InvalidInput("cross_coupling", "is off (kp and ki are 0)");
+        throw InvalidInput("cross_coupling", makeDiagnostic("session_coupling_off"));
     validateCrossCoupling(session.crossCoupling, "cross_coupling");
     requireOnePeriod(x, y);
     CoupledTrajectoryRun out;
     const bool circle = session.trajectory.kind == TrajectoryKind::Circle;
     std::vector<CoupledLine> lines;
     if (!circle && !x.r.empty())
-        lines.push_back(
-            {std::atan2(y.r.back() - y.r.front(), x.r.back() - x.r.front()), "the move"});
+        lines.push_back({std::atan2(y.r.back() - y.r.front(), x.r.back() - x.r.front()),
+                         makeDiagnostic("session_the_move")});
     out.stability = checkCouplingStability(session, x.dtSeconds, lines, circle);
     out.t = x.t;
     out.referenceX = x.r;
@@ -136,7 +136,7 @@ CoupledTrajectoryRun runCoupledTrajectory(const Session& session, const Simulati
         loops[static_cast<std::size_t>(i)] = m.steppedPath(session, i, axis.t, axis.r, dt);
     }
     if (loops[0]->samples() != out.t.size() || loops[1]->samples() != out.t.size())
-        throw InvalidInput("cross_coupling", "the two axes' runs do not have the same samples");
+        throw InvalidInput("cross_coupling", makeDiagnostic("session_axes_runs_samples"));
     out.coupling = runCrossCoupled(*loops[0], *loops[1], referenceCouplingDirections(x.r, y.r),
                                    session.crossCoupling);
     for (std::size_t i = 0; i < 2; ++i)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/coupling_export.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/c_export.h"
@@ -21,16 +22,15 @@ std::string crossCouplingCBlock(const Session& session, const SessionEvaluation&
     for (int i = 0; i < 2; ++i) {
         const AxisEvaluation& a = evaluation.axes[static_cast<std::size_t>(i)];
         if (!a.ok || !a.digital)
-            throw InvalidInput("cross_coupling", "axis " +
-                                                     session.axes[static_cast<std::size_t>(i)].id +
-                                                     " has no digital implementation to couple");
+            throw InvalidInput("cross_coupling",
+                               makeDiagnostic("session_axis_no_digital_to_couple",
+                                              {session.axes[static_cast<std::size_t>(i)].id}));
         period[i] = a.digital->tsSeconds;
     }
     if (std::abs(period[0] - period[1]) > 1e-9 * period[0])
         throw InvalidInput("cross_coupling",
-                           "needs both digital controllers at one period: the x axis runs every " +
-                               formatNumber(period[0]) + " s, the y axis every " +
-                               formatNumber(period[1]) + " s");
+                           makeDiagnostic("session_coupling_one_digital_period",
+                                          {formatNumber(period[0]), formatNumber(period[1])}));
     const std::string& x = session.axes[0].id;
     const std::string& y = session.axes[1].id;
     const CPrecision p = options.precision;

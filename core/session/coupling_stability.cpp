@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/coupling_stability.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/design_method_module.h"
@@ -37,11 +38,8 @@ CouplingStability checkCouplingStability(const Session& session, double periodSe
                 .couplingModel(session, i, periodSeconds);
     const double tx = models[0].periodSeconds, ty = models[1].periodSeconds;
     if (std::abs(tx - ty) > 1e-9 * std::max(tx, ty))
-        throw InvalidInput("cross_coupling",
-                           "needs both axes at one controller period: the x axis runs every " +
-                               formatNumber(tx) + " s, the y axis every " + formatNumber(ty) +
-                               " s (a pole-placement axis runs at its Ts, a continuous one at "
-                               "the trajectory's dt)");
+        throw InvalidInput("cross_coupling", makeDiagnostic("session_coupling_one_period_why",
+                                                            {formatNumber(tx), formatNumber(ty)}));
     models[1].periodSeconds = tx; // equal to round-off: one period for the analysis
     CouplingStability out;
     out.periodSeconds = tx;
@@ -61,12 +59,11 @@ CouplingStability checkCouplingStability(const Session& session, double periodSe
         const CoupledLineLoop loop = loopAt(theta, false);
         if (!loop.bounded)
             throw InvalidInput("cross_coupling",
-                               "the coupled loop is unstable on " + line.where + " (direction " +
-                                   degrees(line.thetaRad) + "): spectral radius " +
-                                   formatNumber(loop.spectralRadius, 6) +
-                                   "; lower the coupling's gains (kp " +
-                                   formatNumber(session.crossCoupling.kp) + " V/mm, ki " +
-                                   formatNumber(session.crossCoupling.ki) + " V/(mm s))");
+                               makeDiagnostic("session_coupled_loop_unstable",
+                                              {line.where, degrees(line.thetaRad),
+                                               formatNumber(loop.spectralRadius, 6),
+                                               formatNumber(session.crossCoupling.kp),
+                                               formatNumber(session.crossCoupling.ki)}));
         if (!any || loop.spectralRadius > out.worst.spectralRadius) {
             out.worst = loop;
             out.worstThetaRad = theta;
@@ -94,11 +91,10 @@ CouplingStability checkCouplingStability(const Session& session, double periodSe
             any = true;
         }
         if (out.unboundedFrozenDirections > 0)
-            out.warning =
-                "the coupled loop frozen at " + std::to_string(out.unboundedFrozenDirections) +
-                " of " + std::to_string(kDirections) +
-                " directions is unstable (spectral radius up to " + formatNumber(worstFrozen, 6) +
-                " at " + degrees(worstFrozenTheta) + "): on the arcs the coupling may not settle";
+            out.warning = makeDiagnostic("session_coupling_frozen_unstable",
+                                         {std::to_string(out.unboundedFrozenDirections),
+                                          std::to_string(kDirections), formatNumber(worstFrozen, 6),
+                                          degrees(worstFrozenTheta)});
     }
     if (any) // the margins of the worst direction
         out.worst = loopAt(out.worstThetaRad, true);

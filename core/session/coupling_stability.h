@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/analysis/coupled_line_loop.h"
+#include "core/model/diagnostic.h"
 
 #include <cstddef>
 #include <string>
@@ -14,7 +15,7 @@ struct Session;
 /// One straight stretch of a path the coupled loop runs along: its direction and where it is.
 struct CoupledLine {
     double thetaRad = 0.0;
-    std::string where; ///< "program line 12", "the move"
+    Diagnostic where; ///< "program line 12", "the move"
 };
 
 /**
@@ -38,7 +39,7 @@ struct CouplingStability {
     std::size_t frozenDirections = 0;
     std::size_t unboundedFrozenDirections = 0;
     /// The arcs' warning ("" when none).
-    std::string warning;
+    Diagnostic warning;
 };
 
 /**

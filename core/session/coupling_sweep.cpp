@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/coupling_sweep.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/coupled_trajectory.h"
@@ -22,19 +23,21 @@ CouplingSweepGrid normalizedCouplingSweepGrid(CouplingSweepGrid grid) {
     for (auto* list : {&grid.kpVoltsPerMm, &grid.kiVoltsPerMmSecond}) {
         const std::string field = list == &grid.kpVoltsPerMm ? "kp" : "ki";
         if (list->empty())
-            throw InvalidInput(field, "needs at least one value");
+            throw InvalidInput(field, makeDiagnostic("session_needs_one_value"));
         for (double v : *list)
             if (!std::isfinite(v) || v < 0.0)
-                throw InvalidInput(field, formatNumber(v) + " is not a finite gain >= 0");
+                throw InvalidInput(field,
+                                   makeDiagnostic("session_not_a_finite_gain", {formatNumber(v)}));
         std::sort(list->begin(), list->end());
         list->erase(std::unique(list->begin(), list->end()), list->end());
     }
     const std::size_t pairs = grid.kpVoltsPerMm.size() * grid.kiVoltsPerMmSecond.size();
     if (pairs > kMaxCouplingSweepCells)
-        throw InvalidInput("grid", std::to_string(grid.kpVoltsPerMm.size()) + " values of kp and " +
-                                       std::to_string(grid.kiVoltsPerMmSecond.size()) +
-                                       " of ki make " + std::to_string(pairs) + " pairs: at most " +
-                                       std::to_string(kMaxCouplingSweepCells));
+        throw InvalidInput("grid", makeDiagnostic("session_too_many_pairs",
+                                                  {std::to_string(grid.kpVoltsPerMm.size()),
+                                                   std::to_string(grid.kiVoltsPerMmSecond.size()),
+                                                   std::to_string(pairs),
+                                                   std::to_string(kMaxCouplingSweepCells)}));
     return grid;
 }
 
@@ -60,7 +63,7 @@ std::optional<std::size_t> bestCouplingCell(const std::vector<CouplingSweepCell>
             const CouplingSweepCell& c = cells[i];
             if (c.status != CouplingCellStatus::Ok ||
                 (c.saturated && among != CouplingBestBasis::Saturating) ||
-                (!c.warning.empty() && among == CouplingBestBasis::Robust))
+                (!c.warning.text.empty() && among == CouplingBestBasis::Robust))
                 continue;
             if (!best || c.maxAbsMm < cells[*best].maxAbsMm ||
                 (c.maxAbsMm == cells[*best].maxAbsMm && c.rmsMm < cells[*best].rmsMm))
@@ -92,11 +95,13 @@ CouplingSweepCell sweepCellRefused(const CrossCoupling& coupling, const InvalidI
     CouplingSweepCell cell;
     cell.coupling = coupling;
     const bool unstable = e.field() == "cross_coupling" &&
-                          e.reason().rfind("the coupled loop is unstable on ", 0) == 0;
+                          e.reasonDiagnostic().code == "session_coupled_loop_unstable";
     cell.status = unstable ? CouplingCellStatus::Unstable : CouplingCellStatus::Failed;
     // A traced point that is not finite: the coupled loop diverged along the path.
     cell.message =
-        e.field() == "traced" ? "the coupled run diverged (" + e.reason() + ")" : e.what();
+        e.field() == "traced"
+            ? makeDiagnostic("session_coupled_run_diverged_because", {e.reasonDiagnostic()})
+            : makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
     return cell;
 }
 
@@ -105,7 +110,7 @@ void sweepCellRequireFinite(CouplingSweepCell& cell) {
     if (std::isfinite(cell.maxAbsMm) && std::isfinite(cell.rmsMm))
         return;
     cell.status = CouplingCellStatus::Failed;
-    cell.message = "the coupled run diverged (its contour error is not a finite number)";
+    cell.message = makeDiagnostic("session_coupled_run_diverged");
     cell.maxAbsMm = cell.rmsMm = std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -271,8 +276,8 @@ CouplingSweepResult sweepSessionCoupling(const Session& session,
     for (std::size_t i = 0; i < 2; ++i)
         if (!evaluation.axes[i].ok)
             throw InvalidInput("axes[" + std::to_string(i) + "]",
-                               "cannot run: " + evaluation.axes[i].errorField + ": " +
-                                   evaluation.axes[i].error);
+                               makeDiagnostic("session_cannot_run", {evaluation.axes[i].errorField,
+                                                                     evaluation.axes[i].error}));
     if (session.trajectory.kind != TrajectoryKind::Gcode)
         return sweepTrajectoryCoupling(session, evaluation.axes[0].run, evaluation.axes[1].run,
                                        grid, sweep);

@@ -4,6 +4,7 @@
 #include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
 #include "core/design/cross_coupling.h"
+#include "core/model/diagnostic.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
 #include "core/session/session_evaluation.h"
@@ -74,7 +75,7 @@ const char* couplingCellStatusName(CouplingCellStatus status);
 struct CouplingSweepCell {
     CrossCoupling coupling; ///< the cell's gains with the session's estimate
     CouplingCellStatus status = CouplingCellStatus::NotRun;
-    std::string message; ///< Unstable and Failed: the run's refusal ("cross_coupling: ...")
+    Diagnostic message; ///< Unstable and Failed: the run's refusal ("cross_coupling: ...")
     /// Ok: the contour error along the path (mm), G0 rapids left out (ContourErrorResult, or
     /// ContourDeviation for a session trajectory that is not a program).
     double maxAbsMm = std::numeric_limits<double>::quiet_NaN();
@@ -85,7 +86,7 @@ struct CouplingSweepCell {
     double diskMargin = std::numeric_limits<double>::quiet_NaN();
     /// Ok: the coupled loop frozen on the arcs is unstable at some direction
     /// (CouplingStability::warning), or "".
-    std::string warning;
+    Diagnostic warning;
     /// Ok: an axis' command reached the actuator limit (a clipped sample of either axis' run).
     bool saturated = false;
 };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/design_method_module.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/guillemin_truxal_method.h"
@@ -51,29 +52,29 @@ std::string coefficientText(const DesignCoefficient& c) {
 std::unique_ptr<SteppedLoop> DesignMethodModule::steppedPath(
     const Session& /*session*/, int /*axisIndex*/, const std::vector<double>& /*t*/,
     const std::vector<double>& /*reference*/, double /*dtSeconds*/) const {
-    throw InvalidInput("cross_coupling",
-                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 SampledAxisModel DesignMethodModule::couplingModel(const Session& /*session*/, int /*axisIndex*/,
                                                    double /*periodSeconds*/) const {
-    throw InvalidInput("cross_coupling",
-                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 std::unique_ptr<SampledLoopStepper>
 DesignMethodModule::steppedDigitalPath(const Session& /*session*/, int /*axisIndex*/,
                                        const std::vector<double>& /*t*/,
                                        const std::vector<double>& /*reference*/) const {
-    throw InvalidInput("cross_coupling",
-                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 std::string DesignMethodModule::cCoupledAxis(const Session& /*session*/,
                                              const AxisEvaluation& /*axis*/,
                                              int /*axisIndex*/) const {
-    throw InvalidInput("cross_coupling",
-                       "the " + std::string(displayName()) + " method's loop takes no coupling");
+    throw InvalidInput("cross_coupling", makeDiagnostic("session_method_takes_no_coupling",
+                                                        {std::string(displayName())}));
 }
 
 std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*settings*/,
@@ -105,7 +106,7 @@ const DesignMethodModule& designMethodModule(DesignMethod method) {
     for (const DesignMethodModule* m : designMethodModules())
         if (m->method() == method)
             return *m;
-    throw InvalidInput("method", "no design method is registered for this value");
+    throw InvalidInput("method", makeDiagnostic("session_method_not_registered"));
 }
 
 const DesignMethodModule* findDesignMethodModule(std::string_view id) {
@@ -117,21 +118,18 @@ const DesignMethodModule* findDesignMethodModule(std::string_view id) {
 
 void registerDesignMethodModule(std::unique_ptr<const DesignMethodModule> module) {
     if (!module)
-        throw InvalidInput("method", "no module to register");
+        throw InvalidInput("method", makeDiagnostic("session_no_module"));
     const std::string id(module->id());
     if (!isKey(id, true))
-        throw InvalidInput(
-            "method", "the id '" + id + "' must be 1 to 32 lower-case letters, digits, '-' or '_'");
+        throw InvalidInput("method", makeDiagnostic("session_bad_method_id", {id}));
     for (const DesignMethodModule* m : registry())
         if (m->method() == module->method() || m->id() == module->id())
-            throw InvalidInput("method", "a method with the value or the id of '" + id +
-                                             "' is registered already");
+            throw InvalidInput("method", makeDiagnostic("session_method_registered", {id}));
     for (const MethodParameter& p : module->parameters())
         if (!isMethodParameterName(p.name) || !(p.minimum <= p.defaultValue) ||
             !(p.defaultValue <= p.maximum))
-            throw InvalidInput("method", "the parameter '" + p.name + "' of '" + id +
-                                             "' needs a name of lower-case letters, digits and "
-                                             "'_' and minimum <= default <= maximum");
+            throw InvalidInput("method",
+                               makeDiagnostic("session_bad_method_parameter", {p.name, id}));
     registry().push_back(module.get());
     registeredModules().push_back(std::move(module));
 }
@@ -147,10 +145,15 @@ double methodParameterValue(const AxisSettings& settings, int axisIndex,
         return parameter.defaultValue;
     const double v = it->second;
     if (!std::isfinite(v) || v < parameter.minimum || v > parameter.maximum)
-        throw InvalidInput("axes[" + std::to_string(axisIndex) + "].parameters." + parameter.name,
-                           shown(v) + " is out of range: " + parameter.label + " must be within " +
-                               shown(parameter.minimum) + " .. " + shown(parameter.maximum) +
-                               (parameter.unit.empty() ? "" : " " + parameter.unit));
+        throw InvalidInput(
+            "axes[" + std::to_string(axisIndex) + "].parameters." + parameter.name,
+            parameter.unit.empty()
+                ? makeDiagnostic("session_parameter_out_of_range",
+                                 {shown(v), parameter.label, shown(parameter.minimum),
+                                  shown(parameter.maximum)})
+                : makeDiagnostic("session_parameter_out_of_range_unit",
+                                 {shown(v), parameter.label, shown(parameter.minimum),
+                                  shown(parameter.maximum), parameter.unit}));
     return v;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/design_study.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/axis_run.h"
 #include "core/session/pid_feedforward_method.h"
@@ -15,20 +16,19 @@ namespace xyt {
 DesignProblem sessionDesignProblem(const Session& session, int axis,
                                    const StudyFidelity& fidelity) {
     if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
-        throw InvalidInput("axis", "there is no axis " + std::to_string(axis));
+        throw InvalidInput("axis", makeDiagnostic("session_no_axis", {std::to_string(axis)}));
     const AxisSettings& settings = session.axes[static_cast<std::size_t>(axis)];
     std::optional<PidFeedforwardDesign> pid;
     if (settings.method == DesignMethod::PidFeedforward) {
         pid = designPidFeedforward(session, axis);
         if (pid->gains.d != 0.0)
             throw InvalidInput(axisFieldPath(axis, "parameters.d"),
-                               "the design space maps PI gains (with the feedforward): set D to 0");
+                               makeDiagnostic("session_design_space_pi_only"));
     } else if (settings.method != DesignMethod::GuilleminTruxal) {
-        throw InvalidInput("method", "the design space applies to Guillemin-Truxal and PI + "
-                                     "feedforward axes");
+        throw InvalidInput("method", makeDiagnostic("session_design_space_methods"));
     }
     if (fidelity.maxSamples == 1)
-        throw InvalidInput("max_samples", "a run needs at least 2 samples (0: no limit)");
+        throw InvalidInput("max_samples", makeDiagnostic("session_max_samples"));
     DesignProblem problem;
     problem.plant = settings.gt.plant;
     if (settings.gt.flexibleMode.present())

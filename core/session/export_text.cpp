@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/export_text.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/session/friction_export.h"
 
 #include "core/design/pole_placement.h"
@@ -33,8 +34,7 @@ std::string exactNumber(double v) {
 
 double exportableNumber(double v, const std::string& field) {
     if (!std::isfinite(v))
-        throw InvalidInput(field, "gives " + exactNumber(v) +
-                                      " in the export, not a finite number; nothing was exported");
+        throw InvalidInput(field, makeDiagnostic("session_export_not_finite", {exactNumber(v)}));
     return v;
 }
 
@@ -44,7 +44,7 @@ const AxisEvaluation& validAxis(const SessionEvaluation& evaluation, int axisInd
     const AxisEvaluation& a = evaluation.axes.at(static_cast<std::size_t>(axisIndex));
     if (!a.ok)
         throw InvalidInput("axes[" + std::to_string(axisIndex) + "]",
-                           "cannot be exported: " + a.errorField + ": " + a.error);
+                           makeDiagnostic("session_cannot_export", {a.errorField, a.error}));
     return a;
 }
 
@@ -55,11 +55,9 @@ void requireCIdentifier(const Session& session, int axisIndex) {
         return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
     });
     if (!ok)
-        throw InvalidInput(axisField(axisIndex, "id"),
-                           "must be 1 to 16 lower-case letters or digits "
-                           "(it names the exported C functions)");
+        throw InvalidInput(axisField(axisIndex, "id"), makeDiagnostic("session_bad_axis_id"));
     if (axisIndex == 1 && session.axes[0].id == id)
-        throw InvalidInput(axisField(1, "id"), "must differ from axes[0].id");
+        throw InvalidInput(axisField(1, "id"), makeDiagnostic("session_axis_id_not_unique"));
 }
 
 /// The DAC conversion of dacOutput in C (no library call: floor by truncation and correction).
@@ -101,7 +99,7 @@ DigitalController axisDigitalController(const Session& session, const SessionEva
     if (a.gt)
         return discretizePi(a.gt->kp, a.gt->ki, session.controllerTsSeconds, options.piMethod);
     throw InvalidInput("axes[" + std::to_string(axisIndex) + "].method",
-                       "this axis has no digital controller to export");
+                       makeDiagnostic("session_no_digital_controller"));
 }
 
 std::string exportCHeader(const Session& session, const SessionEvaluation& evaluation,
@@ -175,9 +173,7 @@ std::string octaveTrajectoryLines(const TrajectorySettings& t, int axisIndex,
             << num(l[2], f) << " * tau.^2 + " << num(l[3], f)
             << " * tau.^3;  % cubic point-to-point (Braga et al. Eq. 4)\n";
     } else if (t.kind == TrajectoryKind::Gcode) {
-        throw InvalidInput("trajectory.kind",
-                           "a G-code program's feed profile has no closed form for the "
-                           "script; export the simulated signals as CSV instead");
+        throw InvalidInput("trajectory.kind", makeDiagnostic("session_program_no_closed_form"));
     } else {
         out << "envelope = "
             << (t.rampInSeconds > 0
@@ -250,7 +246,8 @@ std::vector<double> csvTimes(const Session& session, const SessionEvaluation& ev
     try {
         return sampleTimes(evaluation.duration.seconds, session.trajectory.dtSeconds);
     } catch (const InvalidInput& e) {
-        throw InvalidInput(e.field() == "dt" ? "trajectory.dt" : "trajectory.duration", e.reason());
+        throw InvalidInput(e.field() == "dt" ? "trajectory.dt" : "trajectory.duration",
+                           e.reasonDiagnostic());
     }
 }
 
@@ -280,12 +277,11 @@ void exportCsv(const Session& session, const SessionEvaluation& evaluation, cons
         for (const auto& [name, v] : columns)
             for (std::size_t k = 0; k < v->size(); ++k)
                 if (!std::isfinite((*v)[k]))
-                    throw InvalidInput(axisField(i, ""),
-                                       std::string("the simulated ") + name + "_" + id + " is " +
-                                           exactNumber((*v)[k]) +
-                                           " at t = " + exactNumber(run.t[k]) +
-                                           " s (an unstable loop, or model_unit_scale or the "
-                                           "trajectory out of range); nothing was exported");
+                    throw InvalidInput(
+                        axisField(i, ""),
+                        makeDiagnostic("session_simulated_not_finite",
+                                       {std::string(name) + "_" + id, exactNumber((*v)[k]),
+                                        exactNumber(run.t[k])}));
     }
     const std::vector<double> times = csvTimes(session, evaluation);
     const std::array<const AxisEvaluation*, 2> axes{&x, &y};

@@ -49,7 +49,9 @@ void evaluateGtDigital(const Session& session, const AxisSettings& axis, int axi
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back(makeDiagnostic("no_digital_implementation", {e.what()}));
+        out.warnings.push_back(
+            makeDiagnostic("no_digital_implementation",
+                           {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
     }
 }
 
@@ -336,7 +338,7 @@ public:
 
     TransferFunction closedLoop(const AxisEvaluation& axis) const override {
         if (!axis.gt)
-            throw InvalidInput("axis", "has no design");
+            throw InvalidInput("axis", makeDiagnostic("session_axis_no_design"));
         return axis.gt->closedLoop;
     }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/identified_axis.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 namespace xyt {
@@ -9,9 +10,12 @@ AxisSettings axisWithIdentifiedModel(const AxisSettings& axis, const IdentifiedM
                                      const IoData& data) {
     if (!model.hasEstimate())
         throw InvalidInput(
-            "model", model.structure + " has no estimate (" + estimationStatusName(model.status) +
-                         (model.message.text.empty() ? std::string() : ": " + model.message.text) +
-                         ")");
+            "model", model.message.text.empty()
+                         ? makeDiagnostic("session_model_no_estimate",
+                                          {model.structure, estimationStatusName(model.status)})
+                         : makeDiagnostic("session_model_no_estimate_because",
+                                          {model.structure, estimationStatusName(model.status),
+                                           model.message}));
     AxisSettings out = axis;
     if (model.plant) {
         out.method = DesignMethod::GuilleminTruxal;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/linuxcnc_export.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/session/friction_export.h"
 
 #include "core/model/errors.h"
@@ -52,11 +53,12 @@ std::string exportLinuxCnc(const Session& session, const SessionEvaluation& eval
         AxisSettings axis = session.axes[i];
         if (axis.method != DesignMethod::GuilleminTruxal &&
             axis.method != DesignMethod::PidFeedforward)
-            throw InvalidInput(axisFieldPath(index, "method"),
-                               "a " + std::string(designMethodModule(axis.method).displayName()) +
-                                   " axis has no LinuxCNC pid equivalent");
+            throw InvalidInput(
+                axisFieldPath(index, "method"),
+                makeDiagnostic("session_no_linuxcnc_pid",
+                               {std::string(designMethodModule(axis.method).displayName())}));
         if (!a.ok)
-            throw InvalidInput(a.errorField, a.error);
+            throw InvalidInput(a.errorField, Diagnostic(a.error)); // its coded reason
         if (feedforwardFromModel || axis.method == DesignMethod::GuilleminTruxal) {
             const AxisSettings withFf = withModelFeedforward(axis, index);
             axis = withFf;

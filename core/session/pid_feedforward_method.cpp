@@ -36,7 +36,7 @@ bool choice(const AxisSettings& settings, int axisIndex, const MethodParameter& 
     const double v = methodParameterValue(settings, axisIndex, p);
     if (v != 0.0 && v != 1.0)
         throw InvalidInput(axisFieldPath(axisIndex, "parameters." + p.name),
-                           "must be 0 or 1, not " + formatNumber(v));
+                           makeDiagnostic("session_not_zero_or_one", {formatNumber(v)}));
     return v == 1.0;
 }
 
@@ -44,7 +44,7 @@ const MethodParameter& parameter(const std::vector<MethodParameter>& all, const 
     for (const MethodParameter& p : all)
         if (p.name == name)
             return p;
-    throw InvalidInput("method", std::string("has no parameter ") + name);
+    throw InvalidInput("method", makeDiagnostic("session_no_parameter", {name}));
 }
 
 /// C(s) = (P + I/s + D s/(Tf s + 1)) / unit, without the factors a zero gain leaves out.
@@ -157,7 +157,7 @@ template <typename Run> auto namingPlant(int axisIndex, Run run) {
         return run();
     } catch (const InvalidInput& e) {
         if (e.field() == "plant" || e.field() == "initial_output")
-            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reason());
+            throw InvalidInput(axisFieldPath(axisIndex, "gt.plant"), e.reasonDiagnostic());
         throw;
     }
 }
@@ -222,7 +222,9 @@ void evaluateDigital(const Session& session, int axisIndex, double duration,
         finishDigital(session, d, out);
         out.digital = std::make_shared<const DigitalEvaluation>(std::move(d));
     } catch (const InvalidInput& e) {
-        out.warnings.push_back(makeDiagnostic("no_digital_implementation", {e.what()}));
+        out.warnings.push_back(
+            makeDiagnostic("no_digital_implementation",
+                           {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
     }
 }
 
@@ -504,7 +506,7 @@ double feedforwardVolts(const ServoPidGains& g, const MotionSample& m) {
 const PidFeedforwardDesign& pidFeedforwardDesign(const AxisEvaluation& axis) {
     const auto* d = dynamic_cast<const PidFeedforwardDesign*>(axis.methodDesign.get());
     if (!d)
-        throw InvalidInput("axis", "has no design");
+        throw InvalidInput("axis", makeDiagnostic("session_axis_no_design"));
     return *d;
 }
 
@@ -538,18 +540,15 @@ PidFeedforwardDesign designPidFeedforward(const Session& session, int axisIndex)
     requirePositive(d.tsSeconds, "controller_ts");
     if (g.derivativeFilterSeconds > 0.0 && g.derivativeFilterSeconds < d.tsSeconds / kPi)
         throw InvalidInput(axisFieldPath(axisIndex, "parameters.derivative_filter"),
-                           formatNumber(g.derivativeFilterSeconds) +
-                               " s puts the filter's corner 1/Tf beyond the Nyquist frequency "
-                               "pi/Ts of the controller period: use 0 (no filter) or at least " +
-                               formatNumber(d.tsSeconds / kPi, 4) + " s");
+                           makeDiagnostic("session_derivative_filter_beyond_nyquist",
+                                          {formatNumber(g.derivativeFilterSeconds),
+                                           formatNumber(d.tsSeconds / kPi, 4)}));
     if (g.p == 0.0 && g.i == 0.0 && g.d == 0.0)
         throw InvalidInput(axisFieldPath(axisIndex, "parameters.p"),
-                           "P, I and D are all 0: the axis has no feedback");
+                           makeDiagnostic("session_pid_no_feedback"));
     if (axis.gt.notch.present())
         throw InvalidInput(axisFieldPath(axisIndex, "gt.notch.centre"),
-                           "a PID + feedforward axis runs LinuxCNC's pid, which has no notch "
-                           "stage: set the centre to 0, or design the axis by Guillemin-Truxal, "
-                           "whose PI takes the notch");
+                           makeDiagnostic("session_pid_no_notch"));
     d.unit = axis.gt.modelUnitsPerPositionUnit;
     try {
         axis.gt.plant.validate();
@@ -558,7 +557,7 @@ PidFeedforwardDesign designPidFeedforward(const Session& session, int axisIndex)
     } catch (const InvalidInput& e) {
         const std::string part =
             e.field() == "model_unit_scale" ? "gt.model_unit_scale" : "gt.plant." + e.field();
-        throw InvalidInput(axisFieldPath(axisIndex, part), e.reason());
+        throw InvalidInput(axisFieldPath(axisIndex, part), e.reasonDiagnostic());
     }
     d.continuousFilterSeconds =
         g.derivativeFilterSeconds > 0.0 ? g.derivativeFilterSeconds : d.tsSeconds / 2.0;
@@ -631,10 +630,10 @@ AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex) {
         out.parameters["i"] = gt.ki * unit;
         out.parameters["d"] = 0.0;
     } else if (axis.method != DesignMethod::PidFeedforward) {
-        throw InvalidInput(axisFieldPath(axisIndex, "method"),
-                           "a " + std::string(designMethodModule(axis.method).displayName()) +
-                               " axis has no feedforward from a continuous model (pole "
-                               "placement's model-inverse feedforward is its ZPETC)");
+        throw InvalidInput(
+            axisFieldPath(axisIndex, "method"),
+            makeDiagnostic("session_no_model_feedforward",
+                           {std::string(designMethodModule(axis.method).displayName())}));
     }
     ModelFeedforwardGains ff;
     try {
@@ -642,7 +641,7 @@ AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex) {
     } catch (const InvalidInput& e) {
         const std::string part =
             e.field() == "model_unit_scale" ? "gt.model_unit_scale" : "gt.plant." + e.field();
-        throw InvalidInput(axisFieldPath(axisIndex, part), e.reason());
+        throw InvalidInput(axisFieldPath(axisIndex, part), e.reasonDiagnostic());
     }
     out.parameters["ff0"] = 0.0;
     out.parameters["ff1"] = ff.ff1;
@@ -656,12 +655,12 @@ PidFeedbackGains pidGainsWithMovedZero(const PidFeedforwardDesign& design,
     PidFeedbackGains out;
     const ServoPidGains& g = design.gains;
     if (!(to.real() < 0.0) || !std::isfinite(to.real()) || !std::isfinite(to.imag())) {
-        out.reason = "a zero in the right half plane (or on the axis) would not be a PID's";
+        out.reason = makeDiagnostic("session_pid_zero_not_in_lhp");
         return out;
     }
     const auto finish = [&](double p, double i, double d) {
         if (!(p >= 0.0 && i >= 0.0 && d >= 0.0) || !std::isfinite(p + i + d)) {
-            out.reason = "that zero needs a negative P, I or D";
+            out.reason = makeDiagnostic("session_pid_zero_negative_gain");
             return out;
         }
         out.ok = true;

@@ -4,6 +4,7 @@
 #include "core/analysis/loop_responses.h"
 #include "core/design/model_feedforward.h"
 #include "core/design/servo_pid.h"
+#include "core/model/diagnostic.h"
 #include "core/session/design_method_module.h"
 #include "core/simulation/sampled_data.h"
 
@@ -88,7 +89,7 @@ AxisSettings withModelFeedforward(const AxisSettings& axis, int axisIndex);
 /// Feedback gains P, I, D (LinuxCNC units), or why a change cannot give any.
 struct PidFeedbackGains {
     bool ok = false;
-    std::string reason; ///< when !ok
+    Diagnostic reason; ///< when !ok
     double p = 0.0, i = 0.0, d = 0.0;
 };
 

@@ -30,8 +30,8 @@ Polynomial fromCoefficients(const std::vector<double>& c, const std::string& fie
  * u = y A(1) / B(1): beyond the actuator limit the axis cannot stay where the trajectory goes,
  * whatever the controller (Patrick, Ishak and Adnan's x-axis model needs 3.03 V at 600 mm).
  */
-std::optional<std::string> reachWarning(const PpAxisSettings& pp,
-                                        const std::vector<double>& reference, double umaxVolts) {
+std::optional<Diagnostic> reachWarning(const PpAxisSettings& pp,
+                                       const std::vector<double>& reference, double umaxVolts) {
     double a1 = 0.0, b1 = 0.0, farthest = 0.0;
     for (double c : pp.a)
         a1 += c;
@@ -48,10 +48,9 @@ std::optional<std::string> reachWarning(const PpAxisSettings& pp,
     const double hold = farthest * a1 / b1;
     if (!(std::abs(hold) > umaxVolts))
         return std::nullopt;
-    return "the trajectory is out of the plant's reach: holding " + formatNumber(farthest, 4) +
-           " mm needs " + formatNumber(std::abs(hold), 3) +
-           " V (the model's steady gain B(1)/A(1) = " + formatNumber(b1 / a1, 4) +
-           " mm/V), beyond the " + formatNumber(umaxVolts) + " V limit";
+    return makeDiagnostic("session_out_of_reach",
+                          {formatNumber(farthest, 4), formatNumber(std::abs(hold), 3),
+                           formatNumber(b1 / a1, 4), formatNumber(umaxVolts)});
 }
 
 void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex, double duration,
@@ -60,12 +59,11 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
     const double deadzone = arxInputDeadzoneVolts(axis, axisIndex);
     requireFinite(pp.t1, "t1");
     if (std::abs(pp.t1) >= 1.0)
-        throw InvalidInput("t1", "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
+        throw InvalidInput("t1", makeDiagnostic("session_t1_outside_unit_circle"));
     out.pp = designPolePlacement(fromCoefficients(pp.a, "a"), fromCoefficients(pp.b, "b"),
                                  Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
     out.zpetc = designZpetc(*out.pp);
-    for (const auto& w : out.pp->warnings)
-        out.warnings.push_back(w);
+    out.warnings.insert(out.warnings.end(), out.pp->warnings.begin(), out.pp->warnings.end());
     const auto reference = sessionReference(session.trajectory, axisIndex); // first, as evaluateGt
     const auto times = axisSampleTimes(session.trajectory, duration, pp.tsSeconds,
                                        "axes[" + std::to_string(axisIndex) + "].pp.ts");
@@ -90,8 +88,8 @@ void evaluatePp(const Session& session, const AxisSettings& axis, int axisIndex,
         out.run = out.feedbackOnlyRun;
     }
     out.metrics = trackingMetrics(out.run);
-    if (const auto w = reachWarning(pp, out.run.r, session.umaxVolts))
-        out.warnings.push_back(*w);
+    if (const auto reachDiagnostic = reachWarning(pp, out.run.r, session.umaxVolts))
+        out.warnings.push_back(*reachDiagnostic);
     // The step figures of the system the axis runs: with ZPETC the step previewed through the
     // feedforward and the loop (the loop Kf B / T alone overshoots 52 % through the
     // NMP zero, which the axis never does); without it the loop alone.
@@ -136,23 +134,22 @@ PpProgramRun ppProgramRun(const PpAxisSettings& pp, int axisIndex, const std::ve
     try {
         requireFinite(pp.t1, "t1");
         if (std::abs(pp.t1) >= 1.0)
-            throw InvalidInput("t1",
-                               "the desired pole -t1 must lie inside the unit circle (|t1| < 1)");
+            throw InvalidInput("t1", makeDiagnostic("session_t1_outside_unit_circle"));
         out.loop = designPolePlacement(Polynomial::fromAscending(pp.a, "a"),
                                        Polynomial::fromAscending(pp.b, "b"),
                                        Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds);
         out.zpetc = designZpetc(out.loop);
     } catch (const InvalidInput& e) {
-        throw InvalidInput(axisFieldPath(axisIndex, "pp." + e.field()), e.reason());
+        throw InvalidInput(axisFieldPath(axisIndex, "pp." + e.field()), e.reasonDiagnostic());
     }
     const double steps = std::floor(t.back() / pp.tsSeconds + 1e-9);
     if (!(steps >= 1.0))
         throw InvalidInput(axisFieldPath(axisIndex, "pp.ts"),
-                           formatNumber(pp.tsSeconds) + " s is longer than the program's run (" +
-                               formatNumber(t.back()) + " s)");
+                           makeDiagnostic("session_period_longer_than_run",
+                                          {formatNumber(pp.tsSeconds), formatNumber(t.back())}));
     if (steps + 1.0 > static_cast<double>(sampleLimit()))
         throw InvalidInput(axisFieldPath(axisIndex, "pp.ts"),
-                           "the run needs more samples than this machine holds");
+                           makeDiagnostic("session_too_many_samples"));
     out.n = static_cast<std::size_t>(steps) + 1;
     out.times.resize(out.n + static_cast<std::size_t>(out.zpetc.previewSteps));
     for (std::size_t k = 0; k < out.times.size(); ++k)
@@ -389,7 +386,7 @@ public:
                 Polynomial::fromAscending(pp.a, "a"), Polynomial::fromAscending(pp.b, "b"),
                 Polynomial::fromAscending({1.0, pp.t1}), pp.tsSeconds));
         } catch (const InvalidInput& e) {
-            throw InvalidInput(axisFieldPath(axisIndex, "pp." + e.field()), e.reason());
+            throw InvalidInput(axisFieldPath(axisIndex, "pp." + e.field()), e.reasonDiagnostic());
         }
     }
 
@@ -435,7 +432,7 @@ public:
         const Polynomial b = Polynomial::fromAscending(settings.pp.b, "b");
         const double a0 = a.coefficient(0);
         if (a0 == 0.0)
-            throw InvalidInput("a", "A(0) must be nonzero");
+            throw InvalidInput("a", makeDiagnostic("session_a0_zero"));
         std::vector<UncertainParameter> out;
         const auto& ac = a.ascending();
         for (std::size_t i = 1; i < ac.size(); ++i)
@@ -471,7 +468,7 @@ public:
 
     TransferFunction closedLoop(const AxisEvaluation& axis) const override {
         if (!axis.pp)
-            throw InvalidInput("axis", "has no design");
+            throw InvalidInput("axis", makeDiagnostic("session_axis_no_design"));
         return axis.pp->closedLoop();
     }
 
@@ -561,7 +558,7 @@ public:
         std::vector<double> a = settings.pp.a, b = settings.pp.b;
         const double a0 = a.empty() ? 0.0 : a[0];
         if (a0 == 0.0)
-            throw InvalidInput("a", "A(0) must be nonzero");
+            throw InvalidInput("a", makeDiagnostic("session_a0_zero"));
         for (double& c : a)
             c /= a0;
         for (double& c : b)

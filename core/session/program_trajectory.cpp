@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/program_trajectory.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/simulation/trajectory.h"
 
@@ -16,11 +17,12 @@ namespace {
 [[noreturn]] void rethrowAsSessionPath(const InvalidInput& e) {
     const std::string& f = e.field();
     if (f == "dt")
-        throw InvalidInput("trajectory.dt", e.reason());
+        throw InvalidInput("trajectory.dt", e.reasonDiagnostic());
     if (f == "feed_scale" || f == "max_accel" || f == "max_jerk")
-        throw InvalidInput("trajectory.gcode." + f, e.reason());
+        throw InvalidInput("trajectory.gcode." + f, e.reasonDiagnostic());
     if (f == "feed" || f == "corner_angle" || f == "rapid_feed" || f == "path")
-        throw InvalidInput("trajectory.gcode.program", f + ": " + e.reason());
+        throw InvalidInput("trajectory.gcode.program",
+                           makeDiagnostic("field_reason", {f, e.reasonDiagnostic()}));
     throw e;
 }
 
@@ -37,7 +39,9 @@ GcodeProgram readProgramText(const std::string& text) {
     } catch (const InvalidInput& e) {
         // The reader names the line ("line 12") or the whole program ("program").
         throw InvalidInput("trajectory.gcode.program",
-                           e.field() == "program" ? e.reason() : e.field() + ": " + e.reason());
+                           e.field() == "program"
+                               ? e.reasonDiagnostic()
+                               : makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()}));
     }
 }
 

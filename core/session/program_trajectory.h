@@ -3,6 +3,7 @@
 
 #include "core/contour/feed_profile.h"
 #include "core/contour/gcode_reader.h"
+#include "core/model/diagnostic.h"
 #include "core/model/errors.h"
 #include "core/session/contour_run.h"
 #include "core/session/session.h"
@@ -99,7 +100,7 @@ struct ProgramSummary {
     double runSeconds = 0.0; ///< the feed profile's run time
     std::size_t corners = 0; ///< sharp corners where the profile stops
     bool singleFullCircle = false;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 /// @throws InvalidInput as above.
 ProgramSummary summarizeProgram(const TrajectorySettings& trajectory);

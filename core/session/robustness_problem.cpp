@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/robustness_problem.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/number_format.h"
 #include "core/session/contour_run.h"
@@ -20,7 +21,7 @@ namespace {
 /// The problem of axis @p axis from its evaluation @p nominal, as its method's module makes it.
 RobustnessProblem problemOf(const Session& session, int axis, const AxisEvaluation& nominal) {
     if (!nominal.ok)
-        throw InvalidInput(nominal.errorField, nominal.error);
+        throw InvalidInput(nominal.errorField, Diagnostic(nominal.error)); // its coded reason
     return designMethodModule(nominal.method).robustnessProblem(session, axis, nominal);
 }
 
@@ -116,7 +117,7 @@ withThirdOrderPlantParameters(ThirdOrderPlant plant,
 
 RobustnessProblem sessionRobustnessProblem(const Session& session, int axis) {
     if (axis < 0 || static_cast<std::size_t>(axis) >= session.axes.size())
-        throw InvalidInput("axis", "there is no axis " + std::to_string(axis));
+        throw InvalidInput("axis", makeDiagnostic("session_no_axis", {std::to_string(axis)}));
     return problemOf(session, axis, evaluateAxis(session, axis));
 }
 
@@ -136,9 +137,7 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         return p;
     }
     if (session.trajectory.kind != TrajectoryKind::Gcode)
-        throw InvalidInput("trajectory",
-                           "the contour analysis needs a circle or a G-code program (a cubic "
-                           "drives both axes along one line)");
+        throw InvalidInput("trajectory", makeDiagnostic("session_contour_needs_path"));
     const std::shared_ptr<const GcodeProgram> shared = sessionProgram(session.trajectory.gcode);
     const GcodeProgram& program = *shared;
     const ContourRunOptions run = programRunOptions(session.trajectory);
@@ -159,9 +158,8 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         const double periodY = p.y.controller ? p.y.dtSeconds : p.y.loop->tsSeconds;
         if (std::abs(period - periodY) > 1e-9 * period)
             throw InvalidInput("cross_coupling",
-                               "needs both axes at one controller period: the x axis runs every " +
-                                   formatNumber(period) + " s, the y axis every " +
-                                   formatNumber(periodY) + " s");
+                               makeDiagnostic("session_coupling_one_period",
+                                              {formatNumber(period), formatNumber(periodY)}));
         const std::size_t n = p.x.controller ? p.x.reference.size() : p.x.samples;
         const std::vector<bool> rapid = programRapidSegments(program);
         p.coupling =
@@ -175,17 +173,15 @@ void setIdentifiedUncertainty(RobustnessProblem& problem, const Session& session
     const std::string field = "axes[" + std::to_string(axis) + "].model_origin";
     const AxisSettings& settings = session.axes.at(static_cast<std::size_t>(axis));
     if (!settings.origin)
-        throw InvalidInput(field,
-                           "the axis' model was not identified from data (set ranges instead)");
+        throw InvalidInput(field, makeDiagnostic("session_model_not_identified"));
     const ModelOrigin& o = *settings.origin;
     const std::size_t d = o.parameterNames.size();
     if (o.covariance.size() != d * d || d == 0)
-        throw InvalidInput(field, "the identified " + o.structure +
-                                      " has no covariance to draw plants from");
+        throw InvalidInput(field,
+                           makeDiagnostic("session_identified_no_covariance", {o.structure}));
     const bool continuous = o.parameterNames == std::vector<std::string>{"k0", "a1", "a2"};
     if (continuous != problem.controller.has_value())
-        throw InvalidInput(field, "the identified " + o.structure +
-                                      " is not a model of the axis' design method");
+        throw InvalidInput(field, makeDiagnostic("session_identified_wrong_method", {o.structure}));
     // The problem's index of each origin parameter (npos: not in the loop).
     std::vector<std::size_t> at(d, std::string::npos);
     std::vector<double> scale(d, 1.0);

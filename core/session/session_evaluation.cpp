@@ -44,7 +44,7 @@ std::optional<InputShaper> trajectoryShaper(const TrajectorySettings& trajectory
     try {
         shaper = designInputShaper(s.type, s.frequencyHz, s.dampingRatio);
     } catch (const InvalidInput& e) {
-        throw InvalidInput("trajectory.shaping." + e.field(), e.reason());
+        throw InvalidInput("trajectory.shaping." + e.field(), e.reasonDiagnostic());
     }
     double move = 0.0;
     if (trajectory.kind == TrajectoryKind::Cubic)
@@ -52,11 +52,10 @@ std::optional<InputShaper> trajectoryShaper(const TrajectorySettings& trajectory
     else if (trajectory.kind == TrajectoryKind::Gcode)
         move = trajectory.effectiveDurationSeconds() - shaper.duration();
     if (move > 0.0 && shaper.duration() > move)
-        throw InvalidInput(
-            "trajectory.shaping.frequency",
-            std::string("the ") + shaperName(s.type) + " shaper at " + formatNumber(s.frequencyHz) +
-                " Hz lasts " + formatNumber(shaper.duration()) + " s, longer than the move of " +
-                formatNumber(move) + " s: raise the frequency or shorten the shaper");
+        throw InvalidInput("trajectory.shaping.frequency",
+                           makeDiagnostic("session_shaper_longer_than_move",
+                                          {shaperName(s.type), formatNumber(s.frequencyHz),
+                                           formatNumber(shaper.duration()), formatNumber(move)}));
     return shaper;
 }
 
@@ -106,7 +105,7 @@ std::function<double(double)> unshapedAxisReference(const TrajectorySettings& tr
             return [cubic](double t) { return cubic.position(t); };
         }
     } catch (const InvalidInput& e) {
-        throw InvalidInput("trajectory.cubic." + e.field(), e.reason());
+        throw InvalidInput("trajectory.cubic." + e.field(), e.reasonDiagnostic());
     }
     try {
         requirePositive(trajectory.radius, "radius");
@@ -118,7 +117,7 @@ std::function<double(double)> unshapedAxisReference(const TrajectorySettings& tr
         s.validate();
         return [s](double t) { return s.value(t); };
     } catch (const InvalidInput& e) {
-        throw InvalidInput("trajectory.circle." + e.field(), e.reason());
+        throw InvalidInput("trajectory.circle." + e.field(), e.reasonDiagnostic());
     }
 }
 
@@ -182,10 +181,10 @@ GtDesign sessionGtDesign(const GtAxisSettings& gt, int axisIndex) {
     } catch (const InvalidInput& e) {
         const std::string axis = "axes[" + std::to_string(axisIndex) + "].gt.";
         if (e.field() == "wn" || e.field() == "kp")
-            throw InvalidInput(axis + e.field(), e.reason());
+            throw InvalidInput(axis + e.field(), e.reasonDiagnostic());
         if (e.field() == "k0" || e.field() == "a1" ||
             e.field() == "a2") // the session file's plant object
-            throw InvalidInput(axis + "plant." + e.field(), e.reason());
+            throw InvalidInput(axis + "plant." + e.field(), e.reasonDiagnostic());
         throw;
     }
     if (!gt.flexibleMode.present() && !gt.notch.present())
@@ -230,9 +229,9 @@ DigitalPi sessionDigitalPi(const Session& session, const GtDesign& design, int a
         return pi;
     } catch (const InvalidInput& e) {
         if (e.field() == "ts")
-            throw InvalidInput("controller_ts", e.reason());
+            throw InvalidInput("controller_ts", e.reasonDiagnostic());
         if (e.field() == "tracking_time")
-            throw InvalidInput("implementation.tracking_time", e.reason());
+            throw InvalidInput("implementation.tracking_time", e.reasonDiagnostic());
         throw;
     }
 }
@@ -256,7 +255,7 @@ SampledDataOptions sessionSampledDataOptions(const Session& session) {
         validateSampledDataOptions(o);
     } catch (const InvalidInput& e) {
         throw InvalidInput(e.field() == "umax" ? "umax" : "implementation." + e.field(),
-                           e.reason());
+                           e.reasonDiagnostic());
     }
     return o;
 }
@@ -264,23 +263,24 @@ SampledDataOptions sessionSampledDataOptions(const Session& session) {
 namespace {
 
 /// Says which criteria the design passes but its digital implementation fails, if any.
-std::optional<std::string> implementationVerdictWarning(const SpecificationCheck& design,
-                                                        const SpecificationCheck& implementation) {
-    std::vector<std::string> failed;
+std::optional<Diagnostic> implementationVerdictWarning(const SpecificationCheck& design,
+                                                       const SpecificationCheck& implementation) {
+    std::vector<Diagnostic> failed;
     if (design.trackingError && !implementation.trackingError)
-        failed.push_back("the tracking error");
+        failed.push_back(makeDiagnostic("session_criterion_tracking_error"));
     if (design.noSaturation && !implementation.noSaturation)
-        failed.push_back("the actuator limit");
+        failed.push_back(makeDiagnostic("session_criterion_actuator_limit"));
     if (design.settleApplies && design.settle && !implementation.settle)
-        failed.push_back("the settle after the move");
+        failed.push_back(makeDiagnostic("session_criterion_settle"));
     if (failed.empty())
         return std::nullopt;
-    std::string list;
-    for (std::size_t i = 0; i < failed.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == failed.size() ? " and " : ", ") + failed[i];
-    return "the design meets " + list +
-           ", its digital implementation does not: the verdict is the "
-           "implementation's";
+    // "a", "a and b", "a, b and c"
+    Diagnostic list = failed.back();
+    if (failed.size() > 1) {
+        failed.pop_back();
+        list = makeDiagnostic("session_list_and", {joinDiagnostics(failed, "list_comma"), list});
+    }
+    return makeDiagnostic("session_implementation_fails", {list});
 }
 
 } // namespace
@@ -313,6 +313,8 @@ namespace {
 
 /// The stick-slip and hunting findings of the runs of a table with dry friction.
 void addStickSlipWarnings(AxisEvaluation& out) {
+    // The findings come from core/simulation, each kept as it comes; the digital run's are
+    // prefixed here.
     if (const auto f = stickSlipFindings(out.run))
         for (Diagnostic& w : stickSlipWarnings(*f))
             out.warnings.push_back(std::move(w));
@@ -415,7 +417,7 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 out.moveSettle = moveSettleMetrics(out.run, {t.x0, t.xf, t.tfSeconds},
                                                    session.spec.inPositionWindowMm);
             } catch (const InvalidInput& e) {
-                throw InvalidInput("specification." + e.field(), e.reason());
+                throw InvalidInput("specification." + e.field(), e.reasonDiagnostic());
             }
             if (!out.moveSettle->reachedMoveEnd)
                 out.warnings.push_back(makeDiagnostic("run_ends_before_move"));
@@ -426,7 +428,9 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
                 if (const std::optional<LoopTransferFunctions> loop = axisLoop(out))
                     out.margins = stabilityMargins(loop->openLoop);
             } catch (const InvalidInput& e) {
-                out.warnings.push_back(makeDiagnostic("no_stability_margins", {e.what()}));
+                out.warnings.push_back(makeDiagnostic(
+                    "no_stability_margins",
+                    {makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
             }
         }
         std::optional<LoopMarginFigures> margins;
@@ -440,15 +444,15 @@ AxisEvaluation evaluateAxisOver(const Session& session, int axisIndex, const Run
             out.implementationCheck = checkSpecification(spec, out.digital->metrics, out.step,
                                                          out.digital->moveSettle, margins);
             out.check = bothPass(out.designCheck, *out.implementationCheck);
-            if (const auto w =
+            if (const auto verdictDiagnostic =
                     implementationVerdictWarning(out.designCheck, *out.implementationCheck))
-                out.warnings.push_back(*w);
+                out.warnings.push_back(*verdictDiagnostic);
         }
         out.ok = true;
     } catch (const InvalidInput& e) {
         out.ok = false;
         out.errorField = e.field();
-        out.error = e.reason();
+        out.error = e.reasonDiagnostic();
         out.runRefused = dynamic_cast<const RunRefused*>(&e) != nullptr;
     }
     return out;
@@ -470,10 +474,6 @@ double slowestDecayPerSecond(const AxisEvaluation& a) {
     return designMethodModule(a.method).slowestDecayPerSecond(a);
 }
 
-std::string seconds(double v) {
-    return formatNumber(v) + " s";
-}
-
 } // namespace
 
 RunDuration chooseRunDuration(const Session& session) {
@@ -483,16 +483,15 @@ RunDuration chooseRunDuration(const Session& session) {
     d.seconds = d.capSeconds;
     d.automatic = !(t.durationSeconds > 0.0) || t.kind == TrajectoryKind::Gcode;
     if (!d.automatic) {
-        d.description = "duration " + seconds(d.seconds) + " (set in the session)";
+        d.description = makeDiagnostic("session_duration_set", {formatNumber(d.seconds)});
         return d;
     }
     if (t.kind == TrajectoryKind::Circle) {
-        d.description =
-            "duration " + seconds(d.seconds) + " (automatic: the ramp-in and one revolution)";
+        d.description = makeDiagnostic("session_duration_circle", {formatNumber(d.seconds)});
         return d;
     }
     if (t.kind == TrajectoryKind::Gcode) {
-        d.description = "duration " + seconds(d.seconds) + " (the program's feed profile)";
+        d.description = makeDiagnostic("session_duration_program", {formatNumber(d.seconds)});
         return d;
     }
     // The move alone first, on both axes, for their error at its end: tf, later by the input
@@ -514,25 +513,24 @@ RunDuration chooseRunDuration(const Session& session) {
     d.settleEstimateSeconds = need;
     if (!any) {
         d.seconds = moveEnd;
-        d.description = "duration " + seconds(d.seconds) +
-                        " (automatic: the move only; no axis has a stable design to settle)";
+        d.description = makeDiagnostic("session_duration_move_only", {formatNumber(d.seconds)});
         return d;
     }
     d.seconds = automaticMoveDurationSeconds(t.t0Seconds, moveEnd, need, d.capSeconds);
     d.capped = d.seconds == d.capSeconds && d.capSeconds > moveEnd;
-    d.description =
-        "duration " + seconds(d.seconds) + " (automatic: the move to tf = " + seconds(t.tfSeconds) +
-        " and the settle into " + formatNumber(session.spec.inPositionWindowMm) +
-        " mm, estimated " + (std::isfinite(need) ? seconds(need) : std::string("never")) +
-        " after tf from the slowest closed-loop pole" +
-        (d.capped
-             ? "; cut to the cap of tf + " + formatNumber(kAutomaticSettleMoves) +
-                   " move durations" +
-                   (d.capSeconds < t.tfSeconds + kAutomaticSettleMoves * (t.tfSeconds - t.t0Seconds)
-                        ? " (lowered to what a million samples hold at this dt)"
-                        : "")
-             : "") +
-        ")";
+    std::vector<Diagnostic> args = {
+        formatNumber(d.seconds), formatNumber(t.tfSeconds),
+        formatNumber(session.spec.inPositionWindowMm),
+        std::isfinite(need) ? makeDiagnostic("study_value_seconds", {formatNumber(need)})
+                            : makeDiagnostic("session_duration_never")};
+    const char* code = "session_duration_settle";
+    if (d.capped) {
+        args.push_back(formatNumber(kAutomaticSettleMoves));
+        code = d.capSeconds < t.tfSeconds + kAutomaticSettleMoves * (t.tfSeconds - t.t0Seconds)
+                   ? "session_duration_settle_lowered"
+                   : "session_duration_settle_capped";
+    }
+    d.description = makeDiagnostic(code, std::move(args));
     return d;
 }
 
@@ -566,9 +564,9 @@ SessionEvaluation evaluateSession(const Session& session) {
             // The path of the shared program itself (aliasing it), not a copy per evaluation.
             out.programPath = std::shared_ptr<const Path>(program, &program->path);
         } catch (const InvalidInput& e) {
-            out.programError = e.what();
+            out.programError = makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
             if (e.field().rfind("cross_coupling", 0) == 0)
-                out.couplingError = e.what();
+                out.couplingError = out.programError;
         }
     }
     if (session.crossCoupling.active() && session.trajectory.kind != TrajectoryKind::Gcode &&
@@ -577,7 +575,7 @@ SessionEvaluation evaluateSession(const Session& session) {
             out.coupledTrajectory = std::make_shared<const CoupledTrajectoryRun>(
                 runCoupledTrajectory(session, x.run, y.run));
         } catch (const InvalidInput& e) {
-            out.couplingError = e.what();
+            out.couplingError = makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()});
         }
     }
     return out;

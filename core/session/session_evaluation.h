@@ -40,7 +40,7 @@ struct RunDuration {
     double settleEstimateSeconds = 0.0; ///< that estimate, s after tf (infinity: never settles)
     bool capped = false;     ///< the wanted run was longer than the cap and was cut to it
     double capSeconds = 0.0; ///< TrajectorySettings::effectiveDurationSeconds()
-    std::string description; ///< one sentence saying what was chosen and why
+    Diagnostic description;  ///< one sentence saying what was chosen and why
 };
 
 /**
@@ -99,7 +99,7 @@ struct ShapingComparison {
 struct AxisEvaluation {
     bool ok = false;
     std::string errorField; ///< when !ok: the invalid setting, e.g. "axes[0].gt.kp"
-    std::string error;      ///< when !ok: the reason
+    Diagnostic error;       ///< when !ok: the reason
     /// When !ok because the run itself was refused (its trajectory is invalid, it would not fit
     /// in memory or would hold a single sample): no figure of this session means anything, and
     /// a report or an export must refuse it, naming errorField (e.g. "trajectory.dt").
@@ -168,13 +168,13 @@ struct SessionEvaluation {
     /// circle the ISO 230-4 test. Shared, since evaluations are copied into the views.
     std::shared_ptr<const ContourRun> program;
     std::shared_ptr<const Path> programPath; ///< the programmed path of `program`
-    std::string programError; ///< why `program` is unset although both axes are valid
+    Diagnostic programError; ///< why `program` is unset although both axes are valid
     /// With cross-coupling on and a trajectory that is not a program (which runs coupled in
     /// `program`), both axes valid: the trajectory run coupled beside the independent axes.
     std::shared_ptr<const CoupledTrajectoryRun> coupledTrajectory;
     /// Why the coupling could not run, or is unstable on a line of the path (its refusal or
     /// warning, for the coupling's editor); empty otherwise.
-    std::string couplingError;
+    Diagnostic couplingError;
 };
 
 /// The reference r(t) that axis @p axisIndex (0 = x, 1 = y) follows; with the trajectory's

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/shaper_advice.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 
@@ -21,14 +22,14 @@ PowerSpectrum accelerometerShaperSpectrum(const AccelerometerSpectra& spectra,
     else if (axis == "sum")
         out.power = spectra.psdSum;
     else
-        throw InvalidInput("axis", "must be x, y, z or sum");
+        throw InvalidInput("axis", makeDiagnostic("session_spectrum_axis"));
     return klipperNormalizeToFrequencies(std::move(out));
 }
 
 PowerSpectrum flexibleModeSpectrum(const FlexibleMode& mode, double maxHz, double stepHz) {
     validateFlexibleMode(mode);
     if (!mode.present())
-        throw InvalidInput("frequency", "there is no flexible mode to take a spectrum of");
+        throw InvalidInput("frequency", makeDiagnostic("session_no_mode_spectrum"));
     requirePositive(maxHz, "max");
     requirePositive(stepHz, "step");
     const TransferFunction r = mode.transferFunction();

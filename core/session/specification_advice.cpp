@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/session/specification_advice.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/number_format.h"
 
 #include <algorithm>
@@ -12,11 +13,11 @@ namespace xyt {
 
 namespace {
 
-std::string axisName(const Session& session, std::size_t i) {
+Diagnostic axisName(const Session& session, std::size_t i) {
     std::string id = session.axes[i].id;
     for (char& c : id)
         c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return "axis " + id;
+    return makeDiagnostic("session_advice_axis", {id});
 }
 
 /// The slowest closed-loop decay of a Guillemin-Truxal axis (rad/s), NaN otherwise.
@@ -68,7 +69,7 @@ std::optional<double> errorBeyond(const AxisEvaluation& a, double fromSeconds) {
 /// value the axes reach (the largest for a maximum, the smallest for a minimum).
 struct LimitMove {
     double Specification::*limit;
-    const char* label; ///< as the change names it, e.g. "max overshoot"
+    const char* label; ///< the code of its name in a change, e.g. "max overshoot"
     const char* unit;
     bool maximum;
     bool needed = false;
@@ -82,12 +83,13 @@ struct LimitMove {
 
 /// Moves the limit of @p move in @p relaxed to what the axes reach, rounded to 3 significant
 /// digits on the side that passes (up for a maximum, down for a minimum), and names the change.
-void relax(const LimitMove& move, Specification& relaxed, std::vector<std::string>& changes) {
+void relax(const LimitMove& move, Specification& relaxed, std::vector<Diagnostic>& changes) {
     if (!move.needed)
         return;
     double& limit = relaxed.*move.limit;
     limit = move.maximum ? roundUp3(move.worst) : roundDown3(move.worst);
-    changes.push_back(std::string(move.label) + " " + formatNumber(limit) + " " + move.unit);
+    changes.push_back(makeDiagnostic("session_advice_change",
+                                     {makeDiagnostic(move.label), formatNumber(limit), move.unit}));
 }
 
 } // namespace
@@ -97,21 +99,26 @@ SpecificationAdvice adviseSpecification(const Session& session,
     SpecificationAdvice out;
     Specification relaxed = session.spec;
     bool possible = true, anyFailure = false;
-    LimitMove overshoot{&Specification::maxOvershootPct, "max overshoot", "%", true};
-    LimitMove settling{&Specification::maxSettlingTimeSeconds, "max settling time", "s", true};
-    LimitMove error{&Specification::maxErrorPct, "max error", "%", true};
-    LimitMove settle{&Specification::maxSettleTimeSeconds, "max settle time", "s", true};
-    LimitMove window{&Specification::inPositionWindowMm, "in-position window", "mm", true};
-    LimitMove phase{&Specification::minPhaseMarginDeg, "min phase margin", "deg", false};
-    LimitMove gain{&Specification::minGainMarginDb, "min gain margin", "dB", false};
+    LimitMove overshoot{&Specification::maxOvershootPct, "session_limit_max_overshoot", "%", true};
+    LimitMove settling{&Specification::maxSettlingTimeSeconds, "session_limit_max_settling_time",
+                       "s", true};
+    LimitMove error{&Specification::maxErrorPct, "session_limit_max_error", "%", true};
+    LimitMove settle{&Specification::maxSettleTimeSeconds, "session_limit_max_settle_time", "s",
+                     true};
+    LimitMove window{&Specification::inPositionWindowMm, "session_limit_in_position_window", "mm",
+                     true};
+    LimitMove phase{&Specification::minPhaseMarginDeg, "session_limit_min_phase_margin", "deg",
+                    false};
+    LimitMove gain{&Specification::minGainMarginDb, "session_limit_min_gain_margin", "dB", false};
     const Specification& spec = session.spec;
     for (std::size_t i = 0; i < 2; ++i) {
         const AxisEvaluation& a = evaluation.axes[i];
-        const std::string name = axisName(session, i);
+        const Diagnostic name = axisName(session, i);
         if (!a.ok) {
             possible = false;
             anyFailure = true;
-            out.reasons.push_back(name + " has no design (" + a.errorField + ": " + a.error + ")");
+            out.reasons.push_back(
+                makeDiagnostic("session_advice_no_design", {name, a.errorField, a.error}));
             continue;
         }
         const SpecificationCheck& c = a.check;
@@ -120,30 +127,26 @@ SpecificationAdvice adviseSpecification(const Session& session,
         anyFailure = true;
         if (!c.stable) {
             possible = false;
-            out.reasons.push_back(name + ": the closed loop is unstable; no limit makes it pass");
+            out.reasons.push_back(makeDiagnostic("session_advice_unstable", {name}));
             continue;
         }
         if (!c.overshoot) {
             overshoot.failedAt(a.step.overshootPct);
-            std::string why = name + ": the step overshoots " +
-                              formatNumber(a.step.overshootPct, 3) + " % (limit " +
-                              formatNumber(spec.maxOvershootPct) + " %)";
-            if (a.gt && spec.maxOvershootPct == 0.0)
-                why += ": every Guillemin-Truxal design overshoots, its reference model is type 2 "
-                       "(the step error integrates to zero), so 0 % cannot be met";
-            out.reasons.push_back(why);
+            out.reasons.push_back(makeDiagnostic(
+                a.gt && spec.maxOvershootPct == 0.0 ? "session_advice_overshoot_gt"
+                                                    : "session_advice_overshoot",
+                {name, formatNumber(a.step.overshootPct, 3), formatNumber(spec.maxOvershootPct)}));
         }
         if (!c.settlingTime) {
             settling.failedAt(a.step.settlingTimeSeconds);
-            out.reasons.push_back(name + ": the step settles in " +
-                                  formatNumber(a.step.settlingTimeSeconds, 3) + " s (limit " +
-                                  formatNumber(spec.maxSettlingTimeSeconds) + " s)");
+            out.reasons.push_back(makeDiagnostic("session_advice_settling",
+                                                 {name, formatNumber(a.step.settlingTimeSeconds, 3),
+                                                  formatNumber(spec.maxSettlingTimeSeconds)}));
         }
         if (!c.noSaturation) {
             possible = false;
-            out.reasons.push_back(name + ": the command reaches the ±" +
-                                  formatNumber(session.umaxVolts) +
-                                  " V limit; a looser limit elsewhere does not change that");
+            out.reasons.push_back(makeDiagnostic("session_advice_saturation",
+                                                 {name, formatNumber(session.umaxVolts)}));
         }
         if (!c.trackingError) {
             const double worst = std::max(a.metrics.maxAbsErrorPct,
@@ -151,9 +154,9 @@ SpecificationAdvice adviseSpecification(const Session& session,
             if (!std::isfinite(worst))
                 possible = false;
             error.failedAt(worst);
-            out.reasons.push_back(name + ": the tracking error reaches " + formatNumber(worst, 3) +
-                                  " % of the travel (limit " + formatNumber(spec.maxErrorPct) +
-                                  " %)");
+            out.reasons.push_back(
+                makeDiagnostic("session_advice_tracking",
+                               {name, formatNumber(worst, 3), formatNumber(spec.maxErrorPct)}));
         }
         if (c.settleApplies && !c.settle) {
             std::optional<double> t = settleSeconds(a);
@@ -161,17 +164,16 @@ SpecificationAdvice adviseSpecification(const Session& session,
             if (!t && std::isfinite(evaluation.duration.settleEstimateSeconds) &&
                 evaluation.duration.settleEstimateSeconds > 0.0)
                 t = evaluation.duration.settleEstimateSeconds;
-            std::string why =
-                name + ": it settles into ±" + formatNumber(spec.inPositionWindowMm) + " mm ";
-            why += t ? (estimated ? "only about " : "only ") + formatNumber(*t, 3) +
-                           " s after the move" +
-                           (estimated ? " (estimated: not within the run)" : "")
-                     : std::string("not within the run");
-            why += " (limit " + formatNumber(spec.maxSettleTimeSeconds) + " s)";
+            const std::string windowMm = formatNumber(spec.inPositionWindowMm);
+            const std::string limit = formatNumber(spec.maxSettleTimeSeconds);
+            Diagnostic why =
+                !t ? makeDiagnostic("session_advice_settle_not_within", {name, windowMm, limit})
+                   : makeDiagnostic(estimated ? "session_advice_settle_estimated"
+                                              : "session_advice_settle_after",
+                                    {name, windowMm, formatNumber(*t, 3), limit});
             const double slow = slowestPole(a);
             if (std::isfinite(slow) && slow > 0.0)
-                why += ": its slowest closed-loop pole, at -" + formatNumber(slow, 3) +
-                       " rad/s beside the PI zero, decays that slowly";
+                why = makeDiagnostic("session_advice_slowest_pole", {why, formatNumber(slow, 3)});
             out.reasons.push_back(why);
             if (!estimated) {
                 settle.failedAt(*t);
@@ -188,14 +190,15 @@ SpecificationAdvice adviseSpecification(const Session& session,
             if (!c.phaseMargin) {
                 phase.failedAt(a.margins->phaseMarginDeg);
                 out.reasons.push_back(
-                    name + ": phase margin " + formatNumber(a.margins->phaseMarginDeg, 3) +
-                    " deg (minimum " + formatNumber(spec.minPhaseMarginDeg) + ")");
+                    makeDiagnostic("session_advice_phase_margin",
+                                   {name, formatNumber(a.margins->phaseMarginDeg, 3),
+                                    formatNumber(spec.minPhaseMarginDeg)}));
             }
             if (!c.gainMargin) {
                 gain.failedAt(a.margins->gainMarginDb);
-                out.reasons.push_back(name + ": gain margin " +
-                                      formatNumber(a.margins->gainMarginDb, 3) + " dB (minimum " +
-                                      formatNumber(spec.minGainMarginDb) + ")");
+                out.reasons.push_back(makeDiagnostic(
+                    "session_advice_gain_margin", {name, formatNumber(a.margins->gainMarginDb, 3),
+                                                   formatNumber(spec.minGainMarginDb)}));
             }
         }
     }

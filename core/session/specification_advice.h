@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/session/session_evaluation.h"
 
 #include <optional>
@@ -18,7 +19,7 @@ namespace xyt {
  */
 struct SpecificationAdvice {
     /// One sentence per failing criterion and axis, the cause where it is known.
-    std::vector<std::string> reasons;
+    std::vector<Diagnostic> reasons;
     /**
      * The specification with each failing limit moved to what the worse of the two axes
      * reaches (the worse of its design and its implementation), rounded to 3 significant
@@ -31,7 +32,7 @@ struct SpecificationAdvice {
      */
     std::optional<Specification> relaxed;
     /// The limits relaxed, e.g. "max overshoot 1 %", for a button's tooltip.
-    std::vector<std::string> changes;
+    std::vector<Diagnostic> changes;
 };
 
 SpecificationAdvice adviseSpecification(const Session& session,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/contour_robustness.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/simulation/resample.h"
 #include "core/study/parallel_runs.h"
@@ -78,18 +79,18 @@ void validate(const ContourRobustnessProblem& p) {
         try {
             validateRobustnessProblem(*axis);
         } catch (const InvalidInput& e) {
-            throw InvalidInput(prefixed(e.field(), name), e.reason());
+            throw InvalidInput(prefixed(e.field(), name), e.reasonDiagnostic());
         }
     }
     const ContourGeometry& g = p.geometry;
     if (g.circle.has_value() == (g.path != nullptr))
-        throw InvalidInput("geometry", "give either a circle or a path");
+        throw InvalidInput("geometry", makeDiagnostic("study_circle_or_path"));
     if (g.t.empty())
-        throw InvalidInput("geometry", "the time base is empty");
+        throw InvalidInput("geometry", makeDiagnostic("study_time_base_empty"));
     for (std::size_t k = 0; k < g.t.size(); ++k)
         if (!std::isfinite(g.t[k]) || (k > 0 && !(g.t[k] > g.t[k - 1])))
-            throw InvalidInput("geometry", "the time base must be finite and increasing (sample " +
-                                               std::to_string(k) + ")");
+            throw InvalidInput(
+                "geometry", makeDiagnostic("study_time_base_not_increasing", {std::to_string(k)}));
     if (p.coupling) {
         validateCrossCoupling(p.coupling->gains, "cross_coupling");
         // One grid for both axes: the continuous loop runs on k dt over its reference, the
@@ -103,8 +104,7 @@ void validate(const ContourRobustnessProblem& p) {
         const CouplingDirections& d = p.coupling->directions;
         if (std::abs(tx - ty) > 1e-9 * tx || nx != ny || d.thetaRad.size() != nx ||
             d.curvaturePerMm.size() != nx || (!d.active.empty() && d.active.size() != nx))
-            throw InvalidInput("cross_coupling",
-                               "needs both axes on one grid with a direction for each sample");
+            throw InvalidInput("cross_coupling", makeDiagnostic("study_coupling_one_grid"));
     }
 }
 
@@ -143,7 +143,7 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
                                                  const RobustnessOptions& options) {
     validate(problem);
     if (options.envelopePoints < 2 || options.envelopePoints > 100'000)
-        throw InvalidInput("envelope_points", "must be from 2 to 100000");
+        throw InvalidInput("envelope_points", makeDiagnostic("study_from_to", {"2", "100000"}));
     const ContourGeometry& g = problem.geometry;
 
     ContourRobustnessResult result;
@@ -181,8 +181,7 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     SimulationResult nominalX, nominalY;
     result.nominal = runPair(problem, nominalValues, nominalX, nominalY);
     if (!result.nominal.finite)
-        throw InvalidInput("nominal", "the nominal design's run is not finite (it diverges): there "
-                                      "is no contour to compare with");
+        throw InvalidInput("nominal", makeDiagnostic("study_nominal_not_finite"));
     const std::vector<double> nx = outputOn(nominalX, g.t);
     const std::vector<double> ny = outputOn(nominalY, g.t);
     std::vector<char> measured;
@@ -197,8 +196,8 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
         if (measured[k])
             judged.push_back(k);
     if (judged.empty())
-        throw InvalidInput("geometry", g.circle ? "no sample after the ramp-in"
-                                                : "no sample on a measured segment");
+        throw InvalidInput("geometry", makeDiagnostic(g.circle ? "study_no_sample_after_ramp_in"
+                                                               : "study_no_sample_on_segment"));
     // The envelope's instants: every stride-th judged sample and the last.
     std::vector<std::size_t> idx;
     for (std::size_t j : envelopeIndices(judged.size(), options.envelopePoints))
@@ -252,7 +251,7 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     result.threadsUsed = outcome.threadsUsed;
     if (outcome.cancelled) {
         result.status = RobustnessStatus::Cancelled;
-        result.warnings.push_back("cancelled: the statistics cover the plants computed before");
+        result.warnings.push_back(makeDiagnostic("study_cancelled_statistics"));
     }
 
     std::vector<double> maxAbs, rms;
@@ -280,9 +279,7 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
     result.error = envelopeOf(g.t, idx, es, nominalError.e);
     if (!result.unstable.empty())
         result.warnings.push_back(
-            std::to_string(result.unstable.size()) +
-            " plant pairs are unstable or diverged with these controllers; they are listed, "
-            "not in the statistics");
+            makeDiagnostic("study_unstable_plant_pairs", {std::to_string(result.unstable.size())}));
     return result;
 }
 

@@ -3,6 +3,7 @@
 
 #include "core/contour/contour_metrics.h"
 #include "core/contour/path.h"
+#include "core/model/diagnostic.h"
 #include "core/simulation/cross_coupled_run.h"
 #include "core/simulation/trajectory.h"
 #include "core/study/robustness.h"
@@ -78,7 +79,7 @@ struct ContourRobustnessResult {
         unstable; ///< indices into runs: unstable or diverged, not in the statistics
     std::optional<std::size_t> worst; ///< the stable run of largest max |e|
     int threadsUsed = 0;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 
 /**

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/design_sweep.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/study/parallel_runs.h"
 
 #include "core/analysis/loop_responses.h"
@@ -61,13 +62,13 @@ std::optional<SweepCriterion> parseCriterion(const std::string& name) {
 
 void SweepAxis::validate(const std::string& field) const {
     if (!std::isfinite(minValue) || !std::isfinite(maxValue))
-        throw InvalidInput(field, "the bounds must be finite numbers");
+        throw InvalidInput(field, makeDiagnostic("study_bounds_not_finite"));
     if (!(minValue > 0.0))
-        throw InvalidInput(field, "the minimum must be greater than zero");
+        throw InvalidInput(field, makeDiagnostic("study_minimum_not_positive"));
     if (minValue > maxValue)
-        throw InvalidInput(field, "the minimum is greater than the maximum");
+        throw InvalidInput(field, makeDiagnostic("study_minimum_above_maximum"));
     if (count < 1 || count > kMaxCount)
-        throw InvalidInput(field, "the count must be from 1 to " + std::to_string(kMaxCount));
+        throw InvalidInput(field, makeDiagnostic("study_count_range", {std::to_string(kMaxCount)}));
 }
 
 std::vector<double> SweepAxis::values(const std::string& field) const {
@@ -131,13 +132,13 @@ DesignEvaluator::DesignEvaluator(DesignProblem problem) : problem_(std::move(pro
     requirePositive(problem_.dtSeconds, "dt");
     problem_.spec.validate();
     if (problem_.reference.empty())
-        throw InvalidInput("reference", "has no samples");
+        throw InvalidInput("reference", makeDiagnostic("has_no_samples"));
     for (double r : problem_.reference)
         requireFinite(r, "reference");
     const auto [lo, hi] = std::minmax_element(problem_.reference.begin(), problem_.reference.end());
     travel_ = *hi - *lo;
     if (problem_.stepSamples < 100 || problem_.stepSamples > 100000)
-        throw InvalidInput("step_samples", "must be from 100 to 100000");
+        throw InvalidInput("step_samples", makeDiagnostic("study_from_to", {"100", "100000"}));
     if (problem_.move) // validates the move
         (void)MoveSettleAccumulator(*problem_.move, problem_.spec.inPositionWindowMm);
 }
@@ -152,7 +153,7 @@ DesignPoint DesignEvaluator::evaluate(double wn, double kp) const {
 void DesignEvaluator::evaluateBatch(std::span<const double> wn, std::span<const double> kp,
                                     std::span<DesignPoint> out, int batchWidth) const {
     if (kp.size() != wn.size() || out.size() != wn.size())
-        throw InvalidInput("designs", "wn, kp and the results must have the same length");
+        throw InvalidInput("designs", makeDiagnostic("study_designs_same_length"));
     const std::size_t n = wn.size();
     std::vector<GtDesign> designs;
     std::vector<LoopModes> modes;
@@ -251,14 +252,14 @@ RefinementResult refineDesign(const DesignEvaluator& evaluator, const DesignPoin
                               double kpMax, double wnStepLog, double kpStepLog, int maxEvaluations,
                               double toleranceLog) {
     if (!start.feasible)
-        throw InvalidInput("start", "the search starts from a feasible design");
+        throw InvalidInput("start", makeDiagnostic("study_search_needs_feasible"));
     if (!(start.wn >= wnMin && start.wn <= wnMax && start.kp >= kpMin && start.kp <= kpMax))
-        throw InvalidInput("start", "is outside the search box");
+        throw InvalidInput("start", makeDiagnostic("study_outside_search_box"));
     if (!(wnStepLog >= 0.0 && std::isfinite(wnStepLog) && kpStepLog >= 0.0 &&
           std::isfinite(kpStepLog)))
-        throw InvalidInput("step", "the steps must be finite and >= 0");
+        throw InvalidInput("step", makeDiagnostic("study_steps_not_finite"));
     if (maxEvaluations < 0)
-        throw InvalidInput("max_evaluations", "must be >= 0");
+        throw InvalidInput("max_evaluations", makeDiagnostic("not_negative"));
     RefinementResult r;
     r.point = start;
     double best = criterionValue(start, criterion);
@@ -339,8 +340,7 @@ void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
     spec.validate();
     for (const DesignPoint& p : result.points)
         if (p.computed && p.move && p.move->windowMm != spec.inPositionWindowMm)
-            throw InvalidInput("in_position_window_mm",
-                               "the study measured the settle with another window; run it again");
+            throw InvalidInput("in_position_window_mm", makeDiagnostic("study_other_window"));
     for (DesignPoint& p : result.points) {
         if (!p.computed)
             continue;
@@ -355,12 +355,12 @@ void rejudgeDesignSpace(DesignSweepResult& result, const Specification& spec) {
 DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis& wnAxis,
                                    const SweepAxis& kpAxis, const SweepOptions& options) {
     if (options.threads < 0 || options.threads > 1024)
-        throw InvalidInput("threads", "must be from 0 (all cores) to 1024");
+        throw InvalidInput("threads", makeDiagnostic("study_threads_range"));
     if (options.maxRefineEvaluations < 0)
-        throw InvalidInput("max_refine_evaluations", "must be >= 0");
+        throw InvalidInput("max_refine_evaluations", makeDiagnostic("not_negative"));
     if (options.batchWidth != 1 && options.batchWidth != 2 && options.batchWidth != 4 &&
         options.batchWidth != 8)
-        throw InvalidInput("batch_width", "must be 1, 2, 4 or 8");
+        throw InvalidInput("batch_width", makeDiagnostic("study_batch_width"));
     DesignSweepResult result;
     result.criterion = options.criterion;
     result.wnValues = wnAxis.values("wn");
@@ -395,12 +395,13 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
     tallyDesignSpace(result);
     if (outcome.cancelled || result.computedCount < static_cast<int>(total)) {
         result.status = SweepStatus::Cancelled;
-        result.warnings.push_back("cancelled: " + std::to_string(result.computedCount) + " of " +
-                                  std::to_string(total) + " grid points computed, no refinement");
+        result.warnings.push_back(
+            makeDiagnostic("study_sweep_cancelled",
+                           {std::to_string(result.computedCount), std::to_string(total)}));
         return result;
     }
     if (!result.bestIndex)
-        result.warnings.push_back("no design of the grid meets the specification");
+        result.warnings.push_back(makeDiagnostic("study_no_feasible_design"));
     if (options.refine && result.bestIndex) {
         const std::size_t b = *result.bestIndex;
         result.refined = refineDesign(

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "core/design/guillemin_truxal.h"
+#include "core/model/diagnostic.h"
 #include "core/model/table_friction.h"
 #include "core/simulation/metrics.h"
 #include "core/simulation/move_settle.h"
@@ -246,7 +247,7 @@ struct DesignSweepResult {
     /// The refined best (Completed sweeps with a best point and options.refine only).
     std::optional<RefinementResult> refined;
     int threadsUsed = 0;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 
     std::size_t index(std::size_t iWn, std::size_t iKp) const {
         return iWn * kpValues.size() + iKp;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/parallel_runs.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <algorithm>
@@ -18,9 +19,9 @@ ParallelRunOutcome
 parallelRuns(std::size_t total, const ParallelRunOptions& options,
              const std::function<void(std::size_t first, std::size_t count)>& body) {
     if (options.threads < 0 || options.threads > 1024)
-        throw InvalidInput("threads", "must be from 0 (all cores) to 1024");
+        throw InvalidInput("threads", makeDiagnostic("study_threads_range"));
     if (options.chunk < 1)
-        throw InvalidInput("chunk", "must be at least 1");
+        throw InvalidInput("chunk", makeDiagnostic("at_least", {"1"}));
     const std::size_t chunk = options.chunk;
     const std::size_t chunks = (total + chunk - 1) / chunk;
     const int hardware = static_cast<int>(std::thread::hardware_concurrency());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/plant_uncertainty.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/normal_draws.h"
 
@@ -16,20 +17,20 @@ void setRelativeRange(std::vector<UncertainParameter>& parameters, const std::st
     for (UncertainParameter& p : parameters)
         if (p.name == name) {
             if (!std::isfinite(relative) || relative < 0.0 || relative >= 1.0)
-                throw InvalidInput("range." + name, "must be from 0 to below 100 %");
+                throw InvalidInput("range." + name, makeDiagnostic("study_range_percent"));
             p.relative = relative;
             return;
         }
     std::string known;
     for (const UncertainParameter& p : parameters)
         known += (known.empty() ? "" : ", ") + p.name;
-    throw InvalidInput("range", "no parameter '" + name + "' in this plant (it has " + known + ")");
+    throw InvalidInput("range", makeDiagnostic("study_no_such_parameter", {name, known}));
 }
 
 std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> parameters,
                                              double scale) {
     if (!std::isfinite(scale) || scale < 0.0)
-        throw InvalidInput("scale", "must be a finite number >= 0");
+        throw InvalidInput("scale", makeDiagnostic("finite_not_negative"));
     for (UncertainParameter& p : parameters)
         setRelativeRange(parameters, p.name, p.relative * scale);
     return parameters;
@@ -38,7 +39,7 @@ std::vector<UncertainParameter> scaledRanges(std::vector<UncertainParameter> par
 std::vector<std::vector<double>> drawPlants(const std::vector<UncertainParameter>& parameters,
                                             int count, std::uint64_t seed) {
     if (count < 0 || count > 1'000'000)
-        throw InvalidInput("samples", "must be from 0 to 1000000");
+        throw InvalidInput("samples", makeDiagnostic("study_from_to", {"0", "1000000"}));
     std::mt19937_64 rng(seed);
     std::vector<std::vector<double>> plants(static_cast<std::size_t>(count));
     for (auto& plant : plants) {
@@ -55,19 +56,19 @@ std::vector<std::vector<double>> drawPlantsNormal(const std::vector<UncertainPar
                                                   const Eigen::MatrixXd& covariance, int count,
                                                   std::uint64_t seed) {
     if (count < 0 || count > 1'000'000)
-        throw InvalidInput("samples", "must be from 0 to 1000000");
+        throw InvalidInput("samples", makeDiagnostic("study_from_to", {"0", "1000000"}));
     const Eigen::Index d = static_cast<Eigen::Index>(parameters.size());
     if (covariance.rows() != d || covariance.cols() != d)
-        throw InvalidInput("covariance", "must be " + std::to_string(d) + " x " +
-                                             std::to_string(d) + " (one row per parameter)");
+        throw InvalidInput("covariance", makeDiagnostic("study_covariance_size",
+                                                        {std::to_string(d), std::to_string(d)}));
     if (!covariance.allFinite())
-        throw InvalidInput("covariance", "holds a value that is not finite");
+        throw InvalidInput("covariance", makeDiagnostic("study_covariance_not_finite"));
     const double scale = covariance.cwiseAbs().maxCoeff();
     if (!((covariance - covariance.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * scale))
-        throw InvalidInput("covariance", "is not symmetric");
+        throw InvalidInput("covariance", makeDiagnostic("study_covariance_not_symmetric"));
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(covariance);
     if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() < -1e-12 * scale).any())
-        throw InvalidInput("covariance", "is not positive semi-definite");
+        throw InvalidInput("covariance", makeDiagnostic("study_covariance_not_psd"));
     const Eigen::MatrixXd lower = ldlt.matrixL();
     const Eigen::MatrixXd m = ldlt.transpositionsP().transpose() *
                               (lower * ldlt.vectorD().cwiseMax(0.0).cwiseSqrt().asDiagonal());
@@ -90,9 +91,8 @@ std::vector<std::vector<double>> boxCorners(const std::vector<UncertainParameter
         if (parameters[i].relative > 0.0)
             uncertain.push_back(i);
     if (uncertain.size() > 16)
-        throw InvalidInput(
-            "corners", std::to_string(uncertain.size()) +
-                           " uncertain parameters have too many corners (at most 16 parameters)");
+        throw InvalidInput("corners", makeDiagnostic("study_too_many_corners",
+                                                     {std::to_string(uncertain.size())}));
     const std::size_t count = std::size_t{1} << uncertain.size();
     std::vector<std::vector<double>> corners(count);
     for (std::size_t c = 0; c < count; ++c) {

@@ -4,6 +4,7 @@
 #include "core/analysis/loop_responses.h"
 #include "core/analysis/stability_margins.h"
 #include "core/design/guillemin_truxal.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/model/math_constants.h"
 #include "core/simulation/discrete_simulation.h"
@@ -190,36 +191,35 @@ namespace {
 
 void validateOptions(const RobustnessOptions& options) {
     if (options.samples < 0 || options.samples > 1'000'000)
-        throw InvalidInput("samples", "must be from 0 to 1000000");
+        throw InvalidInput("samples", makeDiagnostic("study_from_to", {"0", "1000000"}));
     if (options.envelopePoints < 2 || options.envelopePoints > 100'000)
-        throw InvalidInput("envelope_points", "must be from 2 to 100000");
+        throw InvalidInput("envelope_points", makeDiagnostic("study_from_to", {"2", "100000"}));
 }
 
 } // namespace
 
 void validateRobustnessProblem(const RobustnessProblem& problem) {
     if (problem.controller.has_value() == problem.loop.has_value())
-        throw InvalidInput("problem", "give either a continuous controller or a discrete loop");
+        throw InvalidInput("problem", makeDiagnostic("study_controller_or_loop"));
     if (problem.loop && problem.zpetcEnabled && !problem.zpetc)
-        throw InvalidInput("problem", "ZPETC is enabled without its design");
+        throw InvalidInput("problem", makeDiagnostic("study_zpetc_without_design"));
     const std::size_t preview = problem.loop && problem.zpetcEnabled
                                     ? static_cast<std::size_t>(problem.zpetc->previewSteps)
                                     : 0;
     if (problem.samples < 2 || problem.reference.size() < problem.samples + preview)
-        throw InvalidInput("problem",
-                           "the reference must hold the run (at least 2 samples) and the preview");
+        throw InvalidInput("problem", makeDiagnostic("study_reference_too_short"));
     if (problem.controller)
         for (const char* name : {"k0", "a1", "a2"})
             if (std::none_of(problem.parameters.begin(), problem.parameters.end(),
                              [&](const UncertainParameter& p) { return p.name == name; }))
                 throw InvalidInput("problem",
-                                   std::string("a continuous plant needs the parameter ") + name);
+                                   makeDiagnostic("study_plant_needs_parameter", {name}));
     if (problem.controller && problem.reference.size() != problem.samples)
-        throw InvalidInput("problem", "a continuous run has exactly the reference's samples");
+        throw InvalidInput("problem", makeDiagnostic("study_continuous_run_samples"));
     problem.spec.validate();
     for (const UncertainParameter& p : problem.parameters)
         if (!std::isfinite(p.relative) || p.relative < 0.0 || p.relative >= 1.0)
-            throw InvalidInput("range." + p.name, "must be from 0 to below 100 %");
+            throw InvalidInput("range." + p.name, makeDiagnostic("study_range_percent"));
     if (problem.controller && problem.table && problem.table->active()) {
         // The table splits the plant at the real poles of s^2 + a1 s + a2: the box's worst
         // corner (a1 at its least, a2 at its most) must keep a1^2 >= 4 a2.
@@ -231,9 +231,7 @@ void validateRobustnessProblem(const RobustnessProblem& problem) {
         };
         const double a1 = bound("a1", -1.0), a2 = bound("a2", 1.0);
         if (a1 * a1 < 4.0 * a2)
-            throw InvalidInput("range.a2", "with the table's friction the poles of s^2 + a1 s + a2 "
-                                           "must stay real (a1^2 >= 4 a2) over the ranges of a1 "
-                                           "and a2: narrow them");
+            throw InvalidInput("range.a2", makeDiagnostic("study_friction_real_poles"));
     }
 }
 
@@ -284,7 +282,7 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem,
     result.threadsUsed = outcome.threadsUsed;
     if (outcome.cancelled) {
         result.status = RobustnessStatus::Cancelled;
-        result.warnings.push_back("cancelled: the statistics cover the plants computed before");
+        result.warnings.push_back(makeDiagnostic("study_cancelled_statistics"));
     }
 
     std::vector<double> rmse, maxE, maxU, rmseNoFf, phase, gain;
@@ -333,9 +331,7 @@ RobustnessResult analyzeRobustness(const RobustnessProblem& problem,
     result.command = envelopeOf(nominalRun.t, idx, us, nominalRun.u);
     if (!result.unstable.empty())
         result.warnings.push_back(
-            std::to_string(result.unstable.size()) +
-            " plants are unstable or diverged with this controller; they are listed, "
-            "not in the statistics");
+            makeDiagnostic("study_unstable_plants", {std::to_string(result.unstable.size())}));
     return result;
 }
 
@@ -353,7 +349,7 @@ std::vector<double> figureValues(const RobustnessResult& result, RobustnessFigur
 
 Histogram histogram(const std::vector<double>& values, int bins) {
     if (bins < 1 || bins > 10000)
-        throw InvalidInput("bins", "must be from 1 to 10000");
+        throw InvalidInput("bins", makeDiagnostic("study_from_to", {"1", "10000"}));
     Histogram h;
     if (values.empty())
         return h;
@@ -379,17 +375,20 @@ std::vector<ZpetcSensitivityPoint> zpetcSensitivity(const RobustnessProblem& pro
                                                     const std::vector<double>& scales,
                                                     const RobustnessOptions& options) {
     if (!problem.loop || !problem.zpetcEnabled)
-        throw InvalidInput("problem",
-                           "the ZPETC sensitivity needs a pole-placement axis with ZPETC enabled");
+        throw InvalidInput("problem", makeDiagnostic("study_zpetc_sensitivity_needs_zpetc"));
     if (scales.empty())
-        throw InvalidInput("scales", "give at least one scale");
+        throw InvalidInput("scales", makeDiagnostic("study_no_scale"));
     std::vector<ZpetcSensitivityPoint> curve;
     for (double scale : scales) {
         RobustnessProblem scaled = problem;
         try {
             scaled.parameters = scaledRanges(problem.parameters, scale);
         } catch (const InvalidInput& e) {
-            throw InvalidInput("scales", "scale " + std::to_string(scale) + ": " + e.what());
+            throw InvalidInput(
+                "scales", makeDiagnostic(
+                              "study_scale_reason",
+                              {std::to_string(scale),
+                               makeDiagnostic("field_reason", {e.field(), e.reasonDiagnostic()})}));
         }
         const RobustnessResult r = analyzeRobustness(scaled, options);
         ZpetcSensitivityPoint point;

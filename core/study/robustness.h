@@ -3,6 +3,7 @@
 
 #include "core/design/pole_placement.h"
 #include "core/design/zpetc.h"
+#include "core/model/diagnostic.h"
 #include "core/model/flexible_mode.h"
 #include "core/model/table_friction.h"
 #include "core/model/transfer_function.h"
@@ -120,7 +121,7 @@ struct RobustnessResult {
     /// The stable run of largest RMSE (nullopt when none is stable).
     std::optional<std::size_t> worst;
     int threadsUsed = 0;
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 };
 
 /**

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/specification.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 
 #include <cmath>
@@ -12,7 +13,7 @@ namespace {
 void requireNonNegative(double value, const std::string& field) {
     requireFinite(value, field);
     if (value < 0.0)
-        throw InvalidInput(field, "must be zero or more");
+        throw InvalidInput(field, makeDiagnostic("study_zero_or_more"));
 }
 
 /// Comparisons written so that NaN fails: !(NaN <= x) is true.
@@ -35,7 +36,7 @@ void Specification::validate() const {
     requirePositive(maxSettleTimeSeconds, "max_settle_time");
     requireNonNegative(minPhaseMarginDeg, "min_phase_margin");
     if (minPhaseMarginDeg > 180.0)
-        throw InvalidInput("min_phase_margin", "must be at most 180 degrees");
+        throw InvalidInput("min_phase_margin", makeDiagnostic("study_phase_margin_at_most_180"));
     requireNonNegative(minGainMarginDb, "min_gain_margin");
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/study/sweep_diagnosis.h"
 
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/math_constants.h"
 #include "core/model/number_format.h"
 
@@ -22,7 +23,7 @@ bool largerIsBetter(SpecCriterion c) {
     return c == SpecCriterion::PhaseMargin || c == SpecCriterion::GainMargin;
 }
 
-/// What a criterion is called in a sentence, and the unit of its value.
+/// The codes of what a criterion is called in a sentence, and of a value in its unit ("%1 s").
 struct Wording {
     const char* name;
     const char* unit;
@@ -30,23 +31,34 @@ struct Wording {
 Wording wording(SpecCriterion c) {
     switch (c) {
     case SpecCriterion::Stable:
-        return {"stability", ""};
+        return {"study_criterion_stability", ""};
     case SpecCriterion::SettlingTime:
-        return {"step settling time", " s"};
+        return {"study_criterion_settling_time", "study_value_seconds"};
     case SpecCriterion::Overshoot:
-        return {"step overshoot", " %"};
+        return {"study_criterion_overshoot", "study_value_percent"};
     case SpecCriterion::NoSaturation:
-        return {"clipped time", " s"};
+        return {"study_criterion_clipped_time", "study_value_seconds"};
     case SpecCriterion::TrackingError:
-        return {"max tracking error", " % of the travel"};
+        return {"study_criterion_tracking_error", "study_value_percent_of_travel"};
     case SpecCriterion::Settle:
-        return {"settle time after the move", " s"};
+        return {"study_criterion_settle_time", "study_value_seconds"};
     case SpecCriterion::PhaseMargin:
-        return {"phase margin", " deg"};
+        return {"study_criterion_phase_margin", "study_value_degrees"};
     case SpecCriterion::GainMargin:
-        return {"gain margin", " dB"};
+        return {"study_criterion_gain_margin", "study_value_decibels"};
     }
     return {"", ""};
+}
+
+/// The criterion's name.
+Diagnostic nameOf(SpecCriterion c) {
+    return makeDiagnostic(wording(c).name);
+}
+
+/// @p number (formatted) in the criterion's unit.
+Diagnostic valueIn(SpecCriterion c, const std::string& number) {
+    const char* unit = wording(c).unit;
+    return *unit ? makeDiagnostic(unit, {number}) : Diagnostic(number);
 }
 
 bool passes(const SpecificationCheck& c, SpecCriterion criterion) {
@@ -122,19 +134,17 @@ std::optional<double> valueOf(const DesignPoint& p, SpecCriterion c) {
     return std::nullopt;
 }
 
-std::string at(const DesignSweepResult& r, std::size_t i) {
-    return "wn = " + formatNumber(r.points[i].wn, 4) +
-           " rad/s, kp = " + formatNumber(r.points[i].kp, 4);
+Diagnostic at(const DesignSweepResult& r, std::size_t i) {
+    return makeDiagnostic("study_design_at",
+                          {formatNumber(r.points[i].wn, 4), formatNumber(r.points[i].kp, 4)});
 }
 
 /// One edge warning: "kp = 60 is the upper end of the kp range 5..60: ...".
-std::string edgeWarning(const char* axis, const std::vector<double>& values, bool upper) {
+Diagnostic edgeDiagnostic(const char* axis, const std::vector<double>& values, bool upper) {
     const std::string v = formatNumber(upper ? values.back() : values.front(), 6);
-    return std::string(axis) + " = " + v + " (the best design) is the " +
-           (upper ? "upper" : "lower") + " end of the " + axis + " range " +
-           formatNumber(values.front(), 6) + ".." + formatNumber(values.back(), 6) +
-           ": the optimum may lie " + (upper ? "above" : "below") + "; widen the " + axis +
-           " range " + (upper ? "beyond " : "below ") + v;
+    return makeDiagnostic(
+        upper ? "study_best_at_upper_edge" : "study_best_at_lower_edge",
+        {axis, v, axis, formatNumber(values.front(), 6), formatNumber(values.back(), 6), axis, v});
 }
 
 } // namespace
@@ -197,23 +207,22 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                     f.bestValue = *v;
                 }
             }
-            const Wording w = wording(c);
-            std::string text;
+            Diagnostic diagnostic;
             if (c == SpecCriterion::Stable)
-                text = "no design of the grid is stable";
+                diagnostic = makeDiagnostic("study_none_stable");
             else if (c == SpecCriterion::Settle && !f.bestIndex)
-                text = "no design of the grid settles into the " +
-                       formatNumber(spec.inPositionWindowMm) + " mm window within the run (limit " +
-                       formatNumber(f.limit) + " s after the move)";
-            else {
-                text = std::string("the ") + w.name + " limit (" + formatNumber(f.limit) + w.unit +
-                       ") fails at every design of the grid";
-                if (f.bestIndex)
-                    text += std::string(largerIsBetter(c) ? "; the largest " : "; the smallest ") +
-                            w.name + " found is " + formatNumber(f.bestValue, 4) + w.unit + " at " +
-                            at(result, *f.bestIndex);
-            }
-            d.warnings.push_back(text);
+                diagnostic =
+                    makeDiagnostic("study_none_settles",
+                                   {formatNumber(spec.inPositionWindowMm), formatNumber(f.limit)});
+            else if (!f.bestIndex)
+                diagnostic = makeDiagnostic("study_limit_fails_everywhere",
+                                            {nameOf(c), valueIn(c, formatNumber(f.limit))});
+            else
+                diagnostic = makeDiagnostic(
+                    largerIsBetter(c) ? "study_limit_fails_largest" : "study_limit_fails_smallest",
+                    {nameOf(c), valueIn(c, formatNumber(f.limit)), nameOf(c),
+                     valueIn(c, formatNumber(f.bestValue, 4)), at(result, *f.bestIndex)});
+            d.warnings.push_back(diagnostic);
             d.failingEverywhere.push_back(f);
         }
 
@@ -261,7 +270,7 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
             const DesignPoint& p = points[*d.leastViolating];
             Specification relaxed = spec;
             bool possible = true;
-            std::vector<std::string> changes;
+            std::vector<Diagnostic> changes;
             for (SpecCriterion c : kCriteria) {
                 if (passes(p.check, c))
                     continue;
@@ -299,22 +308,22 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
                 default:
                     break;
                 }
-                changes.push_back(std::string(wording(c).name) +
-                                  (largerIsBetter(c) ? " >= " : " <= ") + formatNumber(limit) +
-                                  wording(c).unit);
+                changes.push_back(makeDiagnostic(largerIsBetter(c) ? "study_change_at_least"
+                                                                   : "study_change_at_most",
+                                                 {nameOf(c), valueIn(c, formatNumber(limit))}));
             }
-            std::string text = "least-violating design: " + at(result, *d.leastViolating) +
-                               " (point " + std::to_string(*d.leastViolating) + ")";
+            const Diagnostic design = at(result, *d.leastViolating);
+            const std::string point = std::to_string(*d.leastViolating);
+            Diagnostic diagnostic = makeDiagnostic("study_least_violating", {design, point});
             if (possible && !changes.empty()) {
                 d.relaxed = relaxed;
-                text += "; it meets the specification with ";
-                for (std::size_t k = 0; k < changes.size(); ++k)
-                    text += (k ? ", " : "") + changes[k];
+                diagnostic =
+                    makeDiagnostic("study_least_violating_relaxed",
+                                   {design, point, joinDiagnostics(changes, "list_comma")});
             } else if (!possible) {
-                text += "; relaxing a limit does not make it pass (it clips the actuator, never "
-                        "settles, or has no positive margin)";
+                diagnostic = makeDiagnostic("study_least_violating_no_relaxing", {design, point});
             }
-            d.warnings.push_back(text);
+            d.warnings.push_back(diagnostic);
         }
     }
 
@@ -332,9 +341,9 @@ SweepDiagnosis diagnoseSweep(const DesignSweepResult& result, const Specificatio
             d.kpAtUpperEdge = iKp + 1 == nKp;
         }
         if (d.wnAtLowerEdge || d.wnAtUpperEdge)
-            d.warnings.push_back(edgeWarning("wn", result.wnValues, d.wnAtUpperEdge));
+            d.warnings.push_back(edgeDiagnostic("wn", result.wnValues, d.wnAtUpperEdge));
         if (d.kpAtLowerEdge || d.kpAtUpperEdge)
-            d.warnings.push_back(edgeWarning("kp", result.kpValues, d.kpAtUpperEdge));
+            d.warnings.push_back(edgeDiagnostic("kp", result.kpValues, d.kpAtUpperEdge));
     }
     return d;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
 #include "core/study/design_sweep.h"
 #include "core/study/specification.h"
 
@@ -47,7 +48,7 @@ struct CriterionFailure {
  * the map).
  */
 struct SweepDiagnosis {
-    std::vector<std::string> warnings;
+    std::vector<Diagnostic> warnings;
 
     /// No computed design is feasible (and at least one was computed).
     bool noneFeasible = false;

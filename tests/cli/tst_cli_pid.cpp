@@ -175,7 +175,7 @@ void TstCliPid::quinticWithTrajectoryDerivativesIsTheSessionsRun() {
     s.trajectory.tfSeconds = 60.0;
     s.trajectory.durationSeconds = 80.0;
     const xyt::AxisEvaluation a = xyt::evaluateAxis(s, 0);
-    QVERIFY2(a.ok, a.error.c_str());
+    QVERIFY2(a.ok, a.error.text.c_str());
     QVERIFY(a.digital);
     // The gains typed above equal the CLI's defaults up to one rounding: 1e-9 on the figures.
     XYT_COMPARE_NEAR(o["tracking"].toObject()["rmse"].toDouble(), a.metrics.rmse, 1e-9, 0.0);

@@ -312,7 +312,7 @@ void TstRegisteredMethod::evaluatesTheLoopItsModuleCloses() {
     const Session s = proportionalSession();
     const SessionEvaluation e = evaluateSession(s);
     const AxisEvaluation& x = e.axes[0];
-    QVERIFY2(x.ok, x.error.c_str());
+    QVERIFY2(x.ok, x.error.text.c_str());
     QVERIFY(!x.gt && !x.pp && x.digital);
     // T = kp k0 / (s^3 + a1 s^2 + a2 s + kp k0): the closed loop in closed form.
     const ThirdOrderPlant& g = s.axes[0].gt.plant;
@@ -328,7 +328,7 @@ void TstRegisteredMethod::evaluatesTheLoopItsModuleCloses() {
     // Its gain margin in closed form (Routh: s^3 + a1 s^2 + a2 s + K is stable for K < a1 a2,
     // the phase crossing at w = sqrt(a2)): GM = a1 a2 / (kp k0).
     const AxisFrequencyAnalysis f = analyzeAxisFrequency(s, x);
-    QVERIFY2(f.ok, f.error.c_str());
+    QVERIFY2(f.ok, f.error.text.c_str());
     const double gm = g.a1 * g.a2 / k;
     // Tolerance: the margin is located by the analysis to 1e-9 relative (stability_margins.h).
     QVERIFY2(std::abs(f.margins.gainMarginFactor - gm) <= 1e-9 * gm,
@@ -345,7 +345,7 @@ void TstRegisteredMethod::evaluatesTheLoopItsModuleCloses() {
     program.trajectory.kind = TrajectoryKind::Gcode;
     program.trajectory.gcode.program = test::kBallbarProgram;
     const SessionEvaluation p = evaluateSession(program);
-    QVERIFY2(p.program, p.programError.c_str());
+    QVERIFY2(p.program, p.programError.text.c_str());
     const ContourTrace& trace = p.program->trace;
     const SimulationResult& x0 = trace.axes[0];
     QCOMPARE(x0.y.size(), trace.profile.t.size());

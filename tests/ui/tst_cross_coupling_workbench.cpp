@@ -173,7 +173,7 @@ private slots:
         s.crossCoupling = {0.1, 0.0, ContourEstimateKind::Circular};
         session_->apply(s, QStringLiteral("mixed"));
         const SessionEvaluation& ev = session_->evaluation();
-        QVERIFY(!ev.couplingError.empty());
+        QVERIFY(!ev.couplingError.text.empty());
         QLabel* label = window_->crossCouplingEditor()->stabilityLabel();
         QVERIFY(!label->isHidden());
         QCOMPARE(label->text(), QString::fromStdString(ev.couplingError));

@@ -113,7 +113,7 @@ private slots:
         test::typeInto(editor->field("coulomb"), "0.5");
         QCOMPARE(session_->session().axes[0].friction.coulombVolts, 0.5);
         const AxisEvaluation& a = session_->axisEvaluation(0);
-        QVERIFY2(a.ok, a.error.c_str());
+        QVERIFY2(a.ok, a.error.text.c_str());
         session_->setMethod(0, DesignMethod::GuilleminTruxal);
         QVERIFY(editor->field("backlash")->isEnabled());
     }

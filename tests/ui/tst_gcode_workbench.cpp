@@ -145,7 +145,7 @@ void TstGcodeWorkbench::everyExampleLoads() {
         editor->programSummary()->text().contains(QString::number(s.runSeconds, 'f', 2) + " s"));
     // Both axes ran along the program's profile: the run lasts the profile's time.
     const AxisEvaluation& x = session_->axisEvaluation(0);
-    QVERIFY2(x.ok, x.error.c_str());
+    QVERIFY2(x.ok, x.error.text.c_str());
     QVERIFY(session_->evaluation().program);
     XYT_COMPARE_NEAR(session_->evaluation().duration.seconds, s.runSeconds, 1e-12, 0.0);
     // Circle programs get the ISO 230-4 figures in the metrics panel; the others do not.

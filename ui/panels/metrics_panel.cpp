@@ -552,7 +552,7 @@ void MetricsPanel::showContour(const SessionEvaluation& evaluation, bool withFri
             lines << iso230 + tr(" mm");
         }
         // The program's warnings are on the XY contour view and in the editor's summary.
-    } else if (!evaluation.programError.empty()) {
+    } else if (!evaluation.programError.text.empty()) {
         notices << tr("program: %1").arg(diagnosticText(evaluation.programError));
     }
     contour_->setText(lines.join(QLatin1Char('\n')));

@@ -449,7 +449,7 @@ QString DesignReport::contourSection(const std::vector<ReportFigure>& figures) c
                               displayNumber(iso.radialDeviationFMin));
         }
     }
-    if (!evaluation_.programError.empty())
+    if (!evaluation_.programError.text.empty())
         lines << tr("program: %1").arg(escaped(evaluation_.programError));
     const ReferenceShaping& shaping = session_.trajectory.shaping;
     if (shaping.active()) {
@@ -473,7 +473,7 @@ QString DesignReport::contourSection(const std::vector<ReportFigure>& figures) c
                     "k<sub>i</sub> = %2 V/(mm s), %3 contour estimate")
                      .arg(coefficientText(cc.kp), coefficientText(cc.ki),
                           QString::fromUtf8(contourEstimateName(cc.estimate)));
-    if (!evaluation_.couplingError.empty())
+    if (!evaluation_.couplingError.text.empty())
         lines << tr("cross-coupling: %1").arg(escaped(evaluation_.couplingError));
     html += listHtml(lines);
     for (const ReportFigure& f : figures)

@@ -13,6 +13,7 @@ private slots:
     void refuses_data();
     void refuses();
     void parseNumberWholeText();
+    void refusalsAreCoded();
 };
 
 void TstCoefficientParser::accepts_data() {
@@ -91,6 +92,27 @@ void TstCoefficientParser::parseNumberWholeText() {
         } catch (const xyt::InvalidInput& e) {
             QCOMPARE(QString::fromStdString(e.field()), QString("--wn"));
         }
+    }
+}
+
+void TstCoefficientParser::refusalsAreCoded() {
+    // The reason carries its catalogue code and, as its argument, the quoted text or the limit.
+    try {
+        xyt::parseCoefficientList("1 abc 3", "den");
+        QFAIL("accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("model_not_a_number_text"));
+        QCOMPARE(e.reasonDiagnostic().args.size(), std::size_t(1));
+        QCOMPARE(e.reasonDiagnostic().args.at(0).text, std::string("'abc'"));
+        QCOMPARE(std::string(e.what()), std::string("den[1]: 'abc' is not a number"));
+    }
+    try {
+        xyt::parseCoefficientList(QString("1 ").repeated(65).toStdString(), "den");
+        QFAIL("accepted");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("model_too_many_coefficients"));
+        QCOMPARE(e.reasonDiagnostic().args.at(0).text, std::string("64"));
+        QCOMPARE(std::string(e.what()), std::string("den: more than 64 coefficients"));
     }
 }
 

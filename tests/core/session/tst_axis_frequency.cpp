@@ -31,7 +31,7 @@ void TstAxisFrequency::gtAxisHoldsItsCrossoversOnTheGrid() {
     const Session s; // Braga et al.'s defaults: lower base wn = 2, kp = 30
     const SessionEvaluation e = evaluateSession(s);
     const AxisFrequencyAnalysis a = analyzeAxisFrequency(s, e.axes[0]);
-    QVERIFY2(a.ok, a.error.c_str());
+    QVERIFY2(a.ok, a.error.text.c_str());
     const std::vector<double>& w = a.responses.openLoop.omegaRadPerSec;
     // The margins are drawn at their frequencies: those must be grid points, not neighbours.
     QVERIFY(onGrid(w, a.margins.gainMarginOmegaRadPerSec));
@@ -60,7 +60,7 @@ void TstAxisFrequency::polePlacementAxisHasTheZpetcTracking() {
     s.trajectory.rampInSeconds = 0.0;
     const SessionEvaluation e = evaluateSession(s);
     const AxisFrequencyAnalysis a = analyzeAxisFrequency(s, e.axes[0]);
-    QVERIFY2(a.ok, a.error.c_str());
+    QVERIFY2(a.ok, a.error.text.c_str());
     QCOMPARE(a.referenceOmegaRadPerSec, 0.1);
     QVERIFY(onGrid(a.responses.openLoop.omegaRadPerSec, 0.1));
     QVERIFY(a.tracking.has_value());
@@ -78,7 +78,7 @@ void TstAxisFrequency::axisWithoutDesignSaysWhy() {
     QVERIFY(!e.axes[1].ok);
     const AxisFrequencyAnalysis a = analyzeAxisFrequency(s, e.axes[1]);
     QVERIFY(!a.ok);
-    QVERIFY(!a.error.empty());
+    QVERIFY(!a.error.text.empty());
 }
 
 void TstAxisFrequency::axisLoopIsWhatEachMethodCloses() {

@@ -128,7 +128,7 @@ private slots:
                     }
                 } catch (const InvalidInput& e) {
                     QCOMPARE(cell.status, CouplingCellStatus::Unstable);
-                    QCOMPARE(cell.message, std::string(e.what()));
+                    QCOMPARE(cell.message.text, std::string(e.what()));
                     sawUnstable = true;
                 }
             }
@@ -175,9 +175,9 @@ private slots:
             sweepProgramCoupling(session, program, cliOptions(), {{3.0}, {0.0}});
         const CouplingSweepCell& cell = sweep.cell(0, 0);
         QCOMPARE(cell.status, CouplingCellStatus::Unstable);
-        QVERIFY2(cell.message.rfind("cross_coupling: the coupled loop is unstable on program line ",
-                                    0) == 0,
-                 cell.message.c_str());
+        QVERIFY2(cell.message.text.rfind(
+                     "cross_coupling: the coupled loop is unstable on program line ", 0) == 0,
+                 cell.message.text.c_str());
         QVERIFY(std::isnan(cell.maxAbsMm));
         QVERIFY(!sweep.best.has_value()); // no Ok cell: no best (the independent is not a cell)
         QCOMPARE(sweep.independent.status, CouplingCellStatus::Ok);
@@ -219,8 +219,9 @@ private slots:
             sweepSessionCoupling(move, evMove, {{0.1, 100.0}, {0.0}});
         QCOMPARE(moveSweep.cell(0, 0).status, CouplingCellStatus::Ok);
         QCOMPARE(moveSweep.cell(1, 0).status, CouplingCellStatus::Unstable);
-        QVERIFY2(moveSweep.cell(1, 0).message.find("unstable on the move") != std::string::npos,
-                 moveSweep.cell(1, 0).message.c_str());
+        QVERIFY2(moveSweep.cell(1, 0).message.text.find("unstable on the move") !=
+                     std::string::npos,
+                 moveSweep.cell(1, 0).message.text.c_str());
         // The session's evaluation with the coupling on shows the same figures.
         Session coupled = withGains(session, {0.1, 1.0, session.crossCoupling.estimate});
         const SessionEvaluation evCoupled = evaluateSession(coupled);
@@ -239,7 +240,7 @@ private slots:
         session.trajectory.dtSeconds = 0.01;
         session.crossCoupling = {0.1, 1.0, ContourEstimateKind::Circular};
         const SessionEvaluation ev = evaluateSession(session);
-        QVERIFY2(ev.program != nullptr, ev.programError.c_str());
+        QVERIFY2(ev.program != nullptr, ev.programError.text.c_str());
         const CouplingSweepResult sweep = sweepSessionCoupling(session, ev, {{0.0, 0.1}, {1.0}});
         QCOMPARE(sweep.cell(1, 0).status, CouplingCellStatus::Ok);
         QVERIFY(sameBits(sweep.cell(1, 0).maxAbsMm, ev.program->contour.maxAbs));

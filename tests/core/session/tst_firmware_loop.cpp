@@ -496,7 +496,7 @@ void TstFirmwareLoop::doubleMatchesTheCore() {
     QTemporaryDir dir;
     for (int i = 0; i < 2; ++i) {
         const AxisEvaluation& a = e.axes[static_cast<std::size_t>(i)];
-        QVERIFY2(a.ok && a.digital, a.error.c_str());
+        QVERIFY2(a.ok && a.digital, a.error.text.c_str());
         const SimulationResult& core = a.digital->run.result;
         QVERIFY(std::count(core.clipped.begin(), core.clipped.end(), true) >
                 0); // clipping exercised

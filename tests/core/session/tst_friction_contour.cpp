@@ -110,7 +110,7 @@ private slots:
                                [&](const std::string& w) { return w.rfind(start, 0) == 0; });
         };
         const AxisEvaluation hunting = evaluate(0.2);
-        QVERIFY2(hunting.ok, hunting.error.c_str());
+        QVERIFY2(hunting.ok, hunting.error.text.c_str());
         QVERIFY(warns(hunting, "hunting at rest"));
         QVERIFY(warns(hunting, "stick-slip during the move"));
         QVERIFY(warns(hunting, "the digital implementation: hunting at rest"));
@@ -128,10 +128,10 @@ private slots:
         Session s = Session::paperDefault();
         s.axes[0].method = DesignMethod::PolePlacementZpetc;
         const AxisEvaluation linear = evaluateAxis(s, 0);
-        QVERIFY2(linear.ok, linear.error.c_str());
+        QVERIFY2(linear.ok, linear.error.text.c_str());
         s.axes[0].friction.coulombVolts = 1e6;
         const AxisEvaluation stuck = evaluateAxis(s, 0);
-        QVERIFY2(stuck.ok, stuck.error.c_str());
+        QVERIFY2(stuck.ok, stuck.error.text.c_str());
         for (double y : stuck.run.y)
             QCOMPARE(y, 0.0);
         QVERIFY(stuck.digital);

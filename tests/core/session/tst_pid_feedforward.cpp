@@ -164,7 +164,7 @@ void TstPidFeedforward::exactFeedforwardLeavesOnlyTheHoldsError() {
         s.trajectory.profile = MoveProfile::Quintic;
         s.trajectory.dtSeconds = k == 0 ? 0.01 : 0.005;
         const AxisEvaluation a = evaluateAxis(s, 0);
-        QVERIFY2(a.ok, a.error.c_str());
+        QVERIFY2(a.ok, a.error.text.c_str());
         errors[static_cast<std::size_t>(k)] = maxAbs(a.run.e);
         feedbackOnly = maxAbs(a.feedbackOnlyRun.e);
     }
@@ -187,7 +187,7 @@ void TstPidFeedforward::sampledErrorFallsWithTheControllerPeriod() {
             s.controllerTsSeconds = ts;
             s.axes[0].parameters["command_derivatives"] = source;
             const AxisEvaluation a = evaluateAxis(s, 0);
-            QVERIFY2(a.ok && a.digital, a.error.c_str());
+            QVERIFY2(a.ok && a.digital, a.error.text.c_str());
             errors.push_back(a.digital->metrics.maxAbsError);
         }
         for (std::size_t k = 0; k + 1 < errors.size(); ++k) {
@@ -221,7 +221,7 @@ void TstPidFeedforward::feedforwardCutsTheLowerBasesErrorThousandfold() {
     const double rmseWithout = without.digital->metrics.rmse;
     XYT_COMPARE_NEAR(rmseWithout, 5.87346, 1e-4, 0.0);
     const AxisEvaluation with = evaluateAxis(pidSession(), 0);
-    QVERIFY2(with.ok, with.error.c_str());
+    QVERIFY2(with.ok, with.error.text.c_str());
     QVERIFY(with.digital);
     const double rmseWith = with.digital->metrics.rmse;
     QVERIFY2(rmseWithout / rmseWith >= 1000.0, qPrintable(QString::number(rmseWith)));
@@ -493,7 +493,7 @@ void TstPidFeedforward::movedZeroIsTheControllersZero() {
     QCOMPARE(zeros.size(), std::size_t{2});
     const auto check = [&](const PidFeedbackGains& moved, std::complex<double> expected1,
                            std::complex<double> expected2) {
-        QVERIFY2(moved.ok, moved.reason.c_str());
+        QVERIFY2(moved.ok, moved.reason.text.c_str());
         Session t = s;
         t.axes[0].parameters["p"] = moved.p;
         t.axes[0].parameters["i"] = moved.i;
@@ -529,12 +529,12 @@ void TstPidFeedforward::programContourAndExportsCarryTheFeedforward() {
     s.trajectory.gcode.program =
         "G21 G90 G17\nG0 X0 Y0\nG1 X20 Y0 F600\nG3 X20 Y20 I0 J10\nG1 X0 Y20\nM2\n";
     const SessionEvaluation alone = evaluateSession(s);
-    QVERIFY2(alone.program, alone.programError.c_str());
+    QVERIFY2(alone.program, alone.programError.text.c_str());
     for (int axis : {0, 1})
         s.axes[static_cast<std::size_t>(axis)] =
             withModelFeedforward(s.axes[static_cast<std::size_t>(axis)], axis);
     const SessionEvaluation withFf = evaluateSession(s);
-    QVERIFY2(withFf.program, withFf.programError.c_str());
+    QVERIFY2(withFf.program, withFf.programError.text.c_str());
     QVERIFY2(
         withFf.program->contour.rms * 10.0 < alone.program->contour.rms,
         qPrintable(

@@ -378,7 +378,7 @@ void TstProgramTrajectory::ballbarProgramIsEvaluated() {
     s.trajectory.gcode.fileName = "ballbar.nc";
     s.trajectory.gcode.program = test::kBallbarProgram;
     const SessionEvaluation e = evaluateSession(s);
-    QVERIFY2(e.program, e.programError.c_str());
+    QVERIFY2(e.program, e.programError.text.c_str());
     QVERIFY(e.program->circular);
     const ContourCircularTest& c = *e.program->circular;
     QVERIFY(c.fromProgram && c.clockwise);
@@ -413,7 +413,7 @@ void TstProgramTrajectory::programIsReadAndPlannedOncePerChange() {
     QVERIFY(state);
     QCOMPARE(state->reads.load(), 0);
     const SessionEvaluation first = evaluateSession(s);
-    QVERIFY2(first.axes[0].ok, first.axes[0].error.c_str());
+    QVERIFY2(first.axes[0].ok, first.axes[0].error.text.c_str());
     QVERIFY(first.program && first.programPath);
     // One read; two plans: the run time (without samples) and the sampled profile.
     QCOMPARE(state->reads.load(), 1);

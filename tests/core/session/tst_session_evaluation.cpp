@@ -106,7 +106,7 @@ void TstSessionEvaluation::axesDoNotDependOnTheThread() {
     const SessionEvaluation e = evaluateSession(s);
     for (int i = 0; i < 2; ++i) {
         const AxisEvaluation& a = e.axes[static_cast<std::size_t>(i)];
-        QVERIFY2(a.ok, a.error.c_str());
+        QVERIFY2(a.ok, a.error.text.c_str());
         QVERIFY(a.digital); // the digital implementation was evaluated
         QVERIFY(!a.run.y.empty());
         QVERIFY(fingerprint(a) == fingerprint(evaluateAxis(s, i)));
@@ -135,7 +135,7 @@ void TstSessionEvaluation::verdictIsThatOfTheRunThatWillHappen() {
     Session s = Session::paperDefault();
     s.axes[0].method = DesignMethod::PolePlacementZpetc;
     const AxisEvaluation a = evaluateAxis(s, 0);
-    QVERIFY2(a.ok, a.error.c_str());
+    QVERIFY2(a.ok, a.error.text.c_str());
     QVERIFY(a.digital && a.implementationCheck);
     QVERIFY(a.designCheck.trackingError);            // the design: micrometres of error
     QVERIFY(!a.implementationCheck->trackingError);  // the implementation: stalls
@@ -248,7 +248,7 @@ void TstSessionEvaluation::refusalNamesTheField() {
     QVERIFY(!a.ok);
     QCOMPARE(QString::fromStdString(a.errorField), field);
     QCOMPARE(a.runRefused, runRefused);
-    QVERIFY2(QString::fromStdString(a.error).contains(reason), a.error.c_str());
+    QVERIFY2(QString::fromStdString(a.error).contains(reason), a.error.text.c_str());
     // A refused axis has no run and no program contour.
     QVERIFY(a.run.t.empty());
     QVERIFY(!e.program && !e.contour);
@@ -266,7 +266,9 @@ void TstSessionEvaluation::setDurationIsUsedAsSet() {
     QVERIFY(!d.automatic && !d.includesSettle && !d.capped);
     QCOMPARE(d.seconds, 200.0);
     QCOMPARE(d.capSeconds, 200.0);
-    QVERIFY(d.description.find("set in the session") != std::string::npos);
+    QCOMPARE(d.description.text, std::string("duration 200 s (set in the session)"));
+    QCOMPARE(d.description.code, std::string("session_duration_set"));
+    QCOMPARE(d.description.args.at(0).text, std::string("200"));
 }
 
 void TstSessionEvaluation::circleRunsTheRampAndOneRevolution() {
@@ -339,9 +341,10 @@ void TstSessionEvaluation::movePastTheWindowIsCappedAtThreeMoves() {
     QCOMPARE(d.capSeconds, 65.0);
     QCOMPARE(d.seconds, 65.0);
     QVERIFY(20.0 + 1.5 * d.settleEstimateSeconds + 1.5 > 65.0);
-    QVERIFY2(d.description.find("cut to the cap of tf + 3 move durations") != std::string::npos,
-             d.description.c_str());
-    QVERIFY(d.description.find("lowered") == std::string::npos);
+    QVERIFY2(d.description.text.find("cut to the cap of tf + 3 move durations") !=
+                 std::string::npos,
+             d.description.text.c_str());
+    QVERIFY(d.description.text.find("lowered") == std::string::npos);
 }
 
 void TstSessionEvaluation::capIsLoweredToTheSampleLimit() {
@@ -356,8 +359,8 @@ void TstSessionEvaluation::capIsLoweredToTheSampleLimit() {
     XYT_COMPARE_NEAR(d.capSeconds, (1e6 - 2.0) * 1e-4, 1e-15, 0.0);
     QVERIFY(d.capped);
     QCOMPARE(d.seconds, d.capSeconds);
-    QVERIFY2(d.description.find("lowered to what a million samples hold") != std::string::npos,
-             d.description.c_str());
+    QVERIFY2(d.description.text.find("lowered to what a million samples hold") != std::string::npos,
+             d.description.text.c_str());
 }
 
 void TstSessionEvaluation::moveShorterThanTheStepIsRefused() {
@@ -370,14 +373,14 @@ void TstSessionEvaluation::moveShorterThanTheStepIsRefused() {
     QVERIFY(d.automatic && !d.includesSettle && !d.capped);
     QCOMPARE(d.seconds, 0.005);
     QCOMPARE(d.capSeconds, 0.005 + 3.0 * 0.005);
-    QVERIFY(d.description.find("the move only") != std::string::npos);
+    QVERIFY(d.description.text.find("the move only") != std::string::npos);
     const SessionEvaluation e = evaluateSession(s);
     for (const AxisEvaluation& a : e.axes) {
         QVERIFY(!a.ok && a.runRefused);
         QCOMPARE(QString::fromStdString(a.errorField), QString("trajectory.dt"));
-        QVERIFY2(a.error.find("gives a single sample (step 0.01 s, duration 0.005 s)") !=
+        QVERIFY2(a.error.text.find("gives a single sample (step 0.01 s, duration 0.005 s)") !=
                      std::string::npos,
-                 a.error.c_str());
+                 a.error.text.c_str());
     }
 }
 

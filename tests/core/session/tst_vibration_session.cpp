@@ -76,7 +76,7 @@ private slots:
         QVERIFY(d.referenceModel == rigid.referenceModel);
         // The evaluation's margins are the loop's (stability_margins of this L).
         const AxisEvaluation e = evaluateAxis(s, 0);
-        QVERIFY2(e.ok, e.error.c_str());
+        QVERIFY2(e.ok, e.error.text.c_str());
         QVERIFY(e.margins.has_value());
         QCOMPARE(e.margins->phaseMarginDeg, stabilityMargins(d.openLoop).phaseMarginDeg);
         // The frequency analysis draws the same loop: order 4 (PI G) + 2 (mode) + 2 (notch).
@@ -162,7 +162,7 @@ private slots:
         QVERIFY(std::abs(m.velocity - v) <= 1e-12 * std::abs(v));
         // The evaluation compares the run with the unshaped one.
         const AxisEvaluation e = evaluateAxis(s, 0);
-        QVERIFY2(e.ok, e.error.c_str());
+        QVERIFY2(e.ok, e.error.text.c_str());
         QVERIFY(e.shaping);
         QCOMPARE(e.shaping->unshapedRun.t.size(), e.run.t.size());
         QVERIFY(!e.shaping->fromAxisMode); // the rigid table: the shaper's own mode
@@ -186,7 +186,7 @@ private slots:
         for (const auto& [type, f] : {std::pair{ShaperType::Zvd, 22.0}, {ShaperType::Zv, 20.0}}) {
             s.trajectory.shaping = {type, f, 0.05};
             const AxisEvaluation e = evaluateAxis(s, 0);
-            QVERIFY2(e.ok, e.error.c_str());
+            QVERIFY2(e.ok, e.error.text.c_str());
             QVERIFY(e.shaping && e.shaping->fromAxisMode);
             const double h = 1e-5;
             const auto motion = axisMotion(s.trajectory, 0);
@@ -212,7 +212,7 @@ private slots:
         Session s = sessionWithMode(false);
         s.trajectory.shaping = {ShaperType::Zv, 20.0, 0.05};
         const AxisVibration v = analyzeAxisVibration(s, 0);
-        QVERIFY2(v.ok, v.error.c_str());
+        QVERIFY2(v.ok, v.error.text.c_str());
         double peak = -1e300;
         for (std::size_t i = 0; i < v.frequencyHz.size(); ++i)
             peak = std::max(peak, v.plantDb[i] - v.rigidDb[i]);
@@ -226,7 +226,7 @@ private slots:
         s.axes[1].method = DesignMethod::PolePlacementZpetc;
         const AxisVibration pp = analyzeAxisVibration(s, 1);
         QVERIFY(!pp.ok);
-        QVERIFY(pp.error.find("ARX") != std::string::npos);
+        QVERIFY(pp.error.text.find("ARX") != std::string::npos);
     }
 
     /// The rigid table is the rigid table: no mode and no notch give the same loop and run, bit

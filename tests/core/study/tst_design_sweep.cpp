@@ -399,6 +399,8 @@ void TstDesignSweep::badBatchWidthNamed() {
         QFAIL("a batch width of 3 was accepted");
     } catch (const InvalidInput& e) {
         QCOMPARE(e.field(), std::string("batch_width"));
+        QCOMPARE(e.reasonDiagnostic().code, std::string("study_batch_width"));
+        QCOMPARE(e.reason(), std::string("must be 1, 2, 4 or 8"));
     }
     DesignProblem p = lowerBaseCubic(10.0);
     p.stepSamples = 99; // stepCharacteristics needs at least 100
@@ -407,6 +409,11 @@ void TstDesignSweep::badBatchWidthNamed() {
         QFAIL("99 step samples were accepted");
     } catch (const InvalidInput& e) {
         QCOMPARE(e.field(), std::string("step_samples"));
+        // A generic reason with its bounds as arguments.
+        QCOMPARE(e.reasonDiagnostic().code, std::string("study_from_to"));
+        QCOMPARE(e.reasonDiagnostic().args.at(0).text, std::string("100"));
+        QCOMPARE(e.reasonDiagnostic().args.at(1).text, std::string("100000"));
+        QCOMPARE(e.reason(), std::string("must be from 100 to 100000"));
     }
 }
 
