@@ -3708,6 +3708,230 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>model_already_discrete</name>
+    <message>
+        <source>is already discrete</source>
+        <translation>já é discreto</translation>
+    </message>
+</context>
+<context>
+    <name>model_anti_resonance_below</name>
+    <message>
+        <source>must lie below the resonance (a two-mass model&apos;s motor side)</source>
+        <translation>deve ficar abaixo da ressonância (o lado do motor de um modelo de duas massas)</translation>
+    </message>
+</context>
+<context>
+    <name>model_anti_resonance_frequency</name>
+    <message>
+        <source>must be 0 (a resonant pair) or a frequency &gt; 0 Hz</source>
+        <translation>deve ser 0 (um par ressonante) ou uma frequência &gt; 0 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>model_at_least_degree</name>
+    <message>
+        <source>must be at least the degree %1</source>
+        <translation>deve ser pelo menos o grau %1</translation>
+    </message>
+</context>
+<context>
+    <name>model_compensation_band</name>
+    <message>
+        <source>must be a finite number &gt; 0 (mm/s)</source>
+        <translation>deve ser um número finito &gt; 0 (mm/s)</translation>
+    </message>
+</context>
+<context>
+    <name>model_compensation_percent</name>
+    <message>
+        <source>must be between 0 and 200 %</source>
+        <translation>deve estar entre 0 e 200 %</translation>
+    </message>
+</context>
+<context>
+    <name>model_continuous_no_zinv</name>
+    <message>
+        <source>a continuous system has no z^-1 form</source>
+        <translation>um sistema contínuo não tem forma em z^-1</translation>
+    </message>
+</context>
+<context>
+    <name>model_damping_ratio</name>
+    <message>
+        <source>must be a damping ratio in [0, 1)</source>
+        <translation>deve ser um coeficiente de amortecimento em [0, 1)</translation>
+    </message>
+</context>
+<context>
+    <name>model_denominator_zero</name>
+    <message>
+        <source>the denominator is zero</source>
+        <translation>o denominador é zero</translation>
+    </message>
+</context>
+<context>
+    <name>model_different_sample_times</name>
+    <message>
+        <source>cannot combine systems with different sample times</source>
+        <translation>não é possível combinar sistemas com períodos de amostragem diferentes</translation>
+    </message>
+</context>
+<context>
+    <name>model_discretization_loses_precision</name>
+    <message>
+        <source>the exact discretization over %1 s loses double precision (a very fast pole beside a large gain): its step matrix grows by %2 a step where the system grows by %3; use a smaller sample time or rescale the model</source>
+        <translation>a discretização exata em %1 s perde a precisão dupla (um polo muito rápido ao lado de um ganho grande): sua matriz de passo cresce %2 por passo onde o sistema cresce %3; use um período de amostragem menor ou reescale o modelo</translation>
+    </message>
+</context>
+<context>
+    <name>model_discretization_overflows</name>
+    <message>
+        <source>the exact discretization over %1 s overflows double precision (a very fast pole): use a smaller sample time</source>
+        <translation>a discretização exata em %1 s estoura a precisão dupla (um polo muito rápido): use um período de amostragem menor</translation>
+    </message>
+</context>
+<context>
+    <name>model_division_by_zero_polynomial</name>
+    <message>
+        <source>division by the zero polynomial</source>
+        <translation>divisão pelo polinômio nulo</translation>
+    </message>
+</context>
+<context>
+    <name>model_empty_coefficient_list</name>
+    <message>
+        <source>the coefficient list is empty</source>
+        <translation>a lista de coeficientes está vazia</translation>
+    </message>
+</context>
+<context>
+    <name>model_expected_number</name>
+    <message>
+        <source>expected a number, got nothing</source>
+        <translation>esperava um número, não recebeu nada</translation>
+    </message>
+</context>
+<context>
+    <name>model_improper_no_realization</name>
+    <message>
+        <source>an improper transfer function has no state-space realization</source>
+        <translation>uma função de transferência imprópria não tem realização em espaço de estados</translation>
+    </message>
+</context>
+<context>
+    <name>model_improper_no_zinv</name>
+    <message>
+        <source>an improper discrete system has no causal z^-1 form</source>
+        <translation>um sistema discreto impróprio não tem forma causal em z^-1</translation>
+    </message>
+</context>
+<context>
+    <name>model_mode_frequency</name>
+    <message>
+        <source>must be 0 (no mode) or a frequency &gt; 0 Hz</source>
+        <translation>deve ser 0 (sem modo) ou uma frequência &gt; 0 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>model_not_a_finite_number_text</name>
+    <message>
+        <source>%1 is not a finite number</source>
+        <translation>%1 não é um número finito</translation>
+    </message>
+</context>
+<context>
+    <name>model_not_a_number_text</name>
+    <message>
+        <source>%1 is not a number</source>
+        <translation>%1 não é um número</translation>
+    </message>
+</context>
+<context>
+    <name>model_number_out_of_range</name>
+    <message>
+        <source>%1 is out of the range of a double</source>
+        <translation>%1 está fora do intervalo de um double</translation>
+    </message>
+</context>
+<context>
+    <name>model_root_beyond_double</name>
+    <message>
+        <source>has a root beyond the range of a double (its leading coefficient is negligible against the others)</source>
+        <translation>tem uma raiz além do intervalo de um double (seu coeficiente dominante é desprezível frente aos outros)</translation>
+    </message>
+</context>
+<context>
+    <name>model_root_count</name>
+    <message>
+        <source>has %1 roots, expected %2</source>
+        <translation>tem %1 raízes, esperadas %2</translation>
+    </message>
+</context>
+<context>
+    <name>model_sample_time</name>
+    <message>
+        <source>sample time must be a finite number &gt;= 0 (0 for continuous)</source>
+        <translation>o período de amostragem deve ser um número finito &gt;= 0 (0 para contínuo)</translation>
+    </message>
+</context>
+<context>
+    <name>model_sign</name>
+    <message>
+        <source>must be +1 or -1</source>
+        <translation>deve ser +1 ou -1</translation>
+    </message>
+</context>
+<context>
+    <name>model_static_below_coulomb</name>
+    <message>
+        <source>must be at least the Coulomb level (or 0 for the Coulomb level)</source>
+        <translation>deve ser pelo menos o nível de Coulomb (ou 0 para o nível de Coulomb)</translation>
+    </message>
+</context>
+<context>
+    <name>model_stribeck_velocity</name>
+    <message>
+        <source>must be &gt; 0 when the static level is above the Coulomb level</source>
+        <translation>deve ser &gt; 0 quando o nível estático está acima do nível de Coulomb</translation>
+    </message>
+</context>
+<context>
+    <name>model_too_many_coefficients</name>
+    <message>
+        <source>more than %1 coefficients</source>
+        <translation>mais de %1 coeficientes</translation>
+    </message>
+</context>
+<context>
+    <name>model_unclosed_bracket</name>
+    <message>
+        <source>an opening &apos;[&apos; has no closing &apos;]&apos;</source>
+        <translation>um &apos;[&apos; de abertura não tem &apos;]&apos; de fechamento</translation>
+    </message>
+</context>
+<context>
+    <name>model_z0_coefficient_zero</name>
+    <message>
+        <source>the z^0 coefficient of the denominator must be nonzero</source>
+        <translation>o coeficiente z^0 do denominador deve ser diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>model_zero_polynomial_no_leading</name>
+    <message>
+        <source>the zero polynomial has no leading coefficient</source>
+        <translation>o polinômio nulo não tem coeficiente dominante</translation>
+    </message>
+</context>
+<context>
+    <name>model_zero_polynomial_no_roots</name>
+    <message>
+        <source>the zero polynomial has no finite set of roots</source>
+        <translation>o polinômio nulo não tem um conjunto finito de raízes</translation>
+    </message>
+</context>
+<context>
     <name>no_digital_implementation</name>
     <message>
         <source>no digital implementation: %1</source>
@@ -3796,6 +4020,762 @@ falha: %1</translation>
     <message>
         <source>the run ends before the move does (tf): no settle figures</source>
         <translation>a simulação termina antes do movimento (tf): sem valores de acomodação</translation>
+    </message>
+</context>
+<context>
+    <name>session_a0_zero</name>
+    <message>
+        <source>A(0) must be nonzero</source>
+        <translation>A(0) deve ser diferente de zero</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_axis</name>
+    <message>
+        <source>axis %1</source>
+        <translation>eixo %1</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_change</name>
+    <message>
+        <source>%1 %2 %3</source>
+        <translation>%1 %2 %3</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_gain_margin</name>
+    <message>
+        <source>%1: gain margin %2 dB (minimum %3)</source>
+        <translation>%1: margem de ganho %2 dB (mínimo %3)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_no_design</name>
+    <message>
+        <source>%1 has no design (%2: %3)</source>
+        <translation>%1 não tem projeto (%2: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_overshoot</name>
+    <message>
+        <source>%1: the step overshoots %2 % (limit %3 %)</source>
+        <translation>%1: o degrau tem sobressinal de %2 % (limite %3 %)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_overshoot_gt</name>
+    <message>
+        <source>%1: the step overshoots %2 % (limit %3 %): every Guillemin-Truxal design overshoots, its reference model is type 2 (the step error integrates to zero), so 0 % cannot be met</source>
+        <translation>%1: o degrau tem sobressinal de %2 % (limite %3 %): todo projeto Guillemin-Truxal tem sobressinal, seu modelo de referência é de tipo 2 (o erro ao degrau integra a zero), então 0 % não pode ser atendido</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_phase_margin</name>
+    <message>
+        <source>%1: phase margin %2 deg (minimum %3)</source>
+        <translation>%1: margem de fase %2 deg (mínimo %3)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_saturation</name>
+    <message>
+        <source>%1: the command reaches the ±%2 V limit; a looser limit elsewhere does not change that</source>
+        <translation>%1: o comando atinge o limite de ±%2 V; um limite mais folgado em outro lugar não muda isso</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_settle_after</name>
+    <message>
+        <source>%1: it settles into ±%2 mm only %3 s after the move (limit %4 s)</source>
+        <translation>%1: acomoda-se em ±%2 mm só %3 s após o movimento (limite %4 s)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_settle_estimated</name>
+    <message>
+        <source>%1: it settles into ±%2 mm only about %3 s after the move (estimated: not within the run) (limit %4 s)</source>
+        <translation>%1: acomoda-se em ±%2 mm só cerca de %3 s após o movimento (estimado: não dentro da execução) (limite %4 s)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_settle_not_within</name>
+    <message>
+        <source>%1: it settles into ±%2 mm not within the run (limit %3 s)</source>
+        <translation>%1: não se acomoda em ±%2 mm dentro da execução (limite %3 s)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_settling</name>
+    <message>
+        <source>%1: the step settles in %2 s (limit %3 s)</source>
+        <translation>%1: o degrau se acomoda em %2 s (limite %3 s)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_slowest_pole</name>
+    <message>
+        <source>%1: its slowest closed-loop pole, at -%2 rad/s beside the PI zero, decays that slowly</source>
+        <translation>%1: seu polo de malha fechada mais lento, em -%2 rad/s ao lado do zero do PI, decai assim devagar</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_tracking</name>
+    <message>
+        <source>%1: the tracking error reaches %2 % of the travel (limit %3 %)</source>
+        <translation>%1: o erro de seguimento atinge %2 % do curso (limite %3 %)</translation>
+    </message>
+</context>
+<context>
+    <name>session_advice_unstable</name>
+    <message>
+        <source>%1: the closed loop is unstable; no limit makes it pass</source>
+        <translation>%1: a malha fechada é instável; nenhum limite a faz passar</translation>
+    </message>
+</context>
+<context>
+    <name>session_arx_backlash</name>
+    <message>
+        <source>backlash needs the moving mass of a continuous plant; a pole-placement axis&apos; ARX model takes the Coulomb level and the amplifier deadband only, as a dead zone of its input</source>
+        <translation>a folga precisa da massa móvel de uma planta contínua; o modelo ARX de um eixo de alocação de polos aceita apenas o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
+    </message>
+</context>
+<context>
+    <name>session_arx_compensation</name>
+    <message>
+        <source>friction compensation needs the moving mass of a continuous plant; a pole-placement axis&apos; ARX model takes the Coulomb level and the amplifier deadband only, as a dead zone of its input</source>
+        <translation>a compensação de atrito precisa da massa móvel de uma planta contínua; o modelo ARX de um eixo de alocação de polos aceita apenas o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
+    </message>
+</context>
+<context>
+    <name>session_arx_static_level</name>
+    <message>
+        <source>a static level above the Coulomb level needs the moving mass of a continuous plant; a pole-placement axis&apos; ARX model takes the Coulomb level and the amplifier deadband only, as a dead zone of its input</source>
+        <translation>um nível estático acima do nível de Coulomb precisa da massa móvel de uma planta contínua; o modelo ARX de um eixo de alocação de polos aceita apenas o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
+    </message>
+</context>
+<context>
+    <name>session_arx_viscous</name>
+    <message>
+        <source>viscous friction needs the moving mass of a continuous plant; a pole-placement axis&apos; ARX model takes the Coulomb level and the amplifier deadband only, as a dead zone of its input</source>
+        <translation>o atrito viscoso precisa da massa móvel de uma planta contínua; o modelo ARX de um eixo de alocação de polos aceita apenas o nível de Coulomb e a zona morta do amplificador, como uma zona morta da sua entrada</translation>
+    </message>
+</context>
+<context>
+    <name>session_axes_runs_samples</name>
+    <message>
+        <source>the two axes&apos; runs do not have the same samples</source>
+        <translation>as execuções dos dois eixos não têm as mesmas amostras</translation>
+    </message>
+</context>
+<context>
+    <name>session_axis_id_not_unique</name>
+    <message>
+        <source>must differ from axes[0].id</source>
+        <translation>deve ser diferente de axes[0].id</translation>
+    </message>
+</context>
+<context>
+    <name>session_axis_no_design</name>
+    <message>
+        <source>has no design</source>
+        <translation>não tem projeto</translation>
+    </message>
+</context>
+<context>
+    <name>session_axis_no_digital_to_couple</name>
+    <message>
+        <source>axis %1 has no digital implementation to couple</source>
+        <translation>o eixo %1 não tem implementação digital para acoplar</translation>
+    </message>
+</context>
+<context>
+    <name>session_bad_axis_id</name>
+    <message>
+        <source>must be 1 to 16 lower-case letters or digits (it names the exported C functions)</source>
+        <translation>deve ter de 1 a 16 letras minúsculas ou dígitos (nomeia as funções C exportadas)</translation>
+    </message>
+</context>
+<context>
+    <name>session_bad_method_id</name>
+    <message>
+        <source>the id &apos;%1&apos; must be 1 to 32 lower-case letters, digits, &apos;-&apos; or &apos;_&apos;</source>
+        <translation>o id &apos;%1&apos; deve ter de 1 a 32 letras minúsculas, dígitos, &apos;-&apos; ou &apos;_&apos;</translation>
+    </message>
+</context>
+<context>
+    <name>session_bad_method_parameter</name>
+    <message>
+        <source>the parameter &apos;%1&apos; of &apos;%2&apos; needs a name of lower-case letters, digits and &apos;_&apos; and minimum &lt;= default &lt;= maximum</source>
+        <translation>o parâmetro &apos;%1&apos; de &apos;%2&apos; precisa de um nome de letras minúsculas, dígitos e &apos;_&apos; e mínimo &lt;= padrão &lt;= máximo</translation>
+    </message>
+</context>
+<context>
+    <name>session_cannot_export</name>
+    <message>
+        <source>cannot be exported: %1: %2</source>
+        <translation>não pode ser exportado: %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>session_cannot_run</name>
+    <message>
+        <source>cannot run: %1: %2</source>
+        <translation>não pode executar: %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>session_contour_needs_path</name>
+    <message>
+        <source>the contour analysis needs a circle or a G-code program (a cubic drives both axes along one line)</source>
+        <translation>a análise de contorno precisa de um círculo ou de um programa G-code (uma cúbica move os dois eixos ao longo de uma reta)</translation>
+    </message>
+</context>
+<context>
+    <name>session_controller_continuous</name>
+    <message>
+        <source>must be continuous (a discrete loop has its own model)</source>
+        <translation>deve ser contínuo (uma malha discreta tem seu próprio modelo)</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupled_loop_unstable</name>
+    <message>
+        <source>the coupled loop is unstable on %1 (direction %2): spectral radius %3; lower the coupling&apos;s gains (kp %4 V/mm, ki %5 V/(mm s))</source>
+        <translation>a malha acoplada é instável em %1 (direção %2): raio espectral %3; reduza os ganhos do acoplamento (kp %4 V/mm, ki %5 V/(mm s))</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupled_run_diverged</name>
+    <message>
+        <source>the coupled run diverged (its contour error is not a finite number)</source>
+        <translation>a execução acoplada divergiu (seu erro de contorno não é um número finito)</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupled_run_diverged_because</name>
+    <message>
+        <source>the coupled run diverged (%1)</source>
+        <translation>a execução acoplada divergiu (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupling_frozen_unstable</name>
+    <message>
+        <source>the coupled loop frozen at %1 of %2 directions is unstable (spectral radius up to %3 at %4): on the arcs the coupling may not settle</source>
+        <translation>a malha acoplada congelada em %1 de %2 direções é instável (raio espectral até %3 em %4): nos arcos o acoplamento pode não se acomodar</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupling_off</name>
+    <message>
+        <source>is off (kp and ki are 0)</source>
+        <translation>está desligado (kp e ki são 0)</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupling_one_digital_period</name>
+    <message>
+        <source>needs both digital controllers at one period: the x axis runs every %1 s, the y axis every %2 s</source>
+        <translation>precisa dos dois controladores digitais com um só período: o eixo x executa a cada %1 s, o eixo y a cada %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupling_one_period</name>
+    <message>
+        <source>needs both axes at one controller period: the x axis runs every %1 s, the y axis every %2 s</source>
+        <translation>precisa dos dois eixos com um só período de controlador: o eixo x executa a cada %1 s, o eixo y a cada %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>session_coupling_one_period_why</name>
+    <message>
+        <source>needs both axes at one controller period: the x axis runs every %1 s, the y axis every %2 s (a pole-placement axis runs at its Ts, a continuous one at the trajectory&apos;s dt)</source>
+        <translation>precisa dos dois eixos com um só período de controlador: o eixo x executa a cada %1 s, o eixo y a cada %2 s (um eixo de alocação de polos executa no seu Ts, um contínuo no dt da trajetória)</translation>
+    </message>
+</context>
+<context>
+    <name>session_criterion_actuator_limit</name>
+    <message>
+        <source>the actuator limit</source>
+        <translation>o limite do atuador</translation>
+    </message>
+</context>
+<context>
+    <name>session_criterion_settle</name>
+    <message>
+        <source>the settle after the move</source>
+        <translation>a acomodação após o movimento</translation>
+    </message>
+</context>
+<context>
+    <name>session_criterion_tracking_error</name>
+    <message>
+        <source>the tracking error</source>
+        <translation>o erro de seguimento</translation>
+    </message>
+</context>
+<context>
+    <name>session_cross_coupling_note</name>
+    <message>
+        <source>cross-coupling: %1</source>
+        <translation>acoplamento cruzado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>session_derivative_filter_beyond_nyquist</name>
+    <message>
+        <source>%1 s puts the filter&apos;s corner 1/Tf beyond the Nyquist frequency pi/Ts of the controller period: use 0 (no filter) or at least %2 s</source>
+        <translation>%1 s coloca a frequência de corte 1/Tf do filtro além da frequência de Nyquist pi/Ts do período do controlador: use 0 (sem filtro) ou pelo menos %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>session_design_space_methods</name>
+    <message>
+        <source>the design space applies to Guillemin-Truxal and PI + feedforward axes</source>
+        <translation>o espaço de projeto se aplica a eixos Guillemin-Truxal e PI + pré-alimentação</translation>
+    </message>
+</context>
+<context>
+    <name>session_design_space_pi_only</name>
+    <message>
+        <source>the design space maps PI gains (with the feedforward): set D to 0</source>
+        <translation>o espaço de projeto mapeia ganhos PI (com a pré-alimentação): ajuste D para 0</translation>
+    </message>
+</context>
+<context>
+    <name>session_digital_runs_samples</name>
+    <message>
+        <source>the two digital runs do not have the same samples</source>
+        <translation>as duas execuções digitais não têm as mesmas amostras</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_circle</name>
+    <message>
+        <source>duration %1 s (automatic: the ramp-in and one revolution)</source>
+        <translation>duração %1 s (automática: a rampa de entrada e uma volta)</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_move_only</name>
+    <message>
+        <source>duration %1 s (automatic: the move only; no axis has a stable design to settle)</source>
+        <translation>duração %1 s (automática: só o movimento; nenhum eixo tem projeto estável para se acomodar)</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_never</name>
+    <message>
+        <source>never</source>
+        <translation>nunca</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_program</name>
+    <message>
+        <source>duration %1 s (the program&apos;s feed profile)</source>
+        <translation>duração %1 s (o perfil de avanço do programa)</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_set</name>
+    <message>
+        <source>duration %1 s (set in the session)</source>
+        <translation>duração %1 s (definida na sessão)</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_settle</name>
+    <message>
+        <source>duration %1 s (automatic: the move to tf = %2 s and the settle into %3 mm, estimated %4 after tf from the slowest closed-loop pole)</source>
+        <translation>duração %1 s (automática: o movimento até tf = %2 s e a acomodação em %3 mm, estimada %4 após tf pelo polo de malha fechada mais lento)</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_settle_capped</name>
+    <message>
+        <source>duration %1 s (automatic: the move to tf = %2 s and the settle into %3 mm, estimated %4 after tf from the slowest closed-loop pole; cut to the cap of tf + %5 move durations)</source>
+        <translation>duração %1 s (automática: o movimento até tf = %2 s e a acomodação em %3 mm, estimada %4 após tf pelo polo de malha fechada mais lento; cortada no teto de tf + %5 durações do movimento)</translation>
+    </message>
+</context>
+<context>
+    <name>session_duration_settle_lowered</name>
+    <message>
+        <source>duration %1 s (automatic: the move to tf = %2 s and the settle into %3 mm, estimated %4 after tf from the slowest closed-loop pole; cut to the cap of tf + %5 move durations (lowered to what a million samples hold at this dt))</source>
+        <translation>duração %1 s (automática: o movimento até tf = %2 s e a acomodação em %3 mm, estimada %4 após tf pelo polo de malha fechada mais lento; cortada no teto de tf + %5 durações do movimento (reduzido ao que um milhão de amostras comporta neste dt))</translation>
+    </message>
+</context>
+<context>
+    <name>session_export_not_finite</name>
+    <message>
+        <source>gives %1 in the export, not a finite number; nothing was exported</source>
+        <translation>dá %1 na exportação, não um número finito; nada foi exportado</translation>
+    </message>
+</context>
+<context>
+    <name>session_float_overflow</name>
+    <message>
+        <source>gives %1 for %2, beyond the largest float (%3): it would be inf in float arithmetic; export in double precision; nothing was exported</source>
+        <translation>dá %1 para %2, além do maior float (%3): seria inf em aritmética float; exporte em precisão dupla; nada foi exportado</translation>
+    </message>
+</context>
+<context>
+    <name>session_float_underflow</name>
+    <message>
+        <source>gives %1 for %2, which rounds to 0 in float (the smallest is %3); export in double precision; nothing was exported</source>
+        <translation>dá %1 para %2, que arredonda para 0 em float (o menor é %3); exporte em precisão dupla; nada foi exportado</translation>
+    </message>
+</context>
+<context>
+    <name>session_identified_no_covariance</name>
+    <message>
+        <source>the identified %1 has no covariance to draw plants from</source>
+        <translation>o %1 identificado não tem covariância para sortear plantas</translation>
+    </message>
+</context>
+<context>
+    <name>session_identified_wrong_method</name>
+    <message>
+        <source>the identified %1 is not a model of the axis&apos; design method</source>
+        <translation>o %1 identificado não é um modelo do método de projeto do eixo</translation>
+    </message>
+</context>
+<context>
+    <name>session_implementation_fails</name>
+    <message>
+        <source>the design meets %1, its digital implementation does not: the verdict is the implementation&apos;s</source>
+        <translation>o projeto atende %1, sua implementação digital não: o veredito é o da implementação</translation>
+    </message>
+</context>
+<context>
+    <name>session_iso230_note</name>
+    <message>
+        <source>ISO 230-4: %1</source>
+        <translation>ISO 230-4: %1</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_in_position_window</name>
+    <message>
+        <source>in-position window</source>
+        <translation>janela de posição</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_max_error</name>
+    <message>
+        <source>max error</source>
+        <translation>erro máx.</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_max_overshoot</name>
+    <message>
+        <source>max overshoot</source>
+        <translation>sobressinal máx.</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_max_settle_time</name>
+    <message>
+        <source>max settle time</source>
+        <translation>tempo de acomodação após o movimento máx.</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_max_settling_time</name>
+    <message>
+        <source>max settling time</source>
+        <translation>tempo de acomodação máx.</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_min_gain_margin</name>
+    <message>
+        <source>min gain margin</source>
+        <translation>margem de ganho mín.</translation>
+    </message>
+</context>
+<context>
+    <name>session_limit_min_phase_margin</name>
+    <message>
+        <source>min phase margin</source>
+        <translation>margem de fase mín.</translation>
+    </message>
+</context>
+<context>
+    <name>session_list_and</name>
+    <message>
+        <source>%1 and %2</source>
+        <translation>%1 e %2</translation>
+    </message>
+</context>
+<context>
+    <name>session_max_samples</name>
+    <message>
+        <source>a run needs at least 2 samples (0: no limit)</source>
+        <translation>uma execução precisa de pelo menos 2 amostras (0: sem limite)</translation>
+    </message>
+</context>
+<context>
+    <name>session_method_not_registered</name>
+    <message>
+        <source>no design method is registered for this value</source>
+        <translation>nenhum método de projeto está registrado para este valor</translation>
+    </message>
+</context>
+<context>
+    <name>session_method_registered</name>
+    <message>
+        <source>a method with the value or the id of &apos;%1&apos; is registered already</source>
+        <translation>um método com o valor ou o id de &apos;%1&apos; já está registrado</translation>
+    </message>
+</context>
+<context>
+    <name>session_method_takes_no_coupling</name>
+    <message>
+        <source>the %1 method&apos;s loop takes no coupling</source>
+        <translation>a malha do método %1 não aceita acoplamento</translation>
+    </message>
+</context>
+<context>
+    <name>session_mode_and_friction</name>
+    <message>
+        <source>a flexible mode and the table&apos;s friction are not simulated together (the friction model&apos;s moving mass is rigid): set the mode&apos;s frequency or the friction levels to 0</source>
+        <translation>um modo flexível e o atrito da mesa não são simulados juntos (a massa móvel do modelo de atrito é rígida): ajuste a frequência do modo ou os níveis de atrito para 0</translation>
+    </message>
+</context>
+<context>
+    <name>session_model_no_estimate</name>
+    <message>
+        <source>%1 has no estimate (%2)</source>
+        <translation>%1 não tem estimativa (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>session_model_no_estimate_because</name>
+    <message>
+        <source>%1 has no estimate (%2: %3)</source>
+        <translation>%1 não tem estimativa (%2: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>session_model_not_identified</name>
+    <message>
+        <source>the axis&apos; model was not identified from data (set ranges instead)</source>
+        <translation>o modelo do eixo não foi identificado a partir de dados (defina faixas em vez disso)</translation>
+    </message>
+</context>
+<context>
+    <name>session_needs_one_value</name>
+    <message>
+        <source>needs at least one value</source>
+        <translation>precisa de pelo menos um valor</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_axis</name>
+    <message>
+        <source>there is no axis %1</source>
+        <translation>não há eixo %1</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_digital_controller</name>
+    <message>
+        <source>this axis has no digital controller to export</source>
+        <translation>este eixo não tem controlador digital para exportar</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_linuxcnc_pid</name>
+    <message>
+        <source>a %1 axis has no LinuxCNC pid equivalent</source>
+        <translation>um eixo %1 não tem equivalente no pid do LinuxCNC</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_loop_to_analyse</name>
+    <message>
+        <source>the axis has no loop to analyse</source>
+        <translation>o eixo não tem malha para analisar</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_mode_spectrum</name>
+    <message>
+        <source>there is no flexible mode to take a spectrum of</source>
+        <translation>não há modo flexível do qual tirar um espectro</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_model_feedforward</name>
+    <message>
+        <source>a %1 axis has no feedforward from a continuous model (pole placement&apos;s model-inverse feedforward is its ZPETC)</source>
+        <translation>um eixo %1 não tem pré-alimentação de um modelo contínuo (a pré-alimentação por modelo inverso da alocação de polos é seu ZPETC)</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_module</name>
+    <message>
+        <source>no module to register</source>
+        <translation>nenhum módulo para registrar</translation>
+    </message>
+</context>
+<context>
+    <name>session_no_parameter</name>
+    <message>
+        <source>has no parameter %1</source>
+        <translation>não tem o parâmetro %1</translation>
+    </message>
+</context>
+<context>
+    <name>session_not_a_finite_gain</name>
+    <message>
+        <source>%1 is not a finite gain &gt;= 0</source>
+        <translation>%1 não é um ganho finito &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>session_not_zero_or_one</name>
+    <message>
+        <source>must be 0 or 1, not %1</source>
+        <translation>deve ser 0 ou 1, não %1</translation>
+    </message>
+</context>
+<context>
+    <name>session_out_of_reach</name>
+    <message>
+        <source>the trajectory is out of the plant&apos;s reach: holding %1 mm needs %2 V (the model&apos;s steady gain B(1)/A(1) = %3 mm/V), beyond the %4 V limit</source>
+        <translation>a trajetória está fora do alcance da planta: manter %1 mm precisa de %2 V (o ganho estático do modelo B(1)/A(1) = %3 mm/V), além do limite de %4 V</translation>
+    </message>
+</context>
+<context>
+    <name>session_parameter_out_of_range</name>
+    <message>
+        <source>%1 is out of range: %2 must be within %3 .. %4</source>
+        <translation>%1 está fora do intervalo: %2 deve estar entre %3 .. %4</translation>
+    </message>
+</context>
+<context>
+    <name>session_parameter_out_of_range_unit</name>
+    <message>
+        <source>%1 is out of range: %2 must be within %3 .. %4 %5</source>
+        <translation>%1 está fora do intervalo: %2 deve estar entre %3 .. %4 %5</translation>
+    </message>
+</context>
+<context>
+    <name>session_period_longer_than_run</name>
+    <message>
+        <source>%1 s is longer than the program&apos;s run (%2 s)</source>
+        <translation>%1 s é mais longo que a execução do programa (%2 s)</translation>
+    </message>
+</context>
+<context>
+    <name>session_pid_no_feedback</name>
+    <message>
+        <source>P, I and D are all 0: the axis has no feedback</source>
+        <translation>P, I e D são todos 0: o eixo não tem realimentação</translation>
+    </message>
+</context>
+<context>
+    <name>session_pid_no_notch</name>
+    <message>
+        <source>a PID + feedforward axis runs LinuxCNC&apos;s pid, which has no notch stage: set the centre to 0, or design the axis by Guillemin-Truxal, whose PI takes the notch</source>
+        <translation>um eixo PID + pré-alimentação executa o pid do LinuxCNC, que não tem estágio notch: ajuste o centro para 0, ou projete o eixo por Guillemin-Truxal, cujo PI aceita o notch</translation>
+    </message>
+</context>
+<context>
+    <name>session_pid_zero_negative_gain</name>
+    <message>
+        <source>that zero needs a negative P, I or D</source>
+        <translation>esse zero precisa de um P, I ou D negativo</translation>
+    </message>
+</context>
+<context>
+    <name>session_pid_zero_not_in_lhp</name>
+    <message>
+        <source>a zero in the right half plane (or on the axis) would not be a PID&apos;s</source>
+        <translation>um zero no semiplano direito (ou no eixo) não seria de um PID</translation>
+    </message>
+</context>
+<context>
+    <name>session_program_line</name>
+    <message>
+        <source>program line %1</source>
+        <translation>linha %1 do programa</translation>
+    </message>
+</context>
+<context>
+    <name>session_program_no_closed_form</name>
+    <message>
+        <source>a G-code program&apos;s feed profile has no closed form for the script; export the simulated signals as CSV instead</source>
+        <translation>o perfil de avanço de um programa G-code não tem forma fechada para o script; exporte os sinais simulados como CSV</translation>
+    </message>
+</context>
+<context>
+    <name>session_shaper_longer_than_move</name>
+    <message>
+        <source>the %1 shaper at %2 Hz lasts %3 s, longer than the move of %4 s: raise the frequency or shorten the shaper</source>
+        <translation>o modelador %1 em %2 Hz dura %3 s, mais que o movimento de %4 s: aumente a frequência ou encurte o modelador</translation>
+    </message>
+</context>
+<context>
+    <name>session_simulated_not_finite</name>
+    <message>
+        <source>the simulated %1 is %2 at t = %3 s (an unstable loop, or model_unit_scale or the trajectory out of range); nothing was exported</source>
+        <translation>o %1 simulado é %2 em t = %3 s (uma malha instável, ou model_unit_scale ou a trajetória fora do intervalo); nada foi exportado</translation>
+    </message>
+</context>
+<context>
+    <name>session_single_sample</name>
+    <message>
+        <source>gives a single sample (step %1 s, duration %2 s); at least two samples are needed for the metrics</source>
+        <translation>dá uma única amostra (passo %1 s, duração %2 s); são necessárias pelo menos duas amostras para as métricas</translation>
+    </message>
+</context>
+<context>
+    <name>session_spectrum_axis</name>
+    <message>
+        <source>must be x, y, z or sum</source>
+        <translation>deve ser x, y, z ou sum</translation>
+    </message>
+</context>
+<context>
+    <name>session_t1_outside_unit_circle</name>
+    <message>
+        <source>the desired pole -t1 must lie inside the unit circle (|t1| &lt; 1)</source>
+        <translation>o polo desejado -t1 deve ficar dentro do círculo unitário (|t1| &lt; 1)</translation>
+    </message>
+</context>
+<context>
+    <name>session_the_move</name>
+    <message>
+        <source>the move</source>
+        <translation>o movimento</translation>
+    </message>
+</context>
+<context>
+    <name>session_too_many_pairs</name>
+    <message>
+        <source>%1 values of kp and %2 of ki make %3 pairs: at most %4</source>
+        <translation>%1 valores de kp e %2 de ki formam %3 pares: no máximo %4</translation>
+    </message>
+</context>
+<context>
+    <name>session_too_many_samples</name>
+    <message>
+        <source>the run needs more samples than this machine holds</source>
+        <translation>a execução precisa de mais amostras do que esta máquina comporta</translation>
+    </message>
+</context>
+<context>
+    <name>session_vibration_arx_axis</name>
+    <message>
+        <source>a pole-placement axis runs its ARX model, which holds whatever mode its data showed: the flexible mode and the notch apply to continuous plants</source>
+        <translation>um eixo de alocação de polos executa seu modelo ARX, que contém qualquer modo que seus dados mostraram: o modo flexível e o notch se aplicam a plantas contínuas</translation>
     </message>
 </context>
 <context>
@@ -4188,6 +5168,631 @@ falha: %1</translation>
     <message>
         <source>the feedforward&apos;s z^0 denominator coefficient is zero</source>
         <translation>o coeficiente de z^0 do denominador da pré-alimentação é zero</translation>
+    </message>
+</context>
+<context>
+    <name>study_batch_width</name>
+    <message>
+        <source>must be 1, 2, 4 or 8</source>
+        <translation>deve ser 1, 2, 4 ou 8</translation>
+    </message>
+</context>
+<context>
+    <name>study_best_at_lower_edge</name>
+    <message>
+        <source>%1 = %2 (the best design) is the lower end of the %3 range %4..%5: the optimum may lie below; widen the %6 range below %7</source>
+        <translation>%1 = %2 (o melhor projeto) é o extremo inferior da faixa de %3 %4..%5: o ótimo pode estar abaixo; amplie a faixa de %6 abaixo de %7</translation>
+    </message>
+</context>
+<context>
+    <name>study_best_at_upper_edge</name>
+    <message>
+        <source>%1 = %2 (the best design) is the upper end of the %3 range %4..%5: the optimum may lie above; widen the %6 range beyond %7</source>
+        <translation>%1 = %2 (o melhor projeto) é o extremo superior da faixa de %3 %4..%5: o ótimo pode estar acima; amplie a faixa de %6 além de %7</translation>
+    </message>
+</context>
+<context>
+    <name>study_bounds_not_finite</name>
+    <message>
+        <source>the bounds must be finite numbers</source>
+        <translation>os limites devem ser números finitos</translation>
+    </message>
+</context>
+<context>
+    <name>study_cancelled_statistics</name>
+    <message>
+        <source>cancelled: the statistics cover the plants computed before</source>
+        <translation>cancelado: as estatísticas cobrem as plantas calculadas antes</translation>
+    </message>
+</context>
+<context>
+    <name>study_change_at_least</name>
+    <message>
+        <source>%1 &gt;= %2</source>
+        <translation>%1 &gt;= %2</translation>
+    </message>
+</context>
+<context>
+    <name>study_change_at_most</name>
+    <message>
+        <source>%1 &lt;= %2</source>
+        <translation>%1 &lt;= %2</translation>
+    </message>
+</context>
+<context>
+    <name>study_circle_or_path</name>
+    <message>
+        <source>give either a circle or a path</source>
+        <translation>dê um círculo ou um caminho</translation>
+    </message>
+</context>
+<context>
+    <name>study_continuous_run_samples</name>
+    <message>
+        <source>a continuous run has exactly the reference&apos;s samples</source>
+        <translation>uma execução contínua tem exatamente as amostras da referência</translation>
+    </message>
+</context>
+<context>
+    <name>study_controller_or_loop</name>
+    <message>
+        <source>give either a continuous controller or a discrete loop</source>
+        <translation>dê um controlador contínuo ou uma malha discreta</translation>
+    </message>
+</context>
+<context>
+    <name>study_count_range</name>
+    <message>
+        <source>the count must be from 1 to %1</source>
+        <translation>a contagem deve estar entre 1 e %1</translation>
+    </message>
+</context>
+<context>
+    <name>study_coupling_one_grid</name>
+    <message>
+        <source>needs both axes on one grid with a direction for each sample</source>
+        <translation>precisa dos dois eixos em uma só grade com uma direção para cada amostra</translation>
+    </message>
+</context>
+<context>
+    <name>study_covariance_not_finite</name>
+    <message>
+        <source>holds a value that is not finite</source>
+        <translation>contém um valor que não é finito</translation>
+    </message>
+</context>
+<context>
+    <name>study_covariance_not_psd</name>
+    <message>
+        <source>is not positive semi-definite</source>
+        <translation>não é positiva semidefinida</translation>
+    </message>
+</context>
+<context>
+    <name>study_covariance_not_symmetric</name>
+    <message>
+        <source>is not symmetric</source>
+        <translation>não é simétrica</translation>
+    </message>
+</context>
+<context>
+    <name>study_covariance_size</name>
+    <message>
+        <source>must be %1 x %2 (one row per parameter)</source>
+        <translation>deve ser %1 x %2 (uma linha por parâmetro)</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_clipped_time</name>
+    <message>
+        <source>clipped time</source>
+        <translation>tempo saturado</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_gain_margin</name>
+    <message>
+        <source>gain margin</source>
+        <translation>margem de ganho</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_overshoot</name>
+    <message>
+        <source>step overshoot</source>
+        <translation>sobressinal ao degrau</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_phase_margin</name>
+    <message>
+        <source>phase margin</source>
+        <translation>margem de fase</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_settle_time</name>
+    <message>
+        <source>settle time after the move</source>
+        <translation>tempo de acomodação após o movimento</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_settling_time</name>
+    <message>
+        <source>step settling time</source>
+        <translation>tempo de acomodação ao degrau</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_stability</name>
+    <message>
+        <source>stability</source>
+        <translation>estabilidade</translation>
+    </message>
+</context>
+<context>
+    <name>study_criterion_tracking_error</name>
+    <message>
+        <source>max tracking error</source>
+        <translation>erro de seguimento máx.</translation>
+    </message>
+</context>
+<context>
+    <name>study_design_at</name>
+    <message>
+        <source>wn = %1 rad/s, kp = %2</source>
+        <translation>wn = %1 rad/s, kp = %2</translation>
+    </message>
+</context>
+<context>
+    <name>study_designs_same_length</name>
+    <message>
+        <source>wn, kp and the results must have the same length</source>
+        <translation>wn, kp e os resultados devem ter o mesmo comprimento</translation>
+    </message>
+</context>
+<context>
+    <name>study_friction_real_poles</name>
+    <message>
+        <source>with the table&apos;s friction the poles of s^2 + a1 s + a2 must stay real (a1^2 &gt;= 4 a2) over the ranges of a1 and a2: narrow them</source>
+        <translation>com o atrito da mesa os polos de s^2 + a1 s + a2 devem permanecer reais (a1^2 &gt;= 4 a2) nas faixas de a1 e a2: estreite-as</translation>
+    </message>
+</context>
+<context>
+    <name>study_from_to</name>
+    <message>
+        <source>must be from %1 to %2</source>
+        <translation>deve estar entre %1 e %2</translation>
+    </message>
+</context>
+<context>
+    <name>study_least_violating</name>
+    <message>
+        <source>least-violating design: %1 (point %2)</source>
+        <translation>projeto que menos viola: %1 (ponto %2)</translation>
+    </message>
+</context>
+<context>
+    <name>study_least_violating_no_relaxing</name>
+    <message>
+        <source>least-violating design: %1 (point %2); relaxing a limit does not make it pass (it clips the actuator, never settles, or has no positive margin)</source>
+        <translation>projeto que menos viola: %1 (ponto %2); relaxar um limite não o faz passar (satura o atuador, nunca se acomoda ou não tem margem positiva)</translation>
+    </message>
+</context>
+<context>
+    <name>study_least_violating_relaxed</name>
+    <message>
+        <source>least-violating design: %1 (point %2); it meets the specification with %3</source>
+        <translation>projeto que menos viola: %1 (ponto %2); atende à especificação com %3</translation>
+    </message>
+</context>
+<context>
+    <name>study_limit_fails_everywhere</name>
+    <message>
+        <source>the %1 limit (%2) fails at every design of the grid</source>
+        <translation>o limite de %1 (%2) falha em todo projeto da grade</translation>
+    </message>
+</context>
+<context>
+    <name>study_limit_fails_largest</name>
+    <message>
+        <source>the %1 limit (%2) fails at every design of the grid; the largest %3 found is %4 at %5</source>
+        <translation>o limite de %1 (%2) falha em todo projeto da grade; a maior %3 encontrada é %4 em %5</translation>
+    </message>
+</context>
+<context>
+    <name>study_limit_fails_smallest</name>
+    <message>
+        <source>the %1 limit (%2) fails at every design of the grid; the smallest %3 found is %4 at %5</source>
+        <translation>o limite de %1 (%2) falha em todo projeto da grade; o menor %3 encontrado é %4 em %5</translation>
+    </message>
+</context>
+<context>
+    <name>study_minimum_above_maximum</name>
+    <message>
+        <source>the minimum is greater than the maximum</source>
+        <translation>o mínimo é maior que o máximo</translation>
+    </message>
+</context>
+<context>
+    <name>study_minimum_not_positive</name>
+    <message>
+        <source>the minimum must be greater than zero</source>
+        <translation>o mínimo deve ser maior que zero</translation>
+    </message>
+</context>
+<context>
+    <name>study_no_feasible_design</name>
+    <message>
+        <source>no design of the grid meets the specification</source>
+        <translation>nenhum projeto da grade atende à especificação</translation>
+    </message>
+</context>
+<context>
+    <name>study_no_sample_after_ramp_in</name>
+    <message>
+        <source>no sample after the ramp-in</source>
+        <translation>nenhuma amostra após a rampa de entrada</translation>
+    </message>
+</context>
+<context>
+    <name>study_no_sample_on_segment</name>
+    <message>
+        <source>no sample on a measured segment</source>
+        <translation>nenhuma amostra em um segmento medido</translation>
+    </message>
+</context>
+<context>
+    <name>study_no_scale</name>
+    <message>
+        <source>give at least one scale</source>
+        <translation>dê pelo menos uma escala</translation>
+    </message>
+</context>
+<context>
+    <name>study_no_such_parameter</name>
+    <message>
+        <source>no parameter &apos;%1&apos; in this plant (it has %2)</source>
+        <translation>não há parâmetro &apos;%1&apos; nesta planta (ela tem %2)</translation>
+    </message>
+</context>
+<context>
+    <name>study_nominal_not_finite</name>
+    <message>
+        <source>the nominal design&apos;s run is not finite (it diverges): there is no contour to compare with</source>
+        <translation>a execução do projeto nominal não é finita (diverge): não há contorno para comparar</translation>
+    </message>
+</context>
+<context>
+    <name>study_none_settles</name>
+    <message>
+        <source>no design of the grid settles into the %1 mm window within the run (limit %2 s after the move)</source>
+        <translation>nenhum projeto da grade se acomoda na janela de %1 mm dentro da execução (limite %2 s após o movimento)</translation>
+    </message>
+</context>
+<context>
+    <name>study_none_stable</name>
+    <message>
+        <source>no design of the grid is stable</source>
+        <translation>nenhum projeto da grade é estável</translation>
+    </message>
+</context>
+<context>
+    <name>study_other_window</name>
+    <message>
+        <source>the study measured the settle with another window; run it again</source>
+        <translation>o estudo mediu a acomodação com outra janela; execute-o novamente</translation>
+    </message>
+</context>
+<context>
+    <name>study_outside_search_box</name>
+    <message>
+        <source>is outside the search box</source>
+        <translation>está fora da caixa de busca</translation>
+    </message>
+</context>
+<context>
+    <name>study_phase_margin_at_most_180</name>
+    <message>
+        <source>must be at most 180 degrees</source>
+        <translation>deve ser no máximo 180 graus</translation>
+    </message>
+</context>
+<context>
+    <name>study_plant_needs_parameter</name>
+    <message>
+        <source>a continuous plant needs the parameter %1</source>
+        <translation>uma planta contínua precisa do parâmetro %1</translation>
+    </message>
+</context>
+<context>
+    <name>study_range_percent</name>
+    <message>
+        <source>must be from 0 to below 100 %</source>
+        <translation>deve estar entre 0 e menos de 100 %</translation>
+    </message>
+</context>
+<context>
+    <name>study_reference_too_short</name>
+    <message>
+        <source>the reference must hold the run (at least 2 samples) and the preview</source>
+        <translation>a referência deve conter a execução (pelo menos 2 amostras) e a antecipação</translation>
+    </message>
+</context>
+<context>
+    <name>study_scale_reason</name>
+    <message>
+        <source>scale %1: %2</source>
+        <translation>escala %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>study_search_needs_feasible</name>
+    <message>
+        <source>the search starts from a feasible design</source>
+        <translation>a busca parte de um projeto viável</translation>
+    </message>
+</context>
+<context>
+    <name>study_steps_not_finite</name>
+    <message>
+        <source>the steps must be finite and &gt;= 0</source>
+        <translation>os passos devem ser finitos e &gt;= 0</translation>
+    </message>
+</context>
+<context>
+    <name>study_sweep_cancelled</name>
+    <message>
+        <source>cancelled: %1 of %2 grid points computed, no refinement</source>
+        <translation>cancelado: %1 de %2 pontos da grade calculados, sem refinamento</translation>
+    </message>
+</context>
+<context>
+    <name>study_threads_range</name>
+    <message>
+        <source>must be from 0 (all cores) to 1024</source>
+        <translation>deve estar entre 0 (todos os núcleos) e 1024</translation>
+    </message>
+</context>
+<context>
+    <name>study_time_base_empty</name>
+    <message>
+        <source>the time base is empty</source>
+        <translation>a base de tempo está vazia</translation>
+    </message>
+</context>
+<context>
+    <name>study_time_base_not_increasing</name>
+    <message>
+        <source>the time base must be finite and increasing (sample %1)</source>
+        <translation>a base de tempo deve ser finita e crescente (amostra %1)</translation>
+    </message>
+</context>
+<context>
+    <name>study_too_many_corners</name>
+    <message>
+        <source>%1 uncertain parameters have too many corners (at most 16 parameters)</source>
+        <translation>%1 parâmetros incertos têm vértices demais (no máximo 16 parâmetros)</translation>
+    </message>
+</context>
+<context>
+    <name>study_unstable_plant_pairs</name>
+    <message>
+        <source>%1 plant pairs are unstable or diverged with these controllers; they are listed, not in the statistics</source>
+        <translation>%1 pares de plantas são instáveis ou divergiram com estes controladores; estão listados, não nas estatísticas</translation>
+    </message>
+</context>
+<context>
+    <name>study_unstable_plants</name>
+    <message>
+        <source>%1 plants are unstable or diverged with this controller; they are listed, not in the statistics</source>
+        <translation>%1 plantas são instáveis ou divergiram com este controlador; estão listadas, não nas estatísticas</translation>
+    </message>
+</context>
+<context>
+    <name>study_value_decibels</name>
+    <message>
+        <source>%1 dB</source>
+        <translation>%1 dB</translation>
+    </message>
+</context>
+<context>
+    <name>study_value_degrees</name>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1 deg</translation>
+    </message>
+</context>
+<context>
+    <name>study_value_percent</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+</context>
+<context>
+    <name>study_value_percent_of_travel</name>
+    <message>
+        <source>%1 % of the travel</source>
+        <translation>%1 % do curso</translation>
+    </message>
+</context>
+<context>
+    <name>study_value_seconds</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+</context>
+<context>
+    <name>study_zero_or_more</name>
+    <message>
+        <source>must be zero or more</source>
+        <translation>deve ser zero ou mais</translation>
+    </message>
+</context>
+<context>
+    <name>study_zpetc_sensitivity_needs_zpetc</name>
+    <message>
+        <source>the ZPETC sensitivity needs a pole-placement axis with ZPETC enabled</source>
+        <translation>a sensibilidade do ZPETC precisa de um eixo de alocação de polos com o ZPETC ativado</translation>
+    </message>
+</context>
+<context>
+    <name>study_zpetc_without_design</name>
+    <message>
+        <source>ZPETC is enabled without its design</source>
+        <translation>o ZPETC está ativado sem seu projeto</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::AntiWindup</name>
+    <message>
+        <source>none</source>
+        <translation>nenhum</translation>
+    </message>
+    <message>
+        <source>clamp</source>
+        <translation>grampeamento</translation>
+    </message>
+    <message>
+        <source>back-calculation</source>
+        <translation>retrocálculo</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::CoreText</name>
+    <message>
+        <source>feedforward</source>
+        <translation>pré-alimentação</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::Discretization</name>
+    <message>
+        <source>tustin</source>
+        <translation>Tustin</translation>
+    </message>
+    <message>
+        <source>backward-euler</source>
+        <translation>Euler regressivo</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::EstimationStatus</name>
+    <message>
+        <source>converged</source>
+        <translation>convergiu</translation>
+    </message>
+    <message>
+        <source>iteration-limit</source>
+        <translation>limite de iterações</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <source>not-persistently-exciting</source>
+        <translation>não persistentemente excitante</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>falhou</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::MethodName</name>
+    <message>
+        <source>Guillemin-Truxal PI</source>
+        <translation>PI de Guillemin-Truxal</translation>
+    </message>
+    <message>
+        <source>PID + feedforward</source>
+        <translation>PID + pré-alimentação</translation>
+    </message>
+    <message>
+        <source>pole placement + ZPETC</source>
+        <translation>alocação de polos + ZPETC</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::ParameterLabel</name>
+    <message>
+        <source>Proportional gain P</source>
+        <translation>Ganho proporcional P</translation>
+    </message>
+    <message>
+        <source>Integral gain I</source>
+        <translation>Ganho integral I</translation>
+    </message>
+    <message>
+        <source>Derivative gain D</source>
+        <translation>Ganho derivativo D</translation>
+    </message>
+    <message>
+        <source>Position feedforward FF0</source>
+        <translation>Pré-alimentação de posição FF0</translation>
+    </message>
+    <message>
+        <source>Velocity feedforward FF1</source>
+        <translation>Pré-alimentação de velocidade FF1</translation>
+    </message>
+    <message>
+        <source>Acceleration feedforward FF2</source>
+        <translation>Pré-alimentação de aceleração FF2</translation>
+    </message>
+    <message>
+        <source>Jerk feedforward FF3</source>
+        <translation>Pré-alimentação de jerk FF3</translation>
+    </message>
+    <message>
+        <source>Bias</source>
+        <translation>Polarização</translation>
+    </message>
+    <message>
+        <source>Deadband</source>
+        <translation>Zona morta</translation>
+    </message>
+    <message>
+        <source>Integrator limit (0: none)</source>
+        <translation>Limite do integrador (0: nenhum)</translation>
+    </message>
+    <message>
+        <source>Output limit (0: umax)</source>
+        <translation>Limite de saída (0: umax)</translation>
+    </message>
+    <message>
+        <source>D filter Tf (0: none)</source>
+        <translation>Filtro de D Tf (0: nenhum)</translation>
+    </message>
+    <message>
+        <source>D on the measurement (1) or the error (0)</source>
+        <translation>D sobre a medição (1) ou o erro (0)</translation>
+    </message>
+    <message>
+        <source>Command derivatives: backward differences (0), trajectory (1)</source>
+        <translation>Derivadas do comando: diferenças regressivas (0), trajetória (1)</translation>
+    </message>
+</context>
+<context>
+    <name>xyt::PresetName</name>
+    <message>
+        <source>lower-base</source>
+        <translation>base inferior</translation>
+    </message>
+    <message>
+        <source>upper-base</source>
+        <translation>base superior</translation>
+    </message>
+    <message>
+        <source>x-axis</source>
+        <translation>eixo x</translation>
+    </message>
+    <message>
+        <source>y-axis</source>
+        <translation>eixo y</translation>
     </message>
 </context>
 <context>
@@ -4781,6 +6386,10 @@ falha: %1</translation>
     <message>
         <source>The sweep&apos;s map: each cell one (kp, ki) pair of the cross-coupling, coloured by the program&apos;s max contour error (mm); hover a cell for its figures, click it to select it</source>
         <translation>O mapa da varredura: cada célula é um par (kp, ki) do acoplamento cruzado, colorida pelo erro de contorno máx do programa (mm); passe o mouse sobre uma célula para ver seus valores, clique para selecioná-la</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; não é um número</translation>
     </message>
 </context>
 <context>
@@ -5633,6 +7242,10 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>Set the estimated levels as the current axis&apos; table friction (one undoable step)</source>
         <translation>Definir os níveis estimados como o atrito da mesa do eixo atual (um passo que pode ser desfeito)</translation>
     </message>
+    <message>
+        <source>choose its column</source>
+        <translation>escolha a sua coluna</translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::FrictionEditor</name>
@@ -6254,6 +7867,10 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
         <source>The residuals&apos; autocorrelation and their cross-correlation with the input against the lag, with the 99 % confidence band of white, independent residuals</source>
         <translation>A autocorrelação dos resíduos e sua correlação cruzada com a entrada em função do atraso, com a faixa de confiança de 99 % de resíduos brancos e independentes</translation>
     </message>
+    <message>
+        <source>the end must be after the start (0 to 0 uses the whole record)</source>
+        <translation>o fim deve ser depois do início (0 a 0 usa o registro inteiro)</translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::ImplementationEditor</name>
@@ -6308,6 +7925,18 @@ Todo projeto GT tem sobressinal (seu modelo de referência é do tipo 2); relaxe
     <message>
         <source>Tracking time (s)</source>
         <translation>Tempo de rastreamento (s)</translation>
+    </message>
+    <message>
+        <source>must be an integer in 0..32 (0: ideal DAC)</source>
+        <translation>deve ser um inteiro em 0..32 (0: DAC ideal)</translation>
+    </message>
+    <message>
+        <source>must be an integer in 0..%1</source>
+        <translation>deve ser um inteiro em 0..%1</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (s; 0: Tt = Ti = kp/ki)</source>
+        <translation>deve ser &gt;= 0 (s; 0: Tt = Ti = kp/ki)</translation>
     </message>
 </context>
 <context>
@@ -7268,6 +8897,14 @@ Sem a compensação de atrito: G %1 mm</translation>
         <source>Ms: the peak of the sensitivity |S(jω)| = |1/(1 + L(jω))|, i.e. 1 / the closest distance of L to −1; 1.2–2 is a usual target.</source>
         <translation>Ms: o pico da sensibilidade |S(jω)| = |1/(1 + L(jω))|, isto é, 1 / a menor distância de L a −1; 1.2–2 é um alvo usual.</translation>
     </message>
+    <message>
+        <source>must be 0 .. 180 degrees</source>
+        <translation>deve estar entre 0 e 180 graus</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 dB</source>
+        <translation>deve ser &gt;= 0 dB</translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::NumberField</name>
@@ -7674,6 +9311,10 @@ Digite um valor (notação científica como 2.5e3 é aceita).</translation>
         <source>The simulated relay experiment: the position y (mm) and the relay&apos;s command u (V) against time (s), settling into the limit cycle</source>
         <translation>O ensaio de relé simulado: a posição y (mm) e o comando u (V) do relé em função do tempo (s), acomodando-se no ciclo-limite</translation>
     </message>
+    <message>
+        <source>must be between 0 and 180 degrees</source>
+        <translation>deve estar entre 0 e 180 graus</translation>
+    </message>
 </context>
 <context>
     <name>xyt::ui::PlantEditor</name>
@@ -7821,6 +9462,10 @@ Digite um valor (notação científica como 2.5e3 é aceita).</translation>
     <message>
         <source>Tomizuka&apos;s zero-phase-error tracking controller ahead of the loop: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), the reference previewed p samples</source>
         <translation>O controlador de seguimento com erro de fase nulo (ZPETC) de Tomizuka antes da malha: u_ff(k) = A_c B⁻*(z⁻¹) / (B⁺ [B⁻(1)]²) r(k + p), com a referência antecipada em p amostras</translation>
+    </message>
+    <message>
+        <source>the z^0 coefficient must be nonzero (A is monic)</source>
+        <translation>o coeficiente de z^0 deve ser diferente de zero (A é mônico)</translation>
     </message>
 </context>
 <context>
@@ -8959,6 +10604,22 @@ Pior: %1 mm em %2.</translation>
 %2</source>
         <translation>%1
 %2</translation>
+    </message>
+    <message>
+        <source>must be at most 1 s</source>
+        <translation>deve ser no máximo 1 s</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (0 = automatic)</source>
+        <translation>deve ser &gt;= 0 (0 = automático)</translation>
+    </message>
+    <message>
+        <source>must be at most 100000 s</source>
+        <translation>deve ser no máximo 100000 s</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (0 = none)</source>
+        <translation>deve ser &gt;= 0 (0 = nenhum)</translation>
     </message>
 </context>
 <context>
