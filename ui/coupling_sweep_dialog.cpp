@@ -282,7 +282,8 @@ CouplingSweepDialog::CouplingSweepDialog(TuningSession* session, QWidget* parent
             [this](CouplingSweepResult&& result, const ResultStamp& stamp) {
                 finished(std::move(result), stamp);
             },
-            [this](const QString& message, const ResultStamp& stamp) { failed(message, stamp); }});
+            [this](const QString& message, const ResultStamp& stamp) { failed(message, stamp); },
+            exceptionText});
     connect(run_, &QPushButton::clicked, this, [this] { run(); });
     connect(cancel_, &QPushButton::clicked, this, &CouplingSweepDialog::cancel);
     connect(apply_, &QPushButton::clicked, this, [this] { apply(); });

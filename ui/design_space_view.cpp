@@ -176,7 +176,8 @@ DesignSpaceView::DesignSpaceView(TuningSession* session, QWidget* parent)
                          cancel_->setEnabled(false);
                          progress_->setValue(0);
                          setStatus(tr("The study failed: %1").arg(error), true);
-                     }}) {
+                     },
+                     exceptionText}) {
     // The steps make the widgets in their tab order.
     const Specification spec = initialSpecification(session_->session());
     lastUmaxVolts_ = session_->session().umaxVolts;

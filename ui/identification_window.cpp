@@ -124,7 +124,8 @@ IdentificationWindow::IdentificationWindow(TuningSession* session, QWidget* pare
                      [this](IdentifiedModel&& model, const Candidate& candidate) {
                          onFinished(std::move(model), candidate);
                      },
-                     [this](const QString& error, const Candidate&) { onFailed(error); }}) {
+                     [this](const QString& error, const Candidate&) { onFailed(error); },
+                     exceptionText}) {
     setWindowTitle(tr("Identify a model from data"));
     setModal(false);
     setObjectName("identificationWindow");

@@ -58,7 +58,8 @@ RobustnessView::RobustnessView(TuningSession* session, QWidget* parent)
                      [this](const QString& error, const ResultStamp&) {
                          cancel_->setEnabled(false);
                          setStatus(tr("The analysis failed: %1").arg(error), true);
-                     }}) {
+                     },
+                     exceptionText}) {
     // The steps make the widgets in their tab order.
     QGroupBox* rangeBox = buildRangeBox();
     QHBoxLayout* options = buildOptions();

@@ -315,13 +315,14 @@ namespace {
 void addStickSlipWarnings(AxisEvaluation& out) {
     // The findings come from core/simulation, each kept as it comes; the digital run's are
     // prefixed here.
+    const auto add = [&out](const std::vector<Diagnostic>& found) {
+        out.warnings.insert(out.warnings.end(), found.begin(), found.end());
+    };
     if (const auto f = stickSlipFindings(out.run))
-        for (Diagnostic& w : stickSlipWarnings(*f))
-            out.warnings.push_back(std::move(w));
+        add(stickSlipWarnings(*f));
     if (out.digital)
         if (const auto f = stickSlipFindings(out.digital->run.result))
-            for (Diagnostic& w : stickSlipWarnings(*f, StickSlipRun::digitalImplementation))
-                out.warnings.push_back(std::move(w));
+            add(stickSlipWarnings(*f, StickSlipRun::digitalImplementation));
 }
 
 /// evaluateAxis over a given duration.

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "ui/session/diagnostic_text.h"
-
 #include <QFutureWatcher>
 #include <QObject>
 #include <QPromise>
@@ -51,6 +49,9 @@ public:
         std::function<void(double)> onProgress;
         std::function<void(Result&&, const Stamp&)> onDone;
         std::function<void(const QString&, const Stamp&)> onFailed;
+        /// The message onFailed gets for an exception the work threw (on the worker thread):
+        /// by default its what(); the views give the workbench's translated text.
+        std::function<QString(const std::exception&)> describeFailure;
     };
 
     /// @p context: the view; the handlers run on its thread and never after it is destroyed.
@@ -82,7 +83,8 @@ public:
         QObject::connect(watcher, &QFutureWatcherBase::finished, context_,
                          [this, watcher] { deliver(watcher); });
         watcher->setFuture(QtConcurrent::run(
-            &pool_, [work = std::move(work), cancelled](QPromise<Outcome>& promise) {
+            &pool_, [work = std::move(work), cancelled,
+                     describe = handlers_.describeFailure](QPromise<Outcome>& promise) {
                 promise.setProgressRange(0, kProgressSteps);
                 const JobProgress progress = [&promise, cancelled](double fraction) {
                     if (std::isfinite(fraction))
@@ -94,7 +96,7 @@ public:
                 try {
                     outcome.value.emplace(work(progress));
                 } catch (const std::exception& e) {
-                    outcome.error = exceptionText(e);
+                    outcome.error = describe ? describe(e) : QString::fromStdString(e.what());
                 } catch (...) {
                     outcome.error = QStringLiteral("an unknown error");
                 }
