@@ -5796,6 +5796,201 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>xyt::files::SessionFile</name>
+    <message>
+        <source>must be %1 or %2</source>
+        <translation>deve ser %1 ou %2</translation>
+    </message>
+    <message>
+        <source>must be an object</source>
+        <translation>deve ser um objeto</translation>
+    </message>
+    <message>
+        <source>is missing</source>
+        <translation>está faltando</translation>
+    </message>
+    <message>
+        <source>must be a finite number</source>
+        <translation>deve ser um número finito</translation>
+    </message>
+    <message>
+        <source>must be greater than zero</source>
+        <translation>deve ser maior que zero</translation>
+    </message>
+    <message>
+        <source>must be a string</source>
+        <translation>deve ser um texto</translation>
+    </message>
+    <message>
+        <source>must be true or false</source>
+        <translation>deve ser true ou false</translation>
+    </message>
+    <message>
+        <source>must be an array of numbers</source>
+        <translation>deve ser um vetor de números</translation>
+    </message>
+    <message>
+        <source>must not be empty</source>
+        <translation>não pode estar vazio</translation>
+    </message>
+    <message>
+        <source>has %1 entries; at most %2 are allowed</source>
+        <translation>tem %1 entradas; no máximo %2 são permitidas</translation>
+    </message>
+    <message>
+        <source>must be an integer in %1..%2%3</source>
+        <translation>deve ser um inteiro em %1..%2%3</translation>
+    </message>
+    <message>
+        <source>%1: unknown field ignored</source>
+        <translation>%1: campo desconhecido ignorado</translation>
+    </message>
+    <message>
+        <source>must be a whole number of samples</source>
+        <translation>deve ser um número inteiro de amostras</translation>
+    </message>
+    <message>
+        <source>must be a finite number or null</source>
+        <translation>deve ser um número finito ou null</translation>
+    </message>
+    <message>
+        <source>must be an array of at most 1000 names</source>
+        <translation>deve ser um vetor de no máximo 1000 nomes</translation>
+    </message>
+    <message>
+        <source>must be an array as long as &quot;parameters&quot;</source>
+        <translation>deve ser um vetor do mesmo tamanho que &quot;parameters&quot;</translation>
+    </message>
+    <message>
+        <source>must be an array of %1 numbers (the %2 x %2 matrix, row by row)</source>
+        <translation>deve ser um vetor de %1 números (a matriz %2 x %2, linha a linha)</translation>
+    </message>
+    <message>
+        <source>must be &quot;faster&quot; or &quot;slower&quot;</source>
+        <translation>deve ser &quot;faster&quot; ou &quot;slower&quot;</translation>
+    </message>
+    <message>
+        <source>must be zv, mzv, zvd, zvdd, ei, 2hump_ei or 3hump_ei</source>
+        <translation>deve ser zv, mzv, zvd, zvdd, ei, 2hump_ei ou 3hump_ei</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (mm per count; 0: ideal encoder)</source>
+        <translation>deve ser &gt;= 0 (mm por contagem; 0: encoder ideal)</translation>
+    </message>
+    <message>
+        <source> (0: ideal DAC)</source>
+        <translation> (0: DAC ideal)</translation>
+    </message>
+    <message>
+        <source>must be &quot;none&quot;, &quot;clamp&quot; or &quot;back-calculation&quot;</source>
+        <translation>deve ser &quot;none&quot;, &quot;clamp&quot; ou &quot;back-calculation&quot;</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (s; 0: Tt = Ti = kp/ki)</source>
+        <translation>deve ser &gt;= 0 (s; 0: Tt = Ti = kp/ki)</translation>
+    </message>
+    <message>
+        <source>must be &quot;linear&quot; or &quot;circular&quot;</source>
+        <translation>deve ser &quot;linear&quot; ou &quot;circular&quot;</translation>
+    </message>
+    <message>
+        <source>must be named by 1 to 32 lower-case letters, digits or &apos;_&apos;</source>
+        <translation>deve ter um nome de 1 a 32 letras minúsculas, dígitos ou &apos;_&apos;</translation>
+    </message>
+    <message>
+        <source>must be within %1 .. %2 %3</source>
+        <translation>deve estar entre %1 .. %2 %3</translation>
+    </message>
+    <message>
+        <source>must be 1 to 16 lower-case letters or digits</source>
+        <translation>deve ter de 1 a 16 letras minúsculas ou dígitos</translation>
+    </message>
+    <message>
+        <source>must be nonzero</source>
+        <translation>deve ser diferente de zero</translation>
+    </message>
+    <message>
+        <source>must be nonzero (A is monic)</source>
+        <translation>deve ser diferente de zero (A é mônico)</translation>
+    </message>
+    <message>
+        <source>must be &quot;cubic&quot;, &quot;circle&quot; or &quot;gcode&quot;</source>
+        <translation>deve ser &quot;cubic&quot;, &quot;circle&quot; ou &quot;gcode&quot;</translation>
+    </message>
+    <message>
+        <source>must be later than t0</source>
+        <translation>deve ser posterior a t0</translation>
+    </message>
+    <message>
+        <source>must be &quot;cubic&quot; or &quot;quintic&quot;</source>
+        <translation>deve ser &quot;cubic&quot; ou &quot;quintic&quot;</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0</source>
+        <translation>deve ser &gt;= 0</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (0 = none)</source>
+        <translation>deve ser &gt;= 0 (0 = nenhum)</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 (0 = automatic)</source>
+        <translation>deve ser &gt;= 0 (0 = automático)</translation>
+    </message>
+    <message>
+        <source>needs %1 samples at this dt; the limit is %2 on this machine</source>
+        <translation>precisa de %1 amostras com este dt; o limite é %2 nesta máquina</translation>
+    </message>
+    <message>
+        <source>must be an array of exactly two axes</source>
+        <translation>deve ser um vetor de exatamente dois eixos</translation>
+    </message>
+    <message>
+        <source>must differ from axes[0].id</source>
+        <translation>deve ser diferente de axes[0].id</translation>
+    </message>
+    <message>
+        <source>must be &quot;%1&quot;</source>
+        <translation>deve ser &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>must be a whole number &gt;= 1</source>
+        <translation>deve ser um número inteiro &gt;= 1</translation>
+    </message>
+    <message>
+        <source>the file has format version %1; this XY Tune reads version %2 and older: please update XY Tune</source>
+        <translation>o arquivo tem a versão de formato %1; este XY Tune lê a versão %2 e anteriores: atualize o XY Tune</translation>
+    </message>
+    <message>
+        <source>must be &quot;tustin&quot; or &quot;backward-euler&quot;</source>
+        <translation>deve ser &quot;tustin&quot; ou &quot;backward-euler&quot;</translation>
+    </message>
+    <message>
+        <source>must be 0 .. 180 degrees</source>
+        <translation>deve estar entre 0 .. 180 graus</translation>
+    </message>
+    <message>
+        <source>must be &gt;= 0 dB</source>
+        <translation>deve ser &gt;= 0 dB</translation>
+    </message>
+    <message>
+        <source>must be an array</source>
+        <translation>deve ser um vetor</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1 at byte %2</source>
+        <translation>JSON inválido: %1 no byte %2</translation>
+    </message>
+    <message>
+        <source>appears more than once in its object; a key may be given only once</source>
+        <translation>aparece mais de uma vez em seu objeto; uma chave só pode ser dada uma vez</translation>
+    </message>
+    <message>
+        <source>not a session: the document must be a JSON object</source>
+        <translation>não é uma sessão: o documento deve ser um objeto JSON</translation>
+    </message>
+</context>
+<context>
     <name>xyt::ui::BodePlot</name>
     <message>
         <source>Bode diagram</source>

@@ -9,6 +9,7 @@
 #include "core/session/design_method_module.h"
 #include "core/session/session.h"
 #include "tests/support/gui_checks.h"
+#include "ui/files/session_file.h"
 #include "ui/main_window.h"
 #include "ui/panels/method_parameter_editor.h"
 #include "ui/panels/metrics_panel.h"
@@ -21,6 +22,9 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLibraryInfo>
 #include <QMenuBar>
@@ -111,6 +115,7 @@ private slots:
     void coreRefusalIsPortugueseWithItsField();
     void nestedReasonIsPortugueseInBothParts();
     void contourViewWarnsInPortuguese();
+    void sessionFileRefusalsArePortuguese();
     void englishIsTheSource();
     void storedLanguageRoundTrips();
 };
@@ -422,6 +427,35 @@ void TstPortuguese::contourViewWarnsInPortuguese() {
     plot.showSession(session.session(), session.evaluation());
     QVERIFY2(plot.noticeText().contains(expected), qPrintable(plot.noticeText()));
     QVERIFY(!plot.noticeText().contains(QString::fromStdString(found->text)));
+}
+
+void TstPortuguese::sessionFileRefusalsArePortuguese() {
+    // File › Open's reasons: the file format's own (ui/files, translated where the workbench
+    // loaded a language) and a value the format passes on to its checks, at its JSON path.
+    QVERIFY(installUiLanguage(QStringLiteral("pt_BR")));
+    files::SessionLoadResult r =
+        files::sessionFromBytes(R"({"format": "xytune-session", "version": 99})");
+    QVERIFY(!r.ok);
+    QCOMPARE(r.message(), QStringLiteral("version: o arquivo tem a versão de formato 99; este XY "
+                                         "Tune lê a versão %1 e anteriores: atualize o XY Tune")
+                              .arg(files::kSessionFormatVersion));
+    QJsonObject root = files::sessionToJson(Session::paperDefault());
+    QJsonArray axes = root["axes"].toArray();
+    QJsonObject x = axes[0].toObject();
+    QJsonObject gt = x["gt"].toObject();
+    gt["wn"] = 0.0;
+    x["gt"] = gt;
+    axes[0] = x;
+    root["axes"] = axes;
+    r = files::sessionFromBytes(QJsonDocument(root).toJson());
+    QVERIFY(!r.ok);
+    QCOMPARE(r.errorPath, QStringLiteral("axes[0].gt.wn"));
+    const QString shown = r.errorDiagnostic.coded() ? diagnosticText(r.errorDiagnostic) : r.error;
+    QCOMPARE(shown, QStringLiteral("deve ser maior que zero"));
+    // The CLI loads no language: the same reasons in English.
+    QVERIFY(installUiLanguage(QStringLiteral("en")));
+    r = files::sessionFromBytes(QJsonDocument(root).toJson());
+    QCOMPARE(r.message(), QStringLiteral("axes[0].gt.wn: must be greater than zero"));
 }
 
 void TstPortuguese::englishIsTheSource() {

@@ -10,6 +10,7 @@
 #include "core/simulation/sampled_data.h"
 #include "core/simulation/trajectory.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 
@@ -23,6 +24,12 @@
 namespace xyt::files {
 
 namespace {
+
+/// The file format's own reasons and warnings, in the workbench's language once it loaded one
+/// (Qt Linguist's context xyt::files::SessionFile); the CLI loads none and prints the English.
+class SessionFileText {
+    Q_DECLARE_TR_FUNCTIONS(xyt::files::SessionFile)
+};
 
 constexpr int kMaxSnapshots = 200;
 
@@ -51,7 +58,7 @@ DesignMethod methodFromName(const QString& name, const QString& path) {
     }
     const QString last = names.takeLast();
     throw FormatError{
-        path, QStringLiteral("must be %1 or %2").arg(names.join(QStringLiteral(", ")), last)};
+        path, SessionFileText::tr("must be %1 or %2").arg(names.join(QStringLiteral(", ")), last)};
 }
 
 /// Reads one JSON object, remembering its path and which keys were used, so that unknown keys
@@ -61,7 +68,7 @@ public:
     ObjectReader(const QJsonValue& value, QString path, QStringList* warnings)
         : path_(std::move(path)), warnings_(warnings) {
         if (!value.isObject())
-            throw FormatError{path_, QStringLiteral("must be an object")};
+            throw FormatError{path_, SessionFileText::tr("must be an object")};
         object_ = value.toObject();
     }
     ~ObjectReader() = default;
@@ -73,50 +80,50 @@ public:
     QJsonValue get(const QString& key) {
         used_ << key;
         if (!object_.contains(key))
-            throw FormatError{join(path_, key), QStringLiteral("is missing")};
+            throw FormatError{join(path_, key), SessionFileText::tr("is missing")};
         return object_.value(key);
     }
     double number(const QString& key) {
         const QJsonValue v = get(key);
         if (!v.isDouble() || !std::isfinite(v.toDouble()))
-            throw FormatError{join(path_, key), QStringLiteral("must be a finite number")};
+            throw FormatError{join(path_, key), SessionFileText::tr("must be a finite number")};
         return v.toDouble();
     }
     double positive(const QString& key) {
         const double v = number(key);
         if (!(v > 0.0))
-            throw FormatError{join(path_, key), QStringLiteral("must be greater than zero")};
+            throw FormatError{join(path_, key), SessionFileText::tr("must be greater than zero")};
         return v;
     }
     QString string(const QString& key) {
         const QJsonValue v = get(key);
         if (!v.isString())
-            throw FormatError{join(path_, key), QStringLiteral("must be a string")};
+            throw FormatError{join(path_, key), SessionFileText::tr("must be a string")};
         return v.toString();
     }
     bool boolean(const QString& key) {
         const QJsonValue v = get(key);
         if (!v.isBool())
-            throw FormatError{join(path_, key), QStringLiteral("must be true or false")};
+            throw FormatError{join(path_, key), SessionFileText::tr("must be true or false")};
         return v.toBool();
     }
     std::vector<double> coefficients(const QString& key) {
         const QJsonValue v = get(key);
         const QString p = join(path_, key);
         if (!v.isArray())
-            throw FormatError{p, QStringLiteral("must be an array of numbers")};
+            throw FormatError{p, SessionFileText::tr("must be an array of numbers")};
         const QJsonArray a = v.toArray();
         if (a.isEmpty())
-            throw FormatError{p, QStringLiteral("must not be empty")};
+            throw FormatError{p, SessionFileText::tr("must not be empty")};
         if (a.size() > static_cast<qsizetype>(kMaxCoefficients))
-            throw FormatError{p, QStringLiteral("has %1 entries; at most %2 are allowed")
+            throw FormatError{p, SessionFileText::tr("has %1 entries; at most %2 are allowed")
                                      .arg(a.size())
                                      .arg(kMaxCoefficients)};
         std::vector<double> out;
         for (qsizetype i = 0; i < a.size(); ++i) {
             if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()))
                 throw FormatError{QStringLiteral("%1[%2]").arg(p).arg(i),
-                                  QStringLiteral("must be a finite number")};
+                                  SessionFileText::tr("must be a finite number")};
             out.push_back(a[i].toDouble());
         }
         return out;
@@ -128,7 +135,7 @@ public:
         if (!v.isDouble() || !std::isfinite(d) || d != std::floor(d) || d < lo || d > hi)
             throw FormatError{
                 join(path_, key),
-                QStringLiteral("must be an integer in %1..%2%3").arg(lo).arg(hi).arg(note)};
+                SessionFileText::tr("must be an integer in %1..%2%3").arg(lo).arg(hi).arg(note)};
         return static_cast<int>(d);
     }
     ObjectReader child(const QString& key) {
@@ -140,7 +147,7 @@ public:
         for (const QString& key : object_.keys())
             if (!used_.contains(key))
                 warnings_->append(
-                    QStringLiteral("%1: unknown field ignored").arg(join(path_, key)));
+                    SessionFileText::tr("%1: unknown field ignored").arg(join(path_, key)));
     }
 
 private:
@@ -191,7 +198,7 @@ ModelOrigin readOrigin(ObjectReader r) {
     const double samples = r.positive("samples");
     if (samples != std::floor(samples) || samples > 1e12)
         throw FormatError{join(r.path(), "samples"),
-                          QStringLiteral("must be a whole number of samples")};
+                          SessionFileText::tr("must be a whole number of samples")};
     o.samples = static_cast<std::size_t>(samples);
     const auto optionalNumber = [&](const QString& key) {
         const QJsonValue v = r.get(key);
@@ -199,7 +206,7 @@ ModelOrigin readOrigin(ObjectReader r) {
             return std::numeric_limits<double>::quiet_NaN();
         if (!v.isDouble() || !std::isfinite(v.toDouble()))
             throw FormatError{join(r.path(), key),
-                              QStringLiteral("must be a finite number or null")};
+                              SessionFileText::tr("must be a finite number or null")};
         return v.toDouble();
     };
     o.fitPercent = optionalNumber("fit");
@@ -209,19 +216,19 @@ ModelOrigin readOrigin(ObjectReader r) {
     const QJsonValue deviations = r.get("std");
     if (!names.isArray() || names.toArray().size() > 1000)
         throw FormatError{join(r.path(), "parameters"),
-                          QStringLiteral("must be an array of at most 1000 names")};
+                          SessionFileText::tr("must be an array of at most 1000 names")};
     if (!deviations.isArray() || deviations.toArray().size() != names.toArray().size())
         throw FormatError{join(r.path(), "std"),
-                          QStringLiteral("must be an array as long as \"parameters\"")};
+                          SessionFileText::tr("must be an array as long as \"parameters\"")};
     for (qsizetype i = 0; i < names.toArray().size(); ++i) {
         const QJsonValue n = names.toArray()[i];
         const QJsonValue d = deviations.toArray()[i];
         if (!n.isString())
             throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "parameters")).arg(i),
-                              QStringLiteral("must be a string")};
+                              SessionFileText::tr("must be a string")};
         if (!d.isNull() && (!d.isDouble() || !std::isfinite(d.toDouble())))
             throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "std")).arg(i),
-                              QStringLiteral("must be a finite number or null")};
+                              SessionFileText::tr("must be a finite number or null")};
         o.parameterNames.push_back(n.toString().toStdString());
         o.standardDeviations.push_back(d.isNull() ? std::numeric_limits<double>::quiet_NaN()
                                                   : d.toDouble());
@@ -230,16 +237,16 @@ ModelOrigin readOrigin(ObjectReader r) {
         const QJsonValue c = r.get("covariance");
         const qsizetype n = names.toArray().size();
         if (!c.isArray() || c.toArray().size() != n * n)
-            throw FormatError{
-                join(r.path(), "covariance"),
-                QStringLiteral("must be an array of %1 numbers (the %2 x %2 matrix, row by row)")
-                    .arg(n * n)
-                    .arg(n)};
+            throw FormatError{join(r.path(), "covariance"),
+                              SessionFileText::tr(
+                                  "must be an array of %1 numbers (the %2 x %2 matrix, row by row)")
+                                  .arg(n * n)
+                                  .arg(n)};
         for (qsizetype i = 0; i < c.toArray().size(); ++i) {
             const QJsonValue v = c.toArray()[i];
             if (!v.isDouble() || !std::isfinite(v.toDouble()))
                 throw FormatError{QStringLiteral("%1[%2]").arg(join(r.path(), "covariance")).arg(i),
-                                  QStringLiteral("must be a finite number")};
+                                  SessionFileText::tr("must be a finite number")};
             o.covariance.push_back(v.toDouble());
         }
     }
@@ -272,7 +279,7 @@ void readFriction(ObjectReader r, AxisSettings& a) {
     const QString pole = r.string("electrical_pole");
     if (pole != "faster" && pole != "slower")
         throw FormatError{join(r.path(), "electrical_pole"),
-                          QStringLiteral("must be \"faster\" or \"slower\"")};
+                          SessionFileText::tr("must be \"faster\" or \"slower\"")};
     f.electricalPole = pole == "faster" ? ElectricalPole::Faster : ElectricalPole::Slower;
     ObjectReader c = r.child("compensation");
     a.frictionCompensation.percent = c.number("percent");
@@ -403,8 +410,9 @@ ReferenceShaping readShaping(ObjectReader r) {
     ReferenceShaping s;
     const QString type = r.string("type");
     if (!shaperFromName(type.toStdString(), s.type))
-        throw FormatError{join(r.path(), "type"),
-                          QStringLiteral("must be zv, mzv, zvd, zvdd, ei, 2hump_ei or 3hump_ei")};
+        throw FormatError{
+            join(r.path(), "type"),
+            SessionFileText::tr("must be zv, mzv, zvd, zvdd, ei, 2hump_ei or 3hump_ei")};
     s.frequencyHz = r.positive("frequency");
     s.dampingRatio = r.number("damping");
     try {
@@ -455,8 +463,8 @@ ImplementationSettings readImplementation(ObjectReader r) {
     i.encoderResolutionMm = r.number("encoder_resolution");
     if (i.encoderResolutionMm < 0.0)
         throw FormatError{join(r.path(), "encoder_resolution"),
-                          QStringLiteral("must be >= 0 (mm per count; 0: ideal encoder)")};
-    i.dacBits = r.integer("dac_bits", 0, 32, QStringLiteral(" (0: ideal DAC)"));
+                          SessionFileText::tr("must be >= 0 (mm per count; 0: ideal encoder)")};
+    i.dacBits = r.integer("dac_bits", 0, 32, SessionFileText::tr(" (0: ideal DAC)"));
     {
         const QString method = r.string("anti_windup");
         bool found = false;
@@ -469,12 +477,12 @@ ImplementationSettings readImplementation(ObjectReader r) {
         if (!found)
             throw FormatError{
                 join(r.path(), "anti_windup"),
-                QStringLiteral("must be \"none\", \"clamp\" or \"back-calculation\"")};
+                SessionFileText::tr("must be \"none\", \"clamp\" or \"back-calculation\"")};
     }
     i.trackingTimeSeconds = r.number("tracking_time");
     if (i.trackingTimeSeconds < 0.0)
         throw FormatError{join(r.path(), "tracking_time"),
-                          QStringLiteral("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
+                          SessionFileText::tr("must be >= 0 (s; 0: Tt = Ti = kp/ki)")};
     r.finish();
     return i;
 }
@@ -491,7 +499,7 @@ CrossCoupling readCrossCoupling(ObjectReader r) {
     const QString estimate = r.string("estimate");
     if (!contourEstimateFromName(estimate.toStdString(), c.estimate))
         throw FormatError{join(r.path(), "estimate"),
-                          QStringLiteral("must be \"linear\" or \"circular\"")};
+                          SessionFileText::tr("must be \"linear\" or \"circular\"")};
     try {
         validateCrossCoupling(c, "cross_coupling");
     } catch (const InvalidInput& e) {
@@ -515,7 +523,7 @@ std::map<std::string, double> readMethodParameters(ObjectReader r, DesignMethod 
     constexpr qsizetype kMaxMethodParameters = 64;
     const QStringList keys = r.keys();
     if (keys.size() > kMaxMethodParameters)
-        throw FormatError{r.path(), QStringLiteral("has %1 entries; at most %2 are allowed")
+        throw FormatError{r.path(), SessionFileText::tr("has %1 entries; at most %2 are allowed")
                                         .arg(keys.size())
                                         .arg(kMaxMethodParameters)};
     const std::vector<MethodParameter> declared = designMethodModule(method).parameters();
@@ -523,12 +531,13 @@ std::map<std::string, double> readMethodParameters(ObjectReader r, DesignMethod 
     for (const QString& key : keys) {
         const QString path = join(r.path(), key);
         if (!isMethodParameterName(key.toStdString()))
-            throw FormatError{path, QStringLiteral("must be named by 1 to 32 lower-case letters, "
-                                                   "digits or '_'")};
+            throw FormatError{path,
+                              SessionFileText::tr("must be named by 1 to 32 lower-case letters, "
+                                                  "digits or '_'")};
         const double v = r.number(key);
         for (const MethodParameter& p : declared)
             if (p.name == key.toStdString() && !(v >= p.minimum && v <= p.maximum))
-                throw FormatError{path, QStringLiteral("must be within %1 .. %2 %3")
+                throw FormatError{path, SessionFileText::tr("must be within %1 .. %2 %3")
                                             .arg(p.minimum)
                                             .arg(p.maximum)
                                             .arg(QString::fromStdString(p.unit))
@@ -546,7 +555,7 @@ AxisSettings readAxis(ObjectReader r) {
                    std::isdigit(static_cast<unsigned char>(c));
         }))
         throw FormatError{join(r.path(), "id"),
-                          QStringLiteral("must be 1 to 16 lower-case letters or digits")};
+                          SessionFileText::tr("must be 1 to 16 lower-case letters or digits")};
     if (r.has("label"))
         a.label = r.string("label").toStdString();
     a.method = methodFromName(r.string("method"), join(r.path(), "method"));
@@ -555,7 +564,7 @@ AxisSettings readAxis(ObjectReader r) {
         ObjectReader plant = gt.child("plant");
         a.gt.plant.k0 = plant.number("k0");
         if (a.gt.plant.k0 == 0.0)
-            throw FormatError{join(plant.path(), "k0"), QStringLiteral("must be nonzero")};
+            throw FormatError{join(plant.path(), "k0"), SessionFileText::tr("must be nonzero")};
         a.gt.plant.a1 = plant.number("a1");
         a.gt.plant.a2 = plant.number("a2");
         plant.finish();
@@ -570,7 +579,7 @@ AxisSettings readAxis(ObjectReader r) {
         a.pp.a = pp.coefficients("a");
         if (a.pp.a[0] == 0.0)
             throw FormatError{join(pp.path(), "a[0]"),
-                              QStringLiteral("must be nonzero (A is monic)")};
+                              SessionFileText::tr("must be nonzero (A is monic)")};
         a.pp.b = pp.coefficients("b");
         a.pp.t1 = pp.number("t1");
         a.pp.tsSeconds = pp.positive("ts");
@@ -597,7 +606,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.kind = TrajectoryKind::Gcode;
     else
         throw FormatError{join(r.path(), "kind"),
-                          QStringLiteral("must be \"cubic\", \"circle\" or \"gcode\"")};
+                          SessionFileText::tr("must be \"cubic\", \"circle\" or \"gcode\"")};
     {
         ObjectReader c = r.child("cubic");
         t.x0 = c.number("x0");
@@ -605,7 +614,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.t0Seconds = c.number("t0");
         t.tfSeconds = c.number("tf");
         if (!(t.tfSeconds > t.t0Seconds))
-            throw FormatError{join(c.path(), "tf"), QStringLiteral("must be later than t0")};
+            throw FormatError{join(c.path(), "tf"), SessionFileText::tr("must be later than t0")};
         t.v0 = c.number("v0");
         t.vf = c.number("vf");
         const QString profile = c.string("profile");
@@ -613,7 +622,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
             t.profile = MoveProfile::Quintic;
         else if (profile != "cubic")
             throw FormatError{join(c.path(), "profile"),
-                              QStringLiteral("must be \"cubic\" or \"quintic\"")};
+                              SessionFileText::tr("must be \"cubic\" or \"quintic\"")};
         c.finish();
     }
     {
@@ -622,7 +631,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.omegaRadPerSec = c.positive("omega");
         t.rampInSeconds = c.number("ramp_in");
         if (t.rampInSeconds < 0)
-            throw FormatError{join(c.path(), "ramp_in"), QStringLiteral("must be >= 0")};
+            throw FormatError{join(c.path(), "ramp_in"), SessionFileText::tr("must be >= 0")};
         c.finish();
     }
     {
@@ -634,7 +643,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
         t.gcode.maxJerkMmPerS3 = g.number("max_jerk");
         if (t.gcode.maxJerkMmPerS3 < 0)
             throw FormatError{join(g.path(), "max_jerk"),
-                              QStringLiteral("must be >= 0 (0 = none)")};
+                              SessionFileText::tr("must be >= 0 (0 = none)")};
         try { // the planner's range, whatever the kind: a jerk of 1e-300 is refused here
             checkProgramOptions(t.gcode);
         } catch (const InvalidInput& e) {
@@ -648,7 +657,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
     t.durationSeconds = r.number("duration");
     if (t.durationSeconds < 0)
         throw FormatError{join(r.path(), "duration"),
-                          QStringLiteral("must be >= 0 (0 = automatic)")};
+                          SessionFileText::tr("must be >= 0 (0 = automatic)")};
     t.dtSeconds = r.positive("dt");
     if (t.kind == TrajectoryKind::Gcode) {
         // The program, its profile and its sample count, named by the session path
@@ -668,7 +677,7 @@ TrajectorySettings readTrajectory(ObjectReader r) {
           static_cast<double>(sampleLimit()))) // the limit follows the memory (trajectory.h)
         throw FormatError{
             join(r.path(), t.kind == TrajectoryKind::Gcode ? "dt" : "duration"),
-            QStringLiteral("needs %1 samples at this dt; the limit is %2 on this machine")
+            SessionFileText::tr("needs %1 samples at this dt; the limit is %2 on this machine")
                 .arg(samples, 0, 'g', 3)
                 .arg(sampleLimit())};
     r.finish();
@@ -717,14 +726,14 @@ std::array<AxisSettings, 2> readAxisPair(ObjectReader& r, QStringList* warnings)
     const QJsonValue v = r.get("axes");
     const QString path = join(r.path(), "axes");
     if (!v.isArray() || v.toArray().size() != 2)
-        throw FormatError{path, QStringLiteral("must be an array of exactly two axes")};
+        throw FormatError{path, SessionFileText::tr("must be an array of exactly two axes")};
     const QJsonArray a = v.toArray();
     std::array<AxisSettings, 2> axes;
     for (qsizetype i = 0; i < 2; ++i)
         axes[static_cast<std::size_t>(i)] =
             readAxis(ObjectReader(a[i], QStringLiteral("%1[%2]").arg(path).arg(i), warnings));
     if (axes[0].id == axes[1].id)
-        throw FormatError{path + "[1].id", QStringLiteral("must differ from axes[0].id")};
+        throw FormatError{path + "[1].id", SessionFileText::tr("must differ from axes[0].id")};
     return axes;
 }
 
@@ -739,17 +748,18 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
     SessionLoadResult result;
     try {
         if (root.value("format").toString() != kSessionFormatName)
-            throw FormatError{"format", QStringLiteral("must be \"%1\"").arg(kSessionFormatName)};
+            throw FormatError{"format",
+                              SessionFileText::tr("must be \"%1\"").arg(kSessionFormatName)};
         const QJsonValue version = root.value("version");
         if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble()) ||
             version.toDouble() < 1)
-            throw FormatError{"version", QStringLiteral("must be a whole number >= 1")};
+            throw FormatError{"version", SessionFileText::tr("must be a whole number >= 1")};
         if (version.toDouble() > kSessionFormatVersion)
-            throw FormatError{"version",
-                              QStringLiteral("the file has format version %1; this XY Tune reads "
-                                             "version %2 and older: please update XY Tune")
-                                  .arg(version.toDouble())
-                                  .arg(kSessionFormatVersion)};
+            throw FormatError{
+                "version", SessionFileText::tr("the file has format version %1; this XY Tune reads "
+                                               "version %2 and older: please update XY Tune")
+                               .arg(version.toDouble())
+                               .arg(kSessionFormatVersion)};
         const int fileVersion = version.toInt();
         ObjectReader r(fileVersion < kSessionFormatVersion ? migrateSessionJson(root, fileVersion)
                                                            : root,
@@ -768,7 +778,7 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             s.piDiscretization = PiDiscretization::BackwardEuler;
         else
             throw FormatError{"pi_discretization",
-                              QStringLiteral("must be \"tustin\" or \"backward-euler\"")};
+                              SessionFileText::tr("must be \"tustin\" or \"backward-euler\"")};
         s.implementation = readImplementation(r.child("implementation"));
         if (r.has("cross_coupling"))
             s.crossCoupling = readCrossCoupling(r.child("cross_coupling"));
@@ -778,28 +788,29 @@ SessionLoadResult sessionFromJson(const QJsonObject& root) {
             s.spec.maxOvershootPct = spec.number("max_overshoot_pct");
             if (s.spec.maxOvershootPct < 0)
                 throw FormatError{"specification.max_overshoot_pct",
-                                  QStringLiteral("must be >= 0")};
+                                  SessionFileText::tr("must be >= 0")};
             s.spec.maxErrorPct = spec.positive("max_error_pct");
             s.spec.inPositionWindowMm = spec.positive("in_position_window_mm");
             s.spec.maxSettleTimeSeconds = spec.positive("max_settle_time");
             s.spec.minPhaseMarginDeg = spec.number("min_phase_margin");
             if (!(s.spec.minPhaseMarginDeg >= 0.0 && s.spec.minPhaseMarginDeg <= 180.0))
                 throw FormatError{"specification.min_phase_margin",
-                                  QStringLiteral("must be 0 .. 180 degrees")};
+                                  SessionFileText::tr("must be 0 .. 180 degrees")};
             s.spec.minGainMarginDb = spec.number("min_gain_margin");
             if (!(s.spec.minGainMarginDb >= 0.0))
                 throw FormatError{"specification.min_gain_margin",
-                                  QStringLiteral("must be >= 0 dB")};
+                                  SessionFileText::tr("must be >= 0 dB")};
             spec.finish();
         }
         const QJsonValue snaps = r.get("snapshots");
         if (!snaps.isArray())
-            throw FormatError{"snapshots", QStringLiteral("must be an array")};
+            throw FormatError{"snapshots", SessionFileText::tr("must be an array")};
         const QJsonArray list = snaps.toArray();
         if (list.size() > kMaxSnapshots)
-            throw FormatError{"snapshots", QStringLiteral("has %1 entries; at most %2 are allowed")
-                                               .arg(list.size())
-                                               .arg(kMaxSnapshots)};
+            throw FormatError{"snapshots",
+                              SessionFileText::tr("has %1 entries; at most %2 are allowed")
+                                  .arg(list.size())
+                                  .arg(kMaxSnapshots)};
         for (qsizetype i = 0; i < list.size(); ++i) {
             ObjectReader sr(list[i], QStringLiteral("snapshots[%1]").arg(i), &result.warnings);
             DesignSnapshot snap;
@@ -827,7 +838,7 @@ SessionLoadResult sessionFromBytes(const QByteArray& bytes) {
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         SessionLoadResult r;
-        r.error = QStringLiteral("not valid JSON: %1 at byte %2")
+        r.error = SessionFileText::tr("not valid JSON: %1 at byte %2")
                       .arg(parseError.errorString())
                       .arg(parseError.offset);
         return r;
@@ -836,13 +847,13 @@ SessionLoadResult sessionFromBytes(const QByteArray& bytes) {
             std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())))) {
         SessionLoadResult r;
         r.errorPath = QString::fromStdString(*duplicate);
-        r.error =
-            QStringLiteral("appears more than once in its object; a key may be given only once");
+        r.error = SessionFileText::tr(
+            "appears more than once in its object; a key may be given only once");
         return r;
     }
     if (!doc.isObject()) {
         SessionLoadResult r;
-        r.error = QStringLiteral("not a session: the document must be a JSON object");
+        r.error = SessionFileText::tr("not a session: the document must be a JSON object");
         return r;
     }
     return sessionFromJson(doc.object());
