@@ -42,6 +42,7 @@
 #include "ui/report/report_exporter.h"
 #include "ui/robustness_view.h"
 #include "ui/session/diagnostic_text.h"
+#include "ui/session/install_paths.h"
 #include "ui/session/interface_language.h"
 #include "ui/session/recovery_store.h"
 #include "ui/session/session_file_controller.h"
@@ -743,7 +744,7 @@ UserGuideWindow* MainWindow::showUserGuide(const QUrl& page) {
 QDialog* MainWindow::showWelcome() {
     auto* welcome = findChild<WelcomeDialog*>();
     if (!welcome) {
-        welcome = new WelcomeDialog(files_, TrajectoryEditor::examplesFolder(), this);
+        welcome = new WelcomeDialog(files_, examplesFolder(), this);
         connect(welcome, &WelcomeDialog::tutorialRequested, this,
                 [this](const QUrl& page) { showUserGuide(page); });
     }

@@ -16,6 +16,7 @@
 #include "ui/panels/trajectory_editor.h"
 #include "ui/plots/contour_plot.h"
 #include "ui/plots/contour_points.h"
+#include "ui/session/install_paths.h"
 #include "ui/session/session_file_controller.h"
 #include "ui/session/tuning_session.h"
 
@@ -62,9 +63,7 @@ private slots:
     void octaveExportIsDisabledOnAProgram();
 
 private:
-    QString example(const QString& name) const {
-        return QDir(TrajectoryEditor::examplesFolder()).filePath(name);
-    }
+    QString example(const QString& name) const { return QDir(examplesFolder()).filePath(name); }
     void loadExample(const QString& name);
 
     std::unique_ptr<TuningSession> session_;
@@ -109,7 +108,7 @@ void TstGcodeWorkbench::init() {
     window_ = std::make_unique<MainWindow>(session_.get());
     window_->show();
     QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
-    QVERIFY2(!TrajectoryEditor::examplesFolder().isEmpty(), "resources/examples not found");
+    QVERIFY2(!examplesFolder().isEmpty(), "resources/examples not found");
 }
 
 void TstGcodeWorkbench::loadExample(const QString& name) {
@@ -120,8 +119,7 @@ void TstGcodeWorkbench::loadExample(const QString& name) {
 
 void TstGcodeWorkbench::everyExampleLoads_data() {
     QTest::addColumn<QString>("name");
-    for (const QString& name :
-         QDir(TrajectoryEditor::examplesFolder()).entryList({"*.nc"}, QDir::Files))
+    for (const QString& name : QDir(examplesFolder()).entryList({"*.nc"}, QDir::Files))
         QTest::newRow(qPrintable(name)) << name;
 }
 
@@ -183,7 +181,7 @@ void TstGcodeWorkbench::openButtonStartsInTheExamples() {
     };
     QTimer::singleShot(0, this, poll);
     QTest::mouseClick(window_->trajectoryEditor()->openButton(), Qt::LeftButton);
-    QCOMPARE(startFolder, TrajectoryEditor::examplesFolder());
+    QCOMPARE(startFolder, examplesFolder());
     QCOMPARE(QString::fromStdString(session_->session().trajectory.gcode.fileName),
              QString("square_sharp_corners.nc"));
 }

@@ -24,6 +24,7 @@
 #include "ui/panels/number_field.h"
 #include "ui/panels/trajectory_editor.h"
 #include "ui/pid_tuning_dialog.h"
+#include "ui/session/install_paths.h"
 #include "ui/session/tuning_session.h"
 #include "ui/snapshot_compare_dialog.h"
 
@@ -227,8 +228,7 @@ private slots:
         QVERIFY(walk.checked.contains(window_->trajectoryEditor()->field("radius")));
         QVERIFY2(walk.offenders.isEmpty(),
                  qPrintable("circle, without a tooltip:\n" + walk.offenders.join("\n")));
-        QVERIFY(window_->trajectoryEditor()->loadProgramFile(TrajectoryEditor::examplesFolder() +
-                                                             "/circle_25mm.nc"));
+        QVERIFY(window_->trajectoryEditor()->loadProgramFile(examplesFolder() + "/circle_25mm.nc"));
         QCOMPARE(session_->session().trajectory.kind, TrajectoryKind::Gcode);
         QApplication::processEvents();
         openFolds(window_.get());

@@ -41,7 +41,7 @@ public:
     static constexpr const char* kAtStartKey = "ui/welcomeAtStart";
 
     /// @p examplesFolder: where the example sessions and sessions.json are
-    /// (TrajectoryEditor::examplesFolder() in the workbench).
+    /// (examplesFolder() of ui/session/install_paths.h in the workbench).
     WelcomeDialog(SessionFileController* files, const QString& examplesFolder,
                   QWidget* parent = nullptr);
 

@@ -276,10 +276,6 @@ QString TrajectoryEditor::programToolTip(const QString& fileName) {
     return fileName.isEmpty() ? what : tr("%1\n%2").arg(fileName, what);
 }
 
-QString TrajectoryEditor::examplesFolder() {
-    return xyt::ui::examplesFolder();
-}
-
 bool TrajectoryEditor::loadProgramFile(const QString& path) {
     const QString name = QFileInfo(path).fileName();
     std::string text;

@@ -43,10 +43,6 @@ public:
     bool loadProgramFile(const QString& path);
     /// The same with the text given (@p fileName is shown).
     bool loadProgramText(const QString& fileName, const std::string& text);
-    /// The folder of the example programs: xyt::ui::examplesFolder() (ui/session/install_paths.h:
-    /// the installed share/xytune/examples, or from the build tree the source's
-    /// resources/examples); empty when none exists.
-    static QString examplesFolder();
 
     QLineEdit* programField() const { return programField_; }
     QLabel* programSummary() const { return summary_; }
