@@ -3666,6 +3666,97 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>io_directory_not_session</name>
+    <message>
+        <source>is a directory, not a session file</source>
+        <translation>é uma pasta, não um arquivo de sessão</translation>
+    </message>
+</context>
+<context>
+    <name>io_empty_file_name</name>
+    <message>
+        <source>the file name is empty</source>
+        <translation>o nome do arquivo está vazio</translation>
+    </message>
+</context>
+<context>
+    <name>io_foreign_file_in_sticky</name>
+    <message>
+        <source>is a file of another user (%1) in a folder everyone may write to (sticky); refusing to replace it</source>
+        <translation>é um arquivo de outro usuário (%1) em uma pasta em que todos podem escrever (sticky); a substituição é recusada</translation>
+    </message>
+</context>
+<context>
+    <name>io_foreign_link_in_sticky</name>
+    <message>
+        <source>is a symbolic link of another user (%1) in a folder everyone may write to (sticky); refusing to follow it</source>
+        <translation>é um link simbólico de outro usuário (%1) em uma pasta em que todos podem escrever (sticky); segui-lo é recusado</translation>
+    </message>
+</context>
+<context>
+    <name>io_foreign_link_to_nothing</name>
+    <message>
+        <source>is a symbolic link of another user (%1) to a file that does not exist; refusing to create it</source>
+        <translation>é um link simbólico de outro usuário (%1) para um arquivo que não existe; a criação é recusada</translation>
+    </message>
+</context>
+<context>
+    <name>io_is_directory</name>
+    <message>
+        <source>is a directory</source>
+        <translation>é uma pasta</translation>
+    </message>
+</context>
+<context>
+    <name>io_larger_than_limit</name>
+    <message>
+        <source>is larger than the limit of %1 bytes</source>
+        <translation>é maior que o limite de %1 bytes</translation>
+    </message>
+</context>
+<context>
+    <name>io_link_to_foreign_file</name>
+    <message>
+        <source>is a symbolic link to a file of another user (the file: %1, the link: %2); refusing to replace it</source>
+        <translation>é um link simbólico para um arquivo de outro usuário (o arquivo: %1, o link: %2); a substituição é recusada</translation>
+    </message>
+</context>
+<context>
+    <name>io_no_such_file</name>
+    <message>
+        <source>no such file</source>
+        <translation>arquivo inexistente</translation>
+    </message>
+</context>
+<context>
+    <name>io_not_regular_file</name>
+    <message>
+        <source>is not a regular file</source>
+        <translation>não é um arquivo comum</translation>
+    </message>
+</context>
+<context>
+    <name>io_not_regular_to_read</name>
+    <message>
+        <source>is not a regular file (a device, FIFO or socket); refusing to read it</source>
+        <translation>não é um arquivo comum (um dispositivo, FIFO ou socket); a leitura é recusada</translation>
+    </message>
+</context>
+<context>
+    <name>io_not_regular_to_replace</name>
+    <message>
+        <source>is not a regular file (a device, FIFO or socket); refusing to replace it</source>
+        <translation>não é um arquivo comum (um dispositivo, FIFO ou socket); a substituição é recusada</translation>
+    </message>
+</context>
+<context>
+    <name>io_size_over_limit</name>
+    <message>
+        <source>%1 bytes is larger than the limit of %2 bytes</source>
+        <translation>%1 bytes é maior que o limite de %2 bytes</translation>
+    </message>
+</context>
+<context>
     <name>is_empty</name>
     <message>
         <source>is empty</source>

@@ -204,12 +204,12 @@ bool v4ChainFits(const std::string& path, std::uint64_t fileSize, bool swap) {
 Diagnostic checkHeader(const std::string& path, std::uint64_t fileSize) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0)
-        throw FileError(path, std::strerror(errno));
+        throw FileError(path, systemErrorDiagnostic(errno));
     unsigned char h[128] = {};
     const ssize_t got = ::read(fd, h, sizeof h);
     ::close(fd);
     if (got < 0)
-        throw FileError(path, std::strerror(errno));
+        throw FileError(path, systemErrorDiagnostic(errno));
     if (got == 128 && ((h[126] == 'I' && h[127] == 'M') || (h[126] == 'M' && h[127] == 'I'))) {
         const bool little = h[126] == 'I'; // "IM" read as bytes: written little-endian
         const unsigned version = little ? (h[124] | (h[125] << 8)) : ((h[124] << 8) | h[125]);
@@ -238,12 +238,13 @@ Diagnostic checkHeader(const std::string& path, std::uint64_t fileSize) {
 MatHandle openMat(const std::string& path) {
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0)
-        throw FileError(path, errno == ENOENT ? "no such file" : std::strerror(errno));
+        throw FileError(path, errno == ENOENT ? makeDiagnostic("io_no_such_file")
+                                              : systemErrorDiagnostic(errno));
     if (!S_ISREG(st.st_mode))
-        throw FileError(path, "is not a regular file");
+        throw FileError(path, makeDiagnostic("io_not_regular_file"));
     if (static_cast<std::uint64_t>(st.st_size) > kMaxExperimentBytes)
-        throw FileError(path, "is larger than the limit of " + std::to_string(kMaxExperimentBytes) +
-                                  " bytes");
+        throw FileError(
+            path, makeDiagnostic("io_larger_than_limit", {std::to_string(kMaxExperimentBytes)}));
     if (const Diagnostic why = checkHeader(path, static_cast<std::uint64_t>(st.st_size));
         !why.text.empty())
         throw InvalidInput(path, makeDiagnostic("ident_mat_not_mat", {why}));

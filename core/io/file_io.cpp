@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/io/file_io.h"
 
+#include "core/model/diagnostic_catalogue.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <climits>
@@ -17,8 +19,12 @@
 
 namespace xyt {
 
-FileError::FileError(std::string path, const std::string& reason)
-    : std::runtime_error(path + ": " + reason), path_(std::move(path)), reason_(reason) {}
+FileError::FileError(std::string path, const Diagnostic& reason)
+    : std::runtime_error(path + ": " + reason.text), path_(std::move(path)), reason_(reason) {}
+
+Diagnostic systemErrorDiagnostic(int error) {
+    return Diagnostic(std::strerror(error));
+}
 
 namespace {
 
@@ -39,10 +45,6 @@ WriteStep failingStep() {
             injectedFailure = WriteStep::Rename;
     });
     return injectedFailure;
-}
-
-std::string systemReason(int error) {
-    return std::strerror(error);
 }
 
 /// The folder part of a path ("." for a bare name).
@@ -93,7 +95,7 @@ void writeAll(int fd, const char* data, std::size_t size, const std::string& pat
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0)
-            throw FileError(path, systemReason(n < 0 ? errno : EIO));
+            throw FileError(path, systemErrorDiagnostic(n < 0 ? errno : EIO));
         data += n;
         size -= static_cast<std::size_t>(n);
     }
@@ -186,59 +188,51 @@ WriteTarget resolveWriteTarget(const std::string& path) {
         struct stat st {};
         if (::lstat(current.c_str(), &st) != 0) {
             if (errno != ENOENT)
-                throw FileError(path, systemReason(errno));
+                throw FileError(path, systemErrorDiagnostic(errno));
             // A new file, or the missing target of a dangling link: created only for a link of
             // our own, since another user's link would choose where we create a file.
             for (const uid_t owner : linkOwners)
                 if (owner != self)
                     throw FileError(path,
-                                    "is a symbolic link of another user (" + uidText(owner) +
-                                        ") to a file that does not exist; refusing to create it");
+                                    makeDiagnostic("io_foreign_link_to_nothing", {uidText(owner)}));
             return {current, false, {}};
         }
         uid_t folderOwner = 0;
         const bool shared = isSharedStickyFolder(folderOf(current), &folderOwner);
         if (!S_ISLNK(st.st_mode)) {
             if (S_ISDIR(st.st_mode))
-                throw FileError(path, "is a directory");
+                throw FileError(path, makeDiagnostic("io_is_directory"));
             if (!S_ISREG(st.st_mode))
-                throw FileError(
-                    path,
-                    "is not a regular file (a device, FIFO or socket); refusing to replace it");
+                throw FileError(path, makeDiagnostic("io_not_regular_to_replace"));
             // A link may only lead to a file of its own owner: otherwise whoever made the link
             // chooses someone else's file for us to replace (root following a user's link onto
             // a system file, or onto another user's file).
             for (const uid_t owner : linkOwners)
                 if (st.st_uid != owner)
-                    throw FileError(path,
-                                    "is a symbolic link to a file of another user (the file: " +
-                                        uidText(st.st_uid) + ", the link: " + uidText(owner) +
-                                        "); refusing to replace it");
+                    throw FileError(path, makeDiagnostic("io_link_to_foreign_file",
+                                                         {uidText(st.st_uid), uidText(owner)}));
             // What the kernel's protected_regular does for open(O_CREAT): in a shared sticky
             // folder a file planted by another user is not ours to fill (keeping its owner
             // would hand our content to that user).
             if (shared && st.st_uid != self && st.st_uid != folderOwner)
-                throw FileError(
-                    path,
-                    "is a file of another user (" + uidText(st.st_uid) +
-                        ") in a folder everyone may write to (sticky); refusing to replace it");
+                throw FileError(path,
+                                makeDiagnostic("io_foreign_file_in_sticky", {uidText(st.st_uid)}));
             return {current, true, st};
         }
         if (hops == 40)
-            throw FileError(path, systemReason(ELOOP));
+            throw FileError(path, systemErrorDiagnostic(ELOOP));
         // What the kernel's protected_symlinks enforces, whether or not it is switched on: in a
         // shared sticky folder only a link of our own or of the folder's owner is followed.
         if (shared && st.st_uid != self && st.st_uid != folderOwner)
-            throw FileError(
-                path, "is a symbolic link of another user (" + uidText(st.st_uid) +
-                          ") in a folder everyone may write to (sticky); refusing to follow it");
+            throw FileError(path,
+                            makeDiagnostic("io_foreign_link_in_sticky", {uidText(st.st_uid)}));
         linkOwners.push_back(st.st_uid);
         std::string link(PATH_MAX, '\0');
         const ssize_t n = ::readlink(current.c_str(), link.data(), link.size());
         if (n < 0)
-            throw FileError(path, systemReason(errno));
+            throw FileError(path, systemErrorDiagnostic(errno));
         if (static_cast<std::size_t>(n) == link.size())
-            throw FileError(path, systemReason(ENAMETOOLONG));
+            throw FileError(path, systemErrorDiagnostic(ENAMETOOLONG));
         link.resize(static_cast<std::size_t>(n));
         current = !link.empty() && link.front() == '/' ? link : folderOf(current) + "/" + link;
     }
@@ -254,14 +248,14 @@ void injectWriteFailureForTesting(WriteStep step) {
 void writeFileAtomically(const std::string& path,
                          const std::function<void(const ByteSink&)>& produce) {
     if (path.empty())
-        throw FileError(path, "the file name is empty");
+        throw FileError(path, makeDiagnostic("io_empty_file_name"));
     const WriteTarget target = resolveWriteTarget(path);
     const std::string folder = folderOf(target.path);
     removeStaleTemporaries(folder);
     std::string name = folder + "/" + kTemporaryPrefix + std::to_string(::getpid()) + "-XXXXXX";
     const int fd = ::mkstemp(name.data());
     if (fd < 0)
-        throw FileError(path, systemReason(errno));
+        throw FileError(path, systemErrorDiagnostic(errno));
     TemporaryFile temp(name, fd);
     mode_t mode;
     if (target.exists) {
@@ -278,7 +272,7 @@ void writeFileAtomically(const std::string& path,
         mode = 0666 & ~mask;
     }
     if (::fchmod(fd, mode) != 0)
-        throw FileError(path, systemReason(errno));
+        throw FileError(path, systemErrorDiagnostic(errno));
 
     std::string buffer;
     constexpr std::size_t kBufferBytes = 64 * 1024;
@@ -297,11 +291,13 @@ void writeFileAtomically(const std::string& path,
     writeAll(fd, buffer.data(), buffer.size(), path);
 
     if (failingStep() == WriteStep::Sync || ::fsync(fd) != 0)
-        throw FileError(path, systemReason(failingStep() == WriteStep::Sync ? EIO : errno));
+        throw FileError(path,
+                        systemErrorDiagnostic(failingStep() == WriteStep::Sync ? EIO : errno));
     if (temp.close() != 0)
-        throw FileError(path, systemReason(errno));
+        throw FileError(path, systemErrorDiagnostic(errno));
     if (failingStep() == WriteStep::Rename || ::rename(name.c_str(), target.path.c_str()) != 0)
-        throw FileError(path, systemReason(failingStep() == WriteStep::Rename ? EIO : errno));
+        throw FileError(path,
+                        systemErrorDiagnostic(failingStep() == WriteStep::Rename ? EIO : errno));
     temp.release();
     // Make the rename itself durable; the file is complete either way, so a failure here is not
     // reported.
@@ -320,22 +316,22 @@ std::string readRegularFile(const std::string& path, std::size_t maxBytes) {
     // O_NONBLOCK: opening a FIFO without a writer must not block; it is refused below anyway.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd < 0)
-        throw FileError(path, errno == ENOENT ? std::string("no such file") : systemReason(errno));
+        throw FileError(path, errno == ENOENT ? makeDiagnostic("io_no_such_file")
+                                              : systemErrorDiagnostic(errno));
     struct Closer {
         int fd;
         ~Closer() { ::close(fd); }
     } closer{fd};
     struct stat st {};
     if (::fstat(fd, &st) != 0)
-        throw FileError(path, systemReason(errno));
+        throw FileError(path, systemErrorDiagnostic(errno));
     if (S_ISDIR(st.st_mode))
-        throw FileError(path, "is a directory, not a session file");
+        throw FileError(path, makeDiagnostic("io_directory_not_session"));
     if (!S_ISREG(st.st_mode))
-        throw FileError(path,
-                        "is not a regular file (a device, FIFO or socket); refusing to read it");
+        throw FileError(path, makeDiagnostic("io_not_regular_to_read"));
     if (static_cast<unsigned long long>(st.st_size) > maxBytes)
-        throw FileError(path, std::to_string(st.st_size) + " bytes is larger than the limit of " +
-                                  std::to_string(maxBytes) + " bytes");
+        throw FileError(path, makeDiagnostic("io_size_over_limit", {std::to_string(st.st_size),
+                                                                    std::to_string(maxBytes)}));
     // The size can change while reading: read at most maxBytes + 1 to notice growth.
     const std::size_t cap = maxBytes + 1;
     std::string out;
@@ -351,13 +347,13 @@ std::string readRegularFile(const std::string& path, std::size_t maxBytes) {
         if (n < 0 && errno == EINTR)
             continue;
         if (n < 0)
-            throw FileError(path, systemReason(errno));
+            throw FileError(path, systemErrorDiagnostic(errno));
         if (n == 0)
             break;
         have += static_cast<std::size_t>(n);
     }
     if (have > maxBytes)
-        throw FileError(path, "is larger than the limit of " + std::to_string(maxBytes) + " bytes");
+        throw FileError(path, makeDiagnostic("io_larger_than_limit", {std::to_string(maxBytes)}));
     out.resize(have);
     return out;
 }

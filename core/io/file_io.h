@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "core/model/diagnostic.h"
+
 #include <cstddef>
 #include <functional>
 #include <stdexcept>
@@ -11,18 +13,23 @@ namespace xyt {
 
 /**
  * A file that could not be read or written. what() reads "<path>: <reason>", the reason being
- * the system's (strerror) or ours ("is not a regular file").
+ * ours, coded (makeDiagnostic: "is not a regular file", translated by the workbench), or the
+ * system's (systemErrorDiagnostic: strerror's text, uncoded).
  */
 class FileError : public std::runtime_error {
 public:
-    FileError(std::string path, const std::string& reason);
+    FileError(std::string path, const Diagnostic& reason);
     const std::string& path() const noexcept { return path_; }
-    const std::string& reason() const noexcept { return reason_; }
+    const std::string& reason() const noexcept { return reason_.text; }
+    const Diagnostic& reasonDiagnostic() const noexcept { return reason_; }
 
 private:
     std::string path_;
-    std::string reason_;
+    Diagnostic reason_;
 };
+
+/// The system's message for @p error (strerror), as an uncoded reason.
+Diagnostic systemErrorDiagnostic(int error);
 
 /// Appends bytes to the file being written; throws FileError when a write fails.
 using ByteSink = std::function<void(std::string_view)>;

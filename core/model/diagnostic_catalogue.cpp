@@ -28,7 +28,7 @@ const std::vector<DiagnosticTemplate>& diagnosticCatalogue() {
     static const std::vector<DiagnosticTemplate> catalogue = [] {
         std::vector<DiagnosticTemplate> all;
         for (const auto* table :
-             {&diagnostic_tables::model(), &diagnostic_tables::design(),
+             {&diagnostic_tables::model(), &diagnostic_tables::io(), &diagnostic_tables::design(),
               &diagnostic_tables::analysis(), &diagnostic_tables::simulation(),
               &diagnostic_tables::identification(), &diagnostic_tables::contour(),
               &diagnostic_tables::study(), &diagnostic_tables::session()})

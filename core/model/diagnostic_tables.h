@@ -10,6 +10,7 @@
 namespace xyt::diagnostic_tables {
 
 const std::vector<DiagnosticTemplate>& model();          ///< diagnostics_model.cpp
+const std::vector<DiagnosticTemplate>& io();             ///< diagnostics_io.cpp
 const std::vector<DiagnosticTemplate>& design();         ///< diagnostics_design.cpp
 const std::vector<DiagnosticTemplate>& analysis();       ///< diagnostics_analysis.cpp
 const std::vector<DiagnosticTemplate>& simulation();     ///< diagnostics_simulation.cpp

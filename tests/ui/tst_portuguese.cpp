@@ -4,6 +4,7 @@
 // decimal comma, and English again when the language is "en". The expected Portuguese strings
 // are the ones chosen for translations/xytune_pt_BR.ts, written here literally (reading them
 // from the catalogue would make the test circular).
+#include "core/io/file_io.h"
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/design_method_module.h"
@@ -452,6 +453,17 @@ void TstPortuguese::sessionFileRefusalsArePortuguese() {
     QCOMPARE(r.errorPath, QStringLiteral("axes[0].gt.wn"));
     const QString shown = r.errorDiagnostic.coded() ? diagnosticText(r.errorDiagnostic) : r.error;
     QCOMPARE(shown, QStringLiteral("deve ser maior que zero"));
+    // A file that is not there: the core's coded FileError reason, with the path.
+    const QString missing = QStringLiteral("/nonexistent-xytune-folder/none.json");
+    r = files::loadSessionFile(missing);
+    QVERIFY(!r.ok);
+    QCOMPARE(diagnosticText(r.errorDiagnostic), missing + QStringLiteral(": arquivo inexistente"));
+    try {
+        readRegularFile(missing.toStdString(), 10);
+        QFAIL("a missing file was read");
+    } catch (const std::exception& e) {
+        QCOMPARE(exceptionText(e), missing + QStringLiteral(": arquivo inexistente"));
+    }
     // The CLI loads no language: the same reasons in English.
     QVERIFY(installUiLanguage(QStringLiteral("en")));
     r = files::sessionFromBytes(QJsonDocument(root).toJson());

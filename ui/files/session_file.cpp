@@ -4,6 +4,7 @@
 #include "core/io/file_io.h"
 #include "core/io/json_duplicate_keys.h"
 #include "core/model/coefficient_parser.h"
+#include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
 #include "core/session/design_method_module.h"
 #include "core/session/program_trajectory.h"
@@ -866,6 +867,7 @@ SessionLoadResult loadSessionFile(const QString& path) {
     } catch (const FileError& e) {
         SessionLoadResult r;
         r.error = QString::fromStdString(e.what());
+        r.errorDiagnostic = makeDiagnostic("field_reason", {e.path(), e.reasonDiagnostic()});
         return r;
     }
     return sessionFromBytes(QByteArray::fromStdString(bytes));

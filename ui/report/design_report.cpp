@@ -211,7 +211,7 @@ QString DesignReport::overview() const {
     html += listHtml(
         {trajectory.toHtmlEscaped(),
          tr("Simulation: %1 (step %2 s)")
-             .arg(escaped(evaluation_.duration.description))
+             .arg(escapedDiagnostic(evaluation_.duration.description))
              .arg(t.dtSeconds),
          tr("Actuator limit: |u| ≤ %1 V").arg(session_.umaxVolts),
          tr("Digital PI: Ts = %1 s, %2 discretization; anti-windup %3")
@@ -450,7 +450,7 @@ QString DesignReport::contourSection(const std::vector<ReportFigure>& figures) c
         }
     }
     if (!evaluation_.programError.text.empty())
-        lines << tr("program: %1").arg(escaped(evaluation_.programError));
+        lines << tr("program: %1").arg(escapedDiagnostic(evaluation_.programError));
     const ReferenceShaping& shaping = session_.trajectory.shaping;
     if (shaping.active()) {
         QString text =
@@ -474,7 +474,7 @@ QString DesignReport::contourSection(const std::vector<ReportFigure>& figures) c
                      .arg(coefficientText(cc.kp), coefficientText(cc.ki),
                           QString::fromUtf8(contourEstimateName(cc.estimate)));
     if (!evaluation_.couplingError.text.empty())
-        lines << tr("cross-coupling: %1").arg(escaped(evaluation_.couplingError));
+        lines << tr("cross-coupling: %1").arg(escapedDiagnostic(evaluation_.couplingError));
     html += listHtml(lines);
     for (const ReportFigure& f : figures)
         html += figureHtml(f);

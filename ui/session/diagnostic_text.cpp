@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/session/diagnostic_text.h"
 
+#include "core/io/file_io.h"
 #include "core/model/diagnostic_catalogue.h"
 
 #include <QCoreApplication>
@@ -54,6 +55,9 @@ QString invalidInputText(const InvalidInput& e) {
 QString exceptionText(const std::exception& e) {
     if (const auto* invalid = dynamic_cast<const InvalidInput*>(&e))
         return invalidInputText(*invalid);
+    if (const auto* file = dynamic_cast<const FileError*>(&e))
+        return QStringLiteral("%1: %2").arg(QString::fromStdString(file->path()),
+                                            diagnosticText(file->reasonDiagnostic()));
     return QString::fromUtf8(e.what());
 }
 

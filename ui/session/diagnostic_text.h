@@ -22,7 +22,8 @@ QString diagnosticText(const Diagnostic& d);
 /// A refusal as the workbench shows it: "<field>: <reason>", the reason in the user's language.
 QString invalidInputText(const InvalidInput& e);
 
-/// Any exception's message for the user: an InvalidInput's as invalidInputText, another's what().
+/// Any exception's message for the user: an InvalidInput's as invalidInputText, a FileError's as
+/// "<path>: <reason>" with its reason translated, another's what().
 QString exceptionText(const std::exception& e);
 
 /**

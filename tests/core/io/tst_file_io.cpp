@@ -161,9 +161,19 @@ void TstFileIo::readRefusesSpecialFiles() {
             QFAIL(qPrintable(path + " was read"));
         } catch (const FileError& e) {
             QVERIFY2(QString::fromStdString(e.reason()).contains("not a regular file"), e.what());
+            QCOMPARE(e.reasonDiagnostic().code, std::string("io_not_regular_to_read"));
         }
     }
-    QVERIFY_THROWS_EXCEPTION(FileError, readRegularFile(dir.filePath("missing").toStdString(), 10));
+    // The reasons carry their code (the workbench translates it); what() stays the English.
+    const std::string missing = dir.filePath("missing").toStdString();
+    try {
+        readRegularFile(missing, 10);
+        QFAIL("a missing file was read");
+    } catch (const FileError& e) {
+        QCOMPARE(e.reasonDiagnostic().code, std::string("io_no_such_file"));
+        QCOMPARE(std::string(e.what()), missing + ": no such file");
+        QCOMPARE(e.path(), missing);
+    }
 }
 
 void TstFileIo::readStopsAtTheLimit() {
@@ -176,6 +186,8 @@ void TstFileIo::readStopsAtTheLimit() {
         QFAIL("a file one byte over the limit was read");
     } catch (const FileError& e) {
         QVERIFY2(QString::fromStdString(e.reason()).contains("limit of 99 bytes"), e.what());
+        QCOMPARE(e.reasonDiagnostic().code, std::string("io_size_over_limit"));
+        QCOMPARE(e.reasonDiagnostic().args.at(1).text, std::string("99"));
     }
 }
 

@@ -219,9 +219,11 @@ void TstDiagnosticCatalogue::everyCodeUsedIsInTheCatalogue() {
 }
 
 void TstDiagnosticCatalogue::everyRefusalOfTheCoreIsCoded() {
-    // Each InvalidInput the core constructs gives its reason as a diagnostic (makeDiagnostic, a
-    // caught reasonDiagnostic(), or a function or variable named ...Diagnostic).
-    static const QRegularExpression construct(QStringLiteral("(?<![:\\w])InvalidInput\\s*\\("));
+    // Each InvalidInput and FileError the core constructs gives its reason as a diagnostic
+    // (makeDiagnostic, a caught reasonDiagnostic(), the system's systemErrorDiagnostic(), or a
+    // function or variable named ...Diagnostic).
+    static const QRegularExpression construct(
+        QStringLiteral("(?<![:\\w])(?:InvalidInput|FileError)\\s*\\("));
     const QStringList offenders = callsWithoutDiagnostic(construct);
     for (const QString& o : offenders)
         qWarning("uncoded refusal: %s", qPrintable(o));
