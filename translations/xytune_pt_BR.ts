@@ -4765,6 +4765,20 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>session_pid_equation_controller</name>
+    <message>
+        <source>C(s) = (P + I/s + D s/(Tf s + 1)) / u,  Tf = %1 s, u = %2 model units per mm</source>
+        <translation>C(s) = (P + I/s + D s/(Tf s + 1)) / u,  Tf = %1 s, u = %2 unidades do modelo por mm</translation>
+    </message>
+</context>
+<context>
+    <name>session_pid_equation_feedforward</name>
+    <message>
+        <source>FF1 = %1, FF2 = %2, FF3 = %3 (model inverse: a2 u/k0 = %4, a1 u/k0 = %5, u/k0 = %6)</source>
+        <translation>FF1 = %1, FF2 = %2, FF3 = %3 (inversa do modelo: a2 u/k0 = %4, a1 u/k0 = %5, u/k0 = %6)</translation>
+    </message>
+</context>
+<context>
     <name>session_pid_no_feedback</name>
     <message>
         <source>P, I and D are all 0: the axis has no feedback</source>

@@ -260,6 +260,13 @@ const std::vector<DiagnosticTemplate>& session() {
         XYT_DIAGNOSTIC("session_duration_never", "never"),
         XYT_DIAGNOSTIC("session_program_line", "program line %1"),
         XYT_DIAGNOSTIC("session_the_move", "the move"),
+        // The PID + feedforward method's equation lines with words (pid_feedforward_method.cpp).
+        XYT_DIAGNOSTIC("session_pid_equation_feedforward",
+                       "FF1 = %1, FF2 = %2, FF3 = %3 (model inverse: a2 u/k0 = %4, a1 u/k0 = %5, "
+                       "u/k0 = %6)"),
+        XYT_DIAGNOSTIC("session_pid_equation_controller",
+                       "C(s) = (P + I/s + D s/(Tf s + 1)) / u,  Tf = %1 s, u = %2 model units per "
+                       "mm"),
     };
     return table;
 }

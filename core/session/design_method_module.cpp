@@ -90,9 +90,9 @@ std::vector<std::string> DesignMethodModule::reportLines(const AxisSettings& /*s
     return {line};
 }
 
-std::vector<std::string> DesignMethodModule::equations(const AxisSettings& /*settings*/,
-                                                       const AxisEvaluation& axis) const {
-    std::vector<std::string> lines;
+std::vector<Diagnostic> DesignMethodModule::equations(const AxisSettings& /*settings*/,
+                                                      const AxisEvaluation& axis) const {
+    std::vector<Diagnostic> lines;
     for (const DesignCoefficient& c : coefficients(axis))
         lines.push_back(coefficientText(c));
     return lines;

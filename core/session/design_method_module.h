@@ -199,11 +199,12 @@ public:
                                                  const AxisEvaluation& axis) const;
     /**
      * The design's equations as the teaching panel shows them, one plain-text line each (Unicode
-     * for symbols: "u = kp e"). By default, the coefficients as "name = value unit". (The
-     * built-in methods' panels are typeset by the workbench.)
+     * for symbols: "u = kp e"): a line of symbols and numbers as text, a line with words coded
+     * (makeDiagnostic) so that the workbench translates it. By default, the coefficients as
+     * "name = value unit". (The built-in methods' panels are typeset by the workbench.)
      */
-    virtual std::vector<std::string> equations(const AxisSettings& settings,
-                                               const AxisEvaluation& axis) const;
+    virtual std::vector<Diagnostic> equations(const AxisSettings& settings,
+                                              const AxisEvaluation& axis) const;
     /**
      * The tracking response r -> y of an evaluated design on @p omegaRadPerSec, without and with
      * its feedforward, when the method has one (pole placement's ZPETC, a PID's command

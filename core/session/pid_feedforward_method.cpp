@@ -427,8 +427,8 @@ public:
         return lines;
     }
 
-    std::vector<std::string> equations(const AxisSettings& /*settings*/,
-                                       const AxisEvaluation& axis) const override {
+    std::vector<Diagnostic> equations(const AxisSettings& /*settings*/,
+                                      const AxisEvaluation& axis) const override {
         if (!axis.methodDesign)
             return {};
         const PidFeedforwardDesign& d = pidFeedforwardDesign(axis);
@@ -437,11 +437,11 @@ public:
         return {"u = bias + P e + I ∫e dt + D e′ + FF0 r + FF1 r′ + FF2 r″ + FF3 r‴,  |u| ≤ " +
                     n(g.maxOutput) + " V",
                 "P = " + n(g.p) + " V/mm, I = " + n(g.i) + " V/(mm s), D = " + n(g.d) + " V s/mm",
-                "FF1 = " + n(g.ff1) + ", FF2 = " + n(g.ff2) + ", FF3 = " + n(g.ff3) +
-                    " (model inverse: a2 u/k0 = " + n(d.model.ff1) +
-                    ", a1 u/k0 = " + n(d.model.ff2) + ", u/k0 = " + n(d.model.ff3) + ")",
-                "C(s) = (P + I/s + D s/(Tf s + 1)) / u,  Tf = " + n(d.continuousFilterSeconds) +
-                    " s, u = " + n(d.unit) + " model units per mm"};
+                makeDiagnostic(
+                    "session_pid_equation_feedforward",
+                    {n(g.ff1), n(g.ff2), n(g.ff3), n(d.model.ff1), n(d.model.ff2), n(d.model.ff3)}),
+                makeDiagnostic("session_pid_equation_controller",
+                               {n(d.continuousFilterSeconds), n(d.unit)})};
     }
 
     std::optional<TrackingFrequencyResponses>

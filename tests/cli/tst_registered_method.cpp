@@ -209,8 +209,8 @@ public:
             return {};
         return {{"kp", designOf(axis).kp, "V/model unit"}};
     }
-    std::vector<std::string> equations(const AxisSettings& /*settings*/,
-                                       const AxisEvaluation& axis) const override {
+    std::vector<Diagnostic> equations(const AxisSettings& /*settings*/,
+                                      const AxisEvaluation& axis) const override {
         return {"u = kp e, kp = " + xyt::formatNumber(designOf(axis).kp) + " V/model unit"};
     }
 };

@@ -108,8 +108,8 @@ void EquationsPanel::showAxis(const AxisSettings& settings, const AxisEvaluation
                     id,
                     coreText("xyt::MethodName", std::string(module.displayName())).toHtmlEscaped());
         QStringList lines;
-        for (const std::string& line : module.equations(settings, axis))
-            lines << QString::fromStdString(line).toHtmlEscaped();
+        for (const Diagnostic& line : module.equations(settings, axis))
+            lines << diagnosticText(line).toHtmlEscaped();
         showHtml(html + lines.join(QStringLiteral("<br>")));
         return;
     }

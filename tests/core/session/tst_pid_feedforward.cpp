@@ -6,6 +6,7 @@
 // the z-plane poles of the sampled PID loop against its own simulation, and the firmware C in
 // the loop (double: equal to the core's sampled-data run to 1e-12 of the signal).
 #include "core/design/model_feedforward.h"
+#include "core/model/number_format.h"
 #include "core/session/design_method_module.h"
 #include "core/session/design_study.h"
 #include "core/session/export_text.h"
@@ -150,6 +151,22 @@ void TstPidFeedforward::modelFeedforwardIsThePlantsInverse() {
         const auto v = d.trackingWithFeedforward(std::complex<double>(0.0, w));
         XYT_COMPARE_NEAR(std::abs(v - 1.0), 0.0, 0.0, 1e-9);
     }
+    // The equations panel's lines with words are coded (translated by the workbench); their
+    // English names the model inverse's gains as formatNumber prints them (6 digits).
+    const AxisEvaluation a = evaluateAxis(s, 0);
+    const std::vector<Diagnostic> lines =
+        designMethodModule(DesignMethod::PidFeedforward).equations(s.axes[0], a);
+    QCOMPARE(lines.size(), std::size_t(4));
+    QVERIFY(!lines[0].coded()); // symbols and numbers only
+    QCOMPARE(lines[2].code, std::string("session_pid_equation_feedforward"));
+    QCOMPARE(lines[2].args.size(), std::size_t(6));
+    QCOMPARE(lines[2].args[3].text, formatNumber(ff.ff1, 6));
+    QVERIFY2(lines[2].text.find("(model inverse: a2 u/k0 = " + formatNumber(ff.ff1, 6) + ", ") !=
+                 std::string::npos,
+             lines[2].text.c_str());
+    QCOMPARE(lines[3].code, std::string("session_pid_equation_controller"));
+    QVERIFY2(lines[3].text.find(", u = 0.001 model units per mm") != std::string::npos,
+             lines[3].text.c_str());
 }
 
 void TstPidFeedforward::exactFeedforwardLeavesOnlyTheHoldsError() {
