@@ -1468,13 +1468,6 @@ falha: %1</translation>
     </message>
 </context>
 <context>
-    <name>contour_gcode_too_large</name>
-    <message>
-        <source>is larger than the limit of %1 bytes</source>
-        <translation>é maior que o limite de %1 bytes</translation>
-    </message>
-</context>
-<context>
     <name>contour_gcode_too_many_lines</name>
     <message>
         <source>has more than the limit of %1 lines</source>
@@ -1615,13 +1608,6 @@ falha: %1</translation>
     </message>
 </context>
 <context>
-    <name>contour_point_not_finite</name>
-    <message>
-        <source>point %1 is not finite</source>
-        <translation>o ponto %1 não é finito</translation>
-    </message>
-</context>
-<context>
     <name>contour_points_collinear</name>
     <message>
         <source>are collinear (or coincide): no circle fits them</source>
@@ -1696,13 +1682,6 @@ falha: %1</translation>
     <message>
         <source>must be in (0, 45] degrees</source>
         <translation>deve estar em (0, 45] graus</translation>
-    </message>
-</context>
-<context>
-    <name>contour_sample_not_finite</name>
-    <message>
-        <source>sample %1 is not finite</source>
-        <translation>a amostra %1 não é finita</translation>
     </message>
 </context>
 <context>
@@ -2515,13 +2494,6 @@ falha: %1</translation>
     <message>
         <source>not uniformly sampled: step %1 is %2 s, the mean step %3 s</source>
         <translation>não é amostrado uniformemente: o passo %1 é %2 s, o passo médio %3 s</translation>
-    </message>
-</context>
-<context>
-    <name>ident_friction_point_not_finite</name>
-    <message>
-        <source>point %1 is not finite</source>
-        <translation>o ponto %1 não é finito</translation>
     </message>
 </context>
 <context>
@@ -3365,13 +3337,6 @@ falha: %1</translation>
     </message>
 </context>
 <context>
-    <name>ident_sample_not_finite</name>
-    <message>
-        <source>sample %1 is not finite</source>
-        <translation>a amostra %1 não é finita</translation>
-    </message>
-</context>
-<context>
     <name>ident_sample_time_outside</name>
     <message>
         <source>%1 s is outside the accepted sample times, 1e-09 s to 10000 s (no axis experiment is sampled faster or slower, and beyond them a fitted gain underflows to 0 or a session&apos;s run needs more than 1e308 samples)</source>
@@ -4086,6 +4051,13 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>point_not_finite</name>
+    <message>
+        <source>point %1 is not finite</source>
+        <translation>o ponto %1 não é finito</translation>
+    </message>
+</context>
+<context>
     <name>pp_u_exceeds_limit</name>
     <message>
         <source>|u| exceeds the actuator limit (the discrete loop is simulated without saturation)</source>
@@ -4114,10 +4086,10 @@ falha: %1</translation>
     </message>
 </context>
 <context>
-    <name>session_a0_zero</name>
+    <name>sample_not_finite</name>
     <message>
-        <source>A(0) must be nonzero</source>
-        <translation>A(0) deve ser diferente de zero</translation>
+        <source>sample %1 is not finite</source>
+        <translation>a amostra %1 não é finita</translation>
     </message>
 </context>
 <context>
@@ -4254,13 +4226,6 @@ falha: %1</translation>
     </message>
 </context>
 <context>
-    <name>session_axes_runs_samples</name>
-    <message>
-        <source>the two axes&apos; runs do not have the same samples</source>
-        <translation>as execuções dos dois eixos não têm as mesmas amostras</translation>
-    </message>
-</context>
-<context>
     <name>session_axis_id_not_unique</name>
     <message>
         <source>must differ from axes[0].id</source>
@@ -4370,13 +4335,6 @@ falha: %1</translation>
     <message>
         <source>needs both digital controllers at one period: the x axis runs every %1 s, the y axis every %2 s</source>
         <translation>precisa dos dois controladores digitais com um só período: o eixo x executa a cada %1 s, o eixo y a cada %2 s</translation>
-    </message>
-</context>
-<context>
-    <name>session_coupling_one_period</name>
-    <message>
-        <source>needs both axes at one controller period: the x axis runs every %1 s, the y axis every %2 s</source>
-        <translation>precisa dos dois eixos com um só período de controlador: o eixo x executa a cada %1 s, o eixo y a cada %2 s</translation>
     </message>
 </context>
 <context>
@@ -5276,13 +5234,6 @@ falha: %1</translation>
     </message>
 </context>
 <context>
-    <name>study_batch_width</name>
-    <message>
-        <source>must be 1, 2, 4 or 8</source>
-        <translation>deve ser 1, 2, 4 ou 8</translation>
-    </message>
-</context>
-<context>
     <name>study_best_at_lower_edge</name>
     <message>
         <source>%1 = %2 (the best design) is the lower end of the %3 range %4..%5: the optimum may lie below; widen the %6 range below %7</source>
@@ -5532,13 +5483,6 @@ falha: %1</translation>
     <message>
         <source>no design of the grid meets the specification</source>
         <translation>nenhum projeto da grade atende à especificação</translation>
-    </message>
-</context>
-<context>
-    <name>study_no_sample_after_ramp_in</name>
-    <message>
-        <source>no sample after the ramp-in</source>
-        <translation>nenhuma amostra após a rampa de entrada</translation>
     </message>
 </context>
 <context>

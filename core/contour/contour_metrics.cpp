@@ -26,8 +26,7 @@ void requirePoints(const std::vector<double>& x, const std::vector<double>& y, c
                            makeDiagnostic("contour_needs_points", {std::to_string(minimum)}));
     for (std::size_t i = 0; i < x.size(); ++i)
         if (!std::isfinite(x[i]) || !std::isfinite(y[i]))
-            throw InvalidInput(field,
-                               makeDiagnostic("contour_point_not_finite", {std::to_string(i)}));
+            throw InvalidInput(field, makeDiagnostic("point_not_finite", {std::to_string(i)}));
 }
 
 /// Radii of the points about @p c.
@@ -177,8 +176,7 @@ ContourErrorResult contourError(const Path& path, const std::vector<double>& t,
     std::size_t hint = 0;
     for (std::size_t k = 0; k < n; ++k) {
         if (!std::isfinite(t[k]) || !std::isfinite(x[k]) || !std::isfinite(y[k]))
-            throw InvalidInput("traced",
-                               makeDiagnostic("contour_sample_not_finite", {std::to_string(k)}));
+            throw InvalidInput("traced", makeDiagnostic("sample_not_finite", {std::to_string(k)}));
         const PathProjection p = path.nearest({x[k], y[k]}, hint);
         hint = p.segment;
         out.error[k] = p.signedDistance;

@@ -500,7 +500,7 @@ GcodeProgram readGcode(std::string_view text, const GcodeReadOptions& options) {
             "start", makeDiagnostic("contour_start_within", {formatNumber(kMaxGcodeCoordinateMm)}));
     if (text.size() > kMaxGcodeBytes)
         throw InvalidInput(
-            "program", makeDiagnostic("contour_gcode_too_large", {std::to_string(kMaxGcodeBytes)}));
+            "program", makeDiagnostic("io_larger_than_limit", {std::to_string(kMaxGcodeBytes)}));
     // Lines end at LF (Unix), CR LF (DOS) or a lone CR (classic Mac OS): a CR not followed by LF
     // ends a line too, so a CR-only file has its lines and their numbers.
     const auto lineEnd = [&](std::size_t begin) {

@@ -257,8 +257,8 @@ FrictionEstimate fitFrictionCurve(const std::vector<FrictionPoint>& points,
         const FrictionPoint& p = points[i];
         if (!std::isfinite(p.velocityMmPerS) || !std::isfinite(p.volts) ||
             !std::isfinite(p.voltsStd))
-            throw InvalidInput("points", makeDiagnostic("ident_friction_point_not_finite",
-                                                        {std::to_string(i + 1)}));
+            throw InvalidInput("points",
+                               makeDiagnostic("point_not_finite", {std::to_string(i + 1)}));
         if (p.velocityMmPerS == 0.0)
             throw InvalidInput("points", makeDiagnostic("ident_friction_point_velocity_zero",
                                                         {std::to_string(i + 1)}));

@@ -187,11 +187,9 @@ void validateIoData(const IoData& data) {
                                                                 std::to_string(data.y.size())}));
     for (std::size_t k = 0; k < data.y.size(); ++k) {
         if (!std::isfinite(data.u[k]))
-            throw InvalidInput("data.u",
-                               makeDiagnostic("ident_sample_not_finite", {std::to_string(k)}));
+            throw InvalidInput("data.u", makeDiagnostic("sample_not_finite", {std::to_string(k)}));
         if (!std::isfinite(data.y[k]))
-            throw InvalidInput("data.y",
-                               makeDiagnostic("ident_sample_not_finite", {std::to_string(k)}));
+            throw InvalidInput("data.y", makeDiagnostic("sample_not_finite", {std::to_string(k)}));
     }
     requirePositive(data.tsSeconds, "data.ts");
 }

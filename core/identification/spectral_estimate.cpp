@@ -62,8 +62,7 @@ void requireSpectralSignal(const std::vector<double>& x, const std::string& fiel
                            const WelchSegments& s) {
     for (std::size_t i = 0; i < x.size(); ++i)
         if (!std::isfinite(x[i]))
-            throw InvalidInput(field,
-                               makeDiagnostic("ident_sample_not_finite", {std::to_string(i + 1)}));
+            throw InvalidInput(field, makeDiagnostic("sample_not_finite", {std::to_string(i + 1)}));
     if (s.count < 2)
         throw InvalidInput(
             field, makeDiagnostic("ident_welch_too_few",

@@ -9,11 +9,9 @@ const std::vector<DiagnosticTemplate>& contour() {
         // Points and traces of the contour metrics (contour_metrics.cpp).
         XYT_DIAGNOSTIC("contour_xy_different_lengths", "x and y have different lengths"),
         XYT_DIAGNOSTIC("contour_needs_points", "needs at least %1 points"),
-        XYT_DIAGNOSTIC("contour_point_not_finite", "point %1 is not finite"),
         XYT_DIAGNOSTIC("contour_reversal_window", "must be in (0, 45] degrees"),
         XYT_DIAGNOSTIC("contour_has_no_sample", "has no sample"),
         XYT_DIAGNOSTIC("contour_one_flag_per_segment", "needs one flag per path segment"),
-        XYT_DIAGNOSTIC("contour_sample_not_finite", "sample %1 is not finite"),
         XYT_DIAGNOSTIC("contour_points_collinear",
                        "are collinear (or coincide): no circle fits them"),
         XYT_DIAGNOSTIC("contour_fit_radius_not_real",
@@ -122,7 +120,6 @@ const std::vector<DiagnosticTemplate>& contour() {
         XYT_DIAGNOSTIC("contour_rapid_feed_outside",
                        "%1 mm/min is outside the planner's range [%2, %3] mm/min"),
         XYT_DIAGNOSTIC("contour_start_within", "must be finite and within %1 mm"),
-        XYT_DIAGNOSTIC("contour_gcode_too_large", "is larger than the limit of %1 bytes"),
         XYT_DIAGNOSTIC("contour_gcode_too_many_lines", "has more than the limit of %1 lines"),
         // The G-code program's warnings (GcodeProgram::warnings).
         XYT_DIAGNOSTIC("contour_gcode_line_warning", "line %1: %2"),

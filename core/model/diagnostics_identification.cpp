@@ -221,7 +221,6 @@ const std::vector<DiagnosticTemplate>& identification() {
                        "the Jacobian has rank %1 < %2: not every parameter is identifiable from "
                        "these data (no covariance); a lower order may do"),
         XYT_DIAGNOSTIC("ident_data_u_y_lengths", "has %1 samples but data.y has %2"),
-        XYT_DIAGNOSTIC("ident_sample_not_finite", "sample %1 is not finite"),
         // continuous_fit.cpp: the fit of k0/(s^3 + a1 s^2 + a2 s).
         XYT_DIAGNOSTIC("ident_in_zero_0_1", "must be in (0, 0.1]"),
         XYT_DIAGNOSTIC("ident_fit_a_not_positive",
@@ -293,7 +292,6 @@ const std::vector<DiagnosticTemplate>& identification() {
         XYT_DIAGNOSTIC("ident_friction_segments",
                        "%1 constant-velocity segments in the + direction and %2 in the - "
                        "direction: needs jogs in both directions at two or more speeds"),
-        XYT_DIAGNOSTIC("ident_friction_point_not_finite", "point %1 is not finite"),
         XYT_DIAGNOSTIC("ident_friction_point_velocity_zero",
                        "point %1 has velocity 0: no direction"),
         XYT_DIAGNOSTIC(

@@ -21,6 +21,8 @@ const std::vector<DiagnosticTemplate>& model() {
         XYT_DIAGNOSTIC("is_missing", "is missing"),
         XYT_DIAGNOSTIC("has_no_samples", "has no samples"),
         XYT_DIAGNOSTIC("not_finite_value", "is NaN or infinite"),
+        XYT_DIAGNOSTIC("point_not_finite", "point %1 is not finite"),
+        XYT_DIAGNOSTIC("sample_not_finite", "sample %1 is not finite"),
         XYT_DIAGNOSTIC("not_continuous_proper", "must be a continuous, proper transfer function"),
         XYT_DIAGNOSTIC("not_continuous_strictly_proper",
                        "must be a continuous, strictly proper transfer function"),

@@ -85,17 +85,12 @@ const std::vector<DiagnosticTemplate>& session() {
                        "needs both axes at one controller period: the x axis runs every %1 s, the "
                        "y axis every %2 s (a pole-placement axis runs at its Ts, a continuous one "
                        "at the trajectory's dt)"),
-        XYT_DIAGNOSTIC("session_coupling_one_period",
-                       "needs both axes at one controller period: the x axis runs every %1 s, the "
-                       "y axis every %2 s"),
         XYT_DIAGNOSTIC("session_coupling_one_digital_period",
                        "needs both digital controllers at one period: the x axis runs every %1 s, "
                        "the y axis every %2 s"),
         XYT_DIAGNOSTIC("session_digital_runs_samples",
                        "the two digital runs do not have the same samples"),
         XYT_DIAGNOSTIC("session_coupling_off", "is off (kp and ki are 0)"),
-        XYT_DIAGNOSTIC("session_axes_runs_samples",
-                       "the two axes' runs do not have the same samples"),
         XYT_DIAGNOSTIC("session_axis_no_digital_to_couple",
                        "axis %1 has no digital implementation to couple"),
         XYT_DIAGNOSTIC("session_coupled_loop_unstable",
@@ -186,7 +181,6 @@ const std::vector<DiagnosticTemplate>& session() {
                        "there is no flexible mode to take a spectrum of"),
         XYT_DIAGNOSTIC("session_t1_outside_unit_circle",
                        "the desired pole -t1 must lie inside the unit circle (|t1| < 1)"),
-        XYT_DIAGNOSTIC("session_a0_zero", "A(0) must be nonzero"),
         XYT_DIAGNOSTIC("session_out_of_reach",
                        "the trajectory is out of the plant's reach: holding %1 mm needs %2 V (the "
                        "model's steady gain B(1)/A(1) = %3 mm/V), beyond the %4 V limit"),

@@ -23,7 +23,6 @@ const std::vector<DiagnosticTemplate>& study() {
         XYT_DIAGNOSTIC("study_nominal_not_finite",
                        "the nominal design's run is not finite (it diverges): there is no contour "
                        "to compare with"),
-        XYT_DIAGNOSTIC("study_no_sample_after_ramp_in", "no sample after the ramp-in"),
         XYT_DIAGNOSTIC("study_no_sample_on_segment", "no sample on a measured segment"),
         XYT_DIAGNOSTIC("study_unstable_plant_pairs",
                        "%1 plant pairs are unstable or diverged with these controllers; they are "
@@ -66,7 +65,6 @@ const std::vector<DiagnosticTemplate>& study() {
         XYT_DIAGNOSTIC("study_steps_not_finite", "the steps must be finite and >= 0"),
         XYT_DIAGNOSTIC("study_other_window",
                        "the study measured the settle with another window; run it again"),
-        XYT_DIAGNOSTIC("study_batch_width", "must be 1, 2, 4 or 8"),
         XYT_DIAGNOSTIC("study_sweep_cancelled",
                        "cancelled: %1 of %2 grid points computed, no refinement"),
         XYT_DIAGNOSTIC("study_no_feasible_design", "no design of the grid meets the specification"),

@@ -49,7 +49,7 @@ ContourDeviation deviation(const Session& session, const std::vector<double>& t,
 void requireOnePeriod(const SimulationResult& x, const SimulationResult& y) {
     if (x.t.size() != y.t.size() || std::abs(x.dtSeconds - y.dtSeconds) > 1e-9 * x.dtSeconds)
         throw InvalidInput("cross_coupling",
-                           makeDiagnostic("session_coupling_one_period",
+                           makeDiagnostic("sim_coupling_periods_differ",
                                           {formatNumber(x.dtSeconds), formatNumber(y.dtSeconds)}));
 }
 
@@ -136,7 +136,7 @@ CoupledTrajectoryRun runCoupledTrajectory(const Session& session, const Simulati
         loops[static_cast<std::size_t>(i)] = m.steppedPath(session, i, axis.t, axis.r, dt);
     }
     if (loops[0]->samples() != out.t.size() || loops[1]->samples() != out.t.size())
-        throw InvalidInput("cross_coupling", makeDiagnostic("session_axes_runs_samples"));
+        throw InvalidInput("cross_coupling", makeDiagnostic("sim_coupling_samples_differ"));
     out.coupling = runCrossCoupled(*loops[0], *loops[1], referenceCouplingDirections(x.r, y.r),
                                    session.crossCoupling);
     for (std::size_t i = 0; i < 2; ++i)

@@ -432,7 +432,7 @@ public:
         const Polynomial b = Polynomial::fromAscending(settings.pp.b, "b");
         const double a0 = a.coefficient(0);
         if (a0 == 0.0)
-            throw InvalidInput("a", makeDiagnostic("session_a0_zero"));
+            throw InvalidInput("a", makeDiagnostic("analysis_a0_nonzero"));
         std::vector<UncertainParameter> out;
         const auto& ac = a.ascending();
         for (std::size_t i = 1; i < ac.size(); ++i)
@@ -558,7 +558,7 @@ public:
         std::vector<double> a = settings.pp.a, b = settings.pp.b;
         const double a0 = a.empty() ? 0.0 : a[0];
         if (a0 == 0.0)
-            throw InvalidInput("a", makeDiagnostic("session_a0_zero"));
+            throw InvalidInput("a", makeDiagnostic("analysis_a0_nonzero"));
         for (double& c : a)
             c /= a0;
         for (double& c : b)

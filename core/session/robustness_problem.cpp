@@ -158,7 +158,7 @@ ContourRobustnessProblem sessionContourRobustnessProblem(const Session& session)
         const double periodY = p.y.controller ? p.y.dtSeconds : p.y.loop->tsSeconds;
         if (std::abs(period - periodY) > 1e-9 * period)
             throw InvalidInput("cross_coupling",
-                               makeDiagnostic("session_coupling_one_period",
+                               makeDiagnostic("sim_coupling_periods_differ",
                                               {formatNumber(period), formatNumber(periodY)}));
         const std::size_t n = p.x.controller ? p.x.reference.size() : p.x.samples;
         const std::vector<bool> rapid = programRapidSegments(program);

@@ -196,7 +196,7 @@ ContourRobustnessResult analyzeContourRobustness(const ContourRobustnessProblem&
         if (measured[k])
             judged.push_back(k);
     if (judged.empty())
-        throw InvalidInput("geometry", makeDiagnostic(g.circle ? "study_no_sample_after_ramp_in"
+        throw InvalidInput("geometry", makeDiagnostic(g.circle ? "sim_no_sample_after_ramp_in"
                                                                : "study_no_sample_on_segment"));
     // The envelope's instants: every stride-th judged sample and the last.
     std::vector<std::size_t> idx;

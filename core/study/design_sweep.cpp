@@ -360,7 +360,7 @@ DesignSweepResult sweepDesignSpace(const DesignProblem& problem, const SweepAxis
         throw InvalidInput("max_refine_evaluations", makeDiagnostic("not_negative"));
     if (options.batchWidth != 1 && options.batchWidth != 2 && options.batchWidth != 4 &&
         options.batchWidth != 8)
-        throw InvalidInput("batch_width", makeDiagnostic("study_batch_width"));
+        throw InvalidInput("batch_width", makeDiagnostic("sim_batch_width"));
     DesignSweepResult result;
     result.criterion = options.criterion;
     result.wnValues = wnAxis.values("wn");

@@ -123,11 +123,13 @@ QStringList callsWithoutDiagnostic(const QRegularExpression& callee) {
 
 void TstDiagnosticCatalogue::codesAreUniqueAndWellFormed() {
     static const QRegularExpression name(QStringLiteral("^[a-z][a-z0-9_]*$"));
-    std::set<std::string> seen;
+    std::set<std::string> seen, templates;
     QVERIFY(!diagnosticCatalogue().empty());
     for (const DiagnosticTemplate& t : diagnosticCatalogue()) {
         QVERIFY2(name.match(QString::fromUtf8(t.code)).hasMatch(), t.code);
         QVERIFY2(seen.insert(t.code).second, t.code); // a code names one template
+        // and a sentence has one code (translated once, the same everywhere)
+        QVERIFY2(templates.insert(t.englishTemplate).second, t.englishTemplate);
         QVERIFY2(t.englishTemplate && *t.englishTemplate, t.code);
         QCOMPARE(diagnosticTemplate(t.code), t.englishTemplate);
     }

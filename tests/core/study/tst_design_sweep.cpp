@@ -399,7 +399,7 @@ void TstDesignSweep::badBatchWidthNamed() {
         QFAIL("a batch width of 3 was accepted");
     } catch (const InvalidInput& e) {
         QCOMPARE(e.field(), std::string("batch_width"));
-        QCOMPARE(e.reasonDiagnostic().code, std::string("study_batch_width"));
+        QCOMPARE(e.reasonDiagnostic().code, std::string("sim_batch_width"));
         QCOMPARE(e.reason(), std::string("must be 1, 2, 4 or 8"));
     }
     DesignProblem p = lowerBaseCubic(10.0);
