@@ -5045,6 +5045,13 @@ falha: %1</translation>
     </message>
 </context>
 <context>
+    <name>sim_realization_loses_stability</name>
+    <message>
+        <source>the loop&apos;s state-space realization loses the closed loop&apos;s stability to round-off (an eigenvalue at %1 1/s for a stable loop): the plant&apos;s coefficients are too far apart in scale to simulate</source>
+        <translation>a realização em espaço de estados da malha perde a estabilidade da malha fechada por arredondamento (um autovalor em %1 1/s para uma malha estável): os coeficientes da planta têm escalas distantes demais para simular</translation>
+    </message>
+</context>
+<context>
     <name>sim_run_has_no_samples</name>
     <message>
         <source>the run has no samples</source>

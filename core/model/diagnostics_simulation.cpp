@@ -103,6 +103,10 @@ const std::vector<DiagnosticTemplate>& simulation() {
                        "hunting at rest: the integral action broke the table free %1 after the "
                        "move (%2 um peak to peak): integral action against stiction"),
         XYT_DIAGNOSTIC("sim_digital_implementation_finding", "the digital implementation: %1"),
+        XYT_DIAGNOSTIC("sim_realization_loses_stability",
+                       "the loop's state-space realization loses the closed loop's stability to "
+                       "round-off (an eigenvalue at %1 1/s for a stable loop): the plant's "
+                       "coefficients are too far apart in scale to simulate"),
     };
     return table;
 }

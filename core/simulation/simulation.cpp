@@ -3,10 +3,12 @@
 
 #include "core/model/diagnostic_catalogue.h"
 #include "core/model/errors.h"
+#include "core/model/number_format.h"
 #include "core/model/state_space.h"
 #include "core/simulation/loop_stepper.h"
 #include "core/simulation/table_dynamics.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
 #include <algorithm>
@@ -41,6 +43,35 @@ struct StepMatrices {
         }
     }
 };
+
+/**
+ * Refuses a loop whose state matrix lost the stability of its transfer functions. The closed
+ * loop's poles are the roots of den_p den_c + num_p num_c; a realization of badly scaled
+ * transfer functions can move them: a plant with k0 = 4.3e12 and a pole at -5.2e8 under a stable
+ * Guillemin-Truxal PI (fuzz_design, corpus crash-ill-conditioned-loop) realized a loop matrix
+ * (norm 2e14) with an eigenvalue at +1930 1/s, and its run overflowed although the loop is stable.
+ * The threshold, 1e-9 of the largest pole's magnitude, is far above the round-off of a sound
+ * realization (eps |A|) and keeps a marginal pole at -1e-12 from being refused for its rounding.
+ */
+void requireRealizationKeepsStability(const TransferFunction& plant,
+                                      const TransferFunction& controller,
+                                      const Eigen::MatrixXd& aLoop) {
+    if (aLoop.rows() == 0)
+        return;
+    const std::vector<std::complex<double>> poles =
+        (plant.den() * controller.den() + plant.num() * controller.num()).roots();
+    double scale = 0.0;
+    for (const std::complex<double>& pole : poles) {
+        if (!(pole.real() < 0.0))
+            return; // an unstable loop: its runs diverge by design
+        scale = std::max(scale, std::abs(pole));
+    }
+    const double realized =
+        Eigen::EigenSolver<Eigen::MatrixXd>(aLoop, false).eigenvalues().real().maxCoeff();
+    if (realized > 1e-9 * scale)
+        throw InvalidInput("plant", makeDiagnostic("sim_realization_loses_stability",
+                                                   {formatNumber(realized, 4)}));
+}
 
 StepMatrices fohStep(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double dt) {
     try {
@@ -77,6 +108,7 @@ LoopModes loopModes(const TransferFunction& plant, const TransferFunction& contr
     m.aLinear.bottomRightCorner(nc, nc) = c.a;
     m.bLinear.resize(n, 1);
     m.bLinear << dc * p.b, c.b;
+    requireRealizationKeepsStability(plant, controller, m.aLinear);
 
     // Saturated mode: inputs [r, u] with u held at +-umax over the step.
     m.aClipped = Eigen::MatrixXd::Zero(n, n);

@@ -351,6 +351,25 @@ void TstSimulation::errorsNameTheField() {
                                    }));
              }),
              QString("dt"));
+    // Regression (fuzz_design, corpus crash-ill-conditioned-loop): the same kind of plant, a
+    // stable design (poles of den_p den_c + num_p num_c in the left half plane), but the loop's
+    // state matrix came out with an eigenvalue at +1930 1/s and the run overflowed to NaN at
+    // dt = 0.389 s. Refused naming the plant, with the realized eigenvalue.
+    const xyt::ThirdOrderPlant scaled{4346572875976.5625, 523234558.10546875, 449378967.28515625};
+    const xyt::GtDesign scaledDesign =
+        xyt::designGuilleminTruxal(scaled, 2422.0428466796875, 49.999847412109375);
+    QVERIFY(scaledDesign.stable);
+    try {
+        xyt::simulateLoop(scaled.transferFunction(), scaledDesign.controller,
+                          std::vector<double>(338, 1.0), with([](auto& o) {
+                              o.dtSeconds = 0.38897467765316246;
+                              o.umaxVolts = kInf;
+                          }));
+        QFAIL("a loop whose realization lost its stability was simulated");
+    } catch (const xyt::InvalidInput& e) {
+        QCOMPARE(e.field(), std::string("plant"));
+        QCOMPARE(e.reasonDiagnostic().code, std::string("sim_realization_loses_stability"));
+    }
     // The refusals carry their codes and arguments (the workbench translates them), with the
     // English unchanged.
     try {
