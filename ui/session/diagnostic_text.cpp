@@ -10,31 +10,6 @@
 
 namespace xyt::ui {
 
-namespace {
-
-/// %1 .. %9 of @p templ replaced by the translated @p args in one pass (an argument's own '%'
-/// is not read again), as the core's fillDiagnosticTemplate does.
-QString fillDiagnosticText(const QString& templ, const std::vector<Diagnostic>& args) {
-    QString out;
-    out.reserve(templ.size());
-    for (qsizetype i = 0; i < templ.size(); ++i) {
-        const QChar c = templ[i];
-        if (c == QLatin1Char('%') && i + 1 < templ.size() && templ[i + 1] >= QLatin1Char('1') &&
-            templ[i + 1] <= QLatin1Char('9')) {
-            const auto k = static_cast<std::size_t>(templ[i + 1].unicode() - '1');
-            if (k < args.size()) {
-                out += diagnosticText(args[k]);
-                ++i;
-                continue;
-            }
-        }
-        out += c;
-    }
-    return out;
-}
-
-} // namespace
-
 QString diagnosticText(const Diagnostic& d) {
     if (!d.coded())
         return QString::fromStdString(d.text);
@@ -44,7 +19,13 @@ QString diagnosticText(const Diagnostic& d) {
     } catch (const std::out_of_range&) {
         return QString::fromStdString(d.text);
     }
-    return fillDiagnosticText(QCoreApplication::translate(d.code.c_str(), templ), d.args);
+    // The core's one-pass fill, on the translated template with the translated arguments.
+    std::vector<Diagnostic> translatedArgs;
+    translatedArgs.reserve(d.args.size());
+    for (const Diagnostic& arg : d.args)
+        translatedArgs.emplace_back(diagnosticText(arg).toStdString());
+    return QString::fromStdString(fillDiagnosticTemplate(
+        QCoreApplication::translate(d.code.c_str(), templ).toStdString(), translatedArgs));
 }
 
 QString invalidInputText(const InvalidInput& e) {
