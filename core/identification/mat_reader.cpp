@@ -546,6 +546,12 @@ std::vector<const MatVariableInfo*> everyUsableVariable(const std::vector<MatVar
     for (const MatVariableInfo& v : vars) {
         if (!v.usable)
             continue;
+        // A v4 file may repeat a name (each matrix is written on its own); the table's columns
+        // are named, so only the first of a name is read (fuzz_mat_reader, corpus
+        // crash-repeated-name).
+        if (std::any_of(chosen.begin(), chosen.end(),
+                        [&v](const MatVariableInfo* c) { return c->name == v.name; }))
+            continue;
         if (v.elements > kMaxMatVariableElements)
             leave(v, makeDiagnostic("ident_mat_why_variable_limit",
                                     {std::to_string(kMaxMatVariableElements)}));
